@@ -1,0 +1,202 @@
+"""The one model object: current design, its results, and the animation angle.
+
+Widgets read from it and call its setters; it emits a signal only when a
+value really changes. A parameter change recomputes the whole cycle once;
+the animation only moves an index into the precomputed arrays.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+from PySide6.QtCore import QObject, Signal
+
+from core.errors import DesignError
+from core.geometry import Design
+from core.kinematics import Motion, check_rpms, crank_angles, solve
+from core.metrics import CycleMetrics, analyze
+from core.spec import Spec
+
+DEFAULT_RPMS = (40.0, 60.0)
+DEFAULT_STEP = 1.0
+
+
+class DesignModel(QObject):
+    """Holds the spec the user typed, the last valid design and its results.
+
+    Signals:
+      ``resultsChanged`` — design, motion or metrics were recomputed;
+      ``specChanged`` — the edited inputs changed (valid or not);
+      ``errorChanged`` — the validation error appeared, changed or cleared;
+      ``angleChanged(int)`` — the animation index moved;
+      ``dirtyChanged(bool)``, ``pathChanged(str)`` — file state.
+    """
+
+    resultsChanged = Signal()
+    specChanged = Signal()
+    errorChanged = Signal()
+    angleChanged = Signal(int)
+    dirtyChanged = Signal(bool)
+    pathChanged = Signal(str)
+
+    def __init__(self, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._spec = Spec()
+        self._rpms: tuple[float, ...] = DEFAULT_RPMS
+        self._step = DEFAULT_STEP
+        self._error: DesignError | None = None
+        self._index = 0
+        self._dirty = False
+        self._path = ""
+        self._design: Design = self._spec.design()
+        self._motion: Motion = solve(self._design, crank_angles(self._step), self._rpms)
+        self._metrics: CycleMetrics = analyze(self._design, self._rpms)
+
+    # ---- read access -------------------------------------------------
+    @property
+    def spec(self) -> Spec:
+        """The inputs as the user last typed them (may be invalid)."""
+        return self._spec
+
+    @property
+    def design(self) -> Design:
+        """The last valid design."""
+        return self._design
+
+    @property
+    def motion(self) -> Motion:
+        return self._motion
+
+    @property
+    def metrics(self) -> CycleMetrics:
+        return self._metrics
+
+    @property
+    def rpms(self) -> tuple[float, ...]:
+        return self._rpms
+
+    @property
+    def step_deg(self) -> float:
+        return self._step
+
+    @property
+    def error(self) -> DesignError | None:
+        return self._error
+
+    @property
+    def angle_index(self) -> int:
+        return self._index
+
+    @property
+    def crank_deg(self) -> float:
+        return math.degrees(float(self._motion.crank_angle[self._index]))
+
+    @property
+    def angle_count(self) -> int:
+        return int(self._motion.crank_angle.size)
+
+    @property
+    def dirty(self) -> bool:
+        return self._dirty
+
+    @property
+    def path(self) -> str:
+        return self._path
+
+    # ---- edits -------------------------------------------------------
+    def set_spec(self, **changes: Any) -> None:
+        """Change some inputs at once; recompute if they form a valid design."""
+        spec = replace(self._spec, **changes)
+        if spec == self._spec:
+            return
+        self._spec = spec
+        self.specChanged.emit()
+        self._mark_dirty()
+        self._recompute()
+
+    def set_rpms(self, rpms) -> None:
+        values = tuple(float(v) for v in rpms)
+        if values == self._rpms:
+            return
+        try:
+            check_rpms(values)
+        except DesignError as exc:
+            self._set_error(exc)
+            return
+        self._rpms = values
+        self._mark_dirty()
+        self._recompute()
+
+    def set_step(self, step_deg: float) -> None:
+        if step_deg == self._step:
+            return
+        try:
+            crank_angles(step_deg)
+        except DesignError as exc:
+            self._set_error(exc)
+            return
+        fraction = self._index / max(self.angle_count - 1, 1)
+        self._step = float(step_deg)
+        self._mark_dirty()
+        self._recompute(keep_fraction=fraction)
+
+    def set_angle_index(self, index: int) -> None:
+        index = int(index) % self.angle_count
+        if index != self._index:
+            self._index = index
+            self.angleChanged.emit(index)
+
+    def set_angle_deg(self, degrees: float) -> None:
+        """Move the animation to the grid angle nearest ``degrees`` (wrapped to one cycle)."""
+        deg = float(degrees) % 360.0
+        grid = np.degrees(self._motion.crank_angle)
+        self.set_angle_index(int(np.argmin(np.abs(grid - deg))))
+
+    def load_state(self, spec: Spec, rpms, step_deg: float, path: str = "") -> None:
+        """Replace everything at once (after a file was read and validated)."""
+        self._spec = spec
+        self._rpms = tuple(float(v) for v in rpms)
+        self._step = float(step_deg)
+        self._index = 0
+        self.specChanged.emit()
+        self._recompute()
+        self.set_clean(path)
+
+    def set_clean(self, path: str) -> None:
+        if path != self._path:
+            self._path = path
+            self.pathChanged.emit(path)
+        if self._dirty:
+            self._dirty = False
+            self.dirtyChanged.emit(False)
+
+    # ---- internals ---------------------------------------------------
+    def _mark_dirty(self) -> None:
+        if not self._dirty:
+            self._dirty = True
+            self.dirtyChanged.emit(True)
+
+    def _set_error(self, error: DesignError | None) -> None:
+        same = (error is None and self._error is None) or (
+            error is not None and self._error is not None and str(error) == str(self._error))
+        self._error = error
+        if not same:
+            self.errorChanged.emit()
+
+    def _recompute(self, keep_fraction: float | None = None) -> None:
+        try:
+            design = self._spec.design()
+            motion = solve(design, crank_angles(self._step), self._rpms)
+            metrics = analyze(design, self._rpms)
+        except DesignError as exc:
+            self._set_error(exc)
+            return
+        self._design, self._motion, self._metrics = design, motion, metrics
+        if keep_fraction is not None:
+            self._index = int(round(keep_fraction * (motion.crank_angle.size - 1)))
+        self._index = min(self._index, motion.crank_angle.size - 1)
+        self._set_error(None)
+        self.resultsChanged.emit()
+        self.angleChanged.emit(self._index)
