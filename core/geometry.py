@@ -149,7 +149,7 @@ def from_dimensions(crank: float, frame: float, lever: float, *,
 
 def _rod_length(rod: float | None, rod_ratio: float | None, lever: float) -> float | None:
     if rod is not None and rod_ratio is not None:
-        raise DesignError("rod", rod, "give either a rod length or a rod ratio, not both")
+        raise DesignError("rod", rod, "must be given either as a length or as a ratio L4/L3, not both")
     if rod_ratio is not None:
         ratio = require_range("rod_ratio", rod_ratio, 0.0, 10.0)
         return ratio * lever

@@ -1,0 +1,49 @@
+"""Speed targets of the core issue: measured here, reported in the README.
+
+Run with ``pytest benchmarks --benchmark-enable``; in the normal test run each
+benchmark executes once as a smoke test.
+"""
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+from core.geometry import synthesize
+from core.kinematics import crank_angles, solve
+from core.metrics import analyze
+
+ANGLES = np.radians(np.linspace(0, 360, 3601))
+RPMS = [30, 40, 60, 80]
+
+
+def test_kinematics_3601_angles_4_speeds_block(benchmark):
+    design = synthesize(100, 1.4, 300)
+    motion = benchmark(solve, design, ANGLES, RPMS)
+    assert motion.ram_a.shape == (4, 3601)
+
+
+def test_kinematics_3601_angles_4_speeds_rod(benchmark):
+    design = synthesize(100, 1.4, 300, rod_ratio=0.3)
+    motion = benchmark(solve, design, ANGLES, RPMS)
+    assert motion.rod_alpha.shape == (4, 3601)
+
+
+def test_cycle_metrics(benchmark):
+    design = synthesize(100, 1.4, 300, rod_ratio=0.3)
+    metrics = benchmark(analyze, design, RPMS)
+    assert len(metrics.speeds) == 4
+
+
+def _cli_csv(target):
+    exe = shutil.which("shaper")
+    cmd = [exe] if exe else [sys.executable, "-m", "core"]
+    subprocess.run(cmd + ["curves", "--crank", "100", "--K", "1.4", "--stroke", "300",
+                          "--rod-ratio", "0.3", "--rpm", "40", "60", "--step", "0.01",
+                          "--csv", str(target)], check=True)
+
+
+def test_cli_csv_36001_angles_2_speeds(benchmark, tmp_path):
+    target = tmp_path / "curves.csv"
+    benchmark.pedantic(_cli_csv, args=(target,), rounds=5, iterations=1)
+    assert sum(1 for _ in target.open()) == 1 + 2 * 36001
