@@ -44,6 +44,7 @@ class DesignModel(QObject):
     def __init__(self, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self._spec = Spec()
+        self._valid_spec = self._spec
         self._rpms: tuple[float, ...] = DEFAULT_RPMS
         self._step = DEFAULT_STEP
         self._error: DesignError | None = None
@@ -59,6 +60,11 @@ class DesignModel(QObject):
     def spec(self) -> Spec:
         """The inputs as the user last typed them (may be invalid)."""
         return self._spec
+
+    @property
+    def valid_spec(self) -> Spec:
+        """The inputs of the design on screen (what Save writes)."""
+        return self._valid_spec
 
     @property
     def design(self) -> Design:
@@ -117,13 +123,15 @@ class DesignModel(QObject):
         self._recompute()
 
     def set_rpms(self, rpms) -> None:
-        values = tuple(float(v) for v in rpms)
-        if values == self._rpms:
-            return
+        """Set the crank speeds (r/min); an invalid list is reported, not applied."""
         try:
-            check_rpms(values)
+            values = tuple(float(v) for v in check_rpms(list(rpms)))
         except DesignError as exc:
             self._set_error(exc)
+            return
+        if values == self._rpms:
+            if self._error is not None and self._error.parameter == "rpm":
+                self._set_error(None)
             return
         self._rpms = values
         self._mark_dirty()
@@ -194,6 +202,7 @@ class DesignModel(QObject):
             self._set_error(exc)
             return
         self._design, self._motion, self._metrics = design, motion, metrics
+        self._valid_spec = self._spec
         if keep_fraction is not None:
             self._index = int(round(keep_fraction * (motion.crank_angle.size - 1)))
         self._index = min(self._index, motion.crank_angle.size - 1)

@@ -1,0 +1,80 @@
+"""``shaperapp``: start the GUI on the default design (or a file given as argument).
+
+Unexpected errors are logged and shown as a plain message, never as a traceback.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+import traceback
+
+START = time.perf_counter()
+
+
+def _install_error_hook(app) -> None:
+    from PySide6.QtCore import QStandardPaths
+    from PySide6.QtWidgets import QMessageBox
+
+    def hook(kind, value, tb) -> None:
+        import os
+        folder = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.AppDataLocation)
+        try:
+            os.makedirs(folder, exist_ok=True)
+            with open(os.path.join(folder, "error.log"), "a", encoding="utf-8") as log:
+                log.write("".join(traceback.format_exception(kind, value, tb)))
+            where = os.path.join(folder, "error.log")
+        except OSError:
+            where = ""
+        QMessageBox.critical(None, "Shaper Designer",
+                             app.translate("app", "An internal error occurred; the design on screen "
+                                                  "is unchanged. Details were written to %1.").replace("%1", where))
+
+    sys.excepthook = hook
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="shaperapp", description="Shaper Designer (GUI)")
+    parser.add_argument("file", nargs="?", help="a design file to open")
+    parser.add_argument("--lang", choices=("en", "zh_CN"), help="UI language (default: system locale)")
+    parser.add_argument("--screenshot", metavar="PNG",
+                        help="render the window to PNG once shown, print the start-up time, and quit")
+    args = parser.parse_args(argv)
+
+    import pyqtgraph as pg
+    from PySide6.QtCore import QSettings, QTimer
+    from PySide6.QtWidgets import QApplication
+
+    pg.setConfigOptions(background="w", foreground="k", antialias=True)
+    app = QApplication.instance() or QApplication(sys.argv[:1])
+    app.setApplicationName("shaperapp")
+    app.setOrganizationName("ShaperDesigner")
+    app.setApplicationDisplayName("Shaper Designer")
+    _install_error_hook(app)
+
+    from . import i18n
+    from .main_window import MainWindow
+    from .model import DesignModel
+
+    settings = QSettings()
+    language = args.lang or settings.value("language") or i18n.system_language()
+    model = DesignModel()
+    window = MainWindow(model, settings)
+    window.set_language(language if language in dict(i18n.LANGUAGES) else "en")
+    if args.file:
+        window.document.open_path(args.file)
+    window.show()
+    if args.screenshot:
+        def shoot() -> None:
+            shown = time.perf_counter() - START
+            window.grab().save(args.screenshot)
+            print(f"first window shown after {shown * 1000:.0f} ms")
+            window.model.set_clean(window.model.path)
+            window.close()
+            app.quit()
+        QTimer.singleShot(0, shoot)
+    return app.exec()
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,132 @@
+"""File actions on the model: open, save, export, recent files.
+
+Separated from the window so they can be tested without dialogs: every
+action has a path-taking method; only the ``*_dialog`` wrappers ask the user.
+Failures are reported through ``failed`` and change nothing.
+"""
+from __future__ import annotations
+
+import os
+
+from PySide6.QtCore import QObject, QSettings, Signal
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QWidget
+
+from core.errors import FileFormatError
+from core.io import atomic_write, curves_csv, load_design, save_design
+from core.spec import Spec
+
+from .model import DEFAULT_RPMS, DEFAULT_STEP, DesignModel
+
+MAX_RECENT = 8
+
+
+class Document(QObject):
+    """Connects the model to files. ``failed(str)`` carries a plain message."""
+
+    failed = Signal(str)
+    recentChanged = Signal()
+    saved = Signal(str)
+
+    def __init__(self, model: DesignModel, settings: QSettings, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._model = model
+        self._settings = settings
+
+    # ---- path-taking actions (tested directly) -------------------------
+    def open_path(self, path: str) -> bool:
+        try:
+            doc = load_design(path)
+        except FileFormatError as exc:
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
+            return False
+        self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path))
+        self._add_recent(path)
+        return True
+
+    def save_to(self, path: str) -> bool:
+        model = self._model
+        try:
+            save_design(path, model.valid_spec, model.rpms, model.step_deg)
+        except OSError as exc:
+            self.failed.emit(self.tr("Could not save %1: %2").replace("%1", path)
+                             .replace("%2", exc.strerror or str(exc)))
+            return False
+        model.set_clean(os.path.abspath(path))
+        self._add_recent(path)
+        self.saved.emit(path)
+        return True
+
+    def export_csv_to(self, path: str) -> bool:
+        try:
+            atomic_write(path, curves_csv(self._model.motion))
+        except OSError as exc:
+            self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path)
+                             .replace("%2", exc.strerror or str(exc)))
+            return False
+        return True
+
+    def new(self) -> None:
+        self._model.load_state(Spec(), DEFAULT_RPMS, DEFAULT_STEP, path="")
+
+    # ---- recent files ----------------------------------------------------
+    def recent_files(self) -> list[str]:
+        value = self._settings.value("recentFiles", [])
+        if isinstance(value, str):
+            value = [value]
+        return [p for p in (value or []) if isinstance(p, str)]
+
+    def _add_recent(self, path: str) -> None:
+        path = os.path.abspath(path)
+        files = [path] + [p for p in self.recent_files() if p != path]
+        self._settings.setValue("recentFiles", files[:MAX_RECENT])
+        self._settings.setValue("lastDir", os.path.dirname(path))
+        self.recentChanged.emit()
+
+    def last_dir(self) -> str:
+        value = self._settings.value("lastDir", "")
+        return value if isinstance(value, str) and os.path.isdir(value) else os.getcwd()
+
+    # ---- interactive wrappers -------------------------------------------
+    def _filter(self) -> str:
+        return self.tr("Shaper designs (*.shaper.json *.json);;All files (*)")
+
+    def confirm_discard(self, parent: QWidget) -> bool:
+        """True when there is nothing unsaved, or the user saved or discarded it."""
+        if not self._model.dirty:
+            return True
+        answer = QMessageBox.question(
+            parent, self.tr("Unsaved changes"),
+            self.tr("The design has unsaved changes. Save them first?"),
+            QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
+            | QMessageBox.StandardButton.Cancel, QMessageBox.StandardButton.Save)
+        if answer == QMessageBox.StandardButton.Save:
+            return self.save_dialog(parent)
+        return answer == QMessageBox.StandardButton.Discard
+
+    def new_dialog(self, parent: QWidget) -> None:
+        if self.confirm_discard(parent):
+            self.new()
+
+    def open_dialog(self, parent: QWidget, path: str | None = None) -> bool:
+        if not self.confirm_discard(parent):
+            return False
+        if path is None:
+            path, _ = QFileDialog.getOpenFileName(parent, self.tr("Open design"), self.last_dir(),
+                                                  self._filter())
+        return bool(path) and self.open_path(path)
+
+    def save_dialog(self, parent: QWidget) -> bool:
+        if self._model.path:
+            return self.save_to(self._model.path)
+        return self.save_as_dialog(parent)
+
+    def save_as_dialog(self, parent: QWidget) -> bool:
+        start = self._model.path or os.path.join(self.last_dir(), "design.shaper.json")
+        path, _ = QFileDialog.getSaveFileName(parent, self.tr("Save design as"), start, self._filter())
+        return bool(path) and self.save_to(path)
+
+    def export_csv_dialog(self, parent: QWidget) -> bool:
+        start = os.path.join(self.last_dir(), "curves.csv")
+        path, _ = QFileDialog.getSaveFileName(parent, self.tr("Export curves to CSV"), start,
+                                              self.tr("CSV files (*.csv)"))
+        return bool(path) and self.export_csv_to(path)

@@ -1,0 +1,100 @@
+"""One table from core's error fields to translated field names and messages.
+
+Core speaks English with numbers in fixed phrases; here each phrase becomes a
+translatable template, so the Chinese UI never shows an English sentence.
+"""
+from __future__ import annotations
+
+import re
+
+from PySide6.QtCore import QCoreApplication
+
+from core.errors import DesignError
+
+
+def _t(text: str) -> str:
+    return QCoreApplication.translate("messages", text)
+
+
+def field_name(parameter: str) -> str:
+    names = {
+        "crank": _t("Crank length L1"),
+        "time_ratio": _t("Time ratio K"),
+        "stroke": _t("Stroke H"),
+        "frame": _t("Frame distance L2"),
+        "lever": _t("Lever length L3"),
+        "guide": _t("Ram guide"),
+        "rod": _t("Rod length L4"),
+        "rod_ratio": _t("Rod ratio L4/L3"),
+        "rod_side": _t("Rod side"),
+        "rpm": _t("Crank speeds"),
+        "step": _t("Angle step"),
+    }
+    return names.get(parameter, parameter)
+
+
+# (pattern on core's English ``allowed`` text, translatable template with %1, %2 …)
+_PATTERNS: tuple[tuple[str, str], ...] = (
+    (r"must be > (\S+) and ≤ (\S+)(?: (.+))?$", "must be greater than %1 and at most %2 %3"),
+    (r"must be a number$", "must be a number"),
+    (r"must be a finite number$", "must be a finite number"),
+    (r"must be ≥ (\S+) mm for this crank and K, so that the crank pin stays on the lever$",
+     "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever"),
+    (r"must be shorter than the frame O2O4 \((\S+) mm\)$",
+     "must be shorter than the frame O2O4 (%1 mm)"),
+    (r"must be ≥ L2 \+ L1 = (\S+) mm, so that the crank pin stays on the lever$",
+     "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
+    (r"must be > L2 \+ L1 = (\S+) mm above the lever pivot, so that the ram clears the crank$",
+     "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
+    (r"must be ≤ the lever length (\S+) mm: the block on the lever tip cannot reach a higher guide$",
+     "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
+    (r"must be > (\S+) mm to reach the guide line over the whole cycle$",
+     "must be more than %1 mm to reach the guide line over the whole cycle"),
+    (r"the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line$",
+     "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
+    (r"give 1 to (\S+) crank speeds$", "give 1 to %1 crank speeds"),
+    (r"gives more than (\S+) angles; use a larger step$", "gives more than %1 angles; use a larger step"),
+    (r"must be given either as a length or as a ratio L4/L3, not both$",
+     "must be given either as a length or as a ratio L4/L3, not both"),
+)
+
+
+def _translated_templates() -> dict[str, str]:
+    # Listed literally so pyside6-lupdate finds every template.
+    return {
+        "must be greater than %1 and at most %2 %3": _t("must be greater than %1 and at most %2 %3"),
+        "must be a number": _t("must be a number"),
+        "must be a finite number": _t("must be a finite number"),
+        "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever":
+            _t("must be at least %1 mm for this crank and K, so that the crank pin stays on the lever"),
+        "must be shorter than the frame O2O4 (%1 mm)": _t("must be shorter than the frame O2O4 (%1 mm)"),
+        "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever":
+            _t("must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
+        "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank":
+            _t("must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
+        "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide":
+            _t("must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
+        "must be more than %1 mm to reach the guide line over the whole cycle":
+            _t("must be more than %1 mm to reach the guide line over the whole cycle"),
+        "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line":
+            _t("the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
+        "give 1 to %1 crank speeds": _t("give 1 to %1 crank speeds"),
+        "gives more than %1 angles; use a larger step": _t("gives more than %1 angles; use a larger step"),
+        "must be given either as a length or as a ratio L4/L3, not both":
+            _t("must be given either as a length or as a ratio L4/L3, not both"),
+    }
+
+
+def describe(error: DesignError) -> str:
+    """'Field: what is allowed' in the current UI language."""
+    templates = _translated_templates()
+    body = error.allowed
+    for pattern, template in _PATTERNS:
+        match = re.match(pattern, error.allowed)
+        if match:
+            body = templates[template]
+            for i, group in enumerate(match.groups(), start=1):
+                body = body.replace(f"%{i}", group or "")
+            body = body.strip()
+            break
+    return _t("%1: %2").replace("%1", field_name(error.parameter)).replace("%2", body)

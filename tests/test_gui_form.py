@@ -1,0 +1,101 @@
+"""The form drives the model, marks the offending field, and mirrors the model."""
+import pytest
+
+from core.geometry import synthesize
+from shaperapp.form import DesignForm
+from shaperapp.metrics_panel import MetricsPanel
+from shaperapp.model import DesignModel
+
+
+@pytest.fixture
+def setup(qtbot):
+    model = DesignModel()
+    form = DesignForm(model)
+    metrics = MetricsPanel(model)
+    qtbot.addWidget(form)
+    qtbot.addWidget(metrics)
+    form.show()
+    return model, form, metrics
+
+
+def type_into(qtbot, edit, text):
+    edit.selectAll()
+    qtbot.keyClicks(edit, text)
+
+
+def test_typing_k_updates_dimensions_and_metrics_after_debounce(setup, qtbot):
+    model, form, metrics = setup
+    edit = form.field("time_ratio")
+    edit.clear()
+    with qtbot.waitSignal(model.resultsChanged, timeout=2000):
+        type_into(qtbot, edit, "1.6")
+    expected = synthesize(100, 1.6, 300)
+    assert model.design == expected
+    assert metrics.value_text("frame") == f"{expected.frame:.2f} mm"
+    assert metrics.value_text("K") == "1.6000"
+    assert form.marked_fields() == []
+
+
+def test_invalid_value_marks_field_and_keeps_design(setup, qtbot):
+    model, form, metrics = setup
+    before = model.design
+    shown = metrics.value_text("lever")
+    edit = form.field("stroke")
+    edit.clear()
+    with qtbot.waitSignal(model.errorChanged, timeout=2000):
+        type_into(qtbot, edit, "120")
+    assert form.marked_fields() == ["stroke"]
+    assert "Stroke H" in form.error_text()
+    assert model.design == before and metrics.value_text("lever") == shown
+    with qtbot.waitSignal(model.errorChanged, timeout=2000):
+        type_into(qtbot, edit, "360")
+    assert form.marked_fields() == [] and form.error_text() == ""
+    assert model.design.stroke == pytest.approx(360)
+
+
+def test_text_that_is_not_a_number(setup, qtbot):
+    model, form, _ = setup
+    edit = form.field("crank")
+    edit.clear()
+    with qtbot.waitSignal(model.errorChanged, timeout=2000):
+        type_into(qtbot, edit, "1o0")
+    assert model.error.parameter == "crank" and form.marked_fields() == ["crank"]
+    assert "number" in form.error_text()
+
+
+def test_model_change_shows_in_form(setup, qtbot):
+    model, form, _ = setup
+    model.set_spec(crank=120.0, variant="rod", rod_ratio=0.4)
+    assert form.field("crank").text() == "120"
+    assert form.field("rod_ratio").text() == "0.4"
+    assert form.field("rod_ratio").isVisible()
+    model.set_spec(variant="block")
+    assert not form.field("rod_ratio").isVisible()
+
+
+def test_add_and_remove_speed(setup, qtbot):
+    model, form, metrics = setup
+    with qtbot.waitSignal(model.resultsChanged):
+        qtbot.mouseClick(form._add_speed, __import__("PySide6.QtCore").QtCore.Qt.MouseButton.LeftButton)
+    assert model.rpms == (40.0, 60.0, 80.0)
+    assert metrics.table_text(0, 2) == f"{model.metrics.speeds[2].cycle_time_s:.4f}"
+    form._speeds.setCurrentRow(0)
+    form._remove_speed.click()
+    assert model.rpms == (60.0, 80.0)
+
+
+def test_direct_dimensions_mode(setup, qtbot):
+    import math
+    model, form, metrics = setup
+    form._dims_radio.setChecked(True)
+    assert model.spec.mode == "dimensions"
+    assert form.field("frame").isVisible() and not form.field("stroke").isVisible()
+    type_into(qtbot, form.field("frame"), "250")
+    form.field("frame").editingFinished.emit()
+    theta = 2 * math.asin(100 / 250)
+    assert model.error is None
+    assert metrics.value_text("K_nominal") == f"{(math.pi + theta) / (math.pi - theta):.4f}"
+    assert metrics.value_text("K") == f"{(math.pi + theta) / (math.pi - theta):.4f}"
+    type_into(qtbot, form.field("frame"), "90")
+    form.field("frame").editingFinished.emit()
+    assert model.error.parameter == "crank" and form.marked_fields() == ["crank"]
