@@ -1,0 +1,77 @@
+"""File actions without dialogs: round trip, refusal of corrupt files, CSV like the CLI."""
+import pytest
+from PySide6.QtCore import QSettings
+
+from shaperapp.document import Document
+from shaperapp.model import DesignModel
+
+from cli_runner import shaper
+
+
+@pytest.fixture
+def doc(qtbot, tmp_path):
+    model = DesignModel()
+    settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
+    return model, Document(model, settings)
+
+
+def test_save_open_round_trip(doc, tmp_path, qtbot):
+    model, document = doc
+    model.set_spec(variant="rod", rod_input="length", rod_length=180.0, rod_side="leading", time_ratio=1.5)
+    model.set_rpms([35, 70])
+    model.set_step(0.5)
+    assert model.dirty
+    path = str(tmp_path / "a.shaper.json")
+    assert document.save_to(path)
+    assert not model.dirty and model.path == path
+    other = DesignModel()
+    Document(other, QSettings(str(tmp_path / "s2.ini"), QSettings.Format.IniFormat)).open_path(path)
+    assert other.valid_spec == model.valid_spec and other.design == model.design
+    assert other.rpms == (35.0, 70.0) and other.step_deg == 0.5 and not other.dirty
+    assert document.recent_files()[0] == path
+
+
+def test_saving_while_invalid_saves_the_design_on_screen(doc, tmp_path):
+    model, document = doc
+    model.set_spec(time_ratio=1.6)
+    model.set_spec(stroke=-3.0)
+    assert model.error is not None and model.valid_spec.time_ratio == 1.6
+    path = str(tmp_path / "b.json")
+    assert document.save_to(path)
+    other = DesignModel()
+    Document(other, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)).open_path(path)
+    assert other.design.time_ratio == pytest.approx(1.6) and other.design.stroke == pytest.approx(300)
+
+
+@pytest.mark.parametrize("content", ["{broken", '{"format": "shaper-design", "version": 1, "spec": {"stroke": -1}}'])
+def test_corrupt_file_refused_and_nothing_changes(doc, tmp_path, qtbot, content):
+    model, document = doc
+    model.set_spec(time_ratio=1.6)
+    before = (model.spec, model.design, model.rpms, model.dirty, model.path)
+    bad = tmp_path / "bad.json"
+    bad.write_text(content)
+    with qtbot.waitSignal(document.failed) as blocker, qtbot.assertNotEmitted(model.resultsChanged):
+        assert not document.open_path(str(bad))
+    assert "bad.json" in blocker.args[0]
+    assert (model.spec, model.design, model.rpms, model.dirty, model.path) == before
+    assert bad.read_text() == content
+
+
+def test_save_to_unwritable_place_reports(doc, tmp_path, qtbot):
+    model, document = doc
+    with qtbot.waitSignal(document.failed):
+        assert not document.save_to(str(tmp_path / "missing-dir" / "x.json"))
+    assert model.path == ""
+
+
+def test_csv_export_equals_cli_output(doc, tmp_path):
+    model, document = doc
+    model.set_spec(variant="rod", rod_ratio=0.3, guide_rule="sagitta", time_ratio=1.5, stroke=320.0)
+    model.set_rpms([40, 60, 80])
+    model.set_step(2.0)
+    path = tmp_path / "gui.csv"
+    assert document.export_csv_to(str(path))
+    cli = shaper("curves", "--crank", "100", "--K", "1.5", "--stroke", "320", "--rod-ratio", "0.3",
+                 "--guide", "sagitta", "--rpm", "40", "60", "80", "--step", "2")
+    assert cli.returncode == 0, cli.stderr
+    assert path.read_text() == cli.stdout
