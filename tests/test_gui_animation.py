@@ -1,0 +1,136 @@
+"""The animation bar moves the model's angle in real time and shows core's values."""
+from __future__ import annotations
+
+import math
+import time
+
+import pytest
+from PySide6.QtCore import QEvent, Qt
+from PySide6.QtWidgets import QApplication, QLabel, QSlider, QToolButton
+
+from shaperapp.animation import AnimationBar
+from shaperapp.model import DesignModel
+
+
+@pytest.fixture
+def model() -> DesignModel:
+    return DesignModel()
+
+
+@pytest.fixture
+def bar(qtbot, model) -> AnimationBar:
+    widget = AnimationBar(model)
+    qtbot.addWidget(widget)
+    widget.show()
+    return widget
+
+
+def button_for(bar: AnimationBar, action) -> QToolButton:
+    return next(b for b in bar.findChildren(QToolButton) if b.defaultAction() is action)
+
+
+def texts(bar: AnimationBar) -> list[str]:
+    return [label.text() for label in bar.findChildren(QLabel) if not label.isHidden()]
+
+
+def test_play_advances_in_real_time(qtbot, bar, model):
+    bar.set_speed_factor(1.0)
+    assert model.angle_index == 0
+    start = time.perf_counter()
+    bar.toggle_play()
+    assert bar.is_playing()
+    qtbot.wait(300)
+    elapsed = time.perf_counter() - start
+    bar.toggle_play()
+    assert not bar.is_playing()
+    played = math.degrees(float(model.motion.crank_angle[model.angle_index]))
+    expected = math.degrees(float(model.motion.omega[0]) * elapsed)   # 1× at the first speed
+    assert 0.5 * expected < played <= expected + 2.0
+    stopped = model.angle_index
+    qtbot.wait(100)
+    assert model.angle_index == stopped
+
+
+def test_speed_factor_scales_playback(qtbot, bar, model):
+    bar.set_speed_factor(0.1)
+    assert bar.speed_factor() == 0.1
+    bar.toggle_play()
+    qtbot.wait(300)
+    bar.toggle_play()
+    slow = model.angle_index
+    # 0.1× of 40 r/min is 24°/s: well under 20° in 0.3 s, even with a late tick.
+    assert slow <= 20
+
+
+def test_slider_sets_model_and_model_moves_slider(bar, model):
+    slider = bar.findChild(QSlider)
+    assert (slider.minimum(), slider.maximum()) == (0, model.angle_count - 1)
+    slider.setValue(90)
+    assert model.angle_index == 90
+    seen = []
+    model.angleChanged.connect(seen.append)
+    model.set_angle_index(45)
+    assert slider.value() == 45
+    assert seen == [45]               # syncing the slider did not echo back into the model
+
+
+def test_slider_range_follows_the_grid(bar, model):
+    model.set_step(2.0)
+    slider = bar.findChild(QSlider)
+    assert slider.maximum() == model.angle_count - 1 == 180
+
+
+def test_step_buttons_move_by_one(qtbot, bar, model):
+    model.set_angle_index(10)
+    qtbot.mouseClick(button_for(bar, bar.step_forward_action), Qt.LeftButton)
+    assert model.angle_index == 11
+    qtbot.mouseClick(button_for(bar, bar.step_back_action), Qt.LeftButton)
+    qtbot.mouseClick(button_for(bar, bar.step_back_action), Qt.LeftButton)
+    assert model.angle_index == 9
+    model.set_angle_index(0)
+    bar.step_back()
+    assert model.angle_index == model.angle_count - 1
+
+
+def test_no_loop_stops_at_the_end(qtbot, bar, model):
+    bar.set_loop(False)
+    bar.set_speed_factor(2.0)
+    model.set_angle_index(model.angle_count - 20)
+    bar.toggle_play()
+    qtbot.waitUntil(lambda: not bar.is_playing(), timeout=3000)
+    assert model.angle_index == model.angle_count - 1
+    assert not bar.play_action.isChecked()
+    bar.toggle_play()                 # playing a finished cycle starts it again
+    assert bar.is_playing() and model.angle_index < 5
+    bar.toggle_play()
+
+
+def test_loop_wraps_around(qtbot, bar, model):
+    bar.set_loop(True)
+    bar.set_speed_factor(2.0)
+    model.set_angle_index(model.angle_count - 10)
+    bar.toggle_play()
+    qtbot.waitUntil(lambda: model.angle_index < 60, timeout=3000)
+    assert bar.is_playing()
+    bar.toggle_play()
+
+
+def test_readout_shows_core_values(bar, model):
+    model.set_rpms([30.0, 60.0, 90.0])
+    model.set_angle_index(77)
+    m, shown = model.motion, texts(bar)
+    assert f"{math.degrees(m.crank_angle[77]):.1f}" in shown
+    assert f"{math.degrees(m.lever_angle[77]):.2f}" in shown
+    assert f"{m.ram_x[77]:.1f}" in shown
+    for i in range(3):
+        assert f"{m.time[i, 77]:.3f}" in shown
+        assert f"{m.ram_v[i, 77]:.3f}" in shown
+        assert f"{m.ram_a[i, 77]:.2f}" in shown
+    model.set_rpms([50.0])
+    assert f"{model.motion.ram_v[0, 77]:.3f}" in texts(bar)
+
+
+def test_language_change_keeps_texts(bar):
+    QApplication.sendEvent(bar, QEvent(QEvent.LanguageChange))
+    assert bar.play_action.text() and bar.play_action.toolTip()
+    assert bar.step_forward_action.toolTip() and bar.step_back_action.toolTip()
