@@ -15,6 +15,8 @@ import numpy as np
 
 from .errors import DesignError
 from .geometry import Design, from_dimensions, synthesize
+from .dynamics import MassProperties, solve_dynamics, summarize
+from .dynamics_io import dynamics_csv, summary_document
 from .io import curves_csv, finite_or_none
 from .kinematics import check_angles, crank_angles, solve
 from .metrics import CycleMetrics, analyze
@@ -24,6 +26,11 @@ OPTION_NAMES = {
     "lever": "--dims (L3)", "guide": "--guide", "rod": "--rod", "rod_ratio": "--rod-ratio",
     "rod_side": "--rod-side", "rpm": "--rpm", "step": "--step", "angles": "--angles",
     "dims": "--dims",
+    "lever_mass_kg": "--lever-mass", "lever_inertia_kg_m2": "--lever-inertia",
+    "lever_cg_mm": "--lever-cg", "ram_mass_kg": "--ram-mass", "ram_cg_mm": "--ram-cg",
+    "rod_mass_kg": "--rod-mass", "block_mass_kg": "--block-mass", "crank_mass_kg": "--crank-mass",
+    "cut_force_N": "--cut-force", "cut_height_mm": "--cut-height", "idle_fraction": "--idle",
+    "delta": "--delta",
 }
 
 
@@ -75,7 +82,38 @@ def build_parser() -> argparse.ArgumentParser:
     _design_options(p, allow_dims=True)
     _speed_options(p)
     p.add_argument("--json", action="store_true", help="print JSON")
+    _dynamics_parser(sub)
     return parser
+
+
+def _dynamics_parser(sub: Any) -> None:
+    p = sub.add_parser("dynamics", help="joint forces, crank torque, power and flywheel")
+    _design_options(p, allow_dims=True)
+    _speed_options(p)
+    angles = p.add_mutually_exclusive_group()
+    angles.add_argument("--step", type=str, default="1", metavar="DEG",
+                        help="crank-angle step of the CSV, degrees (default 1)")
+    angles.add_argument("--angles", type=str, metavar="A,B,…", help="explicit crank angles of the CSV, degrees")
+    group = p.add_argument_group("masses and loads")
+    group.add_argument("--lever-mass", required=True, metavar="KG", help="slotted lever mass, kg")
+    group.add_argument("--lever-inertia", required=True, metavar="KGM2",
+                       help="lever moment of inertia about its centre of mass, kg·m²")
+    group.add_argument("--lever-cg", metavar="MM", help="lever centre of mass from O4 along the lever, mm (default L3/2)")
+    group.add_argument("--ram-mass", required=True, metavar="KG", help="ram plus tool mass, kg")
+    group.add_argument("--ram-cg", metavar="DX,DY",
+                       help="ram centre of mass from the ram joint C, mm (default 0,0; write --ram-cg=-5,3 for a leading minus)")
+    group.add_argument("--rod-mass", default="0", metavar="KG", help="connecting rod mass, kg (rod variant; default 0)")
+    group.add_argument("--block-mass", default="0", metavar="KG", help="sliding block at the crank pin, kg (default 0)")
+    group.add_argument("--crank-mass", default="0", metavar="KG", help="balanced crank mass, kg (default 0)")
+    group.add_argument("--cut-force", required=True, metavar="N", help="cutting force on the tool, N")
+    group.add_argument("--cut-height", default="0", metavar="MM", help="tool point below the guide line, mm (default 0)")
+    group.add_argument("--idle", default="0.05", metavar="FRACTION",
+                       help="uncut run-in and run-out, each as a fraction of the stroke (default 0.05)")
+    group.add_argument("--delta", default=str(1.0 / 30.0), metavar="D",
+                       help="coefficient of speed fluctuation δ for the flywheel (default 1/30)")
+    group.add_argument("--no-gravity", action="store_true", help="leave the links' weights out")
+    p.add_argument("--csv", metavar="FILE|-", help="write the forces per angle as CSV to FILE or stdout")
+    p.add_argument("--json", action="store_true", help="print the per-speed summary as JSON")
 
 
 def _number(option: str, text: str) -> float:
@@ -206,6 +244,8 @@ def run(argv: Sequence[str] | None) -> int:
         motion = solve(design, _angles(args), rpms)
         _write(args.csv, curves_csv(motion))
         return 0
+    if args.command == "dynamics":
+        return _run_dynamics(args, design, rpms)
     metrics = analyze(design, rpms)
     summary = metrics_summary(design, metrics)
     if args.json:
@@ -223,6 +263,55 @@ def run(argv: Sequence[str] | None) -> int:
                           ("mean cutting speed", f"{s.v_work_mean_m_s:.4f} m/s"),
                           ("max return speed", f"{s.v_return_max_m_s:.4f} m/s"),
                           ("max |acceleration|", f"{s.a_max_m_s2:.4f} m/s²")])
+    return 0
+
+
+def masses_from_args(args: argparse.Namespace) -> MassProperties:
+    """The ``dynamics`` options as a validated :class:`MassProperties`."""
+    cg = None
+    if args.ram_cg is not None:
+        parts = args.ram_cg.split(",")
+        if len(parts) != 2:
+            raise DesignError("ram_cg_mm", args.ram_cg, "must be DX,DY in mm")
+        cg = tuple(_number("ram_cg_mm", p) for p in parts)
+    numbers = {name: _number(name, getattr(args, attr)) for name, attr in (
+        ("lever_mass_kg", "lever_mass"), ("lever_inertia_kg_m2", "lever_inertia"),
+        ("ram_mass_kg", "ram_mass"), ("rod_mass_kg", "rod_mass"), ("block_mass_kg", "block_mass"),
+        ("crank_mass_kg", "crank_mass"), ("cut_force_N", "cut_force"),
+        ("cut_height_mm", "cut_height"), ("idle_fraction", "idle"), ("delta", "delta"))}
+    if args.lever_cg is not None:
+        numbers["lever_cg_mm"] = _number("lever_cg_mm", args.lever_cg)
+    if cg is not None:
+        numbers["ram_cg_mm"] = cg
+    return MassProperties(gravity=not args.no_gravity, **numbers)
+
+
+def _run_dynamics(args: argparse.Namespace, design: Design, rpms: list[float]) -> int:
+    if args.json and args.csv == "-":
+        raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
+    masses = masses_from_args(args)
+    angles = _angles(args)   # validated even when only the summary is printed
+    if args.csv is not None:
+        _write(args.csv, dynamics_csv(solve_dynamics(design, angles, rpms, masses)))
+        if not args.json:
+            return 0
+    summary = summarize(design, rpms, masses)
+    if args.json:
+        doc = design_summary(design)
+        doc.update(summary_document(summary, design))
+        print(json.dumps(doc, indent=2))
+    else:
+        _print_table([("variant", design.variant),
+                       ("cutting force", f"{masses.cut_force_N:g} N over {1 - 2 * masses.idle_fraction:.0%} of the stroke"),
+                       ("mean reduced inertia J_e", f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
+                       ("speed fluctuation δ", f"{masses.delta:.5g}")])
+        for s in summary.speeds:
+            print(f"\n{s.rpm:g} r/min")
+            _print_table([("mean / max crank torque", f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
+                          ("mean power", f"{s.mean_power_W:.4g} W"),
+                          ("energy fluctuation ΔW_max", f"{s.energy_fluctuation_J:.4g} J"),
+                          ("flywheel J_F", f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
+                          ("flywheel J_F − J_e (net)", f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")])
     return 0
 
 

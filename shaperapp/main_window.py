@@ -81,6 +81,12 @@ class MainWindow(QMainWindow):
         self.addAction(action)
         return action
 
+    def _shortcut(self, action: QAction, shortcut: str) -> QAction:
+        action.setShortcut(QKeySequence(shortcut))
+        action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
+        self.addAction(action)
+        return action
+
     def _build_actions(self) -> None:
         d = self.document
         self.act_new = self._action(lambda: d.new_dialog(self), QKeySequence.StandardKey.New)
@@ -91,10 +97,12 @@ class MainWindow(QMainWindow):
         self.act_plots_img = self._action(lambda: self._export_image(self.plots, "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
         self.act_quit = self._action(self.close, QKeySequence.StandardKey.Quit)
-        self.act_play = self._action(self.animation.toggle_play, "Ctrl+Space")
-        self.act_step = self._action(self.animation.step_forward, "Ctrl+Right")
-        self.act_back = self._action(self.animation.step_back, "Ctrl+Left")
-        self.act_fit = self._action(self.scheme.fit, "Ctrl+0")
+        # The widgets own these actions (and their texts); the window only adds shortcuts.
+        self.act_play = self._shortcut(self.animation.play_action, "Ctrl+Space")
+        self.act_step = self._shortcut(self.animation.step_forward_action, "Ctrl+Right")
+        self.act_back = self._shortcut(self.animation.step_back_action, "Ctrl+Left")
+        self.act_fit = self._shortcut(self.scheme.fit_action, "Ctrl+0")
+        self.act_dims = self._shortcut(self.scheme.dimensions_action, "Ctrl+D")
         self.act_about = self._action(self._about)
         self.lang_actions: dict[str, QAction] = {}
         for code, name in i18n.LANGUAGES:
@@ -118,6 +126,7 @@ class MainWindow(QMainWindow):
         self.menu_file.addAction(self.act_quit)
         self.menu_view = bar.addMenu("")
         self.menu_view.addAction(self.act_fit)
+        self.menu_view.addAction(self.act_dims)
         self.menu_lang = self.menu_view.addMenu("")
         for action in self.lang_actions.values():
             self.menu_lang.addAction(action)
@@ -159,10 +168,6 @@ class MainWindow(QMainWindow):
             (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots as an image")),
             (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
             (self.act_quit, self.tr("&Quit"), ""),
-            (self.act_play, self.tr("&Play / pause"), ""),
-            (self.act_step, self.tr("Step &forward"), ""),
-            (self.act_back, self.tr("Step &back"), ""),
-            (self.act_fit, self.tr("&Fit scheme to view"), ""),
             (self.act_about, self.tr("&About"), ""),
         ]
         for action, text, tip in texts:
