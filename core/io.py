@@ -14,6 +14,7 @@ from typing import Any, Iterable
 
 import numpy as np
 
+from .dynamics import MassProperties
 from .errors import DesignError, FileFormatError
 from .kinematics import Motion
 from .spec import Spec
@@ -138,11 +139,43 @@ def load_design(path: str | os.PathLike) -> dict[str, Any]:
         if isinstance(step, bool) or not isinstance(step, (int, float)):
             raise FileFormatError(f"{path}: 'step_deg' must be a number")
         crank_angles(step)
+        masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
     except DesignError as exc:
         raise FileFormatError(f"{path}: invalid design ({exc})") from None
     result = dict(doc)
-    result.update(spec=spec, rpm=rpm, step_deg=float(step))
+    result.update(spec=spec, rpm=rpm, step_deg=float(step), masses=masses)
     return result
+
+
+def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
+    """The load inputs as stored in a design file (units in the keys)."""
+    data = {name: getattr(masses, name) for name in MassProperties.__dataclass_fields__}
+    data["ram_cg_mm"] = list(masses.ram_cg_mm)
+    return data
+
+
+def masses_from_dict(data: object) -> MassProperties:
+    """Validate stored load inputs; DesignError names the bad field."""
+    if not isinstance(data, dict):
+        raise DesignError("forces", data, "must be an object of load inputs")
+    known = set(MassProperties.__dataclass_fields__)
+    for key, value in data.items():
+        if key not in known:
+            raise DesignError(key, value, "is not a load input")
+        if key == "gravity":
+            continue
+        if key == "ram_cg_mm":
+            if not isinstance(value, list) or len(value) != 2:
+                raise DesignError(key, value, "must be a pair [dx, dy] in mm")
+            continue
+        if key == "lever_cg_mm" and value is None:
+            continue
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise DesignError(key, value, "must be a number")
+    values = dict(data)
+    if "ram_cg_mm" in values:
+        values["ram_cg_mm"] = tuple(values["ram_cg_mm"])
+    return MassProperties(**values)
 
 
 def _refuse_constant(name: str) -> float:

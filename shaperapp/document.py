@@ -12,7 +12,8 @@ from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QFileDialog, QMessageBox, QWidget
 
 from core.errors import FileFormatError
-from core.io import atomic_write, curves_csv, load_design, save_design
+from core.dynamics_io import dynamics_csv
+from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
 from core.spec import Spec
 
 from .model import DEFAULT_RPMS, DEFAULT_STEP, DesignModel
@@ -39,14 +40,16 @@ class Document(QObject):
         except FileFormatError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
             return False
-        self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path))
+        self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
+                               masses=doc["masses"])
         self._add_recent(path)
         return True
 
     def save_to(self, path: str) -> bool:
         model = self._model
         try:
-            save_design(path, model.valid_spec, model.rpms, model.step_deg)
+            save_design(path, model.valid_spec, model.rpms, model.step_deg,
+                        extra={"forces": masses_to_dict(model.masses)})
         except OSError as exc:
             self.failed.emit(self.tr("Could not save %1: %2").replace("%1", path)
                              .replace("%2", exc.strerror or str(exc)))
@@ -57,8 +60,16 @@ class Document(QObject):
         return True
 
     def export_csv_to(self, path: str) -> bool:
+        """Curves in the format of ``shaper curves``."""
+        return self._write(path, curves_csv(self._model.motion))
+
+    def export_forces_csv_to(self, path: str) -> bool:
+        """Torque, power and joint forces in the format of ``shaper dynamics --csv``."""
+        return self._write(path, dynamics_csv(self._model.dynamics))
+
+    def _write(self, path: str, text: str) -> bool:
         try:
-            atomic_write(path, curves_csv(self._model.motion))
+            atomic_write(path, text)
         except OSError as exc:
             self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path)
                              .replace("%2", exc.strerror or str(exc)))
@@ -126,7 +137,14 @@ class Document(QObject):
         return bool(path) and self.save_to(path)
 
     def export_csv_dialog(self, parent: QWidget) -> bool:
-        start = os.path.join(self.last_dir(), "curves.csv")
-        path, _ = QFileDialog.getSaveFileName(parent, self.tr("Export curves to CSV"), start,
-                                              self.tr("CSV files (*.csv)"))
+        path = self._csv_path(parent, self.tr("Export curves to CSV"), "curves.csv")
         return bool(path) and self.export_csv_to(path)
+
+    def export_forces_csv_dialog(self, parent: QWidget) -> bool:
+        path = self._csv_path(parent, self.tr("Export forces to CSV"), "forces.csv")
+        return bool(path) and self.export_forces_csv_to(path)
+
+    def _csv_path(self, parent: QWidget, title: str, name: str) -> str:
+        start = os.path.join(self.last_dir(), name)
+        path, _ = QFileDialog.getSaveFileName(parent, title, start, self.tr("CSV files (*.csv)"))
+        return path

@@ -29,6 +29,19 @@ def field_name(parameter: str) -> str:
         "rod_side": _t("Rod side"),
         "rpm": _t("Crank speeds"),
         "step": _t("Angle step"),
+        "lever_mass_kg": _t("Lever mass"),
+        "lever_cg_mm": _t("Lever centre of mass"),
+        "lever_inertia_kg_m2": _t("Lever moment of inertia"),
+        "ram_mass_kg": _t("Ram mass"),
+        "ram_cg_mm": _t("Ram centre-of-mass offset"),
+        "rod_mass_kg": _t("Rod mass"),
+        "crank_mass_kg": _t("Crank mass"),
+        "block_mass_kg": _t("Block mass"),
+        "cut_force_N": _t("Cutting force P"),
+        "cut_height_mm": _t("Tool height below guide"),
+        "idle_fraction": _t("Idle margin"),
+        "delta": _t("Speed fluctuation δ"),
+        "gravity": _t("Gravity"),
     }
     return names.get(parameter, parameter)
 
@@ -36,6 +49,10 @@ def field_name(parameter: str) -> str:
 # (pattern on core's English ``allowed`` text, translatable template with %1, %2 …)
 _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"must be > (\S+) and ≤ (\S+)(?: (.+))?$", "must be greater than %1 and at most %2 %3"),
+    (r"must be ≥ (\S+) and ≤ (\S+)(?: (.+))?$", "must be at least %1 and at most %2 %3"),
+    (r"must be ≥ (\S+) and < (\S+)(?: (.+))?$", "must be at least %1 and less than %2 %3"),
+    (r"must be > (\S+) and < (\S+)(?: (.+))?$", "must be greater than %1 and less than %2 %3"),
+    (r"must be a pair \(dx, dy\) in mm$", "must be a pair (dx, dy) in mm"),
     (r"must be a number$", "must be a number"),
     (r"must be a finite number$", "must be a finite number"),
     (r"must be ≥ (\S+) mm for this crank and K, so that the crank pin stays on the lever$",
@@ -63,6 +80,10 @@ def _translated_templates() -> dict[str, str]:
     # Listed literally so pyside6-lupdate finds every template.
     return {
         "must be greater than %1 and at most %2 %3": _t("must be greater than %1 and at most %2 %3"),
+        "must be at least %1 and at most %2 %3": _t("must be at least %1 and at most %2 %3"),
+        "must be at least %1 and less than %2 %3": _t("must be at least %1 and less than %2 %3"),
+        "must be greater than %1 and less than %2 %3": _t("must be greater than %1 and less than %2 %3"),
+        "must be a pair (dx, dy) in mm": _t("must be a pair (dx, dy) in mm"),
         "must be a number": _t("must be a number"),
         "must be a finite number": _t("must be a finite number"),
         "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever":

@@ -31,21 +31,31 @@ class MetricsPanel(QWidget):
             self._add_row(self._dim_form, key)
         for key in ("K", "stroke", "work_angle", "return_angle", "pressure"):
             self._add_row(self._cycle_form, key)
-        self._table = QTableWidget(self)
-        self._table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        self._table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
-        self._table.verticalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
-        self._table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
-        self._table.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self._table.setSizeAdjustPolicy(QAbstractItemView.SizeAdjustPolicy.AdjustToContents)
+        self._table = self._make_table()
+        self._forces_title = QLabel(self)
+        self._forces_title.setStyleSheet("font-weight: 600; margin-top: 6px;")
+        self._forces_table = self._make_table()
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self._dim_box)
         layout.addWidget(self._cycle_box)
         layout.addWidget(self._table)
+        layout.addWidget(self._forces_title)
+        layout.addWidget(self._forces_table)
         layout.addStretch(1)
         model.resultsChanged.connect(self._show)
+        model.forcesChanged.connect(self._show_forces)
         self._retranslate()
+
+    def _make_table(self) -> QTableWidget:
+        table = QTableWidget(self)
+        table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
+        table.verticalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
+        table.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        table.setSizeAdjustPolicy(QAbstractItemView.SizeAdjustPolicy.AdjustToContents)
+        return table
 
     def _add_row(self, form: QFormLayout, key: str) -> None:
         label, value = QLabel(self), QLabel(self)
@@ -72,7 +82,21 @@ class MetricsPanel(QWidget):
             ("lever_alpha_max_rad_s2", self.tr("Max lever α, rad/s²")),
         ]
 
+    def _force_rows(self) -> list[tuple[str, str, float, str]]:
+        """(attribute, title, scale, format) of the per-speed load values."""
+        return [
+            ("mean_torque_N_m", self.tr("Mean crank torque, N·m"), 1.0, ".1f"),
+            ("max_torque_N_m", self.tr("Max crank torque, N·m"), 1.0, ".1f"),
+            ("mean_power_W", self.tr("Motor power (before efficiency), kW"), 1e-3, ".3f"),
+            ("max_power_W", self.tr("Peak input power, kW"), 1e-3, ".3f"),
+            ("energy_fluctuation_J", self.tr("Energy fluctuation ΔW_max, J"), 1.0, ".1f"),
+            ("flywheel_inertia_kg_m2", self.tr("Flywheel J_F on crank shaft, kg·m²"), 1.0, ".2f"),
+            ("flywheel_inertia_net_kg_m2", self.tr("J_F less mechanism's own, kg·m²"), 1.0, ".2f"),
+        ]
+
     def _retranslate(self) -> None:
+        self._forces_title.setText(self.tr("Forces and flywheel"))
+        self._forces_title.setToolTip(self.tr("Constant crank speed; loads as set in the Forces tab"))
         self._dim_box.setTitle(self.tr("Synthesized dimensions"))
         self._cycle_box.setTitle(self.tr("Measured cycle"))
         titles = {
@@ -94,6 +118,7 @@ class MetricsPanel(QWidget):
             self._labels[key].setText(text)
             self._labels[key].setToolTip(tip)
         self._show()
+        self._show_forces()
 
     def _show(self) -> None:
         design, metrics = self._model.design, self._model.metrics
@@ -117,22 +142,28 @@ class MetricsPanel(QWidget):
         }
         for key, text in values.items():
             self._values[key].setText(text)
-        rows = self._row_titles()
-        self._table.setRowCount(len(rows))
-        self._table.setColumnCount(len(metrics.speeds))
-        self._table.setVerticalHeaderLabels([title for _, title in rows])
-        self._table.setHorizontalHeaderLabels([self.tr("%1 r/min").replace("%1", f"{s.rpm:g}")
-                                               for s in metrics.speeds])
-        for col, speed in enumerate(metrics.speeds):
-            for row, (attr, _) in enumerate(rows):
-                item = QTableWidgetItem(f"{getattr(speed, attr):.4f}")
+        rows = [(attr, title, 1.0, ".4f") for attr, title in self._row_titles()]
+        self._fill(self._table, rows, metrics.speeds)
+
+    def _show_forces(self) -> None:
+        self._fill(self._forces_table, self._force_rows(), self._model.dynamics_summary.speeds)
+
+    def _fill(self, table: QTableWidget, rows: list[tuple[str, str, float, str]], speeds) -> None:
+        """One column per crank speed, one row per value, numbers right-aligned."""
+        table.setRowCount(len(rows))
+        table.setColumnCount(len(speeds))
+        table.setVerticalHeaderLabels([title for _, title, _, _ in rows])
+        table.setHorizontalHeaderLabels([self.tr("%1 r/min").replace("%1", f"{s.rpm:g}") for s in speeds])
+        for col, speed in enumerate(speeds):
+            for row, (attr, _, scale, fmt) in enumerate(rows):
+                item = QTableWidgetItem(format(getattr(speed, attr) * scale, fmt))
                 item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
-                self._table.setItem(row, col, item)
+                table.setItem(row, col, item)
 
     def value_text(self, key: str) -> str:
         """The text shown for one dimension or cycle value (for tests)."""
         return self._values[key].text()
 
-    def table_text(self, row: int, column: int) -> str:
-        item = self._table.item(row, column)
+    def table_text(self, row: int, column: int, forces: bool = False) -> str:
+        item = (self._forces_table if forces else self._table).item(row, column)
         return item.text() if item else ""

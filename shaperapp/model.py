@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 from PySide6.QtCore import QObject, Signal
 
+from core.dynamics import Dynamics, DynamicsSummary, MassProperties, solve_dynamics, summarize
 from core.errors import DesignError
 from core.geometry import Design
 from core.kinematics import Motion, check_rpms, crank_angles, solve
@@ -21,6 +22,15 @@ from core.spec import Spec
 
 DEFAULT_RPMS = (40.0, 60.0)
 DEFAULT_STEP = 1.0
+# The classic course-design loads of a shaper (lever 200 N, J = 1.1 kg·m², ram 700 N,
+# cutting force 7000 N at 80 mm below the guide), so the Forces view shows a case at once.
+DEFAULT_MASSES = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                                cut_force_N=7000.0, cut_height_mm=80.0, delta=1.0 / 30.0)
+
+
+def masses_for(design: Design, masses: MassProperties) -> MassProperties:
+    """The block variant has no rod: a rod mass left over from the rod variant is ignored."""
+    return replace(masses, rod_mass_kg=0.0) if design.rod is None and masses.rod_mass_kg else masses
 
 
 class DesignModel(QObject):
@@ -31,12 +41,16 @@ class DesignModel(QObject):
       ``specChanged`` — the edited inputs changed (valid or not);
       ``errorChanged`` — the validation error appeared, changed or cleared;
       ``angleChanged(int)`` — the animation index moved;
+      ``forcesChanged`` — dynamics were recomputed (after any design or load change);
+      ``forcesErrorChanged`` — a load input became invalid or valid again;
       ``dirtyChanged(bool)``, ``pathChanged(str)`` — file state.
     """
 
     resultsChanged = Signal()
     specChanged = Signal()
     errorChanged = Signal()
+    forcesChanged = Signal()
+    forcesErrorChanged = Signal()
     angleChanged = Signal(int)
     dirtyChanged = Signal(bool)
     pathChanged = Signal(str)
@@ -54,6 +68,10 @@ class DesignModel(QObject):
         self._design: Design = self._spec.design()
         self._motion: Motion = solve(self._design, crank_angles(self._step), self._rpms)
         self._metrics: CycleMetrics = analyze(self._design, self._rpms)
+        self._masses = DEFAULT_MASSES
+        self._mass_inputs: dict[str, Any] = {}
+        self._forces_error: DesignError | None = None
+        self._dynamics, self._dynamics_summary = self._solve_forces(self._design, self._motion, self._masses)
 
     # ---- read access -------------------------------------------------
     @property
@@ -78,6 +96,28 @@ class DesignModel(QObject):
     @property
     def metrics(self) -> CycleMetrics:
         return self._metrics
+
+    @property
+    def masses(self) -> MassProperties:
+        """The last valid loads (as entered; see ``masses_for`` for what is solved)."""
+        return self._masses
+
+    @property
+    def mass_inputs(self) -> dict[str, Any]:
+        """Load fields as last typed, including invalid ones not yet applied."""
+        return {**self._masses.__dict__, **self._mass_inputs}
+
+    @property
+    def dynamics(self) -> Dynamics:
+        return self._dynamics
+
+    @property
+    def dynamics_summary(self) -> DynamicsSummary:
+        return self._dynamics_summary
+
+    @property
+    def forces_error(self) -> DesignError | None:
+        return self._forces_error
 
     @property
     def rpms(self) -> tuple[float, ...]:
@@ -162,8 +202,30 @@ class DesignModel(QObject):
         grid = np.degrees(self._motion.crank_angle)
         self.set_angle_index(int(np.argmin(np.abs(grid - deg))))
 
-    def load_state(self, spec: Spec, rpms, step_deg: float, path: str = "") -> None:
+    def set_masses(self, **changes: Any) -> None:
+        """Change some load inputs; apply them if they are all valid."""
+        inputs = {**self._mass_inputs, **changes}
+        if inputs == self._mass_inputs:
+            return
+        self._mass_inputs = inputs
+        try:
+            masses = replace(self._masses, **inputs)
+            dynamics, summary = self._solve_forces(self._design, self._motion, masses)
+        except DesignError as exc:
+            self._set_forces_error(exc)
+            return
+        self._mark_dirty()
+        self._masses, self._mass_inputs = masses, {}
+        self._dynamics, self._dynamics_summary = dynamics, summary
+        self._set_forces_error(None)
+        self.forcesChanged.emit()
+
+    def load_state(self, spec: Spec, rpms, step_deg: float, path: str = "",
+                   masses: MassProperties | None = None) -> None:
         """Replace everything at once (after a file was read and validated)."""
+        self._masses = DEFAULT_MASSES if masses is None else masses
+        self._mass_inputs = {}
+        self._set_forces_error(None)
         self._spec = spec
         self._rpms = tuple(float(v) for v in rpms)
         self._step = float(step_deg)
@@ -193,19 +255,36 @@ class DesignModel(QObject):
         if not same:
             self.errorChanged.emit()
 
+    def _set_forces_error(self, error: DesignError | None) -> None:
+        changed = (error is None) != (self._forces_error is None) or (
+            error is not None and str(error) != str(self._forces_error))
+        self._forces_error = error
+        if changed:
+            self.forcesErrorChanged.emit()
+
+    @staticmethod
+    def _solve_forces(design: Design, motion: Motion,
+                      masses: MassProperties) -> tuple[Dynamics, DynamicsSummary]:
+        used = masses_for(design, masses)
+        return (solve_dynamics(design, motion.crank_angle, motion.rpm, used),
+                summarize(design, motion.rpm, used))
+
     def _recompute(self, keep_fraction: float | None = None) -> None:
         try:
             design = self._spec.design()
             motion = solve(design, crank_angles(self._step), self._rpms)
             metrics = analyze(design, self._rpms)
+            dynamics, summary = self._solve_forces(design, motion, self._masses)
         except DesignError as exc:
             self._set_error(exc)
             return
         self._design, self._motion, self._metrics = design, motion, metrics
+        self._dynamics, self._dynamics_summary = dynamics, summary
         self._valid_spec = self._spec
         if keep_fraction is not None:
             self._index = int(round(keep_fraction * (motion.crank_angle.size - 1)))
         self._index = min(self._index, motion.crank_angle.size - 1)
         self._set_error(None)
         self.resultsChanged.emit()
+        self.forcesChanged.emit()
         self.angleChanged.emit(self._index)

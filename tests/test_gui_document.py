@@ -75,3 +75,28 @@ def test_csv_export_equals_cli_output(doc, tmp_path):
                  "--guide", "sagitta", "--rpm", "40", "60", "80", "--step", "2")
     assert cli.returncode == 0, cli.stderr
     assert path.read_text() == cli.stdout
+
+
+def test_loads_are_saved_with_the_design(doc, tmp_path):
+    model, document = doc
+    model.set_masses(ram_mass_kg=55.0, cut_force_N=4000.0, ram_cg_mm=(10.0, -20.0))
+    path = str(tmp_path / "loads.json")
+    assert document.save_to(path)
+    other = DesignModel()
+    Document(other, QSettings(str(tmp_path / "s3.ini"), QSettings.Format.IniFormat)).open_path(path)
+    assert other.masses == model.masses and other.masses.ram_cg_mm == (10.0, -20.0)
+
+
+def test_forces_csv_export_equals_cli_output(doc, tmp_path):
+    model, document = doc
+    model.set_spec(variant="rod", rod_ratio=0.3)
+    model.set_step(5.0)
+    path = tmp_path / "forces.csv"
+    assert document.export_forces_csv_to(str(path))
+    m = model.masses
+    cli = shaper("dynamics", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rod-ratio", "0.3",
+                 "--rpm", "40", "60", "--step", "5", "--lever-mass", m.lever_mass_kg,
+                 "--lever-inertia", m.lever_inertia_kg_m2, "--ram-mass", m.ram_mass_kg,
+                 "--cut-force", m.cut_force_N, "--cut-height", m.cut_height_mm, "--csv", "-")
+    assert cli.returncode == 0, cli.stderr
+    assert path.read_text() == cli.stdout

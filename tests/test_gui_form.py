@@ -99,3 +99,16 @@ def test_direct_dimensions_mode(setup, qtbot):
     type_into(qtbot, form.field("frame"), "90")
     form.field("frame").editingFinished.emit()
     assert model.error.parameter == "crank" and form.marked_fields() == ["crank"]
+
+
+def test_metrics_show_flywheel_and_power_from_core(setup, qtbot):
+    from core.dynamics import summarize
+    model, form, metrics = setup
+    model.set_masses(cut_force_N=5000.0, delta=0.05)
+    want = summarize(model.design, model.rpms, model.masses).speeds
+    for col, s in enumerate(want):
+        assert metrics.table_text(2, col, forces=True) == f"{s.mean_power_W / 1000:.3f}"
+        assert metrics.table_text(5, col, forces=True) == f"{s.flywheel_inertia_kg_m2:.2f}"
+    # Power is the cut work per cycle over the cycle time (gravity and inertia do no net work).
+    h = model.metrics.stroke_mm / 1000
+    assert want[0].mean_power_W == pytest.approx(5000 * h * (1 - 2 * 0.05) / model.metrics.speeds[0].cycle_time_s)

@@ -72,3 +72,19 @@ def test_csv_table_is_long_form():
     assert np.allclose(parsed, data, rtol=1e-9, atol=1e-12)
     assert json.dumps(list(names))  # names are plain ASCII identifiers with units
     assert all(n.isascii() for n in names)
+
+
+def test_loads_round_trip_and_refusal(tmp_path):
+    from core.dynamics import MassProperties
+    from core.io import masses_to_dict
+    masses = MassProperties(lever_mass_kg=22.5, lever_cg_mm=250.0, ram_mass_kg=60, ram_cg_mm=(-30.0, 45.0),
+                            cut_force_N=5000, gravity=False, delta=0.05)
+    path = tmp_path / "m.json"
+    save_design(path, Spec(), [40], 1.0, extra={"forces": masses_to_dict(masses)})
+    assert load_design(path)["masses"] == masses
+    doc = json.loads(path.read_text())
+    for bad in ({"ram_mass_kg": -1}, {"delta": 0}, {"ram_cg_mm": [1]}, {"wheels": 4}, {"cut_force_N": "big"}, []):
+        doc["forces"] = bad
+        path.write_text(json.dumps(doc))
+        with pytest.raises(FileFormatError):
+            load_design(path)
