@@ -10,7 +10,7 @@ import sys
 import numpy as np
 
 from core.geometry import synthesize
-from core.kinematics import crank_angles, solve
+from core.kinematics import solve
 from core.metrics import analyze
 
 ANGLES = np.radians(np.linspace(0, 360, 3601))

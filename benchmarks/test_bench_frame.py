@@ -1,6 +1,7 @@
 """One animation frame of the mechanism sketch: move the model's angle, update, repaint.
 
-Budget: ≤ 8 ms per frame so that 60 frames/s leave room for the plots.
+Budget: ≤ 8 ms per frame so that 60 frames/s leave room for the plots, with the
+force arrows hidden (the default) and shown.
 Run: python -m pytest benchmarks/test_bench_frame.py --benchmark-enable -q
 """
 from __future__ import annotations
@@ -15,16 +16,21 @@ from shaperapp.scheme import SchemeWidget
 FRAME_BUDGET_S = 0.008
 
 
-@pytest.fixture(params=["block", "rod"])
+@pytest.fixture(params=[("block", False), ("rod", False), ("block", True), ("rod", True)],
+                ids=["block", "rod", "block-forces", "rod-forces"])
 def shown_scheme(request, qtbot):
+    """The scheme of one variant, with the force arrows hidden (default) or shown."""
+    variant, forces = request.param
     model = DesignModel()
-    if request.param == "rod":
+    if variant == "rod":
         model.set_spec(variant="rod", rod_ratio=0.3)
     widget = SchemeWidget(model)
     qtbot.addWidget(widget)
     widget.resize(800, 600)
     widget.show()
     qtbot.waitExposed(widget)
+    widget.set_forces_visible(forces)
+    assert bool(widget.drawn_forces()) == forces
     return model, widget
 
 

@@ -16,7 +16,7 @@ from typing import Literal
 
 import numpy as np
 
-from .errors import DesignError, require_finite, require_range
+from .errors import DesignError, require_range
 
 MAX_LENGTH_MM = 100_000.0
 MAX_TIME_RATIO = 5.0

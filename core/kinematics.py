@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import DesignError, require_finite, require_range
+from .errors import DesignError, require_range
 from .geometry import Design
 
 MAX_RPM = 1000.0

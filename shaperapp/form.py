@@ -5,10 +5,9 @@ parameter, and the form marks that field. The form never computes anything.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, QLocale, QTimer, Qt, Signal
+from PySide6.QtCore import QEvent, QTimer, Qt, Signal
 from PySide6.QtWidgets import (QButtonGroup, QComboBox, QFormLayout, QGroupBox, QHBoxLayout,
-                               QLabel, QLineEdit, QListWidget, QListWidgetItem, QPushButton,
-                               QRadioButton, QSizePolicy, QToolButton, QVBoxLayout, QWidget)
+                               QLabel, QLineEdit, QListWidget, QListWidgetItem, QRadioButton, QSizePolicy, QToolButton, QVBoxLayout, QWidget)
 
 from .messages import describe
 from .model import DesignModel
@@ -85,6 +84,10 @@ class DesignForm(QWidget):
         self._guide_rule = QComboBox(self)
         self._rod_input = QComboBox(self)
         self._rod_side = QComboBox(self)
+        for combo in (self._variant, self._guide_rule, self._rod_input, self._rod_side):
+            # Long item texts (and their translations) must not widen the side panel.
+            combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
+            combo.setMinimumContentsLength(14)
         self._speeds = QListWidget(self)
         self._speeds.setMaximumHeight(78)
         self._speeds.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)

@@ -10,11 +10,12 @@ import os
 from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
 from PySide6.QtWidgets import (QFileDialog, QMainWindow, QMessageBox, QScrollArea, QSplitter,
-                               QVBoxLayout, QWidget)
+                               QTabWidget, QVBoxLayout, QWidget)
 
 from . import i18n
 from .animation import AnimationBar
 from .document import Document
+from .forces_panel import ForcesPanel
 from .form import DesignForm
 from .messages import describe
 from .metrics_panel import MetricsPanel
@@ -36,6 +37,10 @@ class MainWindow(QMainWindow):
         self.scheme = SchemeWidget(model)
         self.animation = AnimationBar(model)
         self.plots = PlotsWidget(model)
+        self.forces = ForcesPanel(model)
+        self.tabs = QTabWidget()
+        self.tabs.addTab(self.plots, "")
+        self.tabs.addTab(self.forces, "")
 
         side = QWidget()
         side_layout = QVBoxLayout(side)
@@ -44,7 +49,8 @@ class MainWindow(QMainWindow):
         scroll = QScrollArea()
         scroll.setWidget(side)
         scroll.setWidgetResizable(True)
-        scroll.setMinimumWidth(380)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        scroll.setMinimumWidth(side.minimumSizeHint().width() + scroll.verticalScrollBar().sizeHint().width() + 4)
         middle = QWidget()
         middle_layout = QVBoxLayout(middle)
         middle_layout.setContentsMargins(0, 0, 0, 0)
@@ -53,7 +59,7 @@ class MainWindow(QMainWindow):
         self.splitter = QSplitter(Qt.Orientation.Horizontal)
         self.splitter.addWidget(scroll)
         self.splitter.addWidget(middle)
-        self.splitter.addWidget(self.plots)
+        self.splitter.addWidget(self.tabs)
         self.splitter.setStretchFactor(0, 0)
         self.splitter.setStretchFactor(1, 3)
         self.splitter.setStretchFactor(2, 3)
@@ -94,7 +100,9 @@ class MainWindow(QMainWindow):
         self.act_save = self._action(lambda: d.save_dialog(self), QKeySequence.StandardKey.Save)
         self.act_save_as = self._action(lambda: d.save_as_dialog(self), QKeySequence.StandardKey.SaveAs)
         self.act_csv = self._action(lambda: d.export_csv_dialog(self), "Ctrl+E")
-        self.act_plots_img = self._action(lambda: self._export_image(self.plots, "plots"), "Ctrl+Shift+P")
+        self.act_forces_csv = self._action(lambda: d.export_forces_csv_dialog(self), "Ctrl+Shift+E")
+        self.act_plots_img = self._action(
+            lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
         self.act_quit = self._action(self.close, QKeySequence.StandardKey.Quit)
         # The widgets own these actions (and their texts); the window only adds shortcuts.
@@ -103,6 +111,7 @@ class MainWindow(QMainWindow):
         self.act_back = self._shortcut(self.animation.step_back_action, "Ctrl+Left")
         self.act_fit = self._shortcut(self.scheme.fit_action, "Ctrl+0")
         self.act_dims = self._shortcut(self.scheme.dimensions_action, "Ctrl+D")
+        self.act_forces = self._shortcut(self.scheme.forces_action, "Ctrl+F")
         self.act_about = self._action(self._about)
         self.lang_actions: dict[str, QAction] = {}
         for code, name in i18n.LANGUAGES:
@@ -120,13 +129,14 @@ class MainWindow(QMainWindow):
         for a in (self.act_save, self.act_save_as):
             self.menu_file.addAction(a)
         self.menu_file.addSeparator()
-        for a in (self.act_csv, self.act_plots_img, self.act_scheme_img):
+        for a in (self.act_csv, self.act_forces_csv, self.act_plots_img, self.act_scheme_img):
             self.menu_file.addAction(a)
         self.menu_file.addSeparator()
         self.menu_file.addAction(self.act_quit)
         self.menu_view = bar.addMenu("")
         self.menu_view.addAction(self.act_fit)
         self.menu_view.addAction(self.act_dims)
+        self.menu_view.addAction(self.act_forces)
         self.menu_lang = self.menu_view.addMenu("")
         for action in self.lang_actions.values():
             self.menu_lang.addAction(action)
@@ -165,7 +175,9 @@ class MainWindow(QMainWindow):
             (self.act_save, self.tr("&Save"), self.tr("Save the design")),
             (self.act_save_as, self.tr("Save &As…"), self.tr("Save the design under a new name")),
             (self.act_csv, self.tr("Export curves to &CSV…"), self.tr("All speeds, at the form's angle step")),
-            (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots as an image")),
+            (self.act_forces_csv, self.tr("Export &forces to CSV…"),
+             self.tr("Crank torque, power and joint forces, all speeds")),
+            (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots of the current tab as an image")),
             (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
             (self.act_quit, self.tr("&Quit"), ""),
             (self.act_about, self.tr("&About"), ""),
@@ -173,6 +185,8 @@ class MainWindow(QMainWindow):
         for action, text, tip in texts:
             action.setText(text)
             action.setStatusTip(tip)
+        self.tabs.setTabText(0, self.tr("Kinematics"))
+        self.tabs.setTabText(1, self.tr("Forces"))
         self.menu_file.setTitle(self.tr("&File"))
         self.menu_recent.setTitle(self.tr("Open &Recent"))
         self.menu_view.setTitle(self.tr("&View"))

@@ -12,36 +12,32 @@ from PySide6.QtCore import QCoreApplication
 from core.errors import DesignError
 
 
-def _t(text: str) -> str:
-    return QCoreApplication.translate("messages", text)
-
-
 def field_name(parameter: str) -> str:
     names = {
-        "crank": _t("Crank length L1"),
-        "time_ratio": _t("Time ratio K"),
-        "stroke": _t("Stroke H"),
-        "frame": _t("Frame distance L2"),
-        "lever": _t("Lever length L3"),
-        "guide": _t("Ram guide"),
-        "rod": _t("Rod length L4"),
-        "rod_ratio": _t("Rod ratio L4/L3"),
-        "rod_side": _t("Rod side"),
-        "rpm": _t("Crank speeds"),
-        "step": _t("Angle step"),
-        "lever_mass_kg": _t("Lever mass"),
-        "lever_cg_mm": _t("Lever centre of mass"),
-        "lever_inertia_kg_m2": _t("Lever moment of inertia"),
-        "ram_mass_kg": _t("Ram mass"),
-        "ram_cg_mm": _t("Ram centre-of-mass offset"),
-        "rod_mass_kg": _t("Rod mass"),
-        "crank_mass_kg": _t("Crank mass"),
-        "block_mass_kg": _t("Block mass"),
-        "cut_force_N": _t("Cutting force P"),
-        "cut_height_mm": _t("Tool height below guide"),
-        "idle_fraction": _t("Idle margin"),
-        "delta": _t("Speed fluctuation δ"),
-        "gravity": _t("Gravity"),
+        "crank": QCoreApplication.translate("messages", "Crank length L1"),
+        "time_ratio": QCoreApplication.translate("messages", "Time ratio K"),
+        "stroke": QCoreApplication.translate("messages", "Stroke H"),
+        "frame": QCoreApplication.translate("messages", "Frame distance L2"),
+        "lever": QCoreApplication.translate("messages", "Lever length L3"),
+        "guide": QCoreApplication.translate("messages", "Ram guide"),
+        "rod": QCoreApplication.translate("messages", "Rod length L4"),
+        "rod_ratio": QCoreApplication.translate("messages", "Rod ratio L4/L3"),
+        "rod_side": QCoreApplication.translate("messages", "Rod side"),
+        "rpm": QCoreApplication.translate("messages", "Crank speeds"),
+        "step": QCoreApplication.translate("messages", "Angle step"),
+        "lever_mass_kg": QCoreApplication.translate("messages", "Lever mass"),
+        "lever_cg_mm": QCoreApplication.translate("messages", "Lever centre of mass"),
+        "lever_inertia_kg_m2": QCoreApplication.translate("messages", "Lever moment of inertia"),
+        "ram_mass_kg": QCoreApplication.translate("messages", "Ram mass"),
+        "ram_cg_mm": QCoreApplication.translate("messages", "Ram centre-of-mass offset"),
+        "rod_mass_kg": QCoreApplication.translate("messages", "Rod mass"),
+        "crank_mass_kg": QCoreApplication.translate("messages", "Crank mass"),
+        "block_mass_kg": QCoreApplication.translate("messages", "Block mass"),
+        "cut_force_N": QCoreApplication.translate("messages", "Cutting force P"),
+        "cut_height_mm": QCoreApplication.translate("messages", "Tool height below guide"),
+        "idle_fraction": QCoreApplication.translate("messages", "Idle margin"),
+        "delta": QCoreApplication.translate("messages", "Speed fluctuation δ"),
+        "gravity": QCoreApplication.translate("messages", "Gravity"),
     }
     return names.get(parameter, parameter)
 
@@ -79,30 +75,30 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
 def _translated_templates() -> dict[str, str]:
     # Listed literally so pyside6-lupdate finds every template.
     return {
-        "must be greater than %1 and at most %2 %3": _t("must be greater than %1 and at most %2 %3"),
-        "must be at least %1 and at most %2 %3": _t("must be at least %1 and at most %2 %3"),
-        "must be at least %1 and less than %2 %3": _t("must be at least %1 and less than %2 %3"),
-        "must be greater than %1 and less than %2 %3": _t("must be greater than %1 and less than %2 %3"),
-        "must be a pair (dx, dy) in mm": _t("must be a pair (dx, dy) in mm"),
-        "must be a number": _t("must be a number"),
-        "must be a finite number": _t("must be a finite number"),
+        "must be greater than %1 and at most %2 %3": QCoreApplication.translate("messages", "must be greater than %1 and at most %2 %3"),
+        "must be at least %1 and at most %2 %3": QCoreApplication.translate("messages", "must be at least %1 and at most %2 %3"),
+        "must be at least %1 and less than %2 %3": QCoreApplication.translate("messages", "must be at least %1 and less than %2 %3"),
+        "must be greater than %1 and less than %2 %3": QCoreApplication.translate("messages", "must be greater than %1 and less than %2 %3"),
+        "must be a pair (dx, dy) in mm": QCoreApplication.translate("messages", "must be a pair (dx, dy) in mm"),
+        "must be a number": QCoreApplication.translate("messages", "must be a number"),
+        "must be a finite number": QCoreApplication.translate("messages", "must be a finite number"),
         "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever":
-            _t("must be at least %1 mm for this crank and K, so that the crank pin stays on the lever"),
-        "must be shorter than the frame O2O4 (%1 mm)": _t("must be shorter than the frame O2O4 (%1 mm)"),
+            QCoreApplication.translate("messages", "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever"),
+        "must be shorter than the frame O2O4 (%1 mm)": QCoreApplication.translate("messages", "must be shorter than the frame O2O4 (%1 mm)"),
         "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever":
-            _t("must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
+            QCoreApplication.translate("messages", "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
         "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank":
-            _t("must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
+            QCoreApplication.translate("messages", "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
         "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide":
-            _t("must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
+            QCoreApplication.translate("messages", "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
         "must be more than %1 mm to reach the guide line over the whole cycle":
-            _t("must be more than %1 mm to reach the guide line over the whole cycle"),
+            QCoreApplication.translate("messages", "must be more than %1 mm to reach the guide line over the whole cycle"),
         "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line":
-            _t("the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
-        "give 1 to %1 crank speeds": _t("give 1 to %1 crank speeds"),
-        "gives more than %1 angles; use a larger step": _t("gives more than %1 angles; use a larger step"),
+            QCoreApplication.translate("messages", "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
+        "give 1 to %1 crank speeds": QCoreApplication.translate("messages", "give 1 to %1 crank speeds"),
+        "gives more than %1 angles; use a larger step": QCoreApplication.translate("messages", "gives more than %1 angles; use a larger step"),
         "must be given either as a length or as a ratio L4/L3, not both":
-            _t("must be given either as a length or as a ratio L4/L3, not both"),
+            QCoreApplication.translate("messages", "must be given either as a length or as a ratio L4/L3, not both"),
     }
 
 
@@ -118,4 +114,4 @@ def describe(error: DesignError) -> str:
                 body = body.replace(f"%{i}", group or "")
             body = body.strip()
             break
-    return _t("%1: %2").replace("%1", field_name(error.parameter)).replace("%2", body)
+    return QCoreApplication.translate("messages", "%1: %2").replace("%1", field_name(error.parameter)).replace("%2", body)

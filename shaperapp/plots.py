@@ -52,6 +52,95 @@ def _y_data(motion: Motion, name: str) -> np.ndarray:
     return getattr(motion, name)
 
 
+
+def styled_plot_item(padding: float) -> pg.PlotItem:
+    """A plot styled like every diagram of the app: opaque grid beneath the curves,
+    fixed-width left axis, no SI prefixes, pan along x only."""
+    item = pg.PlotItem()
+    item.showGrid(x=True, y=True)
+    item.setMenuEnabled(False)
+    item.hideButtons()
+    item.setDefaultPadding(padding)
+    item.vb.setMouseEnabled(x=True, y=False)
+    for side in ("left", "bottom"):
+        axis = item.getAxis(side)
+        axis.enableAutoSIPrefix(False)
+        axis.setPen(pg.mkPen(AXIS))
+        axis.setTextPen(pg.mkPen(TEXT))
+        # Grid: opaque light grey, beneath the curves (the ViewBox is at z -100); only
+        # major lines across the short plots. Translucent lines draw ~15× slower.
+        axis.setTickPen(pg.mkPen(GRID))
+        axis.setStyle(tickAlpha=255, maxTickLevel=1 if side == "bottom" else 0)
+        axis.setZValue(-200)
+    item.getAxis("left").setWidth(AXIS_WIDTH)
+    return item
+
+
+def add_cursor(item: pg.PlotItem) -> pg.InfiniteLine:
+    """The dashed vertical line that follows the animation's crank angle."""
+    cursor = pg.InfiniteLine(angle=90, movable=False,
+                             pen=pg.mkPen(CURSOR, width=1.0, style=Qt.PenStyle.DashLine))
+    cursor.setZValue(10)
+    item.addItem(cursor, ignoreBounds=True)
+    return cursor
+
+
+def cache_axes(items, on: bool) -> None:
+    """Axes draw grid and text from a QPicture, the slowest part of a repaint: cache
+    them as pixmaps, so moving the cursor or redrawing a curve only blits them."""
+    mode = QGraphicsItem.CacheMode.DeviceCoordinateCache if on else QGraphicsItem.CacheMode.NoCache
+    for item in items:
+        for side in ("left", "bottom"):
+            item.getAxis(side).setCacheMode(mode)
+
+
+def export_layout(view: pg.GraphicsLayoutWidget, path: str, title: str,
+                set_axis_cache) -> None:
+    """Write ``view`` to ``path``: SVG through Qt's QSvgGenerator, else a raster image
+    at least EXPORT_WIDTH px wide. ``set_axis_cache(on)`` switches axis pixmap caching,
+    which would blur a scaled raster.
+
+    pyqtgraph 0.14's SVGExporter fails on the closed paths ("… Z") Qt 6.11+ writes
+    for every ViewBox (pyqtgraph issue #3495), hence Qt's own SVG painter. The raster
+    is scaled through the device pixel ratio, not a painter transform, so the legend
+    (drawn ignoring transformations) grows with everything else. Axes replay QPictures
+    recorded at the screen's DPI, so the SVG resolution must match it."""
+    target = Path(path)
+    suffix = target.suffix.lower().lstrip(".")
+    raster = {bytes(f).decode() for f in QImageWriter.supportedImageFormats()}
+    if suffix != "svg" and suffix not in raster:
+        raise ValueError(f"unsupported image type: {target.suffix!r}")
+    source = view.ci.sceneBoundingRect()
+    page = QRectF(0.0, 0.0, source.width(), source.height())
+    if suffix == "svg":
+        device = QSvgGenerator()
+        device.setFileName(str(target))
+        device.setSize(page.size().toSize())
+        device.setViewBox(page)
+        device.setTitle(title)
+        device.setResolution(QPicture().logicalDpiX())   # axes replay DPI-bound QPictures
+    else:
+        scale = max(1.0, EXPORT_WIDTH / page.width())
+        device = QImage(math.ceil(page.width() * scale), math.ceil(page.height() * scale),
+                        QImage.Format.Format_ARGB32)
+        device.setDevicePixelRatio(scale)
+    painter = QPainter(device)
+    set_axis_cache(False)
+    try:
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+        painter.setRenderHint(QPainter.RenderHint.TextAntialiasing)
+        painter.fillRect(page, view.backgroundBrush())
+        view.scene().render(painter, page, source)
+    finally:
+        painter.end()
+        set_axis_cache(True)
+    if suffix != "svg" and not device.save(str(target)):
+        raise OSError(f"could not write {target}")
+    if not target.exists():
+        raise OSError(f"could not write {target}")
+
+
+
 @dataclass
 class _Plot:
     """One stacked plot and the items that live in it."""
@@ -211,85 +300,21 @@ class PlotsWidget(QWidget):
     def export_image(self, path: str) -> None:
         """Write the shown plots to ``path``: SVG for ``.svg``, else a raster image (PNG …)
         at least EXPORT_WIDTH px wide."""
-        target = Path(path)
-        suffix = target.suffix.lower().lstrip(".")
-        raster = {bytes(f).decode() for f in QImageWriter.supportedImageFormats()}
-        if suffix != "svg" and suffix not in raster:
-            raise ValueError(f"unsupported image type: {target.suffix!r}")
-        source = self._view.ci.sceneBoundingRect()
-        page = QRectF(0.0, 0.0, source.width(), source.height())
-        if suffix == "svg":
-            # Qt's own SVG painter: pyqtgraph 0.14's SVGExporter fails on the closed
-            # paths ("… Z") Qt 6.11+ writes for every ViewBox (pyqtgraph issue #3495).
-            device = QSvgGenerator()
-            device.setFileName(str(target))
-            device.setSize(page.size().toSize())
-            device.setViewBox(page)
-            device.setTitle(self.tr("Shaper motion diagrams"))
-            # Axes replay cached QPictures, recorded at the screen's DPI: match it, or
-            # they come out scaled against the curves.
-            device.setResolution(QPicture().logicalDpiX())
-        else:
-            # Scale through the device pixel ratio, not a painter transform, so the
-            # legend (drawn ignoring transformations) grows with everything else.
-            scale = max(1.0, EXPORT_WIDTH / page.width())
-            device = QImage(math.ceil(page.width() * scale), math.ceil(page.height() * scale),
-                            QImage.Format.Format_ARGB32)
-            device.setDevicePixelRatio(scale)
-        painter = QPainter(device)
-        self._cache_axes(False)     # a cached pixmap would come out blurred when scaled
-        try:
-            painter.setRenderHint(QPainter.RenderHint.Antialiasing)
-            painter.setRenderHint(QPainter.RenderHint.TextAntialiasing)
-            painter.fillRect(page, self._view.backgroundBrush())
-            self._view.scene().render(painter, page, source)
-        finally:
-            painter.end()
-            self._cache_axes(True)
-        if suffix != "svg" and not device.save(str(target)):
-            raise OSError(f"could not write {target}")
-        if not target.exists():
-            raise OSError(f"could not write {target}")
+        export_layout(self._view, path, self.tr("Shaper motion diagrams"), self._cache_axes)
 
     # ---- construction --------------------------------------------------
     def _make_plot(self) -> _Plot:
-        item = pg.PlotItem()
-        item.showGrid(x=True, y=True)
-        item.setMenuEnabled(False)
-        item.hideButtons()
-        item.setDefaultPadding(0.1)   # the same at any plot height: fitted before layout too
-        item.vb.setMouseEnabled(x=True, y=False)
+        item = styled_plot_item(0.1)   # the same padding at any plot height: fitted before layout too
         item.vb.setAutoVisible(y=True)
-        for side in ("left", "bottom"):
-            axis = item.getAxis(side)
-            axis.enableAutoSIPrefix(False)
-            axis.setPen(pg.mkPen(AXIS))
-            axis.setTextPen(pg.mkPen(TEXT))
-            # Grid: opaque light grey, beneath the curves (the ViewBox is at z -100); only
-            # major lines across the short plots. Translucent lines draw ~15× slower.
-            axis.setTickPen(pg.mkPen(GRID))
-            axis.setStyle(tickAlpha=255, maxTickLevel=1 if side == "bottom" else 0)
-            axis.setZValue(-200)
-        item.getAxis("left").setWidth(AXIS_WIDTH)
         regions = tuple(pg.LinearRegionItem((0, 1), movable=False, brush=fill, pen=pg.mkPen(None))
                         for fill in (WORK_FILL, RETURN_FILL, RETURN_FILL))
         for region in regions:
             region.setZValue(-10)
             item.addItem(region, ignoreBounds=True)
-        cursor = pg.InfiniteLine(angle=90, movable=False,
-                                 pen=pg.mkPen(CURSOR, width=1.0, style=Qt.PenStyle.DashLine))
-        cursor.setZValue(10)
-        item.addItem(cursor, ignoreBounds=True)
-        return _Plot(item, cursor, regions)
+        return _Plot(item, add_cursor(item), regions)
 
     def _cache_axes(self, on: bool) -> None:
-        """Axes draw grid and text from a QPicture, the slowest part of a repaint: cache
-        them as pixmaps, so moving the cursor or redrawing a curve only blits them."""
-        mode = (QGraphicsItem.CacheMode.DeviceCoordinateCache if on
-                else QGraphicsItem.CacheMode.NoCache)
-        for plot in self._plots.values():
-            for side in ("left", "bottom"):
-                plot.item.getAxis(side).setCacheMode(mode)
+        cache_axes([plot.item for plot in self._plots.values()], on)
 
     def _relayout(self) -> None:
         """Put the shown plots in the layout; only the lowest one carries x tick values."""

@@ -9,6 +9,13 @@ the travelled tool path from at most a handful of prepared points. No
 pyqtgraph ``setData`` runs per frame: it is slower and, with PySide6 6.12,
 every Python-side signal emit leaks a reference (see ``_on_angle``).
 
+The optional force layer (``forces_action``, off by default) draws the joint
+forces of core's kinetostatics (``model.dynamics``) at the first crank speed
+as arrows on the same drawing: one length scale per design, arrow heads of a
+fixed size in mm. Its geometry for every crank angle is prepared once per
+solution; a frame only rebuilds one small path and moves a few labels, and
+nothing at all while the layer is hidden.
+
 Sizes that are not design data (bar widths, pins, the ram's height, the tool,
 the supports) scale with the drawing unit ``u = L3 / 40`` so that any design
 looks alike; they never change a dimension of the mechanism.
@@ -26,13 +33,14 @@ from PySide6.QtCore import QEvent, QPointF, QRectF, Qt
 from PySide6.QtGui import (QAction, QBrush, QColor, QFont, QPainter, QPainterPath, QPen,
                            QPolygonF)
 from PySide6.QtSvg import QSvgGenerator
-from PySide6.QtWidgets import (QCheckBox, QGraphicsEllipseItem, QGraphicsPathItem, QHBoxLayout,
+from PySide6.QtWidgets import (QCheckBox, QGraphicsEllipseItem, QGraphicsItem, QGraphicsPathItem,
+                               QGraphicsRectItem, QGraphicsSimpleTextItem, QHBoxLayout,
                                QToolButton, QVBoxLayout, QWidget)
 
 from core.kinematics import shape as core_shape
 
 from .model import DesignModel
-from .style import CURSOR, FRAME, LINK, TOOL_PATH
+from .style import CURSOR, FORCE, FRAME, LINK, TOOL_PATH
 
 EXPORT_WIDTH = 1600        # minimum width of an exported raster image, px
 UNITS_PER_LEVER = 40.0     # drawing unit u = L3 / 40
@@ -46,6 +54,17 @@ DIM = QColor(CURSOR)
 WHITE = QColor("#ffffff")
 Z_FRAME, Z_GHOST, Z_RAM, Z_PATH, Z_CRANK, Z_LEVER, Z_BLOCK, Z_JOINT, Z_DIM, Z_LABEL = range(10)
 MOVING = ("A", "B", "C")
+PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin marker radii, u
+# Force layer: what is drawn, how long and where.
+FORCE_NAMES = ("O2", "A", "O4", "B", "C", "guide", "cut")
+FORCE_SHARE = 0.35         # the cycle's largest force is drawn about this many L3 long
+FORCE_HEAD = 0.04          # arrow head length in L3 (shorter only on arrows shorter than 1.7 heads)
+FORCE_HEAD_HALF = 0.3      # half-width of an arrow head per head length
+FORCE_LABEL_GAP = 0.4      # gap between an arrow's free end and its label, u
+FORCE_ZERO = 1e-9          # a force below this share of the largest one is not drawn
+Z_FORCE = Z_BLOCK + 0.5    # over links and blocks, under the pin markers
+Z_FORCE_LABEL = Z_LABEL + 1
+FORCE_LABEL_FILL = QColor(255, 255, 255, 210)
 Pair = tuple[tuple[float, float], tuple[float, float]]
 
 
@@ -106,6 +125,97 @@ class _Frames:
 
 
 @dataclass(frozen=True)
+class _ForceFrames:
+    """The force arrows for every crank-angle index, prepared once per dynamics solution.
+
+    ``coords[i, k]`` holds, for force ``FORCE_NAMES[k]`` at index ``i``, in mm: the
+    arrow's start, the end of its shaft, its tip, the two back corners of its head
+    and its free end, where the label goes (12 numbers).
+    """
+
+    source: object              # the model.dynamics these were built from
+    coords: np.ndarray          # (n, k, 12)
+    shown: np.ndarray           # (n, k) bool: drawn at that index
+    magnitude: np.ndarray       # (n, k) N
+    outward: np.ndarray         # (n, k, 2) unit direction away from the arrow at its free end
+    mm_per_N: float             # the one length scale; NaN when every force is zero
+    ref_force_N: float          # the caption's round force ...
+    ref_mm: float               # ... and its length, mm
+    unit_N: float               # 1000 (labels in kN) or 1 (labels in N)
+    rpm: float
+
+
+class _Tag(QGraphicsRectItem):
+    """A short text on a light box, anchored at its position (anchor as pg.TextItem)."""
+
+    PAD = 2.0
+
+    def __init__(self, colour: QColor, fill: QColor, font: QFont, screen_fixed: bool) -> None:
+        super().__init__()
+        self.setPen(QPen(Qt.NoPen))
+        self.setBrush(QBrush(fill))
+        if screen_fixed:      # in the plot: text upright and the same size at any zoom
+            self.setFlag(QGraphicsItem.ItemIgnoresTransformations, True)
+        self._text = QGraphicsSimpleTextItem(self)
+        self._text.setBrush(QBrush(colour))
+        self._text.setFont(font)
+        self._shown = ""
+        self._size = (0.0, 0.0)
+        self._anchor = (-1.0, -1.0)
+
+    def set_text(self, text: str) -> tuple[float, float]:
+        """Show ``text``; returns the box's size in pixels."""
+        if text != self._shown:
+            self._text.setText(text)
+            self._shown = text
+            box = self._text.boundingRect()
+            self._size = (box.width() + 2.0 * self.PAD, box.height() + 2.0 * self.PAD)
+            self._anchor = (-1.0, -1.0)
+        return self._size
+
+    def place(self, text: str, x: float, y: float, anchor: tuple[float, float]) -> None:
+        self.set_text(text)
+        self.move(x, y, anchor)
+
+    def move(self, x: float, y: float, anchor: tuple[float, float]) -> None:
+        if anchor != self._anchor:
+            w, h = self._size
+            left, top = -anchor[0] * w, -anchor[1] * h
+            self.setRect(QRectF(left, top, w, h))
+            self._text.setPos(left + self.PAD, top + self.PAD)
+            self._anchor = anchor
+        self.setPos(x, y)
+
+    def text(self) -> str:
+        return self._shown
+
+
+_COMPASS = tuple((math.cos(math.radians(a)), math.sin(math.radians(a))) for a in range(0, 360, 45))
+
+
+def _label_spots(x: float, y: float, ox: float, oy: float, gap: float):
+    """Where a label may go beside the free end (x, y) of an arrow pointing out along
+    (ox, oy): straight on first, then the compass directions nearest to it, then the
+    same farther out; each as (x, y, anchor x, anchor y) with the box on that side."""
+    directions = [(ox, oy)] + sorted(_COMPASS, key=lambda e: -(e[0] * ox + e[1] * oy))
+    for distance in (gap, 3.0 * gap):
+        for ex, ey in directions:
+            m = max(abs(ex), abs(ey))
+            yield x + ex * distance, y + ey * distance, 0.5 - 0.5 * ex / m, 0.5 + 0.5 * ey / m
+
+
+def _nice_scale(largest_N: float, target_mm: float) -> tuple[float, float, float]:
+    """(mm per N, round force F_ref = 10^k N, its length 10…100 mm rounded to whole mm).
+
+    The largest force then lands within 5 % of ``target_mm``.
+    """
+    exact = target_mm / largest_N
+    ref = 10.0 ** math.ceil(math.log10(10.0 / exact) - 1e-12)
+    length = float(round(exact * ref))
+    return length / ref, ref, length
+
+
+@dataclass(frozen=True)
 class _Dimension:
     """One dimension: line segments, arrow tips (pos, outward direction) and its text."""
 
@@ -144,6 +254,8 @@ class SchemeWidget(QWidget):
         super().__init__(parent)
         self._model = model
         self._frames: _Frames | None = None
+        self._force_frames: _ForceFrames | None = None
+        self._drawn_force_names: list[str] = []
         self._design = None
         self._fit_rect = QRectF()
         self._plot = pg.PlotWidget(background="w")
@@ -166,16 +278,27 @@ class SchemeWidget(QWidget):
         self._view.menu.addSeparator()
         self._view.menu.addAction(self.fit_action)
         self._view.menu.addAction(self.dimensions_action)
+        self.forces_action = QAction(self)
+        self.forces_action.setCheckable(True)
+        self.forces_action.setChecked(False)
+        self.forces_action.toggled.connect(self._apply_forces_visible)
+        self._view.menu.addAction(self.forces_action)
         self._fit_button = QToolButton()
         self._fit_button.setDefaultAction(self.fit_action)
         self._dims_box = QCheckBox()
         self._dims_box.setChecked(True)
         self._dims_box.toggled.connect(self.dimensions_action.setChecked)
         self.dimensions_action.toggled.connect(self._dims_box.setChecked)
+        self._forces_box = QCheckBox()
+        self._forces_box.setObjectName("forcesBox")
+        self._forces_box.setChecked(False)
+        self._forces_box.toggled.connect(self.forces_action.setChecked)
+        self.forces_action.toggled.connect(self._forces_box.setChecked)
         bar = QHBoxLayout()
         bar.setContentsMargins(4, 2, 4, 0)
         bar.addWidget(self._fit_button)
         bar.addWidget(self._dims_box)
+        bar.addWidget(self._forces_box)
         bar.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
@@ -187,6 +310,7 @@ class SchemeWidget(QWidget):
         self._retranslate()
         model.resultsChanged.connect(self._on_results)
         model.angleChanged.connect(self._on_angle)
+        model.forcesChanged.connect(self._on_forces)
         self._on_results()
 
     # ---- public ------------------------------------------------------
@@ -202,6 +326,44 @@ class SchemeWidget(QWidget):
 
     def dimensions_visible(self) -> bool:
         return self.dimensions_action.isChecked()
+
+    def set_forces_visible(self, visible: bool) -> None:
+        """Show or hide the force arrows (first crank speed, current angle)."""
+        if self.forces_action.isChecked() != bool(visible):
+            self.forces_action.setChecked(bool(visible))     # → _apply_forces_visible
+
+    def forces_visible(self) -> bool:
+        return self.forces_action.isChecked()
+
+    def drawn_forces(self) -> dict[str, Pair]:
+        """The force arrows drawn now as {name: (start, tip)} in mm, read back from the drawn path.
+
+        Names are those of ``FORCE_NAMES`` that are drawn: the arrow runs from start to
+        tip along the force on the body named in core (see docs/forces.md): "O2" frame on
+        crank, "A" block on lever, "O4" frame on lever, "B" rod or tip block on lever,
+        "C" rod on ram, "guide" guide on ram, "cut" workpiece on tool. Every arrow starts
+        at its point of application except "cut", whose tip touches the tool point.
+        Empty while the layer is hidden.
+        """
+        if not self.forces_visible():
+            return {}
+        path = self._force_path.path()
+        names = self._drawn_force_names
+        assert path.elementCount() == 6 * len(names)
+        out = {}
+        for k, name in enumerate(names):
+            start, tip = path.elementAt(6 * k), path.elementAt(6 * k + 2)
+            out[name] = ((start.x, start.y), (tip.x, tip.y))
+        return out
+
+    def force_labels(self) -> dict[str, str]:
+        """The magnitude labels next to the drawn force arrows."""
+        return {name: tag.text() for name, tag in zip(FORCE_NAMES, self._force_tags)
+                if tag.isVisible()}
+
+    def force_caption(self) -> str:
+        """The force layer's caption (speed and length scale); empty while hidden."""
+        return self._force_caption.text() if self._force_caption.isVisible() else ""
 
     def export_image(self, path: str) -> None:
         """Write the sketch as PNG (at least 1600 px wide) or SVG, chosen by the suffix."""
@@ -285,9 +447,17 @@ class SchemeWidget(QWidget):
         self.dimensions_action.setText(self.tr("Show dimensions"))
         self._dims_box.setText(self.tr("Show dimensions"))
         self._dims_box.setToolTip(self.tr("Show the key dimensions L1, L2, L3, h and the stroke H"))
+        self.forces_action.setText(self.tr("Show forces"))
+        self._forces_box.setText(self.tr("Show forces"))
+        self._forces_box.setToolTip(self.tr(
+            "Show the joint forces at the first crank speed as arrows, to one scale"))
+        self._force_formats = {1000.0: self.tr("{0:.1f} kN"), 1.0: self.tr("{0:.0f} N")}
         self._plot.setToolTip(self.tr("Wheel: zoom, drag: pan, right click: more"))
         if self._frames is not None:
             self._update_dimensions()
+        if self._force_frames is not None and self.forces_visible():
+            self._update_force_caption()
+            self._draw_forces(self._model.angle_index)
 
     # ---- items, created once -----------------------------------------
     def _create_items(self) -> None:
@@ -339,6 +509,24 @@ class SchemeWidget(QWidget):
         for it in self._dim_texts:
             it.setZValue(Z_DIM)
             add(it)
+        # Force layer: one path for every shaft and head, one tag per force, a caption.
+        self._force_path = _body(FORCE, Z_FORCE, _pen(FORCE, 2.0))
+        self._force_path.setVisible(False)
+        add(self._force_path)
+        tag_font = QFont()
+        tag_font.setPointSize(9)
+        tag_font.setBold(True)
+        self._force_tags = [_Tag(FORCE, FORCE_LABEL_FILL, tag_font, True) for _ in FORCE_NAMES]
+        for tag in self._force_tags:
+            tag.setZValue(Z_FORCE_LABEL)
+            tag.setVisible(False)
+            add(tag)
+        caption_font = QFont()
+        caption_font.setPointSize(9)
+        self._force_caption = _Tag(FORCE, FORCE_LABEL_FILL, caption_font, False)
+        self._force_caption.setParentItem(self._view)     # fixed in the view's top-left corner
+        self._force_caption.setZValue(1e6)
+        self._force_caption.setVisible(False)
 
     def _dim_items(self) -> list:
         return [self._dim_lines, self._dim_heads, *self._dim_texts]
@@ -400,7 +588,8 @@ class SchemeWidget(QWidget):
         chain = min(x0, float(a[:, 0].min()), float(b[:, 0].min()), -2.0 * u) - 2.5 * u
         self._geometry = dict(o2=o2, u=u, guide=guide, rail_left=x0, chain_x=chain,
                               tip_y=guide + tip_local[1], tip_lo=ram_lo + tip_local[0],
-                              tip_hi=ram_hi + tip_local[0])
+                              tip_hi=ram_hi + tip_local[0], tip_dx=tip_local[0],
+                              ram_rear=-rear, ram_front=front)
         self._update_dimensions()
         bottom = min(-3.5 * u, guide + tip_local[1] - 6.0 * u)
         self._fit_rect = QRectF(QPointF(chain - 3.0 * u, bottom), QPointF(x1 + u, guide + y_hi + 1.5 * u))
@@ -431,7 +620,7 @@ class SchemeWidget(QWidget):
         if rod:
             self._rod.setPath(_stadium(design.rod, 1.0 * u))
         for name, pin in self._pins.items():
-            r = (0.5 if name.startswith("O") else 0.38) * u
+            r = (PIN_FIXED if name.startswith("O") else PIN_MOVING) * u
             pin.setRect(QRectF(-r, -r, 2.0 * r, 2.0 * r))
 
     @staticmethod
@@ -571,3 +760,186 @@ class SchemeWidget(QWidget):
         for x, y in vertices[1:]:
             path.lineTo(x, y)
         self._path_done.setPath(path)
+        if self.forces_action.isChecked():
+            self._draw_forces(index)
+
+    # ---- force layer -------------------------------------------------
+    def _apply_forces_visible(self, visible: bool) -> None:
+        self._force_path.setVisible(visible)
+        self._force_caption.setVisible(visible)
+        if visible:
+            self._draw_forces(self._model.angle_index)
+        else:
+            for tag in self._force_tags:
+                tag.setVisible(False)
+
+    def _on_forces(self) -> None:
+        """Loads or the design changed: redraw now if shown (rebuilt there), else later."""
+        if self.forces_action.isChecked():
+            self._draw_forces(self._model.angle_index)
+
+    def _draw_forces(self, index: int) -> None:
+        """Put the prepared arrows of crank-angle ``index`` into the one force path."""
+        ff = self._force_frames
+        if ff is None or ff.source is not self._model.dynamics:
+            ff = self._force_frames = self._build_forces()
+            self._update_force_caption()
+        names: list[str] = []
+        path = QPainterPath()
+        labels = []
+        if ff is not None and index < len(ff.shown):
+            text = self._force_formats[ff.unit_N]
+            rows = zip(FORCE_NAMES, self._force_tags, ff.coords[index].tolist(),
+                       ff.shown[index].tolist(), ff.magnitude[index].tolist(),
+                       ff.outward[index].tolist())
+            for name, tag, row, shown, magnitude, outward in rows:
+                if not shown:
+                    tag.setVisible(False)
+                    continue
+                sx, sy, ex, ey, tx, ty, lx, ly, rx, ry, px, py = row
+                path.moveTo(sx, sy)
+                path.lineTo(ex, ey)
+                path.moveTo(tx, ty)
+                path.lineTo(lx, ly)
+                path.lineTo(rx, ry)
+                path.closeSubpath()
+                names.append(name)
+                labels.append((magnitude, tag, text.format(magnitude / ff.unit_N), px, py,
+                               outward))
+            self._place_force_labels(labels)
+        else:
+            for tag in self._force_tags:
+                tag.setVisible(False)
+        self._drawn_force_names = names
+        self._force_path.setPath(path)
+
+    def _place_force_labels(self, labels: list) -> None:
+        """Put each magnitude label at its arrow's free end, or beside it, where it overlaps
+        neither the joint names nor a label already placed (larger forces first); a label
+        with no free spot is left out."""
+        px_w, px_h = self._view.viewPixelSize()                 # mm per screen pixel
+        if not (px_w > 0.0 and px_h > 0.0):
+            for _, tag, *_rest in labels:
+                tag.setVisible(False)
+            return
+        gap = FORCE_LABEL_GAP * self._geometry["u"]
+        taken = []
+        for label in self._labels.values():
+            if label.isVisible():
+                box, pos = label.boundingRect(), label.pos()
+                w, h = 0.5 * box.width() * px_w, 0.5 * box.height() * px_h
+                taken.append((pos.x() - w, pos.x() + w, pos.y() - h, pos.y() + h))
+        for pin in self._pins.values():
+            if pin.isVisible():
+                r, x, y = 0.5 * pin.rect().width(), pin.x(), pin.y()
+                taken.append((x - r, x + r, y - r, y + r))
+        for _, tag, text, fx, fy, (ox, oy) in sorted(labels, key=lambda item: -item[0]):
+            w, h = tag.set_text(text)
+            w, h = w * px_w, h * px_h
+            for cx, cy, ax, ay in _label_spots(fx, fy, ox, oy, gap):
+                left, top = cx - ax * w, cy + ay * h
+                box = (left, left + w, top - h, top)
+                if not any(box[0] < t[1] and t[0] < box[1] and box[2] < t[3] and t[2] < box[3]
+                           for t in taken):
+                    tag.move(cx, cy, (ax, ay))
+                    tag.setVisible(True)
+                    taken.append(box)
+                    break
+            else:
+                tag.setVisible(False)
+
+    def _update_force_caption(self) -> None:
+        ff = self._force_frames
+        if ff is None:
+            self._force_caption.place("", 6.0, 4.0, (0.0, 0.0))
+            return
+        rpm = f"{ff.rpm:g}"
+        if not math.isfinite(ff.mm_per_N):
+            text = self.tr("Forces at {0} r/min: all zero").format(rpm)
+        else:
+            if ff.ref_force_N >= 1000.0:
+                force = self.tr("{0:g} kN").format(ff.ref_force_N / 1000.0)
+            else:
+                force = self.tr("{0:g} N").format(ff.ref_force_N)
+            text = self.tr("Forces at {0} r/min, scale: {1:g} mm ≙ {2}").format(
+                rpm, ff.ref_mm, force)
+        self._force_caption.place(text, 6.0, 4.0, (0.0, 0.0))
+
+    def _build_forces(self) -> _ForceFrames | None:
+        """Every force arrow at every crank angle of the first speed, from model.dynamics."""
+        model, g = self._model, self._geometry
+        dyn, design, sh = model.dynamics, model.design, model.motion.shape
+        n = sh.phi.size
+        if dyn.crank_angle.size != n or self._frames is None:
+            return None
+        u = g["u"]
+        a, b, c = sh.crank_pin.T, sh.lever_tip.T, sh.ram_joint.T
+        zero = np.zeros(n)
+
+        def vec(x, y) -> np.ndarray:
+            """(n, 2) from x and y, each an (n,) array or a constant."""
+            return np.stack([zero + x, zero + y], axis=1)
+
+        # The guide's resultant is drawn only where its line of action crosses the ram;
+        # outside (or NaN) the guide carries essentially a couple, which no arrow shows.
+        offset = dyn.guide_offset_mm[0]
+        on_ram = np.isfinite(offset) & (offset >= g["ram_rear"]) & (offset <= g["ram_front"])
+        guide_x = c[:, 0] + np.where(on_ram, offset, 0.0)
+        pin_o, pin_m = PIN_FIXED * u, PIN_MOVING * u
+        rod_c = (c, vec(dyn.c_x[0], dyn.c_y[0])) if dyn.c_x is not None else (c, vec(0.0, 0.0))
+        forces = {  # name: (point of application, force on the body in N, pin radius there)
+            "O2": (vec(g["o2"][0], g["o2"][1]), vec(dyn.o2_x[0], dyn.o2_y[0]), pin_o),
+            "A": (a, vec(dyn.a_x[0], dyn.a_y[0]), pin_m),
+            "O4": (vec(0.0, 0.0), vec(dyn.o4_x[0], dyn.o4_y[0]), pin_o),
+            "B": (b, -vec(dyn.b_x[0], dyn.b_y[0]), pin_m),
+            "C": (*rod_c, pin_m),
+            "guide": (vec(guide_x, g["guide"]), vec(0.0, dyn.guide_normal[0]), 0.0),
+            "cut": (vec(c[:, 0] + g["tip_dx"], g["tip_y"]), vec(-dyn.cut_force[0], 0.0), 0.0),
+        }
+        point = np.stack([forces[k][0] for k in FORCE_NAMES])          # (k, n, 2)
+        force = np.stack([forces[k][1] for k in FORCE_NAMES])
+        rim = np.array([forces[k][2] for k in FORCE_NAMES])[:, None, None]
+        # Arrows start at their pin's rim and point away from it, except: the cutting force
+        # ends at the tool point, and the rod's forces at B and C lie on the far side of
+        # their pin from the rod (ending at the pin when they pull toward the rod), so
+        # they never run along the rod itself.
+        tip_at_point = np.zeros(force.shape[:2], dtype=bool)
+        tip_at_point[FORCE_NAMES.index("cut")] = True
+        if design.rod is not None:
+            for name, other in (("B", c), ("C", b)):
+                k = FORCE_NAMES.index(name)
+                toward = np.einsum("ij,ij->i", force[k], other - point[k])
+                tip_at_point[k] = toward > 0.0
+        tip_at_point = tip_at_point[..., None]
+        magnitude = np.hypot(force[..., 0], force[..., 1])            # (k, n)
+        largest = float(np.max(magnitude))
+        if not largest > 0.0 or not math.isfinite(largest):
+            mm_per_N, ref, ref_mm = math.nan, math.nan, math.nan
+            shown = np.zeros(magnitude.shape, dtype=bool)
+            scale = 0.0
+        else:
+            mm_per_N, ref, ref_mm = _nice_scale(largest, FORCE_SHARE * design.lever)
+            shown = magnitude > FORCE_ZERO * largest
+            shown[FORCE_NAMES.index("guide")] &= on_ram
+            scale = mm_per_N
+        arrow = force * scale                                          # (k, n, 2) mm
+        length = magnitude * scale
+        safe = np.where(length > 0.0, length, 1.0)[..., None]
+        d = np.where(length[..., None] > 0.0, arrow / safe, np.array([1.0, 0.0]))
+        normal = np.stack([-d[..., 1], d[..., 0]], axis=-1)
+        head = np.minimum(FORCE_HEAD * design.lever, 0.6 * length)[..., None]
+        start = np.where(tip_at_point, point - d * rim - arrow, point + d * rim)
+        tip = start + arrow
+        base = tip - d * head
+        free = np.where(tip_at_point, start, tip)                     # the label's end
+        out = np.where(tip_at_point, -d, d)
+        coords = np.concatenate([
+            start, tip - d * (0.6 * head), tip,
+            base + normal * (FORCE_HEAD_HALF * head), base - normal * (FORCE_HEAD_HALF * head),
+            free], axis=-1)                                            # (k, n, 12)
+        return _ForceFrames(
+            source=dyn, coords=np.ascontiguousarray(coords.transpose(1, 0, 2)),
+            shown=np.ascontiguousarray(shown.T), magnitude=np.ascontiguousarray(magnitude.T),
+            outward=np.ascontiguousarray(out.transpose(1, 0, 2)), mm_per_N=mm_per_N,
+            ref_force_N=ref, ref_mm=ref_mm, unit_N=1000.0 if largest >= 1000.0 else 1.0,
+            rpm=float(dyn.rpm[0]))

@@ -14,6 +14,7 @@ CURSOR = QColor("#444444")
 LINK = QColor("#263238")
 FRAME = QColor("#607d8b")
 TOOL_PATH = QColor("#ef6c00")
+FORCE = QColor("#c2185b")              # force arrows on the scheme (magenta: not a speed colour)
 
 
 def speed_colour(index: int) -> QColor:

@@ -90,6 +90,7 @@ def test_window_state_is_remembered(window, tmp_path):
     assert again.size().height() == size.height() == 560
     # The side panel is squeezed by the clamped width; the scheme/plots split comes back.
     assert again.splitter.sizes()[1:] == sizes[1:]
+    again.close()
     again.deleteLater()
 
 

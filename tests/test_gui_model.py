@@ -20,7 +20,7 @@ def test_default_design_is_seed003(model):
 
 
 def test_valid_change_recomputes_once(model, qtbot):
-    with qtbot.waitSignal(model.resultsChanged) as blocker:
+    with qtbot.waitSignal(model.resultsChanged):
         model.set_spec(time_ratio=1.6, stroke=320)
     expected = synthesize(100, 1.6, 320)
     assert model.design == expected

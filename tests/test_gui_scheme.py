@@ -13,19 +13,6 @@ from shaperapp.model import DesignModel
 from shaperapp.scheme import SchemeWidget
 
 
-@pytest.fixture
-def model() -> DesignModel:
-    return DesignModel()
-
-
-@pytest.fixture
-def scheme(qtbot, model) -> SchemeWidget:
-    widget = SchemeWidget(model)
-    qtbot.addWidget(widget)
-    widget.resize(900, 650)
-    widget.show()
-    qtbot.waitExposed(widget)
-    return widget
 
 
 def core_joints(model: DesignModel, index: int) -> dict[str, np.ndarray]:

@@ -1,0 +1,61 @@
+"""GUI speed targets: start-up, input-to-screen update, one animation frame.
+
+The update benchmark drives the whole window (form → model → scheme, metrics,
+plots, forces) with 4 speeds at 1°, the case the GUI issue names.
+"""
+import subprocess
+import sys
+
+import pytest
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QApplication
+
+from shaperapp.main_window import MainWindow
+from shaperapp.model import DesignModel
+
+
+@pytest.fixture
+def window(qtbot, tmp_path):
+    win = MainWindow(DesignModel(), QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    win.resize(1560, 940)
+    win.show()
+    win.model.set_rpms([30, 40, 60, 80])
+    QApplication.processEvents()
+    yield win
+    win.model.set_clean("")
+    win.close()
+
+
+def test_input_to_all_views_updated(benchmark, window):
+    values = iter([1.4, 1.5] * 10_000)
+
+    def change():
+        window.model.set_spec(time_ratio=next(values))
+        QApplication.processEvents()  # every view repaints
+
+    benchmark(change)
+    assert window.model.error is None
+
+
+def test_animation_frame_whole_window(benchmark, window):
+    """Scheme (with force arrows), cursors of all plots and the read-out, repainted."""
+    window.scheme.set_forces_visible(True)
+    index = iter(range(10**9))
+
+    def frame():
+        window.model.set_angle_index(next(index) % window.model.angle_count)
+        QApplication.processEvents()
+
+    benchmark(frame)
+
+
+def _start():
+    out = subprocess.run([sys.executable, "-m", "shaperapp.app", "--lang", "en", "--quit-after-show"],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    return out.stdout
+
+
+def test_startup_to_first_window(benchmark):
+    stdout = benchmark.pedantic(_start, rounds=5, iterations=1)
+    assert "first window shown" in stdout
