@@ -59,7 +59,8 @@ CUT_FILL = QColor(239, 108, 0, 30)       # light orange band where the tool cuts
 CUT_TEXT = QColor(191, 54, 12)
 KEY = QColor("#616161")
 DELTA_DIGITS = 4                         # δ = 1/30 shows as 0.03333
-FORM_WIDTH = 300
+FORM_WIDTH = 285
+LEGEND_COLUMNS = 3                       # speed legend entries per row
 
 
 def parse_ratio(text: str) -> float | str:
@@ -280,11 +281,13 @@ class ForcesPanel(QWidget):
         # The joint forces are of one speed: say which beside their legend (for exports).
         head = ci.addLayout(row=4, col=0)
         head.setContentsMargins(AXIS_WIDTH, 0, 0, 0)
-        head.setMaximumHeight(LEGEND_HEIGHT)
+        head.setMaximumHeight(2 * LEGEND_HEIGHT)
         self._force_title = pg.LabelItem(color=TEXT, size="9pt", justify="left")
         self._force_title.setMaximumHeight(LEGEND_HEIGHT)
+        # Title above the legend, not beside it: side by side they need more width
+        # than the tab has beside the load form.
         head.addItem(self._force_title, row=0, col=0)
-        head.addItem(self._joint_legend, row=0, col=1)
+        head.addItem(self._joint_legend, row=1, col=0)
         head.layout.setAlignment(self._joint_legend, Qt.AlignmentFlag.AlignRight)
         ci.addItem(self._plots["force"].item, row=5, col=0)
         ci.layout.setAlignment(self._speed_legend, Qt.AlignmentFlag.AlignRight)
@@ -454,7 +457,9 @@ class ForcesPanel(QWidget):
         entries = [(curve, self._speed_name(float(rpm)))
                    for curve, rpm in zip(self._plots["torque"].curves, self._model.dynamics.rpm)]
         entries += [(self._mean_key, self.tr("mean torque")), (self._cut_key, self.tr("cutting"))]
-        legend.setColumnCount(len(entries))
+        columns = min(len(entries), LEGEND_COLUMNS)
+        legend.setColumnCount(columns)
+        legend.setMaximumHeight(LEGEND_HEIGHT * math.ceil(len(entries) / columns))
         for item, name in entries:
             legend.addItem(item, name)
         legend.setMaximumWidth(legend.layout.preferredWidth() + 12)
@@ -466,6 +471,8 @@ class ForcesPanel(QWidget):
         for joint in shown:
             legend.addItem(self._force_curves[joint], names[joint])
         legend.setMaximumWidth(legend.layout.preferredWidth() + 12)
+        # Never narrower than the legends: a narrower view would clip the scene.
+        self._view.setMinimumWidth(int(self._view.ci.effectiveSizeHint(Qt.SizeHint.MinimumSize).width()) + 4)
 
     def _on_speed_sample_clicked(self, item: pg.GraphicsObject) -> None:
         """The legend hid or showed the torque curve it keys: do the same for that

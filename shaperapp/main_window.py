@@ -63,7 +63,7 @@ class MainWindow(QMainWindow):
         self.splitter.setStretchFactor(0, 0)
         self.splitter.setStretchFactor(1, 3)
         self.splitter.setStretchFactor(2, 3)
-        self.splitter.setSizes([400, 620, 620])
+        self.splitter.setSizes([400, 500, 740])
         self.setCentralWidget(self.splitter)
 
         self._build_actions()
