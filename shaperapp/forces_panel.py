@@ -27,7 +27,7 @@ from core.errors import DesignError
 from .form import DEBOUNCE_MS, _NumberField, format_number, parse_number
 from .messages import describe
 from .model import DesignModel
-from .plots import (AXIS_WIDTH, CURVE_WIDTH, LEGEND_HEIGHT, TEXT, add_cursor, cache_axes, export_layout,
+from .plots import (AXIS_WIDTH, CURVE_WIDTH, LEGEND_HEIGHT, TEXT, add_cursor, cache_axes, export_layout, plot_under,
                     styled_plot_item)
 from .style import speed_colour
 
@@ -714,10 +714,7 @@ class ForcesPanel(QWidget):
 
     # ---- mouse ---------------------------------------------------------
     def _plot_at(self, scene_pos: QPointF) -> tuple[str, float] | None:
-        for name, plot in self._plots.items():
-            if plot.item.vb.sceneBoundingRect().contains(scene_pos):
-                return name, float(plot.item.vb.mapSceneToView(scene_pos).x())
-        return None
+        return plot_under({n: p.item for n, p in self._plots.items()}, scene_pos)
 
     def _on_click(self, event: MouseClickEvent) -> None:
         """A left click in a plot moves the mechanism to that crank angle."""

@@ -85,6 +85,14 @@ def add_cursor(item: pg.PlotItem) -> pg.InfiniteLine:
     return cursor
 
 
+def plot_under(items: dict[str, pg.PlotItem], scene_pos: QPointF) -> tuple[str, float] | None:
+    """Name of the plot under ``scene_pos`` and the x there, in view units."""
+    for name, item in items.items():
+        if item.vb.sceneBoundingRect().contains(scene_pos):
+            return name, float(item.vb.mapSceneToView(scene_pos).x())
+    return None
+
+
 def cache_axes(items, on: bool) -> None:
     """Axes draw grid and text from a QPicture, the slowest part of a repaint: cache
     them as pixmaps, so moving the cursor or redrawing a curve only blits them."""
@@ -532,11 +540,7 @@ class PlotsWidget(QWidget):
 
     # ---- mouse ---------------------------------------------------------
     def _plot_at(self, scene_pos: QPointF) -> tuple[str, float] | None:
-        """Name of the shown plot under ``scene_pos`` and the x there, in view units."""
-        for name, plot in self._plots.items():
-            if self._visible[name] and plot.item.vb.sceneBoundingRect().contains(scene_pos):
-                return name, float(plot.item.vb.mapSceneToView(scene_pos).x())
-        return None
+        return plot_under({n: p.item for n, p in self._plots.items() if self._visible[n]}, scene_pos)
 
     def _on_click(self, event: MouseClickEvent) -> None:
         """A left click in a plot moves the animation to that crank angle."""
