@@ -144,6 +144,11 @@ def shape(design: Design, phi: np.ndarray) -> Shape:
     )
 
 
+def pressure_angle(rod_angle: np.ndarray) -> np.ndarray:
+    """Angle between the rod line and the ram guide (0 … π/2), whichever way the rod points, rad."""
+    return np.abs(np.arctan(np.tan(rod_angle)))
+
+
 def ram_origin(design: Design) -> float:
     """x of the ram joint at φ = 0, the zero of the ram displacement, mm."""
     return float(shape(design, np.zeros(1)).ram_joint[0, 0])
@@ -189,7 +194,7 @@ def solve(design: Design, crank_angle: np.ndarray, rpms) -> Motion:
     rod_omega = rod_alpha = pressure = None
     if sh.rod is not None:
         rod_omega, rod_alpha = w1 * sh.rod1, w2 * sh.rod2
-        pressure = np.abs(np.arctan(np.tan(sh.rod)))
+        pressure = pressure_angle(sh.rod)
     return Motion(
         design=design, shape=sh, crank_angle=phi, rpm=rpm, omega=omega,
         time=phi[None, :] / w1,

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .geometry import Design
-from .kinematics import check_rpms, rpm_to_omega, shape
+from .kinematics import check_rpms, pressure_angle, ram_origin, rpm_to_omega, shape
 
 GRID = 7200
 
@@ -89,7 +89,7 @@ def analyze(design: Design, rpms) -> CycleMetrics:
     back = 2.0 * math.pi - work
     ends = shape(design, np.array([start, end]))
     x_min, x_max = (float(v) for v in ends.ram_joint[0])
-    origin = float(shape(design, np.zeros(1)).ram_joint[0, 0])
+    origin = ram_origin(design)
 
     phi = np.linspace(0.0, 2.0 * math.pi, GRID, endpoint=False)
     sh = shape(design, phi)
@@ -101,7 +101,7 @@ def analyze(design: Design, rpms) -> CycleMetrics:
     lever2 = float(np.abs(sh.lever2).max())
     pressure = None
     if sh.rod is not None:
-        pressure = math.degrees(float(np.abs(np.arctan(np.tan(sh.rod))).max()))
+        pressure = math.degrees(float(pressure_angle(sh.rod).max()))
     stroke = x_max - x_min
 
     speeds = []

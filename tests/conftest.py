@@ -10,8 +10,9 @@ from shaperapp.scheme import SchemeWidget  # noqa: E402
 
 
 @pytest.fixture
-def model() -> DesignModel:
-    """A fresh model on the default design (L1 = 100 mm, K = 1.4, H = 300 mm)."""
+def model(qtbot) -> DesignModel:
+    """A fresh model on the default design (L1 = 100 mm, K = 1.4, H = 300 mm); qtbot
+    makes sure a QApplication exists for its signals."""
     return DesignModel()
 
 

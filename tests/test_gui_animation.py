@@ -9,12 +9,6 @@ from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import QApplication, QLabel, QSlider, QToolButton
 
 from shaperapp.animation import AnimationBar
-from shaperapp.model import DesignModel
-
-
-@pytest.fixture
-def model() -> DesignModel:
-    return DesignModel()
 
 
 @pytest.fixture

@@ -27,11 +27,6 @@ JOINT_ARRAYS = {"O2": ("o2_x", "o2_y"), "A": ("a_x", "a_y"), "O4": ("o4_x", "o4_
 
 
 @pytest.fixture
-def model() -> DesignModel:
-    return DesignModel()
-
-
-@pytest.fixture
 def panel(qtbot, model) -> ForcesPanel:
     w = ForcesPanel(model)
     qtbot.addWidget(w)

@@ -5,12 +5,6 @@ import pytest
 from core.geometry import synthesize
 from core.kinematics import crank_angles, solve
 from core.metrics import analyze
-from shaperapp.model import DesignModel
-
-
-@pytest.fixture
-def model(qtbot):
-    return DesignModel()
 
 
 def test_default_design_is_seed003(model):

@@ -21,11 +21,6 @@ from shaperapp.plots import LEVER_PLOTS, PLOT_NAMES, PlotsWidget
 
 
 @pytest.fixture
-def model() -> DesignModel:
-    return DesignModel()
-
-
-@pytest.fixture
 def widget(qtbot, model) -> PlotsWidget:
     w = PlotsWidget(model)
     qtbot.addWidget(w)
