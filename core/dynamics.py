@@ -21,7 +21,7 @@ otherwise. Joints are frictionless (see docs/forces.md).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -105,6 +105,14 @@ class MassProperties:
     def g(self) -> float:
         """Gravitational acceleration used, m/s² (0 when gravity is off)."""
         return GRAVITY if self.gravity else 0.0
+
+
+def masses_for_design(design: Design, masses: MassProperties) -> MassProperties:
+    """The loads as solved for ``design``: the block variant has no rod, so a rod mass
+    left over from the rod variant (a form or file keeps it) is ignored."""
+    if design.rod is None and masses.rod_mass_kg:
+        return replace(masses, rod_mass_kg=0.0)
+    return masses
 
 
 def _offset(name: str, value: object) -> tuple[float, float]:

@@ -18,8 +18,14 @@ import numpy as np
 
 from .errors import DesignError, require_range
 
+MIN_LENGTH_MM = 0.001
 MAX_LENGTH_MM = 100_000.0
 MAX_TIME_RATIO = 5.0
+# L1/L2 = sin(θ/2) at K = 5 (θ = 120°): the largest crank a frame allows.
+MAX_CRANK_RATIO = math.sin(math.pi * (MAX_TIME_RATIO - 1.0) / (MAX_TIME_RATIO + 1.0) / 2.0)
+# The rod must keep a horizontal reach |Cx − Bx| and a drive margin of this fraction of
+# L4 (a pressure angle below 89.94°), so forces and accelerations stay finite and exact.
+ROD_MARGIN = 1e-3
 GuideRule = Literal["chord", "sagitta"]
 RodSide = Literal["trailing", "leading"]
 ROD_SIDES: tuple[str, ...] = ("trailing", "leading")
@@ -99,7 +105,12 @@ def guide_height(rule: GuideRule | float, lever: float, theta: float) -> float:
         except ValueError:
             raise DesignError("guide", rule,
                               "must be 'chord', 'sagitta' or a height in mm") from None
-    return require_range("guide", rule, 0.0, MAX_LENGTH_MM, "mm")
+    return require_length("guide", rule)
+
+
+def require_length(name: str, value: object) -> float:
+    """A link length in [MIN_LENGTH_MM, MAX_LENGTH_MM] mm."""
+    return require_range(name, value, MIN_LENGTH_MM, MAX_LENGTH_MM, "mm", low_open=False)
 
 
 def synthesize(crank: float, time_ratio: float, stroke: float, *,
@@ -110,11 +121,18 @@ def synthesize(crank: float, time_ratio: float, stroke: float, *,
     Give ``rod`` (mm) or ``rod_ratio`` (L4/L3) for the connecting-rod variant;
     give neither for the block variant.
     """
-    crank = require_range("crank", crank, 0.0, MAX_LENGTH_MM, "mm")
+    crank = require_length("crank", crank)
     time_ratio = require_range("time_ratio", time_ratio, 1.0, MAX_TIME_RATIO)
-    stroke = require_range("stroke", stroke, 0.0, MAX_LENGTH_MM, "mm")
+    stroke = require_length("stroke", stroke)
     theta = theta_from_time_ratio(time_ratio)
     half = math.sin(theta / 2.0)
+    # L2 = L1/sin(θ/2) and L3 = H/(2 sin(θ/2)) grow without bound as K → 1.
+    smallest_half = max(crank, stroke / 2.0) / MAX_LENGTH_MM
+    if half < smallest_half:
+        k_min = (math.pi + 2.0 * math.asin(smallest_half)) / (math.pi - 2.0 * math.asin(smallest_half))
+        raise DesignError("time_ratio", time_ratio,
+                          f"must be ≥ {_round_up(k_min)} for this crank and stroke, so that "
+                          f"the frame and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
     frame = crank / half
     lever = stroke / (2.0 * half)
     shortest = crank + frame
@@ -134,12 +152,10 @@ def from_dimensions(crank: float, frame: float, lever: float, *,
                     rod_ratio: float | None = None,
                     rod_side: RodSide = "trailing") -> Design:
     """A design from measured link lengths; K, H and θ are then implied."""
-    crank = require_range("crank", crank, 0.0, MAX_LENGTH_MM, "mm")
-    frame = require_range("frame", frame, 0.0, MAX_LENGTH_MM, "mm")
-    lever = require_range("lever", lever, 0.0, MAX_LENGTH_MM, "mm")
-    if crank >= frame:
-        raise DesignError("crank", crank,
-                          f"must be shorter than the frame O2O4 ({frame:.6g} mm)")
+    crank = require_length("crank", crank)
+    frame = require_length("frame", frame)
+    lever = require_length("lever", lever)
+    _check_crank_ratio(crank, frame)
     theta = 2.0 * math.asin(crank / frame)
     rod_length = _rod_length(rod, rod_ratio, lever)
     return Design(crank=crank, frame=frame, lever=lever,
@@ -154,17 +170,34 @@ def _rod_length(rod: float | None, rod_ratio: float | None, lever: float) -> flo
         ratio = require_range("rod_ratio", rod_ratio, 0.0, 10.0)
         return ratio * lever
     if rod is not None:
-        return require_range("rod", rod, 0.0, MAX_LENGTH_MM, "mm")
+        return require_length("rod", rod)
     return None
+
+
+def _round_up(value: float, digits: int = 6, down: bool = False) -> str:
+    """``value`` rounded up (or down) to ``digits`` significant digits, so that a stated
+    minimum (or maximum) is itself allowed."""
+    scale = 10.0 ** (digits - 1 - math.floor(math.log10(abs(value))))
+    rounded = (math.floor if down else math.ceil)(value * scale) / scale
+    return f"{rounded:.{digits}g}"
+
+
+def _check_crank_ratio(crank: float, frame: float) -> None:
+    """K = (π + θ)/(π − θ) with sin(θ/2) = L1/L2 must stay ≤ 5, like a synthesized K."""
+    if crank >= frame:
+        raise DesignError("crank", crank,
+                          f"must be shorter than the frame O2O4 ({frame:.6g} mm)")
+    if crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12):
+        raise DesignError("crank", crank,
+                          f"must be ≤ {_round_up(MAX_CRANK_RATIO * frame, down=True)} mm (0.866·L2), so that the "
+                          f"time ratio K stays ≤ {MAX_TIME_RATIO:g}")
 
 
 def validate(design: Design) -> None:
     """Refuse a design that cannot be assembled or would jam somewhere in the cycle."""
     for name in ("crank", "frame", "lever", "guide"):
-        require_range(name, getattr(design, name), 0.0, MAX_LENGTH_MM, "mm")
-    if design.crank >= design.frame:
-        raise DesignError("crank", design.crank,
-                          f"must be shorter than the frame O2O4 ({design.frame:.6g} mm)")
+        require_length(name, getattr(design, name))
+    _check_crank_ratio(design.crank, design.frame)
     if design.rod_side not in ROD_SIDES:
         raise DesignError("rod_side", design.rod_side, "must be 'trailing' or 'leading'")
     reach = design.frame + design.crank
@@ -184,18 +217,44 @@ def validate(design: Design) -> None:
                               f"must be ≤ the lever length {design.lever:.6g} mm: "
                               "the block on the lever tip cannot reach a higher guide")
         return
-    require_range("rod", design.rod, 0.0, MAX_LENGTH_MM, "mm")
-    need = max(design.guide - tip_low, design.lever - design.guide)
+    require_length("rod", design.rod)
+    # The rod's rise |d| = |guide − By| is largest at a limit position (By lowest) or at
+    # ψ = 0 (By = L3); its horizontal reach sqrt(L4² − d²) must stay ≥ ROD_MARGIN·L4.
+    rise = max(design.guide - tip_low, design.lever - design.guide)
+    need = rise / math.sqrt(1.0 - ROD_MARGIN ** 2)
     if design.rod <= need:
         raise DesignError("rod", design.rod,
                           f"must be > {need:.6g} mm to reach the guide line "
                           "over the whole cycle")
-    # The ram stalls where the rod stands square to the lever (a dead centre).
-    psi = np.linspace(-half, half, 721)
-    d = design.guide - design.lever * np.cos(psi)
-    r = np.sqrt(design.rod ** 2 - d ** 2)
-    drive = r * np.cos(psi) - design.rod_sign * d * np.sin(psi)
-    if np.min(drive) <= 1e-6 * design.rod:
+    if rod_drive_margin(design) <= ROD_MARGIN * design.rod:
         raise DesignError("rod", design.rod,
                           "the rod passes a dead-centre position against the lever; "
                           "lengthen the rod or move the guide line")
+
+
+def rod_drive_margin(design: Design) -> float:
+    """min over the swing of r·cos ψ − s·d·sin ψ, mm: zero where the rod stands square
+    to the lever and the ram would stall (a dead centre).
+
+    The minimum is bracketed on a grid over ψ ∈ [−θ/2, θ/2] and polished with Brent's
+    method, so a narrow dip between grid points is not missed.
+    """
+    from scipy.optimize import minimize_scalar
+
+    half = design.theta / 2.0
+    rod, sign = float(design.rod), design.rod_sign  # type: ignore[arg-type]
+
+    def drive(psi):
+        d = design.guide - design.lever * np.cos(psi)
+        r = np.sqrt(np.maximum(rod ** 2 - d ** 2, 0.0))
+        return r * np.cos(psi) - sign * d * np.sin(psi)
+
+    psi = np.linspace(-half, half, 721)
+    values = drive(psi)
+    i = int(np.argmin(values))
+    lo, hi = psi[max(i - 1, 0)], psi[min(i + 1, psi.size - 1)]
+    if hi - lo <= 0.0:
+        return float(values[i])
+    best = minimize_scalar(lambda p: float(drive(p)), bounds=(lo, hi), method="bounded",
+                           options={"xatol": 1e-12 * max(half, 1e-300)})
+    return float(min(values[i], best.fun))

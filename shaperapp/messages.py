@@ -65,6 +65,10 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "must be more than %1 mm to reach the guide line over the whole cycle"),
     (r"the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line$",
      "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
+    (r"must be ≥ (\S+) for this crank and stroke, so that the frame and the lever stay ≤ (\S+) mm$",
+     "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm"),
+    (r"must be ≤ (\S+) mm \(0\.866·L2\), so that the time ratio K stays ≤ (\S+)$",
+     "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2"),
     (r"give 1 to (\S+) crank speeds$", "give 1 to %1 crank speeds"),
     (r"gives more than (\S+) angles; use a larger step$", "gives more than %1 angles; use a larger step"),
     (r"must be given either as a length or as a ratio L4/L3, not both$",
@@ -95,6 +99,10 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be more than %1 mm to reach the guide line over the whole cycle"),
         "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line":
             QCoreApplication.translate("messages", "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
+        "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm":
+            QCoreApplication.translate("messages", "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm"),
+        "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2":
+            QCoreApplication.translate("messages", "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2"),
         "give 1 to %1 crank speeds": QCoreApplication.translate("messages", "give 1 to %1 crank speeds"),
         "gives more than %1 angles; use a larger step": QCoreApplication.translate("messages", "gives more than %1 angles; use a larger step"),
         "must be given either as a length or as a ratio L4/L3, not both":

@@ -13,7 +13,8 @@ from typing import Any
 import numpy as np
 from PySide6.QtCore import QObject, Signal
 
-from core.dynamics import Dynamics, DynamicsSummary, MassProperties, solve_dynamics, summarize
+from core.dynamics import (Dynamics, DynamicsSummary, MassProperties, masses_for_design,
+                           solve_dynamics, summarize)
 from core.errors import DesignError
 from core.geometry import Design
 from core.kinematics import Motion, check_rpms, crank_angles, solve
@@ -26,11 +27,6 @@ DEFAULT_STEP = 1.0
 # cutting force 7000 N at 80 mm below the guide), so the Forces view shows a case at once.
 DEFAULT_MASSES = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                                 cut_force_N=7000.0, cut_height_mm=80.0, delta=1.0 / 30.0)
-
-
-def masses_for(design: Design, masses: MassProperties) -> MassProperties:
-    """The block variant has no rod: a rod mass left over from the rod variant is ignored."""
-    return replace(masses, rod_mass_kg=0.0) if design.rod is None and masses.rod_mass_kg else masses
 
 
 class DesignModel(QObject):
@@ -99,7 +95,7 @@ class DesignModel(QObject):
 
     @property
     def masses(self) -> MassProperties:
-        """The last valid loads (as entered; see ``masses_for`` for what is solved)."""
+        """The last valid loads (as entered; see ``core.dynamics.masses_for_design`` for what is solved)."""
         return self._masses
 
     @property
@@ -265,7 +261,7 @@ class DesignModel(QObject):
     @staticmethod
     def _solve_forces(design: Design, motion: Motion,
                       masses: MassProperties) -> tuple[Dynamics, DynamicsSummary]:
-        used = masses_for(design, masses)
+        used = masses_for_design(design, masses)
         return (solve_dynamics(design, motion.crank_angle, motion.rpm, used),
                 summarize(design, motion.rpm, used))
 

@@ -89,3 +89,38 @@ def test_rod_dead_centre_refused():
         assert "dead-centre" in info.value.allowed
     # A longer rod on the same guide works.
     assert synthesize(100, 1.4, 300, guide=d.lever, rod=drop * 5, rod_side="leading").rod == drop * 5
+
+
+def test_dimensions_imply_k_at_most_5():
+    """seed 003 bounds K ≤ 5 in synthesis; direct dimensions are held to the same K."""
+    from core.geometry import MAX_CRANK_RATIO
+    ok = from_dimensions(86.6, 100.0, 400.0, guide=300.0)
+    assert ok.time_ratio <= 5.0
+    with pytest.raises(DesignError) as info:
+        from_dimensions(100.0, 100.001, 400.0, guide=300.0)
+    assert info.value.parameter == "crank" and "K stays ≤ 5" in info.value.allowed
+    # The bound is the one synthesis reaches at K = 5, and synthesis at K = 5 passes it.
+    edge = synthesize(100.0, 5.0, 1000.0)
+    assert edge.crank / edge.frame == pytest.approx(MAX_CRANK_RATIO)
+    assert edge.time_ratio == pytest.approx(5.0)
+
+
+def test_k_too_close_to_one_names_k_with_a_minimum_that_passes():
+    with pytest.raises(DesignError) as info:
+        synthesize(100.0, 1.000000000001, 300.0)
+    assert info.value.parameter == "time_ratio"
+    minimum = float(info.value.allowed.split("≥ ")[1].split()[0])
+    assert synthesize(100.0, minimum, 300.0).frame <= 100_000.0
+
+
+def test_stated_crank_maximum_is_itself_allowed():
+    with pytest.raises(DesignError) as info:
+        from_dimensions(100.0, 100.001, 400.0, guide=300.0)
+    maximum = float(info.value.allowed.split("≤ ")[1].split()[0])
+    assert from_dimensions(maximum, 100.001, 400.0, guide=300.0).time_ratio <= 5.0
+
+
+def test_lengths_have_a_floor():
+    with pytest.raises(DesignError) as info:
+        synthesize(1e-300, 1.4, 300.0)
+    assert info.value.parameter == "crank"

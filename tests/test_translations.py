@@ -37,7 +37,7 @@ def test_every_string_is_translated():
 @pytest.mark.skipif(shutil.which("pyside6-lupdate") is None, reason="pyside6-lupdate not installed")
 def test_catalogue_lists_every_source_string(tmp_path):
     fresh = tmp_path / "fresh.ts"
-    sources = sorted(str(p) for p in (ROOT / "shaperapp").glob("*.py"))
+    sources = sorted(str(p) for p in (ROOT / "shaperapp").rglob("*.py"))
     subprocess.run(["pyside6-lupdate", *sources, "-ts", str(fresh)], check=True, capture_output=True)
     missing = set(messages(fresh)) - set(messages(TS))
     assert missing == set(), "run the translation update described in the README"

@@ -1,0 +1,71 @@
+"""``shaper analyze``: cycle metrics per crank speed, measured from the motion."""
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from ..geometry import Design
+from ..io import finite_or_none
+from ..metrics import CycleMetrics, analyze
+from .cmd_synth import design_summary
+from .common import (add_design_options, add_speed_options, design_from_args, print_json,
+                     print_table, rpms_from_args)
+
+HELP = "cycle metrics per crank speed"
+DESCRIPTION = ("Measured K and stroke, working and return angles and times, maximum cutting and "
+               "return speeds, maximum acceleration and (rod variant) the maximum pressure angle, "
+               "per crank speed.")
+EXAMPLES = ("shaper analyze --crank 100 --K 1.4 --stroke 300 --rpm 40 60",
+            "shaper analyze --design my.shaper.json --json")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser)
+    add_speed_options(parser)
+    parser.add_argument("--json", action="store_true", help="print JSON")
+
+
+def metrics_summary(design: Design, metrics: CycleMetrics) -> dict[str, Any]:
+    out = design_summary(design)
+    out.update({
+        "K": metrics.time_ratio,
+        "stroke_mm": metrics.stroke_mm,
+        "K_nominal": design.time_ratio,
+        "stroke_nominal_mm": design.stroke,
+        "work_angle_deg": metrics.work_angle_deg,
+        "return_angle_deg": metrics.return_angle_deg,
+        "limit_positions": {"work_start_crank_deg": metrics.work_start_deg,
+                            "work_end_crank_deg": metrics.work_end_deg,
+                            "ram_min_mm": metrics.ram_min_mm, "ram_max_mm": metrics.ram_max_mm},
+        "pressure_angle_max_deg": finite_or_none(metrics.pressure_angle_max_deg),
+        "speeds": [
+            {"rpm": s.rpm, "cycle_time_s": s.cycle_time_s, "work_time_s": s.work_time_s,
+             "return_time_s": s.return_time_s, "v_work_max_m_s": s.v_work_max_m_s,
+             "v_return_max_m_s": s.v_return_max_m_s, "v_work_mean_m_s": s.v_work_mean_m_s,
+             "a_max_m_s2": s.a_max_m_s2, "lever_omega_max_rad_s": s.lever_omega_max_rad_s,
+             "lever_alpha_max_rad_s2": s.lever_alpha_max_rad_s2}
+            for s in metrics.speeds
+        ],
+    })
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    design = design_from_args(args)
+    metrics = analyze(design, rpms_from_args(args))
+    if args.json:
+        print_json(metrics_summary(design, metrics))
+        return 0
+    print_table([("measured K", f"{metrics.time_ratio:.6f}"),
+                 ("measured stroke", f"{metrics.stroke_mm:.3f} mm"),
+                 ("θ", f"{metrics.theta_deg:.4f} °"),
+                 ("working / return crank angle",
+                  f"{metrics.work_angle_deg:.3f} ° / {metrics.return_angle_deg:.3f} °")])
+    for s in metrics.speeds:
+        print(f"\n{s.rpm:g} r/min")
+        print_table([("working / return time", f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
+                     ("max cutting speed", f"{s.v_work_max_m_s:.4f} m/s"),
+                     ("mean cutting speed", f"{s.v_work_mean_m_s:.4f} m/s"),
+                     ("max return speed", f"{s.v_return_max_m_s:.4f} m/s"),
+                     ("max |acceleration|", f"{s.a_max_m_s2:.4f} m/s²")])
+    return 0

@@ -1,0 +1,31 @@
+"""``shaper curves``: ram and lever motion over the cycle, as CSV."""
+from __future__ import annotations
+
+import argparse
+
+from ..io import curves_csv
+from ..kinematics import solve
+from .common import (add_angle_options, add_design_options, add_speed_options, angles_from_args,
+                     design_from_args, rpms_from_args, write_output)
+
+HELP = "ram and lever motion over the cycle, as CSV"
+DESCRIPTION = ("Ram displacement, velocity and acceleration, lever angle, angular velocity and "
+               "acceleration (and the rod's, for the rod variant) at every crank angle and speed, "
+               "as CSV with the units in the column names.")
+EXAMPLES = ("shaper curves --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --step 1 --csv curves.csv",
+            "shaper curves --dims 125,275,600,150 --guide 575 --angles 0,90,180,270 --rpm 30")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser)
+    add_speed_options(parser)
+    add_angle_options(parser, "the curves")
+    parser.add_argument("--csv", default="-", metavar="FILE|-",
+                        help="output file, or - for stdout (default)")
+
+
+def run(args: argparse.Namespace) -> int:
+    design = design_from_args(args)
+    motion = solve(design, angles_from_args(args), rpms_from_args(args))
+    write_output("--csv", args.csv, curves_csv(motion))
+    return 0

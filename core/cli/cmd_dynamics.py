@@ -1,0 +1,59 @@
+"""``shaper dynamics``: joint forces, crank torque, power and the flywheel."""
+from __future__ import annotations
+
+import argparse
+
+from ..dynamics import solve_dynamics, summarize
+from ..dynamics_io import dynamics_csv, summary_document
+from .cmd_synth import design_summary
+from .common import (UsageError, add_angle_options, add_design_options, add_load_options,
+                     add_speed_options, angles_from_args, design_from_args, masses_from_args,
+                     print_json, print_table, rpms_from_args, write_output)
+
+HELP = "joint forces, crank torque, power and flywheel"
+DESCRIPTION = ("Kinetostatic analysis at constant crank speed: the crank's driving torque, power, "
+               "every joint force and the guide reaction, and per speed the mean torque, motor "
+               "power, energy fluctuation and flywheel inertia.")
+EXAMPLES = ("shaper dynamics --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --lever-mass 20 "
+            "--lever-inertia 1.1 --ram-mass 70 --cut-force 7000 --cut-height 80",
+            "shaper dynamics --design my.shaper.json --csv forces.csv")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser)
+    add_speed_options(parser)
+    add_angle_options(parser, "the CSV")
+    add_load_options(parser, required=True)
+    parser.add_argument("--csv", metavar="FILE|-", help="write the forces per angle as CSV to FILE or stdout")
+    parser.add_argument("--json", action="store_true", help="print the per-speed summary as JSON")
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.json and args.csv == "-":
+        raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
+    design = design_from_args(args)
+    rpms = rpms_from_args(args)
+    masses = masses_from_args(args, design, required=True)
+    angles = angles_from_args(args)   # validated even when only the summary is printed
+    if args.csv is not None:
+        write_output("--csv", args.csv, dynamics_csv(solve_dynamics(design, angles, rpms, masses)))
+        if not args.json:
+            return 0
+    summary = summarize(design, rpms, masses)
+    if args.json:
+        doc = design_summary(design)
+        doc.update(summary_document(summary, design))
+        print_json(doc)
+        return 0
+    print_table([("variant", design.variant),
+                 ("cutting force", f"{masses.cut_force_N:g} N over {1 - 2 * masses.idle_fraction:.0%} of the stroke"),
+                 ("mean reduced inertia J_e", f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
+                 ("speed fluctuation δ", f"{masses.delta:.5g}")])
+    for s in summary.speeds:
+        print(f"\n{s.rpm:g} r/min")
+        print_table([("mean / max crank torque", f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
+                     ("mean power", f"{s.mean_power_W:.4g} W"),
+                     ("energy fluctuation ΔW_max", f"{s.energy_fluctuation_J:.4g} J"),
+                     ("flywheel J_F", f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
+                     ("flywheel J_F − J_e (net)", f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")])
+    return 0

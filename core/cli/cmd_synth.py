@@ -1,0 +1,56 @@
+"""``shaper synth``: the dimensions synthesized from L1, K and H."""
+from __future__ import annotations
+
+import argparse
+import math
+from typing import Any
+
+from ..geometry import Design
+from .common import add_design_options, design_from_args, print_json, print_table
+
+HELP = "synthesize dimensions from L1, K, H"
+DESCRIPTION = ("Synthesize the frame distance L2, the lever length L3 and the ram-guide height "
+               "from the crank length L1, the time ratio K and the stroke H (seed 003's method).")
+EXAMPLES = ("shaper synth --crank 100 --K 1.4 --stroke 300",
+            "shaper synth --crank 100 --K 1.4 --stroke 300 --rod-ratio 0.3 --guide sagitta --json")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser, allow_dims=False)
+    parser.add_argument("--json", action="store_true", help="print JSON")
+
+
+def design_summary(design: Design) -> dict[str, Any]:
+    """The design's dimensions and what they imply; units in the keys."""
+    return {
+        "variant": design.variant,
+        "theta_deg": math.degrees(design.theta),
+        "K": design.time_ratio,
+        "stroke_mm": design.stroke,
+        "crank_mm": design.crank,
+        "frame_mm": design.frame,
+        "lever_mm": design.lever,
+        "guide_mm": design.guide,
+        "h_mm": design.guide_above_crank,
+        "rod_mm": design.rod,
+        "rod_side": design.rod_side if design.rod is not None else None,
+    }
+
+
+def run(args: argparse.Namespace) -> int:
+    design = design_from_args(args)
+    summary = design_summary(design)
+    if args.json:
+        print_json(summary)
+        return 0
+    rows = [("variant", design.variant),
+            ("extreme-position angle θ", f"{summary['theta_deg']:.4f} °"),
+            ("frame O2O4 L2", f"{design.frame:.3f} mm"),
+            ("lever O4B L3", f"{design.lever:.3f} mm"),
+            ("guide above lever pivot", f"{design.guide:.3f} mm"),
+            ("guide above crank centre h", f"{design.guide_above_crank:.3f} mm")]
+    if design.rod is not None:
+        rows.append(("rod BC L4", f"{design.rod:.3f} mm ({design.rod_side})"))
+    rows += [("time ratio K", f"{design.time_ratio:.6g}"), ("stroke H", f"{design.stroke:.3f} mm")]
+    print_table(rows)
+    return 0

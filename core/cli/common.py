@@ -1,0 +1,337 @@
+"""What every ``shaper`` subcommand shares: options, parsing, output.
+
+The design can come from options (``--crank/--K/--stroke`` or ``--dims``) or
+from a design file (``--design``), never both. Numbers are parsed here so a
+bad one is reported as a ``DesignError`` naming the core parameter, which
+``option_name`` turns into the option the user typed.
+"""
+from __future__ import annotations
+
+import argparse
+import codecs
+import json
+import math
+import re
+import sys
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+
+from ..dynamics import MassProperties, masses_for_design
+from ..errors import DesignError
+from ..geometry import Design
+from ..io import atomic_write, load_design
+from ..kinematics import check_angles, crank_angles
+from ..spec import Spec
+
+DEFAULT_RPMS = ("40", "60")
+
+# core parameter → the option that sets it (used for every error message)
+OPTION_NAMES = {
+    "crank": "--crank", "time_ratio": "--K", "stroke": "--stroke", "frame": "--dims",
+    "lever": "--dims", "guide": "--guide", "guide_height": "--guide", "rod": "--rod",
+    "rod_length": "--rod", "rod_ratio": "--rod-ratio", "rod_side": "--rod-side", "rpm": "--rpm",
+    "step": "--step", "angles": "--angles", "dims": "--dims", "design": "--design",
+    "lever_mass_kg": "--lever-mass", "lever_inertia_kg_m2": "--lever-inertia",
+    "lever_cg_mm": "--lever-cg", "ram_mass_kg": "--ram-mass", "ram_cg_mm": "--ram-cg",
+    "rod_mass_kg": "--rod-mass", "block_mass_kg": "--block-mass", "crank_mass_kg": "--crank-mass",
+    "cut_force_N": "--cut-force", "cut_height_mm": "--cut-height", "idle_fraction": "--idle",
+    "delta": "--delta", "gravity": "--no-gravity",
+}
+
+# (option, dest, metavar, help) of the load inputs; dest is the MassProperties field.
+LOAD_OPTIONS = (
+    ("--lever-mass", "lever_mass_kg", "KG", "slotted lever mass, kg"),
+    ("--lever-inertia", "lever_inertia_kg_m2", "KGM2", "lever moment of inertia about its centre of mass, kg·m²"),
+    ("--lever-cg", "lever_cg_mm", "MM", "lever centre of mass from O4 along the lever, mm (default L3/2)"),
+    ("--ram-mass", "ram_mass_kg", "KG", "ram plus tool mass, kg"),
+    ("--ram-cg", "ram_cg_mm", "DX,DY",
+     "ram centre of mass from the ram joint C, mm (default 0,0; write --ram-cg=-5,3 for a leading minus)"),
+    ("--rod-mass", "rod_mass_kg", "KG", "connecting rod mass, kg (rod variant; default 0)"),
+    ("--block-mass", "block_mass_kg", "KG", "sliding block at the crank pin, kg (default 0)"),
+    ("--crank-mass", "crank_mass_kg", "KG", "balanced crank mass, kg (default 0)"),
+    ("--cut-force", "cut_force_N", "N", "cutting force on the tool, N"),
+    ("--cut-height", "cut_height_mm", "MM", "tool point below the guide line, mm (default 0)"),
+    ("--idle", "idle_fraction", "FRACTION",
+     "uncut run-in and run-out, each as a fraction of the stroke (default 0.05)"),
+    ("--delta", "delta", "D", "coefficient of speed fluctuation δ for the flywheel (default 1/30)"),
+)
+REQUIRED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N")
+
+# argparse reads "-1e5" as an unknown option; accept every float spelling as a value.
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
+
+
+class UsageError(Exception):
+    """Bad command-line words; reported as one line with exit status 2."""
+
+
+class OutputError(Exception):
+    """An output file could not be written; the message names the option and path."""
+
+
+class Parser(argparse.ArgumentParser):
+    """One-line errors instead of usage + message; negative numbers are values."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = _NEGATIVE_NUMBER
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        raise UsageError(message)
+
+
+def version_text(prog: str) -> str:
+    from importlib import metadata
+    try:
+        version = metadata.version("shaper-designer")
+    except metadata.PackageNotFoundError:
+        version = "unknown"
+    return f"{prog} {version}"
+
+
+def option_name(parameter: str) -> str:
+    return OPTION_NAMES.get(parameter, "--" + parameter.replace("_", "-"))
+
+
+def fail(message: str, status: int = 2) -> int:
+    try:
+        print(f"shaper: error: {message}", file=sys.stderr)
+    except (OSError, ValueError):
+        pass
+    return status
+
+
+# ---- output ----------------------------------------------------------------
+_ASCII = {"θ": "theta", "²": "^2", "·": "*", "−": "-", "°": "deg", "Δ": "Delta", "δ": "delta",
+          "≤": "<=", "≥": ">=", "→": "->", "φ": "phi", "ψ": "psi", "λ": "lambda", "…": "...",
+          "×": "x", "μ": "u", "ω": "omega", "α": "alpha"}
+
+
+def _ascii_fallback(error: UnicodeError) -> tuple[str, int]:
+    if not isinstance(error, UnicodeEncodeError):
+        raise error
+    text = error.object[error.start:error.end]
+    return "".join(_ASCII.get(ch, "?") for ch in text), error.end
+
+
+codecs.register_error("shaper-ascii", _ascii_fallback)
+
+
+def install_safe_output() -> None:
+    """Symbols a console cannot encode (θ, ² …) are spelled out instead of crashing."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.reconfigure(errors="shaper-ascii")  # type: ignore[union-attr]
+        except (AttributeError, ValueError, OSError):
+            pass
+
+
+def print_table(rows: list[tuple[str, str]]) -> None:
+    width = max(len(k) for k, _ in rows)
+    for key, value in rows:
+        print(f"{key:<{width}}  {value}")
+
+
+def print_json(document: Any) -> None:
+    """JSON on stdout; refuses NaN/Infinity, which no JSON reader accepts."""
+    print(json.dumps(document, indent=2, allow_nan=False))
+
+
+def write_output(option: str, target: str, text: str) -> None:
+    """``text`` to stdout for ``-``, else to the file ``target`` (atomically for regular files)."""
+    if target == "-":
+        sys.stdout.write(text)
+        sys.stdout.flush()
+        return
+    try:
+        atomic_write(target, text)
+    except OSError as exc:
+        raise OutputError(f"{option}: cannot write {target}: {exc.strerror or exc}") from None
+
+
+# ---- numbers ---------------------------------------------------------------
+def number(parameter: str, text: str) -> float:
+    """``text`` as a float; a bad one is a DesignError naming ``parameter``."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        raise DesignError(parameter, text, "must be a number") from None
+    if not math.isfinite(value):
+        raise DesignError(parameter, text, "must be a finite number")
+    return value
+
+
+def number_list(parameter: str, text: str) -> list[float]:
+    parts = [p for p in text.split(",") if p.strip()]
+    if not parts:
+        raise DesignError(parameter, text, "must be a comma-separated list of numbers")
+    return [number(parameter, p) for p in parts]
+
+
+# ---- design ----------------------------------------------------------------
+def add_design_options(parser: argparse.ArgumentParser, allow_dims: bool = True,
+                       allow_file: bool = True) -> None:
+    group = parser.add_argument_group("design (give --crank, --K and --stroke"
+                                      + (", or --dims" if allow_dims else "")
+                                      + (", or --design FILE" if allow_file else "") + ")")
+    group.add_argument("--crank", metavar="MM", help="crank length L1, mm")
+    group.add_argument("--K", dest="time_ratio", metavar="K",
+                       help="time ratio K = working time / return time (> 1)")
+    group.add_argument("--stroke", metavar="MM", help="ram stroke H, mm")
+    if allow_dims:
+        group.add_argument("--dims", metavar="L1,L2,L3[,L4]",
+                           help="direct dimensions in mm instead of --crank/--K/--stroke")
+    if allow_file:
+        group.add_argument("--design", metavar="FILE",
+                           help="a design file as the GUI saves it (its speeds, step and loads are "
+                                "used unless given here)")
+    group.add_argument("--guide", metavar="chord|sagitta|MM",
+                       help="ram guide line: a rule, or its height above the lever pivot O4 in mm "
+                            "(default chord)")
+    group.add_argument("--rod", metavar="MM", help="connecting-rod length L4, mm (rod variant)")
+    group.add_argument("--rod-ratio", metavar="R", help="rod length as a ratio L4/L3 (rod variant)")
+    group.add_argument("--rod-side", choices=("trailing", "leading"),
+                       help="ram joint behind (trailing, default) or ahead of (leading) the lever "
+                            "tip while cutting")
+
+
+def add_speed_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--rpm", nargs="+", metavar="RPM",
+                        help="crank speeds, r/min (default 40 60, or the design file's)")
+
+
+def add_angle_options(parser: argparse.ArgumentParser, what: str) -> None:
+    angles = parser.add_mutually_exclusive_group()
+    angles.add_argument("--step", metavar="DEG",
+                        help=f"crank-angle step of {what}, degrees (default 1, or the design file's)")
+    angles.add_argument("--angles", metavar="A,B,…", help=f"explicit crank angles of {what}, degrees")
+
+
+def add_load_options(parser: argparse.ArgumentParser, required: bool) -> None:
+    note = " (required unless --design has loads)" if required else ""
+    group = parser.add_argument_group("masses and loads" + note)
+    for option, dest, metavar, text in LOAD_OPTIONS:
+        group.add_argument(option, dest=dest, metavar=metavar, help=text)
+    group.add_argument("--no-gravity", action="store_true", help="leave the links' weights out")
+
+
+def design_file(args: argparse.Namespace) -> dict[str, Any] | None:
+    """The loaded ``--design`` file (read once and cached on ``args``), or None."""
+    path = getattr(args, "design", None)
+    if path is None:
+        return None
+    cached = getattr(args, "_design_doc", None)
+    if cached is None:
+        cached = load_design(path)
+        args._design_doc = cached
+    return cached
+
+
+def spec_from_args(args: argparse.Namespace) -> Spec:
+    """The inputs as a :class:`Spec`, from the options or from ``--design``."""
+    synth_given = [v is not None for v in (args.crank, args.time_ratio, args.stroke)]
+    dims = getattr(args, "dims", None)
+    doc = design_file(args)
+    if doc is not None:
+        clash = [name for name, given in zip(("--crank", "--K", "--stroke"), synth_given) if given]
+        clash += ["--dims"] if dims is not None else []
+        if clash:
+            raise UsageError(f"--design: give either a design file or {clash[0]}, not both")
+        spec: Spec = doc["spec"]
+    elif dims is not None:
+        if any(synth_given):
+            raise UsageError("--dims: give either --dims or --crank/--K/--stroke, not both")
+        values = number_list("dims", dims)
+        if len(values) not in (3, 4):
+            raise DesignError("dims", dims, "must be L1,L2,L3 or L1,L2,L3,L4 in mm")
+        spec = Spec(mode="dimensions", crank=values[0], frame=values[1], lever=values[2])
+        if len(values) == 4:
+            if args.rod is not None or args.rod_ratio is not None:
+                raise UsageError("--dims: give L4 either in --dims or with --rod/--rod-ratio, not both")
+            spec = replace(spec, variant="rod", rod_input="length", rod_length=values[3])
+    else:
+        for option, given in zip(("--crank", "--K", "--stroke"), synth_given):
+            if not given:
+                alternatives = "--dims or --design" if dims is None and hasattr(args, "dims") else "--design"
+                raise UsageError(f"{option}: required (or use {alternatives})")
+        spec = Spec(crank=number("crank", args.crank), time_ratio=number("time_ratio", args.time_ratio),
+                    stroke=number("stroke", args.stroke))
+    return _apply_mechanism_options(spec, args)
+
+
+def _apply_mechanism_options(spec: Spec, args: argparse.Namespace) -> Spec:
+    changes: dict[str, Any] = {}
+    if args.guide is not None:
+        if args.guide in ("chord", "sagitta"):
+            changes["guide_rule"] = args.guide
+        else:
+            changes.update(guide_rule="height", guide_height=number("guide", args.guide))
+    if args.rod is not None and args.rod_ratio is not None:
+        raise UsageError("--rod: give either --rod or --rod-ratio, not both")
+    if args.rod is not None:
+        changes.update(variant="rod", rod_input="length", rod_length=number("rod", args.rod))
+    if args.rod_ratio is not None:
+        changes.update(variant="rod", rod_input="ratio", rod_ratio=number("rod_ratio", args.rod_ratio))
+    if args.rod_side is not None:
+        changes["rod_side"] = args.rod_side
+    return replace(spec, **changes)
+
+
+def design_from_args(args: argparse.Namespace) -> Design:
+    return spec_from_args(args).design()
+
+
+def rpms_from_args(args: argparse.Namespace) -> list[float]:
+    if args.rpm is not None:
+        return [number("rpm", r) for r in args.rpm]
+    doc = design_file(args)
+    if doc is not None:
+        return list(doc["rpm"])
+    return [float(r) for r in DEFAULT_RPMS]
+
+
+def angles_from_args(args: argparse.Namespace) -> np.ndarray:
+    """Crank angles in rad from ``--angles`` or ``--step`` (or the design file's step)."""
+    if args.angles is not None:
+        return check_angles(np.array(number_list("angles", args.angles)))
+    if args.step is not None:
+        return crank_angles(number("step", args.step))
+    doc = design_file(args)
+    return crank_angles(doc["step_deg"] if doc is not None else 1.0)
+
+
+def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -> MassProperties:
+    """The load options over the design file's loads (if any) over the defaults.
+
+    With ``required``, the four essential loads must come from the options or the file.
+    A rod mass the file keeps from the rod variant is dropped for a block design; one
+    given as an option is refused by the solver instead.
+    """
+    doc = design_file(args)
+    base = doc.get("masses") if doc is not None else None
+    if base is not None:
+        base = masses_for_design(design, base)
+    changes: dict[str, Any] = {}
+    for option, dest, _, _ in LOAD_OPTIONS:
+        text = getattr(args, dest)
+        if text is None:
+            continue
+        if dest == "ram_cg_mm":
+            parts = text.split(",")
+            if len(parts) != 2:
+                raise DesignError(dest, text, "must be DX,DY in mm")
+            changes[dest] = tuple(number(dest, p) for p in parts)
+        else:
+            changes[dest] = number(dest, text)
+    if args.no_gravity:
+        changes["gravity"] = False
+    if base is None:
+        if required:
+            for dest in REQUIRED_LOADS:
+                if dest not in changes:
+                    raise UsageError(f"{option_name(dest)}: required (or give --design with loads)")
+        base = MassProperties()
+    return replace(base, **changes)
+
