@@ -13,6 +13,7 @@ from PySide6.QtWidgets import (QFileDialog, QMainWindow, QMessageBox, QScrollAre
                                QTabWidget, QVBoxLayout, QWidget)
 
 from . import i18n
+from .help import GuideDialog, about_text
 from .animation import AnimationBar
 from .document import Document
 from .forces_panel import ForcesPanel
@@ -113,6 +114,9 @@ class MainWindow(QMainWindow):
         self.act_dims = self._shortcut(self.scheme.dimensions_action, "Ctrl+D")
         self.act_forces = self._shortcut(self.scheme.forces_action, "Ctrl+F")
         self.act_about = self._action(self._about)
+        self.act_guide = self._action(self._show_guide, QKeySequence.StandardKey.HelpContents)
+        self._guide: GuideDialog | None = None
+        self._language = "en"
         self.lang_actions: dict[str, QAction] = {}
         for code, name in i18n.LANGUAGES:
             action = self._action(lambda _=False, c=code: self.set_language(c))
@@ -144,6 +148,7 @@ class MainWindow(QMainWindow):
         for a in (self.act_play, self.act_step, self.act_back):
             self.menu_anim.addAction(a)
         self.menu_help = bar.addMenu("")
+        self.menu_help.addAction(self.act_guide)
         self.menu_help.addAction(self.act_about)
         self._fill_recent()
 
@@ -159,6 +164,9 @@ class MainWindow(QMainWindow):
     # ---- translation ---------------------------------------------------------
     def set_language(self, code: str) -> None:
         i18n.set_language(code)
+        self._language = code
+        if self._guide is not None:
+            self._guide.set_language(code)
         self.settings.setValue("language", code)
         for c, action in self.lang_actions.items():
             action.setChecked(c == code)
@@ -181,6 +189,7 @@ class MainWindow(QMainWindow):
             (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
             (self.act_quit, self.tr("&Quit"), ""),
             (self.act_about, self.tr("&About"), ""),
+            (self.act_guide, self.tr("User &guide"), self.tr("Conventions, method, glossary and command line")),
         ]
         for action, text, tip in texts:
             action.setText(text)
@@ -231,9 +240,13 @@ class MainWindow(QMainWindow):
                                .replace("%2", exc.strerror or str(exc)))
 
     def _about(self) -> None:
-        QMessageBox.about(self, self.tr("About Shaper Designer"), self.tr(
-            "Shaper Designer: synthesis and kinematics of the quick-return mechanism "
-            "of a shaper (crank, slotted lever, ram).\nLengths in mm, speeds in r/min."))
+        QMessageBox.about(self, self.tr("About Shaper Designer"), about_text())
+
+    def _show_guide(self) -> None:
+        if self._guide is None:
+            self._guide = GuideDialog(self._language, self)
+        self._guide.show()
+        self._guide.raise_()
 
     # ---- window state --------------------------------------------------------
     def _restore(self) -> None:

@@ -102,3 +102,12 @@ def test_app_starts_and_renders(tmp_path):
     assert out.returncode == 0, out.stderr
     assert "first window shown" in out.stdout
     assert shot.stat().st_size > 20_000
+
+
+def test_help_guide_opens_and_follows_the_language(window):
+    window.act_guide.trigger()
+    guide = window._guide
+    assert guide is not None and guide.isVisible()
+    assert "User guide" in guide.browser.toPlainText()
+    window.set_language("zh_CN")
+    assert "使用指南" in guide.browser.toPlainText()

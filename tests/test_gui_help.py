@@ -1,0 +1,46 @@
+"""Help: the packaged guide in both languages, the About text with the version."""
+import re
+
+import pytest
+
+from core.geometry import synthesize
+from shaperapp.help import GuideDialog, about_text, guide_html, version
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_guide_has_every_section(language):
+    html = guide_html(language)
+    for anchor in ("start", "conventions", "synthesis", "example", "glossary", "files", "cli"):
+        assert f'id="{anchor}"' in html
+    assert "曲柄" in html and "crank" in html          # the glossary is bilingual in both
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_worked_example_figures_are_the_engine_s(language):
+    """The guide's numbers for L1 = 100, K = 1.4, H = 300 are what core computes."""
+    html = guide_html(language)
+    design = synthesize(100.0, 1.4, 300.0)
+    assert f"{design.frame:.2f}" in html and f"{design.lever:.2f}" in html
+    assert f"{design.guide_above_crank:.2f}" in html
+    from core.metrics import analyze
+    speed = analyze(design, [40.0]).speeds[0]
+    assert f"{speed.v_work_max_m_s:.4f}" in html and f"{speed.v_return_max_m_s:.4f}" in html
+    assert f"{speed.work_time_s:.3f}" in html and f"{speed.return_time_s:.3f}" in html
+
+
+def test_unknown_language_falls_back_to_english():
+    assert guide_html("fr") == guide_html("en")
+
+
+def test_about_names_the_installed_version(qapp):
+    assert re.match(r"\d+\.\d+", version())
+    assert version() in about_text()
+
+
+def test_guide_dialog_switches_language(qtbot):
+    dialog = GuideDialog("en")
+    qtbot.addWidget(dialog)
+    assert "User guide" in dialog.browser.toPlainText()
+    dialog.set_language("zh_CN")
+    assert "使用指南" in dialog.browser.toPlainText()
+
