@@ -14,15 +14,15 @@ import math
 import re
 import sys
 from dataclasses import replace
-from typing import Any
+from typing import Any, Iterable
 
 import numpy as np
 
 from ..dynamics import MassProperties, masses_for_design
-from ..errors import DesignError
+from ..errors import DesignError, os_reason
 from ..geometry import Design
 from ..io import atomic_write, load_design
-from ..kinematics import check_angles, crank_angles
+from ..kinematics import check_angles, check_request, crank_angles
 from ..spec import Spec
 
 DEFAULT_RPMS = ("40", "60")
@@ -69,6 +69,10 @@ class UsageError(Exception):
 
 class OutputError(Exception):
     """An output file could not be written; the message names the option and path."""
+
+
+class StdoutError(OutputError):
+    """Standard output could not be written (a full disk, a closed descriptor)."""
 
 
 class Parser(argparse.ArgumentParser):
@@ -135,20 +139,39 @@ def print_table(rows: list[tuple[str, str]]) -> None:
 
 
 def print_json(document: Any) -> None:
-    """JSON on stdout; refuses NaN/Infinity, which no JSON reader accepts."""
+    """JSON on stdout; refuses NaN/Infinity, which no JSON reader accepts (an undefined
+    value must already be None, i.e. null)."""
     print(json.dumps(document, indent=2, allow_nan=False))
 
 
-def write_output(option: str, target: str, text: str) -> None:
-    """``text`` to stdout for ``-``, else to the file ``target`` (atomically for regular files)."""
+def write_output(option: str, target: str, text: str | Iterable[str]) -> None:
+    """``text`` (a string or pieces of it) to stdout for ``-``, else to the file ``target``
+    (atomically for a regular file, see ``core.atomic.atomic_write``)."""
     if target == "-":
-        sys.stdout.write(text)
-        sys.stdout.flush()
+        for piece in [text] if isinstance(text, str) else text:
+            _to_stdout(sys.stdout.write, piece, option)
+        flush_stdout(option)
         return
     try:
         atomic_write(target, text)
-    except OSError as exc:
-        raise OutputError(f"{option}: cannot write {target}: {exc.strerror or exc}") from None
+    except OSError as exc:      # a WriteError: names the user's path and a plain reason
+        raise OutputError(f"{option}: {exc}") from None
+
+
+def flush_stdout(option: str | None = None) -> None:
+    """Flush stdout now, so that a failure is reported as one line and not at exit."""
+    _to_stdout(lambda _: sys.stdout.flush(), None, option)
+
+
+def _to_stdout(write: Any, piece: str | None, option: str | None) -> None:
+    try:
+        write(piece)
+    except BrokenPipeError:
+        raise
+    except (OSError, ValueError) as exc:
+        reason = os_reason(exc) if isinstance(exc, OSError) else "standard output is closed"
+        prefix = f"{option}: " if option else ""
+        raise StdoutError(f"{prefix}cannot write to standard output: {reason}") from None
 
 
 # ---- numbers ---------------------------------------------------------------
@@ -280,7 +303,53 @@ def _apply_mechanism_options(spec: Spec, args: argparse.Namespace) -> Spec:
 
 
 def design_from_args(args: argparse.Namespace) -> Design:
-    return spec_from_args(args).design()
+    """The design the options describe; a DesignError is re-raised as a UsageError naming
+    the option of *this* subcommand that holds the bad value (``--dims (L2)`` …)."""
+    spec = spec_from_args(args)
+    try:
+        return spec.design()
+    except DesignError as exc:
+        raise UsageError(design_error_text(exc, _spec_option(exc.parameter, spec, args))) from None
+
+
+def design_error_text(exc: DesignError, option: str | None = None) -> str:
+    """The one-line message for a DesignError: option, what is allowed, the value given."""
+    text = str(exc.value)
+    value = text if len(text) <= 60 else text[:57] + "..."
+    return f"{option or option_name(exc.parameter)}: {exc.allowed} (got {value})"
+
+
+# Direct dimensions: which value of --dims a core parameter is.
+_DIMS_POSITION = {"crank": "L1", "frame": "L2", "lever": "L3"}
+# Synthesis: the derived lengths come from these inputs.
+_SYNTH_SOURCE = {"frame": "--K", "lever": "--stroke"}
+
+
+def _spec_option(parameter: str, spec: Spec, args: argparse.Namespace) -> str:
+    """The option that set ``parameter`` of ``spec`` in this command line."""
+    from_dims = getattr(args, "dims", None) is not None
+    if from_dims and parameter in _DIMS_POSITION:
+        return f"--dims ({_DIMS_POSITION[parameter]})"
+    if from_dims and parameter in ("time_ratio", "stroke"):
+        return "--dims"           # K and H are implied by L1, L2, L3
+    if from_dims and parameter in ("rod", "rod_length") and args.rod is None \
+            and getattr(args, "rod_ratio", None) is None and spec.variant == "rod":
+        return "--dims (L4)"
+    if design_file(args) is not None and parameter in ("crank", "time_ratio", "stroke", "frame",
+                                                        "lever", "mode", "variant"):
+        return "--design"         # a value of the file, not of an option
+    if spec.mode == "synthesis" and parameter in _SYNTH_SOURCE:
+        return _SYNTH_SOURCE[parameter]
+    return option_name(parameter)
+
+
+def request_from_args(args: argparse.Namespace) -> tuple[np.ndarray, list[float]]:
+    """The crank angles (rad) and speeds of a table, refused with the angle option if it
+    would hold more than ``core.kinematics.MAX_SAMPLES`` samples."""
+    rpms = rpms_from_args(args)
+    angles = angles_from_args(args)
+    check_request(angles.size, len(rpms), "angles" if args.angles is not None else "step")
+    return angles, rpms
 
 
 def rpms_from_args(args: argparse.Namespace) -> list[float]:
