@@ -113,16 +113,17 @@ def check_rpms(rpms) -> np.ndarray:
 
 
 def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
-                  limit: int = MAX_SAMPLES) -> int:
+                  value: object = None, limit: int = MAX_SAMPLES) -> int:
     """Refuse a request of more than ``limit`` samples (angles × speeds); return the count.
 
     Every front end calls this before computing, so that no request can
-    exhaust memory: the CLI with the option the user typed as ``parameter``,
-    the GUI with its own, smaller ``limit`` if it must stay responsive.
+    exhaust memory: the CLI with the option the user typed as ``parameter``
+    (and its ``value``, e.g. the step), the GUI with its own, smaller
+    ``limit`` if it must stay responsive.
     """
     samples = int(n_angles) * int(n_speeds)
     if samples > limit:
-        raise DesignError(parameter, samples,
+        raise DesignError(parameter, samples if value is None else value,
                           f"gives {samples} samples (angles × speeds), more than {limit}; "
                           "use a larger step or fewer speeds")
     return samples

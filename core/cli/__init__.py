@@ -19,8 +19,8 @@ from types import ModuleType
 from typing import Sequence
 
 from ..errors import DesignError, FileFormatError
-from .common import (OutputError, Parser, StdoutError, UsageError, design_error_text, fail,
-                     flush_stdout, install_safe_output, version_text)
+from .common import (GuardedStdout, OutputError, Parser, StdoutError, UsageError,
+                     design_error_text, fail, install_safe_output, version_text)
 
 # Order is the order of ``shaper --help``.
 CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics")
@@ -69,9 +69,11 @@ def run(argv: Sequence[str] | None) -> int:
 
 def main(argv: Sequence[str] | None = None) -> int:
     install_safe_output()
+    stdout = sys.stdout
+    sys.stdout = GuardedStdout(stdout)  # type: ignore[assignment]
     try:
         status = run(argv)
-        flush_stdout()
+        sys.stdout.flush()
         return status
     except UsageError as exc:
         return fail(str(exc))
@@ -89,11 +91,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         _silence_stdout()
         return 0
     except MemoryError:
-        return fail("not enough memory for this request; use a larger --step or fewer speeds")
+        return fail("not enough memory for this request; ask for fewer crank angles or speeds")
     except KeyboardInterrupt:
         return fail("interrupted", status=130)
     except Exception as exc:  # never a traceback; the one line says what broke
         return fail(f"internal error ({type(exc).__name__}: {exc}); please report it", status=1)
+    finally:
+        if isinstance(sys.stdout, GuardedStdout):
+            sys.stdout = stdout
 
 
 def _silence_stdout() -> None:

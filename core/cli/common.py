@@ -148,9 +148,12 @@ def write_output(option: str, target: str, text: str | Iterable[str]) -> None:
     """``text`` (a string or pieces of it) to stdout for ``-``, else to the file ``target``
     (atomically for a regular file, see ``core.atomic.atomic_write``)."""
     if target == "-":
-        for piece in [text] if isinstance(text, str) else text:
-            _to_stdout(sys.stdout.write, piece, option)
-        flush_stdout(option)
+        try:
+            for piece in [text] if isinstance(text, str) else text:
+                sys.stdout.write(piece)
+            sys.stdout.flush()
+        except StdoutError as exc:
+            raise StdoutError(f"{option}: {exc}") from None
         return
     try:
         atomic_write(target, text)
@@ -158,20 +161,33 @@ def write_output(option: str, target: str, text: str | Iterable[str]) -> None:
         raise OutputError(f"{option}: {exc}") from None
 
 
-def flush_stdout(option: str | None = None) -> None:
-    """Flush stdout now, so that a failure is reported as one line and not at exit."""
-    _to_stdout(lambda _: sys.stdout.flush(), None, option)
+class GuardedStdout:
+    """sys.stdout for the length of one command: a failed write (a full disk, a closed
+    descriptor) becomes a StdoutError, reported as one line instead of a traceback.
+    BrokenPipeError passes through: the reader left, which is not an error."""
 
+    def __init__(self, stream: Any) -> None:
+        self._stream = stream
 
-def _to_stdout(write: Any, piece: str | None, option: str | None) -> None:
-    try:
-        write(piece)
-    except BrokenPipeError:
-        raise
-    except (OSError, ValueError) as exc:
-        reason = os_reason(exc) if isinstance(exc, OSError) else "standard output is closed"
-        prefix = f"{option}: " if option else ""
-        raise StdoutError(f"{prefix}cannot write to standard output: {reason}") from None
+    def write(self, text: str) -> int:
+        return self._guard("write", text)
+
+    def flush(self) -> None:
+        self._guard("flush")
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._stream, name)
+
+    def _guard(self, method: str, *args: Any) -> Any:
+        if self._stream is None:      # started with stdout closed (``>&-``)
+            raise StdoutError("cannot write to standard output: it is closed")
+        try:
+            return getattr(self._stream, method)(*args)
+        except BrokenPipeError:
+            raise
+        except (OSError, ValueError) as exc:
+            reason = os_reason(exc) if isinstance(exc, OSError) else "it is closed"
+            raise StdoutError(f"cannot write to standard output: {reason}") from None
 
 
 # ---- numbers ---------------------------------------------------------------
@@ -348,8 +364,19 @@ def request_from_args(args: argparse.Namespace) -> tuple[np.ndarray, list[float]
     would hold more than ``core.kinematics.MAX_SAMPLES`` samples."""
     rpms = rpms_from_args(args)
     angles = angles_from_args(args)
-    check_request(angles.size, len(rpms), "angles" if args.angles is not None else "step")
+    if args.angles is not None:
+        check_request(angles.size, len(rpms), "angles", angles.size)
+    else:
+        check_request(angles.size, len(rpms), "step", _step_value(args))
     return angles, rpms
+
+
+def _step_value(args: argparse.Namespace) -> float:
+    """``--step``, else the design file's step, else 1°."""
+    if args.step is not None:
+        return number("step", args.step)
+    doc = design_file(args)
+    return doc["step_deg"] if doc is not None else 1.0
 
 
 def rpms_from_args(args: argparse.Namespace) -> list[float]:
@@ -365,10 +392,7 @@ def angles_from_args(args: argparse.Namespace) -> np.ndarray:
     """Crank angles in rad from ``--angles`` or ``--step`` (or the design file's step)."""
     if args.angles is not None:
         return check_angles(np.array(number_list("angles", args.angles)))
-    if args.step is not None:
-        return crank_angles(number("step", args.step))
-    doc = design_file(args)
-    return crank_angles(doc["step_deg"] if doc is not None else 1.0)
+    return crank_angles(_step_value(args))
 
 
 def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -> MassProperties:
