@@ -235,11 +235,11 @@
         <translation>连杆</translation>
     </message>
     <message>
-        <source>Through the tip&apos;s extreme positions (chord)</source>
+        <source>Through the tip's extreme positions (chord)</source>
         <translation>通过导杆端部两极限位置（弦线）</translation>
     </message>
     <message>
-        <source>Mid-sagitta of the tip&apos;s arc</source>
+        <source>Mid-sagitta of the tip's arc</source>
         <translation>导杆端部圆弧矢高的中点</translation>
     </message>
     <message>
@@ -341,7 +341,7 @@
         <translation>质心位置 c</translation>
     </message>
     <message>
-        <source>Distance of the lever&apos;s centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
@@ -365,7 +365,7 @@
         <translation>质心偏移 dx</translation>
     </message>
     <message>
-        <source>Horizontal offset of the ram&apos;s centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
         <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
     </message>
     <message>
@@ -373,7 +373,7 @@
         <translation>质心偏移 dy</translation>
     </message>
     <message>
-        <source>Vertical offset of the ram&apos;s centre of mass from the ram joint C, mm (+ up)</source>
+        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
@@ -600,7 +600,7 @@
         <translation>导出运动曲线 CSV(&amp;C)…</translation>
     </message>
     <message>
-        <source>All speeds, at the form&apos;s angle step</source>
+        <source>All speeds, at the form's angle step</source>
         <translation>全部转速，按表单中的角度步长</translation>
     </message>
     <message>
@@ -769,7 +769,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>曲柄轴上飞轮转动惯量 J_F，kg·m²</translation>
     </message>
     <message>
-        <source>J_F less mechanism&apos;s own, kg·m²</source>
+        <source>J_F less mechanism's own, kg·m²</source>
         <translation>扣除机构自身等效惯量后的 J_F，kg·m²</translation>
     </message>
     <message>
@@ -857,7 +857,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>实测 K</translation>
     </message>
     <message>
-        <source>Working / return crank angle, from the ram&apos;s dead points</source>
+        <source>Working / return crank angle, from the ram's dead points</source>
         <translation>工作行程与回程的曲柄转角之比，由滑枕极限位置测得</translation>
     </message>
     <message>
@@ -865,7 +865,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>实测行程</translation>
     </message>
     <message>
-        <source>Distance between the ram&apos;s dead points</source>
+        <source>Distance between the ram's dead points</source>
         <translation>滑枕两极限位置之间的距离</translation>
     </message>
     <message>
@@ -924,7 +924,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <source>Plot against the crank angle (0–360°) or against time (each speed&apos;s own cycle)</source>
+        <source>Plot against the crank angle (0–360°) or against time (each speed's own cycle)</source>
         <translation>以曲柄转角 (0–360°) 或时间（各转速自身的周期）为横坐标</translation>
     </message>
     <message>
@@ -932,7 +932,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>导杆曲线</translation>
     </message>
     <message>
-        <source>Show the slotted lever&apos;s angle, angular velocity or angular acceleration</source>
+        <source>Show the slotted lever's angle, angular velocity or angular acceleration</source>
         <translation>显示导杆的角位移、角速度或角加速度</translation>
     </message>
     <message>
@@ -1011,7 +1011,7 @@ Lengths in mm, speeds in r/min.</source>
 <context>
     <name>SchemeWidget</name>
     <message>
-        <source>Cannot export to &apos;{0}&apos;: use .png or .svg</source>
+        <source>Cannot export to '{0}': use .png or .svg</source>
         <translation>无法导出到“{0}”：请使用 .png 或 .svg</translation>
     </message>
     <message>
@@ -1267,6 +1267,10 @@ Lengths in mm, speeds in r/min.</source>
     <message>
         <source>gives more than %1 angles; use a larger step</source>
         <translation>角度数超过 %1；请使用更大的步长</translation>
+    </message>
+    <message>
+        <source>gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds</source>
+        <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；请增大角度步长或减少转速个数</translation>
     </message>
     <message>
         <source>must be given either as a length or as a ratio L4/L3, not both</source>

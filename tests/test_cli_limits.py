@@ -367,3 +367,17 @@ def test_a_design_file_with_a_bad_override_names_the_override(tmp_path):
     one_error_line(status, err, "--guide")
     status, out, err = shaper_in_process("curves", "--design", path, "--rod", "1")
     one_error_line(status, err, "--rod")
+
+
+def test_the_sample_cap_message_is_translated_for_the_gui(qtbot):
+    from shaperapp import i18n
+    from shaperapp.messages import describe
+
+    with pytest.raises(DesignError) as info:
+        check_request(angle_count(0.0005), 4, "step", 0.0005)
+    try:
+        assert i18n.set_language("zh_CN")
+        text = describe(info.value)
+        assert "2000000" in text and str(4 * angle_count(0.0005)) in text and "步长" in text
+    finally:
+        i18n.set_language("en")
