@@ -8,12 +8,13 @@ import os
 import stat
 import subprocess
 import sys
-import threading
 
 import pytest
 
 from core.atomic import atomic_write, remove_stale_temps, temp_pattern
 from core.errors import WriteError
+
+from output_checks import read_fifo_in_background
 
 
 def temps(folder):
@@ -95,9 +96,7 @@ def test_a_dangling_symlink_creates_its_target(tmp_path, umask_022):
 def test_a_fifo_is_written_to_and_never_replaced(tmp_path):
     fifo = tmp_path / "pipe"
     os.mkfifo(fifo)
-    received = []
-    reader = threading.Thread(target=lambda: received.append(fifo.read_text()))
-    reader.start()
+    reader, received = read_fifo_in_background(fifo)
     atomic_write(fifo, ["first,", "second\n"])
     reader.join(timeout=10)
     assert received == ["first,second\n"]

@@ -11,10 +11,6 @@ Most runs call ``core.cli.main`` in this process; a few run the real command.
 To keep the run short, a step that would be accepted but finer than 0.5° is
 never drawn (the largest requests are timed in test_cli_limits.py instead).
 """
-import csv
-import io
-import json
-import math
 import os
 import re
 import subprocess
@@ -30,6 +26,7 @@ from core.io import save_design
 from core.spec import Spec
 
 from cli_runner import shaper_in_process
+from output_checks import finite_csv, finite_json
 
 FOLDER = tempfile.mkdtemp(prefix="shaper-fuzz-")
 GOOD_FILE = os.path.join(FOLDER, "good.json")
@@ -160,25 +157,9 @@ def check_finite_output(text: str) -> None:
     if not text.strip():
         return
     if text.lstrip().startswith("{"):
-        def refuse(name):
-            raise AssertionError(f"{name} in JSON output")
-
-        def walk(value):
-            if isinstance(value, dict):
-                for item in value.values():
-                    walk(item)
-            elif isinstance(value, list):
-                for item in value:
-                    walk(item)
-            elif isinstance(value, float):
-                assert math.isfinite(value)
-        walk(json.loads(text, parse_constant=refuse))
+        finite_json(text)
     elif text.startswith("rpm,"):
-        rows = list(csv.reader(io.StringIO(text)))
-        assert len({len(r) for r in rows}) == 1, "ragged CSV"
-        for row in rows[1:]:
-            for cell in row:
-                assert cell == "" or math.isfinite(float(cell)), row
+        finite_csv(text)
     else:
         assert not NON_FINITE.search(text), text
 

@@ -1,9 +1,7 @@
 """Issue 7, items 2, 3, 5 and 6 on the command line: floors, the sample cap, streaming,
 progress, memory, undefined values, output failures and option names in messages."""
-import csv
 import errno
 import io
-import json
 import math
 import os
 import pty
@@ -11,8 +9,6 @@ import select
 import stat
 import subprocess
 import sys
-import threading
-import time
 
 import numpy as np
 import pytest
@@ -27,6 +23,7 @@ from core.kinematics import (MAX_SAMPLES, MAX_SPEEDS, MIN_RPM, MIN_STEP_DEG, ang
 from core.spec import Spec
 
 from cli_runner import shaper, shaper_in_process
+from output_checks import finite_csv, finite_json, read_fifo_in_background
 
 SEED = ["--crank", "100", "--K", "1.4", "--stroke", "300"]
 LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000"]
@@ -39,21 +36,6 @@ def one_error_line(status, stderr, option):
     assert "Traceback" not in stderr
     assert lines[0].startswith(f"shaper: error: {option}"), lines[0]
     return lines[0]
-
-
-def finite_csv(text):
-    """Rows of a CSV whose every cell is a finite number or empty; the header and rows."""
-    rows = list(csv.reader(io.StringIO(text)))
-    for row in rows[1:]:
-        for cell in row:
-            assert cell == "" or math.isfinite(float(cell)), row
-    return rows[0], rows[1:]
-
-
-def strict_json(text):
-    def refuse(name):
-        raise AssertionError(f"{name} in JSON output")
-    return json.loads(text, parse_constant=refuse)
 
 
 # ---- item 2: floors, nothing infinite or undefined -------------------------------------
@@ -79,16 +61,7 @@ def test_the_slowest_and_fastest_speeds_give_finite_output(command):
     status, out, err = shaper_in_process(command[0], *SEED, "--rod-ratio", "0.3", *command[1:])
     assert status == 0 and err == "", err
     if "--json" in command:
-        def walk(value):
-            if isinstance(value, dict):
-                for v in value.values():
-                    walk(v)
-            elif isinstance(value, list):
-                for v in value:
-                    walk(v)
-            elif isinstance(value, float):
-                assert math.isfinite(value)
-        walk(strict_json(out))
+        finite_json(out)
     else:
         header, rows = finite_csv(out)
         assert rows
@@ -309,9 +282,7 @@ def test_a_reader_that_leaves_early_is_not_an_error():
 def test_csv_into_a_fifo_is_written_and_the_fifo_stays(tmp_path):
     fifo = tmp_path / "pipe"
     os.mkfifo(fifo)
-    received = []
-    reader = threading.Thread(target=lambda: received.append(fifo.read_text()))
-    reader.start()
+    reader, received = read_fifo_in_background(fifo)
     out = shaper("curves", *SEED, "--angles", "0,90", "--rpm", "40", "--csv", fifo)
     reader.join(timeout=60)
     assert out.returncode == 0, out.stderr
