@@ -38,6 +38,11 @@ def atomic_write(path: str | os.PathLike, text: str | Iterable[str]) -> None:
     plain reason such as a full disk.
     """
     pieces = [text] if isinstance(text, str) else text
+    name = os.fspath(path)
+    if not name:
+        raise WriteError(path, OSError(None, "no file name was given"))
+    if name.endswith(("/", os.sep)):
+        raise WriteError(path, OSError(None, "the name ends with a slash, so it names a folder"))
     try:
         try:
             status: os.stat_result | None = os.stat(path)

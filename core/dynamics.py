@@ -27,7 +27,7 @@ import numpy as np
 
 from .errors import DesignError, require_range
 from .geometry import MAX_LENGTH_MM, Design
-from .kinematics import Shape, check_rpms, ram_origin, rpm_to_omega, shape
+from .kinematics import Shape, check_request, check_rpms, ram_origin, rpm_to_omega, shape
 
 GRAVITY = 9.81               # m/s², acting toward −y
 MM = 1e-3                    # m per mm
@@ -255,6 +255,7 @@ def _check_inputs(design: Design, crank_angle: np.ndarray, rpms,
         raise DesignError("rod_mass_kg", masses.rod_mass_kg,
                           "must be 0 for the block variant, which has no rod")
     rpm = check_rpms(rpms)
+    check_request(phi.size, rpm.size, "angles")
     return phi, rpm, rpm_to_omega(rpm)
 
 

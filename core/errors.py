@@ -56,7 +56,7 @@ class WriteError(OSError):
         super().__init__(cause.errno, os_reason(cause), os.fspath(path))
 
     def __str__(self) -> str:
-        return f"cannot write {self.filename}: {self.strerror}"
+        return f"cannot write {self.filename or repr(self.filename)}: {self.strerror}"
 
 
 def _fmt(value: object) -> str:

@@ -246,3 +246,14 @@ def test_remove_stale_temps_never_follows_or_removes_a_symlink(tmp_path):
     link.symlink_to(victim)
     assert remove_stale_temps(tmp_path / "x.json") == []
     assert link.is_symlink() and victim.read_text() == "keep"
+
+
+@pytest.mark.parametrize("name, reason", [("", "no file name was given"),
+                                          ("missing/", "the name ends with a slash, so it names a folder"),
+                                          ("x.csv/", "the name ends with a slash, so it names a folder")])
+def test_a_name_that_is_no_file_is_refused_without_writing(tmp_path, monkeypatch, name, reason):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(WriteError) as info:
+        atomic_write(name, "x")
+    assert str(info.value).endswith(f": {reason}")
+    assert list(tmp_path.iterdir()) == []

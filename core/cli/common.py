@@ -22,7 +22,8 @@ from ..dynamics import MassProperties, masses_for_design
 from ..errors import DesignError, os_reason
 from ..geometry import Design
 from ..io import atomic_write, load_design
-from ..kinematics import check_angles, check_request, crank_angles
+from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
+                          check_angles, check_request, crank_angles)
 from ..spec import Spec
 
 DEFAULT_RPMS = ("40", "60")
@@ -238,13 +239,15 @@ def add_design_options(parser: argparse.ArgumentParser, allow_dims: bool = True,
 
 def add_speed_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--rpm", nargs="+", metavar="RPM",
-                        help="crank speeds, r/min (default 40 60, or the design file's)")
+                        help=f"1 to {MAX_SPEEDS} crank speeds, {MIN_RPM:g} to {MAX_RPM:g} r/min "
+                             "(default 40 60, or the design file's)")
 
 
 def add_angle_options(parser: argparse.ArgumentParser, what: str) -> None:
     angles = parser.add_mutually_exclusive_group()
     angles.add_argument("--step", metavar="DEG",
-                        help=f"crank-angle step of {what}, degrees (default 1, or the design file's)")
+                        help=f"crank-angle step of {what}, {MIN_STEP_DEG:g} to {MAX_STEP_DEG:g} degrees "
+                             f"(default 1, or the design file's); at most {MAX_SAMPLES} angles × speeds")
     angles.add_argument("--angles", metavar="A,B,…", help=f"explicit crank angles of {what}, degrees")
 
 
