@@ -352,3 +352,10 @@ def test_the_sample_cap_message_is_translated_for_the_gui(qtbot):
         assert "2000000" in text and str(4 * angle_count(0.0005)) in text and "步长" in text
     finally:
         i18n.set_language("en")
+
+
+def test_rod_side_without_a_rod_is_refused_not_ignored():
+    status, out, err = shaper_in_process("synth", *SEED, "--rod-side", "leading")
+    one_error_line(status, err, "--rod-side")
+    status, out, err = shaper_in_process("synth", *SEED, "--rod-side", "leading", "--rod-ratio", "0.4")
+    assert status == 0 and "leading" in out

@@ -318,7 +318,10 @@ def _apply_mechanism_options(spec: Spec, args: argparse.Namespace) -> Spec:
         changes.update(variant="rod", rod_input="ratio", rod_ratio=number("rod_ratio", args.rod_ratio))
     if args.rod_side is not None:
         changes["rod_side"] = args.rod_side
-    return replace(spec, **changes)
+    spec = replace(spec, **changes)
+    if args.rod_side is not None and spec.variant != "rod":
+        raise UsageError("--rod-side: only for the rod variant; give --rod or --rod-ratio too")
+    return spec
 
 
 def design_from_args(args: argparse.Namespace) -> Design:
