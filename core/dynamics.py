@@ -27,7 +27,7 @@ import numpy as np
 
 from .errors import DesignError, require_range
 from .geometry import MAX_LENGTH_MM, Design
-from .kinematics import Shape, check_rpms, ram_origin, rpm_to_omega, shape
+from .kinematics import Shape, check_request, check_rpms, ram_origin, rpm_to_omega, shape
 
 GRAVITY = 9.81               # m/s², acting toward −y
 MM = 1e-3                    # m per mm
@@ -35,6 +35,7 @@ ENERGY_INTERVALS = 3600      # uniform φ intervals per cycle for the energy int
 MAX_MASS_KG = 1e6
 MAX_INERTIA_KG_M2 = 1e6
 MAX_FORCE_N = 1e9
+MIN_DELTA = 1e-4             # finest speed fluctuation: keeps J_F = ΔW/(ω²·δ) finite at any speed
 
 
 @dataclass(frozen=True)
@@ -92,7 +93,8 @@ class MassProperties:
                                            MAX_LENGTH_MM, "mm", low_open=False))
         put("idle_fraction", require_range("idle_fraction", self.idle_fraction, 0.0, 0.5,
                                            low_open=False, high_open=True))
-        put("delta", require_range("delta", self.delta, 0.0, 1.0, high_open=True))
+        put("delta", require_range("delta", self.delta, MIN_DELTA, 1.0, low_open=False,
+                                   high_open=True))
         if not isinstance(self.gravity, (bool, np.bool_)):
             raise DesignError("gravity", self.gravity, "must be true or false")
         put("gravity", bool(self.gravity))
@@ -253,6 +255,7 @@ def _check_inputs(design: Design, crank_angle: np.ndarray, rpms,
         raise DesignError("rod_mass_kg", masses.rod_mass_kg,
                           "must be 0 for the block variant, which has no rod")
     rpm = check_rpms(rpms)
+    check_request(phi.size, rpm.size, "angles")
     return phi, rpm, rpm_to_omega(rpm)
 
 

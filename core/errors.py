@@ -5,7 +5,9 @@ translated message; neither has to parse the text.
 """
 from __future__ import annotations
 
+import errno
 import math
+import os
 
 
 class DesignError(ValueError):
@@ -24,6 +26,37 @@ class DesignError(ValueError):
 
 class FileFormatError(ValueError):
     """A design file that cannot be read; the current design stays untouched."""
+
+
+# errno → a plain reason; anything else keeps the system's own wording.
+_REASONS = {
+    errno.ENOSPC: "the disk is full (no space left on the device)",
+    errno.EDQUOT: "the disk quota is exhausted",
+    errno.EACCES: "permission denied",
+    errno.EPERM: "permission denied",
+    errno.EROFS: "the file system is read-only",
+    errno.ENOENT: "the folder does not exist",
+    errno.ENOTDIR: "a part of the path is not a folder",
+    errno.EISDIR: "it is a folder",
+    errno.ELOOP: "too many levels of symbolic links",
+    errno.ENAMETOOLONG: "the name is too long",
+}
+
+
+def os_reason(exc: OSError) -> str:
+    """A short plain reason for an OSError, without the file name."""
+    return _REASONS.get(exc.errno, exc.strerror or str(exc))  # type: ignore[arg-type]
+
+
+class WriteError(OSError):
+    """A file could not be written. ``filename`` is the path the user gave (never a
+    temporary file) and ``strerror`` a plain reason, e.g. that the disk is full."""
+
+    def __init__(self, path: str | os.PathLike, cause: OSError) -> None:
+        super().__init__(cause.errno, os_reason(cause), os.fspath(path))
+
+    def __str__(self) -> str:
+        return f"cannot write {self.filename or repr(self.filename)}: {self.strerror}"
 
 
 def _fmt(value: object) -> str:

@@ -8,12 +8,12 @@ from __future__ import annotations
 import json
 import math
 import os
-import tempfile
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any, Iterable, Iterator
 
 import numpy as np
 
+from .atomic import atomic_write
 from .dynamics import MassProperties
 from .errors import DesignError, FileFormatError
 from .kinematics import Motion
@@ -57,35 +57,33 @@ def curve_table(motion: Motion) -> tuple[tuple[str, ...], np.ndarray]:
 
 
 def table_csv(names: Iterable[str], data: np.ndarray) -> str:
-    """CSV text with a header; numbers with 10 significant digits."""
+    """CSV text with a header; numbers with 10 significant digits, NaN as an empty cell."""
+    return "".join(table_chunks(names, data))
+
+
+def table_chunks(names: Iterable[str] | None, data: np.ndarray,
+                 rows: int = 20_000) -> Iterator[str]:
+    """The CSV of :func:`table_csv` in pieces of ``rows`` rows (the header first, unless
+    ``names`` is None), so a large table is never formatted in one piece.
+
+    A NaN marks a value that is undefined at that angle (the guide's line of
+    action when it carries no force) and becomes an empty cell.
+    """
     data = np.asarray(data, dtype=float)
-    names = list(names)
-    row = ",".join(["%.10g"] * len(names))
-    body = "\n".join([row] * data.shape[0]) % tuple(data.ravel()) if data.size else ""
-    return ",".join(names) + "\n" + body + ("\n" if data.size else "")
+    if names is not None:
+        yield ",".join(names) + "\n"
+    if data.size == 0:
+        return
+    row = ",".join(["%.10g"] * data.shape[1]) + "\n"
+    for start in range(0, data.shape[0], rows):
+        block = data[start:start + rows]
+        text = (row * block.shape[0]) % tuple(block.ravel().tolist())
+        # "%g" spells NaN "nan"; no number contains those letters, so this only blanks NaN cells.
+        yield text.replace("nan", "") if np.isnan(block).any() else text
 
 
 def curves_csv(motion: Motion) -> str:
     return table_csv(*curve_table(motion))
-
-
-def atomic_write(path: str | os.PathLike, text: str) -> None:
-    """Write ``text`` so the file is either the old one or the whole new one."""
-    target = Path(path)
-    directory = target.parent if str(target.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            handle.write(text)
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.replace(tmp, target)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
 
 
 def design_document(spec: Spec, rpms: Iterable[float], step_deg: float,

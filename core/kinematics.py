@@ -22,8 +22,16 @@ import numpy as np
 from .errors import DesignError, require_range
 from .geometry import Design
 
+MIN_RPM = 0.01
+"""Slowest crank speed, r/min (one turn in 100 minutes): every time and rate stays finite."""
 MAX_RPM = 1000.0
-MAX_ANGLES = 2_000_000
+MAX_SPEEDS = 16
+MIN_STEP_DEG = 0.0002
+"""Finest crank-angle step, degrees (1 800 001 angles per cycle)."""
+MAX_STEP_DEG = 90.0
+MAX_SAMPLES = 2_000_000
+"""Largest request, crank angles × crank speeds: what one computation may hold in memory."""
+MAX_ANGLES = MAX_SAMPLES
 
 
 def rpm_to_omega(rpm: np.ndarray | float) -> np.ndarray:
@@ -62,14 +70,24 @@ class Shape:
 
 def crank_angles(step_deg: float = 1.0) -> np.ndarray:
     """0, step, …, up to and including 360°, in rad (the cycle closes)."""
-    step = require_range("step", step_deg, 0.0, 90.0, "°")
-    count = int(math.floor(360.0 / step + 1e-9))
-    if count + 1 > MAX_ANGLES:
-        raise DesignError("step", step, f"gives more than {MAX_ANGLES} angles; use a larger step")
-    degrees = np.arange(count + 1) * step
-    if degrees[-1] < 360.0 - 1e-9:
+    step, steps, closing = _steps(step_deg)
+    degrees = np.arange(steps + 1) * step
+    if closing:
         degrees = np.append(degrees, 360.0)
     return np.radians(degrees)
+
+
+def angle_count(step_deg: float) -> int:
+    """How many angles :func:`crank_angles` gives for ``step_deg`` (validated), without making them."""
+    _, steps, closing = _steps(step_deg)
+    return steps + 1 + int(closing)
+
+
+def _steps(step_deg: float) -> tuple[float, int, bool]:
+    """The validated step, the whole steps in 360° and whether 360° must be appended."""
+    step = require_range("step", step_deg, MIN_STEP_DEG, MAX_STEP_DEG, "°", low_open=False)
+    steps = int(math.floor(360.0 / step + 1e-9))
+    return step, steps, steps * step < 360.0 - 1e-9
 
 
 def check_angles(angles_deg: np.ndarray) -> np.ndarray:
@@ -86,10 +104,29 @@ def check_angles(angles_deg: np.ndarray) -> np.ndarray:
 
 
 def check_rpms(rpms) -> np.ndarray:
+    """Validate 1 to ``MAX_SPEEDS`` crank speeds in [MIN_RPM, MAX_RPM] r/min; return them as floats."""
     values = np.atleast_1d(np.asarray(rpms, dtype=object)).ravel()
-    if values.size == 0 or values.size > 16:
-        raise DesignError("rpm", values.size, "give 1 to 16 crank speeds")
-    return np.array([require_range("rpm", v, 0.0, MAX_RPM, "r/min") for v in values])
+    if values.size == 0 or values.size > MAX_SPEEDS:
+        raise DesignError("rpm", values.size, f"give 1 to {MAX_SPEEDS} crank speeds")
+    return np.array([require_range("rpm", v, MIN_RPM, MAX_RPM, "r/min", low_open=False)
+                     for v in values])
+
+
+def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
+                  value: object = None, limit: int = MAX_SAMPLES) -> int:
+    """Refuse a request of more than ``limit`` samples (angles × speeds); return the count.
+
+    Every front end calls this before computing, so that no request can
+    exhaust memory: the CLI with the option the user typed as ``parameter``
+    (and its ``value``, e.g. the step), the GUI with its own, smaller
+    ``limit`` if it must stay responsive.
+    """
+    samples = int(n_angles) * int(n_speeds)
+    if samples > limit:
+        raise DesignError(parameter, samples if value is None else value,
+                          f"gives {samples} samples (angles × speeds), more than {limit}; "
+                          "use a larger step or fewer speeds")
+    return samples
 
 
 def shape(design: Design, phi: np.ndarray) -> Shape:
@@ -186,6 +223,7 @@ def solve(design: Design, crank_angle: np.ndarray, rpms) -> Motion:
     """Positions, velocities and accelerations for all angles and speeds."""
     phi = np.asarray(crank_angle, dtype=float)
     rpm = check_rpms(rpms)
+    check_request(phi.size, rpm.size, "angles")
     omega = rpm_to_omega(rpm)
     w1 = omega[:, None]
     w2 = w1 ** 2

@@ -1294,6 +1294,10 @@
         <translation>角度数超过 %1；请使用更大的步长</translation>
     </message>
     <message>
+        <source>gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds</source>
+        <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；请增大角度步长或减少转速个数</translation>
+    </message>
+    <message>
         <source>must be given either as a length or as a ratio L4/L3, not both</source>
         <translation>只能以长度或比值 L4/L3 之一给出，不能同时给出</translation>
     </message>

@@ -71,6 +71,8 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2"),
     (r"give 1 to (\S+) crank speeds$", "give 1 to %1 crank speeds"),
     (r"gives more than (\S+) angles; use a larger step$", "gives more than %1 angles; use a larger step"),
+    (r"gives (\S+) samples \(angles × speeds\), more than (\S+); use a larger step or fewer speeds$",
+     "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds"),
     (r"must be given either as a length or as a ratio L4/L3, not both$",
      "must be given either as a length or as a ratio L4/L3, not both"),
 )
@@ -105,6 +107,8 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2"),
         "give 1 to %1 crank speeds": QCoreApplication.translate("messages", "give 1 to %1 crank speeds"),
         "gives more than %1 angles; use a larger step": QCoreApplication.translate("messages", "gives more than %1 angles; use a larger step"),
+        "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds":
+            QCoreApplication.translate("messages", "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds"),
         "must be given either as a length or as a ratio L4/L3, not both":
             QCoreApplication.translate("messages", "must be given either as a length or as a ratio L4/L3, not both"),
     }

@@ -9,3 +9,21 @@ def shaper(*args, input_text=None, cwd=None):
     cmd = [exe] if exe else [sys.executable, "-m", "core"]
     return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
                           input=input_text, cwd=cwd, timeout=120)
+
+
+def shaper_in_process(*args):
+    """``core.cli.main(args)`` in this process with stdout and stderr captured:
+    (exit status, stdout, stderr). Much faster than a subprocess, for fuzzing.
+    argparse's own exits (--help, --version) count as their status."""
+    import contextlib
+    import io
+
+    from core.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            status = main([str(a) for a in args])
+        except SystemExit as exc:
+            status = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+    return status, out.getvalue(), err.getvalue()

@@ -95,7 +95,7 @@ def test_analyze_json_matches_library():
     (["curves", *SEED003, "--step", "0"], "--step"),
     (["curves", *SEED003, "--step", "1e-9"], "--step"),
     (["curves", *SEED003, "--angles", "0,x"], "--angles"),
-    (["curves", "--dims", "300,250,800"], "--crank"),
+    (["curves", "--dims", "300,250,800"], "--dims (L1)"),
     (["curves", "--dims", "1,2"], "--dims"),
     (["curves", "--crank", "100"], "--K"),
     (["analyze", *SEED003, "--rod-ratio", "-0.3"], "--rod-ratio"),

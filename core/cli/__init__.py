@@ -12,14 +12,15 @@ never imports Qt.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from importlib import import_module, metadata
 from types import ModuleType
 from typing import Sequence
 
 from ..errors import DesignError, FileFormatError
-from .common import (OutputError, Parser, UsageError, fail, install_safe_output, option_name,
-                     version_text)
+from .common import (GuardedStdout, OutputError, Parser, StdoutError, UsageError,
+                     design_error_text, fail, install_safe_output, version_text)
 
 # Order is the order of ``shaper --help``.
 CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics")
@@ -68,33 +69,51 @@ def run(argv: Sequence[str] | None) -> int:
 
 def main(argv: Sequence[str] | None = None) -> int:
     install_safe_output()
+    stdout = sys.stdout
+    sys.stdout = GuardedStdout(stdout)  # type: ignore[assignment]
     try:
-        return run(argv)
+        status = run(argv)
+        sys.stdout.flush()
+        return status
     except UsageError as exc:
         return fail(str(exc))
     except DesignError as exc:
-        return fail(f"{option_name(exc.parameter)}: {exc.allowed} (got {_value(exc.value)})")
+        return fail(design_error_text(exc))
     except FileFormatError as exc:
         return fail(f"--design: {exc}")
+    except StdoutError as exc:
+        _silence_stdout()
+        return fail(str(exc))
     except OutputError as exc:
         return fail(str(exc))
     except BrokenPipeError:
         # The reader went away (``shaper curves | head``): nothing more can be written.
-        try:
-            sys.stdout = None  # type: ignore[assignment]
-        finally:
-            return 0
+        _silence_stdout()
+        return 0
     except MemoryError:
-        return fail("not enough memory for this request; use a larger --step or fewer speeds")
+        return fail("not enough memory for this request; ask for fewer crank angles or speeds")
     except KeyboardInterrupt:
         return fail("interrupted", status=130)
     except Exception as exc:  # never a traceback; the one line says what broke
         return fail(f"internal error ({type(exc).__name__}: {exc}); please report it", status=1)
+    finally:
+        if isinstance(sys.stdout, GuardedStdout):
+            sys.stdout = stdout
 
 
-def _value(value: object) -> str:
-    text = str(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null, so that the interpreter's final flush of what is still
+    buffered cannot fail a second time and print a traceback-like warning at exit."""
+    try:
+        fd = sys.stdout.fileno()
+    except (AttributeError, ValueError, OSError):
+        return          # not a real descriptor (tests capture into a StringIO)
+    try:
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, fd)
+        os.close(null)
+    except OSError:
+        pass
 
 
 if __name__ == "__main__":

@@ -3,15 +3,19 @@ from __future__ import annotations
 
 import argparse
 
-from ..io import curves_csv
+import numpy as np
+
+from ..io import curve_table
 from ..kinematics import solve
-from .common import (add_angle_options, add_design_options, add_speed_options, angles_from_args,
-                     design_from_args, rpms_from_args, write_output)
+from .common import (add_angle_options, add_design_options, add_speed_options, design_from_args,
+                     request_from_args, write_output)
+from .streaming import Progress, table_pieces
 
 HELP = "ram and lever motion over the cycle, as CSV"
 DESCRIPTION = ("Ram displacement, velocity and acceleration, lever angle, angular velocity and "
                "acceleration (and the rod's, for the rod variant) at every crank angle and speed, "
-               "as CSV with the units in the column names.")
+               "as CSV with the units in the column names. Large requests are computed and "
+               "written block by block, with progress shown on a terminal.")
 EXAMPLES = ("shaper curves --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --step 1 --csv curves.csv",
             "shaper curves --dims 125,275,600,150 --guide 575 --angles 0,90,180,270 --rpm 30")
 
@@ -26,6 +30,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     design = design_from_args(args)
-    motion = solve(design, angles_from_args(args), rpms_from_args(args))
-    write_output("--csv", args.csv, curves_csv(motion))
+    angles, rpms = request_from_args(args)
+
+    def block(phi: np.ndarray, rpm: float):
+        return curve_table(solve(design, phi, [rpm]))
+
+    with Progress("computing curves", angles.size * len(rpms)) as progress:
+        write_output("--csv", args.csv, table_pieces(block, angles, rpms, progress))
     return 0

@@ -3,12 +3,15 @@ from __future__ import annotations
 
 import argparse
 
+import numpy as np
+
 from ..dynamics import solve_dynamics, summarize
-from ..dynamics_io import dynamics_csv, summary_document
+from ..dynamics_io import dynamics_table, summary_document
 from .cmd_synth import design_summary
 from .common import (UsageError, add_angle_options, add_design_options, add_load_options,
-                     add_speed_options, angles_from_args, design_from_args, masses_from_args,
-                     print_json, print_table, rpms_from_args, write_output)
+                     add_speed_options, design_from_args, masses_from_args, print_json,
+                     print_table, request_from_args, write_output)
+from .streaming import Progress, table_pieces
 
 HELP = "joint forces, crank torque, power and flywheel"
 DESCRIPTION = ("Kinetostatic analysis at constant crank speed: the crank's driving torque, power, "
@@ -32,11 +35,14 @@ def run(args: argparse.Namespace) -> int:
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
     design = design_from_args(args)
-    rpms = rpms_from_args(args)
     masses = masses_from_args(args, design, required=True)
-    angles = angles_from_args(args)   # validated even when only the summary is printed
+    angles, rpms = request_from_args(args)  # validated even when only the summary is printed
     if args.csv is not None:
-        write_output("--csv", args.csv, dynamics_csv(solve_dynamics(design, angles, rpms, masses)))
+        def block(phi: np.ndarray, rpm: float):
+            return dynamics_table(solve_dynamics(design, phi, [rpm], masses))
+
+        with Progress("computing forces", angles.size * len(rpms)) as progress:
+            write_output("--csv", args.csv, table_pieces(block, angles, rpms, progress))
         if not args.json:
             return 0
     summary = summarize(design, rpms, masses)

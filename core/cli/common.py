@@ -14,15 +14,16 @@ import math
 import re
 import sys
 from dataclasses import replace
-from typing import Any
+from typing import Any, Iterable
 
 import numpy as np
 
 from ..dynamics import MassProperties, masses_for_design
-from ..errors import DesignError
+from ..errors import DesignError, os_reason
 from ..geometry import Design
 from ..io import atomic_write, load_design
-from ..kinematics import check_angles, crank_angles
+from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
+                          check_angles, check_request, crank_angles)
 from ..spec import Spec
 
 DEFAULT_RPMS = ("40", "60")
@@ -69,6 +70,10 @@ class UsageError(Exception):
 
 class OutputError(Exception):
     """An output file could not be written; the message names the option and path."""
+
+
+class StdoutError(OutputError):
+    """Standard output could not be written (a full disk, a closed descriptor)."""
 
 
 class Parser(argparse.ArgumentParser):
@@ -135,20 +140,55 @@ def print_table(rows: list[tuple[str, str]]) -> None:
 
 
 def print_json(document: Any) -> None:
-    """JSON on stdout; refuses NaN/Infinity, which no JSON reader accepts."""
+    """JSON on stdout; refuses NaN/Infinity, which no JSON reader accepts (an undefined
+    value must already be None, i.e. null)."""
     print(json.dumps(document, indent=2, allow_nan=False))
 
 
-def write_output(option: str, target: str, text: str) -> None:
-    """``text`` to stdout for ``-``, else to the file ``target`` (atomically for regular files)."""
+def write_output(option: str, target: str, text: str | Iterable[str]) -> None:
+    """``text`` (a string or pieces of it) to stdout for ``-``, else to the file ``target``
+    (atomically for a regular file, see ``core.atomic.atomic_write``)."""
     if target == "-":
-        sys.stdout.write(text)
-        sys.stdout.flush()
+        try:
+            for piece in [text] if isinstance(text, str) else text:
+                sys.stdout.write(piece)
+            sys.stdout.flush()
+        except StdoutError as exc:
+            raise StdoutError(f"{option}: {exc}") from None
         return
     try:
         atomic_write(target, text)
-    except OSError as exc:
-        raise OutputError(f"{option}: cannot write {target}: {exc.strerror or exc}") from None
+    except OSError as exc:      # a WriteError: names the user's path and a plain reason
+        raise OutputError(f"{option}: {exc}") from None
+
+
+class GuardedStdout:
+    """sys.stdout for the length of one command: a failed write (a full disk, a closed
+    descriptor) becomes a StdoutError, reported as one line instead of a traceback.
+    BrokenPipeError passes through: the reader left, which is not an error."""
+
+    def __init__(self, stream: Any) -> None:
+        self._stream = stream
+
+    def write(self, text: str) -> int:
+        return self._guard("write", text)
+
+    def flush(self) -> None:
+        self._guard("flush")
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._stream, name)
+
+    def _guard(self, method: str, *args: Any) -> Any:
+        if self._stream is None:      # started with stdout closed (``>&-``)
+            raise StdoutError("cannot write to standard output: it is closed")
+        try:
+            return getattr(self._stream, method)(*args)
+        except BrokenPipeError:
+            raise
+        except (OSError, ValueError) as exc:
+            reason = os_reason(exc) if isinstance(exc, OSError) else "it is closed"
+            raise StdoutError(f"cannot write to standard output: {reason}") from None
 
 
 # ---- numbers ---------------------------------------------------------------
@@ -199,13 +239,15 @@ def add_design_options(parser: argparse.ArgumentParser, allow_dims: bool = True,
 
 def add_speed_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--rpm", nargs="+", metavar="RPM",
-                        help="crank speeds, r/min (default 40 60, or the design file's)")
+                        help=f"1 to {MAX_SPEEDS} crank speeds, {MIN_RPM:g} to {MAX_RPM:g} r/min "
+                             "(default 40 60, or the design file's)")
 
 
 def add_angle_options(parser: argparse.ArgumentParser, what: str) -> None:
     angles = parser.add_mutually_exclusive_group()
     angles.add_argument("--step", metavar="DEG",
-                        help=f"crank-angle step of {what}, degrees (default 1, or the design file's)")
+                        help=f"crank-angle step of {what}, {MIN_STEP_DEG:g} to {MAX_STEP_DEG:g} degrees "
+                             f"(default 1, or the design file's); at most {MAX_SAMPLES} angles × speeds")
     angles.add_argument("--angles", metavar="A,B,…", help=f"explicit crank angles of {what}, degrees")
 
 
@@ -276,11 +318,71 @@ def _apply_mechanism_options(spec: Spec, args: argparse.Namespace) -> Spec:
         changes.update(variant="rod", rod_input="ratio", rod_ratio=number("rod_ratio", args.rod_ratio))
     if args.rod_side is not None:
         changes["rod_side"] = args.rod_side
-    return replace(spec, **changes)
+    spec = replace(spec, **changes)
+    if args.rod_side is not None and spec.variant != "rod":
+        raise UsageError("--rod-side: only for the rod variant; give --rod or --rod-ratio too")
+    return spec
 
 
 def design_from_args(args: argparse.Namespace) -> Design:
-    return spec_from_args(args).design()
+    """The design the options describe; a DesignError is re-raised as a UsageError naming
+    the option of *this* subcommand that holds the bad value (``--dims (L2)`` …)."""
+    spec = spec_from_args(args)
+    try:
+        return spec.design()
+    except DesignError as exc:
+        raise UsageError(design_error_text(exc, _spec_option(exc.parameter, spec, args))) from None
+
+
+def design_error_text(exc: DesignError, option: str | None = None) -> str:
+    """The one-line message for a DesignError: option, what is allowed, the value given."""
+    text = str(exc.value)
+    value = text if len(text) <= 60 else text[:57] + "..."
+    return f"{option or option_name(exc.parameter)}: {exc.allowed} (got {value})"
+
+
+# Direct dimensions: which value of --dims a core parameter is.
+_DIMS_POSITION = {"crank": "L1", "frame": "L2", "lever": "L3"}
+# Synthesis: the derived lengths come from these inputs.
+_SYNTH_SOURCE = {"frame": "--K", "lever": "--stroke"}
+
+
+def _spec_option(parameter: str, spec: Spec, args: argparse.Namespace) -> str:
+    """The option that set ``parameter`` of ``spec`` in this command line."""
+    from_dims = getattr(args, "dims", None) is not None
+    if from_dims and parameter in _DIMS_POSITION:
+        return f"--dims ({_DIMS_POSITION[parameter]})"
+    if from_dims and parameter in ("time_ratio", "stroke"):
+        return "--dims"           # K and H are implied by L1, L2, L3
+    if from_dims and parameter in ("rod", "rod_length") and args.rod is None \
+            and getattr(args, "rod_ratio", None) is None and spec.variant == "rod":
+        return "--dims (L4)"
+    if design_file(args) is not None and parameter in ("crank", "time_ratio", "stroke", "frame",
+                                                        "lever", "mode", "variant"):
+        return "--design"         # a value of the file, not of an option
+    if spec.mode == "synthesis" and parameter in _SYNTH_SOURCE:
+        return _SYNTH_SOURCE[parameter]
+    return option_name(parameter)
+
+
+def request_from_args(args: argparse.Namespace) -> tuple[np.ndarray, list[float]]:
+    """The crank angles (rad) and speeds of a table, refused with the angle option if it
+    would hold more than ``core.kinematics.MAX_SAMPLES`` samples."""
+    rpms = rpms_from_args(args)
+    angles = angles_from_args(args)
+    if args.angles is not None:
+        check_request(angles.size, len(rpms), "angles", angles.size)
+    else:
+        check_request(angles.size, len(rpms), "step", _step_value(args))
+    return angles, rpms
+
+
+def _step_value(args: argparse.Namespace) -> float:
+    """``--step``, else the design file's step, else 1°."""
+    if args.step is not None:
+        return number("step", args.step)
+    doc = design_file(args)
+    return doc["step_deg"] if doc is not None else 1.0
 
 
 def rpms_from_args(args: argparse.Namespace) -> list[float]:
@@ -296,10 +398,7 @@ def angles_from_args(args: argparse.Namespace) -> np.ndarray:
     """Crank angles in rad from ``--angles`` or ``--step`` (or the design file's step)."""
     if args.angles is not None:
         return check_angles(np.array(number_list("angles", args.angles)))
-    if args.step is not None:
-        return crank_angles(number("step", args.step))
-    doc = design_file(args)
-    return crank_angles(doc["step_deg"] if doc is not None else 1.0)
+    return crank_angles(_step_value(args))
 
 
 def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -> MassProperties:

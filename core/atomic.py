@@ -1,0 +1,172 @@
+"""Safe file writes: the target is always the complete old or the complete new file.
+
+Below ``io`` (which formats) and beside ``errors``: it knows nothing about
+designs or curves, only about getting text onto a disk without losing the
+previous version, replacing what must not be replaced or leaving litter.
+"""
+from __future__ import annotations
+
+import errno
+import os
+import re
+import secrets
+import stat
+from typing import Iterable
+
+from .errors import WriteError
+
+_TEMP_SUFFIX = ".tmp"
+
+
+def atomic_write(path: str | os.PathLike, text: str | Iterable[str]) -> None:
+    """Write ``text`` (a string or an iterable of pieces) so that ``path`` ends up
+    either the old file or the whole new one, never a mixture.
+
+    - A regular file (or a new one) is written to a temporary sibling
+      ``.NAME.<pid>-<8 hex>.tmp``, flushed and fsynced, renamed over the
+      target, and the folder is fsynced. The new file keeps the permission
+      bits (and, where allowed, the owner) of the file it replaces; a new file
+      gets the mode the umask gives (0644 under umask 022).
+    - A symbolic link is followed: its target is replaced, the link stays.
+    - A target that is not a regular file (FIFO, device, ``/dev/stdout`` and
+      anything else under ``/proc``) is written to directly, never replaced.
+    - On every failure the temporary file is removed. Before writing, temporary
+      siblings left by a process that no longer runs (killed mid-save) are
+      removed too, so they never accumulate.
+
+    Raises :class:`~core.errors.WriteError` (an OSError) naming ``path``, with a
+    plain reason such as a full disk.
+    """
+    pieces = [text] if isinstance(text, str) else text
+    name = os.fspath(path)
+    if not name:
+        raise WriteError(path, OSError(None, "no file name was given"))
+    if name.endswith(("/", os.sep)):
+        raise WriteError(path, OSError(None, "the name ends with a slash, so it names a folder"))
+    try:
+        try:
+            status: os.stat_result | None = os.stat(path)
+        except FileNotFoundError:
+            status = None
+        if status is not None and stat.S_ISDIR(status.st_mode):
+            raise IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR))
+        if status is not None and (not stat.S_ISREG(status.st_mode) or _descriptor_alias(path)):
+            _write_in_place(path, pieces)
+        else:
+            _write_and_replace(os.path.realpath(path), pieces, status)
+    except OSError as exc:
+        raise WriteError(path, exc) from None
+
+
+def _write_in_place(path: str | os.PathLike, pieces: Iterable[str]) -> None:
+    with open(path, "w", encoding="utf-8", newline="") as handle:
+        for piece in pieces:
+            handle.write(piece)
+
+
+def _write_and_replace(target: str, pieces: Iterable[str], old: os.stat_result | None) -> None:
+    directory, name = os.path.split(target)
+    directory = directory or "."
+    remove_stale_temps(target)
+    tmp = os.path.join(directory, f".{name}.{os.getpid()}-{secrets.token_hex(4)}{_TEMP_SUFFIX}")
+    # A new file gets 0666 less the umask; a replacement starts private, then takes the old mode.
+    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0),
+                 0o666 if old is None else 0o600)
+    try:
+        if old is not None:
+            _copy_owner_and_mode(fd, old)
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
+            for piece in pieces:
+                handle.write(piece)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(tmp, target)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+    _fsync_directory(directory)
+
+
+def _copy_owner_and_mode(fd: int, old: os.stat_result) -> None:
+    if hasattr(os, "fchown") and (old.st_uid, old.st_gid) != (os.geteuid(), os.getegid()):
+        for uid, gid in ((old.st_uid, old.st_gid), (-1, old.st_gid)):
+            try:
+                os.fchown(fd, uid, gid)   # root keeps both; a group member keeps the group
+                break
+            except OSError:
+                continue
+    os.fchmod(fd, stat.S_IMODE(old.st_mode))
+
+
+def _fsync_directory(directory: str) -> None:
+    """Make the rename durable; a file system that cannot fsync a folder is left as it is."""
+    try:
+        fd = os.open(directory, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def _descriptor_alias(path: str | os.PathLike) -> bool:
+    """Whether ``path`` leads into /proc (``/dev/stdout``, ``/dev/fd/N``): a descriptor
+    of this process, to be written to and never replaced."""
+    current = os.path.abspath(path)
+    for _ in range(40):
+        if os.path.realpath(os.path.dirname(current)).startswith("/proc/"):
+            return True
+        if not os.path.islink(current):
+            return False
+        current = os.path.join(os.path.dirname(current), os.readlink(current))
+    return False
+
+
+def temp_pattern(target: str | os.PathLike) -> re.Pattern[str]:
+    """The names :func:`atomic_write` gives its temporary siblings of ``target``."""
+    name = os.path.basename(os.fspath(target))
+    return re.compile(rf"\.{re.escape(name)}\.(\d+)-[0-9a-f]{{8}}{re.escape(_TEMP_SUFFIX)}\Z")
+
+
+def remove_stale_temps(target: str | os.PathLike) -> list[str]:
+    """Remove temporary siblings of ``target`` left by processes that no longer run
+    (a save killed mid-way); return their paths. A temp file of a live process
+    (a save in progress) and files of other users are never touched."""
+    if os.name != "posix":
+        return []
+    directory = os.path.dirname(os.fspath(target)) or "."
+    pattern = temp_pattern(target)
+    prefix = "." + os.path.basename(os.fspath(target)) + "."
+    removed = []
+    try:
+        entries = [e for e in os.scandir(directory) if e.name.startswith(prefix)]
+    except OSError:
+        return []
+    for entry in entries:
+        match = pattern.match(entry.name)
+        if not match or int(match.group(1)) == os.getpid() or _running(int(match.group(1))):
+            continue
+        try:
+            info = entry.stat(follow_symlinks=False)
+            if stat.S_ISREG(info.st_mode) and info.st_uid == os.geteuid():
+                os.unlink(entry.path)
+                removed.append(entry.path)
+        except OSError:
+            continue
+    return removed
+
+
+def _running(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError, ValueError):
+        return True    # another user's process, or not a pid we can ask about: leave it
+    return True

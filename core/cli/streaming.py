@@ -1,0 +1,88 @@
+"""Large CSV tables computed and written piece by piece, with progress on a terminal.
+
+A request may hold up to ``core.kinematics.MAX_SAMPLES`` samples (angles ×
+speeds). Computed in one piece, that would hold every column of every row,
+and its formatted text, in memory at once; computed per block of
+``CHUNK_ANGLES`` angles of one speed, memory stays at a few tens of MB
+however large the request. The rows come out in the same order as the whole
+table (speed by speed, angles in order) and each value is computed by the
+same closed form, so the text is the same as the unchunked ``table_csv``.
+"""
+from __future__ import annotations
+
+import sys
+import time
+from types import TracebackType
+from typing import Callable, Iterator, Sequence, TextIO
+
+import numpy as np
+
+from ..io import table_chunks
+
+CHUNK_ANGLES = 16_384
+
+# compute(angles in rad, one rpm) -> (column names, rows); one speed, a block of angles
+TableBlock = Callable[[np.ndarray, float], "tuple[Sequence[str], np.ndarray]"]
+
+
+class Progress:
+    """``shaper: LABEL 42%`` on stderr, rewritten in place, once a run has taken longer
+    than ``delay`` seconds — and only if stderr is a terminal, so that logs and
+    pipes never see it. Used as a context manager, it erases its line on the
+    way out, before any error message is printed."""
+
+    def __init__(self, label: str, total: int, delay: float = 1.0,
+                 stream: TextIO | None = None) -> None:
+        self.label, self.total, self.delay = label, max(int(total), 1), delay
+        self.stream = sys.stderr if stream is None else stream
+        self.start = time.monotonic()
+        self.last = 0.0
+        self.shown = False
+        try:
+            self.enabled = bool(self.stream.isatty())
+        except (AttributeError, ValueError, OSError):
+            self.enabled = False
+
+    def __enter__(self) -> "Progress":
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
+                 trace: TracebackType | None) -> None:
+        self.close()
+
+    def update(self, done: int) -> None:
+        if not self.enabled:
+            return
+        now = time.monotonic()
+        if now - self.start < self.delay or now - self.last < 0.1:
+            return
+        self.last = now
+        self._write(f"\rshaper: {self.label} {min(100, 100 * done // self.total):3d}%")
+        self.shown = True
+
+    def close(self) -> None:
+        if self.shown:
+            self._write("\r" + " " * (len(self.label) + 13) + "\r")
+            self.shown = False
+
+    def _write(self, text: str) -> None:
+        try:
+            self.stream.write(text)
+            self.stream.flush()
+        except (OSError, ValueError):
+            self.enabled = False
+
+
+def table_pieces(block: TableBlock, angles: np.ndarray, rpms: Sequence[float],
+                 progress: Progress | None = None) -> Iterator[str]:
+    """The CSV text of the whole (speeds × angles) table, one block at a time."""
+    header = True
+    done = 0
+    for rpm in rpms:
+        for start in range(0, angles.size, CHUNK_ANGLES):
+            names, data = block(angles[start:start + CHUNK_ANGLES], rpm)
+            yield from table_chunks(names if header else None, data)
+            header = False
+            done += data.shape[0]
+            if progress is not None:
+                progress.update(done)

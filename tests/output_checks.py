@@ -1,0 +1,44 @@
+"""Checks shared by the robustness tests: outputs hold only finite numbers, FIFOs are read."""
+import csv
+import io
+import json
+import math
+import threading
+
+
+def finite_json(text: str):
+    """Parse JSON, refusing NaN/Infinity literals, and require every float to be finite."""
+    def refuse(name):
+        raise AssertionError(f"{name} in JSON output")
+
+    def walk(value):
+        if isinstance(value, dict):
+            for item in value.values():
+                walk(item)
+        elif isinstance(value, list):
+            for item in value:
+                walk(item)
+        elif isinstance(value, float):
+            assert math.isfinite(value), value
+
+    document = json.loads(text, parse_constant=refuse)
+    walk(document)
+    return document
+
+
+def finite_csv(text: str) -> tuple[list[str], list[list[str]]]:
+    """Header and rows of a CSV whose cells are all finite numbers or empty (undefined)."""
+    rows = list(csv.reader(io.StringIO(text)))
+    assert len({len(r) for r in rows}) == 1, "ragged CSV"
+    for row in rows[1:]:
+        for cell in row:
+            assert cell == "" or math.isfinite(float(cell)), row
+    return rows[0], rows[1:]
+
+
+def read_fifo_in_background(path) -> tuple[threading.Thread, list[str]]:
+    """Start a thread that reads the FIFO ``path`` to its end; join it, then read the list."""
+    received: list[str] = []
+    reader = threading.Thread(target=lambda: received.append(path.read_text()), daemon=True)
+    reader.start()
+    return reader, received
