@@ -21,6 +21,8 @@ from .messages import describe
 from .metrics_panel import MetricsPanel
 from .model import DesignModel
 from .plots import PlotsWidget
+from .polygon_view import PolygonView
+from .positions_view import PositionsView
 from .scheme import SchemeWidget
 
 APP_NAME = "Shaper Designer"
@@ -41,6 +43,11 @@ class MainWindow(QMainWindow):
         self.tabs = QTabWidget()
         self.tabs.addTab(self.plots, "")
         self.tabs.addTab(self.forces, "")
+        # Course-design deliverables (issue 9): positions table and vector diagrams.
+        self.positions = PositionsView(model)
+        self.polygon_view = PolygonView(model)
+        self.tabs.addTab(self.positions, "")
+        self.tabs.addTab(self.polygon_view, "")
 
         side = QWidget()
         side_layout = QVBoxLayout(side)
@@ -187,6 +194,8 @@ class MainWindow(QMainWindow):
             action.setStatusTip(tip)
         self.tabs.setTabText(0, self.tr("Kinematics"))
         self.tabs.setTabText(1, self.tr("Forces"))
+        self.tabs.setTabText(2, self.tr("Positions"))
+        self.tabs.setTabText(3, self.tr("Vector diagrams"))
         self.menu_file.setTitle(self.tr("&File"))
         self.menu_recent.setTitle(self.tr("Open &Recent"))
         self.menu_view.setTitle(self.tr("&View"))
