@@ -111,6 +111,7 @@ class MainWindow(QMainWindow):
         self.act_plots_img = self._action(
             lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
+        self.act_report = self._action(self._export_report, "Ctrl+R")
         self.act_quit = self._action(self.close, QKeySequence.StandardKey.Quit)
         # The widgets own these actions (and their texts); the window only adds shortcuts.
         self.act_play = self._shortcut(self.animation.play_action, "Ctrl+Space")
@@ -138,6 +139,7 @@ class MainWindow(QMainWindow):
         self.menu_file.addSeparator()
         for a in (self.act_csv, self.act_forces_csv, self.act_plots_img, self.act_scheme_img):
             self.menu_file.addAction(a)
+        self.menu_file.addAction(self.act_report)
         self.menu_file.addSeparator()
         self.menu_file.addAction(self.act_quit)
         self.menu_view = bar.addMenu("")
@@ -186,6 +188,8 @@ class MainWindow(QMainWindow):
              self.tr("Crank torque, power and joint forces, all speeds")),
             (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots of the current tab as an image")),
             (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
+            (self.act_report, self.tr("Export &report (PDF/HTML)…"),
+             self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
             (self.act_quit, self.tr("&Quit"), ""),
             (self.act_about, self.tr("&About"), ""),
         ]
@@ -238,6 +242,13 @@ class MainWindow(QMainWindow):
         except OSError as exc:
             self._show_failure(self.tr("Could not write %1: %2").replace("%1", path)
                                .replace("%2", exc.strerror or str(exc)))
+
+    def _export_report(self) -> None:
+        from .report.dialog import export_report_dialog   # builds offscreen views: load on demand
+        path = export_report_dialog(self.model, self, str(self.settings.value("language", "en")),
+                                    self.document.last_dir())
+        if path:
+            self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 
     def _about(self) -> None:
         QMessageBox.about(self, self.tr("About Shaper Designer"), self.tr(

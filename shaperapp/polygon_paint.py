@@ -18,6 +18,8 @@ from PySide6.QtSvg import QSvgGenerator
 
 from core.polygons import Polygon, nice_scale, paper
 
+translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
+
 ROLE_COLOURS = {"absolute": "#263238", "relative": "#1565c0", "normal": "#2e7d32",
                 "tangential": "#ef6c00", "coriolis": "#c2185b", "force": "#263238"}
 FORCE_COLOURS = ("#c62828", "#6a1b9a", "#1565c0", "#00838f", "#2e7d32", "#ef6c00", "#263238")
@@ -29,13 +31,9 @@ PAD_LINES = 2.0          # free space around the drawing, in text lines
 _SUB = str.maketrans("0123456789'", "₀₁₂₃₄₅₆₇₈₉′")
 
 
-def _tr(text: str) -> str:
-    return QCoreApplication.translate("PolygonPainter", text)
-
-
 def titles() -> dict[str, str]:
-    return {"velocity": _tr("Velocity polygon"), "acceleration": _tr("Acceleration polygon"),
-            "force": _tr("Force polygon of the ram–rod group")}
+    return {"velocity": translate("PolygonPainter", "Velocity polygon"), "acceleration": translate("PolygonPainter", "Acceleration polygon"),
+            "force": translate("PolygonPainter", "Force polygon of the ram–rod group")}
 
 
 def scale_caption(polygon: Polygon, scale: float) -> str:
@@ -68,7 +66,7 @@ def draw_symbol(painter: QPainter, x: float, y: float, key: str, font: QFont) ->
     base, sup, sub = _split(key)
     small = QFont(font)
     small.setPointSizeF(font.pointSizeF() * 0.72)
-    big_m, small_m = QFontMetricsF(font), QFontMetricsF(small)
+    big_m, small_m = QFontMetricsF(font, painter.device()), QFontMetricsF(small, painter.device())
     painter.setFont(font)
     painter.drawText(QPointF(x, y), base)
     x += big_m.horizontalAdvance(base)
@@ -199,6 +197,12 @@ def layout(rect: QRectF, polygon: Polygon, metrics: QFontMetricsF,
     return area, box
 
 
+def auto_scale(polygon: Polygon, rect: QRectF, metrics: QFontMetricsF, px_per_mm: float) -> float:
+    """The round μ at which ``paint_polygon`` fills ``rect`` with this polygon at true scale."""
+    area, _ = layout(rect, polygon, metrics)
+    return fit_scale(_bounds(paper(polygon, 1.0)), area, px_per_mm, PAD_LINES * metrics.height())
+
+
 def fit_scale(extent: QRectF, area: QRectF, px_per_mm: float, pad: float) -> float:
     """The round μ at which a drawing of ``extent`` (in the polygon's unit) fits ``area``
     (device units, less ``pad`` on each side) at ``px_per_mm``."""
@@ -285,7 +289,7 @@ def export_polygon(path: str, polygon: Polygon, scale: float) -> None:
         device.setDotsPerMeterY(round(px * 1000))
         device.fill(Qt.GlobalColor.white)
     else:
-        raise ValueError(_tr("Cannot export to '%1': use .png or .svg").replace("%1", suffix))
+        raise ValueError(translate("PolygonPainter", "Cannot export to '%1': use .png or .svg").replace("%1", suffix))
     painter = QPainter(device)
     try:
         font = QFont(painter.font())

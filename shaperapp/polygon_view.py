@@ -17,9 +17,9 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QHBoxLayout, Q
                                QMessageBox, QPushButton, QSizePolicy, QVBoxLayout, QWidget)
 
 from core.dynamics import masses_for_design
-from core.polygons import KINDS, Polygon, paper, polygons
+from core.polygons import KINDS, Polygon, polygons
 from .model import DesignModel
-from .polygon_paint import PAD_LINES, export_polygon, fit_scale, layout, paint_polygon, titles
+from .polygon_paint import auto_scale, export_polygon, paint_polygon, titles
 
 
 class _Canvas(QWidget):
@@ -132,14 +132,8 @@ class PolygonView(QWidget):
 
     def _auto_scale(self, kind: str) -> float:
         """Round μ so that the polygon at this position fills the canvas at true scale."""
-        polygon = self.polygon(kind)
         metrics = QFontMetricsF(self.canvas.font(), self.canvas)
-        area, _ = layout(self.canvas_rect(), polygon, metrics)
-        pts = paper(polygon, 1.0).values()
-        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
-        extent = QRectF(min(xs), min(ys), max(max(xs) - min(xs), 1e-12),
-                        max(max(ys) - min(ys), 1e-12))
-        return fit_scale(extent, area, self._px_per_mm(), PAD_LINES * metrics.height())
+        return auto_scale(self.polygon(kind), self.canvas_rect(), metrics, self._px_per_mm())
 
     def canvas_rect(self) -> QRectF:
         return QRectF(self.canvas.rect()).adjusted(10, 8, -10, -8)

@@ -155,3 +155,23 @@ def test_display_cleans_round_off_only():
     assert shown[0, 0] == 0.0 and shown[1, 1] == -3e-8 and np.isnan(shown[0, 2])
     assert [number_text(v) for v in (0.49913332, 834.29, 12345.6, -0.0000031, float("nan"))] == \
         ["0.49913", "834.29", "12346", "-0.000003", ""]
+
+
+@settings(max_examples=60, deadline=None)
+@given(designs())
+def test_margins_are_positive_and_vanish_at_the_rule(case):
+    """Every accepted design clears every rule; moving a length by its margin reaches the rule."""
+    from core.geometry import Design
+    from core.margins import margins
+    design = case[0]
+    found = {m.rule: m for m in margins(design)}
+    assert all(m.margin >= 0 for m in found.values())
+    lever = found["lever_reach"]
+    with pytest.raises(DesignError):
+        Design(design.crank, design.frame, design.lever - lever.margin * 1.0001 - 1e-9,
+               design.guide, design.rod, design.rod_side)
+    if design.rod is not None:
+        reach = found["rod_reach"]
+        with pytest.raises(DesignError):
+            Design(design.crank, design.frame, design.lever, design.guide,
+                   design.rod - reach.margin * 1.0001 - 1e-9, design.rod_side)
