@@ -11,6 +11,9 @@ from PySide6.QtGui import QFont, QFontDatabase
 PREFERRED_CJK = ("Noto Sans CJK SC", "Noto Sans SC", "Source Han Sans SC", "Source Han Sans CN",
                  "WenQuanYi Micro Hei", "WenQuanYi Zen Hei", "Microsoft YaHei", "PingFang SC",
                  "SimHei", "SimSun", "Noto Serif CJK SC", "AR PL UMing CN")
+# Latin text and digits come from one of these, before the CJK family: Qt's PDF engine loses
+# the text mapping of Noto Sans CJK's digits (pdftotext then reads "386.370 mm" as ". mm").
+PREFERRED_LATIN = ("DejaVu Sans", "Noto Sans", "Liberation Sans", "Arial", "Helvetica")
 INSTALL_HINT = ("no font with Chinese glyphs found; install one, e.g. 'apt-get install "
                 "fonts-noto-cjk' (Debian/Ubuntu) or 'dnf install google-noto-sans-cjk-fonts' (Fedora)")
 
@@ -28,14 +31,22 @@ def cjk_family() -> str | None:
     return families[0] if families else None
 
 
+def latin_family() -> str | None:
+    available = set(QFontDatabase.families())
+    return next((name for name in PREFERRED_LATIN if name in available), None)
+
+
 def report_font(language: str, point_size: float = 9.5) -> QFont:
-    """The body font of a report in ``language`` ('en' or 'zh_CN')."""
+    """The body font of a report in ``language`` ('en' or 'zh_CN'): a Latin family for
+    letters and digits, then (Chinese) a CJK family for the Chinese characters."""
+    families = [name for name in (latin_family(),) if name]
     if language.startswith("zh"):
         family = cjk_family()
         if family is None:
             raise MissingFontError(INSTALL_HINT)
-        font = QFont(family)
-    else:
-        font = QFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.GeneralFont))
+        families.append(family)
+    font = QFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.GeneralFont))
+    if families:
+        font.setFamilies(families)
     font.setPointSizeF(point_size)
     return font

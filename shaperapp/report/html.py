@@ -96,7 +96,7 @@ def report_html(report: Report) -> str:
             caption = f"<figcaption>{html.escape(block.caption)}</figcaption>" if block.caption else ""
             body.append(f"<figure>{figure_svg(block, font)}{caption}</figure>")
     lang = "zh-CN" if report.language.startswith("zh") else "en"
-    style = STYLE % {"family": f"'{report_font(report.language).family()}'"}
+    style = STYLE % {"family": ", ".join(f"'{f}'" for f in report_font(report.language).families())}
     return (f'<!DOCTYPE html>\n<html lang="{lang}"><head><meta charset="utf-8">'
             f"<title>{html.escape(report.title)} — {html.escape(report.name)}</title>"
             f"<style>{style}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
