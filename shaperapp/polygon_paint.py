@@ -186,7 +186,8 @@ def layout(rect: QRectF, polygon: Polygon, metrics: QFontMetricsF,
     if not legend:
         return area, None
     rows = _legend_rows(polygon)
-    legend_w = max((metrics.horizontalAdvance(t) for _, t in rows), default=0.0) + 3.2 * line
+    legend_w = max((metrics.horizontalAdvance(k.replace("^", "").replace("_", "")) + metrics.horizontalAdvance(t)
+                    for k, t in rows), default=0.0) + 2.6 * line
     if area.width() > area.height() * 1.1:
         box = QRectF(area.right() - legend_w, area.top(), legend_w, area.height())
         area.setRight(area.right() - legend_w - line)
@@ -238,8 +239,10 @@ def _label_points(painter: QPainter, pts, to_device, metrics: QFontMetricsF) -> 
 
 
 def _legend_rows(polygon: Polygon) -> list[tuple[str, str]]:
-    unit = polygon.unit
-    return [(v.key, f"= {v.magnitude:.4g} {unit}") for v in polygon.vectors]
+    """(symbol, '= magnitude unit'); round-off noise (below 1e-9 of the largest) shows as 0."""
+    floor = 1e-9 * polygon.largest()
+    return [(v.key, f"= {v.magnitude if v.magnitude > floor else 0.0:.4g} {polygon.unit}")
+            for v in polygon.vectors]
 
 
 def _draw_legend(painter: QPainter, box: QRectF, polygon: Polygon, rows, font: QFont,

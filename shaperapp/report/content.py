@@ -38,6 +38,7 @@ class Heading:
 @dataclass
 class Paragraph:
     html: str
+    keep_with_next: bool = False      # an introduction stays on the page of what it introduces
 
 
 @dataclass
@@ -119,12 +120,12 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
         add(Paragraph(translate("Report", "Positions 1 … N are equally spaced from the limit "
                                 "position that starts the working stroke (φ = 0). The shaded rows are "
-                                "the special positions, solved exactly. Forces are on the named body.")))
+                                "the special positions, solved exactly. Forces are on the named body."), True))
         report.blocks.extend(_position_tables(table))
         add(Heading(translate("Report", "6 Velocity, acceleration and force polygons")))
         add(Paragraph(translate("Report", "Drawn to scale from the exact solution at %1 r/min; "
                                 "μ is the scale of each drawing (1 mm on the page).")
-                      .replace("%1", f"{rpms[0]:g}")))
+                      .replace("%1", f"{rpms[0]:g}"), True))
         for deg in angles:
             for kind in ("velocity", "acceleration", "force"):
                 if kind == "force" and used is None:

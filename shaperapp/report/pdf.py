@@ -93,7 +93,7 @@ def _paragraph(lay: Layout, block: Paragraph) -> list[Piece]:
         p.translate(x, y)
         doc.drawContents(p)
         p.restore()
-    return [Piece(doc.size().height() + gap, paint)]
+    return [Piece(doc.size().height() + gap, paint, keep_with_next=block.keep_with_next)]
 
 
 def _cell_widths(lay: Layout, font: QFont, header: list[str], rows: list[list[str]],
@@ -179,6 +179,8 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
     for r in range(1, len(rows)):
         pieces.append(Piece(row_h + (gap if r == len(rows) - 1 else 0.0),
                             paint_rows([r], False, False), header=repeat))
+    for piece in pieces[:2] if len(pieces) > 3 else ():   # no table starts with one row at a page foot
+        piece.keep_with_next = True
     return pieces
 
 
@@ -229,9 +231,12 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
     y = first_top
     for i, piece in enumerate(pieces):
         need = piece.height
-        if piece.keep_with_next and i + 1 < len(pieces):
-            following = pieces[i + 1].height
-            need += following if following <= (bottom - top) - piece.height else (bottom - top) / 3
+        j = i
+        while pieces[j].keep_with_next and j + 1 < len(pieces):   # a heading and its intro
+            j += 1                                                # stay with what follows
+            need += pieces[j].height
+        if need > bottom - top:
+            need = piece.height + (bottom - top) / 4
         if y + need > bottom and pages[-1]:
             pages.append([])
             y = top
