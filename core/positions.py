@@ -93,10 +93,14 @@ def _bisect(func: Callable[[np.ndarray], np.ndarray], low: np.ndarray,
     """Roots of ``func`` in brackets [low, high] with a sign change, to the last bit.
 
     Vectorized over the brackets; bisection cannot leave a bracket, so each
-    root is the one the bracket holds.
+    root is the one the bracket holds. A bracket without a sign change (a
+    target within round-off of an end, e.g. a vanishing idle margin) gives
+    the end where |func| is smaller.
     """
     low, high = np.array(low, dtype=float), np.array(high, dtype=float)
-    f_low = func(low)
+    f_low, f_high = func(low), func(high)
+    no_change = np.sign(f_low) * np.sign(f_high) > 0
+    end = np.where(np.abs(f_low) <= np.abs(f_high), low, high)
     for _ in range(80):
         mid = 0.5 * (low + high)
         if np.all((mid == low) | (mid == high)):
@@ -105,7 +109,7 @@ def _bisect(func: Callable[[np.ndarray], np.ndarray], low: np.ndarray,
         same = np.sign(f_mid) == np.sign(f_low)
         low, f_low = np.where(same, mid, low), np.where(same, f_mid, f_low)
         high = np.where(same, high, mid)
-    return 0.5 * (low + high)
+    return np.where(no_change, end, 0.5 * (low + high))
 
 
 def _working_span(design: Design) -> tuple[float, float]:
@@ -254,6 +258,38 @@ def display_values(data: np.ndarray) -> np.ndarray:
         scale = np.nanmax(np.abs(data), axis=0, initial=0.0)
         data[np.abs(data) <= 1e-9 * scale] = 0.0
     return data
+
+
+@dataclass(frozen=True)
+class TextGroup:
+    """One printed table: a speed and a column group, numbers as ``number_text``."""
+
+    rpm: float
+    group: str
+    """A ``COLUMN_GROUPS`` name."""
+    columns: tuple[str, ...]
+    """``crank_deg`` then the group's columns present in the table."""
+    rows: tuple[tuple[int | None, str, tuple[str, ...]], ...]
+    """(position number or None, special name or '', texts per column)."""
+
+
+def text_groups(table: PositionTable) -> list[TextGroup]:
+    """The table as printed by ``shaper table`` and the report: per speed, per column
+    group, round-off cleaned (``display_values``) and formatted (``number_text``)."""
+    shown = display_values(table.data)
+    lead = table_rows(table)
+    k = table.positions.crank_deg.size
+    out = []
+    for s, rpm in enumerate(table.rpm):
+        for group, names in COLUMN_GROUPS:
+            columns = ("crank_deg",) + tuple(n for n in names if n in table.columns)
+            if len(columns) == 1:
+                continue
+            index = [table.columns.index(c) for c in columns]
+            rows = tuple((lead[i][0], lead[i][1], tuple(number_text(shown[i, c]) for c in index))
+                         for i in range(s * k, (s + 1) * k))
+            out.append(TextGroup(float(rpm), group, columns, rows))
+    return out
 
 
 def number_text(value: float, digits: int = 5) -> str:

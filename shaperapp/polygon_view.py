@@ -13,12 +13,13 @@ import math
 
 from PySide6.QtCore import QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import QFontMetricsF, QPainter, QPaintEvent
-from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QHBoxLayout, QLabel, QLineEdit,
-                               QMessageBox, QPushButton, QSizePolicy, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QLabel, QLineEdit,
+                               QMessageBox, QPushButton, QSizePolicy, QWidget)
 
 from core.dynamics import masses_for_design
 from core.polygons import KINDS, Polygon, polygons
 from .model import DesignModel
+from .view_parts import bar_over_body, fill_speed_combo
 from .polygon_paint import auto_scale, export_polygon, paint_polygon, titles
 
 
@@ -58,16 +59,8 @@ class PolygonView(QWidget):
         self.unit_label = QLabel()
         self.export_button = QPushButton()
         self.canvas = _Canvas(self)
-        bar = QHBoxLayout()
-        for w in (self.kind_box, self.speed_box, self.scale_label, self.scale_edit, self.unit_label,
-                  self.auto_box):
-            bar.addWidget(w)
-        bar.addStretch(1)
-        bar.addWidget(self.export_button)
-        layout = QVBoxLayout(self)
-        layout.setContentsMargins(4, 4, 4, 4)
-        layout.addLayout(bar)
-        layout.addWidget(self.canvas, 1)
+        bar_over_body(self, (self.kind_box, self.speed_box, self.scale_label, self.scale_edit,
+                             self.unit_label, self.auto_box), self.export_button, self.canvas)
         self.kind_box.currentIndexChanged.connect(self._on_kind)
         self.speed_box.currentIndexChanged.connect(lambda _: self._refresh())
         self.auto_box.toggled.connect(self._on_auto)
@@ -152,13 +145,7 @@ class PolygonView(QWidget):
         self._show_scale()
 
     def _fill_speeds(self) -> None:
-        current = self.speed_index()
-        self.speed_box.blockSignals(True)
-        self.speed_box.clear()
-        for rpm in self.model.rpms:
-            self.speed_box.addItem(self.tr("%1 r/min").replace("%1", f"{rpm:g}"))
-        self.speed_box.setCurrentIndex(min(current, len(self.model.rpms) - 1))
-        self.speed_box.blockSignals(False)
+        fill_speed_combo(self.speed_box, self.model.rpms)
 
     def _on_kind(self, _: int) -> None:
         self._show_scale()

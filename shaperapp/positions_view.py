@@ -11,14 +11,15 @@ from __future__ import annotations
 
 from PySide6.QtCore import QAbstractTableModel, QEvent, QModelIndex, QPersistentModelIndex, Qt
 from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
-from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QHBoxLayout, QLabel, QPushButton,
-                               QSpinBox, QTableView, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
+                               QSpinBox, QTableView, QWidget)
 
 from core.dynamics import masses_for_design
 from core.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, number_text,
                             position_table, positions)
 from .column_titles import column_titles, special_titles
 from .model import DesignModel
+from .view_parts import bar_over_body, fill_speed_combo
 
 SPECIAL_FILL = QColor("#eef3f8")
 HIDDEN = ("rpm",)        # one speed at a time: shown in the speed box
@@ -107,15 +108,8 @@ class PositionsView(QWidget):
         self.view.verticalHeader().setVisible(False)
         self.view.horizontalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignCenter)
         self.view.setWordWrap(False)
-        bar = QHBoxLayout()
-        for w in (self.speed_box, self.count_label, self.count_box):
-            bar.addWidget(w)
-        bar.addStretch(1)
-        bar.addWidget(self.copy_button)
-        layout = QVBoxLayout(self)
-        layout.setContentsMargins(4, 4, 4, 4)
-        layout.addLayout(bar)
-        layout.addWidget(self.view, 1)
+        bar_over_body(self, (self.speed_box, self.count_label, self.count_box), self.copy_button,
+                      self.view)
         self.copy_shortcut = QShortcut(QKeySequence.StandardKey.Copy, self.view)
         self.copy_shortcut.activated.connect(self.copy)
         self.copy_button.clicked.connect(self.copy)
@@ -176,13 +170,7 @@ class PositionsView(QWidget):
             self.model.set_angle_deg(self.crank_deg(current.row()))
 
     def _fill_speeds(self) -> None:
-        index = self.speed_box.currentIndex()
-        self.speed_box.blockSignals(True)
-        self.speed_box.clear()
-        for rpm in self.model.rpms:
-            self.speed_box.addItem(self.tr("%1 r/min").replace("%1", f"{rpm:g}"))
-        self.speed_box.setCurrentIndex(min(max(index, 0), len(self.model.rpms) - 1))
-        self.speed_box.blockSignals(False)
+        fill_speed_combo(self.speed_box, self.model.rpms)
 
     def changeEvent(self, event: QEvent) -> None:
         if event.type() == QEvent.Type.LanguageChange:

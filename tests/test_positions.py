@@ -175,3 +175,13 @@ def test_margins_are_positive_and_vanish_at_the_rule(case):
         with pytest.raises(DesignError):
             Design(design.crank, design.frame, design.lever, design.guide,
                    design.rod - reach.margin * 1.0001 - 1e-9, design.rod_side)
+
+
+def test_vanishing_idle_margin_gives_the_limits():
+    """An idle margin below round-off (found by hypothesis) must not bisect a bracket without
+    a sign change: the cut then starts and ends at the limit positions."""
+    design = synthesize(20.0, 1.05, 200.0)
+    special = special_angles(design, 2.6e-295)
+    # x is flat (quadratic) at a dead point, so round-off of 1e-14 mm in x is ~1e-6° in φ
+    assert special["cut_start"] == pytest.approx(special["limit_work_start"] % 360, abs=1e-4)
+    assert special["cut_end"] == pytest.approx(special["limit_work_end"], abs=1e-4)

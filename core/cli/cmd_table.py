@@ -5,9 +5,8 @@ import argparse
 
 from ..dynamics import MassProperties
 from ..geometry import Design
-from ..positions import (COLUMN_GROUPS, DEFAULT_COUNT, PositionTable, display_values,
-                         number_text, position_table, positions, positions_csv, table_records,
-                         table_rows)
+from ..positions import (DEFAULT_COUNT, PositionTable, position_table, positions, positions_csv,
+                         table_records, text_groups)
 from .common import (LOAD_OPTIONS, UsageError, add_design_options, add_load_options,
                      add_speed_options, design_file, design_from_args, masses_from_args, number,
                      number_list, print_json, rpms_from_args, write_output)
@@ -59,28 +58,6 @@ def table_from_args(args: argparse.Namespace) -> tuple[Design, PositionTable]:
     return design, position_table(design, where, rpms, masses)
 
 
-def text_blocks(table: PositionTable) -> list[tuple[str, list[str], list[list[str]]]]:
-    """(title, header, rows) per speed and column group, numbers as ``number_text``."""
-    shown = display_values(table.data)
-    lead = table_rows(table)
-    k = table.positions.crank_deg.size
-    blocks = []
-    for s, rpm in enumerate(table.rpm):
-        for group, names in COLUMN_GROUPS:
-            cols = [table.columns.index(n) for n in names if n in table.columns]
-            if not cols:
-                continue
-            header = ["pos", "name", "crank_deg"] + [table.columns[c] for c in cols]
-            rows = []
-            for i in range(s * k, (s + 1) * k):
-                number_, name = lead[i]
-                rows.append([str(number_ or ""), name,
-                             number_text(shown[i, table.columns.index("crank_deg")])]
-                            + [number_text(shown[i, c]) for c in cols])
-            blocks.append((f"{rpm:g} r/min — {group}", header, rows))
-    return blocks
-
-
 def run(args: argparse.Namespace) -> int:
     if args.json and args.csv is not None:
         raise UsageError("--json: give either --json or --csv")
@@ -91,7 +68,10 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(table_records(table))
         return 0
-    for index, (title, header, rows) in enumerate(text_blocks(table)):
+    for index, block in enumerate(text_groups(table)):
+        title = f"{block.rpm:g} r/min — {block.group}"
+        header = ["pos", "name", *block.columns]
+        rows = [[str(number or ""), name, *texts] for number, name, texts in block.rows]
         widths = [max(len(r[c]) for r in [header] + rows) for c in range(len(header))]
         print(("\n" if index else "") + title)
         for r in [header] + rows:

@@ -19,8 +19,7 @@ from core.dynamics import DynamicsSummary, MassProperties, masses_for_design, su
 from core.geometry import Design
 from core.margins import margins
 from core.metrics import CycleMetrics, analyze
-from core.positions import (COLUMN_GROUPS, PositionTable, display_values, number_text,
-                            position_table, positions)
+from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
 from ..column_titles import column_titles, group_titles, special_titles
 from . import figures
@@ -218,40 +217,32 @@ def _cycle(metrics: CycleMetrics) -> list[tuple[str, str]]:
     return rows
 
 
+def _per_speed(speeds, lines, caption: str) -> Table:
+    """A table with one column per crank speed: (label, format of one speed's values)."""
+    header = [translate("Report", "Crank speed")] + [f"{s.rpm:g} r/min" for s in speeds]
+    return Table(header, [[label] + [f(s) for s in speeds] for label, f in lines], caption)
+
+
 def _speed_table(metrics: CycleMetrics) -> Table:
-    header = [translate("Report", "Crank speed")] + [f"{s.rpm:g} r/min" for s in metrics.speeds]
-    lines = [(translate("Report", "Working / return time"),
-              lambda s: f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
-             (translate("Report", "Max cutting speed"), lambda s: f"{s.v_work_max_m_s:.4f} m/s"),
-             (translate("Report", "Mean cutting speed"), lambda s: f"{s.v_work_mean_m_s:.4f} m/s"),
-             (translate("Report", "Max return speed"), lambda s: f"{s.v_return_max_m_s:.4f} m/s"),
-             (translate("Report", "Max |acceleration|"), lambda s: f"{s.a_max_m_s2:.4f} m/s²")]
-    return Table(header, [[label] + [f(s) for s in metrics.speeds] for label, f in lines],
-                 translate("Report", "Cycle metrics per crank speed"))
+    """As ``shaper analyze`` prints it."""
+    return _per_speed(metrics.speeds, [
+        (translate("Report", "Working / return time"),
+         lambda s: f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
+        (translate("Report", "Max cutting speed"), lambda s: f"{s.v_work_max_m_s:.4f} m/s"),
+        (translate("Report", "Mean cutting speed"), lambda s: f"{s.v_work_mean_m_s:.4f} m/s"),
+        (translate("Report", "Max return speed"), lambda s: f"{s.v_return_max_m_s:.4f} m/s"),
+        (translate("Report", "Max |acceleration|"), lambda s: f"{s.a_max_m_s2:.4f} m/s²")],
+        translate("Report", "Cycle metrics per crank speed"))
 
 
 def _position_tables(table: PositionTable) -> list[Table]:
     titles, specials, groups = column_titles(), special_titles(), group_titles()
-    shown = display_values(table.data)
-    k = table.positions.crank_deg.size
-    phi = table.columns.index("crank_deg")
-    out = []
-    for s, rpm in enumerate(table.rpm):
-        for group, names in COLUMN_GROUPS:
-            cols = [table.columns.index(n) for n in names if n in table.columns]
-            if not cols:
-                continue
-            rows = []
-            for i in range(k):
-                number = table.positions.number[i]
-                rows.append([str(number) if number else "", specials.get(table.positions.name[i], ""),
-                             number_text(shown[s * k + i, phi])]
-                            + [number_text(shown[s * k + i, c]) for c in cols])
-            header = [translate("Report", "No."), translate("Report", "Position"), titles["crank_deg"]]
-            out.append(Table(header + [titles[table.columns[c]] for c in cols], rows,
-                             f"{rpm:g} r/min — {groups[group]}",
-                             [bool(n) for n in table.positions.name], left_columns=2))
-    return out
+    header = [translate("Report", "No."), translate("Report", "Position")]
+    return [Table(header + [titles[c] for c in block.columns],
+                  [[str(n or ""), specials.get(name, ""), *texts] for n, name, texts in block.rows],
+                  f"{block.rpm:g} r/min — {groups[block.group]}",
+                  [bool(name) for _, name, _ in block.rows], left_columns=2)
+            for block in text_groups(table)]
 
 
 def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
@@ -270,17 +261,18 @@ def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
 
 def _dynamics_table(summary: DynamicsSummary) -> Table:
     """As ``shaper dynamics`` prints it."""
-    header = [translate("Report", "Crank speed")] + [f"{s.rpm:g} r/min" for s in summary.speeds]
-    lines = [(translate("Report", "Mean / max crank torque"),
-              lambda s: f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
-             (translate("Report", "Mean power (motor, before efficiency)"), lambda s: f"{s.mean_power_W:.4g} W"),
-             (translate("Report", "Energy fluctuation ΔW_max"), lambda s: f"{s.energy_fluctuation_J:.4g} J"),
-             (translate("Report", "Flywheel J_F on the crank shaft"), lambda s: f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
-             (translate("Report", "Flywheel J_F − J_e (net)"), lambda s: f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
-    rows = [[label] + [f(s) for s in summary.speeds] for label, f in lines]
-    rows.append([translate("Report", "Mean reduced inertia J_e")]
-                + [f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"] * len(summary.speeds))
-    return Table(header, rows, translate("Report", "Torque, power and flywheel per crank speed"))
+    je = f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"
+    return _per_speed(summary.speeds, [
+        (translate("Report", "Mean / max crank torque"),
+         lambda s: f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
+        (translate("Report", "Mean power (motor, before efficiency)"), lambda s: f"{s.mean_power_W:.4g} W"),
+        (translate("Report", "Energy fluctuation ΔW_max"), lambda s: f"{s.energy_fluctuation_J:.4g} J"),
+        (translate("Report", "Flywheel J_F on the crank shaft"),
+         lambda s: f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
+        (translate("Report", "Flywheel J_F − J_e (net)"),
+         lambda s: f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²"),
+        (translate("Report", "Mean reduced inertia J_e"), lambda s: je)],
+        translate("Report", "Torque, power and flywheel per crank speed"))
 
 
 def _conventions() -> list:
