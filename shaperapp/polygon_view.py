@@ -111,6 +111,8 @@ class PolygonView(QWidget):
         kind = self.kind()
         polygon = self.polygon(kind)
         scale = self.scale(kind)
+        if self._user_scale[kind] is None and self.scale_edit.text() != f"{scale:g}":
+            self.scale_edit.setText(f"{scale:g}")     # the automatic μ follows angle and size
         paint_polygon(painter, rect, polygon, scale, px_per_mm=self._px_per_mm(),
                       font=self.canvas.font())
 

@@ -119,3 +119,10 @@ def test_view_export_and_force_kind(view, model, tmp_path):
     colours = {grab.pixelColor(x, y).name() for x in range(0, grab.width(), 7)
                for y in range(60, grab.height(), 7)}
     assert len(colours) > 3                     # something was drawn besides the background
+
+
+def test_shown_scale_is_the_drawn_scale_after_resizes(view, model, qtbot):
+    view.resize(1200, 900)
+    model.set_angle_deg(250)
+    view.canvas.repaint()
+    assert view.scale_edit.text() == f"{view.scale():g}"
