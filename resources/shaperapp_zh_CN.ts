@@ -89,6 +89,193 @@
     </message>
 </context>
 <context>
+    <name>Columns</name>
+    <message>
+        <source>n (r/min)</source>
+        <translation>n (r/min)</translation>
+    </message>
+    <message>
+        <source>φ (°)</source>
+        <translation>φ (°)</translation>
+    </message>
+    <message>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <source>ram x (mm)</source>
+        <translation>刨头位移 x (mm)</translation>
+    </message>
+    <message>
+        <source>ram v (m/s)</source>
+        <translation>刨头速度 v (m/s)</translation>
+    </message>
+    <message>
+        <source>ram a (m/s²)</source>
+        <translation>刨头加速度 a (m/s²)</translation>
+    </message>
+    <message>
+        <source>lever ψ (°)</source>
+        <translation>导杆角 ψ (°)</translation>
+    </message>
+    <message>
+        <source>lever ω3 (rad/s)</source>
+        <translation>导杆 ω3 (rad/s)</translation>
+    </message>
+    <message>
+        <source>lever α3 (rad/s²)</source>
+        <translation>导杆 α3 (rad/s²)</translation>
+    </message>
+    <message>
+        <source>block v_A2A3 (m/s)</source>
+        <translation>滑块相对速度 v_A2A3 (m/s)</translation>
+    </message>
+    <message>
+        <source>Coriolis a^k (m/s²)</source>
+        <translation>哥氏加速度 a^k (m/s²)</translation>
+    </message>
+    <message>
+        <source>rod λ (°)</source>
+        <translation>连杆角 λ (°)</translation>
+    </message>
+    <message>
+        <source>rod ω4 (rad/s)</source>
+        <translation>连杆 ω4 (rad/s)</translation>
+    </message>
+    <message>
+        <source>rod α4 (rad/s²)</source>
+        <translation>连杆 α4 (rad/s²)</translation>
+    </message>
+    <message>
+        <source>pressure angle (°)</source>
+        <translation>压力角 (°)</translation>
+    </message>
+    <message>
+        <source>crank torque M (N·m)</source>
+        <translation>曲柄平衡力矩 M (N·m)</translation>
+    </message>
+    <message>
+        <source>power (W)</source>
+        <translation>功率 (W)</translation>
+    </message>
+    <message>
+        <source>O2 x (N)</source>
+        <translation>O2 x (N)</translation>
+    </message>
+    <message>
+        <source>O2 y (N)</source>
+        <translation>O2 y (N)</translation>
+    </message>
+    <message>
+        <source>pin A x (N)</source>
+        <translation>销 A x (N)</translation>
+    </message>
+    <message>
+        <source>pin A y (N)</source>
+        <translation>销 A y (N)</translation>
+    </message>
+    <message>
+        <source>A x (N)</source>
+        <translation>A x (N)</translation>
+    </message>
+    <message>
+        <source>A y (N)</source>
+        <translation>A y (N)</translation>
+    </message>
+    <message>
+        <source>A normal (N)</source>
+        <translation>A 法向力 (N)</translation>
+    </message>
+    <message>
+        <source>O4 x (N)</source>
+        <translation>O4 x (N)</translation>
+    </message>
+    <message>
+        <source>O4 y (N)</source>
+        <translation>O4 y (N)</translation>
+    </message>
+    <message>
+        <source>B x (N)</source>
+        <translation>B x (N)</translation>
+    </message>
+    <message>
+        <source>B y (N)</source>
+        <translation>B y (N)</translation>
+    </message>
+    <message>
+        <source>C x (N)</source>
+        <translation>C x (N)</translation>
+    </message>
+    <message>
+        <source>C y (N)</source>
+        <translation>C y (N)</translation>
+    </message>
+    <message>
+        <source>guide N (N)</source>
+        <translation>导轨反力 N (N)</translation>
+    </message>
+    <message>
+        <source>guide moment (N·m)</source>
+        <translation>导轨力矩 (N·m)</translation>
+    </message>
+    <message>
+        <source>N offset (mm)</source>
+        <translation>N 作用点偏距 (mm)</translation>
+    </message>
+    <message>
+        <source>cutting force P (N)</source>
+        <translation>切削力 P (N)</translation>
+    </message>
+    <message>
+        <source>limit position, start of working stroke</source>
+        <translation>极限位置（工作行程起点）</translation>
+    </message>
+    <message>
+        <source>limit position, end of working stroke</source>
+        <translation>极限位置（工作行程终点）</translation>
+    </message>
+    <message>
+        <source>cut starts</source>
+        <translation>切削开始</translation>
+    </message>
+    <message>
+        <source>cut ends</source>
+        <translation>切削结束</translation>
+    </message>
+    <message>
+        <source>max cutting speed</source>
+        <translation>最大切削速度</translation>
+    </message>
+    <message>
+        <source>max return speed</source>
+        <translation>最大回程速度</translation>
+    </message>
+    <message>
+        <source>Ram</source>
+        <translation>刨头</translation>
+    </message>
+    <message>
+        <source>Lever and block</source>
+        <translation>导杆与滑块</translation>
+    </message>
+    <message>
+        <source>Connecting rod</source>
+        <translation>连杆</translation>
+    </message>
+    <message>
+        <source>Crank torque, cutting force and guide</source>
+        <translation>曲柄力矩、切削力与导轨反力</translation>
+    </message>
+    <message>
+        <source>Joint forces at O2 and A</source>
+        <translation>O2、A 处运动副反力</translation>
+    </message>
+    <message>
+        <source>Joint forces at O4, B and C</source>
+        <translation>O4、B、C 处运动副反力</translation>
+    </message>
+</context>
+<context>
     <name>DesignForm</name>
     <message>
         <source>Input</source>
@@ -235,11 +422,11 @@
         <translation>连杆</translation>
     </message>
     <message>
-        <source>Through the tip's extreme positions (chord)</source>
+        <source>Through the tip&apos;s extreme positions (chord)</source>
         <translation>通过导杆端部两极限位置（弦线）</translation>
     </message>
     <message>
-        <source>Mid-sagitta of the tip's arc</source>
+        <source>Mid-sagitta of the tip&apos;s arc</source>
         <translation>导杆端部圆弧矢高的中点</translation>
     </message>
     <message>
@@ -341,7 +528,7 @@
         <translation>质心位置 c</translation>
     </message>
     <message>
-        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <source>Distance of the lever&apos;s centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
@@ -365,7 +552,7 @@
         <translation>质心偏移 dx</translation>
     </message>
     <message>
-        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <source>Horizontal offset of the ram&apos;s centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
         <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
     </message>
     <message>
@@ -373,7 +560,7 @@
         <translation>质心偏移 dy</translation>
     </message>
     <message>
-        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
+        <source>Vertical offset of the ram&apos;s centre of mass from the ram joint C, mm (+ up)</source>
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
@@ -600,7 +787,7 @@
         <translation>导出运动曲线 CSV(&amp;C)…</translation>
     </message>
     <message>
-        <source>All speeds, at the form's angle step</source>
+        <source>All speeds, at the form&apos;s angle step</source>
         <translation>全部转速，按表单中的角度步长</translation>
     </message>
     <message>
@@ -628,6 +815,14 @@
         <translation>将机构简图保存为图像</translation>
     </message>
     <message>
+        <source>Export &amp;report (PDF/HTML)…</source>
+        <translation>导出设计说明书(&amp;R)（PDF/HTML）…</translation>
+    </message>
+    <message>
+        <source>The design report: dimensions, positions table, polygons, forces, flywheel</source>
+        <translation>设计说明书：尺寸、位置表、矢量多边形、力分析、飞轮</translation>
+    </message>
+    <message>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -650,6 +845,14 @@
     <message>
         <source>Forces</source>
         <translation>力分析</translation>
+    </message>
+    <message>
+        <source>Positions</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Vector diagrams</source>
+        <translation>矢量多边形</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -771,7 +974,7 @@
         <translation>曲柄轴上飞轮转动惯量 J_F，kg·m²</translation>
     </message>
     <message>
-        <source>J_F less mechanism's own, kg·m²</source>
+        <source>J_F less mechanism&apos;s own, kg·m²</source>
         <translation>扣除机构自身等效惯量后的 J_F，kg·m²</translation>
     </message>
     <message>
@@ -859,7 +1062,7 @@
         <translation>实测 K</translation>
     </message>
     <message>
-        <source>Working / return crank angle, from the ram's dead points</source>
+        <source>Working / return crank angle, from the ram&apos;s dead points</source>
         <translation>工作行程与回程的曲柄转角之比，由滑枕极限位置测得</translation>
     </message>
     <message>
@@ -867,7 +1070,7 @@
         <translation>实测行程</translation>
     </message>
     <message>
-        <source>Distance between the ram's dead points</source>
+        <source>Distance between the ram&apos;s dead points</source>
         <translation>滑枕两极限位置之间的距离</translation>
     </message>
     <message>
@@ -926,7 +1129,7 @@
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <source>Plot against the crank angle (0–360°) or against time (each speed's own cycle)</source>
+        <source>Plot against the crank angle (0–360°) or against time (each speed&apos;s own cycle)</source>
         <translation>以曲柄转角 (0–360°) 或时间（各转速自身的周期）为横坐标</translation>
     </message>
     <message>
@@ -934,7 +1137,7 @@
         <translation>导杆曲线</translation>
     </message>
     <message>
-        <source>Show the slotted lever's angle, angular velocity or angular acceleration</source>
+        <source>Show the slotted lever&apos;s angle, angular velocity or angular acceleration</source>
         <translation>显示导杆的角位移、角速度或角加速度</translation>
     </message>
     <message>
@@ -1011,9 +1214,495 @@
     </message>
 </context>
 <context>
+    <name>PolygonPainter</name>
+    <message>
+        <source>Velocity polygon</source>
+        <translation>速度多边形</translation>
+    </message>
+    <message>
+        <source>Acceleration polygon</source>
+        <translation>加速度多边形</translation>
+    </message>
+    <message>
+        <source>Force polygon of the ram–rod group</source>
+        <translation>刨头—连杆杆组力多边形</translation>
+    </message>
+    <message>
+        <source>Cannot export to &apos;%1&apos;: use .png or .svg</source>
+        <translation>无法导出为“%1”：请使用 .png 或 .svg</translation>
+    </message>
+</context>
+<context>
+    <name>PolygonView</name>
+    <message>
+        <source>The scale must be a positive number</source>
+        <translation>比例尺必须是正数</translation>
+    </message>
+    <message>
+        <source>Export vector diagram</source>
+        <translation>导出矢量多边形</translation>
+    </message>
+    <message>
+        <source>SVG drawing (*.svg);;PNG image (*.png)</source>
+        <translation>SVG 矢量图 (*.svg);;PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Automatic scale</source>
+        <translation>自动比例尺</translation>
+    </message>
+    <message>
+        <source>The round scale that fills the view at this position</source>
+        <translation>在此位置充满视图的整数比例尺</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>导出…</translation>
+    </message>
+    <message>
+        <source>Save the diagram at true scale as SVG or PNG</source>
+        <translation>按真实比例尺保存为 SVG 或 PNG</translation>
+    </message>
+</context>
+<context>
+    <name>PositionsModel</name>
+    <message>
+        <source>No.</source>
+        <translation>序号</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+</context>
+<context>
+    <name>PositionsView</name>
+    <message>
+        <source>Positions:</source>
+        <translation>位置数：</translation>
+    </message>
+    <message>
+        <source>Number of equally spaced crank positions, numbered from the limit position that starts the working stroke</source>
+        <translation>等分的曲柄位置数，从工作行程起点的极限位置开始编号</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Copy the selected rows (or all) as tab-separated text for Excel or WPS</source>
+        <translation>将所选行（或全部）复制为制表符分隔文本，可粘贴到 Excel 或 WPS</translation>
+    </message>
+</context>
+<context>
+    <name>Report</name>
+    <message>
+        <source>Untitled design</source>
+        <translation>未命名设计</translation>
+    </message>
+    <message>
+        <source>Design report: quick-return mechanism of a shaper</source>
+        <translation>牛头刨床导杆机构设计说明书</translation>
+    </message>
+    <message>
+        <source>1 Design inputs</source>
+        <translation>1 设计数据</translation>
+    </message>
+    <message>
+        <source>2 Synthesized dimensions and validation margins</source>
+        <translation>2 尺寸综合结果与校核裕量</translation>
+    </message>
+    <message>
+        <source>3 The mechanism at its limit positions</source>
+        <translation>3 机构的两个极限位置</translation>
+    </message>
+    <message>
+        <source>Scheme to scale at the limit positions that start and end the working stroke</source>
+        <translation>工作行程起点和终点两个极限位置的机构运动简图（按比例）</translation>
+    </message>
+    <message>
+        <source>4 Motion of the ram and cycle metrics</source>
+        <translation>4 刨头运动与运动特性</translation>
+    </message>
+    <message>
+        <source>Ram displacement, velocity and acceleration over one crank revolution, one curve per speed</source>
+        <translation>曲柄转一周刨头的位移、速度和加速度线图，每个转速一条曲线</translation>
+    </message>
+    <message>
+        <source>5 Kinematic and force analysis at the crank positions</source>
+        <translation>5 各曲柄位置的运动分析与动态静力分析</translation>
+    </message>
+    <message>
+        <source>Positions 1 … N are equally spaced from the limit position that starts the working stroke (φ = 0). The shaded rows are the special positions, solved exactly. Forces are on the named body.</source>
+        <translation>位置 1 … N 从工作行程起点的极限位置（φ = 0）起等分曲柄圆。带底色的行为精确求解的特殊位置。力为作用在所注构件上的力。</translation>
+    </message>
+    <message>
+        <source>6 Velocity, acceleration and force polygons</source>
+        <translation>6 速度多边形、加速度多边形与力多边形</translation>
+    </message>
+    <message>
+        <source>Drawn to scale from the exact solution at %1 r/min; μ is the scale of each drawing (1 mm on the page).</source>
+        <translation>按 %1 r/min 的精确解按比例绘制；μ 为各图的比例尺（图上 1 mm 所代表的量）。</translation>
+    </message>
+    <message>
+        <source>7 Crank torque, energy and flywheel</source>
+        <translation>7 曲柄平衡力矩、能量与飞轮</translation>
+    </message>
+    <message>
+        <source>Crank torque, input power, energy fluctuation ΔE and joint forces over one revolution</source>
+        <translation>一个运动循环内的曲柄平衡力矩、输入功率、能量变化 ΔE 与运动副反力</translation>
+    </message>
+    <message>
+        <source>No loads were given, so the force analysis is left out. Give the masses and the cutting force (or a design file with loads) to include it.</source>
+        <translation>未给出载荷，因此省略力分析。请给出质量和切削力（或含载荷的设计文件）。</translation>
+    </message>
+    <message>
+        <source>8 Conventions and formulas</source>
+        <translation>8 约定与公式</translation>
+    </message>
+    <message>
+        <source>Crank length L1</source>
+        <translation>曲柄长度 L1</translation>
+    </message>
+    <message>
+        <source>Time ratio K</source>
+        <translation>行程速比系数 K</translation>
+    </message>
+    <message>
+        <source>Stroke H</source>
+        <translation>刨头行程 H</translation>
+    </message>
+    <message>
+        <source>Frame O2O4 L2</source>
+        <translation>机架 O2O4 L2</translation>
+    </message>
+    <message>
+        <source>Lever O4B L3</source>
+        <translation>导杆 O4B L3</translation>
+    </message>
+    <message>
+        <source>block on the lever tip in a slot of the ram</source>
+        <translation>导杆端部滑块在刨头滑槽中滑动</translation>
+    </message>
+    <message>
+        <source>connecting rod from the lever tip to the ram</source>
+        <translation>连杆连接导杆端部与刨头</translation>
+    </message>
+    <message>
+        <source>Ram drive</source>
+        <translation>刨头驱动方式</translation>
+    </message>
+    <message>
+        <source>through the lever tip&apos;s extreme positions</source>
+        <translation>通过导杆端点两极限位置</translation>
+    </message>
+    <message>
+        <source>midway along the tip arc&apos;s sagitta</source>
+        <translation>位于导杆端点圆弧矢高的中点</translation>
+    </message>
+    <message>
+        <source>Ram guide line</source>
+        <translation>刨头导路</translation>
+    </message>
+    <message>
+        <source>trailing the tip</source>
+        <translation>滞后于导杆端点</translation>
+    </message>
+    <message>
+        <source>leading the tip</source>
+        <translation>超前于导杆端点</translation>
+    </message>
+    <message>
+        <source>Connecting rod</source>
+        <translation>连杆</translation>
+    </message>
+    <message>
+        <source>Crank speeds</source>
+        <translation>曲柄转速</translation>
+    </message>
+    <message>
+        <source>Loads</source>
+        <translation>载荷</translation>
+    </message>
+    <message>
+        <source>none given</source>
+        <translation>未给出</translation>
+    </message>
+    <message>
+        <source>Extreme-position angle θ</source>
+        <translation>极位夹角 θ</translation>
+    </message>
+    <message>
+        <source>Guide line above the lever pivot O4</source>
+        <translation>导路距导杆转轴 O4 的高度</translation>
+    </message>
+    <message>
+        <source>Guide line above the crank centre O2, h</source>
+        <translation>导路距曲柄转轴 O2 的高度 h</translation>
+    </message>
+    <message>
+        <source>Connecting rod BC L4</source>
+        <translation>连杆 BC L4</translation>
+    </message>
+    <message>
+        <source>Time ratio K of the dimensions</source>
+        <translation>按尺寸计算的行程速比系数 K</translation>
+    </message>
+    <message>
+        <source>Stroke H of the dimensions</source>
+        <translation>按尺寸计算的行程 H</translation>
+    </message>
+    <message>
+        <source>time ratio K ≤ 5</source>
+        <translation>行程速比系数 K ≤ 5</translation>
+    </message>
+    <message>
+        <source>lever L3 ≥ L2 + L1 (crank pin stays on the lever)</source>
+        <translation>导杆 L3 ≥ L2 + L1（曲柄销始终在导杆上）</translation>
+    </message>
+    <message>
+        <source>guide above L2 + L1 (ram clears the crank)</source>
+        <translation>导路高于 L2 + L1（刨头不碰曲柄）</translation>
+    </message>
+    <message>
+        <source>guide ≤ L3 (block reaches the guide)</source>
+        <translation>导路 ≤ L3（滑块能到达导路）</translation>
+    </message>
+    <message>
+        <source>rod reaches the guide over the whole cycle</source>
+        <translation>连杆在整个循环中都能到达导路</translation>
+    </message>
+    <message>
+        <source>rod never square to the lever (no dead centre)</source>
+        <translation>连杆不与导杆垂直（无死点）</translation>
+    </message>
+    <message>
+        <source>Rule</source>
+        <translation>校核条件</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Limit</source>
+        <translation>限值</translation>
+    </message>
+    <message>
+        <source>Margin</source>
+        <translation>裕量</translation>
+    </message>
+    <message>
+        <source>Validation margins</source>
+        <translation>校核裕量</translation>
+    </message>
+    <message>
+        <source>Measured time ratio K</source>
+        <translation>实测行程速比系数 K</translation>
+    </message>
+    <message>
+        <source>Measured stroke</source>
+        <translation>实测行程</translation>
+    </message>
+    <message>
+        <source>Working / return crank angle</source>
+        <translation>工作 / 回程曲柄转角</translation>
+    </message>
+    <message>
+        <source>Largest pressure angle</source>
+        <translation>最大压力角</translation>
+    </message>
+    <message>
+        <source>Crank speed</source>
+        <translation>曲柄转速</translation>
+    </message>
+    <message>
+        <source>Working / return time</source>
+        <translation>工作 / 回程时间</translation>
+    </message>
+    <message>
+        <source>Max cutting speed</source>
+        <translation>最大切削速度</translation>
+    </message>
+    <message>
+        <source>Mean cutting speed</source>
+        <translation>平均切削速度</translation>
+    </message>
+    <message>
+        <source>Max return speed</source>
+        <translation>最大回程速度</translation>
+    </message>
+    <message>
+        <source>Max |acceleration|</source>
+        <translation>最大 |加速度|</translation>
+    </message>
+    <message>
+        <source>Cycle metrics per crank speed</source>
+        <translation>各转速下的运动特性</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>序号</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Lever mass, centre of mass, inertia</source>
+        <translation>导杆质量、质心位置、转动惯量</translation>
+    </message>
+    <message>
+        <source>Ram mass</source>
+        <translation>刨头质量</translation>
+    </message>
+    <message>
+        <source>Rod mass</source>
+        <translation>连杆质量</translation>
+    </message>
+    <message>
+        <source>Cutting force, height below the guide</source>
+        <translation>切削力及其距导路的高度</translation>
+    </message>
+    <message>
+        <source>Idle margin at each end of the stroke</source>
+        <translation>行程两端的空刀量</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>重力</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>计入</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>不计</translation>
+    </message>
+    <message>
+        <source>Coefficient of speed fluctuation δ</source>
+        <translation>速度不均匀系数 δ</translation>
+    </message>
+    <message>
+        <source>Mean / max crank torque</source>
+        <translation>平均 / 最大曲柄平衡力矩</translation>
+    </message>
+    <message>
+        <source>Mean power (motor, before efficiency)</source>
+        <translation>平均功率（电动机，未计效率）</translation>
+    </message>
+    <message>
+        <source>Energy fluctuation ΔW_max</source>
+        <translation>最大盈亏功 ΔW_max</translation>
+    </message>
+    <message>
+        <source>Flywheel J_F on the crank shaft</source>
+        <translation>曲柄轴上的飞轮转动惯量 J_F</translation>
+    </message>
+    <message>
+        <source>Flywheel J_F − J_e (net)</source>
+        <translation>飞轮 J_F − J_e（净值）</translation>
+    </message>
+    <message>
+        <source>Mean reduced inertia J_e</source>
+        <translation>平均等效转动惯量 J_e</translation>
+    </message>
+    <message>
+        <source>Torque, power and flywheel per crank speed</source>
+        <translation>各转速下的力矩、功率与飞轮</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Frame and signs.&lt;/b&gt; Lever pivot O4 at the origin, crank centre O2 at (0, L2) above it, ram guide the line y = guide height; the ram cuts toward +x and the crank turns clockwise. Crank angle φ = 0 at the limit position that starts the working stroke, increasing with rotation; 0 … 180° + θ is the working stroke. Ram x, v and a are positive in the cutting direction, x measured from the position at φ = 0. The lever angle ψ is measured from O4→O2, positive toward the cut. Links: 1 crank, 2 block, 3 lever, 4 rod, 5 ram. Forces are those on the named body, torque positive in the direction of rotation.</source>
+        <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，刨头导路为直线 y = 导路高度；刨头向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。刨头 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号：1 曲柄，2 滑块，3 导杆，4 连杆，5 刨头。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip&apos;s extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
+        <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)（距 O2 为 h = H/(2·tan(θ/2)) − L2）。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Velocities.&lt;/b&gt; v_A3 = v_A2 + v_A3A2 with v_A2 = ω1·L1 ⟂ O2A, v_A3 = ω3·O4A ⟂ O4A, v_A3A2 ∥ O4A; v_B = ω3·L3; block variant v_C = v_B + v_CB (v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω4·L4 ⟂ BC.</source>
+        <translation>&lt;b&gt;速度分析。&lt;/b&gt;v_A3 = v_A2 + v_A3A2，其中 v_A2 = ω1·L1 ⟂ O2A，v_A3 = ω3·O4A ⟂ O4A，v_A3A2 ∥ O4A；v_B = ω3·L3；滑块方案 v_C = v_B + v_CB（v_CB 沿铅垂方向），连杆方案 v_C = v_B + v_CB，v_CB = ω4·L4 ⟂ BC。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Accelerations.&lt;/b&gt; a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, a^n_A3 = ω3²·O4A toward O4, a^t_A3 = α3·O4A, Coriolis a^k_A3A2 = 2·ω3·v_A3A2 (v_A3A2 turned 90° in the sense of ω3); a_C = a_B + a^n_CB + a^t_CB (rod) with a^n_CB = ω4²·L4, a^t_CB = α4·L4.</source>
+        <translation>&lt;b&gt;加速度分析。&lt;/b&gt;a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2，a^n_A3 = ω3²·O4A 指向 O4，a^t_A3 = α3·O4A，哥氏加速度 a^k_A3A2 = 2·ω3·v_A3A2（将 v_A3A2 沿 ω3 转向转 90°）；连杆方案 a_C = a_B + a^n_CB + a^t_CB，a^n_CB = ω4²·L4，a^t_CB = α4·L4。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d&apos;Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
+        <translation>&lt;b&gt;力分析。&lt;/b&gt;曲柄匀速转动下的动态静力分析（达朗贝尔原理）：加上惯性力 F_I = −m·a_G 和惯性力矩 −J·α 后各构件处于平衡；运动副无摩擦。切削力 P 与切削方向相反，作用于工作行程的 空刀量·H 至 (1 − 空刀量)·H 之间。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Flywheel.&lt;/b&gt; T_m = (1/2π)∮T dφ; P_m = T_m·ω; ΔW_max = max − min of ∫(T − T_m) dφ; J_F = ΔW_max/(ω²·δ) on the crank shaft (on a shaft turning i times faster: J_F/i²).</source>
+        <translation>&lt;b&gt;飞轮。&lt;/b&gt;T_m = (1/2π)∮T dφ；P_m = T_m·ω；ΔW_max 为 ∫(T − T_m) dφ 的最大值与最小值之差；曲柄轴上 J_F = ΔW_max/(ω²·δ)（装在转速为其 i 倍的轴上时为 J_F/i²）。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Method.&lt;/b&gt; All values are computed in closed form from the exact position solution and its derivatives (no numerical differentiation); special positions are exact roots. Every number equals the output of the shaper command line for the same inputs.</source>
+        <translation>&lt;b&gt;计算方法。&lt;/b&gt;所有数值均由精确位置解及其导数以解析式计算（不用数值微分）；特殊位置为精确求根结果。每个数值都与相同输入下 shaper 命令行的输出一致。</translation>
+    </message>
+    <message>
+        <source>φ = %1° (limit position)</source>
+        <translation>φ = %1°（极限位置）</translation>
+    </message>
+    <message>
+        <source>Design</source>
+        <translation>设计</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>程序</translation>
+    </message>
+    <message>
+        <source>Design report</source>
+        <translation>设计说明书</translation>
+    </message>
+    <message>
+        <source>Page %1 / %2</source>
+        <translation>第 %1 / %2 页</translation>
+    </message>
+</context>
+<context>
+    <name>ReportOptionsDialog</name>
+    <message>
+        <source>Export design report</source>
+        <translation>导出设计说明书</translation>
+    </message>
+    <message>
+        <source>Positions in the table:</source>
+        <translation>位置表中的位置数：</translation>
+    </message>
+    <message>
+        <source>Vector diagrams at φ (working stroke):</source>
+        <translation>矢量多边形位置 φ（工作行程）：</translation>
+    </message>
+    <message>
+        <source>Vector diagrams at φ (return stroke):</source>
+        <translation>矢量多边形位置 φ（回程）：</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf);;HTML page (*.html)</source>
+        <translation>PDF 文档 (*.pdf);;HTML 网页 (*.html)</translation>
+    </message>
+    <message>
+        <source>No font with Chinese characters is installed. Install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>
+        <translation>未安装中文字体。请安装一种（Debian/Ubuntu：fonts-noto-cjk），或将语言切换为英文。</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>SchemeWidget</name>
     <message>
-        <source>Cannot export to '{0}': use .png or .svg</source>
+        <source>Cannot export to &apos;{0}&apos;: use .png or .svg</source>
         <translation>无法导出到“{0}”：请使用 .png 或 .svg</translation>
     </message>
     <message>
@@ -1091,6 +1780,13 @@
     <message>
         <source>Forces at {0} r/min, scale: {1:g} mm ≙ {2}</source>
         <translation>{0} r/min 时的受力，比例：{1:g} mm ≙ {2}</translation>
+    </message>
+</context>
+<context>
+    <name>SpeedCombo</name>
+    <message>
+        <source>%1 r/min</source>
+        <translation>%1 r/min</translation>
     </message>
 </context>
 <context>

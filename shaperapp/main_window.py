@@ -22,6 +22,8 @@ from .messages import describe
 from .metrics_panel import MetricsPanel
 from .model import DesignModel
 from .plots import PlotsWidget
+from .polygon_view import PolygonView
+from .positions_view import PositionsView
 from .scheme import SchemeWidget
 
 APP_NAME = "Shaper Designer"
@@ -42,6 +44,11 @@ class MainWindow(QMainWindow):
         self.tabs = QTabWidget()
         self.tabs.addTab(self.plots, "")
         self.tabs.addTab(self.forces, "")
+        # Course-design deliverables (issue 9): positions table and vector diagrams.
+        self.positions = PositionsView(model)
+        self.polygon_view = PolygonView(model)
+        self.tabs.addTab(self.positions, "")
+        self.tabs.addTab(self.polygon_view, "")
 
         side = QWidget()
         side_layout = QVBoxLayout(side)
@@ -105,6 +112,7 @@ class MainWindow(QMainWindow):
         self.act_plots_img = self._action(
             lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
+        self.act_report = self._action(self._export_report, "Ctrl+R")
         self.act_quit = self._action(self.close, QKeySequence.StandardKey.Quit)
         # The widgets own these actions (and their texts); the window only adds shortcuts.
         self.act_play = self._shortcut(self.animation.play_action, "Ctrl+Space")
@@ -135,6 +143,7 @@ class MainWindow(QMainWindow):
         self.menu_file.addSeparator()
         for a in (self.act_csv, self.act_forces_csv, self.act_plots_img, self.act_scheme_img):
             self.menu_file.addAction(a)
+        self.menu_file.addAction(self.act_report)
         self.menu_file.addSeparator()
         self.menu_file.addAction(self.act_quit)
         self.menu_view = bar.addMenu("")
@@ -187,6 +196,8 @@ class MainWindow(QMainWindow):
              self.tr("Crank torque, power and joint forces, all speeds")),
             (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots of the current tab as an image")),
             (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
+            (self.act_report, self.tr("Export &report (PDF/HTML)…"),
+             self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
             (self.act_quit, self.tr("&Quit"), ""),
             (self.act_about, self.tr("&About"), ""),
             (self.act_guide, self.tr("User &guide"), self.tr("Conventions, method, glossary and command line")),
@@ -196,6 +207,8 @@ class MainWindow(QMainWindow):
             action.setStatusTip(tip)
         self.tabs.setTabText(0, self.tr("Kinematics"))
         self.tabs.setTabText(1, self.tr("Forces"))
+        self.tabs.setTabText(2, self.tr("Positions"))
+        self.tabs.setTabText(3, self.tr("Vector diagrams"))
         self.menu_file.setTitle(self.tr("&File"))
         self.menu_recent.setTitle(self.tr("Open &Recent"))
         self.menu_view.setTitle(self.tr("&View"))
@@ -238,6 +251,13 @@ class MainWindow(QMainWindow):
         except OSError as exc:
             self._show_failure(self.tr("Could not write %1: %2").replace("%1", path)
                                .replace("%2", exc.strerror or str(exc)))
+
+    def _export_report(self) -> None:
+        from .report.dialog import export_report_dialog   # builds offscreen views: load on demand
+        path = export_report_dialog(self.model, self, str(self.settings.value("language", "en")),
+                                    self.document.last_dir())
+        if path:
+            self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 
     def _about(self) -> None:
         QMessageBox.about(self, self.tr("About Shaper Designer"), about_text())

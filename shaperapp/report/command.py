@@ -1,0 +1,147 @@
+"""``shaper report``: the design report as an A4 PDF (or HTML), headless.
+
+Registered through the ``shaper.commands`` entry point (it needs Qt, which
+``core`` never imports). Every input is validated by core before Qt starts,
+so bad input is one line and exit status 2 like every other subcommand.
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+from core.cli.cmd_table import masses_or_none
+from core.cli.common import (OutputError, UsageError, add_design_options, add_load_options,
+                             add_speed_options, number, number_list, rpms_from_args,
+                             spec_from_args)
+from core.errors import DesignError
+from core.kinematics import check_rpms
+from core.positions import DEFAULT_COUNT, check_count, check_extra
+
+HELP = "write the design report (A4 PDF, or HTML)"
+DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
+               "margins, the scheme at both limit positions, s/v/a curves and cycle metrics, the "
+               "positions table, velocity/acceleration/force polygons at two positions, torque, "
+               "energy, flywheel and motor power, and the conventions and formulas. Runs without a "
+               "display. The Chinese report needs a font with Chinese glyphs (fonts-noto-cjk).")
+EXAMPLES = ("shaper report --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --lever-mass 20 "
+            "--lever-inertia 1.1 --ram-mass 70 --cut-force 7000 --cut-height 80 -o report.pdf",
+            "shaper report --design my.shaper.json --lang zh --diagrams 90,270 -o 说明书.pdf",
+            "shaper report --design my.shaper.json --html -o report.html")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser)
+    add_speed_options(parser)
+    add_load_options(parser, required=False)
+    parser.add_argument("-o", "--output", required=True, metavar="FILE", help="the report file to write")
+    parser.add_argument("--lang", choices=("en", "zh"), default="en", help="report language (default en)")
+    parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
+                        help="number of equally spaced crank positions in the table (default 12)")
+    parser.add_argument("--diagrams", metavar="A,B",
+                        help="crank angles (degrees) of the two vector-diagram positions (default: "
+                             "mid working stroke and mid return stroke)")
+    parser.add_argument("--title", metavar="TEXT",
+                        help="design name for the title block (default: the design file's name)")
+    parser.add_argument("--html", action="store_true", help="write HTML instead of PDF")
+
+
+def _ensure_headless() -> None:
+    """Qt draws offscreen when there is no display (CI, ssh)."""
+    if sys.platform.startswith("linux") and not (os.environ.get("DISPLAY")
+                                                 or os.environ.get("WAYLAND_DISPLAY")):
+        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+
+def _quiet(kind, _context, message) -> None:
+    """Qt's platform notes (e.g. the offscreen plugin's) are not for the user; real
+    failures surface as exceptions or a missing file."""
+    from PySide6.QtCore import QtMsgType
+    if kind in (QtMsgType.QtCriticalMsg, QtMsgType.QtFatalMsg):
+        print(f"shaper: Qt: {message}", file=sys.stderr)
+
+
+def _application():
+    import pyqtgraph as pg
+    from PySide6.QtCore import qInstallMessageHandler
+    from PySide6.QtWidgets import QApplication
+    pg.setConfigOptions(background="w", foreground="k", antialias=True)
+    qInstallMessageHandler(_quiet)
+    return QApplication.instance() or QApplication(sys.argv[:1])
+
+
+def design_name(args: argparse.Namespace) -> str:
+    if args.title:
+        return args.title
+    if args.design:
+        name = Path(args.design).name
+        for suffix in (".json", ".shaper"):
+            name = name[: -len(suffix)] if name.endswith(suffix) else name
+        return name
+    return ""
+
+
+def run(args: argparse.Namespace) -> int:
+    spec = spec_from_args(args)
+    design = spec.design()
+    rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
+    masses = masses_or_none(args, design)
+    count = check_count(number("positions", args.positions))
+    diagrams = None
+    if args.diagrams is not None:
+        values = check_extra(number_list("diagrams", args.diagrams))
+        if values.size != 2:
+            raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
+        diagrams = (float(values[0]), float(values[1]))
+    target = Path(args.output)
+    if not target.parent.is_dir():
+        raise OutputError(f"--output: cannot write {target}: no such directory")
+
+    _ensure_headless()
+    app = _application()
+    from .. import i18n
+    from .content import Options, build
+    from .fonts import MissingFontError, report_font
+    language = "zh_CN" if args.lang == "zh" else "en"
+    i18n.set_language(language)
+    try:
+        report_font(language)
+    except MissingFontError as exc:
+        raise UsageError(f"--lang {args.lang}: {exc}") from None
+    name = design_name(args) or app.translate("Report", "Untitled design")
+    report = build(spec, rpms, masses, name, datetime.date.today().isoformat(), language,
+                   Options(count, diagrams))
+    pages = write_report(report, str(target), html=args.html)
+    what = "HTML" if args.html else f"PDF, {pages} pages"
+    print(f"wrote {target} ({what})")
+    return 0
+
+
+def write_report(report, path: str, html: bool = False) -> int:
+    """Write atomically (a temporary file in the target's folder, then renamed); returns the
+    PDF page count (0 for HTML). OSError names the path."""
+    from .html import report_html
+    from .pdf import write_pdf
+    target = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
+    os.close(fd)
+    try:
+        if html:
+            Path(tmp).write_text(report_html(report), encoding="utf-8")
+            pages = 0
+        else:
+            pages = write_pdf(report, tmp)
+            if os.path.getsize(tmp) == 0:
+                raise OSError(f"could not write {target}")
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)              # mkstemp's 0600 is not what a user expects
+        os.replace(tmp, target)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+    return pages

@@ -1,0 +1,310 @@
+"""What the design report says: blocks of text, tables and figures, built once.
+
+Every number comes from ``core`` and is formatted exactly as the ``shaper``
+CLI prints it (``synth``, ``analyze``, ``dynamics`` text output and ``table``'s
+``number_text``), so the report and the CLI agree digit for digit (tested
+through the PDF text layer). Figures are drawn by the app's own views
+(``figures``) and the polygon painter, never by drawing code of their own.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+from PySide6.QtCore import QCoreApplication, QRectF
+from PySide6.QtGui import QPainter
+
+from core.dynamics import DynamicsSummary, MassProperties, masses_for_design, summarize
+from core.geometry import Design
+from core.margins import margins
+from core.metrics import CycleMetrics, analyze
+from core.positions import PositionTable, position_table, positions, text_groups
+from core.spec import Spec
+from ..column_titles import column_titles, group_titles, special_titles
+from . import figures
+
+translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
+Paint = Callable[[QPainter, QRectF, float], None]     # painter, rect (device), device units per mm
+
+
+@dataclass
+class Heading:
+    text: str
+    level: int = 1
+
+
+@dataclass
+class Paragraph:
+    html: str
+    keep_with_next: bool = False      # an introduction stays on the page of what it introduces
+
+
+@dataclass
+class KeyValues:
+    rows: list[tuple[str, str]]
+
+
+@dataclass
+class Table:
+    header: list[str]
+    rows: list[list[str]]
+    caption: str = ""
+    shaded: list[bool] = field(default_factory=list)
+    left_columns: int = 1
+
+
+@dataclass
+class Figure:
+    caption: str
+    width_mm: float
+    height_mm: float
+    paint: Paint
+
+
+@dataclass
+class Report:
+    title: str
+    name: str
+    date: str
+    language: str
+    blocks: list = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Options:
+    """What the user chooses: positions count and the crank angles of the vector diagrams."""
+
+    count: int = 12
+    diagram_deg: tuple[float, float] | None = None    # None: one in the working, one in the return stroke
+
+
+def default_diagram_angles(table: PositionTable, metrics: CycleMetrics) -> tuple[float, float]:
+    """The numbered positions nearest the middle of the working and of the return stroke."""
+    work_mid = metrics.work_angle_deg / 2.0
+    back_mid = metrics.work_angle_deg + metrics.return_angle_deg / 2.0
+    numbered = [d for d, n in zip(table.positions.crank_deg, table.positions.number) if n]
+    pick = lambda target: float(min(numbered, key=lambda d: abs(d - target)))  # noqa: E731
+    return pick(work_mid), pick(back_mid)
+
+
+def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name: str, date: str,
+          language: str, options: Options = Options()) -> Report:
+    """The whole report; ``masses`` None leaves out the force analysis (with a note)."""
+    design = spec.design()
+    metrics = analyze(design, rpms)
+    used = masses_for_design(design, masses) if masses is not None else None
+    idle = used.idle_fraction if used is not None else MassProperties().idle_fraction
+    table = position_table(design, positions(design, options.count, (), idle), rpms, used)
+    summary = summarize(design, rpms, used) if used is not None else None
+    angles = options.diagram_deg or default_diagram_angles(table, metrics)
+    report = Report(translate("Report", "Design report: quick-return mechanism of a shaper"),
+                    name, date, language)
+    add = report.blocks.append
+    views = figures.ReportViews(spec, rpms, used, metrics)
+    try:
+        add(Heading(translate("Report", "1 Design inputs")))
+        add(KeyValues(_inputs(spec, rpms, used)))
+        add(Heading(translate("Report", "2 Synthesized dimensions and validation margins")))
+        add(KeyValues(_dimensions(design)))
+        add(_margin_table(design))
+        add(Heading(translate("Report", "3 The mechanism at its limit positions")))
+        add(Figure(translate("Report", "Scheme to scale at the limit positions that start and end "
+                             "the working stroke"), 170.0, 72.0, views.limit_schemes()))
+        add(Heading(translate("Report", "4 Motion of the ram and cycle metrics")))
+        add(KeyValues(_cycle(metrics)))
+        add(_speed_table(metrics))
+        add(Figure(translate("Report", "Ram displacement, velocity and acceleration over one "
+                             "crank revolution, one curve per speed"), 170.0, 150.0, views.curves()))
+        add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
+        add(Paragraph(translate("Report", "Positions 1 … N are equally spaced from the limit "
+                                "position that starts the working stroke (φ = 0). The shaded rows are "
+                                "the special positions, solved exactly. Forces are on the named body."), True))
+        report.blocks.extend(_position_tables(table))
+        add(Heading(translate("Report", "6 Velocity, acceleration and force polygons")))
+        add(Paragraph(translate("Report", "Drawn to scale from the exact solution at %1 r/min; "
+                                "μ is the scale of each drawing (1 mm on the page).")
+                      .replace("%1", f"{rpms[0]:g}"), True))
+        for deg in angles:
+            for kind in ("velocity", "acceleration", "force"):
+                if kind == "force" and used is None:
+                    continue
+                add(Figure("", 170.0, 105.0 if kind != "velocity" else 85.0,
+                           figures.polygon_paint(design, deg, rpms[0], used, kind, language)))
+        if summary is not None:
+            add(Heading(translate("Report", "7 Crank torque, energy and flywheel")))
+            add(KeyValues(_loads(used, design)))
+            add(_dynamics_table(summary))
+            add(Figure(translate("Report", "Crank torque, input power, energy fluctuation ΔE and "
+                                 "joint forces over one revolution"), 170.0, 170.0, views.forces()))
+        else:
+            add(Heading(translate("Report", "7 Crank torque, energy and flywheel")))
+            add(Paragraph(translate("Report", "No loads were given, so the force analysis is left "
+                                    "out. Give the masses and the cutting force (or a design file "
+                                    "with loads) to include it.")))
+        add(Heading(translate("Report", "8 Conventions and formulas")))
+        report.blocks.extend(_conventions())
+    finally:
+        views.close()
+    return report
+
+
+# ---- sections --------------------------------------------------------------
+def _inputs(spec: Spec, rpms: Sequence[float], masses: MassProperties | None) -> list[tuple[str, str]]:
+    rows = []
+    if spec.mode == "synthesis":
+        rows += [(translate("Report", "Crank length L1"), f"{spec.crank:g} mm"),
+                 (translate("Report", "Time ratio K"), f"{spec.time_ratio:g}"),
+                 (translate("Report", "Stroke H"), f"{spec.stroke:g} mm")]
+    else:
+        rows += [(translate("Report", "Crank length L1"), f"{spec.crank:g} mm"),
+                 (translate("Report", "Frame O2O4 L2"), f"{spec.frame:g} mm"),
+                 (translate("Report", "Lever O4B L3"), f"{spec.lever:g} mm")]
+    variant = {"block": translate("Report", "block on the lever tip in a slot of the ram"),
+               "rod": translate("Report", "connecting rod from the lever tip to the ram")}[spec.variant]
+    rows.append((translate("Report", "Ram drive"), variant))
+    guide = {"chord": translate("Report", "through the lever tip's extreme positions"),
+             "sagitta": translate("Report", "midway along the tip arc's sagitta")}.get(
+        spec.guide_rule, f"{spec.guide_height:g} mm")
+    rows.append((translate("Report", "Ram guide line"), guide))
+    if spec.variant == "rod":
+        rod = f"{spec.rod_length:g} mm" if spec.rod_input == "length" else f"L4/L3 = {spec.rod_ratio:g}"
+        side = {"trailing": translate("Report", "trailing the tip"),
+                "leading": translate("Report", "leading the tip")}[spec.rod_side]
+        rows.append((translate("Report", "Connecting rod"), f"{rod}, {side}"))
+    rows.append((translate("Report", "Crank speeds"), ", ".join(f"{r:g}" for r in rpms) + " r/min"))
+    if masses is None:
+        rows.append((translate("Report", "Loads"), translate("Report", "none given")))
+    return rows
+
+
+def _dimensions(design: Design) -> list[tuple[str, str]]:
+    """As ``shaper synth`` prints them."""
+    rows = [(translate("Report", "Extreme-position angle θ"), f"{math.degrees(design.theta):.4f} °"),
+            (translate("Report", "Frame O2O4 L2"), f"{design.frame:.3f} mm"),
+            (translate("Report", "Lever O4B L3"), f"{design.lever:.3f} mm"),
+            (translate("Report", "Guide line above the lever pivot O4"), f"{design.guide:.3f} mm"),
+            (translate("Report", "Guide line above the crank centre O2, h"), f"{design.guide_above_crank:.3f} mm")]
+    if design.rod is not None:
+        rows.append((translate("Report", "Connecting rod BC L4"), f"{design.rod:.3f} mm"))
+    rows += [(translate("Report", "Time ratio K of the dimensions"), f"{design.time_ratio:.6g}"),
+             (translate("Report", "Stroke H of the dimensions"), f"{design.stroke:.3f} mm")]
+    return rows
+
+
+def _margin_table(design: Design) -> Table:
+    names = {"time_ratio": translate("Report", "time ratio K ≤ 5"),
+             "lever_reach": translate("Report", "lever L3 ≥ L2 + L1 (crank pin stays on the lever)"),
+             "guide_clears_crank": translate("Report", "guide above L2 + L1 (ram clears the crank)"),
+             "guide_below_tip": translate("Report", "guide ≤ L3 (block reaches the guide)"),
+             "rod_reach": translate("Report", "rod reaches the guide over the whole cycle"),
+             "rod_dead_centre": translate("Report", "rod never square to the lever (no dead centre)")}
+    rows = [[names[m.rule], f"{m.value:.4f} {m.unit}".strip(), f"{m.limit:.4f} {m.unit}".strip(),
+             f"{m.margin:.4f} {m.unit}".strip()] for m in margins(design)]
+    return Table([translate("Report", "Rule"), translate("Report", "Value"),
+                  translate("Report", "Limit"), translate("Report", "Margin")], rows,
+                 translate("Report", "Validation margins"))
+
+
+def _cycle(metrics: CycleMetrics) -> list[tuple[str, str]]:
+    """As ``shaper analyze`` prints them."""
+    rows = [(translate("Report", "Measured time ratio K"), f"{metrics.time_ratio:.6f}"),
+            (translate("Report", "Measured stroke"), f"{metrics.stroke_mm:.3f} mm"),
+            (translate("Report", "Working / return crank angle"),
+             f"{metrics.work_angle_deg:.3f} ° / {metrics.return_angle_deg:.3f} °")]
+    if metrics.pressure_angle_max_deg is not None:
+        rows.append((translate("Report", "Largest pressure angle"), f"{metrics.pressure_angle_max_deg:.3f} °"))
+    return rows
+
+
+def _per_speed(speeds, lines, caption: str) -> Table:
+    """A table with one column per crank speed: (label, format of one speed's values)."""
+    header = [translate("Report", "Crank speed")] + [f"{s.rpm:g} r/min" for s in speeds]
+    return Table(header, [[label] + [f(s) for s in speeds] for label, f in lines], caption)
+
+
+def _speed_table(metrics: CycleMetrics) -> Table:
+    """As ``shaper analyze`` prints it."""
+    return _per_speed(metrics.speeds, [
+        (translate("Report", "Working / return time"),
+         lambda s: f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
+        (translate("Report", "Max cutting speed"), lambda s: f"{s.v_work_max_m_s:.4f} m/s"),
+        (translate("Report", "Mean cutting speed"), lambda s: f"{s.v_work_mean_m_s:.4f} m/s"),
+        (translate("Report", "Max return speed"), lambda s: f"{s.v_return_max_m_s:.4f} m/s"),
+        (translate("Report", "Max |acceleration|"), lambda s: f"{s.a_max_m_s2:.4f} m/s²")],
+        translate("Report", "Cycle metrics per crank speed"))
+
+
+def _position_tables(table: PositionTable) -> list[Table]:
+    titles, specials, groups = column_titles(), special_titles(), group_titles()
+    header = [translate("Report", "No."), translate("Report", "Position")]
+    return [Table(header + [titles[c] for c in block.columns],
+                  [[str(n or ""), specials.get(name, ""), *texts] for n, name, texts in block.rows],
+                  f"{block.rpm:g} r/min — {groups[block.group]}",
+                  [bool(name) for _, name, _ in block.rows], left_columns=2)
+            for block in text_groups(table)]
+
+
+def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
+    rows = [(translate("Report", "Lever mass, centre of mass, inertia"),
+             f"{masses.lever_mass_kg:g} kg, {masses.lever_cg(design):g} mm, {masses.lever_inertia_kg_m2:g} kg·m²"),
+            (translate("Report", "Ram mass"), f"{masses.ram_mass_kg:g} kg")]
+    if design.rod is not None:
+        rows.append((translate("Report", "Rod mass"), f"{masses.rod_mass_kg:g} kg"))
+    rows += [(translate("Report", "Cutting force, height below the guide"),
+              f"{masses.cut_force_N:g} N, {masses.cut_height_mm:g} mm"),
+             (translate("Report", "Idle margin at each end of the stroke"), f"{masses.idle_fraction:g} H"),
+             (translate("Report", "Gravity"), translate("Report", "on") if masses.gravity else translate("Report", "off")),
+             (translate("Report", "Coefficient of speed fluctuation δ"), f"{masses.delta:.5g}")]
+    return rows
+
+
+def _dynamics_table(summary: DynamicsSummary) -> Table:
+    """As ``shaper dynamics`` prints it."""
+    je = f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"
+    return _per_speed(summary.speeds, [
+        (translate("Report", "Mean / max crank torque"),
+         lambda s: f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
+        (translate("Report", "Mean power (motor, before efficiency)"), lambda s: f"{s.mean_power_W:.4g} W"),
+        (translate("Report", "Energy fluctuation ΔW_max"), lambda s: f"{s.energy_fluctuation_J:.4g} J"),
+        (translate("Report", "Flywheel J_F on the crank shaft"),
+         lambda s: f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
+        (translate("Report", "Flywheel J_F − J_e (net)"),
+         lambda s: f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²"),
+        (translate("Report", "Mean reduced inertia J_e"), lambda s: je)],
+        translate("Report", "Torque, power and flywheel per crank speed"))
+
+
+def _conventions() -> list:
+    p = lambda text: Paragraph(text)  # noqa: E731
+    return [
+        p(translate("Report", "<b>Frame and signs.</b> Lever pivot O4 at the origin, crank centre O2 at "
+                    "(0, L2) above it, ram guide the line y = guide height; the ram cuts toward +x and the "
+                    "crank turns clockwise. Crank angle φ = 0 at the limit position that starts the working "
+                    "stroke, increasing with rotation; 0 … 180° + θ is the working stroke. Ram x, v and a are "
+                    "positive in the cutting direction, x measured from the position at φ = 0. The lever "
+                    "angle ψ is measured from O4→O2, positive toward the cut. Links: 1 crank, 2 block, "
+                    "3 lever, 4 rod, 5 ram. Forces are those on the named body, torque positive in the "
+                    "direction of rotation.")),
+        p(translate("Report", "<b>Synthesis.</b> θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); "
+                    "L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) "
+                    "above O4 (h = H/(2·tan(θ/2)) − L2 above O2).")),
+        p(translate("Report", "<b>Velocities.</b> v_A3 = v_A2 + v_A3A2 with v_A2 = ω1·L1 ⟂ O2A, "
+                    "v_A3 = ω3·O4A ⟂ O4A, v_A3A2 ∥ O4A; v_B = ω3·L3; block variant v_C = v_B + v_CB "
+                    "(v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω4·L4 ⟂ BC.")),
+        p(translate("Report", "<b>Accelerations.</b> a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, "
+                    "a^n_A3 = ω3²·O4A toward O4, a^t_A3 = α3·O4A, Coriolis a^k_A3A2 = 2·ω3·v_A3A2 "
+                    "(v_A3A2 turned 90° in the sense of ω3); a_C = a_B + a^n_CB + a^t_CB (rod) with "
+                    "a^n_CB = ω4²·L4, a^t_CB = α4·L4.")),
+        p(translate("Report", "<b>Forces.</b> Kinetostatics at constant crank speed (d'Alembert): "
+                    "inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in "
+                    "equilibrium; joints are frictionless. The cutting force P acts against the cut between "
+                    "idle·H and (1 − idle)·H of the working stroke.")),
+        p(translate("Report", "<b>Flywheel.</b> T_m = (1/2π)∮T dφ; P_m = T_m·ω; "
+                    "ΔW_max = max − min of ∫(T − T_m) dφ; J_F = ΔW_max/(ω²·δ) on the crank shaft "
+                    "(on a shaft turning i times faster: J_F/i²).")),
+        p(translate("Report", "<b>Method.</b> All values are computed in closed form from the exact "
+                    "position solution and its derivatives (no numerical differentiation); special "
+                    "positions are exact roots. Every number equals the output of the shaper command "
+                    "line for the same inputs.")),
+    ]

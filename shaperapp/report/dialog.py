@@ -1,0 +1,98 @@
+"""File › Export report…: choose the positions and the two diagram angles, then the file.
+
+The report is built from the model's design on screen, its speeds and loads,
+in the UI's language, by the same code as ``shaper report``.
+"""
+from __future__ import annotations
+
+import datetime
+import os
+
+from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtGui import QGuiApplication
+from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog, QFormLayout,
+                               QMessageBox, QSpinBox, QWidget)
+
+from core.dynamics import masses_for_design
+from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
+from ..model import DesignModel
+from .command import write_report
+from .content import Options, build, default_diagram_angles
+from .fonts import MissingFontError
+
+translate = QCoreApplication.translate
+
+
+class ReportOptionsDialog(QDialog):
+    """Positions count and the crank angles of the two vector-diagram positions."""
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle(self.tr("Export design report"))
+        self.count = QSpinBox()
+        self.count.setRange(1, MAX_COUNT)
+        self.count.setValue(DEFAULT_COUNT)
+        design = model.design
+        table = position_table(design, positions(design, DEFAULT_COUNT), model.rpms[:1])
+        work, back = default_diagram_angles(table, model.metrics)
+        self.angles = []
+        for value in (work, back):
+            box = QDoubleSpinBox()
+            box.setRange(-360.0, 720.0)
+            box.setDecimals(2)
+            box.setSuffix(" °")
+            box.setValue(value)
+            self.angles.append(box)
+        form = QFormLayout(self)
+        form.addRow(self.tr("Positions in the table:"), self.count)
+        form.addRow(self.tr("Vector diagrams at φ (working stroke):"), self.angles[0])
+        form.addRow(self.tr("Vector diagrams at φ (return stroke):"), self.angles[1])
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
+        buttons.accepted.connect(self.accept)
+        buttons.rejected.connect(self.reject)
+        form.addRow(buttons)
+
+    def options(self) -> Options:
+        return Options(self.count.value(), (self.angles[0].value(), self.angles[1].value()))
+
+
+def export_report(model: DesignModel, path: str, language: str, options: Options = Options()) -> int:
+    """Build the report of the design on screen and write it (PDF, or HTML for .html/.htm)."""
+    design = model.design
+    masses = masses_for_design(design, model.masses)
+    name = os.path.splitext(os.path.basename(model.path))[0] if model.path else \
+        translate("Report", "Untitled design")
+    if name.endswith(".shaper"):
+        name = name[: -len(".shaper")]
+    report = build(model.valid_spec, list(model.rpms), masses, name,
+                   datetime.date.today().isoformat(), language, options)
+    return write_report(report, path, html=path.lower().endswith((".html", ".htm")))
+
+
+def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str) -> str:
+    """Ask for the options and a file, write the report; returns the path written or ''."""
+    dialog = ReportOptionsDialog(model, parent)
+    if dialog.exec() != QDialog.DialogCode.Accepted:
+        return ""
+    start = os.path.join(start_dir, "report.pdf")
+    path, _ = QFileDialog.getSaveFileName(parent, translate("ReportOptionsDialog", "Export design report"), start,
+                                          translate("ReportOptionsDialog", "PDF document (*.pdf);;HTML page (*.html)"))
+    if not path:
+        return ""
+    QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+    try:
+        export_report(model, path, language, dialog.options())
+    except MissingFontError:
+        QGuiApplication.restoreOverrideCursor()
+        QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"),
+                            translate("ReportOptionsDialog", "No font with Chinese characters is installed. Install one "
+                               "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English."))
+        return ""
+    except OSError as exc:
+        QGuiApplication.restoreOverrideCursor()
+        QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"),
+                            translate("ReportOptionsDialog", "Could not write %1: %2").replace("%1", path)
+                            .replace("%2", exc.strerror or str(exc)))
+        return ""
+    QGuiApplication.restoreOverrideCursor()
+    return path

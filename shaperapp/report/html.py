@@ -1,0 +1,102 @@
+"""The same report as one self-contained HTML file (figures as inline SVG).
+
+Figures are painted by the same functions as in the PDF, into a QSvgGenerator
+sized in millimetres, so a printed page shows the polygons at their scale μ.
+"""
+from __future__ import annotations
+
+import html
+import math
+
+from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QRectF, QSize
+from PySide6.QtGui import QFont, QPainter
+from PySide6.QtSvg import QSvgGenerator
+
+from .content import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .fonts import report_font
+
+SVG_DPI = 96.0
+STYLE = """
+body { font-family: %(family)s, sans-serif; font-size: 10pt; color: #1b262c; max-width: 190mm;
+       margin: 12mm auto; }
+.title { border: 1.5px solid #1b262c; margin-bottom: 8mm; }
+.title h1 { text-align: center; font-size: 17pt; margin: 4mm 0; }
+.title table { width: 100%%; border-collapse: collapse; }
+.title td { border-top: 1.5px solid #1b262c; text-align: center; padding: 2mm; }
+.title td + td { border-left: 1.5px solid #1b262c; }
+h2 { font-size: 12.5pt; border-bottom: 1px solid #90a4ae; margin-top: 7mm; }
+table.data { border-collapse: collapse; margin: 2mm 0 5mm; font-size: 8pt; }
+table.data th { background: #dfe7ee; font-weight: normal; padding: 1mm 1.5mm; }
+table.data td, table.data th { border: 1px solid #90a4ae; padding: 0.6mm 1.5mm; }
+table.data td { text-align: right; white-space: nowrap; }
+table.data td.l { text-align: left; }
+table.data tr.special { background: #eef3f8; }
+table.kv td { padding: 0.5mm 4mm 0.5mm 0; }
+.caption { font-weight: bold; margin: 2mm 0 0; }
+figure { margin: 4mm 0; page-break-inside: avoid; }
+figcaption { font-style: italic; font-size: 8.5pt; }
+"""
+
+
+def figure_svg(figure: Figure, font: QFont) -> str:
+    """The figure painted into an SVG of its size in mm (true scale when printed)."""
+    px = SVG_DPI / 25.4
+    size = QSize(math.ceil(figure.width_mm * px), math.ceil(figure.height_mm * px))
+    data = QByteArray()
+    buffer = QBuffer(data)
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    generator = QSvgGenerator()
+    generator.setOutputDevice(buffer)
+    generator.setSize(size)
+    generator.setViewBox(QRectF(0, 0, size.width(), size.height()))
+    generator.setResolution(int(SVG_DPI))
+    painter = QPainter(generator)
+    try:
+        painter.setFont(font)
+        figure.paint(painter, QRectF(0, 0, size.width(), size.height()), px)
+    finally:
+        painter.end()
+    buffer.close()
+    text = bytes(data).decode("utf-8")
+    return text[text.index("<svg"):]
+
+
+def _table(block: Table) -> str:
+    out = []
+    if block.caption:
+        out.append(f'<p class="caption">{html.escape(block.caption)}</p>')
+    out.append('<table class="data"><tr>' + "".join(f"<th>{html.escape(h)}</th>" for h in block.header)
+               + "</tr>")
+    for r, row in enumerate(block.rows):
+        special = ' class="special"' if block.shaded and block.shaded[r] else ""
+        cells = "".join(("<td class='l'>" if c < block.left_columns else "<td>") + html.escape(v) + "</td>"
+                        for c, v in enumerate(row))
+        out.append(f"<tr{special}>{cells}</tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+def report_html(report: Report) -> str:
+    font = report_font(report.language, 8.0)
+    body = [f'<div class="title"><h1>{html.escape(report.title)}</h1><table><tr>'
+            f"<td>{html.escape(report.name)}</td><td>{html.escape(report.date)}</td>"
+            f"<td>Shaper Designer</td></tr></table></div>"]
+    for block in report.blocks:
+        if isinstance(block, Heading):
+            body.append(f"<h2>{html.escape(block.text)}</h2>")
+        elif isinstance(block, Paragraph):
+            body.append(f"<p>{block.html}</p>")
+        elif isinstance(block, KeyValues):
+            body.append('<table class="kv">' + "".join(
+                f"<tr><td>{html.escape(k)}</td><td>{html.escape(v)}</td></tr>" for k, v in block.rows)
+                + "</table>")
+        elif isinstance(block, Table):
+            body.append(_table(block))
+        elif isinstance(block, Figure):
+            caption = f"<figcaption>{html.escape(block.caption)}</figcaption>" if block.caption else ""
+            body.append(f"<figure>{figure_svg(block, font)}{caption}</figure>")
+    lang = "zh-CN" if report.language.startswith("zh") else "en"
+    style = STYLE % {"family": ", ".join(f"'{f}'" for f in report_font(report.language).families())}
+    return (f'<!DOCTYPE html>\n<html lang="{lang}"><head><meta charset="utf-8">'
+            f"<title>{html.escape(report.title)} — {html.escape(report.name)}</title>"
+            f"<style>{style}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")

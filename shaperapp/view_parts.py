@@ -1,0 +1,34 @@
+"""Parts shared by the views that show one crank speed at a time: the speed box and
+the bar-above-body layout."""
+from __future__ import annotations
+
+from typing import Sequence
+
+from PySide6.QtCore import QCoreApplication
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QVBoxLayout, QWidget
+
+
+def fill_speed_combo(combo: QComboBox, rpms: Sequence[float]) -> None:
+    """List ``rpms`` as 'n r/min' without emitting signals; keep the chosen speed when it
+    still exists, else the first."""
+    values = [float(r) for r in rpms]
+    chosen = combo.currentData()
+    combo.blockSignals(True)
+    combo.clear()
+    for rpm in values:
+        combo.addItem(QCoreApplication.translate("SpeedCombo", "%1 r/min").replace("%1", f"{rpm:g}"), rpm)
+    combo.setCurrentIndex(values.index(chosen) if chosen in values else 0)
+    combo.blockSignals(False)
+
+
+def bar_over_body(owner: QWidget, left: Sequence[QWidget], right: QWidget, body: QWidget) -> None:
+    """Lay out ``owner``: a row of controls (``left`` …, stretch, ``right``) above ``body``."""
+    bar = QHBoxLayout()
+    for widget in left:
+        bar.addWidget(widget)
+    bar.addStretch(1)
+    bar.addWidget(right)
+    layout = QVBoxLayout(owner)
+    layout.setContentsMargins(4, 4, 4, 4)
+    layout.addLayout(bar)
+    layout.addWidget(body, 1)

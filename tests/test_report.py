@@ -1,0 +1,145 @@
+"""The design report: real ``shaper report`` runs whose text layer carries the CLI's numbers."""
+import json
+import re
+import shutil
+import subprocess
+import unicodedata
+
+import numpy as np
+import pytest
+
+from cli_runner import shaper
+from core.positions import display_values, number_text
+
+DESIGN = ["--crank", "100", "--K", "1.4", "--stroke", "300", "--rod-ratio", "0.3"]
+SPEEDS = ["--rpm", "40", "60"]
+LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70",
+         "--cut-force", "7000", "--cut-height", "80"]
+needs_pdftotext = pytest.mark.skipif(shutil.which("pdftotext") is None, reason="pdftotext not installed")
+
+
+def squash(text: str) -> str:
+    return re.sub(r"\s+", " ", text)
+
+
+def cli_values(*command: str) -> list[str]:
+    """Every number-bearing value the CLI prints as 'label  value', split at ' / '."""
+    result = shaper(*command)
+    assert result.returncode == 0, result.stderr
+    values = []
+    for line in result.stdout.splitlines():
+        parts = re.split(r"\s{2,}", line.strip(), maxsplit=1)
+        if len(parts) == 2 and re.search(r"\d", parts[1]) and "% of the stroke" not in parts[1]:
+            values += [v.replace(" (trailing)", "") for v in parts[1].split(" / ")]
+    return values
+
+
+def table_values() -> list[str]:
+    """A sample of the positions table as the report must print it."""
+    result = shaper("table", *DESIGN, *SPEEDS, *LOADS, "--json")
+    records = json.loads(result.stdout)
+    columns = [k for k in records[0] if k not in ("position", "name")]
+    data = np.array([[np.nan if r[c] is None else r[c] for c in columns] for r in records])
+    shown = display_values(data)
+    picks = [(3, "ram_v_m_s"), (3, "lever_omega_rad_s"), (16, "ram_v_m_s"), (16, "crank_torque_N_m"),
+             (20, "O4_x_N"), (23, "coriolis_m_s2"), (14, "crank_deg"), (15, "pressure_angle_deg")]
+    return [number_text(shown[row, columns.index(col)]) for row, col in picks]
+
+
+@pytest.fixture(scope="module")
+def expected():
+    values = cli_values("synth", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rod-ratio", "0.3")
+    values += cli_values("analyze", *DESIGN, *SPEEDS)
+    values += cli_values("dynamics", *DESIGN, *SPEEDS, *LOADS)
+    values += table_values()
+    assert len(values) > 30
+    return values
+
+
+@pytest.fixture(scope="module")
+def reports(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("reports")
+    out = {}
+    for name, extra in (("en.pdf", []), ("zh.pdf", ["--lang", "zh"]), ("en.html", ["--html"])):
+        result = shaper("report", *DESIGN, *SPEEDS, *LOADS, "-o", folder / name, "--title", "Classic",
+                        *extra)
+        assert result.returncode == 0, result.stderr
+        assert result.stderr == ""
+        out[name] = folder / name
+    return out
+
+
+def pdf_text(path) -> str:
+    return subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True,
+                          check=True).stdout
+
+
+@needs_pdftotext
+@pytest.mark.parametrize("name", ["en.pdf", "zh.pdf"])
+def test_pdf_text_layer_has_the_cli_numbers(reports, expected, name):
+    text = squash(pdf_text(reports[name]))
+    missing = [v for v in expected if v not in text]
+    assert missing == []
+    assert "Classic" in text
+    pages = re.findall(r"(\d+) / (\d+)", text)
+    assert pages and pages[-1][0] == pages[-1][1] and int(pages[-1][1]) >= 8
+
+
+@needs_pdftotext
+def test_chinese_report_is_in_chinese(reports):
+    # pdftotext writes some characters as Kangxi radicals (⽜ for 牛); NFKC folds them back
+    text = re.sub(r"\s+", "", unicodedata.normalize("NFKC", pdf_text(reports["zh.pdf"])))
+    for radical, char in (("\u2ec6", "角"), ("\u2ed3", "长"), ("\u2edc", "飞"), ("\u2eda", "页")):
+        text = text.replace(radical, char)          # radicals NFKC leaves alone
+    for word in ("牛头刨床导杆机构设计说明书", "极位夹角", "行程速比系数", "速度多边形", "加速度多边形",
+                 "哥氏加速度", "飞轮", "曲柄平衡力矩"):
+        assert word in text, word
+    assert "Design inputs" not in text
+
+
+def test_html_report_has_the_same_numbers_and_figures(reports, expected):
+    html = reports["en.html"].read_text(encoding="utf-8")
+    text = squash(re.sub(r"<[^>]+>", " ", html.split("<body>", 1)[1]).replace("&#x27;", "'"))
+    missing = [v for v in expected if v not in text]
+    assert missing == []
+    assert html.count("<svg") >= 8              # two schemes… curves, 6 polygons, forces
+    assert "μv = " in html or "v = " in html
+
+
+def test_pdf_is_a4(reports):
+    head = reports["en.pdf"].read_bytes()
+    assert head.startswith(b"%PDF")
+    assert re.search(rb"/MediaBox \[0 0 595(\.0+)? 84[12](\.0+)?\]", head)
+
+
+@pytest.mark.parametrize("words, option", [
+    (["--K", "0.9", "--crank", "100", "--stroke", "300"], "--K"),
+    (DESIGN + ["--positions", "0"], "--positions"),
+    (DESIGN + ["--diagrams", "10"], "--diagrams"),
+    (DESIGN + ["--lang", "fr"], "--lang"),
+])
+def test_bad_input_is_one_line(tmp_path, words, option):
+    result = shaper("report", *words, "-o", tmp_path / "r.pdf")
+    assert result.returncode == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and option in lines[0]
+    assert not (tmp_path / "r.pdf").exists()
+
+
+def test_missing_output_folder(tmp_path):
+    result = shaper("report", *DESIGN, "-o", tmp_path / "nope" / "r.pdf")
+    assert result.returncode == 2 and "--output" in result.stderr
+
+
+def test_no_chinese_font_names_the_package(qtbot, monkeypatch, tmp_path, capsys):
+    from core.cli import main
+    from shaperapp import i18n
+    from shaperapp.report import fonts
+    monkeypatch.setattr(fonts, "cjk_family", lambda: None)
+    try:
+        status = main(["report", *DESIGN, "--lang", "zh", "-o", str(tmp_path / "r.pdf")])
+    finally:
+        i18n.set_language("en")
+    err = capsys.readouterr().err.strip().splitlines()
+    assert status == 2 and len(err) == 1 and "fonts-noto-cjk" in err[0]
+    assert not (tmp_path / "r.pdf").exists()
