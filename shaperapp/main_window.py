@@ -285,4 +285,6 @@ class MainWindow(QMainWindow):
             return
         self.settings.setValue("geometry", self.saveGeometry())
         self.settings.setValue("splitter", self.splitter.saveState())
+        if self._guide is not None:
+            self._guide.close()
         event.accept()

@@ -111,3 +111,9 @@ def test_help_guide_opens_and_follows_the_language(window):
     assert "User guide" in guide.browser.toPlainText()
     window.set_language("zh_CN")
     assert "使用指南" in guide.browser.toPlainText()
+
+
+def test_closing_the_window_closes_the_guide(window):
+    window.act_guide.trigger()
+    window.close()
+    assert not window._guide.isVisible()
