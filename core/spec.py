@@ -9,14 +9,15 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
-from .errors import DesignError
-from .geometry import Design, from_dimensions, synthesize
+from .errors import DesignError, require_range
+from .geometry import MAX_ROD_RATIO, MAX_TIME_RATIO, Design, from_dimensions, require_length, synthesize
 
 MODES = ("synthesis", "dimensions")
 VARIANTS = ("block", "rod")
 GUIDE_RULES = ("chord", "sagitta", "height")
 ROD_INPUTS = ("ratio", "length")
 ROD_SIDES = ("trailing", "leading")
+LENGTH_FIELDS = ("crank", "stroke", "frame", "lever", "guide_height", "rod_length")
 
 
 @dataclass(frozen=True)
@@ -37,13 +38,28 @@ class Spec:
     rod_ratio: float = 0.3
     rod_side: str = "trailing"
 
-    def design(self) -> Design:
-        """Synthesize or assemble the design; raises DesignError on bad input."""
+    def check_fields(self) -> None:
+        """Check every field on its own, the inactive ones too (K and H in dimensions
+        mode, the rod in the block variant …), with the same bounds as when active.
+
+        :meth:`design` checks only what the current mode uses; this makes sure a
+        spec that is saved holds no value that would be refused after a switch."""
+        self._check_choices()
+        for name in LENGTH_FIELDS:
+            require_length(name, getattr(self, name))
+        require_range("time_ratio", self.time_ratio, 1.0, MAX_TIME_RATIO)
+        require_range("rod_ratio", self.rod_ratio, 0.0, MAX_ROD_RATIO)
+
+    def _check_choices(self) -> None:
         for name, allowed in (("mode", MODES), ("variant", VARIANTS),
                               ("guide_rule", GUIDE_RULES), ("rod_input", ROD_INPUTS),
                               ("rod_side", ROD_SIDES)):
             if getattr(self, name) not in allowed:
                 raise DesignError(name, getattr(self, name), "must be one of " + ", ".join(allowed))
+
+    def design(self) -> Design:
+        """Synthesize or assemble the design; raises DesignError on bad input."""
+        self._check_choices()
         guide = self.guide_height if self.guide_rule == "height" else self.guide_rule
         rod = ratio = None
         if self.variant == "rod":
