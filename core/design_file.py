@@ -21,7 +21,7 @@ import numpy as np
 
 from .dynamics import MassProperties
 from .errors import DesignError, FileFormatError
-from .kinematics import MAX_ANGLES, check_rpms, crank_angles
+from .kinematics import MAX_ANGLES, MAX_RPM, check_rpms, crank_angles
 from .spec import Spec
 
 FILE_FORMAT = "shaper-design"
@@ -32,7 +32,7 @@ MAX_DEPTH = 16
 """Deepest nesting of arrays/objects accepted (a design file needs 3)."""
 MAX_INT_DIGITS = 20
 """Longer integer literals are refused before Python turns them into huge ints."""
-MIN_FILE_RPM = 1e-3
+MIN_RPM = 1e-3
 """Smallest crank speed a file may hold, r/min. Below it cycle times overflow; core's own
 lower bound (``core.kinematics``) takes over when it is stricter."""
 DEFAULT_FILE_RPMS = (40.0, 60.0)
@@ -193,20 +193,33 @@ def _rpms(data: object, name: str) -> list[float]:
             raise FileFormatError(f"{name}: crank speed {json.dumps(value)[:40]} is not a number")
     values = [float(v) for v in check_rpms(data)]
     low = min(values)
-    if low < MIN_FILE_RPM:
+    if low < MIN_RPM:
         raise FileFormatError(f"{name}: crank speed {low:g} r/min is below the smallest "
-                              f"speed a design may hold ({MIN_FILE_RPM:g} r/min)")
+                              f"speed a design may hold ({MIN_RPM:g} r/min)")
     return values
 
 
 def _step(value: object, name: str) -> float:
     if not _is_number(value):
         raise FileFormatError(f"{name}: 'step_deg' must be a number of degrees")
-    step = float(value)
-    if step > 0.0 and 360.0 / step >= MAX_ANGLES:   # before crank_angles divides by it
+    return check_step(float(value))
+
+
+def check_step(step: float) -> float:
+    """An angle step crank_angles accepts, refused before it divides by a tiny step."""
+    if isinstance(step, float) and 0.0 < step and 360.0 / step >= MAX_ANGLES:
         raise DesignError("step", step, f"gives more than {MAX_ANGLES} angles; use a larger step")
     crank_angles(step)
-    return step
+    return float(step)
+
+
+def check_speeds(rpms) -> tuple[float, ...]:
+    """Crank speeds as core accepts them, and at least MIN_RPM (slower ones overflow times)."""
+    values = tuple(float(v) for v in check_rpms(list(rpms)))
+    for value in values:
+        if value < MIN_RPM:
+            raise DesignError("rpm", value, f"must be ≥ {MIN_RPM:g} and ≤ {MAX_RPM:g} r/min")
+    return values
 
 
 def masses_to_dict(masses: MassProperties) -> dict[str, Any]:

@@ -17,7 +17,8 @@ VARIANTS = ("block", "rod")
 GUIDE_RULES = ("chord", "sagitta", "height")
 ROD_INPUTS = ("ratio", "length")
 ROD_SIDES = ("trailing", "leading")
-LENGTH_FIELDS = ("crank", "stroke", "frame", "lever", "guide_height", "rod_length")
+NUMBER_FIELDS = ("crank", "time_ratio", "stroke", "frame", "lever", "guide_height",
+                 "rod_length", "rod_ratio")
 
 
 @dataclass(frozen=True)
@@ -45,10 +46,49 @@ class Spec:
         :meth:`design` checks only what the current mode uses; this makes sure a
         spec that is saved holds no value that would be refused after a switch."""
         self._check_choices()
-        for name in LENGTH_FIELDS:
-            require_length(name, getattr(self, name))
-        require_range("time_ratio", self.time_ratio, 1.0, MAX_TIME_RATIO)
-        require_range("rod_ratio", self.rod_ratio, 0.0, MAX_ROD_RATIO)
+        for name in NUMBER_FIELDS:
+            self.check_field(name)
+
+    def check_field(self, name: str) -> None:
+        """Check one number field on its own bounds (DesignError names it)."""
+        value = getattr(self, name)
+        if name == "time_ratio":
+            require_range(name, value, 1.0, MAX_TIME_RATIO)
+        elif name == "rod_ratio":
+            require_range(name, value, 0.0, MAX_ROD_RATIO)
+        else:
+            require_length(name, value)
+
+    def active_fields(self) -> frozenset[str]:
+        """The number fields the current mode, variant, guide rule and rod input use."""
+        names = {"crank"} | ({"time_ratio", "stroke"} if self.mode == "synthesis" else {"frame", "lever"})
+        if self.guide_rule == "height":
+            names.add("guide_height")
+        if self.variant == "rod":
+            names.add("rod_length" if self.rod_input == "length" else "rod_ratio")
+        return frozenset(names)
+
+    def switch_mode(self, mode: str, design: Design) -> "Spec":
+        """This spec in ``mode``, carrying ``design`` over: its L2 and L3 into direct
+        dimensions, or the K and H it implies into synthesis.
+
+        The carried values are rounded to 10 significant digits where that keeps the
+        design valid, else nudged by a few parts in 10¹² (a design on a bound, K = 5 or
+        L3 = L2 + L1, may fall just outside it after a round trip through sin and asin)."""
+        if mode == self.mode or mode not in MODES:
+            return replace(self, mode=mode)
+        if mode == "dimensions":
+            carried = {"frame": design.frame, "lever": design.lever}
+        else:
+            carried = {"time_ratio": design.time_ratio, "stroke": design.stroke}
+        base = replace(self, mode=mode, **carried)
+        for candidate in _nudged(base, carried):
+            try:
+                candidate.design()
+            except DesignError:
+                continue
+            return candidate
+        return base
 
     def _check_choices(self) -> None:
         for name, allowed in (("mode", MODES), ("variant", VARIANTS),
@@ -94,3 +134,18 @@ class Spec:
                     raise DesignError(key, value, "must be a number")
                 values[key] = float(value)
         return replace(cls(), **values)
+
+
+def _round(value: float, digits: int = 10) -> float:
+    return float(f"{value:.{digits}g}")
+
+
+def _nudged(base: Spec, carried: dict[str, float]):
+    """Candidates near the carried values: rounded first, then exact, then nudged."""
+    names = list(carried)
+    yield replace(base, **{n: _round(v) for n, v in carried.items()})
+    yield base
+    factors = (1.0, 1.0 + 1e-12, 1.0 - 1e-12, 1.0 + 1e-10, 1.0 - 1e-10, 1.0 + 1e-9, 1.0 - 1e-9)
+    for f0 in factors:
+        for f1 in factors:
+            yield replace(base, **{names[0]: carried[names[0]] * f0, names[1]: carried[names[1]] * f1})

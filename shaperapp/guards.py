@@ -1,0 +1,92 @@
+"""Application-wide event filters that keep input predictable.
+
+* :class:`WheelGuard` — the mouse wheel never changes a choice, number or slider
+  the user has not focused: such widgets take focus only by click or Tab, and a
+  wheel over them while unfocused scrolls the panel beneath instead.
+* :class:`ShortcutGuard` — the window's shortcuts work wherever the focus is. A
+  line edit claims Ctrl+E, Ctrl+Left/Right, Ctrl+Z … for its own editing; for
+  the keys of the window's actions the guard declines that claim, so the action
+  runs. A bare key (Space to play) still types into a text field.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtGui import QAction, QKeyEvent, QKeySequence
+from PySide6.QtWidgets import (QAbstractSpinBox, QApplication, QComboBox, QLineEdit, QPlainTextEdit,
+                               QScrollBar, QSlider, QTextEdit, QWidget)
+
+_WHEEL_TARGETS = (QComboBox, QAbstractSpinBox, QSlider)
+
+
+def is_text_input(widget: QWidget | None) -> bool:
+    """A widget in which a bare key types text."""
+    if isinstance(widget, QComboBox):
+        return widget.isEditable()
+    return isinstance(widget, (QLineEdit, QTextEdit, QPlainTextEdit, QAbstractSpinBox))
+
+
+def _wheel_target(obj: QObject) -> bool:
+    return isinstance(obj, _WHEEL_TARGETS) and not isinstance(obj, QScrollBar)
+
+
+class WheelGuard(QObject):
+    """Installed once on the application (see :func:`install_wheel_guard`)."""
+
+    def eventFilter(self, obj: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
+        kind = event.type()
+        if kind == QEvent.Type.Polish and _wheel_target(obj):
+            self.protect(obj)
+        elif kind == QEvent.Type.Wheel and _wheel_target(obj) and not obj.hasFocus():
+            event.ignore()        # ignored: Qt passes it on to the parent (the scroll area)
+            return True
+        return False
+
+    @staticmethod
+    def protect(widget: QWidget) -> None:
+        if widget.focusPolicy() == Qt.FocusPolicy.WheelFocus:
+            widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
+
+
+def install_wheel_guard() -> None:
+    """Guard every present and future combo box, spin box and slider (idempotent)."""
+    app = QApplication.instance()
+    if app is None or app.property("shaperWheelGuard"):
+        return
+    guard = WheelGuard(app)
+    app.installEventFilter(guard)
+    app.setProperty("shaperWheelGuard", True)
+    for top in app.allWidgets():
+        if _wheel_target(top):
+            guard.protect(top)
+
+
+class ShortcutGuard(QObject):
+    """Lets ``window``'s action shortcuts win over a focused widget's own key bindings."""
+
+    def __init__(self, window: QWidget) -> None:
+        super().__init__(window)
+        self._window = window
+
+    def eventFilter(self, obj: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
+        if event.type() != QEvent.Type.ShortcutOverride or not isinstance(event, QKeyEvent):
+            return False
+        focus = QApplication.focusWidget()
+        if focus is None or obj is not focus or focus.window() is not self._window:
+            return False
+        pressed = QKeySequence(event.keyCombination())
+        bare = event.modifiers() in (Qt.KeyboardModifier.NoModifier, Qt.KeyboardModifier.KeypadModifier)
+        if bare and is_text_input(focus):
+            return False          # Space, letters … type text
+        if self._is_window_shortcut(pressed):
+            event.ignore()        # not claimed by the widget: the shortcut map runs the action
+            return True
+        return False
+
+    def _is_window_shortcut(self, pressed: QKeySequence) -> bool:
+        for action in self._window.findChildren(QAction):
+            if not action.isEnabled():
+                continue
+            for sequence in action.shortcuts():
+                if sequence.matches(pressed) == QKeySequence.SequenceMatch.ExactMatch:
+                    return True
+        return False
