@@ -72,11 +72,16 @@ class Spec:
         """This spec in ``mode``, carrying ``design`` over: its L2 and L3 into direct
         dimensions, or the K and H it implies into synthesis.
 
-        The carried values are rounded to 10 significant digits where that keeps the
-        design valid, else nudged by a few parts in 10¹² (a design on a bound, K = 5 or
-        L3 = L2 + L1, may fall just outside it after a round trip through sin and asin)."""
+        The fields of ``mode`` are kept when they already give ``design`` (to 1e-9), so
+        K and H come back as typed after a switch there and back. Otherwise the carried
+        values are rounded to 12 significant digits where that keeps the design valid,
+        else nudged by a few parts in 10¹² (a design on a bound, K = 5 or L3 = L2 + L1,
+        may fall just outside it after a round trip through sin and asin)."""
         if mode == self.mode or mode not in MODES:
             return replace(self, mode=mode)
+        kept = replace(self, mode=mode)
+        if _gives(kept, design):
+            return kept
         if mode == "dimensions":
             carried = {"frame": design.frame, "lever": design.lever}
         else:
@@ -136,14 +141,24 @@ class Spec:
         return replace(cls(), **values)
 
 
-def _round(value: float, digits: int = 10) -> float:
-    return float(f"{value:.{digits}g}")
+def _gives(spec: Spec, design: Design, rel: float = 1e-9) -> bool:
+    """Whether ``spec`` is valid and gives ``design`` to ``rel``."""
+    try:
+        other = spec.design()
+    except DesignError:
+        return False
+    if (other.rod is None) != (design.rod is None):
+        return False
+    pairs = [(getattr(other, n), getattr(design, n)) for n in ("crank", "frame", "lever", "guide")]
+    if design.rod is not None:
+        pairs.append((other.rod, design.rod))
+    return all(abs(a - b) <= rel * abs(b) for a, b in pairs)
 
 
 def _nudged(base: Spec, carried: dict[str, float]):
     """Candidates near the carried values: rounded first, then exact, then nudged."""
     names = list(carried)
-    yield replace(base, **{n: _round(v) for n, v in carried.items()})
+    yield replace(base, **{n: float(f"{v:.12g}") for n, v in carried.items()})
     yield base
     factors = (1.0, 1.0 + 1e-12, 1.0 - 1e-12, 1.0 + 1e-10, 1.0 - 1e-10, 1.0 + 1e-9, 1.0 - 1e-9)
     for f0 in factors:

@@ -109,7 +109,7 @@ def assert_nothing_invalid_is_kept(model) -> None:
 
 def shown_values(form: DesignForm) -> dict:
     values = {name: parse_number(form.field(name).text()) for name in DESIGN_FIELDS + ("step",)}
-    values["speeds"] = [form._speeds.item(i).text() for i in range(form._speeds.count())]
+    values["speeds"] = [parse_number(form._speeds.item(i).text()) for i in range(form._speeds.count())]
     values["choices"] = {name: form._combo(name).currentData() for name in CHOICES}
     values["mode"] = "synthesis" if form._synth_radio.isChecked() else "dimensions"
     return values
