@@ -2,7 +2,7 @@
 
 * :class:`WheelGuard` — the mouse wheel never changes a choice, number or slider
   the user has not focused: such widgets take focus only by click or Tab, and a
-  wheel over them while unfocused scrolls the panel beneath instead.
+  wheel over them while unfocused scrolls the panel they sit in instead.
 * :class:`ShortcutGuard` — the window's shortcuts work wherever the focus is. A
   line edit claims Ctrl+E, Ctrl+Left/Right, Ctrl+Z … for its own editing; for
   the keys of the window's actions the guard declines that claim, so the action
@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QAction, QKeyEvent, QKeySequence
-from PySide6.QtWidgets import (QAbstractSpinBox, QApplication, QComboBox, QLineEdit, QPlainTextEdit,
+from PySide6.QtWidgets import (QAbstractScrollArea, QAbstractSpinBox, QApplication, QComboBox, QLineEdit, QPlainTextEdit,
                                QScrollBar, QSlider, QTextEdit, QWidget)
 
 _WHEEL_TARGETS = (QComboBox, QAbstractSpinBox, QSlider)
@@ -23,6 +23,13 @@ def is_text_input(widget: QWidget | None) -> bool:
     if isinstance(widget, QComboBox):
         return widget.isEditable()
     return isinstance(widget, (QLineEdit, QTextEdit, QPlainTextEdit, QAbstractSpinBox))
+
+
+def _scroll_area(widget: QWidget) -> QAbstractScrollArea | None:
+    parent = widget.parentWidget()
+    while parent is not None and not isinstance(parent, QAbstractScrollArea):
+        parent = parent.parentWidget()
+    return parent
 
 
 def _wheel_target(obj: QObject) -> bool:
@@ -37,7 +44,9 @@ class WheelGuard(QObject):
         if kind == QEvent.Type.Polish and _wheel_target(obj):
             self.protect(obj)
         elif kind == QEvent.Type.Wheel and _wheel_target(obj) and not obj.hasFocus():
-            event.ignore()        # ignored: Qt passes it on to the parent (the scroll area)
+            area = _scroll_area(obj)
+            if area is not None:              # scroll the panel the widget sits in
+                QApplication.sendEvent(area.verticalScrollBar(), event)
             return True
         return False
 

@@ -194,8 +194,8 @@ class DesignModel(QObject):
         old = self._inputs.spec
         mode = changes.pop("mode", old.mode)
         spec = replace(old, **changes)
-        if mode != old.mode:
-            spec = spec.switch_mode(mode, self._design)
+        if mode != old.mode:       # carried over, except what was given with the switch
+            spec = replace(spec.switch_mode(mode, self._design), **changes)
         requested, spec = spec, self._settle_inactive(spec)
         if spec == old:
             if requested != old:
@@ -376,10 +376,12 @@ class DesignModel(QObject):
             raise DesignError("step", inputs.step, "must be a number")
         angles = crank_angles(check_step(float(inputs.step)))
         if angles.size * len(rpms) > MAX_GUI_SAMPLES:
-            smallest = 360.0 * len(rpms) / MAX_GUI_SAMPLES
+            # n angles for a step s: floor(360/s) + 1, and 360° itself when s does not divide it
+            smallest = 360.0 / (MAX_GUI_SAMPLES // len(rpms) - 2)
+            scale = 10.0 ** (2 - math.floor(math.log10(smallest)))
             raise DesignError("step", float(inputs.step),
-                              f"must be ≥ {smallest:.3g} ° with {len(rpms)} speeds, so that the "
-                              f"window stays responsive")
+                              f"must be ≥ {math.ceil(smallest * scale) / scale:g} ° with {len(rpms)} "
+                              "speeds, so that the window stays responsive")
         return design, solve(design, angles, rpms), analyze(design, rpms)
 
     def _compute(self, inputs: Inputs, masses: MassProperties):
