@@ -10,6 +10,8 @@
 """
 from __future__ import annotations
 
+from typing import Callable
+
 from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QAction, QKeyEvent, QKeySequence
 from PySide6.QtWidgets import (QAbstractScrollArea, QAbstractSpinBox, QApplication, QComboBox, QLineEdit, QPlainTextEdit,
@@ -72,9 +74,12 @@ def install_wheel_guard() -> None:
 class ShortcutGuard(QObject):
     """Lets ``window``'s action shortcuts win over a focused widget's own key bindings."""
 
-    def __init__(self, window: QWidget) -> None:
+    def __init__(self, window: QWidget, before: Callable[[], None]) -> None:
+        """``before`` runs when one of the window's shortcuts is pressed, before the
+        action is looked up (the window sends pending typing, which may enable Undo)."""
         super().__init__(window)
         self._window = window
+        self._before = before
 
     def eventFilter(self, obj: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
         if event.type() != QEvent.Type.ShortcutOverride or not isinstance(event, QKeyEvent):
@@ -86,16 +91,16 @@ class ShortcutGuard(QObject):
         bare = event.modifiers() in (Qt.KeyboardModifier.NoModifier, Qt.KeyboardModifier.KeypadModifier)
         if bare and is_text_input(focus):
             return False          # Space, letters … type text
-        if self._is_window_shortcut(pressed):
+        actions = self._actions_for(pressed)
+        if not actions:
+            return False
+        self._before()
+        if any(action.isEnabled() for action in actions):
             event.ignore()        # not claimed by the widget: the shortcut map runs the action
             return True
-        return False
+        return False              # e.g. nothing to undo: the field's own binding may act
 
-    def _is_window_shortcut(self, pressed: QKeySequence) -> bool:
-        for action in self._window.findChildren(QAction):
-            if not action.isEnabled():
-                continue
-            for sequence in action.shortcuts():
-                if sequence.matches(pressed) == QKeySequence.SequenceMatch.ExactMatch:
-                    return True
-        return False
+    def _actions_for(self, pressed: QKeySequence) -> list[QAction]:
+        return [action for action in self._window.findChildren(QAction)
+                if any(sequence.matches(pressed) == QKeySequence.SequenceMatch.ExactMatch
+                       for sequence in action.shortcuts())]

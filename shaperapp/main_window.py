@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 
+import shiboken6
 from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
 from PySide6.QtWidgets import (QApplication, QFileDialog, QInputDialog, QLineEdit, QMainWindow, QMessageBox,
@@ -70,7 +71,7 @@ class MainWindow(QMainWindow):
         self._build_actions()
         self._build_menus()
         install_wheel_guard()
-        self._shortcut_guard = ShortcutGuard(self)
+        self._shortcut_guard = ShortcutGuard(self, self.flush_typing)
         QApplication.instance().installEventFilter(self._shortcut_guard)
         self.document.failed.connect(self._show_failure)
         self.document.recentChanged.connect(self._fill_recent)
@@ -105,7 +106,9 @@ class MainWindow(QMainWindow):
         triggered through :meth:`flush_typing` first."""
         action.triggered.disconnect()
         action.triggered.connect(lambda *_: (self.flush_typing(), step()))
-        shortcuts = QKeySequence.keyBindings(keys) + ([QKeySequence(extra)] if extra else [])
+        shortcuts = QKeySequence.keyBindings(keys)
+        if extra and QKeySequence(extra) not in shortcuts:    # the same key twice would be ambiguous
+            shortcuts.append(QKeySequence(extra))
         action.setShortcuts(shortcuts)
         self.addAction(action)
         return action
@@ -133,8 +136,8 @@ class MainWindow(QMainWindow):
                                            QKeySequence.StandardKey.Undo)
         self.act_redo = self._stack_action(stack.createRedoAction(self, self.tr("Redo")), stack.redo,
                                            QKeySequence.StandardKey.Redo, "Ctrl+Shift+Z")
-        for signal in (stack.undoTextChanged, stack.redoTextChanged):
-            signal.connect(self._show_undo_texts)
+        stack.undoTextChanged.connect(self._show_undo_text)
+        stack.redoTextChanged.connect(self._show_redo_text)
         self.act_goto = self._action(self.go_to_angle_dialog, "Ctrl+G")
         # The widgets own these actions (and their texts); the window only adds shortcuts.
         self.act_play = self._shortcut(self.animation.play_action, "Space")
@@ -227,19 +230,23 @@ class MainWindow(QMainWindow):
         self.menu_recent.setTitle(self.tr("Open &Recent"))
         self.menu_view.setTitle(self.tr("&View"))
         self.menu_edit.setTitle(self.tr("&Edit"))
-        self._show_undo_texts()
+        self._show_undo_text(self.model.undo_stack.undoText())
+        self._show_redo_text(self.model.undo_stack.redoText())
         self.menu_lang.setTitle(self.tr("&Language"))
         self.menu_anim.setTitle(self.tr("&Animation"))
         self.menu_help.setTitle(self.tr("&Help"))
         self._update_title()
         self._show_status()
 
-    def _show_undo_texts(self, *_) -> None:
+    def _show_undo_text(self, text: str) -> None:
         """'Undo Time ratio K' in the current language (the stack's own prefix is fixed
-        when the action is made)."""
-        stack = self.model.undo_stack
-        self.act_undo.setText(self.tr("&Undo %1").replace("%1", stack.undoText()).strip())
-        self.act_redo.setText(self.tr("&Redo %1").replace("%1", stack.redoText()).strip())
+        when the action is made). The stack outlives the window: skip once it is gone."""
+        if shiboken6.isValid(self.act_undo):
+            self.act_undo.setText(self.tr("&Undo %1").replace("%1", text).strip())
+
+    def _show_redo_text(self, text: str) -> None:
+        if shiboken6.isValid(self.act_redo):
+            self.act_redo.setText(self.tr("&Redo %1").replace("%1", text).strip())
 
     def _update_title(self, *_) -> None:
         """The file name; Qt appends the application's display name, which

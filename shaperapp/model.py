@@ -306,7 +306,7 @@ class DesignModel(QObject):
             return QCoreApplication.translate("model", "switch input mode")
         if len(names) == 1:
             return field_name(names[0])
-        return QCoreApplication.translate("model", "edit %n fields", "", len(names))
+        return QCoreApplication.translate("model", "edit %1 fields").replace("%1", str(len(names)))
 
     def _settle_inactive(self, spec: Spec) -> Spec:
         """Unused fields that hold an invalid value take the last valid one back."""
