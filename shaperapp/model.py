@@ -35,9 +35,10 @@ from .undo import InputEdit, Inputs
 DEFAULT_RPMS = (40.0, 60.0)
 DEFAULT_STEP = 1.0
 MAX_SPEEDS = 16          # as core.kinematics.check_rpms allows
-# angles × speeds the window recomputes and redraws within about half a second
-# (measured on the 2-core CI machine; see README, Performance).
-MAX_GUI_SAMPLES = 200_000
+# angles × speeds the whole window recomputes and redraws within about half a second:
+# 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
+# (README, Performance). core's own cap (core.kinematics) is far larger, for the CLI.
+MAX_GUI_SAMPLES = 60_000
 # The classic course-design loads of a shaper (lever 200 N, J = 1.1 kg·m², ram 700 N,
 # cutting force 7000 N at 80 mm below the guide), so the Forces view shows a case at once.
 DEFAULT_MASSES = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
