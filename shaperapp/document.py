@@ -9,13 +9,14 @@ from __future__ import annotations
 import os
 
 from PySide6.QtCore import QObject, QSettings, Signal
-from PySide6.QtWidgets import QFileDialog, QMessageBox, QWidget
+from PySide6.QtWidgets import QMessageBox, QWidget
 
 from core.errors import DesignError, FileFormatError
 from core.dynamics_io import dynamics_csv
 from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
 from core.spec import Spec
 
+from . import file_dialogs
 from .messages import describe
 from .model import DEFAULT_RPMS, DEFAULT_STEP, DesignModel
 
@@ -133,8 +134,7 @@ class Document(QObject):
         if not self.confirm_discard(parent):
             return False
         if path is None:
-            path, _ = QFileDialog.getOpenFileName(parent, self.tr("Open design"), self.last_dir(),
-                                                  self._filter())
+            path = file_dialogs.open_file_name(parent, self.tr("Open design"), self.last_dir(), self._filter())
         return bool(path) and self.open_path(path)
 
     def confirm_valid(self, parent: QWidget, saving: bool) -> bool:
@@ -170,7 +170,7 @@ class Document(QObject):
 
     def _save_as(self, parent: QWidget) -> bool:
         start = self._model.path or os.path.join(self.last_dir(), "design.shaper.json")
-        path, _ = QFileDialog.getSaveFileName(parent, self.tr("Save design as"), start, self._filter())
+        path = file_dialogs.save_file_name(parent, self.tr("Save design as"), start, self._filter())
         return bool(path) and self.save_to(path)
 
     def export_csv_dialog(self, parent: QWidget) -> bool:
@@ -187,5 +187,5 @@ class Document(QObject):
 
     def _csv_path(self, parent: QWidget, title: str, name: str) -> str:
         start = os.path.join(self.last_dir(), name)
-        path, _ = QFileDialog.getSaveFileName(parent, title, start, self.tr("CSV files (*.csv)"))
+        path = file_dialogs.save_file_name(parent, title, start, self.tr("CSV files (*.csv)"))
         return path

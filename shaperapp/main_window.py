@@ -10,10 +10,10 @@ import os
 import shiboken6
 from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
-from PySide6.QtWidgets import (QApplication, QFileDialog, QInputDialog, QLineEdit, QMainWindow, QMessageBox,
+from PySide6.QtWidgets import (QApplication, QInputDialog, QLineEdit, QMainWindow, QMessageBox,
                                QScrollArea, QSplitter, QTabWidget, QVBoxLayout, QWidget)
 
-from . import i18n
+from . import file_dialogs, i18n
 from .animation import AnimationBar
 from .document import Document
 from .forces_panel import ForcesPanel
@@ -276,8 +276,8 @@ class MainWindow(QMainWindow):
         if not self.document.confirm_valid(self, saving=False):
             return
         start = os.path.join(self.document.last_dir(), f"{stem}.png")
-        path, _ = QFileDialog.getSaveFileName(self, self.tr("Export image"), start,
-                                              self.tr("PNG image (*.png);;SVG drawing (*.svg)"))
+        path = file_dialogs.save_file_name(self, self.tr("Export image"), start,
+                                           self.tr("PNG image (*.png);;SVG drawing (*.svg)"))
         if path:
             self.export_image_to(widget, path)
 

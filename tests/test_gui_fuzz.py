@@ -15,11 +15,11 @@ import time
 
 import pytest
 from PySide6.QtCore import QSettings, Qt
-from PySide6.QtWidgets import QApplication, QFileDialog, QInputDialog, QMessageBox
+from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
 from core.io import load_design
 from core.spec import NUMBER_FIELDS
-from shaperapp import i18n
+from shaperapp import file_dialogs, i18n
 from shaperapp.main_window import MainWindow
 from shaperapp.model import MAX_GUI_SAMPLES, DesignModel
 
@@ -193,9 +193,8 @@ def patched_dialogs(monkeypatch, tmp_path):
         monkeypatch.setattr(QMessageBox, name, lambda *a, **k: QMessageBox.StandardButton.Ok)
     monkeypatch.setattr(QMessageBox, "question", ask)
     monkeypatch.setattr(QMessageBox, "about", lambda *a, **k: None)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (state["fuzzer"].save_name(), ""))
-    monkeypatch.setattr(QFileDialog, "getOpenFileName",
-                        lambda *a, **k: (rng.choice(state["fuzzer"].files + [""]), ""))
+    monkeypatch.setattr(file_dialogs, "save_file_name", lambda *a, **k: state["fuzzer"].save_name())
+    monkeypatch.setattr(file_dialogs, "open_file_name", lambda *a, **k: rng.choice(state["fuzzer"].files + [""]))
     monkeypatch.setattr(QInputDialog, "getDouble", lambda *a, **k: (rng.uniform(-10, 370), rng.random() < 0.8))
     return state
 

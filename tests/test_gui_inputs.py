@@ -152,7 +152,7 @@ def test_export_while_invalid_asks(setup, tmp_path, monkeypatch):
     model, form, document = setup
     type_text(form, "crank", "abc")
     monkeypatch.setattr(QMessageBox, "question", lambda *a, **k: QMessageBox.StandardButton.Cancel)
-    monkeypatch.setattr("shaperapp.document.QFileDialog.getSaveFileName",
+    monkeypatch.setattr("shaperapp.file_dialogs.save_file_name",
                         lambda *a, **k: pytest.fail("no file dialog after Cancel"))
     assert not document.export_csv_dialog(None)
     assert not document.export_forces_csv_dialog(None)

@@ -1,6 +1,8 @@
 """Issue 8 items 3, 4, 6 and issue 7 item 7 in the assembled window: the Edit menu,
 shortcuts wherever the focus is, Space, Go to angle, Chinese without leaks, one-language
 title, one font weight, and clear image-export errors."""
+import re
+
 import pytest
 from PySide6.QtCore import QCoreApplication, QSettings, Qt, QTranslator
 from PySide6.QtGui import QFont, QGuiApplication, QKeySequence
@@ -126,6 +128,12 @@ def test_qt_dialogs_are_chinese_too(window):
     window.set_language("zh_CN")
     assert QCoreApplication.translate("QPlatformTheme", "Cancel") == "取消"
     assert QCoreApplication.translate("QFileDialog", "Look in:") != "Look in:"
+    from PySide6.QtWidgets import QLabel
+    from shaperapp.file_dialogs import _dialog
+    dialog = _dialog(window, "t", "", "*.json")
+    labels = [re.sub(r"&\w", "", label.text()) for label in dialog.findChildren(QLabel)]   # no mnemonics
+    assert labels and all(not any(c.isascii() and c.isalpha() for c in text) for text in labels), labels
+    dialog.deleteLater()
     window.set_language("en")
     assert QCoreApplication.translate("QPlatformTheme", "Cancel") == "Cancel"
 
