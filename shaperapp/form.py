@@ -382,10 +382,6 @@ class DesignForm(QWidget):
         self._commit()
         self._model.set_spec(**{name: self._combo(name).currentData()})
 
-    def commit(self) -> None:
-        """Send what is typed but not yet sent (before Save, undo …)."""
-        self._commit()
-
     def _commit(self) -> None:
         """Send the fields typed into since the last commit, as typed; the model
         validates and names the one to mark. Untouched fields are not re-read, so

@@ -87,3 +87,14 @@ def test_utf8_bom_is_accepted(tmp_path):
     path = tmp_path / "bom.json"
     path.write_bytes(b"\xef\xbb\xbf" + json.dumps(VALID).encode())
     assert load_design(path)["spec"] == Spec()
+
+
+@pytest.mark.parametrize("name", ["fifo", "version_true", "rpm_strings", "link_to_dev_zero"])
+def test_cli_design_option_refuses_with_one_line(tmp_path, name):
+    """Every subcommand's --design goes through load_design: exit 2, one line, no traceback."""
+    from cli_runner import shaper
+    path = build_case(name, tmp_path)
+    result = shaper("analyze", "--design", path)
+    assert result.returncode == 2
+    assert len(result.stderr.strip().splitlines()) == 1 and "Traceback" not in result.stderr
+    assert str(path) in result.stderr

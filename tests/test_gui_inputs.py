@@ -315,3 +315,21 @@ def test_load_state_refuses_without_changing_anything(model):
     with pytest.raises(DesignError):
         model.load_state(Spec(mode="dimensions", time_ratio=0.5), [40.0], 1.0, path="x.json")
     assert (model.spec, model.design, model.undo_stack.count(), model.dirty) == before and model.path == ""
+
+
+def test_a_design_core_cannot_compute_is_reported_not_ignored(model, monkeypatch):
+    """Issue 7: a RuntimeError in the recomputation left no error on the form while the
+    old design stayed on screen; now the form says so and nothing half-changes."""
+    before = (model.design, model.motion, model.valid_spec)
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("the ram does not have exactly two dead points")
+
+    monkeypatch.setattr("shaperapp.model.analyze", broken)
+    model.set_spec(stroke=310.0)
+    assert model.error is not None and model.error.parameter == "design"
+    assert describe(model.error) == "Design: cannot be computed for these inputs; try other values"
+    assert (model.design, model.motion, model.valid_spec) == before
+    monkeypatch.undo()
+    model.set_spec(stroke=320.0)
+    assert model.error is None and model.design.stroke == pytest.approx(320.0)
