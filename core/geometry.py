@@ -21,6 +21,7 @@ from .errors import DesignError, require_range
 MIN_LENGTH_MM = 0.001
 MAX_LENGTH_MM = 100_000.0
 MAX_TIME_RATIO = 5.0
+MAX_ROD_RATIO = 10.0      # L4/L3
 # L1/L2 = sin(θ/2) at K = 5 (θ = 120°): the largest crank a frame allows.
 MAX_CRANK_RATIO = math.sin(math.pi * (MAX_TIME_RATIO - 1.0) / (MAX_TIME_RATIO + 1.0) / 2.0)
 # The rod must keep a horizontal reach |Cx − Bx| and a drive margin of this fraction of
@@ -167,7 +168,7 @@ def _rod_length(rod: float | None, rod_ratio: float | None, lever: float) -> flo
     if rod is not None and rod_ratio is not None:
         raise DesignError("rod", rod, "must be given either as a length or as a ratio L4/L3, not both")
     if rod_ratio is not None:
-        ratio = require_range("rod_ratio", rod_ratio, 0.0, 10.0)
+        ratio = require_range("rod_ratio", rod_ratio, 0.0, MAX_ROD_RATIO)
         return ratio * lever
     if rod is not None:
         return require_length("rod", rod)

@@ -112,6 +112,16 @@ def check_rpms(rpms) -> np.ndarray:
                      for v in values])
 
 
+def smallest_step(n_speeds: int, limit: int = MAX_SAMPLES) -> float:
+    """The finest angle step, °, rounded up to 3 significant digits, whose angles times
+    ``n_speeds`` stay within ``limit`` samples."""
+    most_angles = limit // max(int(n_speeds), 1)
+    # crank_angles gives floor(360/s) + 1 angles, plus 360° when s does not divide it.
+    step = 360.0 / max(most_angles - 2, 1)
+    scale = 10.0 ** (2 - math.floor(math.log10(step)))
+    return max(math.ceil(step * scale) / scale, MIN_STEP_DEG)
+
+
 def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
                   value: object = None, limit: int = MAX_SAMPLES) -> int:
     """Refuse a request of more than ``limit`` samples (angles × speeds); return the count.
@@ -119,13 +129,17 @@ def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
     Every front end calls this before computing, so that no request can
     exhaust memory: the CLI with the option the user typed as ``parameter``
     (and its ``value``, e.g. the step), the GUI with its own, smaller
-    ``limit`` if it must stay responsive.
+    ``limit`` if it must stay responsive. For the step the message names the
+    finest step allowed with this many speeds.
     """
     samples = int(n_angles) * int(n_speeds)
     if samples > limit:
+        advice = "use a larger step or fewer speeds"
+        if parameter == "step":
+            speeds = "1 speed" if int(n_speeds) == 1 else f"{int(n_speeds)} speeds"
+            advice = f"use a step of at least {smallest_step(n_speeds, limit):g}° for {speeds}"
         raise DesignError(parameter, samples if value is None else value,
-                          f"gives {samples} samples (angles × speeds), more than {limit}; "
-                          "use a larger step or fewer speeds")
+                          f"gives {samples} samples (angles × speeds), more than {limit}; {advice}")
     return samples
 
 

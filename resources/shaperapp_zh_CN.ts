@@ -290,10 +290,6 @@
         <translation>直接输入尺寸</translation>
     </message>
     <message>
-        <source>Main dimensions</source>
-        <translation>主要尺寸</translation>
-    </message>
-    <message>
         <source>Mechanism</source>
         <translation>机构</translation>
     </message>
@@ -422,11 +418,11 @@
         <translation>连杆</translation>
     </message>
     <message>
-        <source>Through the tip&apos;s extreme positions (chord)</source>
+        <source>Through the tip's extreme positions (chord)</source>
         <translation>通过导杆端部两极限位置（弦线）</translation>
     </message>
     <message>
-        <source>Mid-sagitta of the tip&apos;s arc</source>
+        <source>Mid-sagitta of the tip's arc</source>
         <translation>导杆端部圆弧矢高的中点</translation>
     </message>
     <message>
@@ -450,12 +446,20 @@
         <translation>连杆在导杆端部前方</translation>
     </message>
     <message>
-        <source>Add a crank speed</source>
-        <translation>添加一个曲柄转速</translation>
+        <source>Add a crank speed (at most %1)</source>
+        <translation>添加一个曲柄转速（最多 %1 个）</translation>
     </message>
     <message>
         <source>Remove the selected crank speed</source>
         <translation>删除选中的曲柄转速</translation>
+    </message>
+    <message>
+        <source>Synthesis inputs</source>
+        <translation>综合输入</translation>
+    </message>
+    <message>
+        <source>Link lengths</source>
+        <translation>杆长</translation>
     </message>
     <message>
         <source>The last valid design stays on screen.</source>
@@ -467,6 +471,10 @@
     <message>
         <source>Could not open the design: %1</source>
         <translation>无法打开设计：%1</translation>
+    </message>
+    <message>
+        <source>Could not open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
     </message>
     <message>
         <source>Could not save %1: %2</source>
@@ -491,6 +499,18 @@
     <message>
         <source>Open design</source>
         <translation>打开设计</translation>
+    </message>
+    <message>
+        <source>Save the last valid design instead? The invalid input is then reset to it.</source>
+        <translation>改为保存上一个有效设计吗？无效的输入将恢复为该设计的值。</translation>
+    </message>
+    <message>
+        <source>Export the results of the last valid design instead?</source>
+        <translation>改为导出上一个有效设计的结果吗？</translation>
+    </message>
+    <message>
+        <source>Invalid input</source>
+        <translation>输入无效</translation>
     </message>
     <message>
         <source>Save design as</source>
@@ -528,7 +548,7 @@
         <translation>质心位置 c</translation>
     </message>
     <message>
-        <source>Distance of the lever&apos;s centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
@@ -552,7 +572,7 @@
         <translation>质心偏移 dx</translation>
     </message>
     <message>
-        <source>Horizontal offset of the ram&apos;s centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
         <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
     </message>
     <message>
@@ -560,7 +580,7 @@
         <translation>质心偏移 dy</translation>
     </message>
     <message>
-        <source>Vertical offset of the ram&apos;s centre of mass from the ram joint C, mm (+ up)</source>
+        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
@@ -751,6 +771,14 @@
 <context>
     <name>MainWindow</name>
     <message>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
         <source>&amp;New</source>
         <translation>新建(&amp;N)</translation>
     </message>
@@ -787,7 +815,7 @@
         <translation>导出运动曲线 CSV(&amp;C)…</translation>
     </message>
     <message>
-        <source>All speeds, at the form&apos;s angle step</source>
+        <source>All speeds, at the form's angle step</source>
         <translation>全部转速，按表单中的角度步长</translation>
     </message>
     <message>
@@ -825,6 +853,14 @@
     <message>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Go to Crank Angle…</source>
+        <translation>转到曲柄转角(&amp;G)…</translation>
+    </message>
+    <message>
+        <source>Move the mechanism to a crank angle you type</source>
+        <translation>将机构移动到输入的曲柄转角</translation>
     </message>
     <message>
         <source>&amp;About</source>
@@ -867,6 +903,10 @@
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
@@ -877,6 +917,14 @@
     <message>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>撤销(&amp;U) %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>重做(&amp;R) %1</translation>
     </message>
     <message>
         <source>Untitled</source>
@@ -903,8 +951,24 @@
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg)</translation>
     </message>
     <message>
-        <source>Could not write %1: %2</source>
-        <translation>无法写入 %1：%2</translation>
+        <source>the folder %1 does not exist</source>
+        <translation>文件夹 %1 不存在</translation>
+    </message>
+    <message>
+        <source>nothing was written</source>
+        <translation>未写入任何内容</translation>
+    </message>
+    <message>
+        <source>Could not export the image to %1: %2</source>
+        <translation>无法将图像导出到 %1：%2</translation>
+    </message>
+    <message>
+        <source>Go to crank angle</source>
+        <translation>转到曲柄转角</translation>
+    </message>
+    <message>
+        <source>Crank angle φ (0–360°):</source>
+        <translation>曲柄转角 φ（0–360°）：</translation>
     </message>
     <message>
         <source>About Shaper Designer</source>
@@ -974,7 +1038,7 @@
         <translation>曲柄轴上飞轮转动惯量 J_F，kg·m²</translation>
     </message>
     <message>
-        <source>J_F less mechanism&apos;s own, kg·m²</source>
+        <source>J_F less mechanism's own, kg·m²</source>
         <translation>扣除机构自身等效惯量后的 J_F，kg·m²</translation>
     </message>
     <message>
@@ -1062,7 +1126,7 @@
         <translation>实测 K</translation>
     </message>
     <message>
-        <source>Working / return crank angle, from the ram&apos;s dead points</source>
+        <source>Working / return crank angle, from the ram's dead points</source>
         <translation>工作行程与回程的曲柄转角之比，由滑枕极限位置测得</translation>
     </message>
     <message>
@@ -1070,7 +1134,7 @@
         <translation>实测行程</translation>
     </message>
     <message>
-        <source>Distance between the ram&apos;s dead points</source>
+        <source>Distance between the ram's dead points</source>
         <translation>滑枕两极限位置之间的距离</translation>
     </message>
     <message>
@@ -1096,6 +1160,10 @@
     <message>
         <source>Largest angle between the rod and the guide</source>
         <translation>连杆与导路之间的最大夹角</translation>
+    </message>
+    <message>
+        <source>Dimensions</source>
+        <translation>机构尺寸</translation>
     </message>
     <message>
         <source>%1 mm</source>
@@ -1129,7 +1197,7 @@
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <source>Plot against the crank angle (0–360°) or against time (each speed&apos;s own cycle)</source>
+        <source>Plot against the crank angle (0–360°) or against time (each speed's own cycle)</source>
         <translation>以曲柄转角 (0–360°) 或时间（各转速自身的周期）为横坐标</translation>
     </message>
     <message>
@@ -1137,7 +1205,7 @@
         <translation>导杆曲线</translation>
     </message>
     <message>
-        <source>Show the slotted lever&apos;s angle, angular velocity or angular acceleration</source>
+        <source>Show the slotted lever's angle, angular velocity or angular acceleration</source>
         <translation>显示导杆的角位移、角速度或角加速度</translation>
     </message>
     <message>
@@ -1228,7 +1296,7 @@
         <translation>刨头—连杆杆组力多边形</translation>
     </message>
     <message>
-        <source>Cannot export to &apos;%1&apos;: use .png or .svg</source>
+        <source>Cannot export to '%1': use .png or .svg</source>
         <translation>无法导出为“%1”：请使用 .png 或 .svg</translation>
     </message>
 </context>
@@ -1396,11 +1464,11 @@
         <translation>刨头驱动方式</translation>
     </message>
     <message>
-        <source>through the lever tip&apos;s extreme positions</source>
+        <source>through the lever tip's extreme positions</source>
         <translation>通过导杆端点两极限位置</translation>
     </message>
     <message>
-        <source>midway along the tip arc&apos;s sagitta</source>
+        <source>midway along the tip arc's sagitta</source>
         <translation>位于导杆端点圆弧矢高的中点</translation>
     </message>
     <message>
@@ -1620,7 +1688,7 @@
         <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，刨头导路为直线 y = 导路高度；刨头向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。刨头 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号：1 曲柄，2 滑块，3 导杆，4 连杆，5 刨头。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip&apos;s extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
+        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)（距 O2 为 h = H/(2·tan(θ/2)) − L2）。</translation>
     </message>
     <message>
@@ -1632,7 +1700,7 @@
         <translation>&lt;b&gt;加速度分析。&lt;/b&gt;a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2，a^n_A3 = ω3²·O4A 指向 O4，a^t_A3 = α3·O4A，哥氏加速度 a^k_A3A2 = 2·ω3·v_A3A2（将 v_A3A2 沿 ω3 转向转 90°）；连杆方案 a_C = a_B + a^n_CB + a^t_CB，a^n_CB = ω4²·L4，a^t_CB = α4·L4。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d&apos;Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
+        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d'Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
         <translation>&lt;b&gt;力分析。&lt;/b&gt;曲柄匀速转动下的动态静力分析（达朗贝尔原理）：加上惯性力 F_I = −m·a_G 和惯性力矩 −J·α 后各构件处于平衡；运动副无摩擦。切削力 P 与切削方向相反，作用于工作行程的 空刀量·H 至 (1 − 空刀量)·H 之间。</translation>
     </message>
     <message>
@@ -1702,7 +1770,7 @@
 <context>
     <name>SchemeWidget</name>
     <message>
-        <source>Cannot export to &apos;{0}&apos;: use .png or .svg</source>
+        <source>Cannot export to '{0}': use .png or .svg</source>
         <translation>无法导出到“{0}”：请使用 .png 或 .svg</translation>
     </message>
     <message>
@@ -1794,6 +1862,10 @@
     <message>
         <source>An internal error occurred; the design on screen is unchanged. Details were written to %1.</source>
         <translation>发生内部错误；屏幕上的设计未改变。详细信息已写入 %1。</translation>
+    </message>
+    <message>
+        <source>Shaper Designer</source>
+        <translation>牛头刨床机构设计</translation>
     </message>
 </context>
 <context>
@@ -1918,6 +1990,10 @@
         <translation>重力</translation>
     </message>
     <message>
+        <source>Design</source>
+        <translation>设计</translation>
+    </message>
+    <message>
         <source>must be greater than %1 and at most %2 %3</source>
         <translation>须大于 %1 且不大于 %2 %3</translation>
     </message>
@@ -1942,8 +2018,12 @@
         <translation>须为数字</translation>
     </message>
     <message>
-        <source>must be a finite number</source>
-        <translation>须为有限数值</translation>
+        <source>must be more than %1 to reach the guide line over the whole cycle</source>
+        <translation>必须大于 %1，才能在整个周期内够到导轨线</translation>
+    </message>
+    <message>
+        <source>cannot be computed for these inputs; try other values</source>
+        <translation>无法按这些输入计算，请换用其他数值</translation>
     </message>
     <message>
         <source>must be at least %1 mm for this crank and K, so that the crank pin stays on the lever</source>
@@ -1994,12 +2074,31 @@
         <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；请增大角度步长或减少转速个数</translation>
     </message>
     <message>
+        <source>gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds</source>
+        <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；%4 个转速时角度步长至少取 %3°</translation>
+    </message>
+    <message>
         <source>must be given either as a length or as a ratio L4/L3, not both</source>
         <translation>只能以长度或比值 L4/L3 之一给出，不能同时给出</translation>
     </message>
     <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>model</name>
+    <message>
+        <source>revert invalid inputs</source>
+        <translation>恢复无效输入</translation>
+    </message>
+    <message>
+        <source>switch input mode</source>
+        <translation>切换输入方式</translation>
+    </message>
+    <message>
+        <source>edit %1 fields</source>
+        <translation>编辑 %1 个字段</translation>
     </message>
 </context>
 </TS>

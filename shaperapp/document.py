@@ -9,13 +9,15 @@ from __future__ import annotations
 import os
 
 from PySide6.QtCore import QObject, QSettings, Signal
-from PySide6.QtWidgets import QFileDialog, QMessageBox, QWidget
+from PySide6.QtWidgets import QMessageBox, QWidget
 
-from core.errors import FileFormatError
+from core.errors import DesignError, FileFormatError
 from core.dynamics_io import dynamics_csv
 from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
 from core.spec import Spec
 
+from . import file_dialogs
+from .messages import describe
 from .model import DEFAULT_RPMS, DEFAULT_STEP, DesignModel
 
 MAX_RECENT = 8
@@ -35,17 +37,24 @@ class Document(QObject):
 
     # ---- path-taking actions (tested directly) -------------------------
     def open_path(self, path: str) -> bool:
+        """Open all or nothing: the file is read, validated and fully computed before
+        the model changes; on any failure the design on screen stays as it was."""
         try:
             doc = load_design(path)
+            self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
+                                   masses=doc["masses"])
         except FileFormatError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
             return False
-        self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
-                               masses=doc["masses"])
+        except DesignError as exc:
+            self.failed.emit(self.tr("Could not open %1: %2").replace("%1", path).replace("%2", describe(exc)))
+            return False
         self._add_recent(path)
         return True
 
     def save_to(self, path: str) -> bool:
+        """Write the design on screen. While an input is invalid that is the last valid
+        design, and the unsaved mark stays (what is typed is not what was saved)."""
         model = self._model
         try:
             save_design(path, model.valid_spec, model.rpms, model.step_deg,
@@ -54,7 +63,10 @@ class Document(QObject):
             self.failed.emit(self.tr("Could not save %1: %2").replace("%1", path)
                              .replace("%2", exc.strerror or str(exc)))
             return False
-        model.set_clean(os.path.abspath(path))
+        if model.inputs_valid:
+            model.set_clean(os.path.abspath(path))
+        else:
+            model.set_path(os.path.abspath(path))
         self._add_recent(path)
         self.saved.emit(path)
         return True
@@ -122,29 +134,58 @@ class Document(QObject):
         if not self.confirm_discard(parent):
             return False
         if path is None:
-            path, _ = QFileDialog.getOpenFileName(parent, self.tr("Open design"), self.last_dir(),
-                                                  self._filter())
+            path = file_dialogs.open_file_name(parent, self.tr("Open design"), self.last_dir(), self._filter())
         return bool(path) and self.open_path(path)
 
+    def confirm_valid(self, parent: QWidget, saving: bool) -> bool:
+        """True when every input is valid, or the user agreed to use the last valid
+        design instead (for a save, the invalid inputs are then reverted — one undo
+        step — so the screen shows what the file holds)."""
+        model = self._model
+        if model.inputs_valid:
+            return True
+        error = model.error or model.forces_error
+        question = (self.tr("Save the last valid design instead? The invalid input is then reset to it.")
+                    if saving else self.tr("Export the results of the last valid design instead?"))
+        answer = QMessageBox.question(
+            parent, self.tr("Invalid input"),
+            describe(error) + "\n\n" + question,
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.Cancel,
+            QMessageBox.StandardButton.Cancel)
+        if answer != QMessageBox.StandardButton.Yes:
+            return False
+        if saving:
+            model.revert_invalid()
+        return True
+
     def save_dialog(self, parent: QWidget) -> bool:
+        if not self.confirm_valid(parent, saving=True):
+            return False
         if self._model.path:
             return self.save_to(self._model.path)
-        return self.save_as_dialog(parent)
+        return self._save_as(parent)
 
     def save_as_dialog(self, parent: QWidget) -> bool:
+        return self.confirm_valid(parent, saving=True) and self._save_as(parent)
+
+    def _save_as(self, parent: QWidget) -> bool:
         start = self._model.path or os.path.join(self.last_dir(), "design.shaper.json")
-        path, _ = QFileDialog.getSaveFileName(parent, self.tr("Save design as"), start, self._filter())
+        path = file_dialogs.save_file_name(parent, self.tr("Save design as"), start, self._filter())
         return bool(path) and self.save_to(path)
 
     def export_csv_dialog(self, parent: QWidget) -> bool:
+        if not self.confirm_valid(parent, saving=False):
+            return False
         path = self._csv_path(parent, self.tr("Export curves to CSV"), "curves.csv")
         return bool(path) and self.export_csv_to(path)
 
     def export_forces_csv_dialog(self, parent: QWidget) -> bool:
+        if not self.confirm_valid(parent, saving=False):
+            return False
         path = self._csv_path(parent, self.tr("Export forces to CSV"), "forces.csv")
         return bool(path) and self.export_forces_csv_to(path)
 
     def _csv_path(self, parent: QWidget, title: str, name: str) -> str:
         start = os.path.join(self.last_dir(), name)
-        path, _ = QFileDialog.getSaveFileName(parent, title, start, self.tr("CSV files (*.csv)"))
+        path = file_dialogs.save_file_name(parent, title, start, self.tr("CSV files (*.csv)"))
         return path

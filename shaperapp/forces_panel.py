@@ -25,7 +25,7 @@ from core.dynamics import Dynamics
 from core.errors import DesignError
 
 from .form import DEBOUNCE_MS, _NumberField, format_number, parse_number
-from .messages import describe
+from .messages import ERROR_TEXT_STYLE, describe
 from .model import DesignModel
 from .plots import (AXIS_WIDTH, CURVE_WIDTH, LEGEND_HEIGHT, TEXT, add_cursor, cache_axes, export_layout, plot_under,
                     styled_plot_item)
@@ -126,7 +126,7 @@ class ForcesPanel(QWidget):
         self._boxes: dict[str, QGroupBox] = {}
         self._error_label = QLabel(self)
         self._error_label.setWordWrap(True)
-        self._error_label.setStyleSheet("color: #b71c1c; font-weight: 600;")
+        self._error_label.setStyleSheet(ERROR_TEXT_STYLE)
         self._error_label.hide()
 
         self._speed_label = QLabel(self)

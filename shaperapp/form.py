@@ -5,19 +5,34 @@ parameter, and the form marks that field. The form never computes anything.
 """
 from __future__ import annotations
 
+import math
+
 from PySide6.QtCore import QEvent, QTimer, Qt, Signal
 from PySide6.QtWidgets import (QButtonGroup, QComboBox, QFormLayout, QGroupBox, QHBoxLayout,
                                QLabel, QLineEdit, QListWidget, QListWidgetItem, QRadioButton, QSizePolicy, QToolButton, QVBoxLayout, QWidget)
 
-from .messages import describe
-from .model import DesignModel
+from .messages import ERROR_TEXT_STYLE, describe
+from core.kinematics import MAX_RPM
+
+from .model import MAX_SPEEDS, DesignModel
 
 DEBOUNCE_MS = 200
 ERROR_STYLE = "QLineEdit, QComboBox, QListWidget { border: 2px solid #c62828; background: #ffebee; }"
+CHOICES = ("variant", "guide_rule", "rod_input", "rod_side")
 
 
 def format_number(value: float) -> str:
     return f"{value:.6g}"
+
+
+def exact_number(value: float) -> str:
+    """The shortest text that reads back as exactly ``value``: an input field shows
+    what Save will write, not a rounding of it (386.3703305, not 386.37)."""
+    for digits in range(6, 18):
+        text = f"{value:.{digits}g}"
+        if float(text) == value:
+            return text
+    return repr(value)
 
 
 def parse_number(text: str) -> float | str:
@@ -47,9 +62,14 @@ class _NumberField(QWidget):
         layout.addWidget(self.unit)
         self.edit.textEdited.connect(self.edited)
 
-    def set_value(self, value: float) -> None:
-        if parse_number(self.edit.text()) != value:
-            self.edit.setText(format_number(value))
+    def set_value(self, value: float | str) -> None:
+        """Show ``value`` unless the text already means it (so "1.60" stays as typed);
+        text that is not a number (an invalid input, e.g. after undo) shows as it is."""
+        if isinstance(value, str):
+            if self.edit.text() != value:
+                self.edit.setText(value)
+        elif parse_number(self.edit.text()) != value:
+            self.edit.setText(exact_number(value))
 
     def value(self) -> float | str:
         return parse_number(self.edit.text())
@@ -68,6 +88,7 @@ class DesignForm(QWidget):
         self._timer.setSingleShot(True)
         self._timer.setInterval(DEBOUNCE_MS)
         self._timer.timeout.connect(self._commit)
+        self._pending: set[str] = set()       # fields typed into since the last commit
 
         self._synth_radio = QRadioButton(self)
         self._dims_radio = QRadioButton(self)
@@ -97,23 +118,23 @@ class DesignForm(QWidget):
         self._remove_speed.setText("−")
         self._error_label = QLabel(self)
         self._error_label.setWordWrap(True)
-        self._error_label.setStyleSheet("color: #b71c1c; font-weight: 600;")
+        self._error_label.setStyleSheet(ERROR_TEXT_STYLE)
         self._error_label.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Minimum)
         self._labels: dict[str, QLabel] = {}
         self._build_layout()
 
         for name, field in self._fields.items():
-            field.edited.connect(self._timer.start)
-            field.edit.editingFinished.connect(self._commit_now)
-        self._mode_group.buttonToggled.connect(lambda *_: self._commit_now())
-        for combo in (self._variant, self._guide_rule, self._rod_input, self._rod_side):
-            combo.currentIndexChanged.connect(self._commit_now)
+            field.edited.connect(lambda n=name: self._on_edited(n))
+            field.edit.editingFinished.connect(self._on_editing_finished)
+        self._mode_group.buttonToggled.connect(self._on_mode_toggled)
+        for name in CHOICES:
+            combo = self._combo(name)
+            combo.currentIndexChanged.connect(lambda _=0, n=name: self._on_choice(n))
         self._speeds.itemChanged.connect(self._commit_speeds)
         self._add_speed.clicked.connect(self._on_add_speed)
         self._remove_speed.clicked.connect(self._on_remove_speed)
 
         model.specChanged.connect(self._show_spec)
-        model.resultsChanged.connect(self._show_speeds)
         model.errorChanged.connect(self._show_error)
         self._retranslate()
         self._show_spec()
@@ -184,7 +205,7 @@ class DesignForm(QWidget):
         self._mode_box.setTitle(self.tr("Input"))
         self._synth_radio.setText(self.tr("Synthesis from L1, K, H"))
         self._dims_radio.setText(self.tr("Direct dimensions"))
-        self._main_box.setTitle(self.tr("Main dimensions"))
+        self._show_titles()
         self._mech_box.setTitle(self.tr("Mechanism"))
         self._speed_box.setTitle(self.tr("Crank speeds"))
         texts = {
@@ -212,9 +233,7 @@ class DesignForm(QWidget):
             self._labels[key].setText(label)
             self._labels[key].setToolTip(tip)
             widget = self._fields.get(key)
-            target = widget.edit if widget else {"variant": self._variant, "guide_rule": self._guide_rule,
-                                                 "rod_input": self._rod_input, "rod_side": self._rod_side,
-                                                 "rpm": self._speeds}[key]
+            target = widget.edit if widget else self._speeds if key == "rpm" else self._combo(key)
             target.setToolTip(tip)
         self._fill(self._variant, [("block", self.tr("Block in ram slot")),
                                    ("rod", self.tr("Connecting rod"))])
@@ -224,9 +243,17 @@ class DesignForm(QWidget):
         self._fill(self._rod_input, [("ratio", self.tr("Ratio L4/L3")), ("length", self.tr("Length"))])
         self._fill(self._rod_side, [("trailing", self.tr("Trailing the tip")),
                                     ("leading", self.tr("Leading the tip"))])
-        self._add_speed.setToolTip(self.tr("Add a crank speed"))
+        self._add_speed.setToolTip(self.tr("Add a crank speed (at most %1)").replace("%1", str(MAX_SPEEDS)))
         self._remove_speed.setToolTip(self.tr("Remove the selected crank speed"))
         self._show_error()
+
+    def _show_titles(self) -> None:
+        synth = self._model.spec.mode == "synthesis"
+        self._main_box.setTitle(self.tr("Synthesis inputs") if synth else self.tr("Link lengths"))
+
+    def _combo(self, name: str) -> QComboBox:
+        return {"variant": self._variant, "guide_rule": self._guide_rule,
+                "rod_input": self._rod_input, "rod_side": self._rod_side}[name]
 
     @staticmethod
     def _fill(combo: QComboBox, items: list[tuple[str, str]]) -> None:
@@ -241,37 +268,41 @@ class DesignForm(QWidget):
 
     # ---- model → form ---------------------------------------------------
     def _show_spec(self) -> None:
+        """Mirror the typed inputs, leaving alone what is being typed."""
         spec = self._model.spec
-        widgets = [self._synth_radio, self._dims_radio, self._variant, self._guide_rule,
-                   self._rod_input, self._rod_side]
+        widgets = [self._synth_radio, self._dims_radio] + [self._combo(n) for n in CHOICES]
         for w in widgets:
             w.blockSignals(True)
         self._mode_group.blockSignals(True)
         (self._synth_radio if spec.mode == "synthesis" else self._dims_radio).setChecked(True)
-        for combo, value in ((self._variant, spec.variant), (self._guide_rule, spec.guide_rule),
-                             (self._rod_input, spec.rod_input), (self._rod_side, spec.rod_side)):
-            combo.setCurrentIndex(max(combo.findData(value), 0))
+        for name in CHOICES:
+            combo = self._combo(name)
+            combo.setCurrentIndex(max(combo.findData(getattr(spec, name)), 0))
         for w in widgets:
             w.blockSignals(False)
         self._mode_group.blockSignals(False)
         for name, field in self._fields.items():
-            value = self._model.step_deg if name == "step" else getattr(spec, name)
-            if isinstance(value, float):
-                field.set_value(value)
+            if name not in self._pending:
+                field.set_value(self._model.step_input if name == "step" else getattr(spec, name))
+        self._show_speeds()
+        self._show_titles()
         self._update_visibility()
 
     def _show_speeds(self) -> None:
         values = [self._speed_value(i) for i in range(self._speeds.count())]
-        if values == list(self._model.rpms):
-            return
-        self._speeds.blockSignals(True)
-        self._speeds.clear()
-        for rpm in self._model.rpms:
-            item = QListWidgetItem(format_number(rpm))
-            item.setFlags(item.flags() | Qt.ItemFlag.ItemIsEditable)
-            self._speeds.addItem(item)
-        self._speeds.blockSignals(False)
-        self._fields["step"].set_value(self._model.step_deg)
+        typed = list(self._model.rpm_inputs)
+        if values != typed:
+            row = self._speeds.currentRow()
+            self._speeds.blockSignals(True)
+            self._speeds.clear()
+            for rpm in typed:
+                item = QListWidgetItem(rpm if isinstance(rpm, str) else exact_number(float(rpm)))
+                item.setFlags(item.flags() | Qt.ItemFlag.ItemIsEditable)
+                self._speeds.addItem(item)
+            self._speeds.setCurrentRow(min(row, self._speeds.count() - 1))
+            self._speeds.blockSignals(False)
+        self._add_speed.setEnabled(self._speeds.count() < MAX_SPEEDS)
+        self._remove_speed.setEnabled(self._speeds.count() > 1)
 
     def _update_visibility(self) -> None:
         spec = self._model.spec
@@ -334,25 +365,34 @@ class DesignForm(QWidget):
         """The line edit of a numeric field (for shortcuts and tests)."""
         return self._fields[name].edit
 
-    def _commit_now(self) -> None:
-        self._timer.stop()
+    def _on_edited(self, name: str) -> None:
+        self._pending.add(name)
+        self._timer.start()
+
+    def _on_editing_finished(self) -> None:
         self._commit()
+        self._model.end_typing()
+
+    def _on_mode_toggled(self, _button=None, checked: bool = True) -> None:
+        if checked:
+            self._commit()
+            self._model.set_spec(mode="synthesis" if self._synth_radio.isChecked() else "dimensions")
+
+    def _on_choice(self, name: str) -> None:
+        self._commit()
+        self._model.set_spec(**{name: self._combo(name).currentData()})
 
     def _commit(self) -> None:
+        """Send the fields typed into since the last commit, as typed; the model
+        validates and names the one to mark. Untouched fields are not re-read, so
+        their display rounding never changes the design."""
         self._timer.stop()
-        changes: dict[str, object] = {
-            "mode": "synthesis" if self._synth_radio.isChecked() else "dimensions",
-            "variant": self._variant.currentData(), "guide_rule": self._guide_rule.currentData(),
-            "rod_input": self._rod_input.currentData(), "rod_side": self._rod_side.currentData(),
-        }
-        for name, field in self._fields.items():
-            if name != "step":
-                changes[name] = field.value()
-        self._model.set_spec(**changes)
-        step = self._fields["step"].value()
-        if step != self._model.step_deg:
-            self._model.set_step(step if isinstance(step, float) else float("nan"))
-        self._update_visibility()
+        pending, self._pending = self._pending, set()
+        changes = {name: self._fields[name].value() for name in pending if name != "step"}
+        if changes:
+            self._model.set_spec(**changes)
+        if "step" in pending:
+            self._model.set_step(self._fields["step"].value())
 
     def _speed_value(self, row: int) -> float | str:
         return parse_number(self._speeds.item(row).text())
@@ -362,17 +402,17 @@ class DesignForm(QWidget):
         self._model.set_rpms(values)
 
     def _on_add_speed(self) -> None:
-        numbers = [v for v in (self._speed_value(i) for i in range(self._speeds.count()))
-                   if isinstance(v, float)]
-        new = (max(numbers) + 20.0) if numbers else 40.0
-        item = QListWidgetItem(format_number(new))
-        item.setFlags(item.flags() | Qt.ItemFlag.ItemIsEditable)
-        self._speeds.addItem(item)  # itemChanged is not emitted by addItem
-        self._commit_speeds()
+        values = [self._speed_value(i) for i in range(self._speeds.count())]
+        if len(values) >= MAX_SPEEDS:
+            return
+        numbers = [v for v in values if isinstance(v, float) and math.isfinite(v)]
+        new = min(max(numbers) + 20.0, MAX_RPM) if numbers else 40.0
+        self._model.set_rpms(values + [new])
 
     def _on_remove_speed(self) -> None:
-        if self._speeds.count() <= 1:
+        values = [self._speed_value(i) for i in range(self._speeds.count())]
+        if len(values) <= 1:
             return
         row = self._speeds.currentRow()
-        self._speeds.takeItem(row if row >= 0 else self._speeds.count() - 1)
-        self._commit_speeds()
+        del values[row if 0 <= row < len(values) else -1]
+        self._model.set_rpms(values)

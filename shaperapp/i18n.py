@@ -1,16 +1,22 @@
 """Language switching with Qt's own translators (no wrapper of our own).
 
 English is the source language; Simplified Chinese ships as a compiled .qm
-under resources/. Qt's own strings (dialog buttons) come from PySide6's
-qtbase translations when present.
+under resources/. Qt's own strings (dialog buttons, the file dialog) come from
+Qt's ``qtbase_<language>`` catalogue in Qt's translations folder (``qt_zh_CN``
+is only a meta catalogue that PySide6 does not ship complete).
+
+The two translators are created once and reloaded on each switch, so switching
+back and forth never leaves translators behind.
 """
 from __future__ import annotations
 
 from importlib import resources
 
 from PySide6.QtCore import QCoreApplication, QLibraryInfo, QLocale, QTranslator
+from PySide6.QtGui import QGuiApplication
 
 LANGUAGES = (("en", "English"), ("zh_CN", "简体中文"))
+_translators: dict[str, QTranslator] = {}
 _installed: list[QTranslator] = []
 
 
@@ -23,21 +29,44 @@ def qm_path(language: str) -> str:
     return str(resources.files("shaperapp.resources").joinpath(f"shaperapp_{language}.qm"))
 
 
+def qt_translations_dir() -> str:
+    return QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)
+
+
+def _translator(role: str, app: QCoreApplication) -> QTranslator:
+    """The one translator for ``role`` ('app' or 'qt'), owned by the application."""
+    translator = _translators.get(role)
+    try:
+        if translator is not None:
+            translator.objectName()          # still alive (not deleted with an old app)?
+            return translator
+    except RuntimeError:
+        pass
+    translator = QTranslator(app)
+    _translators[role] = translator
+    return translator
+
+
 def set_language(language: str) -> bool:
-    """Install the translators for ``language``; True when a catalogue was loaded."""
+    """Install the translators for ``language``; True when our catalogue was loaded.
+
+    Also names the application in that language, so the window title (to which
+    Qt appends the application's display name) is in one language."""
     app = QCoreApplication.instance()
     for translator in _installed:
         app.removeTranslator(translator)
     _installed.clear()
-    if language == "en":
-        return True
-    ours = QTranslator(app)
-    loaded = ours.load(qm_path(language))
-    if loaded:
-        app.installTranslator(ours)
-        _installed.append(ours)
-    qt = QTranslator(app)
-    if qt.load(f"qt_{language}", QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)):
-        app.installTranslator(qt)
-        _installed.append(qt)
+    loaded = language == "en"
+    if language != "en":
+        ours = _translator("app", app)
+        if ours.load(qm_path(language)):
+            app.installTranslator(ours)
+            _installed.append(ours)
+            loaded = True
+        qt = _translator("qt", app)
+        if qt.load(f"qtbase_{language}", qt_translations_dir()):
+            app.installTranslator(qt)
+            _installed.append(qt)
+    if isinstance(app, QGuiApplication):
+        QGuiApplication.setApplicationDisplayName(QCoreApplication.translate("app", "Shaper Designer"))
     return loaded

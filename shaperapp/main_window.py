@@ -7,17 +7,19 @@ from __future__ import annotations
 
 import os
 
+import shiboken6
 from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
-from PySide6.QtWidgets import (QFileDialog, QMainWindow, QMessageBox, QScrollArea, QSplitter,
-                               QTabWidget, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QApplication, QInputDialog, QLineEdit, QMainWindow, QMessageBox,
+                               QScrollArea, QSplitter, QTabWidget, QVBoxLayout, QWidget)
 
-from . import i18n
+from . import file_dialogs, i18n
 from .help import GuideDialog, about_text
 from .animation import AnimationBar
 from .document import Document
 from .forces_panel import ForcesPanel
 from .form import DesignForm
+from .guards import ShortcutGuard, install_wheel_guard
 from .messages import describe
 from .metrics_panel import MetricsPanel
 from .model import DesignModel
@@ -76,6 +78,9 @@ class MainWindow(QMainWindow):
 
         self._build_actions()
         self._build_menus()
+        install_wheel_guard()
+        self._shortcut_guard = ShortcutGuard(self, self.flush_typing)
+        QApplication.instance().installEventFilter(self._shortcut_guard)
         self.document.failed.connect(self._show_failure)
         self.document.recentChanged.connect(self._fill_recent)
         self.document.saved.connect(self._on_saved)
@@ -88,10 +93,31 @@ class MainWindow(QMainWindow):
 
     # ---- actions and menus -------------------------------------------------
     def _action(self, slot, shortcut=None) -> QAction:
+        """An action that first sends what is typed in the focused field (so Save, Export
+        or Undo act on it, not on the value before the debounce)."""
         action = QAction(self)
         if shortcut is not None:
             action.setShortcut(QKeySequence(shortcut))
-        action.triggered.connect(slot)
+        action.triggered.connect(lambda *_: (self.flush_typing(), slot()))
+        self.addAction(action)
+        return action
+
+    @staticmethod
+    def flush_typing() -> None:
+        """Commit the focused line edit as if the user had left it."""
+        focus = QApplication.focusWidget()
+        if isinstance(focus, QLineEdit) and not focus.isReadOnly():
+            focus.editingFinished.emit()
+
+    def _stack_action(self, action: QAction, step, keys: QKeySequence.StandardKey, extra: str = "") -> QAction:
+        """Undo/redo actions from the stack (their text and enabled state follow it),
+        triggered through :meth:`flush_typing` first."""
+        action.triggered.disconnect()
+        action.triggered.connect(lambda *_: (self.flush_typing(), step()))
+        shortcuts = QKeySequence.keyBindings(keys)
+        if extra and QKeySequence(extra) not in shortcuts:    # the same key twice would be ambiguous
+            shortcuts.append(QKeySequence(extra))
+        action.setShortcuts(shortcuts)
         self.addAction(action)
         return action
 
@@ -114,8 +140,17 @@ class MainWindow(QMainWindow):
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
         self.act_report = self._action(self._export_report, "Ctrl+R")
         self.act_quit = self._action(self.close, QKeySequence.StandardKey.Quit)
+        stack = self.model.undo_stack
+        self.act_undo = self._stack_action(stack.createUndoAction(self, self.tr("Undo")), stack.undo,
+                                           QKeySequence.StandardKey.Undo)
+        self.act_redo = self._stack_action(stack.createRedoAction(self, self.tr("Redo")), stack.redo,
+                                           QKeySequence.StandardKey.Redo, "Ctrl+Shift+Z")
+        stack.undoTextChanged.connect(self._show_undo_text)
+        stack.redoTextChanged.connect(self._show_redo_text)
+        self.act_goto = self._action(self.go_to_angle_dialog, "Ctrl+G")
         # The widgets own these actions (and their texts); the window only adds shortcuts.
-        self.act_play = self._shortcut(self.animation.play_action, "Ctrl+Space")
+        self.act_play = self._shortcut(self.animation.play_action, "Space")
+        self.act_play.setShortcuts([QKeySequence("Space"), QKeySequence("Ctrl+Space")])
         self.act_step = self._shortcut(self.animation.step_forward_action, "Ctrl+Right")
         self.act_back = self._shortcut(self.animation.step_back_action, "Ctrl+Left")
         self.act_fit = self._shortcut(self.scheme.fit_action, "Ctrl+0")
@@ -146,6 +181,9 @@ class MainWindow(QMainWindow):
         self.menu_file.addAction(self.act_report)
         self.menu_file.addSeparator()
         self.menu_file.addAction(self.act_quit)
+        self.menu_edit = bar.addMenu("")
+        self.menu_edit.addAction(self.act_undo)
+        self.menu_edit.addAction(self.act_redo)
         self.menu_view = bar.addMenu("")
         self.menu_view.addAction(self.act_fit)
         self.menu_view.addAction(self.act_dims)
@@ -154,7 +192,7 @@ class MainWindow(QMainWindow):
         for action in self.lang_actions.values():
             self.menu_lang.addAction(action)
         self.menu_anim = bar.addMenu("")
-        for a in (self.act_play, self.act_step, self.act_back):
+        for a in (self.act_play, self.act_step, self.act_back, self.act_goto):
             self.menu_anim.addAction(a)
         self.menu_help = bar.addMenu("")
         self.menu_help.addAction(self.act_guide)
@@ -199,6 +237,7 @@ class MainWindow(QMainWindow):
             (self.act_report, self.tr("Export &report (PDF/HTML)…"),
              self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
             (self.act_quit, self.tr("&Quit"), ""),
+            (self.act_goto, self.tr("&Go to Crank Angle…"), self.tr("Move the mechanism to a crank angle you type")),
             (self.act_about, self.tr("&About"), ""),
             (self.act_guide, self.tr("User &guide"), self.tr("Conventions, method, glossary and command line")),
         ]
@@ -212,15 +251,30 @@ class MainWindow(QMainWindow):
         self.menu_file.setTitle(self.tr("&File"))
         self.menu_recent.setTitle(self.tr("Open &Recent"))
         self.menu_view.setTitle(self.tr("&View"))
+        self.menu_edit.setTitle(self.tr("&Edit"))
+        self._show_undo_text(self.model.undo_stack.undoText())
+        self._show_redo_text(self.model.undo_stack.redoText())
         self.menu_lang.setTitle(self.tr("&Language"))
         self.menu_anim.setTitle(self.tr("&Animation"))
         self.menu_help.setTitle(self.tr("&Help"))
         self._update_title()
         self._show_status()
 
+    def _show_undo_text(self, text: str) -> None:
+        """'Undo Time ratio K' in the current language (the stack's own prefix is fixed
+        when the action is made). The stack outlives the window: skip once it is gone."""
+        if shiboken6.isValid(self.act_undo):
+            self.act_undo.setText(self.tr("&Undo %1").replace("%1", text).strip())
+
+    def _show_redo_text(self, text: str) -> None:
+        if shiboken6.isValid(self.act_redo):
+            self.act_redo.setText(self.tr("&Redo %1").replace("%1", text).strip())
+
     def _update_title(self, *_) -> None:
+        """The file name; Qt appends the application's display name, which
+        ``i18n.set_language`` sets in the same language."""
         name = os.path.basename(self.model.path) if self.model.path else self.tr("Untitled")
-        self.setWindowTitle(f"{name}[*] — {self.tr('Shaper Designer')}")
+        self.setWindowTitle(f"{name}[*]")
         self.setWindowModified(self.model.dirty)
 
     def _show_status(self) -> None:
@@ -241,18 +295,45 @@ class MainWindow(QMainWindow):
         self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 
     def _export_image(self, widget, stem: str) -> None:
-        start = os.path.join(self.document.last_dir(), f"{stem}.png")
-        path, _ = QFileDialog.getSaveFileName(self, self.tr("Export image"), start,
-                                              self.tr("PNG image (*.png);;SVG drawing (*.svg)"))
-        if not path:
+        if not self.document.confirm_valid(self, saving=False):
             return
-        try:
-            widget.export_image(path)
-        except OSError as exc:
-            self._show_failure(self.tr("Could not write %1: %2").replace("%1", path)
-                               .replace("%2", exc.strerror or str(exc)))
+        start = os.path.join(self.document.last_dir(), f"{stem}.png")
+        path = file_dialogs.save_file_name(self, self.tr("Export image"), start,
+                                           self.tr("PNG image (*.png);;SVG drawing (*.svg)"))
+        if path:
+            self.export_image_to(widget, path)
+
+    def export_image_to(self, widget, path: str) -> bool:
+        """Write ``widget``'s image to ``path``; any failure is shown naming ``path``."""
+        folder = os.path.dirname(os.path.abspath(path))
+        if not os.path.isdir(folder):
+            reason = self.tr("the folder %1 does not exist").replace("%1", folder)
+        else:
+            try:
+                widget.export_image(path)
+            except OSError as exc:
+                reason = exc.strerror or str(exc)
+            except ValueError as exc:     # e.g. a suffix that is not an image type
+                reason = str(exc)
+            else:
+                if os.path.exists(path):
+                    return True
+                reason = self.tr("nothing was written")
+        self._show_failure(self.tr("Could not export the image to %1: %2").replace("%1", path)
+                           .replace("%2", reason))
+        return False
+
+    def go_to_angle_dialog(self) -> None:
+        """Ask for a crank angle and move the mechanism there."""
+        value, ok = QInputDialog.getDouble(self, self.tr("Go to crank angle"),
+                                           self.tr("Crank angle φ (0–360°):"), self.model.crank_deg,
+                                           0.0, 360.0, 3)
+        if ok:
+            self.model.set_angle_deg(value)
 
     def _export_report(self) -> None:
+        if not self.document.confirm_valid(self, saving=False):
+            return
         from .report.dialog import export_report_dialog   # builds offscreen views: load on demand
         path = export_report_dialog(self.model, self, str(self.settings.value("language", "en")),
                                     self.document.last_dir())

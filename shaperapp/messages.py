@@ -11,6 +11,10 @@ from PySide6.QtCore import QCoreApplication
 
 from core.errors import DesignError
 
+# Error text in the one weight every script has: a bold Latin run beside regular CJK
+# glyphs (fonts without a semi-bold CJK face) looked like two kinds of message.
+ERROR_TEXT_STYLE = "color: #b71c1c;"
+
 
 def field_name(parameter: str) -> str:
     names = {
@@ -38,6 +42,7 @@ def field_name(parameter: str) -> str:
         "idle_fraction": QCoreApplication.translate("messages", "Idle margin"),
         "delta": QCoreApplication.translate("messages", "Speed fluctuation δ"),
         "gravity": QCoreApplication.translate("messages", "Gravity"),
+        "design": QCoreApplication.translate("messages", "Design"),
     }
     return names.get(parameter, parameter)
 
@@ -50,7 +55,10 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"must be > (\S+) and < (\S+)(?: (.+))?$", "must be greater than %1 and less than %2 %3"),
     (r"must be a pair \(dx, dy\) in mm$", "must be a pair (dx, dy) in mm"),
     (r"must be a number$", "must be a number"),
-    (r"must be a finite number$", "must be a finite number"),
+    (r"must be a finite number$", "must be a number"),      # one wording for both
+    (r"must be > (\S+) to reach the guide line over the whole cycle$",
+     "must be more than %1 to reach the guide line over the whole cycle"),
+    (r"cannot be computed for these inputs$", "cannot be computed for these inputs; try other values"),
     (r"must be ≥ (\S+) mm for this crank and K, so that the crank pin stays on the lever$",
      "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever"),
     (r"must be shorter than the frame O2O4 \((\S+) mm\)$",
@@ -73,6 +81,8 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"gives more than (\S+) angles; use a larger step$", "gives more than %1 angles; use a larger step"),
     (r"gives (\S+) samples \(angles × speeds\), more than (\S+); use a larger step or fewer speeds$",
      "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds"),
+    (r"gives (\S+) samples \(angles × speeds\), more than (\S+); use a step of at least (\S+)° for (\S+) speeds?$",
+     "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
     (r"must be given either as a length or as a ratio L4/L3, not both$",
      "must be given either as a length or as a ratio L4/L3, not both"),
 )
@@ -87,7 +97,10 @@ def _translated_templates() -> dict[str, str]:
         "must be greater than %1 and less than %2 %3": QCoreApplication.translate("messages", "must be greater than %1 and less than %2 %3"),
         "must be a pair (dx, dy) in mm": QCoreApplication.translate("messages", "must be a pair (dx, dy) in mm"),
         "must be a number": QCoreApplication.translate("messages", "must be a number"),
-        "must be a finite number": QCoreApplication.translate("messages", "must be a finite number"),
+        "must be more than %1 to reach the guide line over the whole cycle":
+            QCoreApplication.translate("messages", "must be more than %1 to reach the guide line over the whole cycle"),
+        "cannot be computed for these inputs; try other values":
+            QCoreApplication.translate("messages", "cannot be computed for these inputs; try other values"),
         "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever":
             QCoreApplication.translate("messages", "must be at least %1 mm for this crank and K, so that the crank pin stays on the lever"),
         "must be shorter than the frame O2O4 (%1 mm)": QCoreApplication.translate("messages", "must be shorter than the frame O2O4 (%1 mm)"),
@@ -109,6 +122,8 @@ def _translated_templates() -> dict[str, str]:
         "gives more than %1 angles; use a larger step": QCoreApplication.translate("messages", "gives more than %1 angles; use a larger step"),
         "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds":
             QCoreApplication.translate("messages", "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds"),
+        "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds":
+            QCoreApplication.translate("messages", "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
         "must be given either as a length or as a ratio L4/L3, not both":
             QCoreApplication.translate("messages", "must be given either as a length or as a ratio L4/L3, not both"),
     }

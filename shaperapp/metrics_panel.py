@@ -97,7 +97,6 @@ class MetricsPanel(QWidget):
     def _retranslate(self) -> None:
         self._forces_title.setText(self.tr("Forces and flywheel"))
         self._forces_title.setToolTip(self.tr("Constant crank speed; loads as set in the Forces tab"))
-        self._dim_box.setTitle(self.tr("Synthesized dimensions"))
         self._cycle_box.setTitle(self.tr("Measured cycle"))
         titles = {
             "theta": (self.tr("Extreme-position angle θ"), self.tr("Crank angle between the two limit positions; equals the lever swing")),
@@ -122,6 +121,8 @@ class MetricsPanel(QWidget):
 
     def _show(self) -> None:
         design, metrics = self._model.design, self._model.metrics
+        self._dim_box.setTitle(self.tr("Synthesized dimensions") if self._model.valid_spec.mode == "synthesis"
+                               else self.tr("Dimensions"))
         mm = self.tr("%1 mm")
         deg = self.tr("%1°")
         values = {

@@ -1,44 +1,66 @@
-"""The one model object: current design, its results, and the animation angle.
+"""The one model object: what the user typed, the design it gives, its results.
 
 Widgets read from it and call its setters; it emits a signal only when a
 value really changes. A parameter change recomputes the whole cycle once;
 the animation only moves an index into the precomputed arrays.
+
+Two states live here. The *inputs* are what the user typed, valid or not
+(``spec``, ``rpm_inputs``, ``step_input``, ``mass_inputs``); every edit of them is
+an undoable step on ``undo_stack``. The *design on screen* (``valid_spec``,
+``rpms``, ``step_deg``, ``masses`` and everything computed from them) changes only
+when the inputs are valid, so Save always writes a design that reopens.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import replace
-from typing import Any
+from dataclasses import asdict, replace
+from typing import Any, Hashable
 
 import numpy as np
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject, Signal
+from PySide6.QtGui import QUndoStack
 
 from core.dynamics import (Dynamics, DynamicsSummary, MassProperties, masses_for_design,
                            solve_dynamics, summarize)
 from core.errors import DesignError
 from core.geometry import Design
-from core.kinematics import Motion, check_rpms, crank_angles, solve
+from core.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, solve
 from core.metrics import CycleMetrics, analyze
-from core.spec import Spec
+from core.spec import NUMBER_FIELDS, Spec
+
+from .messages import field_name
+from .undo import InputEdit, Inputs
 
 DEFAULT_RPMS = (40.0, 60.0)
 DEFAULT_STEP = 1.0
+MAX_SPEEDS = 16          # as core.kinematics.check_rpms allows
+# angles × speeds the whole window recomputes and redraws within about half a second:
+# 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
+# (README, Performance). core's own cap (core.kinematics) is far larger, for the CLI.
+MAX_GUI_SAMPLES = 60_000
 # The classic course-design loads of a shaper (lever 200 N, J = 1.1 kg·m², ram 700 N,
 # cutting force 7000 N at 80 mm below the guide), so the Forces view shows a case at once.
 DEFAULT_MASSES = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                                 cut_force_N=7000.0, cut_height_mm=80.0, delta=1.0 / 30.0)
+# Core computations can fail in ways other than DesignError on extreme input; the GUI
+# reports those as "cannot be computed" and keeps the last valid design.
+COMPUTE_ERRORS = (ArithmeticError, ValueError, RuntimeError, MemoryError)
+
+
+def _loads(masses: MassProperties, pending: dict[str, Any] | None = None) -> tuple[tuple[str, Any], ...]:
+    return tuple(sorted({**asdict(masses), **(pending or {})}.items()))
 
 
 class DesignModel(QObject):
-    """Holds the spec the user typed, the last valid design and its results.
+    """Holds the inputs the user typed, the last valid design and its results.
 
     Signals:
       ``resultsChanged`` — design, motion or metrics were recomputed;
-      ``specChanged`` — the edited inputs changed (valid or not);
+      ``specChanged`` — the typed inputs (spec, speeds or step) changed, valid or not;
       ``errorChanged`` — the validation error appeared, changed or cleared;
       ``angleChanged(int)`` — the animation index moved;
       ``forcesChanged`` — dynamics were recomputed (after any design or load change);
-      ``forcesErrorChanged`` — a load input became invalid or valid again;
+      ``forcesErrorChanged`` — a load input became invalid or valid again, or was reset;
       ``dirtyChanged(bool)``, ``pathChanged(str)`` — file state.
     """
 
@@ -53,31 +75,30 @@ class DesignModel(QObject):
 
     def __init__(self, parent: QObject | None = None) -> None:
         super().__init__(parent)
-        self._spec = Spec()
-        self._valid_spec = self._spec
+        self._path = ""
+        self._index = 0
+        self._error: DesignError | None = None
+        self._forces_error: DesignError | None = None
+        self._session = 0
+        self._valid_spec = Spec()
         self._rpms: tuple[float, ...] = DEFAULT_RPMS
         self._step = DEFAULT_STEP
-        self._error: DesignError | None = None
-        self._index = 0
-        self._dirty = False
-        self._path = ""
-        self._design: Design = self._spec.design()
-        self._motion: Motion = solve(self._design, crank_angles(self._step), self._rpms)
-        self._metrics: CycleMetrics = analyze(self._design, self._rpms)
         self._masses = DEFAULT_MASSES
-        self._mass_inputs: dict[str, Any] = {}
-        self._forces_error: DesignError | None = None
-        self._dynamics, self._dynamics_summary = self._solve_forces(self._design, self._motion, self._masses)
+        self._inputs = Inputs(self._valid_spec, self._rpms, self._step, _loads(self._masses))
+        (self._design, self._motion, self._metrics,
+         self._dynamics, self._dynamics_summary) = self._compute(self._inputs, self._masses)
+        self.undo_stack = QUndoStack(self)
+        self.undo_stack.cleanChanged.connect(self._on_clean_changed)
 
     # ---- read access -------------------------------------------------
     @property
     def spec(self) -> Spec:
         """The inputs as the user last typed them (may be invalid)."""
-        return self._spec
+        return self._inputs.spec
 
     @property
     def valid_spec(self) -> Spec:
-        """The inputs of the design on screen (what Save writes)."""
+        """The inputs of the design on screen (what Save writes); every field valid."""
         return self._valid_spec
 
     @property
@@ -101,7 +122,7 @@ class DesignModel(QObject):
     @property
     def mass_inputs(self) -> dict[str, Any]:
         """Load fields as last typed, including invalid ones not yet applied."""
-        return {**self._masses.__dict__, **self._mass_inputs}
+        return self._inputs.load_dict
 
     @property
     def dynamics(self) -> Dynamics:
@@ -117,15 +138,31 @@ class DesignModel(QObject):
 
     @property
     def rpms(self) -> tuple[float, ...]:
+        """Crank speeds of the design on screen, r/min."""
         return self._rpms
+
+    @property
+    def rpm_inputs(self) -> tuple[Any, ...]:
+        """Speeds as typed: floats, or the text of an entry that is not a number."""
+        return self._inputs.rpms
 
     @property
     def step_deg(self) -> float:
         return self._step
 
     @property
+    def step_input(self) -> Any:
+        """The angle step as typed (a float, or text that is not a number)."""
+        return self._inputs.step
+
+    @property
     def error(self) -> DesignError | None:
         return self._error
+
+    @property
+    def inputs_valid(self) -> bool:
+        """True when what the user typed is the design on screen (nothing pending or invalid)."""
+        return self._error is None and self._forces_error is None
 
     @property
     def angle_index(self) -> int:
@@ -141,50 +178,65 @@ class DesignModel(QObject):
 
     @property
     def dirty(self) -> bool:
-        return self._dirty
+        return not self.undo_stack.isClean()
 
     @property
     def path(self) -> str:
         return self._path
 
-    # ---- edits -------------------------------------------------------
+    # ---- edits (each one undoable) -----------------------------------
     def set_spec(self, **changes: Any) -> None:
-        """Change some inputs at once; recompute if they form a valid design."""
-        spec = replace(self._spec, **changes)
-        if spec == self._spec:
+        """Change some inputs at once; recompute if they form a valid design.
+
+        A change of mode carries the design on screen over (``Spec.switch_mode``).
+        A field that the new mode, variant or rule leaves unused keeps its last
+        valid value instead of invalid text, so Save never writes one."""
+        old = self._inputs.spec
+        mode = changes.pop("mode", old.mode)
+        spec = replace(old, **changes)
+        if mode != old.mode:       # carried over, except what was given with the switch
+            spec = replace(spec.switch_mode(mode, self._design), **changes)
+        requested, spec = spec, self._settle_inactive(spec)
+        if spec == old:
+            if requested != old:
+                self.specChanged.emit()       # the form shows the value kept instead
             return
-        self._spec = spec
-        self.specChanged.emit()
-        self._mark_dirty()
-        self._recompute()
+        touched = tuple(sorted(name for name in changes if changes[name] != getattr(old, name)))
+        choice = mode != old.mode or any(name not in NUMBER_FIELDS for name in touched)
+        self._push(replace(self._inputs, spec=spec), None if choice else ("spec", touched),
+                   self._edit_text(["mode"] if mode != old.mode else touched))
 
     def set_rpms(self, rpms) -> None:
-        """Set the crank speeds (r/min); an invalid list is reported, not applied."""
-        try:
-            values = tuple(float(v) for v in check_rpms(list(rpms)))
-        except DesignError as exc:
-            self._set_error(exc)
+        """Set the crank speeds (r/min, or text as typed); an invalid list is reported, not applied."""
+        values = tuple(rpms)
+        if values == self._inputs.rpms:
             return
-        if values == self._rpms:
-            if self._error is not None and self._error.parameter == "rpm":
-                self._set_error(None)
-            return
-        self._rpms = values
-        self._mark_dirty()
-        self._recompute()
+        self._push(replace(self._inputs, rpms=values), None, self._edit_text(["rpm"]))
 
-    def set_step(self, step_deg: float) -> None:
-        if step_deg == self._step:
+    def set_step(self, step_deg: Any) -> None:
+        """Set the angle step (degrees, or text as typed)."""
+        if step_deg == self._inputs.step or (isinstance(step_deg, float) and isinstance(self._inputs.step, float)
+                                            and math.isnan(step_deg) and math.isnan(self._inputs.step)):
             return
-        try:
-            crank_angles(step_deg)
-        except DesignError as exc:
-            self._set_error(exc)
+        self._push(replace(self._inputs, step=step_deg), ("step",), self._edit_text(["step"]))
+
+    def set_masses(self, **changes: Any) -> None:
+        """Change some load inputs; apply them if they are all valid."""
+        loads = {**self._inputs.load_dict, **changes}
+        if loads == self._inputs.load_dict:
             return
-        fraction = self._index / max(self.angle_count - 1, 1)
-        self._step = float(step_deg)
-        self._mark_dirty()
-        self._recompute(keep_fraction=fraction)
+        self._push(replace(self._inputs, loads=tuple(sorted(loads.items()))),
+                   ("loads", tuple(sorted(changes))), self._edit_text(sorted(changes)))
+
+    def revert_invalid(self) -> None:
+        """Put the design on screen back into every input (one undoable step)."""
+        inputs = Inputs(self._valid_spec, self._rpms, self._step, _loads(self._masses))
+        if inputs != self._inputs:
+            self._push(inputs, None, QCoreApplication.translate("model", "revert invalid inputs"))
+
+    def end_typing(self) -> None:
+        """The user left a field: the next keystrokes start a new undo step."""
+        self._session += 1
 
     def set_angle_index(self, index: int) -> None:
         index = int(index) % self.angle_count
@@ -198,51 +250,155 @@ class DesignModel(QObject):
         grid = np.degrees(self._motion.crank_angle)
         self.set_angle_index(int(np.argmin(np.abs(grid - deg))))
 
-    def set_masses(self, **changes: Any) -> None:
-        """Change some load inputs; apply them if they are all valid."""
-        inputs = {**self._mass_inputs, **changes}
-        if inputs == self._mass_inputs:
-            return
-        self._mass_inputs = inputs
-        try:
-            masses = replace(self._masses, **inputs)
-            dynamics, summary = self._solve_forces(self._design, self._motion, masses)
-        except DesignError as exc:
-            self._set_forces_error(exc)
-            return
-        self._mark_dirty()
-        self._masses, self._mass_inputs = masses, {}
-        self._dynamics, self._dynamics_summary = dynamics, summary
-        self._set_forces_error(None)
-        self.forcesChanged.emit()
-
+    # ---- files ---------------------------------------------------------
     def load_state(self, spec: Spec, rpms, step_deg: float, path: str = "",
                    masses: MassProperties | None = None) -> None:
-        """Replace everything at once (after a file was read and validated)."""
-        self._masses = DEFAULT_MASSES if masses is None else masses
-        self._mass_inputs = {}
-        self._set_forces_error(None)
-        self._spec = spec
-        self._rpms = tuple(float(v) for v in rpms)
-        self._step = float(step_deg)
+        """Replace everything at once, or nothing: the whole design is computed first.
+
+        Raises DesignError (and changes nothing) when the state cannot be computed;
+        otherwise clears the undo history and marks the state saved as ``path``."""
+        masses = DEFAULT_MASSES if masses is None else masses
+        inputs = Inputs(spec, tuple(float(v) for v in rpms), float(step_deg), _loads(masses))
+        try:
+            spec.check_fields()
+            results = self._compute(inputs, masses)
+        except DesignError:
+            raise
+        except COMPUTE_ERRORS as exc:
+            raise self._compute_error(exc) from None
+        self._inputs = inputs
+        self._valid_spec, self._rpms, self._step, self._masses = spec, inputs.rpms, inputs.step, masses
+        self._design, self._motion, self._metrics, self._dynamics, self._dynamics_summary = results
         self._index = 0
+        self.undo_stack.clear()
+        self._set_error(None)
+        self._set_forces_error(None, force=True)
         self.specChanged.emit()
-        self._recompute()
+        self.resultsChanged.emit()
+        self.forcesChanged.emit()
+        self.angleChanged.emit(0)
         self.set_clean(path)
 
     def set_clean(self, path: str) -> None:
+        """The inputs now match the file at ``path`` (saved or opened)."""
+        self.set_path(path)
+        self.undo_stack.setClean()
+
+    def set_path(self, path: str) -> None:
+        """The file the design belongs to, without marking anything saved."""
         if path != self._path:
             self._path = path
             self.pathChanged.emit(path)
-        if self._dirty:
-            self._dirty = False
-            self.dirtyChanged.emit(False)
 
     # ---- internals ---------------------------------------------------
-    def _mark_dirty(self) -> None:
-        if not self._dirty:
-            self._dirty = True
-            self.dirtyChanged.emit(True)
+    def _on_clean_changed(self, clean: bool) -> None:
+        self.dirtyChanged.emit(not clean)
+
+    def _push(self, inputs: Inputs, key: Hashable | None, text: str) -> None:
+        if key is not None:
+            key = (key, self._session)
+        self.undo_stack.push(InputEdit(self._apply, self._inputs, inputs, key, text))
+
+    @staticmethod
+    def _edit_text(names) -> str:
+        names = list(names)
+        if names == ["mode"]:
+            return QCoreApplication.translate("model", "switch input mode")
+        if len(names) == 1:
+            return field_name(names[0])
+        return QCoreApplication.translate("model", "edit %1 fields").replace("%1", str(len(names)))
+
+    def _settle_inactive(self, spec: Spec) -> Spec:
+        """Unused fields that hold an invalid value take the last valid one back."""
+        fixes = {}
+        for name in set(NUMBER_FIELDS) - spec.active_fields():
+            try:
+                spec.check_field(name)
+            except DesignError:
+                fixes[name] = getattr(self._valid_spec, name)
+        return replace(spec, **fixes) if fixes else spec
+
+    def _apply(self, inputs: Inputs) -> None:
+        """Make ``inputs`` the typed state and recompute what they change (undo/redo too)."""
+        old = self._inputs
+        self._inputs = inputs
+        design_inputs = (inputs.spec, inputs.rpms, inputs.step)
+        design_changed = design_inputs != (old.spec, old.rpms, old.step)
+        if design_changed:
+            self.specChanged.emit()
+            self._recompute()
+        if inputs.loads != old.loads or design_changed:
+            self._recompute_forces(design_changed, announce=inputs.loads != old.loads)
+
+    def _recompute(self) -> None:
+        inputs = self._inputs
+        try:
+            design, motion, metrics = self._compute_motion(inputs)
+        except DesignError as exc:
+            self._set_error(self._input_error(exc))
+            return
+        except COMPUTE_ERRORS as exc:
+            self._set_error(self._compute_error(exc))
+            return
+        fraction = self._index / max(self.angle_count - 1, 1)
+        self._design, self._motion, self._metrics = design, motion, metrics
+        self._valid_spec = inputs.spec
+        self._rpms = tuple(float(v) for v in inputs.rpms)
+        self._step = float(inputs.step)
+        self._index = min(int(round(fraction * (motion.crank_angle.size - 1))), motion.crank_angle.size - 1)
+        self._set_error(None)
+        self.resultsChanged.emit()
+        self.angleChanged.emit(self._index)
+
+    def _recompute_forces(self, design_changed: bool, announce: bool) -> None:
+        """Solve the loads typed (if valid) on the design on screen; invalid loads keep
+        the last valid ones, which are solved again only when the design changed."""
+        try:
+            masses = replace(DEFAULT_MASSES, **self._inputs.load_dict)
+            dynamics, summary = self._solve_forces(self._design, self._motion, masses)
+        except (DesignError, *COMPUTE_ERRORS) as exc:
+            error = exc if isinstance(exc, DesignError) else self._compute_error(exc)
+            self._set_forces_error(error, force=announce)
+            if not design_changed:
+                return
+            masses = self._masses
+            dynamics, summary = self._solve_forces(self._design, self._motion, masses)
+        else:
+            self._set_forces_error(None, force=announce)
+        self._masses, self._dynamics, self._dynamics_summary = masses, dynamics, summary
+        self.forcesChanged.emit()
+
+    def _compute_motion(self, inputs: Inputs) -> tuple[Design, Motion, CycleMetrics]:
+        """Design, motion and metrics of ``inputs``; DesignError names the bad input."""
+        design = inputs.spec.design()
+        rpms = tuple(float(v) for v in check_rpms(list(inputs.rpms)))
+        if not isinstance(inputs.step, (int, float)) or isinstance(inputs.step, bool):
+            raise DesignError("step", inputs.step, "must be a number")
+        step = float(inputs.step)
+        check_request(angle_count(step), len(rpms), "step", step, limit=MAX_GUI_SAMPLES)
+        angles = crank_angles(step)
+        return design, solve(design, angles, rpms), analyze(design, rpms)
+
+    def _compute(self, inputs: Inputs, masses: MassProperties):
+        design, motion, metrics = self._compute_motion(inputs)
+        return (design, motion, metrics) + self._solve_forces(design, motion, masses)
+
+    def _input_error(self, error: DesignError) -> DesignError:
+        """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm."""
+        spec = self._inputs.spec
+        if (error.parameter == "rod" and spec.variant == "rod" and spec.rod_input == "ratio"
+                and isinstance(error.value, float) and isinstance(spec.rod_ratio, float) and error.value > 0):
+            lever = error.value / spec.rod_ratio
+            allowed = error.allowed
+            if allowed.startswith("must be > ") and " mm " in allowed:
+                bound = float(allowed.split()[3]) / lever
+                allowed = f"must be > {bound:.4g}" + allowed.split(" mm", 1)[1]
+            return DesignError("rod_ratio", spec.rod_ratio, allowed)
+        return error
+
+    @staticmethod
+    def _compute_error(exc: BaseException) -> DesignError:
+        return DesignError("design", type(exc).__name__, "cannot be computed for these inputs")
 
     def _set_error(self, error: DesignError | None) -> None:
         same = (error is None and self._error is None) or (
@@ -251,11 +407,11 @@ class DesignModel(QObject):
         if not same:
             self.errorChanged.emit()
 
-    def _set_forces_error(self, error: DesignError | None) -> None:
+    def _set_forces_error(self, error: DesignError | None, force: bool = False) -> None:
         changed = (error is None) != (self._forces_error is None) or (
             error is not None and str(error) != str(self._forces_error))
         self._forces_error = error
-        if changed:
+        if changed or force:
             self.forcesErrorChanged.emit()
 
     @staticmethod
@@ -264,23 +420,3 @@ class DesignModel(QObject):
         used = masses_for_design(design, masses)
         return (solve_dynamics(design, motion.crank_angle, motion.rpm, used),
                 summarize(design, motion.rpm, used))
-
-    def _recompute(self, keep_fraction: float | None = None) -> None:
-        try:
-            design = self._spec.design()
-            motion = solve(design, crank_angles(self._step), self._rpms)
-            metrics = analyze(design, self._rpms)
-            dynamics, summary = self._solve_forces(design, motion, self._masses)
-        except DesignError as exc:
-            self._set_error(exc)
-            return
-        self._design, self._motion, self._metrics = design, motion, metrics
-        self._dynamics, self._dynamics_summary = dynamics, summary
-        self._valid_spec = self._spec
-        if keep_fraction is not None:
-            self._index = int(round(keep_fraction * (motion.crank_angle.size - 1)))
-        self._index = min(self._index, motion.crank_angle.size - 1)
-        self._set_error(None)
-        self.resultsChanged.emit()
-        self.forcesChanged.emit()
-        self.angleChanged.emit(self._index)

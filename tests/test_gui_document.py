@@ -59,9 +59,14 @@ def test_corrupt_file_refused_and_nothing_changes(doc, tmp_path, qtbot, content)
 
 def test_save_to_unwritable_place_reports(doc, tmp_path, qtbot):
     model, document = doc
-    with qtbot.waitSignal(document.failed):
-        assert not document.save_to(str(tmp_path / "missing-dir" / "x.json"))
-    assert model.path == ""
+    target = str(tmp_path / "missing-dir" / "x.json")
+    with qtbot.waitSignal(document.failed) as blocker:
+        assert not document.save_to(target)
+    assert model.path == "" and target in blocker.args[0] and ".tmp" not in blocker.args[0]
+    csv = str(tmp_path / "missing-dir" / "c.csv")
+    with qtbot.waitSignal(document.failed) as blocker:
+        assert not document.export_csv_to(csv)
+    assert csv in blocker.args[0] and ".tmp" not in blocker.args[0]
 
 
 def test_csv_export_equals_cli_output(doc, tmp_path):

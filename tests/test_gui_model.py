@@ -48,8 +48,10 @@ def test_speeds_and_step(model, qtbot):
     assert model.motion.ram_v.shape == (4, 361)
     model.set_rpms([40, "fast"])
     assert model.error.parameter == "rpm" and model.rpms == (20, 40, 60, 80)
-    model.set_step(0.5)
-    assert model.angle_count == 721
+    model.set_step(0.5)       # the typed speeds are still invalid: nothing is applied
+    assert model.error.parameter == "rpm" and model.angle_count == 361
+    model.set_rpms([40, 50])
+    assert model.error is None and model.angle_count == 721 and model.rpms == (40, 50)
     model.set_step(0)
     assert model.error.parameter == "step" and model.angle_count == 721
 

@@ -1,0 +1,229 @@
+"""Reading design files defensively: all or nothing, never blocking, bounded.
+
+A design file is small JSON written by the GUI (``core.io.save_design``).
+Anything else — a FIFO, a device, a link to /dev/zero, a huge or deeply
+nested document, bools or strings where numbers belong, NaN, an unknown
+version — is refused with :class:`FileFormatError` and one plain sentence
+that names the file. Nothing here computes a design beyond validating it.
+"""
+from __future__ import annotations
+
+import errno
+import json
+import math
+import os
+import re
+import stat
+from dataclasses import fields
+from typing import Any
+
+import numpy as np
+
+from .dynamics import MassProperties
+from .errors import DesignError, FileFormatError
+from .kinematics import angle_count, check_rpms
+from .spec import Spec
+
+FILE_FORMAT = "shaper-design"
+FILE_VERSION = 1
+MAX_FILE_BYTES = 1_000_000
+"""A design file is a few hundred bytes; anything over 1 MB is refused unread."""
+MAX_DEPTH = 16
+"""Deepest nesting of arrays/objects accepted (a design file needs 3)."""
+MAX_INT_DIGITS = 20
+"""Longer integer literals are refused before Python turns them into huge ints."""
+DEFAULT_FILE_RPMS = (40.0, 60.0)
+DEFAULT_FILE_STEP = 1.0
+
+
+class _Refused(ValueError):
+    """A JSON literal the parser must not turn into a value (NaN, 1e999, a 400-digit int)."""
+
+
+def load_design(path: str | os.PathLike) -> dict[str, Any]:
+    """Read and fully validate a design file; returns {'spec', 'rpm', 'step_deg', 'masses', …}.
+
+    Raises FileFormatError with one plain sentence for anything unreadable,
+    foreign or invalid; the caller's state is never touched before it returns.
+    """
+    name = os.fsdecode(path)
+    doc = _parse(_read_limited(name), name)
+    if not isinstance(doc, dict) or doc.get("format") != FILE_FORMAT:
+        raise FileFormatError(f"{name} is not a shaper design file")
+    version = doc.get("version")
+    if type(version) is not int or version != FILE_VERSION:
+        shown = "missing" if "version" not in doc else json.dumps(version)[:40]
+        raise FileFormatError(f"{name} has an unsupported version ({shown}); "
+                              f"this program reads version {FILE_VERSION}")
+    if "spec" not in doc:
+        raise FileFormatError(f"{name} holds no design (its 'spec' entry is missing)")
+    try:
+        spec = _spec(doc["spec"], name)
+        rpm = _rpms(doc.get("rpm", list(DEFAULT_FILE_RPMS)), name)
+        step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name)
+        masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
+    except FileFormatError:
+        raise
+    except (DesignError, ArithmeticError, ValueError) as exc:   # never a traceback
+        raise FileFormatError(f"{name}: invalid design ({_shorten(str(exc))})") from None
+    result = dict(doc)
+    result.update(spec=spec, rpm=rpm, step_deg=step, masses=masses)
+    return result
+
+
+def _shorten(text: str, limit: int = 160) -> str:
+    """One readable sentence even when a file holds a megabyte-long string."""
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
+# ---- reading ------------------------------------------------------------------
+def _read_limited(name: str) -> bytes:
+    """At most MAX_FILE_BYTES of a regular file; special files are refused before opening."""
+    try:
+        info = os.stat(name)
+    except OSError as exc:
+        raise FileFormatError(f"cannot read {name}: {exc.strerror or exc}") from None
+    _require_regular(info, name)
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) \
+        | getattr(os, "O_BINARY", 0)
+    try:
+        fd = os.open(name, flags)
+    except OSError as exc:
+        raise FileFormatError(f"cannot read {name}: {exc.strerror or exc}") from None
+    try:
+        _require_regular(os.fstat(fd), name)      # swapped for a FIFO after the stat?
+        chunks, size = [], 0
+        while size <= MAX_FILE_BYTES:
+            chunk = os.read(fd, MAX_FILE_BYTES + 1 - size)
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+    except OSError as exc:
+        if exc.errno in (errno.EAGAIN, errno.EWOULDBLOCK):
+            raise FileFormatError(f"{name} is not a regular file") from None
+        raise FileFormatError(f"cannot read {name}: {exc.strerror or exc}") from None
+    finally:
+        os.close(fd)
+    if size > MAX_FILE_BYTES:
+        raise FileFormatError(f"{name} is larger than {MAX_FILE_BYTES // 1_000_000} MB, "
+                              "too large to be a design file")
+    return b"".join(chunks)
+
+
+def _require_regular(info: os.stat_result, name: str) -> None:
+    if stat.S_ISDIR(info.st_mode):
+        raise FileFormatError(f"{name} is a folder, not a design file")
+    if not stat.S_ISREG(info.st_mode):
+        raise FileFormatError(f"{name} is not a regular file (a device, pipe or socket)")
+    if info.st_size > MAX_FILE_BYTES:
+        raise FileFormatError(f"{name} is larger than {MAX_FILE_BYTES // 1_000_000} MB, "
+                              "too large to be a design file")
+
+
+_STRING = re.compile(rb'"(?:[^"\\]|\\.)*"', re.DOTALL)
+
+
+def _nesting_depth(raw: bytes) -> int:
+    """Deepest [ / { nesting outside string literals, without recursion."""
+    bare = np.frombuffer(_STRING.sub(b'""', raw), dtype=np.uint8)
+    if bare.size == 0:
+        return 0
+    step = (np.isin(bare, (ord("["), ord("{"))).astype(np.int64)
+            - np.isin(bare, (ord("]"), ord("}"))).astype(np.int64))
+    return int(np.cumsum(step).max(initial=0))
+
+
+def _parse(raw: bytes, name: str) -> object:
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise FileFormatError(f"{name} is not a design file (not UTF-8 text)") from None
+    if _nesting_depth(raw) > MAX_DEPTH:
+        raise FileFormatError(f"{name} is not a design file (nested more than {MAX_DEPTH} levels deep)")
+    try:
+        return json.loads(text, parse_constant=_refuse_constant, parse_int=_parse_int,
+                          parse_float=_parse_float)
+    except _Refused as exc:
+        raise FileFormatError(f"{name} is not a design file ({exc})") from None
+    except (json.JSONDecodeError, ValueError, RecursionError):
+        raise FileFormatError(f"{name} is not a design file (not valid JSON)") from None
+
+
+def _refuse_constant(literal: str) -> float:
+    raise _Refused(f"{literal} is not a number a design may hold")
+
+
+def _parse_int(literal: str) -> int:
+    if len(literal.lstrip("-")) > MAX_INT_DIGITS:
+        raise _Refused(f"an integer of {len(literal.lstrip('-'))} digits is too large")
+    return int(literal)
+
+
+def _parse_float(literal: str) -> float:
+    value = float(literal)
+    if not math.isfinite(value):
+        raise _Refused(f"{literal[:20]} is too large a number")
+    return value
+
+
+# ---- validation -----------------------------------------------------------------
+def _is_number(value: object) -> bool:
+    """A JSON number: int or float, never a bool (which Python counts as an int)."""
+    return type(value) in (int, float)
+
+
+def _spec(data: object, name: str) -> Spec:
+    if not isinstance(data, dict):
+        raise FileFormatError(f"{name}: 'spec' must be an object of design fields")
+    spec = Spec.from_dict(data)
+    spec.check_fields()      # inactive fields too: what is saved must reopen in any mode
+    spec.design()
+    return spec
+
+
+def _rpms(data: object, name: str) -> list[float]:
+    if not isinstance(data, list) or not data:
+        raise FileFormatError(f"{name}: 'rpm' must be a list of crank speeds in r/min")
+    for value in data:
+        if not _is_number(value):
+            raise FileFormatError(f"{name}: crank speed {json.dumps(value)[:40]} is not a number")
+    return [float(v) for v in check_rpms(data)]   # core's bounds, floor included
+
+
+def _step(value: object, name: str) -> float:
+    if not _is_number(value):
+        raise FileFormatError(f"{name}: 'step_deg' must be a number of degrees")
+    angle_count(float(value))      # core's bounds, without building the angles
+    return float(value)
+
+
+def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
+    """The load inputs as stored in a design file (units in the keys)."""
+    data = {f.name: getattr(masses, f.name) for f in fields(MassProperties)}
+    data["ram_cg_mm"] = list(masses.ram_cg_mm)
+    return data
+
+
+def masses_from_dict(data: object) -> MassProperties:
+    """Validate stored load inputs; DesignError names the bad field."""
+    if not isinstance(data, dict):
+        raise DesignError("forces", type(data).__name__, "must be an object of load inputs")
+    known = {f.name for f in fields(MassProperties)}
+    for key, value in data.items():
+        if key not in known:
+            raise DesignError(key, value, "is not a load input")
+        if key == "gravity":
+            if type(value) is not bool:
+                raise DesignError(key, value, "must be true or false")
+        elif key == "ram_cg_mm":
+            if not isinstance(value, list) or len(value) != 2 or not all(map(_is_number, value)):
+                raise DesignError(key, value, "must be a pair [dx, dy] in mm")
+        elif key == "lever_cg_mm" and value is None:
+            continue
+        elif not _is_number(value):
+            raise DesignError(key, value, "must be a number")
+    values = dict(data)
+    if "ram_cg_mm" in values:
+        values["ram_cg_mm"] = tuple(values["ram_cg_mm"])
+    return MassProperties(**values)

@@ -1,0 +1,106 @@
+"""Application-wide event filters that keep input predictable.
+
+* :class:`WheelGuard` — the mouse wheel never changes a choice, number or slider
+  the user has not focused: such widgets take focus only by click or Tab, and a
+  wheel over them while unfocused scrolls the panel they sit in instead.
+* :class:`ShortcutGuard` — the window's shortcuts work wherever the focus is. A
+  line edit claims Ctrl+E, Ctrl+Left/Right, Ctrl+Z … for its own editing; for
+  the keys of the window's actions the guard declines that claim, so the action
+  runs. A bare key (Space to play) still types into a text field.
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtGui import QAction, QKeyEvent, QKeySequence
+from PySide6.QtWidgets import (QAbstractScrollArea, QAbstractSpinBox, QApplication, QComboBox, QLineEdit, QPlainTextEdit,
+                               QScrollBar, QSlider, QTextEdit, QWidget)
+
+_WHEEL_TARGETS = (QComboBox, QAbstractSpinBox, QSlider)
+
+
+def is_text_input(widget: QWidget | None) -> bool:
+    """A widget in which a bare key types text."""
+    if isinstance(widget, QComboBox):
+        return widget.isEditable()
+    return isinstance(widget, (QLineEdit, QTextEdit, QPlainTextEdit, QAbstractSpinBox))
+
+
+def _scroll_area(widget: QWidget) -> QAbstractScrollArea | None:
+    parent = widget.parentWidget()
+    while parent is not None and not isinstance(parent, QAbstractScrollArea):
+        parent = parent.parentWidget()
+    return parent
+
+
+def _wheel_target(obj: QObject) -> bool:
+    return isinstance(obj, _WHEEL_TARGETS) and not isinstance(obj, QScrollBar)
+
+
+class WheelGuard(QObject):
+    """Installed once on the application (see :func:`install_wheel_guard`)."""
+
+    def eventFilter(self, obj: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
+        kind = event.type()
+        if kind == QEvent.Type.Polish and _wheel_target(obj):
+            self.protect(obj)
+        elif kind == QEvent.Type.Wheel and _wheel_target(obj) and not obj.hasFocus():
+            area = _scroll_area(obj)
+            if area is not None:              # scroll the panel the widget sits in
+                QApplication.sendEvent(area.verticalScrollBar(), event)
+            return True
+        return False
+
+    @staticmethod
+    def protect(widget: QWidget) -> None:
+        if widget.focusPolicy() == Qt.FocusPolicy.WheelFocus:
+            widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
+
+
+def install_wheel_guard() -> None:
+    """Guard every present and future combo box, spin box and slider (idempotent)."""
+    app = QApplication.instance()
+    if app is None or app.property("shaperWheelGuard"):
+        return
+    guard = WheelGuard(app)
+    app.installEventFilter(guard)
+    app.setProperty("shaperWheelGuard", True)
+    for top in app.allWidgets():
+        if _wheel_target(top):
+            guard.protect(top)
+
+
+class ShortcutGuard(QObject):
+    """Lets ``window``'s action shortcuts win over a focused widget's own key bindings."""
+
+    def __init__(self, window: QWidget, before: Callable[[], None]) -> None:
+        """``before`` runs when one of the window's shortcuts is pressed, before the
+        action is looked up (the window sends pending typing, which may enable Undo)."""
+        super().__init__(window)
+        self._window = window
+        self._before = before
+
+    def eventFilter(self, obj: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
+        if event.type() != QEvent.Type.ShortcutOverride or not isinstance(event, QKeyEvent):
+            return False
+        focus = QApplication.focusWidget()
+        if focus is None or obj is not focus or focus.window() is not self._window:
+            return False
+        pressed = QKeySequence(event.keyCombination())
+        bare = event.modifiers() in (Qt.KeyboardModifier.NoModifier, Qt.KeyboardModifier.KeypadModifier)
+        if bare and is_text_input(focus):
+            return False          # Space, letters … type text
+        actions = self._actions_for(pressed)
+        if not actions:
+            return False
+        self._before()
+        if any(action.isEnabled() for action in actions):
+            event.ignore()        # not claimed by the widget: the shortcut map runs the action
+            return True
+        return False              # e.g. nothing to undo: the field's own binding may act
+
+    def _actions_for(self, pressed: QKeySequence) -> list[QAction]:
+        return [action for action in self._window.findChildren(QAction)
+                if any(sequence.matches(pressed) == QKeySequence.SequenceMatch.ExactMatch
+                       for sequence in action.shortcuts())]

@@ -1,0 +1,66 @@
+"""Undo and redo of input edits: one QUndoCommand type holding two input states.
+
+Every design and load edit goes through the model's setters, which push an
+:class:`InputEdit` from the inputs before to the inputs after. Keystrokes in one
+field arrive as several edits with the same ``key`` (the fields touched and the
+typing session); Qt merges them into one step through ``id``/``mergeWith``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable, Hashable
+
+from PySide6.QtGui import QUndoCommand
+
+from core.spec import Spec
+
+MERGE_ID = 1
+
+
+@dataclass(frozen=True)
+class Inputs:
+    """Everything the user typed, valid or not: one state of the undo history.
+
+    ``rpms`` and ``step`` hold floats, or the text the user typed when it is not a
+    number; ``loads`` are the load fields as typed (``MassProperties`` names)."""
+
+    spec: Spec
+    rpms: tuple[Any, ...]
+    step: Any
+    loads: tuple[tuple[str, Any], ...]
+
+    @property
+    def load_dict(self) -> dict[str, Any]:
+        return dict(self.loads)
+
+
+class InputEdit(QUndoCommand):
+    """Go from ``before`` to ``after`` (redo) and back (undo) through ``apply``.
+
+    ``key`` is None for an edit that never merges (a choice, a speed added), else
+    a hashable naming the fields and the typing session; consecutive edits with
+    equal keys merge. An edit merged back to where it started becomes obsolete."""
+
+    def __init__(self, apply: Callable[[Inputs], None], before: Inputs, after: Inputs,
+                 key: Hashable | None, text: str) -> None:
+        super().__init__(text)
+        self._apply = apply
+        self.before = before
+        self.after = after
+        self.key = key
+
+    def id(self) -> int:  # noqa: A003 - Qt's name
+        return MERGE_ID if self.key is not None else -1
+
+    def mergeWith(self, other: QUndoCommand) -> bool:  # noqa: N802 - Qt's name
+        if not isinstance(other, InputEdit) or other.key is None or other.key != self.key:
+            return False
+        self.after = other.after
+        self.setObsolete(self.after == self.before)
+        return True
+
+    def redo(self) -> None:
+        self._apply(self.after)
+
+    def undo(self) -> None:
+        self._apply(self.before)

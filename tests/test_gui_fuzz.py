@@ -1,0 +1,229 @@
+"""Issue 7: a fixed-seed run of a few thousand random user actions on the whole window.
+
+Random text goes into every field (design, speeds, step, loads), every choice is
+switched, speeds are added and removed, the animation is played and stepped, the
+language switched, edits undone and redone, images and CSV exported to tmp_path,
+good and hostile files opened, the design saved. Dialogs answer at random. No
+exception may reach ``sys.excepthook``; after every action what Save would write is
+valid and the window never holds more samples than it redraws in half a second.
+"""
+import json
+import os
+import random
+import sys
+import time
+
+import pytest
+from PySide6.QtCore import QSettings, Qt
+from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
+
+from core.io import load_design
+from core.spec import NUMBER_FIELDS
+from shaperapp import file_dialogs, i18n
+from shaperapp.main_window import MainWindow
+from shaperapp.model import MAX_GUI_SAMPLES, DesignModel
+
+from hostile_files import CASES, VALID, build_case
+
+SEED = 20240611
+# 2000 actions take about 40 s on the shared 2-core machine when quiet, 90 s under a load
+# of 5; SHAPER_GUI_FUZZ_ACTIONS runs more (e.g. 20000 before a release).
+ACTIONS = int(os.environ.get("SHAPER_GUI_FUZZ_ACTIONS", "2000"))
+DESIGN_FIELDS = ("crank", "time_ratio", "stroke", "frame", "lever", "guide_height", "rod_length", "rod_ratio", "step")
+LOAD_FIELDS = ("lever_mass_kg", "lever_cg_mm", "lever_inertia_kg_m2", "ram_mass_kg", "ram_cg_dx", "ram_cg_dy",
+               "rod_mass_kg", "block_mass_kg", "cut_force_N", "cut_height_mm", "idle_percent", "delta")
+GARBAGE = ("", " ", "abc", "ጼ", "nan", "inf", "-inf", "1e999", "1e-320", "5e-324", "-0", "0", "1,5", "1/30",
+           "1/0", "0x1F", "--3", "1e308", "١٢٣", "∞", "1.2.3", "1e", "+", "NaN", "3 4", "\t7")
+HOSTILE = ("fifo", "link_to_dev_zero", "folder", "version_true", "spec_missing", "rpm_strings", "deep_arrays",
+           "int_400_digits", "nan", "bad_utf8", "sparse_5_GB", "rpm_denormal", "inactive_frame_text")
+
+
+def random_text(rng: random.Random, default: float) -> str:
+    roll = rng.random()
+    if roll < 0.55:
+        return f"{default * rng.uniform(0.5, 2.0):.{rng.randint(1, 8)}g}"
+    if roll < 0.8:
+        return rng.choice(GARBAGE)
+    if roll < 0.9:
+        return f"{rng.uniform(-1e6, 1e6):g}"
+    return "".join(rng.choice("0123456789.-e,/ xé") for _ in range(rng.randint(1, 6)))
+
+
+class Fuzzer:
+    def __init__(self, window: MainWindow, rng: random.Random, folder) -> None:
+        self.w, self.rng, self.folder = window, rng, folder
+        self.files = self._files()
+        self.counts: dict[str, int] = {}
+        self.seconds: dict[str, float] = {}
+
+    def _files(self) -> list[str]:
+        good = self.folder / "good.shaper.json"
+        good.write_text(json.dumps(dict(VALID, rpm=[30.0, 50.0, 70.0], step_deg=2.0)))
+        paths = [str(good)]
+        for name in HOSTILE:
+            paths.append(str(build_case(name, self.folder)))
+        return paths
+
+    def save_name(self) -> str:
+        rng, f = self.rng, self.folder
+        return rng.choice([str(f / "out.png"), str(f / "out.svg"), str(f / "out.csv"), str(f / "d.shaper.json"),
+                           str(f / "missing" / "out.png"), str(f / "out.xyz"), str(f / "noext"), ""])
+
+    # ---- actions -------------------------------------------------------
+    def type_design(self) -> None:
+        name = self.rng.choice(DESIGN_FIELDS)
+        edit = self.w.form.field(name)
+        default = {"time_ratio": 1.4, "rod_ratio": 0.3, "step": 1.0}.get(name, 300.0)
+        text = random_text(self.rng, default)
+        if name == "step" and self.rng.random() < 0.7:
+            text = self.rng.choice(("1", "2", "5", "0.5", "0.05", "0.001", "0.0002", "45", text))
+        edit.setFocus()
+        edit.setText(text)
+        edit.textEdited.emit(text)
+        edit.editingFinished.emit()
+
+    def type_load(self) -> None:
+        name = self.rng.choice(LOAD_FIELDS)
+        edit = self.w.forces.field(name)
+        text = random_text(self.rng, {"delta": 0.0333, "idle_percent": 5.0}.get(name, 50.0))
+        edit.setText(text)
+        edit.textEdited.emit(text)
+        edit.editingFinished.emit()
+
+    def choice(self) -> None:
+        form = self.w.form
+        pick = self.rng.randrange(6)
+        if pick == 0:
+            self.rng.choice((form._synth_radio, form._dims_radio)).click()
+        elif pick == 1:
+            self.w.forces.gravity_box().click()
+        else:
+            combo = form._combo(("variant", "guide_rule", "rod_input", "rod_side")[pick - 2])
+            combo.setCurrentIndex(self.rng.randrange(combo.count()))
+
+    def speeds(self) -> None:
+        form, rng = self.w.form, self.rng
+        pick = rng.randrange(4)
+        if pick == 0:
+            form._add_speed.click()
+        elif pick == 1:
+            form._speeds.setCurrentRow(rng.randrange(form._speeds.count()))
+            form._remove_speed.click()
+        else:
+            row = rng.randrange(form._speeds.count())
+            form._speeds.item(row).setText(random_text(rng, 60.0))
+
+    def animation(self) -> None:
+        w, rng = self.w, self.rng
+        pick = rng.randrange(6)
+        if pick == 0:
+            w.act_play.trigger()
+        elif pick == 1:
+            w.act_step.trigger()
+        elif pick == 2:
+            w.act_back.trigger()
+        elif pick == 3:
+            w.act_goto.trigger()
+        elif pick == 4:
+            w.model.set_angle_index(rng.randrange(10_000))
+        else:
+            w.form.field("crank").setFocus()
+            key = rng.choice((Qt.Key.Key_Left, Qt.Key.Key_Right, Qt.Key.Key_Space))
+            mods = Qt.KeyboardModifier.ControlModifier if key != Qt.Key.Key_Space else Qt.KeyboardModifier.NoModifier
+            focus = QApplication.focusWidget() or w
+            from pytestqt.qtbot import QtBot
+            QtBot.keyClick(focus, key, mods)
+
+    def view(self) -> None:
+        w, rng = self.w, self.rng
+        rng.choice((w.act_fit, w.act_dims, w.act_forces)).trigger()
+        w.tabs.setCurrentIndex(rng.randrange(w.tabs.count()))
+
+    def undo_redo(self) -> None:
+        (self.w.act_undo if self.rng.random() < 0.6 else self.w.act_redo).trigger()
+
+    def language(self) -> None:
+        self.w.lang_actions[self.rng.choice(("en", "zh_CN"))].trigger()
+
+    def export(self) -> None:
+        w = self.w
+        self.rng.choice((w.act_csv, w.act_forces_csv, w.act_plots_img, w.act_scheme_img)).trigger()
+
+    def files_action(self) -> None:
+        w = self.w
+        self.rng.choice((w.act_open, w.act_open, w.act_save, w.act_save_as, w.act_new)).trigger()
+
+    def run(self, count: int) -> float:
+        table = [(self.type_design, 30), (self.type_load, 12), (self.choice, 14), (self.speeds, 8),
+                 (self.animation, 14), (self.view, 4), (self.undo_redo, 10), (self.language, 1),
+                 (self.export, 3), (self.files_action, 4)]
+        actions, weights = zip(*table)
+        slowest = 0.0
+        for _ in range(count):
+            action = self.rng.choices(actions, weights)[0]
+            self.counts[action.__name__] = self.counts.get(action.__name__, 0) + 1
+            start = time.perf_counter()
+            action()
+            QApplication.processEvents()
+            took = time.perf_counter() - start
+            self.seconds[action.__name__] = self.seconds.get(action.__name__, 0.0) + took
+            slowest = max(slowest, took)
+            self.check()
+        return slowest
+
+    def check(self) -> None:
+        model = self.w.model
+        model.valid_spec.check_fields()
+        for name in set(NUMBER_FIELDS) - model.spec.active_fields():
+            model.spec.check_field(name)
+        assert model.angle_count * len(model.rpms) <= MAX_GUI_SAMPLES
+
+
+@pytest.fixture
+def patched_dialogs(monkeypatch, tmp_path):
+    """Every modal dialog answers at once, at random (the seed makes it repeatable)."""
+    rng = random.Random(SEED + 1)
+    state = {}
+
+    def ask(*args, **kwargs):
+        return rng.choice((QMessageBox.StandardButton.Yes, QMessageBox.StandardButton.Cancel,
+                           QMessageBox.StandardButton.Save, QMessageBox.StandardButton.Discard))
+
+    for name in ("warning", "critical", "information"):
+        monkeypatch.setattr(QMessageBox, name, lambda *a, **k: QMessageBox.StandardButton.Ok)
+    monkeypatch.setattr(QMessageBox, "question", ask)
+    monkeypatch.setattr(QMessageBox, "about", lambda *a, **k: None)
+    monkeypatch.setattr(file_dialogs, "save_file_name", lambda *a, **k: state["fuzzer"].save_name())
+    monkeypatch.setattr(file_dialogs, "open_file_name", lambda *a, **k: rng.choice(state["fuzzer"].files + [""]))
+    monkeypatch.setattr(QInputDialog, "getDouble", lambda *a, **k: (rng.uniform(-10, 370), rng.random() < 0.8))
+    return state
+
+
+def test_random_user_actions_raise_nothing(qtbot, tmp_path, monkeypatch, patched_dialogs):
+    caught = []
+    monkeypatch.setattr(sys, "excepthook", lambda kind, value, tb: caught.append((kind, value)))
+    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
+    window = MainWindow(DesignModel(), settings)
+    qtbot.addWidget(window)
+    window.resize(1100, 700)
+    window.show()
+    qtbot.waitExposed(window)
+    fuzzer = Fuzzer(window, random.Random(SEED), tmp_path)
+    patched_dialogs["fuzzer"] = fuzzer
+    start = time.perf_counter()
+    try:
+        slowest = fuzzer.run(ACTIONS)
+    finally:
+        window.animation.play_action.setChecked(False)
+        i18n.set_language("en")
+    elapsed = time.perf_counter() - start
+    assert caught == [], caught[:3]
+    assert sum(fuzzer.counts.values()) == ACTIONS and len(fuzzer.counts) == 10
+    print(f"\nGUI fuzz: {ACTIONS} actions in {elapsed:.1f} s, slowest {slowest:.2f} s; {fuzzer.counts}; "
+          f"seconds {({k: round(v, 1) for k, v in fuzzer.seconds.items()})}")
+    # What is on screen still saves and reopens.
+    window.model.revert_invalid()
+    path = tmp_path / "final.shaper.json"
+    assert window.document.save_to(str(path))
+    assert load_design(path)["spec"] == window.model.valid_spec
+    window.model.set_clean(window.model.path)

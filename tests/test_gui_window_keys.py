@@ -1,0 +1,171 @@
+"""Issue 8 items 3, 4, 6 and issue 7 item 7 in the assembled window: the Edit menu,
+shortcuts wherever the focus is, Space, Go to angle, Chinese without leaks, one-language
+title, one font weight, and clear image-export errors."""
+import re
+
+import pytest
+from PySide6.QtCore import QCoreApplication, QSettings, Qt, QTranslator
+from PySide6.QtGui import QFont, QGuiApplication, QKeySequence
+from PySide6.QtWidgets import QApplication, QInputDialog
+
+from shaperapp import i18n
+from shaperapp.main_window import MainWindow
+from shaperapp.model import DesignModel
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, monkeypatch):
+    failures = []
+    monkeypatch.setattr(MainWindow, "_show_failure", lambda self, message: failures.append(message))
+    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
+    win = MainWindow(DesignModel(), settings)
+    win.failures = failures
+    win.show()
+    win.activateWindow()
+    qtbot.waitActive(win)
+    yield win
+    win.animation.play_action.setChecked(False)
+    win.model.set_clean(win.model.path)
+    win.close()
+    win.deleteLater()
+    i18n.set_language("en")
+
+
+def focus_field(win, qtbot, name="time_ratio"):
+    edit = win.form.field(name)
+    edit.setFocus()
+    qtbot.waitUntil(edit.hasFocus)
+    return edit
+
+
+def test_ctrl_e_works_with_focus_in_a_field(window, qtbot, monkeypatch):
+    """Issue 8: Ctrl+E did nothing in a field (the line edit took it as 'end of line')."""
+    calls = []
+    monkeypatch.setattr(window.document, "export_csv_dialog", lambda parent: calls.append(parent))
+    edit = focus_field(window, qtbot)
+    text = edit.text()
+    qtbot.keyClick(edit, Qt.Key.Key_E, Qt.KeyboardModifier.ControlModifier)
+    assert calls == [window] and edit.text() == text
+
+
+def test_ctrl_left_right_step_the_animation_with_focus_in_a_field(window, qtbot):
+    edit = focus_field(window, qtbot, "stroke")
+    qtbot.keyClick(edit, Qt.Key.Key_Right, Qt.KeyboardModifier.ControlModifier)
+    assert window.model.angle_index == 1
+    qtbot.keyClick(edit, Qt.Key.Key_Left, Qt.KeyboardModifier.ControlModifier)
+    qtbot.keyClick(edit, Qt.Key.Key_Left, Qt.KeyboardModifier.ControlModifier)
+    assert window.model.angle_index == window.model.angle_count - 1
+
+
+def test_ctrl_z_in_a_field_undoes_the_design_edit(window, qtbot):
+    edit = focus_field(window, qtbot)
+    edit.selectAll()
+    qtbot.keyClicks(edit, "1.6")                # not yet sent: the debounce is pending
+    qtbot.keyClick(edit, Qt.Key.Key_Z, Qt.KeyboardModifier.ControlModifier)
+    assert window.model.spec.time_ratio == 1.4 and edit.text() == "1.4"
+    assert window.model.undo_stack.canRedo()
+    qtbot.keyClick(edit, Qt.Key.Key_Z, Qt.KeyboardModifier.ControlModifier | Qt.KeyboardModifier.ShiftModifier)
+    assert window.model.spec.time_ratio == 1.6 and edit.text() == "1.6"
+
+
+def test_edit_menu_and_standard_keys(window):
+    assert window.menu_edit.actions()[:2] == [window.act_undo, window.act_redo]
+    assert QKeySequence(QKeySequence.StandardKey.Undo) in window.act_undo.shortcuts()
+    assert QKeySequence(QKeySequence.StandardKey.Redo) in window.act_redo.shortcuts()
+    assert not window.act_undo.isEnabled()
+    window.model.set_spec(stroke=320.0)
+    assert window.act_undo.isEnabled() and window.act_undo.text() == "&Undo Stroke H"
+    window.act_undo.trigger()
+    assert window.model.spec.stroke == 300.0 and window.act_redo.text() == "&Redo Stroke H"
+    assert not window.isWindowModified()
+
+
+def test_save_shortcut_sends_what_is_typed_first(window, qtbot, monkeypatch, tmp_path):
+    """Issue 8: Ctrl+S with an invalid K typed saved the old K silently."""
+    asked = []
+    monkeypatch.setattr(window.document, "confirm_valid", lambda parent, saving: asked.append(
+        window.model.error) or False)
+    edit = focus_field(window, qtbot)
+    edit.selectAll()
+    qtbot.keyClicks(edit, "0.9")
+    qtbot.keyClick(edit, Qt.Key.Key_S, Qt.KeyboardModifier.ControlModifier)
+    assert asked and asked[0] is not None and asked[0].parameter == "time_ratio"
+
+
+def test_space_plays_unless_typing(window, qtbot):
+    edit = focus_field(window, qtbot, "crank")
+    qtbot.keyClick(edit, Qt.Key.Key_Space)
+    assert not window.animation.play_action.isChecked() and " " in edit.text()
+    window.tabs.setFocus()
+    qtbot.waitUntil(window.tabs.hasFocus)
+    qtbot.keyClick(window.tabs, Qt.Key.Key_Space)
+    assert window.animation.play_action.isChecked()
+    qtbot.keyClick(window.tabs, Qt.Key.Key_Space)
+    assert not window.animation.play_action.isChecked()
+
+
+def test_go_to_a_typed_crank_angle(window, monkeypatch):
+    monkeypatch.setattr(QInputDialog, "getDouble", lambda *a, **k: (123.0, True))
+    window.act_goto.trigger()
+    assert window.model.crank_deg == pytest.approx(123.0)
+    monkeypatch.setattr(QInputDialog, "getDouble", lambda *a, **k: (10.0, False))
+    window.act_goto.trigger()
+    assert window.model.crank_deg == pytest.approx(123.0)
+
+
+def test_language_switch_leaks_no_translator(window):
+    app = QCoreApplication.instance()
+    window.set_language("zh_CN")
+    count = len(app.findChildren(QTranslator))
+    for _ in range(10):
+        window.set_language("en")
+        window.set_language("zh_CN")
+    assert len(app.findChildren(QTranslator)) == count <= 2
+
+
+def test_qt_dialogs_are_chinese_too(window):
+    """Issue 8: qt_zh_CN failed to load, so Save/Cancel and the file dialog stayed English."""
+    window.set_language("zh_CN")
+    assert QCoreApplication.translate("QPlatformTheme", "Cancel") == "取消"
+    assert QCoreApplication.translate("QFileDialog", "Look in:") != "Look in:"
+    from PySide6.QtWidgets import QLabel
+    from shaperapp.file_dialogs import _dialog
+    dialog = _dialog(window, "t", "", "*.json")
+    labels = [re.sub(r"&\w", "", label.text()) for label in dialog.findChildren(QLabel)]   # no mnemonics
+    assert labels and all(not any(c.isascii() and c.isalpha() for c in text) for text in labels), labels
+    dialog.deleteLater()
+    window.set_language("en")
+    assert QCoreApplication.translate("QPlatformTheme", "Cancel") == "Cancel"
+
+
+def test_window_title_in_one_language(window):
+    window.set_language("zh_CN")
+    QApplication.processEvents()                  # LanguageChange is delivered as an event
+    name = QGuiApplication.applicationDisplayName()
+    assert name != "Shaper Designer" and all(not c.isascii() or c == " " for c in name)
+    assert "Shaper" not in window.windowTitle() and window.windowTitle().startswith("未命名")
+    window.set_language("en")
+    QApplication.processEvents()
+    assert QGuiApplication.applicationDisplayName() == "Shaper Designer"
+    assert window.windowTitle() == "Untitled[*]"
+
+
+def test_error_text_in_one_font_weight(window):
+    window.set_language("zh_CN")
+    window.model.set_spec(time_ratio=0.5)
+    for label in (window.form._error_label, window.forces._error_label):
+        assert "font-weight" not in label.styleSheet() and "bold" not in label.styleSheet()
+        assert label.font().weight() == QFont.Weight.Normal
+
+
+@pytest.mark.parametrize("view", ["scheme", "plots", "forces"])
+def test_image_export_errors_name_the_path(window, tmp_path, view):
+    widget = getattr(window, view)
+    missing = tmp_path / "no such folder" / "out.png"
+    assert not window.export_image_to(widget, str(missing))
+    assert str(missing) in window.failures[-1] and "does not exist" in window.failures[-1]
+    odd = tmp_path / "out.xyz"
+    assert not window.export_image_to(widget, str(odd))
+    assert str(odd) in window.failures[-1]
+    good = tmp_path / "out.png"
+    assert window.export_image_to(widget, str(good)) and good.stat().st_size > 1000
