@@ -114,6 +114,15 @@ def load_design(path: str | os.PathLike) -> dict[str, Any]:
         raw = Path(path).read_bytes()
     except OSError as exc:
         raise FileFormatError(f"cannot read {path}: {exc.strerror or exc}") from None
+    return parse_design(raw, str(path))
+
+
+def parse_design(raw: bytes, path: str) -> dict[str, Any]:
+    """Validate a design document given as bytes; ``path`` names its source in messages.
+
+    The rules of :func:`load_design`, for documents that do not come from a file
+    (the design library keeps them in a database).
+    """
     if len(raw) > 10_000_000:
         raise FileFormatError(f"{path} is too large to be a design file")
     try:

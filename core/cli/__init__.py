@@ -22,7 +22,7 @@ from .common import (OutputError, Parser, UsageError, fail, install_safe_output,
                      version_text)
 
 # Order is the order of ``shaper --help``.
-CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics")
+CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "library")
 
 
 def _command_modules() -> dict[str, ModuleType]:
