@@ -79,14 +79,14 @@ def check_name(name: object) -> str:
 
 
 def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
-    """Stripped, de-duplicated, sorted tags; LibraryError('name') for a bad one."""
+    """Stripped, de-duplicated, sorted tags; LibraryError('tag') for a bad one."""
     out = set()
     for tag in tags:
         tag = str(tag).strip()
         if not tag:
             continue
         if len(tag) > MAX_TAG or "," in tag or _CONTROL.search(tag):
-            raise LibraryError("name", f"a tag must be at most {MAX_TAG} characters, without "
+            raise LibraryError("tag", f"a tag must be at most {MAX_TAG} characters, without "
                                f"commas or control characters (got {tag[:80]!r})")
         out.add(tag)
     return tuple(sorted(out))
@@ -234,8 +234,20 @@ class Library:
 
     def add_entries(self, entries: Sequence[Entry]) -> None:
         """Store ready entries in one transaction, all or none (names must be free)."""
+        self.replace_entries((), entries)
+
+    def replace_entries(self, remove: Iterable[str], add: Sequence[Entry]) -> None:
+        """Delete the entries named ``remove`` and store ``add``, in one transaction.
+
+        Every edit is such a swap of whole entries, so an edit and its undo are both
+        one call (LibraryError 'missing'/'exists' if the library changed meanwhile).
+        """
         with transaction(self._conn, self.path) as c:
-            for entry in entries:
+            for name in remove:
+                if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+                    raise LibraryError("missing", f"there is no design named {name!r} in the library",
+                                       self.path)
+            for entry in add:
                 if c.execute("SELECT 1 FROM entries WHERE name = ?", (entry.name,)).fetchone():
                     raise self._exists(entry.name)
                 self._insert(c, entry)

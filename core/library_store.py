@@ -16,7 +16,6 @@ from __future__ import annotations
 import os
 import shutil
 import sqlite3
-import tempfile
 from contextlib import contextmanager
 from datetime import datetime, timezone
 from pathlib import Path
@@ -32,7 +31,7 @@ SQLITE_HEADER = b"SQLite format 3\x00"
 
 class LibraryError(Exception):
     """A library problem with a plain message. ``kind`` is one of ``damaged``,
-    ``newer``, ``foreign``, ``io``, ``busy``, ``name``, ``exists``, ``missing``."""
+    ``newer``, ``foreign``, ``io``, ``busy``, ``name``, ``tag``, ``exists``, ``missing``."""
 
     def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None) -> None:
         super().__init__(message)
@@ -322,16 +321,12 @@ def backup_target(path: str | os.PathLike, label: str = "backup") -> Path:
 
 
 def _copy_atomic(source: Path, target: Path) -> None:
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
-    os.close(fd)
+    """Copy through a temporary file beside ``target``, synced, then renamed into place."""
+    tmp = target.with_name(f".{target.name}.tmp")
     try:
         shutil.copyfile(source, tmp)
         with open(tmp, "rb+") as handle:
             os.fsync(handle.fileno())
         os.replace(tmp, target)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
+    finally:
+        tmp.unlink(missing_ok=True)

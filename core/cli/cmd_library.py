@@ -20,7 +20,7 @@ from ..io import load_design
 from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library, file_stem, unique_name
 from ..library_files import export_entries, import_entries, read_design_files
-from ..library_query import QueryError, sort_sql
+from ..library_query import QueryError, parse_filter, sort_sql
 from ..library_store import ENV_VAR, LibraryError, backup_copy, resolve_path
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
                      add_speed_options, design_file, fail, masses_from_args, number, print_json,
@@ -129,6 +129,8 @@ def run(args: argparse.Namespace) -> int:
         return _library_failure(args, exc)
     except QueryError as exc:
         return fail(f"--where: {exc}")
+    except FileFormatError as exc:          # a design file given to add, or a damaged entry
+        return fail(f"{'--design' if args.library_command == 'add' else 'NAME'}: {exc}")
 
 
 # the argument a name problem is reported against, per action
@@ -136,6 +138,8 @@ _NAME_ARGUMENT = {"add": "--name", "rename": "NEW_NAME", "import": "FILE"}
 
 
 def _library_failure(args: argparse.Namespace, exc: LibraryError) -> int:
+    if exc.kind == "tag":
+        return fail(f"--tags: {exc}")
     if exc.kind in ("name", "exists"):
         hint = " (or use --rename-duplicates)" if args.library_command == "import" else ""
         return fail(f"{_NAME_ARGUMENT.get(args.library_command, 'NAME')}: {exc}{hint}")
@@ -179,7 +183,12 @@ def _run_list(args: argparse.Namespace) -> int:
         sort_sql(args.sort, args.desc)
     except QueryError as exc:
         raise UsageError(f"--sort: {exc}") from None
-    with _open(args) as lib:
+    parse_filter(args.where)                # a bad filter is reported even for an empty library
+    path = resolve_path(args.library)
+    if not path.exists():                   # listing never creates a library
+        print("[]" if args.json else f"no designs in {path} (it does not exist yet)")
+        return 0
+    with _open(args, create=False) as lib:
         rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
                          rpm=rpm, limit=args.limit)
     if args.json:
