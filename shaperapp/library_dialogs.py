@@ -1,7 +1,7 @@
 """Small dialogs of the library pane: save under a name, and a refused library file."""
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QFormLayout, QLineEdit, QMessageBox,
                                QPlainTextEdit, QWidget)
 
@@ -37,15 +37,25 @@ class SaveDialog(QDialog):
         return self.name_edit.text().strip(), self.notes_edit.toPlainText(), tags
 
 
+def _tr(text: str) -> str:
+    return QCoreApplication.translate("LibraryDialogs", text)
+
+
 def ask_refused_library(parent: QWidget, message: str) -> str:
     """Tell the user a library file was refused; returns "copy", "other" or "cancel"."""
-    box = QMessageBox(QMessageBox.Icon.Warning, QCoreApplication.translate("LibraryDialogs", "Design library"), message,
+    box = QMessageBox(QMessageBox.Icon.Warning, _tr(TITLE), message,
                       QMessageBox.StandardButton.NoButton, parent)
-    box.setInformativeText(QCoreApplication.translate("LibraryDialogs", "You can keep a copy of the file aside (it is copied byte for "
-                                     "byte), then choose or create another library."))
-    copy = box.addButton(QCoreApplication.translate("LibraryDialogs", "Copy it aside"), QMessageBox.ButtonRole.ActionRole)
-    other = box.addButton(QCoreApplication.translate("LibraryDialogs", "Choose another library…"), QMessageBox.ButtonRole.AcceptRole)
+    box.setInformativeText(_tr(ADVICE))
+    copy = box.addButton(_tr(COPY), QMessageBox.ButtonRole.ActionRole)
+    other = box.addButton(_tr(OTHER), QMessageBox.ButtonRole.AcceptRole)
     box.addButton(QMessageBox.StandardButton.Cancel)
     box.exec()
     clicked = box.clickedButton()
     return "copy" if clicked is copy else "other" if clicked is other else "cancel"
+
+
+TITLE = QT_TRANSLATE_NOOP("LibraryDialogs", "Design library")
+ADVICE = QT_TRANSLATE_NOOP("LibraryDialogs", "You can keep a copy of the file aside (it is copied byte "
+                           "for byte), then choose or create another library.")
+COPY = QT_TRANSLATE_NOOP("LibraryDialogs", "Copy it aside")
+OTHER = QT_TRANSLATE_NOOP("LibraryDialogs", "Choose another library…")

@@ -175,13 +175,13 @@ class LibraryPane(QWidget):
         return [self.table_model.name_at(r) for r in rows]
 
     def select_names(self, names: list[str]) -> None:
+        selection = self.view.selectionModel()
+        flags = selection.SelectionFlag.Select | selection.SelectionFlag.Rows
         self.view.clearSelection()
         for name in names:
             row = self.table_model.row_of(name)
             if row >= 0:
-                self.view.selectRow(row) if len(names) == 1 else self.view.selectionModel().select(
-                    self.table_model.index(row, 0),
-                    self.view.selectionModel().SelectionFlag.Select | self.view.selectionModel().SelectionFlag.Rows)
+                selection.select(self.table_model.index(row, 0), flags)
 
     def _update_undo(self, *_) -> None:
         """Undo/Redo enabled as the pane's own stack allows; the tooltip names the step."""
