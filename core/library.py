@@ -166,12 +166,14 @@ class Library:
         return self.get(name).document()
 
     def query_rows(self, where: str | Sequence[Condition] = "", search: str = "", sort: str = "name",
-                   descending: bool = False, rpm: float | None = None,
-                   limit: int | None = None) -> tuple[tuple[str, ...], list[tuple]]:
+                   descending: bool = False, rpm: float | None = None, limit: int | None = None,
+                   offset: int = 0) -> tuple[tuple[str, ...], list[tuple]]:
         """Entries matching the filter (see :mod:`core.library_query`): column keys and rows.
 
         Per-speed figures are those at ``rpm`` (None where the design lacks that speed),
         or at each design's first speed when ``rpm`` is None. ``tags`` is comma-joined.
+        ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
+        top rows while sorting, which is what makes a page fast).
         """
         conditions = parse_filter(where) if isinstance(where, str) else list(where)
         clauses, params = [], []
@@ -189,7 +191,7 @@ class Library:
             clauses.append(sql)
             params += values
         where_sql = ("WHERE " + " AND ".join(clauses)) if clauses else ""
-        limit_sql = f"LIMIT {int(limit)}" if limit is not None else ""
+        limit_sql = f"LIMIT {int(limit)} OFFSET {max(int(offset), 0)}" if limit is not None else ""
         columns = ", ".join([f"e.{c}" for c in LIST_COLUMNS[:-len(_SPEED_COLUMNS)]]
                             + [f"s.{c}" for c in _SPEED_COLUMNS])
         sql = f"SELECT {columns} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"

@@ -3,7 +3,9 @@
 All SQL stays in core: this model only remembers the query (filter, search,
 sort, speed), asks core for the rows and formats them. Clicking a header
 re-runs the query sorted by that figure, so sorting 10 000 entries is SQLite's
-work, not the view's.
+work, not the view's. Rows come a page at a time (``fetchMore`` as the view
+scrolls), like QSqlQueryModel, so the first screen appears at once however
+large the library is.
 """
 from __future__ import annotations
 
@@ -23,6 +25,7 @@ COLUMNS = ("name", "variant", "K", "stroke_mm", "theta_deg", "crank_mm", "frame_
            "flywheel_inertia_kg_m2", "tags", "notes", "modified")
 _INDEX = [LIST_COLUMNS.index(key) for key in COLUMNS]
 _TEXT = {"name", "variant", "tags", "notes", "modified"}
+PAGE = 256
 
 Index = QModelIndex | QPersistentModelIndex
 
@@ -36,6 +39,7 @@ class LibraryTableModel(QAbstractTableModel):
         super().__init__(parent)
         self._library: Library | None = None
         self._rows: list[tuple] = []
+        self._complete = True
         self._where = ""
         self._search = ""
         self._sort = "name"
@@ -59,19 +63,41 @@ class LibraryTableModel(QAbstractTableModel):
         self.refresh()
 
     def refresh(self) -> None:
-        """Re-run the query; on a bad filter keep the old rows and emit ``queryFailed``."""
+        """Re-run the query (first page); on a bad filter keep the old rows and emit ``queryFailed``."""
         rows: list[tuple] = []
         if self._library is not None:
             try:
-                _, rows = self._library.query_rows(self._where, search=self._search, sort=self._sort,
-                                                   descending=self._descending, rpm=self._rpm)
+                rows = self._page(0)
             except QueryError as exc:
                 self.queryFailed.emit(str(exc))
                 return
         self.beginResetModel()
         self._rows = rows
+        self._complete = len(rows) < PAGE
         self.endResetModel()
         self.queryFailed.emit("")
+
+    def _page(self, offset: int) -> list[tuple]:
+        _, rows = self._library.query_rows(self._where, search=self._search, sort=self._sort,  # type: ignore
+                                           descending=self._descending, rpm=self._rpm,
+                                           limit=PAGE, offset=offset)
+        return rows
+
+    def canFetchMore(self, parent: Index = QModelIndex()) -> bool:
+        return not parent.isValid() and not self._complete and self._library is not None
+
+    def fetchMore(self, parent: Index = QModelIndex()) -> None:
+        if not self.canFetchMore(parent):
+            return
+        try:
+            rows = self._page(len(self._rows))
+        except QueryError:
+            rows = []
+        self._complete = len(rows) < PAGE
+        if rows:
+            self.beginInsertRows(QModelIndex(), len(self._rows), len(self._rows) + len(rows) - 1)
+            self._rows += rows
+            self.endInsertRows()
 
     def sort(self, column: int, order: Qt.SortOrder = Qt.SortOrder.AscendingOrder) -> None:
         if not 0 <= column < len(COLUMNS) or COLUMNS[column] == "tags":
@@ -85,8 +111,15 @@ class LibraryTableModel(QAbstractTableModel):
         return self._rows[row][LIST_COLUMNS.index("name")]
 
     def row_of(self, name: str) -> int:
+        """The row of ``name``, fetching further pages if needed; -1 if it is not listed."""
         key = LIST_COLUMNS.index("name")
-        return next((i for i, r in enumerate(self._rows) if r[key] == name), -1)
+        start = 0
+        while True:
+            found = next((i for i in range(start, len(self._rows)) if self._rows[i][key] == name), -1)
+            if found >= 0 or not self.canFetchMore():
+                return found
+            start = len(self._rows)
+            self.fetchMore()
 
     def value(self, row: int, key: str) -> Any:
         return self._rows[row][LIST_COLUMNS.index(key)]

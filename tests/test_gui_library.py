@@ -247,3 +247,18 @@ def test_replace_in_dataclass_keeps_entry_equal(pane, model):
     save(pane, model, "e")
     entry = pane.actions.library.get("e")
     assert replace(entry) == entry
+
+
+def test_large_library_is_fetched_page_by_page(pane, model):
+    from shaperapp.library_table import PAGE
+    save(pane, model, "template")
+    lib = pane.actions.library
+    template = lib.get("template")
+    lib.add_entries([replace(template, name=f"n{i:04d}") for i in range(2 * PAGE + 10)])
+    pane.table_model.refresh()
+    assert pane.table_model.rowCount() == PAGE and pane.table_model.canFetchMore()
+    pane.view.scrollToBottom()                      # the view asks for the next page itself
+    assert pane.table_model.rowCount() == 2 * PAGE
+    row = pane.table_model.row_of("template")       # the last entry: fetched on demand
+    assert row == 2 * PAGE + 10 and not pane.table_model.canFetchMore()
+    assert names(pane) == [f"n{i:04d}" for i in range(2 * PAGE + 10)] + ["template"]
