@@ -217,7 +217,11 @@ class LibraryActions(QObject):
         except LibraryError as exc:
             self.failed.emit(self.message(exc))
             return False
-        self._load_into_model(doc)
+        try:
+            self._load_into_model(doc)
+        except DesignError as exc:          # an all-or-nothing load_state refuses and changes nothing
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe(exc)))
+            return False
         return True
 
     def _load_into_model(self, doc: dict) -> None:
