@@ -47,7 +47,16 @@ def load_design(path: str | os.PathLike) -> dict[str, Any]:
     foreign or invalid; the caller's state is never touched before it returns.
     """
     name = os.fsdecode(path)
-    doc = _parse(_read_limited(name), name)
+    return parse_design(_read_limited(name), name)
+
+
+def parse_design(raw: bytes, name: str) -> dict[str, Any]:
+    """The rules of :func:`load_design` for a document given as bytes (the design
+    library keeps documents in a database); ``name`` names its source in messages."""
+    if len(raw) > MAX_FILE_BYTES:
+        raise FileFormatError(f"{name} is larger than {MAX_FILE_BYTES // 1_000_000} MB, "
+                              "too large to be a design file")
+    doc = _parse(raw, name)
     if not isinstance(doc, dict) or doc.get("format") != FILE_FORMAT:
         raise FileFormatError(f"{name} is not a shaper design file")
     version = doc.get("version")

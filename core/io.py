@@ -16,7 +16,7 @@ import numpy as np
 from .atomic import atomic_write
 # Design files are read in design_file; re-exported here, where they have always been.
 from .design_file import (FILE_FORMAT, FILE_VERSION, load_design, masses_from_dict,  # noqa: F401
-                          masses_to_dict)
+                          masses_to_dict, parse_design)
 from .kinematics import Motion
 from .spec import Spec
 

@@ -276,6 +276,117 @@
     </message>
 </context>
 <context>
+    <name>CompareView</name>
+    <message>
+        <source>At most %1 designs can be compared.</source>
+        <translation>最多可比较 %1 个设计。</translation>
+    </message>
+    <message>
+        <source>Design on screen</source>
+        <translation>当前设计</translation>
+    </message>
+    <message>
+        <source>Could not open the design: %1</source>
+        <translation>无法打开设计：%1</translation>
+    </message>
+    <message>
+        <source>Add design files</source>
+        <translation>添加设计文件</translation>
+    </message>
+    <message>
+        <source>Shaper designs (*.shaper.json *.json);;All files (*)</source>
+        <translation>牛头刨床设计 (*.shaper.json *.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Pick 2 to 6 designs: select them in the library and press Compare, or add the design on screen or design files here.</source>
+        <translation>请选择 2 至 6 个设计：在设计库中选中后点击“比较”，或在此添加当前设计或设计文件。</translation>
+    </message>
+    <message>
+        <source>Best in this row</source>
+        <translation>本行最优</translation>
+    </message>
+    <message>
+        <source>Design comparison</source>
+        <translation>设计比较</translation>
+    </message>
+    <message>
+        <source>the file could not be written</source>
+        <translation>无法写入该文件</translation>
+    </message>
+    <message>
+        <source>Comparison at %1 r/min; differences from “%2” in brackets; ★ best</source>
+        <translation>转速 %1 r/min 下的比较；括号内为与“%2”的差值；★ 为最优</translation>
+    </message>
+    <message>
+        <source>Export comparison to CSV</source>
+        <translation>导出比较结果为 CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export comparison image</source>
+        <translation>导出比较图像</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg)</source>
+        <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg)</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Compare designs</source>
+        <translation>比较设计</translation>
+    </message>
+    <message>
+        <source>Add design on screen</source>
+        <translation>添加当前设计</translation>
+    </message>
+    <message>
+        <source>Add file…</source>
+        <translation>添加文件…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Speed (r/min):</source>
+        <translation>转速 (r/min)：</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>导出 CSV…</translation>
+    </message>
+    <message>
+        <source>Export PNG/SVG…</source>
+        <translation>导出 PNG/SVG…</translation>
+    </message>
+    <message>
+        <source>Ram x (mm)</source>
+        <translation>滑枕 x (mm)</translation>
+    </message>
+    <message>
+        <source>Ram v (m/s)</source>
+        <translation>滑枕 v (m/s)</translation>
+    </message>
+    <message>
+        <source>Ram a (m/s²)</source>
+        <translation>滑枕 a (m/s²)</translation>
+    </message>
+    <message>
+        <source>Torque (N·m)</source>
+        <translation>驱动力矩 (N·m)</translation>
+    </message>
+    <message>
+        <source>Crank angle (°)</source>
+        <translation>曲柄转角 (°)</translation>
+    </message>
+</context>
+<context>
     <name>DesignForm</name>
     <message>
         <source>Input</source>
@@ -769,7 +880,312 @@
     </message>
 </context>
 <context>
+    <name>LibraryActions</name>
+    <message>
+        <source>Save “%1”</source>
+        <translation>保存“%1”</translation>
+    </message>
+    <message>
+        <source>Rename “%1”</source>
+        <translation>重命名“%1”</translation>
+    </message>
+    <message>
+        <source>Duplicate “%1”</source>
+        <translation>复制“%1”</translation>
+    </message>
+    <message>
+        <source>Delete %1 design(s)</source>
+        <translation>删除 %1 个设计</translation>
+    </message>
+    <message>
+        <source>Import %1 design(s)</source>
+        <translation>导入 %1 个设计</translation>
+    </message>
+    <message>
+        <source>No library is open.</source>
+        <translation>未打开设计库。</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Could not open the design: %1</source>
+        <translation>无法打开设计：%1</translation>
+    </message>
+    <message>
+        <source>That name is already in the library; choose another.</source>
+        <translation>设计库中已有该名称，请另选一个。</translation>
+    </message>
+    <message>
+        <source>A name must not be empty, longer than 200 characters or contain line breaks.</source>
+        <translation>名称不能为空，不能超过 200 个字符，也不能包含换行。</translation>
+    </message>
+    <message>
+        <source>Tags are separated by commas; each at most 64 characters.</source>
+        <translation>标签之间用逗号分隔；每个标签最多 64 个字符。</translation>
+    </message>
+    <message>
+        <source>That design is no longer in the library (another program may have changed it).</source>
+        <translation>该设计已不在设计库中（可能被另一个程序修改）。</translation>
+    </message>
+    <message>
+        <source>The library is busy: another program is writing to it. Try again.</source>
+        <translation>设计库正忙：另一个程序正在写入。请稍后重试。</translation>
+    </message>
+    <message>
+        <source>The library %1 is damaged and cannot be opened. It was left unchanged.</source>
+        <translation>设计库 %1 已损坏，无法打开。文件未作任何改动。</translation>
+    </message>
+    <message>
+        <source>The library %1 was written by a newer version of Shaper Designer. It was left unchanged; update Shaper Designer to use it.</source>
+        <translation>设计库 %1 由更新版本的 Shaper Designer 写入。文件未作任何改动；请升级 Shaper Designer 后再使用。</translation>
+    </message>
+    <message>
+        <source>%1 is not a Shaper Designer library. It was left unchanged.</source>
+        <translation>%1 不是 Shaper Designer 设计库。文件未作任何改动。</translation>
+    </message>
+    <message>
+        <source>Could not use the library: %1</source>
+        <translation>无法使用设计库：%1</translation>
+    </message>
+</context>
+<context>
+    <name>LibraryDialogs</name>
+    <message>
+        <source>Design library</source>
+        <translation>设计库</translation>
+    </message>
+    <message>
+        <source>You can keep a copy of the file aside (it is copied byte for byte), then choose or create another library.</source>
+        <translation>可以先把该文件另存一份副本（逐字节复制），再选择或新建另一个设计库。</translation>
+    </message>
+    <message>
+        <source>Copy it aside</source>
+        <translation>另存副本</translation>
+    </message>
+    <message>
+        <source>Choose another library…</source>
+        <translation>选择其他设计库…</translation>
+    </message>
+</context>
+<context>
+    <name>LibraryPane</name>
+    <message>
+        <source>No library is open.</source>
+        <translation>未打开设计库。</translation>
+    </message>
+    <message>
+        <source>Undo: %1</source>
+        <translation>撤销：%1</translation>
+    </message>
+    <message>
+        <source>Redo: %1</source>
+        <translation>重做：%1</translation>
+    </message>
+    <message>
+        <source>Design library</source>
+        <translation>设计库</translation>
+    </message>
+    <message>
+        <source>“%1” is already in the library. Replace it?</source>
+        <translation>设计库中已有“%1”。是否替换？</translation>
+    </message>
+    <message>
+        <source>The design on screen has unsaved changes. Open “%1” anyway?</source>
+        <translation>当前设计有未保存的修改。仍要打开“%1”吗？</translation>
+    </message>
+    <message>
+        <source>Rename design</source>
+        <translation>重命名设计</translation>
+    </message>
+    <message>
+        <source>New name:</source>
+        <translation>新名称：</translation>
+    </message>
+    <message>
+        <source>Import design files</source>
+        <translation>导入设计文件</translation>
+    </message>
+    <message>
+        <source>Shaper designs (*.shaper.json *.json);;All files (*)</source>
+        <translation>牛头刨床设计 (*.shaper.json *.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Import a folder of designs</source>
+        <translation>导入设计文件夹</translation>
+    </message>
+    <message>
+        <source>Imported %1 design(s).</source>
+        <translation>已导入 %1 个设计。</translation>
+    </message>
+    <message>
+        <source>These files were not imported:</source>
+        <translation>以下文件未导入：</translation>
+    </message>
+    <message>
+        <source>Export design</source>
+        <translation>导出设计</translation>
+    </message>
+    <message>
+        <source>Shaper designs (*.shaper.json *.json)</source>
+        <translation>牛头刨床设计 (*.shaper.json *.json)</translation>
+    </message>
+    <message>
+        <source>Export all designs to a folder</source>
+        <translation>将全部设计导出到文件夹</translation>
+    </message>
+    <message>
+        <source>Exported the library to %1</source>
+        <translation>设计库已导出到 %1</translation>
+    </message>
+    <message>
+        <source>Open or create a design library</source>
+        <translation>打开或新建设计库</translation>
+    </message>
+    <message>
+        <source>Design libraries (*.sqlite);;All files (*)</source>
+        <translation>设计库 (*.sqlite);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Type a crank speed in r/min.</source>
+        <translation>请输入曲柄转速 (r/min)。</translation>
+    </message>
+    <message>
+        <source>Filter not understood; write conditions such as K&gt;=1.4, variant=rod, name~cut.</source>
+        <translation>无法识别筛选条件；请写成 K&gt;=1.4, variant=rod, name~cut 这样的形式。</translation>
+    </message>
+    <message>
+        <source>A copy was saved as %1</source>
+        <translation>副本已保存为 %1</translation>
+    </message>
+    <message>
+        <source>Save current…</source>
+        <translation>保存当前设计…</translation>
+    </message>
+    <message>
+        <source>Save the design on screen to the library</source>
+        <translation>将当前设计保存到设计库</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <source>Open the selected design (double-click works too)</source>
+        <translation>打开选中的设计（也可双击）</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>比较</translation>
+    </message>
+    <message>
+        <source>Compare the 2 to 6 selected designs</source>
+        <translation>比较选中的 2 至 6 个设计</translation>
+    </message>
+    <message>
+        <source>Rename…</source>
+        <translation>重命名…</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Delete the selected designs (undoable)</source>
+        <translation>删除选中的设计（可撤销）</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>导入…</translation>
+    </message>
+    <message>
+        <source>Add design files to the library</source>
+        <translation>将设计文件加入设计库</translation>
+    </message>
+    <message>
+        <source>Import folder…</source>
+        <translation>导入文件夹…</translation>
+    </message>
+    <message>
+        <source>Add every design file of a folder</source>
+        <translation>加入文件夹中的全部设计文件</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>导出…</translation>
+    </message>
+    <message>
+        <source>Write the selected design as a design file</source>
+        <translation>将选中的设计写成设计文件</translation>
+    </message>
+    <message>
+        <source>Export all…</source>
+        <translation>全部导出…</translation>
+    </message>
+    <message>
+        <source>Write every design into a folder</source>
+        <translation>将全部设计写入一个文件夹</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <source>Other library…</source>
+        <translation>其他设计库…</translation>
+    </message>
+    <message>
+        <source>Search name, notes, tags</source>
+        <translation>搜索名称、备注、标签</translation>
+    </message>
+    <message>
+        <source>Filter, e.g. K&gt;=1.4, variant=rod, a_max&lt;5</source>
+        <translation>筛选，例如 K&gt;=1.4, variant=rod, a_max&lt;5</translation>
+    </message>
+    <message>
+        <source>Figures at each design's first speed</source>
+        <translation>按各设计的第一个转速</translation>
+    </message>
+    <message>
+        <source>Crank speed of the speed-dependent columns, r/min</source>
+        <translation>与转速有关的各列所用的曲柄转速，r/min</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
+    <message>
+        <source>&amp;Library</source>
+        <translation>设计库(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Design library</source>
+        <translation>设计库</translation>
+    </message>
+    <message>
+        <source>Show &amp;library</source>
+        <translation>显示设计库(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Save design to library…</source>
+        <translation>保存设计到设计库(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>&amp;Compare designs</source>
+        <translation>比较设计(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>比较</translation>
+    </message>
     <message>
         <source>Undo</source>
         <translation>撤销</translation>
@@ -1768,6 +2184,29 @@
     </message>
 </context>
 <context>
+    <name>SaveDialog</name>
+    <message>
+        <source>Save design to library</source>
+        <translation>保存设计到设计库</translation>
+    </message>
+    <message>
+        <source>comma-separated, e.g. final, rod</source>
+        <translation>用逗号分隔，例如 final, rod</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>名称：</translation>
+    </message>
+    <message>
+        <source>Notes:</source>
+        <translation>备注：</translation>
+    </message>
+    <message>
+        <source>Tags:</source>
+        <translation>标签：</translation>
+    </message>
+</context>
+<context>
     <name>SchemeWidget</name>
     <message>
         <source>Cannot export to '{0}': use .png or .svg</source>
@@ -1866,6 +2305,173 @@
     <message>
         <source>Shaper Designer</source>
         <translation>牛头刨床机构设计</translation>
+    </message>
+</context>
+<context>
+    <name>figures</name>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>Tags</source>
+        <translation>标签</translation>
+    </message>
+    <message>
+        <source>Created (UTC)</source>
+        <translation>创建时间 (UTC)</translation>
+    </message>
+    <message>
+        <source>Modified (UTC)</source>
+        <translation>修改时间 (UTC)</translation>
+    </message>
+    <message>
+        <source>Variant</source>
+        <translation>方案</translation>
+    </message>
+    <message>
+        <source>Rod side</source>
+        <translation>连杆位置</translation>
+    </message>
+    <message>
+        <source>K</source>
+        <translation>K</translation>
+    </message>
+    <message>
+        <source>H (mm)</source>
+        <translation>H (mm)</translation>
+    </message>
+    <message>
+        <source>θ (°)</source>
+        <translation>θ (°)</translation>
+    </message>
+    <message>
+        <source>L1 (mm)</source>
+        <translation>L1 (mm)</translation>
+    </message>
+    <message>
+        <source>L2 (mm)</source>
+        <translation>L2 (mm)</translation>
+    </message>
+    <message>
+        <source>L3 (mm)</source>
+        <translation>L3 (mm)</translation>
+    </message>
+    <message>
+        <source>L4 (mm)</source>
+        <translation>L4 (mm)</translation>
+    </message>
+    <message>
+        <source>Guide (mm)</source>
+        <translation>导路 (mm)</translation>
+    </message>
+    <message>
+        <source>Max pressure angle (°)</source>
+        <translation>最大压力角 (°)</translation>
+    </message>
+    <message>
+        <source>Speed (r/min)</source>
+        <translation>转速 (r/min)</translation>
+    </message>
+    <message>
+        <source>Max cutting speed (m/s)</source>
+        <translation>最大切削速度 (m/s)</translation>
+    </message>
+    <message>
+        <source>Mean cutting speed (m/s)</source>
+        <translation>平均切削速度 (m/s)</translation>
+    </message>
+    <message>
+        <source>Max return speed (m/s)</source>
+        <translation>最大回程速度 (m/s)</translation>
+    </message>
+    <message>
+        <source>Max |a| (m/s²)</source>
+        <translation>最大 |a| (m/s²)</translation>
+    </message>
+    <message>
+        <source>Mean torque (N·m)</source>
+        <translation>平均驱动力矩 (N·m)</translation>
+    </message>
+    <message>
+        <source>Peak torque (N·m)</source>
+        <translation>最大驱动力矩 (N·m)</translation>
+    </message>
+    <message>
+        <source>Flywheel J_F (kg·m²)</source>
+        <translation>飞轮 J_F (kg·m²)</translation>
+    </message>
+    <message>
+        <source>Time ratio K, measured from the motion</source>
+        <translation>行程速比系数 K，由运动实测</translation>
+    </message>
+    <message>
+        <source>Ram stroke H, measured from the motion</source>
+        <translation>滑枕行程 H，由运动实测</translation>
+    </message>
+    <message>
+        <source>Extreme-position angle θ</source>
+        <translation>极位夹角 θ</translation>
+    </message>
+    <message>
+        <source>Crank O2A</source>
+        <translation>曲柄 O2A</translation>
+    </message>
+    <message>
+        <source>Frame O2O4</source>
+        <translation>机架 O2O4</translation>
+    </message>
+    <message>
+        <source>Lever O4B</source>
+        <translation>导杆 O4B</translation>
+    </message>
+    <message>
+        <source>Connecting rod BC (rod variant)</source>
+        <translation>连杆 BC（连杆方案）</translation>
+    </message>
+    <message>
+        <source>Ram guide line above the lever pivot O4</source>
+        <translation>滑枕导路距导杆支点 O4 的高度</translation>
+    </message>
+    <message>
+        <source>Largest pressure angle at the ram (rod variant); lower is better</source>
+        <translation>滑枕处最大压力角（连杆方案）；越小越好</translation>
+    </message>
+    <message>
+        <source>Largest |ram acceleration| over the cycle; lower is better</source>
+        <translation>一个周期内滑枕加速度绝对值的最大值；越小越好</translation>
+    </message>
+    <message>
+        <source>Mean crank torque (needs loads); lower is better</source>
+        <translation>平均驱动力矩（需载荷）；越小越好</translation>
+    </message>
+    <message>
+        <source>Peak crank torque (needs loads); lower is better</source>
+        <translation>最大驱动力矩（需载荷）；越小越好</translation>
+    </message>
+    <message>
+        <source>Flywheel inertia on the crank shaft (needs loads); lower is better</source>
+        <translation>曲柄轴上的飞轮转动惯量（需载荷）；越小越好</translation>
+    </message>
+    <message>
+        <source>block</source>
+        <translation>滑块</translation>
+    </message>
+    <message>
+        <source>rod</source>
+        <translation>连杆</translation>
+    </message>
+    <message>
+        <source>trailing</source>
+        <translation>后置</translation>
+    </message>
+    <message>
+        <source>leading</source>
+        <translation>前置</translation>
     </message>
 </context>
 <context>

@@ -10,16 +10,18 @@ import os
 import shiboken6
 from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
-from PySide6.QtWidgets import (QApplication, QInputDialog, QLineEdit, QMainWindow, QMessageBox,
-                               QScrollArea, QSplitter, QTabWidget, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QApplication, QDockWidget, QInputDialog, QLineEdit, QMainWindow,
+                               QMessageBox, QScrollArea, QSplitter, QTabWidget, QVBoxLayout, QWidget)
 
 from . import file_dialogs, i18n
 from .help import GuideDialog, about_text
 from .animation import AnimationBar
+from .compare_view import CompareView
 from .document import Document
 from .forces_panel import ForcesPanel
 from .form import DesignForm
 from .guards import ShortcutGuard, install_wheel_guard
+from .library_pane import LibraryPane
 from .messages import describe
 from .metrics_panel import MetricsPanel
 from .model import DesignModel
@@ -76,6 +78,7 @@ class MainWindow(QMainWindow):
         self.splitter.setSizes([400, 500, 740])
         self.setCentralWidget(self.splitter)
 
+        self._build_library()
         self._build_actions()
         self._build_menus()
         install_wheel_guard()
@@ -90,6 +93,45 @@ class MainWindow(QMainWindow):
         model.resultsChanged.connect(self._show_status)
         self._retranslate()
         self._restore()
+
+    # ---- design library (issue 10): a dock, a Compare tab and a Library menu ----
+    def _build_library(self) -> None:
+        self.library = LibraryPane(self.model, settings=self.settings)
+        self.compare = CompareView(self.model)
+        self.tabs.addTab(self.compare, "")
+        self.library_dock = QDockWidget(self)
+        self.library_dock.setObjectName("libraryDock")
+        self.library_dock.setWidget(self.library)
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.library_dock)
+        self.library_dock.hide()
+        self.library.compareRequested.connect(self._show_comparison)
+
+    def _show_comparison(self, candidates: list) -> None:
+        self.compare.set_candidates(candidates)
+        self.tabs.setCurrentWidget(self.compare)
+        if self.height() < 1000:          # on a small screen the docked library leaves the plots no room
+            self.library_dock.hide()
+
+    def _library_menu(self) -> None:
+        self.menu_library = self.menuBar().addMenu("")
+        self.act_library = self.library_dock.toggleViewAction()
+        self.act_library.setShortcut(QKeySequence("Ctrl+L"))
+        self.act_library_save = self._action(self._save_to_library, "Ctrl+Shift+L")
+        self.act_compare = self._action(lambda: self.tabs.setCurrentWidget(self.compare))
+        for a in (self.act_library, self.act_library_save, self.act_compare):
+            self.menu_library.addAction(a)
+
+    def _save_to_library(self) -> None:
+        self.library_dock.show()
+        self.library.save_dialog()
+
+    def _retranslate_library(self) -> None:
+        self.menu_library.setTitle(self.tr("&Library"))
+        self.library_dock.setWindowTitle(self.tr("Design library"))
+        self.act_library.setText(self.tr("Show &library"))
+        self.act_library_save.setText(self.tr("&Save design to library…"))
+        self.act_compare.setText(self.tr("&Compare designs"))
+        self.tabs.setTabText(self.tabs.indexOf(self.compare), self.tr("Compare"))
 
     # ---- actions and menus -------------------------------------------------
     def _action(self, slot, shortcut=None) -> QAction:
@@ -139,6 +181,9 @@ class MainWindow(QMainWindow):
             lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
         self.act_report = self._action(self._export_report, "Ctrl+R")
+        # Only tabs that draw plots can export them as an image.
+        self.tabs.currentChanged.connect(lambda *_: self.act_plots_img.setEnabled(
+            hasattr(self.tabs.currentWidget(), "export_image")))
         self.act_quit = self._action(self.close, QKeySequence.StandardKey.Quit)
         stack = self.model.undo_stack
         self.act_undo = self._stack_action(stack.createUndoAction(self, self.tr("Undo")), stack.undo,
@@ -194,6 +239,7 @@ class MainWindow(QMainWindow):
         self.menu_anim = bar.addMenu("")
         for a in (self.act_play, self.act_step, self.act_back, self.act_goto):
             self.menu_anim.addAction(a)
+        self._library_menu()
         self.menu_help = bar.addMenu("")
         self.menu_help.addAction(self.act_guide)
         self.menu_help.addAction(self.act_about)
@@ -257,6 +303,7 @@ class MainWindow(QMainWindow):
         self.menu_lang.setTitle(self.tr("&Language"))
         self.menu_anim.setTitle(self.tr("&Animation"))
         self.menu_help.setTitle(self.tr("&Help"))
+        self._retranslate_library()
         self._update_title()
         self._show_status()
 

@@ -117,3 +117,9 @@ def test_closing_the_window_closes_the_guide(window):
     window.act_guide.trigger()
     window.close()
     assert not window._guide.isVisible()
+
+
+def test_plot_export_is_offered_only_on_tabs_with_plots(window):
+    for i in range(window.tabs.count()):
+        window.tabs.setCurrentIndex(i)
+        assert window.act_plots_img.isEnabled() == hasattr(window.tabs.widget(i), "export_image")

@@ -1,0 +1,374 @@
+"""``shaper library``: keep, find, export and compare designs in a design library.
+
+One subcommand with its own sub-subcommands (add, list, show, remove, rename,
+export, import, compare, backup); every one takes ``--library PATH`` (or
+``$SHAPER_LIBRARY``). The work is in ``core.library*`` and ``core.compare``;
+this module only parses, calls and prints.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from typing import Any
+
+from ..compare import Candidate, compare, comparison_json, curves_csv, table_csv
+from ..errors import DesignError, FileFormatError
+from ..figures import DESIGN_FIGURES, SPEED_FIGURES
+from ..io import load_design
+from ..kinematics import check_rpms, crank_angles
+from ..library import Entry, Library, file_stem, unique_name
+from ..library_files import export_entries, import_entries, read_design_files
+from ..library_query import QueryError, parse_filter, sort_sql
+from ..library_store import ENV_VAR, LibraryError, backup_copy, resolve_path
+from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
+                     add_speed_options, design_file, fail, masses_from_args, number, print_json,
+                     rpms_from_args, spec_from_args, write_output)
+
+HELP = "keep, find, export and compare designs in a library"
+DESCRIPTION = ("A design library: named designs with notes, tags and their key figures, in one "
+               "SQLite file (--library PATH, or $SHAPER_LIBRARY, or the per-user default). "
+               "Filter with --where 'K>=1.4,variant=rod,name~cut' (see the README).")
+EXAMPLES = ("shaper library add --crank 100 --K 1.4 --stroke 300 --name base --notes 'seed 003'",
+            "shaper library list --sort a_max --where 'variant=rod,K>=1.4' --rpm 60",
+            "shaper library compare base rod-1.6 --rpm 60 --csv compare.csv")
+LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "{:.4f}"),
+                ("H mm", "stroke_mm", "{:.2f}"), ("θ °", "theta_deg", "{:.3f}"),
+                ("r/min", "rpm", "{:g}"), ("v_work_max m/s", "v_work_max_m_s", "{:.4f}"),
+                ("v_return_max m/s", "v_return_max_m_s", "{:.4f}"), ("a_max m/s²", "a_max_m_s2", "{:.4f}"),
+                ("J_F kg·m²", "flywheel_inertia_kg_m2", "{:.5g}"), ("modified", "modified", ""))
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    sub = parser.add_subparsers(dest="library_command", metavar="ACTION", parser_class=Parser)
+    for name, help_text, build in ACTIONS:
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        p.add_argument("--library", metavar="PATH",
+                       help=f"the library file (default: ${ENV_VAR}, else the per-user library)")
+        build(p)
+    parser.set_defaults(_library_parser=parser)
+
+
+def _add_options(p: argparse.ArgumentParser) -> None:
+    add_design_options(p)
+    add_speed_options(p)
+    p.add_argument("--step", metavar="DEG", help="angle step saved with the design (default 1, or the file's)")
+    add_load_options(p, required=False)
+    p.add_argument("--name", required=True, help="the entry's name (unique in the library)")
+    p.add_argument("--notes", default="", help="free text kept with the design")
+    p.add_argument("--tags", nargs="+", default=[], metavar="TAG", help="tags for filtering (tag=TAG)")
+    p.add_argument("--replace", action="store_true", help="replace an entry of the same name")
+
+
+def _list_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--where", metavar="FILTER", default="",
+                   help="conditions FIELD OP VALUE separated by commas, e.g. 'K>=1.4,variant=rod,name~cut'")
+    p.add_argument("--search", metavar="TEXT", default="", help="text in the name, notes or tags")
+    p.add_argument("--sort", metavar="FIELD", default="name", help="sort by a figure (default name)")
+    p.add_argument("--desc", action="store_true", help="sort descending")
+    p.add_argument("--rpm", metavar="RPM", help="show per-speed figures at this speed (default: each design's first)")
+    p.add_argument("--limit", metavar="N", type=int, help="show at most N entries")
+    p.add_argument("--json", action="store_true", help="print a JSON array")
+
+
+def _name_option(p: argparse.ArgumentParser) -> None:
+    p.add_argument("name", metavar="NAME")
+
+
+def _show_options(p: argparse.ArgumentParser) -> None:
+    _name_option(p)
+    p.add_argument("--json", action="store_true", help="print JSON (with the design document)")
+
+
+def _rename_options(p: argparse.ArgumentParser) -> None:
+    _name_option(p)
+    p.add_argument("new_name", metavar="NEW_NAME")
+
+
+def _export_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("name", metavar="NAME", nargs="?")
+    p.add_argument("-o", "--output", metavar="FILE", required=True,
+                   help="the design file to write (with --all: a folder)")
+    p.add_argument("--all", action="store_true", help="export every entry into the folder -o")
+
+
+def _import_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("files", metavar="FILE", nargs="+", help="design files, or folders of them")
+    p.add_argument("--rename-duplicates", action="store_true",
+                   help="name a design whose name is taken 'NAME (2)' instead of refusing")
+    p.add_argument("--skip-invalid", action="store_true",
+                   help="import the valid files and list the others instead of refusing all")
+
+
+def _compare_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("names", metavar="NAME", nargs="*", help="library entries to compare")
+    p.add_argument("--file", dest="files", metavar="FILE", action="append", default=[],
+                   help="also compare a design file (repeatable)")
+    p.add_argument("--rpm", metavar="RPM", help="the common crank speed (default: the first design's first)")
+    p.add_argument("--step", metavar="DEG", default="1", help="crank-angle step of the curves (default 1)")
+    out = p.add_mutually_exclusive_group()
+    out.add_argument("--json", action="store_true", help="print the table as JSON")
+    out.add_argument("--csv", metavar="FILE|-", help="write the table as CSV")
+    p.add_argument("--curves-csv", metavar="FILE|-", help="write the overlay curves as CSV")
+
+
+def _backup_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("-o", "--output", metavar="FILE", help="where to write the copy "
+                   "(default: beside the library, NAME.backup-TIME)")
+
+
+# ---- running -------------------------------------------------------------------
+def run(args: argparse.Namespace) -> int:
+    if args.library_command is None:
+        args._library_parser.print_help()
+        return 0
+    try:
+        return ACTION_RUN[args.library_command](args)
+    except LibraryError as exc:
+        return _library_failure(args, exc)
+    except QueryError as exc:
+        return fail(f"--where: {exc}")
+    except FileFormatError as exc:          # a design file given to add, or a damaged entry
+        return fail(f"{'--design' if args.library_command == 'add' else 'NAME'}: {exc}")
+
+
+# the argument a name problem is reported against, per action
+_NAME_ARGUMENT = {"add": "--name", "rename": "NEW_NAME", "import": "FILE"}
+
+
+def _library_failure(args: argparse.Namespace, exc: LibraryError) -> int:
+    if exc.kind == "tag":
+        return fail(f"--tags: {exc}")
+    if exc.kind in ("name", "exists"):
+        hint = " (or use --rename-duplicates)" if args.library_command == "import" else ""
+        return fail(f"{_NAME_ARGUMENT.get(args.library_command, 'NAME')}: {exc}{hint}")
+    if exc.kind == "missing" and exc.path is not None and exc.path.exists():
+        return fail(f"NAME: {exc} (see 'shaper library list')")
+    source = "--library" if args.library else (f"--library (from ${ENV_VAR})" if os.environ.get(ENV_VAR)
+                                                else "--library (default)")
+    hint = ""
+    if exc.refused_file:
+        hint = f"; keep a copy with: shaper library backup --library '{exc.path}'"
+    return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
+
+
+def _open(args: argparse.Namespace, create: bool = True) -> Library:
+    return Library(resolve_path(args.library), create=create)
+
+
+def _run_add(args: argparse.Namespace) -> int:
+    spec = spec_from_args(args)
+    design = spec.design()
+    rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
+    doc = design_file(args)
+    step = number("step", args.step) if args.step is not None else (doc["step_deg"] if doc else 1.0)
+    crank_angles(step)
+    loads_given = any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS) or args.no_gravity
+    masses = masses_from_args(args, design, required=False) \
+        if loads_given or (doc is not None and doc.get("masses") is not None) else None
+    loaded: dict[str, Any] = dict(doc) if doc is not None else {}
+    loaded.update(spec=spec, rpm=rpms, step_deg=float(step), masses=masses)
+    with _open(args) as lib:
+        entry = lib.add(args.name, loaded, notes=args.notes, tags=args.tags, replace=args.replace)
+    print(f"{'saved' if args.replace else 'added'} {entry.name!r} to {lib.path}")
+    return 0
+
+
+def _run_list(args: argparse.Namespace) -> int:
+    rpm = number("rpm", args.rpm) if args.rpm is not None else None
+    if args.limit is not None and args.limit < 0:
+        raise UsageError("--limit: must be 0 or more")
+    try:
+        sort_sql(args.sort, args.desc)
+    except QueryError as exc:
+        raise UsageError(f"--sort: {exc}") from None
+    parse_filter(args.where)                # a bad filter is reported even for an empty library
+    path = resolve_path(args.library)
+    if not path.exists():                   # listing never creates a library
+        print("[]" if args.json else f"no designs in {path} (it does not exist yet)")
+        return 0
+    with _open(args, create=False) as lib:
+        rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
+                         rpm=rpm, limit=args.limit)
+    if args.json:
+        print_json(rows)
+        return 0
+    if not rows:
+        print("no designs match" if (args.where or args.search) else f"no designs in {lib.path}")
+        return 0
+    cells = [[head for head, _, _ in LIST_COLUMNS]]
+    for row in rows:
+        cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else str(row[key])
+                      for _, key, fmt in LIST_COLUMNS])
+    widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
+    for r in cells:
+        print("  ".join(c.ljust(w) if i in (0, 1, len(r) - 1) else c.rjust(w)
+                        for i, (c, w) in enumerate(zip(r, widths))).rstrip())
+    return 0
+
+
+def _entry_document(entry: Entry) -> dict[str, Any]:
+    f = entry.figures
+    return {"name": entry.name, "notes": entry.notes, "tags": list(entry.tags),
+            "created": entry.created, "modified": entry.modified, **f.design_values(),
+            "speeds": [s.__dict__ for s in f.speeds], "document": json.loads(entry.text)}
+
+
+def _run_show(args: argparse.Namespace) -> int:
+    with _open(args, create=False) as lib:
+        entry = lib.get(args.name)
+    if args.json:
+        print_json(_entry_document(entry))
+        return 0
+    f = entry.figures
+    rows = [("name", entry.name), ("notes", entry.notes or "—"), ("tags", ", ".join(entry.tags) or "—"),
+            ("created", entry.created), ("modified", entry.modified), ("variant", f.variant)]
+    if f.rod_side:
+        rows.append(("rod side", f.rod_side))
+    rows += [(key, _fmt(getattr(f, key))) for key, _, _, _ in DESIGN_FIGURES]
+    width = max(len(k) for k, _ in rows)
+    for key, value in rows:
+        print(f"{key:<{width}}  {value}")
+    for s in f.speeds:
+        print(f"\n{s.rpm:g} r/min")
+        for key, _, _, _ in SPEED_FIGURES:
+            print(f"  {key:<24}  {_fmt(getattr(s, key))}")
+    return 0
+
+
+def _fmt(value: Any) -> str:
+    return "—" if value is None else value if isinstance(value, str) else f"{value:.6g}"
+
+
+def _run_remove(args: argparse.Namespace) -> int:
+    with _open(args, create=False) as lib:
+        lib.remove(args.name)
+    print(f"removed {args.name!r}")
+    return 0
+
+
+def _run_rename(args: argparse.Namespace) -> int:
+    with _open(args, create=False) as lib:
+        lib.rename(args.name, args.new_name)
+    print(f"renamed {args.name!r} to {args.new_name.strip()!r}")
+    return 0
+
+
+def _run_export(args: argparse.Namespace) -> int:
+    if args.all == (args.name is not None):
+        raise UsageError("NAME: give one entry name, or --all with a folder")
+    with _open(args, create=False) as lib:
+        try:
+            if args.all:
+                os.makedirs(args.output, exist_ok=True)
+                paths = export_entries(lib, args.output)
+                print(f"exported {len(paths)} designs to {args.output}")
+            else:
+                lib.export(args.name, args.output)
+        except OSError as exc:
+            return fail(f"-o: cannot write {args.output}: {exc.strerror or exc}", status=1)
+    return 0
+
+
+def _run_import(args: argparse.Namespace) -> int:
+    good, bad = read_design_files(args.files)
+    if bad and not args.skip_invalid:
+        path, why = bad[0]
+        return fail(f"FILE: {why}; nothing was imported" + (f" ({len(bad) - 1} more refused)" if len(bad) > 1 else ""))
+    with _open(args) as lib:
+        entries = import_entries(lib, good, rename_duplicates=args.rename_duplicates) if good else []
+    for path, why in bad:
+        print(f"shaper: skipped {why}", file=sys.stderr)
+    print(f"imported {len(entries)} design{'s' if len(entries) != 1 else ''}"
+          + (": " + ", ".join(e.name for e in entries) if entries else ""))
+    return 0
+
+
+def _run_compare(args: argparse.Namespace) -> int:
+    candidates: list[Candidate] = []
+    first_rpm = None
+    if args.names:
+        with _open(args, create=False) as lib:
+            for name in args.names:
+                doc = lib.load(name)
+                first_rpm = first_rpm or doc["rpm"][0]
+                candidates.append(Candidate(name, doc["spec"], doc["masses"]))
+    for path in args.files:
+        try:
+            doc = load_design(path)
+        except FileFormatError as exc:
+            return fail(f"--file: {exc}")
+        first_rpm = first_rpm or doc["rpm"][0]
+        label = unique_name(file_stem(path), [c.label for c in candidates])
+        candidates.append(Candidate(label, doc["spec"], doc["masses"]))
+    if not 2 <= len(candidates) <= 6:
+        raise UsageError(f"NAME: compare 2 to 6 designs (got {len(candidates)})")
+    rpm = number("rpm", args.rpm) if args.rpm is not None else first_rpm
+    try:
+        result = compare(candidates, rpm, number("step", args.step))
+    except DesignError as exc:
+        if exc.parameter == "designs":
+            raise UsageError(f"NAME: {exc.value!r} {exc.allowed}") from None
+        raise
+    if args.curves_csv:
+        write_output("--curves-csv", args.curves_csv, curves_csv(result))
+    if args.json:
+        print(comparison_json(result), end="")
+    elif args.csv:
+        write_output("--csv", args.csv, table_csv(result))
+    elif not args.curves_csv or args.curves_csv != "-":
+        _print_comparison(result)
+    return 0
+
+
+def _print_comparison(result) -> None:
+    labels = result.labels
+    head = ["figure"] + list(labels)
+    cells = [head, ["rpm"] + [f"{result.rpm:g}"] * len(labels)]
+    for row in result.rows:
+        line = [row.key]
+        for i, value in enumerate(row.values):
+            text = _fmt(value)
+            diff = row.differences[i]
+            if i > 0 and diff is not None:
+                tiny = abs(diff) <= 1e-9 * max(1.0, abs(row.values[0]))
+                text += " (=)" if tiny else f" ({diff:+.4g})"
+            line.append(text + (" *" if i in row.best else ""))
+        cells.append(line)
+    widths = [max(len(r[i]) for r in cells) for i in range(len(head))]
+    for r in cells:
+        print("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
+    print(f"\n(differences from {labels[0]!r} in parentheses; * best: lower max |a|, pressure "
+          "angle, torques and J_F)")
+
+
+def _run_backup(args: argparse.Namespace) -> int:
+    path = resolve_path(args.library)
+    if not path.exists():
+        raise LibraryError("missing", f"there is no design library at {path}", path)
+    try:
+        with Library(path, create=False) as lib:
+            target = lib.backup(args.output)
+    except LibraryError as exc:
+        if not exc.refused_file:
+            raise
+        target = backup_copy(path, args.output)     # a refused file: copied byte for byte
+    print(f"copied {path} to {target}")
+    return 0
+
+
+ACTIONS = (
+    ("add", "store a design (from options or --design FILE) under a name", _add_options),
+    ("list", "list, filter and sort the designs", _list_options),
+    ("show", "one design's notes, figures and (with --json) document", _show_options),
+    ("remove", "delete a design from the library", _name_option),
+    ("rename", "give a design a new name", _rename_options),
+    ("export", "write a design as a design file (or all, with --all)", _export_options),
+    ("import", "add design files (or folders of them) named after the files", _import_options),
+    ("compare", "compare 2 to 6 designs at one speed: figure table and curves", _compare_options),
+    ("backup", "copy the library file (also one that cannot be opened)", _backup_options),
+)
+ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
+              "rename": _run_rename, "export": _run_export, "import": _run_import,
+              "compare": _run_compare, "backup": _run_backup}

@@ -1,0 +1,192 @@
+"""Comparing 2 to 6 designs at one crank speed: overlay curves and a figure table.
+
+Every number comes from the same core functions as ``shaper analyze`` and
+``shaper dynamics`` (through :func:`core.figures.figures`), evaluated at the
+common speed. The table has one row per figure: each design's value, its
+difference from the first design (the reference) and which design is best.
+
+"Best" per figure (``better`` in :mod:`core.figures`):
+- lower is better: max |a| (inertia loads), max pressure angle (transmission),
+  mean and max crank torque (drive size) and flywheel J_F;
+- no best: K, H, θ, the dimensions and the speeds. They are requirements or
+  trade-offs, not merits.
+No design is marked when all values in a row are equal, or fewer than two designs
+have a value (torques need loads; the pressure angle exists for the rod variant only).
+"""
+from __future__ import annotations
+
+import csv
+import io as _io
+import json
+import math
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+import numpy as np
+
+from .dynamics import MassProperties, masses_for_design, solve_dynamics
+from .errors import DesignError
+from .figures import DESIGN_FIGURES, SPEED_FIGURES, TEXT_FIGURES, Figures, figures
+from .kinematics import crank_angles, solve
+from .spec import Spec
+
+MIN_DESIGNS, MAX_DESIGNS = 2, 6
+CURVE_COLUMNS = ("design", "crank_deg", "ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """A design to compare: its label (library name or file name), inputs and loads."""
+
+    label: str
+    spec: Spec
+    masses: MassProperties | None = None
+
+
+@dataclass(frozen=True)
+class Row:
+    """One figure across the designs."""
+
+    key: str                                   # JSON key, e.g. ``a_max_m_s2``
+    unit: str
+    better: str | None                         # "lower", "higher" or None
+    values: tuple[Any, ...]                    # one per design; None where it has none
+    differences: tuple[float | None, ...]      # value − the first design's value
+    best: tuple[int, ...]                      # indices of the best designs (may be empty)
+
+
+@dataclass(frozen=True)
+class Comparison:
+    labels: tuple[str, ...]
+    rpm: float                                 # the common crank speed, r/min
+    crank_deg: np.ndarray                      # (n,) crank angles, degrees
+    ram_x_mm: np.ndarray                       # (k, n) ram displacement per design, mm
+    ram_v_m_s: np.ndarray                      # (k, n) ram velocity, m/s
+    ram_a_m_s2: np.ndarray                     # (k, n) ram acceleration, m/s²
+    crank_torque_N_m: tuple[np.ndarray | None, ...]   # (n,) per design; None without loads
+    figures: tuple[Figures, ...]
+    rows: tuple[Row, ...]
+
+
+def compare(candidates: Sequence[Candidate], rpm: float, step_deg: float = 1.0) -> Comparison:
+    """Curves and figure table of 2 to 6 designs at ``rpm``; DesignError for bad input."""
+    if not MIN_DESIGNS <= len(candidates) <= MAX_DESIGNS:
+        raise DesignError("designs", len(candidates), f"compare {MIN_DESIGNS} to {MAX_DESIGNS} designs")
+    labels = [c.label for c in candidates]
+    for label in labels:
+        if labels.count(label) > 1:
+            raise DesignError("designs", label, "each design may appear only once")
+    phi = crank_angles(step_deg)
+    xs, vs, accs, torques, figs = [], [], [], [], []
+    for c in candidates:
+        design = c.spec.design()
+        motion = solve(design, phi, [rpm])
+        xs.append(motion.ram_x)
+        vs.append(motion.ram_v[0])
+        accs.append(motion.ram_a[0])
+        if c.masses is not None:
+            dyn = solve_dynamics(design, phi, [rpm], masses_for_design(design, c.masses))
+            torques.append(dyn.crank_torque[0])
+        else:
+            torques.append(None)
+        figs.append(figures(c.spec, [rpm], c.masses))
+    return Comparison(labels=tuple(c.label for c in candidates), rpm=float(rpm),
+                      crank_deg=np.degrees(phi), ram_x_mm=np.array(xs), ram_v_m_s=np.array(vs),
+                      ram_a_m_s2=np.array(accs), crank_torque_N_m=tuple(torques),
+                      figures=tuple(figs), rows=table_rows(figs))
+
+
+def table_rows(figs: Sequence[Figures]) -> tuple[Row, ...]:
+    """The side-by-side rows: text figures, design figures, then the first speed's figures."""
+    rows = [Row(key, "", None, tuple(getattr(f, key) for f in figs), (None,) * len(figs), ())
+            for key in TEXT_FIGURES]
+    for key, unit, _, better in DESIGN_FIGURES:
+        rows.append(_row(key, unit, better, [getattr(f, key) for f in figs]))
+    for key, unit, _, better in SPEED_FIGURES:
+        rows.append(_row(key, unit, better, [getattr(f.speeds[0], key) for f in figs]))
+    return tuple(rows)
+
+
+def _row(key: str, unit: str, better: str | None, values: list[float | None]) -> Row:
+    ref = values[0]
+    diffs = tuple(None if v is None or ref is None else v - ref for v in values)
+    return Row(key, unit, better, tuple(values), diffs, best_indices(values, better))
+
+
+def best_indices(values: Sequence[float | None], better: str | None) -> tuple[int, ...]:
+    """Indices of the best values (ties within 1e-9 relative), or () if there is no best."""
+    present = [(i, v) for i, v in enumerate(values) if v is not None and math.isfinite(v)]
+    if better is None or len(present) < 2:
+        return ()
+    numbers = [v for _, v in present]
+    target = min(numbers) if better == "lower" else max(numbers)
+    tol = 1e-9 * max(1.0, abs(target))
+    if max(numbers) - min(numbers) <= tol:
+        return ()
+    return tuple(i for i, v in present if abs(v - target) <= tol)
+
+
+# ---- export --------------------------------------------------------------------
+def _number(value: Any) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, str):
+        return value
+    return "%.10g" % value
+
+
+def table_csv(comparison: Comparison) -> str:
+    """The figure table as CSV: figure, unit, better, one column per design, the
+    differences from the first design, and the best design(s) separated by ``;``."""
+    labels = comparison.labels
+    out = _io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["figure", "unit", "better", *labels,
+                     *(f"{label} - {labels[0]}" for label in labels[1:]), "best"])
+    writer.writerow(["rpm", "r/min", "", *(_number(comparison.rpm) for _ in labels),
+                     *("" for _ in labels[1:]), ""])
+    for row in comparison.rows:
+        writer.writerow([row.key, row.unit, row.better or "", *(_number(v) for v in row.values),
+                         *(_number(d) for d in row.differences[1:]),
+                         ";".join(labels[i] for i in row.best)])
+    return out.getvalue()
+
+
+def curves_csv(comparison: Comparison) -> str:
+    """The overlay curves in long form, one row per (design, crank angle)."""
+    out = _io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(CURVE_COLUMNS)
+    for k, label in enumerate(comparison.labels):
+        torque = comparison.crank_torque_N_m[k]
+        for j, deg in enumerate(comparison.crank_deg):
+            writer.writerow([label, _number(deg), _number(comparison.ram_x_mm[k, j]),
+                             _number(comparison.ram_v_m_s[k, j]), _number(comparison.ram_a_m_s2[k, j]),
+                             "" if torque is None else _number(torque[j])])
+    return out.getvalue()
+
+
+def comparison_document(comparison: Comparison, curves: bool = False) -> dict[str, Any]:
+    """JSON-ready: the speed, the designs, one object per figure (and the curves if asked)."""
+    labels = comparison.labels
+    doc: dict[str, Any] = {
+        "rpm": comparison.rpm, "designs": list(labels), "reference": labels[0],
+        "figures": [{"figure": r.key, "unit": r.unit, "better": r.better,
+                     "values": dict(zip(labels, r.values)),
+                     "differences": dict(zip(labels, r.differences)),
+                     "best": [labels[i] for i in r.best]} for r in comparison.rows],
+    }
+    if curves:
+        doc["curves"] = {"crank_deg": comparison.crank_deg.tolist(), "designs": [
+            {"design": label, "ram_x_mm": comparison.ram_x_mm[k].tolist(),
+             "ram_v_m_s": comparison.ram_v_m_s[k].tolist(),
+             "ram_a_m_s2": comparison.ram_a_m_s2[k].tolist(),
+             "crank_torque_N_m": None if comparison.crank_torque_N_m[k] is None
+             else comparison.crank_torque_N_m[k].tolist()}
+            for k, label in enumerate(labels)]}
+    return doc
+
+
+def comparison_json(comparison: Comparison, curves: bool = False) -> str:
+    return json.dumps(comparison_document(comparison, curves), indent=2, allow_nan=False,
+                      ensure_ascii=False) + "\n"

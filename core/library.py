@@ -1,0 +1,355 @@
+"""The design library: named designs with their key figures, in one SQLite file.
+
+Each entry keeps a name (unique), notes, tags, created and modified times (UTC,
+ISO 8601), the design document exactly as a design file holds it (loads
+included), and the key figures of :mod:`core.figures` — the design's in the
+``entries`` table, each speed's in ``speeds`` — so a list can be filtered and
+sorted without recomputing anything. Documents read back are validated by the
+same rules as a design file (:func:`core.io.parse_design`).
+
+Opening, checks, schema and transactions are in :mod:`core.library_store`;
+the filter syntax is in :mod:`core.library_query`.
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+import sqlite3
+from dataclasses import dataclass, fields
+from pathlib import Path
+from typing import Any, Iterable, Sequence
+
+from .figures import DESIGN_KEYS, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
+from .io import atomic_write, design_document, masses_to_dict, parse_design
+from .library_query import Condition, condition_sql, parse_filter, search_sql, sort_sql
+from .library_store import (LibraryError, backup_target, connect, default_path, resolve_path,
+                            snapshot, sqlite_error, transaction, utc_now)
+
+MAX_NAME = 200
+MAX_TAG = 64
+_CONTROL = re.compile(r"[\x00-\x1f\x7f]")
+_PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
+_ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS
+_SPEED_COLUMNS = ("rpm",) + SPEED_KEYS
+LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS       # the columns of :meth:`Library.query_rows`
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One library entry: what it is called, when, the document text and its figures."""
+
+    name: str
+    notes: str
+    tags: tuple[str, ...]
+    created: str          # UTC ISO 8601
+    modified: str         # UTC ISO 8601
+    text: str             # the design document as JSON, the text of a design file
+    figures: Figures
+
+    def document(self) -> dict[str, Any]:
+        """The validated design (keys of ``core.io.load_design``); FileFormatError if bad."""
+        return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}")
+
+
+def document_text(loaded: dict[str, Any]) -> str:
+    """A loaded design (``load_design``'s dict) as the JSON text of a design file."""
+    masses = loaded.get("masses")
+    extra: dict[str, Any] = {}
+    for key, value in loaded.items():              # keep the file's key order
+        if key == "forces" and masses is not None:
+            extra["forces"] = masses_to_dict(masses)
+        elif key not in _PARSED_KEYS:
+            extra[key] = value
+    if masses is not None and "forces" not in extra:
+        extra["forces"] = masses_to_dict(masses)
+    doc = design_document(loaded["spec"], loaded["rpm"], loaded["step_deg"], extra)
+    return json.dumps(doc, indent=2, ensure_ascii=False)
+
+
+def check_name(name: object) -> str:
+    """A usable entry name (stripped), or LibraryError('name')."""
+    if not isinstance(name, str) or not name.strip():
+        raise LibraryError("name", "a design name must not be empty")
+    name = name.strip()
+    if len(name) > MAX_NAME or _CONTROL.search(name):
+        raise LibraryError("name", f"a design name must be at most {MAX_NAME} characters, "
+                           "without control characters")
+    return name
+
+
+def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
+    """Stripped, de-duplicated, sorted tags; LibraryError('tag') for a bad one."""
+    out = set()
+    for tag in tags:
+        tag = str(tag).strip()
+        if not tag:
+            continue
+        if len(tag) > MAX_TAG or "," in tag or _CONTROL.search(tag):
+            raise LibraryError("tag", f"a tag must be at most {MAX_TAG} characters, without "
+                               f"commas or control characters (got {tag[:80]!r})")
+        out.add(tag)
+    return tuple(sorted(out))
+
+
+def unique_name(base: str, taken: Iterable[str]) -> str:
+    """``base``, or ``base (2)``, ``base (3)``… whichever is not in ``taken``."""
+    taken = set(taken)
+    if base not in taken:
+        return base
+    n = 2
+    while f"{base} ({n})" in taken:
+        n += 1
+    return f"{base} ({n})"
+
+
+class Library:
+    """A checked, open library. Use as a context manager or call :meth:`close`."""
+
+    def __init__(self, path: str | os.PathLike | None = None, create: bool = True) -> None:
+        self.path = resolve_path(path)
+        self._conn = connect(self.path, create=create, make_dirs=self.path == default_path())
+
+    def close(self) -> None:
+        self._conn.close()
+
+    def __enter__(self) -> "Library":
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def data_version(self) -> int:
+        """Changes whenever another connection commits (cheap to poll)."""
+        return self._read(lambda c: c.execute("PRAGMA data_version").fetchone()[0])
+
+    # ---- reading --------------------------------------------------------------
+    def _read(self, work):
+        try:
+            return work(self._conn)
+        except sqlite3.Error as exc:
+            raise sqlite_error(exc, self.path) from None
+
+    def names(self) -> list[str]:
+        return self._read(lambda c: [r[0] for r in c.execute("SELECT name FROM entries ORDER BY name")])
+
+    def count(self) -> int:
+        return self._read(lambda c: c.execute("SELECT count(*) FROM entries").fetchone()[0])
+
+    def __contains__(self, name: str) -> bool:
+        return self._read(lambda c: c.execute("SELECT 1 FROM entries WHERE name = ?", (name,))
+                          .fetchone() is not None)
+
+    def get(self, name: str) -> Entry:
+        """The entry called ``name``; LibraryError('missing') if there is none."""
+        def work(c: sqlite3.Connection) -> Entry:
+            row = c.execute(f"SELECT id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
+                            "JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
+            if row is None:
+                raise LibraryError("missing", f"there is no design named {name!r} in the library",
+                                   self.path)
+            values = dict(zip(_ENTRY_COLUMNS, row[1:-1]))
+            speeds = tuple(SpeedFigures(**dict(zip(_SPEED_COLUMNS, r))) for r in c.execute(
+                f"SELECT {', '.join(_SPEED_COLUMNS)} FROM speeds WHERE entry_id = ? ORDER BY pos",
+                (row[0],)))
+            tags = tuple(r[0] for r in c.execute("SELECT tag FROM tags WHERE entry_id = ? ORDER BY tag",
+                                                 (row[0],)))
+            figs = Figures(**{f.name: values[f.name] for f in fields(Figures) if f.name != "speeds"},
+                           speeds=speeds)
+            return Entry(name=values["name"], notes=values["notes"], tags=tags,
+                         created=values["created"], modified=values["modified"], text=row[-1],
+                         figures=figs)
+        return self._read(work)
+
+    def load(self, name: str) -> dict[str, Any]:
+        """The validated design of ``name`` (as ``core.io.load_design`` returns it)."""
+        return self.get(name).document()
+
+    def query_rows(self, where: str | Sequence[Condition] = "", search: str = "", sort: str = "name",
+                   descending: bool = False, rpm: float | None = None, limit: int | None = None,
+                   offset: int = 0) -> tuple[tuple[str, ...], list[tuple]]:
+        """Entries matching the filter (see :mod:`core.library_query`): column keys and rows.
+
+        Per-speed figures are those at ``rpm`` (None where the design lacks that speed),
+        or at each design's first speed when ``rpm`` is None. ``tags`` is comma-joined.
+        ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
+        top rows while sorting, which is what makes a page fast).
+        """
+        conditions = parse_filter(where) if isinstance(where, str) else list(where)
+        clauses, params = [], []
+        if rpm is None:
+            join = "LEFT JOIN speeds s ON s.entry_id = e.id AND s.pos = 0"
+        else:
+            join = "LEFT JOIN speeds s ON s.entry_id = e.id AND s.rpm BETWEEN ? AND ?"
+            params += [float(rpm) - 1e-9, float(rpm) + 1e-9]
+        for c in conditions:
+            sql, values = condition_sql(c)
+            clauses.append(sql)
+            params += values
+        if search.strip():
+            sql, values = search_sql(search)
+            clauses.append(sql)
+            params += values
+        where_sql = ("WHERE " + " AND ".join(clauses)) if clauses else ""
+        limit_sql = f"LIMIT {int(limit)} OFFSET {max(int(offset), 0)}" if limit is not None else ""
+        columns = ", ".join([f"e.{c}" for c in LIST_COLUMNS[:-len(_SPEED_COLUMNS)]]
+                            + [f"s.{c}" for c in _SPEED_COLUMNS])
+        sql = f"SELECT {columns} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
+        return LIST_COLUMNS, self._read(lambda c: c.execute(sql, params).fetchall())
+
+    def query(self, *args: Any, **kwargs: Any) -> list[dict[str, Any]]:
+        """:meth:`query_rows` as JSON-ready dicts (``tags`` a list)."""
+        keys, rows = self.query_rows(*args, **kwargs)
+        out = []
+        for row in rows:
+            item = dict(zip(keys, row))
+            item["tags"] = item["tags"].split(",") if item["tags"] else []
+            out.append(item)
+        return out
+
+    # ---- writing ----------------------------------------------------------------
+    def add(self, name: str, loaded: dict[str, Any], notes: str = "", tags: Iterable[str] = (),
+            replace: bool = False) -> Entry:
+        """Store a validated design (``load_design``'s dict) under ``name``.
+
+        A name in use is refused (LibraryError('exists')) unless ``replace``, which keeps
+        the entry's created time. The figures are computed before the write starts.
+        """
+        entry = self.make_entry(name, loaded, notes, tags)
+        with transaction(self._conn, self.path) as c:
+            row = c.execute("SELECT id, created FROM entries WHERE name = ?", (entry.name,)).fetchone()
+            if row is not None:
+                if not replace:
+                    raise self._exists(entry.name)
+                c.execute("DELETE FROM entries WHERE id = ?", (row[0],))
+                entry = Entry(**{**entry.__dict__, "created": row[1]})
+            self._insert(c, entry)
+        return entry
+
+    def make_entry(self, name: str, loaded: dict[str, Any], notes: str = "",
+                   tags: Iterable[str] = ()) -> Entry:
+        """An entry for ``loaded`` stamped now, not yet stored (figures computed here)."""
+        now = utc_now()
+        figs = figures(loaded["spec"], loaded["rpm"], loaded.get("masses"))
+        return Entry(name=check_name(name), notes=str(notes), tags=check_tags(tags), created=now,
+                     modified=now, text=document_text(loaded), figures=figs)
+
+    def add_entries(self, entries: Sequence[Entry]) -> None:
+        """Store ready entries in one transaction, all or none (names must be free)."""
+        self.replace_entries((), entries)
+
+    def replace_entries(self, remove: Iterable[str], add: Sequence[Entry]) -> None:
+        """Delete the entries named ``remove`` and store ``add``, in one transaction.
+
+        Every edit is such a swap of whole entries, so an edit and its undo are both
+        one call (LibraryError 'missing'/'exists' if the library changed meanwhile).
+        """
+        with transaction(self._conn, self.path) as c:
+            for name in remove:
+                if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+                    raise LibraryError("missing", f"there is no design named {name!r} in the library",
+                                       self.path)
+            for entry in add:
+                if c.execute("SELECT 1 FROM entries WHERE name = ?", (entry.name,)).fetchone():
+                    raise self._exists(entry.name)
+                self._insert(c, entry)
+
+    def restore(self, entry: Entry) -> None:
+        """Put back a removed entry exactly as it was (undo of :meth:`remove`)."""
+        self.add_entries([entry])
+
+    def remove(self, name: str) -> Entry:
+        """Delete ``name``; returns the entry so it can be restored."""
+        entry = self.get(name)
+        with transaction(self._conn, self.path) as c:
+            if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+                raise LibraryError("missing", f"there is no design named {name!r} in the library",
+                                   self.path)
+        return entry
+
+    def rename(self, old: str, new: str) -> None:
+        new = check_name(new)
+        with transaction(self._conn, self.path) as c:
+            if new != old and c.execute("SELECT 1 FROM entries WHERE name = ?", (new,)).fetchone():
+                raise self._exists(new)
+            if c.execute("UPDATE entries SET name = ?, modified = ? WHERE name = ?",
+                         (new, utc_now(), old)).rowcount == 0:
+                raise LibraryError("missing", f"there is no design named {old!r} in the library",
+                                   self.path)
+
+    def duplicate(self, name: str, new: str | None = None) -> str:
+        """Copy ``name`` to ``new`` (default: ``name (2)``…); returns the new name."""
+        entry = self.get(name)
+        new = check_name(new) if new is not None else unique_name(name, self.names())
+        now = utc_now()
+        self.add_entries([Entry(**{**entry.__dict__, "name": new, "created": now, "modified": now})])
+        return new
+
+    def update(self, name: str, notes: str | None = None, tags: Iterable[str] | None = None) -> None:
+        """Change the notes and/or tags of ``name`` (its modified time too)."""
+        entry = self.get(name)
+        changed = Entry(**{**entry.__dict__, "modified": utc_now(),
+                           "notes": entry.notes if notes is None else str(notes),
+                           "tags": entry.tags if tags is None else check_tags(tags)})
+        with transaction(self._conn, self.path) as c:
+            if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+                raise LibraryError("missing", f"there is no design named {name!r} in the library",
+                                   self.path)
+            self._insert(c, changed)
+
+    def export(self, name: str, path: str | os.PathLike) -> None:
+        """Write ``name`` as a design file (atomically); OSError if it cannot be written."""
+        entry = self.get(name)
+        entry.document()                  # never export what could not be opened again
+        atomic_write(path, entry.text + "\n")
+
+    def backup(self, target: str | os.PathLike | None = None) -> Path:
+        """A consistent copy of the whole library (SQLite's online backup), written atomically;
+        by default beside the library as ``NAME.backup-TIME``."""
+        target = backup_target(self.path) if target is None else target
+        return snapshot(self._conn, target, self.path)
+
+    # ---- internals ------------------------------------------------------------------
+    def _exists(self, name: str) -> LibraryError:
+        return LibraryError("exists", f"a design named {name!r} is already in the library", self.path)
+
+    @staticmethod
+    def _insert(c: sqlite3.Connection, entry: Entry) -> None:
+        values = {"name": entry.name, "notes": entry.notes, "tags": ",".join(entry.tags),
+                  "created": entry.created,
+                  "modified": entry.modified, **entry.figures.design_values()}
+        cursor = c.execute(f"INSERT INTO entries ({', '.join(_ENTRY_COLUMNS)}) VALUES "
+                           f"({', '.join('?' * len(_ENTRY_COLUMNS))})",
+                           [values[k] for k in _ENTRY_COLUMNS])
+        entry_id = cursor.lastrowid
+        c.execute("INSERT INTO documents (entry_id, text) VALUES (?, ?)", (entry_id, entry.text))
+        c.executemany(f"INSERT INTO speeds (entry_id, pos, {', '.join(_SPEED_COLUMNS)}) VALUES "
+                      f"(?, ?, {', '.join('?' * len(_SPEED_COLUMNS))})",
+                      [(entry_id, pos, *(getattr(s, k) for k in _SPEED_COLUMNS))
+                       for pos, s in enumerate(_distinct_speeds(entry.figures.speeds))])
+        c.executemany("INSERT INTO tags (entry_id, tag) VALUES (?, ?)",
+                      [(entry_id, tag) for tag in entry.tags])
+
+
+def _distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:
+    """The speeds without repeats (a document may list one speed twice), first one kept."""
+    out: list[SpeedFigures] = []
+    for s in speeds:
+        if not any(abs(s.rpm - t.rpm) <= 1e-9 for t in out):
+            out.append(s)
+    return out
+
+
+def file_stem(path: str | os.PathLike) -> str:
+    """The entry name a design file gets on import: its name without ``.shaper.json``/``.json``."""
+    name = Path(path).name
+    for suffix in (".shaper.json", ".json"):
+        if name.lower().endswith(suffix) and len(name) > len(suffix):
+            return name[:-len(suffix)]
+    return name
+
+
+def safe_file_name(name: str) -> str:
+    """An entry name usable as a file name on every system (for exporting a whole library)."""
+    cleaned = re.sub(r'[<>:"/\\|?*\x00-\x1f\x7f]', "_", name).strip(" .")
+    return (cleaned or "design")[:120]

@@ -1,0 +1,339 @@
+"""Compare view: 2 to 6 designs overlaid at one speed, with a side-by-side table.
+
+Each design keeps one colour and one line style in all four plots (ram x, v, a
+and crank torque), so curves stay apart in grey-scale prints too. The table
+shows every figure of ``core.compare``: each value, its difference from the
+first design in brackets, and the best value of a row in bold with a ★.
+Everything shown is computed by core; this widget only draws and exports.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pyqtgraph as pg
+from PySide6.QtCore import QEvent, QPoint, QRectF, QSize, Qt, Signal
+from PySide6.QtGui import QBrush, QColor, QFont, QImage, QPainter
+from PySide6.QtSvg import QSvgGenerator
+from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QHBoxLayout, QLabel, QListWidget,
+                               QMessageBox, QPushButton, QSplitter, QTableWidget, QTableWidgetItem,
+                               QVBoxLayout, QWidget)
+
+from core.compare import MAX_DESIGNS, Candidate, Comparison, compare, table_csv
+from core.errors import DesignError, FileFormatError
+from core.io import atomic_write, load_design
+from core.library import file_stem, unique_name
+
+from .figure_labels import figure_label, figure_tip, format_figure
+from .messages import describe
+from .model import DesignModel
+from .plots import cache_axes, styled_plot_item
+
+# Okabe–Ito colours (distinguishable with colour-blindness) and six line styles
+COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
+STYLES = (Qt.PenStyle.SolidLine, Qt.PenStyle.DashLine, Qt.PenStyle.DotLine, Qt.PenStyle.DashDotLine,
+          Qt.PenStyle.DashDotDotLine, Qt.PenStyle.CustomDashLine)
+BEST_BRUSH = QBrush(QColor(200, 235, 200))
+CURVES = ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
+
+
+def design_pen(index: int) -> pg.QtGui.QPen:
+    """The pen of the ``index``-th design: its own colour and its own line style."""
+    pen = pg.mkPen(COLOURS[index % len(COLOURS)], width=2)
+    pen.setStyle(STYLES[index % len(STYLES)])
+    if pen.style() == Qt.PenStyle.CustomDashLine:
+        pen.setDashPattern([8, 3, 1, 3, 1, 3])
+    pen.setCosmetic(True)
+    return pen
+
+
+class CompareView(QWidget):
+    """``candidatesChanged`` whenever the list of designs changes."""
+
+    candidatesChanged = Signal()
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._model = model
+        self._candidates: list[Candidate] = []
+        self.comparison: Comparison | None = None
+
+        self.list = QListWidget()
+        self.list.setMaximumHeight(72)
+        self.add_current_button = QPushButton()
+        self.add_current_button.clicked.connect(self.add_current)
+        self.add_file_button = QPushButton()
+        self.add_file_button.clicked.connect(self.add_file_dialog)
+        self.remove_button = QPushButton()
+        self.remove_button.clicked.connect(self.remove_selected)
+        self.speed = QDoubleSpinBox()
+        self.speed.setRange(0.1, 1000.0)
+        self.speed.setDecimals(1)
+        self.speed.setValue(model.rpms[0])
+        self.speed.setKeyboardTracking(False)
+        self.speed.valueChanged.connect(lambda _: self.recompute())
+        self.speed_label = QLabel()
+        self.export_csv_button = QPushButton()
+        self.export_csv_button.clicked.connect(lambda: self._export_dialog("csv"))
+        self.export_image_button = QPushButton()
+        self.export_image_button.clicked.connect(lambda: self._export_dialog("image"))
+        self.hint = QLabel()
+        self.hint.setWordWrap(True)
+
+        self.plots = pg.GraphicsLayoutWidget()
+        self.plots.setBackground("w")
+        self._items = {}
+        for row, key in enumerate(CURVES):
+            item = styled_plot_item(0.05)
+            self.plots.addItem(item, row=row, col=0)
+            self._items[key] = item
+            if row:
+                item.setXLink(self._items[CURVES[0]])
+        self._legend = self._items[CURVES[0]].addLegend(offset=(10, 5), colCount=2)
+        self.table = QTableWidget()
+        self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
+        self.content = QSplitter(Qt.Orientation.Vertical)     # what PNG/SVG exports show
+        self.content.addWidget(self.plots)
+        self.content.addWidget(self.table)
+        self.content.setStretchFactor(0, 3)
+        self.content.setStretchFactor(1, 2)
+
+        picks = QHBoxLayout()                  # kept narrow: the view shares a tab with the plots
+        picks.addWidget(self.list, 1)
+        side = QVBoxLayout()
+        for w in (self.add_current_button, self.add_file_button, self.remove_button):
+            side.addWidget(w)
+        side.addStretch(1)
+        picks.addLayout(side)
+        buttons = QHBoxLayout()
+        buttons.addWidget(self.speed_label)
+        buttons.addWidget(self.speed)
+        buttons.addStretch(1)
+        buttons.addWidget(self.export_csv_button)
+        buttons.addWidget(self.export_image_button)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.addLayout(picks)
+        layout.addLayout(buttons)
+        layout.addWidget(self.hint)
+        layout.addWidget(self.content, 1)
+        self._retranslate()
+        self.recompute()
+
+    # ---- candidates ---------------------------------------------------------------------
+    def set_candidates(self, candidates: list[Candidate]) -> None:
+        """Compare exactly these designs (the first is the reference)."""
+        self._candidates = list(candidates)[:MAX_DESIGNS]
+        self._changed()
+
+    def add_candidate(self, candidate: Candidate) -> bool:
+        if len(self._candidates) >= MAX_DESIGNS:
+            self.hint.setText(self.tr("At most %1 designs can be compared.").replace("%1", str(MAX_DESIGNS)))
+            return False
+        label = unique_name(candidate.label, [c.label for c in self._candidates])
+        self._candidates.append(Candidate(label, candidate.spec, candidate.masses))
+        self._changed()
+        return True
+
+    def add_current(self) -> bool:
+        m = self._model
+        return self.add_candidate(Candidate(self.tr("Design on screen"), m.valid_spec, m.masses))
+
+    def add_file(self, path: str) -> bool:
+        try:
+            doc = load_design(path)
+        except FileFormatError as exc:
+            self._fail(self.tr("Could not open the design: %1").replace("%1", str(exc)))
+            return False
+        return self.add_candidate(Candidate(file_stem(path), doc["spec"], doc["masses"]))
+
+    def add_file_dialog(self) -> None:
+        paths, _ = QFileDialog.getOpenFileNames(self, self.tr("Add design files"), "",
+                                                self.tr("Shaper designs (*.shaper.json *.json);;All files (*)"))
+        for path in paths:
+            self.add_file(path)
+
+    def remove_selected(self) -> None:
+        rows = sorted({i.row() for i in self.list.selectedIndexes()}, reverse=True)
+        for row in rows:
+            del self._candidates[row]
+        self._changed()
+
+    def candidates(self) -> list[Candidate]:
+        return list(self._candidates)
+
+    def _changed(self) -> None:
+        self.list.clear()
+        for i, c in enumerate(self._candidates):
+            self.list.addItem(c.label)
+            self.list.item(i).setForeground(QColor(COLOURS[i % len(COLOURS)]))
+        self.candidatesChanged.emit()
+        self.recompute()
+
+    # ---- computing and showing ----------------------------------------------------------
+    def recompute(self) -> None:
+        """Compare the designs at the chosen speed; keep the last result on an error."""
+        if len(self._candidates) < 2:
+            self.comparison = None
+            self.hint.setText(self.tr("Pick 2 to 6 designs: select them in the library and press "
+                                      "Compare, or add the design on screen or design files here."))
+            self._show()
+            return
+        try:
+            self.comparison = compare(self._candidates, self.speed.value())
+        except DesignError as exc:
+            self.hint.setText(describe(exc))
+            return
+        self.hint.setText("")
+        self._show()
+
+    def _show(self) -> None:
+        for item in self._items.values():
+            for curve in list(item.listDataItems()):
+                item.removeItem(curve)
+        self._legend.clear()
+        result = self.comparison
+        self.export_csv_button.setEnabled(result is not None)
+        self.export_image_button.setEnabled(result is not None)
+        self._fill_table()
+        if result is None:
+            return
+        for k, label in enumerate(result.labels):
+            pen = design_pen(k)
+            series = (result.ram_x_mm[k], result.ram_v_m_s[k], result.ram_a_m_s2[k],
+                      result.crank_torque_N_m[k])
+            for key, y in zip(CURVES, series):
+                if y is not None:
+                    curve = self._items[key].plot(result.crank_deg, y, pen=pen)
+                    if key == CURVES[0]:
+                        self._legend.addItem(curve, label)
+        for item in self._items.values():
+            item.enableAutoRange()
+
+    def _fill_table(self) -> None:
+        result = self.comparison
+        self.table.clear()
+        if result is None:
+            self.table.setRowCount(0)
+            self.table.setColumnCount(0)
+            return
+        rows = result.rows
+        self.table.setColumnCount(len(result.labels))
+        self.table.setRowCount(len(rows))
+        self.table.setHorizontalHeaderLabels(list(result.labels))
+        self.table.setVerticalHeaderLabels([figure_label(r.key) for r in rows])
+        bold = QFont(self.table.font())
+        bold.setBold(True)
+        for i, row in enumerate(rows):
+            self.table.verticalHeaderItem(i).setToolTip(figure_tip(row.key))
+            for k, value in enumerate(row.values):
+                text = format_figure(row.key, value)
+                diff = row.differences[k]
+                if k > 0 and diff is not None and not isinstance(value, str):
+                    tiny = abs(diff) <= 1e-9 * max(1.0, abs(row.values[0]))
+                    text += " (=)" if tiny else f" ({diff:+.4g})"
+                item = QTableWidgetItem(("★ " if k in row.best else "") + text)
+                item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+                if k in row.best:
+                    item.setFont(bold)
+                    item.setBackground(BEST_BRUSH)
+                    item.setToolTip(self.tr("Best in this row"))
+                self.table.setItem(i, k, item)
+        self.table.resizeColumnsToContents()
+
+    # ---- export ----------------------------------------------------------------------------
+    def export_csv(self, path: str) -> None:
+        """The figure table as ``shaper library compare --csv`` writes it; OSError on failure."""
+        if self.comparison is not None:
+            atomic_write(path, table_csv(self.comparison))
+
+    def export_image(self, path: str) -> None:
+        """Curves and the whole table as one picture: SVG for ``.svg``, else PNG (by suffix)."""
+        table = self.table
+        table_size = QSize(table.verticalHeader().width() + table.horizontalHeader().length() + 4,
+                           table.horizontalHeader().height() + table.verticalHeader().length() + 4)
+        plots_size = self.plots.size()
+        title_h = 28
+        width = max(plots_size.width(), table_size.width())
+        height = title_h + plots_size.height() + table_size.height()
+        if Path(path).suffix.lower() == ".svg":
+            device = QSvgGenerator()
+            device.setFileName(path)
+            device.setSize(QSize(width, height))
+            device.setViewBox(QRectF(0, 0, width, height))
+            device.setTitle(self.tr("Design comparison"))
+        else:
+            device = QImage(width * 2, height * 2, QImage.Format.Format_ARGB32)
+            device.setDevicePixelRatio(2.0)
+            device.fill(QColor("white"))
+        old_size = table.size()
+        for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
+            bar(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        table.resize(table_size)               # the whole table, not the part scrolled into view
+        painter = QPainter(device)
+        cache_axes(list(self._items.values()), False)     # cached axis pixmaps would blur when scaled
+        try:
+            painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+            painter.fillRect(QRectF(0, 0, width, height), QColor("white"))
+            painter.setPen(QColor("black"))
+            painter.drawText(QRectF(8, 0, width - 16, title_h), Qt.AlignmentFlag.AlignVCenter, self.title())
+            self.plots.scene().render(painter, QRectF(0, title_h, plots_size.width(), plots_size.height()),
+                                      self.plots.ci.sceneBoundingRect())
+            table.render(painter, QPoint(0, title_h + plots_size.height()))
+        finally:
+            painter.end()
+            table.resize(old_size)
+            for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
+                bar(Qt.ScrollBarPolicy.ScrollBarAsNeeded)
+            cache_axes(list(self._items.values()), True)
+        if isinstance(device, QImage) and not device.save(path):
+            raise OSError(0, self.tr("the file could not be written"))
+        if not Path(path).exists():
+            raise OSError(0, self.tr("the file could not be written"))
+
+    def title(self) -> str:
+        """One line saying what is compared, for exported pictures."""
+        if self.comparison is None:
+            return ""
+        return (self.tr("Comparison at %1 r/min; differences from “%2” in brackets; ★ best")
+                .replace("%1", f"{self.comparison.rpm:g}").replace("%2", self.comparison.labels[0]))
+
+    def _export_dialog(self, kind: str) -> None:
+        if kind == "csv":
+            path, _ = QFileDialog.getSaveFileName(self, self.tr("Export comparison to CSV"), "comparison.csv",
+                                                  self.tr("CSV files (*.csv)"))
+        else:
+            path, _ = QFileDialog.getSaveFileName(self, self.tr("Export comparison image"), "comparison.png",
+                                                  self.tr("PNG image (*.png);;SVG drawing (*.svg)"))
+        if not path:
+            return
+        try:
+            self.export_csv(path) if kind == "csv" else self.export_image(path)
+        except OSError as exc:
+            self._fail(self.tr("Could not write %1: %2").replace("%1", path)
+                       .replace("%2", exc.strerror or str(exc)))
+
+    def _fail(self, message: str) -> None:
+        QMessageBox.warning(self, self.tr("Compare designs"), message)
+
+    # ---- translation ---------------------------------------------------------------------
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._retranslate()
+        super().changeEvent(event)
+
+    def _retranslate(self) -> None:
+        self.add_current_button.setText(self.tr("Add design on screen"))
+        self.add_file_button.setText(self.tr("Add file…"))
+        self.remove_button.setText(self.tr("Remove"))
+        self.speed_label.setText(self.tr("Speed (r/min):"))
+        self.export_csv_button.setText(self.tr("Export CSV…"))
+        self.export_image_button.setText(self.tr("Export PNG/SVG…"))
+        titles = (self.tr("Ram x (mm)"), self.tr("Ram v (m/s)"), self.tr("Ram a (m/s²)"),
+                  self.tr("Torque (N·m)"))
+        for key, title in zip(CURVES, titles):
+            self._items[key].setLabel("left", title)
+        self._items[CURVES[-1]].setLabel("bottom", self.tr("Crank angle (°)"))
+        self._fill_table()
+
+    def sizeHint(self) -> QSize:
+        return QSize(800, 700)
