@@ -17,7 +17,7 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QGridLayout, QHBoxLayout, Q
                                QStyle, QToolButton, QVBoxLayout, QWidget)
 
 from .model import DesignModel
-from .style import speed_colour
+from .style import fmt, speed_colour
 
 TICK_MS = 16                       # ~60 frames per second
 SPEED_FACTORS = (0.1, 0.25, 0.5, 1.0, 2.0)
@@ -224,13 +224,14 @@ class AnimationBar(QWidget):
         m = self._model.motion
         if index >= m.crank_angle.size:
             return
-        self._values["crank"].setText(f"{math.degrees(float(m.crank_angle[index])):.1f}")
-        self._values["lever"].setText(f"{math.degrees(float(m.lever_angle[index])):.2f}")
-        self._values["ram_x"].setText(f"{float(m.ram_x[index]):.1f}")
+        # fmt: a value at a limit position (±1e-17) reads 0.000, never -0.000
+        self._values["crank"].setText(fmt(math.degrees(float(m.crank_angle[index])), ".1f"))
+        self._values["lever"].setText(fmt(math.degrees(float(m.lever_angle[index])), ".2f"))
+        self._values["ram_x"].setText(fmt(float(m.ram_x[index]), ".1f"))
         for i, row in enumerate(self._speed_rows[: m.rpm.size]):
-            row[1].setText(f"{float(m.time[i, index]):.3f}")
-            row[2].setText(f"{float(m.ram_v[i, index]):.3f}")
-            row[3].setText(f"{float(m.ram_a[i, index]):.2f}")
+            row[1].setText(fmt(float(m.time[i, index]), ".3f"))
+            row[2].setText(fmt(float(m.ram_v[i, index]), ".3f"))
+            row[3].setText(fmt(float(m.ram_a[i, index]), ".2f"))
 
     def _value_label(self) -> QLabel:
         """A right-aligned number cell wide enough that the layout does not jump."""
