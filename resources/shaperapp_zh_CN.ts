@@ -235,11 +235,11 @@
         <translation>连杆</translation>
     </message>
     <message>
-        <source>Through the tip&apos;s extreme positions (chord)</source>
+        <source>Through the tip's extreme positions (chord)</source>
         <translation>通过导杆端部两极限位置（弦线）</translation>
     </message>
     <message>
-        <source>Mid-sagitta of the tip&apos;s arc</source>
+        <source>Mid-sagitta of the tip's arc</source>
         <translation>导杆端部圆弧矢高的中点</translation>
     </message>
     <message>
@@ -273,6 +273,29 @@
     <message>
         <source>The last valid design stays on screen.</source>
         <translation>屏幕上保留最后一个有效设计。</translation>
+    </message>
+</context>
+<context>
+    <name>DimensionLayer</name>
+    <message>
+        <source>L2 = {0}</source>
+        <translation>L2 = {0}</translation>
+    </message>
+    <message>
+        <source>h = {0}</source>
+        <translation>h = {0}</translation>
+    </message>
+    <message>
+        <source>L3 = {0}</source>
+        <translation>L3 = {0}</translation>
+    </message>
+    <message>
+        <source>L1 = {0}</source>
+        <translation>L1 = {0}</translation>
+    </message>
+    <message>
+        <source>H = {0}</source>
+        <translation>H = {0}</translation>
     </message>
 </context>
 <context>
@@ -323,10 +346,147 @@
     </message>
 </context>
 <context>
-    <name>ForcesPanel</name>
+    <name>ForceLayer</name>
+    <message>
+        <source>{0:.1f} kN</source>
+        <translation>{0:.1f} kN</translation>
+    </message>
+    <message>
+        <source>{0:.0f} N</source>
+        <translation>{0:.0f} N</translation>
+    </message>
+    <message>
+        <source>Forces at {0} r/min: all zero</source>
+        <translation>{0} r/min 时各力均为零</translation>
+    </message>
+    <message>
+        <source>{0:g} kN</source>
+        <translation>{0:g} kN</translation>
+    </message>
+    <message>
+        <source>{0:g} N</source>
+        <translation>{0:g} N</translation>
+    </message>
+    <message>
+        <source>Forces at {0} r/min, scale: {1:g} mm ≙ {2}</source>
+        <translation>{0} r/min 时的受力，比例：{1:g} mm ≙ {2}</translation>
+    </message>
+</context>
+<context>
+    <name>ForcePlots</name>
     <message>
         <source>Shaper forces and torque</source>
         <translation>牛头刨床受力与力矩</translation>
+    </message>
+    <message>
+        <source>{0} r/min</source>
+        <translation>{0} r/min</translation>
+    </message>
+    <message>
+        <source>cutting</source>
+        <translation>切削区</translation>
+    </message>
+    <message>
+        <source>mean torque</source>
+        <translation>平均力矩</translation>
+    </message>
+    <message>
+        <source>Joint forces at {0}</source>
+        <translation>{0} 时的运动副反力</translation>
+    </message>
+    <message>
+        <source>r/min:</source>
+        <translation>r/min：</translation>
+    </message>
+    <message>
+        <source>Crank angle φ (°)</source>
+        <translation>曲柄转角 φ (°)</translation>
+    </message>
+    <message>
+        <source>φ = {0}°</source>
+        <translation>φ = {0}°</translation>
+    </message>
+    <message>
+        <source>Crank driving torque</source>
+        <translation>曲柄驱动力矩</translation>
+    </message>
+    <message>
+        <source>Input power</source>
+        <translation>输入功率</translation>
+    </message>
+    <message>
+        <source>Cumulative excess energy ΔE</source>
+        <translation>累积盈亏功 ΔE</translation>
+    </message>
+    <message>
+        <source>Joint force magnitudes</source>
+        <translation>运动副反力大小</translation>
+    </message>
+    <message>
+        <source>Crank torque</source>
+        <translation>驱动力矩</translation>
+    </message>
+    <message>
+        <source>Energy ΔE</source>
+        <translation>盈亏功 ΔE</translation>
+    </message>
+    <message>
+        <source>Joint force |F|</source>
+        <translation>运动副反力 |F|</translation>
+    </message>
+    <message>
+        <source>guide</source>
+        <translation>导路</translation>
+    </message>
+    <message>
+        <source>Joint forces at:</source>
+        <translation>运动副反力转速：</translation>
+    </message>
+    <message>
+        <source>Crank speed whose joint forces are plotted</source>
+        <translation>绘制运动副反力所用的曲柄转速</translation>
+    </message>
+</context>
+<context>
+    <name>ImageExport</name>
+    <message>
+        <source>“.{0}” is not an image type this program writes; use .png or .svg</source>
+        <translation>本程序不能写出 “.{0}” 类型的图像；请使用 .png 或 .svg</translation>
+    </message>
+    <message>
+        <source>the name has no image type; end it in .png or .svg</source>
+        <translation>文件名没有图像类型；请以 .png 或 .svg 结尾</translation>
+    </message>
+    <message>
+        <source>Cannot export to {0}: {1}</source>
+        <translation>无法导出到 {0}：{1}</translation>
+    </message>
+    <message>
+        <source>the folder {0} does not exist</source>
+        <translation>文件夹 {0} 不存在</translation>
+    </message>
+    <message>
+        <source>the folder {0} is not writable</source>
+        <translation>文件夹 {0} 不可写</translation>
+    </message>
+    <message>
+        <source>{0} is a folder</source>
+        <translation>{0} 是一个文件夹</translation>
+    </message>
+    <message>
+        <source>Qt could not encode the image as {0}</source>
+        <translation>Qt 无法将图像编码为 {0}</translation>
+    </message>
+    <message>
+        <source>could not write {0}: {1}</source>
+        <translation>无法写入 {0}：{1}</translation>
+    </message>
+</context>
+<context>
+    <name>LoadsForm</name>
+    <message>
+        <source>L3/2 = {0}</source>
+        <translation>L3/2 = {0}</translation>
     </message>
     <message>
         <source>Mass m3</source>
@@ -341,7 +501,7 @@
         <translation>质心位置 c</translation>
     </message>
     <message>
-        <source>Distance of the lever&apos;s centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
@@ -365,7 +525,7 @@
         <translation>质心偏移 dx</translation>
     </message>
     <message>
-        <source>Horizontal offset of the ram&apos;s centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
         <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
     </message>
     <message>
@@ -373,7 +533,7 @@
         <translation>质心偏移 dy</translation>
     </message>
     <message>
-        <source>Vertical offset of the ram&apos;s centre of mass from the ram joint C, mm (+ up)</source>
+        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
@@ -433,66 +593,6 @@
         <translation>飞轮须保证的速度波动系数 (ωmax − ωmin)/ωm，介于 0 与 1 之间；可输入分数，如 1/30</translation>
     </message>
     <message>
-        <source>Crank driving torque</source>
-        <translation>曲柄驱动力矩</translation>
-    </message>
-    <message>
-        <source>Input power</source>
-        <translation>输入功率</translation>
-    </message>
-    <message>
-        <source>Cumulative excess energy ΔE</source>
-        <translation>累积盈亏功 ΔE</translation>
-    </message>
-    <message>
-        <source>Joint force magnitudes</source>
-        <translation>运动副反力大小</translation>
-    </message>
-    <message>
-        <source>Crank torque</source>
-        <translation>驱动力矩</translation>
-    </message>
-    <message>
-        <source>Energy ΔE</source>
-        <translation>盈亏功 ΔE</translation>
-    </message>
-    <message>
-        <source>Joint force |F|</source>
-        <translation>运动副反力 |F|</translation>
-    </message>
-    <message>
-        <source>O₂ crank bearing</source>
-        <translation>O₂ 曲柄轴承</translation>
-    </message>
-    <message>
-        <source>A block on lever</source>
-        <translation>A 滑块对导杆</translation>
-    </message>
-    <message>
-        <source>O₄ lever pivot</source>
-        <translation>O₄ 导杆支座</translation>
-    </message>
-    <message>
-        <source>B lever tip</source>
-        <translation>B 导杆端部</translation>
-    </message>
-    <message>
-        <source>C rod on ram</source>
-        <translation>C 连杆对滑枕</translation>
-    </message>
-    <message>
-        <source>Guide normal force</source>
-        <translation>导路法向反力</translation>
-    </message>
-    <message>
-        <source>guide</source>
-        <translation>导路</translation>
-    </message>
-    <message>
-        <source>{0} r/min</source>
-        <translation>{0} r/min</translation>
-    </message>
-    <message>
         <source>Slotted lever</source>
         <translation>导杆</translation>
     </message>
@@ -517,48 +617,8 @@
         <translation>计入重力</translation>
     </message>
     <message>
-        <source>Joint forces at:</source>
-        <translation>运动副反力转速：</translation>
-    </message>
-    <message>
-        <source>Crank speed whose joint forces are plotted</source>
-        <translation>绘制运动副反力所用的曲柄转速</translation>
-    </message>
-    <message>
-        <source>Values under the mouse; click a plot to move the mechanism to that crank position</source>
-        <translation>鼠标处的数值；单击曲线使机构转到该曲柄位置</translation>
-    </message>
-    <message>
-        <source>Point at a plot to read values; click to set the crank angle</source>
-        <translation>指向曲线读取数值；单击设置曲柄转角</translation>
-    </message>
-    <message>
-        <source>Crank angle φ (°)</source>
-        <translation>曲柄转角 φ (°)</translation>
-    </message>
-    <message>
-        <source>cutting</source>
-        <translation>切削区</translation>
-    </message>
-    <message>
-        <source>L3/2 = {0}</source>
-        <translation>L3/2 = {0}</translation>
-    </message>
-    <message>
-        <source>mean torque</source>
-        <translation>平均力矩</translation>
-    </message>
-    <message>
-        <source>Joint forces at {0}</source>
-        <translation>{0} 时的运动副反力</translation>
-    </message>
-    <message>
         <source>The last valid results stay on screen.</source>
         <translation>屏幕上保留最后一次有效结果。</translation>
-    </message>
-    <message>
-        <source>φ = {0}°</source>
-        <translation>φ = {0}°</translation>
     </message>
 </context>
 <context>
@@ -600,7 +660,7 @@
         <translation>导出运动曲线 CSV(&amp;C)…</translation>
     </message>
     <message>
-        <source>All speeds, at the form&apos;s angle step</source>
+        <source>All speeds, at the form's angle step</source>
         <translation>全部转速，按表单中的角度步长</translation>
     </message>
     <message>
@@ -769,7 +829,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>曲柄轴上飞轮转动惯量 J_F，kg·m²</translation>
     </message>
     <message>
-        <source>J_F less mechanism&apos;s own, kg·m²</source>
+        <source>J_F less mechanism's own, kg·m²</source>
         <translation>扣除机构自身等效惯量后的 J_F，kg·m²</translation>
     </message>
     <message>
@@ -857,7 +917,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>实测 K</translation>
     </message>
     <message>
-        <source>Working / return crank angle, from the ram&apos;s dead points</source>
+        <source>Working / return crank angle, from the ram's dead points</source>
         <translation>工作行程与回程的曲柄转角之比，由滑枕极限位置测得</translation>
     </message>
     <message>
@@ -865,7 +925,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>实测行程</translation>
     </message>
     <message>
-        <source>Distance between the ram&apos;s dead points</source>
+        <source>Distance between the ram's dead points</source>
         <translation>滑枕两极限位置之间的距离</translation>
     </message>
     <message>
@@ -906,10 +966,45 @@ Lengths in mm, speeds in r/min.</source>
     </message>
 </context>
 <context>
+    <name>PlotStack</name>
+    <message>
+        <source>Fit all</source>
+        <translation>全部显示</translation>
+    </message>
+    <message>
+        <source>Show the whole cycle again (or double-click a plot)</source>
+        <translation>重新显示整个周期（或双击曲线图）</translation>
+    </message>
+    <message>
+        <source>Drag zooms to a box</source>
+        <translation>拖动框选放大</translation>
+    </message>
+    <message>
+        <source>Left drag: zoom to a box; off: pan</source>
+        <translation>左键拖动：框选放大；关闭时：平移</translation>
+    </message>
+    <message>
+        <source>Wheel: zoom x; wheel over an axis: zoom y; drag: zoom to a box; double-click: fit; click: set the crank angle; right click: menu</source>
+        <translation>滚轮：缩放 x；在坐标轴上滚动：缩放 y；拖动：框选放大；双击：全部显示；单击：设置曲柄转角；右键：菜单</translation>
+    </message>
+    <message>
+        <source>Values under the mouse, or at the cursor while the crank moves; click a plot to move the mechanism to that crank position</source>
+        <translation>鼠标处的数值，曲柄转动时为游标处的数值；单击曲线图可将机构移到该曲柄位置</translation>
+    </message>
+    <message>
+        <source>cursor {0}</source>
+        <translation>游标 {0}</translation>
+    </message>
+</context>
+<context>
     <name>PlotsWidget</name>
     <message>
         <source>Shaper motion diagrams</source>
         <translation>牛头刨床运动线图</translation>
+    </message>
+    <message>
+        <source>r/min:</source>
+        <translation>r/min：</translation>
     </message>
     <message>
         <source>X axis:</source>
@@ -924,7 +1019,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <source>Plot against the crank angle (0–360°) or against time (each speed&apos;s own cycle)</source>
+        <source>Plot against the crank angle (0–360°) or against time (each speed's own cycle)</source>
         <translation>以曲柄转角 (0–360°) 或时间（各转速自身的周期）为横坐标</translation>
     </message>
     <message>
@@ -932,12 +1027,8 @@ Lengths in mm, speeds in r/min.</source>
         <translation>导杆曲线</translation>
     </message>
     <message>
-        <source>Show the slotted lever&apos;s angle, angular velocity or angular acceleration</source>
+        <source>Show the slotted lever's angle, angular velocity or angular acceleration</source>
         <translation>显示导杆的角位移、角速度或角加速度</translation>
-    </message>
-    <message>
-        <source>Values under the mouse; click a plot to move the mechanism to that crank position</source>
-        <translation>鼠标处的数值；单击曲线使机构转到该曲柄位置</translation>
     </message>
     <message>
         <source>Crank angle φ (°)</source>
@@ -954,10 +1045,6 @@ Lengths in mm, speeds in r/min.</source>
     <message>
         <source>return stroke</source>
         <translation>回程</translation>
-    </message>
-    <message>
-        <source>Point at a plot to read values; click to set the crank angle</source>
-        <translation>指向曲线读取数值；单击设置曲柄转角</translation>
     </message>
     <message>
         <source>Ram displacement</source>
@@ -1011,10 +1098,6 @@ Lengths in mm, speeds in r/min.</source>
 <context>
     <name>SchemeWidget</name>
     <message>
-        <source>Cannot export to &apos;{0}&apos;: use .png or .svg</source>
-        <translation>无法导出到“{0}”：请使用 .png 或 .svg</translation>
-    </message>
-    <message>
         <source>Shaper mechanism</source>
         <translation>牛头刨床机构</translation>
     </message>
@@ -1043,52 +1126,8 @@ Lengths in mm, speeds in r/min.</source>
         <translation>以统一比例用箭头显示第一个曲柄转速下的运动副反力</translation>
     </message>
     <message>
-        <source>{0:.1f} kN</source>
-        <translation>{0:.1f} kN</translation>
-    </message>
-    <message>
-        <source>{0:.0f} N</source>
-        <translation>{0:.0f} N</translation>
-    </message>
-    <message>
-        <source>Wheel: zoom, drag: pan, right click: more</source>
-        <translation>滚轮：缩放，拖动：平移，右键：更多</translation>
-    </message>
-    <message>
-        <source>L2 = {0:.1f}</source>
-        <translation>L2 = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>h = {0:.1f}</source>
-        <translation>h = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>L3 = {0:.1f}</source>
-        <translation>L3 = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>L1 = {0:.1f}</source>
-        <translation>L1 = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>H = {0:.1f}</source>
-        <translation>H = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>Forces at {0} r/min: all zero</source>
-        <translation>{0} r/min 时各力均为零</translation>
-    </message>
-    <message>
-        <source>{0:g} kN</source>
-        <translation>{0:g} kN</translation>
-    </message>
-    <message>
-        <source>{0:g} N</source>
-        <translation>{0:g} N</translation>
-    </message>
-    <message>
-        <source>Forces at {0} r/min, scale: {1:g} mm ≙ {2}</source>
-        <translation>{0} r/min 时的受力，比例：{1:g} mm ≙ {2}</translation>
+        <source>Wheel: zoom, drag: pan, double-click: fit, right click: menu</source>
+        <translation>滚轮：缩放，拖动：平移，双击：全部显示，右键：菜单</translation>
     </message>
 </context>
 <context>

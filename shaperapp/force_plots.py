@@ -162,7 +162,8 @@ class ForcePlots(QWidget):
             x, rows = np.degrees(summary.crank_angle), summary.energy
         else:
             x, rows = degrees, dyn.crank_torque if name == "torque" else dyn.power * 1e-3
-        curves = [Curve(x, row, label, speed_colour(i)) for i, (row, label) in enumerate(zip(rows, labels))]
+        curves = [Curve(x, row, label, speed_colour(i), short=f"{float(rpm):g}")
+                  for i, (row, label, rpm) in enumerate(zip(rows, labels, dyn.rpm))]
         if name == "torque":        # each speed's mean torque, dashed in its colour
             ends = np.array([0.0, 360.0])
             curves += [Curve(ends, np.full(2, s.mean_torque_N_m), label, speed_colour(i),
@@ -187,6 +188,9 @@ class ForcePlots(QWidget):
         dyn = self._model.dynamics
         speed = min(self.selected_speed(), dyn.rpm.size - 1)
         return {"joints": self.tr("Joint forces at {0}").format(self._speed_name(float(dyn.rpm[speed])))}
+
+    def legend_units(self) -> dict[str, str]:
+        return {"speeds": self.tr("r/min:")}
 
     def x_axis(self) -> tuple[str, float, float, bool]:
         return self.tr("Crank angle φ (°)"), 0.0, 360.0, True

@@ -27,10 +27,6 @@ from PySide6.QtWidgets import QGraphicsScene
 EXPORT_WIDTH = 1600      # minimum width of an exported raster image, px
 
 
-def _tr(text: str) -> str:
-    return QCoreApplication.translate("ImageExport", text)
-
-
 def raster_types() -> set[str]:
     """Suffixes (lower case, no dot) Qt can write as raster images here."""
     return {bytes(f).decode().lower() for f in QImageWriter.supportedImageFormats()}
@@ -44,19 +40,25 @@ def image_type(path: str | os.PathLike) -> str:
     a folder."""
     target = Path(path)
     suffix = target.suffix.lower().lstrip(".")
+    translate = QCoreApplication.translate
     if suffix != "svg" and suffix not in raster_types():
         if suffix:
-            why = _tr("“.{0}” is not an image type this program writes; use .png or .svg")
+            why = translate("ImageExport",
+                            "“.{0}” is not an image type this program writes; use .png or .svg")
         else:
-            why = _tr("the name has no image type; end it in .png or .svg")
-        raise ValueError(_tr("Cannot export to {0}: {1}").format(target, why.format(suffix)))
+            why = translate("ImageExport", "the name has no image type; end it in .png or .svg")
+        raise ValueError(translate("ImageExport", "Cannot export to {0}: {1}").format(
+            target, why.format(suffix)))
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
-        raise OSError(errno.ENOENT, _tr("the folder {0} does not exist").format(folder), str(target))
+        raise OSError(errno.ENOENT, translate("ImageExport", "the folder {0} does not exist")
+                      .format(folder), str(target))
     if not os.access(folder, os.W_OK | os.X_OK) and not os.access(target, os.W_OK):
-        raise OSError(errno.EACCES, _tr("the folder {0} is not writable").format(folder), str(target))
+        raise OSError(errno.EACCES, translate("ImageExport", "the folder {0} is not writable")
+                      .format(folder), str(target))
     if target.is_dir():
-        raise OSError(errno.EISDIR, _tr("{0} is a folder").format(target), str(target))
+        raise OSError(errno.EISDIR, translate("ImageExport", "{0} is a folder").format(target),
+                      str(target))
     return suffix
 
 
@@ -112,12 +114,12 @@ def export_scene(scene: QGraphicsScene, source: QRectF, path: str | os.PathLike,
     finally:
         painter.end()
     if kind != "svg" and not device.save(buffer, kind.upper()):
-        raise OSError(errno.EIO, _tr("Qt could not encode the image as {0}").format(kind.upper()),
-                      str(path))
+        raise OSError(errno.EIO, QCoreApplication.translate(
+            "ImageExport", "Qt could not encode the image as {0}").format(kind.upper()), str(path))
     buffer.close()
     try:
         with open(path, "wb") as handle:
             handle.write(bytes(data))
     except OSError as exc:
-        raise OSError(exc.errno, _tr("could not write {0}: {1}").format(path, exc.strerror),
-                      str(path)) from exc
+        raise OSError(exc.errno, QCoreApplication.translate(
+            "ImageExport", "could not write {0}: {1}").format(path, exc.strerror), str(path)) from exc

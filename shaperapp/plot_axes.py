@@ -97,13 +97,22 @@ class NavViewBox(pg.ViewBox):
         super().__init__(enableMenu=False)
         self.setMouseMode(pg.ViewBox.RectMode if box_zoom else pg.ViewBox.PanMode)
         self.menu_handler: Callable[[QPointF], None] | None = None
+        self.y_zoomed = False        # the user chose this plot's y range: keep it until Fit
         self._x_wheel = x_wheel
 
     def wheelEvent(self, ev, axis=None) -> None:
         # In a plot the wheel zooms x only; over the y axis (axis=1) it zooms y.
         if axis is None and self._x_wheel:
             axis = 0
+        self.y_zoomed |= axis != 0
         super().wheelEvent(ev, axis=axis)
+
+    def mouseDragEvent(self, ev, axis=None) -> None:
+        # a box, a right-button zoom or a drag on the y axis chooses y too
+        self.y_zoomed |= axis != 0 and (self.state["mouseMode"] == pg.ViewBox.RectMode
+                                        or ev.button() != pg.QtCore.Qt.MouseButton.LeftButton
+                                        or axis == 1)
+        super().mouseDragEvent(ev, axis=axis)
 
     def mouseClickEvent(self, ev) -> None:
         if ev.double() and ev.button() == pg.QtCore.Qt.MouseButton.LeftButton:

@@ -54,10 +54,14 @@ class GroupLegend:
         self.head.setContentsMargins(AXIS_WIDTH, 0, 0, 0)
         self.head.setSpacing(0)
         self._title = pg.LabelItem(color=TEXT, size="9pt", justify="left")
+        self._unit = pg.LabelItem(color=TEXT, size="9pt", justify="left")
         self._legend = _Legend(labelTextColor=TEXT, frame=False, horSpacing=ENTRY_GAP // 2)
-        self.head.addItem(self._title, row=0, col=0)
-        self.head.addItem(self._legend, row=1, col=0)
+        self.head.addItem(self._title, row=0, col=0, colspan=2)
+        self.head.addItem(self._unit, row=1, col=0)
+        self.head.addItem(self._legend, row=1, col=1)
         self.head.layout.setAlignment(self._legend, Qt.AlignmentFlag.AlignLeft)
+        self.head.layout.setAlignment(self._unit, Qt.AlignmentFlag.AlignTop)
+        self._names: list[str] = []
         self._legend.sigSampleClicked.connect(self._on_clicked)
         self._on_toggle = on_toggle
         self._signature: tuple = ()
@@ -74,24 +78,34 @@ class GroupLegend:
         self._title.setVisible(bool(text))
         self._fit_height()
 
+    def set_unit(self, text: str) -> None:
+        """A short text left of the entries (the speeds' unit, so entries can read "40")."""
+        if text != self._unit.text:
+            self._unit.setText(text)
+            self._unit.setVisible(bool(text))
+            self._unit.setMaximumWidth(self._unit.minimumWidth() if text else 0)
+            self.fit_width(self._width)
+
     def title(self) -> str:
         return self._title.text if self._title.isVisible() else ""
 
-    def set_entries(self, entries: list[tuple[str, QColor, float]], keys: list[LegendKey],
+    def set_entries(self, entries: list[tuple[str, str, QColor, float]], keys: list[LegendKey],
                     hidden: set[str]) -> None:
-        """Curve entries (label, colour, pen width) then keys; rebuilt only when they change."""
-        signature = (tuple((label, colour.rgba(), width) for label, colour, width in entries),
+        """Curve entries (label, text shown, colour, pen width) then keys; rebuilt only when
+        they change."""
+        signature = (tuple((label, text, colour.rgba(), width) for label, text, colour, width in entries),
                      tuple(keys))
         if signature == self._signature:
             return
         self._signature = signature
         self._legend.clear()
         self._labels.clear()
-        for label, colour, width in entries:
+        self._names = [label for label, *_ in entries] + [key.label for key in keys]
+        for label, text, colour, width in entries:
             sample = pg.PlotCurveItem(pen=pg.mkPen(colour, width=width))
             sample.setVisible(label not in hidden)
             self._labels[sample] = label
-            self._legend.addItem(sample, label)
+            self._legend.addItem(sample, text)
         for key in keys:
             if key.band:
                 sample = pg.BarGraphItem(x=[0], height=[1], width=1, brush=key.colour,
@@ -103,7 +117,8 @@ class GroupLegend:
         self.fit_width(self._width)
 
     def names(self) -> list[str]:
-        return [label.text for _, label in self._legend.items]
+        """The entries' labels (the curves' full labels, then the keys)."""
+        return list(self._names)
 
     def columns(self) -> int:
         return self._columns
@@ -115,9 +130,13 @@ class GroupLegend:
         if not items:
             self._fit_height()
             return
-        entry = SAMPLE_WIDTH + ENTRY_GAP + max(label.minimumWidth() for _, label in items)
-        room = max(width - AXIS_WIDTH - 8.0, entry)
-        columns = max(1, min(len(items), int(room // entry)))
+        widths = [SAMPLE_WIDTH + ENTRY_GAP + label.minimumWidth() for _, label in items]
+        unit = self._unit.minimumWidth() + ENTRY_GAP if self._unit.isVisible() else 0.0
+        room = width - AXIS_WIDTH - 8.0 - unit
+        # the most columns whose widest entries (filled row by row) fit side by side
+        columns = next((c for c in range(len(items), 1, -1)
+                        if sum(max(widths[j::c]) for j in range(c)) <= room), 1)
+        entry = sum(max(widths[j::columns]) for j in range(columns)) / columns
         if columns != self._columns:
             self._columns = columns
             # setColumnCount only re-lays out on a change of count: force it after a rebuild

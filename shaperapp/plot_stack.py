@@ -23,14 +23,14 @@ from typing import Protocol
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, QTimer, Signal
-from PySide6.QtGui import QAction, QColor, QPainter
+from PySide6.QtGui import QAction, QColor, QPainter, QTextDocumentFragment
 from PySide6.QtWidgets import (QGraphicsView, QHBoxLayout, QLabel, QMenu, QSizePolicy,
                                QToolButton, QVBoxLayout, QWidget)
 
 from .image_export import export_scene, render_scene
 from .model import DesignModel
 from .plot_axes import cache_axes, styled_plot_item
-from .plot_curves import Band, Curve, PlotSlots, finite_range
+from .plot_curves import LEGEND_WIDTH, Band, Curve, PlotSlots, finite_range
 from .plot_legend import GroupLegend, LegendKey
 from .style import TEXT, fmt
 
@@ -57,9 +57,15 @@ class StackSource(Protocol):
     def bands(self) -> list[Band]: ...                        # shaded x spans, all plots
     def legend_keys(self) -> dict[str, list[LegendKey]]: ...  # per group, after the curves
     def group_titles(self) -> dict[str, str]: ...             # per group, over its legend
+    def legend_units(self) -> dict[str, str]: ...             # per group, left of the entries
     def x_axis(self) -> tuple[str, float, float, bool]: ...   # title, range, degree ticks
     def x_text(self, x: float) -> str: ...                    # "φ = 12.0°" for the read-out
     def cursor_x(self, index: int) -> float | dict[str, float]: ...   # per curve label
+
+
+def _nbsp(text: str) -> str:
+    """Spaces that never break: the read-out wraps between entries, not inside one."""
+    return text.replace(" ", "&nbsp;").replace("/", "/&#8288;")    # no break after "r/"
 
 
 class PlotStack(QWidget):
@@ -96,8 +102,6 @@ class PlotStack(QWidget):
                 plot.item.setXLink(master)
             plot.item.vb.sigFitRequested.connect(self.fit)
             plot.item.vb.menu_handler = self._show_menu
-            plot.item.vb.sigRangeChangedManually.connect(
-                lambda mask, p=plot: setattr(p, "y_user", p.y_user or bool(mask[1])))
         master.vb.sigXRangeChanged.connect(self._fit_y)
         cache_axes([p.item for p in self._plots.values()], True)
 
@@ -197,17 +201,19 @@ class PlotStack(QWidget):
         bands, first = source.bands(), self._series[0].key
         for key, plot in self._plots.items():
             plot.set_bands(bands, labelled=key == first)
-        keys, titles = source.legend_keys(), source.group_titles()
+        keys, titles, units = source.legend_keys(), source.group_titles(), source.legend_units()
         for group, legend in self._legends.items():
-            entries: dict[str, tuple[str, QColor, float]] = {}
+            entries: dict[str, tuple[str, str, QColor, float]] = {}
             for plot in self._plots.values():
                 if plot.series.group == group:
                     for curve in plot.curves:
                         if curve.legend and curve.label not in entries:
-                            entries[curve.label] = (curve.label, curve.colour, curve.width)
+                            entries[curve.label] = (curve.label, curve.short or curve.label,
+                                                    curve.colour, max(curve.width, LEGEND_WIDTH))
             self._hidden &= set(entries) | {c.label for p in self._plots.values() for c in p.curves}
             legend.set_entries(list(entries.values()), keys.get(group, []), self._hidden)
             legend.set_title(titles.get(group, ""))
+            legend.set_unit(units.get(group, ""))
         x_title, lo, hi, degrees = source.x_axis()
         if (x_title, degrees) != self._x_axis:      # relabelling re-lays out every axis
             self._x_axis = (x_title, degrees)
@@ -225,7 +231,7 @@ class PlotStack(QWidget):
     def fit(self) -> None:
         """Whole cycle in x, every plot's curves in y (drops the user's zoom)."""
         for plot in self._plots.values():
-            plot.y_user = False
+            plot.item.vb.y_zoomed = False
         master = self._plots[self._series[0].key].item
         master.setXRange(*self._x_range, padding=0.0)
         self._fit_y()
@@ -236,7 +242,7 @@ class PlotStack(QWidget):
         re-range (and repaint) on every cursor move."""
         x0, x1 = self._plots[self._series[0].key].item.vb.viewRange()[0]
         for key, plot in self._plots.items():
-            if not self._shown[key] or plot.y_user:
+            if not self._shown[key] or plot.item.vb.y_zoomed:
                 continue
             lo, hi = finite_range(plot.visible_values(x0, x1))
             pad = Y_PADDING * (hi - lo)
@@ -352,14 +358,14 @@ class PlotStack(QWidget):
             return
         if self._hover is not None:
             key, x = self._hover
-            parts = [f"<b>{self._plots[key].series.name()}</b>", self._source.x_text(x)]
+            parts = [f"<b>{self._plots[key].series.name()}</b>", _nbsp(self._source.x_text(x))]
             values = self._plots[key].values_at(x)
         else:
             key = self._readout_key
             xs = self._source.cursor_x(self._model.angle_index)
             x = xs if isinstance(xs, float) else next(iter(xs.values()), 0.0)
             parts = [f"<b>{self._plots[key].series.name()}</b>",
-                     self.tr("cursor {0}").format(self._source.x_text(x))]
+                     _nbsp(self.tr("cursor {0}").format(self._source.x_text(x)))]
             values = self._plots[key].values_at(xs)
         title = self._legends[self._plots[key].series.group].title()
         if title:
@@ -367,7 +373,8 @@ class PlotStack(QWidget):
         unit = self._plots[key].series.unit
         for curve, value in values:
             text = "—" if value is None else f"{fmt(value, '.4g')} {unit}"
-            parts.append(f"<span style='color:{curve.colour.name()}'>{curve.label}:</span> {text}")
+            parts.append(f"<span style='color:{curve.colour.name()}'>{_nbsp(curve.label)}:</span>"
+                         f"&nbsp;{_nbsp(text)}")
         self._readout.setText("&nbsp;&nbsp; ".join(parts))
 
     # ---- read back and export -----------------------------------------
@@ -381,6 +388,10 @@ class PlotStack(QWidget):
                 plot.move_cursor(xs)
             self._cursor_stale = False
 
+    def is_current(self) -> bool:
+        """Whether everything drawn matches the model (False while hidden changes wait)."""
+        return not self._stale and not self._cursor_stale
+
     def plot(self, key: str) -> PlotSlots:
         self.ensure_current()
         return self._plots[key]
@@ -390,7 +401,9 @@ class PlotStack(QWidget):
         return self._legends[group]
 
     def readout_text(self) -> str:
-        return self._readout.text()
+        """The read-out as plain text (spaces for non-breaking ones, no word joiners)."""
+        plain = QTextDocumentFragment.fromHtml(self._readout.text()).toPlainText()
+        return plain.replace("\u00a0", " ").replace("\u2060", "")
 
     def export_image(self, path: str) -> None:
         """Write the plots to ``path``: SVG for ``.svg``, else a raster image (PNG …) at

@@ -133,7 +133,7 @@ class PlotsWidget(QWidget):
         return self._stack.plot(plot_name).dots()
 
     def readout_text(self) -> str:
-        """The mouse read-out (rich text)."""
+        """The mouse read-out (plain text)."""
         return self._stack.readout_text()
 
     def plot_item(self, plot_name: str) -> pg.PlotItem:
@@ -172,14 +172,16 @@ class PlotsWidget(QWidget):
         motion = self._model.motion
         values = motion_values(self._model, name)
         labels = [self._speed_name(float(r)) for r in motion.rpm]
+        shorts = [f"{float(r):g}" for r in motion.rpm]        # under the legend's "r/min"
         if self._mode == ANGLE:
             x = np.degrees(motion.crank_angle)
             shared = name in SHARED_PLOTS
-            return [Curve(x, row, label, SHARED if shared else speed_colour(i), legend=not shared)
-                    for i, (row, label) in enumerate(zip(values, labels))]
+            return [Curve(x, row, label, SHARED if shared else speed_colour(i), legend=not shared,
+                          short=short)
+                    for i, (row, label, short) in enumerate(zip(values, labels, shorts))]
         back = ~self._in_work(np.degrees(motion.crank_angle))
-        return [Curve(motion.time[i], row, label, speed_colour(i), dashed=back)
-                for i, (row, label) in enumerate(zip(values, labels))]
+        return [Curve(motion.time[i], row, label, speed_colour(i), dashed=back, short=short)
+                for i, (row, label, short) in enumerate(zip(values, labels, shorts))]
 
     def _in_work(self, degrees: np.ndarray) -> np.ndarray:
         """Grid points on the working stroke (a limit on the grid counts as working)."""
@@ -205,6 +207,9 @@ class PlotsWidget(QWidget):
 
     def group_titles(self) -> dict[str, str]:
         return {}
+
+    def legend_units(self) -> dict[str, str]:
+        return {"main": self.tr("r/min:")}
 
     def x_axis(self) -> tuple[str, float, float, bool]:
         if self._mode == ANGLE:

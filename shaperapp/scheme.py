@@ -138,8 +138,8 @@ class SchemeWidget(QWidget):
         return self._forces.labels()
 
     def force_label_boxes(self) -> dict[str, Box]:
-        """Where the magnitude labels are drawn, (left, right, bottom, top) in mm."""
-        return self._forces.label_boxes()
+        """Where the magnitude labels are drawn on screen, (left, right, bottom, top) in mm."""
+        return {name: self._screen_box(tag) for name, tag in self._forces.tags().items()}
 
     def force_caption(self) -> str:
         """The force layer's caption (speed and length scale); empty while hidden."""
@@ -174,8 +174,18 @@ class SchemeWidget(QWidget):
         return self._dimensions.labels()
 
     def dimension_label_boxes(self) -> dict[str, Box]:
-        """Where the dimension labels are, (left, right, bottom, top) in mm, by name ("L1" …)."""
-        return self._dimensions.label_boxes()
+        """Where the dimension labels are drawn on screen, (left, right, bottom, top) in mm,
+        by name ("L1" …)."""
+        return {name: self._screen_box(item) for name, item in self._dimensions.texts().items()}
+
+    def _screen_box(self, item) -> Box:
+        """The item's box as the viewport shows it, back in mm: what a user sees, whatever
+        transform tricks the item uses to stay upright and unscaled."""
+        view = self._plot
+        device = item.deviceTransform(view.viewportTransform()).mapRect(item.boundingRect())
+        scene = view.viewportTransform().inverted()[0].mapRect(device)
+        r = self._view.mapSceneToView(scene).boundingRect()
+        return r.left(), r.right(), r.top(), r.bottom()
 
     def tool_path(self) -> tuple[np.ndarray, np.ndarray]:
         """Vertices of the travelled part of the tool-tip trace as drawn now, mm."""

@@ -130,10 +130,10 @@ class DimensionLayer(QObject):
     def labels(self) -> list[str]:
         return [item.toPlainText() for item in self._texts]
 
-    def label_boxes(self) -> dict[str, Box]:
-        """Where each label is drawn now, mm, keyed by NAMES."""
-        return {name: text_box(item) for name, item in zip(NAMES, self._texts)}
+    def texts(self) -> dict[str, pg.TextItem]:
+        """The label items by dimension name (NAMES)."""
+        return dict(zip(NAMES, self._texts))
 
     def obstacles(self) -> list[Box]:
         """The labels' boxes while shown: force labels keep off them."""
-        return list(self.label_boxes().values()) if self._visible else []
+        return [text_box(item) for item in self._texts] if self._visible else []

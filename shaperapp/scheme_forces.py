@@ -296,15 +296,9 @@ class ForceLayer(QObject):
     def labels(self) -> dict[str, str]:
         return {name: tag.text() for name, tag in zip(FORCE_NAMES, self._tags) if tag.isVisible()}
 
-    def label_boxes(self) -> dict[str, Box]:
-        """Where each shown magnitude label is, mm (from its scene box)."""
-        out = {}
-        for name, tag in zip(FORCE_NAMES, self._tags):
-            if tag.isVisible():
-                parent = tag.parentItem()
-                r = parent.mapRectFromScene(tag.sceneBoundingRect())
-                out[name] = (r.left(), r.right(), r.top(), r.bottom())
-        return out
+    def tags(self) -> dict[str, Tag]:
+        """The shown magnitude labels by force name."""
+        return {name: tag for name, tag in zip(FORCE_NAMES, self._tags) if tag.isVisible()}
 
     def caption(self) -> str:
         return self._caption.text() if self._caption.isVisible() else ""
