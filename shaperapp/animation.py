@@ -254,7 +254,7 @@ class AnimationBar(QWidget):
         shown = min(len(self._speed_rows), MAX_ROWS) + 1
         self._speeds_area.setFixedHeight(shown * row + 2)
         bar = self._speeds_area.verticalScrollBar().sizeHint().width()
-        self._speeds_area.setFixedWidth(inner.sizeHint().width() + bar + 2)
+        self._speeds_area.setMinimumWidth(inner.sizeHint().width() + bar + 4)
 
     def _value_label(self) -> QLabel:
         """A right-aligned number cell wide enough that the layout does not jump."""
@@ -291,6 +291,8 @@ class AnimationBar(QWidget):
         for key in ("crank", "lever", "ram_x"):
             self._values[key].setToolTip(self._heads[key].text())
         self._retranslate_rows()
+        if hasattr(self, "_speeds_area"):
+            self._fit_speeds_area()        # headings change width with the language
 
     def _retranslate_play(self) -> None:
         playing = self.play_action.isChecked()

@@ -29,8 +29,10 @@ class ForcesPanel(QWidget):
         scroll.setWidgetResizable(True)
         scroll.setFrameShape(QFrame.Shape.NoFrame)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        scroll.setMinimumWidth(120)
-        # A splitter: the user can narrow or fold away the form to give the plots room.
+        # Never narrower than its fields (nothing clipped); the splitter still lets the
+        # user fold the form away completely to give the plots room.
+        scroll.setMinimumWidth(self.loads.minimumSizeHint().width()
+                               + scroll.verticalScrollBar().sizeHint().width())
         self.splitter = QSplitter(Qt.Orientation.Horizontal)
         self.splitter.addWidget(scroll)
         self.splitter.addWidget(self.plots)
