@@ -26,15 +26,29 @@ def window(qtbot, tmp_path):
     win.close()
 
 
-def test_input_to_all_views_updated(benchmark, window):
+EDIT_BUDGET_S = 0.030       # edit → every visible view updated (issue 8, item 8)
+FRAME_BUDGET_S = 0.008      # one animation frame of the whole window
+
+
+@pytest.mark.parametrize("tab", ["kinematics", "forces"])
+def test_input_to_all_views_updated(benchmark, window, tab):
+    """An edit redraws every visible view (scheme, metrics, animation bar, the front tab);
+    the tab behind waits until it is shown."""
+    window.tabs.setCurrentIndex(0 if tab == "kinematics" else 1)
+    QApplication.processEvents()
     values = iter([1.4, 1.5] * 10_000)
 
     def change():
         window.model.set_spec(time_ratio=next(values))
         QApplication.processEvents()  # every view repaints
 
-    benchmark(change)
+    # Fixed rounds: calibration ran this ~15 000 times (10 minutes) on a loaded machine.
+    benchmark.pedantic(change, rounds=80, iterations=1, warmup_rounds=5)
     assert window.model.error is None
+    front = window.plots if tab == "kinematics" else window.forces.plots
+    assert front.stack().is_current()
+    # EDIT_BUDGET_S is not asserted: measured 37-50 ms wall (30-35 ms CPU) on the shared
+    # 2-core machine, see the README's performance table.
 
 
 def test_animation_frame_whole_window(benchmark, window):
@@ -47,6 +61,8 @@ def test_animation_frame_whole_window(benchmark, window):
         QApplication.processEvents()
 
     benchmark(frame)
+    # FRAME_BUDGET_S is met on a quiet machine (7.4 ms) but not under other helpers' load
+    # (up to 10 ms): reported in the README rather than asserted.
 
 
 def _start():

@@ -7,6 +7,7 @@ previous version, replacing what must not be replaced or leaving litter.
 from __future__ import annotations
 
 import errno
+import itertools
 import os
 import re
 import secrets
@@ -18,9 +19,10 @@ from .errors import WriteError
 _TEMP_SUFFIX = ".tmp"
 
 
-def atomic_write(path: str | os.PathLike, text: str | Iterable[str]) -> None:
-    """Write ``text`` (a string or an iterable of pieces) so that ``path`` ends up
-    either the old file or the whole new one, never a mixture.
+def atomic_write(path: str | os.PathLike, text: str | bytes | Iterable[str] | Iterable[bytes]) -> None:
+    """Write ``text`` (a string, bytes such as an encoded image, or an iterable of
+    string pieces) so that ``path`` ends up either the old file or the whole new
+    one, never a mixture.
 
     - A regular file (or a new one) is written to a temporary sibling
       ``.NAME.<pid>-<8 hex>.tmp``, flushed and fsynced, renamed over the
@@ -37,7 +39,7 @@ def atomic_write(path: str | os.PathLike, text: str | Iterable[str]) -> None:
     Raises :class:`~core.errors.WriteError` (an OSError) naming ``path``, with a
     plain reason such as a full disk.
     """
-    pieces = [text] if isinstance(text, str) else text
+    pieces = [text] if isinstance(text, (str, bytes)) else text
     name = os.fspath(path)
     if not name:
         raise WriteError(path, OSError(None, "no file name was given"))
@@ -58,13 +60,26 @@ def atomic_write(path: str | os.PathLike, text: str | Iterable[str]) -> None:
         raise WriteError(path, exc) from None
 
 
-def _write_in_place(path: str | os.PathLike, pieces: Iterable[str]) -> None:
-    with open(path, "w", encoding="utf-8", newline="") as handle:
+def _open_pieces(fd_or_path, pieces: Iterable[str] | Iterable[bytes], mode: str):
+    """Open for writing in text (UTF-8) or binary mode, whichever the first piece needs;
+    returns the file and the pieces (the first one put back)."""
+    iterator = iter(pieces)
+    first = next(iterator, "")
+    binary = isinstance(first, bytes)
+    opener = os.fdopen if isinstance(fd_or_path, int) else open
+    handle = (opener(fd_or_path, mode + "b") if binary
+              else opener(fd_or_path, mode, encoding="utf-8", newline=""))
+    return handle, itertools.chain([first], iterator)
+
+
+def _write_in_place(path: str | os.PathLike, pieces: Iterable[str] | Iterable[bytes]) -> None:
+    handle, pieces = _open_pieces(path, pieces, "w")
+    with handle:
         for piece in pieces:
             handle.write(piece)
 
 
-def _write_and_replace(target: str, pieces: Iterable[str], old: os.stat_result | None) -> None:
+def _write_and_replace(target: str, pieces: Iterable[str] | Iterable[bytes], old: os.stat_result | None) -> None:
     directory, name = os.path.split(target)
     directory = directory or "."
     remove_stale_temps(target)
@@ -75,7 +90,8 @@ def _write_and_replace(target: str, pieces: Iterable[str], old: os.stat_result |
     try:
         if old is not None:
             _copy_owner_and_mode(fd, old)
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
+        handle, pieces = _open_pieces(fd, pieces, "w")
+        with handle:
             for piece in pieces:
                 handle.write(piece)
             handle.flush()

@@ -578,6 +578,29 @@
     </message>
 </context>
 <context>
+    <name>DimensionLayer</name>
+    <message>
+        <source>L2 = {0}</source>
+        <translation>L2 = {0}</translation>
+    </message>
+    <message>
+        <source>h = {0}</source>
+        <translation>h = {0}</translation>
+    </message>
+    <message>
+        <source>L3 = {0}</source>
+        <translation>L3 = {0}</translation>
+    </message>
+    <message>
+        <source>L1 = {0}</source>
+        <translation>L1 = {0}</translation>
+    </message>
+    <message>
+        <source>H = {0}</source>
+        <translation>H = {0}</translation>
+    </message>
+</context>
+<context>
     <name>Document</name>
     <message>
         <source>Could not open the design: %1</source>
@@ -641,114 +664,65 @@
     </message>
 </context>
 <context>
-    <name>ForcesPanel</name>
+    <name>ForceLayer</name>
+    <message>
+        <source>{0:.1f} kN</source>
+        <translation>{0:.1f} kN</translation>
+    </message>
+    <message>
+        <source>{0:.0f} N</source>
+        <translation>{0:.0f} N</translation>
+    </message>
+    <message>
+        <source>Forces at {0} r/min: all zero</source>
+        <translation>{0} r/min 时各力均为零</translation>
+    </message>
+    <message>
+        <source>{0:g} kN</source>
+        <translation>{0:g} kN</translation>
+    </message>
+    <message>
+        <source>{0:g} N</source>
+        <translation>{0:g} N</translation>
+    </message>
+    <message>
+        <source>Forces at {0} r/min, scale: {1:g} mm ≙ {2}</source>
+        <translation>{0} r/min 时的受力，比例：{1:g} mm ≙ {2}</translation>
+    </message>
+</context>
+<context>
+    <name>ForcePlots</name>
     <message>
         <source>Shaper forces and torque</source>
         <translation>牛头刨床受力与力矩</translation>
     </message>
     <message>
-        <source>Mass m3</source>
-        <translation>质量 m3</translation>
+        <source>{0} r/min</source>
+        <translation>{0} r/min</translation>
     </message>
     <message>
-        <source>Mass of the slotted lever O4B, kg</source>
-        <translation>导杆 O4B 的质量，kg</translation>
+        <source>cutting</source>
+        <translation>切削区</translation>
     </message>
     <message>
-        <source>Centre of mass c</source>
-        <translation>质心位置 c</translation>
+        <source>mean torque</source>
+        <translation>平均力矩</translation>
     </message>
     <message>
-        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
-        <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
+        <source>Joint forces at {0}</source>
+        <translation>{0} 时的运动副反力</translation>
     </message>
     <message>
-        <source>Inertia J3</source>
-        <translation>转动惯量 J3</translation>
+        <source>r/min:</source>
+        <translation>r/min：</translation>
     </message>
     <message>
-        <source>Moment of inertia of the lever about its centre of mass, kg·m²</source>
-        <translation>导杆绕其质心的转动惯量，kg·m²</translation>
+        <source>Crank angle φ (°)</source>
+        <translation>曲柄转角 φ (°)</translation>
     </message>
     <message>
-        <source>Mass m5</source>
-        <translation>质量 m5</translation>
-    </message>
-    <message>
-        <source>Mass of the ram with the tool, kg</source>
-        <translation>滑枕（含刨刀）的质量，kg</translation>
-    </message>
-    <message>
-        <source>Centre of mass dx</source>
-        <translation>质心偏移 dx</translation>
-    </message>
-    <message>
-        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
-        <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
-    </message>
-    <message>
-        <source>Centre of mass dy</source>
-        <translation>质心偏移 dy</translation>
-    </message>
-    <message>
-        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
-        <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
-    </message>
-    <message>
-        <source>Rod mass m4</source>
-        <translation>连杆质量 m4</translation>
-    </message>
-    <message>
-        <source>Mass of the connecting rod BC, a uniform bar, kg (rod variant only)</source>
-        <translation>连杆 BC 的质量（按均质杆计），kg（仅连杆方案）</translation>
-    </message>
-    <message>
-        <source>Block mass</source>
-        <translation>滑块质量</translation>
-    </message>
-    <message>
-        <source>Mass of the sliding block at the crank pin A, kg</source>
-        <translation>曲柄销 A 处滑块的质量，kg</translation>
-    </message>
-    <message>
-        <source>Cutting force P</source>
-        <translation>切削阻力 P</translation>
-    </message>
-    <message>
-        <source>Cutting resistance on the tool, against the cut, N</source>
-        <translation>作用于刨刀、与切削方向相反的切削阻力，N</translation>
-    </message>
-    <message>
-        <source>Tool below guide yP</source>
-        <translation>刀尖距导路 yP</translation>
-    </message>
-    <message>
-        <source>Height of the tool point below the ram guide line, mm (negative = above)</source>
-        <translation>刀尖在滑枕导路线以下的距离，mm（负值表示在其上方）</translation>
-    </message>
-    <message>
-        <source>Idle margin</source>
-        <translation>空刀距离</translation>
-    </message>
-    <message>
-        <source>Uncut run-in and run-out at each end of the working stroke, % of the stroke H (0 to under 50)</source>
-        <translation>工作行程两端的空刀距离，占行程 H 的百分比（0 至小于 50）</translation>
-    </message>
-    <message>
-        <source>Gravity</source>
-        <translation>重力</translation>
-    </message>
-    <message>
-        <source>Include the weights of the links (g = 9.81 m/s²)</source>
-        <translation>计入各构件重力（g = 9.81 m/s²）</translation>
-    </message>
-    <message>
-        <source>Speed fluctuation δ</source>
-        <translation>速度波动系数 δ</translation>
-    </message>
-    <message>
-        <source>Coefficient of speed fluctuation (ωmax − ωmin)/ωmean the flywheel must hold, between 0 and 1; a fraction such as 1/30 is accepted</source>
-        <translation>飞轮须保证的速度波动系数 (ωmax − ωmin)/ωm，介于 0 与 1 之间；可输入分数，如 1/30</translation>
+        <source>φ = {0}°</source>
+        <translation>φ = {0}°</translation>
     </message>
     <message>
         <source>Crank driving torque</source>
@@ -779,60 +753,8 @@
         <translation>运动副反力 |F|</translation>
     </message>
     <message>
-        <source>O₂ crank bearing</source>
-        <translation>O₂ 曲柄轴承</translation>
-    </message>
-    <message>
-        <source>A block on lever</source>
-        <translation>A 滑块对导杆</translation>
-    </message>
-    <message>
-        <source>O₄ lever pivot</source>
-        <translation>O₄ 导杆支座</translation>
-    </message>
-    <message>
-        <source>B lever tip</source>
-        <translation>B 导杆端部</translation>
-    </message>
-    <message>
-        <source>C rod on ram</source>
-        <translation>C 连杆对滑枕</translation>
-    </message>
-    <message>
-        <source>Guide normal force</source>
-        <translation>导路法向反力</translation>
-    </message>
-    <message>
         <source>guide</source>
         <translation>导路</translation>
-    </message>
-    <message>
-        <source>{0} r/min</source>
-        <translation>{0} r/min</translation>
-    </message>
-    <message>
-        <source>Slotted lever</source>
-        <translation>导杆</translation>
-    </message>
-    <message>
-        <source>Ram and tool</source>
-        <translation>滑枕与刨刀</translation>
-    </message>
-    <message>
-        <source>Rod and block</source>
-        <translation>连杆与滑块</translation>
-    </message>
-    <message>
-        <source>Cutting</source>
-        <translation>切削</translation>
-    </message>
-    <message>
-        <source>Flywheel</source>
-        <translation>飞轮</translation>
-    </message>
-    <message>
-        <source>include weights</source>
-        <translation>计入重力</translation>
     </message>
     <message>
         <source>Joint forces at:</source>
@@ -842,41 +764,40 @@
         <source>Crank speed whose joint forces are plotted</source>
         <translation>绘制运动副反力所用的曲柄转速</translation>
     </message>
+</context>
+<context>
+    <name>ImageExport</name>
     <message>
-        <source>Values under the mouse; click a plot to move the mechanism to that crank position</source>
-        <translation>鼠标处的数值；单击曲线使机构转到该曲柄位置</translation>
+        <source>“.{0}” is not an image type this program writes; use .png or .svg</source>
+        <translation>本程序不能写出 “.{0}” 类型的图像；请使用 .png 或 .svg</translation>
     </message>
     <message>
-        <source>Point at a plot to read values; click to set the crank angle</source>
-        <translation>指向曲线读取数值；单击设置曲柄转角</translation>
+        <source>the name has no image type; end it in .png or .svg</source>
+        <translation>文件名没有图像类型；请以 .png 或 .svg 结尾</translation>
     </message>
     <message>
-        <source>Crank angle φ (°)</source>
-        <translation>曲柄转角 φ (°)</translation>
+        <source>Cannot export to {0}: {1}</source>
+        <translation>无法导出到 {0}：{1}</translation>
     </message>
     <message>
-        <source>cutting</source>
-        <translation>切削区</translation>
+        <source>the folder {0} does not exist</source>
+        <translation>文件夹 {0} 不存在</translation>
     </message>
     <message>
-        <source>L3/2 = {0}</source>
-        <translation>L3/2 = {0}</translation>
+        <source>the folder {0} is not writable</source>
+        <translation>文件夹 {0} 不可写</translation>
     </message>
     <message>
-        <source>mean torque</source>
-        <translation>平均力矩</translation>
+        <source>{0} is a folder</source>
+        <translation>{0} 是一个文件夹</translation>
     </message>
     <message>
-        <source>Joint forces at {0}</source>
-        <translation>{0} 时的运动副反力</translation>
+        <source>Qt could not encode the image as {0}</source>
+        <translation>Qt 无法将图像编码为 {0}</translation>
     </message>
     <message>
-        <source>The last valid results stay on screen.</source>
-        <translation>屏幕上保留最后一次有效结果。</translation>
-    </message>
-    <message>
-        <source>φ = {0}°</source>
-        <translation>φ = {0}°</translation>
+        <source>could not write {0}: {1}</source>
+        <translation>无法写入 {0}：{1}</translation>
     </message>
 </context>
 <context>
@@ -1158,6 +1079,145 @@
     <message>
         <source>Crank speed of the speed-dependent columns, r/min</source>
         <translation>与转速有关的各列所用的曲柄转速，r/min</translation>
+    </message>
+</context>
+<context>
+    <name>LoadsForm</name>
+    <message>
+        <source>L3/2 = {0}</source>
+        <translation>L3/2 = {0}</translation>
+    </message>
+    <message>
+        <source>Mass m3</source>
+        <translation>质量 m3</translation>
+    </message>
+    <message>
+        <source>Mass of the slotted lever O4B, kg</source>
+        <translation>导杆 O4B 的质量，kg</translation>
+    </message>
+    <message>
+        <source>Centre of mass c</source>
+        <translation>质心位置 c</translation>
+    </message>
+    <message>
+        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
+    </message>
+    <message>
+        <source>Inertia J3</source>
+        <translation>转动惯量 J3</translation>
+    </message>
+    <message>
+        <source>Moment of inertia of the lever about its centre of mass, kg·m²</source>
+        <translation>导杆绕其质心的转动惯量，kg·m²</translation>
+    </message>
+    <message>
+        <source>Mass m5</source>
+        <translation>质量 m5</translation>
+    </message>
+    <message>
+        <source>Mass of the ram with the tool, kg</source>
+        <translation>滑枕（含刨刀）的质量，kg</translation>
+    </message>
+    <message>
+        <source>Centre of mass dx</source>
+        <translation>质心偏移 dx</translation>
+    </message>
+    <message>
+        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
+    </message>
+    <message>
+        <source>Centre of mass dy</source>
+        <translation>质心偏移 dy</translation>
+    </message>
+    <message>
+        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
+        <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
+    </message>
+    <message>
+        <source>Rod mass m4</source>
+        <translation>连杆质量 m4</translation>
+    </message>
+    <message>
+        <source>Mass of the connecting rod BC, a uniform bar, kg (rod variant only)</source>
+        <translation>连杆 BC 的质量（按均质杆计），kg（仅连杆方案）</translation>
+    </message>
+    <message>
+        <source>Block mass</source>
+        <translation>滑块质量</translation>
+    </message>
+    <message>
+        <source>Mass of the sliding block at the crank pin A, kg</source>
+        <translation>曲柄销 A 处滑块的质量，kg</translation>
+    </message>
+    <message>
+        <source>Cutting force P</source>
+        <translation>切削阻力 P</translation>
+    </message>
+    <message>
+        <source>Cutting resistance on the tool, against the cut, N</source>
+        <translation>作用于刨刀、与切削方向相反的切削阻力，N</translation>
+    </message>
+    <message>
+        <source>Tool below guide yP</source>
+        <translation>刀尖距导路 yP</translation>
+    </message>
+    <message>
+        <source>Height of the tool point below the ram guide line, mm (negative = above)</source>
+        <translation>刀尖在滑枕导路线以下的距离，mm（负值表示在其上方）</translation>
+    </message>
+    <message>
+        <source>Idle margin</source>
+        <translation>空刀距离</translation>
+    </message>
+    <message>
+        <source>Uncut run-in and run-out at each end of the working stroke, % of the stroke H (0 to under 50)</source>
+        <translation>工作行程两端的空刀距离，占行程 H 的百分比（0 至小于 50）</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>重力</translation>
+    </message>
+    <message>
+        <source>Include the weights of the links (g = 9.81 m/s²)</source>
+        <translation>计入各构件重力（g = 9.81 m/s²）</translation>
+    </message>
+    <message>
+        <source>Speed fluctuation δ</source>
+        <translation>速度波动系数 δ</translation>
+    </message>
+    <message>
+        <source>Coefficient of speed fluctuation (ωmax − ωmin)/ωmean the flywheel must hold, between 0 and 1; a fraction such as 1/30 is accepted</source>
+        <translation>飞轮须保证的速度波动系数 (ωmax − ωmin)/ωm，介于 0 与 1 之间；可输入分数，如 1/30</translation>
+    </message>
+    <message>
+        <source>Slotted lever</source>
+        <translation>导杆</translation>
+    </message>
+    <message>
+        <source>Ram and tool</source>
+        <translation>滑枕与刨刀</translation>
+    </message>
+    <message>
+        <source>Rod and block</source>
+        <translation>连杆与滑块</translation>
+    </message>
+    <message>
+        <source>Cutting</source>
+        <translation>切削</translation>
+    </message>
+    <message>
+        <source>Flywheel</source>
+        <translation>飞轮</translation>
+    </message>
+    <message>
+        <source>include weights</source>
+        <translation>计入重力</translation>
+    </message>
+    <message>
+        <source>The last valid results stay on screen.</source>
+        <translation>屏幕上保留最后一次有效结果。</translation>
     </message>
 </context>
 <context>
@@ -1595,10 +1655,45 @@
     </message>
 </context>
 <context>
+    <name>PlotStack</name>
+    <message>
+        <source>Fit all</source>
+        <translation>全部显示</translation>
+    </message>
+    <message>
+        <source>Show the whole cycle again (or double-click a plot)</source>
+        <translation>重新显示整个周期（或双击曲线图）</translation>
+    </message>
+    <message>
+        <source>Drag zooms to a box</source>
+        <translation>拖动框选放大</translation>
+    </message>
+    <message>
+        <source>Left drag: zoom to a box; off: pan</source>
+        <translation>左键拖动：框选放大；关闭时：平移</translation>
+    </message>
+    <message>
+        <source>Wheel: zoom x; wheel over an axis: zoom y; drag: zoom to a box; double-click: fit; click: set the crank angle; right click: menu</source>
+        <translation>滚轮：缩放 x；在坐标轴上滚动：缩放 y；拖动：框选放大；双击：全部显示；单击：设置曲柄转角；右键：菜单</translation>
+    </message>
+    <message>
+        <source>Values under the mouse, or at the cursor while the crank moves; click a plot to move the mechanism to that crank position</source>
+        <translation>鼠标处的数值，曲柄转动时为游标处的数值；单击曲线图可将机构移到该曲柄位置</translation>
+    </message>
+    <message>
+        <source>cursor {0}</source>
+        <translation>游标 {0}</translation>
+    </message>
+</context>
+<context>
     <name>PlotsWidget</name>
     <message>
         <source>Shaper motion diagrams</source>
         <translation>牛头刨床运动线图</translation>
+    </message>
+    <message>
+        <source>r/min:</source>
+        <translation>r/min：</translation>
     </message>
     <message>
         <source>X axis:</source>
@@ -1625,10 +1720,6 @@
         <translation>显示导杆的角位移、角速度或角加速度</translation>
     </message>
     <message>
-        <source>Values under the mouse; click a plot to move the mechanism to that crank position</source>
-        <translation>鼠标处的数值；单击曲线使机构转到该曲柄位置</translation>
-    </message>
-    <message>
         <source>Crank angle φ (°)</source>
         <translation>曲柄转角 φ (°)</translation>
     </message>
@@ -1643,10 +1734,6 @@
     <message>
         <source>return stroke</source>
         <translation>回程</translation>
-    </message>
-    <message>
-        <source>Point at a plot to read values; click to set the crank angle</source>
-        <translation>指向曲线读取数值；单击设置曲柄转角</translation>
     </message>
     <message>
         <source>Ram displacement</source>
@@ -2209,10 +2296,6 @@
 <context>
     <name>SchemeWidget</name>
     <message>
-        <source>Cannot export to '{0}': use .png or .svg</source>
-        <translation>无法导出到“{0}”：请使用 .png 或 .svg</translation>
-    </message>
-    <message>
         <source>Shaper mechanism</source>
         <translation>牛头刨床机构</translation>
     </message>
@@ -2241,52 +2324,8 @@
         <translation>以统一比例用箭头显示第一个曲柄转速下的运动副反力</translation>
     </message>
     <message>
-        <source>{0:.1f} kN</source>
-        <translation>{0:.1f} kN</translation>
-    </message>
-    <message>
-        <source>{0:.0f} N</source>
-        <translation>{0:.0f} N</translation>
-    </message>
-    <message>
-        <source>Wheel: zoom, drag: pan, right click: more</source>
-        <translation>滚轮：缩放，拖动：平移，右键：更多</translation>
-    </message>
-    <message>
-        <source>L2 = {0:.1f}</source>
-        <translation>L2 = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>h = {0:.1f}</source>
-        <translation>h = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>L3 = {0:.1f}</source>
-        <translation>L3 = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>L1 = {0:.1f}</source>
-        <translation>L1 = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>H = {0:.1f}</source>
-        <translation>H = {0:.1f}</translation>
-    </message>
-    <message>
-        <source>Forces at {0} r/min: all zero</source>
-        <translation>{0} r/min 时各力均为零</translation>
-    </message>
-    <message>
-        <source>{0:g} kN</source>
-        <translation>{0:g} kN</translation>
-    </message>
-    <message>
-        <source>{0:g} N</source>
-        <translation>{0:g} N</translation>
-    </message>
-    <message>
-        <source>Forces at {0} r/min, scale: {1:g} mm ≙ {2}</source>
-        <translation>{0} r/min 时的受力，比例：{1:g} mm ≙ {2}</translation>
+        <source>Wheel: zoom, drag: pan, double-click: fit, right click: menu</source>
+        <translation>滚轮：缩放，拖动：平移，双击：全部显示，右键：菜单</translation>
     </message>
 </context>
 <context>

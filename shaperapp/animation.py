@@ -13,15 +13,16 @@ import math
 import numpy as np
 from PySide6.QtCore import QElapsedTimer, QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QAction
-from PySide6.QtWidgets import (QCheckBox, QComboBox, QGridLayout, QHBoxLayout, QLabel, QSlider,
-                               QStyle, QToolButton, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QFrame, QGridLayout, QHBoxLayout, QLabel,
+                               QScrollArea, QSlider, QStyle, QToolButton, QVBoxLayout, QWidget)
 
 from .model import DesignModel
-from .style import speed_colour
+from .style import fmt, speed_colour
 
 TICK_MS = 16                       # ~60 frames per second
 SPEED_FACTORS = (0.1, 0.25, 0.5, 1.0, 2.0)
 DEFAULT_FACTOR = 0.25
+MAX_ROWS = 4                       # speed rows shown in the read-out before it scrolls
 
 
 class AnimationBar(QWidget):
@@ -98,7 +99,17 @@ class AnimationBar(QWidget):
         readout.setContentsMargins(0, 0, 0, 0)
         readout.addLayout(self._positions)
         readout.addSpacing(24)
-        readout.addLayout(self._speeds)
+        # Many speeds scroll inside a few rows instead of pushing the mechanism off screen.
+        speeds = QWidget()
+        speeds.setLayout(self._speeds)
+        self._speeds_area = QScrollArea()
+        self._speeds_area.setWidget(speeds)
+        self._speeds_area.setWidgetResizable(True)
+        self._speeds_area.setFrameShape(QFrame.Shape.NoFrame)
+        self._speeds_area.setHorizontalScrollBarPolicy(Qt.ScrollBarAlwaysOff)
+        self._speeds_area.setAlignment(Qt.AlignLeft | Qt.AlignTop)
+        self._speeds.setContentsMargins(0, 0, 0, 0)
+        readout.addWidget(self._speeds_area)
         readout.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 2, 4, 2)
@@ -212,6 +223,7 @@ class AnimationBar(QWidget):
                 w.show()               # now, not on the next event-loop turn
             self._speed_rows.append(row)
         self._retranslate_rows()
+        self._fit_speeds_area()
         self._sync_phase()
         self._on_angle(self._model.angle_index)
 
@@ -224,13 +236,25 @@ class AnimationBar(QWidget):
         m = self._model.motion
         if index >= m.crank_angle.size:
             return
-        self._values["crank"].setText(f"{math.degrees(float(m.crank_angle[index])):.1f}")
-        self._values["lever"].setText(f"{math.degrees(float(m.lever_angle[index])):.2f}")
-        self._values["ram_x"].setText(f"{float(m.ram_x[index]):.1f}")
+        # fmt: a value at a limit position (±1e-17) reads 0.000, never -0.000
+        self._values["crank"].setText(fmt(math.degrees(float(m.crank_angle[index])), ".1f"))
+        self._values["lever"].setText(fmt(math.degrees(float(m.lever_angle[index])), ".2f"))
+        self._values["ram_x"].setText(fmt(float(m.ram_x[index]), ".1f"))
         for i, row in enumerate(self._speed_rows[: m.rpm.size]):
-            row[1].setText(f"{float(m.time[i, index]):.3f}")
-            row[2].setText(f"{float(m.ram_v[i, index]):.3f}")
-            row[3].setText(f"{float(m.ram_a[i, index]):.2f}")
+            row[1].setText(fmt(float(m.time[i, index]), ".3f"))
+            row[2].setText(fmt(float(m.ram_v[i, index]), ".3f"))
+            row[3].setText(fmt(float(m.ram_a[i, index]), ".2f"))
+
+    def _fit_speeds_area(self) -> None:
+        """As tall as the heading and all rows, at most MAX_ROWS rows; wide enough for them
+        and a scroll bar."""
+        inner = self._speeds_area.widget()
+        inner.adjustSize()
+        row = max(self._heads["time"].sizeHint().height(), 1)
+        shown = min(len(self._speed_rows), MAX_ROWS) + 1
+        self._speeds_area.setFixedHeight(shown * row + 2)
+        bar = self._speeds_area.verticalScrollBar().sizeHint().width()
+        self._speeds_area.setMinimumWidth(inner.sizeHint().width() + bar + 4)
 
     def _value_label(self) -> QLabel:
         """A right-aligned number cell wide enough that the layout does not jump."""
@@ -267,6 +291,8 @@ class AnimationBar(QWidget):
         for key in ("crank", "lever", "ram_x"):
             self._values[key].setToolTip(self._heads[key].text())
         self._retranslate_rows()
+        if hasattr(self, "_speeds_area"):
+            self._fit_speeds_area()        # headings change width with the language
 
     def _retranslate_play(self) -> None:
         playing = self.play_action.isChecked()

@@ -8,10 +8,9 @@ Everything shown is computed by core; this widget only draws and exports.
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QPoint, QRectF, QSize, Qt, Signal
+from PySide6.QtCore import QBuffer, QByteArray, QEvent, QIODevice, QPoint, QRectF, QSize, Qt, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QImage, QPainter
 from PySide6.QtSvg import QSvgGenerator
 from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QHBoxLayout, QLabel, QListWidget,
@@ -26,7 +25,8 @@ from core.library import file_stem, unique_name
 from .figure_labels import figure_label, figure_tip, format_figure
 from .messages import describe
 from .model import DesignModel
-from .plots import cache_axes, styled_plot_item
+from .image_export import image_type
+from .plot_axes import cache_axes, styled_plot_item
 
 # Okabe–Ito colours (distinguishable with colour-blindness) and six line styles
 COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
@@ -247,7 +247,9 @@ class CompareView(QWidget):
             atomic_write(path, table_csv(self.comparison))
 
     def export_image(self, path: str) -> None:
-        """Curves and the whole table as one picture: SVG for ``.svg``, else PNG (by suffix)."""
+        """Curves and the whole table as one picture: SVG for ``.svg``, else a raster type
+        by suffix (``image_export.image_type`` refuses anything else, naming the path)."""
+        kind = image_type(path)
         table = self.table
         table_size = QSize(table.verticalHeader().width() + table.horizontalHeader().length() + 4,
                            table.horizontalHeader().height() + table.verticalHeader().length() + 4)
@@ -255,9 +257,12 @@ class CompareView(QWidget):
         title_h = 28
         width = max(plots_size.width(), table_size.width())
         height = title_h + plots_size.height() + table_size.height()
-        if Path(path).suffix.lower() == ".svg":
+        data = QByteArray()
+        buffer = QBuffer(data)
+        buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+        if kind == "svg":
             device = QSvgGenerator()
-            device.setFileName(path)
+            device.setOutputDevice(buffer)
             device.setSize(QSize(width, height))
             device.setViewBox(QRectF(0, 0, width, height))
             device.setTitle(self.tr("Design comparison"))
@@ -285,10 +290,10 @@ class CompareView(QWidget):
             for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
                 bar(Qt.ScrollBarPolicy.ScrollBarAsNeeded)
             cache_axes(list(self._items.values()), True)
-        if isinstance(device, QImage) and not device.save(path):
+        if isinstance(device, QImage) and not device.save(buffer, kind.upper()):
             raise OSError(0, self.tr("the file could not be written"))
-        if not Path(path).exists():
-            raise OSError(0, self.tr("the file could not be written"))
+        buffer.close()
+        atomic_write(path, bytes(data))
 
     def title(self) -> str:
         """One line saying what is compared, for exported pictures."""

@@ -78,6 +78,9 @@ class _NumberField(QWidget):
         self.edit.setStyleSheet(ERROR_STYLE if on else "")
 
 
+NumberField = _NumberField   # the public name other input forms use (loads_form.py)
+
+
 class DesignForm(QWidget):
     """Inputs of the design: mode, L1/K/H or L1/L2/L3, variant, guide, rod, speeds."""
 

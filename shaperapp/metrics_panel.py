@@ -13,6 +13,7 @@ from PySide6.QtWidgets import (QAbstractItemView, QFormLayout, QGroupBox, QHeade
                                QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
 from .model import DesignModel
+from .style import fmt
 
 
 class MetricsPanel(QWidget):
@@ -126,19 +127,19 @@ class MetricsPanel(QWidget):
         mm = self.tr("%1 mm")
         deg = self.tr("%1°")
         values = {
-            "theta": deg.replace("%1", f"{math.degrees(design.theta):.3f}"),
-            "frame": mm.replace("%1", f"{design.frame:.2f}"),
-            "lever": mm.replace("%1", f"{design.lever:.2f}"),
-            "rod": mm.replace("%1", f"{design.rod:.2f}") if design.rod is not None else "—",
-            "guide": mm.replace("%1", f"{design.guide:.2f}"),
-            "h": mm.replace("%1", f"{design.guide_above_crank:.2f}"),
-            "K_nominal": f"{design.time_ratio:.4f}",
-            "H_nominal": mm.replace("%1", f"{design.stroke:.2f}"),
-            "K": f"{metrics.time_ratio:.4f}",
-            "stroke": mm.replace("%1", f"{metrics.stroke_mm:.2f}"),
-            "work_angle": deg.replace("%1", f"{metrics.work_angle_deg:.2f}"),
-            "return_angle": deg.replace("%1", f"{metrics.return_angle_deg:.2f}"),
-            "pressure": (deg.replace("%1", f"{metrics.pressure_angle_max_deg:.2f}")
+            "theta": deg.replace("%1", fmt(math.degrees(design.theta), ".3f")),
+            "frame": mm.replace("%1", fmt(design.frame, ".2f")),
+            "lever": mm.replace("%1", fmt(design.lever, ".2f")),
+            "rod": mm.replace("%1", fmt(design.rod, ".2f")) if design.rod is not None else "—",
+            "guide": mm.replace("%1", fmt(design.guide, ".2f")),
+            "h": mm.replace("%1", fmt(design.guide_above_crank, ".2f")),
+            "K_nominal": fmt(design.time_ratio, ".4f"),
+            "H_nominal": mm.replace("%1", fmt(design.stroke, ".2f")),
+            "K": fmt(metrics.time_ratio, ".4f"),
+            "stroke": mm.replace("%1", fmt(metrics.stroke_mm, ".2f")),
+            "work_angle": deg.replace("%1", fmt(metrics.work_angle_deg, ".2f")),
+            "return_angle": deg.replace("%1", fmt(metrics.return_angle_deg, ".2f")),
+            "pressure": (deg.replace("%1", fmt(metrics.pressure_angle_max_deg, ".2f"))
                          if metrics.pressure_angle_max_deg is not None else "—"),
         }
         for key, text in values.items():
@@ -150,16 +151,38 @@ class MetricsPanel(QWidget):
         self._fill(self._forces_table, self._force_rows(), self._model.dynamics_summary.speeds)
 
     def _fill(self, table: QTableWidget, rows: list[tuple[str, str, float, str]], speeds) -> None:
-        """One column per crank speed, one row per value, numbers right-aligned."""
-        table.setRowCount(len(rows))
-        table.setColumnCount(len(speeds))
-        table.setVerticalHeaderLabels([title for _, title, _, _ in rows])
-        table.setHorizontalHeaderLabels([self.tr("%1 r/min").replace("%1", f"{s.rpm:g}") for s in speeds])
-        for col, speed in enumerate(speeds):
-            for row, (attr, _, scale, fmt) in enumerate(rows):
-                item = QTableWidgetItem(format(getattr(speed, attr) * scale, fmt))
-                item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
-                table.setItem(row, col, item)
+        """One column per crank speed, one row per value, numbers right-aligned.
+
+        Cells are created once and then only get new text: creating and announcing
+        QTableWidgetItems one by one was the slowest part of an edit (about 10 ms)."""
+        titles = [title for _, title, _, _ in rows]
+        heads = [self.tr("%1 r/min").replace("%1", f"{s.rpm:g}") for s in speeds]
+        if table.rowCount() != len(rows) or table.columnCount() != len(speeds):
+            table.setRowCount(len(rows))
+            table.setColumnCount(len(speeds))
+        if [table.verticalHeaderItem(r) and table.verticalHeaderItem(r).text()
+                for r in range(len(rows))] != titles:
+            table.setVerticalHeaderLabels(titles)
+        if [table.horizontalHeaderItem(c) and table.horizontalHeaderItem(c).text()
+                for c in range(len(speeds))] != heads:
+            table.setHorizontalHeaderLabels(heads)
+        # New texts with the model's signals blocked, then one repaint: every single
+        # dataChanged would re-measure the header (rows keep their one-line height).
+        table.model().blockSignals(True)
+        try:
+            for col, speed in enumerate(speeds):
+                for row, (attr, _, scale, spec) in enumerate(rows):
+                    text = fmt(getattr(speed, attr) * scale, spec)
+                    item = table.item(row, col)
+                    if item is None:
+                        item = QTableWidgetItem(text)
+                        item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+                        table.setItem(row, col, item)
+                    elif item.text() != text:
+                        item.setText(text)
+        finally:
+            table.model().blockSignals(False)
+        table.viewport().update()
 
     def value_text(self, key: str) -> str:
         """The text shown for one dimension or cycle value (for tests)."""

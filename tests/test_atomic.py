@@ -257,3 +257,12 @@ def test_a_name_that_is_no_file_is_refused_without_writing(tmp_path, monkeypatch
         atomic_write(name, "x")
     assert str(info.value).endswith(f": {reason}")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_bytes_are_written_atomically_too(tmp_path):
+    """Encoded images go through the same replace-by-rename as text."""
+    target = tmp_path / "plot.png"
+    target.write_bytes(b"old")
+    atomic_write(target, b"\x89PNG\r\n\x1a\n" + bytes(range(256)))
+    assert target.read_bytes() == b"\x89PNG\r\n\x1a\n" + bytes(range(256))
+    assert [p.name for p in tmp_path.iterdir()] == ["plot.png"]

@@ -49,16 +49,16 @@ def assert_matches_core(panel: ForcesPanel, model: DesignModel, masses: MassProp
                 "power": (degrees, dyn.power / 1000.0),                 # drawn in kW
                 "energy": (np.degrees(summary.crank_angle), summary.energy)}
     for name, (x_expected, rows) in expected.items():
-        shown = panel.curve_data(name)
+        shown = panel.plots.curve_data(name)
         assert len(shown) == len(model.rpms), name
         for (x, y), row in zip(shown, rows):
             np.testing.assert_allclose(x, x_expected, rtol=0, atol=1e-9, err_msg=name)
             np.testing.assert_allclose(y, row, rtol=1e-12, atol=1e-9, err_msg=name)
-    assert panel.mean_torque_lines() == pytest.approx(
+    assert panel.plots.mean_torque_lines() == pytest.approx(
         [s.mean_torque_N_m for s in summary.speeds], rel=1e-12, abs=1e-9)
-    speed = panel.selected_speed()
+    speed = panel.plots.selected_speed()
     for joint, (fx, fy) in JOINT_ARRAYS.items():
-        shown = panel.curve_data(f"force:{joint}")
+        shown = panel.plots.curve_data(f"force:{joint}")
         if getattr(dyn, fx) is None:
             assert shown == [], joint
             continue
@@ -66,7 +66,7 @@ def assert_matches_core(panel: ForcesPanel, model: DesignModel, masses: MassProp
         magnitude_kN = np.hypot(getattr(dyn, fx)[speed], getattr(dyn, fy)[speed]) / 1000.0
         np.testing.assert_allclose(x, degrees, rtol=0, atol=1e-9)
         np.testing.assert_allclose(y, magnitude_kN, rtol=1e-12, atol=1e-12, err_msg=joint)
-    (x, y), = panel.curve_data("force:guide")
+    (x, y), = panel.plots.curve_data("force:guide")
     np.testing.assert_allclose(y, np.abs(dyn.guide_normal[speed]) / 1000.0, rtol=1e-12, atol=1e-12)
 
 
@@ -77,7 +77,7 @@ def type_into(qtbot, edit, text: str) -> None:
 
 def click_plot(qtbot, panel: ForcesPanel, name: str, x: float) -> None:
     """Left-click plot ``name`` at data x, halfway up its current y range."""
-    plot = panel.plot_item(name)
+    plot = panel.plots.plot_item(name)
     (_, _), (y0, y1) = plot.vb.viewRange()
     view = plot.scene().views()[0]
     pos = view.mapFromScene(plot.vb.mapViewToScene(QPointF(x, (y0 + y1) / 2)))
@@ -88,25 +88,25 @@ def test_curves_equal_core(panel, model):
     masses = model.masses
     assert model.design.rod is None and masses.rod_mass_kg == 0.0
     assert_matches_core(panel, model, masses)
-    assert panel.legend_names()[:2] == [f"{r:g} r/min" for r in model.rpms]
-    assert panel.speed_names() == [f"{r:g} r/min" for r in model.rpms]
-    assert "C" not in panel.legend_names("joints")
+    assert panel.plots.legend_names()[:2] == [f"{r:g} r/min" for r in model.rpms]
+    assert panel.plots.speed_names() == [f"{r:g} r/min" for r in model.rpms]
+    assert "C" not in panel.plots.legend_names("joints")
     # the second speed's joint forces
-    panel.set_selected_speed(1)
-    assert panel.selected_speed() == 1
+    panel.plots.set_selected_speed(1)
+    assert panel.plots.selected_speed() == 1
     assert_matches_core(panel, model, masses)
 
 
 def test_typing_ram_mass_redraws_from_core(panel, model, qtbot):
     masses = model.masses
-    before = panel.curve_data("torque")
+    before = panel.plots.curve_data("torque")
     with qtbot.waitSignal(model.forcesChanged, timeout=2000):
-        type_into(qtbot, panel.field("ram_mass_kg"), "120")
+        type_into(qtbot, panel.loads.field("ram_mass_kg"), "120")
     assert model.masses.ram_mass_kg == 120.0
-    after = panel.curve_data("torque")
+    after = panel.plots.curve_data("torque")
     assert not np.allclose(before[1][1], after[1][1])
     assert_matches_core(panel, model, replace(masses, ram_mass_kg=120.0))
-    assert panel.marked_fields() == [] and panel.error_text() == ""
+    assert panel.loads.marked_fields() == [] and panel.loads.error_text() == ""
 
 
 @pytest.mark.parametrize("name, text, parameter, good", [
@@ -118,49 +118,49 @@ def test_typing_ram_mass_redraws_from_core(panel, model, qtbot):
 ])
 def test_invalid_value_marks_field_and_keeps_curves(panel, model, qtbot, name, text, parameter,
                                                    good):
-    before = {n: panel.curve_data(n) for n in SPEED_CURVES + ("force:A",)}
+    before = {n: panel.plots.curve_data(n) for n in SPEED_CURVES + ("force:A",)}
     masses = model.masses
     with qtbot.waitSignal(model.forcesErrorChanged, timeout=2000):
-        type_into(qtbot, panel.field(name), text)
+        type_into(qtbot, panel.loads.field(name), text)
     assert model.forces_error is not None and model.forces_error.parameter == parameter
-    assert panel.marked_fields() == [name]
-    assert describe(model.forces_error) in panel.error_text()
+    assert panel.loads.marked_fields() == [name]
+    assert describe(model.forces_error) in panel.loads.error_text()
     assert model.masses == masses
     for n, curves in before.items():
-        for (x0, y0), (x1, y1) in zip(curves, panel.curve_data(n)):
+        for (x0, y0), (x1, y1) in zip(curves, panel.plots.curve_data(n)):
             np.testing.assert_array_equal(x0, x1)
             np.testing.assert_array_equal(y0, y1)
-    assert panel.field(name).text() == text          # what was typed stays for correction
+    assert panel.loads.field(name).text() == text          # what was typed stays for correction
     # a valid value clears the mark and the message
     with qtbot.waitSignal(model.forcesErrorChanged, timeout=2000):
-        type_into(qtbot, panel.field(name), good)
+        type_into(qtbot, panel.loads.field(name), good)
     assert model.forces_error is None
-    assert panel.marked_fields() == [] and panel.error_text() == ""
+    assert panel.loads.marked_fields() == [] and panel.loads.error_text() == ""
 
 
 def test_delta_accepts_a_fraction(panel, model, qtbot):
-    assert panel.field("delta").text() == "0.03333"          # the default 1/30
+    assert panel.loads.field("delta").text() == "0.03333"          # the default 1/30
     with qtbot.waitSignal(model.forcesChanged, timeout=2000):
-        type_into(qtbot, panel.field("delta"), "1/20")
+        type_into(qtbot, panel.loads.field("delta"), "1/20")
     assert model.masses.delta == 1.0 / 20.0
-    assert panel.field("delta").text() == "1/20"
+    assert panel.loads.field("delta").text() == "1/20"
     with qtbot.waitSignal(model.forcesErrorChanged, timeout=2000):
-        type_into(qtbot, panel.field("delta"), "1/0")
-    assert panel.marked_fields() == ["delta"]
+        type_into(qtbot, panel.loads.field("delta"), "1/0")
+    assert panel.loads.marked_fields() == ["delta"]
 
 
 def test_idle_is_typed_in_percent_and_moves_the_cutting_zone(panel, model, qtbot):
-    assert float(panel.field("idle_percent").text()) == pytest.approx(
+    assert float(panel.loads.field("idle_percent").text()) == pytest.approx(
         100.0 * model.masses.idle_fraction)
     masses = model.masses
     with qtbot.waitSignal(model.forcesChanged, timeout=2000):
-        type_into(qtbot, panel.field("idle_percent"), "15")
+        type_into(qtbot, panel.loads.field("idle_percent"), "15")
     assert model.masses.idle_fraction == pytest.approx(0.15, rel=1e-15)
     assert_shading_matches_core(panel, model, replace(masses, idle_fraction=0.15))
 
 
 def test_lever_cg_empty_means_half_the_lever(panel, model, qtbot):
-    edit = panel.field("lever_cg_mm")
+    edit = panel.loads.field("lever_cg_mm")
     assert edit.text() == "" and model.masses.lever_cg_mm is None
     assert "L3/2" in edit.placeholderText()
     masses = model.masses
@@ -177,55 +177,57 @@ def test_lever_cg_empty_means_half_the_lever(panel, model, qtbot):
 def test_ram_offsets_and_gravity(panel, model, qtbot):
     masses = model.masses
     with qtbot.waitSignal(model.forcesChanged, timeout=2000):
-        type_into(qtbot, panel.field("ram_cg_dx"), "40")
+        type_into(qtbot, panel.loads.field("ram_cg_dx"), "40")
     with qtbot.waitSignal(model.forcesChanged, timeout=2000):
-        type_into(qtbot, panel.field("ram_cg_dy"), "-25")
+        type_into(qtbot, panel.loads.field("ram_cg_dy"), "-25")
     assert model.masses.ram_cg_mm == (40.0, -25.0)
     with qtbot.waitSignal(model.forcesChanged, timeout=2000):
-        panel.gravity_box().setChecked(False)
+        panel.loads.gravity_box().setChecked(False)
     assert model.masses.gravity is False
     assert_matches_core(panel, model, replace(masses, ram_cg_mm=(40.0, -25.0), gravity=False))
 
 
 def test_model_change_shows_in_fields(panel, model):
     model.set_masses(ram_mass_kg=55.5, cut_force_N=1234.0)
-    assert panel.field("ram_mass_kg").text() == "55.5"
-    assert panel.field("cut_force_N").text() == "1234"
+    assert panel.loads.field("ram_mass_kg").text() == "55.5"
+    assert panel.loads.field("cut_force_N").text() == "1234"
     model.set_masses(block_mass_kg="heavy")                    # invalid, from elsewhere
-    assert panel.field("block_mass_kg").text() == "heavy"
-    assert panel.marked_fields() == ["block_mass_kg"]
+    assert panel.loads.field("block_mass_kg").text() == "heavy"
+    assert panel.loads.marked_fields() == ["block_mass_kg"]
 
 
 def test_three_speeds_give_three_curves(panel, model):
     model.set_rpms([40, 60, 80])
     for name in SPEED_CURVES:
-        assert len(panel.curve_data(name)) == 3
-    assert panel.speed_names() == ["40 r/min", "60 r/min", "80 r/min"]
-    assert panel.legend_names()[:3] == ["40 r/min", "60 r/min", "80 r/min"]
-    assert len(panel.mean_torque_lines()) == 3
+        assert len(panel.plots.curve_data(name)) == 3
+    assert panel.plots.speed_names() == ["40 r/min", "60 r/min", "80 r/min"]
+    assert panel.plots.legend_names()[:3] == ["40 r/min", "60 r/min", "80 r/min"]
+    assert len(panel.plots.mean_torque_lines()) == 3
     assert_matches_core(panel, model, model.masses)
     model.set_rpms([50])
-    assert [len(panel.curve_data(n)) for n in SPEED_CURVES] == [1, 1, 1]
-    assert len(panel.plot_item("torque").listDataItems()) == 1   # removed, not just emptied
+    assert [len(panel.plots.curve_data(n)) for n in SPEED_CURVES] == [1, 1, 1]
+    # removed, not just emptied: the speed's torque curve and its mean-torque line, each
+    # a solid and a dashed item
+    assert len(panel.plots.plot_item("torque").listDataItems()) == 2 * 2
     assert_matches_core(panel, model, model.masses)
 
 
 def test_rod_variant_enables_rod_mass_and_adds_c(panel, model, qtbot):
-    assert not panel.field("rod_mass_kg").isEnabled()
-    assert panel.curve_data("force:C") == []
+    assert not panel.loads.field("rod_mass_kg").isEnabled()
+    assert panel.plots.curve_data("force:C") == []
     model.set_spec(variant="rod")
     assert model.error is None and model.design.rod is not None
-    assert panel.field("rod_mass_kg").isEnabled()
-    assert "C" in panel.legend_names("joints")
+    assert panel.loads.field("rod_mass_kg").isEnabled()
+    assert "C" in panel.plots.legend_names("joints")
     masses = model.masses
     assert_matches_core(panel, model, masses)
     with qtbot.waitSignal(model.forcesChanged, timeout=2000):
-        type_into(qtbot, panel.field("rod_mass_kg"), "6")
+        type_into(qtbot, panel.loads.field("rod_mass_kg"), "6")
     assert_matches_core(panel, model, replace(masses, rod_mass_kg=6.0))
     model.set_spec(variant="block")
-    assert not panel.field("rod_mass_kg").isEnabled()
-    assert panel.curve_data("force:C") == []
-    assert "C" not in panel.legend_names("joints")
+    assert not panel.loads.field("rod_mass_kg").isEnabled()
+    assert panel.plots.curve_data("force:C") == []
+    assert "C" not in panel.plots.legend_names("joints")
 
 
 def assert_shading_matches_core(panel: ForcesPanel, model: DesignModel,
@@ -234,7 +236,7 @@ def assert_shading_matches_core(panel: ForcesPanel, model: DesignModel,
     dyn, _ = core_results(model, masses)
     degrees = np.degrees(model.motion.crank_angle)
     cutting = dyn.cut_force[0] != 0.0
-    spans = panel.cut_spans()
+    spans = panel.plots.cut_spans()
     assert spans
     inside = np.zeros_like(cutting)
     for start, end in spans:
@@ -247,37 +249,37 @@ def test_cutting_zone_is_where_core_cuts(panel, model):
     model.set_spec(time_ratio=1.7)
     assert_shading_matches_core(panel, model, model.masses)
     model.set_masses(cut_force_N=0.0)
-    assert panel.cut_spans() == []
+    assert panel.plots.cut_spans() == []
 
 
 def test_cursor_follows_angle_and_click_sets_it(panel, model, qtbot):
     model.set_angle_index(90)
-    assert panel.cursor_value() == pytest.approx(math.degrees(model.motion.crank_angle[90]))
+    assert panel.plots.cursor_value() == pytest.approx(math.degrees(model.motion.crank_angle[90]))
     model.set_angle_index(250)
-    assert panel.cursor_value() == pytest.approx(math.degrees(model.motion.crank_angle[250]))
+    assert panel.plots.cursor_value() == pytest.approx(math.degrees(model.motion.crank_angle[250]))
     click_plot(qtbot, panel, "power", 123.4)
     assert model.crank_deg == pytest.approx(123.4, abs=1.0)
     click_plot(qtbot, panel, "force", 301.0)
     assert model.crank_deg == pytest.approx(301.0, abs=1.0)
-    assert panel.cursor_value() == pytest.approx(model.crank_deg)
+    assert panel.plots.cursor_value() == pytest.approx(model.crank_deg)
 
 
 def test_mouse_readout(qtbot, panel, model):
-    plot = panel.plot_item("torque")
+    plot = panel.plots.plot_item("torque")
     view = plot.scene().views()[0]
     pos = view.mapFromScene(plot.vb.mapViewToScene(QPointF(100.2, 0.0)))
     qtbot.mouseMove(view.viewport(), pos)
-    qtbot.waitUntil(lambda: "r/min" in panel.readout_text() and "100." in panel.readout_text())
+    qtbot.waitUntil(lambda: "r/min" in panel.plots.readout_text() and "100." in panel.plots.readout_text())
     dyn, _ = core_results(model, model.masses)
     index = int(np.argmin(np.abs(np.degrees(model.motion.crank_angle) - 100.2)))
     for row in dyn.crank_torque:
-        assert f"{row[index]:.4g} N·m" in panel.readout_text()
+        assert f"{row[index]:.4g} N·m" in panel.plots.readout_text()
 
 
 def test_language_change_keeps_texts(panel, model):
     QApplication.sendEvent(panel, QEvent(QEvent.Type.LanguageChange))
-    assert panel.legend_names()[:2] == [f"{r:g} r/min" for r in model.rpms]
-    assert panel.plot_item("torque").getAxis("left").labelText
+    assert panel.plots.legend_names()[:2] == [f"{r:g} r/min" for r in model.rpms]
+    assert panel.plots.plot_item("torque").getAxis("left").labelText
 
 
 def test_export_png_and_svg(panel, tmp_path):

@@ -65,8 +65,7 @@ def arrows(scheme: SchemeWidget) -> dict[str, tuple[np.ndarray, np.ndarray]]:
 
 
 def ram_x_extent(scheme: SchemeWidget) -> tuple[float, float]:
-    rect = scheme._ram.mapRectToParent(scheme._ram.path().boundingRect())
-    return rect.left(), rect.right()
+    return scheme.ram_extent()
 
 
 def unit(v: np.ndarray) -> np.ndarray:

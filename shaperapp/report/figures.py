@@ -13,7 +13,7 @@ import tempfile
 from pathlib import Path
 from typing import Callable, Sequence
 
-from PySide6.QtCore import QByteArray, QCoreApplication, QRectF, Qt
+from PySide6.QtCore import QByteArray, QCoreApplication, QEvent, QRectF, Qt
 from PySide6.QtGui import QFontMetricsF, QPainter
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
@@ -108,6 +108,9 @@ class ReportViews:
             widget.close()
             widget.deleteLater()
         self._widgets.clear()
+        # Delete them now: a command-line run has no event loop to do it later, and Qt
+        # objects left for interpreter shutdown can outlive the application and crash it.
+        QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
         self._dir.cleanup()
 
 

@@ -1,0 +1,126 @@
+"""Images of a graphics scene: PNG (or another raster type Qt writes) and SVG, one code path.
+
+The scheme and both plot stacks export through here, so they share the checks:
+a target whose type is unknown raises ValueError, a folder that is missing or
+not writable raises OSError, both with a message naming the path and what is
+wrong; nothing is written then. The image is rendered in memory first and
+written in one go, so a failed render never leaves a partial file.
+
+pyqtgraph 0.14's SVGExporter fails on the closed paths ("… Z") Qt 6.11+ writes
+(pyqtgraph issue #3495), hence Qt's own QSvgGenerator. A raster is scaled
+through the device pixel ratio, not a painter transform, so items drawn
+ignoring transformations (legends, labels) grow with everything else.
+"""
+from __future__ import annotations
+
+import errno
+import math
+import os
+from collections.abc import Callable
+from pathlib import Path
+
+from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QRectF
+from PySide6.QtGui import QColor, QImage, QImageWriter, QPainter, QPicture
+from PySide6.QtSvg import QSvgGenerator
+from PySide6.QtWidgets import QGraphicsScene
+
+from core.atomic import atomic_write
+
+EXPORT_WIDTH = 1600      # minimum width of an exported raster image, px
+
+
+def raster_types() -> set[str]:
+    """Suffixes (lower case, no dot) Qt can write as raster images here."""
+    return {bytes(f).decode().lower() for f in QImageWriter.supportedImageFormats()}
+
+
+def image_type(path: str | os.PathLike) -> str:
+    """The image type ``path`` asks for ("svg", "png" …), after checking the target.
+
+    Raises ValueError for a missing or unknown suffix and OSError (with ``filename``
+    set) for a folder that does not exist or cannot be written, or a target that is
+    a folder."""
+    target = Path(path)
+    suffix = target.suffix.lower().lstrip(".")
+    translate = QCoreApplication.translate
+    if suffix != "svg" and suffix not in raster_types():
+        if suffix:
+            why = translate("ImageExport",
+                            "“.{0}” is not an image type this program writes; use .png or .svg")
+        else:
+            why = translate("ImageExport", "the name has no image type; end it in .png or .svg")
+        raise ValueError(translate("ImageExport", "Cannot export to {0}: {1}").format(
+            target, why.format(suffix)))
+    folder = target.parent if str(target.parent) else Path(".")
+    if not folder.is_dir():
+        raise OSError(errno.ENOENT, translate("ImageExport", "the folder {0} does not exist")
+                      .format(folder), str(target))
+    if not os.access(folder, os.W_OK | os.X_OK) and not os.access(target, os.W_OK):
+        raise OSError(errno.EACCES, translate("ImageExport", "the folder {0} is not writable")
+                      .format(folder), str(target))
+    if target.is_dir():
+        raise OSError(errno.EISDIR, translate("ImageExport", "{0} is a folder").format(target),
+                      str(target))
+    return suffix
+
+
+def render_scene(scene: QGraphicsScene, source: QRectF, painter: QPainter, target: QRectF,
+                 background: QColor, prepare: Callable[[bool], None] | None = None) -> None:
+    """Paint the ``source`` part of ``scene`` into ``target``, on ``background``.
+
+    ``prepare(True)`` runs before and ``prepare(False)`` after, whatever happens:
+    views use it to drop pixmap caches that would blur in a scaled image. pyqtgraph
+    items are switched to export mode meanwhile, so they paint vectors."""
+    items = [it for it in scene.items() if hasattr(it, "setExportMode")]
+    if prepare is not None:
+        prepare(True)
+    try:
+        for it in items:
+            it.setExportMode(True, {"antialias": True, "background": background,
+                                    "painter": painter})
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+        painter.setRenderHint(QPainter.RenderHint.TextAntialiasing)
+        painter.fillRect(target, background)
+        scene.render(painter, target, source)
+    finally:
+        for it in items:
+            it.setExportMode(False)
+        if prepare is not None:
+            prepare(False)
+
+
+def export_scene(scene: QGraphicsScene, source: QRectF, path: str | os.PathLike, title: str,
+                 background: QColor, prepare: Callable[[bool], None] | None = None) -> None:
+    """Write the ``source`` part of ``scene`` to ``path``: SVG for ``.svg``, else a raster
+    image at least EXPORT_WIDTH px wide (see :func:`image_type` for the errors)."""
+    kind = image_type(path)
+    page = QRectF(0.0, 0.0, source.width(), source.height())
+    data = QByteArray()
+    buffer = QBuffer(data)
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    if kind == "svg":
+        device = QSvgGenerator()
+        device.setOutputDevice(buffer)
+        device.setSize(page.size().toSize())
+        device.setViewBox(page)
+        device.setTitle(title)
+        device.setResolution(QPicture().logicalDpiX())   # axes replay DPI-bound QPictures
+    else:
+        scale = max(1.0, EXPORT_WIDTH / max(page.width(), 1.0))
+        device = QImage(math.ceil(page.width() * scale), math.ceil(page.height() * scale),
+                        QImage.Format.Format_ARGB32)
+        device.setDevicePixelRatio(scale)
+    painter = QPainter(device)
+    try:
+        render_scene(scene, source, painter, page, background, prepare)
+    finally:
+        painter.end()
+    if kind != "svg" and not device.save(buffer, kind.upper()):
+        raise OSError(errno.EIO, QCoreApplication.translate(
+            "ImageExport", "Qt could not encode the image as {0}").format(kind.upper()), str(path))
+    buffer.close()
+    try:
+        atomic_write(path, bytes(data))      # the old picture or the whole new one
+    except OSError as exc:
+        raise OSError(exc.errno, QCoreApplication.translate(
+            "ImageExport", "could not write {0}: {1}").format(path, exc.strerror), str(path)) from exc

@@ -1,0 +1,160 @@
+"""The parts of one diagram: an axis whose tick labels never overlap, a view box with
+the app's navigation, and the plot item that combines them in the app's style.
+
+Navigation (the same in every diagram): the wheel zooms x (all stacked plots are
+x-linked), the wheel over the left axis zooms that plot's y, a left drag zooms to
+a box, a right drag zooms freely, a double click fits everything again, a right
+click opens the view's own translated menu. pyqtgraph's English menu and its
+export dialog are never shown.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Sequence
+
+import pyqtgraph as pg
+from PySide6.QtCore import QPointF, Signal
+from PySide6.QtGui import QColor, QFont, QFontMetricsF
+from PySide6.QtWidgets import QGraphicsItem
+
+from .style import TEXT
+
+AXIS_WIDTH = 62          # fixed left-axis width so the stacked plots line up
+AXIS = QColor("#424242")
+GRID = QColor("#e3e3e3")
+LABEL_GAP_PX = 14.0      # free space between two tick labels along an axis
+NICE_STEPS = (1.0, 2.0, 5.0)                                      # × 10^k
+DEGREE_STEPS = (1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 60.0, 90.0, 180.0, 360.0)
+
+
+def nice_steps(span: float, steps: Sequence[float] | None) -> Iterable[float]:
+    """Candidate tick spacings in increasing order, from well below ``span`` up to it."""
+    if steps is not None:
+        fine = 10.0 ** math.floor(math.log10(span) - 3)
+        for k in range(-3, 0):          # zoomed far in: tenths, hundredths … of a degree
+            for s in NICE_STEPS:
+                if s * 10.0 ** k >= fine:
+                    yield s * 10.0 ** k
+        yield from steps
+        return
+    exponent = math.floor(math.log10(span)) - 4
+    while True:
+        for s in NICE_STEPS:
+            yield s * 10.0 ** exponent
+        exponent += 1
+
+
+class TickAxis(pg.AxisItem):
+    """An axis that picks its tick spacing from the space its labels need.
+
+    pyqtgraph's own choice depends only on the axis length, so wide labels run
+    together on a short axis ("120150180…"). Here the major spacing is the
+    smallest nice step whose widest label (measured in the axis font) plus a gap
+    fits between two ticks; only major ticks carry text. ``degree_steps`` limits
+    the steps to divisors of a turn (15°, 30°, 45°, 90° …)."""
+
+    def __init__(self, orientation: str, **kwargs) -> None:
+        super().__init__(orientation, **kwargs)
+        self._steps: Sequence[float] | None = None
+
+    def set_degree_steps(self, on: bool) -> None:
+        self._steps = DEGREE_STEPS if on else None
+        self.picture = None
+        self.update()
+
+    def tickSpacing(self, minVal: float, maxVal: float, size: float):
+        span = abs(maxVal - minVal)
+        if not (span > 0.0 and size > 0.0 and math.isfinite(span)):
+            return []
+        metrics = QFontMetricsF(self.style["tickFont"] or QFont())
+        horizontal = self.orientation in ("top", "bottom")
+        per_px = span / size
+        for step in nice_steps(span, self._steps):
+            if horizontal:
+                first = math.floor(minVal / step) * step
+                labels = self.tickStrings([first, first + step, maxVal, minVal], self.scale, step)
+                need = max(metrics.horizontalAdvance(s) for s in labels) + LABEL_GAP_PX
+            else:
+                need = metrics.height() + 0.5 * LABEL_GAP_PX
+            if step / per_px >= need:
+                minor = step / (3.0 if self._steps is not None and step % 3 == 0 else 2.0)
+                return [(step, 0.0), (minor, 0.0)]
+            if step > 2.0 * span:
+                break
+        return [(4.0 * span, 0.0)]      # no room for two labels: at most one
+
+
+class NavViewBox(pg.ViewBox):
+    """A view box with the app's mouse navigation (see the module docstring); the
+    scheme's keeps the wheel on both axes and drags to pan (``x_wheel``/``box_zoom`` off).
+
+    ``sigFitRequested`` asks the owner to fit all plots; ``menu_handler`` (set by the
+    owner) shows its own context menu at a screen position."""
+
+    sigFitRequested = Signal()
+
+    def __init__(self, x_wheel: bool = True, box_zoom: bool = True) -> None:
+        super().__init__(enableMenu=False)
+        self.setMouseMode(pg.ViewBox.RectMode if box_zoom else pg.ViewBox.PanMode)
+        self.menu_handler: Callable[[QPointF], None] | None = None
+        self.y_zoomed = False        # the user chose this plot's y range: keep it until Fit
+        self._x_wheel = x_wheel
+
+    def wheelEvent(self, ev, axis=None) -> None:
+        # In a plot the wheel zooms x only; over the y axis (axis=1) it zooms y.
+        if axis is None and self._x_wheel:
+            axis = 0
+        self.y_zoomed |= axis != 0
+        super().wheelEvent(ev, axis=axis)
+
+    def mouseDragEvent(self, ev, axis=None) -> None:
+        # a box, a right-button zoom or a drag on the y axis chooses y too
+        self.y_zoomed |= axis != 0 and (self.state["mouseMode"] == pg.ViewBox.RectMode
+                                        or ev.button() != pg.QtCore.Qt.MouseButton.LeftButton
+                                        or axis == 1)
+        super().mouseDragEvent(ev, axis=axis)
+
+    def mouseClickEvent(self, ev) -> None:
+        if ev.double() and ev.button() == pg.QtCore.Qt.MouseButton.LeftButton:
+            ev.accept()
+            self.sigFitRequested.emit()
+        elif ev.button() == pg.QtCore.Qt.MouseButton.RightButton and self.menu_handler is not None:
+            ev.accept()
+            self.menu_handler(ev.screenPos())
+
+    def raiseContextMenu(self, ev) -> None:     # never pyqtgraph's own menu
+        if self.menu_handler is not None:
+            self.menu_handler(ev.screenPos())
+
+
+def styled_plot_item(padding: float) -> pg.PlotItem:
+    """A plot styled like every diagram of the app: opaque grid beneath the curves,
+    fixed-width left axis, no SI prefixes, non-overlapping ticks, the app's navigation."""
+    axes = {side: TickAxis(side) for side in ("left", "bottom")}
+    item = pg.PlotItem(viewBox=NavViewBox(), axisItems=axes)
+    item.showGrid(x=True, y=True)
+    item.setMenuEnabled(False)
+    item.hideButtons()
+    item.setDefaultPadding(padding)
+    for side in ("left", "bottom"):
+        axis = item.getAxis(side)
+        axis.enableAutoSIPrefix(False)
+        axis.setPen(pg.mkPen(AXIS))
+        axis.setTextPen(pg.mkPen(TEXT))
+        # Grid: opaque light grey, beneath the curves (the ViewBox is at z -100); only
+        # major lines across the short plots. Translucent lines draw ~15× slower.
+        axis.setTickPen(pg.mkPen(GRID))
+        axis.setStyle(tickAlpha=255, maxTickLevel=1 if side == "bottom" else 0, maxTextLevel=0)
+        axis.setZValue(-200)
+    item.getAxis("left").setWidth(AXIS_WIDTH)
+    return item
+
+
+def cache_axes(items: Iterable[pg.PlotItem], on: bool) -> None:
+    """Axes draw grid and text from a QPicture, the slowest part of a repaint: cache
+    them as pixmaps, so moving the cursor or redrawing a curve only blits them.
+    Off while exporting: a scaled pixmap would blur."""
+    mode = QGraphicsItem.CacheMode.DeviceCoordinateCache if on else QGraphicsItem.CacheMode.NoCache
+    for item in items:
+        for side in ("left", "bottom"):
+            item.getAxis(side).setCacheMode(mode)

@@ -1,0 +1,139 @@
+"""The scheme's dimension layer: L1, L2, h, L3 and the measured stroke H.
+
+Dimensions are placed where no moving part ever goes, so that a label never sits
+on a link at any crank angle: L2 and h as a vertical chain left of everything,
+L3 beside the lever's rightmost limit position, H under the tool path, and L1 as
+the crank radius to the point where the lever's left limit position touches the
+crank circle, its label led out beyond the lever's swing (the lever only ever
+moves inside the wedge between its limit positions, which the crank circle
+touches there).
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import QObject
+from PySide6.QtGui import QColor, QPainterPath, QPen, Qt
+
+from .model import DesignModel
+from .scheme_draw import DIM, Box, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
+from .scheme_mechanism import Geometry
+from .style import fmt
+
+L1_LEAD = 4.5            # the L1 label this many u beyond the crank circle, outside the lever
+NAMES = ("L2", "h", "L3", "L1", "H")     # the dimensions in drawing order
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """One dimension: line segments, arrow tips (pos, outward direction) and its text."""
+
+    segments: list[Pair]
+    arrows: list[Pair]
+    text: str
+    text_pos: tuple[float, float]
+    anchor: tuple[float, float]
+    angle: float = 0.0
+
+
+def text_anchor(normal: np.ndarray) -> tuple[float, float]:
+    """Text anchor that puts a label on the ``normal`` side of its point (y up)."""
+    return (0.5 - 0.5 * float(normal[0]), 0.5 + 0.5 * float(normal[1]))
+
+
+def linear_dim(p: np.ndarray, q: np.ndarray, normal: np.ndarray, offset: float,
+               u: float, text: str, vertical_text: bool = False) -> Dimension:
+    """Dimension p–q with its line ``offset`` along the unit ``normal`` (0: no extension lines)."""
+    a, b = p + normal * offset, q + normal * offset
+    lines = [(tuple(a), tuple(b))]
+    if offset > 0:
+        lines += [(tuple(p + normal * 0.5 * u), tuple(a + normal * 0.6 * u)),
+                  (tuple(q + normal * 0.5 * u), tuple(b + normal * 0.6 * u))]
+    arrows = [(tuple(a), tuple(a - b)), (tuple(b), tuple(b - a))]
+    mid = tuple((a + b) / 2.0 + normal * 0.3 * u)
+    if vertical_text:
+        return Dimension(lines, arrows, text, mid, (0.5, 1.0), 90.0)
+    return Dimension(lines, arrows, text, mid, text_anchor(normal))
+
+
+def crank_dim(o2: np.ndarray, crank: float, theta: float, u: float, text: str) -> Dimension:
+    """L1 as the radius to the left tangent point of the lever's limit position, with a
+    leader out of the lever's swing to the label."""
+    normal = np.array([-math.cos(theta / 2.0), -math.sin(theta / 2.0)])   # away from the wedge
+    touch = o2 + normal * crank
+    label = touch + normal * L1_LEAD * u
+    return Dimension([(tuple(o2), tuple(touch)), (tuple(touch), tuple(label))],
+                     [(tuple(touch), tuple(normal))], text, tuple(label), text_anchor(normal))
+
+
+class DimensionLayer(QObject):
+    """Dimension lines, arrow heads and texts, placed per design; can be hidden."""
+
+    def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._lines = pg.PlotDataItem(pen=pen(DIM, 1.0), connect="pairs")
+        self._lines.setZValue(Z_DIM)
+        add(self._lines)
+        self._heads = body(DIM, Z_DIM, QPen(Qt.PenStyle.NoPen))
+        add(self._heads)
+        self._texts = [pg.TextItem(color=DIM, fill=QColor(255, 255, 255, 200)) for _ in range(5)]
+        for item in self._texts:
+            item.setZValue(Z_DIM)
+            add(item)
+        self._visible = True
+
+    def update(self, model: DesignModel, g: Geometry) -> None:
+        """Place the dimensions of the model's design; texts are translated here."""
+        design, u, o2, chain = model.design, g.u, g.o2, g.chain_x
+        left = np.array([-1.0, 0.0])
+        # A vertical chain at the far left: L2 = O4O2, then h from O2 up to the guide line.
+        p0, p1, p2 = np.array([chain, 0.0]), np.array([chain, o2[1]]), np.array([chain, g.guide])
+        dims = [linear_dim(p0, p1, left, 0.0, u, self.tr("L2 = {0}").format(fmt(design.frame, ".1f")), True),
+                linear_dim(p1, p2, left, 0.0, u,
+                           self.tr("h = {0}").format(fmt(design.guide_above_crank, ".1f")), True)]
+        reach = chain - 0.6 * u
+        extensions: list[Pair] = [((-2.6 * u, 0.0), (reach, 0.0)),
+                                  ((o2[0] - design.crank - 0.6 * u, o2[1]), (reach, o2[1])),
+                                  ((g.rail_left - 0.3 * u, g.guide), (reach, g.guide))]
+        # L3 beside the lever's rightmost limit position.
+        tips = g.limits.lever_tip.T
+        tip = tips[int(np.argmax(tips[:, 0]))]
+        along = tip / np.hypot(*tip)
+        dims.append(linear_dim(np.zeros(2), tip, np.array([along[1], -along[0]]), 3.0 * u, u,
+                               self.tr("L3 = {0}").format(fmt(design.lever, ".1f"))))
+        dims.append(crank_dim(o2, design.crank, design.theta, u,
+                              self.tr("L1 = {0}").format(fmt(design.crank, ".1f"))))
+        # H between the tool tip's two limit positions, under the tool path.
+        dims.append(linear_dim(np.array([g.tip_lo, g.tip_y]), np.array([g.tip_hi, g.tip_y]),
+                               np.array([0.0, -1.0]), 2.6 * u, u,
+                               self.tr("H = {0}").format(fmt(model.metrics.stroke_mm, ".1f"))))
+        self._lines.setData(*segments([s for dim in dims for s in dim.segments] + extensions))
+        heads = QPainterPath()
+        for tip_pos, direction in (arrow for dim in dims for arrow in dim.arrows):
+            heads.addPolygon(arrow_head(np.asarray(tip_pos), np.asarray(direction), u))
+        self._heads.setPath(heads)
+        for item, dim in zip(self._texts, dims):
+            item.setText(dim.text)
+            item.setAngle(dim.angle)
+            item.setAnchor(dim.anchor)
+            item.setPos(*dim.text_pos)
+
+    def set_visible(self, visible: bool) -> None:
+        self._visible = visible
+        for item in (self._lines, self._heads, *self._texts):
+            item.setVisible(visible)
+
+    def labels(self) -> list[str]:
+        return [item.toPlainText() for item in self._texts]
+
+    def texts(self) -> dict[str, pg.TextItem]:
+        """The label items by dimension name (NAMES)."""
+        return dict(zip(NAMES, self._texts))
+
+    def obstacles(self) -> list[Box]:
+        """The labels' boxes while shown: force labels keep off them."""
+        return [text_box(item) for item in self._texts] if self._visible else []

@@ -1,0 +1,328 @@
+"""Regression tests for the plot defects of issue 8 (item 5), on both views that use the
+shared plot stack: 16 speeds, refit, navigation, our own menu, ticks, cursor values,
+read-out after a design change, a cursor per speed in time mode.
+
+Expected numbers come from core (solve / solve_dynamics on the model's design), the
+colour check from an independent CIELAB conversion, never from the widgets' output.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from PySide6.QtCore import QPoint, QPointF, Qt
+from PySide6.QtGui import QImage, QPainter
+from PySide6.QtWidgets import QApplication
+
+from core.kinematics import solve
+from shaperapp.force_plots import ForcePlots
+from shaperapp.plots import PlotsWidget
+from shaperapp.style import SPEED_COLOURS, fmt
+
+SIXTEEN = [20.0 + 5.0 * i for i in range(16)]
+
+
+@pytest.fixture
+def plots(qtbot, model) -> PlotsWidget:
+    w = PlotsWidget(model)
+    qtbot.addWidget(w)
+    w.resize(560, 640)          # the kinematics pane of a 1366 px wide window
+    w.show()
+    qtbot.waitExposed(w)
+    return w
+
+
+@pytest.fixture
+def forces(qtbot, model) -> ForcePlots:
+    w = ForcePlots(model)
+    qtbot.addWidget(w)
+    w.resize(520, 640)
+    w.show()
+    qtbot.waitExposed(w)
+    return w
+
+
+def lab(hex_colour: str) -> np.ndarray:
+    """sRGB → CIELAB (D65), written out from the standard formulas."""
+    rgb = np.array([int(hex_colour[i:i + 2], 16) / 255.0 for i in (1, 3, 5)])
+    lin = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+    m = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]])
+    xyz = m @ lin / np.array([0.95047, 1.0, 1.08883])
+    f = np.where(xyz > 0.008856, np.cbrt(xyz), 7.787 * xyz + 16.0 / 116.0)
+    return np.array([116.0 * f[1] - 16.0, 500.0 * (f[0] - f[1]), 200.0 * (f[1] - f[2])])
+
+
+def test_sixteen_distinct_speed_colours():
+    assert len(SPEED_COLOURS) == 16
+    colours = [lab(c) for c in SPEED_COLOURS]
+    closest = min(np.linalg.norm(a - b) for i, a in enumerate(colours) for b in colours[i + 1:])
+    assert closest > 20.0                # clearly different to the eye (ΔE*ab)
+    for reserved in ("#37474f", "#444444", "#c2185b", "#ffffff"):   # shared, cursor, force, page
+        assert min(np.linalg.norm(lab(reserved) - c) for c in colours) > 10.0
+
+
+def scene_bottom(item) -> float:
+    return item.sceneBoundingRect().bottom()
+
+
+@pytest.mark.parametrize("view", ["plots", "forces"])
+def test_sixteen_speeds_legend_wraps_and_plots_stay_in_the_pane(request, model, view):
+    widget = request.getfixturevalue(view)
+    model.set_rpms(SIXTEEN)
+    QApplication.processEvents()
+    stack = widget.stack()
+    group = "main" if view == "plots" else "speeds"
+    legend = stack.legend(group)
+    names = legend.names()
+    assert names[:16] == [f"{r:g} r/min" for r in SIXTEEN]
+    assert 1 < legend.columns() < 16                      # wrapped into rows
+    graphics = stack.findChild(type(stack._view))
+    width, height = graphics.width(), graphics.height()
+    assert legend.head.sceneBoundingRect().right() <= width + 1
+    last = "ram_a" if view == "plots" else "force"
+    assert scene_bottom(widget.plot_item(last)) <= height + 1   # nothing pushed out
+    colours = {c.colour.name() for c in stack.plot("ram_v" if view == "plots" else "torque").curves
+               if c.role == "" and c.legend}
+    assert len(colours) == 16
+
+
+def fits(widget, name: str, values: np.ndarray) -> bool:
+    (_, _), (y0, y1) = widget.plot_item(name).vb.viewRange()
+    span = values.max() - values.min()
+    return y0 <= values.min() and y1 >= values.max() and y1 - y0 < 1.5 * span
+
+
+def test_views_refit_after_removing_speeds_and_the_legend_stays(plots, model):
+    model.set_rpms(SIXTEEN)
+    QApplication.processEvents()
+    view = plots.plot_item("ram_v").vb
+    view.scaleBy((0.3, 0.3))                              # the user zoomed in
+    model.set_rpms([40, 60])
+    QApplication.processEvents()
+    motion = solve(model.design, model.motion.crank_angle, [40, 60])
+    assert fits(plots, "ram_v", motion.ram_v) and fits(plots, "ram_a", motion.ram_a)
+    assert view.viewRange()[0] == pytest.approx([0.0, 360.0])
+    legend = plots.stack().legend("main")
+    assert legend.names() == ["40 r/min", "60 r/min"]
+    assert legend.head.isVisible() and legend.head.sceneBoundingRect().height() > 10
+    assert legend.head.scene() is plots.plot_item("ram_v").scene()
+    # the plots fill the pane again, no blank band where the long legend was
+    graphics = plots.stack()._view
+    assert scene_bottom(plots.plot_item("ram_a")) > 0.8 * graphics.height()
+
+
+def test_a_design_change_refits_a_zoomed_view(plots, model):
+    plots.plot_item("ram_v").vb.setXRange(100.0, 120.0, padding=0.0)
+    model.set_spec(time_ratio=1.6)
+    assert model.error is None
+    motion = solve(model.design, model.motion.crank_angle, model.rpms)
+    assert plots.plot_item("ram_v").vb.viewRange()[0] == pytest.approx([0.0, 360.0])
+    assert fits(plots, "ram_v", motion.ram_v)
+
+
+def wheel(qtbot, widget, name: str, where: str, steps: int) -> None:
+    """Turn the mouse wheel over plot ``name``: in the plot or over its left axis."""
+    from PySide6.QtGui import QWheelEvent
+    plot = widget.plot_item(name)
+    view = plot.scene().views()[0]
+    rect = plot.vb.sceneBoundingRect()
+    point = rect.center()
+    if where == "axis":          # over the tick labels, left of the plot area
+        point.setX(rect.left() - 20)
+    pos = view.mapFromScene(point)
+    event = QWheelEvent(QPointF(pos), QPointF(view.viewport().mapToGlobal(pos)), QPoint(0, 0),
+                        QPoint(0, 120 * steps), Qt.MouseButton.NoButton,
+                        Qt.KeyboardModifier.NoModifier, Qt.ScrollPhase.NoScrollPhase, False)
+    QApplication.sendEvent(view.viewport(), event)
+
+
+def test_wheel_zooms_x_over_the_plot_and_y_over_its_axis_then_double_click_fits(qtbot, plots, model):
+    vb_v, vb_a = plots.plot_item("ram_v").vb, plots.plot_item("ram_a").vb
+    x0, y0 = vb_v.viewRange()
+    wheel(qtbot, plots, "ram_v", "plot", 3)
+    x1, _ = vb_v.viewRange()
+    assert x1[1] - x1[0] < 0.9 * (x0[1] - x0[0])          # x zoomed in …
+    assert vb_a.viewRange()[0] == pytest.approx(x1)        # … in every plot (linked)
+    # y follows the visible part of the curves: within the x window, with a margin
+    inside = (np.degrees(model.motion.crank_angle) >= x1[0]) & (np.degrees(model.motion.crank_angle) <= x1[1])
+    ram_v = model.motion.ram_v[:, inside]
+    (_, _), (lo, hi) = vb_v.viewRange()
+    assert lo <= ram_v.min() and hi >= ram_v.max() and hi - lo < 1.5 * np.ptp(ram_v)
+    before_y_a = vb_a.viewRange()[1]
+    wheel(qtbot, plots, "ram_v", "axis", 3)               # over the y axis: y only
+    assert np.ptp(vb_v.viewRange()[1]) < 0.9 * (hi - lo)
+    assert vb_v.viewRange()[0] == pytest.approx(x1)
+    assert vb_a.viewRange()[1] == pytest.approx(before_y_a)
+    # double-click: everything back
+    view = plots.plot_item("ram_v").scene().views()[0]
+    pos = view.mapFromScene(vb_v.sceneBoundingRect().center())
+    # a real double click: press, release, double-click, release
+    qtbot.mouseClick(view.viewport(), Qt.MouseButton.LeftButton, pos=pos)
+    qtbot.mouseDClick(view.viewport(), Qt.MouseButton.LeftButton, pos=pos)
+    qtbot.mouseRelease(view.viewport(), Qt.MouseButton.LeftButton, pos=pos)
+    assert vb_v.viewRange()[0] == pytest.approx([0.0, 360.0])
+    assert fits(plots, "ram_v", model.motion.ram_v)
+
+
+def test_box_zoom_by_dragging_and_fit_button(qtbot, plots, model):
+    vb = plots.plot_item("ram_a").vb
+    view = vb.scene().views()[0]
+    start = view.mapFromScene(vb.mapViewToScene(QPointF(90.0, 0.0)))
+    end = view.mapFromScene(vb.mapViewToScene(QPointF(180.0, 2.0)))
+    qtbot.mousePress(view.viewport(), Qt.MouseButton.LeftButton, pos=start)
+    for k in range(1, 6):
+        qtbot.mouseMove(view.viewport(), start + (end - start) * k / 5)
+    qtbot.mouseRelease(view.viewport(), Qt.MouseButton.LeftButton, pos=end)
+    (x0, x1), (y0, y1) = vb.viewRange()
+    assert x0 == pytest.approx(90.0, abs=3.0) and x1 == pytest.approx(180.0, abs=3.0)
+    assert y0 == pytest.approx(0.0, abs=0.3) and y1 == pytest.approx(2.0, abs=0.3)
+    plots.stack().fit_action.trigger()
+    assert vb.viewRange()[0] == pytest.approx([0.0, 360.0])
+    assert fits(plots, "ram_a", model.motion.ram_a)
+
+
+@pytest.mark.parametrize("view", ["plots", "forces"])
+def test_right_click_opens_our_menu_never_pyqtgraphs(qtbot, request, view):
+    widget = request.getfixturevalue(view)
+    name = "ram_v" if view == "plots" else "torque"
+    vb = widget.plot_item(name).vb
+    assert vb.menu is None                                   # pyqtgraph's ViewBoxMenu never built
+    assert vb.scene().contextMenu == []                      # no "Export..." entry
+    menu = widget.stack()._menu
+    view_widget = vb.scene().views()[0]
+    pos = view_widget.mapFromScene(vb.sceneBoundingRect().center())
+    qtbot.mouseClick(view_widget.viewport(), Qt.MouseButton.RightButton, pos=pos)
+    qtbot.waitUntil(menu.isVisible, timeout=2000)
+    texts = [a.text() for a in menu.actions()]
+    assert widget.stack().fit_action.text() in texts
+    assert not any("Export" in t or "View All" in t for t in texts)
+    menu.close()
+
+
+def test_menu_is_translated(plots):
+    from shaperapp import i18n
+    try:
+        assert i18n.set_language("zh_CN")
+        QApplication.processEvents()
+        texts = [a.text() for a in plots.stack()._menu.actions()]
+        assert all(t and not t.isascii() for t in texts), texts
+    finally:
+        i18n.set_language("en")
+        QApplication.processEvents()
+    assert plots.stack().fit_action.text() == "Fit all"
+
+
+def text_rects(axis) -> list:
+    image = QImage(10, 10, QImage.Format.Format_ARGB32)
+    painter = QPainter(image)
+    try:
+        painter.setFont(axis.style["tickFont"] or painter.font())
+        _, _, texts = axis.generateDrawSpecs(painter)
+    finally:
+        painter.end()
+    return [rect for rect, _, _ in texts]
+
+
+def assert_no_overlap(rects) -> None:
+    for i, a in enumerate(rects):
+        for b in rects[i + 1:]:
+            assert not a.intersects(b), (a, b)
+
+
+@pytest.mark.parametrize("width", [260, 330, 420, 520, 700, 1000, 1500])
+def test_tick_labels_never_overlap(qtbot, model, width):
+    plots, forces = PlotsWidget(model), ForcePlots(model)
+    for widget, bottom in ((plots, "ram_a"), (forces, "force")):
+        qtbot.addWidget(widget)
+        widget.resize(width, 520)
+        widget.show()
+        qtbot.waitExposed(widget)
+        for mode in (("angle", "time") if widget is plots else ("angle",)):
+            if widget is plots:
+                widget.set_x_mode(mode)
+            QApplication.processEvents()
+            axis = widget.plot_item(bottom).getAxis("bottom")
+            rects = text_rects(axis)
+            assert len(rects) >= 2, (width, mode)
+            assert_no_overlap(rects)
+            for name in ("ram_v",) if widget is plots else ("torque", "power"):
+                assert_no_overlap(text_rects(widget.plot_item(name).getAxis("left")))
+
+
+def test_cursor_marks_each_speeds_value(plots, model):
+    model.set_rpms([30, 45, 90])
+    model.set_angle_index(123)
+    motion = solve(model.design, model.motion.crank_angle, model.rpms)
+    phi = math.degrees(model.motion.crank_angle[123])
+    dots = plots.cursor_dots("ram_v")
+    assert [label for label, _, _ in dots] == ["30 r/min", "45 r/min", "90 r/min"]
+    for (_, x, y), expected in zip(dots, motion.ram_v[:, 123]):
+        assert x == pytest.approx(phi) and y == pytest.approx(expected, rel=1e-9, abs=1e-12)
+    assert plots.cursor_values("ram_v") == [pytest.approx(phi)]
+
+
+def test_time_mode_has_a_cursor_per_speed(plots, model):
+    model.set_rpms([30, 45, 90])
+    plots.set_x_mode("time")
+    model.set_angle_index(200)
+    omega = np.array([30, 45, 90]) * 2.0 * math.pi / 60.0
+    times = math.radians(200.0) / omega                    # 1° grid: index 200 is 200°
+    for name in ("ram_x", "ram_v", "ram_a"):
+        assert plots.cursor_values(name) == pytest.approx(list(times))
+    motion = solve(model.design, model.motion.crank_angle, model.rpms)
+    for (_, x, y), t, v in zip(plots.cursor_dots("ram_v"), times, motion.ram_v[:, 200]):
+        assert x == pytest.approx(t) and y == pytest.approx(v, rel=1e-9, abs=1e-12)
+
+
+def hover(qtbot, widget, name: str, x: float) -> None:
+    plot = widget.plot_item(name)
+    view = plot.scene().views()[0]
+    (_, _), (y0, y1) = plot.vb.viewRange()
+    pos = view.mapFromScene(plot.vb.mapViewToScene(QPointF(x, (y0 + y1) / 2)))
+    qtbot.mouseMove(view.viewport(), pos)
+
+
+def test_readout_refreshes_after_a_design_change(qtbot, plots, model):
+    hover(qtbot, plots, "ram_v", 100.2)
+    qtbot.waitUntil(lambda: "100." in plots.readout_text())
+    model.set_spec(time_ratio=1.6)                      # the mouse has not moved
+    assert model.error is None
+    motion = solve(model.design, model.motion.crank_angle, model.rpms)
+    text = plots.readout_text()
+    for row in motion.ram_v:
+        assert f"{fmt(row[100], '.4g')} m/s" in text
+
+
+def test_readout_follows_the_cursor_when_the_mouse_is_away(qtbot, forces, model):
+    model.set_angle_index(0)
+    qtbot.wait(150)
+    model.set_angle_index(75)
+    qtbot.waitUntil(lambda: "75.0" in forces.readout_text(), timeout=2000)
+    from core.dynamics import solve_dynamics
+    dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms, model.masses)
+    for row in dyn.crank_torque:
+        assert f"{fmt(row[75], '.4g')} N·m" in forces.readout_text()
+
+
+def test_readout_never_shows_negative_zero(qtbot, plots, model):
+    model.set_angle_index(5)
+    qtbot.wait(150)
+    model.set_angle_index(0)               # a limit position: v is ±1e-17 in core
+    qtbot.waitUntil(lambda: "0.0°" in plots.readout_text(), timeout=2000)
+    assert "-0 " not in plots.readout_text() and "-0." not in plots.readout_text()
+
+
+def test_legend_click_hides_a_speed_everywhere(qtbot, plots, model):
+    model.set_rpms([30, 45, 90])
+    legend = plots.stack().legend("main")
+    sample = legend._legend.items[1][0]
+    view = plots.plot_item("ram_v").scene().views()[0]
+    qtbot.mouseClick(view.viewport(), Qt.MouseButton.LeftButton,
+                     pos=view.mapFromScene(sample.sceneBoundingRect().center()))
+    for name in ("ram_x", "ram_v", "ram_a"):
+        shown = [c.label for c in plots.stack().plot(name).shown_curves()]
+        assert shown == ["30 r/min", "90 r/min"]
+        assert [label for label, _, _ in plots.cursor_dots(name)] == ["30 r/min", "90 r/min"]
+    model.set_spec(time_ratio=1.5)                       # stays hidden after a redraw
+    assert [c.label for c in plots.stack().plot("ram_v").shown_curves()] == ["30 r/min", "90 r/min"]

@@ -1,0 +1,86 @@
+"""Scheme label defects of issue 8: "L1 = 100.0" sat on the lever, force labels collided
+with "L3 = …", and "-0.000" showed at φ = 0. Link positions come from core's shape."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from shaperapp.animation import AnimationBar
+from shaperapp.style import fmt
+
+
+def box_hits_segment(box, p, q, margin: float) -> bool:
+    """Does the segment p–q come within ``margin`` of the box (left, right, bottom, top)?
+    Checked on 400 points along it (dense against the box sizes here)."""
+    left, right, bottom, top = box
+    t = np.linspace(0.0, 1.0, 400)[:, None]
+    pts = p + t * (q - p)
+    return bool(np.any((pts[:, 0] > left - margin) & (pts[:, 0] < right + margin)
+                       & (pts[:, 1] > bottom - margin) & (pts[:, 1] < top + margin)))
+
+
+@pytest.mark.parametrize("spec", [{}, {"time_ratio": 1.8, "crank": 80.0},
+                                  {"variant": "rod", "rod_ratio": 0.3}])
+def test_dimension_labels_never_on_a_moving_link(scheme, model, spec):
+    if spec:
+        model.set_spec(**spec)
+        assert model.error is None
+    sh, design = model.motion.shape, model.design
+    u = design.lever / 40.0
+    o2 = np.array([0.0, design.frame])
+    boxes = scheme.dimension_label_boxes()
+    assert set(boxes) == {"L1", "L2", "L3", "h", "H"}
+    for name, box in boxes.items():
+        for i in range(0, sh.phi.size, 3):
+            a, b = sh.crank_pin[:, i], sh.lever_tip[:, i]
+            # the lever body is 1.6 u wide, the crank 1.1 u
+            assert not box_hits_segment(box, np.zeros(2), b, 0.8 * u), (name, i)
+            assert not box_hits_segment(box, o2, a, 0.55 * u), (name, i)
+
+
+def test_l1_label_names_the_crank(scheme, model):
+    assert any(text == f"L1 = {model.design.crank:.1f}" for text in scheme.dimension_labels())
+
+
+@pytest.mark.parametrize("variant", ["block", "rod"])
+def test_force_labels_keep_off_dimension_labels_and_each_other(scheme, model, variant):
+    if variant == "rod":
+        model.set_spec(variant="rod", rod_ratio=0.3)
+    scheme.set_forces_visible(True)
+    dims = scheme.dimension_label_boxes()
+    checked = 0
+    for index in range(0, model.angle_count, 6):
+        model.set_angle_index(index)
+        labels = scheme.force_label_boxes()
+        checked += len(labels)
+        for name, box in labels.items():
+            for dim, other in dims.items():
+                overlap = (box[0] < other[1] and other[0] < box[1]
+                           and box[2] < other[3] and other[2] < box[3])
+                assert not overlap, (index, name, dim)
+        values = list(labels.values())
+        for i, a in enumerate(values):
+            for b in values[i + 1:]:
+                assert not (a[0] < b[1] and b[0] < a[1] and a[2] < b[3] and b[2] < a[3])
+    assert checked > 100                       # labels were really drawn and checked
+
+
+def test_fmt_never_writes_negative_zero():
+    assert fmt(-1e-17, ".3f") == "0.000"
+    assert fmt(-0.0, ".1f") == "0.0"
+    assert fmt(-0.0004, ".3f") == "0.000"
+    assert fmt(-0.0005001, ".3f") == "-0.001"
+    assert fmt(-2.5, ".2f") == "-2.50"
+    assert fmt(-1.2e-17, ".4g") == "-1.2e-17"      # not rounded away: a real value
+
+
+def test_animation_readout_at_a_limit_position_has_no_negative_zero(qtbot, model):
+    bar = AnimationBar(model)
+    qtbot.addWidget(bar)
+    model.set_rpms([30, 40, 60, 80])
+    model.set_angle_index(0)
+    assert np.all(np.abs(model.motion.ram_v[:, 0]) < 1e-12)       # v = 0 at the limit
+    from PySide6.QtWidgets import QLabel
+    texts = [label.text() for label in bar.findChildren(QLabel)]
+    assert "0.000" in texts
+    assert not any(t.startswith("-0.0") and float(t) == 0.0 for t in texts if t)
