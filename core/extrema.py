@@ -95,34 +95,155 @@ def grid_minimum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
 
 
 def bracket_root(fun: Callable[..., np.ndarray], lo: np.ndarray, hi: np.ndarray,
-                 args: Sequence[np.ndarray] = ()) -> np.ndarray:
+                 args: Sequence[np.ndarray] = (), iterations: int = 100) -> np.ndarray:
     """A zero of ``fun`` in each bracket [lo, hi] across which it changes sign (1-D arrays).
 
-    scipy's elementwise Chandrupatla root finder: superlinear on smooth
-    functions and, since the bracket always keeps the sign change, convergent
-    for any continuous one. Only the brackets still open are evaluated.
+    Chandrupatla's method (inverse quadratic interpolation when it is safe,
+    bisection otherwise), vectorized: superlinear on smooth functions and,
+    since the bracket always keeps the sign change, convergent for any
+    continuous one. Only the brackets still open are evaluated each step.
     """
-    from scipy.optimize import elementwise
+    x1, x2 = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    args = [np.broadcast_to(np.asarray(v), x1.shape) for v in args]
+    f1, f2 = fun(x1, *args), fun(x2, *args)
+    root = np.where(np.abs(f1) < np.abs(f2), x1, x2)
+    live = np.nonzero((f1 != 0.0) & (f2 != 0.0) & (np.sign(f1) != np.sign(f2)))[0]
+    x1, x2, f1, f2 = x1[live], x2[live], f1[live], f2[live]
+    x3, f3 = x2, f2
+    part = [v[live] for v in args]
+    t = np.full(live.size, 0.5)
+    for _ in range(iterations):
+        if live.size == 0:
+            break
+        xt = x1 + t * (x2 - x1)
+        ft = fun(xt, *part)
+        same = np.sign(ft) == np.sign(f1)
+        x3, f3 = np.where(same, x1, x2), np.where(same, f1, f2)
+        x2, f2 = np.where(same, x2, x1), np.where(same, f2, f1)
+        x1, f1 = xt, ft
+        small = np.abs(f1) < np.abs(f2)
+        root[live] = np.where(small, x1, x2)
+        tol = 4e-16 * np.abs(root[live]) + 1e-300
+        with np.errstate(all="ignore"):
+            tl = tol / np.abs(x2 - x1)
+            xi = (x1 - x2) / (x3 - x2)
+            ph = (f1 - f2) / (f3 - f2)
+            quad = (f1 / (f2 - f1)) * (f3 / (f2 - f3)) + \
+                ((x3 - x1) / (x2 - x1)) * (f1 / (f3 - f1)) * (f2 / (f3 - f2))
+        done = (tl > 0.5) | (f1 == 0.0) | ~np.isfinite(tl)
+        t = np.where((ph ** 2 < xi) & ((1.0 - ph) ** 2 < 1.0 - xi) & np.isfinite(quad), quad, 0.5)
+        t = np.clip(t, tl, 1.0 - tl)
+        keep = ~done
+        live, x1, x2, x3, f1, f2, f3, t = (v[keep] for v in (live, x1, x2, x3, f1, f2, f3, t))
+        part = [v[keep] for v in part]
+    return root
 
-    if np.size(lo) == 0:
-        return np.zeros(0)
-    res = elementwise.find_root(fun, (lo, hi), args=tuple(args),
-                                tolerances={"xrtol": 1e-13, "xatol": 1e-13})
-    return res.x
+
+def piece_maximum(fun: Callable[..., np.ndarray], x: np.ndarray, values: np.ndarray,
+                  lo: np.ndarray, hi: np.ndarray, args: Sequence[np.ndarray] = (),
+                  segments: Sequence[tuple[int, int, float]] | None = None, period: float = 0.0,
+                  candidates: int = CANDIDATES) -> np.ndarray:
+    """Largest value of each curve over its interval [lo, hi], without an analytic slope.
+
+    The curve ``fun(x, *args)`` is smooth on and beyond its interval (a piece
+    of a piecewise-smooth function, evaluated by that piece's formula), so a
+    sampled local maximum inside the interval is a valid three-point bracket
+    even next to an end. The best few are polished by :func:`polish_minimum`;
+    a polished maximum that lands outside the interval is dropped, and the
+    values at both ends count. With ``period`` the interval may wrap around.
+    Shapes: ``x``, ``values`` (…, n); ``lo``, ``hi`` (…,); args against (…, 1).
+    """
+    values = np.asarray(values, dtype=float)
+    lead, n = values.shape[:-1], values.shape[-1]
+    x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)
+    lo, hi = np.broadcast_to(lo, lead), np.broadcast_to(hi, lead)
+
+    def inside(t, a, b):
+        return (np.mod(t - a, period) <= np.mod(b - a, period)) if period > 0.0 else \
+            (t >= a) & (t <= b)
+
+    flat_args = [np.broadcast_to(a, lead + (1,)).reshape(lead) for a in args]
+    ends = fun(np.concatenate([lo.reshape(-1), hi.reshape(-1)]),
+               *[np.concatenate([a.reshape(-1)] * 2) for a in flat_args]).reshape((2,) + lead)
+    best = np.fmax(ends[0], ends[1])
+    best = np.fmax(best, np.max(np.where(inside(x, lo[..., None], hi[..., None]), values, -np.inf),
+                                axis=-1))
+    segments = [(0, n, 0.0)] if segments is None else list(segments)
+    brackets: list[list[np.ndarray]] = []
+    for start, stop, seg_period in segments:
+        seg_x, seg_v = x[..., start:stop], values[..., start:stop]
+        if seg_period > 0.0:
+            prev_x = np.concatenate([seg_x[..., -1:] - seg_period, seg_x[..., :-1]], axis=-1)
+            next_x = np.concatenate([seg_x[..., 1:], seg_x[..., :1] + seg_period], axis=-1)
+            prev_v, next_v = np.roll(seg_v, 1, axis=-1), np.roll(seg_v, -1, axis=-1)
+        else:
+            prev_x, next_x, prev_v, next_v = seg_x[..., :-2], seg_x[..., 2:], seg_v[..., :-2], seg_v[..., 2:]
+            seg_x, seg_v = seg_x[..., 1:-1], seg_v[..., 1:-1]
+        peak = (seg_v >= prev_v) & (seg_v >= next_v) & ((seg_v > prev_v) | (seg_v > next_v))
+        score = np.where(peak & inside(seg_x, lo[..., None], hi[..., None]), seg_v, -np.inf)
+        for j in range(min(candidates, score.shape[-1])):
+            i = np.argmax(score, axis=-1)[..., None]
+            real = np.isfinite(np.take_along_axis(score, i, axis=-1))[..., 0]
+            brackets.append([np.take_along_axis(a, i, axis=-1)[..., 0][real]
+                             for a in (prev_x, seg_x, next_x)]
+                            + [np.flatnonzero(real.reshape(-1))])
+            np.put_along_axis(score, i, -np.inf, axis=-1)
+    if brackets:
+        xl, xm, xr, owner = (np.concatenate(v) for v in zip(*brackets))
+        part = [a.reshape(-1)[owner] for a in flat_args]
+        at, value = polish_minimum(lambda t, *a: -fun(t, *a), xl, xm, xr, part)
+        keep = inside(at, lo.reshape(-1)[owner], hi.reshape(-1)[owner])
+        out = best.reshape(-1).copy()
+        np.fmax.at(out, owner[keep], -value[keep])
+        best = out.reshape(lead)
+    return best
+
+
+_GOLD = 0.3819660112501051   # 2 − golden ratio
 
 
 def polish_minimum(fun: Callable[..., np.ndarray], xl: np.ndarray, xm: np.ndarray,
-                   xr: np.ndarray, args: Sequence[np.ndarray] = ()) -> np.ndarray:
+                   xr: np.ndarray, args: Sequence[np.ndarray] = (),
+                   iterations: int = 100) -> tuple[np.ndarray, np.ndarray]:
     """A local minimum of ``fun`` inside each bracket xl < xm < xr (1-D arrays).
 
-    For curves without an analytic slope: scipy's elementwise Chandrupatla
-    minimizer on the function itself. Returns fun's value at the minimizer,
-    never more than fun(xm) (an invalid, flat bracket keeps fun(xm)).
+    For curves without an analytic slope: successive parabolic interpolation
+    through the bracket, with a golden-section step whenever the parabola's
+    vertex is not safely inside (Brent's rule, vectorized). The bracket keeps
+    f(xm) ≤ f(xl), f(xr) and shrinks every step. Returns the minimizer and
+    fun's value there.
     """
-    from scipy.optimize import elementwise
-
-    if xm.size == 0:
-        return np.zeros(0)
-    res = elementwise.find_minimum(fun, (xl, xm, xr), args=tuple(args),
-                                   tolerances={"xrtol": 1e-10, "frtol": 1e-13})
-    return np.fmin(res.f_x, fun(xm, *args))
+    a, m, b = (np.array(v, dtype=float) for v in (xl, xm, xr))
+    args = [np.broadcast_to(np.asarray(v), m.shape) for v in args]
+    fa, fm, fb = fun(a, *args), fun(m, *args), fun(b, *args)
+    at, value = m.copy(), fm.copy()
+    live = np.nonzero((fm <= fa) & (fm <= fb) & np.isfinite(fm))[0]
+    a, m, b, fa, fm, fb = (v[live] for v in (a, m, b, fa, fm, fb))
+    part = [v[live] for v in args]
+    for _ in range(iterations):
+        if live.size == 0:
+            break
+        with np.errstate(all="ignore"):
+            p = (m - a) ** 2 * (fm - fb) - (m - b) ** 2 * (fm - fa)
+            q = (m - a) * (fm - fb) - (m - b) * (fm - fa)
+            u = m - 0.5 * p / q
+        tol = 1e-10 * np.abs(m) + 1e-14
+        right = (b - m) > (m - a)
+        golden = np.where(right, m + _GOLD * (b - m), m - _GOLD * (m - a))
+        safe = np.isfinite(u) & (u > a + tol) & (u < b - tol) & (np.abs(u - m) > tol)
+        u = np.where(safe, u, golden)
+        fu = fun(u, *part)
+        lower = fu < fm
+        left_of = u < m
+        # New bracket: around u if it is lower, else u becomes the end on its side.
+        a, fa, b, fb = (np.where(lower, np.where(left_of, a, m), np.where(left_of, u, a)),
+                        np.where(lower, np.where(left_of, fa, fm), np.where(left_of, fu, fa)),
+                        np.where(lower, np.where(left_of, m, b), np.where(left_of, b, u)),
+                        np.where(lower, np.where(left_of, fm, fb), np.where(left_of, fb, fu)))
+        m, fm = np.where(lower, u, m), np.where(lower, fu, fm)
+        at[live], value[live] = m, fm
+        done = (b - a) <= 4.0 * tol
+        keep = ~done
+        live, a, m, b, fa, fm, fb = (v[keep] for v in (live, a, m, b, fa, fm, fb))
+        part = [v[keep] for v in part]
+    return at, value

@@ -244,6 +244,24 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     return Rates(ram.ram1, ram.ram2, bx3 + design.rod_sign * r3)
 
 
+# Offsets (rad) of samples crowding geometrically toward the angles where a rod variant's
+# curves can change sharply (see sharp_angles), down to ~1e-5 rad.
+CROWD_OFFSETS = np.concatenate([-(0.05 * 5.0 ** -np.arange(0, 7)), [0.0],
+                                (0.05 * 5.0 ** -np.arange(0, 7))[::-1]])
+
+
+def sharp_angles(design: Design | Designs) -> np.ndarray:
+    """Crank angles φ (rad) of the two dead points and of the lever's two vertical
+    crossings (ψ = 0), shape design + (4,).
+
+    The rod's rise |d| = |guide − L3·cos ψ| is monotonic in |ψ|, so its reach
+    sqrt(L4² − d²) is smallest, and the rod variant's velocity, acceleration
+    and forces can change sharply, only at these angles.
+    """
+    half = np.asarray(design.theta)[..., None] / 2.0
+    return np.array([0.0, math.pi, math.pi / 2.0, 1.5 * math.pi]) + np.array([0.0, 2.0, 1.0, 1.0]) * half
+
+
 def pressure_angle(rod_angle: np.ndarray) -> np.ndarray:
     """Angle between the rod line and the ram guide (0 … π/2), whichever way the rod points, rad."""
     return np.abs(np.arctan(np.tan(rod_angle)))

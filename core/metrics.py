@@ -18,7 +18,7 @@ import numpy as np
 from .designs import Designs
 from .extrema import bracket_root, grid_maximum
 from .geometry import Design
-from .kinematics import check_rpms, pressure_angle, ram_origin, rates_at, rpm_to_omega, shape_at
+from .kinematics import CROWD_OFFSETS, check_rpms, pressure_angle, ram_origin, rates_at, rpm_to_omega, shape_at
 
 
 @dataclass(frozen=True)
@@ -89,14 +89,12 @@ class CyclePeaks:
         return self.ram_max_mm - self.ram_min_mm
 
 
-# Uniform samples of the crank direction β per cycle, shared by every design, and the
-# offsets (rad) of the samples crowding toward the four angles where a rod variant's
-# curves can have narrow features (see cycle_peaks).
+# Uniform samples of the crank direction β per cycle, shared by every design; the rod
+# variant adds samples crowding toward its sharp angles (kinematics.sharp_angles).
 SAMPLES = 64
 _STEP = 2.0 * math.pi / SAMPLES
 _BETA = (np.arange(SAMPLES) + 0.5) * _STEP
-_CROWD = (_STEP / 2.0) * 5.0 ** -np.arange(0, 7)
-_OFFSETS = np.concatenate([-_CROWD, [0.0], _CROWD[::-1]])
+_OFFSETS = CROWD_OFFSETS
 CHUNK = 2048
 
 
