@@ -39,40 +39,35 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
     """
     values = np.asarray(values, dtype=float)
     lead, n = values.shape[:-1], values.shape[-1]
-    x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)
+    x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)     # a view: never copied
     slopes = np.broadcast_to(slopes, values.shape)
     segments = [(0, n, 0.0)] if segments is None else list(segments)
     best = np.max(values, axis=-1)
-    picks_lo, picks_hi, picks_args = [], [], []
+    los, his, owners = [], [], []
     for start, stop, period in segments:
-        seg_x, seg_v, seg_s = (a[..., start:stop] for a in (x, values, slopes))
+        v, s = values[..., start:stop], slopes[..., start:stop]
+        m = stop - start
+        # Cell j lies between samples j and j + 1 (the last wraps to the first if periodic).
+        score = np.where((s[..., :-1] > 0.0) & (s[..., 1:] <= 0.0), v[..., :-1], -np.inf)
         if period > 0.0:
-            next_x = np.concatenate([seg_x[..., 1:], seg_x[..., :1] + period], axis=-1)
-            next_v, next_s = np.roll(seg_v, -1, axis=-1), np.roll(seg_s, -1, axis=-1)
-        else:
-            next_x, next_v, next_s = seg_x[..., 1:], seg_v[..., 1:], seg_s[..., 1:]
-            seg_x, seg_v, seg_s = seg_x[..., :-1], seg_v[..., :-1], seg_s[..., :-1]
-        if seg_x.shape[-1] == 0:
-            continue
-        turn = (seg_s > 0.0) & (next_s <= 0.0)
-        score = np.where(turn, np.maximum(seg_v, next_v), -np.inf)
-        picks, found = [], []
-        for j in range(min(candidates, score.shape[-1])):   # the best few, by repeated argmax
-            best_i = np.argmax(score, axis=-1)[..., None]
-            picks.append(best_i)
-            found.append(np.isfinite(np.take_along_axis(score, best_i, axis=-1)))
-            if j + 1 < candidates:
-                np.put_along_axis(score, best_i, -np.inf, axis=-1)
-        pick, real = np.concatenate(picks, axis=-1), np.concatenate(found, axis=-1)
-        index = np.nonzero(real)
-        flat_pick = pick[index]
-        picks_lo.append(seg_x[index[:-1] + (flat_pick,)])
-        picks_hi.append(next_x[index[:-1] + (flat_pick,)])
-        picks_args.append(np.ravel_multi_index(index[:-1], lead) if lead else
-                          np.zeros(flat_pick.size, dtype=int))
-    if not picks_lo:
+            wrap = (s[..., -1:] > 0.0) & (s[..., :1] <= 0.0)
+            score = np.concatenate([score, np.where(wrap, v[..., -1:], -np.inf)], axis=-1)
+        for k in range(min(candidates, score.shape[-1])):   # the best few, by repeated argmax
+            j = np.argmax(score, axis=-1)[..., None]
+            found = np.isfinite(np.take_along_axis(score, j, axis=-1))[..., 0]
+            if k + 1 < candidates:
+                np.put_along_axis(score, j, -np.inf, axis=-1)
+            index = np.nonzero(found)
+            cell = j[..., 0][index]
+            inner = cell + 1 < m
+            los.append(x[index + (start + cell,)])
+            his.append(x[index + (start + np.where(inner, cell + 1, 0),)]
+                       + np.where(inner, 0.0, period))
+            owners.append(np.ravel_multi_index(index, lead) if lead else
+                          np.zeros(cell.size, dtype=int))
+    if not los:
         return best
-    lo, hi, owner = (np.concatenate(v) for v in (picks_lo, picks_hi, picks_args))
+    lo, hi, owner = (np.concatenate(v) for v in (los, his, owners))
     flat_args = [np.broadcast_to(a, lead + (1,)).reshape(-1)[owner] for a in args]
     slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
     root = bracket_root(slope, lo, hi, flat_args)

@@ -94,6 +94,10 @@ class CyclePeaks:
 SAMPLES = 64
 _STEP = 2.0 * math.pi / SAMPLES
 _BETA = (np.arange(SAMPLES) + 0.5) * _STEP
+# Four times as dense, for a crank longer than FINE_ABOVE·L2 (K ≳ 2.2), whose lever turns
+# sharply on the return stroke: features there are ~(1 − λ)/√λ rad wide, λ = L1/L2.
+_BETA_FINE = (np.arange(4 * SAMPLES) / 4.0 + 0.5) * _STEP
+FINE_ABOVE = 0.6
 _OFFSETS = CROWD_OFFSETS
 CHUNK = 2048
 
@@ -145,20 +149,61 @@ def _pick(quantity, r):
     return sign * r.ram1 + size * r.ram2, -sign * r.ram2 - size * r.ram3
 
 
+# A rod whose reach sqrt(L4² − d²) stays above this fraction of L4 at every sharp angle
+# moves smoothly on the scale of the uniform samples; below it, samples crowd there.
+CROWD_BELOW = 0.2
+
+
 def _chunk_peaks(d: Designs) -> CyclePeaks:
     col = d.column()
-    samples = [rates_at(col, np.cos(_BETA), np.sin(_BETA))]
-    segments = [(0, SAMPLES, 2.0 * math.pi)]
-    beta = [np.broadcast_to(_BETA, samples[0].ram1.shape)]
     special_cos, special_sin = _specials(d)
+    pressure = None
+    crowd = np.zeros(d.crank.shape, dtype=bool)
     if d.rod is not None:
+        at = shape_at(col, np.zeros((1, 4)), special_cos, special_sin)
+        pressure = pressure_angle(at.rod).max(axis=-1)
+        crowd = np.abs(np.cos(at.rod)).min(axis=-1) < CROWD_BELOW      # r/L4 = |cos λ|
+    fine = d.crank / d.frame > FINE_ABOVE
+    peaks = np.empty((3,) + d.crank.shape)
+    ram1 = np.empty(d.crank.shape + (SAMPLES,))
+    for dense in (False, True):
+        for crowded in (False, True):
+            group = (fine == dense) & (crowd == crowded)
+            if group.any():
+                specials = (special_cos[group], special_sin[group]) if crowded else None
+                peaks[:, group], ram1[group] = _ram_peaks(d.take(group), dense, specials)
+    start, end = _dead_points(d, ram1)
+    # Positions at the dead points, from the φ = 0 position (the displacement's zero).
+    phi = np.stack([start, end], axis=-1)
+    beta_ends = math.pi + (d.theta / 2.0)[:, None] - phi
+    ends = shape_at(col, phi, np.cos(beta_ends), np.sin(beta_ends))
+    x_ends = ends.ram_joint[0] - ram_origin(d)[:, None]
+    lever1, lever2 = lever_peaks(d.crank / d.frame)
+    return CyclePeaks(work_start=start, work_end=end, ram_min_mm=x_ends.min(axis=-1),
+                      ram_max_mm=x_ends.max(axis=-1), v_work=peaks[0], v_return=peaks[1],
+                      a_max=peaks[2], lever1_max=lever1, lever2_max=lever2,
+                      pressure_max=pressure)
+
+
+def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray]:
+    """Max dCx/dφ, max −dCx/dφ and max |d²Cx/dφ²| (3, designs), and dCx/dφ at the
+    uniform samples ``_BETA``. ``fine`` samples four times as densely (every fourth sample
+    is one of ``_BETA``); with ``specials`` (cos β, sin β of the sharp angles) samples also
+    crowd toward those angles."""
+    col = d.column()
+    uniform = _BETA_FINE if fine else _BETA
+    samples = [rates_at(col, np.cos(uniform), np.sin(uniform))]
+    segments = [(0, uniform.size, 2.0 * math.pi)]
+    beta = [np.broadcast_to(uniform, samples[0].ram1.shape)]
+    if specials is not None:
         # Crowded samples: β = β_s + δ with cos/sin by angle addition (exact at δ = 0).
+        special_cos, special_sin = specials
         cd, sd = np.cos(_OFFSETS), np.sin(_OFFSETS)
         base = np.arctan2(special_sin, special_cos)
         for j in range(4):
             c0, s0 = special_cos[:, j:j + 1], special_sin[:, j:j + 1]
             samples.append(rates_at(col, c0 * cd - s0 * sd, s0 * cd + c0 * sd))
-            start = SAMPLES + j * _OFFSETS.size
+            start = uniform.size + j * _OFFSETS.size
             segments.append((start, start + _OFFSETS.size, 0.0))
             beta.append(base[:, j:j + 1] + _OFFSETS)
     rates = type(samples[0])(*(np.concatenate(v, axis=-1) for v in zip(*samples)))
@@ -169,24 +214,10 @@ def _chunk_peaks(d: Designs) -> CyclePeaks:
     args = (quantity,) + tuple(v[None] for v in (col.crank, col.frame, col.lever, col.guide,
                                                  col.crank if d.rod is None else col.rod))
     side = None if d.rod is None else d.rod_side
-    peaks = grid_maximum(lambda x, *a: _ram_curves(x, *a, side=side),
-                         np.concatenate(beta, axis=-1)[None], values, slopes,
+    x = np.concatenate(beta, axis=-1)[None] if len(beta) > 1 else uniform
+    peaks = grid_maximum(lambda t, *a: _ram_curves(t, *a, side=side), x, values, slopes,
                          args=args, segments=segments)
-    start, end = _dead_points(d, samples[0].ram1)
-    # Positions at the dead points, from the φ = 0 position (the displacement's zero).
-    phi = np.stack([start, end], axis=-1)
-    beta_ends = math.pi + (d.theta / 2.0)[:, None] - phi
-    ends = shape_at(col, phi, np.cos(beta_ends), np.sin(beta_ends))
-    x_ends = ends.ram_joint[0] - ram_origin(d)[:, None]
-    pressure = None
-    if d.rod is not None:
-        at = shape_at(col, np.zeros((1, 4)), special_cos, special_sin)
-        pressure = pressure_angle(at.rod).max(axis=-1)
-    lever1, lever2 = lever_peaks(d.crank / d.frame)
-    return CyclePeaks(work_start=start, work_end=end, ram_min_mm=x_ends.min(axis=-1),
-                      ram_max_mm=x_ends.max(axis=-1), v_work=peaks[0], v_return=peaks[1],
-                      a_max=peaks[2], lever1_max=lever1, lever2_max=lever2,
-                      pressure_max=pressure)
+    return peaks, samples[0].ram1[..., ::4] if fine else samples[0].ram1
 
 
 def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -18,11 +18,11 @@ from types import ModuleType
 from typing import Sequence
 
 from ..errors import DesignError, FileFormatError
-from .common import (OutputError, Parser, UsageError, fail, install_safe_output, option_name,
-                     version_text)
+from .common import (OutputError, Parser, UsageError, design_error_text, fail,
+                     install_safe_output, version_text)
 
 # Order is the order of ``shaper --help``.
-CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics")
+CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "sweep", "optimize")
 
 
 def _command_modules() -> dict[str, ModuleType]:
@@ -73,7 +73,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except UsageError as exc:
         return fail(str(exc))
     except DesignError as exc:
-        return fail(f"{option_name(exc.parameter)}: {exc.allowed} (got {_value(exc.value)})")
+        return fail(design_error_text(exc))
     except FileFormatError as exc:
         return fail(f"--design: {exc}")
     except OutputError as exc:
@@ -90,11 +90,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         return fail("interrupted", status=130)
     except Exception as exc:  # never a traceback; the one line says what broke
         return fail(f"internal error ({type(exc).__name__}: {exc}); please report it", status=1)
-
-
-def _value(value: object) -> str:
-    text = str(value)
-    return text if len(text) <= 60 else text[:57] + "..."
 
 
 if __name__ == "__main__":

@@ -95,6 +95,13 @@ def option_name(parameter: str) -> str:
     return OPTION_NAMES.get(parameter, "--" + parameter.replace("_", "-"))
 
 
+def design_error_text(exc: DesignError) -> str:
+    """The one line a bad design gets: the option, what is allowed, and the value given."""
+    text = str(exc.value)
+    text = text if len(text) <= 60 else text[:57] + "..."
+    return f"{option_name(exc.parameter)}: {exc.allowed} (got {text})"
+
+
 def fail(message: str, status: int = 2) -> int:
     try:
         print(f"shaper: error: {message}", file=sys.stderr)

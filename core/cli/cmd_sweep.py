@@ -1,0 +1,173 @@
+"""``shaper sweep``: the figures of a whole family of designs, one row per design."""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+from typing import Any
+
+import numpy as np
+
+from ..errors import DesignError
+from ..spec import Spec
+from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
+from .common import (LOAD_OPTIONS, UsageError, add_design_options, add_load_options,
+                     add_speed_options, design_error_text, design_file, masses_from_args, number,
+                     rpms_from_args, spec_from_args, write_output)
+
+HELP = "figures of many designs over varied parameters"
+DESCRIPTION = ("Vary one or more design parameters over a range and report, for every combination, "
+               "whether the design is valid (and why not), its measured K and stroke, maximum "
+               "cutting and return speed and acceleration per crank speed, maximum pressure angle "
+               "and, with loads, mean and peak crank torque and flywheel per speed. Every peak is "
+               "an exact extremum of the closed-form motion. NAME is one of "
+               + ", ".join(PARAMETERS) + " (guide: height above O4 in mm).")
+EXAMPLES = ("shaper sweep --crank 100 --K 1.46 --stroke 312 --rod-ratio 0.3 "
+            "--vary rod-ratio=0.2:1:9 --vary guide=450:700:6 --rpm 40 --csv -",
+            "shaper sweep --dims 100,386.37,579.56 --vary crank=80:120:5 --json")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser)
+    parser.add_argument("--vary", action="append", metavar="NAME=LO:HI:COUNT", required=True,
+                        help="a parameter and its range (COUNT evenly spaced values); repeat to "
+                             "vary several (every combination, the first varying slowest)")
+    add_speed_options(parser)
+    add_load_options(parser, required=False)
+    out = parser.add_mutually_exclusive_group()
+    out.add_argument("--csv", metavar="FILE|-", help="write CSV to FILE or stdout (the default)")
+    out.add_argument("--json", action="store_true", help="print JSON, one object per design")
+
+
+def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tuple]:
+    """``NAME=LO:HI[:COUNT]`` options → {typed name: (low, high[, count])}, in order."""
+    out: dict[str, tuple] = {}
+    shape = "NAME=LO:HI:COUNT" if with_count else "NAME=LO:HI"
+    for text in texts:
+        name, sep, rest = text.partition("=")
+        parts = rest.split(":")
+        if not sep or len(parts) != (3 if with_count else 2):
+            raise DesignError("vary", text, f"must be {shape}")
+        check_vary(name, spec)
+        if name in out:
+            raise DesignError("vary", text, f"varies {name} twice")
+        low, high = number("vary", parts[0]), number("vary", parts[1])
+        if high < low:
+            raise DesignError("vary", text, "needs LO ≤ HI")
+        if with_count:
+            try:
+                count = int(parts[2])
+            except ValueError:
+                raise DesignError("vary", text, "COUNT must be a whole number") from None
+            if not 1 <= count <= MAX_COUNT or (count == 1 and high != low):
+                raise DesignError("vary", text, f"COUNT must be 2 to {MAX_COUNT} (1 when LO = HI)")
+            out[name] = (low, high, count)
+        else:
+            out[name] = (low, high)
+    if "rod" in out and "rod-ratio" in out:
+        raise DesignError("vary", "rod", "vary either rod or rod-ratio, not both")
+    return out
+
+
+def loads_given(args: argparse.Namespace) -> bool:
+    doc = design_file(args)
+    return (any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS)
+            or args.no_gravity or (doc is not None and doc.get("masses") is not None))
+
+
+class _Variant:
+    """Just enough of a design for ``masses_from_args`` (it only asks for the variant)."""
+
+    def __init__(self, spec: Spec, varied: dict[str, tuple]) -> None:
+        rod = spec.variant == "rod" or "rod" in varied or "rod-ratio" in varied
+        self.rod = 1.0 if rod else None
+
+
+def figure_columns(ev: Evaluation) -> list[tuple[str, np.ndarray]]:
+    """(column, values) of every figure, per design; NaN where undefined."""
+    several = ev.rpm.size > 1
+    tag = (lambda rpm: f"@{rpm:g}") if several else (lambda rpm: "")
+    cols: list[tuple[str, np.ndarray]] = [
+        ("K", ev.peaks.time_ratio), ("stroke_mm", ev.peaks.stroke_mm),
+        ("theta_deg", np.where(ev.valid.reshape(-1), np.degrees(ev.designs.theta), np.nan))]
+    for key in ("v_work_max_m_s", "v_return_max_m_s", "a_max_m_s2"):
+        cols += [(key + tag(r), ev.figures[key][:, j]) for j, r in enumerate(ev.rpm)]
+    pressure = ev.peaks.pressure_max
+    cols.append(("pressure_angle_max_deg",
+                 np.degrees(pressure) if pressure is not None else np.full(ev.valid.size, np.nan)))
+    if ev.dynamics is not None:
+        for key in ("mean_torque_N_m", "max_torque_N_m", "flywheel_inertia_kg_m2"):
+            cols += [(key + tag(r), ev.dynamics[key][:, j]) for j, r in enumerate(ev.rpm)]
+    return cols
+
+
+def varied_column(name: str) -> str:
+    """The column of a varied parameter: its name as typed; K is ``K_nominal`` beside the
+    measured ``K``."""
+    return "K_nominal" if name == "K" else name
+
+
+def reasons(ev: Evaluation) -> list[str]:
+    """One line per design, "" when valid, else the CLI's message for that design alone."""
+    out = [""] * ev.valid.size
+    for i in np.flatnonzero(~ev.valid.reshape(-1)):
+        out[i] = design_error_text(ev.error(int(i)))  # type: ignore[arg-type]
+    return out
+
+
+def sweep_csv(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> str:
+    cols = [(varied_column(n), values[PARAMETERS[n]]) for n in names] + figure_columns(ev)
+    header = [c for c, _ in cols[:len(names)]] + ["valid", "reason"] + [c for c, _ in cols[len(names):]]
+    text = [_format(v) for _, v in cols]
+    valid = np.where(ev.valid.reshape(-1), "true", "false")
+    why = [_quote(r) for r in reasons(ev)]
+    lines = [",".join(header)]
+    k = len(names)
+    for i in range(valid.size):
+        lines.append(",".join([t[i] for t in text[:k]] + [valid[i], why[i]] + [t[i] for t in text[k:]]))
+    return "\n".join(lines) + "\n"
+
+
+def sweep_json(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> list[dict[str, Any]]:
+    cols = figure_columns(ev)
+    why = reasons(ev)
+    valid = ev.valid.reshape(-1)
+    rows = []
+    for i in range(valid.size):
+        row: dict[str, Any] = {varied_column(n): float(values[PARAMETERS[n]][i]) for n in names}
+        row.update(valid=bool(valid[i]), reason=why[i])
+        row.update({c: _number(v[i]) for c, v in cols})
+        rows.append(row)
+    return rows
+
+
+def _format(values: np.ndarray) -> list[str]:
+    return ["" if not math.isfinite(v) else f"{v:.10g}" for v in np.asarray(values, dtype=float)]
+
+
+def _number(value: float) -> float | None:
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def _quote(text: str) -> str:
+    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+
+def run(args: argparse.Namespace) -> int:
+    spec = spec_from_args(args)
+    varied = parse_vary(args.vary, spec, with_count=True)
+    rpms = rpms_from_args(args)
+    masses = masses_from_args(args, _Variant(spec, varied), required=False) \
+        if loads_given(args) else None  # type: ignore[arg-type]
+    values = grid({PARAMETERS[n]: r for n, r in varied.items()})
+    ev = evaluate(spec, values, rpms, masses)
+    names = list(varied)
+    if args.json:
+        print(json.dumps(sweep_json(names, values, ev), indent=1, allow_nan=False))
+        return 0
+    write_output("--csv", args.csv or "-", sweep_csv(names, values, ev))
+    return 0
+
+
+__all__ = ["configure", "run", "parse_vary", "figure_columns", "loads_given", "UsageError"]
