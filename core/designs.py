@@ -213,10 +213,11 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         frame = crank / half
         lever = stroke / (2.0 * half)
         need = 2.0 * (crank + frame) * half
+        too_short = lever < crank + frame
     verdict.check("time_ratio", half < smallest, time_ratio,
                   lambda i: f"must be ≥ {round_text(_flat(k_min, shape)[i])} for this crank and "
                             f"stroke, so that the frame and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
-    verdict.check("stroke", lever < crank + frame, stroke,
+    verdict.check("stroke", too_short, stroke,
                   lambda i: f"must be ≥ {_flat(need, shape)[i]:.1f} mm for this crank and K, "
                             "so that the crank pin stays on the lever")
     values = iter(extra)
@@ -282,7 +283,8 @@ def _rod_length(verdict: Verdict, rod, rod_ratio, lever: np.ndarray) -> np.ndarr
                           "must be given either as a length or as a ratio L4/L3, not both")
     if rod_ratio is not None:
         check_range(verdict, "rod_ratio", rod_ratio, 0.0, MAX_ROD_RATIO)
-        return rod_ratio * lever
+        with np.errstate(all="ignore"):
+            return rod_ratio * lever
     if rod is not None:
         check_length(verdict, "rod", rod)
         return rod
@@ -294,7 +296,9 @@ def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) ->
     shape = verdict.failed.shape
     verdict.check("crank", crank >= frame, crank,
                   lambda i: f"must be shorter than the frame O2O4 ({_flat(frame, shape)[i]:.6g} mm)")
-    verdict.check("crank", crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12), crank,
+    with np.errstate(all="ignore"):
+        too_long = crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12)
+    verdict.check("crank", too_long, crank,
                   lambda i: f"must be ≤ {round_text(MAX_CRANK_RATIO * _flat(frame, shape)[i], down=True)}"
                             f" mm (0.866·L2), so that the time ratio K stays ≤ {MAX_TIME_RATIO:g}")
 
