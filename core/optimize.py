@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -61,9 +62,18 @@ def objective_of(evaluation: Evaluation, objective: str) -> np.ndarray:
     return np.where(evaluation.valid.reshape(-1) & np.isfinite(value), value, np.inf)
 
 
+class Cancelled(Exception):
+    """``should_stop`` asked the search to stop."""
+
+
 def optimize(spec: Spec, bounds: dict[str, tuple[float, float]], objective: str, rpms,
-             masses: MassProperties | None = None, seed: int = 1) -> Optimum:
-    """Minimize ``objective`` over the varied core parameters within ``bounds`` (low, high)."""
+             masses: MassProperties | None = None, seed: int = 1,
+             should_stop: Callable[[], bool] | None = None) -> Optimum:
+    """Minimize ``objective`` over the varied core parameters within ``bounds`` (low, high).
+
+    ``should_stop`` is asked before every batch of evaluations; when it returns
+    true the search raises :class:`Cancelled` (a GUI's Cancel button).
+    """
     if objective not in OBJECTIVES:
         raise DesignError("objective", objective, "must be one of " + ", ".join(OBJECTIVES))
     if OBJECTIVES[objective][2] and masses is None:
@@ -75,6 +85,8 @@ def optimize(spec: Spec, bounds: dict[str, tuple[float, float]], objective: str,
     count = [0]
 
     def values(x: np.ndarray) -> np.ndarray:               # x: (dims, population)
+        if should_stop is not None and should_stop():
+            raise Cancelled()
         x = np.atleast_2d(np.asarray(x, dtype=float).T).T if np.ndim(x) == 1 else x
         count[0] += x.shape[1]
         ev = evaluate(spec, {n: x[i] for i, n in enumerate(names)}, rpms, use)

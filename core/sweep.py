@@ -144,3 +144,35 @@ def _spread(values: np.ndarray | None, index: np.ndarray, size: int) -> np.ndarr
     out = np.full((size,) + np.shape(values)[1:], np.nan)
     out[index] = values
     return out
+
+
+def spec_changes(values: dict[str, float]) -> dict[str, object]:
+    """The :class:`Spec` fields that set the varied core parameters ``values`` (one design),
+    as :func:`spec_designs` reads them: e.g. a guide height switches the guide rule to
+    ``height``, a rod ratio makes the rod variant with a ratio input."""
+    fields = {"crank": "crank", "time_ratio": "time_ratio", "stroke": "stroke",
+              "frame": "frame", "lever": "lever"}
+    changes: dict[str, object] = {}
+    for name, value in values.items():
+        value = float(value)
+        if name == "guide":
+            changes.update(guide_rule="height", guide_height=value)
+        elif name == "rod_ratio":
+            changes.update(variant="rod", rod_input="ratio", rod_ratio=value)
+        elif name == "rod":
+            changes.update(variant="rod", rod_input="length", rod_length=value)
+        elif name in fields:
+            changes[fields[name]] = value
+        else:
+            raise DesignError("vary", name, "must name one of " + ", ".join(PARAMETERS.values()))
+    return changes
+
+
+def design_value(design, name: str) -> float | None:
+    """The value of the core parameter ``name`` for one design (None where it has none)."""
+    if name == "time_ratio":
+        return float(design.time_ratio)
+    if name == "rod_ratio":
+        return None if design.rod is None else float(design.rod / design.lever)
+    value = getattr(design, name)
+    return None if value is None else float(value)

@@ -235,11 +235,11 @@
         <translation>连杆</translation>
     </message>
     <message>
-        <source>Through the tip&apos;s extreme positions (chord)</source>
+        <source>Through the tip's extreme positions (chord)</source>
         <translation>通过导杆端部两极限位置（弦线）</translation>
     </message>
     <message>
-        <source>Mid-sagitta of the tip&apos;s arc</source>
+        <source>Mid-sagitta of the tip's arc</source>
         <translation>导杆端部圆弧矢高的中点</translation>
     </message>
     <message>
@@ -323,6 +323,153 @@
     </message>
 </context>
 <context>
+    <name>ExploreView</name>
+    <message>
+        <source>Max pressure angle (°)</source>
+        <translation>最大压力角 (°)</translation>
+    </message>
+    <message>
+        <source>Max |acceleration|, fastest speed (m/s²)</source>
+        <translation>最大加速度 |a|，最高转速 (m/s²)</translation>
+    </message>
+    <message>
+        <source>Max cutting speed, fastest speed (m/s)</source>
+        <translation>最大切削速度，最高转速 (m/s)</translation>
+    </message>
+    <message>
+        <source>Max return speed, fastest speed (m/s)</source>
+        <translation>最大回程速度，最高转速 (m/s)</translation>
+    </message>
+    <message>
+        <source>Peak crank torque, worst speed (N·m)</source>
+        <translation>曲柄最大驱动力矩，最不利转速 (N·m)</translation>
+    </message>
+    <message>
+        <source>Flywheel J_F, slowest speed (kg·m²)</source>
+        <translation>飞轮转动惯量 J_F，最低转速 (kg·m²)</translation>
+    </message>
+    <message>
+        <source>Crank L1 (mm)</source>
+        <translation>曲柄 L1 (mm)</translation>
+    </message>
+    <message>
+        <source>Time ratio K</source>
+        <translation>行程速比系数 K</translation>
+    </message>
+    <message>
+        <source>Stroke H (mm)</source>
+        <translation>行程 H (mm)</translation>
+    </message>
+    <message>
+        <source>Frame L2 (mm)</source>
+        <translation>机架 L2 (mm)</translation>
+    </message>
+    <message>
+        <source>Lever L3 (mm)</source>
+        <translation>导杆 L3 (mm)</translation>
+    </message>
+    <message>
+        <source>Guide above O4 (mm)</source>
+        <translation>导路距 O4 高度 (mm)</translation>
+    </message>
+    <message>
+        <source>Rod ratio L4/L3</source>
+        <translation>连杆比 L4/L3</translation>
+    </message>
+    <message>
+        <source>Rod L4 (mm)</source>
+        <translation>连杆 L4 (mm)</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>Across</source>
+        <translation>横轴</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>纵轴</translation>
+    </message>
+    <message>
+        <source>Points per axis</source>
+        <translation>每轴点数</translation>
+    </message>
+    <message>
+        <source>Objective</source>
+        <translation>优化目标</translation>
+    </message>
+    <message>
+        <source>Compute map</source>
+        <translation>计算分布图</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Optimize</source>
+        <translation>优化</translation>
+    </message>
+    <message>
+        <source>Optimize over the map's ranges</source>
+        <translation>在分布图范围内优化</translation>
+    </message>
+    <message>
+        <source>vary across</source>
+        <translation>优化横轴参数</translation>
+    </message>
+    <message>
+        <source>vary up</source>
+        <translation>优化纵轴参数</translation>
+    </message>
+    <message>
+        <source>Choose two different parameters.</source>
+        <translation>请选择两个不同的参数。</translation>
+    </message>
+    <message>
+        <source>Computing %1 designs…</source>
+        <translation>正在计算 %1 个设计…</translation>
+    </message>
+    <message>
+        <source>Best: %1 %2 at %3 (the design before: %4); loaded into the form.</source>
+        <translation>最优值：%1 %2，位于 %3（原设计：%4）；已载入表单。</translation>
+    </message>
+    <message>
+        <source>not enough memory</source>
+        <translation>内存不足</translation>
+    </message>
+    <message>
+        <source>%1 of %2 designs are valid.</source>
+        <translation>%2 个设计中有 %1 个有效。</translation>
+    </message>
+    <message>
+        <source>%1 — invalid: %2</source>
+        <translation>%1 — 无效：%2</translation>
+    </message>
+    <message>
+        <source>Choose one or two different free parameters.</source>
+        <translation>请选择一个或两个不同的优化参数。</translation>
+    </message>
+    <message>
+        <source>Optimizing…</source>
+        <translation>正在优化…</translation>
+    </message>
+    <message>
+        <source>Could not compute: %1</source>
+        <translation>无法计算：%1</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>已取消。</translation>
+    </message>
+    <message>
+        <source>the image could not be written</source>
+        <translation>无法写入图像</translation>
+    </message>
+</context>
+<context>
     <name>ForcesPanel</name>
     <message>
         <source>Shaper forces and torque</source>
@@ -341,7 +488,7 @@
         <translation>质心位置 c</translation>
     </message>
     <message>
-        <source>Distance of the lever&apos;s centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
@@ -365,7 +512,7 @@
         <translation>质心偏移 dx</translation>
     </message>
     <message>
-        <source>Horizontal offset of the ram&apos;s centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
         <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
     </message>
     <message>
@@ -373,7 +520,7 @@
         <translation>质心偏移 dy</translation>
     </message>
     <message>
-        <source>Vertical offset of the ram&apos;s centre of mass from the ram joint C, mm (+ up)</source>
+        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
@@ -600,7 +747,7 @@
         <translation>导出运动曲线 CSV(&amp;C)…</translation>
     </message>
     <message>
-        <source>All speeds, at the form&apos;s angle step</source>
+        <source>All speeds, at the form's angle step</source>
         <translation>全部转速，按表单中的角度步长</translation>
     </message>
     <message>
@@ -642,6 +789,10 @@
     <message>
         <source>Forces</source>
         <translation>力分析</translation>
+    </message>
+    <message>
+        <source>Explore</source>
+        <translation>设计空间</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -769,7 +920,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>曲柄轴上飞轮转动惯量 J_F，kg·m²</translation>
     </message>
     <message>
-        <source>J_F less mechanism&apos;s own, kg·m²</source>
+        <source>J_F less mechanism's own, kg·m²</source>
         <translation>扣除机构自身等效惯量后的 J_F，kg·m²</translation>
     </message>
     <message>
@@ -857,7 +1008,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>实测 K</translation>
     </message>
     <message>
-        <source>Working / return crank angle, from the ram&apos;s dead points</source>
+        <source>Working / return crank angle, from the ram's dead points</source>
         <translation>工作行程与回程的曲柄转角之比，由滑枕极限位置测得</translation>
     </message>
     <message>
@@ -865,7 +1016,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>实测行程</translation>
     </message>
     <message>
-        <source>Distance between the ram&apos;s dead points</source>
+        <source>Distance between the ram's dead points</source>
         <translation>滑枕两极限位置之间的距离</translation>
     </message>
     <message>
@@ -924,7 +1075,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <source>Plot against the crank angle (0–360°) or against time (each speed&apos;s own cycle)</source>
+        <source>Plot against the crank angle (0–360°) or against time (each speed's own cycle)</source>
         <translation>以曲柄转角 (0–360°) 或时间（各转速自身的周期）为横坐标</translation>
     </message>
     <message>
@@ -932,7 +1083,7 @@ Lengths in mm, speeds in r/min.</source>
         <translation>导杆曲线</translation>
     </message>
     <message>
-        <source>Show the slotted lever&apos;s angle, angular velocity or angular acceleration</source>
+        <source>Show the slotted lever's angle, angular velocity or angular acceleration</source>
         <translation>显示导杆的角位移、角速度或角加速度</translation>
     </message>
     <message>
@@ -1011,7 +1162,7 @@ Lengths in mm, speeds in r/min.</source>
 <context>
     <name>SchemeWidget</name>
     <message>
-        <source>Cannot export to &apos;{0}&apos;: use .png or .svg</source>
+        <source>Cannot export to '{0}': use .png or .svg</source>
         <translation>无法导出到“{0}”：请使用 .png 或 .svg</translation>
     </message>
     <message>

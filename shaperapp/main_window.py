@@ -15,6 +15,7 @@ from PySide6.QtWidgets import (QFileDialog, QMainWindow, QMessageBox, QScrollAre
 from . import i18n
 from .animation import AnimationBar
 from .document import Document
+from .explore_view import ExploreView
 from .forces_panel import ForcesPanel
 from .form import DesignForm
 from .messages import describe
@@ -41,6 +42,8 @@ class MainWindow(QMainWindow):
         self.tabs = QTabWidget()
         self.tabs.addTab(self.plots, "")
         self.tabs.addTab(self.forces, "")
+        self.explore = ExploreView(model)          # Explore tab (issue 11)
+        self.tabs.addTab(self.explore, "")
 
         side = QWidget()
         side_layout = QVBoxLayout(side)
@@ -187,6 +190,7 @@ class MainWindow(QMainWindow):
             action.setStatusTip(tip)
         self.tabs.setTabText(0, self.tr("Kinematics"))
         self.tabs.setTabText(1, self.tr("Forces"))
+        self.tabs.setTabText(2, self.tr("Explore"))
         self.menu_file.setTitle(self.tr("&File"))
         self.menu_recent.setTitle(self.tr("Open &Recent"))
         self.menu_view.setTitle(self.tr("&View"))
@@ -252,4 +256,5 @@ class MainWindow(QMainWindow):
             return
         self.settings.setValue("geometry", self.saveGeometry())
         self.settings.setValue("splitter", self.splitter.saveState())
+        self.explore.shutdown()
         event.accept()
