@@ -80,3 +80,14 @@ def test_sweep_2500_designs_with_loads(benchmark):
     ev = benchmark.pedantic(evaluate, args=(SPEC_ROD, values, [40.0], masses), rounds=1,
                             iterations=1)
     assert ev.dynamics is not None
+
+
+def test_summarize_one_design_4_speeds(benchmark):
+    """The dynamics summary the GUI recomputes on every edit (exact torque peaks included)."""
+    from core.dynamics import summarize
+
+    design = SPEC_ROD.design()
+    masses = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                            cut_force_N=7000.0, cut_height_mm=80.0)
+    summary = benchmark(summarize, design, [30.0, 40.0, 60.0, 80.0], masses)
+    assert len(summary.speeds) == 4

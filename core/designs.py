@@ -193,11 +193,7 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
     and the verdict. Without ``validate`` only the synthesis rules are checked
     (``geometry.Design`` checks the rest on construction).
     """
-    lengths = [crank, time_ratio, stroke]
-    numeric_guide = not (isinstance(guide, str) and guide in GUIDE_RULES)
-    crank, time_ratio, stroke, *extra = _floats(
-        *lengths, *[v for v in (_guide_number(guide) if numeric_guide else None, rod, rod_ratio)
-                    if v is not None])
+    (crank, time_ratio, stroke), extra = _inputs((crank, time_ratio, stroke), guide, rod, rod_ratio)
     shape = crank.shape
     verdict = Verdict(np.zeros(shape, dtype=np.int16))
     check_length(verdict, "crank", crank)
@@ -220,24 +216,13 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
     verdict.check("stroke", too_short, stroke,
                   lambda i: f"must be ≥ {_flat(need, shape)[i]:.1f} mm for this crank and K, "
                             "so that the crank pin stays on the lever")
-    values = iter(extra)
-    guide_value = next(values) if numeric_guide else guide
-    rod_length = _rod_length(verdict, next(values) if rod is not None else None,
-                             next(values) if rod_ratio is not None else None, lever)
-    designs = Designs(crank, frame, lever, _guide(verdict, guide_value, lever, theta),
-                      rod_length, rod_side)
-    if validate:
-        check_designs(verdict, designs)
-    return designs, verdict
+    return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
 
 
 def dimensions_many(crank, frame, lever, *, guide="chord", rod=None, rod_ratio=None,
                     rod_side: str = "trailing", validate: bool = True) -> tuple[Designs, Verdict]:
     """Designs from arrays of measured link lengths; K, H and θ are then implied."""
-    numeric_guide = not (isinstance(guide, str) and guide in GUIDE_RULES)
-    crank, frame, lever, *extra = _floats(
-        crank, frame, lever, *[v for v in (_guide_number(guide) if numeric_guide else None, rod,
-                                           rod_ratio) if v is not None])
+    (crank, frame, lever), extra = _inputs((crank, frame, lever), guide, rod, rod_ratio)
     verdict = Verdict(np.zeros(crank.shape, dtype=np.int16))
     check_length(verdict, "crank", crank)
     check_length(verdict, "frame", frame)
@@ -245,12 +230,27 @@ def dimensions_many(crank, frame, lever, *, guide="chord", rod=None, rod_ratio=N
     check_crank_ratio(verdict, crank, frame)
     with np.errstate(all="ignore"):
         theta = 2.0 * np.arcsin(np.minimum(crank / frame, 1.0))
-    values = iter(extra)
-    guide_value = next(values) if numeric_guide else guide
-    rod_length = _rod_length(verdict, next(values) if rod is not None else None,
-                             next(values) if rod_ratio is not None else None, lever)
-    designs = Designs(crank, frame, lever, _guide(verdict, guide_value, lever, theta),
-                      rod_length, rod_side)
+    return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
+
+
+def _inputs(lengths, guide, rod, rod_ratio):
+    """The three leading lengths as float arrays of one shape, and (guide, rod, rod ratio):
+    a guide rule stays a name, every number becomes an array of that shape."""
+    numeric = not (isinstance(guide, str) and guide in GUIDE_RULES)
+    given = [_guide_number(guide) if numeric else None, rod, rod_ratio]
+    arrays = iter(_floats(*lengths, *[v for v in given if v is not None]))
+    first = [next(arrays) for _ in lengths]
+    extra = tuple(next(arrays) if v is not None else None for v in given)
+    return first, (extra[0] if numeric else guide,) + extra[1:]
+
+
+def _assemble(verdict: Verdict, crank, frame, lever, theta, extra, rod_side: str,
+              validate: bool) -> tuple[Designs, Verdict]:
+    """The rod and guide rules, the designs, and (with ``validate``) the design rules."""
+    guide, rod, rod_ratio = extra
+    rod_length = _rod_length(verdict, rod, rod_ratio, lever)
+    designs = Designs(crank, frame, lever, _guide(verdict, guide, lever, theta), rod_length,
+                      rod_side)
     if validate:
         check_designs(verdict, designs)
     return designs, verdict

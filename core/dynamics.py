@@ -28,8 +28,8 @@ import numpy as np
 from .designs import Designs
 from .errors import DesignError, require_range
 from .geometry import MAX_LENGTH_MM, Design
-from .kinematics import (CROWD_OFFSETS, Shape, check_rpms, ram_origin, rpm_to_omega, shape,
-                         sharp_angles)
+from .kinematics import (CROWD_OFFSETS, Shape, check_rpms, needs_crowding, ram_origin,
+                         rpm_to_omega, shape, sharp_angles)
 
 GRAVITY = 9.81               # m/s², acting toward −y
 MM = 1e-3                    # m per mm
@@ -503,14 +503,27 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     return out
 
 
-def _cut_window(d: Designs, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
+def _cut_window(d: Designs, masses: MassProperties, sh: Shape) -> tuple[np.ndarray, np.ndarray]:
     """Crank angles (rad) where the cut starts and ends: the ram, advancing on the working
-    stroke φ ∈ [0, π + θ], reaches idle·H and (1 − idle)·H (see :func:`cutting_force`)."""
+    stroke φ ∈ [0, π + θ], reaches idle·H and (1 − idle)·H (see :func:`cutting_force`).
+
+    Each is bracketed between the samples of ``sh`` (one design per row, uniform φ)
+    and polished as a root of the closed-form displacement.
+    """
     from .extrema import bracket_root
 
     idle = masses.idle_fraction * d.stroke
-    targets = np.stack([idle, d.stroke - idle]) + ram_origin(d)      # Cx at the two switches
+    origin = ram_origin(d)
+    targets = np.stack([idle, d.stroke - idle]) + origin            # Cx at the two switches
     end = np.broadcast_to(math.pi + d.theta, targets.shape)
+    phi = sh.phi
+    working = phi <= end[..., None]
+    reached = (sh.ram_joint[0][None] >= targets[..., None]) & working
+    first = np.argmax(reached, axis=-1)
+    inner = reached.any(axis=-1) & (first > 0)
+    lo = phi[np.maximum(first - 1, 0)]
+    hi = np.minimum(phi[first], end)
+    root = np.where(reached[..., 0], 0.0, end)                      # at or before φ = 0, or never
     lengths = [np.broadcast_to(v, targets.shape) for v in
                (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]
 
@@ -518,12 +531,8 @@ def _cut_window(d: Designs, masses: MassProperties) -> tuple[np.ndarray, np.ndar
         one = Designs(*lengths[:4], lengths[4] if d.rod is not None else None, d.rod_side)
         return shape(one, phi).ram_joint[0] - target
 
-    low = travel(np.zeros(targets.shape), targets, *lengths)
-    high = travel(end, targets, *lengths)
-    root = np.where(low >= 0.0, 0.0, end)
-    inner = (low < 0.0) & (high > 0.0)
     if inner.any():
-        root[inner] = bracket_root(travel, np.zeros(int(inner.sum())), end[inner],
+        root[inner] = bracket_root(travel, lo[inner], hi[inner],
                                    [v[inner] for v in [targets] + lengths])
     return root[0], root[1]
 
@@ -547,7 +556,7 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
     x = [np.broadcast_to(phi, static[:, :-1].shape)]
     stat, iner, ram1 = [static[:, :-1]], [inertial[:, :-1]], [np.broadcast_to(sh.ram1, static.shape)[:, :-1]]
     segments = [(0, phi.size, period)]
-    if d.rod is not None:
+    if needs_crowding(d).any():                       # the whole chunk, if any design
         for j in range(4):
             at = sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS
             crowd = shape(col, at)
@@ -559,7 +568,7 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
             ram1.append(crowd.ram1)
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
     x, stat, iner, ram1 = (np.concatenate(v, axis=-1) for v in (x, stat, iner, ram1))
-    on, off = _cut_window(d, masses)
+    on, off = _cut_window(d, masses, sh)
     cut = masses.cut_force_N * MM
     w2 = (omega ** 2)[None, :, None]
     lengths = [v[:, None, None] for v in (d.crank, d.frame, d.lever, d.guide,

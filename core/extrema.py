@@ -42,8 +42,8 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
     x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)     # a view: never copied
     slopes = np.broadcast_to(slopes, values.shape)
     segments = [(0, n, 0.0)] if segments is None else list(segments)
-    best = np.max(values, axis=-1)
-    los, his, owners = [], [], []
+    best = np.max(values, axis=-1).reshape(-1)
+    picks: list[list[np.ndarray]] = []        # per rank: [lo, hi, owner, upper bound]
     for start, stop, period in segments:
         v, s = values[..., start:stop], slopes[..., start:stop]
         m = stop - start
@@ -60,21 +60,39 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
             index = np.nonzero(found)
             cell = j[..., 0][index]
             inner = cell + 1 < m
-            los.append(x[index + (start + cell,)])
-            his.append(x[index + (start + np.where(inner, cell + 1, 0),)]
-                       + np.where(inner, 0.0, period))
-            owners.append(np.ravel_multi_index(index, lead) if lead else
-                          np.zeros(cell.size, dtype=int))
-    if not los:
-        return best
-    lo, hi, owner = (np.concatenate(v) for v in (los, his, owners))
-    flat_args = [np.broadcast_to(a, lead + (1,)).reshape(-1)[owner] for a in args]
-    slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
-    root = bracket_root(slope, lo, hi, flat_args)
-    peak = fun(root, *flat_args)[0]
-    out = best.reshape(-1).copy()
-    np.fmax.at(out, owner, peak)
-    return out.reshape(lead)
+            left, right = index + (start + cell,), index + (start + np.where(inner, cell + 1, 0),)
+            lo, hi = x[left], x[right] + np.where(inner, 0.0, period)
+            bound = _tangent_bound(lo, hi, values[left], values[right], slopes[left], slopes[right])
+            owner = np.ravel_multi_index(index, lead) if lead else np.zeros(cell.size, dtype=int)
+            while len(picks) <= k:
+                picks.append([])
+            picks[k].append((lo, hi, owner, bound))
+    # The best cell of each curve first; a lower-ranked cell only if its value could still
+    # exceed what is known (its upper bound from the tangents at its ends).
+    for rank, found in enumerate(picks):
+        lo, hi, owner, bound = (np.concatenate(v) for v in zip(*found))
+        if rank:
+            keep = bound > best[owner]
+            lo, hi, owner = lo[keep], hi[keep], owner[keep]
+        if owner.size == 0:
+            continue
+        flat_args = [np.broadcast_to(a, lead + (1,)).reshape(-1)[owner] for a in args]
+        slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
+        root = bracket_root(slope, lo, hi, flat_args)
+        np.fmax.at(best, owner, fun(root, *flat_args)[0])
+    return best.reshape(lead)
+
+
+def _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi):
+    """An upper bound of a curve rising at ``lo`` and falling at ``hi``: where its two end
+    tangents meet (exact for a concave cell), with the excess over the samples doubled as
+    a margin for cells that are not concave."""
+    with np.errstate(all="ignore"):
+        meet = (v_hi - v_lo + s_lo * lo - s_hi * hi) / (s_lo - s_hi)
+        top = v_lo + s_lo * (np.clip(meet, lo, hi) - lo)
+    floor = np.maximum(v_lo, v_hi)
+    top = np.where(np.isfinite(top), np.maximum(top, floor), np.inf)
+    return top + (top - floor)
 
 
 def grid_minimum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarray,
@@ -161,21 +179,21 @@ def piece_maximum(fun: Callable[..., np.ndarray], x: np.ndarray, values: np.ndar
     ends = fun(np.concatenate([lo.reshape(-1), hi.reshape(-1)]),
                *[np.concatenate([a.reshape(-1)] * 2) for a in flat_args]).reshape((2,) + lead)
     best = np.fmax(ends[0], ends[1])
-    best = np.fmax(best, np.max(np.where(inside(x, lo[..., None], hi[..., None]), values, -np.inf),
-                                axis=-1))
+    within = inside(x, lo[..., None], hi[..., None])
+    best = np.fmax(best, np.max(np.where(within, values, -np.inf), axis=-1))
     segments = [(0, n, 0.0)] if segments is None else list(segments)
     brackets: list[list[np.ndarray]] = []
     for start, stop, seg_period in segments:
-        seg_x, seg_v = x[..., start:stop], values[..., start:stop]
+        seg_x, seg_v, seg_in = x[..., start:stop], values[..., start:stop], within[..., start:stop]
         if seg_period > 0.0:
             prev_x = np.concatenate([seg_x[..., -1:] - seg_period, seg_x[..., :-1]], axis=-1)
             next_x = np.concatenate([seg_x[..., 1:], seg_x[..., :1] + seg_period], axis=-1)
             prev_v, next_v = np.roll(seg_v, 1, axis=-1), np.roll(seg_v, -1, axis=-1)
         else:
             prev_x, next_x, prev_v, next_v = seg_x[..., :-2], seg_x[..., 2:], seg_v[..., :-2], seg_v[..., 2:]
-            seg_x, seg_v = seg_x[..., 1:-1], seg_v[..., 1:-1]
+            seg_x, seg_v, seg_in = seg_x[..., 1:-1], seg_v[..., 1:-1], seg_in[..., 1:-1]
         peak = (seg_v >= prev_v) & (seg_v >= next_v) & ((seg_v > prev_v) | (seg_v > next_v))
-        score = np.where(peak & inside(seg_x, lo[..., None], hi[..., None]), seg_v, -np.inf)
+        score = np.where(peak & seg_in, seg_v, -np.inf)
         for j in range(min(candidates, score.shape[-1])):
             i = np.argmax(score, axis=-1)[..., None]
             real = np.isfinite(np.take_along_axis(score, i, axis=-1))[..., 0]
@@ -222,11 +240,13 @@ def polish_minimum(fun: Callable[..., np.ndarray], xl: np.ndarray, xm: np.ndarra
             p = (m - a) ** 2 * (fm - fb) - (m - b) ** 2 * (fm - fa)
             q = (m - a) * (fm - fb) - (m - b) * (fm - fa)
             u = m - 0.5 * p / q
-        tol = 1e-10 * np.abs(m) + 1e-14
+        tol = 2e-9 * (1.0 + np.abs(m))     # in x; the value is then exact to ~1e-16 relative
         right = (b - m) > (m - a)
         golden = np.where(right, m + _GOLD * (b - m), m - _GOLD * (m - a))
-        safe = np.isfinite(u) & (u > a + tol) & (u < b - tol) & (np.abs(u - m) > tol)
-        u = np.where(safe, u, golden)
+        safe = np.isfinite(u) & (u > a + tol) & (u < b - tol)
+        # A vertex within tol of m steps tol away instead (Brent), closing the bracket.
+        step = np.where(right, tol, -tol)                # toward the wider side
+        u = np.where(safe, np.where(np.abs(u - m) < tol, m + step, u), golden)
         fu = fun(u, *part)
         lower = fu < fm
         left_of = u < m

@@ -110,12 +110,8 @@ def synthesize(crank: float, time_ratio: float, stroke: float, *,
     give neither for the block variant. The rules are those of
     :func:`core.designs.synthesize_many` on one design.
     """
-    designs, verdict = synthesize_many(
-        _one("crank", crank), _one("time_ratio", time_ratio), _one("stroke", stroke),
-        guide=_guide_argument(guide), rod=_optional("rod", rod),
-        rod_ratio=_optional("rod_ratio", rod_ratio), rod_side=rod_side, validate=False)
-    verdict.raise_first()
-    return _design(designs)
+    return _one_design(synthesize_many, (("crank", crank), ("time_ratio", time_ratio),
+                                         ("stroke", stroke)), guide, rod, rod_ratio, rod_side)
 
 
 def from_dimensions(crank: float, frame: float, lever: float, *,
@@ -123,18 +119,22 @@ def from_dimensions(crank: float, frame: float, lever: float, *,
                     rod_ratio: float | None = None,
                     rod_side: RodSide = "trailing") -> Design:
     """A design from measured link lengths; K, H and θ are then implied."""
-    designs, verdict = dimensions_many(
-        _one("crank", crank), _one("frame", frame), _one("lever", lever),
-        guide=_guide_argument(guide), rod=_optional("rod", rod),
-        rod_ratio=_optional("rod_ratio", rod_ratio), rod_side=rod_side, validate=False)
+    return _one_design(dimensions_many, (("crank", crank), ("frame", frame), ("lever", lever)),
+                       guide, rod, rod_ratio, rod_side)
+
+
+def _one_design(many, lengths, guide, rod, rod_ratio, rod_side) -> Design:
+    """``many`` (synthesize_many or dimensions_many) on one design; its first error raised."""
+    designs, verdict = many(*(_one(name, value) for name, value in lengths),
+                            guide=_guide_argument(guide), rod=_optional("rod", rod),
+                            rod_ratio=_optional("rod_ratio", rod_ratio), rod_side=rod_side,
+                            validate=False)
     verdict.raise_first()
     return _design(designs)
 
 
 def _one(name: str, value: object) -> np.ndarray:
     """A scalar input as a one-design array; text that is no number is refused here."""
-    if isinstance(value, (int, float, np.integer, np.floating)):
-        return np.array([float(value)])
     try:
         return np.array([float(value)])  # type: ignore[arg-type]
     except (TypeError, ValueError):

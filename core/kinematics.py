@@ -250,6 +250,19 @@ CROWD_OFFSETS = np.concatenate([-(0.05 * 5.0 ** -np.arange(0, 7)), [0.0],
                                 (0.05 * 5.0 ** -np.arange(0, 7))[::-1]])
 
 
+# Where the rod's reach sqrt(L4² − d²) at every sharp angle stays above this fraction of L4,
+# its motion is smooth on the scale of uniform samples and no crowding is needed.
+CROWD_BELOW = 0.2
+
+
+def needs_crowding(design: Design | Designs) -> np.ndarray:
+    """Per design: does the rod come close to upright (reach < CROWD_BELOW·L4) at a sharp angle?"""
+    if design.rod is None:
+        return np.zeros(np.shape(design.theta), dtype=bool)
+    at = shape(design.column() if isinstance(design, Designs) else design, sharp_angles(design))
+    return np.abs(np.cos(at.rod)).min(axis=-1) < CROWD_BELOW     # r/L4 = |cos λ|
+
+
 def sharp_angles(design: Design | Designs) -> np.ndarray:
     """Crank angles φ (rad) of the two dead points and of the lever's two vertical
     crossings (ψ = 0), shape design + (4,).

@@ -18,7 +18,7 @@ import numpy as np
 from .designs import Designs
 from .extrema import bracket_root, grid_maximum
 from .geometry import Design
-from .kinematics import CROWD_OFFSETS, check_rpms, pressure_angle, ram_origin, rates_at, rpm_to_omega, shape_at
+from .kinematics import CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, ram_origin, rates_at, rpm_to_omega, shape_at
 
 
 @dataclass(frozen=True)
@@ -149,11 +149,6 @@ def _pick(quantity, r):
     return sign * r.ram1 + size * r.ram2, -sign * r.ram2 - size * r.ram3
 
 
-# A rod whose reach sqrt(L4² − d²) stays above this fraction of L4 at every sharp angle
-# moves smoothly on the scale of the uniform samples; below it, samples crowd there.
-CROWD_BELOW = 0.2
-
-
 def _chunk_peaks(d: Designs) -> CyclePeaks:
     col = d.column()
     special_cos, special_sin = _specials(d)
@@ -243,7 +238,17 @@ def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         one = Designs(crank, frame, lever, guide, None if d.rod is None else rod, d.rod_side)
         return rates_at(one, np.cos(beta), np.sin(beta)).ram1
 
-    beta = bracket_root(rate, lo.reshape(-1), (lo + _STEP).reshape(-1), args).reshape(lo.shape)
+    # The closed form puts the dead points where the lever stands square to the crank
+    # (β = π + θ/2 and −θ/2): a tight bracket there is used when the velocity does change
+    # sign across it, else the grid's cell.
+    guess = np.mod(np.stack([math.pi + d.theta / 2.0, -d.theta / 2.0], axis=-1), 2.0 * math.pi)
+    near = (guess >= lo) & (guess <= lo + _STEP)
+    width = 1e-9 * (1.0 + guess)
+    a, b = np.where(near, guess - width, lo), np.where(near, guess + width, lo + _STEP)
+    tight = near & (np.sign(rate(a.reshape(-1), *args)) != np.sign(rate(b.reshape(-1), *args)))\
+        .reshape(lo.shape)
+    a, b = np.where(tight, a, lo), np.where(tight, b, lo + _STEP)
+    beta = bracket_root(rate, a.reshape(-1), b.reshape(-1), args).reshape(lo.shape)
     phi = np.mod(math.pi + (d.theta / 2.0)[:, None] - beta, 2.0 * math.pi)
     phi = np.where(good[:, None], phi, np.nan)
     return phi[:, 0], phi[:, 1]

@@ -100,9 +100,10 @@ def test_every_peak_is_the_true_extremum(design):
     if design.rod is not None:
         got["pressure"] = math.radians(metrics.pressure_angle_max_deg)
     for name, ref in reference_peaks(design).items():
-        # Within 1e-6 of the reference, and never below it beyond rounding.
+        # Within 1e-6 of the reference, and never below it by more than rounding: a rod at
+        # its reach limit divides by a reach of 1e-3·L4, which costs a few digits.
         assert got[name] == pytest.approx(ref, rel=1e-6), name
-        assert got[name] >= ref * (1 - 1e-9), name
+        assert got[name] >= ref * (1 - 1e-7), name
 
 
 def test_lever_peaks_closed_form_against_samples():
@@ -163,16 +164,26 @@ def torque_reference(design, rpm, masses, sign):
     values = sign * dyn.crank_torque[0]
     cutting = dyn.cut_force[0] > 0
     best = float(values.max())
-    for i in np.argsort(values)[-3:]:
-        lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, phi.size - 1)]
-        same = cutting[max(i - 1, 0)] == cutting[i] == cutting[min(i + 1, phi.size - 1)]
-        if not same:
-            continue                      # next to a switch: the samples there decide
+    def at(p):
+        dyn = solve_dynamics(design, np.array([p]), [rpm], masses)
+        return sign * float(dyn.crank_torque[0, 0]), bool(dyn.cut_force[0, 0] > 0)
 
-        def f(p):
-            return -sign * float(solve_dynamics(design, np.array([p]), [rpm], masses).crank_torque[0, 0])
-        res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
-        best = max(best, -res.fun)
+    for i in np.argsort(values)[-3:]:
+        j, k = max(i - 1, 0), min(i + 1, phi.size - 1)
+        if cutting[j] == cutting[i] == cutting[k]:
+            res = minimize_scalar(lambda p: -at(p)[0], bounds=(phi[j], phi[k]), method="bounded",
+                                  options={"xatol": 1e-12})
+            best = max(best, -res.fun)
+            continue
+        # Next to a switch of the cut: find it by bisection on the solver's own cut force,
+        # then take the torque just on either side of it (the one-sided values).
+        a, b = (j, i) if cutting[j] != cutting[i] else (i, k)
+        a, b = phi[a], phi[b]
+        side = at(a)[1]
+        for _ in range(60):
+            mid = (a + b) / 2.0
+            a, b = (mid, b) if at(mid)[1] == side else (a, mid)
+        best = max(best, at(a)[0], at(b)[0])
     return best
 
 

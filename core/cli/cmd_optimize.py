@@ -8,10 +8,9 @@ from ..errors import DesignError
 from ..geometry import Design
 from ..optimize import OBJECTIVES, Optimum, optimize
 from ..sweep import PARAMETERS, Evaluation
-from .cmd_sweep import _Variant, _number, figure_columns, loads_given, parse_vary
+from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
-from .common import (add_design_options, add_load_options, add_speed_options, masses_from_args,
-                     print_json, print_table, rpms_from_args, spec_from_args)
+from .common import add_design_options, add_load_options, add_speed_options, print_json, print_table
 
 HELP = "find the design that minimizes an objective"
 DESCRIPTION = ("Search the varied parameters within their bounds for the design with the smallest "
@@ -60,11 +59,7 @@ def _design(ev: Evaluation) -> Design:
 
 
 def run(args: argparse.Namespace) -> int:
-    spec = spec_from_args(args)
-    varied = parse_vary(args.vary, spec, with_count=False)
-    rpms = rpms_from_args(args)
-    masses = masses_from_args(args, _Variant(spec, varied), required=False) \
-        if loads_given(args) else None  # type: ignore[arg-type]
+    spec, varied, rpms, masses = inputs(args, with_count=False)
     best = optimize(spec, {PARAMETERS[n]: b for n, b in varied.items()}, args.objective, rpms, masses)
     typed = list(varied)
     if not best.evaluation.valid.all():

@@ -11,7 +11,7 @@ import numpy as np
 from ..errors import DesignError
 from ..spec import Spec
 from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
-from .common import (LOAD_OPTIONS, UsageError, add_design_options, add_load_options,
+from .common import (LOAD_OPTIONS, add_design_options, add_load_options,
                      add_speed_options, design_error_text, design_file, masses_from_args, number,
                      rpms_from_args, spec_from_args, write_output)
 
@@ -154,12 +154,18 @@ def _quote(text: str) -> str:
     return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
 
 
-def run(args: argparse.Namespace) -> int:
+def inputs(args: argparse.Namespace, with_count: bool):
+    """(spec, varied ranges by typed name, speeds, loads or None) from the options."""
     spec = spec_from_args(args)
-    varied = parse_vary(args.vary, spec, with_count=True)
+    varied = parse_vary(args.vary, spec, with_count)
     rpms = rpms_from_args(args)
     masses = masses_from_args(args, _Variant(spec, varied), required=False) \
         if loads_given(args) else None  # type: ignore[arg-type]
+    return spec, varied, rpms, masses
+
+
+def run(args: argparse.Namespace) -> int:
+    spec, varied, rpms, masses = inputs(args, with_count=True)
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
     ev = evaluate(spec, values, rpms, masses)
     names = list(varied)
@@ -170,4 +176,3 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-__all__ = ["configure", "run", "parse_vary", "figure_columns", "loads_given", "UsageError"]
