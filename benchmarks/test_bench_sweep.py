@@ -30,13 +30,13 @@ def _values(count, rod):
 
 def test_sweep_1e5_designs_block(benchmark):
     values = _values(COUNT, rod=False)
-    ev = benchmark.pedantic(evaluate, args=(SPEC_BLOCK, values, [40.0]), rounds=3, iterations=1)
+    ev = benchmark.pedantic(evaluate, args=(SPEC_BLOCK, values, [40.0]), rounds=5, iterations=1)
     assert ev.valid.size == COUNT and ev.valid.sum() > COUNT // 3
 
 
 def test_sweep_1e5_designs_rod(benchmark):
     values = _values(COUNT, rod=True)
-    ev = benchmark.pedantic(evaluate, args=(SPEC_ROD, values, [40.0]), rounds=3, iterations=1)
+    ev = benchmark.pedantic(evaluate, args=(SPEC_ROD, values, [40.0]), rounds=5, iterations=1)
     assert ev.valid.size == COUNT and ev.valid.sum() > COUNT // 3
 
 

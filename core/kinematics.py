@@ -114,7 +114,10 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
     ram = _ram_terms(design, tip)
-    lever = np.arctan2(lv.ax, lv.ay)
+    l1 = design.crank
+    ax, ay = l1 * cos_beta, design.frame + l1 * sin_beta      # crank pin A and its rates
+    ax1, ay1 = l1 * sin_beta, -l1 * cos_beta
+    lever = np.arctan2(ax, ay)
     if design.rod is None:
         rod = rod1 = rod2 = None
     else:
@@ -126,31 +129,26 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
         rod2 = sign * (ram.reach * ram.depth2 - ram.depth * ram.reach2) / length ** 2
     cy = np.zeros_like(ram.cx) + design.guide
     return Shape(
-        phi=phi, crank_pin=np.stack(np.broadcast_arrays(lv.ax, lv.ay)),
+        phi=phi, crank_pin=np.stack(np.broadcast_arrays(ax, ay)),
         lever_tip=np.stack([tip.bx, tip.by]), ram_joint=np.stack([ram.cx, cy]),
         lever=lever, lever1=lv.lever1, lever2=lv.lever2,
         slide=lv.slide, slide1=lv.slide1, slide2=lv.slide2,
         tip1=np.stack([tip.bx1, tip.by1]), tip2=np.stack([tip.bx2, tip.by2]),
-        ram1=ram.ram1, ram2=ram.ram2, pin1=np.stack(np.broadcast_arrays(lv.ax1, lv.ay1)),
-        pin2=np.stack(np.broadcast_arrays(lv.ax2, lv.ay2)),
+        ram1=ram.ram1, ram2=ram.ram2, pin1=np.stack(np.broadcast_arrays(ax1, ay1)),
+        pin2=np.stack(np.broadcast_arrays(-ax, design.frame - ay)),
         rod=rod, rod1=rod1, rod2=rod2,
     )
 
 
 class _Lever(NamedTuple):
-    ax: np.ndarray
-    ay: np.ndarray
-    ax1: np.ndarray
-    ay1: np.ndarray
-    ax2: np.ndarray
-    ay2: np.ndarray
-    ux: np.ndarray
+    ux: np.ndarray          # along the lever: (sin ψ, cos ψ); n = (uy, −ux)
     uy: np.ndarray
-    slide: np.ndarray
+    slide: np.ndarray       # s = |O4A|
     slide1: np.ndarray
     slide2: np.ndarray
-    lever1: np.ndarray
-    lever2: np.ndarray
+    lever1: np.ndarray      # ψ′
+    lever2: np.ndarray      # ψ″
+    q: np.ndarray           # s²
 
 
 class _Tip(NamedTuple):
@@ -175,18 +173,22 @@ class _Ram(NamedTuple):
 
 
 def _lever_terms(design, cb: np.ndarray, sb: np.ndarray) -> _Lever:
-    """Crank pin A and the lever through it, with φ-derivatives."""
+    """The lever through the crank pin A = (L1·cos β, L2 + L1·sin β), with φ-derivatives.
+
+    In closed form, with q = s² = L1² + L2² + 2·L1·L2·sin β and dβ/dφ = −1:
+    s′ = −L1·L2·cos β/s, ψ′ = L1(L1 + L2·sin β)/q, ψ″ = −L1·L2(L2² − L1²)·cos β/q²
+    and s″ = s·ψ′(ψ′ − 1); every per-point product is one of these few terms.
+    """
     l1, l2 = design.crank, design.frame
-    ax, ay = l1 * cb, l2 + l1 * sb
-    ax1, ay1 = l1 * sb, -l1 * cb
-    ax2, ay2 = -ax, -l1 * sb
-    slide = np.sqrt(ax * ax + ay * ay)         # |O4A| ≥ L2 − L1 > 0 (np.hypot is ~20× slower)
-    ux, uy = ax / slide, ay / slide            # along the lever: (sin ψ, cos ψ); n = (uy, −ux)
-    slide1 = ax1 * ux + ay1 * uy
-    lever1 = (ax1 * uy - ay1 * ux) / slide
-    lever2 = (ax2 * uy - ay2 * ux - 2.0 * slide1 * lever1) / slide
-    slide2 = ax2 * ux + ay2 * uy + slide * lever1 ** 2
-    return _Lever(ax, ay, ax1, ay1, ax2, ay2, ux, uy, slide, slide1, slide2, lever1, lever2)
+    l12 = l1 * l2
+    q = (l1 * l1 + l2 * l2) + (2.0 * l12) * sb
+    slide = np.sqrt(q)                          # |O4A| ≥ L2 − L1 > 0
+    ux, uy = (l1 * cb) / slide, (l2 + l1 * sb) / slide
+    lever1 = l1 * (l1 + l2 * sb) / q
+    lever2 = -(l12 * (l2 * l2 - l1 * l1)) * cb / (q * q)
+    slide1 = -l12 * cb / slide
+    slide2 = slide * lever1 * (lever1 - 1.0)
+    return _Lever(ux, uy, slide, slide1, slide2, lever1, lever2, q)
 
 
 def _tip_terms(design, lv: _Lever) -> _Tip:
@@ -222,19 +224,20 @@ class Rates(NamedTuple):
 def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
     """The ram's rates only (three φ-derivatives), by the closed form of :func:`shape_at`.
 
-    The third derivative is one more differentiation of the same polar
-    relations: with A = s·u(ψ) and A‴ = −A′ (the crank turns uniformly),
-    ψ‴ = (A‴·n − 3s″ψ′ − 3s′ψ″ + sψ′³)/s; the tip B = L3·u gives
-    B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u); and the rod's reach r² = L4² − d² gives
-    r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r.
+    The third derivative is one more differentiation of the same closed
+    form: ψ‴ = −L1·L2(L2² − L1²)(q·sin β + 4·L1·L2·cos²β)/q³ (see
+    ``_lever_terms``); the tip B = L3·u gives B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u);
+    and the rod's reach r² = L4² − d² gives r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r.
     """
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
     ram = _ram_terms(design, tip)
     ux, uy, w1, w2 = lv.ux, lv.uy, lv.lever1, lv.lever2
-    along = -(lv.ax1 * uy - lv.ay1 * ux)          # A‴·n with A‴ = −A′
     cube = w1 * w1 * w1
-    w3 = (along - 3.0 * lv.slide2 * w1 - 3.0 * lv.slide1 * w2 + lv.slide * cube) / lv.slide
+    l1, l2 = design.crank, design.frame
+    # ψ‴ = d/dφ of ψ″ = −L1·L2(L2² − L1²)·cos β/q²:
+    w3 = -(l1 * l2 * (l2 * l2 - l1 * l1)) * (sin_beta * lv.q + (4.0 * l1 * l2) * cos_beta * cos_beta) \
+        / (lv.q * lv.q * lv.q)
     l3 = design.lever
     bx3 = l3 * ((w3 - cube) * uy - 3.0 * w1 * w2 * ux)
     if design.rod is None:

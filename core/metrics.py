@@ -18,7 +18,8 @@ import numpy as np
 from .designs import Designs
 from .extrema import bracket_root, grid_maximum
 from .geometry import Design
-from .kinematics import CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, ram_origin, rates_at, rpm_to_omega, shape_at
+from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rates_at,
+                         rpm_to_omega, shape_at)
 
 
 @dataclass(frozen=True)
@@ -154,8 +155,9 @@ def _chunk_peaks(d: Designs) -> CyclePeaks:
     special_cos, special_sin = _specials(d)
     pressure = None
     crowd = np.zeros(d.crank.shape, dtype=bool)
+    at = shape_at(col, np.zeros((1, 4)), special_cos, special_sin)
+    origin = at.ram_joint[0][:, 0]                   # the first sharp angle is φ = 0
     if d.rod is not None:
-        at = shape_at(col, np.zeros((1, 4)), special_cos, special_sin)
         pressure = pressure_angle(at.rod).max(axis=-1)
         crowd = np.abs(np.cos(at.rod)).min(axis=-1) < CROWD_BELOW      # r/L4 = |cos λ|
     fine = d.crank / d.frame > FINE_ABOVE
@@ -172,7 +174,7 @@ def _chunk_peaks(d: Designs) -> CyclePeaks:
     phi = np.stack([start, end], axis=-1)
     beta_ends = math.pi + (d.theta / 2.0)[:, None] - phi
     ends = shape_at(col, phi, np.cos(beta_ends), np.sin(beta_ends))
-    x_ends = ends.ram_joint[0] - ram_origin(d)[:, None]
+    x_ends = ends.ram_joint[0] - origin[:, None]
     lever1, lever2 = lever_peaks(d.crank / d.frame)
     return CyclePeaks(work_start=start, work_end=end, ram_min_mm=x_ends.min(axis=-1),
                       ram_max_mm=x_ends.max(axis=-1), v_work=peaks[0], v_return=peaks[1],
@@ -245,10 +247,15 @@ def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     near = (guess >= lo) & (guess <= lo + _STEP)
     width = 1e-9 * (1.0 + guess)
     a, b = np.where(near, guess - width, lo), np.where(near, guess + width, lo + _STEP)
-    tight = near & (np.sign(rate(a.reshape(-1), *args)) != np.sign(rate(b.reshape(-1), *args)))\
-        .reshape(lo.shape)
-    a, b = np.where(tight, a, lo), np.where(tight, b, lo + _STEP)
-    beta = bracket_root(rate, a.reshape(-1), b.reshape(-1), args).reshape(lo.shape)
+    f_a, f_b = rate(a.reshape(-1), *args), rate(b.reshape(-1), *args)
+    tight = near.reshape(-1) & (np.sign(f_a) != np.sign(f_b))
+    a = np.where(tight, a.reshape(-1), lo.reshape(-1))
+    b = np.where(tight, b.reshape(-1), (lo + _STEP).reshape(-1))
+    wide = np.flatnonzero(~tight)                   # the grid's cells: evaluate their ends
+    if wide.size:
+        sub = [v[wide] for v in args]
+        f_a[wide], f_b[wide] = rate(a[wide], *sub), rate(b[wide], *sub)
+    beta = bracket_root(rate, a, b, args, f_lo=f_a, f_hi=f_b).reshape(lo.shape)
     phi = np.mod(math.pi + (d.theta / 2.0)[:, None] - beta, 2.0 * math.pi)
     phi = np.where(good[:, None], phi, np.nan)
     return phi[:, 0], phi[:, 1]
