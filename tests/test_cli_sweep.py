@@ -143,3 +143,21 @@ def test_optimize_text_output():
     value = float(out.stdout.split("optimum")[1].split()[0])
     assert value <= analyze(synthesize(100, 1.46, 312), [40]).speeds[0].a_max_m_s2 * (1 + 1e-5)
     assert math.isfinite(value)
+
+
+@pytest.mark.parametrize("fmt", [["--csv", "-"], ["--json"]])
+def test_blocks_give_the_same_output(monkeypatch, capsys, fmt):
+    """A large sweep is evaluated and written in blocks; the output does not depend on them."""
+    from core.cli import cmd_sweep, main
+
+    argv = ["sweep", *BASE, "--rod-ratio", "0.3", "--vary", "rod-ratio=0.1:1:5",
+            "--vary", "guide=400:700:5", "--rpm", "40", "60", *fmt]
+    assert main(argv) == 0
+    whole = capsys.readouterr().out
+    monkeypatch.setattr(cmd_sweep, "BLOCK", 7)
+    assert main(argv) == 0
+    assert capsys.readouterr().out == whole
+    if fmt == ["--json"]:
+        assert len(json.loads(whole)) == 25
+    else:
+        assert len(whole.splitlines()) == 26

@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 from typing import Any
 
 import numpy as np
@@ -37,6 +38,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out = parser.add_mutually_exclusive_group()
     out.add_argument("--csv", metavar="FILE|-", help="write CSV to FILE or stdout (the default)")
     out.add_argument("--json", action="store_true", help="print JSON, one object per design")
+
+
+BLOCK = 50_000          # designs evaluated and formatted at a time
 
 
 def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tuple]:
@@ -115,30 +119,34 @@ def reasons(ev: Evaluation) -> list[str]:
     return out
 
 
-def sweep_csv(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> str:
-    cols = [(varied_column(n), values[PARAMETERS[n]]) for n in names] + figure_columns(ev)
-    header = [c for c, _ in cols[:len(names)]] + ["valid", "reason"] + [c for c, _ in cols[len(names):]]
-    text = [_format(v) for _, v in cols]
+def csv_header(names: list[str], ev: Evaluation) -> str:
+    figures = [c for c, _ in figure_columns(ev)]
+    return ",".join([varied_column(n) for n in names] + ["valid", "reason"] + figures) + "\n"
+
+
+def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> str:
+    """CSV lines (no header) of the designs in ``ev``; empty cells where undefined."""
+    varied = [_format(values[PARAMETERS[n]]) for n in names]
+    figures = [_format(v) for _, v in figure_columns(ev)]
     valid = np.where(ev.valid.reshape(-1), "true", "false")
     why = [_quote(r) for r in reasons(ev)]
-    lines = [",".join(header)]
-    k = len(names)
-    for i in range(valid.size):
-        lines.append(",".join([t[i] for t in text[:k]] + [valid[i], why[i]] + [t[i] for t in text[k:]]))
-    return "\n".join(lines) + "\n"
+    lines = [",".join([t[i] for t in varied] + [valid[i], why[i]] + [t[i] for t in figures])
+             for i in range(valid.size)]
+    return "\n".join(lines) + "\n" if lines else ""
 
 
-def sweep_json(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> list[dict[str, Any]]:
+def json_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> list[str]:
+    """One JSON object (text) per design, with the keys of the CSV columns."""
     cols = figure_columns(ev)
     why = reasons(ev)
     valid = ev.valid.reshape(-1)
-    rows = []
+    out = []
     for i in range(valid.size):
         row: dict[str, Any] = {varied_column(n): float(values[PARAMETERS[n]][i]) for n in names}
         row.update(valid=bool(valid[i]), reason=why[i])
         row.update({c: _number(v[i]) for c, v in cols})
-        rows.append(row)
-    return rows
+        out.append(json.dumps(row, ensure_ascii=False, allow_nan=False))
+    return out
 
 
 def _format(values: np.ndarray) -> list[str]:
@@ -167,12 +175,25 @@ def inputs(args: argparse.Namespace, with_count: bool):
 def run(args: argparse.Namespace) -> int:
     spec, varied, rpms, masses = inputs(args, with_count=True)
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
-    ev = evaluate(spec, values, rpms, masses)
     names = list(varied)
+    size = next(iter(values.values())).size
+    target = args.csv or "-"
+    pieces: list[str] = []
+    for start in range(0, size, BLOCK):      # blocks bound the memory of a large sweep
+        block = {k: v[start:start + BLOCK] for k, v in values.items()}
+        ev = evaluate(spec, block, rpms, masses)
+        if args.json:                        # JSON goes to stdout block by block
+            sys.stdout.write(("[\n" if start == 0 else ",\n") + ",\n".join(json_rows(names, block, ev)))
+            continue
+        text = (csv_header(names, ev) if start == 0 else "") + csv_rows(names, block, ev)
+        if target == "-":                    # stdout: block by block too
+            sys.stdout.write(text)
+        else:                                # a file: written whole, atomically
+            pieces.append(text)
     if args.json:
-        print(json.dumps(sweep_json(names, values, ev), indent=1, allow_nan=False))
-        return 0
-    write_output("--csv", args.csv or "-", sweep_csv(names, values, ev))
+        sys.stdout.write("\n]\n")
+    elif target != "-":
+        write_output("--csv", target, "".join(pieces))
     return 0
 
 
