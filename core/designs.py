@@ -90,6 +90,10 @@ class Designs:
         """The designs at ``index`` (an index array or boolean mask over the designs)."""
         return self._map(lambda v: v[index])
 
+    def flat(self) -> "Designs":
+        """The same designs as one axis (every length broadcast to the designs' shape)."""
+        return self._map(lambda v: v.reshape(-1))
+
     def column(self) -> "Designs":
         """The same designs with a trailing axis, to broadcast against (…, n) crank angles."""
         return self._map(lambda v: v[..., None])

@@ -117,7 +117,7 @@ def cycle_peaks(designs: Designs) -> CyclePeaks:
     monotonic in |ψ|.
     """
     shape = designs.shape
-    flat = designs._map(lambda v: v.reshape(-1))
+    flat = designs.flat()
     size = int(np.prod(shape))
     parts = [_chunk_peaks(flat.take(slice(i, i + CHUNK))) for i in range(0, size, CHUNK)] or \
         [_chunk_peaks(flat)]

@@ -115,7 +115,7 @@ def evaluate(spec: Spec, values: dict[str, np.ndarray], rpms,
     omega = rpm_to_omega(rpm)
     designs, verdict = spec_designs(spec, values)
     size = int(np.prod(designs.shape)) if designs.shape else 1
-    designs = designs._map(lambda v: v.reshape(size))
+    designs = designs.flat()
     ok = np.flatnonzero(verdict.ok.reshape(-1))
     good = designs.take(ok)
     sub = cycle_peaks(good)
@@ -176,3 +176,27 @@ def design_value(design, name: str) -> float | None:
         return None if design.rod is None else float(design.rod / design.lever)
     value = getattr(design, name)
     return None if value is None else float(value)
+
+
+def varied_parameters(spec: Spec) -> list[str]:
+    """The core parameters a design given as ``spec`` can vary in a sweep."""
+    names = ["crank"] + (["time_ratio", "stroke"] if spec.mode == "synthesis" else ["frame", "lever"])
+    names.append("guide")
+    if spec.variant == "rod":
+        names.append("rod_ratio" if spec.rod_input == "ratio" else "rod")
+    return names
+
+
+def default_range(design, name: str) -> tuple[float, float]:
+    """A range of ``name`` around ``design`` that mostly holds valid designs."""
+    if name == "time_ratio":
+        return 1.05, 3.0
+    if name == "rod_ratio":
+        return 0.2, 1.2
+    if name == "rod":
+        return 0.2 * design.lever, 1.2 * design.lever
+    if name == "guide":
+        top = design.lever if design.rod is None else 1.2 * design.lever
+        return (design.frame + design.crank) * 1.001, top
+    value = design_value(design, name) or 1.0
+    return 0.5 * value, 1.5 * value

@@ -18,39 +18,13 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout
                                QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
                                QVBoxLayout, QWidget)
 
-from core.sweep import design_value, spec_changes
+from core.sweep import default_range, design_value, spec_changes, varied_parameters
 from .explore_jobs import FIGURES, JobRunner, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
 from .messages import describe
 from .model import DesignModel
 
 REFRESH_MS = 300
-
-
-def parameters(model: DesignModel) -> list[str]:
-    """The core parameters the current design's mode and variant can vary."""
-    spec = model.valid_spec
-    names = ["crank"] + (["time_ratio", "stroke"] if spec.mode == "synthesis" else ["frame", "lever"])
-    names.append("guide")
-    if spec.variant == "rod":
-        names.append("rod_ratio" if spec.rod_input == "ratio" else "rod")
-    return names
-
-
-def default_range(model: DesignModel, name: str) -> tuple[float, float]:
-    """A range around the current design that mostly holds valid designs."""
-    d = model.design
-    if name == "time_ratio":
-        return 1.05, 3.0
-    if name == "rod_ratio":
-        return 0.2, 1.2
-    if name == "rod":
-        return 0.2 * d.lever, 1.2 * d.lever
-    if name == "guide":
-        top = d.lever if d.rod is None else 1.2 * d.lever
-        return (d.frame + d.crank) * 1.001, top
-    value = design_value(d, name) or 1.0
-    return 0.5 * value, 1.5 * value
 
 
 class ExploreView(QWidget):
@@ -78,7 +52,7 @@ class ExploreView(QWidget):
         self.map = HeatMap(self)
         self.hover = QLabel()
         self.hover.setWordWrap(True)
-        self.hover.setMinimumHeight(36)
+        self.hover.setMinimumHeight(48)
         self.objective = QComboBox()
         self.free = [QCheckBox(), QCheckBox()]
         for box in self.free:
@@ -199,7 +173,7 @@ class ExploreView(QWidget):
         combo.blockSignals(False)
 
     def _fill_axes(self) -> None:
-        names = parameters(self.model)
+        names = varied_parameters(self.model.valid_spec)
         preferred = (["rod_ratio", "guide"] if "rod_ratio" in names else
                      ["rod", "guide"] if "rod" in names else [names[0], names[1]])
         texts = self.parameter_names()
@@ -213,7 +187,7 @@ class ExploreView(QWidget):
             self._axis_changed(i)
 
     def _axis_changed(self, i: int) -> None:
-        low, high = default_range(self.model, self.axis_names[i].currentData())
+        low, high = default_range(self.model.design, self.axis_names[i].currentData())
         self.lows[i].setValue(low)
         self.highs[i].setValue(high)
         self._show_labels()
@@ -284,11 +258,11 @@ class ExploreView(QWidget):
         error = result.errors[row * result.x.size + column]
         if error is not None:
             text = self.tr("%1 — invalid: %2").replace("%1", where).replace("%2", describe(error))
-        else:
-            values = result.figures.get(self.figure.currentData())
-            value = np.nan if values is None else values[row, column]
-            shown = "—" if not math.isfinite(value) else f"{value:.5g}"
-            text = f"{where}: {shown}"
+        else:                                # every figure of the cell, to weigh one against another
+            labels = self.figure_names()
+            shown = [f"{labels[key]}: {values[row, column]:.5g}" for key, values in
+                     result.figures.items() if math.isfinite(values[row, column])]
+            text = where + "\n" + ";  ".join(shown)
         self.hover.setText(text)
         self.map.setToolTip(text)
 
@@ -388,7 +362,7 @@ class ExploreView(QWidget):
         return spec, self.model.rpms, self.model.masses
 
     def _model_changed(self) -> None:
-        if parameters(self.model) != [self.axis_names[0].itemData(i)
+        if varied_parameters(self.model.valid_spec) != [self.axis_names[0].itemData(i)
                                       for i in range(self.axis_names[0].count())]:
             self._fill_axes()
             self._fill_figures()

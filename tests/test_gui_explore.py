@@ -135,3 +135,32 @@ def test_explore_tab_in_the_main_window(qtbot, tmp_path):
     assert target.stat().st_size > 1000
     window.explore.shutdown()
     assert math.isfinite(float(np.nanmax(window.explore.result.figures["accel"])))
+
+
+def test_hover_shows_every_figure_of_a_valid_cell(qtbot, view):
+    view.count.setValue(8)
+    compute(qtbot, view)
+    row, col = 4, 4
+    assert view.result.valid[row, col]
+    qtbot.mouseMove(view.map.viewport(), pixel(view, row, col))
+    qtbot.waitUntil(lambda: view.hover.text() != "")
+    text = view.hover.text()
+    for key in ("pressure-angle", "accel", "v-work", "v-return"):
+        value = view.result.figures[key][row, col]
+        assert f"{view.figure_names()[key]}: {value:.5g}" in text
+
+
+def test_map_follows_a_change_of_the_fixed_parameters(qtbot, view, model):
+    view.count.setValue(6)
+    compute(qtbot, view)
+    before = view.result.figures["accel"].copy()
+    model.set_spec(stroke=400.0)                      # not one of the map's two parameters
+    qtbot.waitUntil(lambda: view.runner.job is None and view.result is not None
+                    and view.result.figures["accel"].shape == before.shape
+                    and not np.allclose(view.result.figures["accel"], before, equal_nan=True),
+                    timeout=20_000)
+    yy, xx = np.meshgrid(view.result.y, view.result.x, indexing="ij")
+    ev = evaluate(model.valid_spec, {"rod_ratio": xx.ravel(), "guide": yy.ravel()}, model.rpms)
+    expected = np.max(ev.figures["a_max_m_s2"], axis=-1).reshape(view.result.valid.shape)
+    valid = view.result.valid
+    assert np.allclose(view.result.figures["accel"][valid], expected[valid], rtol=1e-12)
