@@ -82,9 +82,14 @@ def require_range(parameter: str, value: object, low: float, high: float,
     too_low = number <= low if low_open else number < low
     too_high = number >= high if high_open else number > high
     if too_low or too_high:
-        left = ">" if low_open else "≥"
-        right = "<" if high_open else "≤"
-        unit_text = f" {unit}" if unit else ""
-        raise DesignError(parameter, number,
-                          f"must be {left} {low:g} and {right} {high:g}{unit_text}")
+        raise DesignError(parameter, number, range_text(low, high, unit, low_open, high_open))
     return number
+
+
+def range_text(low: float, high: float, unit: str = "", low_open: bool = True,
+               high_open: bool = False) -> str:
+    """The ``allowed`` text of a range check, e.g. "must be > 1 and ≤ 5"."""
+    left = ">" if low_open else "≥"
+    right = "<" if high_open else "≤"
+    unit_text = f" {unit}" if unit else ""
+    return f"must be {left} {low:g} and {right} {high:g}{unit_text}"

@@ -16,21 +16,14 @@ from typing import Literal
 
 import numpy as np
 
+from .designs import (GUIDE_RULES, MAX_CRANK_RATIO, MAX_LENGTH_MM, MAX_ROD_RATIO, MAX_TIME_RATIO,  # noqa: F401
+                      MIN_LENGTH_MM, ROD_MARGIN, ROD_SIDES, Designs, Verdict, check_designs,
+                      dimensions_many, drive_margin, synthesize_many)
+from .designs import _guide, _guide_number
 from .errors import DesignError, require_range
 
-MIN_LENGTH_MM = 0.001
-MAX_LENGTH_MM = 100_000.0
-MAX_TIME_RATIO = 5.0
-MAX_ROD_RATIO = 10.0      # L4/L3
-# L1/L2 = sin(θ/2) at K = 5 (θ = 120°): the largest crank a frame allows.
-MAX_CRANK_RATIO = math.sin(math.pi * (MAX_TIME_RATIO - 1.0) / (MAX_TIME_RATIO + 1.0) / 2.0)
-# The rod must keep a horizontal reach |Cx − Bx| and a drive margin of this fraction of
-# L4 (a pressure angle below 89.94°), so forces and accelerations stay finite and exact.
-ROD_MARGIN = 1e-3
 GuideRule = Literal["chord", "sagitta"]
 RodSide = Literal["trailing", "leading"]
-ROD_SIDES: tuple[str, ...] = ("trailing", "leading")
-GUIDE_RULES: tuple[str, ...] = ("chord", "sagitta")
 
 
 @dataclass(frozen=True)
@@ -96,17 +89,11 @@ def guide_height(rule: GuideRule | float, lever: float, theta: float) -> float:
     ``sagitta``: midway along the arc's sagitta, L3·(1 + cos(θ/2))/2, which
     halves the rod's worst inclination.
     """
-    if rule == "chord":
-        return lever * math.cos(theta / 2.0)
-    if rule == "sagitta":
-        return lever * (1.0 + math.cos(theta / 2.0)) / 2.0
-    if isinstance(rule, str):
-        try:
-            rule = float(rule)
-        except ValueError:
-            raise DesignError("guide", rule,
-                              "must be 'chord', 'sagitta' or a height in mm") from None
-    return require_length("guide", rule)
+    verdict = Verdict(np.zeros(1, dtype=np.int16))
+    value = _guide_argument(rule)
+    height = _guide(verdict, value, np.array([float(lever)]), np.array([float(theta)]))
+    verdict.raise_first()
+    return float(height[0])
 
 
 def require_length(name: str, value: object) -> float:
@@ -120,32 +107,11 @@ def synthesize(crank: float, time_ratio: float, stroke: float, *,
     """Seed 003's synthesis: L2 = L1/sin(θ/2), L3 = H/(2 sin(θ/2)).
 
     Give ``rod`` (mm) or ``rod_ratio`` (L4/L3) for the connecting-rod variant;
-    give neither for the block variant.
+    give neither for the block variant. The rules are those of
+    :func:`core.designs.synthesize_many` on one design.
     """
-    crank = require_length("crank", crank)
-    time_ratio = require_range("time_ratio", time_ratio, 1.0, MAX_TIME_RATIO)
-    stroke = require_length("stroke", stroke)
-    theta = theta_from_time_ratio(time_ratio)
-    half = math.sin(theta / 2.0)
-    # L2 = L1/sin(θ/2) and L3 = H/(2 sin(θ/2)) grow without bound as K → 1.
-    smallest_half = max(crank, stroke / 2.0) / MAX_LENGTH_MM
-    if half < smallest_half:
-        k_min = (math.pi + 2.0 * math.asin(smallest_half)) / (math.pi - 2.0 * math.asin(smallest_half))
-        raise DesignError("time_ratio", time_ratio,
-                          f"must be ≥ {_round_up(k_min)} for this crank and stroke, so that "
-                          f"the frame and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
-    frame = crank / half
-    lever = stroke / (2.0 * half)
-    shortest = crank + frame
-    if lever < shortest:
-        need = 2.0 * shortest * half
-        raise DesignError("stroke", stroke,
-                          f"must be ≥ {need:.1f} mm for this crank and K, "
-                          "so that the crank pin stays on the lever")
-    rod_length = _rod_length(rod, rod_ratio, lever)
-    return Design(crank=crank, frame=frame, lever=lever,
-                  guide=guide_height(guide, lever, theta), rod=rod_length,
-                  rod_side=rod_side)
+    return _one_design(synthesize_many, (("crank", crank), ("time_ratio", time_ratio),
+                                         ("stroke", stroke)), guide, rod, rod_ratio, rod_side)
 
 
 def from_dimensions(crank: float, frame: float, lever: float, *,
@@ -153,109 +119,60 @@ def from_dimensions(crank: float, frame: float, lever: float, *,
                     rod_ratio: float | None = None,
                     rod_side: RodSide = "trailing") -> Design:
     """A design from measured link lengths; K, H and θ are then implied."""
-    crank = require_length("crank", crank)
-    frame = require_length("frame", frame)
-    lever = require_length("lever", lever)
-    _check_crank_ratio(crank, frame)
-    theta = 2.0 * math.asin(crank / frame)
-    rod_length = _rod_length(rod, rod_ratio, lever)
-    return Design(crank=crank, frame=frame, lever=lever,
-                  guide=guide_height(guide, lever, theta), rod=rod_length,
-                  rod_side=rod_side)
+    return _one_design(dimensions_many, (("crank", crank), ("frame", frame), ("lever", lever)),
+                       guide, rod, rod_ratio, rod_side)
 
 
-def _rod_length(rod: float | None, rod_ratio: float | None, lever: float) -> float | None:
-    if rod is not None and rod_ratio is not None:
-        raise DesignError("rod", rod, "must be given either as a length or as a ratio L4/L3, not both")
-    if rod_ratio is not None:
-        ratio = require_range("rod_ratio", rod_ratio, 0.0, MAX_ROD_RATIO)
-        return ratio * lever
-    if rod is not None:
-        return require_length("rod", rod)
-    return None
+def _one_design(many, lengths, guide, rod, rod_ratio, rod_side) -> Design:
+    """``many`` (synthesize_many or dimensions_many) on one design; its first error raised."""
+    designs, verdict = many(*(_one(name, value) for name, value in lengths),
+                            guide=_guide_argument(guide), rod=_optional("rod", rod),
+                            rod_ratio=_optional("rod_ratio", rod_ratio), rod_side=rod_side,
+                            validate=False)
+    verdict.raise_first()
+    return _design(designs)
 
 
-def _round_up(value: float, digits: int = 6, down: bool = False) -> str:
-    """``value`` rounded up (or down) to ``digits`` significant digits, so that a stated
-    minimum (or maximum) is itself allowed."""
-    scale = 10.0 ** (digits - 1 - math.floor(math.log10(abs(value))))
-    rounded = (math.floor if down else math.ceil)(value * scale) / scale
-    return f"{rounded:.{digits}g}"
+def _one(name: str, value: object) -> np.ndarray:
+    """A scalar input as a one-design array; text that is no number is refused here."""
+    try:
+        return np.array([float(value)])  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        raise DesignError(name, value, "must be a number") from None
 
 
-def _check_crank_ratio(crank: float, frame: float) -> None:
-    """K = (π + θ)/(π − θ) with sin(θ/2) = L1/L2 must stay ≤ 5, like a synthesized K."""
-    if crank >= frame:
-        raise DesignError("crank", crank,
-                          f"must be shorter than the frame O2O4 ({frame:.6g} mm)")
-    if crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12):
-        raise DesignError("crank", crank,
-                          f"must be ≤ {_round_up(MAX_CRANK_RATIO * frame, down=True)} mm (0.866·L2), so that the "
-                          f"time ratio K stays ≤ {MAX_TIME_RATIO:g}")
+def _optional(name: str, value: object) -> np.ndarray | None:
+    return None if value is None else _one(name, value)
+
+
+def _guide_argument(guide: object):
+    if isinstance(guide, str) and guide in GUIDE_RULES:
+        return guide
+    number = _guide_number(guide)
+    return _one("guide", number)
+
+
+def _design(designs: Designs) -> Design:
+    rod = None if designs.rod is None else float(designs.rod[0])
+    return Design(crank=float(designs.crank[0]), frame=float(designs.frame[0]),
+                  lever=float(designs.lever[0]), guide=float(designs.guide[0]), rod=rod,
+                  rod_side=designs.rod_side)  # type: ignore[arg-type]
 
 
 def validate(design: Design) -> None:
-    """Refuse a design that cannot be assembled or would jam somewhere in the cycle."""
-    for name in ("crank", "frame", "lever", "guide"):
-        require_length(name, getattr(design, name))
-    _check_crank_ratio(design.crank, design.frame)
-    if design.rod_side not in ROD_SIDES:
-        raise DesignError("rod_side", design.rod_side, "must be 'trailing' or 'leading'")
-    reach = design.frame + design.crank
-    if design.lever < reach:
-        raise DesignError("lever", design.lever,
-                          f"must be ≥ L2 + L1 = {reach:.6g} mm, "
-                          "so that the crank pin stays on the lever")
-    if design.guide <= reach:
-        raise DesignError("guide", design.guide,
-                          f"must be > L2 + L1 = {reach:.6g} mm above the lever pivot, "
-                          "so that the ram clears the crank")
-    half = design.theta / 2.0
-    tip_low = design.lever * math.cos(half)
-    if design.rod is None:
-        if design.guide > design.lever:
-            raise DesignError("guide", design.guide,
-                              f"must be ≤ the lever length {design.lever:.6g} mm: "
-                              "the block on the lever tip cannot reach a higher guide")
-        return
-    require_length("rod", design.rod)
-    # The rod's rise |d| = |guide − By| is largest at a limit position (By lowest) or at
-    # ψ = 0 (By = L3); its horizontal reach sqrt(L4² − d²) must stay ≥ ROD_MARGIN·L4.
-    rise = max(design.guide - tip_low, design.lever - design.guide)
-    need = rise / math.sqrt(1.0 - ROD_MARGIN ** 2)
-    if design.rod <= need:
-        raise DesignError("rod", design.rod,
-                          f"must be > {need:.6g} mm to reach the guide line "
-                          "over the whole cycle")
-    if rod_drive_margin(design) <= ROD_MARGIN * design.rod:
-        raise DesignError("rod", design.rod,
-                          "the rod passes a dead-centre position against the lever; "
-                          "lengthen the rod or move the guide line")
+    """Refuse a design that cannot be assembled or would jam somewhere in the cycle.
+
+    The rules are :func:`core.designs.check_designs` on this one design.
+    """
+    one = {name: _one(name, getattr(design, name)) for name in ("crank", "frame", "lever", "guide")}
+    rod = None if design.rod is None else _one("rod", design.rod)
+    verdict = Verdict(np.zeros(1, dtype=np.int16))
+    check_designs(verdict, Designs(rod=rod, rod_side=design.rod_side, **one))
+    verdict.raise_first()
 
 
 def rod_drive_margin(design: Design) -> float:
     """min over the swing of r·cos ψ − s·d·sin ψ, mm: zero where the rod stands square
-    to the lever and the ram would stall (a dead centre).
-
-    The minimum is bracketed on a grid over ψ ∈ [−θ/2, θ/2] and polished with Brent's
-    method, so a narrow dip between grid points is not missed.
+    to the lever and the ram would stall (a dead centre). See :func:`core.designs.drive_margin`.
     """
-    from scipy.optimize import minimize_scalar
-
-    half = design.theta / 2.0
-    rod, sign = float(design.rod), design.rod_sign  # type: ignore[arg-type]
-
-    def drive(psi):
-        d = design.guide - design.lever * np.cos(psi)
-        r = np.sqrt(np.maximum(rod ** 2 - d ** 2, 0.0))
-        return r * np.cos(psi) - sign * d * np.sin(psi)
-
-    psi = np.linspace(-half, half, 721)
-    values = drive(psi)
-    i = int(np.argmin(values))
-    lo, hi = psi[max(i - 1, 0)], psi[min(i + 1, psi.size - 1)]
-    if hi - lo <= 0.0:
-        return float(values[i])
-    best = minimize_scalar(lambda p: float(drive(p)), bounds=(lo, hi), method="bounded",
-                           options={"xatol": 1e-12 * max(half, 1e-300)})
-    return float(min(values[i], best.fun))
+    return float(drive_margin(Designs.of(design))[0])

@@ -16,9 +16,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
+from .designs import Designs
 from .errors import DesignError, require_range
 from .geometry import Design
 
@@ -143,56 +145,188 @@ def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
     return samples
 
 
-def shape(design: Design, phi: np.ndarray) -> Shape:
-    """Closed-form positions and φ-derivatives for all ``phi`` at once."""
+def shape(design: Design | Designs, phi: np.ndarray) -> Shape:
+    """Closed-form positions and φ-derivatives for all ``phi`` at once.
+
+    ``design`` is one :class:`Design` or many :class:`~core.designs.Designs`
+    whose length arrays broadcast against ``phi`` (give designs of shape
+    (d, 1) and angles (n,) or (d, n) for (d, n) results).
+    """
     phi = np.asarray(phi, dtype=float)
-    l1, l2, l3 = design.crank, design.frame, design.lever
     # Absolute crank direction: clockwise from the left limit position.
-    beta = math.pi + design.theta / 2.0 - phi
-    cb, sb = np.cos(beta), np.sin(beta)
-    ax, ay = l1 * cb, l2 + l1 * sb
-    ax1, ay1 = l1 * sb, -l1 * cb
-    ax2, ay2 = -l1 * cb, -l1 * sb
-    slide = np.hypot(ax, ay)
-    ux, uy = ax / slide, ay / slide            # along the lever: (sin ψ, cos ψ)
-    nx, ny = uy, -ux                           # ψ-direction:     (cos ψ, −sin ψ)
+    beta = math.pi + np.asarray(design.theta) / 2.0 - phi
+    return shape_at(design, phi, np.cos(beta), np.sin(beta))
+
+
+def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
+             sin_beta: np.ndarray) -> Shape:
+    """:func:`shape` from the cosine and sine of the crank's absolute direction
+    β = π + θ/2 − φ, which a caller sampling many designs can share between them."""
+    lv = _lever_terms(design, cos_beta, sin_beta)
+    tip = _tip_terms(design, lv)
+    ram = _ram_terms(design, tip)
+    l1 = design.crank
+    ax, ay = l1 * cos_beta, design.frame + l1 * sin_beta      # crank pin A and its rates
+    ax1, ay1 = l1 * sin_beta, -l1 * cos_beta
     lever = np.arctan2(ax, ay)
-    slide1 = ax1 * ux + ay1 * uy
-    lever1 = (ax1 * nx + ay1 * ny) / slide
-    lever2 = (ax2 * nx + ay2 * ny - 2.0 * slide1 * lever1) / slide
-    slide2 = ax2 * ux + ay2 * uy + slide * lever1 ** 2
-    bx, by = l3 * ux, l3 * uy
-    bx1, by1 = l3 * lever1 * nx, l3 * lever1 * ny
-    sq = lever1 ** 2
-    bx2 = l3 * (lever2 * nx - sq * ux)
-    by2 = l3 * (lever2 * ny - sq * uy)
     if design.rod is None:
-        cx, cy = bx, np.full_like(bx, design.guide)
-        ram1, ram2 = bx1, bx2
         rod = rod1 = rod2 = None
     else:
         sign, length = design.rod_sign, design.rod
-        d = design.guide - by
-        d1, d2 = -by1, -by2
-        with np.errstate(invalid="ignore"):
-            r = np.sqrt(length ** 2 - d ** 2)  # NaN where the rod cannot reach
-        r1 = -d * d1 / r
-        r2 = -(r1 ** 2 + d1 ** 2 + d * d2) / r
-        cx, cy = bx + sign * r, np.full_like(bx, design.guide)
-        ram1, ram2 = bx1 + sign * r1, bx2 + sign * r2
-        rod = np.arctan2(d, sign * r)
+        rod = np.arctan2(ram.depth, sign * ram.reach)
         if sign < 0:  # keep a trailing rod's angle near 180° instead of jumping at ±180°
             rod = np.mod(rod, 2.0 * math.pi)
-        rod1 = sign * (r * d1 - d * r1) / length ** 2
-        rod2 = sign * (r * d2 - d * r2) / length ** 2
+        rod1 = sign * (ram.reach * ram.depth1 - ram.depth * ram.reach1) / length ** 2
+        rod2 = sign * (ram.reach * ram.depth2 - ram.depth * ram.reach2) / length ** 2
+    cy = np.zeros_like(ram.cx) + design.guide
     return Shape(
-        phi=phi, crank_pin=np.stack([ax, ay]), lever_tip=np.stack([bx, by]),
-        ram_joint=np.stack([cx, cy]), lever=lever, lever1=lever1, lever2=lever2,
-        slide=slide, slide1=slide1, slide2=slide2,
-        tip1=np.stack([bx1, by1]), tip2=np.stack([bx2, by2]),
-        ram1=ram1, ram2=ram2, pin1=np.stack([ax1, ay1]), pin2=np.stack([ax2, ay2]),
+        phi=phi, crank_pin=np.stack(np.broadcast_arrays(ax, ay)),
+        lever_tip=np.stack([tip.bx, tip.by]), ram_joint=np.stack([ram.cx, cy]),
+        lever=lever, lever1=lv.lever1, lever2=lv.lever2,
+        slide=lv.slide, slide1=lv.slide1, slide2=lv.slide2,
+        tip1=np.stack([tip.bx1, tip.by1]), tip2=np.stack([tip.bx2, tip.by2]),
+        ram1=ram.ram1, ram2=ram.ram2, pin1=np.stack(np.broadcast_arrays(ax1, ay1)),
+        pin2=np.stack(np.broadcast_arrays(-ax, design.frame - ay)),
         rod=rod, rod1=rod1, rod2=rod2,
     )
+
+
+class _Lever(NamedTuple):
+    ux: np.ndarray          # along the lever: (sin ψ, cos ψ); n = (uy, −ux)
+    uy: np.ndarray
+    slide: np.ndarray       # s = |O4A|
+    slide1: np.ndarray
+    slide2: np.ndarray
+    lever1: np.ndarray      # ψ′
+    lever2: np.ndarray      # ψ″
+    q: np.ndarray           # s²
+
+
+class _Tip(NamedTuple):
+    bx: np.ndarray
+    by: np.ndarray
+    bx1: np.ndarray
+    by1: np.ndarray
+    bx2: np.ndarray
+    by2: np.ndarray
+
+
+class _Ram(NamedTuple):
+    cx: np.ndarray
+    ram1: np.ndarray
+    ram2: np.ndarray
+    depth: np.ndarray | None     # d = guide − By, the rod's rise (rod variant)
+    depth1: np.ndarray | None
+    depth2: np.ndarray | None
+    reach: np.ndarray | None     # r = sqrt(L4² − d²), the rod's horizontal reach
+    reach1: np.ndarray | None
+    reach2: np.ndarray | None
+
+
+def _lever_terms(design, cb: np.ndarray, sb: np.ndarray) -> _Lever:
+    """The lever through the crank pin A = (L1·cos β, L2 + L1·sin β), with φ-derivatives.
+
+    In closed form, with q = s² = L1² + L2² + 2·L1·L2·sin β and dβ/dφ = −1:
+    s′ = −L1·L2·cos β/s, ψ′ = L1(L1 + L2·sin β)/q, ψ″ = −L1·L2(L2² − L1²)·cos β/q²
+    and s″ = s·ψ′(ψ′ − 1); every per-point product is one of these few terms.
+    """
+    l1, l2 = design.crank, design.frame
+    l12 = l1 * l2
+    q = (l1 * l1 + l2 * l2) + (2.0 * l12) * sb
+    slide = np.sqrt(q)                          # |O4A| ≥ L2 − L1 > 0
+    ux, uy = (l1 * cb) / slide, (l2 + l1 * sb) / slide
+    lever1 = l1 * (l1 + l2 * sb) / q
+    lever2 = -(l12 * (l2 * l2 - l1 * l1)) * cb / (q * q)
+    slide1 = -l12 * cb / slide
+    slide2 = slide * lever1 * (lever1 - 1.0)
+    return _Lever(ux, uy, slide, slide1, slide2, lever1, lever2, q)
+
+
+def _tip_terms(design, lv: _Lever) -> _Tip:
+    """Lever tip B = L3·(sin ψ, cos ψ) with φ-derivatives."""
+    l3 = design.lever
+    sq = lv.lever1 ** 2
+    return _Tip(l3 * lv.ux, l3 * lv.uy, l3 * lv.lever1 * lv.uy, -l3 * lv.lever1 * lv.ux,
+                l3 * (lv.lever2 * lv.uy - sq * lv.ux), l3 * (-lv.lever2 * lv.ux - sq * lv.uy))
+
+
+def _ram_terms(design, tip: _Tip) -> _Ram:
+    """Ram joint C: above B (block variant) or at the rod's end on the guide line."""
+    if design.rod is None:
+        return _Ram(tip.bx, tip.bx1, tip.bx2, None, None, None, None, None, None)
+    sign, length = design.rod_sign, design.rod
+    d = design.guide - tip.by
+    d1, d2 = -tip.by1, -tip.by2
+    with np.errstate(invalid="ignore"):
+        r = np.sqrt(length ** 2 - d ** 2)  # NaN where the rod cannot reach
+    r1 = -d * d1 / r
+    r2 = -(r1 ** 2 + d1 ** 2 + d * d2) / r
+    return _Ram(tip.bx + sign * r, tip.bx1 + sign * r1, tip.bx2 + sign * r2, d, d1, d2, r, r1, r2)
+
+
+class Rates(NamedTuple):
+    """The φ-derivatives the cycle's peaks are taken from (no positions)."""
+
+    ram1: np.ndarray     # dCx/dφ, mm/rad
+    ram2: np.ndarray     # d²Cx/dφ², mm/rad²
+    ram3: np.ndarray     # d³Cx/dφ³, mm/rad³: where it vanishes, |d²Cx/dφ²| peaks
+
+
+def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
+    """The ram's rates only (three φ-derivatives), by the closed form of :func:`shape_at`.
+
+    The third derivative is one more differentiation of the same closed
+    form: ψ‴ = −L1·L2(L2² − L1²)(q·sin β + 4·L1·L2·cos²β)/q³ (see
+    ``_lever_terms``); the tip B = L3·u gives B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u);
+    and the rod's reach r² = L4² − d² gives r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r.
+    """
+    lv = _lever_terms(design, cos_beta, sin_beta)
+    tip = _tip_terms(design, lv)
+    ram = _ram_terms(design, tip)
+    ux, uy, w1, w2 = lv.ux, lv.uy, lv.lever1, lv.lever2
+    cube = w1 * w1 * w1
+    l1, l2 = design.crank, design.frame
+    # ψ‴ = d/dφ of ψ″ = −L1·L2(L2² − L1²)·cos β/q²:
+    w3 = -(l1 * l2 * (l2 * l2 - l1 * l1)) * (sin_beta * lv.q + (4.0 * l1 * l2) * cos_beta * cos_beta) \
+        / (lv.q * lv.q * lv.q)
+    l3 = design.lever
+    bx3 = l3 * ((w3 - cube) * uy - 3.0 * w1 * w2 * ux)
+    if design.rod is None:
+        return Rates(ram.ram1, ram.ram2, bx3)
+    d3 = l3 * ((w3 - cube) * ux + 3.0 * w1 * w2 * uy)   # d‴ = −B‴y
+    r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.depth1 * ram.depth2 + ram.depth * d3) / ram.reach
+    return Rates(ram.ram1, ram.ram2, bx3 + design.rod_sign * r3)
+
+
+# Offsets (rad) of samples crowding geometrically toward the angles where a rod variant's
+# curves can change sharply (see sharp_angles), down to ~1e-5 rad.
+CROWD_OFFSETS = np.concatenate([-(0.05 * 5.0 ** -np.arange(0, 7)), [0.0],
+                                (0.05 * 5.0 ** -np.arange(0, 7))[::-1]])
+
+
+# Where the rod's reach sqrt(L4² − d²) at every sharp angle stays above this fraction of L4,
+# its motion is smooth on the scale of uniform samples and no crowding is needed.
+CROWD_BELOW = 0.2
+
+
+def needs_crowding(design: Design | Designs) -> np.ndarray:
+    """Per design: does the rod come close to upright (reach < CROWD_BELOW·L4) at a sharp angle?"""
+    if design.rod is None:
+        return np.zeros(np.shape(design.theta), dtype=bool)
+    at = shape(design.column() if isinstance(design, Designs) else design, sharp_angles(design))
+    return np.abs(np.cos(at.rod)).min(axis=-1) < CROWD_BELOW     # r/L4 = |cos λ|
+
+
+def sharp_angles(design: Design | Designs) -> np.ndarray:
+    """Crank angles φ (rad) of the two dead points and of the lever's two vertical
+    crossings (ψ = 0), shape design + (4,).
+
+    The rod's rise |d| = |guide − L3·cos ψ| is monotonic in |ψ|, so its reach
+    sqrt(L4² − d²) is smallest, and the rod variant's velocity, acceleration
+    and forces can change sharply, only at these angles.
+    """
+    half = np.asarray(design.theta)[..., None] / 2.0
+    return np.array([0.0, math.pi, math.pi / 2.0, 1.5 * math.pi]) + np.array([0.0, 2.0, 1.0, 1.0]) * half
 
 
 def pressure_angle(rod_angle: np.ndarray) -> np.ndarray:
@@ -200,8 +334,10 @@ def pressure_angle(rod_angle: np.ndarray) -> np.ndarray:
     return np.abs(np.arctan(np.tan(rod_angle)))
 
 
-def ram_origin(design: Design) -> float:
-    """x of the ram joint at φ = 0, the zero of the ram displacement, mm."""
+def ram_origin(design: Design | Designs) -> float | np.ndarray:
+    """x of the ram joint at φ = 0, the zero of the ram displacement, mm (one per design)."""
+    if isinstance(design, Designs):
+        return shape(design, np.zeros(1)).ram_joint[0]
     return float(shape(design, np.zeros(1)).ram_joint[0, 0])
 
 

@@ -1,9 +1,12 @@
 """Cycle metrics measured from the motion itself, not echoed from the inputs.
 
 The third level of core. Limit positions are found as the zeros of the ram
-velocity (sign changes on a dense grid, refined with Brent's method on the
-closed-form velocity), so a measured K or stroke that disagrees with the
-design's nominal values exposes a fault in the kinematics.
+velocity (sign changes on a grid, refined by Newton steps on the closed-form
+acceleration), so a measured K or stroke that disagrees with the design's
+nominal values exposes a fault in the kinematics. Every peak is an extremum
+of the closed-form curves (see :mod:`core.extrema`), not the largest sample
+of a grid. One code path serves one design (:func:`analyze`) and many
+(:func:`cycle_peaks`, used by the sweep).
 """
 from __future__ import annotations
 
@@ -12,10 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .designs import Designs
+from .extrema import bracket_root, grid_maximum
 from .geometry import Design
-from .kinematics import check_rpms, pressure_angle, ram_origin, rpm_to_omega, shape
-
-GRID = 7200
+from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rates_at,
+                         rpm_to_omega, shape_at)
 
 
 @dataclass(frozen=True)
@@ -54,73 +58,269 @@ class CycleMetrics:
         return min(self.speeds, key=lambda s: abs(s.rpm - rpm))
 
 
-def limit_angles(design: Design) -> tuple[float, float]:
-    """Crank angles (rad, in [0, 2π)) where the ram is at its two dead points.
+@dataclass(frozen=True)
+class CyclePeaks:
+    """Speed-independent cycle figures of many designs; every field has the designs' shape.
 
-    Returns (start of the working stroke, end of the working stroke). Each
-    zero of dC/dφ is bracketed on a grid and polished by Newton steps on the
-    closed-form second derivative, kept inside its bracket.
+    Rates are φ-derivatives: multiply by ω (ω²) and divide by 1000 for m/s (m/s²).
     """
-    step = 2.0 * math.pi / GRID
-    phi = (np.arange(GRID) + 0.5) * step - math.pi / 4.0  # no grid point on a limit
-    rate = shape(design, phi).ram1
-    nxt = np.roll(rate, -1)
-    starts = np.nonzero((rate < 0) & (nxt >= 0))[0]
-    ends = np.nonzero((rate > 0) & (nxt <= 0))[0]
-    if starts.size != 1 or ends.size != 1:
+
+    work_start: np.ndarray    # crank angle of the dead point that starts cutting, rad in [0, 2π)
+    work_end: np.ndarray      # crank angle of the other dead point, rad
+    ram_min_mm: np.ndarray    # ram displacement at the dead points, from its φ = 0 position
+    ram_max_mm: np.ndarray
+    v_work: np.ndarray        # max dCx/dφ (cutting direction), mm/rad
+    v_return: np.ndarray      # max −dCx/dφ (return), mm/rad
+    a_max: np.ndarray         # max |d²Cx/dφ²|, mm/rad²
+    lever1_max: np.ndarray    # max |dψ/dφ|
+    lever2_max: np.ndarray    # max |d²ψ/dφ²|, 1/rad
+    pressure_max: np.ndarray | None   # max pressure angle, rad; None for the block variant
+
+    @property
+    def work_angle(self) -> np.ndarray:
+        return np.mod(self.work_end - self.work_start, 2.0 * math.pi)
+
+    @property
+    def time_ratio(self) -> np.ndarray:
+        work = self.work_angle
+        return work / (2.0 * math.pi - work)
+
+    @property
+    def stroke_mm(self) -> np.ndarray:
+        return self.ram_max_mm - self.ram_min_mm
+
+
+# Uniform samples of the crank direction β per cycle, shared by every design; the rod
+# variant adds samples crowding toward its sharp angles (kinematics.sharp_angles).
+SAMPLES = 64
+_STEP = 2.0 * math.pi / SAMPLES
+_BETA = (np.arange(SAMPLES) + 0.5) * _STEP
+# Four times as dense, for a crank longer than FINE_ABOVE·L2 (K ≳ 2.2), whose lever turns
+# sharply on the return stroke: features there are ~(1 − λ)/√λ rad wide, λ = L1/L2.
+_BETA_FINE = (np.arange(4 * SAMPLES) / 4.0 + 0.5) * _STEP
+FINE_ABOVE = 0.6
+_OFFSETS = CROWD_OFFSETS
+CHUNK = 2048
+
+
+def cycle_peaks(designs: Designs) -> CyclePeaks:
+    """Dead points, stroke, K and every peak of the cycle for each of many designs.
+
+    No Python loop runs per design: designs are processed in chunks of
+    ``CHUNK`` (bounding memory), each chunk as arrays. The peaks are extrema of
+    the closed-form curves (see :mod:`core.extrema`), sampled at crank
+    directions β = π + θ/2 − φ shared by all designs, plus, for the rod
+    variant, samples crowding geometrically (down to ~1e-5 rad) toward the two
+    dead points and the two crossings of the vertical (ψ = 0). The rod rises
+    furthest, so its reach sqrt(L4² − d²) is smallest and its motion can
+    change sharply, only at those four angles: |d| = |guide − L3·cos ψ| is
+    monotonic in |ψ|.
+    """
+    shape = designs.shape
+    flat = designs.flat()
+    size = int(np.prod(shape))
+    parts = [_chunk_peaks(flat.take(slice(i, i + CHUNK))) for i in range(0, size, CHUNK)] or \
+        [_chunk_peaks(flat)]
+    fields = {name: np.concatenate([getattr(p, name) for p in parts]).reshape(shape)
+              for name in CyclePeaks.__dataclass_fields__ if getattr(parts[0], name) is not None}
+    return CyclePeaks(pressure_max=fields.pop("pressure_max", None), **fields)
+
+
+def _specials(d: Designs) -> tuple[np.ndarray, np.ndarray]:
+    """cos β, sin β at φ = 0, φ = π + θ (dead points) and at ψ = 0 (β = ±π/2), shape (d, 4)."""
+    ratio = d.crank / d.frame                      # sin(θ/2)
+    cos_half = np.sqrt(1.0 - ratio ** 2)
+    zero, one = np.zeros_like(ratio), np.ones_like(ratio)
+    return (np.stack([-cos_half, cos_half, zero, zero], axis=-1),
+            np.stack([-ratio, -ratio, one, -one], axis=-1))
+
+
+def _ram_curves(beta, quantity, crank, frame, lever, guide, rod, *, side):
+    """(value, slope d/dβ) of dCx/dφ, −dCx/dφ or |d²Cx/dφ²| (``quantity`` 0, 1, 2) at β."""
+    d = Designs(crank, frame, lever, guide, None if side is None else rod,
+                "trailing" if side is None else side)
+    r = rates_at(d, np.cos(beta), np.sin(beta))
+    return _pick(quantity, r)
+
+
+def _pick(quantity, r):
+    # Quantity 0: dCx/dφ; 1: −dCx/dφ; 2: |d²Cx/dφ²|. Slopes are d/dβ = −d/dφ.
+    sign = np.where(quantity == 0, 1.0, np.where(quantity == 1, -1.0, 0.0))
+    size = np.where(quantity == 2, np.sign(r.ram2), 0.0)
+    return sign * r.ram1 + size * r.ram2, -sign * r.ram2 - size * r.ram3
+
+
+def _chunk_peaks(d: Designs) -> CyclePeaks:
+    col = d.column()
+    special_cos, special_sin = _specials(d)
+    pressure = None
+    crowd = np.zeros(d.crank.shape, dtype=bool)
+    at = shape_at(col, np.zeros((1, 4)), special_cos, special_sin)
+    origin = at.ram_joint[0][:, 0]                   # the first sharp angle is φ = 0
+    if d.rod is not None:
+        pressure = pressure_angle(at.rod).max(axis=-1)
+        crowd = np.abs(np.cos(at.rod)).min(axis=-1) < CROWD_BELOW      # r/L4 = |cos λ|
+    fine = d.crank / d.frame > FINE_ABOVE
+    peaks = np.empty((3,) + d.crank.shape)
+    ram1 = np.empty(d.crank.shape + (SAMPLES,))
+    for dense in (False, True):
+        for crowded in (False, True):
+            group = (fine == dense) & (crowd == crowded)
+            if group.any():
+                specials = (special_cos[group], special_sin[group]) if crowded else None
+                peaks[:, group], ram1[group] = _ram_peaks(d.take(group), dense, specials)
+    start, end = _dead_points(d, ram1)
+    # Positions at the dead points, from the φ = 0 position (the displacement's zero).
+    phi = np.stack([start, end], axis=-1)
+    beta_ends = math.pi + (d.theta / 2.0)[:, None] - phi
+    ends = shape_at(col, phi, np.cos(beta_ends), np.sin(beta_ends))
+    x_ends = ends.ram_joint[0] - origin[:, None]
+    lever1, lever2 = lever_peaks(d.crank / d.frame)
+    return CyclePeaks(work_start=start, work_end=end, ram_min_mm=x_ends.min(axis=-1),
+                      ram_max_mm=x_ends.max(axis=-1), v_work=peaks[0], v_return=peaks[1],
+                      a_max=peaks[2], lever1_max=lever1, lever2_max=lever2,
+                      pressure_max=pressure)
+
+
+def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray]:
+    """Max dCx/dφ, max −dCx/dφ and max |d²Cx/dφ²| (3, designs), and dCx/dφ at the
+    uniform samples ``_BETA``. ``fine`` samples four times as densely (every fourth sample
+    is one of ``_BETA``); with ``specials`` (cos β, sin β of the sharp angles) samples also
+    crowd toward those angles."""
+    col = d.column()
+    uniform = _BETA_FINE if fine else _BETA
+    samples = [rates_at(col, np.cos(uniform), np.sin(uniform))]
+    segments = [(0, uniform.size, 2.0 * math.pi)]
+    beta = [np.broadcast_to(uniform, samples[0].ram1.shape)]
+    if specials is not None:
+        # Crowded samples: β = β_s + δ with cos/sin by angle addition (exact at δ = 0).
+        special_cos, special_sin = specials
+        cd, sd = np.cos(_OFFSETS), np.sin(_OFFSETS)
+        base = np.arctan2(special_sin, special_cos)
+        for j in range(4):
+            c0, s0 = special_cos[:, j:j + 1], special_sin[:, j:j + 1]
+            samples.append(rates_at(col, c0 * cd - s0 * sd, s0 * cd + c0 * sd))
+            start = uniform.size + j * _OFFSETS.size
+            segments.append((start, start + _OFFSETS.size, 0.0))
+            beta.append(base[:, j:j + 1] + _OFFSETS)
+    rates = type(samples[0])(*(np.concatenate(v, axis=-1) for v in zip(*samples)))
+    quantity = np.arange(3.0)[:, None, None]
+    size = np.sign(rates.ram2)
+    values = np.stack([rates.ram1, -rates.ram1, size * rates.ram2])       # as _pick, all at once
+    slopes = np.stack([-rates.ram2, rates.ram2, -size * rates.ram3])
+    args = (quantity,) + tuple(v[None] for v in (col.crank, col.frame, col.lever, col.guide,
+                                                 col.crank if d.rod is None else col.rod))
+    side = None if d.rod is None else d.rod_side
+    x = np.concatenate(beta, axis=-1)[None] if len(beta) > 1 else uniform
+    peaks = grid_maximum(lambda t, *a: _ram_curves(t, *a, side=side), x, values, slopes,
+                         args=args, segments=segments)
+    return peaks, samples[0].ram1[..., ::4] if fine else samples[0].ram1
+
+
+def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Crank angles (rad, in [0, 2π)) of the ram's two dead points, measured.
+
+    Each zero of dCx/dφ is bracketed between uniform samples and polished as a
+    root of the closed-form velocity. A design whose ram does not reverse
+    exactly twice gets NaN.
+    """
+    # β grows as φ falls: the working stroke starts where dCx/dφ turns from − to + in φ,
+    # i.e. from + to − in β.
+    nxt = np.roll(ram1, -1, axis=-1)
+    starts = (ram1 > 0) & (nxt <= 0)
+    ends = (ram1 < 0) & (nxt >= 0)
+    good = (starts.sum(axis=-1) == 1) & (ends.sum(axis=-1) == 1)
+    lo = _BETA[np.stack([np.argmax(starts, axis=-1), np.argmax(ends, axis=-1)], axis=-1)]
+    col = d.column()
+    args = [np.broadcast_to(v, lo.shape).reshape(-1)
+            for v in (col.crank, col.frame, col.lever, col.guide,
+                      col.crank if d.rod is None else col.rod)]
+
+    def rate(beta, crank, frame, lever, guide, rod):
+        one = Designs(crank, frame, lever, guide, None if d.rod is None else rod, d.rod_side)
+        return rates_at(one, np.cos(beta), np.sin(beta)).ram1
+
+    # The closed form puts the dead points where the lever stands square to the crank
+    # (β = π + θ/2 and −θ/2): a tight bracket there is used when the velocity does change
+    # sign across it, else the grid's cell.
+    guess = np.mod(np.stack([math.pi + d.theta / 2.0, -d.theta / 2.0], axis=-1), 2.0 * math.pi)
+    near = (guess >= lo) & (guess <= lo + _STEP)
+    width = 1e-9 * (1.0 + guess)
+    a, b = np.where(near, guess - width, lo), np.where(near, guess + width, lo + _STEP)
+    f_a, f_b = rate(a.reshape(-1), *args), rate(b.reshape(-1), *args)
+    tight = near.reshape(-1) & (np.sign(f_a) != np.sign(f_b))
+    a = np.where(tight, a.reshape(-1), lo.reshape(-1))
+    b = np.where(tight, b.reshape(-1), (lo + _STEP).reshape(-1))
+    wide = np.flatnonzero(~tight)                   # the grid's cells: evaluate their ends
+    if wide.size:
+        sub = [v[wide] for v in args]
+        f_a[wide], f_b[wide] = rate(a[wide], *sub), rate(b[wide], *sub)
+    beta = bracket_root(rate, a, b, args, f_lo=f_a, f_hi=f_b).reshape(lo.shape)
+    phi = np.mod(math.pi + (d.theta / 2.0)[:, None] - beta, 2.0 * math.pi)
+    phi = np.where(good[:, None], phi, np.nan)
+    return phi[:, 0], phi[:, 1]
+
+
+def lever_peaks(ratio: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Largest |dψ/dφ| and |d²ψ/dφ²| of the slotted lever, in closed form.
+
+    With λ = L1/L2 and u = sin β, dψ/dφ = λ(λ + u)/q and |d²ψ/dφ²| =
+    λ(1 − λ²)|cos β|/q², q = 1 + λ² + 2λu. The first is monotonic in u, largest
+    in size at u = −1 (crank pin between O2 and O4): λ/(1 − λ). The second is
+    largest where 2λu² − (1 + λ²)u − 4λ = 0, at the root in [−1, 0].
+    """
+    lam = np.asarray(ratio, dtype=float)
+    a = 1.0 + lam ** 2
+    u = -8.0 * lam / (a + np.sqrt(a ** 2 + 32.0 * lam ** 2))
+    q = a + 2.0 * lam * u
+    return lam / (1.0 - lam), lam * (1.0 - lam ** 2) * np.sqrt(1.0 - u ** 2) / q ** 2
+
+
+def limit_angles(design: Design) -> tuple[float, float]:
+    """Crank angles (rad, in [0, 2π)) where the ram is at its two dead points:
+    (start of the working stroke, end of the working stroke)."""
+    peaks = cycle_peaks(Designs.of(design))
+    if not np.isfinite(peaks.work_start[0]):
         raise RuntimeError("the ram does not have exactly two dead points")
-    low = phi[[starts[0], ends[0]]]
-    high = low + step
-    x = (low + high) / 2.0
-    for _ in range(30):
-        sh = shape(design, x)
-        nxt_x = np.clip(x - sh.ram1 / sh.ram2, low, high)
-        if np.all(np.abs(nxt_x - x) < 1e-15):
-            break
-        x = nxt_x
-    start, end = (float(v) % (2.0 * math.pi) for v in x)
-    return start, end
+    return float(peaks.work_start[0]), float(peaks.work_end[0])
+
+
+def speed_figures(peaks: CyclePeaks, omega: np.ndarray) -> dict[str, np.ndarray]:
+    """Per-speed figures of many designs: arrays of shape designs + (speeds,), SI units."""
+    w = np.asarray(omega, dtype=float)
+    work = peaks.work_angle[..., None]
+    back = 2.0 * math.pi - work
+    return {
+        "cycle_time_s": np.broadcast_to(2.0 * math.pi / w, work.shape[:-1] + w.shape),
+        "work_time_s": work / w, "return_time_s": back / w,
+        "v_work_max_m_s": w * peaks.v_work[..., None] / 1000.0,
+        "v_return_max_m_s": w * peaks.v_return[..., None] / 1000.0,
+        "v_work_mean_m_s": peaks.stroke_mm[..., None] / 1000.0 / (work / w),
+        "a_max_m_s2": w * w * peaks.a_max[..., None] / 1000.0,
+        "lever_omega_max_rad_s": w * peaks.lever1_max[..., None],
+        "lever_alpha_max_rad_s2": w * w * peaks.lever2_max[..., None],
+    }
 
 
 def analyze(design: Design, rpms) -> CycleMetrics:
+    """Cycle metrics of one design: :func:`cycle_peaks` and :func:`speed_figures` on it."""
     rpm = check_rpms(rpms)
-    start, end = limit_angles(design)
-    work = (end - start) % (2.0 * math.pi)
-    back = 2.0 * math.pi - work
-    ends = shape(design, np.array([start, end]))
-    x_min, x_max = (float(v) for v in ends.ram_joint[0])
-    origin = ram_origin(design)
-
-    phi = np.linspace(0.0, 2.0 * math.pi, GRID, endpoint=False)
-    sh = shape(design, phi)
-    in_work = ((phi - start) % (2.0 * math.pi)) <= work
-    v_work = float(sh.ram1[in_work].max())
-    v_back = float(np.abs(sh.ram1[~in_work]).max())
-    a_max = float(np.abs(sh.ram2).max())
-    lever1 = float(np.abs(sh.lever1).max())
-    lever2 = float(np.abs(sh.lever2).max())
-    pressure = None
-    if sh.rod is not None:
-        pressure = math.degrees(float(pressure_angle(sh.rod).max()))
-    stroke = x_max - x_min
-
-    speeds = []
-    for r, w in zip(rpm, rpm_to_omega(rpm)):
-        w = float(w)
-        speeds.append(SpeedMetrics(
-            rpm=float(r), cycle_time_s=2.0 * math.pi / w,
-            work_time_s=work / w, return_time_s=back / w,
-            v_work_max_m_s=w * v_work / 1000.0, v_return_max_m_s=w * v_back / 1000.0,
-            v_work_mean_m_s=stroke / 1000.0 / (work / w),
-            a_max_m_s2=w * w * a_max / 1000.0,
-            lever_omega_max_rad_s=w * lever1, lever_alpha_max_rad_s2=w * w * lever2,
-        ))
+    peaks = cycle_peaks(Designs.of(design))
+    if not np.isfinite(peaks.work_start[0]):
+        raise RuntimeError("the ram does not have exactly two dead points")
+    figures = speed_figures(peaks, rpm_to_omega(rpm))
+    speeds = tuple(SpeedMetrics(rpm=float(r), **{k: float(v[0, i]) for k, v in figures.items()})
+                   for i, r in enumerate(rpm))
+    start, end = float(peaks.work_start[0]), float(peaks.work_end[0])
+    work = float(peaks.work_angle[0])
+    pressure = None if peaks.pressure_max is None else math.degrees(float(peaks.pressure_max[0]))
     return CycleMetrics(
-        theta_deg=math.degrees(design.theta), time_ratio=work / back, stroke_mm=stroke,
-        work_angle_deg=math.degrees(work), return_angle_deg=math.degrees(back),
+        theta_deg=math.degrees(design.theta), time_ratio=float(peaks.time_ratio[0]),
+        stroke_mm=float(peaks.stroke_mm[0]),
+        work_angle_deg=math.degrees(work), return_angle_deg=math.degrees(2.0 * math.pi - work),
         work_start_deg=_signed_deg(start), work_end_deg=math.degrees(end),
-        ram_min_mm=x_min - origin, ram_max_mm=x_max - origin,
-        pressure_angle_max_deg=pressure, speeds=tuple(speeds),
+        ram_min_mm=float(peaks.ram_min_mm[0]), ram_max_mm=float(peaks.ram_max_mm[0]),
+        pressure_angle_max_deg=pressure, speeds=speeds,
     )
 
 

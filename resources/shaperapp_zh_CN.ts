@@ -664,6 +664,153 @@
     </message>
 </context>
 <context>
+    <name>ExploreView</name>
+    <message>
+        <source>Max pressure angle (°)</source>
+        <translation>最大压力角 (°)</translation>
+    </message>
+    <message>
+        <source>Max |acceleration|, fastest speed (m/s²)</source>
+        <translation>最大加速度 |a|，最高转速 (m/s²)</translation>
+    </message>
+    <message>
+        <source>Max cutting speed, fastest speed (m/s)</source>
+        <translation>最大切削速度，最高转速 (m/s)</translation>
+    </message>
+    <message>
+        <source>Max return speed, fastest speed (m/s)</source>
+        <translation>最大回程速度，最高转速 (m/s)</translation>
+    </message>
+    <message>
+        <source>Peak crank torque, worst speed (N·m)</source>
+        <translation>曲柄最大驱动力矩，最不利转速 (N·m)</translation>
+    </message>
+    <message>
+        <source>Flywheel J_F, slowest speed (kg·m²)</source>
+        <translation>飞轮转动惯量 J_F，最低转速 (kg·m²)</translation>
+    </message>
+    <message>
+        <source>Crank L1 (mm)</source>
+        <translation>曲柄 L1 (mm)</translation>
+    </message>
+    <message>
+        <source>Time ratio K</source>
+        <translation>行程速比系数 K</translation>
+    </message>
+    <message>
+        <source>Stroke H (mm)</source>
+        <translation>行程 H (mm)</translation>
+    </message>
+    <message>
+        <source>Frame L2 (mm)</source>
+        <translation>机架 L2 (mm)</translation>
+    </message>
+    <message>
+        <source>Lever L3 (mm)</source>
+        <translation>导杆 L3 (mm)</translation>
+    </message>
+    <message>
+        <source>Guide above O4 (mm)</source>
+        <translation>导路距 O4 高度 (mm)</translation>
+    </message>
+    <message>
+        <source>Rod ratio L4/L3</source>
+        <translation>连杆比 L4/L3</translation>
+    </message>
+    <message>
+        <source>Rod L4 (mm)</source>
+        <translation>连杆 L4 (mm)</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>Across</source>
+        <translation>横轴</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>纵轴</translation>
+    </message>
+    <message>
+        <source>Points per axis</source>
+        <translation>每轴点数</translation>
+    </message>
+    <message>
+        <source>Objective</source>
+        <translation>优化目标</translation>
+    </message>
+    <message>
+        <source>Compute map</source>
+        <translation>计算分布图</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Optimize</source>
+        <translation>优化</translation>
+    </message>
+    <message>
+        <source>Optimize over the map's ranges</source>
+        <translation>在分布图范围内优化</translation>
+    </message>
+    <message>
+        <source>vary across</source>
+        <translation>优化横轴参数</translation>
+    </message>
+    <message>
+        <source>vary up</source>
+        <translation>优化纵轴参数</translation>
+    </message>
+    <message>
+        <source>Choose two different parameters.</source>
+        <translation>请选择两个不同的参数。</translation>
+    </message>
+    <message>
+        <source>Computing %1 designs…</source>
+        <translation>正在计算 %1 个设计…</translation>
+    </message>
+    <message>
+        <source>%1 of %2 designs are valid.</source>
+        <translation>%2 个设计中有 %1 个有效。</translation>
+    </message>
+    <message>
+        <source>%1 — invalid: %2</source>
+        <translation>%1 — 无效：%2</translation>
+    </message>
+    <message>
+        <source>Choose one or two different free parameters.</source>
+        <translation>请选择一个或两个不同的优化参数。</translation>
+    </message>
+    <message>
+        <source>Optimizing…</source>
+        <translation>正在优化…</translation>
+    </message>
+    <message>
+        <source>Best: %1 %2 at %3 (the design before: %4); loaded into the form.</source>
+        <translation>最优值：%1 %2，位于 %3（原设计：%4）；已载入表单。</translation>
+    </message>
+    <message>
+        <source>not enough memory</source>
+        <translation>内存不足</translation>
+    </message>
+    <message>
+        <source>Could not compute: %1</source>
+        <translation>无法计算：%1</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>已取消。</translation>
+    </message>
+    <message>
+        <source>the image could not be written</source>
+        <translation>无法写入图像</translation>
+    </message>
+</context>
+<context>
     <name>ForceLayer</name>
     <message>
         <source>{0:.1f} kN</source>
@@ -1365,6 +1512,10 @@
     <message>
         <source>Vector diagrams</source>
         <translation>矢量多边形</translation>
+    </message>
+    <message>
+        <source>Explore</source>
+        <translation>设计空间</translation>
     </message>
     <message>
         <source>&amp;File</source>

@@ -18,6 +18,7 @@ from .help import GuideDialog, about_text
 from .animation import AnimationBar
 from .compare_view import CompareView
 from .document import Document
+from .explore_view import ExploreView
 from .forces_panel import ForcesPanel
 from .form import DesignForm
 from .guards import ShortcutGuard, install_wheel_guard
@@ -53,6 +54,8 @@ class MainWindow(QMainWindow):
         self.polygon_view = PolygonView(model)
         self.tabs.addTab(self.positions, "")
         self.tabs.addTab(self.polygon_view, "")
+        self.explore = ExploreView(model)          # Explore tab (issue 11)
+        self.tabs.addTab(self.explore, "")
 
         side = QWidget()
         side_layout = QVBoxLayout(side)
@@ -294,6 +297,7 @@ class MainWindow(QMainWindow):
         self.tabs.setTabText(1, self.tr("Forces"))
         self.tabs.setTabText(2, self.tr("Positions"))
         self.tabs.setTabText(3, self.tr("Vector diagrams"))
+        self.tabs.setTabText(self.tabs.indexOf(self.explore), self.tr("Explore"))
         self.menu_file.setTitle(self.tr("&File"))
         self.menu_recent.setTitle(self.tr("Open &Recent"))
         self.menu_view.setTitle(self.tr("&View"))
@@ -415,4 +419,5 @@ class MainWindow(QMainWindow):
         self.settings.setValue("splitter", self.splitter.saveState())
         if self._guide is not None:
             self._guide.close()
+        self.explore.shutdown()
         event.accept()

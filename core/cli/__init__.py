@@ -23,7 +23,7 @@ from .common import (GuardedStdout, OutputError, Parser, StdoutError, UsageError
                      design_error_text, fail, install_safe_output, version_text)
 
 # Order is the order of ``shaper --help``.
-CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "library")
+CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "library")
 
 
 def _command_modules() -> dict[str, ModuleType]:

@@ -84,6 +84,10 @@ class Parser(argparse.ArgumentParser):
         self._negative_number_matcher = _NEGATIVE_NUMBER
 
     def error(self, message: str) -> None:  # type: ignore[override]
+        missing = re.match(r"the following arguments are required: (.+)$", message)
+        if missing:     # name the option first, like every other message
+            first, *rest = missing.group(1).split(", ")
+            message = f"{first}: required" + (f" (also {', '.join(rest)})" if rest else "")
         raise UsageError(message)
 
 

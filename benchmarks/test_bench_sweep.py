@@ -1,0 +1,93 @@
+"""Speed targets of the design-space sweep (issue 11): 10^5 designs' exact cycle figures in
+≤ 2 s, and at least 100× faster than ``analyze`` in a loop.
+
+Run with ``pytest benchmarks --benchmark-enable -k sweep``; in the normal test
+run each benchmark executes once as a smoke test. The loop is measured on a
+subset (``LOOP``) and compared per design.
+"""
+import numpy as np
+
+from core.dynamics import MassProperties
+from core.metrics import analyze
+from core.spec import Spec
+from core.sweep import evaluate
+
+COUNT = 100_000
+LOOP = 300
+SPEC_BLOCK = Spec(crank=100.0, time_ratio=1.46, stroke=312.0)
+SPEC_ROD = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
+
+
+def _values(count, rod):
+    """A 2-D family like the Explore tab's: crank × K (block) or rod ratio × guide (rod)."""
+    side = 4 * int(round((count / 4) ** 0.5))       # 100 000 = 632 × 158 … exactly count
+    side = next(s for s in range(side, 0, -1) if count % s == 0)
+    a, b = np.meshgrid(np.linspace(0, 1, side), np.linspace(0, 1, count // side), indexing="ij")
+    if rod:
+        return {"rod_ratio": 0.25 + 0.9 * a.ravel(), "guide": 480.0 + 200.0 * b.ravel()}
+    return {"crank": 60.0 + 80.0 * a.ravel(), "time_ratio": 1.1 + 1.2 * b.ravel()}
+
+
+def test_sweep_1e5_designs_block(benchmark):
+    values = _values(COUNT, rod=False)
+    ev = benchmark.pedantic(evaluate, args=(SPEC_BLOCK, values, [40.0]), rounds=5, iterations=1)
+    assert ev.valid.size == COUNT and ev.valid.sum() > COUNT // 3
+
+
+def test_sweep_1e5_designs_rod(benchmark):
+    values = _values(COUNT, rod=True)
+    ev = benchmark.pedantic(evaluate, args=(SPEC_ROD, values, [40.0]), rounds=5, iterations=1)
+    assert ev.valid.size == COUNT and ev.valid.sum() > COUNT // 3
+
+
+def _loop(spec, values):
+    for i in range(LOOP):
+        design = spec.__class__(**{**spec.__dict__, **_single(values, i)}).design()
+        analyze(design, [40.0])
+
+
+def _single(values, i):
+    out = {}
+    for key, v in values.items():
+        if key == "guide":
+            out.update(guide_rule="height", guide_height=float(v[i]))
+        else:
+            out[key] = float(v[i])
+    return out
+
+
+def test_analyze_loop_block_per_300(benchmark):
+    values = _values(COUNT, rod=False)
+    pick = {k: v[:: COUNT // LOOP] for k, v in values.items()}
+    ok = evaluate(SPEC_BLOCK, pick, [40.0]).valid
+    pick = {k: v[ok] for k, v in pick.items()}
+    pick = {k: np.resize(v, LOOP) for k, v in pick.items()}
+    benchmark.pedantic(_loop, args=(SPEC_BLOCK, pick), rounds=3, iterations=1)
+
+
+def test_analyze_loop_rod_per_300(benchmark):
+    values = _values(COUNT, rod=True)
+    pick = {k: v[:: COUNT // LOOP] for k, v in values.items()}
+    ok = evaluate(SPEC_ROD, pick, [40.0]).valid
+    pick = {k: np.resize(v[ok], LOOP) for k, v in pick.items()}
+    benchmark.pedantic(_loop, args=(SPEC_ROD, pick), rounds=3, iterations=1)
+
+
+def test_sweep_2500_designs_with_loads(benchmark):
+    values = _values(2500, rod=True)
+    masses = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                            cut_force_N=7000.0, cut_height_mm=80.0)
+    ev = benchmark.pedantic(evaluate, args=(SPEC_ROD, values, [40.0], masses), rounds=1,
+                            iterations=1)
+    assert ev.dynamics is not None
+
+
+def test_summarize_one_design_4_speeds(benchmark):
+    """The dynamics summary the GUI recomputes on every edit (exact torque peaks included)."""
+    from core.dynamics import summarize
+
+    design = SPEC_ROD.design()
+    masses = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                            cut_force_N=7000.0, cut_height_mm=80.0)
+    summary = benchmark(summarize, design, [30.0, 40.0, 60.0, 80.0], masses)
+    assert len(summary.speeds) == 4

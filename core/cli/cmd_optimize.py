@@ -1,0 +1,84 @@
+"""``shaper optimize``: the best design within bounds for one objective."""
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from ..errors import DesignError
+from ..geometry import Design
+from ..optimize import OBJECTIVES, Optimum, optimize
+from ..sweep import PARAMETERS, Evaluation
+from .cmd_sweep import _number, figure_columns, inputs
+from .cmd_synth import design_summary
+from .common import add_design_options, add_load_options, add_speed_options, print_json, print_table
+
+HELP = "find the design that minimizes an objective"
+DESCRIPTION = ("Search the varied parameters within their bounds for the design with the smallest "
+               "objective: pressure-angle (largest pressure angle, rod variant), accel (largest "
+               "|a| at the highest speed), peak-torque or flywheel (J_F at the slowest speed; both "
+               "need loads). K and H stay fixed unless varied. A dense sweep of the box, then "
+               "differential evolution and a Nelder–Mead polish (scipy); the result is never "
+               "worse than the sweep's best point. NAME is one of " + ", ".join(PARAMETERS) + ".")
+EXAMPLES = ("shaper optimize --crank 100 --K 1.46 --stroke 312 --rod-ratio 0.3 "
+            "--objective pressure-angle --vary rod-ratio=0.2:1 --vary guide=450:700",
+            "shaper optimize --design my.shaper.json --objective flywheel --vary crank=80:120 --json")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser)
+    parser.add_argument("--objective", required=True, choices=tuple(OBJECTIVES),
+                        help="what to minimize")
+    parser.add_argument("--vary", action="append", metavar="NAME=LO:HI", required=True,
+                        help="a free parameter and its bounds; repeat for several")
+    add_speed_options(parser)
+    add_load_options(parser, required=False)
+    parser.add_argument("--json", action="store_true", help="print JSON")
+
+
+def optimum_document(best: Optimum, typed: list[str]) -> dict[str, Any]:
+    """Objective, the optimal design (keys of ``shaper synth --json``) and its figures."""
+    ev = best.evaluation
+    doc: dict[str, Any] = {
+        "objective": best.objective,
+        "objective_unit": OBJECTIVES[best.objective][1],
+        "objective_value": _number(best.value),
+        "start_value": best.start_value,
+        "vary": {name: float(best.x[i]) for i, name in enumerate(typed)},
+        "evaluations": best.evaluations,
+    }
+    doc["design"] = design_summary(_design(ev))
+    doc["figures"] = {name: _number(values[0]) for name, values in figure_columns(ev)}
+    return doc
+
+
+def _design(ev: Evaluation) -> Design:
+    d = ev.designs
+    return Design(crank=float(d.crank[0]), frame=float(d.frame[0]), lever=float(d.lever[0]),
+                  guide=float(d.guide[0]), rod=None if d.rod is None else float(d.rod[0]),
+                  rod_side=d.rod_side)  # type: ignore[arg-type]
+
+
+def run(args: argparse.Namespace) -> int:
+    spec, varied, rpms, masses = inputs(args, with_count=False)
+    best = optimize(spec, {PARAMETERS[n]: b for n, b in varied.items()}, args.objective, rpms, masses)
+    typed = list(varied)
+    if not best.evaluation.valid.all():
+        raise DesignError("vary", ", ".join(args.vary), "contains no valid design")
+    doc = optimum_document(best, typed)
+    if args.json:
+        print_json(doc)
+        return 0
+    unit = doc["objective_unit"]
+    start = "invalid" if best.start_value is None else f"{best.start_value:.6g} {unit}"
+    rows = [("objective", f"{best.objective} ({OBJECTIVES[best.objective][0]})"),
+            ("optimum", f"{best.value:.6g} {unit}"), ("design as given", start)]
+    rows += [(name, f"{best.x[i]:.6g}") for i, name in enumerate(typed)]
+    design = doc["design"]
+    rows += [("frame O2O4 L2", f"{design['frame_mm']:.3f} mm"),
+             ("lever O4B L3", f"{design['lever_mm']:.3f} mm"),
+             ("guide above lever pivot", f"{design['guide_mm']:.3f} mm")]
+    if design["rod_mm"] is not None:
+        rows.append(("rod BC L4", f"{design['rod_mm']:.3f} mm ({design['rod_side']})"))
+    rows += [(name, "" if value is None else f"{value:.6g}") for name, value in doc["figures"].items()]
+    print_table(rows)
+    return 0

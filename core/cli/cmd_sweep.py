@@ -1,0 +1,199 @@
+"""``shaper sweep``: the figures of a whole family of designs, one row per design."""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from typing import Any
+
+import numpy as np
+
+from ..errors import DesignError
+from ..spec import Spec
+from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
+from .common import (LOAD_OPTIONS, add_design_options, add_load_options,
+                     add_speed_options, design_error_text, design_file, masses_from_args, number,
+                     rpms_from_args, spec_from_args, write_output)
+
+HELP = "figures of many designs over varied parameters"
+DESCRIPTION = ("Vary one or more design parameters over a range and report, for every combination, "
+               "whether the design is valid (and why not), its measured K and stroke, maximum "
+               "cutting and return speed and acceleration per crank speed, maximum pressure angle "
+               "and, with loads, mean and peak crank torque and flywheel per speed. Every peak is "
+               "an exact extremum of the closed-form motion. NAME is one of "
+               + ", ".join(PARAMETERS) + " (guide: height above O4 in mm).")
+EXAMPLES = ("shaper sweep --crank 100 --K 1.46 --stroke 312 --rod-ratio 0.3 "
+            "--vary rod-ratio=0.2:1:9 --vary guide=450:700:6 --rpm 40 --csv -",
+            "shaper sweep --dims 100,386.37,579.56 --vary crank=80:120:5 --json")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    add_design_options(parser)
+    parser.add_argument("--vary", action="append", metavar="NAME=LO:HI:COUNT", required=True,
+                        help="a parameter and its range (COUNT evenly spaced values); repeat to "
+                             "vary several (every combination, the first varying slowest)")
+    add_speed_options(parser)
+    add_load_options(parser, required=False)
+    out = parser.add_mutually_exclusive_group()
+    out.add_argument("--csv", metavar="FILE|-", help="write CSV to FILE or stdout (the default)")
+    out.add_argument("--json", action="store_true", help="print JSON, one object per design")
+
+
+BLOCK = 50_000          # designs evaluated and formatted at a time
+
+
+def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tuple]:
+    """``NAME=LO:HI[:COUNT]`` options → {typed name: (low, high[, count])}, in order."""
+    out: dict[str, tuple] = {}
+    shape = "NAME=LO:HI:COUNT" if with_count else "NAME=LO:HI"
+    for text in texts:
+        name, sep, rest = text.partition("=")
+        parts = rest.split(":")
+        if not sep or len(parts) != (3 if with_count else 2):
+            raise DesignError("vary", text, f"must be {shape}")
+        check_vary(name, spec)
+        if name in out:
+            raise DesignError("vary", text, f"varies {name} twice")
+        low, high = number("vary", parts[0]), number("vary", parts[1])
+        if high < low:
+            raise DesignError("vary", text, "needs LO ≤ HI")
+        if with_count:
+            try:
+                count = int(parts[2])
+            except ValueError:
+                raise DesignError("vary", text, "COUNT must be a whole number") from None
+            if not 1 <= count <= MAX_COUNT or (count == 1 and high != low):
+                raise DesignError("vary", text, f"COUNT must be 2 to {MAX_COUNT} (1 when LO = HI)")
+            out[name] = (low, high, count)
+        else:
+            out[name] = (low, high)
+    if "rod" in out and "rod-ratio" in out:
+        raise DesignError("vary", "rod", "vary either rod or rod-ratio, not both")
+    return out
+
+
+def loads_given(args: argparse.Namespace) -> bool:
+    doc = design_file(args)
+    return (any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS)
+            or args.no_gravity or (doc is not None and doc.get("masses") is not None))
+
+
+class _Variant:
+    """Just enough of a design for ``masses_from_args`` (it only asks for the variant)."""
+
+    def __init__(self, spec: Spec, varied: dict[str, tuple]) -> None:
+        rod = spec.variant == "rod" or "rod" in varied or "rod-ratio" in varied
+        self.rod = 1.0 if rod else None
+
+
+def figure_columns(ev: Evaluation) -> list[tuple[str, np.ndarray]]:
+    """(column, values) of every figure, per design; NaN where undefined."""
+    several = ev.rpm.size > 1
+    tag = (lambda rpm: f"@{rpm:g}") if several else (lambda rpm: "")
+    cols: list[tuple[str, np.ndarray]] = [
+        ("K", ev.peaks.time_ratio), ("stroke_mm", ev.peaks.stroke_mm),
+        ("theta_deg", np.where(ev.valid.reshape(-1), np.degrees(ev.designs.theta), np.nan))]
+    for key in ("v_work_max_m_s", "v_return_max_m_s", "a_max_m_s2"):
+        cols += [(key + tag(r), ev.figures[key][:, j]) for j, r in enumerate(ev.rpm)]
+    pressure = ev.peaks.pressure_max
+    cols.append(("pressure_angle_max_deg",
+                 np.degrees(pressure) if pressure is not None else np.full(ev.valid.size, np.nan)))
+    if ev.dynamics is not None:
+        for key in ("mean_torque_N_m", "max_torque_N_m", "flywheel_inertia_kg_m2"):
+            cols += [(key + tag(r), ev.dynamics[key][:, j]) for j, r in enumerate(ev.rpm)]
+    return cols
+
+
+def varied_column(name: str) -> str:
+    """The column of a varied parameter: its name as typed; K is ``K_nominal`` beside the
+    measured ``K``."""
+    return "K_nominal" if name == "K" else name
+
+
+def reasons(ev: Evaluation) -> list[str]:
+    """One line per design, "" when valid, else the CLI's message for that design alone."""
+    out = [""] * ev.valid.size
+    for i in np.flatnonzero(~ev.valid.reshape(-1)):
+        out[i] = design_error_text(ev.error(int(i)))  # type: ignore[arg-type]
+    return out
+
+
+def csv_header(names: list[str], ev: Evaluation) -> str:
+    figures = [c for c, _ in figure_columns(ev)]
+    return ",".join([varied_column(n) for n in names] + ["valid", "reason"] + figures) + "\n"
+
+
+def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> str:
+    """CSV lines (no header) of the designs in ``ev``; empty cells where undefined."""
+    varied = [_format(values[PARAMETERS[n]]) for n in names]
+    figures = [_format(v) for _, v in figure_columns(ev)]
+    valid = np.where(ev.valid.reshape(-1), "true", "false")
+    why = [_quote(r) for r in reasons(ev)]
+    lines = [",".join([t[i] for t in varied] + [valid[i], why[i]] + [t[i] for t in figures])
+             for i in range(valid.size)]
+    return "\n".join(lines) + "\n" if lines else ""
+
+
+def json_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> list[str]:
+    """One JSON object (text) per design, with the keys of the CSV columns."""
+    cols = figure_columns(ev)
+    why = reasons(ev)
+    valid = ev.valid.reshape(-1)
+    out = []
+    for i in range(valid.size):
+        row: dict[str, Any] = {varied_column(n): float(values[PARAMETERS[n]][i]) for n in names}
+        row.update(valid=bool(valid[i]), reason=why[i])
+        row.update({c: _number(v[i]) for c, v in cols})
+        out.append(json.dumps(row, ensure_ascii=False, allow_nan=False))
+    return out
+
+
+def _format(values: np.ndarray) -> list[str]:
+    return ["" if not math.isfinite(v) else f"{v:.10g}" for v in np.asarray(values, dtype=float)]
+
+
+def _number(value: float) -> float | None:
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def _quote(text: str) -> str:
+    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+
+def inputs(args: argparse.Namespace, with_count: bool):
+    """(spec, varied ranges by typed name, speeds, loads or None) from the options."""
+    spec = spec_from_args(args)
+    varied = parse_vary(args.vary, spec, with_count)
+    rpms = rpms_from_args(args)
+    masses = masses_from_args(args, _Variant(spec, varied), required=False) \
+        if loads_given(args) else None  # type: ignore[arg-type]
+    return spec, varied, rpms, masses
+
+
+def run(args: argparse.Namespace) -> int:
+    spec, varied, rpms, masses = inputs(args, with_count=True)
+    values = grid({PARAMETERS[n]: r for n, r in varied.items()})
+    names = list(varied)
+    size = next(iter(values.values())).size
+    target = args.csv or "-"
+    pieces: list[str] = []
+    for start in range(0, size, BLOCK):      # blocks bound the memory of a large sweep
+        block = {k: v[start:start + BLOCK] for k, v in values.items()}
+        ev = evaluate(spec, block, rpms, masses)
+        if args.json:                        # JSON goes to stdout block by block
+            sys.stdout.write(("[\n" if start == 0 else ",\n") + ",\n".join(json_rows(names, block, ev)))
+            continue
+        text = (csv_header(names, ev) if start == 0 else "") + csv_rows(names, block, ev)
+        if target == "-":                    # stdout: block by block too
+            sys.stdout.write(text)
+        else:                                # a file: written whole, atomically
+            pieces.append(text)
+    if args.json:
+        sys.stdout.write("\n]\n")
+    elif target != "-":
+        write_output("--csv", target, "".join(pieces))
+    return 0
+
+

@@ -1,0 +1,270 @@
+"""Exact extrema of closed-form curves, for many curves at once.
+
+A level-0 numerical helper (numpy and scipy only; it knows nothing about
+mechanisms). A grid only *brackets* an extremum: a local maximum lies between
+two neighbouring samples where the curve's analytic slope turns from rising
+to falling. The best few such cells per curve are polished by finding the
+slope's zero there (a bracketed root, vectorized over all curves), and the
+curve's value at that zero is the extremum. A reported extremum is therefore
+never the largest sample of a grid, and never smaller than it.
+
+For curves without an analytic slope (the crank torque), :func:`polish_minimum`
+uses scipy's elementwise bracketing minimizer on the function itself.
+"""
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+import numpy as np
+
+# Best sampled cells polished per curve and segment: two, so that a second peak the grid
+# under-samples (and shows a little lower than the first) is still found.
+CANDIDATES = 2
+Curve = Callable[..., tuple[np.ndarray, np.ndarray]]
+
+
+def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarray,
+                 args: Sequence[np.ndarray] = (),
+                 segments: Sequence[tuple[int, int, float]] | None = None,
+                 candidates: int = CANDIDATES) -> np.ndarray:
+    """Largest value of each curve, polished from samples; shape values.shape[:-1].
+
+    ``fun(x, *args)`` returns the curve's value and slope d/dx at ``x`` (1-D
+    arrays, args subset to match). ``x``, ``values`` and ``slopes`` (…, n) are
+    the samples; ``args`` broadcast against (…, 1). ``segments`` lists
+    (start, stop, period) index ranges of the last axis, each sorted by x; a
+    segment with period > 0 wraps around (its last sample's right neighbour
+    is its first plus the period). By default the whole axis is one segment
+    that does not wrap; its end samples count as they are.
+    """
+    values = np.asarray(values, dtype=float)
+    lead, n = values.shape[:-1], values.shape[-1]
+    x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)     # a view: never copied
+    slopes = np.broadcast_to(slopes, values.shape)
+    segments = [(0, n, 0.0)] if segments is None else list(segments)
+    best = np.max(values, axis=-1).reshape(-1)
+    picks: list[list[np.ndarray]] = []        # per rank: [lo, hi, owner, upper bound]
+    for start, stop, period in segments:
+        v, s = values[..., start:stop], slopes[..., start:stop]
+        m = stop - start
+        # Cell j lies between samples j and j + 1 (the last wraps to the first if periodic).
+        score = np.where((s[..., :-1] > 0.0) & (s[..., 1:] <= 0.0), v[..., :-1], -np.inf)
+        if period > 0.0:
+            wrap = (s[..., -1:] > 0.0) & (s[..., :1] <= 0.0)
+            score = np.concatenate([score, np.where(wrap, v[..., -1:], -np.inf)], axis=-1)
+        for k in range(min(candidates, score.shape[-1])):   # the best few, by repeated argmax
+            j = np.argmax(score, axis=-1)[..., None]
+            found = np.isfinite(np.take_along_axis(score, j, axis=-1))[..., 0]
+            if k + 1 < candidates:
+                np.put_along_axis(score, j, -np.inf, axis=-1)
+            index = np.nonzero(found)
+            cell = j[..., 0][index]
+            inner = cell + 1 < m
+            left, right = index + (start + cell,), index + (start + np.where(inner, cell + 1, 0),)
+            lo, hi = x[left], x[right] + np.where(inner, 0.0, period)
+            s_lo, s_hi = slopes[left], slopes[right]
+            bound = _tangent_bound(lo, hi, values[left], values[right], s_lo, s_hi)
+            owner = np.ravel_multi_index(index, lead) if lead else np.zeros(cell.size, dtype=int)
+            while len(picks) <= k:
+                picks.append([])
+            picks[k].append((lo, hi, owner, bound, s_lo, s_hi))
+    # The best cell of each curve first; a lower-ranked cell only if its value could still
+    # exceed what is known (its upper bound from the tangents at its ends).
+    for rank, found in enumerate(picks):
+        lo, hi, owner, bound, s_lo, s_hi = (np.concatenate(v) for v in zip(*found))
+        if rank:
+            keep = bound > best[owner]
+            lo, hi, owner, s_lo, s_hi = lo[keep], hi[keep], owner[keep], s_lo[keep], s_hi[keep]
+        if owner.size == 0:
+            continue
+        flat_args = [np.broadcast_to(a, lead + (1,)).reshape(-1)[owner] for a in args]
+        slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
+        root = bracket_root(slope, lo, hi, flat_args, f_lo=s_lo, f_hi=s_hi)
+        np.fmax.at(best, owner, fun(root, *flat_args)[0])
+    return best.reshape(lead)
+
+
+def _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi):
+    """An upper bound of a curve rising at ``lo`` and falling at ``hi``: where its two end
+    tangents meet (exact for a concave cell), with the excess over the samples doubled as
+    a margin for cells that are not concave."""
+    with np.errstate(all="ignore"):
+        meet = (v_hi - v_lo + s_lo * lo - s_hi * hi) / (s_lo - s_hi)
+        top = v_lo + s_lo * (np.clip(meet, lo, hi) - lo)
+    floor = np.maximum(v_lo, v_hi)
+    top = np.where(np.isfinite(top), np.maximum(top, floor), np.inf)
+    return top + (top - floor)
+
+
+def grid_minimum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarray,
+                 args: Sequence[np.ndarray] = (),
+                 segments: Sequence[tuple[int, int, float]] | None = None,
+                 candidates: int = CANDIDATES) -> np.ndarray:
+    """Smallest value of each curve; see :func:`grid_maximum`."""
+    def negated(t, *a):
+        value, slope = fun(t, *a)
+        return -value, -slope
+    return -grid_maximum(negated, x, -np.asarray(values), -np.asarray(slopes), args, segments,
+                         candidates)
+
+
+def bracket_root(fun: Callable[..., np.ndarray], lo: np.ndarray, hi: np.ndarray,
+                 args: Sequence[np.ndarray] = (), iterations: int = 100,
+                 f_lo: np.ndarray | None = None, f_hi: np.ndarray | None = None) -> np.ndarray:
+    """A zero of ``fun`` in each bracket [lo, hi] across which it changes sign (1-D arrays).
+
+    Chandrupatla's method (inverse quadratic interpolation when it is safe,
+    bisection otherwise), vectorized: superlinear on smooth functions and,
+    since the bracket always keeps the sign change, convergent for any
+    continuous one. Only the brackets still open are evaluated each step.
+    ``f_lo``, ``f_hi`` are fun's values at the ends when the caller has them.
+    """
+    x1, x2 = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    args = [np.broadcast_to(np.asarray(v), x1.shape) for v in args]
+    f1 = fun(x1, *args) if f_lo is None else np.asarray(f_lo, dtype=float)
+    f2 = fun(x2, *args) if f_hi is None else np.asarray(f_hi, dtype=float)
+    root = np.where(np.abs(f1) < np.abs(f2), x1, x2)
+    live = np.nonzero((f1 != 0.0) & (f2 != 0.0) & (np.sign(f1) != np.sign(f2)))[0]
+    x1, x2, f1, f2 = x1[live], x2[live], f1[live], f2[live]
+    x3, f3 = x2, f2
+    part = [v[live] for v in args]
+    t = np.full(live.size, 0.5)
+    for _ in range(iterations):
+        if live.size == 0:
+            break
+        xt = x1 + t * (x2 - x1)
+        ft = fun(xt, *part)
+        same = np.sign(ft) == np.sign(f1)
+        x3, f3 = np.where(same, x1, x2), np.where(same, f1, f2)
+        x2, f2 = np.where(same, x2, x1), np.where(same, f2, f1)
+        x1, f1 = xt, ft
+        small = np.abs(f1) < np.abs(f2)
+        root[live] = np.where(small, x1, x2)
+        # 1e-12 rad on a crank angle: a peak's value is then exact to ~f″·1e-24, far below
+        # rounding even for the sharpest accepted peak (f″ ≲ f·1e10).
+        tol = 1e-12 * (1.0 + np.abs(root[live]))
+        with np.errstate(all="ignore"):
+            tl = tol / np.abs(x2 - x1)
+            xi = (x1 - x2) / (x3 - x2)
+            ph = (f1 - f2) / (f3 - f2)
+            quad = (f1 / (f2 - f1)) * (f3 / (f2 - f3)) + \
+                ((x3 - x1) / (x2 - x1)) * (f1 / (f3 - f1)) * (f2 / (f3 - f2))
+        done = (tl > 0.5) | (f1 == 0.0) | ~np.isfinite(tl)
+        t = np.where((ph ** 2 < xi) & ((1.0 - ph) ** 2 < 1.0 - xi) & np.isfinite(quad), quad, 0.5)
+        t = np.clip(t, tl, 1.0 - tl)
+        keep = ~done
+        live, x1, x2, x3, f1, f2, f3, t = (v[keep] for v in (live, x1, x2, x3, f1, f2, f3, t))
+        part = [v[keep] for v in part]
+    return root
+
+
+def piece_maximum(fun: Callable[..., np.ndarray], x: np.ndarray, values: np.ndarray,
+                  lo: np.ndarray, hi: np.ndarray, args: Sequence[np.ndarray] = (),
+                  segments: Sequence[tuple[int, int, float]] | None = None, period: float = 0.0,
+                  candidates: int = CANDIDATES) -> np.ndarray:
+    """Largest value of each curve over its interval [lo, hi], without an analytic slope.
+
+    The curve ``fun(x, *args)`` is smooth on and beyond its interval (a piece
+    of a piecewise-smooth function, evaluated by that piece's formula), so a
+    sampled local maximum inside the interval is a valid three-point bracket
+    even next to an end. The best few are polished by :func:`polish_minimum`;
+    a polished maximum that lands outside the interval is dropped, and the
+    values at both ends count. With ``period`` the interval may wrap around.
+    Shapes: ``x``, ``values`` (…, n); ``lo``, ``hi`` (…,); args against (…, 1).
+    """
+    values = np.asarray(values, dtype=float)
+    lead, n = values.shape[:-1], values.shape[-1]
+    x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)
+    lo, hi = np.broadcast_to(lo, lead), np.broadcast_to(hi, lead)
+
+    def inside(t, a, b):
+        return (np.mod(t - a, period) <= np.mod(b - a, period)) if period > 0.0 else \
+            (t >= a) & (t <= b)
+
+    flat_args = [np.broadcast_to(a, lead + (1,)).reshape(lead) for a in args]
+    ends = fun(np.concatenate([lo.reshape(-1), hi.reshape(-1)]),
+               *[np.concatenate([a.reshape(-1)] * 2) for a in flat_args]).reshape((2,) + lead)
+    best = np.fmax(ends[0], ends[1])
+    within = inside(x, lo[..., None], hi[..., None])
+    best = np.fmax(best, np.max(np.where(within, values, -np.inf), axis=-1))
+    segments = [(0, n, 0.0)] if segments is None else list(segments)
+    brackets: list[list[np.ndarray]] = []
+    for start, stop, seg_period in segments:
+        seg_x, seg_v, seg_in = x[..., start:stop], values[..., start:stop], within[..., start:stop]
+        if seg_period > 0.0:
+            prev_x = np.concatenate([seg_x[..., -1:] - seg_period, seg_x[..., :-1]], axis=-1)
+            next_x = np.concatenate([seg_x[..., 1:], seg_x[..., :1] + seg_period], axis=-1)
+            prev_v, next_v = np.roll(seg_v, 1, axis=-1), np.roll(seg_v, -1, axis=-1)
+        else:
+            prev_x, next_x, prev_v, next_v = seg_x[..., :-2], seg_x[..., 2:], seg_v[..., :-2], seg_v[..., 2:]
+            seg_x, seg_v, seg_in = seg_x[..., 1:-1], seg_v[..., 1:-1], seg_in[..., 1:-1]
+        peak = (seg_v >= prev_v) & (seg_v >= next_v) & ((seg_v > prev_v) | (seg_v > next_v))
+        score = np.where(peak & seg_in, seg_v, -np.inf)
+        for j in range(min(candidates, score.shape[-1])):
+            i = np.argmax(score, axis=-1)[..., None]
+            real = np.isfinite(np.take_along_axis(score, i, axis=-1))[..., 0]
+            brackets.append([np.take_along_axis(a, i, axis=-1)[..., 0][real]
+                             for a in (prev_x, seg_x, next_x)]
+                            + [np.flatnonzero(real.reshape(-1))])
+            np.put_along_axis(score, i, -np.inf, axis=-1)
+    if brackets:
+        xl, xm, xr, owner = (np.concatenate(v) for v in zip(*brackets))
+        part = [a.reshape(-1)[owner] for a in flat_args]
+        at, value = polish_minimum(lambda t, *a: -fun(t, *a), xl, xm, xr, part)
+        keep = inside(at, lo.reshape(-1)[owner], hi.reshape(-1)[owner])
+        out = best.reshape(-1).copy()
+        np.fmax.at(out, owner[keep], -value[keep])
+        best = out.reshape(lead)
+    return best
+
+
+_GOLD = 0.3819660112501051   # 2 − golden ratio
+
+
+def polish_minimum(fun: Callable[..., np.ndarray], xl: np.ndarray, xm: np.ndarray,
+                   xr: np.ndarray, args: Sequence[np.ndarray] = (),
+                   iterations: int = 100) -> tuple[np.ndarray, np.ndarray]:
+    """A local minimum of ``fun`` inside each bracket xl < xm < xr (1-D arrays).
+
+    For curves without an analytic slope: successive parabolic interpolation
+    through the bracket, with a golden-section step whenever the parabola's
+    vertex is not safely inside (Brent's rule, vectorized). The bracket keeps
+    f(xm) ≤ f(xl), f(xr) and shrinks every step. Returns the minimizer and
+    fun's value there.
+    """
+    a, m, b = (np.array(v, dtype=float) for v in (xl, xm, xr))
+    args = [np.broadcast_to(np.asarray(v), m.shape) for v in args]
+    fa, fm, fb = fun(a, *args), fun(m, *args), fun(b, *args)
+    at, value = m.copy(), fm.copy()
+    live = np.nonzero((fm <= fa) & (fm <= fb) & np.isfinite(fm))[0]
+    a, m, b, fa, fm, fb = (v[live] for v in (a, m, b, fa, fm, fb))
+    part = [v[live] for v in args]
+    for _ in range(iterations):
+        if live.size == 0:
+            break
+        with np.errstate(all="ignore"):
+            p = (m - a) ** 2 * (fm - fb) - (m - b) ** 2 * (fm - fa)
+            q = (m - a) * (fm - fb) - (m - b) * (fm - fa)
+            u = m - 0.5 * p / q
+        tol = 2e-9 * (1.0 + np.abs(m))     # in x; the value is then exact to ~1e-16 relative
+        right = (b - m) > (m - a)
+        golden = np.where(right, m + _GOLD * (b - m), m - _GOLD * (m - a))
+        safe = np.isfinite(u) & (u > a + tol) & (u < b - tol)
+        # A vertex within tol of m steps tol away instead (Brent), closing the bracket.
+        step = np.where(right, tol, -tol)                # toward the wider side
+        u = np.where(safe, np.where(np.abs(u - m) < tol, m + step, u), golden)
+        fu = fun(u, *part)
+        lower = fu < fm
+        left_of = u < m
+        # New bracket: around u if it is lower, else u becomes the end on its side.
+        a, fa, b, fb = (np.where(lower, np.where(left_of, a, m), np.where(left_of, u, a)),
+                        np.where(lower, np.where(left_of, fa, fm), np.where(left_of, fu, fa)),
+                        np.where(lower, np.where(left_of, m, b), np.where(left_of, b, u)),
+                        np.where(lower, np.where(left_of, fm, fb), np.where(left_of, fb, fu)))
+        m, fm = np.where(lower, u, m), np.where(lower, fu, fm)
+        at[live], value[live] = m, fm
+        done = (b - a) <= 4.0 * tol
+        keep = ~done
+        live, a, m, b, fa, fm, fb = (v[keep] for v in (live, a, m, b, fa, fm, fb))
+        part = [v[keep] for v in part]
+    return at, value

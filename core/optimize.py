@@ -1,0 +1,141 @@
+"""Find the best design within bounds: the smallest pressure angle, acceleration, peak
+torque or flywheel.
+
+Beside ``sweep``, on which it is built. The search is global and bounded:
+a dense vectorized sweep of the box, then scipy's differential evolution
+(vectorized, seeded with the sweep's best point), then a bounded Nelder–Mead
+polish. The result is the best design any stage found, so it is never worse
+than the best point of the sweep. Invalid designs count as infinitely bad.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from .dynamics import MassProperties
+from .errors import DesignError
+from .spec import Spec
+from .sweep import Evaluation, evaluate
+
+# objective → (what it minimizes, unit, needs loads)
+OBJECTIVES = {
+    "pressure-angle": ("largest pressure angle between the rod and the guide", "°", False),
+    "accel": ("largest ram acceleration |a| at the highest speed", "m/s²", False),
+    "peak-torque": ("largest crank driving torque over the speeds", "N·m", True),
+    "flywheel": ("flywheel inertia J_F needed at the slowest speed", "kg·m²", True),
+}
+DENSE_POINTS = {False: 4096, True: 256}   # points of the first dense sweep (metrics / loads)
+PENALTY = 1e30
+
+
+@dataclass(frozen=True)
+class Optimum:
+    """The best design found and how good it is."""
+
+    objective: str
+    names: tuple[str, ...]             # varied core parameters
+    x: np.ndarray                      # their optimal values
+    value: float                       # objective at x (unit of OBJECTIVES)
+    start_value: float | None          # objective of the design as given; None if it is invalid
+    evaluations: int                   # designs evaluated
+    evaluation: Evaluation             # the optimal design's figures (one design)
+
+
+def objective_of(evaluation: Evaluation, objective: str) -> np.ndarray:
+    """The objective of every design in ``evaluation`` (inf where a design is invalid)."""
+    if objective == "pressure-angle":
+        if evaluation.peaks.pressure_max is None:
+            raise DesignError("objective", objective, "needs the rod variant (give --rod or --rod-ratio)")
+        value = np.degrees(evaluation.peaks.pressure_max)
+    elif objective == "accel":
+        value = np.max(evaluation.figures["a_max_m_s2"], axis=-1)
+    elif objective in ("peak-torque", "flywheel"):
+        if evaluation.dynamics is None:
+            raise DesignError("objective", objective, "needs the loads (masses and cutting force)")
+        key = "max_torque_N_m" if objective == "peak-torque" else "flywheel_inertia_kg_m2"
+        value = np.max(evaluation.dynamics[key], axis=-1)
+    else:
+        raise DesignError("objective", objective, "must be one of " + ", ".join(OBJECTIVES))
+    return np.where(evaluation.valid.reshape(-1) & np.isfinite(value), value, np.inf)
+
+
+class Cancelled(Exception):
+    """``should_stop`` asked the search to stop."""
+
+
+def optimize(spec: Spec, bounds: dict[str, tuple[float, float]], objective: str, rpms,
+             masses: MassProperties | None = None, seed: int = 1,
+             should_stop: Callable[[], bool] | None = None) -> Optimum:
+    """Minimize ``objective`` over the varied core parameters within ``bounds`` (low, high).
+
+    ``should_stop`` is asked before every batch of evaluations; when it returns
+    true the search raises :class:`Cancelled` (a GUI's Cancel button).
+    """
+    if objective not in OBJECTIVES:
+        raise DesignError("objective", objective, "must be one of " + ", ".join(OBJECTIVES))
+    if OBJECTIVES[objective][2] and masses is None:
+        raise DesignError("objective", objective, "needs the loads (masses and cutting force)")
+    use = masses if OBJECTIVES[objective][2] else None
+    names = tuple(bounds)
+    low = np.array([bounds[n][0] for n in names], dtype=float)
+    high = np.array([bounds[n][1] for n in names], dtype=float)
+    count = [0]
+
+    def values(x: np.ndarray) -> np.ndarray:               # x: (dims, population)
+        if should_stop is not None and should_stop():
+            raise Cancelled()
+        x = np.atleast_2d(np.asarray(x, dtype=float).T).T if np.ndim(x) == 1 else x
+        count[0] += x.shape[1]
+        ev = evaluate(spec, {n: x[i] for i, n in enumerate(names)}, rpms, use)
+        return objective_of(ev, objective)
+
+    start = objective_of(evaluate(spec, {}, rpms, use), objective)[0]
+    # 1. A dense sweep of the box.
+    per_axis = max(2, int(round(DENSE_POINTS[use is not None] ** (1.0 / len(names)))))
+    axes = [np.linspace(lo, hi, per_axis) for lo, hi in zip(low, high)]
+    points = np.stack([m.reshape(-1) for m in np.meshgrid(*axes, indexing="ij")])
+    dense = values(points)
+    best_i = int(np.argmin(dense))
+    best_x, best = points[:, best_i], float(dense[best_i])
+    if len(names) and np.any(high > low):
+        best_x, best = _refine(values, low, high, best_x, best, seed)
+    final = evaluate(spec, {n: np.array([best_x[i]]) for i, n in enumerate(names)}, rpms, masses)
+    return Optimum(objective=objective, names=names, x=best_x, value=best,
+                   start_value=float(start) if math.isfinite(start) else None,
+                   evaluations=count[0], evaluation=final)
+
+
+def _refine(values, low, high, best_x, best, seed):
+    """Differential evolution seeded with the sweep's best, then a Nelder–Mead polish."""
+    from scipy.optimize import differential_evolution, minimize
+
+    free = high > low
+    if not math.isfinite(best):
+        return best_x, best
+
+    def penalized(x):
+        full = np.repeat(best_x[:, None], np.shape(x)[-1] if np.ndim(x) > 1 else 1, axis=1)
+        full[free] = np.reshape(x, (int(free.sum()), -1))
+        out = values(full)
+        return np.where(np.isfinite(out), out, PENALTY)
+
+    box = list(zip(low[free], high[free]))
+    result = differential_evolution(penalized, box, x0=best_x[free], seed=seed, maxiter=40,
+                                    popsize=8, tol=1e-8, polish=False, vectorized=True,
+                                    updating="deferred")
+    candidates = [(best, best_x[free])]
+    if result.fun < PENALTY:
+        candidates.append((float(result.fun), result.x))
+    start = min(candidates, key=lambda c: c[0])[1]
+    local = minimize(lambda x: float(penalized(x)[0]), start, method="Nelder-Mead",
+                     bounds=box, options={"xatol": 1e-9 * float(np.max(high - low)), "fatol": 1e-12,
+                                          "maxiter": 400})
+    if local.fun < PENALTY:
+        candidates.append((float(local.fun), np.clip(local.x, low[free], high[free])))
+    value, x = min(candidates, key=lambda c: c[0])
+    out = best_x.copy()
+    out[free] = x
+    return out, value

@@ -1,0 +1,390 @@
+"""The Explore tab: how two design choices trade one figure against the others.
+
+It maps a chosen figure over two chosen parameters (the rest fixed by the
+current design), greys out invalid designs and names their reason on hover,
+marks the current design, loads a clicked cell through the model's setters,
+and optimizes the chosen objective over the free parameters within the
+map's ranges. The work runs on a worker thread (``explore_jobs``) with a
+progress bar and Cancel; every number comes from ``core``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout, QGroupBox,
+                               QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
+                               QVBoxLayout, QWidget)
+
+from core.sweep import default_range, design_value, spec_changes, varied_parameters
+from .explore_jobs import FIGURES, JobRunner, MapJob, MapResult, OptimizeJob
+from .explore_map import HeatMap
+from .messages import describe
+from .model import DesignModel
+
+REFRESH_MS = 300
+
+
+class ExploreView(QWidget):
+    """Heat map, its controls, and the Optimize action."""
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.model = model
+        self.runner = JobRunner(self)
+        self.runner.ended.connect(self._ended)
+        self.result: MapResult | None = None
+        self._basis = None
+        self.figure = QComboBox()
+        self.axis_names = [QComboBox(), QComboBox()]
+        self.lows = [self._spin(), self._spin()]
+        self.highs = [self._spin(), self._spin()]
+        self.count = QSpinBox()
+        self.count.setRange(3, 200)
+        self.count.setValue(40)
+        self.compute = QPushButton()
+        self.progress = QProgressBar()
+        self.cancel = QPushButton()
+        self.status = QLabel()
+        self.status.setWordWrap(True)
+        self.map = HeatMap(self)
+        self.hover = QLabel()
+        self.hover.setWordWrap(True)
+        self.hover.setMinimumHeight(48)
+        self.objective = QComboBox()
+        self.free = [QCheckBox(), QCheckBox()]
+        for box in self.free:
+            box.setChecked(True)
+        self.optimize = QPushButton()
+        self.optimum = QLabel()
+        self.optimum.setWordWrap(True)
+        self.box = QGroupBox()
+        self._layout()
+        self._refresh_timer = QTimer(self, singleShot=True, interval=REFRESH_MS)
+        self._refresh_timer.timeout.connect(self.start_map)
+        self.compute.clicked.connect(self.start_map)
+        self.cancel.clicked.connect(self.stop)
+        self.optimize.clicked.connect(self.start_optimize)
+        self.figure.currentIndexChanged.connect(self._figure_changed)
+        for i, combo in enumerate(self.axis_names):
+            combo.currentIndexChanged.connect(lambda _=0, i=i: self._axis_changed(i))
+        self.map.cellHovered.connect(self._hovered)
+        self.map.cellClicked.connect(self._clicked)
+        model.resultsChanged.connect(self._model_changed)
+        model.forcesChanged.connect(self._model_changed)
+        self._retranslate()
+        self._fill_axes()
+        self._set_busy(False)
+
+    # ---- layout and texts -------------------------------------------------
+    @staticmethod
+    def _spin() -> QDoubleSpinBox:
+        spin = QDoubleSpinBox()
+        spin.setRange(0.001, 100_000.0)
+        spin.setDecimals(3)
+        spin.setKeyboardTracking(False)
+        return spin
+
+    def _layout(self) -> None:
+        grid = QGridLayout()
+        self._labels = [QLabel() for _ in range(5)]
+        grid.addWidget(self._labels[0], 0, 0)
+        grid.addWidget(self.figure, 0, 1, 1, 3)
+        for row, i in ((1, 0), (2, 1)):
+            grid.addWidget(self._labels[row], row, 0)
+            grid.addWidget(self.axis_names[i], row, 1)
+            grid.addWidget(self.lows[i], row, 2)
+            grid.addWidget(self.highs[i], row, 3)
+        grid.addWidget(self._labels[3], 3, 0)
+        grid.addWidget(self.count, 3, 1)
+        grid.addWidget(self.compute, 3, 2, 1, 2)
+        bar = QHBoxLayout()
+        bar.addWidget(self.progress, 1)
+        bar.addWidget(self.cancel)
+        opt = QGridLayout(self.box)
+        opt.addWidget(self._labels[4], 0, 0)
+        opt.addWidget(self.objective, 0, 1, 1, 2)
+        opt.addWidget(self.free[0], 1, 0)
+        opt.addWidget(self.free[1], 1, 1)
+        opt.addWidget(self.optimize, 1, 2)
+        opt.addWidget(self.optimum, 2, 0, 1, 3)
+        layout = QVBoxLayout(self)
+        layout.addLayout(grid)
+        layout.addLayout(bar)
+        layout.addWidget(self.status)
+        layout.addWidget(self.map, 1)
+        layout.addWidget(self.hover)
+        layout.addWidget(self.box)
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._retranslate()
+        super().changeEvent(event)
+
+    def figure_names(self) -> dict[str, str]:
+        return {"pressure-angle": self.tr("Max pressure angle (°)"),
+                "accel": self.tr("Max |acceleration|, fastest speed (m/s²)"),
+                "v-work": self.tr("Max cutting speed, fastest speed (m/s)"),
+                "v-return": self.tr("Max return speed, fastest speed (m/s)"),
+                "peak-torque": self.tr("Peak crank torque, worst speed (N·m)"),
+                "flywheel": self.tr("Flywheel J_F, slowest speed (kg·m²)")}
+
+    def parameter_names(self) -> dict[str, str]:
+        return {"crank": self.tr("Crank L1 (mm)"), "time_ratio": self.tr("Time ratio K"),
+                "stroke": self.tr("Stroke H (mm)"), "frame": self.tr("Frame L2 (mm)"),
+                "lever": self.tr("Lever L3 (mm)"), "guide": self.tr("Guide above O4 (mm)"),
+                "rod_ratio": self.tr("Rod ratio L4/L3"), "rod": self.tr("Rod L4 (mm)")}
+
+    def _retranslate(self) -> None:
+        for label, text in zip(self._labels, (self.tr("Figure"), self.tr("Across"), self.tr("Up"),
+                                              self.tr("Points per axis"), self.tr("Objective"))):
+            label.setText(text)
+        self.compute.setText(self.tr("Compute map"))
+        self.cancel.setText(self.tr("Cancel"))
+        self.optimize.setText(self.tr("Optimize"))
+        self.box.setTitle(self.tr("Optimize over the map's ranges"))
+        self.free[0].setText(self.tr("vary across"))
+        self.free[1].setText(self.tr("vary up"))
+        self._fill_figures()
+        names = self.parameter_names()
+        for combo in self.axis_names:
+            for i in range(combo.count()):
+                combo.setItemText(i, names[combo.itemData(i)])
+        self._show_labels()
+
+    def _fill_figures(self) -> None:
+        """The figures (and objectives) this design's variant has: no pressure angle
+        without a rod."""
+        rod = self.model.valid_spec.variant == "rod"
+        names = {k: v for k, v in self.figure_names().items() if rod or not FIGURES[k][2]}
+        self._fill_combo(self.figure, names)
+        self._fill_combo(self.objective, {k: v for k, v in names.items() if FIGURES[k][0]})
+
+    @staticmethod
+    def _fill_combo(combo: QComboBox, items: dict[str, str]) -> None:
+        current = combo.currentData()
+        combo.blockSignals(True)
+        combo.clear()
+        for key, text in items.items():
+            combo.addItem(text, key)
+        combo.setCurrentIndex(max(combo.findData(current), 0))
+        combo.blockSignals(False)
+
+    def _fill_axes(self) -> None:
+        names = varied_parameters(self.model.valid_spec)
+        preferred = (["rod_ratio", "guide"] if "rod_ratio" in names else
+                     ["rod", "guide"] if "rod" in names else [names[0], names[1]])
+        texts = self.parameter_names()
+        for i, (combo, want) in enumerate(zip(self.axis_names, preferred)):
+            combo.blockSignals(True)
+            combo.clear()
+            for name in names:
+                combo.addItem(texts[name], name)
+            combo.setCurrentIndex(combo.findData(want))
+            combo.blockSignals(False)
+            self._axis_changed(i)
+
+    def _axis_changed(self, i: int) -> None:
+        low, high = default_range(self.model.design, self.axis_names[i].currentData())
+        self.lows[i].setValue(low)
+        self.highs[i].setValue(high)
+        self._show_labels()
+
+    def _show_labels(self) -> None:
+        names = self.parameter_names()
+        x, y = (c.currentData() for c in self.axis_names)
+        if x and y:
+            self.map.set_labels(names[x], names[y])
+
+    # ---- the map ------------------------------------------------------------
+    def axes(self) -> tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]]:
+        n = self.count.value()
+        ends = [sorted((self.lows[i].value(), self.highs[i].value())) for i in (0, 1)]
+        return tuple((self.axis_names[i].currentData(),  # type: ignore[return-value]
+                      np.linspace(ends[i][0], ends[i][1], n)) for i in (0, 1))
+
+    def start_map(self) -> None:
+        (x_name, x), (y_name, y) = self.axes()
+        if x_name == y_name:
+            self.status.setText(self.tr("Choose two different parameters."))
+            return
+        masses = self.model.masses if FIGURES[self.figure.currentData()][1] else None
+        job = MapJob(self.model.valid_spec, x_name, x, y_name, y, self.model.rpms, masses)
+        self._start(job, self.tr("Computing %1 designs…").replace("%1", str(x.size * y.size)))
+
+    def _map_done(self, result: MapResult) -> None:
+        self.result = result
+        self._basis = self._current_basis()
+        self.status.setText(self.tr("%1 of %2 designs are valid.").replace(
+            "%1", str(int(result.valid.sum()))).replace("%2", str(result.valid.size)))
+        self._show_figure()
+
+    def _figure_changed(self) -> None:
+        key = self.figure.currentData()
+        if self.result is None or key not in self.result.figures:
+            self.start_map()
+        else:
+            self._show_figure()
+
+    def _show_figure(self) -> None:
+        result = self.result
+        if result is None:
+            return
+        key = self.figure.currentData()
+        values = result.figures.get(key)
+        if values is None:
+            values = np.full(result.valid.shape, np.nan)
+        self.map.set_grid(result.x, result.y, values)
+        self._show_labels()
+        self._mark_current()
+
+    def _mark_current(self) -> None:
+        if self.result is None:
+            return
+        design = self.model.design
+        self.map.set_marker(design_value(design, self.result.x_name),
+                            design_value(design, self.result.y_name))
+
+    def _hovered(self, row: int, column: int) -> None:
+        result = self.result
+        if result is None or row < 0:
+            self.hover.clear()
+            self.map.setToolTip("")
+            return
+        names = self.parameter_names()
+        where = f"{names[result.x_name]} = {result.x[column]:.5g}, {names[result.y_name]} = {result.y[row]:.5g}"
+        error = result.errors[row * result.x.size + column]
+        if error is not None:
+            text = self.tr("%1 — invalid: %2").replace("%1", where).replace("%2", describe(error))
+        else:                                # every figure of the cell, to weigh one against another
+            labels = self.figure_names()
+            shown = [f"{labels[key]}: {values[row, column]:.5g}" for key, values in
+                     result.figures.items() if math.isfinite(values[row, column])]
+            text = where + "\n" + ";  ".join(shown)
+        self.hover.setText(text)
+        self.map.setToolTip(text)
+
+    def _clicked(self, row: int, column: int) -> None:
+        """Load the clicked design through the model (an ordinary, undoable edit)."""
+        result = self.result
+        if result is None:
+            return
+        self.model.set_spec(**spec_changes({result.x_name: float(result.x[column]),
+                                            result.y_name: float(result.y[row])}))
+
+    # ---- optimize -----------------------------------------------------------
+    def start_optimize(self) -> None:
+        (x_name, x), (y_name, y) = self.axes()
+        bounds = {name: (float(v[0]), float(v[-1])) for name, v, box in
+                  ((x_name, x, self.free[0]), (y_name, y, self.free[1])) if box.isChecked()}
+        if not bounds or x_name == y_name:
+            self.optimum.setText(self.tr("Choose one or two different free parameters."))
+            return
+        objective = self.objective.currentData()
+        masses = self.model.masses if FIGURES[objective][1] else None
+        job = OptimizeJob(self.model.valid_spec, bounds, objective, self.model.rpms, masses)
+        self.optimum.clear()
+        self._start(job, self.tr("Optimizing…"), busy=True)
+
+    def _optimum_done(self, best) -> None:
+        unit = {"pressure-angle": "°", "accel": "m/s²", "peak-torque": "N·m",
+                "flywheel": "kg·m²"}[best.objective]
+        start = "—" if best.start_value is None else f"{best.start_value:.5g} {unit}"
+        names = self.parameter_names()
+        where = ", ".join(f"{names[n]} = {v:.5g}" for n, v in zip(best.names, best.x))
+        self.optimum.setText(self.tr("Best: %1 %2 at %3 (the design before: %4); loaded into "
+                                     "the form.").replace("%1", f"{best.value:.5g}")
+                             .replace("%2", unit).replace("%3", where).replace("%4", start))
+        self.model.set_spec(**spec_changes(dict(zip(best.names, best.x))))
+
+    # ---- jobs -----------------------------------------------------------------
+    def _start(self, job, text: str, busy: bool = False) -> None:
+        # Bound methods of this GUI-thread object: Qt queues the calls to this thread.
+        job.progress.connect(self._progress)
+        job.finished.connect(self._finished)
+        job.failed.connect(self._failed)
+        job.cancelled.connect(self._cancelled)
+        self.status.setText(text)
+        self.progress.setRange(0, 0 if busy else 1)
+        self.progress.setValue(0)
+        self._set_busy(True)
+        self.runner.start(job)
+
+    def _current_job(self) -> bool:
+        return self.sender() is self.runner.job
+
+    def _progress(self, done: int, total: int) -> None:
+        if self._current_job():
+            self.progress.setRange(0, total)
+            self.progress.setValue(done)
+
+    def _finished(self, result) -> None:
+        if not self._current_job():
+            return
+        if isinstance(result, MapResult):
+            self._map_done(result)
+        else:
+            self._optimum_done(result)
+
+    def _failed(self, error) -> None:
+        if self._current_job():
+            reason = describe(error) if error is not None else self.tr("not enough memory")
+            self.status.setText(self.tr("Could not compute: %1").replace("%1", reason))
+
+    def _cancelled(self) -> None:
+        if self._current_job():
+            self.status.setText(self.tr("Cancelled."))
+
+    def _ended(self, job) -> None:
+        if self.runner.job is None:
+            self._set_busy(False)
+
+    def stop(self) -> None:
+        if self.runner.job is not None:
+            self.runner.cancel()
+            self.status.setText(self.tr("Cancelled."))
+        self._set_busy(False)
+
+    def _set_busy(self, on: bool) -> None:
+        self.cancel.setEnabled(on)
+        self.progress.setVisible(on)
+        self.compute.setEnabled(not on)
+        self.optimize.setEnabled(not on)
+
+    # ---- following the model ------------------------------------------------
+    def _current_basis(self):
+        """What a map depends on besides its own two parameters."""
+        spec = self.model.valid_spec
+        if self.result is not None:
+            spec = replace(spec, **spec_changes({self.result.x_name: 1.0, self.result.y_name: 1.0}))
+        return spec, self.model.rpms, self.model.masses
+
+    def _model_changed(self) -> None:
+        if varied_parameters(self.model.valid_spec) != [self.axis_names[0].itemData(i)
+                                      for i in range(self.axis_names[0].count())]:
+            self._fill_axes()
+            self._fill_figures()
+        self._mark_current()
+        if self.result is not None and self._current_basis() != self._basis:
+            self._refresh_timer.start()      # the fixed parameters changed: the map is stale
+
+    def export_image(self, path: str) -> None:
+        """Write the heat map to ``path``: SVG for ``.svg``, else a raster image."""
+        from pyqtgraph.exporters import ImageExporter, SVGExporter
+
+        item = self.map.getPlotItem()
+        if path.lower().endswith(".svg"):
+            SVGExporter(item).export(path)
+            return
+        exporter = ImageExporter(item)
+        exporter.parameters()["width"] = max(1200, int(item.width()))
+        if exporter.export(path) is False:
+            raise OSError(0, self.tr("the image could not be written"), path)
+
+    def shutdown(self) -> None:
+        """Stop any work and wait for it (the window is closing)."""
+        self._refresh_timer.stop()
+        self.runner.cancel()
+        self.runner.wait()

@@ -1,0 +1,166 @@
+"""The Explore tab driven like a user: map, hover, click to load, optimize, cancel."""
+import math
+import time
+
+import numpy as np
+import pytest
+from PySide6.QtCore import QPoint, QTimer, Qt
+
+from core.optimize import optimize
+from core.sweep import evaluate
+from shaperapp.explore_view import ExploreView
+from shaperapp.messages import describe
+
+
+@pytest.fixture
+def view(qtbot, model):
+    model.set_spec(variant="rod", rod_input="ratio", rod_ratio=0.3, time_ratio=1.46, stroke=312.0)
+    widget = ExploreView(model)
+    qtbot.addWidget(widget)
+    widget.resize(760, 820)
+    widget.show()
+    qtbot.waitExposed(widget)
+    yield widget
+    widget.shutdown()
+
+
+def compute(qtbot, view, timeout=20_000):
+    view.compute.click()
+    qtbot.waitUntil(lambda: view.runner.job is None and view.result is not None
+                    and not view.cancel.isEnabled(), timeout=timeout)
+
+
+def pixel(view, row, column):
+    """Viewport pixel of a map cell's centre."""
+    scene = view.map.getViewBox().mapViewToScene(view.map.cell_center(row, column))
+    point = view.map.mapFromScene(scene)
+    return QPoint(int(round(point.x())), int(round(point.y())))
+
+
+def test_map_shows_core_figures_with_invalid_cells(qtbot, view, model):
+    view.count.setValue(12)
+    view.lows[1].setValue(300.0)            # reaches below the crank circle: invalid cells
+    compute(qtbot, view)
+    result = view.result
+    assert (result.x_name, result.y_name) == ("rod_ratio", "guide")
+    yy, xx = np.meshgrid(result.y, result.x, indexing="ij")
+    ev = evaluate(model.valid_spec, {"rod_ratio": xx.ravel(), "guide": yy.ravel()}, model.rpms)
+    expected = np.degrees(ev.peaks.pressure_max).reshape(result.valid.shape)
+    assert np.array_equal(result.valid, ev.valid.reshape(result.valid.shape))
+    assert 0 < result.valid.sum() < result.valid.size
+    shown = view.map.image.image.T                     # the ImageItem holds (x, y)
+    assert np.allclose(shown[result.valid], expected[result.valid], rtol=1e-12)
+    assert np.all(np.isnan(shown[~result.valid]))     # invalid: transparent over the grey
+
+
+def test_hover_names_the_reason_of_an_invalid_cell(qtbot, view):
+    view.count.setValue(10)
+    view.lows[1].setValue(300.0)
+    compute(qtbot, view)
+    rows, cols = np.nonzero(~view.result.valid)
+    row, col = int(rows[0]), int(cols[0])
+    qtbot.mouseMove(view.map.viewport(), pixel(view, row, col))
+    qtbot.waitUntil(lambda: "invalid" in view.hover.text())
+    error = view.result.errors[row * view.result.x.size + col]
+    assert describe(error) in view.hover.text()
+    assert view.map.toolTip() == view.hover.text()
+
+
+def test_clicking_a_cell_loads_that_design(qtbot, view, model):
+    view.count.setValue(9)
+    compute(qtbot, view)
+    row, col = 5, 6
+    assert view.result.valid[row, col]
+    with qtbot.waitSignal(model.resultsChanged):
+        qtbot.mouseClick(view.map.viewport(), Qt.MouseButton.LeftButton, pos=pixel(view, row, col))
+    assert model.valid_spec.guide_rule == "height"
+    assert model.valid_spec.guide_height == pytest.approx(view.result.y[row])
+    assert model.valid_spec.rod_ratio == pytest.approx(view.result.x[col])
+    assert model.design.rod == pytest.approx(view.result.x[col] * model.design.lever)
+    x, y = view.map.marker.getData()
+    assert (x[0], y[0]) == (pytest.approx(view.result.x[col]), pytest.approx(view.result.y[row]))
+
+
+def test_optimize_loads_the_best_design(qtbot, view, model):
+    view.lows[0].setValue(0.3)
+    view.highs[0].setValue(1.0)
+    view.lows[1].setValue(480.0)
+    view.highs[1].setValue(620.0)
+    spec = model.valid_spec
+    view.optimize.click()
+    qtbot.waitUntil(lambda: view.runner.job is None and view.optimum.text() != "", timeout=60_000)
+    best = optimize(spec, {"rod_ratio": (0.3, 1.0), "guide": (480.0, 620.0)}, "pressure-angle",
+                    model.rpms)
+    assert model.metrics.pressure_angle_max_deg == pytest.approx(best.value, rel=1e-9)
+    assert model.valid_spec.rod_ratio == pytest.approx(best.x[0])
+    assert f"{best.value:.5g}" in view.optimum.text()
+
+
+def test_cancel_stops_a_long_map_and_the_window_stays_responsive(qtbot, view):
+    view.count.setValue(120)
+    view.figure.setCurrentIndex(view.figure.findData("flywheel"))   # with loads: slow
+    qtbot.waitUntil(lambda: view.runner.job is not None, timeout=5_000)
+    ticks = []
+    timer = QTimer()
+    timer.timeout.connect(lambda: ticks.append(time.perf_counter()))
+    timer.start(20)
+    qtbot.waitUntil(lambda: view.progress.value() > 0, timeout=30_000)
+    assert view.cancel.isEnabled() and not view.compute.isEnabled()
+    view.cancel.click()
+    assert view.status.text() == view.tr("Cancelled.")
+    qtbot.waitUntil(lambda: not view.runner._threads, timeout=30_000)   # the worker ended
+    timer.stop()
+    gaps = np.diff(ticks)
+    assert len(ticks) > 5 and gaps.max() < 0.5          # the GUI thread kept running
+    assert view.compute.isEnabled()
+
+
+def test_explore_tab_in_the_main_window(qtbot, tmp_path):
+    from PySide6.QtCore import QSettings
+
+    from shaperapp.main_window import MainWindow
+    from shaperapp.model import DesignModel
+
+    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
+    window = MainWindow(DesignModel(), settings)
+    qtbot.addWidget(window)
+    index = window.tabs.indexOf(window.explore)
+    assert index >= 0 and window.tabs.tabText(index) == "Explore"
+    figures = [window.explore.figure.itemData(i) for i in range(window.explore.figure.count())]
+    assert "pressure-angle" not in figures and figures[0] == "accel"   # block variant
+    window.explore.count.setValue(6)
+    compute(qtbot, window.explore)
+    target = tmp_path / "map.png"
+    window.explore.export_image(str(target))
+    assert target.stat().st_size > 1000
+    window.explore.shutdown()
+    assert math.isfinite(float(np.nanmax(window.explore.result.figures["accel"])))
+
+
+def test_hover_shows_every_figure_of_a_valid_cell(qtbot, view):
+    view.count.setValue(8)
+    compute(qtbot, view)
+    row, col = 4, 4
+    assert view.result.valid[row, col]
+    qtbot.mouseMove(view.map.viewport(), pixel(view, row, col))
+    qtbot.waitUntil(lambda: view.hover.text() != "")
+    text = view.hover.text()
+    for key in ("pressure-angle", "accel", "v-work", "v-return"):
+        value = view.result.figures[key][row, col]
+        assert f"{view.figure_names()[key]}: {value:.5g}" in text
+
+
+def test_map_follows_a_change_of_the_fixed_parameters(qtbot, view, model):
+    view.count.setValue(6)
+    compute(qtbot, view)
+    before = view.result.figures["accel"].copy()
+    model.set_spec(stroke=400.0)                      # not one of the map's two parameters
+    qtbot.waitUntil(lambda: view.runner.job is None and view.result is not None
+                    and view.result.figures["accel"].shape == before.shape
+                    and not np.allclose(view.result.figures["accel"], before, equal_nan=True),
+                    timeout=20_000)
+    yy, xx = np.meshgrid(view.result.y, view.result.x, indexing="ij")
+    ev = evaluate(model.valid_spec, {"rod_ratio": xx.ravel(), "guide": yy.ravel()}, model.rpms)
+    expected = np.max(ev.figures["a_max_m_s2"], axis=-1).reshape(view.result.valid.shape)
+    valid = view.result.valid
+    assert np.allclose(view.result.figures["accel"][valid], expected[valid], rtol=1e-12)

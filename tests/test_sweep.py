@@ -1,0 +1,173 @@
+"""Many designs at once: the same verdicts, messages and figures as one design at a time."""
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from core.dynamics import MassProperties, summarize
+from core.errors import DesignError
+from core.metrics import analyze
+from core.optimize import objective_of, optimize
+from core.spec import Spec
+from core.sweep import evaluate, grid, spec_designs
+
+RNG_SEED = 11
+LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                       cut_force_N=7000.0, cut_height_mm=80.0)
+
+
+def random_inputs(rng, count, mode, variant, rod_input):
+    """Inputs spread wide enough that every rule refuses some of them."""
+    values = {"crank": rng.uniform(-20, 400, count),
+              "guide": rng.uniform(100, 1500, count)}
+    if mode == "synthesis":
+        values["time_ratio"] = rng.uniform(0.9, 5.3, count)
+        values["stroke"] = rng.uniform(-50, 1500, count)
+        values["crank"][::17] = 1e-4                         # below the length floor
+        values["time_ratio"][::23] = 1 + 1e-12               # K too close to 1
+    else:
+        values["frame"] = rng.uniform(50, 600, count)
+        values["lever"] = rng.uniform(100, 1500, count)
+    if variant == "rod":
+        if rod_input == "ratio":
+            values["rod_ratio"] = rng.uniform(-0.1, 1.5, count)
+        else:
+            values["rod"] = rng.uniform(-10, 900, count)
+    for v in values.values():
+        v[::29] = np.nan
+    return values
+
+
+def one_spec(spec, values, i):
+    """The Spec of design ``i`` alone, as the form would hold it."""
+    changes = {"crank": values["crank"][i], "guide_rule": "height",
+               "guide_height": values["guide"][i]}
+    for key in ("time_ratio", "stroke", "frame", "lever"):
+        if key in values:
+            changes[key] = values[key][i]
+    if "rod_ratio" in values:
+        changes.update(variant="rod", rod_input="ratio", rod_ratio=values["rod_ratio"][i])
+    if "rod" in values:
+        changes.update(variant="rod", rod_input="length", rod_length=values["rod"][i])
+    return replace(spec, **changes)
+
+
+@pytest.mark.parametrize("mode, variant, rod_input, side", [
+    ("synthesis", "block", "ratio", "trailing"), ("synthesis", "rod", "ratio", "leading"),
+    ("synthesis", "rod", "length", "trailing"), ("dimensions", "block", "ratio", "trailing"),
+    ("dimensions", "rod", "length", "leading"), ("dimensions", "rod", "ratio", "trailing")])
+def test_verdicts_equal_single_design_validation(mode, variant, rod_input, side):
+    rng = np.random.default_rng(RNG_SEED)
+    spec = Spec(mode=mode, variant=variant, rod_input=rod_input, rod_side=side)
+    values = random_inputs(rng, 600, mode, variant, rod_input)
+    designs, verdict = spec_designs(spec, values)
+    parameters = set()
+    for i in range(600):
+        try:
+            single = one_spec(spec, values, i).design()
+            expected = None
+        except DesignError as exc:
+            expected = exc
+        got = verdict.error(i)
+        if expected is None:
+            assert got is None, (i, got)
+            assert designs.lever[i] == pytest.approx(single.lever, rel=1e-12)
+            assert designs.guide[i] == pytest.approx(single.guide, rel=1e-12)
+        else:
+            assert got is not None, (i, expected)
+            assert (got.parameter, got.allowed) == (expected.parameter, expected.allowed), i
+            assert str(got) == str(expected)
+            parameters.add((got.parameter, got.allowed.split(' ')[:3] == ['must', 'be', '≥'],
+                            got.allowed[:12]))
+    assert verdict.ok.sum() > 20                      # a fair share of valid designs
+    assert len(parameters) >= 5                       # and of different rules
+
+
+@pytest.mark.parametrize("variant", ["block", "rod"])
+def test_sweep_figures_equal_analyze_and_summarize(variant):
+    rng = np.random.default_rng(3)
+    spec = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant=variant, rod_ratio=0.4)
+    values = {"crank": rng.uniform(60, 140, 400), "time_ratio": rng.uniform(1.05, 4.5, 400),
+              "stroke": rng.uniform(250, 700, 400)}
+    if variant == "rod":
+        values["rod_ratio"] = rng.uniform(0.2, 1.2, 400)
+    rpms = [25.0, 60.0]
+    ev = evaluate(spec, values, rpms, LOADS)
+    valid = np.flatnonzero(ev.valid)
+    assert valid.size > 50
+    for i in valid[:: max(1, valid.size // 25)]:
+        changes = {k: float(v[i]) for k, v in values.items()}
+        design = replace(spec, **changes).design()
+        metrics = analyze(design, rpms)
+        summary = summarize(design, rpms, LOADS)
+        assert ev.peaks.time_ratio[i] == pytest.approx(metrics.time_ratio, rel=1e-6)
+        assert ev.peaks.stroke_mm[i] == pytest.approx(metrics.stroke_mm, rel=1e-6)
+        if variant == "rod":
+            assert math.degrees(ev.peaks.pressure_max[i]) == pytest.approx(
+                metrics.pressure_angle_max_deg, rel=1e-6)
+        for j, s in enumerate(metrics.speeds):
+            for key in ("v_work_max_m_s", "v_return_max_m_s", "a_max_m_s2"):
+                assert ev.figures[key][i, j] == pytest.approx(getattr(s, key), rel=1e-6)
+            for key in ("mean_torque_N_m", "max_torque_N_m", "flywheel_inertia_kg_m2"):
+                assert ev.dynamics[key][i, j] == pytest.approx(getattr(summary.speeds[j], key), rel=1e-6)
+    invalid = np.flatnonzero(~ev.valid)
+    assert np.all(np.isnan(ev.figures["a_max_m_s2"][invalid]))
+
+
+def test_grid_varies_the_first_name_slowest():
+    values = grid({"crank": (80.0, 120.0, 3), "guide": (500.0, 600.0, 2)})
+    assert values["crank"].tolist() == [80, 80, 100, 100, 120, 120]
+    assert values["guide"].tolist() == [500, 600, 500, 600, 500, 600]
+
+
+def test_too_many_designs_are_refused():
+    with pytest.raises(DesignError) as info:
+        grid({"crank": (1, 2, 2000), "guide": (1, 2, 2000)})
+    assert info.value.parameter == "vary"
+
+
+def brute(spec, names, bounds, objective, rpms, count, masses=None):
+    axes = [np.linspace(lo, hi, count) for lo, hi in bounds]
+    mesh = [m.reshape(-1) for m in np.meshgrid(*axes, indexing="ij")]
+    ev = evaluate(spec, dict(zip(names, mesh)), rpms, masses)
+    return objective_of(ev, objective).min()
+
+
+@pytest.mark.parametrize("objective, names, bounds", [
+    ("pressure-angle", ("rod_ratio", "guide"), ((0.2, 1.0), (450.0, 700.0))),
+    ("accel", ("rod_ratio", "guide"), ((0.2, 1.0), (450.0, 700.0))),
+    ("accel", ("crank",), ((60.0, 140.0),)),
+])
+def test_optimum_is_at_least_as_good_as_a_dense_grid(objective, names, bounds):
+    spec = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
+    best = optimize(spec, dict(zip(names, bounds)), objective, [40.0, 60.0])
+    reference = brute(spec, names, bounds, objective, [40.0, 60.0], 201 if len(names) == 2 else 4001)
+    assert best.value <= reference * (1 + 1e-12)
+    assert best.value < best.start_value
+    for x, (lo, hi) in zip(best.x, bounds):
+        assert lo <= x <= hi
+    # The reported figures are the optimal design's own.
+    design = replace(spec, guide_rule="height" if "guide" in names else spec.guide_rule,
+                     **{("guide_height" if n == "guide" else n): float(v)
+                        for n, v in zip(names, best.x)}).design()
+    value = (analyze(design, [40.0, 60.0]).pressure_angle_max_deg if objective == "pressure-angle"
+             else analyze(design, [40.0, 60.0]).speeds[-1].a_max_m_s2)
+    assert best.value == pytest.approx(value, rel=1e-9)
+
+
+def test_optimum_with_loads_beats_a_grid():
+    spec = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
+    bounds = {"rod_ratio": (0.25, 1.0)}
+    best = optimize(spec, bounds, "peak-torque", [40.0], LOADS)
+    reference = brute(spec, ("rod_ratio",), ((0.25, 1.0),), "peak-torque", [40.0], 121, LOADS)
+    assert best.value <= reference * (1 + 1e-12)
+
+
+def test_objective_needs_rod_or_loads():
+    block = Spec(crank=100.0, time_ratio=1.46, stroke=312.0)
+    with pytest.raises(DesignError) as info:
+        optimize(block, {"crank": (80.0, 120.0)}, "pressure-angle", [40.0])
+    assert info.value.parameter == "objective"
+    with pytest.raises(DesignError):
+        optimize(block, {"crank": (80.0, 120.0)}, "flywheel", [40.0])
