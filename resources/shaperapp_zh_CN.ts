@@ -806,8 +806,8 @@
         <translation>已取消。</translation>
     </message>
     <message>
-        <source>the image could not be written</source>
-        <translation>无法写入图像</translation>
+        <source>Design space</source>
+        <translation>设计空间</translation>
     </message>
 </context>
 <context>

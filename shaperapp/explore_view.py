@@ -14,6 +14,7 @@ from dataclasses import replace
 
 import numpy as np
 from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout, QGroupBox,
                                QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
                                QVBoxLayout, QWidget)
@@ -22,6 +23,7 @@ from core.sweep import default_range, design_value, spec_changes, varied_paramet
 from .explore_jobs import FIGURES, JobRunner, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
 from .messages import describe
+from .image_export import export_scene
 from .model import DesignModel
 
 REFRESH_MS = 300
@@ -371,17 +373,10 @@ class ExploreView(QWidget):
             self._refresh_timer.start()      # the fixed parameters changed: the map is stale
 
     def export_image(self, path: str) -> None:
-        """Write the heat map to ``path``: SVG for ``.svg``, else a raster image."""
-        from pyqtgraph.exporters import ImageExporter, SVGExporter
-
-        item = self.map.getPlotItem()
-        if path.lower().endswith(".svg"):
-            SVGExporter(item).export(path)
-            return
-        exporter = ImageExporter(item)
-        exporter.parameters()["width"] = max(1200, int(item.width()))
-        if exporter.export(path) is False:
-            raise OSError(0, self.tr("the image could not be written"), path)
+        """Write the heat map to ``path``: SVG for ``.svg``, else a raster image, through the
+        one image export every view uses (clear errors, written atomically)."""
+        export_scene(self.map.scene(), self.map.sceneRect(), path,
+                     self.tr("Design space"), QColor("#ffffff"))
 
     def shutdown(self) -> None:
         """Stop any work and wait for it (the window is closing)."""

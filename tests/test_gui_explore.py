@@ -164,3 +164,17 @@ def test_map_follows_a_change_of_the_fixed_parameters(qtbot, view, model):
     expected = np.max(ev.figures["a_max_m_s2"], axis=-1).reshape(view.result.valid.shape)
     valid = view.result.valid
     assert np.allclose(view.result.figures["accel"][valid], expected[valid], rtol=1e-12)
+
+
+@pytest.mark.parametrize("suffix", [".png", ".svg"])
+def test_heat_map_exports_through_the_shared_image_export(qtbot, model, tmp_path, suffix):
+    view = ExploreView(model)
+    qtbot.addWidget(view)
+    view.count.setValue(5)
+    compute(qtbot, view)
+    target = tmp_path / f"map{suffix}"
+    view.export_image(str(target))
+    data = target.read_bytes()
+    assert data.startswith(b"\x89PNG") if suffix == ".png" else b"<svg" in data[:2000]
+    with pytest.raises(ValueError):
+        view.export_image(str(tmp_path / "map.unknown"))
