@@ -49,6 +49,7 @@ class PolygonView(QWidget):
         super().__init__(parent)
         self.model = model
         self._user_scale: dict[str, float | None] = {kind: None for kind in KINDS}
+        self._stale = True
         self.kind_box = QComboBox()
         self.speed_box = QComboBox()
         self.auto_box = QCheckBox()
@@ -135,12 +136,22 @@ class PolygonView(QWidget):
 
     def _on_results(self) -> None:
         self._fill_speeds()
+        self._refresh()
+
+    def _refresh(self) -> None:
+        # A hidden view (another tab in front) only notes that it is stale: the
+        # polygons and the automatic scale are computed when it is shown.
+        if not self.isVisible():
+            self._stale = True
+            return
+        self._stale = False
         self._show_scale()
         self.canvas.update()
 
-    def _refresh(self) -> None:
-        self._show_scale()
-        self.canvas.update()
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        if self._stale:
+            self._refresh()
 
     def resizeEvent(self, event) -> None:
         super().resizeEvent(event)

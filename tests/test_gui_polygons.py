@@ -126,3 +126,17 @@ def test_shown_scale_is_the_drawn_scale_after_resizes(view, model, qtbot):
     model.set_angle_deg(250)
     view.canvas.repaint()
     assert view.scale_edit.text() == f"{view.scale():g}"
+
+
+def test_a_hidden_view_computes_nothing_until_shown(qtbot, model, monkeypatch):
+    """Another tab in front: an edit must not pay for the polygons and their scale."""
+    widget = PolygonView(model)
+    qtbot.addWidget(widget)
+    calls = []
+    monkeypatch.setattr(widget, "_auto_scale", lambda kind: calls.append(kind) or 0.01)
+    model.set_spec(time_ratio=1.5)
+    assert calls == []
+    widget.resize(760, 620)
+    widget.show()
+    qtbot.waitExposed(widget)
+    assert calls                      # shown: the scale box is brought up to date
