@@ -12,7 +12,7 @@ from PySide6.QtCore import QByteArray, QRect, QSettings, QSize
 from PySide6.QtWidgets import QMainWindow
 
 STATE_VERSION = 2           # 1: the splitter layout before the panes became docks
-PREFERRED = QSize(1560, 940)
+PREFERRED = QSize(1760, 990)     # on a large screen: room for every pane at once
 MINIMUM = QSize(1280, 720)  # the window never needs more (tests check it, both languages)
 FRAME_ALLOWANCE = QSize(16, 48)   # a window manager's frame and title bar, roughly
 

@@ -34,7 +34,7 @@ def settle(app: QApplication, rounds: int = 20) -> None:
         app.processEvents()
 
 
-def table_report(app: QApplication, window, table) -> dict:
+def table_report(app: QApplication, table) -> dict:
     area = table.parentWidget()
     while area is not None and not isinstance(area, QScrollArea):
         area = area.parentWidget()
@@ -71,15 +71,13 @@ def main(argv: list[str]) -> int:
     args = parser.parse_args(argv)
     pg.setConfigOptions(background="w", foreground="k", antialias=True)
     app = QApplication(sys.argv[:1])
-    from shaperapp import i18n
     from shaperapp.main_window import MainWindow
     from shaperapp.model import DesignModel
     window = MainWindow(DesignModel(), QSettings(args.settings, QSettings.Format.IniFormat))
     window.set_language(args.lang)
     window.show()
     settle(app)
-    report = {"screen": rect(window.screen().availableGeometry()), "language": i18n.current_language()
-              if hasattr(i18n, "current_language") else args.lang, "cases": []}
+    report = {"screen": rect(window.screen().availableGeometry()), "language": args.lang, "cases": []}
     for speeds in args.speeds:
         window.model.set_rpms([float(s) for s in speeds.split(",")])
         settle(app)
@@ -90,7 +88,7 @@ def main(argv: list[str]) -> int:
             "frame": rect(window.frameGeometry()), "size": size(window.size()),
             "minimum": size(window.minimumSizeHint()),
             "results_visible": window.metrics.isVisible(),
-            "tables": [table_report(app, window, t) for t in window.metrics.tables()],
+            "tables": [table_report(app, t) for t in window.metrics.tables()],
         })
     if args.resize:
         w, h = (int(v) for v in args.resize.split("x"))
