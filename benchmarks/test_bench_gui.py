@@ -45,7 +45,7 @@ def test_input_to_all_views_updated(benchmark, window, tab):
     # Fixed rounds: calibration ran this ~15 000 times (10 minutes) on a loaded machine.
     benchmark.pedantic(change, rounds=80, iterations=1, warmup_rounds=5)
     assert window.model.error is None
-    front = window.plots if tab == "kinematics" else window.forces.plots
+    front = window.plots if tab == "kinematics" else window.forces
     assert front.stack().is_current()
     # EDIT_BUDGET_S is not asserted: measured 37-50 ms wall (30-35 ms CPU) on the shared
     # 2-core machine, see the README's performance table.

@@ -601,6 +601,29 @@
     </message>
 </context>
 <context>
+    <name>Docks</name>
+    <message>
+        <source>Inputs</source>
+        <translation>输入</translation>
+    </message>
+    <message>
+        <source>Results</source>
+        <translation>计算结果</translation>
+    </message>
+    <message>
+        <source>Mechanism</source>
+        <translation>机构简图</translation>
+    </message>
+    <message>
+        <source>Vector diagrams</source>
+        <translation>矢量多边形</translation>
+    </message>
+    <message>
+        <source>Design library</source>
+        <translation>设计库</translation>
+    </message>
+</context>
+<context>
     <name>Document</name>
     <message>
         <source>Could not open the design: %1</source>
@@ -945,6 +968,25 @@
     <message>
         <source>could not write {0}: {1}</source>
         <translation>无法写入 {0}：{1}</translation>
+    </message>
+</context>
+<context>
+    <name>InputsPane</name>
+    <message>
+        <source>Design</source>
+        <translation>设计参数</translation>
+    </message>
+    <message>
+        <source>Loads</source>
+        <translation>载荷</translation>
+    </message>
+    <message>
+        <source>Dimensions or L1, K, H; mechanism; crank speeds</source>
+        <translation>尺寸或 L1、K、H；机构；曲柄转速</translation>
+    </message>
+    <message>
+        <source>Masses, cutting force and flywheel requirement (for the Forces tab and the forces and flywheel results)</source>
+        <translation>质量、切削力与飞轮要求（用于力分析选项卡及力与飞轮结果）</translation>
     </message>
 </context>
 <context>
@@ -1370,14 +1412,6 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <source>&amp;Library</source>
-        <translation>设计库(&amp;L)</translation>
-    </message>
-    <message>
-        <source>Design library</source>
-        <translation>设计库</translation>
-    </message>
-    <message>
         <source>Show &amp;library</source>
         <translation>显示设计库(&amp;L)</translation>
     </message>
@@ -1486,6 +1520,22 @@
         <translation>将机构移动到输入的曲柄转角</translation>
     </message>
     <message>
+        <source>Fit &amp;plots</source>
+        <translation>曲线全部显示(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Show the whole cycle in the plots of the current tab</source>
+        <translation>在当前选项卡的曲线中显示整个运动循环</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>恢复默认布局(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Put every pane back in its place for this window size</source>
+        <translation>按当前窗口大小把各面板放回默认位置</translation>
+    </message>
+    <message>
         <source>&amp;About</source>
         <translation>关于(&amp;A)</translation>
     </message>
@@ -1510,40 +1560,8 @@
         <translation>位置</translation>
     </message>
     <message>
-        <source>Vector diagrams</source>
-        <translation>矢量多边形</translation>
-    </message>
-    <message>
         <source>Explore</source>
         <translation>设计空间</translation>
-    </message>
-    <message>
-        <source>&amp;File</source>
-        <translation>文件(&amp;F)</translation>
-    </message>
-    <message>
-        <source>Open &amp;Recent</source>
-        <translation>最近打开(&amp;R)</translation>
-    </message>
-    <message>
-        <source>&amp;View</source>
-        <translation>视图(&amp;V)</translation>
-    </message>
-    <message>
-        <source>&amp;Edit</source>
-        <translation>编辑(&amp;E)</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>语言(&amp;L)</translation>
-    </message>
-    <message>
-        <source>&amp;Animation</source>
-        <translation>动画(&amp;A)</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>帮助(&amp;H)</translation>
     </message>
     <message>
         <source>&amp;Undo %1</source>
@@ -1600,6 +1618,50 @@
     <message>
         <source>About Shaper Designer</source>
         <translation>关于 牛头刨床机构设计</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Panes</source>
+        <translation>面板(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Animation</source>
+        <translation>动画(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Library</source>
+        <translation>设计库(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source>&amp;Toolbar</source>
+        <translation>工具栏(&amp;T)</translation>
     </message>
 </context>
 <context>
@@ -1671,10 +1733,6 @@
     <message>
         <source>Forces and flywheel</source>
         <translation>力与飞轮</translation>
-    </message>
-    <message>
-        <source>Constant crank speed; loads as set in the Forces tab</source>
-        <translation>曲柄匀速转动；载荷按“力分析”页设置</translation>
     </message>
     <message>
         <source>Synthesized dimensions</source>
@@ -1789,16 +1847,24 @@
         <translation>连杆与导路之间的最大夹角</translation>
     </message>
     <message>
+        <source>Per crank speed</source>
+        <translation>各曲柄转速</translation>
+    </message>
+    <message>
+        <source>Constant crank speed; loads as set in the Loads inputs</source>
+        <translation>曲柄匀速转动；载荷取自“载荷”输入</translation>
+    </message>
+    <message>
         <source>Dimensions</source>
         <translation>机构尺寸</translation>
     </message>
     <message>
-        <source>%1 mm</source>
-        <translation>%1 mm</translation>
+        <source>%1, %2</source>
+        <translation>%1，%2</translation>
     </message>
     <message>
-        <source>%1°</source>
-        <translation>%1°</translation>
+        <source>Value</source>
+        <translation>数值</translation>
     </message>
     <message>
         <source>%1 r/min</source>
@@ -2419,6 +2485,17 @@
     <message>
         <source>Could not write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>ResultTable</name>
+    <message>
+        <source>Copy</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Copy the selected cells (or the whole table) with their titles as tab-separated text</source>
+        <translation>将所选单元格（或整张表）连同标题复制为制表符分隔的文本</translation>
     </message>
 </context>
 <context>

@@ -58,7 +58,7 @@ class AnimationBar(QWidget):
         self._play_button.setDefaultAction(self.play_action)
         self._forward_button.setDefaultAction(self.step_forward_action)
         self._slider = QSlider(Qt.Horizontal)
-        self._slider.setMinimumWidth(160)
+        self._slider.setMinimumWidth(100)
         self._slider.valueChanged.connect(self._model.set_angle_index)
         self._loop = QCheckBox()
         self._loop.setChecked(True)

@@ -109,9 +109,9 @@ class DesignForm(QWidget):
         self._rod_input = QComboBox(self)
         self._rod_side = QComboBox(self)
         for combo in (self._variant, self._guide_rule, self._rod_input, self._rod_side):
-            # Long item texts (and their translations) must not widen the side panel.
-            combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
-            combo.setMinimumContentsLength(14)
+            # Every choice readable in full: a long one moves the combo under its label
+            # (the mechanism box wraps long rows) instead of being cut.
+            combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
         self._speeds = QListWidget(self)
         self._speeds.setMaximumHeight(78)
         self._speeds.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
@@ -168,6 +168,7 @@ class DesignForm(QWidget):
 
         self._mech_box = QGroupBox(self)
         mech = QFormLayout(self._mech_box)
+        mech.setRowWrapPolicy(QFormLayout.RowWrapPolicy.WrapLongRows)
         self._row(mech, "variant", self._variant)
         self._row(mech, "guide_rule", self._guide_rule)
         self._row(mech, "guide_height", f["guide_height"])

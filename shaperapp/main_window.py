@@ -1,28 +1,35 @@
-"""The main window only assembles: widgets, menus, shortcuts, window state.
+"""The main window only assembles: panes, docks, actions, menus, toolbar, window state.
 
-It owns no design data (the model does) and no file logic (the document
-does); widgets talk only to the model.
+It owns no design data (the model does) and no file logic (the document does);
+widgets talk only to the model. Central: the plot tabs (Kinematics, Forces,
+Positions, Explore, Compare) above the animation bar. Docks (``docks.py``):
+inputs, results, mechanism, vector diagrams, library. Menus and toolbar are
+built in ``menus.py``, actions behave as ``actions.py`` makes them, and
+``window_state.py`` fits the window to the screen and remembers the layout.
 """
 from __future__ import annotations
 
 import os
 
 import shiboken6
-from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
+from PySide6.QtCore import QEvent, QSettings, QTimer
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
-from PySide6.QtWidgets import (QApplication, QDockWidget, QInputDialog, QLineEdit, QMainWindow,
-                               QMessageBox, QScrollArea, QSplitter, QTabWidget, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QApplication, QInputDialog, QMainWindow, QMessageBox, QTabWidget,
+                               QVBoxLayout, QWidget)
 
-from . import file_dialogs, i18n
-from .help import GuideDialog, about_text
+from . import file_dialogs, i18n, window_state
+from .actions import command, flush_typing, set_tip, stack_action, window_shortcut
 from .animation import AnimationBar
 from .compare_view import CompareView
+from .docks import Docks
 from .document import Document
 from .explore_view import ExploreView
-from .forces_panel import ForcesPanel
-from .form import DesignForm
+from .force_plots import ForcePlots
 from .guards import ShortcutGuard, install_wheel_guard
+from .help import GuideDialog, about_text
+from .inputs_pane import InputsPane
 from .library_pane import LibraryPane
+from .menus import Menus
 from .messages import describe
 from .metrics_panel import MetricsPanel
 from .model import DesignModel
@@ -40,52 +47,39 @@ class MainWindow(QMainWindow):
         self.model = model
         self.settings = settings
         self.document = Document(model, settings, self)
-        self.form = DesignForm(model)
+        self.inputs = InputsPane(model)
+        self.form, self.loads = self.inputs.form, self.inputs.loads
         self.metrics = MetricsPanel(model)
         self.scheme = SchemeWidget(model)
+        self.polygon_view = PolygonView(model)
+        self.library = LibraryPane(model, settings=settings)
         self.animation = AnimationBar(model)
         self.plots = PlotsWidget(model)
-        self.forces = ForcesPanel(model)
-        self.tabs = QTabWidget()
-        self.tabs.addTab(self.plots, "")
-        self.tabs.addTab(self.forces, "")
-        # Course-design deliverables (issue 9): positions table and vector diagrams.
+        self.forces = ForcePlots(model)
         self.positions = PositionsView(model)
-        self.polygon_view = PolygonView(model)
-        self.tabs.addTab(self.positions, "")
-        self.tabs.addTab(self.polygon_view, "")
-        self.explore = ExploreView(model)          # Explore tab (issue 11)
-        self.tabs.addTab(self.explore, "")
+        self.explore = ExploreView(model)
+        self.compare = CompareView(model)
+        self.tabs = QTabWidget()
+        for view in (self.plots, self.forces, self.positions, self.explore, self.compare):
+            self.tabs.addTab(view, "")
+        central = QWidget()
+        column = QVBoxLayout(central)
+        column.setContentsMargins(0, 0, 0, 0)
+        column.setSpacing(0)
+        column.addWidget(self.tabs, 1)
+        column.addWidget(self.animation)
+        self.setCentralWidget(central)
+        self.docks = Docks(self, {"inputs": self.inputs, "results": self.metrics, "mechanism": self.scheme,
+                                  "polygons": self.polygon_view, "library": self.library})
+        self.library_dock = self.docks["library"]
+        self.library.compareRequested.connect(self._show_comparison)
 
-        side = QWidget()
-        side_layout = QVBoxLayout(side)
-        side_layout.addWidget(self.form)
-        side_layout.addWidget(self.metrics, 1)
-        scroll = QScrollArea()
-        scroll.setWidget(side)
-        scroll.setWidgetResizable(True)
-        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        scroll.setMinimumWidth(side.minimumSizeHint().width() + scroll.verticalScrollBar().sizeHint().width() + 4)
-        middle = QWidget()
-        middle_layout = QVBoxLayout(middle)
-        middle_layout.setContentsMargins(0, 0, 0, 0)
-        middle_layout.addWidget(self.scheme, 1)
-        middle_layout.addWidget(self.animation)
-        self.splitter = QSplitter(Qt.Orientation.Horizontal)
-        self.splitter.addWidget(scroll)
-        self.splitter.addWidget(middle)
-        self.splitter.addWidget(self.tabs)
-        self.splitter.setStretchFactor(0, 0)
-        self.splitter.setStretchFactor(1, 3)
-        self.splitter.setStretchFactor(2, 3)
-        self.splitter.setSizes([400, 500, 740])
-        self.setCentralWidget(self.splitter)
-
-        self._build_library()
         self._build_actions()
-        self._build_menus()
+        self.menus = Menus(self)
+        self.menu_file, self.menu_edit = self.menus.file, self.menus.edit
+        self._fill_recent()
         install_wheel_guard()
-        self._shortcut_guard = ShortcutGuard(self, self.flush_typing)
+        self._shortcut_guard = ShortcutGuard(self, flush_typing)
         QApplication.instance().installEventFilter(self._shortcut_guard)
         self.document.failed.connect(self._show_failure)
         self.document.recentChanged.connect(self._fill_recent)
@@ -95,117 +89,56 @@ class MainWindow(QMainWindow):
         model.errorChanged.connect(self._show_status)
         model.resultsChanged.connect(self._show_status)
         self._retranslate()
-        self._restore()
+        if window_state.restore(self, settings, self.docks.arrange):
+            self.docks.keep_sizes()
 
-    # ---- design library (issue 10): a dock, a Compare tab and a Library menu ----
-    def _build_library(self) -> None:
-        self.library = LibraryPane(self.model, settings=self.settings)
-        self.compare = CompareView(self.model)
-        self.tabs.addTab(self.compare, "")
-        self.library_dock = QDockWidget(self)
-        self.library_dock.setObjectName("libraryDock")
-        self.library_dock.setWidget(self.library)
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.library_dock)
-        self.library_dock.hide()
-        self.library.compareRequested.connect(self._show_comparison)
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        QTimer.singleShot(0, self.docks.apply_sizes)    # the default sizes, once laid out
 
-    def _show_comparison(self, candidates: list) -> None:
-        self.compare.set_candidates(candidates)
-        self.tabs.setCurrentWidget(self.compare)
-        if self.height() < 1000:          # on a small screen the docked library leaves the plots no room
-            self.library_dock.hide()
+    flush_typing = staticmethod(flush_typing)
 
-    def _library_menu(self) -> None:
-        self.menu_library = self.menuBar().addMenu("")
-        self.act_library = self.library_dock.toggleViewAction()
-        self.act_library.setShortcut(QKeySequence("Ctrl+L"))
-        self.act_library_save = self._action(self._save_to_library, "Ctrl+Shift+L")
-        self.act_compare = self._action(lambda: self.tabs.setCurrentWidget(self.compare))
-        for a in (self.act_library, self.act_library_save, self.act_compare):
-            self.menu_library.addAction(a)
-
-    def _save_to_library(self) -> None:
-        self.library_dock.show()
-        self.library.save_dialog()
-
-    def _retranslate_library(self) -> None:
-        self.menu_library.setTitle(self.tr("&Library"))
-        self.library_dock.setWindowTitle(self.tr("Design library"))
-        self.act_library.setText(self.tr("Show &library"))
-        self.act_library_save.setText(self.tr("&Save design to library…"))
-        self.act_compare.setText(self.tr("&Compare designs"))
-        self.tabs.setTabText(self.tabs.indexOf(self.compare), self.tr("Compare"))
-
-    # ---- actions and menus -------------------------------------------------
-    def _action(self, slot, shortcut=None) -> QAction:
-        """An action that first sends what is typed in the focused field (so Save, Export
-        or Undo act on it, not on the value before the debounce)."""
-        action = QAction(self)
-        if shortcut is not None:
-            action.setShortcut(QKeySequence(shortcut))
-        action.triggered.connect(lambda *_: (self.flush_typing(), slot()))
-        self.addAction(action)
-        return action
-
-    @staticmethod
-    def flush_typing() -> None:
-        """Commit the focused line edit as if the user had left it."""
-        focus = QApplication.focusWidget()
-        if isinstance(focus, QLineEdit) and not focus.isReadOnly():
-            focus.editingFinished.emit()
-
-    def _stack_action(self, action: QAction, step, keys: QKeySequence.StandardKey, extra: str = "") -> QAction:
-        """Undo/redo actions from the stack (their text and enabled state follow it),
-        triggered through :meth:`flush_typing` first."""
-        action.triggered.disconnect()
-        action.triggered.connect(lambda *_: (self.flush_typing(), step()))
-        shortcuts = QKeySequence.keyBindings(keys)
-        if extra and QKeySequence(extra) not in shortcuts:    # the same key twice would be ambiguous
-            shortcuts.append(QKeySequence(extra))
-        action.setShortcuts(shortcuts)
-        self.addAction(action)
-        return action
-
-    def _shortcut(self, action: QAction, shortcut: str) -> QAction:
-        action.setShortcut(QKeySequence(shortcut))
-        action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
-        self.addAction(action)
-        return action
+    # ---- actions -------------------------------------------------------------
+    def _action(self, slot, keys=None) -> QAction:
+        return command(self, slot, keys)
 
     def _build_actions(self) -> None:
-        d = self.document
-        self.act_new = self._action(lambda: d.new_dialog(self), QKeySequence.StandardKey.New)
-        self.act_open = self._action(lambda: d.open_dialog(self), QKeySequence.StandardKey.Open)
-        self.act_save = self._action(lambda: d.save_dialog(self), QKeySequence.StandardKey.Save)
-        self.act_save_as = self._action(lambda: d.save_as_dialog(self), QKeySequence.StandardKey.SaveAs)
+        d, keys = self.document, QKeySequence.StandardKey
+        self.act_new = self._action(lambda: d.new_dialog(self), keys.New)
+        self.act_open = self._action(lambda: d.open_dialog(self), keys.Open)
+        self.act_save = self._action(lambda: d.save_dialog(self), keys.Save)
+        self.act_save_as = self._action(lambda: d.save_as_dialog(self), keys.SaveAs)
         self.act_csv = self._action(lambda: d.export_csv_dialog(self), "Ctrl+E")
         self.act_forces_csv = self._action(lambda: d.export_forces_csv_dialog(self), "Ctrl+Shift+E")
         self.act_plots_img = self._action(
             lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
         self.act_report = self._action(self._export_report, "Ctrl+R")
-        # Only tabs that draw plots can export them as an image.
-        self.tabs.currentChanged.connect(lambda *_: self.act_plots_img.setEnabled(
-            hasattr(self.tabs.currentWidget(), "export_image")))
-        self.act_quit = self._action(self.close, QKeySequence.StandardKey.Quit)
+        # Only tabs that draw plots can export them as an image, or fit them.
+        self.tabs.currentChanged.connect(self._on_tab)
+        self.act_quit = self._action(self.close, keys.Quit)
         stack = self.model.undo_stack
-        self.act_undo = self._stack_action(stack.createUndoAction(self, self.tr("Undo")), stack.undo,
-                                           QKeySequence.StandardKey.Undo)
-        self.act_redo = self._stack_action(stack.createRedoAction(self, self.tr("Redo")), stack.redo,
-                                           QKeySequence.StandardKey.Redo, "Ctrl+Shift+Z")
+        self.act_undo = stack_action(self, stack.createUndoAction(self, self.tr("Undo")), stack.undo, keys.Undo)
+        self.act_redo = stack_action(self, stack.createRedoAction(self, self.tr("Redo")), stack.redo,
+                                     keys.Redo, "Ctrl+Shift+Z")
         stack.undoTextChanged.connect(self._show_undo_text)
         stack.redoTextChanged.connect(self._show_redo_text)
         self.act_goto = self._action(self.go_to_angle_dialog, "Ctrl+G")
         # The widgets own these actions (and their texts); the window only adds shortcuts.
-        self.act_play = self._shortcut(self.animation.play_action, "Space")
-        self.act_play.setShortcuts([QKeySequence("Space"), QKeySequence("Ctrl+Space")])
-        self.act_step = self._shortcut(self.animation.step_forward_action, "Ctrl+Right")
-        self.act_back = self._shortcut(self.animation.step_back_action, "Ctrl+Left")
-        self.act_fit = self._shortcut(self.scheme.fit_action, "Ctrl+0")
-        self.act_dims = self._shortcut(self.scheme.dimensions_action, "Ctrl+D")
-        self.act_forces = self._shortcut(self.scheme.forces_action, "Ctrl+F")
+        self.act_play = window_shortcut(self, self.animation.play_action, "Space", "Ctrl+Space")
+        self.act_step = window_shortcut(self, self.animation.step_forward_action, "Ctrl+Right")
+        self.act_back = window_shortcut(self, self.animation.step_back_action, "Ctrl+Left")
+        self.act_fit = window_shortcut(self, self.scheme.fit_action, "Ctrl+0")
+        self.act_dims = window_shortcut(self, self.scheme.dimensions_action, "Ctrl+D")
+        self.act_forces = window_shortcut(self, self.scheme.forces_action, "Ctrl+F")
+        self.act_fit_plots = self._action(self._fit_plots, "Ctrl+Shift+0")
+        self.act_reset_layout = self._action(lambda: self.docks.arrange(self.size()))
+        self.act_library = self.library_dock.toggleViewAction()
+        self.act_library.setShortcut(QKeySequence("Ctrl+L"))
+        self.act_library_save = self._action(self._save_to_library, "Ctrl+Shift+L")
+        self.act_compare = self._action(lambda: self.tabs.setCurrentWidget(self.compare))
         self.act_about = self._action(self._about)
-        self.act_guide = self._action(self._show_guide, QKeySequence.StandardKey.HelpContents)
+        self.act_guide = self._action(self._show_guide, keys.HelpContents)
         self._guide: GuideDialog | None = None
         self._language = "en"
         self.lang_actions: dict[str, QAction] = {}
@@ -215,47 +148,24 @@ class MainWindow(QMainWindow):
             action.setCheckable(True)
             self.lang_actions[code] = action
 
-    def _build_menus(self) -> None:
-        bar = self.menuBar()
-        self.menu_file = bar.addMenu("")
-        for a in (self.act_new, self.act_open):
-            self.menu_file.addAction(a)
-        self.menu_recent = self.menu_file.addMenu("")
-        for a in (self.act_save, self.act_save_as):
-            self.menu_file.addAction(a)
-        self.menu_file.addSeparator()
-        for a in (self.act_csv, self.act_forces_csv, self.act_plots_img, self.act_scheme_img):
-            self.menu_file.addAction(a)
-        self.menu_file.addAction(self.act_report)
-        self.menu_file.addSeparator()
-        self.menu_file.addAction(self.act_quit)
-        self.menu_edit = bar.addMenu("")
-        self.menu_edit.addAction(self.act_undo)
-        self.menu_edit.addAction(self.act_redo)
-        self.menu_view = bar.addMenu("")
-        self.menu_view.addAction(self.act_fit)
-        self.menu_view.addAction(self.act_dims)
-        self.menu_view.addAction(self.act_forces)
-        self.menu_lang = self.menu_view.addMenu("")
-        for action in self.lang_actions.values():
-            self.menu_lang.addAction(action)
-        self.menu_anim = bar.addMenu("")
-        for a in (self.act_play, self.act_step, self.act_back, self.act_goto):
-            self.menu_anim.addAction(a)
-        self._library_menu()
-        self.menu_help = bar.addMenu("")
-        self.menu_help.addAction(self.act_guide)
-        self.menu_help.addAction(self.act_about)
-        self._fill_recent()
+    def _on_tab(self, *_) -> None:
+        plots = self.tabs.currentWidget()
+        self.act_plots_img.setEnabled(hasattr(plots, "export_image"))
+        self.act_fit_plots.setEnabled(hasattr(plots, "stack"))
+
+    def _fit_plots(self) -> None:
+        if hasattr(self.tabs.currentWidget(), "stack"):
+            self.tabs.currentWidget().stack().fit()
 
     def _fill_recent(self) -> None:
-        self.menu_recent.clear()
+        menu = self.menus.recent
+        menu.clear()
         files = self.document.recent_files()
         for path in files:
-            action = self.menu_recent.addAction(os.path.basename(path))
+            action = menu.addAction(os.path.basename(path))
             action.setToolTip(path)
             action.triggered.connect(lambda _=False, p=path: self.document.open_dialog(self, p))
-        self.menu_recent.setEnabled(bool(files))
+        menu.setEnabled(bool(files))
 
     # ---- translation ---------------------------------------------------------
     def set_language(self, code: str) -> None:
@@ -287,27 +197,24 @@ class MainWindow(QMainWindow):
              self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
             (self.act_quit, self.tr("&Quit"), ""),
             (self.act_goto, self.tr("&Go to Crank Angle…"), self.tr("Move the mechanism to a crank angle you type")),
+            (self.act_fit_plots, self.tr("Fit &plots"), self.tr("Show the whole cycle in the plots of the current tab")),
+            (self.act_reset_layout, self.tr("&Reset layout"),
+             self.tr("Put every pane back in its place for this window size")),
+            (self.act_library_save, self.tr("&Save design to library…"), ""),
+            (self.act_compare, self.tr("&Compare designs"), ""),
             (self.act_about, self.tr("&About"), ""),
             (self.act_guide, self.tr("User &guide"), self.tr("Conventions, method, glossary and command line")),
         ]
         for action, text, tip in texts:
-            action.setText(text)
-            action.setStatusTip(tip)
-        self.tabs.setTabText(0, self.tr("Kinematics"))
-        self.tabs.setTabText(1, self.tr("Forces"))
-        self.tabs.setTabText(2, self.tr("Positions"))
-        self.tabs.setTabText(3, self.tr("Vector diagrams"))
-        self.tabs.setTabText(self.tabs.indexOf(self.explore), self.tr("Explore"))
-        self.menu_file.setTitle(self.tr("&File"))
-        self.menu_recent.setTitle(self.tr("Open &Recent"))
-        self.menu_view.setTitle(self.tr("&View"))
-        self.menu_edit.setTitle(self.tr("&Edit"))
+            set_tip(action, text, tip)
+        self.act_library.setText(self.tr("Show &library"))
+        for i, title in enumerate((self.tr("Kinematics"), self.tr("Forces"), self.tr("Positions"),
+                                   self.tr("Explore"), self.tr("Compare"))):
+            self.tabs.setTabText(i, title)
+        self.docks.retranslate()
+        self.menus.retranslate()
         self._show_undo_text(self.model.undo_stack.undoText())
         self._show_redo_text(self.model.undo_stack.redoText())
-        self.menu_lang.setTitle(self.tr("&Language"))
-        self.menu_anim.setTitle(self.tr("&Animation"))
-        self.menu_help.setTitle(self.tr("&Help"))
-        self._retranslate_library()
         self._update_title()
         self._show_status()
 
@@ -315,11 +222,11 @@ class MainWindow(QMainWindow):
         """'Undo Time ratio K' in the current language (the stack's own prefix is fixed
         when the action is made). The stack outlives the window: skip once it is gone."""
         if shiboken6.isValid(self.act_undo):
-            self.act_undo.setText(self.tr("&Undo %1").replace("%1", text).strip())
+            set_tip(self.act_undo, self.tr("&Undo %1").replace("%1", text).strip(), "")
 
     def _show_redo_text(self, text: str) -> None:
         if shiboken6.isValid(self.act_redo):
-            self.act_redo.setText(self.tr("&Redo %1").replace("%1", text).strip())
+            set_tip(self.act_redo, self.tr("&Redo %1").replace("%1", text).strip(), "")
 
     def _update_title(self, *_) -> None:
         """The file name; Qt appends the application's display name, which
@@ -344,6 +251,16 @@ class MainWindow(QMainWindow):
 
     def _on_saved(self, path: str) -> None:
         self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
+
+    def _show_comparison(self, candidates: list) -> None:
+        self.compare.set_candidates(candidates)
+        self.tabs.setCurrentWidget(self.compare)
+        if self.height() < 1000:          # on a small screen the docked library leaves the plots no room
+            self.library_dock.hide()
+
+    def _save_to_library(self) -> None:
+        self.library_dock.show()
+        self.library.save_dialog()
 
     def _export_image(self, widget, stem: str) -> None:
         if not self.document.confirm_valid(self, saving=False):
@@ -401,22 +318,11 @@ class MainWindow(QMainWindow):
         self._guide.raise_()
 
     # ---- window state --------------------------------------------------------
-    def _restore(self) -> None:
-        geometry = self.settings.value("geometry")
-        if isinstance(geometry, QByteArray) and not geometry.isEmpty():
-            self.restoreGeometry(geometry)
-        else:
-            self.resize(1560, 940)
-        state = self.settings.value("splitter")
-        if isinstance(state, QByteArray):
-            self.splitter.restoreState(state)
-
     def closeEvent(self, event: QCloseEvent) -> None:
         if not self.document.confirm_discard(self):
             event.ignore()
             return
-        self.settings.setValue("geometry", self.saveGeometry())
-        self.settings.setValue("splitter", self.splitter.saveState())
+        window_state.save(self, self.settings)
         if self._guide is not None:
             self._guide.close()
         self.explore.shutdown()

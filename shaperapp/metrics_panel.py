@@ -1,69 +1,102 @@
-"""Synthesized dimensions and measured cycle metrics, beside the form.
+"""The results pane: dimensions, measured cycle, per-speed figures, forces and flywheel.
 
-Everything shown is read from the model's design and metrics; the panel only
-formats numbers. It updates when the model recomputes, so it lags the form by
-the debounce only.
+Four tables (``result_table.ResultTable``: every row shown, titles with units, cells
+selectable and copyable). Everything shown is read from the model's design, metrics
+and dynamics summary; the pane only formats numbers. A hidden pane (a closed or
+tabbed-away dock) does nothing on an edit and catches up when shown; reading a value
+(``value_text``, ``table_text``) always gives the current results.
 """
 from __future__ import annotations
 
 import math
 
-from PySide6.QtCore import QEvent, Qt
-from PySide6.QtWidgets import (QAbstractItemView, QFormLayout, QGroupBox, QHeaderView, QLabel,
-                               QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
+from PySide6.QtCore import QEvent
+from PySide6.QtWidgets import QGroupBox, QVBoxLayout, QWidget
 
 from .model import DesignModel
+from .result_table import ResultTable
 from .style import fmt
+
+DIMENSIONS = ("theta", "frame", "lever", "rod", "guide", "h", "K_nominal", "H_nominal")
+CYCLE = ("K", "stroke", "work_angle", "return_angle", "pressure")
+UNITS = {"theta": "°", "frame": "mm", "lever": "mm", "rod": "mm", "guide": "mm", "h": "mm",
+         "K_nominal": "", "H_nominal": "mm", "K": "", "stroke": "mm", "work_angle": "°",
+         "return_angle": "°", "pressure": "°"}
 
 
 class MetricsPanel(QWidget):
-    """Read-only view: dimensions (θ, L2, L3, L4, h, guide) and per-speed metrics."""
+    """Read-only results: dimensions, measured cycle, and per-speed kinematic and load figures."""
 
     def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._model = model
-        self._dim_box = QGroupBox(self)
-        self._dim_form = QFormLayout(self._dim_box)
-        self._cycle_box = QGroupBox(self)
-        self._cycle_form = QFormLayout(self._cycle_box)
-        self._labels: dict[str, QLabel] = {}
-        self._values: dict[str, QLabel] = {}
-        for key in ("theta", "frame", "lever", "rod", "guide", "h", "K_nominal", "H_nominal"):
-            self._add_row(self._dim_form, key)
-        for key in ("K", "stroke", "work_angle", "return_angle", "pressure"):
-            self._add_row(self._cycle_form, key)
-        self._table = self._make_table()
-        self._forces_title = QLabel(self)
-        self._forces_title.setStyleSheet("font-weight: 600; margin-top: 6px;")
-        self._forces_table = self._make_table()
+        self._stale = self._forces_stale = True
+        self._dim_box, self._dim_table = self._section()
+        self._cycle_box, self._cycle_table = self._section()
+        self._speed_box, self._table = self._section()
+        self._forces_box, self._forces_table = self._section()
         layout = QVBoxLayout(self)
-        layout.setContentsMargins(0, 0, 0, 0)
-        layout.addWidget(self._dim_box)
-        layout.addWidget(self._cycle_box)
-        layout.addWidget(self._table)
-        layout.addWidget(self._forces_title)
-        layout.addWidget(self._forces_table)
+        layout.setContentsMargins(2, 2, 2, 2)
+        for box in (self._dim_box, self._cycle_box, self._speed_box, self._forces_box):
+            layout.addWidget(box)
         layout.addStretch(1)
-        model.resultsChanged.connect(self._show)
-        model.forcesChanged.connect(self._show_forces)
+        model.resultsChanged.connect(self._on_results)
+        model.forcesChanged.connect(self._on_forces)
         self._retranslate()
 
-    def _make_table(self) -> QTableWidget:
-        table = QTableWidget(self)
-        table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
-        table.verticalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
-        table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
-        table.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        table.setSizeAdjustPolicy(QAbstractItemView.SizeAdjustPolicy.AdjustToContents)
-        return table
+    def _section(self) -> tuple[QGroupBox, ResultTable]:
+        box = QGroupBox(self)
+        table = ResultTable(box)
+        column = QVBoxLayout(box)
+        column.setContentsMargins(4, 4, 4, 4)
+        column.addWidget(table)
+        return box, table
 
-    def _add_row(self, form: QFormLayout, key: str) -> None:
-        label, value = QLabel(self), QLabel(self)
-        value.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
-        value.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-        self._labels[key], self._values[key] = label, value
-        form.addRow(label, value)
+    # ---- public --------------------------------------------------------------
+    def tables(self) -> list[ResultTable]:
+        """The four tables, top to bottom."""
+        return [self._dim_table, self._cycle_table, self._table, self._forces_table]
+
+    def value_text(self, key: str) -> str:
+        """The number shown for one dimension or cycle value (its unit is in the row title)."""
+        self._catch_up()
+        if key in DIMENSIONS:
+            return self._dim_table.text(DIMENSIONS.index(key), 0)
+        return self._cycle_table.text(CYCLE.index(key), 0)
+
+    def row_title(self, key: str) -> str:
+        """The title of one dimension or cycle row, with its unit."""
+        table, keys = (self._dim_table, DIMENSIONS) if key in DIMENSIONS else (self._cycle_table, CYCLE)
+        return table.verticalHeaderItem(keys.index(key)).text()
+
+    def table_text(self, row: int, column: int, forces: bool = False) -> str:
+        """A cell of the per-speed table (or of the forces and flywheel table)."""
+        self._catch_up()
+        return (self._forces_table if forces else self._table).text(row, column)
+
+    # ---- lazy updates --------------------------------------------------------
+    def _on_results(self) -> None:
+        self._show_title()               # cheap, and a closed pane shows the right title when opened
+        self._stale = self._forces_stale = True
+        if self.isVisible():
+            self._catch_up()
+
+    def _on_forces(self) -> None:
+        self._forces_stale = True
+        if self.isVisible():
+            self._catch_up()
+
+    def _catch_up(self) -> None:
+        if self._stale:
+            self._stale = False
+            self._show()
+        if self._forces_stale:
+            self._forces_stale = False
+            self._show_forces()
+
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        self._catch_up()
 
     def changeEvent(self, event: QEvent) -> None:
         if event.type() == QEvent.Type.LanguageChange:
@@ -95,11 +128,9 @@ class MetricsPanel(QWidget):
             ("flywheel_inertia_net_kg_m2", self.tr("J_F less mechanism's own, kg·m²"), 1.0, ".2f"),
         ]
 
-    def _retranslate(self) -> None:
-        self._forces_title.setText(self.tr("Forces and flywheel"))
-        self._forces_title.setToolTip(self.tr("Constant crank speed; loads as set in the Forces tab"))
-        self._cycle_box.setTitle(self.tr("Measured cycle"))
-        titles = {
+    def _names(self) -> dict[str, tuple[str, str]]:
+        """(title, tooltip) of every dimension and cycle row."""
+        return {
             "theta": (self.tr("Extreme-position angle θ"), self.tr("Crank angle between the two limit positions; equals the lever swing")),
             "frame": (self.tr("Frame O2O4 L2"), self.tr("Distance from crank centre to lever pivot")),
             "lever": (self.tr("Lever O4B L3"), self.tr("Length of the slotted lever")),
@@ -114,80 +145,52 @@ class MetricsPanel(QWidget):
             "return_angle": (self.tr("Return crank angle"), self.tr("Crank rotation during the return stroke")),
             "pressure": (self.tr("Max pressure angle at ram"), self.tr("Largest angle between the rod and the guide")),
         }
-        for key, (text, tip) in titles.items():
-            self._labels[key].setText(text)
-            self._labels[key].setToolTip(tip)
-        self._show()
-        self._show_forces()
+
+    def _retranslate(self) -> None:
+        self._cycle_box.setTitle(self.tr("Measured cycle"))
+        self._speed_box.setTitle(self.tr("Per crank speed"))
+        self._forces_box.setTitle(self.tr("Forces and flywheel"))
+        self._forces_box.setToolTip(self.tr("Constant crank speed; loads as set in the Loads inputs"))
+        self._on_results()
+
+    def _show_title(self) -> None:
+        self._dim_box.setTitle(self.tr("Synthesized dimensions") if self._model.valid_spec.mode == "synthesis"
+                               else self.tr("Dimensions"))
 
     def _show(self) -> None:
         design, metrics = self._model.design, self._model.metrics
-        self._dim_box.setTitle(self.tr("Synthesized dimensions") if self._model.valid_spec.mode == "synthesis"
-                               else self.tr("Dimensions"))
-        mm = self.tr("%1 mm")
-        deg = self.tr("%1°")
         values = {
-            "theta": deg.replace("%1", fmt(math.degrees(design.theta), ".3f")),
-            "frame": mm.replace("%1", fmt(design.frame, ".2f")),
-            "lever": mm.replace("%1", fmt(design.lever, ".2f")),
-            "rod": mm.replace("%1", fmt(design.rod, ".2f")) if design.rod is not None else "—",
-            "guide": mm.replace("%1", fmt(design.guide, ".2f")),
-            "h": mm.replace("%1", fmt(design.guide_above_crank, ".2f")),
+            "theta": fmt(math.degrees(design.theta), ".3f"),
+            "frame": fmt(design.frame, ".2f"),
+            "lever": fmt(design.lever, ".2f"),
+            "rod": fmt(design.rod, ".2f") if design.rod is not None else "—",
+            "guide": fmt(design.guide, ".2f"),
+            "h": fmt(design.guide_above_crank, ".2f"),
             "K_nominal": fmt(design.time_ratio, ".4f"),
-            "H_nominal": mm.replace("%1", fmt(design.stroke, ".2f")),
+            "H_nominal": fmt(design.stroke, ".2f"),
             "K": fmt(metrics.time_ratio, ".4f"),
-            "stroke": mm.replace("%1", fmt(metrics.stroke_mm, ".2f")),
-            "work_angle": deg.replace("%1", fmt(metrics.work_angle_deg, ".2f")),
-            "return_angle": deg.replace("%1", fmt(metrics.return_angle_deg, ".2f")),
-            "pressure": (deg.replace("%1", fmt(metrics.pressure_angle_max_deg, ".2f"))
+            "stroke": fmt(metrics.stroke_mm, ".2f"),
+            "work_angle": fmt(metrics.work_angle_deg, ".2f"),
+            "return_angle": fmt(metrics.return_angle_deg, ".2f"),
+            "pressure": (fmt(metrics.pressure_angle_max_deg, ".2f")
                          if metrics.pressure_angle_max_deg is not None else "—"),
         }
-        for key, text in values.items():
-            self._values[key].setText(text)
+        names = self._names()
+        with_unit = self.tr("%1, %2")
+        for table, keys in ((self._dim_table, DIMENSIONS), (self._cycle_table, CYCLE)):
+            titles = [with_unit.replace("%1", names[k][0]).replace("%2", UNITS[k]) if UNITS[k]
+                      else names[k][0] for k in keys]
+            table.set_content(titles, [self.tr("Value")], [[values[k]] for k in keys],
+                              [names[k][1] for k in keys])
         rows = [(attr, title, 1.0, ".4f") for attr, title in self._row_titles()]
         self._fill(self._table, rows, metrics.speeds)
 
     def _show_forces(self) -> None:
         self._fill(self._forces_table, self._force_rows(), self._model.dynamics_summary.speeds)
 
-    def _fill(self, table: QTableWidget, rows: list[tuple[str, str, float, str]], speeds) -> None:
-        """One column per crank speed, one row per value, numbers right-aligned.
-
-        Cells are created once and then only get new text: creating and announcing
-        QTableWidgetItems one by one was the slowest part of an edit (about 10 ms)."""
-        titles = [title for _, title, _, _ in rows]
+    def _fill(self, table: ResultTable, rows: list[tuple[str, str, float, str]], speeds) -> None:
+        """One column per crank speed, one row per value."""
         heads = [self.tr("%1 r/min").replace("%1", f"{s.rpm:g}") for s in speeds]
-        if table.rowCount() != len(rows) or table.columnCount() != len(speeds):
-            table.setRowCount(len(rows))
-            table.setColumnCount(len(speeds))
-        if [table.verticalHeaderItem(r) and table.verticalHeaderItem(r).text()
-                for r in range(len(rows))] != titles:
-            table.setVerticalHeaderLabels(titles)
-        if [table.horizontalHeaderItem(c) and table.horizontalHeaderItem(c).text()
-                for c in range(len(speeds))] != heads:
-            table.setHorizontalHeaderLabels(heads)
-        # New texts with the model's signals blocked, then one repaint: every single
-        # dataChanged would re-measure the header (rows keep their one-line height).
-        table.model().blockSignals(True)
-        try:
-            for col, speed in enumerate(speeds):
-                for row, (attr, _, scale, spec) in enumerate(rows):
-                    text = fmt(getattr(speed, attr) * scale, spec)
-                    item = table.item(row, col)
-                    if item is None:
-                        item = QTableWidgetItem(text)
-                        item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
-                        table.setItem(row, col, item)
-                    elif item.text() != text:
-                        item.setText(text)
-        finally:
-            table.model().blockSignals(False)
-        table.viewport().update()
-
-    def value_text(self, key: str) -> str:
-        """The text shown for one dimension or cycle value (for tests)."""
-        return self._values[key].text()
-
-    def table_text(self, row: int, column: int, forces: bool = False) -> str:
-        item = (self._forces_table if forces else self._table).item(row, column)
-        return item.text() if item else ""
+        cells = [[fmt(getattr(speed, attr) * scale, spec) for speed in speeds]
+                 for attr, _, scale, spec in rows]
+        table.set_content([title for _, title, _, _ in rows], heads, cells)

@@ -14,7 +14,7 @@ import math
 from PySide6.QtCore import QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import QFontMetricsF, QPainter, QPaintEvent
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QLabel, QLineEdit,
-                               QMessageBox, QPushButton, QSizePolicy, QWidget)
+                               QMessageBox, QSizePolicy, QStyle, QToolButton, QWidget)
 
 from core.dynamics import masses_for_design
 from core.polygons import KINDS, Polygon, polygons
@@ -29,7 +29,7 @@ class _Canvas(QWidget):
     def __init__(self, view: "PolygonView") -> None:
         super().__init__(view)
         self._view = view
-        self.setMinimumSize(320, 260)
+        self.setMinimumSize(240, 140)
         self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
         self.setAttribute(Qt.WidgetAttribute.WA_OpaquePaintEvent)
 
@@ -49,7 +49,6 @@ class PolygonView(QWidget):
         super().__init__(parent)
         self.model = model
         self._user_scale: dict[str, float | None] = {kind: None for kind in KINDS}
-        self._stale = True
         self.kind_box = QComboBox()
         self.speed_box = QComboBox()
         self.auto_box = QCheckBox()
@@ -58,10 +57,12 @@ class PolygonView(QWidget):
         self.scale_edit.setFixedWidth(int(QFontMetricsF(self.font()).horizontalAdvance('0.00025')) + 16)
         self.scale_label = QLabel()
         self.unit_label = QLabel()
-        self.export_button = QPushButton()
+        self.export_button = QToolButton()      # an icon: the pane beside the scheme is narrow
+        self.export_button.setIcon(self.style().standardIcon(QStyle.StandardPixmap.SP_DialogSaveButton))
         self.canvas = _Canvas(self)
-        bar_over_body(self, (self.kind_box, self.speed_box, self.scale_label, self.scale_edit,
-                             self.unit_label, self.auto_box), self.export_button, self.canvas)
+        self._stale = True
+        bar_over_body(self, (self.kind_box, self.speed_box), self.export_button, self.canvas,
+                      (self.scale_label, self.scale_edit, self.unit_label, self.auto_box))
         self.kind_box.currentIndexChanged.connect(self._on_kind)
         self.speed_box.currentIndexChanged.connect(lambda _: self._refresh())
         self.auto_box.toggled.connect(self._on_auto)
@@ -135,23 +136,26 @@ class PolygonView(QWidget):
         return QRectF(self.canvas.rect()).adjusted(10, 8, -10, -8)
 
     def _on_results(self) -> None:
-        self._fill_speeds()
-        self._refresh()
+        """New results: shown now if the view is visible, else when it is shown (the
+        automatic scale needs the polygon: no work for a closed or tabbed-away view)."""
+        self._stale = True
+        if self.isVisible():
+            self._catch_up()
 
-    def _refresh(self) -> None:
-        # A hidden view (another tab in front) only notes that it is stale: the
-        # polygons and the automatic scale are computed when it is shown.
-        if not self.isVisible():
-            self._stale = True
-            return
-        self._stale = False
-        self._show_scale()
-        self.canvas.update()
+    def _catch_up(self) -> None:
+        if self._stale:
+            self._stale = False
+            self._fill_speeds()
+            self._show_scale()
+            self.canvas.update()
 
     def showEvent(self, event) -> None:
         super().showEvent(event)
-        if self._stale:
-            self._refresh()
+        self._catch_up()
+
+    def _refresh(self) -> None:
+        self._show_scale()
+        self.canvas.update()
 
     def resizeEvent(self, event) -> None:
         super().resizeEvent(event)

@@ -36,6 +36,7 @@ class SchemeWidget(QWidget):
         self._model = model
         self._design = None
         self._geometry: Geometry | None = None
+        self._stale = self._angle_stale = True     # a hidden scheme (closed dock) waits
         self._plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
         self._plot.setAntialiasing(True)
         # one repaint of the rectangle around a frame's changes, not one per moved item
@@ -131,51 +132,62 @@ class SchemeWidget(QWidget):
         at its point of application except "cut", whose tip touches the tool point.
         Empty while the layer is hidden.
         """
+        self._catch_up()
         return self._forces.drawn()
 
     def force_labels(self) -> dict[str, str]:
         """The magnitude labels next to the drawn force arrows."""
+        self._catch_up()
         return self._forces.labels()
 
     def force_label_boxes(self) -> dict[str, Box]:
         """Where the magnitude labels are drawn on screen, (left, right, bottom, top) in mm."""
+        self._catch_up()
         return {name: self._screen_box(tag) for name, tag in self._forces.tags().items()}
 
     def force_caption(self) -> str:
         """The force layer's caption (speed and length scale); empty while hidden."""
+        self._catch_up()
         return self._forces.caption()
 
     def export_image(self, path: str) -> None:
         """Write the sketch as PNG (at least 1600 px wide), another raster type Qt writes,
         or SVG, chosen by the suffix. ValueError for an unknown type, OSError for a missing
         or unwritable folder; nothing is written then."""
+        self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         export_scene(self._plot.scene(), source, path, self.tr("Shaper mechanism"), WHITE)
 
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the sketch as shown into ``target`` of any QPainter (vector output)."""
+        self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         render_scene(self._plot.scene(), source, painter, target, WHITE)
 
     def drawn_joints(self) -> dict[str, tuple[float, float]]:
         """Joint positions as the pin markers show them now, mm (for checks and tests)."""
+        self._catch_up()
         return self._mechanism.joints()
 
     def drawn_link_ends(self) -> dict[str, tuple[float, float]]:
         """Where the far end of each moved link body lands now, mm (for checks and tests)."""
+        self._catch_up()
         return self._mechanism.link_ends(self._model)
 
     def ram_extent(self) -> tuple[float, float]:
         """x of the ram body's rear and front ends as drawn now, mm."""
+        self._catch_up()
         return self._mechanism.ram_extent()
 
     def dimension_labels(self) -> list[str]:
         """The texts of the dimension labels now drawn."""
+        self._catch_up()
         return self._dimensions.labels()
 
     def dimension_label_boxes(self) -> dict[str, Box]:
         """Where the dimension labels are drawn on screen, (left, right, bottom, top) in mm,
         by name ("L1" …)."""
+        self._catch_up()
         return {name: self._screen_box(item) for name, item in self._dimensions.texts().items()}
 
     def _screen_box(self, item) -> Box:
@@ -189,6 +201,7 @@ class SchemeWidget(QWidget):
 
     def tool_path(self) -> tuple[np.ndarray, np.ndarray]:
         """Vertices of the travelled part of the tool-tip trace as drawn now, mm."""
+        self._catch_up()
         return self._mechanism.tool_path()
 
     def plot_widget(self) -> pg.PlotWidget:
@@ -221,11 +234,29 @@ class SchemeWidget(QWidget):
             self._draw_forces(self._model.angle_index)
 
     # ---- model → layers ----------------------------------------------
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        self._catch_up()
+
+    def _catch_up(self) -> None:
+        """Bring a scheme that was hidden up to the model (also before any read-back)."""
+        if self._stale:
+            self._rebuild()
+        elif self._angle_stale:
+            self._move(self._model.angle_index)
+
     def _on_results(self) -> None:
+        """Rebuilt now if shown, else when shown: a closed dock does nothing per edit."""
+        self._stale = True
+        if self.isVisible() or self._geometry is None:
+            self._rebuild()
+
+    def _rebuild(self) -> None:
         """Rebuild every layer for the design; fit once per new design."""
+        self._stale = False
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
-        self._on_angle(self._model.angle_index)
+        self._move(self._model.angle_index)
         design = self._model.design
         if design != self._design:
             self._design = design
@@ -233,11 +264,21 @@ class SchemeWidget(QWidget):
 
     def _on_angle(self, index: int) -> None:
         """Only moves items (setPos/setRotation/setPath): no Python-side signal per frame."""
+        if not self.isVisible() and self._geometry is not None:
+            self._angle_stale = True
+            return
+        self._move(index)
+
+    def _move(self, index: int) -> None:
+        self._angle_stale = False
         if self._mechanism.show(index):
             self._draw_forces(index)
 
     def _on_forces(self) -> None:
         """Loads or the design changed: redrawn now if shown (rebuilt there), else when shown."""
+        if not self.isVisible():
+            self._angle_stale = True
+            return
         self._draw_forces(self._model.angle_index)
 
     def _apply_forces_visible(self, visible: bool) -> None:

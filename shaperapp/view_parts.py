@@ -21,14 +21,20 @@ def fill_speed_combo(combo: QComboBox, rpms: Sequence[float]) -> None:
     combo.blockSignals(False)
 
 
-def bar_over_body(owner: QWidget, left: Sequence[QWidget], right: QWidget, body: QWidget) -> None:
-    """Lay out ``owner``: a row of controls (``left`` …, stretch, ``right``) above ``body``."""
-    bar = QHBoxLayout()
-    for widget in left:
-        bar.addWidget(widget)
-    bar.addStretch(1)
-    bar.addWidget(right)
+def bar_over_body(owner: QWidget, left: Sequence[QWidget], right: QWidget, body: QWidget,
+                  second: Sequence[QWidget] = ()) -> None:
+    """Lay out ``owner``: a row of controls (``left`` …, stretch, ``right``) above ``body``;
+    ``second`` controls go in a second row, so that a narrow pane holds them all."""
     layout = QVBoxLayout(owner)
     layout.setContentsMargins(4, 4, 4, 4)
-    layout.addLayout(bar)
+    for widgets, end in ((left, right), (second, None)):
+        if not widgets:
+            continue
+        bar = QHBoxLayout()
+        for widget in widgets:
+            bar.addWidget(widget)
+        bar.addStretch(1)
+        if end is not None:
+            bar.addWidget(end)
+        layout.addLayout(bar)
     layout.addWidget(body, 1)

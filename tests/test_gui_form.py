@@ -31,7 +31,7 @@ def test_typing_k_updates_dimensions_and_metrics_after_debounce(setup, qtbot):
         type_into(qtbot, edit, "1.6")
     expected = synthesize(100, 1.6, 300)
     assert model.design == expected
-    assert metrics.value_text("frame") == f"{expected.frame:.2f} mm"
+    assert metrics.value_text("frame") == f"{expected.frame:.2f}"
     assert metrics.value_text("K") == "1.6000"
     assert form.marked_fields() == []
 

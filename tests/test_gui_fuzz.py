@@ -84,7 +84,7 @@ class Fuzzer:
 
     def type_load(self) -> None:
         name = self.rng.choice(LOAD_FIELDS)
-        edit = self.w.forces.loads.field(name)
+        edit = self.w.loads.field(name)
         text = random_text(self.rng, {"delta": 0.0333, "idle_percent": 5.0}.get(name, 50.0))
         edit.setText(text)
         edit.textEdited.emit(text)
@@ -96,7 +96,7 @@ class Fuzzer:
         if pick == 0:
             self.rng.choice((form._synth_radio, form._dims_radio)).click()
         elif pick == 1:
-            self.w.forces.loads.gravity_box().click()
+            self.w.loads.gravity_box().click()
         else:
             combo = form._combo(("variant", "guide_rule", "rod_input", "rod_side")[pick - 2])
             combo.setCurrentIndex(self.rng.randrange(combo.count()))

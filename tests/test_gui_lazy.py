@@ -25,7 +25,7 @@ def window(qtbot, tmp_path):
 
 
 def test_hidden_force_plots_wait_until_shown(window):
-    forces = window.forces.plots.stack()
+    forces = window.forces.stack()
     assert not forces.isVisible()                       # the Kinematics tab is in front
     window.model.set_spec(time_ratio=1.6)
     window.model.set_angle_index(77)
@@ -37,10 +37,10 @@ def test_hidden_force_plots_wait_until_shown(window):
     model = window.model
     dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms,
                          masses_for_design(model.design, model.masses))
-    shown = window.forces.plots.curve_data("torque")
+    shown = window.forces.curve_data("torque")
     for (_, y), want in zip(shown, dyn.crank_torque):
         np.testing.assert_allclose(y, want, rtol=1e-12, atol=1e-9)
-    assert window.forces.plots.cursor_value() == pytest.approx(np.degrees(model.motion.crank_angle[77]))
+    assert window.forces.cursor_value() == pytest.approx(np.degrees(model.motion.crank_angle[77]))
 
 
 def test_hidden_kinematics_plots_catch_up_too(window):
@@ -63,19 +63,17 @@ def test_read_back_of_a_hidden_view_is_never_stale(window):
     model = window.model
     dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms,
                          masses_for_design(model.design, model.masses))
-    (_, y), *_ = window.forces.plots.curve_data("power")
+    (_, y), *_ = window.forces.curve_data("power")
     np.testing.assert_allclose(y, dyn.power[0] / 1000.0, rtol=1e-12, atol=1e-12)
 
 
-# The Forces tab is left out here: beside the loads form it gets ~220 px of a 1366 px
-# window until the layout work moves the form to the inputs pane; the force plots' own
-# 16-speed check is in test_gui_plot_stack at a 520 px pane.
-@pytest.mark.parametrize("tab", [0])
+# Both plot tabs: the loads form now lives in the inputs pane, not beside the force plots.
+@pytest.mark.parametrize("tab", [0, 1])
 def test_sixteen_speeds_fit_the_window_at_1366x768(window, tab):
     window.model.set_rpms([20 + 5 * i for i in range(16)])
     window.tabs.setCurrentIndex(tab)
     QApplication.processEvents()
-    widget = window.plots if tab == 0 else window.forces.plots
+    widget = window.plots if tab == 0 else window.forces
     stack = widget.stack()
     graphics = stack._view
     last = "ram_a" if tab == 0 else "force"

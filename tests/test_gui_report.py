@@ -28,11 +28,13 @@ def window(qtbot, tmp_path):
 
 def test_window_has_the_deliverables(window, qtbot):
     texts = [window.tabs.tabText(i) for i in range(window.tabs.count())]
-    assert texts[2:4] == ["Positions", "Vector diagrams"]
+    assert texts[2] == "Positions"
+    assert window.docks["polygons"].windowTitle() == "Vector diagrams"    # a pane beside the scheme
+    assert window.docks.pane("polygons") is window.polygon_view
     assert window.act_report in window.menu_file.actions()
     window.set_language("zh_CN")
     qtbot.waitUntil(lambda: window.tabs.tabText(2) == "位置")
-    assert [window.tabs.tabText(i) for i in (2, 3)] == ["位置", "矢量多边形"]
+    assert window.docks["polygons"].windowTitle() == "矢量多边形"
     assert window.act_report.text().startswith("导出设计说明书")
 
 

@@ -153,7 +153,7 @@ def test_window_title_in_one_language(window):
 def test_error_text_in_one_font_weight(window):
     window.set_language("zh_CN")
     window.model.set_spec(time_ratio=0.5)
-    for label in (window.form._error_label, window.forces.loads._error_label):
+    for label in (window.form._error_label, window.loads._error_label):
         assert "font-weight" not in label.styleSheet() and "bold" not in label.styleSheet()
         assert label.font().weight() == QFont.Weight.Normal
 

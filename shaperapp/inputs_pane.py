@@ -1,0 +1,62 @@
+"""The inputs pane: the design form and the loads form as two tabs of one dock.
+
+Each form scrolls vertically inside its tab (never clipped, never wider than its
+fields). A tab whose inputs the model rejects carries a warning icon, so an
+error in the tab behind is not missed.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QEvent, Qt
+from PySide6.QtGui import QIcon
+from PySide6.QtWidgets import QFrame, QScrollArea, QStyle, QTabWidget, QWidget
+
+from .form import DesignForm
+from .loads_form import LoadsForm
+from .model import DesignModel
+
+
+def scrolled(widget: QWidget) -> QScrollArea:
+    """``widget`` in a frameless vertical scroll area exactly as wide as its fields need."""
+    area = QScrollArea()
+    area.setWidget(widget)
+    area.setWidgetResizable(True)
+    area.setFrameShape(QFrame.Shape.NoFrame)
+    area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+    area.setMinimumWidth(widget.minimumSizeHint().width() + area.verticalScrollBar().sizeHint().width() + 2)
+    return area
+
+
+class InputsPane(QTabWidget):
+    """Design (``form``) and Loads (``loads``) inputs."""
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._model = model
+        self.form = DesignForm(model)
+        self.loads = LoadsForm(model)
+        self.addTab(scrolled(self.form), "")
+        self.addTab(scrolled(self.loads), "")
+        self._warning = self.style().standardIcon(QStyle.StandardPixmap.SP_MessageBoxWarning)
+        model.errorChanged.connect(self._mark_errors)
+        model.forcesErrorChanged.connect(self._mark_errors)
+        self._retranslate()
+        self._mark_errors()
+
+    def show_loads(self) -> None:
+        self.setCurrentIndex(1)
+
+    def _mark_errors(self, *_) -> None:
+        for index, error in ((0, self._model.error), (1, self._model.forces_error)):
+            self.setTabIcon(index, self._warning if error is not None else QIcon())
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._retranslate()
+        super().changeEvent(event)
+
+    def _retranslate(self) -> None:
+        self.setTabText(0, self.tr("Design"))
+        self.setTabText(1, self.tr("Loads"))
+        self.setTabToolTip(0, self.tr("Dimensions or L1, K, H; mechanism; crank speeds"))
+        self.setTabToolTip(1, self.tr("Masses, cutting force and flywheel requirement (for the Forces tab "
+                                      "and the forces and flywheel results)"))

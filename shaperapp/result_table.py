@@ -1,0 +1,169 @@
+"""A read-only results table that never hides a row: the shared component of the results pane.
+
+Every row is always shown: the table's height is fixed to its header, its rows and, when
+the columns are wider than the pane, the horizontal scroll bar (which then scrolls the
+columns while the row titles stay). Columns share the spare width when they fit. Cells
+are selectable; Ctrl+C (or the right-click Copy) puts the selection, or the whole table,
+with its titles on the clipboard as tab-separated text, which pastes into a spreadsheet
+as cells.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+from PySide6.QtCore import QEvent, Qt
+from PySide6.QtGui import QAction, QFontMetrics, QGuiApplication, QKeyEvent, QKeySequence
+from PySide6.QtWidgets import (QAbstractItemView, QAbstractScrollArea, QHeaderView, QSizePolicy,
+                               QTableWidget, QTableWidgetItem, QWidget)
+
+CELL_PADDING = 16            # px beside a cell's text (margins of the item delegate and grid)
+RIGHT = Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter
+
+
+class ResultTable(QTableWidget):
+    """Row titles (quantity with unit) × column titles (a value, or one per crank speed)."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.setSelectionMode(QAbstractItemView.SelectionMode.ExtendedSelection)
+        self.setWordWrap(False)
+        self.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAsNeeded)
+        self.setHorizontalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
+        self.setSizeAdjustPolicy(QAbstractScrollArea.SizeAdjustPolicy.AdjustIgnored)
+        self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
+        rows = self.verticalHeader()
+        rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
+        rows.setDefaultSectionSize(QFontMetrics(self.font()).height() + 6)
+        rows.setDefaultAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
+        self.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
+        self.horizontalHeader().setStretchLastSection(False)
+        self.copy_action = QAction(self)
+        self.copy_action.triggered.connect(self.copy)
+        self.addAction(self.copy_action)
+        self.setContextMenuPolicy(Qt.ContextMenuPolicy.ActionsContextMenu)
+        self._retranslate()
+
+    # ---- content -------------------------------------------------------------
+    def set_content(self, rows: Sequence[str], columns: Sequence[str], cells: Sequence[Sequence[str]],
+                    tips: Sequence[str] | None = None) -> None:
+        """Show ``cells[row][column]`` under the given titles (``tips`` for the row titles).
+
+        Items are created once and then only get new text, with the model's signals
+        blocked and one repaint: announcing every cell re-measured the headers each time,
+        the slowest part of an edit."""
+        if self.rowCount() != len(rows) or self.columnCount() != len(columns):
+            self.setRowCount(len(rows))
+            self.setColumnCount(len(columns))
+        if self._titles(Qt.Orientation.Vertical) != list(rows):
+            self.setVerticalHeaderLabels(list(rows))
+        if self._titles(Qt.Orientation.Horizontal) != list(columns):
+            self.setHorizontalHeaderLabels(list(columns))
+        for row, tip in enumerate(tips or ()):
+            self.verticalHeaderItem(row).setToolTip(tip)
+        self.model().blockSignals(True)
+        try:
+            for row, texts in enumerate(cells):
+                for col, text in enumerate(texts):
+                    item = self.item(row, col)
+                    if item is None:
+                        item = QTableWidgetItem(text)
+                        item.setTextAlignment(RIGHT)
+                        self.setItem(row, col, item)
+                    elif item.text() != text:
+                        item.setText(text)
+        finally:
+            self.model().blockSignals(False)
+        self._fit()
+        self.viewport().update()
+
+    def text(self, row: int, column: int) -> str:
+        item = self.item(row, column)
+        return item.text() if item else ""
+
+    def _titles(self, orientation: Qt.Orientation) -> list[str]:
+        count = self.rowCount() if orientation == Qt.Orientation.Vertical else self.columnCount()
+        item = self.verticalHeaderItem if orientation == Qt.Orientation.Vertical else self.horizontalHeaderItem
+        return [item(i).text() if item(i) else "" for i in range(count)]
+
+    # ---- size: every row shown, columns scroll -------------------------------
+    def _fit(self) -> None:
+        """Columns as wide as their texts, sharing any spare width; height for every row."""
+        metrics = QFontMetrics(self.font())
+        head = QFontMetrics(self.horizontalHeader().font())
+        widths = []
+        for col in range(self.columnCount()):
+            title = self.horizontalHeaderItem(col)
+            width = head.horizontalAdvance(title.text() if title else "") + CELL_PADDING + 8
+            for row in range(self.rowCount()):
+                width = max(width, metrics.horizontalAdvance(self.text(row, col)) + CELL_PADDING)
+            widths.append(width)
+        room = self.viewport().width()
+        spare = room - sum(widths)
+        if widths and spare > 0:
+            widths = [w + spare // len(widths) for w in widths]
+            widths[-1] += spare - (spare // len(widths)) * len(widths)
+        header = self.horizontalHeader()
+        for col, width in enumerate(widths):
+            if header.sectionSize(col) != width:
+                header.resizeSection(col, width)
+        self._fit_height(sum(widths) > room)
+
+    def _fit_height(self, scrolls: bool) -> None:
+        height = (self.horizontalHeader().sizeHint().height() + self.verticalHeader().length()
+                  + 2 * self.frameWidth())
+        if scrolls:
+            height += self.horizontalScrollBar().sizeHint().height()
+        if self.height() != height or self.minimumHeight() != height:
+            self.setFixedHeight(height)
+
+    def resizeEvent(self, event) -> None:
+        super().resizeEvent(event)
+        if event.size().width() != event.oldSize().width():
+            self._fit()
+
+    def minimumSizeHint(self):
+        hint = super().minimumSizeHint()
+        first = self.horizontalHeader().sectionSize(0) if self.columnCount() else 0
+        hint.setWidth(self.verticalHeader().sizeHint().width() + min(first, 120) + 2 * self.frameWidth())
+        return hint
+
+    def hidden_rows(self) -> list[int]:
+        """Rows not wholly inside the table's own viewport (none, by construction)."""
+        height = self.viewport().height()
+        return [row for row in range(self.rowCount())
+                if self.rowViewportPosition(row) < 0
+                or self.rowViewportPosition(row) + self.rowHeight(row) > height]
+
+    # ---- copy ----------------------------------------------------------------
+    def tsv(self, selected_only: bool = True) -> str:
+        """The selected cells' rows and columns (or all) with their titles, tab-separated."""
+        indexes = self.selectedIndexes() if selected_only else []
+        rows = sorted({i.row() for i in indexes}) or list(range(self.rowCount()))
+        cols = sorted({i.column() for i in indexes}) or list(range(self.columnCount()))
+        heads = self._titles(Qt.Orientation.Horizontal)
+        titles = self._titles(Qt.Orientation.Vertical)
+        lines = ["\t".join([""] + [heads[c] for c in cols])]
+        lines += ["\t".join([titles[r]] + [self.text(r, c) for c in cols]) for r in rows]
+        return "\r\n".join(lines) + "\r\n"
+
+    def copy(self) -> None:
+        QGuiApplication.clipboard().setText(self.tsv())
+
+    def keyPressEvent(self, event: QKeyEvent) -> None:
+        if event.matches(QKeySequence.StandardKey.Copy):
+            self.copy()
+            event.accept()
+            return
+        super().keyPressEvent(event)
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._retranslate()
+        super().changeEvent(event)
+
+    def _retranslate(self) -> None:
+        self.copy_action.setText(self.tr("Copy"))
+        self.copy_action.setToolTip(self.tr("Copy the selected cells (or the whole table) with their "
+                                            "titles as tab-separated text"))

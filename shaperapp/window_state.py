@@ -1,0 +1,59 @@
+"""Where the window opens and how its layout is remembered.
+
+The window opens at a size that fits the screen it is on (``QScreen.availableGeometry``);
+a saved geometry is used only if it still fits that screen (a window saved on a large
+monitor does not open half off a laptop). The docks' and toolbar's arrangement is kept
+with ``saveState(STATE_VERSION)``: a state saved by an older layout (another version) is
+ignored and the default arrangement used instead.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QByteArray, QRect, QSettings, QSize
+from PySide6.QtWidgets import QMainWindow
+
+STATE_VERSION = 2           # 1: the splitter layout before the panes became docks
+PREFERRED = QSize(1760, 990)     # on a large screen: room for every pane at once
+MINIMUM = QSize(1280, 720)  # the window never needs more (tests check it, both languages)
+FRAME_ALLOWANCE = QSize(16, 48)   # a window manager's frame and title bar, roughly
+
+
+def available(window: QMainWindow) -> QRect:
+    """The usable part of the screen the window is (or will be) on."""
+    screen = window.screen()
+    return screen.availableGeometry() if screen is not None else QRect(0, 0, PREFERRED.width(),
+                                                                      PREFERRED.height())
+
+
+def opening_size(window: QMainWindow) -> QSize:
+    """The preferred size, shrunk to the screen less a window frame."""
+    room = available(window).size() - FRAME_ALLOWANCE
+    return PREFERRED.boundedTo(room).expandedTo(window.minimumSizeHint().boundedTo(room))
+
+
+def fits(window: QMainWindow) -> bool:
+    return available(window).contains(window.frameGeometry())
+
+
+def restore(window: QMainWindow, settings: QSettings, arrange) -> bool:
+    """Saved geometry if it fits the screen, else the opening size centred; the saved dock
+    state if it is of this version, else ``arrange(size)``, the default arrangement.
+    True when a saved dock state was restored."""
+    geometry = settings.value("geometry")
+    restored = isinstance(geometry, QByteArray) and not geometry.isEmpty() and window.restoreGeometry(geometry)
+    if not restored or not fits(window):
+        size = opening_size(window)
+        window.resize(size)
+        frame = QRect(window.frameGeometry().topLeft(), size)
+        frame.moveCenter(available(window).center())
+        window.move(frame.topLeft())
+    arrange(window.size())
+    state = settings.value("windowState")
+    if isinstance(state, QByteArray) and not state.isEmpty():
+        # False, and nothing changed, for a state of another version.
+        return window.restoreState(state, STATE_VERSION)
+    return False
+
+
+def save(window: QMainWindow, settings: QSettings) -> None:
+    settings.setValue("geometry", window.saveGeometry())
+    settings.setValue("windowState", window.saveState(STATE_VERSION))

@@ -1,0 +1,288 @@
+"""The window fits a laptop, shows every result, and its panes can be moved and come back
+(issue 8, item 1).
+
+Fit tests run the real window in a subprocess on an offscreen screen of the size under
+test (the screen is fixed when Qt starts): ``tests/layout_probe.py`` reports the frame,
+the minimum size and, for every result table, which rows are clipped or unreachable.
+"""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import QByteArray, QSettings, Qt
+from PySide6.QtGui import QGuiApplication
+from PySide6.QtWidgets import QApplication, QDockWidget
+
+from shaperapp import i18n
+from shaperapp.main_window import MainWindow
+from shaperapp.model import DesignModel
+from shaperapp.window_state import STATE_VERSION
+
+PROBE = Path(__file__).with_name("layout_probe.py")
+SIXTEEN = ",".join(str(20 + 5 * i) for i in range(16))
+SPEED_ROWS, FORCE_ROWS = 9, 7
+
+
+def probe(tmp_path: Path, width: int, height: int, *args: str, settings: str = "s.ini") -> dict:
+    screen = tmp_path / f"screen-{width}x{height}.json"
+    screen.write_text(json.dumps({"screens": [{"name": "probe", "x": 0, "y": 0, "width": width,
+                                               "height": height, "logicalDpi": 96,
+                                               "logicalBaseDpi": 96, "dpr": 1}]}))
+    env = dict(os.environ, QT_QPA_PLATFORM=f"offscreen:configfile={screen}",
+               XDG_CONFIG_HOME=str(tmp_path))
+    out = subprocess.run([sys.executable, str(PROBE), "--settings", str(tmp_path / settings), *args],
+                         capture_output=True, text=True, env=env, timeout=180)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def inside(outer: list[int], inner: list[int]) -> bool:
+    ox, oy, ow, oh = outer
+    x, y, w, h = inner
+    return ox <= x and oy <= y and x + w <= ox + ow and y + h <= oy + oh
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+def test_window_and_every_result_table_fit(tmp_path, width, height, lang):
+    report = probe(tmp_path, width, height, "--lang", lang, "--speeds", "40,60", "--speeds", SIXTEEN)
+    assert report["screen"] == [0, 0, width, height]
+    for case in report["cases"]:
+        assert inside(report["screen"], case["frame"]), case["frame"]
+        assert case["minimum"][0] <= 1280 and case["minimum"][1] <= 720, case["minimum"]
+        assert case["results_visible"]
+        dims, cycle, speeds, forces = case["tables"]
+        assert (dims["rows"], cycle["rows"], speeds["rows"], forces["rows"]) == (8, 5, SPEED_ROWS, FORCE_ROWS)
+        assert speeds["columns"] == forces["columns"] == case["speeds"]
+        for table in case["tables"]:
+            assert table["hidden_rows"] == [], table["titles"]            # no row clipped in its table
+            assert table["unreachable_rows"] == [], table["titles"]       # the pane scrolls to each
+            assert table["last_column_reachable"], table["titles"]
+            if table["needs_h_scroll"]:
+                assert table["h_scroll_visible"], table["titles"]       # scrolls visibly
+        if case["speeds"] == 16:            # 16 speeds never fit a side pane: they scroll
+            assert speeds["needs_h_scroll"] and speeds["h_scroll_visible"]
+        if lang == "zh_CN":
+            assert any("，mm" in t for t in dims["titles"])                # translated titles
+        else:
+            assert "Frame O2O4 L2, mm" in dims["titles"]
+
+
+def test_saved_geometry_only_if_it_fits_the_screen(tmp_path):
+    big = probe(tmp_path, 1920, 1080, "--resize", "1700x1000")
+    assert big["resized"] == [1700, 1000]
+    again = probe(tmp_path, 1920, 1080, "--speeds", "40,60")
+    assert again["cases"][0]["size"] == [1700, 1000]             # restored
+    laptop = probe(tmp_path, 1366, 768, "--speeds", "40,60")
+    case = laptop["cases"][0]
+    assert inside(laptop["screen"], case["frame"])                # not restored: it would not fit
+
+
+# ---- in-process: docks, state, toolbar ------------------------------------------------
+@pytest.fixture
+def window(qtbot, tmp_path):
+    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
+    win = MainWindow(DesignModel(), settings)
+    win.show()
+    qtbot.waitExposed(win)
+    QApplication.processEvents()
+    yield win
+    win.model.set_clean(win.model.path)
+    win.close()
+    win.deleteLater()
+    i18n.set_language("en")
+
+
+def test_every_pane_is_a_dock_with_a_view_menu_entry(window):
+    names = {"inputs": window.inputs, "results": window.metrics, "mechanism": window.scheme,
+             "polygons": window.polygon_view, "library": window.library}
+    view_actions = window.menus.panes.actions()
+    for name, pane in names.items():
+        dock = window.docks[name]
+        assert isinstance(dock, QDockWidget) and dock.objectName() == f"{name}Dock"
+        shown = window.docks.pane(name)
+        assert shown is pane or shown.widget() is pane       # the results pane scrolls
+        assert dock.toggleViewAction() in view_actions
+    # inputs pane: the design form and the loads form
+    assert window.inputs.indexOf(window.form.parentWidget().parentWidget()) == 0
+    assert window.inputs.indexOf(window.loads.parentWidget().parentWidget()) == 1
+    assert window.act_reset_layout in window.menus.view.actions()
+    # the central tabs no longer hold the loads form or the polygons
+    assert window.tabs.indexOf(window.forces) == 1 and window.tabs.indexOf(window.polygon_view) == -1
+
+
+def test_hide_and_show_a_pane_from_the_view_menu(window):
+    action = window.docks["results"].toggleViewAction()
+    action.trigger()
+    assert not window.docks["results"].isVisible()
+    action.trigger()
+    assert window.docks["results"].isVisible()
+
+
+def test_reset_layout_brings_every_pane_back(window):
+    window.docks["inputs"].hide()
+    window.docks["mechanism"].setFloating(True)
+    window.removeDockWidget(window.docks["results"])
+    window.act_reset_layout.trigger()
+    QApplication.processEvents()
+    for name, dock in window.docks.docks.items():
+        assert not dock.isFloating()
+        assert dock.isVisible() == (name != "library"), name
+        assert window.dockWidgetArea(dock) != Qt.DockWidgetArea.NoDockWidgetArea
+    assert window.dockWidgetArea(window.docks["inputs"]) == Qt.DockWidgetArea.LeftDockWidgetArea
+    assert window.dockWidgetArea(window.docks["mechanism"]) == Qt.DockWidgetArea.RightDockWidgetArea
+
+
+def test_dock_state_round_trip(window, qtbot):
+    window.docks["polygons"].raise_()                      # tabbed with the results (laptop layout)
+    window.docks["library"].show()
+    window.docks["inputs"].hide()
+    window.removeDockWidget(window.docks["mechanism"])
+    window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, window.docks["mechanism"])
+    window.docks["mechanism"].show()
+    QApplication.processEvents()
+    window.close()
+    window.settings.sync()
+    again = MainWindow(DesignModel(), window.settings)
+    again.show()
+    qtbot.waitExposed(again)
+    QApplication.processEvents()
+    try:
+        assert not again.docks["inputs"].isVisible()
+        assert again.docks["library"].isVisible()
+        assert again.polygon_view.isVisible() and not again.metrics.isVisible()
+        assert again.dockWidgetArea(again.docks["mechanism"]) == Qt.DockWidgetArea.LeftDockWidgetArea
+        # (the size comes back only where it fits the screen: test_saved_geometry_only_if_it_fits)
+    finally:
+        again.close()
+        again.deleteLater()
+
+
+def test_a_state_of_another_version_is_ignored(qtbot, tmp_path):
+    settings = QSettings(str(tmp_path / "old.ini"), QSettings.Format.IniFormat)
+    first = MainWindow(DesignModel(), settings)
+    first.docks["inputs"].hide()
+    first.docks["library"].show()
+    old = first.saveState(STATE_VERSION - 1)                 # as an older layout saved it
+    first.deleteLater()
+    settings.setValue("windowState", old)
+    settings.setValue("geometry", QByteArray(b"garbage"))
+    win = MainWindow(DesignModel(), settings)
+    win.show()
+    qtbot.waitExposed(win)
+    try:
+        assert win.docks["inputs"].isVisible() and not win.docks["library"].isVisible()
+    finally:
+        win.close()
+        win.deleteLater()
+
+
+def test_toolbar_has_the_main_actions_with_icons_and_tips(window, qtbot):
+    bar = window.menus.toolbar
+    shown = bar.actions()
+    for action in (window.act_new, window.act_open, window.act_save, window.act_undo, window.act_redo,
+                   window.act_report, window.act_play, window.act_back, window.act_step, window.act_fit,
+                   window.act_fit_plots):
+        assert action in shown
+        assert not action.icon().isNull()
+        assert action.toolTip()
+    assert "Ctrl+S" in window.act_save.toolTip()
+    window.set_language("zh_CN")
+    qtbot.wait(10)
+    assert "保存" in window.act_save.toolTip()
+    assert bar.windowTitle() != "Main toolbar"
+
+
+def test_toolbar_actions_work(window, qtbot):
+    model = window.model
+    model.set_spec(time_ratio=1.6)
+    window.act_undo.trigger()
+    assert model.spec.time_ratio == pytest.approx(1.4)
+    window.act_redo.trigger()
+    assert model.spec.time_ratio == pytest.approx(1.6)
+    window.act_play.trigger()
+    assert window.animation.is_playing()
+    qtbot.waitUntil(lambda: model.angle_index > 0, timeout=3000)
+    window.act_play.trigger()
+    assert not window.animation.is_playing()
+    stack = window.plots.stack()
+    plot = window.plots.plot_item("ram_v")
+    plot.vb.setXRange(100, 120, padding=0)
+    window.act_fit_plots.trigger()
+    low, high = plot.vb.viewRange()[0]
+    assert low <= 0.5 and high >= 359.0
+    window.tabs.setCurrentWidget(window.positions)
+    assert not window.act_fit_plots.isEnabled()
+    assert stack.is_current()
+
+
+def test_loads_tab_warns_of_an_invalid_load(window):
+    assert window.inputs.tabIcon(1).isNull()
+    window.model.set_masses(ram_mass_kg=-1.0)
+    assert window.model.forces_error is not None
+    assert not window.inputs.tabIcon(1).isNull()
+    assert window.inputs.tabIcon(0).isNull()
+
+
+# ---- hidden panes wait (issue 8, item 8) -------------------------------------------------
+def test_a_hidden_results_pane_waits_until_shown(window):
+    window.docks["results"].hide()
+    k_table = window.metrics.tables()[1]
+    shown = k_table.text(0, 0)
+    window.model.set_spec(time_ratio=1.6)
+    assert k_table.text(0, 0) == shown                     # nothing redrawn behind a closed dock
+    window.docks["results"].show()
+    QApplication.processEvents()
+    assert k_table.text(0, 0) == "1.6000"
+
+
+def test_hidden_scheme_and_polygons_do_no_work_per_edit(window, monkeypatch):
+    import shaperapp.polygon_view as polygon_view
+    calls = {"scheme": 0, "polygons": 0}
+    rebuild = window.scheme._mechanism.rebuild
+    compute = polygon_view.polygons
+
+    def counted_rebuild(*a, **k):
+        calls["scheme"] += 1
+        return rebuild(*a, **k)
+
+    def counted_polygons(*a, **k):
+        calls["polygons"] += 1
+        return compute(*a, **k)
+
+    monkeypatch.setattr(window.scheme._mechanism, "rebuild", counted_rebuild)
+    monkeypatch.setattr(polygon_view, "polygons", counted_polygons)
+    window.docks["mechanism"].hide()
+    window.docks["polygons"].hide()
+    QApplication.processEvents()
+    for k in (1.5, 1.6, 1.7):
+        window.model.set_spec(time_ratio=k)
+        window.model.set_angle_index(10)
+        QApplication.processEvents()
+    assert calls == {"scheme": 0, "polygons": 0}
+    window.docks["mechanism"].show()
+    window.docks["polygons"].show()
+    window.docks["polygons"].raise_()
+    QApplication.processEvents()
+    assert calls["scheme"] == 1 and calls["polygons"] >= 1
+    joints = window.scheme.drawn_joints()
+    assert joints["A"] == pytest.approx(tuple(window.model.motion.shape.crank_pin[:, 10]))
+
+
+def test_result_tables_copy_with_titles(window):
+    table = window.metrics.tables()[2]                      # per crank speed
+    table.setCurrentCell(0, 1)
+    table.copy()
+    text = QGuiApplication.clipboard().text()
+    lines = text.strip("\r\n").split("\r\n")
+    assert lines[0] == "\t60 r/min"
+    assert lines[1] == f"Cycle time, s\t{window.model.metrics.speeds[1].cycle_time_s:.4f}"
+    table.clearSelection()
+    table.copy()
+    lines = QGuiApplication.clipboard().text().strip("\r\n").split("\r\n")
+    assert len(lines) == 1 + SPEED_ROWS and lines[0] == "\t40 r/min\t60 r/min"
