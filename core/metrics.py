@@ -282,15 +282,6 @@ def lever_peaks(ratio: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return lam / (1.0 - lam), lam * (1.0 - lam ** 2) * np.sqrt(1.0 - u ** 2) / q ** 2
 
 
-def limit_angles(design: Design) -> tuple[float, float]:
-    """Crank angles (rad, in [0, 2π)) where the ram is at its two dead points:
-    (start of the working stroke, end of the working stroke)."""
-    peaks = cycle_peaks(Designs.of(design))
-    if not np.isfinite(peaks.work_start[0]):
-        raise RuntimeError("the ram does not have exactly two dead points")
-    return float(peaks.work_start[0]), float(peaks.work_end[0])
-
-
 def speed_figures(peaks: CyclePeaks, omega: np.ndarray) -> dict[str, np.ndarray]:
     """Per-speed figures of many designs: arrays of shape designs + (speeds,), SI units."""
     w = np.asarray(omega, dtype=float)

@@ -10,9 +10,8 @@ from __future__ import annotations
 
 
 import pyqtgraph as pg
-from PySide6.QtCore import QBuffer, QByteArray, QEvent, QIODevice, QPoint, QRectF, QSize, Qt, Signal
-from PySide6.QtGui import QBrush, QColor, QFont, QImage, QPainter
-from PySide6.QtSvg import QSvgGenerator
+from PySide6.QtCore import QEvent, QPoint, QRectF, QSize, QSizeF, Qt, Signal
+from PySide6.QtGui import QBrush, QColor, QFont, QPainter
 from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QHBoxLayout, QLabel, QListWidget,
                                QMessageBox, QPushButton, QSplitter, QTableWidget, QTableWidgetItem,
                                QVBoxLayout, QWidget)
@@ -25,13 +24,14 @@ from core.library import file_stem, unique_name
 from .figure_labels import figure_label, figure_tip, format_figure
 from .messages import describe
 from .model import DesignModel
-from .image_export import image_type
+from .image_export import export_painting, render_scene
 from .plot_axes import cache_axes, styled_plot_item
 
 # Okabe–Ito colours (distinguishable with colour-blindness) and six line styles
 COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
 STYLES = (Qt.PenStyle.SolidLine, Qt.PenStyle.DashLine, Qt.PenStyle.DotLine, Qt.PenStyle.DashDotLine,
           Qt.PenStyle.DashDotDotLine, Qt.PenStyle.CustomDashLine)
+WHITE = QColor("white")
 BEST_BRUSH = QBrush(QColor(200, 235, 200))
 CURVES = ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
 
@@ -249,7 +249,6 @@ class CompareView(QWidget):
     def export_image(self, path: str) -> None:
         """Curves and the whole table as one picture: SVG for ``.svg``, else a raster type
         by suffix (``image_export.image_type`` refuses anything else, naming the path)."""
-        kind = image_type(path)
         table = self.table
         table_size = QSize(table.verticalHeader().width() + table.horizontalHeader().length() + 4,
                            table.horizontalHeader().height() + table.verticalHeader().length() + 4)
@@ -257,43 +256,27 @@ class CompareView(QWidget):
         title_h = 28
         width = max(plots_size.width(), table_size.width())
         height = title_h + plots_size.height() + table_size.height()
-        data = QByteArray()
-        buffer = QBuffer(data)
-        buffer.open(QIODevice.OpenModeFlag.WriteOnly)
-        if kind == "svg":
-            device = QSvgGenerator()
-            device.setOutputDevice(buffer)
-            device.setSize(QSize(width, height))
-            device.setViewBox(QRectF(0, 0, width, height))
-            device.setTitle(self.tr("Design comparison"))
-        else:
-            device = QImage(width * 2, height * 2, QImage.Format.Format_ARGB32)
-            device.setDevicePixelRatio(2.0)
-            device.fill(QColor("white"))
+        items = list(self._items.values())
+
+        def paint(painter: QPainter, page: QRectF) -> None:
+            painter.setPen(QColor("black"))
+            painter.drawText(QRectF(8, 0, page.width() - 16, title_h), Qt.AlignmentFlag.AlignVCenter,
+                             self.title())
+            render_scene(self.plots.scene(), self.plots.ci.sceneBoundingRect(), painter,
+                         QRectF(0, title_h, plots_size.width(), plots_size.height()), WHITE,
+                         lambda exporting: cache_axes(items, not exporting))
+            table.render(painter, QPoint(0, title_h + plots_size.height()))
+
         old_size = table.size()
         for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
             bar(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         table.resize(table_size)               # the whole table, not the part scrolled into view
-        painter = QPainter(device)
-        cache_axes(list(self._items.values()), False)     # cached axis pixmaps would blur when scaled
         try:
-            painter.setRenderHint(QPainter.RenderHint.Antialiasing)
-            painter.fillRect(QRectF(0, 0, width, height), QColor("white"))
-            painter.setPen(QColor("black"))
-            painter.drawText(QRectF(8, 0, width - 16, title_h), Qt.AlignmentFlag.AlignVCenter, self.title())
-            self.plots.scene().render(painter, QRectF(0, title_h, plots_size.width(), plots_size.height()),
-                                      self.plots.ci.sceneBoundingRect())
-            table.render(painter, QPoint(0, title_h + plots_size.height()))
+            export_painting(path, QSizeF(width, height), paint, self.tr("Design comparison"), WHITE)
         finally:
-            painter.end()
             table.resize(old_size)
             for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
                 bar(Qt.ScrollBarPolicy.ScrollBarAsNeeded)
-            cache_axes(list(self._items.values()), True)
-        if isinstance(device, QImage) and not device.save(buffer, kind.upper()):
-            raise OSError(0, self.tr("the file could not be written"))
-        buffer.close()
-        atomic_write(path, bytes(data))
 
     def title(self) -> str:
         """One line saying what is compared, for exported pictures."""

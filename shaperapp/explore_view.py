@@ -14,6 +14,7 @@ from dataclasses import replace
 
 import numpy as np
 from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout, QGroupBox,
                                QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
                                QVBoxLayout, QWidget)
@@ -21,6 +22,7 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout
 from core.sweep import default_range, design_value, spec_changes, varied_parameters
 from .explore_jobs import FIGURES, JobRunner, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
+from .image_export import export_scene
 from .messages import describe
 from .model import DesignModel
 
@@ -371,17 +373,11 @@ class ExploreView(QWidget):
             self._refresh_timer.start()      # the fixed parameters changed: the map is stale
 
     def export_image(self, path: str) -> None:
-        """Write the heat map to ``path``: SVG for ``.svg``, else a raster image."""
-        from pyqtgraph.exporters import ImageExporter, SVGExporter
-
+        """Write the heat map with its colour bar to ``path``: SVG for ``.svg``, else a raster
+        image (errors as ``image_export.export_scene``'s; written atomically)."""
         item = self.map.getPlotItem()
-        if path.lower().endswith(".svg"):
-            SVGExporter(item).export(path)
-            return
-        exporter = ImageExporter(item)
-        exporter.parameters()["width"] = max(1200, int(item.width()))
-        if exporter.export(path) is False:
-            raise OSError(0, self.tr("the image could not be written"), path)
+        export_scene(item.scene(), item.sceneBoundingRect(), path, self.tr("Design-space map"),
+                     QColor("white"))
 
     def shutdown(self) -> None:
         """Stop any work and wait for it (the window is closing)."""

@@ -5,25 +5,8 @@ import shutil
 import stat
 import subprocess
 
-import pytest
-from PySide6.QtCore import QSettings
 
-from shaperapp import i18n
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
-
-
-@pytest.fixture
-def window(qtbot, tmp_path):
-    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
-    win = MainWindow(DesignModel(), settings)
-    win.show()
-    yield win
-    win.model.set_clean(win.model.path)
-    win.close()
-    win.deleteLater()
-    i18n.set_language("en")
 
 
 def test_window_has_the_deliverables(window, qtbot):
