@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from PySide6.QtCore import QEvent, Qt
+from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import QComboBox, QLabel, QVBoxLayout, QWidget
 
@@ -196,11 +196,6 @@ class ForcePlots(StackView):
         self._stack.invalidate()
 
     # ---- text ----------------------------------------------------------
-    def changeEvent(self, event: QEvent) -> None:
-        if event.type() == QEvent.Type.LanguageChange:
-            self._retranslate()
-        super().changeEvent(event)
-
     def _retranslate_names(self) -> None:
         # Full names for the read-out; axis titles short enough for a plot ~120 px tall.
         self._names = {"torque": self.tr("Crank driving torque"), "power": self.tr("Input power"),

@@ -12,7 +12,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from PySide6.QtCore import QEvent
 from PySide6.QtGui import QAction, QColor, Qt
 from PySide6.QtWidgets import QComboBox, QLabel, QMenu, QToolButton, QVBoxLayout, QWidget
 
@@ -212,11 +211,6 @@ class PlotsWidget(StackView):
         self._model.set_angle_deg(x)
 
     # ---- text ----------------------------------------------------------
-    def changeEvent(self, event: QEvent) -> None:
-        if event.type() == QEvent.Type.LanguageChange:
-            self._retranslate()
-        super().changeEvent(event)
-
     def _retranslate_names(self) -> None:
         # Full names for the menu and the read-out; axis titles short enough to stand
         # beside a plot about 100 px tall.

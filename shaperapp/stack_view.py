@@ -7,7 +7,7 @@ image export and vector rendering are the same for both, so they live here once.
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QRectF
+from PySide6.QtCore import QCoreApplication, QEvent, QRectF
 from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QWidget
 
@@ -18,6 +18,14 @@ class StackView(QWidget):
     """A view drawn by one PlotStack, which the subclass creates as ``self._stack``."""
 
     _stack: PlotStack
+
+    def _retranslate(self) -> None:
+        """Set every text again (the subclass's), on a language change."""
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._retranslate()
+        super().changeEvent(event)
 
     def stack(self) -> PlotStack:
         return self._stack

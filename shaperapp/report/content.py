@@ -3,22 +3,24 @@
 Every number comes from ``core``, and the figures the ``shaper`` CLI prints come
 as the CLI's own rows (``synth``, ``analyze`` and ``dynamics`` ``*_rows`` and
 ``table``'s ``number_text``) under translated labels, so the report and the CLI
-cannot drift apart (tested through the PDF text layer). Figures are drawn by the app's own views
-(``figures``) and the polygon painter, never by drawing code of their own.
+cannot drift apart (tested through the PDF text layer). Figures are drawn by the
+app's own views (``figures``) and the polygon painter, never by drawing code of
+their own. The blocks are defined in ``blocks``; the comparison section is
+``comparison``.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Callable, Sequence
+from dataclasses import dataclass
+from typing import Sequence
 
-from PySide6.QtCore import QCoreApplication, QRectF
-from PySide6.QtGui import QPainter
+from PySide6.QtCore import QCoreApplication
 
 from core.cli.cmd_analyze import cycle_rows
 from core.cli.cmd_analyze import speed_rows as analyze_speed_rows
 from core.cli.cmd_dynamics import speed_rows as dynamics_speed_rows
 from core.cli.cmd_dynamics import summary_rows
 from core.cli.cmd_synth import dimension_rows
+from core.compare import Candidate
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design, summarize
 from core.geometry import Design
 from core.margins import margins
@@ -27,52 +29,10 @@ from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
 from ..column_titles import column_titles, group_titles, special_titles
 from . import figures
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .comparison import comparison_blocks, report_comparison
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
-Paint = Callable[[QPainter, QRectF, float], None]     # painter, rect (device), device units per mm
-
-
-@dataclass
-class Heading:
-    text: str
-    level: int = 1
-
-
-@dataclass
-class Paragraph:
-    html: str
-    keep_with_next: bool = False      # an introduction stays on the page of what it introduces
-
-
-@dataclass
-class KeyValues:
-    rows: list[tuple[str, str]]
-
-
-@dataclass
-class Table:
-    header: list[str]
-    rows: list[list[str]]
-    caption: str = ""
-    shaded: list[bool] = field(default_factory=list)
-    left_columns: int = 1
-
-
-@dataclass
-class Figure:
-    caption: str
-    width_mm: float
-    height_mm: float
-    paint: Paint
-
-
-@dataclass
-class Report:
-    title: str
-    name: str
-    date: str
-    language: str
-    blocks: list = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -81,6 +41,7 @@ class Options:
 
     count: int = 12
     diagram_deg: tuple[float, float] | None = None    # None: one in the working, one in the return stroke
+    compare: tuple[Candidate, ...] = ()               # other designs for a comparison section
 
 
 def default_diagram_angles(table: PositionTable, metrics: CycleMetrics) -> tuple[float, float]:
@@ -148,6 +109,9 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                                     "with loads) to include it.")))
         add(Heading(translate("Report", "8 Conventions and formulas")))
         report.blocks.extend(_conventions())
+        if options.compare:
+            result = report_comparison(spec, masses, name, options.compare, rpms[0])
+            report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
     finally:
         views.close()
     return report
