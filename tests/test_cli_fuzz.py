@@ -34,15 +34,16 @@ ROD_FILE = os.path.join(FOLDER, "rod.json")
 save_design(GOOD_FILE, Spec(), [40.0, 60.0], 2.0)
 save_design(ROD_FILE, Spec(mode="dimensions", crank=120, frame=300, lever=600, variant="rod",
                            rod_input="ratio", rod_ratio=0.35), [30.0], 3.0)
-with open(os.path.join(FOLDER, "bad.json"), "w") as handle:
+BAD_FILE = os.path.join(FOLDER, "bad.json")
+with open(BAD_FILE, "w") as handle:
     handle.write('{"format": "shaper-design", "version": 1, "spec": {"crank": "x"}}')
 
 
 def _options() -> dict[str, dict[str, object]]:
     """Each computing subcommand's options: option string → its argparse action.
 
-    ``library`` has actions of its own and keeps a database; its command line is
-    tested in test_cli_library.py instead."""
+    ``library`` has actions of its own and keeps a database; test_cli_fuzz_library.py
+    fuzzes it."""
     parser = build_parser()
     sub = next(a for a in parser._actions if a.dest == "command")
     options = {}

@@ -11,6 +11,7 @@ import argparse
 import json
 import os
 import sys
+from pathlib import Path
 from typing import Any, Sequence
 
 from ..compare import (Candidate, compare, comparison_json, curves_csv, difference_text,
@@ -23,7 +24,7 @@ from ..library import Entry, Library, file_stem, unique_name
 from ..library_files import export_entries, import_entries, read_design_files
 from ..library_query import QueryError, parse_filter, sort_sql
 from ..library_store import ENV_VAR, LibraryError, backup_copy, resolve_path
-from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
+from .common import (LOAD_OPTIONS, OutputError, Parser, UsageError, add_design_options, add_load_options,
                      add_speed_options, design_file, fail, masses_from_args, number, print_json,
                      rpms_from_args, spec_from_args, write_output)
 
@@ -161,8 +162,16 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
     return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
 
 
+def library_path(library: str | None) -> Path:
+    """The library ``--library`` names (see ``resolve_path``); an empty one is refused
+    rather than taken for the default library."""
+    if library is not None and not library.strip():
+        raise UsageError("--library: the path is empty")
+    return resolve_path(library)
+
+
 def _open(args: argparse.Namespace, create: bool = True) -> Library:
-    return Library(resolve_path(args.library), create=create)
+    return Library(library_path(args.library), create=create)
 
 
 def _run_add(args: argparse.Namespace) -> int:
@@ -192,7 +201,7 @@ def _run_list(args: argparse.Namespace) -> int:
     except QueryError as exc:
         raise UsageError(f"--sort: {exc}") from None
     parse_filter(args.where)                # a bad filter is reported even for an empty library
-    path = resolve_path(args.library)
+    path = library_path(args.library)
     if not path.exists():                   # listing never creates a library
         print("[]" if args.json else f"no designs in {path} (it does not exist yet)")
         return 0
@@ -262,6 +271,8 @@ def _run_rename(args: argparse.Namespace) -> int:
 def _run_export(args: argparse.Namespace) -> int:
     if args.all == (args.name is not None):
         raise UsageError("NAME: give one entry name, or --all with a folder")
+    if not args.output.strip():
+        raise UsageError("-o: the path is empty")
     with _open(args, create=False) as lib:
         try:
             if args.all:
@@ -271,7 +282,7 @@ def _run_export(args: argparse.Namespace) -> int:
             else:
                 lib.export(args.name, args.output)
         except OSError as exc:
-            return fail(f"-o: cannot write {args.output}: {exc.strerror or exc}", status=1)
+            raise OutputError(f"-o: cannot write {args.output}: {exc.strerror or exc}") from None
     return 0
 
 
@@ -300,7 +311,7 @@ def load_candidates(library: str | None, names: Sequence[str], files: Sequence[s
     candidates: list[Candidate] = []
     first_rpm = None
     if names:
-        with Library(resolve_path(library), create=False) as lib:
+        with Library(library_path(library), create=False) as lib:
             for name in names:
                 doc = lib.load(name)
                 first_rpm = first_rpm or doc["rpm"][0]
@@ -355,16 +366,32 @@ def _print_comparison(result) -> None:
 
 
 def _run_backup(args: argparse.Namespace) -> int:
-    path = resolve_path(args.library)
+    path = library_path(args.library)
     if not path.exists():
         raise LibraryError("missing", f"there is no design library at {path}", path)
+    if args.output is not None:
+        out = Path(args.output)
+        if not args.output.strip() or out.is_dir():
+            raise UsageError(f"--output: {args.output!r} is not a file name" if not args.output.strip()
+                             else f"--output: {out} is a folder; name the copy's file")
+        if not (out.parent if str(out.parent) else Path(".")).is_dir():
+            raise UsageError(f"--output: cannot write {out}: the folder {out.parent} does not exist")
     try:
-        with Library(path, create=False) as lib:
-            target = lib.backup(args.output)
+        lib: Library | None = Library(path, create=False)
     except LibraryError as exc:
         if not exc.refused_file:
             raise
-        target = backup_copy(path, args.output)     # a refused file: copied byte for byte
+        lib = None                                   # a refused file: copied byte for byte
+    try:
+        if lib is None:
+            target = backup_copy(path, args.output)
+        else:
+            with lib:
+                target = lib.backup(args.output)
+    except LibraryError as exc:                      # writing the copy failed
+        if args.output is None:
+            raise
+        raise OutputError(f"--output: {exc}") from None
     print(f"copied {path} to {target}")
     return 0
 
