@@ -12,8 +12,8 @@ from ..dynamics_io import dynamics_table, summary_document
 from .cmd_synth import design_summary
 from .common import (UsageError, add_angle_options, add_design_options, add_load_options,
                      add_speed_options, design_from_args, masses_from_args, print_json,
-                     print_table, request_from_args, write_output)
-from .streaming import Progress, table_pieces
+                     print_table, request_from_args)
+from .streaming import write_table
 
 HELP = "joint forces, crank torque, power and flywheel"
 DESCRIPTION = ("Kinetostatic analysis at constant crank speed: the crank's driving torque, power, "
@@ -43,8 +43,7 @@ def run(args: argparse.Namespace) -> int:
         def block(phi: np.ndarray, rpm: float):
             return dynamics_table(solve_dynamics(design, phi, [rpm], masses))
 
-        with Progress("computing forces", angles.size * len(rpms)) as progress:
-            write_output("--csv", args.csv, table_pieces(block, angles, rpms, progress))
+        write_table("--csv", args.csv, "computing forces", block, angles, rpms)
         if not args.json:
             return 0
     summary = summarize(design, rpms, masses)
