@@ -15,10 +15,7 @@ points into the temporary folder too.
 import csv
 import io
 import os
-import re
 import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -28,8 +25,8 @@ from hypothesis import strategies as st
 from core.cli import build_parser
 from core.library_store import ENV_VAR
 
-from cli_runner import shaper_in_process
-from output_checks import finite_json
+from cli_runner import shaper_in_process, shaper_process
+from output_checks import error_names, finite_json
 from test_cli_fuzz import (BAD_FILE, FOLDER, GOOD_FILE, NON_FINITE, ROD_FILE, hostile, not_fine_step,
                            sane, value_for)
 
@@ -207,18 +204,8 @@ def check_finite(text: str) -> None:
 
 
 def check_error(action: str, stderr: str) -> None:
-    lines = stderr.splitlines()
-    assert len(lines) == 1, stderr
-    assert lines[0].startswith("shaper: error: ") and "Traceback" not in stderr
-    message = lines[0][len("shaper: error: "):]
-    if message.startswith(("unrecognized arguments:", "ambiguous option:")):
-        return
-    if message.startswith("argument "):
-        head = re.match(r"argument (\S+?):", message).group(1)
-    else:
-        head = re.sub(r" \((L[1-4]|default|from \$\w+)\)$", "", message.split(": ")[0])
-    for name in head.split("/"):
-        assert name in ACTIONS[action], f"library {action} has no {name}: {message}"
+    for name in error_names(stderr):
+        assert name in ACTIONS[action], f"library {action} has no {name}: {stderr}"
 
 
 def written_files(argv: list[str]) -> list[str]:
@@ -255,14 +242,7 @@ def test_fuzzed_library_lines_succeed_finitely_or_fail_in_one_line(argv):
 @given(argv=library_lines(), ascii_console=st.booleans())
 def test_fuzzed_library_lines_as_real_processes(argv, ascii_console):
     fresh_library()
-    env = dict(os.environ, PYTHONIOENCODING="ascii" if ascii_console else "utf-8")
-    done = subprocess.run([sys.executable, "-m", "core", *argv], capture_output=True, env=env,
-                          cwd=FOLDER, timeout=120)
-    stdout = done.stdout.decode("utf-8", "replace")
-    stderr = done.stderr.decode("utf-8", "replace")
-    if ascii_console:
-        assert done.stdout.isascii() and done.stderr.isascii()
-    check_run(argv, done.returncode, stdout, stderr)
+    check_run(argv, *shaper_process(*argv, ascii_console=ascii_console, cwd=FOLDER))
 
 
 @pytest.mark.parametrize("action", sorted(ACTIONS))
