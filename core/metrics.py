@@ -1,12 +1,13 @@
 """Cycle metrics measured from the motion itself, not echoed from the inputs.
 
 The third level of core. Limit positions are found as the zeros of the ram
-velocity (sign changes on a grid, refined by Newton steps on the closed-form
-acceleration), so a measured K or stroke that disagrees with the design's
-nominal values exposes a fault in the kinematics. Every peak is an extremum
-of the closed-form curves (see :mod:`core.extrema`), not the largest sample
-of a grid. One code path serves one design (:func:`analyze`) and many
-(:func:`cycle_peaks`, used by the sweep).
+velocity (sign changes on a grid, polished by a bracketed root finder on the
+closed-form velocity), so a measured K or stroke that disagrees with the
+design's nominal values exposes a fault in the kinematics. Every peak is an
+extremum of the closed-form curves (see :mod:`core.extrema`), not the largest
+sample of a grid, and the crank angles of the speed peaks are kept (the
+positions table's special rows). One code path serves one design
+(:func:`analyze`) and many (:func:`cycle_peaks`, used by the sweep).
 """
 from __future__ import annotations
 

@@ -12,7 +12,7 @@ from core.sweep import evaluate
 from shaperapp.explore_view import ExploreView
 from shaperapp.messages import describe
 
-from conftest import shown
+from gui_helpers import shown
 
 
 @pytest.fixture

@@ -13,7 +13,7 @@ from shaperapp.forces_panel import ForcesPanel
 from shaperapp.plots import PlotsWidget
 from shaperapp.scheme import SchemeWidget
 
-from conftest import shown
+from gui_helpers import shown
 
 VIEWS = {"scheme": SchemeWidget, "plots": PlotsWidget, "forces": ForcesPanel}
 

@@ -21,7 +21,7 @@ from shaperapp.forces_panel import ForcesPanel
 from shaperapp.messages import describe
 from shaperapp.model import DesignModel
 
-from conftest import shown
+from gui_helpers import shown
 
 SPEED_CURVES = ("torque", "power", "energy")
 JOINT_ARRAYS = {"O2": ("o2_x", "o2_y"), "A": ("a_x", "a_y"), "O4": ("o4_x", "o4_y"),

@@ -9,7 +9,7 @@ from PySide6.QtWidgets import QApplication
 from core.dynamics import masses_for_design, solve_dynamics
 from core.kinematics import solve
 
-from conftest import main_window
+from gui_helpers import main_window
 
 
 @pytest.fixture

@@ -10,7 +10,7 @@ from shaperapp.document import Document
 from shaperapp.main_window import MainWindow
 from shaperapp.model import MAX_GUI_SAMPLES, DesignModel
 
-from conftest import main_window
+from gui_helpers import main_window
 from hostile_files import CASES, VALID, build_case
 
 

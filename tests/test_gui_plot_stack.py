@@ -20,7 +20,7 @@ from shaperapp.force_plots import ForcePlots
 from shaperapp.plots import PlotsWidget
 from shaperapp.style import SPEED_COLOURS, fmt
 
-from conftest import shown
+from gui_helpers import shown
 
 SIXTEEN = [20.0 + 5.0 * i for i in range(16)]
 

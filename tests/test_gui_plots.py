@@ -19,7 +19,7 @@ from core.kinematics import crank_angles, solve
 from shaperapp.model import DesignModel
 from shaperapp.plots import LEVER_PLOTS, PLOT_NAMES, PlotsWidget
 
-from conftest import shown
+from gui_helpers import shown
 
 
 @pytest.fixture

@@ -13,7 +13,7 @@ from core.polygons import nice_scale, paper, polygons
 from shaperapp.polygon_paint import export_polygon, paint_polygon
 from shaperapp.polygon_view import PolygonView
 
-from conftest import shown
+from gui_helpers import shown
 
 LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70,
                        cut_force_N=7000, cut_height_mm=80)

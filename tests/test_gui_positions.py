@@ -7,7 +7,7 @@ from core.dynamics import masses_for_design
 from core.positions import SPECIAL_NAMES, display_values, number_text, position_table, positions
 from shaperapp.positions_view import PositionsView
 
-from conftest import shown
+from gui_helpers import shown
 
 
 @pytest.fixture

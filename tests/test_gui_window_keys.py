@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QApplication, QInputDialog
 
 from shaperapp.main_window import MainWindow
 
-from conftest import main_window
+from gui_helpers import main_window
 
 
 @pytest.fixture
