@@ -126,6 +126,23 @@ def best_indices(values: Sequence[float | None], better: str | None) -> tuple[in
     return tuple(i for i, v in present if abs(v - target) <= tol)
 
 
+# ---- text ----------------------------------------------------------------------
+def value_text(value: Any) -> str:
+    """A figure as ``shaper library compare`` prints it (and the report): 6 significant
+    digits, a text figure as it is, ``—`` where a design has none."""
+    return "—" if value is None else value if isinstance(value, str) else f"{value:.6g}"
+
+
+def difference_text(row: Row, index: int) -> str:
+    """What follows design ``index``'s value: its difference from the first design in
+    brackets, `` (=)`` within round-off, ``''`` for the first design or no difference."""
+    diff = row.differences[index]
+    if index == 0 or diff is None or isinstance(row.values[index], str):
+        return ""
+    tiny = abs(diff) <= 1e-9 * max(1.0, abs(row.values[0]))
+    return " (=)" if tiny else f" ({diff:+.4g})"
+
+
 # ---- export --------------------------------------------------------------------
 def _number(value: Any) -> str:
     if value is None:

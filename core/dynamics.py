@@ -506,16 +506,23 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     return out
 
 
-def _cut_window(d: Designs, masses: MassProperties, sh: Shape) -> tuple[np.ndarray, np.ndarray]:
-    """Crank angles (rad) where the cut starts and ends: the ram, advancing on the working
-    stroke φ ∈ [0, π + θ], reaches idle·H and (1 − idle)·H (see :func:`cutting_force`).
+def cut_window(d: Designs, idle_fraction: float,
+               sh: Shape | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Crank angles (rad, in [0, π + θ]) where the cut starts and ends, each of d's shape:
+    the ram, advancing on the working stroke φ ∈ [0, π + θ], reaches idle·H and
+    (1 − idle)·H (see :func:`cutting_force`). Used by the cycle summary and the
+    positions table's special rows.
 
-    Each is bracketed between the samples of ``sh`` (one design per row, uniform φ)
-    and polished as a root of the closed-form displacement.
+    Each is bracketed between the samples of ``sh`` (one-dimensional ``d``, one design
+    per row, uniform φ over the cycle; by default ``ENERGY_INTERVALS`` steps) and
+    polished as a root of the closed-form displacement. A switch at or before φ = 0
+    (idle 0, or an idle·H below round-off) is 0; one never reached is π + θ.
     """
     from .extrema import bracket_root
 
-    idle = masses.idle_fraction * d.stroke
+    if sh is None:
+        sh = shape(d.column(), np.linspace(0.0, 2.0 * math.pi, ENERGY_INTERVALS + 1))
+    idle = idle_fraction * d.stroke
     origin = ram_origin(d)
     targets = np.stack([idle, d.stroke - idle]) + origin            # Cx at the two switches
     end = np.broadcast_to(math.pi + d.theta, targets.shape)
@@ -571,7 +578,7 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
             ram1.append(crowd.ram1)
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
     x, stat, iner, ram1 = (np.concatenate(v, axis=-1) for v in (x, stat, iner, ram1))
-    on, off = _cut_window(d, masses, sh)
+    on, off = cut_window(d, masses.idle_fraction, sh)
     cut = masses.cut_force_N * MM
     w2 = (omega ** 2)[None, :, None]
     lengths = [v[:, None, None] for v in (d.crank, d.frame, d.lever, d.guide,

@@ -28,6 +28,18 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
                  segments: Sequence[tuple[int, int, float]] | None = None,
                  candidates: int = CANDIDATES) -> np.ndarray:
     """Largest value of each curve, polished from samples; shape values.shape[:-1].
+    See :func:`grid_argmax`, which also says where it lies."""
+    return grid_argmax(fun, x, values, slopes, args, segments, candidates)[0]
+
+
+def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarray,
+                args: Sequence[np.ndarray] = (),
+                segments: Sequence[tuple[int, int, float]] | None = None,
+                candidates: int = CANDIDATES) -> tuple[np.ndarray, np.ndarray]:
+    """(largest value, x where it lies) of each curve, polished from samples; each of
+    shape values.shape[:-1]. The x is a polished slope zero, or the best sample when no
+    polished one exceeds it (a maximum at a segment end); it may lie beyond the
+    samples' range by up to one period of a wrapping segment.
 
     ``fun(x, *args)`` returns the curve's value and slope d/dx at ``x`` (1-D
     arrays, args subset to match). ``x``, ``values`` and ``slopes`` (…, n) are
@@ -42,7 +54,9 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
     x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)     # a view: never copied
     slopes = np.broadcast_to(slopes, values.shape)
     segments = [(0, n, 0.0)] if segments is None else list(segments)
-    best = np.max(values, axis=-1).reshape(-1)
+    top = np.argmax(values, axis=-1)[..., None]      # a NaN sample wins, as in np.max
+    best = np.take_along_axis(values, top, axis=-1).reshape(-1)
+    where = np.take_along_axis(x, top, axis=-1).reshape(-1)
     picks: list[list[np.ndarray]] = []        # per rank: [lo, hi, owner, upper bound]
     for start, stop, period in segments:
         v, s = values[..., start:stop], slopes[..., start:stop]
@@ -80,8 +94,11 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
         flat_args = [np.broadcast_to(a, lead + (1,)).reshape(-1)[owner] for a in args]
         slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
         root = bracket_root(slope, lo, hi, flat_args, f_lo=s_lo, f_hi=s_hi)
-        np.fmax.at(best, owner, fun(root, *flat_args)[0])
-    return best.reshape(lead)
+        value = fun(root, *flat_args)[0]
+        np.fmax.at(best, owner, value)
+        won = value == best[owner]          # the winning root of each curve (ties: any)
+        where[owner[won]] = root[won]
+    return best.reshape(lead), where.reshape(lead)
 
 
 def _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi):

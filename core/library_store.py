@@ -31,7 +31,9 @@ SQLITE_HEADER = b"SQLite format 3\x00"
 
 class LibraryError(Exception):
     """A library problem with a plain message. ``kind`` is one of ``damaged``,
-    ``newer``, ``foreign``, ``io``, ``busy``, ``name``, ``tag``, ``exists``, ``missing``."""
+    ``newer``, ``foreign``, ``io``, ``busy``, ``name``, ``tag``, ``exists``, ``missing``,
+    ``location`` (the path is a folder, or its folder does not exist: the path is wrong,
+    not the disk)."""
 
     def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None) -> None:
         super().__init__(message)
@@ -139,11 +141,11 @@ def connect(path: str | os.PathLike, create: bool = True, make_dirs: bool = Fals
         raise LibraryError("missing", f"there is no design library at {path}", path)
     if exists:
         if path.is_dir():
-            raise LibraryError("io", f"{path} is a folder, not a library file", path)
+            raise LibraryError("location", f"{path} is a folder, not a library file", path)
         _check_header(path)
     elif not path.parent.exists():
         if not make_dirs:
-            raise LibraryError("io", f"cannot create the library {path}: the folder "
+            raise LibraryError("location", f"cannot create the library {path}: the folder "
                                f"{path.parent} does not exist", path)
         try:
             path.parent.mkdir(parents=True, exist_ok=True)

@@ -1,12 +1,13 @@
 """Cycle metrics measured from the motion itself, not echoed from the inputs.
 
 The third level of core. Limit positions are found as the zeros of the ram
-velocity (sign changes on a grid, refined by Newton steps on the closed-form
-acceleration), so a measured K or stroke that disagrees with the design's
-nominal values exposes a fault in the kinematics. Every peak is an extremum
-of the closed-form curves (see :mod:`core.extrema`), not the largest sample
-of a grid. One code path serves one design (:func:`analyze`) and many
-(:func:`cycle_peaks`, used by the sweep).
+velocity (sign changes on a grid, polished by a bracketed root finder on the
+closed-form velocity), so a measured K or stroke that disagrees with the
+design's nominal values exposes a fault in the kinematics. Every peak is an
+extremum of the closed-form curves (see :mod:`core.extrema`), not the largest
+sample of a grid, and the crank angles of the speed peaks are kept (the
+positions table's special rows). One code path serves one design
+(:func:`analyze`) and many (:func:`cycle_peaks`, used by the sweep).
 """
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .designs import Designs
-from .extrema import bracket_root, grid_maximum
+from .extrema import bracket_root, grid_argmax
 from .geometry import Design
 from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rates_at,
                          rpm_to_omega, shape_at)
@@ -71,6 +72,8 @@ class CyclePeaks:
     ram_max_mm: np.ndarray
     v_work: np.ndarray        # max dCx/dφ (cutting direction), mm/rad
     v_return: np.ndarray      # max −dCx/dφ (return), mm/rad
+    v_work_at: np.ndarray     # crank angle of the max cutting speed, rad in [0, 2π)
+    v_return_at: np.ndarray   # crank angle of the max return speed, rad in [0, 2π)
     a_max: np.ndarray         # max |d²Cx/dφ²|, mm/rad²
     lever1_max: np.ndarray    # max |dψ/dφ|
     lever2_max: np.ndarray    # max |d²ψ/dφ²|, 1/rad
@@ -162,13 +165,15 @@ def _chunk_peaks(d: Designs) -> CyclePeaks:
         crowd = np.abs(np.cos(at.rod)).min(axis=-1) < CROWD_BELOW      # r/L4 = |cos λ|
     fine = d.crank / d.frame > FINE_ABOVE
     peaks = np.empty((3,) + d.crank.shape)
+    at_beta = np.empty((3,) + d.crank.shape)
     ram1 = np.empty(d.crank.shape + (SAMPLES,))
     for dense in (False, True):
         for crowded in (False, True):
             group = (fine == dense) & (crowd == crowded)
             if group.any():
                 specials = (special_cos[group], special_sin[group]) if crowded else None
-                peaks[:, group], ram1[group] = _ram_peaks(d.take(group), dense, specials)
+                peaks[:, group], at_beta[:, group], ram1[group] = \
+                    _ram_peaks(d.take(group), dense, specials)
     start, end = _dead_points(d, ram1)
     # Positions at the dead points, from the φ = 0 position (the displacement's zero).
     phi = np.stack([start, end], axis=-1)
@@ -176,15 +181,17 @@ def _chunk_peaks(d: Designs) -> CyclePeaks:
     ends = shape_at(col, phi, np.cos(beta_ends), np.sin(beta_ends))
     x_ends = ends.ram_joint[0] - origin[:, None]
     lever1, lever2 = lever_peaks(d.crank / d.frame)
+    at_phi = np.mod(math.pi + d.theta / 2.0 - at_beta[:2], 2.0 * math.pi)
     return CyclePeaks(work_start=start, work_end=end, ram_min_mm=x_ends.min(axis=-1),
                       ram_max_mm=x_ends.max(axis=-1), v_work=peaks[0], v_return=peaks[1],
+                      v_work_at=at_phi[0], v_return_at=at_phi[1],
                       a_max=peaks[2], lever1_max=lever1, lever2_max=lever2,
                       pressure_max=pressure)
 
 
-def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray]:
-    """Max dCx/dφ, max −dCx/dφ and max |d²Cx/dφ²| (3, designs), and dCx/dφ at the
-    uniform samples ``_BETA``. ``fine`` samples four times as densely (every fourth sample
+def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Max dCx/dφ, max −dCx/dφ and max |d²Cx/dφ²| (3, designs), the crank directions β
+    where they lie (3, designs), and dCx/dφ at the uniform samples ``_BETA``. ``fine`` samples four times as densely (every fourth sample
     is one of ``_BETA``); with ``specials`` (cos β, sin β of the sharp angles) samples also
     crowd toward those angles."""
     col = d.column()
@@ -212,9 +219,9 @@ def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray
                                                  col.crank if d.rod is None else col.rod))
     side = None if d.rod is None else d.rod_side
     x = np.concatenate(beta, axis=-1)[None] if len(beta) > 1 else uniform
-    peaks = grid_maximum(lambda t, *a: _ram_curves(t, *a, side=side), x, values, slopes,
-                         args=args, segments=segments)
-    return peaks, samples[0].ram1[..., ::4] if fine else samples[0].ram1
+    peaks, where = grid_argmax(lambda t, *a: _ram_curves(t, *a, side=side), x, values, slopes,
+                               args=args, segments=segments)
+    return peaks, where, samples[0].ram1[..., ::4] if fine else samples[0].ram1
 
 
 def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -274,15 +281,6 @@ def lever_peaks(ratio: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     u = -8.0 * lam / (a + np.sqrt(a ** 2 + 32.0 * lam ** 2))
     q = a + 2.0 * lam * u
     return lam / (1.0 - lam), lam * (1.0 - lam ** 2) * np.sqrt(1.0 - u ** 2) / q ** 2
-
-
-def limit_angles(design: Design) -> tuple[float, float]:
-    """Crank angles (rad, in [0, 2π)) where the ram is at its two dead points:
-    (start of the working stroke, end of the working stroke)."""
-    peaks = cycle_peaks(Designs.of(design))
-    if not np.isfinite(peaks.work_start[0]):
-        raise RuntimeError("the ram does not have exactly two dead points")
-    return float(peaks.work_start[0]), float(peaks.work_end[0])
 
 
 def speed_figures(peaks: CyclePeaks, omega: np.ndarray) -> dict[str, np.ndarray]:

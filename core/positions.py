@@ -6,8 +6,9 @@ positions: both limit positions, the start and end of the cut, and where the
 ram moves fastest. This module finds those crank angles exactly and tabulates
 every quantity core computes there.
 
-Level: beside ``io``. The special angles come from ``kinematics``/``metrics``
-(exact roots of closed-form functions, no sampling error); the table rows
+Level: beside ``io``. The special angles come from ``metrics`` and ``dynamics``
+(exact roots of closed-form functions, no sampling error; the same code that
+finds ``analyze``'s peaks and switches the cutting force); the table rows
 come from ``io.curve_table`` and ``dynamics_io.dynamics_table`` unchanged, so
 its columns are the curves and dynamics CSV columns.
 """
@@ -15,22 +16,22 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Sequence
+from typing import Any, Sequence
 
 import numpy as np
 
-from .dynamics import MassProperties, solve_dynamics
+from .designs import Designs
+from .dynamics import MassProperties, cut_window, solve_dynamics
 from .dynamics_io import dynamics_table
 from .errors import DesignError, require_finite
 from .geometry import Design
 from .io import curve_table, finite_or_none, table_csv
-from .kinematics import ram_origin, shape, solve
-from .metrics import limit_angles
+from .kinematics import solve
+from .metrics import cycle_peaks
 
 DEFAULT_COUNT = 12
 MAX_COUNT = 3600
 MAX_EXTRA = 1000
-GRID = 7200            # bracket grid for the speed peaks (each bracket then solved exactly)
 SPECIAL_NAMES = ("limit_work_start", "limit_work_end", "cut_start", "cut_end",
                  "v_work_max", "v_return_max")
 LEAD_COLUMNS = ("position", "name")
@@ -88,92 +89,29 @@ class PositionTable:
         return dict(zip(self.columns, (float(v) for v in values)))
 
 
-def _bisect(func: Callable[[np.ndarray], np.ndarray], low: np.ndarray,
-            high: np.ndarray) -> np.ndarray:
-    """Roots of ``func`` in brackets [low, high] with a sign change, to the last bit.
+def special_angles(design: Design, idle_fraction: float = 0.05) -> dict[str, float]:
+    """The six special positions as crank angles in degrees, keyed by ``SPECIAL_NAMES``.
 
-    Vectorized over the brackets; bisection cannot leave a bracket, so each
-    root is the one the bracket holds. A bracket without a sign change (a
-    target within round-off of an end, e.g. a vanishing idle margin) gives
-    the end where |func| is smaller.
-    """
-    low, high = np.array(low, dtype=float), np.array(high, dtype=float)
-    f_low, f_high = func(low), func(high)
-    no_change = np.sign(f_low) * np.sign(f_high) > 0
-    end = np.where(np.abs(f_low) <= np.abs(f_high), low, high)
-    for _ in range(80):
-        mid = 0.5 * (low + high)
-        if np.all((mid == low) | (mid == high)):
-            break
-        f_mid = func(mid)
-        same = np.sign(f_mid) == np.sign(f_low)
-        low, f_low = np.where(same, mid, low), np.where(same, f_mid, f_low)
-        high = np.where(same, high, mid)
-    return np.where(no_change, end, 0.5 * (low + high))
-
-
-def _working_span(design: Design) -> tuple[float, float]:
-    """(start, length) of the working stroke in rad, start from ``limit_angles``."""
-    start, end = limit_angles(design)
-    return start, (end - start) % (2.0 * math.pi)
-
-
-def peak_speed_angles(design: Design) -> tuple[float, float]:
-    """Crank angles (rad, in [0, 2π)) of the largest cutting and return speeds.
-
-    Each is the zero of the closed-form d²x/dφ² (the ram acceleration) next to
-    the largest |dx/dφ| on a grid, so it is exact rather than a grid sample.
-    Speeds scale with ω, so the angles hold for every crank speed.
-    # The lead may unify this with core.metrics once its peaks are exact.
-    """
-    start, work = _working_span(design)
-    phi = start + np.arange(GRID + 1) * (2.0 * math.pi / GRID)
-    rate = shape(design, phi).ram1
-    in_work = (phi - start) <= work
-    i_work = int(np.argmax(np.where(in_work, rate, -np.inf)))
-    i_back = int(np.argmin(np.where(in_work, np.inf, rate)))
-    index = np.array([i_work, i_back])
-    low = phi[np.clip(index - 1, 0, GRID)]
-    high = phi[np.clip(index + 1, 0, GRID)]
-    roots = _bisect(lambda x: shape(design, x).ram2, low, high)
-    return float(roots[0] % (2.0 * math.pi)), float(roots[1] % (2.0 * math.pi))
-
-
-def cut_angles(design: Design, idle_fraction: float) -> tuple[float, float]:
-    """Crank angles (rad) where the ram has advanced idle·H and (1 − idle)·H.
-
-    The cut runs between them (see ``dynamics.cutting_force``, which uses the
-    same H = ``design.stroke``); roots of x(φ) − target on the working stroke,
-    where x rises monotonically.
+    The limits and the speed peaks are those of :func:`metrics.cycle_peaks` (what
+    ``analyze`` reports), the cut's ends those of :func:`dynamics.cut_window` (where the
+    dynamics switch the cutting force). The start limit is reported as a signed angle
+    near 0 (as ``metrics.analyze`` does), the others in [0, 360).
     """
     idle = require_finite("idle_fraction", idle_fraction)
     if not 0.0 <= idle < 0.5:
         raise DesignError("idle_fraction", idle, "must be ≥ 0 and < 0.5")
-    start, work = _working_span(design)
-    if idle == 0.0:
-        return start, (start + work) % (2.0 * math.pi)
-    origin = ram_origin(design)
-    targets = np.array([idle, 1.0 - idle]) * design.stroke
-    roots = _bisect(lambda x: shape(design, x).ram_joint[0] - origin - targets,
-                    np.full(2, start), np.full(2, start + work))
-    return float(roots[0] % (2.0 * math.pi)), float(roots[1] % (2.0 * math.pi))
-
-
-def special_angles(design: Design, idle_fraction: float = 0.05) -> dict[str, float]:
-    """The six special positions as crank angles in degrees, keyed by ``SPECIAL_NAMES``.
-
-    The start limit is reported as a signed angle near 0 (as ``metrics.analyze``
-    does), the others in [0, 360).
-    """
-    start, end = limit_angles(design)
-    cut_start, cut_end = cut_angles(design, idle_fraction)
-    v_work, v_back = peak_speed_angles(design)
-    start_deg = math.degrees(start)
+    one = Designs.of(design)
+    peaks = cycle_peaks(one)
+    if not np.isfinite(peaks.work_start[0]):
+        raise RuntimeError("the ram does not have exactly two dead points")
+    cut_start, cut_end = cut_window(one, idle)
+    start_deg = math.degrees(float(peaks.work_start[0]))
     if start_deg > 180.0:
         start_deg -= 360.0
-    return {"limit_work_start": start_deg, "limit_work_end": math.degrees(end),
-            "cut_start": math.degrees(cut_start), "cut_end": math.degrees(cut_end),
-            "v_work_max": math.degrees(v_work), "v_return_max": math.degrees(v_back)}
+    angles = {"limit_work_end": peaks.work_end, "cut_start": cut_start, "cut_end": cut_end,
+              "v_work_max": peaks.v_work_at, "v_return_max": peaks.v_return_at}
+    return {"limit_work_start": start_deg,
+            **{name: math.degrees(float(value[0])) for name, value in angles.items()}}
 
 
 def check_count(count: object) -> int:

@@ -276,6 +276,29 @@
     </message>
 </context>
 <context>
+    <name>ComparePlots</name>
+    <message>
+        <source>Ram x (mm)</source>
+        <translation>滑枕 x (mm)</translation>
+    </message>
+    <message>
+        <source>Ram v (m/s)</source>
+        <translation>滑枕 v (m/s)</translation>
+    </message>
+    <message>
+        <source>Ram a (m/s²)</source>
+        <translation>滑枕 a (m/s²)</translation>
+    </message>
+    <message>
+        <source>Torque (N·m)</source>
+        <translation>驱动力矩 (N·m)</translation>
+    </message>
+    <message>
+        <source>Crank angle (°)</source>
+        <translation>曲柄转角 (°)</translation>
+    </message>
+</context>
+<context>
     <name>CompareView</name>
     <message>
         <source>At most %1 designs can be compared.</source>
@@ -308,10 +331,6 @@
     <message>
         <source>Design comparison</source>
         <translation>设计比较</translation>
-    </message>
-    <message>
-        <source>the file could not be written</source>
-        <translation>无法写入该文件</translation>
     </message>
     <message>
         <source>Comparison at %1 r/min; differences from “%2” in brackets; ★ best</source>
@@ -364,26 +383,6 @@
     <message>
         <source>Export PNG/SVG…</source>
         <translation>导出 PNG/SVG…</translation>
-    </message>
-    <message>
-        <source>Ram x (mm)</source>
-        <translation>滑枕 x (mm)</translation>
-    </message>
-    <message>
-        <source>Ram v (m/s)</source>
-        <translation>滑枕 v (m/s)</translation>
-    </message>
-    <message>
-        <source>Ram a (m/s²)</source>
-        <translation>滑枕 a (m/s²)</translation>
-    </message>
-    <message>
-        <source>Torque (N·m)</source>
-        <translation>驱动力矩 (N·m)</translation>
-    </message>
-    <message>
-        <source>Crank angle (°)</source>
-        <translation>曲柄转角 (°)</translation>
     </message>
 </context>
 <context>
@@ -829,8 +828,8 @@
         <translation>已取消。</translation>
     </message>
     <message>
-        <source>Design space</source>
-        <translation>设计空间</translation>
+        <source>Design-space map</source>
+        <translation>设计空间图</translation>
     </message>
 </context>
 <context>
@@ -865,10 +864,6 @@
     <message>
         <source>Shaper forces and torque</source>
         <translation>牛头刨床受力与力矩</translation>
-    </message>
-    <message>
-        <source>{0} r/min</source>
-        <translation>{0} r/min</translation>
     </message>
     <message>
         <source>cutting</source>
@@ -1989,10 +1984,6 @@
         <translation>导杆 α</translation>
     </message>
     <message>
-        <source>{0} r/min</source>
-        <translation>{0} r/min</translation>
-    </message>
-    <message>
         <source>φ = {0}°</source>
         <translation>φ = {0}°</translation>
     </message>
@@ -2220,6 +2211,14 @@
         <translation>未给出</translation>
     </message>
     <message>
+        <source>trailing</source>
+        <translation>后置</translation>
+    </message>
+    <message>
+        <source>leading</source>
+        <translation>前置</translation>
+    </message>
+    <message>
         <source>Extreme-position angle θ</source>
         <translation>极位夹角 θ</translation>
     </message>
@@ -2436,6 +2435,10 @@
         <translation>φ = %1°（极限位置）</translation>
     </message>
     <message>
+        <source>Design comparison</source>
+        <translation>设计比较</translation>
+    </message>
+    <message>
         <source>Design</source>
         <translation>设计</translation>
     </message>
@@ -2455,6 +2458,30 @@
         <source>Page %1 / %2</source>
         <translation>第 %1 / %2 页</translation>
     </message>
+    <message>
+        <source>Figure</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>Figures at %1 r/min</source>
+        <translation>%1 r/min 时的指标</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>The design of this report, “%1”, beside %2 at %3 r/min, the report's first speed. Each value is followed by its difference from “%1” in brackets ((=): the same); ★ marks the best value of a row: the lowest max |a|, pressure angle, torques and flywheel J_F. Torques and J_F need loads; a design without them has none (—). The numbers are those of shaper library compare.</source>
+        <translation>本说明书的设计“%1”与 %2 在 %3 r/min（本说明书的第一个转速）下的比较。每个数值后的括号内为其与“%1”之差（(=)：相同）；★ 标出每行的最优值：最大 |a|、压力角、驱动力矩和飞轮 J_F 均以小为优。驱动力矩和 J_F 需要载荷；未给载荷的设计没有这些值（—）。数值与 shaper library compare 的输出相同。</translation>
+    </message>
+    <message>
+        <source>9 Comparison with other designs</source>
+        <translation>9 与其他设计的比较</translation>
+    </message>
+    <message>
+        <source>Ram displacement, velocity, acceleration and crank torque of the compared designs over one crank revolution</source>
+        <translation>所比较各设计在曲柄一转中的滑枕位移、速度、加速度和曲柄驱动力矩</translation>
+    </message>
 </context>
 <context>
     <name>ReportOptionsDialog</name>
@@ -2473,6 +2500,22 @@
     <message>
         <source>Vector diagrams at φ (return stroke):</source>
         <translation>矢量多边形位置 φ（回程）：</translation>
+    </message>
+    <message>
+        <source>Include the comparison</source>
+        <translation>包含设计比较</translation>
+    </message>
+    <message>
+        <source>Add designs on the Compare tab to compare this design with them.</source>
+        <translation>在“比较”选项卡中加入设计，即可与本设计比较。</translation>
+    </message>
+    <message>
+        <source>The Compare tab has %1 designs besides this one; a report compares at most %2.</source>
+        <translation>“比较”选项卡中除本设计外有 %1 个设计；说明书最多比较 %2 个。</translation>
+    </message>
+    <message>
+        <source>This design beside the Compare tab's designs (%1) at %2 r/min.</source>
+        <translation>本设计与“比较”选项卡中的设计（%1）在 %2 r/min 下比较。</translation>
     </message>
     <message>
         <source>PDF document (*.pdf);;HTML page (*.html)</source>
@@ -2561,6 +2604,13 @@
     <message>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
+    </message>
+</context>
+<context>
+    <name>StackView</name>
+    <message>
+        <source>{0} r/min</source>
+        <translation>{0} r/min</translation>
     </message>
 </context>
 <context>

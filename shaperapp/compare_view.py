@@ -1,49 +1,33 @@
 """Compare view: 2 to 6 designs overlaid at one speed, with a side-by-side table.
 
-Each design keeps one colour and one line style in all four plots (ram x, v, a
-and crank torque), so curves stay apart in grey-scale prints too. The table
+The overlay curves (ram x, v, a and crank torque; each design in one colour and
+line style) are the shared ``compare_plots.ComparePlots``, which the report uses too. The table
 shows every figure of ``core.compare``: each value, its difference from the
 first design in brackets, and the best value of a row in bold with a ★.
 Everything shown is computed by core; this widget only draws and exports.
 """
 from __future__ import annotations
 
-
-import pyqtgraph as pg
-from PySide6.QtCore import QBuffer, QByteArray, QEvent, QIODevice, QPoint, QRectF, QSize, Qt, Signal
-from PySide6.QtGui import QBrush, QColor, QFont, QImage, QPainter
-from PySide6.QtSvg import QSvgGenerator
+from PySide6.QtCore import QEvent, QPoint, QRectF, QSize, QSizeF, Qt, Signal
+from PySide6.QtGui import QBrush, QColor, QFont, QPainter
 from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QHBoxLayout, QLabel, QListWidget,
                                QMessageBox, QPushButton, QSplitter, QTableWidget, QTableWidgetItem,
                                QVBoxLayout, QWidget)
 
-from core.compare import MAX_DESIGNS, Candidate, Comparison, compare, table_csv
+from core.compare import (MAX_DESIGNS, Candidate, Comparison, compare, difference_text,
+                          table_csv)
 from core.errors import DesignError, FileFormatError
 from core.io import atomic_write, load_design
 from core.library import file_stem, unique_name
 
+from .compare_plots import COLOURS, ComparePlots
 from .figure_labels import figure_label, figure_tip, format_figure
 from .messages import describe
 from .model import DesignModel
-from .image_export import image_type
-from .plot_axes import cache_axes, styled_plot_item
+from .image_export import export_painting
 
-# Okabe–Ito colours (distinguishable with colour-blindness) and six line styles
-COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
-STYLES = (Qt.PenStyle.SolidLine, Qt.PenStyle.DashLine, Qt.PenStyle.DotLine, Qt.PenStyle.DashDotLine,
-          Qt.PenStyle.DashDotDotLine, Qt.PenStyle.CustomDashLine)
+WHITE = QColor("white")
 BEST_BRUSH = QBrush(QColor(200, 235, 200))
-CURVES = ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
-
-
-def design_pen(index: int) -> pg.QtGui.QPen:
-    """The pen of the ``index``-th design: its own colour and its own line style."""
-    pen = pg.mkPen(COLOURS[index % len(COLOURS)], width=2)
-    pen.setStyle(STYLES[index % len(STYLES)])
-    if pen.style() == Qt.PenStyle.CustomDashLine:
-        pen.setDashPattern([8, 3, 1, 3, 1, 3])
-    pen.setCosmetic(True)
-    return pen
 
 
 class CompareView(QWidget):
@@ -79,16 +63,7 @@ class CompareView(QWidget):
         self.hint = QLabel()
         self.hint.setWordWrap(True)
 
-        self.plots = pg.GraphicsLayoutWidget()
-        self.plots.setBackground("w")
-        self._items = {}
-        for row, key in enumerate(CURVES):
-            item = styled_plot_item(0.05)
-            self.plots.addItem(item, row=row, col=0)
-            self._items[key] = item
-            if row:
-                item.setXLink(self._items[CURVES[0]])
-        self._legend = self._items[CURVES[0]].addLegend(offset=(10, 5), colCount=2)
+        self.plots = ComparePlots()
         self.table = QTableWidget()
         self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         self.content = QSplitter(Qt.Orientation.Vertical)     # what PNG/SVG exports show
@@ -166,6 +141,7 @@ class CompareView(QWidget):
         for i, c in enumerate(self._candidates):
             self.list.addItem(c.label)
             self.list.item(i).setForeground(QColor(COLOURS[i % len(COLOURS)]))
+        self._model.set_comparison_candidates(self._candidates)    # for the report
         self.candidatesChanged.emit()
         self.recompute()
 
@@ -187,27 +163,11 @@ class CompareView(QWidget):
         self._show()
 
     def _show(self) -> None:
-        for item in self._items.values():
-            for curve in list(item.listDataItems()):
-                item.removeItem(curve)
-        self._legend.clear()
         result = self.comparison
         self.export_csv_button.setEnabled(result is not None)
         self.export_image_button.setEnabled(result is not None)
         self._fill_table()
-        if result is None:
-            return
-        for k, label in enumerate(result.labels):
-            pen = design_pen(k)
-            series = (result.ram_x_mm[k], result.ram_v_m_s[k], result.ram_a_m_s2[k],
-                      result.crank_torque_N_m[k])
-            for key, y in zip(CURVES, series):
-                if y is not None:
-                    curve = self._items[key].plot(result.crank_deg, y, pen=pen)
-                    if key == CURVES[0]:
-                        self._legend.addItem(curve, label)
-        for item in self._items.values():
-            item.enableAutoRange()
+        self.plots.show_comparison(result)
 
     def _fill_table(self) -> None:
         result = self.comparison
@@ -226,11 +186,7 @@ class CompareView(QWidget):
         for i, row in enumerate(rows):
             self.table.verticalHeaderItem(i).setToolTip(figure_tip(row.key))
             for k, value in enumerate(row.values):
-                text = format_figure(row.key, value)
-                diff = row.differences[k]
-                if k > 0 and diff is not None and not isinstance(value, str):
-                    tiny = abs(diff) <= 1e-9 * max(1.0, abs(row.values[0]))
-                    text += " (=)" if tiny else f" ({diff:+.4g})"
+                text = format_figure(row.key, value) + difference_text(row, k)
                 item = QTableWidgetItem(("★ " if k in row.best else "") + text)
                 item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
                 if k in row.best:
@@ -249,7 +205,6 @@ class CompareView(QWidget):
     def export_image(self, path: str) -> None:
         """Curves and the whole table as one picture: SVG for ``.svg``, else a raster type
         by suffix (``image_export.image_type`` refuses anything else, naming the path)."""
-        kind = image_type(path)
         table = self.table
         table_size = QSize(table.verticalHeader().width() + table.horizontalHeader().length() + 4,
                            table.horizontalHeader().height() + table.verticalHeader().length() + 4)
@@ -257,43 +212,24 @@ class CompareView(QWidget):
         title_h = 28
         width = max(plots_size.width(), table_size.width())
         height = title_h + plots_size.height() + table_size.height()
-        data = QByteArray()
-        buffer = QBuffer(data)
-        buffer.open(QIODevice.OpenModeFlag.WriteOnly)
-        if kind == "svg":
-            device = QSvgGenerator()
-            device.setOutputDevice(buffer)
-            device.setSize(QSize(width, height))
-            device.setViewBox(QRectF(0, 0, width, height))
-            device.setTitle(self.tr("Design comparison"))
-        else:
-            device = QImage(width * 2, height * 2, QImage.Format.Format_ARGB32)
-            device.setDevicePixelRatio(2.0)
-            device.fill(QColor("white"))
+
+        def paint(painter: QPainter, page: QRectF) -> None:
+            painter.setPen(QColor("black"))
+            painter.drawText(QRectF(8, 0, page.width() - 16, title_h), Qt.AlignmentFlag.AlignVCenter,
+                             self.title())
+            self.plots.render_plots(painter, QRectF(0, title_h, plots_size.width(), plots_size.height()))
+            table.render(painter, QPoint(0, title_h + plots_size.height()))
+
         old_size = table.size()
         for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
             bar(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         table.resize(table_size)               # the whole table, not the part scrolled into view
-        painter = QPainter(device)
-        cache_axes(list(self._items.values()), False)     # cached axis pixmaps would blur when scaled
         try:
-            painter.setRenderHint(QPainter.RenderHint.Antialiasing)
-            painter.fillRect(QRectF(0, 0, width, height), QColor("white"))
-            painter.setPen(QColor("black"))
-            painter.drawText(QRectF(8, 0, width - 16, title_h), Qt.AlignmentFlag.AlignVCenter, self.title())
-            self.plots.scene().render(painter, QRectF(0, title_h, plots_size.width(), plots_size.height()),
-                                      self.plots.ci.sceneBoundingRect())
-            table.render(painter, QPoint(0, title_h + plots_size.height()))
+            export_painting(path, QSizeF(width, height), paint, self.tr("Design comparison"), WHITE)
         finally:
-            painter.end()
             table.resize(old_size)
             for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
                 bar(Qt.ScrollBarPolicy.ScrollBarAsNeeded)
-            cache_axes(list(self._items.values()), True)
-        if isinstance(device, QImage) and not device.save(buffer, kind.upper()):
-            raise OSError(0, self.tr("the file could not be written"))
-        buffer.close()
-        atomic_write(path, bytes(data))
 
     def title(self) -> str:
         """One line saying what is compared, for exported pictures."""
@@ -333,11 +269,6 @@ class CompareView(QWidget):
         self.speed_label.setText(self.tr("Speed (r/min):"))
         self.export_csv_button.setText(self.tr("Export CSV…"))
         self.export_image_button.setText(self.tr("Export PNG/SVG…"))
-        titles = (self.tr("Ram x (mm)"), self.tr("Ram v (m/s)"), self.tr("Ram a (m/s²)"),
-                  self.tr("Torque (N·m)"))
-        for key, title in zip(CURVES, titles):
-            self._items[key].setLabel("left", title)
-        self._items[CURVES[-1]].setLabel("bottom", self.tr("Crank angle (°)"))
         self._fill_table()
 
     def sizeHint(self) -> QSize:

@@ -22,8 +22,8 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout
 from core.sweep import default_range, design_value, spec_changes, varied_parameters
 from .explore_jobs import FIGURES, JobRunner, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
-from .messages import describe
 from .image_export import export_scene
+from .messages import describe
 from .model import DesignModel
 
 REFRESH_MS = 300
@@ -373,10 +373,11 @@ class ExploreView(QWidget):
             self._refresh_timer.start()      # the fixed parameters changed: the map is stale
 
     def export_image(self, path: str) -> None:
-        """Write the heat map to ``path``: SVG for ``.svg``, else a raster image, through the
-        one image export every view uses (clear errors, written atomically)."""
-        export_scene(self.map.scene(), self.map.sceneRect(), path,
-                     self.tr("Design space"), QColor("#ffffff"))
+        """Write the heat map with its colour bar to ``path``: SVG for ``.svg``, else a raster
+        image (errors as ``image_export.export_scene``'s; written atomically)."""
+        item = self.map.getPlotItem()
+        export_scene(item.scene(), item.sceneBoundingRect(), path, self.tr("Design-space map"),
+                     QColor("white"))
 
     def shutdown(self) -> None:
         """Stop any work and wait for it (the window is closing)."""

@@ -12,8 +12,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import pyqtgraph as pg
-from PySide6.QtCore import QEvent, Qt
+from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import QComboBox, QLabel, QVBoxLayout, QWidget
 
@@ -23,6 +22,7 @@ from .model import DesignModel
 from .plot_curves import Band, Curve
 from .plot_legend import LegendKey
 from .plot_stack import PlotStack, Series
+from .stack_view import StackView
 from .style import fmt, speed_colour
 
 SPEED_PLOTS = ("torque", "power", "energy")      # one curve per crank speed
@@ -61,7 +61,7 @@ def joint_forces(dyn: Dynamics, speed: int) -> dict[str, np.ndarray | None]:
     return out
 
 
-class ForcePlots(QWidget):
+class ForcePlots(StackView):
     """Torque, power, energy and joint-force plots over one revolution."""
 
     def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
@@ -126,32 +126,11 @@ class ForcePlots(QWidget):
         """Crank angle of the cursor lines, °."""
         return self._stack.plot("torque").cursor_positions()[0]
 
-    def plot_item(self, name: str) -> pg.PlotItem:
-        return self._stack.plot(name).item
-
-    def readout_text(self) -> str:
-        return self._stack.readout_text()
-
-    def stack(self) -> PlotStack:
-        return self._stack
-
-    def export_image(self, path: str) -> None:
-        """Write the plots to ``path``: SVG for ``.svg``, else a raster image (PNG …);
-        ValueError for an unknown type, OSError for a bad folder."""
-        self._stack.export_image(path)
-
-    def render(self, painter, target) -> None:
-        """Paint the plots into ``target`` of any QPainter (vector output)."""
-        self._stack.render(painter, target)
-
     # ---- what the stack draws -------------------------------------------
-    def _speed_name(self, rpm: float) -> str:
-        return self.tr("{0} r/min").format(f"{rpm:g}")
-
     def _curves(self, name: str) -> list[Curve]:
         dyn, summary = self._model.dynamics, self._model.dynamics_summary
         degrees = np.degrees(dyn.crank_angle)
-        labels = [self._speed_name(float(r)) for r in dyn.rpm]
+        labels = [self.speed_name(float(r)) for r in dyn.rpm]
         if name == "force":
             speed = min(self.selected_speed(), dyn.rpm.size - 1)
             symbols = self._joint_symbols()
@@ -187,7 +166,7 @@ class ForcePlots(QWidget):
     def group_titles(self) -> dict[str, str]:
         dyn = self._model.dynamics
         speed = min(self.selected_speed(), dyn.rpm.size - 1)
-        return {"joints": self.tr("Joint forces at {0}").format(self._speed_name(float(dyn.rpm[speed])))}
+        return {"joints": self.tr("Joint forces at {0}").format(self.speed_name(float(dyn.rpm[speed])))}
 
     def legend_units(self) -> dict[str, str]:
         return {"speeds": self.tr("r/min:")}
@@ -211,17 +190,12 @@ class ForcePlots(QWidget):
             combo.blockSignals(True)
             combo.clear()
             for rpm in rpms:
-                combo.addItem(self._speed_name(rpm), rpm)
+                combo.addItem(self.speed_name(rpm), rpm)
             combo.setCurrentIndex(rpms.index(chosen) if chosen in rpms else 0)
             combo.blockSignals(False)
         self._stack.invalidate()
 
     # ---- text ----------------------------------------------------------
-    def changeEvent(self, event: QEvent) -> None:
-        if event.type() == QEvent.Type.LanguageChange:
-            self._retranslate()
-        super().changeEvent(event)
-
     def _retranslate_names(self) -> None:
         # Full names for the read-out; axis titles short enough for a plot ~120 px tall.
         self._names = {"torque": self.tr("Crank driving torque"), "power": self.tr("Input power"),
@@ -239,5 +213,5 @@ class ForcePlots(QWidget):
         self._speed_label.setText(self.tr("Joint forces at:"))
         self._speed_combo.setToolTip(self.tr("Crank speed whose joint forces are plotted"))
         for i in range(self._speed_combo.count()):
-            self._speed_combo.setItemText(i, self._speed_name(self._speed_combo.itemData(i)))
+            self._speed_combo.setItemText(i, self.speed_name(self._speed_combo.itemData(i)))
         self._stack.retranslate()

@@ -1,6 +1,7 @@
 """Images of a graphics scene: PNG (or another raster type Qt writes) and SVG, one code path.
 
-The scheme and both plot stacks export through here, so they share the checks:
+The scheme, both plot stacks, the heat map and the comparison export through here
+(:func:`export_painting` takes any paint callback), so they share the checks:
 a target whose type is unknown raises ValueError, a folder that is missing or
 not writable raises OSError, both with a message naming the path and what is
 wrong; nothing is written then. The image is rendered in memory first and
@@ -19,7 +20,7 @@ import os
 from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QRectF
+from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QRectF, QSizeF
 from PySide6.QtGui import QColor, QImage, QImageWriter, QPainter, QPicture
 from PySide6.QtSvg import QSvgGenerator
 from PySide6.QtWidgets import QGraphicsScene
@@ -93,8 +94,39 @@ def export_scene(scene: QGraphicsScene, source: QRectF, path: str | os.PathLike,
                  background: QColor, prepare: Callable[[bool], None] | None = None) -> None:
     """Write the ``source`` part of ``scene`` to ``path``: SVG for ``.svg``, else a raster
     image at least EXPORT_WIDTH px wide (see :func:`image_type` for the errors)."""
+    export_painting(path, source.size(),
+                    lambda painter, page: render_scene(scene, source, painter, page, background,
+                                                       prepare),
+                    title, background)
+
+
+Paint = Callable[[QPainter, QRectF], None]
+
+
+def export_painting(path: str | os.PathLike, size: QSizeF, paint: Paint, title: str,
+                    background: QColor) -> None:
+    """Write what ``paint(painter, page)`` draws on a page of ``size`` (logical px) to
+    ``path``: SVG for ``.svg``, else a raster image at least EXPORT_WIDTH px wide.
+
+    The target is checked first (:func:`image_type`: ValueError, OSError), the picture
+    rendered in memory, then written atomically (OSError naming the path)."""
     kind = image_type(path)
-    page = QRectF(0.0, 0.0, source.width(), source.height())
+    data = painting_bytes(kind, size, paint, title, background)
+    try:
+        atomic_write(path, data)      # the old picture or the whole new one
+    except OSError as exc:
+        raise OSError(exc.errno, QCoreApplication.translate(
+            "ImageExport", "could not write {0}: {1}").format(path, exc.strerror), str(path)) from exc
+
+
+def painting_bytes(kind: str, size: QSizeF, paint: Paint, title: str,
+                   background: QColor) -> bytes:
+    """The bytes of an image of type ``kind`` ("svg" or a raster type Qt writes) of what
+    ``paint(painter, page)`` draws on a ``background``-filled page of ``size``.
+
+    A raster is at least EXPORT_WIDTH px wide, scaled through the device pixel ratio;
+    OSError if Qt cannot encode it."""
+    page = QRectF(0.0, 0.0, size.width(), size.height())
     data = QByteArray()
     buffer = QBuffer(data)
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
@@ -110,17 +142,15 @@ def export_scene(scene: QGraphicsScene, source: QRectF, path: str | os.PathLike,
         device = QImage(math.ceil(page.width() * scale), math.ceil(page.height() * scale),
                         QImage.Format.Format_ARGB32)
         device.setDevicePixelRatio(scale)
+        device.fill(background)
     painter = QPainter(device)
     try:
-        render_scene(scene, source, painter, page, background, prepare)
+        painter.fillRect(page, background)
+        paint(painter, page)
     finally:
         painter.end()
     if kind != "svg" and not device.save(buffer, kind.upper()):
         raise OSError(errno.EIO, QCoreApplication.translate(
-            "ImageExport", "Qt could not encode the image as {0}").format(kind.upper()), str(path))
+            "ImageExport", "Qt could not encode the image as {0}").format(kind.upper()))
     buffer.close()
-    try:
-        atomic_write(path, bytes(data))      # the old picture or the whole new one
-    except OSError as exc:
-        raise OSError(exc.errno, QCoreApplication.translate(
-            "ImageExport", "could not write {0}: {1}").format(path, exc.strerror), str(path)) from exc
+    return bytes(data)

@@ -22,6 +22,7 @@ from PySide6.QtGui import QUndoStack
 
 from core.dynamics import (Dynamics, DynamicsSummary, MassProperties, masses_for_design,
                            solve_dynamics, summarize)
+from core.compare import Candidate
 from core.errors import DesignError
 from core.geometry import Design
 from core.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, solve
@@ -89,8 +90,19 @@ class DesignModel(QObject):
          self._dynamics, self._dynamics_summary) = self._compute(self._inputs, self._masses)
         self.undo_stack = QUndoStack(self)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
+        self._comparison: tuple[Candidate, ...] = ()
 
     # ---- read access -------------------------------------------------
+    @property
+    def comparison_candidates(self) -> tuple[Candidate, ...]:
+        """The designs on the Compare tab, as the report's "include the comparison" finds
+        them. Session state beside the design: not saved, not undone."""
+        return self._comparison
+
+    def set_comparison_candidates(self, candidates) -> None:
+        """Set by the Compare tab whenever its list changes."""
+        self._comparison = tuple(candidates)
+
     @property
     def spec(self) -> Spec:
         """The inputs as the user last typed them (may be invalid)."""

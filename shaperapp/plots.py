@@ -12,8 +12,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import pyqtgraph as pg
-from PySide6.QtCore import QEvent
 from PySide6.QtGui import QAction, QColor, Qt
 from PySide6.QtWidgets import QComboBox, QLabel, QMenu, QToolButton, QVBoxLayout, QWidget
 
@@ -21,6 +19,7 @@ from .model import DesignModel
 from .plot_curves import Band, Curve
 from .plot_legend import LegendKey
 from .plot_stack import PlotStack, Series
+from .stack_view import StackView
 from .style import RETURN_FILL, WORK_FILL, fmt, speed_colour
 
 PLOT_NAMES = ("ram_x", "ram_v", "ram_a", "lever_angle", "lever_omega", "lever_alpha")
@@ -46,7 +45,7 @@ def motion_values(model: DesignModel, name: str) -> np.ndarray:
     return getattr(motion, name)
 
 
-class PlotsWidget(QWidget):
+class PlotsWidget(StackView):
     """Ram displacement, velocity, acceleration and optional lever plots of one cycle."""
 
     def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
@@ -132,14 +131,6 @@ class PlotsWidget(QWidget):
         """(speed label, x, y) of the dots marking each speed's value at the cursor."""
         return self._stack.plot(plot_name).dots()
 
-    def readout_text(self) -> str:
-        """The mouse read-out (plain text)."""
-        return self._stack.readout_text()
-
-    def plot_item(self, plot_name: str) -> pg.PlotItem:
-        """The pyqtgraph plot of ``plot_name`` (in the scene only while shown)."""
-        return self._stack.plot(plot_name).item
-
     def legend_names(self) -> list[str]:
         """Legend entries in order: the speeds, then in time mode the stroke key."""
         return self._stack.legend("main").names()
@@ -152,26 +143,11 @@ class PlotsWidget(QWidget):
         bands = self._stack.plot("ram_x").bands()
         return bands[0] if self._mode == ANGLE and bands else None
 
-    def stack(self) -> PlotStack:
-        return self._stack
-
-    def export_image(self, path: str) -> None:
-        """Write the shown plots to ``path``: SVG for ``.svg``, else a raster image (PNG …)
-        at least 1600 px wide; ValueError for an unknown type, OSError for a bad folder."""
-        self._stack.export_image(path)
-
-    def render(self, painter, target) -> None:
-        """Paint the shown plots into ``target`` of any QPainter (vector output)."""
-        self._stack.render(painter, target)
-
     # ---- what the stack draws -------------------------------------------
-    def _speed_name(self, rpm: float) -> str:
-        return self.tr("{0} r/min").format(f"{rpm:g}")
-
     def _curves(self, name: str) -> list[Curve]:
         motion = self._model.motion
         values = motion_values(self._model, name)
-        labels = [self._speed_name(float(r)) for r in motion.rpm]
+        labels = [self.speed_name(float(r)) for r in motion.rpm]
         shorts = [f"{float(r):g}" for r in motion.rpm]        # under the legend's "r/min"
         if self._mode == ANGLE:
             x = np.degrees(motion.crank_angle)
@@ -225,7 +201,7 @@ class PlotsWidget(QWidget):
         motion = self._model.motion
         if self._mode == ANGLE:
             return math.degrees(float(motion.crank_angle[index]))
-        return {self._speed_name(float(rpm)): float(motion.time[i, index])
+        return {self.speed_name(float(rpm)): float(motion.time[i, index])
                 for i, rpm in enumerate(motion.rpm)}
 
     def _on_click(self, x: float) -> None:
@@ -235,11 +211,6 @@ class PlotsWidget(QWidget):
         self._model.set_angle_deg(x)
 
     # ---- text ----------------------------------------------------------
-    def changeEvent(self, event: QEvent) -> None:
-        if event.type() == QEvent.Type.LanguageChange:
-            self._retranslate()
-        super().changeEvent(event)
-
     def _retranslate_names(self) -> None:
         # Full names for the menu and the read-out; axis titles short enough to stand
         # beside a plot about 100 px tall.

@@ -9,13 +9,16 @@ cannot disagree.
 """
 from __future__ import annotations
 
+import errno
 import math
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QLineF, QPointF, QRectF, QSize, Qt
+from PySide6.QtCore import (QBuffer, QByteArray, QCoreApplication, QIODevice, QLineF, QPointF,
+                            QRectF, QSize, Qt)
 from PySide6.QtGui import QColor, QFont, QFontMetricsF, QImage, QPainter, QPen, QPolygonF
 from PySide6.QtSvg import QSvgGenerator
 
+from core.atomic import atomic_write
 from core.polygons import Polygon, nice_scale, paper
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
@@ -271,15 +274,19 @@ def drawing_size_mm(polygon: Polygon, scale: float) -> tuple[float, float]:
 
 
 def export_polygon(path: str, polygon: Polygon, scale: float) -> None:
-    """Write ``polygon`` at true scale: SVG (sized in mm) or a raster image by suffix."""
+    """Write ``polygon`` at true scale: SVG (sized in mm) or a raster image by suffix,
+    atomically (rendered in memory, then ``atomic_write``); OSError names the path."""
     target = Path(path)
     suffix = target.suffix.lower()
     w_mm, h_mm = drawing_size_mm(polygon, scale)
+    data = QByteArray()
+    buffer = QBuffer(data)
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
     if suffix == ".svg":
         px = SVG_DPI / 25.4
         size = QSize(math.ceil(w_mm * px), math.ceil(h_mm * px))
         device = QSvgGenerator()
-        device.setFileName(str(target))
+        device.setOutputDevice(buffer)
         device.setSize(size)
         device.setViewBox(QRectF(0, 0, size.width(), size.height()))
         device.setResolution(int(SVG_DPI))
@@ -304,7 +311,7 @@ def export_polygon(path: str, polygon: Polygon, scale: float) -> None:
         paint_polygon(painter, rect, polygon, scale, px_per_mm=px, font=font)
     finally:
         painter.end()
-    if suffix != ".svg" and not device.save(str(target)):
-        raise OSError(f"could not write {target}")
-    if not target.exists():
-        raise OSError(f"could not write {target}")
+    if suffix != ".svg" and not device.save(buffer, suffix[1:].upper()):
+        raise OSError(errno.EIO, f"could not encode {target}", str(target))
+    buffer.close()
+    atomic_write(target, bytes(data))

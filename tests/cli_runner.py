@@ -27,3 +27,16 @@ def shaper_in_process(*args):
         except SystemExit as exc:
             status = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
     return status, out.getvalue(), err.getvalue()
+
+
+def shaper_process(*args, ascii_console: bool = False, cwd=None):
+    """``python -m core ARGS`` as a real process, its console UTF-8 or (``ascii_console``)
+    ASCII, whose output must then be ASCII: (exit status, stdout, stderr)."""
+    import os
+    env = dict(os.environ, PYTHONIOENCODING="ascii" if ascii_console else "utf-8")
+    done = subprocess.run([sys.executable, "-m", "core", *[str(a) for a in args]], capture_output=True,
+                          env=env, cwd=cwd, timeout=120)
+    if ascii_console:
+        assert done.stdout.isascii() and done.stderr.isascii()
+    return (done.returncode, done.stdout.decode("utf-8", "replace"),
+            done.stderr.decode("utf-8", "replace"))

@@ -3,10 +3,22 @@ import os
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
+from typing import Iterator  # noqa: E402
+
 import pytest  # noqa: E402
 
+from shaperapp.main_window import MainWindow  # noqa: E402
 from shaperapp.model import DesignModel  # noqa: E402
 from shaperapp.scheme import SchemeWidget  # noqa: E402
+
+from gui_helpers import main_window, shown  # noqa: E402
+
+
+@pytest.fixture
+def window(qtbot, tmp_path) -> Iterator[MainWindow]:
+    """The assembled window (see :func:`main_window`), settings under ``tmp_path``."""
+    with main_window(tmp_path) as win:
+        yield win
 
 
 @pytest.fixture
@@ -19,9 +31,4 @@ def model(qtbot) -> DesignModel:
 @pytest.fixture
 def scheme(qtbot, model) -> SchemeWidget:
     """The scheme widget shown at a realistic size."""
-    widget = SchemeWidget(model)
-    qtbot.addWidget(widget)
-    widget.resize(900, 650)
-    widget.show()
-    qtbot.waitExposed(widget)
-    return widget
+    return shown(qtbot, SchemeWidget(model), 900, 650)

@@ -3,6 +3,7 @@ import csv
 import io
 import json
 import math
+import re
 import threading
 
 
@@ -42,3 +43,20 @@ def read_fifo_in_background(path) -> tuple[threading.Thread, list[str]]:
     reader = threading.Thread(target=lambda: received.append(path.read_text()), daemon=True)
     reader.start()
     return reader, received
+
+
+def error_names(stderr: str) -> list[str]:
+    """What the one error line names: the option(s) or argument before the first ': '
+    (``-o/--output`` gives both, ``--crank (L1)`` the option); none for the user's
+    own stray words. Fails unless stderr is exactly one ``shaper: error:`` line."""
+    lines = stderr.splitlines()
+    assert len(lines) == 1, stderr
+    assert lines[0].startswith("shaper: error: ") and "Traceback" not in stderr
+    message = lines[0][len("shaper: error: "):]
+    if message.startswith(("unrecognized arguments:", "ambiguous option:")):
+        return []
+    if message.startswith("argument "):
+        head = re.match(r"argument (\S+?):", message).group(1)
+    else:
+        head = re.sub(r" \((L[1-4]|default|from \$\w+)\)$", "", message.split(": ")[0])
+    return head.split("/")

@@ -13,8 +13,6 @@ never drawn (the largest requests are timed in test_cli_limits.py instead).
 """
 import os
 import re
-import subprocess
-import sys
 import tempfile
 
 import pytest
@@ -25,8 +23,8 @@ from core.cli import CORE_COMMANDS, build_parser
 from core.io import save_design
 from core.spec import Spec
 
-from cli_runner import shaper_in_process
-from output_checks import finite_csv, finite_json
+from cli_runner import shaper_in_process, shaper_process
+from output_checks import error_names, finite_csv, finite_json
 
 FOLDER = tempfile.mkdtemp(prefix="shaper-fuzz-")
 GOOD_FILE = os.path.join(FOLDER, "good.json")
@@ -34,15 +32,16 @@ ROD_FILE = os.path.join(FOLDER, "rod.json")
 save_design(GOOD_FILE, Spec(), [40.0, 60.0], 2.0)
 save_design(ROD_FILE, Spec(mode="dimensions", crank=120, frame=300, lever=600, variant="rod",
                            rod_input="ratio", rod_ratio=0.35), [30.0], 3.0)
-with open(os.path.join(FOLDER, "bad.json"), "w") as handle:
+BAD_FILE = os.path.join(FOLDER, "bad.json")
+with open(BAD_FILE, "w") as handle:
     handle.write('{"format": "shaper-design", "version": 1, "spec": {"crank": "x"}}')
 
 
 def _options() -> dict[str, dict[str, object]]:
     """Each computing subcommand's options: option string → its argparse action.
 
-    ``library`` has actions of its own and keeps a database; its command line is
-    tested in test_cli_library.py instead."""
+    ``library`` has actions of its own and keeps a database; test_cli_fuzz_library.py
+    fuzzes it."""
     parser = build_parser()
     sub = next(a for a in parser._actions if a.dest == "command")
     options = {}
@@ -174,18 +173,8 @@ def check_finite_output(text: str) -> None:
 
 
 def check_error_line(command: str, stderr: str) -> None:
-    lines = stderr.splitlines()
-    assert len(lines) == 1, stderr
-    assert lines[0].startswith("shaper: error: ") and "Traceback" not in stderr
-    message = lines[0][len("shaper: error: "):]
-    if message.startswith(("unrecognized arguments:", "ambiguous option:")):
-        return                      # names the user's own stray words
-    if message.startswith("argument "):
-        named = re.match(r"argument (\S+?):", message).group(1).split("/")
-    else:
-        named = [re.sub(r" \(L[1-4]\)$", "", message.split(": ")[0])]
-    for option in named:
-        assert option in OPTIONS[command], f"{command} has no option {option}: {message}"
+    for option in error_names(stderr):
+        assert option in OPTIONS[command], f"{command} has no option {option}: {stderr}"
 
 
 def csv_target(argv: list[str]) -> str | None:
@@ -218,14 +207,7 @@ def test_fuzzed_command_lines_succeed_finitely_or_fail_in_one_line(argv):
 @settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(argv=command_lines(), ascii_console=st.booleans())
 def test_fuzzed_command_lines_as_real_processes(argv, ascii_console):
-    env = dict(os.environ, PYTHONIOENCODING="ascii" if ascii_console else "utf-8")
-    done = subprocess.run([sys.executable, "-m", "core", *argv], capture_output=True, env=env,
-                          cwd=FOLDER, timeout=120)
-    stdout = done.stdout.decode("utf-8", "replace")
-    stderr = done.stderr.decode("utf-8", "replace")
-    if ascii_console:
-        assert done.stdout.isascii() and done.stderr.isascii()
-    check_run(argv, done.returncode, stdout, stderr)
+    check_run(argv, *shaper_process(*argv, ascii_console=ascii_console, cwd=FOLDER))
 
 
 def test_the_fuzzer_reaches_success_and_every_subcommand():

@@ -167,3 +167,21 @@ def test_help_lists_every_action():
     run = shaper("library", "--help")
     for action in ("add", "list", "show", "remove", "export", "import", "compare", "backup"):
         assert action in run.stdout
+
+
+def test_wrong_paths_are_usage_errors(lib, tmp_path):
+    """Found by the library fuzz: a wrong path is the user's input (exit 2, naming the
+    option), and an empty --library is refused rather than taken for the default library."""
+    env_library = tmp_path / "env.sqlite"
+    run = subprocess.run([sys.executable, "-m", "core", "library", "add", "--crank", "100", "--K", "1.4",
+                          "--stroke", "300", "--name", "x", "--library", ""], capture_output=True,
+                         text=True, env=dict(os.environ, SHAPER_LIBRARY=str(env_library)))
+    one_error_line(run, "--library")
+    assert not env_library.exists()
+    one_error_line(lib_cmd(tmp_path, "list"), "--library")                     # a folder
+    one_error_line(lib_cmd(tmp_path / "no" / "lib.sqlite", "add", "--crank", 100, "--K", 1.4,
+                           "--stroke", 300, "--name", "x"), "--library")       # no such folder
+    one_error_line(lib_cmd(lib, "backup", "-o", tmp_path), "--output")
+    one_error_line(lib_cmd(lib, "backup", "-o", tmp_path / "no" / "b.sqlite"), "--output")
+    one_error_line(lib_cmd(lib, "export", "base", "-o", ""), "-o")
+    one_error_line(lib_cmd(lib, "export", "base", "-o", tmp_path / "no" / "b.shaper.json"), "-o")

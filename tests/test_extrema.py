@@ -21,6 +21,7 @@ from core.dynamics import MassProperties, solve_dynamics, summarize
 from core.errors import DesignError
 from core.geometry import from_dimensions, rod_drive_margin, synthesize
 from core.kinematics import pressure_angle, shape
+from core.extrema import grid_argmax
 from core.metrics import analyze, lever_peaks
 
 DENSE = 100_001
@@ -197,3 +198,19 @@ def test_peak_torque_is_the_true_extremum(design, rpm):
     # The dense reference can only fall short of the true peak (a switch between samples).
     assert top - 1e-9 * scale <= summary.max_torque_N_m <= top + 1e-6 * scale
     assert bottom - 1e-6 * scale <= summary.min_torque_N_m <= bottom + 1e-9 * scale
+
+
+def test_grid_argmax_says_where_the_maximum_lies():
+    """sin(x − c) on a coarse periodic grid peaks at c + π/2 (mod 2π); a rising line on a
+    non-wrapping segment peaks at its last sample."""
+    shift = np.array([0.0, 0.3, 2.0, 5.9])[:, None]
+    x = np.arange(16) * (2 * math.pi / 16)
+    fun = lambda t, c: (np.sin(t - c), np.cos(t - c))  # noqa: E731
+    best, where = grid_argmax(fun, x, np.sin(x - shift), np.cos(x - shift), args=(shift,),
+                              segments=[(0, 16, 2 * math.pi)])
+    np.testing.assert_allclose(best, 1.0, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(np.mod(where - shift[:, 0] - math.pi / 2 + math.pi, 2 * math.pi),
+                               math.pi, rtol=0, atol=1e-9)
+    line = lambda t: (2.0 * t, np.full_like(t, 2.0))  # noqa: E731
+    best, where = grid_argmax(line, x, 2.0 * x[None], np.full((1, 16), 2.0))
+    assert (best.tolist(), where.tolist()) == ([2.0 * x[-1]], [x[-1]])

@@ -1,6 +1,7 @@
 """The Explore tab driven like a user: map, hover, click to load, optimize, cancel."""
 import math
 import time
+from xml.etree import ElementTree
 
 import numpy as np
 import pytest
@@ -11,15 +12,13 @@ from core.sweep import evaluate
 from shaperapp.explore_view import ExploreView
 from shaperapp.messages import describe
 
+from gui_helpers import shown
+
 
 @pytest.fixture
 def view(qtbot, model):
     model.set_spec(variant="rod", rod_input="ratio", rod_ratio=0.3, time_ratio=1.46, stroke=312.0)
-    widget = ExploreView(model)
-    qtbot.addWidget(widget)
-    widget.resize(760, 820)
-    widget.show()
-    qtbot.waitExposed(widget)
+    widget = shown(qtbot, ExploreView(model), 760, 820)
     yield widget
     widget.shutdown()
 
@@ -133,6 +132,12 @@ def test_explore_tab_in_the_main_window(qtbot, tmp_path):
     target = tmp_path / "map.png"
     window.explore.export_image(str(target))
     assert target.stat().st_size > 1000
+    svg = tmp_path / "map.svg"
+    window.explore.export_image(str(svg))          # Qt's SVG writer (pyqtgraph's fails on Qt 6.11)
+    root = ElementTree.parse(svg).getroot()
+    assert root.find("{http://www.w3.org/2000/svg}title").text == "Design-space map"
+    with pytest.raises(ValueError):
+        window.explore.export_image(str(tmp_path / "map.txt"))
     window.explore.shutdown()
     assert math.isfinite(float(np.nanmax(window.explore.result.figures["accel"])))
 

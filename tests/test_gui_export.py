@@ -13,17 +13,14 @@ from shaperapp.forces_panel import ForcesPanel
 from shaperapp.plots import PlotsWidget
 from shaperapp.scheme import SchemeWidget
 
+from gui_helpers import shown
+
 VIEWS = {"scheme": SchemeWidget, "plots": PlotsWidget, "forces": ForcesPanel}
 
 
 @pytest.fixture(params=list(VIEWS))
 def view(request, qtbot, model):
-    widget = VIEWS[request.param](model)
-    qtbot.addWidget(widget)
-    widget.resize(800, 600)
-    widget.show()
-    qtbot.waitExposed(widget)
-    return widget
+    return shown(qtbot, VIEWS[request.param](model), 800, 600)
 
 
 @pytest.mark.parametrize("name", ["picture.xyz", "picture", "picture.png.txt"])

@@ -21,6 +21,8 @@ from shaperapp.forces_panel import ForcesPanel
 from shaperapp.messages import describe
 from shaperapp.model import DesignModel
 
+from gui_helpers import shown
+
 SPEED_CURVES = ("torque", "power", "energy")
 JOINT_ARRAYS = {"O2": ("o2_x", "o2_y"), "A": ("a_x", "a_y"), "O4": ("o4_x", "o4_y"),
                 "B": ("b_x", "b_y"), "C": ("c_x", "c_y")}
@@ -28,12 +30,7 @@ JOINT_ARRAYS = {"O2": ("o2_x", "o2_y"), "A": ("a_x", "a_y"), "O4": ("o4_x", "o4_
 
 @pytest.fixture
 def panel(qtbot, model) -> ForcesPanel:
-    w = ForcesPanel(model)
-    qtbot.addWidget(w)
-    w.resize(1000, 800)
-    w.show()
-    qtbot.waitExposed(w)
-    return w
+    return shown(qtbot, ForcesPanel(model), 1000, 800)
 
 
 def core_results(model: DesignModel, masses: MassProperties):

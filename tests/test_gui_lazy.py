@@ -4,24 +4,20 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication
 
 from core.dynamics import masses_for_design, solve_dynamics
 from core.kinematics import solve
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
+
+from gui_helpers import main_window
 
 
 @pytest.fixture
 def window(qtbot, tmp_path):
-    win = MainWindow(DesignModel(), QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
-    win.resize(1366, 768)
-    win.show()
-    qtbot.waitExposed(win)
-    yield win
-    win.model.set_clean(win.model.path)
-    win.close()
+    with main_window(tmp_path) as win:
+        win.resize(1366, 768)
+        qtbot.waitExposed(win)
+        yield win
 
 
 def test_hidden_force_plots_wait_until_shown(window):

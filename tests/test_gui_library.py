@@ -12,7 +12,8 @@ from core.io import load_design, save_design
 from core.library import Library
 from core.spec import Spec
 from shaperapp import library_pane
-from shaperapp.compare_view import CompareView, design_pen
+from shaperapp.compare_plots import design_pen
+from shaperapp.compare_view import CompareView
 from shaperapp.library_pane import LibraryPane
 from shaperapp.library_table import COLUMNS
 
@@ -196,7 +197,7 @@ def test_compare_selected_designs(pane, model, qtbot, tmp_path):
     assert view.table.item(row, 0).text().startswith("★")       # the block has the lower max |a|
     assert "(+" in view.table.item(row, 1).text()
     # every design its own colour and line style, in every plot
-    curves = view._items["ram_v_m_s"].listDataItems()
+    curves = view.plots.item("ram_v_m_s").listDataItems()
     styles = {(c.opts["pen"].color().name(), c.opts["pen"].style()) for c in curves}
     assert len(curves) == 2 and len(styles) == 2
     assert design_pen(0).style() != design_pen(1).style()

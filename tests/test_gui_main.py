@@ -3,26 +3,11 @@ import subprocess
 import sys
 
 import numpy as np
-import pytest
-from PySide6.QtCore import QSettings
 
 from core.geometry import synthesize
 from core.kinematics import solve
-from shaperapp import i18n
 from shaperapp.main_window import MainWindow
 from shaperapp.model import DesignModel
-
-
-@pytest.fixture
-def window(qtbot, tmp_path):
-    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
-    win = MainWindow(DesignModel(), settings)
-    win.show()
-    yield win
-    win.model.set_clean(win.model.path)  # no "unsaved changes" question at teardown
-    win.close()
-    win.deleteLater()
-    i18n.set_language("en")
 
 
 def test_opens_on_default_design(window):

@@ -10,6 +10,7 @@ from shaperapp.document import Document
 from shaperapp.main_window import MainWindow
 from shaperapp.model import MAX_GUI_SAMPLES, DesignModel
 
+from gui_helpers import main_window
 from hostile_files import CASES, VALID, build_case
 
 
@@ -18,13 +19,8 @@ def window(qapp, tmp_path_factory):
     # The window shows each failure in a modal box; here the message is read from the signal.
     mp = pytest.MonkeyPatch()
     mp.setattr(MainWindow, "_show_failure", lambda self, message: None)
-    settings = QSettings(str(tmp_path_factory.mktemp("hostile") / "s.ini"), QSettings.Format.IniFormat)
-    win = MainWindow(DesignModel(), settings)
-    win.show()
-    yield win
-    win.model.set_clean(win.model.path)
-    win.close()
-    win.deleteLater()
+    with main_window(tmp_path_factory.mktemp("hostile")) as win:
+        yield win
     mp.undo()
 
 

@@ -20,27 +20,19 @@ from shaperapp.force_plots import ForcePlots
 from shaperapp.plots import PlotsWidget
 from shaperapp.style import SPEED_COLOURS, fmt
 
+from gui_helpers import shown
+
 SIXTEEN = [20.0 + 5.0 * i for i in range(16)]
 
 
 @pytest.fixture
 def plots(qtbot, model) -> PlotsWidget:
-    w = PlotsWidget(model)
-    qtbot.addWidget(w)
-    w.resize(560, 640)          # the kinematics pane of a 1366 px wide window
-    w.show()
-    qtbot.waitExposed(w)
-    return w
+    return shown(qtbot, PlotsWidget(model), 560, 640)    # the kinematics pane at 1366 px
 
 
 @pytest.fixture
 def forces(qtbot, model) -> ForcePlots:
-    w = ForcePlots(model)
-    qtbot.addWidget(w)
-    w.resize(520, 640)
-    w.show()
-    qtbot.waitExposed(w)
-    return w
+    return shown(qtbot, ForcePlots(model), 520, 640)
 
 
 def lab(hex_colour: str) -> np.ndarray:
@@ -234,10 +226,7 @@ def assert_no_overlap(rects) -> None:
 def test_tick_labels_never_overlap(qtbot, model, width):
     plots, forces = PlotsWidget(model), ForcePlots(model)
     for widget, bottom in ((plots, "ram_a"), (forces, "force")):
-        qtbot.addWidget(widget)
-        widget.resize(width, 520)
-        widget.show()
-        qtbot.waitExposed(widget)
+        shown(qtbot, widget, width, 520)
         for mode in (("angle", "time") if widget is plots else ("angle",)):
             if widget is plots:
                 widget.set_x_mode(mode)

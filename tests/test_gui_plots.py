@@ -19,15 +19,12 @@ from core.kinematics import crank_angles, solve
 from shaperapp.model import DesignModel
 from shaperapp.plots import LEVER_PLOTS, PLOT_NAMES, PlotsWidget
 
+from gui_helpers import shown
+
 
 @pytest.fixture
 def widget(qtbot, model) -> PlotsWidget:
-    w = PlotsWidget(model)
-    qtbot.addWidget(w)
-    w.resize(900, 700)
-    w.show()
-    qtbot.waitExposed(w)
-    return w
+    return shown(qtbot, PlotsWidget(model), 900, 700)
 
 
 def core_curves(model: DesignModel, name: str) -> tuple[np.ndarray, np.ndarray]:

@@ -13,6 +13,8 @@ from core.polygons import nice_scale, paper, polygons
 from shaperapp.polygon_paint import export_polygon, paint_polygon
 from shaperapp.polygon_view import PolygonView
 
+from gui_helpers import shown
+
 LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70,
                        cut_force_N=7000, cut_height_mm=80)
 
@@ -75,12 +77,7 @@ def test_svg_export_is_true_scale(qtbot, tmp_path):
 
 @pytest.fixture
 def view(qtbot, model):
-    widget = PolygonView(model)
-    qtbot.addWidget(widget)
-    widget.resize(760, 620)
-    widget.show()
-    qtbot.waitExposed(widget)
-    return widget
+    return shown(qtbot, PolygonView(model), 760, 620)
 
 
 def test_view_follows_the_animation_and_speed(view, model):

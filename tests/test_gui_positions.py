@@ -7,15 +7,12 @@ from core.dynamics import masses_for_design
 from core.positions import SPECIAL_NAMES, display_values, number_text, position_table, positions
 from shaperapp.positions_view import PositionsView
 
+from gui_helpers import shown
+
 
 @pytest.fixture
 def view(qtbot, model):
-    widget = PositionsView(model)
-    qtbot.addWidget(widget)
-    widget.resize(900, 600)
-    widget.show()
-    qtbot.waitExposed(widget)
-    return widget
+    return shown(qtbot, PositionsView(model), 900, 600)
 
 
 def cell(view, row, column_name):

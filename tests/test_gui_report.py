@@ -5,25 +5,9 @@ import shutil
 import stat
 import subprocess
 
-import pytest
-from PySide6.QtCore import QSettings
-
-from shaperapp import i18n
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
+from core.compare import Candidate
+from core.spec import Spec
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
-
-
-@pytest.fixture
-def window(qtbot, tmp_path):
-    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
-    win = MainWindow(DesignModel(), settings)
-    win.show()
-    yield win
-    win.model.set_clean(win.model.path)
-    win.close()
-    win.deleteLater()
-    i18n.set_language("en")
 
 
 def test_window_has_the_deliverables(window, qtbot):
@@ -61,3 +45,31 @@ def test_export_writes_pdf_and_html_of_the_design_on_screen(window, tmp_path):
     assert export_report(window.model, str(html), "en") == 0
     assert "<svg" in html.read_text(encoding="utf-8")
     assert [p.name for p in tmp_path.iterdir() if re.match(r"\..*\.tmp$", p.name)] == []
+
+
+def test_dialog_includes_the_compare_tabs_designs(window, qtbot, tmp_path):
+    """The dialog offers the comparison only when the Compare tab has other designs; the
+    design on screen itself (same inputs and loads) is not compared with itself."""
+    dialog = ReportOptionsDialog(window.model, window)
+    qtbot.addWidget(dialog)
+    assert not dialog.include_comparison.isEnabled() and dialog.options().compare == ()
+    model = window.model
+    other = Candidate("K 1.6", Spec(time_ratio=1.6), model.masses)
+    window.compare.set_candidates([Candidate("on screen", model.valid_spec, model.masses), other])
+    dialog = ReportOptionsDialog(model, window)
+    qtbot.addWidget(dialog)
+    assert dialog.include_comparison.isEnabled() and dialog.include_comparison.isChecked()
+    assert dialog.options().compare == (other,)
+    pdf = tmp_path / "r.pdf"
+    export_report(model, str(pdf), "en", dialog.options())
+    if shutil.which("pdftotext"):
+        text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True).stdout
+        assert "Comparison with other designs" in text and "K 1.6" in text
+    dialog.include_comparison.setChecked(False)
+    assert dialog.options().compare == ()
+    window.compare.set_candidates([Candidate(f"K {k}", Spec(time_ratio=k), None)
+                                   for k in (1.2, 1.3, 1.35, 1.45, 1.5, 1.55)])
+    dialog = ReportOptionsDialog(model, window)
+    qtbot.addWidget(dialog)
+    assert not dialog.include_comparison.isEnabled()          # six others: one too many
+    assert "at most 5" in dialog.include_comparison.toolTip()

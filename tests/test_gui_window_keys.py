@@ -4,31 +4,24 @@ title, one font weight, and clear image-export errors."""
 import re
 
 import pytest
-from PySide6.QtCore import QCoreApplication, QSettings, Qt, QTranslator
+from PySide6.QtCore import QCoreApplication, Qt, QTranslator
 from PySide6.QtGui import QFont, QGuiApplication, QKeySequence
 from PySide6.QtWidgets import QApplication, QInputDialog
 
-from shaperapp import i18n
 from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
+
+from gui_helpers import main_window
 
 
 @pytest.fixture
 def window(qtbot, tmp_path, monkeypatch):
     failures = []
     monkeypatch.setattr(MainWindow, "_show_failure", lambda self, message: failures.append(message))
-    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
-    win = MainWindow(DesignModel(), settings)
-    win.failures = failures
-    win.show()
-    win.activateWindow()
-    qtbot.waitActive(win)
-    yield win
-    win.animation.play_action.setChecked(False)
-    win.model.set_clean(win.model.path)
-    win.close()
-    win.deleteLater()
-    i18n.set_language("en")
+    with main_window(tmp_path) as win:
+        win.failures = failures
+        win.activateWindow()
+        qtbot.waitActive(win)
+        yield win
 
 
 def focus_field(win, qtbot, name="time_ratio"):

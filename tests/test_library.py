@@ -272,4 +272,4 @@ def test_location_rules(tmp_path, monkeypatch):
 def test_missing_folder_is_not_created_for_an_explicit_path(tmp_path):
     with pytest.raises(LibraryError) as err:
         Library(tmp_path / "no" / "such" / "lib.sqlite")
-    assert err.value.kind == "io" and not (tmp_path / "no").exists()
+    assert err.value.kind == "location" and not (tmp_path / "no").exists()

@@ -143,3 +143,85 @@ def test_no_chinese_font_names_the_package(qtbot, monkeypatch, tmp_path, capsys)
     err = capsys.readouterr().err.strip().splitlines()
     assert status == 2 and len(err) == 1 and "fonts-noto-cjk" in err[0]
     assert not (tmp_path / "r.pdf").exists()
+
+
+# ---- the comparison section (issue 10 in the report) -----------------------------
+OTHER = ["--crank", "100", "--K", "1.6", "--stroke", "300", "--rod-ratio", "0.3", "--rpm", "40"]
+
+
+@pytest.fixture(scope="module")
+def compared(tmp_path_factory):
+    """A library with the report's design ("Classic"), a loaded rod design and a block
+    design without loads; a design file; the report comparing them, in English and Chinese."""
+    folder = tmp_path_factory.mktemp("compare")
+    lib = folder / "lib.sqlite"
+    for name, words in (("Classic", DESIGN + SPEEDS + LOADS), ("rod 1.6", OTHER + LOADS),
+                        ("no loads", ["--crank", "110", "--K", "1.4", "--stroke", "300"])):
+        assert shaper("library", "add", *words, "--name", name, "--library", lib).returncode == 0
+    design = folder / "wide.shaper.json"
+    assert shaper("library", "add", "--crank", "90", "--K", "1.5", "--stroke", "320", "--name", "x",
+                  "--library", folder / "other.sqlite").returncode == 0
+    assert shaper("library", "export", "x", "-o", design, "--library", folder / "other.sqlite").returncode == 0
+    out = {}
+    for name, extra in (("en.pdf", []), ("zh.pdf", ["--lang", "zh"]), ("en.html", ["--html"])):
+        result = shaper("report", *DESIGN, *SPEEDS, *LOADS, "--title", "Classic", "--compare", "rod 1.6",
+                        "no loads", "--compare-file", design, "--library", lib, "-o", folder / name, *extra)
+        assert result.returncode == 0, result.stderr
+        out[name] = folder / name
+    table = shaper("library", "compare", "Classic", "rod 1.6", "no loads", "--file", design,
+                   "--rpm", SPEEDS[1], "--library", lib)
+    assert table.returncode == 0, table.stderr
+    return out, table.stdout, lib, design
+
+
+def compare_cells(text: str) -> list[str]:
+    """Every number-bearing cell 'shaper library compare' prints (best marks dropped)."""
+    cells = []
+    for line in text.splitlines()[2:]:                 # the header and the rpm row
+        if line.startswith("("):
+            break
+        cells += [c.removesuffix(" *") for c in re.split(r"\s{2,}", line.strip())[1:]
+                  if re.search(r"\d", c)]
+    return cells
+
+
+@needs_pdftotext
+@pytest.mark.parametrize("name", ["en.pdf", "zh.pdf"])
+def test_comparison_section_has_library_compares_numbers(compared, name):
+    reports, table, _, _ = compared
+    cells = compare_cells(table)
+    assert len(cells) > 40 and any("(-" in c for c in cells) and any("(+" in c for c in cells)
+    text = squash(pdf_text(reports[name]))
+    missing = [c for c in cells if c not in text]
+    assert missing == []
+    assert text.count("★") >= 3                      # a best in the |a|, torque and J_F rows
+
+
+def test_comparison_in_html_and_its_title(compared):
+    reports, table, _, _ = compared
+    html = reports["en.html"].read_text(encoding="utf-8")
+    text = squash(re.sub(r"<[^>]+>", " ", html.split("<body>", 1)[1]))
+    assert "Comparison with other designs" in text and "“rod 1.6”" in text and "“wide”" in text
+    assert [c for c in compare_cells(table) if c not in text] == []
+
+
+@pytest.mark.parametrize("words, option", [
+    (["--compare", "nobody"], "--compare"),
+    (["--compare", "rod 1.6", "rod 1.6"], "--compare"),
+    (["--compare", "rod 1.6", "no loads", "Classic", "rod 1.6", "no loads", "Classic"], "--compare"),
+    (["--compare-file", "missing.json"], "--compare-file"),
+])
+def test_bad_comparison_is_one_line(compared, tmp_path, words, option):
+    _, _, lib, _ = compared
+    result = shaper("report", *DESIGN, *words, "--library", lib, "-o", tmp_path / "r.pdf")
+    assert result.returncode == 2, result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"shaper: error: {option}")
+    assert not (tmp_path / "r.pdf").exists()
+
+
+def test_comparison_from_a_missing_library_names_it(tmp_path):
+    result = shaper("report", *DESIGN, "--compare", "a", "--library", tmp_path / "none.sqlite",
+                    "-o", tmp_path / "r.pdf")
+    assert result.returncode == 2 and result.stderr.startswith("shaper: error: --library")
+    assert not (tmp_path / "none.sqlite").exists() and not (tmp_path / "r.pdf").exists()

@@ -6,7 +6,7 @@ from typing import Any
 
 from ..geometry import Design
 from ..io import finite_or_none
-from ..metrics import CycleMetrics, analyze
+from ..metrics import CycleMetrics, SpeedMetrics, analyze
 from .cmd_synth import design_summary
 from .common import (add_design_options, add_speed_options, design_from_args, print_json,
                      print_table, rpms_from_args)
@@ -50,22 +50,35 @@ def metrics_summary(design: Design, metrics: CycleMetrics) -> dict[str, Any]:
     return out
 
 
+def cycle_rows(metrics: CycleMetrics) -> list[tuple[str, str]]:
+    """(label, value) of the speed-independent figures, as printed (and in the report)."""
+    rows = [("measured K", f"{metrics.time_ratio:.6f}"),
+            ("measured stroke", f"{metrics.stroke_mm:.3f} mm"),
+            ("θ", f"{metrics.theta_deg:.4f} °"),
+            ("working / return crank angle",
+             f"{metrics.work_angle_deg:.3f} ° / {metrics.return_angle_deg:.3f} °")]
+    if metrics.pressure_angle_max_deg is not None:
+        rows.append(("max pressure angle", f"{metrics.pressure_angle_max_deg:.3f} °"))
+    return rows
+
+
+def speed_rows(s: SpeedMetrics) -> list[tuple[str, str]]:
+    """(label, value) of one crank speed's figures, as printed (and in the report)."""
+    return [("working / return time", f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
+            ("max cutting speed", f"{s.v_work_max_m_s:.4f} m/s"),
+            ("mean cutting speed", f"{s.v_work_mean_m_s:.4f} m/s"),
+            ("max return speed", f"{s.v_return_max_m_s:.4f} m/s"),
+            ("max |acceleration|", f"{s.a_max_m_s2:.4f} m/s²")]
+
+
 def run(args: argparse.Namespace) -> int:
     design = design_from_args(args)
     metrics = analyze(design, rpms_from_args(args))
     if args.json:
         print_json(metrics_summary(design, metrics))
         return 0
-    print_table([("measured K", f"{metrics.time_ratio:.6f}"),
-                 ("measured stroke", f"{metrics.stroke_mm:.3f} mm"),
-                 ("θ", f"{metrics.theta_deg:.4f} °"),
-                 ("working / return crank angle",
-                  f"{metrics.work_angle_deg:.3f} ° / {metrics.return_angle_deg:.3f} °")])
+    print_table(cycle_rows(metrics))
     for s in metrics.speeds:
         print(f"\n{s.rpm:g} r/min")
-        print_table([("working / return time", f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
-                     ("max cutting speed", f"{s.v_work_max_m_s:.4f} m/s"),
-                     ("mean cutting speed", f"{s.v_work_mean_m_s:.4f} m/s"),
-                     ("max return speed", f"{s.v_return_max_m_s:.4f} m/s"),
-                     ("max |acceleration|", f"{s.a_max_m_s2:.4f} m/s²")])
+        print_table(speed_rows(s))
     return 0

@@ -8,8 +8,8 @@ import numpy as np
 from ..io import curve_table
 from ..kinematics import solve
 from .common import (add_angle_options, add_design_options, add_speed_options, design_from_args,
-                     request_from_args, write_output)
-from .streaming import Progress, table_pieces
+                     request_from_args)
+from .streaming import write_table
 
 HELP = "ram and lever motion over the cycle, as CSV"
 DESCRIPTION = ("Ram displacement, velocity and acceleration, lever angle, angular velocity and "
@@ -35,6 +35,5 @@ def run(args: argparse.Namespace) -> int:
     def block(phi: np.ndarray, rpm: float):
         return curve_table(solve(design, phi, [rpm]))
 
-    with Progress("computing curves", angles.size * len(rpms)) as progress:
-        write_output("--csv", args.csv, table_pieces(block, angles, rpms, progress))
+    write_table("--csv", args.csv, "computing curves", block, angles, rpms)
     return 0

@@ -5,13 +5,15 @@ import argparse
 
 import numpy as np
 
-from ..dynamics import solve_dynamics, summarize
+from ..dynamics import (DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics,
+                        summarize)
+from ..geometry import Design
 from ..dynamics_io import dynamics_table, summary_document
 from .cmd_synth import design_summary
 from .common import (UsageError, add_angle_options, add_design_options, add_load_options,
                      add_speed_options, design_from_args, masses_from_args, print_json,
-                     print_table, request_from_args, write_output)
-from .streaming import Progress, table_pieces
+                     print_table, request_from_args)
+from .streaming import write_table
 
 HELP = "joint forces, crank torque, power and flywheel"
 DESCRIPTION = ("Kinetostatic analysis at constant crank speed: the crank's driving torque, power, "
@@ -41,8 +43,7 @@ def run(args: argparse.Namespace) -> int:
         def block(phi: np.ndarray, rpm: float):
             return dynamics_table(solve_dynamics(design, phi, [rpm], masses))
 
-        with Progress("computing forces", angles.size * len(rpms)) as progress:
-            write_output("--csv", args.csv, table_pieces(block, angles, rpms, progress))
+        write_table("--csv", args.csv, "computing forces", block, angles, rpms)
         if not args.json:
             return 0
     summary = summarize(design, rpms, masses)
@@ -51,15 +52,27 @@ def run(args: argparse.Namespace) -> int:
         doc.update(summary_document(summary, design))
         print_json(doc)
         return 0
-    print_table([("variant", design.variant),
-                 ("cutting force", f"{masses.cut_force_N:g} N over {1 - 2 * masses.idle_fraction:.0%} of the stroke"),
-                 ("mean reduced inertia J_e", f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
-                 ("speed fluctuation δ", f"{masses.delta:.5g}")])
+    print_table(summary_rows(design, masses, summary))
     for s in summary.speeds:
         print(f"\n{s.rpm:g} r/min")
-        print_table([("mean / max crank torque", f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
-                     ("mean power", f"{s.mean_power_W:.4g} W"),
-                     ("energy fluctuation ΔW_max", f"{s.energy_fluctuation_J:.4g} J"),
-                     ("flywheel J_F", f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
-                     ("flywheel J_F − J_e (net)", f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")])
+        print_table(speed_rows(s))
     return 0
+
+
+def summary_rows(design: Design, masses: MassProperties,
+                 summary: DynamicsSummary) -> list[tuple[str, str]]:
+    """(label, value) of the loads and speed-independent results, as printed."""
+    return [("variant", design.variant),
+            ("cutting force", f"{masses.cut_force_N:g} N over {1 - 2 * masses.idle_fraction:.0%} of the stroke"),
+            ("mean reduced inertia J_e", f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
+            ("speed fluctuation δ", f"{masses.delta:.5g}")]
+
+
+def speed_rows(s: SpeedSummary) -> list[tuple[str, str]]:
+    """(label, value) of one crank speed's torque, power and flywheel, as printed (and in
+    the report)."""
+    return [("mean / max crank torque", f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
+            ("mean power", f"{s.mean_power_W:.4g} W"),
+            ("energy fluctuation ΔW_max", f"{s.energy_fluctuation_J:.4g} J"),
+            ("flywheel J_F", f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
+            ("flywheel J_F − J_e (net)", f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]

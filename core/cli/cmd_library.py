@@ -11,9 +11,11 @@ import argparse
 import json
 import os
 import sys
-from typing import Any
+from pathlib import Path
+from typing import Any, Sequence
 
-from ..compare import Candidate, compare, comparison_json, curves_csv, table_csv
+from ..compare import (Candidate, compare, comparison_json, curves_csv, difference_text,
+                       table_csv, value_text)
 from ..errors import DesignError, FileFormatError
 from ..figures import DESIGN_FIGURES, SPEED_FIGURES
 from ..io import load_design
@@ -22,7 +24,7 @@ from ..library import Entry, Library, file_stem, unique_name
 from ..library_files import export_entries, import_entries, read_design_files
 from ..library_query import QueryError, parse_filter, sort_sql
 from ..library_store import ENV_VAR, LibraryError, backup_copy, resolve_path
-from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
+from .common import (LOAD_OPTIONS, OutputError, Parser, UsageError, add_design_options, add_load_options,
                      add_speed_options, design_file, fail, masses_from_args, number, print_json,
                      rpms_from_args, spec_from_args, write_output)
 
@@ -138,23 +140,38 @@ _NAME_ARGUMENT = {"add": "--name", "rename": "NEW_NAME", "import": "FILE"}
 
 
 def _library_failure(args: argparse.Namespace, exc: LibraryError) -> int:
+    return library_failure(exc, args.library, args.library_command)
+
+
+def library_failure(exc: LibraryError, library: str | None, action: str,
+                    name_option: str = "NAME") -> int:
+    """Report ``exc`` as one line naming the option at fault (``name_option`` for an entry
+    name that is missing, ``--library`` for the file); returns the exit status."""
     if exc.kind == "tag":
         return fail(f"--tags: {exc}")
     if exc.kind in ("name", "exists"):
-        hint = " (or use --rename-duplicates)" if args.library_command == "import" else ""
-        return fail(f"{_NAME_ARGUMENT.get(args.library_command, 'NAME')}: {exc}{hint}")
+        hint = " (or use --rename-duplicates)" if action == "import" else ""
+        return fail(f"{_NAME_ARGUMENT.get(action, name_option)}: {exc}{hint}")
     if exc.kind == "missing" and exc.path is not None and exc.path.exists():
-        return fail(f"NAME: {exc} (see 'shaper library list')")
-    source = "--library" if args.library else (f"--library (from ${ENV_VAR})" if os.environ.get(ENV_VAR)
-                                                else "--library (default)")
+        return fail(f"{name_option}: {exc} (see 'shaper library list')")
+    source = "--library" if library else (f"--library (from ${ENV_VAR})" if os.environ.get(ENV_VAR)
+                                          else "--library (default)")
     hint = ""
     if exc.refused_file:
         hint = f"; keep a copy with: shaper library backup --library '{exc.path}'"
     return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
 
 
+def library_path(library: str | None) -> Path:
+    """The library ``--library`` names (see ``resolve_path``); an empty one is refused
+    rather than taken for the default library."""
+    if library is not None and not library.strip():
+        raise UsageError("--library: the path is empty")
+    return resolve_path(library)
+
+
 def _open(args: argparse.Namespace, create: bool = True) -> Library:
-    return Library(resolve_path(args.library), create=create)
+    return Library(library_path(args.library), create=create)
 
 
 def _run_add(args: argparse.Namespace) -> int:
@@ -184,7 +201,7 @@ def _run_list(args: argparse.Namespace) -> int:
     except QueryError as exc:
         raise UsageError(f"--sort: {exc}") from None
     parse_filter(args.where)                # a bad filter is reported even for an empty library
-    path = resolve_path(args.library)
+    path = library_path(args.library)
     if not path.exists():                   # listing never creates a library
         print("[]" if args.json else f"no designs in {path} (it does not exist yet)")
         return 0
@@ -226,19 +243,15 @@ def _run_show(args: argparse.Namespace) -> int:
             ("created", entry.created), ("modified", entry.modified), ("variant", f.variant)]
     if f.rod_side:
         rows.append(("rod side", f.rod_side))
-    rows += [(key, _fmt(getattr(f, key))) for key, _, _, _ in DESIGN_FIGURES]
+    rows += [(key, value_text(getattr(f, key))) for key, _, _, _ in DESIGN_FIGURES]
     width = max(len(k) for k, _ in rows)
     for key, value in rows:
         print(f"{key:<{width}}  {value}")
     for s in f.speeds:
         print(f"\n{s.rpm:g} r/min")
         for key, _, _, _ in SPEED_FIGURES:
-            print(f"  {key:<24}  {_fmt(getattr(s, key))}")
+            print(f"  {key:<24}  {value_text(getattr(s, key))}")
     return 0
-
-
-def _fmt(value: Any) -> str:
-    return "—" if value is None else value if isinstance(value, str) else f"{value:.6g}"
 
 
 def _run_remove(args: argparse.Namespace) -> int:
@@ -258,6 +271,8 @@ def _run_rename(args: argparse.Namespace) -> int:
 def _run_export(args: argparse.Namespace) -> int:
     if args.all == (args.name is not None):
         raise UsageError("NAME: give one entry name, or --all with a folder")
+    if not args.output.strip():
+        raise UsageError("-o: the path is empty")
     with _open(args, create=False) as lib:
         try:
             if args.all:
@@ -267,7 +282,7 @@ def _run_export(args: argparse.Namespace) -> int:
             else:
                 lib.export(args.name, args.output)
         except OSError as exc:
-            return fail(f"-o: cannot write {args.output}: {exc.strerror or exc}", status=1)
+            raise OutputError(f"-o: cannot write {args.output}: {exc.strerror or exc}") from None
     return 0
 
 
@@ -285,23 +300,35 @@ def _run_import(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run_compare(args: argparse.Namespace) -> int:
+def load_candidates(library: str | None, names: Sequence[str], files: Sequence[str],
+                    file_option: str = "--file") -> tuple[list[Candidate], float | None]:
+    """Library entries ``names`` (from ``library``, see ``resolve_path``), then design
+    ``files`` (labelled by their names, made unique),
+    as comparison candidates; and the first one's first speed.
+
+    LibraryError for the library or a missing name; UsageError naming ``file_option``
+    for a file that cannot be read."""
     candidates: list[Candidate] = []
     first_rpm = None
-    if args.names:
-        with _open(args, create=False) as lib:
-            for name in args.names:
+    if names:
+        with Library(library_path(library), create=False) as lib:
+            for name in names:
                 doc = lib.load(name)
                 first_rpm = first_rpm or doc["rpm"][0]
                 candidates.append(Candidate(name, doc["spec"], doc["masses"]))
-    for path in args.files:
+    for path in files:
         try:
             doc = load_design(path)
         except FileFormatError as exc:
-            return fail(f"--file: {exc}")
+            raise UsageError(f"{file_option}: {exc}") from None
         first_rpm = first_rpm or doc["rpm"][0]
         label = unique_name(file_stem(path), [c.label for c in candidates])
         candidates.append(Candidate(label, doc["spec"], doc["masses"]))
+    return candidates, first_rpm
+
+
+def _run_compare(args: argparse.Namespace) -> int:
+    candidates, first_rpm = load_candidates(args.library, args.names, args.files)
     if not 2 <= len(candidates) <= 6:
         raise UsageError(f"NAME: compare 2 to 6 designs (got {len(candidates)})")
     rpm = number("rpm", args.rpm) if args.rpm is not None else first_rpm
@@ -329,12 +356,7 @@ def _print_comparison(result) -> None:
     for row in result.rows:
         line = [row.key]
         for i, value in enumerate(row.values):
-            text = _fmt(value)
-            diff = row.differences[i]
-            if i > 0 and diff is not None:
-                tiny = abs(diff) <= 1e-9 * max(1.0, abs(row.values[0]))
-                text += " (=)" if tiny else f" ({diff:+.4g})"
-            line.append(text + (" *" if i in row.best else ""))
+            line.append(value_text(value) + difference_text(row, i) + (" *" if i in row.best else ""))
         cells.append(line)
     widths = [max(len(r[i]) for r in cells) for i in range(len(head))]
     for r in cells:
@@ -344,16 +366,32 @@ def _print_comparison(result) -> None:
 
 
 def _run_backup(args: argparse.Namespace) -> int:
-    path = resolve_path(args.library)
+    path = library_path(args.library)
     if not path.exists():
         raise LibraryError("missing", f"there is no design library at {path}", path)
+    if args.output is not None:
+        out = Path(args.output)
+        if not args.output.strip() or out.is_dir():
+            raise UsageError(f"--output: {args.output!r} is not a file name" if not args.output.strip()
+                             else f"--output: {out} is a folder; name the copy's file")
+        if not (out.parent if str(out.parent) else Path(".")).is_dir():
+            raise UsageError(f"--output: cannot write {out}: the folder {out.parent} does not exist")
     try:
-        with Library(path, create=False) as lib:
-            target = lib.backup(args.output)
+        lib: Library | None = Library(path, create=False)
     except LibraryError as exc:
         if not exc.refused_file:
             raise
-        target = backup_copy(path, args.output)     # a refused file: copied byte for byte
+        lib = None                                   # a refused file: copied byte for byte
+    try:
+        if lib is None:
+            target = backup_copy(path, args.output)
+        else:
+            with lib:
+                target = lib.backup(args.output)
+    except LibraryError as exc:                      # writing the copy failed
+        if args.output is None:
+            raise
+        raise OutputError(f"--output: {exc}") from None
     print(f"copied {path} to {target}")
     return 0
 

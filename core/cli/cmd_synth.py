@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import Any
+from typing import Any, Mapping
 
 from ..geometry import Design
 from .common import add_design_options, design_from_args, print_json, print_table
@@ -43,14 +43,21 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(summary)
         return 0
-    rows = [("variant", design.variant),
-            ("extreme-position angle θ", f"{summary['theta_deg']:.4f} °"),
+    print_table(dimension_rows(design))
+    return 0
+
+
+def dimension_rows(design: Design, words: Mapping[str, str] | None = None) -> list[tuple[str, str]]:
+    """(label, value) of the dimensions and what they imply, as printed (and in the report).
+    ``words`` may rename the variant and rod-side words (a translation)."""
+    word = (lambda w: w) if words is None else (lambda w: words.get(w, w))  # noqa: E731
+    rows = [("variant", word(design.variant)),
+            ("extreme-position angle θ", f"{math.degrees(design.theta):.4f} °"),
             ("frame O2O4 L2", f"{design.frame:.3f} mm"),
             ("lever O4B L3", f"{design.lever:.3f} mm"),
             ("guide above lever pivot", f"{design.guide:.3f} mm"),
             ("guide above crank centre h", f"{design.guide_above_crank:.3f} mm")]
     if design.rod is not None:
-        rows.append(("rod BC L4", f"{design.rod:.3f} mm ({design.rod_side})"))
+        rows.append(("rod BC L4", f"{design.rod:.3f} mm ({word(design.rod_side)})"))
     rows += [("time ratio K", f"{design.time_ratio:.6g}"), ("stroke H", f"{design.stroke:.3f} mm")]
-    print_table(rows)
-    return 0
+    return rows

@@ -18,6 +18,7 @@ from typing import Callable, Iterator, Sequence, TextIO
 import numpy as np
 
 from ..io import table_chunks
+from .common import write_output
 
 CHUNK_ANGLES = 16_384
 
@@ -86,3 +87,11 @@ def table_pieces(block: TableBlock, angles: np.ndarray, rpms: Sequence[float],
             done += data.shape[0]
             if progress is not None:
                 progress.update(done)
+
+
+def write_table(option: str, target: str, label: str, block: TableBlock, angles: np.ndarray,
+                rpms: Sequence[float]) -> None:
+    """The whole table as CSV to ``target`` (``-`` for stdout; see ``write_output``), block
+    by block, with ``shaper: LABEL n%`` on a terminal."""
+    with Progress(label, angles.size * len(rpms)) as progress:
+        write_output(option, target, table_pieces(block, angles, rpms, progress))

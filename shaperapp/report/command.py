@@ -13,24 +13,30 @@ import sys
 import tempfile
 from pathlib import Path
 
+from core.cli.cmd_library import library_failure, load_candidates
 from core.cli.cmd_table import masses_or_none
 from core.cli.common import (OutputError, UsageError, add_design_options, add_load_options,
                              add_speed_options, number, number_list, rpms_from_args,
                              spec_from_args)
+from core.compare import MAX_DESIGNS, Candidate
 from core.errors import DesignError
 from core.kinematics import check_rpms
+from core.library_store import ENV_VAR, LibraryError
 from core.positions import DEFAULT_COUNT, check_count, check_extra
 
 HELP = "write the design report (A4 PDF, or HTML)"
 DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
                "margins, the scheme at both limit positions, s/v/a curves and cycle metrics, the "
                "positions table, velocity/acceleration/force polygons at two positions, torque, "
-               "energy, flywheel and motor power, and the conventions and formulas. Runs without a "
-               "display. The Chinese report needs a font with Chinese glyphs (fonts-noto-cjk).")
+               "energy, flywheel and motor power, the conventions and formulas, and with --compare "
+               "or --compare-file a comparison with other designs. Runs without a display. The "
+               "Chinese report needs a font with Chinese glyphs (fonts-noto-cjk).")
 EXAMPLES = ("shaper report --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --lever-mass 20 "
             "--lever-inertia 1.1 --ram-mass 70 --cut-force 7000 --cut-height 80 -o report.pdf",
             "shaper report --design my.shaper.json --lang zh --diagrams 90,270 -o 说明书.pdf",
-            "shaper report --design my.shaper.json --html -o report.html")
+            "shaper report --design my.shaper.json --html -o report.html",
+            "shaper report --design my.shaper.json --compare base rod-1.6 --compare-file other.shaper.json "
+            "-o report.pdf")
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -47,6 +53,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--title", metavar="TEXT",
                         help="design name for the title block (default: the design file's name)")
     parser.add_argument("--html", action="store_true", help="write HTML instead of PDF")
+    parser.add_argument("--compare", nargs="+", default=[], metavar="NAME",
+                        help="add a comparison section: the design beside these library entries "
+                             "at the first speed (numbers as 'shaper library compare')")
+    parser.add_argument("--compare-file", nargs="+", default=[], metavar="FILE",
+                        help="add a comparison section with these design files")
+    parser.add_argument("--library", metavar="PATH",
+                        help=f"the library of --compare (default: ${ENV_VAR}, else the per-user library)")
 
 
 def _ensure_headless() -> None:
@@ -84,7 +97,31 @@ def design_name(args: argparse.Namespace) -> str:
     return ""
 
 
+def comparison_candidates(args: argparse.Namespace) -> list[Candidate]:
+    """The designs of --compare (library) and --compare-file, checked before Qt starts:
+    1 to MAX_DESIGNS − 1 of them, no library name twice. LibraryError for the library."""
+    if not args.compare and not args.compare_file:
+        return []
+    others, _ = load_candidates(args.library, args.compare, args.compare_file, "--compare-file")
+    if len(others) > MAX_DESIGNS - 1:
+        option = "--compare" if args.compare else "--compare-file"
+        raise UsageError(f"{option}: compare the design with at most {MAX_DESIGNS - 1} others "
+                         f"(got {len(others)})")
+    names = [c.label for c in others]
+    for name in names:
+        if names.count(name) > 1:
+            raise UsageError(f"--compare: {name!r} is named twice")
+    return others
+
+
 def run(args: argparse.Namespace) -> int:
+    try:
+        return _run(args)
+    except LibraryError as exc:                 # only --compare's library raises it
+        return library_failure(exc, args.library, "report", "--compare")
+
+
+def _run(args: argparse.Namespace) -> int:
     spec = spec_from_args(args)
     design = spec.design()
     rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
@@ -96,6 +133,7 @@ def run(args: argparse.Namespace) -> int:
         if values.size != 2:
             raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
         diagrams = (float(values[0]), float(values[1]))
+    others = comparison_candidates(args)
     target = Path(args.output)
     if not target.parent.is_dir():
         raise OutputError(f"--output: cannot write {target}: no such directory")
@@ -113,7 +151,7 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--lang {args.lang}: {exc}") from None
     name = design_name(args) or app.translate("Report", "Untitled design")
     report = build(spec, rpms, masses, name, datetime.date.today().isoformat(), language,
-                   Options(count, diagrams))
+                   Options(count, diagrams, tuple(others)))
     pages = write_report(report, str(target), html=args.html)
     what = "HTML" if args.html else f"PDF, {pages} pages"
     print(f"wrote {target} ({what})")

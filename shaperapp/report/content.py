@@ -1,20 +1,26 @@
 """What the design report says: blocks of text, tables and figures, built once.
 
-Every number comes from ``core`` and is formatted exactly as the ``shaper``
-CLI prints it (``synth``, ``analyze``, ``dynamics`` text output and ``table``'s
-``number_text``), so the report and the CLI agree digit for digit (tested
-through the PDF text layer). Figures are drawn by the app's own views
-(``figures``) and the polygon painter, never by drawing code of their own.
+Every number comes from ``core``, and the figures the ``shaper`` CLI prints come
+as the CLI's own rows (``synth``, ``analyze`` and ``dynamics`` ``*_rows`` and
+``table``'s ``number_text``) under translated labels, so the report and the CLI
+cannot drift apart (tested through the PDF text layer). Figures are drawn by the
+app's own views (``figures``) and the polygon painter, never by drawing code of
+their own. The blocks are defined in ``blocks``; the comparison section is
+``comparison``.
 """
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, field
-from typing import Callable, Sequence
+from dataclasses import dataclass
+from typing import Sequence
 
-from PySide6.QtCore import QCoreApplication, QRectF
-from PySide6.QtGui import QPainter
+from PySide6.QtCore import QCoreApplication
 
+from core.cli.cmd_analyze import cycle_rows
+from core.cli.cmd_analyze import speed_rows as analyze_speed_rows
+from core.cli.cmd_dynamics import speed_rows as dynamics_speed_rows
+from core.cli.cmd_dynamics import summary_rows
+from core.cli.cmd_synth import dimension_rows
+from core.compare import Candidate
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design, summarize
 from core.geometry import Design
 from core.margins import margins
@@ -23,52 +29,10 @@ from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
 from ..column_titles import column_titles, group_titles, special_titles
 from . import figures
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .comparison import comparison_blocks, report_comparison
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
-Paint = Callable[[QPainter, QRectF, float], None]     # painter, rect (device), device units per mm
-
-
-@dataclass
-class Heading:
-    text: str
-    level: int = 1
-
-
-@dataclass
-class Paragraph:
-    html: str
-    keep_with_next: bool = False      # an introduction stays on the page of what it introduces
-
-
-@dataclass
-class KeyValues:
-    rows: list[tuple[str, str]]
-
-
-@dataclass
-class Table:
-    header: list[str]
-    rows: list[list[str]]
-    caption: str = ""
-    shaded: list[bool] = field(default_factory=list)
-    left_columns: int = 1
-
-
-@dataclass
-class Figure:
-    caption: str
-    width_mm: float
-    height_mm: float
-    paint: Paint
-
-
-@dataclass
-class Report:
-    title: str
-    name: str
-    date: str
-    language: str
-    blocks: list = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -77,6 +41,7 @@ class Options:
 
     count: int = 12
     diagram_deg: tuple[float, float] | None = None    # None: one in the working, one in the return stroke
+    compare: tuple[Candidate, ...] = ()               # other designs for a comparison section
 
 
 def default_diagram_angles(table: PositionTable, metrics: CycleMetrics) -> tuple[float, float]:
@@ -134,7 +99,7 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         if summary is not None:
             add(Heading(translate("Report", "7 Crank torque, energy and flywheel")))
             add(KeyValues(_loads(used, design)))
-            add(_dynamics_table(summary))
+            add(_dynamics_table(summary, design))
             add(Figure(translate("Report", "Crank torque, input power, energy fluctuation ΔE and "
                                  "joint forces over one revolution"), 170.0, 170.0, views.forces()))
         else:
@@ -144,6 +109,9 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                                     "with loads) to include it.")))
         add(Heading(translate("Report", "8 Conventions and formulas")))
         report.blocks.extend(_conventions())
+        if options.compare:
+            result = report_comparison(spec, masses, name, options.compare, rpms[0])
+            report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
     finally:
         views.close()
     return report
@@ -178,18 +146,24 @@ def _inputs(spec: Spec, rpms: Sequence[float], masses: MassProperties | None) ->
     return rows
 
 
+def _labelled(rows: list[tuple[str, str]], labels: dict[str, str]) -> list[tuple[str, str]]:
+    """The CLI's rows (its very value texts) under the report's translated labels; rows
+    without a label here (shown elsewhere in the report) are left out."""
+    return [(labels[key], value) for key, value in rows if key in labels]
+
+
 def _dimensions(design: Design) -> list[tuple[str, str]]:
     """As ``shaper synth`` prints them."""
-    rows = [(translate("Report", "Extreme-position angle θ"), f"{math.degrees(design.theta):.4f} °"),
-            (translate("Report", "Frame O2O4 L2"), f"{design.frame:.3f} mm"),
-            (translate("Report", "Lever O4B L3"), f"{design.lever:.3f} mm"),
-            (translate("Report", "Guide line above the lever pivot O4"), f"{design.guide:.3f} mm"),
-            (translate("Report", "Guide line above the crank centre O2, h"), f"{design.guide_above_crank:.3f} mm")]
-    if design.rod is not None:
-        rows.append((translate("Report", "Connecting rod BC L4"), f"{design.rod:.3f} mm"))
-    rows += [(translate("Report", "Time ratio K of the dimensions"), f"{design.time_ratio:.6g}"),
-             (translate("Report", "Stroke H of the dimensions"), f"{design.stroke:.3f} mm")]
-    return rows
+    words = {"trailing": translate("Report", "trailing"), "leading": translate("Report", "leading")}
+    return _labelled(dimension_rows(design, words), {
+        "extreme-position angle θ": translate("Report", "Extreme-position angle θ"),
+        "frame O2O4 L2": translate("Report", "Frame O2O4 L2"),
+        "lever O4B L3": translate("Report", "Lever O4B L3"),
+        "guide above lever pivot": translate("Report", "Guide line above the lever pivot O4"),
+        "guide above crank centre h": translate("Report", "Guide line above the crank centre O2, h"),
+        "rod BC L4": translate("Report", "Connecting rod BC L4"),
+        "time ratio K": translate("Report", "Time ratio K of the dimensions"),
+        "stroke H": translate("Report", "Stroke H of the dimensions")})
 
 
 def _margin_table(design: Design) -> Table:
@@ -207,31 +181,32 @@ def _margin_table(design: Design) -> Table:
 
 
 def _cycle(metrics: CycleMetrics) -> list[tuple[str, str]]:
-    """As ``shaper analyze`` prints them."""
-    rows = [(translate("Report", "Measured time ratio K"), f"{metrics.time_ratio:.6f}"),
-            (translate("Report", "Measured stroke"), f"{metrics.stroke_mm:.3f} mm"),
-            (translate("Report", "Working / return crank angle"),
-             f"{metrics.work_angle_deg:.3f} ° / {metrics.return_angle_deg:.3f} °")]
-    if metrics.pressure_angle_max_deg is not None:
-        rows.append((translate("Report", "Largest pressure angle"), f"{metrics.pressure_angle_max_deg:.3f} °"))
-    return rows
+    """As ``shaper analyze`` prints them (θ is among the dimensions)."""
+    return _labelled(cycle_rows(metrics), {
+        "measured K": translate("Report", "Measured time ratio K"),
+        "measured stroke": translate("Report", "Measured stroke"),
+        "working / return crank angle": translate("Report", "Working / return crank angle"),
+        "max pressure angle": translate("Report", "Largest pressure angle")})
 
 
-def _per_speed(speeds, lines, caption: str) -> Table:
-    """A table with one column per crank speed: (label, format of one speed's values)."""
-    header = [translate("Report", "Crank speed")] + [f"{s.rpm:g} r/min" for s in speeds]
-    return Table(header, [[label] + [f(s) for s in speeds] for label, f in lines], caption)
+def _per_speed(rows: list[list[tuple[str, str]]], rpms: Sequence[float], labels: dict[str, str],
+               caption: str) -> Table:
+    """A table with one column per crank speed from each speed's CLI rows."""
+    header = [translate("Report", "Crank speed")] + [f"{r:g} r/min" for r in rpms]
+    columns = [dict(r) for r in rows]
+    return Table(header, [[label] + [c[key] for c in columns] for key, label in labels.items()],
+                 caption)
 
 
 def _speed_table(metrics: CycleMetrics) -> Table:
     """As ``shaper analyze`` prints it."""
-    return _per_speed(metrics.speeds, [
-        (translate("Report", "Working / return time"),
-         lambda s: f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
-        (translate("Report", "Max cutting speed"), lambda s: f"{s.v_work_max_m_s:.4f} m/s"),
-        (translate("Report", "Mean cutting speed"), lambda s: f"{s.v_work_mean_m_s:.4f} m/s"),
-        (translate("Report", "Max return speed"), lambda s: f"{s.v_return_max_m_s:.4f} m/s"),
-        (translate("Report", "Max |acceleration|"), lambda s: f"{s.a_max_m_s2:.4f} m/s²")],
+    return _per_speed([analyze_speed_rows(s) for s in metrics.speeds],
+                      [s.rpm for s in metrics.speeds], {
+        "working / return time": translate("Report", "Working / return time"),
+        "max cutting speed": translate("Report", "Max cutting speed"),
+        "mean cutting speed": translate("Report", "Mean cutting speed"),
+        "max return speed": translate("Report", "Max return speed"),
+        "max |acceleration|": translate("Report", "Max |acceleration|")},
         translate("Report", "Cycle metrics per crank speed"))
 
 
@@ -259,19 +234,18 @@ def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
     return rows
 
 
-def _dynamics_table(summary: DynamicsSummary) -> Table:
-    """As ``shaper dynamics`` prints it."""
-    je = f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"
-    return _per_speed(summary.speeds, [
-        (translate("Report", "Mean / max crank torque"),
-         lambda s: f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
-        (translate("Report", "Mean power (motor, before efficiency)"), lambda s: f"{s.mean_power_W:.4g} W"),
-        (translate("Report", "Energy fluctuation ΔW_max"), lambda s: f"{s.energy_fluctuation_J:.4g} J"),
-        (translate("Report", "Flywheel J_F on the crank shaft"),
-         lambda s: f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
-        (translate("Report", "Flywheel J_F − J_e (net)"),
-         lambda s: f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²"),
-        (translate("Report", "Mean reduced inertia J_e"), lambda s: je)],
+def _dynamics_table(summary: DynamicsSummary, design: Design) -> Table:
+    """As ``shaper dynamics`` prints it (J_e, the same at every speed, in each column)."""
+    shared = dict(summary_rows(design, summary.masses, summary))
+    rows = [dynamics_speed_rows(s) + [("J_e", shared["mean reduced inertia J_e"])]
+            for s in summary.speeds]
+    return _per_speed(rows, [s.rpm for s in summary.speeds], {
+        "mean / max crank torque": translate("Report", "Mean / max crank torque"),
+        "mean power": translate("Report", "Mean power (motor, before efficiency)"),
+        "energy fluctuation ΔW_max": translate("Report", "Energy fluctuation ΔW_max"),
+        "flywheel J_F": translate("Report", "Flywheel J_F on the crank shaft"),
+        "flywheel J_F − J_e (net)": translate("Report", "Flywheel J_F − J_e (net)"),
+        "J_e": translate("Report", "Mean reduced inertia J_e")},
         translate("Report", "Torque, power and flywheel per crank speed"))
 
 

@@ -1,7 +1,10 @@
-"""File › Export report…: choose the positions and the two diagram angles, then the file.
+"""File › Export report…: choose the positions, the two diagram angles and whether to
+include the comparison, then the file.
 
 The report is built from the model's design on screen, its speeds and loads,
-in the UI's language, by the same code as ``shaper report``.
+in the UI's language, by the same code as ``shaper report``. The comparison's
+other designs are the Compare tab's, which it keeps on the model
+(``DesignModel.comparison_candidates``), so this dialog reads only the model.
 """
 from __future__ import annotations
 
@@ -10,9 +13,10 @@ import os
 
 from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtGui import QGuiApplication
-from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog, QFormLayout,
-                               QMessageBox, QSpinBox, QWidget)
+from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
+                               QFormLayout, QMessageBox, QSpinBox, QWidget)
 
+from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
 from ..model import DesignModel
@@ -47,13 +51,36 @@ class ReportOptionsDialog(QDialog):
         form.addRow(self.tr("Positions in the table:"), self.count)
         form.addRow(self.tr("Vector diagrams at φ (working stroke):"), self.angles[0])
         form.addRow(self.tr("Vector diagrams at φ (return stroke):"), self.angles[1])
+        self.others = other_designs(model)
+        self.include_comparison = QCheckBox(self.tr("Include the comparison"))
+        self.include_comparison.setEnabled(1 <= len(self.others) < MAX_DESIGNS)
+        self.include_comparison.setChecked(self.include_comparison.isEnabled())
+        if not self.others:
+            tip = self.tr("Add designs on the Compare tab to compare this design with them.")
+        elif len(self.others) >= MAX_DESIGNS:
+            tip = self.tr("The Compare tab has %1 designs besides this one; a report compares "
+                          "at most %2.").replace("%1", str(len(self.others))) \
+                .replace("%2", str(MAX_DESIGNS - 1))
+        else:
+            tip = self.tr("This design beside the Compare tab's designs (%1) at %2 r/min.") \
+                .replace("%1", ", ".join(c.label for c in self.others)) \
+                .replace("%2", f"{model.rpms[0]:g}")
+        self.include_comparison.setToolTip(tip)
+        form.addRow(self.include_comparison)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
         form.addRow(buttons)
 
     def options(self) -> Options:
-        return Options(self.count.value(), (self.angles[0].value(), self.angles[1].value()))
+        others = tuple(self.others) if self.include_comparison.isChecked() else ()
+        return Options(self.count.value(), (self.angles[0].value(), self.angles[1].value()), others)
+
+
+def other_designs(model: DesignModel) -> list[Candidate]:
+    """The Compare tab's designs other than the one on screen (same inputs and loads)."""
+    return [c for c in model.comparison_candidates
+            if (c.spec, c.masses) != (model.valid_spec, model.masses)]
 
 
 def export_report(model: DesignModel, path: str, language: str, options: Options = Options()) -> int:

@@ -1,8 +1,8 @@
 """The report's figures, drawn by the app's own views: never a second drawing of anything.
 
 The scheme, the s/v/a plots and the force plots are exported by their widgets'
-public ``export_image`` to SVG and replayed with ``QSvgRenderer`` (vector in
-the PDF); the polygons are painted by ``polygon_paint.paint_polygon``. The
+public ``export_image`` to SVG (the comparison's curves by ``ComparePlots.svg``)
+and replayed with ``QSvgRenderer`` (vector in the PDF); the polygons are painted by ``polygon_paint.paint_polygon``. The
 views read a private :class:`DesignModel` whose angle grid holds both limit
 positions exactly, so the scheme is drawn at the limits, not next to them.
 """
@@ -18,11 +18,13 @@ from PySide6.QtGui import QFontMetricsF, QPainter
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
 
+from core.compare import Comparison
 from core.dynamics import MassProperties
 from core.geometry import Design
 from core.metrics import CycleMetrics
 from core.polygons import polygons
 from core.spec import Spec
+from ..compare_plots import ComparePlots
 from ..forces_panel import ForcesPanel
 from ..model import DesignModel
 from ..plots import PlotsWidget
@@ -102,6 +104,12 @@ class ReportViews:
 
     def forces(self) -> Paint:
         return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1100, 1100), "forces")])
+
+    def comparison_curves(self, result: Comparison) -> Paint:
+        """The Compare tab's overlay curves of ``result``."""
+        plots = self._show(ComparePlots(), 900, 880)
+        plots.show_comparison(result)
+        return svg_paint([plots.svg(QCoreApplication.translate("Report", "Design comparison"))])
 
     def close(self) -> None:
         for widget in self._widgets:

@@ -12,7 +12,7 @@ from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QRectF, QSize
 from PySide6.QtGui import QFont, QPainter
 from PySide6.QtSvg import QSvgGenerator
 
-from .content import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
 from .fonts import report_font
 
 SVG_DPI = 96.0

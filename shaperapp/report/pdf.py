@@ -14,7 +14,7 @@ from PySide6.QtCore import QCoreApplication, QMarginsF, QPointF, QRectF, Qt
 from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen, QTextDocument)
 
-from .content import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
 from .fonts import report_font
 
 translate = QCoreApplication.translate
