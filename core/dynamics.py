@@ -530,9 +530,14 @@ def cut_window(d: Designs, idle_fraction: float,
     working = phi <= end[..., None]
     reached = (sh.ram_joint[0][None] >= targets[..., None]) & working
     first = np.argmax(reached, axis=-1)
-    inner = reached.any(axis=-1) & (first > 0)
-    lo = phi[np.maximum(first - 1, 0)]
-    hi = np.minimum(phi[first], end)
+    # Not reached on a grid sample: between the last sample of the working stroke and its
+    # end, where the ram is at H (a dead point between samples, or a sample on π + θ that
+    # rounds an ulp past it).
+    missed = ~reached.any(axis=-1)
+    last = np.maximum(np.searchsorted(phi, end, side="right") - 1, 0)
+    inner = (~missed & (first > 0)) | (missed & (phi[last] < end))
+    lo = np.where(missed, phi[last], phi[np.maximum(first - 1, 0)])
+    hi = np.where(missed, end, np.minimum(phi[first], end))
     root = np.where(reached[..., 0], 0.0, end)                      # at or before φ = 0, or never
     lengths = [np.broadcast_to(v, targets.shape) for v in
                (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]

@@ -113,7 +113,8 @@ class Docks:
         right = 560 if wide else max(380, int(size.width() * 0.31))
         w.resizeDocks([d["inputs"], d["mechanism"]], [side, right], HORIZONTAL)
         if wide:
-            w.resizeDocks([d["inputs"], d["results"]], [int(height * 0.5), int(height * 0.5)], VERTICAL)
+            # the whole design form (down to the angle step) without scrolling; results scroll
+            w.resizeDocks([d["inputs"], d["results"]], [int(height * 0.6), int(height * 0.4)], VERTICAL)
             w.resizeDocks([d["mechanism"], d["polygons"]], [int(height * 0.5), int(height * 0.5)], VERTICAL)
         else:
             w.tabifyDockWidget(d["results"], d["polygons"])

@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 from core.dynamics import MassProperties, cutting_force, solve_dynamics
 from core.errors import DesignError
-from core.geometry import synthesize
+from core.geometry import Design, synthesize
 from core.io import curve_table
 from core.kinematics import shape, solve
 from core.metrics import analyze
@@ -196,3 +196,17 @@ def test_vanishing_idle_margin_gives_the_limits():
     # x is flat (quadratic) at a dead point, so round-off of 1e-14 mm in x is ~1e-6° in φ
     assert special["cut_start"] == pytest.approx(special["limit_work_start"] % 360, abs=1e-4)
     assert special["cut_end"] == pytest.approx(special["limit_work_end"], abs=1e-4)
+
+
+def test_cut_end_found_when_the_grid_sample_on_the_dead_point_rounds_past_it():
+    """Found by hypothesis: with K = 2 the energy grid's sample at 240° lies one ulp past
+    π + θ, so the end of a cut that ends 2e-6 rad before the dead point was put on the dead
+    point itself. The ram just before cut_end must still be cutting."""
+    design = Design(crank=20.0, frame=40.00000000000001, lever=120.00000000000001,
+                    guide=103.92304845413265, rod=None, rod_side="trailing")
+    idle = 1e-12
+    end = math.radians(special_angles(design, idle)["cut_end"])
+    assert end < math.pi + design.theta - 1e-6
+    loads = MassProperties(cut_force_N=1.0, idle_fraction=idle)
+    cut = cutting_force(design, shape(design, np.array([end - 1e-7, end + 1e-7])), loads)
+    assert cut.tolist() == [1.0, 0.0]
