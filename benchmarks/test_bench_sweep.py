@@ -84,7 +84,7 @@ def test_sweep_2500_designs_with_loads(benchmark):
 
 def test_summarize_one_design_4_speeds(benchmark):
     """The dynamics summary the GUI recomputes on every edit (exact torque peaks included)."""
-    from core.dynamics import summarize
+    from core.flywheel import summarize
 
     design = SPEC_ROD.design()
     masses = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,

@@ -1,7 +1,7 @@
 """The key figures of a design: what a library sorts by and a comparison puts side by side.
 
 Beside ``io`` at the last level of core: it only gathers numbers that
-``metrics.analyze`` and ``dynamics.summarize`` compute, under the JSON keys
+``metrics.analyze`` and ``flywheel.summarize`` compute, under the JSON keys
 ``shaper analyze`` and ``shaper dynamics`` use, so a figure in the library or
 a comparison is by construction the figure those commands print.
 """
@@ -11,7 +11,9 @@ import math
 from dataclasses import dataclass
 from typing import Any, Iterable
 
-from .dynamics import MassProperties, masses_for_design, summarize
+from .dynamics import MassProperties, masses_for_design
+
+from .flywheel import summarize
 from .io import finite_or_none
 from .metrics import analyze
 from .spec import Spec

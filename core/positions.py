@@ -21,7 +21,8 @@ from typing import Any, Sequence
 import numpy as np
 
 from .designs import Designs
-from .dynamics import MassProperties, cut_window, solve_dynamics
+from .dynamics import MassProperties, solve_dynamics
+from .flywheel import cut_window
 from .dynamics_io import dynamics_table
 from .errors import DesignError, require_finite
 from .geometry import Design
@@ -93,7 +94,7 @@ def special_angles(design: Design, idle_fraction: float = 0.05) -> dict[str, flo
     """The six special positions as crank angles in degrees, keyed by ``SPECIAL_NAMES``.
 
     The limits and the speed peaks are those of :func:`metrics.cycle_peaks` (what
-    ``analyze`` reports), the cut's ends those of :func:`dynamics.cut_window` (where the
+    ``analyze`` reports), the cut's ends those of :func:`flywheel.cut_window` (where the
     dynamics switch the cutting force). The start limit is reported as a signed angle
     near 0 (as ``metrics.analyze`` does), the others in [0, 360).
     """

@@ -4,7 +4,7 @@ Beside ``spec``: it turns a :class:`~core.spec.Spec` plus arrays of varied
 parameters into :class:`~core.designs.Designs` (the vectorized counterpart of
 ``Spec.design``, refusing each design by the rule a single design would fail)
 and evaluates them with the same code as :func:`core.metrics.analyze` and
-:func:`core.dynamics.summarize`, so a design's row in a sweep equals its
+:func:`core.flywheel.summarize`, so a design's row in a sweep equals its
 single-design figures.
 """
 from __future__ import annotations
@@ -15,7 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .designs import Designs, Verdict, dimensions_many, synthesize_many
-from .dynamics import MassProperties, cycle_summary
+from .dynamics import MassProperties
+from .flywheel import cycle_summary
 from .errors import DesignError
 from .metrics import CyclePeaks, cycle_peaks, speed_figures
 from .kinematics import check_rpms, rpm_to_omega
@@ -108,7 +109,7 @@ def evaluate(spec: Spec, values: dict[str, np.ndarray], rpms,
     """Validity, reasons and figures of every design in ``values`` (see :func:`spec_designs`).
 
     No Python loop runs per design: valid designs go through
-    :func:`core.metrics.cycle_peaks` (and :func:`core.dynamics.cycle_summary`
+    :func:`core.metrics.cycle_peaks` (and :func:`core.flywheel.cycle_summary`
     with loads) as arrays, in chunks that bound memory.
     """
     rpm = check_rpms(rpms)

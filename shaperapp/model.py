@@ -20,8 +20,9 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 from PySide6.QtGui import QUndoStack
 
-from core.dynamics import (Dynamics, DynamicsSummary, MassProperties, masses_for_design,
-                           solve_dynamics, summarize)
+from core.dynamics import Dynamics, DynamicsSummary, MassProperties, masses_for_design, solve_dynamics
+
+from core.flywheel import summarize
 from core.compare import Candidate
 from core.errors import DesignError
 from core.geometry import Design

@@ -12,7 +12,9 @@ import sys
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties, solve_dynamics, summarize
+from core.dynamics import MassProperties, solve_dynamics
+
+from core.flywheel import summarize
 from core.geometry import synthesize
 from core.kinematics import crank_angles
 

@@ -13,7 +13,9 @@ import sys
 import numpy as np
 import pytest
 
-from core.dynamics import MIN_DELTA, MassProperties, solve_dynamics, summarize
+from core.dynamics import MIN_DELTA, MassProperties, solve_dynamics
+
+from core.flywheel import summarize
 from core.dynamics_io import dynamics_csv
 from core.errors import DesignError
 from core.geometry import synthesize

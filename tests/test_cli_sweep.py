@@ -6,7 +6,9 @@ import math
 
 import pytest
 
-from core.dynamics import MassProperties, summarize
+from core.dynamics import MassProperties
+
+from core.flywheel import summarize
 from core.geometry import synthesize
 from core.metrics import analyze
 

@@ -15,7 +15,9 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from core.dynamics import (GRAVITY, MassProperties, solve_dynamics, summarize)
+from core.dynamics import GRAVITY, MassProperties, solve_dynamics
+
+from core.flywheel import summarize
 from core.errors import DesignError
 from core.geometry import Design, synthesize
 from core.kinematics import MIN_RPM, crank_angles, shape

@@ -17,7 +17,8 @@ from hypothesis import strategies as st
 from scipy.optimize import minimize_scalar
 
 from core.designs import ROD_MARGIN
-from core.dynamics import MassProperties, solve_dynamics, summarize
+from core.dynamics import MassProperties, solve_dynamics
+from core.flywheel import summarize
 from core.errors import DesignError
 from core.geometry import from_dimensions, rod_drive_margin, synthesize
 from core.kinematics import pressure_angle, shape

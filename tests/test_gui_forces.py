@@ -16,7 +16,9 @@ from PySide6.QtGui import QImage
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QApplication
 
-from core.dynamics import MassProperties, solve_dynamics, summarize
+from core.dynamics import MassProperties, solve_dynamics
+
+from core.flywheel import summarize
 from shaperapp.forces_panel import ForcesPanel
 from shaperapp.messages import describe
 from shaperapp.model import DesignModel

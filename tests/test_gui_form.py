@@ -102,7 +102,7 @@ def test_direct_dimensions_mode(setup, qtbot):
 
 
 def test_metrics_show_flywheel_and_power_from_core(setup, qtbot):
-    from core.dynamics import summarize
+    from core.flywheel import summarize
     model, form, metrics = setup
     model.set_masses(cut_force_N=5000.0, delta=0.05)
     want = summarize(model.design, model.rpms, model.masses).speeds

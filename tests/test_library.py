@@ -5,7 +5,9 @@ import random
 
 import pytest
 
-from core.dynamics import MassProperties, summarize
+from core.dynamics import MassProperties
+
+from core.flywheel import summarize
 from core.errors import FileFormatError
 from core.io import load_design, masses_to_dict, save_design
 from core.library import Library, check_tags, file_stem, safe_file_name, unique_name

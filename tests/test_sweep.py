@@ -5,7 +5,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties, summarize
+from core.dynamics import MassProperties
+
+from core.flywheel import summarize
 from core.errors import DesignError
 from core.metrics import analyze
 from core.optimize import objective_of, optimize

@@ -5,8 +5,9 @@ import argparse
 
 import numpy as np
 
-from ..dynamics import (DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics,
-                        summarize)
+from ..dynamics import DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics
+
+from ..flywheel import summarize
 from ..geometry import Design
 from ..dynamics_io import dynamics_table, summary_document
 from .cmd_synth import design_summary
