@@ -260,3 +260,19 @@ def test_the_library_fuzzer_reaches_success_and_failure(action):
 
     sample()
     assert statuses == {0, 2}
+
+
+@pytest.mark.parametrize("argv", [
+    ["library", "remove", "stray", "a\nb", "--library", LIBRARY],      # found by the fuzz above
+    ["library", "show", "x\u2028y", "--library", LIBRARY],
+    ["analyze", "--crank", "1\r0", "--K", "1.4", "--stroke", "300"],
+    ["analyze", "--design", os.path.join(FOLDER, "no\nsuch.json")],
+])
+def test_a_line_break_the_user_typed_stays_inside_the_one_error_line(argv):
+    fresh_library()
+    status, stdout, stderr = shaper_in_process(*argv)
+    assert status == 2 and stdout == ""
+    assert len(stderr.splitlines()) == 1 and stderr.startswith("shaper: error: ")
+    typed = next(a for a in argv if any(ch in a for ch in "\n\r\u2028"))
+    shown = typed.encode("unicode_escape").decode("ascii").replace("\\\\", "\\")
+    assert shown.split("/")[-1] in stderr                 # escaped, not dropped

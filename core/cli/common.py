@@ -104,9 +104,18 @@ def option_name(parameter: str) -> str:
     return OPTION_NAMES.get(parameter, "--" + parameter.replace("_", "-"))
 
 
+# Every character str.splitlines() breaks at: shown escaped, so an error stays one line
+# whatever the user typed (an argument or a file name may hold a newline).
+_LINE_BREAKS = "\n\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029"
+
+
+def one_line(text: str) -> str:
+    return "".join(repr(ch)[1:-1] if ch in _LINE_BREAKS else ch for ch in text)
+
+
 def fail(message: str, status: int = 2) -> int:
     try:
-        print(f"shaper: error: {message}", file=sys.stderr)
+        print(f"shaper: error: {one_line(message)}", file=sys.stderr)
     except (OSError, ValueError):
         pass
     return status
