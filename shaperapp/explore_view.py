@@ -39,6 +39,8 @@ class ExploreView(QWidget):
         self.runner.ended.connect(self._ended)
         self.result: MapResult | None = None
         self._basis = None
+        self._stale = False          # the map no longer matches the model (refreshed when shown)
+        self._opened = False         # shown once: the first map is computed then, unasked
         self.figure = QComboBox()
         self.axis_names = [QComboBox(), QComboBox()]
         self.lows = [self._spin(), self._spin()]
@@ -208,6 +210,7 @@ class ExploreView(QWidget):
                       np.linspace(ends[i][0], ends[i][1], n)) for i in (0, 1))
 
     def start_map(self) -> None:
+        self._stale = False
         (x_name, x), (y_name, y) = self.axes()
         if x_name == y_name:
             self.status.setText(self.tr("Choose two different parameters."))
@@ -303,6 +306,7 @@ class ExploreView(QWidget):
 
     # ---- jobs -----------------------------------------------------------------
     def _start(self, job, text: str, busy: bool = False) -> None:
+        self._refresh_timer.stop()       # a job started now supersedes a pending refresh
         # Bound methods of this GUI-thread object: Qt queues the calls to this thread.
         job.progress.connect(self._progress)
         job.finished.connect(self._finished)
@@ -370,7 +374,18 @@ class ExploreView(QWidget):
             self._fill_figures()
         self._mark_current()
         if self.result is not None and self._current_basis() != self._basis:
-            self._refresh_timer.start()      # the fixed parameters changed: the map is stale
+            # The fixed parameters changed: the map is stale. Recomputed shortly if the tab
+            # is shown, else when it is shown (no worker competing with the edits).
+            self._stale = True
+            if self.isVisible():
+                self._refresh_timer.start()
+
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        first = not self._opened and self.result is None and self.runner.job is None
+        self._opened = True
+        if first or self._stale:
+            self._refresh_timer.start()     # the map a user expects on opening the tab
 
     def export_image(self, path: str) -> None:
         """Write the heat map with its colour bar to ``path``: SVG for ``.svg``, else a raster

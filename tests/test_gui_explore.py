@@ -183,3 +183,37 @@ def test_heat_map_exports_through_the_shared_image_export(qtbot, model, tmp_path
     assert data.startswith(b"\x89PNG") if suffix == ".png" else b"<svg" in data[:2000]
     with pytest.raises(ValueError):
         view.export_image(str(tmp_path / "map.unknown"))
+
+
+def test_opening_the_tab_computes_the_map_and_a_hidden_tab_waits(qtbot, tmp_path):
+    """The map is there when the user first opens the tab, without pressing Compute; a
+    design edit while another tab is in front starts no worker, and the map catches up
+    when the tab is shown again."""
+    from gui_helpers import main_window
+
+    with main_window(tmp_path) as window:
+        explore = window.explore
+        explore.count.setValue(6)
+        qtbot.wait(3 * 300)                                   # longer than the refresh delay
+        assert explore.result is None and explore.runner.job is None   # never shown: no work
+        window.tabs.setCurrentWidget(explore)
+        qtbot.waitUntil(lambda: explore.result is not None and explore.runner.job is None,
+                        timeout=20_000)
+        first = explore.result
+        assert first.valid.shape == (6, 6)
+        window.tabs.setCurrentIndex(0)
+        window.model.set_spec(stroke=400.0)
+        qtbot.wait(3 * 300)
+        assert explore.result is first and explore.runner.job is None   # hidden: waits
+        window.tabs.setCurrentWidget(explore)
+        qtbot.waitUntil(lambda: explore.result is not first and explore.runner.job is None,
+                        timeout=20_000)
+        yy, xx = np.meshgrid(explore.result.y, explore.result.x, indexing="ij")
+        x_name, y_name = explore.result.x_name, explore.result.y_name
+        ev = evaluate(window.model.valid_spec, {x_name: xx.ravel(), y_name: yy.ravel()},
+                      window.model.rpms)
+        expected = np.max(ev.figures["a_max_m_s2"], axis=-1).reshape(explore.result.valid.shape)
+        valid = explore.result.valid
+        assert valid.any()
+        assert np.allclose(explore.result.figures["accel"][valid], expected[valid], rtol=1e-12)
+        explore.shutdown()
