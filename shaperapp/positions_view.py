@@ -9,7 +9,7 @@ which pastes into Excel/WPS as cells.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QAbstractTableModel, QEvent, QModelIndex, QPersistentModelIndex, Qt
+from PySide6.QtCore import QAbstractTableModel, QEvent, QModelIndex, QPersistentModelIndex, Qt, QTimer
 from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
                                QSpinBox, QTableView, QWidget)
@@ -114,8 +114,12 @@ class PositionsView(QWidget):
         self.copy_shortcut.activated.connect(self.copy)
         self.copy_button.clicked.connect(self.copy)
         self.speed_box.currentIndexChanged.connect(lambda _: self._show())
-        self.count_box.valueChanged.connect(lambda _: self._invalidate())
+        self.count_box.valueChanged.connect(lambda _: self._recount())
         self.view.selectionModel().currentRowChanged.connect(self._on_row)
+        # One edit emits resultsChanged and then forcesChanged: the table (which needs both)
+        # is rebuilt once, when control returns to the event loop.
+        self._pending = QTimer(self, singleShot=True, interval=0)
+        self._pending.timeout.connect(self._catch_up)
         model.resultsChanged.connect(self._invalidate)
         model.forcesChanged.connect(self._invalidate)
         self._retranslate()
@@ -147,12 +151,19 @@ class PositionsView(QWidget):
         self._stale = True
         self._fill_speeds()
         if self.isVisible():
+            self._pending.start()
+
+    def _recount(self) -> None:
+        self._stale = True
+        self._catch_up()
+
+    def _catch_up(self) -> None:
+        if self.isVisible() and (self._stale or self.table_model.rowCount() == 0):
             self._show()
 
     def showEvent(self, event) -> None:
         super().showEvent(event)
-        if self._stale or self.table_model.rowCount() == 0:
-            self._show()
+        self._catch_up()
 
     def _show(self) -> None:
         table = self.table()

@@ -45,12 +45,25 @@ def test_selecting_a_row_moves_the_animation(view, model, qtbot):
     assert abs(model.crank_deg - exact) <= model.step_deg / 2 + 1e-9
 
 
-def test_count_and_design_changes_rebuild(view, model):
+def test_count_and_design_changes_rebuild(view, model, qtbot):
     view.set_count(24)
     assert view.table_model.rowCount() == 24 + 6
     assert cell(view, 1, "crank_deg") == "15.000"
     model.set_spec(variant="rod")
+    # one rebuild for the edit's two signals (results, then forces), when events run
+    qtbot.waitUntil(lambda: "rod_deg" in view.table_model._tips)
     assert cell(view, 0, "rod_deg") is not None
+
+
+def test_one_edit_rebuilds_the_table_once(view, model, qtbot, monkeypatch):
+    calls = []
+    show = view._show
+    monkeypatch.setattr(view, "_show", lambda: (calls.append(1), show()))
+    model.set_spec(time_ratio=1.5)
+    qtbot.waitUntil(lambda: calls != [])
+    qtbot.wait(50)
+    assert calls == [1]
+    assert cell(view, 1, "crank_deg") is not None
 
 
 def test_copy_is_tab_separated_with_header(view, qtbot):
