@@ -1944,6 +1944,10 @@
         <translation>工作行程</translation>
     </message>
     <message>
+        <source>every speed</source>
+        <translation>各转速相同</translation>
+    </message>
+    <message>
         <source>return stroke</source>
         <translation>回程</translation>
     </message>

@@ -151,9 +151,9 @@ class PlotsWidget(StackView):
         shorts = [f"{float(r):g}" for r in motion.rpm]        # under the legend's "r/min"
         if self._mode == ANGLE:
             x = np.degrees(motion.crank_angle)
-            shared = name in SHARED_PLOTS
-            return [Curve(x, row, label, SHARED if shared else speed_colour(i), legend=not shared,
-                          short=short)
+            if name in SHARED_PLOTS:      # one curve, not one per speed drawn on top of each other
+                return [Curve(x, values[0], self.tr("every speed"), SHARED, legend=False, short="")]
+            return [Curve(x, row, label, speed_colour(i), short=short)
                     for i, (row, label, short) in enumerate(zip(values, labels, shorts))]
         back = ~self._in_work(np.degrees(motion.crank_angle))
         return [Curve(motion.time[i], row, label, speed_colour(i), dashed=back, short=short)

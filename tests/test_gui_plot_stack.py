@@ -309,9 +309,25 @@ def test_legend_click_hides_a_speed_everywhere(qtbot, plots, model):
     view = plots.plot_item("ram_v").scene().views()[0]
     qtbot.mouseClick(view.viewport(), Qt.MouseButton.LeftButton,
                      pos=view.mapFromScene(sample.sceneBoundingRect().center()))
-    for name in ("ram_x", "ram_v", "ram_a"):
+    for name in ("ram_v", "ram_a"):
         shown = [c.label for c in plots.stack().plot(name).shown_curves()]
         assert shown == ["30 r/min", "90 r/min"]
         assert [label for label, _, _ in plots.cursor_dots(name)] == ["30 r/min", "90 r/min"]
+    # the displacement is the same at every speed: one curve, not hidden with a speed
+    assert [c.label for c in plots.stack().plot("ram_x").shown_curves()] == ["every speed"]
     model.set_spec(time_ratio=1.5)                       # stays hidden after a redraw
     assert [c.label for c in plots.stack().plot("ram_v").shown_curves()] == ["30 r/min", "90 r/min"]
+
+
+def test_displacement_against_the_angle_is_one_curve_with_one_readout_value(qtbot, plots, model):
+    """16 speeds give 16 velocity curves but one displacement curve (the same at every
+    speed against the crank angle), and the read-out lists that value once."""
+    model.set_rpms([20 + 5 * i for i in range(16)])
+    assert len(plots.stack().plot("ram_v").shown_curves()) == 16
+    assert len(plots.stack().plot("ram_x").shown_curves()) == 1
+    hover(qtbot, plots, "ram_x", 100.2)
+    qtbot.waitUntil(lambda: "100." in plots.readout_text())
+    text = plots.readout_text()
+    assert "r/min:" not in text and text.count("every speed") == 1
+    x = model.motion.ram_x[100]                         # nearest grid angle: 100°
+    assert f"{fmt(x, '.4g')} mm" in text

@@ -17,7 +17,7 @@ from PySide6.QtWidgets import QApplication
 
 from core.kinematics import crank_angles, solve
 from shaperapp.model import DesignModel
-from shaperapp.plots import LEVER_PLOTS, PLOT_NAMES, PlotsWidget
+from shaperapp.plots import LEVER_PLOTS, PLOT_NAMES, SHARED_PLOTS, PlotsWidget
 
 from gui_helpers import shown
 
@@ -31,12 +31,11 @@ def core_curves(model: DesignModel, name: str) -> tuple[np.ndarray, np.ndarray]:
     """(crank angle in °, values (speeds, angles)) straight from core for ``name``."""
     phi = crank_angles(model.step_deg)
     motion = solve(model.design, phi, model.rpms)
-    m = len(model.rpms)
     values = {
-        "ram_x": np.tile(motion.ram_x, (m, 1)),
+        "ram_x": motion.ram_x[None, :],                     # the same at every speed: one curve
         "ram_v": motion.ram_v,
         "ram_a": motion.ram_a,
-        "lever_angle": np.tile(np.degrees(motion.lever_angle), (m, 1)),
+        "lever_angle": np.degrees(motion.lever_angle)[None, :],
         "lever_omega": motion.lever_omega,
         "lever_alpha": motion.lever_alpha,
     }[name]
@@ -47,7 +46,7 @@ def assert_matches_core(widget: PlotsWidget, model: DesignModel) -> None:
     for name in PLOT_NAMES:
         x_deg, values = core_curves(model, name)
         shown = widget.curve_data(name)
-        assert len(shown) == len(model.rpms), name
+        assert len(shown) == (1 if name in SHARED_PLOTS else len(model.rpms)), name
         for (x, y), expected in zip(shown, values):
             np.testing.assert_allclose(x, x_deg, rtol=0, atol=1e-9, err_msg=name)
             np.testing.assert_allclose(y, expected, rtol=1e-12, atol=1e-12, err_msg=name)
@@ -88,7 +87,7 @@ def test_rod_variant_equals_core(widget, model):
 def test_speeds_add_and_remove_curves(widget, model):
     model.set_rpms([40, 60, 80])
     for name in PLOT_NAMES:
-        assert len(widget.curve_data(name)) == 3
+        assert len(widget.curve_data(name)) == (1 if name in SHARED_PLOTS else 3)
     assert widget.legend_names() == ["40 r/min", "60 r/min", "80 r/min"]
     assert_matches_core(widget, model)
 
