@@ -214,7 +214,9 @@ def test_the_fuzzer_reaches_success_and_every_subcommand():
     """The generator is not so hostile that nothing ever succeeds."""
     outcomes = {}
 
-    @settings(max_examples=120, deadline=None, database=None,
+    # A fixed sequence of examples: whether the generator reaches every outcome must not
+    # depend on the run (a random draw once missed a subcommand on CI).
+    @settings(max_examples=120, deadline=None, database=None, derandomize=True,
               suppress_health_check=[HealthCheck.too_slow])
     @given(argv=command_lines())
     def sample(argv):

@@ -251,7 +251,9 @@ def test_the_library_fuzzer_reaches_success_and_failure(action):
     that it never fails."""
     statuses: set[int] = set()
 
-    @settings(max_examples=16, deadline=None, database=None,
+    # A fixed sequence of examples: whether the generator reaches every outcome must not
+    # depend on the run (a random draw once missed a subcommand on CI).
+    @settings(max_examples=16, deadline=None, database=None, derandomize=True,
               suppress_health_check=[HealthCheck.too_slow])
     @given(argv=library_lines(action))
     def sample(argv):
