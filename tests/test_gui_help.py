@@ -10,7 +10,7 @@ from shaperapp.help import GuideDialog, about_text, guide_html, version
 @pytest.mark.parametrize("language", ["en", "zh_CN"])
 def test_guide_has_every_section(language):
     html = guide_html(language)
-    for anchor in ("start", "conventions", "synthesis", "example", "glossary", "files", "cli"):
+    for anchor in ("start", "window", "conventions", "synthesis", "example", "glossary", "files", "cli"):
         assert f'id="{anchor}"' in html
     assert "曲柄" in html and "crank" in html          # the glossary is bilingual in both
 
@@ -44,3 +44,31 @@ def test_guide_dialog_switches_language(qtbot):
     dialog.set_language("zh_CN")
     assert "使用指南" in dialog.browser.toPlainText()
 
+
+
+def _plain(text: str) -> str:
+    """A menu text as the guide names it: no accelerator marks, no ellipsis."""
+    text = re.sub(r"\(&.\)", "", text).replace("&", "").replace("…", "")
+    return text.strip()
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_menu_paths_named_in_the_guide_exist(language, tmp_path):
+    """Every 'Menu › Entry' the guide tells the user to choose is in the window's menus,
+    in the guide's language (a guide that names menus the app lacks misleads)."""
+    from PySide6.QtWidgets import QApplication
+
+    from gui_helpers import main_window
+
+    html = guide_html(language)
+    paths = re.findall(r"<b>([^<›]+) › ([^<]+)</b>", html)
+    assert len(paths) >= 6
+    with main_window(tmp_path) as window:
+        window.set_language(language)
+        QApplication.processEvents()                  # the LanguageChange events
+        menus = {_plain(action.text()): action.menu() for action in window.menuBar().actions()}
+        for menu_name, entry in paths:
+            menu = menus.get(menu_name.strip())
+            assert menu is not None, (menu_name, sorted(menus))
+            entries = [_plain(a.text()) for a in menu.actions()]
+            assert any(e.startswith(entry.strip()) for e in entries), (entry, entries)
