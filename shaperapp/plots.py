@@ -66,6 +66,8 @@ class PlotsWidget(StackView):
         self._x_combo.addItems(["", ""])
         self._lever_button = QToolButton()
         self._lever_button.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
+        # The style's menu arrow sits on the text's last letter; a ▾ after the text instead.
+        self._lever_button.setStyleSheet("QToolButton::menu-indicator { image: none; width: 0px; }")
         self._lever_menu = QMenu(self)
         self._lever_actions: dict[str, QAction] = {}
         for name in LEVER_PLOTS:
@@ -231,7 +233,7 @@ class PlotsWidget(StackView):
         # one literal per tr() call, so that lupdate sees the whole text
         self._x_combo.setToolTip(self.tr(
             "Plot against the crank angle (0–360°) or against time (each speed's own cycle)"))
-        self._lever_button.setText(self.tr("Lever plots"))
+        self._lever_button.setText(self.tr("Lever plots") + " ▾")
         self._lever_button.setToolTip(self.tr(
             "Show the slotted lever's angle, angular velocity or angular acceleration"))
         for name, action in self._lever_actions.items():
