@@ -213,6 +213,7 @@ class MainWindow(QMainWindow):
             self.tabs.setTabText(i, title)
         self.docks.retranslate()
         self.menus.retranslate()
+        self.model.retranslate_history()
         self._show_undo_text(self.model.undo_stack.undoText())
         self._show_redo_text(self.model.undo_stack.redoText())
         self._update_title()

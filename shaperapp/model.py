@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, replace
-from typing import Any, Hashable
+from typing import Any, Callable, Hashable
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
@@ -216,36 +216,45 @@ class DesignModel(QObject):
             return
         touched = tuple(sorted(name for name in changes if changes[name] != getattr(old, name)))
         choice = mode != old.mode or any(name not in NUMBER_FIELDS for name in touched)
+        names = ["mode"] if mode != old.mode else list(touched)
         self._push(replace(self._inputs, spec=spec), None if choice else ("spec", touched),
-                   self._edit_text(["mode"] if mode != old.mode else touched))
+                   lambda: self._edit_text(names))
 
     def set_rpms(self, rpms) -> None:
         """Set the crank speeds (r/min, or text as typed); an invalid list is reported, not applied."""
         values = tuple(rpms)
         if values == self._inputs.rpms:
             return
-        self._push(replace(self._inputs, rpms=values), None, self._edit_text(["rpm"]))
+        self._push(replace(self._inputs, rpms=values), None, lambda: self._edit_text(["rpm"]))
 
     def set_step(self, step_deg: Any) -> None:
         """Set the angle step (degrees, or text as typed)."""
         if step_deg == self._inputs.step or (isinstance(step_deg, float) and isinstance(self._inputs.step, float)
                                             and math.isnan(step_deg) and math.isnan(self._inputs.step)):
             return
-        self._push(replace(self._inputs, step=step_deg), ("step",), self._edit_text(["step"]))
+        self._push(replace(self._inputs, step=step_deg), ("step",), lambda: self._edit_text(["step"]))
 
     def set_masses(self, **changes: Any) -> None:
         """Change some load inputs; apply them if they are all valid."""
         loads = {**self._inputs.load_dict, **changes}
         if loads == self._inputs.load_dict:
             return
+        names = sorted(changes)
         self._push(replace(self._inputs, loads=tuple(sorted(loads.items()))),
-                   ("loads", tuple(sorted(changes))), self._edit_text(sorted(changes)))
+                   ("loads", tuple(names)), lambda: self._edit_text(names))
 
     def revert_invalid(self) -> None:
         """Put the design on screen back into every input (one undoable step)."""
         inputs = Inputs(self._valid_spec, self._rpms, self._step, _loads(self._masses))
         if inputs != self._inputs:
-            self._push(inputs, None, QCoreApplication.translate("model", "revert invalid inputs"))
+            self._push(inputs, None, lambda: QCoreApplication.translate("model", "revert invalid inputs"))
+
+    def retranslate_history(self) -> None:
+        """Every undo/redo entry in the current language (after a language switch)."""
+        for i in range(self.undo_stack.count()):
+            command = self.undo_stack.command(i)
+            if isinstance(command, InputEdit):
+                command.retranslate()
 
     def end_typing(self) -> None:
         """The user left a field: the next keystrokes start a new undo step."""
@@ -307,10 +316,10 @@ class DesignModel(QObject):
     def _on_clean_changed(self, clean: bool) -> None:
         self.dirtyChanged.emit(not clean)
 
-    def _push(self, inputs: Inputs, key: Hashable | None, text: str) -> None:
+    def _push(self, inputs: Inputs, key: Hashable | None, describe: Callable[[], str]) -> None:
         if key is not None:
             key = (key, self._session)
-        self.undo_stack.push(InputEdit(self._apply, self._inputs, inputs, key, text))
+        self.undo_stack.push(InputEdit(self._apply, self._inputs, inputs, key, describe))
 
     @staticmethod
     def _edit_text(names) -> str:

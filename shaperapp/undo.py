@@ -39,11 +39,13 @@ class InputEdit(QUndoCommand):
 
     ``key`` is None for an edit that never merges (a choice, a speed added), else
     a hashable naming the fields and the typing session; consecutive edits with
-    equal keys merge. An edit merged back to where it started becomes obsolete."""
+    equal keys merge. An edit merged back to where it started becomes obsolete.
+    ``describe`` gives the history text in the current language."""
 
     def __init__(self, apply: Callable[[Inputs], None], before: Inputs, after: Inputs,
-                 key: Hashable | None, text: str) -> None:
-        super().__init__(text)
+                 key: Hashable | None, describe: Callable[[], str]) -> None:
+        super().__init__(describe())
+        self._describe = describe     # the text in the current language, again after a switch
         self._apply = apply
         self.before = before
         self.after = after
@@ -58,6 +60,9 @@ class InputEdit(QUndoCommand):
         self.after = other.after
         self.setObsolete(self.after == self.before)
         return True
+
+    def retranslate(self) -> None:
+        self.setText(self._describe())
 
     def redo(self) -> None:
         self._apply(self.after)

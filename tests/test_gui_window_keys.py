@@ -162,3 +162,25 @@ def test_image_export_errors_name_the_path(window, tmp_path, view):
     assert str(odd) in window.failures[-1]
     good = tmp_path / "out.png"
     assert window.export_image_to(widget, str(good)) and good.stat().st_size > 1000
+
+
+def test_undo_history_follows_a_language_switch(window):
+    """Entries made in English read in Chinese after the switch, and back again (they
+    kept the language they were made in)."""
+    window.model.set_spec(stroke=320.0)
+    window.model.set_spec(time_ratio=1.5)
+    window.act_undo.trigger()                      # one entry to undo, one to redo
+    stack = window.model.undo_stack
+    english = [stack.command(i).text() for i in range(stack.count())]
+    assert english == ["Stroke H", "Time ratio K"]
+    window.set_language("zh_CN")
+    QApplication.processEvents()
+    chinese = [stack.command(i).text() for i in range(stack.count())]
+    assert chinese == [QCoreApplication.translate("messages", "Stroke H"),
+                       QCoreApplication.translate("messages", "Time ratio K")]
+    assert chinese != english and all(re.search(r"[\u4e00-\u9fff]", t) for t in chinese)
+    assert chinese[0] in window.act_undo.text() and chinese[1] in window.act_redo.text()
+    window.set_language("en")
+    QApplication.processEvents()
+    assert [stack.command(i).text() for i in range(stack.count())] == english
+    assert window.act_undo.text() == "&Undo Stroke H"
