@@ -20,33 +20,26 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 from PySide6.QtGui import QUndoStack
 
-from core.dynamics import Dynamics, DynamicsSummary, MassProperties, masses_for_design, solve_dynamics
-
-from core.flywheel import summarize
 from core.compare import Candidate
+from core.dynamics import Dynamics, DynamicsSummary, MassProperties
 from core.errors import DesignError
 from core.geometry import Design
-from core.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, solve
-from core.metrics import CycleMetrics, analyze
+from core.kinematics import Motion
+from core.metrics import CycleMetrics
 from core.spec import NUMBER_FIELDS, Spec
 
 from .messages import field_name
+from .model_results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, solve_forces,
+                            typed_error)
 from .undo import InputEdit, Inputs
 
 DEFAULT_RPMS = (40.0, 60.0)
 DEFAULT_STEP = 1.0
 MAX_SPEEDS = 16          # as core.kinematics.check_rpms allows
-# angles × speeds the whole window recomputes and redraws within about half a second:
-# 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
-# (README, Performance). core's own cap (core.kinematics) is far larger, for the CLI.
-MAX_GUI_SAMPLES = 60_000
 # The classic course-design loads of a shaper (lever 200 N, J = 1.1 kg·m², ram 700 N,
 # cutting force 7000 N at 80 mm below the guide), so the Forces view shows a case at once.
 DEFAULT_MASSES = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                                 cut_force_N=7000.0, cut_height_mm=80.0, delta=1.0 / 30.0)
-# Core computations can fail in ways other than DesignError on extreme input; the GUI
-# reports those as "cannot be computed" and keeps the last valid design.
-COMPUTE_ERRORS = (ArithmeticError, ValueError, RuntimeError, MemoryError)
 
 
 def _loads(masses: MassProperties, pending: dict[str, Any] | None = None) -> tuple[tuple[str, Any], ...]:
@@ -88,7 +81,7 @@ class DesignModel(QObject):
         self._masses = DEFAULT_MASSES
         self._inputs = Inputs(self._valid_spec, self._rpms, self._step, _loads(self._masses))
         (self._design, self._motion, self._metrics,
-         self._dynamics, self._dynamics_summary) = self._compute(self._inputs, self._masses)
+         self._dynamics, self._dynamics_summary) = compute(self._inputs, self._masses)
         self.undo_stack = QUndoStack(self)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
         self._comparison: tuple[Candidate, ...] = ()
@@ -283,11 +276,11 @@ class DesignModel(QObject):
         inputs = Inputs(spec, tuple(float(v) for v in rpms), float(step_deg), _loads(masses))
         try:
             spec.check_fields()
-            results = self._compute(inputs, masses)
+            results = compute(inputs, masses)
         except DesignError:
             raise
         except COMPUTE_ERRORS as exc:
-            raise self._compute_error(exc) from None
+            raise compute_error(exc) from None
         self._inputs = inputs
         self._valid_spec, self._rpms, self._step, self._masses = spec, inputs.rpms, inputs.step, masses
         self._design, self._motion, self._metrics, self._dynamics, self._dynamics_summary = results
@@ -355,12 +348,12 @@ class DesignModel(QObject):
     def _recompute(self) -> None:
         inputs = self._inputs
         try:
-            design, motion, metrics = self._compute_motion(inputs)
+            design, motion, metrics = compute_motion(inputs)
         except DesignError as exc:
-            self._set_error(self._input_error(exc))
+            self._set_error(typed_error(exc, self._inputs.spec))
             return
         except COMPUTE_ERRORS as exc:
-            self._set_error(self._compute_error(exc))
+            self._set_error(compute_error(exc))
             return
         fraction = self._index / max(self.angle_count - 1, 1)
         self._design, self._motion, self._metrics = design, motion, metrics
@@ -377,50 +370,18 @@ class DesignModel(QObject):
         the last valid ones, which are solved again only when the design changed."""
         try:
             masses = replace(DEFAULT_MASSES, **self._inputs.load_dict)
-            dynamics, summary = self._solve_forces(self._design, self._motion, masses)
+            dynamics, summary = solve_forces(self._design, self._motion, masses)
         except (DesignError, *COMPUTE_ERRORS) as exc:
-            error = exc if isinstance(exc, DesignError) else self._compute_error(exc)
+            error = exc if isinstance(exc, DesignError) else compute_error(exc)
             self._set_forces_error(error, force=announce)
             if not design_changed:
                 return
             masses = self._masses
-            dynamics, summary = self._solve_forces(self._design, self._motion, masses)
+            dynamics, summary = solve_forces(self._design, self._motion, masses)
         else:
             self._set_forces_error(None, force=announce)
         self._masses, self._dynamics, self._dynamics_summary = masses, dynamics, summary
         self.forcesChanged.emit()
-
-    def _compute_motion(self, inputs: Inputs) -> tuple[Design, Motion, CycleMetrics]:
-        """Design, motion and metrics of ``inputs``; DesignError names the bad input."""
-        design = inputs.spec.design()
-        rpms = tuple(float(v) for v in check_rpms(list(inputs.rpms)))
-        if not isinstance(inputs.step, (int, float)) or isinstance(inputs.step, bool):
-            raise DesignError("step", inputs.step, "must be a number")
-        step = float(inputs.step)
-        check_request(angle_count(step), len(rpms), "step", step, limit=MAX_GUI_SAMPLES)
-        angles = crank_angles(step)
-        return design, solve(design, angles, rpms), analyze(design, rpms)
-
-    def _compute(self, inputs: Inputs, masses: MassProperties):
-        design, motion, metrics = self._compute_motion(inputs)
-        return (design, motion, metrics) + self._solve_forces(design, motion, masses)
-
-    def _input_error(self, error: DesignError) -> DesignError:
-        """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm."""
-        spec = self._inputs.spec
-        if (error.parameter == "rod" and spec.variant == "rod" and spec.rod_input == "ratio"
-                and isinstance(error.value, float) and isinstance(spec.rod_ratio, float) and error.value > 0):
-            lever = error.value / spec.rod_ratio
-            allowed = error.allowed
-            if allowed.startswith("must be > ") and " mm " in allowed:
-                bound = float(allowed.split()[3]) / lever
-                allowed = f"must be > {bound:.4g}" + allowed.split(" mm", 1)[1]
-            return DesignError("rod_ratio", spec.rod_ratio, allowed)
-        return error
-
-    @staticmethod
-    def _compute_error(exc: BaseException) -> DesignError:
-        return DesignError("design", type(exc).__name__, "cannot be computed for these inputs")
 
     def _set_error(self, error: DesignError | None) -> None:
         same = (error is None and self._error is None) or (
@@ -435,10 +396,3 @@ class DesignModel(QObject):
         self._forces_error = error
         if changed or force:
             self.forcesErrorChanged.emit()
-
-    @staticmethod
-    def _solve_forces(design: Design, motion: Motion,
-                      masses: MassProperties) -> tuple[Dynamics, DynamicsSummary]:
-        used = masses_for_design(design, masses)
-        return (solve_dynamics(design, motion.crank_angle, motion.rpm, used),
-                summarize(design, motion.rpm, used))

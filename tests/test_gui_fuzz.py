@@ -21,7 +21,8 @@ from core.io import load_design
 from core.spec import NUMBER_FIELDS
 from shaperapp import file_dialogs, i18n
 from shaperapp.main_window import MainWindow
-from shaperapp.model import MAX_GUI_SAMPLES, DesignModel
+from shaperapp.model import DesignModel
+from shaperapp.model_results import MAX_GUI_SAMPLES
 
 from hostile_files import CASES, VALID, build_case
 

@@ -325,7 +325,7 @@ def test_a_design_core_cannot_compute_is_reported_not_ignored(model, monkeypatch
     def broken(*args, **kwargs):
         raise RuntimeError("the ram does not have exactly two dead points")
 
-    monkeypatch.setattr("shaperapp.model.analyze", broken)
+    monkeypatch.setattr("shaperapp.model_results.analyze", broken)
     model.set_spec(stroke=310.0)
     assert model.error is not None and model.error.parameter == "design"
     assert describe(model.error) == "Design: cannot be computed for these inputs; try other values"

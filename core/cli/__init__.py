@@ -19,8 +19,8 @@ from types import ModuleType
 from typing import Sequence
 
 from ..errors import DesignError, FileFormatError
-from .common import (GuardedStdout, OutputError, Parser, StdoutError, UsageError,
-                     design_error_text, fail, install_safe_output, version_text)
+from .common import Parser, UsageError, design_error_text, fail, version_text
+from .output import GuardedStdout, OutputError, StdoutError, install_safe_output
 
 # Order is the order of ``shaper --help``.
 CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "library")

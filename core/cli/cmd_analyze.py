@@ -8,8 +8,8 @@ from ..geometry import Design
 from ..io import finite_or_none
 from ..metrics import CycleMetrics, SpeedMetrics, analyze
 from .cmd_synth import design_summary
-from .common import (add_design_options, add_speed_options, design_from_args, print_json,
-                     print_table, rpms_from_args)
+from .common import add_design_options, add_speed_options, design_from_args, rpms_from_args
+from .output import print_json, print_table
 
 HELP = "cycle metrics per crank speed"
 DESCRIPTION = ("Measured K and stroke, working and return angles and times, maximum cutting and "

@@ -24,9 +24,10 @@ from ..library import Entry, Library, file_stem, unique_name
 from ..library_files import export_entries, import_entries, read_design_files
 from ..library_query import QueryError, parse_filter, sort_sql
 from ..library_store import ENV_VAR, LibraryError, backup_copy, resolve_path
-from .common import (LOAD_OPTIONS, OutputError, Parser, UsageError, add_design_options, add_load_options,
-                     add_speed_options, design_file, fail, masses_from_args, number, print_json,
-                     rpms_from_args, spec_from_args, write_output)
+from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
+                     add_speed_options, design_file, fail, masses_from_args, number,
+                     rpms_from_args, spec_from_args)
+from .output import OutputError, print_json, write_output
 
 HELP = "keep, find, export and compare designs in a library"
 DESCRIPTION = ("A design library: named designs with notes, tags and their key figures, in one "

@@ -10,7 +10,8 @@ from ..optimize import OBJECTIVES, Optimum, optimize
 from ..sweep import PARAMETERS, Evaluation
 from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
-from .common import add_design_options, add_load_options, add_speed_options, print_json, print_table
+from .common import add_design_options, add_load_options, add_speed_options
+from .output import print_json, print_table
 
 HELP = "find the design that minimizes an objective"
 DESCRIPTION = ("Search the varied parameters within their bounds for the design with the smallest "

@@ -12,9 +12,10 @@ import numpy as np
 from ..errors import DesignError
 from ..spec import Spec
 from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
-from .common import (LOAD_OPTIONS, add_design_options, add_load_options,
-                     add_speed_options, design_error_text, design_file, masses_from_args, number,
-                     rpms_from_args, spec_from_args, write_output)
+from .common import (LOAD_OPTIONS, add_design_options, add_load_options, add_speed_options,
+                     design_error_text, design_file, masses_from_args, number, rpms_from_args,
+                     spec_from_args)
+from .output import write_output
 
 HELP = "figures of many designs over varied parameters"
 DESCRIPTION = ("Vary one or more design parameters over a range and report, for every combination, "

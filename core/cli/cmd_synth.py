@@ -6,7 +6,8 @@ import math
 from typing import Any, Mapping
 
 from ..geometry import Design
-from .common import add_design_options, design_from_args, print_json, print_table
+from .common import add_design_options, design_from_args
+from .output import print_json, print_table
 
 HELP = "synthesize dimensions from L1, K, H"
 DESCRIPTION = ("Synthesize the frame distance L2, the lever length L3 and the ram-guide height "

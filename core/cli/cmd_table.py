@@ -9,7 +9,8 @@ from ..positions import (DEFAULT_COUNT, PositionTable, position_table, positions
                          table_records, text_groups)
 from .common import (LOAD_OPTIONS, UsageError, add_design_options, add_load_options,
                      add_speed_options, design_file, design_from_args, masses_from_args, number,
-                     number_list, print_json, rpms_from_args, write_output)
+                     number_list, rpms_from_args)
+from .output import print_json, write_output
 
 HELP = "kinematics and forces at the 12 (or N) crank positions and the special positions"
 DESCRIPTION = ("The course-design table: positions 1 … N equally spaced from the limit position "

@@ -1,4 +1,4 @@
-"""What every ``shaper`` subcommand shares: options, parsing, output.
+"""What every ``shaper`` subcommand shares: options and parsing (output: ``output``).
 
 The design can come from options (``--crank/--K/--stroke`` or ``--dims``) or
 from a design file (``--design``), never both. Numbers are parsed here so a
@@ -8,20 +8,18 @@ bad one is reported as a ``DesignError`` naming the core parameter, which
 from __future__ import annotations
 
 import argparse
-import codecs
-import json
 import math
 import re
 import sys
 from dataclasses import replace
-from typing import Any, Iterable
+from typing import Any
 
 import numpy as np
 
 from ..dynamics import MassProperties, masses_for_design
-from ..errors import DesignError, os_reason
+from ..errors import DesignError
 from ..geometry import Design
-from ..io import atomic_write, load_design
+from ..io import load_design
 from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
                           check_angles, check_request, crank_angles)
 from ..spec import Spec
@@ -68,14 +66,6 @@ class UsageError(Exception):
     """Bad command-line words; reported as one line with exit status 2."""
 
 
-class OutputError(Exception):
-    """An output file could not be written; the message names the option and path."""
-
-
-class StdoutError(OutputError):
-    """Standard output could not be written (a full disk, a closed descriptor)."""
-
-
 class Parser(argparse.ArgumentParser):
     """One-line errors instead of usage + message; negative numbers are values."""
 
@@ -119,89 +109,6 @@ def fail(message: str, status: int = 2) -> int:
     except (OSError, ValueError):
         pass
     return status
-
-
-# ---- output ----------------------------------------------------------------
-_ASCII = {"θ": "theta", "²": "^2", "·": "*", "−": "-", "°": "deg", "Δ": "Delta", "δ": "delta",
-          "≤": "<=", "≥": ">=", "→": "->", "φ": "phi", "ψ": "psi", "λ": "lambda", "…": "...",
-          "×": "x", "μ": "u", "ω": "omega", "α": "alpha"}
-
-
-def _ascii_fallback(error: UnicodeError) -> tuple[str, int]:
-    if not isinstance(error, UnicodeEncodeError):
-        raise error
-    text = error.object[error.start:error.end]
-    return "".join(_ASCII.get(ch, "?") for ch in text), error.end
-
-
-codecs.register_error("shaper-ascii", _ascii_fallback)
-
-
-def install_safe_output() -> None:
-    """Symbols a console cannot encode (θ, ² …) are spelled out instead of crashing."""
-    for stream in (sys.stdout, sys.stderr):
-        try:
-            stream.reconfigure(errors="shaper-ascii")  # type: ignore[union-attr]
-        except (AttributeError, ValueError, OSError):
-            pass
-
-
-def print_table(rows: list[tuple[str, str]]) -> None:
-    width = max(len(k) for k, _ in rows)
-    for key, value in rows:
-        print(f"{key:<{width}}  {value}")
-
-
-def print_json(document: Any) -> None:
-    """JSON on stdout; refuses NaN/Infinity, which no JSON reader accepts (an undefined
-    value must already be None, i.e. null)."""
-    print(json.dumps(document, indent=2, allow_nan=False))
-
-
-def write_output(option: str, target: str, text: str | Iterable[str]) -> None:
-    """``text`` (a string or pieces of it) to stdout for ``-``, else to the file ``target``
-    (atomically for a regular file, see ``core.atomic.atomic_write``)."""
-    if target == "-":
-        try:
-            for piece in [text] if isinstance(text, str) else text:
-                sys.stdout.write(piece)
-            sys.stdout.flush()
-        except StdoutError as exc:
-            raise StdoutError(f"{option}: {exc}") from None
-        return
-    try:
-        atomic_write(target, text)
-    except OSError as exc:      # a WriteError: names the user's path and a plain reason
-        raise OutputError(f"{option}: {exc}") from None
-
-
-class GuardedStdout:
-    """sys.stdout for the length of one command: a failed write (a full disk, a closed
-    descriptor) becomes a StdoutError, reported as one line instead of a traceback.
-    BrokenPipeError passes through: the reader left, which is not an error."""
-
-    def __init__(self, stream: Any) -> None:
-        self._stream = stream
-
-    def write(self, text: str) -> int:
-        return self._guard("write", text)
-
-    def flush(self) -> None:
-        self._guard("flush")
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._stream, name)
-
-    def _guard(self, method: str, *args: Any) -> Any:
-        if self._stream is None:      # started with stdout closed (``>&-``)
-            raise StdoutError("cannot write to standard output: it is closed")
-        try:
-            return getattr(self._stream, method)(*args)
-        except BrokenPipeError:
-            raise
-        except (OSError, ValueError) as exc:
-            reason = os_reason(exc) if isinstance(exc, OSError) else "it is closed"
-            raise StdoutError(f"cannot write to standard output: {reason}") from None
 
 
 # ---- numbers ---------------------------------------------------------------

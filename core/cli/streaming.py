@@ -18,7 +18,7 @@ from typing import Callable, Iterator, Sequence, TextIO
 import numpy as np
 
 from ..io import table_chunks
-from .common import write_output
+from .output import write_output
 
 CHUNK_ANGLES = 16_384
 

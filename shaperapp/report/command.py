@@ -15,9 +15,9 @@ from pathlib import Path
 
 from core.cli.cmd_library import library_failure, load_candidates
 from core.cli.cmd_table import masses_or_none
-from core.cli.common import (OutputError, UsageError, add_design_options, add_load_options,
-                             add_speed_options, number, number_list, rpms_from_args,
-                             spec_from_args)
+from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
+                             number, number_list, rpms_from_args, spec_from_args)
+from core.cli.output import OutputError
 from core.compare import MAX_DESIGNS, Candidate
 from core.errors import DesignError
 from core.kinematics import check_rpms

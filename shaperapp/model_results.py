@@ -1,0 +1,65 @@
+"""What the model computes from the inputs: the design, its motion, metrics and forces.
+
+Pure functions (no Qt): the model calls them and keeps the last valid results. Core
+computations can fail in ways other than DesignError on extreme input; the GUI reports
+those as "cannot be computed" and keeps the last valid design.
+"""
+from __future__ import annotations
+
+from core.dynamics import Dynamics, DynamicsSummary, MassProperties, masses_for_design, solve_dynamics
+from core.errors import DesignError
+from core.flywheel import summarize
+from core.geometry import Design
+from core.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, solve
+from core.metrics import CycleMetrics, analyze
+from core.spec import Spec
+
+from .undo import Inputs
+
+# angles × speeds the whole window recomputes and redraws within about half a second:
+# 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
+# (README, Performance). core's own cap (core.kinematics) is far larger, for the CLI.
+MAX_GUI_SAMPLES = 60_000
+COMPUTE_ERRORS = (ArithmeticError, ValueError, RuntimeError, MemoryError)
+
+
+def compute_motion(inputs: Inputs) -> tuple[Design, Motion, CycleMetrics]:
+    """Design, motion and metrics of ``inputs``; DesignError names the bad input."""
+    design = inputs.spec.design()
+    rpms = tuple(float(v) for v in check_rpms(list(inputs.rpms)))
+    if not isinstance(inputs.step, (int, float)) or isinstance(inputs.step, bool):
+        raise DesignError("step", inputs.step, "must be a number")
+    step = float(inputs.step)
+    check_request(angle_count(step), len(rpms), "step", step, limit=MAX_GUI_SAMPLES)
+    angles = crank_angles(step)
+    return design, solve(design, angles, rpms), analyze(design, rpms)
+
+
+def solve_forces(design: Design, motion: Motion,
+                 masses: MassProperties) -> tuple[Dynamics, DynamicsSummary]:
+    used = masses_for_design(design, masses)
+    return (solve_dynamics(design, motion.crank_angle, motion.rpm, used),
+            summarize(design, motion.rpm, used))
+
+
+def compute(inputs: Inputs, masses: MassProperties):
+    """Everything at once: (design, motion, metrics, dynamics, summary)."""
+    design, motion, metrics = compute_motion(inputs)
+    return (design, motion, metrics) + solve_forces(design, motion, masses)
+
+
+def typed_error(error: DesignError, spec: Spec) -> DesignError:
+    """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm."""
+    if (error.parameter == "rod" and spec.variant == "rod" and spec.rod_input == "ratio"
+            and isinstance(error.value, float) and isinstance(spec.rod_ratio, float) and error.value > 0):
+        lever = error.value / spec.rod_ratio
+        allowed = error.allowed
+        if allowed.startswith("must be > ") and " mm " in allowed:
+            bound = float(allowed.split()[3]) / lever
+            allowed = f"must be > {bound:.4g}" + allowed.split(" mm", 1)[1]
+        return DesignError("rod_ratio", spec.rod_ratio, allowed)
+    return error
+
+
+def compute_error(exc: BaseException) -> DesignError:
+    return DesignError("design", type(exc).__name__, "cannot be computed for these inputs")
