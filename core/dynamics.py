@@ -1,4 +1,7 @@
-"""Kinetostatics of the shaper: joint forces, crank torque, power and flywheel.
+"""Kinetostatics of the shaper: joint forces, crank torque and power at each crank angle.
+
+The values over a cycle (peak torque, energy fluctuation, flywheel) are in
+:mod:`core.flywheel`, which integrates what this module solves.
 
 A level beside ``metrics``: it imports ``geometry`` and ``kinematics`` only.
 The crank turns at constant speed ω, so every acceleration is ω² times a
