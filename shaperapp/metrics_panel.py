@@ -77,7 +77,7 @@ class MetricsPanel(QWidget):
     # ---- lazy updates --------------------------------------------------------
     def _on_results(self) -> None:
         self._show_title()               # cheap, and a closed pane shows the right title when opened
-        self._stale = self._forces_stale = True
+        self._stale = True               # the forces table waits for forcesChanged, which follows
         if self.isVisible():
             self._catch_up()
 
@@ -151,6 +151,7 @@ class MetricsPanel(QWidget):
         self._speed_box.setTitle(self.tr("Per crank speed"))
         self._forces_box.setTitle(self.tr("Forces and flywheel"))
         self._forces_box.setToolTip(self.tr("Constant crank speed; loads as set in the Loads inputs"))
+        self._forces_stale = True        # its row titles are translated too
         self._on_results()
 
     def _show_title(self) -> None:

@@ -146,8 +146,7 @@ class PolygonView(QWidget):
         if self._stale:
             self._stale = False
             self._fill_speeds()
-            self._show_scale()
-            self.canvas.update()
+            self._refresh()
 
     def showEvent(self, event) -> None:
         super().showEvent(event)

@@ -94,3 +94,34 @@ def test_plot_export_is_offered_only_on_tabs_with_plots(window):
     for i in range(window.tabs.count()):
         window.tabs.setCurrentIndex(i)
         assert window.act_plots_img.isEnabled() == hasattr(window.tabs.widget(i), "export_image")
+
+
+def test_forces_table_follows_edits_speeds_and_language(qtbot, tmp_path):
+    """The forces and flywheel table is filled from forcesChanged (which follows every
+    results change): after an edit and a change of speeds it shows core's summary of
+    the new design, and after a language switch its row titles are translated."""
+    from PySide6.QtWidgets import QApplication
+
+    from core.dynamics import masses_for_design
+    from core.flywheel import summarize
+    from gui_helpers import main_window
+
+    with main_window(tmp_path) as window:
+        model, metrics = window.model, window.metrics
+        model.set_spec(time_ratio=1.6)
+        model.set_rpms([30.0, 45.0, 90.0])
+        QApplication.processEvents()
+        summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
+        table = metrics.tables()[3]
+        assert table.columnCount() == 3
+        for col, s in enumerate(summary.speeds):
+            assert metrics.table_text(5, col, forces=True) == f"{s.flywheel_inertia_kg_m2:.2f}"
+            assert metrics.table_text(1, col, forces=True) == f"{s.max_torque_N_m:.1f}"
+        english = table.verticalHeaderItem(0).text()
+        window.set_language("zh_CN")
+        QApplication.processEvents()
+        chinese = table.verticalHeaderItem(0).text()
+        assert chinese != english and "N·m" in chinese
+        window.set_language("en")
+        QApplication.processEvents()
+        assert table.verticalHeaderItem(0).text() == english
