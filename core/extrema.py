@@ -187,48 +187,62 @@ def piece_maximum(fun: Callable[..., np.ndarray], x: np.ndarray, values: np.ndar
     even next to an end. The best few are polished by :func:`polish_minimum`;
     a polished maximum that lands outside the interval is dropped, and the
     values at both ends count. With ``period`` the interval may wrap around.
-    Shapes: ``x``, ``values`` (…, n); ``lo``, ``hi`` (…,); args against (…, 1).
+    Shapes: ``values`` (…, n); ``x`` (…, n) or broadcastable to it; ``lo``,
+    ``hi`` (…,) or broadcastable to it; args against (…, 1). ``x``, ``lo`` and
+    ``hi`` are used at their own shapes where they can be: which samples lie
+    inside an interval is worked out once for all curves that share it.
     """
     values = np.asarray(values, dtype=float)
     lead, n = values.shape[:-1], values.shape[-1]
-    x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)
-    lo, hi = np.broadcast_to(lo, lead), np.broadcast_to(hi, lead)
+    x = np.asarray(x, dtype=float)
+    lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
 
     def inside(t, a, b):
         return (np.mod(t - a, period) <= np.mod(b - a, period)) if period > 0.0 else \
             (t >= a) & (t <= b)
 
     flat_args = [np.broadcast_to(a, lead + (1,)).reshape(lead) for a in args]
-    ends = fun(np.concatenate([lo.reshape(-1), hi.reshape(-1)]),
+    lo_all, hi_all = np.broadcast_to(lo, lead).reshape(-1), np.broadcast_to(hi, lead).reshape(-1)
+    ends = fun(np.concatenate([lo_all, hi_all]),
                *[np.concatenate([a.reshape(-1)] * 2) for a in flat_args]).reshape((2,) + lead)
     best = np.fmax(ends[0], ends[1])
-    within = inside(x, lo[..., None], hi[..., None])
+    within = inside(x, lo[..., None], hi[..., None])      # at the intervals' own shape
     best = np.fmax(best, np.max(np.where(within, values, -np.inf), axis=-1))
+    x_all = np.broadcast_to(x, values.shape)                # views: never copied
+    within = np.broadcast_to(within, np.broadcast_shapes(within.shape, values.shape))
     segments = [(0, n, 0.0)] if segments is None else list(segments)
     brackets: list[list[np.ndarray]] = []
     for start, stop, seg_period in segments:
-        seg_x, seg_v, seg_in = x[..., start:stop], values[..., start:stop], within[..., start:stop]
-        if seg_period > 0.0:
-            prev_x = np.concatenate([seg_x[..., -1:] - seg_period, seg_x[..., :-1]], axis=-1)
-            next_x = np.concatenate([seg_x[..., 1:], seg_x[..., :1] + seg_period], axis=-1)
-            prev_v, next_v = np.roll(seg_v, 1, axis=-1), np.roll(seg_v, -1, axis=-1)
-        else:
-            prev_x, next_x, prev_v, next_v = seg_x[..., :-2], seg_x[..., 2:], seg_v[..., :-2], seg_v[..., 2:]
-            seg_x, seg_v, seg_in = seg_x[..., 1:-1], seg_v[..., 1:-1], seg_in[..., 1:-1]
-        peak = (seg_v >= prev_v) & (seg_v >= next_v) & ((seg_v > prev_v) | (seg_v > next_v))
-        score = np.where(peak & seg_in, seg_v, -np.inf)
-        for j in range(min(candidates, score.shape[-1])):
+        seg_x, seg_v = x_all[..., start:stop], values[..., start:stop]
+        size = stop - start
+        # Each sample between its neighbours; a wrapping segment's ends neighbour each other.
+        wraps = seg_period > 0.0
+        ext = np.concatenate([seg_v[..., -1:], seg_v, seg_v[..., :1]], axis=-1) if wraps else seg_v
+        prev_v, mid_v, next_v = ext[..., :-2], ext[..., 1:-1], ext[..., 2:]
+        first = 0 if wraps else 1                           # segment index of mid_v[..., 0]
+        seg_in = within[..., start + first:start + first + mid_v.shape[-1]]
+        peak = (mid_v >= prev_v) & (mid_v >= next_v) & ((mid_v > prev_v) | (mid_v > next_v))
+        score = np.where(peak & seg_in, mid_v, -np.inf)
+        for _ in range(min(candidates, score.shape[-1])):
             i = np.argmax(score, axis=-1)[..., None]
             real = np.isfinite(np.take_along_axis(score, i, axis=-1))[..., 0]
-            brackets.append([np.take_along_axis(a, i, axis=-1)[..., 0][real]
-                             for a in (prev_x, seg_x, next_x)]
-                            + [np.flatnonzero(real.reshape(-1))])
             np.put_along_axis(score, i, -np.inf, axis=-1)
+            index = np.nonzero(real)
+            k = i[..., 0][index] + first
+            left, right = k - 1, k + 1
+            shift_l = np.where(left < 0, seg_period, 0.0)
+            shift_r = np.where(right >= size, seg_period, 0.0)
+            left, right = np.mod(left, size), np.mod(right, size)
+            brackets.append([seg_x[index + (left,)] - shift_l, seg_x[index + (k,)],
+                             seg_x[index + (right,)] + shift_r,
+                             seg_v[index + (left,)], seg_v[index + (k,)], seg_v[index + (right,)],
+                             np.flatnonzero(real.reshape(-1))])
     if brackets:
-        xl, xm, xr, owner = (np.concatenate(v) for v in zip(*brackets))
+        xl, xm, xr, vl, vm, vr, owner = (np.concatenate(v) for v in zip(*brackets))
         part = [a.reshape(-1)[owner] for a in flat_args]
-        at, value = polish_minimum(lambda t, *a: -fun(t, *a), xl, xm, xr, part)
-        keep = inside(at, lo.reshape(-1)[owner], hi.reshape(-1)[owner])
+        at, value = polish_minimum(lambda t, *a: -fun(t, *a), xl, xm, xr, part,
+                                   values=(-vl, -vm, -vr))
+        keep = inside(at, lo_all[owner], hi_all[owner])
         out = best.reshape(-1).copy()
         np.fmax.at(out, owner[keep], -value[keep])
         best = out.reshape(lead)
@@ -240,21 +254,36 @@ _GOLD = 0.3819660112501051   # 2 − golden ratio
 
 def polish_minimum(fun: Callable[..., np.ndarray], xl: np.ndarray, xm: np.ndarray,
                    xr: np.ndarray, args: Sequence[np.ndarray] = (),
-                   iterations: int = 100) -> tuple[np.ndarray, np.ndarray]:
+                   iterations: int = 100,
+                   values: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+                   ) -> tuple[np.ndarray, np.ndarray]:
     """A local minimum of ``fun`` inside each bracket xl < xm < xr (1-D arrays).
 
     For curves without an analytic slope: successive parabolic interpolation
     through the bracket, with a golden-section step whenever the parabola's
     vertex is not safely inside (Brent's rule, vectorized). The bracket keeps
     f(xm) ≤ f(xl), f(xr) and shrinks every step. Returns the minimizer and
-    fun's value there.
+    fun's value there. ``values`` are fun at (xl, xm, xr) when the caller has
+    them (samples of the same curve); each call of ``fun`` evaluates all open
+    brackets at once, so the cost is the number of calls, not of brackets.
+
+    Once one side of a bracket has closed to within the tolerance of its best
+    point, the parabola through three points two of which nearly coincide is
+    ill-conditioned; instead of shrinking the other side by golden sections
+    (a dozen calls), the bracket probes once at the tolerance on that side,
+    which closes it when the best point is the minimum.
     """
     a, m, b = (np.array(v, dtype=float) for v in (xl, xm, xr))
     args = [np.broadcast_to(np.asarray(v), m.shape) for v in args]
-    fa, fm, fb = fun(a, *args), fun(m, *args), fun(b, *args)
+    if values is None:
+        both = fun(np.concatenate([a, m, b]), *[np.concatenate([v] * 3) for v in args])
+        fa, fm, fb = np.split(np.asarray(both, dtype=float), 3)
+    else:
+        fa, fm, fb = (np.array(v, dtype=float) for v in values)
     at, value = m.copy(), fm.copy()
     live = np.nonzero((fm <= fa) & (fm <= fb) & np.isfinite(fm))[0]
     a, m, b, fa, fm, fb = (v[live] for v in (a, m, b, fa, fm, fb))
+    probed = np.zeros(live.size, dtype=bool)
     part = [v[live] for v in args]
     for _ in range(iterations):
         if live.size == 0:
@@ -269,7 +298,10 @@ def polish_minimum(fun: Callable[..., np.ndarray], xl: np.ndarray, xm: np.ndarra
         safe = np.isfinite(u) & (u > a + tol) & (u < b - tol)
         # A vertex within tol of m steps tol away instead (Brent), closing the bracket.
         step = np.where(right, tol, -tol)                # toward the wider side
-        u = np.where(safe, np.where(np.abs(u - m) < tol, m + step, u), golden)
+        probe = ~safe & ~probed & (np.minimum(b - m, m - a) <= 2.0 * tol)
+        probed |= probe
+        u = np.where(safe, np.where(np.abs(u - m) < tol, m + step, u),
+                     np.where(probe, m + step, golden))
         fu = fun(u, *part)
         lower = fu < fm
         left_of = u < m
@@ -282,6 +314,6 @@ def polish_minimum(fun: Callable[..., np.ndarray], xl: np.ndarray, xm: np.ndarra
         at[live], value[live] = m, fm
         done = (b - a) <= 4.0 * tol
         keep = ~done
-        live, a, m, b, fa, fm, fb = (v[keep] for v in (live, a, m, b, fa, fm, fb))
+        live, a, m, b, fa, fm, fb, probed = (v[keep] for v in (live, a, m, b, fa, fm, fb, probed))
         part = [v[keep] for v in part]
     return at, value
