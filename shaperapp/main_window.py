@@ -25,7 +25,7 @@ from .docks import Docks
 from .document import Document
 from .explore_view import ExploreView
 from .force_plots import ForcePlots
-from .guards import ShortcutGuard, install_wheel_guard
+from .guards import ShortcutGuard, guard_wheel
 from .help import GuideDialog, about_text
 from .inputs_pane import InputsPane
 from .library_pane import LibraryPane
@@ -78,9 +78,8 @@ class MainWindow(QMainWindow):
         self.menus = Menus(self)
         self.menu_file, self.menu_edit = self.menus.file, self.menus.edit
         self._fill_recent()
-        install_wheel_guard()
+        guard_wheel(self)
         self._shortcut_guard = ShortcutGuard(self, flush_typing)
-        QApplication.instance().installEventFilter(self._shortcut_guard)
         self.document.failed.connect(self._show_failure)
         self.document.recentChanged.connect(self._fill_recent)
         self.document.saved.connect(self._on_saved)

@@ -10,7 +10,7 @@ from core.errors import DesignError
 from core.geometry import synthesize
 from shaperapp.document import Document
 from shaperapp.form import DesignForm
-from shaperapp.guards import install_wheel_guard
+from shaperapp.guards import guard_wheel, install_wheel_guard
 from shaperapp.messages import describe
 from shaperapp.model import MAX_SPEEDS, DesignModel
 
@@ -100,7 +100,6 @@ def wheel(widget, delta=-120):
 
 def test_wheel_over_an_unfocused_choice_scrolls_the_panel_instead(qtbot):
     """Issue 8: scrolling the side panel over "Ram drive" switched the rod to a block."""
-    install_wheel_guard()
     model = DesignModel()
     model.set_spec(variant="rod")
     form = DesignForm(model)
@@ -108,6 +107,7 @@ def test_wheel_over_an_unfocused_choice_scrolls_the_panel_instead(qtbot):
     scroll.setWidget(form)
     scroll.resize(300, 200)
     qtbot.addWidget(scroll)
+    guard_wheel(scroll)
     scroll.show()
     qtbot.waitExposed(scroll)
     combo = form._combo("variant")
@@ -120,6 +120,31 @@ def test_wheel_over_an_unfocused_choice_scrolls_the_panel_instead(qtbot):
     qtbot.waitUntil(combo.hasFocus)
     wheel(combo, 120)                                             # focused: the wheel chooses
     assert model.spec.variant == "block"
+
+
+def test_a_window_that_gets_the_focus_has_its_choices_guarded(qtbot):
+    """The guard sits on each choice, not on the application (which made every event of
+    every widget pass through Python): a dialog's spin box is guarded when its window
+    gets the focus, and the application itself has no wheel filter."""
+    from PySide6.QtWidgets import QDialog, QSpinBox, QVBoxLayout
+    install_wheel_guard()
+    dialog = QDialog()
+    qtbot.addWidget(dialog)
+    spin = QSpinBox(dialog)
+    QVBoxLayout(dialog).addWidget(spin)
+    spin.setValue(5)
+    assert not spin.property("shaperWheelGuard")
+    dialog.show()
+    dialog.activateWindow()
+    qtbot.waitUntil(lambda: QApplication.focusWindow() is dialog.windowHandle())
+    assert spin.property("shaperWheelGuard") and spin.focusPolicy() == Qt.FocusPolicy.StrongFocus
+    dialog.setFocus()
+    wheel(spin, 120)
+    assert spin.value() == 5                                      # unfocused: unchanged
+    spin.setFocus()
+    qtbot.waitUntil(spin.hasFocus)
+    wheel(spin, 120)
+    assert spin.value() == 6
 
 
 # ---- Save or Export while a field is invalid asks ----------------------------------

@@ -184,3 +184,13 @@ def test_undo_history_follows_a_language_switch(window):
     QApplication.processEvents()
     assert [stack.command(i).text() for i in range(stack.count())] == english
     assert window.act_undo.text() == "&Undo Stroke H"
+
+
+def test_every_choice_number_and_slider_of_the_window_is_wheel_guarded(window):
+    """The guard is on each widget, so none may be missed; the shortcut guard follows the
+    focus instead of filtering every event of the application."""
+    from PySide6.QtWidgets import QAbstractSpinBox, QComboBox, QSlider, QWidget
+    targets = [w for w in window.findChildren(QWidget) if isinstance(w, (QComboBox, QAbstractSpinBox, QSlider))]
+    assert len(targets) > 10
+    assert all(w.property("shaperWheelGuard") for w in targets)
+    assert all(w.focusPolicy() != Qt.FocusPolicy.WheelFocus for w in targets)
