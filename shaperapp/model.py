@@ -334,27 +334,38 @@ class DesignModel(QObject):
         return replace(spec, **fixes) if fixes else spec
 
     def _apply(self, inputs: Inputs) -> None:
-        """Make ``inputs`` the typed state and recompute what they change (undo/redo too)."""
+        """Make ``inputs`` the typed state and recompute what they change (undo/redo too).
+
+        Everything is computed before any view hears of it, so that a view reading the
+        forces on resultsChanged never sees the previous design's."""
         old = self._inputs
         self._inputs = inputs
         design_inputs = (inputs.spec, inputs.rpms, inputs.step)
         design_changed = design_inputs != (old.spec, old.rpms, old.step)
+        loads_changed = inputs.loads != old.loads
         if design_changed:
             self.specChanged.emit()
-            self._recompute()
-        if inputs.loads != old.loads or design_changed:
-            self._recompute_forces(design_changed, announce=inputs.loads != old.loads)
+            design_changed = self._recompute()
+        forces = (loads_changed or design_changed) and self._recompute_forces(design_changed,
+                                                                              announce=loads_changed)
+        if design_changed:
+            self.resultsChanged.emit()
+        if forces:
+            self.forcesChanged.emit()
+        if design_changed:
+            self.angleChanged.emit(self._index)
 
-    def _recompute(self) -> None:
+    def _recompute(self) -> bool:
+        """The typed design's motion and metrics; False (and the error shown) if it fails."""
         inputs = self._inputs
         try:
             design, motion, metrics = compute_motion(inputs)
         except DesignError as exc:
             self._set_error(typed_error(exc, self._inputs.spec))
-            return
+            return False
         except COMPUTE_ERRORS as exc:
             self._set_error(compute_error(exc))
-            return
+            return False
         fraction = self._index / max(self.angle_count - 1, 1)
         self._design, self._motion, self._metrics = design, motion, metrics
         self._valid_spec = inputs.spec
@@ -362,12 +373,12 @@ class DesignModel(QObject):
         self._step = float(inputs.step)
         self._index = min(int(round(fraction * (motion.crank_angle.size - 1))), motion.crank_angle.size - 1)
         self._set_error(None)
-        self.resultsChanged.emit()
-        self.angleChanged.emit(self._index)
+        return True
 
-    def _recompute_forces(self, design_changed: bool, announce: bool) -> None:
+    def _recompute_forces(self, design_changed: bool, announce: bool) -> bool:
         """Solve the loads typed (if valid) on the design on screen; invalid loads keep
-        the last valid ones, which are solved again only when the design changed."""
+        the last valid ones, which are solved again only when the design changed. True
+        when the forces changed."""
         try:
             masses = replace(DEFAULT_MASSES, **self._inputs.load_dict)
             dynamics, summary = solve_forces(self._design, self._motion, masses)
@@ -375,13 +386,13 @@ class DesignModel(QObject):
             error = exc if isinstance(exc, DesignError) else compute_error(exc)
             self._set_forces_error(error, force=announce)
             if not design_changed:
-                return
+                return False
             masses = self._masses
             dynamics, summary = solve_forces(self._design, self._motion, masses)
         else:
             self._set_forces_error(None, force=announce)
         self._masses, self._dynamics, self._dynamics_summary = masses, dynamics, summary
-        self.forcesChanged.emit()
+        return True
 
     def _set_error(self, error: DesignError | None) -> None:
         same = (error is None and self._error is None) or (
