@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QPointF, QRectF
+from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QAction, QPainter
 from PySide6.QtWidgets import (QCheckBox, QGraphicsView, QHBoxLayout, QMenu, QToolButton,
                                QVBoxLayout, QWidget)
@@ -37,6 +37,9 @@ class SchemeWidget(QWidget):
         self._design = None
         self._geometry: Geometry | None = None
         self._stale = self._angle_stale = True     # a hidden scheme (closed dock) waits
+        self._forces_stale = False
+        self._update_timer = QTimer(self, singleShot=True, interval=0)
+        self._update_timer.timeout.connect(self._catch_up)
         self._plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
         self._plot.setAntialiasing(True)
         # one repaint of the rectangle around a frame's changes, not one per moved item
@@ -239,32 +242,45 @@ class SchemeWidget(QWidget):
         self._catch_up()
 
     def _catch_up(self) -> None:
-        """Bring a scheme that was hidden up to the model (also before any read-back)."""
+        """Bring the scheme up to the model: after an edit (once for its results, forces
+        and angle signals), when shown after being hidden, and before any read-back."""
+        self._update_timer.stop()
         if self._stale:
             self._rebuild()
         elif self._angle_stale:
             self._move(self._model.angle_index)
+        elif self._forces_stale:
+            self._draw_forces(self._model.angle_index)
+
+    def _schedule(self) -> None:
+        """One rebuild when the model has announced everything an edit changed."""
+        if self.isVisible() or self._geometry is None:
+            self._update_timer.start()
 
     def _on_results(self) -> None:
-        """Rebuilt now if shown, else when shown: a closed dock does nothing per edit."""
+        """Rebuilt after the edit if shown, else when shown: a closed dock does nothing."""
         self._stale = True
-        if self.isVisible() or self._geometry is None:
+        if self._geometry is None:
             self._rebuild()
+        else:
+            self._schedule()
 
     def _rebuild(self) -> None:
-        """Rebuild every layer for the design; fit once per new design."""
+        """Rebuild every layer for the design; fit once per new design, before the force
+        labels are placed (they keep a distance in pixels)."""
         self._stale = False
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
-        self._move(self._model.angle_index)
         design = self._model.design
         if design != self._design:
             self._design = design
             self.fit()
+        self._move(self._model.angle_index)
 
     def _on_angle(self, index: int) -> None:
-        """Only moves items (setPos/setRotation/setPath): no Python-side signal per frame."""
-        if not self.isVisible() and self._geometry is not None:
+        """Only moves items (setPos/setRotation/setPath): no Python-side signal per frame.
+        While a rebuild is pending it places the mechanism itself."""
+        if self._stale or (not self.isVisible() and self._geometry is not None):
             self._angle_stale = True
             return
         self._move(index)
@@ -275,17 +291,18 @@ class SchemeWidget(QWidget):
             self._draw_forces(index)
 
     def _on_forces(self) -> None:
-        """Loads or the design changed: redrawn now if shown (rebuilt there), else when shown."""
-        if not self.isVisible():
-            self._angle_stale = True
-            return
-        self._draw_forces(self._model.angle_index)
+        """Loads or the design changed: redrawn after the edit if shown, else when shown."""
+        self._forces_stale = True
+        self._schedule()
 
     def _apply_forces_visible(self, visible: bool) -> None:
         self._forces.set_visible(visible)
         self._draw_forces(self._model.angle_index)
 
     def _draw_forces(self, index: int) -> None:
+        if self._stale:            # never on the previous design's geometry: the rebuild draws
+            return
+        self._forces_stale = False
         if self._geometry is None or not self.forces_visible():
             return
         obstacles = self._mechanism.obstacles() + self._dimensions.obstacles()

@@ -46,6 +46,7 @@ class ForceFrames:
     """
 
     source: object              # the model.dynamics these were built from
+    geometry: object            # ... on this scheme geometry (the tool point's offset)
     coords: np.ndarray          # (n, k, 12)
     shown: np.ndarray           # (n, k) bool: drawn at that index
     magnitude: np.ndarray       # (n, k) N
@@ -151,7 +152,7 @@ def build_force_frames(model: DesignModel, g: Geometry) -> ForceFrames | None:
         base + normal * (FORCE_HEAD_HALF * head), base - normal * (FORCE_HEAD_HALF * head),
         free], axis=-1)                                            # (k, n, 12)
     return ForceFrames(
-        source=dyn, coords=np.ascontiguousarray(coords.transpose(1, 0, 2)),
+        source=dyn, geometry=g, coords=np.ascontiguousarray(coords.transpose(1, 0, 2)),
         shown=np.ascontiguousarray(shown.T), magnitude=np.ascontiguousarray(magnitude.T),
         outward=np.ascontiguousarray(out.transpose(1, 0, 2)), mm_per_N=mm_per_N,
         ref_force_N=ref, ref_mm=ref_mm, unit_N=1000.0 if largest >= 1000.0 else 1.0,
@@ -206,7 +207,7 @@ class ForceLayer(QObject):
         if not self._visible:
             return
         ff = self.frames
-        if ff is None or ff.source is not model.dynamics:
+        if ff is None or ff.source is not model.dynamics or ff.geometry is not g:
             ff = self.frames = build_force_frames(model, g)
             self._show_caption()
         names: list[str] = []

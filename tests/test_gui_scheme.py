@@ -125,8 +125,10 @@ def test_fit_once_per_new_design_only(scheme, model):
     view.scaleBy((0.5, 0.5))
     zoomed = view.viewRect()
     model.set_rpms([30.0, 90.0])         # same design: the user's zoom stays
+    QApplication.processEvents()         # the scheme rebuilds once the edit is announced
     assert view.viewRect() == zoomed
     model.set_spec(stroke=450.0)         # new design: fitted again
+    QApplication.processEvents()
     assert model.error is None
     assert view.viewRect() != zoomed
     assert view.viewRect().contains(trace_bounds(model))
