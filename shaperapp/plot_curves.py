@@ -14,7 +14,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QPen
-from PySide6.QtWidgets import QGraphicsEllipseItem, QGraphicsItem
+from PySide6.QtWidgets import QGraphicsEllipseItem, QGraphicsItem, QGraphicsLineItem
 
 from .style import CURSOR, TEXT
 
@@ -78,6 +78,37 @@ def _dot() -> QGraphicsEllipseItem:
     return dot
 
 
+class CursorLine(QGraphicsLineItem):
+    """A vertical cursor across the plot's whole y range, moved by setPos only.
+
+    Drawn and bounded in C++: pyqtgraph's InfiniteLine recomputes its bounding
+    rectangle in Python at every move and paint, a visible share of an animation
+    frame with several plots. The line spans the view's y range (updated when that
+    changes) and as much again above and below, so a pan never shows its ends."""
+
+    def __init__(self, view: pg.ViewBox) -> None:
+        super().__init__()
+        self._view = view
+        view.sigYRangeChanged.connect(self.span)
+        self.span()
+
+    def span(self, *_: object) -> None:
+        y0, y1 = self._view.viewRange()[1]
+        extra = max(y1 - y0, 1e-12)
+        self.setLine(0.0, y0 - extra, 0.0, y1 + extra)
+
+    def set_colour(self, rgba: int) -> None:
+        line_pen = QPen(QColor.fromRgba(rgba), 1.0, Qt.PenStyle.DashLine)
+        line_pen.setCosmetic(True)
+        self.setPen(line_pen)
+
+    def value(self) -> float:
+        return self.x()
+
+    def setValue(self, x: float) -> None:  # noqa: N802 - as InfiniteLine
+        self.setPos(x, 0.0)
+
+
 class PlotSlots:
     """Items of one plot, created once per curve and reused (see the module docstring)."""
 
@@ -88,7 +119,7 @@ class PlotSlots:
         self._items: list[tuple[pg.PlotCurveItem, pg.PlotCurveItem, QGraphicsEllipseItem]] = []
         self._styles: list[tuple] = []
         self._hidden: set[str] = set()
-        self._cursors: list[tuple[pg.InfiniteLine, int]] = []
+        self._cursors: list[tuple[CursorLine, int]] = []
         self._regions: list[pg.LinearRegionItem] = []
         self._texts: list[pg.TextItem] = []
         self._bands: list[Band] = []
@@ -178,7 +209,7 @@ class PlotSlots:
             lines = [(x, colours.get(label, CURSOR.rgba())) for label, x in where.items()
                      if label not in self._hidden]
         while len(self._cursors) < len(lines):
-            line = pg.InfiniteLine(angle=90, movable=False)
+            line = CursorLine(self.item.vb)
             line.setZValue(Z_CURSOR)
             self.item.addItem(line, ignoreBounds=True)
             self._cursors.append((line, 0))
@@ -188,7 +219,7 @@ class PlotSlots:
                 continue
             x, wanted = lines[i]
             if rgba != wanted:
-                line.setPen(pg.mkPen(QColor.fromRgba(wanted), width=1.0, style=Qt.PenStyle.DashLine))
+                line.set_colour(wanted)
                 self._cursors[i] = (line, wanted)
             line.setValue(x)
             line.setVisible(True)
