@@ -36,7 +36,8 @@ def test_input_to_all_views_updated(benchmark, window, tab):
     the tab behind waits until it is shown."""
     window.tabs.setCurrentIndex(0 if tab == "kinematics" else 1)
     QApplication.processEvents()
-    values = iter([1.4, 1.5] * 10_000)
+    # A new K every round (1.40, 1.41 … 1.64, all valid): every number and label changes.
+    values = iter(1.4 + 0.01 * (i % 25) for i in range(10**6))
 
     def change():
         window.model.set_spec(time_ratio=next(values))
@@ -47,8 +48,8 @@ def test_input_to_all_views_updated(benchmark, window, tab):
     assert window.model.error is None
     front = window.plots if tab == "kinematics" else window.forces
     assert front.stack().is_current()
-    # EDIT_BUDGET_S is not asserted: measured 37-50 ms wall (30-35 ms CPU) on the shared
-    # 2-core machine, see the README's performance table.
+    # EDIT_BUDGET_S is not asserted: the shared 2-core machine varies by ±40 %; the
+    # measured medians are in the README's performance table.
 
 
 def test_animation_frame_whole_window(benchmark, window):
@@ -61,8 +62,8 @@ def test_animation_frame_whole_window(benchmark, window):
         QApplication.processEvents()
 
     benchmark(frame)
-    # FRAME_BUDGET_S is met on a quiet machine (7.4 ms) but not under other helpers' load
-    # (up to 10 ms): reported in the README rather than asserted.
+    # FRAME_BUDGET_S: reported in the README (measured medians) rather than asserted, as
+    # the shared machine's load varies.
 
 
 def _start():

@@ -43,11 +43,11 @@ def main(argv: list[str] | None = None) -> int:
                         help="print the time to the first shown window and quit (for benchmarks)")
     args = parser.parse_args(argv)
 
-    import pyqtgraph as pg
     from PySide6.QtCore import QSettings, QTimer
     from PySide6.QtWidgets import QApplication
 
-    pg.setConfigOptions(background="w", foreground="k", antialias=True)
+    from .style import configure_plots
+    configure_plots()
     app = QApplication.instance() or QApplication(sys.argv[:1])
     app.setApplicationName("shaperapp")
     app.setOrganizationName("ShaperDesigner")

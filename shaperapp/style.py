@@ -35,3 +35,10 @@ def fmt(value: float, spec: str) -> str:
     if text.startswith("-") and not any(c in "123456789" for c in text.split("e")[0]):
         return text[1:]
     return text
+
+
+def configure_plots() -> None:
+    """pyqtgraph's global look, the same for the window, the report and the benchmarks
+    (which must measure what a user sees): white background, black text, antialiased."""
+    import pyqtgraph as pg
+    pg.setConfigOptions(background="w", foreground="k", antialias=True)

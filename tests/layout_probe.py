@@ -16,7 +16,6 @@ import argparse
 import json
 import sys
 
-import pyqtgraph as pg
 from PySide6.QtCore import QPoint, QRect, QSettings, QSize
 from PySide6.QtWidgets import QApplication, QScrollArea
 
@@ -69,7 +68,8 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--speeds", action="append", default=[])
     parser.add_argument("--resize", help="WxH before closing (to save that geometry)")
     args = parser.parse_args(argv)
-    pg.setConfigOptions(background="w", foreground="k", antialias=True)
+    from shaperapp.style import configure_plots
+    configure_plots()
     app = QApplication(sys.argv[:1])
     from shaperapp.main_window import MainWindow
     from shaperapp.model import DesignModel

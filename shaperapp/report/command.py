@@ -78,10 +78,10 @@ def _quiet(kind, _context, message) -> None:
 
 
 def _application():
-    import pyqtgraph as pg
     from PySide6.QtCore import qInstallMessageHandler
     from PySide6.QtWidgets import QApplication
-    pg.setConfigOptions(background="w", foreground="k", antialias=True)
+    from ..style import configure_plots
+    configure_plots()
     qInstallMessageHandler(_quiet)
     return QApplication.instance() or QApplication(sys.argv[:1])
 
