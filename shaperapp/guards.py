@@ -19,7 +19,7 @@ from __future__ import annotations
 from typing import Callable
 
 from PySide6.QtCore import QEvent, QObject, Qt
-from PySide6.QtGui import QAction, QKeyEvent, QKeySequence, QWindow
+from PySide6.QtGui import QAction, QKeyEvent, QKeySequence
 from PySide6.QtWidgets import (QAbstractScrollArea, QAbstractSpinBox, QApplication, QComboBox, QLineEdit, QPlainTextEdit,
                                QScrollBar, QSlider, QTextEdit, QWidget)
 
@@ -72,9 +72,9 @@ def _guard() -> WheelGuard | None:
     if guard is None:
         guard = WheelGuard(app)
         guard.setObjectName("shaperWheelGuard")
-        # A window that gets the focus (a dialog, Qt's file dialog, a floated pane) has
-        # its choices guarded before the user can scroll over them.
-        app.focusWindowChanged.connect(_guard_window)
+        # A window in which a widget gets the focus (a dialog, Qt's file dialog, a floated
+        # pane) has its choices guarded before the user can scroll over them.
+        app.focusChanged.connect(_guard_focus_window)
     return guard
 
 
@@ -88,14 +88,13 @@ def guard_wheel(root: QWidget) -> None:
             guard.protect(widget)
 
 
-def _guard_window(window: QWindow | None) -> None:
-    for top in QApplication.topLevelWidgets():
-        if window is not None and top.windowHandle() is window:
-            guard_wheel(top)
+def _guard_focus_window(_old: QWidget | None, new: QWidget | None) -> None:
+    if new is not None:
+        guard_wheel(new.window())
 
 
 def install_wheel_guard() -> None:
-    """Guard every present widget now, and each window's when it gets the focus."""
+    """Guard every present widget now, and each window's when a widget in it gets the focus."""
     for top in QApplication.topLevelWidgets():
         guard_wheel(top)
 

@@ -14,7 +14,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QPen
-from PySide6.QtWidgets import QGraphicsEllipseItem, QGraphicsItem, QGraphicsLineItem
+from PySide6.QtWidgets import QGraphicsEllipseItem, QGraphicsItem, QGraphicsLineItem, QGraphicsRectItem
 
 from .style import CURSOR, TEXT
 
@@ -78,13 +78,20 @@ def _dot() -> QGraphicsEllipseItem:
     return dot
 
 
+def _full_height(view: pg.ViewBox) -> tuple[float, float]:
+    """The view's y range and as much again above and below, so a pan never shows the
+    ends of an item spanning it before the range signal has moved them."""
+    y0, y1 = view.viewRange()[1]
+    extra = max(y1 - y0, 1e-12)
+    return y0 - extra, y1 + extra
+
+
 class CursorLine(QGraphicsLineItem):
     """A vertical cursor across the plot's whole y range, moved by setPos only.
 
     Drawn and bounded in C++: pyqtgraph's InfiniteLine recomputes its bounding
     rectangle in Python at every move and paint, a visible share of an animation
-    frame with several plots. The line spans the view's y range (updated when that
-    changes) and as much again above and below, so a pan never shows its ends."""
+    frame with several plots. The line follows the view's y range."""
 
     def __init__(self, view: pg.ViewBox) -> None:
         super().__init__()
@@ -93,9 +100,8 @@ class CursorLine(QGraphicsLineItem):
         self.span()
 
     def span(self, *_: object) -> None:
-        y0, y1 = self._view.viewRange()[1]
-        extra = max(y1 - y0, 1e-12)
-        self.setLine(0.0, y0 - extra, 0.0, y1 + extra)
+        y0, y1 = _full_height(self._view)
+        self.setLine(0.0, y0, 0.0, y1)
 
     def set_colour(self, rgba: int) -> None:
         line_pen = QPen(QColor.fromRgba(rgba), 1.0, Qt.PenStyle.DashLine)
@@ -109,6 +115,30 @@ class CursorLine(QGraphicsLineItem):
         self.setPos(x, 0.0)
 
 
+class BandRect(QGraphicsRectItem):
+    """A shaded x span across the plot's whole y range (see :class:`CursorLine`): a C++
+    rectangle instead of pyqtgraph's LinearRegionItem with its two Python edge lines."""
+
+    def __init__(self, view: pg.ViewBox) -> None:
+        super().__init__()
+        self._view = view
+        self._span = (0.0, 1.0)
+        self.setPen(QPen(Qt.PenStyle.NoPen))
+        view.sigYRangeChanged.connect(self._place)
+
+    def set_span(self, start: float, end: float) -> None:
+        self._span = (float(start), float(end))
+        self._place()
+
+    def span(self) -> tuple[float, float]:
+        return self._span
+
+    def _place(self, *_: object) -> None:
+        y0, y1 = _full_height(self._view)
+        x0, x1 = self._span
+        self.setRect(QRectF(x0, y0, x1 - x0, y1 - y0).normalized())
+
+
 class PlotSlots:
     """Items of one plot, created once per curve and reused (see the module docstring)."""
 
@@ -120,7 +150,7 @@ class PlotSlots:
         self._styles: list[tuple] = []
         self._hidden: set[str] = set()
         self._cursors: list[tuple[CursorLine, int]] = []
-        self._regions: list[pg.LinearRegionItem] = []
+        self._regions: list[BandRect] = []
         self._texts: list[pg.TextItem] = []
         self._bands: list[Band] = []
         self._labelled = False
@@ -244,7 +274,7 @@ class PlotSlots:
     # ---- bands --------------------------------------------------------------
     def set_bands(self, bands: list[Band], labelled: bool) -> None:
         while len(self._regions) < len(bands):
-            region = pg.LinearRegionItem((0, 1), movable=False, pen=pg.mkPen(None))
+            region = BandRect(self.item.vb)
             region.setZValue(Z_BAND)
             self.item.addItem(region, ignoreBounds=True)
             self._regions.append(region)
@@ -257,14 +287,15 @@ class PlotSlots:
             text.setVisible(shown and labelled and bool(bands[i].label))
             if shown:
                 band = bands[i]
-                region.setBrush(band.brush)
-                region.setRegion((band.start, band.end))
+                if region.brush().color() != band.brush:
+                    region.setBrush(QBrush(band.brush))
+                region.set_span(band.start, band.end)
                 if text.toPlainText() != band.label or text.color != (band.colour or TEXT):
                     text.setText(band.label, color=band.colour or TEXT)
         self._bands, self._labelled = list(bands), labelled
 
     def bands(self) -> list[tuple[float, float]]:
-        return [tuple(float(v) for v in r.getRegion()) for r in self._regions if r.isVisible()]
+        return [r.span() for r in self._regions if r.isVisible()]
 
     def place_band_labels(self) -> None:
         """Each label at the top of its band, or at the bottom where the curves fill the

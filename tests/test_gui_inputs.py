@@ -124,21 +124,24 @@ def test_wheel_over_an_unfocused_choice_scrolls_the_panel_instead(qtbot):
 
 def test_a_window_that_gets_the_focus_has_its_choices_guarded(qtbot):
     """The guard sits on each choice, not on the application (which made every event of
-    every widget pass through Python): a dialog's spin box is guarded when its window
-    gets the focus, and the application itself has no wheel filter."""
-    from PySide6.QtWidgets import QDialog, QSpinBox, QVBoxLayout
+    every widget pass through Python): a dialog's spin box is guarded as soon as a
+    widget in its window gets the focus."""
+    from PySide6.QtWidgets import QDialog, QPushButton, QSpinBox, QVBoxLayout
     install_wheel_guard()
     dialog = QDialog()
     qtbot.addWidget(dialog)
-    spin = QSpinBox(dialog)
-    QVBoxLayout(dialog).addWidget(spin)
+    layout = QVBoxLayout(dialog)
+    button = QPushButton("OK")
+    spin = QSpinBox()
+    layout.addWidget(button)
+    layout.addWidget(spin)
     spin.setValue(5)
     assert not spin.property("shaperWheelGuard")
     dialog.show()
     dialog.activateWindow()
-    qtbot.waitUntil(lambda: QApplication.focusWindow() is dialog.windowHandle())
+    button.setFocus()
+    qtbot.waitUntil(button.hasFocus)
     assert spin.property("shaperWheelGuard") and spin.focusPolicy() == Qt.FocusPolicy.StrongFocus
-    dialog.setFocus()
     wheel(spin, 120)
     assert spin.value() == 5                                      # unfocused: unchanged
     spin.setFocus()
