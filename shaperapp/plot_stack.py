@@ -36,6 +36,10 @@ from .style import TEXT, fmt
 
 WHITE = QColor("#ffffff")
 Y_PADDING = 0.08         # share of the data's span added above and below when fitting y
+# After an edit a plot keeps its y range while that still holds the curves with at least
+# half the padding and is at most this much taller than a fresh fit: nudging an input
+# does not make every axis jump (and redraw its ticks and grid).
+SETTLE_SPAN = 1.25
 READOUT_DELAY_MS = 100   # the cursor read-out follows the animation at most 10 times a second
 
 
@@ -223,20 +227,21 @@ class PlotStack(QWidget):
             self._show_x_axis()
         self._x_range = (lo, hi)
         self._fit_legends()
-        self.fit()
+        self.fit(settle=True)
         self._cursor_stale = True
         self._on_angle(model.angle_index)
         self._show_readout()
 
-    def fit(self) -> None:
-        """Whole cycle in x, every plot's curves in y (drops the user's zoom)."""
+    def fit(self, settle: bool = False) -> None:
+        """Whole cycle in x, every plot's curves in y (drops the user's zoom). ``settle``
+        (after an edit) keeps a y range that still fits well (see SETTLE_SPAN)."""
         for plot in self._plots.values():
             plot.item.vb.y_zoomed = False
         master = self._plots[self._series[0].key].item
         master.setXRange(*self._x_range, padding=0.0)
-        self._fit_y()
+        self._fit_y(settle=settle)
 
-    def _fit_y(self, *_: object) -> None:
+    def _fit_y(self, *_: object, settle: bool = False) -> None:
         """Fit y of each shown plot to its visible curves within the shown x range, unless
         the user zoomed that plot's y. Done by hand, once: pyqtgraph's auto-range would
         re-range (and repaint) on every cursor move."""
@@ -246,9 +251,12 @@ class PlotStack(QWidget):
                 continue
             lo, hi = finite_range(plot.visible_values(x0, x1))
             pad = Y_PADDING * (hi - lo)
-            plot.item.vb.setYRange(lo - pad, hi + pad, padding=0.0)
-            # now, not in the next paint's preparation, which would cost a second paint
-            plot.item.vb.updateMatrix()
+            y0, y1 = plot.item.vb.viewRange()[1]
+            if not (settle and y0 <= lo - pad / 2 and y1 >= hi + pad / 2
+                    and y1 - y0 <= SETTLE_SPAN * (hi - lo + 2 * pad)):
+                plot.item.vb.setYRange(lo - pad, hi + pad, padding=0.0)
+                # now, not in the next paint's preparation, which would cost a second paint
+                plot.item.vb.updateMatrix()
             plot.place_band_labels()
 
     def _on_angle(self, index: int) -> None:

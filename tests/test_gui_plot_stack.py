@@ -331,3 +331,31 @@ def test_displacement_against_the_angle_is_one_curve_with_one_readout_value(qtbo
     assert "r/min:" not in text and text.count("every speed") == 1
     x = model.motion.ram_x[100]                         # nearest grid angle: 100°
     assert f"{fmt(x, '.4g')} mm" in text
+
+
+def test_a_small_edit_keeps_a_y_range_that_still_fits_and_a_large_one_refits(plots, model):
+    """Nudging K keeps each axis (no jump, no tick redraw) while its range holds the curves
+    with half the padding and is at most 1.25× a fresh fit; a large change, and Fit, fit
+    afresh. Either way every curve is inside."""
+    vb = plots.plot_item("ram_v").vb
+    before = vb.viewRange()[1]
+    model.set_spec(time_ratio=1.41)
+    QApplication.processEvents()
+    values = model.motion.ram_v
+    span = np.ptp(values)
+    y0, y1 = vb.viewRange()[1]
+    assert [y0, y1] == pytest.approx(before)
+    assert y0 < values.min() - 0.03 * span and y1 > values.max() + 0.03 * span
+    model.set_spec(stroke=500.0)                      # much faster: refitted
+    QApplication.processEvents()
+    values = model.motion.ram_v
+    y0, y1 = vb.viewRange()[1]
+    assert y0 <= values.min() and y1 >= values.max() and y1 - y0 < 1.3 * np.ptp(values)
+    model.set_spec(stroke=480.0)                      # a bit slower: kept …
+    QApplication.processEvents()
+    kept = vb.viewRange()[1]
+    assert kept == pytest.approx([y0, y1])
+    plots.stack().fit()                               # … until Fit, which fits exactly
+    values = model.motion.ram_v
+    pad = 0.08 * np.ptp(values)
+    assert vb.viewRange()[1] == pytest.approx([values.min() - pad, values.max() + pad])
