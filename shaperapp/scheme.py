@@ -28,6 +28,11 @@ from .scheme_forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: 
 from .scheme_mechanism import Geometry, MechanismLayer
 
 
+# After an edit the view is kept while it holds the whole drawing and the drawing fills at
+# least this share of it across or up (a fresh fit fills about 93 %).
+FILL_KEPT = 0.8
+
+
 class SchemeWidget(QWidget):
     """The shaper mechanism drawn to scale at ``model.angle_index``; zoom, pan, fit, export."""
 
@@ -108,6 +113,14 @@ class SchemeWidget(QWidget):
         if self._geometry is not None:
             self._view.setRange(self._geometry.fit_rect, padding=0.04)
             self._view.updateMatrix()     # now, not while preparing a paint (a second paint)
+
+    def _still_fits(self) -> bool:
+        """The view shown holds the new design's drawing and the drawing fills at least
+        FILL_KEPT of it across or up: a nudged input keeps the view, as in the plots."""
+        view = self._view.viewRect()
+        want = self._geometry.fit_rect
+        return view.contains(want) and (want.width() >= FILL_KEPT * view.width()
+                                        or want.height() >= FILL_KEPT * view.height())
 
     def set_dimensions_visible(self, visible: bool) -> None:
         """Show or hide the dimension lines (L1, L2, L3, h, H)."""
@@ -274,7 +287,8 @@ class SchemeWidget(QWidget):
         design = self._model.design
         if design != self._design:
             self._design = design
-            self.fit()
+            if not self._still_fits():
+                self.fit()
         self._move(self._model.angle_index)
 
     def _on_angle(self, index: int) -> None:

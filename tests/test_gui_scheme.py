@@ -187,3 +187,17 @@ def test_language_change_keeps_texts(scheme):
     assert scheme.fit_action.text()
     assert scheme.findChild(QCheckBox).text()
     assert all(scheme.dimension_labels())
+
+
+def test_a_nudged_input_keeps_the_view_while_the_drawing_fits(scheme, model):
+    """K 1.40 → 1.41 changes the drawing a little: the view stays (no jump) and still
+    holds the whole travel; a design twice as large is fitted again."""
+    view = scheme.plot_widget().getPlotItem().getViewBox()
+    before = view.viewRect()
+    model.set_spec(time_ratio=1.41)
+    QApplication.processEvents()
+    assert view.viewRect() == before
+    assert view.viewRect().contains(trace_bounds(model))
+    model.set_spec(crank=200.0, stroke=600.0)
+    QApplication.processEvents()
+    assert view.viewRect() != before and view.viewRect().contains(trace_bounds(model))
