@@ -90,7 +90,10 @@ def guard_wheel(root: QWidget) -> None:
 
 def _guard_focus_window(_old: QWidget | None, new: QWidget | None) -> None:
     if new is not None:
-        guard_wheel(new.window())
+        try:
+            guard_wheel(new.window())
+        except RuntimeError:          # the focus moved to a widget being destroyed
+            pass
 
 
 def install_wheel_guard() -> None:
@@ -122,7 +125,10 @@ class ShortcutGuard(QObject):
             except RuntimeError:          # the old focus widget is being destroyed
                 pass
         if new is not None:
-            new.installEventFilter(self)
+            try:
+                new.installEventFilter(self)
+            except RuntimeError:
+                pass
 
     def eventFilter(self, obj: QObject, event: QEvent) -> bool:  # noqa: N802 - Qt's name
         if event.type() != QEvent.Type.ShortcutOverride or not isinstance(event, QKeyEvent):

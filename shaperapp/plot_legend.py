@@ -71,6 +71,8 @@ class GroupLegend:
         self.set_title("")
 
     def set_title(self, text: str) -> None:
+        if self._title.isVisible() == bool(text) and (not text or self._title.text == text):
+            return                      # unchanged: setText would lay the head out again
         self._title.setText(text)
         height = ROW_HEIGHT if text else 0
         self._title.setMinimumHeight(height)

@@ -12,11 +12,15 @@ def fill_speed_combo(combo: QComboBox, rpms: Sequence[float]) -> None:
     """List ``rpms`` as 'n r/min' without emitting signals; keep the chosen speed when it
     still exists, else the first."""
     values = [float(r) for r in rpms]
+    texts = [QCoreApplication.translate("SpeedCombo", "%1 r/min").replace("%1", f"{rpm:g}") for rpm in values]
+    if [combo.itemData(i) for i in range(combo.count())] == values and \
+            [combo.itemText(i) for i in range(combo.count())] == texts:
+        return                          # the same speeds: nothing to redo on an edit
     chosen = combo.currentData()
     combo.blockSignals(True)
     combo.clear()
-    for rpm in values:
-        combo.addItem(QCoreApplication.translate("SpeedCombo", "%1 r/min").replace("%1", f"{rpm:g}"), rpm)
+    for rpm, text in zip(values, texts):
+        combo.addItem(text, rpm)
     combo.setCurrentIndex(values.index(chosen) if chosen in values else 0)
     combo.blockSignals(False)
 
