@@ -75,7 +75,7 @@ class DimensionLayer(QObject):
 
     def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
         super().__init__(parent)
-        self._lines = pg.PlotDataItem(pen=pen(DIM, 1.0), connect="pairs")
+        self._lines = pg.PlotCurveItem(pen=pen(DIM, 1.0), connect="pairs")
         self._lines.setZValue(Z_DIM)
         add(self._lines)
         self._heads = body(DIM, Z_DIM, QPen(Qt.PenStyle.NoPen))

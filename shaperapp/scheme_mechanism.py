@@ -79,11 +79,11 @@ class MechanismLayer(QObject):
     def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.frames: _Frames | None = None
-        self._ground = pg.PlotDataItem(pen=pen(FRAME, 1.2), connect="pairs")
-        self._guide_line = pg.PlotDataItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashDotLine))
-        self._ghost_lines = pg.PlotDataItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashLine), connect="pairs")
-        self._circle = pg.PlotDataItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashLine))
-        self._path_all = pg.PlotDataItem(pen=pen(PATH_LIGHT, 1.2))
+        self._ground = pg.PlotCurveItem(pen=pen(FRAME, 1.2), connect="pairs")
+        self._guide_line = pg.PlotCurveItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashDotLine))
+        self._ghost_lines = pg.PlotCurveItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashLine), connect="pairs")
+        self._circle = pg.PlotCurveItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashLine))
+        self._path_all = pg.PlotCurveItem(pen=pen(PATH_LIGHT, 1.2))
         for z, it in ((Z_FRAME, self._ground), (Z_GHOST, self._guide_line),
                       (Z_GHOST, self._ghost_lines), (Z_GHOST, self._circle),
                       (Z_PATH, self._path_all)):
