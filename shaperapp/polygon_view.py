@@ -60,6 +60,7 @@ class PolygonView(QWidget):
         self.export_button = QToolButton()      # an icon: the pane beside the scheme is narrow
         self.export_button.setIcon(self.style().standardIcon(QStyle.StandardPixmap.SP_DialogSaveButton))
         self.canvas = _Canvas(self)
+        self._solved: tuple = (None, {}, None, None)      # (key, polygons, design, loads)
         self._stale = True
         bar_over_body(self, (self.kind_box, self.speed_box), self.export_button, self.canvas,
                       (self.scale_label, self.scale_edit, self.unit_label, self.auto_box))
@@ -123,9 +124,15 @@ class PolygonView(QWidget):
         return self.canvas.logicalDpiX() / 25.4
 
     def _polygons_at(self, crank_deg: float) -> dict[str, Polygon]:
-        design = self.model.design
-        masses = masses_for_design(design, self.model.masses)
-        return polygons(design, crank_deg, self.model.rpms[self.speed_index()], masses)
+        """The polygons of this position, solved once: a repaint asks for them for the
+        automatic scale, the scale field and the drawing (the model replaces its design
+        and loads objects when they change, so those are compared by identity)."""
+        design, loads, rpm = self.model.design, self.model.masses, self.model.rpms[self.speed_index()]
+        key = (rpm, crank_deg)
+        if self._solved[0] != key or self._solved[2] is not design or self._solved[3] is not loads:
+            masses = masses_for_design(design, loads)
+            self._solved = (key, polygons(design, crank_deg, rpm, masses), design, loads)
+        return self._solved[1]
 
     def _auto_scale(self, kind: str) -> float:
         """Round μ so that the polygon at this position fills the canvas at true scale."""
