@@ -118,8 +118,10 @@ class DimensionLayer(QObject):
         self._heads.setPath(heads)
         for item, dim in zip(self._texts, dims):
             item.setText(dim.text)
-            item.setAngle(dim.angle)
-            item.setAnchor(dim.anchor)
+            if item.angle != dim.angle:          # pyqtgraph re-lays the text out on each call
+                item.setAngle(dim.angle)
+            if tuple(item.anchor) != tuple(dim.anchor):
+                item.setAnchor(dim.anchor)
             item.setPos(*dim.text_pos)
 
     def set_visible(self, visible: bool) -> None:
