@@ -30,17 +30,26 @@ EDIT_BUDGET_S = 0.030       # edit → every visible view updated (issue 8, item
 FRAME_BUDGET_S = 0.008      # one animation frame of the whole window
 
 
+# "nudge": a new K every round (1.40, 1.41 … 1.64, all valid): every number and label
+# changes, and the plots and the scheme keep their ranges while the drawing still fits
+# them. "jump": the stroke alternates 300 ↔ 450 mm, so every plot range changes and the
+# scheme is fitted again each round (the worst case of an edit).
+EDITS = {"nudge": ("time_ratio", lambda i: 1.4 + 0.01 * (i % 25)),
+         "jump": ("stroke", lambda i: 300.0 if i % 2 else 450.0)}
+
+
+@pytest.mark.parametrize("edit", ["nudge", "jump"])
 @pytest.mark.parametrize("tab", ["kinematics", "forces"])
-def test_input_to_all_views_updated(benchmark, window, tab):
+def test_input_to_all_views_updated(benchmark, window, tab, edit):
     """An edit redraws every visible view (scheme, metrics, animation bar, the front tab);
     the tab behind waits until it is shown."""
     window.tabs.setCurrentIndex(0 if tab == "kinematics" else 1)
     QApplication.processEvents()
-    # A new K every round (1.40, 1.41 … 1.64, all valid): every number and label changes.
-    values = iter(1.4 + 0.01 * (i % 25) for i in range(10**6))
+    field, value = EDITS[edit]
+    rounds = iter(range(10**6))
 
     def change():
-        window.model.set_spec(time_ratio=next(values))
+        window.model.set_spec(**{field: value(next(rounds))})
         QApplication.processEvents()  # every view repaints
 
     # Fixed rounds: calibration ran this ~15 000 times (10 minutes) on a loaded machine.
