@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from PySide6.QtCore import QEvent
-from PySide6.QtWidgets import QGroupBox, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QAbstractScrollArea, QGroupBox, QVBoxLayout, QWidget
 
 from .model import DesignModel
 from .result_table import ResultTable
@@ -31,10 +31,12 @@ class MetricsPanel(QWidget):
         super().__init__(parent)
         self._model = model
         self._stale = self._forces_stale = True
+        self._watched: QWidget | None = None        # the scroll area followed, once shown
         self._dim_box, self._dim_table = self._section()
         self._cycle_box, self._cycle_table = self._section()
         self._speed_box, self._table = self._section()
         self._forces_box, self._forces_table = self._section()
+        self._forces_table.before_read = self._catch_up      # a copy never takes placeholders
         layout = QVBoxLayout(self)
         layout.setContentsMargins(2, 2, 2, 2)
         for box in (self._dim_box, self._cycle_box, self._speed_box, self._forces_box):
@@ -79,24 +81,49 @@ class MetricsPanel(QWidget):
         self._show_title()               # cheap, and a closed pane shows the right title when opened
         self._stale = True               # the forces table waits for forcesChanged, which follows
         if self.isVisible():
-            self._catch_up()
+            self._catch_up(unseen=False)
 
     def _on_forces(self) -> None:
         self._forces_stale = True
         if self.isVisible():
-            self._catch_up()
+            self._catch_up(unseen=False)
 
-    def _catch_up(self) -> None:
+    def _catch_up(self, unseen: bool = True) -> None:
+        """Fill what is stale. The forces table only where it can be seen (``unseen``
+        fills it anyway, for read-backs): it is usually scrolled below the fold, and
+        filling it solves the cycle summary, the largest part of an edit."""
         if self._stale:
             self._stale = False
             self._show()
-        if self._forces_stale:
+        if self._forces_stale and (unseen or not self._forces_table.visibleRegion().isEmpty()):
             self._forces_stale = False
             self._show_forces()
+        elif self._forces_stale:
+            self._shape_forces()
 
     def showEvent(self, event) -> None:
         super().showEvent(event)
-        self._catch_up()
+        self._watch_scrolling()
+        self._catch_up(unseen=False)
+
+    def _watch_scrolling(self) -> None:
+        """Follow the pane's scroll area, so that the forces table is filled as it is
+        scrolled into view (before the scrolled pane is painted)."""
+        area = self.parentWidget()
+        while area is not None and not isinstance(area, QAbstractScrollArea):
+            area = area.parentWidget()
+        if area is None or area is self._watched:
+            return
+        self._watched = area
+        for bar in (area.verticalScrollBar(), area.horizontalScrollBar()):
+            bar.valueChanged.connect(lambda _: self._catch_up(unseen=False))
+
+    def paintEvent(self, event) -> None:
+        """Any other way into view (the pane resized, a layout change) repaints the pane
+        before its tables: fill the forces table first."""
+        if self._forces_stale:
+            self._catch_up(unseen=False)
+        super().paintEvent(event)
 
     def changeEvent(self, event: QEvent) -> None:
         if event.type() == QEvent.Type.LanguageChange:
@@ -188,6 +215,15 @@ class MetricsPanel(QWidget):
 
     def _show_forces(self) -> None:
         self._fill(self._forces_table, self._force_rows(), self._model.dynamics_summary.speeds)
+
+    def _shape_forces(self) -> None:
+        """The forces table's rows and columns with placeholders, without solving the
+        summary: the pane keeps its size and scroll range while the numbers wait until
+        the table comes into view (they are filled before it is painted)."""
+        rows = self._force_rows()
+        heads = [self.tr("%1 r/min").replace("%1", f"{rpm:g}") for rpm in self._model.rpms]
+        self._forces_table.set_content([title for _, title, _, _ in rows], heads,
+                                       [["…"] * len(heads) for _ in rows])
 
     def _fill(self, table: ResultTable, rows: list[tuple[str, str, float, str]], speeds) -> None:
         """One column per crank speed, one row per value."""

@@ -136,7 +136,13 @@ class DesignModel(QObject):
 
     @property
     def dynamics_summary(self) -> DynamicsSummary:
-        return self._dynamics_summary
+        """Solved on first use after each change (see ``SummaryOnDemand``); one that cannot
+        be computed is shown as undefined values with the forces error."""
+        try:
+            return self._dynamics_summary.get()
+        except (DesignError, *COMPUTE_ERRORS) as exc:
+            self._set_forces_error(exc if isinstance(exc, DesignError) else compute_error(exc), force=True)
+            return self._dynamics_summary.undefined()
 
     @property
     def forces_error(self) -> DesignError | None:
@@ -277,6 +283,7 @@ class DesignModel(QObject):
         try:
             spec.check_fields()
             results = compute(inputs, masses)
+            results[-1].get()                  # all or nothing: the summary too
         except DesignError:
             raise
         except COMPUTE_ERRORS as exc:

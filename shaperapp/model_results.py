@@ -6,11 +6,14 @@ those as "cannot be computed" and keeps the last valid design.
 """
 from __future__ import annotations
 
-from core.dynamics import Dynamics, DynamicsSummary, MassProperties, masses_for_design, solve_dynamics
+import numpy as np
+
+from core.dynamics import (ENERGY_INTERVALS, Dynamics, DynamicsSummary, MassProperties, SpeedSummary,
+                           masses_for_design, solve_dynamics)
 from core.errors import DesignError
 from core.flywheel import summarize
 from core.geometry import Design
-from core.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, solve
+from core.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
 from core.metrics import CycleMetrics, analyze
 from core.spec import Spec
 
@@ -35,11 +38,47 @@ def compute_motion(inputs: Inputs) -> tuple[Design, Motion, CycleMetrics]:
     return design, solve(design, angles, rpms), analyze(design, rpms)
 
 
+class SummaryOnDemand:
+    """The cycle summary (mean and peak torque, energy, flywheel) of the forces on
+    screen, solved the first time something asks for it, then kept.
+
+    It is the largest part of an edit's computation (the exact torque peaks), and most
+    edits show no view of it: the forces table sits below the fold of the Results pane
+    and the Forces tab is usually behind. Its inputs are those of the forces solved
+    with it, so a late answer is never another design's.
+    """
+
+    def __init__(self, design: Design, rpm, masses: MassProperties) -> None:
+        self.design, self.rpm, self.masses = design, rpm, masses
+        self._value: DynamicsSummary | None = None
+
+    def get(self) -> DynamicsSummary:
+        """The summary; raises what summarize raises, once (then the undefined one)."""
+        if self._value is None:
+            try:
+                self._value = summarize(self.design, self.rpm, self.masses)
+            except BaseException:
+                self._value = self.undefined()
+                raise
+        return self._value
+
+    def undefined(self) -> DynamicsSummary:
+        """Every value NaN (shown as such), for a summary that cannot be computed."""
+        phi = np.linspace(0.0, 2.0 * np.pi, ENERGY_INTERVALS + 1)
+        nan = float("nan")
+        speeds = tuple(SpeedSummary(float(r), float(w), *([nan] * 8))
+                       for r, w in zip(self.rpm, rpm_to_omega(np.asarray(self.rpm, dtype=float))))
+        return DynamicsSummary(masses=self.masses, crank_angle=phi,
+                               energy=np.full((len(speeds), phi.size), nan),
+                               equivalent_inertia=np.full(phi.size, nan),
+                               equivalent_inertia_mean_kg_m2=nan, speeds=speeds)
+
+
 def solve_forces(design: Design, motion: Motion,
-                 masses: MassProperties) -> tuple[Dynamics, DynamicsSummary]:
+                 masses: MassProperties) -> tuple[Dynamics, SummaryOnDemand]:
     used = masses_for_design(design, masses)
     return (solve_dynamics(design, motion.crank_angle, motion.rpm, used),
-            summarize(design, motion.rpm, used))
+            SummaryOnDemand(design, motion.rpm, used))
 
 
 def compute(inputs: Inputs, masses: MassProperties):

@@ -9,7 +9,7 @@ as cells.
 """
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Callable, Sequence
 
 from PySide6.QtCore import QEvent, Qt
 from PySide6.QtGui import QAction, QFontMetrics, QGuiApplication, QKeyEvent, QKeySequence
@@ -39,6 +39,8 @@ class ResultTable(QTableWidget):
         rows.setDefaultAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
         self.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
         self.horizontalHeader().setStretchLastSection(False)
+        # The owner's hook to bring content it fills lazily up to date before a copy.
+        self.before_read: Callable[[], None] = lambda: None
         self.copy_action = QAction(self)
         self.copy_action.triggered.connect(self.copy)
         self.addAction(self.copy_action)
@@ -139,6 +141,7 @@ class ResultTable(QTableWidget):
     # ---- copy ----------------------------------------------------------------
     def tsv(self, selected_only: bool = True) -> str:
         """The selected cells' rows and columns (or all) with their titles, tab-separated."""
+        self.before_read()
         indexes = self.selectedIndexes() if selected_only else []
         rows = sorted({i.row() for i in indexes}) or list(range(self.rowCount()))
         cols = sorted({i.column() for i in indexes}) or list(range(self.columnCount()))

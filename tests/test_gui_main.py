@@ -125,3 +125,62 @@ def test_forces_table_follows_edits_speeds_and_language(qtbot, tmp_path):
         window.set_language("en")
         QApplication.processEvents()
         assert table.verticalHeaderItem(0).text() == english
+
+
+def test_summary_is_solved_only_when_shown_and_filled_before_it_is_seen(qtbot, tmp_path):
+    """The cycle summary (exact torque peaks, flywheel) is the largest part of an edit; it
+    is solved when something shows it. Below the fold of the Results pane the forces table
+    keeps its rows and columns; scrolled into view it shows core's numbers at once."""
+    from PySide6.QtWidgets import QApplication, QScrollArea
+
+    from core.dynamics import masses_for_design
+    from core.flywheel import summarize
+    from gui_helpers import main_window
+
+    with main_window(tmp_path) as window:
+        window.resize(1366, 768)
+        model, metrics = window.model, window.metrics
+        window.tabs.setCurrentIndex(0)
+        QApplication.processEvents()
+        table = metrics.tables()[3]
+        assert table.visibleRegion().isEmpty()                    # below the fold
+        model.set_spec(time_ratio=1.55)
+        QApplication.processEvents()
+        assert model._dynamics_summary._value is None             # not solved: nothing shows it
+        assert table.rowCount() == 7 and table.columnCount() == len(model.rpms)
+        area = metrics.parentWidget()
+        while not isinstance(area, QScrollArea):
+            area = area.parentWidget()
+        area.ensureWidgetVisible(table)
+        QApplication.processEvents()
+        assert not table.visibleRegion().isEmpty()
+        summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
+        for col, s in enumerate(summary.speeds):                   # items as painted, no read-back
+            assert table.item(5, col).text() == f"{s.flywheel_inertia_kg_m2:.2f}"
+            assert table.item(1, col).text() == f"{s.max_torque_N_m:.1f}"
+        model.set_spec(time_ratio=1.5)                             # in view: filled at once
+        QApplication.processEvents()
+        summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
+        assert table.item(5, 0).text() == f"{summary.speeds[0].flywheel_inertia_kg_m2:.2f}"
+        window.tabs.setCurrentIndex(1)                             # the Forces tab needs it too
+        QApplication.processEvents()
+        assert model._dynamics_summary._value is not None
+
+
+def test_copying_the_forces_table_below_the_fold_copies_numbers(qtbot, tmp_path):
+    """Copy from the forces table while its numbers wait (scrolled away) brings them up
+    to date first: the clipboard never gets placeholders."""
+    from PySide6.QtWidgets import QApplication
+
+    from core.dynamics import masses_for_design
+    from core.flywheel import summarize
+    from gui_helpers import main_window
+
+    with main_window(tmp_path) as window:
+        window.resize(1366, 768)
+        model, table = window.model, window.metrics.tables()[3]
+        model.set_spec(time_ratio=1.45)
+        QApplication.processEvents()
+        text = table.tsv(selected_only=False)
+        summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
+        assert "…" not in text and f"{summary.speeds[0].max_torque_N_m:.1f}" in text
