@@ -21,15 +21,17 @@ from .kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape,
 
 
 def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
-              intervals: int = ENERGY_INTERVALS) -> DynamicsSummary:
+              intervals: int = ENERGY_INTERVALS, peaks: bool = True) -> DynamicsSummary:
     """Mean and peak torque, power, ΔW_max and the flywheel per speed.
 
-    :func:`cycle_summary` on this one design, with its curves.
+    :func:`cycle_summary` on this one design, with its curves. ``peaks=False`` leaves
+    out the exact torque peaks (max/min torque and peak power are NaN), most of the
+    cost, for a caller that shows only the energy, the means and the flywheel.
     """
     intervals = _check_intervals(intervals)
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
     phi, rpm, omega = _check_inputs(design, phi, rpms, masses)
-    out = cycle_summary(Designs.of(design), omega, masses, intervals, curves=True)
+    out = cycle_summary(Designs.of(design), omega, masses, intervals, curves=True, peaks=peaks)
     je_mean = float(out["equivalent_inertia_mean_kg_m2"][0])
     speeds = []
     for i, w in enumerate(omega):
@@ -61,7 +63,8 @@ SUMMARY_SAMPLES = 400_000
 
 
 def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
-                  intervals: int = ENERGY_INTERVALS, curves: bool = False) -> dict[str, np.ndarray]:
+                  intervals: int = ENERGY_INTERVALS, curves: bool = False,
+                  peaks: bool = True) -> dict[str, np.ndarray]:
     """Per-speed cycle values of many designs at once (loads ``masses`` shared by all).
 
     Returns arrays of shape (designs, speeds), keys ``mean_torque_N_m``,
@@ -69,7 +72,8 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     ``flywheel_inertia_kg_m2``, and ``equivalent_inertia_mean_kg_m2`` (designs,);
     with ``curves`` also ``energy`` (designs, speeds, N + 1) and
     ``equivalent_inertia`` (designs, N + 1). Designs must be valid (see
-    :mod:`core.designs`) and one-dimensional.
+    :mod:`core.designs`) and one-dimensional. ``peaks=False`` skips the exact torque
+    peaks: ``max_torque_N_m`` and ``min_torque_N_m`` are NaN.
 
     The torque is integrated over a closed uniform grid of ``intervals``
     steps. The cutting force switches on and off, so its share of the work is
@@ -81,7 +85,7 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     omega = np.asarray(omega, dtype=float)
     size = designs.shape[0] if designs.shape else 1
     chunk = max(1, SUMMARY_SAMPLES // ((intervals + 1) * max(omega.size, 1)))
-    parts = [_summary_chunk(designs.take(slice(i, i + chunk)), omega, masses, intervals, curves)
+    parts = [_summary_chunk(designs.take(slice(i, i + chunk)), omega, masses, intervals, curves, peaks)
              for i in range(0, size, chunk)]
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
 
@@ -98,7 +102,7 @@ def _torque_parts(design, sh: Shape, masses: MassProperties) -> tuple[np.ndarray
 
 
 def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, intervals: int,
-                   curves: bool) -> dict[str, np.ndarray]:
+                   curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
     step = phi[1] - phi[0]
@@ -117,7 +121,10 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     swing = energy.max(axis=-1) - energy.min(axis=-1)
     je = equivalent_inertia(col, sh, masses)
     je = np.broadcast_to(je, sh.ram1.shape)
-    top, bottom = _torque_peaks(d, sh, static, inertial, omega, masses)
+    if peaks:
+        top, bottom = _torque_peaks(d, sh, static, inertial, omega, masses)
+    else:
+        top = bottom = np.full(mean.shape, np.nan)
     out = {"mean_torque_N_m": mean, "max_torque_N_m": top, "min_torque_N_m": bottom,
            "energy_fluctuation_J": swing,
            "flywheel_inertia_kg_m2": swing / (omega[None, :] ** 2 * masses.delta),

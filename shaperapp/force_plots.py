@@ -4,7 +4,7 @@ The forces view configures the shared plot stack (plot_stack.py) with crank torq
 (with each speed's mean as a dashed line), input power and the cumulative energy
 ΔE(φ), one curve per crank speed, and the joint-force magnitudes of one chosen
 speed; the cutting zone is shaded. Everything drawn comes from ``model.dynamics``
-and ``model.dynamics_summary``; this module only converts units, takes
+and ``model.cycle_summary(peaks=False)``; this module only converts units, takes
 |F| = hypot(Fx, Fy) and finds where the cutting force is on.
 """
 from __future__ import annotations
@@ -128,7 +128,7 @@ class ForcePlots(StackView):
 
     # ---- what the stack draws -------------------------------------------
     def _curves(self, name: str) -> list[Curve]:
-        dyn, summary = self._model.dynamics, self._model.dynamics_summary
+        dyn, summary = self._model.dynamics, self._model.cycle_summary(peaks=False)
         degrees = np.degrees(dyn.crank_angle)
         labels = [self.speed_name(float(r)) for r in dyn.rpm]
         if name == "force":

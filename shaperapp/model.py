@@ -138,8 +138,13 @@ class DesignModel(QObject):
     def dynamics_summary(self) -> DynamicsSummary:
         """Solved on first use after each change (see ``SummaryOnDemand``); one that cannot
         be computed is shown as undefined values with the forces error."""
+        return self.cycle_summary(peaks=True)
+
+    def cycle_summary(self, peaks: bool = True) -> DynamicsSummary:
+        """:attr:`dynamics_summary`; ``peaks=False`` may leave out the exact torque peaks
+        (NaN), for views that show only the energy, the means and the flywheel."""
         try:
-            return self._dynamics_summary.get()
+            return self._dynamics_summary.get(peaks)
         except (DesignError, *COMPUTE_ERRORS) as exc:
             self._set_forces_error(exc if isinstance(exc, DesignError) else compute_error(exc), force=True)
             return self._dynamics_summary.undefined()

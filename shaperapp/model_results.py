@@ -42,25 +42,38 @@ class SummaryOnDemand:
     """The cycle summary (mean and peak torque, energy, flywheel) of the forces on
     screen, solved the first time something asks for it, then kept.
 
-    It is the largest part of an edit's computation (the exact torque peaks), and most
-    edits show no view of it: the forces table sits below the fold of the Results pane
-    and the Forces tab is usually behind. Its inputs are those of the forces solved
-    with it, so a late answer is never another design's.
+    It is the largest part of an edit's computation, the exact torque peaks most of
+    it, and most edits show no view of it: the forces table sits below the fold of the
+    Results pane and the Forces tab is usually behind; the Forces tab's plots need the
+    energy and the means but not the peaks (``peaks=False``). Its inputs are those of
+    the forces solved with it, so a late answer is never another design's.
     """
 
     def __init__(self, design: Design, rpm, masses: MassProperties) -> None:
         self.design, self.rpm, self.masses = design, rpm, masses
-        self._value: DynamicsSummary | None = None
+        self._full: DynamicsSummary | None = None
+        self._cycle: DynamicsSummary | None = None
 
-    def get(self) -> DynamicsSummary:
-        """The summary; raises what summarize raises, once (then the undefined one)."""
-        if self._value is None:
-            try:
-                self._value = summarize(self.design, self.rpm, self.masses)
-            except BaseException:
-                self._value = self.undefined()
-                raise
-        return self._value
+    def get(self, peaks: bool = True) -> DynamicsSummary:
+        """The summary (``peaks=False``: max/min torque and peak power NaN); raises what
+        summarize raises, once (then the undefined one)."""
+        if self._full is not None:
+            return self._full
+        if not peaks and self._cycle is not None:
+            return self._cycle
+        try:
+            value = summarize(self.design, self.rpm, self.masses, peaks=peaks)
+        except BaseException:
+            self._full = self.undefined()
+            raise
+        if peaks:
+            self._full = value
+        else:
+            self._cycle = value
+        return value
+
+    def solved(self) -> bool:
+        return self._full is not None or self._cycle is not None
 
     def undefined(self) -> DynamicsSummary:
         """Every value NaN (shown as such), for a summary that cannot be computed."""

@@ -496,3 +496,21 @@ def test_power_balance_random_designs(data):
     keep = np.abs(x[:, None] - edges[None, :]).min(axis=1) > 1e-9 * design.stroke
     np.testing.assert_allclose(dyn.power[:, keep], expected[:, keep], rtol=0,
                                atol=1e-9 * max(scale.max(), 1e-30))
+
+
+def test_summary_without_peaks_is_the_summary_less_its_torque_peaks():
+    """peaks=False skips only the exact torque peaks (NaN); energy, means, ΔW and the
+    flywheel are the same numbers."""
+    from dataclasses import asdict
+    design = synthesize(100.0, 1.5, 320.0, guide="sagitta", rod_ratio=0.4)
+    masses = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                            rod_mass_kg=4.0, cut_force_N=7000.0, cut_height_mm=80.0)
+    full = summarize(design, [30.0, 75.0], masses)
+    cycle = summarize(design, [30.0, 75.0], masses, peaks=False)
+    np.testing.assert_array_equal(cycle.energy, full.energy)
+    for a, b in zip(full.speeds, cycle.speeds):
+        for key, value in asdict(a).items():
+            if key in ("max_torque_N_m", "min_torque_N_m", "max_power_W"):
+                assert math.isnan(asdict(b)[key]) and math.isfinite(value)
+            else:
+                assert asdict(b)[key] == value, key

@@ -146,7 +146,7 @@ def test_summary_is_solved_only_when_shown_and_filled_before_it_is_seen(qtbot, t
         assert table.visibleRegion().isEmpty()                    # below the fold
         model.set_spec(time_ratio=1.55)
         QApplication.processEvents()
-        assert model._dynamics_summary._value is None             # not solved: nothing shows it
+        assert not model._dynamics_summary.solved()               # not solved: nothing shows it
         assert table.rowCount() == 7 and table.columnCount() == len(model.rpms)
         area = metrics.parentWidget()
         while not isinstance(area, QScrollArea):
@@ -164,7 +164,7 @@ def test_summary_is_solved_only_when_shown_and_filled_before_it_is_seen(qtbot, t
         assert table.item(5, 0).text() == f"{summary.speeds[0].flywheel_inertia_kg_m2:.2f}"
         window.tabs.setCurrentIndex(1)                             # the Forces tab needs it too
         QApplication.processEvents()
-        assert model._dynamics_summary._value is not None
+        assert model._dynamics_summary.solved()
 
 
 def test_copying_the_forces_table_below_the_fold_copies_numbers(qtbot, tmp_path):
