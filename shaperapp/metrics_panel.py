@@ -32,6 +32,7 @@ class MetricsPanel(QWidget):
         self._model = model
         self._stale = self._forces_stale = True
         self._watched: QWidget | None = None        # the scroll area followed, once shown
+        self._placeholders: tuple | None = None     # (row titles, headings) shown with "…"
         self._dim_box, self._dim_table = self._section()
         self._cycle_box, self._cycle_table = self._section()
         self._speed_box, self._table = self._section()
@@ -214,6 +215,7 @@ class MetricsPanel(QWidget):
         self._fill(self._table, rows, metrics.speeds)
 
     def _show_forces(self) -> None:
+        self._placeholders = None
         self._fill(self._forces_table, self._force_rows(), self._model.dynamics_summary.speeds)
 
     def _shape_forces(self) -> None:
@@ -222,8 +224,11 @@ class MetricsPanel(QWidget):
         the table comes into view (they are filled before it is painted)."""
         rows = self._force_rows()
         heads = [self.tr("%1 r/min").replace("%1", f"{rpm:g}") for rpm in self._model.rpms]
-        self._forces_table.set_content([title for _, title, _, _ in rows], heads,
-                                       [["…"] * len(heads) for _ in rows])
+        titles = [title for _, title, _, _ in rows]
+        if (titles, heads) == self._placeholders:
+            return                          # already this shape, with placeholders
+        self._forces_table.set_content(titles, heads, [["…"] * len(heads) for _ in rows])
+        self._placeholders = (titles, heads)
 
     def _fill(self, table: ResultTable, rows: list[tuple[str, str, float, str]], speeds) -> None:
         """One column per crank speed, one row per value."""
