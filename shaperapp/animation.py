@@ -92,6 +92,7 @@ class AnimationBar(QWidget):
             self._heads[key].setAlignment(Qt.AlignRight | Qt.AlignVCenter)
             self._speeds.addWidget(self._heads[key], 0, col)
         self._speed_rows: list[tuple[QLabel, QLabel, QLabel, QLabel]] = []
+        self._rows_for: tuple[float, ...] | None = None     # the speeds the rows were made for
         for grid in (self._positions, self._speeds):
             grid.setHorizontalSpacing(12)
             grid.setVerticalSpacing(0)
@@ -209,6 +210,11 @@ class AnimationBar(QWidget):
         self._slider.setPageStep(max(1, (self._model.angle_count - 1) // 12))
         self._slider.blockSignals(False)
         rpms = self._model.rpms
+        if rpms == self._rows_for:           # same speeds: no relayout of the read-out
+            self._sync_phase()
+            self._on_angle(self._model.angle_index)
+            return
+        self._rows_for = rpms
         while len(self._speed_rows) > len(rpms):
             for w in self._speed_rows.pop():
                 self._speeds.removeWidget(w)
