@@ -233,6 +233,7 @@ class MetricsPanel(QWidget):
     def _fill(self, table: ResultTable, rows: list[tuple[str, str, float, str]], speeds) -> None:
         """One column per crank speed, one row per value."""
         heads = [self.tr("%1 r/min").replace("%1", f"{s.rpm:g}") for s in speeds]
-        cells = [[fmt(getattr(speed, attr) * scale, spec) for speed in speeds]
+        cells = [[fmt(value * scale, spec) if math.isfinite(value) else "—"   # undefined: never "nan"
+                  for value in (getattr(speed, attr) for speed in speeds)]
                  for attr, _, scale, spec in rows]
         table.set_content([title for _, title, _, _ in rows], heads, cells)

@@ -63,7 +63,7 @@ class SummaryOnDemand:
             return self._cycle
         try:
             value = summarize(self.design, self.rpm, self.masses, peaks=peaks)
-        except BaseException:
+        except (DesignError, *COMPUTE_ERRORS):
             self._full = self.undefined()
             raise
         if peaks:

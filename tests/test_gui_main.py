@@ -184,3 +184,31 @@ def test_copying_the_forces_table_below_the_fold_copies_numbers(qtbot, tmp_path)
         text = table.tsv(selected_only=False)
         summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
         assert "…" not in text and f"{summary.speeds[0].max_torque_N_m:.1f}" in text
+
+
+def test_a_summary_that_cannot_be_computed_shows_dashes_and_the_forces_error(qtbot, tmp_path, monkeypatch):
+    """The summary is solved late, in a view's update: if it fails there, nothing raises,
+    the forces error names it and the table shows "—", never "nan" or old numbers."""
+    from PySide6.QtWidgets import QApplication
+
+    import shaperapp.model_results as results
+    from gui_helpers import main_window
+
+    with main_window(tmp_path) as window:
+        model, metrics = window.model, window.metrics
+
+        def fails(*args, **kwargs):
+            raise ArithmeticError("overflow")
+        monkeypatch.setattr(results, "summarize", fails)
+        model.set_spec(time_ratio=1.45)
+        QApplication.processEvents()
+        summary = model.dynamics_summary
+        assert all(s.max_torque_N_m != s.max_torque_N_m for s in summary.speeds)   # NaN
+        assert model.forces_error is not None and "cannot be computed" in str(model.forces_error)
+        texts = [metrics.table_text(row, col, forces=True) for row in range(7) for col in range(2)]
+        assert set(texts) == {"—"}
+        monkeypatch.undo()
+        model.set_spec(time_ratio=1.5)                         # a good edit clears it
+        QApplication.processEvents()
+        assert model.forces_error is None
+        assert metrics.table_text(1, 0, forces=True) != "—"
