@@ -223,16 +223,19 @@ class MetricsPanel(QWidget):
         summary: the pane keeps its size and scroll range while the numbers wait until
         the table comes into view (they are filled before it is painted)."""
         rows = self._force_rows()
-        heads = [self.tr("%1 r/min").replace("%1", f"{rpm:g}") for rpm in self._model.rpms]
+        heads = self._heads(self._model.rpms)
         titles = [title for _, title, _, _ in rows]
         if (titles, heads) == self._placeholders:
             return                          # already this shape, with placeholders
         self._forces_table.set_content(titles, heads, [["…"] * len(heads) for _ in rows])
         self._placeholders = (titles, heads)
 
+    def _heads(self, rpms) -> list[str]:
+        return [self.tr("%1 r/min").replace("%1", f"{rpm:g}") for rpm in rpms]
+
     def _fill(self, table: ResultTable, rows: list[tuple[str, str, float, str]], speeds) -> None:
         """One column per crank speed, one row per value."""
-        heads = [self.tr("%1 r/min").replace("%1", f"{s.rpm:g}") for s in speeds]
+        heads = self._heads(s.rpm for s in speeds)
         cells = [[fmt(value * scale, spec) if math.isfinite(value) else "—"   # undefined: never "nan"
                   for value in (getattr(speed, attr) for speed in speeds)]
                  for attr, _, scale, spec in rows]
