@@ -20,6 +20,7 @@ from PySide6.QtCore import QObject
 from PySide6.QtGui import QColor, QPainterPath, QPen, Qt
 
 from .model import DesignModel
+from .plot_curves import CurveItem
 from .scheme_draw import DIM, Box, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
 from .scheme_mechanism import Geometry
 from .style import fmt
@@ -75,7 +76,7 @@ class DimensionLayer(QObject):
 
     def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
         super().__init__(parent)
-        self._lines = pg.PlotCurveItem(pen=pen(DIM, 1.0), connect="pairs")
+        self._lines = CurveItem(pen(DIM, 1.0), connect="pairs")
         self._lines.setZValue(Z_DIM)
         add(self._lines)
         self._heads = body(DIM, Z_DIM, QPen(Qt.PenStyle.NoPen))
@@ -111,7 +112,7 @@ class DimensionLayer(QObject):
         dims.append(linear_dim(np.array([g.tip_lo, g.tip_y]), np.array([g.tip_hi, g.tip_y]),
                                np.array([0.0, -1.0]), 2.6 * u, u,
                                self.tr("H = {0}").format(fmt(model.metrics.stroke_mm, ".1f"))))
-        self._lines.setData(*segments([s for dim in dims for s in dim.segments] + extensions))
+        self._lines.set_data(*segments([s for dim in dims for s in dim.segments] + extensions))
         heads = QPainterPath()
         for tip_pos, direction in (arrow for dim in dims for arrow in dim.arrows):
             heads.addPolygon(arrow_head(np.asarray(tip_pos), np.asarray(direction), u))

@@ -53,7 +53,7 @@ def body(fill: QColor, z: float, outline: QPen | None = None) -> QGraphicsPathIt
 
 
 def segments(pairs: list[Pair]) -> tuple[np.ndarray, np.ndarray]:
-    """Point pairs → x, y arrays for a PlotCurveItem with connect='pairs'."""
+    """Point pairs → x, y arrays for a CurveItem with connect="pairs"."""
     pts = np.array([p for pair in pairs for p in pair], dtype=float).reshape(-1, 2)
     return pts[:, 0], pts[:, 1]
 

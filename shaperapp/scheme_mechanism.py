@@ -28,6 +28,7 @@ from core.kinematics import Shape
 from core.kinematics import shape as core_shape
 
 from .model import DesignModel
+from .plot_curves import CurveItem
 from .scheme_draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Pair, Z_BLOCK,
                           Z_CRANK, Z_FRAME, Z_GHOST, Z_JOINT, Z_LABEL, Z_LEVER, Z_PATH, Z_RAM,
                           body, pen, rect, segments, stadium, text_box)
@@ -79,11 +80,11 @@ class MechanismLayer(QObject):
     def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.frames: _Frames | None = None
-        self._ground = pg.PlotCurveItem(pen=pen(FRAME, 1.2), connect="pairs")
-        self._guide_line = pg.PlotCurveItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashDotLine))
-        self._ghost_lines = pg.PlotCurveItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashLine), connect="pairs")
-        self._circle = pg.PlotCurveItem(pen=pen(FRAME, 1.0, Qt.PenStyle.DashLine))
-        self._path_all = pg.PlotCurveItem(pen=pen(PATH_LIGHT, 1.2))
+        self._ground = CurveItem(pen(FRAME, 1.2), connect="pairs")
+        self._guide_line = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashDotLine))
+        self._ghost_lines = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashLine), connect="pairs")
+        self._circle = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashLine))
+        self._path_all = CurveItem(pen(PATH_LIGHT, 1.2))
         for z, it in ((Z_FRAME, self._ground), (Z_GHOST, self._guide_line),
                       (Z_GHOST, self._ghost_lines), (Z_GHOST, self._circle),
                       (Z_PATH, self._path_all)):
@@ -163,13 +164,13 @@ class MechanismLayer(QObject):
 
         # Static drawing: supports, guide way, crank circle, lever limits, tool path.
         x0, x1 = ram_lo - rear - 3.0 * u, ram_hi + front + 3.0 * u
-        self._ground.setData(*segments(self._support(np.zeros(2), u) + self._support(o2, u)
+        self._ground.set_data(*segments(self._support(np.zeros(2), u) + self._support(o2, u)
                                        + self._rail(x0, x1, guide + y_hi, u)))
-        self._guide_line.setData([x0, x1], [guide, guide])
-        self._ghost_lines.setData(*segments([((0.0, 0.0), tuple(p)) for p in limits.lever_tip.T]))
-        self._circle.setData(a[:, 0], a[:, 1])
+        self._guide_line.set_data([x0, x1], [guide, guide])
+        self._ghost_lines.set_data(*segments([((0.0, 0.0), tuple(p)) for p in limits.lever_tip.T]))
+        self._circle.set_data(a[:, 0], a[:, 1])
         tip = self.frames.tip
-        self._path_all.setData(tip[:, 0], tip[:, 1])
+        self._path_all.set_data(tip[:, 0], tip[:, 1])
         self.pins["O4"].setPos(0.0, 0.0)
         self.pins["O2"].setPos(*o2)
         self.labels["O2"].setPos(o2[0] + 2.0 * u, o2[1] + 0.9 * u)

@@ -39,6 +39,15 @@ def fmt(value: float, spec: str) -> str:
 
 def configure_plots() -> None:
     """pyqtgraph's global look, the same for the window, the report and the benchmarks
-    (which must measure what a user sees): white background, black text, antialiased."""
+    (which must measure what a user sees): white background, black text, antialiased.
+
+    Also keeps Qt's raster fills on the painting thread (``QT_NO_GUI_THREADPOOL``, unless
+    the user set it): Qt hands every fill taller than 96 rows (the plots' and the
+    scheme's backgrounds and bands) to a thread pool and waits for it, and on a busy
+    2-core machine the hand-off cost more than the fill: 6 ms of a 48 ms edit
+    (README, Performance). Call before the first paint; the pool is made then."""
+    import os
+
     import pyqtgraph as pg
+    os.environ.setdefault("QT_NO_GUI_THREADPOOL", "1")
     pg.setConfigOptions(background="w", foreground="k", antialias=True)

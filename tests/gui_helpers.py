@@ -44,3 +44,9 @@ def main_window(folder: Path) -> Iterator[MainWindow]:
         win.close()
         win.deleteLater()
         i18n.set_language("en")
+
+
+def curve_items(plot_item) -> list:
+    """The curve items a stacked plot holds (removed ones are gone, not just emptied)."""
+    from shaperapp.plot_curves import CurveItem
+    return [item for item in plot_item.items if isinstance(item, CurveItem)]

@@ -23,7 +23,7 @@ from shaperapp.forces_panel import ForcesPanel
 from shaperapp.messages import describe
 from shaperapp.model import DesignModel
 
-from gui_helpers import shown
+from gui_helpers import curve_items, shown
 
 SPEED_CURVES = ("torque", "power", "energy")
 JOINT_ARRAYS = {"O2": ("o2_x", "o2_y"), "A": ("a_x", "a_y"), "O4": ("o4_x", "o4_y"),
@@ -207,7 +207,7 @@ def test_three_speeds_give_three_curves(panel, model):
     assert [len(panel.plots.curve_data(n)) for n in SPEED_CURVES] == [1, 1, 1]
     # removed, not just emptied: the speed's torque curve and its mean-torque line, each
     # a solid and a dashed item
-    assert len(panel.plots.plot_item("torque").listDataItems()) == 2 * 2
+    assert len(curve_items(panel.plots.plot_item("torque"))) == 2 * 2
     assert_matches_core(panel, model, model.masses)
 
 

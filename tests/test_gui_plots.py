@@ -19,7 +19,7 @@ from core.kinematics import crank_angles, solve
 from shaperapp.model import DesignModel
 from shaperapp.plots import LEVER_PLOTS, PLOT_NAMES, SHARED_PLOTS, PlotsWidget
 
-from gui_helpers import shown
+from gui_helpers import curve_items, shown
 
 
 @pytest.fixture
@@ -95,7 +95,7 @@ def test_speeds_add_and_remove_curves(widget, model):
     assert widget.legend_names() == ["40 r/min", "80 r/min"]
     assert_matches_core(widget, model)
     # removed curves are gone from the plot, not merely emptied
-    assert len(widget.plot_item("ram_v").listDataItems()) == 2 * 2
+    assert len(curve_items(widget.plot_item("ram_v"))) == 2 * 2
 
 
 def test_invalid_spec_keeps_curves(widget, model):
