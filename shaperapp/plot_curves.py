@@ -154,6 +154,7 @@ class CurveItem(QGraphicsPathItem):
         if pen is not None:
             self.setPen(pen)
         self._connect = connect          # "finite", or "pairs": a segment per two points
+        self.setAcceptedMouseButtons(Qt.MouseButton.NoButton)     # clicks go to the plot
         self._box = QPainterPath()
         self._antialias = bool(pg.getConfigOption("antialias"))
         self.x = self.y = np.empty(0)

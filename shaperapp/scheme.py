@@ -21,7 +21,7 @@ from PySide6.QtWidgets import (QCheckBox, QGraphicsView, QHBoxLayout, QMenu, QTo
 
 from .image_export import export_scene, render_scene
 from .model import DesignModel
-from .plot_axes import NavViewBox
+from .plot_axes import NavViewBox, unlink_hidden_axes
 from .scheme_dimensions import DimensionLayer
 from .scheme_draw import WHITE, Box, Pair
 from .scheme_forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
@@ -53,6 +53,7 @@ class SchemeWidget(QWidget):
         item = self._plot.getPlotItem()
         item.hideAxis("left")
         item.hideAxis("bottom")
+        unlink_hidden_axes(item)
         item.hideButtons()
         item.setMenuEnabled(False)
         self._view = item.getViewBox()
