@@ -164,9 +164,10 @@ class CurveItem(QGraphicsPathItem):
         self.x, self.y = x, y
         finite = np.isfinite(x) & np.isfinite(y)
         box, path = QPainterPath(), QPainterPath()
+        connect = "all" if self._connect == "finite" else self._connect     # within a finite run
         if finite.all() and x.size:
             box.addRect(QRectF(QPointF(x.min(), y.min()), QPointF(x.max(), y.max())))
-            path = pg.arrayToQPath(x, y, connect=self._connect, finiteCheck=False)
+            path = pg.arrayToQPath(x, y, connect=connect, finiteCheck=False)
         elif finite.any():
             box.addRect(QRectF(QPointF(x[finite].min(), y[finite].min()),
                                QPointF(x[finite].max(), y[finite].max())))
@@ -174,7 +175,7 @@ class CurveItem(QGraphicsPathItem):
             # is five times slower than its polygon for a run
             edges = np.flatnonzero(np.diff(np.concatenate(([0], finite.view(np.int8), [0]))))
             for start, stop in zip(edges[::2], edges[1::2]):
-                path.addPath(pg.arrayToQPath(x[start:stop], y[start:stop], connect=self._connect,
+                path.addPath(pg.arrayToQPath(x[start:stop], y[start:stop], connect=connect,
                                              finiteCheck=False))
         self._box = box     # before setPath: setting the path asks for the shape
         self.setPath(path)
