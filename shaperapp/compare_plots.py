@@ -15,7 +15,7 @@ from PySide6.QtWidgets import QWidget
 from core.compare import Comparison
 
 from .image_export import painting_bytes, render_scene
-from .plot_axes import cache_axes, styled_plot_item
+from .plot_axes import cache_static, styled_plot_item
 
 # Okabe–Ito colours (distinguishable with colour-blindness) and six line styles
 COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
@@ -79,7 +79,7 @@ class ComparePlots(pg.GraphicsLayoutWidget):
         """Paint the plots into ``target`` of any painter, as vectors."""
         items = list(self._items.values())
         render_scene(self.scene(), self.ci.sceneBoundingRect(), painter, target, WHITE,
-                     lambda exporting: cache_axes(items, not exporting))
+                     lambda exporting: cache_static(items, not exporting))
 
     def svg(self, title: str) -> bytes:
         """The plots at their current size as an SVG document."""

@@ -16,7 +16,8 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPen
-from PySide6.QtWidgets import QGraphicsItem
+from PySide6.QtWidgets import QGraphicsItem, QGraphicsTextItem
+from pyqtgraph.graphicsItems.LegendItem import ItemSample
 
 from .style import TEXT
 
@@ -253,11 +254,18 @@ def unlink_hidden_axes(item: pg.PlotItem) -> None:
             axis.unlinkFromView()
 
 
-def cache_axes(items: Iterable[pg.PlotItem], on: bool) -> None:
-    """Axes draw grid and text from a QPicture, the slowest part of a repaint: cache
-    them as pixmaps, so moving the cursor or redrawing a curve only blits them.
-    Off while exporting: a scaled pixmap would blur."""
+def cache_static(items: Iterable[QGraphicsItem], on: bool) -> None:
+    """Draw the parts of a plot that rarely change from pixmaps: the axes (grid and tick
+    text from a QPicture, the slowest part of a repaint), the texts (titles, legend
+    labels, band labels: Qt lays out and shapes a text item at every paint) and the
+    legend samples (painted in Python). Moving the cursor or redrawing a curve then only
+    blits them. Off while exporting: a scaled pixmap would blur, and vector output must
+    get vectors. ``items`` and all their descendants are visited."""
     mode = QGraphicsItem.CacheMode.DeviceCoordinateCache if on else QGraphicsItem.CacheMode.NoCache
-    for item in items:
-        for side in ("left", "bottom"):
-            item.getAxis(side).setCacheMode(mode)
+    todo = list(items)
+    while todo:
+        item = todo.pop()
+        if isinstance(item, (pg.AxisItem, ItemSample)) or type(item) is QGraphicsTextItem:
+            if item.cacheMode() != mode:
+                item.setCacheMode(mode)
+        todo.extend(item.childItems())

@@ -322,7 +322,9 @@ class PlotSlots:
                 if dot.isVisible()]
 
     # ---- bands --------------------------------------------------------------
-    def set_bands(self, bands: list[Band], labelled: bool) -> None:
+    def set_bands(self, bands: list[Band], labelled: bool) -> bool:
+        """Shaded spans (and their labels); True when new items were made for them."""
+        added = len(self._regions) < len(bands)
         while len(self._regions) < len(bands):
             region = BandRect(self.item.vb)
             region.setZValue(Z_BAND)
@@ -343,6 +345,7 @@ class PlotSlots:
                 if text.toPlainText() != band.label or text.color != (band.colour or TEXT):
                     text.setText(band.label, color=band.colour or TEXT)
         self._bands, self._labelled = list(bands), labelled
+        return added
 
     def bands(self) -> list[tuple[float, float]]:
         return [r.span() for r in self._regions if r.isVisible()]

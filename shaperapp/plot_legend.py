@@ -92,13 +92,13 @@ class GroupLegend:
         return self._title.text if self._title.isVisible() else ""
 
     def set_entries(self, entries: list[tuple[str, str, QColor, float]], keys: list[LegendKey],
-                    hidden: set[str]) -> None:
+                    hidden: set[str]) -> bool:
         """Curve entries (label, text shown, colour, pen width) then keys; rebuilt only when
-        they change."""
+        they change (then True: the legend has new items)."""
         signature = (tuple((label, text, colour.rgba(), width) for label, text, colour, width in entries),
                      tuple(keys))
         if signature == self._signature:
-            return
+            return False
         self._signature = signature
         self._legend.clear()
         self._labels.clear()
@@ -117,6 +117,7 @@ class GroupLegend:
             self._legend.addItem(sample, key.label)
         self._columns = 0
         self.fit_width(self._width)
+        return True
 
     def names(self) -> list[str]:
         """The entries' labels (the curves' full labels, then the keys)."""

@@ -29,7 +29,7 @@ from PySide6.QtWidgets import (QGraphicsView, QHBoxLayout, QLabel, QMenu, QSizeP
 
 from .image_export import export_scene, render_scene
 from .model import DesignModel
-from .plot_axes import cache_axes, styled_plot_item
+from .plot_axes import cache_static, styled_plot_item
 from .plot_curves import LEGEND_WIDTH, Band, Curve, PlotSlots, finite_range
 from .plot_legend import GroupLegend, LegendKey
 from .style import TEXT, fmt
@@ -107,7 +107,7 @@ class PlotStack(QWidget):
             plot.item.vb.sigFitRequested.connect(self.fit)
             plot.item.vb.menu_handler = self._show_menu
         master.vb.sigXRangeChanged.connect(self._fit_y)
-        cache_axes([p.item for p in self._plots.values()], True)
+        self._cache_static(True)
 
         self.fit_action = QAction(self)
         self.fit_action.triggered.connect(self.fit)
@@ -203,8 +203,9 @@ class PlotStack(QWidget):
         for plot in self._plots.values():
             plot.draw(plot.series.curves(model), self._hidden)
         bands, first = source.bands(), self._series[0].key
+        added = False                       # new items, to be drawn from pixmaps too
         for key, plot in self._plots.items():
-            plot.set_bands(bands, labelled=key == first)
+            added |= plot.set_bands(bands, labelled=key == first)
         keys, titles, units = source.legend_keys(), source.group_titles(), source.legend_units()
         for group, legend in self._legends.items():
             entries: dict[str, tuple[str, str, QColor, float]] = {}
@@ -215,7 +216,7 @@ class PlotStack(QWidget):
                             entries[curve.label] = (curve.label, curve.short or curve.label,
                                                     curve.colour, max(curve.width, LEGEND_WIDTH))
             self._hidden &= set(entries) | {c.label for p in self._plots.values() for c in p.curves}
-            legend.set_entries(list(entries.values()), keys.get(group, []), self._hidden)
+            added |= legend.set_entries(list(entries.values()), keys.get(group, []), self._hidden)
             legend.set_title(titles.get(group, ""))
             legend.set_unit(units.get(group, ""))
         x_title, lo, hi, degrees = source.x_axis()
@@ -226,6 +227,8 @@ class PlotStack(QWidget):
                 plot.item.setLabel("bottom", x_title, color=TEXT.name(), **{"font-size": "9pt"})
             self._show_x_axis()
         self._x_range = (lo, hi)
+        if added:
+            self._cache_static(True)
         self._fit_legends()
         self.fit(settle=True)
         self._cursor_stale = True
@@ -427,4 +430,7 @@ class PlotStack(QWidget):
                      WHITE, self._caching_off)
 
     def _caching_off(self, exporting: bool) -> None:
-        cache_axes([p.item for p in self._plots.values()], not exporting)
+        self._cache_static(not exporting)
+
+    def _cache_static(self, on: bool) -> None:
+        cache_static([p.item for p in self._plots.values()] + [g.head for g in self._legends.values()], on)
