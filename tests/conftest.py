@@ -12,6 +12,26 @@ from shaperapp.model import DesignModel  # noqa: E402
 from shaperapp.scheme import SchemeWidget  # noqa: E402
 
 from gui_helpers import main_window, shown  # noqa: E402
+from modal_watchdog import ModalWatchdog  # noqa: E402
+
+# A modal dialog open this long in a test is one nobody will answer (see modal_watchdog).
+MODAL_LIMIT_S = 60.0
+
+
+@pytest.fixture(autouse=True)
+def unanswered_modals_fail(request) -> Iterator[None]:
+    """In every test that uses Qt: a modal dialog left unanswered is closed after
+    MODAL_LIMIT_S and fails the test, naming it, instead of hanging the suite."""
+    if not {"qtbot", "qapp"} & set(request.fixturenames):
+        yield
+        return
+    request.getfixturevalue("qapp")
+    watchdog = ModalWatchdog(MODAL_LIMIT_S)
+    watchdog.start()
+    yield
+    watchdog.stop()
+    if watchdog.closed:
+        pytest.fail("unanswered modal dialog, closed by the watchdog: " + "; ".join(watchdog.closed))
 
 
 @pytest.fixture
