@@ -3,6 +3,7 @@
 The update benchmark drives the whole window (form → model → scheme, metrics,
 plots, forces) with 4 speeds at 1°, the case the GUI issue names.
 """
+import os
 import subprocess
 import sys
 
@@ -75,13 +76,15 @@ def test_animation_frame_whole_window(benchmark, window):
     # the shared machine's load varies.
 
 
-def _start():
+def _start(home):
+    # settings and library in ``home``: never the user's own, never an earlier run's
+    env = dict(os.environ, XDG_CONFIG_HOME=str(home), XDG_DATA_HOME=str(home))
     out = subprocess.run([sys.executable, "-m", "shaperapp.app", "--lang", "en", "--quit-after-show"],
-                         capture_output=True, text=True, timeout=120)
+                         capture_output=True, text=True, timeout=120, env=env)
     assert out.returncode == 0, out.stderr
     return out.stdout
 
 
-def test_startup_to_first_window(benchmark):
-    stdout = benchmark.pedantic(_start, rounds=5, iterations=1)
+def test_startup_to_first_window(benchmark, tmp_path):
+    stdout = benchmark.pedantic(_start, args=(tmp_path,), rounds=5, iterations=1)
     assert "first window shown" in stdout

@@ -1,7 +1,18 @@
-"""Every test runs headless: Qt draws offscreen, so no screen is needed."""
+"""Every test runs headless (Qt draws offscreen, so no screen is needed) and away from
+the user's own files."""
+import atexit
 import os
+import shutil
+import tempfile
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+# The per-user library (platformdirs' data folder) and the window's settings (Qt's
+# config folder) go to a private folder for this run, children included: a test must
+# neither change a user's files nor depend on what an earlier run left there.
+_PRIVATE_HOME = tempfile.mkdtemp(prefix="shaper-tests-")
+atexit.register(shutil.rmtree, _PRIVATE_HOME, True)
+for _name in ("XDG_DATA_HOME", "XDG_CONFIG_HOME"):
+    os.environ[_name] = os.path.join(_PRIVATE_HOME, _name.lower())
 
 from typing import Iterator  # noqa: E402
 
