@@ -14,7 +14,7 @@ import os
 import shiboken6
 from PySide6.QtCore import QEvent, QSettings, QTimer
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
-from PySide6.QtWidgets import (QApplication, QInputDialog, QMainWindow, QMessageBox, QTabWidget,
+from PySide6.QtWidgets import (QInputDialog, QMainWindow, QMessageBox, QTabWidget,
                                QVBoxLayout, QWidget)
 
 from . import file_dialogs, i18n, window_state

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
+from PySide6.QtCore import QEvent, QRectF, QTimer
 from PySide6.QtGui import QAction, QPainter
 from PySide6.QtWidgets import (QCheckBox, QGraphicsView, QHBoxLayout, QMenu, QToolButton,
                                QVBoxLayout, QWidget)

@@ -6,8 +6,6 @@ import numpy as np
 
 from core.geometry import synthesize
 from core.kinematics import solve
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
 
 
 def test_opens_on_default_design(window):

@@ -2,7 +2,6 @@
 import math
 import xml.etree.ElementTree as ET
 
-import numpy as np
 import pytest
 from PySide6.QtCore import QLineF, QRectF
 from PySide6.QtGui import QImage, QPainter
