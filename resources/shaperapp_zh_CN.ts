@@ -2522,8 +2522,16 @@
         <translation>本设计与“比较”选项卡中的设计（%1）在 %2 r/min 下比较。</translation>
     </message>
     <message>
-        <source>PDF document (*.pdf);;HTML page (*.html)</source>
-        <translation>PDF 文档 (*.pdf);;HTML 网页 (*.html)</translation>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>HTML page (*.html)</source>
+        <translation>HTML 网页 (*.html)</translation>
+    </message>
+    <message>
+        <source>A report is written as PDF (.pdf) or HTML (.html, .htm); %1 is neither. Nothing was written.</source>
+        <translation>设计说明书只能保存为 PDF（.pdf）或 HTML（.html、.htm）；%1 两者都不是。未写入任何文件。</translation>
     </message>
     <message>
         <source>No font with Chinese characters is installed. Install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>

@@ -73,3 +73,31 @@ def test_dialog_includes_the_compare_tabs_designs(window, qtbot, tmp_path):
     qtbot.addWidget(dialog)
     assert not dialog.include_comparison.isEnabled()          # six others: one too many
     assert "at most 5" in dialog.include_comparison.toolTip()
+
+
+def test_export_refuses_a_name_of_another_type(window, tmp_path):
+    """A report named .docx was written as a PDF under that name: refused before anything
+    is built, nothing written."""
+    import pytest
+    with pytest.raises(ValueError, match="must end in .pdf, .html or .htm"):
+        export_report(window.model, str(tmp_path / "r.docx"), "en")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_dialog_adds_the_chosen_type_and_refuses_another(window, qtbot, tmp_path, monkeypatch):
+    from PySide6.QtWidgets import QDialog, QFileDialog, QMessageBox
+    from shaperapp.report import dialog as report_dialog
+    monkeypatch.setattr(ReportOptionsDialog, "exec", lambda self: QDialog.DialogCode.Accepted)
+    answers = []
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: answers.pop(0))
+    warnings = []
+    monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: warnings.append(a[2]))
+    answers.append((str(tmp_path / "typed"), "PDF document (*.pdf)"))
+    assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)) == str(tmp_path / "typed.pdf")
+    assert (tmp_path / "typed.pdf").read_bytes().startswith(b"%PDF")
+    answers.append((str(tmp_path / "page"), "HTML page (*.html)"))
+    assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)).endswith("page.html")
+    answers.append((str(tmp_path / "r.txt"), "PDF document (*.pdf)"))
+    assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)) == ""
+    assert len(warnings) == 1 and "r.txt" in warnings[0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["page.html", "typed.pdf"]

@@ -2,6 +2,7 @@
 import json
 import re
 import shutil
+import stat
 import subprocess
 import unicodedata
 
@@ -129,6 +130,41 @@ def test_bad_input_is_one_line(tmp_path, words, option):
 def test_missing_output_folder(tmp_path):
     result = shaper("report", *DESIGN, "-o", tmp_path / "nope" / "r.pdf")
     assert result.returncode == 2 and "--output" in result.stderr
+
+
+@pytest.mark.parametrize("name, extra, reason", [
+    ("r.docx", [], "must end in .pdf, .html or .htm"),     # was a PDF named r.docx
+    ("report", [], "must end in .pdf, .html or .htm"),
+    ("", [], "must end in .pdf, .html or .htm"),           # was an internal error
+    ("r.pdf", ["--html"], "names a PDF"),
+    ("folder.pdf", [], "it is a folder"),                  # was an internal error, exit 1
+    ("sub/", [], "must end in"),
+])
+def test_bad_output_name_is_one_line_and_writes_nothing(tmp_path, name, extra, reason):
+    (tmp_path / "folder.pdf").mkdir()
+    (tmp_path / "sub").mkdir()
+    before = sorted(p.name for p in tmp_path.rglob("*"))
+    target = str(tmp_path / name) if name else ""
+    result = shaper("report", *DESIGN, *extra, "-o", target)
+    assert result.returncode == 2, result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("shaper: error: --output: ") and reason in lines[0]
+    assert sorted(p.name for p in tmp_path.rglob("*")) == before
+
+
+def test_the_name_chooses_the_type_and_a_save_keeps_the_files_mode(tmp_path):
+    """R.HTM is HTML without --html (it was a PDF under an HTML name); an existing report
+    is replaced whole (core.atomic) and keeps its permission bits, with no temp left."""
+    page = tmp_path / "R.HTM"
+    page.write_text("old")
+    page.chmod(0o640)
+    result = shaper("report", *DESIGN, "-o", page)
+    assert result.returncode == 0, result.stderr
+    assert "(HTML)" in result.stdout
+    text = page.read_text(encoding="utf-8")
+    assert text.lstrip().lower().startswith("<!doctype html") and "<svg" in text
+    assert stat.S_IMODE(page.stat().st_mode) == 0o640
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["R.HTM"]
 
 
 def test_no_chinese_font_names_the_package(qtbot, monkeypatch, tmp_path, capsys):

@@ -8,13 +8,14 @@ from __future__ import annotations
 
 import argparse
 import datetime
+import errno
 import os
 import sys
-import tempfile
 from pathlib import Path
 
 from core.cli.cmd_library import library_failure, load_candidates
 from core.cli.cmd_table import masses_or_none
+from core.atomic import atomic_write
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
                              number, number_list, rpms_from_args, spec_from_args)
 from core.cli.output import OutputError
@@ -43,7 +44,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     add_design_options(parser)
     add_speed_options(parser)
     add_load_options(parser, required=False)
-    parser.add_argument("-o", "--output", required=True, metavar="FILE", help="the report file to write")
+    parser.add_argument("-o", "--output", required=True, metavar="FILE",
+                        help="the report file to write: .pdf for a PDF, .html or .htm for HTML")
     parser.add_argument("--lang", choices=("en", "zh"), default="en", help="report language (default en)")
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
                         help="number of equally spaced crank positions in the table (default 12)")
@@ -52,7 +54,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
                              "mid working stroke and mid return stroke)")
     parser.add_argument("--title", metavar="TEXT",
                         help="design name for the title block (default: the design file's name)")
-    parser.add_argument("--html", action="store_true", help="write HTML instead of PDF")
+    parser.add_argument("--html", action="store_true",
+                        help="insist on HTML (the name must end in .html or .htm)")
     parser.add_argument("--compare", nargs="+", default=[], metavar="NAME",
                         help="add a comparison section: the design beside these library entries "
                              "at the first speed (numbers as 'shaper library compare')")
@@ -135,8 +138,14 @@ def _run(args: argparse.Namespace) -> int:
         diagrams = (float(values[0]), float(values[1]))
     others = comparison_candidates(args)
     target = Path(args.output)
+    try:
+        kind = report_kind(args.output, html=args.html)
+    except ValueError as exc:
+        raise OutputError(f"--output: {exc}") from None
     if not target.parent.is_dir():
         raise OutputError(f"--output: cannot write {target}: no such directory")
+    if target.is_dir():
+        raise OutputError(f"--output: cannot write {target}: it is a folder")
 
     _ensure_headless()
     app = _application()
@@ -152,34 +161,43 @@ def _run(args: argparse.Namespace) -> int:
     name = design_name(args) or app.translate("Report", "Untitled design")
     report = build(spec, rpms, masses, name, datetime.date.today().isoformat(), language,
                    Options(count, diagrams, tuple(others)))
-    pages = write_report(report, str(target), html=args.html)
-    what = "HTML" if args.html else f"PDF, {pages} pages"
+    try:
+        pages = write_report(report, args.output)
+    except OSError as exc:      # a WriteError: names the path and a plain reason
+        raise OutputError(f"--output: {exc}") from None
+    what = "HTML" if kind == "html" else f"PDF, {pages} pages"
     print(f"wrote {target} ({what})")
     return 0
 
 
-def write_report(report, path: str, html: bool = False) -> int:
-    """Write atomically (a temporary file in the target's folder, then renamed); returns the
-    PDF page count (0 for HTML). OSError names the path."""
+# The file name says what is written: a report is never a PDF under another type's name.
+REPORT_TYPES = {".pdf": "pdf", ".html": "html", ".htm": "html"}
+
+
+def report_kind(path: str, html: bool = False) -> str:
+    """"pdf" or "html", from the name's suffix (any case). ValueError with a plain reason
+    for another or no suffix, or a PDF name with ``html`` (the CLI's --html) set."""
+    suffix = Path(path).suffix.lower()
+    kind = REPORT_TYPES.get(suffix)
+    if kind is None:
+        raise ValueError(f"the file name must end in .pdf, .html or .htm (got {Path(path).name!r})")
+    if html and kind != "html":
+        raise ValueError(f"--html writes HTML, but {Path(path).name!r} names a PDF; "
+                         "name the file .html or leave out --html")
+    return kind
+
+
+def write_report(report, path: str) -> int:
+    """Write ``report`` as the type its name says (:func:`report_kind`), atomically: the
+    old file or the whole new one (``core.atomic``). Returns the PDF's page count (0 for
+    HTML). ValueError for a name of another type; OSError (a WriteError) names the path."""
     from .html import report_html
-    from .pdf import write_pdf
-    target = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
-    os.close(fd)
-    try:
-        if html:
-            Path(tmp).write_text(report_html(report), encoding="utf-8")
-            pages = 0
-        else:
-            pages = write_pdf(report, tmp)
-            if os.path.getsize(tmp) == 0:
-                raise OSError(f"could not write {target}")
-        mask = os.umask(0)
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)              # mkstemp's 0600 is not what a user expects
-        os.replace(tmp, target)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    from .pdf import pdf_bytes
+    if report_kind(path) == "html":
+        atomic_write(path, report_html(report))
+        return 0
+    data, pages = pdf_bytes(report)
+    if not data:
+        raise OSError(errno.EIO, "the PDF writer produced nothing", path)
+    atomic_write(path, data)
     return pages

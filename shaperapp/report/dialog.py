@@ -20,7 +20,7 @@ from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
 from ..model import DesignModel
-from .command import write_report
+from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles
 from .fonts import MissingFontError
 
@@ -84,7 +84,9 @@ def other_designs(model: DesignModel) -> list[Candidate]:
 
 
 def export_report(model: DesignModel, path: str, language: str, options: Options = Options()) -> int:
-    """Build the report of the design on screen and write it (PDF, or HTML for .html/.htm)."""
+    """Build the report of the design on screen and write it (PDF, or HTML for .html/.htm);
+    ValueError for a name of another type, before anything is built."""
+    report_kind(path)
     design = model.design
     masses = masses_for_design(design, model.masses)
     name = os.path.splitext(os.path.basename(model.path))[0] if model.path else \
@@ -93,7 +95,7 @@ def export_report(model: DesignModel, path: str, language: str, options: Options
         name = name[: -len(".shaper")]
     report = build(model.valid_spec, list(model.rpms), masses, name,
                    datetime.date.today().isoformat(), language, options)
-    return write_report(report, path, html=path.lower().endswith((".html", ".htm")))
+    return write_report(report, path)
 
 
 def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str) -> str:
@@ -102,9 +104,21 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
     if dialog.exec() != QDialog.DialogCode.Accepted:
         return ""
     start = os.path.join(start_dir, "report.pdf")
-    path, _ = QFileDialog.getSaveFileName(parent, translate("ReportOptionsDialog", "Export design report"), start,
-                                          translate("ReportOptionsDialog", "PDF document (*.pdf);;HTML page (*.html)"))
+    pdf_filter = translate("ReportOptionsDialog", "PDF document (*.pdf)")
+    path, chosen = QFileDialog.getSaveFileName(
+        parent, translate("ReportOptionsDialog", "Export design report"), start,
+        pdf_filter + ";;" + translate("ReportOptionsDialog", "HTML page (*.html)"))
     if not path:
+        return ""
+    if not os.path.splitext(os.path.basename(path))[1]:      # typed without a type
+        path += ".pdf" if chosen == pdf_filter else ".html"
+    try:
+        report_kind(path)
+    except ValueError:
+        QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"),
+                            translate("ReportOptionsDialog", "A report is written as PDF (.pdf) or HTML "
+                                      "(.html, .htm); %1 is neither. Nothing was written.")
+                            .replace("%1", os.path.basename(path)))
         return ""
     QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
     try:

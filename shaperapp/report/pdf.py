@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable
 
-from PySide6.QtCore import QCoreApplication, QMarginsF, QPointF, QRectF, Qt
+from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QMarginsF, QPointF, QRectF, Qt
 from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen, QTextDocument)
 
@@ -248,9 +248,18 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
     return pages
 
 
-def write_pdf(report: Report, path: str) -> int:
-    """Write ``report`` to ``path``; returns the page count."""
-    writer = QPdfWriter(path)
+def pdf_bytes(report: Report) -> tuple[bytes, int]:
+    """The PDF of ``report`` in memory, and its page count; the caller writes it
+    (atomically, so a failed save never leaves half a report)."""
+    data = QByteArray()
+    buffer = QBuffer(data)
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    pages = _paint_pdf(report, QPdfWriter(buffer))
+    buffer.close()
+    return bytes(data.data()), pages
+
+
+def _paint_pdf(report: Report, writer: QPdfWriter) -> int:
     writer.setResolution(RESOLUTION)
     writer.setPageLayout(QPageLayout(QPageSize(QPageSize.PageSizeId.A4), QPageLayout.Orientation.Portrait,
                                      QMarginsF(0, 0, 0, 0)))
