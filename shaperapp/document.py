@@ -21,6 +21,7 @@ from .messages import describe
 from .model import DEFAULT_RPMS, DEFAULT_STEP, DesignModel
 
 MAX_RECENT = 8
+MAX_PATH_CHARS = 4096      # longer is not a path any system opens (PATH_MAX)
 
 
 class Document(QObject):
@@ -93,10 +94,16 @@ class Document(QObject):
 
     # ---- recent files ----------------------------------------------------
     def recent_files(self) -> list[str]:
+        """The remembered paths, newest first. The settings file is the user's to edit
+        (or damage): anything but a list of plain paths is ignored, never iterated (a
+        QSize there made the menu loop forever at start-up)."""
         value = self._settings.value("recentFiles", [])
         if isinstance(value, str):
             value = [value]
-        return [p for p in (value or []) if isinstance(p, str)]
+        if not isinstance(value, (list, tuple)):
+            return []
+        return [p for p in value[:MAX_RECENT]
+                if isinstance(p, str) and p and len(p) <= MAX_PATH_CHARS and "\0" not in p]
 
     def _add_recent(self, path: str) -> None:
         path = os.path.abspath(path)

@@ -303,7 +303,7 @@ class MainWindow(QMainWindow):
         if not self.document.confirm_valid(self, saving=False):
             return
         from .report.dialog import export_report_dialog   # builds offscreen views: load on demand
-        path = export_report_dialog(self.model, self, str(self.settings.value("language", "en")),
+        path = export_report_dialog(self.model, self, self._language,
                                     self.document.last_dir())
         if path:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
