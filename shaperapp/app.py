@@ -63,9 +63,9 @@ def main(argv: list[str] | None = None) -> int:
     model = DesignModel()
     window = MainWindow(model, settings)
     window.set_language(language if language in dict(i18n.LANGUAGES) else "en")
-    if args.file:
-        window.document.open_path(args.file)
     window.show()
+    if args.file:      # after show: a file that cannot be opened is reported over the window
+        window.document.open_path(args.file)
     if args.quit_after_show or args.screenshot:
         app.processEvents()
         print(f"first window shown after {(time.perf_counter() - START) * 1000:.0f} ms", flush=True)
