@@ -18,6 +18,12 @@ from .io import finite_or_none
 from .metrics import analyze
 from .spec import Spec
 
+# Which computation of the figures this program does. Raise it whenever a figure below
+# comes out differently (a corrected formula, a finer peak search): a library keeps each
+# entry's figures with the version that computed them, so entries from an older version
+# are found and recomputed from their stored designs (``Library.refresh_figures``).
+FIGURES_VERSION = 1
+
 # Speed-independent figures: (key, unit, short alias, better) — better is "lower",
 # "higher" or None when no value is better in itself (a requirement such as K or H).
 DESIGN_FIGURES = (

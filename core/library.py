@@ -14,25 +14,36 @@ from __future__ import annotations
 
 import json
 import os
-import re
 import sqlite3
 from dataclasses import dataclass, fields
 from pathlib import Path
-from typing import Any, Iterable, Sequence
+from typing import Any, Callable, Iterable, Sequence
 
-from .figures import DESIGN_KEYS, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
+from .errors import DesignError, FileFormatError
+from .figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
 from .io import atomic_write, design_document, masses_to_dict, parse_design
+from .library_names import check_name, check_tags, unique_name
 from .library_query import Condition, condition_sql, parse_filter, search_sql, sort_sql
 from .library_store import (LibraryError, backup_target, connect, default_path, resolve_path,
                             snapshot, sqlite_error, transaction, utc_now)
 
-MAX_NAME = 200
-MAX_TAG = 64
-_CONTROL = re.compile(r"[\x00-\x1f\x7f]")
 _PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
-_ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS
+_ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS \
+    + ("figures_version",)
 _SPEED_COLUMNS = ("rpm",) + SPEED_KEYS
 LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS       # the columns of :meth:`Library.query_rows`
+
+
+REFRESH_BATCH = 64      # entries written per transaction by ``refresh_figures``
+
+
+@dataclass(frozen=True)
+class RefreshReport:
+    """What :meth:`Library.refresh_figures` did, by entry name."""
+
+    updated: tuple[str, ...]
+    failed: tuple[tuple[str, str], ...]     # (name, why its design cannot be computed)
+    skipped: tuple[str, ...]                # removed or re-saved by another program meanwhile
 
 
 @dataclass(frozen=True)
@@ -46,6 +57,12 @@ class Entry:
     modified: str         # UTC ISO 8601
     text: str             # the design document as JSON, the text of a design file
     figures: Figures
+    figures_version: int = FIGURES_VERSION   # the computation the figures come from
+
+    @property
+    def figures_current(self) -> bool:
+        """False when an older program computed the figures (see ``refresh_figures``)."""
+        return self.figures_version >= FIGURES_VERSION
 
     def document(self) -> dict[str, Any]:
         """The validated design (keys of ``core.io.load_design``); FileFormatError if bad."""
@@ -65,42 +82,6 @@ def document_text(loaded: dict[str, Any]) -> str:
         extra["forces"] = masses_to_dict(masses)
     doc = design_document(loaded["spec"], loaded["rpm"], loaded["step_deg"], extra)
     return json.dumps(doc, indent=2, ensure_ascii=False)
-
-
-def check_name(name: object) -> str:
-    """A usable entry name (stripped), or LibraryError('name')."""
-    if not isinstance(name, str) or not name.strip():
-        raise LibraryError("name", "a design name must not be empty")
-    name = name.strip()
-    if len(name) > MAX_NAME or _CONTROL.search(name):
-        raise LibraryError("name", f"a design name must be at most {MAX_NAME} characters, "
-                           "without control characters")
-    return name
-
-
-def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
-    """Stripped, de-duplicated, sorted tags; LibraryError('tag') for a bad one."""
-    out = set()
-    for tag in tags:
-        tag = str(tag).strip()
-        if not tag:
-            continue
-        if len(tag) > MAX_TAG or "," in tag or _CONTROL.search(tag):
-            raise LibraryError("tag", f"a tag must be at most {MAX_TAG} characters, without "
-                               f"commas or control characters (got {tag[:80]!r})")
-        out.add(tag)
-    return tuple(sorted(out))
-
-
-def unique_name(base: str, taken: Iterable[str]) -> str:
-    """``base``, or ``base (2)``, ``base (3)``… whichever is not in ``taken``."""
-    taken = set(taken)
-    if base not in taken:
-        return base
-    n = 2
-    while f"{base} ({n})" in taken:
-        n += 1
-    return f"{base} ({n})"
 
 
 class Library:
@@ -158,7 +139,7 @@ class Library:
                            speeds=speeds)
             return Entry(name=values["name"], notes=values["notes"], tags=tags,
                          created=values["created"], modified=values["modified"], text=row[-1],
-                         figures=figs)
+                         figures=figs, figures_version=values["figures_version"])
         return self._read(work)
 
     def load(self, name: str) -> dict[str, Any]:
@@ -232,7 +213,8 @@ class Library:
         now = utc_now()
         figs = figures(loaded["spec"], loaded["rpm"], loaded.get("masses"))
         return Entry(name=check_name(name), notes=str(notes), tags=check_tags(tags), created=now,
-                     modified=now, text=document_text(loaded), figures=figs)
+                     modified=now, text=document_text(loaded), figures=figs,
+                     figures_version=FIGURES_VERSION)
 
     def add_entries(self, entries: Sequence[Entry]) -> None:
         """Store ready entries in one transaction, all or none (names must be free)."""
@@ -309,6 +291,60 @@ class Library:
         target = backup_target(self.path) if target is None else target
         return snapshot(self._conn, target, self.path)
 
+    # ---- figures an older program computed -------------------------------------------
+    def stale_names(self) -> list[str]:
+        """The entries whose figures an older computation made (below ``FIGURES_VERSION``)."""
+        return self._read(lambda c: [r[0] for r in c.execute(
+            "SELECT name FROM entries WHERE figures_version < ? ORDER BY name", (FIGURES_VERSION,))])
+
+    def refresh_figures(self, names: Iterable[str] | None = None,
+                        progress: Callable[[int, int], None] | None = None) -> RefreshReport:
+        """Recompute the figures of ``names`` (default: :meth:`stale_names`) from their
+        stored designs and store them as of this ``FIGURES_VERSION``; name, notes, tags,
+        times and the document stay as they are.
+
+        The figures are computed outside any transaction, then written in batches of
+        ``REFRESH_BATCH`` entries, each one transaction, so a refresh killed midway keeps
+        every batch it committed and leaves the rest stale, never half-written. An entry
+        another program removed or re-saved meanwhile is skipped (a re-save stores fresh
+        figures itself); one whose design can no longer be computed is left as it was
+        and reported. ``progress(done, total)`` is called after each entry.
+        """
+        todo = self.stale_names() if names is None else list(dict.fromkeys(names))
+        updated: list[str] = []
+        failed: list[tuple[str, str]] = []
+        skipped: list[str] = []
+        for start in range(0, len(todo), REFRESH_BATCH):
+            batch = []
+            for i, name in enumerate(todo[start:start + REFRESH_BATCH], start + 1):
+                try:
+                    entry = self.get(name)
+                    doc = entry.document()
+                    batch.append((entry, figures(doc["spec"], doc["rpm"], doc.get("masses"))))
+                except LibraryError as exc:
+                    if exc.kind != "missing":
+                        raise
+                    skipped.append(name)
+                except (DesignError, FileFormatError, ArithmeticError, ValueError, RuntimeError) as exc:
+                    failed.append((name, str(exc)))
+                if progress is not None:
+                    progress(i, len(todo))
+            with transaction(self._conn, self.path) as c:
+                for entry, figs in batch:
+                    row = c.execute("SELECT e.id FROM entries e JOIN documents d ON d.entry_id = e.id "
+                                    "WHERE e.name = ? AND d.text = ?", (entry.name, entry.text)).fetchone()
+                    if row is None:
+                        skipped.append(entry.name)
+                        continue
+                    values = {"figures_version": FIGURES_VERSION, **figs.design_values()}
+                    keys = [k for k in _ENTRY_COLUMNS if k in values]
+                    c.execute(f"UPDATE entries SET {', '.join(f'{k} = ?' for k in keys)} WHERE id = ?",
+                              [values[k] for k in keys] + [row[0]])
+                    c.execute("DELETE FROM speeds WHERE entry_id = ?", (row[0],))
+                    self._insert_speeds(c, row[0], figs.speeds)
+                    updated.append(entry.name)
+        return RefreshReport(tuple(updated), tuple(failed), tuple(skipped))
+
     # ---- internals ------------------------------------------------------------------
     def _exists(self, name: str) -> LibraryError:
         return LibraryError("exists", f"a design named {name!r} is already in the library", self.path)
@@ -316,19 +352,23 @@ class Library:
     @staticmethod
     def _insert(c: sqlite3.Connection, entry: Entry) -> None:
         values = {"name": entry.name, "notes": entry.notes, "tags": ",".join(entry.tags),
-                  "created": entry.created,
-                  "modified": entry.modified, **entry.figures.design_values()}
+                  "created": entry.created, "modified": entry.modified,
+                  "figures_version": entry.figures_version, **entry.figures.design_values()}
         cursor = c.execute(f"INSERT INTO entries ({', '.join(_ENTRY_COLUMNS)}) VALUES "
                            f"({', '.join('?' * len(_ENTRY_COLUMNS))})",
                            [values[k] for k in _ENTRY_COLUMNS])
         entry_id = cursor.lastrowid
         c.execute("INSERT INTO documents (entry_id, text) VALUES (?, ?)", (entry_id, entry.text))
+        Library._insert_speeds(c, entry_id, entry.figures.speeds)
+        c.executemany("INSERT INTO tags (entry_id, tag) VALUES (?, ?)",
+                      [(entry_id, tag) for tag in entry.tags])
+
+    @staticmethod
+    def _insert_speeds(c: sqlite3.Connection, entry_id: int, speeds: Sequence[SpeedFigures]) -> None:
         c.executemany(f"INSERT INTO speeds (entry_id, pos, {', '.join(_SPEED_COLUMNS)}) VALUES "
                       f"(?, ?, {', '.join('?' * len(_SPEED_COLUMNS))})",
                       [(entry_id, pos, *(getattr(s, k) for k in _SPEED_COLUMNS))
-                       for pos, s in enumerate(_distinct_speeds(entry.figures.speeds))])
-        c.executemany("INSERT INTO tags (entry_id, tag) VALUES (?, ?)",
-                      [(entry_id, tag) for tag in entry.tags])
+                       for pos, s in enumerate(_distinct_speeds(speeds))])
 
 
 def _distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:
@@ -338,18 +378,3 @@ def _distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:
         if not any(abs(s.rpm - t.rpm) <= 1e-9 for t in out):
             out.append(s)
     return out
-
-
-def file_stem(path: str | os.PathLike) -> str:
-    """The entry name a design file gets on import: its name without ``.shaper.json``/``.json``."""
-    name = Path(path).name
-    for suffix in (".shaper.json", ".json"):
-        if name.lower().endswith(suffix) and len(name) > len(suffix):
-            return name[:-len(suffix)]
-    return name
-
-
-def safe_file_name(name: str) -> str:
-    """An entry name usable as a file name on every system (for exporting a whole library)."""
-    cleaned = re.sub(r'[<>:"/\\|?*\x00-\x1f\x7f]', "_", name).strip(" .")
-    return (cleaned or "design")[:120]

@@ -11,7 +11,8 @@ from typing import Any, Iterable
 
 from .errors import FileFormatError
 from .io import load_design
-from .library import Entry, Library, file_stem, safe_file_name, unique_name
+from .library import Entry, Library
+from .library_names import file_stem, safe_file_name, unique_name
 
 DESIGN_SUFFIX = ".shaper.json"
 

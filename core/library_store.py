@@ -117,10 +117,17 @@ def _create_v1(conn: sqlite3.Connection) -> None:
             conn.execute(statement)
 
 
+def _add_figures_version(conn: sqlite3.Connection) -> None:
+    """Schema 2: which computation of the figures (``core.figures.FIGURES_VERSION``) each
+    entry's stored figures come from, so that figures an older program computed can be
+    found and recomputed. Schema 1 was written by figures version 1."""
+    conn.execute("ALTER TABLE entries ADD COLUMN figures_version INTEGER NOT NULL DEFAULT 1")
+
+
 # MIGRATIONS[i] turns a library at schema i into schema i + 1, inside the caller's
 # transaction (SQLite's DDL is transactional, so a failed step leaves schema i).
 # Schema 0 is an empty database. Append a function here to change the schema.
-MIGRATIONS: list[Callable[[sqlite3.Connection], None]] = [_create_v1]
+MIGRATIONS: list[Callable[[sqlite3.Connection], None]] = [_create_v1, _add_figures_version]
 
 
 def schema_version() -> int:

@@ -2626,6 +2626,41 @@
     </message>
 </context>
 <context>
+    <name>StaleFiguresBar</name>
+    <message>
+        <source>Recomputing the figures…</source>
+        <translation>正在重新计算指标…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Design library</source>
+        <translation>设计库</translation>
+    </message>
+    <message>
+        <source>Could not recompute the figures: %1</source>
+        <translation>无法重新计算指标：%1</translation>
+    </message>
+    <message>
+        <source>These designs can no longer be computed; their figures were left as they were:</source>
+        <translation>以下设计已无法计算，其指标保持不变：</translation>
+    </message>
+    <message>
+        <source>The figures of %1 design(s) in this library were computed by an older version of Shaper Designer.</source>
+        <translation>本设计库中有 %1 个设计的指标由旧版本的牛头刨床机构设计计算。</translation>
+    </message>
+    <message>
+        <source>Recompute</source>
+        <translation>重新计算</translation>
+    </message>
+    <message>
+        <source>Recompute their figures from the stored designs</source>
+        <translation>按保存的设计重新计算其指标</translation>
+    </message>
+</context>
+<context>
     <name>app</name>
     <message>
         <source>An internal error occurred; the design on screen is unchanged. Details were written to %1.</source>

@@ -18,7 +18,7 @@ from core.compare import (MAX_DESIGNS, Candidate, Comparison, compare, differenc
                           table_csv)
 from core.errors import DesignError, FileFormatError
 from core.io import atomic_write, load_design
-from core.library import file_stem, unique_name
+from core.library_names import file_stem, unique_name
 
 from .compare_plots import COLOURS, ComparePlots
 from .figure_labels import figure_label, figure_tip, format_figure

@@ -19,7 +19,8 @@ from PySide6.QtGui import QUndoCommand, QUndoStack
 from core.compare import Candidate
 from core.errors import DesignError, FileFormatError
 from core.figures import figures
-from core.library import Entry, Library, check_name, unique_name
+from core.library import Entry, Library
+from core.library_names import check_name, unique_name
 from core.library_files import export_entries, import_entries, read_design_files
 from core.library_store import LibraryError, backup_copy, utc_now
 

@@ -21,6 +21,7 @@ from core.library_store import LibraryError, resolve_path
 
 from .library_actions import LibraryActions
 from .library_dialogs import SaveDialog, ask_refused_library
+from .library_stale import StaleFiguresBar
 from .library_table import LibraryTableModel
 from .model import DesignModel
 
@@ -53,6 +54,9 @@ class LibraryPane(QWidget):
         self.speed_box.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
         self.message_label = QLabel()
         self.message_label.setWordWrap(True)
+        self.stale_bar = StaleFiguresBar()
+        self.stale_bar.refreshed.connect(self._refresh)
+        self.stale_bar.failed.connect(self._show_failure)
         self.view = QTableView()
         self.view.setModel(self.table_model)
         self.view.setSortingEnabled(True)
@@ -98,6 +102,7 @@ class LibraryPane(QWidget):
         layout.addWidget(self.toolbar)
         layout.addLayout(query)
         layout.addWidget(self.message_label)
+        layout.addWidget(self.stale_bar)
         layout.addWidget(self.view, 1)
 
         self.search_edit.textChanged.connect(lambda text: self.table_model.set_query(search=text))
@@ -141,6 +146,7 @@ class LibraryPane(QWidget):
         self._version = library.data_version() if library is not None else -1
         self.path_label.setText(str(library.path) if library is not None else self.tr("No library is open."))
         self.path_label.setToolTip(self.path_label.text())
+        self.stale_bar.update_for(library)
         if library is not None:
             self._timer.start()
             if self._settings is not None and library.path != resolve_path(None):
@@ -161,12 +167,14 @@ class LibraryPane(QWidget):
         if version != self._version:
             self._version = version
             self.table_model.refresh()
+            self.stale_bar.update_for(library)
 
     def _refresh(self) -> None:
         selected = self.selected_names()
         self.table_model.refresh()
         if self.actions.library is not None:
             self._version = self.actions.library.data_version()
+        self.stale_bar.update_for(self.actions.library)
         self.select_names(selected)
 
     # ---- selection ------------------------------------------------------------------------------
@@ -274,7 +282,7 @@ class LibraryPane(QWidget):
         names = self.selected_names()
         if len(names) != 1:
             return
-        from core.library import safe_file_name
+        from core.library_names import safe_file_name
         start = os.path.join(self._last_dir(), safe_file_name(names[0]) + ".shaper.json")
         path, _ = QFileDialog.getSaveFileName(self, self.tr("Export design"), start,
                                               self.tr("Shaper designs (*.shaper.json *.json)"))

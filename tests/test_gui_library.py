@@ -263,3 +263,43 @@ def test_large_library_is_fetched_page_by_page(pane, model):
     row = pane.table_model.row_of("template")       # the last entry: fetched on demand
     assert row == 2 * PAGE + 10 and not pane.table_model.canFetchMore()
     assert names(pane) == [f"n{i:04d}" for i in range(2 * PAGE + 10)] + ["template"]
+
+
+def _age(path, name):
+    """What an older program left: figures of version 0 that differ from this one's."""
+    import sqlite3
+    conn = sqlite3.connect(path)
+    with conn:
+        conn.execute("UPDATE entries SET figures_version = 0, K = 9.5 WHERE name = ?", (name,))
+    conn.close()
+
+
+def test_stale_figures_are_shown_and_recomputed(pane, model, no_dialogs, qtbot):
+    save(pane, model, "K1.4")
+    save(pane, model, "K1.6", time_ratio=1.6)
+    assert pane.stale_bar.isHidden()
+    path = pane.actions.library.path
+    _age(path, "K1.6")
+    pane._poll()                                 # another program's change is noticed
+    assert pane.stale_bar.isVisible() and "1 design" in pane.stale_bar.label.text()
+    col = COLUMNS.index("K")
+    row = names(pane).index("K1.6")
+    assert pane.table_model.data(pane.table_model.index(row, col)) == "9.5000"
+    qtbot.mouseClick(pane.stale_bar.button, Qt.MouseButton.LeftButton)
+    assert pane.stale_bar.isHidden() and no_dialogs == []
+    assert pane.table_model.data(pane.table_model.index(row, col)) == "1.6000"
+    with Library(path) as lib:
+        assert lib.stale_names() == []
+
+
+def test_stale_bar_in_chinese(pane, model, qtbot):
+    from shaperapp import i18n
+    save(pane, model, "K1.4")
+    _age(pane.actions.library.path, "K1.4")
+    pane._refresh()
+    try:
+        i18n.set_language("zh_CN")
+        qtbot.waitUntil(lambda: pane.stale_bar.button.text() != "Recompute")
+        assert "1" in pane.stale_bar.label.text() and "older" not in pane.stale_bar.label.text()
+    finally:
+        i18n.set_language("en")

@@ -10,7 +10,8 @@ from core.dynamics import MassProperties
 from core.flywheel import summarize
 from core.errors import FileFormatError
 from core.io import load_design, masses_to_dict, save_design
-from core.library import Library, check_tags, file_stem, safe_file_name, unique_name
+from core.library import Library
+from core.library_names import check_tags, file_stem, safe_file_name, unique_name
 from core.library_files import export_entries, import_entries, read_design_files
 from core.library_query import QueryError, parse_filter
 from core.library_store import ENV_VAR, LibraryError, resolve_path

@@ -207,7 +207,7 @@ def test_migration_to_a_newer_schema_keeps_data_and_a_copy(tmp_path, monkeypatch
     with Library(path) as lib:
         assert lib.names() == ["block K1.4", "rod K1.6"]
         assert lib._conn.execute("SELECT rating FROM entries").fetchall() == [(3,), (3,)]
-        assert lib._conn.execute("PRAGMA user_version").fetchone()[0] == 2
+        assert lib._conn.execute("PRAGMA user_version").fetchone()[0] == schema_version() == 3
     copies = list(tmp_path.glob("old.sqlite.schema1-*"))
     assert len(copies) == 1
     copy = sqlite3.connect(copies[0])              # the copy is the library as it was
@@ -224,10 +224,13 @@ def test_a_failed_migration_leaves_the_old_schema(tmp_path, monkeypatch):
     with pytest.raises(LibraryError):
         Library(path)
     monkeypatch.undo()
-    with Library(path) as lib:                     # still schema 1, usable, nothing half-done
-        assert lib._conn.execute("PRAGMA user_version").fetchone()[0] == 1
-        columns = [r[1] for r in lib._conn.execute("PRAGMA table_info(entries)")]
-        assert "half_done" not in columns
+    raw = sqlite3.connect(path)                    # still schema 1, nothing half-done
+    assert raw.execute("PRAGMA user_version").fetchone()[0] == 1
+    columns = [r[1] for r in raw.execute("PRAGMA table_info(entries)")]
+    assert "half_done" not in columns and "figures_version" not in columns
+    raw.close()
+    with Library(path) as lib:                     # and usable: this program's migrations run
+        assert lib._conn.execute("PRAGMA user_version").fetchone()[0] == schema_version()
         assert lib.count() == 2
 
 

@@ -1,7 +1,7 @@
 """``shaper library``: keep, find, export and compare designs in a design library.
 
 One subcommand with its own sub-subcommands (add, list, show, remove, rename,
-export, import, compare, backup); every one takes ``--library PATH`` (or
+export, import, compare, backup, refresh); every one takes ``--library PATH`` (or
 ``$SHAPER_LIBRARY``). The work is in ``core.library*`` and ``core.compare``;
 this module only parses, calls and prints.
 """
@@ -17,16 +17,18 @@ from typing import Any, Sequence
 from ..compare import (Candidate, compare, comparison_json, curves_csv, difference_text,
                        table_csv, value_text)
 from ..errors import DesignError, FileFormatError
-from ..figures import DESIGN_FIGURES, SPEED_FIGURES
+from ..figures import DESIGN_FIGURES, FIGURES_VERSION, SPEED_FIGURES
 from ..io import load_design
 from ..kinematics import check_rpms, crank_angles
-from ..library import Entry, Library, file_stem, unique_name
+from ..library import Entry, Library
+from ..library_names import file_stem, unique_name
 from ..library_files import export_entries, import_entries, read_design_files
 from ..library_query import QueryError, parse_filter, sort_sql
 from ..library_store import ENV_VAR, LibraryError, backup_copy, resolve_path
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
                      add_speed_options, design_file, fail, masses_from_args, number,
                      rpms_from_args, spec_from_args)
+from .cmd_library_refresh import refresh_options, run_refresh
 from .output import OutputError, print_json, write_output
 
 HELP = "keep, find, export and compare designs in a library"
@@ -209,6 +211,11 @@ def _run_list(args: argparse.Namespace) -> int:
     with _open(args, create=False) as lib:
         rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
                          rpm=rpm, limit=args.limit)
+    stale = sum(1 for row in rows if row["figures_version"] < FIGURES_VERSION)
+    if stale:
+        print(f"shaper: note: {stale} of the {len(rows)} designs listed "
+              f"{'has' if stale == 1 else 'have'} figures an older version computed; "
+              "'shaper library refresh' recomputes them", file=sys.stderr)
     if args.json:
         print_json(rows)
         return 0
@@ -229,7 +236,9 @@ def _run_list(args: argparse.Namespace) -> int:
 def _entry_document(entry: Entry) -> dict[str, Any]:
     f = entry.figures
     return {"name": entry.name, "notes": entry.notes, "tags": list(entry.tags),
-            "created": entry.created, "modified": entry.modified, **f.design_values(),
+            "created": entry.created, "modified": entry.modified,
+            "figures_version": entry.figures_version, "figures_current": entry.figures_current,
+            **f.design_values(),
             "speeds": [s.__dict__ for s in f.speeds], "document": json.loads(entry.text)}
 
 
@@ -242,6 +251,8 @@ def _run_show(args: argparse.Namespace) -> int:
     f = entry.figures
     rows = [("name", entry.name), ("notes", entry.notes or "—"), ("tags", ", ".join(entry.tags) or "—"),
             ("created", entry.created), ("modified", entry.modified), ("variant", f.variant)]
+    if not entry.figures_current:
+        rows.append(("figures", "computed by an older version; 'shaper library refresh' recomputes them"))
     if f.rod_side:
         rows.append(("rod side", f.rod_side))
     rows += [(key, value_text(getattr(f, key))) for key, _, _, _ in DESIGN_FIGURES]
@@ -397,6 +408,11 @@ def _run_backup(args: argparse.Namespace) -> int:
     return 0
 
 
+def _run_refresh(args: argparse.Namespace) -> int:
+    with _open(args, create=False) as lib:
+        return run_refresh(args, lib)
+
+
 ACTIONS = (
     ("add", "store a design (from options or --design FILE) under a name", _add_options),
     ("list", "list, filter and sort the designs", _list_options),
@@ -407,7 +423,8 @@ ACTIONS = (
     ("import", "add design files (or folders of them) named after the files", _import_options),
     ("compare", "compare 2 to 6 designs at one speed: figure table and curves", _compare_options),
     ("backup", "copy the library file (also one that cannot be opened)", _backup_options),
+    ("refresh", "recompute the figures an older version of the program stored", refresh_options),
 )
 ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
-              "compare": _run_compare, "backup": _run_backup}
+              "compare": _run_compare, "backup": _run_backup, "refresh": _run_refresh}
