@@ -12,24 +12,22 @@ import json
 import os
 import sys
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
-from ..compare import (Candidate, compare, comparison_json, curves_csv, difference_text,
-                       table_csv, value_text)
-from ..errors import DesignError, FileFormatError
+from ..compare import value_text
+from ..errors import FileFormatError
 from ..figures import DESIGN_FIGURES, FIGURES_VERSION, SPEED_FIGURES
-from ..io import load_design
 from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library
-from ..library_names import file_stem, unique_name
 from ..library_files import export_entries, import_entries, read_design_files
 from ..library_query import QueryError, parse_filter, sort_sql
-from ..library_store import ENV_VAR, LibraryError, backup_copy, resolve_path
+from ..library_store import ENV_VAR, LibraryError, backup_copy
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
-                     add_speed_options, design_file, fail, masses_from_args, number,
+                     add_speed_options, design_file, fail, library_path, masses_from_args, number,
                      rpms_from_args, spec_from_args)
+from .cmd_library_compare import compare_options, run_compare
 from .cmd_library_refresh import refresh_options, run_refresh
-from .output import OutputError, print_json, write_output
+from .output import OutputError, print_json
 
 HELP = "keep, find, export and compare designs in a library"
 DESCRIPTION = ("A design library: named designs with notes, tags and their key figures, in one "
@@ -106,18 +104,6 @@ def _import_options(p: argparse.ArgumentParser) -> None:
                    help="import the valid files and list the others instead of refusing all")
 
 
-def _compare_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("names", metavar="NAME", nargs="*", help="library entries to compare")
-    p.add_argument("--file", dest="files", metavar="FILE", action="append", default=[],
-                   help="also compare a design file (repeatable)")
-    p.add_argument("--rpm", metavar="RPM", help="the common crank speed (default: the first design's first)")
-    p.add_argument("--step", metavar="DEG", default="1", help="crank-angle step of the curves (default 1)")
-    out = p.add_mutually_exclusive_group()
-    out.add_argument("--json", action="store_true", help="print the table as JSON")
-    out.add_argument("--csv", metavar="FILE|-", help="write the table as CSV")
-    p.add_argument("--curves-csv", metavar="FILE|-", help="write the overlay curves as CSV")
-
-
 def _backup_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("-o", "--output", metavar="FILE", help="where to write the copy "
                    "(default: beside the library, NAME.backup-TIME)")
@@ -163,14 +149,6 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
     if exc.refused_file:
         hint = f"; keep a copy with: shaper library backup --library '{exc.path}'"
     return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
-
-
-def library_path(library: str | None) -> Path:
-    """The library ``--library`` names (see ``resolve_path``); an empty one is refused
-    rather than taken for the default library."""
-    if library is not None and not library.strip():
-        raise UsageError("--library: the path is empty")
-    return resolve_path(library)
 
 
 def _open(args: argparse.Namespace, create: bool = True) -> Library:
@@ -312,71 +290,6 @@ def _run_import(args: argparse.Namespace) -> int:
     return 0
 
 
-def load_candidates(library: str | None, names: Sequence[str], files: Sequence[str],
-                    file_option: str = "--file") -> tuple[list[Candidate], float | None]:
-    """Library entries ``names`` (from ``library``, see ``resolve_path``), then design
-    ``files`` (labelled by their names, made unique),
-    as comparison candidates; and the first one's first speed.
-
-    LibraryError for the library or a missing name; UsageError naming ``file_option``
-    for a file that cannot be read."""
-    candidates: list[Candidate] = []
-    first_rpm = None
-    if names:
-        with Library(library_path(library), create=False) as lib:
-            for name in names:
-                doc = lib.load(name)
-                first_rpm = first_rpm or doc["rpm"][0]
-                candidates.append(Candidate(name, doc["spec"], doc["masses"]))
-    for path in files:
-        try:
-            doc = load_design(path)
-        except FileFormatError as exc:
-            raise UsageError(f"{file_option}: {exc}") from None
-        first_rpm = first_rpm or doc["rpm"][0]
-        label = unique_name(file_stem(path), [c.label for c in candidates])
-        candidates.append(Candidate(label, doc["spec"], doc["masses"]))
-    return candidates, first_rpm
-
-
-def _run_compare(args: argparse.Namespace) -> int:
-    candidates, first_rpm = load_candidates(args.library, args.names, args.files)
-    if not 2 <= len(candidates) <= 6:
-        raise UsageError(f"NAME: compare 2 to 6 designs (got {len(candidates)})")
-    rpm = number("rpm", args.rpm) if args.rpm is not None else first_rpm
-    try:
-        result = compare(candidates, rpm, number("step", args.step))
-    except DesignError as exc:
-        if exc.parameter == "designs":
-            raise UsageError(f"NAME: {exc.value!r} {exc.allowed}") from None
-        raise
-    if args.curves_csv:
-        write_output("--curves-csv", args.curves_csv, curves_csv(result))
-    if args.json:
-        print(comparison_json(result), end="")
-    elif args.csv:
-        write_output("--csv", args.csv, table_csv(result))
-    elif not args.curves_csv or args.curves_csv != "-":
-        _print_comparison(result)
-    return 0
-
-
-def _print_comparison(result) -> None:
-    labels = result.labels
-    head = ["figure"] + list(labels)
-    cells = [head, ["rpm"] + [f"{result.rpm:g}"] * len(labels)]
-    for row in result.rows:
-        line = [row.key]
-        for i, value in enumerate(row.values):
-            line.append(value_text(value) + difference_text(row, i) + (" *" if i in row.best else ""))
-        cells.append(line)
-    widths = [max(len(r[i]) for r in cells) for i in range(len(head))]
-    for r in cells:
-        print("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
-    print(f"\n(differences from {labels[0]!r} in parentheses; * best: lower max |a|, pressure "
-          "angle, torques and J_F)")
-
-
 def _run_backup(args: argparse.Namespace) -> int:
     path = library_path(args.library)
     if not path.exists():
@@ -421,10 +334,10 @@ ACTIONS = (
     ("rename", "give a design a new name", _rename_options),
     ("export", "write a design as a design file (or all, with --all)", _export_options),
     ("import", "add design files (or folders of them) named after the files", _import_options),
-    ("compare", "compare 2 to 6 designs at one speed: figure table and curves", _compare_options),
+    ("compare", "compare 2 to 6 designs at one speed: figure table and curves", compare_options),
     ("backup", "copy the library file (also one that cannot be opened)", _backup_options),
     ("refresh", "recompute the figures an older version of the program stored", refresh_options),
 )
 ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
-              "compare": _run_compare, "backup": _run_backup, "refresh": _run_refresh}
+              "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh}

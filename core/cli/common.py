@@ -12,6 +12,7 @@ import math
 import re
 import sys
 from dataclasses import replace
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -354,3 +355,11 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
         base = MassProperties()
     return replace(base, **changes)
 
+
+def library_path(library: str | None) -> Path:
+    """The library ``--library`` names (see ``resolve_path``); an empty one is refused
+    rather than taken for the default library."""
+    from ..library_store import resolve_path      # sqlite3 and platformdirs: only when needed
+    if library is not None and not library.strip():
+        raise UsageError("--library: the path is empty")
+    return resolve_path(library)

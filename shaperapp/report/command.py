@@ -13,7 +13,8 @@ import os
 import sys
 from pathlib import Path
 
-from core.cli.cmd_library import library_failure, load_candidates
+from core.cli.cmd_library import library_failure
+from core.cli.cmd_library_compare import load_candidates
 from core.cli.cmd_table import masses_or_none
 from core.atomic import atomic_write
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
