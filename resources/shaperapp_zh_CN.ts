@@ -2603,8 +2603,12 @@
         <translation>显示受力</translation>
     </message>
     <message>
-        <source>Show the joint forces at the first crank speed as arrows, to one scale</source>
-        <translation>以统一比例用箭头显示第一个曲柄转速下的运动副反力</translation>
+        <source>Show the joint forces at the chosen crank speed as arrows, to one scale</source>
+        <translation>以箭头按同一比例显示所选曲柄转速下的运动副反力</translation>
+    </message>
+    <message>
+        <source>Crank speed of the force arrows</source>
+        <translation>受力箭头对应的曲柄转速</translation>
     </message>
     <message>
         <source>Wheel: zoom, drag: pan, double-click: fit, right click: menu</source>

@@ -16,7 +16,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QRectF, QTimer
 from PySide6.QtGui import QAction, QPainter
-from PySide6.QtWidgets import (QCheckBox, QGraphicsView, QHBoxLayout, QMenu, QToolButton,
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QGraphicsView, QHBoxLayout, QMenu, QToolButton,
                                QVBoxLayout, QWidget)
 
 from .image_export import export_scene, render_scene
@@ -26,6 +26,7 @@ from .scheme_dimensions import DimensionLayer
 from .scheme_draw import WHITE, Box, Pair
 from .scheme_forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
 from .scheme_mechanism import Geometry, MechanismLayer
+from .view_parts import fill_speed_combo
 
 
 # After an edit the view is kept while it holds the whole drawing and the drawing fills at
@@ -86,11 +87,18 @@ class SchemeWidget(QWidget):
         self._forces_box.setChecked(False)
         self._forces_box.toggled.connect(self.forces_action.setChecked)
         self.forces_action.toggled.connect(self._forces_box.setChecked)
+        self._force_speed_box = QComboBox()         # which crank speed's forces are drawn
+        self._force_speed_box.setObjectName("forceSpeedBox")
+        self._force_speed_box.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
+        self._force_speed_box.setEnabled(False)
+        self._force_speed_box.currentIndexChanged.connect(self._force_speed_chosen)
+        self.forces_action.toggled.connect(self._force_speed_box.setEnabled)
         bar = QHBoxLayout()
         bar.setContentsMargins(4, 2, 4, 0)
         bar.addWidget(self._fit_button)
         bar.addWidget(self._dims_box)
         bar.addWidget(self._forces_box)
+        bar.addWidget(self._force_speed_box)
         bar.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
@@ -132,12 +140,24 @@ class SchemeWidget(QWidget):
         return self.dimensions_action.isChecked()
 
     def set_forces_visible(self, visible: bool) -> None:
-        """Show or hide the force arrows (first crank speed, current angle)."""
+        """Show or hide the force arrows (chosen crank speed, current angle)."""
         if self.forces_action.isChecked() != bool(visible):
             self.forces_action.setChecked(bool(visible))     # → _apply_forces_visible
 
     def forces_visible(self) -> bool:
         return self.forces_action.isChecked()
+
+    def set_force_speed(self, index: int) -> None:
+        """Draw the forces at crank speed ``index`` of model.rpms (the first by default)."""
+        self._force_speed_box.setCurrentIndex(index)
+
+    def force_speed(self) -> int:
+        return self._forces.speed
+
+    def _force_speed_chosen(self, index: int) -> None:
+        if index >= 0 and index != self._forces.speed:
+            self._forces.speed = index
+            self._draw_forces(self._model.angle_index)
 
     def drawn_forces(self) -> dict[str, Pair]:
         """The force arrows drawn now as {name: (start, tip)} in mm, read back from the drawn path.
@@ -243,7 +263,9 @@ class SchemeWidget(QWidget):
         self.forces_action.setText(self.tr("Show forces"))
         self._forces_box.setText(self.tr("Show forces"))
         self._forces_box.setToolTip(self.tr(
-            "Show the joint forces at the first crank speed as arrows, to one scale"))
+            "Show the joint forces at the chosen crank speed as arrows, to one scale"))
+        self._force_speed_box.setToolTip(self.tr("Crank speed of the force arrows"))
+        fill_speed_combo(self._force_speed_box, self._model.rpms)    # "r/min" in the new language
         self._plot.setToolTip(self.tr("Wheel: zoom, drag: pan, double-click: fit, right click: menu"))
         self._forces.retranslate()
         if self._geometry is not None:
@@ -283,6 +305,8 @@ class SchemeWidget(QWidget):
         """Rebuild every layer for the design; fit once per new design, before the force
         labels are placed (they keep a distance in pixels)."""
         self._stale = False
+        fill_speed_combo(self._force_speed_box, self._model.rpms)   # keeps the speed if still there
+        self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
         design = self._model.design

@@ -1,7 +1,7 @@
 """The scheme's force layer: core's joint forces as arrows, to one length scale.
 
 The optional layer (off by default) draws the joint forces of core's
-kinetostatics (``model.dynamics``) at the first crank speed as arrows on the
+kinetostatics (``model.dynamics``) at one crank speed (the first unless chosen) as arrows on the
 mechanism: one length scale per design, arrow heads of a fixed size in mm. Its
 geometry for every crank angle is prepared once per solution; a frame only
 rebuilds one small path and moves a few labels, and nothing at all while the
@@ -56,6 +56,7 @@ class ForceFrames:
     ref_mm: float               # ... and its length, mm
     unit_N: float               # 1000 (labels in kN) or 1 (labels in N)
     rpm: float
+    speed: int                  # index of that crank speed in model.rpms
 
 
 def label_spots(x: float, y: float, ox: float, oy: float, gap: float):
@@ -80,12 +81,14 @@ def nice_scale(largest_N: float, target_mm: float) -> tuple[float, float, float]
     return length / ref, ref, length
 
 
-def build_force_frames(model: DesignModel, g: Geometry) -> ForceFrames | None:
-    """Every force arrow at every crank angle of the first speed, from model.dynamics."""
+def build_force_frames(model: DesignModel, g: Geometry, speed: int = 0) -> ForceFrames | None:
+    """Every force arrow at every crank angle of speed ``speed`` (an index of
+    model.rpms; the last one if there are fewer), from model.dynamics."""
     dyn, design, sh = model.dynamics, model.design, model.motion.shape
     n = sh.phi.size
     if dyn.crank_angle.size != n:
         return None
+    s = min(max(int(speed), 0), len(dyn.rpm) - 1)
     u = g.u
     a, b, c = sh.crank_pin.T, sh.lever_tip.T, sh.ram_joint.T
     zero = np.zeros(n)
@@ -96,19 +99,19 @@ def build_force_frames(model: DesignModel, g: Geometry) -> ForceFrames | None:
 
     # The guide's resultant is drawn only where its line of action crosses the ram;
     # outside (or NaN) the guide carries essentially a couple, which no arrow shows.
-    offset = dyn.guide_offset_mm[0]
+    offset = dyn.guide_offset_mm[s]
     on_ram = np.isfinite(offset) & (offset >= g.ram_rear) & (offset <= g.ram_front)
     guide_x = c[:, 0] + np.where(on_ram, offset, 0.0)
     pin_o, pin_m = PIN_FIXED * u, PIN_MOVING * u
-    rod_c = (c, vec(dyn.c_x[0], dyn.c_y[0])) if dyn.c_x is not None else (c, vec(0.0, 0.0))
+    rod_c = (c, vec(dyn.c_x[s], dyn.c_y[s])) if dyn.c_x is not None else (c, vec(0.0, 0.0))
     forces = {  # name: (point of application, force on the body in N, pin radius there)
-        "O2": (vec(g.o2[0], g.o2[1]), vec(dyn.o2_x[0], dyn.o2_y[0]), pin_o),
-        "A": (a, vec(dyn.a_x[0], dyn.a_y[0]), pin_m),
-        "O4": (vec(0.0, 0.0), vec(dyn.o4_x[0], dyn.o4_y[0]), pin_o),
-        "B": (b, -vec(dyn.b_x[0], dyn.b_y[0]), pin_m),
+        "O2": (vec(g.o2[0], g.o2[1]), vec(dyn.o2_x[s], dyn.o2_y[s]), pin_o),
+        "A": (a, vec(dyn.a_x[s], dyn.a_y[s]), pin_m),
+        "O4": (vec(0.0, 0.0), vec(dyn.o4_x[s], dyn.o4_y[s]), pin_o),
+        "B": (b, -vec(dyn.b_x[s], dyn.b_y[s]), pin_m),
         "C": (*rod_c, pin_m),
-        "guide": (vec(guide_x, g.guide), vec(0.0, dyn.guide_normal[0]), 0.0),
-        "cut": (vec(c[:, 0] + g.tip_dx, g.tip_y), vec(-dyn.cut_force[0], 0.0), 0.0),
+        "guide": (vec(guide_x, g.guide), vec(0.0, dyn.guide_normal[s]), 0.0),
+        "cut": (vec(c[:, 0] + g.tip_dx, g.tip_y), vec(-dyn.cut_force[s], 0.0), 0.0),
     }
     point = np.stack([forces[k][0] for k in FORCE_NAMES])          # (k, n, 2)
     force = np.stack([forces[k][1] for k in FORCE_NAMES])
@@ -156,7 +159,7 @@ def build_force_frames(model: DesignModel, g: Geometry) -> ForceFrames | None:
         shown=np.ascontiguousarray(shown.T), magnitude=np.ascontiguousarray(magnitude.T),
         outward=np.ascontiguousarray(out.transpose(1, 0, 2)), mm_per_N=mm_per_N,
         ref_force_N=ref, ref_mm=ref_mm, unit_N=1000.0 if largest >= 1000.0 else 1.0,
-        rpm=float(dyn.rpm[0]))
+        rpm=float(dyn.rpm[s]), speed=s)
 
 
 class ForceLayer(QObject):
@@ -168,6 +171,7 @@ class ForceLayer(QObject):
         self.frames: ForceFrames | None = None
         self._names: list[str] = []
         self._visible = False
+        self.speed = 0                  # index of the crank speed drawn
         self._path = body(FORCE, Z_FORCE, pen(FORCE, 2.0))
         self._path.setVisible(False)
         add(self._path)
@@ -207,8 +211,9 @@ class ForceLayer(QObject):
         if not self._visible:
             return
         ff = self.frames
-        if ff is None or ff.source is not model.dynamics or ff.geometry is not g:
-            ff = self.frames = build_force_frames(model, g)
+        speed = min(max(self.speed, 0), len(model.dynamics.rpm) - 1)
+        if ff is None or ff.source is not model.dynamics or ff.geometry is not g or ff.speed != speed:
+            ff = self.frames = build_force_frames(model, g, speed)
             self._show_caption()
         names: list[str] = []
         path = QPainterPath()

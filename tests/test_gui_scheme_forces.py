@@ -1,4 +1,4 @@
-"""The scheme's force arrows draw core's joint forces (first crank speed) to one scale.
+"""The scheme's force arrows draw core's joint forces (the chosen crank speed) to one scale.
 
 The expected forces are solved here again with core.dynamics from the model's
 design, crank angles, speeds and loads; the arrows are read back from the
@@ -36,17 +36,18 @@ def core_dynamics(model: DesignModel):
     return solve_dynamics(model.design, model.motion.crank_angle, model.rpms, masses)
 
 
-def expected_forces(model: DesignModel, dyn, index: int) -> dict[str, np.ndarray]:
-    """Force on the named body at ``index``, first speed, N (see docs/forces.md)."""
-    i = index
-    out = {"O2": np.array([dyn.o2_x[0, i], dyn.o2_y[0, i]]),
-           "A": np.array([dyn.a_x[0, i], dyn.a_y[0, i]]),
-           "O4": np.array([dyn.o4_x[0, i], dyn.o4_y[0, i]]),
-           "B": -np.array([dyn.b_x[0, i], dyn.b_y[0, i]]),      # rod/tip block on the lever
-           "guide": np.array([0.0, dyn.guide_normal[0, i]]),
-           "cut": np.array([-dyn.cut_force[0, i], 0.0])}
+def expected_forces(model: DesignModel, dyn, index: int, speed: int = 0) -> dict[str, np.ndarray]:
+    """Force on the named body at ``index``, speed ``speed`` (default the first), N
+    (see docs/forces.md)."""
+    i, s = index, speed
+    out = {"O2": np.array([dyn.o2_x[s, i], dyn.o2_y[s, i]]),
+           "A": np.array([dyn.a_x[s, i], dyn.a_y[s, i]]),
+           "O4": np.array([dyn.o4_x[s, i], dyn.o4_y[s, i]]),
+           "B": -np.array([dyn.b_x[s, i], dyn.b_y[s, i]]),      # rod/tip block on the lever
+           "guide": np.array([0.0, dyn.guide_normal[s, i]]),
+           "cut": np.array([-dyn.cut_force[s, i], 0.0])}
     if dyn.c_x is not None:
-        out["C"] = np.array([dyn.c_x[0, i], dyn.c_y[0, i]])
+        out["C"] = np.array([dyn.c_x[s, i], dyn.c_y[s, i]])
     return out
 
 
@@ -363,3 +364,32 @@ def test_export_with_forces(scheme, tmp_path):
     png = tmp_path / "forces.png"
     scheme.export_image(str(png))
     assert png.stat().st_size > 0
+
+
+def test_arrows_follow_the_chosen_speed(scheme, model):
+    """The arrows were the first speed's only: now the speed chosen beside Show forces."""
+    from PySide6.QtWidgets import QComboBox
+    box = scheme.findChild(QComboBox, "forceSpeedBox")
+    assert not box.isEnabled()                              # nothing to choose while hidden
+    show(scheme)
+    assert box.isEnabled() and [box.itemText(i) for i in range(box.count())] == ["40 r/min", "60 r/min"]
+    model.set_angle_deg(100)
+    dyn = core_dynamics(model)
+    box.setCurrentIndex(1)
+    assert scheme.force_speed() == 1 and "60 r/min" in scheme.force_caption()
+    drawn = arrows(scheme)
+    index = model.angle_index
+    fast = expected_forces(model, dyn, index, speed=1)
+    slow = expected_forces(model, dyn, index, speed=0)
+    ratios = [np.hypot(*(tip - start)) / np.hypot(*fast[name]) for name, (start, tip) in drawn.items()]
+    np.testing.assert_allclose(ratios, ratios[0], rtol=1e-9)  # lengths ∝ the 60 r/min forces
+    assert any(abs(np.hypot(*fast[n]) / np.hypot(*slow[n]) - 1.0) > 1e-3 for n in drawn)  # and they differ
+    for name, (start, tip) in drawn.items():
+        np.testing.assert_allclose(unit(tip - start), unit(fast[name]), atol=1e-9)
+    model.set_rpms([60.0, 80.0])                            # 60 r/min stays chosen where it moved
+    scheme._catch_up()
+    assert box.currentText() == "60 r/min" and scheme.force_speed() == 0
+    assert "60 r/min" in scheme.force_caption()
+    model.set_rpms([30.0])                                  # gone: back to the first
+    scheme._catch_up()
+    assert scheme.force_speed() == 0 and "30 r/min" in scheme.force_caption()
