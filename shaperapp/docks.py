@@ -10,12 +10,20 @@ and the vector diagrams under the mechanism, all shown at once.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QSize, Qt
+from PySide6.QtCore import QCoreApplication, QRect, QSize, Qt, QTimer
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QStackedWidget, QWidget
 
 from .inputs_pane import scrolled
+from .window_state import FRAME_ALLOWANCE, available
 
 WIDE = 1600                 # px: from this window width on, every pane has its own place
+# The library docked under the plots gets what the plots can spare: opened shorter than
+# LIBRARY_MIN_PX it is given LIBRARY_SHARE of the window, and where docking it would make
+# the window taller than the screen it floats (``Docks._fit_library``).
+LIBRARY_MIN_PX = 280
+LIBRARY_SHARE = 0.45
+LIBRARY_FLOAT = QSize(1000, 560)    # the floating library on a screen too short to dock it
+TOP = Qt.DockWidgetArea.TopDockWidgetArea
 NAMES = ("inputs", "results", "mechanism", "polygons", "library")
 LEFT = Qt.DockWidgetArea.LeftDockWidgetArea
 RIGHT = Qt.DockWidgetArea.RightDockWidgetArea
@@ -53,6 +61,7 @@ class Docks:
             dock.setWidget(holder)
             dock.visibilityChanged.connect(lambda shown, d=dock: self._follow_tab(d, shown))
             self.docks[name] = dock
+        self.docks["library"].visibilityChanged.connect(self._room_for_library)
         window.setCorner(Qt.Corner.BottomLeftCorner, LEFT)
         window.setCorner(Qt.Corner.BottomRightCorner, RIGHT)
         window.setCorner(Qt.Corner.TopLeftCorner, LEFT)
@@ -65,6 +74,42 @@ class Docks:
         closed dock hides its pane anyway)."""
         tabbed_away = not shown and dock.isVisible() and not dock.isFloating()
         dock.widget().setCurrentIndex(1 if tabbed_away else 0)
+
+    def _room_for_library(self, shown: bool) -> None:
+        """The library shown docked above or below the plots is checked once laid out."""
+        dock, w = self.docks["library"], self._window
+        if shown and not dock.isFloating() and w.dockWidgetArea(dock) in (BOTTOM, TOP):
+            QTimer.singleShot(0, self._fit_library)
+
+    def _fit_library(self) -> None:
+        """Docked under the plots on a laptop screen the library made the window taller
+        than the screen (1366×768: 810 px): it floats over the window instead, and the
+        window comes back onto the screen. Docked but too short to list a row, it is
+        made taller."""
+        dock, w = self.docks["library"], self._window
+        if not dock.isVisible() or dock.isFloating():
+            return
+        screen = available(w)
+        room = screen.height() - FRAME_ALLOWANCE.height()
+        if w.minimumSizeHint().height() > room:
+            dock.setFloating(True)
+            size = QSize(min(LIBRARY_FLOAT.width(), int(screen.width() * 0.8)),
+                         min(LIBRARY_FLOAT.height(), int(screen.height() * 0.7)))
+            frame = QRect(0, 0, size.width(), size.height())
+            frame.moveCenter(w.frameGeometry().center())
+            dock.setGeometry(frame.intersected(screen) if screen.contains(frame.center()) else frame)
+            QTimer.singleShot(0, lambda: self._back_on_screen(room))   # once the window's
+            # layout has dropped the dock's minimum height
+        elif dock.height() < LIBRARY_MIN_PX:
+            w.resizeDocks([dock], [max(LIBRARY_MIN_PX, int(w.height() * LIBRARY_SHARE))], VERTICAL)
+
+    def _back_on_screen(self, room: int) -> None:
+        w = self._window
+        if w.height() > room and not w.isMaximized() and not w.isFullScreen():
+            w.resize(w.width(), max(room, w.minimumSizeHint().height()))
+            top = available(w).top()
+            if w.frameGeometry().bottom() > available(w).bottom():
+                w.move(w.x(), top)
 
     def __getitem__(self, name: str) -> QDockWidget:
         return self.docks[name]

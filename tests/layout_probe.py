@@ -67,6 +67,7 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--lang", default="en")
     parser.add_argument("--speeds", action="append", default=[])
     parser.add_argument("--resize", help="WxH before closing (to save that geometry)")
+    parser.add_argument("--library", action="store_true", help="then show the library pane and report it")
     args = parser.parse_args(argv)
     from shaperapp.style import configure_plots
     configure_plots()
@@ -90,6 +91,13 @@ def main(argv: list[str]) -> int:
             "results_visible": window.metrics.isVisible(),
             "tables": [table_report(app, t) for t in window.metrics.tables()],
         })
+    if args.library:
+        window.library_dock.show()
+        settle(app)
+        view = window.library.view
+        report["library"] = {"floating": window.library_dock.isFloating(),
+                             "frame": rect(window.frameGeometry()), "dock": rect(window.library_dock.frameGeometry()),
+                             "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
     if args.resize:
         w, h = (int(v) for v in args.resize.split("x"))
         window.resize(w, h)

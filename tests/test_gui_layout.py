@@ -34,7 +34,7 @@ def probe(tmp_path: Path, width: int, height: int, *args: str, settings: str = "
                                                "height": height, "logicalDpi": 96,
                                                "logicalBaseDpi": 96, "dpr": 1}]}))
     env = dict(os.environ, QT_QPA_PLATFORM=f"offscreen:configfile={screen}",
-               XDG_CONFIG_HOME=str(tmp_path))
+               XDG_CONFIG_HOME=str(tmp_path), SHAPER_LIBRARY=str(tmp_path / "library.sqlite"))
     out = subprocess.run([sys.executable, str(PROBE), "--settings", str(tmp_path / settings), *args],
                          capture_output=True, text=True, env=env, timeout=180)
     assert out.returncode == 0, out.stderr
@@ -286,3 +286,17 @@ def test_result_tables_copy_with_titles(window):
     table.copy()
     lines = QGuiApplication.clipboard().text().strip("\r\n").split("\r\n")
     assert len(lines) == 1 + SPEED_ROWS and lines[0] == "\t40 r/min\t60 r/min"
+
+
+@pytest.mark.parametrize("width,height,floats", [(1366, 768, True), (1280, 720, True), (1920, 1080, False)])
+def test_library_pane_fits_the_screen(tmp_path, width, height, floats):
+    """Docked under the plots, the library made a 1366×768 window 810 px tall (its status
+    bar and animation bar off the screen) and left its list no row. On a short screen it
+    now floats over the window; where there is room it stays docked; either way the
+    window stays on the screen and the list has room for rows."""
+    report = probe(tmp_path, width, height, "--speeds", "40,60", "--library")
+    library = report["library"]
+    assert library["floating"] is floats
+    assert inside(report["screen"], library["frame"]), library
+    assert inside(report["screen"], library["dock"]), library
+    assert library["rows_room"] >= 5, library
