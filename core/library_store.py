@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 import shutil
 import sqlite3
+import stat
 from contextlib import contextmanager
 from datetime import datetime, timezone
 from pathlib import Path
@@ -149,6 +150,7 @@ def connect(path: str | os.PathLike, create: bool = True, make_dirs: bool = Fals
     if exists:
         if path.is_dir():
             raise LibraryError("location", f"{path} is a folder, not a library file", path)
+        check_regular(path)
         _check_header(path)
     elif not path.parent.exists():
         if not make_dirs:
@@ -179,6 +181,19 @@ def connect(path: str | os.PathLike, create: bool = True, make_dirs: bool = Fals
         conn.close()
         raise sqlite_error(exc, path) from None
     return conn
+
+
+def check_regular(path: Path) -> None:
+    """A library is a regular file (a link to one is fine). A pipe would block the first
+    read forever and a device is no database: both are refused before anything opens them."""
+    try:
+        mode = path.stat().st_mode
+    except OSError as exc:
+        raise LibraryError("io", f"cannot read the library {path}: {exc.strerror or exc}", path) from None
+    if not stat.S_ISREG(mode):
+        kind = ("a pipe" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode)
+                else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
+        raise LibraryError("location", f"{path} is {kind}, not a library file; it was left unchanged", path)
 
 
 def _check_header(path: Path) -> None:
@@ -287,6 +302,8 @@ def backup_copy(path: str | os.PathLike, target: str | os.PathLike | None = None
     copy of the ``-wal`` file gets SQLite's own suffix, so the copy opens as it was.
     """
     source = Path(path)
+    if source.exists() and not source.is_dir():
+        check_regular(source)          # never read a pipe (it would block) or a device
     target = backup_target(source, label) if target is None else Path(target)
     try:
         for src, dst in ((source, target), (Path(f"{source}-wal"), Path(f"{target}-wal"))):

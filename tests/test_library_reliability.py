@@ -14,6 +14,7 @@ from core import library_store
 from core.library import Library
 from core.library_store import APPLICATION_ID, LibraryError, backup_copy, schema_version
 from core.spec import Spec
+from cli_runner import shaper
 
 WRITER = Path(__file__).with_name("library_writer.py")
 ROOT = Path(__file__).resolve().parents[1]
@@ -251,3 +252,34 @@ def test_busy_library_gives_a_plain_error(tmp_path, monkeypatch):
         blocker.close()
     with Library(path) as lib:
         assert lib.count() == 0
+
+
+def _special_files(tmp_path):
+    """A pipe and a socket under tmp_path (a read from the pipe would block forever)."""
+    import socket
+    fifo = tmp_path / "pipe.sqlite"
+    os.mkfifo(fifo)
+    sock_path = tmp_path / "sock.sqlite"
+    sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    sock.bind(str(sock_path))
+    return sock, {"pipe": fifo, "socket": sock_path}
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_a_pipe_or_socket_is_refused_without_reading_it(tmp_path):
+    """A FIFO as the library hung every command on its first read; now it is refused, as is
+    a socket, by Library and by backup (which copies files it cannot open)."""
+    sock, files = _special_files(tmp_path)
+    try:
+        for kind, path in files.items():
+            with pytest.raises(LibraryError) as err:
+                Library(path)
+            assert err.value.kind == "location" and f"is a {kind}" in str(err.value)
+            with pytest.raises(LibraryError, match=f"is a {kind}"):
+                backup_copy(path, tmp_path / "copy.sqlite")
+            assert not (tmp_path / "copy.sqlite").exists()
+            result = shaper("library", "list", "--library", path)
+            assert result.returncode == 2 and result.stderr.count("\n") == 1
+            assert result.stderr.startswith("shaper: error: --library: ") and kind in result.stderr
+    finally:
+        sock.close()
