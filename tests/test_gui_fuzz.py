@@ -138,6 +138,7 @@ class Fuzzer:
     def view(self) -> None:
         w, rng = self.w, self.rng
         rng.choice((w.act_fit, w.act_dims, w.act_forces)).trigger()
+        w.scheme.set_force_speed(rng.randrange(len(w.model.rpms)))
         w.tabs.setCurrentIndex(rng.randrange(w.tabs.count()))
 
     def undo_redo(self) -> None:
