@@ -31,7 +31,7 @@ from core.spec import NUMBER_FIELDS, Spec
 from .messages import field_name
 from .model_results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, solve_forces,
                             typed_error)
-from .undo import InputEdit, Inputs
+from .undo import InputEdit, Inputs, push_edit
 
 DEFAULT_RPMS = (40.0, 60.0)
 DEFAULT_STEP = 1.0
@@ -324,7 +324,7 @@ class DesignModel(QObject):
     def _push(self, inputs: Inputs, key: Hashable | None, describe: Callable[[], str]) -> None:
         if key is not None:
             key = (key, self._session)
-        self.undo_stack.push(InputEdit(self._apply, self._inputs, inputs, key, describe))
+        push_edit(self.undo_stack, InputEdit(self._apply, self._inputs, inputs, key, describe))
 
     @staticmethod
     def _edit_text(names) -> str:

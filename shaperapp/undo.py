@@ -3,14 +3,15 @@
 Every design and load edit goes through the model's setters, which push an
 :class:`InputEdit` from the inputs before to the inputs after. Keystrokes in one
 field arrive as several edits with the same ``key`` (the fields touched and the
-typing session); Qt merges them into one step through ``id``/``mergeWith``.
+typing session); they merge into one step through ``id``/``mergeWith``, done by
+:func:`push_edit` rather than by ``QUndoStack.push`` (see there why).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Any, Callable, Hashable
 
-from PySide6.QtGui import QUndoCommand
+from PySide6.QtGui import QUndoCommand, QUndoStack
 
 from core.spec import Spec
 
@@ -69,3 +70,22 @@ class InputEdit(QUndoCommand):
 
     def undo(self) -> None:
         self._apply(self.before)
+
+
+def push_edit(stack: QUndoStack, edit: InputEdit) -> None:
+    """``stack.push(edit)``, except that an edit Qt would merge into the command on top
+    is merged here, by the same rule (same key, nothing to redo, the top not the saved
+    state): PySide 6.11 keeps every command that Qt deletes inside ``push()`` alive, so
+    each merged keystroke leaked its two input states and closures (about 2 KB; 4000
+    keystrokes made an edit 15 % slower). A merge back to where the step started makes
+    it obsolete; Qt drops an obsolete command on undo, a no-op here (before == after)."""
+    index = stack.index()
+    top = stack.command(index - 1) if index > 0 else None
+    if not (isinstance(top, InputEdit) and edit.key is not None and top.key == edit.key
+            and index == stack.count() and index != stack.cleanIndex()):
+        stack.push(edit)
+        return
+    edit.redo()
+    top.mergeWith(edit)
+    if top.isObsolete():
+        stack.undo()
