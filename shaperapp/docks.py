@@ -96,20 +96,19 @@ class Docks:
             size = QSize(min(LIBRARY_FLOAT.width(), int(screen.width() * 0.8)),
                          min(LIBRARY_FLOAT.height(), int(screen.height() * 0.7)))
             frame = QRect(0, 0, size.width(), size.height())
-            frame.moveCenter(w.frameGeometry().center())
-            dock.setGeometry(frame.intersected(screen) if screen.contains(frame.center()) else frame)
+            frame.moveCenter(screen.center())           # at most 80 % × 70 % of it: inside
+            dock.setGeometry(frame)
             QTimer.singleShot(0, lambda: self._back_on_screen(room))   # once the window's
             # layout has dropped the dock's minimum height
         elif dock.height() < LIBRARY_MIN_PX:
             w.resizeDocks([dock], [max(LIBRARY_MIN_PX, int(w.height() * LIBRARY_SHARE))], VERTICAL)
 
     def _back_on_screen(self, room: int) -> None:
-        w = self._window
+        w, screen = self._window, available(self._window)
         if w.height() > room and not w.isMaximized() and not w.isFullScreen():
             w.resize(w.width(), max(room, w.minimumSizeHint().height()))
-            top = available(w).top()
-            if w.frameGeometry().bottom() > available(w).bottom():
-                w.move(w.x(), top)
+            if w.frameGeometry().bottom() > screen.bottom():
+                w.move(w.x(), screen.top())
 
     def __getitem__(self, name: str) -> QDockWidget:
         return self.docks[name]
