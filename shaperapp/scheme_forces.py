@@ -83,12 +83,12 @@ def nice_scale(largest_N: float, target_mm: float) -> tuple[float, float, float]
 
 def build_force_frames(model: DesignModel, g: Geometry, speed: int = 0) -> ForceFrames | None:
     """Every force arrow at every crank angle of speed ``speed`` (an index of
-    model.rpms; the last one if there are fewer), from model.dynamics."""
+    model.rpms), from model.dynamics."""
     dyn, design, sh = model.dynamics, model.design, model.motion.shape
     n = sh.phi.size
     if dyn.crank_angle.size != n:
         return None
-    s = min(max(int(speed), 0), len(dyn.rpm) - 1)
+    s = speed
     u = g.u
     a, b, c = sh.crank_pin.T, sh.lever_tip.T, sh.ram_joint.T
     zero = np.zeros(n)

@@ -12,7 +12,6 @@ import argparse
 import sys
 
 from ..library import Library
-from ..library_store import LibraryError
 from .common import UsageError
 from .output import print_json
 from .streaming import Progress
@@ -30,11 +29,10 @@ def run_refresh(args: argparse.Namespace, lib: Library) -> int:
     are left as they were and named on stderr)."""
     if args.all and args.names:
         raise UsageError("--all: give NAMEs or --all, not both")
-    names = lib.names() if args.all else (args.names or None)
     for name in args.names:
-        if name not in lib:
-            raise LibraryError("missing", f"there is no design named {name!r} in the library", lib.path)
-    total = len(lib.stale_names()) if names is None else len(names)
+        lib.get(name)                       # LibraryError('missing') names a wrong NAME
+    names = lib.names() if args.all else (args.names or lib.stale_names())
+    total = len(names)
     with Progress("recomputing figures", total) as progress:
         report = lib.refresh_figures(names, progress=lambda done, _total: progress.update(done))
     if args.json:
