@@ -25,6 +25,8 @@ from shaperapp.scheme import SchemeWidget  # noqa: E402
 from gui_helpers import main_window, shown  # noqa: E402
 from modal_watchdog import ModalWatchdog  # noqa: E402
 
+pytest_plugins = ["hang_guard"]
+
 # A modal dialog open this long in a test is one nobody will answer (see modal_watchdog).
 MODAL_LIMIT_S = 60.0
 
