@@ -1,23 +1,23 @@
 """Long explore computations off the GUI thread: a map of many designs, or an optimization.
 
-Each job is a QObject whose ``run`` executes on its own QThread. It works in chunks, reports
-progress and checks a cancel flag between chunks, so the window stays
-responsive and Cancel takes effect within one chunk. Results travel back
-through queued signals; the view never touches a job's data while it runs.
-Every number comes from ``core.sweep`` / ``core.optimize``.
+Each job is plain Python that ``worker.JobRunner`` runs on a worker thread (which never
+touches Qt; see there why). It works in chunks, reports progress and checks a cancel flag
+between chunks, so the window stays responsive and Cancel takes effect within one chunk.
+Results reach the view as the runner's signals, on the GUI thread; the view never touches
+a job's data while it runs. Every number comes from ``core.sweep`` / ``core.optimize``.
 """
 from __future__ import annotations
 
 import threading
 from dataclasses import dataclass
 import numpy as np
-from PySide6.QtCore import QObject, QThread, Signal
 
 from core.dynamics import MassProperties
 from core.errors import DesignError
 from core.optimize import Cancelled, Optimum, objective_of, optimize
 from core.spec import Spec
 from core.sweep import evaluate
+from .worker import Report
 
 # Figures a map can show: key → (objective it equals, needs loads, needs the rod variant).
 FIGURES = {
@@ -53,22 +53,16 @@ def figure_values(evaluation, key: str) -> np.ndarray:
     return np.max(evaluation.figures[name], axis=-1)
 
 
-class MapJob(QObject):
-    """Evaluate an nx × ny grid of designs, a few rows at a time."""
-
-    progress = Signal(int, int)         # rows done, rows in all
-    finished = Signal(object)           # MapResult
-    failed = Signal(object)             # the DesignError, or None for lack of memory
-    cancelled = Signal()
+class MapJob:
+    """Evaluate an nx × ny grid of designs, a few rows at a time (``worker.Job``)."""
 
     def __init__(self, spec: Spec, x_name: str, x: np.ndarray, y_name: str, y: np.ndarray,
                  rpms, masses: MassProperties | None, rows_per_chunk: int = 4) -> None:
-        super().__init__()
         self.spec, self.x_name, self.x, self.y_name, self.y = spec, x_name, x, y_name, y
         self.rpms, self.masses, self.rows = rpms, masses, max(1, rows_per_chunk)
         self.stop = threading.Event()
 
-    def run(self) -> None:
+    def run(self, report: Report) -> None:
         try:
             keys = [k for k, (_, loads, rod) in FIGURES.items()
                     if (self.masses is not None or not loads)]
@@ -77,7 +71,7 @@ class MapJob(QObject):
             errors: list[DesignError | None] = []
             for start in range(0, self.y.size, self.rows):
                 if self.stop.is_set():
-                    self.cancelled.emit()
+                    report("cancelled")
                     return
                 rows = self.y[start:start + self.rows]
                 yy, xx = np.meshgrid(rows, self.x, indexing="ij")
@@ -90,103 +84,35 @@ class MapJob(QObject):
                         continue
                     figures[key][part] = figure_values(ev, key).reshape(rows.size, self.x.size)
                 errors += [ev.error(i) for i in range(rows.size * self.x.size)]
-                self.progress.emit(min(start + rows.size, self.y.size), self.y.size)
-            self.finished.emit(MapResult(self.x_name, self.y_name, self.x, self.y, figures,
+                report("progress", min(start + rows.size, self.y.size), self.y.size)
+            report("finished", MapResult(self.x_name, self.y_name, self.x, self.y, figures,
                                          valid, errors))
         except DesignError as exc:
-            self.failed.emit(exc)
+            report("failed", exc)
         except MemoryError:
-            self.failed.emit(None)
+            report("failed", None)
 
 
-class OptimizeJob(QObject):
-    """Run ``core.optimize.optimize``; Cancel stops it before its next batch."""
-
-    progress = Signal(int, int)
-    finished = Signal(object)           # Optimum
-    failed = Signal(object)             # the DesignError, or None for lack of memory
-    cancelled = Signal()
+class OptimizeJob:
+    """Run ``core.optimize.optimize``; Cancel stops it before its next batch (``worker.Job``)."""
 
     def __init__(self, spec: Spec, bounds: dict[str, tuple[float, float]], objective: str,
                  rpms, masses: MassProperties | None) -> None:
-        super().__init__()
         self.spec, self.bounds, self.objective = spec, bounds, objective
         self.rpms, self.masses = rpms, masses
         self.stop = threading.Event()
 
-    def run(self) -> None:
+    def run(self, report: Report) -> None:
         try:
             best: Optimum = optimize(self.spec, self.bounds, self.objective, self.rpms,
                                      self.masses, should_stop=self.stop.is_set)
         except Cancelled:
-            self.cancelled.emit()
+            report("cancelled")
             return
         except DesignError as exc:
-            self.failed.emit(exc)
+            report("failed", exc)
             return
         except MemoryError:
-            self.failed.emit(None)
+            report("failed", None)
             return
-        self.finished.emit(best)
-
-
-class _Worker(QThread):
-    """A thread that runs one job's ``run`` and ends (no event loop). The job stays a
-    GUI-thread object, so its signals reach GUI-thread receivers queued."""
-
-    def __init__(self, job: QObject, parent: QObject) -> None:
-        super().__init__(parent)
-        self.job = job
-
-    def run(self) -> None:
-        self.job.run()  # type: ignore[attr-defined]
-
-
-class JobRunner(QObject):
-    """Runs one job at a time on a worker thread; a new job cancels the previous one.
-
-    ``ended(job)`` is emitted on the GUI thread when a job's thread has finished.
-    Connect a job's own signals to bound methods of GUI-thread objects (never to
-    lambdas, which would run on the worker thread).
-    """
-
-    ended = Signal(object)
-
-    def __init__(self, parent: QObject | None = None) -> None:
-        super().__init__(parent)
-        self._threads: dict[QThread, QObject] = {}
-        self._job: QObject | None = None
-
-    @property
-    def job(self) -> QObject | None:
-        """The job running now (None once cancelled or ended)."""
-        return self._job
-
-    def start(self, job: QObject) -> None:
-        self.cancel()
-        thread = _Worker(job, self)
-        thread.finished.connect(self._thread_finished)
-        self._threads[thread] = job
-        self._job = job
-        thread.start()
-
-    def _thread_finished(self) -> None:
-        thread = self.sender()
-        job = self._threads.pop(thread, None)  # type: ignore[arg-type]
-        if job is self._job:
-            self._job = None
-        if isinstance(thread, QThread):
-            thread.deleteLater()
-        self.ended.emit(job)
-
-    def cancel(self) -> None:
-        """Ask the running job to stop; it ends at its next chunk."""
-        if self._job is not None:
-            self._job.stop.set()  # type: ignore[attr-defined]
-        self._job = None
-
-    def wait(self, msecs: int = 10_000) -> bool:
-        """Block until every thread has ended (closing the window, tests)."""
-        for job in self._threads.values():
-            job.stop.set()  # type: ignore[attr-defined]
-        return all(t.wait(msecs) for t in list(self._threads))
+        report("finished", best)

@@ -20,11 +20,12 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout
                                QVBoxLayout, QWidget)
 
 from core.sweep import default_range, design_value, spec_changes, varied_parameters
-from .explore_jobs import FIGURES, JobRunner, MapJob, MapResult, OptimizeJob
+from .explore_jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
 from .image_export import export_scene
 from .messages import describe
 from .model import DesignModel
+from .worker import JobRunner
 
 REFRESH_MS = 300
 
@@ -37,6 +38,10 @@ class ExploreView(QWidget):
         self.model = model
         self.runner = JobRunner(self)
         self.runner.ended.connect(self._ended)
+        self.runner.progress.connect(self._progress)
+        self.runner.finished.connect(self._finished)
+        self.runner.failed.connect(self._failed)
+        self.runner.cancelled.connect(self._cancelled)
         self.result: MapResult | None = None
         self._basis = None
         self._stale = False          # the map no longer matches the model (refreshed when shown)
@@ -307,40 +312,33 @@ class ExploreView(QWidget):
     # ---- jobs -----------------------------------------------------------------
     def _start(self, job, text: str, busy: bool = False) -> None:
         self._refresh_timer.stop()       # a job started now supersedes a pending refresh
-        # Bound methods of this GUI-thread object: Qt queues the calls to this thread.
-        job.progress.connect(self._progress)
-        job.finished.connect(self._finished)
-        job.failed.connect(self._failed)
-        job.cancelled.connect(self._cancelled)
         self.status.setText(text)
         self.progress.setRange(0, 0 if busy else 1)
         self.progress.setValue(0)
         self._set_busy(True)
         self.runner.start(job)
 
-    def _current_job(self) -> bool:
-        return self.sender() is self.runner.job
-
-    def _progress(self, done: int, total: int) -> None:
-        if self._current_job():
+    # Reports of a job that a newer one has replaced are ignored.
+    def _progress(self, job, done: int, total: int) -> None:
+        if job is self.runner.job:
             self.progress.setRange(0, total)
             self.progress.setValue(done)
 
-    def _finished(self, result) -> None:
-        if not self._current_job():
+    def _finished(self, job, result) -> None:
+        if job is not self.runner.job:
             return
         if isinstance(result, MapResult):
             self._map_done(result)
         else:
             self._optimum_done(result)
 
-    def _failed(self, error) -> None:
-        if self._current_job():
+    def _failed(self, job, error) -> None:
+        if job is self.runner.job:
             reason = describe(error) if error is not None else self.tr("not enough memory")
             self.status.setText(self.tr("Could not compute: %1").replace("%1", reason))
 
-    def _cancelled(self) -> None:
-        if self._current_job():
+    def _cancelled(self, job) -> None:
+        if job is self.runner.job:
             self.status.setText(self.tr("Cancelled."))
 
     def _ended(self, job) -> None:

@@ -217,3 +217,26 @@ def test_opening_the_tab_computes_the_map_and_a_hidden_tab_waits(qtbot, tmp_path
         assert valid.any()
         assert np.allclose(explore.result.figures["accel"][valid], expected[valid], rtol=1e-12)
         explore.shutdown()
+
+
+def test_closing_the_window_mid_map_ends_the_worker_and_gives_collection_back(qtbot, tmp_path):
+    import gc
+
+    from PySide6.QtCore import QSettings
+
+    from shaperapp.main_window import MainWindow
+    from shaperapp.model import DesignModel
+    from shaperapp.worker import COLLECTOR
+
+    was_enabled = gc.isenabled()
+    window = MainWindow(DesignModel(), QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    qtbot.addWidget(window)
+    window.show()
+    window.explore.count.setValue(150)                  # a map that takes seconds
+    window.tabs.setCurrentWidget(window.explore)
+    qtbot.waitUntil(lambda: window.explore.runner.running, timeout=5_000)
+    assert COLLECTOR.holding and not gc.isenabled()      # the worker never collects
+    window.model.set_clean(window.model.path)           # no unsaved-changes question
+    window.close()
+    assert not window.explore.runner.running
+    assert not COLLECTOR.holding and gc.isenabled() == was_enabled
