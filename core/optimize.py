@@ -128,7 +128,9 @@ def _refine(values, low, high, best_x, best, seed):
                                     updating="deferred")
     candidates = [(best, best_x[free])]
     if result.fun < PENALTY:
-        candidates.append((float(result.fun), result.x))
+        # Differential evolution maps [0, 1] onto the box and can land one rounding step
+        # past an end: outside the user's bounds, and a start Nelder–Mead warns about.
+        candidates.append((float(result.fun), np.clip(result.x, low[free], high[free])))
     start = min(candidates, key=lambda c: c[0])[1]
     local = minimize(lambda x: float(penalized(x)[0]), start, method="Nelder-Mead",
                      bounds=box, options={"xatol": 1e-9 * float(np.max(high - low)), "fatol": 1e-12,

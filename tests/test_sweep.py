@@ -173,3 +173,27 @@ def test_objective_needs_rod_or_loads():
     assert info.value.parameter == "objective"
     with pytest.raises(DesignError):
         optimize(block, {"crank": (80.0, 120.0)}, "flywheel", [40.0])
+
+
+def test_a_start_one_rounding_step_past_the_box_is_clipped(monkeypatch):
+    """Differential evolution can return a point one rounding step past an end of the box;
+    the Nelder–Mead polish then started outside its bounds with an OptimizeWarning
+    (printed to the console of the GUI). The polish now starts inside."""
+    import warnings
+
+    import scipy.optimize
+
+    real = scipy.optimize.differential_evolution
+
+    def one_step_past(func, bounds, **kwargs):
+        result = real(func, bounds, **kwargs)
+        result.x = np.array([np.nextafter(hi, np.inf) for _, hi in bounds])
+        result.fun = -1.0                  # better than anything, so the polish starts there
+        return result
+
+    monkeypatch.setattr(scipy.optimize, "differential_evolution", one_step_past)
+    spec = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        best = optimize(spec, {"crank": (60.0, 140.0)}, "accel", [40.0])
+    assert 60.0 <= best.x[0] <= 140.0
