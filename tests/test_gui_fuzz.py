@@ -26,7 +26,7 @@ from shaperapp.model_results import MAX_GUI_SAMPLES
 
 from hostile_files import VALID, build_case
 
-SEED = 20240611
+SEED = int(os.environ.get("SHAPER_GUI_FUZZ_SEED", "20240611"))
 # 2000 actions took 9.5-12 s on the 2-core machine (ten runs, 24 Nov 2026), and 20000 took
 # 210 s beside a busy loop; SHAPER_GUI_FUZZ_ACTIONS runs more (e.g. 20000 before a release).
 ACTIONS = int(os.environ.get("SHAPER_GUI_FUZZ_ACTIONS", "2000"))
