@@ -361,3 +361,18 @@ def test_rod_side_without_a_rod_is_refused_not_ignored():
     one_error_line(status, err, "--rod-side")
     status, out, err = shaper_in_process("synth", *SEED, "--rod-side", "leading", "--rod-ratio", "0.4")
     assert status == 0 and "leading" in out
+
+
+@pytest.mark.parametrize("argv, option, typed", [
+    (["table", *SEED, "--positions", "0"], "--positions", "0"),
+    (["table", *SEED, "--positions", "-3"], "--positions", "-3"),
+    (["table", *SEED, "--positions", "1e9"], "--positions", "1000000000"),
+    (["table", *SEED, "--positions", "2.5"], "--positions", "2.5"),
+    (["analyze", "--crank", "0", "--K", "1.4", "--stroke", "300"], "--crank", "0"),
+    (["analyze", *SEED, "--rpm", "0"], "--rpm", "0"),
+])
+def test_the_message_echoes_a_number_as_it_was_typed(argv, option, typed):
+    """"got 0", not the float's "got 0.0" (a whole number typed reads as one)."""
+    status, out, err = shaper_in_process(*argv)
+    line = one_error_line(status, err, option)
+    assert line.endswith(f"(got {typed})"), line

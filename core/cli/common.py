@@ -255,9 +255,18 @@ def design_from_args(args: argparse.Namespace) -> Design:
         raise UsageError(design_error_text(exc, _spec_option(exc.parameter, spec, args))) from None
 
 
+def given_text(value: object) -> str:
+    """A value as the user would have typed it: 0 for 0.0, 1000000000 for 1e9 (the shortest
+    text that reads back as the same float, without a trailing ".0")."""
+    if isinstance(value, float):
+        text = repr(value)
+        return text[:-2] if text.endswith(".0") else text
+    return str(value)
+
+
 def design_error_text(exc: DesignError, option: str | None = None) -> str:
     """The one-line message for a DesignError: option, what is allowed, the value given."""
-    text = str(exc.value)
+    text = given_text(exc.value)
     value = text if len(text) <= 60 else text[:57] + "..."
     return f"{option or option_name(exc.parameter)}: {exc.allowed} (got {value})"
 
