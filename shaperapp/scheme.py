@@ -120,14 +120,20 @@ class SchemeWidget(QWidget):
     def fit(self) -> None:
         """Show the whole mechanism, its travel and its dimensions."""
         if self._geometry is not None:
-            self._view.setRange(self._geometry.fit_rect, padding=0.04)
+            self._view.setRange(self._fit_rect(), padding=0.04)
             self._view.updateMatrix()     # now, not while preparing a paint (a second paint)
+
+    def _fit_rect(self) -> QRectF:
+        """The drawing, with the force arrows' reach over the cycle while they are shown."""
+        rect = self._geometry.fit_rect
+        forces = self._forces.extent(self._model, self._geometry) if self.forces_visible() else None
+        return rect if forces is None else rect.united(forces)
 
     def _still_fits(self) -> bool:
         """The view shown holds the new design's drawing and the drawing fills at least
         FILL_KEPT of it across or up: a nudged input keeps the view, as in the plots."""
         view = self._view.viewRect()
-        want = self._geometry.fit_rect
+        want = self._fit_rect()
         return view.contains(want) and (want.width() >= FILL_KEPT * view.width()
                                         or want.height() >= FILL_KEPT * view.height())
 
@@ -336,6 +342,11 @@ class SchemeWidget(QWidget):
 
     def _apply_forces_visible(self, visible: bool) -> None:
         self._forces.set_visible(visible)
+        if visible and self._geometry is not None and not self._stale:
+            # A view showing the whole mechanism widens to the arrows; a zoomed one stays.
+            view = self._view.viewRect()
+            if view.contains(self._geometry.fit_rect) and not view.contains(self._fit_rect()):
+                self.fit()
         self._draw_forces(self._model.angle_index)
 
     def _draw_forces(self, index: int) -> None:

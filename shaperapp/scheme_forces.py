@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from PySide6.QtCore import QObject
+from PySide6.QtCore import QObject, QPointF, QRectF
 from PySide6.QtGui import QColor, QFont, QPainterPath
 from PySide6.QtWidgets import QGraphicsItem
 
@@ -29,6 +29,7 @@ FORCE_SHARE = 0.35         # the cycle's largest force is drawn about this many 
 FORCE_HEAD = 0.04          # arrow head length in L3 (shorter only on arrows shorter than 1.7 heads)
 FORCE_HEAD_HALF = 0.3      # half-width of an arrow head per head length
 FORCE_LABEL_GAP = 0.4      # gap between an arrow's free end and its label, u
+LABEL_ROOM = 3.0           # room kept beside the arrows' reach for their labels when fitting, u
 FORCE_ZERO = 1e-9          # a force below this share of the largest one is not drawn
 Z_FORCE = Z_BLOCK + 0.5    # over links and blocks, under the pin markers
 Z_FORCE_LABEL = Z_LABEL + 1
@@ -205,16 +206,36 @@ class ForceLayer(QObject):
                 tag.setVisible(False)
             self._names = []
 
-    def draw(self, index: int, model: DesignModel, g: Geometry, mm_per_px: tuple[float, float],
-             obstacles: list[Box]) -> None:
-        """Put the prepared arrows of crank-angle ``index`` into the one force path."""
-        if not self._visible:
-            return
+    def _current_frames(self, model: DesignModel, g: Geometry) -> ForceFrames | None:
+        """The arrows of this design, geometry and speed, built when one of them changed."""
         ff = self.frames
         speed = min(max(self.speed, 0), len(model.dynamics.rpm) - 1)
         if ff is None or ff.source is not model.dynamics or ff.geometry is not g or ff.speed != speed:
             ff = self.frames = build_force_frames(model, g, speed)
             self._show_caption()
+        return ff
+
+    def extent(self, model: DesignModel, g: Geometry) -> QRectF | None:
+        """Where the arrows reach over the whole cycle, mm, with room for their labels
+        (None while hidden or without forces): Fit shows them all, the cutting force
+        ahead of the tool included."""
+        if not self._visible:
+            return None
+        ff = self._current_frames(model, g)
+        if ff is None or not ff.shown.any():
+            return None
+        drawn = ff.coords[ff.shown]                                  # (m, 12)
+        xs, ys = drawn[:, 0::2], drawn[:, 1::2]
+        room = LABEL_ROOM * g.u
+        return QRectF(QPointF(float(xs.min()) - room, float(ys.min()) - room),
+                      QPointF(float(xs.max()) + room, float(ys.max()) + room))
+
+    def draw(self, index: int, model: DesignModel, g: Geometry, mm_per_px: tuple[float, float],
+             obstacles: list[Box]) -> None:
+        """Put the prepared arrows of crank-angle ``index`` into the one force path."""
+        if not self._visible:
+            return
+        ff = self._current_frames(model, g)
         names: list[str] = []
         path = QPainterPath()
         labels = []

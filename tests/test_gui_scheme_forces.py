@@ -393,3 +393,29 @@ def test_arrows_follow_the_chosen_speed(scheme, model):
     model.set_rpms([30.0])                                  # gone: back to the first
     scheme._catch_up()
     assert scheme.force_speed() == 0 and "30 r/min" in scheme.force_caption()
+
+
+@pytest.mark.parametrize("variant", ["block", "rod"])
+def test_fit_shows_every_arrow_over_the_whole_cycle(scheme, model, variant):
+    """The cutting force ahead of the tool reached past the fitted view (cut at its edge)."""
+    if variant == "rod":
+        use_rod(model)
+    show(scheme)                                     # a fitted view widens to the arrows
+    for fitted_again in (False, True):
+        if fitted_again:
+            scheme.fit()
+        scheme.drawn_forces()                        # the scheme caught up with the model
+        view = scheme._view.viewRect()
+        for index in range(0, model.angle_count, 3):
+            model.set_angle_index(index)
+            for name, (start, tip) in arrows(scheme).items():
+                for x, y in (start, tip):
+                    assert view.left() <= x <= view.right() and view.top() <= y <= view.bottom(), \
+                        (fitted_again, index, name, (x, y))
+
+
+def test_showing_forces_keeps_a_view_the_user_zoomed(scheme, model):
+    scheme._view.scaleBy((0.3, 0.3))
+    zoomed = scheme._view.viewRect()
+    show(scheme)
+    assert scheme._view.viewRect() == zoomed
