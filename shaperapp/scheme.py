@@ -110,6 +110,7 @@ class SchemeWidget(QWidget):
         self._mechanism = MechanismLayer(add, self)
         self._dimensions = DimensionLayer(add, self)
         self._forces = ForceLayer(add, self._view, self)
+        self._view.sigTransformChanged.connect(self._dimensions.separate_chain_labels)
         self._retranslate()
         model.resultsChanged.connect(self._on_results)
         model.angleChanged.connect(self._on_angle)

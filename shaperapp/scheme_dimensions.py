@@ -86,6 +86,7 @@ class DimensionLayer(QObject):
             item.setZValue(Z_DIM)
             add(item)
         self._visible = True
+        self._chain: tuple[float, tuple] | None = None   # (y of O2, mid text positions of L2, h)
 
     def update(self, model: DesignModel, g: Geometry) -> None:
         """Place the dimensions of the model's design; texts are translated here."""
@@ -124,6 +125,28 @@ class DimensionLayer(QObject):
             if tuple(item.anchor) != tuple(dim.anchor):
                 item.setAnchor(dim.anchor)
             item.setPos(*dim.text_pos)
+        self._chain = (float(p1[1]), tuple(dim.text_pos for dim in dims[:2]))
+        self.separate_chain_labels()
+
+    def separate_chain_labels(self) -> None:
+        """Keep the L2 and h labels apart as drawn now (again after a zoom): each sits at
+        the middle of its part of the vertical chain, but where one part is shorter on
+        screen than its text (a tiny L2 or h), the other label moves away from the point
+        they share, along its own part, until the two no longer touch."""
+        if self._chain is None:
+            return
+        shared, mids = self._chain
+        l2, h = self._texts[:2]
+        for item, pos in zip((l2, h), mids):
+            item.setPos(*pos)
+        boxes = [text_box(l2), text_box(h)]                  # (left, right, bottom, top), mm
+        line = boxes[1][1] - boxes[1][0]                     # the vertical text's line height
+        overlap = min(boxes[0][3], boxes[1][3]) - max(boxes[0][2], boxes[1][2]) + 0.3 * line
+        if overlap <= 0.0:
+            return
+        longer = 1 if abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
+        x, y = mids[longer]
+        self._texts[longer].setPos(x, y + math.copysign(overlap, y - shared))
 
     def set_visible(self, visible: bool) -> None:
         self._visible = visible

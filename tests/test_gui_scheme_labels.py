@@ -84,3 +84,28 @@ def test_animation_readout_at_a_limit_position_has_no_negative_zero(qtbot, model
     texts = [label.text() for label in bar.findChildren(QLabel)]
     assert "0.000" in texts
     assert not any(t.startswith("-0.0") and float(t) == 0.0 for t in texts if t)
+
+
+def boxes_touch(a, b) -> bool:
+    return a[0] < b[1] and b[0] < a[1] and a[2] < b[3] and b[2] < a[3]
+
+
+@pytest.mark.parametrize("spec", [{"crank": 0.5, "time_ratio": 4.9},      # L2 = 0.6 mm
+                                  {"crank": 300.0, "time_ratio": 1.05, "stroke": 700.0},
+                                  {}])
+def test_l2_and_h_labels_never_overlap_even_after_a_zoom(scheme, model, spec):
+    """At L1 = 0.5 mm, K = 4.9 the vertical "L2 = 0.6" and "h = 87.8" ran into each other."""
+    if spec:
+        model.set_spec(**spec)
+        assert model.error is None
+    for zoom in (1.0, 2.5, 0.6):
+        scheme._view.scaleBy((zoom, zoom))
+        boxes = scheme.dimension_label_boxes()
+        assert not boxes_touch(boxes["L2"], boxes["h"]), (zoom, boxes["L2"], boxes["h"])
+    scheme.fit()
+    boxes = scheme.dimension_label_boxes()
+    if not spec:                # the usual design: each label at the middle of its part
+        for name, (lo, hi) in {"L2": (0.0, model.design.frame),
+                               "h": (model.design.frame, model.design.frame
+                                     + model.design.guide_above_crank)}.items():
+            assert (boxes[name][2] + boxes[name][3]) / 2 == pytest.approx((lo + hi) / 2, abs=1.0)
