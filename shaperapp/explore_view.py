@@ -227,9 +227,16 @@ class ExploreView(QWidget):
     def _map_done(self, result: MapResult) -> None:
         self.result = result
         self._basis = self._current_basis()
-        self.status.setText(self.tr("%1 of %2 designs are valid.").replace(
-            "%1", str(int(result.valid.sum()))).replace("%2", str(result.valid.size)))
+        self.status.setText(self._map_status())
         self._show_figure()
+
+    def _map_status(self) -> str:
+        """What the status line says of the map shown (empty before the first)."""
+        result = self.result
+        if result is None:
+            return ""
+        return self.tr("%1 of %2 designs are valid.").replace(
+            "%1", str(int(result.valid.sum()))).replace("%2", str(result.valid.size))
 
     def _figure_changed(self) -> None:
         key = self.figure.currentData()
@@ -307,6 +314,7 @@ class ExploreView(QWidget):
         self.optimum.setText(self.tr("Best: %1 %2 at %3 (the design before: %4); loaded into "
                                      "the form.").replace("%1", f"{best.value:.5g}")
                              .replace("%2", unit).replace("%3", where).replace("%4", start))
+        self.status.setText(self._map_status())       # no longer "Optimizing…"
         self.model.set_spec(**spec_changes(dict(zip(best.names, best.x))))
 
     # ---- jobs -----------------------------------------------------------------

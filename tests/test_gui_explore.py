@@ -93,6 +93,7 @@ def test_optimize_loads_the_best_design(qtbot, view, model):
     assert model.metrics.pressure_angle_max_deg == pytest.approx(best.value, rel=1e-9)
     assert model.valid_spec.rod_ratio == pytest.approx(best.x[0])
     assert f"{best.value:.5g}" in view.optimum.text()
+    assert view.status.text() != view.tr("Optimizing…")     # it stayed after the optimum came
 
 
 def test_cancel_stops_a_long_map_and_the_window_stays_responsive(qtbot, view):
