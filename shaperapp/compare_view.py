@@ -150,8 +150,7 @@ class CompareView(QWidget):
         """Compare the designs at the chosen speed; keep the last result on an error."""
         if len(self._candidates) < 2:
             self.comparison = None
-            self.hint.setText(self.tr("Pick 2 to 6 designs: select them in the library and press "
-                                      "Compare, or add the design on screen or design files here."))
+            self.hint.setText(self._pick_hint())
             self._show()
             return
         try:
@@ -161,6 +160,10 @@ class CompareView(QWidget):
             return
         self.hint.setText("")
         self._show()
+
+    def _pick_hint(self) -> str:
+        return self.tr("Pick 2 to 6 designs: select them in the library and press "
+                       "Compare, or add the design on screen or design files here.")
 
     def _show(self) -> None:
         result = self.comparison
@@ -269,6 +272,8 @@ class CompareView(QWidget):
         self.speed_label.setText(self.tr("Speed (r/min):"))
         self.export_csv_button.setText(self.tr("Export CSV…"))
         self.export_image_button.setText(self.tr("Export PNG/SVG…"))
+        if len(self._candidates) < 2:          # the hint stayed in the language it was set in
+            self.hint.setText(self._pick_hint())
         self._fill_table()
 
     def sizeHint(self) -> QSize:
