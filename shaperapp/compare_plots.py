@@ -23,6 +23,7 @@ STYLES = (Qt.PenStyle.SolidLine, Qt.PenStyle.DashLine, Qt.PenStyle.DotLine, Qt.P
           Qt.PenStyle.DashDotDotLine, Qt.PenStyle.CustomDashLine)
 CURVES = ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
 WHITE = QColor("white")
+LEGEND_ROW_PX = 26     # one row of legend entries (three designs a row)
 
 
 def design_pen(index: int) -> pg.QtGui.QPen:
@@ -36,19 +37,30 @@ def design_pen(index: int) -> pg.QtGui.QPen:
 
 
 class ComparePlots(pg.GraphicsLayoutWidget):
-    """Four x-linked plots over the crank angle, one curve per design, with a legend."""
+    """Four x-linked plots over the crank angle in a 2 × 2 grid, one curve per design, under
+    a legend row of their own.
+
+    A grid, not a column: on a laptop screen the Compare tab has about 300 px for its
+    plots, and four plots stacked got 45 px each, too short for their axis titles (which
+    ran into each other) or more than one tick. The legend sits above the plots, so it
+    never covers a curve.
+    """
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setBackground("w")
+        self._legend = pg.LegendItem(colCount=3)
+        self._legend.setLabelTextColor("k")
+        self.addItem(self._legend, row=0, col=0, colspan=2)
+        self.ci.layout.setRowMaximumHeight(0, LEGEND_ROW_PX)
+        self.ci.setContentsMargins(2, 2, 2, 2)
         self._items: dict[str, pg.PlotItem] = {}
-        for row, key in enumerate(CURVES):
+        for k, key in enumerate(CURVES):
             item = styled_plot_item(0.05)
-            self.addItem(item, row=row, col=0)
+            self.addItem(item, row=1 + k // 2, col=k % 2)
             self._items[key] = item
-            if row:
+            if k:
                 item.setXLink(self._items[CURVES[0]])
-        self._legend = self._items[CURVES[0]].addLegend(offset=(10, 5), colCount=2)
         self._retranslate()
 
     def item(self, key: str) -> pg.PlotItem:
@@ -95,4 +107,5 @@ class ComparePlots(pg.GraphicsLayoutWidget):
                   self.tr("Torque (N·m)"))
         for key, title in zip(CURVES, titles):
             self._items[key].setLabel("left", title)
-        self._items[CURVES[-1]].setLabel("bottom", self.tr("Crank angle (°)"))
+        for key in CURVES[2:]:                        # the bottom row names the shared x axis
+            self._items[key].setLabel("bottom", self.tr("Crank angle (°)"))

@@ -69,8 +69,8 @@ class CompareView(QWidget):
         self.content = QSplitter(Qt.Orientation.Vertical)     # what PNG/SVG exports show
         self.content.addWidget(self.plots)
         self.content.addWidget(self.table)
-        self.content.setStretchFactor(0, 3)
-        self.content.setStretchFactor(1, 2)
+        self.content.setStretchFactor(0, 4)                   # the plots need the height; the
+        self.content.setStretchFactor(1, 1)                   # table scrolls (or drag the bar)
 
         picks = QHBoxLayout()                  # kept narrow: the view shares a tab with the plots
         picks.addWidget(self.list, 1)
@@ -102,7 +102,7 @@ class CompareView(QWidget):
 
     def add_candidate(self, candidate: Candidate) -> bool:
         if len(self._candidates) >= MAX_DESIGNS:
-            self.hint.setText(self.tr("At most %1 designs can be compared.").replace("%1", str(MAX_DESIGNS)))
+            self._say(self.tr("At most %1 designs can be compared.").replace("%1", str(MAX_DESIGNS)))
             return False
         label = unique_name(candidate.label, [c.label for c in self._candidates])
         self._candidates.append(Candidate(label, candidate.spec, candidate.masses))
@@ -150,16 +150,21 @@ class CompareView(QWidget):
         """Compare the designs at the chosen speed; keep the last result on an error."""
         if len(self._candidates) < 2:
             self.comparison = None
-            self.hint.setText(self._pick_hint())
+            self._say(self._pick_hint())
             self._show()
             return
         try:
             self.comparison = compare(self._candidates, self.speed.value())
         except DesignError as exc:
-            self.hint.setText(describe(exc))
+            self._say(describe(exc))
             return
-        self.hint.setText("")
+        self._say("")
         self._show()
+
+    def _say(self, text: str) -> None:
+        """Show ``text`` above the plots; an empty hint takes no room from them."""
+        self.hint.setText(text)
+        self.hint.setVisible(bool(text))
 
     def _pick_hint(self) -> str:
         return self.tr("Pick 2 to 6 designs: select them in the library and press "
@@ -273,7 +278,7 @@ class CompareView(QWidget):
         self.export_csv_button.setText(self.tr("Export CSV…"))
         self.export_image_button.setText(self.tr("Export PNG/SVG…"))
         if len(self._candidates) < 2:          # the hint stayed in the language it was set in
-            self.hint.setText(self._pick_hint())
+            self._say(self._pick_hint())
         self._fill_table()
 
     def sizeHint(self) -> QSize:

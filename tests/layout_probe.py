@@ -61,6 +61,29 @@ def table_report(app: QApplication, table) -> dict:
             "titles": [table.verticalHeaderItem(r).text() for r in range(table.rowCount())]}
 
 
+def compare_report(app: QApplication, window) -> dict:
+    """The Compare tab with two designs: each plot's view box and left-axis title (px) and
+    the legend's box, in the plots' scene."""
+    view = window.compare
+    window.tabs.setCurrentWidget(view)
+    view.add_current()
+    window.model.set_spec(time_ratio=1.6)
+    view.add_current()
+    settle(app)
+    plots = {}
+    for key in ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m"):
+        item = view.plots.item(key)
+        box = item.getViewBox().sceneBoundingRect()
+        title = item.getAxis("left").label
+        shown = title.sceneBoundingRect()
+        plots[key] = {"box": [box.x(), box.y(), box.width(), box.height()],
+                      "title": [shown.x(), shown.y(), shown.width(), shown.height()],
+                      "title_text": title.toPlainText() if title.isVisible() else ""}
+    legend = view.plots._legend.sceneBoundingRect()
+    return {"plots": plots, "legend": [legend.x(), legend.y(), legend.width(), legend.height()],
+            "legend_rows": len(view.plots._legend.items)}
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument("--settings", required=True)
@@ -68,6 +91,7 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--speeds", action="append", default=[])
     parser.add_argument("--resize", help="WxH before closing (to save that geometry)")
     parser.add_argument("--library", action="store_true", help="then show the library pane and report it")
+    parser.add_argument("--compare", action="store_true", help="then compare two designs and report the plots")
     args = parser.parse_args(argv)
     from shaperapp.style import configure_plots
     configure_plots()
@@ -98,6 +122,8 @@ def main(argv: list[str]) -> int:
         report["library"] = {"floating": window.library_dock.isFloating(),
                              "frame": rect(window.frameGeometry()), "dock": rect(window.library_dock.frameGeometry()),
                              "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
+    if args.compare:
+        report["compare"] = compare_report(app, window)
     if args.resize:
         w, h = (int(v) for v in args.resize.split("x"))
         window.resize(w, h)

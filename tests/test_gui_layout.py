@@ -73,6 +73,30 @@ def test_window_and_every_result_table_fit(tmp_path, width, height, lang):
             assert "Frame O2O4 L2, mm" in dims["titles"]
 
 
+def overlap(a: list[float], b: list[float]) -> bool:
+    return a[0] < b[0] + b[2] and b[0] < a[0] + a[2] and a[1] < b[1] + b[3] and b[1] < a[1] + a[3]
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+def test_compare_plots_readable_on_a_laptop(tmp_path, width, height, lang):
+    """Stacked four high, the Compare tab's plots got 45 px each at 1366×768: their axis
+    titles ran into each other and the legend covered the curves."""
+    report = probe(tmp_path, width, height, "--lang", lang, "--compare")["compare"]
+    assert report["legend_rows"] == 2
+    for key, plot in report["plots"].items():
+        x, y, w, h = plot["box"]
+        assert h >= 70 and w >= 150, (key, plot["box"])     # 36-45 px before
+        assert plot["title_text"].strip(), key
+        assert not overlap(report["legend"], plot["box"]), key
+        assert not overlap(report["legend"], plot["title"]), key
+    plots = list(report["plots"].values())
+    for i, a in enumerate(plots):
+        for b in plots[i + 1:]:
+            assert not overlap(a["box"], b["box"])
+            assert not overlap(a["title"], b["title"]), (a, b)        # titles ran into each other
+
+
 def test_saved_geometry_only_if_it_fits_the_screen(tmp_path):
     big = probe(tmp_path, 1920, 1080, "--resize", "1700x1000")
     assert big["resized"] == [1700, 1000]
