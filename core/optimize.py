@@ -123,7 +123,12 @@ def _refine(values, low, high, best_x, best, seed):
         return np.where(np.isfinite(out), out, PENALTY)
 
     box = list(zip(low[free], high[free]))
-    result = differential_evolution(penalized, box, x0=best_x[free], seed=seed, maxiter=40,
+    # SciPy scales x0 into [0, 1] about the box's middle, and one rounding step can put a
+    # start on an end of the box outside it ("x0 lay outside the specified bounds", a
+    # ValueError): the start is drawn a relative 1e-12 of the way toward the middle.
+    middle = 0.5 * (low[free] + high[free])
+    x0 = middle + (best_x[free] - middle) * (1.0 - 1e-12)
+    result = differential_evolution(penalized, box, x0=x0, seed=seed, maxiter=40,
                                     popsize=8, tol=1e-8, polish=False, vectorized=True,
                                     updating="deferred")
     candidates = [(best, best_x[free])]

@@ -197,3 +197,17 @@ def test_a_start_one_rounding_step_past_the_box_is_clipped(monkeypatch):
         warnings.simplefilter("error")
         best = optimize(spec, {"crank": (60.0, 140.0)}, "accel", [40.0])
     assert 60.0 <= best.x[0] <= 140.0
+
+
+def test_a_sweep_best_on_the_end_of_the_box_starts_the_search():
+    """The sweep's best lay on an end of the box; SciPy's scaling put it one rounding
+    step outside and differential evolution raised ValueError ("Some entries in x0 lay
+    outside the specified bounds"): found by the GUI fuzz test's Optimize, bounds found
+    by a search for ends that scale past 1."""
+    low, high = 114.57213655596335, 144.69066664934076
+    middle = 0.5 * (low + high)
+    assert (low - middle) * (1.0 / (high - low)) + 0.5 < 0.0   # SciPy's scaling of the low end
+    best = optimize(Spec(), {"crank": (low, high)}, "accel", [40.0])
+    assert low <= best.x[0] <= high
+    reference = brute(Spec(), ("crank",), ((low, high),), "accel", [40.0], 4001)
+    assert best.value <= reference * (1 + 1e-12)
