@@ -1,7 +1,8 @@
 """Issue 7: a fixed-seed run of a few thousand random user actions on the whole window.
 
 Random text goes into every field (design, speeds, step, loads), every choice is
-switched, speeds are added and removed, the animation is played and stepped, the
+switched, speeds are added and removed, the animation is played and stepped, maps and
+optimizations are started, cancelled and clicked on the Explore tab (its worker runs on), the
 language switched, edits undone and redone, images and CSV exported to tmp_path,
 good and hostile files opened, the design saved. Dialogs answer at random. No
 exception may reach ``sys.excepthook``; after every action what Save would write is
@@ -141,6 +142,25 @@ class Fuzzer:
         w.scheme.set_force_speed(rng.randrange(len(w.model.rpms)))
         w.tabs.setCurrentIndex(rng.randrange(w.tabs.count()))
 
+    def explore(self) -> None:
+        """The Explore tab: maps and optimizations run on the worker while the fuzz goes on."""
+        view, rng = self.w.explore, self.rng
+        pick = rng.randrange(6)
+        if pick == 0:
+            view.count.setValue(rng.choice((3, 8, 20, 60)))
+            view.compute.click()
+        elif pick == 1:
+            view.optimize.click()
+        elif pick == 2:
+            view.cancel.click()
+        elif pick == 3:
+            combo = rng.choice((view.figure, *view.axis_names, view.objective))
+            combo.setCurrentIndex(rng.randrange(combo.count()))
+        elif pick == 4 and view.result is not None:
+            view._clicked(rng.randrange(view.result.y.size), rng.randrange(view.result.x.size))
+        else:
+            self.w.tabs.setCurrentWidget(view)
+
     def undo_redo(self) -> None:
         (self.w.act_undo if self.rng.random() < 0.6 else self.w.act_redo).trigger()
 
@@ -158,7 +178,7 @@ class Fuzzer:
     def run(self, count: int) -> float:
         table = [(self.type_design, 30), (self.type_load, 12), (self.choice, 14), (self.speeds, 8),
                  (self.animation, 14), (self.view, 4), (self.undo_redo, 10), (self.language, 1),
-                 (self.export, 3), (self.files_action, 4)]
+                 (self.export, 3), (self.files_action, 4), (self.explore, 3)]
         actions, weights = zip(*table)
         slowest = 0.0
         for _ in range(count):
@@ -215,12 +235,13 @@ def test_random_user_actions_raise_nothing(qtbot, tmp_path, monkeypatch, patched
     start = time.perf_counter()
     try:
         slowest = fuzzer.run(ACTIONS)
+        assert window.explore.runner.wait(30_000)           # the last map or optimization ended
     finally:
         window.animation.play_action.setChecked(False)
         i18n.set_language("en")
     elapsed = time.perf_counter() - start
     assert caught == [], caught[:3]
-    assert sum(fuzzer.counts.values()) == ACTIONS and len(fuzzer.counts) == 10
+    assert sum(fuzzer.counts.values()) == ACTIONS and len(fuzzer.counts) == 11
     print(f"\nGUI fuzz: {ACTIONS} actions in {elapsed:.1f} s, slowest {slowest:.2f} s; {fuzzer.counts}; "
           f"seconds {({k: round(v, 1) for k, v in fuzzer.seconds.items()})}")
     # What is on screen still saves and reopens.
