@@ -45,30 +45,38 @@ class Job(Protocol):
 class GuiThreadCollector:
     """Automatic garbage collection moved to the GUI thread while workers run.
 
-    ``hold`` (counted) turns automatic collection off; ``collect_due`` collects the
-    generations whose thresholds are passed, as the interpreter would have; the last
-    ``release`` gives collection back to the interpreter as it was found.
+    ``hold(thread)`` turns automatic collection off while that thread lives;
+    ``collect_due`` collects the generations whose thresholds are passed, as the
+    interpreter would have; when the last held thread has ended (``release``, or found
+    ended by any later call, if its runner was deleted first), collection is given back
+    to the interpreter as it was found.
     """
 
     def __init__(self) -> None:
-        self._holders = 0
+        self._threads: set[threading.Thread] = set()
         self._was_enabled = False
 
     @property
     def holding(self) -> bool:
-        return self._holders > 0
+        self._forget_ended()
+        return bool(self._threads)
 
-    def hold(self) -> None:
-        if self._holders == 0:
+    def hold(self, thread: threading.Thread) -> None:
+        self._forget_ended()
+        if not self._threads:
             self._was_enabled = gc.isenabled()
             gc.disable()
-        self._holders += 1
+        self._threads.add(thread)
 
-    def release(self) -> None:
-        if self._holders == 0:
+    def release(self, thread: threading.Thread) -> None:
+        self._threads.discard(thread)
+        self._forget_ended()
+
+    def _forget_ended(self) -> None:
+        if not self._threads:
             return
-        self._holders -= 1
-        if self._holders == 0:
+        self._threads = {t for t in self._threads if t.is_alive()}
+        if not self._threads:
             self.collect_due()
             if self._was_enabled:
                 gc.enable()
@@ -87,6 +95,19 @@ class GuiThreadCollector:
 
 
 COLLECTOR = GuiThreadCollector()
+
+
+def _work(job: Job, events: queue.SimpleQueue) -> None:
+    """The worker thread: only the job's own code and the queue (not even the runner, which
+    the window may delete meanwhile)."""
+    def report(kind: str, *args: Any) -> None:
+        events.put((job, kind, args))
+    try:
+        job.run(report)
+    except BaseException:                    # a defect: shown on the GUI thread, by its hook
+        report("error", sys.exc_info())
+    finally:
+        events.put((job, "ended", (threading.current_thread(),)))
 
 
 class JobRunner(QObject):
@@ -123,24 +144,13 @@ class JobRunner(QObject):
 
     def start(self, job: Job) -> None:
         self.cancel()
-        thread = threading.Thread(target=self._work, args=(job,), daemon=True,
+        thread = threading.Thread(target=_work, args=(job, self._events), daemon=True,
                                   name=f"shaper-{type(job).__name__}")
         self._threads[thread] = job
         self._job = job
-        COLLECTOR.hold()
+        COLLECTOR.hold(thread)
         thread.start()
         self._timer.start()
-
-    def _work(self, job: Job) -> None:
-        """The worker thread: only the job's own code and the queue."""
-        def report(kind: str, *args: Any) -> None:
-            self._events.put((job, kind, args))
-        try:
-            job.run(report)
-        except BaseException:                # a defect: shown on the GUI thread, by its hook
-            report("error", sys.exc_info())
-        finally:
-            self._events.put((job, "ended", (threading.current_thread(),)))
 
     def deliver(self) -> None:
         """Emit what the workers reported since the last call (the GUI thread's timer)."""
@@ -162,7 +172,7 @@ class JobRunner(QObject):
         thread.join()                        # it has returned from _work; this is at once
         if self._threads.pop(thread, None) is None:
             return
-        COLLECTOR.release()
+        COLLECTOR.release(thread)
         if job is self._job:
             self._job = None
         if not self._threads:

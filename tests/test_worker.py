@@ -157,3 +157,23 @@ def test_wait_stops_the_jobs_and_delivers_their_reports(qtbot):
 def collector_released():
     yield
     assert not COLLECTOR.holding
+
+
+def test_a_runner_deleted_mid_job_leaves_neither_errors_nor_collection_off(qtbot, monkeypatch):
+    """The window can be deleted while a job still runs: the worker touches only its queue,
+    and collection comes back once the thread has ended, though no runner delivers."""
+    import shiboken6
+
+    errors = []
+    monkeypatch.setattr(threading, "excepthook", lambda args: errors.append(args))
+    was_enabled = gc.isenabled()
+    runner = JobRunner()
+    gate = threading.Event()
+    job = CountingJob(3, gate)
+    runner.start(job)
+    thread = next(iter(runner._threads))
+    shiboken6.delete(runner)
+    gate.set()
+    thread.join(10)
+    assert not thread.is_alive() and errors == []
+    assert not COLLECTOR.holding and gc.isenabled() == was_enabled
