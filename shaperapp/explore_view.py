@@ -162,6 +162,8 @@ class ExploreView(QWidget):
             for i in range(combo.count()):
                 combo.setItemText(i, names[combo.itemData(i)])
         self._show_labels()
+        if self.runner.job is None:
+            self.status.setText(self._map_status())
 
     def _fill_figures(self) -> None:
         """The figures (and objectives) this design's variant has: no pressure angle
@@ -232,11 +234,9 @@ class ExploreView(QWidget):
 
     def _map_status(self) -> str:
         """What the status line says of the map shown (empty before the first)."""
-        result = self.result
-        if result is None:
-            return ""
-        return self.tr("%1 of %2 designs are valid.").replace(
-            "%1", str(int(result.valid.sum()))).replace("%2", str(result.valid.size))
+        r = self.result
+        return "" if r is None else self.tr("%1 of %2 designs are valid.").replace(
+            "%1", str(int(r.valid.sum()))).replace("%2", str(r.valid.size))
 
     def _figure_changed(self) -> None:
         key = self.figure.currentData()
@@ -333,12 +333,8 @@ class ExploreView(QWidget):
             self.progress.setValue(done)
 
     def _finished(self, job, result) -> None:
-        if job is not self.runner.job:
-            return
-        if isinstance(result, MapResult):
-            self._map_done(result)
-        else:
-            self._optimum_done(result)
+        if job is self.runner.job:
+            (self._map_done if isinstance(result, MapResult) else self._optimum_done)(result)
 
     def _failed(self, job, error) -> None:
         if job is self.runner.job:

@@ -241,3 +241,20 @@ def test_closing_the_window_mid_map_ends_the_worker_and_gives_collection_back(qt
     window.close()
     assert not window.explore.runner.running
     assert not COLLECTOR.holding and gc.isenabled() == was_enabled
+
+
+def test_the_status_line_follows_a_language_switch(qtbot, view):
+    from shaperapp import i18n
+
+    view.count.setValue(5)
+    compute(qtbot, view)
+    valid = int(view.result.valid.sum())
+    assert view.status.text() == f"{valid} of 25 designs are valid."
+    try:
+        i18n.set_language("zh_CN")
+        qtbot.wait(20)                                      # LanguageChange is posted
+        assert view.status.text() == view.tr("%1 of %2 designs are valid.").replace(
+            "%1", str(valid)).replace("%2", "25")
+        assert "designs" not in view.status.text()
+    finally:
+        i18n.set_language("en")
