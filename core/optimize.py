@@ -18,7 +18,7 @@ import numpy as np
 from .dynamics import MassProperties
 from .errors import DesignError
 from .spec import Spec
-from .sweep import Evaluation, evaluate
+from .sweep import Evaluation, evaluate, tidy_values
 
 # objective → (what it minimizes, unit, needs loads)
 OBJECTIVES = {
@@ -146,3 +146,24 @@ def _refine(values, low, high, best_x, best, seed):
     out = best_x.copy()
     out[free] = x
     return out, value
+
+
+def tidy_optimum(spec: Spec, best: Optimum, bounds: dict[str, tuple[float, float]], rpms,
+                 masses: MassProperties | None = None) -> tuple[dict[str, float], float]:
+    """The optimum as a person would type it, with its objective: each value rounded to a
+    millionth of its range, inside the bounds (142.06349206349205 → 142.0635 in 100 mm), or
+    where that design is worse by more than 1e-6 of the value (a minimax objective rises
+    steeply from its optimum), to a hundred-millionth; else the exact optimum. A rounded
+    design that is invalid is never returned."""
+    exact = dict(zip(best.names, (float(v) for v in best.x)))
+    use = masses if OBJECTIVES[best.objective][2] else None
+    for share in (1e-6, 1e-8):
+        resolution = {n: share * (bounds[n][1] - bounds[n][0]) for n in best.names}
+        tidy = tidy_values(spec, exact, resolution, bounds)
+        if tidy == exact:
+            break
+        value = float(objective_of(evaluate(spec, {n: np.array([v]) for n, v in tidy.items()},
+                                            rpms, use), best.objective)[0])
+        if math.isfinite(value) and value <= best.value + 1e-6 * abs(best.value):
+            return tidy, value
+    return exact, best.value

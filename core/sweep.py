@@ -10,7 +10,7 @@ single-design figures.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -167,6 +167,33 @@ def spec_changes(values: dict[str, float]) -> dict[str, object]:
         else:
             raise DesignError("vary", name, "must name one of " + ", ".join(PARAMETERS.values()))
     return changes
+
+
+def tidy_values(spec: Spec, values: dict[str, float], resolution: dict[str, float],
+                bounds: dict[str, tuple[float, float]] | None = None) -> dict[str, float]:
+    """``values`` as a person would read and type them: each rounded to a whole multiple of
+    the power of ten at or below its ``resolution`` (52.564102564102564 at 0.01 → 52.56),
+    rounded inward where it would leave its ``bounds``. The exact ``values`` where the
+    rounded design would not be valid (a value on the edge of validity)."""
+    tidy = {}
+    for name, value in values.items():
+        value, step = float(value), resolution.get(name, 0.0)
+        if not (math.isfinite(value) and math.isfinite(step) and step > 0.0):
+            tidy[name] = value
+            continue
+        step = 10.0 ** math.floor(math.log10(step))
+        rounded = round(value / step) * step
+        low, high = (bounds or {}).get(name, (-math.inf, math.inf))
+        if rounded > high:
+            rounded = math.floor(value / step) * step
+        elif rounded < low:
+            rounded = math.ceil(value / step) * step
+        tidy[name] = float(f"{rounded:.12g}") if low <= rounded <= high else value
+    try:
+        replace(spec, **spec_changes(tidy)).design()
+    except DesignError:
+        return {name: float(value) for name, value in values.items()}
+    return tidy
 
 
 def design_value(design, name: str) -> float | None:

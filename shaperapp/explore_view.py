@@ -19,7 +19,8 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout
                                QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
                                QVBoxLayout, QWidget)
 
-from core.sweep import default_range, design_value, spec_changes, varied_parameters
+from core.optimize import OBJECTIVES, tidy_optimum
+from core.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
 from .explore_jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
 from .image_export import export_scene
@@ -174,8 +175,9 @@ class ExploreView(QWidget):
         self._fill_combo(self.objective, {k: v for k, v in names.items() if FIGURES[k][0]})
 
     @staticmethod
-    def _fill_combo(combo: QComboBox, items: dict[str, str]) -> None:
-        current = combo.currentData()
+    def _fill_combo(combo: QComboBox, items: dict[str, str], select: str | None = None) -> None:
+        """Refill without signals, keeping the current choice (or choosing ``select``)."""
+        current = combo.currentData() if select is None else select
         combo.blockSignals(True)
         combo.clear()
         for key, text in items.items():
@@ -189,12 +191,7 @@ class ExploreView(QWidget):
                      ["rod", "guide"] if "rod" in names else [names[0], names[1]])
         texts = self.parameter_names()
         for i, (combo, want) in enumerate(zip(self.axis_names, preferred)):
-            combo.blockSignals(True)
-            combo.clear()
-            for name in names:
-                combo.addItem(texts[name], name)
-            combo.setCurrentIndex(combo.findData(want))
-            combo.blockSignals(False)
+            self._fill_combo(combo, {name: texts[name] for name in names}, want)
             self._axis_changed(i)
 
     def _axis_changed(self, i: int) -> None:
@@ -284,12 +281,14 @@ class ExploreView(QWidget):
         self.map.setToolTip(text)
 
     def _clicked(self, row: int, column: int) -> None:
-        """Load the clicked design through the model (an ordinary, undoable edit)."""
-        result = self.result
-        if result is None:
-            return
-        self.model.set_spec(**spec_changes({result.x_name: float(result.x[column]),
-                                            result.y_name: float(result.y[row])}))
+        """Load the clicked design through the model (an ordinary, undoable edit), its values
+        rounded to a hundredth of the cell (52.56, not 52.564102564102564)."""
+        r = self.result
+        if r is not None:
+            cell = {r.x_name: (r.x, column), r.y_name: (r.y, row)}
+            values = {n: float(axis[i]) for n, (axis, i) in cell.items()}
+            resolution = {n: float(np.ptp(axis)) / max(axis.size - 1, 1) / 100 for n, (axis, _) in cell.items()}
+            self.model.set_spec(**spec_changes(tidy_values(self.model.valid_spec, values, resolution)))
 
     # ---- optimize -----------------------------------------------------------
     def start_optimize(self) -> None:
@@ -305,17 +304,18 @@ class ExploreView(QWidget):
         self.optimum.clear()
         self._start(job, self.tr("Optimizing…"), busy=True)
 
-    def _optimum_done(self, best) -> None:
-        unit = {"pressure-angle": "°", "accel": "m/s²", "peak-torque": "N·m",
-                "flywheel": "kg·m²"}[best.objective]
+    def _optimum_done(self, job: OptimizeJob, best) -> None:
+        """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum)."""
+        values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
+        unit = OBJECTIVES[best.objective][1]
         start = "—" if best.start_value is None else f"{best.start_value:.5g} {unit}"
         names = self.parameter_names()
-        where = ", ".join(f"{names[n]} = {v:.5g}" for n, v in zip(best.names, best.x))
+        where = ", ".join(f"{names[n]} = {v:.7g}" for n, v in values.items())
         self.optimum.setText(self.tr("Best: %1 %2 at %3 (the design before: %4); loaded into "
-                                     "the form.").replace("%1", f"{best.value:.5g}")
+                                     "the form.").replace("%1", f"{value:.5g}")
                              .replace("%2", unit).replace("%3", where).replace("%4", start))
         self.status.setText(self._map_status())       # no longer "Optimizing…"
-        self.model.set_spec(**spec_changes(dict(zip(best.names, best.x))))
+        self.model.set_spec(**spec_changes(values))
 
     # ---- jobs -----------------------------------------------------------------
     def _start(self, job, text: str, busy: bool = False) -> None:
@@ -333,8 +333,10 @@ class ExploreView(QWidget):
             self.progress.setValue(done)
 
     def _finished(self, job, result) -> None:
-        if job is self.runner.job:
-            (self._map_done if isinstance(result, MapResult) else self._optimum_done)(result)
+        if job is self.runner.job and isinstance(result, MapResult):
+            self._map_done(result)
+        elif job is self.runner.job:
+            self._optimum_done(job, result)
 
     def _failed(self, job, error) -> None:
         if job is self.runner.job:

@@ -12,7 +12,7 @@ from core.errors import DesignError
 from core.metrics import analyze
 from core.optimize import objective_of, optimize
 from core.spec import Spec
-from core.sweep import evaluate, grid, spec_designs
+from core.sweep import evaluate, grid, spec_changes, spec_designs
 
 RNG_SEED = 11
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
@@ -211,3 +211,43 @@ def test_a_sweep_best_on_the_end_of_the_box_starts_the_search():
     assert low <= best.x[0] <= high
     reference = brute(Spec(), ("crank",), ((low, high),), "accel", [40.0], 4001)
     assert best.value <= reference * (1 + 1e-12)
+
+
+def test_tidy_values_round_to_the_resolution_inside_bounds_and_stay_valid():
+    from core.sweep import tidy_values
+
+    spec = Spec()
+    assert tidy_values(spec, {"crank": 52.564102564102564, "time_ratio": 1.2999999999},
+                       {"crank": 0.0256, "time_ratio": 0.0005}) == {"crank": 52.56, "time_ratio": 1.3}
+    # rounded inward at a bound (94.6907 would lie past 94.690666…)
+    high = 94.69066664934076
+    assert tidy_values(spec, {"crank": high}, {"crank": 1e-4}, {"crank": (80.0, high)}) == {"crank": 94.6906}
+    # a rounding that would make the design invalid keeps the exact values: the guide must
+    # lie above L2 + L1 (445.398… mm here), and 445.45 to the nearest millimetre is 445
+    rod = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
+    limit = rod.design().frame + rod.design().crank
+    assert 445.0 < limit < 445.45
+    assert tidy_values(rod, {"guide": 445.45}, {"guide": 1.0}) == {"guide": 445.45}
+    assert tidy_values(rod, {"guide": 445.7}, {"guide": 1.0}) == {"guide": 446.0}
+
+
+@pytest.mark.parametrize("objective, bounds", [
+    ("accel", {"crank": (50.0, 150.0), "time_ratio": (1.05, 3.0)}),
+    ("pressure-angle", {"rod_ratio": (0.3, 1.0), "guide": (480.0, 620.0)}),
+])
+def test_tidy_optimum_is_short_close_and_no_worse_than_a_millionth(objective, bounds):
+    from core.optimize import tidy_optimum
+
+    spec = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
+    best = optimize(spec, bounds, objective, [40.0, 60.0])
+    values, value = tidy_optimum(spec, best, bounds, [40.0, 60.0])
+    for name, x in zip(best.names, best.x):
+        lo, hi = bounds[name]
+        assert lo <= values[name] <= hi and abs(values[name] - x) <= 1e-6 * (hi - lo)
+        assert len(repr(values[name])) <= 10, values
+    assert best.value <= value <= best.value * (1 + 1e-6)
+    # the value returned is the rounded design's own, by analyze
+    design = replace(spec, **spec_changes(values)).design()
+    metrics = analyze(design, [40.0, 60.0])
+    own = metrics.pressure_angle_max_deg if objective == "pressure-angle" else metrics.speeds[-1].a_max_m_s2
+    assert value == pytest.approx(own, rel=1e-9)
