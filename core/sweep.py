@@ -174,7 +174,8 @@ def tidy_values(spec: Spec, values: dict[str, float], resolution: dict[str, floa
     """``values`` as a person would read and type them: each rounded to a whole multiple of
     the power of ten at or below its ``resolution`` (52.564102564102564 at 0.01 → 52.56),
     rounded inward where it would leave its ``bounds``. The exact ``values`` where the
-    rounded design would not be valid (a value on the edge of validity)."""
+    rounded design would not be valid but the exact one is (a value on the edge of
+    validity); a design invalid either way gets the rounded values too."""
     tidy = {}
     for name, value in values.items():
         value, step = float(value), resolution.get(name, 0.0)
@@ -189,10 +190,13 @@ def tidy_values(spec: Spec, values: dict[str, float], resolution: dict[str, floa
         elif rounded < low:
             rounded = math.ceil(value / step) * step
         tidy[name] = float(f"{rounded:.12g}") if low <= rounded <= high else value
-    try:
-        replace(spec, **spec_changes(tidy)).design()
-    except DesignError:
-        return {name: float(value) for name, value in values.items()}
+    exact = {name: float(value) for name, value in values.items()}
+    for candidate in (tidy, exact):
+        try:
+            replace(spec, **spec_changes(candidate)).design()
+            return candidate
+        except DesignError:
+            continue
     return tidy
 
 

@@ -229,6 +229,8 @@ def test_tidy_values_round_to_the_resolution_inside_bounds_and_stay_valid():
     assert 445.0 < limit < 445.45
     assert tidy_values(rod, {"guide": 445.45}, {"guide": 1.0}) == {"guide": 445.45}
     assert tidy_values(rod, {"guide": 445.7}, {"guide": 1.0}) == {"guide": 446.0}
+    # a design invalid either way (an invalid cell clicked) still gets short values
+    assert tidy_values(rod, {"guide": 300.123456}, {"guide": 0.01}) == {"guide": 300.12}
 
 
 @pytest.mark.parametrize("objective, bounds", [
