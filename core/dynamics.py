@@ -27,9 +27,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from .cut import cutting_force
 from .errors import DesignError, require_range
 from .geometry import MAX_LENGTH_MM, Design
-from .kinematics import Shape, check_request, check_rpms, ram_origin, rpm_to_omega, shape
+from .kinematics import Shape, check_request, check_rpms, rpm_to_omega, shape
 
 GRAVITY = 9.81               # m/s², acting toward −y
 MM = 1e-3                    # m per mm
@@ -264,18 +265,6 @@ def _check_inputs(design: Design, crank_angle: np.ndarray, rpms,
 def _cross(ax, ay, bx, by):
     """z of the 2-D cross product a × b (moment of force b at arm a)."""
     return ax * by - ay * bx
-
-
-def cutting_force(design: Design, sh: Shape, masses: MassProperties) -> np.ndarray:
-    """Cutting force magnitude P over the shape's angles, (n,) N.
-
-    It acts while the ram advances (dC/dφ > 0) between idle·H and (1 − idle)·H
-    of its displacement from the φ = 0 dead point, i.e. over the cut only.
-    """
-    x = sh.ram_joint[0] - ram_origin(design)
-    idle = masses.idle_fraction * design.stroke
-    active = (sh.ram1 > 0.0) & (x >= idle) & (x <= design.stroke - idle)
-    return np.where(active, masses.cut_force_N, 0.0)
 
 
 def equivalent_inertia(design: Design, sh: Shape, masses: MassProperties) -> np.ndarray:

@@ -178,6 +178,39 @@ def bracket_root(fun: Callable[..., np.ndarray], lo: np.ndarray, hi: np.ndarray,
     return root
 
 
+def sign_changes(x: np.ndarray, values: np.ndarray,
+                 segments: Sequence[tuple[int, int, float]] | None = None,
+                 ) -> tuple[np.ndarray, ...]:
+    """Every cell between neighbouring samples where a curve changes sign or touches zero.
+
+    For curves that may cross zero many times, all of whose crossings matter (the
+    slope of an energy curve, each zero a candidate extremum): :func:`grid_argmax`
+    polishes only the best few. Returns flat arrays (owner, lo, hi, value at lo,
+    value at hi), ``owner`` indexing ``values.shape[:-1]`` flattened, ready for
+    :func:`bracket_root`. ``x``, ``values`` and ``segments`` are as in
+    :func:`grid_argmax`; a wrapping cell's ``hi`` is its first sample plus the period.
+    """
+    values = np.asarray(values, dtype=float)
+    lead, n = values.shape[:-1], values.shape[-1]
+    x = np.broadcast_to(np.asarray(x, dtype=float), values.shape)
+    segments = [(0, n, 0.0)] if segments is None else list(segments)
+    found = []
+    for start, stop, period in segments:
+        left = np.arange(start, stop - 1 if period <= 0.0 else stop)
+        right = np.where(left + 1 < stop, left + 1, start)
+        shift = np.where(left + 1 < stop, 0.0, period)
+        v_lo, v_hi = values[..., left], values[..., right]
+        cross = (v_lo <= 0.0) != (v_hi <= 0.0)
+        cross |= (v_lo == 0.0) | (v_hi == 0.0)
+        index = np.nonzero(cross)
+        cell = index[-1]
+        owner = np.ravel_multi_index(index[:-1], lead) if lead else np.zeros(cell.size, dtype=int)
+        found.append((owner, x[index[:-1] + (left[cell],)],
+                      x[index[:-1] + (right[cell],)] + shift[cell],
+                      v_lo[index], v_hi[index]))
+    return tuple(np.concatenate(v) for v in zip(*found))
+
+
 def piece_maximum(fun: Callable[..., np.ndarray], x: np.ndarray, values: np.ndarray,
                   lo: np.ndarray, hi: np.ndarray, args: Sequence[np.ndarray] = (),
                   segments: Sequence[tuple[int, int, float]] | None = None, period: float = 0.0,

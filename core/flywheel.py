@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from .cut import cut_window
 from .designs import Designs
 from .dynamics import (ENERGY_INTERVALS, MM, DynamicsSummary, MassProperties, SpeedSummary,
                        _check_inputs, _eliminate, equivalent_inertia)
@@ -105,27 +106,22 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
-    step = phi[1] - phi[0]
     sh = shape(col, phi)
     static, inertial = _torque_parts(col, sh, masses)
+    on, off = cut_window(d, masses.idle_fraction, sh)
+    mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
+    mean = np.broadcast_to(mean[:, None], (mean.size, omega.size))
     w2 = (omega ** 2)[None, :, None]
-    smooth = static[:, None, :] + w2 * inertial[:, None, :]   # torque less the cut's share
-    work = np.zeros_like(smooth)
-    work[..., 1:] = np.cumsum((smooth[..., 1:] + smooth[..., :-1]) * (step / 2.0), axis=-1)
-    x = sh.ram_joint[0] - ram_origin(col)
-    idle = masses.idle_fraction * col.stroke
-    reached = np.clip(np.maximum.accumulate(x, axis=-1), idle, col.stroke - idle) - idle
-    work = work + masses.cut_force_N * (reached * MM)[:, None, :]   # exact cut work so far
-    mean = work[..., -1] / (2.0 * math.pi)
-    energy = work - mean[..., None] * phi
-    swing = energy.max(axis=-1) - energy.min(axis=-1)
+    energy = _energy(col, sh, w2, mean[..., None], masses, _stored(col, shape(col, np.zeros(1)), masses))
+    top, bottom = _energy_extremes(d, sh, static, inertial, energy, omega, mean, on, off, masses)
+    swing = top - bottom
     je = equivalent_inertia(col, sh, masses)
     je = np.broadcast_to(je, sh.ram1.shape)
     if peaks:
-        top, bottom = _torque_peaks(d, sh, static, inertial, omega, masses)
+        high, low = _torque_peaks(d, sh, static, inertial, omega, masses, (on, off))
     else:
-        top = bottom = np.full(mean.shape, np.nan)
-    out = {"mean_torque_N_m": mean, "max_torque_N_m": top, "min_torque_N_m": bottom,
+        high = low = np.full(mean.shape, np.nan)
+    out = {"mean_torque_N_m": np.array(mean), "max_torque_N_m": high, "min_torque_N_m": low,
            "energy_fluctuation_J": swing,
            "flywheel_inertia_kg_m2": swing / (omega[None, :] ** 2 * masses.delta),
            "equivalent_inertia_mean_kg_m2": np.mean(je[:, :-1], axis=-1)}  # periodic: drop the end
@@ -134,71 +130,136 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     return out
 
 
-def cut_window(d: Designs, idle_fraction: float,
-               sh: Shape | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Crank angles (rad, in [0, π + θ]) where the cut starts and ends, each of d's shape:
-    the ram, advancing on the working stroke φ ∈ [0, π + θ], reaches idle·H and
-    (1 − idle)·H (see :func:`cutting_force`). Used by the cycle summary and the
-    positions table's special rows.
+def cut_work(d: Designs, masses: MassProperties) -> np.ndarray:
+    """Work of the cutting force over one cycle, J, one per design: P·(1 − 2·idle)·H.
 
-    Each is bracketed between the samples of ``sh`` (one-dimensional ``d``, one design
-    per row, uniform φ over the cycle; by default ``ENERGY_INTERVALS`` steps) and
-    polished as a root of the closed-form displacement. A switch at or before φ = 0
-    (idle 0, or an idle·H below round-off) is 0; one never reached is π + θ.
+    With frictionless joints the weights and inertia loads need no work over a
+    cycle (they are conservative), so this is the whole cycle work and the mean
+    driving torque is exactly cut_work / 2π.
     """
-    from .extrema import bracket_root
-
-    if sh is None:
-        sh = shape(d.column(), np.linspace(0.0, 2.0 * math.pi, ENERGY_INTERVALS + 1))
-    idle = idle_fraction * d.stroke
-    origin = ram_origin(d)
-    targets = np.stack([idle, d.stroke - idle]) + origin            # Cx at the two switches
-    end = np.broadcast_to(math.pi + d.theta, targets.shape)
-    phi = sh.phi
-    working = phi <= end[..., None]
-    reached = (sh.ram_joint[0][None] >= targets[..., None]) & working
-    first = np.argmax(reached, axis=-1)
-    # Not reached on a grid sample: between the last sample of the working stroke and its
-    # end, where the ram is at H (a dead point between samples, or a sample on π + θ that
-    # rounds an ulp past it).
-    missed = ~reached.any(axis=-1)
-    last = np.maximum(np.searchsorted(phi, end, side="right") - 1, 0)
-    inner = (~missed & (first > 0)) | (missed & (phi[last] < end))
-    lo = np.where(missed, phi[last], phi[np.maximum(first - 1, 0)])
-    hi = np.where(missed, end, np.minimum(phi[first], end))
-    root = np.where(reached[..., 0], 0.0, end)                      # at or before φ = 0, or never
-    lengths = [np.broadcast_to(v, targets.shape) for v in
-               (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]
-
-    def travel(phi, target, *lengths):
-        one = Designs(*lengths[:4], lengths[4] if d.rod is not None else None, d.rod_side)
-        return shape(one, phi).ram_joint[0] - target
-
-    if inner.any():
-        root[inner] = bracket_root(travel, lo[inner], hi[inner],
-                                   [v[inner] for v in [targets] + lengths])
-    return root[0], root[1]
+    return masses.cut_force_N * (1.0 - 2.0 * masses.idle_fraction) * np.asarray(d.stroke) * MM
 
 
-def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                  omega: np.ndarray, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
-    """Largest and smallest driving torque per design and speed, exactly, N·m.
+def _stored(d, sh: Shape, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
+    """(kinetic energy per unit ω², potential energy), J, of the moving links at the
+    shape's angles.
 
-    The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + P·dCx/dφ
-    while cutting: two smooth curves, switched at the ends of the cut. The
-    peak is the larger of T1's maximum over the cut, T0's over the rest, and
-    both one-sided values at each switch. Each maximum is bracketed on the
-    energy grid (plus, for the rod variant, samples crowding toward the sharp
-    angles) and polished on the closed form (:func:`core.extrema.piece_maximum`).
+    The driving torque less the cut is the rate of change of this stored energy
+    (energy balance of a frictionless chain at constant crank speed), so the
+    work done up to any angle is a difference of two closed-form values: the
+    energy curve needs no quadrature and is exact at any angle, not only on a
+    grid. The ram moves level, so its weight stores nothing; the crank is
+    balanced and turns steadily, so its energy is constant.
     """
-    from .extrema import piece_maximum
+    kinetic = 0.5 * equivalent_inertia(d, sh, masses)
+    tip_y = sh.lever_tip[1] * MM
+    height = (masses.lever_mass_kg * masses.lever_cg(d) / d.lever * tip_y
+              + masses.block_mass_kg * sh.crank_pin[1] * MM)
+    if sh.rod is not None:
+        height = height + masses.rod_mass_kg * tip_y / 2.0        # the rod's other end is level
+    return kinetic, masses.g * height
 
+
+def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
+            start: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """E(φ) = work of (driving torque − mean torque) from φ = 0, J, at the shape's angles.
+
+    Stored energy gained since φ = 0, plus the cut's work so far (P times the
+    distance cut, exact at any angle: torque·ω = P·v while cutting), less the
+    mean torque's work. ``start`` is :func:`_stored` at φ = 0; ``w2`` and
+    ``mean`` broadcast against the angles' shape with a speed axis before it
+    (or elementwise, for flat arrays of points).
+    """
+    kinetic, potential = _stored(d, sh, masses)
+    x = sh.ram_joint[0] - ram_origin(d)
+    idle = masses.idle_fraction * d.stroke
+    turn = np.broadcast_to(np.mod(sh.phi, 2.0 * math.pi), np.shape(x))
+    travel = np.where(turn <= math.pi + d.theta, np.clip(x, idle, d.stroke - idle) - idle,
+                      d.stroke - 2.0 * idle)
+    if np.ndim(w2) > np.ndim(kinetic):                           # a speed axis before the angles
+        kinetic, potential, travel, turn = (v[:, None] for v in (kinetic, potential, travel, turn))
+        start = tuple(v[:, None] for v in start)
+    return (w2 * (kinetic - start[0]) + (potential - start[1])
+            + masses.cut_force_N * MM * travel - mean * turn)
+
+
+def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
+                     energy: np.ndarray, omega: np.ndarray, mean: np.ndarray, on: np.ndarray,
+                     off: np.ndarray, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
+    """Largest and smallest E(φ) per design and speed, exactly, J.
+
+    E is smooth except at the cut's two switch angles, where the torque jumps
+    and E has a kink: those are candidates, with E at every sample and at every
+    zero of its slope T − T_mean inside each smooth piece. The slope of each
+    piece (torque with and without the cut) is smooth over the whole cycle, so
+    each is bracketed at every sign change on the grid (plus, for the rod
+    variant, samples crowding toward the sharp angles), every bracket is
+    polished (not only the best few: E may have several nearly equal peaks),
+    and a zero counts only inside its own piece.
+    """
+    from .extrema import bracket_root, sign_changes
+
+    count, speeds = mean.shape
     col = d.column()
-    period = 2.0 * math.pi
-    phi = sh.phi[:-1]                                   # the grid's periodic samples
+    x, stat, iner, ram1, segments = _torque_samples(d, sh, static, inertial, masses)
+    w2 = (omega ** 2)[None, :, None]
+    cut = masses.cut_force_N * MM
+    top = energy.max(axis=-1).reshape(-1)
+    bottom = energy.min(axis=-1).reshape(-1)
+    ends = np.stack([on, off], axis=-1)                           # the kinks, (designs, 2)
+    at_ends = _energy(col, shape(col, ends), w2, mean[..., None], masses,
+                      _stored(col, shape(col, np.zeros(1)), masses)).reshape(count * speeds, 2)
+    top, bottom = np.fmax(top, at_ends.max(axis=-1)), np.fmin(bottom, at_ends.min(axis=-1))
+    lengths = [np.broadcast_to(v[:, None], (count, speeds)).reshape(-1) for v in
+               (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]
+    flat_w2 = np.broadcast_to(w2[..., 0], (count, speeds)).reshape(-1)
+    flat_mean = mean.reshape(-1)
+
+    def piece(lengths):
+        return Designs(*lengths[:4], lengths[4] if d.rod is not None else None, d.rod_side)
+
+    def slope(phi, w2, mean, cutting, *lengths):
+        one = piece(lengths)
+        at = shape(one, phi)
+        s, i = _torque_parts(one, at, masses)
+        return s + w2 * i + cutting * cut * at.ram1 - mean
+
+    for cutting in (1.0, 0.0):
+        samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :] \
+            - mean[..., None]
+        owner, lo, hi, f_lo, f_hi = sign_changes(x[:, None, :], samples, segments)
+        if owner.size == 0:
+            continue
+        args = [flat_w2[owner], flat_mean[owner]]
+        roots = bracket_root(slope, lo, hi, args + [np.full(owner.size, cutting)]
+                             + [v[owner] for v in lengths], f_lo=f_lo, f_hi=f_hi)
+        design = owner // speeds
+        turn = np.mod(roots, 2.0 * math.pi)
+        inside = (turn >= on[design]) & (turn <= off[design])
+        keep = inside if cutting else ~inside
+        one = piece([v[owner] for v in lengths])
+        value = _energy(one, shape(one, roots), args[0], args[1], masses,
+                        _stored(one, shape(one, np.zeros_like(roots)), masses))
+        np.fmax.at(top, owner[keep], value[keep])
+        np.fmin.at(bottom, owner[keep], value[keep])
+    return top.reshape(count, speeds), bottom.reshape(count, speeds)
+
+
+def _torque_samples(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
+                    masses: MassProperties) -> tuple[np.ndarray, ...]:
+    """The torque's samples that bracket its extrema and those of the energy: (φ, static
+    part, part per unit ω², dCx/dφ, segments), each array (designs, samples).
+
+    The grid's periodic samples (one wrapping segment) and, where any design of the
+    chunk needs them, samples crowding toward the rod variant's sharp angles (one
+    segment each), where its torque can change faster than the grid resolves.
+    """
+    col = d.column()
+    phi = sh.phi[:-1]
     x = [np.broadcast_to(phi, static[:, :-1].shape)]
-    stat, iner, ram1 = [static[:, :-1]], [inertial[:, :-1]], [np.broadcast_to(sh.ram1, static.shape)[:, :-1]]
-    segments = [(0, phi.size, period)]
+    stat, iner = [static[:, :-1]], [inertial[:, :-1]]
+    ram1 = [np.broadcast_to(sh.ram1, static.shape)[:, :-1]]
+    segments = [(0, phi.size, 2.0 * math.pi)]
     if needs_crowding(d).any():                       # the whole chunk, if any design
         for j in range(4):
             at = sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS
@@ -211,7 +272,26 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
             ram1.append(crowd.ram1)
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
     x, stat, iner, ram1 = (np.concatenate(v, axis=-1) for v in (x, stat, iner, ram1))
-    on, off = cut_window(d, masses.idle_fraction, sh)
+    return x, stat, iner, ram1, segments
+
+
+def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
+                  omega: np.ndarray, masses: MassProperties,
+                  window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """Largest and smallest driving torque per design and speed, exactly, N·m.
+
+    The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + P·dCx/dφ
+    while cutting: two smooth curves, switched at the ends of the cut (``window``,
+    from :func:`cut_window`). The peak is the larger of T1's maximum over the cut,
+    T0's over the rest, and both one-sided values at each switch. Each maximum is
+    bracketed on the samples of :func:`_torque_samples` and polished on the closed
+    form (:func:`core.extrema.piece_maximum`).
+    """
+    from .extrema import piece_maximum
+
+    period = 2.0 * math.pi
+    x, stat, iner, ram1, segments = _torque_samples(d, sh, static, inertial, masses)
+    on, off = window
     cut = masses.cut_force_N * MM
     w2 = (omega ** 2)[None, :, None]
     lengths = [v[:, None, None] for v in (d.crank, d.frame, d.lever, d.guide,

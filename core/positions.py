@@ -22,7 +22,7 @@ import numpy as np
 
 from .designs import Designs
 from .dynamics import MassProperties, solve_dynamics
-from .flywheel import cut_window
+from .cut import cut_window
 from .dynamics_io import dynamics_table
 from .errors import DesignError, require_finite
 from .geometry import Design

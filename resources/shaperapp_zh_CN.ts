@@ -235,12 +235,12 @@
         <translation>极限位置（工作行程终点）</translation>
     </message>
     <message>
-        <source>cut starts</source>
-        <translation>切削开始</translation>
+        <source>cut starts (cutting)</source>
+        <translation>切削开始（切削中）</translation>
     </message>
     <message>
-        <source>cut ends</source>
-        <translation>切削结束</translation>
+        <source>cut ends (cutting)</source>
+        <translation>切削结束（切削中）</translation>
     </message>
     <message>
         <source>max cutting speed</source>

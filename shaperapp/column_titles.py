@@ -46,8 +46,8 @@ def special_titles() -> dict[str, str]:
     return {
         "limit_work_start": translate("Columns", "limit position, start of working stroke"),
         "limit_work_end": translate("Columns", "limit position, end of working stroke"),
-        "cut_start": translate("Columns", "cut starts"),
-        "cut_end": translate("Columns", "cut ends"),
+        "cut_start": translate("Columns", "cut starts (cutting)"),
+        "cut_end": translate("Columns", "cut ends (cutting)"),
         "v_work_max": translate("Columns", "max cutting speed"),
         "v_return_max": translate("Columns", "max return speed"),
     }

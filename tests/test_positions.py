@@ -6,7 +6,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from core.dynamics import MassProperties, cutting_force, solve_dynamics
+from core.cut import cutting_force
+from core.dynamics import MassProperties, solve_dynamics
 from core.errors import DesignError
 from core.geometry import Design, synthesize
 from core.io import curve_table

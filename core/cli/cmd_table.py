@@ -12,6 +12,9 @@ from .common import (LOAD_OPTIONS, UsageError, add_design_options, add_load_opti
                      number_list, rpms_from_args)
 from .output import print_json, write_output
 
+# Which side of a switch a row at the cut's start or end shows (core.cut's rule).
+CUT_NOTE = ("cut_start and cut_end rows show the cutting side: the cut includes its ends "
+            "(with --idle 0, both limit positions)")
 HELP = "kinematics and forces at the 12 (or N) crank positions and the special positions"
 DESCRIPTION = ("The course-design table: positions 1 … N equally spaced from the limit position "
                "that starts the working stroke, plus both limit positions, the start and end of "
@@ -78,4 +81,6 @@ def run(args: argparse.Namespace) -> int:
         for r in [header] + rows:
             print("  ".join(cell.rjust(w) if c != 1 else cell.ljust(w)
                             for c, (cell, w) in enumerate(zip(r, widths))).rstrip())
+        if "cut_force_N" in block.columns:
+            print(CUT_NOTE)
     return 0

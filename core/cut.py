@@ -1,0 +1,96 @@
+"""Where the cutting force acts: the cut's two switch angles and the one rule that
+decides, at any crank angle, whether the tool is cutting.
+
+The cut runs while the advancing ram is between idle·H and (1 − idle)·H of its
+travel from the dead point at φ = 0. Its switch angles are exact roots of the
+closed-form displacement, and the cut is the **closed** interval between them:
+the tool cuts at both switch angles (with idle 0, at both dead points), and an
+angle within ``SWITCH_TOLERANCE`` of a switch counts as at it, so round-off in
+a crank angle (240° typed, π + θ computed) cannot decide which side a row shows.
+Every table, curve, position and ``--at`` angle uses this rule; the cycle's
+energy and torque peaks take the switch angles as the ends of their pieces.
+
+Level: beside ``dynamics``, which applies the force; imports kinematics only.
+"""
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+import numpy as np
+
+from .designs import Designs
+from .extrema import bracket_root
+from .kinematics import Shape, ram_origin, shape
+
+# Uniform samples per cycle that bracket the switch angles before they are polished (the
+# ram advances monotonically over the working stroke, so a coarse grid brackets each once).
+WINDOW_INTERVALS = 360
+# A crank angle this close to a switch angle (rad, 2e-7°) counts as at it.
+SWITCH_TOLERANCE = 1e-9
+
+
+def cutting(design, phi: np.ndarray, idle_fraction: float) -> np.ndarray:
+    """Whether the tool cuts at each crank angle ``phi`` (rad, any turn): the closed
+    window [cut start, cut end] of :func:`cut_window`, taken modulo a turn."""
+    on, off = _window(design, float(idle_fraction))
+    since = np.mod(np.asarray(phi, dtype=float) - on + SWITCH_TOLERANCE, 2.0 * math.pi)
+    return since <= off - on + 2.0 * SWITCH_TOLERANCE
+
+
+@lru_cache(maxsize=32)
+def _window(design, idle_fraction: float) -> tuple[float, float]:
+    """The switch angles of one design (a frozen, hashable ``Design``): one edit solves
+    the forces for several views, and the root search costs more than the rest."""
+    on, off = cut_window(Designs.of(design), idle_fraction)
+    return float(on[0]), float(off[0])
+
+
+def cutting_force(design, sh: Shape, masses) -> np.ndarray:
+    """Cutting force magnitude P over the shape's angles, (n,) N: ``masses.cut_force_N``
+    where :func:`cutting` says the tool cuts, else 0."""
+    return np.where(cutting(design, sh.phi, masses.idle_fraction), masses.cut_force_N, 0.0)
+
+
+def cut_window(d: Designs, idle_fraction: float,
+               sh: Shape | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Crank angles (rad, in [0, π + θ]) where the cut starts and ends, each of d's shape:
+    the ram, advancing on the working stroke φ ∈ [0, π + θ], reaches idle·H and
+    (1 − idle)·H (see :func:`cutting_force`). Used by the cycle summary and the
+    positions table's special rows.
+
+    Each is bracketed between the samples of ``sh`` (one-dimensional ``d``, one design
+    per row, uniform φ over the cycle; by default ``ENERGY_INTERVALS`` steps) and
+    polished as a root of the closed-form displacement. A switch at or before φ = 0
+    (idle 0, or an idle·H below round-off) is 0; one never reached is π + θ.
+    """
+    if sh is None:
+        sh = shape(d.column(), np.linspace(0.0, 2.0 * math.pi, WINDOW_INTERVALS + 1))
+    idle = idle_fraction * d.stroke
+    origin = ram_origin(d)
+    targets = np.stack([idle, d.stroke - idle]) + origin            # Cx at the two switches
+    end = np.broadcast_to(math.pi + d.theta, targets.shape)
+    phi = sh.phi
+    working = phi <= end[..., None]
+    reached = (sh.ram_joint[0][None] >= targets[..., None]) & working
+    first = np.argmax(reached, axis=-1)
+    # Not reached on a grid sample: between the last sample of the working stroke and its
+    # end, where the ram is at H (a dead point between samples, or a sample on π + θ that
+    # rounds an ulp past it).
+    missed = ~reached.any(axis=-1)
+    last = np.maximum(np.searchsorted(phi, end, side="right") - 1, 0)
+    inner = (~missed & (first > 0)) | (missed & (phi[last] < end))
+    lo = np.where(missed, phi[last], phi[np.maximum(first - 1, 0)])
+    hi = np.where(missed, end, np.minimum(phi[first], end))
+    root = np.where(reached[..., 0], 0.0, end)                      # at or before φ = 0, or never
+    lengths = [np.broadcast_to(v, targets.shape) for v in
+               (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]
+
+    def travel(phi, target, *lengths):
+        one = Designs(*lengths[:4], lengths[4] if d.rod is not None else None, d.rod_side)
+        return shape(one, phi).ram_joint[0] - target
+
+    if inner.any():
+        root[inner] = bracket_root(travel, lo[inner], hi[inner],
+                                   [v[inner] for v in [targets] + lengths])
+    return root[0], root[1]
