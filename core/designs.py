@@ -365,9 +365,10 @@ _CHUNK = 4096
 def drive_margin(d: Designs) -> np.ndarray:
     """min over the swing of r·cos ψ − s·d·sin ψ, mm, per design (rod variant).
 
-    r·cos ψ − s·d·sin ψ is the rod's reach measured square to the lever: zero
-    where the rod stands square to the lever and the ram would stall (a dead
-    centre). d = guide − L3·cos ψ is largest in size at ψ = 0 or an end of the
+    r·cos ψ − s·d·sin ψ is the rod's extent measured square to the lever (the
+    cross product of the lever's and the rod's directions, times L4): zero where
+    the rod lies in line with the lever, which then has no arm to drive it (a
+    dead centre). d = guide − L3·cos ψ is largest in size at ψ = 0 or an end of the
     swing, so the rod's reach r = sqrt(L4² − d²) is smallest, and the margin
     can dip sharply, only there: the grid over ψ ∈ [−θ/2, θ/2] crowds toward
     those points. The smallest sample is then polished to the zero of the

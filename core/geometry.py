@@ -172,7 +172,7 @@ def validate(design: Design) -> None:
 
 
 def rod_drive_margin(design: Design) -> float:
-    """min over the swing of r·cos ψ − s·d·sin ψ, mm: zero where the rod stands square
-    to the lever and the ram would stall (a dead centre). See :func:`core.designs.drive_margin`.
+    """min over the swing of r·cos ψ − s·d·sin ψ, mm: zero where the rod lies in line
+    with the lever, which then has no arm to drive it (a dead centre). See :func:`core.designs.drive_margin`.
     """
     return float(drive_margin(Designs.of(design))[0])

@@ -2267,8 +2267,8 @@
         <translation>连杆在整个循环中都能到达导路</translation>
     </message>
     <message>
-        <source>rod never square to the lever (no dead centre)</source>
-        <translation>连杆不与导杆垂直（无死点）</translation>
+        <source>rod never in line with the lever (no dead centre)</source>
+        <translation>连杆不与导杆共线（无死点）</translation>
     </message>
     <message>
         <source>Rule</source>

@@ -163,3 +163,15 @@ def test_blocks_give_the_same_output(monkeypatch, capsys, fmt):
         assert len(json.loads(whole)) == 25
     else:
         assert len(whole.splitlines()) == 26
+
+
+def test_refusal_reason_names_the_option_as_analyze_does():
+    """A value of --dims is named '--dims (L3)' as in analyze's error (it was '--dims')."""
+    run = shaper("sweep", "--dims", "100,300,350", "--vary", "crank=100:150:2", "--rpm", "40")
+    assert run.returncode == 0, run.stderr
+    rows = list(csv.DictReader(io.StringIO(run.stdout)))
+    assert [r["reason"].split(":")[0] for r in rows] == ["--dims (L3)"] * 2
+    for row in rows:
+        alone = shaper("analyze", "--dims", f"{row['crank']},300,350", "--rpm", "40")
+        assert alone.returncode == 2
+        assert alone.stderr.strip() == "shaper: error: " + row["reason"]

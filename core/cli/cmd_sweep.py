@@ -5,7 +5,7 @@ import argparse
 import json
 import math
 import sys
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
@@ -13,8 +13,8 @@ from ..errors import DesignError
 from ..spec import Spec
 from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
 from .common import (LOAD_OPTIONS, add_design_options, add_load_options, add_speed_options,
-                     design_error_text, design_file, masses_from_args, number, rpms_from_args,
-                     spec_from_args)
+                     design_error_text, design_file, masses_from_args, number, option_name,
+                     rpms_from_args, spec_from_args, spec_option)
 from .output import write_output
 
 HELP = "figures of many designs over varied parameters"
@@ -112,11 +112,14 @@ def varied_column(name: str) -> str:
     return "K_nominal" if name == "K" else name
 
 
-def reasons(ev: Evaluation) -> list[str]:
-    """One line per design, "" when valid, else the CLI's message for that design alone."""
+def reasons(ev: Evaluation, option: Callable[[str], str] = option_name) -> list[str]:
+    """One line per design, "" when valid, else the CLI's message for that design alone,
+    naming the option as ``option(parameter)`` does: as ``analyze`` of that design alone
+    would (``--dims (L3)``, ``--guide``)."""
     out = [""] * ev.valid.size
     for i in np.flatnonzero(~ev.valid.reshape(-1)):
-        out[i] = design_error_text(ev.error(int(i)))  # type: ignore[arg-type]
+        error = ev.error(int(i))
+        out[i] = design_error_text(error, option(error.parameter))  # type: ignore[union-attr]
     return out
 
 
@@ -125,21 +128,23 @@ def csv_header(names: list[str], ev: Evaluation) -> str:
     return ",".join([varied_column(n) for n in names] + ["valid", "reason"] + figures) + "\n"
 
 
-def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> str:
+def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
+             option: Callable[[str], str] = option_name) -> str:
     """CSV lines (no header) of the designs in ``ev``; empty cells where undefined."""
     varied = [_format(values[PARAMETERS[n]]) for n in names]
     figures = [_format(v) for _, v in figure_columns(ev)]
     valid = np.where(ev.valid.reshape(-1), "true", "false")
-    why = [_quote(r) for r in reasons(ev)]
+    why = [_quote(r) for r in reasons(ev, option)]
     lines = [",".join([t[i] for t in varied] + [valid[i], why[i]] + [t[i] for t in figures])
              for i in range(valid.size)]
     return "\n".join(lines) + "\n" if lines else ""
 
 
-def json_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation) -> list[str]:
+def json_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
+              option: Callable[[str], str] = option_name) -> list[str]:
     """One JSON object (text) per design, with the keys of the CSV columns."""
     cols = figure_columns(ev)
-    why = reasons(ev)
+    why = reasons(ev, option)
     valid = ev.valid.reshape(-1)
     out = []
     for i in range(valid.size):
@@ -177,6 +182,7 @@ def run(args: argparse.Namespace) -> int:
     spec, varied, rpms, masses = inputs(args, with_count=True)
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
     names = list(varied)
+    option = lambda parameter: spec_option(parameter, spec, args)  # noqa: E731
     size = next(iter(values.values())).size
     target = args.csv or "-"
     pieces: list[str] = []
@@ -184,9 +190,9 @@ def run(args: argparse.Namespace) -> int:
         block = {k: v[start:start + BLOCK] for k, v in values.items()}
         ev = evaluate(spec, block, rpms, masses)
         if args.json:                        # JSON goes to stdout block by block
-            sys.stdout.write(("[\n" if start == 0 else ",\n") + ",\n".join(json_rows(names, block, ev)))
+            sys.stdout.write(("[\n" if start == 0 else ",\n") + ",\n".join(json_rows(names, block, ev, option)))
             continue
-        text = (csv_header(names, ev) if start == 0 else "") + csv_rows(names, block, ev)
+        text = (csv_header(names, ev) if start == 0 else "") + csv_rows(names, block, ev, option)
         if target == "-":                    # stdout: block by block too
             sys.stdout.write(text)
         else:                                # a file: written whole, atomically

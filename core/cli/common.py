@@ -252,7 +252,7 @@ def design_from_args(args: argparse.Namespace) -> Design:
     try:
         return spec.design()
     except DesignError as exc:
-        raise UsageError(design_error_text(exc, _spec_option(exc.parameter, spec, args))) from None
+        raise UsageError(design_error_text(exc, spec_option(exc.parameter, spec, args))) from None
 
 
 def given_text(value: object) -> str:
@@ -277,8 +277,9 @@ _DIMS_POSITION = {"crank": "L1", "frame": "L2", "lever": "L3"}
 _SYNTH_SOURCE = {"frame": "--K", "lever": "--stroke"}
 
 
-def _spec_option(parameter: str, spec: Spec, args: argparse.Namespace) -> str:
-    """The option that set ``parameter`` of ``spec`` in this command line."""
+def spec_option(parameter: str, spec: Spec, args: argparse.Namespace) -> str:
+    """The option that set ``parameter`` of ``spec`` in this command line (``--dims (L3)``
+    for a value of --dims, as every subcommand names it)."""
     from_dims = getattr(args, "dims", None) is not None
     if from_dims and parameter in _DIMS_POSITION:
         return f"--dims ({_DIMS_POSITION[parameter]})"

@@ -173,7 +173,7 @@ def _margin_table(design: Design) -> Table:
              "guide_clears_crank": translate("Report", "guide above L2 + L1 (ram clears the crank)"),
              "guide_below_tip": translate("Report", "guide ≤ L3 (block reaches the guide)"),
              "rod_reach": translate("Report", "rod reaches the guide over the whole cycle"),
-             "rod_dead_centre": translate("Report", "rod never square to the lever (no dead centre)")}
+             "rod_dead_centre": translate("Report", "rod never in line with the lever (no dead centre)")}
     rows = [[names[m.rule], f"{m.value:.4f} {m.unit}".strip(), f"{m.limit:.4f} {m.unit}".strip(),
              f"{m.margin:.4f} {m.unit}".strip()] for m in margins(design)]
     return Table([translate("Report", "Rule"), translate("Report", "Value"),
