@@ -113,8 +113,14 @@ def check(design: Design, masses: MassProperties, rpms) -> None:
         assert s.energy_fluctuation_J == pytest.approx(swing, rel=1e-9, abs=1e-12)
         assert s.flywheel_inertia_kg_m2 == pytest.approx(
             swing / (ref.omega ** 2 * masses.delta), rel=1e-9, abs=1e-12)
-        # The reference mean carries the quadrature's round-off of the torque's size.
-        scale = max(abs(s.max_torque_N_m), abs(s.min_torque_N_m), 1e-300)
+        # Both means carry round-off of the size of the loads' torques, which can cancel
+        # to round-off themselves (a block's mass alone, no gravity): the scale is theirs.
+        reach = (design.frame + design.lever) * 1e-3
+        masses_kg = (masses.lever_mass_kg + masses.rod_mass_kg + masses.ram_mass_kg
+                     + masses.block_mass_kg)
+        scale = max(abs(s.max_torque_N_m), abs(s.min_torque_N_m),
+                    masses_kg * (ref.omega ** 2 * reach + 9.81) * reach
+                    + masses.lever_inertia_kg_m2 * ref.omega ** 2, 1e-300)
         assert abs(s.mean_torque_N_m - ref.mean) <= 1e-11 * scale
 
 
