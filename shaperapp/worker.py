@@ -68,6 +68,15 @@ class GuiThreadCollector:
             gc.disable()
         self._threads.add(thread)
 
+    def join(self, timeout: float) -> bool:
+        """Wait up to ``timeout`` s for every held worker thread to end, then give collection
+        back (tests, so that a job a test left running cannot hold it in the next one).
+        False if one is still running."""
+        deadline = time.monotonic() + timeout
+        for thread in list(self._threads):
+            thread.join(max(0.0, deadline - time.monotonic()))
+        return not self.holding
+
     def release(self, thread: threading.Thread) -> None:
         self._threads.discard(thread)
         self._forget_ended()

@@ -47,6 +47,17 @@ def unanswered_modals_fail(request) -> Iterator[None]:
         pytest.fail("unanswered modal dialog, closed by the watchdog: " + "; ".join(watchdog.closed))
 
 
+@pytest.fixture(autouse=True)
+def no_worker_outlives_its_test(request) -> Iterator[None]:
+    """A job a test leaves running (a window closed mid-map) ends before the next test:
+    its thread would hold garbage collection off there, and a test of the collector run
+    after it (another order, another xdist worker) saw collection still held."""
+    yield
+    if "qtbot" in request.fixturenames or "qapp" in request.fixturenames:
+        from shaperapp.worker import COLLECTOR
+        assert COLLECTOR.join(60.0), "a worker thread still runs 60 s after its test"
+
+
 @pytest.fixture
 def window(qtbot, tmp_path) -> Iterator[MainWindow]:
     """The assembled window (see :func:`main_window`), settings under ``tmp_path``."""
