@@ -112,8 +112,10 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     mean = np.broadcast_to(mean[:, None], (mean.size, omega.size))
     w2 = (omega ** 2)[None, :, None]
-    energy = _energy(col, sh, w2, mean[..., None], masses, _stored(col, shape(col, np.zeros(1)), masses))
-    top, bottom = _energy_extremes(d, sh, static, inertial, energy, omega, mean, on, off, masses)
+    start = _stored(col, shape(col, np.zeros(1)), masses)
+    energy = _energy(col, sh, w2, mean[..., None], masses, start)
+    top, bottom = _energy_extremes(d, sh, static, inertial, energy, start, omega, mean, (on, off),
+                                   masses)
     swing = top - bottom
     je = equivalent_inertia(col, sh, masses)
     je = np.broadcast_to(je, sh.ram1.shape)
@@ -184,8 +186,9 @@ def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
 
 
 def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                     energy: np.ndarray, omega: np.ndarray, mean: np.ndarray, on: np.ndarray,
-                     off: np.ndarray, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
+                     energy: np.ndarray, start: tuple[np.ndarray, np.ndarray], omega: np.ndarray,
+                     mean: np.ndarray, window: tuple[np.ndarray, np.ndarray],
+                     masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest E(φ) per design and speed, exactly, J.
 
     E is smooth except at the cut's two switch angles, where the torque jumps
@@ -195,9 +198,12 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     each is bracketed at every sign change on the grid (plus, for the rod
     variant, samples crowding toward the sharp angles), every bracket is
     polished (not only the best few: E may have several nearly equal peaks),
-    and a zero counts only inside its own piece.
+    and a zero counts only inside its own piece. ``start`` is :func:`_stored` at φ = 0,
+    ``window`` the cut's switch angles.
     """
     from .extrema import bracket_root, sign_changes
+
+    on, off = window
 
     count, speeds = mean.shape
     col = d.column()
@@ -208,7 +214,7 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     bottom = energy.min(axis=-1).reshape(-1)
     ends = np.stack([on, off], axis=-1)                           # the kinks, (designs, 2)
     at_ends = _energy(col, shape(col, ends), w2, mean[..., None], masses,
-                      _stored(col, shape(col, np.zeros(1)), masses)).reshape(count * speeds, 2)
+                      start).reshape(count * speeds, 2)
     top, bottom = np.fmax(top, at_ends.max(axis=-1)), np.fmin(bottom, at_ends.min(axis=-1))
     lengths = [np.broadcast_to(v[:, None], (count, speeds)).reshape(-1) for v in
                (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]
