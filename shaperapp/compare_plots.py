@@ -7,6 +7,8 @@ grey-scale prints too. It draws a :class:`core.compare.Comparison` and nothing e
 """
 from __future__ import annotations
 
+import html
+
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QRectF, QSizeF, Qt
 from PySide6.QtGui import QColor, QPainter
@@ -83,7 +85,7 @@ class ComparePlots(pg.GraphicsLayoutWidget):
                 if y is not None:
                     curve = self._items[key].plot(result.crank_deg, y, pen=pen)
                     if key == CURVES[0]:
-                        self._legend.addItem(curve, label)
+                        self._legend.addItem(curve, html.escape(label))   # rich text
         for item in self._items.values():
             item.enableAutoRange()
 

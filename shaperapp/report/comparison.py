@@ -7,6 +7,7 @@ the Compare tab's own component (``compare_plots``), through the report's views.
 """
 from __future__ import annotations
 
+import html
 from typing import Sequence
 
 from PySide6.QtCore import QCoreApplication
@@ -45,15 +46,17 @@ def comparison_table(result: Comparison) -> Table:
 
 
 def comparison_blocks(result: Comparison, curves) -> list:
-    """Heading, introduction, overlay curves (``curves``: a figure paint) and the table."""
-    others = translate("Report", ", ").join(f"“{label}”" for label in result.labels[1:])
+    """Heading, introduction, overlay curves (``curves``: a figure paint) and the table.
+    The introduction is rich text (PDF and HTML): the designs' names go in escaped."""
+    labels = [html.escape(label) for label in result.labels]
+    others = translate("Report", ", ").join(f"“{label}”" for label in labels[1:])
     intro = translate(
         "Report", "The design of this report, “%1”, beside %2 at %3 r/min, the report's first "
         "speed. Each value is followed by its difference from “%1” in brackets ((=): the same); "
         "★ marks the best value of a row: the lowest max |a|, pressure angle, torques and "
         "flywheel J_F. Torques and J_F need loads; a design without them has none (—). The "
         "numbers are those of shaper library compare.")
-    intro = intro.replace("%1", result.labels[0]).replace("%2", others) \
+    intro = intro.replace("%1", labels[0]).replace("%2", others) \
         .replace("%3", f"{result.rpm:g}")
     return [Heading(translate("Report", "9 Comparison with other designs")),
             Paragraph(intro, True),

@@ -9,6 +9,7 @@ other designs are the Compare tab's, which it keeps on the model
 from __future__ import annotations
 
 import datetime
+import html
 import os
 
 from PySide6.QtCore import QCoreApplication, Qt
@@ -62,9 +63,11 @@ class ReportOptionsDialog(QDialog):
                           "at most %2.").replace("%1", str(len(self.others))) \
                 .replace("%2", str(MAX_DESIGNS - 1))
         else:
-            tip = self.tr("This design beside the Compare tab's designs (%1) at %2 r/min.") \
-                .replace("%1", ", ".join(c.label for c in self.others)) \
-                .replace("%2", f"{model.rpms[0]:g}")
+            # a tooltip is rich text when it looks like it: the names go in escaped, in <p>
+            tip = "<p>" + html.escape(self.tr("This design beside the Compare tab's designs (%1) at "
+                                              "%2 r/min.")).replace("%1", html.escape(", ".join(
+                                                  c.label for c in self.others))) \
+                .replace("%2", f"{model.rpms[0]:g}") + "</p>"
         self.include_comparison.setToolTip(tip)
         form.addRow(self.include_comparison)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)

@@ -7,6 +7,7 @@ first page and a framed footer (design name, date, page i / n) on every page.
 """
 from __future__ import annotations
 
+import html
 from dataclasses import dataclass
 from typing import Callable
 
@@ -191,7 +192,7 @@ def _lines(m: QFontMetricsF, text: str, width: float) -> int:
 
 def _figure(lay: Layout, block: Figure) -> list[Piece]:
     m = lay.metrics(lay.small)
-    cap_doc = lay.document(f"<i>{block.caption}</i>", lay.width) if block.caption else None
+    cap_doc = lay.document(f"<i>{html.escape(block.caption)}</i>", lay.width) if block.caption else None
     cap_h = cap_doc.size().height() + 0.4 * m.height() if cap_doc else 0.0
     w = min(block.width_mm * lay.mm, lay.width)
     h = block.height_mm * lay.mm * (w / (block.width_mm * lay.mm))
