@@ -71,8 +71,65 @@ def finite_range(arrays: Iterable[np.ndarray]) -> tuple[float, float]:
     return lo, hi
 
 
+# ---- export: what a painter gets is what the screen's clip shows ---------------------------
+# On screen the ViewBox clips its children to the plot area. An SVG (QSvgGenerator) has no
+# clip, and QSvgRenderer, which replays it into the PDF report, ignores clip paths, so every
+# item here puts only what lies in its view into an export (``setExportMode``, called by
+# ``image_export.render_scene`` for every item that has it). The cursor and its dots are
+# an animation's, not the figure's: an export leaves them out unless ``opts["cursor"]``.
+def view_of(item: QGraphicsItem) -> pg.ViewBox | None:
+    """The ViewBox whose data area holds ``item``."""
+    parent = item.parentItem()
+    while parent is not None and not isinstance(parent, pg.ViewBox):
+        parent = parent.parentItem()
+    return parent
+
+
+def clip_polyline(x: np.ndarray, y: np.ndarray, rect: QRectF) -> tuple[np.ndarray, np.ndarray]:
+    """The parts of the polyline (x, y) inside ``rect`` (Liang–Barsky per segment), as
+    points with NaN between the pieces; NaN points break the line as before."""
+    x0, x1, y0, y1 = rect.left(), rect.right(), rect.top(), rect.bottom()
+    ax, ay, bx, by = x[:-1], y[:-1], x[1:], y[1:]
+    dx, dy = bx - ax, by - ay
+    lo, hi = np.zeros(ax.shape), np.ones(ax.shape)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
+            t = q / p
+            lo = np.where(p < 0, np.maximum(lo, t), lo)
+            hi = np.where(p > 0, np.minimum(hi, t), hi)
+            outside = (p == 0) & (q < 0)        # parallel to this edge and beyond it
+            hi = np.where(outside, -1.0, hi)
+    keep = np.isfinite(dx) & np.isfinite(dy) & (lo <= hi)
+    xs, ys = [], []
+    joined = False                                # the last piece ends where this one starts
+    for i in np.flatnonzero(keep):
+        if not (joined and lo[i] == 0.0 and keep[i - 1]):
+            xs.append(np.nan)
+            ys.append(np.nan)
+            xs.append(ax[i] + lo[i] * dx[i])
+            ys.append(ay[i] + lo[i] * dy[i])
+        xs.append(ax[i] + hi[i] * dx[i])
+        ys.append(ay[i] + hi[i] * dy[i])
+        joined = hi[i] == 1.0
+    return np.array(xs[1:]), np.array(ys[1:])
+
+
+class _Dot(QGraphicsEllipseItem):
+    """The cursor's dot on a curve: in an export only when asked, and inside its view."""
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        if export:
+            view = view_of(self)
+            self._shown = self.isVisible()
+            inside = view is not None and view.viewRect().contains(self.pos())
+            self.setVisible(self._shown and inside and bool((opts or {}).get("cursor")))
+        elif hasattr(self, "_shown"):
+            self.setVisible(self._shown)
+            del self._shown
+
+
 def _dot() -> QGraphicsEllipseItem:
-    dot = QGraphicsEllipseItem(QRectF(-DOT_RADIUS, -DOT_RADIUS, 2 * DOT_RADIUS, 2 * DOT_RADIUS))
+    dot = _Dot(QRectF(-DOT_RADIUS, -DOT_RADIUS, 2 * DOT_RADIUS, 2 * DOT_RADIUS))
     dot.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIgnoresTransformations, True)
     dot.setPen(QPen(QColor("#ffffff"), 1.0))
     dot.setZValue(Z_DOT)
@@ -112,6 +169,20 @@ class CursorLine(QGraphicsLineItem):
     def value(self) -> float:
         return self.x()
 
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: left out unless ``opts["cursor"]``, else across the view only."""
+        if export:
+            self._shown = self.isVisible()
+            (x0, x1), (y0, y1) = self._view.viewRange()
+            inside = x0 <= self.x() <= x1
+            self.setVisible(self._shown and inside and bool((opts or {}).get("cursor")))
+            self.setLine(0.0, y0, 0.0, y1)
+        else:
+            self.span()
+            if hasattr(self, "_shown"):
+                self.setVisible(self._shown)
+                del self._shown
+
     def setValue(self, x: float) -> None:  # noqa: N802 - as InfiniteLine
         self.setPos(x, 0.0)
 
@@ -138,6 +209,15 @@ class BandRect(QGraphicsRectItem):
         y0, y1 = _full_height(self._view)
         x0, x1 = self._span
         self.setRect(QRectF(x0, y0, x1 - x0, y1 - y0).normalized())
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: the part of the span in the view, from its bottom to its top."""
+        if not export:
+            self._place()
+            return
+        view = self._view.viewRect()
+        x0, x1 = self._span
+        self.setRect(QRectF(x0, view.top(), x1 - x0, view.height()).normalized().intersected(view))
 
 
 class CurveItem(QGraphicsPathItem):
@@ -182,6 +262,38 @@ class CurveItem(QGraphicsPathItem):
 
     def shape(self) -> QPainterPath:
         return self._box
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: only the parts of the line inside the view (see ``clip_polyline``)."""
+        if not export:
+            if getattr(self, "_whole", None) is not None:
+                self.setPath(self._whole)
+                self._whole = None
+            return
+        view = view_of(self)
+        if view is None or not self.x.size:
+            return
+        rect = view.viewRect()
+        finite = np.isfinite(self.x) & np.isfinite(self.y)
+        x, y = self.x[finite], self.y[finite]
+        if ((x >= rect.left()) & (x <= rect.right()) & (y >= rect.top()) & (y <= rect.bottom())).all():
+            return                                   # the usual case: nothing to cut
+        self._whole = self.path()
+        cx, cy = clip_polyline(self.x, self.y, rect)
+        path = QPainterPath()
+        edges = np.flatnonzero(np.diff(np.concatenate(([0], np.isfinite(cx).view(np.int8), [0]))))
+        if self._connect == "finite":
+            for start, stop in zip(edges[::2], edges[1::2]):
+                path.addPath(pg.arrayToQPath(cx[start:stop], cy[start:stop], connect="all",
+                                             finiteCheck=False))
+        else:                                       # pairs: the segments, each cut alone
+            xs, ys = self.x.reshape(-1, 2), self.y.reshape(-1, 2)
+            for (ax, bx), (ay, by) in zip(xs, ys):
+                px, py = clip_polyline(np.array([ax, bx]), np.array([ay, by]), rect)
+                if px.size == 2:
+                    path.moveTo(px[0], py[0])
+                    path.lineTo(px[1], py[1])
+        self.setPath(path)
 
     def paint(self, painter: QPainter, option, widget=None) -> None:
         # pyqtgraph's antialias option, as its own curves: the views leave it off for the
