@@ -83,6 +83,9 @@ class ReportViews:
         return widget
 
     def _svg(self, widget, name: str) -> bytes:
+        # pending layout first (legend rows, group titles): a command-line run has no event
+        # loop, and a view exported unlaid-out put its legend on its tick labels
+        QCoreApplication.processEvents()
         path = Path(self._dir.name) / f"{name}.svg"
         widget.export_image(str(path))
         return path.read_bytes()

@@ -22,6 +22,7 @@ translate = QCoreApplication.translate
 RESOLUTION = 300
 PAGE_MM = (210.0, 297.0)
 LEFT_MM, RIGHT_MM, TOP_MM, BOTTOM_MM = 18.0, 16.0, 14.0, 24.0
+TITLE_MM = 30.0          # the title block on the first page, with the gap under it
 GRID = QColor("#90a4ae")
 SHADE = QColor("#eef3f8")
 HEAD_FILL = QColor("#dfe7ee")
@@ -37,6 +38,8 @@ class Piece:
     keep_with_next: bool = False
     header: "Piece | None" = None
     """A table row's header, painted first when the row starts a new page."""
+    part: str = "text"
+    """"figure" for a figure's drawing, "text" for everything else (``page_boxes``)."""
 
 
 class Layout:
@@ -203,12 +206,16 @@ def _figure(lay: Layout, block: Figure) -> list[Piece]:
         p.setPen(INK)
         block.paint(p, QRectF(x + (width - w) / 2, y, w, h), lay.mm)
         p.restore()
+
+    def caption(p: QPainter, x: float, y: float, width: float) -> None:
         if cap_doc is not None:
             p.save()
-            p.translate(x, y + h + 0.2 * m.height())
+            p.translate(x, y + 0.2 * m.height())
             cap_doc.drawContents(p)
             p.restore()
-    return [Piece(h + cap_h + m.height() * 0.8, paint)]
+    # the drawing and its caption: two pieces on one page (keep_with_next)
+    return [Piece(h, paint, keep_with_next=True, part="figure"),
+            Piece(cap_h + m.height() * 0.8, caption)]
 
 
 def pieces_of(lay: Layout, report: Report) -> list[Piece]:
@@ -249,18 +256,32 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
     return pages
 
 
-def pdf_bytes(report: Report) -> tuple[bytes, int]:
+def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure")) -> tuple[bytes, int]:
     """The PDF of ``report`` in memory, and its page count; the caller writes it
-    (atomically, so a failed save never leaves half a report)."""
+    (atomically, so a failed save never leaves half a report). ``parts`` leaves out
+    the pieces of other parts (and the title block and footers unless "text"): the
+    tests print the figures alone to find ink outside their boxes."""
     data = QByteArray()
     buffer = QBuffer(data)
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
-    pages = _paint_pdf(report, QPdfWriter(buffer))
+    pages = _paint_pdf(report, QPdfWriter(buffer), parts)
     buffer.close()
     return bytes(data.data()), pages
 
 
-def _paint_pdf(report: Report, writer: QPdfWriter) -> int:
+def page_boxes(report: Report) -> list[list[tuple[str, QRectF]]]:
+    """Per page, the part ("text" or "figure") and box (in mm from the page's top left)
+    of every piece laid out on it, as :func:`pdf_bytes` places them."""
+    buffer = QBuffer()
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    writer = QPdfWriter(buffer)
+    lay, pages = _layout(report, writer)
+    mm = lay.mm
+    return [[(piece.part, QRectF(LEFT_MM, y / mm, lay.width / mm, piece.height / mm))
+             for piece, y in page] for page in pages]
+
+
+def _layout(report: Report, writer: QPdfWriter) -> tuple[Layout, list[list[tuple[Piece, float]]]]:
     writer.setResolution(RESOLUTION)
     writer.setPageLayout(QPageLayout(QPageSize(QPageSize.PageSizeId.A4), QPageLayout.Orientation.Portrait,
                                      QMarginsF(0, 0, 0, 0)))
@@ -268,20 +289,26 @@ def _paint_pdf(report: Report, writer: QPdfWriter) -> int:
     writer.setCreator("Shaper Designer")
     lay = Layout(writer, report.language)
     mm = lay.mm
-    title_h = 30.0 * mm
     top, bottom = TOP_MM * mm, (PAGE_MM[1] - BOTTOM_MM) * mm
-    pages = paginate(pieces_of(lay, report), top + title_h, top, bottom)
+    return lay, paginate(pieces_of(lay, report), top + TITLE_MM * mm, top, bottom)
+
+
+def _paint_pdf(report: Report, writer: QPdfWriter, parts: tuple[str, ...] = ("text", "figure")) -> int:
+    lay, pages = _layout(report, writer)
+    mm = lay.mm
     painter = QPainter(writer)
     try:
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         for n, page in enumerate(pages):
             if n:
                 writer.newPage()
-            if n == 0:
-                _title_block(painter, lay, report, top, title_h - 6 * mm)
+            if n == 0 and "text" in parts:
+                _title_block(painter, lay, report, TOP_MM * mm, (TITLE_MM - 6) * mm)
             for piece, y in page:
-                piece.paint(painter, LEFT_MM * mm, y, lay.width)
-            _footer(painter, lay, report, n + 1, len(pages))
+                if piece.part in parts:
+                    piece.paint(painter, LEFT_MM * mm, y, lay.width)
+            if "text" in parts:
+                _footer(painter, lay, report, n + 1, len(pages))
     finally:
         painter.end()
     return len(pages)
