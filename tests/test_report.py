@@ -261,3 +261,27 @@ def test_comparison_from_a_missing_library_names_it(tmp_path):
                     "-o", tmp_path / "r.pdf")
     assert result.returncode == 2 and result.stderr.startswith("shaper: error: --library")
     assert not (tmp_path / "none.sqlite").exists() and not (tmp_path / "r.pdf").exists()
+
+
+@needs_pdftotext
+def test_cover_block_from_the_command_line(tmp_path):
+    out = tmp_path / "r.pdf"
+    result = shaper("report", *DESIGN, "--rpm", "40", "-o", out, "--student", "Li Ming",
+                    "--student-number", "2021-07", "--class", "ME 21", "--school", "SME",
+                    "--supervisor", "Prof. Wang", "--date", "2026-06-30")
+    assert result.returncode == 0, result.stderr
+    first = squash(pdf_text(out).split("\f")[0])
+    for text in ("Student Li Ming", "Student number 2021-07", "Class ME 21", "School SME",
+                 "Supervisor Prof. Wang", "Date 2026-06-30"):
+        assert text in first
+    assert "L1 100 mm, K 1.4, H 300 mm, L4/L3 0.3" in first and "Untitled" not in first
+
+
+@pytest.mark.parametrize("words, option", [
+    (["--student", "a\nb"], "--student"), (["--class", "x" * 201], "--class"),
+    (["--title", "a\tb"], "--title")])
+def test_bad_cover_text_is_one_line(tmp_path, words, option):
+    result = shaper("report", *DESIGN, *words, "-o", tmp_path / "r.pdf")
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"shaper: error: {option}:") and result.stderr.count("\n") == 1
+    assert not (tmp_path / "r.pdf").exists()

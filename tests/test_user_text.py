@@ -52,7 +52,7 @@ def hostile(tmp_path_factory):
     assert shaper("library", "export", SCRIPT, "-o", design, "--library", lib).returncode == 0
     out = {}
     for target, title in (("r.html", []), ("r.pdf", []), ("t.html", ["--title", BOLD])):
-        done = shaper("report", "--design", design, "--rpm", "40", *LOADS, *title,
+        done = shaper("report", "--design", design, "--rpm", "40", *LOADS, *title, *COVER,
                       "--compare", SCRIPT, FORMULA, "--library", lib, "-o", folder / target)
         assert done.returncode == 0, done.stderr
         out[target] = folder / target
@@ -76,6 +76,8 @@ def test_html_report_prints_every_user_string_as_text(hostile, target, name):
     for user in (name, SCRIPT, FORMULA):
         assert text.count(user) >= 3, user
     assert f"“{name}”, beside “{SCRIPT}”, “{FORMULA}”" in text
+    for cover in ("<i>Li</i>", "=1+1", "<u>ME 21</u>", "@school", "<s>Wang</s>"):
+        assert cover in text
 
 
 @pytest.mark.skipif(shutil.which("pdftotext") is None, reason="pdftotext not installed")
@@ -86,6 +88,8 @@ def test_pdf_report_prints_user_strings_as_text(hostile):
     squashed = re.sub(r"\s+", " ", text)
     assert f"“{FILE}”, beside “{SCRIPT}”" in squashed          # the comparison's prose
     assert squashed.count(FILE) >= 3                          # title block, prose, footers
+    for cover in ("<i>Li</i>", "<u>ME 21</u>", "<s>Wang</s>", "=1+1", "@school"):
+        assert cover in squashed
 
 
 def test_csv_text_cells():

@@ -2,9 +2,9 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, ClassVar
 
-from PySide6.QtCore import QRectF
+from PySide6.QtCore import QCoreApplication, QRectF
 from PySide6.QtGui import QPainter
 
 Paint = Callable[[QPainter, QRectF, float], None]     # painter, rect (device), device units per mm
@@ -44,6 +44,20 @@ class Figure:
     paint: Paint
 
 
+@dataclass(frozen=True)
+class Cover:
+    """What a course design's cover asks for besides the design (user text: printed as
+    text, escaped in HTML). Empty fields are printed as blank lines to fill in by hand."""
+
+    student: str = ""
+    number: str = ""          # the student's number
+    group: str = ""           # the class
+    school: str = ""
+    supervisor: str = ""
+
+    FIELDS: ClassVar[tuple[str, ...]] = ("student", "number", "group", "school", "supervisor")
+
+
 @dataclass
 class Report:
     title: str
@@ -51,3 +65,14 @@ class Report:
     date: str
     language: str
     blocks: list = field(default_factory=list)
+    cover: Cover = Cover()
+
+
+def cover_rows(report: Report) -> list[tuple[str, str]]:
+    """The cover block under the title, two cells a row: (label, value)."""
+    tr = lambda text: QCoreApplication.translate("Report", text)  # noqa: E731
+    c = report.cover
+    return [(tr("Design"), report.name), (tr("Date"), report.date),
+            (tr("Student"), c.student), (tr("Student number"), c.number),
+            (tr("Class"), c.group), (tr("School"), c.school),
+            (tr("Supervisor"), c.supervisor), (tr("Program"), "Shaper Designer")]

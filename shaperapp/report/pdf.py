@@ -15,14 +15,14 @@ from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QMa
 from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen, QTextDocument)
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows
 from .fonts import report_font
 
 translate = QCoreApplication.translate
 RESOLUTION = 300
 PAGE_MM = (210.0, 297.0)
 LEFT_MM, RIGHT_MM, TOP_MM, BOTTOM_MM = 18.0, 16.0, 14.0, 24.0
-TITLE_MM = 30.0          # the title block on the first page, with the gap under it
+TITLE_MM = 48.0          # the title and cover block on the first page, with the gap under it
 GRID = QColor("#90a4ae")
 SHADE = QColor("#eef3f8")
 HEAD_FILL = QColor("#dfe7ee")
@@ -315,22 +315,29 @@ def _paint_pdf(report: Report, writer: QPdfWriter, parts: tuple[str, ...] = ("te
 
 
 def _title_block(p: QPainter, lay: Layout, report: Report, y: float, height: float) -> None:
+    """The title over the cover block (``cover_rows``): four rows of two label–value cells."""
     x, w = LEFT_MM * lay.mm, lay.width
     p.setPen(QPen(INK, 0.35 * lay.mm))
     p.drawRect(QRectF(x, y, w, height))
-    split = y + height * 0.58
-    p.drawLine(QPointF(x, split), QPointF(x + w, split))
+    title_h = 14.0 * lay.mm
     p.setFont(lay.title)
-    p.drawText(QRectF(x, y, w, split - y), int(Qt.AlignmentFlag.AlignCenter), report.title)
-    p.setFont(lay.body)
-    cells = [(translate("Report", "Design"), report.name), (translate("Report", "Date"), report.date),
-             (translate("Report", "Program"), "Shaper Designer")]
-    cw = w / len(cells)
-    for i, (label, value) in enumerate(cells):
-        if i:
-            p.drawLine(QPointF(x + i * cw, split), QPointF(x + i * cw, y + height))
-        p.drawText(QRectF(x + i * cw, split, cw, y + height - split), int(Qt.AlignmentFlag.AlignCenter),
-                   f"{label}: {value}")
+    p.drawText(QRectF(x, y, w, title_h), int(Qt.AlignmentFlag.AlignCenter), report.title)
+    rows = cover_rows(report)
+    row_h = (height - title_h) / 4
+    label_w = max(lay.metrics(lay.small).horizontalAdvance(label) for label, _ in rows) + 4 * lay.mm
+    p.setPen(QPen(INK, 0.2 * lay.mm))
+    for k, (label, value) in enumerate(rows):
+        cx, cy = x + (k % 2) * w / 2, y + title_h + (k // 2) * row_h
+        p.drawLine(QPointF(x, cy), QPointF(x + w, cy))
+        if k % 2:
+            p.drawLine(QPointF(cx, cy), QPointF(cx, cy + row_h))
+        p.setFont(lay.small)
+        p.drawText(QRectF(cx + 2 * lay.mm, cy, label_w, row_h), int(Qt.AlignmentFlag.AlignVCenter), label)
+        p.setFont(lay.body)
+        text = lay.metrics(lay.body).elidedText(value, Qt.TextElideMode.ElideRight,
+                                                w / 2 - label_w - 4 * lay.mm)
+        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, w / 2 - label_w - 4 * lay.mm, row_h),
+                   int(Qt.AlignmentFlag.AlignVCenter), text)
 
 
 def _footer(p: QPainter, lay: Layout, report: Report, page: int, pages: int) -> None:
