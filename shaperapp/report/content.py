@@ -10,6 +10,7 @@ their own. The blocks are defined in ``blocks``; the comparison section is
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -78,12 +79,12 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         add(_margin_table(design))
         add(Heading(translate("Report", "3 The mechanism at its limit positions")))
         add(Figure(translate("Report", "Scheme to scale at the limit positions that start and end "
-                             "the working stroke"), 170.0, 72.0, views.limit_schemes()))
+                             "the working stroke"), 170.0, 100.0, views.limit_schemes()))
         add(Heading(translate("Report", "4 Motion of the ram and cycle metrics")))
         add(KeyValues(_cycle(metrics)))
-        add(_speed_table(metrics))
         add(Figure(translate("Report", "Ram displacement, velocity and acceleration over one "
-                             "crank revolution, one curve per speed"), 170.0, 150.0, views.curves()))
+                             "crank revolution, one curve per speed"), 170.0, 128.0, views.curves()))
+        add(_speed_table(metrics))            # after the figure, which then fits on the page
         add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
         add(Paragraph(translate("Report", "Positions 1 … N are equally spaced from the limit "
                                 "position that starts the working stroke (φ = 0). The shaded rows are "
@@ -264,8 +265,31 @@ def _dynamics_table(summary: DynamicsSummary, design: Design) -> Table:
         translate("Report", "Torque, power and flywheel per crank speed"))
 
 
+# The formulas' notation in the (translated) source text, typeset by ``typeset``:
+# a^k_A3A2 → a with k above and A3A2 below, v_A3 → v with A3 below, O4/L1/ω3 → O, L, ω with
+# the digit below, (1/2π) → a slanted fraction.
+_NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
+                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
+                       r"|(?<![A-Za-z0-9_])(?P<name>[OLωα])(?P<digit>\d)"
+                       r"|\((?P<num>\d)/(?P<den>\d?π)\)")
+
+
+def typeset(text: str) -> str:
+    """Rich text of a formula paragraph: sub- and superscripts and fractions in HTML
+    (QTextDocument prints them in the PDF), from the plain notation of the source."""
+    def one(m: re.Match) -> str:
+        if m["base"]:
+            return f"{m['base']}<sup>{m['sup']}</sup><sub>{m['sub']}</sub>"
+        if m["base2"]:
+            return f"{m['base2']}<sub>{m['sub2']}</sub>"
+        if m["name"]:
+            return f"{m['name']}<sub>{m['digit']}</sub>"
+        return f"(<sup>{m['num']}</sup>⁄<sub>{m['den']}</sub>)"
+    return _NOTATION.sub(one, text)
+
+
 def _conventions() -> list:
-    p = lambda text: Paragraph(text)  # noqa: E731
+    p = lambda text: Paragraph(typeset(text))  # noqa: E731
     return [
         p(translate("Report", "<b>Frame and signs.</b> Lever pivot O4 at the origin, crank centre O2 at "
                     "(0, L2) above it, ram guide the line y = guide height; the ram cuts toward +x and the "

@@ -22,6 +22,7 @@ translate = QCoreApplication.translate
 RESOLUTION = 300
 PAGE_MM = (210.0, 297.0)
 LEFT_MM, RIGHT_MM, TOP_MM, BOTTOM_MM = 18.0, 16.0, 14.0, 24.0
+SHRINK = 0.70            # a figure keeps at least this share of its height on a page
 TITLE_MM = 48.0          # the title and cover block on the first page, with the gap under it
 GRID = QColor("#90a4ae")
 SHADE = QColor("#eef3f8")
@@ -40,6 +41,8 @@ class Piece:
     """A table row's header, painted first when the row starts a new page."""
     part: str = "text"
     """"figure" for a figure's drawing, "text" for everything else (``page_boxes``)."""
+    min_height: float = 0.0
+    """A figure may shrink to this height to stay on a page (``paginate``)."""
 
 
 class Layout:
@@ -204,7 +207,7 @@ def _figure(lay: Layout, block: Figure) -> list[Piece]:
         p.save()
         p.setFont(lay.small)
         p.setPen(INK)
-        block.paint(p, QRectF(x + (width - w) / 2, y, w, h), lay.mm)
+        block.paint(p, QRectF(x + (width - w) / 2, y, w, drawing.height), lay.mm)
         p.restore()
 
     def caption(p: QPainter, x: float, y: float, width: float) -> None:
@@ -214,8 +217,8 @@ def _figure(lay: Layout, block: Figure) -> list[Piece]:
             cap_doc.drawContents(p)
             p.restore()
     # the drawing and its caption: two pieces on one page (keep_with_next)
-    return [Piece(h, paint, keep_with_next=True, part="figure"),
-            Piece(cap_h + m.height() * 0.8, caption)]
+    drawing = Piece(h, paint, keep_with_next=True, part="figure", min_height=SHRINK * h)
+    return [drawing, Piece(cap_h + m.height() * 0.8, caption)]
 
 
 def pieces_of(lay: Layout, report: Report) -> list[Piece]:
@@ -245,7 +248,15 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
             need += pieces[j].height
         if need > bottom - top:
             need = piece.height + (bottom - top) / 4
-        if y + need > bottom and pages[-1]:
+        chain = [p for p in pieces[i:j + 1] if p.min_height]
+        if y + need > bottom and chain and y + need - sum(p.height - p.min_height for p in chain) <= bottom:
+            cut = y + need - bottom       # figures shrink a little rather than leave a gap
+            for p in chain:
+                take = min(cut, p.height - p.min_height)
+                p.height -= take
+                cut -= take
+            need = bottom - y
+        if y + need > bottom + 1e-6 and pages[-1]:
             pages.append([])
             y = top
             if piece.header is not None:
