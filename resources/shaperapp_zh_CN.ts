@@ -828,6 +828,10 @@
         <translation>已取消。</translation>
     </message>
     <message>
+        <source>There is no map to export yet: press Compute map on the Explore tab first.</source>
+        <translation>还没有可导出的分布图：请先在“设计空间”页按“计算分布图”。</translation>
+    </message>
+    <message>
         <source>Design-space map</source>
         <translation>设计空间图</translation>
     </message>
@@ -2083,10 +2087,6 @@
 <context>
     <name>Report</name>
     <message>
-        <source>Untitled design</source>
-        <translation>未命名设计</translation>
-    </message>
-    <message>
         <source>Design report: quick-return mechanism of a shaper</source>
         <translation>牛头刨床导杆机构设计说明书</translation>
     </message>
@@ -2443,18 +2443,6 @@
         <translation>设计比较</translation>
     </message>
     <message>
-        <source>Design</source>
-        <translation>设计</translation>
-    </message>
-    <message>
-        <source>Date</source>
-        <translation>日期</translation>
-    </message>
-    <message>
-        <source>Program</source>
-        <translation>程序</translation>
-    </message>
-    <message>
         <source>Design report</source>
         <translation>设计说明书</translation>
     </message>
@@ -2486,12 +2474,72 @@
         <source>Ram displacement, velocity, acceleration and crank torque of the compared designs over one crank revolution</source>
         <translation>所比较各设计在曲柄一转中的滑枕位移、速度、加速度和曲柄驱动力矩</translation>
     </message>
+    <message>
+        <source>Design</source>
+        <translation>设计</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>Student</source>
+        <translation>学生</translation>
+    </message>
+    <message>
+        <source>Student number</source>
+        <translation>学号</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>班级</translation>
+    </message>
+    <message>
+        <source>School</source>
+        <translation>学院</translation>
+    </message>
+    <message>
+        <source>Supervisor</source>
+        <translation>指导教师</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>程序</translation>
+    </message>
 </context>
 <context>
     <name>ReportOptionsDialog</name>
     <message>
         <source>Export design report</source>
         <translation>导出设计说明书</translation>
+    </message>
+    <message>
+        <source>Design name:</source>
+        <translation>设计名称：</translation>
+    </message>
+    <message>
+        <source>Student:</source>
+        <translation>学生：</translation>
+    </message>
+    <message>
+        <source>Student number:</source>
+        <translation>学号：</translation>
+    </message>
+    <message>
+        <source>Class:</source>
+        <translation>班级：</translation>
+    </message>
+    <message>
+        <source>School:</source>
+        <translation>学院：</translation>
+    </message>
+    <message>
+        <source>Supervisor:</source>
+        <translation>指导教师：</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>日期：</translation>
     </message>
     <message>
         <source>Positions in the table:</source>

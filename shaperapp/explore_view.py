@@ -396,8 +396,8 @@ class ExploreView(QWidget):
         image (errors as ``image_export.export_scene``'s; written atomically). ValueError
         before a map has been computed: there is nothing to draw."""
         if self.result is None:
-            raise ValueError(self.tr("There is no map to export yet: press Compute on the "
-                                     "Explore tab first."))
+            raise ValueError(self.tr("There is no map to export yet: press Compute map on "
+                                     "the Explore tab first."))
         # the whole view, as on screen: the top tick label reaches above the plot item
         source = self.map.mapToScene(self.map.viewport().rect()).boundingRect()
         export_scene(self.map.scene(), source, path, self.tr("Design-space map"), QColor("white"))

@@ -70,9 +70,11 @@ class Report:
 
 def cover_rows(report: Report) -> list[tuple[str, str]]:
     """The cover block under the title, two cells a row: (label, value)."""
-    tr = lambda text: QCoreApplication.translate("Report", text)  # noqa: E731
+    translate = QCoreApplication.translate
     c = report.cover
-    return [(tr("Design"), report.name), (tr("Date"), report.date),
-            (tr("Student"), c.student), (tr("Student number"), c.number),
-            (tr("Class"), c.group), (tr("School"), c.school),
-            (tr("Supervisor"), c.supervisor), (tr("Program"), "Shaper Designer")]
+    return [(translate("Report", "Design"), report.name), (translate("Report", "Date"), report.date),
+            (translate("Report", "Student"), c.student),
+            (translate("Report", "Student number"), c.number),
+            (translate("Report", "Class"), c.group), (translate("Report", "School"), c.school),
+            (translate("Report", "Supervisor"), c.supervisor),
+            (translate("Report", "Program"), "Shaper Designer")]
