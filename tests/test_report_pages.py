@@ -99,3 +99,16 @@ def test_no_text_lies_on_a_figure(printed):
         if both.sum():
             shared.append((n + 1, int(both.sum())))
     assert shared == []
+
+
+def test_no_page_is_left_half_empty_for_a_figure(printed):
+    """A figure starting a page would not have fitted at the foot of the page before, even
+    shrunk to SHRINK of its height (with its caption)."""
+    from shaperapp.report.pdf import BOTTOM_MM, SHRINK
+    _, boxes, _, _ = printed
+    bottom = PAGE_MM[1] - BOTTOM_MM
+    for before, page in zip(boxes, boxes[1:]):
+        if page[0][0] == "figure":
+            free = bottom - before[-1][1].bottom()
+            figure, caption = page[0][1], page[1][1]
+            assert free < SHRINK * figure.height() + caption.height(), (free, figure.height())

@@ -1,6 +1,7 @@
 """The building blocks of a report: what ``content`` builds and ``pdf``/``html`` lay out."""
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Callable, ClassVar
 
@@ -78,3 +79,26 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
             (translate("Report", "Class"), c.group), (translate("Report", "School"), c.school),
             (translate("Report", "Supervisor"), c.supervisor),
             (translate("Report", "Program"), "Shaper Designer")]
+
+
+# The formulas' notation in the (translated) source text, typeset by ``typeset``:
+# a^k_A3A2 → a with k above and A3A2 below, v_A3 → v with A3 below, O4/L1/ω3 → O, L, ω with
+# the digit below, (1/2π) → a slanted fraction.
+_NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
+                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
+                       r"|(?<![A-Za-z0-9_])(?P<name>[OLωα])(?P<digit>\d)"
+                       r"|\((?P<num>\d)/(?P<den>\d?π)\)")
+
+
+def typeset(text: str) -> str:
+    """Rich text of a formula paragraph: sub- and superscripts and fractions in HTML
+    (QTextDocument prints them in the PDF), from the plain notation of the source."""
+    def one(m: re.Match) -> str:
+        if m["base"]:
+            return f"{m['base']}<sup>{m['sup']}</sup><sub>{m['sub']}</sub>"
+        if m["base2"]:
+            return f"{m['base2']}<sub>{m['sub2']}</sub>"
+        if m["name"]:
+            return f"{m['name']}<sub>{m['digit']}</sub>"
+        return f"(<sup>{m['num']}</sup>⁄<sub>{m['den']}</sub>)"
+    return _NOTATION.sub(one, text)

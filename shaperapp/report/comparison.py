@@ -17,7 +17,7 @@ from core.dynamics import MassProperties
 from core.library_names import unique_name
 from core.spec import Spec
 from ..figure_labels import figure_label, variant_label
-from .blocks import Figure, Heading, Paragraph, Table
+from .blocks import Figure, Heading, Paragraph, Table, typeset
 
 translate = QCoreApplication.translate
 
@@ -56,7 +56,7 @@ def comparison_blocks(result: Comparison, curves) -> list:
         "★ marks the best value of a row: the lowest max |a|, pressure angle, torques and "
         "flywheel J_F. Torques and J_F need loads; a design without them has none (—). The "
         "numbers are those of shaper library compare.")
-    intro = intro.replace("%1", labels[0]).replace("%2", others) \
+    intro = typeset(intro).replace("%1", labels[0]).replace("%2", others) \
         .replace("%3", f"{result.rpm:g}")
     return [Heading(translate("Report", "9 Comparison with other designs")),
             Paragraph(intro, True),

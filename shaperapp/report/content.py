@@ -10,7 +10,6 @@ their own. The blocks are defined in ``blocks``; the comparison section is
 """
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -31,7 +30,7 @@ from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
 from ..column_titles import column_titles, group_titles, special_titles
 from . import figures
-from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table
+from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
 from .comparison import comparison_blocks, report_comparison
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
@@ -263,29 +262,6 @@ def _dynamics_table(summary: DynamicsSummary, design: Design) -> Table:
         "flywheel J_F − J_e (net)": translate("Report", "Flywheel J_F − J_e (net)"),
         "J_e": translate("Report", "Mean reduced inertia J_e")},
         translate("Report", "Torque, power and flywheel per crank speed"))
-
-
-# The formulas' notation in the (translated) source text, typeset by ``typeset``:
-# a^k_A3A2 → a with k above and A3A2 below, v_A3 → v with A3 below, O4/L1/ω3 → O, L, ω with
-# the digit below, (1/2π) → a slanted fraction.
-_NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z0-9_])(?P<name>[OLωα])(?P<digit>\d)"
-                       r"|\((?P<num>\d)/(?P<den>\d?π)\)")
-
-
-def typeset(text: str) -> str:
-    """Rich text of a formula paragraph: sub- and superscripts and fractions in HTML
-    (QTextDocument prints them in the PDF), from the plain notation of the source."""
-    def one(m: re.Match) -> str:
-        if m["base"]:
-            return f"{m['base']}<sup>{m['sup']}</sup><sub>{m['sub']}</sub>"
-        if m["base2"]:
-            return f"{m['base2']}<sub>{m['sub2']}</sub>"
-        if m["name"]:
-            return f"{m['name']}<sub>{m['digit']}</sub>"
-        return f"(<sup>{m['num']}</sup>⁄<sub>{m['den']}</sub>)"
-    return _NOTATION.sub(one, text)
 
 
 def _conventions() -> list:
