@@ -17,6 +17,7 @@ from PySide6.QtGui import QBrush, QColor, QPainter, QPainterPath, QPen
 from PySide6.QtWidgets import (QGraphicsEllipseItem, QGraphicsItem, QGraphicsLineItem, QGraphicsPathItem,
                                QGraphicsRectItem)
 
+from .plot_clip import clipped_path, view_of
 from .style import CURSOR, TEXT
 
 # One pixel: Qt's raster engine draws thin cosmetic lines on a fast path; at 1.8 px an
@@ -77,43 +78,6 @@ def finite_range(arrays: Iterable[np.ndarray]) -> tuple[float, float]:
 # item here puts only what lies in its view into an export (``setExportMode``, called by
 # ``image_export.render_scene`` for every item that has it). The cursor and its dots are
 # an animation's, not the figure's: an export leaves them out unless ``opts["cursor"]``.
-def view_of(item: QGraphicsItem) -> pg.ViewBox | None:
-    """The ViewBox whose data area holds ``item``."""
-    parent = item.parentItem()
-    while parent is not None and not isinstance(parent, pg.ViewBox):
-        parent = parent.parentItem()
-    return parent
-
-
-def clip_polyline(x: np.ndarray, y: np.ndarray, rect: QRectF) -> tuple[np.ndarray, np.ndarray]:
-    """The parts of the polyline (x, y) inside ``rect`` (Liang–Barsky per segment), as
-    points with NaN between the pieces; NaN points break the line as before."""
-    x0, x1, y0, y1 = rect.left(), rect.right(), rect.top(), rect.bottom()
-    ax, ay, bx, by = x[:-1], y[:-1], x[1:], y[1:]
-    dx, dy = bx - ax, by - ay
-    lo, hi = np.zeros(ax.shape), np.ones(ax.shape)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
-            t = q / p
-            lo = np.where(p < 0, np.maximum(lo, t), lo)
-            hi = np.where(p > 0, np.minimum(hi, t), hi)
-            outside = (p == 0) & (q < 0)        # parallel to this edge and beyond it
-            hi = np.where(outside, -1.0, hi)
-    keep = np.isfinite(dx) & np.isfinite(dy) & (lo <= hi)
-    xs, ys = [], []
-    joined = False                                # the last piece ends where this one starts
-    for i in np.flatnonzero(keep):
-        if not (joined and lo[i] == 0.0 and keep[i - 1]):
-            xs.append(np.nan)
-            ys.append(np.nan)
-            xs.append(ax[i] + lo[i] * dx[i])
-            ys.append(ay[i] + lo[i] * dy[i])
-        xs.append(ax[i] + hi[i] * dx[i])
-        ys.append(ay[i] + hi[i] * dy[i])
-        joined = hi[i] == 1.0
-    return np.array(xs[1:]), np.array(ys[1:])
-
-
 class _Dot(QGraphicsEllipseItem):
     """The cursor's dot on a curve: in an export only when asked, and inside its view."""
 
@@ -273,27 +237,10 @@ class CurveItem(QGraphicsPathItem):
         view = view_of(self)
         if view is None or not self.x.size:
             return
-        rect = view.viewRect()
-        finite = np.isfinite(self.x) & np.isfinite(self.y)
-        x, y = self.x[finite], self.y[finite]
-        if ((x >= rect.left()) & (x <= rect.right()) & (y >= rect.top()) & (y <= rect.bottom())).all():
-            return                                   # the usual case: nothing to cut
-        self._whole = self.path()
-        cx, cy = clip_polyline(self.x, self.y, rect)
-        path = QPainterPath()
-        edges = np.flatnonzero(np.diff(np.concatenate(([0], np.isfinite(cx).view(np.int8), [0]))))
-        if self._connect == "finite":
-            for start, stop in zip(edges[::2], edges[1::2]):
-                path.addPath(pg.arrayToQPath(cx[start:stop], cy[start:stop], connect="all",
-                                             finiteCheck=False))
-        else:                                       # pairs: the segments, each cut alone
-            xs, ys = self.x.reshape(-1, 2), self.y.reshape(-1, 2)
-            for (ax, bx), (ay, by) in zip(xs, ys):
-                px, py = clip_polyline(np.array([ax, bx]), np.array([ay, by]), rect)
-                if px.size == 2:
-                    path.moveTo(px[0], py[0])
-                    path.lineTo(px[1], py[1])
-        self.setPath(path)
+        path = clipped_path(self.x, self.y, self._connect, view.viewRect())
+        if path is not None:
+            self._whole = self.path()
+            self.setPath(path)
 
     def paint(self, painter: QPainter, option, widget=None) -> None:
         # pyqtgraph's antialias option, as its own curves: the views leave it off for the

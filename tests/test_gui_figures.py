@@ -146,3 +146,34 @@ def test_compare_legend_keeps_off_the_plots(qtbot, model):
     bottom = max(item.sceneBoundingRect().bottom() for _, item in legend.items)
     for key in ("ram_x_mm", "ram_v_m_s"):
         assert bottom <= view.plots.item(key).sceneBoundingRect().top() + 1
+
+
+def test_clip_polyline_keeps_exactly_the_inside():
+    """Cut polylines: every point kept lies in the rect, every point inside is kept, and
+    the kept length equals the inside length measured on a dense resampling."""
+    from PySide6.QtCore import QRectF
+
+    from shaperapp.plot_clip import clip_polyline
+    rng = np.random.default_rng(7)
+    rect = QRectF(-1.0, -0.5, 2.0, 1.0)
+    for _ in range(200):
+        x, y = rng.normal(0, 1.2, 12), rng.normal(0, 0.8, 12)
+        x[rng.integers(12)] = np.nan
+        cx, cy = clip_polyline(x, y, rect)
+        kept = np.isfinite(cx)
+        assert ((cx[kept] >= -1 - 1e-12) & (cx[kept] <= 1 + 1e-12)).all()
+        assert ((cy[kept] >= -0.5 - 1e-12) & (cy[kept] <= 0.5 + 1e-12)).all()
+        inside = (np.abs(x) <= 1) & (np.abs(y) <= 0.5)
+        joined = np.zeros(12, bool)                  # on a drawn segment (a NaN's neighbours
+        joined[:-1] |= np.isfinite(x[1:])            # may have no segment at all)
+        joined[1:] |= np.isfinite(x[:-1])
+        for px, py in zip(x[inside & joined], y[inside & joined]):
+            assert np.any((cx == px) & (cy == py))
+        t = np.linspace(0, 1, 2001)[:, None]
+        dense_x, dense_y = x[:-1] + t * np.diff(x), y[:-1] + t * np.diff(y)
+        step = np.hypot(np.diff(x), np.diff(y)) / 2000
+        mid_in = (np.abs((dense_x[1:] + dense_x[:-1]) / 2) <= 1) & \
+            (np.abs((dense_y[1:] + dense_y[:-1]) / 2) <= 0.5)
+        expected = np.nansum(mid_in * step)
+        seg = np.hypot(np.diff(cx), np.diff(cy))
+        assert np.nansum(seg) == pytest.approx(expected, rel=2e-3, abs=1e-3)
