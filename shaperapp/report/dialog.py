@@ -48,6 +48,9 @@ class ReportOptionsDialog(QDialog):
                 edit.setText(str(settings.value(f"report/{field}", "") or ""))
             self.cover[field] = edit
         self.cover["date"].setText(datetime.date.today().isoformat())
+        wide = self.fontMetrics().horizontalAdvance(self.design_name.placeholderText() + "MMMM")
+        for edit in [self.design_name, *self.cover.values()]:
+            edit.setMinimumWidth(max(wide, 24 * self.fontMetrics().averageCharWidth()))
         self.count = QSpinBox()
         self.count.setRange(1, MAX_COUNT)
         self.count.setValue(DEFAULT_COUNT)

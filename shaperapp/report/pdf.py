@@ -188,6 +188,8 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
                             paint_rows([r], False, False), header=repeat))
     for piece in pieces[:2] if len(pieces) > 3 else ():   # no table starts with one row at a page foot
         piece.keep_with_next = True
+    if len(pieces) > 3:                                    # nor ends with one row at a page top
+        pieces[-2].keep_with_next = True
     return pieces
 
 
