@@ -35,6 +35,7 @@ class Table:
     caption: str = ""
     shaded: list[bool] = field(default_factory=list)
     left_columns: int = 1
+    plain_header: bool = False        # True: the header is user text (names), never typeset
 
 
 @dataclass
@@ -70,15 +71,15 @@ class Report:
 
 
 def cover_rows(report: Report) -> list[tuple[str, str]]:
-    """The cover block under the title, two cells a row: (label, value)."""
+    """The cover block under the title: the design on a row of its own, then two
+    label–value cells a row."""
     translate = QCoreApplication.translate
     c = report.cover
-    return [(translate("Report", "Design"), report.name), (translate("Report", "Date"), report.date),
+    return [(translate("Report", "Design"), report.name),
             (translate("Report", "Student"), c.student),
             (translate("Report", "Student number"), c.number),
             (translate("Report", "Class"), c.group), (translate("Report", "School"), c.school),
-            (translate("Report", "Supervisor"), c.supervisor),
-            (translate("Report", "Program"), "Shaper Designer")]
+            (translate("Report", "Supervisor"), c.supervisor), (translate("Report", "Date"), report.date)]
 
 
 # The formulas' notation in the (translated) source text, typeset by ``typeset``:
@@ -86,7 +87,7 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
 # the digit below, (1/2π) → a slanted fraction.
 _NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
                        r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z0-9_])(?P<name>[OLωα])(?P<digit>\d)"
+                       r"|(?<![A-Za-z_])(?P<name>[OLωα])(?P<digit>\d)"
                        r"|\((?P<num>\d)/(?P<den>\d?π)\)")
 
 

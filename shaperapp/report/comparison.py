@@ -42,7 +42,7 @@ def comparison_table(result: Comparison) -> Table:
         rows.append([figure_label(row.key)] + cells)
     return Table([translate("Report", "Figure")] + list(result.labels), rows,
                  translate("Report", "Figures at %1 r/min").replace("%1", f"{result.rpm:g}"),
-                 [bool(row.best) for row in result.rows])
+                 [bool(row.best) for row in result.rows], plain_header=True)
 
 
 def comparison_blocks(result: Comparison, curves) -> list:

@@ -12,7 +12,7 @@ from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QRectF, QSize
 from PySide6.QtGui import QFont, QPainter
 from PySide6.QtSvg import QSvgGenerator
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
 from .fonts import report_font
 
 SVG_DPI = 96.0
@@ -63,16 +63,22 @@ def figure_svg(figure: Figure, font: QFont) -> str:
     return text[text.index("<svg"):]
 
 
+def _label(text: str) -> str:
+    """A label of the program's own (never user text), escaped, its notation typeset."""
+    return typeset(html.escape(text))
+
+
 def _table(block: Table) -> str:
     out = []
     if block.caption:
         out.append(f'<p class="caption">{html.escape(block.caption)}</p>')
-    out.append('<table class="data"><tr>' + "".join(f"<th>{html.escape(h)}</th>" for h in block.header)
+    head = (html.escape if block.plain_header else _label)
+    out.append('<table class="data"><tr>' + "".join(f"<th>{head(h)}</th>" for h in block.header)
                + "</tr>")
     for r, row in enumerate(block.rows):
         special = ' class="special"' if block.shaded and block.shaded[r] else ""
-        cells = "".join(("<td class='l'>" if c < block.left_columns else "<td>") + html.escape(v) + "</td>"
-                        for c, v in enumerate(row))
+        cells = "".join(("<td class='l'>" + _label(v) if c < block.left_columns else "<td>" + html.escape(v))
+                        + "</td>" for c, v in enumerate(row))
         out.append(f"<tr{special}>{cells}</tr>")
     out.append("</table>")
     return "\n".join(out)
@@ -81,8 +87,9 @@ def _table(block: Table) -> str:
 def report_html(report: Report) -> str:
     font = report_font(report.language, 8.0)
     rows = cover_rows(report)
-    cells = ["".join(f'<th>{html.escape(label)}</th><td>{html.escape(value)}</td>'
-                     for label, value in rows[k:k + 2]) for k in range(0, len(rows), 2)]
+    cell = lambda label, value, span="": f"<th>{html.escape(label)}</th><td{span}>{html.escape(value)}</td>"  # noqa: E731
+    cells = [cell(*rows[0], ' colspan="3"')] + ["".join(cell(*r) for r in rows[k:k + 2])
+                                                 for k in range(1, len(rows), 2)]
     body = [f'<div class="title"><h1>{html.escape(report.title)}</h1><table>'
             + "".join(f"<tr>{row}</tr>" for row in cells) + "</table></div>"]
     for block in report.blocks:
@@ -92,7 +99,7 @@ def report_html(report: Report) -> str:
             body.append(f"<p>{block.html}</p>")
         elif isinstance(block, KeyValues):
             body.append('<table class="kv">' + "".join(
-                f"<tr><td>{html.escape(k)}</td><td>{html.escape(v)}</td></tr>" for k, v in block.rows)
+                f"<tr><td>{_label(k)}</td><td>{_label(v)}</td></tr>" for k, v in block.rows)
                 + "</table>")
         elif isinstance(block, Table):
             body.append(_table(block))

@@ -15,7 +15,7 @@ from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QMa
 from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen, QTextDocument)
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
 from .fonts import report_font
 
 translate = QCoreApplication.translate
@@ -121,9 +121,11 @@ def _cell_widths(lay: Layout, font: QFont, header: list[str], rows: list[list[st
 def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
     if isinstance(block, KeyValues):
         header, rows, caption, shaded, left = [], [list(r) for r in block.rows], "", [], 2
+        plain_header = True
     else:
         header, rows, caption, shaded, left = block.header, block.rows, block.caption, block.shaded, \
             block.left_columns
+        plain_header = block.plain_header
     font = lay.body if isinstance(block, KeyValues) else lay.small
     widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
     if sum(widths) > lay.width * 1.001:
@@ -150,8 +152,9 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
                 p.fillRect(QRectF(x, y, total_w, head_h), HEAD_FILL)
                 cx = x
                 for text, cw in zip(header, widths):
-                    p.drawText(QRectF(cx + 2, y, cw - 4, head_h),
-                               int(Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap), text)
+                    _cell(p, QRectF(cx + 2, y, cw - 4, head_h),
+                          Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap, text, font,
+                          not plain_header)
                     cx += cw
                 y0 = y
                 y += head_h
@@ -163,8 +166,8 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
                 cx = x
                 for c, (text, cw) in enumerate(zip(rows[r], widths)):
                     align = Qt.AlignmentFlag.AlignLeft if c < left else Qt.AlignmentFlag.AlignRight
-                    p.drawText(QRectF(cx + 0.6 * m.averageCharWidth(), y, cw - 1.2 * m.averageCharWidth(), row_h),
-                               int(align | Qt.AlignmentFlag.AlignVCenter), text)
+                    _cell(p, QRectF(cx + 0.6 * m.averageCharWidth(), y, cw - 1.2 * m.averageCharWidth(), row_h),
+                          align | Qt.AlignmentFlag.AlignVCenter, text, font, c < left)
                     cx += cw
                 y += row_h
             p.setPen(QPen(GRID, 0.15 * lay.mm))
@@ -191,6 +194,27 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
     if len(pieces) > 3:                                    # nor ends with one row at a page top
         pieces[-2].keep_with_next = True
     return pieces
+
+
+def _cell(p: QPainter, rect: QRectF, flags, text: str, font: QFont, rich: bool) -> None:
+    """A table cell's text; the program's own labels (``rich``) with their notation
+    typeset (``typeset``: J_F, v_A2A3, a^k …), user text always as it is."""
+    marked = typeset(html.escape(text)) if rich else ""
+    if not rich or marked == html.escape(text):
+        p.drawText(rect, int(flags), text)
+        return
+    doc = QTextDocument()
+    doc.documentLayout().setPaintDevice(p.device())
+    doc.setDefaultFont(font)
+    doc.setDocumentMargin(0)
+    where = "center" if flags & Qt.AlignmentFlag.AlignHCenter else \
+        "right" if flags & Qt.AlignmentFlag.AlignRight else "left"
+    doc.setHtml(f'<div align="{where}" style="color:{INK.name()}">{marked}</div>')
+    doc.setTextWidth(rect.width())
+    p.save()
+    p.translate(rect.left(), rect.top() + (rect.height() - doc.size().height()) / 2)
+    doc.drawContents(p)
+    p.restore()
 
 
 def _lines(m: QFontMetricsF, text: str, width: float) -> int:
@@ -339,18 +363,19 @@ def _title_block(p: QPainter, lay: Layout, report: Report, y: float, height: flo
     row_h = (height - title_h) / 4
     label_w = max(lay.metrics(lay.small).horizontalAdvance(label) for label, _ in rows) + 4 * lay.mm
     p.setPen(QPen(INK, 0.2 * lay.mm))
-    for k, (label, value) in enumerate(rows):
-        cx, cy = x + (k % 2) * w / 2, y + title_h + (k // 2) * row_h
+    for k, (label, value) in enumerate(rows):       # the design alone on the first row
+        column = (k + 1) % 2 if k else 0
+        cw = w if k == 0 else w / 2
+        cx, cy = x + column * w / 2, y + title_h + ((k + 1) // 2) * row_h
         p.drawLine(QPointF(x, cy), QPointF(x + w, cy))
-        if k % 2:
+        if column:
             p.drawLine(QPointF(cx, cy), QPointF(cx, cy + row_h))
         p.setFont(lay.small)
         p.drawText(QRectF(cx + 2 * lay.mm, cy, label_w, row_h), int(Qt.AlignmentFlag.AlignVCenter), label)
         p.setFont(lay.body)
-        text = lay.metrics(lay.body).elidedText(value, Qt.TextElideMode.ElideRight,
-                                                w / 2 - label_w - 4 * lay.mm)
-        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, w / 2 - label_w - 4 * lay.mm, row_h),
-                   int(Qt.AlignmentFlag.AlignVCenter), text)
+        room = cw - label_w - 4 * lay.mm
+        text = lay.metrics(lay.body).elidedText(value, Qt.TextElideMode.ElideRight, room)
+        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, room, row_h), int(Qt.AlignmentFlag.AlignVCenter), text)
 
 
 def _footer(p: QPainter, lay: Layout, report: Report, page: int, pages: int) -> None:
