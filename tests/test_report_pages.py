@@ -10,6 +10,7 @@ the stroke bands, the cutting-zone shading and the φ cursor ran over the page.
 from __future__ import annotations
 
 import shutil
+from pathlib import Path
 import subprocess
 
 import numpy as np
@@ -112,3 +113,29 @@ def test_no_page_is_left_half_empty_for_a_figure(printed):
             free = bottom - before[-1][1].bottom()
             figure, caption = page[0][1], page[1][1]
             assert free < SHRINK * figure.height() + caption.height(), (free, figure.height())
+
+
+@pytest.mark.parametrize("kind", ["curves", "forces"])
+def test_report_figures_are_the_laid_out_views(qapp, tmp_path, kind):
+    """The report takes its plots' SVG from views it lays out first: the SVG agrees with a
+    PNG of the same view taken once everything is settled. Exported before layout (as on
+    a748eb2, with no event loop on the command line), the legends sat on the top tick
+    labels and the joint forces' title on its legend."""
+    from PySide6.QtCore import QCoreApplication
+    from PySide6.QtGui import QImage
+
+    import figure_checks as fc
+    from core.metrics import analyze
+    from shaperapp.report.figures import ReportViews
+    spec, rpms = SPECS["rod"], [40.0, 60.0]
+    views = ReportViews(spec, rpms, LOADS, analyze(spec.design(), rpms))
+    try:
+        getattr(views, kind)()
+        svg = (Path(views._dir.name) / f"{kind}.svg").read_bytes()
+        for _ in range(3):
+            QCoreApplication.processEvents()
+        views._widgets[-1].export_image(str(tmp_path / "settled.png"))
+        png = QImage(str(tmp_path / "settled.png"))
+        assert fc.differing_share(png, svg) <= fc.MAX_DIFFERENT
+    finally:
+        views.close()
