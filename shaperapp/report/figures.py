@@ -201,7 +201,7 @@ class ReportViews:
         return svg_paint([self._svg(self._show(PlotsWidget(self.model), 900, 680), "curves")])
 
     def forces(self) -> Paint:
-        return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1100, 1100), "forces")])
+        return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1450, 1050), "forces")])
 
     def comparison_curves(self, result: Comparison) -> Paint:
         """The Compare tab's overlay curves of ``result``."""
