@@ -26,6 +26,7 @@ import numpy as np
 
 from .dynamics import MassProperties, masses_for_design, solve_dynamics
 from .errors import DesignError
+from .io import csv_text, snap_zeros
 from .figures import DESIGN_FIGURES, SPEED_FIGURES, TEXT_FIGURES, Figures, figures
 from .kinematics import crank_angles, solve
 from .spec import Spec
@@ -148,38 +149,45 @@ def _number(value: Any) -> str:
     if value is None:
         return ""
     if isinstance(value, str):
-        return value
+        return csv_text(value)
     return "%.10g" % value
 
 
 def table_csv(comparison: Comparison) -> str:
     """The figure table as CSV: figure, unit, better, one column per design, the
-    differences from the first design, and the best design(s) separated by ``;``."""
+    differences from the first design, and the best design(s) separated by ``;``. The
+    designs' names are user text (:func:`core.io.csv_text`)."""
     labels = comparison.labels
+    names = [csv_text(label) for label in labels]
     out = _io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["figure", "unit", "better", *labels,
-                     *(f"{label} - {labels[0]}" for label in labels[1:]), "best"])
+    writer.writerow(["figure", "unit", "better", *names,
+                     *(csv_text(f"{label} - {labels[0]}") for label in labels[1:]), "best"])
     writer.writerow(["rpm", "r/min", "", *(_number(comparison.rpm) for _ in labels),
                      *("" for _ in labels[1:]), ""])
     for row in comparison.rows:
         writer.writerow([row.key, row.unit, row.better or "", *(_number(v) for v in row.values),
                          *(_number(d) for d in row.differences[1:]),
-                         ";".join(labels[i] for i in row.best)])
+                         csv_text(";".join(labels[i] for i in row.best))])
     return out.getvalue()
 
 
 def curves_csv(comparison: Comparison) -> str:
-    """The overlay curves in long form, one row per (design, crank angle)."""
+    """The overlay curves in long form, one row per (design, crank angle); round-off
+    zeros as 0 (:func:`core.io.snap_zeros`, over all designs of a column)."""
     out = _io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(CURVE_COLUMNS)
+    torques = [np.full(comparison.crank_deg.shape, np.nan) if t is None else t
+               for t in comparison.crank_torque_N_m]
+    columns = [snap_zeros(np.reshape(a, (-1, 1))).reshape(np.shape(a)) for a in
+               (comparison.ram_x_mm, comparison.ram_v_m_s, comparison.ram_a_m_s2, torques)]
     for k, label in enumerate(comparison.labels):
         torque = comparison.crank_torque_N_m[k]
+        x, v, a, t = (c[k] for c in columns)
         for j, deg in enumerate(comparison.crank_deg):
-            writer.writerow([label, _number(deg), _number(comparison.ram_x_mm[k, j]),
-                             _number(comparison.ram_v_m_s[k, j]), _number(comparison.ram_a_m_s2[k, j]),
-                             "" if torque is None else _number(torque[j])])
+            writer.writerow([csv_text(label), _number(deg), _number(x[j]), _number(v[j]),
+                             _number(a[j]), "" if torque is None else _number(t[j])])
     return out.getvalue()
 
 

@@ -55,20 +55,58 @@ def curve_table(motion: Motion) -> tuple[tuple[str, ...], np.ndarray]:
     return names, data
 
 
+# A cell of user text that starts like a formula is one to Excel, LibreOffice and Sheets
+# (OWASP "CSV injection"): =, +, -, @, and tab or carriage return, which some of them skip.
+FORMULA_LEADS = ("=", "+", "-", "@", "\t", "\r")
+ZERO_ULPS = 64       # a value within this many ulps of its column's largest magnitude is 0
+
+
+def csv_text(text: str) -> str:
+    """A cell of text (a design's name, a file name, a note) as every CSV writer here
+    writes it: with a leading ``'`` when it would start a formula (:data:`FORMULA_LEADS`),
+    so a spreadsheet shows it as text, as OWASP advises. Numbers are never passed
+    through this (−2 must stay a number); only text that a user may have typed is."""
+    return "'" + text if text.startswith(FORMULA_LEADS) else text
+
+
+def zero_scale(data: np.ndarray) -> np.ndarray:
+    """Per column, the magnitude under which a value is round-off of zero: ZERO_ULPS
+    ulps (ZERO_ULPS · 2.2e-16) of the column's largest finite magnitude."""
+    data = np.asarray(data, dtype=float)
+    with np.errstate(invalid="ignore"):
+        largest = np.nanmax(np.where(np.isfinite(data), np.abs(data), np.nan), axis=0,
+                            initial=0.0) if data.size else np.zeros(data.shape[1:])
+    return ZERO_ULPS * np.finfo(float).eps * largest
+
+
+def snap_zeros(data: np.ndarray, scale: np.ndarray | None = None) -> np.ndarray:
+    """``data`` (rows × columns) with round-off zeros written as 0: values within
+    :func:`zero_scale` of their column (``scale`` when given, e.g. the whole table's
+    when it is written in blocks), such as a ram velocity of −4.8e-17 m/s at a limit
+    position, where the exact value is 0. −0 becomes 0 as well."""
+    data = np.array(data, dtype=float)
+    limit = zero_scale(data) if scale is None else np.asarray(scale, dtype=float)
+    with np.errstate(invalid="ignore"):
+        data[np.abs(data) <= limit] = 0.0
+    return data
+
+
 def table_csv(names: Iterable[str], data: np.ndarray) -> str:
     """CSV text with a header; numbers with 10 significant digits, NaN as an empty cell."""
     return "".join(table_chunks(names, data))
 
 
 def table_chunks(names: Iterable[str] | None, data: np.ndarray,
-                 rows: int = 20_000) -> Iterator[str]:
+                 rows: int = 20_000, scale: np.ndarray | None = None) -> Iterator[str]:
     """The CSV of :func:`table_csv` in pieces of ``rows`` rows (the header first, unless
     ``names`` is None), so a large table is never formatted in one piece.
 
     A NaN marks a value that is undefined at that angle (the guide's line of
-    action when it carries no force) and becomes an empty cell.
+    action when it carries no force) and becomes an empty cell. Round-off zeros
+    are written as 0 (:func:`snap_zeros`, relative to ``scale``: by default
+    :func:`zero_scale` of ``data``).
     """
-    data = np.asarray(data, dtype=float)
+    data = snap_zeros(data, scale)
     if names is not None:
         yield ",".join(names) + "\n"
     if data.size == 0:

@@ -7,6 +7,8 @@ grey-scale prints too. It draws a :class:`core.compare.Comparison` and nothing e
 """
 from __future__ import annotations
 
+import html
+
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QRectF, QSizeF, Qt
 from PySide6.QtGui import QColor, QPainter
@@ -75,6 +77,9 @@ class ComparePlots(pg.GraphicsLayoutWidget):
         self._legend.clear()
         if result is None:
             return
+        # three designs a row: 4 to 6 take two rows, which must not run into the plots
+        self.ci.layout.setRowMaximumHeight(0, LEGEND_ROW_PX * -(-len(result.labels) // 3))
+        self.ci.layout.setRowMinimumHeight(0, LEGEND_ROW_PX * -(-len(result.labels) // 3))
         for k, label in enumerate(result.labels):
             pen = design_pen(k)
             series = (result.ram_x_mm[k], result.ram_v_m_s[k], result.ram_a_m_s2[k],
@@ -83,9 +88,11 @@ class ComparePlots(pg.GraphicsLayoutWidget):
                 if y is not None:
                     curve = self._items[key].plot(result.crank_deg, y, pen=pen)
                     if key == CURVES[0]:
-                        self._legend.addItem(curve, label)
+                        self._legend.addItem(curve, html.escape(label))   # rich text
         for item in self._items.values():
             item.enableAutoRange()
+        self._legend.layout.activate()        # laid out now: an export may follow at once
+        self.ci.layout.activate()
 
     def render_plots(self, painter: QPainter, target: QRectF) -> None:
         """Paint the plots into ``target`` of any painter, as vectors."""

@@ -214,8 +214,12 @@ class CompareView(QWidget):
         """Curves and the whole table as one picture: SVG for ``.svg``, else a raster type
         by suffix (``image_export.image_type`` refuses anything else, naming the path)."""
         table = self.table
-        table_size = QSize(table.verticalHeader().width() + table.horizontalHeader().length() + 4,
-                           table.horizontalHeader().height() + table.verticalHeader().length() + 4)
+        # the headers' geometry is laid out lazily: right after a new comparison it is
+        # still the last one's (a table frame drawn below the canvas), so lay it out now
+        table.updateGeometries()
+        frame = 2 * table.frameWidth()
+        table_size = QSize(table.verticalHeader().width() + table.horizontalHeader().length() + frame,
+                           table.horizontalHeader().height() + table.verticalHeader().length() + frame)
         plots_size = self.plots.size()
         title_h = 28
         width = max(plots_size.width(), table_size.width())
@@ -232,6 +236,7 @@ class CompareView(QWidget):
         for bar in (table.setVerticalScrollBarPolicy, table.setHorizontalScrollBarPolicy):
             bar(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         table.resize(table_size)               # the whole table, not the part scrolled into view
+        table.updateGeometries()
         try:
             export_painting(path, QSizeF(width, height), paint, self.tr("Design comparison"), WHITE)
         finally:

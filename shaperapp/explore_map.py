@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QPointF, QRectF, Signal
+from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QBrush, QColor, QPen
 from PySide6.QtWidgets import QGraphicsRectItem, QWidget
 
@@ -34,7 +34,9 @@ class HeatMap(pg.PlotWidget):
         self.getViewBox().disableAutoRange()            # the grid sets the range
         self.backdrop = QGraphicsRectItem()
         self.backdrop.setBrush(QBrush(INVALID))
-        self.backdrop.setPen(QPen(INVALID))
+        # no outline: a pen here is 1 data unit wide (0.5 in K is 100 px), which the view's
+        # clip hid on screen and an SVG export did not (grey all over the margin)
+        self.backdrop.setPen(QPen(Qt.PenStyle.NoPen))
         self.backdrop.setZValue(-10)
         self.addItem(self.backdrop)
         self.image = pg.ImageItem()

@@ -393,10 +393,14 @@ class ExploreView(QWidget):
 
     def export_image(self, path: str) -> None:
         """Write the heat map with its colour bar to ``path``: SVG for ``.svg``, else a raster
-        image (errors as ``image_export.export_scene``'s; written atomically)."""
-        item = self.map.getPlotItem()
-        export_scene(item.scene(), item.sceneBoundingRect(), path, self.tr("Design-space map"),
-                     QColor("white"))
+        image (errors as ``image_export.export_scene``'s; written atomically). ValueError
+        before a map has been computed: there is nothing to draw."""
+        if self.result is None:
+            raise ValueError(self.tr("There is no map to export yet: press Compute map on "
+                                     "the Explore tab first."))
+        # the whole view, as on screen: the top tick label reaches above the plot item
+        source = self.map.mapToScene(self.map.viewport().rect()).boundingRect()
+        export_scene(self.map.scene(), source, path, self.tr("Design-space map"), QColor("white"))
 
     def shutdown(self) -> None:
         """Stop any work and wait for it (the window is closing)."""

@@ -66,19 +66,23 @@ def image_type(path: str | os.PathLike) -> str:
 
 
 def render_scene(scene: QGraphicsScene, source: QRectF, painter: QPainter, target: QRectF,
-                 background: QColor, prepare: Callable[[bool], None] | None = None) -> None:
+                 background: QColor, prepare: Callable[[bool], None] | None = None,
+                 cursor: bool = False) -> None:
     """Paint the ``source`` part of ``scene`` into ``target``, on ``background``.
 
     ``prepare(True)`` runs before and ``prepare(False)`` after, whatever happens:
-    views use it to drop pixmap caches that would blur in a scaled image. pyqtgraph
-    items are switched to export mode meanwhile, so they paint vectors."""
+    views use it to drop pixmap caches that would blur in a scaled image. Every item
+    with ``setExportMode`` (pyqtgraph's, and the plots' own in ``plot_curves``) is
+    switched to export mode meanwhile: pyqtgraph's paint vectors, the plots' cut
+    themselves to their view (an SVG cannot clip) and leave out the animation
+    cursor unless ``cursor``. Nothing is painted outside ``target``."""
     items = [it for it in scene.items() if hasattr(it, "setExportMode")]
     if prepare is not None:
         prepare(True)
     try:
         for it in items:
             it.setExportMode(True, {"antialias": True, "background": background,
-                                    "painter": painter})
+                                    "painter": painter, "cursor": cursor})
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         painter.setRenderHint(QPainter.RenderHint.TextAntialiasing)
         painter.fillRect(target, background)

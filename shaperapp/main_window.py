@@ -304,7 +304,7 @@ class MainWindow(QMainWindow):
             return
         from .report.dialog import export_report_dialog   # builds offscreen views: load on demand
         path = export_report_dialog(self.model, self, self._language,
-                                    self.document.last_dir())
+                                    self.document.last_dir(), self.settings)
         if path:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 

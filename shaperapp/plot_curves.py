@@ -17,6 +17,7 @@ from PySide6.QtGui import QBrush, QColor, QPainter, QPainterPath, QPen
 from PySide6.QtWidgets import (QGraphicsEllipseItem, QGraphicsItem, QGraphicsLineItem, QGraphicsPathItem,
                                QGraphicsRectItem)
 
+from .plot_clip import clipped_path, view_of
 from .style import CURSOR, TEXT
 
 # One pixel: Qt's raster engine draws thin cosmetic lines on a fast path; at 1.8 px an
@@ -71,8 +72,28 @@ def finite_range(arrays: Iterable[np.ndarray]) -> tuple[float, float]:
     return lo, hi
 
 
+# ---- export: what a painter gets is what the screen's clip shows ---------------------------
+# On screen the ViewBox clips its children to the plot area. An SVG (QSvgGenerator) has no
+# clip, and QSvgRenderer, which replays it into the PDF report, ignores clip paths, so every
+# item here puts only what lies in its view into an export (``setExportMode``, called by
+# ``image_export.render_scene`` for every item that has it). The cursor and its dots are
+# an animation's, not the figure's: an export leaves them out unless ``opts["cursor"]``.
+class _Dot(QGraphicsEllipseItem):
+    """The cursor's dot on a curve: in an export only when asked, and inside its view."""
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        if export:
+            view = view_of(self)
+            self._shown = self.isVisible()
+            inside = view is not None and view.viewRect().contains(self.pos())
+            self.setVisible(self._shown and inside and bool((opts or {}).get("cursor")))
+        elif hasattr(self, "_shown"):
+            self.setVisible(self._shown)
+            del self._shown
+
+
 def _dot() -> QGraphicsEllipseItem:
-    dot = QGraphicsEllipseItem(QRectF(-DOT_RADIUS, -DOT_RADIUS, 2 * DOT_RADIUS, 2 * DOT_RADIUS))
+    dot = _Dot(QRectF(-DOT_RADIUS, -DOT_RADIUS, 2 * DOT_RADIUS, 2 * DOT_RADIUS))
     dot.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIgnoresTransformations, True)
     dot.setPen(QPen(QColor("#ffffff"), 1.0))
     dot.setZValue(Z_DOT)
@@ -112,6 +133,20 @@ class CursorLine(QGraphicsLineItem):
     def value(self) -> float:
         return self.x()
 
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: left out unless ``opts["cursor"]``, else across the view only."""
+        if export:
+            self._shown = self.isVisible()
+            (x0, x1), (y0, y1) = self._view.viewRange()
+            inside = x0 <= self.x() <= x1
+            self.setVisible(self._shown and inside and bool((opts or {}).get("cursor")))
+            self.setLine(0.0, y0, 0.0, y1)
+        else:
+            self.span()
+            if hasattr(self, "_shown"):
+                self.setVisible(self._shown)
+                del self._shown
+
     def setValue(self, x: float) -> None:  # noqa: N802 - as InfiniteLine
         self.setPos(x, 0.0)
 
@@ -138,6 +173,15 @@ class BandRect(QGraphicsRectItem):
         y0, y1 = _full_height(self._view)
         x0, x1 = self._span
         self.setRect(QRectF(x0, y0, x1 - x0, y1 - y0).normalized())
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: the part of the span in the view, from its bottom to its top."""
+        if not export:
+            self._place()
+            return
+        view = self._view.viewRect()
+        x0, x1 = self._span
+        self.setRect(QRectF(x0, view.top(), x1 - x0, view.height()).normalized().intersected(view))
 
 
 class CurveItem(QGraphicsPathItem):
@@ -182,6 +226,21 @@ class CurveItem(QGraphicsPathItem):
 
     def shape(self) -> QPainterPath:
         return self._box
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: only the parts of the line inside the view (see ``clip_polyline``)."""
+        if not export:
+            if getattr(self, "_whole", None) is not None:
+                self.setPath(self._whole)
+                self._whole = None
+            return
+        view = view_of(self)
+        if view is None or not self.x.size:
+            return
+        path = clipped_path(self.x, self.y, self._connect, view.viewRect())
+        if path is not None:
+            self._whole = self.path()
+            self.setPath(path)
 
     def paint(self, painter: QPainter, option, widget=None) -> None:
         # pyqtgraph's antialias option, as its own curves: the views leave it off for the

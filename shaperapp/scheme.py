@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QRectF, QTimer
+from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QAction, QPainter
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QGraphicsView, QHBoxLayout, QMenu, QToolButton,
                                QVBoxLayout, QWidget)
@@ -201,6 +201,13 @@ class SchemeWidget(QWidget):
         self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         export_scene(self._plot.scene(), source, path, self.tr("Shaper mechanism"), WHITE)
+
+    def export_point(self, x_mm: float, y_mm: float) -> QPointF:
+        """Where the design point (x, y) (mm, the frame of ``core.geometry``) lies in the
+        picture ``export_image`` writes now, in its px: for marks drawn over it."""
+        self._catch_up()
+        item = self._plot.getPlotItem()
+        return item.getViewBox().mapViewToScene(QPointF(x_mm, y_mm)) - item.sceneBoundingRect().topLeft()
 
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the sketch as shown into ``target`` of any QPainter (vector output)."""

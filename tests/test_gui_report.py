@@ -40,7 +40,8 @@ def test_export_writes_pdf_and_html_of_the_design_on_screen(window, tmp_path):
     if shutil.which("pdftotext"):
         text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True).stdout
         theta = f"{window.model.metrics.theta_deg:.4f} °"
-        assert theta in text and "Untitled design" in text
+        assert theta in text and "Untitled" not in text
+        assert "L1 100 mm, K 1.6, H 300 mm" in text          # named by its inputs
     html = tmp_path / "r.html"
     assert export_report(window.model, str(html), "en") == 0
     assert "<svg" in html.read_text(encoding="utf-8")
@@ -101,3 +102,32 @@ def test_dialog_adds_the_chosen_type_and_refuses_another(window, qtbot, tmp_path
     assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)) == ""
     assert len(warnings) == 1 and "r.txt" in warnings[0]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["page.html", "typed.pdf"]
+
+
+def test_cover_fields_are_remembered_between_exports(window, qtbot, tmp_path, monkeypatch):
+    """The student's fields come back in the next export's dialog (QSettings), the date is
+    today's, and the design is named by its file; the report prints them all."""
+    from PySide6.QtWidgets import QDialog, QFileDialog
+
+    from shaperapp.report.dialog import export_report_dialog
+    target = tmp_path / "r.html"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(target), ""))
+    typed = {"student": "Li Ming", "number": "2021-07", "group": "ME 21", "school": "SME",
+             "supervisor": "Prof. Wang"}
+
+    def fill(dialog):
+        for field, text in typed.items():
+            dialog.cover[field].setText(text)
+        return QDialog.DialogCode.Accepted
+    monkeypatch.setattr(ReportOptionsDialog, "exec", fill)
+    window.model.set_path(str(tmp_path / "bracket.shaper.json"))
+    assert export_report_dialog(window.model, window, "en", str(tmp_path), window.settings) == str(target)
+    page = target.read_text(encoding="utf-8")
+    for text in typed.values():
+        assert f"<td>{text}</td>" in page
+    assert '<td colspan="3">bracket</td>' in page               # the design, named by its file
+    dialog = ReportOptionsDialog(window.model, window, window.settings)
+    qtbot.addWidget(dialog)
+    assert {f: dialog.cover[f].text() for f in typed} == typed
+    assert dialog.name() == "bracket" and re.fullmatch(r"\d{4}-\d\d-\d\d", dialog.date())
+    assert dialog.options().cover.student == "Li Ming"

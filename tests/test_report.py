@@ -261,3 +261,81 @@ def test_comparison_from_a_missing_library_names_it(tmp_path):
                     "-o", tmp_path / "r.pdf")
     assert result.returncode == 2 and result.stderr.startswith("shaper: error: --library")
     assert not (tmp_path / "none.sqlite").exists() and not (tmp_path / "r.pdf").exists()
+
+
+@needs_pdftotext
+def test_cover_block_from_the_command_line(tmp_path):
+    out = tmp_path / "r.pdf"
+    result = shaper("report", *DESIGN, "--rpm", "40", "-o", out, "--student", "Li Ming",
+                    "--student-number", "2021-07", "--class", "ME 21", "--school", "SME",
+                    "--supervisor", "Prof. Wang", "--date", "2026-06-30")
+    assert result.returncode == 0, result.stderr
+    first = squash(pdf_text(out).split("\f")[0])
+    for text in ("Student Li Ming", "Student number 2021-07", "Class ME 21", "School SME",
+                 "Supervisor Prof. Wang", "Date 2026-06-30"):
+        assert text in first
+    assert "L1 100 mm, K 1.4, H 300 mm, L4/L3 0.3" in first and "Untitled" not in first
+
+
+@pytest.mark.parametrize("words, option", [
+    (["--student", "a\nb"], "--student"), (["--class", "x" * 201], "--class"),
+    (["--title", "a\tb"], "--title")])
+def test_bad_cover_text_is_one_line(tmp_path, words, option):
+    result = shaper("report", *DESIGN, *words, "-o", tmp_path / "r.pdf")
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"shaper: error: {option}:") and result.stderr.count("\n") == 1
+    assert not (tmp_path / "r.pdf").exists()
+
+
+def test_drawing_scales_are_the_standard_series():
+    from shaperapp.report.figures import NICE_SCALES, round_scale
+    for value in (0.013, 0.9, 1.0, 1.2, 7.3, 11.0, 14.2, 15.0, 16.0, 333.0):
+        mu = round_scale(value)
+        mantissa = mu / 10 ** np.floor(np.log10(mu))
+        assert mu >= value * (1 - 1e-12) and any(np.isclose(mantissa, n) for n in NICE_SCALES)
+        smaller = [n * 10 ** k for n in NICE_SCALES for k in range(-3, 4) if n * 10 ** k < mu]
+        assert all(s < value for s in smaller)                  # the smallest that fits
+
+
+@needs_pdftotext
+@pytest.mark.parametrize("name", ["en.pdf", "zh.pdf"])
+def test_schemes_state_their_scale_and_mark_theta(reports, name):
+    text = squash(pdf_text(reports[name]))
+    scales = re.findall(r"μ\s?l = (\d+(?:\.\d+)?) mm/mm \(1:(\d+(?:\.\d+)?)\)", text)
+    assert len(scales) == 2 and scales[0] == scales[1] and scales[0][0] == scales[0][1]
+    theta = shaper("synth", *DESIGN).stdout.split("extreme-position angle θ")[1].split()[0]
+    assert text.count(f"θ = {float(theta):.2f}°") == 2                 # one mark per scheme
+
+
+def test_scheme_marks_sit_on_the_design(qtbot):
+    """The marks are placed through SchemeWidget.export_point: O4 to a lever tip limit
+    position measures L3 in design mm, at the same scale across and up (aspect locked)."""
+    import math
+
+    from shaperapp.model import DesignModel
+    from shaperapp.scheme import SchemeWidget
+    model = DesignModel()
+    scheme = SchemeWidget(model)
+    qtbot.addWidget(scheme)
+    scheme.resize(620, 700)
+    scheme.show()
+    design = model.design
+    o4, across, up = (scheme.export_point(*p) for p in ((0, 0), (100, 0), (0, 100)))
+    mm_per_px = 100 / (across.x() - o4.x())
+    assert (o4.y() - up.y()) * mm_per_px == pytest.approx(100, rel=1e-9)
+    half = design.theta / 2
+    tip = scheme.export_point(design.lever * math.sin(half), design.lever * math.cos(half))
+    assert math.dist((o4.x(), o4.y()), (tip.x(), tip.y())) * mm_per_px == pytest.approx(design.lever)
+
+
+@pytest.mark.parametrize("language", ["en", "zh"])
+def test_formulas_are_typeset(tmp_path, language):
+    out = tmp_path / "r.html"
+    assert shaper("report", *DESIGN, "--rpm", "40", "--lang", language, "--html", "-o", out).returncode == 0
+    page = out.read_text(encoding="utf-8")
+    formulas = page[page.index("<h2>8 ") if language == "en" else page.index("<h2>8"):]
+    for marked in ("a<sup>k</sup><sub>A3A2</sub>", "v<sub>A3</sub>", "ω<sub>3</sub>", "J<sub>F</sub>",
+                   "ΔW<sub>max</sub>", "O<sub>4</sub>", "L<sub>3</sub>", "(<sup>1</sup>⁄<sub>2π</sub>)"):
+        assert marked in formulas, marked
+    text = re.sub(r"<[^>]+>", "", formulas)
+    assert "^" not in text and not re.search(r"[A-Za-zΔ]_[A-Za-z0-9]", text)

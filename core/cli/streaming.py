@@ -17,10 +17,11 @@ from typing import Callable, Iterator, Sequence, TextIO
 
 import numpy as np
 
-from ..io import table_chunks
+from ..io import table_chunks, zero_scale
 from .output import write_output
 
 CHUNK_ANGLES = 16_384
+SCALE_ANGLES = 4_096     # angles per speed sampled for the columns' magnitudes
 
 # compute(angles in rad, one rpm) -> (column names, rows); one speed, a block of angles
 TableBlock = Callable[[np.ndarray, float], "tuple[Sequence[str], np.ndarray]"]
@@ -76,13 +77,19 @@ class Progress:
 
 def table_pieces(block: TableBlock, angles: np.ndarray, rpms: Sequence[float],
                  progress: Progress | None = None) -> Iterator[str]:
-    """The CSV text of the whole (speeds × angles) table, one block at a time."""
+    """The CSV text of the whole (speeds × angles) table, one block at a time.
+
+    Round-off zeros are judged against the whole table's column magnitudes, taken
+    first from every speed at (up to) SCALE_ANGLES of the same angles, so that the
+    text is that of the unchunked table."""
+    step = max(1, -(-angles.size // SCALE_ANGLES))
+    scale = np.max([zero_scale(block(angles[::step], rpm)[1]) for rpm in rpms], axis=0)
     header = True
     done = 0
     for rpm in rpms:
         for start in range(0, angles.size, CHUNK_ANGLES):
             names, data = block(angles[start:start + CHUNK_ANGLES], rpm)
-            yield from table_chunks(names if header else None, data)
+            yield from table_chunks(names if header else None, data, scale=scale)
             header = False
             done += data.shape[0]
             if progress is not None:

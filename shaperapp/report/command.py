@@ -55,6 +55,10 @@ def configure(parser: argparse.ArgumentParser) -> None:
                              "mid working stroke and mid return stroke)")
     parser.add_argument("--title", metavar="TEXT",
                         help="design name for the title block (default: the design file's name)")
+    cover = parser.add_argument_group("cover block (printed blank when not given, to fill in by hand)")
+    for option, (_, what) in COVER_OPTIONS.items():
+        cover.add_argument(option, metavar="TEXT", help=what)
+    cover.add_argument("--date", metavar="TEXT", help="the date on the cover (default: today, YYYY-MM-DD)")
     parser.add_argument("--html", action="store_true",
                         help="insist on HTML (the name must end in .html or .htm)")
     parser.add_argument("--compare", nargs="+", default=[], metavar="NAME",
@@ -64,6 +68,32 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="add a comparison section with these design files")
     parser.add_argument("--library", metavar="PATH",
                         help=f"the library of --compare (default: ${ENV_VAR}, else the per-user library)")
+
+
+COVER_OPTIONS = {"--student": ("student", "the student's name"),
+                 "--student-number": ("number", "the student's number"),
+                 "--class": ("group", "the student's class"),
+                 "--school": ("school", "the school or department"),
+                 "--supervisor": ("supervisor", "the supervising teacher")}
+MAX_TEXT = 200
+
+
+def cover_text(option: str, value: str | None) -> str:
+    """A cover field as given: one line of at most MAX_TEXT characters (UsageError)."""
+    if value is None:
+        return ""
+    if any(ch < " " or "\x7f" <= ch < "\xa0" or ch in "\u2028\u2029" for ch in value):
+        raise UsageError(f"{option}: must be one line of text without control characters")
+    if len(value) > MAX_TEXT:
+        raise UsageError(f"{option}: at most {MAX_TEXT} characters (got {len(value)})")
+    return value.strip()
+
+
+def cover_from_args(args: argparse.Namespace):
+    """The cover fields (a report ``Cover``'s keyword arguments) and the date, checked."""
+    fields = {field: cover_text(option, getattr(args, option[2:].replace("-", "_")))
+              for option, (field, _) in COVER_OPTIONS.items()}
+    return fields, cover_text("--date", args.date) or datetime.date.today().isoformat()
 
 
 def _ensure_headless() -> None:
@@ -138,6 +168,8 @@ def _run(args: argparse.Namespace) -> int:
             raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
         diagrams = (float(values[0]), float(values[1]))
     others = comparison_candidates(args)
+    cover, date = cover_from_args(args)
+    title = cover_text("--title", args.title)
     target = Path(args.output)
     try:
         kind = report_kind(args.output, html=args.html)
@@ -149,7 +181,7 @@ def _run(args: argparse.Namespace) -> int:
         raise OutputError(f"--output: cannot write {target}: it is a folder")
 
     _ensure_headless()
-    app = _application()
+    _application()
     from .. import i18n
     from .content import Options, build
     from .fonts import MissingFontError, report_font
@@ -159,9 +191,9 @@ def _run(args: argparse.Namespace) -> int:
         report_font(language)
     except MissingFontError as exc:
         raise UsageError(f"--lang {args.lang}: {exc}") from None
-    name = design_name(args) or app.translate("Report", "Untitled design")
-    report = build(spec, rpms, masses, name, datetime.date.today().isoformat(), language,
-                   Options(count, diagrams, tuple(others)))
+    from .blocks import Cover
+    report = build(spec, rpms, masses, title or design_name(args), date, language,
+                   Options(count, diagrams, tuple(others), Cover(**cover)))
     try:
         pages = write_report(report, args.output)
     except OSError as exc:      # a WriteError: names the path and a plain reason

@@ -7,6 +7,7 @@ the Compare tab's own component (``compare_plots``), through the report's views.
 """
 from __future__ import annotations
 
+import html
 from typing import Sequence
 
 from PySide6.QtCore import QCoreApplication
@@ -16,7 +17,7 @@ from core.dynamics import MassProperties
 from core.library_names import unique_name
 from core.spec import Spec
 from ..figure_labels import figure_label, variant_label
-from .blocks import Figure, Heading, Paragraph, Table
+from .blocks import Figure, Heading, Paragraph, Table, typeset
 
 translate = QCoreApplication.translate
 
@@ -41,19 +42,21 @@ def comparison_table(result: Comparison) -> Table:
         rows.append([figure_label(row.key)] + cells)
     return Table([translate("Report", "Figure")] + list(result.labels), rows,
                  translate("Report", "Figures at %1 r/min").replace("%1", f"{result.rpm:g}"),
-                 [bool(row.best) for row in result.rows])
+                 [bool(row.best) for row in result.rows], plain_header=True)
 
 
 def comparison_blocks(result: Comparison, curves) -> list:
-    """Heading, introduction, overlay curves (``curves``: a figure paint) and the table."""
-    others = translate("Report", ", ").join(f"“{label}”" for label in result.labels[1:])
+    """Heading, introduction, overlay curves (``curves``: a figure paint) and the table.
+    The introduction is rich text (PDF and HTML): the designs' names go in escaped."""
+    labels = [html.escape(label) for label in result.labels]
+    others = translate("Report", ", ").join(f"“{label}”" for label in labels[1:])
     intro = translate(
         "Report", "The design of this report, “%1”, beside %2 at %3 r/min, the report's first "
         "speed. Each value is followed by its difference from “%1” in brackets ((=): the same); "
         "★ marks the best value of a row: the lowest max |a|, pressure angle, torques and "
         "flywheel J_F. Torques and J_F need loads; a design without them has none (—). The "
         "numbers are those of shaper library compare.")
-    intro = intro.replace("%1", result.labels[0]).replace("%2", others) \
+    intro = typeset(intro).replace("%1", labels[0]).replace("%2", others) \
         .replace("%3", f"{result.rpm:g}")
     return [Heading(translate("Report", "9 Comparison with other designs")),
             Paragraph(intro, True),

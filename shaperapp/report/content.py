@@ -30,7 +30,7 @@ from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
 from ..column_titles import column_titles, group_titles, special_titles
 from . import figures
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
 from .comparison import comparison_blocks, report_comparison
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
@@ -43,6 +43,7 @@ class Options:
     count: int = 12
     diagram_deg: tuple[float, float] | None = None    # None: one in the working, one in the return stroke
     compare: tuple[Candidate, ...] = ()               # other designs for a comparison section
+    cover: Cover = Cover()                            # student, class … for the cover block
 
 
 def default_diagram_angles(table: PositionTable, metrics: CycleMetrics) -> tuple[float, float]:
@@ -65,7 +66,8 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
     summary = summarize(design, rpms, used) if used is not None else None
     angles = options.diagram_deg or default_diagram_angles(table, metrics)
     report = Report(translate("Report", "Design report: quick-return mechanism of a shaper"),
-                    name, date, language)
+                    name or inputs_name(spec), date, language, cover=options.cover)
+    name = report.name
     add = report.blocks.append
     views = figures.ReportViews(spec, rpms, used, metrics)
     try:
@@ -76,12 +78,12 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         add(_margin_table(design))
         add(Heading(translate("Report", "3 The mechanism at its limit positions")))
         add(Figure(translate("Report", "Scheme to scale at the limit positions that start and end "
-                             "the working stroke"), 170.0, 72.0, views.limit_schemes()))
+                             "the working stroke"), 170.0, 100.0, views.limit_schemes()))
         add(Heading(translate("Report", "4 Motion of the ram and cycle metrics")))
         add(KeyValues(_cycle(metrics)))
-        add(_speed_table(metrics))
         add(Figure(translate("Report", "Ram displacement, velocity and acceleration over one "
-                             "crank revolution, one curve per speed"), 170.0, 150.0, views.curves()))
+                             "crank revolution, one curve per speed"), 170.0, 128.0, views.curves()))
+        add(_speed_table(metrics))            # after the figure, which then fits on the page
         add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
         add(Paragraph(translate("Report", "Positions 1 … N are equally spaced from the limit "
                                 "position that starts the working stroke (φ = 0). The shaded rows are "
@@ -116,6 +118,18 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
     finally:
         views.close()
     return report
+
+
+def inputs_name(spec: Spec) -> str:
+    """A design without a file or library name is named by its inputs, never "Untitled"."""
+    if spec.mode == "synthesis":
+        text = f"L1 {spec.crank:g} mm, K {spec.time_ratio:g}, H {spec.stroke:g} mm"
+    else:
+        text = f"L1 {spec.crank:g} mm, L2 {spec.frame:g} mm, L3 {spec.lever:g} mm"
+    if spec.variant == "rod":
+        text += f", L4 {spec.rod_length:g} mm" if spec.rod_input == "length" \
+            else f", L4/L3 {spec.rod_ratio:g}"
+    return text
 
 
 # ---- sections --------------------------------------------------------------
@@ -251,7 +265,7 @@ def _dynamics_table(summary: DynamicsSummary, design: Design) -> Table:
 
 
 def _conventions() -> list:
-    p = lambda text: Paragraph(text)  # noqa: E731
+    p = lambda text: Paragraph(typeset(text))  # noqa: E731
     return [
         p(translate("Report", "<b>Frame and signs.</b> Lever pivot O4 at the origin, crank centre O2 at "
                     "(0, L2) above it, ram guide the line y = guide height; the ram cuts toward +x and the "

@@ -9,19 +9,22 @@ other designs are the Compare tab's, which it keeps on the model
 from __future__ import annotations
 
 import datetime
+import html
 import os
 
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QCoreApplication, QSettings, Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
-                               QFormLayout, QMessageBox, QSpinBox, QWidget)
+                               QFormLayout, QLineEdit, QMessageBox, QSpinBox, QWidget)
 
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
 from ..model import DesignModel
 from .command import report_kind, write_report
-from .content import Options, build, default_diagram_angles
+from .blocks import Cover
+from .command import MAX_TEXT
+from .content import Options, build, default_diagram_angles, inputs_name
 from .fonts import MissingFontError
 
 translate = QCoreApplication.translate
@@ -30,9 +33,24 @@ translate = QCoreApplication.translate
 class ReportOptionsDialog(QDialog):
     """Positions count and the crank angles of the two vector-diagram positions."""
 
-    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+    def __init__(self, model: DesignModel, parent: QWidget | None = None,
+                 settings: QSettings | None = None) -> None:
         super().__init__(parent)
         self.setWindowTitle(self.tr("Export design report"))
+        self._settings = settings
+        self.design_name = QLineEdit(design_name(model))
+        self.design_name.setPlaceholderText(inputs_name(model.valid_spec))
+        self.cover = {}
+        for field in Cover.FIELDS + ("date",):
+            edit = QLineEdit()
+            edit.setMaxLength(MAX_TEXT)
+            if settings is not None and field != "date":     # the student's, for every report
+                edit.setText(str(settings.value(f"report/{field}", "") or ""))
+            self.cover[field] = edit
+        self.cover["date"].setText(datetime.date.today().isoformat())
+        wide = self.fontMetrics().horizontalAdvance(self.design_name.placeholderText() + "MMMM")
+        for edit in [self.design_name, *self.cover.values()]:
+            edit.setMinimumWidth(max(wide, 24 * self.fontMetrics().averageCharWidth()))
         self.count = QSpinBox()
         self.count.setRange(1, MAX_COUNT)
         self.count.setValue(DEFAULT_COUNT)
@@ -48,6 +66,11 @@ class ReportOptionsDialog(QDialog):
             box.setValue(value)
             self.angles.append(box)
         form = QFormLayout(self)
+        form.addRow(self.tr("Design name:"), self.design_name)
+        for field, label in zip(Cover.FIELDS + ("date",), (
+                self.tr("Student:"), self.tr("Student number:"), self.tr("Class:"), self.tr("School:"),
+                self.tr("Supervisor:"), self.tr("Date:"))):
+            form.addRow(label, self.cover[field])
         form.addRow(self.tr("Positions in the table:"), self.count)
         form.addRow(self.tr("Vector diagrams at φ (working stroke):"), self.angles[0])
         form.addRow(self.tr("Vector diagrams at φ (return stroke):"), self.angles[1])
@@ -62,9 +85,11 @@ class ReportOptionsDialog(QDialog):
                           "at most %2.").replace("%1", str(len(self.others))) \
                 .replace("%2", str(MAX_DESIGNS - 1))
         else:
-            tip = self.tr("This design beside the Compare tab's designs (%1) at %2 r/min.") \
-                .replace("%1", ", ".join(c.label for c in self.others)) \
-                .replace("%2", f"{model.rpms[0]:g}")
+            # a tooltip is rich text when it looks like it: the names go in escaped, in <p>
+            tip = "<p>" + html.escape(self.tr("This design beside the Compare tab's designs (%1) at "
+                                              "%2 r/min.")).replace("%1", html.escape(", ".join(
+                                                  c.label for c in self.others))) \
+                .replace("%2", f"{model.rpms[0]:g}") + "</p>"
         self.include_comparison.setToolTip(tip)
         form.addRow(self.include_comparison)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
@@ -74,7 +99,29 @@ class ReportOptionsDialog(QDialog):
 
     def options(self) -> Options:
         others = tuple(self.others) if self.include_comparison.isChecked() else ()
-        return Options(self.count.value(), (self.angles[0].value(), self.angles[1].value()), others)
+        cover = Cover(**{field: self.cover[field].text().strip() for field in Cover.FIELDS})
+        return Options(self.count.value(), (self.angles[0].value(), self.angles[1].value()), others,
+                       cover)
+
+    def name(self) -> str:
+        return self.design_name.text().strip()
+
+    def date(self) -> str:
+        return self.cover["date"].text().strip() or datetime.date.today().isoformat()
+
+    def remember(self) -> None:
+        """Keep the cover fields (not the date) for the next report, in this or a later run."""
+        if self._settings is not None:
+            for field in Cover.FIELDS:
+                self._settings.setValue(f"report/{field}", self.cover[field].text().strip())
+
+
+def design_name(model: DesignModel) -> str:
+    """The design's file name without its type, or '' for a design not saved to a file."""
+    if not model.path:
+        return ""
+    name = os.path.splitext(os.path.basename(model.path))[0]
+    return name[: -len(".shaper")] if name.endswith(".shaper") else name
 
 
 def other_designs(model: DesignModel) -> list[Candidate]:
@@ -83,26 +130,27 @@ def other_designs(model: DesignModel) -> list[Candidate]:
             if (c.spec, c.masses) != (model.valid_spec, model.masses)]
 
 
-def export_report(model: DesignModel, path: str, language: str, options: Options = Options()) -> int:
+def export_report(model: DesignModel, path: str, language: str, options: Options = Options(),
+                  name: str = "", date: str = "") -> int:
     """Build the report of the design on screen and write it (PDF, or HTML for .html/.htm);
-    ValueError for a name of another type, before anything is built."""
+    ValueError for a name of another type, before anything is built. The design is
+    called ``name``, else by its file name, else by its inputs."""
     report_kind(path)
     design = model.design
     masses = masses_for_design(design, model.masses)
-    name = os.path.splitext(os.path.basename(model.path))[0] if model.path else \
-        translate("Report", "Untitled design")
-    if name.endswith(".shaper"):
-        name = name[: -len(".shaper")]
-    report = build(model.valid_spec, list(model.rpms), masses, name,
-                   datetime.date.today().isoformat(), language, options)
+    report = build(model.valid_spec, list(model.rpms), masses, name or design_name(model),
+                   date or datetime.date.today().isoformat(), language, options)
     return write_report(report, path)
 
 
-def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str) -> str:
-    """Ask for the options and a file, write the report; returns the path written or ''."""
-    dialog = ReportOptionsDialog(model, parent)
+def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
+                         settings: QSettings | None = None) -> str:
+    """Ask for the options and a file, write the report; returns the path written or ''.
+    The cover fields are kept in ``settings`` once accepted."""
+    dialog = ReportOptionsDialog(model, parent, settings)
     if dialog.exec() != QDialog.DialogCode.Accepted:
         return ""
+    dialog.remember()
     start = os.path.join(start_dir, "report.pdf")
     pdf_filter = translate("ReportOptionsDialog", "PDF document (*.pdf)")
     path, chosen = QFileDialog.getSaveFileName(
@@ -122,7 +170,7 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
         return ""
     QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
     try:
-        export_report(model, path, language, dialog.options())
+        export_report(model, path, language, dialog.options(), dialog.name(), dialog.date())
     except MissingFontError:
         QGuiApplication.restoreOverrideCursor()
         QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"),

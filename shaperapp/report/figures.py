@@ -8,13 +8,15 @@ positions exactly, so the scheme is drawn at the limits, not next to them.
 """
 from __future__ import annotations
 
+import html
 import math
 import tempfile
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Sequence
 
-from PySide6.QtCore import QByteArray, QCoreApplication, QEvent, QRectF, Qt
-from PySide6.QtGui import QFontMetricsF, QPainter
+from PySide6.QtCore import QByteArray, QCoreApplication, QEvent, QPointF, QRectF, Qt
+from PySide6.QtGui import QColor, QFontMetricsF, QPainter, QPen, QTextDocument
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
 
@@ -61,6 +63,89 @@ def svg_paint(svgs: Sequence[bytes], captions: Sequence[str] = ()) -> Paint:
     return paint
 
 
+NICE_SCALES = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0)    # GB/T 14690's reduction scales
+
+
+def round_scale(value: float) -> float:
+    """The smallest drawing scale μ_l of the standard series (NICE_SCALES × 10^k) ≥ ``value``."""
+    power = 10.0 ** math.floor(math.log10(value))
+    return next((n * power for n in NICE_SCALES + (10.0,) if n * power >= value * (1 - 1e-9)))
+
+
+def scale_text(mu: float) -> str:
+    """μ_l as a drawing states it: design mm per mm on the page, and as a ratio."""
+    ratio = f"1:{mu:g}" if mu >= 1 else f"{1 / mu:g}:1"
+    return f"μ<sub>l</sub> = {mu:g} mm/mm ({ratio})"
+
+
+@dataclass(frozen=True)
+class SchemeShot:
+    """A scheme exported as SVG, with where O4 and the lever tip's limit positions lie in
+    it (px) and how many design mm one of its px is."""
+
+    svg: bytes
+    o4: QPointF
+    tips: tuple[QPointF, QPointF]
+    mm_per_px: float
+
+
+def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg: float) -> Paint:
+    """The schemes side by side, all at one round μ_l that fits them, with θ and the
+    lever's limit positions marked, and under each its caption and μ_l."""
+    renderers = [QSvgRenderer(QByteArray(s.svg)) for s in shots]
+
+    def paint(painter: QPainter, rect: QRectF, px_per_mm: float) -> None:
+        line = QFontMetricsF(painter.font(), painter.device()).height()
+        cell_w, cell_h = rect.width() / len(shots), rect.height() - 2.6 * line
+        fit = max(max(r.viewBoxF().width() * s.mm_per_px / (cell_w - 4),
+                      r.viewBoxF().height() * s.mm_per_px / cell_h) for r, s in zip(renderers, shots))
+        mu = round_scale(fit * px_per_mm)            # design mm per page mm
+        for i, (renderer, shot) in enumerate(zip(renderers, shots)):
+            k = shot.mm_per_px / mu * px_per_mm      # device units per SVG px
+            box = renderer.viewBoxF()
+            drawn = QRectF(0, 0, box.width() * k, box.height() * k)
+            drawn.moveCenter(QPointF(rect.left() + (i + 0.5) * cell_w, rect.top() + cell_h / 2))
+            renderer.render(painter, drawn)
+            _mark_theta(painter, drawn.topLeft(), k, shot, theta_deg, line)
+            doc = QTextDocument()
+            doc.setDefaultFont(painter.font())
+            doc.documentLayout().setPaintDevice(painter.device())
+            doc.setHtml(f'<p align="center">{html.escape(captions[i])}<br>{scale_text(mu)}</p>')
+            doc.setTextWidth(cell_w)
+            painter.save()
+            painter.translate(rect.left() + i * cell_w, drawn.bottom() + 0.2 * line)
+            doc.drawContents(painter)
+            painter.restore()
+    return paint
+
+
+def _mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, theta_deg: float,
+                line: float) -> None:
+    """Dashed lever limit positions O4–B', O4–B'' and the arc of θ between them at O4."""
+    o4 = origin + shot.o4 * k
+    tips = [origin + t * k for t in shot.tips]
+    painter.save()
+    pen = QPen(QColor("#37474f"), max(0.6 * line / 10, 1.0), Qt.PenStyle.DashLine)
+    painter.setPen(pen)
+    for tip in tips:
+        painter.drawLine(o4, tip)
+    radius = 0.3 * math.dist((o4.x(), o4.y()), (tips[0].x(), tips[0].y()))
+    angles = [math.degrees(math.atan2(o4.y() - t.y(), t.x() - o4.x())) for t in tips]
+    painter.setPen(QPen(QColor("#37474f"), pen.widthF()))
+    arc = QRectF(o4.x() - radius, o4.y() - radius, 2 * radius, 2 * radius)
+    painter.drawArc(arc, round(angles[1] * 16), round((angles[0] - angles[1]) * 16))
+    # the label right of the swing, level with the arc's end: clear of the lever and frame
+    label = f"θ = {theta_deg:.2f}°"
+    width = QFontMetricsF(painter.font(), painter.device()).horizontalAdvance(label)
+    end = math.radians(angles[1])
+    at = QPointF(o4.x() + radius * math.cos(end) + 0.4 * line, o4.y() - radius * math.sin(end))
+    box = QRectF(at.x(), at.y() - 0.6 * line, width + 0.4 * line, 1.2 * line)
+    painter.fillRect(box, QColor("white"))
+    painter.setPen(QColor("#1b262c"))
+    painter.drawText(box, Qt.AlignmentFlag.AlignCenter, label)
+    painter.restore()
+
+
 class ReportViews:
     """Offscreen scheme and plot widgets on a private model of the design."""
 
@@ -83,27 +168,40 @@ class ReportViews:
         return widget
 
     def _svg(self, widget, name: str) -> bytes:
+        # pending layout first (legend rows, group titles): a command-line run has no event
+        # loop, and a view exported unlaid-out put its legend on its tick labels
+        QCoreApplication.processEvents()
         path = Path(self._dir.name) / f"{name}.svg"
         widget.export_image(str(path))
         return path.read_bytes()
 
     def limit_schemes(self) -> Paint:
-        scheme = self._show(SchemeWidget(self.model), 760, 620)
-        svgs = []
+        """Both limit positions side by side at one round scale μ_l, each with the lever's
+        two limit positions (dashed) and the angle θ between them marked at O4."""
+        scheme = self._show(SchemeWidget(self.model), 620, 700)
+        design = self.model.design
+        half = design.theta / 2.0
+        tips = ((-design.lever * math.sin(half), design.lever * math.cos(half)),
+                (design.lever * math.sin(half), design.lever * math.cos(half)))
+        shots = []
         for index in (0, self._end_index):
             self.model.set_angle_index(index)
             scheme.fit()
-            svgs.append(self._svg(scheme, f"scheme{index}"))
+            svg = self._svg(scheme, f"scheme{index}")
+            o4, across = scheme.export_point(0.0, 0.0), scheme.export_point(100.0, 0.0)
+            shots.append(SchemeShot(svg, o4, tuple(scheme.export_point(*tip) for tip in tips),
+                                    100.0 / (across.x() - o4.x())))
         self.model.set_angle_index(0)
         caption = QCoreApplication.translate("Report", "φ = %1° (limit position)")
-        return svg_paint(svgs, [caption.replace("%1", f"{self.metrics.work_start_deg:.2f}"),
-                                caption.replace("%1", f"{self.metrics.work_end_deg:.2f}")])
+        return scheme_paint(shots, [caption.replace("%1", f"{self.metrics.work_start_deg:.2f}"),
+                                    caption.replace("%1", f"{self.metrics.work_end_deg:.2f}")],
+                            math.degrees(design.theta))
 
     def curves(self) -> Paint:
-        return svg_paint([self._svg(self._show(PlotsWidget(self.model), 900, 800), "curves")])
+        return svg_paint([self._svg(self._show(PlotsWidget(self.model), 900, 680), "curves")])
 
     def forces(self) -> Paint:
-        return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1100, 1100), "forces")])
+        return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1450, 1050), "forces")])
 
     def comparison_curves(self, result: Comparison) -> Paint:
         """The Compare tab's overlay curves of ``result``."""

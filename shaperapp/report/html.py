@@ -12,7 +12,7 @@ from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QRectF, QSize
 from PySide6.QtGui import QFont, QPainter
 from PySide6.QtSvg import QSvgGenerator
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
 from .fonts import report_font
 
 SVG_DPI = 96.0
@@ -22,8 +22,10 @@ body { font-family: %(family)s, sans-serif; font-size: 10pt; color: #1b262c; max
 .title { border: 1.5px solid #1b262c; margin-bottom: 8mm; }
 .title h1 { text-align: center; font-size: 17pt; margin: 4mm 0; }
 .title table { width: 100%%; border-collapse: collapse; }
-.title td { border-top: 1.5px solid #1b262c; text-align: center; padding: 2mm; }
-.title td + td { border-left: 1.5px solid #1b262c; }
+.title td, .title th { border-top: 1px solid #1b262c; text-align: left; padding: 1.5mm 2mm; }
+.title th { font-weight: normal; font-size: 8pt; white-space: nowrap; width: 1%%; }
+.title td { width: 49%%; }
+.title th + td + th { border-left: 1px solid #1b262c; }
 h2 { font-size: 12.5pt; border-bottom: 1px solid #90a4ae; margin-top: 7mm; }
 table.data { border-collapse: collapse; margin: 2mm 0 5mm; font-size: 8pt; }
 table.data th { background: #dfe7ee; font-weight: normal; padding: 1mm 1.5mm; }
@@ -61,16 +63,22 @@ def figure_svg(figure: Figure, font: QFont) -> str:
     return text[text.index("<svg"):]
 
 
+def _label(text: str) -> str:
+    """A label of the program's own (never user text), escaped, its notation typeset."""
+    return typeset(html.escape(text))
+
+
 def _table(block: Table) -> str:
     out = []
     if block.caption:
         out.append(f'<p class="caption">{html.escape(block.caption)}</p>')
-    out.append('<table class="data"><tr>' + "".join(f"<th>{html.escape(h)}</th>" for h in block.header)
+    head = (html.escape if block.plain_header else _label)
+    out.append('<table class="data"><tr>' + "".join(f"<th>{head(h)}</th>" for h in block.header)
                + "</tr>")
     for r, row in enumerate(block.rows):
         special = ' class="special"' if block.shaded and block.shaded[r] else ""
-        cells = "".join(("<td class='l'>" if c < block.left_columns else "<td>") + html.escape(v) + "</td>"
-                        for c, v in enumerate(row))
+        cells = "".join(("<td class='l'>" + _label(v) if c < block.left_columns else "<td>" + html.escape(v))
+                        + "</td>" for c, v in enumerate(row))
         out.append(f"<tr{special}>{cells}</tr>")
     out.append("</table>")
     return "\n".join(out)
@@ -78,9 +86,12 @@ def _table(block: Table) -> str:
 
 def report_html(report: Report) -> str:
     font = report_font(report.language, 8.0)
-    body = [f'<div class="title"><h1>{html.escape(report.title)}</h1><table><tr>'
-            f"<td>{html.escape(report.name)}</td><td>{html.escape(report.date)}</td>"
-            f"<td>Shaper Designer</td></tr></table></div>"]
+    rows = cover_rows(report)
+    cell = lambda label, value, span="": f"<th>{html.escape(label)}</th><td{span}>{html.escape(value)}</td>"  # noqa: E731
+    cells = [cell(*rows[0], ' colspan="3"')] + ["".join(cell(*r) for r in rows[k:k + 2])
+                                                 for k in range(1, len(rows), 2)]
+    body = [f'<div class="title"><h1>{html.escape(report.title)}</h1><table>'
+            + "".join(f"<tr>{row}</tr>" for row in cells) + "</table></div>"]
     for block in report.blocks:
         if isinstance(block, Heading):
             body.append(f"<h2>{html.escape(block.text)}</h2>")
@@ -88,7 +99,7 @@ def report_html(report: Report) -> str:
             body.append(f"<p>{block.html}</p>")
         elif isinstance(block, KeyValues):
             body.append('<table class="kv">' + "".join(
-                f"<tr><td>{html.escape(k)}</td><td>{html.escape(v)}</td></tr>" for k, v in block.rows)
+                f"<tr><td>{_label(k)}</td><td>{_label(v)}</td></tr>" for k, v in block.rows)
                 + "</table>")
         elif isinstance(block, Table):
             body.append(_table(block))

@@ -7,6 +7,7 @@ first page and a framed footer (design name, date, page i / n) on every page.
 """
 from __future__ import annotations
 
+import html
 from dataclasses import dataclass
 from typing import Callable
 
@@ -14,13 +15,15 @@ from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QMa
 from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen, QTextDocument)
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
 from .fonts import report_font
 
 translate = QCoreApplication.translate
 RESOLUTION = 300
 PAGE_MM = (210.0, 297.0)
 LEFT_MM, RIGHT_MM, TOP_MM, BOTTOM_MM = 18.0, 16.0, 14.0, 24.0
+SHRINK = 0.70            # a figure keeps at least this share of its height on a page
+TITLE_MM = 48.0          # the title and cover block on the first page, with the gap under it
 GRID = QColor("#90a4ae")
 SHADE = QColor("#eef3f8")
 HEAD_FILL = QColor("#dfe7ee")
@@ -36,6 +39,10 @@ class Piece:
     keep_with_next: bool = False
     header: "Piece | None" = None
     """A table row's header, painted first when the row starts a new page."""
+    part: str = "text"
+    """"figure" for a figure's drawing, "text" for everything else (``page_boxes``)."""
+    min_height: float = 0.0
+    """A figure may shrink to this height to stay on a page (``paginate``)."""
 
 
 class Layout:
@@ -114,9 +121,11 @@ def _cell_widths(lay: Layout, font: QFont, header: list[str], rows: list[list[st
 def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
     if isinstance(block, KeyValues):
         header, rows, caption, shaded, left = [], [list(r) for r in block.rows], "", [], 2
+        plain_header = True
     else:
         header, rows, caption, shaded, left = block.header, block.rows, block.caption, block.shaded, \
             block.left_columns
+        plain_header = block.plain_header
     font = lay.body if isinstance(block, KeyValues) else lay.small
     widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
     if sum(widths) > lay.width * 1.001:
@@ -143,8 +152,9 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
                 p.fillRect(QRectF(x, y, total_w, head_h), HEAD_FILL)
                 cx = x
                 for text, cw in zip(header, widths):
-                    p.drawText(QRectF(cx + 2, y, cw - 4, head_h),
-                               int(Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap), text)
+                    _cell(p, QRectF(cx + 2, y, cw - 4, head_h),
+                          Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap, text, font,
+                          not plain_header)
                     cx += cw
                 y0 = y
                 y += head_h
@@ -156,8 +166,8 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
                 cx = x
                 for c, (text, cw) in enumerate(zip(rows[r], widths)):
                     align = Qt.AlignmentFlag.AlignLeft if c < left else Qt.AlignmentFlag.AlignRight
-                    p.drawText(QRectF(cx + 0.6 * m.averageCharWidth(), y, cw - 1.2 * m.averageCharWidth(), row_h),
-                               int(align | Qt.AlignmentFlag.AlignVCenter), text)
+                    _cell(p, QRectF(cx + 0.6 * m.averageCharWidth(), y, cw - 1.2 * m.averageCharWidth(), row_h),
+                          align | Qt.AlignmentFlag.AlignVCenter, text, font, c < left)
                     cx += cw
                 y += row_h
             p.setPen(QPen(GRID, 0.15 * lay.mm))
@@ -181,7 +191,30 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
                             paint_rows([r], False, False), header=repeat))
     for piece in pieces[:2] if len(pieces) > 3 else ():   # no table starts with one row at a page foot
         piece.keep_with_next = True
+    if len(pieces) > 3:                                    # nor ends with one row at a page top
+        pieces[-2].keep_with_next = True
     return pieces
+
+
+def _cell(p: QPainter, rect: QRectF, flags, text: str, font: QFont, rich: bool) -> None:
+    """A table cell's text; the program's own labels (``rich``) with their notation
+    typeset (``typeset``: J_F, v_A2A3, a^k …), user text always as it is."""
+    marked = typeset(html.escape(text)) if rich else ""
+    if not rich or marked == html.escape(text):
+        p.drawText(rect, int(flags), text)
+        return
+    doc = QTextDocument()
+    doc.documentLayout().setPaintDevice(p.device())
+    doc.setDefaultFont(font)
+    doc.setDocumentMargin(0)
+    where = "center" if flags & Qt.AlignmentFlag.AlignHCenter else \
+        "right" if flags & Qt.AlignmentFlag.AlignRight else "left"
+    doc.setHtml(f'<div align="{where}" style="color:{INK.name()}">{marked}</div>')
+    doc.setTextWidth(rect.width())
+    p.save()
+    p.translate(rect.left(), rect.top() + (rect.height() - doc.size().height()) / 2)
+    doc.drawContents(p)
+    p.restore()
 
 
 def _lines(m: QFontMetricsF, text: str, width: float) -> int:
@@ -191,7 +224,7 @@ def _lines(m: QFontMetricsF, text: str, width: float) -> int:
 
 def _figure(lay: Layout, block: Figure) -> list[Piece]:
     m = lay.metrics(lay.small)
-    cap_doc = lay.document(f"<i>{block.caption}</i>", lay.width) if block.caption else None
+    cap_doc = lay.document(f"<i>{html.escape(block.caption)}</i>", lay.width) if block.caption else None
     cap_h = cap_doc.size().height() + 0.4 * m.height() if cap_doc else 0.0
     w = min(block.width_mm * lay.mm, lay.width)
     h = block.height_mm * lay.mm * (w / (block.width_mm * lay.mm))
@@ -200,14 +233,18 @@ def _figure(lay: Layout, block: Figure) -> list[Piece]:
         p.save()
         p.setFont(lay.small)
         p.setPen(INK)
-        block.paint(p, QRectF(x + (width - w) / 2, y, w, h), lay.mm)
+        block.paint(p, QRectF(x + (width - w) / 2, y, w, drawing.height), lay.mm)
         p.restore()
+
+    def caption(p: QPainter, x: float, y: float, width: float) -> None:
         if cap_doc is not None:
             p.save()
-            p.translate(x, y + h + 0.2 * m.height())
+            p.translate(x, y + 0.2 * m.height())
             cap_doc.drawContents(p)
             p.restore()
-    return [Piece(h + cap_h + m.height() * 0.8, paint)]
+    # the drawing and its caption: two pieces on one page (keep_with_next)
+    drawing = Piece(h, paint, keep_with_next=True, part="figure", min_height=SHRINK * h)
+    return [drawing, Piece(cap_h + m.height() * 0.8, caption)]
 
 
 def pieces_of(lay: Layout, report: Report) -> list[Piece]:
@@ -237,7 +274,15 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
             need += pieces[j].height
         if need > bottom - top:
             need = piece.height + (bottom - top) / 4
-        if y + need > bottom and pages[-1]:
+        chain = [p for p in pieces[i:j + 1] if p.min_height]
+        if y + need > bottom and chain and y + need - sum(p.height - p.min_height for p in chain) <= bottom:
+            cut = y + need - bottom       # figures shrink a little rather than leave a gap
+            for p in chain:
+                take = min(cut, p.height - p.min_height)
+                p.height -= take
+                cut -= take
+            need = bottom - y
+        if y + need > bottom + 1e-6 and pages[-1]:
             pages.append([])
             y = top
             if piece.header is not None:
@@ -248,18 +293,32 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
     return pages
 
 
-def pdf_bytes(report: Report) -> tuple[bytes, int]:
+def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure")) -> tuple[bytes, int]:
     """The PDF of ``report`` in memory, and its page count; the caller writes it
-    (atomically, so a failed save never leaves half a report)."""
+    (atomically, so a failed save never leaves half a report). ``parts`` leaves out
+    the pieces of other parts (and the title block and footers unless "text"): the
+    tests print the figures alone to find ink outside their boxes."""
     data = QByteArray()
     buffer = QBuffer(data)
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
-    pages = _paint_pdf(report, QPdfWriter(buffer))
+    pages = _paint_pdf(report, QPdfWriter(buffer), parts)
     buffer.close()
     return bytes(data.data()), pages
 
 
-def _paint_pdf(report: Report, writer: QPdfWriter) -> int:
+def page_boxes(report: Report) -> list[list[tuple[str, QRectF]]]:
+    """Per page, the part ("text" or "figure") and box (in mm from the page's top left)
+    of every piece laid out on it, as :func:`pdf_bytes` places them."""
+    buffer = QBuffer()
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    writer = QPdfWriter(buffer)
+    lay, pages = _layout(report, writer)
+    mm = lay.mm
+    return [[(piece.part, QRectF(LEFT_MM, y / mm, lay.width / mm, piece.height / mm))
+             for piece, y in page] for page in pages]
+
+
+def _layout(report: Report, writer: QPdfWriter) -> tuple[Layout, list[list[tuple[Piece, float]]]]:
     writer.setResolution(RESOLUTION)
     writer.setPageLayout(QPageLayout(QPageSize(QPageSize.PageSizeId.A4), QPageLayout.Orientation.Portrait,
                                      QMarginsF(0, 0, 0, 0)))
@@ -267,42 +326,56 @@ def _paint_pdf(report: Report, writer: QPdfWriter) -> int:
     writer.setCreator("Shaper Designer")
     lay = Layout(writer, report.language)
     mm = lay.mm
-    title_h = 30.0 * mm
     top, bottom = TOP_MM * mm, (PAGE_MM[1] - BOTTOM_MM) * mm
-    pages = paginate(pieces_of(lay, report), top + title_h, top, bottom)
+    return lay, paginate(pieces_of(lay, report), top + TITLE_MM * mm, top, bottom)
+
+
+def _paint_pdf(report: Report, writer: QPdfWriter, parts: tuple[str, ...] = ("text", "figure")) -> int:
+    lay, pages = _layout(report, writer)
+    mm = lay.mm
     painter = QPainter(writer)
     try:
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         for n, page in enumerate(pages):
             if n:
                 writer.newPage()
-            if n == 0:
-                _title_block(painter, lay, report, top, title_h - 6 * mm)
+            if n == 0 and "text" in parts:
+                _title_block(painter, lay, report, TOP_MM * mm, (TITLE_MM - 6) * mm)
             for piece, y in page:
-                piece.paint(painter, LEFT_MM * mm, y, lay.width)
-            _footer(painter, lay, report, n + 1, len(pages))
+                if piece.part in parts:
+                    piece.paint(painter, LEFT_MM * mm, y, lay.width)
+            if "text" in parts:
+                _footer(painter, lay, report, n + 1, len(pages))
     finally:
         painter.end()
     return len(pages)
 
 
 def _title_block(p: QPainter, lay: Layout, report: Report, y: float, height: float) -> None:
+    """The title over the cover block (``cover_rows``): four rows of two label–value cells."""
     x, w = LEFT_MM * lay.mm, lay.width
     p.setPen(QPen(INK, 0.35 * lay.mm))
     p.drawRect(QRectF(x, y, w, height))
-    split = y + height * 0.58
-    p.drawLine(QPointF(x, split), QPointF(x + w, split))
+    title_h = 14.0 * lay.mm
     p.setFont(lay.title)
-    p.drawText(QRectF(x, y, w, split - y), int(Qt.AlignmentFlag.AlignCenter), report.title)
-    p.setFont(lay.body)
-    cells = [(translate("Report", "Design"), report.name), (translate("Report", "Date"), report.date),
-             (translate("Report", "Program"), "Shaper Designer")]
-    cw = w / len(cells)
-    for i, (label, value) in enumerate(cells):
-        if i:
-            p.drawLine(QPointF(x + i * cw, split), QPointF(x + i * cw, y + height))
-        p.drawText(QRectF(x + i * cw, split, cw, y + height - split), int(Qt.AlignmentFlag.AlignCenter),
-                   f"{label}: {value}")
+    p.drawText(QRectF(x, y, w, title_h), int(Qt.AlignmentFlag.AlignCenter), report.title)
+    rows = cover_rows(report)
+    row_h = (height - title_h) / 4
+    label_w = max(lay.metrics(lay.small).horizontalAdvance(label) for label, _ in rows) + 4 * lay.mm
+    p.setPen(QPen(INK, 0.2 * lay.mm))
+    for k, (label, value) in enumerate(rows):       # the design alone on the first row
+        column = (k + 1) % 2 if k else 0
+        cw = w if k == 0 else w / 2
+        cx, cy = x + column * w / 2, y + title_h + ((k + 1) // 2) * row_h
+        p.drawLine(QPointF(x, cy), QPointF(x + w, cy))
+        if column:
+            p.drawLine(QPointF(cx, cy), QPointF(cx, cy + row_h))
+        p.setFont(lay.small)
+        p.drawText(QRectF(cx + 2 * lay.mm, cy, label_w, row_h), int(Qt.AlignmentFlag.AlignVCenter), label)
+        p.setFont(lay.body)
+        room = cw - label_w - 4 * lay.mm
+        text = lay.metrics(lay.body).elidedText(value, Qt.TextElideMode.ElideRight, room)
+        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, room, row_h), int(Qt.AlignmentFlag.AlignVCenter), text)
 
 
 def _footer(p: QPainter, lay: Layout, report: Report, page: int, pages: int) -> None:
