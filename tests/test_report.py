@@ -339,3 +339,21 @@ def test_formulas_are_typeset(tmp_path, language):
         assert marked in formulas, marked
     text = re.sub(r"<[^>]+>", "", formulas)
     assert "^" not in text and not re.search(r"[A-Za-zΔ]_[A-Za-z0-9]", text)
+
+
+@pytest.mark.parametrize("design, says, not_says", [
+    (["--crank", "100", "--K", "1.4", "--stroke", "300", "--guide", "sagitta"],
+     "midway along the sagitta", "extreme positions at"),
+    (["--crank", "100", "--K", "1.4", "--stroke", "300"], "extreme positions at", "sagitta"),
+    (["--dims", "100,386.37,579.56", "--guide", "540"], "at the height given", "Synthesis."),
+])
+def test_formulas_state_the_guide_rule_of_the_design(tmp_path, design, says, not_says):
+    """The formulas section printed the chord rule for every design, a sagitta one too."""
+    out = tmp_path / "r.html"
+    run = shaper("report", *design, "--rpm", "40", "-o", str(out))
+    assert run.returncode == 0, run.stderr
+    html = out.read_text(encoding="utf-8")
+    formulas = html.split("Conventions and formulas", 1)[1]
+    text = re.sub(r"<[^>]+>", "", formulas)
+    assert says in text and not_says not in text
+    assert "ω3 and α3 are positive clockwise" in text

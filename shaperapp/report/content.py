@@ -111,7 +111,7 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                                     "out. Give the masses and the cutting force (or a design file "
                                     "with loads) to include it.")))
         add(Heading(translate("Report", "8 Conventions and formulas")))
-        report.blocks.extend(_conventions())
+        report.blocks.extend(_conventions(spec))
         if options.compare:
             result = report_comparison(spec, masses, name, options.compare, rpms[0])
             report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
@@ -264,7 +264,33 @@ def _dynamics_table(summary: DynamicsSummary, design: Design) -> Table:
         translate("Report", "Torque, power and flywheel per crank speed"))
 
 
-def _conventions() -> list:
+def _method(spec: Spec) -> str:
+    """The synthesis (or dimensions) paragraph with the guide rule this design uses: a
+    sagitta design was described by the chord rule."""
+    if spec.mode == "synthesis":
+        return {
+            "chord": translate("Report", "<b>Synthesis.</b> θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); "
+                               "L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) "
+                               "above O4 (h = H/(2·tan(θ/2)) − L2 above O2)."),
+            "sagitta": translate("Report", "<b>Synthesis.</b> θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); "
+                                 "L3 = H/(2·sin(θ/2)); guide midway along the sagitta of the tip's arc, at "
+                                 "L3·(1 + cos(θ/2))/2 above O4."),
+            "height": translate("Report", "<b>Synthesis.</b> θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); "
+                                "L3 = H/(2·sin(θ/2)); guide at the height given above O4."),
+        }[spec.guide_rule]
+    return {
+        "chord": translate("Report", "<b>Dimensions.</b> L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), "
+                           "K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide through the tip's extreme "
+                           "positions at L3·cos(θ/2) above O4."),
+        "sagitta": translate("Report", "<b>Dimensions.</b> L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), "
+                             "K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide midway along the sagitta "
+                             "of the tip's arc, at L3·(1 + cos(θ/2))/2 above O4."),
+        "height": translate("Report", "<b>Dimensions.</b> L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), "
+                            "K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide at the height given above O4."),
+    }[spec.guide_rule]
+
+
+def _conventions(spec: Spec) -> list:
     p = lambda text: Paragraph(typeset(text))  # noqa: E731
     return [
         p(translate("Report", "<b>Frame and signs.</b> Lever pivot O4 at the origin, crank centre O2 at "
@@ -275,9 +301,13 @@ def _conventions() -> list:
                     "angle ψ is measured from O4→O2, positive toward the cut. Links: 1 crank, 2 block, "
                     "3 lever, 4 rod, 5 ram. Forces are those on the named body, torque positive in the "
                     "direction of rotation.")),
-        p(translate("Report", "<b>Synthesis.</b> θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); "
-                    "L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) "
-                    "above O4 (h = H/(2·tan(θ/2)) − L2 above O2).")),
+        p(_method(spec)),
+        p(translate("Report", "<b>Senses.</b> The lever's ω3 and α3 are positive clockwise (as ψ and the "
+                    "crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive "
+                    "away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the "
+                    "direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The "
+                    "cutting force acts from the start to the end of the cut, both included: the rows at "
+                    "those angles show it acting.")),
         p(translate("Report", "<b>Velocities.</b> v_A3 = v_A2 + v_A3A2 with v_A2 = ω1·L1 ⟂ O2A, "
                     "v_A3 = ω3·O4A ⟂ O4A, v_A3A2 ∥ O4A; v_B = ω3·L3; block variant v_C = v_B + v_CB "
                     "(v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω4·L4 ⟂ BC.")),
