@@ -26,7 +26,7 @@ from .cut import cut_window
 from .dynamics_io import dynamics_table
 from .errors import DesignError, require_finite
 from .geometry import Design
-from .io import curve_table, finite_or_none, table_csv
+from .io import curve_table, finite_or_none, snap_zeros, table_csv
 from .kinematics import solve
 from .metrics import cycle_peaks
 
@@ -172,9 +172,10 @@ def table_rows(table: PositionTable) -> list[tuple[int | None, str]]:
 
 
 def table_records(table: PositionTable) -> list[dict[str, Any]]:
-    """One JSON-ready object per row: position, name, then every column (NaN → null)."""
+    """One JSON-ready object per row: position, name, then every column (NaN → null),
+    round-off zeros as 0 as in the CSV (:func:`core.io.snap_zeros`)."""
     out = []
-    for (number, name), values in zip(table_rows(table), table.data):
+    for (number, name), values in zip(table_rows(table), snap_zeros(table.data)):
         record: dict[str, Any] = {"position": number, "name": name}
         record.update({c: finite_or_none(float(v)) for c, v in zip(table.columns, values)})
         out.append(record)

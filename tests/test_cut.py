@@ -142,3 +142,16 @@ def test_flywheel_optimum_against_a_fine_grid_of_exact_evaluations():
     assert best.value <= min(values) * (1 + 1e-12)
     # Exact values are smooth in the guide height: the grid's best neighbours the optimum.
     assert abs(best.x[0] - grid[int(np.argmin(values))]) <= 2 * (grid[1] - grid[0])
+
+
+def test_json_rows_print_round_off_zeros_as_zero():
+    """As the CSV does: the limit positions' velocity was −2.1e-16 m/s, torques 1e-13 N·m."""
+    run = shaper("table", "--dims", "120,240,450", "--guide", "420", "--rpm", "64", *LOADS,
+                 "--idle", "0", "--json")
+    rows = json.loads(run.stdout)
+    first = next(r for r in rows if r["position"] == 1)
+    assert first["ram_v_m_s"] == 0.0 and first["lever_omega_rad_s"] == 0.0
+    assert first["crank_torque_N_m"] == 0.0 and first["power_W"] == 0.0
+    tiny = [(r["position"], k, v) for r in rows for k, v in r.items()
+            if isinstance(v, float) and 0.0 < abs(v) < 1e-9]
+    assert tiny == []
