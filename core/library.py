@@ -23,17 +23,22 @@ from .errors import DesignError, FileFormatError
 from .figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
 from .io import atomic_write, design_document, masses_to_dict, parse_design
 from .library_names import check_name, check_tags, unique_name
+from .library_rows import clean_row, damaged_entries, read_lenient
 from .library_query import Condition, condition_sql, parse_filter, search_sql, sort_sql
-from .library_store import (LibraryError, backup_target, connect, default_path, resolve_path,
+from .library_store import (LibraryError, backup_target, connect, default_path, integrity_problems, resolve_path,
                             snapshot, sqlite_error, transaction, utc_now)
 
 _PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
 _ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS \
     + ("figures_version",)
 _SPEED_COLUMNS = ("rpm",) + SPEED_KEYS
-LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS       # the columns of :meth:`Library.query_rows`
+# the columns of :meth:`Library.query_rows`; ``damaged`` is None, or why the row's values
+# could not all be read (those are None; see :mod:`core.library_rows`)
+LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS + ("damaged",)
+_LIST_NULLABLE = frozenset(_SPEED_COLUMNS)      # a design without the speed asked for
 
 
+_MAX_ROWS = 2 ** 62     # SQLite's LIMIT is a 64-bit integer; more rows than that is "all"
 REFRESH_BATCH = 64      # entries written per transaction by ``refresh_figures``
 
 
@@ -107,12 +112,13 @@ class Library:
     # ---- reading --------------------------------------------------------------
     def _read(self, work):
         try:
-            return work(self._conn)
+            return read_lenient(self._conn, work)
         except sqlite3.Error as exc:
             raise sqlite_error(exc, self.path) from None
 
     def names(self) -> list[str]:
-        return self._read(lambda c: [r[0] for r in c.execute("SELECT name FROM entries ORDER BY name")])
+        return self._read(lambda c: [r[0] for r in c.execute("SELECT name FROM entries ORDER BY name")
+                                     if isinstance(r[0], str)])
 
     def count(self) -> int:
         return self._read(lambda c: c.execute("SELECT count(*) FROM entries").fetchone()[0])
@@ -122,24 +128,35 @@ class Library:
                           .fetchone() is not None)
 
     def get(self, name: str) -> Entry:
-        """The entry called ``name``; LibraryError('missing') if there is none."""
+        """The entry called ``name``; LibraryError('missing') if there is none, ('entry') if a
+        stored value of it is unusable (see :mod:`core.library_rows`)."""
         def work(c: sqlite3.Connection) -> Entry:
-            row = c.execute(f"SELECT id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
-                            "JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
+            row = c.execute(f"SELECT e.id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
+                            "LEFT JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
             if row is None:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
-            values = dict(zip(_ENTRY_COLUMNS, row[1:-1]))
-            speeds = tuple(SpeedFigures(**dict(zip(_SPEED_COLUMNS, r))) for r in c.execute(
-                f"SELECT {', '.join(_SPEED_COLUMNS)} FROM speeds WHERE entry_id = ? ORDER BY pos",
-                (row[0],)))
-            tags = tuple(r[0] for r in c.execute("SELECT tag FROM tags WHERE entry_id = ? ORDER BY tag",
-                                                 (row[0],)))
-            figs = Figures(**{f.name: values[f.name] for f in fields(Figures) if f.name != "speeds"},
-                           speeds=speeds)
-            return Entry(name=values["name"], notes=values["notes"], tags=tags,
-                         created=values["created"], modified=values["modified"], text=row[-1],
-                         figures=figs, figures_version=values["figures_version"])
+            values, reason = clean_row(("id",) + _ENTRY_COLUMNS + ("text",), row)
+            speeds = []
+            for r in c.execute(f"SELECT {', '.join(_SPEED_COLUMNS)} FROM speeds WHERE entry_id = ? "
+                               "ORDER BY pos", (row[0],)):
+                clean, why = clean_row(_SPEED_COLUMNS, r)
+                reason = reason or why
+                speeds.append(SpeedFigures(**dict(zip(_SPEED_COLUMNS, clean))))
+            tags = []
+            for r in c.execute("SELECT tag FROM tags WHERE entry_id = ? ORDER BY tag", (row[0],)):
+                clean, why = clean_row(("tag",), r)
+                reason = reason or why
+                tags.append(clean[0])
+            if reason is not None:
+                raise LibraryError("entry", f"the design {name!r} in the library is damaged ({reason}); "
+                                   "'shaper library check' lists every damaged design", self.path)
+            v = dict(zip(("id",) + _ENTRY_COLUMNS + ("text",), values))
+            figs = Figures(**{f.name: v[f.name] for f in fields(Figures) if f.name != "speeds"},
+                           speeds=tuple(speeds))
+            return Entry(name=v["name"], notes=v["notes"], tags=tuple(tags), created=v["created"],
+                         modified=v["modified"], text=v["text"], figures=figs,
+                         figures_version=v["figures_version"])
         return self._read(work)
 
     def load(self, name: str) -> dict[str, Any]:
@@ -153,7 +170,8 @@ class Library:
 
         Per-speed figures are those at ``rpm`` (None where the design lacks that speed),
         or at each design's first speed when ``rpm`` is None. ``tags`` is comma-joined.
-        ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
+        A row whose stored values cannot all be read has those as None and says why in
+        ``damaged``. ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
         top rows while sorting, which is what makes a page fast).
         """
         conditions = parse_filter(where) if isinstance(where, str) else list(where)
@@ -172,11 +190,16 @@ class Library:
             clauses.append(sql)
             params += values
         where_sql = ("WHERE " + " AND ".join(clauses)) if clauses else ""
-        limit_sql = f"LIMIT {int(limit)} OFFSET {max(int(offset), 0)}" if limit is not None else ""
-        columns = ", ".join([f"e.{c}" for c in LIST_COLUMNS[:-len(_SPEED_COLUMNS)]]
-                            + [f"s.{c}" for c in _SPEED_COLUMNS])
+        limit_sql = f"LIMIT {min(int(limit), _MAX_ROWS)} OFFSET {min(max(int(offset), 0), _MAX_ROWS)}" if limit is not None else ""
+        columns = ", ".join(["e.id"] + [f"e.{c}" for c in _ENTRY_COLUMNS] + [f"s.{c}" for c in _SPEED_COLUMNS])
         sql = f"SELECT {columns} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
-        return LIST_COLUMNS, self._read(lambda c: c.execute(sql, params).fetchall())
+        keys = ("id",) + _ENTRY_COLUMNS + _SPEED_COLUMNS
+        rows = []
+        for row in self._read(lambda c: c.execute(sql, params).fetchall()):
+            values, reason = clean_row(keys, row, _LIST_NULLABLE)
+            values[0] = reason
+            rows.append(tuple(values[1:]) + (reason,))
+        return LIST_COLUMNS, rows
 
     def query(self, *args: Any, **kwargs: Any) -> list[dict[str, Any]]:
         """:meth:`query_rows` as JSON-ready dicts (``tags`` a list)."""
@@ -291,6 +314,12 @@ class Library:
         target = backup_target(self.path) if target is None else target
         return snapshot(self._conn, target, self.path)
 
+    def damaged(self) -> list[tuple[str, str]]:
+        """(entry, why) for each entry that cannot be shown or opened, and SQLite's own
+        findings (``PRAGMA integrity_check``) as ('file', why): ``shaper library check``."""
+        found = [("file", line) for line in self._read(integrity_problems)]
+        return found + self._read(lambda c: list(damaged_entries(c, _check_document)))
+
     # ---- figures an older program computed -------------------------------------------
     def stale_names(self) -> list[str]:
         """The entries whose figures an older computation made (below ``FIGURES_VERSION``)."""
@@ -322,9 +351,12 @@ class Library:
                     doc = entry.document()
                     batch.append((entry, figures(doc["spec"], doc["rpm"], doc.get("masses"))))
                 except LibraryError as exc:
-                    if exc.kind != "missing":
+                    if exc.kind == "entry":               # a damaged entry: reported, left alone
+                        failed.append((name, str(exc)))
+                    elif exc.kind == "missing":
+                        skipped.append(name)
+                    else:
                         raise
-                    skipped.append(name)
                 except (DesignError, FileFormatError, ArithmeticError, ValueError, RuntimeError) as exc:
                     failed.append((name, str(exc)))
                 if progress is not None:
@@ -369,6 +401,10 @@ class Library:
                       f"(?, ?, {', '.join('?' * len(_SPEED_COLUMNS))})",
                       [(entry_id, pos, *(getattr(s, k) for k in _SPEED_COLUMNS))
                        for pos, s in enumerate(_distinct_speeds(speeds))])
+
+
+def _check_document(name: str, text: str) -> None:
+    parse_design(text.encode("utf-8"), f"library entry {name!r}")
 
 
 def _distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:

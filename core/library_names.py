@@ -62,7 +62,15 @@ def file_stem(path: str | os.PathLike) -> str:
     return name
 
 
+MAX_STEM_BYTES = 200     # an exported file's name without ``.shaper.json`` and `` (N)``
+
+
 def safe_file_name(name: str) -> str:
-    """An entry name usable as a file name on every system (for exporting a whole library)."""
+    """An entry name usable as a file name on every system (for exporting a whole library).
+
+    Cut to ``MAX_STEM_BYTES`` bytes of UTF-8, not characters: file systems count bytes
+    (255 at most), and 120 Chinese characters are already 360 bytes.
+    """
     cleaned = re.sub(r'[<>:"/\\|?*\x00-\x1f\x7f]', "_", name).strip(" .")
-    return (cleaned or "design")[:120]
+    cut = cleaned.encode("utf-8", "replace")[:MAX_STEM_BYTES].decode("utf-8", "ignore").rstrip(" .")
+    return cut or "design"

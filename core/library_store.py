@@ -34,7 +34,8 @@ class LibraryError(Exception):
     """A library problem with a plain message. ``kind`` is one of ``damaged``,
     ``newer``, ``foreign``, ``io``, ``busy``, ``name``, ``tag``, ``exists``, ``missing``,
     ``location`` (the path is a folder, or its folder does not exist: the path is wrong,
-    not the disk)."""
+    not the disk), ``readonly`` (a write to a library opened read-only) or ``entry``
+    (one entry's stored values are unusable; the rest of the library is fine)."""
 
     def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None) -> None:
         super().__init__(message)
@@ -234,6 +235,13 @@ def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
                            f"{version}; this version reads up to {schema_version()}); it was left "
                            "unchanged — update Shaper Designer to use it", path)
     return version
+
+
+def integrity_problems(conn: sqlite3.Connection, limit: int = 20) -> list[str]:
+    """SQLite's full check of the file (every page, index and constraint): [] when sound."""
+    rows = [row[0] for row in conn.execute(f"PRAGMA integrity_check({int(limit)})")]
+    return [] if rows == ["ok"] else [" ".join(r.replace("*** in database main ***", "").split())
+                                      for r in rows]
 
 
 def _migrate(conn: sqlite3.Connection, path: Path, version: int) -> None:

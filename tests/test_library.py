@@ -249,7 +249,7 @@ def test_import_and_export_folders(tmp_path, lib):
     assert lib.count() == len(SPECS) + 1
     out = tmp_path / "out"
     out.mkdir()
-    paths = export_entries(lib, out)
+    paths = export_entries(lib, out).paths
     assert len(paths) == lib.count()
     for path in paths:
         assert load_design(path)["spec"] in SPECS.values()

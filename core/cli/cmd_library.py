@@ -1,7 +1,7 @@
 """``shaper library``: keep, find, export and compare designs in a design library.
 
 One subcommand with its own sub-subcommands (add, list, show, remove, rename,
-export, import, compare, backup, refresh); every one takes ``--library PATH`` (or
+export, import, compare, backup, refresh, check); every one takes ``--library PATH`` (or
 ``$SHAPER_LIBRARY``). The work is in ``core.library*`` and ``core.compare``;
 this module only parses, calls and prints.
 """
@@ -141,6 +141,8 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
     if exc.kind in ("name", "exists"):
         hint = " (or use --rename-duplicates)" if action == "import" else ""
         return fail(f"{_NAME_ARGUMENT.get(action, name_option)}: {exc}{hint}")
+    if exc.kind == "entry":
+        return fail(f"{name_option}: {exc}")
     if exc.kind == "missing" and exc.path is not None and exc.path.exists():
         return fail(f"{name_option}: {exc} (see 'shaper library list')")
     source = "--library" if library else (f"--library (from ${ENV_VAR})" if os.environ.get(ENV_VAR)
@@ -189,11 +191,16 @@ def _run_list(args: argparse.Namespace) -> int:
     with _open(args, create=False) as lib:
         rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
                          rpm=rpm, limit=args.limit)
-    stale = sum(1 for row in rows if row["figures_version"] < FIGURES_VERSION)
+    stale = sum(1 for row in rows if row["figures_version"] is not None
+                and row["figures_version"] < FIGURES_VERSION)
     if stale:
         print(f"shaper: note: {stale} of the {len(rows)} designs listed "
               f"{'has' if stale == 1 else 'have'} figures an older version computed; "
               "'shaper library refresh' recomputes them", file=sys.stderr)
+    damaged = sum(1 for row in rows if row["damaged"])
+    if damaged:
+        print(f"shaper: note: {damaged} of the {len(rows)} designs listed {'is' if damaged == 1 else 'are'} "
+              "damaged (what cannot be read shows as —); 'shaper library check' says why", file=sys.stderr)
     if args.json:
         print_json(rows)
         return 0
@@ -204,6 +211,8 @@ def _run_list(args: argparse.Namespace) -> int:
     for row in rows:
         cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else str(row[key])
                       for _, key, fmt in LIST_COLUMNS])
+        if row["damaged"]:
+            cells[-1][0] += " (damaged)"
     widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
     for r in cells:
         print("  ".join(c.ljust(w) if i in (0, 1, len(r) - 1) else c.rjust(w)
@@ -266,9 +275,10 @@ def _run_export(args: argparse.Namespace) -> int:
     with _open(args, create=False) as lib:
         try:
             if args.all:
-                os.makedirs(args.output, exist_ok=True)
-                paths = export_entries(lib, args.output)
-                print(f"exported {len(paths)} designs to {args.output}")
+                done = export_entries(lib, args.output)
+                for name, why in done.skipped:
+                    print(f"shaper: skipped {name!r}: {why}", file=sys.stderr)
+                print(f"exported {len(done.paths)} designs to {args.output}")
             else:
                 lib.export(args.name, args.output)
         except OSError as exc:
@@ -321,6 +331,26 @@ def _run_backup(args: argparse.Namespace) -> int:
     return 0
 
 
+def _check_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--json", action="store_true", help="print a JSON array of {entry, problem}")
+
+
+def _run_check(args: argparse.Namespace) -> int:
+    """Every damaged entry (and SQLite's own findings) on its own line; exit 1 if any."""
+    with _open(args, create=False) as lib:
+        found = lib.damaged()
+        total = lib.count()
+    if args.json:
+        print_json([{"entry": entry, "problem": why} for entry, why in found])
+    else:
+        for entry, why in found:
+            print(f"{entry}: {why}")
+        entries = sum(1 for entry, _ in found if entry != "file")
+        print(f"{entries} of {total} designs in {lib.path} are damaged" if found
+              else f"no damage found in {lib.path} ({total} designs)")
+    return 1 if found else 0
+
+
 def _run_refresh(args: argparse.Namespace) -> int:
     with _open(args, create=False) as lib:
         return run_refresh(args, lib)
@@ -337,7 +367,9 @@ ACTIONS = (
     ("compare", "compare 2 to 6 designs at one speed: figure table and curves", compare_options),
     ("backup", "copy the library file (also one that cannot be opened)", _backup_options),
     ("refresh", "recompute the figures an older version of the program stored", refresh_options),
+    ("check", "list the designs whose stored values are damaged (exit 1 if any)", _check_options),
 )
 ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
-              "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh}
+              "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh,
+              "check": _run_check}
