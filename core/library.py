@@ -25,7 +25,8 @@ from .io import atomic_write, design_document, masses_to_dict, parse_design
 from .library_names import check_name, check_tags, unique_name
 from .library_rows import clean_row, damaged_entries, read_lenient
 from .library_query import Condition, condition_sql, parse_filter, search_sql, sort_sql
-from .library_store import (LibraryError, backup_target, connect, default_path, integrity_problems, resolve_path,
+from .library_open import connect
+from .library_store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
                             snapshot, sqlite_error, transaction, utc_now)
 
 _PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
@@ -94,7 +95,9 @@ class Library:
 
     def __init__(self, path: str | os.PathLike | None = None, create: bool = True) -> None:
         self.path = resolve_path(path)
-        self._conn = connect(self.path, create=create, make_dirs=self.path == default_path())
+        opened = connect(self.path, create=create, make_dirs=self.path == default_path())
+        self._conn = opened.conn
+        self.read_only: str | None = opened.read_only    # why it cannot be written, if so
 
     def close(self) -> None:
         self._conn.close()
@@ -108,6 +111,13 @@ class Library:
     def data_version(self) -> int:
         """Changes whenever another connection commits (cheap to poll)."""
         return self._read(lambda c: c.execute("PRAGMA data_version").fetchone()[0])
+
+    def _transaction(self):
+        """One write transaction; refused at once, in one line, if the library is read-only."""
+        if self.read_only is not None:
+            raise LibraryError("readonly", f"the library {self.path} can only be read: {self.read_only}; "
+                               "nothing was changed", self.path)
+        return transaction(self._conn, self.path)
 
     # ---- reading --------------------------------------------------------------
     def _read(self, work):
@@ -220,7 +230,7 @@ class Library:
         the entry's created time. The figures are computed before the write starts.
         """
         entry = self.make_entry(name, loaded, notes, tags)
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             row = c.execute("SELECT id, created FROM entries WHERE name = ?", (entry.name,)).fetchone()
             if row is not None:
                 if not replace:
@@ -249,7 +259,7 @@ class Library:
         Every edit is such a swap of whole entries, so an edit and its undo are both
         one call (LibraryError 'missing'/'exists' if the library changed meanwhile).
         """
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             for name in remove:
                 if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
                     raise LibraryError("missing", f"there is no design named {name!r} in the library",
@@ -266,7 +276,7 @@ class Library:
     def remove(self, name: str) -> Entry:
         """Delete ``name``; returns the entry so it can be restored."""
         entry = self.get(name)
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
@@ -274,7 +284,7 @@ class Library:
 
     def rename(self, old: str, new: str) -> None:
         new = check_name(new)
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             if new != old and c.execute("SELECT 1 FROM entries WHERE name = ?", (new,)).fetchone():
                 raise self._exists(new)
             if c.execute("UPDATE entries SET name = ?, modified = ? WHERE name = ?",
@@ -296,7 +306,7 @@ class Library:
         changed = Entry(**{**entry.__dict__, "modified": utc_now(),
                            "notes": entry.notes if notes is None else str(notes),
                            "tags": entry.tags if tags is None else check_tags(tags)})
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
@@ -361,7 +371,7 @@ class Library:
                     failed.append((name, str(exc)))
                 if progress is not None:
                     progress(i, len(todo))
-            with transaction(self._conn, self.path) as c:
+            with self._transaction() as c:
                 for entry, figs in batch:
                     row = c.execute("SELECT e.id FROM entries e JOIN documents d ON d.entry_id = e.id "
                                     "WHERE e.name = ? AND d.text = ?", (entry.name, entry.text)).fetchone()

@@ -145,6 +145,9 @@ class LibraryPane(QWidget):
         self.view.resizeColumnsToContents()
         self._version = library.data_version() if library is not None else -1
         self.path_label.setText(str(library.path) if library is not None else self.tr("No library is open."))
+        if library is not None and library.read_only is not None:
+            self.path_label.setText(self.tr("%1 (read-only: %2)").replace("%1", str(library.path))
+                                    .replace("%2", library.read_only))
         self.path_label.setToolTip(self.path_label.text())
         self.stale_bar.update_for(library)
         if library is not None:

@@ -21,9 +21,10 @@ from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library
 from ..library_files import export_entries, import_entries, read_design_files
 from ..library_query import QueryError, parse_filter, sort_sql
+from ..library_open import library_exists
 from ..library_store import ENV_VAR, LibraryError, backup_copy
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
-                     add_speed_options, design_file, fail, library_path, masses_from_args, number,
+                     add_speed_options, design_file, fail, library_path, masses_from_args, note_read_only, number,
                      rpms_from_args, spec_from_args)
 from .cmd_library_compare import compare_options, run_compare
 from .cmd_library_refresh import refresh_options, run_refresh
@@ -153,8 +154,16 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
     return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
 
 
+_READING = ("list", "show", "export", "compare", "check", "backup")
+
+
 def _open(args: argparse.Namespace, create: bool = True) -> Library:
-    return Library(library_path(args.library), create=create)
+    """The library, checked; a read-only one gets a note on stderr when only read (a write
+    to it is refused in one line saying why)."""
+    lib = Library(library_path(args.library), create=create)
+    if args.library_command in _READING:
+        note_read_only(lib)
+    return lib
 
 
 def _run_add(args: argparse.Namespace) -> int:
@@ -185,7 +194,7 @@ def _run_list(args: argparse.Namespace) -> int:
         raise UsageError(f"--sort: {exc}") from None
     parse_filter(args.where)                # a bad filter is reported even for an empty library
     path = library_path(args.library)
-    if not path.exists():                   # listing never creates a library
+    if not library_exists(path):            # listing never creates a library
         print("[]" if args.json else f"no designs in {path} (it does not exist yet)")
         return 0
     with _open(args, create=False) as lib:
@@ -302,7 +311,7 @@ def _run_import(args: argparse.Namespace) -> int:
 
 def _run_backup(args: argparse.Namespace) -> int:
     path = library_path(args.library)
-    if not path.exists():
+    if not library_exists(path):
         raise LibraryError("missing", f"there is no design library at {path}", path)
     if args.output is not None:
         out = Path(args.output)

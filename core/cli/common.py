@@ -372,3 +372,10 @@ def library_path(library: str | None) -> Path:
     if library is not None and not library.strip():
         raise UsageError("--library: the path is empty")
     return resolve_path(library)
+
+
+def note_read_only(library) -> None:
+    """One note on stderr when a library (``core.library.Library``) could only be opened
+    for reading; a write to it would be refused in one line saying why."""
+    if library.read_only is not None:
+        print(f"shaper: note: {library.path} is opened read-only: {library.read_only}", file=sys.stderr)
