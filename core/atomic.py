@@ -7,6 +7,7 @@ previous version, replacing what must not be replaced or leaving litter.
 from __future__ import annotations
 
 import errno
+import hashlib
 import itertools
 import os
 import re
@@ -17,6 +18,27 @@ from typing import Iterable
 from .errors import WriteError
 
 _TEMP_SUFFIX = ".tmp"
+NAME_MAX = 255               # bytes in one file name on nearly every file system
+# what a temporary name adds to the target's name: "." before, ".<pid>-<8 hex>.tmp" after
+_TEMP_ROOM = 1 + len(f".{2 ** 32}-{'0' * 8}{_TEMP_SUFFIX}")
+
+
+def fit_name(name: str, room: int) -> str:
+    """``name`` if it leaves ``room`` bytes of a file name free, else its first bytes (cut at
+    a character) and ``~`` with 8 hex digits of its hash, so that names built from a long
+    name (temporary files, copies) stay within ``NAME_MAX`` bytes and stay distinct."""
+    raw = os.fsencode(name)
+    limit = NAME_MAX - room
+    if len(raw) <= limit:
+        return name
+    cut = raw[:limit - 9]
+    for _ in range(3):                      # not in the middle of a UTF-8 character
+        try:
+            cut.decode("utf-8")
+            break
+        except UnicodeDecodeError:
+            cut = cut[:-1]
+    return os.fsdecode(cut) + "~" + hashlib.sha256(raw).hexdigest()[:8]
 
 
 def atomic_write(path: str | os.PathLike, text: str | bytes | Iterable[str] | Iterable[bytes]) -> None:
@@ -25,8 +47,9 @@ def atomic_write(path: str | os.PathLike, text: str | bytes | Iterable[str] | It
     one, never a mixture.
 
     - A regular file (or a new one) is written to a temporary sibling
-      ``.NAME.<pid>-<8 hex>.tmp``, flushed and fsynced, renamed over the
-      target, and the folder is fsynced. The new file keeps the permission
+      ``.NAME.<pid>-<8 hex>.tmp`` (a NAME too long for that is cut, see
+      :func:`fit_name`, so any name the file system takes can be written),
+      flushed and fsynced, renamed over the target, and the folder is fsynced. The new file keeps the permission
       bits (and, where allowed, the owner) of the file it replaces; a new file
       gets the mode the umask gives (0644 under umask 022).
     - A symbolic link is followed: its target is replaced, the link stays.
@@ -83,7 +106,8 @@ def _write_and_replace(target: str, pieces: Iterable[str] | Iterable[bytes], old
     directory, name = os.path.split(target)
     directory = directory or "."
     remove_stale_temps(target)
-    tmp = os.path.join(directory, f".{name}.{os.getpid()}-{secrets.token_hex(4)}{_TEMP_SUFFIX}")
+    tmp = os.path.join(directory, f".{fit_name(name, _TEMP_ROOM)}.{os.getpid()}-{secrets.token_hex(4)}"
+                                  f"{_TEMP_SUFFIX}")
     # A new file gets 0666 less the umask; a replacement starts private, then takes the old mode.
     fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0),
                  0o666 if old is None else 0o600)
@@ -146,7 +170,7 @@ def _descriptor_alias(path: str | os.PathLike) -> bool:
 
 def temp_pattern(target: str | os.PathLike) -> re.Pattern[str]:
     """The names :func:`atomic_write` gives its temporary siblings of ``target``."""
-    name = os.path.basename(os.fspath(target))
+    name = fit_name(os.path.basename(os.fspath(target)), _TEMP_ROOM)
     return re.compile(rf"\.{re.escape(name)}\.(\d+)-[0-9a-f]{{8}}{re.escape(_TEMP_SUFFIX)}\Z")
 
 
@@ -158,7 +182,7 @@ def remove_stale_temps(target: str | os.PathLike) -> list[str]:
         return []
     directory = os.path.dirname(os.fspath(target)) or "."
     pattern = temp_pattern(target)
-    prefix = "." + os.path.basename(os.fspath(target)) + "."
+    prefix = "." + fit_name(os.path.basename(os.fspath(target)), _TEMP_ROOM) + "."
     removed = []
     try:
         entries = [e for e in os.scandir(directory) if e.name.startswith(prefix)]

@@ -87,7 +87,12 @@ def document_text(loaded: dict[str, Any]) -> str:
     if masses is not None and "forces" not in extra:
         extra["forces"] = masses_to_dict(masses)
     doc = design_document(loaded["spec"], loaded["rpm"], loaded["step_deg"], extra)
-    return json.dumps(doc, indent=2, ensure_ascii=False)
+    text = json.dumps(doc, indent=2, ensure_ascii=False)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:      # a lone surrogate ("\ud800" in the file): kept as a JSON escape
+        text = json.dumps(doc, indent=2, ensure_ascii=True)
+    return text
 
 
 class Library:

@@ -17,7 +17,7 @@ from .errors import FileFormatError
 from .io import load_design
 from .library import Entry, Library
 from .library_store import LibraryError
-from .library_names import file_stem, safe_file_name, unique_name
+from .library_names import MAX_NAME, file_stem, safe_file_name, shown_file_name, unique_name
 
 DESIGN_SUFFIX = ".shaper.json"
 
@@ -27,10 +27,13 @@ def expand_paths(paths: Iterable[str | os.PathLike]) -> list[Path]:
     out: list[Path] = []
     for p in paths:
         path = Path(p)
-        if path.is_dir():
-            out += sorted(f for f in path.iterdir() if f.is_file() and f.name.lower().endswith(".json"))
-        else:
-            out.append(path)
+        try:
+            folder = path.is_dir()
+            files = sorted(f for f in path.iterdir() if f.is_file() and f.name.lower().endswith(".json")) \
+                if folder else [path]
+        except OSError:                 # a name too long, a folder that cannot be listed:
+            files = [path]              # load_design says why, in one line
+        out += files
     return out
 
 
@@ -58,11 +61,11 @@ def import_entries(library: Library, designs: list[tuple[Path, dict[str, Any]]],
     taken = set(library.names())
     entries = []
     for path, loaded in designs:
-        name = file_stem(path)
+        name = file_stem(path)[:MAX_NAME].strip() or "design"
         if rename_duplicates:
             name = unique_name(name, taken)
         taken.add(name)
-        entries.append(library.make_entry(name, loaded, notes=f"imported from {path.name}"))
+        entries.append(library.make_entry(name, loaded, notes=f"imported from {shown_file_name(path)}"))
     library.add_entries(entries)
     return entries
 

@@ -53,9 +53,14 @@ def unique_name(base: str, taken: Iterable[str]) -> str:
     return f"{base} ({n})"
 
 
+def shown_file_name(path: str | os.PathLike) -> str:
+    """A file's name as text that can be stored: bytes that are not UTF-8 become �."""
+    return os.fsencode(Path(path).name).decode("utf-8", "replace")
+
+
 def file_stem(path: str | os.PathLike) -> str:
     """The entry name a design file gets on import: its name without ``.shaper.json``/``.json``."""
-    name = Path(path).name
+    name = shown_file_name(path)
     for suffix in (".shaper.json", ".json"):
         if name.lower().endswith(suffix) and len(name) > len(suffix):
             return name[:-len(suffix)]

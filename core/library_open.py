@@ -27,11 +27,10 @@ import stat
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
-from urllib.parse import quote
 
 from . import library_store
 from .library_store import (APPLICATION_ID, BUSY_TIMEOUT_S, SQLITE_HEADER, LibraryError, check_regular,
-                            migrate, schema_version, sqlite_error)
+                            migrate, schema_version, sqlite_error, sqlite_uri)
 
 _UNCHANGED = "it was left unchanged"
 
@@ -130,15 +129,15 @@ def _open(path: Path, read_only: str | None) -> sqlite3.Connection:
     cannot make its shared-memory file in a read-only folder)."""
     try:
         if read_only is None:
-            return sqlite3.connect(str(path), timeout=BUSY_TIMEOUT_S, isolation_level=None)
-        uri = "file:" + quote(str(path.absolute()))
-        conn = sqlite3.connect(uri + "?mode=ro", uri=True, timeout=BUSY_TIMEOUT_S, isolation_level=None)
+            return sqlite3.connect(sqlite_uri(path), uri=True, timeout=BUSY_TIMEOUT_S, isolation_level=None)
+        conn = sqlite3.connect(sqlite_uri(path, "mode=ro"), uri=True, timeout=BUSY_TIMEOUT_S,
+                               isolation_level=None)
         try:
             conn.execute("SELECT count(*) FROM sqlite_master").fetchone()
             return conn
         except sqlite3.OperationalError:
             conn.close()
-        return sqlite3.connect(uri + "?immutable=1", uri=True, isolation_level=None)
+        return sqlite3.connect(sqlite_uri(path, "immutable=1"), uri=True, isolation_level=None)
     except sqlite3.Error as exc:
         raise LibraryError("io", f"cannot open the library {path}: {exc}", path) from None
 

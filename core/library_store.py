@@ -19,6 +19,9 @@ from contextlib import contextmanager
 from datetime import datetime, timezone
 from pathlib import Path
 from typing import Callable, Iterator
+from urllib.parse import quote
+
+from .atomic import fit_name
 
 APP_NAME = "shaper-designer"
 FILE_NAME = "library.sqlite"
@@ -220,6 +223,13 @@ def sqlite_error(exc: sqlite3.Error, path: Path) -> LibraryError:
     return LibraryError("io", f"cannot use the library {path}: {text}", path)
 
 
+def sqlite_uri(path: str | os.PathLike, query: str = "") -> str:
+    """``path`` as an SQLite URI (``uri=True``): any bytes a file name may hold (also those
+    that are not UTF-8) survive, and ``query`` (``mode=ro``…) can be added."""
+    uri = "file:" + quote(os.fsencode(os.path.abspath(path)))
+    return uri + ("?" + query if query else "")
+
+
 def utc_now() -> str:
     """Now as UTC ISO 8601 with milliseconds, e.g. 2024-05-01T12:00:00.000Z (sorts as text)."""
     now = datetime.now(timezone.utc)
@@ -250,10 +260,12 @@ def backup_copy(path: str | os.PathLike, target: str | os.PathLike | None = None
 def snapshot(conn: sqlite3.Connection, target: str | os.PathLike, path: str | os.PathLike) -> Path:
     """A consistent copy of the open library (SQLite's online backup), written atomically."""
     target = Path(target)
-    tmp = target.with_name(f".{target.name}.tmp")
+    tmp = target.with_name(f".{fit_name(target.name, 16)}.tmp")     # room for SQLite's -journal
     try:
+        if os.path.islink(target):
+            os.stat(target)             # a link loop or a link to nothing: not replaced by a file
         tmp.unlink(missing_ok=True)
-        dest = sqlite3.connect(str(tmp))
+        dest = sqlite3.connect(sqlite_uri(tmp), uri=True)
         try:
             conn.backup(dest)
         finally:
@@ -270,17 +282,18 @@ def backup_target(path: str | os.PathLike, label: str = "backup") -> Path:
     """A free file name beside ``path``: ``NAME.LABEL-YYYYMMDDTHHMMSSZ`` (``-2``… if taken)."""
     source = Path(path)
     stamp = datetime.now(timezone.utc).strftime("%Y%m%dT%H%M%SZ")
-    target = source.with_name(f"{source.name}.{label}-{stamp}")
+    base = fit_name(source.name, len(f".{label}-{stamp}-999"))      # within NAME_MAX bytes
+    target = source.with_name(f"{base}.{label}-{stamp}")
     n = 2
     while target.exists():
-        target = source.with_name(f"{source.name}.{label}-{stamp}-{n}")
+        target = source.with_name(f"{base}.{label}-{stamp}-{n}")
         n += 1
     return target
 
 
 def _copy_atomic(source: Path, target: Path) -> None:
     """Copy through a temporary file beside ``target``, synced, then renamed into place."""
-    tmp = target.with_name(f".{target.name}.tmp")
+    tmp = target.with_name(f".{fit_name(target.name, 5)}.tmp")
     try:
         shutil.copyfile(source, tmp)
         with open(tmp, "rb+") as handle:

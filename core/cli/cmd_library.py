@@ -24,7 +24,8 @@ from ..library_query import QueryError, parse_filter, sort_sql
 from ..library_open import library_exists
 from ..library_store import ENV_VAR, LibraryError, backup_copy
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
-                     add_speed_options, design_file, fail, library_path, masses_from_args, note_read_only, number,
+                     NOTES, add_speed_options, design_file, fail, library_path, masses_from_args, note_read_only,
+                     number, whole_number,
                      rpms_from_args, spec_from_args)
 from .cmd_library_compare import compare_options, run_compare
 from .cmd_library_refresh import refresh_options, run_refresh
@@ -72,7 +73,7 @@ def _list_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--sort", metavar="FIELD", default="name", help="sort by a figure (default name)")
     p.add_argument("--desc", action="store_true", help="sort descending")
     p.add_argument("--rpm", metavar="RPM", help="show per-speed figures at this speed (default: each design's first)")
-    p.add_argument("--limit", metavar="N", type=int, help="show at most N entries")
+    p.add_argument("--limit", metavar="N", help="show at most N entries")
     p.add_argument("--json", action="store_true", help="print a JSON array")
 
 
@@ -115,14 +116,44 @@ def run(args: argparse.Namespace) -> int:
     if args.library_command is None:
         args._library_parser.print_help()
         return 0
+    NOTES.clear()
     try:
-        return ACTION_RUN[args.library_command](args)
+        _check_text(args)
+        status = ACTION_RUN[args.library_command](args)
+        for note in NOTES:
+            print(note, file=sys.stderr)
+        return status
     except LibraryError as exc:
         return _library_failure(args, exc)
     except QueryError as exc:
         return fail(f"--where: {exc}")
     except FileFormatError as exc:          # a design file given to add, or a damaged entry
         return fail(f"{'--design' if args.library_command == 'add' else 'NAME'}: {exc}")
+
+
+# text arguments stored in or matched against the library (paths are not: any bytes are a path)
+_TEXT_ARGUMENTS = (("name", "NAME"), ("new_name", "NEW_NAME"), ("names", "NAME"), ("notes", "--notes"),
+                   ("tags", "--tags"), ("where", "--where"), ("search", "--search"), ("sort", "--sort"))
+
+
+def _check_text(args: argparse.Namespace) -> None:
+    """Refuse text SQLite cannot store: bytes that are not UTF-8 in the command line reach
+    Python as lone surrogates, which no UTF-8 text can hold."""
+    for dest, option in _TEXT_ARGUMENTS:
+        value = getattr(args, dest, None)
+        for text in value if isinstance(value, list) else [value]:
+            if isinstance(text, str) and not _encodable(text):
+                shown = "--name" if (dest, args.library_command) == ("name", "add") else option
+                raise UsageError(f"{shown}: {text.encode('utf-8', 'replace').decode()!r} holds bytes "
+                                 "that are not UTF-8 text")
+
+
+def _encodable(text: str) -> bool:
+    try:
+        text.encode("utf-8")
+        return True
+    except UnicodeEncodeError:
+        return False
 
 
 # the argument a name problem is reported against, per action
@@ -186,8 +217,7 @@ def _run_add(args: argparse.Namespace) -> int:
 
 def _run_list(args: argparse.Namespace) -> int:
     rpm = number("rpm", args.rpm) if args.rpm is not None else None
-    if args.limit is not None and args.limit < 0:
-        raise UsageError("--limit: must be 0 or more")
+    limit = whole_number("--limit", args.limit) if args.limit is not None else None
     try:
         sort_sql(args.sort, args.desc)
     except QueryError as exc:
@@ -199,7 +229,7 @@ def _run_list(args: argparse.Namespace) -> int:
         return 0
     with _open(args, create=False) as lib:
         rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
-                         rpm=rpm, limit=args.limit)
+                         rpm=rpm, limit=limit)
     stale = sum(1 for row in rows if row["figures_version"] is not None
                 and row["figures_version"] < FIGURES_VERSION)
     if stale:
