@@ -13,11 +13,13 @@ import os
 import re
 import secrets
 import stat
+import time
 from typing import Iterable
 
 from .errors import WriteError
 
 _TEMP_SUFFIX = ".tmp"
+FIFO_WAIT_S = 10.0           # how long a FIFO given as output waits for a reader
 NAME_MAX = 255               # bytes in one file name on nearly every file system
 # what a temporary name adds to the target's name: "." before, ".<pid>-<8 hex>.tmp" after
 _TEMP_ROOM = 1 + len(f".{2 ** 32}-{'0' * 8}{_TEMP_SUFFIX}")
@@ -54,7 +56,9 @@ def atomic_write(path: str | os.PathLike, text: str | bytes | Iterable[str] | It
       gets the mode the umask gives (0644 under umask 022).
     - A symbolic link is followed: its target is replaced, the link stays.
     - A target that is not a regular file (FIFO, device, ``/dev/stdout`` and
-      anything else under ``/proc``) is written to directly, never replaced.
+      anything else under ``/proc``) is written to directly, never replaced. A FIFO
+      that no program opens for reading within ``FIFO_WAIT_S`` seconds is given up
+      (WriteError) instead of waiting for ever.
     - On every failure the temporary file is removed. Before writing, temporary
       siblings left by a process that no longer runs (killed mid-save) are
       removed too, so they never accumulate.
@@ -96,10 +100,40 @@ def _open_pieces(fd_or_path, pieces: Iterable[str] | Iterable[bytes], mode: str)
 
 
 def _write_in_place(path: str | os.PathLike, pieces: Iterable[str] | Iterable[bytes]) -> None:
-    handle, pieces = _open_pieces(path, pieces, "w")
+    handle, pieces = _open_pieces(_open_fifo(path) if _is_fifo(path) else path, pieces, "w")
     with handle:
         for piece in pieces:
             handle.write(piece)
+
+
+def _is_fifo(path: str | os.PathLike) -> bool:
+    try:
+        return stat.S_ISFIFO(os.stat(path).st_mode)
+    except OSError:
+        return False
+
+
+def _open_fifo(path: str | os.PathLike) -> int:
+    """A FIFO opened for writing once a reader opens it, waiting at most ``FIFO_WAIT_S``.
+
+    A plain open would wait for a reader for ever; a non-blocking one fails at once
+    (ENXIO) while there is none, so it is retried until the deadline. The descriptor is
+    then made blocking again: a reader that reads slowly is waited for as usual.
+    """
+    deadline = time.monotonic() + FIFO_WAIT_S
+    while True:
+        try:
+            fd = os.open(path, os.O_WRONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+            break
+        except OSError as exc:
+            if exc.errno != errno.ENXIO:
+                raise
+            if time.monotonic() >= deadline:
+                raise OSError(errno.ENXIO, f"it is a pipe that no program opened for reading within "
+                              f"{FIFO_WAIT_S:g} s") from None
+            time.sleep(0.02)
+    os.set_blocking(fd, True)
+    return fd
 
 
 def _write_and_replace(target: str, pieces: Iterable[str] | Iterable[bytes], old: os.stat_result | None) -> None:

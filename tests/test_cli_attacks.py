@@ -306,3 +306,42 @@ def test_read_only_file(tmp_path):
                                names=("--csv",))
         assert status == 2
     assert lib_path.read_bytes() == before and target.read_text() == "old\n"
+
+
+# ---- a FIFO as output ------------------------------------------------------------------------
+
+def test_fifo_without_a_reader_is_given_up_in_one_line(tmp_path, monkeypatch):
+    import time
+    from core import atomic
+    monkeypatch.setattr(atomic, "FIFO_WAIT_S", 0.5)
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    b = bases(tmp_path)
+    for argv, names in ((with_value(b["curves"], "--csv", str(fifo)), ("--csv",)),
+                        (with_value(b["sweep"], "--csv", str(fifo)), ("--csv",)),
+                        (["library", "export", "a", "-o", str(fifo), "--library", str(tmp_path / "lib.sqlite")],
+                         ("-o",))):
+        start = time.monotonic()
+        status, _, err = check(shaper_in_process(*argv), names=names)
+        assert status == 2 and "no program opened for reading within 0.5 s" in err, err
+        assert time.monotonic() - start < 10
+
+
+def test_fifo_whose_reader_comes_late_is_written(tmp_path, monkeypatch):
+    import threading
+    import time
+    from core import atomic
+    monkeypatch.setattr(atomic, "FIFO_WAIT_S", 20.0)
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    received = []
+
+    def late_reader():
+        time.sleep(0.5)
+        with open(fifo, encoding="utf-8") as handle:
+            received.append(handle.read())
+    reader = threading.Thread(target=late_reader)
+    reader.start()
+    status, _, err = check(shaper_in_process(*with_value(bases(tmp_path)["curves"], "--csv", str(fifo))))
+    reader.join(timeout=30)
+    assert status == 0 and received and received[0].startswith("rpm,crank_deg"), err
