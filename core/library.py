@@ -7,12 +7,13 @@ included), and the key figures of :mod:`core.figures` — the design's in the
 sorted without recomputing anything. Documents read back are validated by the
 same rules as a design file (:func:`core.io.parse_design`).
 
-Opening, checks, schema and transactions are in :mod:`core.library_store`;
-the filter syntax is in :mod:`core.library_query`.
+An entry and its document are in :mod:`core.library_entry`; opening and its
+checks in :mod:`core.library_open`; schema and transactions in
+:mod:`core.library_store`; rows read with their types checked in
+:mod:`core.library_rows`; the filter syntax in :mod:`core.library_query`.
 """
 from __future__ import annotations
 
-import json
 import os
 import sqlite3
 from dataclasses import dataclass, fields
@@ -21,7 +22,8 @@ from typing import Any, Callable, Iterable, Sequence
 
 from .errors import DesignError, FileFormatError
 from .figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
-from .io import atomic_write, design_document, masses_to_dict, parse_design
+from .io import atomic_write
+from .library_entry import Entry, check_document, document_text
 from .library_names import check_name, check_tags, unique_name
 from .library_rows import clean_row, damaged_entries, read_lenient
 from .library_query import Condition, condition_sql, parse_filter, search_sql, sort_sql
@@ -29,7 +31,6 @@ from .library_open import connect
 from .library_store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
                             snapshot, sqlite_error, transaction, utc_now)
 
-_PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
 _ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS \
     + ("figures_version",)
 _SPEED_COLUMNS = ("rpm",) + SPEED_KEYS
@@ -50,49 +51,6 @@ class RefreshReport:
     updated: tuple[str, ...]
     failed: tuple[tuple[str, str], ...]     # (name, why its design cannot be computed)
     skipped: tuple[str, ...]                # removed or re-saved by another program meanwhile
-
-
-@dataclass(frozen=True)
-class Entry:
-    """One library entry: what it is called, when, the document text and its figures."""
-
-    name: str
-    notes: str
-    tags: tuple[str, ...]
-    created: str          # UTC ISO 8601
-    modified: str         # UTC ISO 8601
-    text: str             # the design document as JSON, the text of a design file
-    figures: Figures
-    figures_version: int = FIGURES_VERSION   # the computation the figures come from
-
-    @property
-    def figures_current(self) -> bool:
-        """False when an older program computed the figures (see ``refresh_figures``)."""
-        return self.figures_version >= FIGURES_VERSION
-
-    def document(self) -> dict[str, Any]:
-        """The validated design (keys of ``core.io.load_design``); FileFormatError if bad."""
-        return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}")
-
-
-def document_text(loaded: dict[str, Any]) -> str:
-    """A loaded design (``load_design``'s dict) as the JSON text of a design file."""
-    masses = loaded.get("masses")
-    extra: dict[str, Any] = {}
-    for key, value in loaded.items():              # keep the file's key order
-        if key == "forces" and masses is not None:
-            extra["forces"] = masses_to_dict(masses)
-        elif key not in _PARSED_KEYS:
-            extra[key] = value
-    if masses is not None and "forces" not in extra:
-        extra["forces"] = masses_to_dict(masses)
-    doc = design_document(loaded["spec"], loaded["rpm"], loaded["step_deg"], extra)
-    text = json.dumps(doc, indent=2, ensure_ascii=False)
-    try:
-        text.encode("utf-8")
-    except UnicodeEncodeError:      # a lone surrogate ("\ud800" in the file): kept as a JSON escape
-        text = json.dumps(doc, indent=2, ensure_ascii=True)
-    return text
 
 
 class Library:
@@ -333,7 +291,7 @@ class Library:
         """(entry, why) for each entry that cannot be shown or opened, and SQLite's own
         findings (``PRAGMA integrity_check``) as ('file', why): ``shaper library check``."""
         found = [("file", line) for line in self._read(integrity_problems)]
-        return found + self._read(lambda c: list(damaged_entries(c, _check_document)))
+        return found + self._read(lambda c: list(damaged_entries(c, check_document)))
 
     # ---- figures an older program computed -------------------------------------------
     def stale_names(self) -> list[str]:
@@ -416,10 +374,6 @@ class Library:
                       f"(?, ?, {', '.join('?' * len(_SPEED_COLUMNS))})",
                       [(entry_id, pos, *(getattr(s, k) for k in _SPEED_COLUMNS))
                        for pos, s in enumerate(_distinct_speeds(speeds))])
-
-
-def _check_document(name: str, text: str) -> None:
-    parse_design(text.encode("utf-8"), f"library entry {name!r}")
 
 
 def _distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:

@@ -17,6 +17,16 @@ MAX_TAG = 64
 _CONTROL = re.compile(r"[\x00-\x1f\x7f]")
 
 
+def storable(text: str) -> bool:
+    """Whether ``text`` can be stored as UTF-8: bytes that are not UTF-8 on a command line
+    reach Python as lone surrogates, which no UTF-8 text (and no SQLite text) can hold."""
+    try:
+        text.encode("utf-8")
+        return True
+    except UnicodeEncodeError:
+        return False
+
+
 def check_name(name: object) -> str:
     """A usable entry name (stripped), or LibraryError('name')."""
     if not isinstance(name, str) or not name.strip():

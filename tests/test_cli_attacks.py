@@ -26,6 +26,7 @@ from core.spec import Spec
 
 from cli_runner import shaper_in_process
 from output_checks import error_names
+from test_cli_fuzz import with_value
 
 HUGE = ["99999999999999999999", "-99999999999999999999", "1" + "0" * 400, "9" * 5000]
 DESIGN = ["--crank", "100", "--K", "1.4", "--stroke", "300"]
@@ -87,15 +88,6 @@ def argument_names(argv: list[str]) -> set[str]:
     """Every option and positional an error of this command may name."""
     actions = _parser(argv)._actions
     return {s for a in actions for s in a.option_strings} | {a.metavar for a in actions if a.metavar}
-
-
-def with_value(base: list[str], option: str, value: str) -> list[str]:
-    argv = list(base)
-    if option in argv:
-        argv[argv.index(option) + 1] = value
-    else:
-        argv += [option, value]
-    return argv
 
 
 @pytest.mark.parametrize("command", [

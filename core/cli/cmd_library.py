@@ -20,6 +20,7 @@ from ..figures import DESIGN_FIGURES, FIGURES_VERSION, SPEED_FIGURES
 from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library
 from ..library_files import export_entries, import_entries, read_design_files
+from ..library_names import storable
 from ..library_query import QueryError, parse_filter, sort_sql
 from ..library_open import library_exists
 from ..library_store import ENV_VAR, LibraryError, backup_copy
@@ -28,6 +29,7 @@ from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_l
                      number, whole_number,
                      rpms_from_args, spec_from_args)
 from .cmd_library_compare import compare_options, run_compare
+from .cmd_library_check import check_options, run_check
 from .cmd_library_refresh import refresh_options, run_refresh
 from .output import OutputError, print_json
 
@@ -142,18 +144,10 @@ def _check_text(args: argparse.Namespace) -> None:
     for dest, option in _TEXT_ARGUMENTS:
         value = getattr(args, dest, None)
         for text in value if isinstance(value, list) else [value]:
-            if isinstance(text, str) and not _encodable(text):
+            if isinstance(text, str) and not storable(text):
                 shown = "--name" if (dest, args.library_command) == ("name", "add") else option
                 raise UsageError(f"{shown}: {text.encode('utf-8', 'replace').decode()!r} holds bytes "
                                  "that are not UTF-8 text")
-
-
-def _encodable(text: str) -> bool:
-    try:
-        text.encode("utf-8")
-        return True
-    except UnicodeEncodeError:
-        return False
 
 
 # the argument a name problem is reported against, per action
@@ -370,26 +364,6 @@ def _run_backup(args: argparse.Namespace) -> int:
     return 0
 
 
-def _check_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--json", action="store_true", help="print a JSON array of {entry, problem}")
-
-
-def _run_check(args: argparse.Namespace) -> int:
-    """Every damaged entry (and SQLite's own findings) on its own line; exit 1 if any."""
-    with _open(args, create=False) as lib:
-        found = lib.damaged()
-        total = lib.count()
-    if args.json:
-        print_json([{"entry": entry, "problem": why} for entry, why in found])
-    else:
-        for entry, why in found:
-            print(f"{entry}: {why}")
-        entries = sum(1 for entry, _ in found if entry != "file")
-        print(f"{entries} of {total} designs in {lib.path} are damaged" if found
-              else f"no damage found in {lib.path} ({total} designs)")
-    return 1 if found else 0
-
-
 def _run_refresh(args: argparse.Namespace) -> int:
     with _open(args, create=False) as lib:
         return run_refresh(args, lib)
@@ -406,9 +380,9 @@ ACTIONS = (
     ("compare", "compare 2 to 6 designs at one speed: figure table and curves", compare_options),
     ("backup", "copy the library file (also one that cannot be opened)", _backup_options),
     ("refresh", "recompute the figures an older version of the program stored", refresh_options),
-    ("check", "list the designs whose stored values are damaged (exit 1 if any)", _check_options),
+    ("check", "list the designs whose stored values are damaged (exit 1 if any)", check_options),
 )
 ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
               "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh,
-              "check": _run_check}
+              "check": lambda args: run_check(args, _open(args, create=False))}
