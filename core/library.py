@@ -25,7 +25,7 @@ from .figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Fig
 from .io import atomic_write
 from .library_entry import Entry, check_document, document_text
 from .library_names import check_name, check_tags, unique_name
-from .library_rows import clean_row, damaged_entries, read_lenient
+from .library_rows import clean_row, damaged_entries, read_lenient, unfit_sql
 from .library_query import Condition, condition_sql, parse_filter, search_sql, sort_sql
 from .library_open import connect
 from .library_store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
@@ -38,6 +38,16 @@ _SPEED_COLUMNS = ("rpm",) + SPEED_KEYS
 # could not all be read (those are None; see :mod:`core.library_rows`)
 LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS + ("damaged",)
 _LIST_NULLABLE = frozenset(_SPEED_COLUMNS)      # a design without the speed asked for
+_LIST_KEYS = ("id",) + _ENTRY_COLUMNS + _SPEED_COLUMNS
+_LIST_EXPRESSIONS = [f"e.{c}" for c in _LIST_KEYS[:-len(_SPEED_COLUMNS)]] + [f"s.{c}" for c in _SPEED_COLUMNS]
+# a flag (SQLite checks every value's type in C), the id, the columns
+_LIST_SELECT = ", ".join([unfit_sql(zip(_LIST_EXPRESSIONS, _LIST_KEYS), _LIST_NULLABLE)] + _LIST_EXPRESSIONS)
+
+
+def _cleaned(row: tuple) -> tuple:
+    """A list row SQLite flagged (or one read with bytes for bad texts), cleaned in Python."""
+    values, reason = clean_row(_LIST_KEYS, row[1:], _LIST_NULLABLE)
+    return tuple(values[1:]) + (reason,)
 
 
 _MAX_ROWS = 2 ** 62     # SQLite's LIMIT is a 64-bit integer; more rows than that is "all"
@@ -163,15 +173,15 @@ class Library:
             clauses.append(sql)
             params += values
         where_sql = ("WHERE " + " AND ".join(clauses)) if clauses else ""
-        limit_sql = f"LIMIT {min(int(limit), _MAX_ROWS)} OFFSET {min(max(int(offset), 0), _MAX_ROWS)}" if limit is not None else ""
-        columns = ", ".join(["e.id"] + [f"e.{c}" for c in _ENTRY_COLUMNS] + [f"s.{c}" for c in _SPEED_COLUMNS])
-        sql = f"SELECT {columns} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
-        keys = ("id",) + _ENTRY_COLUMNS + _SPEED_COLUMNS
-        rows = []
-        for row in self._read(lambda c: c.execute(sql, params).fetchall()):
-            values, reason = clean_row(keys, row, _LIST_NULLABLE)
-            values[0] = reason
-            rows.append(tuple(values[1:]) + (reason,))
+        limit_sql = (f"LIMIT {min(int(limit), _MAX_ROWS)} OFFSET {min(max(int(offset), 0), _MAX_ROWS)}"
+                     if limit is not None else "")
+        sql = f"SELECT {_LIST_SELECT} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
+
+        def work(c: sqlite3.Connection) -> list[tuple]:
+            rows = c.execute(sql, params).fetchall()
+            every = c.text_factory is not str       # texts that are not UTF-8 came as bytes
+            return [row[2:] + (None,) if not (row[0] or every) else _cleaned(row) for row in rows]
+        return LIST_COLUMNS, self._read(work)
         return LIST_COLUMNS, rows
 
     def query(self, *args: Any, **kwargs: Any) -> list[dict[str, Any]]:

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 import sqlite3
 from functools import lru_cache
-from typing import Any, Callable, Iterator, Sequence, TypeVar
+from typing import Any, Callable, Iterable, Iterator, Sequence, TypeVar
 
 from .figures import DESIGN_KEYS, SPEED_KEYS
 
@@ -73,6 +73,32 @@ def clean_row(keys: Sequence[str], row: Sequence[Any],
         if reason is None:
             reason = why
     return values, reason
+
+
+_LARGEST = "1.7976931348623157e308"     # the largest finite double; inf lies beyond it
+
+
+def unfit_sql(columns: Iterable[tuple[str, str]], nullable: frozenset[str] = frozenset()) -> str:
+    """An SQL expression that is 1 where a value of ``columns`` ((SQL expression, key)
+    pairs) has the wrong type for its key or is not finite, else 0. Checked by SQLite in
+    C, so sound rows cost nothing in Python; a flagged row then goes through
+    :func:`clean_row` for the reason. (Text that is not UTF-8 passes this flag: SQLite
+    does not decode it; :func:`read_lenient` finds it.)"""
+    tests = []
+    for expr, key in columns:
+        kind = KINDS.get(key, "text?")
+        empty = "1" if kind.endswith("?") or key in nullable else "0"     # what NULL counts as
+        kind = kind.rstrip("?")
+        # SQLite orders NULL < numbers < text < blob, so a range test says the type too,
+        # and costs less than typeof(); NULL gives NULL, which coalesce turns into ``empty``.
+        if kind == "text":
+            fits = f"{expr} >= '' AND {expr} < X''"
+        elif kind == "integer":
+            fits = f"typeof({expr}) = 'integer'"
+        else:
+            fits = f"{expr} BETWEEN -{_LARGEST} AND {_LARGEST}"
+        tests.append(f"NOT coalesce({fits}, {empty})")
+    return "(" + " OR ".join(tests) + ")"
 
 
 def _lenient_text(raw: bytes) -> str | bytes:
