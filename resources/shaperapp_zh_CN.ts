@@ -1059,8 +1059,8 @@
         <translation>此设计已损坏，无法打开；设计库中的其他设计仍可使用。（%1）</translation>
     </message>
     <message>
-        <source>The library %1 can only be read: %2</source>
-        <translation>设计库 %1 只能读取：%2</translation>
+        <source>The library %1 can only be read (the file or its folder cannot be written); nothing was changed.</source>
+        <translation>设计库 %1 只能读取（文件或其所在文件夹不可写入），未作任何更改。</translation>
     </message>
     <message>
         <source>Could not use the library: %1</source>

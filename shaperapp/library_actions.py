@@ -266,7 +266,8 @@ class LibraryActions(QObject):
             return self.tr("This design is damaged and cannot be opened; the rest of the library "
                            "can be used. (%1)").replace("%1", str(error))
         if error.kind == "readonly":
-            return self.tr("The library %1 can only be read: %2").replace("%1", path).replace("%2", str(error))
+            return self.tr("The library %1 can only be read (the file or its folder cannot be "
+                           "written); nothing was changed.").replace("%1", path)
         text = texts.get(error.kind)
         if text is None:
             return self.tr("Could not use the library: %1").replace("%1", str(error))

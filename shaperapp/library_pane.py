@@ -205,11 +205,15 @@ class LibraryPane(QWidget):
     def _update_enabled(self, *_) -> None:
         count = len(self.selected_names())
         has_library = self.actions.library is not None
-        for action in (self.act_save, self.act_import, self.act_import_folder, self.act_export_all):
-            action.setEnabled(has_library)
-        for action in (self.act_open, self.act_rename, self.act_duplicate, self.act_export):
+        writable = has_library and self.actions.library.read_only is None    # type: ignore[union-attr]
+        for action in (self.act_save, self.act_import, self.act_import_folder):
+            action.setEnabled(writable)
+        self.act_export_all.setEnabled(has_library)
+        for action in (self.act_open, self.act_export):
             action.setEnabled(count == 1)
-        self.act_delete.setEnabled(count >= 1)
+        for action in (self.act_rename, self.act_duplicate):
+            action.setEnabled(count == 1 and writable)
+        self.act_delete.setEnabled(count >= 1 and writable)
         self.act_compare.setEnabled(2 <= count <= MAX_DESIGNS)
 
     # ---- actions ------------------------------------------------------------------------------

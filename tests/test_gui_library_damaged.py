@@ -98,3 +98,30 @@ def test_damaged_row_is_marked_in_the_pane(qtbot, tmp_path, monkeypatch):
     pane.actions.failed.connect(failures.append)
     assert not pane.actions.open_in_model("a") and "damaged" in failures[0]
     assert pane.actions.open_in_model("b")
+
+
+def test_read_only_library_in_the_pane(qtbot, tmp_path, monkeypatch):
+    """A read-only library is listed with the reason; the actions that change it are off,
+    and a change tried anyway is refused with a message, the file unchanged."""
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QMessageBox
+    from core import library_open
+    from shaperapp.library_pane import LibraryPane
+    from shaperapp.model import DesignModel
+    monkeypatch.setenv("SHAPER_LIBRARY", str(tmp_path / "default.sqlite"))
+    shown = []
+    monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: shown.append(a[2]))
+    path = tmp_path / "lib.sqlite"
+    make_library(path)
+    before = path.read_bytes()
+    monkeypatch.setattr(library_open, "unwritable", lambda p: "simulated: root is not stopped by modes")
+    pane = LibraryPane(DesignModel(), settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    qtbot.addWidget(pane)
+    assert pane.open_library(str(path))
+    pane.show()
+    assert "read-only: simulated" in pane.path_label.text()
+    pane.select_names(["a"])
+    assert not pane.act_save.isEnabled() and not pane.act_delete.isEnabled() and pane.act_open.isEnabled()
+    assert not pane.actions.delete(["a"])
+    assert shown and "can only be read" in shown[-1]
+    assert pane.actions.library.names() == ["a", "b"] and path.read_bytes() == before
