@@ -171,3 +171,15 @@ def test_read_only_folder_for_a_user(tmp_path):
         assert refused.value.kind == "readonly"
     finally:
         folder.chmod(0o755)
+
+
+def test_older_library_that_cannot_be_written_is_refused_unmigrated(tmp_path, monkeypatch):
+    path = tmp_path / "old.sqlite"
+    shutil.copy(FIXTURE_V1, path)
+    before = folder_state(tmp_path)
+    monkeypatch.setattr(library_open, "unwritable", lambda p: "its folder cannot be written (simulated)")
+    for _ in range(2):
+        with pytest.raises(LibraryError) as refused:
+            Library(path)
+        assert refused.value.kind == "readonly" and "must be upgraded" in str(refused.value)
+    assert folder_state(tmp_path) == before                # no migration, no schema1 copy
