@@ -7,16 +7,40 @@ previous version, replacing what must not be replaced or leaving litter.
 from __future__ import annotations
 
 import errno
+import hashlib
 import itertools
 import os
 import re
 import secrets
 import stat
+import time
 from typing import Iterable
 
 from .errors import WriteError
 
 _TEMP_SUFFIX = ".tmp"
+FIFO_WAIT_S = 10.0           # how long a FIFO given as output waits for a reader
+NAME_MAX = 255               # bytes in one file name on nearly every file system
+# what a temporary name adds to the target's name: "." before, ".<pid>-<8 hex>.tmp" after
+_TEMP_ROOM = 1 + len(f".{2 ** 32}-{'0' * 8}{_TEMP_SUFFIX}")
+
+
+def fit_name(name: str, room: int) -> str:
+    """``name`` if it leaves ``room`` bytes of a file name free, else its first bytes (cut at
+    a character) and ``~`` with 8 hex digits of its hash, so that names built from a long
+    name (temporary files, copies) stay within ``NAME_MAX`` bytes and stay distinct."""
+    raw = os.fsencode(name)
+    limit = NAME_MAX - room
+    if len(raw) <= limit:
+        return name
+    cut = raw[:limit - 9]
+    for _ in range(3):                      # not in the middle of a UTF-8 character
+        try:
+            cut.decode("utf-8")
+            break
+        except UnicodeDecodeError:
+            cut = cut[:-1]
+    return os.fsdecode(cut) + "~" + hashlib.sha256(raw).hexdigest()[:8]
 
 
 def atomic_write(path: str | os.PathLike, text: str | bytes | Iterable[str] | Iterable[bytes]) -> None:
@@ -25,13 +49,16 @@ def atomic_write(path: str | os.PathLike, text: str | bytes | Iterable[str] | It
     one, never a mixture.
 
     - A regular file (or a new one) is written to a temporary sibling
-      ``.NAME.<pid>-<8 hex>.tmp``, flushed and fsynced, renamed over the
-      target, and the folder is fsynced. The new file keeps the permission
+      ``.NAME.<pid>-<8 hex>.tmp`` (a NAME too long for that is cut, see
+      :func:`fit_name`, so any name the file system takes can be written),
+      flushed and fsynced, renamed over the target, and the folder is fsynced. The new file keeps the permission
       bits (and, where allowed, the owner) of the file it replaces; a new file
       gets the mode the umask gives (0644 under umask 022).
     - A symbolic link is followed: its target is replaced, the link stays.
     - A target that is not a regular file (FIFO, device, ``/dev/stdout`` and
-      anything else under ``/proc``) is written to directly, never replaced.
+      anything else under ``/proc``) is written to directly, never replaced. A FIFO
+      that no program opens for reading within ``FIFO_WAIT_S`` seconds is given up
+      (WriteError) instead of waiting for ever.
     - On every failure the temporary file is removed. Before writing, temporary
       siblings left by a process that no longer runs (killed mid-save) are
       removed too, so they never accumulate.
@@ -73,17 +100,48 @@ def _open_pieces(fd_or_path, pieces: Iterable[str] | Iterable[bytes], mode: str)
 
 
 def _write_in_place(path: str | os.PathLike, pieces: Iterable[str] | Iterable[bytes]) -> None:
-    handle, pieces = _open_pieces(path, pieces, "w")
+    handle, pieces = _open_pieces(_open_fifo(path) if _is_fifo(path) else path, pieces, "w")
     with handle:
         for piece in pieces:
             handle.write(piece)
+
+
+def _is_fifo(path: str | os.PathLike) -> bool:
+    try:
+        return stat.S_ISFIFO(os.stat(path).st_mode)
+    except OSError:
+        return False
+
+
+def _open_fifo(path: str | os.PathLike) -> int:
+    """A FIFO opened for writing once a reader opens it, waiting at most ``FIFO_WAIT_S``.
+
+    A plain open would wait for a reader for ever; a non-blocking one fails at once
+    (ENXIO) while there is none, so it is retried until the deadline. The descriptor is
+    then made blocking again: a reader that reads slowly is waited for as usual.
+    """
+    deadline = time.monotonic() + FIFO_WAIT_S
+    while True:
+        try:
+            fd = os.open(path, os.O_WRONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+            break
+        except OSError as exc:
+            if exc.errno != errno.ENXIO:
+                raise
+            if time.monotonic() >= deadline:
+                raise OSError(errno.ENXIO, f"it is a pipe that no program opened for reading within "
+                              f"{FIFO_WAIT_S:g} s") from None
+            time.sleep(0.02)
+    os.set_blocking(fd, True)
+    return fd
 
 
 def _write_and_replace(target: str, pieces: Iterable[str] | Iterable[bytes], old: os.stat_result | None) -> None:
     directory, name = os.path.split(target)
     directory = directory or "."
     remove_stale_temps(target)
-    tmp = os.path.join(directory, f".{name}.{os.getpid()}-{secrets.token_hex(4)}{_TEMP_SUFFIX}")
+    tmp = os.path.join(directory, f".{fit_name(name, _TEMP_ROOM)}.{os.getpid()}-{secrets.token_hex(4)}"
+                                  f"{_TEMP_SUFFIX}")
     # A new file gets 0666 less the umask; a replacement starts private, then takes the old mode.
     fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0),
                  0o666 if old is None else 0o600)
@@ -146,7 +204,7 @@ def _descriptor_alias(path: str | os.PathLike) -> bool:
 
 def temp_pattern(target: str | os.PathLike) -> re.Pattern[str]:
     """The names :func:`atomic_write` gives its temporary siblings of ``target``."""
-    name = os.path.basename(os.fspath(target))
+    name = fit_name(os.path.basename(os.fspath(target)), _TEMP_ROOM)
     return re.compile(rf"\.{re.escape(name)}\.(\d+)-[0-9a-f]{{8}}{re.escape(_TEMP_SUFFIX)}\Z")
 
 
@@ -158,7 +216,7 @@ def remove_stale_temps(target: str | os.PathLike) -> list[str]:
         return []
     directory = os.path.dirname(os.fspath(target)) or "."
     pattern = temp_pattern(target)
-    prefix = "." + os.path.basename(os.fspath(target)) + "."
+    prefix = "." + fit_name(os.path.basename(os.fspath(target)), _TEMP_ROOM) + "."
     removed = []
     try:
         entries = [e for e in os.scandir(directory) if e.name.startswith(prefix)]

@@ -7,12 +7,13 @@ included), and the key figures of :mod:`core.figures` — the design's in the
 sorted without recomputing anything. Documents read back are validated by the
 same rules as a design file (:func:`core.io.parse_design`).
 
-Opening, checks, schema and transactions are in :mod:`core.library_store`;
-the filter syntax is in :mod:`core.library_query`.
+An entry and its document are in :mod:`core.library_entry`; opening and its
+checks in :mod:`core.library_open`; schema and transactions in
+:mod:`core.library_store`; rows read with their types checked in
+:mod:`core.library_rows`; the filter syntax in :mod:`core.library_query`.
 """
 from __future__ import annotations
 
-import json
 import os
 import sqlite3
 from dataclasses import dataclass, fields
@@ -21,19 +22,35 @@ from typing import Any, Callable, Iterable, Sequence
 
 from .errors import DesignError, FileFormatError
 from .figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
-from .io import atomic_write, design_document, masses_to_dict, parse_design
+from .io import atomic_write
+from .library_entry import Entry, check_document, document_text
 from .library_names import check_name, check_tags, unique_name
+from .library_rows import clean_row, damaged_entries, read_lenient, unfit_sql
 from .library_query import Condition, condition_sql, parse_filter, search_sql, sort_sql
-from .library_store import (LibraryError, backup_target, connect, default_path, resolve_path,
+from .library_open import connect
+from .library_store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
                             snapshot, sqlite_error, transaction, utc_now)
 
-_PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
 _ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS \
     + ("figures_version",)
 _SPEED_COLUMNS = ("rpm",) + SPEED_KEYS
-LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS       # the columns of :meth:`Library.query_rows`
+# the columns of :meth:`Library.query_rows`; ``damaged`` is None, or why the row's values
+# could not all be read (those are None; see :mod:`core.library_rows`)
+LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS + ("damaged",)
+_LIST_NULLABLE = frozenset(_SPEED_COLUMNS)      # a design without the speed asked for
+_LIST_KEYS = ("id",) + _ENTRY_COLUMNS + _SPEED_COLUMNS
+_LIST_EXPRESSIONS = [f"e.{c}" for c in _LIST_KEYS[:-len(_SPEED_COLUMNS)]] + [f"s.{c}" for c in _SPEED_COLUMNS]
+# a flag (SQLite checks every value's type in C), the id, the columns
+_LIST_SELECT = ", ".join([unfit_sql(zip(_LIST_EXPRESSIONS, _LIST_KEYS), _LIST_NULLABLE)] + _LIST_EXPRESSIONS)
 
 
+def _cleaned(row: tuple) -> tuple:
+    """A list row SQLite flagged (or one read with bytes for bad texts), cleaned in Python."""
+    values, reason = clean_row(_LIST_KEYS, row[1:], _LIST_NULLABLE)
+    return tuple(values[1:]) + (reason,)
+
+
+_MAX_ROWS = 2 ** 62     # SQLite's LIMIT is a 64-bit integer; more rows than that is "all"
 REFRESH_BATCH = 64      # entries written per transaction by ``refresh_figures``
 
 
@@ -46,50 +63,14 @@ class RefreshReport:
     skipped: tuple[str, ...]                # removed or re-saved by another program meanwhile
 
 
-@dataclass(frozen=True)
-class Entry:
-    """One library entry: what it is called, when, the document text and its figures."""
-
-    name: str
-    notes: str
-    tags: tuple[str, ...]
-    created: str          # UTC ISO 8601
-    modified: str         # UTC ISO 8601
-    text: str             # the design document as JSON, the text of a design file
-    figures: Figures
-    figures_version: int = FIGURES_VERSION   # the computation the figures come from
-
-    @property
-    def figures_current(self) -> bool:
-        """False when an older program computed the figures (see ``refresh_figures``)."""
-        return self.figures_version >= FIGURES_VERSION
-
-    def document(self) -> dict[str, Any]:
-        """The validated design (keys of ``core.io.load_design``); FileFormatError if bad."""
-        return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}")
-
-
-def document_text(loaded: dict[str, Any]) -> str:
-    """A loaded design (``load_design``'s dict) as the JSON text of a design file."""
-    masses = loaded.get("masses")
-    extra: dict[str, Any] = {}
-    for key, value in loaded.items():              # keep the file's key order
-        if key == "forces" and masses is not None:
-            extra["forces"] = masses_to_dict(masses)
-        elif key not in _PARSED_KEYS:
-            extra[key] = value
-    if masses is not None and "forces" not in extra:
-        extra["forces"] = masses_to_dict(masses)
-    doc = design_document(loaded["spec"], loaded["rpm"], loaded["step_deg"], extra)
-    return json.dumps(doc, indent=2, ensure_ascii=False)
-
-
 class Library:
     """A checked, open library. Use as a context manager or call :meth:`close`."""
 
     def __init__(self, path: str | os.PathLike | None = None, create: bool = True) -> None:
         self.path = resolve_path(path)
-        self._conn = connect(self.path, create=create, make_dirs=self.path == default_path())
+        opened = connect(self.path, create=create, make_dirs=self.path == default_path())
+        self._conn = opened.conn
+        self.read_only: str | None = opened.read_only    # why it cannot be written, if so
 
     def close(self) -> None:
         self._conn.close()
@@ -104,15 +85,23 @@ class Library:
         """Changes whenever another connection commits (cheap to poll)."""
         return self._read(lambda c: c.execute("PRAGMA data_version").fetchone()[0])
 
+    def _transaction(self):
+        """One write transaction; refused at once, in one line, if the library is read-only."""
+        if self.read_only is not None:
+            raise LibraryError("readonly", f"the library {self.path} can only be read: {self.read_only}; "
+                               "nothing was changed", self.path)
+        return transaction(self._conn, self.path)
+
     # ---- reading --------------------------------------------------------------
     def _read(self, work):
         try:
-            return work(self._conn)
+            return read_lenient(self._conn, work)
         except sqlite3.Error as exc:
             raise sqlite_error(exc, self.path) from None
 
     def names(self) -> list[str]:
-        return self._read(lambda c: [r[0] for r in c.execute("SELECT name FROM entries ORDER BY name")])
+        return self._read(lambda c: [r[0] for r in c.execute("SELECT name FROM entries ORDER BY name")
+                                     if isinstance(r[0], str)])
 
     def count(self) -> int:
         return self._read(lambda c: c.execute("SELECT count(*) FROM entries").fetchone()[0])
@@ -122,24 +111,35 @@ class Library:
                           .fetchone() is not None)
 
     def get(self, name: str) -> Entry:
-        """The entry called ``name``; LibraryError('missing') if there is none."""
+        """The entry called ``name``; LibraryError('missing') if there is none, ('entry') if a
+        stored value of it is unusable (see :mod:`core.library_rows`)."""
         def work(c: sqlite3.Connection) -> Entry:
-            row = c.execute(f"SELECT id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
-                            "JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
+            row = c.execute(f"SELECT e.id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
+                            "LEFT JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
             if row is None:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
-            values = dict(zip(_ENTRY_COLUMNS, row[1:-1]))
-            speeds = tuple(SpeedFigures(**dict(zip(_SPEED_COLUMNS, r))) for r in c.execute(
-                f"SELECT {', '.join(_SPEED_COLUMNS)} FROM speeds WHERE entry_id = ? ORDER BY pos",
-                (row[0],)))
-            tags = tuple(r[0] for r in c.execute("SELECT tag FROM tags WHERE entry_id = ? ORDER BY tag",
-                                                 (row[0],)))
-            figs = Figures(**{f.name: values[f.name] for f in fields(Figures) if f.name != "speeds"},
-                           speeds=speeds)
-            return Entry(name=values["name"], notes=values["notes"], tags=tags,
-                         created=values["created"], modified=values["modified"], text=row[-1],
-                         figures=figs, figures_version=values["figures_version"])
+            values, reason = clean_row(("id",) + _ENTRY_COLUMNS + ("text",), row)
+            speeds = []
+            for r in c.execute(f"SELECT {', '.join(_SPEED_COLUMNS)} FROM speeds WHERE entry_id = ? "
+                               "ORDER BY pos", (row[0],)):
+                clean, why = clean_row(_SPEED_COLUMNS, r)
+                reason = reason or why
+                speeds.append(SpeedFigures(**dict(zip(_SPEED_COLUMNS, clean))))
+            tags = []
+            for r in c.execute("SELECT tag FROM tags WHERE entry_id = ? ORDER BY tag", (row[0],)):
+                clean, why = clean_row(("tag",), r)
+                reason = reason or why
+                tags.append(clean[0])
+            if reason is not None:
+                raise LibraryError("entry", f"the design {name!r} in the library is damaged ({reason}); "
+                                   "'shaper library check' lists every damaged design", self.path)
+            v = dict(zip(("id",) + _ENTRY_COLUMNS + ("text",), values))
+            figs = Figures(**{f.name: v[f.name] for f in fields(Figures) if f.name != "speeds"},
+                           speeds=tuple(speeds))
+            return Entry(name=v["name"], notes=v["notes"], tags=tuple(tags), created=v["created"],
+                         modified=v["modified"], text=v["text"], figures=figs,
+                         figures_version=v["figures_version"])
         return self._read(work)
 
     def load(self, name: str) -> dict[str, Any]:
@@ -153,7 +153,8 @@ class Library:
 
         Per-speed figures are those at ``rpm`` (None where the design lacks that speed),
         or at each design's first speed when ``rpm`` is None. ``tags`` is comma-joined.
-        ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
+        A row whose stored values cannot all be read has those as None and says why in
+        ``damaged``. ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
         top rows while sorting, which is what makes a page fast).
         """
         conditions = parse_filter(where) if isinstance(where, str) else list(where)
@@ -172,11 +173,16 @@ class Library:
             clauses.append(sql)
             params += values
         where_sql = ("WHERE " + " AND ".join(clauses)) if clauses else ""
-        limit_sql = f"LIMIT {int(limit)} OFFSET {max(int(offset), 0)}" if limit is not None else ""
-        columns = ", ".join([f"e.{c}" for c in LIST_COLUMNS[:-len(_SPEED_COLUMNS)]]
-                            + [f"s.{c}" for c in _SPEED_COLUMNS])
-        sql = f"SELECT {columns} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
-        return LIST_COLUMNS, self._read(lambda c: c.execute(sql, params).fetchall())
+        limit_sql = (f"LIMIT {min(int(limit), _MAX_ROWS)} OFFSET {min(max(int(offset), 0), _MAX_ROWS)}"
+                     if limit is not None else "")
+        sql = f"SELECT {_LIST_SELECT} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
+
+        def work(c: sqlite3.Connection) -> list[tuple]:
+            rows = c.execute(sql, params).fetchall()
+            every = c.text_factory is not str       # texts that are not UTF-8 came as bytes
+            return [row[2:] + (None,) if not (row[0] or every) else _cleaned(row) for row in rows]
+        return LIST_COLUMNS, self._read(work)
+        return LIST_COLUMNS, rows
 
     def query(self, *args: Any, **kwargs: Any) -> list[dict[str, Any]]:
         """:meth:`query_rows` as JSON-ready dicts (``tags`` a list)."""
@@ -197,7 +203,7 @@ class Library:
         the entry's created time. The figures are computed before the write starts.
         """
         entry = self.make_entry(name, loaded, notes, tags)
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             row = c.execute("SELECT id, created FROM entries WHERE name = ?", (entry.name,)).fetchone()
             if row is not None:
                 if not replace:
@@ -226,7 +232,7 @@ class Library:
         Every edit is such a swap of whole entries, so an edit and its undo are both
         one call (LibraryError 'missing'/'exists' if the library changed meanwhile).
         """
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             for name in remove:
                 if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
                     raise LibraryError("missing", f"there is no design named {name!r} in the library",
@@ -243,7 +249,7 @@ class Library:
     def remove(self, name: str) -> Entry:
         """Delete ``name``; returns the entry so it can be restored."""
         entry = self.get(name)
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
@@ -251,7 +257,7 @@ class Library:
 
     def rename(self, old: str, new: str) -> None:
         new = check_name(new)
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             if new != old and c.execute("SELECT 1 FROM entries WHERE name = ?", (new,)).fetchone():
                 raise self._exists(new)
             if c.execute("UPDATE entries SET name = ?, modified = ? WHERE name = ?",
@@ -273,7 +279,7 @@ class Library:
         changed = Entry(**{**entry.__dict__, "modified": utc_now(),
                            "notes": entry.notes if notes is None else str(notes),
                            "tags": entry.tags if tags is None else check_tags(tags)})
-        with transaction(self._conn, self.path) as c:
+        with self._transaction() as c:
             if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
@@ -290,6 +296,12 @@ class Library:
         by default beside the library as ``NAME.backup-TIME``."""
         target = backup_target(self.path) if target is None else target
         return snapshot(self._conn, target, self.path)
+
+    def damaged(self) -> list[tuple[str, str]]:
+        """(entry, why) for each entry that cannot be shown or opened, and SQLite's own
+        findings (``PRAGMA integrity_check``) as ('file', why): ``shaper library check``."""
+        found = [("file", line) for line in self._read(integrity_problems)]
+        return found + self._read(lambda c: list(damaged_entries(c, check_document)))
 
     # ---- figures an older program computed -------------------------------------------
     def stale_names(self) -> list[str]:
@@ -322,14 +334,17 @@ class Library:
                     doc = entry.document()
                     batch.append((entry, figures(doc["spec"], doc["rpm"], doc.get("masses"))))
                 except LibraryError as exc:
-                    if exc.kind != "missing":
+                    if exc.kind == "entry":               # a damaged entry: reported, left alone
+                        failed.append((name, str(exc)))
+                    elif exc.kind == "missing":
+                        skipped.append(name)
+                    else:
                         raise
-                    skipped.append(name)
                 except (DesignError, FileFormatError, ArithmeticError, ValueError, RuntimeError) as exc:
                     failed.append((name, str(exc)))
                 if progress is not None:
                     progress(i, len(todo))
-            with transaction(self._conn, self.path) as c:
+            with self._transaction() as c:
                 for entry, figs in batch:
                     row = c.execute("SELECT e.id FROM entries e JOIN documents d ON d.entry_id = e.id "
                                     "WHERE e.name = ? AND d.text = ?", (entry.name, entry.text)).fetchone()

@@ -17,6 +17,16 @@ MAX_TAG = 64
 _CONTROL = re.compile(r"[\x00-\x1f\x7f]")
 
 
+def storable(text: str) -> bool:
+    """Whether ``text`` can be stored as UTF-8: bytes that are not UTF-8 on a command line
+    reach Python as lone surrogates, which no UTF-8 text (and no SQLite text) can hold."""
+    try:
+        text.encode("utf-8")
+        return True
+    except UnicodeEncodeError:
+        return False
+
+
 def check_name(name: object) -> str:
     """A usable entry name (stripped), or LibraryError('name')."""
     if not isinstance(name, str) or not name.strip():
@@ -53,16 +63,29 @@ def unique_name(base: str, taken: Iterable[str]) -> str:
     return f"{base} ({n})"
 
 
+def shown_file_name(path: str | os.PathLike) -> str:
+    """A file's name as text that can be stored: bytes that are not UTF-8 become �."""
+    return os.fsencode(Path(path).name).decode("utf-8", "replace")
+
+
 def file_stem(path: str | os.PathLike) -> str:
     """The entry name a design file gets on import: its name without ``.shaper.json``/``.json``."""
-    name = Path(path).name
+    name = shown_file_name(path)
     for suffix in (".shaper.json", ".json"):
         if name.lower().endswith(suffix) and len(name) > len(suffix):
             return name[:-len(suffix)]
     return name
 
 
+MAX_STEM_BYTES = 200     # an exported file's name without ``.shaper.json`` and `` (N)``
+
+
 def safe_file_name(name: str) -> str:
-    """An entry name usable as a file name on every system (for exporting a whole library)."""
+    """An entry name usable as a file name on every system (for exporting a whole library).
+
+    Cut to ``MAX_STEM_BYTES`` bytes of UTF-8, not characters: file systems count bytes
+    (255 at most), and 120 Chinese characters are already 360 bytes.
+    """
     cleaned = re.sub(r'[<>:"/\\|?*\x00-\x1f\x7f]', "_", name).strip(" .")
-    return (cleaned or "design")[:120]
+    cut = cleaned.encode("utf-8", "replace")[:MAX_STEM_BYTES].decode("utf-8", "ignore").rstrip(" .")
+    return cut or "design"

@@ -60,11 +60,16 @@ class Condition:
     value: str | float
 
 
+def _shown(text: str) -> str:
+    """A value as a message quotes it: at most 40 characters (a pasted megabyte stays out)."""
+    return repr(text if len(text) <= 40 else text[:37] + "...")
+
+
 def field_key(name: str) -> str:
     """The canonical key of a field name or alias; QueryError if unknown."""
     key = ALIASES.get(name.strip().lower())
     if key is None:
-        raise QueryError(f"unknown field {name!r}; use one of: {', '.join(sorted(FIELDS))} "
+        raise QueryError(f"unknown field {_shown(name)}; use one of: {', '.join(sorted(FIELDS))} "
                          "(or a short name such as K, H, L1, theta, a_max, J_F)")
     return key
 
@@ -78,7 +83,7 @@ def parse_filter(text: str) -> list[Condition]:
             break
         match = _CONDITION.match(text, pos)
         if match is None:
-            raise QueryError(f"cannot read the condition at {text[pos:].strip()!r}; write FIELD OP VALUE "
+            raise QueryError(f"cannot read the condition at {_shown(text[pos:].strip())}; write FIELD OP VALUE "
                              f"with OP one of {' '.join(OPERATORS)}")
         key = field_key(match.group(1))
         op = match.group(2)
@@ -101,11 +106,11 @@ def _value(text: str, pos: int) -> tuple[str, int]:
                 rest = text[i + 1:]
                 stripped = rest.lstrip()
                 if stripped and not stripped.startswith(","):
-                    raise QueryError(f"expected ',' after the quoted value \"{''.join(out)}\"")
+                    raise QueryError(f"expected ',' after the quoted value {_shown(''.join(out))}")
                 return "".join(out), len(text) - len(stripped) + (1 if stripped else 0)
             out.append(ch)
             i += 1
-        raise QueryError(f"the quoted value starting at {text[pos:]!r} has no closing quote")
+        raise QueryError(f"the quoted value starting at {_shown(text[pos:])} has no closing quote")
     end = text.find(",", pos)
     end = len(text) if end < 0 else end
     return text[pos:end].strip(), end + 1
@@ -119,9 +124,9 @@ def _condition(key: str, op: str, raw: str) -> Condition:
         try:
             value = float(raw)
         except ValueError:
-            raise QueryError(f"{key}: {raw!r} is not a number") from None
+            raise QueryError(f"{key}: {_shown(raw)} is not a number") from None
         if value != value or value in (float("inf"), float("-inf")):
-            raise QueryError(f"{key}: {raw!r} is not a finite number")
+            raise QueryError(f"{key}: {_shown(raw)} is not a finite number")
         return Condition(key, op, value)
     if kind == "tag" and op not in ("=", "!=", "~"):
         raise QueryError("tag: use tag=TEXT, tag!=TEXT or tag~TEXT")

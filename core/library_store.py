@@ -1,11 +1,9 @@
-"""Opening a design library safely: location, checks, schema and migrations.
+"""A design library's location, schema, migrations, transactions and copies.
 
-A library is one SQLite file in WAL mode. Before anything is written to an
-existing file it is checked: the SQLite header, that the file is ours
-(``PRAGMA application_id``), that its schema is not newer than this program
-(``PRAGMA user_version``) and that SQLite's ``quick_check`` passes. A file
-that fails any check is refused with :class:`LibraryError` and left exactly
-as it was; :func:`backup_copy` copies it aside byte for byte.
+A library is one SQLite file in WAL mode. Whether an existing file may be
+opened (and written) is decided before anything touches it, in
+:mod:`core.library_open`; a refused file is left exactly as it was, and
+:func:`backup_copy` copies it aside byte for byte.
 
 Every write is one ``BEGIN IMMEDIATE`` transaction, and a second process
 waits up to ``BUSY_TIMEOUT_S`` for the lock, so two programs can share one
@@ -21,6 +19,9 @@ from contextlib import contextmanager
 from datetime import datetime, timezone
 from pathlib import Path
 from typing import Callable, Iterator
+from urllib.parse import quote
+
+from .atomic import fit_name
 
 APP_NAME = "shaper-designer"
 FILE_NAME = "library.sqlite"
@@ -34,7 +35,8 @@ class LibraryError(Exception):
     """A library problem with a plain message. ``kind`` is one of ``damaged``,
     ``newer``, ``foreign``, ``io``, ``busy``, ``name``, ``tag``, ``exists``, ``missing``,
     ``location`` (the path is a folder, or its folder does not exist: the path is wrong,
-    not the disk)."""
+    not the disk), ``readonly`` (a write to a library opened read-only) or ``entry``
+    (one entry's stored values are unusable; the rest of the library is fine)."""
 
     def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None) -> None:
         super().__init__(message)
@@ -136,53 +138,7 @@ def schema_version() -> int:
     return len(MIGRATIONS)
 
 
-# ---- opening ------------------------------------------------------------------
-def connect(path: str | os.PathLike, create: bool = True, make_dirs: bool = False) -> sqlite3.Connection:
-    """Open, check and (for a new or older library) migrate the library at ``path``.
-
-    A missing file is created when ``create``; its folder too when ``make_dirs``
-    (the default location), otherwise a missing folder is an error.
-    """
-    path = Path(path)
-    exists = path.exists()
-    if not exists and not create:
-        raise LibraryError("missing", f"there is no design library at {path}", path)
-    if exists:
-        if path.is_dir():
-            raise LibraryError("location", f"{path} is a folder, not a library file", path)
-        check_regular(path)
-        _check_header(path)
-    elif not path.parent.exists():
-        if not make_dirs:
-            raise LibraryError("location", f"cannot create the library {path}: the folder "
-                               f"{path.parent} does not exist", path)
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise LibraryError("io", f"cannot create the folder {path.parent}: "
-                               f"{exc.strerror or exc}", path) from None
-    try:
-        conn = sqlite3.connect(str(path), timeout=BUSY_TIMEOUT_S, isolation_level=None)
-    except sqlite3.Error as exc:
-        raise LibraryError("io", f"cannot open the library {path}: {exc}", path) from None
-    try:
-        version = _check_contents(conn, path)
-        conn.execute(f"PRAGMA busy_timeout = {int(BUSY_TIMEOUT_S * 1000)}")
-        conn.execute("PRAGMA foreign_keys = ON")
-        conn.execute("PRAGMA synchronous = FULL")
-        if version < schema_version():
-            _migrate(conn, path, version)
-        if conn.execute("PRAGMA journal_mode").fetchone()[0].lower() != "wal":
-            conn.execute("PRAGMA journal_mode = WAL")
-    except LibraryError:
-        conn.close()
-        raise
-    except sqlite3.Error as exc:
-        conn.close()
-        raise sqlite_error(exc, path) from None
-    return conn
-
-
+# ---- opening (the decision is in core.library_open) ---------------------------
 def check_regular(path: Path) -> None:
     """A library is a regular file (a link to one is fine). A pipe would block the first
     read forever and a device is no database: both are refused before anything opens them."""
@@ -196,50 +152,26 @@ def check_regular(path: Path) -> None:
         raise LibraryError("location", f"{path} is {kind}, not a library file; it was left unchanged", path)
 
 
-def _check_header(path: Path) -> None:
+def integrity_problems(conn: sqlite3.Connection, limit: int = 20) -> list[str]:
+    """SQLite's full check of the file (every page, index and constraint): [] when sound."""
+    rows = [row[0] for row in conn.execute(f"PRAGMA integrity_check({int(limit)})")]
+    return [] if rows == ["ok"] else [" ".join(r.replace("*** in database main ***", "").split())
+                                      for r in rows]
+
+
+def migrate(conn: sqlite3.Connection, path: Path, version: int) -> None:
+    """Bring the schema up to date in one transaction; keep a copy of a non-empty library
+    first (removed again if the migration fails, so failed attempts leave no copies)."""
+    copy = snapshot(conn, backup_target(path, f"schema{version}"), path) if version > 0 else None
     try:
-        with open(path, "rb") as handle:
-            head = handle.read(len(SQLITE_HEADER))
-    except OSError as exc:
-        raise LibraryError("io", f"cannot read the library {path}: {exc.strerror or exc}", path) from None
-    if head and head != SQLITE_HEADER:
-        raise LibraryError("foreign" if len(head) == len(SQLITE_HEADER) else "damaged",
-                           f"{path} is not a Shaper Designer library (not an SQLite database); "
-                           "it was left unchanged", path)
+        _migrate_steps(conn, path)
+    except BaseException:
+        if copy is not None:
+            copy.unlink(missing_ok=True)
+        raise
 
 
-def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
-    """The schema version of a library we may use; refuses anything else, unchanged."""
-    try:
-        app_id = conn.execute("PRAGMA application_id").fetchone()[0]
-        version = conn.execute("PRAGMA user_version").fetchone()[0]
-        tables = conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]
-        check = [row[0] for row in conn.execute("PRAGMA quick_check(3)")]
-    except sqlite3.DatabaseError as exc:
-        text = str(exc)
-        if "locked" in text or "busy" in text:
-            raise sqlite_error(exc, path) from None
-        raise LibraryError("damaged", f"{path} is damaged ({text}); it was left unchanged", path) from None
-    if check != ["ok"]:
-        detail = " ".join("; ".join(check).replace("*** in database main ***", "").split())
-        raise LibraryError("damaged", f"{path} is damaged (SQLite's check: {detail[:200]}); "
-                           "it was left unchanged", path)
-    if app_id == 0 and version == 0 and tables == 0:
-        return 0                                  # a new, empty database
-    if app_id != APPLICATION_ID:
-        raise LibraryError("foreign", f"{path} is an SQLite database but not a Shaper Designer "
-                           "library; it was left unchanged", path)
-    if version > schema_version():
-        raise LibraryError("newer", f"{path} was written by a newer Shaper Designer (library schema "
-                           f"{version}; this version reads up to {schema_version()}); it was left "
-                           "unchanged — update Shaper Designer to use it", path)
-    return version
-
-
-def _migrate(conn: sqlite3.Connection, path: Path, version: int) -> None:
-    """Bring the schema up to date in one transaction; keep a copy of a non-empty library first."""
-    if version > 0:
-        snapshot(conn, backup_target(path, f"schema{version}"), path)
+def _migrate_steps(conn: sqlite3.Connection, path: Path) -> None:
     with transaction(conn, path):
         current = conn.execute("PRAGMA user_version").fetchone()[0]   # another process may have won
         if current > schema_version():
@@ -285,7 +217,17 @@ def sqlite_error(exc: sqlite3.Error, path: Path) -> LibraryError:
                             f"to it for more than {BUSY_TIMEOUT_S:g} s); try again", path)
     if isinstance(exc, sqlite3.DatabaseError) and ("malformed" in text or "not a database" in text):
         return LibraryError("damaged", f"{path} is damaged ({text}); it was left unchanged", path)
+    if "readonly" in text or "read-only" in text:
+        return LibraryError("readonly", f"the library {path} can only be read ({text}); "
+                            "nothing was changed", path)
     return LibraryError("io", f"cannot use the library {path}: {text}", path)
+
+
+def sqlite_uri(path: str | os.PathLike, query: str = "") -> str:
+    """``path`` as an SQLite URI (``uri=True``): any bytes a file name may hold (also those
+    that are not UTF-8) survive, and ``query`` (``mode=ro``…) can be added."""
+    uri = "file:" + quote(os.fsencode(os.path.abspath(path)))
+    return uri + ("?" + query if query else "")
 
 
 def utc_now() -> str:
@@ -318,10 +260,12 @@ def backup_copy(path: str | os.PathLike, target: str | os.PathLike | None = None
 def snapshot(conn: sqlite3.Connection, target: str | os.PathLike, path: str | os.PathLike) -> Path:
     """A consistent copy of the open library (SQLite's online backup), written atomically."""
     target = Path(target)
-    tmp = target.with_name(f".{target.name}.tmp")
+    tmp = target.with_name(f".{fit_name(target.name, 16)}.tmp")     # room for SQLite's -journal
     try:
+        if os.path.islink(target):
+            os.stat(target)             # a link loop or a link to nothing: not replaced by a file
         tmp.unlink(missing_ok=True)
-        dest = sqlite3.connect(str(tmp))
+        dest = sqlite3.connect(sqlite_uri(tmp), uri=True)
         try:
             conn.backup(dest)
         finally:
@@ -338,17 +282,18 @@ def backup_target(path: str | os.PathLike, label: str = "backup") -> Path:
     """A free file name beside ``path``: ``NAME.LABEL-YYYYMMDDTHHMMSSZ`` (``-2``… if taken)."""
     source = Path(path)
     stamp = datetime.now(timezone.utc).strftime("%Y%m%dT%H%M%SZ")
-    target = source.with_name(f"{source.name}.{label}-{stamp}")
+    base = fit_name(source.name, len(f".{label}-{stamp}-999"))      # within NAME_MAX bytes
+    target = source.with_name(f"{base}.{label}-{stamp}")
     n = 2
     while target.exists():
-        target = source.with_name(f"{source.name}.{label}-{stamp}-{n}")
+        target = source.with_name(f"{base}.{label}-{stamp}-{n}")
         n += 1
     return target
 
 
 def _copy_atomic(source: Path, target: Path) -> None:
     """Copy through a temporary file beside ``target``, synced, then renamed into place."""
-    tmp = target.with_name(f".{target.name}.tmp")
+    tmp = target.with_name(f".{fit_name(target.name, 5)}.tmp")
     try:
         shutil.copyfile(source, tmp)
         with open(tmp, "rb+") as handle:

@@ -1015,6 +1015,10 @@
         <translation>未打开设计库。</translation>
     </message>
     <message>
+        <source>These designs are damaged and were not exported:</source>
+        <translation>以下设计已损坏，未导出：</translation>
+    </message>
+    <message>
         <source>Could not write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -1055,6 +1059,14 @@
         <translation>%1 不是 Shaper Designer 设计库。文件未作任何改动。</translation>
     </message>
     <message>
+        <source>This design is damaged and cannot be opened; the rest of the library can be used. (%1)</source>
+        <translation>此设计已损坏，无法打开；设计库中的其他设计仍可使用。（%1）</translation>
+    </message>
+    <message>
+        <source>The library %1 can only be read (the file or its folder cannot be written); nothing was changed.</source>
+        <translation>设计库 %1 只能读取（文件或其所在文件夹不可写入），未作任何更改。</translation>
+    </message>
+    <message>
         <source>Could not use the library: %1</source>
         <translation>无法使用设计库：%1</translation>
     </message>
@@ -1083,6 +1095,10 @@
     <message>
         <source>No library is open.</source>
         <translation>未打开设计库。</translation>
+    </message>
+    <message>
+        <source>%1 (read-only: %2)</source>
+        <translation>%1（只读：%2）</translation>
     </message>
     <message>
         <source>Undo: %1</source>
@@ -1267,6 +1283,17 @@
     <message>
         <source>Crank speed of the speed-dependent columns, r/min</source>
         <translation>与转速有关的各列所用的曲柄转速，r/min</translation>
+    </message>
+</context>
+<context>
+    <name>LibraryTableModel</name>
+    <message>
+        <source>This design is damaged: %1. 'shaper library check' lists every damaged design.</source>
+        <translation>此设计已损坏：%1。“shaper library check”会列出所有损坏的设计。</translation>
+    </message>
+    <message>
+        <source>%1 (damaged)</source>
+        <translation>%1（已损坏）</translation>
     </message>
 </context>
 <context>

@@ -191,7 +191,13 @@ class LibraryActions(QObject):
         return self._export(lambda lib: lib.export(name, path), path)
 
     def export_all(self, folder: str) -> bool:
-        return self._export(lambda lib: export_entries(lib, folder), folder)
+        """Every design into ``folder``, all or nothing; damaged entries are left out and named."""
+        skipped: list[tuple[str, str]] = []
+        done = self._export(lambda lib: skipped.extend(export_entries(lib, folder).skipped), folder)
+        if done and skipped:
+            self.failed.emit(self.tr("These designs are damaged and were not exported:") + "\n"
+                             + "\n".join(f"{name}: {why}" for name, why in skipped[:20]))
+        return done
 
     def _export(self, work, path: str) -> bool:
         try:
@@ -256,6 +262,12 @@ class LibraryActions(QObject):
                              "left unchanged; update Shaper Designer to use it."),
             "foreign": self.tr("%1 is not a Shaper Designer library. It was left unchanged."),
         }
+        if error.kind == "entry":
+            return self.tr("This design is damaged and cannot be opened; the rest of the library "
+                           "can be used. (%1)").replace("%1", str(error))
+        if error.kind == "readonly":
+            return self.tr("The library %1 can only be read (the file or its folder cannot be "
+                           "written); nothing was changed.").replace("%1", path)
         text = texts.get(error.kind)
         if text is None:
             return self.tr("Could not use the library: %1").replace("%1", str(error))

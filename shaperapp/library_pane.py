@@ -145,6 +145,9 @@ class LibraryPane(QWidget):
         self.view.resizeColumnsToContents()
         self._version = library.data_version() if library is not None else -1
         self.path_label.setText(str(library.path) if library is not None else self.tr("No library is open."))
+        if library is not None and library.read_only is not None:
+            self.path_label.setText(self.tr("%1 (read-only: %2)").replace("%1", str(library.path))
+                                    .replace("%2", library.read_only))
         self.path_label.setToolTip(self.path_label.text())
         self.stale_bar.update_for(library)
         if library is not None:
@@ -202,11 +205,15 @@ class LibraryPane(QWidget):
     def _update_enabled(self, *_) -> None:
         count = len(self.selected_names())
         has_library = self.actions.library is not None
-        for action in (self.act_save, self.act_import, self.act_import_folder, self.act_export_all):
-            action.setEnabled(has_library)
-        for action in (self.act_open, self.act_rename, self.act_duplicate, self.act_export):
+        writable = has_library and self.actions.library.read_only is None    # type: ignore[union-attr]
+        for action in (self.act_save, self.act_import, self.act_import_folder):
+            action.setEnabled(writable)
+        self.act_export_all.setEnabled(has_library)
+        for action in (self.act_open, self.act_export):
             action.setEnabled(count == 1)
-        self.act_delete.setEnabled(count >= 1)
+        for action in (self.act_rename, self.act_duplicate):
+            action.setEnabled(count == 1 and writable)
+        self.act_delete.setEnabled(count >= 1 and writable)
         self.act_compare.setEnabled(2 <= count <= MAX_DESIGNS)
 
     # ---- actions ------------------------------------------------------------------------------

@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
+from PySide6.QtGui import QColor
 
 from core.library import LIST_COLUMNS, Library
 from core.library_query import QueryError
@@ -24,6 +25,7 @@ COLUMNS = ("name", "variant", "K", "stroke_mm", "theta_deg", "crank_mm", "frame_
            "v_return_max_m_s", "a_max_m_s2", "mean_torque_N_m", "max_torque_N_m",
            "flywheel_inertia_kg_m2", "tags", "notes", "modified")
 _INDEX = [LIST_COLUMNS.index(key) for key in COLUMNS]
+_DAMAGED = LIST_COLUMNS.index("damaged")
 _TEXT = {"name", "variant", "tags", "notes", "modified"}
 PAGE = 256
 
@@ -124,6 +126,10 @@ class LibraryTableModel(QAbstractTableModel):
     def value(self, row: int, key: str) -> Any:
         return self._rows[row][LIST_COLUMNS.index(key)]
 
+    def damaged_at(self, row: int) -> bool:
+        """Whether row ``row`` holds stored values that cannot be read (shown as —)."""
+        return self._rows[row][_DAMAGED] is not None
+
     # ---- Qt model -------------------------------------------------------------------
     def rowCount(self, parent: Index = QModelIndex()) -> int:
         return 0 if parent.isValid() else len(self._rows)
@@ -135,7 +141,16 @@ class LibraryTableModel(QAbstractTableModel):
         if not index.isValid():
             return None
         key = COLUMNS[index.column()]
-        value = self._rows[index.row()][_INDEX[index.column()]]
+        row = self._rows[index.row()]
+        value = row[_INDEX[index.column()]]
+        if row[_DAMAGED] is not None:               # a damaged entry: marked, its reason on hover
+            if role == Qt.ItemDataRole.ToolTipRole:
+                return self.tr("This design is damaged: %1. 'shaper library check' lists every "
+                               "damaged design.").replace("%1", row[_DAMAGED])
+            if role == Qt.ItemDataRole.ForegroundRole:
+                return QColor("#b00020")
+            if role == Qt.ItemDataRole.DisplayRole and key == "name":
+                return self.tr("%1 (damaged)").replace("%1", value or "—")
         if role == Qt.ItemDataRole.DisplayRole:
             if key in ("tags", "notes", "name", "modified"):
                 text = (value or "").replace(",", ", ") if key == "tags" else (value or "")

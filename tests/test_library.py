@@ -249,7 +249,7 @@ def test_import_and_export_folders(tmp_path, lib):
     assert lib.count() == len(SPECS) + 1
     out = tmp_path / "out"
     out.mkdir()
-    paths = export_entries(lib, out)
+    paths = export_entries(lib, out).paths
     assert len(paths) == lib.count()
     for path in paths:
         assert load_design(path)["spec"] in SPECS.values()
@@ -276,3 +276,40 @@ def test_missing_folder_is_not_created_for_an_explicit_path(tmp_path):
     with pytest.raises(LibraryError) as err:
         Library(tmp_path / "no" / "such" / "lib.sqlite")
     assert err.value.kind == "location" and not (tmp_path / "no").exists()
+
+
+@pytest.mark.parametrize("existing", [True, False], ids=["into a folder", "a new folder"])
+def test_export_all_is_all_or_nothing(lib, tmp_path, monkeypatch, existing):
+    """A failure part way (the third file cannot be moved in / written) leaves no exported
+    file, no temporary folder and, for a new folder, no folder."""
+    import os as os_module
+    import core.library_files as files
+    for name, spec in SPECS.items():
+        lib.add(name, loaded(spec))
+    out = tmp_path / "out"
+    if existing:
+        out.mkdir()
+        (out / "mine.txt").write_text("kept")
+    calls = []
+    real_rename, real_open = os_module.rename, open
+
+    def failing_rename(src, dst):
+        calls.append(dst)
+        if existing and len(calls) == 3:
+            raise OSError(28, "No space left on device")
+        return real_rename(src, dst)
+
+    def failing_open(path, *args, **kwargs):
+        if not existing and str(path).endswith("2.tmp"):
+            raise OSError(28, "No space left on device")
+        return real_open(path, *args, **kwargs)
+    monkeypatch.setattr(files.os, "rename", failing_rename)
+    monkeypatch.setattr(files, "open", failing_open, raising=False)
+    with pytest.raises(OSError):
+        export_entries(lib, out)
+    monkeypatch.undo()
+    left = sorted(p.name for p in tmp_path.iterdir() if p.name.startswith((".shaper-export", "out")))
+    assert left == (["out"] if existing else [])
+    if existing:
+        assert sorted(p.name for p in out.iterdir()) == ["mine.txt"]
+    assert len(export_entries(lib, out).paths) == len(SPECS)      # and it works once the disk does

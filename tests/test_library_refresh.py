@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 import core.library as library_module
+import core.library_entry as library_entry
 from cli_runner import shaper
 from core.dynamics import MassProperties
 from core.figures import FIGURES_VERSION, figures
@@ -73,6 +74,7 @@ def test_stale_entries_are_found_and_recomputed_and_nothing_else_changes(path):
 
 def test_a_newer_computation_makes_every_entry_stale(path, monkeypatch):
     monkeypatch.setattr(library_module, "FIGURES_VERSION", FIGURES_VERSION + 1)
+    monkeypatch.setattr(library_entry, "FIGURES_VERSION", FIGURES_VERSION + 1)   # Entry.figures_current
     with Library(path) as lib:
         assert lib.stale_names() == sorted(SPECS)
         assert not lib.get("K1.4").figures_current

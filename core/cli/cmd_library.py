@@ -1,7 +1,7 @@
 """``shaper library``: keep, find, export and compare designs in a design library.
 
 One subcommand with its own sub-subcommands (add, list, show, remove, rename,
-export, import, compare, backup, refresh); every one takes ``--library PATH`` (or
+export, import, compare, backup, refresh, check); every one takes ``--library PATH`` (or
 ``$SHAPER_LIBRARY``). The work is in ``core.library*`` and ``core.compare``;
 this module only parses, calls and prints.
 """
@@ -20,12 +20,16 @@ from ..figures import DESIGN_FIGURES, FIGURES_VERSION, SPEED_FIGURES
 from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library
 from ..library_files import export_entries, import_entries, read_design_files
+from ..library_names import storable
 from ..library_query import QueryError, parse_filter, sort_sql
+from ..library_open import library_exists
 from ..library_store import ENV_VAR, LibraryError, backup_copy
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
-                     add_speed_options, design_file, fail, library_path, masses_from_args, number,
+                     NOTES, add_speed_options, design_file, fail, library_path, masses_from_args, note_read_only,
+                     number, whole_number,
                      rpms_from_args, spec_from_args)
 from .cmd_library_compare import compare_options, run_compare
+from .cmd_library_check import check_options, run_check
 from .cmd_library_refresh import refresh_options, run_refresh
 from .output import OutputError, print_json
 
@@ -71,7 +75,7 @@ def _list_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--sort", metavar="FIELD", default="name", help="sort by a figure (default name)")
     p.add_argument("--desc", action="store_true", help="sort descending")
     p.add_argument("--rpm", metavar="RPM", help="show per-speed figures at this speed (default: each design's first)")
-    p.add_argument("--limit", metavar="N", type=int, help="show at most N entries")
+    p.add_argument("--limit", metavar="N", help="show at most N entries")
     p.add_argument("--json", action="store_true", help="print a JSON array")
 
 
@@ -114,14 +118,36 @@ def run(args: argparse.Namespace) -> int:
     if args.library_command is None:
         args._library_parser.print_help()
         return 0
+    NOTES.clear()
     try:
-        return ACTION_RUN[args.library_command](args)
+        _check_text(args)
+        status = ACTION_RUN[args.library_command](args)
+        for note in NOTES:
+            print(note, file=sys.stderr)
+        return status
     except LibraryError as exc:
         return _library_failure(args, exc)
     except QueryError as exc:
         return fail(f"--where: {exc}")
     except FileFormatError as exc:          # a design file given to add, or a damaged entry
         return fail(f"{'--design' if args.library_command == 'add' else 'NAME'}: {exc}")
+
+
+# text arguments stored in or matched against the library (paths are not: any bytes are a path)
+_TEXT_ARGUMENTS = (("name", "NAME"), ("new_name", "NEW_NAME"), ("names", "NAME"), ("notes", "--notes"),
+                   ("tags", "--tags"), ("where", "--where"), ("search", "--search"), ("sort", "--sort"))
+
+
+def _check_text(args: argparse.Namespace) -> None:
+    """Refuse text SQLite cannot store: bytes that are not UTF-8 in the command line reach
+    Python as lone surrogates, which no UTF-8 text can hold."""
+    for dest, option in _TEXT_ARGUMENTS:
+        value = getattr(args, dest, None)
+        for text in value if isinstance(value, list) else [value]:
+            if isinstance(text, str) and not storable(text):
+                shown = "--name" if (dest, args.library_command) == ("name", "add") else option
+                raise UsageError(f"{shown}: {text.encode('utf-8', 'replace').decode()!r} holds bytes "
+                                 "that are not UTF-8 text")
 
 
 # the argument a name problem is reported against, per action
@@ -141,6 +167,8 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
     if exc.kind in ("name", "exists"):
         hint = " (or use --rename-duplicates)" if action == "import" else ""
         return fail(f"{_NAME_ARGUMENT.get(action, name_option)}: {exc}{hint}")
+    if exc.kind == "entry":
+        return fail(f"{name_option}: {exc}")
     if exc.kind == "missing" and exc.path is not None and exc.path.exists():
         return fail(f"{name_option}: {exc} (see 'shaper library list')")
     source = "--library" if library else (f"--library (from ${ENV_VAR})" if os.environ.get(ENV_VAR)
@@ -151,8 +179,16 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
     return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
 
 
+_READING = ("list", "show", "export", "compare", "check", "backup")
+
+
 def _open(args: argparse.Namespace, create: bool = True) -> Library:
-    return Library(library_path(args.library), create=create)
+    """The library, checked; a read-only one gets a note on stderr when only read (a write
+    to it is refused in one line saying why)."""
+    lib = Library(library_path(args.library), create=create)
+    if args.library_command in _READING:
+        note_read_only(lib)
+    return lib
 
 
 def _run_add(args: argparse.Namespace) -> int:
@@ -175,25 +211,29 @@ def _run_add(args: argparse.Namespace) -> int:
 
 def _run_list(args: argparse.Namespace) -> int:
     rpm = number("rpm", args.rpm) if args.rpm is not None else None
-    if args.limit is not None and args.limit < 0:
-        raise UsageError("--limit: must be 0 or more")
+    limit = whole_number("--limit", args.limit) if args.limit is not None else None
     try:
         sort_sql(args.sort, args.desc)
     except QueryError as exc:
         raise UsageError(f"--sort: {exc}") from None
     parse_filter(args.where)                # a bad filter is reported even for an empty library
     path = library_path(args.library)
-    if not path.exists():                   # listing never creates a library
+    if not library_exists(path):            # listing never creates a library
         print("[]" if args.json else f"no designs in {path} (it does not exist yet)")
         return 0
     with _open(args, create=False) as lib:
         rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
-                         rpm=rpm, limit=args.limit)
-    stale = sum(1 for row in rows if row["figures_version"] < FIGURES_VERSION)
+                         rpm=rpm, limit=limit)
+    stale = sum(1 for row in rows if row["figures_version"] is not None
+                and row["figures_version"] < FIGURES_VERSION)
     if stale:
         print(f"shaper: note: {stale} of the {len(rows)} designs listed "
               f"{'has' if stale == 1 else 'have'} figures an older version computed; "
               "'shaper library refresh' recomputes them", file=sys.stderr)
+    damaged = sum(1 for row in rows if row["damaged"])
+    if damaged:
+        print(f"shaper: note: {damaged} of the {len(rows)} designs listed {'is' if damaged == 1 else 'are'} "
+              "damaged (what cannot be read shows as —); 'shaper library check' says why", file=sys.stderr)
     if args.json:
         print_json(rows)
         return 0
@@ -204,6 +244,8 @@ def _run_list(args: argparse.Namespace) -> int:
     for row in rows:
         cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else str(row[key])
                       for _, key, fmt in LIST_COLUMNS])
+        if row["damaged"]:
+            cells[-1][0] += " (damaged)"
     widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
     for r in cells:
         print("  ".join(c.ljust(w) if i in (0, 1, len(r) - 1) else c.rjust(w)
@@ -266,9 +308,10 @@ def _run_export(args: argparse.Namespace) -> int:
     with _open(args, create=False) as lib:
         try:
             if args.all:
-                os.makedirs(args.output, exist_ok=True)
-                paths = export_entries(lib, args.output)
-                print(f"exported {len(paths)} designs to {args.output}")
+                done = export_entries(lib, args.output)
+                for name, why in done.skipped:
+                    print(f"shaper: skipped {name!r}: {why}", file=sys.stderr)
+                print(f"exported {len(done.paths)} designs to {args.output}")
             else:
                 lib.export(args.name, args.output)
         except OSError as exc:
@@ -292,7 +335,7 @@ def _run_import(args: argparse.Namespace) -> int:
 
 def _run_backup(args: argparse.Namespace) -> int:
     path = library_path(args.library)
-    if not path.exists():
+    if not library_exists(path):
         raise LibraryError("missing", f"there is no design library at {path}", path)
     if args.output is not None:
         out = Path(args.output)
@@ -337,7 +380,9 @@ ACTIONS = (
     ("compare", "compare 2 to 6 designs at one speed: figure table and curves", compare_options),
     ("backup", "copy the library file (also one that cannot be opened)", _backup_options),
     ("refresh", "recompute the figures an older version of the program stored", refresh_options),
+    ("check", "list the designs whose stored values are damaged (exit 1 if any)", check_options),
 )
 ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
-              "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh}
+              "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh,
+              "check": lambda args: run_check(args, _open(args, create=False))}

@@ -13,7 +13,7 @@ from ..errors import DesignError, FileFormatError
 from ..io import load_design
 from ..library import Library
 from ..library_names import file_stem, unique_name
-from .common import UsageError, library_path, number
+from .common import UsageError, library_path, note_read_only, number
 from .output import write_output
 
 
@@ -41,6 +41,7 @@ def load_candidates(library: str | None, names: Sequence[str], files: Sequence[s
     first_rpm = None
     if names:
         with Library(library_path(library), create=False) as lib:
+            note_read_only(lib)
             for name in names:
                 doc = lib.load(name)
                 first_rpm = first_rpm or doc["rpm"][0]

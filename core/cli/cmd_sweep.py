@@ -5,7 +5,7 @@ import argparse
 import json
 import math
 import sys
-from typing import Any, Callable
+from typing import Any, Callable, Iterator
 
 import numpy as np
 
@@ -41,7 +41,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out.add_argument("--json", action="store_true", help="print JSON, one object per design")
 
 
-BLOCK = 50_000          # designs evaluated and formatted at a time
+BLOCK = 50_000          # designs evaluated and formatted at a time, at most
+BLOCK_CELLS = 400_000   # output cells (designs × columns) formatted at a time, at most
+
+
+def block_size(names: list[str], rpms, masses) -> int:
+    """Designs per block: ``BLOCK``, fewer when many speeds make many columns, so that the
+    text of a block (a Python string per cell while it is formatted) stays a few tens of MB."""
+    per_speed = 3 + (3 if masses is not None else 0)
+    columns = len(names) + 6 + per_speed * max(len(list(rpms)), 1)
+    return min(BLOCK, max(1_000, BLOCK_CELLS // columns))
 
 
 def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tuple]:
@@ -183,24 +192,28 @@ def run(args: argparse.Namespace) -> int:
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
     names = list(varied)
     option = lambda parameter: spec_option(parameter, spec, args)  # noqa: E731
-    size = next(iter(values.values())).size
-    target = args.csv or "-"
-    pieces: list[str] = []
-    for start in range(0, size, BLOCK):      # blocks bound the memory of a large sweep
-        block = {k: v[start:start + BLOCK] for k, v in values.items()}
-        ev = evaluate(spec, block, rpms, masses)
-        if args.json:                        # JSON goes to stdout block by block
-            sys.stdout.write(("[\n" if start == 0 else ",\n") + ",\n".join(json_rows(names, block, ev, option)))
-            continue
-        text = (csv_header(names, ev) if start == 0 else "") + csv_rows(names, block, ev, option)
-        if target == "-":                    # stdout: block by block too
-            sys.stdout.write(text)
-        else:                                # a file: written whole, atomically
-            pieces.append(text)
-    if args.json:
-        sys.stdout.write("\n]\n")
-    elif target != "-":
-        write_output("--csv", target, "".join(pieces))
+    pieces = _pieces(spec, values, names, rpms, masses, as_json=args.json, option=option)
+    if args.json:                           # JSON goes to stdout block by block
+        for piece in pieces:
+            sys.stdout.write(piece)
+    else:                                   # CSV: stdout, or a file written as it streams
+        write_output("--csv", args.csv or "-", pieces)
     return 0
 
 
+def _pieces(spec: Spec, values: dict[str, np.ndarray], names: list[str], rpms, masses,
+            as_json: bool, option: Callable[[str], str] = option_name) -> Iterator[str]:
+    """The output text, one block of designs at a time (:func:`block_size`): memory is bounded
+    by the block (its figures and its text), not by the number of designs or speeds."""
+    size = next(iter(values.values())).size
+    step = block_size(names, rpms, masses)
+    for start in range(0, size, step):
+        block = {k: v[start:start + step] for k, v in values.items()}
+        ev = evaluate(spec, block, rpms, masses)
+        if as_json:
+            yield ("[\n" if start == 0 else ",\n") + ",\n".join(json_rows(names, block, ev, option))
+        else:
+            yield (csv_header(names, ev) if start == 0 else "") + csv_rows(names, block, ev, option)
+        del ev
+    if as_json:
+        yield "\n]\n"

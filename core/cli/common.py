@@ -373,3 +373,27 @@ def library_path(library: str | None) -> Path:
     if library is not None and not library.strip():
         raise UsageError("--library: the path is empty")
     return resolve_path(library)
+
+
+NOTES: list[str] = []      # notes printed on stderr once a command has succeeded
+
+
+def note_read_only(library) -> None:
+    """A note for when a library (``core.library.Library``) could only be opened for
+    reading, printed if the command succeeds (a failure stays one line); a write to it
+    is refused in one line saying why."""
+    if library.read_only is not None:
+        NOTES.append(f"shaper: note: {library.path} is opened read-only: {library.read_only}")
+
+
+def whole_number(option: str, text: str, low: int = 0, high: int = 10 ** 12) -> int:
+    """An integer option from ``low`` to ``high`` (a run of 5000 digits is refused as one
+    short line, not echoed, and never reaches SQLite or numpy as an overflow)."""
+    shown = text if len(text) <= 40 else text[:37] + "..."
+    try:
+        value = int(text.strip()) if len(text) <= 40 else None
+    except ValueError:
+        value = None
+    if value is None or not low <= value <= high:
+        raise UsageError(f"{option}: must be a whole number from {low} to {high:g} (got {shown!r})")
+    return value
