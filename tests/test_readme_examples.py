@@ -1,10 +1,12 @@
-"""The README's command-line examples print what the README says they print.
+"""The command-line examples of the README and of docs/ print what they say they print.
 
-Each ```console block of the README holds ``$ shaper …`` lines followed by
-their output. The deterministic ones (no library file, no clock, no PDF) are
-run here through a shell, so a figure in the README can never drift from what
-the program computes.
+Each ```console block of README.md and of every docs/*.md page holds ``$ shaper …``
+lines followed by their output. The deterministic ones (no library file, no clock,
+no PDF) are run here through a shell, so a figure in the docs can never drift from
+what the program computes. The README's table of subcommands gives one command line
+for each; those are run too, and must succeed.
 """
+import os
 import re
 import shutil
 import subprocess
@@ -12,33 +14,69 @@ from pathlib import Path
 
 import pytest
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+PAGES = [README, *sorted((ROOT / "docs").glob("*.md"))]
 CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep")
+# Every subcommand of ``shaper`` (core/cli's CORE_COMMANDS plus the Qt one, report).
+SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "library", "report")
 
 
-def examples() -> list[tuple[str, str]]:
+def console_examples(text: str) -> list[tuple[str, str]]:
+    """(command, expected output) of every ``$ shaper …`` line of ``text``'s console blocks."""
     found = []
-    for block in re.findall(r"```console\n(.*?)```", README.read_text(encoding="utf-8"), re.S):
+    for block in re.findall(r"```console\n(.*?)```", text, re.S):
         lines = block.splitlines()
         starts = [i for i, line in enumerate(lines) if line.startswith("$ ")]
         for j, i in enumerate(starts):
             end = starts[j + 1] if j + 1 < len(starts) else len(lines)
-            command = lines[i][2:]
-            if command.split()[1] in CHECKED:
-                found.append((command, "\n".join(lines[i + 1:end]).rstrip()))
+            found.append((lines[i][2:], "\n".join(lines[i + 1:end]).rstrip()))
     return found
 
 
+def examples() -> list[tuple[str, str, str]]:
+    return [(page.name, command, expected) for page in PAGES
+            for command, expected in console_examples(page.read_text(encoding="utf-8"))
+            if command.split()[1] in CHECKED]
+
+
+def table_commands() -> list[str]:
+    """The example column of the README's table of subcommands."""
+    return re.findall(r"^\| \[`[a-z]+`\]\([^)]*\) \|[^|]*\| `(shaper [^`]*)` \|$",
+                      README.read_text(encoding="utf-8"), re.M)
+
+
 EXAMPLES = examples()
+TABLE = table_commands()
 
 
-def test_the_readme_has_examples_of_every_checked_command():
-    assert {command.split()[1] for command, _ in EXAMPLES} == set(CHECKED)
+def test_the_docs_have_examples_of_every_checked_command():
+    assert {command.split()[1] for _, command, _ in EXAMPLES} == set(CHECKED)
+
+
+def test_console_blocks_are_found_in_docs_pages():
+    """The collector reads docs/ too: the checked examples now live in docs/cli.md."""
+    assert any(page != README.name for page, _, _ in EXAMPLES)
+
+
+def test_the_readme_table_has_one_example_of_every_subcommand():
+    assert sorted(command.split()[1] for command in TABLE) == sorted(SUBCOMMANDS)
 
 
 @pytest.mark.skipif(shutil.which("shaper") is None, reason="the shaper command is not installed")
-@pytest.mark.parametrize("command, expected", EXAMPLES, ids=[c[:60] for c, _ in EXAMPLES])
-def test_readme_example_output(command, expected, tmp_path):
+@pytest.mark.parametrize("page, command, expected", EXAMPLES,
+                         ids=[f"{p}:{c[:60]}" for p, c, _ in EXAMPLES])
+def test_docs_example_output(page, command, expected, tmp_path):
     run = subprocess.run(["bash", "-c", command], capture_output=True, text=True, cwd=tmp_path,
                          timeout=120)
     assert (run.stdout + run.stderr).rstrip() == expected
+
+
+@pytest.mark.skipif(shutil.which("shaper") is None, reason="the shaper command is not installed")
+@pytest.mark.parametrize("command", TABLE, ids=[c.split()[1] for c in TABLE])
+def test_readme_table_example_runs(command, tmp_path):
+    env = {**os.environ, "SHAPER_LIBRARY": str(tmp_path / "library.sqlite")}
+    run = subprocess.run(["bash", "-c", command], capture_output=True, text=True, cwd=tmp_path,
+                         timeout=120, env=env)
+    assert run.returncode == 0 and run.stderr == "", run.stderr
+    assert run.stdout or any(tmp_path.iterdir())
