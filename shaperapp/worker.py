@@ -78,13 +78,16 @@ class GuiThreadCollector:
         return not self.holding
 
     def release(self, thread: threading.Thread) -> None:
-        self._threads.discard(thread)
-        self._forget_ended()
+        self._forget_ended(thread)
 
-    def _forget_ended(self) -> None:
+    def _forget_ended(self, released: threading.Thread | None = None) -> None:
+        """Drop ``released`` and the threads that have ended; when that leaves none, give
+        collection back. (Released as the last one, a thread used to leave collection off
+        for good: the set was empty before the check, so nothing was given back, and the
+        next hold then found collection off and kept it so.)"""
         if not self._threads:
             return
-        self._threads = {t for t in self._threads if t.is_alive()}
+        self._threads = {t for t in self._threads if t is not released and t.is_alive()}
         if not self._threads:
             self.collect_due()
             if self._was_enabled:

@@ -6,7 +6,7 @@ import threading
 
 import pytest
 
-from shaperapp.worker import COLLECTOR, JobRunner
+from shaperapp.worker import COLLECTOR, GuiThreadCollector, JobRunner
 
 
 class Recorder:
@@ -177,3 +177,26 @@ def test_a_runner_deleted_mid_job_leaves_neither_errors_nor_collection_off(qtbot
     thread.join(10)
     assert not thread.is_alive() and errors == []
     assert not COLLECTOR.holding and gc.isenabled() == was_enabled
+
+
+def test_releasing_the_last_thread_gives_collection_back():
+    """The runner releases a thread when its 'ended' report arrives; if the thread had not
+    yet returned when the timer last looked, the release emptied the set first and
+    collection stayed off for the rest of the session (seen as a failure of the test above
+    in a 2-worker run under load)."""
+    collector = GuiThreadCollector()
+    gate = threading.Event()
+    thread = threading.Thread(target=gate.wait)
+    thread.start()
+    was_enabled = gc.isenabled()
+    gc.enable()
+    try:
+        collector.hold(thread)
+        assert not gc.isenabled()
+        collector.release(thread)                 # still alive: released by its report
+        assert gc.isenabled() and not collector.holding
+    finally:
+        gate.set()
+        thread.join()
+        if not was_enabled:
+            gc.disable()
