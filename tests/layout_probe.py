@@ -16,7 +16,8 @@ import argparse
 import json
 import sys
 
-from PySide6.QtCore import QPoint, QRect, QSettings, QSize
+from PySide6.QtCore import QPoint, QRect, QRectF, QSettings, QSize, Qt
+from PySide6.QtGui import QImage, QPainter
 from PySide6.QtWidgets import QApplication, QScrollArea
 
 
@@ -84,6 +85,52 @@ def compare_report(app: QApplication, window) -> dict:
             "legend_rows": len(view.plots._legend.items)}
 
 
+def box(r: QRectF) -> list[float]:
+    return [r.x(), r.y(), r.width(), r.height()]
+
+
+def tick_labels(axis) -> list[list[float]]:
+    """The boxes of the tick labels the axis draws now (its own drawing specification)."""
+    image = QImage(8, 8, QImage.Format.Format_ARGB32)
+    painter = QPainter(image)
+    try:
+        specs = axis.generateDrawSpecs(painter)
+    finally:
+        painter.end()
+    if specs is None:
+        return []
+    return [box(axis.mapRectToScene(rect)) for rect, _, text in specs[2] if text.strip()]
+
+
+def stacks_report(app: QApplication, window) -> dict:
+    """Every plot of the Kinematics (with the lever plots shown) and Forces tabs: its view
+    box, the left axis' title and tick-label boxes, the lowest plot's x tick labels (scene
+    px), and whether the stack's view is as tall as its plots need (it scrolls)."""
+    out = {}
+    for name, view in (("kinematics", window.plots), ("forces", window.forces)):
+        window.tabs.setCurrentWidget(view)
+        stack = view._stack
+        for series in stack._series:
+            stack.set_plot_visible(series.key, True)
+        settle(app)
+        stack.ensure_current()
+        settle(app)
+        plots = []
+        for series in stack._series:
+            item = stack._plots[series.key].item
+            left, bottom = item.getAxis("left"), item.getAxis("bottom")
+            title = left.label
+            plots.append({"key": series.key, "box": box(item.vb.sceneBoundingRect()),
+                          "title": box(title.sceneBoundingRect()) if title.isVisible() else None,
+                          "title_text": title.toPlainText(),
+                          "ticks": tick_labels(left),
+                          "x_ticks": tick_labels(bottom) if bottom.style["showValues"] else None})
+        layout = stack._view.ci.layout
+        out[name] = {"plots": plots, "view_height": stack._view.height(),
+                     "needed_height": layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()}
+    return out
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument("--settings", required=True)
@@ -92,6 +139,8 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--resize", help="WxH before closing (to save that geometry)")
     parser.add_argument("--library", action="store_true", help="then show the library pane and report it")
     parser.add_argument("--compare", action="store_true", help="then compare two designs and report the plots")
+    parser.add_argument("--stacks", action="store_true", help="report the plots of each case")
+    parser.add_argument("--variant", help="the ram drive (block, rod)")
     args = parser.parse_args(argv)
     from shaperapp.style import configure_plots
     configure_plots()
@@ -103,6 +152,8 @@ def main(argv: list[str]) -> int:
     window.show()
     settle(app)
     report = {"screen": rect(window.screen().availableGeometry()), "language": args.lang, "cases": []}
+    if args.variant:
+        window.model.set_spec(variant=args.variant)
     for speeds in args.speeds:
         window.model.set_rpms([float(s) for s in speeds.split(",")])
         settle(app)
@@ -115,6 +166,8 @@ def main(argv: list[str]) -> int:
             "results_visible": window.metrics.isVisible(),
             "tables": [table_report(app, t) for t in window.metrics.tables()],
         })
+        if args.stacks:
+            report["cases"][-1]["stacks"] = stacks_report(app, window)
     if args.library:
         window.library_dock.show()
         settle(app)

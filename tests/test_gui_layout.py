@@ -97,6 +97,40 @@ def test_compare_plots_readable_on_a_laptop(tmp_path, width, height, lang):
             assert not overlap(a["title"], b["title"]), (a, b)        # titles ran into each other
 
 
+def spread(boxes: list[list[float]]) -> bool:
+    """No two boxes overlap."""
+    return not any(overlap(a, b) for i, a in enumerate(boxes) for b in boxes[i + 1:])
+
+
+@pytest.mark.parametrize("variant", ["block", "rod"])
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+def test_every_stacked_plot_has_ticks_and_its_own_title(tmp_path, width, height, lang, variant):
+    """With 16 speeds the Forces plots got 60 px each: 0-2 tick labels (the joint-force
+    plot none) and y titles running into each other ("Input powerEnergy"); with 2 speeds
+    still 2 ticks (the Chinese rod variant's joint forces a single "5"). Now every plot
+    keeps three labels and a title within its own height, and the stack scrolls."""
+    report = probe(tmp_path, width, height, "--lang", lang, "--variant", variant, "--stacks",
+                   "--speeds", "40,60", "--speeds", SIXTEEN)
+    for case in report["cases"]:
+        for name, stack in case["stacks"].items():
+            where = (case["speeds"], name)
+            assert stack["view_height"] >= stack["needed_height"] - 1, where    # scrolls, not squeezed
+            plots = stack["plots"]
+            assert len(plots) >= 3, where
+            for plot in plots:
+                x, y, w, h = plot["box"]
+                assert len(plot["ticks"]) >= 3, (where, plot["key"], h, plot["ticks"])
+                assert spread(plot["ticks"]), (where, plot["key"])
+                assert plot["title"] is not None and plot["title_text"].strip(), (where, plot["key"])
+                tx, ty, tw, th = plot["title"]
+                assert y - 1 <= ty and ty + th <= y + h + 1, (where, plot["key"], plot["title"], plot["box"])
+            x_ticks = [p["x_ticks"] for p in plots if p["x_ticks"] is not None]
+            assert len(x_ticks) == 1 and len(x_ticks[0]) >= 3 and spread(x_ticks[0]), where
+            assert spread([p["title"] for p in plots]), where              # titles apart
+            assert spread([p["box"] for p in plots]), where
+
+
 def test_saved_geometry_only_if_it_fits_the_screen(tmp_path):
     big = probe(tmp_path, 1920, 1080, "--resize", "1700x1000")
     assert big["resized"] == [1700, 1000]
