@@ -131,6 +131,38 @@ def stacks_report(app: QApplication, window) -> dict:
     return out
 
 
+def polygons_report(app: QApplication, window, angles: list[float]) -> list[dict]:
+    """The vector-diagram pane as shown: per kind and crank angle, what its canvas paints
+    (text ink boxes, arrowhead boxes, the vectors' box; recorded, device px), the canvas
+    and the visible part of its scroll area."""
+    from paint_recorder import PaintRecorder, drawing_box
+    window.docks["polygons"].show()
+    window.docks["polygons"].raise_()
+    settle(app)
+    view = window.polygon_view
+    out = []
+    for kind in ("velocity", "acceleration", "force"):
+        view.set_kind(kind)
+        for angle in angles:
+            window.model.set_angle_deg(angle)
+            settle(app)
+            canvas = view.canvas
+            image = QImage(canvas.size(), QImage.Format.Format_ARGB32)
+            image.setDotsPerMeterX(round(canvas.logicalDpiX() / 0.0254))
+            image.setDotsPerMeterY(round(canvas.logicalDpiY() / 0.0254))
+            painter = PaintRecorder(image)
+            painter.setFont(canvas.font())
+            view.paint(painter, view.canvas_rect())
+            painter.end()
+            port = view.scroll.viewport()
+            out.append({"kind": kind, "angle": angle, "canvas": size(canvas.size()),
+                        "viewport": size(port.size()), "dock": size(window.docks["polygons"].size()),
+                        "texts": [[t, box(b)] for t, b in painter.texts],
+                        "heads": [box(h) for h in painter.heads],
+                        "drawing": box(drawing_box(painter.lines))})
+    return out
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument("--settings", required=True)
@@ -141,6 +173,7 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--compare", action="store_true", help="then compare two designs and report the plots")
     parser.add_argument("--stacks", action="store_true", help="report the plots of each case")
     parser.add_argument("--variant", help="the ram drive (block, rod)")
+    parser.add_argument("--polygons", help="crank angles (°, comma separated): report the vector diagrams")
     args = parser.parse_args(argv)
     from shaperapp.style import configure_plots
     configure_plots()
@@ -177,6 +210,8 @@ def main(argv: list[str]) -> int:
                              "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
     if args.compare:
         report["compare"] = compare_report(app, window)
+    if args.polygons:
+        report["polygons"] = polygons_report(app, window, [float(a) for a in args.polygons.split(",")])
     if args.resize:
         w, h = (int(v) for v in args.resize.split("x"))
         window.resize(w, h)
