@@ -120,7 +120,7 @@ class MainWindow(QMainWindow):
         stack = self.model.undo_stack
         self.act_undo = stack_action(self, stack.createUndoAction(self, self.tr("Undo")), stack.undo, keys.Undo)
         self.act_redo = stack_action(self, stack.createRedoAction(self, self.tr("Redo")), stack.redo,
-                                     keys.Redo, "Ctrl+Shift+Z")
+                                     keys.Redo, "Ctrl+Shift+Z", "Ctrl+Y")     # both, as the README says
         stack.undoTextChanged.connect(self._show_undo_text)
         stack.redoTextChanged.connect(self._show_redo_text)
         self.act_goto = self._action(self.go_to_angle_dialog, "Ctrl+G")
