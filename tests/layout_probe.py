@@ -81,8 +81,12 @@ def compare_report(app: QApplication, window) -> dict:
                       "title": [shown.x(), shown.y(), shown.width(), shown.height()],
                       "title_text": title.toPlainText() if title.isVisible() else ""}
     legend = view.plots._legend.sceneBoundingRect()
+    table = view.table
+    whole = [r for r in range(table.rowCount()) if table.rowViewportPosition(r) >= 0
+             and table.rowViewportPosition(r) + table.rowHeight(r) <= table.viewport().height()]
     return {"plots": plots, "legend": [legend.x(), legend.y(), legend.width(), legend.height()],
-            "legend_rows": len(view.plots._legend.items)}
+            "legend_rows": len(view.plots._legend.items),
+            "table_rows": table.rowCount(), "table_rows_shown": len(whole)}
 
 
 def box(r: QRectF) -> list[float]:

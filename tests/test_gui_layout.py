@@ -86,6 +86,7 @@ def test_compare_plots_readable_on_a_laptop(tmp_path, width, height, lang):
     titles ran into each other and the legend covered the curves."""
     report = probe(tmp_path, width, height, "--lang", lang, "--compare")["compare"]
     assert report["legend_rows"] == 2
+    assert report["table_rows_shown"] >= min(2, report["table_rows"]), report["table_rows_shown"]   # 1 before
     for key, plot in report["plots"].items():
         x, y, w, h = plot["box"]
         assert h >= 70 and w >= 150, (key, plot["box"])     # 36-45 px before
