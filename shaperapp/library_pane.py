@@ -67,6 +67,8 @@ class LibraryPane(QWidget):
         self.view.setAlternatingRowColors(True)
         self.view.setWordWrap(False)
         self.view.horizontalHeader().setResizeContentsPrecision(200)   # not all 10 000 rows
+        # sized again to the rows after every query (names were cut "base K…" after an add)
+        self.table_model.modelReset.connect(self.view.resizeColumnsToContents)
         self.view.doubleClicked.connect(lambda _: self.open_selected())
         self.view.selectionModel().selectionChanged.connect(self._update_enabled)
 

@@ -49,6 +49,19 @@ def save(pane, model, name, **spec):
     assert pane.actions.save_current(name, notes=f"notes of {name}", tags=["t"])
 
 
+def test_columns_fit_their_texts_after_an_add(pane, model):
+    """Opened empty, the Name and K columns stayed as narrow as their titles after
+    designs were added ("base K…", "1.…"; issue 20 item 3)."""
+    save(pane, model, "base K 1.4 stroke 300 long name")
+    save(pane, model, "second", time_ratio=1.6)
+    view, metrics = pane.view, pane.view.fontMetrics()
+    for row in range(pane.table_model.rowCount()):
+        for col in range(pane.table_model.columnCount()):
+            text = pane.table_model.index(row, col).data()
+            if text:
+                assert view.columnWidth(col) >= metrics.horizontalAdvance(str(text)), (row, col, text)
+
+
 def test_save_current_design_and_list_it(pane, model):
     save(pane, model, "K1.4")
     save(pane, model, "K1.6 rod", time_ratio=1.6, variant="rod")
