@@ -201,6 +201,8 @@ def main(argv: list[str]) -> int:
             "frame": rect(window.frameGeometry()), "size": size(window.size()),
             "minimum": size(window.minimumSizeHint()),
             "results_visible": window.metrics.isVisible(),
+            "results_area": window.dockWidgetArea(window.docks["results"]).name,
+            "results_tabbed_with": [d.objectName() for d in window.tabifiedDockWidgets(window.docks["results"])],
             "tables": [table_report(app, t) for t in window.metrics.tables()],
         })
         if args.stacks:

@@ -139,9 +139,13 @@ def test_saved_geometry_only_if_it_fits_the_screen(tmp_path):
     assert big["resized"] == [1700, 1000]
     again = probe(tmp_path, 1920, 1080, "--speeds", "40,60")
     assert again["cases"][0]["size"] == [1700, 1000]             # restored
+    assert again["cases"][0]["results_area"] == "LeftDockWidgetArea"   # the large screen's layout
     laptop = probe(tmp_path, 1366, 768, "--speeds", "40,60")
     case = laptop["cases"][0]
     assert inside(laptop["screen"], case["frame"])                # not restored: it would not fit
+    # nor the panes' layout saved with it (issue 20 item 5): the laptop's default
+    assert case["results_area"] == "RightDockWidgetArea", case["results_area"]
+    assert case["results_tabbed_with"] == ["polygonsDock"], case["results_tabbed_with"]
 
 
 # ---- in-process: docks, state, toolbar ------------------------------------------------
