@@ -13,13 +13,13 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout, QGroupBox,
                                QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
                                QVBoxLayout, QWidget)
 
-from core.optimize import OBJECTIVES, tidy_optimum
+from core.optimize import OBJECTIVES, on_bounds, tidy_optimum
 from core.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
 from .explore_jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
@@ -29,6 +29,9 @@ from .model import DesignModel
 from .worker import JobRunner
 
 REFRESH_MS = 300
+
+
+REQUIREMENTS = ("time_ratio", "stroke")      # K and H: given by the user, fixed by default
 
 
 class ExploreView(QWidget):
@@ -68,6 +71,9 @@ class ExploreView(QWidget):
         for box in self.free:
             box.setChecked(True)
         self.optimize = QPushButton()
+        self.undo_proposal = QPushButton()      # back to the design before the optimum, one step
+        self.undo_proposal.setVisible(False)
+        self._proposal_index = -1               # the undo stack's index right after loading it
         self.optimum = QLabel()
         self.optimum.setWordWrap(True)
         self.box = QGroupBox()
@@ -77,6 +83,8 @@ class ExploreView(QWidget):
         self.compute.clicked.connect(self.start_map)
         self.cancel.clicked.connect(self.stop)
         self.optimize.clicked.connect(self.start_optimize)
+        self.undo_proposal.clicked.connect(self._undo_proposal)
+        model.undo_stack.indexChanged.connect(self._proposal_still_on_top)
         self.figure.currentIndexChanged.connect(self._figure_changed)
         for i, combo in enumerate(self.axis_names):
             combo.currentIndexChanged.connect(lambda _=0, i=i: self._axis_changed(i))
@@ -119,7 +127,8 @@ class ExploreView(QWidget):
         opt.addWidget(self.free[0], 1, 0)
         opt.addWidget(self.free[1], 1, 1)
         opt.addWidget(self.optimize, 1, 2)
-        opt.addWidget(self.optimum, 2, 0, 1, 3)
+        opt.addWidget(self.optimum, 2, 0, 1, 2)
+        opt.addWidget(self.undo_proposal, 2, 2, Qt.AlignmentFlag.AlignTop)
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
         layout.addLayout(bar)
@@ -157,6 +166,11 @@ class ExploreView(QWidget):
         self.box.setTitle(self.tr("Optimize over the map's ranges"))
         self.free[0].setText(self.tr("vary across"))
         self.free[1].setText(self.tr("vary up"))
+        for box in self.free:
+            box.setToolTip(self.tr("Let Optimize change this parameter. K and H are your "
+                                   "requirements: they stay fixed unless you tick this."))
+        self.undo_proposal.setText(self.tr("Undo proposal"))
+        self.undo_proposal.setToolTip(self.tr("Back to the design before Optimize (Edit › Undo does the same)"))
         self._fill_figures()
         names = self.parameter_names()
         for combo in self.axis_names:
@@ -195,7 +209,10 @@ class ExploreView(QWidget):
             self._axis_changed(i)
 
     def _axis_changed(self, i: int) -> None:
-        low, high = default_range(self.model.design, self.axis_names[i].currentData())
+        name = self.axis_names[i].currentData()
+        # Optimize starts from the user's requirements: K and H are varied only when freed.
+        self.free[i].setChecked(name not in REQUIREMENTS)
+        low, high = default_range(self.model.design, name)
         self.lows[i].setValue(low)
         self.highs[i].setValue(high)
         self._show_labels()
@@ -311,11 +328,28 @@ class ExploreView(QWidget):
         start = "—" if best.start_value is None else f"{best.start_value:.5g} {unit}"
         names = self.parameter_names()
         where = ", ".join(f"{names[n]} = {v:.7g}" for n, v in values.items())
-        self.optimum.setText(self.tr("Best: %1 %2 at %3 (the design before: %4); loaded into "
-                                     "the form.").replace("%1", f"{value:.5g}")
-                             .replace("%2", unit).replace("%3", where).replace("%4", start))
+        text = (self.tr("Proposal: %1 %2 at %3 (the design before: %4), loaded into the form; "
+                        "Undo proposal goes back.").replace("%1", f"{value:.5g}")
+                .replace("%2", unit).replace("%3", where).replace("%4", start))
+        for name, end in on_bounds(best, job.bounds).items():
+            warning = (self.tr("%1 is at the lower end of its range: the best design may lie "
+                               "below it; widen the range.") if end == "lower" else
+                       self.tr("%1 is at the upper end of its range: the best design may lie "
+                               "above it; widen the range."))
+            text += f"<br><span style='color:#b71c1c'>{warning.replace('%1', names[name])}</span>"
+        self.optimum.setText(text)
         self.status.setText(self._map_status())       # no longer "Optimizing…"
-        self.model.set_spec(**spec_changes(values))
+        self.model.set_spec(**spec_changes(values))   # one step on the undo stack
+        self._proposal_index = self.model.undo_stack.index()
+        self.undo_proposal.setVisible(True)
+        self._proposal_still_on_top()
+
+    def _undo_proposal(self) -> None:
+        if self.model.undo_stack.index() == self._proposal_index:
+            self.model.undo_stack.undo()
+
+    def _proposal_still_on_top(self, *_: object) -> None:
+        self.undo_proposal.setEnabled(self.model.undo_stack.index() == self._proposal_index)
 
     # ---- jobs -----------------------------------------------------------------
     def _start(self, job, text: str, busy: bool = False) -> None:
