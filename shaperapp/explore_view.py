@@ -65,7 +65,9 @@ class ExploreView(QWidget):
         self.map = HeatMap(self)
         self.hover = QLabel()
         self.hover.setWordWrap(True)
-        self.hover.setMinimumHeight(48)
+        for label in (self.status, self.hover):      # two lines, beside each other above the map
+            label.setMinimumHeight(2 * label.fontMetrics().lineSpacing() + 4)
+            label.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
         self.objective = QComboBox()
         self.free = [QCheckBox(), QCheckBox()]
         for box in self.free:
@@ -76,6 +78,7 @@ class ExploreView(QWidget):
         self._proposal_index = -1               # the undo stack's index right after loading it
         self.optimum = QLabel()
         self.optimum.setWordWrap(True)
+        self.optimum.setVisible(False)
         self.box = QGroupBox()
         self._layout()
         self._refresh_timer = QTimer(self, singleShot=True, interval=REFRESH_MS)
@@ -117,24 +120,28 @@ class ExploreView(QWidget):
             grid.addWidget(self.highs[i], row, 3)
         grid.addWidget(self._labels[3], 3, 0)
         grid.addWidget(self.count, 3, 1)
-        grid.addWidget(self.compute, 3, 2, 1, 2)
+        grid.addWidget(self.compute, 3, 2)
+        grid.addWidget(self.cancel, 3, 3)         # beside Compute: no row of its own
         bar = QHBoxLayout()
-        bar.addWidget(self.progress, 1)
-        bar.addWidget(self.cancel)
+        bar.addWidget(self.progress, 1)           # shown only while a job runs
         opt = QGridLayout(self.box)
         opt.addWidget(self._labels[4], 0, 0)
-        opt.addWidget(self.objective, 0, 1, 1, 2)
+        opt.addWidget(self.objective, 0, 1)
+        opt.addWidget(self.optimize, 0, 2)
         opt.addWidget(self.free[0], 1, 0)
         opt.addWidget(self.free[1], 1, 1)
-        opt.addWidget(self.optimize, 1, 2)
         opt.addWidget(self.optimum, 2, 0, 1, 2)
         opt.addWidget(self.undo_proposal, 2, 2, Qt.AlignmentFlag.AlignTop)
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
         layout.addLayout(bar)
-        layout.addWidget(self.status)
+        # the read-out of the cell under the mouse beside the status, not in a band of its own
+        # under the map: the map had some 150 px of a 1366×768 screen
+        texts = QHBoxLayout()
+        texts.addWidget(self.status, 1)
+        texts.addWidget(self.hover, 2)
+        layout.addLayout(texts)
         layout.addWidget(self.map, 1)
-        layout.addWidget(self.hover)
         layout.addWidget(self.box)
 
     def changeEvent(self, event: QEvent) -> None:
@@ -149,6 +156,12 @@ class ExploreView(QWidget):
                 "v-return": self.tr("Max return speed, fastest speed (m/s)"),
                 "peak-torque": self.tr("Peak crank torque, worst speed (N·m)"),
                 "flywheel": self.tr("Flywheel J_F, slowest speed (kg·m²)")}
+
+    def figure_titles(self) -> dict[str, str]:
+        """Short titles of the figures, for the colour bar beside the map."""
+        return {"pressure-angle": self.tr("pressure angle (°)"), "accel": self.tr("max |a| (m/s²)"),
+                "v-work": self.tr("cutting speed (m/s)"), "v-return": self.tr("return speed (m/s)"),
+                "peak-torque": self.tr("peak torque (N·m)"), "flywheel": self.tr("J_F (kg·m²)")}
 
     def parameter_names(self) -> dict[str, str]:
         return {"crank": self.tr("Crank L1 (mm)"), "time_ratio": self.tr("Time ratio K"),
@@ -221,7 +234,7 @@ class ExploreView(QWidget):
         names = self.parameter_names()
         x, y = (c.currentData() for c in self.axis_names)
         if x and y:
-            self.map.set_labels(names[x], names[y])
+            self.map.set_labels(names[x], names[y], self.figure_titles().get(self.figure.currentData(), ""))
 
     # ---- the map ------------------------------------------------------------
     def axes(self) -> tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]]:
@@ -253,6 +266,7 @@ class ExploreView(QWidget):
             "%1", str(int(r.valid.sum()))).replace("%2", str(r.valid.size))
 
     def _figure_changed(self) -> None:
+        self._show_labels()                  # the colour bar's title
         key = self.figure.currentData()
         if self.result is None or key not in self.result.figures:
             self.start_map()
@@ -313,12 +327,12 @@ class ExploreView(QWidget):
         bounds = {name: (float(v[0]), float(v[-1])) for name, v, box in
                   ((x_name, x, self.free[0]), (y_name, y, self.free[1])) if box.isChecked()}
         if not bounds or x_name == y_name:
-            self.optimum.setText(self.tr("Choose one or two different free parameters."))
+            self._say(self.tr("Choose one or two different free parameters."))
             return
         objective = self.objective.currentData()
         masses = self.model.masses if FIGURES[objective][1] else None
         job = OptimizeJob(self.model.valid_spec, bounds, objective, self.model.rpms, masses)
-        self.optimum.clear()
+        self._say("")
         self._start(job, self.tr("Optimizing…"), busy=True)
 
     def _optimum_done(self, job: OptimizeJob, best) -> None:
@@ -337,12 +351,17 @@ class ExploreView(QWidget):
                        self.tr("%1 is at the upper end of its range: the best design may lie "
                                "above it; widen the range."))
             text += f"<br><span style='color:#b71c1c'>{warning.replace('%1', names[name])}</span>"
-        self.optimum.setText(text)
+        self._say(text)
         self.status.setText(self._map_status())       # no longer "Optimizing…"
         self.model.set_spec(**spec_changes(values))   # one step on the undo stack
         self._proposal_index = self.model.undo_stack.index()
         self.undo_proposal.setVisible(True)
         self._proposal_still_on_top()
+
+    def _say(self, text: str) -> None:
+        """The optimizer's message, hidden (no empty line under the map) when there is none."""
+        self.optimum.setText(text)
+        self.optimum.setVisible(bool(text))
 
     def _undo_proposal(self) -> None:
         if self.model.undo_stack.index() == self._proposal_index:

@@ -167,6 +167,26 @@ def polygons_report(app: QApplication, window, angles: list[float]) -> list[dict
     return out
 
 
+def explore_report(app: QApplication, window) -> dict:
+    """The Explore tab after its first map: the map's height against the tab's, the colour
+    bar's title and every tick label's box against the map's view (scene px)."""
+    import time
+    view = window.explore
+    window.tabs.setCurrentWidget(view)
+    deadline = time.monotonic() + 60
+    while (view.result is None or view.runner.job is not None) and time.monotonic() < deadline:
+        settle(app, 5)
+        time.sleep(0.02)
+    settle(app)
+    heat = view.map
+    shown = heat.mapToScene(heat.viewport().rect()).boundingRect()
+    axes = {"left": heat.getPlotItem().getAxis("left"), "bottom": heat.getPlotItem().getAxis("bottom"),
+            "colorbar": heat.colorbar.axis}
+    return {"map_height": heat.height(), "tab_height": view.height(),
+            "colorbar_title": heat.colorbar.axis.label.toPlainText() if heat.colorbar.axis.label.isVisible() else "",
+            "view": box(shown), "ticks": {name: tick_labels(axis) for name, axis in axes.items()}}
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument("--settings", required=True)
@@ -177,6 +197,7 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--compare", action="store_true", help="then compare two designs and report the plots")
     parser.add_argument("--stacks", action="store_true", help="report the plots of each case")
     parser.add_argument("--variant", help="the ram drive (block, rod)")
+    parser.add_argument("--explore", action="store_true", help="report the Explore tab's map")
     parser.add_argument("--polygons", help="crank angles (°, comma separated): report the vector diagrams")
     args = parser.parse_args(argv)
     from shaperapp.style import configure_plots
@@ -216,6 +237,8 @@ def main(argv: list[str]) -> int:
                              "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
     if args.compare:
         report["compare"] = compare_report(app, window)
+    if args.explore:
+        report["explore"] = explore_report(app, window)
     if args.polygons:
         report["polygons"] = polygons_report(app, window, [float(a) for a in args.polygons.split(",")])
     if args.resize:

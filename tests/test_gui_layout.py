@@ -134,6 +134,21 @@ def test_every_stacked_plot_has_ticks_and_its_own_title(tmp_path, width, height,
             assert spread([p["box"] for p in plots]), where
 
 
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+def test_explore_map_fills_its_tab(tmp_path, width, height, lang):
+    """The map was about 150 px tall over an empty band, its top tick "3.0" cut in half
+    and its colour bar untitled (issue 20 item 4)."""
+    report = probe(tmp_path, width, height, "--lang", lang, "--explore")["explore"]
+    assert report["map_height"] >= 0.4 * report["tab_height"], report
+    assert report["colorbar_title"].strip()
+    x, y, w, h = report["view"]
+    for name, ticks in report["ticks"].items():
+        assert len(ticks) >= 3, (name, ticks)
+        for tx, ty, tw, th in ticks:
+            assert x <= tx and y <= ty and tx + tw <= x + w and ty + th <= y + h, (name, (tx, ty, tw, th), report["view"])
+
+
 def test_saved_geometry_only_if_it_fits_the_screen(tmp_path):
     big = probe(tmp_path, 1920, 1080, "--resize", "1700x1000")
     assert big["resized"] == [1700, 1000]
