@@ -14,6 +14,7 @@ from importlib import resources
 
 from PySide6.QtCore import QCoreApplication, QLibraryInfo, QLocale, QTranslator
 from PySide6.QtGui import QGuiApplication
+from PySide6.QtWidgets import QApplication
 
 LANGUAGES = (("en", "English"), ("zh_CN", "简体中文"))
 _translators: dict[str, QTranslator] = {}
@@ -69,4 +70,9 @@ def set_language(language: str) -> bool:
             _installed.append(qt)
     if isinstance(app, QGuiApplication):
         QGuiApplication.setApplicationDisplayName(QCoreApplication.translate("app", "Shaper Designer"))
+    # Dates and numbers that Qt formats itself (the file dialog's dates) in the UI's language.
+    QLocale.setDefault(QLocale(language if language != "en" else "en_US"))
+    if isinstance(app, QApplication):
+        from .file_dialogs import install
+        install(app)
     return loaded

@@ -153,6 +153,46 @@ def test_qt_dialogs_are_chinese_too(window):
     assert QCoreApplication.translate("QPlatformTheme", "Cancel") == "Cancel"
 
 
+def test_every_file_dialog_is_chinese_with_local_dates(window, tmp_path, qtbot):
+    """Dialogs opened by QFileDialog.getSaveFileName (the polygon, library, report and
+    compare exports) kept "Look in:" and "Files of type:" in English, the detail view's
+    dates in the system format ("25 11 2026 12:15") and its size column elided (issue 20
+    item 7)."""
+    from PySide6.QtCore import QLocale, QTimer
+    from PySide6.QtWidgets import QFileDialog, QFileSystemModel, QLabel, QStyleOptionViewItem, QTreeView
+    (tmp_path / "a-design-with-a-long-name.shaper.json").write_text("{}" * 300_000)
+    window.set_language("zh_CN")
+    seen = {}
+
+    def inspect():
+        dialog = QApplication.activeModalWidget()
+        assert isinstance(dialog, QFileDialog)
+        dialog.setViewMode(QFileDialog.ViewMode.Detail)
+        qtbot.wait(300)                                # the file model lists the folder
+        seen["labels"] = [re.sub(r"&\w", "", label.text()) for label in dialog.findChildren(QLabel)]
+        view = next(v for v in dialog.findChildren(QTreeView) if v.isVisible())
+        model = dialog.findChild(QFileSystemModel)
+        name = str(tmp_path / "a-design-with-a-long-name.shaper.json")
+        source = model.index(name)
+        index = view.model().mapFromSource(source) if view.model() is not model else source
+        option = QStyleOptionViewItem()
+        view.itemDelegateForIndex(index.siblingAtColumn(3)).initStyleOption(option, index.siblingAtColumn(3))
+        seen["date"] = option.text
+        seen["expected"] = QLocale(QLocale.Language.Chinese, QLocale.Country.China).toString(
+            model.lastModified(source), QLocale.FormatType.ShortFormat)
+        size_text = index.siblingAtColumn(1).data()
+        seen["size_fits"] = view.columnWidth(1) >= view.fontMetrics().horizontalAdvance(size_text)
+        dialog.reject()
+
+    QTimer.singleShot(200, inspect)
+    QFileDialog.getSaveFileName(window, "t", str(tmp_path), "*.json",
+                                options=QFileDialog.Option.DontUseNativeDialog)
+    window.set_language("en")
+    assert seen["labels"] and all(not any(c.isascii() and c.isalpha() for c in t) for t in seen["labels"]), seen
+    assert seen["date"] == seen["expected"] and "/" in seen["date"], seen
+    assert seen["size_fits"]
+
+
 def test_window_title_in_one_language(window):
     window.set_language("zh_CN")
     QApplication.processEvents()                  # LanguageChange is delivered as an event
