@@ -22,6 +22,7 @@ from core.library_store import LibraryError, resolve_path
 from .library_actions import LibraryActions
 from .library_dialogs import SaveDialog, ask_refused_library
 from .library_stale import StaleFiguresBar
+from .library_filter import core_filter
 from .library_table import LibraryTableModel
 from .model import DesignModel
 
@@ -108,7 +109,7 @@ class LibraryPane(QWidget):
         layout.addWidget(self.view, 1)
 
         self.search_edit.textChanged.connect(lambda text: self.table_model.set_query(search=text))
-        self.filter_edit.textChanged.connect(lambda text: self.table_model.set_query(where=text))
+        self.filter_edit.textChanged.connect(lambda text: self.table_model.set_query(where=core_filter(text)))
         self.speed_box.currentTextChanged.connect(self._speed_changed)
         self.table_model.queryFailed.connect(self._show_query_error)
         self.actions.changed.connect(self._refresh)
