@@ -17,6 +17,14 @@ from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QApplication
 
 LANGUAGES = (("en", "English"), ("zh_CN", "简体中文"))
+# What a command line accepts for --lang, everywhere (shaperapp, shaper report): one
+# spelling was zh_CN for the app and zh for the report.
+LANGUAGE_CHOICES = ("en", "zh", "zh_CN")
+
+
+def language_of(choice: str) -> str:
+    """A --lang choice as a UI language: "zh" and "zh_CN" are both simplified Chinese."""
+    return "zh_CN" if choice in ("zh", "zh_CN") else "en"
 _translators: dict[str, QTranslator] = {}
 _installed: list[QTranslator] = []
 
