@@ -356,7 +356,7 @@ class ExploreView(QWidget):
         self.model.set_spec(**spec_changes(values))   # one step on the undo stack
         self._proposal_index = self.model.undo_stack.index()
         self.undo_proposal.setVisible(True)
-        self._proposal_still_on_top()
+        self._proposal_still_on_top(self._proposal_index)
 
     def _say(self, text: str) -> None:
         """The optimizer's message, hidden (no empty line under the map) when there is none."""
@@ -367,8 +367,9 @@ class ExploreView(QWidget):
         if self.model.undo_stack.index() == self._proposal_index:
             self.model.undo_stack.undo()
 
-    def _proposal_still_on_top(self, *_: object) -> None:
-        self.undo_proposal.setEnabled(self.model.undo_stack.index() == self._proposal_index)
+    def _proposal_still_on_top(self, index: int) -> None:
+        """(the stack's indexChanged: the index comes with it, also while the stack goes)"""
+        self.undo_proposal.setEnabled(index == self._proposal_index)
 
     # ---- jobs -----------------------------------------------------------------
     def _start(self, job, text: str, busy: bool = False) -> None:
