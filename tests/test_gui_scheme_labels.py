@@ -109,3 +109,25 @@ def test_l2_and_h_labels_never_overlap_even_after_a_zoom(scheme, model, spec):
                                "h": (model.design.frame, model.design.frame
                                      + model.design.guide_above_crank)}.items():
             assert (boxes[name][2] + boxes[name][3]) / 2 == pytest.approx((lo + hi) / 2, abs=1.0)
+
+
+@pytest.mark.parametrize("spec", [{}, {"time_ratio": 1.8, "crank": 80.0},
+                                  {"variant": "rod", "rod_ratio": 0.3}])
+def test_joint_labels_a_and_o2_never_on_the_lever_or_the_crank(scheme, model, spec):
+    """A sat on the lever at φ = 100°, O₂ under it at 120° (issue 20 item 8)."""
+    from shaperapp.scheme_draw import text_box
+    if spec:
+        model.set_spec(**spec)
+        assert model.error is None
+    sh, design = model.motion.shape, model.design
+    u = design.lever / 40.0
+    o2 = np.array([0.0, design.frame])
+    labels = scheme._mechanism.labels
+    for index in range(0, model.angle_count, 5):
+        model.set_angle_index(index)
+        scheme._catch_up()
+        a, b = sh.crank_pin[:, index], sh.lever_tip[:, index]
+        for name in ("A", "O2"):
+            box = text_box(labels[name])
+            assert not box_hits_segment(box, np.zeros(2), b, 0.8 * u), (name, index)     # lever
+            assert not box_hits_segment(box, o2, a, 0.55 * u), (name, index)             # crank
