@@ -81,6 +81,7 @@ def set_language(language: str) -> bool:
     # Dates and numbers that Qt formats itself (the file dialog's dates) in the UI's language.
     QLocale.setDefault(QLocale(language if language != "en" else "en_US"))
     if isinstance(app, QApplication):
-        from .file_dialogs import install
-        install(app)
+        from . import dialog_titles, file_dialogs
+        file_dialogs.install(app)
+        dialog_titles.install(app)
     return loaded

@@ -193,6 +193,27 @@ def test_every_file_dialog_is_chinese_with_local_dates(window, tmp_path, qtbot):
     assert seen["size_fits"]
 
 
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+def test_dialogs_are_as_wide_as_their_titles(window, lang):
+    """Under openbox at 1366x768 the Go-to dialog's title read "Go to … signer" and the
+    report's "Export design rep…" (issue 20 item 8)."""
+    from PySide6.QtGui import QFont, QFontMetrics
+    window.set_language(lang)
+    dialog = QInputDialog(window)
+    dialog.setWindowTitle(window.tr("Go to crank angle"))
+    dialog.setLabelText("φ")
+    dialog.show()
+    QApplication.processEvents()
+    try:
+        font = QFont(dialog.font())
+        font.setBold(True)
+        title = f"{dialog.windowTitle()} — {QGuiApplication.applicationDisplayName()}"
+        assert dialog.width() >= QFontMetrics(font).horizontalAdvance(title) + 100, dialog.width()
+    finally:
+        dialog.close()
+        window.set_language("en")
+
+
 def test_window_title_in_one_language(window):
     window.set_language("zh_CN")
     QApplication.processEvents()                  # LanguageChange is delivered as an event
