@@ -21,7 +21,7 @@ from PySide6.QtGui import QColor, QPainterPath, QPen, Qt
 
 from .model import DesignModel
 from .plot_curves import CurveItem
-from .scheme_draw import DIM, Box, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
+from .scheme_draw import DIM, Box, Pair, Z_DIM, arrow_head, body, overlaps, pen, segments, text_box
 from .scheme_mechanism import Geometry
 from .style import fmt
 
@@ -142,11 +142,22 @@ class DimensionLayer(QObject):
         boxes = [text_box(l2), text_box(h)]                  # (left, right, bottom, top), mm
         line = boxes[1][1] - boxes[1][0]                     # the vertical text's line height
         overlap = min(boxes[0][3], boxes[1][3]) - max(boxes[0][2], boxes[1][2]) + 0.3 * line
-        if overlap <= 0.0:
+        if overlap > 0.0:
+            longer = 1 if abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
+            x, y = mids[longer]
+            self._texts[longer].setPos(x, y + math.copysign(overlap, y - shared))
+        self._clear_of_l1(l2, line)
+
+    def _clear_of_l1(self, l2: pg.TextItem, line: float) -> None:
+        """L1's label (at the end of its leader, left of the crank) may reach over the L2
+        label's upper end, hiding its last digits ("L2 = 282" for 282.0 at K = 1.6): L2's
+        label then moves down its part, away from the point it shares with h."""
+        l1 = self.texts()["L1"]
+        box, other = text_box(l2), text_box(l1)
+        if not overlaps(box, other):
             return
-        longer = 1 if abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
-        x, y = mids[longer]
-        self._texts[longer].setPos(x, y + math.copysign(overlap, y - shared))
+        x, y = l2.pos().x(), l2.pos().y()
+        l2.setPos(x, y - (box[3] - other[2]) - 0.3 * line)
 
     def set_visible(self, visible: bool) -> None:
         self._visible = visible

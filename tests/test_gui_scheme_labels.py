@@ -131,3 +131,20 @@ def test_joint_labels_a_and_o2_never_on_the_lever_or_the_crank(scheme, model, sp
             box = text_box(labels[name])
             assert not box_hits_segment(box, np.zeros(2), b, 0.8 * u), (name, index)     # lever
             assert not box_hits_segment(box, o2, a, 0.55 * u), (name, index)             # crank
+
+
+@pytest.mark.parametrize("time_ratio", [1.3, 1.4, 1.5, 1.6])
+def test_dimension_labels_apart_in_the_laptop_pane(qtbot, model, time_ratio):
+    """At K = 1.6 in the 420 px mechanism pane "L1 = 100.0" covered the end of
+    "L2 = 282.0", which read "L2 = 282" (issue 20 item 8)."""
+    from gui_helpers import shown
+    from shaperapp.scheme import SchemeWidget
+    from shaperapp.scheme_draw import overlaps
+    model.set_spec(time_ratio=time_ratio)
+    assert model.error is None
+    for size in ((420, 330), (900, 650)):
+        scheme = shown(qtbot, SchemeWidget(model), *size)
+        boxes = scheme.dimension_label_boxes()
+        pairs = [(a, b) for a in boxes for b in boxes if a < b and overlaps(boxes[a], boxes[b])]
+        assert pairs == [], (size, pairs)
+        scheme.close()
