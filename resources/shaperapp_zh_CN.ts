@@ -1298,7 +1298,7 @@
     </message>
     <message>
         <source>Filter, e.g. K&gt;=1.4, variant=rod, a_max&lt;5</source>
-        <translation>筛选，例如 K&gt;=1.4, variant=rod, a_max&lt;5</translation>
+        <translation>筛选，例如 K&gt;=1.4, 方案=连杆, 最大 |a|&lt;5</translation>
     </message>
     <message>
         <source>Figures at each design's first speed</source>
