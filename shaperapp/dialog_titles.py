@@ -10,7 +10,9 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication, QEvent, QObject
 from PySide6.QtGui import QFont, QFontMetrics, QGuiApplication
-from PySide6.QtWidgets import QDialog
+from PySide6.QtWidgets import QDialog, QFileDialog
+
+from .file_dialogs import localize
 
 TITLE_BAR_EXTRA_PX = 140      # the title bar's buttons, icon and margins
 TITLE_FONT_SCALE = 1.15       # window managers draw titles in a larger (often bold) font
@@ -38,8 +40,13 @@ def fit_title(dialog: QDialog) -> None:
 
 
 class _TitleFitter(QObject):
+    """Fits every dialog to its title when shown, and puts a file dialog's texts in the
+    UI language (``file_dialogs.localize``), also those QFileDialog's static functions make."""
+
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         if event.type() == QEvent.Type.Show and isinstance(watched, QDialog):
+            if isinstance(watched, QFileDialog):
+                localize(watched)
             fit_title(watched)
         return False
 
@@ -48,7 +55,8 @@ _fitter: _TitleFitter | None = None
 
 
 def install(app: QCoreApplication) -> None:
-    """Fit every dialog of ``app`` to its title when shown (once per application)."""
+    """Fit every dialog of ``app`` to its title and localize its file dialogs when shown
+    (once per application)."""
     global _fitter
     if _fitter is None or _fitter.parent() is not app:
         _fitter = _TitleFitter(app)

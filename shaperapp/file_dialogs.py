@@ -7,14 +7,14 @@ catalogue translates the older texts, they are set explicitly. Native dialogs
 (Windows, macOS, desktop portals) ignore this and use the system's language.
 
 Every Qt file dialog, also those of ``QFileDialog.getSaveFileName`` and the like, is
-fixed up when it is shown (``install``: an event filter on the application): the
+fixed up when it is shown (``localize``, called by ``dialog_titles``' filter): the
 labels as above, the detail view's dates in the UI language's short format (Qt's file
 model writes them in the system locale's, "25 11 2026 12:15" in a Chinese UI), and
 its size and date columns as wide as their texts (they elided, "852…KiB").
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QAbstractProxyModel, QCoreApplication, QEvent, QLocale, QObject
+from PySide6.QtCore import QAbstractProxyModel, QCoreApplication, QLocale
 from PySide6.QtWidgets import (QFileDialog, QFileSystemModel, QHeaderView, QStyledItemDelegate,
                                QTreeView, QWidget)
 
@@ -51,24 +51,6 @@ def localize(dialog: QFileDialog) -> None:
         for column in (SIZE_COLUMN, DATE_COLUMN):
             if column < header.count():
                 header.setSectionResizeMode(column, QHeaderView.ResizeMode.ResizeToContents)
-
-
-class _Localizer(QObject):
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        if event.type() == QEvent.Type.Show and isinstance(watched, QFileDialog):
-            localize(watched)
-        return False
-
-
-_localizer: _Localizer | None = None
-
-
-def install(app: QCoreApplication) -> None:
-    """Localize every Qt file dialog of ``app`` when it is shown (once per application)."""
-    global _localizer
-    if _localizer is None or _localizer.parent() is not app:
-        _localizer = _Localizer(app)
-        app.installEventFilter(_localizer)
 
 
 def _dialog(parent: QWidget | None, title: str, start: str, filters: str) -> QFileDialog:

@@ -81,7 +81,6 @@ def set_language(language: str) -> bool:
     # Dates and numbers that Qt formats itself (the file dialog's dates) in the UI's language.
     QLocale.setDefault(QLocale(language if language != "en" else "en_US"))
     if isinstance(app, QApplication):
-        from . import dialog_titles, file_dialogs
-        file_dialogs.install(app)
+        from . import dialog_titles
         dialog_titles.install(app)
     return loaded
