@@ -25,6 +25,7 @@ from .explore_jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
 from .image_export import export_scene
 from .messages import describe
+from . import explore_names
 from .model import DesignModel
 from .worker import JobRunner
 
@@ -149,25 +150,10 @@ class ExploreView(QWidget):
             self._retranslate()
         super().changeEvent(event)
 
-    def figure_names(self) -> dict[str, str]:
-        return {"pressure-angle": self.tr("Max pressure angle (°)"),
-                "accel": self.tr("Max |acceleration|, fastest speed (m/s²)"),
-                "v-work": self.tr("Max cutting speed, fastest speed (m/s)"),
-                "v-return": self.tr("Max return speed, fastest speed (m/s)"),
-                "peak-torque": self.tr("Peak crank torque, worst speed (N·m)"),
-                "flywheel": self.tr("Flywheel J_F, slowest speed (kg·m²)")}
-
-    def figure_titles(self) -> dict[str, str]:
-        """Short titles of the figures, for the colour bar beside the map."""
-        return {"pressure-angle": self.tr("pressure angle (°)"), "accel": self.tr("max |a| (m/s²)"),
-                "v-work": self.tr("cutting speed (m/s)"), "v-return": self.tr("return speed (m/s)"),
-                "peak-torque": self.tr("peak torque (N·m)"), "flywheel": self.tr("J_F (kg·m²)")}
-
-    def parameter_names(self) -> dict[str, str]:
-        return {"crank": self.tr("Crank L1 (mm)"), "time_ratio": self.tr("Time ratio K"),
-                "stroke": self.tr("Stroke H (mm)"), "frame": self.tr("Frame L2 (mm)"),
-                "lever": self.tr("Lever L3 (mm)"), "guide": self.tr("Guide above O4 (mm)"),
-                "rod_ratio": self.tr("Rod ratio L4/L3"), "rod": self.tr("Rod L4 (mm)")}
+    # the names live in explore_names.py (context "ExploreView", as before)
+    figure_names = staticmethod(explore_names.figure_names)
+    figure_titles = staticmethod(explore_names.figure_titles)
+    parameter_names = staticmethod(explore_names.parameter_names)
 
     def _retranslate(self) -> None:
         for label, text in zip(self._labels, (self.tr("Figure"), self.tr("Across"), self.tr("Up"),
