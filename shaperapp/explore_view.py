@@ -19,7 +19,7 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout
                                QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
                                QVBoxLayout, QWidget)
 
-from core.optimize import OBJECTIVES, on_bounds, tidy_optimum
+from core.optimize import on_bounds, tidy_optimum
 from core.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
 from .explore_jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
@@ -324,19 +324,7 @@ class ExploreView(QWidget):
     def _optimum_done(self, job: OptimizeJob, best) -> None:
         """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum)."""
         values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
-        unit = OBJECTIVES[best.objective][1]
-        start = "—" if best.start_value is None else f"{best.start_value:.5g} {unit}"
-        names = self.parameter_names()
-        where = ", ".join(f"{names[n]} = {v:.7g}" for n, v in values.items())
-        text = (self.tr("Proposal: %1 %2 at %3 (the design before: %4), loaded into the form; "
-                        "Undo proposal goes back.").replace("%1", f"{value:.5g}")
-                .replace("%2", unit).replace("%3", where).replace("%4", start))
-        for name, end in on_bounds(best, job.bounds).items():
-            warning = (self.tr("%1 is at the lower end of its range: the best design may lie "
-                               "below it; widen the range.") if end == "lower" else
-                       self.tr("%1 is at the upper end of its range: the best design may lie "
-                               "above it; widen the range."))
-            text += f"<br><span style='color:#b71c1c'>{warning.replace('%1', names[name])}</span>"
+        text = explore_names.proposal_text(values, value, best, on_bounds(best, job.bounds))
         self._say(text)
         self.status.setText(self._map_status())       # no longer "Optimizing…"
         self.model.set_spec(**spec_changes(values))   # one step on the undo stack
