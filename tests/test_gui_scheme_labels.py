@@ -146,3 +146,22 @@ def test_dimension_labels_apart_in_the_laptop_pane(qtbot, model, time_ratio):
         pairs = [(a, b) for a in boxes for b in boxes if a < b and overlaps(boxes[a], boxes[b])]
         assert pairs == [], (size, pairs)
         scheme.close()
+
+
+@pytest.mark.parametrize("spec", [{"time_ratio": 1.05, "crank": 142.0}, {}])
+def test_h_label_stays_beside_its_dimension_in_a_tall_design(qtbot, model, spec):
+    """After Optimize loaded K = 1.05, L2 = 3 709 mm, the short h's label reached above
+    the guide line, out of the drawing, and was cut at the pane's top edge (issue 20
+    item 4): it ended 420 mm above its dimension."""
+    from gui_helpers import shown
+    from shaperapp.scheme import SchemeWidget
+    from shaperapp.scheme_draw import overlaps
+    model.set_spec(**spec)
+    assert model.error is None
+    scheme = shown(qtbot, SchemeWidget(model), 418, 346)        # the laptop's mechanism pane
+    qtbot.wait(50)                                              # laid out and fitted
+    boxes = scheme.dimension_label_boxes()
+    top = model.design.frame + model.design.guide_above_crank   # the guide line: h's upper end
+    assert boxes["h"][3] <= top + 1e-6, (boxes["h"], top)
+    assert boxes["L2"][2] >= -1e-6                              # and L2's no lower than O4
+    assert not overlaps(boxes["L2"], boxes["h"])
