@@ -88,6 +88,7 @@ class DimensionLayer(QObject):
         self._visible = True
         self._chain: tuple[float, tuple] | None = None   # (y of O2, mid text positions of L2, h)
         self._chain_top = 0.0                             # y of the chain's top end (the guide)
+        self._l1_home: tuple = (0.0, 0.0)                 # L1's label at the end of its leader
 
     def update(self, model: DesignModel, g: Geometry) -> None:
         """Place the dimensions of the model's design; texts are translated here."""
@@ -128,6 +129,7 @@ class DimensionLayer(QObject):
             item.setPos(*dim.text_pos)
         self._chain = (float(p1[1]), tuple(dim.text_pos for dim in dims[:2]))
         self._chain_top = float(p2[1])
+        self._l1_home = tuple(dims[NAMES.index("L1")].text_pos)
         self.separate_chain_labels()
 
     def separate_chain_labels(self) -> None:
@@ -139,7 +141,7 @@ class DimensionLayer(QObject):
             return
         shared, mids = self._chain
         l2, h = self._texts[:2]
-        for item, pos in zip((l2, h), mids):
+        for item, pos in zip((l2, h, self.texts()["L1"]), (*mids, self._l1_home)):
             item.setPos(*pos)
         # h's text no higher than the chain's top: a short h ("h = 206.0" beside a 3.7 m
         # lever) reached above the drawing and was cut at the view's top edge
@@ -153,6 +155,12 @@ class DimensionLayer(QObject):
             longer = 1 if above <= 0.0 and abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
             x, y = self._texts[longer].pos().x(), self._texts[longer].pos().y()
             self._texts[longer].setPos(x, y + math.copysign(overlap, mids[longer][1] - shared))
+        l1, box = self.texts()["L1"], text_box(h)
+        other = text_box(l1)
+        # a short h beside L1's label (K near 1) hidden under it: L1 moves down (a touch of
+        # their corners, as at K = 1.6, leaves both readable and L1 where it was)
+        if overlaps(box, other) and min(other[3], box[3]) - max(other[2], box[2]) > 0.5 * line:
+            l1.setPos(l1.pos().x(), l1.pos().y() - (other[3] - box[2]) - 0.3 * line)
         self._clear_of_l1(l2, line)
 
     def _clear_of_l1(self, l2: pg.TextItem, line: float) -> None:

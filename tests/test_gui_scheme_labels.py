@@ -164,4 +164,5 @@ def test_h_label_stays_beside_its_dimension_in_a_tall_design(qtbot, model, spec)
     top = model.design.frame + model.design.guide_above_crank   # the guide line: h's upper end
     assert boxes["h"][3] <= top + 1e-6, (boxes["h"], top)
     assert boxes["L2"][2] >= -1e-6                              # and L2's no lower than O4
-    assert not overlaps(boxes["L2"], boxes["h"])
+    pairs = [(a, b) for a in boxes for b in boxes if a < b and overlaps(boxes[a], boxes[b])]
+    assert pairs == [], pairs                                   # "L1 = 142.0" covered "h = 2…"
