@@ -167,3 +167,19 @@ def tidy_optimum(spec: Spec, best: Optimum, bounds: dict[str, tuple[float, float
         if math.isfinite(value) and value <= best.value + 1e-6 * abs(best.value):
             return tidy, value
     return exact, best.value
+
+
+def on_bounds(best: Optimum, bounds: dict[str, tuple[float, float]],
+              share: float = 1e-4) -> dict[str, str]:
+    """The varied parameters whose optimum lies on an end of its range (within ``share``
+    of the range): name → "lower" or "upper". There the objective still falls toward the
+    bound, so the best design may lie beyond it: the user should hear of it."""
+    ends: dict[str, str] = {}
+    for name, value in zip(best.names, (float(v) for v in best.x)):
+        lo, hi = bounds[name]
+        tolerance = share * (hi - lo)
+        if value <= lo + tolerance:
+            ends[name] = "lower"
+        elif value >= hi - tolerance:
+            ends[name] = "upper"
+    return ends

@@ -33,6 +33,9 @@ MM = 1e-3
 KINDS = ("velocity", "acceleration", "force")
 UNITS = {"velocity": "m/s", "acceleration": "m/s²", "force": "N"}
 NICE_MANTISSAS = (1.0, 2.0, 2.5, 5.0)
+# Also round, and at most 1.5× the exact scale: a drawing fitted to a view fills at
+# least 2/3 of it (with the coarse steps as little as half).
+FINE_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 Pair = tuple[float, float]
 
 
@@ -81,14 +84,15 @@ class Polygon:
         return worst
 
 
-def nice_scale(largest: float, target_mm: float) -> float:
-    """The smallest scale μ = {1, 2, 2.5, 5}·10^k (unit per mm) that draws ``largest``
-    no longer than ``target_mm`` (e.g. μv = 0.01 (m/s)/mm)."""
+def nice_scale(largest: float, target_mm: float,
+               mantissas: tuple[float, ...] = NICE_MANTISSAS) -> float:
+    """The smallest scale μ = {1, 2, 2.5, 5}·10^k (or other ``mantissas``, unit per mm)
+    that draws ``largest`` no longer than ``target_mm`` (e.g. μv = 0.01 (m/s)/mm)."""
     if not (largest > 0.0 and math.isfinite(largest)):
         return 1.0
     exact = largest / target_mm
     power = 10.0 ** math.floor(math.log10(exact))
-    for mantissa in NICE_MANTISSAS + (10.0,):
+    for mantissa in mantissas + (10.0,):
         if mantissa * power >= exact * (1 - 1e-12):
             return mantissa * power
     return 10.0 * power  # pragma: no cover - the loop always returns

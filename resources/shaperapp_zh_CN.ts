@@ -104,15 +104,15 @@
     </message>
     <message>
         <source>ram x (mm)</source>
-        <translation>刨头位移 x (mm)</translation>
+        <translation>滑枕位移 x (mm)</translation>
     </message>
     <message>
         <source>ram v (m/s)</source>
-        <translation>刨头速度 v (m/s)</translation>
+        <translation>滑枕速度 v (m/s)</translation>
     </message>
     <message>
         <source>ram a (m/s²)</source>
-        <translation>刨头加速度 a (m/s²)</translation>
+        <translation>滑枕加速度 a (m/s²)</translation>
     </message>
     <message>
         <source>lever ψ (°)</source>
@@ -212,11 +212,11 @@
     </message>
     <message>
         <source>guide N (N)</source>
-        <translation>导轨反力 N (N)</translation>
+        <translation>导路反力 N (N)</translation>
     </message>
     <message>
         <source>guide moment (N·m)</source>
-        <translation>导轨力矩 (N·m)</translation>
+        <translation>导路力矩 (N·m)</translation>
     </message>
     <message>
         <source>N offset (mm)</source>
@@ -252,7 +252,7 @@
     </message>
     <message>
         <source>Ram</source>
-        <translation>刨头</translation>
+        <translation>滑枕</translation>
     </message>
     <message>
         <source>Lever and block</source>
@@ -264,7 +264,7 @@
     </message>
     <message>
         <source>Crank torque, cutting force and guide</source>
-        <translation>曲柄力矩、切削力与导轨反力</translation>
+        <translation>曲柄力矩、切削力与导路反力</translation>
     </message>
     <message>
         <source>Joint forces at O2 and A</source>
@@ -712,6 +712,30 @@
         <translation>飞轮转动惯量 J_F，最低转速 (kg·m²)</translation>
     </message>
     <message>
+        <source>pressure angle (°)</source>
+        <translation>压力角 (°)</translation>
+    </message>
+    <message>
+        <source>max |a| (m/s²)</source>
+        <translation>最大 |a| (m/s²)</translation>
+    </message>
+    <message>
+        <source>cutting speed (m/s)</source>
+        <translation>切削速度 (m/s)</translation>
+    </message>
+    <message>
+        <source>return speed (m/s)</source>
+        <translation>回程速度 (m/s)</translation>
+    </message>
+    <message>
+        <source>peak torque (N·m)</source>
+        <translation>峰值力矩 (N·m)</translation>
+    </message>
+    <message>
+        <source>J_F (kg·m²)</source>
+        <translation>J_F (kg·m²)</translation>
+    </message>
+    <message>
         <source>Crank L1 (mm)</source>
         <translation>曲柄 L1 (mm)</translation>
     </message>
@@ -788,6 +812,18 @@
         <translation>优化纵轴参数</translation>
     </message>
     <message>
+        <source>Let Optimize change this parameter. K and H are your requirements: they stay fixed unless you tick this.</source>
+        <translation>允许优化改变此参数。K 和 H 是您的设计要求：除非勾选此项，否则保持不变。</translation>
+    </message>
+    <message>
+        <source>Undo proposal</source>
+        <translation>撤销建议</translation>
+    </message>
+    <message>
+        <source>Back to the design before Optimize (Edit › Undo does the same)</source>
+        <translation>回到优化之前的设计（编辑 › 撤销 效果相同）</translation>
+    </message>
+    <message>
         <source>Choose two different parameters.</source>
         <translation>请选择两个不同的参数。</translation>
     </message>
@@ -812,8 +848,16 @@
         <translation>正在优化…</translation>
     </message>
     <message>
-        <source>Best: %1 %2 at %3 (the design before: %4); loaded into the form.</source>
-        <translation>最优值：%1 %2，位于 %3（原设计：%4）；已载入表单。</translation>
+        <source>Proposal: %1 %2 at %3 (the design before: %4), loaded into the form; Undo proposal goes back.</source>
+        <translation>建议：%3 时为 %1 %2（原设计：%4），已载入表单；点击“撤销建议”可返回。</translation>
+    </message>
+    <message>
+        <source>%1 is at the lower end of its range: the best design may lie below it; widen the range.</source>
+        <translation>%1 位于其范围的下限：最优设计可能在范围之外，请扩大范围。</translation>
+    </message>
+    <message>
+        <source>%1 is at the upper end of its range: the best design may lie above it; widen the range.</source>
+        <translation>%1 位于其范围的上限：最优设计可能在范围之外，请扩大范围。</translation>
     </message>
     <message>
         <source>not enough memory</source>
@@ -1274,7 +1318,7 @@
     </message>
     <message>
         <source>Filter, e.g. K&gt;=1.4, variant=rod, a_max&lt;5</source>
-        <translation>筛选，例如 K&gt;=1.4, variant=rod, a_max&lt;5</translation>
+        <translation>筛选，例如 K&gt;=1.4, 方案=连杆, 最大 |a|&lt;5</translation>
     </message>
     <message>
         <source>Figures at each design's first speed</source>
@@ -1368,11 +1412,11 @@
     </message>
     <message>
         <source>Cutting force P</source>
-        <translation>切削阻力 P</translation>
+        <translation>切削力 P</translation>
     </message>
     <message>
         <source>Cutting resistance on the tool, against the cut, N</source>
-        <translation>作用于刨刀、与切削方向相反的切削阻力，N</translation>
+        <translation>作用于刨刀、与切削方向相反的切削力，N</translation>
     </message>
     <message>
         <source>Tool below guide yP</source>
@@ -2039,7 +2083,19 @@
     </message>
     <message>
         <source>Force polygon of the ram–rod group</source>
-        <translation>刨头—连杆杆组力多边形</translation>
+        <translation>滑枕—连杆杆组力多边形</translation>
+    </message>
+    <message>
+        <source>Every vector is zero at this position.</source>
+        <translation>此位置所有矢量均为零。</translation>
+    </message>
+    <message>
+        <source>Limit position: the lever is at rest (ω₃ = 0).</source>
+        <translation>极限位置：导杆瞬时静止（ω₃ = 0）。</translation>
+    </message>
+    <message>
+        <source>Limit position: ω₃ = 0, so aᵏ = aⁿ = 0.</source>
+        <translation>极限位置：ω₃ = 0，故 aᵏ = aⁿ = 0。</translation>
     </message>
     <message>
         <source>Cannot export to '%1': use .png or .svg</source>
@@ -2080,13 +2136,13 @@
         <source>Save the diagram at true scale as SVG or PNG</source>
         <translation>按真实比例尺保存为 SVG 或 PNG</translation>
     </message>
+    <message>
+        <source>Show the diagram in a large window, or dock it again; a typed scale μ is kept</source>
+        <translation>在大窗口中显示矢量多边形，或放回停靠位置；输入的比例尺 μ 保持不变</translation>
+    </message>
 </context>
 <context>
     <name>PositionsModel</name>
-    <message>
-        <source>No.</source>
-        <translation>序号</translation>
-    </message>
     <message>
         <source>Position</source>
         <translation>位置</translation>
@@ -2135,11 +2191,11 @@
     </message>
     <message>
         <source>4 Motion of the ram and cycle metrics</source>
-        <translation>4 刨头运动与运动特性</translation>
+        <translation>4 滑枕运动与运动特性</translation>
     </message>
     <message>
         <source>Ram displacement, velocity and acceleration over one crank revolution, one curve per speed</source>
-        <translation>曲柄转一周刨头的位移、速度和加速度线图，每个转速一条曲线</translation>
+        <translation>曲柄转一周滑枕的位移、速度和加速度线图，每个转速一条曲线</translation>
     </message>
     <message>
         <source>5 Kinematic and force analysis at the crank positions</source>
@@ -2183,7 +2239,7 @@
     </message>
     <message>
         <source>Stroke H</source>
-        <translation>刨头行程 H</translation>
+        <translation>滑枕行程 H</translation>
     </message>
     <message>
         <source>Frame O2O4 L2</source>
@@ -2195,15 +2251,15 @@
     </message>
     <message>
         <source>block on the lever tip in a slot of the ram</source>
-        <translation>导杆端部滑块在刨头滑槽中滑动</translation>
+        <translation>导杆端部滑块在滑枕滑槽中滑动</translation>
     </message>
     <message>
         <source>connecting rod from the lever tip to the ram</source>
-        <translation>连杆连接导杆端部与刨头</translation>
+        <translation>连杆连接导杆端部与滑枕</translation>
     </message>
     <message>
         <source>Ram drive</source>
-        <translation>刨头驱动方式</translation>
+        <translation>滑枕驱动方式</translation>
     </message>
     <message>
         <source>through the lever tip's extreme positions</source>
@@ -2215,7 +2271,7 @@
     </message>
     <message>
         <source>Ram guide line</source>
-        <translation>刨头导路</translation>
+        <translation>滑枕导路</translation>
     </message>
     <message>
         <source>trailing the tip</source>
@@ -2283,7 +2339,7 @@
     </message>
     <message>
         <source>guide above L2 + L1 (ram clears the crank)</source>
-        <translation>导路高于 L2 + L1（刨头不碰曲柄）</translation>
+        <translation>导路高于 L2 + L1（滑枕不碰曲柄）</translation>
     </message>
     <message>
         <source>guide ≤ L3 (block reaches the guide)</source>
@@ -2375,7 +2431,7 @@
     </message>
     <message>
         <source>Ram mass</source>
-        <translation>刨头质量</translation>
+        <translation>滑枕质量</translation>
     </message>
     <message>
         <source>Rod mass</source>
@@ -2455,7 +2511,7 @@
     </message>
     <message>
         <source>&lt;b&gt;Frame and signs.&lt;/b&gt; Lever pivot O4 at the origin, crank centre O2 at (0, L2) above it, ram guide the line y = guide height; the ram cuts toward +x and the crank turns clockwise. Crank angle φ = 0 at the limit position that starts the working stroke, increasing with rotation; 0 … 180° + θ is the working stroke. Ram x, v and a are positive in the cutting direction, x measured from the position at φ = 0. The lever angle ψ is measured from O4→O2, positive toward the cut. Links: 1 crank, 2 block, 3 lever, 4 rod, 5 ram. Forces are those on the named body, torque positive in the direction of rotation.</source>
-        <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，刨头导路为直线 y = 导路高度；刨头向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。刨头 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号：1 曲柄，2 滑块，3 导杆，4 连杆，5 刨头。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
+        <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，滑枕导路为直线 y = 导路高度；滑枕向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。滑枕 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号：1 曲柄，2 滑块，3 导杆，4 连杆，5 滑枕。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
@@ -3040,7 +3096,7 @@
     </message>
     <message>
         <source>Cutting force P</source>
-        <translation>切削阻力 P</translation>
+        <translation>切削力 P</translation>
     </message>
     <message>
         <source>Tool height below guide</source>
@@ -3088,7 +3144,7 @@
     </message>
     <message>
         <source>must be more than %1 to reach the guide line over the whole cycle</source>
-        <translation>必须大于 %1，才能在整个周期内够到导轨线</translation>
+        <translation>必须大于 %1，才能在整个周期内够到导路线</translation>
     </message>
     <message>
         <source>cannot be computed for these inputs; try other values</source>

@@ -36,14 +36,15 @@ def command(parent: QWidget, slot: Callable[[], object], keys: Keys = None) -> Q
 
 
 def stack_action(parent: QWidget, action: QAction, step: Callable[[], None],
-                 keys: QKeySequence.StandardKey, extra: str = "") -> QAction:
+                 keys: QKeySequence.StandardKey, *extra: str) -> QAction:
     """Undo/redo actions from the stack (their text and enabled state follow it),
     triggered through :func:`flush_typing` first."""
     action.triggered.disconnect()
     action.triggered.connect(lambda *_: (flush_typing(), step()))
     shortcuts = QKeySequence.keyBindings(keys)
-    if extra and QKeySequence(extra) not in shortcuts:    # the same key twice would be ambiguous
-        shortcuts.append(QKeySequence(extra))
+    for key in extra:
+        if QKeySequence(key) not in shortcuts:    # the same key twice would be ambiguous
+            shortcuts.append(QKeySequence(key))
     action.setShortcuts(shortcuts)
     parent.addAction(action)
     return action

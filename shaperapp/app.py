@@ -36,7 +36,8 @@ def _install_error_hook(app) -> None:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="shaperapp", description="Shaper Designer (GUI)")
     parser.add_argument("file", nargs="?", help="a design file to open")
-    parser.add_argument("--lang", choices=("en", "zh_CN"), help="UI language (default: system locale)")
+    parser.add_argument("--lang", choices=("en", "zh", "zh_CN"),
+                        help="UI language: en, or zh (= zh_CN) for Chinese (default: the system's)")
     parser.add_argument("--screenshot", metavar="PNG",
                         help="render the window to PNG once shown and laid out, then quit")
     parser.add_argument("--quit-after-show", action="store_true",
@@ -59,7 +60,8 @@ def main(argv: list[str] | None = None) -> int:
     from .model import DesignModel
 
     settings = QSettings()
-    language = args.lang or settings.value("language") or i18n.system_language()
+    language = (i18n.language_of(args.lang) if args.lang else None) or settings.value("language") \
+        or i18n.system_language()
     model = DesignModel()
     window = MainWindow(model, settings)
     window.set_language(language if language in dict(i18n.LANGUAGES) else "en")

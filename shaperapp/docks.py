@@ -23,6 +23,9 @@ WIDE = 1600                 # px: from this window width on, every pane has its 
 LIBRARY_MIN_PX = 280
 LIBRARY_SHARE = 0.45
 LIBRARY_FLOAT = QSize(1000, 560)    # the floating library on a screen too short to dock it
+# On a laptop the mechanism takes this share of the height above the tabbed results and
+# vector diagrams (0.54 left the polygons a 147 px canvas at 1366×768).
+MECHANISM_SHARE = 0.47
 TOP = Qt.DockWidgetArea.TopDockWidgetArea
 NAMES = ("inputs", "results", "mechanism", "polygons", "library")
 LEFT = Qt.DockWidgetArea.LeftDockWidgetArea
@@ -163,7 +166,7 @@ class Docks:
         else:
             w.tabifyDockWidget(d["results"], d["polygons"])
             d["results"].raise_()
-            w.resizeDocks([d["mechanism"]], [int(height * 0.54)], VERTICAL)
+            w.resizeDocks([d["mechanism"]], [int(height * MECHANISM_SHARE)], VERTICAL)
 
     def toggle_actions(self) -> list:
         """View-menu actions that hide and show each pane (Qt keeps them in step)."""

@@ -15,6 +15,7 @@ from PySide6.QtWidgets import QGraphicsRectItem, QWidget
 
 INVALID = QColor("#b8b8b8")
 COLORMAP = "viridis"
+TOP_MARGIN_PX = 10
 
 
 class HeatMap(pg.PlotWidget):
@@ -30,6 +31,8 @@ class HeatMap(pg.PlotWidget):
         item = self.getPlotItem()
         item.showGrid(False, False)
         item.setMenuEnabled(False)
+        # Room above the plot for half a tick label: the top tick ("3.0") was cut in half.
+        item.layout.setContentsMargins(2, TOP_MARGIN_PX, 2, 2)
         self.getViewBox().setMouseEnabled(x=False, y=False)
         self.getViewBox().disableAutoRange()            # the grid sets the range
         self.backdrop = QGraphicsRectItem()
@@ -70,9 +73,11 @@ class HeatMap(pg.PlotWidget):
     def set_marker(self, x: float | None, y: float | None) -> None:
         self.marker.setData([] if x is None or y is None else [x], [] if y is None or x is None else [y])
 
-    def set_labels(self, x_label: str, y_label: str) -> None:
+    def set_labels(self, x_label: str, y_label: str, value_label: str = "") -> None:
+        """The axes' titles and the colour bar's (the figure shown, with its unit)."""
         self.setLabel("bottom", x_label)
         self.setLabel("left", y_label)
+        self.colorbar.axis.setLabel(value_label)
 
     def cell_center(self, row: int, column: int) -> QPointF:
         """Data coordinates of a cell's centre."""

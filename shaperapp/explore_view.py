@@ -13,22 +13,26 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout, QGroupBox,
                                QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
                                QVBoxLayout, QWidget)
 
-from core.optimize import OBJECTIVES, tidy_optimum
+from core.optimize import on_bounds, tidy_optimum
 from core.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
 from .explore_jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .explore_map import HeatMap
 from .image_export import export_scene
 from .messages import describe
+from . import explore_names
 from .model import DesignModel
 from .worker import JobRunner
 
 REFRESH_MS = 300
+
+
+REQUIREMENTS = ("time_ratio", "stroke")      # K and H: given by the user, fixed by default
 
 
 class ExploreView(QWidget):
@@ -62,14 +66,20 @@ class ExploreView(QWidget):
         self.map = HeatMap(self)
         self.hover = QLabel()
         self.hover.setWordWrap(True)
-        self.hover.setMinimumHeight(48)
+        for label in (self.status, self.hover):      # two lines, beside each other above the map
+            label.setMinimumHeight(2 * label.fontMetrics().lineSpacing() + 4)
+            label.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
         self.objective = QComboBox()
         self.free = [QCheckBox(), QCheckBox()]
         for box in self.free:
             box.setChecked(True)
         self.optimize = QPushButton()
+        self.undo_proposal = QPushButton()      # back to the design before the optimum, one step
+        self.undo_proposal.setVisible(False)
+        self._proposal_index = -1               # the undo stack's index right after loading it
         self.optimum = QLabel()
         self.optimum.setWordWrap(True)
+        self.optimum.setVisible(False)
         self.box = QGroupBox()
         self._layout()
         self._refresh_timer = QTimer(self, singleShot=True, interval=REFRESH_MS)
@@ -77,6 +87,8 @@ class ExploreView(QWidget):
         self.compute.clicked.connect(self.start_map)
         self.cancel.clicked.connect(self.stop)
         self.optimize.clicked.connect(self.start_optimize)
+        self.undo_proposal.clicked.connect(self._undo_proposal)
+        model.undo_stack.indexChanged.connect(self._proposal_still_on_top)
         self.figure.currentIndexChanged.connect(self._figure_changed)
         for i, combo in enumerate(self.axis_names):
             combo.currentIndexChanged.connect(lambda _=0, i=i: self._axis_changed(i))
@@ -109,23 +121,28 @@ class ExploreView(QWidget):
             grid.addWidget(self.highs[i], row, 3)
         grid.addWidget(self._labels[3], 3, 0)
         grid.addWidget(self.count, 3, 1)
-        grid.addWidget(self.compute, 3, 2, 1, 2)
+        grid.addWidget(self.compute, 3, 2)
+        grid.addWidget(self.cancel, 3, 3)         # beside Compute: no row of its own
         bar = QHBoxLayout()
-        bar.addWidget(self.progress, 1)
-        bar.addWidget(self.cancel)
+        bar.addWidget(self.progress, 1)           # shown only while a job runs
         opt = QGridLayout(self.box)
         opt.addWidget(self._labels[4], 0, 0)
-        opt.addWidget(self.objective, 0, 1, 1, 2)
+        opt.addWidget(self.objective, 0, 1)
+        opt.addWidget(self.optimize, 0, 2)
         opt.addWidget(self.free[0], 1, 0)
         opt.addWidget(self.free[1], 1, 1)
-        opt.addWidget(self.optimize, 1, 2)
-        opt.addWidget(self.optimum, 2, 0, 1, 3)
+        opt.addWidget(self.optimum, 2, 0, 1, 2)
+        opt.addWidget(self.undo_proposal, 2, 2, Qt.AlignmentFlag.AlignTop)
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
         layout.addLayout(bar)
-        layout.addWidget(self.status)
+        # the read-out of the cell under the mouse beside the status, not in a band of its own
+        # under the map: the map had some 150 px of a 1366×768 screen
+        texts = QHBoxLayout()
+        texts.addWidget(self.status, 1)
+        texts.addWidget(self.hover, 2)
+        layout.addLayout(texts)
         layout.addWidget(self.map, 1)
-        layout.addWidget(self.hover)
         layout.addWidget(self.box)
 
     def changeEvent(self, event: QEvent) -> None:
@@ -133,19 +150,10 @@ class ExploreView(QWidget):
             self._retranslate()
         super().changeEvent(event)
 
-    def figure_names(self) -> dict[str, str]:
-        return {"pressure-angle": self.tr("Max pressure angle (°)"),
-                "accel": self.tr("Max |acceleration|, fastest speed (m/s²)"),
-                "v-work": self.tr("Max cutting speed, fastest speed (m/s)"),
-                "v-return": self.tr("Max return speed, fastest speed (m/s)"),
-                "peak-torque": self.tr("Peak crank torque, worst speed (N·m)"),
-                "flywheel": self.tr("Flywheel J_F, slowest speed (kg·m²)")}
-
-    def parameter_names(self) -> dict[str, str]:
-        return {"crank": self.tr("Crank L1 (mm)"), "time_ratio": self.tr("Time ratio K"),
-                "stroke": self.tr("Stroke H (mm)"), "frame": self.tr("Frame L2 (mm)"),
-                "lever": self.tr("Lever L3 (mm)"), "guide": self.tr("Guide above O4 (mm)"),
-                "rod_ratio": self.tr("Rod ratio L4/L3"), "rod": self.tr("Rod L4 (mm)")}
+    # the names live in explore_names.py (context "ExploreView", as before)
+    figure_names = staticmethod(explore_names.figure_names)
+    figure_titles = staticmethod(explore_names.figure_titles)
+    parameter_names = staticmethod(explore_names.parameter_names)
 
     def _retranslate(self) -> None:
         for label, text in zip(self._labels, (self.tr("Figure"), self.tr("Across"), self.tr("Up"),
@@ -157,6 +165,11 @@ class ExploreView(QWidget):
         self.box.setTitle(self.tr("Optimize over the map's ranges"))
         self.free[0].setText(self.tr("vary across"))
         self.free[1].setText(self.tr("vary up"))
+        for box in self.free:
+            box.setToolTip(self.tr("Let Optimize change this parameter. K and H are your "
+                                   "requirements: they stay fixed unless you tick this."))
+        self.undo_proposal.setText(self.tr("Undo proposal"))
+        self.undo_proposal.setToolTip(self.tr("Back to the design before Optimize (Edit › Undo does the same)"))
         self._fill_figures()
         names = self.parameter_names()
         for combo in self.axis_names:
@@ -195,7 +208,10 @@ class ExploreView(QWidget):
             self._axis_changed(i)
 
     def _axis_changed(self, i: int) -> None:
-        low, high = default_range(self.model.design, self.axis_names[i].currentData())
+        name = self.axis_names[i].currentData()
+        # Optimize starts from the user's requirements: K and H are varied only when freed.
+        self.free[i].setChecked(name not in REQUIREMENTS)
+        low, high = default_range(self.model.design, name)
         self.lows[i].setValue(low)
         self.highs[i].setValue(high)
         self._show_labels()
@@ -204,7 +220,7 @@ class ExploreView(QWidget):
         names = self.parameter_names()
         x, y = (c.currentData() for c in self.axis_names)
         if x and y:
-            self.map.set_labels(names[x], names[y])
+            self.map.set_labels(names[x], names[y], self.figure_titles().get(self.figure.currentData(), ""))
 
     # ---- the map ------------------------------------------------------------
     def axes(self) -> tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]]:
@@ -236,6 +252,7 @@ class ExploreView(QWidget):
             "%1", str(int(r.valid.sum()))).replace("%2", str(r.valid.size))
 
     def _figure_changed(self) -> None:
+        self._show_labels()                  # the colour bar's title
         key = self.figure.currentData()
         if self.result is None or key not in self.result.figures:
             self.start_map()
@@ -296,26 +313,37 @@ class ExploreView(QWidget):
         bounds = {name: (float(v[0]), float(v[-1])) for name, v, box in
                   ((x_name, x, self.free[0]), (y_name, y, self.free[1])) if box.isChecked()}
         if not bounds or x_name == y_name:
-            self.optimum.setText(self.tr("Choose one or two different free parameters."))
+            self._say(self.tr("Choose one or two different free parameters."))
             return
         objective = self.objective.currentData()
         masses = self.model.masses if FIGURES[objective][1] else None
         job = OptimizeJob(self.model.valid_spec, bounds, objective, self.model.rpms, masses)
-        self.optimum.clear()
+        self._say("")
         self._start(job, self.tr("Optimizing…"), busy=True)
 
     def _optimum_done(self, job: OptimizeJob, best) -> None:
         """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum)."""
         values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
-        unit = OBJECTIVES[best.objective][1]
-        start = "—" if best.start_value is None else f"{best.start_value:.5g} {unit}"
-        names = self.parameter_names()
-        where = ", ".join(f"{names[n]} = {v:.7g}" for n, v in values.items())
-        self.optimum.setText(self.tr("Best: %1 %2 at %3 (the design before: %4); loaded into "
-                                     "the form.").replace("%1", f"{value:.5g}")
-                             .replace("%2", unit).replace("%3", where).replace("%4", start))
+        text = explore_names.proposal_text(values, value, best, on_bounds(best, job.bounds))
+        self._say(text)
         self.status.setText(self._map_status())       # no longer "Optimizing…"
-        self.model.set_spec(**spec_changes(values))
+        self.model.set_spec(**spec_changes(values))   # one step on the undo stack
+        self._proposal_index = self.model.undo_stack.index()
+        self.undo_proposal.setVisible(True)
+        self._proposal_still_on_top(self._proposal_index)
+
+    def _say(self, text: str) -> None:
+        """The optimizer's message, hidden (no empty line under the map) when there is none."""
+        self.optimum.setText(text)
+        self.optimum.setVisible(bool(text))
+
+    def _undo_proposal(self) -> None:
+        if self.model.undo_stack.index() == self._proposal_index:
+            self.model.undo_stack.undo()
+
+    def _proposal_still_on_top(self, index: int) -> None:
+        """(the stack's indexChanged: the index comes with it, also while the stack goes)"""
+        self.undo_proposal.setEnabled(index == self._proposal_index)
 
     # ---- jobs -----------------------------------------------------------------
     def _start(self, job, text: str, busy: bool = False) -> None:

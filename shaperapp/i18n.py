@@ -14,8 +14,17 @@ from importlib import resources
 
 from PySide6.QtCore import QCoreApplication, QLibraryInfo, QLocale, QTranslator
 from PySide6.QtGui import QGuiApplication
+from PySide6.QtWidgets import QApplication
 
 LANGUAGES = (("en", "English"), ("zh_CN", "简体中文"))
+# What a command line accepts for --lang, everywhere (shaperapp, shaper report): one
+# spelling was zh_CN for the app and zh for the report.
+LANGUAGE_CHOICES = ("en", "zh", "zh_CN")
+
+
+def language_of(choice: str) -> str:
+    """A --lang choice as a UI language: "zh" and "zh_CN" are both simplified Chinese."""
+    return "zh_CN" if choice in ("zh", "zh_CN") else "en"
 _translators: dict[str, QTranslator] = {}
 _installed: list[QTranslator] = []
 
@@ -69,4 +78,9 @@ def set_language(language: str) -> bool:
             _installed.append(qt)
     if isinstance(app, QGuiApplication):
         QGuiApplication.setApplicationDisplayName(QCoreApplication.translate("app", "Shaper Designer"))
+    # Dates and numbers that Qt formats itself (the file dialog's dates) in the UI's language.
+    QLocale.setDefault(QLocale(language if language != "en" else "en_US"))
+    if isinstance(app, QApplication):
+        from . import dialog_titles
+        dialog_titles.install(app)
     return loaded

@@ -22,6 +22,7 @@ from core.library_store import LibraryError, resolve_path
 from .library_actions import LibraryActions
 from .library_dialogs import SaveDialog, ask_refused_library
 from .library_stale import StaleFiguresBar
+from .library_filter import core_filter
 from .library_table import LibraryTableModel
 from .model import DesignModel
 
@@ -67,6 +68,8 @@ class LibraryPane(QWidget):
         self.view.setAlternatingRowColors(True)
         self.view.setWordWrap(False)
         self.view.horizontalHeader().setResizeContentsPrecision(200)   # not all 10 000 rows
+        # sized again to the rows after every query (names were cut "base K…" after an add)
+        self.table_model.modelReset.connect(self.view.resizeColumnsToContents)
         self.view.doubleClicked.connect(lambda _: self.open_selected())
         self.view.selectionModel().selectionChanged.connect(self._update_enabled)
 
@@ -106,7 +109,7 @@ class LibraryPane(QWidget):
         layout.addWidget(self.view, 1)
 
         self.search_edit.textChanged.connect(lambda text: self.table_model.set_query(search=text))
-        self.filter_edit.textChanged.connect(lambda text: self.table_model.set_query(where=text))
+        self.filter_edit.textChanged.connect(lambda text: self.table_model.set_query(where=core_filter(text)))
         self.speed_box.currentTextChanged.connect(self._speed_changed)
         self.table_model.queryFailed.connect(self._show_query_error)
         self.actions.changed.connect(self._refresh)

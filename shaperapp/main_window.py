@@ -73,6 +73,7 @@ class MainWindow(QMainWindow):
                                   "polygons": self.polygon_view, "library": self.library})
         self.library_dock = self.docks["library"]
         self.library.compareRequested.connect(self._show_comparison)
+        self.polygon_view.enlargeRequested.connect(self._enlarge_polygons)
 
         self._build_actions()
         self.menus = Menus(self)
@@ -119,7 +120,7 @@ class MainWindow(QMainWindow):
         stack = self.model.undo_stack
         self.act_undo = stack_action(self, stack.createUndoAction(self, self.tr("Undo")), stack.undo, keys.Undo)
         self.act_redo = stack_action(self, stack.createRedoAction(self, self.tr("Redo")), stack.redo,
-                                     keys.Redo, "Ctrl+Shift+Z")
+                                     keys.Redo, "Ctrl+Shift+Z", "Ctrl+Y")     # both, as the README says
         stack.undoTextChanged.connect(self._show_undo_text)
         stack.redoTextChanged.connect(self._show_redo_text)
         self.act_goto = self._action(self.go_to_angle_dialog, "Ctrl+G")
@@ -251,6 +252,18 @@ class MainWindow(QMainWindow):
 
     def _on_saved(self, path: str) -> None:
         self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
+
+    def _enlarge_polygons(self) -> None:
+        """Float the vector diagrams over most of the screen, or dock them again."""
+        dock = self.docks["polygons"]
+        if dock.isFloating():
+            dock.setFloating(False)
+            return
+        room = window_state.available(self)
+        dock.setFloating(True)
+        size = room.size() * 0.7
+        dock.setGeometry(room.x() + (room.width() - size.width()) // 2,
+                         room.y() + (room.height() - size.height()) // 2, size.width(), size.height())
 
     def _show_comparison(self, candidates: list) -> None:
         self.compare.set_candidates(candidates)

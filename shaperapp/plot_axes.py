@@ -25,6 +25,8 @@ AXIS_WIDTH = 62          # fixed left-axis width so the stacked plots line up
 AXIS = QColor("#424242")
 GRID = QColor("#e3e3e3")
 LABEL_GAP_PX = 14.0      # free space between two tick labels along an axis
+TIGHT_GAP_PX = 3.0       # the least space between two labels, where the axis is too short for more
+MIN_LABELS = 3           # labels an axis keeps, closer together, where it has room for them
 NICE_STEPS = (1.0, 2.0, 5.0)                                      # × 10^k
 DEGREE_STEPS = (1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 60.0, 90.0, 180.0, 360.0)
 
@@ -71,14 +73,27 @@ class TickAxis(pg.AxisItem):
         metrics = QFontMetricsF(self.style["tickFont"] or QFont())
         horizontal = self.orientation in ("top", "bottom")
         per_px = span / size
+        lo, hi = sorted((minVal, maxVal))
+        # A label is drawn only where it lies wholly inside the axis: half a text height
+        # in from each end (as generateDrawSpecs draws it, 0.8 of the font's height).
+        inset = 0.4 * metrics.height() * per_px
+        tight = None          # the coarsest step giving MIN_LABELS labels with only TIGHT_GAP_PX
         for step in nice_steps(span, self._steps):
             if horizontal:
                 first = math.floor(minVal / step) * step
                 labels = self.tickStrings([first, first + step, maxVal, minVal], self.scale, step)
                 need = max(metrics.horizontalAdvance(s) for s in labels) + LABEL_GAP_PX
+                close = need
             else:
                 need = metrics.height() + 0.5 * LABEL_GAP_PX
+                close = 0.8 * metrics.height() + TIGHT_GAP_PX
+            count = math.floor((hi - inset) / step) - math.ceil((lo + inset) / step) + 1
+            if step / per_px >= close and count >= MIN_LABELS:
+                tight = step
             if step / per_px >= need:
+                # A short plot keeps three labels, closer together, rather than one or two.
+                if count < MIN_LABELS and tight is not None:
+                    step = tight
                 minor = step / (3.0 if self._steps is not None and step % 3 == 0 else 2.0)
                 return [(step, 0.0), (minor, 0.0)]
             if step > 2.0 * span:

@@ -16,6 +16,7 @@ catches up when shown, or when one of its read-back methods is called.
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Protocol
@@ -23,8 +24,8 @@ from typing import Protocol
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, QTimer, Signal
 from PySide6.QtGui import QAction, QColor, QPainter, QTextDocumentFragment
-from PySide6.QtWidgets import (QGraphicsView, QHBoxLayout, QLabel, QMenu, QSizePolicy,
-                               QToolButton, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QFrame, QGraphicsView, QHBoxLayout, QLabel, QMenu, QScrollArea,
+                               QSizePolicy, QToolButton, QVBoxLayout, QWidget)
 
 from .image_export import export_scene, render_scene
 from .model import DesignModel
@@ -40,6 +41,12 @@ Y_PADDING = 0.08         # share of the data's span added above and below when f
 # does not make every axis jump (and redraw its ticks and grid).
 SETTLE_SPAN = 1.25
 READOUT_DELAY_MS = 100   # the cursor read-out follows the animation at most 10 times a second
+# The least height of a plot's view box: room for three tick labels at the axis' closest
+# spacing (plot_axes.MIN_LABELS); a plot is also at least as tall as its axis title is
+# long. Where the pane is shorter than the plots need, the stack scrolls (16 speeds on a
+# 1366×768 laptop gave each Forces plot 60 px, two ticks and titles running together).
+MIN_PLOT_PX = 104
+TITLE_MARGIN_PX = 8      # free space along the axis beyond a title's ends
 
 
 @dataclass(frozen=True)
@@ -132,7 +139,12 @@ class PlotStack(QWidget):
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(0)
         layout.addLayout(self._bar)
-        layout.addWidget(self._view, 1)
+        self._scroll = QScrollArea()
+        self._scroll.setWidgetResizable(True)
+        self._scroll.setFrameShape(QFrame.Shape.NoFrame)
+        self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self._scroll.setWidget(self._view)
+        layout.addWidget(self._scroll, 1)
         layout.addWidget(self._readout)
         self._readout_timer = QTimer(self)
         self._readout_timer.setSingleShot(True)
@@ -184,6 +196,7 @@ class PlotStack(QWidget):
             series = plot.series
             plot.item.setLabel("left", f"{series.title()}<br>({series.unit})",
                                color=TEXT.name(), **{"font-size": "9pt"})
+        self._fit_heights()
         self._stale = True
         if self.isVisible():
             self.refresh()
@@ -229,6 +242,7 @@ class PlotStack(QWidget):
         if added:
             self._cache_static(True)
         self._fit_legends()
+        self._fit_heights()
         self.fit(settle=True)
         self._cursor_stale = True
         self._on_angle(model.angle_index)
@@ -301,6 +315,7 @@ class PlotStack(QWidget):
             row += 1
             last = series.key
         self._last = last
+        self._fit_heights()
         # An emptied layout shrank the central item to its minimum: back to the view's size.
         ci.setGeometry(self._view.range)
         self._show_x_axis()
@@ -319,9 +334,22 @@ class PlotStack(QWidget):
         for legend in self._legends.values():
             legend.fit_width(self._view.width())
 
+    def _fit_heights(self) -> None:
+        """Each plot at least MIN_PLOT_PX and its title's length tall; the view at least
+        as tall as its layout then needs, so the stack scrolls instead of squeezing."""
+        for plot in self._plots.values():
+            title = plot.item.getAxis("left").label.boundingRect().width() + 2 * TITLE_MARGIN_PX
+            plot.item.vb.setMinimumHeight(max(MIN_PLOT_PX, math.ceil(title)))
+        layout = self._view.ci.layout
+        layout.invalidate()
+        need = layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()
+        self._view.setMinimumHeight(math.ceil(need) + 2 * self._view.frameWidth())
+
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         if watched is self._view and event.type() == QEvent.Type.Resize:
             self._fit_legends()
+            if event.oldSize().width() != event.size().width():    # legends re-wrapped
+                self._fit_heights()
             for plot in self._plots.values():
                 plot.place_band_labels()
         return super().eventFilter(watched, event)

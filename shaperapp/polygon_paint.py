@@ -9,28 +9,22 @@ cannot disagree.
 """
 from __future__ import annotations
 
-import errno
 import math
-from pathlib import Path
 
-from PySide6.QtCore import (QBuffer, QByteArray, QCoreApplication, QIODevice, QLineF, QPointF,
-                            QRectF, QSize, Qt)
-from PySide6.QtGui import QColor, QFont, QFontMetricsF, QImage, QPainter, QPen, QPolygonF
-from PySide6.QtSvg import QSvgGenerator
-
-from core.atomic import atomic_write
-from core.polygons import Polygon, nice_scale, paper
+from PySide6.QtCore import QCoreApplication, QLineF, QPointF, QRectF, QSizeF, Qt
+from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen, QPolygonF
+from core.polygons import FINE_MANTISSAS, Polygon, nice_scale, paper
+from .polygon_labels import LabelPlacer
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
 
 ROLE_COLOURS = {"absolute": "#263238", "relative": "#1565c0", "normal": "#2e7d32",
                 "tangential": "#ef6c00", "coriolis": "#c2185b", "force": "#263238"}
 FORCE_COLOURS = ("#c62828", "#6a1b9a", "#1565c0", "#00838f", "#2e7d32", "#ef6c00", "#263238")
-SVG_DPI = 96.0
-PNG_PX_PER_MM = 8.0
-LEGEND_MM = 62.0
-MARGIN_MM = 8.0
-PAD_LINES = 2.0          # free space around the drawing, in text lines
+PAD_LINES = 1.0          # free space around the drawing for its labels, in text lines
+SMALL = 0.72             # super- and subscripts' size, × the symbol's
+SUP_RAISE = 0.45         # a superscript's baseline above the symbol's, × the font's ascent
+SUB_DROP = 0.9           # a subscript's baseline below the symbol's, × the font's descent
 _SUB = str.maketrans("0123456789'", "₀₁₂₃₄₅₆₇₈₉′")
 
 
@@ -64,11 +58,23 @@ def _split(key: str) -> tuple[str, str, str]:
     return base, sup, sub
 
 
+def symbol_extent(key: str, metrics: QFontMetricsF) -> tuple[float, float, float]:
+    """(width, height above the baseline, depth below it) of a symbol drawn by
+    ``draw_symbol`` in the font of ``metrics``, its super- and subscript included (the
+    small font's metrics are SMALL × the font's: they scale with the point size)."""
+    base, sup, sub = _split(key)
+    width = metrics.horizontalAdvance(base) + SMALL * max(
+        metrics.horizontalAdvance(sup) if sup else 0.0, metrics.horizontalAdvance(sub) if sub else 0.0)
+    above = metrics.ascent() * (SUP_RAISE + SMALL) if sup else metrics.ascent()
+    below = metrics.descent() * (SUB_DROP + SMALL) if sub else metrics.descent()
+    return width + 1.0, max(above, metrics.ascent()), max(below, metrics.descent())
+
+
 def draw_symbol(painter: QPainter, x: float, y: float, key: str, font: QFont) -> float:
     """Draw a vector symbol with its super- and subscript at baseline (x, y); returns its width."""
     base, sup, sub = _split(key)
     small = QFont(font)
-    small.setPointSizeF(font.pointSizeF() * 0.72)
+    small.setPointSizeF(font.pointSizeF() * SMALL)
     big_m, small_m = QFontMetricsF(font, painter.device()), QFontMetricsF(small, painter.device())
     painter.setFont(font)
     painter.drawText(QPointF(x, y), base)
@@ -76,11 +82,11 @@ def draw_symbol(painter: QPainter, x: float, y: float, key: str, font: QFont) ->
     width = 0.0
     if sup:
         painter.setFont(small)
-        painter.drawText(QPointF(x, y - big_m.ascent() * 0.45), sup)
+        painter.drawText(QPointF(x, y - big_m.ascent() * SUP_RAISE), sup)
         width = small_m.horizontalAdvance(sup)
     if sub:
         painter.setFont(small)
-        painter.drawText(QPointF(x, y + big_m.descent() * 0.9), sub)
+        painter.drawText(QPointF(x, y + big_m.descent() * SUB_DROP), sub)
         width = max(width, small_m.horizontalAdvance(sub))
     painter.setFont(font)
     return big_m.horizontalAdvance(base) + width
@@ -100,16 +106,46 @@ def _arrow_head(tip: QPointF, direction: QPointF, size: float) -> QPolygonF:
     return QPolygonF([tip, back + side, back - side])
 
 
+def limit_note(polygon: Polygon) -> str:
+    """Why a polygon looks degenerate at this position, or ''."""
+    largest = polygon.largest()
+    if largest <= 0.0:
+        return translate("PolygonPainter", "Every vector is zero at this position.")
+    at_rest = {v.key: v.magnitude <= 1e-9 * largest for v in polygon.vectors}
+    if polygon.kind == "velocity" and at_rest.get("v_A3"):
+        return translate("PolygonPainter", "Limit position: the lever is at rest (ω₃ = 0).")
+    if polygon.kind == "acceleration" and at_rest.get("a^k_A3A2") and at_rest.get("a^n_A3"):
+        return translate("PolygonPainter", "Limit position: ω₃ = 0, so aᵏ = aⁿ = 0.")
+    return ""
+
+
+def _caption(polygon: Polygon, scale: float, title: bool) -> list[str]:
+    place = f"φ = {polygon.crank_deg:.2f}°, {polygon.rpm:g} r/min"
+    if title:
+        return [f"{titles()[polygon.kind]}   {place}", scale_caption(polygon, scale)]
+    return [f"{place},  {scale_caption(polygon, scale)}"]
+
+
+def _note_rect(rect: QRectF, top: float, note: str, metrics: QFontMetricsF) -> QRectF:
+    if not note:
+        return QRectF(rect.left(), top, rect.width(), 0.0)
+    flags = int(Qt.AlignmentFlag.AlignLeft) | int(Qt.TextFlag.TextWordWrap)
+    height = metrics.boundingRect(QRectF(0, 0, rect.width(), 1e6), flags, note).height()
+    return QRectF(rect.left(), top, rect.width(), height)
+
+
 def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: float,
                   px_per_mm: float | None = None, font: QFont | None = None,
-                  legend: bool = True, centre_mm: tuple[float, float] | None = None) -> float:
+                  legend: bool = True, centre_mm: tuple[float, float] | None = None,
+                  title: bool = True) -> float:
     """Draw ``polygon`` at μ = ``scale`` into ``rect`` (device units).
 
     ``px_per_mm`` maps a drawing millimetre to device units (true scale on paper);
     None fits the drawing into the space left by the caption and legend.
     ``centre_mm`` is the point of the drawing (in mm at μ = 1, i.e. in the
     polygon's unit) put at the centre of the drawing area; default the centre
-    of this polygon. Returns the px-per-mm used.
+    of this polygon. ``title`` off: one caption line without the polygon's name
+    (the screen names it in its selector). Returns the px-per-mm used.
     """
     font = QFont(font) if font is not None else QFont(painter.font())
     if font.pointSizeF() <= 0:
@@ -120,12 +156,15 @@ def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: floa
     painter.setRenderHint(QPainter.RenderHint.Antialiasing)
     painter.setFont(font)
     painter.setPen(QColor("#263238"))
-    head = f"{titles()[polygon.kind]}   φ = {polygon.crank_deg:.2f}°, {polygon.rpm:g} r/min"
-    painter.drawText(QPointF(rect.left(), rect.top() + metrics.ascent()), head)
-    painter.drawText(QPointF(rect.left(), rect.top() + line + metrics.ascent()),
-                     scale_caption(polygon, scale))
+    for i, text in enumerate(_caption(polygon, scale, title)):
+        painter.drawText(QPointF(rect.left(), rect.top() + i * line + metrics.ascent()), text)
     rows = _legend_rows(polygon)
-    area, legend_box = layout(rect, polygon, metrics, legend)
+    area, legend_box, note_box = layout(rect, polygon, metrics, legend, title)
+    if note_box.height() > 0:
+        painter.setPen(QColor("#b71c1c"))
+        painter.drawText(note_box, int(Qt.AlignmentFlag.AlignLeft) | int(Qt.TextFlag.TextWordWrap),
+                         limit_note(polygon))
+        painter.setPen(QColor("#263238"))
     pts = paper(polygon, scale)
     box = _bounds(pts)
     pad = PAD_LINES * line
@@ -144,6 +183,8 @@ def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: floa
     painter.translate(centre.x() - mid.x() * px_per_mm, centre.y() + mid.y() * px_per_mm)
     painter.scale(px_per_mm, -px_per_mm)            # drawing mm, y up
     head_mm = max(1.2 * line, 6.0) / px_per_mm
+    heads: list[QRectF] = []
+    segments: list[QLineF] = []
     for i, vec in enumerate(polygon.vectors):
         colour = vector_colour(polygon, i)
         pen = QPen(colour)
@@ -156,54 +197,81 @@ def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: floa
         if vec.magnitude == 0.0:
             continue
         painter.drawLine(QLineF(tail, tip))
+        segments.append(QLineF(to_device(pts[vec.tail]), to_device(pts[vec.head])))
         length = math.hypot(tip.x() - tail.x(), tip.y() - tail.y())
         if length > 1e-9:
             painter.setBrush(colour)
             solid = QPen(colour)
             solid.setCosmetic(True)
             painter.setPen(solid)
-            painter.drawPolygon(_arrow_head(tip, tip - tail, min(head_mm, 0.45 * length)))
+            arrow = _arrow_head(tip, tip - tail, min(head_mm, 0.45 * length))
+            painter.drawPolygon(arrow)
+            heads.append(painter.transform().map(arrow).boundingRect())
     painter.restore()
     painter.setPen(QColor("#263238"))
     painter.setFont(font)
-    if polygon.kind == "force":
-        for i, vec in enumerate(polygon.vectors):
-            a, b = to_device(pts[vec.tail]), to_device(pts[vec.head])
-            mid_pt = (a + b) / 2.0
-            painter.setPen(vector_colour(polygon, i))
-            draw_symbol(painter, mid_pt.x() + 0.3 * line, mid_pt.y() - 0.2 * line, vec.key, font)
-    else:
-        _label_points(painter, pts, to_device, metrics)
+    fixed = heads + [QRectF(rect.left(), rect.top(), rect.width(), note_box.bottom() - rect.top())]
     if legend_box is not None:
-        _draw_legend(painter, legend_box, polygon, rows, font, line)
+        fixed.append(legend_box)
+    placer = LabelPlacer(area, line, fixed, segments, outer=rect)
+    if polygon.kind == "force":
+        _label_vectors(painter, polygon, pts, to_device, placer, font)
+    else:
+        _label_points(painter, pts, to_device, metrics, placer)
+    if legend_box is not None:
+        _draw_legend(painter, legend_box, polygon, rows, font)
     painter.restore()
     return px_per_mm
 
 
+def _legend_pitch(polygon: Polygon, metrics: QFontMetricsF) -> float:
+    """Distance between two legend rows: the tallest superscript of a row stays clear
+    of the deepest subscript of the row above (they collided at one text line)."""
+    extents = [symbol_extent(v.key, metrics) for v in polygon.vectors] or [(0.0, 0.0, 0.0)]
+    return max(e[1] for e in extents) + max(e[2] for e in extents) + 0.12 * metrics.height()
+
+
+def _legend_width(polygon: Polygon, metrics: QFontMetricsF) -> float:
+    return max((symbol_extent(k, metrics)[0] + metrics.horizontalAdvance(t)
+                for k, t in _legend_rows(polygon)), default=0.0) + 2.0 * metrics.height()
+
+
 def layout(rect: QRectF, polygon: Polygon, metrics: QFontMetricsF,
-           legend: bool = True) -> tuple[QRectF, QRectF | None]:
-    """(drawing area, legend box or None) of ``paint_polygon`` in ``rect``: the caption
-    on top, the legend beside the drawing when the space is wide, else below it."""
+           legend: bool = True, title: bool = True) -> tuple[QRectF, QRectF | None, QRectF]:
+    """(drawing area, legend box or None, limit note box) of ``paint_polygon`` in
+    ``rect``: the caption and any note on top, the legend beside the drawing when the
+    space is wide, else below it."""
     line = metrics.height()
-    area = QRectF(rect.left(), rect.top() + 2.4 * line, rect.width(), rect.height() - 2.4 * line)
+    note = _note_rect(rect, rect.top() + len(_caption(polygon, 1.0, title)) * line + 0.2 * line,
+                      limit_note(polygon), metrics)
+    top = note.bottom() + 0.3 * line
+    area = QRectF(rect.left(), top, rect.width(), max(rect.bottom() - top, 1.0))
     if not legend:
-        return area, None
+        return area, None, note
     rows = _legend_rows(polygon)
-    legend_w = max((metrics.horizontalAdvance(k.replace("^", "").replace("_", "")) + metrics.horizontalAdvance(t)
-                    for k, t in rows), default=0.0) + 2.6 * line
-    if area.width() > area.height() * 1.1:
-        box = QRectF(area.right() - legend_w, area.top(), legend_w, area.height())
-        area.setRight(area.right() - legend_w - line)
+    pitch = _legend_pitch(polygon, metrics)
+    legend_w = _legend_width(polygon, metrics)
+    tall = pitch * len(rows) + 0.4 * line
+    if area.width() - legend_w > 0.9 * area.height():
+        box = QRectF(area.right() - legend_w, area.top(), legend_w, tall)
+        area.setRight(area.right() - legend_w - 0.5 * line)
     else:
-        box = QRectF(area.left(), area.bottom() - line * (len(rows) + 0.5), area.width(),
-                     line * (len(rows) + 0.5))
-        area.setBottom(box.top() - 0.5 * line)
-    return area, box
+        box = QRectF(area.left(), area.bottom() - tall, area.width(), tall)
+        area.setBottom(box.top() - 0.3 * line)
+    return area, box, note
 
 
-def auto_scale(polygon: Polygon, rect: QRectF, metrics: QFontMetricsF, px_per_mm: float) -> float:
+def needed_height(polygon: Polygon, metrics: QFontMetricsF, rect: QRectF, title: bool = True) -> float:
+    """How far below ``rect.top()`` ``paint_polygon`` draws in ``rect``: a legend beside
+    the drawing may run on below ``rect``."""
+    _, box, _ = layout(rect, polygon, metrics, True, title)
+    return max(rect.bottom(), box.bottom() if box is not None else rect.bottom()) - rect.top()
+
+
+def auto_scale(polygon: Polygon, rect: QRectF, metrics: QFontMetricsF, px_per_mm: float,
+               title: bool = True) -> float:
     """The round μ at which ``paint_polygon`` fills ``rect`` with this polygon at true scale."""
-    area, _ = layout(rect, polygon, metrics)
+    area, _, _ = layout(rect, polygon, metrics, True, title)
     return fit_scale(_bounds(paper(polygon, 1.0)), area, px_per_mm, PAD_LINES * metrics.height())
 
 
@@ -213,12 +281,13 @@ def fit_scale(extent: QRectF, area: QRectF, px_per_mm: float, pad: float) -> flo
     width_mm = max(area.width() - 2 * pad, 1.0) / px_per_mm
     height_mm = max(area.height() - 2 * pad, 1.0) / px_per_mm
     need = max(extent.width() / width_mm, extent.height() / height_mm)
-    return nice_scale(need, 1.0)
+    return nice_scale(need, 1.0, FINE_MANTISSAS)
 
 
-def _label_points(painter: QPainter, pts, to_device, metrics: QFontMetricsF) -> None:
-    """Point letters, pushed away from the drawing's centre; points closer than a text
-    line on the page share one label ("p′, c′")."""
+def _label_points(painter: QPainter, pts, to_device, metrics: QFontMetricsF,
+                  placer: LabelPlacer) -> None:
+    """Point letters, away from the drawing's centre where free; points closer than a
+    text line on the page share one label ("p′, c′")."""
     line = metrics.height()
     groups: list[tuple[QPointF, tuple[float, float], list[str]]] = []
     for name, p in pts.items():
@@ -233,12 +302,29 @@ def _label_points(painter: QPainter, pts, to_device, metrics: QFontMetricsF) -> 
     cy = sum(p[1] for p in pts.values()) / len(pts)
     for dev, (x, y), names in groups:
         text = ", ".join(names)
-        dx, dy = x - cx, y - cy
-        norm = math.hypot(dx, dy) or 1.0
-        w = metrics.horizontalAdvance(text)
-        ox = dx / norm * (0.5 * w + 0.45 * line) - 0.5 * w
-        oy = -dy / norm * 0.9 * line + 0.35 * line
-        painter.drawText(QPointF(dev.x() + ox, dev.y() + oy), text)
+        prefer = math.atan2(-(y - cy), x - cx) if (x, y) != (cx, cy) else -math.pi / 2
+        size = QSizeF(metrics.horizontalAdvance(text), metrics.ascent() + metrics.descent())
+        box = placer.place([dev], size, prefer)
+        painter.drawText(QPointF(box.left(), box.top() + metrics.ascent()), text)
+
+
+def _label_vectors(painter: QPainter, polygon: Polygon, pts, to_device, placer: LabelPlacer,
+                   font: QFont) -> None:
+    """Each force's symbol beside its line, on the side away from the polygon's centre."""
+    cx = sum(p[0] for p in pts.values()) / len(pts)
+    cy = sum(p[1] for p in pts.values()) / len(pts)
+    centre = to_device((cx, cy))
+    for i, vec in enumerate(polygon.vectors):
+        a, b = to_device(pts[vec.tail]), to_device(pts[vec.head])
+        anchors = [a + (b - a) * t for t in (0.5, 0.3, 0.7)]
+        mid = anchors[0]
+        normal = math.atan2(b.y() - a.y(), b.x() - a.x()) + math.pi / 2
+        if math.cos(normal) * (mid.x() - centre.x()) + math.sin(normal) * (mid.y() - centre.y()) < 0:
+            normal += math.pi
+        width, above, below = symbol_extent(vec.key, QFontMetricsF(font, painter.device()))
+        box = placer.place(anchors, QSizeF(width, above + below), normal)
+        painter.setPen(vector_colour(polygon, i))
+        draw_symbol(painter, box.left(), box.top() + above, vec.key, font)
 
 
 def _legend_rows(polygon: Polygon) -> list[tuple[str, str]]:
@@ -248,9 +334,12 @@ def _legend_rows(polygon: Polygon) -> list[tuple[str, str]]:
             for v in polygon.vectors]
 
 
-def _draw_legend(painter: QPainter, box: QRectF, polygon: Polygon, rows, font: QFont,
-                 line: float) -> None:
-    y = box.top() + line
+def _draw_legend(painter: QPainter, box: QRectF, polygon: Polygon, rows, font: QFont) -> None:
+    metrics = QFontMetricsF(font, painter.device())
+    line = metrics.height()
+    pitch = _legend_pitch(polygon, metrics)
+    above = max(symbol_extent(v.key, metrics)[1] for v in polygon.vectors)
+    y = box.top() + 0.2 * line + above
     for i, (key, text) in enumerate(rows):
         colour = vector_colour(polygon, i)
         pen = QPen(colour)
@@ -262,56 +351,4 @@ def _draw_legend(painter: QPainter, box: QRectF, polygon: Polygon, rows, font: Q
         painter.setPen(QColor("#263238"))
         width = draw_symbol(painter, box.left() + 1.2 * line, y, key, font)
         painter.drawText(QPointF(box.left() + 1.6 * line + width, y), text)
-        y += line
-
-
-def drawing_size_mm(polygon: Polygon, scale: float) -> tuple[float, float]:
-    """Page size for a true-scale export: the drawing plus margins, caption and legend."""
-    box = _bounds(paper(polygon, scale))
-    width = box.width() + 2 * MARGIN_MM + LEGEND_MM + 12.0
-    height = max(box.height() + 2 * MARGIN_MM + 14.0, 8.0 * len(polygon.vectors) + 20.0)
-    return max(width, 120.0), height
-
-
-def export_polygon(path: str, polygon: Polygon, scale: float) -> None:
-    """Write ``polygon`` at true scale: SVG (sized in mm) or a raster image by suffix,
-    atomically (rendered in memory, then ``atomic_write``); OSError names the path."""
-    target = Path(path)
-    suffix = target.suffix.lower()
-    w_mm, h_mm = drawing_size_mm(polygon, scale)
-    data = QByteArray()
-    buffer = QBuffer(data)
-    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
-    if suffix == ".svg":
-        px = SVG_DPI / 25.4
-        size = QSize(math.ceil(w_mm * px), math.ceil(h_mm * px))
-        device = QSvgGenerator()
-        device.setOutputDevice(buffer)
-        device.setSize(size)
-        device.setViewBox(QRectF(0, 0, size.width(), size.height()))
-        device.setResolution(int(SVG_DPI))
-        device.setTitle(titles()[polygon.kind])
-    elif suffix in (".png", ".jpg", ".jpeg", ".bmp"):
-        px = PNG_PX_PER_MM
-        size = QSize(math.ceil(w_mm * px), math.ceil(h_mm * px))
-        device = QImage(size, QImage.Format.Format_ARGB32)
-        device.setDotsPerMeterX(round(px * 1000))
-        device.setDotsPerMeterY(round(px * 1000))
-        device.fill(Qt.GlobalColor.white)
-    else:
-        raise ValueError(translate("PolygonPainter", "Cannot export to '%1': use .png or .svg").replace("%1", suffix))
-    painter = QPainter(device)
-    try:
-        font = QFont(painter.font())
-        font.setPointSizeF(9.0)
-        rect = QRectF(MARGIN_MM * px, MARGIN_MM * px / 2, size.width() - 2 * MARGIN_MM * px,
-                      size.height() - MARGIN_MM * px)
-        if suffix == ".svg":
-            painter.fillRect(QRectF(0, 0, size.width(), size.height()), Qt.GlobalColor.white)
-        paint_polygon(painter, rect, polygon, scale, px_per_mm=px, font=font)
-    finally:
-        painter.end()
-    if suffix != ".svg" and not device.save(buffer, suffix[1:].upper()):
-        raise OSError(errno.EIO, f"could not encode {target}", str(target))
-    buffer.close()
-    atomic_write(target, bytes(data))
+        y += pitch

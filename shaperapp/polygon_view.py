@@ -13,14 +13,15 @@ import math
 
 from PySide6.QtCore import QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import QFontMetricsF, QPainter, QPaintEvent
-from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QLabel, QLineEdit,
-                               QMessageBox, QSizePolicy, QStyle, QToolButton, QWidget)
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QFrame, QLabel, QLineEdit,
+                               QMessageBox, QScrollArea, QSizePolicy, QStyle, QToolButton, QWidget)
 
 from core.dynamics import masses_for_design
 from core.polygons import KINDS, Polygon, polygons
 from .model import DesignModel
 from .view_parts import bar_over_body, fill_speed_combo
-from .polygon_paint import auto_scale, export_polygon, paint_polygon, titles
+from .polygon_export import export_polygon
+from .polygon_paint import auto_scale, needed_height, paint_polygon, titles
 
 
 class _Canvas(QWidget):
@@ -29,7 +30,7 @@ class _Canvas(QWidget):
     def __init__(self, view: "PolygonView") -> None:
         super().__init__(view)
         self._view = view
-        self.setMinimumSize(240, 140)
+        self.setMinimumSize(200, 140)
         self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
         self.setAttribute(Qt.WidgetAttribute.WA_OpaquePaintEvent)
 
@@ -44,6 +45,7 @@ class PolygonView(QWidget):
     """Kind and speed selectors, the scale (auto or typed), the drawing and an export button."""
 
     scaleChanged = Signal()
+    enlargeRequested = Signal()      # the window floats the pane large, or docks it again
 
     def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -59,11 +61,22 @@ class PolygonView(QWidget):
         self.unit_label = QLabel()
         self.export_button = QToolButton()      # an icon: the pane beside the scheme is narrow
         self.export_button.setIcon(self.style().standardIcon(QStyle.StandardPixmap.SP_DialogSaveButton))
+        self.enlarge_button = QToolButton()
+        self.enlarge_button.setIcon(self.style().standardIcon(QStyle.StandardPixmap.SP_TitleBarMaxButton))
+        self.enlarge_button.clicked.connect(self.enlargeRequested)
         self.canvas = _Canvas(self)
         self._solved: tuple = (None, {}, None, None)      # (key, polygons, design, loads)
         self._stale = True
-        bar_over_body(self, (self.kind_box, self.speed_box), self.export_button, self.canvas,
-                      (self.scale_label, self.scale_edit, self.unit_label, self.auto_box))
+        # The canvas is at least as tall as its caption and whole legend (the acceleration
+        # polygon's last rows were cut off in a short pane): the pane scrolls beyond that.
+        self.scroll = QScrollArea()
+        self.scroll.setWidgetResizable(True)
+        self.scroll.setFrameShape(QFrame.Shape.NoFrame)
+        self.scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.scroll.setWidget(self.canvas)
+        bar_over_body(self, (self.kind_box, self.speed_box), self.export_button, self.scroll,
+                      (self.scale_label, self.scale_edit, self.unit_label, self.auto_box,
+                       self.enlarge_button))
         self.kind_box.currentIndexChanged.connect(self._on_kind)
         self.speed_box.currentIndexChanged.connect(lambda _: self._refresh())
         self.auto_box.toggled.connect(self._on_auto)
@@ -71,7 +84,7 @@ class PolygonView(QWidget):
         self.export_button.clicked.connect(self._export_dialog)
         model.resultsChanged.connect(self._on_results)
         model.forcesChanged.connect(self._on_results)
-        model.angleChanged.connect(lambda _: self.canvas.update())
+        model.angleChanged.connect(self._on_angle)
         self._retranslate()
         self._fill_speeds()
         self._show_scale()
@@ -117,7 +130,7 @@ class PolygonView(QWidget):
         if self._user_scale[kind] is None and self.scale_edit.text() != f"{scale:g}":
             self.scale_edit.setText(f"{scale:g}")     # the automatic μ follows angle and size
         paint_polygon(painter, rect, polygon, scale, px_per_mm=self._px_per_mm(),
-                      font=self.canvas.font())
+                      font=self.canvas.font(), title=False)
 
     # ---- internals ------------------------------------------------------------
     def _px_per_mm(self) -> float:
@@ -137,10 +150,26 @@ class PolygonView(QWidget):
     def _auto_scale(self, kind: str) -> float:
         """Round μ so that the polygon at this position fills the canvas at true scale."""
         metrics = QFontMetricsF(self.canvas.font(), self.canvas)
-        return auto_scale(self.polygon(kind), self.canvas_rect(), metrics, self._px_per_mm())
+        return auto_scale(self.polygon(kind), self.canvas_rect(), metrics, self._px_per_mm(), title=False)
+
+    def _fit_canvas(self) -> None:
+        """The canvas' least height for this polygon at this width (see __init__)."""
+        metrics = QFontMetricsF(self.canvas.font(), self.canvas)
+        port = self.scroll.viewport()
+        rect = QRectF(0.0, 0.0, port.width(), max(port.height(), 140)).adjusted(10, 8, -10, -8)
+        need = needed_height(self.polygon(), metrics, rect, title=False) + 16
+        self.canvas.setMinimumHeight(max(140, math.ceil(need)))
 
     def canvas_rect(self) -> QRectF:
-        return QRectF(self.canvas.rect()).adjusted(10, 8, -10, -8)
+        """Where the drawing goes: the canvas' visible height (a legend taller than that
+        runs on below, where the pane scrolls)."""
+        height = min(self.canvas.height(), max(self.scroll.viewport().height(), 140))
+        return QRectF(0.0, 0.0, self.canvas.width(), height).adjusted(10, 8, -10, -8)
+
+    def _on_angle(self, _: int) -> None:
+        if self.isVisible():
+            self._fit_canvas()          # a note appears at a limit position
+        self.canvas.update()
 
     def _on_results(self) -> None:
         """New results: shown now if the view is visible, else when it is shown (the
@@ -160,17 +189,20 @@ class PolygonView(QWidget):
         self._catch_up()
 
     def _refresh(self) -> None:
+        self._fit_canvas()
         self._show_scale()
         self.canvas.update()
 
     def resizeEvent(self, event) -> None:
         super().resizeEvent(event)
+        self._fit_canvas()
         self._show_scale()
 
     def _fill_speeds(self) -> None:
         fill_speed_combo(self.speed_box, self.model.rpms)
 
     def _on_kind(self, _: int) -> None:
+        self._fit_canvas()
         self._show_scale()
         self.canvas.update()
 
@@ -233,5 +265,7 @@ class PolygonView(QWidget):
         self.auto_box.setToolTip(self.tr("The round scale that fills the view at this position"))
         self.export_button.setText(self.tr("Export…"))
         self.export_button.setToolTip(self.tr("Save the diagram at true scale as SVG or PNG"))
+        self.enlarge_button.setToolTip(self.tr(
+            "Show the diagram in a large window, or dock it again; a typed scale μ is kept"))
         self._fill_speeds()
         self.canvas.update()

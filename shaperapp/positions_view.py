@@ -9,20 +9,55 @@ which pastes into Excel/WPS as cells.
 """
 from __future__ import annotations
 
+import math
+
+import numpy as np
 from PySide6.QtCore import QAbstractTableModel, QEvent, QModelIndex, QPersistentModelIndex, Qt, QTimer
 from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
                                QSpinBox, QTableView, QWidget)
 
 from core.dynamics import masses_for_design
-from core.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, number_text,
-                            position_table, positions)
+from core.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
+                            positions)
 from .column_titles import column_titles, special_titles
 from .model import DesignModel
 from .view_parts import bar_over_body, fill_speed_combo
 
 SPECIAL_FILL = QColor("#eef3f8")
 HIDDEN = ("rpm",)        # one speed at a time: shown in the speed box
+DIGITS = 5               # significant digits of a column's largest value
+MAX_DECIMALS = 6
+
+
+def column_texts(values: np.ndarray, digits: int = DIGITS) -> list[str]:
+    """One column's numbers with one number of decimals: ``digits`` significant digits
+    for its largest value, so 0 reads "0.000" beside "30.000" (not "0"), and the
+    decimal points line up. NaN is ''."""
+    finite = np.abs(values[np.isfinite(values)])
+    largest = float(finite.max()) if finite.size else 0.0
+    decimals = (min(max(digits - 1 - math.floor(math.log10(largest)), 0), MAX_DECIMALS)
+                if largest > 0.0 else digits - 2)
+    out = []
+    for value in values:
+        if not math.isfinite(value):
+            out.append("")
+            continue
+        text = f"{value:.{decimals}f}"
+        out.append(text[1:] if text.startswith("-") and float(text) == 0.0 else text)   # no "-0.000"
+    return out
+
+
+def row_title(number: int, name: str, specials: dict[str, str]) -> str:
+    """A row's identity, shown in the row header that stays in view while the values
+    scroll sideways: its number, or the special position's name on two lines."""
+    if number:
+        return str(number)
+    text = specials.get(name, name)
+    if len(text) > 18 and " " in text:          # two lines: the header stays narrow
+        cut = min((i for i, ch in enumerate(text) if ch == " "), key=lambda i: abs(i - len(text) / 2))
+        return text[:cut] + "\n" + text[cut + 1:]
+    return text
 
 
 class PositionsModel(QAbstractTableModel):
@@ -31,6 +66,8 @@ class PositionsModel(QAbstractTableModel):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self._header: list[str] = []
+        self._corner = ""
+        self._rows: list[str] = []          # row titles: number or special position
         self._cells: list[list[str]] = []
         self._special: list[bool] = []
         self._tips: list[str] = []
@@ -41,14 +78,14 @@ class PositionsModel(QAbstractTableModel):
         cols = [i for i, c in enumerate(table.columns) if c not in HIDDEN]
         k = table.positions.crank_deg.size
         shown = display_values(table.data)[speed * k:(speed + 1) * k]
-        self._header = [self.tr("No."), self.tr("Position")] + [titles.get(table.columns[i], table.columns[i])
-                                                              for i in cols]
-        self._tips = ["", ""] + [table.columns[i] for i in cols]
-        self._cells, self._special = [], []
-        for row, (number, name) in enumerate(zip(table.positions.number, table.positions.name)):
-            lead = [str(number) if number else "", specials.get(name, "")]
-            self._cells.append(lead + [number_text(shown[row, i]) for i in cols])
-            self._special.append(bool(name))
+        self._header = [titles.get(table.columns[i], table.columns[i]) for i in cols]
+        self._corner = self.tr("Position")
+        self._tips = [table.columns[i] for i in cols]
+        texts = [column_texts(shown[:, i]) for i in cols]
+        self._rows = [row_title(int(number), name, specials)
+                      for number, name in zip(table.positions.number, table.positions.name)]
+        self._cells = [list(row) for row in zip(*texts)] if texts else [[] for _ in self._rows]
+        self._special = [bool(name) for name in table.positions.name]
         self.endResetModel()
 
     def rowCount(self, parent=QModelIndex()) -> int:
@@ -63,15 +100,19 @@ class PositionsModel(QAbstractTableModel):
         if role == Qt.ItemDataRole.DisplayRole:
             return self._cells[index.row()][index.column()]
         if role == Qt.ItemDataRole.TextAlignmentRole:
-            left = index.column() == 1
-            return int((Qt.AlignmentFlag.AlignLeft if left else Qt.AlignmentFlag.AlignRight)
-                       | Qt.AlignmentFlag.AlignVCenter)
+            return int(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
         if role == Qt.ItemDataRole.BackgroundRole and self._special[index.row()]:
             return SPECIAL_FILL
         return None
 
     def headerData(self, section, orientation, role=Qt.ItemDataRole.DisplayRole):
-        if orientation != Qt.Orientation.Horizontal:
+        if orientation == Qt.Orientation.Vertical:
+            if role == Qt.ItemDataRole.DisplayRole:
+                return self._rows[section]
+            if role == Qt.ItemDataRole.TextAlignmentRole:
+                return int(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
+            if role == Qt.ItemDataRole.BackgroundRole and self._special[section]:
+                return SPECIAL_FILL
             return None
         if role == Qt.ItemDataRole.DisplayRole:
             return self._header[section]
@@ -79,10 +120,16 @@ class PositionsModel(QAbstractTableModel):
             return self._tips[section] or None
         return None
 
+    def corner(self) -> str:
+        """The title of the row titles' column ("Position")."""
+        return self._corner
+
     def tsv(self, rows: list[int] | None = None) -> str:
-        """Tab-separated text with the header; ``rows`` (default all) in table order."""
+        """Tab-separated text with the header, the row titles first (on one line);
+        ``rows`` (default all) in table order."""
         rows = range(len(self._cells)) if rows is None else sorted(rows)
-        lines = ["\t".join(self._header)] + ["\t".join(self._cells[r]) for r in rows]
+        lines = ["\t".join([self._corner] + self._header)] + [
+            "\t".join([self._rows[r].replace("\n", " ")] + self._cells[r]) for r in rows]
         return "\r\n".join(lines) + "\r\n"
 
 
@@ -105,7 +152,11 @@ class PositionsView(QWidget):
         self.view.setModel(self.table_model)
         self.view.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.view.setAlternatingRowColors(False)
-        self.view.verticalHeader().setVisible(False)
+        # The row titles (number or special position) are the vertical header: they stay
+        # in view while the values scroll sideways (the No. and Position columns scrolled
+        # away, and Position was the widest column, empty in the numbered rows).
+        self.view.verticalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
+        self.view.setCornerButtonEnabled(False)
         self.view.horizontalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignCenter)
         self.view.setWordWrap(False)
         bar_over_body(self, (self.speed_box, self.count_label, self.count_box), self.copy_button,
@@ -171,6 +222,7 @@ class PositionsView(QWidget):
         row = self.view.currentIndex().row()
         self.table_model.set_table(table, speed)
         self.view.resizeColumnsToContents()
+        self.view.resizeRowsToContents()
         if 0 <= row < self.table_model.rowCount():
             self.view.selectionModel().blockSignals(True)
             self.view.selectRow(row)

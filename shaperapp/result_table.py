@@ -17,6 +17,7 @@ from PySide6.QtWidgets import (QAbstractItemView, QAbstractScrollArea, QHeaderVi
                                QTableWidget, QTableWidgetItem, QWidget)
 
 CELL_PADDING = 16            # px beside a cell's text (margins of the item delegate and grid)
+TITLES_SHARE = 0.3           # row titles are wrapped when their column keeps at least this share
 RIGHT = Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter
 
 
@@ -39,6 +40,8 @@ class ResultTable(QTableWidget):
         rows.setDefaultAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
         self.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
         self.horizontalHeader().setStretchLastSection(False)
+        self._rows: list[str] = []          # the row titles as given (shown wrapped where needed)
+        self._wrap_width = -1               # px the shown titles are wrapped to (-1: not wrapped)
         # The owner's hook to bring content it fills lazily up to date before a copy.
         self.before_read: Callable[[], None] = lambda: None
         self.copy_action = QAction(self)
@@ -58,8 +61,10 @@ class ResultTable(QTableWidget):
         if self.rowCount() != len(rows) or self.columnCount() != len(columns):
             self.setRowCount(len(rows))
             self.setColumnCount(len(columns))
-        if self._titles(Qt.Orientation.Vertical) != list(rows):
-            self.setVerticalHeaderLabels(list(rows))
+        if self._rows != list(rows):
+            self._rows = list(rows)
+            self._wrap_width = -1
+            self.setVerticalHeaderLabels(self._rows)
         if self._titles(Qt.Orientation.Horizontal) != list(columns):
             self.setHorizontalHeaderLabels(list(columns))
         for row, tip in enumerate(tips or ()):
@@ -85,6 +90,8 @@ class ResultTable(QTableWidget):
         return item.text() if item else ""
 
     def _titles(self, orientation: Qt.Orientation) -> list[str]:
+        if orientation == Qt.Orientation.Vertical:
+            return list(self._rows)
         count = self.rowCount() if orientation == Qt.Orientation.Vertical else self.columnCount()
         item = self.verticalHeaderItem if orientation == Qt.Orientation.Vertical else self.horizontalHeaderItem
         return [item(i).text() if item(i) else "" for i in range(count)]
@@ -102,6 +109,8 @@ class ResultTable(QTableWidget):
                 width = max(width, metrics.horizontalAdvance(self.text(row, col)) + CELL_PADDING)
             widths.append(width)
         room = self.viewport().width()
+        self._wrap_titles(widths)
+        room = self.width() - 2 * self.frameWidth() - self.verticalHeader().sizeHint().width()
         spare = room - sum(widths)
         if widths and spare > 0:
             widths = [w + spare // len(widths) for w in widths]
@@ -111,6 +120,29 @@ class ResultTable(QTableWidget):
             if header.sectionSize(col) != width:
                 header.resizeSection(col, width)
         self._fit_height(sum(widths) > room)
+
+    def _wrap_titles(self, widths: list[int]) -> None:
+        """Long row titles on two lines where that lets every column be seen (with two
+        speeds the forces table's 60 r/min column was cut off behind its long titles);
+        not where the columns scroll anyway (many speeds)."""
+        metrics = QFontMetrics(self.verticalHeader().font())
+        total = self.width() - 2 * self.frameWidth()
+        shown = [self.verticalHeaderItem(r).text() for r in range(self.rowCount()) if self.verticalHeaderItem(r)]
+        widest = max((metrics.horizontalAdvance(line) for t in shown for line in t.split("\n")), default=0)
+        padding = max(self.verticalHeader().sizeHint().width() - widest, 0)   # the style's margins
+        longest = max((metrics.horizontalAdvance(t) for t in self._rows), default=0) + padding
+        free = total - sum(widths)
+        width = free - padding if longest > free >= TITLES_SHARE * total else -1
+        if width == self._wrap_width:
+            return
+        self._wrap_width = width
+        line = QFontMetrics(self.font()).height() + 6
+        for row, title in enumerate(self._rows):
+            shown = title if width < 0 else _two_lines(title, metrics, width)
+            item = self.verticalHeaderItem(row)
+            if item is not None and item.text() != shown:
+                item.setText(shown)
+            self.verticalHeader().resizeSection(row, line + (metrics.height() if "\n" in shown else 0))
 
     def _fit_height(self, scrolls: bool) -> None:
         height = (self.horizontalHeader().sizeHint().height() + self.verticalHeader().length()
@@ -170,3 +202,14 @@ class ResultTable(QTableWidget):
         self.copy_action.setText(self.tr("Copy"))
         self.copy_action.setToolTip(self.tr("Copy the selected cells (or the whole table) with their "
                                             "titles as tab-separated text"))
+
+
+def _two_lines(title: str, metrics: QFontMetrics, width: int) -> str:
+    """``title`` broken at the space that keeps its longer line shortest, if it is wider
+    than ``width`` px."""
+    if metrics.horizontalAdvance(title) <= width or " " not in title:
+        return title
+    spaces = [i for i, ch in enumerate(title) if ch == " "]
+    cut = min(spaces, key=lambda i: max(metrics.horizontalAdvance(title[:i]),
+                                        metrics.horizontalAdvance(title[i + 1:])))
+    return title[:cut] + "\n" + title[cut + 1:]

@@ -111,6 +111,7 @@ class SchemeWidget(QWidget):
         self._dimensions = DimensionLayer(add, self)
         self._forces = ForceLayer(add, self._view, self)
         self._view.sigTransformChanged.connect(self._dimensions.separate_chain_labels)
+        self._view.sigTransformChanged.connect(self._mechanism.place_joint_labels)   # text is screen-sized
         self._retranslate()
         model.resultsChanged.connect(self._on_results)
         model.angleChanged.connect(self._on_angle)

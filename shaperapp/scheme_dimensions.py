@@ -21,7 +21,7 @@ from PySide6.QtGui import QColor, QPainterPath, QPen, Qt
 
 from .model import DesignModel
 from .plot_curves import CurveItem
-from .scheme_draw import DIM, Box, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
+from .scheme_draw import DIM, Box, Pair, Z_DIM, arrow_head, body, overlaps, pen, segments, text_box
 from .scheme_mechanism import Geometry
 from .style import fmt
 
@@ -87,6 +87,8 @@ class DimensionLayer(QObject):
             add(item)
         self._visible = True
         self._chain: tuple[float, tuple] | None = None   # (y of O2, mid text positions of L2, h)
+        self._chain_top = 0.0                             # y of the chain's top end (the guide)
+        self._l1_home: tuple = (0.0, 0.0)                 # L1's label at the end of its leader
 
     def update(self, model: DesignModel, g: Geometry) -> None:
         """Place the dimensions of the model's design; texts are translated here."""
@@ -126,6 +128,8 @@ class DimensionLayer(QObject):
                 item.setAnchor(dim.anchor)
             item.setPos(*dim.text_pos)
         self._chain = (float(p1[1]), tuple(dim.text_pos for dim in dims[:2]))
+        self._chain_top = float(p2[1])
+        self._l1_home = tuple(dims[NAMES.index("L1")].text_pos)
         self.separate_chain_labels()
 
     def separate_chain_labels(self) -> None:
@@ -137,16 +141,43 @@ class DimensionLayer(QObject):
             return
         shared, mids = self._chain
         l2, h = self._texts[:2]
-        for item, pos in zip((l2, h), mids):
+        for item, pos in zip((l2, h, self.texts()["L1"]), (*mids, self._l1_home)):
             item.setPos(*pos)
+        # h's text no higher than the chain's top: a short h ("h = 206.0" beside a 3.7 m
+        # lever) reached above the drawing and was cut at the view's top edge
+        above = text_box(h)[3] - self._chain_top
+        if above > 0.0:
+            h.setPos(mids[1][0], mids[1][1] - above)
         boxes = [text_box(l2), text_box(h)]                  # (left, right, bottom, top), mm
         line = boxes[1][1] - boxes[1][0]                     # the vertical text's line height
         overlap = min(boxes[0][3], boxes[1][3]) - max(boxes[0][2], boxes[1][2]) + 0.3 * line
-        if overlap <= 0.0:
+        if overlap > 0.0:
+            longer = 1 if above <= 0.0 and abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
+            x, y = self._texts[longer].pos().x(), self._texts[longer].pos().y()
+            self._texts[longer].setPos(x, y + math.copysign(overlap, mids[longer][1] - shared))
+        l1, box = self.texts()["L1"], text_box(h)
+        other = text_box(l1)
+        # a short h beside L1's label (K near 1) hidden under it: L1 moves down (a touch of
+        # their corners, as at K = 1.6, leaves both readable and L1 where it was)
+        if overlaps(box, other) and min(other[3], box[3]) - max(other[2], box[2]) > 0.5 * line:
+            l1.setPos(l1.pos().x(), l1.pos().y() - (other[3] - box[2]) - 0.3 * line)
+        self._clear_of_l1(l2, line)
+
+    def _clear_of_l1(self, l2: pg.TextItem, line: float) -> None:
+        """L1's label (at the end of its leader, left of the crank) may reach over the L2
+        label's upper end, hiding its last digits ("L2 = 282" for 282.0 at K = 1.6): L2's
+        label then moves down its part (not below it), and L1's right if still needed."""
+        l1 = self.texts()["L1"]
+        box, other = text_box(l2), text_box(l1)
+        if not overlaps(box, other):
             return
-        longer = 1 if abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
-        x, y = mids[longer]
-        self._texts[longer].setPos(x, y + math.copysign(overlap, y - shared))
+        # down, but not below its part (O4's level); what is left, L1 moves right
+        down = min(box[3] - other[2] + 0.3 * line, max(box[2], 0.0))
+        x, y = l2.pos().x(), l2.pos().y()
+        l2.setPos(x, y - down)
+        box = text_box(l2)
+        if overlaps(box, other):
+            l1.setPos(l1.pos().x() + box[1] - other[0] + 0.3 * line, l1.pos().y())
 
     def set_visible(self, visible: bool) -> None:
         self._visible = visible

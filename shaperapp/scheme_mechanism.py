@@ -38,6 +38,7 @@ UNITS_PER_LEVER = 40.0     # drawing unit u = L3 / 40
 RETURN_LIFT = 0.35         # the return stroke of the tool path is drawn this many u higher
 LIMIT_TOL_DEG = 1e-6       # a grid angle this close to a limit position counts as on it
 MOVING = ("A", "B", "C")
+JOINT_LABEL_CLEAR = 1.4      # × u from a joint to its label's near edge: past the lever's half width (0.8 u)
 PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin marker radii, u
 
 
@@ -70,6 +71,8 @@ class _Frames:
     rod_deg: np.ndarray | None  # (n,) rotation of the rod body about B
     ram_x: np.ndarray           # (n,) x of the ram's reference point C
     labels: np.ndarray          # (n, k, 2) where the labels A, B[, C] go
+    away: np.ndarray            # (n, 2, 2) unit directions of A's and O2's labels from their joints
+    u: float                    # the drawing's unit, mm
     tip: np.ndarray             # (n, 2) tool tip; the return stroke lifted by RETURN_LIFT·u
     corners: np.ndarray         # indices where the tool path turns (stroke ends), ascending
 
@@ -80,6 +83,8 @@ class MechanismLayer(QObject):
     def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.frames: _Frames | None = None
+        self._index = 0
+        self._o2 = np.zeros(2)
         self._ground = CurveItem(pen(FRAME, 1.2), connect="pairs")
         self._guide_line = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashDotLine))
         self._ghost_lines = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashLine), connect="pairs")
@@ -173,7 +178,7 @@ class MechanismLayer(QObject):
         self._path_all.set_data(tip[:, 0], tip[:, 1])
         self.pins["O4"].setPos(0.0, 0.0)
         self.pins["O2"].setPos(*o2)
-        self.labels["O2"].setPos(o2[0] + 2.0 * u, o2[1] + 0.9 * u)
+        self._o2 = o2
         self.labels["O4"].setPos(2.4 * u, 0.9 * u)
 
         chain = min(x0, float(a[:, 0].min()), float(b[:, 0].min()), -2.0 * u) - 2.5 * u
@@ -217,11 +222,17 @@ class MechanismLayer(QObject):
         a, b, c = sh.crank_pin.T, sh.lever_tip.T, sh.ram_joint.T
         rod = design.rod is not None
         o2 = np.array([0.0, design.frame])
-        radial = (a - o2) / design.crank
         along = b / design.lever
+        normal = np.stack([along[:, 1], -along[:, 0]], axis=1)        # across the lever
         side = -1.0 if rod and design.rod_side == "leading" else 1.0   # B's label away from the rod
-        across = side * np.stack([along[:, 1], -along[:, 0]], axis=1)
-        labels = [a + 1.9 * u * radial, b + 2.0 * u * across]
+        across = side * normal
+        # O2 lies on one side of the lever, the crank runs from it to A on the lever: A's
+        # label goes across the lever to the other side, O2's away from the lever (they sat
+        # on the lever at φ = 100° and under it at 120°, when placed along the crank).
+        o2_side = np.sign(np.einsum("ij,ij->i", normal, o2 - a))
+        o2_side[o2_side == 0.0] = 1.0
+        toward_o2 = normal * o2_side[:, None]
+        labels = [a - 1.0 * u * toward_o2, b + 2.0 * u * across]   # A: moved on in show()
         if rod:
             labels.append(c + np.array([0.0, -2.4 * u]))
         tip = np.stack([c[:, 0] + tip_local[0], np.full(len(c), design.guide + tip_local[1])], axis=1)
@@ -235,7 +246,7 @@ class MechanismLayer(QObject):
             crank_deg=np.degrees(np.arctan2(a[:, 1] - o2[1], a[:, 0] - o2[0])),
             lever_deg=90.0 - np.degrees(sh.lever),
             rod_deg=np.degrees(sh.rod) if rod else None, ram_x=c[:, 0],
-            labels=np.stack(labels, axis=1), tip=tip,
+            labels=np.stack(labels, axis=1), away=np.stack([-toward_o2, toward_o2], axis=1), u=u, tip=tip,
             corners=np.unique(np.concatenate([turns, turns + 1])))
 
     @staticmethod
@@ -273,6 +284,19 @@ class MechanismLayer(QObject):
         return pairs
 
     # ---- per frame ---------------------------------------------------
+    def place_joint_labels(self) -> None:
+        """A's and O2's labels just clear of the lever (and so of the crank) along their
+        direction, however large the text is in mm at this zoom."""
+        f, index = self.frames, self._index
+        if f is None or index >= len(f.tip):
+            return
+        joints = {"A": f.joints[index, 0], "O2": self._o2}
+        for k, name in enumerate(("A", "O2")):
+            label, direction = self.labels[name], f.away[index, k]
+            left, right, bottom, top = text_box(label)
+            reach = 0.5 * (abs(direction[0]) * (right - left) + abs(direction[1]) * (top - bottom))
+            label.setPos(*(joints[name] + direction * (JOINT_LABEL_CLEAR * f.u + reach)))
+
     def show(self, index: int) -> bool:
         """Move everything to crank-angle ``index`` with setPos/setRotation/setPath only;
         False when there is no such index (nothing moved)."""
@@ -284,6 +308,8 @@ class MechanismLayer(QObject):
             self.pins[name].setPos(x, y)
         for name, (x, y) in zip(MOVING, f.labels[index]):
             self.labels[name].setPos(x, y)
+        self._index = index
+        self.place_joint_labels()
         self._crank.setRotation(f.crank_deg[index])
         self._lever.setRotation(f.lever_deg[index])
         self._block_a.setPos(joints[0, 0], joints[0, 1])

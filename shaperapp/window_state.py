@@ -36,11 +36,13 @@ def fits(window: QMainWindow) -> bool:
 
 def restore(window: QMainWindow, settings: QSettings, arrange) -> bool:
     """Saved geometry if it fits the screen, else the opening size centred; the saved dock
-    state if it is of this version, else ``arrange(size)``, the default arrangement.
+    state if it is of this version and its window fits, else ``arrange(size)``, the
+    default arrangement for this screen.
     True when a saved dock state was restored."""
     geometry = settings.value("geometry")
     restored = isinstance(geometry, QByteArray) and not geometry.isEmpty() and window.restoreGeometry(geometry)
-    if not restored or not fits(window):
+    fitted = restored and fits(window)
+    if not fitted:
         size = opening_size(window)
         window.resize(size)
         frame = QRect(window.frameGeometry().topLeft(), size)
@@ -48,7 +50,10 @@ def restore(window: QMainWindow, settings: QSettings, arrange) -> bool:
         window.move(frame.topLeft())
     arrange(window.size())
     state = settings.value("windowState")
-    if isinstance(state, QByteArray) and not state.isEmpty():
+    # The panes' layout belongs to the window it was saved with: one saved on a large
+    # screen squeezed the inputs and results on a laptop, so where that window does not
+    # fit this screen the default layout for this screen is used instead.
+    if fitted and isinstance(state, QByteArray) and not state.isEmpty():
         # False, and nothing changed, for a state of another version.
         return window.restoreState(state, STATE_VERSION)
     return False

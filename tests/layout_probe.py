@@ -16,7 +16,8 @@ import argparse
 import json
 import sys
 
-from PySide6.QtCore import QPoint, QRect, QSettings, QSize
+from PySide6.QtCore import QPoint, QRect, QRectF, QSettings, QSize, Qt
+from PySide6.QtGui import QImage, QPainter
 from PySide6.QtWidgets import QApplication, QScrollArea
 
 
@@ -80,8 +81,110 @@ def compare_report(app: QApplication, window) -> dict:
                       "title": [shown.x(), shown.y(), shown.width(), shown.height()],
                       "title_text": title.toPlainText() if title.isVisible() else ""}
     legend = view.plots._legend.sceneBoundingRect()
+    table = view.table
+    whole = [r for r in range(table.rowCount()) if table.rowViewportPosition(r) >= 0
+             and table.rowViewportPosition(r) + table.rowHeight(r) <= table.viewport().height()]
     return {"plots": plots, "legend": [legend.x(), legend.y(), legend.width(), legend.height()],
-            "legend_rows": len(view.plots._legend.items)}
+            "legend_rows": len(view.plots._legend.items),
+            "table_rows": table.rowCount(), "table_rows_shown": len(whole)}
+
+
+def box(r: QRectF) -> list[float]:
+    return [r.x(), r.y(), r.width(), r.height()]
+
+
+def tick_labels(axis) -> list[list[float]]:
+    """The boxes of the tick labels the axis draws now (its own drawing specification)."""
+    image = QImage(8, 8, QImage.Format.Format_ARGB32)
+    painter = QPainter(image)
+    try:
+        specs = axis.generateDrawSpecs(painter)
+    finally:
+        painter.end()
+    if specs is None:
+        return []
+    return [box(axis.mapRectToScene(rect)) for rect, _, text in specs[2] if text.strip()]
+
+
+def stacks_report(app: QApplication, window) -> dict:
+    """Every plot of the Kinematics (with the lever plots shown) and Forces tabs: its view
+    box, the left axis' title and tick-label boxes, the lowest plot's x tick labels (scene
+    px), and whether the stack's view is as tall as its plots need (it scrolls)."""
+    out = {}
+    for name, view in (("kinematics", window.plots), ("forces", window.forces)):
+        window.tabs.setCurrentWidget(view)
+        stack = view._stack
+        for series in stack._series:
+            stack.set_plot_visible(series.key, True)
+        settle(app)
+        stack.ensure_current()
+        settle(app)
+        plots = []
+        for series in stack._series:
+            item = stack._plots[series.key].item
+            left, bottom = item.getAxis("left"), item.getAxis("bottom")
+            title = left.label
+            plots.append({"key": series.key, "box": box(item.vb.sceneBoundingRect()),
+                          "title": box(title.sceneBoundingRect()) if title.isVisible() else None,
+                          "title_text": title.toPlainText(),
+                          "ticks": tick_labels(left),
+                          "x_ticks": tick_labels(bottom) if bottom.style["showValues"] else None})
+        layout = stack._view.ci.layout
+        out[name] = {"plots": plots, "view_height": stack._view.height(),
+                     "needed_height": layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()}
+    return out
+
+
+def polygons_report(app: QApplication, window, angles: list[float]) -> list[dict]:
+    """The vector-diagram pane as shown: per kind and crank angle, what its canvas paints
+    (text ink boxes, arrowhead boxes, the vectors' box; recorded, device px), the canvas
+    and the visible part of its scroll area."""
+    from paint_recorder import PaintRecorder, drawing_box
+    window.docks["polygons"].show()
+    window.docks["polygons"].raise_()
+    settle(app)
+    view = window.polygon_view
+    out = []
+    for kind in ("velocity", "acceleration", "force"):
+        view.set_kind(kind)
+        for angle in angles:
+            window.model.set_angle_deg(angle)
+            settle(app)
+            canvas = view.canvas
+            image = QImage(canvas.size(), QImage.Format.Format_ARGB32)
+            image.setDotsPerMeterX(round(canvas.logicalDpiX() / 0.0254))
+            image.setDotsPerMeterY(round(canvas.logicalDpiY() / 0.0254))
+            painter = PaintRecorder(image)
+            painter.setFont(canvas.font())
+            view.paint(painter, view.canvas_rect())
+            painter.end()
+            port = view.scroll.viewport()
+            out.append({"kind": kind, "angle": angle, "canvas": size(canvas.size()),
+                        "viewport": size(port.size()), "dock": size(window.docks["polygons"].size()),
+                        "texts": [[t, box(b)] for t, b in painter.texts],
+                        "heads": [box(h) for h in painter.heads],
+                        "drawing": box(drawing_box(painter.lines))})
+    return out
+
+
+def explore_report(app: QApplication, window) -> dict:
+    """The Explore tab after its first map: the map's height against the tab's, the colour
+    bar's title and every tick label's box against the map's view (scene px)."""
+    import time
+    view = window.explore
+    window.tabs.setCurrentWidget(view)
+    deadline = time.monotonic() + 60
+    while (view.result is None or view.runner.job is not None) and time.monotonic() < deadline:
+        settle(app, 5)
+        time.sleep(0.02)
+    settle(app)
+    heat = view.map
+    shown = heat.mapToScene(heat.viewport().rect()).boundingRect()
+    axes = {"left": heat.getPlotItem().getAxis("left"), "bottom": heat.getPlotItem().getAxis("bottom"),
+            "colorbar": heat.colorbar.axis}
+    return {"map_height": heat.height(), "tab_height": view.height(),
+            "colorbar_title": heat.colorbar.axis.label.toPlainText() if heat.colorbar.axis.label.isVisible() else "",
+            "view": box(shown), "ticks": {name: tick_labels(axis) for name, axis in axes.items()}}
 
 
 def main(argv: list[str]) -> int:
@@ -92,6 +195,10 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--resize", help="WxH before closing (to save that geometry)")
     parser.add_argument("--library", action="store_true", help="then show the library pane and report it")
     parser.add_argument("--compare", action="store_true", help="then compare two designs and report the plots")
+    parser.add_argument("--stacks", action="store_true", help="report the plots of each case")
+    parser.add_argument("--variant", help="the ram drive (block, rod)")
+    parser.add_argument("--explore", action="store_true", help="report the Explore tab's map")
+    parser.add_argument("--polygons", help="crank angles (°, comma separated): report the vector diagrams")
     args = parser.parse_args(argv)
     from shaperapp.style import configure_plots
     configure_plots()
@@ -103,6 +210,8 @@ def main(argv: list[str]) -> int:
     window.show()
     settle(app)
     report = {"screen": rect(window.screen().availableGeometry()), "language": args.lang, "cases": []}
+    if args.variant:
+        window.model.set_spec(variant=args.variant)
     for speeds in args.speeds:
         window.model.set_rpms([float(s) for s in speeds.split(",")])
         settle(app)
@@ -113,8 +222,12 @@ def main(argv: list[str]) -> int:
             "frame": rect(window.frameGeometry()), "size": size(window.size()),
             "minimum": size(window.minimumSizeHint()),
             "results_visible": window.metrics.isVisible(),
+            "results_area": window.dockWidgetArea(window.docks["results"]).name,
+            "results_tabbed_with": [d.objectName() for d in window.tabifiedDockWidgets(window.docks["results"])],
             "tables": [table_report(app, t) for t in window.metrics.tables()],
         })
+        if args.stacks:
+            report["cases"][-1]["stacks"] = stacks_report(app, window)
     if args.library:
         window.library_dock.show()
         settle(app)
@@ -124,6 +237,10 @@ def main(argv: list[str]) -> int:
                              "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
     if args.compare:
         report["compare"] = compare_report(app, window)
+    if args.explore:
+        report["explore"] = explore_report(app, window)
+    if args.polygons:
+        report["polygons"] = polygons_report(app, window, [float(a) for a in args.polygons.split(",")])
     if args.resize:
         w, h = (int(v) for v in args.resize.split("x"))
         window.resize(w, h)

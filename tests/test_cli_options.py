@@ -79,3 +79,70 @@ def test_ascii_console_gets_spelled_out_symbols(command):
                          encoding="ascii")
     assert out.returncode == 0, out.stderr
     assert "theta" in out.stdout or "m/s^2" in out.stdout
+
+
+# ---- habits of a command line (issue 20 item 9) -----------------------------------------
+@pytest.mark.parametrize("args,expected", [
+    (["synth", *SEED003[:2], "--k", "1.4", "--stroke", "300"], "--k: unknown option; did you mean --K?"),
+    (["library", "list", "--srot", "name"], "--srot: unknown option; did you mean --sort?"),
+    (["synht", "--crank", "100"], "did you mean synth?"),
+    (["optimize", *SEED003, "--objective", "acel", "--vary", "crank=80:120"], "did you mean accel?"),
+    (["synth", *SEED003, "--zzz", "3"], "--zzz: unknown option; see 'shaper synth --help'"),
+])
+def test_a_mistyped_option_gets_the_close_match(args, expected):
+    """`--k 1.4` said only "unrecognized arguments"."""
+    from cli_runner import shaper_in_process
+    status, out, err = shaper_in_process(*args)
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and expected in err, err
+
+
+def _verbs():
+    from core.cli import _command_modules
+    verbs = [(name, []) for name in _command_modules() if name != "library"]
+    from core.cli.cmd_library import ACTIONS
+    return verbs + [("library", [action]) for action, _, _ in ACTIONS]
+
+
+@pytest.mark.parametrize("command,action", _verbs())
+def test_every_verb_has_an_example_that_parses(command, action, capsys):
+    """The library's ten actions had no example; every example must be a valid command."""
+    from core.cli import build_parser
+    parser = build_parser()
+    with pytest.raises(SystemExit):
+        parser.parse_args([command, *action, "--help"])
+    text = capsys.readouterr().out
+    assert "example:" in text, (command, action)
+    examples = [line.strip() for line in text.split("example:")[1].splitlines()
+                if line.strip().startswith(f"shaper {' '.join([command, *action])}")]
+    assert examples, text
+    import shlex
+    for example in examples:
+        parser.parse_args(shlex.split(example)[1:])       # raises UsageError if it is wrong
+    assert "seed" not in text.lower() and "README" not in text          # the user's words
+
+
+def test_library_list_help_gives_the_filter_syntax_and_sort_fields(capsys):
+    from core.cli import build_parser
+    from core.library_query import FIELDS, OPERATORS
+    with pytest.raises(SystemExit):
+        build_parser().parse_args(["library", "list", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    for key in FIELDS:
+        if key != "tag":
+            assert key in text, key
+    assert all(op in text for op in OPERATORS) and "tag=TAG" in text
+
+
+@pytest.mark.parametrize("lang", ["en", "zh", "zh_CN"])
+def test_every_lang_option_takes_both_spellings_of_chinese(lang, capsys):
+    """`report --lang` took en|zh, `shaperapp --lang` en|zh_CN."""
+    from core.cli import build_parser
+    from shaperapp import i18n
+    args = build_parser().parse_args(["report", *SEED003, "-o", "r.pdf", "--lang", lang])
+    assert args.lang == lang
+    assert i18n.language_of(lang) == ("en" if lang == "en" else "zh_CN")
+    from shaperapp.app import main
+    with pytest.raises(SystemExit) as done:
+        main(["--lang", lang, "--help"])          # parsed before any window: a choice error exits 2
+    assert done.value.code == 0 and "zh_CN" in capsys.readouterr().out

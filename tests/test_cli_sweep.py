@@ -175,3 +175,21 @@ def test_refusal_reason_names_the_option_as_analyze_does():
         alone = shaper("analyze", "--dims", f"{row['crank']},300,350", "--rpm", "40")
         assert alone.returncode == 2
         assert alone.stderr.strip() == "shaper: error: " + row["reason"]
+
+
+def test_optimize_says_when_the_optimum_sits_on_a_bound():
+    """The pressure angle keeps falling as the rod grows: with rod-ratio up to 1 the optimum
+    is rod-ratio = 1, the end of the range, and was printed as if it were a true optimum
+    (issue 20 item 4). A guide height has an interior optimum and is not flagged."""
+    args = ["optimize", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rod-ratio", "0.3",
+            "--objective", "pressure-angle"]
+    wide = json.loads(shaper(*args, "--vary", "rod-ratio=0.2:1", "--json").stdout)
+    assert wide["vary"]["rod-ratio"] == pytest.approx(1.0, abs=1e-4)
+    assert wide["on_bound"] == {"rod-ratio": "upper"}
+    narrow = json.loads(shaper(*args, "--vary", "rod-ratio=0.2:0.8", "--json").stdout)
+    assert narrow["on_bound"] == {"rod-ratio": "upper"}
+    assert narrow["objective_value"] > wide["objective_value"]          # beyond the bound is better
+    text = shaper(*args, "--vary", "rod-ratio=0.2:1").stdout
+    assert "upper bound" in text and "widen the range" in text
+    inside = json.loads(shaper(*args, "--vary", "guide=450:700", "--json").stdout)
+    assert inside["on_bound"] == {} and 460 < inside["vary"]["guide"] < 690

@@ -268,3 +268,46 @@ def test_the_status_line_follows_a_language_switch(qtbot, view):
         assert "designs" not in view.status.text()
     finally:
         i18n.set_language("en")
+
+
+def test_optimize_keeps_k_and_h_and_proposes_one_undoable_step(qtbot, model, tmp_path):
+    """Optimize varied K by default and loaded K = 1.05, a design nobody asked for; the
+    optimum on the end of a range was not flagged (issue 20 item 4). The pressure angle
+    falls as the rod grows (shaper optimize finds rod-ratio = 1 in 0.2…1), so in 0.2…0.8
+    its optimum is the upper end; over the guide height it is inside 450…700 mm."""
+    model.set_spec(variant="rod", rod_input="ratio", rod_ratio=0.3)
+    view = shown(qtbot, ExploreView(model), 760, 820)
+    try:
+        view.axis_names[0].setCurrentIndex(view.axis_names[0].findData("rod_ratio"))
+        view.axis_names[1].setCurrentIndex(view.axis_names[1].findData("time_ratio"))
+        assert view.free[0].isChecked() and not view.free[1].isChecked()     # K fixed by default
+        view.axis_names[1].setCurrentIndex(view.axis_names[1].findData("stroke"))
+        assert not view.free[1].isChecked()                                   # H too
+        view.axis_names[1].setCurrentIndex(view.axis_names[1].findData("time_ratio"))
+        before = model.valid_spec
+        view.lows[0].setValue(0.2)
+        view.highs[0].setValue(0.8)
+        view.objective.setCurrentIndex(view.objective.findData("pressure-angle"))
+        steps = model.undo_stack.count()
+        view.optimize.click()
+        qtbot.waitUntil(lambda: view.runner.job is None and view.optimum.text() != "", timeout=60_000)
+        after = model.valid_spec
+        assert (after.time_ratio, after.stroke) == (before.time_ratio, before.stroke)
+        assert after.rod_ratio == pytest.approx(0.8, abs=1e-4)
+        assert model.undo_stack.count() == steps + 1            # one step
+        assert "upper end" in view.optimum.text() and "Rod ratio" in view.optimum.text()
+        assert view.undo_proposal.isVisible() and view.undo_proposal.isEnabled()
+        view.undo_proposal.click()
+        assert model.valid_spec == before
+        assert not view.undo_proposal.isEnabled()
+        view.axis_names[0].setCurrentIndex(view.axis_names[0].findData("guide"))
+        view.lows[0].setValue(450.0)
+        view.highs[0].setValue(700.0)
+        view.optimize.click()
+        qtbot.waitUntil(lambda: view.runner.job is None and "Proposal" in view.optimum.text()
+                        and model.valid_spec != before, timeout=60_000)
+        assert 455.0 < model.valid_spec.guide_height < 695.0
+        assert "end of its range" not in view.optimum.text()
+        assert model.valid_spec.time_ratio == before.time_ratio
+    finally:
+        view.shutdown()

@@ -65,6 +65,8 @@ def test_window_and_every_result_table_fit(tmp_path, width, height, lang):
             assert table["last_column_reachable"], table["titles"]
             if table["needs_h_scroll"]:
                 assert table["h_scroll_visible"], table["titles"]       # scrolls visibly
+        if case["speeds"] == 2:             # two speeds fit: long row titles wrap instead
+            assert not any(t["needs_h_scroll"] for t in case["tables"]), [t["titles"] for t in case["tables"]]
         if case["speeds"] == 16:            # 16 speeds never fit a side pane: they scroll
             assert speeds["needs_h_scroll"] and speeds["h_scroll_visible"]
         if lang == "zh_CN":
@@ -84,6 +86,7 @@ def test_compare_plots_readable_on_a_laptop(tmp_path, width, height, lang):
     titles ran into each other and the legend covered the curves."""
     report = probe(tmp_path, width, height, "--lang", lang, "--compare")["compare"]
     assert report["legend_rows"] == 2
+    assert report["table_rows_shown"] >= min(2, report["table_rows"]), report["table_rows_shown"]   # 1 before
     for key, plot in report["plots"].items():
         x, y, w, h = plot["box"]
         assert h >= 70 and w >= 150, (key, plot["box"])     # 36-45 px before
@@ -97,14 +100,67 @@ def test_compare_plots_readable_on_a_laptop(tmp_path, width, height, lang):
             assert not overlap(a["title"], b["title"]), (a, b)        # titles ran into each other
 
 
+def spread(boxes: list[list[float]]) -> bool:
+    """No two boxes overlap."""
+    return not any(overlap(a, b) for i, a in enumerate(boxes) for b in boxes[i + 1:])
+
+
+@pytest.mark.parametrize("variant", ["block", "rod"])
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+def test_every_stacked_plot_has_ticks_and_its_own_title(tmp_path, width, height, lang, variant):
+    """With 16 speeds the Forces plots got 60 px each: 0-2 tick labels (the joint-force
+    plot none) and y titles running into each other ("Input powerEnergy"); with 2 speeds
+    still 2 ticks (the Chinese rod variant's joint forces a single "5"). Now every plot
+    keeps three labels and a title within its own height, and the stack scrolls."""
+    report = probe(tmp_path, width, height, "--lang", lang, "--variant", variant, "--stacks",
+                   "--speeds", "40,60", "--speeds", SIXTEEN)
+    for case in report["cases"]:
+        for name, stack in case["stacks"].items():
+            where = (case["speeds"], name)
+            assert stack["view_height"] >= stack["needed_height"] - 1, where    # scrolls, not squeezed
+            plots = stack["plots"]
+            assert len(plots) >= 3, where
+            for plot in plots:
+                x, y, w, h = plot["box"]
+                assert len(plot["ticks"]) >= 3, (where, plot["key"], h, plot["ticks"])
+                assert spread(plot["ticks"]), (where, plot["key"])
+                assert plot["title"] is not None and plot["title_text"].strip(), (where, plot["key"])
+                tx, ty, tw, th = plot["title"]
+                assert y - 1 <= ty and ty + th <= y + h + 1, (where, plot["key"], plot["title"], plot["box"])
+            x_ticks = [p["x_ticks"] for p in plots if p["x_ticks"] is not None]
+            assert len(x_ticks) == 1 and len(x_ticks[0]) >= 3 and spread(x_ticks[0]), where
+            assert spread([p["title"] for p in plots]), where              # titles apart
+            assert spread([p["box"] for p in plots]), where
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+def test_explore_map_fills_its_tab(tmp_path, width, height, lang):
+    """The map was about 150 px tall over an empty band, its top tick "3.0" cut in half
+    and its colour bar untitled (issue 20 item 4)."""
+    report = probe(tmp_path, width, height, "--lang", lang, "--explore")["explore"]
+    assert report["map_height"] >= 0.4 * report["tab_height"], report
+    assert report["colorbar_title"].strip()
+    x, y, w, h = report["view"]
+    for name, ticks in report["ticks"].items():
+        assert len(ticks) >= 3, (name, ticks)
+        for tx, ty, tw, th in ticks:
+            assert x <= tx and y <= ty and tx + tw <= x + w and ty + th <= y + h, (name, (tx, ty, tw, th), report["view"])
+
+
 def test_saved_geometry_only_if_it_fits_the_screen(tmp_path):
     big = probe(tmp_path, 1920, 1080, "--resize", "1700x1000")
     assert big["resized"] == [1700, 1000]
     again = probe(tmp_path, 1920, 1080, "--speeds", "40,60")
     assert again["cases"][0]["size"] == [1700, 1000]             # restored
+    assert again["cases"][0]["results_area"] == "LeftDockWidgetArea"   # the large screen's layout
     laptop = probe(tmp_path, 1366, 768, "--speeds", "40,60")
     case = laptop["cases"][0]
     assert inside(laptop["screen"], case["frame"])                # not restored: it would not fit
+    # nor the panes' layout saved with it (issue 20 item 5): the laptop's default
+    assert case["results_area"] == "RightDockWidgetArea", case["results_area"]
+    assert case["results_tabbed_with"] == ["polygonsDock"], case["results_tabbed_with"]
 
 
 # ---- in-process: docks, state, toolbar ------------------------------------------------

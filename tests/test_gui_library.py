@@ -49,6 +49,49 @@ def save(pane, model, name, **spec):
     assert pane.actions.save_current(name, notes=f"notes of {name}", tags=["t"])
 
 
+def test_filter_takes_the_field_names_the_pane_shows(pane, model):
+    """In Chinese the columns read 方案, 最大压力角 (°) …, but the filter took only core's
+    English names: "方案=滑块" was refused (issue 20 item 7)."""
+    from shaperapp import i18n
+    from shaperapp.library_filter import core_filter
+    save(pane, model, "a block")
+    save(pane, model, "a rod", variant="rod", rod_input="ratio", rod_ratio=0.3)
+    i18n.set_language("zh_CN")
+    try:
+        assert core_filter("方案=滑块") == "variant=block"
+        assert core_filter(' 名称~"a, b", K>=1.4') == ' name~"a, b", K>=1.4'
+        headers = [pane.table_model.headerData(c, Qt.Orientation.Horizontal)
+                   for c in range(pane.table_model.columnCount())]
+        variant = headers[1]
+        rod_word = pane.table_model.index(names(pane).index("a rod"), 1).data()
+        pane.filter_edit.setText(f"{variant}={rod_word}")
+        assert names(pane) == ["a rod"] and pane.filter_edit.toolTip() == ""
+        pane.filter_edit.setText(f"{variant} != {rod_word}, L1 (mm) > 50")
+        assert names(pane) == ["a block"]
+        pressure = next(h for h in headers if "压力角" in h)
+        pane.filter_edit.setText(f"{pressure.split(' (')[0]}<90")   # the title without its unit
+        assert names(pane) == ["a rod"]
+        pane.filter_edit.setText("variant=rod")                       # core's names still work
+        assert names(pane) == ["a rod"]
+    finally:
+        i18n.set_language("en")
+    pane.filter_edit.setText("Variant=block")
+    assert names(pane) == ["a block"]
+
+
+def test_columns_fit_their_texts_after_an_add(pane, model):
+    """Opened empty, the Name and K columns stayed as narrow as their titles after
+    designs were added ("base K…", "1.…"; issue 20 item 3)."""
+    save(pane, model, "base K 1.4 stroke 300 long name")
+    save(pane, model, "second", time_ratio=1.6)
+    view, metrics = pane.view, pane.view.fontMetrics()
+    for row in range(pane.table_model.rowCount()):
+        for col in range(pane.table_model.columnCount()):
+            text = pane.table_model.index(row, col).data()
+            if text:
+                assert view.columnWidth(col) >= metrics.horizontalAdvance(str(text)), (row, col, text)
+
+
 def test_save_current_design_and_list_it(pane, model):
     save(pane, model, "K1.4")
     save(pane, model, "K1.6 rod", time_ratio=1.6, variant="rod")

@@ -4,7 +4,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 
 from core.dynamics import masses_for_design
-from core.positions import SPECIAL_NAMES, display_values, number_text, position_table, positions
+from core.positions import SPECIAL_NAMES, display_values, position_table, positions
 from shaperapp.positions_view import PositionsView
 
 from gui_helpers import shown
@@ -29,11 +29,16 @@ def test_rows_are_core_table_numbers(view, model):
     assert view.table_model.rowCount() == 12 + len(SPECIAL_NAMES)
     for row in (0, 3, 13, 16):
         for name in ("ram_v_m_s", "crank_torque_N_m", "O4_y_N"):
-            assert cell(view, row, name) == number_text(shown[row, table.columns.index(name)])
-    assert view.table_model.index(16, 1).data() == "max cutting speed"
+            column = shown[:18, table.columns.index(name)]
+            text = cell(view, row, name)
+            last = 10.0 ** -len(text.partition(".")[2])          # the last decimal shown
+            assert float(text) == pytest.approx(column[row], abs=last / 2 + 1e-12)
+            assert last <= 1e-4 * abs(column).max()               # 5 significant digits of the largest
+    assert view.table_model.headerData(16, Qt.Orientation.Vertical) == "max cutting speed"
     view.speed_box.setCurrentIndex(1)
     k = 18
-    assert cell(view, 3, "ram_v_m_s") == number_text(shown[k + 3, table.columns.index("ram_v_m_s")])
+    value = float(cell(view, 3, "ram_v_m_s"))
+    assert value == pytest.approx(shown[k + 3, table.columns.index("ram_v_m_s")], abs=5e-5)
 
 
 def test_selecting_a_row_moves_the_animation(view, model, qtbot):
@@ -48,7 +53,7 @@ def test_selecting_a_row_moves_the_animation(view, model, qtbot):
 def test_count_and_design_changes_rebuild(view, model, qtbot):
     view.set_count(24)
     assert view.table_model.rowCount() == 24 + 6
-    assert cell(view, 1, "crank_deg") == "15.000"
+    assert cell(view, 1, "crank_deg") == "15.00"
     model.set_spec(variant="rod")
     # one rebuild for the edit's two signals (results, then forces), when events run
     qtbot.waitUntil(lambda: "rod_deg" in view.table_model._tips)
@@ -73,8 +78,30 @@ def test_copy_is_tab_separated_with_header(view, qtbot):
     lines = text.strip("\r\n").split("\r\n")
     assert len(lines) == 2
     header, row = (line.split("\t") for line in lines)
-    assert len(header) == len(row) == view.table_model.columnCount()
-    assert row[0] == "2" and "φ (°)" in header
+    assert len(header) == len(row) == view.table_model.columnCount() + 1      # the row titles first
+    assert header[0] == "Position" and row[0] == "2" and "φ (°)" in header
     view.view.clearSelection()
     view.copy()
     assert len(QGuiApplication.clipboard().text().strip().split("\r\n")) == 1 + 18
+
+
+def test_rows_keep_their_identity_and_numbers_read_one_way(qtbot, model):
+    """At the laptop's tab size (560 px) the No. and Position columns scrolled away
+    sideways, Position was the widest column and empty in the 12 numbered rows, and
+    φ = 0 printed "0" beside "30.000" (issue 20 item 3)."""
+    view = shown(qtbot, PositionsView(model), 560, 460)
+    table, header = view.view, view.view.verticalHeader()
+    table.horizontalScrollBar().setValue(table.horizontalScrollBar().maximum())
+    qtbot.wait(10)
+    assert header.isVisible() and header.width() > 0             # the row titles stay
+    titles = [view.table_model.headerData(r, Qt.Orientation.Vertical) for r in range(18)]
+    assert titles[:12] == [str(n) for n in range(1, 13)] and all(titles[12:])
+    columns = view.table_model.columnCount()
+    cells = [[view.table_model.index(r, c).data() for r in range(18)] for c in range(columns)]
+    assert all(any(text for text in column) for column in cells)  # no empty column
+    for column in cells:
+        decimals = {len(text.partition(".")[2]) for text in column if text}
+        assert len(decimals) == 1, column                        # one number of decimals
+    assert cell(view, 0, "crank_deg") == "0.00" and cell(view, 1, "crank_deg") == "30.00"
+    # about a quarter of the 560 px went to the identifying columns, not half
+    assert header.width() <= 0.35 * table.width()

@@ -19,23 +19,29 @@ def box_hits_segment(box, p, q, margin: float) -> bool:
                        & (pts[:, 1] > bottom - margin) & (pts[:, 1] < top + margin)))
 
 
-@pytest.mark.parametrize("spec", [{}, {"time_ratio": 1.8, "crank": 80.0},
-                                  {"variant": "rod", "rod_ratio": 0.3}])
-def test_dimension_labels_never_on_a_moving_link(scheme, model, spec):
+def design_links(model, spec):
+    """The design of ``spec``: its shape, drawing unit u (mm) and crank centre O2."""
     if spec:
         model.set_spec(**spec)
         assert model.error is None
-    sh, design = model.motion.shape, model.design
-    u = design.lever / 40.0
-    o2 = np.array([0.0, design.frame])
+    return model.motion.shape, model.design.lever / 40.0, np.array([0.0, model.design.frame])
+
+
+def on_a_link(box, sh, i, u, o2) -> bool:
+    """Does the box touch the lever (1.6 u wide) or the crank (1.1 u) at angle index i?"""
+    a, b = sh.crank_pin[:, i], sh.lever_tip[:, i]
+    return box_hits_segment(box, np.zeros(2), b, 0.8 * u) or box_hits_segment(box, o2, a, 0.55 * u)
+
+
+@pytest.mark.parametrize("spec", [{}, {"time_ratio": 1.8, "crank": 80.0},
+                                  {"variant": "rod", "rod_ratio": 0.3}])
+def test_dimension_labels_never_on_a_moving_link(scheme, model, spec):
+    sh, u, o2 = design_links(model, spec)
     boxes = scheme.dimension_label_boxes()
     assert set(boxes) == {"L1", "L2", "L3", "h", "H"}
     for name, box in boxes.items():
         for i in range(0, sh.phi.size, 3):
-            a, b = sh.crank_pin[:, i], sh.lever_tip[:, i]
-            # the lever body is 1.6 u wide, the crank 1.1 u
-            assert not box_hits_segment(box, np.zeros(2), b, 0.8 * u), (name, i)
-            assert not box_hits_segment(box, o2, a, 0.55 * u), (name, i)
+            assert not on_a_link(box, sh, i, u, o2), (name, i)
 
 
 def test_l1_label_names_the_crank(scheme, model):
@@ -109,3 +115,54 @@ def test_l2_and_h_labels_never_overlap_even_after_a_zoom(scheme, model, spec):
                                "h": (model.design.frame, model.design.frame
                                      + model.design.guide_above_crank)}.items():
             assert (boxes[name][2] + boxes[name][3]) / 2 == pytest.approx((lo + hi) / 2, abs=1.0)
+
+
+@pytest.mark.parametrize("spec", [{}, {"time_ratio": 1.8, "crank": 80.0},
+                                  {"variant": "rod", "rod_ratio": 0.3}])
+def test_joint_labels_a_and_o2_never_on_the_lever_or_the_crank(scheme, model, spec):
+    """A sat on the lever at φ = 100°, O₂ under it at 120° (issue 20 item 8)."""
+    from shaperapp.scheme_draw import text_box
+    sh, u, o2 = design_links(model, spec)
+    labels = scheme._mechanism.labels
+    for index in range(0, model.angle_count, 5):
+        model.set_angle_index(index)
+        scheme._catch_up()
+        for name in ("A", "O2"):
+            assert not on_a_link(text_box(labels[name]), sh, index, u, o2), (name, index)
+
+
+@pytest.mark.parametrize("time_ratio", [1.3, 1.4, 1.5, 1.6])
+def test_dimension_labels_apart_in_the_laptop_pane(qtbot, model, time_ratio):
+    """At K = 1.6 in the 420 px mechanism pane "L1 = 100.0" covered the end of
+    "L2 = 282.0", which read "L2 = 282" (issue 20 item 8)."""
+    from gui_helpers import shown
+    from shaperapp.scheme import SchemeWidget
+    from shaperapp.scheme_draw import overlaps
+    model.set_spec(time_ratio=time_ratio)
+    assert model.error is None
+    for size in ((420, 330), (900, 650)):
+        scheme = shown(qtbot, SchemeWidget(model), *size)
+        boxes = scheme.dimension_label_boxes()
+        pairs = [(a, b) for a in boxes for b in boxes if a < b and overlaps(boxes[a], boxes[b])]
+        assert pairs == [], (size, pairs)
+        scheme.close()
+
+
+@pytest.mark.parametrize("spec", [{"time_ratio": 1.05, "crank": 142.0}, {}])
+def test_h_label_stays_beside_its_dimension_in_a_tall_design(qtbot, model, spec):
+    """After Optimize loaded K = 1.05, L2 = 3 709 mm, the short h's label reached above
+    the guide line, out of the drawing, and was cut at the pane's top edge (issue 20
+    item 4): it ended 420 mm above its dimension."""
+    from gui_helpers import shown
+    from shaperapp.scheme import SchemeWidget
+    from shaperapp.scheme_draw import overlaps
+    model.set_spec(**spec)
+    assert model.error is None
+    scheme = shown(qtbot, SchemeWidget(model), 418, 346)        # the laptop's mechanism pane
+    qtbot.wait(50)                                              # laid out and fitted
+    boxes = scheme.dimension_label_boxes()
+    top = model.design.frame + model.design.guide_above_crank   # the guide line: h's upper end
+    assert boxes["h"][3] <= top + 1e-6, (boxes["h"], top)
+    assert boxes["L2"][2] >= -1e-6                              # and L2's no lower than O4
+    pairs = [(a, b) for a in boxes for b in boxes if a < b and overlaps(boxes[a], boxes[b])]
+    assert pairs == [], pairs                                   # "L1 = 142.0" covered "h = 2…"

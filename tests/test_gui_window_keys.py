@@ -61,6 +61,28 @@ def test_ctrl_z_in_a_field_undoes_the_design_edit(window, qtbot):
     assert window.model.spec.time_ratio == 1.6 and edit.text() == "1.6"
 
 
+def test_ctrl_y_redoes_as_well(qtbot, tmp_path, monkeypatch):
+    """The README promises Ctrl+Y; on X11 Qt's standard Redo is only Ctrl+Shift+Z, and
+    only that worked (issue 20 item 6). The offscreen platform lists Ctrl+Y itself, so
+    the X11 bindings are put in place here."""
+    x11 = {QKeySequence.StandardKey.Redo: [QKeySequence("Ctrl+Shift+Z")],
+           QKeySequence.StandardKey.Undo: [QKeySequence("Ctrl+Z")]}
+    standard = QKeySequence.keyBindings
+    monkeypatch.setattr(QKeySequence, "keyBindings", staticmethod(lambda key: x11.get(key) or standard(key)))
+    with main_window(tmp_path) as window:
+        window.activateWindow()
+        qtbot.waitActive(window)
+        assert QKeySequence("Ctrl+Y") in window.act_redo.shortcuts()
+        assert QKeySequence("Ctrl+Shift+Z") in window.act_redo.shortcuts()
+        edit = focus_field(window, qtbot)
+        edit.selectAll()
+        qtbot.keyClicks(edit, "1.6")
+        qtbot.keyClick(edit, Qt.Key.Key_Z, Qt.KeyboardModifier.ControlModifier)
+        assert window.model.spec.time_ratio == 1.4
+        qtbot.keyClick(edit, Qt.Key.Key_Y, Qt.KeyboardModifier.ControlModifier)
+        assert window.model.spec.time_ratio == 1.6 and edit.text() == "1.6"
+
+
 def test_edit_menu_and_standard_keys(window):
     assert window.menu_edit.actions()[:2] == [window.act_undo, window.act_redo]
     assert QKeySequence(QKeySequence.StandardKey.Undo) in window.act_undo.shortcuts()
@@ -129,6 +151,67 @@ def test_qt_dialogs_are_chinese_too(window):
     dialog.deleteLater()
     window.set_language("en")
     assert QCoreApplication.translate("QPlatformTheme", "Cancel") == "Cancel"
+
+
+def test_every_file_dialog_is_chinese_with_local_dates(window, tmp_path, qtbot):
+    """Dialogs opened by QFileDialog.getSaveFileName (the polygon, library, report and
+    compare exports) kept "Look in:" and "Files of type:" in English, the detail view's
+    dates in the system format ("25 11 2026 12:15") and its size column elided (issue 20
+    item 7)."""
+    from PySide6.QtCore import QLocale, QTimer
+    from PySide6.QtWidgets import QFileDialog, QFileSystemModel, QLabel, QStyleOptionViewItem, QTreeView
+    (tmp_path / "a-design-with-a-long-name.shaper.json").write_text("{}" * 300_000)
+    window.set_language("zh_CN")
+    seen = {}
+
+    def inspect():
+        dialog = QApplication.activeModalWidget()
+        assert isinstance(dialog, QFileDialog)
+        dialog.setViewMode(QFileDialog.ViewMode.Detail)
+        qtbot.wait(300)                                # the file model lists the folder
+        seen["labels"] = [re.sub(r"&\w", "", label.text()) for label in dialog.findChildren(QLabel)]
+        view = next(v for v in dialog.findChildren(QTreeView) if v.isVisible())
+        model = dialog.findChild(QFileSystemModel)
+        name = str(tmp_path / "a-design-with-a-long-name.shaper.json")
+        source = model.index(name)
+        index = view.model().mapFromSource(source) if view.model() is not model else source
+        option = QStyleOptionViewItem()
+        view.itemDelegateForIndex(index.siblingAtColumn(3)).initStyleOption(option, index.siblingAtColumn(3))
+        seen["date"] = option.text
+        seen["expected"] = QLocale(QLocale.Language.Chinese, QLocale.Country.China).toString(
+            model.lastModified(source), QLocale.FormatType.ShortFormat)
+        size_text = index.siblingAtColumn(1).data()
+        seen["size_fits"] = view.columnWidth(1) >= view.fontMetrics().horizontalAdvance(size_text)
+        dialog.reject()
+
+    QTimer.singleShot(200, inspect)
+    QFileDialog.getSaveFileName(window, "t", str(tmp_path), "*.json",
+                                options=QFileDialog.Option.DontUseNativeDialog)
+    window.set_language("en")
+    assert seen["labels"] and all(not any(c.isascii() and c.isalpha() for c in t) for t in seen["labels"]), seen
+    assert seen["date"] == seen["expected"] and "/" in seen["date"], seen
+    assert seen["size_fits"]
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+def test_dialogs_are_as_wide_as_their_titles(window, lang):
+    """Under openbox at 1366x768 the Go-to dialog's title read "Go to … signer" and the
+    report's "Export design rep…" (issue 20 item 8)."""
+    from PySide6.QtGui import QFont, QFontMetrics
+    window.set_language(lang)
+    dialog = QInputDialog(window)
+    dialog.setWindowTitle(window.tr("Go to crank angle"))
+    dialog.setLabelText("φ")
+    dialog.show()
+    QApplication.processEvents()
+    try:
+        font = QFont(dialog.font())
+        font.setBold(True)
+        title = f"{dialog.windowTitle()} — {QGuiApplication.applicationDisplayName()}"
+        assert dialog.width() >= QFontMetrics(font).horizontalAdvance(title) + 100, dialog.width()
+    finally:
+        dialog.close()
+        window.set_language("en")
 
 
 def test_window_title_in_one_language(window):

@@ -12,7 +12,9 @@ never imports Qt.
 from __future__ import annotations
 
 import argparse
+import difflib
 import os
+import re
 import sys
 from importlib import import_module, metadata
 from types import ModuleType
@@ -58,9 +60,56 @@ def build_parser(modules: dict[str, ModuleType] | None = None) -> argparse.Argum
     return parser
 
 
+def _options(parser: argparse.ArgumentParser, argv: Sequence[str]) -> tuple[str, list[str]]:
+    """The (sub)command named in ``argv`` ("library add") and its option strings."""
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for i, word in enumerate(argv):
+                if word in action.choices:
+                    name, options = _options(action.choices[word], argv[i + 1:])
+                    return f"{word} {name}".strip(), options
+    return "", [s for action in parser._actions for s in action.option_strings]
+
+
+def close_match(word: str, choices: Sequence[str]) -> str | None:
+    """The choice ``word`` was probably meant to be: one differing only in letter case,
+    else the closest by spelling (difflib), else None."""
+    same = [c for c in choices if c.lower() == word.lower()]
+    if same:
+        return same[0]
+    found = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
+    return found[0] if found else None
+
+
+def with_suggestion(message: str, parser: argparse.ArgumentParser, argv: Sequence[str]) -> str:
+    """argparse's message about a mistyped option or choice, naming it first and adding
+    what was probably meant: '--k: unknown option; did you mean --K?'."""
+    unknown = re.match(r"unrecognized arguments: (.*)$", message)
+    if unknown:
+        word = next((w for w in unknown.group(1).split() if w.startswith("-")), "")
+        name = word.split("=", 1)[0]
+        if name:
+            command, options = _options(parser, list(argv))
+            match = close_match(name, options)
+            hint = f"did you mean {match}?" if match else f"see 'shaper {command} --help'".replace("  ", " ")
+            return f"{name}: unknown option; {hint}"
+        return message
+    choice = re.match(r"(argument [^:]+: invalid choice: '([^']*)' \(choose from (.*)\))$", message)
+    if choice:
+        options = [c.strip().strip("'") for c in choice.group(3).split(",")]
+        match = close_match(choice.group(2), options)
+        if match:
+            return f"{choice.group(1)}; did you mean {match}?"
+    return message
+
+
 def run(argv: Sequence[str] | None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    words = list(sys.argv[1:] if argv is None else argv)
+    try:
+        args = parser.parse_args(words)
+    except UsageError as exc:
+        raise UsageError(with_suggestion(str(exc), parser, words)) from None
     if args.command is None:
         parser.print_help()
         return 0

@@ -36,8 +36,9 @@ from .output import OutputError, print_json
 HELP = "keep, find, export and compare designs in a library"
 DESCRIPTION = ("A design library: named designs with notes, tags and their key figures, in one "
                "SQLite file (--library PATH, or $SHAPER_LIBRARY, or the per-user default). "
-               "Filter with --where 'K>=1.4,variant=rod,name~cut' (see the README).")
-EXAMPLES = ("shaper library add --crank 100 --K 1.4 --stroke 300 --name base --notes 'seed 003'",
+               "Filter with --where 'K>=1.4,variant=rod,name~cut' (the syntax: "
+               "shaper library list --help). Each action has its own --help with an example.")
+EXAMPLES = ("shaper library add --crank 100 --K 1.4 --stroke 300 --name base --notes 'first try'",
             "shaper library list --sort a_max --where 'variant=rod,K>=1.4' --rpm 60",
             "shaper library compare base rod-1.6 --rpm 60 --csv compare.csv")
 LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "{:.4f}"),
@@ -47,10 +48,30 @@ LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "{:
                 ("J_F kg·m²", "flywheel_inertia_kg_m2", "{:.5g}"), ("modified", "modified", ""))
 
 
+def filter_help() -> str:
+    """The filter and sort syntax, for ``library list --help`` (from core's own tables)."""
+    from ..library_query import FIELDS, OPERATORS
+    return ("filter (--where): conditions FIELD OP VALUE separated by commas, all must hold.\n"
+            f"  OP: {' '.join(OPERATORS)}   (~ contains, ignoring case)\n"
+            "  VALUE: a number, or text; \"double quotes\" around text with a comma.\n"
+            "  tag=TAG matches one of the tags.\n"
+            "sort (--sort) and filter fields:\n  " + _wrap(", ".join(k for k in FIELDS if k != "tag")) + "\n"
+            "  short names: K, H, L1, L2, L3, L4, theta, a_max, J_F, crank, frame, lever, rod, "
+            "stroke, pressure, flywheel (any letter case)")
+
+
+def _wrap(text: str, width: int = 76) -> str:
+    import textwrap
+    return "\n  ".join(textwrap.wrap(text, width))
+
+
 def configure(parser: argparse.ArgumentParser) -> None:
     sub = parser.add_subparsers(dest="library_command", metavar="ACTION", parser_class=Parser)
     for name, help_text, build in ACTIONS:
-        p = sub.add_parser(name, help=help_text, description=help_text)
+        epilog = ("example:\n  " + ACTION_EXAMPLES[name]
+                  + ("\n\n" + filter_help() if name == "list" else ""))
+        p = sub.add_parser(name, help=help_text, description=help_text, epilog=epilog,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
         p.add_argument("--library", metavar="PATH",
                        help=f"the library file (default: ${ENV_VAR}, else the per-user library)")
         build(p)
@@ -72,7 +93,8 @@ def _list_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--where", metavar="FILTER", default="",
                    help="conditions FIELD OP VALUE separated by commas, e.g. 'K>=1.4,variant=rod,name~cut'")
     p.add_argument("--search", metavar="TEXT", default="", help="text in the name, notes or tags")
-    p.add_argument("--sort", metavar="FIELD", default="name", help="sort by a figure (default name)")
+    p.add_argument("--sort", metavar="FIELD", default="name",
+                   help="sort by a field (default name; the fields are listed below)")
     p.add_argument("--desc", action="store_true", help="sort descending")
     p.add_argument("--rpm", metavar="RPM", help="show per-speed figures at this speed (default: each design's first)")
     p.add_argument("--limit", metavar="N", help="show at most N entries")
@@ -382,6 +404,18 @@ ACTIONS = (
     ("refresh", "recompute the figures an older version of the program stored", refresh_options),
     ("check", "list the designs whose stored values are damaged (exit 1 if any)", check_options),
 )
+ACTION_EXAMPLES = {
+    "add": "shaper library add --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --name base --tags course",
+    "list": "shaper library list --where 'variant=rod, K>=1.4, a_max<5' --sort a_max --rpm 60",
+    "show": "shaper library show base --json",
+    "remove": "shaper library remove old-try",
+    "rename": "shaper library rename base base-K1.4",
+    "export": "shaper library export base -o base.shaper.json",
+    "import": "shaper library import designs/ --skip-invalid",
+    "compare": "shaper library compare base rod-1.6 --rpm 60 --csv compare.csv",
+    "backup": "shaper library backup -o library-copy.sqlite",
+    "refresh": "shaper library refresh --all",
+}
 ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
               "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh,

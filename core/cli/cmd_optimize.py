@@ -6,7 +6,7 @@ from typing import Any
 
 from ..errors import DesignError
 from ..geometry import Design
-from ..optimize import OBJECTIVES, Optimum, optimize
+from ..optimize import OBJECTIVES, Optimum, on_bounds, optimize
 from ..sweep import PARAMETERS, Evaluation
 from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
@@ -36,8 +36,10 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print JSON")
 
 
-def optimum_document(best: Optimum, typed: list[str]) -> dict[str, Any]:
-    """Objective, the optimal design (keys of ``shaper synth --json``) and its figures."""
+def optimum_document(best: Optimum, typed: list[str],
+                     ends: dict[str, str] | None = None) -> dict[str, Any]:
+    """Objective, the optimal design (keys of ``shaper synth --json``) and its figures;
+    ``on_bound``: the varied parameters (as typed) whose optimum is an end of its range."""
     ev = best.evaluation
     doc: dict[str, Any] = {
         "objective": best.objective,
@@ -46,6 +48,7 @@ def optimum_document(best: Optimum, typed: list[str]) -> dict[str, Any]:
         "start_value": best.start_value,
         "vary": {name: float(best.x[i]) for i, name in enumerate(typed)},
         "evaluations": best.evaluations,
+        "on_bound": {typed[i]: ends[name] for i, name in enumerate(best.names) if name in (ends or {})},
     }
     doc["design"] = design_summary(_design(ev))
     doc["figures"] = {name: _number(values[0]) for name, values in figure_columns(ev)}
@@ -61,11 +64,12 @@ def _design(ev: Evaluation) -> Design:
 
 def run(args: argparse.Namespace) -> int:
     spec, varied, rpms, masses = inputs(args, with_count=False)
-    best = optimize(spec, {PARAMETERS[n]: b for n, b in varied.items()}, args.objective, rpms, masses)
+    bounds = {PARAMETERS[n]: b for n, b in varied.items()}
+    best = optimize(spec, bounds, args.objective, rpms, masses)
     typed = list(varied)
     if not best.evaluation.valid.all():
         raise DesignError("vary", ", ".join(args.vary), "contains no valid design")
-    doc = optimum_document(best, typed)
+    doc = optimum_document(best, typed, on_bounds(best, bounds))
     if args.json:
         print_json(doc)
         return 0
@@ -73,7 +77,9 @@ def run(args: argparse.Namespace) -> int:
     start = "invalid" if best.start_value is None else f"{best.start_value:.6g} {unit}"
     rows = [("objective", f"{best.objective} ({OBJECTIVES[best.objective][0]})"),
             ("optimum", f"{best.value:.6g} {unit}"), ("design as given", start)]
-    rows += [(name, f"{best.x[i]:.6g}") for i, name in enumerate(typed)]
+    rows += [(name, f"{best.x[i]:.6g}" + (f"  (at the {doc['on_bound'][name]} bound: the best design "
+                                          "may lie beyond it; widen the range)" if name in doc["on_bound"] else ""))
+             for i, name in enumerate(typed)]
     design = doc["design"]
     rows += [("frame O2O4 L2", f"{design['frame_mm']:.3f} mm"),
              ("lever O4B L3", f"{design['lever_mm']:.3f} mm"),

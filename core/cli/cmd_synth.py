@@ -11,7 +11,7 @@ from .output import print_json, print_table
 
 HELP = "synthesize dimensions from L1, K, H"
 DESCRIPTION = ("Synthesize the frame distance L2, the lever length L3 and the ram-guide height "
-               "from the crank length L1, the time ratio K and the stroke H (seed 003's method).")
+               "from the crank length L1, the time ratio K and the stroke H (the textbook synthesis: the ram's guide through the lever tip's chord).")
 EXAMPLES = ("shaper synth --crank 100 --K 1.4 --stroke 300",
             "shaper synth --crank 100 --K 1.4 --stroke 300 --rod-ratio 0.3 --guide sagitta --json")
 

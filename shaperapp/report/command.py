@@ -47,7 +47,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     add_load_options(parser, required=False)
     parser.add_argument("-o", "--output", required=True, metavar="FILE",
                         help="the report file to write: .pdf for a PDF, .html or .htm for HTML")
-    parser.add_argument("--lang", choices=("en", "zh"), default="en", help="report language (default en)")
+    parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
+                        help="report language: en, or zh (= zh_CN) for Chinese (default en)")
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
                         help="number of equally spaced crank positions in the table (default 12)")
     parser.add_argument("--diagrams", metavar="A,B",
@@ -185,7 +186,7 @@ def _run(args: argparse.Namespace) -> int:
     from .. import i18n
     from .content import Options, build
     from .fonts import MissingFontError, report_font
-    language = "zh_CN" if args.lang == "zh" else "en"
+    language = i18n.language_of(args.lang)
     i18n.set_language(language)
     try:
         report_font(language)

@@ -1,0 +1,63 @@
+"""Dialogs at least as wide as their title bar's text.
+
+A window manager elides a title that does not fit its dialog: at 1366 × 768 under
+openbox "Go to crank angle — Shaper Designer" read "Go to … signer" and the report's
+"Export design rep…". Every dialog of the application is widened, when it is shown,
+to hold its full title (with the application's name Qt appends) and the title bar's
+buttons; a dialog is never made wider than its screen.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QEvent, QObject
+from PySide6.QtGui import QFont, QFontMetrics, QGuiApplication
+from PySide6.QtWidgets import QDialog, QFileDialog
+
+from .file_dialogs import localize
+
+TITLE_BAR_EXTRA_PX = 140      # the title bar's buttons, icon and margins
+TITLE_FONT_SCALE = 1.15       # window managers draw titles in a larger (often bold) font
+
+
+def title_width(dialog: QDialog) -> int:
+    """px the title bar needs for the dialog's full title."""
+    title = dialog.windowTitle().replace("[*]", "")
+    name = QGuiApplication.applicationDisplayName()
+    if name and name not in title:
+        title = f"{title} — {name}"
+    font = QFont(dialog.font())
+    font.setBold(True)
+    return int(QFontMetrics(font).horizontalAdvance(title) * TITLE_FONT_SCALE) + TITLE_BAR_EXTRA_PX
+
+
+def fit_title(dialog: QDialog) -> None:
+    need = title_width(dialog)
+    screen = dialog.screen()
+    if screen is not None:
+        need = min(need, screen.availableGeometry().width())
+    if dialog.width() < need:
+        dialog.setMinimumWidth(need)
+        dialog.resize(need, dialog.height())
+
+
+class _TitleFitter(QObject):
+    """Fits every dialog to its title when shown, and puts a file dialog's texts in the
+    UI language (``file_dialogs.localize``), also those QFileDialog's static functions make."""
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        if event.type() == QEvent.Type.Show and isinstance(watched, QDialog):
+            if isinstance(watched, QFileDialog):
+                localize(watched)
+            fit_title(watched)
+        return False
+
+
+_fitter: _TitleFitter | None = None
+
+
+def install(app: QCoreApplication) -> None:
+    """Fit every dialog of ``app`` to its title and localize its file dialogs when shown
+    (once per application)."""
+    global _fitter
+    if _fitter is None or _fitter.parent() is not app:
+        _fitter = _TitleFitter(app)
+        app.installEventFilter(_fitter)

@@ -1,0 +1,58 @@
+"""The Explore tab's names of figures and parameters, translated (context "ExploreView",
+the tab's own, so the catalogue keeps its entries)."""
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication
+
+from core.optimize import OBJECTIVES, Optimum
+
+translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
+
+
+def figure_names() -> dict[str, str]:
+    return {"pressure-angle": translate("ExploreView", "Max pressure angle (°)"),
+            "accel": translate("ExploreView", "Max |acceleration|, fastest speed (m/s²)"),
+            "v-work": translate("ExploreView", "Max cutting speed, fastest speed (m/s)"),
+            "v-return": translate("ExploreView", "Max return speed, fastest speed (m/s)"),
+            "peak-torque": translate("ExploreView", "Peak crank torque, worst speed (N·m)"),
+            "flywheel": translate("ExploreView", "Flywheel J_F, slowest speed (kg·m²)")}
+
+
+def figure_titles() -> dict[str, str]:
+    """Short titles of the figures, for the colour bar beside the map."""
+    return {"pressure-angle": translate("ExploreView", "pressure angle (°)"),
+            "accel": translate("ExploreView", "max |a| (m/s²)"),
+            "v-work": translate("ExploreView", "cutting speed (m/s)"),
+            "v-return": translate("ExploreView", "return speed (m/s)"),
+            "peak-torque": translate("ExploreView", "peak torque (N·m)"),
+            "flywheel": translate("ExploreView", "J_F (kg·m²)")}
+
+
+def parameter_names() -> dict[str, str]:
+    return {"crank": translate("ExploreView", "Crank L1 (mm)"),
+            "time_ratio": translate("ExploreView", "Time ratio K"),
+            "stroke": translate("ExploreView", "Stroke H (mm)"),
+            "frame": translate("ExploreView", "Frame L2 (mm)"),
+            "lever": translate("ExploreView", "Lever L3 (mm)"),
+            "guide": translate("ExploreView", "Guide above O4 (mm)"),
+            "rod_ratio": translate("ExploreView", "Rod ratio L4/L3"),
+            "rod": translate("ExploreView", "Rod L4 (mm)")}
+
+
+def proposal_text(values: dict[str, float], value: float, best: Optimum, ends: dict[str, str]) -> str:
+    """The message for a loaded optimum: a proposal, with the design before, and a red
+    line for each parameter whose optimum is an end of its range (``ends``)."""
+    unit = OBJECTIVES[best.objective][1]
+    start = "—" if best.start_value is None else f"{best.start_value:.5g} {unit}"
+    names = parameter_names()
+    where = ", ".join(f"{names[n]} = {v:.7g}" for n, v in values.items())
+    text = (translate("ExploreView", "Proposal: %1 %2 at %3 (the design before: %4), loaded into the "
+                      "form; Undo proposal goes back.").replace("%1", f"{value:.5g}")
+            .replace("%2", unit).replace("%3", where).replace("%4", start))
+    for name, end in ends.items():
+        warning = (translate("ExploreView", "%1 is at the lower end of its range: the best design may "
+                             "lie below it; widen the range.") if end == "lower" else
+                   translate("ExploreView", "%1 is at the upper end of its range: the best design may "
+                             "lie above it; widen the range."))
+        text += f"<br><span style='color:#b71c1c'>{warning.replace('%1', names[name])}</span>"
+    return text

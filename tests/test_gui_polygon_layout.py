@@ -1,0 +1,114 @@
+"""Vector diagrams readable on a laptop and in the report (issue 20 item 2, issue 19 item 2).
+
+What is drawn is recorded by ``paint_recorder.PaintRecorder``: every text run's ink box
+from the font's metrics, the arrowheads' boxes and the vectors. On the report's page
+(170 × 105 mm at 300 dpi) and in the pane of the real window at 1366 × 768 and
+1280 × 720: no two texts overlap (P, G₅, F_I5 and N merged into one blob; a legend row's
+superscript k touched the subscript above), no text lies on an arrowhead, the
+polygon uses a good part of its pane, the whole legend can be scrolled to, and a limit
+position says why the polygon degenerates.
+"""
+from __future__ import annotations
+
+import pytest
+from PySide6.QtCore import QRectF, QSettings
+from PySide6.QtGui import QFontMetricsF, QImage
+from PySide6.QtWidgets import QApplication
+
+from core.dynamics import MassProperties
+from core.geometry import synthesize
+from core.polygons import polygons
+from shaperapp.main_window import MainWindow
+from shaperapp.model import DesignModel
+from shaperapp.polygon_paint import auto_scale, paint_polygon
+from shaperapp.report.figures import report_font
+
+from paint_recorder import PaintRecorder, overlapping
+from test_gui_layout import overlap, probe
+
+LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70,
+                       cut_force_N=7000, cut_height_mm=80)
+ANGLES = (0.0, 30.0, 90.0, 120.0, 210.0, 250.0, 300.0)      # 0 and 210: the limit positions (K 1.4)
+PX = 300 / 25.4
+
+
+def on_heads(texts, heads) -> list[str]:
+    return [t for t, b in texts for h in heads if b.adjusted(0.5, 0.5, -0.5, -0.5).intersects(h)]
+
+
+@pytest.mark.parametrize("lang", ["en", "zh"])
+@pytest.mark.parametrize("kw", [{}, {"rod_ratio": 0.3}])
+def test_report_polygons_keep_their_labels_apart(qtbot, kw, lang):
+    design = synthesize(100, 1.4, 300, **kw)
+    image = QImage(round(172 * PX), round(107 * PX), QImage.Format.Format_ARGB32)
+    image.setDotsPerMeterX(round(PX * 1000))
+    image.setDotsPerMeterY(round(PX * 1000))
+    rect = QRectF(0, 0, 170 * PX, 105 * PX)
+    font = report_font(lang, 8.0)
+    for phi in ANGLES:
+        for kind, polygon in polygons(design, phi, 40, LOADS).items():
+            painter = PaintRecorder(image)
+            scale = auto_scale(polygon, rect, QFontMetricsF(font, image), PX)
+            paint_polygon(painter, rect, polygon, scale, px_per_mm=PX, font=font)
+            painter.end()
+            where = (phi, kind)
+            assert overlapping(painter.texts) == [], where
+            assert on_heads(painter.texts, painter.heads) == [], where
+            outside = [t for t, b in painter.texts if not rect.contains(b)]
+            assert outside == [], where
+            names = [t for t, _ in painter.texts]
+            if kind == "force":          # every force named on the drawing and in the legend
+                for vec in polygon.vectors:
+                    base = vec.key.partition("_")[0]
+                    assert names.count(base) >= 2, (where, vec.key, names)
+            limit = phi in (0.0, 210.0) and kind != "force"
+            assert any("Limit position" in t for t in names) == limit, where
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+def test_vector_pane_on_a_laptop(tmp_path, width, height, lang):
+    """The polygon was about 40 px tall beside its legend, labels merged, the
+    acceleration legend's last row cut off with no scroll bar."""
+    report = probe(tmp_path, width, height, "--lang", lang, "--speeds", "40,60",
+                   "--polygons", ",".join(f"{a:g}" for a in ANGLES))
+    for shot in report["polygons"]:
+        where = (shot["kind"], shot["angle"])
+        texts = [(t, QRectF(*b)) for t, b in shot["texts"]]
+        assert overlapping(texts) == [], where
+        assert on_heads(texts, [QRectF(*h) for h in shot["heads"]]) == [], where
+        canvas_w, canvas_h = shot["canvas"]
+        assert all(b.bottom() <= canvas_h and b.right() <= canvas_w for _, b in texts), where   # scrolls to all
+        port_w, port_h = shot["viewport"]
+        x, y, w, h = shot["drawing"]
+        assert y + h <= port_h, where                               # the drawing itself in view
+        # beside the legend (its values "= 0.4189 m/s" with symbol and sample left of them)
+        values = [b.left() for t, b in texts if t.startswith("= ")]
+        free_w = min(values) - 60 if values and min(values) > port_w / 2 else port_w
+        assert w >= 0.35 * free_w or h >= 0.35 * port_h, (where, shot["drawing"], shot["viewport"], free_w)
+        if shot["kind"] == "velocity" and shot["angle"] in (0.0, 210.0):
+            assert any(("Limit" in t or "极限" in t) for t, _ in texts), where
+
+
+def test_enlarge_keeps_a_typed_scale(qtbot, tmp_path):
+    window = MainWindow(DesignModel(), QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    window.show()
+    qtbot.waitExposed(window)
+    try:
+        window.docks["polygons"].raise_()
+        view = window.polygon_view
+        view.set_scale("velocity", 0.01)
+        small = view.canvas.size()
+        view.enlarge_button.click()
+        QApplication.processEvents()
+        dock = window.docks["polygons"]
+        assert dock.isFloating()
+        assert view.canvas.width() > small.width() and view.canvas.height() > small.height()
+        assert view.scale("velocity") == 0.01                  # the drawing keeps its scale
+        view.enlarge_button.click()
+        QApplication.processEvents()
+        assert not dock.isFloating()
+    finally:
+        window.model.set_clean("")
+        window.close()
+        window.deleteLater()
