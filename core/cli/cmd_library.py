@@ -415,6 +415,7 @@ ACTION_EXAMPLES = {
     "compare": "shaper library compare base rod-1.6 --rpm 60 --csv compare.csv",
     "backup": "shaper library backup -o library-copy.sqlite",
     "refresh": "shaper library refresh --all",
+    "check": "shaper library check --library designs.sqlite",
 }
 ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
