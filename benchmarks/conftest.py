@@ -10,5 +10,5 @@ import pytest
 @pytest.fixture(autouse=True, scope="session")
 def _app_look():
     """What the user sees: the app's pyqtgraph look (antialiased, white), not its defaults."""
-    from shaperapp.style import configure_plots
+    from shaperapp.widgets.style import configure_plots
     configure_plots()

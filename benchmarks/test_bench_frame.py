@@ -10,8 +10,8 @@ import itertools
 
 import pytest
 
-from shaperapp.model import DesignModel
-from shaperapp.scheme import SchemeWidget
+from shaperapp.design.model import DesignModel
+from shaperapp.scheme.view import SchemeWidget
 
 FRAME_BUDGET_S = 0.008
 

@@ -11,8 +11,8 @@ import pytest
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication
 
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
+from shaperapp.design.model import DesignModel
+from shaperapp.window.main_window import MainWindow
 
 
 @pytest.fixture

@@ -56,7 +56,7 @@ def test_list_10000(benchmark, big_library):
 
 def test_list_10000_first_page(benchmark, big_library):
     """What the Library pane fetches first (it fetches further pages as the view scrolls)."""
-    from shaperapp.library_table import PAGE
+    from shaperapp.library.table import PAGE
     with Library(big_library) as lib:
         keys, rows = _measure(benchmark, lambda: lib.query_rows(limit=PAGE))
     assert len(rows) == PAGE and rows[-1][keys.index("name")] == f"design {PAGE - 1:05d}"
@@ -77,7 +77,7 @@ def test_search_10000(benchmark, big_library):
 
 def test_sort_10000_first_page(benchmark, big_library):
     """The pane after a click on the max |a| header, at 60 r/min."""
-    from shaperapp.library_table import PAGE
+    from shaperapp.library.table import PAGE
     with Library(big_library) as lib:
         keys, rows = _measure(benchmark, lambda: lib.query_rows(sort="a_max", descending=True, rpm=60.0,
                                                                 limit=PAGE))
@@ -102,7 +102,7 @@ def test_open_10000(benchmark, big_library):
 
 def test_pane_refilter_10000(benchmark, big_library, qtbot):
     """The Library pane after a filter edit: core query plus the table model's reset."""
-    from shaperapp.library_table import LibraryTableModel
+    from shaperapp.library.table import LibraryTableModel
     from PySide6.QtWidgets import QTableView
     with Library(big_library) as lib:
         model = LibraryTableModel()

@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 from PySide6.QtWidgets import QApplication
 
-from shaperapp.model import DesignModel
-from shaperapp.plots import LEVER_PLOTS, PlotsWidget
+from shaperapp.design.model import DesignModel
+from shaperapp.plots.kinematics import LEVER_PLOTS, PlotsWidget
 
 RPMS = [30, 40, 60, 80]
 

@@ -47,7 +47,7 @@ def main(argv: list[str] | None = None) -> int:
     from PySide6.QtCore import QSettings, QTimer
     from PySide6.QtWidgets import QApplication
 
-    from .style import configure_plots
+    from shaperapp.widgets.style import configure_plots
     configure_plots()
     app = QApplication.instance() or QApplication(sys.argv[:1])
     app.setApplicationName("shaperapp")
@@ -55,9 +55,9 @@ def main(argv: list[str] | None = None) -> int:
     app.setApplicationDisplayName("Shaper Designer")
     _install_error_hook(app)
 
-    from . import i18n
-    from .main_window import MainWindow
-    from .model import DesignModel
+    from shaperapp.widgets import i18n
+    from shaperapp.window.main_window import MainWindow
+    from shaperapp.design.model import DesignModel
 
     settings = QSettings()
     language = (i18n.language_of(args.lang) if args.lang else None) or settings.value("language") \

@@ -18,9 +18,9 @@ from typing import Iterator  # noqa: E402
 
 import pytest  # noqa: E402
 
-from shaperapp.main_window import MainWindow  # noqa: E402
-from shaperapp.model import DesignModel  # noqa: E402
-from shaperapp.scheme import SchemeWidget  # noqa: E402
+from shaperapp.design.model import DesignModel  # noqa: E402
+from shaperapp.scheme.view import SchemeWidget  # noqa: E402
+from shaperapp.window.main_window import MainWindow  # noqa: E402
 
 from gui_helpers import main_window, shown  # noqa: E402
 from modal_watchdog import ModalWatchdog  # noqa: E402
@@ -54,7 +54,7 @@ def no_worker_outlives_its_test(request) -> Iterator[None]:
     after it (another order, another xdist worker) saw collection still held."""
     yield
     if "qtbot" in request.fixturenames or "qapp" in request.fixturenames:
-        from shaperapp.worker import COLLECTOR
+        from shaperapp.widgets.worker import COLLECTOR
         assert COLLECTOR.join(60.0), "a worker thread still runs 60 s after its test"
 
 

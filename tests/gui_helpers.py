@@ -12,9 +12,9 @@ from typing import Iterator, TypeVar
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QWidget
 
-from shaperapp import i18n
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
+from shaperapp.design.model import DesignModel
+from shaperapp.widgets import i18n
+from shaperapp.window.main_window import MainWindow
 
 W = TypeVar("W", bound=QWidget)
 
@@ -48,5 +48,5 @@ def main_window(folder: Path) -> Iterator[MainWindow]:
 
 def curve_items(plot_item) -> list:
     """The curve items a stacked plot holds (removed ones are gone, not just emptied)."""
-    from shaperapp.plot_curves import CurveItem
+    from shaperapp.plots.curves import CurveItem
     return [item for item in plot_item.items if isinstance(item, CurveItem)]

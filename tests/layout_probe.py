@@ -200,11 +200,11 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--explore", action="store_true", help="report the Explore tab's map")
     parser.add_argument("--polygons", help="crank angles (°, comma separated): report the vector diagrams")
     args = parser.parse_args(argv)
-    from shaperapp.style import configure_plots
+    from shaperapp.widgets.style import configure_plots
     configure_plots()
     app = QApplication(sys.argv[:1])
-    from shaperapp.main_window import MainWindow
-    from shaperapp.model import DesignModel
+    from shaperapp.window.main_window import MainWindow
+    from shaperapp.design.model import DesignModel
     window = MainWindow(DesignModel(), QSettings(args.settings, QSettings.Format.IniFormat))
     window.set_language(args.lang)
     window.show()

@@ -24,7 +24,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from core.cli import build_parser
-from core.library_store import ENV_VAR
+from core.library.store import ENV_VAR
 
 from cli_runner import shaper_in_process, shaper_process
 from output_checks import error_names, finite_json

@@ -15,9 +15,9 @@ import pytest
 
 from core.dynamics import MIN_DELTA, MassProperties, solve_dynamics
 
-from core.flywheel import summarize
 from core.dynamics_io import dynamics_csv
 from core.errors import DesignError
+from core.flywheel import summarize
 from core.geometry import synthesize
 from core.io import curves_csv, save_design, table_csv
 from core.kinematics import (MAX_SAMPLES, MAX_SPEEDS, MIN_RPM, MIN_STEP_DEG, angle_count,
@@ -343,8 +343,8 @@ def test_a_design_file_with_a_bad_override_names_the_override(tmp_path):
 
 
 def test_the_sample_cap_message_is_translated_for_the_gui(qtbot):
-    from shaperapp import i18n
-    from shaperapp.messages import describe
+    from shaperapp.widgets import i18n
+    from shaperapp.widgets.messages import describe
 
     with pytest.raises(DesignError) as info:
         check_request(angle_count(0.0005), 4, "step", 0.0005)

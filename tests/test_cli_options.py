@@ -124,7 +124,7 @@ def test_every_verb_has_an_example_that_parses(command, action, capsys):
 
 def test_library_list_help_gives_the_filter_syntax_and_sort_fields(capsys):
     from core.cli import build_parser
-    from core.library_query import FIELDS, OPERATORS
+    from core.library.query import FIELDS, OPERATORS
     with pytest.raises(SystemExit):
         build_parser().parse_args(["library", "list", "--help"])
     text = " ".join(capsys.readouterr().out.split())
@@ -138,7 +138,7 @@ def test_library_list_help_gives_the_filter_syntax_and_sort_fields(capsys):
 def test_every_lang_option_takes_both_spellings_of_chinese(lang, capsys):
     """`report --lang` took en|zh, `shaperapp --lang` en|zh_CN."""
     from core.cli import build_parser
-    from shaperapp import i18n
+    from shaperapp.widgets import i18n
     args = build_parser().parse_args(["report", *SEED003, "-o", "r.pdf", "--lang", lang])
     assert args.lang == lang
     assert i18n.language_of(lang) == ("en" if lang == "en" else "zh_CN")

@@ -8,7 +8,7 @@ import pytest
 from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import QApplication, QLabel, QSlider, QToolButton
 
-from shaperapp.animation import AnimationBar
+from shaperapp.window.animation import AnimationBar
 
 
 @pytest.fixture

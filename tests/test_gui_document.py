@@ -2,8 +2,8 @@
 import pytest
 from PySide6.QtCore import QSettings
 
-from shaperapp.document import Document
-from shaperapp.model import DesignModel
+from shaperapp.design.document import Document
+from shaperapp.design.model import DesignModel
 
 from cli_runner import shaper
 

@@ -9,8 +9,8 @@ from PySide6.QtCore import QPoint, QTimer, Qt
 
 from core.optimize import optimize
 from core.sweep import evaluate
-from shaperapp.explore_view import ExploreView
-from shaperapp.messages import describe
+from shaperapp.explore.view import ExploreView
+from shaperapp.widgets.messages import describe
 
 from gui_helpers import shown
 
@@ -128,8 +128,8 @@ def test_cancel_stops_a_long_map_and_the_window_stays_responsive(qtbot, view):
 def test_explore_tab_in_the_main_window(qtbot, tmp_path):
     from PySide6.QtCore import QSettings
 
-    from shaperapp.main_window import MainWindow
-    from shaperapp.model import DesignModel
+    from shaperapp.window.main_window import MainWindow
+    from shaperapp.design.model import DesignModel
 
     settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
     window = MainWindow(DesignModel(), settings)
@@ -235,9 +235,9 @@ def test_closing_the_window_mid_map_ends_the_worker_and_gives_collection_back(qt
 
     from PySide6.QtCore import QSettings
 
-    from shaperapp.main_window import MainWindow
-    from shaperapp.model import DesignModel
-    from shaperapp.worker import COLLECTOR
+    from shaperapp.window.main_window import MainWindow
+    from shaperapp.design.model import DesignModel
+    from shaperapp.widgets.worker import COLLECTOR
 
     was_enabled = gc.isenabled()
     window = MainWindow(DesignModel(), QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
@@ -254,7 +254,7 @@ def test_closing_the_window_mid_map_ends_the_worker_and_gives_collection_back(qt
 
 
 def test_the_status_line_follows_a_language_switch(qtbot, view):
-    from shaperapp import i18n
+    from shaperapp.widgets import i18n
 
     view.count.setValue(5)
     compute(qtbot, view)

@@ -9,9 +9,9 @@ from PySide6.QtCore import QRectF, QSize
 from PySide6.QtGui import QImage, QPainter
 from PySide6.QtSvg import QSvgGenerator, QSvgRenderer
 
-from shaperapp.forces_panel import ForcesPanel
-from shaperapp.plots import PlotsWidget
-from shaperapp.scheme import SchemeWidget
+from shaperapp.plots.forces_panel import ForcesPanel
+from shaperapp.plots.kinematics import PlotsWidget
+from shaperapp.scheme.view import SchemeWidget
 
 from gui_helpers import shown
 

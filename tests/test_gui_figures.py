@@ -19,12 +19,12 @@ from PySide6.QtGui import QImage
 from core.compare import Candidate
 from core.dynamics import MassProperties
 from core.spec import Spec
-from shaperapp.compare_view import CompareView
-from shaperapp.explore_view import ExploreView
-from shaperapp.forces_panel import ForcesPanel
-from shaperapp.plots import PlotsWidget
-from shaperapp.polygon_view import PolygonView
-from shaperapp.scheme import SchemeWidget
+from shaperapp.compare.view import CompareView
+from shaperapp.explore.view import ExploreView
+from shaperapp.plots.forces_panel import ForcesPanel
+from shaperapp.plots.kinematics import PlotsWidget
+from shaperapp.scheme.view import SchemeWidget
+from shaperapp.vectors.view import PolygonView
 
 import figure_checks as fc
 from gui_helpers import shown
@@ -153,7 +153,7 @@ def test_clip_polyline_keeps_exactly_the_inside():
     the kept length equals the inside length measured on a dense resampling."""
     from PySide6.QtCore import QRectF
 
-    from shaperapp.plot_clip import clip_polyline
+    from shaperapp.plots.clip import clip_polyline
     rng = np.random.default_rng(7)
     rect = QRectF(-1.0, -0.5, 2.0, 1.0)
     for _ in range(200):

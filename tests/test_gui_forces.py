@@ -19,9 +19,9 @@ from PySide6.QtWidgets import QApplication
 from core.dynamics import MassProperties, solve_dynamics
 
 from core.flywheel import summarize
-from shaperapp.forces_panel import ForcesPanel
-from shaperapp.messages import describe
-from shaperapp.model import DesignModel
+from shaperapp.design.model import DesignModel
+from shaperapp.plots.forces_panel import ForcesPanel
+from shaperapp.widgets.messages import describe
 
 from gui_helpers import curve_items, shown
 

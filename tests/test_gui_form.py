@@ -2,9 +2,9 @@
 import pytest
 
 from core.geometry import synthesize
-from shaperapp.form import DesignForm
-from shaperapp.metrics_panel import MetricsPanel
-from shaperapp.model import DesignModel
+from shaperapp.design.form import DesignForm
+from shaperapp.design.model import DesignModel
+from shaperapp.results.panel import MetricsPanel
 
 
 @pytest.fixture

@@ -20,10 +20,11 @@ from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
 from core.io import load_design
 from core.spec import NUMBER_FIELDS
-from shaperapp import file_dialogs, i18n
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
-from shaperapp.model_results import MAX_GUI_SAMPLES
+from shaperapp.design.model import DesignModel
+from shaperapp.design.results import MAX_GUI_SAMPLES
+from shaperapp.widgets import file_dialogs
+from shaperapp.widgets import i18n
+from shaperapp.window.main_window import MainWindow
 
 from hostile_files import VALID, build_case
 

@@ -4,7 +4,7 @@ import re
 import pytest
 
 from core.geometry import synthesize
-from shaperapp.help import GuideDialog, about_text, guide_html, version
+from shaperapp.window.help import GuideDialog, about_text, guide_html, version
 
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])

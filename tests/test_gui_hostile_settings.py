@@ -9,7 +9,7 @@ from PySide6.QtCore import QByteArray, QPoint, QSettings, QSize
 from PySide6.QtWidgets import QApplication
 
 from gui_helpers import main_window
-from shaperapp.document import MAX_RECENT
+from shaperapp.design.document import MAX_RECENT
 
 KEYS = ("language", "geometry", "windowState", "lastDir", "libraryPath", "recentFiles")
 HOSTILE = {

@@ -8,11 +8,11 @@ from PySide6.QtWidgets import QApplication, QMessageBox, QScrollArea
 
 from core.errors import DesignError
 from core.geometry import synthesize
-from shaperapp.document import Document
-from shaperapp.form import DesignForm
-from shaperapp.guards import guard_wheel, install_wheel_guard
-from shaperapp.messages import describe
-from shaperapp.model import MAX_SPEEDS, DesignModel
+from shaperapp.design.document import Document
+from shaperapp.design.form import DesignForm
+from shaperapp.design.model import MAX_SPEEDS, DesignModel
+from shaperapp.widgets.guards import guard_wheel, install_wheel_guard
+from shaperapp.widgets.messages import describe
 
 
 @pytest.fixture
@@ -80,7 +80,7 @@ def test_switching_to_synthesis_carries_the_k_and_h_the_dimensions_imply(setup):
 
 
 def test_metrics_box_title_follows_the_mode(setup, qtbot):
-    from shaperapp.metrics_panel import MetricsPanel
+    from shaperapp.results.panel import MetricsPanel
     model, form, _ = setup
     panel = MetricsPanel(model)
     qtbot.addWidget(panel)
@@ -180,7 +180,7 @@ def test_export_while_invalid_asks(setup, tmp_path, monkeypatch):
     model, form, document = setup
     type_text(form, "crank", "abc")
     monkeypatch.setattr(QMessageBox, "question", lambda *a, **k: QMessageBox.StandardButton.Cancel)
-    monkeypatch.setattr("shaperapp.file_dialogs.save_file_name",
+    monkeypatch.setattr("shaperapp.widgets.file_dialogs.save_file_name",
                         lambda *a, **k: pytest.fail("no file dialog after Cancel"))
     assert not document.export_csv_dialog(None)
     assert not document.export_forces_csv_dialog(None)
@@ -353,7 +353,7 @@ def test_a_design_core_cannot_compute_is_reported_not_ignored(model, monkeypatch
     def broken(*args, **kwargs):
         raise RuntimeError("the ram does not have exactly two dead points")
 
-    monkeypatch.setattr("shaperapp.model_results.analyze", broken)
+    monkeypatch.setattr("shaperapp.design.results.analyze", broken)
     model.set_spec(stroke=310.0)
     assert model.error is not None and model.error.parameter == "design"
     assert describe(model.error) == "Design: cannot be computed for these inputs; try other values"

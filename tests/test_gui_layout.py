@@ -18,10 +18,10 @@ from PySide6.QtCore import QByteArray, QSettings, Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QApplication, QDockWidget
 
-from shaperapp import i18n
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
-from shaperapp.window_state import STATE_VERSION
+from shaperapp.design.model import DesignModel
+from shaperapp.widgets import i18n
+from shaperapp.window.main_window import MainWindow
+from shaperapp.window.state import STATE_VERSION
 
 PROBE = Path(__file__).with_name("layout_probe.py")
 SIXTEEN = ",".join(str(20 + 5 * i) for i in range(16))
@@ -322,7 +322,7 @@ def test_a_hidden_results_pane_waits_until_shown(window):
 
 
 def test_hidden_scheme_and_polygons_do_no_work_per_edit(window, monkeypatch):
-    import shaperapp.polygon_view as polygon_view
+    import shaperapp.vectors.view as polygon_view
     calls = {"scheme": 0, "polygons": 0}
     rebuild = window.scheme._mechanism.rebuild
     compute = polygon_view.polygons

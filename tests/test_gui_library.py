@@ -11,11 +11,11 @@ from core.compare import compare, table_csv
 from core.io import load_design, save_design
 from core.library import Library
 from core.spec import Spec
-from shaperapp import library_pane
-from shaperapp.compare_plots import design_pen
-from shaperapp.compare_view import CompareView
-from shaperapp.library_pane import LibraryPane
-from shaperapp.library_table import COLUMNS
+from shaperapp.compare.plots import design_pen
+from shaperapp.compare.view import CompareView
+from shaperapp.library import pane as library_pane
+from shaperapp.library.pane import LibraryPane
+from shaperapp.library.table import COLUMNS
 
 
 @pytest.fixture(autouse=True)
@@ -52,8 +52,8 @@ def save(pane, model, name, **spec):
 def test_filter_takes_the_field_names_the_pane_shows(pane, model):
     """In Chinese the columns read 方案, 最大压力角 (°) …, but the filter took only core's
     English names: "方案=滑块" was refused (issue 20 item 7)."""
-    from shaperapp import i18n
-    from shaperapp.library_filter import core_filter
+    from shaperapp.widgets import i18n
+    from shaperapp.library.filter import core_filter
     save(pane, model, "a block")
     save(pane, model, "a rod", variant="rod", rod_input="ratio", rod_ratio=0.3)
     i18n.set_language("zh_CN")
@@ -274,8 +274,8 @@ def test_compare_view_with_too_few_designs_and_files(model, qtbot, tmp_path):
 
 
 def test_main_window_has_library_dock_and_compare_tab(qtbot, tmp_path):
-    from shaperapp.main_window import MainWindow
-    from shaperapp.model import DesignModel
+    from shaperapp.window.main_window import MainWindow
+    from shaperapp.design.model import DesignModel
     win = MainWindow(DesignModel(), QSettings(str(tmp_path / "w.ini"), QSettings.Format.IniFormat))
     qtbot.addWidget(win)
     win.show()
@@ -294,7 +294,7 @@ def test_replace_in_dataclass_keeps_entry_equal(pane, model):
 
 
 def test_large_library_is_fetched_page_by_page(pane, model):
-    from shaperapp.library_table import PAGE
+    from shaperapp.library.table import PAGE
     save(pane, model, "template")
     lib = pane.actions.library
     template = lib.get("template")
@@ -336,7 +336,7 @@ def test_stale_figures_are_shown_and_recomputed(pane, model, no_dialogs, qtbot):
 
 
 def test_stale_bar_in_chinese(pane, model, qtbot):
-    from shaperapp import i18n
+    from shaperapp.widgets import i18n
     save(pane, model, "K1.4")
     _age(pane.actions.library.path, "K1.4")
     pane._refresh()

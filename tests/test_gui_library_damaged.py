@@ -30,8 +30,8 @@ SCRIPT = textwrap.dedent("""
     import sys
     from PySide6.QtCore import QSettings
     from PySide6.QtWidgets import QApplication
-    from shaperapp.library_pane import LibraryPane
-    from shaperapp.model import DesignModel
+    from shaperapp.library.pane import LibraryPane
+    from shaperapp.design.model import DesignModel
     app = QApplication([])
     pane = LibraryPane(DesignModel(), settings=QSettings(sys.argv[2], QSettings.Format.IniFormat))
     pane.resize(1200, 400)
@@ -74,9 +74,9 @@ def test_damaged_row_is_marked_in_the_pane(qtbot, tmp_path, monkeypatch):
     """In process (pytest-qt): the damaged row says why on hover; the good one opens."""
     from PySide6.QtCore import QSettings, Qt
     from PySide6.QtWidgets import QMessageBox
-    from shaperapp.library_pane import LibraryPane
-    from shaperapp.library_table import COLUMNS
-    from shaperapp.model import DesignModel
+    from shaperapp.library.pane import LibraryPane
+    from shaperapp.library.table import COLUMNS
+    from shaperapp.design.model import DesignModel
     monkeypatch.setenv("SHAPER_LIBRARY", str(tmp_path / "default.sqlite"))
     monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: None)
     path = tmp_path / "lib.sqlite"
@@ -105,9 +105,9 @@ def test_read_only_library_in_the_pane(qtbot, tmp_path, monkeypatch):
     and a change tried anyway is refused with a message, the file unchanged."""
     from PySide6.QtCore import QSettings
     from PySide6.QtWidgets import QMessageBox
-    from core import library_open
-    from shaperapp.library_pane import LibraryPane
-    from shaperapp.model import DesignModel
+    from core.library import open as library_open
+    from shaperapp.library.pane import LibraryPane
+    from shaperapp.design.model import DesignModel
     monkeypatch.setenv("SHAPER_LIBRARY", str(tmp_path / "default.sqlite"))
     shown = []
     monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: shown.append(a[2]))

@@ -189,7 +189,7 @@ def test_a_summary_that_cannot_be_computed_shows_dashes_and_the_forces_error(qtb
     the forces error names it and the table shows "—", never "nan" or old numbers."""
     from PySide6.QtWidgets import QApplication
 
-    import shaperapp.model_results as results
+    import shaperapp.design.results as results
     from gui_helpers import main_window
 
     with main_window(tmp_path) as window:

@@ -6,10 +6,10 @@ import pytest
 from PySide6.QtCore import QSettings
 
 from core.io import load_design
-from shaperapp.document import Document
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
-from shaperapp.model_results import MAX_GUI_SAMPLES
+from shaperapp.design.document import Document
+from shaperapp.design.model import DesignModel
+from shaperapp.design.results import MAX_GUI_SAMPLES
+from shaperapp.window.main_window import MainWindow
 
 from gui_helpers import main_window
 from hostile_files import CASES, VALID, build_case
@@ -88,7 +88,7 @@ def test_failure_in_the_recomputation_changes_nothing(window, tmp_path, qtbot, m
     def broken(*args, **kwargs):
         raise RuntimeError("the ram does not have exactly two dead points")
 
-    monkeypatch.setattr("shaperapp.model_results.analyze", broken)
+    monkeypatch.setattr("shaperapp.design.results.analyze", broken)
     refused(window, good, tmp_path, qtbot)
     monkeypatch.undo()
     assert window.document.open_path(str(good))

@@ -13,7 +13,7 @@ import pytest
 from PySide6.QtGui import QPainter, QPicture
 from PySide6.QtWidgets import QApplication
 
-from shaperapp.plot_axes import styled_plot_item
+from shaperapp.plots.axes import styled_plot_item
 
 from gui_helpers import shown
 

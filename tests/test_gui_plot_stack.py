@@ -16,9 +16,9 @@ from PySide6.QtGui import QImage, QPainter
 from PySide6.QtWidgets import QApplication
 
 from core.kinematics import solve
-from shaperapp.force_plots import ForcePlots
-from shaperapp.plots import PlotsWidget
-from shaperapp.style import SPEED_COLOURS, fmt
+from shaperapp.plots.forces import ForcePlots
+from shaperapp.plots.kinematics import PlotsWidget
+from shaperapp.widgets.style import SPEED_COLOURS, fmt
 
 from gui_helpers import shown
 
@@ -193,7 +193,7 @@ def test_right_click_opens_our_menu_never_pyqtgraphs(qtbot, request, view):
 
 
 def test_menu_is_translated(plots):
-    from shaperapp import i18n
+    from shaperapp.widgets import i18n
     try:
         assert i18n.set_language("zh_CN")
         QApplication.processEvents()

@@ -16,8 +16,8 @@ from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QApplication
 
 from core.kinematics import crank_angles, solve
-from shaperapp.model import DesignModel
-from shaperapp.plots import LEVER_PLOTS, PLOT_NAMES, SHARED_PLOTS, PlotsWidget
+from shaperapp.design.model import DesignModel
+from shaperapp.plots.kinematics import LEVER_PLOTS, PLOT_NAMES, SHARED_PLOTS, PlotsWidget
 
 from gui_helpers import curve_items, shown
 

@@ -18,10 +18,10 @@ from PySide6.QtWidgets import QApplication
 from core.dynamics import MassProperties
 from core.geometry import synthesize
 from core.polygons import polygons
-from shaperapp.main_window import MainWindow
-from shaperapp.model import DesignModel
-from shaperapp.polygon_paint import auto_scale, paint_polygon
+from shaperapp.design.model import DesignModel
 from shaperapp.report.figures import report_font
+from shaperapp.vectors.paint import auto_scale, paint_polygon
+from shaperapp.window.main_window import MainWindow
 
 from paint_recorder import PaintRecorder, overlapping
 from test_gui_layout import overlap, probe

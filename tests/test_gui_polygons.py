@@ -9,9 +9,9 @@ from PySide6.QtGui import QImage, QPainter
 from core.dynamics import MassProperties
 from core.geometry import synthesize
 from core.polygons import nice_scale, paper, polygons
-from shaperapp.polygon_export import export_polygon
-from shaperapp.polygon_paint import paint_polygon
-from shaperapp.polygon_view import PolygonView
+from shaperapp.vectors.export import export_polygon
+from shaperapp.vectors.paint import paint_polygon
+from shaperapp.vectors.view import PolygonView
 
 from gui_helpers import shown
 

@@ -5,7 +5,7 @@ from PySide6.QtGui import QGuiApplication
 
 from core.dynamics import masses_for_design
 from core.positions import SPECIAL_NAMES, display_values, position_table, positions
-from shaperapp.positions_view import PositionsView
+from shaperapp.positions.view import PositionsView
 
 from gui_helpers import shown
 

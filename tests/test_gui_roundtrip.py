@@ -21,9 +21,9 @@ from core.cli import run as run_cli
 from core.dynamics import MassProperties
 from core.io import load_design
 from core.spec import NUMBER_FIELDS
-from shaperapp.document import Document
-from shaperapp.form import DesignForm, parse_number
-from shaperapp.model import DesignModel
+from shaperapp.design.document import Document
+from shaperapp.design.form import DesignForm, parse_number
+from shaperapp.design.model import DesignModel
 
 from cli_runner import shaper
 

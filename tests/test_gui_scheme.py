@@ -9,8 +9,8 @@ from PySide6.QtCore import QEvent, QRectF
 from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QApplication, QCheckBox
 
-from shaperapp.model import DesignModel
-from shaperapp.scheme import SchemeWidget
+from shaperapp.design.model import DesignModel
+from shaperapp.scheme.view import SchemeWidget
 
 
 

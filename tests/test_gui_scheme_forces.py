@@ -16,8 +16,8 @@ from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import QApplication, QCheckBox
 
 from core.dynamics import solve_dynamics
-from shaperapp.model import DesignModel
-from shaperapp.scheme import SchemeWidget
+from shaperapp.design.model import DesignModel
+from shaperapp.scheme.view import SchemeWidget
 
 SHARE = 0.35          # the issue: the largest force of the cycle ≈ 0.35·L3 long
 

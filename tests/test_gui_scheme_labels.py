@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from shaperapp.animation import AnimationBar
-from shaperapp.style import fmt
+from shaperapp.widgets.style import fmt
+from shaperapp.window.animation import AnimationBar
 
 
 def box_hits_segment(box, p, q, margin: float) -> bool:
@@ -121,7 +121,7 @@ def test_l2_and_h_labels_never_overlap_even_after_a_zoom(scheme, model, spec):
                                   {"variant": "rod", "rod_ratio": 0.3}])
 def test_joint_labels_a_and_o2_never_on_the_lever_or_the_crank(scheme, model, spec):
     """A sat on the lever at φ = 100°, O₂ under it at 120° (issue 20 item 8)."""
-    from shaperapp.scheme_draw import text_box
+    from shaperapp.scheme.draw import text_box
     sh, u, o2 = design_links(model, spec)
     labels = scheme._mechanism.labels
     for index in range(0, model.angle_count, 5):
@@ -136,8 +136,8 @@ def test_dimension_labels_apart_in_the_laptop_pane(qtbot, model, time_ratio):
     """At K = 1.6 in the 420 px mechanism pane "L1 = 100.0" covered the end of
     "L2 = 282.0", which read "L2 = 282" (issue 20 item 8)."""
     from gui_helpers import shown
-    from shaperapp.scheme import SchemeWidget
-    from shaperapp.scheme_draw import overlaps
+    from shaperapp.scheme.view import SchemeWidget
+    from shaperapp.scheme.draw import overlaps
     model.set_spec(time_ratio=time_ratio)
     assert model.error is None
     for size in ((420, 330), (900, 650)):
@@ -154,8 +154,8 @@ def test_h_label_stays_beside_its_dimension_in_a_tall_design(qtbot, model, spec)
     the guide line, out of the drawing, and was cut at the pane's top edge (issue 20
     item 4): it ended 420 mm above its dimension."""
     from gui_helpers import shown
-    from shaperapp.scheme import SchemeWidget
-    from shaperapp.scheme_draw import overlaps
+    from shaperapp.scheme.view import SchemeWidget
+    from shaperapp.scheme.draw import overlaps
     model.set_spec(**spec)
     assert model.error is None
     scheme = shown(qtbot, SchemeWidget(model), 418, 346)        # the laptop's mechanism pane

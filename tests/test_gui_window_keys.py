@@ -8,7 +8,7 @@ from PySide6.QtCore import QCoreApplication, Qt, QTranslator
 from PySide6.QtGui import QFont, QGuiApplication, QKeySequence
 from PySide6.QtWidgets import QApplication, QInputDialog
 
-from shaperapp.main_window import MainWindow
+from shaperapp.window.main_window import MainWindow
 
 from gui_helpers import main_window
 
@@ -144,7 +144,7 @@ def test_qt_dialogs_are_chinese_too(window):
     assert QCoreApplication.translate("QPlatformTheme", "Cancel") == "取消"
     assert QCoreApplication.translate("QFileDialog", "Look in:") != "Look in:"
     from PySide6.QtWidgets import QLabel
-    from shaperapp.file_dialogs import _dialog
+    from shaperapp.widgets.file_dialogs import _dialog
     dialog = _dialog(window, "t", "", "*.json")
     labels = [re.sub(r"&\w", "", label.text()) for label in dialog.findChildren(QLabel)]   # no mnemonics
     assert labels and all(not any(c.isascii() and c.isalpha() for c in text) for text in labels), labels

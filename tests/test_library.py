@@ -7,14 +7,14 @@ import pytest
 
 from core.dynamics import MassProperties
 
-from core.flywheel import summarize
 from core.errors import FileFormatError
+from core.flywheel import summarize
 from core.io import load_design, masses_to_dict, save_design
 from core.library import Library
-from core.library_names import check_tags, file_stem, safe_file_name, unique_name
-from core.library_files import export_entries, import_entries, read_design_files
-from core.library_query import QueryError, parse_filter
-from core.library_store import ENV_VAR, LibraryError, resolve_path
+from core.library.files import export_entries, import_entries, read_design_files
+from core.library.names import check_tags, file_stem, safe_file_name, unique_name
+from core.library.query import QueryError, parse_filter
+from core.library.store import ENV_VAR, LibraryError, resolve_path
 from core.metrics import analyze
 from core.spec import Spec
 
@@ -283,7 +283,7 @@ def test_export_all_is_all_or_nothing(lib, tmp_path, monkeypatch, existing):
     """A failure part way (the third file cannot be moved in / written) leaves no exported
     file, no temporary folder and, for a new folder, no folder."""
     import os as os_module
-    import core.library_files as files
+    import core.library.files as files
     for name, spec in SPECS.items():
         lib.add(name, loaded(spec))
     out = tmp_path / "out"

@@ -7,12 +7,12 @@ from pathlib import Path
 import pytest
 
 import core.library as library_module
-import core.library_entry as library_entry
+import core.library.entry as library_entry
 from cli_runner import shaper
 from core.dynamics import MassProperties
 from core.figures import FIGURES_VERSION, figures
 from core.library import Library
-from core.library_store import schema_version
+from core.library.store import schema_version
 from core.spec import Spec
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,

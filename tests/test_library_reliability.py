@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from core import library_store
 from core.library import Library
-from core.library_store import APPLICATION_ID, LibraryError, backup_copy, schema_version
+from core.library import store as library_store
+from core.library.store import APPLICATION_ID, LibraryError, backup_copy, schema_version
 from core.spec import Spec
 from cli_runner import shaper
 

@@ -169,7 +169,7 @@ def test_the_name_chooses_the_type_and_a_save_keeps_the_files_mode(tmp_path):
 
 def test_no_chinese_font_names_the_package(qtbot, monkeypatch, tmp_path, capsys):
     from core.cli import main
-    from shaperapp import i18n
+    from shaperapp.widgets import i18n
     from shaperapp.report import fonts
     monkeypatch.setattr(fonts, "cjk_family", lambda: None)
     try:
@@ -312,8 +312,8 @@ def test_scheme_marks_sit_on_the_design(qtbot):
     position measures L3 in design mm, at the same scale across and up (aspect locked)."""
     import math
 
-    from shaperapp.model import DesignModel
-    from shaperapp.scheme import SchemeWidget
+    from shaperapp.design.model import DesignModel
+    from shaperapp.scheme.view import SchemeWidget
     model = DesignModel()
     scheme = SchemeWidget(model)
     qtbot.addWidget(scheme)

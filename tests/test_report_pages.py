@@ -20,9 +20,9 @@ from PySide6.QtGui import QImage
 from core.compare import Candidate
 from core.dynamics import MassProperties
 from core.spec import Spec
-from shaperapp import i18n
 from shaperapp.report.content import Options, build
 from shaperapp.report.pdf import PAGE_MM, page_boxes, pdf_bytes
+from shaperapp.widgets import i18n
 
 from figure_checks import pixels
 

@@ -5,7 +5,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QSettings
 
-from core.library_store import default_path
+from core.library.store import default_path
 
 
 def test_default_library_and_settings_are_private_to_the_run(qtbot):

@@ -2,12 +2,12 @@
 
 PySide 6.11 keeps alive every command Qt deletes inside ``QUndoStack.push`` (a
 merged or obsolete one), so each keystroke leaked its input states; the model now
-merges through ``shaperapp.undo.push_edit``. The rule is Qt's: the same field and
+merges through ``shaperapp.design.undo.push_edit``. The rule is Qt's: the same field and
 typing session, nothing to redo, the top step not the saved state.
 """
 import gc
 
-from shaperapp.undo import InputEdit
+from shaperapp.design.undo import InputEdit
 
 
 def live_edits() -> int:

@@ -1,12 +1,12 @@
 """The worker runner: jobs run off the GUI thread, but everything Qt or the garbage
-collector does for them happens on the GUI thread (see shaperapp/worker.py for why)."""
+collector does for them happens on the GUI thread (see shaperapp/widgets/worker.py for why)."""
 import gc
 import sys
 import threading
 
 import pytest
 
-from shaperapp.worker import COLLECTOR, GuiThreadCollector, JobRunner
+from shaperapp.widgets.worker import COLLECTOR, GuiThreadCollector, JobRunner
 
 
 class Recorder:

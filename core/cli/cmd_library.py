@@ -14,23 +14,24 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from core.library.files import export_entries, import_entries, read_design_files
+from core.library.names import storable
+from core.library.open import library_exists
+from core.library.query import QueryError, parse_filter, sort_sql
+from core.library.store import ENV_VAR, LibraryError, backup_copy
+
 from ..compare import value_text
 from ..errors import FileFormatError
 from ..figures import DESIGN_FIGURES, FIGURES_VERSION, SPEED_FIGURES
 from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library
-from ..library_files import export_entries, import_entries, read_design_files
-from ..library_names import storable
-from ..library_query import QueryError, parse_filter, sort_sql
-from ..library_open import library_exists
-from ..library_store import ENV_VAR, LibraryError, backup_copy
+from .cmd_library_check import check_options, run_check
+from .cmd_library_compare import compare_options, run_compare
+from .cmd_library_refresh import refresh_options, run_refresh
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
                      NOTES, add_speed_options, design_file, fail, library_path, masses_from_args, note_read_only,
                      number, whole_number,
                      rpms_from_args, spec_from_args)
-from .cmd_library_compare import compare_options, run_compare
-from .cmd_library_check import check_options, run_check
-from .cmd_library_refresh import refresh_options, run_refresh
 from .output import OutputError, print_json
 
 HELP = "keep, find, export and compare designs in a library"
@@ -50,7 +51,7 @@ LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "{:
 
 def filter_help() -> str:
     """The filter and sort syntax, for ``library list --help`` (from core's own tables)."""
-    from ..library_query import FIELDS, OPERATORS
+    from core.library.query import FIELDS, OPERATORS
     return ("filter (--where): conditions FIELD OP VALUE separated by commas, all must hold.\n"
             f"  OP: {' '.join(OPERATORS)}   (~ contains, ignoring case)\n"
             "  VALUE: a number, or text; \"double quotes\" around text with a comma.\n"

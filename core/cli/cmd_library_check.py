@@ -1,7 +1,7 @@
 """``shaper library check``: the entries whose stored values cannot be shown or opened.
 
 A library another program wrote to, or a damaged disk, can hold values of the wrong
-type in single rows (see :mod:`core.library_rows`); the rest of the library stays
+type in single rows (see :mod:`core.library.rows`); the rest of the library stays
 usable and this lists what is not, with SQLite's own ``integrity_check`` findings.
 """
 from __future__ import annotations

@@ -8,11 +8,12 @@ from __future__ import annotations
 import argparse
 from typing import Sequence
 
+from core.library.names import file_stem, unique_name
+
 from ..compare import Candidate, compare, comparison_json, curves_csv, difference_text, table_csv, value_text
 from ..errors import DesignError, FileFormatError
 from ..io import load_design
 from ..library import Library
-from ..library_names import file_stem, unique_name
 from .common import UsageError, library_path, note_read_only, number
 from .output import write_output
 

@@ -369,7 +369,7 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
 def library_path(library: str | None) -> Path:
     """The library ``--library`` names (see ``resolve_path``); an empty one is refused
     rather than taken for the default library."""
-    from ..library_store import resolve_path      # sqlite3 and platformdirs: only when needed
+    from core.library.store import resolve_path      # sqlite3 and platformdirs: only when needed
     if library is not None and not library.strip():
         raise UsageError("--library: the path is empty")
     return resolve_path(library)

@@ -13,17 +13,17 @@ import os
 import sys
 from pathlib import Path
 
+from core.atomic import atomic_write
 from core.cli.cmd_library import library_failure
 from core.cli.cmd_library_compare import load_candidates
 from core.cli.cmd_table import masses_or_none
-from core.atomic import atomic_write
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
                              number, number_list, rpms_from_args, spec_from_args)
 from core.cli.output import OutputError
 from core.compare import MAX_DESIGNS, Candidate
 from core.errors import DesignError
 from core.kinematics import check_rpms
-from core.library_store import ENV_VAR, LibraryError
+from core.library.store import ENV_VAR, LibraryError
 from core.positions import DEFAULT_COUNT, check_count, check_extra
 
 HELP = "write the design report (A4 PDF, or HTML)"
@@ -115,7 +115,7 @@ def _quiet(kind, _context, message) -> None:
 def _application():
     from PySide6.QtCore import qInstallMessageHandler
     from PySide6.QtWidgets import QApplication
-    from ..style import configure_plots
+    from shaperapp.widgets.style import configure_plots
     configure_plots()
     qInstallMessageHandler(_quiet)
     return QApplication.instance() or QApplication(sys.argv[:1])
@@ -183,7 +183,7 @@ def _run(args: argparse.Namespace) -> int:
 
     _ensure_headless()
     _application()
-    from .. import i18n
+    from shaperapp.widgets import i18n
     from .content import Options, build
     from .fonts import MissingFontError, report_font
     language = i18n.language_of(args.lang)

@@ -14,9 +14,10 @@ from PySide6.QtCore import QCoreApplication
 
 from core.compare import Candidate, Comparison, compare, difference_text, value_text
 from core.dynamics import MassProperties
-from core.library_names import unique_name
+from core.library.names import unique_name
 from core.spec import Spec
-from ..figure_labels import figure_label, variant_label
+from shaperapp.widgets.figure_labels import figure_label, variant_label
+
 from .blocks import Figure, Heading, Paragraph, Table, typeset
 
 translate = QCoreApplication.translate

@@ -28,7 +28,8 @@ from core.margins import margins
 from core.metrics import CycleMetrics, analyze
 from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
-from ..column_titles import column_titles, group_titles, special_titles
+from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
+
 from . import figures
 from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
 from .comparison import comparison_blocks, report_comparison

@@ -20,10 +20,11 @@ from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpin
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
-from ..model import DesignModel
-from .command import report_kind, write_report
+from shaperapp.design.model import DesignModel
+
 from .blocks import Cover
 from .command import MAX_TEXT
+from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles, inputs_name
 from .fonts import MissingFontError
 

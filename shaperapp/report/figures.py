@@ -26,12 +26,13 @@ from core.geometry import Design
 from core.metrics import CycleMetrics
 from core.polygons import polygons
 from core.spec import Spec
-from ..compare_plots import ComparePlots
-from ..forces_panel import ForcesPanel
-from ..model import DesignModel
-from ..plots import PlotsWidget
-from ..polygon_paint import auto_scale, paint_polygon
-from ..scheme import SchemeWidget
+from shaperapp.compare.plots import ComparePlots
+from shaperapp.design.model import DesignModel
+from shaperapp.plots.forces_panel import ForcesPanel
+from shaperapp.plots.kinematics import PlotsWidget
+from shaperapp.scheme.view import SchemeWidget
+from shaperapp.vectors.paint import auto_scale, paint_polygon
+
 from .fonts import report_font
 
 Paint = Callable[[QPainter, QRectF, float], None]

@@ -1,0 +1,64 @@
+"""One library entry and its design document (the text of a design file).
+
+Apart from :mod:`core.library` so that the entry, the text it stores and the check
+of that text are one small module: what is written and what is read back are the
+same rules (:func:`core.io.parse_design`).
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Any
+
+from core.figures import FIGURES_VERSION, Figures
+from core.io import design_document, masses_to_dict, parse_design
+
+_PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One library entry: what it is called, when, the document text and its figures."""
+
+    name: str
+    notes: str
+    tags: tuple[str, ...]
+    created: str          # UTC ISO 8601
+    modified: str         # UTC ISO 8601
+    text: str             # the design document as JSON, the text of a design file
+    figures: Figures
+    figures_version: int = FIGURES_VERSION   # the computation the figures come from
+
+    @property
+    def figures_current(self) -> bool:
+        """False when an older program computed the figures (see ``refresh_figures``)."""
+        return self.figures_version >= FIGURES_VERSION
+
+    def document(self) -> dict[str, Any]:
+        """The validated design (keys of ``core.io.load_design``); FileFormatError if bad."""
+        return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}")
+
+
+def document_text(loaded: dict[str, Any]) -> str:
+    """A loaded design (``load_design``'s dict) as the JSON text of a design file."""
+    masses = loaded.get("masses")
+    extra: dict[str, Any] = {}
+    for key, value in loaded.items():              # keep the file's key order
+        if key == "forces" and masses is not None:
+            extra["forces"] = masses_to_dict(masses)
+        elif key not in _PARSED_KEYS:
+            extra[key] = value
+    if masses is not None and "forces" not in extra:
+        extra["forces"] = masses_to_dict(masses)
+    doc = design_document(loaded["spec"], loaded["rpm"], loaded["step_deg"], extra)
+    text = json.dumps(doc, indent=2, ensure_ascii=False)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:      # a lone surrogate ("\ud800" in the file): kept as a JSON escape
+        text = json.dumps(doc, indent=2, ensure_ascii=True)
+    return text
+
+
+def check_document(name: str, text: str) -> None:
+    """Refuse (FileFormatError) a stored document a design file could not be."""
+    parse_design(text.encode("utf-8"), f"library entry {name!r}")

@@ -1,0 +1,140 @@
+"""Design files in and out of the library: import files or folders, export entries.
+
+Shared by ``shaper library import/export`` and the GUI's library pane, so both
+name imported entries and exported files the same way.
+"""
+from __future__ import annotations
+
+import errno
+import os
+import shutil
+import secrets
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Iterable
+
+from core.errors import FileFormatError
+from core.io import load_design
+from core.library import Entry, Library
+
+from .names import MAX_NAME, file_stem, safe_file_name, shown_file_name, unique_name
+from .store import LibraryError
+
+DESIGN_SUFFIX = ".shaper.json"
+
+
+def expand_paths(paths: Iterable[str | os.PathLike]) -> list[Path]:
+    """Files as given; a folder stands for its ``*.json`` files (not recursive), sorted."""
+    out: list[Path] = []
+    for p in paths:
+        path = Path(p)
+        try:
+            folder = path.is_dir()
+            files = sorted(f for f in path.iterdir() if f.is_file() and f.name.lower().endswith(".json")) \
+                if folder else [path]
+        except OSError:                 # a name too long, a folder that cannot be listed:
+            files = [path]              # load_design says why, in one line
+        out += files
+    return out
+
+
+def read_design_files(paths: Iterable[str | os.PathLike]) -> tuple[list[tuple[Path, dict[str, Any]]],
+                                                                    list[tuple[Path, str]]]:
+    """Load and validate every file: ([(path, design)], [(path, why refused)])."""
+    good: list[tuple[Path, dict[str, Any]]] = []
+    bad: list[tuple[Path, str]] = []
+    for path in expand_paths(paths):
+        try:
+            good.append((path, load_design(path)))
+        except FileFormatError as exc:
+            bad.append((path, str(exc)))
+    return good, bad
+
+
+def import_entries(library: Library, designs: list[tuple[Path, dict[str, Any]]],
+                   rename_duplicates: bool) -> list[Entry]:
+    """Entries for loaded files, named after the files; stored in one transaction.
+
+    A name already in the library (or twice among the files) is refused with
+    LibraryError('exists') and nothing is stored, unless ``rename_duplicates``
+    gives it the next free ``name (2)``, ``name (3)``….
+    """
+    taken = set(library.names())
+    entries = []
+    for path, loaded in designs:
+        name = file_stem(path)[:MAX_NAME].strip() or "design"
+        if rename_duplicates:
+            name = unique_name(name, taken)
+        taken.add(name)
+        entries.append(library.make_entry(name, loaded, notes=f"imported from {shown_file_name(path)}"))
+    library.add_entries(entries)
+    return entries
+
+
+@dataclass(frozen=True)
+class Exported:
+    """What :func:`export_entries` wrote, and the entries it left out with why."""
+
+    paths: tuple[Path, ...]
+    skipped: tuple[tuple[str, str], ...]      # (entry name, why it cannot be exported)
+
+
+def export_entries(library: Library, folder: str | os.PathLike,
+                   names: Iterable[str] | None = None) -> Exported:
+    """Write entries (default: all) as design files into ``folder``, all or nothing.
+
+    File names come from the entry names (characters no file system allows are
+    replaced, cut to a length every file system takes); an existing file is never
+    overwritten — the next free ``name (2)`` is used. The files are written into a
+    temporary folder first and moved into place only when all are written (a missing
+    ``folder`` is that temporary folder renamed), so a failure (a full disk) leaves no
+    partial export. A damaged entry is left out and reported in ``skipped``.
+    OSError if the folder cannot be written.
+    """
+    folder = Path(folder)
+    texts: list[tuple[str, str]] = []        # (file name, text)
+    skipped: list[tuple[str, str]] = []
+    used = {p.name for p in folder.iterdir()} if folder.is_dir() else set()
+    for name in (library.names() if names is None else list(names)):
+        try:
+            entry = library.get(name)
+            entry.document()                  # never export what could not be opened again
+        except (LibraryError, FileFormatError) as exc:
+            if isinstance(exc, LibraryError) and exc.kind not in ("entry", "missing"):
+                raise
+            skipped.append((name, str(exc)))
+            continue
+        stem = unique_name(safe_file_name(name), {n[:-len(DESIGN_SUFFIX)] for n in used
+                                                  if n.endswith(DESIGN_SUFFIX)})
+        used.add(stem + DESIGN_SUFFIX)
+        texts.append((stem + DESIGN_SUFFIX, entry.text + "\n"))
+    exists = folder.is_dir()
+    parent = folder if exists else (folder.parent if str(folder.parent) else Path("."))
+    parent.mkdir(parents=True, exist_ok=True)
+    staging = parent / f".shaper-export-{os.getpid()}-{secrets.token_hex(4)}"
+    staging.mkdir()                             # the umask's mode, which a new folder keeps
+    moved: list[Path] = []
+    try:
+        for i, (_, text) in enumerate(texts):
+            with open(staging / f"{i}.tmp", "w", encoding="utf-8", newline="") as handle:
+                handle.write(text)
+                handle.flush()
+                os.fsync(handle.fileno())
+        if not exists:
+            for i, (file_name, _) in enumerate(texts):
+                os.rename(staging / f"{i}.tmp", staging / file_name)
+            os.rename(staging, folder)
+            return Exported(tuple(folder / n for n, _ in texts), tuple(skipped))
+        for i, (file_name, _) in enumerate(texts):
+            target = folder / file_name
+            if os.path.lexists(target):          # made by another program meanwhile
+                raise FileExistsError(errno.EEXIST, os.strerror(errno.EEXIST), str(target))
+            os.rename(staging / f"{i}.tmp", target)
+            moved.append(target)
+    except BaseException:
+        for path in moved:                      # take back what was already moved in
+            path.unlink(missing_ok=True)
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    shutil.rmtree(staging, ignore_errors=True)
+    return Exported(tuple(moved), tuple(skipped))

@@ -1,0 +1,91 @@
+"""Names in a design library: what an entry may be called, its tags, and the names
+it gets on import (from a file name), on a copy (``base (2)``) or on export (a file
+name every system accepts). Pure string rules, shared by the library, its files
+and the GUI.
+"""
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+from typing import Iterable
+
+from .store import LibraryError
+
+MAX_NAME = 200
+MAX_TAG = 64
+_CONTROL = re.compile(r"[\x00-\x1f\x7f]")
+
+
+def storable(text: str) -> bool:
+    """Whether ``text`` can be stored as UTF-8: bytes that are not UTF-8 on a command line
+    reach Python as lone surrogates, which no UTF-8 text (and no SQLite text) can hold."""
+    try:
+        text.encode("utf-8")
+        return True
+    except UnicodeEncodeError:
+        return False
+
+
+def check_name(name: object) -> str:
+    """A usable entry name (stripped), or LibraryError('name')."""
+    if not isinstance(name, str) or not name.strip():
+        raise LibraryError("name", "a design name must not be empty")
+    name = name.strip()
+    if len(name) > MAX_NAME or _CONTROL.search(name):
+        raise LibraryError("name", f"a design name must be at most {MAX_NAME} characters, "
+                           "without control characters")
+    return name
+
+
+def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
+    """Stripped, de-duplicated, sorted tags; LibraryError('tag') for a bad one."""
+    out = set()
+    for tag in tags:
+        tag = str(tag).strip()
+        if not tag:
+            continue
+        if len(tag) > MAX_TAG or "," in tag or _CONTROL.search(tag):
+            raise LibraryError("tag", f"a tag must be at most {MAX_TAG} characters, without "
+                               f"commas or control characters (got {tag[:80]!r})")
+        out.add(tag)
+    return tuple(sorted(out))
+
+
+def unique_name(base: str, taken: Iterable[str]) -> str:
+    """``base``, or ``base (2)``, ``base (3)``… whichever is not in ``taken``."""
+    taken = set(taken)
+    if base not in taken:
+        return base
+    n = 2
+    while f"{base} ({n})" in taken:
+        n += 1
+    return f"{base} ({n})"
+
+
+def shown_file_name(path: str | os.PathLike) -> str:
+    """A file's name as text that can be stored: bytes that are not UTF-8 become �."""
+    return os.fsencode(Path(path).name).decode("utf-8", "replace")
+
+
+def file_stem(path: str | os.PathLike) -> str:
+    """The entry name a design file gets on import: its name without ``.shaper.json``/``.json``."""
+    name = shown_file_name(path)
+    for suffix in (".shaper.json", ".json"):
+        if name.lower().endswith(suffix) and len(name) > len(suffix):
+            return name[:-len(suffix)]
+    return name
+
+
+MAX_STEM_BYTES = 200     # an exported file's name without ``.shaper.json`` and `` (N)``
+
+
+def safe_file_name(name: str) -> str:
+    """An entry name usable as a file name on every system (for exporting a whole library).
+
+    Cut to ``MAX_STEM_BYTES`` bytes of UTF-8, not characters: file systems count bytes
+    (255 at most), and 120 Chinese characters are already 360 bytes.
+    """
+    cleaned = re.sub(r'[<>:"/\\|?*\x00-\x1f\x7f]', "_", name).strip(" .")
+    cut = cleaned.encode("utf-8", "replace")[:MAX_STEM_BYTES].decode("utf-8", "ignore").rstrip(" .")
+    return cut or "design"

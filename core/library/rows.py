@@ -1,0 +1,170 @@
+"""Library rows read with their types checked, so no stored value can break a reader.
+
+SQLite keeps whatever a column is given: a blob or a word in a REAL column, a
+``1e999`` (infinity), text that is not UTF-8. Such a value, written by another
+program or left by a damaged disk, once reached the CLI's number formatting
+("internal error") and the GUI's table (a crash). Every row read from a library
+goes through :func:`clean_row`: a value of the wrong type becomes ``None`` and
+the row is marked damaged with the reason; a non-finite number becomes ``None``
+(undefined) too. The other rows stay usable. ``shaper library check`` lists the
+damaged ones (:func:`damaged_entries`).
+"""
+from __future__ import annotations
+
+import math
+import sqlite3
+from functools import lru_cache
+from typing import Any, Callable, Iterable, Iterator, Sequence, TypeVar
+
+from core.figures import DESIGN_KEYS, SPEED_KEYS
+
+T = TypeVar("T")
+
+# what each column must hold: "text", "number" or "integer"; "?" after it: may be NULL
+KINDS: dict[str, str] = {
+    "id": "integer", "name": "text", "notes": "text", "tags": "text", "created": "text",
+    "modified": "text", "variant": "text", "rod_side": "text?", "figures_version": "integer",
+    "text": "text", "rpm": "number", "pos": "integer", "tag": "text",
+    **{key: "number" for key in DESIGN_KEYS}, **{key: "number" for key in SPEED_KEYS},
+}
+KINDS.update(rod_mm="number?", pressure_angle_max_deg="number?", mean_torque_N_m="number?",
+             max_torque_N_m="number?", flywheel_inertia_kg_m2="number?")
+
+
+def _problem(key: str, value: Any, nullable: bool) -> str | None:
+    """Why ``value`` cannot be column ``key``'s value, or None if it can."""
+    kind = KINDS.get(key, "text?").rstrip("?")
+    if value is None:
+        return None if nullable or KINDS.get(key, "?").endswith("?") else (
+            "there is no design document" if key == "text" else f"{key} is empty")
+    if kind == "text":
+        return None if isinstance(value, str) else (
+            "the design document is not UTF-8 text" if key == "text" else f"{key} is not text")
+    if kind == "integer":
+        return None if type(value) is int else f"{key} is not a whole number"
+    if type(value) not in (float, int):
+        return f"{key} is not a number"
+    return None if math.isfinite(value) else f"{key} is not a finite number"
+
+
+@lru_cache(maxsize=32)
+def _fast_types(keys: tuple[str, ...]) -> tuple[tuple[type, ...], ...]:
+    """Per column, the Python types that are certainly fine (a float still if finite)."""
+    kinds = [KINDS.get(key, "text?").rstrip("?") for key in keys]
+    return tuple((str,) if k == "text" else (int,) if k == "integer" else (float, int) for k in kinds)
+
+
+def clean_row(keys: Sequence[str], row: Sequence[Any],
+              nullable: frozenset[str] = frozenset()) -> tuple[list[Any], str | None]:
+    """``row`` with every unusable value replaced by None, and the first reason (None: sound).
+
+    Columns in ``nullable`` may be empty here whatever their kind (a speed's
+    figures in a list where the design lacks that speed).
+    """
+    values = list(row)
+    reason = None
+    for i, (key, value, fast) in enumerate(zip(keys, values, _fast_types(tuple(keys)))):
+        if type(value) in fast and (type(value) is not float or value - value == 0.0):
+            continue                              # the common case, checked fast
+        why = _problem(key, value, key in nullable)
+        if why is None:
+            continue
+        values[i] = None
+        if reason is None:
+            reason = why
+    return values, reason
+
+
+_LARGEST = "1.7976931348623157e308"     # the largest finite double; inf lies beyond it
+
+
+def unfit_sql(columns: Iterable[tuple[str, str]], nullable: frozenset[str] = frozenset()) -> str:
+    """An SQL expression that is 1 where a value of ``columns`` ((SQL expression, key)
+    pairs) has the wrong type for its key or is not finite, else 0. Checked by SQLite in
+    C, so sound rows cost nothing in Python; a flagged row then goes through
+    :func:`clean_row` for the reason. (Text that is not UTF-8 passes this flag: SQLite
+    does not decode it; :func:`read_lenient` finds it.)"""
+    tests = []
+    for expr, key in columns:
+        kind = KINDS.get(key, "text?")
+        empty = "1" if kind.endswith("?") or key in nullable else "0"     # what NULL counts as
+        kind = kind.rstrip("?")
+        # SQLite orders NULL < numbers < text < blob, so a range test says the type too,
+        # and costs less than typeof(); NULL gives NULL, which coalesce turns into ``empty``.
+        if kind == "text":
+            fits = f"{expr} >= '' AND {expr} < X''"
+        elif kind == "integer":
+            fits = f"typeof({expr}) = 'integer'"
+        else:
+            fits = f"{expr} BETWEEN -{_LARGEST} AND {_LARGEST}"
+        tests.append(f"NOT coalesce({fits}, {empty})")
+    return "(" + " OR ".join(tests) + ")"
+
+
+def _lenient_text(raw: bytes) -> str | bytes:
+    """SQLite text as str, or the raw bytes where it is not UTF-8 (then the column's check
+    reports it as not text) instead of an exception for the whole query."""
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return raw
+
+
+def read_lenient(conn: sqlite3.Connection, work: Callable[[sqlite3.Connection], T]) -> T:
+    """``work(conn)``; if a stored text is not UTF-8, again with such texts read as bytes."""
+    try:
+        return work(conn)
+    except sqlite3.OperationalError as exc:
+        if "decode" not in str(exc).lower():
+            raise
+    previous = conn.text_factory
+    conn.text_factory = _lenient_text
+    try:
+        return work(conn)
+    finally:
+        conn.text_factory = previous
+
+
+def entry_label(entry_id: Any, name: Any) -> str:
+    """How a (possibly damaged) entry is named in a message."""
+    return repr(name) if isinstance(name, str) else f"entry #{entry_id} (its name is unreadable)"
+
+
+_ENTRY_SQL = ("SELECT e.*, d.text FROM entries e LEFT JOIN documents d ON d.entry_id = e.id "
+              "ORDER BY e.id")
+
+
+def damaged_entries(conn: sqlite3.Connection, check_document: Callable[[str, str], None]) -> Iterator[tuple[str, str]]:
+    """(entry, why) for every entry that cannot be shown or opened: a value of the wrong
+    type in it, its speeds or tags, no document, or a document ``check_document(name,
+    text)`` refuses (it raises with the reason)."""
+    def work(c: sqlite3.Connection) -> list[tuple[str, str]]:
+        out = []
+        bad_speeds = _bad_children(c, "speeds", ("rpm",) + SPEED_KEYS)
+        bad_tags = _bad_children(c, "tags", ("tag",))
+        cursor = c.execute(_ENTRY_SQL)
+        keys = [d[0] for d in cursor.description]
+        for row in cursor:
+            values, reason = clean_row(keys, row)
+            entry_id = row[0]
+            label = entry_label(entry_id, row[keys.index("name")])
+            reason = reason or bad_speeds.get(entry_id) or bad_tags.get(entry_id)
+            if reason is None:
+                try:
+                    check_document(values[keys.index("name")], values[-1])
+                except Exception as exc:          # noqa: BLE001 — any refusal is the reason
+                    reason = f"its design document cannot be opened ({exc})"
+            if reason is not None:
+                out.append((label, reason))
+        return out
+    return iter(read_lenient(conn, work))
+
+
+def _bad_children(c: sqlite3.Connection, table: str, keys: Sequence[str]) -> dict[Any, str]:
+    """Entry id → the first problem among its rows in ``table``."""
+    out: dict[Any, str] = {}
+    for row in c.execute(f"SELECT entry_id, {', '.join(keys)} FROM {table}"):
+        _, reason = clean_row(keys, row[1:])
+        if reason is not None and row[0] not in out:
+            out[row[0]] = f"{table}: {reason}"
+    return out

@@ -1,0 +1,1 @@
+"""The Compare tab: several designs' curves and figures side by side."""

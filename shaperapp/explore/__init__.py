@@ -1,0 +1,1 @@
+"""The design-space map and the optimizer, run on a worker thread."""

@@ -1,0 +1,1 @@
+"""The design library pane: list, filter, open, keep and compare designs."""

@@ -1,0 +1,429 @@
+"""What one plot of a stack holds: its curves, shaded bands, cursor lines and dots.
+
+``PlotSlots`` keeps one pair of curve items (solid, dashed) and one cursor dot per
+curve, reused from one result to the next; only counts that change add or drop
+items. Everything here is per plot; the stack (stack.py) coordinates them.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtGui import QBrush, QColor, QPainter, QPainterPath, QPen
+from PySide6.QtWidgets import (QGraphicsEllipseItem, QGraphicsItem, QGraphicsLineItem, QGraphicsPathItem,
+                               QGraphicsRectItem)
+
+from shaperapp.widgets.style import CURSOR, TEXT
+
+from .clip import clipped_path, view_of
+
+# One pixel: Qt's raster engine draws thin cosmetic lines on a fast path; at 1.8 px an
+# edit of the six kinematics plots took ~1.7× and a cursor frame ~2× as long (measured).
+CURVE_WIDTH = 1.0
+LEGEND_WIDTH = 2.0       # the legend's samples, thicker so that colours are easy to tell
+DOT_RADIUS = 3.5         # px, the dot marking each curve's value at the cursor
+Z_BAND, Z_CURSOR, Z_DOT = -10, 10, 20
+ZERO_SHARE = 1e-12       # a read-out value this small against its curve's largest is 0
+
+
+@dataclass(frozen=True, eq=False)
+class Curve:
+    """One drawn line. Curves with the same ``label`` are one legend entry and are
+    shown or hidden together (a speed in every plot, with its mean line)."""
+
+    x: np.ndarray
+    y: np.ndarray
+    label: str
+    colour: QColor
+    style: Qt.PenStyle = Qt.PenStyle.SolidLine
+    width: float = CURVE_WIDTH
+    dashed: np.ndarray | None = None   # bool per point: drawn dashed (the return stroke)
+    legend: bool = True                # may give its label's legend sample
+    readout: bool = True               # listed in the read-out and dotted at the cursor
+    role: str = ""                     # "" for the plot's own curves; e.g. "mean"
+    short: str = ""                    # the legend's text, when shorter than the label
+
+
+@dataclass(frozen=True)
+class Band:
+    """A shaded x span in every plot, optionally labelled in the first plot."""
+
+    start: float
+    end: float
+    brush: QColor
+    label: str = ""
+    colour: QColor | None = None       # of the label; None: the plots' text colour
+
+
+def finite_range(arrays: Iterable[np.ndarray]) -> tuple[float, float]:
+    """(min, max) of the finite values, widened when flat; (-1, 1) when there are none."""
+    values = [a[np.isfinite(a)] for a in arrays]
+    values = [v for v in values if v.size]
+    if not values:
+        return -1.0, 1.0
+    lo = float(min(v.min() for v in values))
+    hi = float(max(v.max() for v in values))
+    if hi - lo <= 1e-12 * max(abs(lo), abs(hi), 1.0):
+        half = 0.5 * max(abs(lo), 1.0)
+        return lo - half, hi + half
+    return lo, hi
+
+
+# ---- export: what a painter gets is what the screen's clip shows ---------------------------
+# On screen the ViewBox clips its children to the plot area. An SVG (QSvgGenerator) has no
+# clip, and QSvgRenderer, which replays it into the PDF report, ignores clip paths, so every
+# item here puts only what lies in its view into an export (``setExportMode``, called by
+# ``image_export.render_scene`` for every item that has it). The cursor and its dots are
+# an animation's, not the figure's: an export leaves them out unless ``opts["cursor"]``.
+class _Dot(QGraphicsEllipseItem):
+    """The cursor's dot on a curve: in an export only when asked, and inside its view."""
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        if export:
+            view = view_of(self)
+            self._shown = self.isVisible()
+            inside = view is not None and view.viewRect().contains(self.pos())
+            self.setVisible(self._shown and inside and bool((opts or {}).get("cursor")))
+        elif hasattr(self, "_shown"):
+            self.setVisible(self._shown)
+            del self._shown
+
+
+def _dot() -> QGraphicsEllipseItem:
+    dot = _Dot(QRectF(-DOT_RADIUS, -DOT_RADIUS, 2 * DOT_RADIUS, 2 * DOT_RADIUS))
+    dot.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIgnoresTransformations, True)
+    dot.setPen(QPen(QColor("#ffffff"), 1.0))
+    dot.setZValue(Z_DOT)
+    return dot
+
+
+def _full_height(view: pg.ViewBox) -> tuple[float, float]:
+    """The view's y range and as much again above and below, so a pan never shows the
+    ends of an item spanning it before the range signal has moved them."""
+    y0, y1 = view.viewRange()[1]
+    extra = max(y1 - y0, 1e-12)
+    return y0 - extra, y1 + extra
+
+
+class CursorLine(QGraphicsLineItem):
+    """A vertical cursor across the plot's whole y range, moved by setPos only.
+
+    Drawn and bounded in C++: pyqtgraph's InfiniteLine recomputes its bounding
+    rectangle in Python at every move and paint, a visible share of an animation
+    frame with several plots. The line follows the view's y range."""
+
+    def __init__(self, view: pg.ViewBox) -> None:
+        super().__init__()
+        self._view = view
+        view.sigYRangeChanged.connect(self.span)
+        self.span()
+
+    def span(self, *_: object) -> None:
+        y0, y1 = _full_height(self._view)
+        self.setLine(0.0, y0, 0.0, y1)
+
+    def set_colour(self, rgba: int) -> None:
+        line_pen = QPen(QColor.fromRgba(rgba), 1.0, Qt.PenStyle.DashLine)
+        line_pen.setCosmetic(True)
+        self.setPen(line_pen)
+
+    def value(self) -> float:
+        return self.x()
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: left out unless ``opts["cursor"]``, else across the view only."""
+        if export:
+            self._shown = self.isVisible()
+            (x0, x1), (y0, y1) = self._view.viewRange()
+            inside = x0 <= self.x() <= x1
+            self.setVisible(self._shown and inside and bool((opts or {}).get("cursor")))
+            self.setLine(0.0, y0, 0.0, y1)
+        else:
+            self.span()
+            if hasattr(self, "_shown"):
+                self.setVisible(self._shown)
+                del self._shown
+
+    def setValue(self, x: float) -> None:  # noqa: N802 - as InfiniteLine
+        self.setPos(x, 0.0)
+
+
+class BandRect(QGraphicsRectItem):
+    """A shaded x span across the plot's whole y range (see :class:`CursorLine`): a C++
+    rectangle instead of pyqtgraph's LinearRegionItem with its two Python edge lines."""
+
+    def __init__(self, view: pg.ViewBox) -> None:
+        super().__init__()
+        self._view = view
+        self._span = (0.0, 1.0)
+        self.setPen(QPen(Qt.PenStyle.NoPen))
+        view.sigYRangeChanged.connect(self._place)
+
+    def set_span(self, start: float, end: float) -> None:
+        self._span = (float(start), float(end))
+        self._place()
+
+    def span(self) -> tuple[float, float]:
+        return self._span
+
+    def _place(self, *_: object) -> None:
+        y0, y1 = _full_height(self._view)
+        x0, x1 = self._span
+        self.setRect(QRectF(x0, y0, x1 - x0, y1 - y0).normalized())
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: the part of the span in the view, from its bottom to its top."""
+        if not export:
+            self._place()
+            return
+        view = self._view.viewRect()
+        x0, x1 = self._span
+        self.setRect(QRectF(x0, view.top(), x1 - x0, view.height()).normalized().intersected(view))
+
+
+class CurveItem(QGraphicsPathItem):
+    """A polyline through (x, y), broken at non-finite points, drawn and bounded in C++.
+
+    pyqtgraph's PlotCurveItem paints and bounds itself in Python (pixel sizes, pen
+    checks, the path built lazily in the paint): about 0.2 ms per curve and edit, with
+    some twenty curves on a tab. Here the path is built once per ``set_data`` and Qt
+    does the rest. The shape, used for the bounding rectangle and mouse hit tests, is
+    the data's bounding box (stroking a long path for every hover would cost more)."""
+
+    def __init__(self, pen: QPen | None = None, connect: str = "finite") -> None:
+        super().__init__()
+        if pen is not None:
+            self.setPen(pen)
+        self._connect = connect          # "finite", or "pairs": a segment per two points
+        self.setAcceptedMouseButtons(Qt.MouseButton.NoButton)     # clicks go to the plot
+        self._box = QPainterPath()
+        self._antialias = bool(pg.getConfigOption("antialias"))
+        self.x = self.y = np.empty(0)
+
+    def set_data(self, x: np.ndarray, y: np.ndarray) -> None:
+        x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+        self.x, self.y = x, y
+        finite = np.isfinite(x) & np.isfinite(y)
+        box, path = QPainterPath(), QPainterPath()
+        connect = "all" if self._connect == "finite" else self._connect     # within a finite run
+        if finite.all() and x.size:
+            box.addRect(QRectF(QPointF(x.min(), y.min()), QPointF(x.max(), y.max())))
+            path = pg.arrayToQPath(x, y, connect=connect, finiteCheck=False)
+        elif finite.any():
+            box.addRect(QRectF(QPointF(x[finite].min(), y[finite].min()),
+                               QPointF(x[finite].max(), y[finite].max())))
+            # one polyline per finite run: pyqtgraph's general path for data with gaps
+            # is five times slower than its polygon for a run
+            edges = np.flatnonzero(np.diff(np.concatenate(([0], finite.view(np.int8), [0]))))
+            for start, stop in zip(edges[::2], edges[1::2]):
+                path.addPath(pg.arrayToQPath(x[start:stop], y[start:stop], connect=connect,
+                                             finiteCheck=False))
+        self._box = box     # before setPath: setting the path asks for the shape
+        self.setPath(path)
+
+    def shape(self) -> QPainterPath:
+        return self._box
+
+    def setExportMode(self, export: bool, opts: dict | None = None) -> None:  # noqa: N802
+        """In an export: only the parts of the line inside the view (see ``clip_polyline``)."""
+        if not export:
+            if getattr(self, "_whole", None) is not None:
+                self.setPath(self._whole)
+                self._whole = None
+            return
+        view = view_of(self)
+        if view is None or not self.x.size:
+            return
+        path = clipped_path(self.x, self.y, self._connect, view.viewRect())
+        if path is not None:
+            self._whole = self.path()
+            self.setPath(path)
+
+    def paint(self, painter: QPainter, option, widget=None) -> None:
+        # pyqtgraph's antialias option, as its own curves: the views leave it off for the
+        # axes and the text
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing, self._antialias)
+        super().paint(painter, option, widget)
+
+
+class PlotSlots:
+    """Items of one plot, created once per curve and reused (see the module docstring)."""
+
+    def __init__(self, item: pg.PlotItem, series) -> None:
+        self.item = item
+        self.series = series
+        self.curves: list[Curve] = []
+        self._items: list[tuple[CurveItem, CurveItem, QGraphicsEllipseItem]] = []
+        self._styles: list[tuple] = []
+        self._hidden: set[str] = set()
+        self._cursors: list[tuple[CursorLine, int]] = []
+        self._regions: list[BandRect] = []
+        self._texts: list[pg.TextItem] = []
+        self._bands: list[Band] = []
+        self._labelled = False
+
+    # ---- curves ---------------------------------------------------------
+    def draw(self, curves: list[Curve], hidden: set[str]) -> None:
+        while len(self._items) > len(curves):
+            for thing in self._items.pop():
+                self.item.removeItem(thing)
+            self._styles.pop()
+        while len(self._items) < len(curves):
+            pair = (CurveItem(), CurveItem(), _dot())
+            self.item.addItem(pair[0], ignoreBounds=True)     # the stack fits y itself
+            self.item.addItem(pair[1], ignoreBounds=True)
+            self.item.addItem(pair[2], ignoreBounds=True)
+            self._items.append(pair)
+            self._styles.append(None)
+        for i, (curve, (solid, dashed, dot)) in enumerate(zip(curves, self._items)):
+            style = (curve.colour.rgba(), curve.style, curve.width)
+            if self._styles[i] != style:       # pens only when they change: setPen repaints
+                solid.setPen(pg.mkPen(curve.colour, width=curve.width, style=curve.style))
+                dashed.setPen(pg.mkPen(curve.colour, width=curve.width,
+                                       style=Qt.PenStyle.DashLine))
+                dot.setBrush(QBrush(curve.colour))
+                self._styles[i] = style
+            if curve.dashed is None:
+                solid.set_data(curve.x, curve.y)
+                if dashed.x.size:
+                    dashed.set_data(np.empty(0), np.empty(0))
+            else:   # the dashed part widened by a point each side, so the two join
+                back = np.asarray(curve.dashed, dtype=bool)
+                wide = back.copy()
+                wide[1:] |= back[:-1]
+                wide[:-1] |= back[1:]
+                solid.set_data(curve.x, np.where(back, np.nan, curve.y))
+                dashed.set_data(curve.x, np.where(wide, curve.y, np.nan))
+        self.curves = list(curves)
+        self.apply_hidden(hidden)
+
+    def apply_hidden(self, hidden: set[str]) -> None:
+        self._hidden = set(hidden)
+        for curve, (solid, dashed, dot) in zip(self.curves, self._items):
+            shown = curve.label not in hidden
+            solid.setVisible(shown)
+            dashed.setVisible(shown and curve.dashed is not None)
+            if not shown:
+                dot.setVisible(False)
+
+    def shown_curves(self, role: str | None = "") -> list[Curve]:
+        return [c for c in self.curves if c.label not in self._hidden
+                and (role is None or c.role == role)]
+
+    def data(self, role: str = "") -> list[tuple[np.ndarray, np.ndarray]]:
+        """(x, y) of every curve of ``role`` as drawn, shown or not."""
+        return [(c.x, c.y) for c in self.curves if c.role == role]
+
+    def visible_values(self, x0: float, x1: float) -> list[np.ndarray]:
+        return [c.y[(c.x >= x0) & (c.x <= x1)] for c in self.shown_curves(None)]
+
+    def values_at(self, where: float | dict[str, float]) -> list[tuple[Curve, float | None]]:
+        """Each shown read-out curve's value at the grid point nearest x (one x for all, or
+        one per label); None outside the curve's x range."""
+        out = []
+        for curve in self.shown_curves(None):
+            if not curve.readout:
+                continue
+            x = where if isinstance(where, float) else where.get(curve.label)
+            if x is None or not curve.x.size or x < curve.x[0] or x > curve.x[-1]:
+                out.append((curve, None))
+            else:
+                value = float(curve.y[int(np.argmin(np.abs(curve.x - x)))])
+                # core's exact zeros (limit positions) come out as ±1e-16 of the curve's size
+                scale = float(np.nanmax(np.abs(curve.y), initial=0.0))
+                out.append((curve, 0.0 if abs(value) <= ZERO_SHARE * scale else value))
+        return out
+
+    # ---- cursor -----------------------------------------------------------
+    def move_cursor(self, where: float | dict[str, float]) -> None:
+        """Cursor lines at ``where`` (one, or one per label in that label's colour) and a
+        dot on every shown curve at its cursor."""
+        if isinstance(where, float):
+            lines = [(where, CURSOR.rgba())]
+        else:
+            colours = {c.label: c.colour.rgba() for c in reversed(self.curves) if c.legend}
+            lines = [(x, colours.get(label, CURSOR.rgba())) for label, x in where.items()
+                     if label not in self._hidden]
+        while len(self._cursors) < len(lines):
+            line = CursorLine(self.item.vb)
+            line.setZValue(Z_CURSOR)
+            self.item.addItem(line, ignoreBounds=True)
+            self._cursors.append((line, 0))
+        for i, (line, rgba) in enumerate(self._cursors):
+            if i >= len(lines):
+                line.setVisible(False)
+                continue
+            x, wanted = lines[i]
+            if rgba != wanted:
+                line.set_colour(wanted)
+                self._cursors[i] = (line, wanted)
+            line.setValue(x)
+            line.setVisible(True)
+        for curve, (_, _, dot) in zip(self.curves, self._items):
+            x = where if isinstance(where, float) else where.get(curve.label)
+            if (not curve.readout or curve.label in self._hidden or x is None
+                    or not curve.x.size or x < curve.x[0] or x > curve.x[-1]):
+                dot.setVisible(False)
+                continue
+            y = float(np.interp(x, curve.x, curve.y))
+            dot.setVisible(math.isfinite(y))
+            dot.setPos(x, y)
+
+    def cursor_positions(self) -> list[float]:
+        return [float(line.value()) for line, _ in self._cursors if line.isVisible()]
+
+    def dots(self) -> list[tuple[str, float, float]]:
+        """(label, x, y) of the dots shown at the cursor."""
+        return [(c.label, dot.x(), dot.y()) for c, (_, _, dot) in zip(self.curves, self._items)
+                if dot.isVisible()]
+
+    # ---- bands --------------------------------------------------------------
+    def set_bands(self, bands: list[Band], labelled: bool) -> bool:
+        """Shaded spans (and their labels); True when new items were made for them."""
+        added = len(self._regions) < len(bands)
+        while len(self._regions) < len(bands):
+            region = BandRect(self.item.vb)
+            region.setZValue(Z_BAND)
+            self.item.addItem(region, ignoreBounds=True)
+            self._regions.append(region)
+            text = pg.TextItem(anchor=(0.5, 0.0))
+            self.item.addItem(text, ignoreBounds=True)
+            self._texts.append(text)
+        for i, (region, text) in enumerate(zip(self._regions, self._texts)):
+            shown = i < len(bands)
+            region.setVisible(shown)
+            text.setVisible(shown and labelled and bool(bands[i].label))
+            if shown:
+                band = bands[i]
+                if region.brush().color() != band.brush:
+                    region.setBrush(QBrush(band.brush))
+                region.set_span(band.start, band.end)
+                if text.toPlainText() != band.label or text.color != (band.colour or TEXT):
+                    text.setText(band.label, color=band.colour or TEXT)
+        self._bands, self._labelled = list(bands), labelled
+        return added
+
+    def bands(self) -> list[tuple[float, float]]:
+        return [r.span() for r in self._regions if r.isVisible()]
+
+    def place_band_labels(self) -> None:
+        """Each label at the top of its band, or at the bottom where the curves fill the
+        upper half of the band (a torque usually peaks while cutting)."""
+        if not self._labelled:
+            return
+        (_, _), (y_low, y_top) = self.item.vb.viewRange()
+        for band, text in zip(self._bands, self._texts):
+            if not band.label:
+                continue
+            inside = [c.y[(c.x >= band.start) & (c.x <= band.end)] for c in self.shown_curves()]
+            lowest, _ = finite_range(inside) if any(v.size for v in inside) else (y_low, y_top)
+            bottom = lowest > (y_low + y_top) / 2.0
+            text.setAnchor((0.5, 1.0) if bottom else (0.5, 0.0))
+            text.setPos((band.start + band.end) / 2.0, y_low if bottom else y_top)
+
+    def band_labels(self) -> list[str]:
+        return [t.textItem.toPlainText() for t in self._texts if t.isVisible()]

@@ -1,0 +1,464 @@
+"""Synchronized cycle plots: one component, configured by each view with its series.
+
+A view (kinematics, forces) describes what to draw as a list of ``Series`` (key,
+unit, translated name and axis title, and a function of the model giving the
+curves) and answers a few questions through ``StackSource`` (shaded bands,
+legend keys, the x axis, where the cursor is). The stack does the rest the same
+way for every view: stacked plots with linked x axes, one cursor per plot (one
+per speed where each speed has its own x), a dot on every curve at the cursor,
+legends that wrap, bands with labels, the mouse read-out, navigation and fit,
+and image export.
+
+Plot items are created once and fed with ``setData``, so a design change
+redraws in a few milliseconds and the animation only moves cursors and dots.
+While the stack is hidden (a tab in the background) it redraws nothing: it
+catches up when shown, or when one of its read-back methods is called.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Protocol
+
+import pyqtgraph as pg
+from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, QTimer, Signal
+from PySide6.QtGui import QAction, QColor, QPainter, QTextDocumentFragment
+from PySide6.QtWidgets import (QFrame, QGraphicsView, QHBoxLayout, QLabel, QMenu, QScrollArea,
+                               QSizePolicy, QToolButton, QVBoxLayout, QWidget)
+
+from shaperapp.design.model import DesignModel
+from shaperapp.widgets.image_export import export_scene, render_scene
+from shaperapp.widgets.style import TEXT, fmt
+
+from .axes import cache_static, styled_plot_item
+from .curves import LEGEND_WIDTH, Band, Curve, PlotSlots, finite_range
+from .legend import GroupLegend, LegendKey
+
+WHITE = QColor("#ffffff")
+Y_PADDING = 0.08         # share of the data's span added above and below when fitting y
+# After an edit a plot keeps its y range while that still holds the curves with at least
+# half the padding and is at most this much taller than a fresh fit: nudging an input
+# does not make every axis jump (and redraw its ticks and grid).
+SETTLE_SPAN = 1.25
+READOUT_DELAY_MS = 100   # the cursor read-out follows the animation at most 10 times a second
+# The least height of a plot's view box: room for three tick labels at the axis' closest
+# spacing (plot_axes.MIN_LABELS); a plot is also at least as tall as its axis title is
+# long. Where the pane is shorter than the plots need, the stack scrolls (16 speeds on a
+# 1366×768 laptop gave each Forces plot 60 px, two ticks and titles running together).
+MIN_PLOT_PX = 104
+TITLE_MARGIN_PX = 8      # free space along the axis beyond a title's ends
+
+
+@dataclass(frozen=True)
+class Series:
+    """One plot of the stack: ``curves(model)`` gives what it draws."""
+
+    key: str
+    unit: str
+    name: Callable[[], str]          # full translated name, for the read-out
+    title: Callable[[], str]         # short translated axis title
+    curves: Callable[[DesignModel], list[Curve]]
+    group: str = "main"              # plots of one group share a legend
+
+
+class StackSource(Protocol):
+    """What a view tells the stack besides its series."""
+
+    def bands(self) -> list[Band]: ...                        # shaded x spans, all plots
+    def legend_keys(self) -> dict[str, list[LegendKey]]: ...  # per group, after the curves
+    def group_titles(self) -> dict[str, str]: ...             # per group, over its legend
+    def legend_units(self) -> dict[str, str]: ...             # per group, left of the entries
+    def x_axis(self) -> tuple[str, float, float, bool]: ...   # title, range, degree ticks
+    def x_text(self, x: float) -> str: ...                    # "φ = 12.0°" for the read-out
+    def cursor_x(self, index: int) -> float | dict[str, float]: ...   # per curve label
+
+
+def _nbsp(text: str) -> str:
+    """Spaces that never break: the read-out wraps between entries, not inside one."""
+    return text.replace(" ", "&nbsp;").replace("/", "/&#8288;")    # no break after "r/"
+
+
+class PlotStack(QWidget):
+    """Stacked, x-linked cycle plots of one view (see the module docstring)."""
+
+    clicked = Signal(float)          # x of a left click in a plot, in plot units
+
+    def __init__(self, model: DesignModel, source: StackSource, series: Sequence[Series],
+                 export_title: Callable[[], str], parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._model, self._source, self._series = model, source, list(series)
+        self._export_title = export_title
+        self._stale = self._cursor_stale = True
+        self._hover: tuple[str, float] | None = None    # plot and x under the mouse
+        self._readout_key = self._series[0].key
+        self._hidden: set[str] = set()                   # labels switched off in a legend
+        self._x_range = (0.0, 1.0)
+        self._x_axis: tuple[str, bool] | None = None
+
+        self._view = pg.GraphicsLayoutWidget()
+        self._view.setBackground("w")
+        self._view.ci.setSpacing(4)
+        # One repaint of the rectangle around all changes: a frame's changes (cursors and
+        # dots) lie in one narrow strip, and Qt's default repaints every curve once per
+        # small dirty rectangle instead (measured 5-10× slower per frame and per edit).
+        self._view.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.BoundingRectViewportUpdate)
+        self._view.installEventFilter(self)
+        self._plots = {s.key: PlotSlots(styled_plot_item(0.0), s) for s in self._series}
+        self._shown = {s.key: True for s in self._series}
+        self._legends = {s.group: GroupLegend(self._on_legend_toggle) for s in self._series}
+        master = self._plots[self._series[0].key].item
+        for plot in self._plots.values():
+            if plot.item is not master:
+                plot.item.setXLink(master)
+            plot.item.vb.sigFitRequested.connect(self.fit)
+            plot.item.vb.menu_handler = self._show_menu
+        master.vb.sigXRangeChanged.connect(self._fit_y)
+        self._cache_static(True)
+
+        self.fit_action = QAction(self)
+        self.fit_action.triggered.connect(self.fit)
+        self.box_zoom_action = QAction(self)
+        self.box_zoom_action.setCheckable(True)
+        self.box_zoom_action.setChecked(True)
+        self.box_zoom_action.toggled.connect(self._set_box_zoom)
+        self._menu = QMenu(self)
+        self._menu.addAction(self.fit_action)
+        self._menu.addAction(self.box_zoom_action)
+        fit_button = QToolButton()
+        fit_button.setDefaultAction(self.fit_action)
+        self._bar = QHBoxLayout()
+        self._bar.setContentsMargins(4, 2, 4, 2)
+        self._bar.addStretch(1)
+        self._bar.addWidget(fit_button)
+        self._readout = QLabel()
+        self._readout.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self._readout.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
+        self._readout.setWordWrap(True)
+        self._readout.setContentsMargins(6, 2, 6, 2)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.setSpacing(0)
+        layout.addLayout(self._bar)
+        self._scroll = QScrollArea()
+        self._scroll.setWidgetResizable(True)
+        self._scroll.setFrameShape(QFrame.Shape.NoFrame)
+        self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self._scroll.setWidget(self._view)
+        layout.addWidget(self._scroll, 1)
+        layout.addWidget(self._readout)
+        self._readout_timer = QTimer(self)
+        self._readout_timer.setSingleShot(True)
+        self._readout_timer.setInterval(READOUT_DELAY_MS)
+        self._readout_timer.timeout.connect(self._show_readout)
+
+        scene = self._view.scene()
+        scene.contextMenu = []                   # no pyqtgraph "Export..." anywhere
+        scene.sigMouseClicked.connect(self._on_click)
+        self._mouse_proxy = pg.SignalProxy(scene.sigMouseMoved, rateLimit=60,
+                                           slot=self._on_mouse_moved)
+        model.angleChanged.connect(self._on_angle)
+        self._relayout()
+        self.retranslate()
+
+    # ---- configuration by the view -------------------------------------
+    def add_tool(self, widget: QWidget) -> None:
+        """Put a view's control in the bar above the plots (left of the Fit button)."""
+        self._bar.insertWidget(self._bar.count() - 2, widget)
+
+    def add_menu_action(self, action: QAction) -> None:
+        self._menu.addAction(action)
+
+    def set_plot_visible(self, key: str, visible: bool) -> None:
+        if key == self._series[0].key and not visible:
+            raise ValueError(f"the first plot ({key!r}) carries the x axis and stays shown")
+        if self._shown[key] != visible:
+            self._shown[key] = visible
+            self._relayout()
+            self._fit_y()
+
+    def plot_visible(self, key: str) -> bool:
+        return self._shown[key]
+
+    def retranslate(self) -> None:
+        """Texts from the series and the source again; the view calls this on a language
+        change, after its own texts (the series' names read them)."""
+        self.fit_action.setText(self.tr("Fit all"))
+        self.fit_action.setToolTip(self.tr("Show the whole cycle again (or double-click a plot)"))
+        self.box_zoom_action.setText(self.tr("Drag zooms to a box"))
+        self.box_zoom_action.setToolTip(self.tr("Left drag: zoom to a box; off: pan"))
+        self._view.setToolTip(self.tr(
+            "Wheel: zoom x; wheel over an axis: zoom y; drag: zoom to a box; "
+            "double-click: fit; click: set the crank angle; right click: menu"))
+        self._readout.setToolTip(self.tr(
+            "Values under the mouse, or at the cursor while the crank moves; "
+            "click a plot to move the mechanism to that crank position"))
+        for key, plot in self._plots.items():
+            series = plot.series
+            plot.item.setLabel("left", f"{series.title()}<br>({series.unit})",
+                               color=TEXT.name(), **{"font-size": "9pt"})
+        self._fit_heights()
+        self._stale = True
+        if self.isVisible():
+            self.refresh()
+
+    # ---- model → plots --------------------------------------------------
+    def invalidate(self) -> None:
+        """The model's results changed: redraw now if shown, else when shown."""
+        self._stale = True
+        if self.isVisible():
+            self.refresh()
+
+    def refresh(self) -> None:
+        """Redraw every curve, band, legend and the x axis from the model, then fit."""
+        self._stale = False
+        source, model = self._source, self._model
+        for plot in self._plots.values():
+            plot.draw(plot.series.curves(model), self._hidden)
+        bands, first = source.bands(), self._series[0].key
+        added = False                       # new items, to be drawn from pixmaps too
+        for key, plot in self._plots.items():
+            added |= plot.set_bands(bands, labelled=key == first)
+        keys, titles, units = source.legend_keys(), source.group_titles(), source.legend_units()
+        for group, legend in self._legends.items():
+            entries: dict[str, tuple[str, str, QColor, float]] = {}
+            for plot in self._plots.values():
+                if plot.series.group == group:
+                    for curve in plot.curves:
+                        if curve.legend and curve.label not in entries:
+                            entries[curve.label] = (curve.label, curve.short or curve.label,
+                                                    curve.colour, max(curve.width, LEGEND_WIDTH))
+            self._hidden &= set(entries) | {c.label for p in self._plots.values() for c in p.curves}
+            added |= legend.set_entries(list(entries.values()), keys.get(group, []), self._hidden)
+            legend.set_title(titles.get(group, ""))
+            legend.set_unit(units.get(group, ""))
+        x_title, lo, hi, degrees = source.x_axis()
+        if (x_title, degrees) != self._x_axis:      # relabelling re-lays out every axis
+            self._x_axis = (x_title, degrees)
+            for plot in self._plots.values():
+                plot.item.getAxis("bottom").set_degree_steps(degrees)
+                plot.item.setLabel("bottom", x_title, color=TEXT.name(), **{"font-size": "9pt"})
+            self._show_x_axis()
+        self._x_range = (lo, hi)
+        if added:
+            self._cache_static(True)
+        self._fit_legends()
+        self._fit_heights()
+        self.fit(settle=True)
+        self._cursor_stale = True
+        self._on_angle(model.angle_index)
+        self._show_readout()
+
+    def fit(self, settle: bool = False) -> None:
+        """Whole cycle in x, every plot's curves in y (drops the user's zoom). ``settle``
+        (after an edit) keeps a y range that still fits well (see SETTLE_SPAN)."""
+        for plot in self._plots.values():
+            plot.item.vb.y_zoomed = False
+        master = self._plots[self._series[0].key].item
+        master.setXRange(*self._x_range, padding=0.0)
+        self._fit_y(settle=settle)
+
+    def _fit_y(self, *_: object, settle: bool = False) -> None:
+        """Fit y of each shown plot to its visible curves within the shown x range, unless
+        the user zoomed that plot's y. Done by hand, once: pyqtgraph's auto-range would
+        re-range (and repaint) on every cursor move."""
+        x0, x1 = self._plots[self._series[0].key].item.vb.viewRange()[0]
+        for key, plot in self._plots.items():
+            if not self._shown[key] or plot.item.vb.y_zoomed:
+                continue
+            lo, hi = finite_range(plot.visible_values(x0, x1))
+            pad = Y_PADDING * (hi - lo)
+            y0, y1 = plot.item.vb.viewRange()[1]
+            if not (settle and y0 <= lo - pad / 2 and y1 >= hi + pad / 2
+                    and y1 - y0 <= SETTLE_SPAN * (hi - lo + 2 * pad)):
+                plot.item.vb.setYRange(lo - pad, hi + pad, padding=0.0)
+                # now, not in the next paint's preparation, which would cost a second paint
+                plot.item.vb.updateMatrix()
+            plot.place_band_labels()
+
+    def _on_angle(self, index: int) -> None:
+        """Only cursors and dots move with the animation; nothing while hidden."""
+        if not self.isVisible() and not self._cursor_stale:
+            self._cursor_stale = True
+        if not self.isVisible():
+            return
+        self._cursor_stale = False
+        xs = self._source.cursor_x(index)
+        for key, plot in self._plots.items():
+            if self._shown[key]:
+                plot.move_cursor(xs)
+        if self._hover is None and not self._readout_timer.isActive():
+            self._readout_timer.start()
+
+    def _on_legend_toggle(self, label: str, shown: bool) -> None:
+        self._hidden = (self._hidden - {label}) if shown else (self._hidden | {label})
+        for plot in self._plots.values():
+            plot.apply_hidden(self._hidden)
+        self._cursor_stale = True
+        self._on_angle(self._model.angle_index)
+        self._show_readout()
+
+    # ---- layout ---------------------------------------------------------
+    def _relayout(self) -> None:
+        """Legend heads and shown plots, top to bottom; x values only under the lowest."""
+        ci = self._view.ci
+        for item in list(ci.items):
+            ci.removeItem(item)
+        row, group, last = 0, None, None
+        for series in self._series:
+            if not self._shown[series.key]:
+                continue
+            if series.group != group:
+                group = series.group
+                ci.addItem(self._legends[group].head, row=row, col=0)
+                row += 1
+            ci.addItem(self._plots[series.key].item, row=row, col=0)
+            row += 1
+            last = series.key
+        self._last = last
+        self._fit_heights()
+        # An emptied layout shrank the central item to its minimum: back to the view's size.
+        ci.setGeometry(self._view.range)
+        self._show_x_axis()
+        self._cursor_stale = True
+        if self.isVisible():
+            self._on_angle(self._model.angle_index)
+
+    def _show_x_axis(self) -> None:
+        """Tick values and the x title only under the lowest shown plot; grids on all."""
+        for key, plot in self._plots.items():
+            bottom = plot.item.getAxis("bottom")
+            bottom.setStyle(showValues=key == self._last)
+            bottom.showLabel(key == self._last)
+
+    def _fit_legends(self) -> None:
+        for legend in self._legends.values():
+            legend.fit_width(self._view.width())
+
+    def _fit_heights(self) -> None:
+        """Each plot at least MIN_PLOT_PX and its title's length tall; the view at least
+        as tall as its layout then needs, so the stack scrolls instead of squeezing."""
+        for plot in self._plots.values():
+            title = plot.item.getAxis("left").label.boundingRect().width() + 2 * TITLE_MARGIN_PX
+            plot.item.vb.setMinimumHeight(max(MIN_PLOT_PX, math.ceil(title)))
+        layout = self._view.ci.layout
+        layout.invalidate()
+        need = layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()
+        self._view.setMinimumHeight(math.ceil(need) + 2 * self._view.frameWidth())
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        if watched is self._view and event.type() == QEvent.Type.Resize:
+            self._fit_legends()
+            if event.oldSize().width() != event.size().width():    # legends re-wrapped
+                self._fit_heights()
+            for plot in self._plots.values():
+                plot.place_band_labels()
+        return super().eventFilter(watched, event)
+
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        if self._stale:
+            self.refresh()
+        elif self._cursor_stale:
+            self._on_angle(self._model.angle_index)
+
+    def _set_box_zoom(self, on: bool) -> None:
+        mode = pg.ViewBox.RectMode if on else pg.ViewBox.PanMode
+        for plot in self._plots.values():
+            plot.item.vb.setMouseMode(mode)
+
+    def _show_menu(self, screen_pos: QPointF) -> None:
+        self._menu.popup(screen_pos.toPoint())
+
+    # ---- mouse and read-out --------------------------------------------
+    def _plot_at(self, scene_pos: QPointF) -> tuple[str, float] | None:
+        for key, plot in self._plots.items():
+            if self._shown[key] and plot.item.vb.sceneBoundingRect().contains(scene_pos):
+                return key, float(plot.item.vb.mapSceneToView(scene_pos).x())
+        return None
+
+    def _on_click(self, event) -> None:
+        if event.button() != Qt.MouseButton.LeftButton or event.isAccepted() or event.double():
+            return
+        hit = self._plot_at(event.scenePos())
+        if hit is not None:
+            self.clicked.emit(hit[1])
+
+    def _on_mouse_moved(self, args: tuple) -> None:
+        hit = self._plot_at(args[0])
+        self._hover = hit
+        if hit is not None:
+            self._readout_key = hit[0]
+            self._show_readout()
+
+    def _show_readout(self) -> None:
+        """Values under the mouse, or at the cursor once the crank moved since."""
+        if self._stale:
+            return
+        if self._hover is not None:
+            key, x = self._hover
+            parts = [f"<b>{self._plots[key].series.name()}</b>", _nbsp(self._source.x_text(x))]
+            values = self._plots[key].values_at(x)
+        else:
+            key = self._readout_key
+            xs = self._source.cursor_x(self._model.angle_index)
+            x = xs if isinstance(xs, float) else next(iter(xs.values()), 0.0)
+            parts = [f"<b>{self._plots[key].series.name()}</b>",
+                     _nbsp(self.tr("cursor {0}").format(self._source.x_text(x)))]
+            values = self._plots[key].values_at(xs)
+        title = self._legends[self._plots[key].series.group].title()
+        if title:
+            parts.append(title + ":")
+        unit = self._plots[key].series.unit
+        for curve, value in values:
+            text = "—" if value is None else f"{fmt(value, '.4g')} {unit}"
+            parts.append(f"<span style='color:{curve.colour.name()}'>{_nbsp(curve.label)}:</span>"
+                         f"&nbsp;{_nbsp(text)}")
+        self._readout.setText("&nbsp;&nbsp; ".join(parts))
+
+    # ---- read back and export -----------------------------------------
+    def ensure_current(self) -> None:
+        """Catch up now with the model if hidden changes are pending."""
+        if self._stale:
+            self.refresh()
+        if self._cursor_stale:
+            xs = self._source.cursor_x(self._model.angle_index)
+            for key, plot in self._plots.items():
+                plot.move_cursor(xs)
+            self._cursor_stale = False
+
+    def is_current(self) -> bool:
+        """Whether everything drawn matches the model (False while hidden changes wait)."""
+        return not self._stale and not self._cursor_stale
+
+    def plot(self, key: str) -> PlotSlots:
+        self.ensure_current()
+        return self._plots[key]
+
+    def legend(self, group: str) -> GroupLegend:
+        self.ensure_current()
+        return self._legends[group]
+
+    def readout_text(self) -> str:
+        """The read-out as plain text (spaces for non-breaking ones, no word joiners)."""
+        plain = QTextDocumentFragment.fromHtml(self._readout.text()).toPlainText()
+        return plain.replace("\u00a0", " ").replace("\u2060", "")
+
+    def export_image(self, path: str) -> None:
+        """Write the plots to ``path``: SVG for ``.svg``, else a raster image (PNG …) at
+        least 1600 px wide. ValueError for an unknown type, OSError for a bad folder."""
+        self.ensure_current()
+        export_scene(self._view.scene(), self._view.ci.sceneBoundingRect(), path,
+                     self._export_title(), WHITE, self._caching_off)
+
+    def render(self, painter: QPainter, target: QRectF) -> None:
+        """Paint the plots into ``target`` of any painter (PDF, SVG, printer): vectors."""
+        self.ensure_current()
+        render_scene(self._view.scene(), self._view.ci.sceneBoundingRect(), painter, target,
+                     WHITE, self._caching_off)
+
+    def _caching_off(self, exporting: bool) -> None:
+        self._cache_static(not exporting)
+
+    def _cache_static(self, on: bool) -> None:
+        cache_static([p.item for p in self._plots.values()] + [g.head for g in self._legends.values()], on)

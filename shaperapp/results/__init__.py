@@ -1,0 +1,1 @@
+"""The Results pane: dimensions, cycle figures, forces and flywheel as tables."""

@@ -1,0 +1,1 @@
+"""The mechanism drawn to scale: links, dimensions and force arrows."""

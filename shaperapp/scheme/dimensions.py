@@ -1,0 +1,197 @@
+"""The scheme's dimension layer: L1, L2, h, L3 and the measured stroke H.
+
+Dimensions are placed where no moving part ever goes, so that a label never sits
+on a link at any crank angle: L2 and h as a vertical chain left of everything,
+L3 beside the lever's rightmost limit position, H under the tool path, and L1 as
+the crank radius to the point where the lever's left limit position touches the
+crank circle, its label led out beyond the lever's swing (the lever only ever
+moves inside the wedge between its limit positions, which the crank circle
+touches there).
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import QObject
+from PySide6.QtGui import QColor, QPainterPath, QPen, Qt
+
+from shaperapp.design.model import DesignModel
+from shaperapp.plots.curves import CurveItem
+from shaperapp.widgets.style import fmt
+
+from .draw import DIM, Box, Pair, Z_DIM, arrow_head, body, overlaps, pen, segments, text_box
+from .mechanism import Geometry
+
+L1_LEAD = 4.5            # the L1 label this many u beyond the crank circle, outside the lever
+NAMES = ("L2", "h", "L3", "L1", "H")     # the dimensions in drawing order
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """One dimension: line segments, arrow tips (pos, outward direction) and its text."""
+
+    segments: list[Pair]
+    arrows: list[Pair]
+    text: str
+    text_pos: tuple[float, float]
+    anchor: tuple[float, float]
+    angle: float = 0.0
+
+
+def text_anchor(normal: np.ndarray) -> tuple[float, float]:
+    """Text anchor that puts a label on the ``normal`` side of its point (y up)."""
+    return (0.5 - 0.5 * float(normal[0]), 0.5 + 0.5 * float(normal[1]))
+
+
+def linear_dim(p: np.ndarray, q: np.ndarray, normal: np.ndarray, offset: float,
+               u: float, text: str, vertical_text: bool = False) -> Dimension:
+    """Dimension p–q with its line ``offset`` along the unit ``normal`` (0: no extension lines)."""
+    a, b = p + normal * offset, q + normal * offset
+    lines = [(tuple(a), tuple(b))]
+    if offset > 0:
+        lines += [(tuple(p + normal * 0.5 * u), tuple(a + normal * 0.6 * u)),
+                  (tuple(q + normal * 0.5 * u), tuple(b + normal * 0.6 * u))]
+    arrows = [(tuple(a), tuple(a - b)), (tuple(b), tuple(b - a))]
+    mid = tuple((a + b) / 2.0 + normal * 0.3 * u)
+    if vertical_text:
+        return Dimension(lines, arrows, text, mid, (0.5, 1.0), 90.0)
+    return Dimension(lines, arrows, text, mid, text_anchor(normal))
+
+
+def crank_dim(o2: np.ndarray, crank: float, theta: float, u: float, text: str) -> Dimension:
+    """L1 as the radius to the left tangent point of the lever's limit position, with a
+    leader out of the lever's swing to the label."""
+    normal = np.array([-math.cos(theta / 2.0), -math.sin(theta / 2.0)])   # away from the wedge
+    touch = o2 + normal * crank
+    label = touch + normal * L1_LEAD * u
+    return Dimension([(tuple(o2), tuple(touch)), (tuple(touch), tuple(label))],
+                     [(tuple(touch), tuple(normal))], text, tuple(label), text_anchor(normal))
+
+
+class DimensionLayer(QObject):
+    """Dimension lines, arrow heads and texts, placed per design; can be hidden."""
+
+    def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._lines = CurveItem(pen(DIM, 1.0), connect="pairs")
+        self._lines.setZValue(Z_DIM)
+        add(self._lines)
+        self._heads = body(DIM, Z_DIM, QPen(Qt.PenStyle.NoPen))
+        add(self._heads)
+        self._texts = [pg.TextItem(color=DIM, fill=QColor(255, 255, 255, 200)) for _ in range(5)]
+        for item in self._texts:
+            item.setZValue(Z_DIM)
+            add(item)
+        self._visible = True
+        self._chain: tuple[float, tuple] | None = None   # (y of O2, mid text positions of L2, h)
+        self._chain_top = 0.0                             # y of the chain's top end (the guide)
+        self._l1_home: tuple = (0.0, 0.0)                 # L1's label at the end of its leader
+
+    def update(self, model: DesignModel, g: Geometry) -> None:
+        """Place the dimensions of the model's design; texts are translated here."""
+        design, u, o2, chain = model.design, g.u, g.o2, g.chain_x
+        left = np.array([-1.0, 0.0])
+        # A vertical chain at the far left: L2 = O4O2, then h from O2 up to the guide line.
+        p0, p1, p2 = np.array([chain, 0.0]), np.array([chain, o2[1]]), np.array([chain, g.guide])
+        dims = [linear_dim(p0, p1, left, 0.0, u, self.tr("L2 = {0}").format(fmt(design.frame, ".1f")), True),
+                linear_dim(p1, p2, left, 0.0, u,
+                           self.tr("h = {0}").format(fmt(design.guide_above_crank, ".1f")), True)]
+        reach = chain - 0.6 * u
+        extensions: list[Pair] = [((-2.6 * u, 0.0), (reach, 0.0)),
+                                  ((o2[0] - design.crank - 0.6 * u, o2[1]), (reach, o2[1])),
+                                  ((g.rail_left - 0.3 * u, g.guide), (reach, g.guide))]
+        # L3 beside the lever's rightmost limit position.
+        tips = g.limits.lever_tip.T
+        tip = tips[int(np.argmax(tips[:, 0]))]
+        along = tip / np.hypot(*tip)
+        dims.append(linear_dim(np.zeros(2), tip, np.array([along[1], -along[0]]), 3.0 * u, u,
+                               self.tr("L3 = {0}").format(fmt(design.lever, ".1f"))))
+        dims.append(crank_dim(o2, design.crank, design.theta, u,
+                              self.tr("L1 = {0}").format(fmt(design.crank, ".1f"))))
+        # H between the tool tip's two limit positions, under the tool path.
+        dims.append(linear_dim(np.array([g.tip_lo, g.tip_y]), np.array([g.tip_hi, g.tip_y]),
+                               np.array([0.0, -1.0]), 2.6 * u, u,
+                               self.tr("H = {0}").format(fmt(model.metrics.stroke_mm, ".1f"))))
+        self._lines.set_data(*segments([s for dim in dims for s in dim.segments] + extensions))
+        heads = QPainterPath()
+        for tip_pos, direction in (arrow for dim in dims for arrow in dim.arrows):
+            heads.addPolygon(arrow_head(np.asarray(tip_pos), np.asarray(direction), u))
+        self._heads.setPath(heads)
+        for item, dim in zip(self._texts, dims):
+            item.setText(dim.text)
+            if item.angle != dim.angle:          # pyqtgraph re-lays the text out on each call
+                item.setAngle(dim.angle)
+            if tuple(item.anchor) != tuple(dim.anchor):
+                item.setAnchor(dim.anchor)
+            item.setPos(*dim.text_pos)
+        self._chain = (float(p1[1]), tuple(dim.text_pos for dim in dims[:2]))
+        self._chain_top = float(p2[1])
+        self._l1_home = tuple(dims[NAMES.index("L1")].text_pos)
+        self.separate_chain_labels()
+
+    def separate_chain_labels(self) -> None:
+        """Keep the L2 and h labels apart as drawn now (again after a zoom): each sits at
+        the middle of its part of the vertical chain, but where one part is shorter on
+        screen than its text (a tiny L2 or h), the other label moves away from the point
+        they share, along its own part, until the two no longer touch."""
+        if self._chain is None:
+            return
+        shared, mids = self._chain
+        l2, h = self._texts[:2]
+        for item, pos in zip((l2, h, self.texts()["L1"]), (*mids, self._l1_home)):
+            item.setPos(*pos)
+        # h's text no higher than the chain's top: a short h ("h = 206.0" beside a 3.7 m
+        # lever) reached above the drawing and was cut at the view's top edge
+        above = text_box(h)[3] - self._chain_top
+        if above > 0.0:
+            h.setPos(mids[1][0], mids[1][1] - above)
+        boxes = [text_box(l2), text_box(h)]                  # (left, right, bottom, top), mm
+        line = boxes[1][1] - boxes[1][0]                     # the vertical text's line height
+        overlap = min(boxes[0][3], boxes[1][3]) - max(boxes[0][2], boxes[1][2]) + 0.3 * line
+        if overlap > 0.0:
+            longer = 1 if above <= 0.0 and abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
+            x, y = self._texts[longer].pos().x(), self._texts[longer].pos().y()
+            self._texts[longer].setPos(x, y + math.copysign(overlap, mids[longer][1] - shared))
+        l1, box = self.texts()["L1"], text_box(h)
+        other = text_box(l1)
+        # a short h beside L1's label (K near 1) hidden under it: L1 moves down (a touch of
+        # their corners, as at K = 1.6, leaves both readable and L1 where it was)
+        if overlaps(box, other) and min(other[3], box[3]) - max(other[2], box[2]) > 0.5 * line:
+            l1.setPos(l1.pos().x(), l1.pos().y() - (other[3] - box[2]) - 0.3 * line)
+        self._clear_of_l1(l2, line)
+
+    def _clear_of_l1(self, l2: pg.TextItem, line: float) -> None:
+        """L1's label (at the end of its leader, left of the crank) may reach over the L2
+        label's upper end, hiding its last digits ("L2 = 282" for 282.0 at K = 1.6): L2's
+        label then moves down its part (not below it), and L1's right if still needed."""
+        l1 = self.texts()["L1"]
+        box, other = text_box(l2), text_box(l1)
+        if not overlaps(box, other):
+            return
+        # down, but not below its part (O4's level); what is left, L1 moves right
+        down = min(box[3] - other[2] + 0.3 * line, max(box[2], 0.0))
+        x, y = l2.pos().x(), l2.pos().y()
+        l2.setPos(x, y - down)
+        box = text_box(l2)
+        if overlaps(box, other):
+            l1.setPos(l1.pos().x() + box[1] - other[0] + 0.3 * line, l1.pos().y())
+
+    def set_visible(self, visible: bool) -> None:
+        self._visible = visible
+        for item in (self._lines, self._heads, *self._texts):
+            item.setVisible(visible)
+
+    def labels(self) -> list[str]:
+        return [item.toPlainText() for item in self._texts]
+
+    def texts(self) -> dict[str, pg.TextItem]:
+        """The label items by dimension name (NAMES)."""
+        return dict(zip(NAMES, self._texts))
+
+    def obstacles(self) -> list[Box]:
+        """The labels' boxes while shown: force labels keep off them."""
+        return [text_box(item) for item in self._texts] if self._visible else []

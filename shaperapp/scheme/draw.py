@@ -1,0 +1,124 @@
+"""Drawing primitives shared by the scheme's layers (mechanism, dimensions, forces).
+
+Sizes here are in mm of the drawing, except the pens (cosmetic: screen pixels)
+and the tags (screen pixels when fixed to the screen). The z values order the
+layers: frame under links, links under pins, labels on top.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath, QPen, QPolygonF
+from PySide6.QtWidgets import QGraphicsItem, QGraphicsPathItem, QGraphicsRectItem, QGraphicsSimpleTextItem
+
+from shaperapp.widgets.style import CURSOR, FRAME, LINK, TOOL_PATH
+
+LINK_FILL = QColor(LINK.red(), LINK.green(), LINK.blue(), 38)
+BLOCK_FILL = QColor(FRAME).lighter(150)
+RAM_FILL = QColor(FRAME.red(), FRAME.green(), FRAME.blue(), 30)
+PATH_LIGHT = QColor(TOOL_PATH.red(), TOOL_PATH.green(), TOOL_PATH.blue(), 90)
+DIM = QColor(CURSOR)
+WHITE = QColor("#ffffff")
+Z_FRAME, Z_GHOST, Z_RAM, Z_PATH, Z_CRANK, Z_LEVER, Z_BLOCK, Z_JOINT, Z_DIM, Z_LABEL = range(10)
+Pair = tuple[tuple[float, float], tuple[float, float]]
+Box = tuple[float, float, float, float]      # left, right, bottom, top in mm (y up)
+
+
+def pen(colour: QColor, width: float = 1.5, style: Qt.PenStyle = Qt.PenStyle.SolidLine) -> QPen:
+    """A cosmetic pen: its width stays in screen pixels at any zoom."""
+    out = QPen(colour, width, style)
+    out.setCosmetic(True)
+    return out
+
+
+def stadium(length: float, width: float) -> QPainterPath:
+    """A bar with round ends from (0, 0) to (length, 0) in its local frame."""
+    path = QPainterPath()
+    half = width / 2.0
+    path.addRoundedRect(QRectF(-half, -half, length + width, width), half, half)
+    return path
+
+
+def rect(x0: float, y0: float, x1: float, y1: float) -> QRectF:
+    return QRectF(QPointF(min(x0, x1), min(y0, y1)), QPointF(max(x0, x1), max(y0, y1)))
+
+
+def body(fill: QColor, z: float, outline: QPen | None = None) -> QGraphicsPathItem:
+    item = QGraphicsPathItem()
+    item.setPen(outline or pen(LINK, 1.4))
+    item.setBrush(QBrush(fill))
+    item.setZValue(z)
+    return item
+
+
+def segments(pairs: list[Pair]) -> tuple[np.ndarray, np.ndarray]:
+    """Point pairs → x, y arrays for a CurveItem with connect="pairs"."""
+    pts = np.array([p for pair in pairs for p in pair], dtype=float).reshape(-1, 2)
+    return pts[:, 0], pts[:, 1]
+
+
+def arrow_head(tip: np.ndarray, direction: np.ndarray, u: float) -> QPolygonF:
+    """A filled arrow head in mm with its tip at ``tip``, pointing along ``direction``."""
+    d = direction / np.hypot(*direction)
+    n = np.array([-d[1], d[0]])
+    base = tip - d * 0.9 * u
+    pts = (tip, base + n * 0.22 * u, base - n * 0.22 * u, tip)
+    return QPolygonF([QPointF(float(p[0]), float(p[1])) for p in pts])
+
+
+def text_box(item: pg.TextItem) -> Box:
+    """Where a pyqtgraph text item (anchored, maybe rotated, fixed size on screen) covers
+    the drawing now, in mm."""
+    item.updateTransform()
+    r = item.mapRectToParent(item.boundingRect())
+    return r.left(), r.right(), r.top(), r.bottom()
+
+
+def overlaps(a: Box, b: Box) -> bool:
+    return a[0] < b[1] and b[0] < a[1] and a[2] < b[3] and b[2] < a[3]
+
+
+class Tag(QGraphicsRectItem):
+    """A short text on a light box, anchored at its position (anchor as pg.TextItem)."""
+
+    PAD = 2.0
+
+    def __init__(self, colour: QColor, fill: QColor, font: QFont, screen_fixed: bool) -> None:
+        super().__init__()
+        self.setPen(QPen(Qt.PenStyle.NoPen))
+        self.setBrush(QBrush(fill))
+        if screen_fixed:      # in the plot: text upright and the same size at any zoom
+            self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIgnoresTransformations, True)
+        self._text = QGraphicsSimpleTextItem(self)
+        self._text.setBrush(QBrush(colour))
+        self._text.setFont(font)
+        self._shown = ""
+        self._size = (0.0, 0.0)
+        self._anchor = (-1.0, -1.0)
+
+    def set_text(self, text: str) -> tuple[float, float]:
+        """Show ``text``; returns the box's size in pixels."""
+        if text != self._shown:
+            self._text.setText(text)
+            self._shown = text
+            box = self._text.boundingRect()
+            self._size = (box.width() + 2.0 * self.PAD, box.height() + 2.0 * self.PAD)
+            self._anchor = (-1.0, -1.0)
+        return self._size
+
+    def place(self, text: str, x: float, y: float, anchor: tuple[float, float]) -> None:
+        self.set_text(text)
+        self.move(x, y, anchor)
+
+    def move(self, x: float, y: float, anchor: tuple[float, float]) -> None:
+        if anchor != self._anchor:
+            w, h = self._size
+            left, top = -anchor[0] * w, -anchor[1] * h
+            self.setRect(QRectF(left, top, w, h))
+            self._text.setPos(left + self.PAD, top + self.PAD)
+            self._anchor = anchor
+        self.setPos(x, y)
+
+    def text(self) -> str:
+        return self._shown

@@ -1,0 +1,364 @@
+"""The scheme's mechanism layer: frame, crank, slotted lever, blocks, rod, ram, tool path.
+
+Every position comes from core (``model.motion.shape``, ``model.metrics`` and
+``core.kinematics.shape`` at the limit angles); this layer only chooses how to
+draw them. Link bodies, pins and blocks are rigid shapes built once per design
+in their own local frame, so an animation frame only moves them with
+``setPos`` / ``setRotation`` using arrays prepared per design, and redraws the
+travelled tool path from at most a handful of prepared points. No pyqtgraph
+``setData`` runs per frame: it is slower and, with PySide6 6.12, every
+Python-side signal emit leaks a reference.
+
+Sizes that are not design data (bar widths, pins, the ram's height, the tool,
+the supports) scale with the drawing unit ``u = L3 / 40`` so that any design
+looks alike; they never change a dimension of the mechanism.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import QObject, QPointF, QRectF, Qt
+from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath
+from PySide6.QtWidgets import QGraphicsEllipseItem
+
+from core.kinematics import Shape
+from core.kinematics import shape as core_shape
+
+from shaperapp.design.model import DesignModel
+from shaperapp.plots.curves import CurveItem
+from shaperapp.widgets.style import FRAME, LINK, TOOL_PATH
+
+from .draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Pair, Z_BLOCK,
+                          Z_CRANK, Z_FRAME, Z_GHOST, Z_JOINT, Z_LABEL, Z_LEVER, Z_PATH, Z_RAM,
+                          body, pen, rect, segments, stadium, text_box)
+
+UNITS_PER_LEVER = 40.0     # drawing unit u = L3 / 40
+RETURN_LIFT = 0.35         # the return stroke of the tool path is drawn this many u higher
+LIMIT_TOL_DEG = 1e-6       # a grid angle this close to a limit position counts as on it
+MOVING = ("A", "B", "C")
+JOINT_LABEL_CLEAR = 1.4      # × u from a joint to its label's near edge: past the lever's half width (0.8 u)
+PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin marker radii, u
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """Where things are for the other layers, per design, mm."""
+
+    o2: np.ndarray               # crank centre
+    u: float                     # drawing unit
+    guide: float                 # height of the ram guide line
+    rail_left: float             # left end of the guide way
+    chain_x: float               # x of the vertical dimension chain at the far left
+    tip_y: float                 # height of the tool point while cutting
+    tip_lo: float                # tool point x at the two limit positions
+    tip_hi: float
+    tip_dx: float                # tool point x relative to the ram joint C
+    ram_rear: float              # the ram's body from C: rear and front ends
+    ram_front: float
+    limits: Shape                # core's shape at the two limit positions
+    fit_rect: QRectF             # the whole drawing, for Fit
+
+
+@dataclass(frozen=True)
+class _Frames:
+    """Everything one animation frame needs, one row per crank-angle index."""
+
+    joints: np.ndarray          # (n, k, 2) moving joints A, B[, C], mm
+    crank_deg: np.ndarray       # (n,) rotation of the crank body about O2
+    lever_deg: np.ndarray       # (n,) rotation of the lever body about O4
+    rod_deg: np.ndarray | None  # (n,) rotation of the rod body about B
+    ram_x: np.ndarray           # (n,) x of the ram's reference point C
+    labels: np.ndarray          # (n, k, 2) where the labels A, B[, C] go
+    away: np.ndarray            # (n, 2, 2) unit directions of A's and O2's labels from their joints
+    u: float                    # the drawing's unit, mm
+    tip: np.ndarray             # (n, 2) tool tip; the return stroke lifted by RETURN_LIFT·u
+    corners: np.ndarray         # indices where the tool path turns (stroke ends), ascending
+
+
+class MechanismLayer(QObject):
+    """The moving mechanism and its static frame; ``rebuild`` per design, ``show`` per frame."""
+
+    def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.frames: _Frames | None = None
+        self._index = 0
+        self._o2 = np.zeros(2)
+        self._ground = CurveItem(pen(FRAME, 1.2), connect="pairs")
+        self._guide_line = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashDotLine))
+        self._ghost_lines = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashLine), connect="pairs")
+        self._circle = CurveItem(pen(FRAME, 1.0, Qt.PenStyle.DashLine))
+        self._path_all = CurveItem(pen(PATH_LIGHT, 1.2))
+        for z, it in ((Z_FRAME, self._ground), (Z_GHOST, self._guide_line),
+                      (Z_GHOST, self._ghost_lines), (Z_GHOST, self._circle),
+                      (Z_PATH, self._path_all)):
+            it.setZValue(z)
+            add(it)
+        self._path_done = body(QColor(0, 0, 0, 0), Z_PATH, pen(TOOL_PATH, 2.6))
+        self._path_done.setBrush(QBrush(Qt.BrushStyle.NoBrush))
+        self.ram = body(RAM_FILL, Z_RAM)
+        self._tool = body(BLOCK_FILL, Z_RAM)
+        self._tool.setParentItem(self.ram)
+        self._crank = body(LINK_FILL, Z_CRANK)
+        self._lever = body(LINK_FILL, Z_LEVER)
+        self._block_a = body(BLOCK_FILL, Z_BLOCK)
+        self._block_b = body(BLOCK_FILL, Z_BLOCK)
+        self._rod = body(LINK_FILL, Z_BLOCK)
+        self.pins: dict[str, QGraphicsEllipseItem] = {}
+        for name in ("O4", "O2", *MOVING):
+            pin = QGraphicsEllipseItem()
+            pin.setPen(pen(LINK, 1.5))
+            pin.setBrush(QBrush(WHITE))
+            pin.setZValue(Z_JOINT)
+            self.pins[name] = pin
+        for it in (self._path_done, self.ram, self._crank, self._lever, self._block_a,
+                   self._block_b, self._rod, *self.pins.values()):
+            add(it)
+        font = QFont()
+        font.setPointSize(11)
+        font.setBold(True)
+        font.setItalic(True)
+        self.labels: dict[str, pg.TextItem] = {}
+        for name, text in (("O2", "O\u2082"), ("O4", "O\u2084"), ("A", "A"), ("B", "B"), ("C", "C")):
+            label = pg.TextItem(text, color=LINK, anchor=(0.5, 0.5))
+            label.setFont(font)
+            label.setZValue(Z_LABEL)
+            add(label)
+            self.labels[name] = label
+
+    # ---- per design ----------------------------------------------------
+    def rebuild(self, model: DesignModel) -> Geometry:
+        """Shapes, static lines and per-frame arrays of the model's design."""
+        design, motion, metrics = model.design, model.motion, model.metrics
+        sh = motion.shape
+        u = design.lever / UNITS_PER_LEVER
+        a, b, c = sh.crank_pin.T, sh.lever_tip.T, sh.ram_joint.T
+        o2 = np.array([0.0, design.frame])
+        rod = design.rod is not None
+        guide = design.guide
+        # The ram's limit positions from core's measured metrics; the lever's from core's shape.
+        limits = core_shape(design, np.radians([metrics.work_start_deg, metrics.work_end_deg]))
+        origin = float(c[0, 0] - motion.ram_x[0])
+        ram_lo, ram_hi = origin + metrics.ram_min_mm, origin + metrics.ram_max_mm
+
+        # The ram in its local frame (origin at C on the guide line); the block variant's ram
+        # is tall enough for the block at B to slide in its vertical slot.
+        block_half = 1.1 * u
+        y_lo, y_hi = -1.3 * u, 1.3 * u
+        b_lo, b_hi = float(b[:, 1].min()) - guide, float(b[:, 1].max()) - guide
+        if not rod:
+            y_lo = min(y_lo, b_lo - block_half - 0.5 * u)
+            y_hi = max(y_hi, b_hi + block_half + 0.5 * u)
+        rear = 3.0 * u
+        right_edge = max(float(a[:, 0].max()), float(b[:, 0].max()))
+        front = max(0.5 * design.stroke, right_edge + 5.0 * u - ram_lo)   # tool clear of the links
+        ram = QPainterPath()
+        ram.addRect(rect(-rear, y_lo, front, y_hi))
+        if not rod:
+            ram.addRect(rect(-0.8 * u, b_lo - block_half - 0.2 * u, 0.8 * u, b_hi + block_half + 0.2 * u))
+            ram.setFillRule(Qt.FillRule.OddEvenFill)
+        self.ram.setPath(ram)
+        self.ram.setPos(0.0, guide)
+        tool, tip_local = self._tool_shape(front, y_lo, u)
+        self._tool.setPath(tool)
+        self._build_bodies(design, sh, u, block_half)
+        self.frames = self._build_frames(design, motion, metrics, u, tip_local)
+        self.labels["C"].setVisible(rod)
+        self.pins["C"].setVisible(rod)
+
+        # Static drawing: supports, guide way, crank circle, lever limits, tool path.
+        x0, x1 = ram_lo - rear - 3.0 * u, ram_hi + front + 3.0 * u
+        self._ground.set_data(*segments(self._support(np.zeros(2), u) + self._support(o2, u)
+                                       + self._rail(x0, x1, guide + y_hi, u)))
+        self._guide_line.set_data([x0, x1], [guide, guide])
+        self._ghost_lines.set_data(*segments([((0.0, 0.0), tuple(p)) for p in limits.lever_tip.T]))
+        self._circle.set_data(a[:, 0], a[:, 1])
+        tip = self.frames.tip
+        self._path_all.set_data(tip[:, 0], tip[:, 1])
+        self.pins["O4"].setPos(0.0, 0.0)
+        self.pins["O2"].setPos(*o2)
+        self._o2 = o2
+        self.labels["O4"].setPos(2.4 * u, 0.9 * u)
+
+        chain = min(x0, float(a[:, 0].min()), float(b[:, 0].min()), -2.0 * u) - 2.5 * u
+        bottom = min(-3.5 * u, guide + tip_local[1] - 6.0 * u)
+        return Geometry(o2=o2, u=u, guide=guide, rail_left=x0, chain_x=chain,
+                        tip_y=guide + tip_local[1], tip_lo=ram_lo + tip_local[0],
+                        tip_hi=ram_hi + tip_local[0], tip_dx=tip_local[0], ram_rear=-rear,
+                        ram_front=front, limits=limits,
+                        fit_rect=QRectF(QPointF(chain - 3.0 * u, bottom),
+                                        QPointF(x1 + u, guide + y_hi + 1.5 * u)))
+
+    def _build_bodies(self, design, sh, u: float, block_half: float) -> None:
+        """Crank, slotted lever, blocks, rod and pins as shapes in their own frames."""
+        self._crank.setPath(stadium(design.crank, 1.1 * u))
+        self._crank.setPos(0.0, design.frame)
+        slot_lo = max(float(sh.slide.min()) - 1.6 * u, 0.9 * u)          # the block's travel
+        slot_hi = min(float(sh.slide.max()) + 1.6 * u, design.lever - 0.9 * u)
+        lever = stadium(design.lever, 1.6 * u)
+        lever.addRoundedRect(QRectF(slot_lo, -0.35 * u, slot_hi - slot_lo, 0.7 * u), 0.35 * u, 0.35 * u)
+        lever.setFillRule(Qt.FillRule.OddEvenFill)
+        self._lever.setPath(lever)
+        block = QPainterPath()
+        block.addRect(QRectF(-1.2 * u, -0.55 * u, 2.4 * u, 1.1 * u))
+        self._block_a.setPath(block)
+        block_b = QPainterPath()
+        block_b.addRect(QRectF(-0.7 * u, -block_half, 1.4 * u, 2.0 * block_half))
+        self._block_b.setPath(block_b)
+        rod = design.rod is not None
+        self._block_b.setVisible(not rod)
+        self._rod.setVisible(rod)
+        if rod:
+            self._rod.setPath(stadium(design.rod, 1.0 * u))
+        for name, pin in self.pins.items():
+            r = (PIN_FIXED if name.startswith("O") else PIN_MOVING) * u
+            pin.setRect(QRectF(-r, -r, 2.0 * r, 2.0 * r))
+
+    @staticmethod
+    def _build_frames(design, motion, metrics, u: float, tip_local: tuple[float, float]) -> _Frames:
+        """Per-index transforms and points, all from core's arrays."""
+        sh = motion.shape
+        a, b, c = sh.crank_pin.T, sh.lever_tip.T, sh.ram_joint.T
+        rod = design.rod is not None
+        o2 = np.array([0.0, design.frame])
+        along = b / design.lever
+        normal = np.stack([along[:, 1], -along[:, 0]], axis=1)        # across the lever
+        side = -1.0 if rod and design.rod_side == "leading" else 1.0   # B's label away from the rod
+        across = side * normal
+        # O2 lies on one side of the lever, the crank runs from it to A on the lever: A's
+        # label goes across the lever to the other side, O2's away from the lever (they sat
+        # on the lever at φ = 100° and under it at 120°, when placed along the crank).
+        o2_side = np.sign(np.einsum("ij,ij->i", normal, o2 - a))
+        o2_side[o2_side == 0.0] = 1.0
+        toward_o2 = normal * o2_side[:, None]
+        labels = [a - 1.0 * u * toward_o2, b + 2.0 * u * across]   # A: moved on in show()
+        if rod:
+            labels.append(c + np.array([0.0, -2.4 * u]))
+        tip = np.stack([c[:, 0] + tip_local[0], np.full(len(c), design.guide + tip_local[1])], axis=1)
+        # Return stroke: strictly between the limits (a limit on the grid counts as cutting).
+        phase = (np.degrees(motion.crank_angle) - metrics.work_start_deg) % 360.0
+        returning = (phase > metrics.work_angle_deg + LIMIT_TOL_DEG) & (phase < 360.0 - LIMIT_TOL_DEG)
+        tip[returning, 1] += RETURN_LIFT * u
+        turns = np.flatnonzero(returning[1:] != returning[:-1])
+        return _Frames(
+            joints=np.stack([a, b, c] if rod else [a, b], axis=1),
+            crank_deg=np.degrees(np.arctan2(a[:, 1] - o2[1], a[:, 0] - o2[0])),
+            lever_deg=90.0 - np.degrees(sh.lever),
+            rod_deg=np.degrees(sh.rod) if rod else None, ram_x=c[:, 0],
+            labels=np.stack(labels, axis=1), away=np.stack([-toward_o2, toward_o2], axis=1), u=u, tip=tip,
+            corners=np.unique(np.concatenate([turns, turns + 1])))
+
+    @staticmethod
+    def _tool_shape(front: float, y_lo: float, u: float) -> tuple[QPainterPath, tuple[float, float]]:
+        """Tool post and bit hanging under the ram's front end; returns the shape and the tip."""
+        path = QPainterPath()
+        path.addRect(rect(front - 2.6 * u, y_lo, front - 1.0 * u, y_lo - 2.0 * u))
+        tip = (front - 0.7 * u, y_lo - 3.3 * u)
+        bit = QPainterPath()
+        bit.moveTo(front - 2.3 * u, y_lo - 2.0 * u)
+        bit.lineTo(front - 1.0 * u, y_lo - 2.0 * u)
+        bit.lineTo(*tip)
+        bit.lineTo(front - 1.9 * u, y_lo - 2.9 * u)
+        bit.closeSubpath()
+        path.addPath(bit)
+        return path, tip
+
+    @staticmethod
+    def _support(p: np.ndarray, u: float) -> list[Pair]:
+        """A fixed pivot: triangle, ground line and hatching under ``p``."""
+        x, y = float(p[0]), float(p[1])
+        base = y - 2.0 * u
+        pairs = [((x, y), (x - 1.2 * u, base)), ((x, y), (x + 1.2 * u, base)),
+                 ((x - 2.0 * u, base), (x + 2.0 * u, base))]
+        for hx in np.linspace(x - 1.7 * u, x + 2.0 * u, 6):
+            pairs.append(((hx, base), (hx - 0.7 * u, base - 0.7 * u)))
+        return pairs
+
+    @staticmethod
+    def _rail(x0: float, x1: float, y: float, u: float) -> list[Pair]:
+        """The ram's guide way along its top: a line hatched on the frame side."""
+        pairs = [((x0, y), (x1, y))]
+        for hx in np.arange(x0, x1 - 0.6 * u, 1.4 * u):
+            pairs.append(((hx, y), (hx + 0.7 * u, y + 0.7 * u)))
+        return pairs
+
+    # ---- per frame ---------------------------------------------------
+    def place_joint_labels(self) -> None:
+        """A's and O2's labels just clear of the lever (and so of the crank) along their
+        direction, however large the text is in mm at this zoom."""
+        f, index = self.frames, self._index
+        if f is None or index >= len(f.tip):
+            return
+        joints = {"A": f.joints[index, 0], "O2": self._o2}
+        for k, name in enumerate(("A", "O2")):
+            label, direction = self.labels[name], f.away[index, k]
+            left, right, bottom, top = text_box(label)
+            reach = 0.5 * (abs(direction[0]) * (right - left) + abs(direction[1]) * (top - bottom))
+            label.setPos(*(joints[name] + direction * (JOINT_LABEL_CLEAR * f.u + reach)))
+
+    def show(self, index: int) -> bool:
+        """Move everything to crank-angle ``index`` with setPos/setRotation/setPath only;
+        False when there is no such index (nothing moved)."""
+        f = self.frames
+        if f is None or index >= len(f.tip):
+            return False
+        joints = f.joints[index]
+        for name, (x, y) in zip(MOVING, joints):
+            self.pins[name].setPos(x, y)
+        for name, (x, y) in zip(MOVING, f.labels[index]):
+            self.labels[name].setPos(x, y)
+        self._index = index
+        self.place_joint_labels()
+        self._crank.setRotation(f.crank_deg[index])
+        self._lever.setRotation(f.lever_deg[index])
+        self._block_a.setPos(joints[0, 0], joints[0, 1])
+        self._block_a.setRotation(f.lever_deg[index])
+        self._block_b.setPos(joints[1, 0], joints[1, 1])
+        if f.rod_deg is not None:
+            self._rod.setPos(joints[1, 0], joints[1, 1])
+            self._rod.setRotation(f.rod_deg[index])
+        self.ram.setX(f.ram_x[index])
+        # Within one stroke the tip moves straight and monotonically, so the stroke ends
+        # and the current point are the whole travelled polyline.
+        vertices = f.tip[[0, *f.corners[f.corners < index], index]]
+        path = QPainterPath(QPointF(*vertices[0]))
+        for x, y in vertices[1:]:
+            path.lineTo(x, y)
+        self._path_done.setPath(path)
+        return True
+
+    # ---- read back -----------------------------------------------------
+    def obstacles(self) -> list[Box]:
+        """Joint names and pin markers as drawn now, mm: where no other label may go."""
+        boxes = [text_box(label) for label in self.labels.values() if label.isVisible()]
+        for pin in self.pins.values():
+            if pin.isVisible():
+                r, x, y = 0.5 * pin.rect().width(), pin.x(), pin.y()
+                boxes.append((x - r, x + r, y - r, y + r))
+        return boxes
+
+    def joints(self) -> dict[str, tuple[float, float]]:
+        return {name: (pin.x(), pin.y()) for name, pin in self.pins.items() if pin.isVisible()}
+
+    def link_ends(self, model: DesignModel) -> dict[str, tuple[float, float]]:
+        design = model.design
+        ends = {"crank": (self._crank, design.crank), "lever": (self._lever, design.lever)}
+        if design.rod is not None:
+            ends["rod"] = (self._rod, design.rod)
+        out = {}
+        for name, (item, length) in ends.items():
+            point = item.mapToParent(QPointF(length, 0.0))
+            out[name] = (point.x(), point.y())
+        return out
+
+    def tool_path(self) -> tuple[np.ndarray, np.ndarray]:
+        path = self._path_done.path()
+        pts = [path.elementAt(i) for i in range(path.elementCount())]
+        return np.array([p.x for p in pts]), np.array([p.y for p in pts])
+
+    def ram_extent(self) -> tuple[float, float]:
+        """x of the ram body's rear and front ends as drawn now, mm."""
+        r = self.ram.mapRectToParent(self.ram.path().boundingRect())
+        return r.left(), r.right()

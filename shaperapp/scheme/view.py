@@ -1,0 +1,369 @@
+"""The mechanism sketch: the shaper drawn to scale (mm) at the current crank angle.
+
+The widget assembles three layers over one pyqtgraph view with a locked aspect
+ratio — the mechanism (mechanism.py), its dimensions
+(dimensions.py) and the optional force arrows (forces.py) — and
+exports them (image_export.py). Per design it rebuilds the layers and fits
+once; per animation frame it only asks each shown layer to move.
+
+Navigation: wheel zooms, drag pans, double-click fits, right click opens the
+scheme's own menu (Fit, Show dimensions, Show forces). pyqtgraph's English menu
+and its export dialog (whose SVG export fails on recent Qt) are not offered.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
+from PySide6.QtGui import QAction, QPainter
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QGraphicsView, QHBoxLayout, QMenu, QToolButton,
+                               QVBoxLayout, QWidget)
+
+from shaperapp.design.model import DesignModel
+from shaperapp.plots.axes import NavViewBox, unlink_hidden_axes
+from shaperapp.widgets.image_export import export_scene, render_scene
+from shaperapp.widgets.view_parts import fill_speed_combo
+
+from .dimensions import DimensionLayer
+from .draw import WHITE, Box, Pair
+from .forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
+from .mechanism import Geometry, MechanismLayer
+
+
+# After an edit the view is kept while it holds the whole drawing and the drawing fills at
+# least this share of it across or up (a fresh fit fills about 93 %).
+FILL_KEPT = 0.8
+
+
+class SchemeWidget(QWidget):
+    """The shaper mechanism drawn to scale at ``model.angle_index``; zoom, pan, fit, export."""
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._model = model
+        self._design = None
+        self._geometry: Geometry | None = None
+        self._stale = self._angle_stale = True     # a hidden scheme (closed dock) waits
+        self._forces_stale = False
+        self._update_timer = QTimer(self, singleShot=True, interval=0)
+        self._update_timer.timeout.connect(self._catch_up)
+        self._plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
+        self._plot.setAntialiasing(True)
+        # one repaint of the rectangle around a frame's changes, not one per moved item
+        self._plot.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.BoundingRectViewportUpdate)
+        self._plot.scene().contextMenu = []           # no pyqtgraph "Export..."
+        item = self._plot.getPlotItem()
+        item.hideAxis("left")
+        item.hideAxis("bottom")
+        unlink_hidden_axes(item)
+        item.hideButtons()
+        item.setMenuEnabled(False)
+        self._view = item.getViewBox()
+        self._view.setAspectLocked(True, ratio=1.0)
+        self._view.disableAutoRange()
+
+        self.fit_action = QAction(self)
+        self.fit_action.triggered.connect(self.fit)
+        self.dimensions_action = QAction(self)
+        self.dimensions_action.setCheckable(True)
+        self.dimensions_action.setChecked(True)
+        self.dimensions_action.toggled.connect(self.set_dimensions_visible)
+        self.forces_action = QAction(self)
+        self.forces_action.setCheckable(True)
+        self.forces_action.setChecked(False)
+        self.forces_action.toggled.connect(self._apply_forces_visible)
+        self._menu = QMenu(self)
+        for action in (self.fit_action, self.dimensions_action, self.forces_action):
+            self._menu.addAction(action)
+        self._view.menu_handler = lambda pos: self._menu.popup(pos.toPoint())
+        self._view.sigFitRequested.connect(self.fit)
+        self._fit_button = QToolButton()
+        self._fit_button.setDefaultAction(self.fit_action)
+        self._dims_box = QCheckBox()
+        self._dims_box.setChecked(True)
+        self._dims_box.toggled.connect(self.dimensions_action.setChecked)
+        self.dimensions_action.toggled.connect(self._dims_box.setChecked)
+        self._forces_box = QCheckBox()
+        self._forces_box.setObjectName("forcesBox")
+        self._forces_box.setChecked(False)
+        self._forces_box.toggled.connect(self.forces_action.setChecked)
+        self.forces_action.toggled.connect(self._forces_box.setChecked)
+        self._force_speed_box = QComboBox()         # which crank speed's forces are drawn
+        self._force_speed_box.setObjectName("forceSpeedBox")
+        self._force_speed_box.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
+        self._force_speed_box.setEnabled(False)
+        self._force_speed_box.currentIndexChanged.connect(self._force_speed_chosen)
+        self.forces_action.toggled.connect(self._force_speed_box.setEnabled)
+        bar = QHBoxLayout()
+        bar.setContentsMargins(4, 2, 4, 0)
+        bar.addWidget(self._fit_button)
+        bar.addWidget(self._dims_box)
+        bar.addWidget(self._forces_box)
+        bar.addWidget(self._force_speed_box)
+        bar.addStretch(1)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.setSpacing(0)
+        layout.addLayout(bar)
+        layout.addWidget(self._plot, 1)
+
+        add = self._plot.addItem
+        self._mechanism = MechanismLayer(add, self)
+        self._dimensions = DimensionLayer(add, self)
+        self._forces = ForceLayer(add, self._view, self)
+        self._view.sigTransformChanged.connect(self._dimensions.separate_chain_labels)
+        self._view.sigTransformChanged.connect(self._mechanism.place_joint_labels)   # text is screen-sized
+        self._retranslate()
+        model.resultsChanged.connect(self._on_results)
+        model.angleChanged.connect(self._on_angle)
+        model.forcesChanged.connect(self._on_forces)
+        self._on_results()
+
+    # ---- public ------------------------------------------------------
+    def fit(self) -> None:
+        """Show the whole mechanism, its travel and its dimensions."""
+        if self._geometry is not None:
+            self._view.setRange(self._fit_rect(), padding=0.04)
+            self._view.updateMatrix()     # now, not while preparing a paint (a second paint)
+
+    def _fit_rect(self) -> QRectF:
+        """The drawing, with the force arrows' reach over the cycle while they are shown."""
+        rect = self._geometry.fit_rect
+        forces = self._forces.extent(self._model, self._geometry) if self.forces_visible() else None
+        return rect if forces is None else rect.united(forces)
+
+    def _still_fits(self) -> bool:
+        """The view shown holds the new design's drawing and the drawing fills at least
+        FILL_KEPT of it across or up: a nudged input keeps the view, as in the plots."""
+        view = self._view.viewRect()
+        want = self._fit_rect()
+        return view.contains(want) and (want.width() >= FILL_KEPT * view.width()
+                                        or want.height() >= FILL_KEPT * view.height())
+
+    def set_dimensions_visible(self, visible: bool) -> None:
+        """Show or hide the dimension lines (L1, L2, L3, h, H)."""
+        self.dimensions_action.setChecked(visible)
+        self._dimensions.set_visible(visible)
+
+    def dimensions_visible(self) -> bool:
+        return self.dimensions_action.isChecked()
+
+    def set_forces_visible(self, visible: bool) -> None:
+        """Show or hide the force arrows (chosen crank speed, current angle)."""
+        if self.forces_action.isChecked() != bool(visible):
+            self.forces_action.setChecked(bool(visible))     # → _apply_forces_visible
+
+    def forces_visible(self) -> bool:
+        return self.forces_action.isChecked()
+
+    def set_force_speed(self, index: int) -> None:
+        """Draw the forces at crank speed ``index`` of model.rpms (the first by default)."""
+        self._force_speed_box.setCurrentIndex(index)
+
+    def force_speed(self) -> int:
+        return self._forces.speed
+
+    def _force_speed_chosen(self, index: int) -> None:
+        if index >= 0 and index != self._forces.speed:
+            self._forces.speed = index
+            self._draw_forces(self._model.angle_index)
+
+    def drawn_forces(self) -> dict[str, Pair]:
+        """The force arrows drawn now as {name: (start, tip)} in mm, read back from the drawn path.
+
+        Names are those of ``FORCE_NAMES`` that are drawn: the arrow runs from start to
+        tip along the force on the body named in core (see docs/forces.md): "O2" frame on
+        crank, "A" block on lever, "O4" frame on lever, "B" rod or tip block on lever,
+        "C" rod on ram, "guide" guide on ram, "cut" workpiece on tool. Every arrow starts
+        at its point of application except "cut", whose tip touches the tool point.
+        Empty while the layer is hidden.
+        """
+        self._catch_up()
+        return self._forces.drawn()
+
+    def force_labels(self) -> dict[str, str]:
+        """The magnitude labels next to the drawn force arrows."""
+        self._catch_up()
+        return self._forces.labels()
+
+    def force_label_boxes(self) -> dict[str, Box]:
+        """Where the magnitude labels are drawn on screen, (left, right, bottom, top) in mm."""
+        self._catch_up()
+        return {name: self._screen_box(tag) for name, tag in self._forces.tags().items()}
+
+    def force_caption(self) -> str:
+        """The force layer's caption (speed and length scale); empty while hidden."""
+        self._catch_up()
+        return self._forces.caption()
+
+    def export_image(self, path: str) -> None:
+        """Write the sketch as PNG (at least 1600 px wide), another raster type Qt writes,
+        or SVG, chosen by the suffix. ValueError for an unknown type, OSError for a missing
+        or unwritable folder; nothing is written then."""
+        self._catch_up()
+        source = self._plot.getPlotItem().sceneBoundingRect()
+        export_scene(self._plot.scene(), source, path, self.tr("Shaper mechanism"), WHITE)
+
+    def export_point(self, x_mm: float, y_mm: float) -> QPointF:
+        """Where the design point (x, y) (mm, the frame of ``core.geometry``) lies in the
+        picture ``export_image`` writes now, in its px: for marks drawn over it."""
+        self._catch_up()
+        item = self._plot.getPlotItem()
+        return item.getViewBox().mapViewToScene(QPointF(x_mm, y_mm)) - item.sceneBoundingRect().topLeft()
+
+    def render(self, painter: QPainter, target: QRectF) -> None:
+        """Paint the sketch as shown into ``target`` of any QPainter (vector output)."""
+        self._catch_up()
+        source = self._plot.getPlotItem().sceneBoundingRect()
+        render_scene(self._plot.scene(), source, painter, target, WHITE)
+
+    def drawn_joints(self) -> dict[str, tuple[float, float]]:
+        """Joint positions as the pin markers show them now, mm (for checks and tests)."""
+        self._catch_up()
+        return self._mechanism.joints()
+
+    def drawn_link_ends(self) -> dict[str, tuple[float, float]]:
+        """Where the far end of each moved link body lands now, mm (for checks and tests)."""
+        self._catch_up()
+        return self._mechanism.link_ends(self._model)
+
+    def ram_extent(self) -> tuple[float, float]:
+        """x of the ram body's rear and front ends as drawn now, mm."""
+        self._catch_up()
+        return self._mechanism.ram_extent()
+
+    def dimension_labels(self) -> list[str]:
+        """The texts of the dimension labels now drawn."""
+        self._catch_up()
+        return self._dimensions.labels()
+
+    def dimension_label_boxes(self) -> dict[str, Box]:
+        """Where the dimension labels are drawn on screen, (left, right, bottom, top) in mm,
+        by name ("L1" …)."""
+        self._catch_up()
+        return {name: self._screen_box(item) for name, item in self._dimensions.texts().items()}
+
+    def _screen_box(self, item) -> Box:
+        """The item's box as the viewport shows it, back in mm: what a user sees, whatever
+        transform tricks the item uses to stay upright and unscaled."""
+        view = self._plot
+        device = item.deviceTransform(view.viewportTransform()).mapRect(item.boundingRect())
+        scene = view.viewportTransform().inverted()[0].mapRect(device)
+        r = self._view.mapSceneToView(scene).boundingRect()
+        return r.left(), r.right(), r.top(), r.bottom()
+
+    def tool_path(self) -> tuple[np.ndarray, np.ndarray]:
+        """Vertices of the travelled part of the tool-tip trace as drawn now, mm."""
+        self._catch_up()
+        return self._mechanism.tool_path()
+
+    def plot_widget(self) -> pg.PlotWidget:
+        return self._plot
+
+    def context_menu(self) -> QMenu:
+        """The menu a right click opens."""
+        return self._menu
+
+    # ---- Qt ----------------------------------------------------------
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._retranslate()
+        super().changeEvent(event)
+
+    def _retranslate(self) -> None:
+        self.fit_action.setText(self.tr("Fit"))
+        self.fit_action.setToolTip(self.tr("Zoom to show the whole mechanism"))
+        self.dimensions_action.setText(self.tr("Show dimensions"))
+        self._dims_box.setText(self.tr("Show dimensions"))
+        self._dims_box.setToolTip(self.tr("Show the key dimensions L1, L2, L3, h and the stroke H"))
+        self.forces_action.setText(self.tr("Show forces"))
+        self._forces_box.setText(self.tr("Show forces"))
+        self._forces_box.setToolTip(self.tr(
+            "Show the joint forces at the chosen crank speed as arrows, to one scale"))
+        self._force_speed_box.setToolTip(self.tr("Crank speed of the force arrows"))
+        fill_speed_combo(self._force_speed_box, self._model.rpms)    # "r/min" in the new language
+        self._plot.setToolTip(self.tr("Wheel: zoom, drag: pan, double-click: fit, right click: menu"))
+        self._forces.retranslate()
+        if self._geometry is not None:
+            self._dimensions.update(self._model, self._geometry)
+            self._draw_forces(self._model.angle_index)
+
+    # ---- model → layers ----------------------------------------------
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        self._catch_up()
+
+    def _catch_up(self) -> None:
+        """Bring the scheme up to the model: after an edit (once for its results, forces
+        and angle signals), when shown after being hidden, and before any read-back."""
+        self._update_timer.stop()
+        if self._stale:
+            self._rebuild()
+        elif self._angle_stale:
+            self._move(self._model.angle_index)
+        elif self._forces_stale:
+            self._draw_forces(self._model.angle_index)
+
+    def _schedule(self) -> None:
+        """One rebuild when the model has announced everything an edit changed."""
+        if self.isVisible() or self._geometry is None:
+            self._update_timer.start()
+
+    def _on_results(self) -> None:
+        """Rebuilt after the edit if shown, else when shown: a closed dock does nothing."""
+        self._stale = True
+        if self._geometry is None:
+            self._rebuild()
+        else:
+            self._schedule()
+
+    def _rebuild(self) -> None:
+        """Rebuild every layer for the design; fit once per new design, before the force
+        labels are placed (they keep a distance in pixels)."""
+        self._stale = False
+        fill_speed_combo(self._force_speed_box, self._model.rpms)   # keeps the speed if still there
+        self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
+        self._geometry = self._mechanism.rebuild(self._model)
+        self._dimensions.update(self._model, self._geometry)
+        design = self._model.design
+        if design != self._design:
+            self._design = design
+            if not self._still_fits():
+                self.fit()
+        self._move(self._model.angle_index)
+
+    def _on_angle(self, index: int) -> None:
+        """Only moves items (setPos/setRotation/setPath): no Python-side signal per frame.
+        While a rebuild is pending it places the mechanism itself."""
+        if self._stale or (not self.isVisible() and self._geometry is not None):
+            self._angle_stale = True
+            return
+        self._move(index)
+
+    def _move(self, index: int) -> None:
+        self._angle_stale = False
+        if self._mechanism.show(index):
+            self._draw_forces(index)
+
+    def _on_forces(self) -> None:
+        """Loads or the design changed: redrawn after the edit if shown, else when shown."""
+        self._forces_stale = True
+        self._schedule()
+
+    def _apply_forces_visible(self, visible: bool) -> None:
+        self._forces.set_visible(visible)
+        if visible and self._geometry is not None and not self._stale:
+            # A view showing the whole mechanism widens to the arrows; a zoomed one stays.
+            view = self._view.viewRect()
+            if view.contains(self._geometry.fit_rect) and not view.contains(self._fit_rect()):
+                self.fit()
+        self._draw_forces(self._model.angle_index)
+
+    def _draw_forces(self, index: int) -> None:
+        if self._stale:            # never on the previous design's geometry: the rebuild draws
+            return
+        self._forces_stale = False
+        if self._geometry is None or not self.forces_visible():
+            return
+        obstacles = self._mechanism.obstacles() + self._dimensions.obstacles()
+        self._forces.draw(index, self._model, self._geometry, self._view.viewPixelSize(), obstacles)

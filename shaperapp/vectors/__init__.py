@@ -1,0 +1,1 @@
+"""The vector polygons (velocity, acceleration, forces) and their painter."""

@@ -1,0 +1,345 @@
+"""The main window only assembles: panes, docks, actions, menus, toolbar, window state.
+
+It owns no design data (the model does) and no file logic (the document does);
+widgets talk only to the model. Central: the plot tabs (Kinematics, Forces,
+Positions, Explore, Compare) above the animation bar. Docks (``docks.py``):
+inputs, results, mechanism, vector diagrams, library. Menus and toolbar are
+built in ``menus.py``, actions behave as ``actions.py`` makes them, and
+``state.py`` fits the window to the screen and remembers the layout.
+"""
+from __future__ import annotations
+
+import os
+
+import shiboken6
+from PySide6.QtCore import QEvent, QSettings, QTimer
+from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
+from PySide6.QtWidgets import (QInputDialog, QMainWindow, QMessageBox, QTabWidget,
+                               QVBoxLayout, QWidget)
+
+from shaperapp.compare.view import CompareView
+from shaperapp.design.document import Document
+from shaperapp.design.inputs_pane import InputsPane
+from shaperapp.design.model import DesignModel
+from shaperapp.explore.view import ExploreView
+from shaperapp.library.pane import LibraryPane
+from shaperapp.plots.forces import ForcePlots
+from shaperapp.plots.kinematics import PlotsWidget
+from shaperapp.positions.view import PositionsView
+from shaperapp.results.panel import MetricsPanel
+from shaperapp.scheme.view import SchemeWidget
+from shaperapp.vectors.view import PolygonView
+from shaperapp.widgets import file_dialogs
+from shaperapp.widgets import i18n
+from shaperapp.widgets.guards import ShortcutGuard, guard_wheel
+from shaperapp.widgets.messages import describe
+
+from . import state as window_state
+from .actions import command, flush_typing, set_tip, stack_action, window_shortcut
+from .animation import AnimationBar
+from .docks import Docks
+from .help import GuideDialog, about_text
+from .menus import Menus
+
+APP_NAME = "Shaper Designer"
+
+
+class MainWindow(QMainWindow):
+    def __init__(self, model: DesignModel, settings: QSettings, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.model = model
+        self.settings = settings
+        self.document = Document(model, settings, self)
+        self.inputs = InputsPane(model)
+        self.form, self.loads = self.inputs.form, self.inputs.loads
+        self.metrics = MetricsPanel(model)
+        self.scheme = SchemeWidget(model)
+        self.polygon_view = PolygonView(model)
+        self.library = LibraryPane(model, settings=settings)
+        self.animation = AnimationBar(model)
+        self.plots = PlotsWidget(model)
+        self.forces = ForcePlots(model)
+        self.positions = PositionsView(model)
+        self.explore = ExploreView(model)
+        self.compare = CompareView(model)
+        self.tabs = QTabWidget()
+        for view in (self.plots, self.forces, self.positions, self.explore, self.compare):
+            self.tabs.addTab(view, "")
+        central = QWidget()
+        column = QVBoxLayout(central)
+        column.setContentsMargins(0, 0, 0, 0)
+        column.setSpacing(0)
+        column.addWidget(self.tabs, 1)
+        column.addWidget(self.animation)
+        self.setCentralWidget(central)
+        self.docks = Docks(self, {"inputs": self.inputs, "results": self.metrics, "mechanism": self.scheme,
+                                  "polygons": self.polygon_view, "library": self.library})
+        self.library_dock = self.docks["library"]
+        self.library.compareRequested.connect(self._show_comparison)
+        self.polygon_view.enlargeRequested.connect(self._enlarge_polygons)
+
+        self._build_actions()
+        self.menus = Menus(self)
+        self.menu_file, self.menu_edit = self.menus.file, self.menus.edit
+        self._fill_recent()
+        guard_wheel(self)
+        self._shortcut_guard = ShortcutGuard(self, flush_typing)
+        self.document.failed.connect(self._show_failure)
+        self.document.recentChanged.connect(self._fill_recent)
+        self.document.saved.connect(self._on_saved)
+        model.pathChanged.connect(self._update_title)
+        model.dirtyChanged.connect(self._update_title)
+        model.errorChanged.connect(self._show_status)
+        model.resultsChanged.connect(self._show_status)
+        self._retranslate()
+        if window_state.restore(self, settings, self.docks.arrange):
+            self.docks.keep_sizes()
+
+    def showEvent(self, event) -> None:
+        super().showEvent(event)
+        QTimer.singleShot(0, self.docks.apply_sizes)    # the default sizes, once laid out
+
+    flush_typing = staticmethod(flush_typing)
+
+    # ---- actions -------------------------------------------------------------
+    def _action(self, slot, keys=None) -> QAction:
+        return command(self, slot, keys)
+
+    def _build_actions(self) -> None:
+        d, keys = self.document, QKeySequence.StandardKey
+        self.act_new = self._action(lambda: d.new_dialog(self), keys.New)
+        self.act_open = self._action(lambda: d.open_dialog(self), keys.Open)
+        self.act_save = self._action(lambda: d.save_dialog(self), keys.Save)
+        self.act_save_as = self._action(lambda: d.save_as_dialog(self), keys.SaveAs)
+        self.act_csv = self._action(lambda: d.export_csv_dialog(self), "Ctrl+E")
+        self.act_forces_csv = self._action(lambda: d.export_forces_csv_dialog(self), "Ctrl+Shift+E")
+        self.act_plots_img = self._action(
+            lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
+        self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
+        self.act_report = self._action(self._export_report, "Ctrl+R")
+        # Only tabs that draw plots can export them as an image, or fit them.
+        self.tabs.currentChanged.connect(self._on_tab)
+        self.act_quit = self._action(self.close, keys.Quit)
+        stack = self.model.undo_stack
+        self.act_undo = stack_action(self, stack.createUndoAction(self, self.tr("Undo")), stack.undo, keys.Undo)
+        self.act_redo = stack_action(self, stack.createRedoAction(self, self.tr("Redo")), stack.redo,
+                                     keys.Redo, "Ctrl+Shift+Z", "Ctrl+Y")     # both, as the README says
+        stack.undoTextChanged.connect(self._show_undo_text)
+        stack.redoTextChanged.connect(self._show_redo_text)
+        self.act_goto = self._action(self.go_to_angle_dialog, "Ctrl+G")
+        # The widgets own these actions (and their texts); the window only adds shortcuts.
+        self.act_play = window_shortcut(self, self.animation.play_action, "Space", "Ctrl+Space")
+        self.act_step = window_shortcut(self, self.animation.step_forward_action, "Ctrl+Right")
+        self.act_back = window_shortcut(self, self.animation.step_back_action, "Ctrl+Left")
+        self.act_fit = window_shortcut(self, self.scheme.fit_action, "Ctrl+0")
+        self.act_dims = window_shortcut(self, self.scheme.dimensions_action, "Ctrl+D")
+        self.act_forces = window_shortcut(self, self.scheme.forces_action, "Ctrl+F")
+        self.act_fit_plots = self._action(self._fit_plots, "Ctrl+Shift+0")
+        self.act_reset_layout = self._action(lambda: self.docks.arrange(self.size()))
+        self.act_library = self.library_dock.toggleViewAction()
+        self.act_library.setShortcut(QKeySequence("Ctrl+L"))
+        self.act_library_save = self._action(self._save_to_library, "Ctrl+Shift+L")
+        self.act_compare = self._action(lambda: self.tabs.setCurrentWidget(self.compare))
+        self.act_about = self._action(self._about)
+        self.act_guide = self._action(self._show_guide, keys.HelpContents)
+        self._guide: GuideDialog | None = None
+        self._language = "en"
+        self.lang_actions: dict[str, QAction] = {}
+        for code, name in i18n.LANGUAGES:
+            action = self._action(lambda _=False, c=code: self.set_language(c))
+            action.setText(name)
+            action.setCheckable(True)
+            self.lang_actions[code] = action
+
+    def _on_tab(self, *_) -> None:
+        plots = self.tabs.currentWidget()
+        self.act_plots_img.setEnabled(hasattr(plots, "export_image"))
+        self.act_fit_plots.setEnabled(hasattr(plots, "stack"))
+
+    def _fit_plots(self) -> None:
+        if hasattr(self.tabs.currentWidget(), "stack"):
+            self.tabs.currentWidget().stack().fit()
+
+    def _fill_recent(self) -> None:
+        menu = self.menus.recent
+        menu.clear()
+        files = self.document.recent_files()
+        for path in files:
+            action = menu.addAction(os.path.basename(path))
+            action.setToolTip(path)
+            action.triggered.connect(lambda _=False, p=path: self.document.open_dialog(self, p))
+        menu.setEnabled(bool(files))
+
+    # ---- translation ---------------------------------------------------------
+    def set_language(self, code: str) -> None:
+        i18n.set_language(code)
+        self._language = code
+        if self._guide is not None:
+            self._guide.set_language(code)
+        self.settings.setValue("language", code)
+        for c, action in self.lang_actions.items():
+            action.setChecked(c == code)
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._retranslate()
+        super().changeEvent(event)
+
+    def _retranslate(self) -> None:
+        texts = [
+            (self.act_new, self.tr("&New"), self.tr("Start a new design from the defaults")),
+            (self.act_open, self.tr("&Open…"), self.tr("Open a design file")),
+            (self.act_save, self.tr("&Save"), self.tr("Save the design")),
+            (self.act_save_as, self.tr("Save &As…"), self.tr("Save the design under a new name")),
+            (self.act_csv, self.tr("Export curves to &CSV…"), self.tr("All speeds, at the form's angle step")),
+            (self.act_forces_csv, self.tr("Export &forces to CSV…"),
+             self.tr("Crank torque, power and joint forces, all speeds")),
+            (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots of the current tab as an image")),
+            (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
+            (self.act_report, self.tr("Export &report (PDF/HTML)…"),
+             self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
+            (self.act_quit, self.tr("&Quit"), ""),
+            (self.act_goto, self.tr("&Go to Crank Angle…"), self.tr("Move the mechanism to a crank angle you type")),
+            (self.act_fit_plots, self.tr("Fit &plots"), self.tr("Show the whole cycle in the plots of the current tab")),
+            (self.act_reset_layout, self.tr("&Reset layout"),
+             self.tr("Put every pane back in its place for this window size")),
+            (self.act_library_save, self.tr("&Save design to library…"), ""),
+            (self.act_compare, self.tr("&Compare designs"), ""),
+            (self.act_about, self.tr("&About"), ""),
+            (self.act_guide, self.tr("User &guide"), self.tr("Conventions, method, glossary and command line")),
+        ]
+        for action, text, tip in texts:
+            set_tip(action, text, tip)
+        self.act_library.setText(self.tr("Show &library"))
+        for i, title in enumerate((self.tr("Kinematics"), self.tr("Forces"), self.tr("Positions"),
+                                   self.tr("Explore"), self.tr("Compare"))):
+            self.tabs.setTabText(i, title)
+        self.docks.retranslate()
+        self.menus.retranslate()
+        self.model.retranslate_history()
+        self._show_undo_text(self.model.undo_stack.undoText())
+        self._show_redo_text(self.model.undo_stack.redoText())
+        self._update_title()
+        self._show_status()
+
+    def _show_undo_text(self, text: str) -> None:
+        """'Undo Time ratio K' in the current language (the stack's own prefix is fixed
+        when the action is made). The stack outlives the window: skip once it is gone."""
+        if shiboken6.isValid(self.act_undo):
+            set_tip(self.act_undo, self.tr("&Undo %1").replace("%1", text).strip(), "")
+
+    def _show_redo_text(self, text: str) -> None:
+        if shiboken6.isValid(self.act_redo):
+            set_tip(self.act_redo, self.tr("&Redo %1").replace("%1", text).strip(), "")
+
+    def _update_title(self, *_) -> None:
+        """The file name; Qt appends the application's display name, which
+        ``i18n.set_language`` sets in the same language."""
+        name = os.path.basename(self.model.path) if self.model.path else self.tr("Untitled")
+        self.setWindowTitle(f"{name}[*]")
+        self.setWindowModified(self.model.dirty)
+
+    def _show_status(self) -> None:
+        error = self.model.error
+        if error is not None:
+            self.statusBar().showMessage(describe(error))
+        else:
+            m = self.model.metrics
+            self.statusBar().showMessage(
+                self.tr("K = %1, H = %2 mm, θ = %3°").replace("%1", f"{m.time_ratio:.4f}")
+                .replace("%2", f"{m.stroke_mm:.2f}").replace("%3", f"{m.theta_deg:.3f}"))
+
+    # ---- slots -------------------------------------------------------------
+    def _show_failure(self, message: str) -> None:
+        QMessageBox.warning(self, self.tr("Shaper Designer"), message)
+
+    def _on_saved(self, path: str) -> None:
+        self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
+
+    def _enlarge_polygons(self) -> None:
+        """Float the vector diagrams over most of the screen, or dock them again."""
+        dock = self.docks["polygons"]
+        if dock.isFloating():
+            dock.setFloating(False)
+            return
+        room = window_state.available(self)
+        dock.setFloating(True)
+        size = room.size() * 0.7
+        dock.setGeometry(room.x() + (room.width() - size.width()) // 2,
+                         room.y() + (room.height() - size.height()) // 2, size.width(), size.height())
+
+    def _show_comparison(self, candidates: list) -> None:
+        self.compare.set_candidates(candidates)
+        self.tabs.setCurrentWidget(self.compare)
+        if self.height() < 1000:          # on a small screen the docked library leaves the plots no room
+            self.library_dock.hide()
+
+    def _save_to_library(self) -> None:
+        self.library_dock.show()
+        self.library.save_dialog()
+
+    def _export_image(self, widget, stem: str) -> None:
+        if not self.document.confirm_valid(self, saving=False):
+            return
+        start = os.path.join(self.document.last_dir(), f"{stem}.png")
+        path = file_dialogs.save_file_name(self, self.tr("Export image"), start,
+                                           self.tr("PNG image (*.png);;SVG drawing (*.svg)"))
+        if path:
+            self.export_image_to(widget, path)
+
+    def export_image_to(self, widget, path: str) -> bool:
+        """Write ``widget``'s image to ``path``; any failure is shown naming ``path``."""
+        folder = os.path.dirname(os.path.abspath(path))
+        if not os.path.isdir(folder):
+            reason = self.tr("the folder %1 does not exist").replace("%1", folder)
+        else:
+            try:
+                widget.export_image(path)
+            except OSError as exc:
+                reason = exc.strerror or str(exc)
+            except ValueError as exc:     # e.g. a suffix that is not an image type
+                reason = str(exc)
+            else:
+                if os.path.exists(path):
+                    return True
+                reason = self.tr("nothing was written")
+        self._show_failure(self.tr("Could not export the image to %1: %2").replace("%1", path)
+                           .replace("%2", reason))
+        return False
+
+    def go_to_angle_dialog(self) -> None:
+        """Ask for a crank angle and move the mechanism there."""
+        value, ok = QInputDialog.getDouble(self, self.tr("Go to crank angle"),
+                                           self.tr("Crank angle φ (0–360°):"), self.model.crank_deg,
+                                           0.0, 360.0, 3)
+        if ok:
+            self.model.set_angle_deg(value)
+
+    def _export_report(self) -> None:
+        if not self.document.confirm_valid(self, saving=False):
+            return
+        from shaperapp.report.dialog import export_report_dialog   # builds offscreen views: load on demand
+        path = export_report_dialog(self.model, self, self._language,
+                                    self.document.last_dir(), self.settings)
+        if path:
+            self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
+
+    def _about(self) -> None:
+        QMessageBox.about(self, self.tr("About Shaper Designer"), about_text())
+
+    def _show_guide(self) -> None:
+        if self._guide is None:
+            self._guide = GuideDialog(self._language, self)
+        self._guide.show()
+        self._guide.raise_()
+
+    # ---- window state --------------------------------------------------------
+    def closeEvent(self, event: QCloseEvent) -> None:
+        if not self.document.confirm_discard(self):
+            event.ignore()
+            return
+        window_state.save(self, self.settings)
+        if self._guide is not None:
+            self._guide.close()
+        self.explore.shutdown()
+        event.accept()
