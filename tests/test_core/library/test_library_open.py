@@ -23,8 +23,9 @@ from core.library.store import LibraryError
 from core.spec import Spec
 
 from cli_runner import shaper_in_process
+from locations import DATA
 
-FIXTURE_V1 = Path(__file__).with_name("data") / "library-v1.sqlite"
+FIXTURE_V1 = DATA / "library-v1.sqlite"
 DESIGN = ("--crank", "100", "--K", "1.4", "--stroke", "300")
 ACTIONS = [("list",), ("list", "--json"), ("show", "a"), ("add", *DESIGN, "--name", "n"),
            ("remove", "a"), ("rename", "a", "z"), ("compare", "a", "b"), ("refresh",), ("check",),

@@ -15,9 +15,10 @@ from core.geometry import from_dimensions
 from core.kinematics import solve
 
 from seed000 import L1, L3, L4, L6, L61, six_bar
+from locations import DATA
 
 RPM_ONE_RAD_S = 60.0 / (2.0 * math.pi)  # ω1 = 1 rad/s as in the seed
-REFERENCE = Path(__file__).parent / "data" / "seed000_six_bar_octave.txt"
+REFERENCE = DATA / "seed000_six_bar_octave.txt"
 
 
 @pytest.fixture(scope="module")

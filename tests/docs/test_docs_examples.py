@@ -4,8 +4,9 @@ import re
 from pathlib import Path
 
 import pytest
+from locations import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = ROOT
 PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 BLOCKS = [(page.name, i, block) for page in PAGES
           for i, block in enumerate(re.findall(r"```python\n(.*?)```",

@@ -17,8 +17,9 @@ from PySide6.QtWidgets import (QAbstractButton, QAbstractItemView, QComboBox, QD
                                QGroupBox, QLabel, QLineEdit, QMenu, QTabWidget, QWidget)
 
 from gui_helpers import main_window
+from locations import ROOT
 
-TS = Path(__file__).resolve().parents[1] / "resources" / "shaperapp_zh_CN.ts"
+TS = ROOT / "resources" / "shaperapp_zh_CN.ts"
 
 
 def catalogue() -> dict[str, str]:

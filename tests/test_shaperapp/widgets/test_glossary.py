@@ -8,8 +8,9 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from locations import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = ROOT
 TS = ROOT / "resources" / "shaperapp_zh_CN.ts"
 GUIDE = ROOT / "resources" / "help" / "guide_zh_CN.html"
 

@@ -15,10 +15,11 @@ from core.library import store as library_store
 from core.library.store import APPLICATION_ID, LibraryError, backup_copy, schema_version
 from core.spec import Spec
 from cli_runner import shaper
+from locations import DATA, ROOT, TESTS
 
-WRITER = Path(__file__).with_name("library_writer.py")
-ROOT = Path(__file__).resolve().parents[1]
-FIXTURE_V1 = Path(__file__).with_name("data") / "library-v1.sqlite"
+WRITER = TESTS / "library_writer.py"
+ROOT = ROOT
+FIXTURE_V1 = DATA / "library-v1.sqlite"
 
 
 def writer(path, prefix, count, fast=False):

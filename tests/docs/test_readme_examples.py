@@ -13,8 +13,9 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from locations import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = ROOT
 README = ROOT / "README.md"
 PAGES = [README, *sorted((ROOT / "docs").glob("*.md"))]
 CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep")

@@ -22,8 +22,9 @@ from shaperapp.design.model import DesignModel
 from shaperapp.widgets import i18n
 from shaperapp.window.main_window import MainWindow
 from shaperapp.window.state import STATE_VERSION
+from locations import TESTS
 
-PROBE = Path(__file__).with_name("layout_probe.py")
+PROBE = TESTS / "layout_probe.py"
 SIXTEEN = ",".join(str(20 + 5 * i) for i in range(16))
 SPEED_ROWS, FORCE_ROWS = 9, 7
 

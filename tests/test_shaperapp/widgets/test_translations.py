@@ -9,8 +9,9 @@ from pathlib import Path
 
 import pytest
 from PySide6.QtCore import QTranslator
+from locations import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = ROOT
 TS = ROOT / "resources" / "shaperapp_zh_CN.ts"
 QM = ROOT / "resources" / "shaperapp_zh_CN.qm"
 

@@ -14,10 +14,11 @@ from core.figures import FIGURES_VERSION, figures
 from core.library import Library
 from core.library.store import schema_version
 from core.spec import Spec
+from locations import DATA
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                        cut_force_N=7000.0, cut_height_mm=80.0)
-FIXTURE_V1 = Path(__file__).with_name("data") / "library-v1.sqlite"
+FIXTURE_V1 = DATA / "library-v1.sqlite"
 SPECS = {f"K{k}": Spec(time_ratio=k) for k in (1.3, 1.4, 1.5)}
 SPECS["rod"] = Spec(time_ratio=1.6, variant="rod", rod_ratio=0.35)
 
