@@ -183,7 +183,6 @@ class Library:
             every = c.text_factory is not str       # texts that are not UTF-8 came as bytes
             return [row[2:] + (None,) if not (row[0] or every) else _cleaned(row) for row in rows]
         return LIST_COLUMNS, self._read(work)
-        return LIST_COLUMNS, rows
 
     def query(self, *args: Any, **kwargs: Any) -> list[dict[str, Any]]:
         """:meth:`query_rows` as JSON-ready dicts (``tags`` a list)."""

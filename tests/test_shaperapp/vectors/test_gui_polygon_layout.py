@@ -24,7 +24,7 @@ from shaperapp.vectors.paint import auto_scale, paint_polygon
 from shaperapp.window.main_window import MainWindow
 
 from paint_recorder import PaintRecorder, overlapping
-from test_gui_layout import overlap, probe
+from layout_checks import probe
 
 LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70,
                        cut_force_N=7000, cut_height_mm=80)

@@ -7,12 +7,6 @@ the minimum size and, for every result table, which rows are clipped or unreacha
 """
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-from pathlib import Path
-
 import pytest
 from PySide6.QtCore import QByteArray, QSettings, Qt
 from PySide6.QtGui import QGuiApplication
@@ -22,24 +16,10 @@ from shaperapp.design.model import DesignModel
 from shaperapp.widgets import i18n
 from shaperapp.window.main_window import MainWindow
 from shaperapp.window.state import STATE_VERSION
-from locations import TESTS
+from layout_checks import overlap, probe
 
-PROBE = TESTS / "layout_probe.py"
 SIXTEEN = ",".join(str(20 + 5 * i) for i in range(16))
 SPEED_ROWS, FORCE_ROWS = 9, 7
-
-
-def probe(tmp_path: Path, width: int, height: int, *args: str, settings: str = "s.ini") -> dict:
-    screen = tmp_path / f"screen-{width}x{height}.json"
-    screen.write_text(json.dumps({"screens": [{"name": "probe", "x": 0, "y": 0, "width": width,
-                                               "height": height, "logicalDpi": 96,
-                                               "logicalBaseDpi": 96, "dpr": 1}]}))
-    env = dict(os.environ, QT_QPA_PLATFORM=f"offscreen:configfile={screen}",
-               XDG_CONFIG_HOME=str(tmp_path), SHAPER_LIBRARY=str(tmp_path / "library.sqlite"))
-    out = subprocess.run([sys.executable, str(PROBE), "--settings", str(tmp_path / settings), *args],
-                         capture_output=True, text=True, env=env, timeout=180)
-    assert out.returncode == 0, out.stderr
-    return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def inside(outer: list[int], inner: list[int]) -> bool:
@@ -74,10 +54,6 @@ def test_window_and_every_result_table_fit(tmp_path, width, height, lang):
             assert any("，mm" in t for t in dims["titles"])                # translated titles
         else:
             assert "Frame O2O4 L2, mm" in dims["titles"]
-
-
-def overlap(a: list[float], b: list[float]) -> bool:
-    return a[0] < b[0] + b[2] and b[0] < a[0] + a[2] and a[1] < b[1] + b[3] and b[1] < a[1] + a[3]
 
 
 @pytest.mark.parametrize("lang", ["en", "zh_CN"])
