@@ -11,6 +11,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 SCRIPT = Path(__file__).resolve().parents[1] / ".ci" / "run"
 SONAMES = ("libEGL.so.1", "libGL.so.1", "libxkbcommon.so.0", "libfontconfig.so.1",
            "libglib-2.0.so.0", "libdbus-1.so.3")

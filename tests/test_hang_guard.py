@@ -8,10 +8,13 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 HERE = Path(__file__).parent
 
 HANGING_TEST = '''
 import ctypes
+
 
 def test_stuck_in_c_with_the_gil_held():
     # PyDLL keeps the GIL during the call, as a deadlock inside Qt's C++ code does.

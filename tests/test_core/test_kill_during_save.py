@@ -23,6 +23,8 @@ from core.atomic import atomic_write, temp_pattern
 from core.io import load_design, save_design
 from core.spec import Spec
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 ITERATIONS = 60
 
 HELPER = r"""

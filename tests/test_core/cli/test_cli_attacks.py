@@ -28,6 +28,8 @@ from cli_runner import shaper_in_process
 from output_checks import error_names
 from test_cli_fuzz import with_value
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 HUGE = ["99999999999999999999", "-99999999999999999999", "1" + "0" * 400, "9" * 5000]
 DESIGN = ["--crank", "100", "--K", "1.4", "--stroke", "300"]
 LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000"]

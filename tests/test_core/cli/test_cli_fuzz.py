@@ -26,6 +26,8 @@ from core.spec import Spec
 from cli_runner import shaper_in_process, shaper_process
 from output_checks import error_names, finite_csv, finite_json
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 FOLDER = tempfile.mkdtemp(prefix="shaper-fuzz-")
 GOOD_FILE = os.path.join(FOLDER, "good.json")
 ROD_FILE = os.path.join(FOLDER, "rod.json")

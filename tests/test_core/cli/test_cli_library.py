@@ -12,6 +12,8 @@ from core.io import load_design, save_design
 from core.spec import Spec
 from cli_runner import shaper
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 LOADS = ("--lever-mass", 20, "--lever-inertia", 1.1, "--ram-mass", 70, "--cut-force", 7000)
 
 

@@ -27,6 +27,8 @@ from core.spec import Spec
 from cli_runner import shaper, shaper_in_process
 from output_checks import finite_csv, finite_json, read_fifo_in_background
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 SEED = ["--crank", "100", "--K", "1.4", "--stroke", "300"]
 LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000"]
 

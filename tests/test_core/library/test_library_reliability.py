@@ -17,6 +17,8 @@ from core.spec import Spec
 from cli_runner import shaper
 from locations import DATA, ROOT, TESTS
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 WRITER = TESTS / "library_writer.py"
 ROOT = ROOT
 FIXTURE_V1 = DATA / "library-v1.sqlite"

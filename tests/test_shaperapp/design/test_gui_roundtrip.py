@@ -27,6 +27,8 @@ from shaperapp.design.model import DesignModel
 
 from cli_runner import shaper
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 DESIGN_FIELDS = ("crank", "time_ratio", "stroke", "frame", "lever", "guide_height", "rod_length", "rod_ratio")
 LOAD_FIELDS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N", "cut_height_mm",
                "idle_fraction", "delta", "lever_cg_mm")

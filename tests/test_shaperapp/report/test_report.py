@@ -12,6 +12,8 @@ import pytest
 from cli_runner import shaper
 from core.positions import display_values, number_text
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 DESIGN = ["--crank", "100", "--K", "1.4", "--stroke", "300", "--rod-ratio", "0.3"]
 SPEEDS = ["--rpm", "40", "60"]
 LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70",

@@ -26,7 +26,7 @@ from shaperapp.widgets import i18n
 
 from figure_checks import pixels
 
-pytestmark = pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm not installed")
+pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm not installed")]
 DPI = 50
 LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70, cut_force_N=7000,
                        cut_height_mm=80)

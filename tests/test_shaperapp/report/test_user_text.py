@@ -13,6 +13,8 @@ import pytest
 from cli_runner import shaper, shaper_in_process
 from core.io import FORMULA_LEADS, csv_text, snap_zeros, table_csv
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 SCRIPT = "<script>alert(1)</script>"
 FORMULA = '=HYPERLINK("http://x.example","y")'
 BOLD = "<b>T&amp;</b> “q”"

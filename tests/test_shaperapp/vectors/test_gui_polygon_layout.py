@@ -26,6 +26,8 @@ from shaperapp.window.main_window import MainWindow
 from paint_recorder import PaintRecorder, overlapping
 from layout_checks import probe
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70,
                        cut_force_N=7000, cut_height_mm=80)
 ANGLES = (0.0, 30.0, 90.0, 120.0, 210.0, 250.0, 300.0)      # 0 and 210: the limit positions (K 1.4)

@@ -29,6 +29,8 @@ from shaperapp.vectors.view import PolygonView
 import figure_checks as fc
 from gui_helpers import shown
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70, cut_force_N=7000)
 SPECS = {"block": Spec(), "rod": Spec(variant="rod", rod_input="ratio", rod_ratio=0.3)}
 SPEEDS = {2: [40.0, 60.0], 16: [float(20 + 5 * i) for i in range(16)]}

@@ -28,6 +28,8 @@ from shaperapp.window.main_window import MainWindow
 
 from hostile_files import VALID, build_case
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 SEED = int(os.environ.get("SHAPER_GUI_FUZZ_SEED", "20240611"))
 # 2000 actions took 9.5-12 s on the 2-core machine (ten runs, 24 Nov 2026), and 20000 took
 # 210 s beside a busy loop; SHAPER_GUI_FUZZ_ACTIONS runs more (e.g. 20000 before a release).

@@ -18,6 +18,8 @@ from shaperapp.window.main_window import MainWindow
 from shaperapp.window.state import STATE_VERSION
 from layout_checks import overlap, probe
 
+pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
+
 SIXTEEN = ",".join(str(20 + 5 * i) for i in range(16))
 SPEED_ROWS, FORCE_ROWS = 9, 7
 
