@@ -1,6 +1,6 @@
 """Speed targets of the core issue: measured here, reported in the README.
 
-Run with ``pytest benchmarks --benchmark-enable``; in the normal test run each
+Run with ``pytest benchmarks --benchmark-enable -n 0``; in the normal test run each
 benchmark executes once as a smoke test.
 """
 import shutil

@@ -1,6 +1,6 @@
 """Positions table (12 + 6 positions × 2 speeds, with forces) and the three polygons at one angle.
 
-Measure with: python -m pytest benchmarks/test_bench_deliverables.py --benchmark-enable -q
+Measure with: python -m pytest benchmarks/test_bench_deliverables.py --benchmark-enable -n 0 -q
 """
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """Joint forces for 3601 crank angles × 4 speeds; target median ≤ 5 ms per variant.
 
-Measure with: python -m pytest benchmarks/test_bench_dynamics.py --benchmark-enable -q
+Measure with: python -m pytest benchmarks/test_bench_dynamics.py --benchmark-enable -n 0 -q
 """
 from __future__ import annotations
 

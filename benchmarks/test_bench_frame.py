@@ -2,7 +2,7 @@
 
 Budget: ≤ 8 ms per frame so that 60 frames/s leave room for the plots, with the
 force arrows hidden (the default) and shown.
-Run: python -m pytest benchmarks/test_bench_frame.py --benchmark-enable -q
+Run: python -m pytest benchmarks/test_bench_frame.py --benchmark-enable -n 0 -q
 """
 from __future__ import annotations
 

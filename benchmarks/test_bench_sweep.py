@@ -1,7 +1,7 @@
 """Speed targets of the design-space sweep (issue 11): 10^5 designs' exact cycle figures in
 ≤ 2 s, and at least 100× faster than ``analyze`` in a loop.
 
-Run with ``pytest benchmarks --benchmark-enable -k sweep``; in the normal test
+Run with ``pytest benchmarks --benchmark-enable -n 0 -k sweep``; in the normal test
 run each benchmark executes once as a smoke test. The loop is measured on a
 subset (``LOOP``) and compared per design.
 """

@@ -4,7 +4,7 @@ number of designs or speeds. Target: about 200 MB at most for 10^6 designs at 16
 Each case runs the real command in a fresh process, which reports its own peak resident
 size (VmHWM) after the run; importing numpy and scipy alone is about 75 MB of it.
 The ordinary test run measures 5·10^4 and 10^5 designs at 1 and 16 speeds and holds the
-peak flat across them; ``--benchmark-enable`` reports the same figures as extra info.
+peak flat across them; ``--benchmark-enable -n 0`` reports the same figures as extra info.
 The whole 10^6 × 16 case (about a minute, 575 MB of CSV) was measured by hand with
 ``/usr/bin/time -v``; its figure and command are in the README's performance section.
 """

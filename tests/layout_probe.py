@@ -1,6 +1,6 @@
 """Open the real main window on a screen of a given size and report how it fits, as JSON.
 
-Run by tests/test_gui_layout.py in a subprocess, because the screen size is fixed when
+Run by tests/test_shaperapp/window/test_gui_layout.py in a subprocess, because the screen size is fixed when
 the QApplication starts: ``QT_QPA_PLATFORM=offscreen:configfile=screen.json``.
 
     python tests/layout_probe.py --settings S.ini --lang en --speeds 40,60 --speeds 20,25,...

@@ -338,7 +338,7 @@ def test_energy_curve_is_energy_bookkeeping(name):
         assert abs(summary.energy[i, -1]) < 1e-9 * swing     # back to the start
         assert s.mean_torque_N_m == pytest.approx(mean_torque, rel=1e-12)
         assert s.mean_power_W == pytest.approx(mean_torque * w, rel=1e-12)
-        # The samples' spread can only fall short of the exact ΔW_max (tests/test_energy_exact.py
+        # The samples' spread can only fall short of the exact ΔW_max (tests/test_core/test_energy_exact.py
         # checks it against quadrature), by at most the energy's slope times the step.
         step = phi[1] - phi[0]
         slope = np.abs(np.diff(expected)).max() / step
