@@ -1,4 +1,4 @@
-"""Speed targets of the core issue: measured here, reported in the README.
+"""Speed targets of the core issue: measured here, reported in docs/performance.md.
 
 Run with ``pytest benchmarks --benchmark-enable -n 0``; in the normal test run each
 benchmark executes once as a smoke test.

@@ -59,7 +59,7 @@ def test_input_to_all_views_updated(benchmark, window, tab, edit):
     front = window.plots if tab == "kinematics" else window.forces
     assert front.stack().is_current()
     # EDIT_BUDGET_S is not asserted: the shared 2-core machine varies by ±40 %; the
-    # measured medians are in the README's performance table.
+    # measured medians are in docs/performance.md.
 
 
 def test_animation_frame_whole_window(benchmark, window):
@@ -72,7 +72,7 @@ def test_animation_frame_whole_window(benchmark, window):
         QApplication.processEvents()
 
     benchmark(frame)
-    # FRAME_BUDGET_S: reported in the README (measured medians) rather than asserted, as
+    # FRAME_BUDGET_S: reported in docs/performance.md (measured medians) rather than asserted, as
     # the shared machine's load varies.
 
 

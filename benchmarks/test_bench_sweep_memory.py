@@ -6,7 +6,7 @@ size (VmHWM) after the run; importing numpy and scipy alone is about 75 MB of it
 The ordinary test run measures 5·10^4 and 10^5 designs at 1 and 16 speeds and holds the
 peak flat across them; ``--benchmark-enable -n 0`` reports the same figures as extra info.
 The whole 10^6 × 16 case (about a minute, 575 MB of CSV) was measured by hand with
-``/usr/bin/time -v``; its figure and command are in the README's performance section.
+``/usr/bin/time -v``; its figure and command are in docs/performance.md.
 """
 import subprocess
 import sys

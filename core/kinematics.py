@@ -6,7 +6,7 @@ acceleration ω² times a second derivative. So the cycle's *shape* (position
 and its first two φ-derivatives) is computed once, in closed form, and
 scaled per speed; nothing is differenced.
 
-Conventions (see README): φ = 0 at the limit position that begins the working
+Conventions (see README and docs/methods.md): φ = 0 at the limit position that begins the working
 stroke, increasing in the direction of rotation; the ram displacement is
 measured from its position at φ = 0 and is positive in the cutting direction;
 the lever angle ψ is measured from the line O4→O2, positive toward the

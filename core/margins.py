@@ -26,7 +26,7 @@ class Margin:
 
 
 def margins(design: Design) -> tuple[Margin, ...]:
-    """Every rule that applies to ``design`` (see README, Validation), in order."""
+    """Every rule that applies to ``design`` (see docs/methods.md, Validation), in order."""
     reach = design.frame + design.crank
     out = [Margin("time_ratio", design.time_ratio, MAX_TIME_RATIO,
                   MAX_TIME_RATIO - design.time_ratio, ""),

@@ -21,7 +21,7 @@ from .undo import Inputs
 
 # angles × speeds the whole window recomputes and redraws within about half a second:
 # 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
-# (README, Performance). core's own cap (core.kinematics) is far larger, for the CLI.
+# (docs/performance.md). core's own cap (core.kinematics) is far larger, for the CLI.
 MAX_GUI_SAMPLES = 60_000
 COMPUTE_ERRORS = (ArithmeticError, ValueError, RuntimeError, MemoryError)
 

@@ -45,7 +45,7 @@ def configure_plots() -> None:
     the user set it): Qt hands every fill taller than 96 rows (the plots' and the
     scheme's backgrounds and bands) to a thread pool and waits for it, and on a busy
     2-core machine the hand-off cost more than the fill: 6 ms of a 48 ms edit
-    (README, Performance). Call before the first paint; the pool is made then."""
+    (docs/performance.md). Call before the first paint; the pool is made then."""
     import os
 
     import pyqtgraph as pg

@@ -82,7 +82,7 @@ def test_stored_figures_are_analyze_and_summarize(lib):
 
 
 def test_seed003_figures_by_hand(lib):
-    """Block variant at 40 r/min: v_max = ω·L3·L1/(L2 ± L1) (README's hand check)."""
+    """Block variant at 40 r/min: v_max = ω·L3·L1/(L2 ± L1) (the hand check in docs/cli.md)."""
     lib.add("seed", loaded(Spec(), rpm=[40.0]))
     row = lib.query()[0]
     w = 40 * 2 * math.pi / 60

@@ -41,7 +41,7 @@ def test_catalogue_lists_every_source_string(tmp_path):
     sources = sorted(str(p) for p in (ROOT / "shaperapp").rglob("*.py"))
     subprocess.run(["pyside6-lupdate", *sources, "-ts", str(fresh)], check=True, capture_output=True)
     missing = set(messages(fresh)) - set(messages(TS))
-    assert missing == set(), "run the translation update described in the README"
+    assert missing == set(), "run the translation update described in docs/architecture.md"
 
 
 def test_compiled_catalogue_matches_source():
