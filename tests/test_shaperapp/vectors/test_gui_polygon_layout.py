@@ -114,3 +114,37 @@ def test_enlarge_keeps_a_typed_scale(qtbot, tmp_path):
         window.model.set_clean("")
         window.close()
         window.deleteLater()
+
+
+def test_png_export_at_a_limit_position_keeps_the_whole_drawing(qapp, tmp_path, monkeypatch):
+    """The export page was sized for a legend beside the drawing; at a limit position the
+    drawing is tall and narrow, the legend went below, and the drawing ran under the note
+    and the legend: its arrowheads were clipped off (seen comparing the PNG with the SVG).
+    The same polygon on a page with wide margins must show exactly as much of each colour."""
+    import numpy as np
+    from PySide6.QtGui import QImage
+
+    import shaperapp.vectors.export as export
+    from core.geometry import synthesize
+    from core.polygons import polygons
+    from shaperapp.vectors.paint import vector_colour
+
+    design = synthesize(100.0, 1.4, 300.0, rod_ratio=0.4)
+
+    def ink(path, colour):
+        image = QImage(str(path)).convertToFormat(QImage.Format.Format_RGB32)
+        raw = np.frombuffer(image.constBits(), np.uint8, image.sizeInBytes())
+        rgb = raw.reshape(image.height(), image.bytesPerLine())[:, :image.width() * 4]
+        rgb = rgb.reshape(image.height(), image.width(), 4)[..., 2::-1].astype(int)
+        target = np.array([colour.red(), colour.green(), colour.blue()])
+        return int((np.abs(rgb - target).max(axis=2) < 40).sum())
+
+    for phi in (0.0, 30.0):
+        polygon = polygons(design, phi, 40.0)["velocity"]
+        colour = vector_colour(polygon, 1)
+        export.export_polygon(str(tmp_path / "page.png"), polygon, 0.005)
+        with monkeypatch.context() as m:
+            m.setattr(export, "MARGIN_MM", 60.0)
+            export.export_polygon(str(tmp_path / "wide.png"), polygon, 0.005)
+        page, wide = ink(tmp_path / "page.png", colour), ink(tmp_path / "wide.png", colour)
+        assert page > 0 and abs(page - wide) <= 0.03 * wide, (phi, page, wide)
