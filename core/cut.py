@@ -83,12 +83,10 @@ def cut_window(d: Designs, idle_fraction: float,
     lo = np.where(missed, phi[last], phi[np.maximum(first - 1, 0)])
     hi = np.where(missed, end, np.minimum(phi[first], end))
     root = np.where(reached[..., 0], 0.0, end)                      # at or before φ = 0, or never
-    lengths = [np.broadcast_to(v, targets.shape) for v in
-               (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]
+    lengths = [np.broadcast_to(v, targets.shape) for v in d.lengths()]
 
     def travel(phi, target, *lengths):
-        one = Designs(*lengths[:4], lengths[4] if d.rod is not None else None, d.rod_side)
-        return shape(one, phi).ram_joint[0] - target
+        return shape(d.with_lengths(lengths), phi).ram_joint[0] - target
 
     if inner.any():
         root[inner] = bracket_root(travel, lo[inner], hi[inner],

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, Sequence
 
 import numpy as np
 
@@ -81,10 +81,19 @@ class Designs:
         values = [self.crank, self.frame, self.lever, self.guide]
         return values if self.rod is None else values + [self.rod]
 
+    def lengths(self) -> list[np.ndarray]:
+        """L1, L2, L3, guide height [, L4]: the arrays a vectorized root search carries as
+        its arguments and subsets as brackets close (see :meth:`with_lengths`)."""
+        return self._lengths()
+
+    def with_lengths(self, lengths: Sequence[np.ndarray]) -> "Designs":
+        """Designs of this variant and rod side from lengths in the order of :meth:`lengths`."""
+        crank, frame, lever, guide, *rod = lengths
+        return Designs(crank, frame, lever, guide, rod[0] if rod else None, self.rod_side)
+
     def _map(self, fun: Callable[[np.ndarray], np.ndarray]) -> "Designs":
         shape = self.shape
-        crank, frame, lever, guide, *rod = (fun(np.broadcast_to(v, shape)) for v in self._lengths())
-        return Designs(crank, frame, lever, guide, rod[0] if rod else None, self.rod_side)
+        return self.with_lengths([fun(np.broadcast_to(v, shape)) for v in self._lengths()])
 
     def take(self, index) -> "Designs":
         """The designs at ``index`` (an index array or boolean mask over the designs)."""

@@ -216,16 +216,12 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     at_ends = _energy(col, shape(col, ends), w2, mean[..., None], masses,
                       start).reshape(count * speeds, 2)
     top, bottom = np.fmax(top, at_ends.max(axis=-1)), np.fmin(bottom, at_ends.min(axis=-1))
-    lengths = [np.broadcast_to(v[:, None], (count, speeds)).reshape(-1) for v in
-               (d.crank, d.frame, d.lever, d.guide, d.crank if d.rod is None else d.rod)]
+    lengths = [np.broadcast_to(v[:, None], (count, speeds)).reshape(-1) for v in d.lengths()]
     flat_w2 = np.broadcast_to(w2[..., 0], (count, speeds)).reshape(-1)
     flat_mean = mean.reshape(-1)
 
-    def piece(lengths):
-        return Designs(*lengths[:4], lengths[4] if d.rod is not None else None, d.rod_side)
-
     def slope(phi, w2, mean, cutting, *lengths):
-        one = piece(lengths)
+        one = d.with_lengths(lengths)
         at = shape(one, phi)
         s, i = _torque_parts(one, at, masses)
         return s + w2 * i + cutting * cut * at.ram1 - mean
@@ -243,7 +239,7 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
         turn = np.mod(roots, 2.0 * math.pi)
         inside = (turn >= on[design]) & (turn <= off[design])
         keep = inside if cutting else ~inside
-        one = piece([v[owner] for v in lengths])
+        one = d.with_lengths([v[owner] for v in lengths])
         value = _energy(one, shape(one, roots), args[0], args[1], masses,
                         _stored(one, shape(one, np.zeros_like(roots)), masses))
         np.fmax.at(top, owner[keep], value[keep])
@@ -300,11 +296,10 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
     on, off = window
     cut = masses.cut_force_N * MM
     w2 = (omega ** 2)[None, :, None]
-    lengths = [v[:, None, None] for v in (d.crank, d.frame, d.lever, d.guide,
-                                          d.crank if d.rod is None else d.rod)]
+    lengths = [v[:, None, None] for v in d.lengths()]
 
     def torque(phi, w2, sign, cutting, *lengths):
-        one = Designs(*lengths[:4], lengths[4] if d.rod is not None else None, d.rod_side)
+        one = d.with_lengths(lengths)
         at = shape(one, phi)
         s, i = _torque_parts(one, at, masses)
         return sign * (s + w2 * i + cutting * cut * at.ram1)
