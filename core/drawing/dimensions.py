@@ -1,0 +1,83 @@
+"""Dimensions a CAD program keeps live: DIMENSION entities in a GB dimension style.
+
+A dimension written as lines and a text is a picture of a number; a DIMENSION
+entity keeps its definition points, so CAD measures it again (and updates it when
+the geometry is stretched). Every one carries a text like ``L1 = <>``: CAD puts
+its own measurement where ``<>`` stands, so the text cannot disagree with the
+geometry.
+
+Model space is drawn at 1:1 in mm and printed at a reduced scale; the style's
+``DIMSCALE`` is that scale's denominator (the CAD convention for dimensions in
+model space), so arrows and texts print at their standard sizes (text 5 mm after
+GB/T 14691, arrows 3.5 mm) whatever the size of the mechanism.
+"""
+from __future__ import annotations
+
+import math
+
+from ezdxf.document import Drawing
+
+from .dxf import DIMENSIONS, TEXT_STYLE
+
+DIMSTYLE = "GB_MM"
+DIM_TEXT_MM = 5.0            # text height on paper, GB/T 14691's series
+ARROW_MM = 3.5               # arrow length on paper (≥ 6d for d = 0.5 mm)
+DECIMALS = 2
+# Reductions of GB/T 14690 (1:1, 1:2, 1:2.5, 1:5 and each × 10ⁿ), smallest first.
+_REDUCTIONS = (1.0, 2.0, 2.5, 5.0)
+
+
+def reduction(extent_mm: tuple[float, float], room_mm: tuple[float, float]) -> float:
+    """The smallest standard reduction n (for 1:n) at which a drawing of ``extent_mm``
+    (width, height) fits into ``room_mm`` on paper."""
+    need = max(extent_mm[0] / room_mm[0], extent_mm[1] / room_mm[1], 1e-12)
+    decade = 10.0 ** math.floor(math.log10(need))
+    for step in (*_REDUCTIONS, 10.0):
+        n = step * decade
+        if n >= need * (1.0 - 1e-12):
+            return max(n, 1.0)
+    return 10.0 * decade  # pragma: no cover - the loop ends at 10·decade ≥ need
+
+
+def add_dimstyle(doc: Drawing, scale: float = 1.0) -> str:
+    """Add the GB dimension style (mm, 5 mm text, ``.`` as decimal sign, trailing zeros
+    dropped, text above the line and aligned with it) for a print at 1:``scale``."""
+    doc.dimstyles.new(DIMSTYLE, dxfattribs={
+        "dimscale": float(scale), "dimlfac": 1.0, "dimtxt": DIM_TEXT_MM, "dimasz": ARROW_MM,
+        "dimexe": 2.0, "dimexo": 0.0, "dimgap": 1.0, "dimdli": 7.0,
+        "dimtad": 1, "dimtih": 0, "dimtoh": 0, "dimjust": 0,
+        "dimdec": DECIMALS, "dimzin": 8, "dimdsep": ord("."), "dimlunit": 2,
+        "dimaunit": 0, "dimadec": DECIMALS, "dimazin": 2, "dimtxsty": TEXT_STYLE,
+    })
+    return DIMSTYLE
+
+
+_ON_LAYER = {"layer": DIMENSIONS}
+# Each dimension is rendered at once: its block is what CAD shows before it measures again.
+
+
+def aligned(msp, p1, p2, offset: float, name: str, up: bool = False) -> None:
+    """``name = |p1p2|`` measured along p1→p2, its line ``offset`` mm to the left of p1→p2
+    (with ``up``: on the upper side). The points are ordered so that the text reads
+    from below or from the right (GB/T 4458.4), never upside down."""
+    (x1, y1), (x2, y2) = (float(v) for v in p1[:2]), (float(v) for v in p2[:2])
+    if up:
+        offset = math.copysign(offset, x2 - x1)    # left of a rightward line is up
+    if not -60.0 < math.degrees(math.atan2(y2 - y1, x2 - x1)) <= 120.0:
+        (x1, y1), (x2, y2), offset = (x2, y2), (x1, y1), -offset
+    msp.add_aligned_dim(p1=(x1, y1), p2=(x2, y2), distance=float(offset), text=f"{name} = <>",
+                        dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()
+
+
+def linear(msp, p1, p2, base, angle_deg: float, name: str) -> None:
+    """``name`` = the distance of p1 and p2 along ``angle_deg`` (0 horizontal, 90 vertical),
+    its line through ``base``."""
+    msp.add_linear_dim(base=tuple(base), p1=tuple(p1), p2=tuple(p2), angle=angle_deg,
+                       text=f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()
+
+
+def angular(msp, center, p1, p2, base, name: str) -> None:
+    """``name`` = the angle at ``center`` from p1 to p2 (counter-clockwise), its arc
+    through ``base``."""
+    msp.add_angular_dim_3p(base=tuple(base), center=tuple(center), p1=tuple(p1), p2=tuple(p2),
+                           text=f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()
