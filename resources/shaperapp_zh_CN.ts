@@ -637,6 +637,10 @@
         <translation>无法保存 %1：%2</translation>
     </message>
     <message>
+        <source>Could not write %1: a scheme for CAD is written as DXF (.dxf)</source>
+        <translation>无法写入 %1：供 CAD 使用的机构简图以 DXF 格式 (.dxf) 保存</translation>
+    </message>
+    <message>
         <source>Could not write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -679,6 +683,14 @@
     <message>
         <source>Export forces to CSV</source>
         <translation>导出力分析为 CSV</translation>
+    </message>
+    <message>
+        <source>Export scheme as DXF</source>
+        <translation>导出机构简图为 DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawing (*.dxf)</source>
+        <translation>DXF 图形 (*.dxf)</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
@@ -1568,6 +1580,14 @@
     <message>
         <source>Save the mechanism drawing as an image</source>
         <translation>将机构简图保存为图像</translation>
+    </message>
+    <message>
+        <source>Export scheme as &amp;DXF…</source>
+        <translation>导出机构简图为 DXF(&amp;D)…</translation>
+    </message>
+    <message>
+        <source>The mechanism at the current crank angle for CAD: 1:1 in mm, with its dimensions</source>
+        <translation>当前曲柄转角下的机构，供 CAD 使用：1:1，单位 mm，带尺寸标注</translation>
     </message>
     <message>
         <source>Export &amp;report (PDF/HTML)…</source>

@@ -11,6 +11,8 @@ import os
 from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
+from core.drawing.dxf import DxfAuditError
+from core.drawing.scheme import write_scheme
 from core.dynamics_io import dynamics_csv
 from core.errors import DesignError, FileFormatError
 from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
@@ -80,6 +82,25 @@ class Document(QObject):
     def export_forces_csv_to(self, path: str) -> bool:
         """Torque, power and joint forces in the format of ``shaper dynamics --csv``."""
         return self._write(path, dynamics_csv(self._model.dynamics))
+
+    def export_scheme_dxf_to(self, path: str) -> bool:
+        """The mechanism at the current crank angle for CAD, as ``shaper drawing --content
+        scheme`` writes it. A name without a suffix gets ``.dxf``; another suffix is
+        refused (a DXF under a .png name would open nowhere)."""
+        suffix = os.path.splitext(path)[1]
+        if not suffix:
+            path += ".dxf"
+        elif suffix.lower() != ".dxf":
+            self.failed.emit(self.tr("Could not write %1: a scheme for CAD is written as DXF (.dxf)")
+                             .replace("%1", path))
+            return False
+        try:
+            write_scheme(self._model.design, self._model.crank_deg, path)
+        except (OSError, DxfAuditError) as exc:
+            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+            self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path).replace("%2", reason))
+            return False
+        return True
 
     def _write(self, path: str, text: str) -> bool:
         try:
@@ -192,6 +213,14 @@ class Document(QObject):
             return False
         path = self._csv_path(parent, self.tr("Export forces to CSV"), "forces.csv")
         return bool(path) and self.export_forces_csv_to(path)
+
+    def export_scheme_dxf_dialog(self, parent: QWidget) -> bool:
+        if not self.confirm_valid(parent, saving=False):
+            return False
+        start = os.path.join(self.last_dir(), "scheme.dxf")
+        path = file_dialogs.save_file_name(parent, self.tr("Export scheme as DXF"), start,
+                                           self.tr("DXF drawing (*.dxf)"))
+        return bool(path) and self.export_scheme_dxf_to(path)
 
     def _csv_path(self, parent: QWidget, title: str, name: str) -> str:
         start = os.path.join(self.last_dir(), name)

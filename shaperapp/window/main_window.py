@@ -116,6 +116,7 @@ class MainWindow(QMainWindow):
         self.act_plots_img = self._action(
             lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
+        self.act_scheme_dxf = self._action(lambda: d.export_scheme_dxf_dialog(self))
         self.act_report = self._action(self._export_report, "Ctrl+R")
         # Only tabs that draw plots can export them as an image, or fit them.
         self.tabs.currentChanged.connect(self._on_tab)
@@ -196,6 +197,8 @@ class MainWindow(QMainWindow):
              self.tr("Crank torque, power and joint forces, all speeds")),
             (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots of the current tab as an image")),
             (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
+            (self.act_scheme_dxf, self.tr("Export scheme as &DXF…"),
+             self.tr("The mechanism at the current crank angle for CAD: 1:1 in mm, with its dimensions")),
             (self.act_report, self.tr("Export &report (PDF/HTML)…"),
              self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
             (self.act_quit, self.tr("&Quit"), ""),
