@@ -185,7 +185,7 @@ def _run(args: argparse.Namespace) -> int:
     _application()
     from shaperapp.widgets import i18n
     from .content import Options, build
-    from .fonts import MissingFontError, report_font
+    from shaperapp.widgets.fonts import MissingFontError, report_font
     language = i18n.language_of(args.lang)
     i18n.set_language(language)
     try:
