@@ -686,6 +686,137 @@
     </message>
 </context>
 <context>
+    <name>Drawing</name>
+    <message>
+        <source>Design</source>
+        <translation>设计名称</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>比例</translation>
+    </message>
+    <message>
+        <source>Sheet</source>
+        <translation>张次</translation>
+    </message>
+    <message>
+        <source>Drawn</source>
+        <translation>制图</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>Checked</source>
+        <translation>审核</translation>
+    </message>
+    <message>
+        <source>Approved</source>
+        <translation>批准</translation>
+    </message>
+    <message>
+        <source>Motion analysis</source>
+        <translation>运动分析图</translation>
+    </message>
+    <message>
+        <source>Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})</source>
+        <translation>机构运动简图（{count} 个位置），μl = {mu} m/mm（{scale}）</translation>
+    </message>
+    <message>
+        <source>Ram displacement, velocity and acceleration, n = {rpm} r/min</source>
+        <translation>滑枕位移、速度、加速度线图，n = {rpm} r/min</translation>
+    </message>
+    <message>
+        <source>s/mm</source>
+        <translation>s/mm</translation>
+    </message>
+    <message>
+        <source>v/(m/s)</source>
+        <translation>v/(m/s)</translation>
+    </message>
+    <message>
+        <source>a/(m/s²)</source>
+        <translation>a/(m/s²)</translation>
+    </message>
+    <message>
+        <source>φ/(°)</source>
+        <translation>φ/(°)</translation>
+    </message>
+    <message>
+        <source>μs = {mu} m/mm</source>
+        <translation>μs = {mu} m/mm</translation>
+    </message>
+    <message>
+        <source>μv = {mu} (m/s)/mm</source>
+        <translation>μv = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>μa = {mu} (m/s²)/mm</source>
+        <translation>μa = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>μφ = {mu} °/mm</source>
+        <translation>μφ = {mu} °/mm</translation>
+    </message>
+    <message>
+        <source>Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm</source>
+        <translation>速度多边形，φ = {angle}°，μv = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm</source>
+        <translation>加速度多边形，φ = {angle}°，μa = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>Main dimensions</source>
+        <translation>主要尺寸</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Crank O2A, L1</source>
+        <translation>曲柄 O2A，L1</translation>
+    </message>
+    <message>
+        <source>Frame O2O4, L2</source>
+        <translation>机架 O2O4，L2</translation>
+    </message>
+    <message>
+        <source>Lever O4B, L3</source>
+        <translation>导杆 O4B，L3</translation>
+    </message>
+    <message>
+        <source>Rod BC, L4</source>
+        <translation>连杆 BC，L4</translation>
+    </message>
+    <message>
+        <source>Guide above O2, h</source>
+        <translation>导路距 O2 的高度 h</translation>
+    </message>
+    <message>
+        <source>Stroke H</source>
+        <translation>行程 H</translation>
+    </message>
+    <message>
+        <source>Time ratio K</source>
+        <translation>行程速比系数 K</translation>
+    </message>
+    <message>
+        <source>Extreme-position angle θ</source>
+        <translation>极位夹角 θ</translation>
+    </message>
+    <message>
+        <source>Crank speed n</source>
+        <translation>曲柄转速 n</translation>
+    </message>
+</context>
+<context>
     <name>ExploreView</name>
     <message>
         <source>Max pressure angle (°)</source>

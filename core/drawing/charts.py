@@ -20,6 +20,8 @@ from .sheet import Box, Item, Pair, Text, line, number_text
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
 TICK = 1.5
+# φ scales: round, and at most 1.25× the exact one so a chart fills most of its box.
+X_MANTISSAS = (1.0, 1.2, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 
 
 def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
@@ -39,23 +41,30 @@ def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
 
 
 def place_label(text: str, at: Pair, height: float, taken: list[Box],
-                preferred: Pair = (1.0, 1.0), gap: float = 1.5) -> Text:
+                preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
+                optional: bool = False) -> Text | None:
     """``text`` beside the point ``at``: the first of eight directions (starting with
-    ``preferred``) whose box meets none of ``taken``; then appends its box to ``taken``."""
-    px, py = preferred
-    start = math.atan2(py, px)
+    ``preferred``), on three rings, whose box meets none of ``taken`` and lies ``within``;
+    then appends its box to ``taken``. When no spot is free: None if ``optional``, else
+    the first spot."""
+    start = math.atan2(preferred[1], preferred[0])
     first = None
-    for k in range(16):
-        r = gap + (0.0 if k < 8 else height)
+    for k in range(24):
+        r = gap + (k // 8) * height
         angle = start + (k % 8) * math.pi / 4.0
         dx, dy = math.cos(angle), math.sin(angle)
         align = ("l" if dx > 0.3 else "r" if dx < -0.3 else "c") + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m")
         label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, align)
         box = label.box()
+        if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
+                                       and within[1] <= box[1] and box[3] <= within[3]):
+            continue
         first = first or (label, box)
         if not any(_meets(box, b) for b in taken):
             taken.append(box)
             return label
+    if optional or first is None:
+        return None
     taken.append(first[1])
     return first[0]
 
@@ -77,11 +86,12 @@ def polygon_extent(polygon: Polygon, scale: float) -> Box:
 
 
 def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.5,
-                  names: Mapping[str, str] | None = None, taken: list[Box] | None = None
-                  ) -> list[Item]:
+                  names: Mapping[str, str] | None = None, taken: list[Box] | None = None,
+                  within: Box | None = None) -> list[Item]:
     """The polygon drawn from ``pole`` at μ = ``scale`` (its unit per mm): every vector as an
     arrow from its tail point to its head point, absolute ones thick, the others thin, and
-    each point labelled (``names`` maps point keys to texts; default the keys)."""
+    each point labelled (``names`` maps point keys to texts; default the keys) clear of
+    ``taken`` and inside ``within``."""
     taken = [] if taken is None else taken
     at = {k: (pole[0] + x / scale, pole[1] + y / scale) for k, (x, y) in polygon.points.items()}
     items: list[Item] = []
@@ -96,7 +106,10 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
             continue
         away = np.asarray(p) - centre
         away = away if np.hypot(*away) > 1e-6 else np.array([1.0, 1.0])
-        items.append(place_label(",".join(name(k) for k in group), p, height, taken, tuple(away)))
+        label = place_label(",".join(name(k) for k in group), p, height, taken, tuple(away),
+                            within=within)
+        if label is not None:
+            items.append(label)
     return items
 
 
@@ -119,6 +132,8 @@ class Chart:
     x_scale: float            # x units per mm
     y_scale: float            # y units per mm
     origin: Pair              # paper point of (x[0], 0)
+    x_end: float              # paper x of the x axis' arrow tip
+    y_end: float              # paper y of the y axis' arrow tip
 
 
 def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_title: str,
@@ -131,7 +146,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     x0, y0, x1, y1 = box
     left = x0 + 6.0 * height
     span_x = float(x[-1] - x[0])
-    x_scale = nice_scale(span_x, x1 - left - 14.0, FINE_MANTISSAS)
+    x_scale = nice_scale(span_x, x1 - left - 14.0, X_MANTISSAS)
     ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves] + [[0.0]])
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
     room = (y1 - y0) - 3.0 * height - 6.0
@@ -168,7 +183,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
         items.append(line([(left, py), (left + span_x / x_scale, py)], CENTER))
     items.append(Text(y_title, (left + 1.5, y_hi), height, "lt"))
     items.append(Text(x_title, (x_end, zero + 1.5), height, "rb"))
-    return Chart(items, x_scale, y_scale, (left, zero))
+    return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi)
 
 
 def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> list[float]:

@@ -28,7 +28,8 @@ from core.positions import positions, special_angles
 from . import mechanism as mech
 from .charts import Curve, chart, place_label, polygon_extent, polygon_items, polygon_scale
 from .dxf import OUTLINE, THIN
-from .sheet import (Box, Item, Paper, Placement, Sheet, Text, TitleBlock, fit, frame_items,
+from .sheet import (Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped, fit, fitting_height,
+                    frame_items,
                     number_text, scale_text, standard_scale, table, title_block,
                     title_block_box)
 
@@ -84,9 +85,9 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
     mech_box = (bx0 + GAP, split_y + GAP, split_x - GAP, by1 - GAP - 2 * CAPTION)
     scale, place, mech_items = _mechanism(design, mech_box, angles, limits)
     items += mech_items
-    items.append(Text(lab["mechanism"].format(count=count, mu=number_text(scale / 1000.0),
-                                              scale=scale_text(scale)),
-                      ((mech_box[0] + mech_box[2]) / 2.0, by1 - GAP), CAPTION, "ct"))
+    items.append(caption(lab["mechanism"].format(count=count, mu=number_text(scale / 1000.0),
+                                                 scale=scale_text(scale)),
+                         ((mech_box[0] + mech_box[2]) / 2.0, by1 - GAP), mech_box[2] - mech_box[0]))
     motion = solve(design, np.radians(np.linspace(0.0, 360.0, 721)), [rpm])
     items += _curves(motion, (split_x + GAP, split_y + GAP, bx1 - GAP, by1 - GAP), angles,
                      where.number[numbered], lab, rpm)
@@ -103,6 +104,12 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                                             "approved")})
     items += title_block(paper, block)
     return MotionSheet(Sheet(paper, tuple(items)), scale, place, diagrams)
+
+
+def caption(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> Text:
+    """A drawing's caption hanging from ``top_centre``, as large as fits ``room`` (≤ ``largest``)."""
+    h = fitting_height(text, room, largest)
+    return Text(clipped(text, room, h), top_centre, h, "ct")
 
 
 def _default_diagrams(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
@@ -127,15 +134,19 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
         items += mech.links_at(design, float(phi), place, THIN, bodies=False)
     for phi in limits:
         items += mech.links_at(design, float(phi), place, OUTLINE)
-    items += mech.joint_labels(design, float(limits[0]), place, 5.0)
-    taken = [t.box() for t in items if isinstance(t, Text)]
+    taken: list[Box] = []
+    for label in mech.joint_labels(design, float(limits[0]), place, 5.0):
+        placed = place_label(label.text, label.position, label.height, taken, within=box,
+                             gap=0.0, optional=True)
+        items += [placed] if placed else []
     o2 = place([0.0, design.frame])
     pins = place(mech.joints(design, angles)["A"].T)
-    for k, p in enumerate(pins, start=1):
+    for k, p in enumerate(pins, start=1):      # a number with no free spot is left out
         out = p - o2
         spot = o2 + out * (1.0 + 5.0 / max(np.hypot(*out), 1e-9))
-        items.append(place_label(str(k), (float(spot[0]), float(spot[1])), 3.5, taken, tuple(out),
-                                 gap=0.5))
+        placed = place_label(str(k), (float(spot[0]), float(spot[1])), 3.5, taken, tuple(out),
+                             gap=0.5, within=box, optional=True)
+        items += [placed] if placed else []
     return scale, place, items
 
 
@@ -143,23 +154,23 @@ def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
             lab: Mapping[str, str], rpm: float) -> list[Item]:
     """s, v and a over φ in three panels on one φ scale, stacked in ``box``."""
     x0, y0, x1, y1 = box
-    items: list[Item] = [Text(lab["curves"].format(rpm=number_text(rpm)), ((x0 + x1) / 2.0, y1),
-                              CAPTION, "ct")]
+    items: list[Item] = [caption(lab["curves"].format(rpm=number_text(rpm)), ((x0 + x1) / 2.0, y1),
+                                 x1 - x0)]
     top = y1 - 2 * CAPTION
     panel = (top - y0) / 3.0
     phi = np.degrees(motion.crank_angle)
     ticks = [(float(a), str(int(n))) for a, n in zip(angles, numbers)]
     series = (("s", "mu_s", motion.ram_x, 1e-3), ("v", "mu_v", motion.ram_v[0], 1.0),
               ("a", "mu_a", motion.ram_a[0], 1.0))
-    x_scale = None
     for k, (key, mu_key, y, unit) in enumerate(series):
         pbox = (x0, top - (k + 1) * panel, x1, top - k * panel - (0 if k == 0 else 0))
         drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks)
         items += drawn.items
         items.append(Text(lab[mu_key].format(mu=number_text(drawn.y_scale * unit)),
-                          (x1, pbox[3] - 1.0), 3.5, "rt"))
-        x_scale = drawn.x_scale
-    items.append(Text(lab["mu_phi"].format(mu=number_text(x_scale)), (x1, top - panel + 5.0), 3.5, "rb"))
+                          (drawn.x_end, drawn.y_end), 3.5, "rt"))
+        if k == 0:
+            items.append(Text(lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
+                              (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
     return items
 
 
@@ -176,15 +187,14 @@ def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
         mu = polygon_scale(polys, room)
         for c, (angle, poly) in enumerate(zip(diagrams, polys)):
             cell = (x0 + c * cw, y1 - (r + 1) * ch, x0 + (c + 1) * cw, y1 - r * ch)
-            caption = Text(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
-                           ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), 3.5, "ct")
-            if caption.width > cw - 4.0:
-                caption = Text(caption.text, caption.position, 2.5, "ct")
+            title = caption(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
+                            ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)
             ex = polygon_extent(poly, mu)
             cx, cy = (cell[0] + cell[2]) / 2.0, (cell[1] + cell[3] - 2 * CAPTION) / 2.0
             pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
-            items.append(caption)
-            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [caption.box()])
+            items.append(title)
+            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [title.box()],
+                                   within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]))
     return items
 
 

@@ -306,8 +306,9 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
     for k in range(1, TITLE_ROWS):
         items.append(line([(x0, row_y[k]), (cols[4], row_y[k])], THIN))
     items.append(line([(cols[4], row_y[2]), (x1, row_y[2])], THIN))
-    for x in cols[1:4]:
-        items.append(line([(x, y0), (x, y1)], THIN))
+    items.append(line([(cols[1], y0), (cols[1], y1)], THIN))
+    for x in cols[2:4]:                                       # the name's cell spans them
+        items.append(line([(x, y0), (x, row_y[1])], THIN))
     items.append(line([(cols[4], y0), (cols[4], y1)], OUTLINE))
     cells = [(0, lab("design"), block.design, None, None),
              (1, lab("scale"), block.scale, lab("sheet"), block.sheet),

@@ -8,31 +8,30 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication
 
 
-def _t(text: str) -> str:
-    return QCoreApplication.translate("Drawing", text)
+translate = QCoreApplication.translate   # lupdate extracts translate("Drawing", "…")
 
 
 def title_labels() -> dict[str, str]:
     """The title block's labels (GB/T 10609.1)."""
-    return {"design": _t("Design"), "scale": _t("Scale"), "sheet": _t("Sheet"),
-            "drawn": _t("Drawn"), "date": _t("Date"), "checked": _t("Checked"),
-            "approved": _t("Approved")}
+    return {"design": translate("Drawing", "Design"), "scale": translate("Drawing", "Scale"), "sheet": translate("Drawing", "Sheet"),
+            "drawn": translate("Drawing", "Drawn"), "date": translate("Drawing", "Date"), "checked": translate("Drawing", "Checked"),
+            "approved": translate("Drawing", "Approved")}
 
 
 def motion_labels() -> dict[str, str]:
     """Every text of the motion sheet (``core.drawing.motion.ENGLISH``'s keys)."""
     return {
         **title_labels(),
-        "title": _t("Motion analysis"),
-        "mechanism": _t("Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})"),
-        "curves": _t("Ram displacement, velocity and acceleration, n = {rpm} r/min"),
-        "s": _t("s/mm"), "v": _t("v/(m/s)"), "a": _t("a/(m/s²)"), "phi": _t("φ/(°)"),
-        "mu_s": _t("μs = {mu} m/mm"), "mu_v": _t("μv = {mu} (m/s)/mm"),
-        "mu_a": _t("μa = {mu} (m/s²)/mm"), "mu_phi": _t("μφ = {mu} °/mm"),
-        "velocity": _t("Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm"),
-        "acceleration": _t("Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm"),
-        "dimensions": _t("Main dimensions"), "quantity": _t("Quantity"), "value": _t("Value"),
-        "L1": _t("Crank O2A, L1"), "L2": _t("Frame O2O4, L2"), "L3": _t("Lever O4B, L3"),
-        "L4": _t("Rod BC, L4"), "h": _t("Guide above O2, h"), "H": _t("Stroke H"),
-        "K": _t("Time ratio K"), "theta": _t("Extreme-position angle θ"), "n": _t("Crank speed n"),
+        "title": translate("Drawing", "Motion analysis"),
+        "mechanism": translate("Drawing", "Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})"),
+        "curves": translate("Drawing", "Ram displacement, velocity and acceleration, n = {rpm} r/min"),
+        "s": translate("Drawing", "s/mm"), "v": translate("Drawing", "v/(m/s)"), "a": translate("Drawing", "a/(m/s²)"), "phi": translate("Drawing", "φ/(°)"),
+        "mu_s": translate("Drawing", "μs = {mu} m/mm"), "mu_v": translate("Drawing", "μv = {mu} (m/s)/mm"),
+        "mu_a": translate("Drawing", "μa = {mu} (m/s²)/mm"), "mu_phi": translate("Drawing", "μφ = {mu} °/mm"),
+        "velocity": translate("Drawing", "Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm"),
+        "acceleration": translate("Drawing", "Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm"),
+        "dimensions": translate("Drawing", "Main dimensions"), "quantity": translate("Drawing", "Quantity"), "value": translate("Drawing", "Value"),
+        "L1": translate("Drawing", "Crank O2A, L1"), "L2": translate("Drawing", "Frame O2O4, L2"), "L3": translate("Drawing", "Lever O4B, L3"),
+        "L4": translate("Drawing", "Rod BC, L4"), "h": translate("Drawing", "Guide above O2, h"), "H": translate("Drawing", "Stroke H"),
+        "K": translate("Drawing", "Time ratio K"), "theta": translate("Drawing", "Extreme-position angle θ"), "n": translate("Drawing", "Crank speed n"),
     }
