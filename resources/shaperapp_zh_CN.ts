@@ -817,6 +817,77 @@
     </message>
 </context>
 <context>
+    <name>DrawingSheetDialog</name>
+    <message>
+        <source>Export drawing sheet</source>
+        <translation>导出图纸</translation>
+    </message>
+    <message>
+        <source>Motion analysis</source>
+        <translation>运动分析图</translation>
+    </message>
+    <message>
+        <source>Paper:</source>
+        <translation>图幅：</translation>
+    </message>
+    <message>
+        <source>Content:</source>
+        <translation>内容：</translation>
+    </message>
+    <message>
+        <source>Positions:</source>
+        <translation>位置数：</translation>
+    </message>
+    <message>
+        <source>Polygons at φ (working stroke):</source>
+        <translation>多边形位置 φ（工作行程）：</translation>
+    </message>
+    <message>
+        <source>Polygons at φ (return stroke):</source>
+        <translation>多边形位置 φ（回程）：</translation>
+    </message>
+    <message>
+        <source>Design name:</source>
+        <translation>设计名称：</translation>
+    </message>
+    <message>
+        <source>Drawn by:</source>
+        <translation>制图：</translation>
+    </message>
+    <message>
+        <source>School:</source>
+        <translation>学校：</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>日期：</translation>
+    </message>
+    <message>
+        <source>No font with Chinese characters is installed: install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>
+        <translation>未安装含中文字形的字体：请安装一个（Debian/Ubuntu 上为 fonts-noto-cjk），或把语言切换为英文。</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>SVG image (*.svg)</source>
+        <translation>SVG 图像 (*.svg)</translation>
+    </message>
+    <message>
+        <source>DXF drawing (*.dxf)</source>
+        <translation>DXF 图形 (*.dxf)</translation>
+    </message>
+    <message>
+        <source>A drawing sheet is written as PDF (.pdf), SVG (.svg) or DXF (.dxf); %1 is none of them. Nothing was written.</source>
+        <translation>图纸只能保存为 PDF (.pdf)、SVG (.svg) 或 DXF (.dxf)；%1 都不是。未写入任何文件。</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>ExploreView</name>
     <message>
         <source>Max pressure angle (°)</source>
@@ -1707,6 +1778,14 @@
     <message>
         <source>The design report: dimensions, positions table, polygons, forces, flywheel</source>
         <translation>设计说明书：尺寸、位置表、矢量多边形、力分析、飞轮</translation>
+    </message>
+    <message>
+        <source>Export &amp;drawing sheet (PDF/SVG/DXF)…</source>
+        <translation>导出图纸(&amp;D)（PDF/SVG/DXF）…</translation>
+    </message>
+    <message>
+        <source>The course design's drawing sheet on A0–A3 paper, with a preview</source>
+        <translation>课程设计图纸，A0–A3 图幅，带预览</translation>
     </message>
     <message>
         <source>&amp;Quit</source>

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 
+from ezdxf import zoom
 from ezdxf.document import Drawing
 from ezdxf.enums import TextEntityAlignment
 
@@ -27,10 +28,8 @@ def sheet_document(sheet: Sheet) -> Drawing:
     doc = new_document()
     msp = doc.modelspace()
     w, h = sheet.paper.width, sheet.paper.height
-    doc.header["$EXTMIN"] = (0.0, 0.0, 0.0)
-    doc.header["$EXTMAX"] = (w, h, 0.0)
-    doc.header["$LIMMIN"] = (0.0, 0.0)
-    doc.header["$LIMMAX"] = (w, h)
+    layout = msp.dxf_layout.dxf          # the limits ezdxf writes to the header: the paper
+    layout.limmin, layout.limmax = (0.0, 0.0), (w, h)
     for item in sheet.items:
         attribs = {"layer": item.layer}
         if isinstance(item, Polyline):
@@ -45,6 +44,7 @@ def sheet_document(sheet: Sheet) -> Drawing:
             text = msp.add_text(item.text, height=item.height, rotation=item.rotation,
                                 dxfattribs={**attribs, "style": TEXT_STYLE})
             text.set_placement(item.position, align=ALIGNMENTS[item.align])
+    zoom.window(msp, (0.0, 0.0), (w, h))   # CAD opens on the whole sheet
     return doc
 
 

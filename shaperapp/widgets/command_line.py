@@ -23,16 +23,19 @@ def cover_text(option: str, value: str | None) -> str:
     return value.strip()
 
 
+def design_file_name(path: str) -> str:
+    """A design file's name without its types (.json, .shaper): what titles call the design."""
+    name = Path(path).name
+    for suffix in (".json", ".shaper"):
+        name = name[: -len(suffix)] if name.endswith(suffix) else name
+    return name
+
+
 def design_name(args: argparse.Namespace) -> str:
-    """--title, else the design file's name without .json/.shaper, else ''."""
+    """--title, else the design file's name, else ''."""
     if args.title:
         return args.title
-    if args.design:
-        name = Path(args.design).name
-        for suffix in (".json", ".shaper"):
-            name = name[: -len(suffix)] if name.endswith(suffix) else name
-        return name
-    return ""
+    return design_file_name(args.design) if args.design else ""
 
 
 def ensure_headless() -> None:
