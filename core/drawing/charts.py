@@ -42,19 +42,20 @@ def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
 
 def place_label(text: str, at: Pair, height: float, taken: list[Box],
                 preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
-                optional: bool = False) -> Text | None:
+                optional: bool = False, align: str | None = None) -> Text | None:
     """``text`` beside the point ``at``: the first of eight directions (starting with
     ``preferred``), on three rings, whose box meets none of ``taken`` and lies ``within``;
     then appends its box to ``taken``. When no spot is free: None if ``optional``, else
-    the first spot."""
+    the first spot. ``align`` fixes the alignment (default: away from the point)."""
     start = math.atan2(preferred[1], preferred[0])
     first = None
     for k in range(24):
         r = gap + (k // 8) * height
         angle = start + (k % 8) * math.pi / 4.0
         dx, dy = math.cos(angle), math.sin(angle)
-        align = ("l" if dx > 0.3 else "r" if dx < -0.3 else "c") + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m")
-        label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, align)
+        side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
+                         + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
+        label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, side)
         box = label.box()
         if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
                                        and within[1] <= box[1] and box[3] <= within[3]):

@@ -152,14 +152,29 @@ def tool_path(design: Design, where: Placement, crank_deg: np.ndarray) -> list[I
 
 
 def joint_labels(design: Design, crank_deg: float, where: Placement, height: float = 5.0) -> list[Text]:
-    """O2, O4, A, B, C (rod variant) beside their joints at one crank angle, on the side
-    away from the links."""
+    """O2, O4, A, B, C (rod variant) beside their joints at one crank angle: each on the
+    side, of eight, whose spot is farthest from the links and the guide line there."""
     j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
-    gap = 2.5 + height / 2.0
-    along = (j["B"] - j["O4"]) / np.hypot(*(j["B"] - j["O4"]))
-    across = np.array([along[1], -along[0]])
-    spots = {"O₂": j["O2"] + np.array([-gap - 2 * height, 0.0]), "O₄": j["O4"] + np.array([gap + height, 0.0]),
-             "A": j["A"] - (gap + 3.0) * across, "B": j["B"] + np.array([-gap - height, gap + height])}
+    segments = [(j["O2"], j["A"]), (j["O4"], j["B"]),
+                (j["C"] - [RAM[0], 0.0], j["C"] + [RAM[0] + TOOL_AHEAD, 0.0])]
     if design.rod is not None:
-        spots["C"] = j["C"] + np.array([0.0, -RAM[1] / 2 - gap - 1.0])
-    return [Text(name, (float(p[0]), float(p[1])), height, "cm") for name, p in spots.items()]
+        segments.append((j["B"], j["C"]))
+    names = {"O2": "O₂", "O4": "O₄", "A": "A", "B": "B"}
+    if design.rod is not None:
+        names["C"] = "C"
+    reach = 3.5 + 1.2 * height
+    labels = []
+    for key, text in names.items():
+        p = j[key]
+        spots = [p + reach * np.array([math.cos(a), math.sin(a)])
+                 for a in np.radians(np.arange(0.0, 360.0, 45.0))]
+        best = max(spots, key=lambda q: min(_distance(q, s0, s1) for s0, s1 in segments))
+        labels.append(Text(text, (float(best[0]), float(best[1])), height, "cm"))
+    return labels
+
+
+def _distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    """From point ``p`` to the segment ``a``–``b``."""
+    d = b - a
+    t = float(np.clip(np.dot(p - a, d) / max(float(np.dot(d, d)), 1e-12), 0.0, 1.0))
+    return float(np.hypot(*(p - a - t * d)))

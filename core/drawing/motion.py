@@ -137,7 +137,7 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     taken: list[Box] = []
     for label in mech.joint_labels(design, float(limits[0]), place, 5.0):
         placed = place_label(label.text, label.position, label.height, taken, within=box,
-                             gap=0.0, optional=True)
+                             gap=0.0, optional=True, align="cm")
         items += [placed] if placed else []
     o2 = place([0.0, design.frame])
     pins = place(mech.joints(design, angles)["A"].T)
