@@ -10,16 +10,13 @@ import argparse
 import datetime
 from pathlib import Path
 
-from core.cli.cmd_table import masses_or_none
-from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
-                             number, number_list, rpms_from_args, spec_from_args)
+from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
 from core.cli.output import OutputError
 from core.drawing.sheet import PAPERS
-from core.errors import DesignError
-from core.kinematics import check_rpms
-from core.positions import DEFAULT_COUNT, check_count, check_extra
+from core.positions import DEFAULT_COUNT, check_count
 
-from shaperapp.widgets.command_line import application, cover_text, design_name, ensure_headless
+from shaperapp.widgets.command_line import (check_output_folder, cover_text, design_name,
+                                            diagram_angles, inputs_from_args, start_qt)
 
 from .content import CONTENTS, SHEET_SUFFIXES, SheetChoice
 
@@ -80,12 +77,7 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
     if args.content != "motion":
         raise UsageError(f"--content {args.content}: not available yet; use --content motion")
     count = check_count(number("positions", args.positions))
-    diagrams = None
-    if args.diagrams is not None:
-        values = check_extra(number_list("diagrams", args.diagrams))
-        if values.size != 2:
-            raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
-        diagrams = (float(values[0]), float(values[1]))
+    diagrams = diagram_angles(args)
     date = cover_text("--date", args.date) or datetime.date.today().isoformat()
     return SheetChoice(args.content, paper, count, diagrams,
                        cover_text("--title", design_name(args)), cover_text("--drawn-by", args.drawn_by),
@@ -93,31 +85,14 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
 
 
 def run(args: argparse.Namespace) -> int:
-    spec = spec_from_args(args)
-    design = spec.design()
-    rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
-    masses = masses_or_none(args, design)
+    spec, rpms, masses = inputs_from_args(args)
     choice = choice_from_args(args)
     suffix = sheet_suffix(args.output)
     target = Path(args.output)
-    if not target.parent.is_dir():
-        raise OutputError(f"--output: cannot write {target}: no such directory")
-    if target.is_dir():
-        raise OutputError(f"--output: cannot write {target}: it is a folder")
-
-    ensure_headless()
-    application()
-    from shaperapp.widgets import i18n
-    from shaperapp.widgets.fonts import MissingFontError, report_font
+    check_output_folder(args.output)
+    language = start_qt(args.lang, needs_font=suffix != ".dxf")
     from .content import build_sheet
     from .render import write_sheet
-    language = i18n.language_of(args.lang)
-    i18n.set_language(language)
-    if suffix != ".dxf":
-        try:
-            report_font(language)
-        except MissingFontError as exc:
-            raise UsageError(f"--lang {args.lang}: {exc}") from None
     sheet = build_sheet(spec, rpms, masses, choice)
     try:
         write_sheet(sheet, str(target), language, choice.design_name)

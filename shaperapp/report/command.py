@@ -14,18 +14,15 @@ from pathlib import Path
 from core.atomic import atomic_write
 from core.cli.cmd_library import library_failure
 from core.cli.cmd_library_compare import load_candidates
-from core.cli.cmd_table import masses_or_none
-from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
-                             number, number_list, rpms_from_args, spec_from_args)
+from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
 from core.cli.output import OutputError
 from core.compare import MAX_DESIGNS, Candidate
-from core.errors import DesignError
-from core.kinematics import check_rpms
 from core.library.store import ENV_VAR, LibraryError
-from core.positions import DEFAULT_COUNT, check_count, check_extra
+from core.positions import DEFAULT_COUNT, check_count
 
-from shaperapp.widgets.command_line import (MAX_TEXT, application, cover_text,  # noqa: F401
-                                            design_name, ensure_headless)
+from shaperapp.widgets.command_line import (MAX_TEXT, check_output_folder, cover_text,  # noqa: F401
+                                            design_name, diagram_angles, inputs_from_args,
+                                            start_qt)
 
 HELP = "write the design report (A4 PDF, or HTML)"
 DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
@@ -109,17 +106,9 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    spec = spec_from_args(args)
-    design = spec.design()
-    rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
-    masses = masses_or_none(args, design)
+    spec, rpms, masses = inputs_from_args(args)
     count = check_count(number("positions", args.positions))
-    diagrams = None
-    if args.diagrams is not None:
-        values = check_extra(number_list("diagrams", args.diagrams))
-        if values.size != 2:
-            raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
-        diagrams = (float(values[0]), float(values[1]))
+    diagrams = diagram_angles(args)
     others = comparison_candidates(args)
     cover, date = cover_from_args(args)
     title = cover_text("--title", args.title)
@@ -128,22 +117,9 @@ def _run(args: argparse.Namespace) -> int:
         kind = report_kind(args.output, html=args.html)
     except ValueError as exc:
         raise OutputError(f"--output: {exc}") from None
-    if not target.parent.is_dir():
-        raise OutputError(f"--output: cannot write {target}: no such directory")
-    if target.is_dir():
-        raise OutputError(f"--output: cannot write {target}: it is a folder")
-
-    ensure_headless()
-    application()
-    from shaperapp.widgets import i18n
+    check_output_folder(args.output)
+    language = start_qt(args.lang)
     from .content import Options, build
-    from shaperapp.widgets.fonts import MissingFontError, report_font
-    language = i18n.language_of(args.lang)
-    i18n.set_language(language)
-    try:
-        report_font(language)
-    except MissingFontError as exc:
-        raise UsageError(f"--lang {args.lang}: {exc}") from None
     from .blocks import Cover
     report = build(spec, rpms, masses, title or design_name(args), date, language,
                    Options(count, diagrams, tuple(others), Cover(**cover)))

@@ -61,3 +61,54 @@ def application():
     configure_plots()
     qInstallMessageHandler(_quiet)
     return QApplication.instance() or QApplication(sys.argv[:1])
+
+
+def inputs_from_args(args: argparse.Namespace):
+    """The design's inputs, its speeds and its loads (None when none were given), checked."""
+    from core.cli.cmd_table import masses_or_none
+    from core.cli.common import rpms_from_args, spec_from_args
+    from core.kinematics import check_rpms
+    spec = spec_from_args(args)
+    design = spec.design()                  # its error first, as every command reports it
+    rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
+    return spec, rpms, masses_or_none(args, design)
+
+
+def diagram_angles(args: argparse.Namespace) -> tuple[float, float] | None:
+    """--diagrams A,B as two crank angles in degrees, or None when not given."""
+    from core.cli.common import number_list
+    from core.errors import DesignError
+    from core.positions import check_extra
+    if args.diagrams is None:
+        return None
+    values = check_extra(number_list("diagrams", args.diagrams))
+    if values.size != 2:
+        raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
+    return float(values[0]), float(values[1])
+
+
+def check_output_folder(path: str) -> None:
+    """OutputError naming --output when ``path``'s folder is missing or ``path`` is a folder."""
+    from core.cli.output import OutputError
+    target = Path(path)
+    if not target.parent.is_dir():
+        raise OutputError(f"--output: cannot write {target}: no such directory")
+    if target.is_dir():
+        raise OutputError(f"--output: cannot write {target}: it is a folder")
+
+
+def start_qt(lang: str, needs_font: bool = True) -> str:
+    """A headless application in the language of --lang; returns that language. With
+    ``needs_font``, UsageError naming --lang when no font can write it."""
+    ensure_headless()
+    application()
+    from shaperapp.widgets import i18n
+    from shaperapp.widgets.fonts import MissingFontError, report_font
+    language = i18n.language_of(lang)
+    i18n.set_language(language)
+    if needs_font:
+        try:
+            report_font(language)
+        except MissingFontError as exc:
+            raise UsageError(f"--lang {lang}: {exc}") from None
+    return language
