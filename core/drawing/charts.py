@@ -42,14 +42,14 @@ def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
 
 def place_label(text: str, at: Pair, height: float, taken: list[Box],
                 preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
-                optional: bool = False, align: str | None = None) -> Text | None:
+                optional: bool = False, align: str | None = None, rings: int = 3) -> Text | None:
     """``text`` beside the point ``at``: the first of eight directions (starting with
-    ``preferred``), on three rings, whose box meets none of ``taken`` and lies ``within``;
+    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of ``taken`` and lies ``within``;
     then appends its box to ``taken``. When no spot is free: None if ``optional``, else
     the first spot. ``align`` fixes the alignment (default: away from the point)."""
     start = math.atan2(preferred[1], preferred[0])
     first = None
-    for k in range(24):
+    for k in range(8 * rings):
         r = gap + (k // 8) * height
         angle = start + (k % 8) * math.pi / 4.0
         dx, dy = math.cos(angle), math.sin(angle)
@@ -108,7 +108,7 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
         away = np.asarray(p) - centre
         away = away if np.hypot(*away) > 1e-6 else np.array([1.0, 1.0])
         label = place_label(",".join(name(k) for k in group), p, height, taken, tuple(away),
-                            within=within)
+                            within=within, rings=5, optional=True)   # crowded: left out
         if label is not None:
             items.append(label)
     return items

@@ -28,8 +28,8 @@ from core.positions import positions, special_angles
 from . import mechanism as mech
 from .charts import Curve, chart, place_label, polygon_extent, polygon_items, polygon_scale
 from .dxf import OUTLINE, THIN
-from .sheet import (Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped, fit, fitting_height,
-                    frame_items,
+from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text,
+                    TitleBlock, clipped, fit, fitting_height, frame_items,
                     number_text, scale_text, standard_scale, table, title_block,
                     title_block_box)
 
@@ -64,6 +64,9 @@ class MotionSheet:
     scale: float              # the mechanism's reduction 1:scale
     placement: Placement      # model mm → paper mm of the mechanism
     diagram_deg: tuple[float, float]
+    areas: dict[str, tuple[Box, tuple[Item, ...]]]
+    """Each drawing's area on the paper and its items: the areas do not overlap, and
+    each drawing stays inside its own."""
 
 
 def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
@@ -80,36 +83,40 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
     special = special_angles(design, idle_fraction)
     limits = (special["limit_work_start"], special["limit_work_end"])
     diagrams = diagram_deg or _default_diagrams(angles, limits)
+    areas: dict[str, tuple[Box, tuple[Item, ...]]] = {}
 
-    items: list[Item] = frame_items(paper)
-    mech_box = (bx0 + GAP, split_y + GAP, split_x - GAP, by1 - GAP - 2 * CAPTION)
+    mech_area = (bx0 + GAP, split_y + GAP, split_x - GAP, by1 - GAP)
+    mech_box = mech_area[:3] + (mech_area[3] - 2 * CAPTION,)
     scale, place, mech_items = _mechanism(design, mech_box, angles, limits)
-    items += mech_items
-    items.append(caption(lab["mechanism"].format(count=count, mu=number_text(scale / 1000.0),
-                                                 scale=scale_text(scale)),
-                         ((mech_box[0] + mech_box[2]) / 2.0, by1 - GAP), mech_box[2] - mech_box[0]))
+    mech_items.append(caption(lab["mechanism"].format(count=count, mu=number_text(scale / 1000.0),
+                                                      scale=scale_text(scale)),
+                              ((mech_box[0] + mech_box[2]) / 2.0, mech_area[3]), mech_box[2] - mech_box[0]))
+    areas["mechanism"] = (mech_area, tuple(mech_items))
     motion = solve(design, np.radians(np.linspace(0.0, 360.0, 721)), [rpm])
-    items += _curves(motion, (split_x + GAP, split_y + GAP, bx1 - GAP, by1 - GAP), angles,
-                     where.number[numbered], lab, rpm)
-    table_box_top = title_block_box(paper)[3] + GAP + TABLE_ROW * (_dimension_rows(design, rpm, lab).__len__() + 1)
-    items += _polygons(design, rpm, diagrams, (bx0 + GAP, by0 + GAP, bx1 - 180.0 - 2 * GAP, split_y - GAP),
-                       lab)
-    items += table((bx1 - 180.0, table_box_top), (120.0, 60.0),
-                   [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab),
-                   TABLE_ROW, 3.5, aligns="lc")
-    block = block or TitleBlock(lab["title"], "", scale_text(scale), "1/1")
+    curves_area = (split_x + GAP, split_y + GAP, bx1 - GAP, by1 - GAP)
+    areas["curves"] = (curves_area, tuple(_curves(motion, curves_area, angles, where.number[numbered],
+                                                  lab, rpm)))
+    polygons_area = (bx0 + GAP, by0 + GAP, bx1 - TITLE_WIDTH - 2 * GAP, split_y - GAP)
+    areas["polygons"] = (polygons_area, tuple(_polygons(design, rpm, diagrams, polygons_area, lab)))
+    rows = [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab)
+    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(rows)
+    areas["dimensions"] = ((bx1 - TITLE_WIDTH, table_top - TABLE_ROW * len(rows), bx1, table_top),
+                           tuple(table((bx1 - TITLE_WIDTH, table_top), (120.0, 60.0), rows,
+                                       TABLE_ROW, 3.5, aligns="lc")))
+    block = block or TitleBlock(lab["title"], "", "", "1/1")
     block = TitleBlock(block.title or lab["title"], block.design, scale_text(scale), block.sheet,
                        block.drawn, block.date, block.school,
-                       {k: lab[k] for k in ("design", "scale", "sheet", "drawn", "date", "checked",
-                                            "approved")})
-    items += title_block(paper, block)
-    return MotionSheet(Sheet(paper, tuple(items)), scale, place, diagrams)
+                       {k: lab[k] for k in TITLE_LABEL_KEYS})
+    areas["title"] = (title_block_box(paper), tuple(title_block(paper, block)))
+    items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
+    return MotionSheet(Sheet(paper, tuple(items)), scale, place, diagrams, areas)
 
 
 def caption(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> Text:
     """A drawing's caption hanging from ``top_centre``, as large as fits ``room`` (≤ ``largest``)."""
     h = fitting_height(text, room, largest)
-    return Text(clipped(text, room, h), top_centre, h, "ct")
+    x, y = top_centre
+    return Text(clipped(text, room, h), (x, y - 0.2 * h), h, "ct")     # the accents' room above h
 
 
 def _default_diagrams(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
