@@ -81,6 +81,13 @@ def polygon_scale(polygons: Sequence[Polygon], room_mm: float) -> float:
     return nice_scale(max(p.largest() for p in polygons), room_mm, FINE_MANTISSAS)
 
 
+def polygon_fit_scale(polygon: Polygon, width: float, height: float) -> float:
+    """The smallest round scale μ at which the whole polygon fits ``width`` × ``height`` mm."""
+    x0, y0, x1, y1 = polygon_extent(polygon, 1.0)
+    return max(nice_scale(max(x1 - x0, 1e-12), width, FINE_MANTISSAS),
+               nice_scale(max(y1 - y0, 1e-12), height, FINE_MANTISSAS))
+
+
 def polygon_extent(polygon: Polygon, scale: float) -> Box:
     pts = np.array(list(polygon.points.values())) / scale
     return (float(pts[:, 0].min()), float(pts[:, 1].min()), float(pts[:, 0].max()), float(pts[:, 1].max()))

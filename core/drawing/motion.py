@@ -26,7 +26,7 @@ from core.polygons import acceleration_polygon, velocity_polygon
 from core.positions import positions, special_angles
 
 from . import mechanism as mech
-from .charts import Curve, chart, place_label, polygon_extent, polygon_items, polygon_scale
+from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE, THIN
 from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text,
                     TitleBlock, clipped, fit, fitting_height, frame_items,
@@ -183,16 +183,17 @@ def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
 
 def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
               lab: Mapping[str, str]) -> list[Item]:
-    """Velocity (top row) and acceleration (bottom row) polygons at the two angles."""
+    """Velocity (top row) and acceleration (bottom row) polygons at the two angles, each
+    to the largest round scale that fits its cell."""
     x0, y0, x1, y1 = box
     cw, ch = (x1 - x0) / 2.0, (y1 - y0) / 2.0
     items: list[Item] = []
     rows = (("velocity", velocity_polygon), ("acceleration", acceleration_polygon))
     for r, (kind, build) in enumerate(rows):
         polys = [build(design, float(a), rpm) for a in diagrams]
-        room = min(cw, ch - 2 * CAPTION) - 16.0
-        mu = polygon_scale(polys, room)
         for c, (angle, poly) in enumerate(zip(diagrams, polys)):
+            # each its own scale: a slow position stays legible; labels need a margin
+            mu = polygon_fit_scale(poly, cw - 24.0, ch - 2 * CAPTION - 14.0)
             cell = (x0 + c * cw, y1 - (r + 1) * ch, x0 + (c + 1) * cw, y1 - r * ch)
             title = caption(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
                             ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)

@@ -36,7 +36,8 @@ TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
 WIDE_ADVANCE = 1.05
 NARROW_ADVANCE = 0.78
 BINDING_MARGIN = 25.0                           # a of GB/T 14689
-SCALE_MANTISSAS = (1.0, 2.0, 2.5, 5.0)          # 1:1, 1:2, 1:2.5, 1:5, 1:10, 1:20 … (GB/T 14690)
+# GB/T 14690: 1:1, 1:2, 1:5, 1:10 … preferred, 1:1.5, 1:2.5, 1:3, 1:4, 1:6 … allowed (as the report)
+SCALE_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0)
 
 
 @dataclass(frozen=True)
@@ -169,8 +170,8 @@ def frame_items(p: Paper) -> list[Item]:
 # ---- scales ------------------------------------------------------------------------------
 
 def standard_scale(extent_mm: float, room_mm: float) -> float:
-    """The smallest reduction 1:d of GB/T 14690's series (d = 1, 2, 2.5, 5 × 10^k, at least
-    1:1) that draws ``extent_mm`` of the design within ``room_mm`` of paper. Returns d."""
+    """The smallest reduction 1:d of GB/T 14690's series (d = 1, 1.5, 2, 2.5, 3, 4, 5, 6 × 10^k,
+    at least 1:1) that draws ``extent_mm`` of the design within ``room_mm`` of paper. Returns d."""
     return max(1.0, nice_scale(extent_mm, room_mm, SCALE_MANTISSAS))
 
 

@@ -19,7 +19,7 @@ from core.geometry import synthesize
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
 ROD = synthesize(100.0, 1.46, 312.0, rod_ratio=0.3)
-SERIES = sorted({m * 10.0 ** k for m in (1.0, 2.0, 2.5, 5.0) for k in range(0, 6)})
+SERIES = sorted({m * 10.0 ** k for m in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0) for k in range(0, 6)})
 
 
 def test_papers_are_gb_14689_landscape_with_binding_margin():
