@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Sequence
 
 from core.drawing.motion import motion_sheet
 from core.drawing.sheet import Sheet, TitleBlock, paper
@@ -34,9 +34,17 @@ class SheetChoice:
 
 def build_sheet(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
                 choice: SheetChoice) -> Sheet:
-    """The sheet in the current language (Qt's translator must be installed)."""
-    if choice.content != "motion":
+    """The sheet in the current language (Qt's translator must be installed).
+    ContentUnavailable for a content without a builder in BUILDERS."""
+    builder = BUILDERS.get(choice.content)
+    if builder is None:
         raise ContentUnavailable(f"the {choice.content} sheet is not available in this version")
+    return builder(spec, rpms, masses, choice)
+
+
+def motion(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
+           choice: SheetChoice) -> Sheet:
+    """The motion sheet at the first speed."""
     design = spec.design()
     idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
     labels = motion_labels()
@@ -45,3 +53,9 @@ def build_sheet(spec: Spec, rpms: Sequence[float], masses: MassProperties | None
     return motion_sheet(design, float(rpms[0]), paper(choice.paper), count=choice.count,
                         diagram_deg=choice.diagram_deg, idle_fraction=idle, labels=labels,
                         block=block).sheet
+
+
+# content → its builder (spec, speeds, loads or None, choice) → Sheet; the forces sheet joins here
+BUILDERS: dict[str, Callable[[Spec, Sequence[float], MassProperties | None, SheetChoice], Sheet]] = {
+    "motion": motion,
+}
