@@ -23,20 +23,6 @@ DIMSTYLE = "GB_MM"
 DIM_TEXT_MM = 5.0            # text height on paper, GB/T 14691's series
 ARROW_MM = 3.5               # arrow length on paper (≥ 6d for d = 0.5 mm)
 DECIMALS = 2
-# Reductions of GB/T 14690 (1:1, 1:2, 1:2.5, 1:5 and each × 10ⁿ), smallest first.
-_REDUCTIONS = (1.0, 2.0, 2.5, 5.0)
-
-
-def reduction(extent_mm: tuple[float, float], room_mm: tuple[float, float]) -> float:
-    """The smallest standard reduction n (for 1:n) at which a drawing of ``extent_mm``
-    (width, height) fits into ``room_mm`` on paper."""
-    need = max(extent_mm[0] / room_mm[0], extent_mm[1] / room_mm[1], 1e-12)
-    decade = 10.0 ** math.floor(math.log10(need))
-    for step in (*_REDUCTIONS, 10.0):
-        n = step * decade
-        if n >= need * (1.0 - 1e-12):
-            return max(n, 1.0)
-    return 10.0 * decade  # pragma: no cover - the loop ends at 10·decade ≥ need
 
 
 def add_dimstyle(doc: Drawing, scale: float = 1.0) -> str:

@@ -28,6 +28,7 @@ from ..geometry import Design
 from ..kinematics import shape
 from . import dimensions as dims
 from .dxf import CENTER, DASHED, OUTLINE, TEXT, TEXT_STYLE, THIN, new_document, save_dxf
+from .sheet import standard_scale
 
 UNITS_PER_LEVER = 40.0       # u = L3 / 40
 ROOM_MM = (380.0, 260.0)     # an A3 sheet's drawing area: the scale a print would use
@@ -75,7 +76,7 @@ def scheme_document(design: Design, angle_deg: float = 0.0) -> Drawing:
     _draw_links(msp, design, p, lay)
     extents = bbox.extents(msp)
     size = extents.size
-    scale = dims.reduction((size.x * 1.25, size.y * 1.25), ROOM_MM)
+    scale = max(standard_scale(size.x * 1.25, ROOM_MM[0]), standard_scale(size.y * 1.25, ROOM_MM[1]))
     dims.add_dimstyle(doc, scale)
     _draw_labels(msp, design, p, scale)
     _draw_dimensions(msp, design, p, lay, scale, extents.extmin.x)

@@ -19,6 +19,7 @@ from shaperapp.widgets.command_line import (check_output_folder, cover_text, des
                                             diagram_angles, inputs_from_args, start_qt)
 
 from .content import CONTENTS, SHEET_SUFFIXES, SheetChoice
+from .scheme_command import SCHEME, add_scheme_options, write_scheme_file
 
 HELP = "draw the course design's sheets (A0–A3 PDF, SVG or DXF)"
 DESCRIPTION = ("The drawing sheets of the course design (图纸): paper after GB/T 14689 with the "
@@ -42,7 +43,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--sheet", default="A1", metavar="SIZE",
                         help=f"paper, landscape: {', '.join(PAPERS)} (default A1)")
     parser.add_argument("--content", default="motion", metavar="WHAT",
-                        help=f"what the sheet shows: {', '.join(CONTENTS)} (default motion)")
+                        help=f"what the sheet shows: {', '.join(CONTENTS)} (default motion); or "
+                             f"{SCHEME}: the mechanism alone at 1:1 with its dimensions, as DXF")
+    add_scheme_options(parser)
     parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
                         help="language of the sheet's texts: en, or zh (= zh_CN) (default en)")
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
@@ -86,6 +89,8 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
 
 def run(args: argparse.Namespace) -> int:
     spec, rpms, masses = inputs_from_args(args)
+    if args.content == SCHEME:
+        return write_scheme_file(spec.design(), args)
     choice = choice_from_args(args)
     suffix = sheet_suffix(args.output)
     target = Path(args.output)

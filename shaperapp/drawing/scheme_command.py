@@ -1,0 +1,42 @@
+"""``shaper drawing --content scheme``: the mechanism alone for CAD, at a crank angle.
+
+No sheet, no Qt: the DXF comes from :mod:`core.drawing.scheme`. ``shaper drawing``
+adds :func:`add_scheme_options` to its options and hands ``--content scheme`` to
+:func:`write_scheme_file`, which checks every word before anything is written.
+"""
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from core.cli.common import number
+from core.cli.output import OutputError
+from core.drawing.scheme import check_angle, write_scheme
+from core.geometry import Design
+
+from shaperapp.widgets.command_line import check_output_folder
+
+SCHEME = "scheme"
+
+
+def add_scheme_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--angle", metavar="DEG", default="0",
+                        help="with --content scheme: the crank angle φ it is drawn at, 0 to 360 "
+                             "degrees (default 0, the limit position that starts the cut)")
+
+
+def write_scheme_file(design: Design, args: argparse.Namespace) -> int:
+    """The scheme at ``--angle`` to ``--output`` (a .dxf name): DesignError naming --angle,
+    OutputError naming --output, and nothing written, for bad words."""
+    angle = check_angle(number("angle", args.angle))
+    target = Path(args.output)
+    if target.suffix.lower() != ".dxf":
+        raise OutputError(f"--output: the scheme is written as DXF: the file name must end in "
+                          f".dxf (got {target.name!r})")
+    check_output_folder(args.output)
+    try:
+        write_scheme(design, angle, target)
+    except OSError as exc:      # a WriteError: names the path and a plain reason
+        raise OutputError(f"--output: {exc}") from None
+    print(f"wrote {target} (scheme at φ = {angle:g}°, 1:1 in mm, DXF)")
+    return 0
