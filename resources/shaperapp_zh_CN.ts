@@ -784,12 +784,84 @@
         <translation>主要尺寸</translation>
     </message>
     <message>
+        <source>Kinetostatic analysis</source>
+        <translation>动态静力分析图</translation>
+    </message>
+    <message>
+        <source>Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm</source>
+        <translation>载荷与运动副反力，φ = {angle}°，μl = {mu} m/mm（{scale}），μF = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm</source>
+        <translation>滑枕杆组的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min</source>
+        <translation>曲柄驱动力矩 M–φ 曲线，点画线为平均值 M_m，n = {rpm} r/min</translation>
+    </message>
+    <message>
+        <source>Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J</source>
+        <translation>盈亏功 ∫(M − M_m)dφ–φ 曲线，ΔW_max = {dw} J</translation>
+    </message>
+    <message>
+        <source>M/(N·m)</source>
+        <translation>M/(N·m)</translation>
+    </message>
+    <message>
+        <source>E/J</source>
+        <translation>E/J</translation>
+    </message>
+    <message>
+        <source>μM = {mu} (N·m)/mm</source>
+        <translation>μM = {mu} (N·m)/mm</translation>
+    </message>
+    <message>
+        <source>μE = {mu} J/mm</source>
+        <translation>μE = {mu} J/mm</translation>
+    </message>
+    <message>
         <source>Quantity</source>
         <translation>名称</translation>
     </message>
     <message>
+        <source>Flywheel</source>
+        <translation>飞轮</translation>
+    </message>
+    <message>
         <source>Value</source>
         <translation>数值</translation>
+    </message>
+    <message>
+        <source>Mean driving torque M_m</source>
+        <translation>平均驱动力矩 M_m</translation>
+    </message>
+    <message>
+        <source>Largest driving torque</source>
+        <translation>最大驱动力矩</translation>
+    </message>
+    <message>
+        <source>Mean power (before efficiency)</source>
+        <translation>平均功率（未计效率）</translation>
+    </message>
+    <message>
+        <source>Energy fluctuation ΔW_max</source>
+        <translation>最大盈亏功 ΔW_max</translation>
+    </message>
+    <message>
+        <source>Coefficient of speed fluctuation δ</source>
+        <translation>速度不均匀系数 δ</translation>
+    </message>
+    <message>
+        <source>Flywheel J_F = ΔW_max/(ω²δ)</source>
+        <translation>飞轮 J_F = ΔW_max/(ω²δ)</translation>
+    </message>
+    <message>
+        <source>Mean reduced inertia J_e</source>
+        <translation>平均等效转动惯量 J_e</translation>
+    </message>
+    <message>
+        <source>Flywheel to add J_F − J_e</source>
+        <translation>需加飞轮 J_F − J_e</translation>
     </message>
     <message>
         <source>Crank O2A, L1</source>
@@ -837,6 +909,10 @@
     <message>
         <source>Motion analysis</source>
         <translation>运动分析图</translation>
+    </message>
+    <message>
+        <source>Kinetostatic analysis</source>
+        <translation>动态静力分析图</translation>
     </message>
     <message>
         <source>Paper:</source>

@@ -77,8 +77,6 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
     if args.content not in CONTENTS:
         raise UsageError(f"--content: {args.content!r} is not one of {', '.join(CONTENTS)}")
-    if args.content != "motion":
-        raise UsageError(f"--content {args.content}: not available yet; use --content motion")
     count = check_count(number("positions", args.positions))
     diagrams = diagram_angles(args)
     date = cover_text("--date", args.date) or datetime.date.today().isoformat()

@@ -55,7 +55,27 @@ def motion(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
                         block=block).sheet
 
 
+def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
+           choice: SheetChoice) -> Sheet:
+    """The kinetostatic sheet at the first speed; the loads are needed (DesignError naming
+    the cutting force without them)."""
+    from core.drawing.forces import forces_sheet
+    from core.dynamics import masses_for_design
+    from core.errors import DesignError
+    from .forces_labels import forces_labels
+    if masses is None:
+        raise DesignError("cut_force_N", None, "the forces sheet needs the loads: give the masses and "
+                                               "the cutting force, or a design file with loads")
+    design = spec.design()
+    labels = forces_labels()
+    block = TitleBlock(labels["title"], choice.design_name, "", SHEET_NUMBER[choice.content],
+                       choice.drawn, choice.date, choice.school)
+    return forces_sheet(design, float(rpms[0]), masses_for_design(design, masses), paper(choice.paper),
+                        diagram_deg=choice.diagram_deg, labels=labels, block=block).sheet
+
+
 # content → its builder (spec, speeds, loads or None, choice) → Sheet; the forces sheet joins here
 BUILDERS: dict[str, Callable[[Spec, Sequence[float], MassProperties | None, SheetChoice], Sheet]] = {
     "motion": motion,
+    "forces": forces,
 }

@@ -46,6 +46,7 @@ class DrawingSheetDialog(QDialog):
         self.paper.setCurrentText("A1")
         self.content = QComboBox()
         self.content.addItem(self.tr("Motion analysis"), "motion")
+        self.content.addItem(self.tr("Kinetostatic analysis"), "forces")
         self.count = QSpinBox()
         self.count.setRange(1, MAX_COUNT)
         self.count.setValue(DEFAULT_COUNT)

@@ -88,7 +88,7 @@ def test_dxf_written_and_measures_true(tmp_path):
 @pytest.mark.parametrize("words, option", [
     (["--sheet", "A5"], "--sheet"),
     (["--content", "cams"], "--content"),
-    (["--content", "forces"], "--content"),
+    (["--content", "forces"], "--cut-force"),     # the forces sheet needs the loads
     (["--positions", "0"], "positions"),
     (["--diagrams", "30"], "diagrams"),
     (["--date", "a\nb"], "--date"),

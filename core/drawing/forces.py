@@ -1,0 +1,255 @@
+"""The kinetostatic-analysis sheet (动态静力分析图) of the course design on a GB paper.
+
+Upper left the mechanism at the two polygon positions (the report's default, or
+``diagram_deg``) with the loads and the joint forces as arrows to one force scale
+μF each; upper right the force polygon of the ram group (core.polygons.force_polygon)
+at the same two positions; lower left the crank's driving torque over the cycle with
+its mean, and the energy curve ∫(M − M_m)dφ; lower right the flywheel result (the
+numbers of ``shaper dynamics`` and the report, from core.flywheel.summarize) and the
+title block. Every number comes from core at the first crank speed, the speed of the
+motion sheet's polygons.
+
+Texts are looked up in ``labels`` (keys of :data:`ENGLISH`), so the caller chooses the
+language; numbers are formatted here.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping
+
+import numpy as np
+
+from core.dynamics import MM, MassProperties, solve_dynamics
+from core.flywheel import summarize
+from core.geometry import Design
+from core.kinematics import rpm_to_omega, shape
+from core.polygons import FINE_MANTISSAS, force_polygon, nice_scale
+from core.positions import DEFAULT_COUNT, positions, special_angles
+
+from . import mechanism as mech
+from .charts import Curve, arrow, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
+from .dxf import OUTLINE
+from .motion import CAPTION, GAP, TABLE_ROW, caption
+from .motion import _default_diagrams as nearest_mid_strokes
+from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Sheet, TitleBlock, fit,
+                    frame_items, number_text, scale_text, standard_scale, table, title_block,
+                    title_block_box)
+
+ENGLISH = {
+    "title": "Kinetostatic analysis",
+    "mechanism": "Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm",
+    "polygon": "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm",
+    "torque": "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min",
+    "energy": "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J",
+    "M": "M/(N·m)", "E": "E/J", "phi": "φ/(°)",
+    "mu_M": "μM = {mu} (N·m)/mm", "mu_E": "μE = {mu} J/mm", "mu_phi": "μφ = {mu} °/mm",
+    "flywheel": "Flywheel", "quantity": "Quantity", "value": "Value",
+    "n": "Crank speed n", "M_mean": "Mean driving torque M_m", "M_max": "Largest driving torque",
+    "P_mean": "Mean power (before efficiency)", "dW": "Energy fluctuation ΔW_max",
+    "delta": "Coefficient of speed fluctuation δ", "J_F": "Flywheel J_F = ΔW_max/(ω²δ)",
+    "J_e": "Mean reduced inertia J_e", "J_net": "Flywheel to add J_F − J_e",
+    "design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn", "date": "Date",
+    "checked": "Checked", "approved": "Approved",
+}
+FORCE_NAMES = {"P": "P", "G_5": "G₅", "F_I5": "F_I5", "G_4": "G₄", "F_I4": "F_I4", "N": "N",
+               "R_B": "R_B", "R_O2": "R_O2", "R_A": "R_A", "R_O4": "R_O4", "R_C": "R_C"}
+ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
+TORQUE_STEP_DEG = 1.0
+
+
+@dataclass(frozen=True)
+class ForcesSheet:
+    """The sheet and what the tests measure on it."""
+
+    sheet: Sheet
+    scale: float                            # the mechanism's reduction 1:scale
+    diagram_deg: tuple[float, float]
+    force_scales: tuple[float, float]       # μF of the two mechanism drawings, N/mm
+    polygon_scales: tuple[float, float]     # μF of the two polygons, N/mm
+    arrows: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]]
+    """(drawing, force name) → tail and head on the paper, mm."""
+    torque_chart: tuple[float, float, tuple[float, float]]   # μM, μφ, paper origin
+    energy_chart: tuple[float, float, tuple[float, float]]   # μE, μφ, paper origin
+    rows: list[tuple[str, str]]             # the flywheel table
+    areas: dict[str, tuple[Box, tuple[Item, ...]]]
+
+
+def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Paper, *,
+                 diagram_deg: tuple[float, float] | None = None,
+                 labels: Mapping[str, str] = ENGLISH, block: TitleBlock | None = None) -> ForcesSheet:
+    """The kinetostatic sheet of ``design`` at ``rpm`` with ``masses`` on ``paper``."""
+    lab = {**ENGLISH, **labels}
+    bx0, by0, bx1, by1 = paper.border
+    split_x, split_y = bx0 + 0.5 * (bx1 - bx0), by0 + 0.45 * (by1 - by0)
+    diagrams = diagram_deg or default_diagrams(design, masses.idle_fraction)
+    areas: dict[str, tuple[Box, tuple[Item, ...]]] = {}
+
+    cell_w = (split_x - bx0 - GAP) / 2.0
+    cells = [(bx0 + GAP + k * cell_w, split_y + GAP, bx0 + GAP + (k + 1) * cell_w - GAP, by1 - GAP)
+             for k in range(2)]
+    room = [(c[0], c[1], c[2], c[3] - 3 * CAPTION) for c in cells]
+    bounds = mech.bounds(design)
+    scale = max(standard_scale(bounds[2] - bounds[0], room[0][2] - room[0][0] - mech.RAM[0] - 40.0),
+                standard_scale(bounds[3] - bounds[1], room[0][3] - room[0][1] - 40.0))
+    arrows: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]] = {}
+    force_scales = []
+    for k, (cell, box, angle) in enumerate(zip(cells, room, diagrams)):
+        items, mu_f = _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k)
+        items.append(caption(lab["mechanism"].format(angle=number_text(round(angle, 2)),
+                                                     mu=number_text(scale / 1000.0),
+                                                     scale=scale_text(scale), mu_f=number_text(mu_f)),
+                             ((cell[0] + cell[2]) / 2.0, cell[3]), cell[2] - cell[0], 3.5))
+        areas[f"mechanism {k + 1}"] = (cell, tuple(items))
+        force_scales.append(mu_f)
+
+    poly_w = (bx1 - split_x - GAP) / 2.0
+    polygon_scales = []
+    for k, angle in enumerate(diagrams):
+        cell = (split_x + GAP + k * poly_w, split_y + GAP, split_x + (k + 1) * poly_w, by1 - GAP)
+        items, mu = _polygon(design, rpm, masses, angle, cell, lab)
+        areas[f"polygon {k + 1}"] = (cell, tuple(items))
+        polygon_scales.append(mu)
+
+    table_w = TITLE_WIDTH
+    charts_right = bx1 - table_w - 2 * GAP
+    half = (split_y - by0 - GAP) / 2.0
+    summary = summarize(design, [rpm], masses)
+    speed = summary.speeds[0]
+    torque_box = (bx0 + GAP, by0 + GAP + half, charts_right, split_y - GAP)
+    energy_box = (bx0 + GAP, by0 + GAP, charts_right, by0 + half)
+    phi_deg = np.arange(0.0, 360.0 + TORQUE_STEP_DEG / 2, TORQUE_STEP_DEG)
+    torque = solve_dynamics(design, np.radians(phi_deg), [rpm], masses).crank_torque[0]
+    items, torque_chart = _curve_chart(torque_box, phi_deg, torque, speed.mean_torque_N_m,
+                                       lab["torque"].format(rpm=number_text(rpm)), lab["M"], "mu_M", lab)
+    areas["torque"] = (torque_box, tuple(items))
+    energy_deg = np.degrees(summary.crank_angle)
+    items, energy_chart = _curve_chart(energy_box, energy_deg, summary.energy[0], None,
+                                       lab["energy"].format(dw=f"{speed.energy_fluctuation_J:.4g}"),
+                                       lab["E"], "mu_E", lab)
+    areas["energy"] = (energy_box, tuple(items))
+
+    rows = flywheel_rows(summary, masses, lab)
+    cells_rows = [(lab["quantity"], lab["value"])] + rows
+    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(cells_rows)
+    table_box = (bx1 - table_w, table_top - TABLE_ROW * len(cells_rows), bx1, table_top)
+    items = list(table((bx1 - table_w, table_top), (115.0, 65.0), cells_rows, TABLE_ROW, 3.5,
+                       aligns="lc"))
+    items.append(caption(lab["flywheel"], ((table_box[0] + table_box[2]) / 2.0, table_top + 2 * CAPTION),
+                         table_w, CAPTION))
+    areas["flywheel"] = ((table_box[0], table_box[1], table_box[2], table_top + 2 * CAPTION),
+                         tuple(items))
+    block = block or TitleBlock(lab["title"], "", "", "1/1")
+    block = TitleBlock(block.title or lab["title"], block.design, scale_text(scale), block.sheet,
+                       block.drawn, block.date, block.school, {k: lab[k] for k in TITLE_LABEL_KEYS})
+    areas["title"] = (title_block_box(paper), tuple(title_block(paper, block)))
+    items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
+    return ForcesSheet(Sheet(paper, tuple(items)), scale, tuple(diagrams), tuple(force_scales),
+                       tuple(polygon_scales), arrows, torque_chart, energy_chart, rows, areas)
+
+
+def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: float
+                 ) -> list[tuple[str, str, np.ndarray]]:
+    """(name, where, force in N) on the mechanism at one angle: the loads on the ram (P at
+    the tool, G5 and F_I5 at C, the guide's N) and the joint forces, each on the link the
+    README names (R_O2 on the crank, R_A and R_O4 on the lever, R_B by the lever on the next
+    link, R_C by the rod on the ram). Zero forces are left out."""
+    phi = np.radians([angle_deg])
+    d = solve_dynamics(design, phi, [rpm], masses)
+    w = float(rpm_to_omega(rpm))
+    a_c = w * w * float(shape(design, phi).ram2[0]) * MM
+    at = lambda a: float(a[0, 0])          # noqa: E731
+    forces = [("P", "tool", np.array([-at(d.cut_force), 0.0])),
+              ("G_5", "C", np.array([0.0, -masses.ram_mass_kg * masses.g])),
+              ("F_I5", "C", np.array([-masses.ram_mass_kg * a_c, 0.0])),
+              ("N", "C", np.array([0.0, at(d.guide_normal)])),
+              ("R_O2", "O2", np.array([at(d.o2_x), at(d.o2_y)])),
+              ("R_A", "A", np.array([at(d.a_x), at(d.a_y)])),
+              ("R_O4", "O4", np.array([at(d.o4_x), at(d.o4_y)])),
+              ("R_B", "B", np.array([at(d.b_x), at(d.b_y)]))]
+    if design.rod is not None:
+        forces.append(("R_C", "C", np.array([at(d.c_x), at(d.c_y)])))
+    return [(name, where, f) for name, where, f in forces if math.hypot(*f) > 0.0]
+
+
+def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tuple[list[Item], float]:
+    place = fit(mech.bounds(design), box, scale)
+    items: list[Item] = mech.frame_items(design, place) + mech.links_at(design, angle, place, OUTLINE)
+    forces = joint_forces(design, rpm, masses, angle)
+    mu_f = nice_scale(max(math.hypot(*f) for _, _, f in forces), ARROW_MM, FINE_MANTISSAS)
+    points = {name: place(p) for name, p in mech.joints(design, angle).items()}
+    points["tool"] = np.array(mech.tool_point(points["C"]))
+    taken: list[Box] = []
+    for joint in mech.joint_labels(design, angle, place, 3.5):      # crowded (small sheets): left out
+        placed = place_label(joint.text, joint.position, joint.height, taken, within=box, gap=0.0,
+                             optional=True, align="cm")
+        items += [placed] if placed else []
+    for name, where, force in forces:
+        tail = points[where]
+        head = tail + force / mu_f
+        arrows[(k, name)] = (tail, head)
+        items += arrow(tail, head, OUTLINE)
+        label = place_label(FORCE_NAMES[name], (float(head[0]), float(head[1])), 3.5, taken,
+                            tuple(head - tail), gap=1.0, within=box, optional=True)
+        items += [label] if label else []
+    return items, mu_f
+
+
+def _polygon(design, rpm, masses, angle, cell: Box, lab) -> tuple[list[Item], float]:
+    poly = force_polygon(design, angle, rpm, masses)
+    cw, ch = cell[2] - cell[0], cell[3] - cell[1]
+    mu = polygon_fit_scale(poly, cw - 24.0, ch - 3 * CAPTION - 14.0)
+    title = caption(lab["polygon"].format(angle=number_text(round(angle, 2)), mu_f=number_text(mu)),
+                    ((cell[0] + cell[2]) / 2.0, cell[3]), cw - 4.0, 3.5)
+    ex = polygon_extent(poly, mu)
+    cx, cy = (cell[0] + cell[2]) / 2.0, (cell[1] + cell[3] - 3 * CAPTION) / 2.0
+    pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
+    names = {str(i): str(i) for i in range(len(poly.points))}
+    items: list[Item] = [title]
+    taken = [title.box()]
+    items += polygon_items(poly, pole, mu, 3.5, names, taken,
+                           within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]))
+    at = {key: (pole[0] + x / mu, pole[1] + y / mu) for key, (x, y) in poly.points.items()}
+    for v in poly.vectors:                      # each arrow named at its middle
+        (tx, ty), (hx, hy) = at[v.tail], at[v.head]
+        label = place_label(FORCE_NAMES.get(v.key, v.key), ((tx + hx) / 2.0, (ty + hy) / 2.0), 3.5,
+                            taken, (-(hy - ty), hx - tx), gap=1.5,
+                            within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), optional=True)
+        items += [label] if label else []
+    return items, mu
+
+
+def _curve_chart(box: Box, x: np.ndarray, y: np.ndarray, mean: float | None, title: str,
+                 y_title: str, mu_key: str, lab) -> tuple[list[Item], tuple[float, float, tuple]]:
+    x0, y0, x1, y1 = box
+    items: list[Item] = [caption(title, ((x0 + x1) / 2.0, y1), x1 - x0, 3.5)]
+    drawn = chart((x0, y0, x1, y1 - 2 * CAPTION), x, [Curve(np.asarray(y))], lab["phi"], y_title,
+                  [(float(t), f"{t:g}") for t in np.arange(0.0, 361.0, 60.0)], mean=mean)
+    items += drawn.items
+    items.append(caption(lab[mu_key].format(mu=number_text(drawn.y_scale)) + "   "
+                         + lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
+                         (drawn.x_end - 75.0, drawn.y_end), 150.0, 3.5))
+    return items, (drawn.y_scale, drawn.x_scale, drawn.origin)
+
+
+def flywheel_rows(summary, masses: MassProperties, lab: Mapping[str, str]) -> list[tuple[str, str]]:
+    """The flywheel result at the first speed, formatted as ``shaper dynamics`` prints it."""
+    s = summary.speeds[0]
+    return [(lab["n"], f"{number_text(s.rpm)} r/min"),
+            (lab["M_mean"], f"{s.mean_torque_N_m:.4g} N·m"),
+            (lab["M_max"], f"{s.max_torque_N_m:.4g} N·m"),
+            (lab["P_mean"], f"{s.mean_power_W:.4g} W"),
+            (lab["dW"], f"{s.energy_fluctuation_J:.4g} J"),
+            (lab["delta"], f"{masses.delta:.5g}"),
+            (lab["J_F"], f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
+            (lab["J_e"], f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
+            (lab["J_net"], f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+
+
+def default_diagrams(design: Design, idle_fraction: float) -> tuple[float, float]:
+    """The report's and the motion sheet's two positions: the numbered positions (of 12)
+    nearest the middle of the working and of the return stroke."""
+    where = positions(design, DEFAULT_COUNT, (), idle_fraction)
+    special = special_angles(design, idle_fraction)
+    return nearest_mid_strokes(where.crank_deg[where.number > 0],
+                               (special["limit_work_start"], special["limit_work_end"]))

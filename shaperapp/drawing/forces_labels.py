@@ -1,0 +1,34 @@
+"""The forces sheet's words in the user's language (``core.drawing.forces.ENGLISH``'s keys)."""
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication
+
+from .labels import title_labels
+
+translate = QCoreApplication.translate   # lupdate extracts translate("Drawing", "…")
+
+
+def forces_labels() -> dict[str, str]:
+    """Every text of the kinetostatic sheet."""
+    return {
+        **title_labels(),
+        "title": translate("Drawing", "Kinetostatic analysis"),
+        "mechanism": translate("Drawing", "Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), "
+                                          "μF = {mu_f} N/mm"),
+        "polygon": translate("Drawing", "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm"),
+        "torque": translate("Drawing", "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min"),
+        "energy": translate("Drawing", "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J"),
+        "M": translate("Drawing", "M/(N·m)"), "E": translate("Drawing", "E/J"), "phi": translate("Drawing", "φ/(°)"),
+        "mu_M": translate("Drawing", "μM = {mu} (N·m)/mm"), "mu_E": translate("Drawing", "μE = {mu} J/mm"),
+        "mu_phi": translate("Drawing", "μφ = {mu} °/mm"),
+        "flywheel": translate("Drawing", "Flywheel"), "quantity": translate("Drawing", "Quantity"),
+        "value": translate("Drawing", "Value"), "n": translate("Drawing", "Crank speed n"),
+        "M_mean": translate("Drawing", "Mean driving torque M_m"),
+        "M_max": translate("Drawing", "Largest driving torque"),
+        "P_mean": translate("Drawing", "Mean power (before efficiency)"),
+        "dW": translate("Drawing", "Energy fluctuation ΔW_max"),
+        "delta": translate("Drawing", "Coefficient of speed fluctuation δ"),
+        "J_F": translate("Drawing", "Flywheel J_F = ΔW_max/(ω²δ)"),
+        "J_e": translate("Drawing", "Mean reduced inertia J_e"),
+        "J_net": translate("Drawing", "Flywheel to add J_F − J_e"),
+    }

@@ -1,0 +1,20 @@
+"""Checks every drawing sheet must pass: each drawing keeps to its own area, the areas do
+not overlap, nothing lies outside the border and no two texts overlap."""
+from core.drawing.sheet import item_box, outside_border, overlapping_texts
+
+
+def inside(box, area, tol=1e-6) -> bool:
+    return (box[0] >= area[0] - tol and box[1] >= area[1] - tol
+            and box[2] <= area[2] + tol and box[3] <= area[3] + tol)
+
+
+def assert_laid_out(sheet, areas) -> None:
+    """``areas``: name → (area box, its items) of a sheet built by core.drawing."""
+    assert outside_border(sheet) == [] and overlapping_texts(sheet) == []
+    named = list(areas.items())
+    for name, (area, items) in named:
+        strays = [it for it in items if not inside(item_box(it), area)]
+        assert strays == [], (name, strays[:3])
+    for i, (a_name, (a, _)) in enumerate(named):
+        for b_name, (b, _) in named[i + 1:]:
+            assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]), (a_name, b_name)

@@ -1,0 +1,132 @@
+"""The kinetostatic sheet as data: inside the border, nothing overlapping, and every
+force, torque, energy and flywheel figure on it measured back against core."""
+import math
+
+import numpy as np
+import pytest
+
+from core.cli.cmd_dynamics import speed_rows
+from core.drawing.forces import ENGLISH, forces_sheet, joint_forces
+from core.drawing.motion import motion_sheet
+from core.drawing.sheet import Polyline, outside_border, overlapping_texts, paper
+from core.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.flywheel import summarize
+from core.geometry import synthesize
+from core.kinematics import rpm_to_omega
+from sheet_checks import assert_laid_out
+
+BLOCK = synthesize(100.0, 1.4, 300.0)
+ROD = synthesize(100.0, 1.46, 312.0, rod_ratio=0.3)
+LEADING = synthesize(150.0, 1.2, 600.0, rod_ratio=0.8, rod_side="leading")
+LOADS = dict(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70, cut_force_N=7000, cut_height_mm=80)
+
+
+def masses(design):
+    extra = {"rod_mass_kg": 8.0} if design.rod is not None else {}
+    return masses_for_design(design, MassProperties(**LOADS, **extra))
+
+
+@pytest.mark.parametrize("design", [BLOCK, ROD, LEADING], ids=["block", "rod", "leading"])
+@pytest.mark.parametrize("size", ["A1", "A3"])
+def test_inside_the_border_in_own_areas_without_overlap(design, size):
+    drawn = forces_sheet(design, 60.0, masses(design), paper(size))
+    assert_laid_out(drawn.sheet, drawn.areas)
+
+
+def test_default_positions_are_the_motion_sheets():
+    """The same two positions as the report's and the motion sheet's polygons."""
+    m = masses(BLOCK)
+    assert forces_sheet(BLOCK, 40.0, m, paper("A1")).diagram_deg == \
+        motion_sheet(BLOCK, 40.0, paper("A1")).diagram_deg
+    assert forces_sheet(BLOCK, 40.0, m, paper("A1"), diagram_deg=(30.0, 300.0)).diagram_deg == (30.0, 300.0)
+
+
+@pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
+def test_arrows_times_their_scale_are_the_forces_and_the_ram_is_in_equilibrium(design):
+    """Each arrow's length × μF and direction is core's force; the arrows on the ram
+    (block: P, G5, F_I5, N, R_B; rod: P, G5, F_I5, N, R_C) add up to zero on the paper:
+    d'Alembert's equilibrium of the ram, which the drawing does not impose."""
+    m = masses(design)
+    drawn = forces_sheet(design, 40.0, m, paper("A1"), diagram_deg=(80.0, 250.0))
+    for k, angle in enumerate((80.0, 250.0)):
+        d = solve_dynamics(design, np.radians([angle]), [40.0], m)
+        expected = {"R_O4": (d.o4_x, d.o4_y), "R_O2": (d.o2_x, d.o2_y), "R_A": (d.a_x, d.a_y),
+                    "R_B": (d.b_x, d.b_y), "N": (0.0 * d.guide_normal, d.guide_normal)}
+        mu = drawn.force_scales[k]
+        for name, (fx, fy) in expected.items():
+            tail, head = drawn.arrows[(k, name)]
+            assert (head - tail) * mu == pytest.approx([float(np.ravel(fx)[0]), float(np.ravel(fy)[0])],
+                                                       rel=1e-9, abs=1e-6), name
+        on_ram = ["P", "G_5", "F_I5", "N", "R_B" if design.rod is None else "R_C"]
+        total = sum(((drawn.arrows[(k, n)][1] - drawn.arrows[(k, n)][0]) * mu
+                     for n in on_ram if (k, n) in drawn.arrows), np.zeros(2))
+        if design.rod is not None:     # R_C is the rod on the ram; R_B (on the rod) is not on it
+            assert (k, "R_C") in drawn.arrows
+        assert np.hypot(*total) < 1e-6 * m.cut_force_N
+
+
+def test_the_cutting_force_is_drawn_only_while_cutting():
+    m = masses(BLOCK)
+    names = {n for n, _, _ in joint_forces(BLOCK, 40.0, m, 90.0)}
+    assert "P" in names
+    assert "P" not in {n for n, _, _ in joint_forces(BLOCK, 40.0, m, 270.0)}
+
+
+def _curve(items, n_min=100):
+    return next(it for it in items if isinstance(it, Polyline) and len(it.points) >= n_min)
+
+
+def test_torque_curve_and_mean_measure_true():
+    """The torque curve read off the paper with the stated μM and μφ is core's torque, and
+    its dash-dot mean line is the cycle mean (trapezoid rule over 0.1°, independent of
+    core.flywheel's exact integration)."""
+    m = masses(BLOCK)
+    drawn = forces_sheet(BLOCK, 40.0, m, paper("A1"))
+    mu_m, mu_phi, (ox, oy) = drawn.torque_chart
+    items = drawn.areas["torque"][1]
+    curve = _curve(items)
+    phi = (curve.points[:, 0] - ox) * mu_phi
+    torque = (curve.points[:, 1] - oy) * mu_m
+    core_torque = solve_dynamics(BLOCK, np.radians(phi), [40.0], m).crank_torque[0]
+    assert torque == pytest.approx(core_torque, rel=1e-9, abs=1e-6)
+    fine = np.radians(np.linspace(0.0, 360.0, 3601))
+    t = solve_dynamics(BLOCK, fine, [40.0], m).crank_torque[0]
+    mean = np.trapezoid(t, fine) / (2 * math.pi)
+    dashed = [it for it in items if isinstance(it, Polyline) and it.layer == "CENTER"]
+    assert len(dashed) == 1
+    assert (dashed[0].points[0, 1] - oy) * mu_m == pytest.approx(mean, rel=5e-3)
+
+
+def test_energy_curve_spans_delta_w_and_the_table_gives_the_flywheel():
+    """max − min of the energy curve on the paper × μE is ΔW_max, and an independent
+    cumulative trapezoid of (M − M_m) gives it within 0.5 %; the table's J_F is
+    ΔW_max/(ω²δ) and its texts are those ``shaper dynamics`` prints."""
+    m = masses(BLOCK)
+    drawn = forces_sheet(BLOCK, 40.0, m, paper("A1"))
+    mu_e, _, (_, oy) = drawn.energy_chart
+    energy = (_curve(drawn.areas["energy"][1]).points[:, 1] - oy) * mu_e
+    fine = np.radians(np.linspace(0.0, 360.0, 36001))
+    t = solve_dynamics(BLOCK, fine, [40.0], m).crank_torque[0]
+    cumulative = np.concatenate([[0.0], np.cumsum((t[1:] + t[:-1]) / 2 * np.diff(fine))])
+    cumulative -= cumulative[-1] * fine / (2 * math.pi)          # subtract the mean's work
+    independent = cumulative.max() - cumulative.min()
+    assert energy.max() - energy.min() == pytest.approx(independent, rel=5e-3)
+    rows = dict(drawn.rows)
+    summary = summarize(BLOCK, [40.0], m)
+    cli = dict(speed_rows(summary.speeds[0]))
+    dw = float(rows[ENGLISH["dW"]].split()[0])
+    assert rows[ENGLISH["dW"]] == cli["energy fluctuation ΔW_max"]
+    assert rows[ENGLISH["J_F"]] == cli["flywheel J_F"]
+    w = float(rpm_to_omega(40.0))
+    assert float(rows[ENGLISH["J_F"]].split()[0]) == pytest.approx(dw / (w * w * m.delta), rel=1e-3)
+    assert energy.max() - energy.min() == pytest.approx(dw, rel=1e-3)
+
+
+def test_chinese_labels_change_the_texts_only():
+    m = masses(ROD)
+    labels = {k: "中文" + v for k, v in ENGLISH.items()}
+    en = forces_sheet(ROD, 40.0, m, paper("A1"))
+    zh = forces_sheet(ROD, 40.0, m, paper("A1"), labels=labels)
+    assert en.force_scales == zh.force_scales and en.scale == zh.scale
+    assert any(getattr(it, "text", "").startswith("中文") for it in zh.sheet.items)
+    assert overlapping_texts(zh.sheet) == [] and outside_border(zh.sheet) == []
