@@ -205,6 +205,35 @@ def force_polygon(design: Design, crank_deg: float, rpm: float,
                   ("F_I4", _pair(-masses.rod_mass_kg * a_g4))]
     loads += [("N", (0.0, float(dyn.guide_normal[0, 0]))),
               ("R_B", (float(dyn.b_x[0, 0]), float(dyn.b_y[0, 0])))]
+    return _chain(loads, crank_deg, rpm)
+
+
+def lever_force_polygon(design: Design, crank_deg: float, rpm: float,
+                        masses: MassProperties) -> Polygon:
+    """Forces on the lever (link 3), head to tail: its weight G_3 and inertia force
+    F_I3 = −m3·a_G3 (a_G3 from the kinematics, the centre of mass on the lever at
+    ``masses.lever_cg``), then from ``core.dynamics`` the block's force R_A at A, the
+    frame's R_O4 and the next link's force at B, R_3B = −R_B. They close: the inertia
+    moment −J3·α3 turns the lever but adds no force. Zero forces are left out."""
+    phi = np.radians([crank_deg])
+    w = float(rpm_to_omega(rpm))
+    sh = shape(design, phi)
+    dyn = solve_dynamics(design, phi, [rpm], masses)
+    psi, psi1, psi2 = float(sh.lever[0]), float(sh.lever1[0]), float(sh.lever2[0])
+    along, across = np.array([math.sin(psi), math.cos(psi)]), np.array([math.cos(psi), -math.sin(psi)])
+    a_g = w * w * masses.lever_cg(design) * MM * (psi2 * across - psi1 ** 2 * along)
+    at = lambda a: float(a[0, 0])          # noqa: E731
+    loads = [("G_3", (0.0, -masses.lever_mass_kg * masses.g)),
+             ("F_I3", _pair(-masses.lever_mass_kg * a_g)),
+             ("R_A", (at(dyn.a_x), at(dyn.a_y))),
+             ("R_O4", (at(dyn.o4_x), at(dyn.o4_y))),
+             ("R_3B", (-at(dyn.b_x), -at(dyn.b_y)))]
+    return _chain(loads, crank_deg, rpm)
+
+
+def _chain(loads: list[tuple[str, Pair]], crank_deg: float, rpm: float) -> Polygon:
+    """The force polygon of ``loads`` (name, force in N) chained head to tail from the
+    pole "0"; the last arrow's head is named "0" too (it ends where the first began)."""
     points: dict[str, Pair] = {"0": (0.0, 0.0)}
     vectors = []
     x = y = 0.0
