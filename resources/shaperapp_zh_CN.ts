@@ -796,6 +796,10 @@
         <translation>滑枕杆组的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
     </message>
     <message>
+        <source>Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm</source>
+        <translation>导杆（构件 3）的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
+    </message>
+    <message>
         <source>Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min</source>
         <translation>曲柄驱动力矩 M–φ 曲线，点画线为平均值 M_m，n = {rpm} r/min</translation>
     </message>

@@ -2,8 +2,8 @@
 
 Upper left the mechanism at the two polygon positions (the report's default, or
 ``diagram_deg``) with the loads and the joint forces as arrows to one force scale
-μF each; upper right the force polygon of the ram group (core.polygons.force_polygon)
-at the same two positions; lower left the crank's driving torque over the cycle with
+μF each; upper right the force polygons of the ram group (core.polygons.force_polygon)
+and of the lever (lever_force_polygon) at the same two positions; lower left the crank's driving torque over the cycle with
 its mean, and the energy curve ∫(M − M_m)dφ; lower right the flywheel result (the
 numbers of ``shaper dynamics`` and the report, from core.flywheel.summarize) and the
 title block. Every number comes from core at the first crank speed, the speed of the
@@ -24,7 +24,7 @@ from core.dynamics import MM, MassProperties, solve_dynamics
 from core.flywheel import summarize
 from core.geometry import Design
 from core.kinematics import rpm_to_omega, shape
-from core.polygons import FINE_MANTISSAS, force_polygon, nice_scale
+from core.polygons import FINE_MANTISSAS, force_polygon, lever_force_polygon, nice_scale
 from core.positions import DEFAULT_COUNT, positions, special_angles
 
 from . import mechanism as mech
@@ -39,7 +39,8 @@ from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Sheet, Titl
 ENGLISH = {
     "title": "Kinetostatic analysis",
     "mechanism": "Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm",
-    "polygon": "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm",
+    "polygon_ram": "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm",
+    "polygon_lever": "Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm",
     "torque": "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min",
     "energy": "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J",
     "M": "M/(N·m)", "E": "E/J", "phi": "φ/(°)",
@@ -53,7 +54,8 @@ ENGLISH = {
     "checked": "Checked", "approved": "Approved",
 }
 FORCE_NAMES = {"P": "P", "G_5": "G₅", "F_I5": "F_I5", "G_4": "G₄", "F_I4": "F_I4", "N": "N",
-               "R_B": "R_B", "R_O2": "R_O2", "R_A": "R_A", "R_O4": "R_O4", "R_C": "R_C"}
+               "R_B": "R_B", "R_O2": "R_O2", "R_A": "R_A", "R_O4": "R_O4", "R_C": "R_C",
+               "G_3": "G₃", "F_I3": "F_I3", "R_3B": "R_3B"}
 ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
 TORQUE_STEP_DEG = 1.0
 
@@ -66,7 +68,7 @@ class ForcesSheet:
     scale: float                            # the mechanism's reduction 1:scale
     diagram_deg: tuple[float, float]
     force_scales: tuple[float, float]       # μF of the two mechanism drawings, N/mm
-    polygon_scales: tuple[float, float]     # μF of the two polygons, N/mm
+    polygon_scales: tuple[float, ...]       # μF of the polygons (ram group, then lever), N/mm
     arrows: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]]
     """(drawing, force name) → tail and head on the paper, mm."""
     torque_chart: tuple[float, float, tuple[float, float]]   # μM, μφ, paper origin
@@ -104,12 +106,16 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
         force_scales.append(mu_f)
 
     poly_w = (bx1 - split_x - GAP) / 2.0
+    poly_h = (by1 - split_y - GAP) / 2.0
     polygon_scales = []
-    for k, angle in enumerate(diagrams):
-        cell = (split_x + GAP + k * poly_w, split_y + GAP, split_x + (k + 1) * poly_w, by1 - GAP)
-        items, mu = _polygon(design, rpm, masses, angle, cell, lab)
-        areas[f"polygon {k + 1}"] = (cell, tuple(items))
-        polygon_scales.append(mu)
+    for r, (group, build) in enumerate((("ram", force_polygon), ("lever", lever_force_polygon))):
+        for k, angle in enumerate(diagrams):
+            cell = (split_x + GAP + k * poly_w, by1 - GAP - (r + 1) * poly_h,
+                    split_x + (k + 1) * poly_w, by1 - GAP - r * poly_h - (GAP if r else 0.0))
+            poly = build(design, angle, rpm, masses)
+            items, mu = _polygon(poly, cell, lab[f"polygon_{group}"])
+            areas[f"{group} polygon {k + 1}"] = (cell, tuple(items))
+            polygon_scales.append(mu)
 
     table_w = TITLE_WIDTH
     charts_right = bx1 - table_w - 2 * GAP
@@ -176,9 +182,13 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tupl
     place = fit(mech.bounds(design), box, scale)
     items: list[Item] = mech.frame_items(design, place) + mech.links_at(design, angle, place, OUTLINE)
     forces = joint_forces(design, rpm, masses, angle)
-    mu_f = nice_scale(max(math.hypot(*f) for _, _, f in forces), ARROW_MM, FINE_MANTISSAS)
     points = {name: place(p) for name, p in mech.joints(design, angle).items()}
     points["tool"] = np.array(mech.tool_point(points["C"]))
+    # μF: the largest force ARROW_MM long, and every arrow and its name inside the box
+    need = max(math.hypot(*f) for _, _, f in forces) / ARROW_MM
+    for _, where, force in forces:
+        need = max(need, math.hypot(*force) / max(_room(points[where], force, box) - 8.0, 1.0))
+    mu_f = nice_scale(need, 1.0, FINE_MANTISSAS)
     taken: list[Box] = []
     for joint in mech.joint_labels(design, angle, place, 3.5):      # crowded (small sheets): left out
         placed = place_label(joint.text, joint.position, joint.height, taken, within=box, gap=0.0,
@@ -195,11 +205,18 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tupl
     return items, mu_f
 
 
-def _polygon(design, rpm, masses, angle, cell: Box, lab) -> tuple[list[Item], float]:
-    poly = force_polygon(design, angle, rpm, masses)
+def _room(tail: np.ndarray, force: np.ndarray, box: Box) -> float:
+    """How far from ``tail`` along ``force`` the box reaches, mm."""
+    u = force / math.hypot(*force)
+    reach = [((box[2] if u[0] > 0 else box[0]) - tail[0]) / u[0] if abs(u[0]) > 1e-12 else math.inf,
+             ((box[3] if u[1] > 0 else box[1]) - tail[1]) / u[1] if abs(u[1]) > 1e-12 else math.inf]
+    return max(min(reach), 0.0)
+
+
+def _polygon(poly, cell: Box, title_text: str) -> tuple[list[Item], float]:
     cw, ch = cell[2] - cell[0], cell[3] - cell[1]
     mu = polygon_fit_scale(poly, cw - 24.0, ch - 3 * CAPTION - 14.0)
-    title = caption(lab["polygon"].format(angle=number_text(round(angle, 2)), mu_f=number_text(mu)),
+    title = caption(title_text.format(angle=number_text(round(poly.crank_deg, 2)), mu_f=number_text(mu)),
                     ((cell[0] + cell[2]) / 2.0, cell[3]), cw - 4.0, 3.5)
     ex = polygon_extent(poly, mu)
     cx, cy = (cell[0] + cell[2]) / 2.0, (cell[1] + cell[3] - 3 * CAPTION) / 2.0

@@ -15,7 +15,8 @@ def forces_labels() -> dict[str, str]:
         "title": translate("Drawing", "Kinetostatic analysis"),
         "mechanism": translate("Drawing", "Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), "
                                           "μF = {mu_f} N/mm"),
-        "polygon": translate("Drawing", "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm"),
+        "polygon_ram": translate("Drawing", "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm"),
+        "polygon_lever": translate("Drawing", "Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm"),
         "torque": translate("Drawing", "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min"),
         "energy": translate("Drawing", "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J"),
         "M": translate("Drawing", "M/(N·m)"), "E": translate("Drawing", "E/J"), "phi": translate("Drawing", "φ/(°)"),

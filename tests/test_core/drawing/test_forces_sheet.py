@@ -4,12 +4,15 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from core.cli.cmd_dynamics import speed_rows
 from core.drawing.forces import ENGLISH, forces_sheet, joint_forces
 from core.drawing.motion import motion_sheet
 from core.drawing.sheet import Polyline, outside_border, overlapping_texts, paper
 from core.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.errors import DesignError
 from core.flywheel import summarize
 from core.geometry import synthesize
 from core.kinematics import rpm_to_omega
@@ -130,3 +133,21 @@ def test_chinese_labels_change_the_texts_only():
     assert en.force_scales == zh.force_scales and en.scale == zh.scale
     assert any(getattr(it, "text", "").startswith("中文") for it in zh.sheet.items)
     assert overlapping_texts(zh.sheet) == [] and outside_border(zh.sheet) == []
+
+
+finite = dict(allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=25, deadline=None)
+@given(crank=st.floats(30, 300, **finite), k=st.floats(1.1, 2.5, **finite),
+       stretch=st.floats(1.1, 3.0, **finite), rod=st.one_of(st.none(), st.floats(0.3, 1.0, **finite)),
+       work=st.floats(0, 360, **finite), back=st.floats(0, 360, **finite),
+       size=st.sampled_from(["A1", "A2", "A3"]), rpm=st.floats(10, 120, **finite))
+def test_any_design_positions_and_paper_are_laid_out(crank, k, stretch, rod, work, back, size, rpm):
+    theta = math.pi * (k - 1) / (k + 1)
+    try:
+        design = synthesize(crank, k, stretch * 2 * crank * (1 + math.sin(theta / 2)), rod_ratio=rod)
+    except DesignError:
+        assume(False)
+    drawn = forces_sheet(design, rpm, masses(design), paper(size), diagram_deg=(work, back))
+    assert_laid_out(drawn.sheet, drawn.areas)
