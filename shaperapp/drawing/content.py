@@ -57,15 +57,15 @@ def motion(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
 
 def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
            choice: SheetChoice) -> Sheet:
-    """The kinetostatic sheet at the first speed; the loads are needed (DesignError naming
-    the cutting force without them)."""
+    """The kinetostatic sheet at the first speed; the loads are needed (UsageError naming
+    the cutting force without them: only the command line can leave them out)."""
     from core.drawing.forces import forces_sheet
     from core.dynamics import masses_for_design
-    from core.errors import DesignError
+    from core.cli.common import UsageError
     from .forces_labels import forces_labels
     if masses is None:
-        raise DesignError("cut_force_N", None, "the forces sheet needs the loads: give the masses and "
-                                               "the cutting force, or a design file with loads")
+        raise UsageError("--cut-force: the forces sheet needs the loads: give the masses and the "
+                         "cutting force, or a design file with loads")
     design = spec.design()
     labels = forces_labels()
     block = TitleBlock(labels["title"], choice.design_name, "", SHEET_NUMBER[choice.content],
