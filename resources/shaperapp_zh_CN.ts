@@ -788,8 +788,12 @@
         <translation>动态静力分析图</translation>
     </message>
     <message>
-        <source>Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm</source>
-        <translation>载荷与运动副反力，φ = {angle}°，μl = {mu} m/mm（{scale}），μF = {mu_f} N/mm</translation>
+        <source>Loads and joint forces, φ = {angle}°</source>
+        <translation>载荷与运动副反力，φ = {angle}°</translation>
+    </message>
+    <message>
+        <source>μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm</source>
+        <translation>μl = {mu} m/mm（{scale}），μF = {mu_f} N/mm</translation>
     </message>
     <message>
         <source>Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm</source>

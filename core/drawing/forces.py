@@ -38,7 +38,8 @@ from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Sheet, Titl
 
 ENGLISH = {
     "title": "Kinetostatic analysis",
-    "mechanism": "Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm",
+    "mechanism": "Loads and joint forces, φ = {angle}°",
+    "mechanism_scales": "μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm",
     "polygon_ram": "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm",
     "polygon_lever": "Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm",
     "torque": "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min",
@@ -58,6 +59,12 @@ FORCE_NAMES = {"P": "P", "G_5": "G₅", "F_I5": "F_I5", "G_4": "G₄", "F_I4": "
                "G_3": "G₃", "F_I3": "F_I3", "R_3B": "R_3B"}
 ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
 TORQUE_STEP_DEG = 1.0
+# room a mechanism drawing keeps beside the links' extent, paper mm: the guide line runs
+# RAM/2 + 6 behind the ram joint's travel and RAM/2 + TOOL_AHEAD + 6 ahead of it (plus a
+# margin), the supports and the tool hang below
+LEFT_OF_TRAVEL = mech.RAM[0] / 2.0 + 6.0 + 4.0
+RIGHT_OF_TRAVEL = mech.RAM[0] / 2.0 + mech.TOOL_AHEAD + 6.0 + 4.0
+BELOW = 14.0
 
 
 @dataclass(frozen=True)
@@ -87,21 +94,18 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     diagrams = diagram_deg or default_diagrams(design, masses.idle_fraction)
     areas: dict[str, tuple[Box, tuple[Item, ...]]] = {}
 
-    cell_w = (split_x - bx0 - GAP) / 2.0
-    cells = [(bx0 + GAP + k * cell_w, split_y + GAP, bx0 + GAP + (k + 1) * cell_w - GAP, by1 - GAP)
-             for k in range(2)]
+    scale, cells = _mechanism_cells(design, (bx0 + GAP, split_y + GAP, split_x, by1 - GAP))
     room = [(c[0], c[1], c[2], c[3] - 3 * CAPTION) for c in cells]
-    bounds = mech.bounds(design)
-    scale = max(standard_scale(bounds[2] - bounds[0], room[0][2] - room[0][0] - mech.RAM[0] - 40.0),
-                standard_scale(bounds[3] - bounds[1], room[0][3] - room[0][1] - 40.0))
     arrows: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]] = {}
     force_scales = []
     for k, (cell, box, angle) in enumerate(zip(cells, room, diagrams)):
         items, mu_f = _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k)
-        items.append(caption(lab["mechanism"].format(angle=number_text(round(angle, 2)),
-                                                     mu=number_text(scale / 1000.0),
-                                                     scale=scale_text(scale), mu_f=number_text(mu_f)),
-                             ((cell[0] + cell[2]) / 2.0, cell[3]), cell[2] - cell[0], 3.5))
+        middle = (cell[0] + cell[2]) / 2.0
+        items.append(caption(lab["mechanism"].format(angle=number_text(round(angle, 2))),
+                             (middle, cell[3]), cell[2] - cell[0], 3.5))
+        items.append(caption(lab["mechanism_scales"].format(mu=number_text(scale / 1000.0),
+                                                            scale=scale_text(scale), mu_f=number_text(mu_f)),
+                             (middle, cell[3] - 1.6 * CAPTION), cell[2] - cell[0], 3.5))
         areas[f"mechanism {k + 1}"] = (cell, tuple(items))
         force_scales.append(mu_f)
 
@@ -154,6 +158,24 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
                        tuple(polygon_scales), arrows, torque_chart, energy_chart, rows, areas)
 
 
+def _mechanism_cells(design: Design, area: Box) -> tuple[float, list[Box]]:
+    """The two mechanism drawings side by side or one above the other, whichever draws
+    them at the larger standard scale (a long rod makes the mechanism wide); the scale."""
+    x0, y0, x1, y1 = area
+    xm, ym = (x0 + x1) / 2.0, (y0 + y1) / 2.0
+    options = [[(x0, y0, xm - GAP / 2.0, y1), (xm + GAP / 2.0, y0, x1, y1)],
+               [(x0, ym + GAP / 2.0, x1, y1), (x0, y0, x1, ym - GAP / 2.0)]]
+    b = mech.bounds(design)
+    best = None
+    for cells in options:
+        w, h = cells[0][2] - cells[0][0], cells[0][3] - cells[0][1] - 3 * CAPTION
+        scale = max(standard_scale(b[2] - b[0], w - LEFT_OF_TRAVEL - RIGHT_OF_TRAVEL),
+                    standard_scale(b[3] - b[1], h - 2 * BELOW))
+        if best is None or scale < best[0]:
+            best = (scale, cells)
+    return best
+
+
 def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: float
                  ) -> list[tuple[str, str, np.ndarray]]:
     """(name, where, force in N) on the mechanism at one angle: the loads on the ram (P at
@@ -179,7 +201,9 @@ def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: 
 
 
 def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tuple[list[Item], float]:
-    place = fit(mech.bounds(design), box, scale)
+    # the guide line reaches past C's travel by these (mechanism.frame_items): off centre
+    place = fit(mech.bounds(design), (box[0] + LEFT_OF_TRAVEL, box[1] + BELOW,
+                                      box[2] - RIGHT_OF_TRAVEL, box[3] - BELOW), scale)
     items: list[Item] = mech.frame_items(design, place) + mech.links_at(design, angle, place, OUTLINE)
     forces = joint_forces(design, rpm, masses, angle)
     points = {name: place(p) for name, p in mech.joints(design, angle).items()}

@@ -13,8 +13,8 @@ def forces_labels() -> dict[str, str]:
     return {
         **title_labels(),
         "title": translate("Drawing", "Kinetostatic analysis"),
-        "mechanism": translate("Drawing", "Loads and joint forces, φ = {angle}°, μl = {mu} m/mm ({scale}), "
-                                          "μF = {mu_f} N/mm"),
+        "mechanism": translate("Drawing", "Loads and joint forces, φ = {angle}°"),
+        "mechanism_scales": translate("Drawing", "μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm"),
         "polygon_ram": translate("Drawing", "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm"),
         "polygon_lever": translate("Drawing", "Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm"),
         "torque": translate("Drawing", "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min"),
