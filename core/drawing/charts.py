@@ -44,9 +44,10 @@ def place_label(text: str, at: Pair, height: float, taken: list[Box],
                 preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
                 optional: bool = False, align: str | None = None, rings: int = 3) -> Text | None:
     """``text`` beside the point ``at``: the first of eight directions (starting with
-    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of ``taken`` and lies ``within``;
-    then appends its box to ``taken``. When no spot is free: None if ``optional``, else
-    the first spot. ``align`` fixes the alignment (default: away from the point)."""
+    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of
+    ``taken`` and lies ``within``; then appends its box to ``taken``. When no spot is free:
+    None if ``optional``, else the first spot. ``align`` fixes the alignment (default: away
+    from the point)."""
     start = math.atan2(preferred[1], preferred[0])
     first = None
     for k in range(8 * rings):
@@ -149,8 +150,9 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
           mean: float | None = None) -> Chart:
     """Curves over ``x`` in ``box`` with a horizontal x axis through y = 0, a y axis at x[0],
     arrows on both, ticks at ``x_ticks`` (value, label) and a few round y ticks; ``mean`` a
-    thin dashed horizontal line (e.g. the mean torque). Scales from the round series; the x axis keeps 12 mm of the box
-    for its title, the y axis ``height``·6 mm for its tick labels."""
+    thin dashed horizontal line (e.g. the mean torque). Scales from the round series; the
+    x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
+    labels."""
     x0, y0, x1, y1 = box
     left = x0 + 6.0 * height
     span_x = float(x[-1] - x[0])

@@ -162,7 +162,8 @@ class DrawingSheetDialog(QDialog):
             self.export(path)
         except ValueError:
             failure = self.tr("A drawing sheet is written as PDF (.pdf), SVG (.svg) or DXF (.dxf); "
-                              "%1 is none of them. Nothing was written.").replace("%1", os.path.basename(path))
+                              "%1 is none of them. Nothing was written.")
+            failure = failure.replace("%1", os.path.basename(path))
         except MissingFontError:
             failure = self.tr("No font with Chinese characters is installed: install one (on "
                               "Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")

@@ -12,8 +12,9 @@ from hypothesis import strategies as st
 from core.drawing import mechanism as mech
 from core.drawing.dxf import CENTER, LAYERS, LINETYPES
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import (PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, item_box, outside_border, overlapping_texts,
-                                paper, standard_scale, text_width)
+from core.drawing.sheet import (PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, item_box,
+                                outside_border, overlapping_texts, paper, standard_scale,
+                                text_width)
 from core.drawing.sheet_dxf import save_sheet_dxf
 from core.geometry import synthesize
 
@@ -105,7 +106,8 @@ def test_limit_positions_are_drawn_thick_and_the_lever_has_its_length():
 
 def test_chinese_labels_change_the_texts_not_the_drawing():
     en = motion_sheet(BLOCK, 40.0, paper("A1")).sheet
-    zh = motion_sheet(BLOCK, 40.0, paper("A1"), labels={"title": "运动分析图", "L1": "曲柄 O2A，L1"}).sheet
+    zh = motion_sheet(BLOCK, 40.0, paper("A1"),
+                      labels={"title": "运动分析图", "L1": "曲柄 O2A，L1"}).sheet
     lines = lambda s: [p.points.tobytes() for p in s.items if isinstance(p, Polyline)]  # noqa: E731
     assert lines(en) == lines(zh)
     assert "运动分析图" in {t.text for t in zh.items if isinstance(t, Text)}
