@@ -15,10 +15,10 @@ from PySide6.QtWidgets import (QComboBox, QDialog, QDialogButtonBox, QDoubleSpin
                                QFormLayout, QHBoxLayout, QLabel, QLineEdit, QMessageBox, QSpinBox,
                                QWidget)
 
-from core.drawing.motion import motion_sheet
+from core.drawing.motion import MAX_POSITIONS, motion_sheet
 from core.drawing.sheet import PAPERS, Sheet
 from core.dynamics import masses_for_design
-from core.positions import DEFAULT_COUNT, MAX_COUNT
+from core.positions import DEFAULT_COUNT
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import MAX_TEXT, design_file_name
@@ -47,7 +47,7 @@ class DrawingSheetDialog(QDialog):
         self.content = QComboBox()
         self.content.addItem(self.tr("Motion analysis"), "motion")
         self.count = QSpinBox()
-        self.count.setRange(1, MAX_COUNT)
+        self.count.setRange(1, MAX_POSITIONS)
         self.count.setValue(DEFAULT_COUNT)
         self.angles = []
         for _ in range(2):

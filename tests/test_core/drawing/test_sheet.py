@@ -171,3 +171,10 @@ def test_every_text_height_is_from_the_standard_series(size):
     sheet = motion_sheet(ROD, 40.0, paper(size)).sheet
     heights = {t.height for t in sheet.items if isinstance(t, Text)}
     assert heights <= set(TEXT_HEIGHTS), heights
+
+
+def test_more_positions_than_a_sheet_can_show_are_refused():
+    from core.errors import DesignError
+    motion_sheet(BLOCK, 40.0, paper("A1"), count=72)
+    with pytest.raises(DesignError, match="positions"):
+        motion_sheet(BLOCK, 40.0, paper("A1"), count=73)

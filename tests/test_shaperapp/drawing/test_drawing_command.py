@@ -90,6 +90,7 @@ def test_dxf_written_and_measures_true(tmp_path):
     (["--content", "cams"], "--content"),
     (["--content", "forces"], "--content"),
     (["--positions", "0"], "positions"),
+    (["--positions", "73"], "positions"),
     (["--diagrams", "30"], "diagrams"),
     (["--date", "a\nb"], "--date"),
 ])
