@@ -114,6 +114,8 @@ def test_dxf_written_and_measures_true(tmp_path):
     scale = float(next(re.search(r"1:([\d.]+)", t).group(1) for t in texts if "μl" in t))
     circle = doc.modelspace().query('CIRCLE[layer=="CENTER"]')[0]
     assert circle.dxf.radius * scale == pytest.approx(100.0, rel=1e-12)
+    # no --title and no design file: the title block names the design by its inputs
+    assert "L1 100 mm, K 1.46, H 312 mm, L4/L3 0.3" in texts
 
 
 @pytest.mark.parametrize("words, option", [
