@@ -143,6 +143,13 @@ def test_bad_output_name_refused(name, tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+def test_a_folder_as_output_refused(tmp_path):
+    (tmp_path / "m.dxf").mkdir()
+    status, _, stderr = shaper_in_process("drawing", *BLOCK, "-o", tmp_path / "m.dxf")
+    assert status == 2 and "--output" in stderr and "folder" in stderr
+    assert [p.name for p in tmp_path.iterdir()] == ["m.dxf"] and not any((tmp_path / "m.dxf").iterdir())
+
+
 def test_unwritable_folder_refused_and_old_file_kept(tmp_path):
     import os
     if os.geteuid() == 0:
