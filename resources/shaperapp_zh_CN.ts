@@ -804,8 +804,8 @@
         <translation>导杆（构件 3）的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
     </message>
     <message>
-        <source>Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min</source>
-        <translation>曲柄驱动力矩 M–φ 曲线，点画线为平均值 M_m，n = {rpm} r/min</translation>
+        <source>Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min</source>
+        <translation>曲柄驱动力矩 M–φ 曲线，虚线为平均值 M_m，n = {rpm} r/min</translation>
     </message>
     <message>
         <source>Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J</source>

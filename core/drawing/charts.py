@@ -15,8 +15,8 @@ import numpy as np
 
 from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
-from .dxf import CENTER, OUTLINE, THIN
-from .sheet import Box, Item, Pair, Text, line, number_text
+from .dxf import DASHED, OUTLINE, THIN
+from .sheet import TEXT_HEIGHTS, Box, Item, Pair, Text, line, number_text
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
 TICK = 1.5
@@ -44,9 +44,10 @@ def place_label(text: str, at: Pair, height: float, taken: list[Box],
                 preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
                 optional: bool = False, align: str | None = None, rings: int = 3) -> Text | None:
     """``text`` beside the point ``at``: the first of eight directions (starting with
-    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of ``taken`` and lies ``within``;
-    then appends its box to ``taken``. When no spot is free: None if ``optional``, else
-    the first spot. ``align`` fixes the alignment (default: away from the point)."""
+    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of
+    ``taken`` and lies ``within``; then appends its box to ``taken``. When no spot is free:
+    None if ``optional``, else the first spot. ``align`` fixes the alignment (default: away
+    from the point)."""
     start = math.atan2(preferred[1], preferred[0])
     first = None
     for k in range(8 * rings):
@@ -149,8 +150,9 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
           mean: float | None = None) -> Chart:
     """Curves over ``x`` in ``box`` with a horizontal x axis through y = 0, a y axis at x[0],
     arrows on both, ticks at ``x_ticks`` (value, label) and a few round y ticks; ``mean`` a
-    dashed horizontal line. Scales from the round series; the x axis keeps 12 mm of the box
-    for its title, the y axis ``height``·6 mm for its tick labels."""
+    thin dashed horizontal line (e.g. the mean torque). Scales from the round series; the
+    x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
+    labels."""
     x0, y0, x1, y1 = box
     left = x0 + 6.0 * height
     span_x = float(x[-1] - x[0])
@@ -168,6 +170,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     items: list[Item] = [*arrow((left, zero), (x_end, zero), THIN),
                          *arrow((left, y_lo), (left, y_hi), THIN)]
     taken: list = []
+    small = max((h for h in TEXT_HEIGHTS if h < height), default=height)   # the ticks' labels
     for c in curves:
         pts = to_paper(x, c.y)
         items.append(line(pts, c.layer))
@@ -175,20 +178,20 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
         px = left + (value - x[0]) / x_scale
         items.append(line([(px, zero - TICK), (px, zero + TICK)], THIN))
         if label:
-            lab = Text(label, (px, zero - TICK - 1.0), height * 0.72 if height > 2.5 else height, "ct")
+            lab = Text(label, (px, zero - TICK - 1.0), small, "ct")
             if not any(_meets(lab.box(), b) for b in taken):
                 taken.append(lab.box())
                 items.append(lab)
     for value in _round_ticks(bottom, top, y_scale):
         py = zero + value / y_scale
         items.append(line([(left - TICK, py), (left, py)], THIN))
-        lab = Text(number_text(value), (left - TICK - 1.0, py), height * 0.72, "rm")
+        lab = Text(number_text(value), (left - TICK - 1.0, py), small, "rm")
         if abs(value) > 0 and not any(_meets(lab.box(), b) for b in taken):
             taken.append(lab.box())
             items.append(lab)
     if mean is not None:
         py = zero + mean / y_scale
-        items.append(line([(left, py), (left + span_x / x_scale, py)], CENTER))
+        items.append(line([(left, py), (left + span_x / x_scale, py)], DASHED))
     items.append(Text(y_title, (left + 1.5, y_hi), height, "lt"))
     items.append(Text(x_title, (x_end, zero + 1.5), height, "rb"))
     return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi)

@@ -42,7 +42,7 @@ ENGLISH = {
     "mechanism_scales": "μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm",
     "polygon_ram": "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm",
     "polygon_lever": "Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm",
-    "torque": "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min",
+    "torque": "Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min",
     "energy": "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J",
     "M": "M/(N·m)", "E": "E/J", "phi": "φ/(°)",
     "mu_M": "μM = {mu} (N·m)/mm", "mu_E": "μE = {mu} J/mm", "mu_phi": "μφ = {mu} °/mm",

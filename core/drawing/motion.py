@@ -20,6 +20,7 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from core.errors import DesignError
 from core.geometry import Design
 from core.kinematics import solve
 from core.polygons import acceleration_polygon, velocity_polygon
@@ -52,6 +53,7 @@ ENGLISH = {
 POINT_NAMES = {"p": "p", "a2": "a₂", "a3": "a₃", "b": "b", "c": "c", "p'": "p′", "a2'": "a₂′",
                "k'": "k′", "n3'": "n₃′", "a3'": "a₃′", "b'": "b′", "c'": "c′", "n4'": "n₄′"}
 GAP = 6.0                     # mm between the areas of the sheet
+MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
 TABLE_ROW = 7.0
 
@@ -72,7 +74,10 @@ class MotionSheet:
 def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                  diagram_deg: tuple[float, float] | None = None, idle_fraction: float = 0.05,
                  labels: Mapping[str, str] = ENGLISH, block: TitleBlock | None = None) -> MotionSheet:
-    """The motion sheet of ``design`` at ``rpm`` on ``paper``."""
+    """The motion sheet of ``design`` at ``rpm`` on ``paper``; DesignError for more than
+    MAX_POSITIONS positions."""
+    if not 1 <= count <= MAX_POSITIONS:
+        raise DesignError("positions", count, f"must be 1 to {MAX_POSITIONS} on a drawing sheet")
     lab = {**ENGLISH, **labels}
     bx0, by0, bx1, by1 = paper.border
     width, height = bx1 - bx0, by1 - by0

@@ -12,7 +12,9 @@ from pathlib import Path
 
 from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
 from core.cli.output import OutputError
+from core.drawing.motion import MAX_POSITIONS
 from core.drawing.sheet import PAPERS
+from core.errors import DesignError
 from core.positions import DEFAULT_COUNT, check_count
 
 from shaperapp.widgets.command_line import (check_output_folder, cover_text, design_name,
@@ -49,7 +51,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
                         help="language of the sheet's texts: en, or zh (= zh_CN) (default en)")
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
-                        help="number of equally spaced crank positions drawn (default 12)")
+                        help="number of equally spaced crank positions drawn, 1 to 72 (default 12)")
     parser.add_argument("--diagrams", metavar="A,B",
                         help="crank angles (degrees) of the two polygon positions (default: the "
                              "numbered positions nearest mid working and mid return stroke)")
@@ -78,6 +80,8 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
     if args.content not in CONTENTS:
         raise UsageError(f"--content: {args.content!r} is not one of {', '.join(CONTENTS)}")
     count = check_count(number("positions", args.positions))
+    if count > MAX_POSITIONS:
+        raise DesignError("positions", count, f"must be 1 to {MAX_POSITIONS} on a drawing sheet")
     diagrams = diagram_angles(args)
     date = cover_text("--date", args.date) or datetime.date.today().isoformat()
     return SheetChoice(args.content, paper, count, diagrams,

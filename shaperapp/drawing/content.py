@@ -9,6 +9,8 @@ from core.drawing.sheet import Sheet, TitleBlock, paper
 from core.dynamics import MassProperties
 from core.spec import Spec
 
+from shaperapp.widgets.command_line import inputs_name
+
 from .labels import motion_labels
 
 CONTENTS = ("motion", "forces")
@@ -48,7 +50,8 @@ def motion(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
     design = spec.design()
     idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
     labels = motion_labels()
-    block = TitleBlock(labels["title"], choice.design_name, "", SHEET_NUMBER[choice.content],
+    block = TitleBlock(labels["title"], choice.design_name or inputs_name(spec), "",
+                       SHEET_NUMBER[choice.content],
                        choice.drawn, choice.date, choice.school)
     return motion_sheet(design, float(rpms[0]), paper(choice.paper), count=choice.count,
                         diagram_deg=choice.diagram_deg, idle_fraction=idle, labels=labels,

@@ -15,10 +15,10 @@ from PySide6.QtWidgets import (QComboBox, QDialog, QDialogButtonBox, QDoubleSpin
                                QFormLayout, QHBoxLayout, QLabel, QLineEdit, QMessageBox, QSpinBox,
                                QWidget)
 
-from core.drawing.motion import motion_sheet
+from core.drawing.motion import MAX_POSITIONS, motion_sheet
 from core.drawing.sheet import PAPERS, Sheet
 from core.dynamics import masses_for_design
-from core.positions import DEFAULT_COUNT, MAX_COUNT
+from core.positions import DEFAULT_COUNT
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import MAX_TEXT, design_file_name
@@ -48,7 +48,7 @@ class DrawingSheetDialog(QDialog):
         self.content.addItem(self.tr("Motion analysis"), "motion")
         self.content.addItem(self.tr("Kinetostatic analysis"), "forces")
         self.count = QSpinBox()
-        self.count.setRange(1, MAX_COUNT)
+        self.count.setRange(1, MAX_POSITIONS)
         self.count.setValue(DEFAULT_COUNT)
         self.angles = []
         for _ in range(2):
@@ -163,7 +163,8 @@ class DrawingSheetDialog(QDialog):
             self.export(path)
         except ValueError:
             failure = self.tr("A drawing sheet is written as PDF (.pdf), SVG (.svg) or DXF (.dxf); "
-                              "%1 is none of them. Nothing was written.").replace("%1", os.path.basename(path))
+                              "%1 is none of them. Nothing was written.")
+            failure = failure.replace("%1", os.path.basename(path))
         except MissingFontError:
             failure = self.tr("No font with Chinese characters is installed: install one (on "
                               "Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")

@@ -17,7 +17,7 @@ def forces_labels() -> dict[str, str]:
         "mechanism_scales": translate("Drawing", "μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm"),
         "polygon_ram": translate("Drawing", "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm"),
         "polygon_lever": translate("Drawing", "Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm"),
-        "torque": translate("Drawing", "Driving torque on the crank M over φ, mean M_m dash-dot, n = {rpm} r/min"),
+        "torque": translate("Drawing", "Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min"),
         "energy": translate("Drawing", "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J"),
         "M": translate("Drawing", "M/(N·m)"), "E": translate("Drawing", "E/J"), "phi": translate("Drawing", "φ/(°)"),
         "mu_M": translate("Drawing", "μM = {mu} (N·m)/mm"), "mu_E": translate("Drawing", "μE = {mu} J/mm"),

@@ -29,6 +29,7 @@ from core.metrics import CycleMetrics, analyze
 from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
 from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
+from shaperapp.widgets.command_line import inputs_name
 
 from . import figures
 from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
@@ -119,18 +120,6 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
     finally:
         views.close()
     return report
-
-
-def inputs_name(spec: Spec) -> str:
-    """A design without a file or library name is named by its inputs, never "Untitled"."""
-    if spec.mode == "synthesis":
-        text = f"L1 {spec.crank:g} mm, K {spec.time_ratio:g}, H {spec.stroke:g} mm"
-    else:
-        text = f"L1 {spec.crank:g} mm, L2 {spec.frame:g} mm, L3 {spec.lever:g} mm"
-    if spec.variant == "rod":
-        text += f", L4 {spec.rod_length:g} mm" if spec.rod_input == "length" \
-            else f", L4/L3 {spec.rod_ratio:g}"
-    return text
 
 
 # ---- sections --------------------------------------------------------------

@@ -31,6 +31,18 @@ def design_file_name(path: str) -> str:
     return name
 
 
+def inputs_name(spec) -> str:
+    """A design without a file or library name is named by its inputs, never "Untitled"."""
+    if spec.mode == "synthesis":
+        text = f"L1 {spec.crank:g} mm, K {spec.time_ratio:g}, H {spec.stroke:g} mm"
+    else:
+        text = f"L1 {spec.crank:g} mm, L2 {spec.frame:g} mm, L3 {spec.lever:g} mm"
+    if spec.variant == "rod":
+        text += f", L4 {spec.rod_length:g} mm" if spec.rod_input == "length" \
+            else f", L4/L3 {spec.rod_ratio:g}"
+    return text
+
+
 def design_name(args: argparse.Namespace) -> str:
     """--title, else the design file's name, else ''."""
     if args.title:

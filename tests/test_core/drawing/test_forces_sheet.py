@@ -81,7 +81,7 @@ def _curve(items, n_min=100):
 
 def test_torque_curve_and_mean_measure_true():
     """The torque curve read off the paper with the stated μM and μφ is core's torque, and
-    its dash-dot mean line is the cycle mean (trapezoid rule over 0.1°, independent of
+    its dashed mean line is the cycle mean (trapezoid rule over 0.1°, independent of
     core.flywheel's exact integration)."""
     m = masses(BLOCK)
     drawn = forces_sheet(BLOCK, 40.0, m, paper("A1"))
@@ -95,7 +95,7 @@ def test_torque_curve_and_mean_measure_true():
     fine = np.radians(np.linspace(0.0, 360.0, 3601))
     t = solve_dynamics(BLOCK, fine, [40.0], m).crank_torque[0]
     mean = np.trapezoid(t, fine) / (2 * math.pi)
-    dashed = [it for it in items if isinstance(it, Polyline) and it.layer == "CENTER"]
+    dashed = [it for it in items if isinstance(it, Polyline) and it.layer == "DASHED"]
     assert len(dashed) == 1
     assert (dashed[0].points[0, 1] - oy) * mu_m == pytest.approx(mean, rel=5e-3)
 

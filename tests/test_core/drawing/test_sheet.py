@@ -12,8 +12,9 @@ from hypothesis import strategies as st
 from core.drawing import mechanism as mech
 from core.drawing.dxf import CENTER, LAYERS, LINETYPES
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import (PAPERS, Circle, Polyline, Text, item_box, outside_border, overlapping_texts,
-                                paper, standard_scale, text_width)
+from core.drawing.sheet import (PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, item_box,
+                                outside_border, overlapping_texts, paper, standard_scale,
+                                text_width)
 from core.drawing.sheet_dxf import save_sheet_dxf
 from core.geometry import synthesize
 
@@ -105,7 +106,8 @@ def test_limit_positions_are_drawn_thick_and_the_lever_has_its_length():
 
 def test_chinese_labels_change_the_texts_not_the_drawing():
     en = motion_sheet(BLOCK, 40.0, paper("A1")).sheet
-    zh = motion_sheet(BLOCK, 40.0, paper("A1"), labels={"title": "运动分析图", "L1": "曲柄 O2A，L1"}).sheet
+    zh = motion_sheet(BLOCK, 40.0, paper("A1"),
+                      labels={"title": "运动分析图", "L1": "曲柄 O2A，L1"}).sheet
     lines = lambda s: [p.points.tobytes() for p in s.items if isinstance(p, Polyline)]  # noqa: E731
     assert lines(en) == lines(zh)
     assert "运动分析图" in {t.text for t in zh.items if isinstance(t, Text)}
@@ -162,3 +164,17 @@ def test_drawings_stay_in_their_own_areas_which_do_not_overlap(design, size):
         for b_name, (b, _) in areas[i + 1:]:
             assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]), (a_name, b_name)
     assert outside_border(drawn.sheet) == [] and overlapping_texts(drawn.sheet) == []
+
+
+@pytest.mark.parametrize("size", ["A0", "A1", "A2", "A3"])
+def test_every_text_height_is_from_the_standard_series(size):
+    sheet = motion_sheet(ROD, 40.0, paper(size)).sheet
+    heights = {t.height for t in sheet.items if isinstance(t, Text)}
+    assert heights <= set(TEXT_HEIGHTS), heights
+
+
+def test_more_positions_than_a_sheet_can_show_are_refused():
+    from core.errors import DesignError
+    motion_sheet(BLOCK, 40.0, paper("A1"), count=72)
+    with pytest.raises(DesignError, match="positions"):
+        motion_sheet(BLOCK, 40.0, paper("A1"), count=73)

@@ -1,4 +1,5 @@
 """``shaper drawing``: the files it writes measured, and bad input refused before writing."""
+import math
 import re
 import shutil
 import subprocess
@@ -62,14 +63,44 @@ def test_chinese_sheet_embeds_a_cjk_font(tmp_path):
     assert "运动分析图" in text and "张三" in text
 
 
-def test_svg_is_in_mm(tmp_path):
+def test_svg_is_in_mm_and_the_lever_measures_true(tmp_path):
+    """In the SVG (width in mm, the viewBox its user units): the thick lines are 0.5 mm and
+    the thin 0.25 mm wide; the pairs of thick lines from one point are the crank from O2
+    and the lever from O4 at the two limit positions: times the scale the caption states
+    they are L1 and L3 long, and O2O4 is L2 (the numbers of shaper synth)."""
     out = tmp_path / "m.svg"
     result = shaper("drawing", *BLOCK, "--sheet", "A2", "-o", out)
     assert result.returncode == 0, result.stderr
     root = ET.parse(out).getroot()
     assert root.get("width") == "594mm" and root.get("height") == "420mm"
     vb = [float(v) for v in root.get("viewBox").split()]
-    assert vb[2] / vb[3] == pytest.approx(594.0 / 420.0)
+    user_per_mm = vb[2] / 594.0
+    assert vb[3] / user_per_mm == pytest.approx(420.0)
+    ns = "{http://www.w3.org/2000/svg}"
+    widths, segments, texts = set(), [], []
+    for group in root.iter(f"{ns}g"):
+        matrix = re.match(r"matrix\(([-\d.e]+),0,0,([-\d.e]+),", group.get("transform", ""))
+        k = float(matrix.group(1)) if matrix else 1.0
+        for poly in group.findall(f"{ns}polyline"):
+            width = float(group.get("stroke-width")) * k / user_per_mm      # mm on paper
+            widths.add(round(width, 3))
+            points = np.array([[float(v) for v in p.split(",")] for p in poly.get("points").split()])
+            if len(points) == 2 and width == pytest.approx(0.5):
+                segments.append(points * k / user_per_mm)
+        # Qt writes one <text> per font run ("…positions, ", "μ", "l = …"): join a group's
+        texts.append("".join("".join(t.itertext()) for t in group.findall(f"{ns}text")))
+    assert widths == {0.25, 0.5}
+    scale = float(next(re.search(r"1:([\d.]+)\)", t).group(1) for t in texts if "μl" in t))
+    starts = {}
+    for seg in segments:
+        starts.setdefault(tuple(np.round(seg[0], 3)), []).append(float(np.hypot(*(seg[1] - seg[0]))))
+    pairs = {start: lengths for start, lengths in starts.items() if len(lengths) == 2}
+    assert len(pairs) == 2
+    (o2, crank), (o4, lever) = sorted(pairs.items(), key=lambda kv: kv[1][0])
+    # shaper synth --crank 100 --K 1.4 --stroke 300: frame O2O4 L2 386.370 mm, lever O4B L3 579.555 mm
+    assert [length * scale for length in crank] == pytest.approx([100.0, 100.0], abs=0.01)
+    assert [length * scale for length in lever] == pytest.approx([579.555, 579.555], abs=0.01)
+    assert math.dist(o2, o4) * scale == pytest.approx(386.370, abs=0.01)
 
 
 def test_dxf_written_and_measures_true(tmp_path):
@@ -83,6 +114,8 @@ def test_dxf_written_and_measures_true(tmp_path):
     scale = float(next(re.search(r"1:([\d.]+)", t).group(1) for t in texts if "μl" in t))
     circle = doc.modelspace().query('CIRCLE[layer=="CENTER"]')[0]
     assert circle.dxf.radius * scale == pytest.approx(100.0, rel=1e-12)
+    # no --title and no design file: the title block names the design by its inputs
+    assert "L1 100 mm, K 1.46, H 312 mm, L4/L3 0.3" in texts
 
 
 @pytest.mark.parametrize("words, option", [
@@ -90,6 +123,7 @@ def test_dxf_written_and_measures_true(tmp_path):
     (["--content", "cams"], "--content"),
     (["--content", "forces"], "--cut-force"),     # the forces sheet needs the loads
     (["--positions", "0"], "positions"),
+    (["--positions", "73"], "positions"),
     (["--diagrams", "30"], "diagrams"),
     (["--date", "a\nb"], "--date"),
 ])
@@ -107,6 +141,13 @@ def test_bad_output_name_refused(name, tmp_path):
     lines = stderr.strip().splitlines()
     assert status == 2 and len(lines) == 1 and "--output" in lines[0], stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_folder_as_output_refused(tmp_path):
+    (tmp_path / "m.dxf").mkdir()
+    status, _, stderr = shaper_in_process("drawing", *BLOCK, "-o", tmp_path / "m.dxf")
+    assert status == 2 and "--output" in stderr and "folder" in stderr
+    assert [p.name for p in tmp_path.iterdir()] == ["m.dxf"] and not any((tmp_path / "m.dxf").iterdir())
 
 
 def test_unwritable_folder_refused_and_old_file_kept(tmp_path):
