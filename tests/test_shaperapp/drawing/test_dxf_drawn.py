@@ -17,24 +17,24 @@ from __future__ import annotations
 import ezdxf
 import numpy as np
 import pytest
-from ezdxf.addons.drawing import Frontend, RenderContext  # noqa: E402
-from ezdxf.addons.drawing.config import BackgroundPolicy, ColorPolicy, Configuration  # noqa: E402
-from ezdxf.addons.drawing.pyqt import PyQtBackend  # noqa: E402
-from PySide6.QtCore import QByteArray, QRectF  # noqa: E402
-from PySide6.QtGui import QColor, QImage, QPainter  # noqa: E402
-from PySide6.QtSvg import QSvgRenderer  # noqa: E402
-from PySide6.QtWidgets import QGraphicsScene  # noqa: E402
+from ezdxf.addons.drawing import Frontend, RenderContext
+from ezdxf.addons.drawing.config import BackgroundPolicy, ColorPolicy, Configuration
+from ezdxf.addons.drawing.pyqt import PyQtBackend
+from PySide6.QtCore import QByteArray, QRectF
+from PySide6.QtGui import QColor, QImage, QPainter
+from PySide6.QtSvg import QSvgRenderer
+from PySide6.QtWidgets import QGraphicsScene
 
-from core.drawing.motion import motion_sheet  # noqa: E402
-from core.drawing.scheme import scheme_document  # noqa: E402
-from core.drawing.sheet import Sheet, Text, paper  # noqa: E402
-from core.drawing.sheet_dxf import save_sheet_dxf  # noqa: E402
-from core.dynamics import MassProperties  # noqa: E402
-from core.geometry import synthesize  # noqa: E402
-from core.kinematics import shape  # noqa: E402
-from core.drawing.forces import forces_sheet  # noqa: E402
-from core.drawing.dxf import save_dxf  # noqa: E402
-from shaperapp.drawing.render import svg_bytes  # noqa: E402
+from core.drawing.motion import motion_sheet
+from core.drawing.scheme import scheme_document
+from core.drawing.sheet import Sheet, Text, paper
+from core.drawing.sheet_dxf import save_sheet_dxf
+from core.dynamics import MassProperties
+from core.geometry import synthesize
+from core.kinematics import shape
+from core.drawing.forces import forces_sheet
+from core.drawing.dxf import save_dxf
+from shaperapp.drawing.render import svg_bytes
 
 PX_PER_MM = 4.0
 TOLERANCE_PX = 2                       # half a millimetre on the paper
