@@ -1,14 +1,16 @@
 """The oscillating roller follower on a disc cam: pitch curve, profile, pressure angle, curvature.
 
 Frame (the cam's own): the cam centre O at the origin and, at cam angle δ = 0, the follower
-pivot A on the +x axis at the centre distance a. The cam turns counter-clockwise by δ; a
-point fixed to the cam is drawn where it is at δ = 0, so the pitch curve is the roller
-centre B carried back by −δ (the inversion method): P(δ) = R(−δ)·B(δ).
+pivot A on the +x axis at the centre distance a. The cam turns clockwise by δ, as the crank
+on its shaft does in the scheme; a point fixed to the cam is drawn where it is at δ = 0, so
+the pitch curve is the roller centre B carried back by +δ (the inversion method).
 
-In the fixed frame B = A + l·(−cos β, k·sin β) with β = ψ0 + ψ the angle AO→AB and k = ±1
-the side of the line of centres the arm lies on (its arrangement). Every derivative is the
-closed form of that expression, with dψ/dδ and d²ψ/dδ² from the law, so the pressure
-angle, the curvature and the profile's normal are exact.
+In the fixed frame B = A + l·(−cos β, side·sin β) with β = ψ0 + ψ the angle AO→AB and
+side = ±1 the side of the line of centres the arm lies on (its arrangement). The algebra is
+done for a counter-clockwise cam (with k = −side) and mirrored in y at the end, which turns
+it into the clockwise one. Every derivative is the closed form of that expression, with
+dψ/dδ and d²ψ/dδ² from the law, so the pressure angle, the curvature and the profile's
+normal are exact.
 """
 from __future__ import annotations
 
@@ -21,17 +23,26 @@ import numpy as np
 from ..errors import DesignError
 from .laws import Motion, Program
 
+TURN = -1
+"""The cam's sense in its frame: −1 clockwise (the crank's, seen as in the scheme)."""
+
 
 @dataclass(frozen=True)
 class Follower:
     """Where the follower sits against the cam (mm, degrees): arm length l, centre
     distance a, the arm's angle ψ0 from the line AO at the lowest position, and the side
-    ``side`` (+1: the arm's roller above the line of centres at δ = 0, −1: below)."""
+    ``side`` (+1: the roller above the line of centres at δ = 0, −1: below, in the cam's
+    frame)."""
 
     arm_mm: float
     distance_mm: float
     initial_deg: float
-    side: int = -1
+    side: int = 1
+
+    @property
+    def k(self) -> int:
+        """The side in the counter-clockwise algebra (mirrored in y for a clockwise cam)."""
+        return TURN * self.side
 
     @property
     def base_radius_mm(self) -> float:
@@ -52,16 +63,17 @@ class Pitch(NamedTuple):
 
 
 def _turn_back(delta: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """(x, y) rotated by −δ: from the fixed frame into the cam's."""
+    """(x, y) rotated by −δ (from the fixed frame into a counter-clockwise cam's), then
+    mirrored in y for a clockwise cam."""
     c, s = np.cos(delta), np.sin(delta)
-    return np.stack([c * x + s * y, -s * x + c * y])
+    return np.stack([c * x + s * y, TURN * (-s * x + c * y)])
 
 
 def pitch(f: Follower, program: Program, delta: np.ndarray) -> Pitch:
     """The roller centre's path on the cam at cam angles ``delta`` (rad)."""
     delta = np.asarray(delta, dtype=float)
     m = program.motion(delta)
-    l, a, k = f.arm_mm, f.distance_mm, float(f.side)
+    l, a, k = f.arm_mm, f.distance_mm, float(f.k)
     beta = math.radians(f.initial_deg) + m.psi
     cb, sb = np.cos(beta), np.sin(beta)
     bx, by = a - l * cb, k * l * sb                     # B in the fixed frame
@@ -78,26 +90,27 @@ def pitch(f: Follower, program: Program, delta: np.ndarray) -> Pitch:
 
 def pressure_angle(f: Follower, p: Pitch) -> np.ndarray:
     """Pressure angle (rad, 0 … π/2) between the cam's push, along the pitch curve's
-    normal, and the roller's velocity: tan α = |l·ψ' + k·(l − a·cos β)| / (a·sin β)."""
+    normal, and the roller's velocity: tan α = |l·ψ' + k·(l − a·cos β)| / (a·sin β)
+    with k = −side for the clockwise cam."""
     l, a = f.arm_mm, f.distance_mm
-    num = l * p.motion.psi1 + f.side * (l - a * np.cos(p.beta))
+    num = l * p.motion.psi1 + f.k * (l - a * np.cos(p.beta))
     return np.arctan2(np.abs(num), a * np.sin(p.beta))
 
 
 def curvature_radius(p: Pitch) -> np.ndarray:
-    """Signed radius of curvature of the pitch curve (mm): positive where it is convex
-    (the curve runs clockwise on the cam as δ grows), negative where concave."""
+    """Signed radius of curvature of the pitch curve (mm): positive where it is convex,
+    negative where concave (the curve runs against the cam's sense as δ grows)."""
     d1, d2 = p.d1, p.d2
     cross = d1[0] * d2[1] - d1[1] * d2[0]
     speed = np.hypot(d1[0], d1[1])
     with np.errstate(divide="ignore"):
-        return np.where(cross == 0.0, np.inf, -speed ** 3 / np.where(cross == 0.0, 1.0, cross))
+        return np.where(cross == 0.0, np.inf, -TURN * speed ** 3 / np.where(cross == 0.0, 1.0, cross))
 
 
 def outward_normal(p: Pitch) -> np.ndarray:
     """Unit normal of the pitch curve pointing away from the cam centre (2, n)."""
     speed = np.hypot(p.d1[0], p.d1[1])
-    return np.stack([-p.d1[1], p.d1[0]]) / speed
+    return TURN * np.stack([-p.d1[1], p.d1[0]]) / speed
 
 
 def profile(p: Pitch, roller_mm: float) -> np.ndarray:

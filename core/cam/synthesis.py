@@ -21,7 +21,7 @@ from scipy.optimize import linprog
 from scipy.spatial import ConvexHull, HalfspaceIntersection
 
 from ..errors import DesignError
-from .follower import Follower
+from .follower import TURN, Follower
 from .laws import Program, law
 
 SAMPLES = 2001
@@ -55,15 +55,16 @@ def _phase_samples(program: Program) -> list[tuple[np.ndarray, np.ndarray, float
     return out
 
 
-def _halfspaces(arm: float, side: int, program: Program, allowance: Allowance) -> np.ndarray:
-    """Rows [gx, gy, −h] of g·(X, Y) ≤ h, the pressure-angle conditions and the search box."""
+def _halfspaces(arm: float, k: int, program: Program, allowance: Allowance) -> np.ndarray:
+    """Rows [gx, gy, −h] of g·(X, Y) ≤ h, the pressure-angle conditions and the search box
+    (k the side in the counter-clockwise algebra, see ``follower``)."""
     rows = []
     for (psi, psi1), allowed in zip(_phase_samples(program), (allowance.rise_deg, allowance.return_deg)):
         t = math.tan(math.radians(allowed))
-        c = arm * psi1 + side * arm
+        c = arm * psi1 + k * arm
         cp, sp = np.cos(psi), np.sin(psi)
-        rows.append(np.column_stack([-side * cp - t * sp, side * sp - t * cp, c]))
-        rows.append(np.column_stack([side * cp - t * sp, -side * sp - t * cp, -c]))
+        rows.append(np.column_stack([-k * cp - t * sp, k * sp - t * cp, c]))
+        rows.append(np.column_stack([k * cp - t * sp, -k * sp - t * cp, -c]))
     box = REACH * arm
     rows.append(np.array([[1.0, 0.0, -box], [-1.0, 0.0, -box], [0.0, 1.0, -box], [0.0, -1.0, -box]]))
     h = np.concatenate(rows)
@@ -91,7 +92,7 @@ def _nearest(vertices: np.ndarray, p: np.ndarray) -> np.ndarray:
 
 def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
     """The follower arrangement on ``side`` with the smallest base radius, or None."""
-    h = _halfspaces(arm_mm, side, program, allowance)
+    h = _halfspaces(arm_mm, TURN * side, program, allowance)
     centre = _inside(h)
     if centre is None:
         return None
@@ -103,14 +104,14 @@ def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -
 
 
 def synthesize(arm_mm: float, program: Program, allowance: Allowance) -> Follower:
-    """The smallest cam for the allowance over both arrangements (the arm below the line
+    """The smallest cam for the allowance over both arrangements (the arm above the line
     of centres on equal radii); DesignError naming ``pressure`` when there is none."""
-    found = [f for f in (smallest(arm_mm, program, allowance, s) for s in (-1, 1)) if f is not None]
+    found = [f for f in (smallest(arm_mm, program, allowance, s) for s in (1, -1)) if f is not None]
     if not found:
         raise DesignError("pressure", allowance.rise_deg,
                           f"is too small: no cam within {REACH:g} arm lengths keeps the pressure "
                           "angle within the allowances")
-    return min(found, key=lambda f: (round(f.base_radius_mm, 9), f.side))
+    return min(found, key=lambda f: (round(f.base_radius_mm, 9), -f.side))
 
 
 def largest_roller(min_convex_mm: float) -> float:

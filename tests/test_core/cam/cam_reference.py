@@ -1,9 +1,9 @@
 """Independent checks of a cam: nothing here is taken from core.cam's derivation.
 
 The mechanism is restated from its definition (the cam's frame: cam centre at the origin,
-pivot on +x at the centre distance at cam angle 0, cam turning counter-clockwise; the
-roller centre at l from the pivot, at the angle ψ0 + ψ from the pivot→centre line, on the
-arm's side k). Positions come from that statement, the follower's angle from the law's
+pivot on +x at the centre distance at cam angle 0, cam turning clockwise; the roller centre
+at l from the pivot, at the angle ψ0 + ψ from the pivot→centre line, on the arm's side k:
++1 above the x axis). Positions come from that statement, the follower's angle from the law's
 ψ(δ) only; every direction is a finite difference and every contact a numeric search.
 """
 from __future__ import annotations
@@ -26,9 +26,9 @@ def rotate(points, angle):
 
 
 def pitch_points(a, l, psi0, k, psi_of, delta):
-    """The roller centre carried onto the cam (the cam turns +δ, so the point on the cam
-    is the fixed-frame point turned back by −δ)."""
-    return rotate(roller_centre(a, l, psi0, k, psi_of(delta)), -np.asarray(delta, dtype=float))
+    """The roller centre carried onto the cam (the cam turns clockwise by δ, so the point
+    on the cam is the fixed-frame point turned back by +δ)."""
+    return rotate(roller_centre(a, l, psi0, k, psi_of(delta)), np.asarray(delta, dtype=float))
 
 
 def numeric_pressure(a, l, psi0, k, psi_of, delta, h=1e-5):
@@ -40,7 +40,7 @@ def numeric_pressure(a, l, psi0, k, psi_of, delta, h=1e-5):
     normal = np.stack([-tangent[1], tangent[0]]) / np.hypot(*tangent)
     psi = psi_of(delta)
     move = (roller_centre(a, l, psi0, k, psi + h) - roller_centre(a, l, psi0, k, psi - h)) / (2 * h)
-    move = rotate(move, -delta)
+    move = rotate(move, delta)
     move = move / np.hypot(*move)
     return np.arccos(np.clip(np.abs(np.sum(normal * move, axis=0)), 0.0, 1.0))
 
@@ -52,7 +52,7 @@ def contact_angle(profile_of, a, l, psi0, k, roller, delta, guess, grid=4001):
     ``profile_of(u)`` gives the profile's points (2, n) in the cam's frame at parameters u
     (rad, one turn); the distance is a dense search refined by a bounded minimization."""
     u = np.linspace(0.0, 2 * math.pi, grid)
-    coarse = rotate(profile_of(u), delta)
+    coarse = rotate(profile_of(u), -delta)
     step = u[1] - u[0]
 
     def distance(psi):
@@ -60,7 +60,7 @@ def contact_angle(profile_of, a, l, psi0, k, roller, delta, guess, grid=4001):
         i = int(np.argmin(np.hypot(coarse[0] - centre[0], coarse[1] - centre[1])))
 
         def d(t):
-            q = rotate(profile_of(np.array([t])), delta)[:, 0]
+            q = rotate(profile_of(np.array([t])), -delta)[:, 0]
             return math.hypot(q[0] - centre[0], q[1] - centre[1])
         best = minimize_scalar(d, bounds=(u[i] - 2 * step, u[i] + 2 * step), method="bounded",
                                options={"xatol": 1e-13})
