@@ -11,7 +11,7 @@ from ..io import table_csv
 from ..kinematics import MAX_RPM, MIN_RPM, crank_angles
 from .common import (UsageError, add_design_options, design_error_text, design_file,
                      design_from_args, number)
-from .output import print_json, print_table, write_output
+from .output import OutputError, print_json, print_table, write_output
 
 HELP = "the feed cam: base radius, centre distance, profile"
 DESCRIPTION = ("The table's feed cam, a disc cam with an oscillating roller follower on the crank's "
@@ -126,8 +126,11 @@ def run(args: argparse.Namespace) -> int:
     if args.csv is not None:
         write_output("--csv", args.csv, table_csv(*cam_table(cam, angles, rpm)))
     if args.dxf is not None:
-        from ..cam.dxf import write_dxf       # ezdxf: only when a drawing is asked for
-        write_dxf("--dxf", args.dxf, cam)
+        from ..cam_drawing import write_cam_dxf     # ezdxf: only when a drawing is asked for
+        try:
+            write_cam_dxf(cam, args.dxf)
+        except OSError as exc:          # a WriteError: names the user's path and a plain reason
+            raise OutputError(f"--dxf: {exc}") from None
     summary = cam_summary(cam)
     summary.update(follower_peaks(cam, rpm))
     if args.json:
