@@ -17,9 +17,10 @@ from .laws import Program
 from .synthesis import SAMPLES, Allowance, largest_roller, synthesize
 from .timing import Timing, timing
 
-MAX_ARM_MM = 5000.0
-MAX_PRESSURE_DEG = 85.0
-"""Largest allowance, degrees: at a right angle the cam pushes across the arm and jams."""
+MIN_ARM_MM, MAX_ARM_MM = 1.0, 5000.0
+MIN_PRESSURE_DEG, MAX_PRESSURE_DEG = 5.0, 85.0
+"""Allowances, degrees: at a right angle the cam pushes across the arm and jams; below 5°
+the cam would be many times the arm's size."""
 
 
 @dataclass(frozen=True)
@@ -36,10 +37,10 @@ class CamInputs:
     distance_mm: float | None = None
 
     def __post_init__(self) -> None:
-        require_range("arm", self.arm_mm, 0.0, MAX_ARM_MM, "mm")
-        require_range("pressure", self.pressure_deg, 0.0, MAX_PRESSURE_DEG, "°", high_open=True)
-        require_range("return_pressure", self.return_pressure_deg, 0.0, MAX_PRESSURE_DEG, "°",
-                      high_open=True)
+        require_range("arm", self.arm_mm, MIN_ARM_MM, MAX_ARM_MM, "mm", low_open=False)
+        for name in ("pressure", "return_pressure"):
+            require_range(name, getattr(self, name + "_deg"), MIN_PRESSURE_DEG, MAX_PRESSURE_DEG, "°",
+                          low_open=False, high_open=True)
         if self.roller_mm is not None:
             require_range("roller", self.roller_mm, 0.0, MAX_ARM_MM, "mm")
         if (self.base_mm is None) != (self.distance_mm is None):
@@ -136,6 +137,7 @@ def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
     roller = biggest if inputs.roller_mm is None else inputs.roller_mm
     if roller > biggest * (1.0 + 1e-12):
         raise DesignError("roller", roller,
-                          f"undercuts: must be ≤ {biggest:.4g} mm, as the pitch curve's smallest convex "
-                          f"radius is {rho:.4g} mm (r ≤ 0.8·ρmin and ρmin − r ≥ 3 mm)")
+                          f"too large: must be ≤ {biggest:.4g} mm (r ≤ 0.8·ρmin and ρmin − r ≥ 3 mm); "
+                          f"the pitch curve's smallest convex radius ρmin is {rho:.4g} mm, and a "
+                          "roller that large undercuts the profile or leaves it pointed")
     return Cam(inputs, f, roller, biggest, rho, up, back, when)

@@ -17,9 +17,11 @@ import numpy as np
 from ..errors import DesignError, require_range
 
 LAWS = ("parabolic", "cosine", "sine", "poly345")
-MAX_SWING_DEG = 90.0
-"""Largest follower swing ψmax, degrees: a feed arm swings 10°–30°; beyond a right angle the
-arm would pass the line of centres."""
+MIN_SWING_DEG, MAX_SWING_DEG = 1.0, 60.0
+"""Follower swing ψmax, degrees: a feed arm swings 10°–30°; these bounds keep the data
+sheet's values with a wide margin and refuse what is surely a slip."""
+MIN_PHASE_DEG = 1.0
+"""Shortest rise or return, degrees of cam angle: shorter would need a cam as large as a room."""
 
 Law = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
@@ -87,9 +89,10 @@ class Program:
         for name in ("rise_law", "return_law"):
             if getattr(self, name) not in LAWS:
                 raise DesignError(name, getattr(self, name), "must be one of " + ", ".join(LAWS))
-        require_range("swing", self.swing_deg, 0.0, MAX_SWING_DEG, "°")
-        require_range("rise", self.rise_deg, 0.0, 360.0, "°", high_open=True)
-        require_range("return", self.return_deg, 0.0, 360.0, "°", high_open=True)
+        require_range("swing", self.swing_deg, MIN_SWING_DEG, MAX_SWING_DEG, "°", low_open=False)
+        require_range("rise", self.rise_deg, MIN_PHASE_DEG, 360.0, "°", low_open=False, high_open=True)
+        require_range("return", self.return_deg, MIN_PHASE_DEG, 360.0, "°", low_open=False,
+                      high_open=True)
         require_range("dwell", self.dwell_deg, 0.0, 360.0, "°", low_open=False, high_open=True)
         total = self.rise_deg + self.dwell_deg + self.return_deg
         if total > 360.0:
