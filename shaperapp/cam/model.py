@@ -1,0 +1,150 @@
+"""The cam's inputs and the last valid cam, beside the design model.
+
+The cam is computed from what the user typed in the Cam tab and from the design on
+screen (its cut window times the feed; its speeds give the follower's ω and α). A typed
+value that cannot make a cam names its field (``error``) and the last valid cam stays;
+a change of the linkage recomputes the cam. Every edit is an undoable step on the design
+model's undo stack, so Ctrl+Z undoes cam and design edits in the order they were made.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from PySide6.QtCore import QCoreApplication, QObject, Signal
+
+from core.cam import Cam, CamInputs, Program, design_cam
+from core.errors import DesignError
+from shaperapp.design.model import DesignModel
+from shaperapp.design.results import COMPUTE_ERRORS, compute_error
+from shaperapp.design.undo import InputEdit, push_edit
+
+NUMBERS = ("arm", "swing", "pressure", "return_pressure", "rise", "dwell", "return")
+OPTIONAL = ("roller", "base", "distance", "phase")      # blank: chosen by the tool
+CHOICES = ("rise_law", "return_law")
+DEFAULTS: dict[str, Any] = {"arm": 120.0, "swing": 15.0, "pressure": 40.0, "return_pressure": 70.0,
+                            "rise": 60.0, "dwell": 10.0, "return": 60.0, "rise_law": "sine",
+                            "return_law": "sine", "roller": "", "base": "", "distance": "", "phase": ""}
+
+
+@dataclass(frozen=True)
+class CamTyped:
+    """The cam's fields as typed: floats, text that is not a number, '' for a blank
+    optional field; one state of the undo history."""
+
+    values: tuple[tuple[str, Any], ...] = tuple(sorted(DEFAULTS.items()))
+
+    @property
+    def dict(self) -> dict[str, Any]:
+        return dict(self.values)
+
+    def with_(self, **changes: Any) -> "CamTyped":
+        return CamTyped(tuple(sorted({**self.dict, **changes}.items())))
+
+
+def _number(name: str, value: Any) -> float:
+    if isinstance(value, str):
+        raise DesignError(name, value, "must be a number")
+    if not math.isfinite(value):
+        raise DesignError(name, value, "must be a finite number")
+    return float(value)
+
+
+def _optional(name: str, value: Any) -> float | None:
+    return None if value == "" else _number(name, value)
+
+
+def cam_inputs(typed: CamTyped) -> tuple[CamInputs, float | None]:
+    """The core inputs and the phase (or None) of the typed fields; DesignError names one."""
+    v = typed.dict
+    program = Program(swing_deg=_number("swing", v["swing"]), rise_deg=_number("rise", v["rise"]),
+                      dwell_deg=_number("dwell", v["dwell"]), return_deg=_number("return", v["return"]),
+                      rise_law=v["rise_law"], return_law=v["return_law"])
+    inputs = CamInputs(arm_mm=_number("arm", v["arm"]), program=program,
+                       pressure_deg=_number("pressure", v["pressure"]),
+                       return_pressure_deg=_number("return_pressure", v["return_pressure"]),
+                       roller_mm=_optional("roller", v["roller"]), base_mm=_optional("base", v["base"]),
+                       distance_mm=_optional("distance", v["distance"]))
+    return inputs, _optional("phase", v["phase"])
+
+
+class CamModel(QObject):
+    """Signals: ``camChanged`` (a new valid cam), ``errorChanged``, ``typedChanged``."""
+
+    camChanged = Signal()
+    errorChanged = Signal()
+    typedChanged = Signal()
+
+    def __init__(self, model: DesignModel, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.design_model = model
+        self._typed = CamTyped()
+        self._error: DesignError | None = None
+        self._cam = self._compute(self._typed)
+        model.resultsChanged.connect(self._recompute)
+        model.forcesChanged.connect(self._recompute)       # the idle margin is a load
+
+    @property
+    def cam(self) -> Cam:
+        """The last valid cam."""
+        return self._cam
+
+    @property
+    def typed(self) -> CamTyped:
+        return self._typed
+
+    @property
+    def error(self) -> DesignError | None:
+        return self._error
+
+    def set_fields(self, **changes: Any) -> None:
+        """Change some typed fields (one undoable step)."""
+        after = self._typed.with_(**changes)
+        if after == self._typed:
+            return
+        names = sorted(changes)
+        push_edit(self.design_model.undo_stack,
+                  InputEdit(self._apply, self._typed, after, ("cam", tuple(names)),
+                            lambda: QCoreApplication.translate("CamModel", "edit cam")))
+
+    def cam_angle(self, crank_angle: np.ndarray | float) -> np.ndarray:
+        """Cam angle (rad) at crank angles (rad): the crank angle less the phase."""
+        t = self._cam.timing
+        return np.asarray(crank_angle, dtype=float) - (0.0 if t is None else math.radians(t.phase_deg))
+
+    def current_cam_angle(self) -> float:
+        m = self.design_model
+        return float(self.cam_angle(m.motion.crank_angle[m.angle_index]))
+
+    def _compute(self, typed: CamTyped) -> Cam:
+        inputs, phase = cam_inputs(typed)
+        m = self.design_model
+        return design_cam(inputs, m.design, m.masses.idle_fraction, phase)
+
+    def _apply(self, typed: CamTyped) -> None:
+        self._typed = typed
+        self.typedChanged.emit()
+        self._recompute()
+
+    def _recompute(self) -> None:
+        try:
+            cam = self._compute(self._typed)
+        except DesignError as exc:
+            self._set_error(exc)
+            return
+        except COMPUTE_ERRORS as exc:
+            self._set_error(compute_error(exc))
+            return
+        self._set_error(None)
+        if cam != self._cam:
+            self._cam = cam
+            self.camChanged.emit()
+
+    def _set_error(self, error: DesignError | None) -> None:
+        if str(error) != str(self._error):
+            self._error = error
+            self.errorChanged.emit()
+        self._error = error
+
