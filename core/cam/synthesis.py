@@ -26,6 +26,8 @@ from .laws import Program, law
 
 SAMPLES = 2001
 """Follower positions per phase at which the allowance is imposed (uniform in the phase)."""
+LP_STRIDE = 20
+"""Every this many conditions set the first try of an interior point (see _inside)."""
 REACH = 50.0
 """The cam centre is sought within this many arm lengths of the pivot."""
 ROLLER_SHARE = 0.8
@@ -71,13 +73,23 @@ def _halfspaces(arm: float, k: int, program: Program, allowance: Allowance) -> n
     return h / np.hypot(h[:, 0], h[:, 1])[:, None]
 
 
-def _inside(h: np.ndarray) -> np.ndarray | None:
-    """A point well inside the polygon (its Chebyshev centre), or None if it is empty."""
+def _chebyshev(h: np.ndarray) -> np.ndarray | None:
     res = linprog([0.0, 0.0, -1.0], A_ub=np.column_stack([h[:, :2], np.ones(len(h))]),
                   b_ub=-h[:, 2], bounds=[(None, None), (None, None), (0.0, None)], method="highs")
     if res.status != 0 or res.x[2] <= 1e-9 * REACH:
         return None
     return res.x[:2]
+
+
+def _inside(h: np.ndarray) -> np.ndarray | None:
+    """A point well inside the polygon, or None if it is empty: the Chebyshev centre of
+    every LP_STRIDE-th condition (neighbouring conditions differ little, and a full LP of
+    thousands of rows took 0.6 s), kept if it satisfies them all, else that of all."""
+    rows = np.r_[np.arange(0, len(h) - 4, LP_STRIDE), np.arange(len(h) - 4, len(h))]
+    point = _chebyshev(h[rows])
+    if point is not None and np.all(h[:, :2] @ point + h[:, 2] < 0.0):
+        return point
+    return _chebyshev(h)
 
 
 def _nearest(vertices: np.ndarray, p: np.ndarray) -> np.ndarray:
