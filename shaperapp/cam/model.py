@@ -16,6 +16,7 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from core.cam import Cam, CamInputs, Program, design_cam
+from core.cam.file import cam_from_dict, cam_to_dict
 from core.errors import DesignError
 from shaperapp.design.model import DesignModel
 from shaperapp.design.results import COMPUTE_ERRORS, compute_error
@@ -83,6 +84,9 @@ class CamModel(QObject):
         self._typed = CamTyped()
         self._error: DesignError | None = None
         self._cam = self._compute(self._typed)
+        self._valid_typed = self._typed
+        model.register_part("cam", self.document)
+        model.loaded.connect(self._load)
         model.resultsChanged.connect(self._recompute)
         model.forcesChanged.connect(self._recompute)       # the idle margin is a load
 
@@ -118,6 +122,15 @@ class CamModel(QObject):
         m = self.design_model
         return float(self.cam_angle(m.motion.crank_angle[m.angle_index]))
 
+    def document(self) -> dict[str, Any]:
+        """The inputs of the cam on screen, as the design file keeps them."""
+        return cam_to_dict(*cam_inputs(self._valid_typed))
+
+    def _load(self) -> None:
+        """A file was opened (or New): its cam, or the default one."""
+        data = self.design_model.loaded_part("cam")
+        self._apply(CamTyped() if data is None else typed_from(*cam_from_dict(data)))
+
     def _compute(self, typed: CamTyped) -> Cam:
         inputs, phase = cam_inputs(typed)
         m = self.design_model
@@ -138,6 +151,7 @@ class CamModel(QObject):
             self._set_error(compute_error(exc))
             return
         self._set_error(None)
+        self._valid_typed = self._typed
         if cam != self._cam:
             self._cam = cam
             self.camChanged.emit()
@@ -148,3 +162,14 @@ class CamModel(QObject):
             self.errorChanged.emit()
         self._error = error
 
+
+
+def typed_from(inputs: CamInputs, phase_deg: float | None) -> CamTyped:
+    """The typed fields that give ``inputs`` and ``phase_deg`` (blank for None)."""
+    p = inputs.program
+    blank = lambda v: "" if v is None else float(v)  # noqa: E731
+    return CamTyped().with_(arm=inputs.arm_mm, swing=p.swing_deg, rise=p.rise_deg, dwell=p.dwell_deg,
+                            **{"return": p.return_deg}, rise_law=p.rise_law, return_law=p.return_law,
+                            pressure=inputs.pressure_deg, return_pressure=inputs.return_pressure_deg,
+                            roller=blank(inputs.roller_mm), base=blank(inputs.base_mm),
+                            distance=blank(inputs.distance_mm), phase=blank(phase_deg))

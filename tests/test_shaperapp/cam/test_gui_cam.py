@@ -155,3 +155,50 @@ def test_every_cam_message_has_a_translatable_template(model):
         with pytest.raises(DesignError) as info:
             attempt()
         assert any(re.match(p, info.value.allowed) for p, _ in _PATTERNS), info.value.allowed
+
+
+def test_cam_inputs_save_and_reopen(qtbot, tab, model, tmp_path):
+    """Save writes the cam's inputs beside the design; opening the file brings them back;
+    a file without a cam (every older one) opens with the default cam."""
+    import json
+
+    from PySide6.QtCore import QSettings
+
+    from shaperapp.design.document import Document
+    document = Document(model, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    type_into(qtbot, tab, "arm", "150")
+    tab.form.laws["rise_law"].setCurrentIndex(tab.form.laws["rise_law"].findData("poly345"))
+    tab.form._choose("rise_law")
+    type_into(qtbot, tab, "roller", "5")
+    assert document.save_to(str(tmp_path / "d.json"))
+    saved = json.loads((tmp_path / "d.json").read_text())["cam"]
+    assert saved["arm_mm"] == 150.0 and saved["rise_law"] == "poly345" and saved["roller_mm"] == 5.0
+    assert saved["base_mm"] is None
+    cam = tab.cam_model.cam
+    document.new()
+    assert tab.cam_model.cam.follower.arm_mm == 120.0 and tab.form.fields["roller"].edit.text() == ""
+    assert document.open_path(str(tmp_path / "d.json"))
+    assert tab.cam_model.cam == cam and tab.form.fields["arm"].edit.text() == "150"
+    assert not model.dirty
+    old = json.loads((tmp_path / "d.json").read_text())
+    del old["cam"]
+    (tmp_path / "old.json").write_text(json.dumps(old))
+    assert document.open_path(str(tmp_path / "old.json"))
+    assert tab.cam_model.cam.follower.arm_mm == 120.0
+
+
+def test_a_damaged_cam_in_a_file_is_refused_and_changes_nothing(qtbot, tab, model, tmp_path):
+    import json
+
+    from PySide6.QtCore import QSettings
+
+    from core.io import save_design
+    from shaperapp.design.document import Document
+    document = Document(model, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    messages = []
+    document.failed.connect(messages.append)
+    for bad in ({"arm_mm": "long"}, {"swing_deg": 500}, {"rise_law": "linear"}, [1, 2], {"bogus": 1}):
+        save_design(tmp_path / "bad.json", Spec(time_ratio=1.5), [40.0], 1.0, extra={"cam": bad})
+        before = (model.valid_spec, tab.cam_model.cam)
+        assert not document.open_path(str(tmp_path / "bad.json"))
+        assert (model.valid_spec, tab.cam_model.cam) == before and messages
