@@ -2437,6 +2437,54 @@
         <translation>8 约定与公式</translation>
     </message>
     <message>
+        <source>9 The feed cam</source>
+        <translation>9 进给凸轮</translation>
+    </message>
+    <message>
+        <source>The feed cam cannot be made for this design: %1</source>
+        <translation>此设计无法得到进给凸轮：%1</translation>
+    </message>
+    <message>
+        <source>Base radius r0 of the pitch curve</source>
+        <translation>理论廓线基圆半径 r0</translation>
+    </message>
+    <message>
+        <source>Centre distance a</source>
+        <translation>中心距 a</translation>
+    </message>
+    <message>
+        <source>Follower arm l</source>
+        <translation>从动件摆臂长 l</translation>
+    </message>
+    <message>
+        <source>Initial arm angle ψ0</source>
+        <translation>初始摆角 ψ0</translation>
+    </message>
+    <message>
+        <source>Max pressure angle, rise / return</source>
+        <translation>推程 / 回程最大压力角</translation>
+    </message>
+    <message>
+        <source>Smallest convex radius ρmin of the pitch curve</source>
+        <translation>理论廓线最小外凸曲率半径 ρmin</translation>
+    </message>
+    <message>
+        <source>Roller radius r</source>
+        <translation>滚子半径 r</translation>
+    </message>
+    <message>
+        <source>Base radius of the profile r0 − r</source>
+        <translation>实际廓线基圆半径 r0 − r</translation>
+    </message>
+    <message>
+        <source>Rise starts at crank angle</source>
+        <translation>推程起点曲柄转角</translation>
+    </message>
+    <message>
+        <source>The feed cam to scale at the start of the rise, with its follower and roller (the cam turns clockwise)</source>
+        <translation>推程起点处的进给凸轮（按比例绘制），含从动件与滚子（凸轮顺时针转动）</translation>
+    </message>
+    <message>
         <source>Crank length L1</source>
         <translation>曲柄长度 L1</translation>
     </message>

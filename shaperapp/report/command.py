@@ -14,11 +14,12 @@ import sys
 from pathlib import Path
 
 from core.atomic import atomic_write
+from core.cam.file import cam_from_dict
 from core.cli.cmd_library import library_failure
 from core.cli.cmd_library_compare import load_candidates
 from core.cli.cmd_table import masses_or_none
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
-                             number, number_list, rpms_from_args, spec_from_args)
+                             design_file, number, number_list, rpms_from_args, spec_from_args)
 from core.cli.output import OutputError
 from core.compare import MAX_DESIGNS, Candidate
 from core.errors import DesignError
@@ -193,8 +194,10 @@ def _run(args: argparse.Namespace) -> int:
     except MissingFontError as exc:
         raise UsageError(f"--lang {args.lang}: {exc}") from None
     from .blocks import Cover
+    doc = design_file(args)         # a design file's feed cam goes into the report too
+    cam = cam_from_dict(doc["cam"]) if doc is not None and doc.get("cam") is not None else None
     report = build(spec, rpms, masses, title or design_name(args), date, language,
-                   Options(count, diagrams, tuple(others), Cover(**cover)))
+                   Options(count, diagrams, tuple(others), Cover(**cover), cam))
     try:
         pages = write_report(report, args.output)
     except OSError as exc:      # a WriteError: names the path and a plain reason
