@@ -2437,10 +2437,6 @@
         <translation>8 约定与公式</translation>
     </message>
     <message>
-        <source>9 The feed cam</source>
-        <translation>9 进给凸轮</translation>
-    </message>
-    <message>
         <source>The feed cam cannot be made for this design: %1</source>
         <translation>此设计无法得到进给凸轮：%1</translation>
     </message>
@@ -2771,6 +2767,10 @@
     <message>
         <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)（距 O2 为 h = H/(2·tan(θ/2)) − L2）。</translation>
+    </message>
+    <message>
+        <source>%1 The feed cam</source>
+        <translation>%1 进给凸轮</translation>
     </message>
     <message>
         <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω3 and α3 are positive clockwise (as ψ and the crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>

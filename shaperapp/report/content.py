@@ -118,21 +118,22 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                                     "with loads) to include it.")))
         add(Heading(translate("Report", "8 Conventions and formulas")))
         report.blocks.extend(_conventions(spec))
-        if options.cam is not None:
-            report.blocks.extend(_cam_blocks(options.cam, design, idle, rpms[0]))
         if options.compare:
             result = report_comparison(spec, masses, name, options.compare, rpms[0])
             report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
+        if options.cam is not None:         # the last section: 9, or 10 after a comparison
+            number = 10 if options.compare else 9
+            report.blocks.extend(_cam_blocks(options.cam, design, idle, rpms[0], number))
     finally:
         views.close()
     return report
 
 
 def _cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle: float,
-                rpm: float) -> list:
+                rpm: float, number: int) -> list:
     """The feed cam: its figures as ``shaper cam`` prints them, and the cam to scale."""
     from shaperapp.cam.profile_view import paint_cam     # the Cam tab's own drawing
-    blocks: list = [Heading(translate("Report", "9 The feed cam"))]
+    blocks: list = [Heading(translate("Report", "%1 The feed cam").replace("%1", str(number)))]
     inputs, phase = cam_inputs
     try:
         cam = design_cam(inputs, design, idle, phase)
