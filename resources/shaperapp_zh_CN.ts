@@ -178,15 +178,15 @@
     <name>CamPlots</name>
     <message>
         <source>follower ψ</source>
-        <translation>从动件摆角 ψ</translation>
+        <translation>摆角 ψ</translation>
     </message>
     <message>
         <source>follower ω</source>
-        <translation>从动件角速度 ω</translation>
+        <translation>角速度 ω</translation>
     </message>
     <message>
         <source>follower α</source>
-        <translation>从动件角加速度 α</translation>
+        <translation>角加速度 α</translation>
     </message>
     <message>
         <source>pressure angle</source>
