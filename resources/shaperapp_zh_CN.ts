@@ -889,6 +889,208 @@
     </message>
 </context>
 <context>
+    <name>Drawing</name>
+    <message>
+        <source>Design</source>
+        <translation>设计名称</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>比例</translation>
+    </message>
+    <message>
+        <source>Sheet</source>
+        <translation>张次</translation>
+    </message>
+    <message>
+        <source>Drawn</source>
+        <translation>制图</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>Checked</source>
+        <translation>审核</translation>
+    </message>
+    <message>
+        <source>Approved</source>
+        <translation>批准</translation>
+    </message>
+    <message>
+        <source>Motion analysis</source>
+        <translation>运动分析图</translation>
+    </message>
+    <message>
+        <source>Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})</source>
+        <translation>机构运动简图（{count} 个位置），μl = {mu} m/mm（{scale}）</translation>
+    </message>
+    <message>
+        <source>Ram displacement, velocity and acceleration, n = {rpm} r/min</source>
+        <translation>滑枕位移、速度、加速度线图，n = {rpm} r/min</translation>
+    </message>
+    <message>
+        <source>s/mm</source>
+        <translation>s/mm</translation>
+    </message>
+    <message>
+        <source>v/(m/s)</source>
+        <translation>v/(m/s)</translation>
+    </message>
+    <message>
+        <source>a/(m/s²)</source>
+        <translation>a/(m/s²)</translation>
+    </message>
+    <message>
+        <source>φ/(°)</source>
+        <translation>φ/(°)</translation>
+    </message>
+    <message>
+        <source>μs = {mu} m/mm</source>
+        <translation>μs = {mu} m/mm</translation>
+    </message>
+    <message>
+        <source>μv = {mu} (m/s)/mm</source>
+        <translation>μv = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>μa = {mu} (m/s²)/mm</source>
+        <translation>μa = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>μφ = {mu} °/mm</source>
+        <translation>μφ = {mu} °/mm</translation>
+    </message>
+    <message>
+        <source>Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm</source>
+        <translation>速度多边形，φ = {angle}°，μv = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm</source>
+        <translation>加速度多边形，φ = {angle}°，μa = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>Main dimensions</source>
+        <translation>主要尺寸</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Crank O2A, L1</source>
+        <translation>曲柄 O2A，L1</translation>
+    </message>
+    <message>
+        <source>Frame O2O4, L2</source>
+        <translation>机架 O2O4，L2</translation>
+    </message>
+    <message>
+        <source>Lever O4B, L3</source>
+        <translation>导杆 O4B，L3</translation>
+    </message>
+    <message>
+        <source>Rod BC, L4</source>
+        <translation>连杆 BC，L4</translation>
+    </message>
+    <message>
+        <source>Guide above O2, h</source>
+        <translation>导路距 O2 的高度 h</translation>
+    </message>
+    <message>
+        <source>Stroke H</source>
+        <translation>行程 H</translation>
+    </message>
+    <message>
+        <source>Time ratio K</source>
+        <translation>行程速比系数 K</translation>
+    </message>
+    <message>
+        <source>Extreme-position angle θ</source>
+        <translation>极位夹角 θ</translation>
+    </message>
+    <message>
+        <source>Crank speed n</source>
+        <translation>曲柄转速 n</translation>
+    </message>
+</context>
+<context>
+    <name>DrawingSheetDialog</name>
+    <message>
+        <source>Export drawing sheet</source>
+        <translation>导出图纸</translation>
+    </message>
+    <message>
+        <source>Motion analysis</source>
+        <translation>运动分析图</translation>
+    </message>
+    <message>
+        <source>Paper:</source>
+        <translation>图幅：</translation>
+    </message>
+    <message>
+        <source>Content:</source>
+        <translation>内容：</translation>
+    </message>
+    <message>
+        <source>Positions:</source>
+        <translation>位置数：</translation>
+    </message>
+    <message>
+        <source>Polygons at φ (working stroke):</source>
+        <translation>多边形位置 φ（工作行程）：</translation>
+    </message>
+    <message>
+        <source>Polygons at φ (return stroke):</source>
+        <translation>多边形位置 φ（回程）：</translation>
+    </message>
+    <message>
+        <source>Design name:</source>
+        <translation>设计名称：</translation>
+    </message>
+    <message>
+        <source>Drawn by:</source>
+        <translation>制图：</translation>
+    </message>
+    <message>
+        <source>School:</source>
+        <translation>学校：</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>日期：</translation>
+    </message>
+    <message>
+        <source>No font with Chinese characters is installed: install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>
+        <translation>未安装含中文字形的字体：请安装一个（Debian/Ubuntu 上为 fonts-noto-cjk），或把语言切换为英文。</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>SVG image (*.svg)</source>
+        <translation>SVG 图像 (*.svg)</translation>
+    </message>
+    <message>
+        <source>DXF drawing (*.dxf)</source>
+        <translation>DXF 图形 (*.dxf)</translation>
+    </message>
+    <message>
+        <source>A drawing sheet is written as PDF (.pdf), SVG (.svg) or DXF (.dxf); %1 is none of them. Nothing was written.</source>
+        <translation>图纸只能保存为 PDF (.pdf)、SVG (.svg) 或 DXF (.dxf)；%1 都不是。未写入任何文件。</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>ExploreView</name>
     <message>
         <source>Max pressure angle (°)</source>
@@ -1781,6 +1983,14 @@
         <translation>设计说明书：尺寸、位置表、矢量多边形、力分析、飞轮</translation>
     </message>
     <message>
+        <source>Export &amp;drawing sheet (PDF/SVG/DXF)…</source>
+        <translation>导出图纸(&amp;D)（PDF/SVG/DXF）…</translation>
+    </message>
+    <message>
+        <source>The course design's drawing sheet on A0–A3 paper, with a preview</source>
+        <translation>课程设计图纸，A0–A3 图幅，带预览</translation>
+    </message>
+    <message>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -2437,6 +2647,10 @@
         <translation>8 约定与公式</translation>
     </message>
     <message>
+        <source>%1 The feed cam</source>
+        <translation>%1 进给凸轮</translation>
+    </message>
+    <message>
         <source>The feed cam cannot be made for this design: %1</source>
         <translation>此设计无法得到进给凸轮：%1</translation>
     </message>
@@ -2767,10 +2981,6 @@
     <message>
         <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)（距 O2 为 h = H/(2·tan(θ/2)) − L2）。</translation>
-    </message>
-    <message>
-        <source>%1 The feed cam</source>
-        <translation>%1 进给凸轮</translation>
     </message>
     <message>
         <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω3 and α3 are positive clockwise (as ψ and the crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>

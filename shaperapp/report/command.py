@@ -9,23 +9,22 @@ from __future__ import annotations
 import argparse
 import datetime
 import errno
-import os
-import sys
 from pathlib import Path
 
 from core.atomic import atomic_write
 from core.cam.file import cam_from_dict
 from core.cli.cmd_library import library_failure
 from core.cli.cmd_library_compare import load_candidates
-from core.cli.cmd_table import masses_or_none
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
-                             design_file, number, number_list, rpms_from_args, spec_from_args)
+                             design_file, number)
 from core.cli.output import OutputError
 from core.compare import MAX_DESIGNS, Candidate
-from core.errors import DesignError
-from core.kinematics import check_rpms
 from core.library.store import ENV_VAR, LibraryError
-from core.positions import DEFAULT_COUNT, check_count, check_extra
+from core.positions import DEFAULT_COUNT, check_count
+
+from shaperapp.widgets.command_line import (MAX_TEXT, check_output_folder, cover_text,  # noqa: F401
+                                            design_name, diagram_angles, inputs_from_args,
+                                            start_qt)
 
 HELP = "write the design report (A4 PDF, or HTML)"
 DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
@@ -77,60 +76,11 @@ COVER_OPTIONS = {"--student": ("student", "the student's name"),
                  "--class": ("group", "the student's class"),
                  "--school": ("school", "the school or department"),
                  "--supervisor": ("supervisor", "the supervising teacher")}
-MAX_TEXT = 200
-
-
-def cover_text(option: str, value: str | None) -> str:
-    """A cover field as given: one line of at most MAX_TEXT characters (UsageError)."""
-    if value is None:
-        return ""
-    if any(ch < " " or "\x7f" <= ch < "\xa0" or ch in "\u2028\u2029" for ch in value):
-        raise UsageError(f"{option}: must be one line of text without control characters")
-    if len(value) > MAX_TEXT:
-        raise UsageError(f"{option}: at most {MAX_TEXT} characters (got {len(value)})")
-    return value.strip()
-
-
 def cover_from_args(args: argparse.Namespace):
     """The cover fields (a report ``Cover``'s keyword arguments) and the date, checked."""
     fields = {field: cover_text(option, getattr(args, option[2:].replace("-", "_")))
               for option, (field, _) in COVER_OPTIONS.items()}
     return fields, cover_text("--date", args.date) or datetime.date.today().isoformat()
-
-
-def _ensure_headless() -> None:
-    """Qt draws offscreen when there is no display (CI, ssh)."""
-    if sys.platform.startswith("linux") and not (os.environ.get("DISPLAY")
-                                                 or os.environ.get("WAYLAND_DISPLAY")):
-        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-
-
-def _quiet(kind, _context, message) -> None:
-    """Qt's platform notes (e.g. the offscreen plugin's) are not for the user; real
-    failures surface as exceptions or a missing file."""
-    from PySide6.QtCore import QtMsgType
-    if kind in (QtMsgType.QtCriticalMsg, QtMsgType.QtFatalMsg):
-        print(f"shaper: Qt: {message}", file=sys.stderr)
-
-
-def _application():
-    from PySide6.QtCore import qInstallMessageHandler
-    from PySide6.QtWidgets import QApplication
-    from shaperapp.widgets.style import configure_plots
-    configure_plots()
-    qInstallMessageHandler(_quiet)
-    return QApplication.instance() or QApplication(sys.argv[:1])
-
-
-def design_name(args: argparse.Namespace) -> str:
-    if args.title:
-        return args.title
-    if args.design:
-        name = Path(args.design).name
-        for suffix in (".json", ".shaper"):
-            name = name[: -len(suffix)] if name.endswith(suffix) else name
-        return name
-    return ""
 
 
 def comparison_candidates(args: argparse.Namespace) -> list[Candidate]:
@@ -158,17 +108,9 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    spec = spec_from_args(args)
-    design = spec.design()
-    rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
-    masses = masses_or_none(args, design)
+    spec, rpms, masses = inputs_from_args(args)
     count = check_count(number("positions", args.positions))
-    diagrams = None
-    if args.diagrams is not None:
-        values = check_extra(number_list("diagrams", args.diagrams))
-        if values.size != 2:
-            raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
-        diagrams = (float(values[0]), float(values[1]))
+    diagrams = diagram_angles(args)
     others = comparison_candidates(args)
     cover, date = cover_from_args(args)
     title = cover_text("--title", args.title)
@@ -177,22 +119,9 @@ def _run(args: argparse.Namespace) -> int:
         kind = report_kind(args.output, html=args.html)
     except ValueError as exc:
         raise OutputError(f"--output: {exc}") from None
-    if not target.parent.is_dir():
-        raise OutputError(f"--output: cannot write {target}: no such directory")
-    if target.is_dir():
-        raise OutputError(f"--output: cannot write {target}: it is a folder")
-
-    _ensure_headless()
-    _application()
-    from shaperapp.widgets import i18n
+    check_output_folder(args.output)
+    language = start_qt(args.lang)
     from .content import Options, build
-    from .fonts import MissingFontError, report_font
-    language = i18n.language_of(args.lang)
-    i18n.set_language(language)
-    try:
-        report_font(language)
-    except MissingFontError as exc:
-        raise UsageError(f"--lang {args.lang}: {exc}") from None
     from .blocks import Cover
     doc = design_file(args)         # a design file's feed cam goes into the report too
     cam = cam_from_dict(doc["cam"]) if doc is not None and doc.get("cam") is not None else None

@@ -33,6 +33,7 @@ from core.metrics import CycleMetrics, analyze
 from core.positions import PositionTable, position_table, positions, text_groups
 from core.spec import Spec
 from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
+from shaperapp.widgets.command_line import inputs_name
 
 from . import figures
 from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
@@ -158,20 +159,6 @@ def _cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle
                                    "its follower and roller (the cam turns clockwise)"), 170.0, 100.0,
                          lambda painter, rect, _px: paint_cam(painter, rect, cam, 0.0)))
     return blocks
-
-
-def inputs_name(spec: Spec) -> str:
-    """A design without a file or library name is named by its inputs, never "Untitled"."""
-    if spec.mode == "synthesis":
-        text = f"L1 {spec.crank:g} mm, K {spec.time_ratio:g}, H {spec.stroke:g} mm"
-    else:
-        text = f"L1 {spec.crank:g} mm, L2 {spec.frame:g} mm, L3 {spec.lever:g} mm"
-    if spec.variant == "rod":
-        text += f", L4 {spec.rod_length:g} mm" if spec.rod_input == "length" \
-            else f", L4/L3 {spec.rod_ratio:g}"
-    return text
-
-
 # ---- sections --------------------------------------------------------------
 def _inputs(spec: Spec, rpms: Sequence[float], masses: MassProperties | None) -> list[tuple[str, str]]:
     rows = []

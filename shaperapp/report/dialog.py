@@ -28,7 +28,7 @@ from .blocks import Cover
 from .command import MAX_TEXT
 from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles, inputs_name
-from .fonts import MissingFontError
+from shaperapp.widgets.fonts import MissingFontError
 
 translate = QCoreApplication.translate
 

@@ -33,7 +33,7 @@ from shaperapp.plots.kinematics import PlotsWidget
 from shaperapp.scheme.view import SchemeWidget
 from shaperapp.vectors.paint import auto_scale, paint_polygon
 
-from .fonts import report_font
+from shaperapp.widgets.fonts import report_font
 
 Paint = Callable[[QPainter, QRectF, float], None]
 FINE_STEP_DEG = 0.25

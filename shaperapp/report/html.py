@@ -13,7 +13,7 @@ from PySide6.QtGui import QFont, QPainter
 from PySide6.QtSvg import QSvgGenerator
 
 from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
-from .fonts import report_font
+from shaperapp.widgets.fonts import report_font
 
 SVG_DPI = 96.0
 STYLE = """

@@ -16,7 +16,7 @@ from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize,
                            QPdfWriter, QPen, QTextDocument)
 
 from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
-from .fonts import report_font
+from shaperapp.widgets.fonts import report_font
 
 translate = QCoreApplication.translate
 RESOLUTION = 300

@@ -119,6 +119,7 @@ class MainWindow(QMainWindow):
             lambda: self._export_image(self.tabs.currentWidget(), "plots"), "Ctrl+Shift+P")
         self.act_scheme_img = self._action(lambda: self._export_image(self.scheme, "scheme"), "Ctrl+Shift+M")
         self.act_report = self._action(self._export_report, "Ctrl+R")
+        self.act_sheet = self._action(self._export_sheet)
         # Only tabs that draw plots can export them as an image, or fit them.
         self.tabs.currentChanged.connect(self._on_tab)
         self.act_quit = self._action(self.close, keys.Quit)
@@ -200,6 +201,8 @@ class MainWindow(QMainWindow):
             (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
             (self.act_report, self.tr("Export &report (PDF/HTML)…"),
              self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
+            (self.act_sheet, self.tr("Export &drawing sheet (PDF/SVG/DXF)…"),
+             self.tr("The course design's drawing sheet on A0–A3 paper, with a preview")),
             (self.act_quit, self.tr("&Quit"), ""),
             (self.act_goto, self.tr("&Go to Crank Angle…"), self.tr("Move the mechanism to a crank angle you type")),
             (self.act_fit_plots, self.tr("Fit &plots"), self.tr("Show the whole cycle in the plots of the current tab")),
@@ -324,6 +327,15 @@ class MainWindow(QMainWindow):
         from shaperapp.report.dialog import export_report_dialog   # builds offscreen views: load on demand
         path = export_report_dialog(self.model, self, self._language,
                                     self.document.last_dir(), self.settings)
+        if path:
+            self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
+
+    def _export_sheet(self) -> None:
+        if not self.document.confirm_valid(self, saving=False):
+            return
+        from shaperapp.drawing.dialog import export_sheet_dialog   # load on demand
+        path = export_sheet_dialog(self.model, self, self._language, self.document.last_dir(),
+                                   self.settings)
         if path:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 

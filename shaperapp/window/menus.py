@@ -27,7 +27,8 @@ class Menus:
         self.recent = self.file.addMenu("")
         self.file.addActions([w.act_save, w.act_save_as])
         self.file.addSeparator()
-        self.file.addActions([w.act_csv, w.act_forces_csv, w.act_plots_img, w.act_scheme_img, w.act_report])
+        self.file.addActions([w.act_csv, w.act_forces_csv, w.act_plots_img, w.act_scheme_img, w.act_report,
+                              w.act_sheet])
         self.file.addSeparator()
         self.file.addAction(w.act_quit)
         self.edit = bar.addMenu("")

@@ -19,8 +19,9 @@ ROOT = ROOT
 README = ROOT / "README.md"
 PAGES = [README, *sorted((ROOT / "docs").glob("*.md"))]
 CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep", "cam")
-# Every subcommand of ``shaper`` (core/cli's CORE_COMMANDS plus the Qt one, report).
-SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library", "report")
+# Every subcommand of ``shaper`` (core/cli's CORE_COMMANDS plus the Qt ones, report and drawing).
+SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library", "report",
+               "drawing")
 
 
 def console_examples(text: str) -> list[tuple[str, str]]:

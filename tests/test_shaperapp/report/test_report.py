@@ -172,7 +172,7 @@ def test_the_name_chooses_the_type_and_a_save_keeps_the_files_mode(tmp_path):
 def test_no_chinese_font_names_the_package(qtbot, monkeypatch, tmp_path, capsys):
     from core.cli import main
     from shaperapp.widgets import i18n
-    from shaperapp.report import fonts
+    from shaperapp.widgets import fonts
     monkeypatch.setattr(fonts, "cjk_family", lambda: None)
     try:
         status = main(["report", *DESIGN, "--lang", "zh", "-o", str(tmp_path / "r.pdf")])

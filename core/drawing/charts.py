@@ -1,0 +1,205 @@
+"""Charts of curves over the crank angle and vector polygons, as sheet items.
+
+The course design draws its curves and polygons to a stated scale μ (units per
+mm of paper) chosen from a round series, so a reader can measure a value with a
+ruler: here every scale comes from :func:`core.polygons.nice_scale` and is
+returned with the items, so the caller writes it beside the drawing.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
+
+from .dxf import DASHED, OUTLINE, THIN
+from .sheet import TEXT_HEIGHTS, Box, Item, Pair, Text, line, number_text
+
+ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
+TICK = 1.5
+# φ scales: round, and at most 1.25× the exact one so a chart fills most of its box.
+X_MANTISSAS = (1.0, 1.2, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+
+
+def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
+    """A line from ``tail`` to ``head`` with a filled head (none if shorter than the head)."""
+    t, h = np.asarray(tail, float), np.asarray(head, float)
+    d = h - t
+    length = math.hypot(*d)
+    if length < 1e-9:
+        return []
+    u = d / length
+    n = np.array([-u[1], u[0]])
+    size = min(ARROW[0], 0.6 * length)
+    half = ARROW[1] * size / ARROW[0]
+    base = h - size * u
+    return [line([t, base], layer),
+            line([h, base + half * n, base - half * n], layer, closed=True, filled=True)]
+
+
+def place_label(text: str, at: Pair, height: float, taken: list[Box],
+                preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
+                optional: bool = False, align: str | None = None, rings: int = 3) -> Text | None:
+    """``text`` beside the point ``at``: the first of eight directions (starting with
+    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of
+    ``taken`` and lies ``within``; then appends its box to ``taken``. When no spot is free:
+    None if ``optional``, else the first spot. ``align`` fixes the alignment (default: away
+    from the point)."""
+    start = math.atan2(preferred[1], preferred[0])
+    first = None
+    for k in range(8 * rings):
+        r = gap + (k // 8) * height
+        angle = start + (k % 8) * math.pi / 4.0
+        dx, dy = math.cos(angle), math.sin(angle)
+        side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
+                         + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
+        label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, side)
+        box = label.box()
+        if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
+                                       and within[1] <= box[1] and box[3] <= within[3]):
+            continue
+        first = first or (label, box)
+        if not any(_meets(box, b) for b in taken):
+            taken.append(box)
+            return label
+    if optional or first is None:
+        return None
+    taken.append(first[1])
+    return first[0]
+
+
+def _meets(a: Box, b: Box) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+# ---- vector polygons ---------------------------------------------------------------------
+
+def polygon_scale(polygons: Sequence[Polygon], room_mm: float) -> float:
+    """One round scale μ for polygons drawn side by side (so they compare by eye)."""
+    return nice_scale(max(p.largest() for p in polygons), room_mm, FINE_MANTISSAS)
+
+
+def polygon_fit_scale(polygon: Polygon, width: float, height: float) -> float:
+    """The smallest round scale μ at which the whole polygon fits ``width`` × ``height`` mm."""
+    x0, y0, x1, y1 = polygon_extent(polygon, 1.0)
+    return max(nice_scale(max(x1 - x0, 1e-12), width, FINE_MANTISSAS),
+               nice_scale(max(y1 - y0, 1e-12), height, FINE_MANTISSAS))
+
+
+def polygon_extent(polygon: Polygon, scale: float) -> Box:
+    pts = np.array(list(polygon.points.values())) / scale
+    return (float(pts[:, 0].min()), float(pts[:, 1].min()), float(pts[:, 0].max()), float(pts[:, 1].max()))
+
+
+def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.5,
+                  names: Mapping[str, str] | None = None, taken: list[Box] | None = None,
+                  within: Box | None = None) -> list[Item]:
+    """The polygon drawn from ``pole`` at μ = ``scale`` (its unit per mm): every vector as an
+    arrow from its tail point to its head point, absolute ones thick, the others thin, and
+    each point labelled (``names`` maps point keys to texts; default the keys) clear of
+    ``taken`` and inside ``within``."""
+    taken = [] if taken is None else taken
+    at = {k: (pole[0] + x / scale, pole[1] + y / scale) for k, (x, y) in polygon.points.items()}
+    items: list[Item] = []
+    for v in polygon.vectors:
+        layer = OUTLINE if v.role in ("absolute", "force") else THIN
+        items += arrow(at[v.tail], at[v.head], layer)
+    centre = np.mean(np.array(list(at.values())), axis=0)
+    name = lambda k: (names or {}).get(k, k)                 # noqa: E731
+    for key, p in at.items():
+        group = [k for k, q in at.items() if abs(q[0] - p[0]) < 0.05 and abs(q[1] - p[1]) < 0.05]
+        if group[0] != key:                   # coincident points share one label
+            continue
+        away = np.asarray(p) - centre
+        away = away if np.hypot(*away) > 1e-6 else np.array([1.0, 1.0])
+        label = place_label(",".join(name(k) for k in group), p, height, taken, tuple(away),
+                            within=within, rings=5, optional=True)   # crowded: left out
+        if label is not None:
+            items.append(label)
+    return items
+
+
+# ---- charts over the crank angle ---------------------------------------------------------
+
+@dataclass(frozen=True)
+class Curve:
+    """One curve of a chart: y over the chart's x, in the chart's y unit."""
+
+    y: np.ndarray
+    layer: str = OUTLINE
+    label: str = ""
+
+
+@dataclass(frozen=True)
+class Chart:
+    """The items of a chart and what it was drawn at, for the caption and the tests."""
+
+    items: list[Item]
+    x_scale: float            # x units per mm
+    y_scale: float            # y units per mm
+    origin: Pair              # paper point of (x[0], 0)
+    x_end: float              # paper x of the x axis' arrow tip
+    y_end: float              # paper y of the y axis' arrow tip
+
+
+def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_title: str,
+          x_ticks: Sequence[tuple[float, str]] = (), height: float = 3.5,
+          mean: float | None = None) -> Chart:
+    """Curves over ``x`` in ``box`` with a horizontal x axis through y = 0, a y axis at x[0],
+    arrows on both, ticks at ``x_ticks`` (value, label) and a few round y ticks; ``mean`` a
+    thin dashed horizontal line (e.g. the mean torque). Scales from the round series; the
+    x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
+    labels."""
+    x0, y0, x1, y1 = box
+    left = x0 + 6.0 * height
+    span_x = float(x[-1] - x[0])
+    x_scale = nice_scale(span_x, x1 - left - 14.0, X_MANTISSAS)
+    ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves] + [[0.0]])
+    top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
+    room = (y1 - y0) - 3.0 * height - 6.0
+    y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS)
+    zero = y0 + 2.0 * height + 2.0 + (-bottom) / y_scale
+    zero += ((y1 - height - 4.0) - (zero + top / y_scale)) / 2.0 if (top - bottom) > 0 else 0.0
+    to_paper = lambda xv, yv: np.column_stack([left + (np.asarray(xv) - x[0]) / x_scale,  # noqa: E731
+                                               zero + np.asarray(yv) / y_scale])
+    x_end = left + span_x / x_scale + 8.0
+    y_lo, y_hi = zero + bottom / y_scale - 2.0, zero + top / y_scale + 6.0
+    items: list[Item] = [*arrow((left, zero), (x_end, zero), THIN),
+                         *arrow((left, y_lo), (left, y_hi), THIN)]
+    taken: list = []
+    small = max((h for h in TEXT_HEIGHTS if h < height), default=height)   # the ticks' labels
+    for c in curves:
+        pts = to_paper(x, c.y)
+        items.append(line(pts, c.layer))
+    for value, label in x_ticks:
+        px = left + (value - x[0]) / x_scale
+        items.append(line([(px, zero - TICK), (px, zero + TICK)], THIN))
+        if label:
+            lab = Text(label, (px, zero - TICK - 1.0), small, "ct")
+            if not any(_meets(lab.box(), b) for b in taken):
+                taken.append(lab.box())
+                items.append(lab)
+    for value in _round_ticks(bottom, top, y_scale):
+        py = zero + value / y_scale
+        items.append(line([(left - TICK, py), (left, py)], THIN))
+        lab = Text(number_text(value), (left - TICK - 1.0, py), small, "rm")
+        if abs(value) > 0 and not any(_meets(lab.box(), b) for b in taken):
+            taken.append(lab.box())
+            items.append(lab)
+    if mean is not None:
+        py = zero + mean / y_scale
+        items.append(line([(left, py), (left + span_x / x_scale, py)], DASHED))
+    items.append(Text(y_title, (left + 1.5, y_hi), height, "lt"))
+    items.append(Text(x_title, (x_end, zero + 1.5), height, "rb"))
+    return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi)
+
+
+def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> list[float]:
+    """Round values between lo and hi about every ``every_mm`` of paper."""
+    step = nice_scale(scale * every_mm, 1.0, (1.0, 2.0, 5.0))
+    first = math.ceil(lo / step - 1e-9)
+    last = math.floor(hi / step + 1e-9)
+    return [k * step for k in range(first, last + 1)]

@@ -1,0 +1,224 @@
+"""The motion-analysis sheet (运动分析图) of the course design, laid out on a GB paper.
+
+Upper left the mechanism to a standard scale at the N numbered positions (thin)
+and the two limit positions (thick), with the tool's path and the positions
+numbered as in the positions table; upper right the ram's s, v and a over one
+φ axis (at the first crank speed: the speed of the positions table and the
+polygons, so every number on the sheet belongs to one speed); lower left the
+velocity and acceleration polygons at two positions; lower right the main
+dimensions and the title block. Every drawing states its scale the course
+design's way, μ in units per mm of paper.
+
+Texts are looked up in ``labels`` (keys of :data:`ENGLISH`), so the caller
+chooses the language; numbers are formatted here.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from core.errors import DesignError
+from core.geometry import Design
+from core.kinematics import solve
+from core.polygons import acceleration_polygon, velocity_polygon
+from core.positions import positions, special_angles
+
+from . import mechanism as mech
+from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
+from .dxf import OUTLINE, THIN
+from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text,
+                    TitleBlock, clipped, fit, fitting_height, frame_items,
+                    number_text, scale_text, standard_scale, table, title_block,
+                    title_block_box)
+
+ENGLISH = {
+    "title": "Motion analysis",
+    "mechanism": "Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})",
+    "curves": "Ram displacement, velocity and acceleration, n = {rpm} r/min",
+    "s": "s/mm", "v": "v/(m/s)", "a": "a/(m/s²)", "phi": "φ/(°)",
+    "mu_s": "μs = {mu} m/mm", "mu_v": "μv = {mu} (m/s)/mm", "mu_a": "μa = {mu} (m/s²)/mm",
+    "mu_phi": "μφ = {mu} °/mm",
+    "velocity": "Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm",
+    "acceleration": "Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm",
+    "dimensions": "Main dimensions", "quantity": "Quantity", "value": "Value",
+    "L1": "Crank O2A, L1", "L2": "Frame O2O4, L2", "L3": "Lever O4B, L3", "L4": "Rod BC, L4",
+    "h": "Guide above O2, h", "H": "Stroke H", "K": "Time ratio K",
+    "theta": "Extreme-position angle θ", "n": "Crank speed n",
+    "design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn", "date": "Date",
+    "checked": "Checked", "approved": "Approved",
+}
+POINT_NAMES = {"p": "p", "a2": "a₂", "a3": "a₃", "b": "b", "c": "c", "p'": "p′", "a2'": "a₂′",
+               "k'": "k′", "n3'": "n₃′", "a3'": "a₃′", "b'": "b′", "c'": "c′", "n4'": "n₄′"}
+GAP = 6.0                     # mm between the areas of the sheet
+MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
+CAPTION = 5.0                 # caption text height
+TABLE_ROW = 7.0
+
+
+@dataclass(frozen=True)
+class MotionSheet:
+    """The sheet and what the tests measure on it."""
+
+    sheet: Sheet
+    scale: float              # the mechanism's reduction 1:scale
+    placement: Placement      # model mm → paper mm of the mechanism
+    diagram_deg: tuple[float, float]
+    areas: dict[str, tuple[Box, tuple[Item, ...]]]
+    """Each drawing's area on the paper and its items: the areas do not overlap, and
+    each drawing stays inside its own."""
+
+
+def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
+                 diagram_deg: tuple[float, float] | None = None, idle_fraction: float = 0.05,
+                 labels: Mapping[str, str] = ENGLISH, block: TitleBlock | None = None) -> MotionSheet:
+    """The motion sheet of ``design`` at ``rpm`` on ``paper``; DesignError for more than
+    MAX_POSITIONS positions."""
+    if not 1 <= count <= MAX_POSITIONS:
+        raise DesignError("positions", count, f"must be 1 to {MAX_POSITIONS} on a drawing sheet")
+    lab = {**ENGLISH, **labels}
+    bx0, by0, bx1, by1 = paper.border
+    width, height = bx1 - bx0, by1 - by0
+    split_x, split_y = bx0 + 0.5 * width, by0 + 0.42 * height
+    where = positions(design, count, (), idle_fraction)
+    numbered = where.number > 0
+    angles = where.crank_deg[numbered]
+    special = special_angles(design, idle_fraction)
+    limits = (special["limit_work_start"], special["limit_work_end"])
+    diagrams = diagram_deg or _default_diagrams(angles, limits)
+    areas: dict[str, tuple[Box, tuple[Item, ...]]] = {}
+
+    mech_area = (bx0 + GAP, split_y + GAP, split_x - GAP, by1 - GAP)
+    mech_box = mech_area[:3] + (mech_area[3] - 2 * CAPTION,)
+    scale, place, mech_items = _mechanism(design, mech_box, angles, limits)
+    mech_items.append(caption(lab["mechanism"].format(count=count, mu=number_text(scale / 1000.0),
+                                                      scale=scale_text(scale)),
+                              ((mech_box[0] + mech_box[2]) / 2.0, mech_area[3]), mech_box[2] - mech_box[0]))
+    areas["mechanism"] = (mech_area, tuple(mech_items))
+    motion = solve(design, np.radians(np.linspace(0.0, 360.0, 721)), [rpm])
+    curves_area = (split_x + GAP, split_y + GAP, bx1 - GAP, by1 - GAP)
+    areas["curves"] = (curves_area, tuple(_curves(motion, curves_area, angles, where.number[numbered],
+                                                  lab, rpm)))
+    polygons_area = (bx0 + GAP, by0 + GAP, bx1 - TITLE_WIDTH - 2 * GAP, split_y - GAP)
+    areas["polygons"] = (polygons_area, tuple(_polygons(design, rpm, diagrams, polygons_area, lab)))
+    rows = [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab)
+    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(rows)
+    areas["dimensions"] = ((bx1 - TITLE_WIDTH, table_top - TABLE_ROW * len(rows), bx1, table_top),
+                           tuple(table((bx1 - TITLE_WIDTH, table_top), (120.0, 60.0), rows,
+                                       TABLE_ROW, 3.5, aligns="lc")))
+    block = block or TitleBlock(lab["title"], "", "", "1/1")
+    block = TitleBlock(block.title or lab["title"], block.design, scale_text(scale), block.sheet,
+                       block.drawn, block.date, block.school,
+                       {k: lab[k] for k in TITLE_LABEL_KEYS})
+    areas["title"] = (title_block_box(paper), tuple(title_block(paper, block)))
+    items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
+    return MotionSheet(Sheet(paper, tuple(items)), scale, place, diagrams, areas)
+
+
+def caption(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> Text:
+    """A drawing's caption hanging from ``top_centre``, as large as fits ``room`` (≤ ``largest``)."""
+    h = fitting_height(text, room, largest)
+    x, y = top_centre
+    return Text(clipped(text, room, h), (x, y - 0.2 * h), h, "ct")     # the accents' room above h
+
+
+def _default_diagrams(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
+    """The numbered positions nearest the middle of the working and of the return stroke."""
+    work = (limits[1] - limits[0]) % 360.0
+    mids = ((limits[0] + work / 2.0) % 360.0, (limits[1] + (360.0 - work) / 2.0) % 360.0)
+    near = lambda t: float(angles[np.argmin(np.abs((angles - t + 180.0) % 360.0 - 180.0))])  # noqa: E731
+    return near(mids[0]), near(mids[1])
+
+
+def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[float]):
+    """The mechanism at ``angles`` (thin) and ``limits`` (thick), fitted to ``box``."""
+    bounds = mech.bounds(design)
+    room_w = box[2] - box[0] - mech.RAM[0] - 2 * mech.TOOL_AHEAD - 10.0
+    room_h = box[3] - box[1] - 2 * mech.SUPPORT - 2 * mech.RAM[1] - 2 * mech.TOOL_DROP
+    scale = max(standard_scale(bounds[2] - bounds[0], room_w),
+                standard_scale(bounds[3] - bounds[1], room_h))
+    place = fit(bounds, box, scale)
+    items: list[Item] = mech.frame_items(design, place)
+    items += mech.tool_path(design, place, angles)
+    for phi in angles:
+        items += mech.links_at(design, float(phi), place, THIN, bodies=False)
+    for phi in limits:
+        items += mech.links_at(design, float(phi), place, OUTLINE)
+    taken: list[Box] = []
+    for label in mech.joint_labels(design, float(limits[0]), place, 5.0):
+        placed = place_label(label.text, label.position, label.height, taken, within=box,
+                             gap=0.0, optional=True, align="cm")
+        items += [placed] if placed else []
+    o2 = place([0.0, design.frame])
+    pins = place(mech.joints(design, angles)["A"].T)
+    for k, p in enumerate(pins, start=1):      # a number with no free spot is left out
+        out = p - o2
+        spot = o2 + out * (1.0 + 5.0 / max(np.hypot(*out), 1e-9))
+        placed = place_label(str(k), (float(spot[0]), float(spot[1])), 3.5, taken, tuple(out),
+                             gap=0.5, within=box, optional=True)
+        items += [placed] if placed else []
+    return scale, place, items
+
+
+def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
+            lab: Mapping[str, str], rpm: float) -> list[Item]:
+    """s, v and a over φ in three panels on one φ scale, stacked in ``box``."""
+    x0, y0, x1, y1 = box
+    items: list[Item] = [caption(lab["curves"].format(rpm=number_text(rpm)), ((x0 + x1) / 2.0, y1),
+                                 x1 - x0)]
+    top = y1 - 2 * CAPTION
+    panel = (top - y0) / 3.0
+    phi = np.degrees(motion.crank_angle)
+    ticks = [(float(a), str(int(n))) for a, n in zip(angles, numbers)]
+    series = (("s", "mu_s", motion.ram_x, 1e-3), ("v", "mu_v", motion.ram_v[0], 1.0),
+              ("a", "mu_a", motion.ram_a[0], 1.0))
+    for k, (key, mu_key, y, unit) in enumerate(series):
+        pbox = (x0, top - (k + 1) * panel, x1, top - k * panel - (0 if k == 0 else 0))
+        drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks)
+        items += drawn.items
+        items.append(Text(lab[mu_key].format(mu=number_text(drawn.y_scale * unit)),
+                          (drawn.x_end, drawn.y_end), 3.5, "rt"))
+        if k == 0:
+            items.append(Text(lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
+                              (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
+    return items
+
+
+def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
+              lab: Mapping[str, str]) -> list[Item]:
+    """Velocity (top row) and acceleration (bottom row) polygons at the two angles, each
+    to the largest round scale that fits its cell."""
+    x0, y0, x1, y1 = box
+    cw, ch = (x1 - x0) / 2.0, (y1 - y0) / 2.0
+    items: list[Item] = []
+    rows = (("velocity", velocity_polygon), ("acceleration", acceleration_polygon))
+    for r, (kind, build) in enumerate(rows):
+        polys = [build(design, float(a), rpm) for a in diagrams]
+        for c, (angle, poly) in enumerate(zip(diagrams, polys)):
+            # each its own scale: a slow position stays legible; labels need a margin
+            mu = polygon_fit_scale(poly, cw - 24.0, ch - 2 * CAPTION - 14.0)
+            cell = (x0 + c * cw, y1 - (r + 1) * ch, x0 + (c + 1) * cw, y1 - r * ch)
+            title = caption(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
+                            ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)
+            ex = polygon_extent(poly, mu)
+            cx, cy = (cell[0] + cell[2]) / 2.0, (cell[1] + cell[3] - 2 * CAPTION) / 2.0
+            pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
+            items.append(title)
+            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [title.box()],
+                                   within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]))
+    return items
+
+
+def _dimension_rows(design: Design, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:
+    mm = lambda v: f"{v:.3f} mm"                     # noqa: E731
+    rows = [(lab["L1"], mm(design.crank)), (lab["L2"], mm(design.frame)),
+            (lab["L3"], mm(design.lever))]
+    if design.rod is not None:
+        rows.append((lab["L4"], mm(design.rod)))
+    rows += [(lab["h"], mm(design.guide_above_crank)), (lab["H"], mm(design.stroke)),
+             (lab["K"], f"{design.time_ratio:.4f}"),
+             (lab["theta"], f"{math.degrees(design.theta):.3f}°"),
+             (lab["n"], f"{number_text(rpm)} r/min")]
+    return rows

@@ -1,0 +1,360 @@
+"""A drawing sheet as plain data: paper, border, title block and items in paper mm.
+
+One description, several writers: the GUI paints a :class:`Sheet` into PDF and
+SVG with QPainter, :mod:`core.drawing.sheet_dxf` writes it as DXF. So the three
+files of one sheet cannot disagree, and the tests measure the description
+itself (every item inside the border, no two texts overlapping, a length
+divided by its scale equal to the design's).
+
+Coordinates are millimetres on the paper, origin at its lower-left corner, y up.
+Each item is on one of :mod:`core.drawing.dxf`'s layers, which fixes its line
+type after GB/T 4457.4 (thick, thin, centre, dashed). Paper sizes and the border
+follow GB/T 14689 (landscape, with a binding margin), scales GB/T 14690, text
+heights GB/T 14691's series, the title block the layout of GB/T 10609.1 (lower
+right; its label texts come from the caller, who chooses the language).
+"""
+from __future__ import annotations
+
+import math
+import unicodedata
+from dataclasses import dataclass, field
+from typing import Mapping, Sequence, Union
+
+import numpy as np
+
+from core.polygons import nice_scale
+
+from .dxf import OUTLINE, TEXT, THIN, TITLE
+
+Pair = tuple[float, float]
+Box = tuple[float, float, float, float]          # x0, y0, x1, y1 in paper mm
+
+TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
+# Estimated advance per character as a fraction of the text height: CJK characters are
+# square, Latin ones narrower. The renderers squeeze a text that comes out wider than this
+# estimate, so the estimate is what the layout and the overlap checks can rely on.
+WIDE_ADVANCE = 1.05
+NARROW_ADVANCE = 0.78
+BINDING_MARGIN = 25.0                           # a of GB/T 14689
+# GB/T 14690: 1:1, 1:2, 1:5, 1:10 … preferred, 1:1.5, 1:2.5, 1:3, 1:4, 1:6 … allowed (as the report)
+SCALE_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0)
+
+
+@dataclass(frozen=True)
+class Polyline:
+    """Straight segments through ``points`` ((n, 2) paper mm); ``filled`` also fills it."""
+
+    points: np.ndarray
+    layer: str = THIN
+    closed: bool = False
+    filled: bool = False
+
+
+@dataclass(frozen=True)
+class Circle:
+    center: Pair
+    radius: float
+    layer: str = THIN
+    filled: bool = False
+
+
+@dataclass(frozen=True)
+class Text:
+    """One line of text. ``height`` is the character height (GB/T 14691: h, the height of
+    the capitals), ``align`` a horizontal (l, c, r) and a vertical (b, m, t) letter, e.g.
+    "lb" or "cm"; ``rotation`` in degrees counter-clockwise about ``position``."""
+
+    text: str
+    position: Pair
+    height: float = 3.5
+    align: str = "lb"
+    rotation: float = 0.0
+    layer: str = TEXT
+
+    @property
+    def width(self) -> float:
+        return text_width(self.text, self.height)
+
+    def box(self) -> Box:
+        """Its extent on the paper (estimated width, a descender below), rotated."""
+        w, h = self.width, self.height
+        dx = {"l": 0.0, "c": -w / 2.0, "r": -w}[self.align[0]]
+        dy = {"b": 0.0, "m": -h / 2.0, "t": -h}[self.align[1]]
+        corners = np.array([[dx, dy - 0.25 * h], [dx + w, dy - 0.25 * h],
+                            [dx + w, dy + h * 1.1], [dx, dy + h * 1.1]])
+        return _bounds(_rotate(corners, self.rotation) + np.asarray(self.position))
+
+
+Item = Union[Polyline, Circle, Text]
+
+
+def text_width(text: str, height: float) -> float:
+    """Estimated width of ``text`` at ``height`` mm."""
+    wide = sum(1 for ch in text if unicodedata.east_asian_width(ch) in "WF")
+    return height * (WIDE_ADVANCE * wide + NARROW_ADVANCE * (len(text) - wide))
+
+
+def _rotate(points: np.ndarray, degrees: float) -> np.ndarray:
+    if not degrees:
+        return points
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return points @ np.array([[c, s], [-s, c]])
+
+
+def _bounds(points: np.ndarray) -> Box:
+    return (float(points[:, 0].min()), float(points[:, 1].min()),
+            float(points[:, 0].max()), float(points[:, 1].max()))
+
+
+def item_box(item: Item) -> Box:
+    """An item's extent on the paper."""
+    if isinstance(item, Text):
+        return item.box()
+    if isinstance(item, Circle):
+        (x, y), r = item.center, item.radius
+        return (x - r, y - r, x + r, y + r)
+    return _bounds(np.asarray(item.points, dtype=float))
+
+
+def line(points: Sequence[Pair] | np.ndarray, layer: str = THIN, closed: bool = False,
+         filled: bool = False) -> Polyline:
+    return Polyline(np.asarray(points, dtype=float).reshape(-1, 2), layer, closed, filled)
+
+
+def rectangle(box: Box, layer: str = THIN) -> Polyline:
+    x0, y0, x1, y1 = box
+    return line([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], layer, closed=True)
+
+
+# ---- paper -------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Paper:
+    """A GB/T 14689 sheet in landscape with a binding margin on the left."""
+
+    name: str
+    width: float
+    height: float
+    margin: float          # c: top, right and bottom
+
+    @property
+    def border(self) -> Box:
+        """The drawing frame (图框): everything drawn lies inside it."""
+        return (BINDING_MARGIN, self.margin, self.width - self.margin, self.height - self.margin)
+
+
+PAPERS = {name: Paper(name, w, h, c) for name, w, h, c in (
+    ("A0", 1189.0, 841.0, 10.0), ("A1", 841.0, 594.0, 10.0), ("A2", 594.0, 420.0, 10.0),
+    ("A3", 420.0, 297.0, 5.0))}
+
+
+def paper(name: str) -> Paper:
+    """The paper of that name (A0 … A3, any case); KeyError naming the choices."""
+    try:
+        return PAPERS[name.upper()]
+    except KeyError:
+        raise KeyError(f"{name!r} is not one of {', '.join(PAPERS)}") from None
+
+
+@dataclass(frozen=True)
+class Sheet:
+    paper: Paper
+    items: tuple[Item, ...] = field(default_factory=tuple)
+
+
+def frame_items(p: Paper) -> list[Item]:
+    """The trimmed edge (thin) and the border (thick)."""
+    return [rectangle((0.0, 0.0, p.width, p.height), THIN), rectangle(p.border, OUTLINE)]
+
+
+# ---- scales ------------------------------------------------------------------------------
+
+def standard_scale(extent_mm: float, room_mm: float) -> float:
+    """The smallest reduction 1:d of GB/T 14690's series (d = 1, 1.5, 2, 2.5, 3, 4, 5, 6 × 10^k,
+    at least 1:1) that draws ``extent_mm`` of the design within ``room_mm`` of paper. Returns d."""
+    return max(1.0, nice_scale(extent_mm, room_mm, SCALE_MANTISSAS))
+
+
+def scale_text(denominator: float) -> str:
+    """1:2.5, 1:10 …"""
+    return f"1:{number_text(denominator)}"
+
+
+def number_text(value: float) -> str:
+    """A scale's number without trailing zeros: 0.002, 2.5, 10."""
+    return f"{value:.6g}" if abs(value) < 1e5 else f"{value:.3e}"
+
+
+@dataclass(frozen=True)
+class Placement:
+    """Model coordinates (a drawing's own unit) to paper mm: paper = origin + (model − anchor)/μ.
+
+    ``scale`` μ is the course design's: model units per mm of paper (1:5 in mm is μ = 5
+    mm/mm; a velocity polygon at μv = 0.01 is (m/s)/mm)."""
+
+    scale: float
+    origin: Pair
+    anchor: Pair = (0.0, 0.0)
+
+    def __call__(self, points) -> np.ndarray:
+        p = np.asarray(points, dtype=float)
+        return (p - np.asarray(self.anchor)) / self.scale + np.asarray(self.origin)
+
+    def length(self, model_length: float) -> float:
+        return model_length / self.scale
+
+
+def fit(bounds: Box, box: Box, scale: float) -> Placement:
+    """Centre the model ``bounds`` drawn at ``scale`` in the paper ``box``."""
+    mx, my = (bounds[0] + bounds[2]) / 2.0, (bounds[1] + bounds[3]) / 2.0
+    return Placement(scale, ((box[0] + box[2]) / 2.0, (box[1] + box[3]) / 2.0), (mx, my))
+
+
+def shrink(box: Box, by: float) -> Box:
+    return (box[0] + by, box[1] + by, box[2] - by, box[3] - by)
+
+
+# ---- text that fits ----------------------------------------------------------------------
+
+def fitting_height(text: str, room: float, largest: float = 5.0) -> float:
+    """The largest standard height ≤ ``largest`` at which ``text`` is ≤ ``room`` mm wide
+    (the smallest, 2.5 mm, if none is)."""
+    for h in sorted((h for h in TEXT_HEIGHTS if h <= largest), reverse=True):
+        if text_width(text, h) <= room:
+            return h
+    return TEXT_HEIGHTS[0]
+
+
+def clipped(text: str, room: float, height: float) -> str:
+    """``text`` cut with an ellipsis to fit ``room`` at ``height``."""
+    if text_width(text, height) <= room:
+        return text
+    while text and text_width(text + "…", height) > room:
+        text = text[:-1]
+    return text + "…" if text else ""
+
+
+def cell_text(text: str, box: Box, largest: float = 5.0, align: str = "c",
+              layer: str = TEXT) -> Text:
+    """``text`` inside the cell ``box``, as large as fits (≤ ``largest``), centred
+    vertically, aligned left (1 mm in), centre or right."""
+    x0, y0, x1, y1 = box
+    room = x1 - x0 - 2.0
+    h = min(fitting_height(text, room, largest), (y1 - y0) / 1.6)
+    h = max((v for v in TEXT_HEIGHTS if v <= h), default=TEXT_HEIGHTS[0])
+    x = {"l": x0 + 1.0, "c": (x0 + x1) / 2.0, "r": x1 - 1.0}[align]
+    return Text(clipped(text, room, h), (x, (y0 + y1) / 2.0), h, align + "m", layer=layer)
+
+
+# ---- tables and the title block ----------------------------------------------------------
+
+def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]],
+          row_height: float = 8.0, text_height: float = 3.5, layer: str = TEXT,
+          aligns: str | None = None) -> list[Item]:
+    """Rows of texts in ruled cells: outline thick, inner rules thin (GB/T 10609.1)."""
+    x0, y_top = top_left
+    xs = np.concatenate([[x0], x0 + np.cumsum(widths)])
+    height = row_height * len(rows)
+    items: list[Item] = [rectangle((x0, y_top - height, float(xs[-1]), y_top), OUTLINE)]
+    for k in range(1, len(rows)):
+        y = y_top - k * row_height
+        items.append(line([(x0, y), (xs[-1], y)], THIN))
+    for x in xs[1:-1]:
+        items.append(line([(x, y_top - height), (x, y_top)], THIN))
+    for r, row in enumerate(rows):
+        y1 = y_top - r * row_height
+        for c, text in enumerate(row):
+            if text:
+                align = aligns[c] if aligns else "c"
+                items.append(cell_text(text, (float(xs[c]), y1 - row_height, float(xs[c + 1]), y1),
+                                       text_height, align, layer))
+    return items
+
+
+TITLE_WIDTH = 180.0
+TITLE_ROW = 8.0
+TITLE_ROWS = 4
+TITLE_LABEL_KEYS = ("design", "scale", "sheet", "drawn", "date", "checked", "approved")
+
+
+@dataclass(frozen=True)
+class TitleBlock:
+    """What the title block says. ``labels`` maps TITLE_LABEL_KEYS to the caller's words."""
+
+    title: str                 # the sheet's name, e.g. "Motion analysis"
+    design: str                # the design's name
+    scale: str                 # e.g. "1:5"
+    sheet: str                 # e.g. "1/2"
+    drawn: str = ""
+    date: str = ""
+    school: str = ""
+    labels: Mapping[str, str] = field(default_factory=dict)
+
+
+def title_block_box(p: Paper) -> Box:
+    x1, y0 = p.border[2], p.border[1]
+    return (x1 - TITLE_WIDTH, y0, x1, y0 + TITLE_ROW * TITLE_ROWS)
+
+
+def title_block(p: Paper, block: TitleBlock) -> list[Item]:
+    """The title block in the border's lower right corner, 180 × 32 mm: labels and values
+    on the left, the sheet's name and the school in two large cells on the right."""
+    x0, y0, x1, y1 = title_block_box(p)
+    lab = lambda key: block.labels.get(key, key)            # noqa: E731
+    cols = (x0, x0 + 22.0, x0 + 62.0, x0 + 84.0, x0 + 114.0, x1)
+    row_y = [y1 - k * TITLE_ROW for k in range(TITLE_ROWS + 1)]
+    items: list[Item] = [rectangle((x0, y0, x1, y1), OUTLINE)]
+    for k in range(1, TITLE_ROWS):
+        items.append(line([(x0, row_y[k]), (cols[4], row_y[k])], THIN))
+    items.append(line([(cols[4], row_y[2]), (x1, row_y[2])], THIN))
+    items.append(line([(cols[1], y0), (cols[1], y1)], THIN))
+    for x in cols[2:4]:                                       # the name's cell spans them
+        items.append(line([(x, y0), (x, row_y[1])], THIN))
+    items.append(line([(cols[4], y0), (cols[4], y1)], OUTLINE))
+    cells = [(0, lab("design"), block.design, None, None),
+             (1, lab("scale"), block.scale, lab("sheet"), block.sheet),
+             (2, lab("drawn"), block.drawn, lab("date"), block.date),
+             (3, lab("checked"), "", lab("approved"), "")]
+    for row, label, value, label2, value2 in cells:
+        top, bottom = row_y[row], row_y[row + 1]
+        items.append(cell_text(label, (cols[0], bottom, cols[1], top), 3.5, layer=TITLE))
+        if label2 is None:
+            items.append(cell_text(value, (cols[1], bottom, cols[4], top), 5.0, layer=TITLE))
+            continue
+        items.append(cell_text(value, (cols[1], bottom, cols[2], top), 3.5, layer=TITLE))
+        items.append(cell_text(label2, (cols[2], bottom, cols[3], top), 3.5, layer=TITLE))
+        items.append(cell_text(value2, (cols[3], bottom, cols[4], top), 3.5, layer=TITLE))
+    items.append(cell_text(block.title, (cols[4], row_y[2], x1, y1), 7.0, layer=TITLE))
+    if block.school:
+        items.append(cell_text(block.school, (cols[4], y0, x1, row_y[2]), 5.0, layer=TITLE))
+    return [it for it in items if not (isinstance(it, Text) and not it.text)]
+
+
+# ---- checks the tests and the writers share ------------------------------------------------
+
+def outside_border(sheet: Sheet) -> list[Item]:
+    """Items not wholly inside the border (the frame's own trimmed edge excepted)."""
+    x0, y0, x1, y1 = sheet.paper.border
+    trim = (0.0, 0.0, sheet.paper.width, sheet.paper.height)
+    tol = 1e-6
+    out = []
+    for item in sheet.items:
+        b = item_box(item)
+        if np.allclose(b, trim):
+            continue
+        if b[0] < x0 - tol or b[1] < y0 - tol or b[2] > x1 + tol or b[3] > y1 + tol:
+            out.append(item)
+    return out
+
+
+def overlapping_texts(sheet: Sheet) -> list[tuple[Text, Text]]:
+    """Pairs of texts whose boxes intersect."""
+    texts = [it for it in sheet.items if isinstance(it, Text)]
+    boxes = np.array([t.box() for t in texts]).reshape(-1, 4)
+    pairs = []
+    for i in range(len(texts)):
+        b = boxes[i]
+        hit = ((boxes[i + 1:, 0] < b[2]) & (boxes[i + 1:, 2] > b[0])
+               & (boxes[i + 1:, 1] < b[3]) & (boxes[i + 1:, 3] > b[1]))
+        pairs += [(texts[i], texts[i + 1 + j]) for j in np.flatnonzero(hit)]
+    return pairs

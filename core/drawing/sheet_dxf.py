@@ -1,0 +1,53 @@
+"""A :class:`~core.drawing.sheet.Sheet` as DXF, in paper mm at 1:1.
+
+Every item goes on its layer of :mod:`core.drawing.dxf` with BYLAYER linetype,
+weight and colour, so a CAD user can switch the centre lines or the texts off
+by layer, and prints the sheet at 1:1 on the paper it names.
+"""
+from __future__ import annotations
+
+import os
+
+from ezdxf import zoom
+from ezdxf.document import Drawing
+from ezdxf.enums import TextEntityAlignment
+
+from .dxf import TEXT_STYLE, new_document, save_dxf
+from .sheet import Circle, Polyline, Sheet, Text
+
+ALIGNMENTS = {
+    "lb": TextEntityAlignment.LEFT, "cb": TextEntityAlignment.CENTER, "rb": TextEntityAlignment.RIGHT,
+    "lm": TextEntityAlignment.MIDDLE_LEFT, "cm": TextEntityAlignment.MIDDLE_CENTER,
+    "rm": TextEntityAlignment.MIDDLE_RIGHT, "lt": TextEntityAlignment.TOP_LEFT,
+    "ct": TextEntityAlignment.TOP_CENTER, "rt": TextEntityAlignment.TOP_RIGHT,
+}
+
+
+def sheet_document(sheet: Sheet) -> Drawing:
+    """The sheet in model space (paper mm, origin at the trimmed edge's lower left)."""
+    doc = new_document()
+    msp = doc.modelspace()
+    w, h = sheet.paper.width, sheet.paper.height
+    layout = msp.dxf_layout.dxf          # the limits ezdxf writes to the header: the paper
+    layout.limmin, layout.limmax = (0.0, 0.0), (w, h)
+    for item in sheet.items:
+        attribs = {"layer": item.layer}
+        if isinstance(item, Polyline):
+            points = [(float(x), float(y)) for x, y in item.points]
+            msp.add_lwpolyline(points, close=item.closed, dxfattribs=attribs)
+            if item.filled:
+                hatch = msp.add_hatch(dxfattribs=attribs)
+                hatch.paths.add_polyline_path(points, is_closed=True)
+        elif isinstance(item, Circle):
+            msp.add_circle(item.center, item.radius, dxfattribs=attribs)
+        elif isinstance(item, Text):
+            text = msp.add_text(item.text, height=item.height, rotation=item.rotation,
+                                dxfattribs={**attribs, "style": TEXT_STYLE})
+            text.set_placement(item.position, align=ALIGNMENTS[item.align])
+    zoom.window(msp, (0.0, 0.0), (w, h))   # CAD opens on the whole sheet
+    return doc
+
+
+def save_sheet_dxf(sheet: Sheet, path: str | os.PathLike) -> None:
+    """Write the sheet as DXF atomically (``dxf.save_dxf``: audited first)."""
+    save_dxf(sheet_document(sheet), path)

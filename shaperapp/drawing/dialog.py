@@ -1,0 +1,193 @@
+"""File › Export drawing sheet…: paper, content, positions, polygon angles and title block,
+with a preview of the sheet as it will be written; then PDF, SVG or DXF.
+
+The sheet is built from the model's design on screen, its first speed and its
+loads, in the UI's language, by the same code as ``shaper drawing``.
+"""
+from __future__ import annotations
+
+import datetime
+import os
+
+from PySide6.QtCore import QSettings, QSize, Qt, QTimer
+from PySide6.QtGui import QGuiApplication, QImage, QPainter, QPixmap
+from PySide6.QtWidgets import (QComboBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
+                               QFormLayout, QHBoxLayout, QLabel, QLineEdit, QMessageBox, QSpinBox,
+                               QWidget)
+
+from core.drawing.motion import MAX_POSITIONS, motion_sheet
+from core.drawing.sheet import PAPERS, Sheet
+from core.dynamics import masses_for_design
+from core.positions import DEFAULT_COUNT
+
+from shaperapp.design.model import DesignModel
+from shaperapp.widgets.command_line import MAX_TEXT, design_file_name
+from shaperapp.widgets.fonts import MissingFontError
+
+from .content import SHEET_SUFFIXES, SheetChoice, build_sheet
+from .render import paint_sheet, write_sheet
+
+PREVIEW_WIDTH = 560            # px of the preview's longer side
+SETTINGS_KEYS = ("drawn", "school")
+
+
+class DrawingSheetDialog(QDialog):
+    """The choices on the left, the sheet's preview on the right; Save… writes the file."""
+
+    def __init__(self, model: DesignModel, language: str = "en", parent: QWidget | None = None,
+                 settings: QSettings | None = None, start_dir: str = "") -> None:
+        super().__init__(parent)
+        self._start = start_dir
+        self.setWindowTitle(self.tr("Export drawing sheet"))
+        self.model, self.language, self._settings = model, language, settings
+        self.written = ""
+        self.paper = QComboBox()
+        self.paper.addItems(list(PAPERS))
+        self.paper.setCurrentText("A1")
+        self.content = QComboBox()
+        self.content.addItem(self.tr("Motion analysis"), "motion")
+        self.count = QSpinBox()
+        self.count.setRange(1, MAX_POSITIONS)
+        self.count.setValue(DEFAULT_COUNT)
+        self.angles = []
+        for _ in range(2):
+            box = QDoubleSpinBox()
+            box.setRange(-360.0, 720.0)
+            box.setDecimals(2)
+            box.setSuffix(" °")
+            self.angles.append(box)
+        self.fields = {"design": QLineEdit(design_file_name(model.path) if model.path else ""),
+                       "drawn": QLineEdit(), "school": QLineEdit(),
+                       "date": QLineEdit(datetime.date.today().isoformat())}
+        for key, edit in self.fields.items():
+            edit.setMaxLength(MAX_TEXT)
+            if settings is not None and key in SETTINGS_KEYS:
+                edit.setText(str(settings.value(f"drawing/{key}", "") or ""))
+        form = QFormLayout()
+        form.addRow(self.tr("Paper:"), self.paper)
+        form.addRow(self.tr("Content:"), self.content)
+        form.addRow(self.tr("Positions:"), self.count)
+        form.addRow(self.tr("Polygons at φ (working stroke):"), self.angles[0])
+        form.addRow(self.tr("Polygons at φ (return stroke):"), self.angles[1])
+        form.addRow(self.tr("Design name:"), self.fields["design"])
+        form.addRow(self.tr("Drawn by:"), self.fields["drawn"])
+        form.addRow(self.tr("School:"), self.fields["school"])
+        form.addRow(self.tr("Date:"), self.fields["date"])
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Save
+                                   | QDialogButtonBox.StandardButton.Cancel)
+        buttons.accepted.connect(self._save_dialog)
+        buttons.rejected.connect(self.reject)
+        form.addRow(buttons)
+        self.preview = QLabel()
+        self.preview.setMinimumSize(QSize(PREVIEW_WIDTH, round(PREVIEW_WIDTH * 594 / 841)))
+        self.preview.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.message = QLabel()
+        self.message.setWordWrap(True)
+        form.addRow(self.message)
+        layout = QHBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(self.preview, 1)
+        self._default_angles()
+        self._timer = QTimer(self)
+        self._timer.setSingleShot(True)
+        self._timer.setInterval(150)
+        self._timer.timeout.connect(self.update_preview)
+        for signal in (self.paper.currentIndexChanged, self.content.currentIndexChanged,
+                       self.count.valueChanged, self.angles[0].valueChanged,
+                       self.angles[1].valueChanged, *(e.textChanged for e in self.fields.values())):
+            signal.connect(self._timer.start)
+        self.update_preview()
+
+    def _default_angles(self) -> None:
+        """The polygon positions the sheet would choose (mid working, mid return stroke)."""
+        drawn = motion_sheet(self.model.design, self.model.rpms[0], PAPERS["A3"],
+                             count=self.count.value())
+        for box, value in zip(self.angles, drawn.diagram_deg):
+            box.setValue(value)
+
+    def choice(self) -> SheetChoice:
+        text = {key: edit.text().strip() for key, edit in self.fields.items()}
+        return SheetChoice(self.content.currentData(), self.paper.currentText(), self.count.value(),
+                           (self.angles[0].value(), self.angles[1].value()), text["design"],
+                           text["drawn"], text["date"] or datetime.date.today().isoformat(),
+                           text["school"])
+
+    def sheet(self) -> Sheet:
+        masses = masses_for_design(self.model.design, self.model.masses)
+        return build_sheet(self.model.valid_spec, self.model.rpms, masses, self.choice())
+
+    def update_preview(self) -> None:
+        """The sheet painted as it will print, scaled to the preview."""
+        sheet = self.sheet()
+        px = PREVIEW_WIDTH / sheet.paper.width * 2.0         # 2× for a sharp preview on HiDPI
+        image = QImage(round(sheet.paper.width * px), round(sheet.paper.height * px),
+                       QImage.Format.Format_RGB32)
+        image.fill(Qt.GlobalColor.white)
+        painter = QPainter(image)
+        painter.scale(px, px)
+        try:
+            paint_sheet(sheet, painter, self.language)
+            self.message.clear()
+        except MissingFontError:
+            self.message.setText(self.tr("No font with Chinese characters is installed: install one "
+                                         "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
+                                         "to English."))
+        painter.end()
+        pixmap = QPixmap.fromImage(image)
+        pixmap.setDevicePixelRatio(2.0)
+        self.preview.setPixmap(pixmap)
+
+    def export(self, path: str) -> None:
+        """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix). ValueError for another
+        suffix, before anything is built; MissingFontError, OSError as the writer raises."""
+        if os.path.splitext(path)[1].lower() not in SHEET_SUFFIXES:
+            raise ValueError(os.path.basename(path))
+        write_sheet(self.sheet(), path, self.language, self.choice().design_name)
+        self.written = path
+        if self._settings is not None:
+            for key in SETTINGS_KEYS:
+                self._settings.setValue(f"drawing/{key}", self.fields[key].text().strip())
+
+    def _save_dialog(self) -> None:
+        start = os.path.join(self._start_dir(), f"{self.content.currentData()}.pdf")
+        filters = {self.tr("PDF document (*.pdf)"): ".pdf", self.tr("SVG image (*.svg)"): ".svg",
+                   self.tr("DXF drawing (*.dxf)"): ".dxf"}
+        path, chosen = QFileDialog.getSaveFileName(self, self.windowTitle(), start, ";;".join(filters))
+        if not path:
+            return
+        if not os.path.splitext(os.path.basename(path))[1]:     # typed without a type
+            path += filters.get(chosen, ".pdf")
+        QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+        try:
+            self.export(path)
+        except ValueError:
+            failure = self.tr("A drawing sheet is written as PDF (.pdf), SVG (.svg) or DXF (.dxf); "
+                              "%1 is none of them. Nothing was written.")
+            failure = failure.replace("%1", os.path.basename(path))
+        except MissingFontError:
+            failure = self.tr("No font with Chinese characters is installed: install one (on "
+                              "Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
+        except OSError as exc:
+            failure = self.tr("Could not write %1: %2").replace("%1", path).replace(
+                "%2", exc.strerror or str(exc))
+        else:
+            failure = ""
+        finally:
+            QGuiApplication.restoreOverrideCursor()
+        if failure:
+            QMessageBox.warning(self, self.windowTitle(), failure)
+            return
+        self.accept()
+
+    def _start_dir(self) -> str:
+        if self._start:
+            return self._start
+        return os.path.dirname(self.model.path) if self.model.path else os.path.expanduser("~")
+
+
+def export_sheet_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
+                        settings: QSettings | None = None) -> str:
+    """Show the dialog; returns the path written or ''."""
+    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir)
+    dialog.exec()
+    return dialog.written

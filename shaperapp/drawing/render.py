@@ -1,0 +1,145 @@
+"""Paint a :class:`core.drawing.sheet.Sheet` with QPainter: PDF, SVG and the preview.
+
+The sheet is in paper mm with y up; the painter here works in mm with y down,
+so every point is flipped once and texts are drawn upright. Line widths and
+dash patterns are those of the sheet's layers (GB/T 4457.4, as the DXF has
+them), so the three files of one sheet look alike. A text comes out at its
+character height (the capitals' height) and never wider than the sheet's
+estimate of it: the layout's no-overlap guarantee holds on paper too.
+"""
+from __future__ import annotations
+
+import errno
+
+from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QPointF, QRectF, QSizeF, Qt
+from PySide6.QtGui import (QBrush, QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
+                           QPainterPath, QPdfWriter, QPen, QPolygonF)
+from PySide6.QtSvg import QSvgGenerator
+
+from core.atomic import atomic_write
+from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
+from core.drawing.sheet import Circle, Polyline, Sheet, Text
+
+from shaperapp.widgets.fonts import report_font
+
+PDF_RESOLUTION = 1200          # dots per inch of the PDF's coordinates
+SVG_UNITS_PER_MM = 10.0        # SVG user units per mm (viewBox in mm: width="841mm")
+INK = QColor(0, 0, 0)
+
+
+def _pen(layer: str) -> QPen:
+    spec = LAYERS[layer]
+    width = spec.lineweight / 100.0 if spec.lineweight > 0 else THICK_MM / 2.0
+    pen = QPen(INK, width)
+    pen.setCapStyle(Qt.PenCapStyle.FlatCap)
+    pen.setJoinStyle(Qt.PenJoinStyle.MiterJoin)
+    if spec.linetype in LINETYPES:
+        pattern = [abs(v) if v else 0.3 for v in LINETYPES[spec.linetype][1][1:]]
+        pen.setDashPattern([v / width for v in pattern])
+    return pen
+
+
+def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en") -> None:
+    """Paint ``sheet`` with ``painter`` whose coordinates are paper mm, y down, origin at
+    the sheet's upper left corner."""
+    height = sheet.paper.height
+    font = report_font(language)
+    font.setPixelSize(100)
+    metrics = QFontMetricsF(font)
+    cap = metrics.capHeight() or 70.0
+    painter.setRenderHint(QPainter.RenderHint.Antialiasing, True)
+    painter.fillRect(QRectF(0, 0, sheet.paper.width, height), QColor(255, 255, 255))
+    for item in sheet.items:
+        if isinstance(item, Text):
+            _text(painter, item, height, font, metrics, cap)
+            continue
+        painter.setPen(_pen(item.layer))
+        if isinstance(item, Circle):
+            painter.setBrush(QBrush(INK) if item.filled else Qt.BrushStyle.NoBrush)
+            painter.drawEllipse(QPointF(item.center[0], height - item.center[1]), item.radius, item.radius)
+        elif isinstance(item, Polyline):
+            poly = QPolygonF([QPointF(float(x), height - float(y)) for x, y in item.points])
+            if item.filled:
+                path = QPainterPath()
+                path.addPolygon(poly)
+                path.closeSubpath()
+                painter.fillPath(path, QBrush(INK))
+            if item.closed:
+                painter.setBrush(Qt.BrushStyle.NoBrush)
+                painter.drawPolygon(poly)
+            else:
+                painter.drawPolyline(poly)
+
+
+def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QFontMetricsF,
+          cap: float) -> None:
+    k = item.height / cap
+    advance = metrics.horizontalAdvance(item.text)
+    squeeze = min(1.0, item.width / k / advance) if advance > 0 else 1.0
+    width = advance * squeeze
+    dx = {"l": 0.0, "c": -width / 2.0, "r": -width}[item.align[0]]
+    dy = {"b": 0.0, "m": cap / 2.0, "t": cap}[item.align[1]]
+    painter.save()
+    painter.translate(item.position[0], height - item.position[1])
+    painter.rotate(-item.rotation)
+    painter.scale(k, k)
+    painter.setFont(font)
+    painter.setPen(QPen(INK))
+    painter.translate(dx, dy)
+    painter.scale(squeeze, 1.0)
+    painter.drawText(QPointF(0.0, 0.0), item.text)
+    painter.restore()
+
+
+def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
+    """The sheet as a one-page PDF of exactly its paper size."""
+    data = QByteArray()
+    buffer = QBuffer(data)
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    writer = QPdfWriter(buffer)
+    writer.setResolution(PDF_RESOLUTION)
+    size = QPageSize(QSizeF(sheet.paper.width, sheet.paper.height), QPageSize.Unit.Millimeter,
+                     sheet.paper.name, QPageSize.SizeMatchPolicy.ExactMatch)
+    writer.setPageLayout(QPageLayout(size, QPageLayout.Orientation.Portrait, QMarginsF(0, 0, 0, 0)))
+    writer.setTitle(title)
+    writer.setCreator("Shaper Designer")
+    painter = QPainter(writer)
+    dots = PDF_RESOLUTION / 25.4
+    painter.scale(dots, dots)
+    paint_sheet(sheet, painter, language)
+    painter.end()
+    buffer.close()
+    return bytes(data.data())
+
+
+def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
+    """The sheet as SVG, its size in mm and its viewBox in paper units."""
+    data = QByteArray()
+    buffer = QBuffer(data)
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    device = QSvgGenerator()
+    device.setOutputDevice(buffer)
+    w, h = sheet.paper.width, sheet.paper.height
+    device.setSize(QSizeF(w * SVG_UNITS_PER_MM, h * SVG_UNITS_PER_MM).toSize())
+    device.setViewBox(QRectF(0, 0, w * SVG_UNITS_PER_MM, h * SVG_UNITS_PER_MM))
+    device.setResolution(round(25.4 * SVG_UNITS_PER_MM))
+    device.setTitle(title)
+    painter = QPainter(device)
+    painter.scale(SVG_UNITS_PER_MM, SVG_UNITS_PER_MM)
+    paint_sheet(sheet, painter, language)
+    painter.end()
+    buffer.close()
+    return bytes(data.data())
+
+
+def write_sheet(sheet: Sheet, path: str, language: str = "en", title: str = "") -> None:
+    """PDF, SVG or DXF by the name's suffix, atomically; OSError (a WriteError) names the path."""
+    from core.drawing.sheet_dxf import save_sheet_dxf
+    suffix = path.lower().rsplit(".", 1)[-1]
+    if suffix == "dxf":
+        save_sheet_dxf(sheet, path)
+        return
+    data = pdf_bytes(sheet, language, title) if suffix == "pdf" else svg_bytes(sheet, language, title)
+    if not data:
+        raise OSError(errno.EIO, "the writer produced nothing", path)
+    atomic_write(path, data)

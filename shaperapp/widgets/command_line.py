@@ -1,0 +1,126 @@
+"""What the Qt-based ``shaper`` subcommands (report, drawing) share: a headless Qt
+application, quiet Qt messages, one-line text options and the design's name."""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+from core.cli.common import UsageError
+
+MAX_TEXT = 200
+
+
+def cover_text(option: str, value: str | None) -> str:
+    """A text option as given: one line of at most MAX_TEXT characters (UsageError)."""
+    if value is None:
+        return ""
+    if any(ch < " " or "\x7f" <= ch < "\xa0" or ch in "\u2028\u2029" for ch in value):
+        raise UsageError(f"{option}: must be one line of text without control characters")
+    if len(value) > MAX_TEXT:
+        raise UsageError(f"{option}: at most {MAX_TEXT} characters (got {len(value)})")
+    return value.strip()
+
+
+def design_file_name(path: str) -> str:
+    """A design file's name without its types (.json, .shaper): what titles call the design."""
+    name = Path(path).name
+    for suffix in (".json", ".shaper"):
+        name = name[: -len(suffix)] if name.endswith(suffix) else name
+    return name
+
+
+def inputs_name(spec) -> str:
+    """A design without a file or library name is named by its inputs, never "Untitled"."""
+    if spec.mode == "synthesis":
+        text = f"L1 {spec.crank:g} mm, K {spec.time_ratio:g}, H {spec.stroke:g} mm"
+    else:
+        text = f"L1 {spec.crank:g} mm, L2 {spec.frame:g} mm, L3 {spec.lever:g} mm"
+    if spec.variant == "rod":
+        text += f", L4 {spec.rod_length:g} mm" if spec.rod_input == "length" \
+            else f", L4/L3 {spec.rod_ratio:g}"
+    return text
+
+
+def design_name(args: argparse.Namespace) -> str:
+    """--title, else the design file's name, else ''."""
+    if args.title:
+        return args.title
+    return design_file_name(args.design) if args.design else ""
+
+
+def ensure_headless() -> None:
+    """Qt draws offscreen when there is no display (CI, ssh)."""
+    if sys.platform.startswith("linux") and not (os.environ.get("DISPLAY")
+                                                 or os.environ.get("WAYLAND_DISPLAY")):
+        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+
+def _quiet(kind, _context, message) -> None:
+    """Qt's platform notes (e.g. the offscreen plugin's) are not for the user; real
+    failures surface as exceptions or a missing file."""
+    from PySide6.QtCore import QtMsgType
+    if kind in (QtMsgType.QtCriticalMsg, QtMsgType.QtFatalMsg):
+        print(f"shaper: Qt: {message}", file=sys.stderr)
+
+
+def application():
+    """The running QApplication, or a new one with the plots configured."""
+    from PySide6.QtCore import qInstallMessageHandler
+    from PySide6.QtWidgets import QApplication
+    from shaperapp.widgets.style import configure_plots
+    configure_plots()
+    qInstallMessageHandler(_quiet)
+    return QApplication.instance() or QApplication(sys.argv[:1])
+
+
+def inputs_from_args(args: argparse.Namespace):
+    """The design's inputs, its speeds and its loads (None when none were given), checked."""
+    from core.cli.cmd_table import masses_or_none
+    from core.cli.common import rpms_from_args, spec_from_args
+    from core.kinematics import check_rpms
+    spec = spec_from_args(args)
+    design = spec.design()                  # its error first, as every command reports it
+    rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
+    return spec, rpms, masses_or_none(args, design)
+
+
+def diagram_angles(args: argparse.Namespace) -> tuple[float, float] | None:
+    """--diagrams A,B as two crank angles in degrees, or None when not given."""
+    from core.cli.common import number_list
+    from core.errors import DesignError
+    from core.positions import check_extra
+    if args.diagrams is None:
+        return None
+    values = check_extra(number_list("diagrams", args.diagrams))
+    if values.size != 2:
+        raise DesignError("diagrams", args.diagrams, "must be two crank angles A,B in degrees")
+    return float(values[0]), float(values[1])
+
+
+def check_output_folder(path: str) -> None:
+    """OutputError naming --output when ``path``'s folder is missing or ``path`` is a folder."""
+    from core.cli.output import OutputError
+    target = Path(path)
+    if not target.parent.is_dir():
+        raise OutputError(f"--output: cannot write {target}: no such directory")
+    if target.is_dir():
+        raise OutputError(f"--output: cannot write {target}: it is a folder")
+
+
+def start_qt(lang: str, needs_font: bool = True) -> str:
+    """A headless application in the language of --lang; returns that language. With
+    ``needs_font``, UsageError naming --lang when no font can write it."""
+    ensure_headless()
+    application()
+    from shaperapp.widgets import i18n
+    from shaperapp.widgets.fonts import MissingFontError, report_font
+    language = i18n.language_of(lang)
+    i18n.set_language(language)
+    if needs_font:
+        try:
+            report_font(language)
+        except MissingFontError as exc:
+            raise UsageError(f"--lang {lang}: {exc}") from None
+    return language

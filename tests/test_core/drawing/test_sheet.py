@@ -1,0 +1,180 @@
+"""Drawing sheets as data: paper, scales, and the motion sheet measured on the paper."""
+import math
+import re
+
+import ezdxf
+import numpy as np
+import pytest
+from ezdxf import bbox
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from core.drawing import mechanism as mech
+from core.drawing.dxf import CENTER, LAYERS, LINETYPES
+from core.drawing.motion import motion_sheet
+from core.drawing.sheet import (PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, item_box,
+                                outside_border, overlapping_texts, paper, standard_scale,
+                                text_width)
+from core.drawing.sheet_dxf import save_sheet_dxf
+from core.geometry import synthesize
+
+BLOCK = synthesize(100.0, 1.4, 300.0)
+ROD = synthesize(100.0, 1.46, 312.0, rod_ratio=0.3)
+SERIES = sorted({m * 10.0 ** k for m in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0) for k in range(0, 6)})
+
+
+def test_papers_are_gb_14689_landscape_with_binding_margin():
+    a1 = paper("a1")
+    assert (a1.width, a1.height) == (841.0, 594.0)
+    assert a1.border == (25.0, 10.0, 831.0, 584.0)
+    assert paper("A3").border == (25.0, 5.0, 415.0, 292.0)
+    for p in PAPERS.values():     # each size is half the next larger one
+        assert p.width * p.height == pytest.approx(1189.0 * 841.0 / 2 ** int(p.name[1]), rel=0.01)
+    with pytest.raises(KeyError, match="A0, A1, A2, A3"):
+        paper("A5")
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(1.0, 1e5), st.floats(10.0, 1000.0))
+def test_standard_scale_is_the_smallest_reduction_of_the_series_that_fits(extent, room):
+    d = standard_scale(extent, room)
+    assert any(math.isclose(d, s, rel_tol=1e-12) for s in SERIES)
+    assert extent / d <= room * (1 + 1e-9)
+    smaller = [s for s in SERIES if s < d * (1 - 1e-9)]
+    assert not smaller or extent / smaller[-1] > room
+
+
+def test_text_width_counts_chinese_characters_wider():
+    assert text_width("曲柄", 5.0) > text_width("AB", 5.0) > 0.0
+
+
+def stated_scale(sheet) -> float:
+    """The reduction written in the mechanism's caption, '(1:d)'."""
+    found = [re.search(r"1:(\d+(?:\.\d+)?)\)", t.text) for t in sheet.items if isinstance(t, Text)]
+    denominators = {float(m.group(1)) for m in found if m}
+    assert len(denominators) == 1
+    return denominators.pop()
+
+
+@pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
+@pytest.mark.parametrize("size", ["A0", "A1", "A2"])
+def test_motion_sheet_inside_the_border_without_overlapping_texts(design, size):
+    drawn = motion_sheet(design, 40.0, paper(size))
+    assert outside_border(drawn.sheet) == []
+    assert overlapping_texts(drawn.sheet) == []
+
+
+@pytest.mark.parametrize("count", [6, 24])
+def test_motion_sheet_other_position_counts(count):
+    drawn = motion_sheet(ROD, 60.0, paper("A1"), count=count, diagram_deg=(45.0, 250.0))
+    assert outside_border(drawn.sheet) == []
+    assert overlapping_texts(drawn.sheet) == []
+    numbers = {t.text for t in drawn.sheet.items if isinstance(t, Text)}
+    assert {str(k) for k in range(1, count + 1)} <= numbers
+
+
+@pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
+def test_lengths_on_the_paper_over_the_stated_scale_are_the_design(design):
+    """Found on the paper: the crank pin's circle (the only centre-line circle) gives L1 and
+    its centre O2; the lowest pin is O4. Divided by the scale the caption states."""
+    sheet = motion_sheet(design, 40.0, paper("A1")).sheet
+    d = stated_scale(sheet)
+    assert d in SERIES
+    track = [c for c in sheet.items if isinstance(c, Circle) and c.layer == CENTER]
+    assert len(track) == 1
+    assert track[0].radius * d == pytest.approx(design.crank, rel=1e-12)
+    pins = [c for c in sheet.items if isinstance(c, Circle) and c.radius == mech.PIN_RADIUS]
+    o4 = min(pins, key=lambda c: c.center[1])
+    frame = math.dist(o4.center, track[0].center) * d
+    assert frame == pytest.approx(design.frame, rel=1e-12)
+
+
+def test_limit_positions_are_drawn_thick_and_the_lever_has_its_length():
+    """Thick two-point lines from O4: the lever at the two limit positions, each L3 long,
+    and θ apart (the lever's swing equals the extreme-position angle)."""
+    drawn = motion_sheet(BLOCK, 40.0, paper("A1"))
+    o4 = np.asarray(drawn.placement([0.0, 0.0]))
+    levers = [np.asarray(p.points) for p in drawn.sheet.items if isinstance(p, Polyline)
+              and p.layer == "OUTLINE" and len(p.points) == 2 and np.allclose(p.points[0], o4)]
+    assert len(levers) == 2
+    ends = [seg[1] - seg[0] for seg in levers]
+    for e in ends:
+        assert math.hypot(*e) * drawn.scale == pytest.approx(BLOCK.lever, rel=1e-9)
+    swing = math.acos(np.dot(ends[0], ends[1]) / (np.linalg.norm(ends[0]) * np.linalg.norm(ends[1])))
+    assert swing == pytest.approx(BLOCK.theta, abs=1e-9)
+
+
+def test_chinese_labels_change_the_texts_not_the_drawing():
+    en = motion_sheet(BLOCK, 40.0, paper("A1")).sheet
+    zh = motion_sheet(BLOCK, 40.0, paper("A1"),
+                      labels={"title": "运动分析图", "L1": "曲柄 O2A，L1"}).sheet
+    lines = lambda s: [p.points.tobytes() for p in s.items if isinstance(p, Polyline)]  # noqa: E731
+    assert lines(en) == lines(zh)
+    assert "运动分析图" in {t.text for t in zh.items if isinstance(t, Text)}
+    assert overlapping_texts(zh) == []
+
+
+@pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
+def test_dxf_reads_back_in_mm_with_layers_inside_the_border(design, tmp_path):
+    drawn = motion_sheet(design, 40.0, paper("A1"))
+    path = tmp_path / "motion.dxf"
+    save_sheet_dxf(drawn.sheet, path)
+    doc = ezdxf.readfile(path)
+    assert doc.header["$INSUNITS"] == 4
+    assert doc.audit().has_errors is False
+    for name, layer in LAYERS.items():
+        assert doc.layers.get(name).dxf.linetype == layer.linetype
+    for name in LINETYPES:
+        assert name in doc.linetypes
+    x0, y0, x1, y1 = paper("A1").border
+    msp = doc.modelspace()
+    trim = 0
+    for entity in msp:
+        assert entity.dxf.layer in LAYERS
+        box = bbox.extents([entity])
+        if np.allclose([box.extmin.x, box.extmin.y, box.extmax.x, box.extmax.y], [0, 0, 841, 594]):
+            trim += 1
+            continue
+        assert x0 - 1e-6 <= box.extmin.x and box.extmax.x <= x1 + 1e-6, entity
+        assert y0 - 1e-6 <= box.extmin.y and box.extmax.y <= y1 + 1e-6, entity
+    assert trim == 1
+    circles = msp.query(f'CIRCLE[layer=="{CENTER}"]')
+    assert len(circles) == 1
+    assert circles[0].dxf.radius * drawn.scale == pytest.approx(design.crank, rel=1e-12)
+
+
+def _inside(box, area, tol=1e-6):
+    return (area[0] - tol <= box[0] and box[2] <= area[2] + tol
+            and area[1] - tol <= box[1] and box[3] <= area[3] + tol)
+
+
+@pytest.mark.parametrize("design", [BLOCK, ROD, synthesize(60.0, 1.8, 500.0),
+                                    synthesize(150.0, 1.2, 600.0, rod_ratio=0.8, rod_side="leading")],
+                         ids=["block", "rod", "K1.8", "leading"])
+@pytest.mark.parametrize("size", ["A1", "A3"])
+def test_drawings_stay_in_their_own_areas_which_do_not_overlap(design, size):
+    """Nothing overlaps: the mechanism, the curves, the polygons, the table and the title
+    block each keep to an area of their own."""
+    drawn = motion_sheet(design, 60.0, paper(size), count=24)
+    areas = list(drawn.areas.items())
+    for name, (area, items) in areas:
+        strays = [it for it in items if not _inside(item_box(it), area)]
+        assert strays == [], (name, strays[:3])
+    for i, (a_name, (a, _)) in enumerate(areas):
+        for b_name, (b, _) in areas[i + 1:]:
+            assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]), (a_name, b_name)
+    assert outside_border(drawn.sheet) == [] and overlapping_texts(drawn.sheet) == []
+
+
+@pytest.mark.parametrize("size", ["A0", "A1", "A2", "A3"])
+def test_every_text_height_is_from_the_standard_series(size):
+    sheet = motion_sheet(ROD, 40.0, paper(size)).sheet
+    heights = {t.height for t in sheet.items if isinstance(t, Text)}
+    assert heights <= set(TEXT_HEIGHTS), heights
+
+
+def test_more_positions_than_a_sheet_can_show_are_refused():
+    from core.errors import DesignError
+    motion_sheet(BLOCK, 40.0, paper("A1"), count=72)
+    with pytest.raises(DesignError, match="positions"):
+        motion_sheet(BLOCK, 40.0, paper("A1"), count=73)
