@@ -28,3 +28,22 @@ def test_report_has_the_cam_of_the_tab(qtbot, model, tmp_path):
     assert f"{doc['phase_deg']:.3f} °" in text
     section = text[text.index("9 The feed cam"):]
     assert "<svg" in section
+
+
+def test_shaper_report_takes_the_design_files_cam(tmp_path):
+    from cli_runner import shaper
+    from core.cam import CamInputs, Program
+    from core.cam.file import cam_to_dict
+    from core.io import save_design
+    from core.spec import Spec
+    inputs = CamInputs(arm_mm=160.0, program=Program(20.0, 70.0, 5.0, 80.0, "poly345", "cosine"))
+    save_design(tmp_path / "d.json", Spec(), [40.0], 1.0, extra={"cam": cam_to_dict(inputs, None)})
+    run = shaper("report", "--design", tmp_path / "d.json", "-o", tmp_path / "r.html")
+    assert run.returncode == 0, run.stderr
+    text = (tmp_path / "r.html").read_text(encoding="utf-8")
+    status, out, err = shaper_in_process(
+        "cam", "--arm", "160", "--swing", "20", "--pressure", "40", "--rise", "70", "--dwell", "5",
+        "--return", "80", "--law", "poly345", "--return-law", "cosine", "--design", tmp_path / "d.json",
+        "--json")
+    doc = json.loads(out)
+    assert "9 The feed cam" in text and f"{doc['base_radius_mm']:.3f} mm" in text
