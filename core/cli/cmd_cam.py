@@ -5,6 +5,7 @@ import argparse
 import math
 
 from ..cam import LAWS, CamInputs, Program, design_cam
+from ..cam.file import cam_from_dict, cam_to_dict
 from ..cam.table import cam_summary, cam_table, follower_peaks
 from ..errors import DesignError
 from ..io import table_csv
@@ -26,6 +27,9 @@ EXAMPLES = ("shaper cam --arm 120 --swing 15 --pressure 40 --rise 60 --dwell 10 
             "--crank 100 --K 1.4 --stroke 300 --csv cam.csv --dxf cam.dxf --json")
 
 # DesignError parameter → the option that sets it.
+CAM_PARAMETERS = {"--arm": "arm", "--swing": "swing", "--pressure": "pressure",
+                  "--return-pressure": "return_pressure", "--rise": "rise", "--dwell": "dwell",
+                  "--return": "return", "--roller": "roller", "--base": "base", "--distance": "distance"}
 CAM_OPTIONS = {"arm": "--arm", "swing": "--swing", "pressure": "--pressure",
                "return_pressure": "--return-pressure", "rise": "--rise", "dwell": "--dwell",
                "return": "--return", "rise_law": "--law", "return_law": "--return-law",
@@ -36,18 +40,18 @@ DESIGN_DESTS = ("crank", "time_ratio", "stroke", "dims", "design", "guide", "rod
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
-    cam = parser.add_argument_group("the cam (the data sheet)")
-    cam.add_argument("--arm", metavar="MM", required=True, help="follower arm length l, mm")
-    cam.add_argument("--swing", metavar="DEG", required=True, help="the follower's swing ψmax, °")
-    cam.add_argument("--pressure", metavar="DEG", required=True,
+    cam = parser.add_argument_group("the cam (the data sheet; required unless --design has a cam)")
+    cam.add_argument("--arm", metavar="MM", help="follower arm length l, mm")
+    cam.add_argument("--swing", metavar="DEG", help="the follower's swing ψmax, °")
+    cam.add_argument("--pressure", metavar="DEG",
                      help="allowed pressure angle [α] on the rise, °")
     cam.add_argument("--return-pressure", metavar="DEG",
                      help="allowed pressure angle on the return, ° (default 70)")
-    cam.add_argument("--rise", metavar="DEG", required=True, help="cam angle of the rise, °")
-    cam.add_argument("--dwell", metavar="DEG", required=True, help="cam angle of the outer dwell, °")
-    cam.add_argument("--return", dest="back", metavar="DEG", required=True,
+    cam.add_argument("--rise", metavar="DEG", help="cam angle of the rise, °")
+    cam.add_argument("--dwell", metavar="DEG", help="cam angle of the outer dwell, °")
+    cam.add_argument("--return", dest="back", metavar="DEG",
                      help="cam angle of the return, ° (the inner dwell is the rest of the turn)")
-    cam.add_argument("--law", choices=LAWS, default="sine", help="motion law of the rise (default sine)")
+    cam.add_argument("--law", choices=LAWS, help="motion law of the rise (default sine)")
     cam.add_argument("--return-law", choices=LAWS, help="motion law of the return (default: --law)")
     cam.add_argument("--roller", metavar="MM", help="roller radius, mm (default: the largest that "
                      "keeps the profile smooth)")
@@ -69,18 +73,37 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out.add_argument("--dxf", metavar="FILE", help="write the profile at 1:1 in mm as DXF")
 
 
-def _inputs(args: argparse.Namespace) -> CamInputs:
-    def opt(name: str, text: str | None) -> float | None:
-        return None if text is None else number(name, text)
-    program = Program(swing_deg=opt("swing", args.swing), rise_deg=opt("rise", args.rise),
-                      dwell_deg=opt("dwell", args.dwell), return_deg=opt("return", args.back),
-                      rise_law=args.law, return_law=args.return_law or args.law)
-    return CamInputs(arm_mm=opt("arm", args.arm), program=program,
-                     pressure_deg=opt("pressure", args.pressure),
-                     return_pressure_deg=70.0 if args.return_pressure is None
-                     else opt("return_pressure", args.return_pressure),
-                     roller_mm=opt("roller", args.roller), base_mm=opt("base", args.base),
-                     distance_mm=opt("distance", args.distance))
+# option → (its dest, the key of a design file's cam object)
+SHEET = (("--arm", "arm", "arm_mm"), ("--swing", "swing", "swing_deg"), ("--pressure", "pressure", "pressure_deg"),
+         ("--rise", "rise", "rise_deg"), ("--dwell", "dwell", "dwell_deg"), ("--return", "back", "return_deg"))
+OPTIONAL = (("--return-pressure", "return_pressure", "return_pressure_deg"), ("--roller", "roller", "roller_mm"),
+            ("--base", "base", "base_mm"), ("--distance", "distance", "distance_mm"))
+
+
+def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
+    """The cam's inputs and phase: the options over the ``--design`` file's cam (if any)."""
+    doc = design_file(args)
+    saved = cam_to_dict(*cam_from_dict(doc["cam"])) if doc is not None and doc.get("cam") else {}
+    values = {}
+    for option, dest, key in SHEET + OPTIONAL:
+        text = getattr(args, dest)
+        if text is not None:
+            values[key] = number(CAM_PARAMETERS[option], text)
+        elif saved.get(key) is not None:
+            values[key] = saved[key]
+        elif (option, dest, key) in SHEET:
+            raise UsageError(f"{option}: required (or give --design with a cam)")
+    rise_law = args.law or saved.get("rise_law", "sine")
+    program = Program(swing_deg=values["swing_deg"], rise_deg=values["rise_deg"],
+                      dwell_deg=values["dwell_deg"], return_deg=values["return_deg"], rise_law=rise_law,
+                      return_law=args.return_law or (saved.get("return_law", rise_law) if not args.law
+                                                      else args.law))
+    inputs = CamInputs(arm_mm=values["arm_mm"], program=program, pressure_deg=values["pressure_deg"],
+                       return_pressure_deg=values.get("return_pressure_deg", 70.0),
+                       roller_mm=values.get("roller_mm"), base_mm=values.get("base_mm"),
+                       distance_mm=values.get("distance_mm"))
+    phase = number("phase", args.phase) if args.phase is not None else saved.get("phase_deg")
+    return inputs, phase
 
 
 def _rpm(args: argparse.Namespace) -> float:
@@ -114,12 +137,11 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError("--phase: give a design (--crank/--K/--stroke, --dims or --design) to time the cam")
     design = design_from_args(args) if linked else None
     try:
-        inputs = _inputs(args)
+        inputs, phase = _inputs(args)
         rpm = _rpm(args)
         step = 1.0 if args.step is None else number("step", args.step)
         angles = crank_angles(step)
         idle = _idle(args) if linked else 0.05
-        phase = None if args.phase is None else number("phase", args.phase)
         cam = design_cam(inputs, design, idle, phase)
     except DesignError as exc:
         raise UsageError(design_error_text(exc, CAM_OPTIONS.get(exc.parameter))) from None

@@ -152,3 +152,21 @@ def test_bad_input_is_one_line_naming_the_option(words, option, tmp_path):
     assert status == 2 and out == ""
     assert err.startswith(f"shaper: error: {option}") and err.count("\n") == 1, err
     assert not (tmp_path / "c.csv").exists()
+
+
+def test_a_design_files_cam_is_used_and_options_override_it(tmp_path):
+    from core.cam import CamInputs, Program
+    from core.cam.file import cam_to_dict
+    from core.io import save_design
+    inputs = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0, "cosine", "parabolic"))
+    save_design(tmp_path / "d.json", Spec(), [40.0], 1.0, extra={"cam": cam_to_dict(inputs, None)})
+    from_file = run_json("--design", tmp_path / "d.json")
+    assert from_file == run_json(*SHEET, *LINKAGE, "--rpm", "40")
+    wider = run_json("--design", tmp_path / "d.json", "--swing", "20")
+    assert wider["swing_deg"] == 20.0 and wider["rise_law"] == "cosine"
+    save_design(tmp_path / "none.json", Spec(), [40.0], 1.0)
+    status, out, err = shaper_in_process("cam", "--design", tmp_path / "none.json")
+    assert status == 2 and err.startswith("shaper: error: --arm: required")
+    save_design(tmp_path / "bad.json", Spec(), [40.0], 1.0, extra={"cam": {"arm_mm": -1}})
+    status, out, err = shaper_in_process("cam", "--design", tmp_path / "bad.json")
+    assert status == 2 and err.startswith("shaper: error: --design:") and err.count("\n") == 1
