@@ -49,6 +49,7 @@ class CamPlots(QWidget):
         for plot in self.plots[1:]:
             plot.setXLink(self.angle_plot)
         self.curves: dict[str, object] = {}
+        self._stale = False
         cam_model.camChanged.connect(self.redraw)
         cam_model.design_model.angleChanged.connect(self.move_cursor)
         cam_model.design_model.resultsChanged.connect(self.redraw)
@@ -72,7 +73,17 @@ class CamPlots(QWidget):
                 "alpha": p.motion.psi2[None, :] * (omega ** 2)[:, None],
                 "pressure_deg": np.degrees(pressure_angle(cam.follower, p))}
 
+    def showEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().showEvent(event)
+        if self._stale:
+            self.redraw()
+
     def redraw(self) -> None:
+        """Draw the series; a hidden view only marks itself stale (redrawn when shown)."""
+        if not self.isVisible():
+            self._stale = True
+            return
+        self._stale = False
         d = self.data()
         cam = self._model.cam
         for plot in self.plots:
@@ -95,6 +106,8 @@ class CamPlots(QWidget):
         self.move_cursor()
 
     def move_cursor(self, *_args) -> None:
+        if not self.isVisible():
+            return              # redraw() places it when shown
         deg = math.degrees(self._model.current_cam_angle()) % 360.0
         for cursor in self.cursors:
             cursor.setValue(deg)

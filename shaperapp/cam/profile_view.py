@@ -41,7 +41,11 @@ class CamProfileView(QWidget):
         self.setMinimumSize(240, 200)
         self._curves: tuple[np.ndarray, np.ndarray] | None = None
         cam_model.camChanged.connect(self._reset)
-        cam_model.design_model.angleChanged.connect(lambda _i: self.update())
+        cam_model.design_model.angleChanged.connect(self._angle_moved)
+
+    def _angle_moved(self, _index: int) -> None:
+        if self.isVisible():
+            self.update()
 
     def _reset(self) -> None:
         self._curves = None

@@ -64,6 +64,15 @@ class CamTab(QWidget):
         self.cam_model.camChanged.connect(self.show_figures)
         self.retranslate()
 
+    def showEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().showEvent(event)
+        self.cam_model.set_active(True)
+        self.show_figures()
+
+    def hideEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().hideEvent(event)
+        self.cam_model.set_active(False)
+
     def retranslate(self) -> None:
         self.form.retranslate()
         self.plots.retranslate()
@@ -92,6 +101,8 @@ class CamTab(QWidget):
         return rows
 
     def show_figures(self) -> None:
+        if not self.isVisible():
+            return              # shown when the tab is (showEvent)
         cells = "".join(f"<tr><td>{k}</td><td align='right'>&nbsp;{v}</td></tr>" for k, v in self.figure_rows())
         self.figures.setText(f"<table>{cells}</table>")
 

@@ -202,3 +202,20 @@ def test_a_damaged_cam_in_a_file_is_refused_and_changes_nothing(qtbot, tab, mode
         before = (model.valid_spec, tab.cam_model.cam)
         assert not document.open_path(str(tmp_path / "bad.json"))
         assert (model.valid_spec, tab.cam_model.cam) == before and messages
+
+
+def test_a_hidden_cam_tab_costs_a_design_edit_nothing(qtbot, model, monkeypatch):
+    """While the Cam tab is hidden a linkage edit computes no cam (the edit budget of
+    docs/performance.md); showing the tab brings the cam up to date."""
+    import shaperapp.cam.model as cam_model_module
+    calls = []
+    real = cam_model_module.design_cam
+    monkeypatch.setattr(cam_model_module, "design_cam", lambda *a, **k: calls.append(1) or real(*a, **k))
+    tab = CamTab(model)
+    qtbot.addWidget(tab)
+    model.set_spec(time_ratio=1.6)
+    model.set_spec(stroke=320.0)
+    assert calls == []
+    shown(qtbot, tab, 900, 600)
+    assert len(calls) == 1
+    assert tab.cam_model.cam.timing.phase_deg == pytest.approx(core_cam(model).timing.phase_deg)
