@@ -3,10 +3,10 @@
 ``laws`` the motion laws and the program; ``follower`` the pitch curve, profile, pressure
 angle and curvature; ``synthesis`` the smallest base radius and the largest roller;
 ``timing`` the feed placed outside the linkage's cut; ``cam`` one cam from its inputs;
-``table`` its rows per cam angle.
+``table`` its rows per cam angle and its figures; ``file`` its inputs in a design file.
 
-Level: analysis (beside ``core.cut``, which it times against); imports the mechanism
-levels and ``cut`` only.
+Level: its own, just above the analysis level (it times the feed against ``core.cut``);
+it imports the analysis and mechanism levels only. Its DXF is ``core.cam_drawing``.
 """
 from __future__ import annotations
 
