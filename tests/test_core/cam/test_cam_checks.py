@@ -78,10 +78,10 @@ def test_derivatives_of_the_pitch_curve_are_exact(sheet_cam):
     d1 = (pitch(f, prog, deltas + h).point - pitch(f, prog, deltas - h).point) / (2 * h)
     d2 = (pitch(f, prog, deltas + h).d1 - pitch(f, prog, deltas - h).d1) / (2 * h)
     assert np.abs(p.d1 - d1).max() < 1e-5
-    # the parabolic return's acceleration jumps at its middle and ends: skip those points
-    smooth = np.abs(np.abs(p.motion.psi2) - 0) >= 0
-    far = np.all(np.abs(deltas[:, None] - np.radians([0, 60, 70, 100, 130]))[None] > 3 * h, axis=-1)[0]
-    assert np.abs(p.d2 - d2)[:, far & smooth].max() < 1e-4
+    # the acceleration jumps at the phases' ends and the parabolic return's middle: skip those
+    far = np.all(np.abs(deltas[:, None] - np.radians([0, 60, 70, 100, 130])[None]) > 3 * h, axis=1)
+    assert far.sum() > 390
+    assert np.abs(p.d2 - d2)[:, far].max() < 1e-4
 
 
 def test_profile_is_the_roller_envelope(sheet_cam):
