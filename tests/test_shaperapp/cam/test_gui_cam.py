@@ -219,3 +219,24 @@ def test_a_hidden_cam_tab_costs_a_design_edit_nothing(qtbot, model, monkeypatch)
     shown(qtbot, tab, 900, 600)
     assert len(calls) == 1
     assert tab.cam_model.cam.timing.phase_deg == pytest.approx(core_cam(model).timing.phase_deg)
+
+
+def test_the_library_keeps_the_cam(qtbot, tab, model, tmp_path, monkeypatch):
+    """A design saved to the library and opened again brings its cam back."""
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QMessageBox
+
+    from shaperapp.library.pane import LibraryPane
+    monkeypatch.setenv("SHAPER_LIBRARY", str(tmp_path / "default.sqlite"))
+    monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: None)
+    pane = LibraryPane(model, settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    qtbot.addWidget(pane)
+    assert pane.open_library(str(tmp_path / "lib.sqlite"))
+    type_into(qtbot, tab, "swing", "22")
+    type_into(qtbot, tab, "dwell", "0")
+    cam = tab.cam_model.cam
+    assert pane.actions.save_current("with cam")
+    type_into(qtbot, tab, "swing", "12")
+    assert tab.cam_model.cam.program.swing_deg == 12.0
+    assert pane.actions.open_in_model("with cam")
+    assert tab.cam_model.cam == cam and tab.form.fields["swing"].edit.text() == "22"
