@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .cam.file import cam_from_dict
 from .dynamics import MassProperties
 from .errors import DesignError, FileFormatError
 from .kinematics import angle_count, check_rpms
@@ -71,6 +72,8 @@ def parse_design(raw: bytes, name: str) -> dict[str, Any]:
         rpm = _rpms(doc.get("rpm", list(DEFAULT_FILE_RPMS)), name)
         step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name)
         masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
+        if "cam" in doc:            # validated here, kept as written (older files have none)
+            cam_from_dict(doc["cam"])
     except FileFormatError:
         raise
     except (DesignError, ArithmeticError, ValueError) as exc:   # never a traceback

@@ -89,6 +89,209 @@
     </message>
 </context>
 <context>
+    <name>CamForm</name>
+    <message>
+        <source>Arm l</source>
+        <translation>摆臂长 l</translation>
+    </message>
+    <message>
+        <source>Swing ψmax</source>
+        <translation>最大摆角 ψmax</translation>
+    </message>
+    <message>
+        <source>Rise</source>
+        <translation>推程运动角</translation>
+    </message>
+    <message>
+        <source>Outer dwell</source>
+        <translation>远休止角</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>回程运动角</translation>
+    </message>
+    <message>
+        <source>Rise law</source>
+        <translation>推程运动规律</translation>
+    </message>
+    <message>
+        <source>Return law</source>
+        <translation>回程运动规律</translation>
+    </message>
+    <message>
+        <source>[α] rise</source>
+        <translation>推程许用压力角 [α]</translation>
+    </message>
+    <message>
+        <source>[α] return</source>
+        <translation>回程许用压力角</translation>
+    </message>
+    <message>
+        <source>Roller r</source>
+        <translation>滚子半径 r</translation>
+    </message>
+    <message>
+        <source>Check base r0</source>
+        <translation>校核基圆半径 r0</translation>
+    </message>
+    <message>
+        <source>Check distance a</source>
+        <translation>校核中心距 a</translation>
+    </message>
+    <message>
+        <source>Rise at crank φ</source>
+        <translation>推程起点曲柄转角 φ</translation>
+    </message>
+    <message>
+        <source>parabolic</source>
+        <translation>等加速等减速</translation>
+    </message>
+    <message>
+        <source>cosine</source>
+        <translation>余弦加速度</translation>
+    </message>
+    <message>
+        <source>sine (cycloidal)</source>
+        <translation>正弦加速度（摆线）</translation>
+    </message>
+    <message>
+        <source>3-4-5 polynomial</source>
+        <translation>3-4-5 多项式</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>The last valid cam stays on screen.</source>
+        <translation>屏幕上保留最后一个有效的凸轮。</translation>
+    </message>
+</context>
+<context>
+    <name>CamModel</name>
+    <message>
+        <source>edit cam</source>
+        <translation>编辑凸轮</translation>
+    </message>
+</context>
+<context>
+    <name>CamPlots</name>
+    <message>
+        <source>follower ψ</source>
+        <translation>摆角 ψ</translation>
+    </message>
+    <message>
+        <source>follower ω</source>
+        <translation>角速度 ω</translation>
+    </message>
+    <message>
+        <source>follower α</source>
+        <translation>角加速度 α</translation>
+    </message>
+    <message>
+        <source>pressure angle</source>
+        <translation>压力角</translation>
+    </message>
+</context>
+<context>
+    <name>CamProfileView</name>
+    <message>
+        <source>cam angle δ = %1°, follower ψ = %2°</source>
+        <translation>凸轮转角 δ = %1°，从动件摆角 ψ = %2°</translation>
+    </message>
+    <message>
+        <source>Feed cam</source>
+        <translation>进给凸轮</translation>
+    </message>
+</context>
+<context>
+    <name>CamTab</name>
+    <message>
+        <source>CSV…</source>
+        <translation>CSV…</translation>
+    </message>
+    <message>
+        <source>Image…</source>
+        <translation>图像…</translation>
+    </message>
+    <message>
+        <source>DXF…</source>
+        <translation>DXF…</translation>
+    </message>
+    <message>
+        <source>Base radius r0</source>
+        <translation>基圆半径 r0</translation>
+    </message>
+    <message>
+        <source>Centre distance a</source>
+        <translation>中心距 a</translation>
+    </message>
+    <message>
+        <source>Arm angle ψ0</source>
+        <translation>初始摆角 ψ0</translation>
+    </message>
+    <message>
+        <source>Roller side</source>
+        <translation>滚子位于连心线</translation>
+    </message>
+    <message>
+        <source>above</source>
+        <translation>上方</translation>
+    </message>
+    <message>
+        <source>below</source>
+        <translation>下方</translation>
+    </message>
+    <message>
+        <source>Max α rise</source>
+        <translation>推程最大压力角</translation>
+    </message>
+    <message>
+        <source>Max α return</source>
+        <translation>回程最大压力角</translation>
+    </message>
+    <message>
+        <source>ρmin (convex)</source>
+        <translation>理论廓线最小曲率半径 ρmin</translation>
+    </message>
+    <message>
+        <source>Roller r</source>
+        <translation>滚子半径 r</translation>
+    </message>
+    <message>
+        <source>Largest roller</source>
+        <translation>最大滚子半径</translation>
+    </message>
+    <message>
+        <source>Rise at crank φ</source>
+        <translation>推程起点曲柄转角 φ</translation>
+    </message>
+    <message>
+        <source>Pressure angle</source>
+        <translation>压力角</translation>
+    </message>
+    <message>
+        <source>exceeds the allowance</source>
+        <translation>超过许用值</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>CSV 表格 (*.csv)</translation>
+    </message>
+    <message>
+        <source>DXF drawing (*.dxf)</source>
+        <translation>DXF 图形 (*.dxf)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg)</source>
+        <translation>PNG 图像 (*.png);;SVG 图形 (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export the cam</source>
+        <translation>导出凸轮</translation>
+    </message>
+</context>
+<context>
     <name>Columns</name>
     <message>
         <source>n (r/min)</source>
@@ -1948,6 +2151,10 @@
         <translation>设计空间</translation>
     </message>
     <message>
+        <source>Cam</source>
+        <translation>凸轮</translation>
+    </message>
+    <message>
         <source>&amp;Undo %1</source>
         <translation>撤销(&amp;U) %1</translation>
     </message>
@@ -2542,6 +2749,54 @@
     <message>
         <source>8 Conventions and formulas</source>
         <translation>8 约定与公式</translation>
+    </message>
+    <message>
+        <source>%1 The feed cam</source>
+        <translation>%1 进给凸轮</translation>
+    </message>
+    <message>
+        <source>The feed cam cannot be made for this design: %1</source>
+        <translation>此设计无法得到进给凸轮：%1</translation>
+    </message>
+    <message>
+        <source>Base radius r0 of the pitch curve</source>
+        <translation>理论廓线基圆半径 r0</translation>
+    </message>
+    <message>
+        <source>Centre distance a</source>
+        <translation>中心距 a</translation>
+    </message>
+    <message>
+        <source>Follower arm l</source>
+        <translation>从动件摆臂长 l</translation>
+    </message>
+    <message>
+        <source>Initial arm angle ψ0</source>
+        <translation>初始摆角 ψ0</translation>
+    </message>
+    <message>
+        <source>Max pressure angle, rise / return</source>
+        <translation>推程 / 回程最大压力角</translation>
+    </message>
+    <message>
+        <source>Smallest convex radius ρmin of the pitch curve</source>
+        <translation>理论廓线最小外凸曲率半径 ρmin</translation>
+    </message>
+    <message>
+        <source>Roller radius r</source>
+        <translation>滚子半径 r</translation>
+    </message>
+    <message>
+        <source>Base radius of the profile r0 − r</source>
+        <translation>实际廓线基圆半径 r0 − r</translation>
+    </message>
+    <message>
+        <source>Rise starts at crank angle</source>
+        <translation>推程起点曲柄转角</translation>
+    </message>
+    <message>
+        <source>The feed cam to scale at the start of the rise, with its follower and roller (the cam turns clockwise)</source>
+        <translation>推程起点处的进给凸轮（按比例绘制），含从动件与滚子（凸轮顺时针转动）</translation>
     </message>
     <message>
         <source>Crank length L1</source>
@@ -3433,6 +3688,58 @@
         <translation>设计</translation>
     </message>
     <message>
+        <source>Follower arm l</source>
+        <translation>从动件摆臂长 l</translation>
+    </message>
+    <message>
+        <source>Follower swing ψmax</source>
+        <translation>从动件最大摆角 ψmax</translation>
+    </message>
+    <message>
+        <source>Allowed pressure angle, rise</source>
+        <translation>推程许用压力角</translation>
+    </message>
+    <message>
+        <source>Allowed pressure angle, return</source>
+        <translation>回程许用压力角</translation>
+    </message>
+    <message>
+        <source>Rise angle</source>
+        <translation>推程运动角</translation>
+    </message>
+    <message>
+        <source>Outer dwell angle</source>
+        <translation>远休止角</translation>
+    </message>
+    <message>
+        <source>Return angle</source>
+        <translation>回程运动角</translation>
+    </message>
+    <message>
+        <source>Rise law</source>
+        <translation>推程运动规律</translation>
+    </message>
+    <message>
+        <source>Return law</source>
+        <translation>回程运动规律</translation>
+    </message>
+    <message>
+        <source>Roller radius</source>
+        <translation>滚子半径</translation>
+    </message>
+    <message>
+        <source>Base radius r0</source>
+        <translation>基圆半径 r0</translation>
+    </message>
+    <message>
+        <source>Centre distance a</source>
+        <translation>中心距 a</translation>
+    </message>
+    <message>
+        <source>Phase of the rise</source>
+        <translation>推程起点曲柄转角</translation>
+    </message>
+    <message>
         <source>must be greater than %1 and at most %2 %3</source>
         <translation>须大于 %1 且不大于 %2 %3</translation>
     </message>
@@ -3519,6 +3826,38 @@
     <message>
         <source>must be given either as a length or as a ratio L4/L3, not both</source>
         <translation>只能以长度或比值 L4/L3 之一给出，不能同时给出</translation>
+    </message>
+    <message>
+        <source>rise + outer dwell + return must fit in 360° (they add up to %1°)</source>
+        <translation>推程、远休止与回程运动角之和不得超过 360°（现为 %1°）</translation>
+    </message>
+    <message>
+        <source>rise + outer dwell + return (%1°) must fit in the %2° the crank turns outside the cut</source>
+        <translation>推程、远休止与回程运动角之和（%1°）须在切削以外的 %2° 曲柄转角内完成</translation>
+    </message>
+    <message>
+        <source>feeds during the cut: the rise must start between %1° and %2° of crank angle</source>
+        <translation>会在切削时进给：推程须在曲柄转角 %1° 至 %2° 之间开始</translation>
+    </message>
+    <message>
+        <source>too large: must be at most %1 mm, or it undercuts the profile (smallest convex radius of the pitch curve %2 mm)</source>
+        <translation>过大：不得超过 %1 mm，否则实际廓线失真（理论廓线最小外凸曲率半径 %2 mm）</translation>
+    </message>
+    <message>
+        <source>is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances</source>
+        <translation>过小：在 %1 倍摆臂长以内没有能使压力角不超过许用值的凸轮</translation>
+    </message>
+    <message>
+        <source>leaves the pitch curve too sharp for any roller; lengthen the rise or the return</source>
+        <translation>使理论廓线过尖，任何滚子都会使廓线失真；请加大推程或回程运动角</translation>
+    </message>
+    <message>
+        <source>must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam</source>
+        <translation>须在 |a − l| = %1 mm 与 a + l = %2 mm 之间，摆臂才能接触凸轮</translation>
+    </message>
+    <message>
+        <source>give the base radius and the centre distance together to check a cam</source>
+        <translation>校核凸轮须同时给出基圆半径和中心距</translation>
     </message>
     <message>
         <source>%1: %2</source>

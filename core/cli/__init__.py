@@ -25,7 +25,7 @@ from .common import Parser, UsageError, design_error_text, fail, version_text
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output
 
 # Order is the order of ``shaper --help``.
-CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "library")
+CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library")
 
 
 def _command_modules() -> dict[str, ModuleType]:

@@ -46,7 +46,7 @@ class Document(QObject):
         try:
             doc = load_design(path)
             self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
-                                   masses=doc["masses"])
+                                   masses=doc["masses"], parts={"cam": doc.get("cam")})
         except FileFormatError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
             return False
@@ -62,7 +62,7 @@ class Document(QObject):
         model = self._model
         try:
             save_design(path, model.valid_spec, model.rpms, model.step_deg,
-                        extra={"forces": masses_to_dict(model.masses)})
+                        extra={"forces": masses_to_dict(model.masses), **model.saved_parts()})
         except OSError as exc:
             self.failed.emit(self.tr("Could not save %1: %2").replace("%1", path)
                              .replace("%2", exc.strerror or str(exc)))

@@ -57,7 +57,8 @@ class DesignModel(QObject):
       ``angleChanged(int)`` — the animation index moved;
       ``forcesChanged`` — dynamics were recomputed (after any design or load change);
       ``forcesErrorChanged`` — a load input became invalid or valid again, or was reset;
-      ``dirtyChanged(bool)``, ``pathChanged(str)`` — file state.
+      ``dirtyChanged(bool)``, ``pathChanged(str)`` — file state;
+      ``loaded`` — a whole state was put in (opened, new); parts read ``loaded_part``.
     """
 
     resultsChanged = Signal()
@@ -68,6 +69,7 @@ class DesignModel(QObject):
     angleChanged = Signal(int)
     dirtyChanged = Signal(bool)
     pathChanged = Signal(str)
+    loaded = Signal()
 
     def __init__(self, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -86,6 +88,22 @@ class DesignModel(QObject):
         self.undo_stack = QUndoStack(self)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
         self._comparison: tuple[Candidate, ...] = ()
+        # Parts of the design file kept by other models (the cam): what the file last
+        # opened held for each, and how each gives its part to Save.
+        self._parts_in: dict[str, Any] = {}
+        self._part_savers: dict[str, Callable[[], Any]] = {}
+
+    # ---- parts of the file kept by other models ------------------------
+    def register_part(self, name: str, save: Callable[[], Any]) -> None:
+        """``save()`` gives the JSON value Save writes under ``name`` (the cam's inputs)."""
+        self._part_savers[name] = save
+
+    def saved_parts(self) -> dict[str, Any]:
+        return {name: save() for name, save in self._part_savers.items()}
+
+    def loaded_part(self, name: str) -> Any:
+        """What the state last loaded held under ``name`` (None: nothing, the defaults)."""
+        return self._parts_in.get(name)
 
     # ---- read access -------------------------------------------------
     @property
@@ -279,7 +297,7 @@ class DesignModel(QObject):
 
     # ---- files ---------------------------------------------------------
     def load_state(self, spec: Spec, rpms, step_deg: float, path: str = "",
-                   masses: MassProperties | None = None) -> None:
+                   masses: MassProperties | None = None, parts: dict[str, Any] | None = None) -> None:
         """Replace everything at once, or nothing: the whole design is computed first.
 
         Raises DesignError (and changes nothing) when the state cannot be computed;
@@ -298,6 +316,7 @@ class DesignModel(QObject):
         self._valid_spec, self._rpms, self._step, self._masses = spec, inputs.rpms, inputs.step, masses
         self._design, self._motion, self._metrics, self._dynamics, self._dynamics_summary = results
         self._index = 0
+        self._parts_in = dict(parts or {})
         self.undo_stack.clear()
         self._set_error(None)
         self._set_forces_error(None, force=True)
@@ -305,6 +324,7 @@ class DesignModel(QObject):
         self.resultsChanged.emit()
         self.forcesChanged.emit()
         self.angleChanged.emit(0)
+        self.loaded.emit()
         self.set_clean(path)
 
     def set_clean(self, path: str) -> None:

@@ -109,7 +109,8 @@ class LibraryActions(QObject):
                      replace_existing: bool = False) -> bool:
         """Store the design on screen (with its speeds, step and loads) under ``name``."""
         m = self._model
-        loaded = {"spec": m.valid_spec, "rpm": list(m.rpms), "step_deg": m.step_deg, "masses": m.masses}
+        loaded = {"spec": m.valid_spec, "rpm": list(m.rpms), "step_deg": m.step_deg, "masses": m.masses,
+                  **m.saved_parts()}          # the cam's inputs, as a design file keeps them
 
         def work(lib: Library) -> None:
             entry = lib.make_entry(name, loaded, notes, tags)
@@ -233,7 +234,8 @@ class LibraryActions(QObject):
 
     def _load_into_model(self, doc: dict) -> None:
         """The one place the library replaces the model's design (see DesignModel.load_state)."""
-        self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path="", masses=doc["masses"])
+        self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path="", masses=doc["masses"],
+                               parts={"cam": doc.get("cam")})
 
     def candidates(self, names: Sequence[str]) -> list[Candidate]:
         """Library entries as comparison candidates (invalid ones reported and left out)."""

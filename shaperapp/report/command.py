@@ -12,9 +12,11 @@ import errno
 from pathlib import Path
 
 from core.atomic import atomic_write
+from core.cam.file import cam_from_dict
 from core.cli.cmd_library import library_failure
 from core.cli.cmd_library_compare import load_candidates
-from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
+from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
+                             design_file, number)
 from core.cli.output import OutputError
 from core.compare import MAX_DESIGNS, Candidate
 from core.library.store import ENV_VAR, LibraryError
@@ -121,8 +123,10 @@ def _run(args: argparse.Namespace) -> int:
     language = start_qt(args.lang)
     from .content import Options, build
     from .blocks import Cover
+    doc = design_file(args)         # a design file's feed cam goes into the report too
+    cam = cam_from_dict(doc["cam"]) if doc is not None and doc.get("cam") is not None else None
     report = build(spec, rpms, masses, title or design_name(args), date, language,
-                   Options(count, diagrams, tuple(others), Cover(**cover)))
+                   Options(count, diagrams, tuple(others), Cover(**cover), cam))
     try:
         pages = write_report(report, args.output)
     except OSError as exc:      # a WriteError: names the path and a plain reason

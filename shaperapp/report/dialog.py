@@ -11,12 +11,14 @@ from __future__ import annotations
 import datetime
 import html
 import os
+from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication, QSettings, Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
                                QFormLayout, QLineEdit, QMessageBox, QSpinBox, QWidget)
 
+from core.cam.file import cam_from_dict
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
@@ -139,6 +141,9 @@ def export_report(model: DesignModel, path: str, language: str, options: Options
     report_kind(path)
     design = model.design
     masses = masses_for_design(design, model.masses)
+    cam = model.saved_parts().get("cam")
+    if cam is not None and options.cam is None:
+        options = replace(options, cam=cam_from_dict(cam))
     report = build(model.valid_spec, list(model.rpms), masses, name or design_name(model),
                    date or datetime.date.today().isoformat(), language, options)
     return write_report(report, path)

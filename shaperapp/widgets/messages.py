@@ -43,6 +43,19 @@ def field_name(parameter: str) -> str:
         "delta": QCoreApplication.translate("messages", "Speed fluctuation δ"),
         "gravity": QCoreApplication.translate("messages", "Gravity"),
         "design": QCoreApplication.translate("messages", "Design"),
+        "arm": QCoreApplication.translate("messages", "Follower arm l"),
+        "swing": QCoreApplication.translate("messages", "Follower swing ψmax"),
+        "pressure": QCoreApplication.translate("messages", "Allowed pressure angle, rise"),
+        "return_pressure": QCoreApplication.translate("messages", "Allowed pressure angle, return"),
+        "rise": QCoreApplication.translate("messages", "Rise angle"),
+        "dwell": QCoreApplication.translate("messages", "Outer dwell angle"),
+        "return": QCoreApplication.translate("messages", "Return angle"),
+        "rise_law": QCoreApplication.translate("messages", "Rise law"),
+        "return_law": QCoreApplication.translate("messages", "Return law"),
+        "roller": QCoreApplication.translate("messages", "Roller radius"),
+        "base": QCoreApplication.translate("messages", "Base radius r0"),
+        "distance": QCoreApplication.translate("messages", "Centre distance a"),
+        "phase": QCoreApplication.translate("messages", "Phase of the rise"),
     }
     return names.get(parameter, parameter)
 
@@ -85,6 +98,22 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
     (r"must be given either as a length or as a ratio L4/L3, not both$",
      "must be given either as a length or as a ratio L4/L3, not both"),
+    (r"rise \+ outer dwell \+ return must fit in 360° \(they add up to (\S+)°\)$",
+     "rise + outer dwell + return must fit in 360° (they add up to %1°)"),
+    (r"rise \+ outer dwell \+ return \((\S+)°\) must fit in the (\S+)° the crank turns outside the cut$",
+     "rise + outer dwell + return (%1°) must fit in the %2° the crank turns outside the cut"),
+    (r"feeds during the cut: the rise must start between (\S+)° and (\S+)° of crank angle$",
+     "feeds during the cut: the rise must start between %1° and %2° of crank angle"),
+    (r"too large: must be ≤ (\S+) mm .*ρmin is (\S+) mm, .*$",
+     "too large: must be at most %1 mm, or it undercuts the profile (smallest convex radius of the pitch curve %2 mm)"),
+    (r"is too small: no cam within (\S+) arm lengths keeps the pressure angle within the allowances$",
+     "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances"),
+    (r"leaves the pitch curve too sharp for any roller .*$",
+     "leaves the pitch curve too sharp for any roller; lengthen the rise or the return"),
+    (r"must be between \|a − l\| = (\S+) mm and a \+ l = (\S+) mm for the arm to reach the cam$",
+     "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
+    (r"give --base and --distance together to check a cam$",
+     "give the base radius and the centre distance together to check a cam"),
 )
 
 
@@ -126,6 +155,22 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
         "must be given either as a length or as a ratio L4/L3, not both":
             QCoreApplication.translate("messages", "must be given either as a length or as a ratio L4/L3, not both"),
+        "rise + outer dwell + return must fit in 360° (they add up to %1°)":
+            QCoreApplication.translate("messages", "rise + outer dwell + return must fit in 360° (they add up to %1°)"),
+        "rise + outer dwell + return (%1°) must fit in the %2° the crank turns outside the cut":
+            QCoreApplication.translate("messages", "rise + outer dwell + return (%1°) must fit in the %2° the crank turns outside the cut"),
+        "feeds during the cut: the rise must start between %1° and %2° of crank angle":
+            QCoreApplication.translate("messages", "feeds during the cut: the rise must start between %1° and %2° of crank angle"),
+        "too large: must be at most %1 mm, or it undercuts the profile (smallest convex radius of the pitch curve %2 mm)":
+            QCoreApplication.translate("messages", "too large: must be at most %1 mm, or it undercuts the profile (smallest convex radius of the pitch curve %2 mm)"),
+        "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances":
+            QCoreApplication.translate("messages", "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances"),
+        "leaves the pitch curve too sharp for any roller; lengthen the rise or the return":
+            QCoreApplication.translate("messages", "leaves the pitch curve too sharp for any roller; lengthen the rise or the return"),
+        "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam":
+            QCoreApplication.translate("messages", "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
+        "give the base radius and the centre distance together to check a cam":
+            QCoreApplication.translate("messages", "give the base radius and the centre distance together to check a cam"),
     }
 
 

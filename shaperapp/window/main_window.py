@@ -17,6 +17,7 @@ from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
 from PySide6.QtWidgets import (QInputDialog, QMainWindow, QMessageBox, QTabWidget,
                                QVBoxLayout, QWidget)
 
+from shaperapp.cam.tab import CamTab
 from shaperapp.compare.view import CompareView
 from shaperapp.design.document import Document
 from shaperapp.design.inputs_pane import InputsPane
@@ -62,8 +63,9 @@ class MainWindow(QMainWindow):
         self.positions = PositionsView(model)
         self.explore = ExploreView(model)
         self.compare = CompareView(model)
+        self.cam = CamTab(model)
         self.tabs = QTabWidget()
-        for view in (self.plots, self.forces, self.positions, self.explore, self.compare):
+        for view in (self.plots, self.forces, self.positions, self.explore, self.compare, self.cam):
             self.tabs.addTab(view, "")
         central = QWidget()
         column = QVBoxLayout(central)
@@ -218,8 +220,9 @@ class MainWindow(QMainWindow):
             set_tip(action, text, tip)
         self.act_library.setText(self.tr("Show &library"))
         for i, title in enumerate((self.tr("Kinematics"), self.tr("Forces"), self.tr("Positions"),
-                                   self.tr("Explore"), self.tr("Compare"))):
+                                   self.tr("Explore"), self.tr("Compare"), self.tr("Cam"))):
             self.tabs.setTabText(i, title)
+        self.cam.retranslate()
         self.docks.retranslate()
         self.menus.retranslate()
         self.model.retranslate_history()

@@ -18,9 +18,9 @@ from locations import ROOT
 ROOT = ROOT
 README = ROOT / "README.md"
 PAGES = [README, *sorted((ROOT / "docs").glob("*.md"))]
-CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep")
+CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep", "cam")
 # Every subcommand of ``shaper`` (core/cli's CORE_COMMANDS plus the Qt ones, report and drawing).
-SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "library", "report",
+SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library", "report",
                "drawing")
 
 

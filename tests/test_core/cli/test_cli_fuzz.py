@@ -246,6 +246,9 @@ BASES = {
                  "--csv", os.path.join(FOLDER, "edges.csv")],
     "dynamics text": ["dynamics", "--dims", "100,380,600", "--lever-mass", "20", "--lever-inertia",
                       "1.1", "--ram-mass", "70", "--cut-force", "7000"],
+    "cam": ["cam", "--arm", "120", "--swing", "15", "--pressure", "40", "--rise", "60", "--dwell", "10",
+            "--return", "60", "--crank", "100", "--K", "1.4", "--stroke", "300", "--step", "10",
+            "--json", "--csv", os.path.join(FOLDER, "cam.csv")],
 }
 
 

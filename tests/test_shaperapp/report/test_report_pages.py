@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 from PySide6.QtGui import QImage
 
+from core.cam import CamInputs
 from core.compare import Candidate
 from core.dynamics import MassProperties
 from core.spec import Spec
@@ -65,7 +66,8 @@ def printed(request, tmp_path_factory, qapp):
     i18n.set_language(language)
     try:
         report = build(SPECS[variant], [40.0, 60.0], LOADS if loads else None, "Pages",
-                       "2026-01-01", language, Options(compare=OTHERS if compare else ()))
+                       "2026-01-01", language, Options(compare=OTHERS if compare else (),
+                                                       cam=(CamInputs(), None)))   # issue 23's page too
     finally:
         i18n.set_language("en")
     folder = tmp_path_factory.mktemp("pages")

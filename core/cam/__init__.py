@@ -1,0 +1,18 @@
+"""The feed cam: a disc cam with an oscillating roller follower on the crank's shaft.
+
+``laws`` the motion laws and the program; ``follower`` the pitch curve, profile, pressure
+angle and curvature; ``synthesis`` the smallest base radius and the largest roller;
+``timing`` the feed placed outside the linkage's cut; ``cam`` one cam from its inputs;
+``table`` its rows per cam angle and its figures; ``file`` its inputs in a design file.
+
+Level: its own, just above the analysis level (it times the feed against ``core.cut``);
+it imports the analysis and mechanism levels only. Its DXF is ``core.cam_drawing``.
+"""
+from __future__ import annotations
+
+from .cam import Cam, CamInputs, design_cam
+from .follower import Follower
+from .laws import LAWS, Program
+from .synthesis import Allowance
+
+__all__ = ["Allowance", "Cam", "CamInputs", "Follower", "LAWS", "Program", "design_cam"]

@@ -1,0 +1,143 @@
+"""One feed cam from the data sheet: synthesized (or checked), its roller chosen, timed.
+
+:class:`CamInputs` is what the data sheet gives (and what a form or a file holds);
+:func:`design_cam` turns it into a :class:`Cam`, whose figures are taken on a dense grid of
+each phase (the rise and the return, where the pressure angle and the curvature change).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import DesignError, require_range
+from .follower import Follower, check_follower, curvature_radius, pitch, pressure_angle
+from .laws import Program
+from .synthesis import SAMPLES, Allowance, largest_roller, synthesize
+from .timing import Timing, timing
+
+MIN_ARM_MM, MAX_ARM_MM = 1.0, 5000.0
+MIN_PRESSURE_DEG, MAX_PRESSURE_DEG = 5.0, 85.0
+"""Allowances, degrees: at a right angle the cam pushes across the arm and jams; below 5°
+the cam would be many times the arm's size."""
+
+
+@dataclass(frozen=True)
+class CamInputs:
+    """The data sheet: arm length l (mm), the program, the allowances (degrees), and
+    optionally the roller (mm) and a base radius with its centre distance (mm) to check."""
+
+    arm_mm: float = 150.0
+    program: Program = field(default_factory=Program)
+    pressure_deg: float = 40.0
+    return_pressure_deg: float = 70.0
+    roller_mm: float | None = None
+    base_mm: float | None = None
+    distance_mm: float | None = None
+
+    def __post_init__(self) -> None:
+        require_range("arm", self.arm_mm, MIN_ARM_MM, MAX_ARM_MM, "mm", low_open=False)
+        for name in ("pressure", "return_pressure"):
+            require_range(name, getattr(self, name + "_deg"), MIN_PRESSURE_DEG, MAX_PRESSURE_DEG, "°",
+                          low_open=False, high_open=True)
+        if self.roller_mm is not None:
+            require_range("roller", self.roller_mm, 0.0, MAX_ARM_MM, "mm")
+        if (self.base_mm is None) != (self.distance_mm is None):
+            missing = "distance" if self.distance_mm is None else "base"
+            raise DesignError(missing, None, "give --base and --distance together to check a cam")
+        if self.base_mm is not None:
+            require_range("base", self.base_mm, 0.0, MAX_ARM_MM * 4, "mm")
+            require_range("distance", self.distance_mm, 0.0, MAX_ARM_MM * 4, "mm")
+
+    @property
+    def allowance(self) -> Allowance:
+        return Allowance(self.pressure_deg, self.return_pressure_deg)
+
+
+@dataclass(frozen=True)
+class Cam:
+    """A cam and its figures (mm, degrees); ``timing`` is None without a linkage."""
+
+    inputs: CamInputs
+    follower: Follower
+    roller_mm: float
+    largest_roller_mm: float
+    min_curvature_radius_mm: float        # smallest convex radius of the pitch curve
+    max_pressure_rise_deg: float
+    max_pressure_return_deg: float
+    timing: Timing | None = None
+
+    @property
+    def program(self) -> Program:
+        return self.inputs.program
+
+    @property
+    def base_radius_mm(self) -> float:
+        return self.follower.base_radius_mm
+
+    @property
+    def within_allowance(self) -> bool:
+        return (self.max_pressure_rise_deg <= self.inputs.pressure_deg + 1e-6
+                and self.max_pressure_return_deg <= self.inputs.return_pressure_deg + 1e-6)
+
+
+def phase_angles(program: Program, samples: int = SAMPLES) -> tuple[np.ndarray, np.ndarray]:
+    """Cam angles (rad) covering the rise and the return densely, ends included."""
+    rise, dwell, ret = (math.radians(v) for v in (program.rise_deg, program.dwell_deg, program.return_deg))
+    u = np.linspace(0.0, 1.0, samples)
+    return u * rise, rise + dwell + u * ret
+
+
+def figures(f: Follower, program: Program) -> tuple[float, float, float]:
+    """Max pressure angle on the rise and on the return (°) and the pitch curve's smallest
+    convex radius of curvature (mm; the dwells are arcs of radius ≥ the base radius)."""
+    up, back = phase_angles(program)
+    p_up, p_back = pitch(f, program, up), pitch(f, program, back)
+    rho = np.concatenate([curvature_radius(p_up), curvature_radius(p_back)])
+    convex = rho[rho > 0]
+    return (math.degrees(float(pressure_angle(f, p_up).max())),
+            math.degrees(float(pressure_angle(f, p_back).max())),
+            float(min(convex.min() if convex.size else math.inf, f.base_radius_mm)))
+
+
+def checked_follower(inputs: CamInputs) -> Follower:
+    """The follower of a given base radius and centre distance, on the side whose worst
+    pressure angle (as a share of its allowance) is smaller."""
+    a, r0, l = inputs.distance_mm, inputs.base_mm, inputs.arm_mm
+    c = (a * a + l * l - r0 * r0) / (2.0 * a * l)
+    if not -1.0 < c < 1.0:
+        raise DesignError("base", r0, f"must be between |a − l| = {abs(a - l):.4g} mm and "
+                          f"a + l = {a + l:.4g} mm for the arm to reach the cam")
+    psi0 = math.degrees(math.acos(c))
+    candidates = [Follower(l, a, psi0, s) for s in (-1, 1)]
+    check_follower(candidates[0], inputs.program)
+
+    def worst(f: Follower) -> float:
+        up, back, _ = figures(f, inputs.program)
+        return max(up / inputs.pressure_deg, back / inputs.return_pressure_deg)
+    return min(candidates, key=worst)
+
+
+def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
+               phase_deg: float | None = None) -> Cam:
+    """Synthesize (or check) the cam, choose or check its roller, and time it against the
+    linkage ``design`` when one is given."""
+    when = None if design is None else timing(inputs.program, design, idle_fraction, phase_deg)
+    if inputs.base_mm is None:
+        f = synthesize(inputs.arm_mm, inputs.program, inputs.allowance)
+    else:
+        f = checked_follower(inputs)
+    up, back, rho = figures(f, inputs.program)
+    biggest = largest_roller(rho)
+    if biggest <= 0.0:
+        raise DesignError("swing", inputs.program.swing_deg,
+                          f"leaves the pitch curve too sharp for any roller (smallest convex radius "
+                          f"{rho:.3g} mm); lengthen the rise or the return")
+    roller = biggest if inputs.roller_mm is None else inputs.roller_mm
+    if roller > biggest * (1.0 + 1e-12):
+        raise DesignError("roller", roller,
+                          f"too large: must be ≤ {biggest:.4g} mm (r ≤ 0.8·ρmin and ρmin − r ≥ 3 mm); "
+                          f"the pitch curve's smallest convex radius ρmin is {rho:.4g} mm, and a "
+                          "roller that large undercuts the profile or leaves it pointed")
+    return Cam(inputs, f, roller, biggest, rho, up, back, when)

@@ -1,0 +1,51 @@
+"""When the cam feeds: on the crank's shaft, outside the linkage's cutting interval.
+
+The cam is keyed to the crank, so the cam angle is δ = φ − φ0 with φ0 the crank angle at
+which the rise begins (the phase). The table may only move while the tool is clear of the
+work, i.e. outside the closed cut window of ``core.cut``. The rise, the outer dwell and the
+return together must fit in the rest of the turn; by default they are centred in it, so the
+feed has the same margin before and after the cut.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..cut import cut_window
+from ..designs import Designs
+from ..errors import DesignError
+from .laws import Program
+
+
+@dataclass(frozen=True)
+class Timing:
+    """The phase φ0 (crank angle of the rise's start) and the non-cutting span, degrees."""
+
+    phase_deg: float
+    clear_from_deg: float      # the crank angle at which the cut ends
+    clear_span_deg: float      # how far the crank turns before the next cut starts
+
+    def cam_angle(self, phi):
+        """Cam angle δ (rad) at crank angles ``phi`` (rad)."""
+        return phi - math.radians(self.phase_deg)
+
+
+def timing(program: Program, design, idle_fraction: float, phase_deg: float | None = None) -> Timing:
+    """Place the feed outside the cut of ``design`` (a ``core.geometry.Design``), centred in
+    the non-cutting span, or check the given ``phase_deg``; DesignError names ``rise`` when
+    the feed cannot fit, ``phase`` when the given phase would feed during the cut."""
+    on, off = (math.degrees(float(v[0])) for v in cut_window(Designs.of(design), idle_fraction))
+    span = 360.0 - (off - on)
+    feed = program.feed_deg
+    if feed > span:
+        raise DesignError("rise", program.rise_deg,
+                          f"rise + outer dwell + return ({feed:g}°) must fit in the {span:.4g}° "
+                          "the crank turns outside the cut")
+    if phase_deg is None:
+        return Timing(math.fmod(off + (span - feed) / 2.0, 360.0), off, span)
+    since = (phase_deg - off) % 360.0
+    if since + feed > span + 1e-9:
+        raise DesignError("phase", phase_deg,
+                          f"feeds during the cut: the rise must start between {off:.4g}° and "
+                          f"{math.fmod(off + span - feed, 360.0):.4g}° of crank angle")
+    return Timing(phase_deg % 360.0, off, span)

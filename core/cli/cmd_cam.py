@@ -1,0 +1,186 @@
+"""``shaper cam``: the feed cam with an oscillating roller follower, synthesized or checked."""
+from __future__ import annotations
+
+import argparse
+import math
+
+from ..cam import LAWS, CamInputs, Program, design_cam
+from ..cam.file import cam_from_dict, cam_to_dict
+from ..cam.table import cam_summary, cam_table, follower_peaks
+from ..errors import DesignError
+from ..io import table_csv
+from ..kinematics import MAX_RPM, MIN_RPM, crank_angles
+from .common import (UsageError, add_design_options, design_error_text, design_file,
+                     design_from_args, number)
+from .output import OutputError, print_json, print_table, write_output
+
+HELP = "the feed cam: base radius, centre distance, profile"
+DESCRIPTION = ("The table's feed cam, a disc cam with an oscillating roller follower on the crank's "
+               "shaft: the smallest base radius and its centre distance for the allowed pressure "
+               "angles (or, with --base and --distance, a check of a given cam), the largest roller, "
+               "and the profile in the cam's own frame (cam centre at the origin, the follower "
+               "pivot on +x at cam angle 0, the cam turning clockwise). With a design, the feed "
+               "is placed outside the cut.")
+EXAMPLES = ("shaper cam --arm 120 --swing 15 --pressure 40 --rise 60 --dwell 10 --return 60 "
+            "--law cosine --return-law parabolic",
+            "shaper cam --arm 120 --swing 15 --pressure 40 --rise 60 --dwell 10 --return 60 "
+            "--crank 100 --K 1.4 --stroke 300 --csv cam.csv --dxf cam.dxf --json")
+
+# DesignError parameter → the option that sets it.
+CAM_PARAMETERS = {"--arm": "arm", "--swing": "swing", "--pressure": "pressure",
+                  "--return-pressure": "return_pressure", "--rise": "rise", "--dwell": "dwell",
+                  "--return": "return", "--roller": "roller", "--base": "base", "--distance": "distance"}
+CAM_OPTIONS = {"arm": "--arm", "swing": "--swing", "pressure": "--pressure",
+               "return_pressure": "--return-pressure", "rise": "--rise", "dwell": "--dwell",
+               "return": "--return", "rise_law": "--law", "return_law": "--return-law",
+               "roller": "--roller", "base": "--base", "distance": "--distance",
+               "phase": "--phase", "idle_fraction": "--idle", "rpm": "--rpm", "step": "--step"}
+DESIGN_DESTS = ("crank", "time_ratio", "stroke", "dims", "design", "guide", "rod", "rod_ratio",
+                "rod_side")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    cam = parser.add_argument_group("the cam (the data sheet; required unless --design has a cam)")
+    cam.add_argument("--arm", metavar="MM", help="follower arm length l, mm")
+    cam.add_argument("--swing", metavar="DEG", help="the follower's swing ψmax, °")
+    cam.add_argument("--pressure", metavar="DEG",
+                     help="allowed pressure angle [α] on the rise, °")
+    cam.add_argument("--return-pressure", metavar="DEG",
+                     help="allowed pressure angle on the return, ° (default 70)")
+    cam.add_argument("--rise", metavar="DEG", help="cam angle of the rise, °")
+    cam.add_argument("--dwell", metavar="DEG", help="cam angle of the outer dwell, °")
+    cam.add_argument("--return", dest="back", metavar="DEG",
+                     help="cam angle of the return, ° (the inner dwell is the rest of the turn)")
+    cam.add_argument("--law", choices=LAWS, help="motion law of the rise (default sine)")
+    cam.add_argument("--return-law", choices=LAWS, help="motion law of the return (default: --law)")
+    cam.add_argument("--roller", metavar="MM", help="roller radius, mm (default: the largest that "
+                     "keeps the profile smooth)")
+    cam.add_argument("--base", metavar="MM", help="base-circle radius of the pitch curve, mm, to check "
+                     "a cam instead of synthesizing one (with --distance)")
+    cam.add_argument("--distance", metavar="MM", help="centre distance cam–pivot, mm (with --base)")
+    add_design_options(parser)
+    timing = parser.add_argument_group("timing against the linkage (with a design)")
+    timing.add_argument("--idle", metavar="FRACTION",
+                        help="uncut run-in and run-out as a fraction of the stroke (default 0.05)")
+    timing.add_argument("--phase", metavar="DEG", help="crank angle at which the rise starts, ° "
+                        "(default: the feed centred outside the cut)")
+    out = parser.add_argument_group("output")
+    out.add_argument("--rpm", metavar="RPM", help="crank (and cam) speed for the follower's ω and α, "
+                     "r/min (default 60, or the design file's first)")
+    out.add_argument("--step", metavar="DEG", help="cam-angle step of the CSV, ° (default 1)")
+    out.add_argument("--json", action="store_true", help="print the figures as JSON")
+    out.add_argument("--csv", metavar="FILE|-", help="write one row per cam angle as CSV")
+    out.add_argument("--dxf", metavar="FILE", help="write the profile at 1:1 in mm as DXF")
+
+
+# option → (its dest, the key of a design file's cam object)
+SHEET = (("--arm", "arm", "arm_mm"), ("--swing", "swing", "swing_deg"), ("--pressure", "pressure", "pressure_deg"),
+         ("--rise", "rise", "rise_deg"), ("--dwell", "dwell", "dwell_deg"), ("--return", "back", "return_deg"))
+OPTIONAL = (("--return-pressure", "return_pressure", "return_pressure_deg"), ("--roller", "roller", "roller_mm"),
+            ("--base", "base", "base_mm"), ("--distance", "distance", "distance_mm"))
+
+
+def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
+    """The cam's inputs and phase: the options over the ``--design`` file's cam (if any)."""
+    doc = design_file(args)
+    saved = cam_to_dict(*cam_from_dict(doc["cam"])) if doc is not None and doc.get("cam") else {}
+    values = {}
+    for option, dest, key in SHEET + OPTIONAL:
+        text = getattr(args, dest)
+        if text is not None:
+            values[key] = number(CAM_PARAMETERS[option], text)
+        elif saved.get(key) is not None:
+            values[key] = saved[key]
+        elif (option, dest, key) in SHEET:
+            raise UsageError(f"{option}: required (or give --design with a cam)")
+    rise_law = args.law or saved.get("rise_law", "sine")
+    program = Program(swing_deg=values["swing_deg"], rise_deg=values["rise_deg"],
+                      dwell_deg=values["dwell_deg"], return_deg=values["return_deg"], rise_law=rise_law,
+                      return_law=args.return_law or (saved.get("return_law", rise_law) if not args.law
+                                                      else args.law))
+    inputs = CamInputs(arm_mm=values["arm_mm"], program=program, pressure_deg=values["pressure_deg"],
+                       return_pressure_deg=values.get("return_pressure_deg", 70.0),
+                       roller_mm=values.get("roller_mm"), base_mm=values.get("base_mm"),
+                       distance_mm=values.get("distance_mm"))
+    phase = number("phase", args.phase) if args.phase is not None else saved.get("phase_deg")
+    return inputs, phase
+
+
+def _rpm(args: argparse.Namespace) -> float:
+    if args.rpm is not None:
+        value = number("rpm", args.rpm)
+    else:
+        doc = design_file(args)
+        value = float(doc["rpm"][0]) if doc is not None else 60.0
+    if not MIN_RPM <= value <= MAX_RPM:
+        raise DesignError("rpm", value, f"must be ≥ {MIN_RPM:g} and ≤ {MAX_RPM:g} r/min")
+    return value
+
+
+def _idle(args: argparse.Namespace) -> float:
+    if args.idle is not None:
+        value = number("idle_fraction", args.idle)
+    else:
+        doc = design_file(args)
+        masses = doc.get("masses") if doc is not None else None
+        value = masses.idle_fraction if masses is not None else 0.05
+    if not 0.0 <= value < 0.5:
+        raise DesignError("idle_fraction", value, "must be ≥ 0 and < 0.5")
+    return value
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.json and args.csv == "-":
+        raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
+    linked = any(getattr(args, d, None) is not None for d in DESIGN_DESTS)
+    if args.phase is not None and not linked:
+        raise UsageError("--phase: give a design (--crank/--K/--stroke, --dims or --design) to time the cam")
+    design = design_from_args(args) if linked else None
+    try:
+        inputs, phase = _inputs(args)
+        rpm = _rpm(args)
+        step = 1.0 if args.step is None else number("step", args.step)
+        angles = crank_angles(step)
+        idle = _idle(args) if linked else 0.05
+        cam = design_cam(inputs, design, idle, phase)
+    except DesignError as exc:
+        raise UsageError(design_error_text(exc, CAM_OPTIONS.get(exc.parameter))) from None
+    if args.csv is not None:
+        write_output("--csv", args.csv, table_csv(*cam_table(cam, angles, rpm)))
+    if args.dxf is not None:
+        from ..cam_drawing import write_cam_dxf     # ezdxf: only when a drawing is asked for
+        try:
+            write_cam_dxf(cam, args.dxf)
+        except OSError as exc:          # a WriteError: names the user's path and a plain reason
+            raise OutputError(f"--dxf: {exc}") from None
+    summary = cam_summary(cam)
+    summary.update(follower_peaks(cam, rpm))
+    if args.json:
+        print_json(summary)
+    elif args.csv != "-":
+        print_table(summary_rows(summary))
+    return 0
+
+
+def summary_rows(s: dict) -> list[tuple[str, str]]:
+    """(label, value) of the cam's figures, as printed."""
+    rows = [("base radius r0 (pitch curve)", f"{s['base_radius_mm']:.3f} mm"),
+            ("centre distance a", f"{s['center_distance_mm']:.3f} mm"),
+            ("arm l", f"{s['arm_mm']:.3f} mm"),
+            ("initial arm angle ψ0", f"{s['initial_angle_deg']:.3f} °"),
+            ("arrangement", f"roller {s['arm_side']} the line of centres, cam turning clockwise"),
+            ("max pressure angle rise / return",
+             f"{s['max_pressure_angle_rise_deg']:.3f} ° / {s['max_pressure_angle_return_deg']:.3f} ° "
+             f"(allowed {s['allowed_pressure_angle_rise_deg']:g} ° / "
+             f"{s['allowed_pressure_angle_return_deg']:g} °)"),
+            ("min convex radius ρmin (pitch curve)", f"{s['min_curvature_radius_mm']:.3f} mm"),
+            ("roller r", f"{s['roller_mm']:.3f} mm (largest {s['largest_roller_mm']:.3f} mm)"),
+            ("profile base radius r0 − r", f"{s['profile_base_radius_mm']:.3f} mm"),
+            (f"follower max ω / α at {s['rpm']:g} r/min",
+             f"{s['follower_omega_max_rad_s']:.4g} rad/s / {s['follower_alpha_max_rad_s2']:.4g} rad/s²")]
+    if not s["within_allowance"]:
+        rows.append(("allowance", "EXCEEDED"))
+    if "phase_deg" in s:
+        rows.append(("rise starts at crank angle", f"{s['phase_deg']:.3f} ° (cut ends at "
+                     f"{s['cut_end_deg']:.3f} °, {s['clear_span_deg']:.3f} ° clear)"))
+    return rows

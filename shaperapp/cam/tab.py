@@ -1,0 +1,135 @@
+"""The Cam tab: the data sheet's inputs, the synthesized figures, the cam to scale and the
+plots, with CSV, image and DXF exports."""
+from __future__ import annotations
+
+import os
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QLabel, QMessageBox, QPushButton,
+                               QScrollArea, QSplitter, QVBoxLayout, QWidget)
+
+from core.atomic import atomic_write
+from core.cam.table import cam_table
+from core.io import table_csv
+from core.kinematics import crank_angles
+from shaperapp.design.model import DesignModel
+from shaperapp.widgets import file_dialogs
+
+from .form import CamForm
+from .model import CamModel
+from .plots import CamPlots
+from .profile_view import CamProfileView
+
+
+class CamTab(QWidget):
+    """One widget taking the design model: the cam's own model lives here."""
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.cam_model = CamModel(model, self)
+        self.form = CamForm(self.cam_model)
+        self.profile = CamProfileView(self.cam_model)
+        self.plots = CamPlots(self.cam_model)
+        self.figures = QLabel(self)
+        self.figures.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.figures.setWordWrap(True)
+        self.buttons = {name: QPushButton(self) for name in ("csv", "image", "dxf")}
+        self.buttons["csv"].clicked.connect(lambda: self._export_dialog("csv"))
+        self.buttons["image"].clicked.connect(lambda: self._export_dialog("image"))
+        self.buttons["dxf"].clicked.connect(lambda: self._export_dialog("dxf"))
+        side = QWidget()
+        column = QVBoxLayout(side)
+        column.addWidget(self.form)
+        column.addWidget(self.figures)
+        row = QGridLayout()
+        for i, button in enumerate(self.buttons.values()):
+            row.addWidget(button, i // 2, i % 2)
+        column.addLayout(row)
+        column.addStretch(1)
+        scroll = QScrollArea()
+        scroll.setWidget(side)
+        scroll.setWidgetResizable(True)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        scroll.setMinimumWidth(side.sizeHint().width() + 16)
+        scroll.setMaximumWidth(side.sizeHint().width() + 16)
+        split = QSplitter(Qt.Orientation.Vertical)
+        split.addWidget(self.profile)
+        split.addWidget(self.plots)
+        split.setStretchFactor(0, 1)
+        split.setStretchFactor(1, 1)
+        layout = QHBoxLayout(self)
+        layout.setContentsMargins(2, 2, 2, 2)
+        layout.addWidget(scroll)
+        layout.addWidget(split, 1)
+        self.cam_model.camChanged.connect(self.show_figures)
+        self.retranslate()
+
+    def showEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().showEvent(event)
+        self.cam_model.set_active(True)
+        self.show_figures()
+
+    def hideEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().hideEvent(event)
+        self.cam_model.set_active(False)
+
+    def retranslate(self) -> None:
+        self.form.retranslate()
+        self.plots.retranslate()
+        self.buttons["csv"].setText(self.tr("CSV…"))
+        self.buttons["image"].setText(self.tr("Image…"))
+        self.buttons["dxf"].setText(self.tr("DXF…"))
+        self.show_figures()
+
+    def figure_rows(self) -> list[tuple[str, str]]:
+        """(label, value) of the cam's figures, in the current language."""
+        cam = self.cam_model.cam
+        f = cam.follower
+        rows = [(self.tr("Base radius r0"), f"{cam.base_radius_mm:.3f} mm"),
+                (self.tr("Centre distance a"), f"{f.distance_mm:.3f} mm"),
+                (self.tr("Arm angle ψ0"), f"{f.initial_deg:.3f} °"),
+                (self.tr("Roller side"), self.tr("above") if f.side > 0 else self.tr("below")),
+                (self.tr("Max α rise"), f"{cam.max_pressure_rise_deg:.3f} °"),
+                (self.tr("Max α return"), f"{cam.max_pressure_return_deg:.3f} °"),
+                (self.tr("ρmin (convex)"), f"{cam.min_curvature_radius_mm:.3f} mm"),
+                (self.tr("Roller r"), f"{cam.roller_mm:.3f} mm"),
+                (self.tr("Largest roller"), f"{cam.largest_roller_mm:.3f} mm")]
+        if cam.timing is not None:
+            rows.append((self.tr("Rise at crank φ"), f"{cam.timing.phase_deg:.3f} °"))
+        if not cam.within_allowance:
+            rows.append((self.tr("Pressure angle"), self.tr("exceeds the allowance")))
+        return rows
+
+    def show_figures(self) -> None:
+        if not self.isVisible():
+            return              # shown when the tab is (showEvent)
+        cells = "".join(f"<tr><td>{k}</td><td align='right'>&nbsp;{v}</td></tr>" for k, v in self.figure_rows())
+        self.figures.setText(f"<table>{cells}</table>")
+
+    # ---- exports -------------------------------------------------------------
+    def export_csv(self, path: str) -> None:
+        """One row per degree of cam angle at the design's first crank speed."""
+        rpm = self.cam_model.design_model.rpms[0]
+        atomic_write(path, table_csv(*cam_table(self.cam_model.cam, crank_angles(1.0), rpm)))
+
+    def export_dxf(self, path: str) -> None:
+        from core.cam_drawing import write_cam_dxf     # ezdxf: only when a drawing is asked for
+        write_cam_dxf(self.cam_model.cam, path)
+
+    def export_image(self, path: str) -> None:
+        self.profile.export_image(path)
+
+    def _export_dialog(self, kind: str) -> None:
+        self.form.commit()
+        filters = {"csv": self.tr("CSV table (*.csv)"), "dxf": self.tr("DXF drawing (*.dxf)"),
+                   "image": self.tr("PNG image (*.png);;SVG drawing (*.svg)")}[kind]
+        start = os.path.join(os.path.expanduser("~"), "cam." + ("png" if kind == "image" else kind))
+        path = file_dialogs.save_file_name(self, self.tr("Export the cam"), start, filters)
+        if not path:
+            return
+        try:
+            {"csv": self.export_csv, "dxf": self.export_dxf, "image": self.export_image}[kind](path)
+        except (OSError, ValueError, RuntimeError) as exc:
+            QMessageBox.warning(self, self.tr("Export the cam"), str(exc))
+
+
