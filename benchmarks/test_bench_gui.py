@@ -87,4 +87,4 @@ def _start(home):
 
 def test_startup_to_first_window(benchmark, tmp_path):
     stdout = benchmark.pedantic(_start, args=(tmp_path,), rounds=5, iterations=1)
-    assert "first window shown" in stdout
+    assert "first window painted" in stdout
