@@ -52,8 +52,9 @@ class LazyPage(QWidget):
             assert factory is not None
             self._view = factory()
             self._layout.addWidget(self._view)
-            if self.isVisible():            # now, as the view would have been; Qt would queue it
-                self._view.show()
+            if self.isVisible():            # now, as the view would have been; Qt would queue it,
+                self._view.show()           # and laid out to the page's size at once
+                self._layout.activate()
             guard_wheel(self._view)         # as the window guarded what it held when built
             # A hidden page's size change reaches no layout by itself; the tabs' and the
             # window's minimum sizes must count the view (the window fits the screen by them).

@@ -30,12 +30,14 @@ def test_a_page_is_built_when_first_shown_and_only_once(qtbot):
     tabs.addTab(first, "first")
     page = LazyPage(_counting_factory(made))
     tabs.addTab(page, "lazy")
+    tabs.resize(700, 700)
     tabs.show()
     qtbot.waitExposed(tabs)
     assert made == [] and not page.is_built()          # behind its tab: not built
     tabs.setCurrentIndex(1)
     # Built and shown at once, as an eagerly built view is (its showEvent may open a file).
     assert len(made) == 1 and page.built_view() is made[0] and made[0].isVisible()
+    assert made[0].size() == page.size()               # and laid out to its page at once
     tabs.setCurrentIndex(0)
     tabs.setCurrentIndex(1)
     assert page.view() is made[0] and len(made) == 1
