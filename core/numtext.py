@@ -22,8 +22,6 @@ DIGITS = 10                   # significant digits, as "%.10g"
 _TIE_MARGIN = 1e-5            # scaled values this close to a tie are left to Python
 _MAX_POWER = 22               # 10.0**k is exact for 0 <= k <= 22
 _POW10 = np.array([10.0 ** k for k in range(_MAX_POWER + 1)])
-# Every group of four and of two digits (leading zeros kept) as its ASCII bytes in one
-# word, and its count of trailing zeros.
 
 
 def _groups(width: int) -> tuple[np.ndarray, np.ndarray]:
@@ -88,6 +86,8 @@ _TABLE, _LENGTH = _layouts()
 
 
 def _python_row(values: np.ndarray) -> str:
+    """One row as Python's own "%.10g" writes it: the reference, and the way for a row
+    holding a value the vectorized path leaves out."""
     return ",".join("" if v != v else "%.10g" % v for v in values.tolist()) + "\n"
 
 
