@@ -46,6 +46,7 @@ _WIDTH = 17                   # the longest cell: "-0.0001234567891," or "-1.234
 _EXPONENT, _ZERO_MODE, _EMPTY = 14, 15, 16
 _MODES = 17
 _COLUMN = np.arange(_WIDTH)
+_BLOCK_CELLS = 65_536         # cells formatted at once: a few MB of temporaries, in cache
 
 
 def _layout(negative: bool, mode: int, significant: int) -> list[int]:
@@ -98,6 +99,9 @@ def g10_rows(data: np.ndarray) -> str:
     if data.size == 0:
         return "".join(_python_row(row) for row in data)
     rows, columns = data.shape
+    if data.size > _BLOCK_CELLS:     # its temporaries take about 200 bytes a cell: in blocks
+        step = max(1, _BLOCK_CELLS // columns)
+        return "".join([g10_rows(data[start:start + step]) for start in range(0, rows, step)])
     x = data.ravel()
     size = x.size
     magnitude = np.abs(x)
