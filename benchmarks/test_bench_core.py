@@ -35,15 +35,53 @@ def test_cycle_metrics(benchmark):
     assert len(metrics.speeds) == 4
 
 
-def _cli_csv(target):
+def _cli_csv(target, *variant):
     exe = shutil.which("shaper")
     cmd = [exe] if exe else [sys.executable, "-m", "core"]
-    subprocess.run(cmd + ["curves", "--crank", "100", "--K", "1.4", "--stroke", "300",
-                          "--rod-ratio", "0.3", "--rpm", "40", "60", "--step", "0.01",
-                          "--csv", str(target)], check=True)
+    subprocess.run(cmd + ["curves", "--crank", "100", "--K", "1.4", "--stroke", "300", *variant,
+                          "--rpm", "40", "60", "--step", "0.01", "--csv", str(target)], check=True)
 
 
 def test_cli_csv_36001_angles_2_speeds(benchmark, tmp_path):
     target = tmp_path / "curves.csv"
+    benchmark.pedantic(_cli_csv, args=(target, "--rod-ratio", "0.3"), rounds=5, iterations=1)
+    assert sum(1 for _ in target.open()) == 1 + 2 * 36001
+
+
+def test_cli_csv_36001_angles_2_speeds_block(benchmark, tmp_path):
+    """Issue 24's command (block variant, 11 columns), whole process including start-up."""
+    target = tmp_path / "curves.csv"
     benchmark.pedantic(_cli_csv, args=(target,), rounds=5, iterations=1)
     assert sum(1 for _ in target.open()) == 1 + 2 * 36001
+
+
+def _curve_table_36001_2():
+    from core.io import curve_table
+    motion = solve(synthesize(100, 1.4, 300), np.radians(np.linspace(0, 360, 36001)), [40, 60])
+    return curve_table(motion)
+
+
+def test_csv_text_of_curves_72002_rows(benchmark):
+    """Issue 24: the text of ``shaper curves``' table (block variant, 72 002 rows × 11
+    columns) as core.io writes it, the vectorized "%.10g" of core.numtext."""
+    from core.io import table_csv
+    names, data = _curve_table_36001_2()
+    text = benchmark.pedantic(table_csv, args=(names, data), rounds=5, iterations=1)
+    assert text.count("\n") == 72003
+
+
+def test_csv_text_of_curves_72002_rows_python_percent(benchmark):
+    """The same numbers with Python's % per block of rows, as core.io wrote them before
+    issue 24: the comparison for the row above."""
+    from core.io import snap_zeros
+    names, data = _curve_table_36001_2()
+
+    def python_text():
+        values = snap_zeros(data)
+        row = ",".join(["%.10g"] * values.shape[1]) + "\n"
+        return ",".join(names) + "\n" + "".join(
+            (row * len(block)) % tuple(block.ravel().tolist())
+            for block in (values[i:i + 20_000] for i in range(0, len(values), 20_000)))
+
+    text = benchmark.pedantic(python_text, rounds=5, iterations=1)
+    assert text.count("\n") == 72003

@@ -4,6 +4,7 @@ The update benchmark drives the whole window (form → model → scheme, metrics
 plots, forces) with 4 speeds at 1°, the case the GUI issue names.
 """
 import os
+import re
 import subprocess
 import sys
 
@@ -86,5 +87,16 @@ def _start(home):
 
 
 def test_startup_to_first_window(benchmark, tmp_path):
-    stdout = benchmark.pedantic(_start, args=(tmp_path,), rounds=5, iterations=1)
-    assert "first window shown" in stdout
+    """The whole process: start, first paint of the window, quit. The time from the app
+    module's import to the first paint, as the app prints it, goes into extra_info."""
+    painted = []
+
+    def run():
+        stdout = _start(tmp_path)
+        painted.append(int(re.search(r"first window painted after (\d+) ms", stdout).group(1)))
+        return stdout
+
+    benchmark.pedantic(run, rounds=5, iterations=1)
+    benchmark.extra_info["first_paint_ms_min"] = min(painted)
+    benchmark.extra_info["first_paint_ms_median"] = sorted(painted)[len(painted) // 2]
+    assert painted

@@ -91,3 +91,18 @@ def test_summarize_one_design_4_speeds(benchmark):
                             cut_force_N=7000.0, cut_height_mm=80.0)
     summary = benchmark(summarize, design, [30.0, 40.0, 60.0, 80.0], masses)
     assert len(summary.speeds) == 4
+
+
+SWEEP_1E5 = ["sweep", "--crank", "100", "--K", "1.46", "--stroke", "312", "--rod-ratio", "0.3",
+             "--vary", "rod-ratio=0.25:1.15:317", "--vary", "guide=480:680:317", "--rpm", "40"]
+
+
+def test_cli_sweep_100489_rod_designs_to_csv(benchmark, tmp_path):
+    """Issue 24: ``shaper sweep`` of 317 × 317 rod designs to a CSV file, the whole process."""
+    import shutil
+    import subprocess
+    import sys
+    exe = shutil.which("shaper")
+    cmd = ([exe] if exe else [sys.executable, "-m", "core"]) + SWEEP_1E5 + ["--csv", str(tmp_path / "s.csv")]
+    benchmark.pedantic(subprocess.run, args=(cmd,), kwargs={"check": True}, rounds=3, iterations=1)
+    assert sum(1 for _ in (tmp_path / "s.csv").open()) == 1 + 317 * 317

@@ -365,9 +365,12 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
 # Unit offsets of the ψ grid on [−1, 1] (times θ/2): uniform, plus points crowding
 # geometrically toward ψ = 0 and the two ends, where the rod can stand nearly upright and
 # the drive margin can dip sharply (see drive_margin).
+# Sorted and without repeats as np.unique would give, which is not called here because
+# it imports numpy.ma (7 ms of every command's start-up).
 _CROWD = 5.0 ** -np.arange(2, 9)
-_PSI_UNIT = np.unique(np.concatenate([np.linspace(-1.0, 1.0, 33), _CROWD, -_CROWD,
-                                      1.0 - _CROWD, _CROWD - 1.0]))
+_PSI_UNIT = np.sort(np.concatenate([np.linspace(-1.0, 1.0, 33), _CROWD, -_CROWD,
+                                    1.0 - _CROWD, _CROWD - 1.0]))
+_PSI_UNIT = _PSI_UNIT[np.concatenate(([True], _PSI_UNIT[1:] != _PSI_UNIT[:-1]))]
 _CHUNK = 4096
 
 

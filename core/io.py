@@ -18,6 +18,7 @@ from .atomic import atomic_write
 from .design_file import (FILE_FORMAT, FILE_VERSION, load_design, masses_from_dict,  # noqa: F401
                           masses_to_dict, parse_design)
 from .kinematics import Motion
+from .numtext import g10_rows
 from .spec import Spec
 
 CURVE_COLUMNS = ("rpm", "crank_deg", "time_s", "ram_x_mm", "ram_v_m_s", "ram_a_m_s2",
@@ -104,19 +105,16 @@ def table_chunks(names: Iterable[str] | None, data: np.ndarray,
     A NaN marks a value that is undefined at that angle (the guide's line of
     action when it carries no force) and becomes an empty cell. Round-off zeros
     are written as 0 (:func:`snap_zeros`, relative to ``scale``: by default
-    :func:`zero_scale` of ``data``).
+    :func:`zero_scale` of ``data``). Each number is ``"%.10g"`` of it, formatted a
+    block at a time by :func:`core.numtext.g10_rows`.
     """
     data = snap_zeros(data, scale)
     if names is not None:
         yield ",".join(names) + "\n"
     if data.size == 0:
         return
-    row = ",".join(["%.10g"] * data.shape[1]) + "\n"
     for start in range(0, data.shape[0], rows):
-        block = data[start:start + rows]
-        text = (row * block.shape[0]) % tuple(block.ravel().tolist())
-        # "%g" spells NaN "nan"; no number contains those letters, so this only blanks NaN cells.
-        yield text.replace("nan", "") if np.isnan(block).any() else text
+        yield g10_rows(data[start:start + rows])
 
 
 def curves_csv(motion: Motion) -> str:

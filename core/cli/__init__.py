@@ -8,6 +8,11 @@ nothing ever prints a traceback.
 Subcommands whose code lives outside ``core`` (the report needs Qt) are
 found through the ``shaper.commands`` entry-point group, so ``core`` itself
 never imports Qt.
+
+Only the subcommand named on the command line is imported: ``shaper curves``
+never loads the library, the sweep or the entry points (``importlib.metadata``),
+which is a good part of a short command's start-up. ``shaper --help``, an
+unknown word and the entry-point commands load them all, as before.
 """
 from __future__ import annotations
 
@@ -16,20 +21,25 @@ import difflib
 import os
 import re
 import sys
-from importlib import import_module, metadata
+from importlib import import_module
 from types import ModuleType
 from typing import Sequence
 
 from ..errors import DesignError, FileFormatError
-from .common import Parser, UsageError, design_error_text, fail, version_text
+from .common import Parser, UsageError, VersionAction, design_error_text, fail
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output
 
 # Order is the order of ``shaper --help``.
 CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library")
 
 
-def _command_modules() -> dict[str, ModuleType]:
+def _command_modules(command: str | None = None) -> dict[str, ModuleType]:
+    """The subcommands' modules: only ``command``'s when it is one of CORE_COMMANDS,
+    else every core command and every entry point's."""
+    if command in CORE_COMMANDS:
+        return {command: import_module(f"{__name__}.cmd_{command}")}
     modules = {name: import_module(f"{__name__}.cmd_{name}") for name in CORE_COMMANDS}
+    from importlib import metadata
     try:
         entries = metadata.entry_points(group="shaper.commands")
     except Exception:  # a broken installation must not stop the core commands
@@ -49,7 +59,7 @@ def build_parser(modules: dict[str, ModuleType] | None = None) -> argparse.Argum
                     description="Shaper quick-return mechanism (crank, slotted lever, ram): "
                                 "synthesis, kinematics, forces and files, without a screen.",
                     epilog="Run 'shaper COMMAND --help' for the options and an example of each command.")
-    parser.add_argument("--version", action="version", version=version_text("shaper"))
+    parser.add_argument("--version", action=VersionAction)
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     for name, module in modules.items():
         p = sub.add_parser(name, help=module.HELP, description=module.DESCRIPTION,
@@ -103,9 +113,15 @@ def with_suggestion(message: str, parser: argparse.ArgumentParser, argv: Sequenc
     return message
 
 
+def _command_word(words: Sequence[str]) -> str | None:
+    """The subcommand ``words`` name: the first word that is not an option (``shaper``
+    itself has no option that takes a value)."""
+    return next((w for w in words if not w.startswith("-")), None)
+
+
 def run(argv: Sequence[str] | None) -> int:
-    parser = build_parser()
     words = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser(_command_modules(_command_word(words)))
     try:
         args = parser.parse_args(words)
     except UsageError as exc:

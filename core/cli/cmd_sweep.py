@@ -10,6 +10,7 @@ from typing import Any, Callable, Iterator
 import numpy as np
 
 from ..errors import DesignError
+from ..numtext import g10_rows
 from ..spec import Spec
 from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
 from .common import (LOAD_OPTIONS, add_design_options, add_load_options, add_speed_options,
@@ -139,14 +140,31 @@ def csv_header(names: list[str], ev: Evaluation) -> str:
 
 def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
              option: Callable[[str], str] = option_name) -> str:
-    """CSV lines (no header) of the designs in ``ev``; empty cells where undefined."""
-    varied = [_format(values[PARAMETERS[n]]) for n in names]
-    figures = [_format(v) for _, v in figure_columns(ev)]
+    """CSV lines (no header) of the designs in ``ev``; empty cells where undefined.
+
+    The numbers of a row are formatted together, by the vectorized "%.10g" of
+    ``core.numtext``; only the joins with the text columns are per row."""
     valid = np.where(ev.valid.reshape(-1), "true", "false")
     why = [_quote(r) for r in reasons(ev, option)]
-    lines = [",".join([t[i] for t in varied] + [valid[i], why[i]] + [t[i] for t in figures])
-             for i in range(valid.size)]
-    return "\n".join(lines) + "\n" if lines else ""
+    if not valid.size:
+        return ""
+    varied = _format_rows([values[PARAMETERS[n]] for n in names], valid.size)
+    figures = _format_rows([v for _, v in figure_columns(ev)], valid.size)
+    if varied is None:
+        lines = [f"{v},{w},{f}" for v, w, f in zip(valid.tolist(), why, figures)]
+    else:
+        lines = [f"{a},{v},{w},{f}" for a, v, w, f in zip(varied, valid.tolist(), why, figures)]
+    return "\n".join(lines) + "\n"
+
+
+def _format_rows(columns: list[np.ndarray], size: int) -> list[str] | None:
+    """Per row, the columns' values with 10 significant digits joined by commas, an empty
+    cell where a value is not finite; None without columns."""
+    if not columns:
+        return None
+    data = np.column_stack([np.asarray(c, dtype=float).reshape(-1) for c in columns])
+    data[~np.isfinite(data)] = np.nan
+    return g10_rows(data).split("\n")[:size]
 
 
 def json_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
@@ -162,10 +180,6 @@ def json_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
         row.update({c: _number(v[i]) for c, v in cols})
         out.append(json.dumps(row, ensure_ascii=False, allow_nan=False))
     return out
-
-
-def _format(values: np.ndarray) -> list[str]:
-    return ["" if not math.isfinite(v) else f"{v:.10g}" for v in np.asarray(values, dtype=float)]
 
 
 def _number(value: float) -> float | None:

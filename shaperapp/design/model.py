@@ -14,13 +14,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, replace
-from typing import Any, Callable, Hashable
+from typing import TYPE_CHECKING, Any, Callable, Hashable
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 from PySide6.QtGui import QUndoStack
 
-from core.compare import Candidate
 from core.dynamics import Dynamics, DynamicsSummary, MassProperties
 from core.errors import DesignError
 from core.geometry import Design
@@ -33,6 +32,9 @@ from shaperapp.widgets.messages import field_name
 from .results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, solve_forces,
                             typed_error)
 from .undo import InputEdit, Inputs, push_edit
+
+if TYPE_CHECKING:       # a type only: core.compare is imported when a comparison is made
+    from core.compare import Candidate
 
 DEFAULT_RPMS = (40.0, 60.0)
 DEFAULT_STEP = 1.0

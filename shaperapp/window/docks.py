@@ -13,6 +13,8 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication, QRect, QSize, Qt, QTimer
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QStackedWidget, QWidget
 
+from shaperapp.widgets.lazy import LazyPage
+
 from shaperapp.design.inputs_pane import scrolled
 
 from .state import FRAME_ALLOWANCE, available
@@ -83,6 +85,7 @@ class Docks:
         """The library shown docked above or below the plots is checked once laid out."""
         dock, w = self.docks["library"], self._window
         if shown and not dock.isFloating() and w.dockWidgetArea(dock) in (BOTTOM, TOP):
+            self.pane("library")        # built now if it was not, so that its size counts
             QTimer.singleShot(0, self._fit_library)
 
     def _fit_library(self) -> None:
@@ -119,7 +122,8 @@ class Docks:
 
     def pane(self, name: str) -> QWidget:
         """The widget a dock shows (the results pane's scroll area)."""
-        return self.docks[name].widget().widget(0)
+        pane = self.docks[name].widget().widget(0)
+        return pane.view() if isinstance(pane, LazyPage) else pane
 
     def arrange(self, size: QSize) -> None:
         """The default layout for a window of ``size``: every pane docked and shown

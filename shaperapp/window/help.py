@@ -6,7 +6,7 @@ scattered through the code; it is shown in a ``QTextBrowser``.
 """
 from __future__ import annotations
 
-from importlib import metadata, resources
+from importlib import resources
 
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout, QWidget
@@ -15,6 +15,7 @@ GUIDE_LANGUAGES = ("en", "zh_CN")
 
 
 def version() -> str:
+    from importlib import metadata      # 12 ms: not before the About box asks
     try:
         return metadata.version("shaper-designer")
     except metadata.PackageNotFoundError:

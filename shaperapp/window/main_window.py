@@ -14,25 +14,19 @@ import os
 import shiboken6
 from PySide6.QtCore import QEvent, QSettings, QTimer
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
-from PySide6.QtWidgets import (QInputDialog, QMainWindow, QMessageBox, QTabWidget,
-                               QVBoxLayout, QWidget)
+from PySide6.QtWidgets import QInputDialog, QMainWindow, QMessageBox, QVBoxLayout, QWidget
 
 from shaperapp.cam.tab import CamTab
-from shaperapp.compare.view import CompareView
 from shaperapp.design.document import Document
 from shaperapp.design.inputs_pane import InputsPane
 from shaperapp.design.model import DesignModel
-from shaperapp.explore.view import ExploreView
-from shaperapp.library.pane import LibraryPane
-from shaperapp.plots.forces import ForcePlots
 from shaperapp.plots.kinematics import PlotsWidget
-from shaperapp.positions.view import PositionsView
 from shaperapp.results.panel import MetricsPanel
 from shaperapp.scheme.view import SchemeWidget
-from shaperapp.vectors.view import PolygonView
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets import i18n
 from shaperapp.widgets.guards import ShortcutGuard, guard_wheel
+from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
 from shaperapp.widgets.messages import describe
 
 from . import state as window_state
@@ -55,18 +49,22 @@ class MainWindow(QMainWindow):
         self.form, self.loads = self.inputs.form, self.inputs.loads
         self.metrics = MetricsPanel(model)
         self.scheme = SchemeWidget(model)
-        self.polygon_view = PolygonView(model)
-        self.library = LibraryPane(model, settings=settings)
         self.animation = AnimationBar(model)
         self.plots = PlotsWidget(model)
-        self.forces = ForcePlots(model)
-        self.positions = PositionsView(model)
-        self.explore = ExploreView(model)
-        self.compare = CompareView(model)
+        self.tabs = ViewTabs()
+        self.tabs.addTab(self.plots, "")
+        # The other tabs are built (and their modules imported) when first shown or asked for.
+        self._pages = {name: LazyPage(lambda name=name: self._build_tab(name))
+                       for name in ("forces", "positions", "explore", "compare")}
+        for page in self._pages.values():
+            self.tabs.addTab(page, "")
+        # So are the panes hidden at first (the library) or behind another's tab (the vector diagrams).
+        self._pages["polygons"] = LazyPage(self._build_polygons)
+        self._pages["library"] = LazyPage(self._build_library)
+        # The Cam tab is built at once: its model holds the cam that Save writes and Open reads.
         self.cam = CamTab(model)
-        self.tabs = QTabWidget()
-        for view in (self.plots, self.forces, self.positions, self.explore, self.compare, self.cam):
-            self.tabs.addTab(view, "")
+        self.tabs.addTab(self.cam, "")
+        self._idle_build_started = False
         central = QWidget()
         column = QVBoxLayout(central)
         column.setContentsMargins(0, 0, 0, 0)
@@ -75,10 +73,8 @@ class MainWindow(QMainWindow):
         column.addWidget(self.animation)
         self.setCentralWidget(central)
         self.docks = Docks(self, {"inputs": self.inputs, "results": self.metrics, "mechanism": self.scheme,
-                                  "polygons": self.polygon_view, "library": self.library})
+                                  "polygons": self._pages["polygons"], "library": self._pages["library"]})
         self.library_dock = self.docks["library"]
-        self.library.compareRequested.connect(self._show_comparison)
-        self.polygon_view.enlargeRequested.connect(self._enlarge_polygons)
 
         self._build_actions()
         self.menus = Menus(self)
@@ -97,9 +93,48 @@ class MainWindow(QMainWindow):
         if window_state.restore(self, settings, self.docks.arrange):
             self.docks.keep_sizes()
 
+    forces = property(lambda self: self._pages["forces"].view())
+    positions = property(lambda self: self._pages["positions"].view())
+    explore = property(lambda self: self._pages["explore"].view())
+    compare = property(lambda self: self._pages["compare"].view())
+
+    polygon_view = property(lambda self: self._pages["polygons"].view())
+    library = property(lambda self: self._pages["library"].view())
+
+    def _build_polygons(self) -> QWidget:
+        from shaperapp.vectors.view import PolygonView
+        view = PolygonView(self.model)
+        view.enlargeRequested.connect(self._enlarge_polygons)
+        return view
+
+    def _build_library(self) -> QWidget:
+        from shaperapp.library.pane import LibraryPane
+        pane = LibraryPane(self.model, settings=self.settings)
+        pane.compareRequested.connect(self._show_comparison)
+        return pane
+
+    def _build_tab(self, name: str) -> QWidget:
+        if name == "forces":
+            from shaperapp.plots.forces import ForcePlots
+            return ForcePlots(self.model)
+        if name == "positions":
+            from shaperapp.positions.view import PositionsView
+            return PositionsView(self.model)
+        if name == "explore":
+            from shaperapp.explore.view import ExploreView
+            return ExploreView(self.model)
+        from shaperapp.compare.view import CompareView
+        return CompareView(self.model)
+
     def showEvent(self, event) -> None:
         super().showEvent(event)
         QTimer.singleShot(0, self.docks.apply_sizes)    # the default sizes, once laid out
+
+    def paintEvent(self, event) -> None:
+        super().paintEvent(event)
+        if not self._idle_build_started:    # the first screen is up: build the rest meanwhile
+            self._idle_build_started = True
+            build_when_idle(list(self._pages.values()))
 
     flush_typing = staticmethod(flush_typing)
 
@@ -359,5 +394,7 @@ class MainWindow(QMainWindow):
         window_state.save(self, self.settings)
         if self._guide is not None:
             self._guide.close()
-        self.explore.shutdown()
+        explore = self._pages["explore"].built_view()
+        if explore is not None:
+            explore.shutdown()
         event.accept()

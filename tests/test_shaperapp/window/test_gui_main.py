@@ -69,7 +69,7 @@ def test_app_starts_and_renders(tmp_path):
     out = subprocess.run([sys.executable, "-m", "shaperapp.app", "--lang", "en", "--screenshot", str(shot)],
                          capture_output=True, text=True, env=env, timeout=120)
     assert out.returncode == 0, out.stderr
-    assert "first window shown" in out.stdout
+    assert "first window painted" in out.stdout
     assert shot.stat().st_size > 20_000
 
 

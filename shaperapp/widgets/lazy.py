@@ -1,0 +1,115 @@
+"""Views built when first shown: a tab page or pane that nobody looks at costs nothing.
+
+Why: building every tab at start-up (Forces, Positions, Explore, Compare: their
+plots, tables and the modules behind them) made up about a fifth of the time
+to the first window (issue 24). A ``LazyPage`` stands in the tab or dock and
+builds its view from a factory the first time it is shown, the first time
+code asks for the view (``view()``), or once the window is on screen
+(``build_when_idle``), whichever comes first. The factory may
+import the view's module, so that nothing the first screen does not show is
+imported before it.
+
+``ViewTabs`` is a QTabWidget that speaks of views, not of their stand-ins:
+``widget``, ``currentWidget``, ``indexOf`` and ``setCurrentWidget`` take and
+give the view itself, so code (and tests) written for eagerly built tabs stay
+true.
+"""
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+import shiboken6
+
+from PySide6.QtCore import QTimer, Signal
+from PySide6.QtWidgets import QTabWidget, QVBoxLayout, QWidget
+
+from .guards import guard_wheel
+
+
+class LazyPage(QWidget):
+    """Holds the view ``factory()`` builds, built on the first show or ``view()``."""
+
+    built = Signal(QWidget)
+
+    def __init__(self, factory: Callable[[], QWidget], parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._factory: Callable[[], QWidget] | None = factory
+        self._view: QWidget | None = None
+        self._layout = QVBoxLayout(self)
+        self._layout.setContentsMargins(0, 0, 0, 0)
+
+    def is_built(self) -> bool:
+        return self._view is not None
+
+    def built_view(self) -> QWidget | None:
+        """The view if it has been built, else None (never builds it)."""
+        return self._view
+
+    def view(self) -> QWidget:
+        """The view, built now if it was not yet."""
+        if self._view is None:
+            factory, self._factory = self._factory, None
+            assert factory is not None
+            self._view = factory()
+            self._layout.addWidget(self._view)
+            if self.isVisible():            # now, as the view would have been; Qt would queue it,
+                self._view.show()           # and laid out to the page's size at once
+                self._layout.activate()
+            guard_wheel(self._view)         # as the window guarded what it held when built
+            # A hidden page's size change reaches no layout by itself; the tabs' and the
+            # window's minimum sizes must count the view (the window fits the screen by them).
+            widget: QWidget | None = self
+            while widget is not None:
+                if widget.layout() is not None:
+                    widget.layout().invalidate()
+                widget = widget.parentWidget()
+            self.built.emit(self._view)
+        return self._view
+
+    def showEvent(self, event) -> None:
+        self.view()
+        super().showEvent(event)
+
+
+class ViewTabs(QTabWidget):
+    """Tabs whose pages may be LazyPages; every method below takes or gives the view."""
+
+    def widget(self, index: int) -> QWidget | None:  # type: ignore[override]
+        page = super().widget(index)
+        return page.view() if isinstance(page, LazyPage) else page
+
+    def currentWidget(self) -> QWidget | None:  # type: ignore[override]
+        index = self.currentIndex()
+        return self.widget(index) if index >= 0 else None
+
+    def indexOf(self, widget: QWidget) -> int:  # type: ignore[override]
+        for i in range(self.count()):
+            page = super().widget(i)
+            if page is widget or (isinstance(page, LazyPage) and page.built_view() is widget):
+                return i
+        return -1
+
+    def setCurrentWidget(self, widget: QWidget) -> None:  # type: ignore[override]
+        index = self.indexOf(widget)
+        if index >= 0:
+            self.setCurrentIndex(index)
+
+
+def build_when_idle(pages: Sequence[LazyPage]) -> None:
+    """Build ``pages`` one per turn of the event loop, from the next turn on: called once
+    the window is painted, so the views come in while the user looks at the first screen,
+    and the window's minimum size is that of every view again, as it was when all were
+    built at start-up."""
+    waiting = [page for page in pages if not page.is_built()]
+
+    def next_page() -> None:
+        while waiting:
+            page = waiting.pop(0)
+            if shiboken6.isValid(page) and not page.is_built():
+                page.view()
+                break
+        if waiting:
+            QTimer.singleShot(0, next_page)
+
+    if waiting:
+        QTimer.singleShot(0, next_page)

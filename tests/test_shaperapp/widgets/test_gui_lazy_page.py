@@ -1,0 +1,113 @@
+"""Views built when first shown (shaperapp/widgets/lazy.py, issue 24): a LazyPage builds its
+view on the first show or the first ``view()``, never twice; ViewTabs speaks of the views."""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+from PySide6.QtWidgets import QApplication, QLabel, QSpinBox, QVBoxLayout, QWidget
+
+from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
+
+
+def _counting_factory(made: list):
+    def make() -> QWidget:
+        view = QWidget()
+        layout = QVBoxLayout(view)
+        layout.addWidget(QSpinBox())
+        view.setMinimumSize(300, 400)
+        made.append(view)
+        return view
+    return make
+
+
+def test_a_page_is_built_when_first_shown_and_only_once(qtbot):
+    made: list = []
+    tabs = ViewTabs()
+    qtbot.addWidget(tabs)
+    first = QLabel("first")
+    tabs.addTab(first, "first")
+    page = LazyPage(_counting_factory(made))
+    tabs.addTab(page, "lazy")
+    tabs.resize(700, 700)
+    tabs.show()
+    qtbot.waitExposed(tabs)
+    assert made == [] and not page.is_built()          # behind its tab: not built
+    tabs.setCurrentIndex(1)
+    # Built and shown at once, as an eagerly built view is (its showEvent may open a file).
+    assert len(made) == 1 and page.built_view() is made[0] and made[0].isVisible()
+    assert made[0].size() == page.size()               # and laid out to its page at once
+    tabs.setCurrentIndex(0)
+    tabs.setCurrentIndex(1)
+    assert page.view() is made[0] and len(made) == 1
+    # The tabs speak of the views themselves, as when every view was built at start-up.
+    assert tabs.widget(1) is made[0] and tabs.currentWidget() is made[0]
+    assert tabs.indexOf(made[0]) == 1 and tabs.indexOf(first) == 0 and tabs.indexOf(QWidget()) == -1
+    tabs.setCurrentWidget(first)
+    assert tabs.currentIndex() == 0
+    # A choice or number built later is wheel-guarded as the window's others are.
+    assert made[0].findChild(QSpinBox).property("shaperWheelGuard")
+
+
+def test_asking_for_the_view_builds_it_and_the_minimum_size_counts_it(qtbot):
+    made: list = []
+    tabs = ViewTabs()
+    qtbot.addWidget(tabs)
+    tabs.addTab(QLabel("first"), "first")
+    page = LazyPage(_counting_factory(made))
+    tabs.addTab(page, "lazy")
+    tabs.show()
+    qtbot.waitExposed(tabs)
+    assert tabs.minimumSizeHint().height() < 400
+    view = page.view()                                  # e.g. a menu action that needs the view
+    assert made == [view]
+    QApplication.processEvents()
+    assert tabs.minimumSizeHint().height() >= 400       # the hidden view's minimum reached the tabs
+
+
+def test_idle_build_builds_every_page_one_per_turn(qtbot):
+    made: list = []
+    pages = [LazyPage(_counting_factory(made)) for _ in range(3)]
+    holder = QWidget()
+    qtbot.addWidget(holder)
+    for page in pages:
+        page.setParent(holder)
+        page.hide()
+    build_when_idle(pages)
+    assert made == []                                   # nothing before the event loop turns
+    qtbot.waitUntil(lambda: all(p.is_built() for p in pages), timeout=5_000)
+    assert len(made) == 3
+
+
+PROBE = """
+import sys
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QApplication
+app = QApplication(sys.argv[:1])
+from shaperapp.app import _when_painted
+from shaperapp.design.model import DesignModel
+from shaperapp.window.main_window import MainWindow
+window = MainWindow(DesignModel(), QSettings(sys.argv[1], QSettings.Format.IniFormat))
+window.show()
+def painted():
+    print(sorted(m for m in sys.modules if m.startswith(WATCHED)))
+    print(sorted(n for n, p in window._pages.items() if p.is_built()))
+    app.quit()
+WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.positions", "shaperapp.library",
+           "shaperapp.plots.forces", "core.library", "core.compare", "importlib.metadata")
+_when_painted(window, painted)
+app.exec()
+"""
+
+
+def test_the_first_screen_imports_and_builds_only_what_it_shows(tmp_path):
+    """At the window's first paint, the tabs behind Kinematics and the hidden library are
+    neither built nor imported (issue 24: they cost a fifth of the start-up)."""
+    env = dict(os.environ, QT_QPA_PLATFORM="offscreen", XDG_CONFIG_HOME=str(tmp_path))
+    out = subprocess.run([sys.executable, "-c", PROBE, str(tmp_path / "s.ini")], capture_output=True,
+                         text=True, env=env, timeout=120)
+    assert out.returncode == 0, out.stderr
+    modules, built = out.stdout.strip().splitlines()[-2:]
+    assert modules == "[]"
+    assert built in ("[]", "['polygons']")    # the vector diagrams' dock is laid out once, tabbed
