@@ -17,8 +17,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import linprog
-from scipy.spatial import ConvexHull, HalfspaceIntersection
 
 from ..errors import DesignError
 from .follower import TURN, Follower
@@ -74,6 +72,9 @@ def _halfspaces(arm: float, k: int, program: Program, allowance: Allowance) -> n
 
 
 def _chebyshev(h: np.ndarray) -> np.ndarray | None:
+    # scipy comes in when a cam is synthesized, not with the window (its import pulls in
+    # numpy.testing and importlib.metadata, a tenth of a second the first screen does not need)
+    from scipy.optimize import linprog
     res = linprog([0.0, 0.0, -1.0], A_ub=np.column_stack([h[:, :2], np.ones(len(h))]),
                   b_ub=-h[:, 2], bounds=[(None, None), (None, None), (0.0, None)], method="highs")
     if res.status != 0 or res.x[2] <= 1e-9 * REACH:
@@ -94,6 +95,7 @@ def _inside(h: np.ndarray) -> np.ndarray | None:
 
 def _nearest(vertices: np.ndarray, p: np.ndarray) -> np.ndarray:
     """The point of the convex polygon with these vertices nearest to ``p`` (outside it)."""
+    from scipy.spatial import ConvexHull
     ring = vertices[ConvexHull(vertices).vertices]
     a, b = ring, np.roll(ring, -1, axis=0)
     ab = b - a
@@ -104,6 +106,7 @@ def _nearest(vertices: np.ndarray, p: np.ndarray) -> np.ndarray:
 
 def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
     """The follower arrangement on ``side`` with the smallest base radius, or None."""
+    from scipy.spatial import HalfspaceIntersection
     h = _halfspaces(arm_mm, TURN * side, program, allowance)
     centre = _inside(h)
     if centre is None:
