@@ -2,12 +2,13 @@
 with a preview of the sheet as it will be written; then PDF, SVG or DXF.
 
 The sheet is built from the model's design on screen, its first speed and its
-loads, in the UI's language, by the same code as ``shaper drawing``.
+loads (the cam sheet from the Cam tab's last valid cam), in the UI's language, by the same code as ``shaper drawing``.
 """
 from __future__ import annotations
 
 import datetime
 import os
+from typing import TYPE_CHECKING, Callable
 
 from PySide6.QtCore import QSettings, QSize, Qt, QTimer
 from PySide6.QtGui import QGuiApplication, QImage, QPainter, QPixmap
@@ -27,6 +28,9 @@ from shaperapp.widgets.fonts import MissingFontError
 from .content import SHEET_SUFFIXES, SheetChoice, build_sheet
 from .render import paint_sheet, write_sheet
 
+if TYPE_CHECKING:
+    from core.cam import Cam
+
 PREVIEW_WIDTH = 560            # px of the preview's longer side
 SETTINGS_KEYS = ("drawn", "school")
 
@@ -35,9 +39,11 @@ class DrawingSheetDialog(QDialog):
     """The choices on the left, the sheet's preview on the right; Save… writes the file."""
 
     def __init__(self, model: DesignModel, language: str = "en", parent: QWidget | None = None,
-                 settings: QSettings | None = None, start_dir: str = "") -> None:
+                 settings: QSettings | None = None, start_dir: str = "",
+                 cam: "Callable[[], Cam] | None" = None) -> None:
         super().__init__(parent)
         self._start = start_dir
+        self._cam = cam                 # the Cam tab's current cam, for the cam sheet
         self.setWindowTitle(self.tr("Export drawing sheet"))
         self.model, self.language, self._settings = model, language, settings
         self.written = ""
@@ -47,6 +53,8 @@ class DrawingSheetDialog(QDialog):
         self.content = QComboBox()
         self.content.addItem(self.tr("Motion analysis"), "motion")
         self.content.addItem(self.tr("Kinetostatic analysis"), "forces")
+        if cam is not None:
+            self.content.addItem(self.tr("Feed cam"), "cam")
         self.count = QSpinBox()
         self.count.setRange(1, MAX_POSITIONS)
         self.count.setValue(DEFAULT_COUNT)
@@ -108,10 +116,11 @@ class DrawingSheetDialog(QDialog):
 
     def choice(self) -> SheetChoice:
         text = {key: edit.text().strip() for key, edit in self.fields.items()}
-        return SheetChoice(self.content.currentData(), self.paper.currentText(), self.count.value(),
+        content = self.content.currentData()
+        return SheetChoice(content, self.paper.currentText(), self.count.value(),
                            (self.angles[0].value(), self.angles[1].value()), text["design"],
                            text["drawn"], text["date"] or datetime.date.today().isoformat(),
-                           text["school"])
+                           text["school"], self._cam() if content == "cam" and self._cam else None)
 
     def sheet(self) -> Sheet:
         masses = masses_for_design(self.model.design, self.model.masses)
@@ -187,8 +196,10 @@ class DrawingSheetDialog(QDialog):
 
 
 def export_sheet_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
-                        settings: QSettings | None = None) -> str:
-    """Show the dialog; returns the path written or ''."""
-    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir)
+                        settings: QSettings | None = None,
+                        cam: "Callable[[], Cam] | None" = None) -> str:
+    """Show the dialog (``cam`` gives the Cam tab's cam for the cam sheet); returns the path
+    written or ''."""
+    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir, cam)
     dialog.exec()
     return dialog.written
