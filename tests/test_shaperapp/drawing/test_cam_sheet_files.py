@@ -3,13 +3,12 @@ cam of ``shaper cam`` (options or the design file's cam) measured on it, bad inp
 import json
 import re
 import shutil
-import subprocess
-import unicodedata
 
 import ezdxf
 import pytest
 
 from cli_runner import shaper, shaper_in_process
+from sheet_checks import assert_pdf_sheet
 from core.cam import CamInputs, Program
 from core.cam.file import cam_to_dict
 from core.io import save_design
@@ -88,16 +87,8 @@ def test_cli_pdf_is_the_paper_and_chinese_embeds_a_cjk_font(tmp_path):
     out = tmp_path / "凸轮.pdf"
     result = shaper("drawing", *BLOCK, *CAM, "--content", "cam", "--sheet", "A2", "--lang", "zh", "-o", out)
     assert result.returncode == 0, result.stderr
-    info = subprocess.run(["pdfinfo", str(out)], capture_output=True, text=True).stdout
-    w, h = (float(v) * 25.4 / 72 for v in re.search(r"([\d.]+) x ([\d.]+) pts", info).groups())
-    assert abs(w - 594.0) < 0.5 and abs(h - 420.0) < 0.5
-    if shutil.which("pdffonts"):
-        fonts = subprocess.run(["pdffonts", str(out)], capture_output=True, text=True).stdout
-        rows = [line for line in fonts.splitlines()[2:] if line.strip()]
-        assert any("CJK" in r or "Hei" in r or "Han" in r for r in rows), fonts
-    if shutil.which("pdftotext"):
-        text = subprocess.run(["pdftotext", str(out), "-"], capture_output=True, text=True).stdout
-        text = unicodedata.normalize("NFKC", text)
+    text = assert_pdf_sheet(out, (594.0, 420.0))
+    if text:
         assert "进给凸轮" in text and "理论廓线基圆半径" in text
 
 
