@@ -59,8 +59,9 @@ ENGLISH = {
 }
 POINTS = 1440                 # a quarter degree of cam angle apart, as the cam's DXF
 CURVE_STEP_DEG = 0.5
-SECTOR_ROOM = 16.0            # paper mm round the cam for the sectors' angles and the arrow
+SECTOR_ROOM = (30.0, 10.0)    # paper mm beside and above/below the cam for the sectors' angles
 ENLARGEMENTS = (2.0, 2.5, 4.0, 5.0)     # GB/T 14690's enlargements up to 5:1 (10:1 is for details)
+SMALL_ROW = 6.0               # table rows on A2 and A3, mm (3.5 mm text still fits)
 PIVOT_MM = 1.5                # radius of the pivot's and the centre's circles on the paper
 
 
@@ -91,9 +92,10 @@ def cam_sheet(cam: Cam, rpm: float, paper: Paper, *, labels: Mapping[str, str] =
     rows = figure_rows(cam, rpm, lab)
     cells = [(lab["quantity"], lab["value"])] + rows
     table_w = min(split_x - bx0 - 2 * GAP, 200.0)
-    table_top = by0 + GAP + TABLE_ROW * len(cells)
+    row = TABLE_ROW if paper.height > 500.0 else SMALL_ROW      # A2, A3: the cam needs the room
+    table_top = by0 + GAP + row * len(cells)
     table_area = (bx0 + GAP, by0 + GAP, bx0 + GAP + table_w, table_top + 2 * CAPTION)
-    items = table((bx0 + GAP, table_top), (0.6 * table_w, 0.4 * table_w), cells, TABLE_ROW, 3.5,
+    items = table((bx0 + GAP, table_top), (0.6 * table_w, 0.4 * table_w), cells, row, 3.5,
                   aligns="lc")
     items.append(caption(lab["figures"], ((table_area[0] + table_area[2]) / 2.0, table_area[3]),
                          table_w, CAPTION))
@@ -140,8 +142,8 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
     a, r0 = f.distance_mm, cam.base_radius_mm
     bounds = (-reach, -reach, max(a, reach), reach)
     box = (area[0], area[1], area[2], area[3] - 3.2 * CAPTION)
-    room_w = box[2] - box[0] - 2 * SECTOR_ROOM
-    room_h = box[3] - box[1] - 2 * SECTOR_ROOM
+    room_w = box[2] - box[0] - 2 * SECTOR_ROOM[0]
+    room_h = box[3] - box[1] - 2 * SECTOR_ROOM[1]
     scale = max(standard_scale(bounds[2] - bounds[0], room_w), standard_scale(bounds[3] - bounds[1], room_h))
     if scale == 1.0:               # a small cam: the largest enlargement that fits
         fits = [k for k in ENLARGEMENTS if (bounds[2] - bounds[0]) * k <= room_w
@@ -183,7 +185,7 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
         text = lab[key].format(deg=number_text(round(float(span), 3)))
         at = o + (ray_out + 1.0) * u
         placed = place_label(text, (float(at[0]), float(at[1])), 3.5, taken, tuple(u), gap=0.5,
-                             within=box, optional=True)
+                             within=box, optional=True, rings=6)   # a short sector's a ring out
         items += [placed] if placed else []
     # the turning sense: a clockwise arc with its head, inside the base circle
     r_arrow = 0.45 * place.length(r0)

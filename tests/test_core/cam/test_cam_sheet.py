@@ -171,11 +171,11 @@ def test_chinese_labels_change_the_texts_only(cam):
     assert overlapping_texts(zh.sheet) == [] and outside_border(zh.sheet) == []
 
 
-@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(rise_law=st.sampled_from(LAWS), return_law=st.sampled_from(LAWS),
-       swing=st.floats(5.0, 30.0), rise=st.floats(40.0, 150.0), dwell=st.floats(0.0, 40.0),
-       back=st.floats(40.0, 150.0), arm=st.floats(50.0, 400.0), allowed=st.floats(30.0, 50.0),
-       size=st.sampled_from(["A1", "A2", "A3"]), rpm=st.floats(10.0, 120.0))
+       swing=st.floats(5.0, 30.0), rise=st.floats(40.0, 150.0),
+       dwell=st.one_of(st.just(0.0), st.floats(1.0, 40.0)), back=st.floats(40.0, 150.0),
+       arm=st.floats(50.0, 400.0), allowed=st.floats(30.0, 50.0), size=st.sampled_from(["A1", "A2", "A3"]), rpm=st.floats(10.0, 120.0))
 def test_any_cam_and_paper_are_laid_out(rise_law, return_law, swing, rise, dwell, back, arm, allowed,
                                         size, rpm):
     try:
@@ -186,3 +186,9 @@ def test_any_cam_and_paper_are_laid_out(rise_law, return_law, swing, rise, dwell
     assert_laid_out(drawn.sheet, drawn.areas)
     assert drawn.base_circle.radius * drawn.scale == pytest.approx(c.base_radius_mm, rel=1e-12)
     assert re.fullmatch(r"[\d.]+:[\d.]+", ratio_text(drawn.scale))
+    texts = [it.text for it in drawn.areas["profile"][1] if isinstance(it, Text)]
+    inner = 360.0 - rise - dwell - back
+    for key, span in (("rise_sector", rise), ("dwell_sector", dwell), ("return_sector", back),
+                      ("inner_sector", inner)):          # every sector with its angle, none left out
+        prefix = ENGLISH[key].split("{")[0]
+        assert sum(t.startswith(prefix) for t in texts) == (1 if span > 0 else 0), (key, texts)
