@@ -11,7 +11,8 @@ import datetime
 from dataclasses import replace
 from pathlib import Path
 
-from core.cli.cmd_cam import add_cam_options, add_phase_option, cam_from_inputs, cam_inputs_from_args
+from core.cli.cmd_cam import (OPTIONAL, SHEET, add_cam_options, add_phase_option, cam_from_inputs,
+                              cam_inputs_from_args)
 from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
 from core.cli.output import OutputError
 from core.drawing.motion import MAX_POSITIONS
@@ -73,6 +74,10 @@ def configure(parser: argparse.ArgumentParser) -> None:
     block.add_argument("--date", metavar="TEXT", help="the date (default: today, YYYY-MM-DD)")
 
 
+CAM_WORDS = tuple((option, dest) for option, dest, _ in SHEET + OPTIONAL) + (
+    ("--law", "law"), ("--return-law", "return_law"), ("--phase", "phase"))
+
+
 def sheet_suffix(path: str) -> str:
     """".pdf", ".svg" or ".dxf" from the name (any case); OutputError otherwise."""
     suffix = Path(path).suffix.lower()
@@ -104,6 +109,9 @@ def run(args: argparse.Namespace) -> int:
     if args.content == SCHEME:
         return write_scheme_file(spec.design(), args)
     choice = choice_from_args(args)
+    stray = [option for option, dest in CAM_WORDS if getattr(args, dest) is not None]
+    if stray and choice.content != "cam":
+        raise UsageError(f"{stray[0]}: a cam option, only with --content cam")
     if choice.content == "cam":
         idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
         choice = replace(choice, cam=cam_from_inputs(cam_inputs_from_args(args), spec.design(), idle))

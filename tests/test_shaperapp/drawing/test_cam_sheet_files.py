@@ -81,6 +81,16 @@ def test_bad_cam_input_one_line_naming_the_option_nothing_written(words, option,
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("word", ["--arm", "--law", "--phase"])
+def test_a_cam_option_without_the_cam_sheet_is_refused(word, tmp_path):
+    """A cam option with another content would be silently unused: one line naming it."""
+    value = {"--law": "sine"}.get(word, "100")
+    status, _, stderr = shaper_in_process("drawing", *BLOCK, word, value, "-o", tmp_path / "m.pdf")
+    assert status == 2 and stderr.strip().splitlines() == [
+        f"shaper: error: {word}: a cam option, only with --content cam"], stderr
+    assert list(tmp_path.iterdir()) == []
+
+
 @pytest.mark.slow
 @pytest.mark.skipif(shutil.which("pdfinfo") is None, reason="poppler-utils not installed")
 def test_cli_pdf_is_the_paper_and_chinese_embeds_a_cjk_font(tmp_path):
