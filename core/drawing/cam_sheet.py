@@ -59,7 +59,7 @@ ENGLISH = {
 }
 POINTS = 1440                 # a quarter degree of cam angle apart, as the cam's DXF
 CURVE_STEP_DEG = 0.5
-SECTOR_ROOM = (30.0, 10.0)    # paper mm beside and above/below the cam for the sectors' angles
+SECTOR_ROOM = (22.0, 10.0)    # paper mm beside and above/below the cam for the sectors' angles
 ENLARGEMENTS = (2.0, 2.5, 4.0, 5.0)     # GB/T 14690's enlargements up to 5:1 (10:1 is for details)
 SMALL_ROW = 6.0               # table rows on A2 and A3, mm (3.5 mm text still fits)
 PIVOT_MM = 1.5                # radius of the pivot's and the centre's circles on the paper
@@ -220,7 +220,13 @@ def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],
     p = pitch(cam.follower, cam.program, delta)
     w = rpm * 2.0 * math.pi / 60.0
     edges = _sector_edges(cam)
-    ticks = [(e, f"{e:g}") for e in dict.fromkeys(edges + [360.0])]
+    # a tick per phase edge, its number left out when nearer than 8 mm to the last one written
+    mm_per_deg = (x1 - x0 - 6.0 * 3.5 - 14.0) / 360.0
+    ticks, last = [], -math.inf
+    for e in dict.fromkeys(edges + [360.0]):
+        near = (e - last) * mm_per_deg < 8.0
+        ticks.append((e, "" if near else f"{e:g}"))
+        last = last if near else e
     series = (("psi", np.degrees(p.motion.psi)), ("omega", p.motion.psi1 * w),
               ("alpha", p.motion.psi2 * w * w), ("angle", np.degrees(pressure_angle(cam.follower, p))))
     prog, inputs = cam.program, cam.inputs

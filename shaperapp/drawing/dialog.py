@@ -97,6 +97,7 @@ class DrawingSheetDialog(QDialog):
         layout.addLayout(form)
         layout.addWidget(self.preview, 1)
         self._default_angles()
+        self.content.currentIndexChanged.connect(self._content_changed)
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(150)
@@ -113,6 +114,12 @@ class DrawingSheetDialog(QDialog):
                              count=self.count.value())
         for box, value in zip(self.angles, drawn.diagram_deg):
             box.setValue(value)
+
+    def _content_changed(self) -> None:
+        """The positions and the polygon angles are the linkage sheets' choices, not the cam's."""
+        linkage = self.content.currentData() != "cam"
+        for box in (self.count, *self.angles):
+            box.setEnabled(linkage)
 
     def choice(self) -> SheetChoice:
         text = {key: edit.text().strip() for key, edit in self.fields.items()}

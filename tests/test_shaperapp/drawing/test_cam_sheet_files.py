@@ -112,8 +112,10 @@ def test_dialog_offers_the_cam_sheet_of_the_cam_tab(model, qtbot, tmp_path):
     assert plain.content.findData("cam") == -1           # no cam to draw: not offered
     dialog = DrawingSheetDialog(model, "en", cam=lambda: cam)
     qtbot.addWidget(dialog)
+    assert dialog.count.isEnabled()
     dialog.content.setCurrentIndex(dialog.content.findData("cam"))
     assert dialog.choice().cam is cam
+    assert not dialog.count.isEnabled() and not any(box.isEnabled() for box in dialog.angles)
     dialog.paper.setCurrentText("A2")
     out = tmp_path / "cam.dxf"
     dialog.export(str(out))
