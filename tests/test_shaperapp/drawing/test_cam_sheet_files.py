@@ -135,3 +135,20 @@ def test_window_gives_the_dialog_the_cam_tabs_cam(window, qtbot, monkeypatch):
     window.cam.cam_model.set_fields(arm=140.0)
     window._export_sheet()
     assert seen["cam"] is window.cam.cam_model.cam and seen["cam"].follower.arm_mm == 140.0
+
+
+def test_the_three_sheets_are_numbered_one_to_three(qapp):
+    """The title blocks say 1/3, 2/3, 3/3: the course design's three sheets, in order."""
+    from core.cam import design_cam
+    from core.dynamics import MassProperties
+    from core.drawing.sheet import Text
+    from shaperapp.drawing.content import CONTENTS, SheetChoice, build_sheet
+    spec = Spec()
+    loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                           cut_force_N=7000.0, cut_height_mm=80.0)
+    cam = design_cam(CamInputs(), spec.design())
+    numbers = []
+    for content in CONTENTS:
+        sheet = build_sheet(spec, [40.0], loads, SheetChoice(content, "A3", cam=cam))
+        numbers.append([t.text for t in sheet.items if isinstance(t, Text) and re.fullmatch(r"\d/\d", t.text)])
+    assert CONTENTS == ("motion", "forces", "cam") and numbers == [["1/3"], ["2/3"], ["3/3"]]
