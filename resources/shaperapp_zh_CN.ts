@@ -1187,6 +1187,14 @@
         <translation>实际廓线基圆半径 r0 − r</translation>
     </message>
     <message>
+        <source>Pressure angle allowance</source>
+        <translation>压力角许用值</translation>
+    </message>
+    <message>
+        <source>EXCEEDED</source>
+        <translation>超过许用值</translation>
+    </message>
+    <message>
         <source>Follower ω_max / α_max</source>
         <translation>从动件 ω_max / α_max</translation>
     </message>

@@ -52,6 +52,7 @@ ENGLISH = {
     "above": "above", "below": "below",
     "max_pressure": "Max pressure angle rise / return", "rho": "Min convex radius ρmin",
     "roller": "Roller radius r", "profile_base": "Profile base radius r0 − r",
+    "allowance": "Pressure angle allowance", "exceeded": "EXCEEDED",
     "peaks": "Follower ω_max / α_max", "phase": "Rise starts at crank angle",
     "parabolic": "parabolic", "cosine": "cosine", "sine": "sine", "poly345": "3-4-5",
     "design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn", "date": "Date",
@@ -270,6 +271,8 @@ def figure_rows(cam: Cam, rpm: float, lab: Mapping[str, str]) -> list[tuple[str,
             (lab["profile_base"], mm(cam.base_radius_mm - cam.roller_mm)),
             (lab["peaks"], f"{peaks['follower_omega_max_rad_s']:.4g} rad/s / "
                               f"{peaks['follower_alpha_max_rad_s2']:.4g} rad/s²")]
+    if not cam.within_allowance:            # a checked cam (--base, --distance) may exceed it
+        rows.append((lab["allowance"], lab["exceeded"]))
     if cam.timing is not None:
         rows.append((lab["phase"], deg(cam.timing.phase_deg)))
     return rows

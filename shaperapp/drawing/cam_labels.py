@@ -52,6 +52,8 @@ def cam_labels() -> dict[str, str]:
         "rho": translate("Drawing", "Min convex radius ρmin"),
         "roller": translate("Drawing", "Roller radius r"),
         "profile_base": translate("Drawing", "Profile base radius r0 − r"),
+        "allowance": translate("Drawing", "Pressure angle allowance"),
+        "exceeded": translate("Drawing", "EXCEEDED"),
         "peaks": translate("Drawing", "Follower ω_max / α_max"),
         "phase": translate("Drawing", "Rise starts at crank angle"),
         "parabolic": translate("Drawing", "parabolic"),

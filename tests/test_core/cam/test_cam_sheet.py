@@ -192,3 +192,16 @@ def test_any_cam_and_paper_are_laid_out(rise_law, return_law, swing, rise, dwell
                       ("inner_sector", inner)):          # every sector with its angle, none left out
         prefix = ENGLISH[key].split("{")[0]
         assert sum(t.startswith(prefix) for t in texts) == (1 if span > 0 else 0), (key, texts)
+
+
+def test_a_checked_cam_beyond_the_allowance_says_so():
+    """A cam checked with a base radius below the synthesized one exceeds [α]: the table
+    says so, as shaper cam does; the synthesized cam's table does not."""
+    synthesized = design_cam(DATA_SHEET)
+    assert ENGLISH["allowance"] not in dict(cam_sheet(synthesized, 40.0, paper("A2")).rows)
+    small = design_cam(CamInputs(120.0, DATA_SHEET.program, base_mm=0.9 * synthesized.base_radius_mm,
+                                 distance_mm=synthesized.follower.distance_mm))
+    assert not small.within_allowance
+    drawn = cam_sheet(small, 40.0, paper("A2"))
+    assert dict(drawn.rows)[ENGLISH["allowance"]] == ENGLISH["exceeded"]
+    assert_laid_out(drawn.sheet, drawn.areas)
