@@ -1354,6 +1354,10 @@
         <translation>未安装含中文字形的字体：请安装一个（Debian/Ubuntu 上为 fonts-noto-cjk），或把语言切换为英文。</translation>
     </message>
     <message>
+        <source>The Cam tab has an error; the sheet shows its last valid cam.</source>
+        <translation>凸轮选项卡中有错误；图纸显示最后一个有效的凸轮。</translation>
+    </message>
+    <message>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>

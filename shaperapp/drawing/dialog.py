@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import datetime
 import os
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Protocol
 
 from PySide6.QtCore import QSettings, QSize, Qt, QTimer
 from PySide6.QtGui import QGuiApplication, QImage, QPainter, QPixmap
@@ -30,6 +30,18 @@ from .render import paint_sheet, write_sheet
 
 if TYPE_CHECKING:
     from core.cam import Cam
+    from core.errors import DesignError
+
+
+class CamSource(Protocol):
+    """Where the cam sheet's cam comes from: the Cam tab's model (its last valid cam, and
+    the error of what is typed now, if any)."""
+
+    @property
+    def cam(self) -> "Cam": ...
+
+    @property
+    def error(self) -> "DesignError | None": ...
 
 PREVIEW_WIDTH = 560            # px of the preview's longer side
 SETTINGS_KEYS = ("drawn", "school")
@@ -40,10 +52,10 @@ class DrawingSheetDialog(QDialog):
 
     def __init__(self, model: DesignModel, language: str = "en", parent: QWidget | None = None,
                  settings: QSettings | None = None, start_dir: str = "",
-                 cam: "Callable[[], Cam] | None" = None) -> None:
+                 cam: CamSource | None = None) -> None:
         super().__init__(parent)
         self._start = start_dir
-        self._cam = cam                 # the Cam tab's current cam, for the cam sheet
+        self._cam = cam                 # the Cam tab's model, for the cam sheet
         self.setWindowTitle(self.tr("Export drawing sheet"))
         self.model, self.language, self._settings = model, language, settings
         self.written = ""
@@ -127,7 +139,7 @@ class DrawingSheetDialog(QDialog):
         return SheetChoice(content, self.paper.currentText(), self.count.value(),
                            (self.angles[0].value(), self.angles[1].value()), text["design"],
                            text["drawn"], text["date"] or datetime.date.today().isoformat(),
-                           text["school"], self._cam() if content == "cam" and self._cam else None)
+                           text["school"], self._cam.cam if content == "cam" and self._cam else None)
 
     def sheet(self) -> Sheet:
         masses = masses_for_design(self.model.design, self.model.masses)
@@ -144,7 +156,7 @@ class DrawingSheetDialog(QDialog):
         painter.scale(px, px)
         try:
             paint_sheet(sheet, painter, self.language)
-            self.message.clear()
+            self.message.setText(self._cam_note())
         except MissingFontError:
             self.message.setText(self.tr("No font with Chinese characters is installed: install one "
                                          "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
@@ -153,6 +165,12 @@ class DrawingSheetDialog(QDialog):
         pixmap = QPixmap.fromImage(image)
         pixmap.setDevicePixelRatio(2.0)
         self.preview.setPixmap(pixmap)
+
+    def _cam_note(self) -> str:
+        """On the cam sheet while the Cam tab shows an error: which cam is drawn."""
+        if self.content.currentData() != "cam" or self._cam is None or self._cam.error is None:
+            return ""
+        return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
 
     def export(self, path: str) -> None:
         """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix). ValueError for another
@@ -204,8 +222,8 @@ class DrawingSheetDialog(QDialog):
 
 def export_sheet_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
                         settings: QSettings | None = None,
-                        cam: "Callable[[], Cam] | None" = None) -> str:
-    """Show the dialog (``cam`` gives the Cam tab's cam for the cam sheet); returns the path
+                        cam: CamSource | None = None) -> str:
+    """Show the dialog (``cam``: the Cam tab's model, for the cam sheet); returns the path
     written or ''."""
     dialog = DrawingSheetDialog(model, language, parent, settings, start_dir, cam)
     dialog.exec()

@@ -3,6 +3,7 @@ cam of ``shaper cam`` (options or the design file's cam) measured on it, bad inp
 import json
 import re
 import shutil
+from types import SimpleNamespace
 
 import ezdxf
 import pytest
@@ -11,6 +12,7 @@ from cli_runner import shaper, shaper_in_process
 from sheet_checks import assert_pdf_sheet
 from core.cam import CamInputs, Program
 from core.cam.file import cam_to_dict
+from core.errors import DesignError
 from core.io import save_design
 from core.spec import Spec
 from shaperapp.drawing.dialog import DrawingSheetDialog
@@ -110,7 +112,8 @@ def test_dialog_offers_the_cam_sheet_of_the_cam_tab(model, qtbot, tmp_path):
     plain = DrawingSheetDialog(model, "en")
     qtbot.addWidget(plain)
     assert plain.content.findData("cam") == -1           # no cam to draw: not offered
-    dialog = DrawingSheetDialog(model, "en", cam=lambda: cam)
+    source = SimpleNamespace(cam=cam, error=None)
+    dialog = DrawingSheetDialog(model, "en", cam=source)
     qtbot.addWidget(dialog)
     assert dialog.count.isEnabled()
     dialog.content.setCurrentIndex(dialog.content.findData("cam"))
@@ -122,6 +125,13 @@ def test_dialog_offers_the_cam_sheet_of_the_cam_tab(model, qtbot, tmp_path):
     mu, radii, texts = dxf_scale_and_base_circle(out)
     assert any(r * mu == pytest.approx(cam.base_radius_mm, rel=1e-9) for r in radii)
     assert "3/3" in texts and "150.000 mm" in texts
+    assert dialog.message.text() == ""
+    source.error = DesignError("swing", 100.0, "must be ≤ 60 °")        # typed wrong in the tab
+    dialog.update_preview()
+    assert "last valid cam" in dialog.message.text()
+    dialog.content.setCurrentIndex(dialog.content.findData("motion"))
+    dialog.update_preview()
+    assert dialog.message.text() == ""
 
 
 def test_window_gives_the_dialog_the_cam_tabs_cam(window, qtbot, monkeypatch):
@@ -129,7 +139,7 @@ def test_window_gives_the_dialog_the_cam_tabs_cam(window, qtbot, monkeypatch):
     seen = {}
 
     def fake(model, parent, language, start_dir, settings=None, cam=None):
-        seen["cam"] = cam()
+        seen["cam"] = cam.cam
         return ""
     monkeypatch.setattr(dialog_module, "export_sheet_dialog", fake)
     window.cam.cam_model.set_fields(arm=140.0)
