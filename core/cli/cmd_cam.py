@@ -55,9 +55,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out.add_argument("--dxf", metavar="FILE", help="write the profile at 1:1 in mm as DXF")
 
 
-def add_cam_options(parser: argparse.ArgumentParser) -> argparse._ArgumentGroup:
+def add_cam_options(parser: argparse.ArgumentParser,
+                    title: str = "the cam (the data sheet; required unless --design has a cam)"
+                    ) -> argparse._ArgumentGroup:
     """The data sheet's options (shared with ``shaper drawing --content cam``); the group."""
-    cam = parser.add_argument_group("the cam (the data sheet; required unless --design has a cam)")
+    cam = parser.add_argument_group(title)
     cam.add_argument("--arm", metavar="MM", help="follower arm length l, mm")
     cam.add_argument("--swing", metavar="DEG", help="the follower's swing ψmax, °")
     cam.add_argument("--pressure", metavar="DEG",

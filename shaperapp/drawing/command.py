@@ -58,7 +58,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help=f"what the sheet shows: {', '.join(CONTENTS)} (default motion); or "
                              f"{SCHEME}: the mechanism alone at 1:1 with its dimensions, as DXF")
     add_scheme_options(parser)
-    add_phase_option(add_cam_options(parser))
+    add_phase_option(add_cam_options(parser, "with --content cam: the cam, as shaper cam takes it "
+                                             "(required unless --design has a cam)"))
     parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
                         help="language of the sheet's texts: en, or zh (= zh_CN) (default en)")
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
