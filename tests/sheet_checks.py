@@ -18,3 +18,24 @@ def assert_laid_out(sheet, areas) -> None:
     for i, (a_name, (a, _)) in enumerate(named):
         for b_name, (b, _) in named[i + 1:]:
             assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]), (a_name, b_name)
+
+
+def assert_pdf_sheet(path, size_mm) -> str:
+    """A written sheet's PDF: its page is the paper (within 0.5 mm), a Chinese one embeds a
+    CJK font (when pdffonts is installed); returns its text, NFKC-normalized (the CJK font
+    maps some characters to radicals), or '' without pdftotext."""
+    import re
+    import shutil
+    import subprocess
+    import unicodedata
+    info = subprocess.run(["pdfinfo", str(path)], capture_output=True, text=True).stdout
+    w, h = (float(v) * 25.4 / 72 for v in re.search(r"([\d.]+) x ([\d.]+) pts", info).groups())
+    assert abs(w - size_mm[0]) < 0.5 and abs(h - size_mm[1]) < 0.5
+    if shutil.which("pdffonts"):
+        fonts = subprocess.run(["pdffonts", str(path)], capture_output=True, text=True).stdout
+        rows = [line for line in fonts.splitlines()[2:] if line.strip()]
+        assert any("CJK" in r or "Hei" in r or "Han" in r for r in rows), fonts
+    if shutil.which("pdftotext") is None:
+        return ""
+    text = subprocess.run(["pdftotext", str(path), "-"], capture_output=True, text=True).stdout
+    return unicodedata.normalize("NFKC", text)

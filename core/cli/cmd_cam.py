@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from ..cam import LAWS, CamInputs, Program, design_cam
+from ..cam import LAWS, Cam, CamInputs, Program, design_cam
 from ..cam.file import cam_from_dict, cam_to_dict
 from ..cam.table import cam_summary, cam_table, follower_peaks
 from ..errors import DesignError
@@ -40,7 +40,26 @@ DESIGN_DESTS = ("crank", "time_ratio", "stroke", "dims", "design", "guide", "rod
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
-    cam = parser.add_argument_group("the cam (the data sheet; required unless --design has a cam)")
+    add_cam_options(parser)
+    add_design_options(parser)
+    timing = parser.add_argument_group("timing against the linkage (with a design)")
+    timing.add_argument("--idle", metavar="FRACTION",
+                        help="uncut run-in and run-out as a fraction of the stroke (default 0.05)")
+    add_phase_option(timing)
+    out = parser.add_argument_group("output")
+    out.add_argument("--rpm", metavar="RPM", help="crank (and cam) speed for the follower's ω and α, "
+                     "r/min (default 60, or the design file's first)")
+    out.add_argument("--step", metavar="DEG", help="cam-angle step of the CSV, ° (default 1)")
+    out.add_argument("--json", action="store_true", help="print the figures as JSON")
+    out.add_argument("--csv", metavar="FILE|-", help="write one row per cam angle as CSV")
+    out.add_argument("--dxf", metavar="FILE", help="write the profile at 1:1 in mm as DXF")
+
+
+def add_cam_options(parser: argparse.ArgumentParser,
+                    title: str = "the cam (the data sheet; required unless --design has a cam)"
+                    ) -> argparse._ArgumentGroup:
+    """The data sheet's options (shared with ``shaper drawing --content cam``); the group."""
+    cam = parser.add_argument_group(title)
     cam.add_argument("--arm", metavar="MM", help="follower arm length l, mm")
     cam.add_argument("--swing", metavar="DEG", help="the follower's swing ψmax, °")
     cam.add_argument("--pressure", metavar="DEG",
@@ -58,19 +77,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
     cam.add_argument("--base", metavar="MM", help="base-circle radius of the pitch curve, mm, to check "
                      "a cam instead of synthesizing one (with --distance)")
     cam.add_argument("--distance", metavar="MM", help="centre distance cam–pivot, mm (with --base)")
-    add_design_options(parser)
-    timing = parser.add_argument_group("timing against the linkage (with a design)")
-    timing.add_argument("--idle", metavar="FRACTION",
-                        help="uncut run-in and run-out as a fraction of the stroke (default 0.05)")
-    timing.add_argument("--phase", metavar="DEG", help="crank angle at which the rise starts, ° "
-                        "(default: the feed centred outside the cut)")
-    out = parser.add_argument_group("output")
-    out.add_argument("--rpm", metavar="RPM", help="crank (and cam) speed for the follower's ω and α, "
-                     "r/min (default 60, or the design file's first)")
-    out.add_argument("--step", metavar="DEG", help="cam-angle step of the CSV, ° (default 1)")
-    out.add_argument("--json", action="store_true", help="print the figures as JSON")
-    out.add_argument("--csv", metavar="FILE|-", help="write one row per cam angle as CSV")
-    out.add_argument("--dxf", metavar="FILE", help="write the profile at 1:1 in mm as DXF")
+    return cam
+
+
+def add_phase_option(group) -> None:
+    group.add_argument("--phase", metavar="DEG", help="crank angle at which the rise starts, ° "
+                       "(default: the feed centred outside the cut)")
 
 
 # option → (its dest, the key of a design file's cam object)
@@ -106,6 +118,27 @@ def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
     return inputs, phase
 
 
+def cam_usage_error(exc: DesignError) -> UsageError:
+    """A cam's DesignError as the one line naming its option."""
+    return UsageError(design_error_text(exc, CAM_OPTIONS.get(exc.parameter)))
+
+
+def cam_inputs_from_args(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
+    """The cam's inputs and phase from the options and ``--design`` (UsageError naming one)."""
+    try:
+        return _inputs(args)
+    except DesignError as exc:
+        raise cam_usage_error(exc) from None
+
+
+def cam_from_inputs(given: tuple[CamInputs, float | None], design, idle: float) -> Cam:
+    """The cam synthesized (or checked) and timed against ``design`` (UsageError naming the option)."""
+    try:
+        return design_cam(given[0], design, idle, given[1])
+    except DesignError as exc:
+        raise cam_usage_error(exc) from None
+
+
 def _rpm(args: argparse.Namespace) -> float:
     if args.rpm is not None:
         value = number("rpm", args.rpm)
@@ -136,15 +169,15 @@ def run(args: argparse.Namespace) -> int:
     if args.phase is not None and not linked:
         raise UsageError("--phase: give a design (--crank/--K/--stroke, --dims or --design) to time the cam")
     design = design_from_args(args) if linked else None
+    cam_inputs = cam_inputs_from_args(args)
     try:
-        inputs, phase = _inputs(args)
         rpm = _rpm(args)
         step = 1.0 if args.step is None else number("step", args.step)
         angles = crank_angles(step)
         idle = _idle(args) if linked else 0.05
-        cam = design_cam(inputs, design, idle, phase)
     except DesignError as exc:
-        raise UsageError(design_error_text(exc, CAM_OPTIONS.get(exc.parameter))) from None
+        raise cam_usage_error(exc) from None
+    cam = cam_from_inputs(cam_inputs, design, idle)
     if args.csv is not None:
         write_output("--csv", args.csv, table_csv(*cam_table(cam, angles, rpm)))
     if args.dxf is not None:

@@ -147,17 +147,21 @@ class Chart:
 
 def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_title: str,
           x_ticks: Sequence[tuple[float, str]] = (), height: float = 3.5,
-          mean: float | None = None) -> Chart:
+          mean: float | None = None,
+          levels: Sequence[tuple[float, float, float]] = ()) -> Chart:
     """Curves over ``x`` in ``box`` with a horizontal x axis through y = 0, a y axis at x[0],
     arrows on both, ticks at ``x_ticks`` (value, label) and a few round y ticks; ``mean`` a
-    thin dashed horizontal line (e.g. the mean torque). Scales from the round series; the
+    thin dashed horizontal line (e.g. the mean torque); ``levels`` (x from, x to, y) thin
+    dashed segments over part of the span (e.g. an allowance over one phase), inside the
+    y range like the curves. Scales from the round series; the
     x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
     labels."""
     x0, y0, x1, y1 = box
     left = x0 + 6.0 * height
     span_x = float(x[-1] - x[0])
     x_scale = nice_scale(span_x, x1 - left - 14.0, X_MANTISSAS)
-    ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves] + [[0.0]])
+    ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves]
+                        + [[0.0], [lv[2] for lv in levels]])
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
     room = (y1 - y0) - 3.0 * height - 6.0
     y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS)
@@ -192,6 +196,10 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     if mean is not None:
         py = zero + mean / y_scale
         items.append(line([(left, py), (left + span_x / x_scale, py)], DASHED))
+    for start, end, value in levels:
+        py = zero + value / y_scale
+        items.append(line([(left + (start - x[0]) / x_scale, py), (left + (end - x[0]) / x_scale, py)],
+                          DASHED))
     items.append(Text(y_title, (left + 1.5, y_hi), height, "lt"))
     items.append(Text(x_title, (x_end, zero + 1.5), height, "rb"))
     return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi)

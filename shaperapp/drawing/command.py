@@ -8,12 +8,16 @@ from __future__ import annotations
 
 import argparse
 import datetime
+from dataclasses import replace
 from pathlib import Path
 
+from core.cli.cmd_cam import (OPTIONAL, SHEET, add_cam_options, add_phase_option, cam_from_inputs,
+                              cam_inputs_from_args)
 from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
 from core.cli.output import OutputError
 from core.drawing.motion import MAX_POSITIONS
 from core.drawing.sheet import PAPERS
+from core.dynamics import MassProperties
 from core.errors import DesignError
 from core.positions import DEFAULT_COUNT, check_count
 
@@ -29,11 +33,17 @@ DESCRIPTION = ("The drawing sheets of the course design (图纸): paper after GB
                "standard scale at the N positions (thin) and both limit positions (thick) with "
                "the tool's path, the ram's s, v, a over φ at the first speed, the velocity and "
                "acceleration polygons at two positions, each with its scale μ, and the main "
-               "dimensions. The file type follows the name: .pdf, .svg or .dxf (mm, layers by "
+               "dimensions. --content forces: the loads and joint forces, the force polygons, the "
+               "crank torque, the energy curve and the flywheel. --content cam: the feed cam (the "
+               "options of shaper cam, or the --design file's cam) drawn by inversion to a standard "
+               "scale, the follower's ψ, ω, α and the pressure angle over the cam angle, and its "
+               "figures. The file type follows the name: .pdf, .svg or .dxf (mm, layers by "
                "line type). Chinese sheets need a font with Chinese glyphs (fonts-noto-cjk).")
 EXAMPLES = ("shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --sheet A1 "
             "--content motion -o motion.pdf",
-            "shaper drawing --design my.shaper.json --lang zh --diagrams 60,240 -o 运动分析.dxf")
+            "shaper drawing --design my.shaper.json --lang zh --diagrams 60,240 -o 运动分析.dxf",
+            "shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --content cam --arm 120 "
+            "--swing 15 --pressure 40 --rise 60 --dwell 10 --return 60 -o cam.pdf")
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -48,6 +58,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help=f"what the sheet shows: {', '.join(CONTENTS)} (default motion); or "
                              f"{SCHEME}: the mechanism alone at 1:1 with its dimensions, as DXF")
     add_scheme_options(parser)
+    add_phase_option(add_cam_options(parser, "with --content cam: the cam, as shaper cam takes it "
+                                             "(required unless --design has a cam)"))
     parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
                         help="language of the sheet's texts: en, or zh (= zh_CN) (default en)")
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
@@ -61,6 +73,10 @@ def configure(parser: argparse.ArgumentParser) -> None:
     block.add_argument("--drawn-by", metavar="TEXT", help="who drew it")
     block.add_argument("--school", metavar="TEXT", help="school or department")
     block.add_argument("--date", metavar="TEXT", help="the date (default: today, YYYY-MM-DD)")
+
+
+CAM_WORDS = tuple((option, dest) for option, dest, _ in SHEET + OPTIONAL) + (
+    ("--law", "law"), ("--return-law", "return_law"), ("--phase", "phase"))
 
 
 def sheet_suffix(path: str) -> str:
@@ -94,6 +110,12 @@ def run(args: argparse.Namespace) -> int:
     if args.content == SCHEME:
         return write_scheme_file(spec.design(), args)
     choice = choice_from_args(args)
+    stray = [option for option, dest in CAM_WORDS if getattr(args, dest) is not None]
+    if stray and choice.content != "cam":
+        raise UsageError(f"{stray[0]}: a cam option, only with --content cam")
+    if choice.content == "cam":
+        idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
+        choice = replace(choice, cam=cam_from_inputs(cam_inputs_from_args(args), spec.design(), idle))
     suffix = sheet_suffix(args.output)
     target = Path(args.output)
     check_output_folder(args.output)

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable, Sequence
+from typing import TYPE_CHECKING, Callable, Sequence
 
 from core.drawing.motion import motion_sheet
 from core.drawing.sheet import Sheet, TitleBlock, paper
@@ -13,8 +13,11 @@ from shaperapp.widgets.command_line import inputs_name
 
 from .labels import motion_labels
 
-CONTENTS = ("motion", "forces")
-SHEET_NUMBER = {"motion": "1/2", "forces": "2/2"}     # the course design's two sheets
+if TYPE_CHECKING:
+    from core.cam import Cam
+
+CONTENTS = ("motion", "forces", "cam")
+SHEET_NUMBER = {"motion": "1/3", "forces": "2/3", "cam": "3/3"}    # the course design's sheets
 SHEET_SUFFIXES = (".pdf", ".svg", ".dxf")
 
 
@@ -32,6 +35,7 @@ class SheetChoice:
     drawn: str = ""
     date: str = ""
     school: str = ""
+    cam: "Cam | None" = None        # the cam sheet's cam (the Cam tab's, or the options')
 
 
 def build_sheet(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
@@ -77,8 +81,23 @@ def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
                         diagram_deg=choice.diagram_deg, labels=labels, block=block).sheet
 
 
+def cam(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
+        choice: SheetChoice) -> Sheet:
+    """The feed cam's sheet at the first speed (the cam turns with the crank);
+    ContentUnavailable without a cam in the choice."""
+    from core.drawing.cam_sheet import cam_sheet
+    from .cam_labels import cam_labels
+    if choice.cam is None:
+        raise ContentUnavailable("the cam sheet needs a cam")
+    labels = cam_labels()
+    block = TitleBlock(labels["title"], choice.design_name or inputs_name(spec), "",
+                       SHEET_NUMBER[choice.content], choice.drawn, choice.date, choice.school)
+    return cam_sheet(choice.cam, float(rpms[0]), paper(choice.paper), labels=labels, block=block).sheet
+
+
 # content → its builder (spec, speeds, loads or None, choice) → Sheet; the forces sheet joins here
 BUILDERS: dict[str, Callable[[Spec, Sequence[float], MassProperties | None, SheetChoice], Sheet]] = {
     "motion": motion,
     "forces": forces,
+    "cam": cam,
 }

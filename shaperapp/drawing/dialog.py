@@ -2,12 +2,13 @@
 with a preview of the sheet as it will be written; then PDF, SVG or DXF.
 
 The sheet is built from the model's design on screen, its first speed and its
-loads, in the UI's language, by the same code as ``shaper drawing``.
+loads (the cam sheet from the Cam tab's last valid cam), in the UI's language, by the same code as ``shaper drawing``.
 """
 from __future__ import annotations
 
 import datetime
 import os
+from typing import TYPE_CHECKING, Protocol
 
 from PySide6.QtCore import QSettings, QSize, Qt, QTimer
 from PySide6.QtGui import QGuiApplication, QImage, QPainter, QPixmap
@@ -27,6 +28,21 @@ from shaperapp.widgets.fonts import MissingFontError
 from .content import SHEET_SUFFIXES, SheetChoice, build_sheet
 from .render import paint_sheet, write_sheet
 
+if TYPE_CHECKING:
+    from core.cam import Cam
+    from core.errors import DesignError
+
+
+class CamSource(Protocol):
+    """Where the cam sheet's cam comes from: the Cam tab's model (its last valid cam, and
+    the error of what is typed now, if any)."""
+
+    @property
+    def cam(self) -> "Cam": ...
+
+    @property
+    def error(self) -> "DesignError | None": ...
+
 PREVIEW_WIDTH = 560            # px of the preview's longer side
 SETTINGS_KEYS = ("drawn", "school")
 
@@ -35,9 +51,11 @@ class DrawingSheetDialog(QDialog):
     """The choices on the left, the sheet's preview on the right; Save… writes the file."""
 
     def __init__(self, model: DesignModel, language: str = "en", parent: QWidget | None = None,
-                 settings: QSettings | None = None, start_dir: str = "") -> None:
+                 settings: QSettings | None = None, start_dir: str = "",
+                 cam: CamSource | None = None) -> None:
         super().__init__(parent)
         self._start = start_dir
+        self._cam = cam                 # the Cam tab's model, for the cam sheet
         self.setWindowTitle(self.tr("Export drawing sheet"))
         self.model, self.language, self._settings = model, language, settings
         self.written = ""
@@ -47,6 +65,8 @@ class DrawingSheetDialog(QDialog):
         self.content = QComboBox()
         self.content.addItem(self.tr("Motion analysis"), "motion")
         self.content.addItem(self.tr("Kinetostatic analysis"), "forces")
+        if cam is not None:
+            self.content.addItem(self.tr("Feed cam"), "cam")
         self.count = QSpinBox()
         self.count.setRange(1, MAX_POSITIONS)
         self.count.setValue(DEFAULT_COUNT)
@@ -89,6 +109,7 @@ class DrawingSheetDialog(QDialog):
         layout.addLayout(form)
         layout.addWidget(self.preview, 1)
         self._default_angles()
+        self.content.currentIndexChanged.connect(self._content_changed)
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(150)
@@ -106,12 +127,19 @@ class DrawingSheetDialog(QDialog):
         for box, value in zip(self.angles, drawn.diagram_deg):
             box.setValue(value)
 
+    def _content_changed(self) -> None:
+        """The positions and the polygon angles are the linkage sheets' choices, not the cam's."""
+        linkage = self.content.currentData() != "cam"
+        for box in (self.count, *self.angles):
+            box.setEnabled(linkage)
+
     def choice(self) -> SheetChoice:
         text = {key: edit.text().strip() for key, edit in self.fields.items()}
-        return SheetChoice(self.content.currentData(), self.paper.currentText(), self.count.value(),
+        content = self.content.currentData()
+        return SheetChoice(content, self.paper.currentText(), self.count.value(),
                            (self.angles[0].value(), self.angles[1].value()), text["design"],
                            text["drawn"], text["date"] or datetime.date.today().isoformat(),
-                           text["school"])
+                           text["school"], self._cam.cam if content == "cam" and self._cam else None)
 
     def sheet(self) -> Sheet:
         masses = masses_for_design(self.model.design, self.model.masses)
@@ -128,7 +156,7 @@ class DrawingSheetDialog(QDialog):
         painter.scale(px, px)
         try:
             paint_sheet(sheet, painter, self.language)
-            self.message.clear()
+            self.message.setText(self._cam_note())
         except MissingFontError:
             self.message.setText(self.tr("No font with Chinese characters is installed: install one "
                                          "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
@@ -137,6 +165,12 @@ class DrawingSheetDialog(QDialog):
         pixmap = QPixmap.fromImage(image)
         pixmap.setDevicePixelRatio(2.0)
         self.preview.setPixmap(pixmap)
+
+    def _cam_note(self) -> str:
+        """On the cam sheet while the Cam tab shows an error: which cam is drawn."""
+        if self.content.currentData() != "cam" or self._cam is None or self._cam.error is None:
+            return ""
+        return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
 
     def export(self, path: str) -> None:
         """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix). ValueError for another
@@ -187,8 +221,10 @@ class DrawingSheetDialog(QDialog):
 
 
 def export_sheet_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
-                        settings: QSettings | None = None) -> str:
-    """Show the dialog; returns the path written or ''."""
-    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir)
+                        settings: QSettings | None = None,
+                        cam: CamSource | None = None) -> str:
+    """Show the dialog (``cam``: the Cam tab's model, for the cam sheet); returns the path
+    written or ''."""
+    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir, cam)
     dialog.exec()
     return dialog.written

@@ -373,7 +373,7 @@ class MainWindow(QMainWindow):
             return
         from shaperapp.drawing.dialog import export_sheet_dialog   # load on demand
         path = export_sheet_dialog(self.model, self, self._language, self.document.last_dir(),
-                                   self.settings)
+                                   self.settings, cam=self.cam.cam_model)
         if path:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 

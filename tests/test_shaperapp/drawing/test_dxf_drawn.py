@@ -33,6 +33,8 @@ from core.dynamics import MassProperties
 from core.geometry import synthesize
 from core.kinematics import shape
 from core.drawing.forces import forces_sheet
+from core.cam import CamInputs, Program, design_cam
+from core.drawing.cam_sheet import cam_sheet
 from core.drawing.dxf import save_dxf
 from shaperapp.drawing.render import svg_bytes
 
@@ -104,6 +106,8 @@ def _sheets():
         "motion rod A2": motion_sheet(ROD, 60.0, paper("A2"), count=16),
         "forces block A3": forces_sheet(BLOCK, 40.0, LOADS, paper("A3")),
         "forces rod A2": forces_sheet(ROD, 60.0, LOADS, paper("A2")),
+        "cam A2": cam_sheet(design_cam(CamInputs(120.0, Program(15.0, 60.0, 10.0, 60.0)), BLOCK), 40.0,
+                            paper("A2")),
     }
 
 

@@ -1,0 +1,278 @@
+"""The feed cam's sheet (凸轮机构设计图), the course design's third, on a GB paper.
+
+Upper left the cam to a standard scale in its own frame, as the graphical inversion method
+draws it: the actual profile thick, the pitch curve thin dash-dot, the base circle thin, the
+follower arm and roller at cam angle 0 (the start of the rise) with the pivot, the line of
+centres, the turning sense, and the rise, outer-dwell, return and inner-dwell sectors marked
+with their angles (measured against the cam's turning, as the inverted follower moves);
+lower left the inputs and the synthesized figures; on the right the follower's ψ, ω and α
+and the pressure angle with its allowances over the cam angle δ, each to a stated scale μ.
+Every number comes from :mod:`core.cam` at the first crank speed (the cam turns with the
+crank).
+
+Texts are looked up in ``labels`` (keys of :data:`ENGLISH`), so the caller chooses the
+language; numbers are formatted here.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping
+
+import numpy as np
+
+from core.cam import Cam
+from core.cam.follower import pitch, pressure_angle, profile
+from core.cam.table import follower_peaks
+
+from .charts import Curve, arrow, chart, place_label
+from .dxf import CENTER, OUTLINE, THIN
+from .motion import CAPTION, GAP, TABLE_ROW, caption
+from .sheet import (TITLE_LABEL_KEYS, Box, Circle, Item, Paper, Placement, Sheet, Text, TitleBlock,
+                    fit, frame_items, line, number_text, scale_text, standard_scale, table,
+                    title_block, title_block_box)
+
+ENGLISH = {
+    "title": "Feed cam",
+    "profile": "Cam profile by inversion, μl = {mu} m/mm ({scale})",
+    "profile_note": "Actual profile thick, pitch curve dash-dot, the follower at δ = 0; the cam turns clockwise",
+    "curves": "Follower angle, angular velocity and acceleration over the cam angle, n = {rpm} r/min",
+    "pressure": "Pressure angle over the cam angle, allowances [α] dashed",
+    "psi": "ψ/(°)", "omega": "ω/(rad/s)", "alpha": "α/(rad/s²)", "angle": "α/(°)", "delta": "δ/(°)",
+    "mu_psi": "μψ = {mu} °/mm", "mu_omega": "μω = {mu} (rad/s)/mm", "mu_alpha": "μα = {mu} (rad/s²)/mm",
+    "mu_angle": "μα = {mu} °/mm", "mu_delta": "μδ = {mu} °/mm",
+    "rise_sector": "δ0 = {deg}°", "dwell_sector": "δs = {deg}°", "return_sector": "δ0′ = {deg}°",
+    "inner_sector": "δs′ = {deg}°",
+    "figures": "Cam data and results", "quantity": "Quantity", "value": "Value",
+    "arm": "Follower arm l", "swing": "Swing ψmax", "rise": "Rise δ0, law",
+    "dwell": "Outer dwell δs", "return": "Return δ0′, law", "inner": "Inner dwell δs′",
+    "allowed": "Allowed pressure angle rise / return", "n": "Cam speed n",
+    "base": "Base radius r0 (pitch curve)", "distance": "Centre distance a",
+    "initial": "Initial arm angle ψ0", "side": "Roller side of the line of centres",
+    "above": "above", "below": "below",
+    "max_pressure": "Max pressure angle rise / return", "rho": "Min convex radius ρmin",
+    "roller": "Roller radius r", "profile_base": "Profile base radius r0 − r",
+    "allowance": "Pressure angle allowance", "exceeded": "EXCEEDED",
+    "peaks": "Follower ω_max / α_max", "phase": "Rise starts at crank angle",
+    "parabolic": "parabolic", "cosine": "cosine", "sine": "sine", "poly345": "3-4-5",
+    "design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn", "date": "Date",
+    "checked": "Checked", "approved": "Approved",
+}
+POINTS = 1440                 # a quarter degree of cam angle apart, as the cam's DXF
+CURVE_STEP_DEG = 0.5
+SECTOR_ROOM = (22.0, 10.0)    # paper mm beside and above/below the cam for the sectors' angles
+ENLARGEMENTS = (2.0, 2.5, 4.0, 5.0)     # GB/T 14690's enlargements up to 5:1 (10:1 is for details)
+SMALL_ROW = 6.0               # table rows on A2 and A3, mm (3.5 mm text still fits)
+PIVOT_MM = 1.5                # radius of the pivot's and the centre's circles on the paper
+
+
+@dataclass(frozen=True)
+class CamSheet:
+    """The sheet and what the tests measure on it."""
+
+    sheet: Sheet
+    scale: float                      # cam mm per paper mm: 1:scale (< 1 an enlargement)
+    placement: Placement              # cam-frame mm → paper mm
+    base_circle: Circle               # as drawn
+    pivot: tuple[float, float]        # the follower pivot A on the paper
+    centre: tuple[float, float]       # the cam centre O on the paper
+    charts: dict[str, tuple[float, float, tuple[float, float]]]
+    """ψ, ω, α, pressure: (μy, μδ, paper origin)."""
+    rows: list[tuple[str, str]]
+    areas: dict[str, tuple[Box, tuple[Item, ...]]]
+
+
+def cam_sheet(cam: Cam, rpm: float, paper: Paper, *, labels: Mapping[str, str] = ENGLISH,
+              block: TitleBlock | None = None) -> CamSheet:
+    """The sheet of ``cam`` turning at ``rpm`` (the crank's speed) on ``paper``."""
+    lab = {**ENGLISH, **labels}
+    bx0, by0, bx1, by1 = paper.border
+    split_x = bx0 + 0.5 * (bx1 - bx0)
+    areas: dict[str, tuple[Box, tuple[Item, ...]]] = {}
+
+    rows = figure_rows(cam, rpm, lab)
+    cells = [(lab["quantity"], lab["value"])] + rows
+    table_w = min(split_x - bx0 - 2 * GAP, 200.0)
+    row = TABLE_ROW if paper.height > 500.0 else SMALL_ROW      # A2, A3: the cam needs the room
+    table_top = by0 + GAP + row * len(cells)
+    table_area = (bx0 + GAP, by0 + GAP, bx0 + GAP + table_w, table_top + 2 * CAPTION)
+    items = table((bx0 + GAP, table_top), (0.6 * table_w, 0.4 * table_w), cells, row, 3.5,
+                  aligns="lc")
+    items.append(caption(lab["figures"], ((table_area[0] + table_area[2]) / 2.0, table_area[3]),
+                         table_w, CAPTION))
+    areas["figures"] = (table_area, tuple(items))
+
+    profile_area = (bx0 + GAP, table_area[3] + GAP, split_x - GAP, by1 - GAP)
+    scale, place, items = _profile(cam, profile_area, lab)
+    areas["profile"] = (profile_area, tuple(items))
+
+    charts: dict[str, tuple[float, float, tuple[float, float]]] = {}
+    curves_area = (split_x + GAP, title_block_box(paper)[3] + GAP, bx1 - GAP, by1 - GAP)
+    items = _curves(cam, rpm, curves_area, lab, charts)
+    areas["curves"] = (curves_area, tuple(items))
+
+    block = block or TitleBlock(lab["title"], "", "", "1/1")
+    block = TitleBlock(block.title or lab["title"], block.design, ratio_text(scale), block.sheet,
+                       block.drawn, block.date, block.school, {k: lab[k] for k in TITLE_LABEL_KEYS})
+    areas["title"] = (title_block_box(paper), tuple(title_block(paper, block)))
+    everything = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
+    base = next(it for it in areas["profile"][1] if isinstance(it, Circle) and it.layer == THIN)
+    f = cam.follower
+    return CamSheet(Sheet(paper, tuple(everything)), scale, place, base,
+                    tuple(place([f.distance_mm, 0.0])), tuple(place([0.0, 0.0])), charts, rows, areas)
+
+
+def ratio_text(scale: float) -> str:
+    """The scale as GB/T 14690 writes it: 1:2.5 for a reduction, 2:1 for an enlargement."""
+    return scale_text(scale) if scale >= 1.0 else f"{number_text(round(1.0 / scale, 6))}:1"
+
+
+def _sector_edges(cam: Cam) -> list[float]:
+    """Cam angles (°) where the phases meet: 0, rise, + outer dwell, + return."""
+    p = cam.program
+    return [0.0, p.rise_deg, p.rise_deg + p.dwell_deg, p.feed_deg]
+
+
+def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placement, list[Item]]:
+    """The cam drawn by inversion in ``area``: the largest standard scale that fits."""
+    f = cam.follower
+    delta = np.linspace(0.0, 2.0 * math.pi, POINTS, endpoint=False)
+    p = pitch(f, cam.program, delta)
+    actual = profile(p, cam.roller_mm)
+    reach = float(np.hypot(*p.point).max()) + cam.roller_mm        # the roller's outer side
+    a, r0 = f.distance_mm, cam.base_radius_mm
+    bounds = (-reach, -reach, max(a, reach), reach)
+    box = (area[0], area[1], area[2], area[3] - 3.2 * CAPTION)
+    room_w = box[2] - box[0] - 2 * SECTOR_ROOM[0]
+    room_h = box[3] - box[1] - 2 * SECTOR_ROOM[1]
+    scale = max(standard_scale(bounds[2] - bounds[0], room_w), standard_scale(bounds[3] - bounds[1], room_h))
+    if scale == 1.0:               # a small cam: the largest enlargement that fits
+        fits = [k for k in ENLARGEMENTS if (bounds[2] - bounds[0]) * k <= room_w
+                and (bounds[3] - bounds[1]) * k <= room_h]
+        scale = 1.0 / max(fits, default=1.0)
+    place = fit(bounds, box, scale)
+    o, pivot, b0 = place([0.0, 0.0]), place([a, 0.0]), place(p.point[:, 0])
+    outer = place.length(reach)
+    items: list[Item] = [line(place(actual.T), OUTLINE, closed=True),
+                         line(place(p.point.T), CENTER, closed=True),
+                         Circle(tuple(o), place.length(r0), THIN)]
+    # the line of centres through O and A, the other centre line across O
+    items.append(line([o - (outer + 4.0, 0.0), pivot + (6.0, 0.0)], CENTER))
+    items.append(line([o - (0.0, outer + 4.0), o + (0.0, outer + 4.0)], CENTER))
+    # the follower at δ = 0: the roller, the arm from the pivot, the pivot on its support
+    items.append(Circle(tuple(b0), place.length(cam.roller_mm), OUTLINE))
+    items.append(line([pivot, b0], OUTLINE))
+    for centre in (pivot, o):
+        items.append(Circle(tuple(centre), PIVOT_MM, OUTLINE))
+    foot = pivot - (0.0, PIVOT_MM)
+    items.append(line([foot, foot + (-3.0, -5.0), foot + (3.0, -5.0)], THIN, closed=True))
+    items.append(line([foot + (-5.0, -5.0), foot + (5.0, -5.0)], OUTLINE))
+    # the sectors: rays at the phase edges, measured counter-clockwise (against the cam's turn)
+    edges = _sector_edges(cam)
+    ray_out = outer + 4.0
+    names = ("rise_sector", "dwell_sector", "return_sector", "inner_sector")
+    spans = np.diff(edges + [360.0])
+    taken: list[Box] = []
+    for edge in edges:
+        u = np.array([math.cos(math.radians(edge)), math.sin(math.radians(edge))])
+        items.append(line([o, o + ray_out * u], THIN))
+    for start, span, key in zip(edges, spans, names):
+        if span <= 0.0:
+            continue
+        mid = math.radians(start + span / 2.0)
+        u = np.array([math.cos(mid), math.sin(mid)])
+        arc = np.radians(np.linspace(start, start + span, max(int(span), 2)))
+        items.append(line(o + (ray_out - 2.0) * np.column_stack([np.cos(arc), np.sin(arc)]), THIN))
+        text = lab[key].format(deg=number_text(round(float(span), 3)))
+        at = o + (ray_out + 1.0) * u
+        placed = place_label(text, (float(at[0]), float(at[1])), 3.5, taken, tuple(u), gap=0.5,
+                             within=box, optional=True, rings=6)   # a short sector's a ring out
+        items += [placed] if placed else []
+    # the turning sense: a clockwise arc with its head, inside the base circle
+    r_arrow = 0.45 * place.length(r0)
+    arc = np.radians(np.linspace(150.0, 60.0, 24))
+    pts = o + r_arrow * np.column_stack([np.cos(arc), np.sin(arc)])
+    items.append(line(pts[:-3], THIN))
+    items += arrow(pts[-4], pts[-1], THIN)
+    for text, at, away in (("O", o, (-1.0, -1.0)), ("A", pivot, (1.0, 1.0)),
+                           ("B₀", b0, tuple(b0 - pivot)), ("ω", pts[len(pts) // 2], (1.0, 1.0))):
+        placed = place_label(text, (float(at[0]), float(at[1])), 3.5, taken, away, gap=PIVOT_MM + 0.5,
+                             within=box, optional=True)
+        items += [placed] if placed else []
+    middle = (area[0] + area[2]) / 2.0
+    width = area[2] - area[0]
+    items.append(caption(lab["profile"].format(mu=number_text(scale / 1000.0), scale=ratio_text(scale)),
+                         (middle, area[3]), width))
+    items.append(caption(lab["profile_note"], (middle, area[3] - 1.8 * CAPTION), width, 3.5))
+    return scale, place, items
+
+
+def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],
+            charts: dict[str, tuple[float, float, tuple[float, float]]]) -> list[Item]:
+    """ψ, ω and α over δ in three panels on one δ scale, then the pressure angle with the
+    allowances over the rise and the return."""
+    x0, y0, x1, y1 = box
+    items: list[Item] = [caption(lab["curves"].format(rpm=number_text(rpm)), ((x0 + x1) / 2.0, y1),
+                                 x1 - x0, 3.5)]
+    top = y1 - 2 * CAPTION
+    panel = (top - y0) / 4.0
+    deg = np.arange(0.0, 360.0 + CURVE_STEP_DEG / 2.0, CURVE_STEP_DEG)
+    delta = np.radians(deg)
+    p = pitch(cam.follower, cam.program, delta)
+    w = rpm * 2.0 * math.pi / 60.0
+    edges = _sector_edges(cam)
+    # a tick per phase edge, its number left out when nearer than 8 mm to the last one written
+    mm_per_deg = (x1 - x0 - 6.0 * 3.5 - 14.0) / 360.0
+    ticks, last = [], -math.inf
+    for e in dict.fromkeys(edges + [360.0]):
+        near = (e - last) * mm_per_deg < 8.0
+        ticks.append((e, "" if near else f"{e:g}"))
+        last = last if near else e
+    series = (("psi", np.degrees(p.motion.psi)), ("omega", p.motion.psi1 * w),
+              ("alpha", p.motion.psi2 * w * w), ("angle", np.degrees(pressure_angle(cam.follower, p))))
+    prog, inputs = cam.program, cam.inputs
+    for k, (key, y) in enumerate(series):
+        pbox = (x0, top - (k + 1) * panel, x1, top - k * panel)
+        levels = ()
+        if key == "angle":
+            items.append(caption(lab["pressure"], ((x0 + x1) / 2.0, pbox[3] - 1.0), x1 - x0, 3.5))
+            pbox = (pbox[0], pbox[1], pbox[2], pbox[3] - 2 * CAPTION)
+            levels = ((0.0, prog.rise_deg, inputs.pressure_deg),
+                      (edges[2], edges[3], inputs.return_pressure_deg))
+        drawn = chart(pbox, deg, [Curve(y)], lab["delta"], lab[key], ticks, levels=levels)
+        items += drawn.items
+        items.append(Text(lab["mu_" + key].format(mu=number_text(drawn.y_scale)),
+                          (drawn.x_end, drawn.y_end), 3.5, "rt"))
+        if k == 0:
+            items.append(Text(lab["mu_delta"].format(mu=number_text(drawn.x_scale)),
+                              (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
+        charts[key] = (drawn.y_scale, drawn.x_scale, drawn.origin)
+    return items
+
+
+def figure_rows(cam: Cam, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:
+    """The data sheet's inputs, then the synthesized figures, as the table prints them."""
+    f, prog, inputs = cam.follower, cam.program, cam.inputs
+    mm = lambda v: f"{v:.3f} mm"                     # noqa: E731
+    deg = lambda v: f"{v:.3f}°"                      # noqa: E731
+    peaks = follower_peaks(cam, rpm)
+    rows = [(lab["arm"], mm(f.arm_mm)), (lab["swing"], f"{prog.swing_deg:g}°"),
+            (lab["rise"], f"{prog.rise_deg:g}°, {lab[prog.rise_law]}"),
+            (lab["dwell"], f"{prog.dwell_deg:g}°"),
+            (lab["return"], f"{prog.return_deg:g}°, {lab[prog.return_law]}"),
+            (lab["inner"], f"{prog.inner_dwell_deg:g}°"),
+            (lab["allowed"], f"{inputs.pressure_deg:g}° / {inputs.return_pressure_deg:g}°"),
+            (lab["n"], f"{number_text(rpm)} r/min"),
+            (lab["base"], mm(cam.base_radius_mm)), (lab["distance"], mm(f.distance_mm)),
+            (lab["initial"], deg(f.initial_deg)),
+            (lab["side"], lab["above"] if f.side > 0 else lab["below"]),
+            (lab["max_pressure"], f"{cam.max_pressure_rise_deg:.2f}° / {cam.max_pressure_return_deg:.2f}°"),
+            (lab["rho"], mm(cam.min_curvature_radius_mm)), (lab["roller"], mm(cam.roller_mm)),
+            (lab["profile_base"], mm(cam.base_radius_mm - cam.roller_mm)),
+            (lab["peaks"], f"{peaks['follower_omega_max_rad_s']:.4g} rad/s / "
+                              f"{peaks['follower_alpha_max_rad_s2']:.4g} rad/s²")]
+    if not cam.within_allowance:            # a checked cam (--base, --distance) may exceed it
+        rows.append((lab["allowance"], lab["exceeded"]))
+    if cam.timing is not None:
+        rows.append((lab["phase"], deg(cam.timing.phase_deg)))
+    return rows
