@@ -161,39 +161,46 @@ def shape(design: Design | Designs, phi: np.ndarray) -> Shape:
 def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
              sin_beta: np.ndarray) -> Shape:
     """:func:`shape` from the cosine and sine of the crank's absolute direction
-    β = π + θ/2 − φ, which a caller sampling many designs can share between them."""
+    β = π + θ/2 − φ, which a caller sampling many designs can share between them.
+
+    Every (2, …) pair is written into its rows where it is computed, not stacked
+    afterwards: each pass over the angles and each allocation counts at 3 601 angles.
+    """
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
     ram = _ram_terms(design, tip)
-    l1 = design.crank
-    ax, ay = l1 * cos_beta, design.frame + l1 * sin_beta      # crank pin A and its rates
-    ax1, ay1 = l1 * sin_beta, -l1 * cos_beta
-    lever = np.arctan2(ax, ay)
+    pin = lv.pin                                        # crank pin A = (L1·cos β, L2 + L1·sin β)
+    lever = np.arctan2(pin[0], pin[1])
+    pin1 = np.empty_like(pin)                           # dA/dφ = (L1·sin β, −L1·cos β)
+    np.multiply(design.crank, sin_beta, out=pin1[0, ...])
+    np.negative(pin[0], out=pin1[1, ...])
+    pin2 = np.empty_like(pin)                           # d²A/dφ² = O2 − A
+    np.negative(pin[0], out=pin2[0, ...])
+    np.subtract(design.frame, pin[1], out=pin2[1, ...])
     if design.rod is None:
         rod = rod1 = rod2 = None
     else:
         sign, length = design.rod_sign, design.rod
         rod = np.arctan2(ram.depth, sign * ram.reach)
         if sign < 0:  # keep a trailing rod's angle near 180° instead of jumping at ±180°
-            rod = np.mod(rod, 2.0 * math.pi)
+            np.add(rod, 2.0 * math.pi, out=rod, where=rod < 0.0)   # np.mod's result, 1/3 the time
         rod1 = sign * (ram.reach * ram.depth1 - ram.depth * ram.reach1) / length ** 2
         rod2 = sign * (ram.reach * ram.depth2 - ram.depth * ram.reach2) / length ** 2
-    cy = np.zeros_like(ram.cx) + design.guide
+    joint = np.empty((2,) + np.shape(ram.c))
+    joint[0] = ram.c
+    joint[1] = design.guide
     return Shape(
-        phi=phi, crank_pin=np.stack(np.broadcast_arrays(ax, ay)),
-        lever_tip=np.stack([tip.bx, tip.by]), ram_joint=np.stack([ram.cx, cy]),
+        phi=phi, crank_pin=pin, lever_tip=tip.b[0], ram_joint=joint,
         lever=lever, lever1=lv.lever1, lever2=lv.lever2,
         slide=lv.slide, slide1=lv.slide1, slide2=lv.slide2,
-        tip1=np.stack([tip.bx1, tip.by1]), tip2=np.stack([tip.bx2, tip.by2]),
-        ram1=ram.ram1, ram2=ram.ram2, pin1=np.stack(np.broadcast_arrays(ax1, ay1)),
-        pin2=np.stack(np.broadcast_arrays(-ax, design.frame - ay)),
+        tip1=tip.b[1], tip2=tip.b[2], ram1=ram.c1, ram2=ram.c2, pin1=pin1, pin2=pin2,
         rod=rod, rod1=rod1, rod2=rod2,
     )
 
 
 class _Lever(NamedTuple):
-    ux: np.ndarray          # along the lever: (sin ψ, cos ψ); n = (uy, −ux)
-    uy: np.ndarray
+    pin: np.ndarray         # crank pin A, (2, …) mm
+    u: np.ndarray           # along the lever: (sin ψ, cos ψ), (2, …); n = (uy, −ux)
     slide: np.ndarray       # s = |O4A|
     slide1: np.ndarray
     slide2: np.ndarray
@@ -203,18 +210,13 @@ class _Lever(NamedTuple):
 
 
 class _Tip(NamedTuple):
-    bx: np.ndarray
-    by: np.ndarray
-    bx1: np.ndarray
-    by1: np.ndarray
-    bx2: np.ndarray
-    by2: np.ndarray
+    b: np.ndarray           # (3, 2, …): B, dB/dφ, d²B/dφ² in one allocation
 
 
 class _Ram(NamedTuple):
-    cx: np.ndarray
-    ram1: np.ndarray
-    ram2: np.ndarray
+    c: np.ndarray                # Cx
+    c1: np.ndarray
+    c2: np.ndarray
     depth: np.ndarray | None     # d = guide − By, the rod's rise (rod variant)
     depth1: np.ndarray | None
     depth2: np.ndarray | None
@@ -229,39 +231,69 @@ def _lever_terms(design, cb: np.ndarray, sb: np.ndarray) -> _Lever:
     In closed form, with q = s² = L1² + L2² + 2·L1·L2·sin β and dβ/dφ = −1:
     s′ = −L1·L2·cos β/s, ψ′ = L1(L1 + L2·sin β)/q, ψ″ = −L1·L2(L2² − L1²)·cos β/q²
     and s″ = s·ψ′(ψ′ − 1); every per-point product is one of these few terms.
+    The unit vector u = A/s reuses A's coordinates, which the caller keeps as the pin.
     """
     l1, l2 = design.crank, design.frame
     l12 = l1 * l2
-    q = (l1 * l1 + l2 * l2) + (2.0 * l12) * sb
+    pin = np.empty((2,) + np.broadcast_shapes(np.shape(l1), np.shape(l2), np.shape(cb)))
+    np.multiply(l1, cb, out=pin[0, ...])
+    np.multiply(l1, sb, out=pin[1, ...])
+    pin[1] += l2
+    q = (2.0 * l12) * sb
+    q += l1 * l1 + l2 * l2
     slide = np.sqrt(q)                          # |O4A| ≥ L2 − L1 > 0
-    ux, uy = (l1 * cb) / slide, (l2 + l1 * sb) / slide
-    lever1 = l1 * (l1 + l2 * sb) / q
-    lever2 = -(l12 * (l2 * l2 - l1 * l1)) * cb / (q * q)
-    slide1 = -l12 * cb / slide
-    slide2 = slide * lever1 * (lever1 - 1.0)
-    return _Lever(ux, uy, slide, slide1, slide2, lever1, lever2, q)
+    u = pin / slide
+    lever1 = l2 * sb
+    lever1 += l1
+    lever1 *= l1
+    lever1 /= q
+    lever2 = -(l12 * (l2 * l2 - l1 * l1)) * cb
+    lever2 /= q * q
+    slide1 = -l12 * cb
+    slide1 /= slide
+    slide2 = slide * lever1
+    slide2 *= lever1 - 1.0
+    return _Lever(pin, u, slide, slide1, slide2, lever1, lever2, q)
 
 
 def _tip_terms(design, lv: _Lever) -> _Tip:
-    """Lever tip B = L3·(sin ψ, cos ψ) with φ-derivatives."""
-    l3 = design.lever
-    sq = lv.lever1 ** 2
-    return _Tip(l3 * lv.ux, l3 * lv.uy, l3 * lv.lever1 * lv.uy, -l3 * lv.lever1 * lv.ux,
-                l3 * (lv.lever2 * lv.uy - sq * lv.ux), l3 * (-lv.lever2 * lv.ux - sq * lv.uy))
+    """Lever tip B = L3·u, u = (sin ψ, cos ψ), with φ-derivatives B′ = L3·ψ′·n and
+    B″ = L3(ψ″·n − ψ′²·u), n = (uy, −ux)."""
+    l3, (ux, uy), w1, w2 = design.lever, lv.u, lv.lever1, lv.lever2
+    b = np.empty((3,) + lv.u.shape)
+    np.multiply(l3, lv.u, out=b[0, ...])
+    lw = l3 * w1
+    np.multiply(lw, uy, out=b[1, 0, ...])
+    np.multiply(lw, ux, out=b[1, 1, ...])
+    np.negative(b[1, 1], out=b[1, 1, ...])           # −(a·b) is (−a)·b exactly
+    sq = w1 ** 2
+    np.multiply(w2, uy, out=b[2, 0, ...])
+    b[2, 0] -= sq * ux
+    b[2, 0] *= l3
+    np.multiply(w2, ux, out=b[2, 1, ...])
+    b[2, 1] += sq * uy                          # −a − b is −(a + b) exactly
+    b[2, 1] *= -l3
+    return _Tip(b)
 
 
 def _ram_terms(design, tip: _Tip) -> _Ram:
     """Ram joint C: above B (block variant) or at the rod's end on the guide line."""
+    (bx, by), (bx1, by1), (bx2, by2) = tip.b
     if design.rod is None:
-        return _Ram(tip.bx, tip.bx1, tip.bx2, None, None, None, None, None, None)
+        return _Ram(bx, bx1, bx2, None, None, None, None, None, None)
     sign, length = design.rod_sign, design.rod
-    d = design.guide - tip.by
-    d1, d2 = -tip.by1, -tip.by2
+    d = design.guide - by
+    d1, d2 = -by1, -by2
     with np.errstate(invalid="ignore"):
         r = np.sqrt(length ** 2 - d ** 2)  # NaN where the rod cannot reach
-    r1 = -d * d1 / r
-    r2 = -(r1 ** 2 + d1 ** 2 + d * d2) / r
-    return _Ram(tip.bx + sign * r, tip.bx1 + sign * r1, tip.bx2 + sign * r2, d, d1, d2, r, r1, r2)
+    r1 = -d * d1
+    r1 /= r
+    r2 = r1 ** 2
+    r2 += d1 ** 2
+    r2 += d * d2
+    r2 /= r
+    np.negative(r2, out=r2)
+    return _Ram(bx + sign * r, bx1 + sign * r1, bx2 + sign * r2, d, d1, d2, r, r1, r2)
 
 
 class Rates(NamedTuple):
@@ -283,7 +315,7 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
     ram = _ram_terms(design, tip)
-    ux, uy, w1, w2 = lv.ux, lv.uy, lv.lever1, lv.lever2
+    (ux, uy), w1, w2 = lv.u, lv.lever1, lv.lever2
     cube = w1 * w1 * w1
     l1, l2 = design.crank, design.frame
     # ψ‴ = d/dφ of ψ″ = −L1·L2(L2² − L1²)·cos β/q²:
@@ -292,10 +324,10 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     l3 = design.lever
     bx3 = l3 * ((w3 - cube) * uy - 3.0 * w1 * w2 * ux)
     if design.rod is None:
-        return Rates(ram.ram1, ram.ram2, bx3)
+        return Rates(ram.c1, ram.c2, bx3)
     d3 = l3 * ((w3 - cube) * ux + 3.0 * w1 * w2 * uy)   # d‴ = −B‴y
     r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.depth1 * ram.depth2 + ram.depth * d3) / ram.reach
-    return Rates(ram.ram1, ram.ram2, bx3 + design.rod_sign * r3)
+    return Rates(ram.c1, ram.c2, bx3 + design.rod_sign * r3)
 
 
 # Offsets (rad) of samples crowding geometrically toward the angles where a rod variant's
@@ -335,10 +367,14 @@ def pressure_angle(rod_angle: np.ndarray) -> np.ndarray:
 
 
 def ram_origin(design: Design | Designs) -> float | np.ndarray:
-    """x of the ram joint at φ = 0, the zero of the ram displacement, mm (one per design)."""
-    if isinstance(design, Designs):
-        return shape(design, np.zeros(1)).ram_joint[0]
-    return float(shape(design, np.zeros(1)).ram_joint[0, 0])
+    """x of the ram joint at φ = 0, the zero of the ram displacement, mm (one per design).
+
+    Only the joint's terms, not a whole :class:`Shape`: a Shape's assembly for one angle
+    took a sixth of the kinematics cycle's time."""
+    beta = math.pi + np.asarray(design.theta) / 2.0 - np.zeros(1)
+    lever = _lever_terms(design, np.cos(beta), np.sin(beta))
+    x = _ram_terms(design, _tip_terms(design, lever)).c
+    return x if isinstance(design, Designs) else float(x[0])
 
 
 @dataclass(frozen=True)
@@ -373,30 +409,42 @@ class Motion:
 
 
 def solve(design: Design, crank_angle: np.ndarray, rpms) -> Motion:
-    """Positions, velocities and accelerations for all angles and speeds."""
+    """Positions, velocities and accelerations for all angles and speeds.
+
+    The (speeds, angles) rates are rows of one block: written in place, one pass
+    each, and one allocation instead of nine.
+    """
     phi = np.asarray(crank_angle, dtype=float)
     rpm = check_rpms(rpms)
     check_request(phi.size, rpm.size, "angles")
     omega = rpm_to_omega(rpm)
     w1 = omega[:, None]
     w2 = w1 ** 2
+    v1, v2 = w1 / 1000.0, w2 / 1000.0       # mm → m
     sh = shape(design, phi)
-    origin = ram_origin(design)
+    rod = sh.rod is not None
+    rates = np.empty((9 if rod else 7, rpm.size) + phi.shape)
+    np.divide(phi, w1, out=rates[0])
+    np.multiply(v1, sh.ram1, out=rates[1])
+    np.multiply(v2, sh.ram2, out=rates[2])
+    np.multiply(w1, sh.lever1, out=rates[3])
+    np.multiply(w2, sh.lever2, out=rates[4])
+    np.multiply(v1, sh.slide1, out=rates[5])
+    coriolis = 2.0 * sh.slide1
+    coriolis *= sh.lever1
+    np.multiply(v2, coriolis, out=rates[6])
     rod_omega = rod_alpha = pressure = None
-    if sh.rod is not None:
-        rod_omega, rod_alpha = w1 * sh.rod1, w2 * sh.rod2
+    if rod:
+        rod_omega, rod_alpha = rates[7], rates[8]
+        np.multiply(w1, sh.rod1, out=rod_omega)
+        np.multiply(w2, sh.rod2, out=rod_alpha)
         pressure = pressure_angle(sh.rod)
+    ram_x = sh.ram_joint[0] - ram_origin(design)
     return Motion(
         design=design, shape=sh, crank_angle=phi, rpm=rpm, omega=omega,
-        time=phi[None, :] / w1,
-        ram_x=sh.ram_joint[0] - origin,
-        ram_v=(w1 / 1000.0) * sh.ram1,
-        ram_a=(w2 / 1000.0) * sh.ram2,
-        lever_angle=sh.lever,
-        lever_omega=w1 * sh.lever1,
-        lever_alpha=w2 * sh.lever2,
-        slide_v=(w1 / 1000.0) * sh.slide1,
-        coriolis=(w2 / 1000.0) * (2.0 * sh.slide1 * sh.lever1),
+        time=rates[0], ram_x=ram_x, ram_v=rates[1], ram_a=rates[2],
+        lever_angle=sh.lever, lever_omega=rates[3], lever_alpha=rates[4],
+        slide_v=rates[5], coriolis=rates[6],
         rod_angle=sh.rod, rod_omega=rod_omega, rod_alpha=rod_alpha,
         pressure_angle=pressure,
     )
