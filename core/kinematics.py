@@ -184,8 +184,15 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
         rod = np.arctan2(ram.depth, sign * ram.reach)
         if sign < 0:  # keep a trailing rod's angle near 180° instead of jumping at ±180°
             np.add(rod, 2.0 * math.pi, out=rod, where=rod < 0.0)   # np.mod's result, 1/3 the time
-        rod1 = sign * (ram.reach * ram.depth1 - ram.depth * ram.reach1) / length ** 2
-        rod2 = sign * (ram.reach * ram.depth2 - ram.depth * ram.reach2) / length ** 2
+        # λ′ = sign·(r·d′ − d·r′)/L4², with d′ = −By′ (and λ″ alike): −(a + b) is −a − b exactly
+        rod1 = ram.reach * ram.rise1
+        rod1 += ram.depth * ram.reach1
+        rod1 *= -sign
+        rod1 /= length ** 2
+        rod2 = ram.reach * ram.rise2
+        rod2 += ram.depth * ram.reach2
+        rod2 *= -sign
+        rod2 /= length ** 2
     joint = np.empty((2,) + np.shape(ram.c))
     joint[0] = ram.c
     joint[1] = design.guide
@@ -218,8 +225,8 @@ class _Ram(NamedTuple):
     c1: np.ndarray
     c2: np.ndarray
     depth: np.ndarray | None     # d = guide − By, the rod's rise (rod variant)
-    depth1: np.ndarray | None
-    depth2: np.ndarray | None
+    rise1: np.ndarray | None     # By′ = −d′ (a view, not a copy)
+    rise2: np.ndarray | None     # By″ = −d″
     reach: np.ndarray | None     # r = sqrt(L4² − d²), the rod's horizontal reach
     reach1: np.ndarray | None
     reach2: np.ndarray | None
@@ -283,17 +290,21 @@ def _ram_terms(design, tip: _Tip) -> _Ram:
         return _Ram(bx, bx1, bx2, None, None, None, None, None, None)
     sign, length = design.rod_sign, design.rod
     d = design.guide - by
-    d1, d2 = -by1, -by2
     with np.errstate(invalid="ignore"):
         r = np.sqrt(length ** 2 - d ** 2)  # NaN where the rod cannot reach
-    r1 = -d * d1
+    # r′ = −d·d′/r and r″ = −(r′² + d′² + d·d″)/r, with d′ = −By′, d″ = −By″ (sign flips are exact)
+    r1 = d * by1
     r1 /= r
     r2 = r1 ** 2
-    r2 += d1 ** 2
-    r2 += d * d2
+    r2 += by1 ** 2
+    r2 -= d * by2
     r2 /= r
     np.negative(r2, out=r2)
-    return _Ram(bx + sign * r, bx1 + sign * r1, bx2 + sign * r2, d, d1, d2, r, r1, r2)
+    c, c1, c2 = sign * r, sign * r1, sign * r2
+    c += bx
+    c1 += bx1
+    c2 += bx2
+    return _Ram(c, c1, c2, d, by1, by2, r, r1, r2)
 
 
 class Rates(NamedTuple):
@@ -326,7 +337,7 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     if design.rod is None:
         return Rates(ram.c1, ram.c2, bx3)
     d3 = l3 * ((w3 - cube) * ux + 3.0 * w1 * w2 * uy)   # d‴ = −B‴y
-    r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.depth1 * ram.depth2 + ram.depth * d3) / ram.reach
+    r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.rise1 * ram.rise2 + ram.depth * d3) / ram.reach
     return Rates(ram.c1, ram.c2, bx3 + design.rod_sign * r3)
 
 
