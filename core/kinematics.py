@@ -168,8 +168,9 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
     """
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
+    pin, lever1, lever2, slide, slide1, slide2 = lv[:6]   # A = (L1·cos β, L2 + L1·sin β)
+    del lv   # u and s² are not in the Shape: free them before the rod's terms (the peak)
     ram = _ram_terms(design, tip)
-    pin = lv.pin                                        # crank pin A = (L1·cos β, L2 + L1·sin β)
     lever = np.arctan2(pin[0], pin[1])
     pin1 = np.empty_like(pin)                           # dA/dφ = (L1·sin β, −L1·cos β)
     np.multiply(design.crank, sin_beta, out=pin1[0, ...])
@@ -183,7 +184,10 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
         sign, length = design.rod_sign, design.rod
         rod = np.arctan2(ram.depth, sign * ram.reach)
         if sign < 0:  # keep a trailing rod's angle near 180° instead of jumping at ±180°
-            np.add(rod, 2.0 * math.pi, out=rod, where=rod < 0.0)   # np.mod's result, 1/3 the time
+            if np.ndim(rod):   # np.mod's result in a third of its time
+                np.add(rod, 2.0 * math.pi, out=rod, where=rod < 0.0)
+            else:
+                rod = np.mod(rod, 2.0 * math.pi)
         # λ′ = sign·(r·d′ − d·r′)/L4², with d′ = −By′ (and λ″ alike): −(a + b) is −a − b exactly
         rod1 = ram.reach * ram.rise1
         rod1 += ram.depth * ram.reach1
@@ -193,13 +197,10 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
         rod2 += ram.depth * ram.reach2
         rod2 *= -sign
         rod2 /= length ** 2
-    joint = np.empty((2,) + np.shape(ram.c))
-    joint[0] = ram.c
-    joint[1] = design.guide
     return Shape(
-        phi=phi, crank_pin=pin, lever_tip=tip.b[0], ram_joint=joint,
-        lever=lever, lever1=lv.lever1, lever2=lv.lever2,
-        slide=lv.slide, slide1=lv.slide1, slide2=lv.slide2,
+        phi=phi, crank_pin=pin, lever_tip=tip.b[0], ram_joint=ram.joint,
+        lever=lever, lever1=lever1, lever2=lever2,
+        slide=slide, slide1=slide1, slide2=slide2,
         tip1=tip.b[1], tip2=tip.b[2], ram1=ram.c1, ram2=ram.c2, pin1=pin1, pin2=pin2,
         rod=rod, rod1=rod1, rod2=rod2,
     )
@@ -207,12 +208,12 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
 
 class _Lever(NamedTuple):
     pin: np.ndarray         # crank pin A, (2, …) mm
-    u: np.ndarray           # along the lever: (sin ψ, cos ψ), (2, …); n = (uy, −ux)
+    lever1: np.ndarray      # ψ′
+    lever2: np.ndarray      # ψ″
     slide: np.ndarray       # s = |O4A|
     slide1: np.ndarray
     slide2: np.ndarray
-    lever1: np.ndarray      # ψ′
-    lever2: np.ndarray      # ψ″
+    u: np.ndarray           # along the lever: (sin ψ, cos ψ), (2, …); n = (uy, −ux)
     q: np.ndarray           # s²
 
 
@@ -221,7 +222,7 @@ class _Tip(NamedTuple):
 
 
 class _Ram(NamedTuple):
-    c: np.ndarray                # Cx
+    joint: np.ndarray            # C, (2, …): (Cx, guide)
     c1: np.ndarray
     c2: np.ndarray
     depth: np.ndarray | None     # d = guide − By, the rod's rise (rod variant)
@@ -260,7 +261,7 @@ def _lever_terms(design, cb: np.ndarray, sb: np.ndarray) -> _Lever:
     slide1 /= slide
     slide2 = slide * lever1
     slide2 *= lever1 - 1.0
-    return _Lever(pin, u, slide, slide1, slide2, lever1, lever2, q)
+    return _Lever(pin, lever1, lever2, slide, slide1, slide2, u, q)
 
 
 def _tip_terms(design, lv: _Lever) -> _Tip:
@@ -286,8 +287,11 @@ def _tip_terms(design, lv: _Lever) -> _Tip:
 def _ram_terms(design, tip: _Tip) -> _Ram:
     """Ram joint C: above B (block variant) or at the rod's end on the guide line."""
     (bx, by), (bx1, by1), (bx2, by2) = tip.b
+    joint = np.empty_like(tip.b[0])
+    joint[1] = design.guide
     if design.rod is None:
-        return _Ram(bx, bx1, bx2, None, None, None, None, None, None)
+        joint[0] = bx
+        return _Ram(joint, bx1, bx2, None, None, None, None, None, None)
     sign, length = design.rod_sign, design.rod
     d = design.guide - by
     with np.errstate(invalid="ignore"):
@@ -299,12 +303,13 @@ def _ram_terms(design, tip: _Tip) -> _Ram:
     r2 += by1 ** 2
     r2 -= d * by2
     r2 /= r
-    np.negative(r2, out=r2)
-    c, c1, c2 = sign * r, sign * r1, sign * r2
-    c += bx
+    r2 *= -1.0                         # in place for arrays; a scalar for one angle
+    np.multiply(sign, r, out=joint[0, ...])
+    joint[0] += bx
+    c1, c2 = sign * r1, sign * r2
     c1 += bx1
     c2 += bx2
-    return _Ram(c, c1, c2, d, by1, by2, r, r1, r2)
+    return _Ram(joint, c1, c2, d, by1, by2, r, r1, r2)
 
 
 class Rates(NamedTuple):
@@ -384,7 +389,7 @@ def ram_origin(design: Design | Designs) -> float | np.ndarray:
     took a sixth of the kinematics cycle's time."""
     beta = math.pi + np.asarray(design.theta) / 2.0 - np.zeros(1)
     lever = _lever_terms(design, np.cos(beta), np.sin(beta))
-    x = _ram_terms(design, _tip_terms(design, lever)).c
+    x = _ram_terms(design, _tip_terms(design, lever)).joint[0]
     return x if isinstance(design, Designs) else float(x[0])
 
 

@@ -101,3 +101,19 @@ def test_block_peak_speeds_match_hand_calculation():
     assert s.v_work_max_m_s == pytest.approx(w * d.lever * d.crank / (d.frame + d.crank) / 1000, rel=1e-9)
     assert s.v_return_max_m_s == pytest.approx(w * d.lever * d.crank / (d.frame - d.crank) / 1000, rel=1e-9)
     assert s.v_work_mean_m_s == pytest.approx(0.300 / 0.875, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", DESIGNS)
+def test_one_angle_as_a_scalar_gives_the_same_shape(name):
+    """shape() writes its pairs and the rod's terms in place; one angle given as a
+    number (no angle axis) must still work and agree with the same angle in an array."""
+    import dataclasses
+    design = DESIGNS[name]
+    for phi in (0.5, 4.0):
+        one, row = shape(design, phi), shape(design, np.array([phi]))
+        for field in dataclasses.fields(one):
+            a, b = getattr(one, field.name), getattr(row, field.name)
+            if a is None:
+                assert b is None
+            else:
+                assert np.array_equal(np.asarray(a), np.asarray(b)[..., 0]), field.name
