@@ -455,7 +455,10 @@ def solve(design: Design, crank_angle: np.ndarray, rpms) -> Motion:
         np.multiply(w1, sh.rod1, out=rod_omega)
         np.multiply(w2, sh.rod2, out=rod_alpha)
         pressure = pressure_angle(sh.rod)
-    ram_x = sh.ram_joint[0] - ram_origin(design)
+    # The ram's zero is its x at φ = 0: the first sample when the angles start there, as
+    # crank_angles does (the same arithmetic on the same number), else solved apart.
+    starts_at_zero = phi.ndim == 1 and phi.size > 0 and phi[0] == 0.0
+    ram_x = sh.ram_joint[0] - (sh.ram_joint[0, 0] if starts_at_zero else ram_origin(design))
     return Motion(
         design=design, shape=sh, crank_angle=phi, rpm=rpm, omega=omega,
         time=rates[0], ram_x=ram_x, ram_v=rates[1], ram_a=rates[2],
