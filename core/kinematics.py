@@ -198,10 +198,10 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
         rod2 *= -sign
         rod2 /= length ** 2
     return Shape(
-        phi=phi, crank_pin=pin, lever_tip=tip.b[0], ram_joint=ram.joint,
+        phi=phi, crank_pin=pin, lever_tip=tip.b, ram_joint=ram.joint,
         lever=lever, lever1=lever1, lever2=lever2,
         slide=slide, slide1=slide1, slide2=slide2,
-        tip1=tip.b[1], tip2=tip.b[2], ram1=ram.c1, ram2=ram.c2, pin1=pin1, pin2=pin2,
+        tip1=tip.b1, tip2=tip.b2, ram1=ram.c1, ram2=ram.c2, pin1=pin1, pin2=pin2,
         rod=rod, rod1=rod1, rod2=rod2,
     )
 
@@ -218,7 +218,9 @@ class _Lever(NamedTuple):
 
 
 class _Tip(NamedTuple):
-    b: np.ndarray           # (3, 2, …): B, dB/dφ, d²B/dφ² in one allocation
+    b: np.ndarray           # B, (2, …) mm
+    b1: np.ndarray          # dB/dφ
+    b2: np.ndarray          # d²B/dφ²
 
 
 class _Ram(NamedTuple):
@@ -268,26 +270,27 @@ def _tip_terms(design, lv: _Lever) -> _Tip:
     """Lever tip B = L3·u, u = (sin ψ, cos ψ), with φ-derivatives B′ = L3·ψ′·n and
     B″ = L3(ψ″·n − ψ′²·u), n = (uy, −ux)."""
     l3, (ux, uy), w1, w2 = design.lever, lv.u, lv.lever1, lv.lever2
-    b = np.empty((3,) + lv.u.shape)
-    np.multiply(l3, lv.u, out=b[0, ...])
+    b = l3 * lv.u
+    b1 = np.empty_like(b)
     lw = l3 * w1
-    np.multiply(lw, uy, out=b[1, 0, ...])
-    np.multiply(lw, ux, out=b[1, 1, ...])
-    np.negative(b[1, 1], out=b[1, 1, ...])           # −(a·b) is (−a)·b exactly
+    np.multiply(lw, uy, out=b1[0, ...])
+    np.multiply(lw, ux, out=b1[1, ...])
+    np.negative(b1[1], out=b1[1, ...])          # −(a·b) is (−a)·b exactly
+    b2 = np.empty_like(b)
     sq = w1 ** 2
-    np.multiply(w2, uy, out=b[2, 0, ...])
-    b[2, 0] -= sq * ux
-    b[2, 0] *= l3
-    np.multiply(w2, ux, out=b[2, 1, ...])
-    b[2, 1] += sq * uy                          # −a − b is −(a + b) exactly
-    b[2, 1] *= -l3
-    return _Tip(b)
+    np.multiply(w2, uy, out=b2[0, ...])
+    b2[0] -= sq * ux
+    b2[0] *= l3
+    np.multiply(w2, ux, out=b2[1, ...])
+    b2[1] += sq * uy                            # −a − b is −(a + b) exactly
+    b2[1] *= -l3
+    return _Tip(b, b1, b2)
 
 
 def _ram_terms(design, tip: _Tip) -> _Ram:
     """Ram joint C: above B (block variant) or at the rod's end on the guide line."""
-    (bx, by), (bx1, by1), (bx2, by2) = tip.b
-    joint = np.empty_like(tip.b[0])
+    (bx, by), (bx1, by1), (bx2, by2) = tip
+    joint = np.empty_like(tip.b)
     joint[1] = design.guide
     if design.rod is None:
         joint[0] = bx
@@ -427,8 +430,10 @@ class Motion:
 def solve(design: Design, crank_angle: np.ndarray, rpms) -> Motion:
     """Positions, velocities and accelerations for all angles and speeds.
 
-    The (speeds, angles) rates are rows of one block: written in place, one pass
-    each, and one allocation instead of nine.
+    Each (speeds, angles) rate is its own array of one pass. One block holding them
+    all measured faster only while glibc adapts its mmap threshold: with that frozen
+    (``MALLOC_TRIM_THRESHOLD_`` set) the block was mapped and unmapped on every call,
+    0.72 ms instead of 0.30 (docs/performance.md, issue 24).
     """
     phi = np.asarray(crank_angle, dtype=float)
     rpm = check_rpms(rpms)
@@ -438,32 +443,21 @@ def solve(design: Design, crank_angle: np.ndarray, rpms) -> Motion:
     w2 = w1 ** 2
     v1, v2 = w1 / 1000.0, w2 / 1000.0       # mm → m
     sh = shape(design, phi)
-    rod = sh.rod is not None
-    rates = np.empty((9 if rod else 7, rpm.size) + phi.shape)
-    np.divide(phi, w1, out=rates[0])
-    np.multiply(v1, sh.ram1, out=rates[1])
-    np.multiply(v2, sh.ram2, out=rates[2])
-    np.multiply(w1, sh.lever1, out=rates[3])
-    np.multiply(w2, sh.lever2, out=rates[4])
-    np.multiply(v1, sh.slide1, out=rates[5])
+    rod_omega = rod_alpha = pressure = None
+    if sh.rod is not None:
+        rod_omega, rod_alpha = w1 * sh.rod1, w2 * sh.rod2
+        pressure = pressure_angle(sh.rod)
     coriolis = 2.0 * sh.slide1
     coriolis *= sh.lever1
-    np.multiply(v2, coriolis, out=rates[6])
-    rod_omega = rod_alpha = pressure = None
-    if rod:
-        rod_omega, rod_alpha = rates[7], rates[8]
-        np.multiply(w1, sh.rod1, out=rod_omega)
-        np.multiply(w2, sh.rod2, out=rod_alpha)
-        pressure = pressure_angle(sh.rod)
     # The ram's zero is its x at φ = 0: the first sample when the angles start there, as
     # crank_angles does (the same arithmetic on the same number), else solved apart.
     starts_at_zero = phi.ndim == 1 and phi.size > 0 and phi[0] == 0.0
     ram_x = sh.ram_joint[0] - (sh.ram_joint[0, 0] if starts_at_zero else ram_origin(design))
     return Motion(
         design=design, shape=sh, crank_angle=phi, rpm=rpm, omega=omega,
-        time=rates[0], ram_x=ram_x, ram_v=rates[1], ram_a=rates[2],
-        lever_angle=sh.lever, lever_omega=rates[3], lever_alpha=rates[4],
-        slide_v=rates[5], coriolis=rates[6],
+        time=phi[None, :] / w1, ram_x=ram_x, ram_v=v1 * sh.ram1, ram_a=v2 * sh.ram2,
+        lever_angle=sh.lever, lever_omega=w1 * sh.lever1, lever_alpha=w2 * sh.lever2,
+        slide_v=v1 * sh.slide1, coriolis=v2 * coriolis,
         rod_angle=sh.rod, rod_omega=rod_omega, rod_alpha=rod_alpha,
         pressure_angle=pressure,
     )
