@@ -188,15 +188,9 @@ def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
                 np.add(rod, 2.0 * math.pi, out=rod, where=rod < 0.0)
             else:
                 rod = np.mod(rod, 2.0 * math.pi)
-        # λ′ = sign·(r·d′ − d·r′)/L4², with d′ = −By′ (and λ″ alike): −(a + b) is −a − b exactly
-        rod1 = ram.reach * ram.rise1
-        rod1 += ram.depth * ram.reach1
-        rod1 *= -sign
-        rod1 /= length ** 2
-        rod2 = ram.reach * ram.rise2
-        rod2 += ram.depth * ram.reach2
-        rod2 *= -sign
-        rod2 /= length ** 2
+        # λ′ = sign·(r·d′ − d·r′)/L4² with d′ = −By′, λ″ alike (sign flips are exact)
+        rod1 = -sign * (ram.reach * ram.rise1 + ram.depth * ram.reach1) / length ** 2
+        rod2 = -sign * (ram.reach * ram.rise2 + ram.depth * ram.reach2) / length ** 2
     return Shape(
         phi=phi, crank_pin=pin, lever_tip=tip.b, ram_joint=ram.joint,
         lever=lever, lever1=lever1, lever2=lever2,
@@ -247,22 +241,14 @@ def _lever_terms(design, cb: np.ndarray, sb: np.ndarray) -> _Lever:
     l12 = l1 * l2
     pin = np.empty((2,) + np.broadcast_shapes(np.shape(l1), np.shape(l2), np.shape(cb)))
     np.multiply(l1, cb, out=pin[0, ...])
-    np.multiply(l1, sb, out=pin[1, ...])
-    pin[1] += l2
-    q = (2.0 * l12) * sb
-    q += l1 * l1 + l2 * l2
+    np.add(l2, l1 * sb, out=pin[1, ...])
+    q = (l1 * l1 + l2 * l2) + (2.0 * l12) * sb
     slide = np.sqrt(q)                          # |O4A| ≥ L2 − L1 > 0
     u = pin / slide
-    lever1 = l2 * sb
-    lever1 += l1
-    lever1 *= l1
-    lever1 /= q
-    lever2 = -(l12 * (l2 * l2 - l1 * l1)) * cb
-    lever2 /= q * q
-    slide1 = -l12 * cb
-    slide1 /= slide
-    slide2 = slide * lever1
-    slide2 *= lever1 - 1.0
+    lever1 = l1 * (l1 + l2 * sb) / q
+    lever2 = -(l12 * (l2 * l2 - l1 * l1)) * cb / (q * q)
+    slide1 = -l12 * cb / slide
+    slide2 = slide * lever1 * (lever1 - 1.0)
     return _Lever(pin, lever1, lever2, slide, slide1, slide2, u, q)
 
 
@@ -271,19 +257,12 @@ def _tip_terms(design, lv: _Lever) -> _Tip:
     B″ = L3(ψ″·n − ψ′²·u), n = (uy, −ux)."""
     l3, (ux, uy), w1, w2 = design.lever, lv.u, lv.lever1, lv.lever2
     b = l3 * lv.u
-    b1 = np.empty_like(b)
-    lw = l3 * w1
+    b1, b2 = np.empty_like(b), np.empty_like(b)
+    lw, sq = l3 * w1, w1 ** 2
     np.multiply(lw, uy, out=b1[0, ...])
-    np.multiply(lw, ux, out=b1[1, ...])
-    np.negative(b1[1], out=b1[1, ...])          # −(a·b) is (−a)·b exactly
-    b2 = np.empty_like(b)
-    sq = w1 ** 2
-    np.multiply(w2, uy, out=b2[0, ...])
-    b2[0] -= sq * ux
-    b2[0] *= l3
-    np.multiply(w2, ux, out=b2[1, ...])
-    b2[1] += sq * uy                            # −a − b is −(a + b) exactly
-    b2[1] *= -l3
+    np.multiply(-lw, ux, out=b1[1, ...])
+    np.multiply(l3, w2 * uy - sq * ux, out=b2[0, ...])
+    np.multiply(-l3, w2 * ux + sq * uy, out=b2[1, ...])    # L3(−ψ″ux − ψ′²uy)
     return _Tip(b, b1, b2)
 
 
@@ -300,19 +279,10 @@ def _ram_terms(design, tip: _Tip) -> _Ram:
     with np.errstate(invalid="ignore"):
         r = np.sqrt(length ** 2 - d ** 2)  # NaN where the rod cannot reach
     # r′ = −d·d′/r and r″ = −(r′² + d′² + d·d″)/r, with d′ = −By′, d″ = −By″ (sign flips are exact)
-    r1 = d * by1
-    r1 /= r
-    r2 = r1 ** 2
-    r2 += by1 ** 2
-    r2 -= d * by2
-    r2 /= r
-    r2 *= -1.0                         # in place for arrays; a scalar for one angle
-    np.multiply(sign, r, out=joint[0, ...])
-    joint[0] += bx
-    c1, c2 = sign * r1, sign * r2
-    c1 += bx1
-    c2 += bx2
-    return _Ram(joint, c1, c2, d, by1, by2, r, r1, r2)
+    r1 = d * by1 / r
+    r2 = -(r1 ** 2 + by1 ** 2 - d * by2) / r
+    np.add(bx, sign * r, out=joint[0, ...])
+    return _Ram(joint, bx1 + sign * r1, bx2 + sign * r2, d, by1, by2, r, r1, r2)
 
 
 class Rates(NamedTuple):
