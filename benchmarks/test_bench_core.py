@@ -29,6 +29,24 @@ def test_kinematics_3601_angles_4_speeds_rod(benchmark):
     assert motion.rod_alpha.shape == (4, 3601)
 
 
+def test_kinematics_3601_angles_4_speeds_rod_held(benchmark):
+    """As the GUI's model does: the previous cycle stays alive while the next is solved.
+
+    The rows above drop each result at once; then glibc gives the ~1.8 MB of arrays that a
+    cycle returns back to the system (its heap trim threshold is 128 KB, or twice the largest
+    block it once mapped) and the next call faults them in again, which can triple the time
+    (docs/performance.md, issue 24). Holding the previous cycle keeps that memory in the heap.
+    """
+    design = synthesize(100, 1.4, 300, rod_ratio=0.3)
+    held = [solve(design, ANGLES, RPMS)]
+
+    def next_cycle():
+        held[0] = solve(design, ANGLES, RPMS)
+
+    benchmark(next_cycle)
+    assert held[0].rod_alpha.shape == (4, 3601)
+
+
 def test_cycle_metrics(benchmark):
     design = synthesize(100, 1.4, 300, rod_ratio=0.3)
     metrics = benchmark(analyze, design, RPMS)

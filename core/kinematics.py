@@ -161,63 +161,69 @@ def shape(design: Design | Designs, phi: np.ndarray) -> Shape:
 def shape_at(design: Design | Designs, phi: np.ndarray, cos_beta: np.ndarray,
              sin_beta: np.ndarray) -> Shape:
     """:func:`shape` from the cosine and sine of the crank's absolute direction
-    β = π + θ/2 − φ, which a caller sampling many designs can share between them."""
+    β = π + θ/2 − φ, which a caller sampling many designs can share between them.
+
+    Every (2, …) pair is written into its rows where it is computed, not stacked
+    afterwards: each pass over the angles and each allocation counts at 3 601 angles.
+    """
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
+    pin, lever1, lever2, slide, slide1, slide2 = lv[:6]   # A = (L1·cos β, L2 + L1·sin β)
+    del lv   # u and s² are not in the Shape: free them before the rod's terms (the peak)
     ram = _ram_terms(design, tip)
-    l1 = design.crank
-    ax, ay = l1 * cos_beta, design.frame + l1 * sin_beta      # crank pin A and its rates
-    ax1, ay1 = l1 * sin_beta, -l1 * cos_beta
-    lever = np.arctan2(ax, ay)
+    lever = np.arctan2(pin[0], pin[1])
+    pin1 = np.empty_like(pin)                           # dA/dφ = (L1·sin β, −L1·cos β)
+    np.multiply(design.crank, sin_beta, out=pin1[0, ...])
+    np.negative(pin[0], out=pin1[1, ...])
+    pin2 = np.empty_like(pin)                           # d²A/dφ² = O2 − A
+    np.negative(pin[0], out=pin2[0, ...])
+    np.subtract(design.frame, pin[1], out=pin2[1, ...])
     if design.rod is None:
         rod = rod1 = rod2 = None
     else:
         sign, length = design.rod_sign, design.rod
         rod = np.arctan2(ram.depth, sign * ram.reach)
         if sign < 0:  # keep a trailing rod's angle near 180° instead of jumping at ±180°
-            rod = np.mod(rod, 2.0 * math.pi)
-        rod1 = sign * (ram.reach * ram.depth1 - ram.depth * ram.reach1) / length ** 2
-        rod2 = sign * (ram.reach * ram.depth2 - ram.depth * ram.reach2) / length ** 2
-    cy = np.zeros_like(ram.cx) + design.guide
+            if np.ndim(rod):   # np.mod's result in a third of its time
+                np.add(rod, 2.0 * math.pi, out=rod, where=rod < 0.0)
+            else:
+                rod = np.mod(rod, 2.0 * math.pi)
+        # λ′ = sign·(r·d′ − d·r′)/L4² with d′ = −By′, λ″ alike (sign flips are exact)
+        rod1 = -sign * (ram.reach * ram.rise1 + ram.depth * ram.reach1) / length ** 2
+        rod2 = -sign * (ram.reach * ram.rise2 + ram.depth * ram.reach2) / length ** 2
     return Shape(
-        phi=phi, crank_pin=np.stack(np.broadcast_arrays(ax, ay)),
-        lever_tip=np.stack([tip.bx, tip.by]), ram_joint=np.stack([ram.cx, cy]),
-        lever=lever, lever1=lv.lever1, lever2=lv.lever2,
-        slide=lv.slide, slide1=lv.slide1, slide2=lv.slide2,
-        tip1=np.stack([tip.bx1, tip.by1]), tip2=np.stack([tip.bx2, tip.by2]),
-        ram1=ram.ram1, ram2=ram.ram2, pin1=np.stack(np.broadcast_arrays(ax1, ay1)),
-        pin2=np.stack(np.broadcast_arrays(-ax, design.frame - ay)),
+        phi=phi, crank_pin=pin, lever_tip=tip.b, ram_joint=ram.joint,
+        lever=lever, lever1=lever1, lever2=lever2,
+        slide=slide, slide1=slide1, slide2=slide2,
+        tip1=tip.b1, tip2=tip.b2, ram1=ram.c1, ram2=ram.c2, pin1=pin1, pin2=pin2,
         rod=rod, rod1=rod1, rod2=rod2,
     )
 
 
 class _Lever(NamedTuple):
-    ux: np.ndarray          # along the lever: (sin ψ, cos ψ); n = (uy, −ux)
-    uy: np.ndarray
+    pin: np.ndarray         # crank pin A, (2, …) mm
+    lever1: np.ndarray      # ψ′
+    lever2: np.ndarray      # ψ″
     slide: np.ndarray       # s = |O4A|
     slide1: np.ndarray
     slide2: np.ndarray
-    lever1: np.ndarray      # ψ′
-    lever2: np.ndarray      # ψ″
+    u: np.ndarray           # along the lever: (sin ψ, cos ψ), (2, …); n = (uy, −ux)
     q: np.ndarray           # s²
 
 
 class _Tip(NamedTuple):
-    bx: np.ndarray
-    by: np.ndarray
-    bx1: np.ndarray
-    by1: np.ndarray
-    bx2: np.ndarray
-    by2: np.ndarray
+    b: np.ndarray           # B, (2, …) mm
+    b1: np.ndarray          # dB/dφ
+    b2: np.ndarray          # d²B/dφ²
 
 
 class _Ram(NamedTuple):
-    cx: np.ndarray
-    ram1: np.ndarray
-    ram2: np.ndarray
+    joint: np.ndarray            # C, (2, …): (Cx, guide)
+    c1: np.ndarray
+    c2: np.ndarray
     depth: np.ndarray | None     # d = guide − By, the rod's rise (rod variant)
-    depth1: np.ndarray | None
-    depth2: np.ndarray | None
+    rise1: np.ndarray | None     # By′ = −d′ (a view, not a copy)
+    rise2: np.ndarray | None     # By″ = −d″
     reach: np.ndarray | None     # r = sqrt(L4² − d²), the rod's horizontal reach
     reach1: np.ndarray | None
     reach2: np.ndarray | None
@@ -229,39 +235,54 @@ def _lever_terms(design, cb: np.ndarray, sb: np.ndarray) -> _Lever:
     In closed form, with q = s² = L1² + L2² + 2·L1·L2·sin β and dβ/dφ = −1:
     s′ = −L1·L2·cos β/s, ψ′ = L1(L1 + L2·sin β)/q, ψ″ = −L1·L2(L2² − L1²)·cos β/q²
     and s″ = s·ψ′(ψ′ − 1); every per-point product is one of these few terms.
+    The unit vector u = A/s reuses A's coordinates, which the caller keeps as the pin.
     """
     l1, l2 = design.crank, design.frame
     l12 = l1 * l2
+    pin = np.empty((2,) + np.broadcast_shapes(np.shape(l1), np.shape(l2), np.shape(cb)))
+    np.multiply(l1, cb, out=pin[0, ...])
+    np.add(l2, l1 * sb, out=pin[1, ...])
     q = (l1 * l1 + l2 * l2) + (2.0 * l12) * sb
     slide = np.sqrt(q)                          # |O4A| ≥ L2 − L1 > 0
-    ux, uy = (l1 * cb) / slide, (l2 + l1 * sb) / slide
+    u = pin / slide
     lever1 = l1 * (l1 + l2 * sb) / q
     lever2 = -(l12 * (l2 * l2 - l1 * l1)) * cb / (q * q)
     slide1 = -l12 * cb / slide
     slide2 = slide * lever1 * (lever1 - 1.0)
-    return _Lever(ux, uy, slide, slide1, slide2, lever1, lever2, q)
+    return _Lever(pin, lever1, lever2, slide, slide1, slide2, u, q)
 
 
 def _tip_terms(design, lv: _Lever) -> _Tip:
-    """Lever tip B = L3·(sin ψ, cos ψ) with φ-derivatives."""
-    l3 = design.lever
-    sq = lv.lever1 ** 2
-    return _Tip(l3 * lv.ux, l3 * lv.uy, l3 * lv.lever1 * lv.uy, -l3 * lv.lever1 * lv.ux,
-                l3 * (lv.lever2 * lv.uy - sq * lv.ux), l3 * (-lv.lever2 * lv.ux - sq * lv.uy))
+    """Lever tip B = L3·u, u = (sin ψ, cos ψ), with φ-derivatives B′ = L3·ψ′·n and
+    B″ = L3(ψ″·n − ψ′²·u), n = (uy, −ux)."""
+    l3, (ux, uy), w1, w2 = design.lever, lv.u, lv.lever1, lv.lever2
+    b = l3 * lv.u
+    b1, b2 = np.empty_like(b), np.empty_like(b)
+    lw, sq = l3 * w1, w1 ** 2
+    np.multiply(lw, uy, out=b1[0, ...])
+    np.multiply(-lw, ux, out=b1[1, ...])
+    np.multiply(l3, w2 * uy - sq * ux, out=b2[0, ...])
+    np.multiply(-l3, w2 * ux + sq * uy, out=b2[1, ...])    # L3(−ψ″ux − ψ′²uy)
+    return _Tip(b, b1, b2)
 
 
 def _ram_terms(design, tip: _Tip) -> _Ram:
     """Ram joint C: above B (block variant) or at the rod's end on the guide line."""
+    (bx, by), (bx1, by1), (bx2, by2) = tip
+    joint = np.empty_like(tip.b)
+    joint[1] = design.guide
     if design.rod is None:
-        return _Ram(tip.bx, tip.bx1, tip.bx2, None, None, None, None, None, None)
+        joint[0] = bx
+        return _Ram(joint, bx1, bx2, None, None, None, None, None, None)
     sign, length = design.rod_sign, design.rod
-    d = design.guide - tip.by
-    d1, d2 = -tip.by1, -tip.by2
+    d = design.guide - by
     with np.errstate(invalid="ignore"):
         r = np.sqrt(length ** 2 - d ** 2)  # NaN where the rod cannot reach
-    r1 = -d * d1 / r
-    r2 = -(r1 ** 2 + d1 ** 2 + d * d2) / r
-    return _Ram(tip.bx + sign * r, tip.bx1 + sign * r1, tip.bx2 + sign * r2, d, d1, d2, r, r1, r2)
+    # r′ = −d·d′/r and r″ = −(r′² + d′² + d·d″)/r, with d′ = −By′, d″ = −By″ (sign flips are exact)
+    r1 = d * by1 / r
+    r2 = -(r1 ** 2 + by1 ** 2 - d * by2) / r
+    np.add(bx, sign * r, out=joint[0, ...])
+    return _Ram(joint, bx1 + sign * r1, bx2 + sign * r2, d, by1, by2, r, r1, r2)
 
 
 class Rates(NamedTuple):
@@ -283,7 +304,7 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
     ram = _ram_terms(design, tip)
-    ux, uy, w1, w2 = lv.ux, lv.uy, lv.lever1, lv.lever2
+    (ux, uy), w1, w2 = lv.u, lv.lever1, lv.lever2
     cube = w1 * w1 * w1
     l1, l2 = design.crank, design.frame
     # ψ‴ = d/dφ of ψ″ = −L1·L2(L2² − L1²)·cos β/q²:
@@ -292,10 +313,10 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     l3 = design.lever
     bx3 = l3 * ((w3 - cube) * uy - 3.0 * w1 * w2 * ux)
     if design.rod is None:
-        return Rates(ram.ram1, ram.ram2, bx3)
+        return Rates(ram.c1, ram.c2, bx3)
     d3 = l3 * ((w3 - cube) * ux + 3.0 * w1 * w2 * uy)   # d‴ = −B‴y
-    r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.depth1 * ram.depth2 + ram.depth * d3) / ram.reach
-    return Rates(ram.ram1, ram.ram2, bx3 + design.rod_sign * r3)
+    r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.rise1 * ram.rise2 + ram.depth * d3) / ram.reach
+    return Rates(ram.c1, ram.c2, bx3 + design.rod_sign * r3)
 
 
 # Offsets (rad) of samples crowding geometrically toward the angles where a rod variant's
@@ -335,10 +356,14 @@ def pressure_angle(rod_angle: np.ndarray) -> np.ndarray:
 
 
 def ram_origin(design: Design | Designs) -> float | np.ndarray:
-    """x of the ram joint at φ = 0, the zero of the ram displacement, mm (one per design)."""
-    if isinstance(design, Designs):
-        return shape(design, np.zeros(1)).ram_joint[0]
-    return float(shape(design, np.zeros(1)).ram_joint[0, 0])
+    """x of the ram joint at φ = 0, the zero of the ram displacement, mm (one per design).
+
+    Only the joint's terms, not a whole :class:`Shape`: a Shape's assembly for one angle
+    took a sixth of the kinematics cycle's time."""
+    beta = math.pi + np.asarray(design.theta) / 2.0 - np.zeros(1)
+    lever = _lever_terms(design, np.cos(beta), np.sin(beta))
+    x = _ram_terms(design, _tip_terms(design, lever)).joint[0]
+    return x if isinstance(design, Designs) else float(x[0])
 
 
 @dataclass(frozen=True)
@@ -373,30 +398,36 @@ class Motion:
 
 
 def solve(design: Design, crank_angle: np.ndarray, rpms) -> Motion:
-    """Positions, velocities and accelerations for all angles and speeds."""
+    """Positions, velocities and accelerations for all angles and speeds.
+
+    Each (speeds, angles) rate is its own array of one pass. One block holding them
+    all measured faster only while glibc adapts its mmap threshold: with that frozen
+    (``MALLOC_TRIM_THRESHOLD_`` set) the block was mapped and unmapped on every call,
+    0.72 ms instead of 0.30 (docs/performance.md, issue 24).
+    """
     phi = np.asarray(crank_angle, dtype=float)
     rpm = check_rpms(rpms)
     check_request(phi.size, rpm.size, "angles")
     omega = rpm_to_omega(rpm)
     w1 = omega[:, None]
     w2 = w1 ** 2
+    v1, v2 = w1 / 1000.0, w2 / 1000.0       # mm → m
     sh = shape(design, phi)
-    origin = ram_origin(design)
     rod_omega = rod_alpha = pressure = None
     if sh.rod is not None:
         rod_omega, rod_alpha = w1 * sh.rod1, w2 * sh.rod2
         pressure = pressure_angle(sh.rod)
+    coriolis = 2.0 * sh.slide1
+    coriolis *= sh.lever1
+    # The ram's zero is its x at φ = 0: the first sample when the angles start there, as
+    # crank_angles does (the same arithmetic on the same number), else solved apart.
+    starts_at_zero = phi.ndim == 1 and phi.size > 0 and phi[0] == 0.0
+    ram_x = sh.ram_joint[0] - (sh.ram_joint[0, 0] if starts_at_zero else ram_origin(design))
     return Motion(
         design=design, shape=sh, crank_angle=phi, rpm=rpm, omega=omega,
-        time=phi[None, :] / w1,
-        ram_x=sh.ram_joint[0] - origin,
-        ram_v=(w1 / 1000.0) * sh.ram1,
-        ram_a=(w2 / 1000.0) * sh.ram2,
-        lever_angle=sh.lever,
-        lever_omega=w1 * sh.lever1,
-        lever_alpha=w2 * sh.lever2,
-        slide_v=(w1 / 1000.0) * sh.slide1,
-        coriolis=(w2 / 1000.0) * (2.0 * sh.slide1 * sh.lever1),
+        time=phi[None, :] / w1, ram_x=ram_x, ram_v=v1 * sh.ram1, ram_a=v2 * sh.ram2,
+        lever_angle=sh.lever, lever_omega=w1 * sh.lever1, lever_alpha=w2 * sh.lever2,
+        slide_v=v1 * sh.slide1, coriolis=v2 * coriolis,
         rod_angle=sh.rod, rod_omega=rod_omega, rod_alpha=rod_alpha,
         pressure_angle=pressure,
     )

@@ -101,3 +101,32 @@ def test_block_peak_speeds_match_hand_calculation():
     assert s.v_work_max_m_s == pytest.approx(w * d.lever * d.crank / (d.frame + d.crank) / 1000, rel=1e-9)
     assert s.v_return_max_m_s == pytest.approx(w * d.lever * d.crank / (d.frame - d.crank) / 1000, rel=1e-9)
     assert s.v_work_mean_m_s == pytest.approx(0.300 / 0.875, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", DESIGNS)
+def test_one_angle_as_a_scalar_gives_the_same_shape(name):
+    """shape() writes its pairs and the rod's terms in place; one angle given as a
+    number (no angle axis) must still work and agree with the same angle in an array."""
+    import dataclasses
+    design = DESIGNS[name]
+    for phi in (0.5, 4.0):
+        one, row = shape(design, phi), shape(design, np.array([phi]))
+        for field in dataclasses.fields(one):
+            a, b = getattr(one, field.name), getattr(row, field.name)
+            if a is None:
+                assert b is None
+            else:
+                assert np.array_equal(np.asarray(a), np.asarray(b)[..., 0]), field.name
+
+
+@pytest.mark.parametrize("name", DESIGNS)
+def test_ram_zero_is_the_same_whether_or_not_the_angles_start_at_zero(name):
+    """solve takes the ram's zero from its first sample when the angles start at φ = 0
+    and from ram_origin otherwise: both must give the same displacement, to the bit."""
+    design = DESIGNS[name]
+    phi = crank_angles(1)
+    assert phi[0] == 0.0
+    from_first = solve(design, phi, [40]).ram_x
+    apart = solve(design, phi[1:], [40]).ram_x
+    assert from_first[0] == 0.0
+    assert np.array_equal(from_first[1:], apart)
