@@ -62,10 +62,15 @@ def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarra
         v, s = values[..., start:stop], slopes[..., start:stop]
         m = stop - start
         # Cell j lies between samples j and j + 1 (the last wraps to the first if periodic).
-        score = np.where((s[..., :-1] > 0.0) & (s[..., 1:] <= 0.0), v[..., :-1], -np.inf)
+        # A cell ranks by its higher end: a sharp peak just beside the best sample lies in
+        # the cell that sample ends, whatever its other end (a tangent bound cannot vouch for
+        # a cell whose curve is convex, so the best sample's cell must rank first).
+        score = np.where((s[..., :-1] > 0.0) & (s[..., 1:] <= 0.0),
+                         np.maximum(v[..., :-1], v[..., 1:]), -np.inf)
         if period > 0.0:
             wrap = (s[..., -1:] > 0.0) & (s[..., :1] <= 0.0)
-            score = np.concatenate([score, np.where(wrap, v[..., -1:], -np.inf)], axis=-1)
+            score = np.concatenate([score, np.where(wrap, np.maximum(v[..., -1:], v[..., :1]), -np.inf)],
+                                   axis=-1)
         for k in range(min(candidates, score.shape[-1])):   # the best few, by repeated argmax
             j = np.argmax(score, axis=-1)[..., None]
             found = np.isfinite(np.take_along_axis(score, j, axis=-1))[..., 0]

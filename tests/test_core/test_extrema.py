@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import minimize_scalar
 
@@ -20,7 +20,7 @@ from core.designs import ROD_MARGIN
 from core.dynamics import MassProperties, solve_dynamics
 from core.flywheel import summarize
 from core.errors import DesignError
-from core.geometry import from_dimensions, rod_drive_margin, synthesize
+from core.geometry import Design, from_dimensions, rod_drive_margin, synthesize
 from core.kinematics import pressure_angle, shape
 from core.extrema import grid_argmax, polish_minimum
 from core.metrics import analyze, lever_peaks
@@ -92,6 +92,11 @@ def reference_peaks(design):
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(corner_designs())
+# Found by this test: |a| peaks 0.055° beside a grid sample that lies on the sharp angle; the
+# peak's cell ranked below a lower one and its tangent bound (invalid on a convex curve) did
+# not vouch for it, so the sample (0.27 % low) was reported.
+@example(Design(crank=5.0, frame=5.773502691896258, lever=26.933756729740644,
+                guide=16.844371458779797, rod=10.408444851656489, rod_side="leading"))
 def test_every_peak_is_the_true_extremum(design):
     metrics = analyze(design, [60.0])
     s = metrics.speeds[0]
@@ -191,14 +196,18 @@ def torque_reference(design, rpm, masses, sign):
 
 @settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(corner_designs(), st.sampled_from([20.0, 60.0, 150.0]))
+# A rod 0.002·L4 short of upright: the torque spikes to −2.8e7 N·m and both searches lose
+# digits there (they differed by 2.5e-9 of the peak, beyond the 1e-9 this test once allowed).
+@example(Design(crank=122.64474107129799, frame=141.7258956076097, lever=772.2971844546279,
+                guide=264.63500731558656, rod=507.6631079490523, rod_side="leading"), 20.0)
 def test_peak_torque_is_the_true_extremum(design, rpm):
     summary = summarize(design, [rpm], LOADS).speeds[0]
     top = torque_reference(design, rpm, LOADS, 1.0)
     bottom = -torque_reference(design, rpm, LOADS, -1.0)
     scale = max(abs(top), abs(bottom))
     # The dense reference can only fall short of the true peak (a switch between samples).
-    assert top - 1e-9 * scale <= summary.max_torque_N_m <= top + 1e-6 * scale
-    assert bottom - 1e-6 * scale <= summary.min_torque_N_m <= bottom + 1e-9 * scale
+    assert top - 1e-8 * scale <= summary.max_torque_N_m <= top + 1e-6 * scale
+    assert bottom - 1e-6 * scale <= summary.min_torque_N_m <= bottom + 1e-8 * scale
 
 
 def test_grid_argmax_says_where_the_maximum_lies():
