@@ -31,7 +31,7 @@ from . import mechanism as mech
 from .charts import Curve, arrow, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE
 from .motion import CAPTION, GAP, TABLE_ROW, caption
-from .motion import _default_diagrams as nearest_mid_strokes
+from .motion import nearest_mid_strokes
 from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Sheet, TitleBlock, fit,
                     frame_items, number_text, scale_text, standard_scale, table, title_block,
                     title_block_box)

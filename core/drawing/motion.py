@@ -87,7 +87,7 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
     angles = where.crank_deg[numbered]
     special = special_angles(design, idle_fraction)
     limits = (special["limit_work_start"], special["limit_work_end"])
-    diagrams = diagram_deg or _default_diagrams(angles, limits)
+    diagrams = diagram_deg or nearest_mid_strokes(angles, limits)
     areas: dict[str, tuple[Box, tuple[Item, ...]]] = {}
 
     mech_area = (bx0 + GAP, split_y + GAP, split_x - GAP, by1 - GAP)
@@ -124,7 +124,7 @@ def caption(text: str, top_centre: tuple[float, float], room: float, largest: fl
     return Text(clipped(text, room, h), (x, y - 0.2 * h), h, "ct")     # the accents' room above h
 
 
-def _default_diagrams(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
+def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
     """The numbered positions nearest the middle of the working and of the return stroke."""
     work = (limits[1] - limits[0]) % 360.0
     mids = ((limits[0] + work / 2.0) % 360.0, (limits[1] + (360.0 - work) / 2.0) % 360.0)

@@ -12,11 +12,12 @@ from hypothesis import strategies as st
 from core.drawing import mechanism as mech
 from core.drawing.dxf import CENTER, LAYERS, LINETYPES
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import (PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, item_box,
+from core.drawing.sheet import (PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text,
                                 outside_border, overlapping_texts, paper, standard_scale,
                                 text_width)
 from core.drawing.sheet_dxf import save_sheet_dxf
 from core.geometry import synthesize
+from sheet_checks import assert_laid_out
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
 ROD = synthesize(100.0, 1.46, 312.0, rod_ratio=0.3)
@@ -143,11 +144,6 @@ def test_dxf_reads_back_in_mm_with_layers_inside_the_border(design, tmp_path):
     assert circles[0].dxf.radius * drawn.scale == pytest.approx(design.crank, rel=1e-12)
 
 
-def _inside(box, area, tol=1e-6):
-    return (area[0] - tol <= box[0] and box[2] <= area[2] + tol
-            and area[1] - tol <= box[1] and box[3] <= area[3] + tol)
-
-
 @pytest.mark.parametrize("design", [BLOCK, ROD, synthesize(60.0, 1.8, 500.0),
                                     synthesize(150.0, 1.2, 600.0, rod_ratio=0.8, rod_side="leading")],
                          ids=["block", "rod", "K1.8", "leading"])
@@ -156,14 +152,7 @@ def test_drawings_stay_in_their_own_areas_which_do_not_overlap(design, size):
     """Nothing overlaps: the mechanism, the curves, the polygons, the table and the title
     block each keep to an area of their own."""
     drawn = motion_sheet(design, 60.0, paper(size), count=24)
-    areas = list(drawn.areas.items())
-    for name, (area, items) in areas:
-        strays = [it for it in items if not _inside(item_box(it), area)]
-        assert strays == [], (name, strays[:3])
-    for i, (a_name, (a, _)) in enumerate(areas):
-        for b_name, (b, _) in areas[i + 1:]:
-            assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]), (a_name, b_name)
-    assert outside_border(drawn.sheet) == [] and overlapping_texts(drawn.sheet) == []
+    assert_laid_out(drawn.sheet, drawn.areas)
 
 
 @pytest.mark.parametrize("size", ["A0", "A1", "A2", "A3"])
