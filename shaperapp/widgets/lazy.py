@@ -105,11 +105,18 @@ def build_when_idle(pages: Sequence[LazyPage]) -> None:
     def next_page() -> None:
         while waiting:
             page = waiting.pop(0)
-            if shiboken6.isValid(page) and not page.is_built():
+            # Not for a window already closed: its views would be built for a model that
+            # may be going away (a test's window, closed while the turns were queued).
+            if shiboken6.isValid(page) and page.window().isVisible() and not page.is_built():
                 page.view()
                 break
-        if waiting:
-            QTimer.singleShot(0, next_page)
+        _queue()
 
-    if waiting:
-        QTimer.singleShot(0, next_page)
+    def _queue() -> None:
+        # Tied to a page still alive: a deleted context drops the call instead of running it.
+        alive = [page for page in waiting if shiboken6.isValid(page)]
+        waiting[:] = alive
+        if alive:
+            QTimer.singleShot(0, alive[0], next_page)
+
+    _queue()

@@ -74,10 +74,28 @@ def test_idle_build_builds_every_page_one_per_turn(qtbot):
     for page in pages:
         page.setParent(holder)
         page.hide()
+    holder.show()                                       # the window is on screen, as when painted
     build_when_idle(pages)
     assert made == []                                   # nothing before the event loop turns
     qtbot.waitUntil(lambda: all(p.is_built() for p in pages), timeout=5_000)
     assert len(made) == 3
+
+
+def test_idle_build_leaves_a_closed_window_alone(qtbot):
+    """A window closed before its turns come (a test's window, or one the user closed at
+    once) gets no views built for it: they would serve a model that may be going away."""
+    made: list = []
+    pages = [LazyPage(_counting_factory(made)) for _ in range(3)]
+    holder = QWidget()
+    qtbot.addWidget(holder)
+    for page in pages:
+        page.setParent(holder)
+        page.hide()
+    holder.show()
+    build_when_idle(pages)
+    holder.close()
+    qtbot.wait(200)
+    assert made == []
 
 
 PROBE = """
