@@ -5,6 +5,7 @@ Unexpected errors are logged and shown as a plain message, never as a traceback.
 from __future__ import annotations
 
 import argparse
+import gc
 import sys
 import time
 import traceback
@@ -82,7 +83,17 @@ def main(argv: list[str] | None = None) -> int:
             # A screenshot waits for pending layouts (e.g. after a language switch) to run.
             QTimer.singleShot(300 if args.screenshot else 0, finish)
         _when_painted(window, painted)
-    return app.exec()
+    # Python's automatic garbage collection could start inside a Qt call that holds Qt's
+    # connection lock (a signal's disconnect) and destroy a widget that needs that lock: the
+    # window froze (seen in the tests with py-spy). Collect on a timer instead, from the
+    # event loop, where no Qt call is under way.
+    from pyqtgraph.util.garbage_collector import GarbageCollector
+    collector = GarbageCollector(interval=1.0)
+    try:
+        return app.exec()
+    finally:
+        collector.timer.stop()
+        gc.enable()
 
 
 def _when_painted(window, callback) -> None:
