@@ -91,6 +91,13 @@ def new_document() -> Drawing:
     return doc
 
 
+def literal_text(text: str) -> str:
+    """``text`` as a DXF TEXT shows it literally: CAD reads "%%" and a letter as a control code
+    (%%c is ⌀, %%d is °, %%u underlines), so a user's "%%" is written as "%%%" twice, which
+    CAD shows as "%%"."""
+    return text.replace("%%", "%%%%%%")
+
+
 class DxfAuditError(RuntimeError):
     """The document failed ezdxf's audit: it would be refused or misread by CAD."""
 

@@ -118,6 +118,20 @@ def test_dxf_written_and_measures_true(tmp_path):
     assert "L1 100 mm, K 1.46, H 312 mm, L4/L3 0.3" in texts
 
 
+def test_user_text_stays_text_in_the_dxf_and_the_svg(tmp_path):
+    """A title CAD would read as control codes (%%c is ⌀) or an SVG reader as markup is
+    shown as typed."""
+    import ezdxf
+    title = '%%c50 <b>x</b> & "y" =1+1'
+    for suffix in ("dxf", "svg"):
+        result = shaper("drawing", *ROD, "--sheet", "A3", "--title", title, "-o", tmp_path / f"t.{suffix}")
+        assert result.returncode == 0, result.stderr
+    shown = [t.plain_text() for t in ezdxf.readfile(tmp_path / "t.dxf").modelspace().query("TEXT")]
+    assert title in shown
+    svg_texts = [e.text for e in ET.parse(tmp_path / "t.svg").iter() if e.text]
+    assert title in svg_texts
+
+
 @pytest.mark.parametrize("words, option", [
     (["--sheet", "A5"], "--sheet"),
     (["--content", "cams"], "--content"),
