@@ -16,6 +16,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from .errors import DesignError, range_text
+from .arrays import sorted_unique
 from .extrema import grid_minimum
 
 MIN_LENGTH_MM = 0.001
@@ -365,12 +366,9 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
 # Unit offsets of the ψ grid on [−1, 1] (times θ/2): uniform, plus points crowding
 # geometrically toward ψ = 0 and the two ends, where the rod can stand nearly upright and
 # the drive margin can dip sharply (see drive_margin).
-# Sorted and without repeats as np.unique would give, which is not called here because
-# it imports numpy.ma (7 ms of every command's start-up).
 _CROWD = 5.0 ** -np.arange(2, 9)
-_PSI_UNIT = np.sort(np.concatenate([np.linspace(-1.0, 1.0, 33), _CROWD, -_CROWD,
-                                    1.0 - _CROWD, _CROWD - 1.0]))
-_PSI_UNIT = _PSI_UNIT[np.concatenate(([True], _PSI_UNIT[1:] != _PSI_UNIT[:-1]))]
+_PSI_UNIT = sorted_unique(np.concatenate([np.linspace(-1.0, 1.0, 33), _CROWD, -_CROWD,
+                                          1.0 - _CROWD, _CROWD - 1.0]))
 _CHUNK = 4096
 
 

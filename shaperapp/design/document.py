@@ -11,8 +11,6 @@ import os
 from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
-from core.drawing.dxf import DxfAuditError
-from core.drawing.scheme import write_scheme
 from core.dynamics_io import dynamics_csv
 from core.errors import DesignError, FileFormatError
 from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
@@ -94,6 +92,9 @@ class Document(QObject):
             self.failed.emit(self.tr("Could not write %1: a scheme for CAD is written as DXF (.dxf)")
                              .replace("%1", path))
             return False
+        # ezdxf takes about a tenth of a second to import: only when a DXF is asked for
+        from core.drawing.dxf import DxfAuditError
+        from core.drawing.scheme import write_scheme
         try:
             write_scheme(self._model.design, self._model.crank_deg, path)
         except (OSError, DxfAuditError) as exc:

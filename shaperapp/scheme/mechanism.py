@@ -24,6 +24,7 @@ from PySide6.QtCore import QObject, QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath
 from PySide6.QtWidgets import QGraphicsEllipseItem
 
+from core.arrays import sorted_unique
 from core.kinematics import Shape
 from core.kinematics import shape as core_shape
 
@@ -248,7 +249,7 @@ class MechanismLayer(QObject):
             lever_deg=90.0 - np.degrees(sh.lever),
             rod_deg=np.degrees(sh.rod) if rod else None, ram_x=c[:, 0],
             labels=np.stack(labels, axis=1), away=np.stack([-toward_o2, toward_o2], axis=1), u=u, tip=tip,
-            corners=np.unique(np.concatenate([turns, turns + 1])))
+            corners=sorted_unique(np.concatenate([turns, turns + 1])))
 
     @staticmethod
     def _tool_shape(front: float, y_lo: float, u: float) -> tuple[QPainterPath, tuple[float, float]]:

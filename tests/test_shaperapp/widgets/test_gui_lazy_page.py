@@ -113,7 +113,8 @@ def painted():
     print(sorted(n for n, p in window._pages.items() if p.is_built()))
     app.quit()
 WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.positions", "shaperapp.library",
-           "shaperapp.plots.forces", "core.library", "core.compare", "importlib.metadata")
+           "shaperapp.plots.forces", "shaperapp.drawing", "core.library", "core.compare",
+           "core.drawing", "core.cam_drawing", "ezdxf", "numpy.ma.", "importlib.metadata")
 _when_painted(window, painted)
 app.exec()
 """
