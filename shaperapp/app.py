@@ -45,6 +45,7 @@ def main(argv: list[str] | None = None) -> int:
                         help="print the time to the first painted window and quit (for benchmarks)")
     args = parser.parse_args(argv)
 
+    _import_engine_first()
     from PySide6.QtCore import QSettings, QTimer
     from PySide6.QtWidgets import QApplication
 
@@ -94,6 +95,19 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         collector.timer.stop()
         gc.enable()
+
+
+def _import_engine_first() -> None:
+    """Import numpy and the engine modules the first screen uses before Qt.
+
+    Why: once imported, PySide6 hooks every later import and reads the module's source
+    to see whether it uses PySide's ``__feature__`` switches; numpy's and core's
+    hundred-odd modules imported before it skip that."""
+    import core.cam.table  # noqa: F401  (the Cam tab; it brings core.cam)
+    import core.dynamics_io  # noqa: F401
+    import core.flywheel  # noqa: F401
+    import core.io  # noqa: F401  (core, numpy, the design files)
+    import core.polygons  # noqa: F401
 
 
 def _when_painted(window, callback) -> None:

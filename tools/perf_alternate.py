@@ -6,7 +6,7 @@ alternating. This exports commit REV (``git archive``) to a temporary folder and
 ``python ARGS…`` ROUNDS times in each tree in turn (``PYTHONPATH`` set to the tree, in
 a scratch folder, with bytecode cached per tree as an installed package has it; one
 run each first to write that cache). It prints the min and median whole-process time
-of each tree and, when the command prints "first window painted after N ms" (the GUI's
+(and CPU time, user + system, which varies less with the load) of each tree and, when the command prints "first window painted after N ms" (the GUI's
 ``--quit-after-show``), the min and median of N. Each FILE named before ``--`` is
 copied from the work tree into REV's (e.g. ``shaperapp/app.py``, to time an older commit
 with the work tree's way of measuring).
@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -55,13 +56,17 @@ def main(argv: list[str]) -> int:
             envs[name] = env
             subprocess.run([sys.executable, *args], env=env, cwd=scratch, capture_output=True)
         whole: dict[str, list[float]] = {name: [] for name in trees}
+        cpu: dict[str, list[float]] = {name: [] for name in trees}
         painted: dict[str, list[float]] = {name: [] for name in trees}
         for _ in range(rounds):
             for name in trees:
+                used = resource.getrusage(resource.RUSAGE_CHILDREN)
                 start = time.perf_counter()
                 done = subprocess.run([sys.executable, *args], env=envs[name], cwd=scratch,
                                       capture_output=True, text=True)
                 whole[name].append(time.perf_counter() - start)
+                after = resource.getrusage(resource.RUSAGE_CHILDREN)
+                cpu[name].append(after.ru_utime + after.ru_stime - used.ru_utime - used.ru_stime)
                 if done.returncode != 0:
                     print(f"{name}: exit status {done.returncode}: {done.stderr[-300:]}", file=sys.stderr)
                     return 1
@@ -69,7 +74,8 @@ def main(argv: list[str]) -> int:
                 if found:
                     painted[name].append(int(found.group(1)) / 1000)
     for name in trees:
-        line = f"{name}: min {min(whole[name]):.3f} s, median {statistics.median(whole[name]):.3f} s"
+        line = (f"{name}: min {min(whole[name]):.3f} s, median {statistics.median(whole[name]):.3f} s"
+                f" (CPU time min {min(cpu[name]):.3f} s, median {statistics.median(cpu[name]):.3f} s)")
         if painted[name]:
             line += (f"; first paint min {min(painted[name]):.3f} s, "
                      f"median {statistics.median(painted[name]):.3f} s")

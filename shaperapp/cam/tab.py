@@ -22,11 +22,14 @@ from .profile_view import CamProfileView
 
 
 class CamTab(QWidget):
-    """One widget taking the design model: the cam's own model lives here."""
+    """One widget taking the design model. The cam's own model lives here, unless the
+    window gives one: the window keeps the cam (which Save writes) from the start and
+    builds this tab only when it is first shown."""
 
-    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+    def __init__(self, model: DesignModel, parent: QWidget | None = None,
+                 cam_model: CamModel | None = None) -> None:
         super().__init__(parent)
-        self.cam_model = CamModel(model, self)
+        self.cam_model = cam_model if cam_model is not None else CamModel(model, self)
         self.form = CamForm(self.cam_model)
         self.profile = CamProfileView(self.cam_model)
         self.plots = CamPlots(self.cam_model)

@@ -44,7 +44,9 @@ class _TitleFitter(QObject):
     UI language (``file_dialogs.localize``), also those QFileDialog's static functions make."""
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        if event.type() == QEvent.Type.Show and isinstance(watched, QDialog):
+        # Every event of the application passes here: the cheap type test first (reading
+        # event.type() makes a Python enum, about 3 µs, thousands of times per repaint).
+        if isinstance(watched, QDialog) and event.type() == QEvent.Type.Show:
             if isinstance(watched, QFileDialog):
                 localize(watched)
             fit_title(watched)

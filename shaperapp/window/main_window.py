@@ -16,7 +16,7 @@ from PySide6.QtCore import QEvent, QSettings, QTimer
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
 from PySide6.QtWidgets import QInputDialog, QMainWindow, QMessageBox, QVBoxLayout, QWidget
 
-from shaperapp.cam.tab import CamTab
+from shaperapp.cam.model import CamModel
 from shaperapp.design.document import Document
 from shaperapp.design.inputs_pane import InputsPane
 from shaperapp.design.model import DesignModel
@@ -61,9 +61,11 @@ class MainWindow(QMainWindow):
         # So are the panes hidden at first (the library) or behind another's tab (the vector diagrams).
         self._pages["polygons"] = LazyPage(self._build_polygons)
         self._pages["library"] = LazyPage(self._build_library)
-        # The Cam tab is built at once: its model holds the cam that Save writes and Open reads.
-        self.cam = CamTab(model)
-        self.tabs.addTab(self.cam, "")
+        # The cam's model exists from the start (it holds the cam that Save writes and Open
+        # reads); its tab is built when first shown.
+        self.cam_model = CamModel(model, self)
+        self._pages["cam"] = LazyPage(self._build_cam)
+        self.tabs.addTab(self._pages["cam"], "")
         self._idle_build_started = False
         central = QWidget()
         column = QVBoxLayout(central)
@@ -97,6 +99,7 @@ class MainWindow(QMainWindow):
     positions = property(lambda self: self._pages["positions"].view())
     explore = property(lambda self: self._pages["explore"].view())
     compare = property(lambda self: self._pages["compare"].view())
+    cam = property(lambda self: self._pages["cam"].view())
 
     polygon_view = property(lambda self: self._pages["polygons"].view())
     library = property(lambda self: self._pages["library"].view())
@@ -112,6 +115,10 @@ class MainWindow(QMainWindow):
         pane = LibraryPane(self.model, settings=self.settings)
         pane.compareRequested.connect(self._show_comparison)
         return pane
+
+    def _build_cam(self) -> QWidget:
+        from shaperapp.cam.tab import CamTab
+        return CamTab(self.model, cam_model=self.cam_model)
 
     def _build_tab(self, name: str) -> QWidget:
         if name == "forces":
@@ -257,7 +264,8 @@ class MainWindow(QMainWindow):
         for i, title in enumerate((self.tr("Kinematics"), self.tr("Forces"), self.tr("Positions"),
                                    self.tr("Explore"), self.tr("Compare"), self.tr("Cam"))):
             self.tabs.setTabText(i, title)
-        self.cam.retranslate()
+        if self._pages["cam"].is_built():
+            self.cam.retranslate()
         self.docks.retranslate()
         self.menus.retranslate()
         self.model.retranslate_history()
@@ -373,7 +381,7 @@ class MainWindow(QMainWindow):
             return
         from shaperapp.drawing.dialog import export_sheet_dialog   # load on demand
         path = export_sheet_dialog(self.model, self, self._language, self.document.last_dir(),
-                                   self.settings, cam=self.cam.cam_model)
+                                   self.settings, cam=self.cam_model)
         if path:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 

@@ -114,7 +114,8 @@ def painted():
     app.quit()
 WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.positions", "shaperapp.library",
            "shaperapp.plots.forces", "shaperapp.drawing", "core.library", "core.compare",
-           "core.drawing", "core.cam_drawing", "ezdxf", "numpy.ma.", "importlib.metadata")
+           "shaperapp.cam.tab", "shaperapp.cam.plots", "shaperapp.cam.profile_view", "core.drawing",
+           "core.cam_drawing", "ezdxf", "numpy.ma.", "importlib.metadata")
 _when_painted(window, painted)
 app.exec()
 """

@@ -82,3 +82,28 @@ def test_sixteen_speeds_fit_the_window_at_1366x768(window, tab):
     names = ("ram_x", "ram_v", "ram_a") if tab == 0 else ("torque", "power", "energy", "force")
     for name in names:
         assert widget.plot_item(name).vb.sceneBoundingRect().height() > 40, name
+
+
+def test_the_cam_is_saved_and_opened_with_its_tab_never_built(window, tmp_path):
+    """The Cam tab is built when first shown (issue 24), but the cam is the window's from
+    the start: Save writes the cam's inputs and Open brings them back with the tab unbuilt,
+    and the tab, once shown, shows the opened cam."""
+    import json
+
+    page = window._pages["cam"]
+    window._idle_build_started = True            # keep the idle building from building it
+    assert not page.is_built()
+    window.cam_model.set_fields(arm=150.0, rise_law="poly345")
+    assert window.document.save_to(str(tmp_path / "d.json"))
+    saved = json.loads((tmp_path / "d.json").read_text())["cam"]
+    assert saved["arm_mm"] == 150.0 and saved["rise_law"] == "poly345"
+    cam = window.cam_model.cam
+    window.document.new()
+    assert window.cam_model.cam.follower.arm_mm == 120.0
+    assert window.document.open_path(str(tmp_path / "d.json"))
+    assert window.cam_model.cam == cam
+    assert not page.is_built()
+    window.tabs.setCurrentWidget(window.cam)
+    QApplication.processEvents()
+    assert window.cam.cam_model is window.cam_model
+    assert window.cam.form.fields["arm"].edit.text() == "150"
