@@ -7,11 +7,9 @@ previous version, replacing what must not be replaced or leaving litter.
 from __future__ import annotations
 
 import errno
-import hashlib
 import itertools
 import os
 import re
-import secrets
 import stat
 import time
 from typing import Iterable
@@ -40,6 +38,7 @@ def fit_name(name: str, room: int) -> str:
             break
         except UnicodeDecodeError:
             cut = cut[:-1]
+    import hashlib      # only for a name too long for the folder (5 ms of every start-up)
     return os.fsdecode(cut) + "~" + hashlib.sha256(raw).hexdigest()[:8]
 
 
@@ -140,7 +139,7 @@ def _write_and_replace(target: str, pieces: Iterable[str] | Iterable[bytes], old
     directory, name = os.path.split(target)
     directory = directory or "."
     remove_stale_temps(target)
-    tmp = os.path.join(directory, f".{fit_name(name, _TEMP_ROOM)}.{os.getpid()}-{secrets.token_hex(4)}"
+    tmp = os.path.join(directory, f".{fit_name(name, _TEMP_ROOM)}.{os.getpid()}-{os.urandom(4).hex()}"
                                   f"{_TEMP_SUFFIX}")
     # A new file gets 0666 less the umask; a replacement starts private, then takes the old mode.
     fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0),

@@ -15,15 +15,16 @@ import os
 import re
 import stat
 from dataclasses import fields
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .cam.file import cam_from_dict
-from .dynamics import MassProperties
 from .errors import DesignError, FileFormatError
 from .kinematics import angle_count, check_rpms
 from .spec import Spec
+
+if TYPE_CHECKING:
+    from .dynamics import MassProperties
 
 FILE_FORMAT = "shaper-design"
 FILE_VERSION = 1
@@ -73,6 +74,7 @@ def parse_design(raw: bytes, name: str) -> dict[str, Any]:
         step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name)
         masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
         if "cam" in doc:            # validated here, kept as written (older files have none)
+            from .cam.file import cam_from_dict     # the cam's modules: only for a file with one
             cam_from_dict(doc["cam"])
     except FileFormatError:
         raise
@@ -212,13 +214,14 @@ def _step(value: object, name: str) -> float:
 
 def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
     """The load inputs as stored in a design file (units in the keys)."""
-    data = {f.name: getattr(masses, f.name) for f in fields(MassProperties)}
+    data = {f.name: getattr(masses, f.name) for f in fields(masses)}
     data["ram_cg_mm"] = list(masses.ram_cg_mm)
     return data
 
 
 def masses_from_dict(data: object) -> MassProperties:
     """Validate stored load inputs; DesignError names the bad field."""
+    from .dynamics import MassProperties     # only for a file with loads
     if not isinstance(data, dict):
         raise DesignError("forces", type(data).__name__, "must be an object of load inputs")
     known = {f.name for f in fields(MassProperties)}

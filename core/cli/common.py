@@ -13,17 +13,19 @@ import re
 import sys
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..dynamics import MassProperties, masses_for_design
 from ..errors import DesignError
 from ..geometry import Design
 from ..io import load_design
 from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
                           check_angles, check_request, crank_angles)
 from ..spec import Spec
+
+if TYPE_CHECKING:
+    from ..dynamics import MassProperties
 
 DEFAULT_RPMS = ("40", "60")
 
@@ -349,6 +351,7 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
     A rod mass the file keeps from the rod variant is dropped for a block design; one
     given as an option is refused by the solver instead.
     """
+    from ..dynamics import MassProperties, masses_for_design   # only commands with loads
     doc = design_file(args)
     base = doc.get("masses") if doc is not None else None
     if base is not None:

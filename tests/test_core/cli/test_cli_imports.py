@@ -1,0 +1,39 @@
+"""``shaper curves`` imports only what it needs (issue 24, item 1): a short command's
+time is mostly start-up, and every module it loads is paid on every call."""
+from __future__ import annotations
+
+import subprocess
+import sys
+
+PROBE = """
+import sys
+from core.cli import main
+status = main(["curves", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40", "60",
+               "--step", "1", "--csv", sys.argv[1]])
+WATCHED = ("core.metrics", "core.dynamics", "core.cam", "core.library",
+           "core.sweep", "core.optimize", "core.drawing", "core.flywheel", "scipy", "ezdxf",
+           "numpy.ma.", "importlib.metadata", "hashlib", "secrets")
+print(status, sorted(m for m in sys.modules if m.startswith(WATCHED)))
+"""
+
+
+def test_curves_imports_no_metrics_loads_cam_or_library(tmp_path):
+    out = subprocess.run([sys.executable, "-c", PROBE, str(tmp_path / "c.csv")], capture_output=True,
+                         text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "0 []"
+    assert (tmp_path / "c.csv").read_text().count("\n") == 2 * 361 + 1
+
+
+def test_a_design_file_with_loads_and_a_cam_still_reads_them(tmp_path):
+    """The cam's and the loads' modules come in when a file holds them (the lazy imports
+    in core.design_file must not lose their checks)."""
+    from core.cli import main
+    from core.io import save_design
+    from core.spec import Spec
+    path = tmp_path / "d.json"
+    save_design(path, Spec(), [40.0], 1.0, extra={"forces": {"ram_mass_kg": "heavy"}})
+    assert main(["curves", "--design", str(path), "--csv", str(tmp_path / "c.csv")]) == 2
+    save_design(path, Spec(), [40.0], 1.0, extra={"cam": {"arm_mm": -1}})
+    assert main(["curves", "--design", str(path), "--csv", str(tmp_path / "c.csv")]) == 2
+    assert not (tmp_path / "c.csv").exists()
