@@ -45,7 +45,7 @@ _WIDTH = 17                   # the longest cell: "-0.0001234567891," or "-1.234
 # Layout modes: fixed notation for exponents -4 … 9 (mode e + 4), then these.
 _EXPONENT, _ZERO_MODE, _EMPTY = 14, 15, 16
 _MODES = 17
-_COLUMN = np.arange(_WIDTH)
+_COLUMN = np.arange(_WIDTH, dtype=np.uint8)       # bytes: the slot mask is made of bytes
 _BLOCK_CELLS = 65_536         # cells formatted at once: a few MB of temporaries, in cache
 
 
@@ -84,6 +84,14 @@ def _layouts() -> tuple[np.ndarray, np.ndarray]:
 
 
 _TABLE, _LENGTH = _layouts()
+_LENGTH8 = _LENGTH.astype(np.uint8)
+
+
+def _separators(columns: int) -> np.ndarray:
+    """The byte after each cell of a row: commas, then the newline."""
+    row = np.full(columns, ord(","), dtype=np.uint8)
+    row[-1] = ord("\n")
+    return row
 
 
 def _python_row(values: np.ndarray) -> str:
@@ -150,7 +158,7 @@ def g10_rows(data: np.ndarray) -> str:
     shown = np.minimum(np.abs(exponent), 99)
     ext[:, _E1] = shown // 10 + ord("0")
     ext[:, _E0] = shown % 10 + ord("0")
-    ext[:, _SEP] = np.where(order % columns == columns - 1, ord("\n"), ord(","))
+    ext[:, _SEP] = np.tile(_separators(columns), rows).take(order)
     counts = np.bincount(key, minlength=_LENGTH.size)
     slots = np.empty((size, _WIDTH), dtype=np.uint8)
     first = 0
@@ -163,7 +171,7 @@ def g10_rows(data: np.ndarray) -> str:
     inverse[order] = np.arange(size)
     slots = np.take(slots.view(f"V{_WIDTH}")[:, 0], inverse).view(np.uint8).reshape(size, _WIDTH)
     length = _LENGTH[key]
-    text = slots[_COLUMN < length[:, None]].tobytes().decode("ascii")
+    text = slots[_COLUMN < _LENGTH8[key][:, None]].tobytes().decode("ascii")
     if not python.any():
         return text
     # Rows holding a value left to Python: their whole line is Python's.
