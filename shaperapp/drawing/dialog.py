@@ -128,10 +128,12 @@ class DrawingSheetDialog(QDialog):
             box.setValue(value)
 
     def _content_changed(self) -> None:
-        """The positions and the polygon angles are the linkage sheets' choices, not the cam's."""
-        linkage = self.content.currentData() != "cam"
-        for box in (self.count, *self.angles):
-            box.setEnabled(linkage)
+        """The polygon angles are the linkage sheets' choice, not the cam's; the number of
+        positions only the motion sheet's, which draws the mechanism at each."""
+        content = self.content.currentData()
+        self.count.setEnabled(content == "motion")
+        for box in self.angles:
+            box.setEnabled(content != "cam")
 
     def choice(self) -> SheetChoice:
         text = {key: edit.text().strip() for key, edit in self.fields.items()}

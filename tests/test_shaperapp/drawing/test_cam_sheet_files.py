@@ -116,6 +116,8 @@ def test_dialog_offers_the_cam_sheet_of_the_cam_tab(model, qtbot, tmp_path):
     dialog = DrawingSheetDialog(model, "en", cam=source)
     qtbot.addWidget(dialog)
     assert dialog.count.isEnabled()
+    dialog.content.setCurrentIndex(dialog.content.findData("forces"))   # draws two positions only
+    assert not dialog.count.isEnabled() and all(box.isEnabled() for box in dialog.angles)
     dialog.content.setCurrentIndex(dialog.content.findData("cam"))
     assert dialog.choice().cam is cam
     assert not dialog.count.isEnabled() and not any(box.isEnabled() for box in dialog.angles)
