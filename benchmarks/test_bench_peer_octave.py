@@ -44,13 +44,19 @@ ROUNDS = 3
 FULL_WIDTH_PLUS = "\ufe62"
 
 
-def seed_file() -> Path | None:
-    """Seed 000: ``$SHAPER_SEED000`` or the first ``../shared/seeds/000_*.txt``."""
+def seed_file() -> Path:
+    """Seed 000: ``$SHAPER_SEED000`` or the first ``../shared/seeds/000_*.txt``; skips
+    the benchmark, saying where it looked, when there is none."""
     given = os.environ.get("SHAPER_SEED000")
     if given:
-        return Path(given) if Path(given).is_file() else None
-    found = sorted((ROOT.parent / "shared" / "seeds").glob("000_*.txt"))
-    return found[0] if found else None
+        if not Path(given).is_file():
+            pytest.skip(f"seed 000 not found: SHAPER_SEED000={given} is not a file")
+        return Path(given)
+    pattern = ROOT.parent / "shared" / "seeds" / "000_*.txt"
+    found = sorted(pattern.parent.glob(pattern.name))
+    if not found:
+        pytest.skip(f"seed 000 not found: set SHAPER_SEED000 to the seed file (looked for {pattern})")
+    return found[0]
 
 
 def six_bar_source(seed_text: str) -> str:
@@ -121,9 +127,6 @@ def read_csv(path: Path) -> tuple[list[str], np.ndarray]:
 
 def test_shaper_curves_against_seed000_in_octave(benchmark, tmp_path):
     seed = seed_file()
-    if seed is None:
-        pytest.skip("seed 000 not found: set SHAPER_SEED000 to the seed file "
-                    f"(looked for {ROOT.parent / 'shared' / 'seeds' / '000_*.txt'})")
     octave = shutil.which("octave-cli")
     if octave is None:
         pytest.skip("GNU Octave is not installed here (no octave-cli on PATH): "
