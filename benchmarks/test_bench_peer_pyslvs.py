@@ -1,9 +1,13 @@
 """Issue 24, item 3: the kinematics cycle against pyslvs 22.7 solving positions only.
 
 pyslvs is no dependency of this project: it runs in its own interpreter, named by
-``$SHAPER_PYSLVS_PYTHON`` (a virtualenv outside the repository, e.g. made with
-``python -m venv /work/peers/pyslvs-venv`` and ``pip install pyslvs==22.7.0``; see the
-report of issue 24 for how it was built here). Each round runs
+``$SHAPER_PYSLVS_PYTHON``, a virtualenv outside the repository. Built here on 25 November
+(3 min 11 s, Python 3.11.7 as ours): ``python3.11 -m venv /work/peers/pyslvs-venv``, then
+``PIP_CONSTRAINT=c.txt /work/peers/pyslvs-venv/bin/pip install pyslvs==22.7.0`` with
+``cython==3.0.12`` in c.txt: its sdist compiles with Cython 3.0 (Cython 3.1 and later
+refuse its bfgs.pyx; the 3.0 alphas it was released with are no longer on PyPI). That
+installs pyslvs 22.7.0 (``__version__`` "22.07.0"), lark-parser 0.12.0 and numpy 2.4.6,
+the numpy we use. Each round runs
 ``peers/pyslvs_positions.py`` in that interpreter, which poses our rod-variant default
 design (the one of ``test_bench_core.py``'s rod rows) in pyslvs and times its solve of
 the 3 601 crank angles' positions in its own process, then times
