@@ -16,6 +16,7 @@ from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, gri
 from .common import (LOAD_OPTIONS, add_design_options, add_load_options, add_speed_options,
                      design_error_text, design_file, masses_from_args, number, option_name,
                      rpms_from_args, spec_from_args, spec_option)
+from .allocator import keep_freed_memory
 from .output import write_output
 
 HELP = "figures of many designs over varied parameters"
@@ -145,7 +146,7 @@ def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
     The numbers of a row are formatted together, by the vectorized "%.10g" of
     ``core.numtext``; only the joins with the text columns are per row."""
     valid = np.where(ev.valid.reshape(-1), "true", "false")
-    why = [_quote(r) for r in reasons(ev, option)]
+    why = [_quote(r) if r else r for r in reasons(ev, option)]    # "" for a valid design
     if not valid.size:
         return ""
     varied = _format_rows([values[PARAMETERS[n]] for n in names], valid.size)
@@ -202,6 +203,7 @@ def inputs(args: argparse.Namespace, with_count: bool):
 
 
 def run(args: argparse.Namespace) -> int:
+    keep_freed_memory()                     # its chunks' arrays are not faulted in anew
     spec, varied, rpms, masses = inputs(args, with_count=True)
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
     names = list(varied)
