@@ -294,16 +294,23 @@ class Rates(NamedTuple):
 
 
 def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
-    """The ram's rates only (three φ-derivatives), by the closed form of :func:`shape_at`.
+    """The ram's rates only (three φ-derivatives), by the closed form of :func:`shape_at`:
+    :func:`ram_rates` of :func:`tip_rates`."""
+    return ram_rates(design, *tip_rates(design, cos_beta, sin_beta))
+
+
+def tip_rates(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray,
+              ) -> tuple[_Tip, np.ndarray, np.ndarray]:
+    """The lever tip B and its first three φ-derivatives (B, B′, B″, then B‴x, −B‴y), which
+    depend on L1, L2 and L3 only: designs sharing those can share them (a sweep of the rod
+    and the guide).
 
     The third derivative is one more differentiation of the same closed
     form: ψ‴ = −L1·L2(L2² − L1²)(q·sin β + 4·L1·L2·cos²β)/q³ (see
-    ``_lever_terms``); the tip B = L3·u gives B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u);
-    and the rod's reach r² = L4² − d² gives r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r.
+    ``_lever_terms``); the tip B = L3·u gives B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u).
     """
     lv = _lever_terms(design, cos_beta, sin_beta)
     tip = _tip_terms(design, lv)
-    ram = _ram_terms(design, tip)
     (ux, uy), w1, w2 = lv.u, lv.lever1, lv.lever2
     cube = w1 * w1 * w1
     l1, l2 = design.crank, design.frame
@@ -313,8 +320,19 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     l3 = design.lever
     bx3 = l3 * ((w3 - cube) * uy - 3.0 * w1 * w2 * ux)
     if design.rod is None:
-        return Rates(ram.c1, ram.c2, bx3)
+        return tip, bx3, bx3
     d3 = l3 * ((w3 - cube) * ux + 3.0 * w1 * w2 * uy)   # d‴ = −B‴y
+    return tip, bx3, d3
+
+
+def ram_rates(design: Design | Designs, tip: _Tip, bx3: np.ndarray, d3: np.ndarray) -> Rates:
+    """The ram's rates from the tip's (:func:`tip_rates`, broadcasting against the design).
+
+    The rod's reach r² = L4² − d² gives r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r.
+    """
+    ram = _ram_terms(design, tip)
+    if design.rod is None:
+        return Rates(ram.c1, ram.c2, bx3)
     r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.rise1 * ram.rise2 + ram.depth * d3) / ram.reach
     return Rates(ram.c1, ram.c2, bx3 + design.rod_sign * r3)
 

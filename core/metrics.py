@@ -19,8 +19,8 @@ import numpy as np
 from .designs import Designs
 from .extrema import bracket_root, grid_argmax
 from .geometry import Design
-from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rates_at,
-                         rpm_to_omega, shape_at)
+from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, Rates, check_rpms, pressure_angle,
+                         ram_rates, rates_at, rpm_to_omega, shape_at, tip_rates)
 
 
 @dataclass(frozen=True)
@@ -196,7 +196,7 @@ def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray
     crowd toward those angles."""
     col = d.column()
     uniform = _BETA_FINE if fine else _BETA
-    samples = [rates_at(col, np.cos(uniform), np.sin(uniform))]
+    samples = [shared_rates(col, np.cos(uniform), np.sin(uniform))]
     segments = [(0, uniform.size, 2.0 * math.pi)]
     beta = [np.broadcast_to(uniform, samples[0].ram1.shape)]
     if specials is not None:
@@ -222,6 +222,44 @@ def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray
     peaks, where = grid_argmax(lambda t, *a: _ram_curves(t, *a, side=side), x, values, slopes,
                                args=args, segments=segments)
     return peaks, where, samples[0].ram1[..., ::4] if fine else samples[0].ram1
+
+
+# Share the lever tip's terms only where designs repeat L1, L2, L3 this often at least:
+# gathering them costs a pass per term, computing them a few dozen.
+SHARE_BELOW = 0.25
+
+
+def shared_rates(col: Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
+    """:func:`~core.kinematics.rates_at` of designs ``col`` (shape (n, 1)) at samples shared
+    by all of them, the lever tip's terms computed once per distinct (L1, L2, L3).
+
+    A sweep of the rod and the guide, the usual question once K and the stroke are fixed,
+    has one lever for all its designs: the tip's terms are then half the grid's arithmetic.
+    The same operations on the same numbers: the result is that of ``rates_at``, bit for bit.
+    """
+    keys = [col.crank[:, 0], col.frame[:, 0], col.lever[:, 0]]
+    n = keys[0].size
+    if n * SHARE_BELOW < 2.0:                       # one design (analyze) or a handful
+        return rates_at(col, cos_beta, sin_beta)
+    order = np.lexsort(keys[::-1])
+    new = np.ones(n, dtype=bool)
+    for key in keys:
+        ranked = key[order]
+        new[1:] &= ranked[1:] == ranked[:-1]
+    new = ~new
+    new[:1] = True
+    if np.count_nonzero(new) > SHARE_BELOW * n:
+        return rates_at(col, cos_beta, sin_beta)
+    first = order[new]                              # one design per distinct lever
+    group = np.empty(n, dtype=np.intp)
+    group[order] = np.cumsum(new) - 1
+    tip, bx3, d3 = tip_rates(col.take(first), cos_beta, sin_beta)
+    if first.size == 1:                             # views: nothing is copied
+        spread = lambda v: np.broadcast_to(v, v.shape[:-2] + (n, v.shape[-1]))  # noqa: E731
+    else:
+        spread = lambda v: v[..., group, :]  # noqa: E731
+    tip = type(tip)(*(spread(v) for v in tip))
+    return ram_rates(col, tip, spread(bx3), spread(d3))
 
 
 def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
