@@ -35,11 +35,16 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
 def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarray,
                 args: Sequence[np.ndarray] = (),
                 segments: Sequence[tuple[int, int, float]] | None = None,
-                candidates: int = CANDIDATES) -> tuple[np.ndarray, np.ndarray]:
+                candidates: int = CANDIDATES, newton: bool = False,
+                ) -> tuple[np.ndarray, np.ndarray]:
     """(largest value, x where it lies) of each curve, polished from samples; each of
     shape values.shape[:-1]. The x is a polished slope zero, or the best sample when no
     polished one exceeds it (a maximum at a segment end); it may lie beyond the
     samples' range by up to one period of a wrapping segment.
+
+    With ``newton``, ``fun`` also returns the slope's own slope (value, slope,
+    curvature) and each cell is polished by :func:`newton_maximum` instead of
+    :func:`bracket_root` on the slope: three or four evaluations instead of seven.
 
     ``fun(x, *args)`` returns the curve's value and slope d/dx at ``x`` (1-D
     arrays, args subset to match). ``x``, ``values`` and ``slopes`` (…, n) are
@@ -82,31 +87,96 @@ def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarra
             left, right = index + (start + cell,), index + (start + np.where(inner, cell + 1, 0),)
             lo, hi = x[left], x[right] + np.where(inner, 0.0, period)
             s_lo, s_hi = slopes[left], slopes[right]
-            bound = _tangent_bound(lo, hi, values[left], values[right], s_lo, s_hi)
+            v_lo, v_hi = values[left], values[right]
+            bound = _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi)
             owner = np.ravel_multi_index(index, lead) if lead else np.zeros(cell.size, dtype=int)
             while len(picks) <= k:
                 picks.append([])
-            picks[k].append((lo, hi, owner, bound, s_lo, s_hi))
+            picks[k].append((lo, hi, owner, bound, s_lo, s_hi, v_lo, v_hi))
     # The best cell of each curve, and a lower-ranked cell only if its value could exceed
     # the best sample (its upper bound from the tangents at its ends), all polished at once:
     # one root search, whose fixed cost per step dwarfs its cost per bracket.
     parts = []
     for rank, found in enumerate(picks):
-        lo, hi, owner, bound, s_lo, s_hi = (np.concatenate(v) for v in zip(*found))
+        lo, hi, owner, bound, s_lo, s_hi, v_lo, v_hi = (np.concatenate(v) for v in zip(*found))
         keep = bound > best[owner] if rank else slice(None)
-        parts.append((lo[keep], hi[keep], owner[keep], s_lo[keep], s_hi[keep]))
+        parts.append((lo[keep], hi[keep], owner[keep], s_lo[keep], s_hi[keep], v_lo[keep],
+                      v_hi[keep]))
     if not parts:
         return best.reshape(lead), where.reshape(lead)
-    lo, hi, owner, s_lo, s_hi = (np.concatenate(v) for v in zip(*parts))
+    lo, hi, owner, s_lo, s_hi, v_lo, v_hi = (np.concatenate(v) for v in zip(*parts))
     if owner.size:
         flat_args = [np.broadcast_to(a, lead + (1,)).reshape(-1)[owner] for a in args]
-        slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
-        root = bracket_root(slope, lo, hi, flat_args, f_lo=s_lo, f_hi=s_hi)
-        value = fun(root, *flat_args)[0]
+        if newton:
+            root, value = newton_maximum(fun, lo, hi, v_lo, v_hi, s_lo, s_hi, flat_args)
+        else:
+            slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
+            root = bracket_root(slope, lo, hi, flat_args, f_lo=s_lo, f_hi=s_hi)
+            value = fun(root, *flat_args)[0]
         np.fmax.at(best, owner, value)
         won = value == best[owner]          # the winning root of each curve (ties: any)
         where[owner[won]] = root[won]
     return best.reshape(lead), where.reshape(lead)
+
+
+def newton_maximum(fun: Curve, lo: np.ndarray, hi: np.ndarray, v_lo: np.ndarray,
+                   v_hi: np.ndarray, s_lo: np.ndarray, s_hi: np.ndarray,
+                   args: Sequence[np.ndarray] = (), iterations: int = 60,
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """(x, value) of the maximum of each curve in its cell [lo, hi], across which its slope
+    turns from rising (``s_lo`` > 0) to falling (``s_hi`` ≤ 0); 1-D arrays.
+
+    ``fun(x, *args)`` returns (value, slope, slope of the slope). The start is the
+    top of the cubic through the cell's end values and slopes (within ~1e-5 of the
+    maximum on a 64-sample cycle, against ~1e-3 for the secant), refined by Newton's
+    method on the slope, which then gains a factor of ~1e-5 a step: three or four
+    evaluations where the bracketed search takes six and one more for the value.
+    The bracket is kept: a step that would leave it bisects it instead. Done when
+    a step is within 1e-12·(1 + |x|), as for :func:`bracket_root`; x is then
+    the last point evaluated (within that of the zero, so its value is the
+    maximum's to ~1e-24 relative) and the value is fun's there.
+    """
+    a, b = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    args = [np.broadcast_to(np.asarray(v), a.shape) for v in args]
+    x = a + (b - a) * _cubic_top(v_lo, v_hi, s_lo * (b - a), s_hi * (b - a))
+    root, value = x.copy(), np.full(a.shape, np.nan)
+    live = np.arange(a.size)
+    part = list(args)
+    for _ in range(iterations):
+        if live.size == 0:
+            break
+        v, g, curve = fun(x, *part)
+        root[live], value[live] = x, v
+        rising = g > 0.0
+        a, b = np.where(rising, x, a), np.where(rising, b, x)     # the zero stays inside
+        with np.errstate(all="ignore"):
+            step = -g / curve
+        ahead = x + step
+        inside = (ahead > a) & (ahead < b)                        # False for NaN
+        tol = 1e-12 * (1.0 + np.abs(x))
+        done = (np.abs(step) <= tol) | (g == 0.0) | ~(b - a > tol)
+        x = np.where(inside, ahead, 0.5 * (a + b))
+        if done.any():
+            keep = ~done
+            live, x, a, b = live[keep], x[keep], a[keep], b[keep]
+            part = [p[keep] for p in part]
+    return root, value
+
+
+def _cubic_top(v0, v1, m0, m1):
+    """Where in [0, 1] the cubic with values v0, v1 and slopes m0 > 0 ≥ m1 at 0 and 1 (per
+    unit of t) peaks: the root of its slope a·t² + b·t + c in [0, 1]; the secant's
+    zero of the slope where the cubic gives none (a NaN or a root outside)."""
+    a = 3.0 * (m0 + m1) + 6.0 * (v0 - v1)
+    b = 6.0 * (v1 - v0) - 4.0 * m0 - 2.0 * m1
+    with np.errstate(all="ignore"):
+        root = np.sqrt(b * b - 4.0 * a * m0)
+        big = -0.5 * (b + np.copysign(root, b))              # the stable pair of roots
+        first, second = big / a, m0 / big
+        secant = m0 / (m0 - m1)
+    t = np.where((first >= 0.0) & (first <= 1.0), first, second)
+    t = np.where((t >= 0.0) & (t <= 1.0), t, secant)
+    return np.where((t >= 0.0) & (t <= 1.0), t, 0.5)
 
 
 def _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi):

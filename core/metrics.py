@@ -20,7 +20,7 @@ from .designs import Designs
 from .extrema import bracket_root, grid_argmax
 from .geometry import Design
 from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, Rates, check_rpms, pressure_angle,
-                         ram_rates, rates_at, rpm_to_omega, shape_at, tip_rates)
+                         ram_rates, rates4_at, rates_at, rpm_to_omega, shape_at, tip_rates)
 
 
 @dataclass(frozen=True)
@@ -139,18 +139,15 @@ def _specials(d: Designs) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _ram_curves(beta, quantity, crank, frame, lever, guide, rod, *, side):
-    """(value, slope d/dβ) of dCx/dφ, −dCx/dφ or |d²Cx/dφ²| (``quantity`` 0, 1, 2) at β."""
+    """(value, slope d/dβ, the slope's d/dβ) of dCx/dφ, −dCx/dφ or |d²Cx/dφ²| (``quantity``
+    0, 1, 2) at β, for Newton's method on the slope (:func:`core.extrema.newton_maximum`)."""
     d = Designs(crank, frame, lever, guide, None if side is None else rod,
                 "trailing" if side is None else side)
-    r = rates_at(d, np.cos(beta), np.sin(beta))
-    return _pick(quantity, r)
-
-
-def _pick(quantity, r):
-    # Quantity 0: dCx/dφ; 1: −dCx/dφ; 2: |d²Cx/dφ²|. Slopes are d/dβ = −d/dφ.
+    ram1, ram2, ram3, ram4 = rates4_at(d, np.cos(beta), np.sin(beta))
+    # Quantity 0: dCx/dφ; 1: −dCx/dφ; 2: |d²Cx/dφ²|. d/dβ = −d/dφ.
     sign = np.where(quantity == 0, 1.0, np.where(quantity == 1, -1.0, 0.0))
-    size = np.where(quantity == 2, np.sign(r.ram2), 0.0)
-    return sign * r.ram1 + size * r.ram2, -sign * r.ram2 - size * r.ram3
+    size = np.where(quantity == 2, np.sign(ram2), 0.0)
+    return (sign * ram1 + size * ram2, -sign * ram2 - size * ram3, sign * ram3 + size * ram4)
 
 
 def _chunk_peaks(d: Designs) -> CyclePeaks:
@@ -213,14 +210,14 @@ def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray
     rates = type(samples[0])(*(np.concatenate(v, axis=-1) for v in zip(*samples)))
     quantity = np.arange(3.0)[:, None, None]
     size = np.sign(rates.ram2)
-    values = np.stack([rates.ram1, -rates.ram1, size * rates.ram2])       # as _pick, all at once
+    values = np.stack([rates.ram1, -rates.ram1, size * rates.ram2])  # as _ram_curves, all at once
     slopes = np.stack([-rates.ram2, rates.ram2, -size * rates.ram3])
     args = (quantity,) + tuple(v[None] for v in (col.crank, col.frame, col.lever, col.guide,
                                                  col.crank if d.rod is None else col.rod))
     side = None if d.rod is None else d.rod_side
     x = np.concatenate(beta, axis=-1)[None] if len(beta) > 1 else uniform
     peaks, where = grid_argmax(lambda t, *a: _ram_curves(t, *a, side=side), x, values, slopes,
-                               args=args, segments=segments)
+                               args=args, segments=segments, newton=True)
     return peaks, where, samples[0].ram1[..., ::4] if fine else samples[0].ram1
 
 
