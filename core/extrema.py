@@ -70,12 +70,17 @@ def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarra
         # A cell ranks by its higher end: a sharp peak just beside the best sample lies in
         # the cell that sample ends, whatever its other end (a tangent bound cannot vouch for
         # a cell whose curve is convex, so the best sample's cell must rank first).
-        score = np.where((s[..., :-1] > 0.0) & (s[..., 1:] <= 0.0),
-                         np.maximum(v[..., :-1], v[..., 1:]), -np.inf)
+        # Written in place (one float pass for the maxima, one for the rest): each pass over
+        # a sweep chunk's grid costs about as much as a step of the root search.
+        score = np.empty(v.shape[:-1] + (m if period > 0.0 else max(m - 1, 0),))
+        cell = np.empty(score.shape, dtype=bool)
+        rising, falling = s > 0.0, s <= 0.0              # both False for NaN
+        np.maximum(v[..., :-1], v[..., 1:], out=score[..., :m - 1])
+        np.logical_and(rising[..., :-1], falling[..., 1:], out=cell[..., :m - 1])
         if period > 0.0:
-            wrap = (s[..., -1:] > 0.0) & (s[..., :1] <= 0.0)
-            score = np.concatenate([score, np.where(wrap, np.maximum(v[..., -1:], v[..., :1]), -np.inf)],
-                                   axis=-1)
+            np.maximum(v[..., -1:], v[..., :1], out=score[..., m - 1:])
+            np.logical_and(rising[..., -1:], falling[..., :1], out=cell[..., m - 1:])
+        np.copyto(score, -np.inf, where=~cell)
         for k in range(min(candidates, score.shape[-1])):   # the best few, by repeated argmax
             j = np.argmax(score, axis=-1)[..., None]
             found = np.isfinite(np.take_along_axis(score, j, axis=-1))[..., 0]

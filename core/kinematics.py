@@ -299,6 +299,13 @@ def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarra
     return ram_rates(design, *tip_rates(design, cos_beta, sin_beta))
 
 
+def ram_velocity(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray,
+                 ) -> np.ndarray:
+    """dCx/dφ alone, mm/rad: :func:`rates_at`'s first rate by the same arithmetic, without
+    the two higher ones (the dead points' root search needs no more)."""
+    return _ram_terms(design, _tip_terms(design, _lever_terms(design, cos_beta, sin_beta))).c1
+
+
 def tip_rates(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray,
               ) -> tuple[_Tip, np.ndarray, np.ndarray]:
     """The lever tip B and its first three φ-derivatives (B, B′, B″, then B‴x, −B‴y), which

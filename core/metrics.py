@@ -20,7 +20,8 @@ from .designs import Designs
 from .extrema import bracket_root, grid_argmax
 from .geometry import Design
 from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, Rates, check_rpms, pressure_angle,
-                         ram_rates, rates4_at, rates_at, rpm_to_omega, shape_at, tip_rates)
+                         ram_rates, ram_velocity, rates4_at, rates_at, rpm_to_omega, shape_at,
+                         tip_rates)
 
 
 @dataclass(frozen=True)
@@ -207,11 +208,18 @@ def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray
             start = uniform.size + j * _OFFSETS.size
             segments.append((start, start + _OFFSETS.size, 0.0))
             beta.append(base[:, j:j + 1] + _OFFSETS)
-    rates = type(samples[0])(*(np.concatenate(v, axis=-1) for v in zip(*samples)))
+    rates = samples[0] if len(samples) == 1 else \
+        type(samples[0])(*(np.concatenate(v, axis=-1) for v in zip(*samples)))
     quantity = np.arange(3.0)[:, None, None]
-    size = np.sign(rates.ram2)
-    values = np.stack([rates.ram1, -rates.ram1, size * rates.ram2])  # as _ram_curves, all at once
-    slopes = np.stack([-rates.ram2, rates.ram2, -size * rates.ram3])
+    # As _ram_curves, all at once, each written in its row: dCx/dφ, −dCx/dφ, |d²Cx/dφ²|
+    # (= sign·d²Cx/dφ², bit for bit) and their slopes d/dβ.
+    values, slopes = np.empty((3,) + rates.ram1.shape), np.empty((3,) + rates.ram1.shape)
+    values[0], slopes[1] = rates.ram1, rates.ram2
+    np.negative(rates.ram1, out=values[1])
+    np.abs(rates.ram2, out=values[2])
+    np.negative(rates.ram2, out=slopes[0])
+    np.multiply(np.sign(rates.ram2), rates.ram3, out=slopes[2])
+    np.negative(slopes[2], out=slopes[2])
     args = (quantity,) + tuple(v[None] for v in (col.crank, col.frame, col.lever, col.guide,
                                                  col.crank if d.rod is None else col.rod))
     side = None if d.rod is None else d.rod_side
@@ -280,7 +288,7 @@ def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
     def rate(beta, crank, frame, lever, guide, rod):
         one = Designs(crank, frame, lever, guide, None if d.rod is None else rod, d.rod_side)
-        return rates_at(one, np.cos(beta), np.sin(beta)).ram1
+        return ram_velocity(one, np.cos(beta), np.sin(beta))
 
     # The closed form puts the dead points where the lever stands square to the crank
     # (β = π + θ/2 and −θ/2): a tight bracket there is used when the velocity does change
