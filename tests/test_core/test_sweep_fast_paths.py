@@ -197,3 +197,25 @@ def test_sweep_peaks_equal_the_bracketed_search_in_three_or_four_evaluations(mon
         np.testing.assert_allclose(a, b, rtol=2e-14, atol=0)
     for name in ("v_work_at", "v_return_at"):
         np.testing.assert_allclose(getattr(newton, name), getattr(old, name), rtol=0, atol=1e-10)
+
+
+def test_reasons_read_each_rule_flattened_once(monkeypatch):
+    """Verdict.error reads a rule's values (and a message's numbers) from arrays flattened
+    once per rule, not once per invalid design; the errors are those of the designs alone."""
+    from core import designs as designs_module
+    from core.geometry import synthesize
+    k, stroke = np.meshgrid(np.linspace(1.05, 4.95, 40), np.linspace(150.0, 600.0, 30))
+    _, verdict = designs_module.synthesize_many(100.0, k, stroke, rod_ratio=0.3)  # 2-D
+    bad = np.flatnonzero(~verdict.ok.reshape(-1))
+    assert bad.size > 300
+    calls = []
+    broadcast = np.broadcast_to
+    monkeypatch.setattr(designs_module.np, "broadcast_to",
+                        lambda *a, **kw: calls.append(1) or broadcast(*a, **kw))
+    errors = [verdict.error(int(i)) for i in bad]
+    monkeypatch.undo()
+    assert len(calls) <= 2 * len(verdict.rules)
+    for i in bad[::17]:
+        with pytest.raises(Exception) as single:
+            synthesize(100.0, float(k.reshape(-1)[i]), float(stroke.reshape(-1)[i]), rod_ratio=0.3)
+        assert str(single.value) == str(errors[list(bad).index(i)])
