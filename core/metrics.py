@@ -19,9 +19,9 @@ import numpy as np
 from .designs import Designs
 from .extrema import bracket_root, grid_argmax
 from .geometry import Design
-from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, Rates, check_rpms, pressure_angle,
-                         ram_rates, ram_velocity, rates4_at, rates_at, rpm_to_omega, shape_at,
-                         tip_rates)
+from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rpm_to_omega,
+                         shape_at)
+from .rates import Rates, ram_rates, ram_velocity, rates4_at, rates_at, tip_rates
 
 
 @dataclass(frozen=True)
@@ -235,7 +235,7 @@ SHARE_BELOW = 0.25
 
 
 def shared_rates(col: Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
-    """:func:`~core.kinematics.rates_at` of designs ``col`` (shape (n, 1)) at samples shared
+    """:func:`~core.rates.rates_at` of designs ``col`` (shape (n, 1)) at samples shared
     by all of them, the lever tip's terms computed once per distinct (L1, L2, L3).
 
     A sweep of the rod and the guide, the usual question once K and the stroke are fixed,
