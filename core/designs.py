@@ -121,6 +121,13 @@ class _Rule:
     parameter: str
     value: np.ndarray
     allowed: str | Callable[[int], str]
+    flat: list = field(default_factory=list, repr=False, compare=False)   # values, once
+
+    def values(self, shape: tuple[int, ...]) -> "_flat":
+        """The rule's values broadcast to the designs' shape, by flat index."""
+        if not self.flat:
+            self.flat.append(_flat(self.value, shape))
+        return self.flat[0]
 
 
 @dataclass
@@ -151,7 +158,7 @@ class Verdict:
         if code == 0:
             return None
         rule = self.rules[code - 1]
-        value = np.broadcast_to(rule.value, self.failed.shape).reshape(-1)[index]
+        value = rule.values(self.failed.shape)[index]
         value = value.item() if isinstance(value, np.generic) else value
         allowed = rule.allowed if isinstance(rule.allowed, str) else rule.allowed(index)
         return DesignError(rule.parameter, value, allowed)
@@ -163,8 +170,21 @@ class Verdict:
             raise self.error(int(bad[0]))  # type: ignore[misc]
 
 
-def _flat(values: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
-    return np.broadcast_to(values, shape).reshape(-1)
+class _flat:
+    """``values`` broadcast to ``shape`` and read by a flat index; flattened once, on the
+    first read. A rule's message reads one value per invalid design: flattening for each
+    read (``np.broadcast_to`` every time) made a reason 8.9 µs instead of 3.7 µs, 0.20 s
+    instead of 0.08 s for the 21 963 invalid designs in one block (36 363 designs) of
+    ``shaper sweep --crank 100 --K 1.4 --stroke 300 --rod-ratio 0.3 --vary K=1.05:4.95:300
+    --vary rod-ratio=0.2:1.2:300``."""
+
+    def __init__(self, values, shape: tuple[int, ...]) -> None:
+        self.values, self.shape, self.flat = values, shape, None
+
+    def __getitem__(self, index):
+        if self.flat is None:
+            self.flat = np.broadcast_to(self.values, self.shape).reshape(-1)
+        return self.flat[index]
 
 
 def check_range(verdict: Verdict, name: str, value: np.ndarray, low: float, high: float,
@@ -225,11 +245,13 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         need = 2.0 * (crank + frame) * half
         too_short = lever < crank + frame
     verdict.check("time_ratio", half < smallest, time_ratio,
-                  lambda i: f"must be ≥ {round_text(_flat(k_min, shape)[i])} for this crank and "
-                            f"stroke, so that the frame and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
+                  lambda i, at=_flat(k_min, shape):
+                      f"must be ≥ {round_text(at[i])} for this crank and "
+                      f"stroke, so that the frame and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
     verdict.check("stroke", too_short, stroke,
-                  lambda i: f"must be ≥ {_flat(need, shape)[i]:.1f} mm for this crank and K, "
-                            "so that the crank pin stays on the lever")
+                  lambda i, at=_flat(need, shape):
+                      f"must be ≥ {at[i]:.1f} mm for this crank and K, "
+                      "so that the crank pin stays on the lever")
     return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
 
 
@@ -309,12 +331,14 @@ def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) ->
     """K = (π + θ)/(π − θ) with sin(θ/2) = L1/L2 must stay ≤ 5, like a synthesized K."""
     shape = verdict.failed.shape
     verdict.check("crank", crank >= frame, crank,
-                  lambda i: f"must be shorter than the frame O2O4 ({_flat(frame, shape)[i]:.6g} mm)")
+                  lambda i, at=_flat(frame, shape):
+                      f"must be shorter than the frame O2O4 ({at[i]:.6g} mm)")
     with np.errstate(all="ignore"):
         too_long = crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12)
     verdict.check("crank", too_long, crank,
-                  lambda i: f"must be ≤ {round_text(MAX_CRANK_RATIO * _flat(frame, shape)[i], down=True)}"
-                            f" mm (0.866·L2), so that the time ratio K stays ≤ {MAX_TIME_RATIO:g}")
+                  lambda i, at=_flat(frame, shape):
+                      f"must be ≤ {round_text(MAX_CRANK_RATIO * at[i], down=True)}"
+                      f" mm (0.866·L2), so that the time ratio K stays ≤ {MAX_TIME_RATIO:g}")
 
 
 def check_designs(verdict: Verdict, d: Designs) -> None:
@@ -329,15 +353,18 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
         reach = d.frame + d.crank
         tip_low = d.lever * np.sqrt(1.0 - np.minimum(d.crank / d.frame, 1.0) ** 2)  # L3·cos(θ/2)
     verdict.check("lever", d.lever < reach, d.lever,
-                  lambda i: f"must be ≥ L2 + L1 = {_flat(reach, shape)[i]:.6g} mm, "
-                            "so that the crank pin stays on the lever")
+                  lambda i, at=_flat(reach, shape):
+                      f"must be ≥ L2 + L1 = {at[i]:.6g} mm, "
+                      "so that the crank pin stays on the lever")
     verdict.check("guide", d.guide <= reach, d.guide,
-                  lambda i: f"must be > L2 + L1 = {_flat(reach, shape)[i]:.6g} mm above the lever "
-                            "pivot, so that the ram clears the crank")
+                  lambda i, at=_flat(reach, shape):
+                      f"must be > L2 + L1 = {at[i]:.6g} mm above the lever "
+                      "pivot, so that the ram clears the crank")
     if d.rod is None:
         verdict.check("guide", d.guide > d.lever, d.guide,
-                      lambda i: f"must be ≤ the lever length {_flat(d.lever, shape)[i]:.6g} mm: "
-                                "the block on the lever tip cannot reach a higher guide")
+                      lambda i, at=_flat(d.lever, shape):
+                          f"must be ≤ the lever length {at[i]:.6g} mm: "
+                          "the block on the lever tip cannot reach a higher guide")
         return
     check_length(verdict, "rod", d.rod)
     # The rod's rise |d| = |guide − By| is largest at a limit position (By lowest) or at
@@ -345,8 +372,9 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     with np.errstate(all="ignore"):
         need = np.maximum(d.guide - tip_low, d.lever - d.guide) / math.sqrt(1.0 - ROD_MARGIN ** 2)
     verdict.check("rod", d.rod <= need, d.rod,
-                  lambda i: f"must be > {_flat(need, shape)[i]:.6g} mm to reach the guide line "
-                            "over the whole cycle")
+                  lambda i, at=_flat(need, shape):
+                      f"must be > {at[i]:.6g} mm to reach the guide line "
+                      "over the whole cycle")
     # r·cos ψ − s·d·sin ψ ≥ r_min·cos(θ/2) − |d|_max·sin(θ/2): where this bound already
     # clears the margin the exact minimum is not needed (it changes no verdict).
     with np.errstate(all="ignore"):

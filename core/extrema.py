@@ -4,7 +4,8 @@ A level-0 numerical helper (numpy and scipy only; it knows nothing about
 mechanisms). A grid only *brackets* an extremum: a local maximum lies between
 two neighbouring samples where the curve's analytic slope turns from rising
 to falling. The best few such cells per curve are polished by finding the
-slope's zero there (a bracketed root, vectorized over all curves), and the
+slope's zero there (a bracketed root, or Newton's method kept inside the cell
+when the slope's own slope is known; vectorized over all curves), and the
 curve's value at that zero is the extremum. A reported extremum is therefore
 never the largest sample of a grid, and never smaller than it.
 
@@ -35,11 +36,16 @@ def grid_maximum(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarr
 def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarray,
                 args: Sequence[np.ndarray] = (),
                 segments: Sequence[tuple[int, int, float]] | None = None,
-                candidates: int = CANDIDATES) -> tuple[np.ndarray, np.ndarray]:
+                candidates: int = CANDIDATES, newton: bool = False,
+                ) -> tuple[np.ndarray, np.ndarray]:
     """(largest value, x where it lies) of each curve, polished from samples; each of
     shape values.shape[:-1]. The x is a polished slope zero, or the best sample when no
     polished one exceeds it (a maximum at a segment end); it may lie beyond the
     samples' range by up to one period of a wrapping segment.
+
+    With ``newton``, ``fun`` also returns the slope's own slope (value, slope,
+    curvature) and each cell is polished by :func:`newton_maximum` instead of
+    :func:`bracket_root` on the slope: three or four evaluations instead of seven.
 
     ``fun(x, *args)`` returns the curve's value and slope d/dx at ``x`` (1-D
     arrays, args subset to match). ``x``, ``values`` and ``slopes`` (…, n) are
@@ -65,12 +71,17 @@ def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarra
         # A cell ranks by its higher end: a sharp peak just beside the best sample lies in
         # the cell that sample ends, whatever its other end (a tangent bound cannot vouch for
         # a cell whose curve is convex, so the best sample's cell must rank first).
-        score = np.where((s[..., :-1] > 0.0) & (s[..., 1:] <= 0.0),
-                         np.maximum(v[..., :-1], v[..., 1:]), -np.inf)
+        # Written in place (one float pass for the maxima, one for the rest): each pass over
+        # a sweep chunk's grid costs about as much as a step of the root search.
+        score = np.empty(v.shape[:-1] + (m if period > 0.0 else max(m - 1, 0),))
+        cell = np.empty(score.shape, dtype=bool)
+        rising, falling = s > 0.0, s <= 0.0              # both False for NaN
+        np.maximum(v[..., :-1], v[..., 1:], out=score[..., :m - 1])
+        np.logical_and(rising[..., :-1], falling[..., 1:], out=cell[..., :m - 1])
         if period > 0.0:
-            wrap = (s[..., -1:] > 0.0) & (s[..., :1] <= 0.0)
-            score = np.concatenate([score, np.where(wrap, np.maximum(v[..., -1:], v[..., :1]), -np.inf)],
-                                   axis=-1)
+            np.maximum(v[..., -1:], v[..., :1], out=score[..., m - 1:])
+            np.logical_and(rising[..., -1:], falling[..., :1], out=cell[..., m - 1:])
+        np.copyto(score, -np.inf, where=~cell)
         for k in range(min(candidates, score.shape[-1])):   # the best few, by repeated argmax
             j = np.argmax(score, axis=-1)[..., None]
             found = np.isfinite(np.take_along_axis(score, j, axis=-1))[..., 0]
@@ -82,31 +93,97 @@ def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarra
             left, right = index + (start + cell,), index + (start + np.where(inner, cell + 1, 0),)
             lo, hi = x[left], x[right] + np.where(inner, 0.0, period)
             s_lo, s_hi = slopes[left], slopes[right]
-            bound = _tangent_bound(lo, hi, values[left], values[right], s_lo, s_hi)
+            v_lo, v_hi = values[left], values[right]
+            bound = _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi)
             owner = np.ravel_multi_index(index, lead) if lead else np.zeros(cell.size, dtype=int)
             while len(picks) <= k:
                 picks.append([])
-            picks[k].append((lo, hi, owner, bound, s_lo, s_hi))
+            picks[k].append((lo, hi, owner, bound, s_lo, s_hi, v_lo, v_hi))
     # The best cell of each curve, and a lower-ranked cell only if its value could exceed
     # the best sample (its upper bound from the tangents at its ends), all polished at once:
     # one root search, whose fixed cost per step dwarfs its cost per bracket.
     parts = []
     for rank, found in enumerate(picks):
-        lo, hi, owner, bound, s_lo, s_hi = (np.concatenate(v) for v in zip(*found))
+        lo, hi, owner, bound, s_lo, s_hi, v_lo, v_hi = (np.concatenate(v) for v in zip(*found))
         keep = bound > best[owner] if rank else slice(None)
-        parts.append((lo[keep], hi[keep], owner[keep], s_lo[keep], s_hi[keep]))
+        parts.append((lo[keep], hi[keep], owner[keep], s_lo[keep], s_hi[keep], v_lo[keep],
+                      v_hi[keep]))
     if not parts:
         return best.reshape(lead), where.reshape(lead)
-    lo, hi, owner, s_lo, s_hi = (np.concatenate(v) for v in zip(*parts))
+    lo, hi, owner, s_lo, s_hi, v_lo, v_hi = (np.concatenate(v) for v in zip(*parts))
     if owner.size:
         flat_args = [np.broadcast_to(a, lead + (1,)).reshape(-1)[owner] for a in args]
-        slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
-        root = bracket_root(slope, lo, hi, flat_args, f_lo=s_lo, f_hi=s_hi)
-        value = fun(root, *flat_args)[0]
+        if newton:
+            root, value = newton_maximum(fun, lo, hi, v_lo, v_hi, s_lo, s_hi, flat_args)
+        else:
+            slope = lambda t, *a: fun(t, *a)[1]  # noqa: E731
+            root = bracket_root(slope, lo, hi, flat_args, f_lo=s_lo, f_hi=s_hi)
+            value = fun(root, *flat_args)[0]
         np.fmax.at(best, owner, value)
         won = value == best[owner]          # the winning root of each curve (ties: any)
         where[owner[won]] = root[won]
     return best.reshape(lead), where.reshape(lead)
+
+
+def newton_maximum(fun: Curve, lo: np.ndarray, hi: np.ndarray, v_lo: np.ndarray,
+                   v_hi: np.ndarray, s_lo: np.ndarray, s_hi: np.ndarray,
+                   args: Sequence[np.ndarray] = (), iterations: int = 60,
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """(x, value) of the maximum of each curve in its cell [lo, hi], across which its slope
+    turns from rising (``s_lo`` > 0) to falling (``s_hi`` ≤ 0); 1-D arrays.
+
+    ``fun(x, *args)`` returns (value, slope, slope of the slope). The start is the
+    top of the cubic through the cell's end values and slopes (for the sweep's ram
+    peaks on 64 samples a cycle: a median 3e-6 rad from the maximum, at most 4e-4,
+    against 2e-4 and 4e-3 for the secant's zero of the slope), refined by Newton's
+    method on the slope: three evaluations where the bracketed search took six and
+    one more for the value.
+    The bracket is kept: a step that would leave it bisects it instead. Done when
+    a step is within 1e-12·(1 + |x|), as for :func:`bracket_root`; x is then
+    the last point evaluated (within that of the zero, so its value is the
+    maximum's to ~1e-24 relative) and the value is fun's there.
+    """
+    a, b = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    args = [np.broadcast_to(np.asarray(v), a.shape) for v in args]
+    x = a + (b - a) * _cubic_top(v_lo, v_hi, s_lo * (b - a), s_hi * (b - a))
+    root, value = x.copy(), np.full(a.shape, np.nan)
+    live = np.arange(a.size)
+    part = list(args)
+    for _ in range(iterations):
+        if live.size == 0:
+            break
+        v, g, curve = fun(x, *part)
+        root[live], value[live] = x, v
+        rising = g > 0.0
+        a, b = np.where(rising, x, a), np.where(rising, b, x)     # the zero stays inside
+        with np.errstate(all="ignore"):
+            step = -g / curve
+        ahead = x + step
+        inside = (ahead > a) & (ahead < b)                        # False for NaN
+        tol = 1e-12 * (1.0 + np.abs(x))
+        done = (np.abs(step) <= tol) | (g == 0.0) | ~(b - a > tol)
+        x = np.where(inside, ahead, 0.5 * (a + b))
+        if done.any():
+            keep = ~done
+            live, x, a, b = live[keep], x[keep], a[keep], b[keep]
+            part = [p[keep] for p in part]
+    return root, value
+
+
+def _cubic_top(v0, v1, m0, m1):
+    """Where in [0, 1] the cubic with values v0, v1 and slopes m0 > 0 ≥ m1 at 0 and 1 (per
+    unit of t) peaks: the root of its slope a·t² + b·t + c in [0, 1]; the secant's
+    zero of the slope where the cubic gives none (a NaN or a root outside)."""
+    a = 3.0 * (m0 + m1) + 6.0 * (v0 - v1)
+    b = 6.0 * (v1 - v0) - 4.0 * m0 - 2.0 * m1
+    with np.errstate(all="ignore"):
+        root = np.sqrt(b * b - 4.0 * a * m0)
+        big = -0.5 * (b + np.copysign(root, b))              # the stable pair of roots
+        first, second = big / a, m0 / big
+        secant = m0 / (m0 - m1)
+    t = np.where((first >= 0.0) & (first <= 1.0), first, second)
+    t = np.where((t >= 0.0) & (t <= 1.0), t, secant)
+    return np.where((t >= 0.0) & (t <= 1.0), t, 0.5)
 
 
 def _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi):

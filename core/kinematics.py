@@ -285,40 +285,6 @@ def _ram_terms(design, tip: _Tip) -> _Ram:
     return _Ram(joint, bx1 + sign * r1, bx2 + sign * r2, d, by1, by2, r, r1, r2)
 
 
-class Rates(NamedTuple):
-    """The φ-derivatives the cycle's peaks are taken from (no positions)."""
-
-    ram1: np.ndarray     # dCx/dφ, mm/rad
-    ram2: np.ndarray     # d²Cx/dφ², mm/rad²
-    ram3: np.ndarray     # d³Cx/dφ³, mm/rad³: where it vanishes, |d²Cx/dφ²| peaks
-
-
-def rates_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
-    """The ram's rates only (three φ-derivatives), by the closed form of :func:`shape_at`.
-
-    The third derivative is one more differentiation of the same closed
-    form: ψ‴ = −L1·L2(L2² − L1²)(q·sin β + 4·L1·L2·cos²β)/q³ (see
-    ``_lever_terms``); the tip B = L3·u gives B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u);
-    and the rod's reach r² = L4² − d² gives r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r.
-    """
-    lv = _lever_terms(design, cos_beta, sin_beta)
-    tip = _tip_terms(design, lv)
-    ram = _ram_terms(design, tip)
-    (ux, uy), w1, w2 = lv.u, lv.lever1, lv.lever2
-    cube = w1 * w1 * w1
-    l1, l2 = design.crank, design.frame
-    # ψ‴ = d/dφ of ψ″ = −L1·L2(L2² − L1²)·cos β/q²:
-    w3 = -(l1 * l2 * (l2 * l2 - l1 * l1)) * (sin_beta * lv.q + (4.0 * l1 * l2) * cos_beta * cos_beta) \
-        / (lv.q * lv.q * lv.q)
-    l3 = design.lever
-    bx3 = l3 * ((w3 - cube) * uy - 3.0 * w1 * w2 * ux)
-    if design.rod is None:
-        return Rates(ram.c1, ram.c2, bx3)
-    d3 = l3 * ((w3 - cube) * ux + 3.0 * w1 * w2 * uy)   # d‴ = −B‴y
-    r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.rise1 * ram.rise2 + ram.depth * d3) / ram.reach
-    return Rates(ram.c1, ram.c2, bx3 + design.rod_sign * r3)
-
-
 # Offsets (rad) of samples crowding geometrically toward the angles where a rod variant's
 # curves can change sharply (see sharp_angles), down to ~1e-5 rad.
 CROWD_OFFSETS = np.concatenate([-(0.05 * 5.0 ** -np.arange(0, 7)), [0.0],

@@ -19,8 +19,9 @@ import numpy as np
 from .designs import Designs
 from .extrema import bracket_root, grid_argmax
 from .geometry import Design
-from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rates_at,
-                         rpm_to_omega, shape_at)
+from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rpm_to_omega,
+                         shape_at)
+from .rates import Rates, ram_rates, ram_velocity, rates4_at, rates_at, tip_rates
 
 
 @dataclass(frozen=True)
@@ -139,18 +140,15 @@ def _specials(d: Designs) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _ram_curves(beta, quantity, crank, frame, lever, guide, rod, *, side):
-    """(value, slope d/dβ) of dCx/dφ, −dCx/dφ or |d²Cx/dφ²| (``quantity`` 0, 1, 2) at β."""
+    """(value, slope d/dβ, the slope's d/dβ) of dCx/dφ, −dCx/dφ or |d²Cx/dφ²| (``quantity``
+    0, 1, 2) at β, for Newton's method on the slope (:func:`core.extrema.newton_maximum`)."""
     d = Designs(crank, frame, lever, guide, None if side is None else rod,
                 "trailing" if side is None else side)
-    r = rates_at(d, np.cos(beta), np.sin(beta))
-    return _pick(quantity, r)
-
-
-def _pick(quantity, r):
-    # Quantity 0: dCx/dφ; 1: −dCx/dφ; 2: |d²Cx/dφ²|. Slopes are d/dβ = −d/dφ.
+    ram1, ram2, ram3, ram4 = rates4_at(d, np.cos(beta), np.sin(beta))
+    # Quantity 0: dCx/dφ; 1: −dCx/dφ; 2: |d²Cx/dφ²|. d/dβ = −d/dφ.
     sign = np.where(quantity == 0, 1.0, np.where(quantity == 1, -1.0, 0.0))
-    size = np.where(quantity == 2, np.sign(r.ram2), 0.0)
-    return sign * r.ram1 + size * r.ram2, -sign * r.ram2 - size * r.ram3
+    size = np.where(quantity == 2, np.sign(ram2), 0.0)
+    return (sign * ram1 + size * ram2, -sign * ram2 - size * ram3, sign * ram3 + size * ram4)
 
 
 def _chunk_peaks(d: Designs) -> CyclePeaks:
@@ -196,7 +194,7 @@ def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray
     crowd toward those angles."""
     col = d.column()
     uniform = _BETA_FINE if fine else _BETA
-    samples = [rates_at(col, np.cos(uniform), np.sin(uniform))]
+    samples = [shared_rates(col, np.cos(uniform), np.sin(uniform))]
     segments = [(0, uniform.size, 2.0 * math.pi)]
     beta = [np.broadcast_to(uniform, samples[0].ram1.shape)]
     if specials is not None:
@@ -210,18 +208,63 @@ def _ram_peaks(d: Designs, fine: bool, specials) -> tuple[np.ndarray, np.ndarray
             start = uniform.size + j * _OFFSETS.size
             segments.append((start, start + _OFFSETS.size, 0.0))
             beta.append(base[:, j:j + 1] + _OFFSETS)
-    rates = type(samples[0])(*(np.concatenate(v, axis=-1) for v in zip(*samples)))
+    rates = samples[0] if len(samples) == 1 else \
+        type(samples[0])(*(np.concatenate(v, axis=-1) for v in zip(*samples)))
     quantity = np.arange(3.0)[:, None, None]
-    size = np.sign(rates.ram2)
-    values = np.stack([rates.ram1, -rates.ram1, size * rates.ram2])       # as _pick, all at once
-    slopes = np.stack([-rates.ram2, rates.ram2, -size * rates.ram3])
+    # As _ram_curves, all at once, each written in its row: dCx/dφ, −dCx/dφ, |d²Cx/dφ²|
+    # (= sign·d²Cx/dφ², bit for bit) and their slopes d/dβ.
+    values, slopes = np.empty((3,) + rates.ram1.shape), np.empty((3,) + rates.ram1.shape)
+    values[0], slopes[1] = rates.ram1, rates.ram2
+    np.negative(rates.ram1, out=values[1])
+    np.abs(rates.ram2, out=values[2])
+    np.negative(rates.ram2, out=slopes[0])
+    np.multiply(np.sign(rates.ram2), rates.ram3, out=slopes[2])
+    np.negative(slopes[2], out=slopes[2])
     args = (quantity,) + tuple(v[None] for v in (col.crank, col.frame, col.lever, col.guide,
                                                  col.crank if d.rod is None else col.rod))
     side = None if d.rod is None else d.rod_side
     x = np.concatenate(beta, axis=-1)[None] if len(beta) > 1 else uniform
     peaks, where = grid_argmax(lambda t, *a: _ram_curves(t, *a, side=side), x, values, slopes,
-                               args=args, segments=segments)
+                               args=args, segments=segments, newton=True)
     return peaks, where, samples[0].ram1[..., ::4] if fine else samples[0].ram1
+
+
+# Share the lever tip's terms only where designs repeat L1, L2, L3 this often at least:
+# gathering them costs a pass per term, computing them a few dozen.
+SHARE_BELOW = 0.25
+
+
+def shared_rates(col: Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
+    """:func:`~core.rates.rates_at` of designs ``col`` (shape (n, 1)) at samples shared
+    by all of them, the lever tip's terms computed once per distinct (L1, L2, L3).
+
+    A sweep of the rod and the guide, the usual question once K and the stroke are fixed,
+    has one lever for all its designs: the tip's terms are then half the grid's arithmetic.
+    The same operations on the same numbers: the result is that of ``rates_at``, bit for bit.
+    """
+    keys = [col.crank[:, 0], col.frame[:, 0], col.lever[:, 0]]
+    n = keys[0].size
+    if n * SHARE_BELOW < 2.0:                       # one design (analyze) or a handful
+        return rates_at(col, cos_beta, sin_beta)
+    order = np.lexsort(keys[::-1])
+    new = np.ones(n, dtype=bool)
+    for key in keys:
+        ranked = key[order]
+        new[1:] &= ranked[1:] == ranked[:-1]
+    new = ~new
+    new[:1] = True
+    if np.count_nonzero(new) > SHARE_BELOW * n:
+        return rates_at(col, cos_beta, sin_beta)
+    first = order[new]                              # one design per distinct lever
+    group = np.empty(n, dtype=np.intp)
+    group[order] = np.cumsum(new) - 1
+    tip, bx3, d3 = tip_rates(col.take(first), cos_beta, sin_beta)
+    if first.size == 1:                             # views: nothing is copied
+        spread = lambda v: np.broadcast_to(v, v.shape[:-2] + (n, v.shape[-1]))  # noqa: E731
+    else:
+        spread = lambda v: v[..., group, :]  # noqa: E731
+    tip = type(tip)(*(spread(v) for v in tip))
+    return ram_rates(col, tip, spread(bx3), spread(d3))
 
 
 def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -245,7 +288,7 @@ def _dead_points(d: Designs, ram1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
     def rate(beta, crank, frame, lever, guide, rod):
         one = Designs(crank, frame, lever, guide, None if d.rod is None else rod, d.rod_side)
-        return rates_at(one, np.cos(beta), np.sin(beta)).ram1
+        return ram_velocity(one, np.cos(beta), np.sin(beta))
 
     # The closed form puts the dead points where the lever stands square to the crank
     # (β = π + θ/2 and −θ/2): a tight bracket there is used when the velocity does change

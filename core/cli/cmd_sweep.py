@@ -16,6 +16,7 @@ from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, gri
 from .common import (LOAD_OPTIONS, add_design_options, add_load_options, add_speed_options,
                      design_error_text, design_file, masses_from_args, number, option_name,
                      rpms_from_args, spec_from_args, spec_option)
+from .allocator import keep_freed_memory
 from .output import write_output
 
 HELP = "figures of many designs over varied parameters"
@@ -102,9 +103,11 @@ def figure_columns(ev: Evaluation) -> list[tuple[str, np.ndarray]]:
     """(column, values) of every figure, per design; NaN where undefined."""
     several = ev.rpm.size > 1
     tag = (lambda rpm: f"@{rpm:g}") if several else (lambda rpm: "")
+    with np.errstate(invalid="ignore"):     # an invalid crank ≥ frame has no θ (NaN, blank)
+        theta = np.degrees(ev.designs.theta)
     cols: list[tuple[str, np.ndarray]] = [
         ("K", ev.peaks.time_ratio), ("stroke_mm", ev.peaks.stroke_mm),
-        ("theta_deg", np.where(ev.valid.reshape(-1), np.degrees(ev.designs.theta), np.nan))]
+        ("theta_deg", np.where(ev.valid.reshape(-1), theta, np.nan))]
     for key in ("v_work_max_m_s", "v_return_max_m_s", "a_max_m_s2"):
         cols += [(key + tag(r), ev.figures[key][:, j]) for j, r in enumerate(ev.rpm)]
     pressure = ev.peaks.pressure_max
@@ -127,9 +130,13 @@ def reasons(ev: Evaluation, option: Callable[[str], str] = option_name) -> list[
     naming the option as ``option(parameter)`` does: as ``analyze`` of that design alone
     would (``--dims (L3)``, ``--guide``)."""
     out = [""] * ev.valid.size
-    for i in np.flatnonzero(~ev.valid.reshape(-1)):
-        error = ev.error(int(i))
-        out[i] = design_error_text(error, option(error.parameter))  # type: ignore[union-attr]
+    names: dict[str, str] = {}          # option(parameter), once per parameter
+    for i in np.flatnonzero(~ev.valid.reshape(-1)).tolist():
+        error = ev.error(i)
+        name = names.get(error.parameter)  # type: ignore[union-attr]
+        if name is None:
+            name = names[error.parameter] = option(error.parameter)  # type: ignore[union-attr]
+        out[i] = design_error_text(error, name)  # type: ignore[arg-type]
     return out
 
 
@@ -145,7 +152,7 @@ def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
     The numbers of a row are formatted together, by the vectorized "%.10g" of
     ``core.numtext``; only the joins with the text columns are per row."""
     valid = np.where(ev.valid.reshape(-1), "true", "false")
-    why = [_quote(r) for r in reasons(ev, option)]
+    why = [_quote(r) if r else r for r in reasons(ev, option)]    # "" for a valid design
     if not valid.size:
         return ""
     varied = _format_rows([values[PARAMETERS[n]] for n in names], valid.size)
@@ -202,6 +209,7 @@ def inputs(args: argparse.Namespace, with_count: bool):
 
 
 def run(args: argparse.Namespace) -> int:
+    keep_freed_memory()                     # its chunks' arrays are not faulted in anew
     spec, varied, rpms, masses = inputs(args, with_count=True)
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
     names = list(varied)

@@ -193,3 +193,16 @@ def test_optimize_says_when_the_optimum_sits_on_a_bound():
     assert "upper bound" in text and "widen the range" in text
     inside = json.loads(shaper(*args, "--vary", "guide=450:700", "--json").stdout)
     assert inside["on_bound"] == {} and 460 < inside["vary"]["guide"] < 690
+
+
+def test_a_crank_longer_than_the_frame_warns_nothing(tmp_path):
+    """Designs whose crank is not shorter than the frame are refused with a reason and no θ;
+    stderr stays empty (numpy's 'invalid value encountered in arcsin' was printed)."""
+    target = tmp_path / "s.csv"
+    run = shaper("sweep", "--dims", "100,300,350", "--vary", "crank=50:400:8", "--rpm", "40",
+                 "--csv", target)
+    assert run.returncode == 0 and run.stderr == ""
+    rows = list(csv.DictReader(target.open(encoding="utf-8")))
+    long = [r for r in rows if float(r["crank"]) >= 300.0]
+    assert long and all(r["valid"] == "false" and r["theta_deg"] == "" and "frame" in r["reason"]
+                        for r in long)
