@@ -190,13 +190,26 @@ def test_the_largest_request_streams_in_bounded_memory():
     assert int(peak_kb) < 500 * 1024, f"peak RSS {int(peak_kb) / 1024:.0f} MB in {elapsed} s"
 
 
-def test_progress_is_shown_on_a_terminal_for_a_long_run(tmp_path):
+def test_progress_is_shown_on_a_terminal_for_a_long_run():
+    """The run is made to last past the progress line's one-second delay by its reader,
+    not by its size: the CSV goes to a pipe nobody reads for 1.5 s, so the command waits
+    on a full pipe (it used to rely on a request just over a second long, which faster
+    formatting made too short)."""
+    import threading
+    import time
     master, slave = pty.openpty()
+    received = []
     try:
-        child = subprocess.Popen([sys.executable, "-m", "core", "curves", *SEED, "--step", "0.001",
-                                  "--rpm", "30", "60", "--csv", str(tmp_path / "c.csv")],
-                                 stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=slave)
+        child = subprocess.Popen([sys.executable, "-m", "core", "curves", *SEED, "--step", "0.01",
+                                  "--rpm", "30", "60", "--csv", "-"],
+                                 stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=slave)
         os.close(slave)
+
+        def slow_reader() -> None:
+            time.sleep(1.5)
+            received.append(len(child.stdout.read()))
+        reader = threading.Thread(target=slow_reader)
+        reader.start()
         seen = b""
         while True:
             ready, _, _ = select.select([master], [], [], 120)
@@ -210,13 +223,14 @@ def test_progress_is_shown_on_a_terminal_for_a_long_run(tmp_path):
                 break
             seen += chunk
         assert child.wait(timeout=120) == 0
+        reader.join(timeout=120)
     finally:
         os.close(master)
     text = seen.decode()
     percents = [int(p.split()[-1].rstrip("%")) for p in text.split("\r") if p.endswith("%")]
     assert percents and percents == sorted(percents) and "shaper: computing curves" in text
     assert text.endswith("\r") and text.split("\r")[-2].strip() == ""   # the line is erased
-    assert (tmp_path / "c.csv").stat().st_size > 0
+    assert received and received[0] > 0
 
 
 def test_progress_waits_a_second_and_needs_a_terminal():
