@@ -45,6 +45,8 @@ def main(argv: list[str] | None = None) -> int:
                         help="print the time to the first painted window and quit (for benchmarks)")
     args = parser.parse_args(argv)
 
+    from core.blas import limit_blas_threads
+    limit_blas_threads()
     _import_engine_first()
     from PySide6.QtCore import QSettings, QTimer
     from PySide6.QtWidgets import QApplication

@@ -25,9 +25,13 @@ from importlib import import_module
 from types import ModuleType
 from typing import Sequence
 
-from ..errors import DesignError, FileFormatError
-from .common import Parser, UsageError, VersionAction, design_error_text, fail
-from .output import GuardedStdout, OutputError, StdoutError, install_safe_output
+from ..blas import limit_blas_threads
+
+limit_blas_threads()        # before numpy, which .common imports
+
+from ..errors import DesignError, FileFormatError  # noqa: E402
+from .common import Parser, UsageError, VersionAction, design_error_text, fail  # noqa: E402
+from .output import GuardedStdout, OutputError, StdoutError, install_safe_output  # noqa: E402
 
 # Order is the order of ``shaper --help``.
 CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library")

@@ -18,6 +18,7 @@ from typing import Callable, Iterator, Sequence, TextIO
 import numpy as np
 
 from ..io import table_chunks, zero_scale
+from .allocator import keep_freed_memory
 from .output import write_output
 
 CHUNK_ANGLES = 16_384
@@ -100,5 +101,6 @@ def write_table(option: str, target: str, label: str, block: TableBlock, angles:
                 rpms: Sequence[float]) -> None:
     """The whole table as CSV to ``target`` (``-`` for stdout; see ``write_output``), block
     by block, with ``shaper: LABEL n%`` on a terminal."""
+    keep_freed_memory()             # each block's arrays are not faulted in anew
     with Progress(label, angles.size * len(rpms)) as progress:
         write_output(option, target, table_pieces(block, angles, rpms, progress))

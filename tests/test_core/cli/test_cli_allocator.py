@@ -1,11 +1,12 @@
-"""``shaper sweep`` keeps freed memory in the process (core.cli.allocator, issue 24)."""
+"""``shaper sweep``, ``curves`` and ``dynamics`` keep freed memory in the process
+(core.cli.allocator, issue 24)."""
 import platform
 import subprocess
 import sys
 
 import pytest
 
-from core.cli import allocator, cmd_sweep, main
+from core.cli import allocator, cmd_sweep, main, streaming
 
 GLIBC = platform.libc_ver()[0] == "glibc"
 
@@ -51,3 +52,13 @@ def test_sweep_keeps_freed_memory(monkeypatch, tmp_path):
     assert main(["sweep", "--crank", "100", "--K", "1.46", "--stroke", "312", "--vary",
                  "crank=90:110:3", "--rpm", "40", "--csv", str(out)]) == 0
     assert calls == [1] and len(out.read_text().splitlines()) == 4
+
+
+def test_streamed_tables_keep_freed_memory(monkeypatch, tmp_path):
+    """shaper curves and dynamics stream their tables block by block through write_table."""
+    calls = []
+    monkeypatch.setattr(streaming, "keep_freed_memory", lambda: calls.append(1) or True)
+    out = tmp_path / "curves.csv"
+    assert main(["curves", "--crank", "100", "--K", "1.4", "--stroke", "300", "--step", "10",
+                 "--csv", str(out)]) == 0
+    assert calls == [1] and len(out.read_text().splitlines()) == 1 + 2 * 37

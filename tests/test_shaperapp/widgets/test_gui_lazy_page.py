@@ -131,3 +131,24 @@ def test_the_first_screen_imports_and_builds_only_what_it_shows(tmp_path):
     modules, built = out.stdout.strip().splitlines()[-2:]
     assert modules == "[]"
     assert built in ("[]", "['polygons']")    # the vector diagrams' dock is laid out once, tabbed
+
+
+APP_PROBE = """
+import sys, shaperapp.app as app
+status = app.main(["--lang", "en", "--quit-after-show"])
+import os, numpy.linalg
+print(status, os.environ.get("OPENBLAS_NUM_THREADS"))
+"""
+
+
+def test_the_app_starts_numpy_with_one_blas_thread(tmp_path):
+    """shaperapp's main asks OpenBLAS for one thread before numpy loads (core.blas):
+    its idle worker threads spun for about 0.1 s of CPU at every start."""
+    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
+    env.update(QT_QPA_PLATFORM="offscreen", XDG_CONFIG_HOME=str(tmp_path), XDG_DATA_HOME=str(tmp_path))
+    out = subprocess.run([sys.executable, "-c", APP_PROBE], capture_output=True, text=True, env=env,
+                         timeout=120)
+    assert out.returncode == 0, out.stderr
+    lines = out.stdout.strip().splitlines()
+    assert lines[0].startswith("first window painted after ")
+    assert lines[-1] == "0 1"
