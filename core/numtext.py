@@ -133,10 +133,16 @@ def g10_rows(data: np.ndarray) -> str:
     mantissa[carry] = 10.0 ** (DIGITS - 1)
     exponent += carry
     # The ten digits looked up four, four and two at a time (as words, not byte by byte).
-    mantissa = mantissa.astype(np.int64)
-    mantissa[~usable] = 10 ** (DIGITS - 1)
-    high, rest = np.divmod(mantissa, 10 ** 6)
-    middle, low = np.divmod(rest, 100)
+    # The mantissa is a whole number below 10^10, exact in a double; so are these
+    # quotients (a quotient's rounding error, about 10^-16 of it, cannot reach the
+    # next whole number) and differences, and floating-point division is several
+    # times faster than numpy's 64-bit integer division.
+    mantissa[~usable] = 10.0 ** (DIGITS - 1)
+    high = np.floor(mantissa / 1e6)
+    rest = mantissa - high * 1e6
+    middle = np.floor(rest / 100.0)
+    low = (rest - middle * 100.0).astype(np.intp)
+    high, middle = high.astype(np.intp), middle.astype(np.intp)
     trailing = np.where(low != 0, _TRAILING2[low],
                         np.where(middle != 0, 2 + _TRAILING4[middle], 6 + _TRAILING4[high]))
     significant = DIGITS - trailing
@@ -148,16 +154,22 @@ def g10_rows(data: np.ndarray) -> str:
     # The cells' bytes are assembled sorted by layout, so that each layout fills a
     # contiguous block of fixed-width slots; then the slots are put back in order.
     order = np.argsort(key, kind="stable")
-    high, middle, low, exponent = (np.take(a, order) for a in (high, middle, low, exponent))
+    high, middle, low = (np.take(a, order) for a in (high, middle, low))
     ext = np.empty((size, _EXT), dtype=np.uint8)
     ext[:, 0:4].view(np.uint32)[:, 0] = _FOUR[high]
     ext[:, 4:8].view(np.uint32)[:, 0] = _FOUR[middle]
     ext[:, 8:10].view(np.uint16)[:, 0] = _TWO[low]
-    ext[:, _POINT], ext[:, _ZERO], ext[:, _MINUS], ext[:, _E] = ord("."), ord("0"), ord("-"), ord("e")
-    ext[:, _ESIGN] = np.where(exponent < 0, ord("-"), ord("+"))
-    shown = np.minimum(np.abs(exponent), 99)
-    ext[:, _E1] = shown // 10 + ord("0")
-    ext[:, _E0] = shown % 10 + ord("0")
+    ext[:, _POINT], ext[:, _ZERO], ext[:, _MINUS] = ord("."), ord("0"), ord("-")
+    # The exponent's bytes only where a layout shows them (few cells, if any).
+    shows = np.flatnonzero(mode == _EXPONENT)
+    if shows.size:
+        rows_shown = np.flatnonzero(np.isin(order, shows))
+        power10 = exponent[order[rows_shown]]
+        shown = np.minimum(np.abs(power10), 99)
+        ext[rows_shown, _E] = ord("e")
+        ext[rows_shown, _ESIGN] = np.where(power10 < 0, ord("-"), ord("+"))
+        ext[rows_shown, _E1] = shown // 10 + ord("0")
+        ext[rows_shown, _E0] = shown % 10 + ord("0")
     ext[:, _SEP] = np.tile(_separators(columns), rows).take(order)
     counts = np.bincount(key, minlength=_LENGTH.size)
     slots = np.empty((size, _WIDTH), dtype=np.uint8)
