@@ -23,7 +23,8 @@ from shaperapp.widgets.style import fmt, speed_colour
 
 from .curves import Band, Curve
 from .legend import LegendKey
-from .stack import PlotStack, Series
+from .series import Series
+from .stack import PlotStack
 from .stack_view import StackView
 
 SPEED_PLOTS = ("torque", "power", "energy")      # one curve per crank speed

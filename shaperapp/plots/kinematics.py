@@ -20,7 +20,8 @@ from shaperapp.widgets.style import RETURN_FILL, WORK_FILL, fmt, speed_colour
 
 from .curves import Band, Curve
 from .legend import LegendKey
-from .stack import PlotStack, Series
+from .series import Series
+from .stack import PlotStack
 from .stack_view import StackView
 
 PLOT_NAMES = ("ram_x", "ram_v", "ram_a", "lever_angle", "lever_omega", "lever_alpha")
@@ -58,9 +59,8 @@ class PlotsWidget(StackView):
                          lambda n=name: self._axis_titles[n],
                          lambda model, n=name: self._curves(n)) for name in PLOT_NAMES]
         self._retranslate_names()
-        self._stack = PlotStack(model, self, series, lambda: self.tr("Shaper motion diagrams"))
-        for name in LEVER_PLOTS:
-            self._stack.set_plot_visible(name, False)
+        self._stack = PlotStack(model, self, series, lambda: self.tr("Shaper motion diagrams"),
+                                hidden=LEVER_PLOTS)
 
         self._x_label = QLabel()
         self._x_combo = QComboBox()

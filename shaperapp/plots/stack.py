@@ -18,8 +18,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
-from typing import Protocol
 
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, QTimer, Signal
@@ -29,11 +27,12 @@ from PySide6.QtWidgets import (QFrame, QGraphicsView, QHBoxLayout, QLabel, QMenu
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.image_export import export_scene, render_scene
-from shaperapp.widgets.style import TEXT, fmt
+from shaperapp.widgets.style import TEXT
 
 from .axes import cache_static, styled_plot_item
-from .curves import LEGEND_WIDTH, Band, Curve, PlotSlots, finite_range
-from .legend import GroupLegend, LegendKey
+from .curves import LEGEND_WIDTH, PlotSlots, finite_range
+from .legend import GroupLegend
+from .series import Series, StackSource, nbsp, readout_html
 
 WHITE = QColor("#ffffff")
 Y_PADDING = 0.08         # share of the data's span added above and below when fitting y
@@ -50,42 +49,14 @@ MIN_PLOT_PX = 104
 TITLE_MARGIN_PX = 8      # free space along the axis beyond a title's ends
 
 
-@dataclass(frozen=True)
-class Series:
-    """One plot of the stack: ``curves(model)`` gives what it draws."""
-
-    key: str
-    unit: str
-    name: Callable[[], str]          # full translated name, for the read-out
-    title: Callable[[], str]         # short translated axis title
-    curves: Callable[[DesignModel], list[Curve]]
-    group: str = "main"              # plots of one group share a legend
-
-
-class StackSource(Protocol):
-    """What a view tells the stack besides its series."""
-
-    def bands(self) -> list[Band]: ...                        # shaded x spans, all plots
-    def legend_keys(self) -> dict[str, list[LegendKey]]: ...  # per group, after the curves
-    def group_titles(self) -> dict[str, str]: ...             # per group, over its legend
-    def legend_units(self) -> dict[str, str]: ...             # per group, left of the entries
-    def x_axis(self) -> tuple[str, float, float, bool]: ...   # title, range, degree ticks
-    def x_text(self, x: float) -> str: ...                    # "φ = 12.0°" for the read-out
-    def cursor_x(self, index: int) -> float | dict[str, float]: ...   # per curve label
-
-
-def _nbsp(text: str) -> str:
-    """Spaces that never break: the read-out wraps between entries, not inside one."""
-    return text.replace(" ", "&nbsp;").replace("/", "/&#8288;")    # no break after "r/"
-
-
 class PlotStack(QWidget):
     """Stacked, x-linked cycle plots of one view (see the module docstring)."""
 
     clicked = Signal(float)          # x of a left click in a plot, in plot units
 
     def __init__(self, model: DesignModel, source: StackSource, series: Sequence[Series],
-                 export_title: Callable[[], str], parent: QWidget | None = None) -> None:
+                 export_title: Callable[[], str], parent: QWidget | None = None,
+                 hidden: Sequence[str] = ()) -> None:
         super().__init__(parent)
         self._model, self._source, self._series = model, source, list(series)
         self._export_title = export_title
@@ -104,16 +75,16 @@ class PlotStack(QWidget):
         # small dirty rectangle instead (measured 5-10× slower per frame and per edit).
         self._view.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.BoundingRectViewportUpdate)
         self._view.installEventFilter(self)
-        self._plots = {s.key: PlotSlots(styled_plot_item(0.0), s) for s in self._series}
-        self._shown = {s.key: True for s in self._series}
+        if self._series[0].key in hidden:
+            raise ValueError(f"the first plot ({self._series[0].key!r}) carries the x axis and stays shown")
+        # A plot hidden at first (the lever's) is built when first shown or asked for: a
+        # pyqtgraph plot takes several milliseconds to make, at every start (issue 24).
+        self._plots: dict[str, PlotSlots] = {}
+        self._shown = {s.key: s.key not in hidden for s in self._series}
         self._legends = {s.group: GroupLegend(self._on_legend_toggle) for s in self._series}
-        master = self._plots[self._series[0].key].item
-        for plot in self._plots.values():
-            if plot.item is not master:
-                plot.item.setXLink(master)
-            plot.item.vb.sigFitRequested.connect(self.fit)
-            plot.item.vb.menu_handler = self._show_menu
-        master.vb.sigXRangeChanged.connect(self._fit_y)
+        for key in [s.key for s in self._series if self._shown[s.key]]:
+            self._build_plot(key)
+        self._plots[self._series[0].key].item.vb.sigXRangeChanged.connect(self._fit_y)
         self._cache_static(True)
 
         self.fit_action = QAction(self)
@@ -174,8 +145,40 @@ class PlotStack(QWidget):
             raise ValueError(f"the first plot ({key!r}) carries the x axis and stays shown")
         if self._shown[key] != visible:
             self._shown[key] = visible
+            if key not in self._plots:
+                self._build_plot(key)
             self._relayout()
             self._fit_y()
+
+    def _build_plot(self, key: str) -> PlotSlots:
+        """Make one plot, x-linked to the first, labelled, drawn when next refreshed."""
+        series = next(s for s in self._series if s.key == key)
+        plot = PlotSlots(styled_plot_item(0.0), series)
+        first = self._series[0].key
+        if key != first:
+            plot.item.setXLink(self._plots[first].item)
+        plot.item.vb.sigFitRequested.connect(self.fit)
+        plot.item.vb.menu_handler = self._show_menu
+        self._plots[key] = plot
+        self._plots = {s.key: self._plots[s.key] for s in self._series if s.key in self._plots}
+        self._label_plot(plot)
+        if self._x_axis is not None:                    # built after the first refresh
+            self._label_x_axis(plot)
+            cache_static([plot.item], True)
+            self._stale = True
+            if self.isVisible():
+                self.refresh()
+        return plot
+
+    def _label_plot(self, plot: PlotSlots) -> None:
+        series = plot.series
+        plot.item.setLabel("left", f"{series.title()}<br>({series.unit})",
+                           color=TEXT.name(), **{"font-size": "9pt"})
+
+    def _label_x_axis(self, plot: PlotSlots) -> None:
+        title, degrees = self._x_axis
+        plot.item.getAxis("bottom").set_degree_steps(degrees)
+        plot.item.setLabel("bottom", title, color=TEXT.name(), **{"font-size": "9pt"})
 
     def plot_visible(self, key: str) -> bool:
         return self._shown[key]
@@ -193,10 +196,8 @@ class PlotStack(QWidget):
         self._readout.setToolTip(self.tr(
             "Values under the mouse, or at the cursor while the crank moves; "
             "click a plot to move the mechanism to that crank position"))
-        for key, plot in self._plots.items():
-            series = plot.series
-            plot.item.setLabel("left", f"{series.title()}<br>({series.unit})",
-                               color=TEXT.name(), **{"font-size": "9pt"})
+        for plot in self._plots.values():
+            self._label_plot(plot)
         self._fit_heights()
         self._stale = True
         if self.isVisible():
@@ -236,8 +237,7 @@ class PlotStack(QWidget):
         if (x_title, degrees) != self._x_axis:      # relabelling re-lays out every axis
             self._x_axis = (x_title, degrees)
             for plot in self._plots.values():
-                plot.item.getAxis("bottom").set_degree_steps(degrees)
-                plot.item.setLabel("bottom", x_title, color=TEXT.name(), **{"font-size": "9pt"})
+                self._label_x_axis(plot)
             self._show_x_axis()
         self._x_range = (lo, hi)
         if added:
@@ -397,24 +397,18 @@ class PlotStack(QWidget):
             return
         if self._hover is not None:
             key, x = self._hover
-            parts = [f"<b>{self._plots[key].series.name()}</b>", _nbsp(self._source.x_text(x))]
+            parts = [f"<b>{self._plots[key].series.name()}</b>", nbsp(self._source.x_text(x))]
             values = self._plots[key].values_at(x)
         else:
             key = self._readout_key
             xs = self._source.cursor_x(self._model.angle_index)
             x = xs if isinstance(xs, float) else next(iter(xs.values()), 0.0)
             parts = [f"<b>{self._plots[key].series.name()}</b>",
-                     _nbsp(self.tr("cursor {0}").format(self._source.x_text(x)))]
+                     nbsp(self.tr("cursor {0}").format(self._source.x_text(x)))]
             values = self._plots[key].values_at(xs)
-        title = self._legends[self._plots[key].series.group].title()
-        if title:
-            parts.append(title + ":")
-        unit = self._plots[key].series.unit
-        for curve, value in values:
-            text = "—" if value is None else f"{fmt(value, '.4g')} {unit}"
-            parts.append(f"<span style='color:{curve.colour.name()}'>{_nbsp(curve.label)}:</span>"
-                         f"&nbsp;{_nbsp(text)}")
-        self._readout.setText("&nbsp;&nbsp; ".join(parts))
+        plot = self._plots[key]
+        self._readout.setText(readout_html(parts, self._legends[plot.series.group].title(),
+                                           plot.series.unit, values))
 
     # ---- read back and export -----------------------------------------
     def ensure_current(self) -> None:
@@ -432,6 +426,8 @@ class PlotStack(QWidget):
         return not self._stale and not self._cursor_stale
 
     def plot(self, key: str) -> PlotSlots:
+        if key not in self._plots:
+            self._build_plot(key)
         self.ensure_current()
         return self._plots[key]
 

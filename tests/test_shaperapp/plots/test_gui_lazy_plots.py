@@ -1,0 +1,41 @@
+"""The Kinematics tab's lever plots, hidden at first, are made when first shown (issue 24:
+a pyqtgraph plot costs several milliseconds at every start), and then draw what core
+computes, as if they had always been there."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from shaperapp.plots.kinematics import LEVER_PLOTS, PlotsWidget
+
+from gui_helpers import shown
+
+
+def test_hidden_lever_plots_are_built_when_first_shown(qtbot, model):
+    plots = shown(qtbot, PlotsWidget(model), 900, 700)
+    stack = plots.stack()
+    assert set(stack._plots) == {"ram_x", "ram_v", "ram_a"}
+    model.set_spec(time_ratio=1.6)                      # a change before the plot exists
+    plots.set_plot_visible("lever_omega", True)
+    assert "lever_omega" in stack._plots and "lever_alpha" not in stack._plots
+    qtbot.wait(10)
+    drawn = stack.plot("lever_omega").curves
+    assert len(drawn) == model.motion.rpm.size
+    for curve, want in zip(drawn, model.motion.lever_omega):
+        np.testing.assert_allclose(curve.y, want, rtol=1e-12, atol=1e-12)
+    bottom = stack.plot("ram_a").item.getAxis("bottom")
+    assert not bottom.style["showValues"]               # the x values moved under the new plot
+    assert stack.plot("lever_omega").item.getAxis("bottom").style["showValues"]
+
+
+def test_a_hidden_plot_asked_for_is_built_and_current(qtbot, model):
+    plots = shown(qtbot, PlotsWidget(model), 900, 700)
+    angle = plots.stack().plot("lever_angle")           # read back while hidden
+    assert not plots.plot_visible("lever_angle")
+    np.testing.assert_allclose(angle.curves[0].y, np.degrees(model.motion.lever_angle), rtol=1e-12)
+
+
+def test_the_first_plot_cannot_start_hidden(qtbot, model):
+    from shaperapp.plots.stack import PlotStack
+    with pytest.raises(ValueError, match="stays shown"):
+        PlotStack(model, None, PlotsWidget(model).stack()._series, lambda: "", hidden=("ram_x",))
