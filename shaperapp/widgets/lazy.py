@@ -31,9 +31,16 @@ class LazyPage(QWidget):
 
     built = Signal(QWidget)
 
-    def __init__(self, factory: Callable[[], QWidget], parent: QWidget | None = None) -> None:
+    def __init__(self, factory: Callable[[], QWidget], parent: QWidget | None = None,
+                 defer: bool = False) -> None:
         super().__init__(parent)
         self._factory: Callable[[], QWidget] | None = factory
+        # A page in a tabbed dock is shown for a moment while the window is first laid out,
+        # then hidden behind its neighbour's tab: with ``defer`` a show builds the view two
+        # turns of the event loop later, and only if the page is still visible then. Two:
+        # Qt shows a window's children before the window itself, so the window's own
+        # layout pass (Docks.apply_sizes, which tabs the dock) is queued after the first.
+        self._defer = defer
         self._view: QWidget | None = None
         self._layout = QVBoxLayout(self)
         self._layout.setContentsMargins(0, 0, 0, 0)
@@ -67,8 +74,15 @@ class LazyPage(QWidget):
         return self._view
 
     def showEvent(self, event) -> None:
-        self.view()
+        if not self._defer:
+            self.view()
+        elif self._view is None:
+            QTimer.singleShot(0, self, lambda: QTimer.singleShot(0, self, self._build_if_visible))
         super().showEvent(event)
+
+    def _build_if_visible(self) -> None:
+        if self.isVisible():
+            self.view()
 
 
 class ViewTabs(QTabWidget):

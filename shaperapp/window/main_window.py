@@ -59,7 +59,7 @@ class MainWindow(QMainWindow):
         for page in self._pages.values():
             self.tabs.addTab(page, "")
         # So are the panes hidden at first (the library) or behind another's tab (the vector diagrams).
-        self._pages["polygons"] = LazyPage(self._build_polygons)
+        self._pages["polygons"] = LazyPage(self._build_polygons, defer=True)
         self._pages["library"] = LazyPage(self._build_library)
         # The cam's model exists from the start (it holds the cam that Save writes and Open
         # reads); its tab is built when first shown.
