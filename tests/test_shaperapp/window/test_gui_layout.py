@@ -302,6 +302,8 @@ def test_a_hidden_results_pane_waits_until_shown(window):
 
 def test_hidden_scheme_and_polygons_do_no_work_per_edit(window, monkeypatch):
     import shaperapp.vectors.view as polygon_view
+    window.polygon_view            # built now (else by the idle builder, within the count)
+    QApplication.processEvents()
     calls = {"scheme": 0, "polygons": 0}
     rebuild = window.scheme._mechanism.rebuild
     compute = polygon_view.polygons
