@@ -170,3 +170,36 @@ def test_the_app_starts_numpy_with_one_blas_thread(tmp_path):
     lines = out.stdout.strip().splitlines()
     assert lines[0].startswith("first window painted after ")
     assert lines[-1] == "0 1"
+
+
+ENGINE_PROBE = """
+import sys, shaperapp.app as app
+early = set()
+engine_first = app._import_engine_first
+def recorded():
+    engine_first()
+    early.update(m for m in sys.modules if m.startswith("core"))
+app._import_engine_first = recorded
+when_painted = app._when_painted
+def at_paint(window, callback):
+    def report():
+        late = {m for m in sys.modules if m.startswith("core")}
+        print(sorted(late - early), sorted(early - late))
+        callback()
+    when_painted(window, report)
+app._when_painted = at_paint
+app.main(["--lang", "en", "--quit-after-show"])
+"""
+
+
+def test_the_engine_the_first_screen_uses_is_imported_before_qt(tmp_path):
+    """shaperapp imports the core modules of the first screen before Qt (PySide6 reads
+    the source of every module imported after it), and no more than those: a module
+    the first screen comes to need, or no longer needs, shows here."""
+    env = dict(os.environ, QT_QPA_PLATFORM="offscreen", XDG_CONFIG_HOME=str(tmp_path),
+               XDG_DATA_HOME=str(tmp_path))
+    out = subprocess.run([sys.executable, "-c", ENGINE_PROBE], capture_output=True, text=True,
+                         env=env, timeout=120)
+    assert out.returncode == 0, out.stderr
+    lines = [line for line in out.stdout.splitlines() if line.startswith("[")]
+    assert lines == ["[] []"]
