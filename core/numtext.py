@@ -161,9 +161,8 @@ def g10_rows(data: np.ndarray) -> str:
     ext[:, 8:10].view(np.uint16)[:, 0] = _TWO[low]
     ext[:, _POINT], ext[:, _ZERO], ext[:, _MINUS] = ord("."), ord("0"), ord("-")
     # The exponent's bytes only where a layout shows them (few cells, if any).
-    shows = np.flatnonzero(mode == _EXPONENT)
-    if shows.size:
-        rows_shown = np.flatnonzero(np.isin(order, shows))
+    if (mode == _EXPONENT).any():
+        rows_shown = np.flatnonzero(mode[order] == _EXPONENT)
         power10 = exponent[order[rows_shown]]
         shown = np.minimum(np.abs(power10), 99)
         ext[rows_shown, _E] = ord("e")
