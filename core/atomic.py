@@ -38,7 +38,7 @@ def fit_name(name: str, room: int) -> str:
             break
         except UnicodeDecodeError:
             cut = cut[:-1]
-    import hashlib      # only for a name too long for the folder (5 ms of every start-up)
+    import hashlib      # only for a name too long for the folder (OpenSSL: milliseconds at start-up)
     return os.fsdecode(cut) + "~" + hashlib.sha256(raw).hexdigest()[:8]
 
 
