@@ -28,9 +28,9 @@ from core.cam.table import follower_peaks
 from .charts import Curve, arrow, chart, place_label
 from .dxf import CENTER, OUTLINE, THIN
 from .motion import CAPTION, GAP, TABLE_ROW, caption
-from .sheet import (TITLE_LABEL_KEYS, Box, Circle, Item, Paper, Placement, Sheet, Text, TitleBlock,
-                    fit, frame_items, line, number_text, scale_text, standard_scale, table,
-                    title_block, title_block_box)
+from .sheet import (TITLE_ENGLISH, Box, Circle, Item, Paper, Placement, Sheet, Text, TitleBlock, fit,
+                    frame_items, line, number_text, scale_text, standard_scale, table, sheet_title_block,
+                    title_block_box)
 
 ENGLISH = {
     "title": "Feed cam",
@@ -55,8 +55,7 @@ ENGLISH = {
     "allowance": "Pressure angle allowance", "exceeded": "EXCEEDED",
     "peaks": "Follower ω_max / α_max", "phase": "Rise starts at crank angle",
     "parabolic": "parabolic", "cosine": "cosine", "sine": "sine", "poly345": "3-4-5",
-    "design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn", "date": "Date",
-    "checked": "Checked", "approved": "Approved",
+    **TITLE_ENGLISH,
 }
 POINTS = 1440                 # a quarter degree of cam angle apart, as the cam's DXF
 CURVE_STEP_DEG = 0.5
@@ -111,10 +110,7 @@ def cam_sheet(cam: Cam, rpm: float, paper: Paper, *, labels: Mapping[str, str] =
     items = _curves(cam, rpm, curves_area, lab, charts)
     areas["curves"] = (curves_area, tuple(items))
 
-    block = block or TitleBlock(lab["title"], "", "", "1/1")
-    block = TitleBlock(block.title or lab["title"], block.design, ratio_text(scale), block.sheet,
-                       block.drawn, block.date, block.school, {k: lab[k] for k in TITLE_LABEL_KEYS})
-    areas["title"] = (title_block_box(paper), tuple(title_block(paper, block)))
+    areas["title"] = sheet_title_block(paper, block, lab, ratio_text(scale))
     everything = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
     base = next(it for it in areas["profile"][1] if isinstance(it, Circle) and it.layer == THIN)
     f = cam.follower

@@ -32,9 +32,8 @@ from .charts import Curve, arrow, chart, place_label, polygon_extent, polygon_fi
 from .dxf import OUTLINE
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Sheet, TitleBlock, fit,
-                    frame_items, number_text, scale_text, standard_scale, table, title_block,
-                    title_block_box)
+from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Sheet, TitleBlock, fit, frame_items,
+                    number_text, scale_text, standard_scale, table, sheet_title_block, title_block_box)
 
 ENGLISH = {
     "title": "Kinetostatic analysis",
@@ -51,8 +50,7 @@ ENGLISH = {
     "P_mean": "Mean power (before efficiency)", "dW": "Energy fluctuation ΔW_max",
     "delta": "Coefficient of speed fluctuation δ", "J_F": "Flywheel J_F = ΔW_max/(ω²δ)",
     "J_e": "Mean reduced inertia J_e", "J_net": "Flywheel to add J_F − J_e",
-    "design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn", "date": "Date",
-    "checked": "Checked", "approved": "Approved",
+    **TITLE_ENGLISH,
 }
 FORCE_NAMES = {"P": "P", "G_5": "G₅", "F_I5": "F_I5", "G_4": "G₄", "F_I4": "F_I4", "N": "N",
                "R_B": "R_B", "R_O2": "R_O2", "R_A": "R_A", "R_O4": "R_O4", "R_C": "R_C",
@@ -149,10 +147,7 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
                          table_w, CAPTION))
     areas["flywheel"] = ((table_box[0], table_box[1], table_box[2], table_top + 2 * CAPTION),
                          tuple(items))
-    block = block or TitleBlock(lab["title"], "", "", "1/1")
-    block = TitleBlock(block.title or lab["title"], block.design, scale_text(scale), block.sheet,
-                       block.drawn, block.date, block.school, {k: lab[k] for k in TITLE_LABEL_KEYS})
-    areas["title"] = (title_block_box(paper), tuple(title_block(paper, block)))
+    areas["title"] = sheet_title_block(paper, block, lab, scale_text(scale))
     items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
     return ForcesSheet(Sheet(paper, tuple(items)), scale, tuple(diagrams), tuple(force_scales),
                        tuple(polygon_scales), arrows, torque_chart, energy_chart, rows, areas)

@@ -29,10 +29,9 @@ from core.positions import positions, special_angles
 from . import mechanism as mech
 from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE, THIN
-from .sheet import (TITLE_LABEL_KEYS, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text,
-                    TitleBlock, clipped, fit, fitting_height, frame_items,
-                    number_text, scale_text, standard_scale, table, title_block,
-                    title_block_box)
+from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped,
+                    fit, fitting_height, frame_items, number_text, scale_text, standard_scale, table,
+                    sheet_title_block, title_block_box)
 
 ENGLISH = {
     "title": "Motion analysis",
@@ -47,8 +46,7 @@ ENGLISH = {
     "L1": "Crank O2A, L1", "L2": "Frame O2O4, L2", "L3": "Lever O4B, L3", "L4": "Rod BC, L4",
     "h": "Guide above O2, h", "H": "Stroke H", "K": "Time ratio K",
     "theta": "Extreme-position angle θ", "n": "Crank speed n",
-    "design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn", "date": "Date",
-    "checked": "Checked", "approved": "Approved",
+    **TITLE_ENGLISH,
 }
 POINT_NAMES = {"p": "p", "a2": "a₂", "a3": "a₃", "b": "b", "c": "c", "p'": "p′", "a2'": "a₂′",
                "k'": "k′", "n3'": "n₃′", "a3'": "a₃′", "b'": "b′", "c'": "c′", "n4'": "n₄′"}
@@ -108,11 +106,7 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
     areas["dimensions"] = ((bx1 - TITLE_WIDTH, table_top - TABLE_ROW * len(rows), bx1, table_top),
                            tuple(table((bx1 - TITLE_WIDTH, table_top), (120.0, 60.0), rows,
                                        TABLE_ROW, 3.5, aligns="lc")))
-    block = block or TitleBlock(lab["title"], "", "", "1/1")
-    block = TitleBlock(block.title or lab["title"], block.design, scale_text(scale), block.sheet,
-                       block.drawn, block.date, block.school,
-                       {k: lab[k] for k in TITLE_LABEL_KEYS})
-    areas["title"] = (title_block_box(paper), tuple(title_block(paper, block)))
+    areas["title"] = sheet_title_block(paper, block, lab, scale_text(scale))
     items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
     return MotionSheet(Sheet(paper, tuple(items)), scale, place, diagrams, areas)
 

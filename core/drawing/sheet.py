@@ -275,6 +275,9 @@ TITLE_WIDTH = 180.0
 TITLE_ROW = 8.0
 TITLE_ROWS = 4
 TITLE_LABEL_KEYS = ("design", "scale", "sheet", "drawn", "date", "checked", "approved")
+# The title block's words in English: every sheet's ENGLISH texts start from these.
+TITLE_ENGLISH = {"design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn",
+                 "date": "Date", "checked": "Checked", "approved": "Approved"}
 
 
 @dataclass(frozen=True)
@@ -358,3 +361,15 @@ def overlapping_texts(sheet: Sheet) -> list[tuple[Text, Text]]:
                & (boxes[i + 1:, 1] < b[3]) & (boxes[i + 1:, 3] > b[1]))
         pairs += [(texts[i], texts[i + 1 + j]) for j in np.flatnonzero(hit)]
     return pairs
+
+
+def sheet_title_block(p: Paper, block: TitleBlock | None, labels: Mapping[str, str],
+                      scale: str) -> tuple[Box, tuple[Item, ...]]:
+    """A sheet's title block as its area on the paper and its items: the caller's block
+    (or one named by ``labels["title"]``, sheet 1/1) with the drawing's scale and the
+    title block's words from ``labels``."""
+    block = block or TitleBlock(labels["title"], "", "", "1/1")
+    block = TitleBlock(block.title or labels["title"], block.design, scale, block.sheet,
+                       block.drawn, block.date, block.school,
+                       {k: labels[k] for k in TITLE_LABEL_KEYS})
+    return title_block_box(p), tuple(title_block(p, block))
