@@ -22,6 +22,18 @@ def _counting_factory(made: list):
     return make
 
 
+def _hidden_pages(qtbot, made: list) -> tuple[QWidget, list[LazyPage]]:
+    """Three pages, hidden, in a window on screen (as when the window has been painted)."""
+    pages = [LazyPage(_counting_factory(made)) for _ in range(3)]
+    holder = QWidget()
+    qtbot.addWidget(holder)
+    for page in pages:
+        page.setParent(holder)
+        page.hide()
+    holder.show()
+    return holder, pages
+
+
 def test_a_page_is_built_when_first_shown_and_only_once(qtbot):
     made: list = []
     tabs = ViewTabs()
@@ -86,13 +98,7 @@ def test_a_deferred_page_shown_for_a_moment_is_not_built(qtbot):
 
 def test_idle_build_builds_every_page_one_per_turn(qtbot):
     made: list = []
-    pages = [LazyPage(_counting_factory(made)) for _ in range(3)]
-    holder = QWidget()
-    qtbot.addWidget(holder)
-    for page in pages:
-        page.setParent(holder)
-        page.hide()
-    holder.show()                                       # the window is on screen, as when painted
+    _, pages = _hidden_pages(qtbot, made)
     build_when_idle(pages)
     assert made == []                                   # nothing before the event loop turns
     qtbot.waitUntil(lambda: all(p.is_built() for p in pages), timeout=5_000)
@@ -103,17 +109,22 @@ def test_idle_build_leaves_a_closed_window_alone(qtbot):
     """A window closed before its turns come (a test's window, or one the user closed at
     once) gets no views built for it: they would serve a model that may be going away."""
     made: list = []
-    pages = [LazyPage(_counting_factory(made)) for _ in range(3)]
-    holder = QWidget()
-    qtbot.addWidget(holder)
-    for page in pages:
-        page.setParent(holder)
-        page.hide()
-    holder.show()
+    holder, pages = _hidden_pages(qtbot, made)
     build_when_idle(pages)
     holder.close()
     qtbot.wait(200)
     assert made == []
+
+
+def _run_probe(code: str, tmp_path, *args: str) -> list[str]:
+    """Run ``code`` in a fresh interpreter, offscreen, with its settings under ``tmp_path``
+    and no OPENBLAS_NUM_THREADS of ours; the lines it printed."""
+    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
+    env.update(QT_QPA_PLATFORM="offscreen", XDG_CONFIG_HOME=str(tmp_path), XDG_DATA_HOME=str(tmp_path))
+    out = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
+                         env=env, timeout=120)
+    assert out.returncode == 0, out.stderr
+    return out.stdout.strip().splitlines()
 
 
 PROBE = """
@@ -142,11 +153,7 @@ app.exec()
 def test_the_first_screen_imports_and_builds_only_what_it_shows(tmp_path):
     """At the window's first paint, the tabs behind Kinematics and the hidden library are
     neither built nor imported (issue 24: they cost a fifth of the start-up)."""
-    env = dict(os.environ, QT_QPA_PLATFORM="offscreen", XDG_CONFIG_HOME=str(tmp_path))
-    out = subprocess.run([sys.executable, "-c", PROBE, str(tmp_path / "s.ini")], capture_output=True,
-                         text=True, env=env, timeout=120)
-    assert out.returncode == 0, out.stderr
-    modules, built = out.stdout.strip().splitlines()[-2:]
+    modules, built = _run_probe(PROBE, tmp_path, str(tmp_path / "s.ini"))[-2:]
     assert modules == "[]"
     assert built == "[]"       # the vector diagrams' dock, shown for a moment while tabbed, too
 
@@ -162,12 +169,7 @@ print(status, os.environ.get("OPENBLAS_NUM_THREADS"))
 def test_the_app_starts_numpy_with_one_blas_thread(tmp_path):
     """shaperapp's main asks OpenBLAS for one thread before numpy loads (core.blas):
     its idle worker threads spun for about 0.1 s of CPU at every start."""
-    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
-    env.update(QT_QPA_PLATFORM="offscreen", XDG_CONFIG_HOME=str(tmp_path), XDG_DATA_HOME=str(tmp_path))
-    out = subprocess.run([sys.executable, "-c", APP_PROBE], capture_output=True, text=True, env=env,
-                         timeout=120)
-    assert out.returncode == 0, out.stderr
-    lines = out.stdout.strip().splitlines()
+    lines = _run_probe(APP_PROBE, tmp_path)
     assert lines[0].startswith("first window painted after ")
     assert lines[-1] == "0 1"
 
@@ -196,10 +198,5 @@ def test_the_engine_the_first_screen_uses_is_imported_before_qt(tmp_path):
     """shaperapp imports the core modules of the first screen before Qt (PySide6 reads
     the source of every module imported after it), and no more than those: a module
     the first screen comes to need, or no longer needs, shows here."""
-    env = dict(os.environ, QT_QPA_PLATFORM="offscreen", XDG_CONFIG_HOME=str(tmp_path),
-               XDG_DATA_HOME=str(tmp_path))
-    out = subprocess.run([sys.executable, "-c", ENGINE_PROBE], capture_output=True, text=True,
-                         env=env, timeout=120)
-    assert out.returncode == 0, out.stderr
-    lines = [line for line in out.stdout.splitlines() if line.startswith("[")]
+    lines = [line for line in _run_probe(ENGINE_PROBE, tmp_path) if line.startswith("[")]
     assert lines == ["[] []"]
