@@ -23,13 +23,13 @@ import sys
 import tempfile
 from pathlib import Path
 
+from perf_alternate import export_commit     # its neighbour in tools/ (on sys.path when run)
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
 def _export(rev: str, target: Path) -> None:
-    archive = subprocess.run(["git", "-C", str(ROOT), "archive", rev], check=True,
-                             capture_output=True).stdout
-    subprocess.run(["tar", "-x", "-C", str(target)], input=archive, check=True)
+    export_commit(rev, target)
     shutil.rmtree(target / "benchmarks")
     shutil.copytree(ROOT / "benchmarks", target / "benchmarks")
 

@@ -31,6 +31,13 @@ ROOT = Path(__file__).resolve().parents[1]
 PAINTED = re.compile(r"first window painted after (\d+) ms")
 
 
+def export_commit(rev: str, target: Path) -> None:
+    """Commit ``rev``'s files (``git archive``) unpacked into the folder ``target``."""
+    archive = subprocess.run(["git", "-C", str(ROOT), "archive", rev], check=True,
+                             capture_output=True).stdout
+    subprocess.run(["tar", "-x", "-C", str(target)], input=archive, check=True)
+
+
 def main(argv: list[str]) -> int:
     if "--" not in argv or argv.index("--") < 2:
         print(__doc__.splitlines()[0], file=sys.stderr)
@@ -40,9 +47,7 @@ def main(argv: list[str]) -> int:
     with tempfile.TemporaryDirectory() as scratch:
         base = Path(scratch) / "base"
         base.mkdir()
-        archive = subprocess.run(["git", "-C", str(ROOT), "archive", rev], check=True,
-                                 capture_output=True).stdout
-        subprocess.run(["tar", "-x", "-C", str(base)], input=archive, check=True)
+        export_commit(rev, base)
         for name in overlay:
             (base / name).write_bytes((ROOT / name).read_bytes())
         trees = {rev: base, "work tree": ROOT}
