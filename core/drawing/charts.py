@@ -16,7 +16,7 @@ import numpy as np
 from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
-from .sheet import TEXT_HEIGHTS, Box, Item, Pair, Text, line, number_text
+from .sheet import TEXT_HEIGHTS, Box, Item, Pair, Text, line, number_text, text_width
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
 TICK = 1.5
@@ -155,16 +155,20 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     dashed segments over part of the span (e.g. an allowance over one phase), inside the
     y range like the curves. Scales from the round series; the
     x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
-    labels."""
+    labels, or more where the widest label needs it (a torque of 10⁵ N·m reads
+    "-1.000e+05")."""
     x0, y0, x1, y1 = box
-    left = x0 + 6.0 * height
-    span_x = float(x[-1] - x[0])
-    x_scale = nice_scale(span_x, x1 - left - 14.0, X_MANTISSAS)
+    small = max((h for h in TEXT_HEIGHTS if h < height), default=height)   # the ticks' labels
     ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves]
                         + [[0.0], [lv[2] for lv in levels]])
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
     room = (y1 - y0) - 3.0 * height - 6.0
     y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS)
+    y_ticks = _round_ticks(bottom, top, y_scale)
+    widest = max((text_width(number_text(v), small) for v in y_ticks), default=0.0)
+    left = x0 + max(6.0 * height, widest + TICK + 1.0 + 0.5)     # 0.5 mm clear of the box
+    span_x = float(x[-1] - x[0])
+    x_scale = nice_scale(span_x, x1 - left - 14.0, X_MANTISSAS)
     zero = y0 + 2.0 * height + 2.0 + (-bottom) / y_scale
     zero += ((y1 - height - 4.0) - (zero + top / y_scale)) / 2.0 if (top - bottom) > 0 else 0.0
     to_paper = lambda xv, yv: np.column_stack([left + (np.asarray(xv) - x[0]) / x_scale,  # noqa: E731
@@ -174,7 +178,6 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     items: list[Item] = [*arrow((left, zero), (x_end, zero), THIN),
                          *arrow((left, y_lo), (left, y_hi), THIN)]
     taken: list = []
-    small = max((h for h in TEXT_HEIGHTS if h < height), default=height)   # the ticks' labels
     for c in curves:
         pts = to_paper(x, c.y)
         items.append(line(pts, c.layer))
@@ -186,7 +189,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
             if not any(_meets(lab.box(), b) for b in taken):
                 taken.append(lab.box())
                 items.append(lab)
-    for value in _round_ticks(bottom, top, y_scale):
+    for value in y_ticks:
         py = zero + value / y_scale
         items.append(line([(left - TICK, py), (left, py)], THIN))
         lab = Text(number_text(value), (left - TICK - 1.0, py), small, "rm")
