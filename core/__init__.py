@@ -11,7 +11,6 @@ needs neither the metrics nor their root search (issue 24).
 from __future__ import annotations
 
 from importlib import import_module
-from typing import Any
 
 _HOMES = {"DesignError": "errors", "FileFormatError": "errors", "Design": "geometry",
           "from_dimensions": "geometry", "synthesize": "geometry", "Motion": "kinematics",
@@ -22,7 +21,7 @@ __all__ = ["Design", "DesignError", "FileFormatError", "Motion", "CycleMetrics",
            "analyze", "crank_angles", "from_dimensions", "solve", "synthesize"]
 
 
-def __getattr__(name: str) -> Any:
+def __getattr__(name: str) -> object:
     home = _HOMES.get(name)
     if home is None:
         raise AttributeError(f"module 'core' has no attribute {name!r}")

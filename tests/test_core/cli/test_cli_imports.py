@@ -37,3 +37,34 @@ def test_a_design_file_with_loads_and_a_cam_still_reads_them(tmp_path):
     save_design(path, Spec(), [40.0], 1.0, extra={"cam": {"arm_mm": -1}})
     assert main(["curves", "--design", str(path), "--csv", str(tmp_path / "c.csv")]) == 2
     assert not (tmp_path / "c.csv").exists()
+
+
+ENTRY_PROBE = """
+import gc, sys
+collections = []
+gc.callbacks.append(lambda phase, info: phase == "stop" and collections.append(info["generation"]))
+from core.__main__ import load
+collections.clear()
+run = load()
+print("numpy" in sys.modules, collections, gc.isenabled(), gc.get_freeze_count() > 1000)
+print(run(["curves", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40",
+           "--step", "1", "--csv", sys.argv[1]]))
+"""
+
+
+def test_the_command_loads_without_garbage_collection_and_then_collects_as_usual(tmp_path):
+    """The ``shaper`` entry point (pyproject's script, ``python -m core``) loads numpy and
+    the engine with Python's collector paused (about 5 ms of a short command), freezes
+    what loading made, and leaves collection on for the run."""
+    out = subprocess.run([sys.executable, "-c", ENTRY_PROBE, str(tmp_path / "c.csv")],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip().splitlines() == ["True [] True True", "0"]
+    assert (tmp_path / "c.csv").read_text().count("\n") == 361 + 1
+
+
+def test_the_installed_command_is_that_entry_point():
+    import tomllib
+    from pathlib import Path
+    project = tomllib.loads((Path(__file__).parents[3] / "pyproject.toml").read_text())
+    assert project["project"]["scripts"]["shaper"] == "core.__main__:main"
