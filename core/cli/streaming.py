@@ -19,10 +19,13 @@ import numpy as np
 
 from ..io import table_chunks, zero_scale
 from .allocator import keep_freed_memory
+from .forked import pieces_in_order, worker_count
 from .output import write_output
 
 CHUNK_ANGLES = 16_384
 SCALE_ANGLES = 4_096     # angles per speed sampled for the columns' magnitudes
+FORK_ROWS = 20_000       # smaller tables are made in this process alone (a fork costs ~ms)
+SHARED_ANGLES = 4_096    # a block shared with a child: its text (~0.3 MB) fits in the pipe
 
 # compute(angles in rad, one rpm) -> (column names, rows); one speed, a block of angles
 TableBlock = Callable[[np.ndarray, float], "tuple[Sequence[str], np.ndarray]"]
@@ -77,24 +80,33 @@ class Progress:
 
 
 def table_pieces(block: TableBlock, angles: np.ndarray, rpms: Sequence[float],
-                 progress: Progress | None = None) -> Iterator[str]:
-    """The CSV text of the whole (speeds × angles) table, one block at a time.
+                 progress: Progress | None = None, workers: int | None = None) -> Iterator[str]:
+    """The CSV text of the whole (speeds × angles) table, one block at a time; the blocks
+    are made by ``workers`` processes (default: one per core, see ``core.cli.forked``).
 
     Round-off zeros are judged against the whole table's column magnitudes, taken
     first from every speed at (up to) SCALE_ANGLES of the same angles, so that the
     text is that of the unchunked table."""
     step = max(1, -(-angles.size // SCALE_ANGLES))
     scale = np.max([zero_scale(block(angles[::step], rpm)[1]) for rpm in rpms], axis=0)
-    header = True
+    if workers is None:
+        workers = worker_count(angles.size * len(rpms) // SHARED_ANGLES) \
+            if angles.size * len(rpms) >= FORK_ROWS else 1
+    chunk = CHUNK_ANGLES if workers == 1 else SHARED_ANGLES
+    spans = [(rpm, angles[start:start + chunk])
+             for rpm in rpms for start in range(0, angles.size, chunk)]
+
+    def text(index: int) -> str:
+        rpm, some = spans[index]
+        names, data = block(some, rpm)
+        return "".join(table_chunks(names if index == 0 else None, data, scale=scale))
+
     done = 0
-    for rpm in rpms:
-        for start in range(0, angles.size, CHUNK_ANGLES):
-            names, data = block(angles[start:start + CHUNK_ANGLES], rpm)
-            yield from table_chunks(names if header else None, data, scale=scale)
-            header = False
-            done += data.shape[0]
-            if progress is not None:
-                progress.update(done)
+    for index, piece in enumerate(pieces_in_order(text, len(spans), workers)):
+        yield piece
+        done += spans[index][1].size
+        if progress is not None:
+            progress.update(done)
 
 
 def write_table(option: str, target: str, label: str, block: TableBlock, angles: np.ndarray,
