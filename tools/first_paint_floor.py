@@ -7,9 +7,11 @@ shaperapp's ``--quit-after-show`` measures it. What the real window takes beyond
 is the project's own (issue 24). Only a developer's tool; run it offscreen
 (``QT_QPA_PLATFORM=offscreen``) with ``OPENBLAS_NUM_THREADS=1`` as the app sets it.
 """
+import gc
 import time
 
 START = time.perf_counter()
+gc.disable()        # as shaperapp's main does: no automatic collections during start-up
 
 import sys  # noqa: E402
 
