@@ -73,14 +73,9 @@ def pieces_in_order(make: Callable[[int], str], count: int, workers: int) -> Ite
     children: dict[int, tuple[int, int]] = {}        # worker → (pid, read end)
     try:
         for worker in range(1, workers):
-            read_end, write_end = os.pipe()
-            _widen(write_end)
-            pid = os.fork()
-            if pid == 0:                                  # the child never returns
-                os.close(read_end)
-                _child(make, [i for i in range(count) if owner(i, workers) == worker], write_end)
-            os.close(write_end)
-            children[worker] = (pid, read_end)
+            started = _start(make, [i for i in range(count) if owner(i, workers) == worker])
+            if started is not None:                       # else its pieces are made here
+                children[worker] = started
         for index in range(count):
             worker = owner(index, workers)
             text = None
@@ -92,6 +87,27 @@ def pieces_in_order(make: Callable[[int], str], count: int, workers: int) -> Ite
     finally:
         for pid, read_end in children.values():
             _stop(pid, read_end)
+
+
+def _start(make: Callable[[int], str], indices: list[int]) -> tuple[int, int] | None:
+    """Fork a child making ``indices``: its pid and the pipe's read end; None if the
+    system refuses a pipe or a process (too many processes, no memory)."""
+    try:
+        read_end, write_end = os.pipe()
+    except OSError:
+        return None
+    _widen(write_end)
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(read_end)
+        os.close(write_end)
+        return None
+    if pid == 0:                                          # the child never returns
+        os.close(read_end)
+        _child(make, indices, write_end)
+    os.close(write_end)
+    return pid, read_end
 
 
 def _widen(pipe: int) -> None:

@@ -201,3 +201,12 @@ def test_an_interrupted_shared_run_leaves_neither_file_nor_child(tmp_path, sig):
     if sig == signal.SIGINT:
         assert child.returncode != 0 and list(tmp_path.iterdir()) == []
     assert not target.exists()
+
+
+def test_a_refused_fork_leaves_the_work_here(forks, monkeypatch):
+    """Too many processes or too little memory: os.fork raises, and this process makes
+    every piece itself."""
+    def refused() -> int:
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+    monkeypatch.setattr(forked.os, "fork", refused)
+    assert list(forked.pieces_in_order(text_of, 9, 3)) == [text_of(i) for i in range(9)]
