@@ -14,7 +14,8 @@ from PySide6.QtWidgets import (QButtonGroup, QComboBox, QFormLayout, QGroupBox, 
 from core.kinematics import MAX_RPM
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
 
-from .model import MAX_SPEEDS, DesignModel
+from .inputs import MAX_SPEEDS
+from .model import DesignModel
 
 DEBOUNCE_MS = 200
 ERROR_STYLE = "QLineEdit, QComboBox, QListWidget { border: 2px solid #c62828; background: #ffebee; }"
