@@ -4,7 +4,7 @@ The grid shares the lever tip's terms between designs with the same L1, L2, L3
 (core.metrics.shared_rates): the rates are rates_at's, bit for bit. The peaks are
 polished by Newton's method on the slope: the fourth derivative it needs
 (core.rates.rates4_at) is checked against finite differences of the third, the
-polisher (extrema.newton_maximum) against maxima known in closed form, and the peaks
+polisher (polish.newton_maximum) against maxima known in closed form, and the peaks
 against those of the bracketed search it replaces.
 """
 import math
@@ -16,7 +16,8 @@ from hypothesis import strategies as st
 
 from core import metrics
 from core.designs import Designs
-from core.extrema import grid_argmax, newton_maximum
+from core.extrema import grid_argmax
+from core.polish import newton_maximum
 from core.rates import rates4_at, rates_at
 from core.metrics import _BETA, _BETA_FINE, cycle_peaks, shared_rates
 from core.spec import Spec
