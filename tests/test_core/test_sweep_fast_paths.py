@@ -204,6 +204,7 @@ def test_reasons_read_each_rule_flattened_once(monkeypatch):
     """Verdict.error reads a rule's values (and a message's numbers) from arrays flattened
     once per rule, not once per invalid design; the errors are those of the designs alone."""
     from core import designs as designs_module
+    from core import verdict as verdict_module
     from core.geometry import synthesize
     k, stroke = np.meshgrid(np.linspace(1.05, 4.95, 40), np.linspace(150.0, 600.0, 30))
     _, verdict = designs_module.synthesize_many(100.0, k, stroke, rod_ratio=0.3)  # 2-D
@@ -211,7 +212,7 @@ def test_reasons_read_each_rule_flattened_once(monkeypatch):
     assert bad.size > 300
     calls = []
     broadcast = np.broadcast_to
-    monkeypatch.setattr(designs_module.np, "broadcast_to",
+    monkeypatch.setattr(verdict_module.np, "broadcast_to",
                         lambda *a, **kw: calls.append(1) or broadcast(*a, **kw))
     errors = [verdict.error(int(i)) for i in bad]
     monkeypatch.undo()
