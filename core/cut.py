@@ -20,8 +20,8 @@ from functools import lru_cache
 import numpy as np
 
 from .designs import Designs
-from .extrema import bracket_root
 from .kinematics import Shape, ram_origin, shape
+from .polish import bracket_root
 
 # Uniform samples per cycle that bracket the switch angles before they are polished (the
 # ram advances monotonically over the working stroke, so a coarse grid brackets each once).

@@ -10,14 +10,15 @@ first one it fails, as a single design's validation raises at the first.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable, Sequence
 
 import numpy as np
 
-from .errors import DesignError, range_text
 from .arrays import sorted_unique
+from .errors import DesignError, range_text
 from .extrema import grid_minimum
+from .verdict import Flat, Verdict, check_range, round_text
 
 MIN_LENGTH_MM = 0.001
 MAX_LENGTH_MM = 100_000.0
@@ -116,100 +117,9 @@ class Designs:
                    None if design.rod is None else one(design.rod), design.rod_side)
 
 
-@dataclass(frozen=True)
-class _Rule:
-    parameter: str
-    value: np.ndarray
-    allowed: str | Callable[[int], str]
-    flat: list = field(default_factory=list, repr=False, compare=False)   # values, once
-
-    def values(self, shape: tuple[int, ...]) -> "_flat":
-        """The rule's values broadcast to the designs' shape, by flat index."""
-        if not self.flat:
-            self.flat.append(_flat(self.value, shape))
-        return self.flat[0]
-
-
-@dataclass
-class Verdict:
-    """Which designs pass, and the rule each other one fails first.
-
-    ``failed`` has the designs' shape: 0 for a valid design, else 1 + the
-    index of the first failed rule. :meth:`error` rebuilds the exact
-    :class:`DesignError` a single design's validation would raise.
-    """
-
-    failed: np.ndarray
-    rules: list[_Rule] = field(default_factory=list)
-
-    @property
-    def ok(self) -> np.ndarray:
-        return self.failed == 0
-
-    def check(self, parameter: str, bad, value, allowed: str | Callable[[int], str]) -> None:
-        """Add a rule: designs where ``bad`` is true (and no earlier rule failed) fail it."""
-        self.rules.append(_Rule(parameter, value, allowed))
-        bad = np.broadcast_to(np.asarray(bad, dtype=bool), self.failed.shape)
-        self.failed[bad & (self.failed == 0)] = len(self.rules)
-
-    def error(self, index) -> DesignError | None:
-        """The error of the design at ``index`` (a flat index), or None if it is valid."""
-        code = int(self.failed.reshape(-1)[index])
-        if code == 0:
-            return None
-        rule = self.rules[code - 1]
-        value = rule.values(self.failed.shape)[index]
-        value = value.item() if isinstance(value, np.generic) else value
-        allowed = rule.allowed if isinstance(rule.allowed, str) else rule.allowed(index)
-        return DesignError(rule.parameter, value, allowed)
-
-    def raise_first(self) -> None:
-        """Raise the error of the first invalid design, if any."""
-        bad = np.flatnonzero(self.failed)
-        if bad.size:
-            raise self.error(int(bad[0]))  # type: ignore[misc]
-
-
-class _flat:
-    """``values`` broadcast to ``shape`` and read by a flat index; flattened once, on the
-    first read. A rule's message reads one value per invalid design: flattening for each
-    read (``np.broadcast_to`` every time) made a reason 8.9 µs instead of 3.7 µs, 0.20 s
-    instead of 0.08 s for the 21 963 invalid designs in one block (36 363 designs) of
-    ``shaper sweep --crank 100 --K 1.4 --stroke 300 --rod-ratio 0.3 --vary K=1.05:4.95:300
-    --vary rod-ratio=0.2:1.2:300``."""
-
-    def __init__(self, values, shape: tuple[int, ...]) -> None:
-        self.values, self.shape, self.flat = values, shape, None
-
-    def __getitem__(self, index):
-        if self.flat is None:
-            self.flat = np.broadcast_to(self.values, self.shape).reshape(-1)
-        return self.flat[index]
-
-
-def check_range(verdict: Verdict, name: str, value: np.ndarray, low: float, high: float,
-                unit: str = "", low_open: bool = True, high_open: bool = False) -> None:
-    """``errors.require_range`` for every design: first finiteness, then the range."""
-    finite = np.isfinite(value)
-    verdict.check(name, ~finite, value, "must be a finite number")
-    with np.errstate(invalid="ignore"):
-        too_low = value <= low if low_open else value < low
-        too_high = value >= high if high_open else value > high
-    verdict.check(name, too_low | too_high, value,
-                  range_text(low, high, unit, low_open=low_open, high_open=high_open))
-
-
 def check_length(verdict: Verdict, name: str, value: np.ndarray) -> None:
     """A link length in [MIN_LENGTH_MM, MAX_LENGTH_MM] mm."""
     check_range(verdict, name, value, MIN_LENGTH_MM, MAX_LENGTH_MM, "mm", low_open=False)
-
-
-def round_text(value: float, digits: int = 6, down: bool = False) -> str:
-    """``value`` rounded up (or down) to ``digits`` significant digits, so that a stated
-    minimum (or maximum) is itself allowed."""
-    scale = 10.0 ** (digits - 1 - math.floor(math.log10(abs(value))))
-    rounded = (math.floor if down else math.ceil)(value * scale) / scale
-    return f"{rounded:.{digits}g}"
 
 
 def _floats(*values) -> list[np.ndarray]:
@@ -245,11 +155,11 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         need = 2.0 * (crank + frame) * half
         too_short = lever < crank + frame
     verdict.check("time_ratio", half < smallest, time_ratio,
-                  lambda i, at=_flat(k_min, shape):
+                  lambda i, at=Flat(k_min, shape):
                       f"must be ≥ {round_text(at[i])} for this crank and "
                       f"stroke, so that the frame and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
     verdict.check("stroke", too_short, stroke,
-                  lambda i, at=_flat(need, shape):
+                  lambda i, at=Flat(need, shape):
                       f"must be ≥ {at[i]:.1f} mm for this crank and K, "
                       "so that the crank pin stays on the lever")
     return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
@@ -331,12 +241,12 @@ def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) ->
     """K = (π + θ)/(π − θ) with sin(θ/2) = L1/L2 must stay ≤ 5, like a synthesized K."""
     shape = verdict.failed.shape
     verdict.check("crank", crank >= frame, crank,
-                  lambda i, at=_flat(frame, shape):
+                  lambda i, at=Flat(frame, shape):
                       f"must be shorter than the frame O2O4 ({at[i]:.6g} mm)")
     with np.errstate(all="ignore"):
         too_long = crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12)
     verdict.check("crank", too_long, crank,
-                  lambda i, at=_flat(frame, shape):
+                  lambda i, at=Flat(frame, shape):
                       f"must be ≤ {round_text(MAX_CRANK_RATIO * at[i], down=True)}"
                       f" mm (0.866·L2), so that the time ratio K stays ≤ {MAX_TIME_RATIO:g}")
 
@@ -353,16 +263,16 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
         reach = d.frame + d.crank
         tip_low = d.lever * np.sqrt(1.0 - np.minimum(d.crank / d.frame, 1.0) ** 2)  # L3·cos(θ/2)
     verdict.check("lever", d.lever < reach, d.lever,
-                  lambda i, at=_flat(reach, shape):
+                  lambda i, at=Flat(reach, shape):
                       f"must be ≥ L2 + L1 = {at[i]:.6g} mm, "
                       "so that the crank pin stays on the lever")
     verdict.check("guide", d.guide <= reach, d.guide,
-                  lambda i, at=_flat(reach, shape):
+                  lambda i, at=Flat(reach, shape):
                       f"must be > L2 + L1 = {at[i]:.6g} mm above the lever "
                       "pivot, so that the ram clears the crank")
     if d.rod is None:
         verdict.check("guide", d.guide > d.lever, d.guide,
-                      lambda i, at=_flat(d.lever, shape):
+                      lambda i, at=Flat(d.lever, shape):
                           f"must be ≤ the lever length {at[i]:.6g} mm: "
                           "the block on the lever tip cannot reach a higher guide")
         return
@@ -372,7 +282,7 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     with np.errstate(all="ignore"):
         need = np.maximum(d.guide - tip_low, d.lever - d.guide) / math.sqrt(1.0 - ROD_MARGIN ** 2)
     verdict.check("rod", d.rod <= need, d.rod,
-                  lambda i, at=_flat(need, shape):
+                  lambda i, at=Flat(need, shape):
                       f"must be > {at[i]:.6g} mm to reach the guide line "
                       "over the whole cycle")
     # r·cos ψ − s·d·sin ψ ≥ r_min·cos(θ/2) − |d|_max·sin(θ/2): where this bound already

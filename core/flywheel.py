@@ -201,7 +201,8 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     and a zero counts only inside its own piece. ``start`` is :func:`_stored` at φ = 0,
     ``window`` the cut's switch angles.
     """
-    from .extrema import bracket_root, sign_changes
+    from .extrema import sign_changes
+    from .polish import bracket_root
 
     on, off = window
 

@@ -17,10 +17,11 @@ from typing import Literal
 import numpy as np
 
 from .designs import (GUIDE_RULES, MAX_CRANK_RATIO, MAX_LENGTH_MM, MAX_ROD_RATIO, MAX_TIME_RATIO,  # noqa: F401
-                      MIN_LENGTH_MM, ROD_MARGIN, ROD_SIDES, Designs, Verdict, check_designs,
+                      MIN_LENGTH_MM, ROD_MARGIN, ROD_SIDES, Designs, check_designs,
                       dimensions_many, drive_margin, synthesize_many)
 from .designs import _guide, _guide_number
 from .errors import DesignError, require_range
+from .verdict import Verdict
 
 GuideRule = Literal["chord", "sagitta"]
 RodSide = Literal["trailing", "leading"]

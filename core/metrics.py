@@ -17,10 +17,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from .designs import Designs
-from .extrema import bracket_root, grid_argmax
+from .extrema import grid_argmax
 from .geometry import Design
 from .kinematics import (CROWD_BELOW, CROWD_OFFSETS, check_rpms, pressure_angle, rpm_to_omega,
                          shape_at)
+from .polish import bracket_root
 from .rates import Rates, ram_rates, ram_velocity, rates4_at, rates_at, tip_rates
 
 
@@ -141,7 +142,7 @@ def _specials(d: Designs) -> tuple[np.ndarray, np.ndarray]:
 
 def _ram_curves(beta, quantity, crank, frame, lever, guide, rod, *, side):
     """(value, slope d/dβ, the slope's d/dβ) of dCx/dφ, −dCx/dφ or |d²Cx/dφ²| (``quantity``
-    0, 1, 2) at β, for Newton's method on the slope (:func:`core.extrema.newton_maximum`)."""
+    0, 1, 2) at β, for Newton's method on the slope (:func:`core.polish.newton_maximum`)."""
     d = Designs(crank, frame, lever, guide, None if side is None else rod,
                 "trailing" if side is None else side)
     ram1, ram2, ram3, ram4 = rates4_at(d, np.cos(beta), np.sin(beta))

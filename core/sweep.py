@@ -14,13 +14,14 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .designs import Designs, Verdict, dimensions_many, synthesize_many
+from .designs import Designs, dimensions_many, synthesize_many
 from .dynamics import MassProperties
 from .flywheel import cycle_summary
 from .errors import DesignError
 from .metrics import CyclePeaks, cycle_peaks, speed_figures
 from .kinematics import check_rpms, rpm_to_omega
 from .spec import GUIDE_RULES, MODES, ROD_INPUTS, ROD_SIDES, VARIANTS, Spec
+from .verdict import Verdict
 
 # Sweepable parameters: the name a user types (as the design options) → the core name.
 PARAMETERS = {"crank": "crank", "K": "time_ratio", "stroke": "stroke", "rod": "rod",

@@ -48,5 +48,5 @@ def main_window(folder: Path) -> Iterator[MainWindow]:
 
 def curve_items(plot_item) -> list:
     """The curve items a stacked plot holds (removed ones are gone, not just emptied)."""
-    from shaperapp.plots.curves import CurveItem
+    from shaperapp.plots.items import CurveItem
     return [item for item in plot_item.items if isinstance(item, CurveItem)]

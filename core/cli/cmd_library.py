@@ -17,21 +17,21 @@ from typing import Any
 from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import storable
 from core.library.open import library_exists
-from core.library.query import QueryError, parse_filter, sort_sql
+from core.library.query import QueryError
 from core.library.store import ENV_VAR, LibraryError, backup_copy
 
 from ..compare import value_text
 from ..errors import FileFormatError
-from ..figures import DESIGN_FIGURES, FIGURES_VERSION, SPEED_FIGURES
+from ..figures import DESIGN_FIGURES, SPEED_FIGURES
 from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library
 from .cmd_library_check import check_options, run_check
 from .cmd_library_compare import compare_options, run_compare
+from .cmd_library_list import filter_help, list_options, run_list
 from .cmd_library_refresh import refresh_options, run_refresh
 from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
                      NOTES, add_speed_options, design_file, fail, library_path, masses_from_args, note_read_only,
-                     number, whole_number,
-                     rpms_from_args, spec_from_args)
+                     number, rpms_from_args, spec_from_args)
 from .output import OutputError, print_json
 
 HELP = "keep, find, export and compare designs in a library"
@@ -42,28 +42,6 @@ DESCRIPTION = ("A design library: named designs with notes, tags and their key f
 EXAMPLES = ("shaper library add --crank 100 --K 1.4 --stroke 300 --name base --notes 'first try'",
             "shaper library list --sort a_max --where 'variant=rod,K>=1.4' --rpm 60",
             "shaper library compare base rod-1.6 --rpm 60 --csv compare.csv")
-LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "{:.4f}"),
-                ("H mm", "stroke_mm", "{:.2f}"), ("θ °", "theta_deg", "{:.3f}"),
-                ("r/min", "rpm", "{:g}"), ("v_work_max m/s", "v_work_max_m_s", "{:.4f}"),
-                ("v_return_max m/s", "v_return_max_m_s", "{:.4f}"), ("a_max m/s²", "a_max_m_s2", "{:.4f}"),
-                ("J_F kg·m²", "flywheel_inertia_kg_m2", "{:.5g}"), ("modified", "modified", ""))
-
-
-def filter_help() -> str:
-    """The filter and sort syntax, for ``library list --help`` (from core's own tables)."""
-    from core.library.query import FIELDS, OPERATORS
-    return ("filter (--where): conditions FIELD OP VALUE separated by commas, all must hold.\n"
-            f"  OP: {' '.join(OPERATORS)}   (~ contains, ignoring case)\n"
-            "  VALUE: a number, or text; \"double quotes\" around text with a comma.\n"
-            "  tag=TAG matches one of the tags.\n"
-            "sort (--sort) and filter fields:\n  " + _wrap(", ".join(k for k in FIELDS if k != "tag")) + "\n"
-            "  short names: K, H, L1, L2, L3, L4, theta, a_max, J_F, crank, frame, lever, rod, "
-            "stroke, pressure, flywheel (any letter case)")
-
-
-def _wrap(text: str, width: int = 76) -> str:
-    import textwrap
-    return "\n  ".join(textwrap.wrap(text, width))
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -88,18 +66,6 @@ def _add_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--notes", default="", help="free text kept with the design")
     p.add_argument("--tags", nargs="+", default=[], metavar="TAG", help="tags for filtering (tag=TAG)")
     p.add_argument("--replace", action="store_true", help="replace an entry of the same name")
-
-
-def _list_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--where", metavar="FILTER", default="",
-                   help="conditions FIELD OP VALUE separated by commas, e.g. 'K>=1.4,variant=rod,name~cut'")
-    p.add_argument("--search", metavar="TEXT", default="", help="text in the name, notes or tags")
-    p.add_argument("--sort", metavar="FIELD", default="name",
-                   help="sort by a field (default name; the fields are listed below)")
-    p.add_argument("--desc", action="store_true", help="sort descending")
-    p.add_argument("--rpm", metavar="RPM", help="show per-speed figures at this speed (default: each design's first)")
-    p.add_argument("--limit", metavar="N", help="show at most N entries")
-    p.add_argument("--json", action="store_true", help="print a JSON array")
 
 
 def _name_option(p: argparse.ArgumentParser) -> None:
@@ -232,50 +198,6 @@ def _run_add(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run_list(args: argparse.Namespace) -> int:
-    rpm = number("rpm", args.rpm) if args.rpm is not None else None
-    limit = whole_number("--limit", args.limit) if args.limit is not None else None
-    try:
-        sort_sql(args.sort, args.desc)
-    except QueryError as exc:
-        raise UsageError(f"--sort: {exc}") from None
-    parse_filter(args.where)                # a bad filter is reported even for an empty library
-    path = library_path(args.library)
-    if not library_exists(path):            # listing never creates a library
-        print("[]" if args.json else f"no designs in {path} (it does not exist yet)")
-        return 0
-    with _open(args, create=False) as lib:
-        rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
-                         rpm=rpm, limit=limit)
-    stale = sum(1 for row in rows if row["figures_version"] is not None
-                and row["figures_version"] < FIGURES_VERSION)
-    if stale:
-        print(f"shaper: note: {stale} of the {len(rows)} designs listed "
-              f"{'has' if stale == 1 else 'have'} figures an older version computed; "
-              "'shaper library refresh' recomputes them", file=sys.stderr)
-    damaged = sum(1 for row in rows if row["damaged"])
-    if damaged:
-        print(f"shaper: note: {damaged} of the {len(rows)} designs listed {'is' if damaged == 1 else 'are'} "
-              "damaged (what cannot be read shows as —); 'shaper library check' says why", file=sys.stderr)
-    if args.json:
-        print_json(rows)
-        return 0
-    if not rows:
-        print("no designs match" if (args.where or args.search) else f"no designs in {lib.path}")
-        return 0
-    cells = [[head for head, _, _ in LIST_COLUMNS]]
-    for row in rows:
-        cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else str(row[key])
-                      for _, key, fmt in LIST_COLUMNS])
-        if row["damaged"]:
-            cells[-1][0] += " (damaged)"
-    widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
-    for r in cells:
-        print("  ".join(c.ljust(w) if i in (0, 1, len(r) - 1) else c.rjust(w)
-                        for i, (c, w) in enumerate(zip(r, widths))).rstrip())
-    return 0
-
-
 def _entry_document(entry: Entry) -> dict[str, Any]:
     f = entry.figures
     return {"name": entry.name, "notes": entry.notes, "tags": list(entry.tags),
@@ -394,7 +316,7 @@ def _run_refresh(args: argparse.Namespace) -> int:
 
 ACTIONS = (
     ("add", "store a design (from options or --design FILE) under a name", _add_options),
-    ("list", "list, filter and sort the designs", _list_options),
+    ("list", "list, filter and sort the designs", list_options),
     ("show", "one design's notes, figures and (with --json) document", _show_options),
     ("remove", "delete a design from the library", _name_option),
     ("rename", "give a design a new name", _rename_options),
@@ -418,7 +340,7 @@ ACTION_EXAMPLES = {
     "refresh": "shaper library refresh --all",
     "check": "shaper library check --library designs.sqlite",
 }
-ACTION_RUN = {"add": _run_add, "list": _run_list, "show": _run_show, "remove": _run_remove,
+ACTION_RUN = {"add": _run_add, "list": lambda args: run_list(args, _open), "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
               "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh,
               "check": lambda args: run_check(args, _open(args, create=False))}

@@ -9,7 +9,7 @@ from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QComboBox, QFormLayout, QLabel, QVBoxLayout, QWidget
 
 from core.cam import LAWS
-from shaperapp.design.form import DEBOUNCE_MS, ERROR_STYLE, NumberField, parse_number
+from shaperapp.design.fields import DEBOUNCE_MS, ERROR_STYLE, NumberField, parse_number
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
 
 from .model import CHOICES, NUMBERS, OPTIONAL, CamModel

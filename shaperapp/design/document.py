@@ -19,7 +19,8 @@ from core.spec import Spec
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.messages import describe
 
-from .model import DEFAULT_RPMS, DEFAULT_STEP, DesignModel
+from .inputs import DEFAULT_RPMS, DEFAULT_STEP
+from .model import DesignModel
 
 MAX_RECENT = 8
 MAX_PATH_CHARS = 4096      # longer is not a path any system opens (PATH_MAX)

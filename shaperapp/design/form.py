@@ -7,78 +7,19 @@ from __future__ import annotations
 
 import math
 
-from PySide6.QtCore import QEvent, QTimer, Qt, Signal
+from PySide6.QtCore import QEvent, QTimer, Qt
 from PySide6.QtWidgets import (QButtonGroup, QComboBox, QFormLayout, QGroupBox, QHBoxLayout,
-                               QLabel, QLineEdit, QListWidget, QListWidgetItem, QRadioButton, QSizePolicy, QToolButton, QVBoxLayout, QWidget)
+                               QLabel, QLineEdit, QListWidget, QListWidgetItem, QRadioButton, QSizePolicy,
+                               QToolButton, QVBoxLayout, QWidget)
 
 from core.kinematics import MAX_RPM
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
 
-from .model import MAX_SPEEDS, DesignModel
+from .fields import DEBOUNCE_MS, ERROR_STYLE, NumberField, exact_number, parse_number
+from .inputs import MAX_SPEEDS
+from .model import DesignModel
 
-DEBOUNCE_MS = 200
-ERROR_STYLE = "QLineEdit, QComboBox, QListWidget { border: 2px solid #c62828; background: #ffebee; }"
 CHOICES = ("variant", "guide_rule", "rod_input", "rod_side")
-
-
-def format_number(value: float) -> str:
-    return f"{value:.6g}"
-
-
-def exact_number(value: float) -> str:
-    """The shortest text that reads back as exactly ``value``: an input field shows
-    what Save will write, not a rounding of it (386.3703305, not 386.37)."""
-    for digits in range(6, 18):
-        text = f"{value:.{digits}g}"
-        if float(text) == value:
-            return text
-    return repr(value)
-
-
-def parse_number(text: str) -> float | str:
-    """A float if the text is one (a decimal comma is accepted), else the text itself."""
-    cleaned = text.strip().replace(",", ".")
-    try:
-        return float(cleaned)
-    except ValueError:
-        return text
-
-
-class _NumberField(QWidget):
-    """A line edit with its unit beside it; emits ``edited`` on every keystroke."""
-
-    edited = Signal()
-
-    def __init__(self, unit: str, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
-        self.edit = QLineEdit(self)
-        self.edit.setAlignment(Qt.AlignmentFlag.AlignRight)
-        self.edit.setMinimumWidth(90)
-        self.unit = QLabel(unit, self)
-        self.unit.setMinimumWidth(34)
-        layout = QHBoxLayout(self)
-        layout.setContentsMargins(0, 0, 0, 0)
-        layout.addWidget(self.edit, 1)
-        layout.addWidget(self.unit)
-        self.edit.textEdited.connect(self.edited)
-
-    def set_value(self, value: float | str) -> None:
-        """Show ``value`` unless the text already means it (so "1.60" stays as typed);
-        text that is not a number (an invalid input, e.g. after undo) shows as it is."""
-        if isinstance(value, str):
-            if self.edit.text() != value:
-                self.edit.setText(value)
-        elif parse_number(self.edit.text()) != value:
-            self.edit.setText(exact_number(value))
-
-    def value(self) -> float | str:
-        return parse_number(self.edit.text())
-
-    def set_error(self, on: bool) -> None:
-        self.edit.setStyleSheet(ERROR_STYLE if on else "")
-
-
-NumberField = _NumberField   # the public name other input forms use (loads_form.py)
 
 
 class DesignForm(QWidget):
@@ -99,10 +40,10 @@ class DesignForm(QWidget):
         self._mode_group.addButton(self._synth_radio)
         self._mode_group.addButton(self._dims_radio)
         self._fields = {
-            "crank": _NumberField("mm"), "time_ratio": _NumberField("–"), "stroke": _NumberField("mm"),
-            "frame": _NumberField("mm"), "lever": _NumberField("mm"),
-            "guide_height": _NumberField("mm"), "rod_length": _NumberField("mm"),
-            "rod_ratio": _NumberField("–"), "step": _NumberField("°"),
+            "crank": NumberField("mm"), "time_ratio": NumberField("–"), "stroke": NumberField("mm"),
+            "frame": NumberField("mm"), "lever": NumberField("mm"),
+            "guide_height": NumberField("mm"), "rod_length": NumberField("mm"),
+            "rod_ratio": NumberField("–"), "step": NumberField("°"),
         }
         self._variant = QComboBox(self)
         self._guide_rule = QComboBox(self)

@@ -18,7 +18,7 @@ from core.errors import DesignError
 
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
 
-from .form import DEBOUNCE_MS, NumberField, format_number, parse_number
+from .fields import DEBOUNCE_MS, NumberField, format_number, parse_number
 from .model import DesignModel
 
 # Input fields in form order: MassProperties names, except the two ram offsets

@@ -13,7 +13,7 @@ when the inputs are valid, so Save always writes a design that reopens.
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, replace
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any, Callable, Hashable
 
 import numpy as np
@@ -27,27 +27,13 @@ from core.kinematics import Motion
 from core.metrics import CycleMetrics
 from core.spec import NUMBER_FIELDS, Spec
 
-from shaperapp.widgets.messages import field_name
-
-from .results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, solve_forces,
-                            typed_error)
-from .undo import InputEdit, Inputs, push_edit
+from .inputs import DEFAULT_MASSES, DEFAULT_RPMS, DEFAULT_STEP, Inputs, typed_spec
+from .results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, same_error,
+                      solve_forces, typed_error)
+from .undo import InputEdit, edit_text, push_edit
 
 if TYPE_CHECKING:       # a type only: core.compare is imported when a comparison is made
     from core.compare import Candidate
-
-DEFAULT_RPMS = (40.0, 60.0)
-DEFAULT_STEP = 1.0
-MAX_SPEEDS = 16          # as core.kinematics.check_rpms allows
-# The classic course-design loads of a shaper (lever 200 N, J = 1.1 kg·m², ram 700 N,
-# cutting force 7000 N at 80 mm below the guide), so the Forces view shows a case at once.
-DEFAULT_MASSES = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
-                                cut_force_N=7000.0, cut_height_mm=80.0, delta=1.0 / 30.0)
-
-
-def _loads(masses: MassProperties, pending: dict[str, Any] | None = None) -> tuple[tuple[str, Any], ...]:
-    return tuple(sorted({**asdict(masses), **(pending or {})}.items()))
-
 
 class DesignModel(QObject):
     """Holds the inputs the user typed, the last valid design and its results.
@@ -84,7 +70,7 @@ class DesignModel(QObject):
         self._rpms: tuple[float, ...] = DEFAULT_RPMS
         self._step = DEFAULT_STEP
         self._masses = DEFAULT_MASSES
-        self._inputs = Inputs(self._valid_spec, self._rpms, self._step, _loads(self._masses))
+        self._inputs = Inputs.of(self._valid_spec, self._rpms, self._step, self._masses)
         (self._design, self._motion, self._metrics,
          self._dynamics, self._dynamics_summary) = compute(self._inputs, self._masses)
         self.undo_stack = QUndoStack(self)
@@ -231,10 +217,7 @@ class DesignModel(QObject):
         valid value instead of invalid text, so Save never writes one."""
         old = self._inputs.spec
         mode = changes.pop("mode", old.mode)
-        spec = replace(old, **changes)
-        if mode != old.mode:       # carried over, except what was given with the switch
-            spec = replace(spec.switch_mode(mode, self._design), **changes)
-        requested, spec = spec, self._settle_inactive(spec)
+        requested, spec = typed_spec(old, mode, changes, self._design, self._valid_spec)
         if spec == old:
             if requested != old:
                 self.specChanged.emit()       # the form shows the value kept instead
@@ -243,21 +226,21 @@ class DesignModel(QObject):
         choice = mode != old.mode or any(name not in NUMBER_FIELDS for name in touched)
         names = ["mode"] if mode != old.mode else list(touched)
         self._push(replace(self._inputs, spec=spec), None if choice else ("spec", touched),
-                   lambda: self._edit_text(names))
+                   lambda: edit_text(names))
 
     def set_rpms(self, rpms) -> None:
         """Set the crank speeds (r/min, or text as typed); an invalid list is reported, not applied."""
         values = tuple(rpms)
         if values == self._inputs.rpms:
             return
-        self._push(replace(self._inputs, rpms=values), None, lambda: self._edit_text(["rpm"]))
+        self._push(replace(self._inputs, rpms=values), None, lambda: edit_text(["rpm"]))
 
     def set_step(self, step_deg: Any) -> None:
         """Set the angle step (degrees, or text as typed)."""
         if step_deg == self._inputs.step or (isinstance(step_deg, float) and isinstance(self._inputs.step, float)
                                             and math.isnan(step_deg) and math.isnan(self._inputs.step)):
             return
-        self._push(replace(self._inputs, step=step_deg), ("step",), lambda: self._edit_text(["step"]))
+        self._push(replace(self._inputs, step=step_deg), ("step",), lambda: edit_text(["step"]))
 
     def set_masses(self, **changes: Any) -> None:
         """Change some load inputs; apply them if they are all valid."""
@@ -266,11 +249,11 @@ class DesignModel(QObject):
             return
         names = sorted(changes)
         self._push(replace(self._inputs, loads=tuple(sorted(loads.items()))),
-                   ("loads", tuple(names)), lambda: self._edit_text(names))
+                   ("loads", tuple(names)), lambda: edit_text(names))
 
     def revert_invalid(self) -> None:
         """Put the design on screen back into every input (one undoable step)."""
-        inputs = Inputs(self._valid_spec, self._rpms, self._step, _loads(self._masses))
+        inputs = Inputs.of(self._valid_spec, self._rpms, self._step, self._masses)
         if inputs != self._inputs:
             self._push(inputs, None, lambda: QCoreApplication.translate("model", "revert invalid inputs"))
 
@@ -305,7 +288,7 @@ class DesignModel(QObject):
         Raises DesignError (and changes nothing) when the state cannot be computed;
         otherwise clears the undo history and marks the state saved as ``path``."""
         masses = DEFAULT_MASSES if masses is None else masses
-        inputs = Inputs(spec, tuple(float(v) for v in rpms), float(step_deg), _loads(masses))
+        inputs = Inputs.of(spec, tuple(float(v) for v in rpms), float(step_deg), masses)
         try:
             spec.check_fields()
             results = compute(inputs, masses)
@@ -348,25 +331,6 @@ class DesignModel(QObject):
         if key is not None:
             key = (key, self._session)
         push_edit(self.undo_stack, InputEdit(self._apply, self._inputs, inputs, key, describe))
-
-    @staticmethod
-    def _edit_text(names) -> str:
-        names = list(names)
-        if names == ["mode"]:
-            return QCoreApplication.translate("model", "switch input mode")
-        if len(names) == 1:
-            return field_name(names[0])
-        return QCoreApplication.translate("model", "edit %1 fields").replace("%1", str(len(names)))
-
-    def _settle_inactive(self, spec: Spec) -> Spec:
-        """Unused fields that hold an invalid value take the last valid one back."""
-        fixes = {}
-        for name in set(NUMBER_FIELDS) - spec.active_fields():
-            try:
-                spec.check_field(name)
-            except DesignError:
-                fixes[name] = getattr(self._valid_spec, name)
-        return replace(spec, **fixes) if fixes else spec
 
     def _apply(self, inputs: Inputs) -> None:
         """Make ``inputs`` the typed state and recompute what they change (undo/redo too).
@@ -430,15 +394,13 @@ class DesignModel(QObject):
         return True
 
     def _set_error(self, error: DesignError | None) -> None:
-        same = (error is None and self._error is None) or (
-            error is not None and self._error is not None and str(error) == str(self._error))
+        same = same_error(error, self._error)
         self._error = error
         if not same:
             self.errorChanged.emit()
 
     def _set_forces_error(self, error: DesignError | None, force: bool = False) -> None:
-        changed = (error is None) != (self._forces_error is None) or (
-            error is not None and str(error) != str(self._forces_error))
+        same = same_error(error, self._forces_error)
         self._forces_error = error
-        if changed or force:
+        if not same or force:
             self.forcesErrorChanged.emit()

@@ -17,7 +17,7 @@ from core.kinematics import Motion, angle_count, check_request, check_rpms, cran
 from core.metrics import CycleMetrics, analyze
 from core.spec import Spec
 
-from .undo import Inputs
+from .inputs import Inputs
 
 # angles × speeds the whole window recomputes and redraws within about half a second:
 # 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
@@ -115,3 +115,9 @@ def typed_error(error: DesignError, spec: Spec) -> DesignError:
 
 def compute_error(exc: BaseException) -> DesignError:
     return DesignError("design", type(exc).__name__, "cannot be computed for these inputs")
+
+
+def same_error(a: DesignError | None, b: DesignError | None) -> bool:
+    """Both none, or both saying the same: a keystroke that keeps a field invalid in the
+    same way changes no error, so the model emits nothing."""
+    return (a is None) == (b is None) and str(a) == str(b)

@@ -8,31 +8,25 @@ typing session); they merge into one step through ``id``/``mergeWith``, done by
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any, Callable, Hashable
+from typing import Callable, Hashable
 
+from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QUndoCommand, QUndoStack
 
-from core.spec import Spec
+from shaperapp.widgets.messages import field_name
+
+from .inputs import Inputs
 
 MERGE_ID = 1
 
 
-@dataclass(frozen=True)
-class Inputs:
-    """Everything the user typed, valid or not: one state of the undo history.
-
-    ``rpms`` and ``step`` hold floats, or the text the user typed when it is not a
-    number; ``loads`` are the load fields as typed (``MassProperties`` names)."""
-
-    spec: Spec
-    rpms: tuple[Any, ...]
-    step: Any
-    loads: tuple[tuple[str, Any], ...]
-
-    @property
-    def load_dict(self) -> dict[str, Any]:
-        return dict(self.loads)
+def edit_text(names: list[str]) -> str:
+    """The history's name of an edit of the fields ``names``, in the current language."""
+    if names == ["mode"]:
+        return QCoreApplication.translate("model", "switch input mode")
+    if len(names) == 1:
+        return field_name(names[0])
+    return QCoreApplication.translate("model", "edit %1 fields").replace("%1", str(len(names)))
 
 
 class InputEdit(QUndoCommand):

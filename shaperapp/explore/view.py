@@ -15,9 +15,8 @@ from dataclasses import replace
 import numpy as np
 from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QColor
-from PySide6.QtWidgets import (QCheckBox, QComboBox, QDoubleSpinBox, QGridLayout, QGroupBox,
-                               QHBoxLayout, QLabel, QProgressBar, QPushButton, QSpinBox,
-                               QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QComboBox, QDoubleSpinBox, QGridLayout, QHBoxLayout, QLabel,
+                               QProgressBar, QPushButton, QSpinBox, QVBoxLayout, QWidget)
 
 from core.optimize import on_bounds, tidy_optimum
 from core.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
@@ -29,6 +28,7 @@ from shaperapp.widgets.worker import JobRunner
 from . import names as explore_names
 from .jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .map import HeatMap
+from .optimize_box import OptimizeBox
 
 REFRESH_MS = 300
 
@@ -70,26 +70,13 @@ class ExploreView(QWidget):
         for label in (self.status, self.hover):      # two lines, beside each other above the map
             label.setMinimumHeight(2 * label.fontMetrics().lineSpacing() + 4)
             label.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
-        self.objective = QComboBox()
-        self.free = [QCheckBox(), QCheckBox()]
-        for box in self.free:
-            box.setChecked(True)
-        self.optimize = QPushButton()
-        self.undo_proposal = QPushButton()      # back to the design before the optimum, one step
-        self.undo_proposal.setVisible(False)
-        self._proposal_index = -1               # the undo stack's index right after loading it
-        self.optimum = QLabel()
-        self.optimum.setWordWrap(True)
-        self.optimum.setVisible(False)
-        self.box = QGroupBox()
+        self.box = OptimizeBox(model)
         self._layout()
         self._refresh_timer = QTimer(self, singleShot=True, interval=REFRESH_MS)
         self._refresh_timer.timeout.connect(self.start_map)
         self.compute.clicked.connect(self.start_map)
         self.cancel.clicked.connect(self.stop)
-        self.optimize.clicked.connect(self.start_optimize)
-        self.undo_proposal.clicked.connect(self._undo_proposal)
-        model.undo_stack.indexChanged.connect(self._proposal_still_on_top)
+        self.box.optimize.clicked.connect(self.start_optimize)
         self.figure.currentIndexChanged.connect(self._figure_changed)
         for i, combo in enumerate(self.axis_names):
             combo.currentIndexChanged.connect(lambda _=0, i=i: self._axis_changed(i))
@@ -112,7 +99,7 @@ class ExploreView(QWidget):
 
     def _layout(self) -> None:
         grid = QGridLayout()
-        self._labels = [QLabel() for _ in range(5)]
+        self._labels = [QLabel() for _ in range(4)]
         grid.addWidget(self._labels[0], 0, 0)
         grid.addWidget(self.figure, 0, 1, 1, 3)
         for row, i in ((1, 0), (2, 1)):
@@ -126,14 +113,6 @@ class ExploreView(QWidget):
         grid.addWidget(self.cancel, 3, 3)         # beside Compute: no row of its own
         bar = QHBoxLayout()
         bar.addWidget(self.progress, 1)           # shown only while a job runs
-        opt = QGridLayout(self.box)
-        opt.addWidget(self._labels[4], 0, 0)
-        opt.addWidget(self.objective, 0, 1)
-        opt.addWidget(self.optimize, 0, 2)
-        opt.addWidget(self.free[0], 1, 0)
-        opt.addWidget(self.free[1], 1, 1)
-        opt.addWidget(self.optimum, 2, 0, 1, 2)
-        opt.addWidget(self.undo_proposal, 2, 2, Qt.AlignmentFlag.AlignTop)
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
         layout.addLayout(bar)
@@ -158,19 +137,11 @@ class ExploreView(QWidget):
 
     def _retranslate(self) -> None:
         for label, text in zip(self._labels, (self.tr("Figure"), self.tr("Across"), self.tr("Up"),
-                                              self.tr("Points per axis"), self.tr("Objective"))):
+                                              self.tr("Points per axis"))):
             label.setText(text)
         self.compute.setText(self.tr("Compute map"))
         self.cancel.setText(self.tr("Cancel"))
-        self.optimize.setText(self.tr("Optimize"))
-        self.box.setTitle(self.tr("Optimize over the map's ranges"))
-        self.free[0].setText(self.tr("vary across"))
-        self.free[1].setText(self.tr("vary up"))
-        for box in self.free:
-            box.setToolTip(self.tr("Let Optimize change this parameter. K and H are your "
-                                   "requirements: they stay fixed unless you tick this."))
-        self.undo_proposal.setText(self.tr("Undo proposal"))
-        self.undo_proposal.setToolTip(self.tr("Back to the design before Optimize (Edit › Undo does the same)"))
+        self.box.retranslate()
         self._fill_figures()
         names = self.parameter_names()
         for combo in self.axis_names:
@@ -186,7 +157,7 @@ class ExploreView(QWidget):
         rod = self.model.valid_spec.variant == "rod"
         names = {k: v for k, v in self.figure_names().items() if rod or not FIGURES[k][2]}
         self._fill_combo(self.figure, names)
-        self._fill_combo(self.objective, {k: v for k, v in names.items() if FIGURES[k][0]})
+        self._fill_combo(self.box.objective, {k: v for k, v in names.items() if FIGURES[k][0]})
 
     @staticmethod
     def _fill_combo(combo: QComboBox, items: dict[str, str], select: str | None = None) -> None:
@@ -211,7 +182,7 @@ class ExploreView(QWidget):
     def _axis_changed(self, i: int) -> None:
         name = self.axis_names[i].currentData()
         # Optimize starts from the user's requirements: K and H are varied only when freed.
-        self.free[i].setChecked(name not in REQUIREMENTS)
+        self.box.free[i].setChecked(name not in REQUIREMENTS)
         low, high = default_range(self.model.design, name)
         self.lows[i].setValue(low)
         self.highs[i].setValue(high)
@@ -312,39 +283,23 @@ class ExploreView(QWidget):
     def start_optimize(self) -> None:
         (x_name, x), (y_name, y) = self.axes()
         bounds = {name: (float(v[0]), float(v[-1])) for name, v, box in
-                  ((x_name, x, self.free[0]), (y_name, y, self.free[1])) if box.isChecked()}
+                  ((x_name, x, self.box.free[0]), (y_name, y, self.box.free[1])) if box.isChecked()}
         if not bounds or x_name == y_name:
-            self._say(self.tr("Choose one or two different free parameters."))
+            self.box.say(self.tr("Choose one or two different free parameters."))
             return
-        objective = self.objective.currentData()
+        objective = self.box.objective.currentData()
         masses = self.model.masses if FIGURES[objective][1] else None
         job = OptimizeJob(self.model.valid_spec, bounds, objective, self.model.rpms, masses)
-        self._say("")
+        self.box.say("")
         self._start(job, self.tr("Optimizing…"), busy=True)
 
     def _optimum_done(self, job: OptimizeJob, best) -> None:
         """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum)."""
         values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
-        text = explore_names.proposal_text(values, value, best, on_bounds(best, job.bounds))
-        self._say(text)
+        self.box.say(explore_names.proposal_text(values, value, best, on_bounds(best, job.bounds)))
         self.status.setText(self._map_status())       # no longer "Optimizing…"
         self.model.set_spec(**spec_changes(values))   # one step on the undo stack
-        self._proposal_index = self.model.undo_stack.index()
-        self.undo_proposal.setVisible(True)
-        self._proposal_still_on_top(self._proposal_index)
-
-    def _say(self, text: str) -> None:
-        """The optimizer's message, hidden (no empty line under the map) when there is none."""
-        self.optimum.setText(text)
-        self.optimum.setVisible(bool(text))
-
-    def _undo_proposal(self) -> None:
-        if self.model.undo_stack.index() == self._proposal_index:
-            self.model.undo_stack.undo()
-
-    def _proposal_still_on_top(self, index: int) -> None:
-        """(the stack's indexChanged: the index comes with it, also while the stack goes)"""
-        self.undo_proposal.setEnabled(index == self._proposal_index)
+        self.box.proposal_loaded()
 
     # ---- jobs -----------------------------------------------------------------
     def _start(self, job, text: str, busy: bool = False) -> None:
@@ -390,7 +345,7 @@ class ExploreView(QWidget):
         self.cancel.setEnabled(on)
         self.progress.setVisible(on)
         self.compute.setEnabled(not on)
-        self.optimize.setEnabled(not on)
+        self.box.optimize.setEnabled(not on)
 
     # ---- following the model ------------------------------------------------
     def _current_basis(self):

@@ -1,14 +1,13 @@
-"""What a view tells its plot stack: the plots (``Series``), the questions the stack
-asks it (``StackSource``), and the read-out's text, kept apart from the stack's widget
-code so that the views and the stack share one vocabulary."""
+"""What a view tells its plot stack: the plots (``Series``) and the questions the stack
+asks it (``StackSource``), kept apart from the stack's widget code so that the views
+and the stack share one vocabulary."""
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.style import fmt
 
 from .curves import Band, Curve
 from .legend import LegendKey
@@ -37,21 +36,3 @@ class StackSource(Protocol):
     def x_text(self, x: float) -> str: ...                    # "φ = 12.0°" for the read-out
     def cursor_x(self, index: int) -> float | dict[str, float]: ...   # per curve label
 
-
-def nbsp(text: str) -> str:
-    """Spaces that never break: the read-out wraps between entries, not inside one."""
-    return text.replace(" ", "&nbsp;").replace("/", "/&#8288;")    # no break after "r/"
-
-
-def readout_html(parts: list[str], group_title: str, unit: str,
-                 values: Sequence[tuple[Curve, float | None]]) -> str:
-    """The read-out line: the plot's name and x (``parts``), the legend's title, then each
-    curve's value in its colour, entries kept whole when the line wraps."""
-    parts = list(parts)
-    if group_title:
-        parts.append(group_title + ":")
-    for curve, value in values:
-        text = "—" if value is None else f"{fmt(value, '.4g')} {unit}"
-        parts.append(f"<span style='color:{curve.colour.name()}'>{nbsp(curve.label)}:</span>"
-                     f"&nbsp;{nbsp(text)}")
-    return "&nbsp;&nbsp; ".join(parts)

@@ -16,14 +16,13 @@ catches up when shown, or when one of its read-back methods is called.
 """
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, QTimer, Signal
-from PySide6.QtGui import QAction, QColor, QPainter, QTextDocumentFragment
-from PySide6.QtWidgets import (QFrame, QGraphicsView, QHBoxLayout, QLabel, QMenu, QScrollArea,
-                               QSizePolicy, QToolButton, QVBoxLayout, QWidget)
+from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, Signal
+from PySide6.QtGui import QAction, QColor, QPainter
+from PySide6.QtWidgets import (QFrame, QGraphicsView, QHBoxLayout, QMenu, QScrollArea,
+                               QToolButton, QVBoxLayout, QWidget)
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.image_export import export_scene, render_scene
@@ -32,22 +31,11 @@ from shaperapp.widgets.style import TEXT
 from .axes import cache_static, styled_plot_item
 from .curves import LEGEND_WIDTH, PlotSlots, finite_range
 from .legend import GroupLegend
-from .series import Series, StackSource, nbsp, readout_html
+from .readout import Readout
+from .series import Series, StackSource
+from .stack_layout import fit_heights, fitted_y, place_rows, show_x_values
 
 WHITE = QColor("#ffffff")
-Y_PADDING = 0.08         # share of the data's span added above and below when fitting y
-# After an edit a plot keeps its y range while that still holds the curves with at least
-# half the padding and is at most this much taller than a fresh fit: nudging an input
-# does not make every axis jump (and redraw its ticks and grid).
-SETTLE_SPAN = 1.25
-READOUT_DELAY_MS = 100   # the cursor read-out follows the animation at most 10 times a second
-# The least height of a plot's view box: room for three tick labels at the axis' closest
-# spacing (plot_axes.MIN_LABELS); a plot is also at least as tall as its axis title is
-# long. Where the pane is shorter than the plots need, the stack scrolls (16 speeds on a
-# 1366×768 laptop gave each Forces plot 60 px, two ticks and titles running together).
-MIN_PLOT_PX = 104
-TITLE_MARGIN_PX = 8      # free space along the axis beyond a title's ends
-
 
 class PlotStack(QWidget):
     """Stacked, x-linked cycle plots of one view (see the module docstring)."""
@@ -61,8 +49,6 @@ class PlotStack(QWidget):
         self._model, self._source, self._series = model, source, list(series)
         self._export_title = export_title
         self._stale = self._cursor_stale = True
-        self._hover: tuple[str, float] | None = None    # plot and x under the mouse
-        self._readout_key = self._series[0].key
         self._hidden: set[str] = set()                   # labels switched off in a legend
         self._x_range = (0.0, 1.0)
         self._x_axis: tuple[str, bool] | None = None
@@ -102,11 +88,9 @@ class PlotStack(QWidget):
         self._bar.setContentsMargins(4, 2, 4, 2)
         self._bar.addStretch(1)
         self._bar.addWidget(fit_button)
-        self._readout = QLabel()
-        self._readout.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-        self._readout.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
-        self._readout.setWordWrap(True)
-        self._readout.setContentsMargins(6, 2, 6, 2)
+        self._readout = Readout(model, source, self._series[0].key, lambda key: self._plots[key],
+                                lambda group: self._legends[group].title(),
+                                lambda: not self._stale)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(0)
@@ -118,10 +102,6 @@ class PlotStack(QWidget):
         self._scroll.setWidget(self._view)
         layout.addWidget(self._scroll, 1)
         layout.addWidget(self._readout)
-        self._readout_timer = QTimer(self)
-        self._readout_timer.setSingleShot(True)
-        self._readout_timer.setInterval(READOUT_DELAY_MS)
-        self._readout_timer.timeout.connect(self._show_readout)
 
         scene = self._view.scene()
         scene.contextMenu = []                   # no pyqtgraph "Export..." anywhere
@@ -193,9 +173,7 @@ class PlotStack(QWidget):
         self._view.setToolTip(self.tr(
             "Wheel: zoom x; wheel over an axis: zoom y; drag: zoom to a box; "
             "double-click: fit; click: set the crank angle; right click: menu"))
-        self._readout.setToolTip(self.tr(
-            "Values under the mouse, or at the cursor while the crank moves; "
-            "click a plot to move the mechanism to that crank position"))
+        self._readout.retranslate()
         for plot in self._plots.values():
             self._label_plot(plot)
         self._fit_heights()
@@ -247,11 +225,11 @@ class PlotStack(QWidget):
         self.fit(settle=True)
         self._cursor_stale = True
         self._on_angle(model.angle_index)
-        self._show_readout()
+        self._readout.update_text()
 
     def fit(self, settle: bool = False) -> None:
         """Whole cycle in x, every plot's curves in y (drops the user's zoom). ``settle``
-        (after an edit) keeps a y range that still fits well (see SETTLE_SPAN)."""
+        (after an edit) keeps a y range that still fits well (see stack_layout.fitted_y)."""
         for plot in self._plots.values():
             plot.item.vb.y_zoomed = False
         master = self._plots[self._series[0].key].item
@@ -267,11 +245,9 @@ class PlotStack(QWidget):
             if not self._shown[key] or plot.item.vb.y_zoomed:
                 continue
             lo, hi = finite_range(plot.visible_values(x0, x1))
-            pad = Y_PADDING * (hi - lo)
-            y0, y1 = plot.item.vb.viewRange()[1]
-            if not (settle and y0 <= lo - pad / 2 and y1 >= hi + pad / 2
-                    and y1 - y0 <= SETTLE_SPAN * (hi - lo + 2 * pad)):
-                plot.item.vb.setYRange(lo - pad, hi + pad, padding=0.0)
+            y_range = fitted_y(lo, hi, tuple(plot.item.vb.viewRange()[1]), settle)
+            if y_range is not None:
+                plot.item.vb.setYRange(*y_range, padding=0.0)
                 # now, not in the next paint's preparation, which would cost a second paint
                 plot.item.vb.updateMatrix()
             plot.place_band_labels()
@@ -287,8 +263,7 @@ class PlotStack(QWidget):
         for key, plot in self._plots.items():
             if self._shown[key]:
                 plot.move_cursor(xs)
-        if self._hover is None and not self._readout_timer.isActive():
-            self._readout_timer.start()
+        self._readout.follow_cursor()
 
     def _on_legend_toggle(self, label: str, shown: bool) -> None:
         self._hidden = (self._hidden - {label}) if shown else (self._hidden | {label})
@@ -296,55 +271,30 @@ class PlotStack(QWidget):
             plot.apply_hidden(self._hidden)
         self._cursor_stale = True
         self._on_angle(self._model.angle_index)
-        self._show_readout()
+        self._readout.update_text()
 
     # ---- layout ---------------------------------------------------------
     def _relayout(self) -> None:
         """Legend heads and shown plots, top to bottom; x values only under the lowest."""
-        ci = self._view.ci
-        for item in list(ci.items):
-            ci.removeItem(item)
-        row, group, last = 0, None, None
-        for series in self._series:
-            if not self._shown[series.key]:
-                continue
-            if series.group != group:
-                group = series.group
-                ci.addItem(self._legends[group].head, row=row, col=0)
-                row += 1
-            ci.addItem(self._plots[series.key].item, row=row, col=0)
-            row += 1
-            last = series.key
-        self._last = last
+        self._last = place_rows(self._view.ci, self._series, self._shown,
+                                {g: legend.head for g, legend in self._legends.items()}, self._plots)
         self._fit_heights()
         # An emptied layout shrank the central item to its minimum: back to the view's size.
-        ci.setGeometry(self._view.range)
+        self._view.ci.setGeometry(self._view.range)
         self._show_x_axis()
         self._cursor_stale = True
         if self.isVisible():
             self._on_angle(self._model.angle_index)
 
     def _show_x_axis(self) -> None:
-        """Tick values and the x title only under the lowest shown plot; grids on all."""
-        for key, plot in self._plots.items():
-            bottom = plot.item.getAxis("bottom")
-            bottom.setStyle(showValues=key == self._last)
-            bottom.showLabel(key == self._last)
+        show_x_values(self._plots, self._last)
 
     def _fit_legends(self) -> None:
         for legend in self._legends.values():
             legend.fit_width(self._view.width())
 
     def _fit_heights(self) -> None:
-        """Each plot at least MIN_PLOT_PX and its title's length tall; the view at least
-        as tall as its layout then needs, so the stack scrolls instead of squeezing."""
-        for plot in self._plots.values():
-            title = plot.item.getAxis("left").label.boundingRect().width() + 2 * TITLE_MARGIN_PX
-            plot.item.vb.setMinimumHeight(max(MIN_PLOT_PX, math.ceil(title)))
-        layout = self._view.ci.layout
-        layout.invalidate()
-        need = layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()
-        self._view.setMinimumHeight(math.ceil(need) + 2 * self._view.frameWidth())
+        fit_heights(self._view, self._plots.values())
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         if watched is self._view and event.type() == QEvent.Type.Resize:
@@ -385,30 +335,7 @@ class PlotStack(QWidget):
             self.clicked.emit(hit[1])
 
     def _on_mouse_moved(self, args: tuple) -> None:
-        hit = self._plot_at(args[0])
-        self._hover = hit
-        if hit is not None:
-            self._readout_key = hit[0]
-            self._show_readout()
-
-    def _show_readout(self) -> None:
-        """Values under the mouse, or at the cursor once the crank moved since."""
-        if self._stale:
-            return
-        if self._hover is not None:
-            key, x = self._hover
-            parts = [f"<b>{self._plots[key].series.name()}</b>", nbsp(self._source.x_text(x))]
-            values = self._plots[key].values_at(x)
-        else:
-            key = self._readout_key
-            xs = self._source.cursor_x(self._model.angle_index)
-            x = xs if isinstance(xs, float) else next(iter(xs.values()), 0.0)
-            parts = [f"<b>{self._plots[key].series.name()}</b>",
-                     nbsp(self.tr("cursor {0}").format(self._source.x_text(x)))]
-            values = self._plots[key].values_at(xs)
-        plot = self._plots[key]
-        self._readout.setText(readout_html(parts, self._legends[plot.series.group].title(),
-                                           plot.series.unit, values))
+        self._readout.hover(self._plot_at(args[0]))
 
     # ---- read back and export -----------------------------------------
     def ensure_current(self) -> None:
@@ -437,8 +364,7 @@ class PlotStack(QWidget):
 
     def readout_text(self) -> str:
         """The read-out as plain text (spaces for non-breaking ones, no word joiners)."""
-        plain = QTextDocumentFragment.fromHtml(self._readout.text()).toPlainText()
-        return plain.replace("\u00a0", " ").replace("\u2060", "")
+        return self._readout.plain_text()
 
     def export_image(self, path: str) -> None:
         """Write the plots to ``path``: SVG for ``.svg``, else a raster image (PNG …) at

@@ -20,7 +20,7 @@ from PySide6.QtCore import QObject
 from PySide6.QtGui import QColor, QPainterPath, QPen, Qt
 
 from shaperapp.design.model import DesignModel
-from shaperapp.plots.curves import CurveItem
+from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import fmt
 
 from .draw import DIM, Box, Pair, Z_DIM, arrow_head, body, overlaps, pen, segments, text_box

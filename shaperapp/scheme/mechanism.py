@@ -29,7 +29,7 @@ from core.kinematics import Shape
 from core.kinematics import shape as core_shape
 
 from shaperapp.design.model import DesignModel
-from shaperapp.plots.curves import CurveItem
+from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import FRAME, LINK, TOOL_PATH
 
 from .draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Pair, Z_BLOCK,

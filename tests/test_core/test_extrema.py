@@ -22,7 +22,8 @@ from core.flywheel import summarize
 from core.errors import DesignError
 from core.geometry import Design, from_dimensions, rod_drive_margin, synthesize
 from core.kinematics import pressure_angle, shape
-from core.extrema import grid_argmax, polish_minimum
+from core.extrema import grid_argmax
+from core.polish import polish_minimum
 from core.metrics import analyze, lever_peaks
 
 DENSE = 100_001

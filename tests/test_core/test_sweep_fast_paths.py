@@ -4,7 +4,7 @@ The grid shares the lever tip's terms between designs with the same L1, L2, L3
 (core.metrics.shared_rates): the rates are rates_at's, bit for bit. The peaks are
 polished by Newton's method on the slope: the fourth derivative it needs
 (core.rates.rates4_at) is checked against finite differences of the third, the
-polisher (extrema.newton_maximum) against maxima known in closed form, and the peaks
+polisher (polish.newton_maximum) against maxima known in closed form, and the peaks
 against those of the bracketed search it replaces.
 """
 import math
@@ -16,7 +16,8 @@ from hypothesis import strategies as st
 
 from core import metrics
 from core.designs import Designs
-from core.extrema import grid_argmax, newton_maximum
+from core.extrema import grid_argmax
+from core.polish import newton_maximum
 from core.rates import rates4_at, rates_at
 from core.metrics import _BETA, _BETA_FINE, cycle_peaks, shared_rates
 from core.spec import Spec
@@ -203,6 +204,7 @@ def test_reasons_read_each_rule_flattened_once(monkeypatch):
     """Verdict.error reads a rule's values (and a message's numbers) from arrays flattened
     once per rule, not once per invalid design; the errors are those of the designs alone."""
     from core import designs as designs_module
+    from core import verdict as verdict_module
     from core.geometry import synthesize
     k, stroke = np.meshgrid(np.linspace(1.05, 4.95, 40), np.linspace(150.0, 600.0, 30))
     _, verdict = designs_module.synthesize_many(100.0, k, stroke, rod_ratio=0.3)  # 2-D
@@ -210,7 +212,7 @@ def test_reasons_read_each_rule_flattened_once(monkeypatch):
     assert bad.size > 300
     calls = []
     broadcast = np.broadcast_to
-    monkeypatch.setattr(designs_module.np, "broadcast_to",
+    monkeypatch.setattr(verdict_module.np, "broadcast_to",
                         lambda *a, **kw: calls.append(1) or broadcast(*a, **kw))
     errors = [verdict.error(int(i)) for i in bad]
     monkeypatch.undo()

@@ -10,7 +10,8 @@ from core.errors import DesignError
 from core.geometry import synthesize
 from shaperapp.design.document import Document
 from shaperapp.design.form import DesignForm
-from shaperapp.design.model import MAX_SPEEDS, DesignModel
+from shaperapp.design.inputs import MAX_SPEEDS
+from shaperapp.design.model import DesignModel
 from shaperapp.widgets.guards import guard_wheel, install_wheel_guard
 from shaperapp.widgets.messages import describe
 

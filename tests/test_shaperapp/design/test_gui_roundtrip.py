@@ -22,7 +22,8 @@ from core.dynamics import MassProperties
 from core.io import load_design
 from core.spec import NUMBER_FIELDS
 from shaperapp.design.document import Document
-from shaperapp.design.form import DesignForm, parse_number
+from shaperapp.design.fields import parse_number
+from shaperapp.design.form import DesignForm
 from shaperapp.design.model import DesignModel
 
 from cli_runner import shaper

@@ -91,8 +91,8 @@ def test_optimize_loads_the_best_design(qtbot, view, model):
     view.lows[1].setValue(480.0)
     view.highs[1].setValue(620.0)
     spec = model.valid_spec
-    view.optimize.click()
-    qtbot.waitUntil(lambda: view.runner.job is None and view.optimum.text() != "", timeout=60_000)
+    view.box.optimize.click()
+    qtbot.waitUntil(lambda: view.runner.job is None and view.box.optimum.text() != "", timeout=60_000)
     best = optimize(spec, {"rod_ratio": (0.3, 1.0), "guide": (480.0, 620.0)}, "pressure-angle",
                     model.rpms)
     # Loaded as a person would type it: within a millionth of the range of the optimum,
@@ -102,7 +102,7 @@ def test_optimize_loads_the_best_design(qtbot, view, model):
     assert abs(model.valid_spec.rod_ratio - best.x[0]) <= 0.7e-6
     assert abs(model.valid_spec.guide_height - best.x[1]) <= 140e-6
     assert len(repr(model.valid_spec.guide_height)) <= 10, model.valid_spec.guide_height
-    assert f"{angle:.5g}" in view.optimum.text()
+    assert f"{angle:.5g}" in view.box.optimum.text()
     assert view.status.text() != view.tr("Optimizing…")     # it stayed after the optimum came
 
 
@@ -280,34 +280,34 @@ def test_optimize_keeps_k_and_h_and_proposes_one_undoable_step(qtbot, model, tmp
     try:
         view.axis_names[0].setCurrentIndex(view.axis_names[0].findData("rod_ratio"))
         view.axis_names[1].setCurrentIndex(view.axis_names[1].findData("time_ratio"))
-        assert view.free[0].isChecked() and not view.free[1].isChecked()     # K fixed by default
+        assert view.box.free[0].isChecked() and not view.box.free[1].isChecked()     # K fixed by default
         view.axis_names[1].setCurrentIndex(view.axis_names[1].findData("stroke"))
-        assert not view.free[1].isChecked()                                   # H too
+        assert not view.box.free[1].isChecked()                                   # H too
         view.axis_names[1].setCurrentIndex(view.axis_names[1].findData("time_ratio"))
         before = model.valid_spec
         view.lows[0].setValue(0.2)
         view.highs[0].setValue(0.8)
-        view.objective.setCurrentIndex(view.objective.findData("pressure-angle"))
+        view.box.objective.setCurrentIndex(view.box.objective.findData("pressure-angle"))
         steps = model.undo_stack.count()
-        view.optimize.click()
-        qtbot.waitUntil(lambda: view.runner.job is None and view.optimum.text() != "", timeout=60_000)
+        view.box.optimize.click()
+        qtbot.waitUntil(lambda: view.runner.job is None and view.box.optimum.text() != "", timeout=60_000)
         after = model.valid_spec
         assert (after.time_ratio, after.stroke) == (before.time_ratio, before.stroke)
         assert after.rod_ratio == pytest.approx(0.8, abs=1e-4)
         assert model.undo_stack.count() == steps + 1            # one step
-        assert "upper end" in view.optimum.text() and "Rod ratio" in view.optimum.text()
-        assert view.undo_proposal.isVisible() and view.undo_proposal.isEnabled()
-        view.undo_proposal.click()
+        assert "upper end" in view.box.optimum.text() and "Rod ratio" in view.box.optimum.text()
+        assert view.box.undo_proposal.isVisible() and view.box.undo_proposal.isEnabled()
+        view.box.undo_proposal.click()
         assert model.valid_spec == before
-        assert not view.undo_proposal.isEnabled()
+        assert not view.box.undo_proposal.isEnabled()
         view.axis_names[0].setCurrentIndex(view.axis_names[0].findData("guide"))
         view.lows[0].setValue(450.0)
         view.highs[0].setValue(700.0)
-        view.optimize.click()
-        qtbot.waitUntil(lambda: view.runner.job is None and "Proposal" in view.optimum.text()
+        view.box.optimize.click()
+        qtbot.waitUntil(lambda: view.runner.job is None and "Proposal" in view.box.optimum.text()
                         and model.valid_spec != before, timeout=60_000)
         assert 455.0 < model.valid_spec.guide_height < 695.0
-        assert "end of its range" not in view.optimum.text()
+        assert "end of its range" not in view.box.optimum.text()
         assert model.valid_spec.time_ratio == before.time_ratio
     finally:
         view.shutdown()

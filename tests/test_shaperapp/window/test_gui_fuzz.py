@@ -153,11 +153,11 @@ class Fuzzer:
             view.count.setValue(rng.choice((3, 8, 20, 60)))
             view.compute.click()
         elif pick == 1:
-            view.optimize.click()
+            view.box.optimize.click()
         elif pick == 2:
             view.cancel.click()
         elif pick == 3:
-            combo = rng.choice((view.figure, *view.axis_names, view.objective))
+            combo = rng.choice((view.figure, *view.axis_names, view.box.objective))
             combo.setCurrentIndex(rng.randrange(combo.count()))
         elif pick == 4 and view.result is not None:
             view._clicked(rng.randrange(view.result.y.size), rng.randrange(view.result.x.size))
