@@ -192,6 +192,13 @@ class DimensionLayer(QObject):
         """The label items by dimension name (NAMES)."""
         return dict(zip(NAMES, self._texts))
 
+    def lines(self) -> np.ndarray:
+        """The dimension and extension lines drawn, k × 2 × 2 (mm; none while hidden): the
+        pivot's label keeps off them."""
+        if not self._visible:
+            return np.empty((0, 2, 2))
+        return np.column_stack([self._lines.x, self._lines.y]).reshape(-1, 2, 2)
+
     def obstacles(self) -> list[Box]:
         """The labels' boxes while shown: force labels keep off them."""
         return [text_box(item) for item in self._texts] if self._visible else []

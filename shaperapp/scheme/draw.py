@@ -40,6 +40,44 @@ def stadium(length: float, width: float) -> QPainterPath:
     return path
 
 
+def in_corner(box: Box, first: np.ndarray, second: np.ndarray, clear_first: float,
+              clear_second: float) -> np.ndarray:
+    """Where to centre a text of ``box``'s size in the corner at the origin between two
+    lines along the unit vectors ``first`` and ``second`` (less than 180° apart): on the
+    bisector, just far enough out that the text keeps ``clear_first`` from the first
+    line and ``clear_second`` from the second."""
+    half = np.array([abs(box[1] - box[0]), abs(box[3] - box[2])]) / 2.0
+    bisector = (first + second) / np.hypot(*(first + second))
+    out = 0.0
+    for line, clear in ((first, clear_first), (second, clear_second)):
+        normal = np.array([-line[1], line[0]])
+        reach = half[0] * abs(normal[0]) + half[1] * abs(normal[1])      # the text's, across the line
+        out = max(out, (reach + clear) / abs(float(bisector @ normal)))
+    return bisector * out
+
+
+def meets_segments(box: Box, ends: np.ndarray, margin: float) -> bool:
+    """Does any segment of ``ends`` (k × 2 × 2: two points each) come within ``margin`` of
+    the box (left, right and two y edges in either order)? Each segment is clipped to
+    the widened box (Liang–Barsky), all at once."""
+    if len(ends) == 0:
+        return False
+    lows = np.array([min(box[0], box[1]), min(box[2], box[3])]) - margin
+    highs = np.array([max(box[0], box[1]), max(box[2], box[3])]) + margin
+    start, step = ends[:, 0, :], ends[:, 1, :] - ends[:, 0, :]
+    enter, leave = np.zeros(len(ends)), np.ones(len(ends))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for axis in (0, 1):
+            flat = step[:, axis] == 0.0
+            outside = flat & ((start[:, axis] < lows[axis]) | (start[:, axis] > highs[axis]))
+            t_low = (lows[axis] - start[:, axis]) / step[:, axis]
+            t_high = (highs[axis] - start[:, axis]) / step[:, axis]
+            enter = np.where(flat, enter, np.maximum(enter, np.minimum(t_low, t_high)))
+            leave = np.where(flat, leave, np.minimum(leave, np.maximum(t_low, t_high)))
+            leave[outside] = -1.0
+    return bool(np.any(enter <= leave))
+
+
 def rect(x0: float, y0: float, x1: float, y1: float) -> QRectF:
     return QRectF(QPointF(min(x0, x1), min(y0, y1)), QPointF(max(x0, x1), max(y0, y1)))
 

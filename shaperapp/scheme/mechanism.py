@@ -34,13 +34,17 @@ from shaperapp.widgets.style import FRAME, LINK, TOOL_PATH
 
 from .draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Pair, Z_BLOCK,
                           Z_CRANK, Z_FRAME, Z_GHOST, Z_JOINT, Z_LABEL, Z_LEVER, Z_PATH, Z_RAM,
-                          body, pen, rect, segments, stadium, text_box)
+                          body, in_corner, meets_segments, pen, rect, segments, stadium, text_box)
 
 UNITS_PER_LEVER = 40.0     # drawing unit u = L3 / 40
 RETURN_LIFT = 0.35         # the return stroke of the tool path is drawn this many u higher
 LIMIT_TOL_DEG = 1e-6       # a grid angle this close to a limit position counts as on it
 MOVING = ("A", "B", "C")
 JOINT_LABEL_CLEAR = 1.4      # × u from a joint to its label's near edge: past the lever's half width (0.8 u)
+LEVER_HALF_WIDTH = 0.8       # × u
+LINE_CLEAR = 0.3             # × u between a label and a line it keeps off
+GROUND_END = np.array([-1.0, -1.0]) / np.sqrt(2.0)   # from a fixed pivot to its ground line's left end
+LEFT = np.array([-1.0, 0.0])
 PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin marker radii, u
 
 
@@ -121,6 +125,7 @@ class MechanismLayer(QObject):
         font.setPointSize(11)
         font.setBold(True)
         font.setItalic(True)
+        self.keep_off = np.empty((0, 2, 2))       # lines O4's label avoids (set by the view)
         self.labels: dict[str, pg.TextItem] = {}
         for name, text in (("O2", "O\u2082"), ("O4", "O\u2084"), ("A", "A"), ("B", "B"), ("C", "C")):
             label = pg.TextItem(text, color=LINK, anchor=(0.5, 0.5))
@@ -179,9 +184,10 @@ class MechanismLayer(QObject):
         tip = self.frames.tip
         self._path_all.set_data(tip[:, 0], tip[:, 1])
         self.pins["O4"].setPos(0.0, 0.0)
+        left = limits.lever_tip.T[int(np.argmin(limits.lever_tip[0]))]
+        self._lever_left = left / np.hypot(*left)
         self.pins["O2"].setPos(*o2)
         self._o2 = o2
-        self.labels["O4"].setPos(2.4 * u, 0.9 * u)
 
         chain = min(x0, float(a[:, 0].min()), float(b[:, 0].min()), -2.0 * u) - 2.5 * u
         bottom = min(-3.5 * u, guide + tip_local[1] - 6.0 * u)
@@ -198,7 +204,7 @@ class MechanismLayer(QObject):
         self._crank.setPos(0.0, design.frame)
         slot_lo = max(float(sh.slide.min()) - 1.6 * u, 0.9 * u)          # the block's travel
         slot_hi = min(float(sh.slide.max()) + 1.6 * u, design.lever - 0.9 * u)
-        lever = stadium(design.lever, 1.6 * u)
+        lever = stadium(design.lever, 2.0 * LEVER_HALF_WIDTH * u)
         lever.addRoundedRect(QRectF(slot_lo, -0.35 * u, slot_hi - slot_lo, 0.7 * u), 0.35 * u, 0.35 * u)
         lever.setFillRule(Qt.FillRule.OddEvenFill)
         self._lever.setPath(lever)
@@ -288,10 +294,22 @@ class MechanismLayer(QObject):
     # ---- per frame ---------------------------------------------------
     def place_joint_labels(self) -> None:
         """A's and O2's labels just clear of the lever (and so of the crank) along their
-        direction, however large the text is in mm at this zoom."""
+        direction, however large the text is in mm at this zoom. O4's sits in the corner
+        between the lever at its leftmost limit and the horizontal through O4, unless a
+        dimension line (``keep_off``: L1's, in a design with a large K) runs there; then
+        under that horizontal, left of the ground symbol, where nothing else is drawn.
+        (At a fixed spot on the right, L3's extension line ran through it.)"""
         f, index = self.frames, self._index
         if f is None or index >= len(f.tip):
             return
+        label, clear = self.labels["O4"], LINE_CLEAR * f.u
+        box = text_box(label)
+        half = np.array([abs(box[1] - box[0]), abs(box[3] - box[2])]) / 2.0
+        spot = in_corner(box, self._lever_left, LEFT, JOINT_LABEL_CLEAR * f.u, clear)
+        if meets_segments((spot[0] - half[0], spot[0] + half[0], spot[1] - half[1], spot[1] + half[1]),
+                          self.keep_off, clear):
+            spot = in_corner(box, LEFT, GROUND_END, clear, clear)
+        label.setPos(*spot)
         joints = {"A": f.joints[index, 0], "O2": self._o2}
         for k, name in enumerate(("A", "O2")):
             label, direction = self.labels[name], f.away[index, k]

@@ -144,6 +144,12 @@ class SchemeWidget(QWidget):
         """Show or hide the dimension lines (L1, L2, L3, h, H)."""
         self.dimensions_action.setChecked(visible)
         self._dimensions.set_visible(visible)
+        self._dimensions_placed()
+
+    def _dimensions_placed(self) -> None:
+        """The pivot's label keeps off the dimension lines as they now are."""
+        self._mechanism.keep_off = self._dimensions.lines()
+        self._mechanism.place_joint_labels()
 
     def dimensions_visible(self) -> bool:
         return self.dimensions_action.isChecked()
@@ -286,6 +292,7 @@ class SchemeWidget(QWidget):
         self._forces.retranslate()
         if self._geometry is not None:
             self._dimensions.update(self._model, self._geometry)
+            self._dimensions_placed()
             self._draw_forces(self._model.angle_index)
 
     # ---- model → layers ----------------------------------------------
@@ -325,6 +332,7 @@ class SchemeWidget(QWidget):
         self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
+        self._mechanism.keep_off = self._dimensions.lines()      # placed by _move below
         design = self._model.design
         if design != self._design:
             self._design = design

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from shaperapp.widgets.style import fmt
 from shaperapp.window.animation import AnimationBar
@@ -166,3 +168,48 @@ def test_h_label_stays_beside_its_dimension_in_a_tall_design(qtbot, model, spec)
     assert boxes["L2"][2] >= -1e-6                              # and L2's no lower than O4
     pairs = [(a, b) for a in boxes for b in boxes if a < b and overlaps(boxes[a], boxes[b])]
     assert pairs == [], pairs                                   # "L1 = 142.0" covered "h = 2…"
+
+
+@pytest.mark.parametrize("spec", [{}, {"time_ratio": 1.8, "crank": 80.0}, {"time_ratio": 1.1},
+                                  {"time_ratio": 3.0, "stroke": 500.0}, {"variant": "rod", "rod_ratio": 0.3}])
+def test_o4_label_keeps_off_the_lever_and_every_dimension_line(qtbot, scheme, model, spec):
+    """O₄'s label sat at a fixed spot beside O4, and L3's extension line ran through its
+    subscript at the default design in the laptop pane (seen on a screenshot). Checked
+    at four zooms against every dimension and extension line drawn and the lever at
+    every fifth angle, as the viewport shows the label."""
+    sh, u, o2 = design_links(model, spec)
+    for zoom in (1.0, 0.5, 2.0, 0.35):
+        scheme._view.scaleBy((zoom, zoom))
+        qtbot.wait(30)                                    # the view repaints, as on screen
+        scheme._catch_up()
+        box = scheme._screen_box(scheme._mechanism.labels["O4"])
+        lines = scheme._dimensions._lines
+        ends = np.column_stack([lines.x, lines.y]).reshape(-1, 2, 2)
+        assert len(ends) >= 7                             # the five dimensions' lines and extensions
+        for p, q in ends:
+            assert not box_hits_segment(box, p, q, 0.1 * u), (zoom, p, q)
+        for index in range(0, sh.phi.size, 5):
+            assert not box_hits_segment(box, np.zeros(2), sh.lever_tip[:, index], 0.8 * u), (zoom, index)
+        centre = np.array([(box[0] + box[1]) / 2, (box[2] + box[3]) / 2])
+        assert np.hypot(*centre) < 8 * u + np.hypot(box[1] - box[0], box[3] - box[2])   # beside its pivot
+        if zoom == 1.0 and spec == {"time_ratio": 3.0, "stroke": 500.0}:
+            assert centre[1] < 0                          # L1's line ran above: it went under
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.floats(-100, 100), min_size=8, max_size=8), st.floats(0.0, 5.0))
+def test_meets_segments_agrees_with_points_along_the_segment(numbers, margin):
+    from shaperapp.scheme.draw import meets_segments
+    x0, x1, y0, y1, px, py, qx, qy = numbers
+    box = (min(x0, x1), max(x0, x1), y0, y1)
+    p, q = np.array([px, py]), np.array([qx, qy])
+    met = meets_segments(box, np.array([[p, q]]), margin)
+    if box_hits_segment(box, p, q, margin):               # a sampled point inside: it meets
+        assert met
+    if met:                                               # it meets: a point a hair wider does
+        t = np.linspace(0.0, 1.0, 200_001)[:, None]
+        pts = p + t * (q - p)
+        lo, hi = min(y0, y1), max(y0, y1)
+        wide = margin + 1e-3
+        assert np.any((pts[:, 0] >= box[0] - wide) & (pts[:, 0] <= box[1] + wide)
+                      & (pts[:, 1] >= lo - wide) & (pts[:, 1] <= hi + wide))
