@@ -17,7 +17,7 @@ import numpy as np
 
 from .cam import Cam
 from .cam.follower import pitch, profile
-from .drawing.dxf import CENTER, DIMENSIONS, OUTLINE, TEXT, TEXT_STYLE, THIN, new_document, save_dxf
+from .drawing.dxf import CENTER, DIMENSIONS, OUTLINE, THIN, new_document, save_dxf, text_attribs
 
 POINTS = 1440
 """Points of each closed curve (a quarter degree of cam angle apart)."""
@@ -52,7 +52,7 @@ def cam_document(cam: Cam):
              f"max pressure angle rise / return = {cam.max_pressure_rise_deg:.2f} / "
              f"{cam.max_pressure_return_deg:.2f} deg; the cam turns clockwise"]
     for i, text in enumerate(lines):
-        msp.add_text(text, height=height, dxfattribs={"layer": TEXT, "style": TEXT_STYLE}) \
+        msp.add_text(text, height=height, dxfattribs=text_attribs()) \
             .set_placement((-r0 - reach, below - (3 + 1.6 * i) * height))
     return doc
 

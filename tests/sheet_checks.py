@@ -1,6 +1,11 @@
 """Checks every drawing sheet must pass: each drawing keeps to its own area, the areas do
-not overlap, nothing lies outside the border and no two texts overlap."""
-from core.drawing.sheet import item_box, outside_border, overlapping_texts
+not overlap, nothing lies outside the border, no two texts overlap, and no text holds a
+Unicode subscript digit, which the CAD fonts of a DXF lack (indices are subscript runs)."""
+import re
+
+from core.drawing.sheet import Text, item_box, outside_border, overlapping_texts
+
+UNICODE_SUBSCRIPTS = re.compile("[\u2080-\u209c]")
 
 
 def inside(box, area, tol=1e-6) -> bool:
@@ -11,6 +16,7 @@ def inside(box, area, tol=1e-6) -> bool:
 def assert_laid_out(sheet, areas) -> None:
     """``areas``: name → (area box, its items) of a sheet built by core.drawing."""
     assert outside_border(sheet) == [] and overlapping_texts(sheet) == []
+    assert [t.text for t in sheet.items if isinstance(t, Text) and UNICODE_SUBSCRIPTS.search(t.text)] == []
     named = list(areas.items())
     for name, (area, items) in named:
         strays = [it for it in items if not inside(item_box(it), area)]

@@ -30,7 +30,7 @@ from .dxf import CENTER, OUTLINE, THIN
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .sheet import (TITLE_ENGLISH, Box, Circle, Item, Paper, Placement, Sheet, Text, TitleBlock, fit,
                     frame_items, line, number_text, scale_text, standard_scale, table, sheet_title_block,
-                    title_block_box)
+                    symbol, title_block_box)
 
 ENGLISH = {
     "title": "Feed cam",
@@ -190,10 +190,11 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
     pts = o + r_arrow * np.column_stack([np.cos(arc), np.sin(arc)])
     items.append(line(pts[:-3], THIN))
     items += arrow(pts[-4], pts[-1], THIN)
-    for text, at, away in (("O", o, (-1.0, -1.0)), ("A", pivot, (1.0, 1.0)),
-                           ("B₀", b0, tuple(b0 - pivot)), ("ω", pts[len(pts) // 2], (1.0, 1.0))):
+    for name, at, away in (("O", o, (-1.0, -1.0)), ("A", pivot, (1.0, 1.0)),
+                           (("B", "0"), b0, tuple(b0 - pivot)), ("ω", pts[len(pts) // 2], (1.0, 1.0))):
+        text, spans = symbol(name)
         placed = place_label(text, (float(at[0]), float(at[1])), 3.5, taken, away, gap=PIVOT_MM + 0.5,
-                             within=box, optional=True)
+                             within=box, optional=True, subscripts=spans)
         items += [placed] if placed else []
     middle = (area[0] + area[2]) / 2.0
     width = area[2] - area[0]

@@ -16,7 +16,7 @@ import numpy as np
 from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
-from .sheet import TEXT_HEIGHTS, Box, Item, Pair, Text, line, number_text, text_width
+from .sheet import Box, Item, Pair, Text, line, number_text, smaller_height, symbol, text_width
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
 TICK = 1.5
@@ -42,7 +42,8 @@ def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
 
 def place_label(text: str, at: Pair, height: float, taken: list[Box],
                 preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
-                optional: bool = False, align: str | None = None, rings: int = 3) -> Text | None:
+                optional: bool = False, align: str | None = None, rings: int = 3,
+                subscripts: tuple[tuple[int, int], ...] = ()) -> Text | None:
     """``text`` beside the point ``at``: the first of eight directions (starting with
     ``preferred``), on ``rings`` rings one text height apart, whose box meets none of
     ``taken`` and lies ``within``; then appends its box to ``taken``. When no spot is free:
@@ -56,7 +57,7 @@ def place_label(text: str, at: Pair, height: float, taken: list[Box],
         dx, dy = math.cos(angle), math.sin(angle)
         side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
                          + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
-        label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, side)
+        label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, side, subscripts=subscripts)
         box = label.box()
         if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
                                        and within[1] <= box[1] and box[3] <= within[3]):
@@ -95,12 +96,13 @@ def polygon_extent(polygon: Polygon, scale: float) -> Box:
 
 
 def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.5,
-                  names: Mapping[str, str] | None = None, taken: list[Box] | None = None,
-                  within: Box | None = None) -> list[Item]:
+                  names: Mapping[str, str | tuple[str, str] | list] | None = None,
+                  taken: list[Box] | None = None, within: Box | None = None) -> list[Item]:
     """The polygon drawn from ``pole`` at μ = ``scale`` (its unit per mm): every vector as an
     arrow from its tail point to its head point, absolute ones thick, the others thin, and
-    each point labelled (``names`` maps point keys to texts; default the keys) clear of
-    ``taken`` and inside ``within``."""
+    each point labelled (``names`` maps point keys to names: a part as ``sheet.symbol``
+    takes it, or a list of parts; default the keys) clear of ``taken`` and inside
+    ``within``."""
     taken = [] if taken is None else taken
     at = {k: (pole[0] + x / scale, pole[1] + y / scale) for k, (x, y) in polygon.points.items()}
     items: list[Item] = []
@@ -115,8 +117,11 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
             continue
         away = np.asarray(p) - centre
         away = away if np.hypot(*away) > 1e-6 else np.array([1.0, 1.0])
-        label = place_label(",".join(name(k) for k in group), p, height, taken, tuple(away),
-                            within=within, rings=5, optional=True)   # crowded: left out
+        parts = [part for k in group
+                 for part in [","] + (name(k) if isinstance(name(k), list) else [name(k)])][1:]
+        text, spans = symbol(*parts)
+        label = place_label(text, p, height, taken, tuple(away), within=within, rings=5,
+                            optional=True, subscripts=spans)           # crowded: left out
         if label is not None:
             items.append(label)
     return items
@@ -158,7 +163,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     labels, or more where the widest label needs it (a torque of 10⁵ N·m reads
     "-1.000e+05")."""
     x0, y0, x1, y1 = box
-    small = max((h for h in TEXT_HEIGHTS if h < height), default=height)   # the ticks' labels
+    small = smaller_height(height)                  # the ticks' labels
     ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves]
                         + [[0.0], [lv[2] for lv in levels]])
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)

@@ -71,6 +71,7 @@ TEXT_STYLE = "GB"
 TEXT_FONT = "gbenor.shx"
 TEXT_BIGFONT = "gbcbig.shx"
 TEXT_HEIGHTS_MM = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)   # GB/T 14691's series
+TEXT_WIDTH = 0.7                            # GB/T 14691's long-fang-song proportion
 
 
 def new_document() -> Drawing:
@@ -86,9 +87,17 @@ def new_document() -> Drawing:
                        lineweight=layer.lineweight)
     style = doc.styles.add(TEXT_STYLE, font=TEXT_FONT)
     style.dxf.bigfont = TEXT_BIGFONT
-    style.dxf.width = 0.7                   # GB/T 14691's long-fang-song proportion
+    style.dxf.width = TEXT_WIDTH            # what CAD gives text a user adds
     doc.header["$TEXTSTYLE"] = TEXT_STYLE
     return doc
+
+
+def text_attribs(layer: str = TEXT) -> dict[str, object]:
+    """A TEXT entity's attributes: the layer, the GB style, and the style's width factor on
+    the entity itself. Why: CAD draws a TEXT at its own width factor (group 41, default 1),
+    not its style's, so without it every text came out wider than the sheet's layout
+    reckons, and a subscript ran into its letter."""
+    return {"layer": layer, "style": TEXT_STYLE, "width": TEXT_WIDTH}
 
 
 def literal_text(text: str) -> str:

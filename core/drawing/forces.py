@@ -33,7 +33,7 @@ from .dxf import OUTLINE
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
 from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Sheet, TitleBlock, fit, frame_items,
-                    number_text, scale_text, standard_scale, table, sheet_title_block, title_block_box)
+                    number_text, scale_text, standard_scale, symbol, table, sheet_title_block, title_block_box)
 
 ENGLISH = {
     "title": "Kinetostatic analysis",
@@ -52,9 +52,9 @@ ENGLISH = {
     "J_e": "Mean reduced inertia J_e", "J_net": "Flywheel to add J_F − J_e",
     **TITLE_ENGLISH,
 }
-FORCE_NAMES = {"P": "P", "G_5": "G₅", "F_I5": "F_I5", "G_4": "G₄", "F_I4": "F_I4", "N": "N",
-               "R_B": "R_B", "R_O2": "R_O2", "R_A": "R_A", "R_O4": "R_O4", "R_C": "R_C",
-               "G_3": "G₃", "F_I3": "F_I3", "R_3B": "R_3B"}
+# core's force keys as the sheet writes them: the letter, and its index as a subscript
+FORCE_NAMES = {key: (key.split("_")[0], key.partition("_")[2]) for key in (
+    "P", "G_5", "F_I5", "G_4", "F_I4", "N", "R_B", "R_O2", "R_A", "R_O4", "R_C", "G_3", "F_I3", "R_3B")}
 ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
 TORQUE_STEP_DEG = 1.0
 # room a mechanism drawing keeps beside the links' extent, paper mm: the guide line runs
@@ -211,15 +211,16 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tupl
     taken: list[Box] = []
     for joint in mech.joint_labels(design, angle, place, 3.5):      # crowded (small sheets): left out
         placed = place_label(joint.text, joint.position, joint.height, taken, within=box, gap=0.0,
-                             optional=True, align="cm")
+                             optional=True, align="cm", subscripts=joint.subscripts)
         items += [placed] if placed else []
     for name, where, force in forces:
         tail = points[where]
         head = tail + force / mu_f
         arrows[(k, name)] = (tail, head)
         items += arrow(tail, head, OUTLINE)
-        label = place_label(FORCE_NAMES[name], (float(head[0]), float(head[1])), 3.5, taken,
-                            tuple(head - tail), gap=1.0, within=box, optional=True)
+        text, spans = symbol(FORCE_NAMES[name])
+        label = place_label(text, (float(head[0]), float(head[1])), 3.5, taken,
+                            tuple(head - tail), gap=1.0, within=box, optional=True, subscripts=spans)
         items += [label] if label else []
     return items, mu_f
 
@@ -248,9 +249,11 @@ def _polygon(poly, cell: Box, title_text: str) -> tuple[list[Item], float]:
     at = {key: (pole[0] + x / mu, pole[1] + y / mu) for key, (x, y) in poly.points.items()}
     for v in poly.vectors:                      # each arrow named at its middle
         (tx, ty), (hx, hy) = at[v.tail], at[v.head]
-        label = place_label(FORCE_NAMES.get(v.key, v.key), ((tx + hx) / 2.0, (ty + hy) / 2.0), 3.5,
+        text, spans = symbol(FORCE_NAMES.get(v.key, v.key))
+        label = place_label(text, ((tx + hx) / 2.0, (ty + hy) / 2.0), 3.5,
                             taken, (-(hy - ty), hx - tx), gap=1.5,
-                            within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), optional=True)
+                            within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), optional=True,
+                            subscripts=spans)
         items += [label] if label else []
     return items, mu
 

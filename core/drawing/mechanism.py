@@ -17,7 +17,7 @@ from core.geometry import Design
 from core.kinematics import shape
 
 from .dxf import CENTER, OUTLINE, THIN
-from .sheet import Box, Circle, Item, Pair, Placement, Text, line
+from .sheet import Box, Circle, Item, Pair, Placement, Text, line, symbol
 
 PIN_RADIUS = 1.5            # paper mm
 BLOCK = (10.0, 6.0)         # slider block along × across its slide, paper mm
@@ -159,17 +159,18 @@ def joint_labels(design: Design, crank_deg: float, where: Placement, height: flo
                 (j["C"] - [RAM[0], 0.0], j["C"] + [RAM[0] + TOOL_AHEAD, 0.0])]
     if design.rod is not None:
         segments.append((j["B"], j["C"]))
-    names = {"O2": "O₂", "O4": "O₄", "A": "A", "B": "B"}
+    names = {"O2": ("O", "2"), "O4": ("O", "4"), "A": "A", "B": "B"}
     if design.rod is not None:
         names["C"] = "C"
     reach = 3.5 + 1.2 * height
     labels = []
-    for key, text in names.items():
+    for key, name in names.items():
+        text, spans = symbol(name)
         p = j[key]
         spots = [p + reach * np.array([math.cos(a), math.sin(a)])
                  for a in np.radians(np.arange(0.0, 360.0, 45.0))]
         best = max(spots, key=lambda q: min(_distance(q, s0, s1) for s0, s1 in segments))
-        labels.append(Text(text, (float(best[0]), float(best[1])), height, "cm"))
+        labels.append(Text(text, (float(best[0]), float(best[1])), height, "cm", subscripts=spans))
     return labels
 
 

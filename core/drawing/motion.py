@@ -48,8 +48,10 @@ ENGLISH = {
     "theta": "Extreme-position angle θ", "n": "Crank speed n",
     **TITLE_ENGLISH,
 }
-POINT_NAMES = {"p": "p", "a2": "a₂", "a3": "a₃", "b": "b", "c": "c", "p'": "p′", "a2'": "a₂′",
-               "k'": "k′", "n3'": "n₃′", "a3'": "a₃′", "b'": "b′", "c'": "c′", "n4'": "n₄′"}
+# The polygons' points as textbooks name them (a₂′: an index as a subscript, then the prime)
+POINT_NAMES = {"p": "p", "a2": ("a", "2"), "a3": ("a", "3"), "b": "b", "c": "c", "p'": "p′",
+               "a2'": [("a", "2"), "′"], "k'": "k′", "n3'": [("n", "3"), "′"], "a3'": [("a", "3"), "′"],
+               "b'": "b′", "c'": "c′", "n4'": [("n", "4"), "′"]}
 GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
@@ -142,7 +144,8 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
         items += mech.links_at(design, float(phi), place, OUTLINE)
     taken: list[Box] = []
     for label in mech.joint_labels(design, float(limits[0]), place, 5.0):
-        placed = place_label(label.text, label.position, label.height, taken, within=box,
+        placed = place_label(label.text, label.position, label.height, taken, subscripts=label.subscripts,
+                             within=box,
                              gap=0.0, optional=True, align="cm")
         items += [placed] if placed else []
     o2 = place([0.0, design.frame])

@@ -27,7 +27,7 @@ from ..errors import DesignError, require_range
 from ..geometry import Design
 from ..kinematics import shape
 from . import dimensions as dims
-from .dxf import CENTER, DASHED, OUTLINE, TEXT, TEXT_STYLE, THIN, new_document, save_dxf
+from .dxf import CENTER, DASHED, OUTLINE, THIN, new_document, save_dxf, text_attribs
 from .sheet import standard_scale
 
 UNITS_PER_LEVER = 40.0       # u = L3 / 40
@@ -227,7 +227,7 @@ def _draw_labels(msp, design: Design, p: Pose, scale: float) -> None:
     if design.rod is not None:
         places["C"] = p.c + np.array([0.0, -(gap + 1.5 * u)])
     for name, at in places.items():
-        msp.add_text(name, height=height, dxfattribs={"layer": TEXT, "style": TEXT_STYLE}) \
+        msp.add_text(name, height=height, dxfattribs=text_attribs()) \
             .set_placement(tuple(map(float, at)), align=TextEntityAlignment.MIDDLE_CENTER)
 
 

@@ -30,6 +30,7 @@ Pair = tuple[float, float]
 Box = tuple[float, float, float, float]          # x0, y0, x1, y1 in paper mm
 
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
+SUBSCRIPT_DROP = 0.25     # a subscript's baseline under its text's, in text heights
 # Estimated advance per character as a fraction of the text height: CJK characters are
 # square, Latin ones narrower. The renderers squeeze a text that comes out wider than this
 # estimate, so the estimate is what the layout and the overlap checks can rely on.
@@ -62,7 +63,11 @@ class Circle:
 class Text:
     """One line of text. ``height`` is the character height (GB/T 14691: h, the height of
     the capitals), ``align`` a horizontal (l, c, r) and a vertical (b, m, t) letter, e.g.
-    "lb" or "cm"; ``rotation`` in degrees counter-clockwise about ``position``."""
+    "lb" or "cm"; ``rotation`` in degrees counter-clockwise about ``position``.
+    ``subscripts`` are spans (start, end) of ``text`` set as subscripts: one size smaller
+    and lowered, as GB/T 14691 writes indices (F with I5 in F_I5). The text itself stays
+    plain letters, which every CAD font has; Unicode's subscript digits are not in them,
+    and it has no capital subscripts at all."""
 
     text: str
     position: Pair
@@ -70,22 +75,73 @@ class Text:
     align: str = "lb"
     rotation: float = 0.0
     layer: str = TEXT
+    subscripts: tuple[tuple[int, int], ...] = ()
 
     @property
     def width(self) -> float:
-        return text_width(self.text, self.height)
+        return sum(text_width(part, h) for part, h, _ in self._parts())
+
+    def _parts(self) -> list[tuple[str, float, float]]:
+        """The text in runs: (text, height, baseline drop), subscripts one size smaller."""
+        small = smaller_height(self.height)
+        parts, at = [], 0
+        for start, end in sorted(self.subscripts):
+            if start > at:
+                parts.append((self.text[at:start], self.height, 0.0))
+            parts.append((self.text[start:end], small, SUBSCRIPT_DROP * self.height))
+            at = end
+        if at < len(self.text) or not parts:
+            parts.append((self.text[at:], self.height, 0.0))
+        return parts
+
+    def runs(self) -> list["Text"]:
+        """The text as plain texts, one per run, each aligned "lb" at its own baseline: what
+        the renderers draw (itself when it has no subscripts)."""
+        if not self.subscripts:
+            return [self]
+        w, h = self.width, self.height
+        x = {"l": 0.0, "c": -w / 2.0, "r": -w}[self.align[0]]
+        y = {"b": 0.0, "m": -h / 2.0, "t": -h}[self.align[1]]
+        runs = []
+        for part, size, drop in self._parts():
+            origin = _rotate(np.array([[x, y - drop]]), self.rotation)[0] + np.asarray(self.position)
+            runs.append(Text(part, (float(origin[0]), float(origin[1])), size, "lb", self.rotation, self.layer))
+            x += text_width(part, size)
+        return runs
 
     def box(self) -> Box:
-        """Its extent on the paper (estimated width, a descender below), rotated."""
+        """Its extent on the paper (estimated width, a descender below, a subscript's
+        below that), rotated."""
         w, h = self.width, self.height
         dx = {"l": 0.0, "c": -w / 2.0, "r": -w}[self.align[0]]
         dy = {"b": 0.0, "m": -h / 2.0, "t": -h}[self.align[1]]
-        corners = np.array([[dx, dy - 0.25 * h], [dx + w, dy - 0.25 * h],
+        below = max([0.25 * h] + [drop + 0.25 * size for _, size, drop in self._parts()])
+        corners = np.array([[dx, dy - below], [dx + w, dy - below],
                             [dx + w, dy + h * 1.1], [dx, dy + h * 1.1]])
         return _bounds(_rotate(corners, self.rotation) + np.asarray(self.position))
 
 
 Item = Union[Polyline, Circle, Text]
+
+
+def smaller_height(height: float) -> float:
+    """The standard text height one size below ``height`` (the smallest stays): a
+    subscript's, a tick label's."""
+    return max((h for h in TEXT_HEIGHTS if h < height), default=height)
+
+
+def symbol(*parts: str | tuple[str, str]) -> tuple[str, tuple[tuple[int, int], ...]]:
+    """Text and subscript spans for a name written in parts: a plain string, or a pair
+    (letters, index) whose index is a subscript. ``symbol(("R", "O2"))`` is R with O2
+    below; ``symbol(("a", "2"), ",", ("a", "3"))`` two coincident points."""
+    text, spans = "", []
+    for part in parts:
+        base, index = (part, "") if isinstance(part, str) else part
+        text += base
+        if index:
+            spans.append((len(text), len(text) + len(index)))
+            text += index
+    return text, tuple(spans)
 
 
 def text_width(text: str, height: float) -> float:

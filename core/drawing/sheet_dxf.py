@@ -12,7 +12,7 @@ from ezdxf import zoom
 from ezdxf.document import Drawing
 from ezdxf.enums import TextEntityAlignment
 
-from .dxf import TEXT_STYLE, literal_text, new_document, save_dxf
+from .dxf import literal_text, new_document, save_dxf, text_attribs
 from .sheet import Circle, Polyline, Sheet, Text
 
 ALIGNMENTS = {
@@ -41,9 +41,10 @@ def sheet_document(sheet: Sheet) -> Drawing:
         elif isinstance(item, Circle):
             msp.add_circle(item.center, item.radius, dxfattribs=attribs)
         elif isinstance(item, Text):
-            text = msp.add_text(literal_text(item.text), height=item.height, rotation=item.rotation,
-                                dxfattribs={**attribs, "style": TEXT_STYLE})
-            text.set_placement(item.position, align=ALIGNMENTS[item.align])
+            for run in item.runs():        # a subscript is a smaller text of its own
+                text = msp.add_text(literal_text(run.text), height=run.height, rotation=run.rotation,
+                                    dxfattribs=text_attribs(item.layer))
+                text.set_placement(run.position, align=ALIGNMENTS[run.align])
     zoom.window(msp, (0.0, 0.0), (w, h))   # CAD opens on the whole sheet
     return doc
 

@@ -51,7 +51,8 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en") -> None:
     painter.fillRect(QRectF(0, 0, sheet.paper.width, height), QColor(255, 255, 255))
     for item in sheet.items:
         if isinstance(item, Text):
-            _text(painter, item, height, font, metrics, cap)
+            for run in item.runs():        # a subscript is a smaller text of its own
+                _text(painter, run, height, font, metrics, cap)
             continue
         painter.setPen(_pen(item.layer))
         if isinstance(item, Circle):

@@ -36,6 +36,24 @@ def test_inside_the_border_in_own_areas_without_overlap(design, size):
     assert_laid_out(drawn.sheet, drawn.areas)
 
 
+@pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
+def test_force_names_carry_their_index_as_a_subscript(design):
+    """R_O2, F_I5 … were written with the underscore on the sheet: now the letter and its
+    index one standard size smaller and lowered, as two plain texts in every renderer."""
+    from core.drawing.sheet import TEXT_HEIGHTS, Text
+    sheet = forces_sheet(design, 60.0, masses(design), paper("A1")).sheet
+    texts = [t for t in sheet.items if isinstance(t, Text)]
+    named = {(t.text[:s], t.text[s:e]) for t in texts for s, e in t.subscripts}
+    assert {("R", "O2"), ("R", "A"), ("R", "O4"), ("F", "I5"), ("G", "5")} <= named
+    assert ("R", "C" if design.rod is not None else "B") in named
+    assert not [t.text for t in texts if "_" in t.text and t.text.split("_")[0] in ("R", "F", "G")]
+    for label in (t for t in texts if t.subscripts):
+        base, index = label.runs()
+        assert (base.height, index.height) == (3.5, 2.5) and index.height in TEXT_HEIGHTS
+        assert index.position[1] < base.position[1]                     # lowered
+        assert index.position[0] == pytest.approx(base.position[0] + base.width)
+
+
 def test_default_positions_are_the_motion_sheets():
     """The same two positions as the report's and the motion sheet's polygons."""
     m = masses(BLOCK)

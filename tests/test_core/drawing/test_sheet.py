@@ -167,3 +167,43 @@ def test_more_positions_than_a_sheet_can_show_are_refused():
     motion_sheet(BLOCK, 40.0, paper("A1"), count=72)
     with pytest.raises(DesignError, match="positions"):
         motion_sheet(BLOCK, 40.0, paper("A1"), count=73)
+
+
+@pytest.mark.parametrize("align", ["lb", "cm", "rt", "cb"])
+@pytest.mark.parametrize("rotation", [0.0, 90.0, 30.0])
+def test_a_subscript_is_a_smaller_lowered_run_after_its_letters(align, rotation):
+    """Text with subscript spans is drawn as plain runs: the index one standard size
+    smaller, its baseline lowered, right after the letters; together the runs keep the
+    label's width and alignment point, inside its box."""
+    from core.drawing.sheet import SUBSCRIPT_DROP, item_box, symbol
+    text, spans = symbol(("R", "O2"), ",", ("a", "3"))
+    assert (text, spans) == ("RO2,a3", ((1, 3), (5, 6)))
+    label = Text(text, (100.0, 50.0), 3.5, align, rotation, subscripts=spans)
+    runs = label.runs()
+    assert [r.text for r in runs] == ["R", "O2", ",a", "3"]
+    assert [r.height for r in runs] == [3.5, 2.5, 3.5, 2.5]
+    assert label.width == pytest.approx(sum(r.width for r in runs))
+    back = np.radians(-rotation)                         # the runs in the label's own frame
+    turn = np.array([[np.cos(back), -np.sin(back)], [np.sin(back), np.cos(back)]])
+    local = [turn @ (np.array(r.position) - (100.0, 50.0)) for r in runs]
+    for (x0, y0), (x1, y1), run in zip(local, local[1:], runs):
+        assert x1 == pytest.approx(x0 + run.width)
+    assert local[1][1] - local[0][1] == pytest.approx(-SUBSCRIPT_DROP * 3.5)
+    start = {"l": 0.0, "c": -label.width / 2.0, "r": -label.width}[align[0]]
+    assert local[0][0] == pytest.approx(start)
+    outer = label.box()
+    for run in runs:
+        box = item_box(run)
+        assert outer[0] - 1e-9 <= box[0] and outer[1] - 1e-9 <= box[1]
+        assert box[2] <= outer[2] + 1e-9 and box[3] <= outer[3] + 1e-9
+    assert Text("plain", (0.0, 0.0)).runs() == [Text("plain", (0.0, 0.0))]
+
+
+def test_dxf_texts_carry_the_gb_width_factor(tmp_path):
+    """CAD draws a TEXT at its own width factor (default 1), not its style's: every text of a
+    sheet's DXF says 0.7, the GB style's, so it is as narrow as the layout reckons."""
+    from core.drawing.dxf import TEXT_WIDTH
+    path = tmp_path / "m.dxf"
+    save_sheet_dxf(motion_sheet(BLOCK, 40.0, paper("A3")).sheet, path)
+    widths = {e.dxf.width for e in ezdxf.readfile(path).modelspace().query("TEXT")}
+    assert widths == {TEXT_WIDTH} == {0.7}
