@@ -187,7 +187,7 @@ def test_an_interrupted_shared_run_leaves_neither_file_nor_child(tmp_path, sig):
     target = tmp_path / "marker-out.csv"
     child = subprocess.Popen([sys.executable, "-m", "core", "curves", "--crank", "100", "--K", "1.4",
                               "--stroke", "300", "--rpm", *map(str, range(30, 46)), "--step", "0.01",
-                              "--csv", str(target)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+                              "--csv", str(target)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 60
     while not list(tmp_path.iterdir()) and time.monotonic() < deadline:   # writing has begun
         time.sleep(0.01)
