@@ -66,7 +66,7 @@ def meets_segments(box: Box, ends: np.ndarray, margin: float) -> bool:
     highs = np.array([max(box[0], box[1]), max(box[2], box[3])]) + margin
     start, step = ends[:, 0, :], ends[:, 1, :] - ends[:, 0, :]
     enter, leave = np.zeros(len(ends)), np.ones(len(ends))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):   # ±inf: no crossing there
         for axis in (0, 1):
             flat = step[:, axis] == 0.0
             outside = flat & ((start[:, axis] < lows[axis]) | (start[:, axis] > highs[axis]))

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from shaperapp.widgets.style import fmt
@@ -197,8 +197,10 @@ def test_o4_label_keeps_off_the_lever_and_every_dimension_line(qtbot, scheme, mo
             assert centre[1] < 0                          # L1's line ran above: it went under
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")
 @settings(max_examples=300, deadline=None)
 @given(st.lists(st.floats(-100, 100), min_size=8, max_size=8), st.floats(0.0, 5.0))
+@example([0.0, 1.0, 0.0, 1.0, 0.0, 0.5, 5e-324, 3.0], 0.0)      # a step that overflows a quotient
 def test_meets_segments_agrees_with_points_along_the_segment(numbers, margin):
     from shaperapp.scheme.draw import meets_segments
     x0, x1, y0, y1, px, py, qx, qy = numbers
