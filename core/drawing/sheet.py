@@ -94,14 +94,18 @@ class Text:
             parts.append((self.text[at:], self.height, 0.0))
         return parts
 
+    def _start(self) -> tuple[float, float]:
+        """Where the baseline starts, from ``position``, before rotating (by ``align``)."""
+        w, h = self.width, self.height
+        return ({"l": 0.0, "c": -w / 2.0, "r": -w}[self.align[0]],
+                {"b": 0.0, "m": -h / 2.0, "t": -h}[self.align[1]])
+
     def runs(self) -> list["Text"]:
         """The text as plain texts, one per run, each aligned "lb" at its own baseline: what
         the renderers draw (itself when it has no subscripts)."""
         if not self.subscripts:
             return [self]
-        w, h = self.width, self.height
-        x = {"l": 0.0, "c": -w / 2.0, "r": -w}[self.align[0]]
-        y = {"b": 0.0, "m": -h / 2.0, "t": -h}[self.align[1]]
+        x, y = self._start()
         runs = []
         for part, size, drop in self._parts():
             origin = _rotate(np.array([[x, y - drop]]), self.rotation)[0] + np.asarray(self.position)
@@ -113,8 +117,7 @@ class Text:
         """Its extent on the paper (estimated width, a descender below, a subscript's
         below that), rotated."""
         w, h = self.width, self.height
-        dx = {"l": 0.0, "c": -w / 2.0, "r": -w}[self.align[0]]
-        dy = {"b": 0.0, "m": -h / 2.0, "t": -h}[self.align[1]]
+        dx, dy = self._start()
         below = max([0.25 * h] + [drop + 0.25 * size for _, size, drop in self._parts()])
         corners = np.array([[dx, dy - below], [dx + w, dy - below],
                             [dx + w, dy + h * 1.1], [dx, dy + h * 1.1]])
