@@ -125,7 +125,7 @@ class MechanismLayer(QObject):
         font.setPointSize(11)
         font.setBold(True)
         font.setItalic(True)
-        self.keep_off = np.empty((0, 2, 2))       # lines O4's label avoids (set by the view)
+        self._keep_off = np.empty((0, 2, 2))      # lines O4's label avoids (place_pivot_label)
         self.labels: dict[str, pg.TextItem] = {}
         for name, text in (("O2", "O\u2082"), ("O4", "O\u2084"), ("A", "A"), ("B", "B"), ("C", "C")):
             label = pg.TextItem(text, color=LINK, anchor=(0.5, 0.5))
@@ -291,25 +291,34 @@ class MechanismLayer(QObject):
             pairs.append(((hx, y), (hx + 0.7 * u, y + 0.7 * u)))
         return pairs
 
-    # ---- per frame ---------------------------------------------------
-    def place_joint_labels(self) -> None:
-        """A's and O2's labels just clear of the lever (and so of the crank) along their
-        direction, however large the text is in mm at this zoom. O4's sits in the corner
-        between the lever at its leftmost limit and the horizontal through O4, unless a
-        dimension line (``keep_off``: L1's, in a design with a large K) runs there; then
-        under that horizontal, left of the ground symbol, where nothing else is drawn.
-        (At a fixed spot on the right, L3's extension line ran through it.)"""
-        f, index = self.frames, self._index
-        if f is None or index >= len(f.tip):
+    def place_pivot_label(self, keep_off: np.ndarray | None = None) -> None:
+        """O4's label in the corner between the lever at its leftmost limit and the
+        horizontal through O4, unless a line of ``keep_off`` (the dimension lines, kept
+        from the last call; L1's runs there in a design with a large K) does; then under
+        that horizontal, left of the ground symbol, where nothing else is drawn. (At a
+        fixed spot on the right, L3's extension line ran through it.) Per design, zoom
+        and dimensions shown, not per frame: nothing that moves comes there."""
+        if keep_off is not None:
+            self._keep_off = keep_off
+        f = self.frames
+        if f is None:
             return
         label, clear = self.labels["O4"], LINE_CLEAR * f.u
         box = text_box(label)
         half = np.array([abs(box[1] - box[0]), abs(box[3] - box[2])]) / 2.0
         spot = in_corner(box, self._lever_left, LEFT, JOINT_LABEL_CLEAR * f.u, clear)
         if meets_segments((spot[0] - half[0], spot[0] + half[0], spot[1] - half[1], spot[1] + half[1]),
-                          self.keep_off, clear):
+                          self._keep_off, clear):
             spot = in_corner(box, LEFT, GROUND_END, clear, clear)
         label.setPos(*spot)
+
+    # ---- per frame ---------------------------------------------------
+    def place_joint_labels(self) -> None:
+        """A's and O2's labels just clear of the lever (and so of the crank) along their
+        direction, however large the text is in mm at this zoom."""
+        f, index = self.frames, self._index
+        if f is None or index >= len(f.tip):
+            return
         joints = {"A": f.joints[index, 0], "O2": self._o2}
         for k, name in enumerate(("A", "O2")):
             label, direction = self.labels[name], f.away[index, k]

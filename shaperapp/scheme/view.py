@@ -113,6 +113,7 @@ class SchemeWidget(QWidget):
         self._forces = ForceLayer(add, self._view, self)
         self._view.sigTransformChanged.connect(self._dimensions.separate_chain_labels)
         self._view.sigTransformChanged.connect(self._mechanism.place_joint_labels)   # text is screen-sized
+        self._view.sigTransformChanged.connect(lambda *_: self._mechanism.place_pivot_label())
         self._retranslate()
         model.resultsChanged.connect(self._on_results)
         model.angleChanged.connect(self._on_angle)
@@ -148,8 +149,7 @@ class SchemeWidget(QWidget):
 
     def _dimensions_placed(self) -> None:
         """The pivot's label keeps off the dimension lines as they now are."""
-        self._mechanism.keep_off = self._dimensions.lines()
-        self._mechanism.place_joint_labels()
+        self._mechanism.place_pivot_label(self._dimensions.lines())
 
     def dimensions_visible(self) -> bool:
         return self.dimensions_action.isChecked()
@@ -332,7 +332,7 @@ class SchemeWidget(QWidget):
         self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
-        self._mechanism.keep_off = self._dimensions.lines()      # placed by _move below
+        self._mechanism.place_pivot_label(self._dimensions.lines())
         design = self._model.design
         if design != self._design:
             self._design = design
