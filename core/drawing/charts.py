@@ -110,15 +110,17 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
         layer = OUTLINE if v.role in ("absolute", "force") else THIN
         items += arrow(at[v.tail], at[v.head], layer)
     centre = np.mean(np.array(list(at.values())), axis=0)
-    name = lambda k: (names or {}).get(k, k)                 # noqa: E731
+
+    def parts_of(key: str) -> list:
+        name = (names or {}).get(key, key)
+        return name if isinstance(name, list) else [name]
     for key, p in at.items():
         group = [k for k, q in at.items() if abs(q[0] - p[0]) < 0.05 and abs(q[1] - p[1]) < 0.05]
         if group[0] != key:                   # coincident points share one label
             continue
         away = np.asarray(p) - centre
         away = away if np.hypot(*away) > 1e-6 else np.array([1.0, 1.0])
-        parts = [part for k in group
-                 for part in [","] + (name(k) if isinstance(name(k), list) else [name(k)])][1:]
+        parts = [part for k in group for part in [","] + parts_of(k)][1:]
         text, spans = symbol(*parts)
         label = place_label(text, p, height, taken, tuple(away), within=within, rings=5,
                             optional=True, subscripts=spans)           # crowded: left out
