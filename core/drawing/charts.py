@@ -114,6 +114,7 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
     def parts_of(key: str) -> list:
         name = (names or {}).get(key, key)
         return name if isinstance(name, list) else [name]
+
     for key, p in at.items():
         group = [k for k, q in at.items() if abs(q[0] - p[0]) < 0.05 and abs(q[1] - p[1]) < 0.05]
         if group[0] != key:                   # coincident points share one label
