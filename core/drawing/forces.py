@@ -204,7 +204,7 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tupl
     points = {name: place(p) for name, p in mech.joints(design, angle).items()}
     points["tool"] = np.array(mech.tool_point(points["C"]))
     # μF: the largest force ARROW_MM long, and every arrow and its name inside the box
-    need = max(math.hypot(*f) for _, _, f in forces) / ARROW_MM
+    need = max((math.hypot(*f) for _, _, f in forces), default=0.0) / ARROW_MM   # no loads: no arrows
     for _, where, force in forces:
         need = max(need, math.hypot(*force) / max(_room(points[where], force, box) - 8.0, 1.0))
     mu_f = nice_scale(need, 1.0, FINE_MANTISSAS)

@@ -339,7 +339,7 @@ def _draw_legend(painter: QPainter, box: QRectF, polygon: Polygon, rows, font: Q
     metrics = QFontMetricsF(font, painter.device())
     line = metrics.height()
     pitch = _legend_pitch(polygon, metrics)
-    above = max(symbol_extent(v.key, metrics)[1] for v in polygon.vectors)
+    above = max((symbol_extent(v.key, metrics)[1] for v in polygon.vectors), default=0.0)
     y = box.top() + 0.2 * line + above
     for i, (key, text) in enumerate(rows):
         colour = vector_colour(polygon, i)
