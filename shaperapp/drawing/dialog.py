@@ -24,6 +24,7 @@ from core.positions import DEFAULT_COUNT
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import MAX_TEXT, design_file_name
 from shaperapp.widgets.fonts import MissingFontError
+from shaperapp.widgets.messages import failure_reason
 
 from .content import SHEET_SUFFIXES, SheetChoice, build_sheet
 from .render import paint_sheet, write_sheet
@@ -31,6 +32,10 @@ from .render import paint_sheet, write_sheet
 if TYPE_CHECKING:
     from core.cam import Cam
     from core.errors import DesignError
+
+
+class SheetTypeError(ValueError):
+    """A file name whose type is none of PDF, SVG and DXF (the message is the name)."""
 
 
 class CamSource(Protocol):
@@ -148,8 +153,14 @@ class DrawingSheetDialog(QDialog):
         return build_sheet(self.model.valid_spec, self.model.rpms, masses, self.choice())
 
     def update_preview(self) -> None:
-        """The sheet painted as it will print, scaled to the preview."""
-        sheet = self.sheet()
+        """The sheet painted as it will print, scaled to the preview; a sheet that cannot be
+        built leaves the preview empty and says why under the choices."""
+        try:
+            sheet = self.sheet()
+        except Exception as exc:        # never to sys.excepthook: the reason, in the dialog
+            self.preview.setPixmap(QPixmap())
+            self.message.setText(self.tr("The sheet cannot be drawn: %1").replace("%1", failure_reason(exc)))
+            return
         px = PREVIEW_WIDTH / sheet.paper.width * 2.0         # 2× for a sharp preview on HiDPI
         image = QImage(round(sheet.paper.width * px), round(sheet.paper.height * px),
                        QImage.Format.Format_RGB32)
@@ -163,7 +174,8 @@ class DrawingSheetDialog(QDialog):
             self.message.setText(self.tr("No font with Chinese characters is installed: install one "
                                          "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
                                          "to English."))
-        painter.end()
+        finally:
+            painter.end()
         pixmap = QPixmap.fromImage(image)
         pixmap.setDevicePixelRatio(2.0)
         self.preview.setPixmap(pixmap)
@@ -175,10 +187,11 @@ class DrawingSheetDialog(QDialog):
         return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
 
     def export(self, path: str) -> None:
-        """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix). ValueError for another
-        suffix, before anything is built; MissingFontError, OSError as the writer raises."""
+        """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix). SheetTypeError (a
+        ValueError) for another suffix, before anything is built; MissingFontError, OSError as
+        the writer raises, and whatever building the sheet raises."""
         if os.path.splitext(path)[1].lower() not in SHEET_SUFFIXES:
-            raise ValueError(os.path.basename(path))
+            raise SheetTypeError(os.path.basename(path))
         write_sheet(self.sheet(), path, self.language, self.choice().design_name)
         self.written = path
         if self._settings is not None:
@@ -197,7 +210,7 @@ class DrawingSheetDialog(QDialog):
         QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
         try:
             self.export(path)
-        except ValueError:
+        except SheetTypeError:
             failure = self.tr("A drawing sheet is written as PDF (.pdf), SVG (.svg) or DXF (.dxf); "
                               "%1 is none of them. Nothing was written.")
             failure = failure.replace("%1", os.path.basename(path))
@@ -207,6 +220,9 @@ class DrawingSheetDialog(QDialog):
         except OSError as exc:
             failure = self.tr("Could not write %1: %2").replace("%1", path).replace(
                 "%2", exc.strerror or str(exc))
+        except Exception as exc:        # the sheet could not be built: say why, write nothing
+            failure = self.tr("The sheet cannot be drawn: %1. Nothing was written.").replace(
+                "%1", failure_reason(exc))
         else:
             failure = ""
         finally:

@@ -29,6 +29,7 @@ from .command import MAX_TEXT
 from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles, inputs_name
 from shaperapp.widgets.fonts import MissingFontError
+from shaperapp.widgets.messages import failure_reason
 
 translate = QCoreApplication.translate
 
@@ -178,16 +179,19 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
     try:
         export_report(model, path, language, dialog.options(), dialog.name(), dialog.date())
     except MissingFontError:
-        QGuiApplication.restoreOverrideCursor()
-        QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"),
-                            translate("ReportOptionsDialog", "No font with Chinese characters is installed. Install one "
-                               "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English."))
-        return ""
+        failure = translate("ReportOptionsDialog", "No font with Chinese characters is installed. Install one "
+                            "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
     except OSError as exc:
+        failure = translate("ReportOptionsDialog", "Could not write %1: %2").replace("%1", path) \
+            .replace("%2", exc.strerror or str(exc))
+    except Exception as exc:        # never to sys.excepthook: the reason, in a message
+        failure = translate("ReportOptionsDialog", "The report cannot be made: %1. Nothing was "
+                            "written.").replace("%1", failure_reason(exc))
+    else:
+        failure = ""
+    finally:
         QGuiApplication.restoreOverrideCursor()
-        QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"),
-                            translate("ReportOptionsDialog", "Could not write %1: %2").replace("%1", path)
-                            .replace("%2", exc.strerror or str(exc)))
+    if failure:
+        QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"), failure)
         return ""
-    QGuiApplication.restoreOverrideCursor()
     return path

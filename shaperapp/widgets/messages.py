@@ -187,3 +187,12 @@ def describe(error: DesignError) -> str:
             body = body.strip()
             break
     return QCoreApplication.translate("messages", "%1: %2").replace("%1", field_name(error.parameter)).replace("%2", body)
+
+
+def failure_reason(error: Exception) -> str:
+    """What a dialog shows for a failure it did not foresee: a DesignError in the UI's
+    language (:func:`describe`), else the exception's own text, else its type, never a
+    traceback (issue 33: a preview's error reached ``sys.excepthook``)."""
+    if isinstance(error, DesignError):
+        return describe(error)
+    return str(error) or type(error).__name__
