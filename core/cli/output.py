@@ -8,9 +8,10 @@ from __future__ import annotations
 import codecs
 import json
 import sys
+from pathlib import Path
 from typing import Any, Iterable
 
-from ..errors import os_reason
+from ..errors import WriteError, os_reason
 from ..io import atomic_write
 
 
@@ -73,6 +74,24 @@ def write_output(option: str, target: str, text: str | Iterable[str]) -> None:
         atomic_write(target, text)
     except OSError as exc:      # a WriteError: names the user's path and a plain reason
         raise OutputError(f"{option}: {exc}") from None
+
+
+def check_target(option: str, target: str) -> None:
+    """OutputError naming ``option`` when ``target`` cannot be a file to write, found before
+    any work: its folder is missing, it is a folder, or the system refuses the path itself
+    (a name too long, a part that is not a folder), in the words ``atomic_write`` uses.
+    Standard output (``-``) is always fine."""
+    if target == "-":
+        return
+    path = Path(target)
+    try:
+        if not (path.parent if str(path.parent) else Path(".")).is_dir():
+            raise OutputError(f"{option}: cannot write {path}: no such directory")
+        if path.is_dir():
+            raise OutputError(f"{option}: cannot write {path}: it is a folder")
+        path.exists()           # the name itself: ENAMETOOLONG, ELOOP …
+    except OSError as exc:      # pathlib lets the errors other than "not found" through
+        raise OutputError(f"{option}: {WriteError(target, exc)}") from None
 
 
 class GuardedStdout:

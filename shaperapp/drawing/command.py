@@ -101,7 +101,7 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
     diagrams = diagram_angles(args)
     date = cover_text("--date", args.date) or datetime.date.today().isoformat()
     return SheetChoice(args.content, paper, count, diagrams,
-                       cover_text("--title", design_name(args)), cover_text("--drawn-by", args.drawn_by),
+                       design_name(args), cover_text("--drawn-by", args.drawn_by),
                        date, cover_text("--school", args.school))
 
 
@@ -115,7 +115,8 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"{stray[0]}: a cam option, only with --content cam")
     if choice.content == "cam":
         idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
-        choice = replace(choice, cam=cam_from_inputs(cam_inputs_from_args(args), spec.design(), idle))
+        choice = replace(choice, cam=cam_from_inputs(cam_inputs_from_args(args), spec.design(), idle,
+                                                        args))
     suffix = sheet_suffix(args.output)
     target = Path(args.output)
     check_output_folder(args.output)

@@ -22,7 +22,7 @@ from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.command_line import MAX_TEXT, design_file_name
+from shaperapp.widgets.command_line import MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.messages import failure_reason
 
@@ -141,7 +141,7 @@ class DrawingSheetDialog(QDialog):
             box.setEnabled(content != "cam")
 
     def choice(self) -> SheetChoice:
-        text = {key: edit.text().strip() for key, edit in self.fields.items()}
+        text = {key: plain_text(edit.text()) for key, edit in self.fields.items()}   # a pasted tab …
         content = self.content.currentData()
         return SheetChoice(content, self.paper.currentText(), self.count.value(),
                            (self.angles[0].value(), self.angles[1].value()), text["design"],

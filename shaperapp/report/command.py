@@ -113,7 +113,7 @@ def _run(args: argparse.Namespace) -> int:
     diagrams = diagram_angles(args)
     others = comparison_candidates(args)
     cover, date = cover_from_args(args)
-    title = cover_text("--title", args.title)
+    title = design_name(args)
     target = Path(args.output)
     try:
         kind = report_kind(args.output, html=args.html)
@@ -125,7 +125,7 @@ def _run(args: argparse.Namespace) -> int:
     from .blocks import Cover
     doc = design_file(args)         # a design file's feed cam goes into the report too
     cam = cam_from_dict(doc["cam"]) if doc is not None and doc.get("cam") is not None else None
-    report = build(spec, rpms, masses, title or design_name(args), date, language,
+    report = build(spec, rpms, masses, title, date, language,
                    Options(count, diagrams, tuple(others), Cover(**cover), cam))
     try:
         pages = write_report(report, args.output)

@@ -29,6 +29,7 @@ from .command import MAX_TEXT
 from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles, inputs_name
 from shaperapp.widgets.fonts import MissingFontError
+from shaperapp.widgets.command_line import plain_text
 from shaperapp.widgets.messages import failure_reason
 
 translate = QCoreApplication.translate
@@ -103,15 +104,15 @@ class ReportOptionsDialog(QDialog):
 
     def options(self) -> Options:
         others = tuple(self.others) if self.include_comparison.isChecked() else ()
-        cover = Cover(**{field: self.cover[field].text().strip() for field in Cover.FIELDS})
+        cover = Cover(**{field: plain_text(self.cover[field].text()) for field in Cover.FIELDS})
         return Options(self.count.value(), (self.angles[0].value(), self.angles[1].value()), others,
                        cover)
 
     def name(self) -> str:
-        return self.design_name.text().strip()
+        return plain_text(self.design_name.text())
 
     def date(self) -> str:
-        return self.cover["date"].text().strip() or datetime.date.today().isoformat()
+        return plain_text(self.cover["date"].text()) or datetime.date.today().isoformat()
 
     def remember(self) -> None:
         """Keep the cover fields (not the date) for the next report, in this or a later run."""
@@ -125,7 +126,7 @@ def design_name(model: DesignModel) -> str:
     if not model.path:
         return ""
     name = os.path.splitext(os.path.basename(model.path))[0]
-    return name[: -len(".shaper")] if name.endswith(".shaper") else name
+    return plain_text(name[: -len(".shaper")] if name.endswith(".shaper") else name)
 
 
 def other_designs(model: DesignModel) -> list[Candidate]:

@@ -12,23 +12,43 @@ from core.cli.common import UsageError
 MAX_TEXT = 200
 
 
+def _unprintable(ch: str) -> bool:
+    """A control character (C0, DEL, C1, the Unicode line and paragraph separators) or a
+    byte the system could not decode (Python keeps it as a lone surrogate, which no UTF-8
+    writer accepts: DXF and HTML failed on it, PDF and SVG wrote a replacement)."""
+    return ch < " " or "\x7f" <= ch < "\xa0" or ch in "\u2028\u2029" or "\ud800" <= ch <= "\udfff"
+
+
 def cover_text(option: str, value: str | None) -> str:
-    """A text option as given: one line of at most MAX_TEXT characters (UsageError)."""
+    """A text option as given: one line of at most MAX_TEXT characters of text (UsageError
+    naming ``option`` otherwise)."""
     if value is None:
         return ""
-    if any(ch < " " or "\x7f" <= ch < "\xa0" or ch in "\u2028\u2029" for ch in value):
+    if any("\ud800" <= ch <= "\udfff" for ch in value):
+        raise UsageError(f"{option}: must be text; it holds a byte that is not "
+                         f"{sys.getfilesystemencoding().upper()}")
+    if any(_unprintable(ch) for ch in value):
         raise UsageError(f"{option}: must be one line of text without control characters")
     if len(value) > MAX_TEXT:
         raise UsageError(f"{option}: at most {MAX_TEXT} characters (got {len(value)})")
     return value.strip()
 
 
+def plain_text(text: str) -> str:
+    """A name nobody typed (a file's) as a title can print it: every control character and
+    undecodable byte as U+FFFD, at most MAX_TEXT characters (cut with "…"). A file may have
+    any name; the sheets, the report and their files take only this."""
+    text = "".join("\ufffd" if _unprintable(ch) else ch for ch in text).strip()
+    return text if len(text) <= MAX_TEXT else text[:MAX_TEXT - 1] + "…"
+
+
 def design_file_name(path: str) -> str:
-    """A design file's name without its types (.json, .shaper): what titles call the design."""
+    """A design file's name without its types (.json, .shaper): what titles call the design,
+    as :func:`plain_text`."""
     name = Path(path).name
     for suffix in (".json", ".shaper"):
         name = name[: -len(suffix)] if name.endswith(suffix) else name
-    return name
+    return plain_text(name)
 
 
 def inputs_name(spec) -> str:
@@ -44,9 +64,11 @@ def inputs_name(spec) -> str:
 
 
 def design_name(args: argparse.Namespace) -> str:
-    """--title, else the design file's name, else ''."""
-    if args.title:
-        return args.title
+    """--title (checked: UsageError naming it), else the design file's name (made printable:
+    a file's name is never refused as if it were --title), else ''."""
+    title = cover_text("--title", args.title)
+    if title:
+        return title
     return design_file_name(args.design) if args.design else ""
 
 
@@ -100,13 +122,10 @@ def diagram_angles(args: argparse.Namespace) -> tuple[float, float] | None:
 
 
 def check_output_folder(path: str) -> None:
-    """OutputError naming --output when ``path``'s folder is missing or ``path`` is a folder."""
-    from core.cli.output import OutputError
-    target = Path(path)
-    if not target.parent.is_dir():
-        raise OutputError(f"--output: cannot write {target}: no such directory")
-    if target.is_dir():
-        raise OutputError(f"--output: cannot write {target}: it is a folder")
+    """OutputError naming --output when ``path`` cannot be written (its folder missing, a
+    folder, a name too long …), with the words of every other writer (``check_target``)."""
+    from core.cli.output import check_target
+    check_target("--output", path)
 
 
 def start_qt(lang: str, needs_font: bool = True) -> str:
