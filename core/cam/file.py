@@ -10,6 +10,7 @@ from typing import Any
 from ..errors import DesignError
 from .cam import CamInputs
 from .laws import Program
+from .timing import check_phase
 
 NUMBER_KEYS = ("arm_mm", "swing_deg", "rise_deg", "dwell_deg", "return_deg", "pressure_deg",
                "return_pressure_deg")
@@ -56,4 +57,5 @@ def cam_from_dict(data: Any) -> tuple[CamInputs, float | None]:
                        return_pressure_deg=values.get("return_pressure_deg", base.return_pressure_deg),
                        roller_mm=values.get("roller_mm"), base_mm=values.get("base_mm"),
                        distance_mm=values.get("distance_mm"))
-    return inputs, values.get("phase_deg")
+    phase = values.get("phase_deg")
+    return inputs, None if phase is None else check_phase(phase)

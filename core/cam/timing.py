@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from ..cut import cut_window
 from ..designs import Designs
-from ..errors import DesignError
+from ..errors import DesignError, require_range
 from .laws import Program
 
 
@@ -30,6 +30,16 @@ class Timing:
         return phi - math.radians(self.phase_deg)
 
 
+MAX_PHASE_DEG = 36000.0
+"""A phase is an angle taken modulo 360°, but within ±36000° (as every crank angle the
+program takes): 1e308° is no angle to the 1e-13° a float can still resolve there."""
+
+
+def check_phase(phase_deg: object) -> float:
+    """The phase as a float, DesignError naming ``phase`` for one outside ±MAX_PHASE_DEG."""
+    return require_range("phase", phase_deg, -MAX_PHASE_DEG, MAX_PHASE_DEG, "°", low_open=False)
+
+
 def timing(program: Program, design, idle_fraction: float, phase_deg: float | None = None) -> Timing:
     """Place the feed outside the cut of ``design`` (a ``core.geometry.Design``), centred in
     the non-cutting span, or check the given ``phase_deg``; DesignError names ``rise`` when
@@ -43,6 +53,7 @@ def timing(program: Program, design, idle_fraction: float, phase_deg: float | No
                           "the crank turns outside the cut")
     if phase_deg is None:
         return Timing(math.fmod(off + (span - feed) / 2.0, 360.0), off, span)
+    phase_deg = check_phase(phase_deg)
     since = (phase_deg - off) % 360.0
     if since + feed > span + 1e-9:
         raise DesignError("phase", phase_deg,

@@ -118,9 +118,28 @@ def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
     return inputs, phase
 
 
-def cam_usage_error(exc: DesignError) -> UsageError:
-    """A cam's DesignError as the one line naming its option."""
-    return UsageError(design_error_text(exc, CAM_OPTIONS.get(exc.parameter)))
+# a cam parameter → (its option's dest, its key in a design file's cam object)
+_SOURCES = {**{CAM_PARAMETERS[option]: (dest, key) for option, dest, key in SHEET + OPTIONAL},
+            "rise_law": ("law", "rise_law"), "return_law": ("return_law", "return_law"),
+            "phase": ("phase", "phase_deg")}
+
+
+def cam_option(parameter: str, args: argparse.Namespace | None = None) -> str | None:
+    """The option that set the cam's ``parameter`` on this command line, or, when the value
+    came from the ``--design`` file's cam, that file ("--design (cam.phase_deg)")."""
+    option = CAM_OPTIONS.get(parameter)
+    source = _SOURCES.get(parameter)
+    if args is None or source is None or getattr(args, source[0], None) is not None:
+        return option
+    doc = design_file(args)
+    if doc is not None and isinstance(doc.get("cam"), dict) and doc["cam"].get(source[1]) is not None:
+        return f"--design (cam.{source[1]})"
+    return option
+
+
+def cam_usage_error(exc: DesignError, args: argparse.Namespace | None = None) -> UsageError:
+    """A cam's DesignError as the one line naming its option (or the design file)."""
+    return UsageError(design_error_text(exc, cam_option(exc.parameter, args)))
 
 
 def cam_inputs_from_args(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
@@ -128,15 +147,17 @@ def cam_inputs_from_args(args: argparse.Namespace) -> tuple[CamInputs, float | N
     try:
         return _inputs(args)
     except DesignError as exc:
-        raise cam_usage_error(exc) from None
+        raise cam_usage_error(exc, args) from None
 
 
-def cam_from_inputs(given: tuple[CamInputs, float | None], design, idle: float) -> Cam:
-    """The cam synthesized (or checked) and timed against ``design`` (UsageError naming the option)."""
+def cam_from_inputs(given: tuple[CamInputs, float | None], design, idle: float,
+                    args: argparse.Namespace | None = None) -> Cam:
+    """The cam synthesized (or checked) and timed against ``design`` (UsageError naming the
+    option, or the design file for a value of its cam, when ``args`` are given)."""
     try:
         return design_cam(given[0], design, idle, given[1])
     except DesignError as exc:
-        raise cam_usage_error(exc) from None
+        raise cam_usage_error(exc, args) from None
 
 
 def _rpm(args: argparse.Namespace) -> float:
@@ -177,7 +198,7 @@ def run(args: argparse.Namespace) -> int:
         idle = _idle(args) if linked else 0.05
     except DesignError as exc:
         raise cam_usage_error(exc) from None
-    cam = cam_from_inputs(cam_inputs, design, idle)
+    cam = cam_from_inputs(cam_inputs, design, idle, args)
     if args.csv is not None:
         write_output("--csv", args.csv, table_csv(*cam_table(cam, angles, rpm)))
     if args.dxf is not None:
