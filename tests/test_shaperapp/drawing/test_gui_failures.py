@@ -77,3 +77,32 @@ def test_a_report_that_cannot_be_built_says_why_and_writes_nothing(model, qtbot,
     assert report_dialog.export_report_dialog(model, None, "en", str(tmp_path)) == ""
     assert len(warnings) == 1 and "the loads do not add up" in warnings[0]
     assert list(tmp_path.iterdir()) == []
+
+
+CONTROL = "a\x01b\x1bc\x7fd"          # a file name may hold any of these
+
+
+def test_a_file_name_with_control_characters_titles_the_sheet_printably(model, qtbot, tmp_path):
+    """The SVG's <title> and the DXF's title block get U+FFFD for each control character: an
+    XML parser read the raw 0x01 as an error, and DXF TEXT carried it."""
+    import xml.etree.ElementTree as ET
+    model.set_path(str(tmp_path / f"{CONTROL}.shaper.json"))
+    dialog = DrawingSheetDialog(model, "en")
+    qtbot.addWidget(dialog)
+    shown = "a\ufffdb\ufffdc\ufffdd"
+    assert dialog.choice().design_name == shown
+    dialog.export(str(tmp_path / "s.svg"))
+    assert ET.parse(tmp_path / "s.svg").getroot().find("{http://www.w3.org/2000/svg}title").text == shown
+    dialog.export(str(tmp_path / "s.dxf"))
+    texts = [t.dxf.text for t in ezdxf.readfile(tmp_path / "s.dxf").modelspace().query("TEXT")]
+    assert shown in texts
+    assert not any(ch in t for t in texts for ch in "\x01\x1b\x7f")
+
+
+def test_the_report_dialog_names_the_design_printably(model, qtbot, tmp_path):
+    model.set_path(str(tmp_path / f"{CONTROL}.shaper.json"))
+    assert report_dialog.design_name(model) == "a\ufffdb\ufffdc\ufffdd"
+    dialog = report_dialog.ReportOptionsDialog(model)
+    qtbot.addWidget(dialog)
+    dialog.design_name.setText("tab\there")
+    assert dialog.name() == "tab\ufffdhere"
