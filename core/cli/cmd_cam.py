@@ -8,11 +8,10 @@ from ..cam import LAWS, Cam, CamInputs, Program, design_cam
 from ..cam.file import cam_from_dict, cam_to_dict
 from ..cam.table import cam_summary, cam_table, follower_peaks
 from ..errors import DesignError
-from ..io import table_csv
 from ..kinematics import MAX_RPM, MIN_RPM, crank_angles
 from .common import (UsageError, add_design_options, design_error_text, design_file,
                      design_from_args, number)
-from .output import OutputError, print_json, print_table, write_output
+from .output import OutputError, print_json, print_table
 
 HELP = "the feed cam: base radius, centre distance, profile"
 DESCRIPTION = ("The table's feed cam, a disc cam with an oscillating roller follower on the crank's "
@@ -199,8 +198,10 @@ def run(args: argparse.Namespace) -> int:
     except DesignError as exc:
         raise cam_usage_error(exc) from None
     cam = cam_from_inputs(cam_inputs, design, idle, args)
-    if args.csv is not None:
-        write_output("--csv", args.csv, table_csv(*cam_table(cam, angles, rpm)))
+    if args.csv is not None:          # block by block: 1.8 million rows at the finest step
+        from .streaming import write_table
+        write_table("--csv", args.csv, "computing the cam", lambda delta, n: cam_table(cam, delta, n),
+                    angles, [rpm])
     if args.dxf is not None:
         from ..cam_drawing import write_cam_dxf     # ezdxf: only when a drawing is asked for
         try:
