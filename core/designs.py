@@ -216,9 +216,9 @@ def _guide_number(guide):
 def _guide(verdict: Verdict, guide, lever: np.ndarray, theta: np.ndarray) -> np.ndarray:
     """Guide height above O4 for a named rule (see ``geometry.guide_height``) or given heights."""
     if isinstance(guide, str):
-        with np.errstate(all="ignore"):
+        with np.errstate(all="ignore"):     # a lever near the float limit: inf, refused later
             chord = lever * np.cos(theta / 2.0)
-        return chord if guide == "chord" else (lever + chord) / 2.0
+            return chord if guide == "chord" else (lever + chord) / 2.0
     check_length(verdict, "guide", guide)
     return guide
 
