@@ -86,6 +86,8 @@ def polygon_scale(polygons: Sequence[Polygon], room_mm: float) -> float:
 def polygon_fit_scale(polygon: Polygon, width: float, height: float) -> float:
     """The smallest round scale μ at which the whole polygon fits ``width`` × ``height`` mm."""
     x0, y0, x1, y1 = polygon_extent(polygon, 1.0)
+    if x1 == x0 and y1 == y0:       # no force at all: 1 per mm, as nice_scale gives for nothing
+        return 1.0
     return max(nice_scale(max(x1 - x0, 1e-12), width, FINE_MANTISSAS),
                nice_scale(max(y1 - y0, 1e-12), height, FINE_MANTISSAS))
 
@@ -171,7 +173,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
                         + [[0.0], [lv[2] for lv in levels]])
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
     room = (y1 - y0) - 3.0 * height - 6.0
-    y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS)
+    y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS) if top > bottom else 1.0
     y_ticks = _round_ticks(bottom, top, y_scale)
     widest = max((text_width(number_text(v), small) for v in y_ticks), default=0.0)
     left = x0 + max(6.0 * height, widest + TICK + 1.0 + 0.5)     # 0.5 mm clear of the box

@@ -41,3 +41,14 @@ def test_partial_loads_draw_exactly_the_nonzero_forces_to_scale(design):
                                                           rel=1e-9)
         counts.append(len(forces))
     assert counts[0] > 0 and counts[1] == 0      # cutting in the first, returning in the second
+
+
+def test_zero_loads_are_drawn_at_unit_scales_not_at_round_off():
+    """Nothing to draw has no scale of its own: the polygons and the torque and energy
+    charts take 1 per mm, as the mechanism's μF does, instead of a μ of 8e-15 N/mm from the
+    floor that keeps a line-shaped polygon's width from being 0."""
+    drawn = forces_sheet(BLOCK, 40.0, MassProperties(gravity=False), paper("A2"))
+    assert drawn.force_scales == (1.0, 1.0)
+    assert drawn.polygon_scales == (1.0, 1.0, 1.0, 1.0)
+    assert drawn.torque_chart[0] == 1.0 and drawn.energy_chart[0] == 1.0
+    assert_laid_out(drawn.sheet, drawn.areas)
