@@ -272,6 +272,8 @@ def needed_height(polygon: Polygon, metrics: QFontMetricsF, rect: QRectF, title:
 def auto_scale(polygon: Polygon, rect: QRectF, metrics: QFontMetricsF, px_per_mm: float,
                title: bool = True) -> float:
     """The round μ at which ``paint_polygon`` fills ``rect`` with this polygon at true scale."""
+    if not polygon.largest() > 0.0:         # no force at all (zero loads): 1 per mm
+        return 1.0
     area, _, _ = layout(rect, polygon, metrics, True, title)
     return fit_scale(_bounds(paper(polygon, 1.0)), area, px_per_mm, PAD_LINES * metrics.height())
 

@@ -24,3 +24,14 @@ def test_a_polygon_without_forces_paints_nothing_but_its_caption(qtbot, build, m
     inked = [y for y in range(image.height()) if any(image.pixel(x, y) != 0xFFFFFFFF
                                                      for x in range(0, image.width(), 2))]
     assert inked and max(inked) < 60          # the caption's lines at the top, nothing below
+
+
+def test_a_polygon_without_forces_is_scaled_1_per_mm(qtbot):
+    """The report's scale for an empty force polygon: 1 N/mm, as nice_scale gives for
+    nothing, not 1.5e-11 N/mm from the 1e-9 floor of an extent."""
+    from PySide6.QtGui import QFont, QFontMetricsF
+
+    from shaperapp.vectors.paint import auto_scale
+    polygon = force_polygon(synthesize(100, 1.4, 300), 270.0, 40.0, MassProperties())
+    metrics = QFontMetricsF(QFont())
+    assert auto_scale(polygon, QRectF(0, 0, 400, 300), metrics, 96 / 25.4) == 1.0
