@@ -1350,6 +1350,10 @@
         <translation>日期：</translation>
     </message>
     <message>
+        <source>The sheet cannot be drawn: %1</source>
+        <translation>无法绘制图纸：%1</translation>
+    </message>
+    <message>
         <source>No font with Chinese characters is installed: install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>
         <translation>未安装含中文字形的字体：请安装一个（Debian/Ubuntu 上为 fonts-noto-cjk），或把语言切换为英文。</translation>
     </message>
@@ -1376,6 +1380,10 @@
     <message>
         <source>Could not write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>The sheet cannot be drawn: %1. Nothing was written.</source>
+        <translation>无法绘制图纸：%1。未写入任何文件。</translation>
     </message>
 </context>
 <context>
@@ -3452,6 +3460,10 @@
     <message>
         <source>Could not write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>The report cannot be made: %1. Nothing was written.</source>
+        <translation>无法生成设计说明书：%1。未写入任何文件。</translation>
     </message>
 </context>
 <context>
