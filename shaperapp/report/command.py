@@ -24,7 +24,7 @@ from core.positions import DEFAULT_COUNT, check_count
 
 from shaperapp.widgets.command_line import (MAX_TEXT, check_output_folder, cover_text,  # noqa: F401
                                             design_name, diagram_angles, inputs_from_args,
-                                            start_qt)
+                                            printable_labels, start_qt)
 
 HELP = "write the design report (A4 PDF, or HTML)"
 DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
@@ -89,6 +89,7 @@ def comparison_candidates(args: argparse.Namespace) -> list[Candidate]:
     if not args.compare and not args.compare_file:
         return []
     others, _ = load_candidates(args.library, args.compare, args.compare_file, "--compare-file")
+    others = printable_labels(others)
     if len(others) > MAX_DESIGNS - 1:
         option = "--compare" if args.compare else "--compare-file"
         raise UsageError(f"{option}: compare the design with at most {MAX_DESIGNS - 1} others "

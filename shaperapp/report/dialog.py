@@ -29,7 +29,7 @@ from .command import MAX_TEXT
 from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles, inputs_name
 from shaperapp.widgets.fonts import MissingFontError
-from shaperapp.widgets.command_line import plain_text
+from shaperapp.widgets.command_line import plain_text, printable_labels
 from shaperapp.widgets.messages import failure_reason
 
 translate = QCoreApplication.translate
@@ -131,8 +131,8 @@ def design_name(model: DesignModel) -> str:
 
 def other_designs(model: DesignModel) -> list[Candidate]:
     """The Compare tab's designs other than the one on screen (same inputs and loads)."""
-    return [c for c in model.comparison_candidates
-            if (c.spec, c.masses) != (model.valid_spec, model.masses)]
+    return printable_labels([c for c in model.comparison_candidates
+                             if (c.spec, c.masses) != (model.valid_spec, model.masses)])
 
 
 def export_report(model: DesignModel, path: str, language: str, options: Options = Options(),

@@ -42,6 +42,14 @@ def plain_text(text: str) -> str:
     return text if len(text) <= MAX_TEXT else text[:MAX_TEXT - 1] + "…"
 
 
+def printable_labels(candidates):
+    """Comparison candidates (``core.compare.Candidate``) labelled as :func:`plain_text`: a
+    file's name with a control character made the comparison's SVG figures unreadable
+    (the report failed on a drawing of size 0)."""
+    from dataclasses import replace
+    return [replace(c, label=plain_text(c.label)) for c in candidates]
+
+
 def design_file_name(path: str) -> str:
     """A design file's name without its types (.json, .shaper): what titles call the design,
     as :func:`plain_text`."""

@@ -96,3 +96,19 @@ def test_a_design_file_is_titled_by_its_name_made_printable(design_text, tmp_pat
         page = target.read_text(encoding="utf-8")
         assert "<title>" in page and shown in page
         assert not any(ch in page for ch in "\x01\x1b\x7f")
+
+
+@pytest.mark.parametrize("suffix", [".html", ".pdf"])
+def test_a_compared_file_with_a_control_character_in_its_name_is_labelled_printably(design_text, tmp_path,
+                                                                                    suffix):
+    """Its name labels the comparison's figures (SVG drawings inside the report): a raw 0x01
+    made them unreadable and the report failed with an internal error."""
+    base, other = tmp_path / "base.shaper.json", tmp_path / "e\x01f.shaper.json"
+    base.write_text(design_text, encoding="utf-8")
+    other.write_text(design_text.replace('"time_ratio": 1.4', '"time_ratio": 1.6'), encoding="utf-8")
+    target = tmp_path / f"r{suffix}"
+    status, _, err = shaper_in_process("report", "--design", base, "--compare-file", other, "-o", target)
+    assert (status, err) == (0, "")
+    if suffix == ".html":
+        page = target.read_text(encoding="utf-8")
+        assert "“base”, beside “e\ufffdf”" in page and "\x01" not in page
