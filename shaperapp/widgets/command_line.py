@@ -6,8 +6,12 @@ import argparse
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING, Sequence
 
 from core.cli.common import UsageError
+
+if TYPE_CHECKING:
+    from core.compare import Candidate
 
 MAX_TEXT = 200
 
@@ -42,7 +46,7 @@ def plain_text(text: str) -> str:
     return text if len(text) <= MAX_TEXT else text[:MAX_TEXT - 1] + "…"
 
 
-def printable_labels(candidates):
+def printable_labels(candidates: Sequence[Candidate]) -> list[Candidate]:
     """Comparison candidates (``core.compare.Candidate``) labelled as :func:`plain_text`: a
     file's name with a control character made the comparison's SVG figures unreadable
     (the report failed on a drawing of size 0)."""
