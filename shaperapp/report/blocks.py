@@ -1,9 +1,10 @@
 """The building blocks of a report: what ``content`` builds and ``pdf``/``html`` lay out."""
 from __future__ import annotations
 
+import math
 import re
-from dataclasses import dataclass, field
-from typing import Callable, ClassVar
+from dataclasses import dataclass, field, replace
+from typing import Callable, ClassVar, Sequence
 
 from PySide6.QtCore import QCoreApplication, QRectF
 from PySide6.QtGui import QPainter
@@ -36,6 +37,43 @@ class Table:
     shaded: list[bool] = field(default_factory=list)
     left_columns: int = 1
     plain_header: bool = False        # True: the header is user text (names), never typeset
+    key_columns: int = 0              # columns repeated in each block of a split table
+                                      # (``column_blocks``); 0: the ``left_columns``
+
+
+def column_blocks(widths: Sequence[float], lead: int, available: float) -> list[list[int]]:
+    """The columns of a table too wide for the page, as blocks that fit: each block the
+    ``lead`` (identifying) columns, then an even share of the others in order. Why: a
+    table cut at the page's edge loses its last columns (16 crank speeds, issue 32);
+    blocks keep every value and say which row each belongs to. A column wider than
+    the page on its own still gets a block (nothing is dropped)."""
+    lead_w = sum(widths[:lead])
+    rest = list(range(lead, len(widths)))
+    if lead_w + sum(widths[lead:]) <= available or not rest:
+        return [list(range(len(widths)))]
+    greedy: list[list[int]] = [[]]
+    for c in rest:                             # first as few blocks as fit…
+        if greedy[-1] and lead_w + sum(widths[k] for k in greedy[-1]) + widths[c] > available:
+            greedy.append([])
+        greedy[-1].append(c)
+    n, extra = divmod(len(rest), len(greedy))  # …then as many columns in each as can be
+    starts = [k * n + min(k, extra) for k in range(len(greedy) + 1)]
+    even = [rest[a:b] for a, b in zip(starts, starts[1:])]
+    fits = all(lead_w + sum(widths[k] for k in b) <= available for b in even)
+    return [list(range(lead)) + b for b in (even if fits else greedy)]
+
+
+def split_table(table: "Table", blocks: list[list[int]]) -> list["Table"]:
+    """``table`` as one table per block of columns (:func:`column_blocks`), the caption
+    marked as continued after the first."""
+    if len(blocks) == 1:
+        return [table]
+    more = QCoreApplication.translate("Report", "%1 (continued)")
+    return [replace(table, header=[table.header[c] for c in b],
+                    rows=[[row[c] for c in b] for row in table.rows],
+                    caption=table.caption if k == 0 or not table.caption
+                    else more.replace("%1", table.caption))
+            for k, b in enumerate(blocks)]
 
 
 @dataclass

@@ -30,14 +30,14 @@ from core.flywheel import summarize
 from core.geometry import Design
 from core.margins import margins
 from core.metrics import CycleMetrics, analyze
-from core.positions import PositionTable, position_table, positions, text_groups
+from core.positions import PositionTable, position_table, positions
 from core.spec import Spec
-from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
 from shaperapp.widgets.command_line import inputs_name
 
 from . import figures
 from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
 from .comparison import comparison_blocks, report_comparison
+from .positions import position_tables, positions_note
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
 
@@ -94,8 +94,9 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
         add(Paragraph(translate("Report", "Positions 1 … N are equally spaced from the limit "
                                 "position that starts the working stroke (φ = 0). The shaded rows are "
-                                "the special positions, solved exactly. Forces are on the named body."), True))
-        report.blocks.extend(_position_tables(table))
+                                "the special positions, solved exactly. Forces are on the named body.")
+                      + positions_note(table), True))
+        report.blocks.extend(position_tables(table))
         add(Heading(translate("Report", "6 Velocity, acceleration and force polygons")))
         add(Paragraph(translate("Report", "Drawn to scale from the exact solution at %1 r/min; "
                                 "μ is the scale of each drawing (1 mm on the page).")
@@ -250,16 +251,6 @@ def _speed_table(metrics: CycleMetrics) -> Table:
         "max return speed": translate("Report", "Max return speed"),
         "max |acceleration|": translate("Report", "Max |acceleration|")},
         translate("Report", "Cycle metrics per crank speed"))
-
-
-def _position_tables(table: PositionTable) -> list[Table]:
-    titles, specials, groups = column_titles(), special_titles(), group_titles()
-    header = [translate("Report", "No."), translate("Report", "Position")]
-    return [Table(header + [titles[c] for c in block.columns],
-                  [[str(n or ""), specials.get(name, ""), *texts] for n, name, texts in block.rows],
-                  f"{block.rpm:g} r/min — {groups[block.group]}",
-                  [bool(name) for _, name, _ in block.rows], left_columns=2)
-            for block in text_groups(table)]
 
 
 def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:

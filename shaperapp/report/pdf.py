@@ -15,7 +15,8 @@ from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QMa
 from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen, QTextDocument)
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
+from .blocks import (Figure, Heading, KeyValues, Paragraph, Report, Table, column_blocks, cover_rows,
+                     split_table, typeset)
 from shaperapp.widgets.fonts import report_font
 
 translate = QCoreApplication.translate
@@ -119,6 +120,20 @@ def _cell_widths(lay: Layout, font: QFont, header: list[str], rows: list[list[st
 
 
 def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
+    """A table's pieces; one too wide for the page even in the tiny font is split into
+    blocks of columns, its identifying columns repeated in each (``column_blocks``)."""
+    if isinstance(block, KeyValues):
+        return _table_pieces(lay, block, lay.body)
+    font = lay.small
+    widths = _cell_widths(lay, font, block.header, block.rows, lay.width)
+    if sum(widths) > lay.width * 1.001:
+        font = lay.tiny
+        widths = _cell_widths(lay, font, block.header, block.rows, lay.width)
+    blocks = column_blocks(widths, block.key_columns or block.left_columns, lay.width)
+    return [piece for part in split_table(block, blocks) for piece in _table_pieces(lay, part, font)]
+
+
+def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Piece]:
     if isinstance(block, KeyValues):
         header, rows, caption, shaded, left = [], [list(r) for r in block.rows], "", [], 2
         plain_header = True
@@ -126,11 +141,7 @@ def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
         header, rows, caption, shaded, left = block.header, block.rows, block.caption, block.shaded, \
             block.left_columns
         plain_header = block.plain_header
-    font = lay.body if isinstance(block, KeyValues) else lay.small
     widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
-    if sum(widths) > lay.width * 1.001:
-        font = lay.tiny
-        widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
     m = lay.metrics(font)
     row_h = m.height() * 1.45
     head_lines = max((_lines(m, h, w) for h, w in zip(header, widths)), default=0)

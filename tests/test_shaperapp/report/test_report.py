@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 from cli_runner import shaper
-from core.positions import display_values, number_text
+from core.positions import display_values
+from report_numbers import column_text
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -44,9 +45,11 @@ def table_values() -> list[str]:
     columns = [k for k in records[0] if k not in ("position", "name")]
     data = np.array([[np.nan if r[c] is None else r[c] for c in columns] for r in records])
     shown = display_values(data)
+    k = len(records) // 2                         # rows per speed: each speed's own columns
     picks = [(3, "ram_v_m_s"), (3, "lever_omega_rad_s"), (16, "ram_v_m_s"), (16, "crank_torque_N_m"),
              (20, "O4_x_N"), (23, "coriolis_m_s2"), (14, "crank_deg"), (15, "pressure_angle_deg")]
-    return [number_text(shown[row, columns.index(col)]) for row, col in picks]
+    return [column_text(list(shown[row // k * k:(row // k + 1) * k, columns.index(col)]),
+                        shown[row, columns.index(col)]) for row, col in picks]
 
 
 @pytest.fixture(scope="module")
