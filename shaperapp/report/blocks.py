@@ -121,11 +121,13 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
 
 
 # The formulas' notation in the (translated) source text, typeset by ``typeset``:
-# a^k_A3A2 → a with k above and A3A2 below, v_A3 → v with A3 below, O4/L1/ω3 → O, L, ω with
+# a^k_A3A2 → a with k above and A3A2 below, a^k → a with k above, v_A3 and ω_max → v, ω with
+# A3, max below, O4/L1/ω3 → O, L, ω with
 # the digit below, (1/2π) → a slanted fraction.
 _NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z_])(?P<name>[OLωα])(?P<digit>\d)"
+                       r"|(?<![A-Za-z0-9])(?P<base1>[A-Za-z])\^(?P<sup1>[a-z])(?![A-Za-z0-9_])"
+                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔωαψ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
+                       r"|(?<![A-Za-z_])(?P<name>[OLωαψr])(?P<digit>\d)"
                        r"|\((?P<num>\d)/(?P<den>\d?π)\)")
 
 
@@ -135,6 +137,8 @@ def typeset(text: str) -> str:
     def one(m: re.Match) -> str:
         if m["base"]:
             return f"{m['base']}<sup>{m['sup']}</sup><sub>{m['sub']}</sub>"
+        if m["base1"]:
+            return f"{m['base1']}<sup>{m['sup1']}</sup>"
         if m["base2"]:
             return f"{m['base2']}<sub>{m['sub2']}</sub>"
         if m["name"]:

@@ -15,16 +15,13 @@ from typing import Sequence
 
 from PySide6.QtCore import QCoreApplication
 
-from core.cam import CamInputs, design_cam
-from core.cam.table import cam_summary, follower_peaks
 from core.cli.cmd_analyze import cycle_rows
-from core.cli.cmd_cam import summary_rows as cam_rows
 from core.cli.cmd_analyze import speed_rows as analyze_speed_rows
 from core.cli.cmd_dynamics import speed_rows as dynamics_speed_rows
 from core.cli.cmd_dynamics import summary_rows
 from core.cli.cmd_synth import dimension_rows
+from core.cam import CamInputs
 from core.compare import Candidate
-from core.errors import DesignError
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design
 from core.flywheel import summarize
 from core.geometry import Design
@@ -36,6 +33,7 @@ from shaperapp.widgets.command_line import inputs_name
 
 from . import figures
 from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
+from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison
 from .positions import position_tables, positions_note
 
@@ -85,7 +83,7 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         add(_margin_table(design))
         add(Heading(translate("Report", "3 The mechanism at its limit positions")))
         add(Figure(translate("Report", "Scheme to scale at the limit positions that start and end "
-                             "the working stroke"), 170.0, 100.0, views.limit_schemes()))
+                             "the working stroke"), 170.0, 85.0, views.limit_schemes()))
         add(Heading(translate("Report", "4 Motion of the ram and cycle metrics")))
         add(KeyValues(_cycle(metrics)))
         add(Figure(translate("Report", "Ram displacement, velocity and acceleration over one "
@@ -125,41 +123,12 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
             report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
         if options.cam is not None:         # the last section: 9, or 10 after a comparison
             number = 10 if options.compare else 9
-            report.blocks.extend(_cam_blocks(options.cam, design, idle, rpms[0], number))
+            report.blocks.extend(cam_blocks(options.cam, design, idle, rpms[0], number, views))
     finally:
         views.close()
     return report
 
 
-def _cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle: float,
-                rpm: float, number: int) -> list:
-    """The feed cam: its figures as ``shaper cam`` prints them, and the cam to scale."""
-    from shaperapp.cam.profile_view import paint_cam     # the Cam tab's own drawing
-    blocks: list = [Heading(translate("Report", "%1 The feed cam").replace("%1", str(number)))]
-    inputs, phase = cam_inputs
-    try:
-        cam = design_cam(inputs, design, idle, phase)
-    except DesignError as exc:
-        blocks.append(Paragraph(translate("Report", "The feed cam cannot be made for this design: %1")
-                                .replace("%1", f"{exc.parameter}: {exc.allowed}")))
-        return blocks
-    summary = cam_summary(cam)
-    summary.update(follower_peaks(cam, rpm))
-    rows = _labelled(cam_rows(summary), {
-        "base radius r0 (pitch curve)": translate("Report", "Base radius r0 of the pitch curve"),
-        "centre distance a": translate("Report", "Centre distance a"),
-        "arm l": translate("Report", "Follower arm l"),
-        "initial arm angle ψ0": translate("Report", "Initial arm angle ψ0"),
-        "max pressure angle rise / return": translate("Report", "Max pressure angle, rise / return"),
-        "min convex radius ρmin (pitch curve)": translate("Report", "Smallest convex radius ρmin of the pitch curve"),
-        "roller r": translate("Report", "Roller radius r"),
-        "profile base radius r0 − r": translate("Report", "Base radius of the profile r0 − r"),
-        "rise starts at crank angle": translate("Report", "Rise starts at crank angle")})
-    blocks.append(KeyValues(rows))
-    blocks.append(Figure(translate("Report", "The feed cam to scale at the start of the rise, with "
-                                   "its follower and roller (the cam turns clockwise)"), 170.0, 100.0,
-                         lambda painter, rect, _px: paint_cam(painter, rect, cam, 0.0)))
-    return blocks
 # ---- sections --------------------------------------------------------------
 def _inputs(spec: Spec, rpms: Sequence[float], masses: MassProperties | None) -> list[tuple[str, str]]:
     rows = []

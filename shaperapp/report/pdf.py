@@ -8,6 +8,7 @@ first page and a framed footer (design name, date, page i / n) on every page.
 from __future__ import annotations
 
 import html
+import re
 from dataclasses import dataclass
 from typing import Callable
 
@@ -144,7 +145,7 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
     widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
     m = lay.metrics(font)
     row_h = m.height() * 1.45
-    head_lines = max((_lines(m, h, w) for h, w in zip(header, widths)), default=0)
+    head_lines = max((_lines(m, keep_units(h), w) for h, w in zip(header, widths)), default=0)
     head_h = head_lines * m.height() + 0.45 * m.height() if header else 0.0
     cap_m = lay.metrics(lay.bold)
     cap_h = cap_m.height() * 1.5 if caption else 0.0
@@ -164,8 +165,8 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
                 cx = x
                 for text, cw in zip(header, widths):
                     _cell(p, QRectF(cx + 2, y, cw - 4, head_h),
-                          Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap, text, font,
-                          not plain_header)
+                          Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap,
+                          text if plain_header else keep_units(text), font, not plain_header)
                     cx += cw
                 y0 = y
                 y += head_h
@@ -226,6 +227,15 @@ def _cell(p: QPainter, rect: QRectF, flags, text: str, font: QFont, rich: bool) 
     p.translate(rect.left(), rect.top() + (rect.height() - doc.size().height()) / 2)
     doc.drawContents(p)
     p.restore()
+
+
+_UNIT = re.compile(r"\(([^()\s]*)\)")
+
+
+def keep_units(text: str) -> str:
+    """``text`` with a word joiner after each "/" of a unit in parentheses: a header
+    wraps before "(rad/s²)", never inside it ("(rad/" over "s²)", issue 32)."""
+    return _UNIT.sub(lambda m: "(" + m[1].replace("/", "/\u2060") + ")", text)
 
 
 def _lines(m: QFontMetricsF, text: str, width: float) -> int:
@@ -404,5 +414,7 @@ def _footer(p: QPainter, lay: Layout, report: Report, page: int, pages: int) -> 
     for i, (frac, text) in enumerate(zip(widths, texts)):
         if i:
             p.drawLine(QPointF(cx, y), QPointF(cx, y + h))
-        p.drawText(QRectF(cx + 2 * mm, y, frac * w - 4 * mm, h), int(Qt.AlignmentFlag.AlignVCenter), text)
+        room = frac * w - 4 * mm            # a long design name ends in "…", never cut mid-letter
+        text = lay.metrics(lay.small).elidedText(text, Qt.TextElideMode.ElideRight, room)
+        p.drawText(QRectF(cx + 2 * mm, y, room, h), int(Qt.AlignmentFlag.AlignVCenter), text)
         cx += frac * w

@@ -1,0 +1,87 @@
+"""Issue 32, items 7, 3 and 5 in the report: the cam section states its scale and carries
+the follower's curves, a Chinese cam section has no English words, the positions tables'
+headers are typeset (no literal "a^k", no unit broken over two lines) and a column of
+numbers has one number of decimals. On 79f5cea each of these failed."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+
+import pytest
+
+from core.cam import CamInputs
+from core.dynamics import MassProperties
+from core.spec import Spec
+from shaperapp.report.content import Options, build
+from shaperapp.report.pdf import pdf_bytes
+from shaperapp.widgets import i18n
+
+pytestmark = [pytest.mark.slow,
+              pytest.mark.skipif(shutil.which("pdftotext") is None, reason="pdftotext not installed")]
+LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70, cut_force_N=7000,
+                       cut_height_mm=80)
+
+
+@pytest.fixture(scope="module", params=["en", "zh_CN"])
+def printed(request, qapp, tmp_path_factory):
+    language = request.param
+    i18n.set_language(language)
+    try:
+        report = build(Spec(), [40.0], LOADS, "Sections", "2026-01-01", language,
+                       Options(cam=(CamInputs(), None)))
+        data, _ = pdf_bytes(report)
+    finally:
+        i18n.set_language("en")
+    path = tmp_path_factory.mktemp("sections") / f"{language}.pdf"
+    path.write_bytes(data)
+    text = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True,
+                          check=True).stdout
+    return language, report, text
+
+
+def cam_section(text: str) -> str:
+    """The text from the cam section's heading (the last section) to the end."""
+    heading = re.search(r"\n\s*9 (The feed cam|进给凸轮)", text)
+    assert heading is not None
+    return text[heading.start():]
+
+
+def test_cam_section_states_its_scale(printed):
+    _, _, text = printed
+    assert re.search(r"μ\s*l = [\d.]+ mm/mm \((1:[\d.]+|[\d.]+:1)\)", cam_section(text))
+
+
+def test_cam_section_has_the_follower_curves(printed):
+    language, _, text = printed
+    section = cam_section(text)
+    names = (("follower ψ", "follower ω", "follower α", "pressure angle") if language == "en" else
+             ("δ (°)",))
+    for name in names:
+        assert name in section, name
+    assert section.count("δ (°)") >= 4                  # four plots against the cam angle
+
+
+def test_chinese_cam_section_has_no_english(printed):
+    language, _, text = printed
+    if language == "en":
+        pytest.skip("the Chinese report")
+    section = cam_section(text)
+    assert re.findall(r"\b(allowed|largest|cut ends|clear|at)\b", section) == []
+
+
+def test_column_headers_are_typeset_and_units_whole(printed):
+    _, _, text = printed
+    assert "a^k" not in text
+    assert re.search(r"\((rad|m)/\s*\n", text) is None       # a unit broken after its "/"
+
+
+def test_angle_column_has_one_number_of_decimals(printed):
+    _, report, _ = printed
+    from shaperapp.report.blocks import Table
+    tables = [b for b in report.blocks if isinstance(b, Table) and "r/min" in b.caption]
+    assert tables
+    for table in tables:
+        phi = [row[2] for row in table.rows]
+        decimals = {len(v.split(".")[1]) if "." in v else 0 for v in phi if v}
+        assert len(decimals) == 1, (table.caption, phi)
