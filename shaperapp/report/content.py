@@ -32,7 +32,7 @@ from core.spec import Spec
 from shaperapp.widgets.command_line import inputs_name
 
 from . import figures
-from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
+from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences, typeset
 from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison
 from .positions import position_tables, positions_note
@@ -90,10 +90,10 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                              "crank revolution, one curve per speed"), 170.0, 128.0, views.curves()))
         add(_speed_table(metrics))            # after the figure, which then fits on the page
         add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
-        add(Paragraph(translate("Report", "Positions 1 … N are equally spaced from the limit "
-                                "position that starts the working stroke (φ = 0). The shaded rows are "
-                                "the special positions, solved exactly. Forces are on the named body.")
-                      + positions_note(table), True))
+        add(Paragraph(join_sentences(translate("Report", "Positions 1 … N are equally spaced from the limit "
+                                               "position that starts the working stroke (φ = 0). The shaded "
+                                               "rows are the special positions, solved exactly. Forces are on "
+                                               "the named body."), positions_note(table)), True))
         report.blocks.extend(position_tables(table))
         add(Heading(translate("Report", "6 Velocity, acceleration and force polygons")))
         add(Paragraph(translate("Report", "Drawn to scale from the exact solution at %1 r/min; "

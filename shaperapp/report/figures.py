@@ -42,6 +42,7 @@ from shaperapp.widgets.image_export import painting_bytes
 
 Paint = Callable[[QPainter, QRectF, float], None]
 FINE_STEP_DEG = 0.25
+CAM_AXIS_PX = 64        # the cam plots' left axes: room for "-400" and the axis title
 
 
 def _fit(renderer: QSvgRenderer, rect: QRectF) -> QRectF:
@@ -148,7 +149,8 @@ def cam_paint(cam: Cam) -> Paint:
         span = cam_span(cam, 0.0)
         mu = round_scale(max(span[0] / room.width(), span[1] / room.height()) * px_per_mm)
         paint_cam(painter, room, cam, 0.0, scale=px_per_mm / mu)
-        _note(painter, scale_text(mu), QPointF(rect.left(), room.bottom() + 0.2 * line), rect.width())
+        below = room.center().y() + span[1] / 2 * px_per_mm / mu     # the scale right under the cam
+        _note(painter, scale_text(mu), QPointF(rect.left(), below + 0.2 * line), rect.width())
     return paint
 
 
@@ -242,6 +244,8 @@ class ReportViews:
         cam_model = CamModel(self.model)
         cam_model.set_fields(**typed_from(inputs, phase).dict)
         plots = self._show(CamPlots(cam_model), 680, 450)
+        for plot in plots.plots:        # one axis width: the δ axes line up, no tick text on a curve
+            plot.getAxis("left").setWidth(CAM_AXIS_PX)
         QCoreApplication.processEvents()
         svg = painting_bytes("svg", QSizeF(680, 450), plots.render,
                              QCoreApplication.translate("Report", "Feed cam"), QColor("white"))

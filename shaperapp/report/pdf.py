@@ -25,6 +25,7 @@ RESOLUTION = 300
 PAGE_MM = (210.0, 297.0)
 LEFT_MM, RIGHT_MM, TOP_MM, BOTTOM_MM = 18.0, 16.0, 14.0, 24.0
 SHRINK = 0.70            # a figure keeps at least this share of its height on a page
+KEEP_WHOLE_ROWS = 8      # a table of at most this many rows stays on one page
 TITLE_MM = 48.0          # the title and cover block on the first page, with the gap under it
 GRID = QColor("#90a4ae")
 SHADE = QColor("#eef3f8")
@@ -201,10 +202,13 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
     for r in range(1, len(rows)):
         pieces.append(Piece(row_h + (gap if r == len(rows) - 1 else 0.0),
                             paint_rows([r], False, False), header=repeat))
-    for piece in pieces[:2] if len(pieces) > 3 else ():   # no table starts with one row at a page foot
+    if len(pieces) <= KEEP_WHOLE_ROWS:                     # a short table is never split
+        for piece in pieces[:-1]:
+            piece.keep_with_next = True
+        return pieces
+    for piece in pieces[:2]:                               # no table starts with one row at a page foot
         piece.keep_with_next = True
-    if len(pieces) > 3:                                    # nor ends with one row at a page top
-        pieces[-2].keep_with_next = True
+    pieces[-2].keep_with_next = True                       # nor ends with one row at a page top
     return pieces
 
 

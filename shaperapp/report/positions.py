@@ -22,7 +22,7 @@ from core.positions import COLUMN_GROUPS, PositionTable, display_values
 from shaperapp.positions.view import column_texts
 from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
 
-from .blocks import Table
+from .blocks import Table, join_sentences
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
 FULL_SPEEDS = 3
@@ -35,8 +35,7 @@ def full_speeds(count: int) -> int:
 
 
 def positions_note(table: PositionTable) -> str:
-    """For more than ``FULL_SPEEDS`` speeds, the sentences that say what is printed (with
-    a space before them), else ''."""
+    """For more than ``FULL_SPEEDS`` speeds, the sentences that say what is printed, else ''."""
     if full_speeds(table.rpm.size) == table.rpm.size:
         return ""
     first = translate("Report", "The whole table is given at the first crank speed, n₁ = %1 r/min; "
@@ -45,7 +44,7 @@ def positions_note(table: PositionTable) -> str:
     then = (translate("Report", "The ram's velocity and acceleration, the crank torque and the power "
                       "follow at every speed.") if "crank_torque_N_m" in table.columns else
             translate("Report", "The ram's velocity and acceleration follow at every speed."))
-    return " ".join(("", first, then, translate("Report", "Every column at every speed: shaper table.")))
+    return join_sentences(first, then, translate("Report", "Every column at every speed: shaper table."))
 
 
 def position_tables(table: PositionTable) -> list[Table]:
