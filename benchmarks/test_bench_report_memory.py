@@ -7,19 +7,12 @@ and four columns at every speed (``shaperapp/report/positions.py``): figures mea
 with this test and ``/usr/bin/time -v`` are in docs/performance.md.
 
 The command runs in a fresh process that reports its own peak resident size (VmHWM,
-see ``test_bench_sweep_memory``).
+``peak_probe``).
 """
-import subprocess
-import sys
+from peak_probe import peak_mb_of
 
 TARGET_MB = 600.0
 SPEEDS_16 = [str(10 * k) for k in range(1, 17)]
-PROBE = ("import sys\n"
-         "from core.cli import main\n"
-         "status = main(sys.argv[1:])\n"
-         "peak = next(l for l in open('/proc/self/status') if l.startswith('VmHWM:'))\n"
-         "print('PEAK_KB', peak.split()[1], file=sys.stderr)\n"
-         "sys.exit(status)\n")
 
 
 def test_report_at_16_speeds_and_3600_positions_stays_under_600_mb(benchmark, tmp_path):
@@ -27,14 +20,10 @@ def test_report_at_16_speeds_and_3600_positions_stays_under_600_mb(benchmark, tm
     peaks = {}
 
     def work():
-        done = subprocess.run([sys.executable, "-c", PROBE, "report", "--crank", "100", "--K", "1.4",
-                               "--stroke", "300", "--rpm", *SPEEDS_16, "--lever-mass", "20",
-                               "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000",
-                               "--cut-height", "80", "--positions", "3600", "-o", str(target)],
-                              capture_output=True, text=True, timeout=900)
-        assert done.returncode == 0, done.stderr
-        line = next(l for l in done.stderr.splitlines() if l.startswith("PEAK_KB"))
-        peaks["peak MB"] = int(line.split()[1]) / 1024.0
+        peaks["peak MB"] = peak_mb_of("report", "--crank", "100", "--K", "1.4", "--stroke", "300",
+                                      "--rpm", *SPEEDS_16, "--lever-mass", "20", "--lever-inertia", "1.1",
+                                      "--ram-mass", "70", "--cut-force", "7000", "--cut-height", "80",
+                                      "--positions", "3600", "-o", str(target), timeout=900)
     benchmark.pedantic(work, rounds=1, iterations=1)
     benchmark.extra_info.update({k: round(v, 1) for k, v in peaks.items()})
     print({k: round(v, 1) for k, v in peaks.items()})

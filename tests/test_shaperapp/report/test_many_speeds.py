@@ -18,7 +18,7 @@ from collections import Counter
 import pytest
 
 from cli_runner import shaper
-from report_numbers import column_text
+from report_numbers import cli_values, column_text
 
 pytestmark = [pytest.mark.slow,
               pytest.mark.skipif(shutil.which("pdftotext") is None, reason="pdftotext not installed")]
@@ -27,18 +27,6 @@ DESIGN = ["--crank", "100", "--K", "1.4", "--stroke", "300"]
 RPMS = [str(10 * k) for k in range(1, 17)]
 LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70",
          "--cut-force", "7000", "--cut-height", "80"]
-
-
-def cli_values(*command: str) -> list[str]:
-    """Every value the CLI prints as 'label  value', split at ' / ' (repeats kept)."""
-    result = shaper(*command)
-    assert result.returncode == 0, result.stderr
-    values = []
-    for line in result.stdout.splitlines():
-        parts = re.split(r"\s{2,}", line.strip(), maxsplit=1)
-        if len(parts) == 2 and re.search(r"\d", parts[1]) and "% of the stroke" not in parts[1]:
-            values += parts[1].split(" / ")
-    return values
 
 
 def positions_values() -> list[str]:

@@ -11,7 +11,7 @@ import pytest
 
 from cli_runner import shaper
 from core.positions import display_values
-from report_numbers import column_text
+from report_numbers import cli_values, column_text
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -24,18 +24,6 @@ needs_pdftotext = pytest.mark.skipif(shutil.which("pdftotext") is None, reason="
 
 def squash(text: str) -> str:
     return re.sub(r"\s+", " ", text)
-
-
-def cli_values(*command: str) -> list[str]:
-    """Every number-bearing value the CLI prints as 'label  value', split at ' / '."""
-    result = shaper(*command)
-    assert result.returncode == 0, result.stderr
-    values = []
-    for line in result.stdout.splitlines():
-        parts = re.split(r"\s{2,}", line.strip(), maxsplit=1)
-        if len(parts) == 2 and re.search(r"\d", parts[1]) and "% of the stroke" not in parts[1]:
-            values += [v.replace(" (trailing)", "") for v in parts[1].split(" / ")]
-    return values
 
 
 def table_values() -> list[str]:
