@@ -397,10 +397,24 @@ def _title_block(p: QPainter, lay: Layout, report: Report, y: float, height: flo
             p.drawLine(QPointF(cx, cy), QPointF(cx, cy + row_h))
         p.setFont(lay.small)
         p.drawText(QRectF(cx + 2 * lay.mm, cy, label_w, row_h), int(Qt.AlignmentFlag.AlignVCenter), label)
-        p.setFont(lay.body)
         room = cw - label_w - 4 * lay.mm
-        text = lay.metrics(lay.body).elidedText(value, Qt.TextElideMode.ElideRight, room)
-        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, room, row_h), int(Qt.AlignmentFlag.AlignVCenter), text)
+        font, flags, text = _cover_value(lay, value, room, row_h)
+        p.setFont(font)
+        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, room, row_h), flags, text)
+
+
+def _cover_value(lay: Layout, value: str, room: float, row_h: float) -> tuple[QFont, int, str]:
+    """A cover value in the body type, or (a long design name) in the small type on up
+    to two lines, elided only if even that is too long: the name is the report's, and
+    the footer can only show its start."""
+    middle = int(Qt.AlignmentFlag.AlignVCenter)
+    if lay.metrics(lay.body).horizontalAdvance(value) <= room:
+        return lay.body, middle, value
+    m = lay.metrics(lay.small)
+    wrap = middle | int(Qt.TextFlag.TextWordWrap)
+    if m.boundingRect(QRectF(0, 0, room, 1e6), wrap, value).height() <= min(2 * m.lineSpacing(), row_h) + 1:
+        return lay.small, wrap, value
+    return lay.small, middle, m.elidedText(value, Qt.TextElideMode.ElideRight, room)
 
 
 def _footer(p: QPainter, lay: Layout, report: Report, page: int, pages: int) -> None:
