@@ -1,7 +1,6 @@
 """The building blocks of a report: what ``content`` builds and ``pdf``/``html`` lay out."""
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass, field, replace
 from typing import Callable, ClassVar, Sequence

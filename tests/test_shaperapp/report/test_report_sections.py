@@ -99,3 +99,20 @@ def test_a_long_design_name_is_printed_whole_on_the_cover(qapp, tmp_path):
     first = subprocess.run(["pdftotext", "-l", "1", str(path), "-"], capture_output=True, text=True,
                            check=True).stdout
     assert name in re.sub(r"\s+", " ", first)
+
+
+def test_scheme_text_is_on_one_scale(qapp, tmp_path):
+    """θ's label and the scheme's dimensions (L3 = 579.6 …) are set at one size, as
+    ``pdftotext -bbox`` measures their boxes: on 79f5cea the dimensions were 4.1 pt
+    high beside 8.7 pt for θ."""
+    path = tmp_path / "scheme.pdf"
+    path.write_bytes(pdf_bytes(build(Spec(), [40.0], None, "Scheme", "2026-01-01", "en"))[0])
+    boxes = subprocess.run(["pdftotext", "-bbox", "-l", "2", str(path), "-"], capture_output=True,
+                           text=True, check=True).stdout
+    words = re.findall(r'<word xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)</word>',
+                       boxes)
+    size = lambda w: min(float(w[2]) - float(w[0]), float(w[3]) - float(w[1]))  # noqa: E731 (text may turn)
+    theta = [size(w) for w in words if w[4] == "30.00°"]
+    dimensions = [size(w) for w in words if w[4] in ("579.6", "386.4", "173.4", "300.0")]
+    assert len(theta) == 2 and len(dimensions) >= 6
+    assert max(theta + dimensions) <= 1.15 * min(theta + dimensions), (theta, dimensions)
