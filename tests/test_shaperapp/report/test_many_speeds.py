@@ -30,15 +30,15 @@ LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70",
 
 
 def positions_values() -> list[str]:
-    """Per speed, the ram's velocity and the crank torque at numbered position 4 and at
-    the cut's start, as their columns print them."""
+    """Per speed, the ram's velocity and acceleration, the crank torque and the power at
+    numbered position 4 and at the cut's start, as their columns print them."""
     result = shaper("table", *DESIGN, "--rpm", *RPMS, *LOADS, "--json")
     records = json.loads(result.stdout)
     out = []
     for rpm in map(float, RPMS):
         rows = [r for r in records if r["rpm"] == rpm]
         assert len(rows) == 18
-        for column in ("ram_v_m_s", "crank_torque_N_m"):
+        for column in ("ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m", "power_W"):
             values = [r[column] for r in rows]
             for row in (rows[3], rows[14]):
                 out.append(column_text(values, row[column]))
