@@ -3015,8 +3015,8 @@
         <translation>推程起点处的进给凸轮及其从动件和滚子（凸轮顺时针转动）</translation>
     </message>
     <message>
-        <source>The follower's angle ψ, angular velocity ω and acceleration α (one curve per crank speed) and the pressure angle against the cam angle δ; dashed: the allowed pressure angles</source>
-        <translation>从动件摆角 ψ、角速度 ω 和角加速度 α（每个曲柄转速一条曲线）及压力角随凸轮转角 δ 的变化；虚线：许用压力角</translation>
+        <source>The follower's angle ψ, angular velocity ω and acceleration α (one curve per crank speed, in the colours of the ram's curves in section 4) and the pressure angle against the cam angle δ; dashed: the allowed pressure angles</source>
+        <translation>从动件摆角 ψ、角速度 ω 和角加速度 α（每个曲柄转速一条曲线，颜色同第 4 节滑枕线图）及压力角随凸轮转角 δ 的变化；虚线：许用压力角</translation>
     </message>
     <message>
         <source>Crank length L1</source>

@@ -78,7 +78,8 @@ def cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle:
                                    "follower and roller (the cam turns clockwise)"), 170.0, 100.0,
                          figures.cam_paint(cam)))
     blocks.append(Figure(translate("Report", "The follower's angle ψ, angular velocity ω and "
-                                   "acceleration α (one curve per crank speed) and the pressure angle "
-                                   "against the cam angle δ; dashed: the allowed pressure angles"),
+                                   "acceleration α (one curve per crank speed, in the colours of the "
+                                   "ram's curves in section 4) and the pressure angle against the cam "
+                                   "angle δ; dashed: the allowed pressure angles"),
                          170.0, 113.0, views.cam_curves(inputs, phase)))
     return blocks
