@@ -54,6 +54,13 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
     widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
     m = lay.metrics(font)
     row_h = m.height() * 1.45
+    wrap = 0
+    if isinstance(block, KeyValues) and sum(widths) > lay.width:   # a long value wraps in its cell
+        widths[-1] = max(lay.width - sum(widths[:-1]), lay.width / 3)
+        wrap = int(Qt.TextFlag.TextWordWrap)
+    inset = 0.6 * m.averageCharWidth()
+    heights = [row_h + (max(_lines(m, t, w - 2 * inset + 4) for t, w in zip(row, widths)) - 1) * m.height()
+               if wrap else row_h for row in rows]
     head_lines = max((_lines(m, keep_units(h), w) for h, w in zip(header, widths)), default=0)
     head_h = head_lines * m.height() + 0.45 * m.height() if header else 0.0
     cap_m = lay.metrics(lay.bold)
@@ -68,7 +75,6 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
                 p.drawText(QPointF(x, y + cap_m.ascent() + 0.1 * cap_m.height()), caption)
                 y += cap_h
             p.setFont(font)
-            top_h = head_h if with_header else 0.0
             if with_header:
                 p.fillRect(QRectF(x, y, total_w, head_h), HEAD_FILL)
                 cx = x
@@ -81,34 +87,35 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
                 y += head_h
             else:
                 y0 = y
+            rules = [y]
             for r in part:
                 if shaded and shaded[r]:
-                    p.fillRect(QRectF(x, y, total_w, row_h), SHADE)
+                    p.fillRect(QRectF(x, y, total_w, heights[r]), SHADE)
                 cx = x
                 for c, (text, cw) in enumerate(zip(rows[r], widths)):
                     align = Qt.AlignmentFlag.AlignLeft if c < left else Qt.AlignmentFlag.AlignRight
-                    _cell(p, QRectF(cx + 0.6 * m.averageCharWidth(), y, cw - 1.2 * m.averageCharWidth(), row_h),
-                          align | Qt.AlignmentFlag.AlignVCenter, text, font, c < left)
+                    _cell(p, QRectF(cx + inset, y, cw - 2 * inset, heights[r]),
+                          int(align | Qt.AlignmentFlag.AlignVCenter) | wrap, text, font, c < left)
                     cx += cw
-                y += row_h
+                y += heights[r]
+                rules.append(y)
             p.setPen(QPen(GRID, 0.15 * lay.mm))
             p.drawRect(QRectF(x, y0, total_w, y - y0))
             cx = x
             for cw in widths[:-1]:
                 cx += cw
                 p.drawLine(QPointF(cx, y0), QPointF(cx, y))
-            for k in range(len(part) + 1):
-                yy = y0 + top_h + k * row_h
+            for yy in rules:
                 p.drawLine(QPointF(x, yy), QPointF(x + total_w, yy))
         return paint
 
     gap = m.height() * 0.8
     # one piece per row, the first with caption and header, so a page break falls between rows
-    pieces = [Piece(cap_h + head_h + row_h + (gap if len(rows) == 1 else 0.0),
+    pieces = [Piece(cap_h + head_h + heights[0] + (gap if len(rows) == 1 else 0.0),
                     paint_rows([0], True, bool(header)))]
     repeat = Piece(head_h, paint_rows([], False, True)) if header else None
     for r in range(1, len(rows)):
-        pieces.append(Piece(row_h + (gap if r == len(rows) - 1 else 0.0),
+        pieces.append(Piece(heights[r] + (gap if r == len(rows) - 1 else 0.0),
                             paint_rows([r], False, False), header=repeat))
     if len(pieces) <= KEEP_WHOLE_ROWS:                     # a short table is never split
         for piece in pieces[:-1]:

@@ -15,6 +15,7 @@ from core.dynamics import MassProperties
 from core.spec import Spec
 from shaperapp.report.content import Options, build
 from shaperapp.report.pdf import pdf_bytes
+from shaperapp.report.pdf_base import PAGE_MM, RIGHT_MM
 from shaperapp.widgets import i18n
 
 pytestmark = [pytest.mark.slow,
@@ -116,3 +117,20 @@ def test_scheme_text_is_on_one_scale(qapp, tmp_path):
     dimensions = [size(w) for w in words if w[4] in ("579.6", "386.4", "173.4", "300.0")]
     assert len(theta) == 2 and len(dimensions) >= 6
     assert max(theta + dimensions) <= 1.15 * min(theta + dimensions), (theta, dimensions)
+
+
+def test_a_long_value_wraps_in_its_cell(qapp, tmp_path):
+    """16 speeds of six digits make the inputs' "Crank speeds" longer than the page even
+    in the smallest type: on 79f5cea the row ran off the page; now it wraps in its cell."""
+    rpms = [round(12.3457 * k, 4) for k in range(1, 17)]
+    path = tmp_path / "speeds.pdf"
+    path.write_bytes(pdf_bytes(build(Spec(), rpms, None, "Speeds", "2026-01-01", "en"))[0])
+    first = subprocess.run(["pdftotext", "-l", "1", str(path), "-"], capture_output=True, text=True,
+                           check=True).stdout
+    listed = ", ".join(f"{r:g}" for r in rpms) + " r/min"
+    assert len(listed) > 140
+    assert listed in re.sub(r"\s+", " ", first)
+    boxes = subprocess.run(["pdftotext", "-bbox", "-l", "1", str(path), "-"], capture_output=True,
+                           text=True, check=True).stdout
+    right = max(float(x) for x in re.findall(r'xMax="([\d.]+)"', boxes))
+    assert right <= (PAGE_MM[0] - RIGHT_MM) / 25.4 * 72 + 1      # nothing past the right margin
