@@ -8,38 +8,25 @@ peak flat across them; ``--benchmark-enable -n 0`` reports the same figures as e
 The whole 10^6 × 16 case (about a minute, 575 MB of CSV) was measured by hand with
 ``/usr/bin/time -v``; its figure and command are in docs/performance.md.
 """
-import subprocess
-import sys
-
 import pytest
+
+from peak_probe import peak_mb_of
 
 TARGET_MB = 200.0
 FLAT_MB = 40.0          # what 10× the designs or 16× the speeds may add at most
 SPEEDS_16 = [str(40 + 20 * i) for i in range(16)]
-# The peak is the process's own high-water mark (VmHWM), which a new program image starts
-# afresh. ru_maxrss is not: Linux carries the parent's peak into a forked child across exec,
-# so under a large test process every case read 1875 MB.
-PROBE = ("import sys\n"
-         "from core.cli import main\n"
-         "status = main(sys.argv[1:])\n"
-         "peak = next(l for l in open('/proc/self/status') if l.startswith('VmHWM:'))\n"
-         "print('PEAK_KB', peak.split()[1], file=sys.stderr)\n"
-         "sys.exit(status)\n")
 
 
 def peak_mb(tmp_path, crank_count: int, stroke_count: int, rpms: list[str]) -> float:
     """Peak resident MB of one sweep of crank_count × stroke_count designs to a CSV file."""
     target = tmp_path / "sweep.csv"
-    done = subprocess.run([sys.executable, "-c", PROBE, "sweep", "--crank", "100", "--K", "1.4",
-                           "--stroke", "300", "--vary", f"crank=50:150:{crank_count}",
-                           "--vary", f"stroke=250:600:{stroke_count}", "--rpm", *rpms,
-                           "--csv", str(target)], capture_output=True, text=True, timeout=600)
-    assert done.returncode == 0, done.stderr
+    peak = peak_mb_of("sweep", "--crank", "100", "--K", "1.4", "--stroke", "300",
+                      "--vary", f"crank=50:150:{crank_count}", "--vary", f"stroke=250:600:{stroke_count}",
+                      "--rpm", *rpms, "--csv", str(target))
     rows = sum(1 for _ in open(target, encoding="utf-8")) - 1
     assert rows == crank_count * stroke_count
     target.unlink()
-    line = next(l for l in done.stderr.splitlines() if l.startswith("PEAK_KB"))
-    return int(line.split()[1]) / 1024.0
+    return peak
 
 
 def test_sweep_peak_memory_is_flat(benchmark, tmp_path):

@@ -11,9 +11,12 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
+from PySide6.QtCore import QRectF
+from PySide6.QtGui import QColor, QPainter
 from PySide6.QtWidgets import QGridLayout, QWidget
 
 from core.cam.follower import pitch, pressure_angle
+from shaperapp.widgets.image_export import render_scene
 from shaperapp.widgets.style import CURSOR, speed_colour
 
 from .model import CamModel
@@ -104,6 +107,27 @@ class CamPlots(QWidget):
         self.pressure_plot.plot(list(back), [cam.inputs.return_pressure_deg] * 2, pen=dash)
         self.pressure_plot.setYRange(0.0, max(90.0, float(d["pressure_deg"].max())), padding=0.02)
         self.move_cursor()
+
+    def render(self, painter: QPainter, target: QRectF, cursor: bool = False) -> None:
+        """Paint the four plots as laid out into ``target`` of any painter (the report):
+        vectors, without the cursor unless ``cursor``."""
+        if self._stale:
+            self.redraw()
+        sx, sy = target.width() / max(self.width(), 1), target.height() / max(self.height(), 1)
+        for line in self.cursors:
+            line.setVisible(cursor)
+        try:
+            self._render_plots(painter, target, sx, sy)
+        finally:
+            for line in self.cursors:
+                line.setVisible(True)
+
+    def _render_plots(self, painter: QPainter, target: QRectF, sx: float, sy: float) -> None:
+        for plot in self.plots:
+            g = plot.geometry()
+            render_scene(plot.scene(), plot.sceneRect(), painter,
+                         QRectF(target.left() + g.x() * sx, target.top() + g.y() * sy,
+                                g.width() * sx, g.height() * sy), QColor("white"))
 
     def move_cursor(self, *_args) -> None:
         if not self.isVisible():

@@ -82,21 +82,40 @@ def cam_curves(cam: Cam) -> tuple[np.ndarray, np.ndarray]:
     return p.point, profile(p, cam.roller_mm)
 
 
-def paint_cam(painter: QPainter, rect: QRectF, cam: Cam, delta: float, label: str = "",
-              curves: tuple[np.ndarray, np.ndarray] | None = None) -> None:
-    """The cam turned to cam angle ``delta`` (rad) with its follower and roller, to scale
-    and fitted into ``rect`` (the Cam tab, its image export and the report)."""
+def _roller_centre(cam: Cam, delta: float) -> np.ndarray:
     f = cam.follower
-    psi = float(cam.program.motion(np.array([delta])).psi[0])
-    pitch_pts, profile_pts = (_turn(c, -delta) for c in (curves or cam_curves(cam)))
-    beta = math.radians(f.initial_deg) + psi
-    a, l = f.distance_mm, f.arm_mm
-    roller = np.array([a - l * math.cos(beta), f.side * l * math.sin(beta)])
-    reach = float(np.hypot(*pitch_pts).max()) + cam.roller_mm
+    beta = math.radians(f.initial_deg) + float(cam.program.motion(np.array([delta])).psi[0])
+    return np.array([f.distance_mm - f.arm_mm * math.cos(beta), f.side * f.arm_mm * math.sin(beta)])
+
+
+def _extent(cam: Cam, roller: np.ndarray, reach: float) -> tuple[np.ndarray, np.ndarray]:
     lo = np.array([min(-reach, roller[0] - cam.roller_mm), min(-reach, roller[1] - cam.roller_mm)])
-    hi = np.array([max(reach, a), max(reach, roller[1] + cam.roller_mm)])
+    hi = np.array([max(reach, cam.follower.distance_mm), max(reach, roller[1] + cam.roller_mm)])
+    return lo, hi
+
+
+def cam_span(cam: Cam, delta: float, curves: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+    """Width and height (mm of the design) that :func:`paint_cam` draws, margins included:
+    what a caller needs to choose a round drawing scale."""
+    pitch_pts = curves[0] if curves is not None else cam_curves(cam)[0]
+    lo, hi = _extent(cam, _roller_centre(cam, delta), float(np.hypot(*pitch_pts).max()) + cam.roller_mm)
+    return (hi - lo) * (1 + 2 * MARGIN)
+
+
+def paint_cam(painter: QPainter, rect: QRectF, cam: Cam, delta: float, label: str = "",
+              curves: tuple[np.ndarray, np.ndarray] | None = None, scale: float | None = None) -> None:
+    """The cam turned to cam angle ``delta`` (rad) with its follower and roller, to scale:
+    fitted into ``rect``, or at ``scale`` (device units per mm of the design) centred in
+    it (the Cam tab, its image export and the report)."""
+    f = cam.follower
+    pitch_pts, profile_pts = (_turn(c, -delta) for c in (curves or cam_curves(cam)))
+    a = f.distance_mm
+    roller = _roller_centre(cam, delta)
+    reach = float(np.hypot(*pitch_pts).max()) + cam.roller_mm
+    lo, hi = _extent(cam, roller, reach)
     span = hi - lo
-    scale = min(rect.width() / (span[0] * (1 + 2 * MARGIN)), rect.height() / (span[1] * (1 + 2 * MARGIN)))
+    if scale is None:
+        scale = min(rect.width() / (span[0] * (1 + 2 * MARGIN)), rect.height() / (span[1] * (1 + 2 * MARGIN)))
     centre = (lo + hi) / 2.0
 
     def at(x: float, y: float) -> QPointF:

@@ -2,8 +2,8 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
-from typing import Callable, ClassVar
+from dataclasses import dataclass, field, replace
+from typing import Callable, ClassVar, Sequence
 
 from PySide6.QtCore import QCoreApplication, QRectF
 from PySide6.QtGui import QPainter
@@ -36,6 +36,52 @@ class Table:
     shaded: list[bool] = field(default_factory=list)
     left_columns: int = 1
     plain_header: bool = False        # True: the header is user text (names), never typeset
+    key_columns: int = 0              # columns repeated in each block of a split table
+                                      # (``column_blocks``); 0: the ``left_columns``
+
+
+def join_sentences(*texts: str) -> str:
+    """Translated sentences as one paragraph: a space after an English full stop, none
+    after a Chinese one (。), empty texts left out."""
+    out = ""
+    for text in filter(None, texts):
+        out += ("" if not out or out.endswith("。") else " ") + text
+    return out
+
+
+def column_blocks(widths: Sequence[float], lead: int, available: float) -> list[list[int]]:
+    """The columns of a table too wide for the page, as blocks that fit: each block the
+    ``lead`` (identifying) columns, then an even share of the others in order. Why: a
+    table cut at the page's edge loses its last columns (16 crank speeds, issue 32);
+    blocks keep every value and say which row each belongs to. A column wider than
+    the page on its own still gets a block (nothing is dropped)."""
+    lead_w = sum(widths[:lead])
+    rest = list(range(lead, len(widths)))
+    if lead_w + sum(widths[lead:]) <= available or not rest:
+        return [list(range(len(widths)))]
+    greedy: list[list[int]] = [[]]
+    for c in rest:                             # first as few blocks as fit…
+        if greedy[-1] and lead_w + sum(widths[k] for k in greedy[-1]) + widths[c] > available:
+            greedy.append([])
+        greedy[-1].append(c)
+    n, extra = divmod(len(rest), len(greedy))  # …then as many columns in each as can be
+    starts = [k * n + min(k, extra) for k in range(len(greedy) + 1)]
+    even = [rest[a:b] for a, b in zip(starts, starts[1:])]
+    fits = all(lead_w + sum(widths[k] for k in b) <= available for b in even)
+    return [list(range(lead)) + b for b in (even if fits else greedy)]
+
+
+def split_table(table: "Table", blocks: list[list[int]]) -> list["Table"]:
+    """``table`` as one table per block of columns (:func:`column_blocks`), the caption
+    marked as continued after the first."""
+    if len(blocks) == 1:
+        return [table]
+    more = QCoreApplication.translate("Report", "%1 (continued)")
+    return [replace(table, header=[table.header[c] for c in b],
+                    rows=[[row[c] for c in b] for row in table.rows],
+                    caption=table.caption if k == 0 or not table.caption
+                    else more.replace("%1", table.caption))
+            for k, b in enumerate(blocks)]
 
 
 @dataclass
@@ -83,11 +129,13 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
 
 
 # The formulas' notation in the (translated) source text, typeset by ``typeset``:
-# a^k_A3A2 → a with k above and A3A2 below, v_A3 → v with A3 below, O4/L1/ω3 → O, L, ω with
+# a^k_A3A2 → a with k above and A3A2 below, a^k → a with k above, v_A3 and ω_max → v, ω with
+# A3, max below, O4/L1/ω3 → O, L, ω with
 # the digit below, (1/2π) → a slanted fraction.
 _NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z_])(?P<name>[OLωα])(?P<digit>\d)"
+                       r"|(?<![A-Za-z0-9])(?P<base1>[A-Za-z])\^(?P<sup1>[a-z])(?![A-Za-z0-9_])"
+                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔωαψ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
+                       r"|(?<![A-Za-z_])(?P<name>[OLωαψr])(?P<digit>\d)"
                        r"|\((?P<num>\d)/(?P<den>\d?π)\)")
 
 
@@ -97,6 +145,8 @@ def typeset(text: str) -> str:
     def one(m: re.Match) -> str:
         if m["base"]:
             return f"{m['base']}<sup>{m['sup']}</sup><sub>{m['sub']}</sub>"
+        if m["base1"]:
+            return f"{m['base1']}<sup>{m['sup1']}</sup>"
         if m["base2"]:
             return f"{m['base2']}<sub>{m['sub2']}</sub>"
         if m["name"]:

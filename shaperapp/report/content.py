@@ -15,29 +15,27 @@ from typing import Sequence
 
 from PySide6.QtCore import QCoreApplication
 
-from core.cam import CamInputs, design_cam
-from core.cam.table import cam_summary, follower_peaks
 from core.cli.cmd_analyze import cycle_rows
-from core.cli.cmd_cam import summary_rows as cam_rows
 from core.cli.cmd_analyze import speed_rows as analyze_speed_rows
 from core.cli.cmd_dynamics import speed_rows as dynamics_speed_rows
 from core.cli.cmd_dynamics import summary_rows
 from core.cli.cmd_synth import dimension_rows
+from core.cam import CamInputs
 from core.compare import Candidate
-from core.errors import DesignError
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design
 from core.flywheel import summarize
 from core.geometry import Design
 from core.margins import margins
 from core.metrics import CycleMetrics, analyze
-from core.positions import PositionTable, position_table, positions, text_groups
+from core.positions import PositionTable, position_table, positions
 from core.spec import Spec
-from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
 from shaperapp.widgets.command_line import inputs_name
 
 from . import figures
-from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, typeset
+from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences, typeset
+from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison
+from .positions import position_tables, positions_note
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
 
@@ -85,17 +83,18 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         add(_margin_table(design))
         add(Heading(translate("Report", "3 The mechanism at its limit positions")))
         add(Figure(translate("Report", "Scheme to scale at the limit positions that start and end "
-                             "the working stroke"), 170.0, 100.0, views.limit_schemes()))
+                             "the working stroke"), 170.0, 85.0, views.limit_schemes()))
         add(Heading(translate("Report", "4 Motion of the ram and cycle metrics")))
         add(KeyValues(_cycle(metrics)))
         add(Figure(translate("Report", "Ram displacement, velocity and acceleration over one "
                              "crank revolution, one curve per speed"), 170.0, 128.0, views.curves()))
         add(_speed_table(metrics))            # after the figure, which then fits on the page
         add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
-        add(Paragraph(translate("Report", "Positions 1 … N are equally spaced from the limit "
-                                "position that starts the working stroke (φ = 0). The shaded rows are "
-                                "the special positions, solved exactly. Forces are on the named body."), True))
-        report.blocks.extend(_position_tables(table))
+        add(Paragraph(join_sentences(translate("Report", "Positions 1 … N are equally spaced from the limit "
+                                               "position that starts the working stroke (φ = 0). The shaded "
+                                               "rows are the special positions, solved exactly. Forces are on "
+                                               "the named body."), positions_note(table)), True))
+        report.blocks.extend(position_tables(table))
         add(Heading(translate("Report", "6 Velocity, acceleration and force polygons")))
         add(Paragraph(translate("Report", "Drawn to scale from the exact solution at %1 r/min; "
                                 "μ is the scale of each drawing (1 mm on the page).")
@@ -124,41 +123,12 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
             report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
         if options.cam is not None:         # the last section: 9, or 10 after a comparison
             number = 10 if options.compare else 9
-            report.blocks.extend(_cam_blocks(options.cam, design, idle, rpms[0], number))
+            report.blocks.extend(cam_blocks(options.cam, design, idle, rpms[0], number, views))
     finally:
         views.close()
     return report
 
 
-def _cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle: float,
-                rpm: float, number: int) -> list:
-    """The feed cam: its figures as ``shaper cam`` prints them, and the cam to scale."""
-    from shaperapp.cam.profile_view import paint_cam     # the Cam tab's own drawing
-    blocks: list = [Heading(translate("Report", "%1 The feed cam").replace("%1", str(number)))]
-    inputs, phase = cam_inputs
-    try:
-        cam = design_cam(inputs, design, idle, phase)
-    except DesignError as exc:
-        blocks.append(Paragraph(translate("Report", "The feed cam cannot be made for this design: %1")
-                                .replace("%1", f"{exc.parameter}: {exc.allowed}")))
-        return blocks
-    summary = cam_summary(cam)
-    summary.update(follower_peaks(cam, rpm))
-    rows = _labelled(cam_rows(summary), {
-        "base radius r0 (pitch curve)": translate("Report", "Base radius r0 of the pitch curve"),
-        "centre distance a": translate("Report", "Centre distance a"),
-        "arm l": translate("Report", "Follower arm l"),
-        "initial arm angle ψ0": translate("Report", "Initial arm angle ψ0"),
-        "max pressure angle rise / return": translate("Report", "Max pressure angle, rise / return"),
-        "min convex radius ρmin (pitch curve)": translate("Report", "Smallest convex radius ρmin of the pitch curve"),
-        "roller r": translate("Report", "Roller radius r"),
-        "profile base radius r0 − r": translate("Report", "Base radius of the profile r0 − r"),
-        "rise starts at crank angle": translate("Report", "Rise starts at crank angle")})
-    blocks.append(KeyValues(rows))
-    blocks.append(Figure(translate("Report", "The feed cam to scale at the start of the rise, with "
-                                   "its follower and roller (the cam turns clockwise)"), 170.0, 100.0,
-                         lambda painter, rect, _px: paint_cam(painter, rect, cam, 0.0)))
-    return blocks
 # ---- sections --------------------------------------------------------------
 def _inputs(spec: Spec, rpms: Sequence[float], masses: MassProperties | None) -> list[tuple[str, str]]:
     rows = []
@@ -250,16 +220,6 @@ def _speed_table(metrics: CycleMetrics) -> Table:
         "max return speed": translate("Report", "Max return speed"),
         "max |acceleration|": translate("Report", "Max |acceleration|")},
         translate("Report", "Cycle metrics per crank speed"))
-
-
-def _position_tables(table: PositionTable) -> list[Table]:
-    titles, specials, groups = column_titles(), special_titles(), group_titles()
-    header = [translate("Report", "No."), translate("Report", "Position")]
-    return [Table(header + [titles[c] for c in block.columns],
-                  [[str(n or ""), specials.get(name, ""), *texts] for n, name, texts in block.rows],
-                  f"{block.rpm:g} r/min — {groups[block.group]}",
-                  [bool(name) for _, name, _ in block.rows], left_columns=2)
-            for block in text_groups(table)]
 
 
 def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:

@@ -15,17 +15,21 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Sequence
 
-from PySide6.QtCore import QByteArray, QCoreApplication, QEvent, QPointF, QRectF, Qt
-from PySide6.QtGui import QColor, QFontMetricsF, QPainter, QPen, QTextDocument
+from PySide6.QtCore import QByteArray, QCoreApplication, QEvent, QPointF, QRectF, QSizeF, Qt
+from PySide6.QtGui import QColor, QFont, QFontInfo, QFontMetricsF, QPainter, QPen, QTextDocument
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
 
+from core.cam import Cam, CamInputs
 from core.compare import Comparison
 from core.dynamics import MassProperties
 from core.geometry import Design
 from core.metrics import CycleMetrics
 from core.polygons import polygons
 from core.spec import Spec
+from shaperapp.cam.model import CamModel, typed_from
+from shaperapp.cam.plots import CamPlots
+from shaperapp.cam.profile_view import cam_span, paint_cam
 from shaperapp.compare.plots import ComparePlots
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.forces_panel import ForcesPanel
@@ -34,9 +38,11 @@ from shaperapp.scheme.view import SchemeWidget
 from shaperapp.vectors.paint import auto_scale, paint_polygon
 
 from shaperapp.widgets.fonts import report_font
+from shaperapp.widgets.image_export import painting_bytes
 
 Paint = Callable[[QPainter, QRectF, float], None]
 FINE_STEP_DEG = 0.25
+CAM_AXIS_PX = 64        # the cam plots' left axes: room for "-400" and the axis title
 
 
 def _fit(renderer: QSvgRenderer, rect: QRectF) -> QRectF:
@@ -88,6 +94,8 @@ class SchemeShot:
     o4: QPointF
     tips: tuple[QPointF, QPointF]
     mm_per_px: float
+    text_px: float = 12.0
+    """The pixel size of the scheme's own text (its dimensions): θ is written at it."""
 
 
 def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg: float) -> Paint:
@@ -107,16 +115,42 @@ def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg
             drawn = QRectF(0, 0, box.width() * k, box.height() * k)
             drawn.moveCenter(QPointF(rect.left() + (i + 0.5) * cell_w, rect.top() + cell_h / 2))
             renderer.render(painter, drawn)
-            _mark_theta(painter, drawn.topLeft(), k, shot, theta_deg, line)
-            doc = QTextDocument()
-            doc.setDefaultFont(painter.font())
-            doc.documentLayout().setPaintDevice(painter.device())
-            doc.setHtml(f'<p align="center">{html.escape(captions[i])}<br>{scale_text(mu)}</p>')
-            doc.setTextWidth(cell_w)
             painter.save()
-            painter.translate(rect.left() + i * cell_w, drawn.bottom() + 0.2 * line)
-            doc.drawContents(painter)
+            font = QFont(painter.font())             # θ on the scale of the dimensions beside it
+            font.setPixelSize(max(round(shot.text_px * k), 1))
+            painter.setFont(font)
+            _mark_theta(painter, drawn.topLeft(), k, shot, theta_deg,
+                        QFontMetricsF(font, painter.device()).height())
             painter.restore()
+            _note(painter, f"{html.escape(captions[i])}<br>{scale_text(mu)}",
+                  QPointF(rect.left() + i * cell_w, drawn.bottom() + 0.2 * line), cell_w)
+    return paint
+
+
+def _note(painter: QPainter, rich: str, at: QPointF, width: float) -> None:
+    """Centred rich text (a caption with μ<sub>l</sub>) in the painter's font, from ``at``."""
+    doc = QTextDocument()
+    doc.setDefaultFont(painter.font())
+    doc.documentLayout().setPaintDevice(painter.device())
+    doc.setHtml(f'<p align="center">{rich}</p>')
+    doc.setTextWidth(width)
+    painter.save()
+    painter.translate(at)
+    doc.drawContents(painter)
+    painter.restore()
+
+
+def cam_paint(cam: Cam) -> Paint:
+    """The cam at the start of the rise, at the round scale μ_l that fits the figure, the
+    scale stated under it (a drawing "to scale" names its scale)."""
+    def paint(painter: QPainter, rect: QRectF, px_per_mm: float) -> None:
+        line = QFontMetricsF(painter.font(), painter.device()).height()
+        room = QRectF(rect.left(), rect.top(), rect.width(), rect.height() - 1.6 * line)
+        span = cam_span(cam, 0.0)
+        mu = round_scale(max(span[0] / room.width(), span[1] / room.height()) * px_per_mm)
+        paint_cam(painter, room, cam, 0.0, scale=px_per_mm / mu)
+        below = room.center().y() + span[1] / 2 * px_per_mm / mu     # the scale right under the cam
+        _note(painter, scale_text(mu), QPointF(rect.left(), below + 0.2 * line), rect.width())
     return paint
 
 
@@ -179,7 +213,7 @@ class ReportViews:
     def limit_schemes(self) -> Paint:
         """Both limit positions side by side at one round scale μ_l, each with the lever's
         two limit positions (dashed) and the angle θ between them marked at O4."""
-        scheme = self._show(SchemeWidget(self.model), 620, 700)
+        scheme = self._show(SchemeWidget(self.model), 330, 370)
         design = self.model.design
         half = design.theta / 2.0
         tips = ((-design.lever * math.sin(half), design.lever * math.cos(half)),
@@ -191,7 +225,7 @@ class ReportViews:
             svg = self._svg(scheme, f"scheme{index}")
             o4, across = scheme.export_point(0.0, 0.0), scheme.export_point(100.0, 0.0)
             shots.append(SchemeShot(svg, o4, tuple(scheme.export_point(*tip) for tip in tips),
-                                    100.0 / (across.x() - o4.x())))
+                                    100.0 / (across.x() - o4.x()), QFontInfo(scheme.font()).pixelSize()))
         self.model.set_angle_index(0)
         caption = QCoreApplication.translate("Report", "φ = %1° (limit position)")
         return scheme_paint(shots, [caption.replace("%1", f"{self.metrics.work_start_deg:.2f}"),
@@ -203,6 +237,19 @@ class ReportViews:
 
     def forces(self) -> Paint:
         return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1450, 1050), "forces")])
+
+    def cam_curves(self, inputs: CamInputs, phase: float | None) -> Paint:
+        """The Cam tab's plots of the follower's ψ, ω, α and the pressure angle against the
+        cam angle δ, for the cam of ``inputs`` on this design."""
+        cam_model = CamModel(self.model)
+        cam_model.set_fields(**typed_from(inputs, phase).dict)
+        plots = self._show(CamPlots(cam_model), 680, 450)
+        for plot in plots.plots:        # one axis width: the δ axes line up, no tick text on a curve
+            plot.getAxis("left").setWidth(CAM_AXIS_PX)
+        QCoreApplication.processEvents()
+        svg = painting_bytes("svg", QSizeF(680, 450), plots.render,
+                             QCoreApplication.translate("Report", "Feed cam"), QColor("white"))
+        return svg_paint([svg])
 
     def comparison_curves(self, result: Comparison) -> Paint:
         """The Compare tab's overlay curves of ``result``."""

@@ -12,7 +12,8 @@ from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QRectF, QSize
 from PySide6.QtGui import QFont, QPainter
 from PySide6.QtSvg import QSvgGenerator
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
+from .blocks import (Figure, Heading, KeyValues, Paragraph, Report, Table, column_blocks, cover_rows,
+                     split_table, typeset)
 from shaperapp.widgets.fonts import report_font
 
 SVG_DPI = 96.0
@@ -68,6 +69,23 @@ def _label(text: str) -> str:
     return typeset(html.escape(text))
 
 
+PAGE_MM = 190.0          # the body's max-width
+CHAR_MM, CELL_PAD_MM = 1.6, 3.4     # an 8 pt character (a CJK one counts twice), a cell's padding
+
+
+def _text_mm(text: str) -> float:
+    return CHAR_MM * sum(2 if ord(ch) > 0x2e80 else 1 for ch in text)
+
+
+def _tables(block: Table) -> str:
+    """``block``, split into blocks of columns when it is wider than the page (as in
+    the PDF, widths estimated from the characters: a browser prints what is wider cut)."""
+    widths = [max([_text_mm(w) for w in block.header[c].split()]
+                  + [_text_mm(r[c]) for r in block.rows]) + CELL_PAD_MM for c in range(len(block.header))]
+    blocks = column_blocks(widths, block.key_columns or block.left_columns, PAGE_MM)
+    return "\n".join(_table(part) for part in split_table(block, blocks))
+
+
 def _table(block: Table) -> str:
     out = []
     if block.caption:
@@ -102,7 +120,7 @@ def report_html(report: Report) -> str:
                 f"<tr><td>{_label(k)}</td><td>{_label(v)}</td></tr>" for k, v in block.rows)
                 + "</table>")
         elif isinstance(block, Table):
-            body.append(_table(block))
+            body.append(_tables(block))
         elif isinstance(block, Figure):
             caption = f"<figcaption>{html.escape(block.caption)}</figcaption>" if block.caption else ""
             body.append(f"<figure>{figure_svg(block, font)}{caption}</figure>")

@@ -8,73 +8,14 @@ first page and a framed footer (design name, date, page i / n) on every page.
 from __future__ import annotations
 
 import html
-from dataclasses import dataclass
-from typing import Callable
 
-from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QMarginsF, QPointF, QRectF, Qt
-from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
-                           QPdfWriter, QPen, QTextDocument)
+from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QPointF, QRectF, Qt
+from PySide6.QtGui import QFont, QPageLayout, QPageSize, QPainter, QPdfWriter, QPen
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
-from shaperapp.widgets.fonts import report_font
-
-translate = QCoreApplication.translate
-RESOLUTION = 300
-PAGE_MM = (210.0, 297.0)
-LEFT_MM, RIGHT_MM, TOP_MM, BOTTOM_MM = 18.0, 16.0, 14.0, 24.0
-SHRINK = 0.70            # a figure keeps at least this share of its height on a page
-TITLE_MM = 48.0          # the title and cover block on the first page, with the gap under it
-GRID = QColor("#90a4ae")
-SHADE = QColor("#eef3f8")
-HEAD_FILL = QColor("#dfe7ee")
-INK = QColor("#1b262c")
-
-
-@dataclass
-class Piece:
-    """Something placed on a page: its height and how to paint it at (x, y, width)."""
-
-    height: float
-    paint: Callable[[QPainter, float, float, float], None]
-    keep_with_next: bool = False
-    header: "Piece | None" = None
-    """A table row's header, painted first when the row starts a new page."""
-    part: str = "text"
-    """"figure" for a figure's drawing, "text" for everything else (``page_boxes``)."""
-    min_height: float = 0.0
-    """A figure may shrink to this height to stay on a page (``paginate``)."""
-
-
-class Layout:
-    """Fonts and measures on the PDF device (device units: 1/300 inch)."""
-
-    def __init__(self, writer: QPdfWriter, language: str) -> None:
-        self.writer = writer
-        self.mm = RESOLUTION / 25.4
-        self.body = report_font(language, 9.5)
-        self.small = report_font(language, 7.5)
-        self.tiny = report_font(language, 6.5)
-        self.bold = QFont(self.body)
-        self.bold.setBold(True)
-        self.h1 = QFont(self.body)
-        self.h1.setPointSizeF(12.5)
-        self.h1.setBold(True)
-        self.title = QFont(self.body)
-        self.title.setPointSizeF(17.0)
-        self.title.setBold(True)
-        self.width = (PAGE_MM[0] - LEFT_MM - RIGHT_MM) * self.mm
-
-    def metrics(self, font: QFont) -> QFontMetricsF:
-        return QFontMetricsF(font, self.writer)
-
-    def document(self, html: str, width: float) -> QTextDocument:
-        doc = QTextDocument()
-        doc.documentLayout().setPaintDevice(self.writer)
-        doc.setDefaultFont(self.body)
-        doc.setDocumentMargin(0)
-        doc.setHtml(html)
-        doc.setTextWidth(width)
-        return doc
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows
+from .pdf_base import (BOTTOM_MM, GRID, INK, LEFT_MM, PAGE_MM, RESOLUTION, SHRINK, TITLE_MM, TOP_MM,
+                       Layout, Piece, translate)
+from .pdf_tables import table_pieces
 
 
 # ---- blocks → pieces -----------------------------------------------------------
@@ -101,125 +42,6 @@ def _paragraph(lay: Layout, block: Paragraph) -> list[Piece]:
         doc.drawContents(p)
         p.restore()
     return [Piece(doc.size().height() + gap, paint, keep_with_next=block.keep_with_next)]
-
-
-def _cell_widths(lay: Layout, font: QFont, header: list[str], rows: list[list[str]],
-                 width: float) -> list[float]:
-    m = lay.metrics(font)
-    pad = m.averageCharWidth() * 1.6
-    widths = []
-    for c in range(len(header)):
-        longest_word = max((m.horizontalAdvance(w) for w in header[c].split()), default=0.0)
-        cells = max((m.horizontalAdvance(r[c]) for r in rows), default=0.0)
-        widths.append(max(longest_word, cells) + pad)
-    spare = width - sum(widths)
-    if spare > 0:                      # share the spare width, text columns first
-        widths = [w + spare / len(widths) for w in widths]
-    return widths
-
-
-def _table(lay: Layout, block: Table | KeyValues) -> list[Piece]:
-    if isinstance(block, KeyValues):
-        header, rows, caption, shaded, left = [], [list(r) for r in block.rows], "", [], 2
-        plain_header = True
-    else:
-        header, rows, caption, shaded, left = block.header, block.rows, block.caption, block.shaded, \
-            block.left_columns
-        plain_header = block.plain_header
-    font = lay.body if isinstance(block, KeyValues) else lay.small
-    widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
-    if sum(widths) > lay.width * 1.001:
-        font = lay.tiny
-        widths = _cell_widths(lay, font, header or rows[0], rows, lay.width)
-    m = lay.metrics(font)
-    row_h = m.height() * 1.45
-    head_lines = max((_lines(m, h, w) for h, w in zip(header, widths)), default=0)
-    head_h = head_lines * m.height() + 0.45 * m.height() if header else 0.0
-    cap_m = lay.metrics(lay.bold)
-    cap_h = cap_m.height() * 1.5 if caption else 0.0
-    total_w = sum(widths)
-
-    def paint_rows(part: list[int], with_caption: bool, with_header: bool) -> Callable:
-        def paint(p: QPainter, x: float, y: float, w: float) -> None:
-            p.setPen(INK)
-            if with_caption and caption:
-                p.setFont(lay.bold)
-                p.drawText(QPointF(x, y + cap_m.ascent() + 0.1 * cap_m.height()), caption)
-                y += cap_h
-            p.setFont(font)
-            top_h = head_h if with_header else 0.0
-            if with_header:
-                p.fillRect(QRectF(x, y, total_w, head_h), HEAD_FILL)
-                cx = x
-                for text, cw in zip(header, widths):
-                    _cell(p, QRectF(cx + 2, y, cw - 4, head_h),
-                          Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap, text, font,
-                          not plain_header)
-                    cx += cw
-                y0 = y
-                y += head_h
-            else:
-                y0 = y
-            for r in part:
-                if shaded and shaded[r]:
-                    p.fillRect(QRectF(x, y, total_w, row_h), SHADE)
-                cx = x
-                for c, (text, cw) in enumerate(zip(rows[r], widths)):
-                    align = Qt.AlignmentFlag.AlignLeft if c < left else Qt.AlignmentFlag.AlignRight
-                    _cell(p, QRectF(cx + 0.6 * m.averageCharWidth(), y, cw - 1.2 * m.averageCharWidth(), row_h),
-                          align | Qt.AlignmentFlag.AlignVCenter, text, font, c < left)
-                    cx += cw
-                y += row_h
-            p.setPen(QPen(GRID, 0.15 * lay.mm))
-            p.drawRect(QRectF(x, y0, total_w, y - y0))
-            cx = x
-            for cw in widths[:-1]:
-                cx += cw
-                p.drawLine(QPointF(cx, y0), QPointF(cx, y))
-            for k in range(len(part) + 1):
-                yy = y0 + top_h + k * row_h
-                p.drawLine(QPointF(x, yy), QPointF(x + total_w, yy))
-        return paint
-
-    gap = m.height() * 0.8
-    # one piece per row, the first with caption and header, so a page break falls between rows
-    pieces = [Piece(cap_h + head_h + row_h + (gap if len(rows) == 1 else 0.0),
-                    paint_rows([0], True, bool(header)))]
-    repeat = Piece(head_h, paint_rows([], False, True)) if header else None
-    for r in range(1, len(rows)):
-        pieces.append(Piece(row_h + (gap if r == len(rows) - 1 else 0.0),
-                            paint_rows([r], False, False), header=repeat))
-    for piece in pieces[:2] if len(pieces) > 3 else ():   # no table starts with one row at a page foot
-        piece.keep_with_next = True
-    if len(pieces) > 3:                                    # nor ends with one row at a page top
-        pieces[-2].keep_with_next = True
-    return pieces
-
-
-def _cell(p: QPainter, rect: QRectF, flags, text: str, font: QFont, rich: bool) -> None:
-    """A table cell's text; the program's own labels (``rich``) with their notation
-    typeset (``typeset``: J_F, v_A2A3, a^k …), user text always as it is."""
-    marked = typeset(html.escape(text)) if rich else ""
-    if not rich or marked == html.escape(text):
-        p.drawText(rect, int(flags), text)
-        return
-    doc = QTextDocument()
-    doc.documentLayout().setPaintDevice(p.device())
-    doc.setDefaultFont(font)
-    doc.setDocumentMargin(0)
-    where = "center" if flags & Qt.AlignmentFlag.AlignHCenter else \
-        "right" if flags & Qt.AlignmentFlag.AlignRight else "left"
-    doc.setHtml(f'<div align="{where}" style="color:{INK.name()}">{marked}</div>')
-    doc.setTextWidth(rect.width())
-    p.save()
-    p.translate(rect.left(), rect.top() + (rect.height() - doc.size().height()) / 2)
-    doc.drawContents(p)
-    p.restore()
-
-
-def _lines(m: QFontMetricsF, text: str, width: float) -> int:
-    rect = m.boundingRect(QRectF(0, 0, max(width - 4, 1), 1e6), int(Qt.TextFlag.TextWordWrap), text)
-    return max(1, round(rect.height() / m.height()))
 
 
 def _figure(lay: Layout, block: Figure) -> list[Piece]:
@@ -255,7 +77,7 @@ def pieces_of(lay: Layout, report: Report) -> list[Piece]:
         elif isinstance(block, Paragraph):
             out += _paragraph(lay, block)
         elif isinstance(block, (Table, KeyValues)):
-            out += _table(lay, block)
+            out += table_pieces(lay, block)
         elif isinstance(block, Figure):
             out += _figure(lay, block)
     return out
@@ -372,10 +194,24 @@ def _title_block(p: QPainter, lay: Layout, report: Report, y: float, height: flo
             p.drawLine(QPointF(cx, cy), QPointF(cx, cy + row_h))
         p.setFont(lay.small)
         p.drawText(QRectF(cx + 2 * lay.mm, cy, label_w, row_h), int(Qt.AlignmentFlag.AlignVCenter), label)
-        p.setFont(lay.body)
         room = cw - label_w - 4 * lay.mm
-        text = lay.metrics(lay.body).elidedText(value, Qt.TextElideMode.ElideRight, room)
-        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, room, row_h), int(Qt.AlignmentFlag.AlignVCenter), text)
+        font, flags, text = _cover_value(lay, value, room, row_h)
+        p.setFont(font)
+        p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, room, row_h), flags, text)
+
+
+def _cover_value(lay: Layout, value: str, room: float, row_h: float) -> tuple[QFont, int, str]:
+    """A cover value in the body type, or (a long design name) in the small type on up
+    to two lines, elided only if even that is too long: the name is the report's, and
+    the footer can only show its start."""
+    middle = int(Qt.AlignmentFlag.AlignVCenter)
+    if lay.metrics(lay.body).horizontalAdvance(value) <= room:
+        return lay.body, middle, value
+    m = lay.metrics(lay.small)
+    wrap = middle | int(Qt.TextFlag.TextWordWrap)
+    if m.boundingRect(QRectF(0, 0, room, 1e6), wrap, value).height() <= min(2 * m.lineSpacing(), row_h) + 1:
+        return lay.small, wrap, value
+    return lay.small, middle, m.elidedText(value, Qt.TextElideMode.ElideRight, room)
 
 
 def _footer(p: QPainter, lay: Layout, report: Report, page: int, pages: int) -> None:
@@ -393,5 +229,7 @@ def _footer(p: QPainter, lay: Layout, report: Report, page: int, pages: int) -> 
     for i, (frac, text) in enumerate(zip(widths, texts)):
         if i:
             p.drawLine(QPointF(cx, y), QPointF(cx, y + h))
-        p.drawText(QRectF(cx + 2 * mm, y, frac * w - 4 * mm, h), int(Qt.AlignmentFlag.AlignVCenter), text)
+        room = frac * w - 4 * mm            # a long design name ends in "…", never cut mid-letter
+        text = lay.metrics(lay.small).elidedText(text, Qt.TextElideMode.ElideRight, room)
+        p.drawText(QRectF(cx + 2 * mm, y, room, h), int(Qt.AlignmentFlag.AlignVCenter), text)
         cx += frac * w

@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 from cli_runner import shaper
-from core.positions import display_values, number_text
+from core.positions import display_values
+from report_numbers import cli_values, column_text
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -25,18 +26,6 @@ def squash(text: str) -> str:
     return re.sub(r"\s+", " ", text)
 
 
-def cli_values(*command: str) -> list[str]:
-    """Every number-bearing value the CLI prints as 'label  value', split at ' / '."""
-    result = shaper(*command)
-    assert result.returncode == 0, result.stderr
-    values = []
-    for line in result.stdout.splitlines():
-        parts = re.split(r"\s{2,}", line.strip(), maxsplit=1)
-        if len(parts) == 2 and re.search(r"\d", parts[1]) and "% of the stroke" not in parts[1]:
-            values += [v.replace(" (trailing)", "") for v in parts[1].split(" / ")]
-    return values
-
-
 def table_values() -> list[str]:
     """A sample of the positions table as the report must print it."""
     result = shaper("table", *DESIGN, *SPEEDS, *LOADS, "--json")
@@ -44,9 +33,11 @@ def table_values() -> list[str]:
     columns = [k for k in records[0] if k not in ("position", "name")]
     data = np.array([[np.nan if r[c] is None else r[c] for c in columns] for r in records])
     shown = display_values(data)
+    k = len(records) // 2                         # rows per speed: each speed's own columns
     picks = [(3, "ram_v_m_s"), (3, "lever_omega_rad_s"), (16, "ram_v_m_s"), (16, "crank_torque_N_m"),
              (20, "O4_x_N"), (23, "coriolis_m_s2"), (14, "crank_deg"), (15, "pressure_angle_deg")]
-    return [number_text(shown[row, columns.index(col)]) for row, col in picks]
+    return [column_text(list(shown[row // k * k:(row // k + 1) * k, columns.index(col)]),
+                        shown[row, columns.index(col)]) for row, col in picks]
 
 
 @pytest.fixture(scope="module")

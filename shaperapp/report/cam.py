@@ -1,0 +1,85 @@
+"""The report's feed-cam section: the figures ``shaper cam`` prints, under translated
+labels and with their value texts translated (a Chinese report has no English), the
+cam at a stated round scale, and the follower's ψ, ω, α and the pressure angle against
+the cam angle as the Cam tab plots them (the cam sheet's curves)."""
+from __future__ import annotations
+
+import re
+
+from PySide6.QtCore import QCoreApplication
+
+from core.cam import CamInputs, design_cam
+from core.cam.table import cam_summary, follower_peaks
+from core.cli.cmd_cam import summary_rows as cam_rows
+from core.errors import DesignError
+from core.geometry import Design
+
+from . import figures
+from .blocks import Figure, Heading, KeyValues, Paragraph
+
+translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
+
+# The English words inside ``shaper cam``'s value texts, as patterns of their numbers.
+_VALUE_WORDS = (
+    (re.compile(r"\(allowed (\S+) ° / (\S+) °\)"), lambda: translate("Report", "(allowed %1 ° / %2 °)")),
+    (re.compile(r"\(largest (\S+) mm\)"), lambda: translate("Report", "(largest %1 mm)")),
+    (re.compile(r"\(cut ends at (\S+) °, (\S+) ° clear\)"),
+     lambda: translate("Report", "(cut ends at %1 °, %2 ° clear)")),
+    (re.compile(r"^EXCEEDED$"), lambda: translate("Report", "exceeded")),
+)
+
+
+def value_text(text: str) -> str:
+    """A ``shaper cam`` value with its words in the report's language, numbers unchanged."""
+    for pattern, template in _VALUE_WORDS:
+        def one(m: re.Match, template=template) -> str:
+            out = template()
+            for k, number in enumerate(m.groups(), 1):
+                out = out.replace(f"%{k}", number)
+            return out
+        text = pattern.sub(one, text)
+    return text
+
+
+def _labels(rpm: float) -> dict[str, str]:
+    return {
+        "base radius r0 (pitch curve)": translate("Report", "Base radius r0 of the pitch curve"),
+        "centre distance a": translate("Report", "Centre distance a"),
+        "arm l": translate("Report", "Follower arm l"),
+        "initial arm angle ψ0": translate("Report", "Initial arm angle ψ0"),
+        "max pressure angle rise / return": translate("Report", "Max pressure angle, rise / return"),
+        "min convex radius ρmin (pitch curve)": translate("Report", "Smallest convex radius ρmin of the pitch curve"),
+        "roller r": translate("Report", "Roller radius r"),
+        "profile base radius r0 − r": translate("Report", "Base radius of the profile r0 − r"),
+        f"follower max ω / α at {rpm:g} r/min":
+            translate("Report", "Follower's largest ω / α at %1 r/min").replace("%1", f"{rpm:g}"),
+        "allowance": translate("Report", "Pressure angle allowance"),
+        "rise starts at crank angle": translate("Report", "Rise starts at crank angle")}
+
+
+def cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle: float,
+               rpm: float, number: int, views: figures.ReportViews) -> list:
+    """The feed cam: its figures as ``shaper cam`` prints them, the cam to scale and the
+    follower's curves."""
+    blocks: list = [Heading(translate("Report", "%1 The feed cam").replace("%1", str(number)))]
+    inputs, phase = cam_inputs
+    try:
+        cam = design_cam(inputs, design, idle, phase)
+    except DesignError as exc:
+        blocks.append(Paragraph(translate("Report", "The feed cam cannot be made for this design: %1")
+                                .replace("%1", f"{exc.parameter}: {exc.allowed}")))
+        return blocks
+    summary = cam_summary(cam)
+    summary.update(follower_peaks(cam, rpm))
+    labels = _labels(rpm)
+    blocks.append(KeyValues([(labels[key], value_text(value)) for key, value in cam_rows(summary)
+                             if key in labels]))
+    blocks.append(Figure(translate("Report", "The feed cam at the start of the rise, with its "
+                                   "follower and roller (the cam turns clockwise)"), 170.0, 100.0,
+                         figures.cam_paint(cam)))
+    blocks.append(Figure(translate("Report", "The follower's angle ψ, angular velocity ω and "
+                                   "acceleration α (one curve per crank speed, in the colours of the "
+                                   "ram's curves in section 4) and the pressure angle against the cam "
+                                   "angle δ; dashed: the allowed pressure angles"),
+                         170.0, 113.0, views.cam_curves(inputs, phase)))
+    return blocks
