@@ -343,4 +343,4 @@ ACTION_EXAMPLES = {
 ACTION_RUN = {"add": _run_add, "list": lambda args: run_list(args, _open), "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
               "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh,
-              "check": lambda args: run_check(args, _open(args, create=False))}
+              "check": lambda args: run_check(args, lambda: _open(args, create=False))}

@@ -29,6 +29,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from . import store as library_store
+from .schema import describe, expected_objects, schema_objects, strange_objects
 from .store import (APPLICATION_ID, BUSY_TIMEOUT_S, SQLITE_HEADER, LibraryError, check_regular,
                             migrate, schema_version, sqlite_error, sqlite_uri)
 
@@ -125,6 +126,18 @@ def unwritable(path: Path) -> str | None:
 
 
 def _open(path: Path, read_only: str | None) -> sqlite3.Connection:
+    """A connection that runs nothing the file's schema asks for beyond plain SQL
+    (``trusted_schema = OFF``, as SQLite advises for files from elsewhere)."""
+    conn = _connection(path, read_only)
+    try:
+        conn.execute("PRAGMA trusted_schema = OFF")
+    except sqlite3.Error as exc:
+        conn.close()
+        raise LibraryError("io", f"cannot open the library {path}: {exc}", path) from None
+    return conn
+
+
+def _connection(path: Path, read_only: str | None) -> sqlite3.Connection:
     """A connection; read-only ones by URI (``mode=ro``, else ``immutable=1`` where SQLite
     cannot make its shared-memory file in a read-only folder)."""
     try:
@@ -161,7 +174,9 @@ def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
         version = conn.execute("PRAGMA user_version").fetchone()[0]
         tables = conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]
         check = [row[0] for row in conn.execute("PRAGMA quick_check(3)")]
-        columns = _columns(conn) if app_id == APPLICATION_ID and 0 < version <= schema_version() else {}
+        ours = app_id == APPLICATION_ID and 0 < version <= schema_version()
+        columns = _columns(conn) if ours else {}
+        objects = schema_objects(conn) if ours else {}
     except sqlite3.DatabaseError as exc:
         text = str(exc)
         if "locked" in text or "busy" in text:
@@ -187,6 +202,11 @@ def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
     if problem:
         raise LibraryError("damaged", f"{path} is damaged (it says schema version {version}, but "
                            f"{problem}); {_UNCHANGED}", path)
+    strange = strange_objects(objects, expected_objects(tuple(library_store.MIGRATIONS[:version])))
+    if strange:
+        raise LibraryError("foreign", f"{path} holds {describe(strange)} that Shaper Designer never makes "
+                           f"(another program changed it, and SQLite would run what it does); "
+                           f"{_UNCHANGED}", path, objects=tuple(strange))
     return version
 
 

@@ -38,10 +38,12 @@ class LibraryError(Exception):
     not the disk), ``readonly`` (a write to a library opened read-only) or ``entry``
     (one entry's stored values are unusable; the rest of the library is fine)."""
 
-    def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None) -> None:
+    def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None,
+                 objects: tuple[str, ...] = ()) -> None:
         super().__init__(message)
         self.kind = kind
         self.path = None if path is None else Path(path)
+        self.objects = objects      # a refused file's schema objects that are not ours, described
 
     @property
     def refused_file(self) -> bool:
