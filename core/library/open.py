@@ -30,8 +30,8 @@ from pathlib import Path
 
 from . import store as library_store
 from .schema import describe, expected_objects, schema_objects, strange_objects
-from .store import (APPLICATION_ID, BUSY_TIMEOUT_S, SQLITE_HEADER, LibraryError, check_regular,
-                            migrate, schema_version, sqlite_error, sqlite_uri)
+from .store import (APPLICATION_ID, BUSY_TIMEOUT_S, SQLITE_HEADER, LibraryError, check_regular, is_damage,
+                    migrate, schema_version, sqlite_code, sqlite_error, sqlite_uri)
 
 _UNCHANGED = "it was left unchanged"
 
@@ -178,10 +178,9 @@ def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
         columns = _columns(conn) if ours else {}
         objects = schema_objects(conn) if ours else {}
     except sqlite3.DatabaseError as exc:
-        text = str(exc)
-        if "locked" in text or "busy" in text:
+        if not _about_the_file(exc):        # a full disk, a lock, memory: the file is as it was
             raise sqlite_error(exc, path) from None
-        raise LibraryError("damaged", f"{path} is damaged ({text}); {_UNCHANGED}", path) from None
+        raise LibraryError("damaged", f"{path} is damaged ({exc}); {_UNCHANGED}", path) from None
     if check != ["ok"]:
         detail = " ".join("; ".join(check).replace("*** in database main ***", "").split())
         raise LibraryError("damaged", f"{path} is damaged (SQLite's check: {detail[:200]}); "
@@ -208,6 +207,22 @@ def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
                            f"(another program changed it, and SQLite would run what it does); "
                            f"{_UNCHANGED}", path, objects=tuple(strange))
     return version
+
+
+def _about_the_file(exc: sqlite3.Error) -> bool:
+    """Whether a failure to read the schema says something about the file (damaged, or
+    not a schema SQLite can read) rather than about the disk, a lock or the memory."""
+    if is_damage(exc):
+        return True
+    code = sqlite_code(exc)
+    if code is None:
+        return not any(word in str(exc) for word in ("locked", "busy", "disk", "memory", "unable to open"))
+    return code not in _NOT_THE_FILE
+
+
+# SQLite's result codes for what is not the file's fault: BUSY, LOCKED, NOMEM, READONLY,
+# IOERR, FULL, CANTOPEN, PERM (the file is left as it was and may be fine)
+_NOT_THE_FILE = frozenset({5, 6, 7, 8, 10, 13, 14, 3})
 
 
 def _columns(conn: sqlite3.Connection) -> dict[str, tuple[str, ...]]:

@@ -11,6 +11,7 @@ library. ``synchronous=FULL`` makes each commit durable before it returns.
 """
 from __future__ import annotations
 
+import errno
 import os
 import shutil
 import sqlite3
@@ -22,6 +23,7 @@ from typing import Callable, Iterator
 from urllib.parse import quote
 
 from core.atomic import fit_name
+from core.errors import os_reason
 
 APP_NAME = "shaper-designer"
 FILE_NAME = "library.sqlite"
@@ -212,14 +214,52 @@ def transaction(conn: sqlite3.Connection, path: str | os.PathLike) -> Iterator[s
         raise sqlite_error(exc, Path(path)) from None
 
 
-def sqlite_error(exc: sqlite3.Error, path: Path) -> LibraryError:
+# SQLite's primary result codes (an extended code's low byte is its primary code)
+_BUSY, _LOCKED, _READONLY, _IOERR, _CORRUPT, _FULL, _NOTADB = 5, 6, 8, 10, 11, 13, 26
+_ROOM_BYTES = 1 << 20       # a file system with less free than this counts as full
+
+
+def sqlite_code(exc: sqlite3.Error) -> int | None:
+    """SQLite's primary result code of ``exc`` (None when it carries none)."""
+    code = getattr(exc, "sqlite_errorcode", None)
+    return code & 0xFF if isinstance(code, int) else None
+
+
+def is_damage(exc: sqlite3.Error) -> bool:
+    """Whether ``exc`` says the file itself is damaged (SQLITE_CORRUPT, SQLITE_NOTADB), not
+    that the disk, the lock or the memory failed, which leave the file as it was."""
+    code = sqlite_code(exc)
+    if code is not None:
+        return code in (_CORRUPT, _NOTADB)
     text = str(exc)
-    if "locked" in text or "busy" in text:
+    return "malformed" in text or "not a database" in text
+
+
+def disk_full(path: str | os.PathLike) -> bool:
+    """Whether the file system holding ``path`` has (next to) no room left: what a disk
+    I/O error of SQLite (it cannot make its shared-memory file, or grow one) then means."""
+    folder = Path(path).parent if not Path(path).is_dir() else Path(path)
+    try:
+        fs = os.statvfs(folder if str(folder) else ".")
+    except (OSError, AttributeError):
+        return False
+    return fs.f_bavail * fs.f_frsize < _ROOM_BYTES or (fs.f_files > 0 and fs.f_favail == 0)
+
+
+def sqlite_error(exc: sqlite3.Error, path: Path) -> LibraryError:
+    """``exc`` as one plain LibraryError, told apart by SQLite's result code: a busy
+    library, a full disk, a damaged file, a read-only one or another failure (io)."""
+    text = str(exc)
+    code = sqlite_code(exc)
+    if code in (_BUSY, _LOCKED) or (code is None and ("locked" in text or "busy" in text)):
         return LibraryError("busy", f"the library {path} is busy (another program is writing "
                             f"to it for more than {BUSY_TIMEOUT_S:g} s); try again", path)
-    if isinstance(exc, sqlite3.DatabaseError) and ("malformed" in text or "not a database" in text):
+    if code == _FULL or (code == _IOERR and disk_full(path)):
+        return LibraryError("io", f"cannot use the library {path}: {os_reason(OSError(errno.ENOSPC, ''))}; "
+                            "nothing was changed", path)
+    if isinstance(exc, sqlite3.DatabaseError) and is_damage(exc):
         return LibraryError("damaged", f"{path} is damaged ({text}); it was left unchanged", path)
-    if "readonly" in text or "read-only" in text:
+    if code == _READONLY or "readonly" in text or "read-only" in text:
         return LibraryError("readonly", f"the library {path} can only be read ({text}); "
                             "nothing was changed", path)
     return LibraryError("io", f"cannot use the library {path}: {text}", path)
