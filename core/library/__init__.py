@@ -24,13 +24,14 @@ from core.errors import DesignError, FileFormatError
 from core.figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
 from core.io import atomic_write
 
+from .backup import snapshot_to
 from .entry import Entry, check_document, document_text
 from .names import check_name, check_tags, unique_name
 from .open import connect
 from .query import Condition, condition_sql, parse_filter, search_sql, sort_sql
 from .rows import clean_row, damaged_entries, read_lenient, unfit_sql
 from .store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
-                            snapshot, sqlite_error, transaction, utc_now)
+                            sqlite_error, transaction, utc_now)
 
 _ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS \
     + ("figures_version",)
@@ -292,10 +293,11 @@ class Library:
         atomic_write(path, entry.text + "\n")
 
     def backup(self, target: str | os.PathLike | None = None) -> Path:
-        """A consistent copy of the whole library (SQLite's online backup), written atomically;
-        by default beside the library as ``NAME.backup-TIME``."""
+        """A consistent copy of the whole library (SQLite's online backup), written by the
+        project's safe writer (see :mod:`core.library.backup`); by default beside the library
+        as ``NAME.backup-TIME``."""
         target = backup_target(self.path) if target is None else target
-        return snapshot(self._conn, target, self.path)
+        return snapshot_to(self._conn, target, self.path)
 
     def damaged(self) -> list[tuple[str, str]]:
         """(entry, why) for each entry that cannot be shown or opened, and SQLite's own

@@ -3,7 +3,7 @@
 A library is one SQLite file in WAL mode. Whether an existing file may be
 opened (and written) is decided before anything touches it, in
 :mod:`core.library.open`; a refused file is left exactly as it was, and
-:func:`backup_copy` copies it aside byte for byte.
+:func:`core.library.backup.backup_copy` copies it aside byte for byte.
 
 Every write is one ``BEGIN IMMEDIATE`` transaction, and a second process
 waits up to ``BUSY_TIMEOUT_S`` for the lock, so two programs can share one
@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import errno
 import os
-import shutil
 import sqlite3
 import stat
 from contextlib import contextmanager
@@ -151,7 +150,7 @@ def check_regular(path: Path) -> None:
     except OSError as exc:
         raise LibraryError("io", f"cannot read the library {path}: {exc.strerror or exc}", path) from None
     if not stat.S_ISREG(mode):
-        kind = ("a pipe" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode)
+        kind = ("a folder" if stat.S_ISDIR(mode) else "a pipe" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode)
                 else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
         raise LibraryError("location", f"{path} is {kind}, not a library file; it was left unchanged", path)
 
@@ -278,27 +277,6 @@ def utc_now() -> str:
     return now.strftime("%Y-%m-%dT%H:%M:%S.") + f"{now.microsecond // 1000:03d}Z"
 
 
-def backup_copy(path: str | os.PathLike, target: str | os.PathLike | None = None,
-                label: str = "backup") -> Path:
-    """Copy the library file (and its ``-wal`` file, if any) byte for byte, never touching it.
-
-    The copy goes to ``target`` or beside the file as ``NAME.LABEL-YYYYMMDDTHHMMSSZ``; the
-    copy of the ``-wal`` file gets SQLite's own suffix, so the copy opens as it was.
-    """
-    source = Path(path)
-    if source.exists() and not source.is_dir():
-        check_regular(source)          # never read a pipe (it would block) or a device
-    target = backup_target(source, label) if target is None else Path(target)
-    try:
-        for src, dst in ((source, target), (Path(f"{source}-wal"), Path(f"{target}-wal"))):
-            if src.exists():
-                _copy_atomic(src, dst)
-    except OSError as exc:
-        raise LibraryError("io", f"cannot copy {source} to {target}: {exc.strerror or exc}",
-                           source) from None
-    return target
-
-
 def snapshot(conn: sqlite3.Connection, target: str | os.PathLike, path: str | os.PathLike) -> Path:
     """A consistent copy of the open library (SQLite's online backup), written atomically."""
     target = Path(target)
@@ -331,15 +309,3 @@ def backup_target(path: str | os.PathLike, label: str = "backup") -> Path:
         target = source.with_name(f"{base}.{label}-{stamp}-{n}")
         n += 1
     return target
-
-
-def _copy_atomic(source: Path, target: Path) -> None:
-    """Copy through a temporary file beside ``target``, synced, then renamed into place."""
-    tmp = target.with_name(f".{fit_name(target.name, 5)}.tmp")
-    try:
-        shutil.copyfile(source, tmp)
-        with open(tmp, "rb+") as handle:
-            os.fsync(handle.fileno())
-        os.replace(tmp, target)
-    finally:
-        tmp.unlink(missing_ok=True)

@@ -22,7 +22,8 @@ from core.figures import figures
 from core.library import Entry, Library
 from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import check_name, unique_name
-from core.library.store import LibraryError, backup_copy, utc_now
+from core.library.backup import backup_copy
+from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.messages import describe
