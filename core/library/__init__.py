@@ -26,7 +26,7 @@ from core.io import atomic_write
 
 from .backup import snapshot_to
 from .entry import Entry, check_document, document_text
-from .names import check_name, check_tags, unique_name
+from .names import check_name, check_tags, lookup_name, unique_name
 from .open import connect
 from .query import Condition, condition_sql, parse_filter, search_sql, sort_sql
 from .rows import clean_row, damaged_entries, read_lenient, unfit_sql
@@ -109,12 +109,15 @@ class Library:
         return self._read(lambda c: c.execute("SELECT count(*) FROM entries").fetchone()[0])
 
     def __contains__(self, name: str) -> bool:
-        return self._read(lambda c: c.execute("SELECT 1 FROM entries WHERE name = ?", (name,))
+        return self._read(lambda c: c.execute("SELECT 1 FROM entries WHERE name = ?", (lookup_name(name),))
                           .fetchone() is not None)
 
     def get(self, name: str) -> Entry:
         """The entry called ``name``; LibraryError('missing') if there is none, ('entry') if a
-        stored value of it is unusable (see :mod:`core.library.rows`)."""
+        stored value of it is unusable (see :mod:`core.library.rows`). ``name`` is looked up as
+        it is stored (:func:`~core.library.names.lookup_name`)."""
+        name = lookup_name(name)
+
         def work(c: sqlite3.Connection) -> Entry:
             row = c.execute(f"SELECT e.id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
                             "LEFT JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
@@ -235,7 +238,7 @@ class Library:
         """
         with self._transaction() as c:
             for name in remove:
-                if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+                if c.execute("DELETE FROM entries WHERE name = ?", (lookup_name(name),)).rowcount == 0:
                     raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                        self.path)
             for entry in add:
@@ -251,13 +254,13 @@ class Library:
         """Delete ``name``; returns the entry so it can be restored."""
         entry = self.get(name)
         with self._transaction() as c:
-            if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+            if c.execute("DELETE FROM entries WHERE name = ?", (entry.name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
         return entry
 
     def rename(self, old: str, new: str) -> None:
-        new = check_name(new)
+        old, new = lookup_name(old), check_name(new)
         with self._transaction() as c:
             if new != old and c.execute("SELECT 1 FROM entries WHERE name = ?", (new,)).fetchone():
                 raise self._exists(new)
@@ -281,7 +284,7 @@ class Library:
                            "notes": entry.notes if notes is None else str(notes),
                            "tags": entry.tags if tags is None else check_tags(tags)})
         with self._transaction() as c:
-            if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+            if c.execute("DELETE FROM entries WHERE name = ?", (entry.name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
             self._insert(c, changed)
