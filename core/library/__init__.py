@@ -43,7 +43,15 @@ _LIST_NULLABLE = frozenset(_SPEED_COLUMNS)      # a design without the speed ask
 _LIST_KEYS = ("id",) + _ENTRY_COLUMNS + _SPEED_COLUMNS
 _LIST_EXPRESSIONS = [f"e.{c}" for c in _LIST_KEYS[:-len(_SPEED_COLUMNS)]] + [f"s.{c}" for c in _SPEED_COLUMNS]
 # a flag (SQLite checks every value's type in C), the id, the columns
-_LIST_SELECT = ", ".join([unfit_sql(zip(_LIST_EXPRESSIONS, _LIST_KEYS), _LIST_NULLABLE)] + _LIST_EXPRESSIONS)
+
+
+def _list_select(notes_chars: int | None) -> str:
+    """The list's columns; the notes cut to their first ``notes_chars`` characters by
+    SQLite when given, so a list never carries a note's whole text (50 MB of notes
+    took a pane 2 GB to show)."""
+    expressions = [f"substr(e.notes, 1, {int(notes_chars)})" if e == "e.notes" and notes_chars is not None
+                   else e for e in _LIST_EXPRESSIONS]
+    return ", ".join([unfit_sql(zip(expressions, _LIST_KEYS), _LIST_NULLABLE)] + expressions)
 
 
 def _cleaned(row: tuple) -> tuple:
@@ -153,14 +161,15 @@ class Library:
 
     def query_rows(self, where: str | Sequence[Condition] = "", search: str = "", sort: str = "name",
                    descending: bool = False, rpm: float | None = None, limit: int | None = None,
-                   offset: int = 0) -> tuple[tuple[str, ...], list[tuple]]:
+                   offset: int = 0, notes_chars: int | None = None) -> tuple[tuple[str, ...], list[tuple]]:
         """Entries matching the filter (see :mod:`core.library.query`): column keys and rows.
 
         Per-speed figures are those at ``rpm`` (None where the design lacks that speed),
         or at each design's first speed when ``rpm`` is None. ``tags`` is comma-joined.
         A row whose stored values cannot all be read has those as None and says why in
         ``damaged``. ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
-        top rows while sorting, which is what makes a page fast).
+        top rows while sorting, which is what makes a page fast). ``notes_chars`` gives only
+        the first that many characters of each note (a list to show; :meth:`get` has them all).
         """
         conditions = parse_filter(where) if isinstance(where, str) else list(where)
         clauses, params = [], []
@@ -180,7 +189,7 @@ class Library:
         where_sql = ("WHERE " + " AND ".join(clauses)) if clauses else ""
         limit_sql = (f"LIMIT {min(int(limit), _MAX_ROWS)} OFFSET {min(max(int(offset), 0), _MAX_ROWS)}"
                      if limit is not None else "")
-        sql = f"SELECT {_LIST_SELECT} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
+        sql = f"SELECT {_list_select(notes_chars)} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
 
         def work(c: sqlite3.Connection) -> list[tuple]:
             rows = c.execute(sql, params).fetchall()
