@@ -25,7 +25,6 @@ import os
 import sqlite3
 import stat
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
 from . import store as library_store
@@ -232,16 +231,11 @@ def _columns(conn: sqlite3.Connection) -> dict[str, tuple[str, ...]]:
             for name in names if isinstance(name, str)}
 
 
-@lru_cache(maxsize=8)
 def expected_columns(steps: tuple) -> dict[str, tuple[str, ...]]:
-    """The tables and columns the migration ``steps`` make (those up to a schema version)."""
-    conn = sqlite3.connect(":memory:")
-    try:
-        for step in steps:
-            step(conn)
-        return _columns(conn)
-    finally:
-        conn.close()
+    """The tables and columns the migration ``steps`` make (those up to a schema version),
+    read from the objects they make (:func:`~core.library.schema.expected_objects`)."""
+    return {name: tuple(sorted(str(column[0]) for column in meaning[1]))
+            for (kind, name), meaning in expected_objects(steps).items() if kind == "table"}
 
 
 def _schema_problem(actual: dict[str, tuple[str, ...]], expected: dict[str, tuple[str, ...]]) -> str:
