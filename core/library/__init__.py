@@ -25,7 +25,7 @@ from core.figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES,
 from core.io import atomic_write
 
 from .backup import snapshot_to
-from .entry import Entry, check_document, document_text
+from .entry import Entry, check_document, distinct_speeds, document_text
 from .names import check_name, check_tags, lookup_name, unique_name
 from .open import connect
 from .query import Condition, condition_sql, parse_filter, search_sql, sort_sql
@@ -397,13 +397,4 @@ class Library:
         c.executemany(f"INSERT INTO speeds (entry_id, pos, {', '.join(_SPEED_COLUMNS)}) VALUES "
                       f"(?, ?, {', '.join('?' * len(_SPEED_COLUMNS))})",
                       [(entry_id, pos, *(getattr(s, k) for k in _SPEED_COLUMNS))
-                       for pos, s in enumerate(_distinct_speeds(speeds))])
-
-
-def _distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:
-    """The speeds without repeats (a document may list one speed twice), first one kept."""
-    out: list[SpeedFigures] = []
-    for s in speeds:
-        if not any(abs(s.rpm - t.rpm) <= 1e-9 for t in out):
-            out.append(s)
-    return out
+                       for pos, s in enumerate(distinct_speeds(speeds))])
