@@ -28,7 +28,8 @@ _INDEX = [LIST_COLUMNS.index(key) for key in COLUMNS]
 _DAMAGED = LIST_COLUMNS.index("damaged")
 _TEXT = {"name", "variant", "tags", "notes", "modified"}
 PAGE = 256
-NOTES_SHOWN = 500       # characters of a note the list shows (and its tooltip); the rest stays in the file
+NOTES_SHOWN = 500       # characters of a note the list gets (its tooltip shows them); the rest stays in the file
+NOTES_CELL = 120        # characters of a note's first line its cell shows (the column fits its contents)
 
 Index = QModelIndex | QPersistentModelIndex
 
@@ -187,7 +188,7 @@ def _shown_note(text: str) -> str:
 
 
 def _first_line(text: str) -> str:
-    """The first line of a note as shown in its cell (… where the list cut it)."""
+    """The first line of a note as shown in its cell, cut at ``NOTES_CELL`` characters (…)."""
     lines = text[:NOTES_SHOWN].splitlines()
     first = lines[0] if lines else ""
-    return first + "…" if len(first) == NOTES_SHOWN and len(text) > NOTES_SHOWN else first
+    return first[:NOTES_CELL] + "…" if len(first) > NOTES_CELL else first
