@@ -29,7 +29,7 @@ def run_check(args: argparse.Namespace, open_library: Callable[[], Library]) -> 
             raise
         return _report([("file", f"{what} is not part of a Shaper Designer library")
                         for what in exc.objects], args.json,
-                       f"{exc.path} cannot be used: {exc}")
+                       str(exc))
     with lib:
         found = lib.damaged()
         total = lib.count()
