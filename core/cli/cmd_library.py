@@ -302,7 +302,9 @@ def _run_backup(args: argparse.Namespace) -> int:
         if args.output is None or exc.kind != "io":
             raise
         raise OutputError(f"--output: {exc}") from None
-    print(f"copied {path} to {target}")
+    # a copy written to standard output, a pipe or a device must not get this line mixed in
+    special = os.path.abspath(target).startswith(("/dev/", "/proc/")) or not os.path.isfile(target)
+    print(f"copied {path} to {target}", file=sys.stderr if special else sys.stdout)
     return 0
 
 

@@ -167,3 +167,22 @@ def test_a_failed_snapshot_leaves_no_temporary_folder(tmp_path):
         lib.backup(target)
     assert caught.value.kind == "io"
     assert os.listdir(out) == ["copy.sqlite"] and os.listdir(target) == []
+
+
+def test_a_copy_to_standard_output_is_only_the_copy(tmp_path):
+    """``-o /dev/stdout`` writes the library's bytes and nothing else there (the line
+    saying what was copied goes to stderr), so ``> copy.sqlite`` is a whole library."""
+    import subprocess
+    import sys
+    library = tmp_path / "L.sqlite"
+    make_library(library)
+    copy = tmp_path / "copy.sqlite"
+    with open(copy, "wb") as out:
+        done = subprocess.run([sys.executable, "-m", "core", "library", "backup", "--library", str(library),
+                               "-o", "/dev/stdout"], stdout=out, stderr=subprocess.PIPE, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "copied" in done.stderr
+    data = copy.read_bytes()
+    page = int.from_bytes(data[16:18], "big")
+    assert data.startswith(SQLITE_HEADER) and len(data) % page == 0
+    assert names_in(copy) == ["a", "b"]
