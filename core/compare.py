@@ -20,15 +20,16 @@ import io as _io
 import json
 import math
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, Iterator, Sequence
 
 import numpy as np
 
 from .dynamics import MassProperties, masses_for_design, solve_dynamics
 from .errors import DesignError
-from .io import csv_text, snap_zeros
+from .io import csv_text, snap_zeros, zero_scale
 from .figures import DESIGN_FIGURES, SPEED_FIGURES, TEXT_FIGURES, Figures, figures
-from .kinematics import crank_angles, solve
+from .kinematics import angle_count, crank_angles, solve
+from .numtext import g10_rows
 from .spec import Spec
 
 MIN_DESIGNS, MAX_DESIGNS = 2, 6
@@ -69,31 +70,46 @@ class Comparison:
     rows: tuple[Row, ...]
 
 
-def compare(candidates: Sequence[Candidate], rpm: float, step_deg: float = 1.0) -> Comparison:
-    """Curves and figure table of 2 to 6 designs at ``rpm``; DesignError for bad input."""
+CURVE_CHUNK = 1 << 14      # crank angles solved at a time for the curves
+
+
+def compare(candidates: Sequence[Candidate], rpm: float, step_deg: float = 1.0,
+            curves: bool = True) -> Comparison:
+    """Curves and figure table of 2 to 6 designs at ``rpm``; DesignError for bad input.
+
+    Without ``curves`` (a table only: the figures do not depend on the step) the curve
+    arrays are empty, and the step is only checked. The curves are solved
+    ``CURVE_CHUNK`` angles at a time into arrays made once, so the memory is the
+    curves themselves (4 values a design an angle), not every intermediate of the
+    mechanism at the finest step (1.5 GB for two designs at 0.0002°).
+    """
     if not MIN_DESIGNS <= len(candidates) <= MAX_DESIGNS:
         raise DesignError("designs", len(candidates), f"compare {MIN_DESIGNS} to {MAX_DESIGNS} designs")
     labels = [c.label for c in candidates]
     for label in labels:
         if labels.count(label) > 1:
             raise DesignError("designs", label, "each design may appear only once")
-    phi = crank_angles(step_deg)
-    xs, vs, accs, torques, figs = [], [], [], [], []
-    for c in candidates:
+    phi = crank_angles(step_deg) if curves else np.zeros(angle_count(step_deg))[:0]
+    shape = (len(candidates), phi.size)
+    xs, vs, accs = np.empty(shape), np.empty(shape), np.empty(shape)
+    torques: list[np.ndarray | None] = []
+    figs = []
+    for k, c in enumerate(candidates):
         design = c.spec.design()
-        motion = solve(design, phi, [rpm])
-        xs.append(motion.ram_x)
-        vs.append(motion.ram_v[0])
-        accs.append(motion.ram_a[0])
-        if c.masses is not None:
-            dyn = solve_dynamics(design, phi, [rpm], masses_for_design(design, c.masses))
-            torques.append(dyn.crank_torque[0])
-        else:
-            torques.append(None)
+        masses = masses_for_design(design, c.masses) if c.masses is not None else None
+        torque = np.empty(phi.size) if masses is not None else None
+        for start in range(0, phi.size, CURVE_CHUNK):
+            part = slice(start, start + CURVE_CHUNK)
+            # each chunk starts with φ = 0, so the ram's zero is taken as for the whole cycle
+            angles = np.concatenate(([0.0], phi[part]))
+            motion = solve(design, angles, [rpm])
+            xs[k, part], vs[k, part], accs[k, part] = motion.ram_x[1:], motion.ram_v[0, 1:], motion.ram_a[0, 1:]
+            if torque is not None:
+                torque[part] = solve_dynamics(design, angles, [rpm], masses).crank_torque[0, 1:]
+        torques.append(torque)
         figs.append(figures(c.spec, [rpm], c.masses))
-    return Comparison(labels=tuple(c.label for c in candidates), rpm=float(rpm),
-                      crank_deg=np.degrees(phi), ram_x_mm=np.array(xs), ram_v_m_s=np.array(vs),
-                      ram_a_m_s2=np.array(accs), crank_torque_N_m=tuple(torques),
+    return Comparison(labels=tuple(labels), rpm=float(rpm), crank_deg=np.degrees(phi), ram_x_mm=xs,
+                      ram_v_m_s=vs, ram_a_m_s2=accs, crank_torque_N_m=tuple(torques),
                       figures=tuple(figs), rows=table_rows(figs))
 
 
@@ -175,20 +191,38 @@ def table_csv(comparison: Comparison) -> str:
 def curves_csv(comparison: Comparison) -> str:
     """The overlay curves in long form, one row per (design, crank angle); round-off
     zeros as 0 (:func:`core.io.snap_zeros`, over all designs of a column)."""
-    out = _io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(CURVE_COLUMNS)
-    torques = [np.full(comparison.crank_deg.shape, np.nan) if t is None else t
-               for t in comparison.crank_torque_N_m]
-    columns = [snap_zeros(np.reshape(a, (-1, 1))).reshape(np.shape(a)) for a in
-               (comparison.ram_x_mm, comparison.ram_v_m_s, comparison.ram_a_m_s2, torques)]
+    return "".join(curves_csv_chunks(comparison))
+
+
+def curves_csv_chunks(comparison: Comparison, rows: int = 20_000) -> Iterator[str]:
+    """:func:`curves_csv` in pieces of at most ``rows`` rows, so a fine step is written
+    without its whole text (650 MB for six designs at 0.0002°) in memory at once."""
+    yield ",".join(CURVE_COLUMNS) + "\n"
+    nan = np.full(comparison.crank_deg.shape, np.nan)
+    torques = [nan if t is None else t for t in comparison.crank_torque_N_m]
+    scale = np.array([0.0, *(_column_scale(a) for a in (comparison.ram_x_mm, comparison.ram_v_m_s,
+                                                         comparison.ram_a_m_s2, torques))])
     for k, label in enumerate(comparison.labels):
-        torque = comparison.crank_torque_N_m[k]
-        x, v, a, t = (c[k] for c in columns)
-        for j, deg in enumerate(comparison.crank_deg):
-            writer.writerow([csv_text(label), _number(deg), _number(x[j]), _number(v[j]),
-                             _number(a[j]), "" if torque is None else _number(t[j])])
-    return out.getvalue()
+        cell = _csv_cell(csv_text(label)) + ","
+        for start in range(0, comparison.crank_deg.size, rows):
+            part = slice(start, start + rows)
+            block = np.column_stack([comparison.crank_deg[part], comparison.ram_x_mm[k, part],
+                                     comparison.ram_v_m_s[k, part], comparison.ram_a_m_s2[k, part],
+                                     torques[k][part]])
+            text = g10_rows(snap_zeros(block, scale))
+            yield cell + text[:-1].replace("\n", "\n" + cell) + "\n"
+
+
+def _column_scale(curves: Sequence[np.ndarray]) -> float:
+    """:func:`core.io.zero_scale` of one column over all designs' curves (one at a time)."""
+    return max((float(zero_scale(np.reshape(c, (-1, 1)))[0]) for c in curves), default=0.0)
+
+
+def _csv_cell(text: str) -> str:
+    """``text`` as one CSV cell, quoted as :mod:`csv` quotes it (a comma, a quote, a newline)."""
+    out = _io.StringIO()
+    csv.writer(out, lineterminator="\n").writerow([text])
+    return out.getvalue()[:-1]
 
 
 def comparison_document(comparison: Comparison, curves: bool = False) -> dict[str, Any]:

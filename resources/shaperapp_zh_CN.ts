@@ -1804,6 +1804,10 @@
         <translation>%1 不是 Shaper Designer 设计库。文件未作任何改动。</translation>
     </message>
     <message>
+        <source>The library %1 holds what another program added (%2), which Shaper Designer never makes and will not run. It was left unchanged.</source>
+        <translation>设计库 %1 含有其他程序加入的对象（%2），Shaper Designer 从不创建也不会执行它们。文件未作任何改动。</translation>
+    </message>
+    <message>
         <source>This design is damaged and cannot be opened; the rest of the library can be used. (%1)</source>
         <translation>此设计已损坏，无法打开；设计库中的其他设计仍可使用。（%1）</translation>
     </message>

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import stat
 import sys
 from pathlib import Path
 from typing import Any
@@ -18,10 +19,11 @@ from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import storable
 from core.library.open import library_exists
 from core.library.query import QueryError
-from core.library.store import ENV_VAR, LibraryError, backup_copy
+from core.library.backup import backup_copy
+from core.library.store import ENV_VAR, LibraryError
 
 from ..compare import value_text
-from ..errors import FileFormatError
+from ..errors import FileFormatError, os_reason
 from ..figures import DESIGN_FIGURES, SPEED_FIGURES
 from ..kinematics import check_rpms, crank_angles
 from ..library import Entry, Library
@@ -283,18 +285,13 @@ def _run_backup(args: argparse.Namespace) -> int:
     if not library_exists(path):
         raise LibraryError("missing", f"there is no design library at {path}", path)
     if args.output is not None:
-        out = Path(args.output)
-        if not args.output.strip() or out.is_dir():
-            raise UsageError(f"--output: {args.output!r} is not a file name" if not args.output.strip()
-                             else f"--output: {out} is a folder; name the copy's file")
-        if not (out.parent if str(out.parent) else Path(".")).is_dir():
-            raise UsageError(f"--output: cannot write {out}: the folder {out.parent} does not exist")
+        _check_backup_output(args.output)
     try:
         lib: Library | None = Library(path, create=False)
     except LibraryError as exc:
-        if not exc.refused_file:
+        if not (exc.refused_file or exc.kind == "io"):
             raise
-        lib = None                                   # a refused file: copied byte for byte
+        lib = None                      # a file that cannot be opened: copied byte for byte
     try:
         if lib is None:
             target = backup_copy(path, args.output)
@@ -302,11 +299,30 @@ def _run_backup(args: argparse.Namespace) -> int:
             with lib:
                 target = lib.backup(args.output)
     except LibraryError as exc:                      # writing the copy failed
-        if args.output is None:
+        if args.output is None or exc.kind != "io":
             raise
         raise OutputError(f"--output: {exc}") from None
-    print(f"copied {path} to {target}")
+    # a copy written to standard output, a pipe or a device must not get this line mixed in
+    special = os.path.abspath(target).startswith(("/dev/", "/proc/")) or not os.path.isfile(target)
+    print(f"copied {path} to {target}", file=sys.stderr if special else sys.stdout)
     return 0
+
+
+def _check_backup_output(text: str) -> None:
+    """Refuse, naming ``--output``, a copy's path that cannot name a file: empty, a folder,
+    in a missing folder, too long, a link loop (a pipe or a link is fine: written through)."""
+    if not text.strip():
+        raise UsageError(f"--output: {text!r} is not a file name")
+    out = Path(text)
+    folder = out.parent if str(out.parent) else Path(".")
+    try:
+        if stat.S_ISDIR(os.stat(out).st_mode):
+            raise UsageError(f"--output: {out} is a folder; name the copy's file")
+    except FileNotFoundError:
+        if not folder.is_dir():
+            raise UsageError(f"--output: cannot write {out}: the folder {folder} does not exist") from None
+    except OSError as exc:
+        raise UsageError(f"--output: cannot write {out}: {os_reason(exc)}") from None
 
 
 def _run_refresh(args: argparse.Namespace) -> int:
@@ -343,4 +359,4 @@ ACTION_EXAMPLES = {
 ACTION_RUN = {"add": _run_add, "list": lambda args: run_list(args, _open), "show": _run_show, "remove": _run_remove,
               "rename": _run_rename, "export": _run_export, "import": _run_import,
               "compare": run_compare, "backup": _run_backup, "refresh": _run_refresh,
-              "check": lambda args: run_check(args, _open(args, create=False))}
+              "check": lambda args: run_check(args, lambda: _open(args, create=False))}

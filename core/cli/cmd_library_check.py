@@ -7,8 +7,10 @@ usable and this lists what is not, with SQLite's own ``integrity_check`` finding
 from __future__ import annotations
 
 import argparse
+from typing import Callable
 
 from ..library import Library
+from ..library.store import LibraryError
 from .output import print_json
 
 
@@ -16,18 +18,31 @@ def check_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--json", action="store_true", help="print a JSON array of {entry, problem}")
 
 
-def run_check(args: argparse.Namespace, lib: Library) -> int:
+def run_check(args: argparse.Namespace, open_library: Callable[[], Library]) -> int:
     """Every damaged entry (and SQLite's findings, as entry 'file') on its own line; exit
-    status 1 if there is any, else 0."""
+    status 1 if there is any, else 0. A file refused for schema objects that are not ours
+    (a trigger another program added) has each of them listed as a finding of 'file'."""
+    try:
+        lib = open_library()
+    except LibraryError as exc:
+        if not exc.objects:
+            raise
+        return _report([("file", f"{what} is not part of a Shaper Designer library")
+                        for what in exc.objects], args.json,
+                       str(exc))
     with lib:
         found = lib.damaged()
         total = lib.count()
-    if args.json:
+    entries = sum(1 for entry, _ in found if entry != "file")
+    return _report(found, args.json, f"{entries} of {total} designs in {lib.path} are damaged" if found
+                   else f"no damage found in {lib.path} ({total} designs)")
+
+
+def _report(found: list[tuple[str, str]], as_json: bool, summary: str) -> int:
+    if as_json:
         print_json([{"entry": entry, "problem": why} for entry, why in found])
     else:
         for entry, why in found:
             print(f"{entry}: {why}")
-        entries = sum(1 for entry, _ in found if entry != "file")
-        print(f"{entries} of {total} designs in {lib.path} are damaged" if found
-              else f"no damage found in {lib.path} ({total} designs)")
+        print(summary)
     return 1 if found else 0

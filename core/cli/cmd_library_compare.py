@@ -10,7 +10,8 @@ from typing import Sequence
 
 from core.library.names import file_stem, unique_name
 
-from ..compare import Candidate, compare, comparison_json, curves_csv, difference_text, table_csv, value_text
+from ..compare import (Candidate, compare, comparison_json, curves_csv_chunks, difference_text, table_csv,
+                       value_text)
 from ..errors import DesignError, FileFormatError
 from ..io import load_design
 from ..library import Library
@@ -64,13 +65,13 @@ def run_compare(args: argparse.Namespace) -> int:
         raise UsageError(f"NAME: compare 2 to 6 designs (got {len(candidates)})")
     rpm = number("rpm", args.rpm) if args.rpm is not None else first_rpm
     try:
-        result = compare(candidates, rpm, number("step", args.step))
+        result = compare(candidates, rpm, number("step", args.step), curves=bool(args.curves_csv))
     except DesignError as exc:
         if exc.parameter == "designs":
             raise UsageError(f"NAME: {exc.value!r} {exc.allowed}") from None
         raise
     if args.curves_csv:
-        write_output("--curves-csv", args.curves_csv, curves_csv(result))
+        write_output("--curves-csv", args.curves_csv, curves_csv_chunks(result))
     if args.json:
         print(comparison_json(result), end="")
     elif args.csv:

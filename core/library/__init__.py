@@ -24,13 +24,14 @@ from core.errors import DesignError, FileFormatError
 from core.figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
 from core.io import atomic_write
 
-from .entry import Entry, check_document, document_text
-from .names import check_name, check_tags, unique_name
+from .backup import snapshot_to
+from .entry import Entry, check_document, distinct_speeds, document_text
+from .names import check_name, check_tags, lookup_name, unique_name
 from .open import connect
 from .query import Condition, condition_sql, parse_filter, search_sql, sort_sql
 from .rows import clean_row, damaged_entries, read_lenient, unfit_sql
 from .store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
-                            snapshot, sqlite_error, transaction, utc_now)
+                            sqlite_error, transaction, utc_now)
 
 _ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS \
     + ("figures_version",)
@@ -42,7 +43,15 @@ _LIST_NULLABLE = frozenset(_SPEED_COLUMNS)      # a design without the speed ask
 _LIST_KEYS = ("id",) + _ENTRY_COLUMNS + _SPEED_COLUMNS
 _LIST_EXPRESSIONS = [f"e.{c}" for c in _LIST_KEYS[:-len(_SPEED_COLUMNS)]] + [f"s.{c}" for c in _SPEED_COLUMNS]
 # a flag (SQLite checks every value's type in C), the id, the columns
-_LIST_SELECT = ", ".join([unfit_sql(zip(_LIST_EXPRESSIONS, _LIST_KEYS), _LIST_NULLABLE)] + _LIST_EXPRESSIONS)
+
+
+def _list_select(notes_chars: int | None) -> str:
+    """The list's columns; the notes cut to their first ``notes_chars`` characters by
+    SQLite when given, so a list never carries a note's whole text (50 MB of notes
+    took a pane 2 GB to show)."""
+    expressions = [f"substr(e.notes, 1, {int(notes_chars)})" if e == "e.notes" and notes_chars is not None
+                   else e for e in _LIST_EXPRESSIONS]
+    return ", ".join([unfit_sql(zip(expressions, _LIST_KEYS), _LIST_NULLABLE)] + expressions)
 
 
 def _cleaned(row: tuple) -> tuple:
@@ -108,12 +117,15 @@ class Library:
         return self._read(lambda c: c.execute("SELECT count(*) FROM entries").fetchone()[0])
 
     def __contains__(self, name: str) -> bool:
-        return self._read(lambda c: c.execute("SELECT 1 FROM entries WHERE name = ?", (name,))
+        return self._read(lambda c: c.execute("SELECT 1 FROM entries WHERE name = ?", (lookup_name(name),))
                           .fetchone() is not None)
 
     def get(self, name: str) -> Entry:
         """The entry called ``name``; LibraryError('missing') if there is none, ('entry') if a
-        stored value of it is unusable (see :mod:`core.library.rows`)."""
+        stored value of it is unusable (see :mod:`core.library.rows`). ``name`` is looked up as
+        it is stored (:func:`~core.library.names.lookup_name`)."""
+        name = lookup_name(name)
+
         def work(c: sqlite3.Connection) -> Entry:
             row = c.execute(f"SELECT e.id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
                             "LEFT JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
@@ -149,14 +161,15 @@ class Library:
 
     def query_rows(self, where: str | Sequence[Condition] = "", search: str = "", sort: str = "name",
                    descending: bool = False, rpm: float | None = None, limit: int | None = None,
-                   offset: int = 0) -> tuple[tuple[str, ...], list[tuple]]:
+                   offset: int = 0, notes_chars: int | None = None) -> tuple[tuple[str, ...], list[tuple]]:
         """Entries matching the filter (see :mod:`core.library.query`): column keys and rows.
 
         Per-speed figures are those at ``rpm`` (None where the design lacks that speed),
         or at each design's first speed when ``rpm`` is None. ``tags`` is comma-joined.
         A row whose stored values cannot all be read has those as None and says why in
         ``damaged``. ``limit``/``offset`` give one page of the sorted list (SQLite then keeps only the
-        top rows while sorting, which is what makes a page fast).
+        top rows while sorting, which is what makes a page fast). ``notes_chars`` gives only
+        the first that many characters of each note (a list to show; :meth:`get` has them all).
         """
         conditions = parse_filter(where) if isinstance(where, str) else list(where)
         clauses, params = [], []
@@ -176,7 +189,7 @@ class Library:
         where_sql = ("WHERE " + " AND ".join(clauses)) if clauses else ""
         limit_sql = (f"LIMIT {min(int(limit), _MAX_ROWS)} OFFSET {min(max(int(offset), 0), _MAX_ROWS)}"
                      if limit is not None else "")
-        sql = f"SELECT {_LIST_SELECT} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
+        sql = f"SELECT {_list_select(notes_chars)} FROM entries e {join} {where_sql} {sort_sql(sort, descending)} {limit_sql}"
 
         def work(c: sqlite3.Connection) -> list[tuple]:
             rows = c.execute(sql, params).fetchall()
@@ -234,7 +247,7 @@ class Library:
         """
         with self._transaction() as c:
             for name in remove:
-                if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+                if c.execute("DELETE FROM entries WHERE name = ?", (lookup_name(name),)).rowcount == 0:
                     raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                        self.path)
             for entry in add:
@@ -250,13 +263,13 @@ class Library:
         """Delete ``name``; returns the entry so it can be restored."""
         entry = self.get(name)
         with self._transaction() as c:
-            if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+            if c.execute("DELETE FROM entries WHERE name = ?", (entry.name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
         return entry
 
     def rename(self, old: str, new: str) -> None:
-        new = check_name(new)
+        old, new = lookup_name(old), check_name(new)
         with self._transaction() as c:
             if new != old and c.execute("SELECT 1 FROM entries WHERE name = ?", (new,)).fetchone():
                 raise self._exists(new)
@@ -280,7 +293,7 @@ class Library:
                            "notes": entry.notes if notes is None else str(notes),
                            "tags": entry.tags if tags is None else check_tags(tags)})
         with self._transaction() as c:
-            if c.execute("DELETE FROM entries WHERE name = ?", (name,)).rowcount == 0:
+            if c.execute("DELETE FROM entries WHERE name = ?", (entry.name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
             self._insert(c, changed)
@@ -292,10 +305,11 @@ class Library:
         atomic_write(path, entry.text + "\n")
 
     def backup(self, target: str | os.PathLike | None = None) -> Path:
-        """A consistent copy of the whole library (SQLite's online backup), written atomically;
-        by default beside the library as ``NAME.backup-TIME``."""
+        """A consistent copy of the whole library (SQLite's online backup), written by the
+        project's safe writer (see :mod:`core.library.backup`); by default beside the library
+        as ``NAME.backup-TIME``."""
         target = backup_target(self.path) if target is None else target
-        return snapshot(self._conn, target, self.path)
+        return snapshot_to(self._conn, target, self.path)
 
     def damaged(self) -> list[tuple[str, str]]:
         """(entry, why) for each entry that cannot be shown or opened, and SQLite's own
@@ -383,13 +397,4 @@ class Library:
         c.executemany(f"INSERT INTO speeds (entry_id, pos, {', '.join(_SPEED_COLUMNS)}) VALUES "
                       f"(?, ?, {', '.join('?' * len(_SPEED_COLUMNS))})",
                       [(entry_id, pos, *(getattr(s, k) for k in _SPEED_COLUMNS))
-                       for pos, s in enumerate(_distinct_speeds(speeds))])
-
-
-def _distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:
-    """The speeds without repeats (a document may list one speed twice), first one kept."""
-    out: list[SpeedFigures] = []
-    for s in speeds:
-        if not any(abs(s.rpm - t.rpm) <= 1e-9 for t in out):
-            out.append(s)
-    return out
+                       for pos, s in enumerate(distinct_speeds(speeds))])

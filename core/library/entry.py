@@ -8,9 +8,9 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Sequence
 
-from core.figures import FIGURES_VERSION, Figures
+from core.figures import FIGURES_VERSION, Figures, SpeedFigures
 from core.io import design_document, masses_to_dict, parse_design
 
 _PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
@@ -62,3 +62,12 @@ def document_text(loaded: dict[str, Any]) -> str:
 def check_document(name: str, text: str) -> None:
     """Refuse (FileFormatError) a stored document a design file could not be."""
     parse_design(text.encode("utf-8"), f"library entry {name!r}")
+
+
+def distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:
+    """The speeds without repeats (a document may list one speed twice), first one kept."""
+    out: list[SpeedFigures] = []
+    for s in speeds:
+        if not any(abs(s.rpm - t.rpm) <= 1e-9 for t in out):
+            out.append(s)
+    return out

@@ -66,7 +66,10 @@ def import_entries(library: Library, designs: list[tuple[Path, dict[str, Any]]],
         if rename_duplicates:
             name = unique_name(name, taken)
         taken.add(name)
-        entries.append(library.make_entry(name, loaded, notes=f"imported from {shown_file_name(path)}"))
+        try:
+            entries.append(library.make_entry(name, loaded, notes=f"imported from {shown_file_name(path)}"))
+        except LibraryError as exc:         # say which file's name cannot be an entry's
+            raise LibraryError(exc.kind, f"{shown_file_name(path)!r}: {exc}", exc.path) from None
     library.add_entries(entries)
     return entries
 

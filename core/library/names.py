@@ -14,7 +14,10 @@ from .store import LibraryError
 
 MAX_NAME = 200
 MAX_TAG = 64
-_CONTROL = re.compile(r"[\x00-\x1f\x7f]")
+# what every text option refuses (shaperapp.widgets.command_line.cover_text): the C0 and C1
+# control characters (U+0085, a line break, among them), DEL, and U+2028/U+2029 — so every
+# line break str.splitlines() knows
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
 
 
 def storable(text: str) -> bool:
@@ -28,14 +31,21 @@ def storable(text: str) -> bool:
 
 
 def check_name(name: object) -> str:
-    """A usable entry name (stripped), or LibraryError('name')."""
+    """A usable entry name (stripped, as :func:`lookup_name` strips), or LibraryError('name')."""
     if not isinstance(name, str) or not name.strip():
         raise LibraryError("name", "a design name must not be empty")
-    name = name.strip()
+    name = lookup_name(name)
     if len(name) > MAX_NAME or _CONTROL.search(name):
-        raise LibraryError("name", f"a design name must be at most {MAX_NAME} characters, "
-                           "without control characters")
+        raise LibraryError("name", f"a design name must be one line of at most {MAX_NAME} characters, "
+                           "without control characters or line breaks")
     return name
+
+
+def lookup_name(name: str) -> str:
+    """The stored form of a name given to find an entry: stripped of white space (Unicode's,
+    U+00A0 and U+3000 too) as :func:`check_name` strips it when storing, so a name is found
+    as it was typed when saved."""
+    return name.strip() if isinstance(name, str) else name
 
 
 def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
@@ -47,7 +57,7 @@ def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
             continue
         if len(tag) > MAX_TAG or "," in tag or _CONTROL.search(tag):
             raise LibraryError("tag", f"a tag must be at most {MAX_TAG} characters, without "
-                               f"commas or control characters (got {tag[:80]!r})")
+                               f"commas, control characters or line breaks (got {tag[:80]!r})")
         out.add(tag)
     return tuple(sorted(out))
 

@@ -25,12 +25,12 @@ import os
 import sqlite3
 import stat
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
 from . import store as library_store
-from .store import (APPLICATION_ID, BUSY_TIMEOUT_S, SQLITE_HEADER, LibraryError, check_regular,
-                            migrate, schema_version, sqlite_error, sqlite_uri)
+from .schema import describe, expected_objects, schema_objects, strange_objects
+from .store import (APPLICATION_ID, BUSY_TIMEOUT_S, SQLITE_HEADER, LibraryError, check_regular, is_damage,
+                    migrate, schema_version, sqlite_code, sqlite_error, sqlite_uri)
 
 _UNCHANGED = "it was left unchanged"
 
@@ -125,6 +125,18 @@ def unwritable(path: Path) -> str | None:
 
 
 def _open(path: Path, read_only: str | None) -> sqlite3.Connection:
+    """A connection that runs nothing the file's schema asks for beyond plain SQL
+    (``trusted_schema = OFF``, as SQLite advises for files from elsewhere)."""
+    conn = _connection(path, read_only)
+    try:
+        conn.execute("PRAGMA trusted_schema = OFF")
+    except sqlite3.Error as exc:
+        conn.close()
+        raise LibraryError("io", f"cannot open the library {path}: {exc}", path) from None
+    return conn
+
+
+def _connection(path: Path, read_only: str | None) -> sqlite3.Connection:
     """A connection; read-only ones by URI (``mode=ro``, else ``immutable=1`` where SQLite
     cannot make its shared-memory file in a read-only folder)."""
     try:
@@ -161,12 +173,13 @@ def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
         version = conn.execute("PRAGMA user_version").fetchone()[0]
         tables = conn.execute("SELECT count(*) FROM sqlite_master").fetchone()[0]
         check = [row[0] for row in conn.execute("PRAGMA quick_check(3)")]
-        columns = _columns(conn) if app_id == APPLICATION_ID and 0 < version <= schema_version() else {}
+        ours = app_id == APPLICATION_ID and 0 < version <= schema_version()
+        columns = _columns(conn) if ours else {}
+        objects = schema_objects(conn) if ours else {}
     except sqlite3.DatabaseError as exc:
-        text = str(exc)
-        if "locked" in text or "busy" in text:
+        if not _about_the_file(exc):        # a full disk, a lock, memory: the file is as it was
             raise sqlite_error(exc, path) from None
-        raise LibraryError("damaged", f"{path} is damaged ({text}); {_UNCHANGED}", path) from None
+        raise LibraryError("damaged", f"{path} is damaged ({exc}); {_UNCHANGED}", path) from None
     if check != ["ok"]:
         detail = " ".join("; ".join(check).replace("*** in database main ***", "").split())
         raise LibraryError("damaged", f"{path} is damaged (SQLite's check: {detail[:200]}); "
@@ -187,7 +200,28 @@ def _check_contents(conn: sqlite3.Connection, path: Path) -> int:
     if problem:
         raise LibraryError("damaged", f"{path} is damaged (it says schema version {version}, but "
                            f"{problem}); {_UNCHANGED}", path)
+    strange = strange_objects(objects, expected_objects(tuple(library_store.MIGRATIONS[:version])))
+    if strange:
+        raise LibraryError("foreign", f"{path} holds {describe(strange)} that Shaper Designer never makes "
+                           f"(another program changed it, and SQLite would run what it does); "
+                           f"{_UNCHANGED}", path, objects=tuple(strange))
     return version
+
+
+def _about_the_file(exc: sqlite3.Error) -> bool:
+    """Whether a failure to read the schema says something about the file (damaged, or
+    not a schema SQLite can read) rather than about the disk, a lock or the memory."""
+    if is_damage(exc):
+        return True
+    code = sqlite_code(exc)
+    if code is None:
+        return not any(word in str(exc) for word in ("locked", "busy", "disk", "memory", "unable to open"))
+    return code not in _NOT_THE_FILE
+
+
+# SQLite's result codes for what is not the file's fault: BUSY, LOCKED, NOMEM, READONLY,
+# IOERR, FULL, CANTOPEN, PERM (the file is left as it was and may be fine)
+_NOT_THE_FILE = frozenset({5, 6, 7, 8, 10, 13, 14, 3})
 
 
 def _columns(conn: sqlite3.Connection) -> dict[str, tuple[str, ...]]:
@@ -197,16 +231,11 @@ def _columns(conn: sqlite3.Connection) -> dict[str, tuple[str, ...]]:
             for name in names if isinstance(name, str)}
 
 
-@lru_cache(maxsize=8)
 def expected_columns(steps: tuple) -> dict[str, tuple[str, ...]]:
-    """The tables and columns the migration ``steps`` make (those up to a schema version)."""
-    conn = sqlite3.connect(":memory:")
-    try:
-        for step in steps:
-            step(conn)
-        return _columns(conn)
-    finally:
-        conn.close()
+    """The tables and columns the migration ``steps`` make (those up to a schema version),
+    read from the objects they make (:func:`~core.library.schema.expected_objects`)."""
+    return {name: tuple(sorted(str(column[0]) for column in meaning[1]))
+            for (kind, name), meaning in expected_objects(steps).items() if kind == "table"}
 
 
 def _schema_problem(actual: dict[str, tuple[str, ...]], expected: dict[str, tuple[str, ...]]) -> str:

@@ -3,7 +3,7 @@
 A library is one SQLite file in WAL mode. Whether an existing file may be
 opened (and written) is decided before anything touches it, in
 :mod:`core.library.open`; a refused file is left exactly as it was, and
-:func:`backup_copy` copies it aside byte for byte.
+:func:`core.library.backup.backup_copy` copies it aside byte for byte.
 
 Every write is one ``BEGIN IMMEDIATE`` transaction, and a second process
 waits up to ``BUSY_TIMEOUT_S`` for the lock, so two programs can share one
@@ -11,8 +11,8 @@ library. ``synchronous=FULL`` makes each commit durable before it returns.
 """
 from __future__ import annotations
 
+import errno
 import os
-import shutil
 import sqlite3
 import stat
 from contextlib import contextmanager
@@ -22,6 +22,7 @@ from typing import Callable, Iterator
 from urllib.parse import quote
 
 from core.atomic import fit_name
+from core.errors import os_reason
 
 APP_NAME = "shaper-designer"
 FILE_NAME = "library.sqlite"
@@ -38,10 +39,12 @@ class LibraryError(Exception):
     not the disk), ``readonly`` (a write to a library opened read-only) or ``entry``
     (one entry's stored values are unusable; the rest of the library is fine)."""
 
-    def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None) -> None:
+    def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None,
+                 objects: tuple[str, ...] = ()) -> None:
         super().__init__(message)
         self.kind = kind
         self.path = None if path is None else Path(path)
+        self.objects = objects      # a refused file's schema objects that are not ours, described
 
     @property
     def refused_file(self) -> bool:
@@ -147,7 +150,7 @@ def check_regular(path: Path) -> None:
     except OSError as exc:
         raise LibraryError("io", f"cannot read the library {path}: {exc.strerror or exc}", path) from None
     if not stat.S_ISREG(mode):
-        kind = ("a pipe" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode)
+        kind = ("a folder" if stat.S_ISDIR(mode) else "a pipe" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode)
                 else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
         raise LibraryError("location", f"{path} is {kind}, not a library file; it was left unchanged", path)
 
@@ -210,14 +213,52 @@ def transaction(conn: sqlite3.Connection, path: str | os.PathLike) -> Iterator[s
         raise sqlite_error(exc, Path(path)) from None
 
 
-def sqlite_error(exc: sqlite3.Error, path: Path) -> LibraryError:
+# SQLite's primary result codes (an extended code's low byte is its primary code)
+_BUSY, _LOCKED, _READONLY, _IOERR, _CORRUPT, _FULL, _NOTADB = 5, 6, 8, 10, 11, 13, 26
+_ROOM_BYTES = 1 << 20       # a file system with less free than this counts as full
+
+
+def sqlite_code(exc: sqlite3.Error) -> int | None:
+    """SQLite's primary result code of ``exc`` (None when it carries none)."""
+    code = getattr(exc, "sqlite_errorcode", None)
+    return code & 0xFF if isinstance(code, int) else None
+
+
+def is_damage(exc: sqlite3.Error) -> bool:
+    """Whether ``exc`` says the file itself is damaged (SQLITE_CORRUPT, SQLITE_NOTADB), not
+    that the disk, the lock or the memory failed, which leave the file as it was."""
+    code = sqlite_code(exc)
+    if code is not None:
+        return code in (_CORRUPT, _NOTADB)
     text = str(exc)
-    if "locked" in text or "busy" in text:
+    return "malformed" in text or "not a database" in text
+
+
+def disk_full(path: str | os.PathLike) -> bool:
+    """Whether the file system holding ``path`` has (next to) no room left: what a disk
+    I/O error of SQLite (it cannot make its shared-memory file, or grow one) then means."""
+    folder = Path(path).parent if not Path(path).is_dir() else Path(path)
+    try:
+        fs = os.statvfs(folder if str(folder) else ".")
+    except (OSError, AttributeError):
+        return False
+    return fs.f_bavail * fs.f_frsize < _ROOM_BYTES or (fs.f_files > 0 and fs.f_favail == 0)
+
+
+def sqlite_error(exc: sqlite3.Error, path: Path) -> LibraryError:
+    """``exc`` as one plain LibraryError, told apart by SQLite's result code: a busy
+    library, a full disk, a damaged file, a read-only one or another failure (io)."""
+    text = str(exc)
+    code = sqlite_code(exc)
+    if code in (_BUSY, _LOCKED) or (code is None and ("locked" in text or "busy" in text)):
         return LibraryError("busy", f"the library {path} is busy (another program is writing "
                             f"to it for more than {BUSY_TIMEOUT_S:g} s); try again", path)
-    if isinstance(exc, sqlite3.DatabaseError) and ("malformed" in text or "not a database" in text):
+    if code == _FULL or (code == _IOERR and disk_full(path)):
+        return LibraryError("io", f"cannot use the library {path}: {os_reason(OSError(errno.ENOSPC, ''))}; "
+                            "nothing was changed", path)
+    if isinstance(exc, sqlite3.DatabaseError) and is_damage(exc):
         return LibraryError("damaged", f"{path} is damaged ({text}); it was left unchanged", path)
-    if "readonly" in text or "read-only" in text:
+    if code == _READONLY or "readonly" in text or "read-only" in text:
         return LibraryError("readonly", f"the library {path} can only be read ({text}); "
                             "nothing was changed", path)
     return LibraryError("io", f"cannot use the library {path}: {text}", path)
@@ -234,27 +275,6 @@ def utc_now() -> str:
     """Now as UTC ISO 8601 with milliseconds, e.g. 2024-05-01T12:00:00.000Z (sorts as text)."""
     now = datetime.now(timezone.utc)
     return now.strftime("%Y-%m-%dT%H:%M:%S.") + f"{now.microsecond // 1000:03d}Z"
-
-
-def backup_copy(path: str | os.PathLike, target: str | os.PathLike | None = None,
-                label: str = "backup") -> Path:
-    """Copy the library file (and its ``-wal`` file, if any) byte for byte, never touching it.
-
-    The copy goes to ``target`` or beside the file as ``NAME.LABEL-YYYYMMDDTHHMMSSZ``; the
-    copy of the ``-wal`` file gets SQLite's own suffix, so the copy opens as it was.
-    """
-    source = Path(path)
-    if source.exists() and not source.is_dir():
-        check_regular(source)          # never read a pipe (it would block) or a device
-    target = backup_target(source, label) if target is None else Path(target)
-    try:
-        for src, dst in ((source, target), (Path(f"{source}-wal"), Path(f"{target}-wal"))):
-            if src.exists():
-                _copy_atomic(src, dst)
-    except OSError as exc:
-        raise LibraryError("io", f"cannot copy {source} to {target}: {exc.strerror or exc}",
-                           source) from None
-    return target
 
 
 def snapshot(conn: sqlite3.Connection, target: str | os.PathLike, path: str | os.PathLike) -> Path:
@@ -289,15 +309,3 @@ def backup_target(path: str | os.PathLike, label: str = "backup") -> Path:
         target = source.with_name(f"{base}.{label}-{stamp}-{n}")
         n += 1
     return target
-
-
-def _copy_atomic(source: Path, target: Path) -> None:
-    """Copy through a temporary file beside ``target``, synced, then renamed into place."""
-    tmp = target.with_name(f".{fit_name(target.name, 5)}.tmp")
-    try:
-        shutil.copyfile(source, tmp)
-        with open(tmp, "rb+") as handle:
-            os.fsync(handle.fileno())
-        os.replace(tmp, target)
-    finally:
-        tmp.unlink(missing_ok=True)

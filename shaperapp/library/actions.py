@@ -22,7 +22,8 @@ from core.figures import figures
 from core.library import Entry, Library
 from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import check_name, unique_name
-from core.library.store import LibraryError, backup_copy, utc_now
+from core.library.backup import backup_copy
+from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.messages import describe
@@ -264,6 +265,10 @@ class LibraryActions(QObject):
                              "left unchanged; update Shaper Designer to use it."),
             "foreign": self.tr("%1 is not a Shaper Designer library. It was left unchanged."),
         }
+        if error.objects:
+            return self.tr("The library %1 holds what another program added (%2), which Shaper Designer "
+                           "never makes and will not run. It was left unchanged.").replace("%1", path) \
+                .replace("%2", ", ".join(error.objects))
         if error.kind == "entry":
             return self.tr("This design is damaged and cannot be opened; the rest of the library "
                            "can be used. (%1)").replace("%1", str(error))

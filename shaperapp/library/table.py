@@ -28,6 +28,8 @@ _INDEX = [LIST_COLUMNS.index(key) for key in COLUMNS]
 _DAMAGED = LIST_COLUMNS.index("damaged")
 _TEXT = {"name", "variant", "tags", "notes", "modified"}
 PAGE = 256
+NOTES_SHOWN = 500       # characters of a note the list gets (its tooltip shows them); the rest stays in the file
+NOTES_CELL = 120        # characters of a note's first line its cell shows (the column fits its contents)
 
 Index = QModelIndex | QPersistentModelIndex
 
@@ -82,7 +84,7 @@ class LibraryTableModel(QAbstractTableModel):
     def _page(self, offset: int) -> list[tuple]:
         _, rows = self._library.query_rows(self._where, search=self._search, sort=self._sort,  # type: ignore
                                            descending=self._descending, rpm=self._rpm,
-                                           limit=PAGE, offset=offset)
+                                           limit=PAGE, offset=offset, notes_chars=NOTES_SHOWN + 1)
         return rows
 
     def canFetchMore(self, parent: Index = QModelIndex()) -> bool:
@@ -154,10 +156,10 @@ class LibraryTableModel(QAbstractTableModel):
         if role == Qt.ItemDataRole.DisplayRole:
             if key in ("tags", "notes", "name", "modified"):
                 text = (value or "").replace(",", ", ") if key == "tags" else (value or "")
-                return text.splitlines()[0] if key == "notes" and text else text
+                return _first_line(text) if key == "notes" and text else text
             return format_figure(key, value)
         if role == Qt.ItemDataRole.ToolTipRole and key == "notes":
-            return value or None
+            return _shown_note(value) if value else None
         if role == Qt.ItemDataRole.TextAlignmentRole:
             if key in _TEXT:
                 return int(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
@@ -178,3 +180,15 @@ class LibraryTableModel(QAbstractTableModel):
         self.headerDataChanged.emit(Qt.Orientation.Horizontal, 0, len(COLUMNS) - 1)
         if self._rows:
             self.dataChanged.emit(self.index(0, 0), self.index(len(self._rows) - 1, len(COLUMNS) - 1))
+
+
+def _shown_note(text: str) -> str:
+    """A note as the list got it (``NOTES_SHOWN`` + 1 characters at most), with … if cut."""
+    return text[:NOTES_SHOWN] + "…" if len(text) > NOTES_SHOWN else text
+
+
+def _first_line(text: str) -> str:
+    """The first line of a note as shown in its cell, cut at ``NOTES_CELL`` characters (…)."""
+    lines = text[:NOTES_SHOWN].splitlines()
+    first = lines[0] if lines else ""
+    return first[:NOTES_CELL] + "…" if len(first) > NOTES_CELL else first

@@ -346,3 +346,25 @@ def test_stale_bar_in_chinese(pane, model, qtbot):
         assert "1" in pane.stale_bar.label.text() and "older" not in pane.stale_bar.label.text()
     finally:
         i18n.set_language("en")
+
+
+def test_a_huge_note_is_not_held_by_the_list(pane, model):
+    """Issue 33 item 7: a design with 50 MB of notes took the pane 2 GB and 9 s to open;
+    the list now gets only the first NOTES_SHOWN + 1 characters of each note from SQLite
+    (the cell shows 120 of them and its tooltip 500, each ending in …), and the note itself is stored whole."""
+    from shaperapp.library.table import NOTES_CELL, NOTES_SHOWN
+    model.set_spec(time_ratio=1.5)
+    note = "n" * 5_000_000
+    assert pane.actions.save_current("big", notes=note)
+    row = names(pane).index("big")
+    assert len(pane.table_model.value(row, "notes")) == NOTES_SHOWN + 1
+    index = pane.table_model.index(row, COLUMNS.index("notes"))
+    shown = pane.table_model.data(index)
+    tip = pane.table_model.data(index, Qt.ItemDataRole.ToolTipRole)
+    assert shown == "n" * NOTES_CELL + "…" and tip == "n" * NOTES_SHOWN + "…"
+    assert pane.actions.library.get("big").notes == note
+    assert pane.actions.library.query()[0]["notes"] == note         # the CLI's list is whole
+    assert pane.actions.save_current("short", notes="line one\nline two")
+    index = pane.table_model.index(names(pane).index("short"), COLUMNS.index("notes"))
+    assert pane.table_model.data(index) == "line one"
+    assert pane.table_model.data(index, Qt.ItemDataRole.ToolTipRole) == "line one\nline two"

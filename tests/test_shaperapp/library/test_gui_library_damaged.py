@@ -125,3 +125,33 @@ def test_read_only_library_in_the_pane(qtbot, tmp_path, monkeypatch):
     assert not pane.actions.delete(["a"])
     assert shown and "can only be read" in shown[-1]
     assert pane.actions.library.names() == ["a", "b"] and path.read_bytes() == before
+
+
+def test_library_with_a_trigger_is_refused_in_the_pane(qtbot, model, tmp_path, monkeypatch):
+    """Issue 33 item 2: a trigger another program added (it deleted every other design on
+    the next save) makes the pane refuse the file, unchanged, and say what was added."""
+    import hashlib
+    import sqlite3
+
+    from shaperapp.library import pane as library_pane
+    from shaperapp.library.pane import LibraryPane
+
+    path = tmp_path / "L.sqlite"
+    with Library(path) as lib:
+        for name in ("a", "b", "c"):
+            lib.add(name, {"spec": Spec(), "rpm": [40.0], "step_deg": 1.0, "masses": None})
+    conn = sqlite3.connect(path)
+    conn.execute("PRAGMA journal_mode = DELETE")
+    conn.execute("CREATE TRIGGER t AFTER INSERT ON entries BEGIN DELETE FROM entries WHERE id != NEW.id; END")
+    conn.commit()
+    conn.close()
+    before = hashlib.sha256(path.read_bytes()).hexdigest()
+    messages = []
+    monkeypatch.setattr(library_pane, "ask_refused_library",
+                        lambda parent, message: messages.append(message) or "cancel")
+    widget = LibraryPane(model)
+    qtbot.addWidget(widget)
+    assert not widget.open_library(str(path))
+    assert widget.actions.library is None
+    assert len(messages) == 1 and "trigger t on entries" in messages[0] and "unchanged" in messages[0]
+    assert hashlib.sha256(path.read_bytes()).hexdigest() == before
