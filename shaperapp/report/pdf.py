@@ -17,6 +17,7 @@ from PySide6.QtGui import (QColor, QFont, QFontMetricsF, QPageLayout, QPageSize,
 
 from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows, typeset
 from shaperapp.widgets.fonts import report_font
+from shaperapp.widgets.pdf_text import repair_text_layer
 
 translate = QCoreApplication.translate
 RESOLUTION = 300
@@ -294,8 +295,8 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
 
 
 def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure")) -> tuple[bytes, int]:
-    """The PDF of ``report`` in memory, and its page count; the caller writes it
-    (atomically, so a failed save never leaves half a report). ``parts`` leaves out
+    """The PDF of ``report`` in memory, its text layer repaired (``pdf_text``), and its
+    page count; the caller writes it (atomically, so a failed save never leaves half a report). ``parts`` leaves out
     the pieces of other parts (and the title block and footers unless "text"): the
     tests print the figures alone to find ink outside their boxes."""
     data = QByteArray()
@@ -303,7 +304,7 @@ def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure")) -> tu
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
     pages = _paint_pdf(report, QPdfWriter(buffer), parts)
     buffer.close()
-    return bytes(data.data()), pages
+    return repair_text_layer(bytes(data.data())), pages
 
 
 def page_boxes(report: Report) -> list[list[tuple[str, QRectF]]]:
