@@ -19,7 +19,8 @@ import unicodedata
 ALLOWED = frozenset({
     "mm", "kg", "min", "max", "rad", "kW",          # units: mm, kg·m², r/min, rad/s², kW
     "PDF", "SVG", "DXF", "CSV", "PNG", "JSON", "HTML",
-    "GB",                                          # GB/T 4457.4 (the standard's name)
+    "GB", "UTF",                                   # GB/T 4457.4, UTF-8 (names of standards)
+    "dx", "dy",                                    # an offset's components (dx, dy)
 })
 _WORD = re.compile(r"(?<![A-Za-z])(?:[A-Za-z][a-z]+|[A-Z]{3,})(?![A-Za-z])")
 _CONTROL_OK = "\n\r\t\f"

@@ -39,15 +39,16 @@ def expand_paths(paths: Iterable[str | os.PathLike]) -> list[Path]:
 
 
 def read_design_files(paths: Iterable[str | os.PathLike]) -> tuple[list[tuple[Path, dict[str, Any]]],
-                                                                    list[tuple[Path, str]]]:
-    """Load and validate every file: ([(path, design)], [(path, why refused)])."""
+                                                                    list[tuple[Path, FileFormatError]]]:
+    """Load and validate every file: ([(path, design)], [(path, why refused)]); ``why`` is
+    the FileFormatError, whose text is core's sentence and whose reason a GUI translates."""
     good: list[tuple[Path, dict[str, Any]]] = []
-    bad: list[tuple[Path, str]] = []
+    bad: list[tuple[Path, FileFormatError]] = []
     for path in expand_paths(paths):
         try:
             good.append((path, load_design(path)))
         except FileFormatError as exc:
-            bad.append((path, str(exc)))
+            bad.append((path, exc))
     return good, bad
 
 

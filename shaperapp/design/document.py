@@ -17,7 +17,7 @@ from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_
 from core.spec import Spec
 
 from shaperapp.widgets import file_dialogs
-from shaperapp.widgets.messages import describe
+from shaperapp.widgets.messages import describe, describe_file_error
 
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
 from .model import DesignModel
@@ -47,7 +47,7 @@ class Document(QObject):
             self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
                                    masses=doc["masses"], parts={"cam": doc.get("cam")})
         except FileFormatError as exc:
-            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
             return False
         except DesignError as exc:
             self.failed.emit(self.tr("Could not open %1: %2").replace("%1", path).replace("%2", describe(exc)))

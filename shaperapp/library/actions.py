@@ -25,7 +25,7 @@ from core.library.names import check_name, unique_name
 from core.library.store import LibraryError, backup_copy, utc_now
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.messages import describe
+from shaperapp.widgets.messages import describe, describe_file_error
 
 
 class _Swap(QUndoCommand):
@@ -141,7 +141,7 @@ class LibraryActions(QObject):
             self._push(self.tr("Delete %1 design(s)").replace("%1", str(len(entries))), entries, [])
         return bool(names) and self._run(work)
 
-    def import_paths(self, paths: Sequence[str | os.PathLike]) -> tuple[list[str], list[tuple[Path, str]]]:
+    def import_paths(self, paths: Sequence[str | os.PathLike]) -> tuple[list[str], list[tuple[Path, FileFormatError]]]:
         """Import design files and folders (names taken get ``name (2)``…); returns the
         imported names and the refused files with why. Undo removes them all."""
         good, bad = read_design_files(paths)
@@ -217,7 +217,7 @@ class LibraryActions(QObject):
             doc = self.library.load(name)
             figures(doc["spec"], doc["rpm"], doc["masses"])
         except FileFormatError as exc:
-            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
             return False
         except DesignError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe(exc)))
@@ -244,7 +244,7 @@ class LibraryActions(QObject):
             try:
                 doc = self.library.load(name)  # type: ignore[union-attr]
             except (FileFormatError, LibraryError) as exc:
-                self.failed.emit(str(exc) if isinstance(exc, FileFormatError) else self.message(exc))
+                self.failed.emit(describe_file_error(exc) if isinstance(exc, FileFormatError) else self.message(exc))
                 continue
             out.append(Candidate(name, doc["spec"], doc["masses"]))
         return out
