@@ -38,18 +38,21 @@ def is_radical(char: str) -> bool:
     return any(lo <= code <= hi for lo, hi in RADICAL_BLOCKS)
 
 
-@lru_cache(maxsize=1)
 def radical_ideographs() -> dict[str, str]:
     """Radical → the unified ideograph the Chinese font draws with the same glyph.
 
     Read from the cmap of the family the report and sheets write Chinese in
     (``fonts.cjk_family``); empty without such a font or a Qt application."""
-    from PySide6.QtGui import QFont, QGuiApplication, QRawFont
+    from PySide6.QtGui import QGuiApplication
 
     from .fonts import cjk_family
     family = cjk_family() if QGuiApplication.instance() is not None else None
-    if family is None:
-        return {}
+    return _font_map(family) if family is not None else {}
+
+
+@lru_cache(maxsize=4)
+def _font_map(family: str) -> dict[str, str]:
+    from PySide6.QtGui import QFont, QRawFont
     raw = QRawFont.fromFont(QFont(family))
     radicals = "".join(chr(c) for lo, hi in RADICAL_BLOCKS for c in range(lo, hi + 1))
     ideographs = "".join(chr(c) for lo, hi in IDEOGRAPH_BLOCKS for c in range(lo, hi + 1))
