@@ -4192,12 +4192,28 @@
         <translation>%1：角度步长须为以度计的数值</translation>
     </message>
     <message>
+        <source>the disk is full (no space left on the device)</source>
+        <translation>磁盘已满（设备上没有剩余空间）</translation>
+    </message>
+    <message>
+        <source>the disk quota is exhausted</source>
+        <translation>磁盘配额已用完</translation>
+    </message>
+    <message>
+        <source>the file system is read-only</source>
+        <translation>文件系统为只读</translation>
+    </message>
+    <message>
         <source>the file does not exist</source>
         <translation>文件不存在</translation>
     </message>
     <message>
         <source>permission denied</source>
         <translation>没有权限</translation>
+    </message>
+    <message>
+        <source>the folder does not exist</source>
+        <translation>文件夹不存在</translation>
     </message>
     <message>
         <source>too many levels of symbolic links</source>

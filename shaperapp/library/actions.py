@@ -25,7 +25,7 @@ from core.library.names import check_name, unique_name
 from core.library.store import LibraryError, backup_copy, utc_now
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.messages import describe, describe_file_error
+from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
 
 
 class _Swap(QUndoCommand):
@@ -204,7 +204,7 @@ class LibraryActions(QObject):
         try:
             return self._run(work)
         except (OSError, FileFormatError) as exc:
-            detail = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+            detail = describe_os_error(exc) if isinstance(exc, OSError) else describe_file_error(exc)
             self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path).replace("%2", detail))
             return False
 

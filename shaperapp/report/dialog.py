@@ -29,6 +29,7 @@ from .command import MAX_TEXT
 from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles, inputs_name
 from shaperapp.widgets.fonts import MissingFontError
+from shaperapp.widgets.messages import describe_os_error
 
 translate = QCoreApplication.translate
 
@@ -187,7 +188,7 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
         QGuiApplication.restoreOverrideCursor()
         QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"),
                             translate("ReportOptionsDialog", "Could not write %1: %2").replace("%1", path)
-                            .replace("%2", exc.strerror or str(exc)))
+                            .replace("%2", describe_os_error(exc)))
         return ""
     QGuiApplication.restoreOverrideCursor()
     return path

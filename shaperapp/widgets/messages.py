@@ -6,11 +6,13 @@ translatable template, so the Chinese UI never shows an English sentence.
 from __future__ import annotations
 
 import errno
+import os
 import re
 
 from PySide6.QtCore import QCoreApplication
 
 from core.errors import DesignError, FileFormatError
+from core.errors import os_reason as core_os_reason
 
 # Error text in the one weight every script has: a bold Latin run beside regular CJK
 # glyphs (fonts without a semi-bold CJK face) looked like two kinds of message.
@@ -244,19 +246,35 @@ def _file_templates() -> dict[str, str]:
     }
 
 
-def _read_reason(error: FileFormatError) -> str:
-    """Why a file could not be read, by its error number; the system's words otherwise."""
+def os_reason(number: int | None, fallback: str, reading: bool = False) -> str:
+    """Why a file could not be read or written, by the system's error number, in the UI's
+    language (core.errors.os_reason's reasons); ``fallback`` (the system's own words) for
+    another number."""
     reasons = {
-        errno.ENOENT: QCoreApplication.translate("messages", "the file does not exist"),
+        errno.ENOSPC: QCoreApplication.translate("messages", "the disk is full (no space left on the device)"),
+        errno.EDQUOT: QCoreApplication.translate("messages", "the disk quota is exhausted"),
         errno.EACCES: QCoreApplication.translate("messages", "permission denied"),
         errno.EPERM: QCoreApplication.translate("messages", "permission denied"),
+        errno.EROFS: QCoreApplication.translate("messages", "the file system is read-only"),
+        errno.ENOENT: QCoreApplication.translate("messages", "the file does not exist") if reading else
+        QCoreApplication.translate("messages", "the folder does not exist"),
         errno.ELOOP: QCoreApplication.translate("messages", "too many levels of symbolic links"),
         errno.ENAMETOOLONG: QCoreApplication.translate("messages", "the name is too long"),
         errno.ENOTDIR: QCoreApplication.translate("messages", "a part of the path is not a folder"),
         errno.EISDIR: QCoreApplication.translate("messages", "it is a folder"),
         errno.EIO: QCoreApplication.translate("messages", "an input/output error"),
     }
-    return reasons.get(error.errno, error.values[0] if error.values else "")
+    return reasons.get(number, fallback) if number is not None else fallback
+
+
+def describe_os_error(error: OSError) -> str:
+    """Why a write failed (a save, an export), in the UI's language (see :func:`os_reason`).
+    A reason the system or core gave (in English) is translated; one the GUI already
+    wrote in the UI's language (image_export's "the folder … does not exist") is kept."""
+    text = error.strerror or str(error)
+    if error.errno is not None and text in (os.strerror(error.errno), core_os_reason(error)):
+        return os_reason(error.errno, text)
+    return text
 
 
 def describe_file_error(error: FileFormatError) -> str:
@@ -274,7 +292,7 @@ def describe_file_error(error: FileFormatError) -> str:
     if error.reason == "invalid" and isinstance(error.cause, DesignError):
         values = [describe(error.cause)]
     elif error.reason == "unreadable":
-        values = [_read_reason(error)]
+        values = [os_reason(error.errno, values[0] if values else "", reading=True)]
     # one pass, so a value holding "%2" is never substituted again
     return re.sub(r"%(\d)", lambda m: name if m.group(1) == "1" else
                   (values[int(m.group(1)) - 2] if int(m.group(1)) - 2 < len(values) else ""), template)

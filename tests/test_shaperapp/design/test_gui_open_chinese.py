@@ -1,6 +1,7 @@
 """A design file the Chinese window refuses is refused in Chinese (issue 32, item 5): every
 case of the hostile corpus, opened through the document as the File menu does, gives a
 message with no English word but the file's own (its path, what it holds)."""
+import errno
 import os
 import stat
 
@@ -50,3 +51,33 @@ def test_a_refused_file_is_refused_in_chinese(document, tmp_path, name):
         document.failed.disconnect(said.append)
     assert len(said) == 1 and said[0].startswith("无法打开")
     assert english_words(said[0], words_of(str(path)) | file_words(path) | MODES) == [], said[0]
+
+
+def test_a_save_into_a_missing_folder_fails_in_chinese(document, tmp_path):
+    path = tmp_path / "missing" / "a.shaper.json"
+    said = []
+    document.failed.connect(said.append)
+    try:
+        assert not document.save_to(str(path))
+    finally:
+        document.failed.disconnect(said.append)
+    assert len(said) == 1 and str(path) in said[0]
+    assert english_words(said[0], words_of(str(path))) == [], said[0]
+
+
+@pytest.mark.parametrize("number", [errno.ENOSPC, errno.EACCES, errno.EROFS, errno.EDQUOT])
+def test_a_failed_save_says_why_in_chinese(document, tmp_path, monkeypatch, number):
+    """The reasons core gives a WriteError (core.errors.os_reason), in the UI's language."""
+    from core.errors import WriteError
+
+    def full(path, *args, **kwargs):
+        raise WriteError(path, OSError(number, os.strerror(number)))
+    monkeypatch.setattr("shaperapp.design.document.save_design", full)
+    path = tmp_path / "a.shaper.json"
+    said = []
+    document.failed.connect(said.append)
+    try:
+        assert not document.save_to(str(path))
+    finally:
+        document.failed.disconnect(said.append)
+    assert english_words(said[0], words_of(str(path))) == [], said[0]
