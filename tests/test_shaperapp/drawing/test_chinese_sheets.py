@@ -56,3 +56,24 @@ def test_the_scan_finds_english_and_keeps_symbols_and_units():
     assert english_words("L1 = 100 mm, K = 1.4, H, O4, vB3, aB3B2, J_F, ψmax, 40 r/min, N·m, kg·m², "
                          "PDF/SVG/DXF/CSV, rad/s², GB/T 14689") == []
     assert english_words("design.json 已保存", words_of("design.json")) == []
+
+
+@pytest.mark.slow                  # two A1 sheets rendered: left out of the quick run
+@pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
+def test_the_repair_leaves_the_page_as_qt_painted_it(tmp_path, monkeypatch):
+    """The cam sheet (the most radicals) with and without the text layer's repair: the same
+    pixels (pdftoppm), and qpdf finds nothing wrong with the repaired file."""
+    import subprocess
+
+    import pikepdf
+    repaired = sheet("cam", "pdf", tmp_path)
+    monkeypatch.setattr("shaperapp.drawing.render.repair_text_layer", lambda data: data)
+    (tmp_path / "raw").mkdir()
+    raw = sheet("cam", "pdf", tmp_path / "raw")
+    assert raw.read_bytes() != repaired.read_bytes()
+    with pikepdf.open(repaired) as doc:
+        assert doc.check_pdf_syntax() == []
+    for pdf in (raw, repaired):
+        subprocess.run(["pdftoppm", "-r", "40", "-gray", "-png", str(pdf), str(pdf.with_suffix(""))],
+                       check=True)
+    assert (tmp_path / "raw" / "cam-1.png").read_bytes() == (tmp_path / "cam-1.png").read_bytes()
