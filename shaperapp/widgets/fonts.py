@@ -24,16 +24,16 @@ def prefer_simplified_chinese() -> None:
     A font without Chinese glyphs (DejaVu Sans) falls back to whatever CJK font the
     system's font configuration ranks first for the process's locale: under an
     English or C locale that is Noto Sans CJK JP, whose Japanese forms differ from
-    the Chinese ones and whose locale-variant glyphs have no code point in Qt's PDF
-    text layer (pdftotext read the report's plot labels as control characters). Qt
+    the Chinese ones and some of whose glyphs got no entry in the text layer of Qt's
+    PDF (the report's plot labels 滑枕位移, 速度 … were missing from pdftotext's text). Qt
     keeps the fallback of a font once the font is first used, so this runs right
     after the QApplication is made (``app.main``, ``command_line.application``),
     before any text is laid out. The Latin letters stay in the family they were in:
     an alias (Qt's "Sans Serif") is substituted by the family it stood for, then the
     Chinese one.
     """
-    family = cjk_family()
-    if family is None or QGuiApplication.instance() is None:
+    family = cjk_family() if QGuiApplication.instance() is not None else None
+    if family is None:
         return
     base = QGuiApplication.font()
     resolved = QFontInfo(base).family()
