@@ -77,7 +77,9 @@ class Exported:
     """What :func:`export_entries` wrote, and the entries it left out with why."""
 
     paths: tuple[Path, ...]
-    skipped: tuple[tuple[str, str], ...]      # (entry name, why it cannot be exported)
+    skipped: tuple[tuple[str, LibraryError | FileFormatError], ...]
+    """(entry name, why it cannot be exported): the error, whose text is core's sentence
+    and whose fields a GUI says in its language."""
 
 
 def export_entries(library: Library, folder: str | os.PathLike,
@@ -94,7 +96,7 @@ def export_entries(library: Library, folder: str | os.PathLike,
     """
     folder = Path(folder)
     texts: list[tuple[str, str]] = []        # (file name, text)
-    skipped: list[tuple[str, str]] = []
+    skipped: list[tuple[str, LibraryError | FileFormatError]] = []
     used = {p.name for p in folder.iterdir()} if folder.is_dir() else set()
     for name in (library.names() if names is None else list(names)):
         try:
@@ -103,7 +105,7 @@ def export_entries(library: Library, folder: str | os.PathLike,
         except (LibraryError, FileFormatError) as exc:
             if isinstance(exc, LibraryError) and exc.kind not in ("entry", "missing"):
                 raise
-            skipped.append((name, str(exc)))
+            skipped.append((name, exc))
             continue
         stem = unique_name(safe_file_name(name), {n[:-len(DESIGN_SUFFIX)] for n in used
                                                   if n.endswith(DESIGN_SUFFIX)})

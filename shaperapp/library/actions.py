@@ -193,11 +193,12 @@ class LibraryActions(QObject):
 
     def export_all(self, folder: str) -> bool:
         """Every design into ``folder``, all or nothing; damaged entries are left out and named."""
-        skipped: list[tuple[str, str]] = []
+        skipped: list[tuple[str, LibraryError | FileFormatError]] = []
         done = self._export(lambda lib: skipped.extend(export_entries(lib, folder).skipped), folder)
         if done and skipped:
-            self.failed.emit(self.tr("These designs are damaged and were not exported:") + "\n"
-                             + "\n".join(f"{name}: {why}" for name, why in skipped[:20]))
+            self.failed.emit(self.tr("These designs are damaged and were not exported:") + "\n" + "\n".join(
+                f"{name}: {describe_file_error(why) if isinstance(why, FileFormatError) else self.message(why)}"
+                for name, why in skipped[:20]))
         return done
 
     def _export(self, work, path: str) -> bool:
