@@ -44,9 +44,14 @@ def test_the_pdf_text_layer_holds_the_ideographs_the_sheet_prints(content, tmp_p
 
 
 @pytest.mark.parametrize("content", ["motion", "forces", "cam"])
-def test_the_dxf_texts_have_no_english_word(content, tmp_path):
+def test_the_dxf_and_svg_texts_have_no_english_word(content, tmp_path):
+    import xml.etree.ElementTree as ET
     texts = dxf_texts(sheet(content, "dxf", tmp_path))
     assert [(t, english_words(t)) for t in texts if english_words(t)] == []
+    svg = ET.parse(sheet(content, "svg", tmp_path)).getroot()
+    shown = ["".join(e.itertext()) for e in svg.iter("{http://www.w3.org/2000/svg}text")]
+    assert len(shown) > 20
+    assert [(t, english_words(t)) for t in shown if english_words(t)] == []
 
 
 def test_the_scan_finds_english_and_keeps_symbols_and_units():
