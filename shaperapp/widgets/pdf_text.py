@@ -56,32 +56,30 @@ def _font_map(family: str) -> dict[str, str]:
     raw = QRawFont.fromFont(QFont(family))
     radicals = "".join(chr(c) for lo, hi in RADICAL_BLOCKS for c in range(lo, hi + 1))
     ideographs = "".join(chr(c) for lo, hi in IDEOGRAPH_BLOCKS for c in range(lo, hi + 1))
-    by_glyph: dict[int, str] = {}
-    for char, glyph in zip(ideographs, raw.glyphIndexesForString(ideographs)):
-        if glyph:
-            by_glyph.setdefault(glyph, char)            # the first block's ideograph wins
+    # glyph → ideograph, the first one of the blocks' order where two share a glyph (reversed,
+    # so the first is written last); glyph 0 (none) is never looked up
+    glyphs = list(raw.glyphIndexesForString(ideographs))
+    by_glyph = dict(zip(reversed(glyphs), reversed(ideographs)))
+    drawn = dict(zip(ideographs, glyphs))
     out = {}
     for char, glyph in zip(radicals, raw.glyphIndexesForString(radicals)):
         if not glyph:
             continue                                    # not this font's: NFKC decides
         folded = unicodedata.normalize("NFKC", char)
-        if _same_glyph(raw, folded, glyph):
+        if drawn.get(folded) == glyph:
             out[char] = folded                          # Unicode's own equivalent, as drawn
         else:
             out[char] = by_glyph.get(glyph, char)       # a glyph of its own: the radical itself
     return out
 
 
-def _same_glyph(raw, char: str, glyph: int) -> bool:
-    return len(char) == 1 and not is_radical(char) and list(raw.glyphIndexesForString(char)) == [glyph]
-
-
-def ideograph_of(char: str) -> str:
+def ideograph_of(char: str, table: dict[str, str] | None = None) -> str:
     """The unified ideograph a radical ``char`` stands for in printed text; other
-    characters unchanged."""
+    characters unchanged. ``table``: :func:`radical_ideographs`, looked up once by a caller
+    with many characters."""
     if not is_radical(char):
         return char
-    found = radical_ideographs().get(char)
+    found = (radical_ideographs() if table is None else table).get(char)
     if found is not None:
         return found
     folded = unicodedata.normalize("NFKC", char)
@@ -138,7 +136,10 @@ def write_cmap(mapping: dict[int, str], width: int) -> bytes:
 def repaired_cmap(data: bytes) -> bytes | None:
     """``data`` with every radical mapped to its ideograph, or None when it has none."""
     mapping, width = parse_cmap(data)
-    fixed = {code: "".join(ideograph_of(c) for c in text) for code, text in mapping.items()}
+    if not any(is_radical(c) for text in mapping.values() for c in text):
+        return None
+    table = radical_ideographs()
+    fixed = {code: "".join(ideograph_of(c, table) for c in text) for code, text in mapping.items()}
     return write_cmap(fixed, width) if fixed != mapping else None
 
 
@@ -163,5 +164,6 @@ def repair_text_layer(pdf: bytes) -> bytes:
         if not changed:
             return pdf
         out = io.BytesIO()
-        doc.save(out, deterministic_id=True)
+        # the PDF version is Qt's, so its XMP metadata needs no update (a fifth of the time)
+        doc.save(out, deterministic_id=True, fix_metadata_version=False)
         return out.getvalue()
