@@ -40,29 +40,31 @@ def file_words(path) -> set[str]:
         return set()
 
 
-@pytest.mark.parametrize("name", sorted(CASES))
-def test_a_refused_file_is_refused_in_chinese(document, tmp_path, name):
-    path = build_case(name, tmp_path)
+def failure(document, action) -> str:
+    """The one message ``action()`` makes the document fail with."""
     said = []
     document.failed.connect(said.append)
     try:
-        assert not document.open_path(str(path))
+        assert not action()
     finally:
         document.failed.disconnect(said.append)
+    assert len(said) == 1
+    return said[0]
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_a_refused_file_is_refused_in_chinese(document, tmp_path, name):
+    path = build_case(name, tmp_path)
+    said = [failure(document, lambda: document.open_path(str(path)))]
     assert len(said) == 1 and said[0].startswith("无法打开")
     assert english_words(said[0], words_of(str(path)) | file_words(path) | MODES) == [], said[0]
 
 
 def test_a_save_into_a_missing_folder_fails_in_chinese(document, tmp_path):
     path = tmp_path / "missing" / "a.shaper.json"
-    said = []
-    document.failed.connect(said.append)
-    try:
-        assert not document.save_to(str(path))
-    finally:
-        document.failed.disconnect(said.append)
-    assert len(said) == 1 and str(path) in said[0]
-    assert english_words(said[0], words_of(str(path))) == [], said[0]
+    said = failure(document, lambda: document.save_to(str(path)))
+    assert str(path) in said
+    assert english_words(said, words_of(str(path))) == [], said
 
 
 @pytest.mark.parametrize("number", [errno.ENOSPC, errno.EACCES, errno.EROFS, errno.EDQUOT])
@@ -74,10 +76,5 @@ def test_a_failed_save_says_why_in_chinese(document, tmp_path, monkeypatch, numb
         raise WriteError(path, OSError(number, os.strerror(number)))
     monkeypatch.setattr("shaperapp.design.document.save_design", full)
     path = tmp_path / "a.shaper.json"
-    said = []
-    document.failed.connect(said.append)
-    try:
-        assert not document.save_to(str(path))
-    finally:
-        document.failed.disconnect(said.append)
-    assert english_words(said[0], words_of(str(path))) == [], said[0]
+    said = failure(document, lambda: document.save_to(str(path)))
+    assert english_words(said, words_of(str(path))) == [], said
