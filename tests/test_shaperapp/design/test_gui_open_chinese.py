@@ -55,9 +55,9 @@ def failure(document, action) -> str:
 @pytest.mark.parametrize("name", sorted(CASES))
 def test_a_refused_file_is_refused_in_chinese(document, tmp_path, name):
     path = build_case(name, tmp_path)
-    said = [failure(document, lambda: document.open_path(str(path)))]
-    assert len(said) == 1 and said[0].startswith("无法打开")
-    assert english_words(said[0], words_of(str(path)) | file_words(path) | MODES) == [], said[0]
+    said = failure(document, lambda: document.open_path(str(path)))
+    assert said.startswith("无法打开")
+    assert english_words(said, words_of(str(path)) | file_words(path) | MODES) == [], said
 
 
 def test_a_save_into_a_missing_folder_fails_in_chinese(document, tmp_path):
