@@ -39,7 +39,13 @@ DEFAULT_FILE_STEP = 1.0
 
 
 class _Refused(ValueError):
-    """A JSON literal the parser must not turn into a value (NaN, 1e999, a 400-digit int)."""
+    """A JSON literal the parser must not turn into a value (NaN, 1e999, a 400-digit int):
+    the reason (a key of FILE_REASONS) and what it quotes."""
+
+    def __init__(self, reason: str, value: object) -> None:
+        super().__init__(reason)
+        self.reason = reason
+        self.value = value
 
 
 def load_design(path: str | os.PathLike) -> dict[str, Any]:
@@ -52,26 +58,26 @@ def load_design(path: str | os.PathLike) -> dict[str, Any]:
     return parse_design(_read_limited(name), name)
 
 
-def parse_design(raw: bytes, name: str) -> dict[str, Any]:
+def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, Any]:
     """The rules of :func:`load_design` for a document given as bytes (the design
-    library keeps documents in a database); ``name`` names its source in messages."""
+    library keeps documents in a database); ``name`` names its source in messages,
+    ``entry`` the library entry it is (FileFormatError.entry)."""
     if len(raw) > MAX_FILE_BYTES:
-        raise FileFormatError(f"{name} is larger than {MAX_FILE_BYTES // 1_000_000} MB, "
-                              "too large to be a design file")
-    doc = _parse(raw, name)
+        raise FileFormatError("too_large", name, MAX_FILE_BYTES // 1_000_000, entry=entry)
+    doc = _parse(raw, name, entry)
     if not isinstance(doc, dict) or doc.get("format") != FILE_FORMAT:
-        raise FileFormatError(f"{name} is not a shaper design file")
+        raise FileFormatError("not_design", name, entry=entry)
     version = doc.get("version")
     if type(version) is not int or version != FILE_VERSION:
-        shown = "missing" if "version" not in doc else json.dumps(version)[:40]
-        raise FileFormatError(f"{name} has an unsupported version ({shown}); "
-                              f"this program reads version {FILE_VERSION}")
+        if "version" not in doc:
+            raise FileFormatError("no_version", name, FILE_VERSION, entry=entry)
+        raise FileFormatError("version", name, json.dumps(version)[:40], FILE_VERSION, entry=entry)
     if "spec" not in doc:
-        raise FileFormatError(f"{name} holds no design (its 'spec' entry is missing)")
+        raise FileFormatError("no_spec", name, entry=entry)
     try:
-        spec = _spec(doc["spec"], name)
-        rpm = _rpms(doc.get("rpm", list(DEFAULT_FILE_RPMS)), name)
-        step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name)
+        spec = _spec(doc["spec"], name, entry)
+        rpm = _rpms(doc.get("rpm", list(DEFAULT_FILE_RPMS)), name, entry)
+        step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name, entry)
         masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
         if "cam" in doc:            # validated here, kept as written (older files have none)
             from .cam.file import cam_from_dict     # the cam's modules: only for a file with one
@@ -79,7 +85,7 @@ def parse_design(raw: bytes, name: str) -> dict[str, Any]:
     except FileFormatError:
         raise
     except (DesignError, ArithmeticError, ValueError) as exc:   # never a traceback
-        raise FileFormatError(f"{name}: invalid design ({_shorten(str(exc))})") from None
+        raise FileFormatError("invalid", name, _shorten(str(exc)), entry=entry, cause=exc) from None
     result = dict(doc)
     result.update(spec=spec, rpm=rpm, step_deg=step, masses=masses)
     return result
@@ -96,14 +102,14 @@ def _read_limited(name: str) -> bytes:
     try:
         info = os.stat(name)
     except OSError as exc:
-        raise FileFormatError(f"cannot read {name}: {exc.strerror or exc}") from None
+        raise FileFormatError("unreadable", name, exc.strerror or exc, errno=exc.errno) from None
     _require_regular(info, name)
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) \
         | getattr(os, "O_BINARY", 0)
     try:
         fd = os.open(name, flags)
     except OSError as exc:
-        raise FileFormatError(f"cannot read {name}: {exc.strerror or exc}") from None
+        raise FileFormatError("unreadable", name, exc.strerror or exc, errno=exc.errno) from None
     try:
         _require_regular(os.fstat(fd), name)      # swapped for a FIFO after the stat?
         chunks, size = [], 0
@@ -115,24 +121,22 @@ def _read_limited(name: str) -> bytes:
             size += len(chunk)
     except OSError as exc:
         if exc.errno in (errno.EAGAIN, errno.EWOULDBLOCK):
-            raise FileFormatError(f"{name} is not a regular file") from None
-        raise FileFormatError(f"cannot read {name}: {exc.strerror or exc}") from None
+            raise FileFormatError("not_regular", name) from None
+        raise FileFormatError("unreadable", name, exc.strerror or exc, errno=exc.errno) from None
     finally:
         os.close(fd)
     if size > MAX_FILE_BYTES:
-        raise FileFormatError(f"{name} is larger than {MAX_FILE_BYTES // 1_000_000} MB, "
-                              "too large to be a design file")
+        raise FileFormatError("too_large", name, MAX_FILE_BYTES // 1_000_000)
     return b"".join(chunks)
 
 
 def _require_regular(info: os.stat_result, name: str) -> None:
     if stat.S_ISDIR(info.st_mode):
-        raise FileFormatError(f"{name} is a folder, not a design file")
+        raise FileFormatError("folder", name)
     if not stat.S_ISREG(info.st_mode):
-        raise FileFormatError(f"{name} is not a regular file (a device, pipe or socket)")
+        raise FileFormatError("special", name)
     if info.st_size > MAX_FILE_BYTES:
-        raise FileFormatError(f"{name} is larger than {MAX_FILE_BYTES // 1_000_000} MB, "
-                              "too large to be a design file")
+        raise FileFormatError("too_large", name, MAX_FILE_BYTES // 1_000_000)
 
 
 _STRING = re.compile(rb'"(?:[^"\\]|\\.)*"', re.DOTALL)
@@ -148,36 +152,36 @@ def _nesting_depth(raw: bytes) -> int:
     return int(np.cumsum(step).max(initial=0))
 
 
-def _parse(raw: bytes, name: str) -> object:
+def _parse(raw: bytes, name: str, entry: str | None) -> object:
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise FileFormatError(f"{name} is not a design file (not UTF-8 text)") from None
+        raise FileFormatError("not_utf8", name, entry=entry) from None
     if _nesting_depth(raw) > MAX_DEPTH:
-        raise FileFormatError(f"{name} is not a design file (nested more than {MAX_DEPTH} levels deep)")
+        raise FileFormatError("too_deep", name, MAX_DEPTH, entry=entry)
     try:
         return json.loads(text, parse_constant=_refuse_constant, parse_int=_parse_int,
                           parse_float=_parse_float)
     except _Refused as exc:
-        raise FileFormatError(f"{name} is not a design file ({exc})") from None
+        raise FileFormatError(exc.reason, name, exc.value, entry=entry) from None
     except (json.JSONDecodeError, ValueError, RecursionError):
-        raise FileFormatError(f"{name} is not a design file (not valid JSON)") from None
+        raise FileFormatError("not_json", name, entry=entry) from None
 
 
 def _refuse_constant(literal: str) -> float:
-    raise _Refused(f"{literal} is not a number a design may hold")
+    raise _Refused("constant", literal)
 
 
 def _parse_int(literal: str) -> int:
     if len(literal.lstrip("-")) > MAX_INT_DIGITS:
-        raise _Refused(f"an integer of {len(literal.lstrip('-'))} digits is too large")
+        raise _Refused("long_integer", len(literal.lstrip("-")))
     return int(literal)
 
 
 def _parse_float(literal: str) -> float:
     value = float(literal)
     if not math.isfinite(value):
-        raise _Refused(f"{literal[:20]} is too large a number")
+        raise _Refused("huge_number", literal[:20])
     return value
 
 
@@ -187,27 +191,27 @@ def _is_number(value: object) -> bool:
     return type(value) in (int, float)
 
 
-def _spec(data: object, name: str) -> Spec:
+def _spec(data: object, name: str, entry: str | None) -> Spec:
     if not isinstance(data, dict):
-        raise FileFormatError(f"{name}: 'spec' must be an object of design fields")
+        raise FileFormatError("spec_type", name, entry=entry)
     spec = Spec.from_dict(data)
     spec.check_fields()      # inactive fields too: what is saved must reopen in any mode
     spec.design()
     return spec
 
 
-def _rpms(data: object, name: str) -> list[float]:
+def _rpms(data: object, name: str, entry: str | None) -> list[float]:
     if not isinstance(data, list) or not data:
-        raise FileFormatError(f"{name}: 'rpm' must be a list of crank speeds in r/min")
+        raise FileFormatError("rpm_type", name, entry=entry)
     for value in data:
         if not _is_number(value):
-            raise FileFormatError(f"{name}: crank speed {json.dumps(value)[:40]} is not a number")
+            raise FileFormatError("rpm_value", name, json.dumps(value)[:40], entry=entry)
     return [float(v) for v in check_rpms(data)]   # core's bounds, floor included
 
 
-def _step(value: object, name: str) -> float:
+def _step(value: object, name: str, entry: str | None) -> float:
     if not _is_number(value):
-        raise FileFormatError(f"{name}: 'step_deg' must be a number of degrees")
+        raise FileFormatError("step_type", name, entry=entry)
     angle_count(float(value))      # core's bounds, without building the angles
     return float(value)
 

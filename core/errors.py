@@ -24,8 +24,53 @@ class DesignError(ValueError):
         super().__init__(f"{parameter} = {_fmt(value)}: {allowed}")
 
 
+# Why a design file is refused: core's English sentence for each reason ({name} the file,
+# {0}, {1} … the values). A front end in another language keys its own sentences on the
+# reason (shaperapp/widgets/messages.py), so it never has to parse this text.
+FILE_REASONS = {
+    "too_large": "{name} is larger than {0} MB, too large to be a design file",
+    "not_design": "{name} is not a shaper design file",
+    "version": "{name} has an unsupported version ({0}); this program reads version {1}",
+    "no_version": "{name} has an unsupported version (missing); this program reads version {0}",
+    "no_spec": "{name} holds no design (its 'spec' entry is missing)",
+    "invalid": "{name}: invalid design ({0})",
+    "unreadable": "cannot read {name}: {0}",
+    "not_regular": "{name} is not a regular file",
+    "folder": "{name} is a folder, not a design file",
+    "special": "{name} is not a regular file (a device, pipe or socket)",
+    "not_utf8": "{name} is not a design file (not UTF-8 text)",
+    "too_deep": "{name} is not a design file (nested more than {0} levels deep)",
+    "not_json": "{name} is not a design file (not valid JSON)",
+    "constant": "{name} is not a design file ({0} is not a number a design may hold)",
+    "long_integer": "{name} is not a design file (an integer of {0} digits is too large)",
+    "huge_number": "{name} is not a design file ({0} is too large a number)",
+    "spec_type": "{name}: 'spec' must be an object of design fields",
+    "rpm_type": "{name}: 'rpm' must be a list of crank speeds in r/min",
+    "rpm_value": "{name}: crank speed {0} is not a number",
+    "step_type": "{name}: 'step_deg' must be a number of degrees",
+}
+
+
 class FileFormatError(ValueError):
-    """A design file that cannot be read; the current design stays untouched."""
+    """A design file that cannot be read; the current design stays untouched.
+
+    ``reason`` is a key of ``FILE_REASONS``, ``name`` the file as the user named it,
+    ``entry`` the design library entry's name when the document is one, ``values`` what
+    the sentence quotes, ``cause`` the DesignError of an invalid design and ``errno``
+    the system's error number of an unreadable file: a front end can say it all in its
+    own language. ``str()`` is the English sentence (the CLI's). A single text that is
+    not a reason is kept as the message, with ``reason`` empty.
+    """
+
+    def __init__(self, reason: str, name: str = "", *values: object, entry: str | None = None,
+                 cause: Exception | None = None, errno: int | None = None) -> None:
+        self.reason = reason if reason in FILE_REASONS else ""
+        self.name = name
+        self.values = tuple(str(v) for v in values)
+        self.entry = entry
+        self.cause = cause
+        self.errno = errno
+        super().__init__(FILE_REASONS[reason].format(*self.values, name=name) if self.reason else reason)
 
 
 # errno → a plain reason; anything else keeps the system's own wording.

@@ -4004,6 +4004,30 @@
         <translation>推程起点曲柄转角</translation>
     </message>
     <message>
+        <source>Input</source>
+        <translation>输入方式</translation>
+    </message>
+    <message>
+        <source>Ram drive</source>
+        <translation>滑枕驱动方式</translation>
+    </message>
+    <message>
+        <source>Guide height</source>
+        <translation>导路高度</translation>
+    </message>
+    <message>
+        <source>Rod given as</source>
+        <translation>连杆给定方式</translation>
+    </message>
+    <message>
+        <source>Loads</source>
+        <translation>载荷</translation>
+    </message>
+    <message>
+        <source>Feed cam</source>
+        <translation>进给凸轮</translation>
+    </message>
+    <message>
         <source>must be greater than %1 and at most %2 %3</source>
         <translation>须大于 %1 且不大于 %2 %3</translation>
     </message>
@@ -4124,8 +4148,168 @@
         <translation>校核凸轮须同时给出基圆半径和中心距</translation>
     </message>
     <message>
+        <source>is not a design field</source>
+        <translation>不是设计参数</translation>
+    </message>
+    <message>
+        <source>is not a load input</source>
+        <translation>不是载荷参数</translation>
+    </message>
+    <message>
+        <source>is not a cam field</source>
+        <translation>不是凸轮参数</translation>
+    </message>
+    <message>
+        <source>must be text</source>
+        <translation>须为文字</translation>
+    </message>
+    <message>
+        <source>must be true or false</source>
+        <translation>须为“是”或“否”（布尔值）</translation>
+    </message>
+    <message>
+        <source>must be an object of load inputs</source>
+        <translation>须为一组载荷参数</translation>
+    </message>
+    <message>
+        <source>must be an object of cam inputs</source>
+        <translation>须为一组凸轮参数</translation>
+    </message>
+    <message>
+        <source>must be one of %1</source>
+        <translation>须为下列之一：%1</translation>
+    </message>
+    <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MB, too large to be a design file</source>
+        <translation>%1 大于 %2 MB，不可能是设计文件</translation>
+    </message>
+    <message>
+        <source>%1 is not a shaper design file</source>
+        <translation>%1 不是本程序的设计文件</translation>
+    </message>
+    <message>
+        <source>%1 has an unsupported version (%2); this program reads version %3</source>
+        <translation>%1 的版本不受支持（%2）；本程序读取第 %3 版</translation>
+    </message>
+    <message>
+        <source>%1 has no version; this program reads version %2</source>
+        <translation>%1 没有版本号；本程序读取第 %2 版</translation>
+    </message>
+    <message>
+        <source>%1 holds no design (its &apos;spec&apos; entry is missing)</source>
+        <translation>%1 中没有设计（缺少设计参数）</translation>
+    </message>
+    <message>
+        <source>%1: invalid design (%2)</source>
+        <translation>%1：设计无效（%2）</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is not a regular file</source>
+        <translation>%1 不是普通文件</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a design file</source>
+        <translation>%1 是文件夹，不是设计文件</translation>
+    </message>
+    <message>
+        <source>%1 is not a regular file (a device, pipe or socket)</source>
+        <translation>%1 不是普通文件（而是设备、管道或套接字）</translation>
+    </message>
+    <message>
+        <source>%1 is not a design file (not UTF-8 text)</source>
+        <translation>%1 不是设计文件（不是 UTF-8 文本）</translation>
+    </message>
+    <message>
+        <source>%1 is not a design file (nested more than %2 levels deep)</source>
+        <translation>%1 不是设计文件（嵌套超过 %2 层）</translation>
+    </message>
+    <message>
+        <source>%1 is not a design file (not valid JSON)</source>
+        <translation>%1 不是设计文件（不是有效的 JSON）</translation>
+    </message>
+    <message>
+        <source>%1 is not a design file (%2 is not a number a design may hold)</source>
+        <translation>%1 不是设计文件（%2 不是设计中可用的数值）</translation>
+    </message>
+    <message>
+        <source>%1 is not a design file (an integer of %2 digits is too large)</source>
+        <translation>%1 不是设计文件（%2 位的整数过大）</translation>
+    </message>
+    <message>
+        <source>%1 is not a design file (%2 is too large a number)</source>
+        <translation>%1 不是设计文件（数值 %2 过大）</translation>
+    </message>
+    <message>
+        <source>%1: &apos;spec&apos; must be an object of design fields</source>
+        <translation>%1：设计参数须为一组设计字段</translation>
+    </message>
+    <message>
+        <source>%1: &apos;rpm&apos; must be a list of crank speeds in r/min</source>
+        <translation>%1：曲柄转速须为以 r/min 计的一列数值</translation>
+    </message>
+    <message>
+        <source>%1: crank speed %2 is not a number</source>
+        <translation>%1：曲柄转速 %2 不是数值</translation>
+    </message>
+    <message>
+        <source>%1: &apos;step_deg&apos; must be a number of degrees</source>
+        <translation>%1：角度步长须为以度计的数值</translation>
+    </message>
+    <message>
+        <source>the disk is full (no space left on the device)</source>
+        <translation>磁盘已满（设备上没有剩余空间）</translation>
+    </message>
+    <message>
+        <source>the disk quota is exhausted</source>
+        <translation>磁盘配额已用完</translation>
+    </message>
+    <message>
+        <source>the file system is read-only</source>
+        <translation>文件系统为只读</translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation>文件不存在</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>没有权限</translation>
+    </message>
+    <message>
+        <source>the folder does not exist</source>
+        <translation>文件夹不存在</translation>
+    </message>
+    <message>
+        <source>too many levels of symbolic links</source>
+        <translation>符号链接层数过多</translation>
+    </message>
+    <message>
+        <source>the name is too long</source>
+        <translation>名称过长</translation>
+    </message>
+    <message>
+        <source>a part of the path is not a folder</source>
+        <translation>路径中有一部分不是文件夹</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>它是文件夹</translation>
+    </message>
+    <message>
+        <source>an input/output error</source>
+        <translation>输入/输出错误</translation>
+    </message>
+    <message>
+        <source>library entry “%1”</source>
+        <translation>设计库条目“%1”</translation>
     </message>
 </context>
 <context>

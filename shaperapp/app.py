@@ -59,6 +59,8 @@ def main(argv: list[str] | None = None) -> int:
     from shaperapp.widgets.style import configure_plots
     configure_plots()
     app = QApplication.instance() or QApplication(sys.argv[:1])
+    from shaperapp.widgets.fonts import prefer_simplified_chinese
+    prefer_simplified_chinese()          # before any text is laid out (see its docstring)
     app.setApplicationName("shaperapp")
     app.setOrganizationName("ShaperDesigner")
     app.setApplicationDisplayName("Shaper Designer")

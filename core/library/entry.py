@@ -36,7 +36,7 @@ class Entry:
 
     def document(self) -> dict[str, Any]:
         """The validated design (keys of ``core.io.load_design``); FileFormatError if bad."""
-        return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}")
+        return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}", self.name)
 
 
 def document_text(loaded: dict[str, Any]) -> str:
@@ -61,7 +61,7 @@ def document_text(loaded: dict[str, Any]) -> str:
 
 def check_document(name: str, text: str) -> None:
     """Refuse (FileFormatError) a stored document a design file could not be."""
-    parse_design(text.encode("utf-8"), f"library entry {name!r}")
+    parse_design(text.encode("utf-8"), f"library entry {name!r}", name)
 
 
 def distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:

@@ -39,15 +39,16 @@ def expand_paths(paths: Iterable[str | os.PathLike]) -> list[Path]:
 
 
 def read_design_files(paths: Iterable[str | os.PathLike]) -> tuple[list[tuple[Path, dict[str, Any]]],
-                                                                    list[tuple[Path, str]]]:
-    """Load and validate every file: ([(path, design)], [(path, why refused)])."""
+                                                                    list[tuple[Path, FileFormatError]]]:
+    """Load and validate every file: ([(path, design)], [(path, why refused)]); ``why`` is
+    the FileFormatError, whose text is core's sentence and whose reason a GUI translates."""
     good: list[tuple[Path, dict[str, Any]]] = []
-    bad: list[tuple[Path, str]] = []
+    bad: list[tuple[Path, FileFormatError]] = []
     for path in expand_paths(paths):
         try:
             good.append((path, load_design(path)))
         except FileFormatError as exc:
-            bad.append((path, str(exc)))
+            bad.append((path, exc))
     return good, bad
 
 
@@ -79,7 +80,9 @@ class Exported:
     """What :func:`export_entries` wrote, and the entries it left out with why."""
 
     paths: tuple[Path, ...]
-    skipped: tuple[tuple[str, str], ...]      # (entry name, why it cannot be exported)
+    skipped: tuple[tuple[str, LibraryError | FileFormatError], ...]
+    """(entry name, why it cannot be exported): the error, whose text is core's sentence
+    and whose fields a GUI says in its language."""
 
 
 def export_entries(library: Library, folder: str | os.PathLike,
@@ -96,7 +99,7 @@ def export_entries(library: Library, folder: str | os.PathLike,
     """
     folder = Path(folder)
     texts: list[tuple[str, str]] = []        # (file name, text)
-    skipped: list[tuple[str, str]] = []
+    skipped: list[tuple[str, LibraryError | FileFormatError]] = []
     used = {p.name for p in folder.iterdir()} if folder.is_dir() else set()
     for name in (library.names() if names is None else list(names)):
         try:
@@ -105,7 +108,7 @@ def export_entries(library: Library, folder: str | os.PathLike,
         except (LibraryError, FileFormatError) as exc:
             if isinstance(exc, LibraryError) and exc.kind not in ("entry", "missing"):
                 raise
-            skipped.append((name, str(exc)))
+            skipped.append((name, exc))
             continue
         stem = unique_name(safe_file_name(name), {n[:-len(DESIGN_SUFFIX)] for n in used
                                                   if n.endswith(DESIGN_SUFFIX)})

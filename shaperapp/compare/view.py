@@ -23,7 +23,7 @@ from core.library.names import file_stem, unique_name
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.figure_labels import figure_label, figure_tip, format_figure
 from shaperapp.widgets.image_export import export_painting
-from shaperapp.widgets.messages import describe
+from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
 
 from .plots import COLOURS, ComparePlots
 
@@ -122,7 +122,7 @@ class CompareView(QWidget):
         try:
             doc = load_design(path)
         except FileFormatError as exc:
-            self._fail(self.tr("Could not open the design: %1").replace("%1", str(exc)))
+            self._fail(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
             return False
         return self.add_candidate(Candidate(file_stem(path), doc["spec"], doc["masses"]))
 
@@ -269,7 +269,7 @@ class CompareView(QWidget):
             self.export_csv(path) if kind == "csv" else self.export_image(path)
         except OSError as exc:
             self._fail(self.tr("Could not write %1: %2").replace("%1", path)
-                       .replace("%2", exc.strerror or str(exc)))
+                       .replace("%2", describe_os_error(exc)))
 
     def _fail(self, message: str) -> None:
         QMessageBox.warning(self, self.tr("Compare designs"), message)

@@ -17,7 +17,7 @@ from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_
 from core.spec import Spec
 
 from shaperapp.widgets import file_dialogs
-from shaperapp.widgets.messages import describe
+from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
 
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
 from .model import DesignModel
@@ -47,7 +47,7 @@ class Document(QObject):
             self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
                                    masses=doc["masses"], parts={"cam": doc.get("cam")})
         except FileFormatError as exc:
-            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
             return False
         except DesignError as exc:
             self.failed.emit(self.tr("Could not open %1: %2").replace("%1", path).replace("%2", describe(exc)))
@@ -64,7 +64,7 @@ class Document(QObject):
                         extra={"forces": masses_to_dict(model.masses), **model.saved_parts()})
         except OSError as exc:
             self.failed.emit(self.tr("Could not save %1: %2").replace("%1", path)
-                             .replace("%2", exc.strerror or str(exc)))
+                             .replace("%2", describe_os_error(exc)))
             return False
         if model.inputs_valid:
             model.set_clean(os.path.abspath(path))
@@ -99,7 +99,7 @@ class Document(QObject):
         try:
             write_scheme(self._model.design, self._model.crank_deg, path)
         except (OSError, DxfAuditError) as exc:
-            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+            reason = describe_os_error(exc) if isinstance(exc, OSError) else str(exc)
             self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path).replace("%2", reason))
             return False
         return True
@@ -109,7 +109,7 @@ class Document(QObject):
             atomic_write(path, text)
         except OSError as exc:
             self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path)
-                             .replace("%2", exc.strerror or str(exc)))
+                             .replace("%2", describe_os_error(exc)))
             return False
         return True
 

@@ -24,7 +24,7 @@ from core.positions import DEFAULT_COUNT
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
-from shaperapp.widgets.messages import failure_reason
+from shaperapp.widgets.messages import describe_os_error, failure_reason
 
 from .content import SHEET_SUFFIXES, SheetChoice, build_sheet
 from .render import paint_sheet, write_sheet
@@ -219,7 +219,7 @@ class DrawingSheetDialog(QDialog):
                               "Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
         except OSError as exc:
             failure = self.tr("Could not write %1: %2").replace("%1", path).replace(
-                "%2", exc.strerror or str(exc))
+                "%2", describe_os_error(exc))
         except Exception as exc:        # the sheet could not be built: say why, write nothing
             failure = self.tr("The sheet cannot be drawn: %1. Nothing was written.").replace(
                 "%1", failure_reason(exc))

@@ -21,6 +21,7 @@ from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
 from core.drawing.sheet import Circle, Polyline, Sheet, Text
 
 from shaperapp.widgets.fonts import report_font
+from shaperapp.widgets.pdf_text import repair_text_layer
 
 PDF_RESOLUTION = 1200          # dots per inch of the PDF's coordinates
 SVG_UNITS_PER_MM = 10.0        # SVG user units per mm (viewBox in mm: width="841mm")
@@ -93,7 +94,8 @@ def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QF
 
 
 def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
-    """The sheet as a one-page PDF of exactly its paper size."""
+    """The sheet as a one-page PDF of exactly its paper size, its text layer repaired
+    (``pdf_text``: the Chinese in it is searchable)."""
     data = QByteArray()
     buffer = QBuffer(data)
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
@@ -110,7 +112,7 @@ def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     paint_sheet(sheet, painter, language)
     painter.end()
     buffer.close()
-    return bytes(data.data())
+    return repair_text_layer(bytes(data.data()))
 
 
 def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:

@@ -9,6 +9,8 @@ context, "ExploreView", so the catalogue keeps its entries.
 """
 from __future__ import annotations
 
+from typing import Callable
+
 from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtWidgets import QCheckBox, QComboBox, QGridLayout, QGroupBox, QLabel, QPushButton, QWidget
 
@@ -35,6 +37,7 @@ class OptimizeBox(QGroupBox):
         self.optimum = QLabel()
         self.optimum.setWordWrap(True)
         self.optimum.setVisible(False)
+        self._message: Callable[[], str] = str     # the optimizer's message, made in the current language
         grid = QGridLayout(self)
         grid.addWidget(self._label, 0, 0)
         grid.addWidget(self.objective, 0, 1)
@@ -58,9 +61,14 @@ class OptimizeBox(QGroupBox):
         self.undo_proposal.setText(translate("ExploreView", "Undo proposal"))
         self.undo_proposal.setToolTip(translate(
             "ExploreView", "Back to the design before Optimize (Edit › Undo does the same)"))
+        self.say(self._message)
 
-    def say(self, text: str) -> None:
-        """The optimizer's message, hidden (no empty line under the map) when there is none."""
+    def say(self, message: Callable[[], str]) -> None:
+        """Show the optimizer's message, hidden (no empty line under the map) when there is
+        none. ``message`` makes the text, and makes it again in the new language when the
+        language changes (``retranslate``): a text made once stayed in the old one."""
+        self._message = message
+        text = message()
         self.optimum.setText(text)
         self.optimum.setVisible(bool(text))
 

@@ -285,18 +285,19 @@ class ExploreView(QWidget):
         bounds = {name: (float(v[0]), float(v[-1])) for name, v, box in
                   ((x_name, x, self.box.free[0]), (y_name, y, self.box.free[1])) if box.isChecked()}
         if not bounds or x_name == y_name:
-            self.box.say(self.tr("Choose one or two different free parameters."))
+            self.box.say(lambda: self.tr("Choose one or two different free parameters."))
             return
         objective = self.box.objective.currentData()
         masses = self.model.masses if FIGURES[objective][1] else None
         job = OptimizeJob(self.model.valid_spec, bounds, objective, self.model.rpms, masses)
-        self.box.say("")
+        self.box.say(str)
         self._start(job, self.tr("Optimizing…"), busy=True)
 
     def _optimum_done(self, job: OptimizeJob, best) -> None:
         """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum)."""
         values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
-        self.box.say(explore_names.proposal_text(values, value, best, on_bounds(best, job.bounds)))
+        ends = on_bounds(best, job.bounds)
+        self.box.say(lambda: explore_names.proposal_text(values, value, best, ends))
         self.status.setText(self._map_status())       # no longer "Optimizing…"
         self.model.set_spec(**spec_changes(values))   # one step on the undo stack
         self.box.proposal_loaded()

@@ -26,7 +26,7 @@ from core.library.backup import backup_copy
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.messages import describe
+from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
 
 
 class _Swap(QUndoCommand):
@@ -142,7 +142,7 @@ class LibraryActions(QObject):
             self._push(self.tr("Delete %1 design(s)").replace("%1", str(len(entries))), entries, [])
         return bool(names) and self._run(work)
 
-    def import_paths(self, paths: Sequence[str | os.PathLike]) -> tuple[list[str], list[tuple[Path, str]]]:
+    def import_paths(self, paths: Sequence[str | os.PathLike]) -> tuple[list[str], list[tuple[Path, FileFormatError]]]:
         """Import design files and folders (names taken get ``name (2)``…); returns the
         imported names and the refused files with why. Undo removes them all."""
         good, bad = read_design_files(paths)
@@ -194,18 +194,19 @@ class LibraryActions(QObject):
 
     def export_all(self, folder: str) -> bool:
         """Every design into ``folder``, all or nothing; damaged entries are left out and named."""
-        skipped: list[tuple[str, str]] = []
+        skipped: list[tuple[str, LibraryError | FileFormatError]] = []
         done = self._export(lambda lib: skipped.extend(export_entries(lib, folder).skipped), folder)
         if done and skipped:
-            self.failed.emit(self.tr("These designs are damaged and were not exported:") + "\n"
-                             + "\n".join(f"{name}: {why}" for name, why in skipped[:20]))
+            self.failed.emit(self.tr("These designs are damaged and were not exported:") + "\n" + "\n".join(
+                f"{name}: {describe_file_error(why) if isinstance(why, FileFormatError) else self.message(why)}"
+                for name, why in skipped[:20]))
         return done
 
     def _export(self, work, path: str) -> bool:
         try:
             return self._run(work)
         except (OSError, FileFormatError) as exc:
-            detail = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+            detail = describe_os_error(exc) if isinstance(exc, OSError) else describe_file_error(exc)
             self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path).replace("%2", detail))
             return False
 
@@ -218,7 +219,7 @@ class LibraryActions(QObject):
             doc = self.library.load(name)
             figures(doc["spec"], doc["rpm"], doc["masses"])
         except FileFormatError as exc:
-            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", str(exc)))
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
             return False
         except DesignError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe(exc)))
@@ -245,7 +246,7 @@ class LibraryActions(QObject):
             try:
                 doc = self.library.load(name)  # type: ignore[union-attr]
             except (FileFormatError, LibraryError) as exc:
-                self.failed.emit(str(exc) if isinstance(exc, FileFormatError) else self.message(exc))
+                self.failed.emit(describe_file_error(exc) if isinstance(exc, FileFormatError) else self.message(exc))
                 continue
             out.append(Candidate(name, doc["spec"], doc["masses"]))
         return out

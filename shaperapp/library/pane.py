@@ -20,6 +20,7 @@ from core.compare import MAX_DESIGNS
 from core.library.store import LibraryError, resolve_path
 
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.messages import describe_file_error
 
 from .actions import LibraryActions
 from .dialogs import SaveDialog, ask_refused_library
@@ -284,7 +285,7 @@ class LibraryPane(QWidget):
         text = self.tr("Imported %1 design(s).").replace("%1", str(len(names)))
         if refused:
             text += "\n\n" + self.tr("These files were not imported:") + "\n" + "\n".join(
-                f"{p.name}: {why}" for p, why in refused[:20])
+                f"{p.name}: {describe_file_error(why)}" for p, why in refused[:20])
             QMessageBox.warning(self, self.tr("Design library"), text)
         else:
             self.message_label.setText(text)

@@ -30,7 +30,7 @@ from .command import report_kind, write_report
 from .content import Options, build, default_diagram_angles, inputs_name
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.command_line import plain_text, printable_labels
-from shaperapp.widgets.messages import failure_reason
+from shaperapp.widgets.messages import describe_os_error, failure_reason
 
 translate = QCoreApplication.translate
 
@@ -184,7 +184,7 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
                             "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
     except OSError as exc:
         failure = translate("ReportOptionsDialog", "Could not write %1: %2").replace("%1", path) \
-            .replace("%2", exc.strerror or str(exc))
+            .replace("%2", describe_os_error(exc))
     except Exception as exc:        # never to sys.excepthook: the reason, in a message
         failure = translate("ReportOptionsDialog", "The report cannot be made: %1. Nothing was "
                             "written.").replace("%1", failure_reason(exc))

@@ -105,8 +105,11 @@ def application():
     from PySide6.QtWidgets import QApplication
     from shaperapp.widgets.style import configure_plots
     configure_plots()
+    from shaperapp.widgets.fonts import prefer_simplified_chinese
     qInstallMessageHandler(_quiet)
-    return QApplication.instance() or QApplication(sys.argv[:1])
+    app = QApplication.instance() or QApplication(sys.argv[:1])
+    prefer_simplified_chinese()          # before any text is laid out (see its docstring)
+    return app
 
 
 def inputs_from_args(args: argparse.Namespace):

@@ -6,7 +6,7 @@ package to install instead.
 """
 from __future__ import annotations
 
-from PySide6.QtGui import QFont, QFontDatabase
+from PySide6.QtGui import QFont, QFontDatabase, QFontInfo, QGuiApplication
 
 PREFERRED_CJK = ("Noto Sans CJK SC", "Noto Sans SC", "Source Han Sans SC", "Source Han Sans CN",
                  "WenQuanYi Micro Hei", "WenQuanYi Zen Hei", "Microsoft YaHei", "PingFang SC",
@@ -16,6 +16,31 @@ PREFERRED_CJK = ("Noto Sans CJK SC", "Noto Sans SC", "Source Han Sans SC", "Sour
 PREFERRED_LATIN = ("DejaVu Sans", "Noto Sans", "Liberation Sans", "Arial", "Helvetica")
 INSTALL_HINT = ("no font with Chinese glyphs found; install one, e.g. 'apt-get install "
                 "fonts-noto-cjk' (Debian/Ubuntu) or 'dnf install google-noto-sans-cjk-fonts' (Fedora)")
+
+
+def prefer_simplified_chinese() -> None:
+    """Chinese characters in the application's font come from the Simplified Chinese family.
+
+    A font without Chinese glyphs (DejaVu Sans) falls back to whatever CJK font the
+    system's font configuration ranks first for the process's locale: under an
+    English or C locale that is Noto Sans CJK JP, whose Japanese forms differ from
+    the Chinese ones and some of whose glyphs got no entry in the text layer of Qt's
+    PDF (the report's plot labels 滑枕位移, 速度 … were missing from pdftotext's text). Qt
+    keeps the fallback of a font once the font is first used, so this runs right
+    after the QApplication is made (``app.main``, ``command_line.application``),
+    before any text is laid out. The Latin letters stay in the family they were in:
+    an alias (Qt's "Sans Serif") is substituted by the family it stood for, then the
+    Chinese one.
+    """
+    family = cjk_family() if QGuiApplication.instance() is not None else None
+    if family is None:
+        return
+    base = QGuiApplication.font()
+    resolved = QFontInfo(base).family()
+    for name, substitutes in ((base.family(), [resolved, family]), (resolved, [family])):
+        wanted = [s for s in substitutes if s != name and s not in QFont.substitutes(name)]
+        if wanted:
+            QFont.insertSubstitutions(name, wanted)
 
 
 class MissingFontError(RuntimeError):

@@ -27,6 +27,8 @@ from PySide6.QtWidgets import QGraphicsScene
 
 from core.atomic import atomic_write
 
+from .messages import describe_os_error
+
 EXPORT_WIDTH = 1600      # minimum width of an exported raster image, px
 
 
@@ -120,7 +122,7 @@ def export_painting(path: str | os.PathLike, size: QSizeF, paint: Paint, title: 
         atomic_write(path, data)      # the old picture or the whole new one
     except OSError as exc:
         raise OSError(exc.errno, QCoreApplication.translate(
-            "ImageExport", "could not write {0}: {1}").format(path, exc.strerror), str(path)) from exc
+            "ImageExport", "could not write {0}: {1}").format(path, describe_os_error(exc)), str(path)) from exc
 
 
 def painting_bytes(kind: str, size: QSizeF, paint: Paint, title: str,

@@ -5,11 +5,14 @@ translatable template, so the Chinese UI never shows an English sentence.
 """
 from __future__ import annotations
 
+import errno
+import os
 import re
 
 from PySide6.QtCore import QCoreApplication
 
-from core.errors import DesignError
+from core.errors import DesignError, FileFormatError
+from core.errors import os_reason as core_os_reason
 
 # Error text in the one weight every script has: a bold Latin run beside regular CJK
 # glyphs (fonts without a semi-bold CJK face) looked like two kinds of message.
@@ -56,8 +59,17 @@ def field_name(parameter: str) -> str:
         "base": QCoreApplication.translate("messages", "Base radius r0"),
         "distance": QCoreApplication.translate("messages", "Centre distance a"),
         "phase": QCoreApplication.translate("messages", "Phase of the rise"),
+        "mode": QCoreApplication.translate("messages", "Input"),
+        "variant": QCoreApplication.translate("messages", "Ram drive"),
+        "guide_rule": QCoreApplication.translate("messages", "Ram guide"),
+        "guide_height": QCoreApplication.translate("messages", "Guide height"),
+        "rod_input": QCoreApplication.translate("messages", "Rod given as"),
+        "rod_length": QCoreApplication.translate("messages", "Rod length L4"),
+        "forces": QCoreApplication.translate("messages", "Loads"),
+        "cam": QCoreApplication.translate("messages", "Feed cam"),
     }
-    return names.get(parameter, parameter)
+    # a cam file's keys carry their unit (arm_mm, swing_deg): the same fields as the options
+    return names.get(parameter) or names.get(re.sub(r"_(mm|deg)$", "", parameter), parameter)
 
 
 # (pattern on core's English ``allowed`` text, translatable template with %1, %2 …)
@@ -114,6 +126,16 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
     (r"give --base and --distance together to check a cam$",
      "give the base radius and the centre distance together to check a cam"),
+    # what a design file can hold wrong (core.design_file, Spec.from_dict, core.cam.file)
+    (r"is not a design field$", "is not a design field"),
+    (r"is not a load input$", "is not a load input"),
+    (r"is not a cam field$", "is not a cam field"),
+    (r"must be text$", "must be text"),
+    (r"must be true or false$", "must be true or false"),
+    (r"must be a pair \[dx, dy\] in mm$", "must be a pair (dx, dy) in mm"),
+    (r"must be an object of load inputs$", "must be an object of load inputs"),
+    (r"must be an object of cam inputs$", "must be an object of cam inputs"),
+    (r"must be one of (.+)$", "must be one of %1"),
 )
 
 
@@ -171,6 +193,14 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
         "give the base radius and the centre distance together to check a cam":
             QCoreApplication.translate("messages", "give the base radius and the centre distance together to check a cam"),
+        "is not a design field": QCoreApplication.translate("messages", "is not a design field"),
+        "is not a load input": QCoreApplication.translate("messages", "is not a load input"),
+        "is not a cam field": QCoreApplication.translate("messages", "is not a cam field"),
+        "must be text": QCoreApplication.translate("messages", "must be text"),
+        "must be true or false": QCoreApplication.translate("messages", "must be true or false"),
+        "must be an object of load inputs": QCoreApplication.translate("messages", "must be an object of load inputs"),
+        "must be an object of cam inputs": QCoreApplication.translate("messages", "must be an object of cam inputs"),
+        "must be one of %1": QCoreApplication.translate("messages", "must be one of %1"),
     }
 
 
@@ -193,6 +223,89 @@ def failure_reason(error: Exception) -> str:
     """What a dialog shows for a failure it did not foresee: a DesignError in the UI's
     language (:func:`describe`), else the exception's own text, else its type, never a
     traceback (issue 33: a preview's error reached ``sys.excepthook``)."""
+    if isinstance(error, FileFormatError):
+        return describe_file_error(error)
     if isinstance(error, DesignError):
         return describe(error)
+    if isinstance(error, OSError):
+        return describe_os_error(error)
     return str(error) or type(error).__name__
+
+
+def _file_templates() -> dict[str, str]:
+    # core.errors.FILE_REASONS in the UI's language (%1 the file, %2, %3 … the values);
+    # listed literally so pyside6-lupdate finds every template.
+    return {
+        "too_large": QCoreApplication.translate("messages", "%1 is larger than %2 MB, too large to be a design file"),
+        "not_design": QCoreApplication.translate("messages", "%1 is not a shaper design file"),
+        "version": QCoreApplication.translate("messages", "%1 has an unsupported version (%2); this program reads version %3"),
+        "no_version": QCoreApplication.translate("messages", "%1 has no version; this program reads version %2"),
+        "no_spec": QCoreApplication.translate("messages", "%1 holds no design (its 'spec' entry is missing)"),
+        "invalid": QCoreApplication.translate("messages", "%1: invalid design (%2)"),
+        "unreadable": QCoreApplication.translate("messages", "cannot read %1: %2"),
+        "not_regular": QCoreApplication.translate("messages", "%1 is not a regular file"),
+        "folder": QCoreApplication.translate("messages", "%1 is a folder, not a design file"),
+        "special": QCoreApplication.translate("messages", "%1 is not a regular file (a device, pipe or socket)"),
+        "not_utf8": QCoreApplication.translate("messages", "%1 is not a design file (not UTF-8 text)"),
+        "too_deep": QCoreApplication.translate("messages", "%1 is not a design file (nested more than %2 levels deep)"),
+        "not_json": QCoreApplication.translate("messages", "%1 is not a design file (not valid JSON)"),
+        "constant": QCoreApplication.translate("messages", "%1 is not a design file (%2 is not a number a design may hold)"),
+        "long_integer": QCoreApplication.translate("messages", "%1 is not a design file (an integer of %2 digits is too large)"),
+        "huge_number": QCoreApplication.translate("messages", "%1 is not a design file (%2 is too large a number)"),
+        "spec_type": QCoreApplication.translate("messages", "%1: 'spec' must be an object of design fields"),
+        "rpm_type": QCoreApplication.translate("messages", "%1: 'rpm' must be a list of crank speeds in r/min"),
+        "rpm_value": QCoreApplication.translate("messages", "%1: crank speed %2 is not a number"),
+        "step_type": QCoreApplication.translate("messages", "%1: 'step_deg' must be a number of degrees"),
+    }
+
+
+def os_reason(number: int | None, fallback: str, reading: bool = False) -> str:
+    """Why a file could not be read or written, by the system's error number, in the UI's
+    language (core.errors.os_reason's reasons); ``fallback`` (the system's own words) for
+    another number."""
+    reasons = {
+        errno.ENOSPC: QCoreApplication.translate("messages", "the disk is full (no space left on the device)"),
+        errno.EDQUOT: QCoreApplication.translate("messages", "the disk quota is exhausted"),
+        errno.EACCES: QCoreApplication.translate("messages", "permission denied"),
+        errno.EPERM: QCoreApplication.translate("messages", "permission denied"),
+        errno.EROFS: QCoreApplication.translate("messages", "the file system is read-only"),
+        errno.ENOENT: QCoreApplication.translate("messages", "the file does not exist") if reading else
+        QCoreApplication.translate("messages", "the folder does not exist"),
+        errno.ELOOP: QCoreApplication.translate("messages", "too many levels of symbolic links"),
+        errno.ENAMETOOLONG: QCoreApplication.translate("messages", "the name is too long"),
+        errno.ENOTDIR: QCoreApplication.translate("messages", "a part of the path is not a folder"),
+        errno.EISDIR: QCoreApplication.translate("messages", "it is a folder"),
+        errno.EIO: QCoreApplication.translate("messages", "an input/output error"),
+    }
+    return reasons.get(number, fallback) if number is not None else fallback
+
+
+def describe_os_error(error: OSError) -> str:
+    """Why a write failed (a save, an export), in the UI's language (see :func:`os_reason`).
+    A reason the system or core gave (in English) is translated; one the GUI already
+    wrote in the UI's language (image_export's "the folder … does not exist") is kept."""
+    text = error.strerror or str(error)
+    if error.errno is not None and text in (os.strerror(error.errno), core_os_reason(error)):
+        return os_reason(error.errno, text)
+    return text
+
+
+def describe_file_error(error: FileFormatError) -> str:
+    """Why a design file (or library entry) was refused, in the current UI language.
+
+    Built from the error's reason and values (``core.errors.FILE_REASONS``), never from
+    core's English sentence; an invalid design's DesignError is described as the form
+    would (:func:`describe`). An error without a reason keeps its own text."""
+    template = _file_templates().get(error.reason)
+    if template is None:
+        return str(error)
+    name = error.name if error.entry is None else \
+        QCoreApplication.translate("messages", "library entry “%1”").replace("%1", error.entry)
+    values = list(error.values)
+    if error.reason == "invalid" and isinstance(error.cause, DesignError):
+        values = [describe(error.cause)]
+    elif error.reason == "unreadable":
+        values = [os_reason(error.errno, values[0] if values else "", reading=True)]
+    # one pass, so a value holding "%2" is never substituted again
+    return re.sub(r"%(\d)", lambda m: name if m.group(1) == "1" else
+                  (values[int(m.group(1)) - 2] if int(m.group(1)) - 2 < len(values) else ""), template)
