@@ -10,6 +10,7 @@ estimate of it: the layout's no-overlap guarantee holds on paper too.
 from __future__ import annotations
 
 import errno
+import re
 
 from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QPointF, QRectF, QSizeF, Qt
 from PySide6.QtGui import (QBrush, QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
@@ -27,7 +28,8 @@ SVG_UNITS_PER_MM = 10.0        # SVG user units per mm (viewBox in mm: width="84
 INK = QColor(0, 0, 0)
 
 
-def _pen(layer: str) -> QPen:
+def _pen(layer: str, svg: bool = False) -> QPen:
+    """The layer's pen in paper mm: its width and its GB/T 4457.4 dashes in mm."""
     spec = LAYERS[layer]
     width = spec.lineweight / 100.0 if spec.lineweight > 0 else THICK_MM / 2.0
     pen = QPen(INK, width)
@@ -35,13 +37,23 @@ def _pen(layer: str) -> QPen:
     pen.setJoinStyle(Qt.PenJoinStyle.MiterJoin)
     if spec.linetype in LINETYPES:
         pattern = [abs(v) if v else 0.3 for v in LINETYPES[spec.linetype][1][1:]]
-        pen.setDashPattern([v / width for v in pattern])
+        unit = svg_dash_unit(pen) if svg else width
+        pen.setDashPattern([v / unit for v in pattern])
     return pen
 
 
-def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en") -> None:
+def svg_dash_unit(pen: QPen) -> float:
+    """What QSvgGenerator multiplies a pen's dash pattern by: the pen's width, except for a
+    width that rounds to 0 (QPen.width(), an int), which it takes as 1, as for a cosmetic
+    pen. Why: a thin line (0.25 mm) got dashes 4 times the PDF's, 48 mm for 12, and the
+    crank circle showed as a few arcs (the PDF engine multiplies by the true width)."""
+    return pen.widthF() if pen.width() != 0 else 1.0
+
+
+def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en", svg: bool = False) -> None:
     """Paint ``sheet`` with ``painter`` whose coordinates are paper mm, y down, origin at
-    the sheet's upper left corner."""
+    the sheet's upper left corner; ``svg`` when the painter is a QSvgGenerator's (its dash
+    patterns are reckoned differently, see :func:`svg_dash_unit`)."""
     height = sheet.paper.height
     font = report_font(language)
     font.setPixelSize(100)
@@ -54,7 +66,7 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en") -> None:
             for run in item.runs():        # a subscript is a smaller text of its own
                 _text(painter, run, height, font, metrics, cap)
             continue
-        painter.setPen(_pen(item.layer))
+        painter.setPen(_pen(item.layer, svg))
         if isinstance(item, Circle):
             painter.setBrush(QBrush(INK) if item.filled else Qt.BrushStyle.NoBrush)
             painter.drawEllipse(QPointF(item.center[0], height - item.center[1]), item.radius, item.radius)
@@ -110,7 +122,28 @@ def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     paint_sheet(sheet, painter, language)
     painter.end()
     buffer.close()
-    return bytes(data.data())
+    return exact_page(bytes(data.data()), sheet.paper.width, sheet.paper.height)
+
+
+_BOXES = re.compile(rb"/(MediaBox|TrimBox) (\[0 0 ([\d.]+) ([\d.]+)\])")
+
+
+def exact_page(pdf: bytes, width_mm: float, height_mm: float) -> bytes:
+    """``pdf`` (one page from QPdfWriter) with its MediaBox and TrimBox the paper's exact
+    size. Why: QPageSize keeps a size in whole points, so A3 came out 1191 × 842 pt
+    (420.16 × 297.04 mm). Qt draws from the top edge down (its y flip is the rounded
+    height), so the exact box keeps that top and starts the bottom the difference higher.
+    Each box is rewritten in place at its old length (padded with spaces, which PDF allows),
+    so the file's byte offsets stay valid; a box that would not fit is left as it was."""
+    w_pt, h_pt = width_mm * 72.0 / 25.4, height_mm * 72.0 / 25.4
+
+    def exact(match: re.Match) -> bytes:
+        old, top = match.group(2), float(match.group(4))
+        new = f"[0 {top - h_pt:.4f} {w_pt:.4f} {top:g}".encode("ascii")
+        if len(new) + 1 > len(old):
+            return match.group(0)
+        return b"/" + match.group(1) + b" " + new + b" " * (len(old) - len(new) - 1) + b"]"
+    return _BOXES.sub(exact, pdf)
 
 
 def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
@@ -127,7 +160,7 @@ def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     device.setTitle(title)
     painter = QPainter(device)
     painter.scale(SVG_UNITS_PER_MM, SVG_UNITS_PER_MM)
-    paint_sheet(sheet, painter, language)
+    paint_sheet(sheet, painter, language, svg=True)
     painter.end()
     buffer.close()
     return bytes(data.data())
