@@ -532,6 +532,10 @@
         <translation>本行最优</translation>
     </message>
     <message>
+        <source>There is nothing to export yet: pick 2 to 6 designs to compare first.</source>
+        <translation>还没有可导出的内容：请先选择 2 到 6 个设计进行比较。</translation>
+    </message>
+    <message>
         <source>Design comparison</source>
         <translation>设计比较</translation>
     </message>
@@ -731,11 +735,11 @@
         <translation>连杆</translation>
     </message>
     <message>
-        <source>Through the tip&apos;s extreme positions (chord)</source>
+        <source>Through the tip's extreme positions (chord)</source>
         <translation>通过导杆端部两极限位置（弦线）</translation>
     </message>
     <message>
-        <source>Mid-sagitta of the tip&apos;s arc</source>
+        <source>Mid-sagitta of the tip's arc</source>
         <translation>导杆端部圆弧矢高的中点</translation>
     </message>
     <message>
@@ -935,8 +939,44 @@
         <translation>运动分析图</translation>
     </message>
     <message>
-        <source>Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})</source>
-        <translation>机构运动简图（{count} 个位置），μl = {mu} m/mm（{scale}）</translation>
+        <source>Kinematic diagram at {count} positions, μ_l = {mu} m/mm ({scale})</source>
+        <translation>机构运动简图（{count} 个位置），μ_l = {mu} m/mm（{scale}）</translation>
+    </message>
+    <message>
+        <source>μ_s = {mu} m/mm</source>
+        <translation>μ_s = {mu} m/mm</translation>
+    </message>
+    <message>
+        <source>μ_v = {mu} (m/s)/mm</source>
+        <translation>μ_v = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>μ_a = {mu} (m/s²)/mm</source>
+        <translation>μ_a = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>Velocity polygon, φ = {angle}°, μ_v = {mu} (m/s)/mm</source>
+        <translation>速度多边形，φ = {angle}°，μ_v = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>Acceleration polygon, φ = {angle}°, μ_a = {mu} (m/s²)/mm</source>
+        <translation>加速度多边形，φ = {angle}°，μ_a = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>Crank O_2A, L_1</source>
+        <translation>曲柄 O_2A，L_1</translation>
+    </message>
+    <message>
+        <source>Frame O_2O_4, L_2</source>
+        <translation>机架 O_2O_4，L_2</translation>
+    </message>
+    <message>
+        <source>Lever O_4B, L_3</source>
+        <translation>导杆 O_4B，L_3</translation>
+    </message>
+    <message>
+        <source>Rod BC, L_4</source>
+        <translation>连杆 BC，L_4</translation>
     </message>
     <message>
         <source>Ram displacement, velocity and acceleration, n = {rpm} r/min</source>
@@ -959,30 +999,6 @@
         <translation>φ/(°)</translation>
     </message>
     <message>
-        <source>μs = {mu} m/mm</source>
-        <translation>μs = {mu} m/mm</translation>
-    </message>
-    <message>
-        <source>μv = {mu} (m/s)/mm</source>
-        <translation>μv = {mu} (m/s)/mm</translation>
-    </message>
-    <message>
-        <source>μa = {mu} (m/s²)/mm</source>
-        <translation>μa = {mu} (m/s²)/mm</translation>
-    </message>
-    <message>
-        <source>μφ = {mu} °/mm</source>
-        <translation>μφ = {mu} °/mm</translation>
-    </message>
-    <message>
-        <source>Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm</source>
-        <translation>速度多边形，φ = {angle}°，μv = {mu} (m/s)/mm</translation>
-    </message>
-    <message>
-        <source>Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm</source>
-        <translation>加速度多边形，φ = {angle}°，μa = {mu} (m/s²)/mm</translation>
-    </message>
-    <message>
         <source>Main dimensions</source>
         <translation>主要尺寸</translation>
     </message>
@@ -993,18 +1009,6 @@
     <message>
         <source>Loads and joint forces, φ = {angle}°</source>
         <translation>载荷与运动副反力，φ = {angle}°</translation>
-    </message>
-    <message>
-        <source>μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm</source>
-        <translation>μl = {mu} m/mm（{scale}），μF = {mu_f} N/mm</translation>
-    </message>
-    <message>
-        <source>Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm</source>
-        <translation>滑枕杆组的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
-    </message>
-    <message>
-        <source>Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm</source>
-        <translation>导杆（构件 3）的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
     </message>
     <message>
         <source>Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min</source>
@@ -1023,20 +1027,12 @@
         <translation>E/J</translation>
     </message>
     <message>
-        <source>μM = {mu} (N·m)/mm</source>
-        <translation>μM = {mu} (N·m)/mm</translation>
-    </message>
-    <message>
-        <source>μE = {mu} J/mm</source>
-        <translation>μE = {mu} J/mm</translation>
-    </message>
-    <message>
         <source>Feed cam</source>
         <translation>进给凸轮</translation>
     </message>
     <message>
-        <source>Cam profile by inversion, μl = {mu} m/mm ({scale})</source>
-        <translation>反转法绘制凸轮廓线，μl = {mu} m/mm（{scale}）</translation>
+        <source>Cam profile by inversion, μ_l = {mu} m/mm ({scale})</source>
+        <translation>反转法绘制凸轮廓线，μ_l = {mu} m/mm（{scale}）</translation>
     </message>
     <message>
         <source>Actual profile thick, pitch curve dash-dot, the follower at δ = 0; the cam turns clockwise</source>
@@ -1071,40 +1067,76 @@
         <translation>δ/(°)</translation>
     </message>
     <message>
-        <source>μψ = {mu} °/mm</source>
-        <translation>μψ = {mu} °/mm</translation>
+        <source>μ_ψ = {mu} °/mm</source>
+        <translation>μ_ψ = {mu} °/mm</translation>
     </message>
     <message>
-        <source>μω = {mu} (rad/s)/mm</source>
-        <translation>μω = {mu} (rad/s)/mm</translation>
+        <source>μ_ω = {mu} (rad/s)/mm</source>
+        <translation>μ_ω = {mu} (rad/s)/mm</translation>
     </message>
     <message>
-        <source>μα = {mu} (rad/s²)/mm</source>
-        <translation>μα = {mu} (rad/s²)/mm</translation>
+        <source>μ_α = {mu} (rad/s²)/mm</source>
+        <translation>μ_α = {mu} (rad/s²)/mm</translation>
     </message>
     <message>
-        <source>μα = {mu} °/mm</source>
-        <translation>μα = {mu} °/mm</translation>
+        <source>μ_α = {mu} °/mm</source>
+        <translation>μ_α = {mu} °/mm</translation>
     </message>
     <message>
-        <source>μδ = {mu} °/mm</source>
-        <translation>μδ = {mu} °/mm</translation>
+        <source>μ_δ = {mu} °/mm</source>
+        <translation>μ_δ = {mu} °/mm</translation>
     </message>
     <message>
-        <source>δ0 = {deg}°</source>
-        <translation>δ0 = {deg}°</translation>
+        <source>δ_0 = {deg}°</source>
+        <translation>δ_0 = {deg}°</translation>
     </message>
     <message>
-        <source>δs = {deg}°</source>
-        <translation>δs = {deg}°</translation>
+        <source>δ_s = {deg}°</source>
+        <translation>δ_s = {deg}°</translation>
     </message>
     <message>
-        <source>δ0′ = {deg}°</source>
-        <translation>δ0′ = {deg}°</translation>
+        <source>δ_0′ = {deg}°</source>
+        <translation>δ_0′ = {deg}°</translation>
     </message>
     <message>
-        <source>δs′ = {deg}°</source>
-        <translation>δs′ = {deg}°</translation>
+        <source>δ_s′ = {deg}°</source>
+        <translation>δ_s′ = {deg}°</translation>
+    </message>
+    <message>
+        <source>Swing ψ_max</source>
+        <translation>最大摆角 ψ_max</translation>
+    </message>
+    <message>
+        <source>Rise δ_0, law</source>
+        <translation>推程运动角 δ_0，运动规律</translation>
+    </message>
+    <message>
+        <source>Outer dwell δ_s</source>
+        <translation>远休止角 δ_s</translation>
+    </message>
+    <message>
+        <source>Return δ_0′, law</source>
+        <translation>回程运动角 δ_0′，运动规律</translation>
+    </message>
+    <message>
+        <source>Inner dwell δ_s′</source>
+        <translation>近休止角 δ_s′</translation>
+    </message>
+    <message>
+        <source>Base radius r_0 (pitch curve)</source>
+        <translation>理论廓线基圆半径 r_0</translation>
+    </message>
+    <message>
+        <source>Initial arm angle ψ_0</source>
+        <translation>初始摆角 ψ_0</translation>
+    </message>
+    <message>
+        <source>Min convex radius ρ_min</source>
+        <translation>理论廓线最小外凸曲率半径 ρ_min</translation>
+    </message>
+    <message>
+        <source>Profile base radius r_0 − r</source>
+        <translation>实际廓线基圆半径 r_0 − r</translation>
     </message>
     <message>
         <source>Cam data and results</source>
@@ -1119,26 +1151,6 @@
         <translation>从动件摆臂长 l</translation>
     </message>
     <message>
-        <source>Swing ψmax</source>
-        <translation>最大摆角 ψmax</translation>
-    </message>
-    <message>
-        <source>Rise δ0, law</source>
-        <translation>推程运动角 δ0，运动规律</translation>
-    </message>
-    <message>
-        <source>Outer dwell δs</source>
-        <translation>远休止角 δs</translation>
-    </message>
-    <message>
-        <source>Return δ0′, law</source>
-        <translation>回程运动角 δ0′，运动规律</translation>
-    </message>
-    <message>
-        <source>Inner dwell δs′</source>
-        <translation>近休止角 δs′</translation>
-    </message>
-    <message>
         <source>Allowed pressure angle rise / return</source>
         <translation>许用压力角 推程 / 回程</translation>
     </message>
@@ -1147,16 +1159,8 @@
         <translation>凸轮转速 n</translation>
     </message>
     <message>
-        <source>Base radius r0 (pitch curve)</source>
-        <translation>理论廓线基圆半径 r0</translation>
-    </message>
-    <message>
         <source>Centre distance a</source>
         <translation>中心距 a</translation>
-    </message>
-    <message>
-        <source>Initial arm angle ψ0</source>
-        <translation>初始摆角 ψ0</translation>
     </message>
     <message>
         <source>Roller side of the line of centres</source>
@@ -1175,16 +1179,8 @@
         <translation>最大压力角 推程 / 回程</translation>
     </message>
     <message>
-        <source>Min convex radius ρmin</source>
-        <translation>理论廓线最小外凸曲率半径 ρmin</translation>
-    </message>
-    <message>
         <source>Roller radius r</source>
         <translation>滚子半径 r</translation>
-    </message>
-    <message>
-        <source>Profile base radius r0 − r</source>
-        <translation>实际廓线基圆半径 r0 − r</translation>
     </message>
     <message>
         <source>Pressure angle allowance</source>
@@ -1227,6 +1223,30 @@
         <translation>数值</translation>
     </message>
     <message>
+        <source>μ_l = {mu} m/mm ({scale}), μ_F = {mu_f} N/mm</source>
+        <translation>μ_l = {mu} m/mm（{scale}），μ_F = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>Force polygon of the ram group, φ = {angle}°, μ_F = {mu_f} N/mm</source>
+        <translation>滑枕杆组的力多边形，φ = {angle}°，μ_F = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>Force polygon of the lever (link 3), φ = {angle}°, μ_F = {mu_f} N/mm</source>
+        <translation>导杆（构件 3）的力多边形，φ = {angle}°，μ_F = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>μ_M = {mu} (N·m)/mm</source>
+        <translation>μ_M = {mu} (N·m)/mm</translation>
+    </message>
+    <message>
+        <source>μ_E = {mu} J/mm</source>
+        <translation>μ_E = {mu} J/mm</translation>
+    </message>
+    <message>
+        <source>μ_φ = {mu} °/mm</source>
+        <translation>μ_φ = {mu} °/mm</translation>
+    </message>
+    <message>
         <source>Mean driving torque M_m</source>
         <translation>平均驱动力矩 M_m</translation>
     </message>
@@ -1259,28 +1279,12 @@
         <translation>需加飞轮 J_F − J_e</translation>
     </message>
     <message>
-        <source>Crank O2A, L1</source>
-        <translation>曲柄 O2A，L1</translation>
-    </message>
-    <message>
-        <source>Frame O2O4, L2</source>
-        <translation>机架 O2O4，L2</translation>
-    </message>
-    <message>
-        <source>Lever O4B, L3</source>
-        <translation>导杆 O4B，L3</translation>
-    </message>
-    <message>
-        <source>Rod BC, L4</source>
-        <translation>连杆 BC，L4</translation>
-    </message>
-    <message>
-        <source>Guide above O2, h</source>
-        <translation>导路距 O2 的高度 h</translation>
-    </message>
-    <message>
         <source>Stroke H</source>
         <translation>行程 H</translation>
+    </message>
+    <message>
+        <source>Guide above O_2, h</source>
+        <translation>导路距 O_2 的高度 h</translation>
     </message>
     <message>
         <source>Time ratio K</source>
@@ -1493,7 +1497,7 @@
         <translation>优化</translation>
     </message>
     <message>
-        <source>Optimize over the map&apos;s ranges</source>
+        <source>Optimize over the map's ranges</source>
         <translation>在分布图范围内优化</translation>
     </message>
     <message>
@@ -2014,7 +2018,7 @@
         <translation>筛选，例如 K&gt;=1.4, 方案=连杆, 最大 |a|&lt;5</translation>
     </message>
     <message>
-        <source>Figures at each design&apos;s first speed</source>
+        <source>Figures at each design's first speed</source>
         <translation>按各设计的第一个转速</translation>
     </message>
     <message>
@@ -2025,7 +2029,7 @@
 <context>
     <name>LibraryTableModel</name>
     <message>
-        <source>This design is damaged: %1. &apos;shaper library check&apos; lists every damaged design.</source>
+        <source>This design is damaged: %1. 'shaper library check' lists every damaged design.</source>
         <translation>此设计已损坏：%1。“shaper library check”会列出所有损坏的设计。</translation>
     </message>
     <message>
@@ -2052,7 +2056,7 @@
         <translation>质心位置 c</translation>
     </message>
     <message>
-        <source>Distance of the lever&apos;s centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
@@ -2076,7 +2080,7 @@
         <translation>质心偏移 dx</translation>
     </message>
     <message>
-        <source>Horizontal offset of the ram&apos;s centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
         <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
     </message>
     <message>
@@ -2084,7 +2088,7 @@
         <translation>质心偏移 dy</translation>
     </message>
     <message>
-        <source>Vertical offset of the ram&apos;s centre of mass from the ram joint C, mm (+ up)</source>
+        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
@@ -2235,7 +2239,7 @@
         <translation>导出运动曲线 CSV(&amp;C)…</translation>
     </message>
     <message>
-        <source>All speeds, at the form&apos;s angle step</source>
+        <source>All speeds, at the form's angle step</source>
         <translation>全部转速，按表单中的角度步长</translation>
     </message>
     <message>
@@ -2283,7 +2287,7 @@
         <translation>导出图纸(&amp;D)（PDF/SVG/DXF）…</translation>
     </message>
     <message>
-        <source>The course design&apos;s drawing sheet on A0–A3 paper, with a preview</source>
+        <source>The course design's drawing sheet on A0–A3 paper, with a preview</source>
         <translation>课程设计图纸，A0–A3 图幅，带预览</translation>
     </message>
     <message>
@@ -2510,7 +2514,7 @@
         <translation>曲柄轴上飞轮转动惯量 J_F，kg·m²</translation>
     </message>
     <message>
-        <source>J_F less mechanism&apos;s own, kg·m²</source>
+        <source>J_F less mechanism's own, kg·m²</source>
         <translation>扣除机构自身等效惯量后的 J_F，kg·m²</translation>
     </message>
     <message>
@@ -2594,7 +2598,7 @@
         <translation>实测 K</translation>
     </message>
     <message>
-        <source>Working / return crank angle, from the ram&apos;s dead points</source>
+        <source>Working / return crank angle, from the ram's dead points</source>
         <translation>工作行程与回程的曲柄转角之比，由滑枕极限位置测得</translation>
     </message>
     <message>
@@ -2602,7 +2606,7 @@
         <translation>实测行程</translation>
     </message>
     <message>
-        <source>Distance between the ram&apos;s dead points</source>
+        <source>Distance between the ram's dead points</source>
         <translation>滑枕两极限位置之间的距离</translation>
     </message>
     <message>
@@ -2708,7 +2712,7 @@
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <source>Plot against the crank angle (0–360°) or against time (each speed&apos;s own cycle)</source>
+        <source>Plot against the crank angle (0–360°) or against time (each speed's own cycle)</source>
         <translation>以曲柄转角 (0–360°) 或时间（各转速自身的周期）为横坐标</translation>
     </message>
     <message>
@@ -2716,7 +2720,7 @@
         <translation>导杆曲线</translation>
     </message>
     <message>
-        <source>Show the slotted lever&apos;s angle, angular velocity or angular acceleration</source>
+        <source>Show the slotted lever's angle, angular velocity or angular acceleration</source>
         <translation>显示导杆的角位移、角速度或角加速度</translation>
     </message>
     <message>
@@ -2811,7 +2815,7 @@
         <translation>极限位置：ω₃ = 0，故 aᵏ = aⁿ = 0。</translation>
     </message>
     <message>
-        <source>Cannot export to &apos;%1&apos;: use .png or .svg</source>
+        <source>Cannot export to '%1': use .png or .svg</source>
         <translation>无法导出为“%1”：请使用 .png 或 .svg</translation>
     </message>
 </context>
@@ -3023,11 +3027,11 @@
         <translation>滑枕驱动方式</translation>
     </message>
     <message>
-        <source>through the lever tip&apos;s extreme positions</source>
+        <source>through the lever tip's extreme positions</source>
         <translation>通过导杆端点两极限位置</translation>
     </message>
     <message>
-        <source>midway along the tip arc&apos;s sagitta</source>
+        <source>midway along the tip arc's sagitta</source>
         <translation>位于导杆端点圆弧矢高的中点</translation>
     </message>
     <message>
@@ -3251,7 +3255,7 @@
         <translation>各转速下的力矩、功率与飞轮</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide midway along the sagitta of the tip&apos;s arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
+        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide midway along the sagitta of the tip's arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路位于导杆端点圆弧矢高的中点，距 O4 为 L3·(1 + cos(θ/2))/2。</translation>
     </message>
     <message>
@@ -3259,11 +3263,11 @@
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路位于给定高度（距 O4）。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide through the tip&apos;s extreme positions at L3·cos(θ/2) above O4.</source>
+        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide through the tip's extreme positions at L3·cos(θ/2) above O4.</source>
         <translation>&lt;b&gt;给定尺寸。&lt;/b&gt;L1、L2、L3 为给定值；θ = 2·arcsin(L1/L2)，K = (180° + θ)/(180° − θ)，H = 2·L3·sin(θ/2)；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide midway along the sagitta of the tip&apos;s arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
+        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide midway along the sagitta of the tip's arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
         <translation>&lt;b&gt;给定尺寸。&lt;/b&gt;L1、L2、L3 为给定值；θ = 2·arcsin(L1/L2)，K = (180° + θ)/(180° − θ)，H = 2·L3·sin(θ/2)；导路位于导杆端点圆弧矢高的中点，距 O4 为 L3·(1 + cos(θ/2))/2。</translation>
     </message>
     <message>
@@ -3275,11 +3279,11 @@
         <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，滑枕导路为直线 y = 导路高度；滑枕向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。滑枕 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号：1 曲柄，2 滑块，3 导杆，4 连杆，5 滑枕。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip&apos;s extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
+        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)（距 O2 为 h = H/(2·tan(θ/2)) − L2）。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Senses.&lt;/b&gt; The lever&apos;s ω3 and α3 are positive clockwise (as ψ and the crank), the rod&apos;s ω4 and α4 counter-clockwise. The block&apos;s sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons&apos; v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
+        <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω3 and α3 are positive clockwise (as ψ and the crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
         <translation>&lt;b&gt;正方向。&lt;/b&gt;导杆的 ω3、α3 以顺时针为正（与 ψ 及曲柄转向相同），连杆的 ω4、α4 以逆时针为正。滑块沿导杆的滑动速度以离开 O4 为正，其科氏加速度 2·ω3·v_slide 取沿 ψ 增大方向的分量；矢量多边形中的 v_A3A2 与 a^k_A3A2 为其相反数。切削力从切削开始到切削结束均作用（两端包括在内）：这两个位置的行按切削中计算。</translation>
     </message>
     <message>
@@ -3291,7 +3295,7 @@
         <translation>&lt;b&gt;加速度分析。&lt;/b&gt;a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2，a^n_A3 = ω3²·O4A 指向 O4，a^t_A3 = α3·O4A，哥氏加速度 a^k_A3A2 = 2·ω3·v_A3A2（将 v_A3A2 沿 ω3 转向转 90°）；连杆方案 a_C = a_B + a^n_CB + a^t_CB，a^n_CB = ω4²·L4，a^t_CB = α4·L4。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d&apos;Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
+        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d'Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
         <translation>&lt;b&gt;力分析。&lt;/b&gt;曲柄匀速转动下的动态静力分析（达朗贝尔原理）：加上惯性力 F_I = −m·a_G 和惯性力矩 −J·α 后各构件处于平衡；运动副无摩擦。切削力 P 与切削方向相反，作用于工作行程的 空刀量·H 至 (1 − 空刀量)·H 之间。</translation>
     </message>
     <message>
@@ -3331,7 +3335,7 @@
         <translation>、</translation>
     </message>
     <message>
-        <source>The design of this report, “%1”, beside %2 at %3 r/min, the report&apos;s first speed. Each value is followed by its difference from “%1” in brackets ((=): the same); ★ marks the best value of a row: the lowest max |a|, pressure angle, torques and flywheel J_F. Torques and J_F need loads; a design without them has none (—). The numbers are those of shaper library compare.</source>
+        <source>The design of this report, “%1”, beside %2 at %3 r/min, the report's first speed. Each value is followed by its difference from “%1” in brackets ((=): the same); ★ marks the best value of a row: the lowest max |a|, pressure angle, torques and flywheel J_F. Torques and J_F need loads; a design without them has none (—). The numbers are those of shaper library compare.</source>
         <translation>本说明书的设计“%1”与 %2 在 %3 r/min（本说明书的第一个转速）下的比较。每个数值后的括号内为其与“%1”之差（(=)：相同）；★ 标出每行的最优值：最大 |a|、压力角、驱动力矩和飞轮 J_F 均以小为优。驱动力矩和 J_F 需要载荷；未给载荷的设计没有这些值（—）。数值与 shaper library compare 的输出相同。</translation>
     </message>
     <message>
@@ -3430,7 +3434,7 @@
         <translation>“比较”选项卡中除本设计外有 %1 个设计；说明书最多比较 %2 个。</translation>
     </message>
     <message>
-        <source>This design beside the Compare tab&apos;s designs (%1) at %2 r/min.</source>
+        <source>This design beside the Compare tab's designs (%1) at %2 r/min.</source>
         <translation>本设计与“比较”选项卡中的设计（%1）在 %2 r/min 下比较。</translation>
     </message>
     <message>

@@ -16,6 +16,7 @@ right; its label texts come from the caller, who chooses the language).
 from __future__ import annotations
 
 import math
+import re
 import unicodedata
 from dataclasses import dataclass, field
 from typing import Mapping, Sequence, Union
@@ -145,6 +146,47 @@ def symbol(*parts: str | tuple[str, str]) -> tuple[str, tuple[tuple[int, int], .
             spans.append((len(text), len(text) + len(index)))
             text += index
     return text, tuple(spans)
+
+
+# The sheets' index notation in captions and translated strings: an underscore before the
+# index, which is a run of Latin or Greek letters or a run of digits (so "O_2O_4" is two
+# indices, and a Chinese word may follow an index without a space).
+INDEX_MARK = re.compile("_([A-Za-z\u0391-\u03a9\u03b1-\u03c9]+|[0-9]+)")
+
+
+def marked(text: str) -> tuple[str, tuple[tuple[int, int], ...]]:
+    """Text and subscript spans from a caption in the index notation: ``M_m`` is M with m
+    below, ``ΔW_max`` ΔW with max, ``O_2O_4`` O2O4 with both digits below. Why: a
+    translated string cannot hold :class:`Text`'s spans, and a literal underscore on a
+    sheet is no way to write an index (GB/T 14691 lowers it one size smaller). Only the
+    program's own words are read so; a user's text (a design name) is taken as it is."""
+    plain, spans, at = "", [], 0
+    for match in INDEX_MARK.finditer(text):
+        plain += text[at:match.start()]
+        spans.append((len(plain), len(plain) + len(match.group(1))))
+        plain += match.group(1)
+        at = match.end()
+    return plain + text[at:], tuple(spans)
+
+
+def marked_text(text: str, position: Pair, height: float, align: str = "lb", room: float | None = None,
+                layer: str = TEXT) -> Text:
+    """A :class:`Text` of a caption in the index notation (see :func:`marked`), clipped with
+    an ellipsis to ``room`` mm when given."""
+    plain, spans = marked(text)
+    if room is not None:
+        plain, spans = clipped_spans(plain, spans, room, height)
+    return Text(plain, position, height, align, layer=layer, subscripts=spans)
+
+
+def clipped_spans(text: str, spans: tuple[tuple[int, int], ...], room: float,
+                  height: float) -> tuple[str, tuple[tuple[int, int], ...]]:
+    """``text`` cut as :func:`clipped` cuts it, its subscript spans cut with it."""
+    cut = clipped(text, room, height)
+    if cut == text:
+        return text, spans
+    kept = len(cut) - 1 if cut.endswith("…") else len(cut)
+    return cut, tuple((a, min(b, kept)) for a, b in spans if a < kept)
 
 
 def text_width(text: str, height: float) -> float:
@@ -294,15 +336,22 @@ def clipped(text: str, room: float, height: float) -> str:
 
 
 def cell_text(text: str, box: Box, largest: float = 5.0, align: str = "c",
-              layer: str = TEXT) -> Text:
+              layer: str = TEXT, notation: bool = False) -> Text:
     """``text`` inside the cell ``box``, as large as fits (≤ ``largest``), centred
-    vertically, aligned left (1 mm in), centre or right."""
+    vertically, aligned left (1 mm in), centre or right; with ``notation``, in the index
+    notation of :func:`marked` (the program's own words only, never a user's)."""
     x0, y0, x1, y1 = box
     room = x1 - x0 - 2.0
-    h = min(fitting_height(text, room, largest), (y1 - y0) / 1.6)
+    plain, spans = marked(text) if notation else (text, ())
+    h = min(fitting_height(plain, room, largest), (y1 - y0) / 1.6)
     h = max((v for v in TEXT_HEIGHTS if v <= h), default=TEXT_HEIGHTS[0])
     x = {"l": x0 + 1.0, "c": (x0 + x1) / 2.0, "r": x1 - 1.0}[align]
-    return Text(clipped(text, room, h), (x, (y0 + y1) / 2.0), h, align + "m", layer=layer)
+    plain, spans = clipped_spans(plain, spans, room, h)
+    text = Text(plain, (x, (y0 + y1) / 2.0), h, align + "m", layer=layer, subscripts=spans)
+    low, high = text.box()[1], text.box()[3]
+    lift = min(max(y0 - low, 0.0), max(y1 - high, 0.0))   # a subscript below: up, if it has room
+    return text if not lift else Text(plain, (x, (y0 + y1) / 2.0 + lift), h, align + "m",
+                                      layer=layer, subscripts=spans)
 
 
 # ---- tables and the title block ----------------------------------------------------------
@@ -310,7 +359,8 @@ def cell_text(text: str, box: Box, largest: float = 5.0, align: str = "c",
 def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]],
           row_height: float = 8.0, text_height: float = 3.5, layer: str = TEXT,
           aligns: str | None = None) -> list[Item]:
-    """Rows of texts in ruled cells: outline thick, inner rules thin (GB/T 10609.1)."""
+    """Rows of texts in ruled cells: outline thick, inner rules thin (GB/T 10609.1). The
+    texts are the program's own labels and numbers, in the index notation of :func:`marked`."""
     x0, y_top = top_left
     xs = np.concatenate([[x0], x0 + np.cumsum(widths)])
     height = row_height * len(rows)
@@ -326,7 +376,7 @@ def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]]
             if text:
                 align = aligns[c] if aligns else "c"
                 items.append(cell_text(text, (float(xs[c]), y1 - row_height, float(xs[c + 1]), y1),
-                                       text_height, align, layer))
+                                       text_height, align, layer, notation=True))
     return items
 
 

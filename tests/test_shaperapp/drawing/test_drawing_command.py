@@ -90,7 +90,7 @@ def test_svg_is_in_mm_and_the_lever_measures_true(tmp_path):
         # Qt writes one <text> per font run ("…positions, ", "μ", "l = …"): join a group's
         texts.append("".join("".join(t.itertext()) for t in group.findall(f"{ns}text")))
     assert widths == {0.25, 0.5}
-    scale = float(next(re.search(r"1:([\d.]+)\)", t).group(1) for t in texts if "μl" in t))
+    scale = float(next(m.group(1) for t in texts if (m := re.search(r"[(（]1:([\d.]+)[)）]", t))))
     starts = {}
     for seg in segments:
         starts.setdefault(tuple(np.round(seg[0], 3)), []).append(float(np.hypot(*(seg[1] - seg[0]))))
@@ -111,7 +111,7 @@ def test_dxf_written_and_measures_true(tmp_path):
     doc = ezdxf.readfile(out)
     assert doc.header["$INSUNITS"] == 4
     texts = [t.dxf.text for t in doc.modelspace().query("TEXT")]
-    scale = float(next(re.search(r"1:([\d.]+)", t).group(1) for t in texts if "μl" in t))
+    scale = float(next(m.group(1) for t in texts if (m := re.search(r"[(（]1:([\d.]+)[)）]", t))))   # "μ", "l", "= … (1:n)"
     circle = doc.modelspace().query('CIRCLE[layer=="CENTER"]')[0]
     assert circle.dxf.radius * scale == pytest.approx(100.0, rel=1e-12)
     # no --title and no design file: the title block names the design by its inputs
