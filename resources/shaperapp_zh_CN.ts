@@ -935,6 +935,18 @@
         <translation>批准</translation>
     </message>
     <message>
+        <source>Number</source>
+        <translation>学号</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>班级</translation>
+    </message>
+    <message>
+        <source>Supervisor</source>
+        <translation>指导教师</translation>
+    </message>
+    <message>
         <source>Motion analysis</source>
         <translation>运动分析图</translation>
     </message>
@@ -1342,16 +1354,28 @@
         <translation>设计名称：</translation>
     </message>
     <message>
-        <source>Drawn by:</source>
-        <translation>制图：</translation>
-    </message>
-    <message>
         <source>School:</source>
         <translation>学校：</translation>
     </message>
     <message>
+        <source>Student:</source>
+        <translation>学生：</translation>
+    </message>
+    <message>
+        <source>Student number:</source>
+        <translation>学号：</translation>
+    </message>
+    <message>
+        <source>Class:</source>
+        <translation>班级：</translation>
+    </message>
+    <message>
         <source>Date:</source>
         <translation>日期：</translation>
+    </message>
+    <message>
+        <source>Supervisor:</source>
+        <translation>指导教师：</translation>
     </message>
     <message>
         <source>No font with Chinese characters is installed: install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>

@@ -107,8 +107,14 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
         areas[f"mechanism {k + 1}"] = (cell, tuple(items))
         force_scales.append(mu_f)
 
+    summary = summarize(design, [rpm], masses)
+    rows = flywheel_rows(summary, masses, lab)
+    cells_rows = [(lab["quantity"], lab["value"])] + rows
+    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(cells_rows)
+    # the polygons above the flywheel table and its caption (below it on a small sheet)
+    poly_bottom = max(split_y, table_top + 2 * CAPTION + GAP)
     poly_w = (bx1 - split_x - GAP) / 2.0
-    poly_h = (by1 - split_y - GAP) / 2.0
+    poly_h = (by1 - poly_bottom - GAP) / 2.0
     polygon_scales = []
     for r, (group, build) in enumerate((("ram", force_polygon), ("lever", lever_force_polygon))):
         for k, angle in enumerate(diagrams):
@@ -122,7 +128,6 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     table_w = TITLE_WIDTH
     charts_right = bx1 - table_w - 2 * GAP
     half = (split_y - by0 - GAP) / 2.0
-    summary = summarize(design, [rpm], masses)
     speed = summary.speeds[0]
     torque_box = (bx0 + GAP, by0 + GAP + half, charts_right, split_y - GAP)
     energy_box = (bx0 + GAP, by0 + GAP, charts_right, by0 + half)
@@ -137,9 +142,6 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
                                        lab["E"], "mu_E", lab)
     areas["energy"] = (energy_box, tuple(items))
 
-    rows = flywheel_rows(summary, masses, lab)
-    cells_rows = [(lab["quantity"], lab["value"])] + rows
-    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(cells_rows)
     table_box = (bx1 - table_w, table_top - TABLE_ROW * len(cells_rows), bx1, table_top)
     items = list(table((bx1 - table_w, table_top), (115.0, 65.0), cells_rows, TABLE_ROW, 3.5,
                        aligns="lc"))

@@ -98,13 +98,14 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                               ((mech_box[0] + mech_box[2]) / 2.0, mech_area[3]), mech_box[2] - mech_box[0]))
     areas["mechanism"] = (mech_area, tuple(mech_items))
     motion = solve(design, np.radians(np.linspace(0.0, 360.0, 721)), [rpm])
-    curves_area = (split_x + GAP, split_y + GAP, bx1 - GAP, by1 - GAP)
+    rows = [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab)
+    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(rows)
+    # the curves above the dimensions' table (on A3 it reaches above the split)
+    curves_area = (split_x + GAP, max(split_y, table_top) + GAP, bx1 - GAP, by1 - GAP)
     areas["curves"] = (curves_area, tuple(_curves(motion, curves_area, angles, where.number[numbered],
                                                   lab, rpm)))
     polygons_area = (bx0 + GAP, by0 + GAP, bx1 - TITLE_WIDTH - 2 * GAP, split_y - GAP)
     areas["polygons"] = (polygons_area, tuple(_polygons(design, rpm, diagrams, polygons_area, lab)))
-    rows = [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab)
-    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(rows)
     areas["dimensions"] = ((bx1 - TITLE_WIDTH, table_top - TABLE_ROW * len(rows), bx1, table_top),
                            tuple(table((bx1 - TITLE_WIDTH, table_top), (120.0, 60.0), rows,
                                        TABLE_ROW, 3.5, aligns="lc")))

@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 import re
 import unicodedata
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Mapping, Sequence, Union
 
 import numpy as np
@@ -381,65 +381,105 @@ def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]]
 
 
 TITLE_WIDTH = 180.0
-TITLE_ROW = 8.0
+TITLE_HEIGHT = 56.0
+# GB/T 10609.1's 180 × 56 mm in its zones: the signature area on the left (80 mm), the
+# "other" area in the middle (50 mm), the name area on the right (50 mm: the unit, the
+# drawing's name, its code), every field in a ruled cell
+TITLE_ZONES = (80.0, 50.0, 50.0)
+TITLE_SIGN_COLUMNS = (22.0, 34.0, 24.0)      # role, name, date
+TITLE_OTHER_COLUMNS = (22.0, 28.0)           # label, value
+TITLE_NAME_ROWS = (18.0, 18.0, 20.0)         # the unit (school), the drawing's name, its code (the design)
 TITLE_ROWS = 4
-TITLE_LABEL_KEYS = ("design", "scale", "sheet", "drawn", "date", "checked", "approved")
+TITLE_ROW = TITLE_HEIGHT / TITLE_ROWS
+TITLE_LABEL_KEYS = ("design", "scale", "sheet", "drawn", "date", "checked", "approved",
+                    "number", "class", "supervisor")
 # The title block's words in English: every sheet's ENGLISH texts start from these.
 TITLE_ENGLISH = {"design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn",
-                 "date": "Date", "checked": "Checked", "approved": "Approved"}
+                 "date": "Date", "checked": "Checked", "approved": "Approved",
+                 "number": "Number", "class": "Class", "supervisor": "Supervisor"}
 
 
 @dataclass(frozen=True)
 class TitleBlock:
-    """What the title block says. ``labels`` maps TITLE_LABEL_KEYS to the caller's words."""
+    """What the title block says: the course design's fields, those of the report's cover
+    (``shaper drawing`` and ``shaper report`` take them as the same options). ``labels``
+    maps TITLE_LABEL_KEYS to the caller's words."""
 
     title: str                 # the sheet's name, e.g. "Motion analysis"
     design: str                # the design's name
     scale: str                 # e.g. "1:5"
     sheet: str                 # e.g. "1/2"
-    drawn: str = ""
+    drawn: str = ""            # the student's name (who drew it)
     date: str = ""
     school: str = ""
     labels: Mapping[str, str] = field(default_factory=dict)
+    number: str = ""           # the student's number
+    group: str = ""            # the class
+    supervisor: str = ""
 
 
 def title_block_box(p: Paper) -> Box:
     x1, y0 = p.border[2], p.border[1]
-    return (x1 - TITLE_WIDTH, y0, x1, y0 + TITLE_ROW * TITLE_ROWS)
+    return (x1 - TITLE_WIDTH, y0, x1, y0 + TITLE_HEIGHT)
 
 
 def title_block(p: Paper, block: TitleBlock) -> list[Item]:
-    """The title block in the border's lower right corner, 180 × 32 mm: labels and values
-    on the left, the sheet's name and the school in two large cells on the right."""
+    """The title block in the border's lower right corner, GB/T 10609.1's 180 × 56 mm:
+    left the signature area (drawn by the student with the date, the supervisor, checked,
+    approved: role, name, date), in the middle the student number, the class, the scale
+    and the sheet, right the school, the sheet's name (large) and the design. The outline
+    and the zones' borders thick, the cells thin."""
     x0, y0, x1, y1 = title_block_box(p)
     lab = lambda key: block.labels.get(key, key)            # noqa: E731
-    cols = (x0, x0 + 22.0, x0 + 62.0, x0 + 84.0, x0 + 114.0, x1)
-    row_y = [y1 - k * TITLE_ROW for k in range(TITLE_ROWS + 1)]
+    mid, right = x0 + TITLE_ZONES[0], x0 + TITLE_ZONES[0] + TITLE_ZONES[1]
+    rows = [y1 - k * TITLE_ROW for k in range(TITLE_ROWS + 1)]
+    sign = x0 + np.cumsum((0.0,) + TITLE_SIGN_COLUMNS)
+    other = mid + np.cumsum((0.0,) + TITLE_OTHER_COLUMNS)
+    names = y1 - np.cumsum((0.0,) + TITLE_NAME_ROWS)
     items: list[Item] = [rectangle((x0, y0, x1, y1), OUTLINE)]
-    for k in range(1, TITLE_ROWS):
-        items.append(line([(x0, row_y[k]), (cols[4], row_y[k])], THIN))
-    items.append(line([(cols[4], row_y[2]), (x1, row_y[2])], THIN))
-    items.append(line([(cols[1], y0), (cols[1], y1)], THIN))
-    for x in cols[2:4]:                                       # the name's cell spans them
-        items.append(line([(x, y0), (x, row_y[1])], THIN))
-    items.append(line([(cols[4], y0), (cols[4], y1)], OUTLINE))
-    cells = [(0, lab("design"), block.design, None, None),
-             (1, lab("scale"), block.scale, lab("sheet"), block.sheet),
-             (2, lab("drawn"), block.drawn, lab("date"), block.date),
-             (3, lab("checked"), "", lab("approved"), "")]
-    for row, label, value, label2, value2 in cells:
-        top, bottom = row_y[row], row_y[row + 1]
-        items.append(cell_text(label, (cols[0], bottom, cols[1], top), 3.5, layer=TITLE))
-        if label2 is None:
-            items.append(cell_text(value, (cols[1], bottom, cols[4], top), 5.0, layer=TITLE))
-            continue
-        items.append(cell_text(value, (cols[1], bottom, cols[2], top), 3.5, layer=TITLE))
-        items.append(cell_text(label2, (cols[2], bottom, cols[3], top), 3.5, layer=TITLE))
-        items.append(cell_text(value2, (cols[3], bottom, cols[4], top), 3.5, layer=TITLE))
-    items.append(cell_text(block.title, (cols[4], row_y[2], x1, y1), 7.0, layer=TITLE))
-    if block.school:
-        items.append(cell_text(block.school, (cols[4], y0, x1, row_y[2]), 5.0, layer=TITLE))
-    return [it for it in items if not (isinstance(it, Text) and not it.text)]
+    items += [line([(x0, y), (right, y)], THIN) for y in rows[1:-1]]
+    items += [line([(x, y0), (x, y1)], THIN) for x in (*sign[1:-1], other[1])]
+    items += [line([(right, y), (x1, y)], THIN) for y in names[1:-1]]
+    items += [line([(x, y0), (x, y1)], OUTLINE) for x in (mid, right)]
+
+    def cell(text: str, x_a: float, x_b: float, top: float, bottom: float, largest: float = 3.5) -> None:
+        if text:
+            items.append(cell_text(text, (float(x_a), float(bottom), float(x_b), float(top)), largest,
+                                   layer=TITLE))
+    signatures = [(lab("drawn"), block.drawn, block.date), (lab("supervisor"), block.supervisor, ""),
+                  (lab("checked"), "", ""), (lab("approved"), "", "")]
+    others = [(lab("number"), block.number), (lab("class"), block.group),
+              (lab("scale"), block.scale), (lab("sheet"), block.sheet)]
+    for k, ((role, name, date), (label, value)) in enumerate(zip(signatures, others)):
+        top, bottom = rows[k], rows[k + 1]
+        cell(role, sign[0], sign[1], top, bottom)
+        cell(name, sign[1], sign[2], top, bottom)
+        cell(date, sign[2], sign[3], top, bottom)
+        cell(label, other[0], other[1], top, bottom)
+        cell(value, other[1], other[2], top, bottom)
+    for text, k, largest in ((block.school, 0, 5.0), (block.title, 1, 7.0), (block.design, 2, 5.0)):
+        box = (right, float(names[k + 1]), x1, float(names[k]))
+        items += wrapped_cell(text, box, largest) if text else []
+    return items
+
+
+def wrapped_cell(text: str, box: Box, largest: float) -> list[Text]:
+    """``text`` in the cell ``box`` on one line as large as fits (≤ ``largest``), or, when
+    that would be smaller than 5 mm, on two lines (≤ 5 mm) split at the space nearest its
+    middle, when they come out larger or whole where one line is cut (a long design name
+    or sheet name: the name area's cells are 50 mm wide)."""
+    x0, y0, x1, y1 = box
+    one = cell_text(text, box, largest, layer=TITLE)
+    spaces = [i for i, ch in enumerate(text) if ch == " "]
+    if one.text == text and one.height >= min(largest, 5.0) or not spaces:
+        return [one]
+    cut = min(spaces, key=lambda i: abs(i - len(text) / 2.0))
+    middle = (y0 + y1) / 2.0
+    lines = [(text[:cut], (x0, middle, x1, y1)), (text[cut + 1:], (x0, y0, x1, middle))]
+    height = min(cell_text(part, cell, min(largest, 5.0)).height for part, cell in lines)   # both alike
+    two = [cell_text(part, cell, height, layer=TITLE) for part, cell in lines]
+    whole = all(line.text == part for line, (part, _) in zip(two, lines))
+    return two if whole and (height > one.height or one.text != text) else [one]
 
 
 # ---- checks the tests and the writers share ------------------------------------------------
@@ -478,7 +518,6 @@ def sheet_title_block(p: Paper, block: TitleBlock | None, labels: Mapping[str, s
     (or one named by ``labels["title"]``, sheet 1/1) with the drawing's scale and the
     title block's words from ``labels``."""
     block = block or TitleBlock(labels["title"], "", "", "1/1")
-    block = TitleBlock(block.title or labels["title"], block.design, scale, block.sheet,
-                       block.drawn, block.date, block.school,
-                       {k: labels[k] for k in TITLE_LABEL_KEYS})
+    block = replace(block, title=block.title or labels["title"], scale=scale,
+                    labels={k: labels.get(k, TITLE_ENGLISH[k]) for k in TITLE_LABEL_KEYS})
     return title_block_box(p), tuple(title_block(p, block))

@@ -17,6 +17,8 @@ def title_labels() -> dict[str, str]:
         "sheet": translate("Drawing", "Sheet"), "drawn": translate("Drawing", "Drawn"),
         "date": translate("Drawing", "Date"), "checked": translate("Drawing", "Checked"),
         "approved": translate("Drawing", "Approved"),
+        "number": translate("Drawing", "Number"), "class": translate("Drawing", "Class"),
+        "supervisor": translate("Drawing", "Supervisor"),
     }
 
 
