@@ -28,9 +28,9 @@ from core.cam.table import follower_peaks
 from .charts import Curve, arrow, chart, place_label
 from .dxf import CENTER, OUTLINE, THIN
 from .motion import CAPTION, GAP, TABLE_ROW, caption
-from .sheet import (TITLE_ENGLISH, Box, Circle, Item, Paper, Placement, Sheet, Text, TitleBlock, fit,
-                    frame_items, line, marked, marked_text, number_text, scale_text, standard_scale, table,
-                    sheet_title_block, symbol, title_block_box)
+from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, fit, frame_items, line, marked,
+                    marked_text, number_text, scale_text, standard_scale, table, symbol)
+from .title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
     "title": "Feed cam",

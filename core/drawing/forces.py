@@ -32,8 +32,9 @@ from .charts import Curve, arrow, chart, place_label, polygon_extent, polygon_fi
 from .dxf import OUTLINE
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Sheet, TitleBlock, fit, frame_items,
-                    number_text, scale_text, standard_scale, symbol, table, sheet_title_block, title_block_box)
+from .sheet import (Box, Item, Paper, Sheet, fit, frame_items, number_text, scale_text, standard_scale,
+                    symbol, table)
+from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
     "title": "Kinetostatic analysis",

@@ -29,9 +29,9 @@ from core.positions import positions, special_angles
 from . import mechanism as mech
 from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE, THIN
-from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text, TitleBlock,
-                    fit, fitting_height, frame_items, marked, marked_text, number_text, scale_text,
-                    standard_scale, table, sheet_title_block, title_block_box)
+from .sheet import (Box, Item, Paper, Placement, Sheet, Text, fit, fitting_height, frame_items, marked,
+                    marked_text, number_text, scale_text, standard_scale, table)
+from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
     "title": "Motion analysis",

@@ -5,7 +5,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Sequence
 
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Sheet, TitleBlock, paper
+from core.drawing.sheet import Sheet, paper
+from core.drawing.title_block import TitleBlock
 from core.dynamics import MassProperties
 from core.spec import Spec
 

@@ -8,8 +8,8 @@ import pytest
 
 from core.drawing.dxf import OUTLINE, THIN, TITLE
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import (PAPERS, TITLE_ENGLISH, Polyline, Text, TitleBlock, item_box,
-                                overlapping_texts, paper, sheet_title_block)
+from core.drawing.sheet import PAPERS, Polyline, Text, item_box, overlapping_texts, paper
+from core.drawing.title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block
 from core.geometry import synthesize
 
 FIELDS = dict(drawn="Zhang San", number="2021001", group="ME 2101", school="SME",
