@@ -85,9 +85,11 @@ def linear(msp, p1, p2, base, angle_deg: float, name: str) -> None:
 
 def angular(msp, center, p1, p2, base, name: str) -> None:
     """``name`` = the angle at ``center`` from p1 to p2 (counter-clockwise), its arc
-    through ``base``. Written as the angle of two lines (center→p1, center→p2), the
-    angular dimension every reader knows: LibreCAD 2.2 leaves out the three-point one."""
+    through ``base``. Written as the angle of two lines from ``center``, the angular
+    dimension every reader knows: LibreCAD 2.2 leaves out the three-point one. The lines
+    go in the order ezdxf's renderer needs to draw the counter-clockwise angle (p2's
+    first: given p1's first, it drew 330° for 30°)."""
     c = tuple(map(float, center))[:2]
-    msp.add_angular_dim_2l(base=tuple(base), line1=(c, tuple(map(float, p1))[:2]),
-                           line2=(c, tuple(map(float, p2))[:2]), text=f"{name} = <>",
+    msp.add_angular_dim_2l(base=tuple(base), line1=(c, tuple(map(float, p2))[:2]),
+                           line2=(c, tuple(map(float, p1))[:2]), text=f"{name} = <>",
                            dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()

@@ -258,7 +258,7 @@ def _draw_dimensions(msp, design: Design, p: Pose, lay: _Layout, scale: float,
     dims.linear(msp, ends[0], ends[1], (0.0, tip_y - gap), 0.0, "H")
     right, left_tip = sorted(p.lever_limits, key=lambda t: -t[0])
     radius = 0.6 * (design.frame - design.crank)
-    dims.angular(msp, (0.0, 0.0), left_tip, right, (0.0, radius), "θ")
+    dims.angular(msp, (0.0, 0.0), right, left_tip, (0.0, radius), "θ")
 
 
 def _o2_label_direction(design: Design, p: Pose) -> np.ndarray:

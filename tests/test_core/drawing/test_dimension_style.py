@@ -90,3 +90,18 @@ def test_angles_are_two_line_angular_dimensions(docs):
     three-point angular dimension (type 5) out."""
     types = {d.dimtype for name in ("scheme block", "scheme rod") for d in docs[name].modelspace().query("DIMENSION")}
     assert 2 in types and 5 not in types
+
+
+@pytest.mark.parametrize("start, turn", [(75.0, 30.0), (10.0, 200.0), (300.0, 90.0)])
+def test_angular_shows_the_counter_clockwise_angle_from_p1_to_p2(start, turn):
+    """The helper's promise kept by the two-line dimension ezdxf renders (which showed
+    360° − θ for the lines in the order p1, p2)."""
+    doc = ezdxf.new()
+    dimensions.add_dimstyle(doc, 1.0)
+    msp = doc.modelspace()
+    ray = lambda deg: (100.0 * math.cos(math.radians(deg)), 100.0 * math.sin(math.radians(deg)))  # noqa: E731
+    middle = ray(start + turn / 2.0)
+    dimensions.angular(msp, (0.0, 0.0), ray(start), ray(start + turn), (0.6 * middle[0], 0.6 * middle[1]), "t")
+    (dim,) = msp.query("DIMENSION")
+    texts = [e.plain_text() for e in dim.get_geometry_block() if e.dxftype() == "MTEXT"]
+    assert texts == [f"t = {turn:g}°"]
