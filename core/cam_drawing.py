@@ -4,7 +4,9 @@ The cam centre at the origin and the follower's pivot on +x at the centre distan
 the CSV; the follower drawn at cam angle 0 (the start of the rise). Layers from
 ``core.drawing.dxf``: the actual profile on OUTLINE (thick), the pitch curve and the base
 circle on CENTER (the textbook draws the theoretical profile dash-dot), the line of centres
-on CENTER with the centre distance dimensioned, the roller and the arm on THIN.
+on CENTER with the centre distance a dimensioned in the GB dimension style of
+``core.drawing.dimensions`` (the scheme's: decimal point, text above the line, sizes for
+the scale an A3 print would use), the roller and the arm on THIN.
 
 Level: a drawing, above ``core.drawing`` (its document factory) and ``core.cam``.
 """
@@ -17,10 +19,15 @@ import numpy as np
 
 from .cam import Cam
 from .cam.follower import pitch, profile
-from .drawing.dxf import CENTER, DIMENSIONS, OUTLINE, THIN, new_document, save_dxf, text_attribs
+from ezdxf import bbox
+
+from .drawing import dimensions as dims
+from .drawing.dxf import CENTER, OUTLINE, THIN, new_document, save_dxf, text_attribs
 
 POINTS = 1440
 """Points of each closed curve (a quarter degree of cam angle apart)."""
+NOTE_MM = 3.5
+"""The notes' text height on paper (GB/T 14691), times the print scale in model space."""
 
 
 def cam_document(cam: Cam):
@@ -43,17 +50,18 @@ def cam_document(cam: Cam):
     msp.add_line((a, 0.0), tuple(roller), dxfattribs={"layer": THIN})
     msp.add_circle((a, 0.0), max(a, r0) * 0.02, dxfattribs={"layer": THIN})
     below = -(r0 + reach)
-    dim = msp.add_linear_dim(base=(a / 2.0, below), p1=(0.0, 0.0), p2=(a, 0.0),
-                             dxfattribs={"layer": DIMENSIONS})
-    dim.render()
-    height = max(2.5, round(max(a, r0) / 40.0, 1))
+    size = bbox.extents(msp).size
+    scale = dims.print_scale(size.x, size.y)
+    dims.add_dimstyle(doc, scale)
+    dims.linear(msp, (0.0, 0.0), (a, 0.0), (a / 2.0, below), 0.0, "a")
+    height = NOTE_MM * scale
     lines = [f"base radius r0 = {r0:.3f} mm (pitch curve), roller r = {cam.roller_mm:.3f} mm",
              f"centre distance a = {a:.3f} mm, arm l = {f.arm_mm:.3f} mm, psi0 = {f.initial_deg:.3f} deg",
              f"max pressure angle rise / return = {cam.max_pressure_rise_deg:.2f} / "
              f"{cam.max_pressure_return_deg:.2f} deg; the cam turns clockwise"]
     for i, text in enumerate(lines):
         msp.add_text(text, height=height, dxfattribs=text_attribs()) \
-            .set_placement((-r0 - reach, below - (3 + 1.6 * i) * height))
+            .set_placement((-r0 - reach, below - (2 + 1.6 * i) * height))
     return doc
 
 

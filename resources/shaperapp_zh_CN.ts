@@ -532,6 +532,10 @@
         <translation>本行最优</translation>
     </message>
     <message>
+        <source>There is nothing to export yet: pick 2 to 6 designs to compare first.</source>
+        <translation>还没有可导出的内容：请先选择 2 到 6 个设计进行比较。</translation>
+    </message>
+    <message>
         <source>Design comparison</source>
         <translation>设计比较</translation>
     </message>
@@ -931,12 +935,60 @@
         <translation>批准</translation>
     </message>
     <message>
+        <source>Number</source>
+        <translation>学号</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>班级</translation>
+    </message>
+    <message>
+        <source>Supervisor</source>
+        <translation>指导教师</translation>
+    </message>
+    <message>
         <source>Motion analysis</source>
         <translation>运动分析图</translation>
     </message>
     <message>
-        <source>Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})</source>
-        <translation>机构运动简图（{count} 个位置），μl = {mu} m/mm（{scale}）</translation>
+        <source>Kinematic diagram at {count} positions, μ_l = {mu} m/mm ({scale})</source>
+        <translation>机构运动简图（{count} 个位置），μ_l = {mu} m/mm（{scale}）</translation>
+    </message>
+    <message>
+        <source>μ_s = {mu} m/mm</source>
+        <translation>μ_s = {mu} m/mm</translation>
+    </message>
+    <message>
+        <source>μ_v = {mu} (m/s)/mm</source>
+        <translation>μ_v = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>μ_a = {mu} (m/s²)/mm</source>
+        <translation>μ_a = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>Velocity polygon, φ = {angle}°, μ_v = {mu} (m/s)/mm</source>
+        <translation>速度多边形，φ = {angle}°，μ_v = {mu} (m/s)/mm</translation>
+    </message>
+    <message>
+        <source>Acceleration polygon, φ = {angle}°, μ_a = {mu} (m/s²)/mm</source>
+        <translation>加速度多边形，φ = {angle}°，μ_a = {mu} (m/s²)/mm</translation>
+    </message>
+    <message>
+        <source>Crank O_2A, L_1</source>
+        <translation>曲柄 O_2A，L_1</translation>
+    </message>
+    <message>
+        <source>Frame O_2O_4, L_2</source>
+        <translation>机架 O_2O_4，L_2</translation>
+    </message>
+    <message>
+        <source>Lever O_4B, L_3</source>
+        <translation>导杆 O_4B，L_3</translation>
+    </message>
+    <message>
+        <source>Rod BC, L_4</source>
+        <translation>连杆 BC，L_4</translation>
     </message>
     <message>
         <source>Ram displacement, velocity and acceleration, n = {rpm} r/min</source>
@@ -959,30 +1011,6 @@
         <translation>φ/(°)</translation>
     </message>
     <message>
-        <source>μs = {mu} m/mm</source>
-        <translation>μs = {mu} m/mm</translation>
-    </message>
-    <message>
-        <source>μv = {mu} (m/s)/mm</source>
-        <translation>μv = {mu} (m/s)/mm</translation>
-    </message>
-    <message>
-        <source>μa = {mu} (m/s²)/mm</source>
-        <translation>μa = {mu} (m/s²)/mm</translation>
-    </message>
-    <message>
-        <source>μφ = {mu} °/mm</source>
-        <translation>μφ = {mu} °/mm</translation>
-    </message>
-    <message>
-        <source>Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm</source>
-        <translation>速度多边形，φ = {angle}°，μv = {mu} (m/s)/mm</translation>
-    </message>
-    <message>
-        <source>Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm</source>
-        <translation>加速度多边形，φ = {angle}°，μa = {mu} (m/s²)/mm</translation>
-    </message>
-    <message>
         <source>Main dimensions</source>
         <translation>主要尺寸</translation>
     </message>
@@ -993,18 +1021,6 @@
     <message>
         <source>Loads and joint forces, φ = {angle}°</source>
         <translation>载荷与运动副反力，φ = {angle}°</translation>
-    </message>
-    <message>
-        <source>μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm</source>
-        <translation>μl = {mu} m/mm（{scale}），μF = {mu_f} N/mm</translation>
-    </message>
-    <message>
-        <source>Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm</source>
-        <translation>滑枕杆组的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
-    </message>
-    <message>
-        <source>Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm</source>
-        <translation>导杆（构件 3）的力多边形，φ = {angle}°，μF = {mu_f} N/mm</translation>
     </message>
     <message>
         <source>Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min</source>
@@ -1023,20 +1039,12 @@
         <translation>E/J</translation>
     </message>
     <message>
-        <source>μM = {mu} (N·m)/mm</source>
-        <translation>μM = {mu} (N·m)/mm</translation>
-    </message>
-    <message>
-        <source>μE = {mu} J/mm</source>
-        <translation>μE = {mu} J/mm</translation>
-    </message>
-    <message>
         <source>Feed cam</source>
         <translation>进给凸轮</translation>
     </message>
     <message>
-        <source>Cam profile by inversion, μl = {mu} m/mm ({scale})</source>
-        <translation>反转法绘制凸轮廓线，μl = {mu} m/mm（{scale}）</translation>
+        <source>Cam profile by inversion, μ_l = {mu} m/mm ({scale})</source>
+        <translation>反转法绘制凸轮廓线，μ_l = {mu} m/mm（{scale}）</translation>
     </message>
     <message>
         <source>Actual profile thick, pitch curve dash-dot, the follower at δ = 0; the cam turns clockwise</source>
@@ -1071,40 +1079,76 @@
         <translation>δ/(°)</translation>
     </message>
     <message>
-        <source>μψ = {mu} °/mm</source>
-        <translation>μψ = {mu} °/mm</translation>
+        <source>μ_ψ = {mu} °/mm</source>
+        <translation>μ_ψ = {mu} °/mm</translation>
     </message>
     <message>
-        <source>μω = {mu} (rad/s)/mm</source>
-        <translation>μω = {mu} (rad/s)/mm</translation>
+        <source>μ_ω = {mu} (rad/s)/mm</source>
+        <translation>μ_ω = {mu} (rad/s)/mm</translation>
     </message>
     <message>
-        <source>μα = {mu} (rad/s²)/mm</source>
-        <translation>μα = {mu} (rad/s²)/mm</translation>
+        <source>μ_α = {mu} (rad/s²)/mm</source>
+        <translation>μ_α = {mu} (rad/s²)/mm</translation>
     </message>
     <message>
-        <source>μα = {mu} °/mm</source>
-        <translation>μα = {mu} °/mm</translation>
+        <source>μ_α = {mu} °/mm</source>
+        <translation>μ_α = {mu} °/mm</translation>
     </message>
     <message>
-        <source>μδ = {mu} °/mm</source>
-        <translation>μδ = {mu} °/mm</translation>
+        <source>μ_δ = {mu} °/mm</source>
+        <translation>μ_δ = {mu} °/mm</translation>
     </message>
     <message>
-        <source>δ0 = {deg}°</source>
-        <translation>δ0 = {deg}°</translation>
+        <source>δ_0 = {deg}°</source>
+        <translation>δ_0 = {deg}°</translation>
     </message>
     <message>
-        <source>δs = {deg}°</source>
-        <translation>δs = {deg}°</translation>
+        <source>δ_s = {deg}°</source>
+        <translation>δ_s = {deg}°</translation>
     </message>
     <message>
-        <source>δ0′ = {deg}°</source>
-        <translation>δ0′ = {deg}°</translation>
+        <source>δ_0′ = {deg}°</source>
+        <translation>δ_0′ = {deg}°</translation>
     </message>
     <message>
-        <source>δs′ = {deg}°</source>
-        <translation>δs′ = {deg}°</translation>
+        <source>δ_s′ = {deg}°</source>
+        <translation>δ_s′ = {deg}°</translation>
+    </message>
+    <message>
+        <source>Swing ψ_max</source>
+        <translation>最大摆角 ψ_max</translation>
+    </message>
+    <message>
+        <source>Rise δ_0, law</source>
+        <translation>推程运动角 δ_0，运动规律</translation>
+    </message>
+    <message>
+        <source>Outer dwell δ_s</source>
+        <translation>远休止角 δ_s</translation>
+    </message>
+    <message>
+        <source>Return δ_0′, law</source>
+        <translation>回程运动角 δ_0′，运动规律</translation>
+    </message>
+    <message>
+        <source>Inner dwell δ_s′</source>
+        <translation>近休止角 δ_s′</translation>
+    </message>
+    <message>
+        <source>Base radius r_0 (pitch curve)</source>
+        <translation>理论廓线基圆半径 r_0</translation>
+    </message>
+    <message>
+        <source>Initial arm angle ψ_0</source>
+        <translation>初始摆角 ψ_0</translation>
+    </message>
+    <message>
+        <source>Min convex radius ρ_min</source>
+        <translation>理论廓线最小外凸曲率半径 ρ_min</translation>
+    </message>
+    <message>
+        <source>Profile base radius r_0 − r</source>
+        <translation>实际廓线基圆半径 r_0 − r</translation>
     </message>
     <message>
         <source>Cam data and results</source>
@@ -1119,26 +1163,6 @@
         <translation>从动件摆臂长 l</translation>
     </message>
     <message>
-        <source>Swing ψmax</source>
-        <translation>最大摆角 ψmax</translation>
-    </message>
-    <message>
-        <source>Rise δ0, law</source>
-        <translation>推程运动角 δ0，运动规律</translation>
-    </message>
-    <message>
-        <source>Outer dwell δs</source>
-        <translation>远休止角 δs</translation>
-    </message>
-    <message>
-        <source>Return δ0′, law</source>
-        <translation>回程运动角 δ0′，运动规律</translation>
-    </message>
-    <message>
-        <source>Inner dwell δs′</source>
-        <translation>近休止角 δs′</translation>
-    </message>
-    <message>
         <source>Allowed pressure angle rise / return</source>
         <translation>许用压力角 推程 / 回程</translation>
     </message>
@@ -1147,16 +1171,8 @@
         <translation>凸轮转速 n</translation>
     </message>
     <message>
-        <source>Base radius r0 (pitch curve)</source>
-        <translation>理论廓线基圆半径 r0</translation>
-    </message>
-    <message>
         <source>Centre distance a</source>
         <translation>中心距 a</translation>
-    </message>
-    <message>
-        <source>Initial arm angle ψ0</source>
-        <translation>初始摆角 ψ0</translation>
     </message>
     <message>
         <source>Roller side of the line of centres</source>
@@ -1175,16 +1191,8 @@
         <translation>最大压力角 推程 / 回程</translation>
     </message>
     <message>
-        <source>Min convex radius ρmin</source>
-        <translation>理论廓线最小外凸曲率半径 ρmin</translation>
-    </message>
-    <message>
         <source>Roller radius r</source>
         <translation>滚子半径 r</translation>
-    </message>
-    <message>
-        <source>Profile base radius r0 − r</source>
-        <translation>实际廓线基圆半径 r0 − r</translation>
     </message>
     <message>
         <source>Pressure angle allowance</source>
@@ -1227,6 +1235,30 @@
         <translation>数值</translation>
     </message>
     <message>
+        <source>μ_l = {mu} m/mm ({scale}), μ_F = {mu_f} N/mm</source>
+        <translation>μ_l = {mu} m/mm（{scale}），μ_F = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>Force polygon of the ram group, φ = {angle}°, μ_F = {mu_f} N/mm</source>
+        <translation>滑枕杆组的力多边形，φ = {angle}°，μ_F = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>Force polygon of the lever (link 3), φ = {angle}°, μ_F = {mu_f} N/mm</source>
+        <translation>导杆（构件 3）的力多边形，φ = {angle}°，μ_F = {mu_f} N/mm</translation>
+    </message>
+    <message>
+        <source>μ_M = {mu} (N·m)/mm</source>
+        <translation>μ_M = {mu} (N·m)/mm</translation>
+    </message>
+    <message>
+        <source>μ_E = {mu} J/mm</source>
+        <translation>μ_E = {mu} J/mm</translation>
+    </message>
+    <message>
+        <source>μ_φ = {mu} °/mm</source>
+        <translation>μ_φ = {mu} °/mm</translation>
+    </message>
+    <message>
         <source>Mean driving torque M_m</source>
         <translation>平均驱动力矩 M_m</translation>
     </message>
@@ -1259,28 +1291,12 @@
         <translation>需加飞轮 J_F − J_e</translation>
     </message>
     <message>
-        <source>Crank O2A, L1</source>
-        <translation>曲柄 O2A，L1</translation>
-    </message>
-    <message>
-        <source>Frame O2O4, L2</source>
-        <translation>机架 O2O4，L2</translation>
-    </message>
-    <message>
-        <source>Lever O4B, L3</source>
-        <translation>导杆 O4B，L3</translation>
-    </message>
-    <message>
-        <source>Rod BC, L4</source>
-        <translation>连杆 BC，L4</translation>
-    </message>
-    <message>
-        <source>Guide above O2, h</source>
-        <translation>导路距 O2 的高度 h</translation>
-    </message>
-    <message>
         <source>Stroke H</source>
         <translation>行程 H</translation>
+    </message>
+    <message>
+        <source>Guide above O_2, h</source>
+        <translation>导路距 O_2 的高度 h</translation>
     </message>
     <message>
         <source>Time ratio K</source>
@@ -1338,16 +1354,28 @@
         <translation>设计名称：</translation>
     </message>
     <message>
-        <source>Drawn by:</source>
-        <translation>制图：</translation>
-    </message>
-    <message>
         <source>School:</source>
         <translation>学校：</translation>
     </message>
     <message>
+        <source>Student:</source>
+        <translation>学生：</translation>
+    </message>
+    <message>
+        <source>Student number:</source>
+        <translation>学号：</translation>
+    </message>
+    <message>
+        <source>Class:</source>
+        <translation>班级：</translation>
+    </message>
+    <message>
         <source>Date:</source>
         <translation>日期：</translation>
+    </message>
+    <message>
+        <source>Supervisor:</source>
+        <translation>指导教师：</translation>
     </message>
     <message>
         <source>The sheet cannot be drawn: %1</source>
@@ -4200,7 +4228,7 @@
         <translation>%1 没有版本号；本程序读取第 %2 版</translation>
     </message>
     <message>
-        <source>%1 holds no design (its &apos;spec&apos; entry is missing)</source>
+        <source>%1 holds no design (its 'spec' entry is missing)</source>
         <translation>%1 中没有设计（缺少设计参数）</translation>
     </message>
     <message>
@@ -4248,11 +4276,11 @@
         <translation>%1 不是设计文件（数值 %2 过大）</translation>
     </message>
     <message>
-        <source>%1: &apos;spec&apos; must be an object of design fields</source>
+        <source>%1: 'spec' must be an object of design fields</source>
         <translation>%1：设计参数须为一组设计字段</translation>
     </message>
     <message>
-        <source>%1: &apos;rpm&apos; must be a list of crank speeds in r/min</source>
+        <source>%1: 'rpm' must be a list of crank speeds in r/min</source>
         <translation>%1：曲柄转速须为以 r/min 计的一列数值</translation>
     </message>
     <message>
@@ -4260,7 +4288,7 @@
         <translation>%1：曲柄转速 %2 不是数值</translation>
     </message>
     <message>
-        <source>%1: &apos;step_deg&apos; must be a number of degrees</source>
+        <source>%1: 'step_deg' must be a number of degrees</source>
         <translation>%1：角度步长须为以度计的数值</translation>
     </message>
     <message>

@@ -28,30 +28,30 @@ from core.cam.table import follower_peaks
 from .charts import Curve, arrow, chart, place_label
 from .dxf import CENTER, OUTLINE, THIN
 from .motion import CAPTION, GAP, TABLE_ROW, caption
-from .sheet import (TITLE_ENGLISH, Box, Circle, Item, Paper, Placement, Sheet, Text, TitleBlock, fit,
-                    frame_items, line, number_text, scale_text, standard_scale, table, sheet_title_block,
-                    symbol, title_block_box)
+from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, fit, frame_items, line, marked,
+                    marked_text, number_text, scale_text, standard_scale, table, symbol)
+from .title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
     "title": "Feed cam",
-    "profile": "Cam profile by inversion, μl = {mu} m/mm ({scale})",
+    "profile": "Cam profile by inversion, μ_l = {mu} m/mm ({scale})",
     "profile_note": "Actual profile thick, pitch curve dash-dot, the follower at δ = 0; the cam turns clockwise",
     "curves": "Follower angle, angular velocity and acceleration over the cam angle, n = {rpm} r/min",
     "pressure": "Pressure angle over the cam angle, allowances [α] dashed",
     "psi": "ψ/(°)", "omega": "ω/(rad/s)", "alpha": "α/(rad/s²)", "angle": "α/(°)", "delta": "δ/(°)",
-    "mu_psi": "μψ = {mu} °/mm", "mu_omega": "μω = {mu} (rad/s)/mm", "mu_alpha": "μα = {mu} (rad/s²)/mm",
-    "mu_angle": "μα = {mu} °/mm", "mu_delta": "μδ = {mu} °/mm",
-    "rise_sector": "δ0 = {deg}°", "dwell_sector": "δs = {deg}°", "return_sector": "δ0′ = {deg}°",
-    "inner_sector": "δs′ = {deg}°",
+    "mu_psi": "μ_ψ = {mu} °/mm", "mu_omega": "μ_ω = {mu} (rad/s)/mm", "mu_alpha": "μ_α = {mu} (rad/s²)/mm",
+    "mu_angle": "μ_α = {mu} °/mm", "mu_delta": "μ_δ = {mu} °/mm",
+    "rise_sector": "δ_0 = {deg}°", "dwell_sector": "δ_s = {deg}°", "return_sector": "δ_0′ = {deg}°",
+    "inner_sector": "δ_s′ = {deg}°",
     "figures": "Cam data and results", "quantity": "Quantity", "value": "Value",
-    "arm": "Follower arm l", "swing": "Swing ψmax", "rise": "Rise δ0, law",
-    "dwell": "Outer dwell δs", "return": "Return δ0′, law", "inner": "Inner dwell δs′",
+    "arm": "Follower arm l", "swing": "Swing ψ_max", "rise": "Rise δ_0, law",
+    "dwell": "Outer dwell δ_s", "return": "Return δ_0′, law", "inner": "Inner dwell δ_s′",
     "allowed": "Allowed pressure angle rise / return", "n": "Cam speed n",
-    "base": "Base radius r0 (pitch curve)", "distance": "Centre distance a",
-    "initial": "Initial arm angle ψ0", "side": "Roller side of the line of centres",
+    "base": "Base radius r_0 (pitch curve)", "distance": "Centre distance a",
+    "initial": "Initial arm angle ψ_0", "side": "Roller side of the line of centres",
     "above": "above", "below": "below",
-    "max_pressure": "Max pressure angle rise / return", "rho": "Min convex radius ρmin",
-    "roller": "Roller radius r", "profile_base": "Profile base radius r0 − r",
+    "max_pressure": "Max pressure angle rise / return", "rho": "Min convex radius ρ_min",
+    "roller": "Roller radius r", "profile_base": "Profile base radius r_0 − r",
     "allowance": "Pressure angle allowance", "exceeded": "EXCEEDED",
     "peaks": "Follower ω_max / α_max", "phase": "Rise starts at crank angle",
     "parabolic": "parabolic", "cosine": "cosine", "sine": "sine", "poly345": "3-4-5",
@@ -179,10 +179,11 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
         u = np.array([math.cos(mid), math.sin(mid)])
         arc = np.radians(np.linspace(start, start + span, max(int(span), 2)))
         items.append(line(o + (ray_out - 2.0) * np.column_stack([np.cos(arc), np.sin(arc)]), THIN))
-        text = lab[key].format(deg=number_text(round(float(span), 3)))
+        text, indices = marked(lab[key].format(deg=number_text(round(float(span), 3))))
         at = o + (ray_out + 1.0) * u
         placed = place_label(text, (float(at[0]), float(at[1])), 3.5, taken, tuple(u), gap=0.5,
-                             within=box, optional=True, rings=6)   # a short sector's a ring out
+                             within=box, optional=True, rings=6,   # a short sector's a ring out
+                             subscripts=indices)
         items += [placed] if placed else []
     # the turning sense: a clockwise arc with its head, inside the base circle
     r_arrow = 0.45 * place.length(r0)
@@ -238,11 +239,11 @@ def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],
                       (edges[2], edges[3], inputs.return_pressure_deg))
         drawn = chart(pbox, deg, [Curve(y)], lab["delta"], lab[key], ticks, levels=levels)
         items += drawn.items
-        items.append(Text(lab["mu_" + key].format(mu=number_text(drawn.y_scale)),
-                          (drawn.x_end, drawn.y_end), 3.5, "rt"))
+        items.append(marked_text(lab["mu_" + key].format(mu=number_text(drawn.y_scale)),
+                                 (drawn.x_end, drawn.y_end), 3.5, "rt"))
         if k == 0:
-            items.append(Text(lab["mu_delta"].format(mu=number_text(drawn.x_scale)),
-                              (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
+            items.append(marked_text(lab["mu_delta"].format(mu=number_text(drawn.x_scale)),
+                                     (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
         charts[key] = (drawn.y_scale, drawn.x_scale, drawn.origin)
     return items
 

@@ -6,10 +6,14 @@ the geometry is stretched). Every one carries a text like ``L1 = <>``: CAD puts
 its own measurement where ``<>`` stands, so the text cannot disagree with the
 geometry.
 
-Model space is drawn at 1:1 in mm and printed at a reduced scale; the style's
-``DIMSCALE`` is that scale's denominator (the CAD convention for dimensions in
-model space), so arrows and texts print at their standard sizes (text 5 mm after
-GB/T 14691, arrows 3.5 mm) whatever the size of the mechanism.
+Model space is drawn at 1:1 in mm and printed at a reduced scale 1:n. Arrows and
+texts must print at their standard sizes (text 5 mm after GB/T 14691, arrows
+3.5 mm) whatever the size of the mechanism, so the style holds every size already
+multiplied by n, with ``DIMSCALE`` = 1. CAD's own convention would be the paper
+sizes and ``DIMSCALE`` = n, but not every reader honours it: LibreCAD 2.2 ignores
+DIMSCALE and drew the scheme's dimension texts at a quarter of the labels' height.
+Every DXF this tool writes (the scheme, the cam) dimensions in this one style:
+decimal point, text above the line, so no reader strikes the text through.
 """
 from __future__ import annotations
 
@@ -18,23 +22,40 @@ import math
 from ezdxf.document import Drawing
 
 from .dxf import DIMENSIONS, TEXT_STYLE
+from .sheet import standard_scale
 
 DIMSTYLE = "GB_MM"
 DIM_TEXT_MM = 5.0            # text height on paper, GB/T 14691's series
 ARROW_MM = 3.5               # arrow length on paper (≥ 6d for d = 0.5 mm)
 DECIMALS = 2
+A3_ROOM_MM = (380.0, 260.0)  # an A3 sheet's drawing area: the scale a print would use
+
+
+def print_scale(width_mm: float, height_mm: float) -> float:
+    """n of the GB/T 14690 reduction 1:n at which a drawing ``width_mm`` × ``height_mm``
+    (model space, with a quarter more room for its dimensions) fits an A3 sheet."""
+    return max(standard_scale(width_mm * 1.25, A3_ROOM_MM[0]),
+               standard_scale(height_mm * 1.25, A3_ROOM_MM[1]))
 
 
 def add_dimstyle(doc: Drawing, scale: float = 1.0) -> str:
     """Add the GB dimension style (mm, 5 mm text, ``.`` as decimal sign, trailing zeros
-    dropped, text above the line and aligned with it) for a print at 1:``scale``."""
-    doc.dimstyles.new(DIMSTYLE, dxfattribs={
-        "dimscale": float(scale), "dimlfac": 1.0, "dimtxt": DIM_TEXT_MM, "dimasz": ARROW_MM,
-        "dimexe": 2.0, "dimexo": 0.0, "dimgap": 1.0, "dimdli": 7.0,
+    dropped, text above the line and aligned with it) for a print at 1:``scale``: its sizes
+    are the paper's times ``scale`` and DIMSCALE is 1 (see the module's docstring)."""
+    n = float(scale)
+    attribs = {
+        "dimscale": 1.0, "dimlfac": 1.0, "dimtxt": DIM_TEXT_MM * n, "dimasz": ARROW_MM * n,
+        "dimexe": 2.0 * n, "dimexo": 0.0, "dimgap": 1.0 * n, "dimdli": 7.0 * n,
         "dimtad": 1, "dimtih": 0, "dimtoh": 0, "dimjust": 0,
         "dimdec": DECIMALS, "dimzin": 8, "dimdsep": ord("."), "dimlunit": 2,
         "dimaunit": 0, "dimadec": DECIMALS, "dimazin": 2, "dimtxsty": TEXT_STYLE,
-    })
+    }
+    doc.dimstyles.new(DIMSTYLE, dxfattribs=dict(attribs))
+    # The drawing's current dimension variables too: LibreCAD draws every dimension from
+    # these and not from its style (the cam came out with "Standard"'s decimal comma).
+    doc.header["$DIMSTYLE"] = DIMSTYLE
+    for name, value in attribs.items():
+        doc.header[f"${name.upper()}"] = value
     return DIMSTYLE
 
 
@@ -64,6 +85,11 @@ def linear(msp, p1, p2, base, angle_deg: float, name: str) -> None:
 
 def angular(msp, center, p1, p2, base, name: str) -> None:
     """``name`` = the angle at ``center`` from p1 to p2 (counter-clockwise), its arc
-    through ``base``."""
-    msp.add_angular_dim_3p(base=tuple(base), center=tuple(center), p1=tuple(p1), p2=tuple(p2),
-                           text=f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()
+    through ``base``. Written as the angle of two lines from ``center``, the angular
+    dimension every reader knows: LibreCAD 2.2 leaves out the three-point one. The lines
+    go in the order ezdxf's renderer needs to draw the counter-clockwise angle (p2's
+    first: given p1's first, it drew 330° for 30°)."""
+    c = tuple(map(float, center))[:2]
+    msp.add_angular_dim_2l(base=tuple(base), line1=(c, tuple(map(float, p2))[:2]),
+                           line2=(c, tuple(map(float, p1))[:2]), text=f"{name} = <>",
+                           dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()

@@ -32,19 +32,20 @@ from .charts import Curve, arrow, chart, place_label, polygon_extent, polygon_fi
 from .dxf import OUTLINE
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Sheet, TitleBlock, fit, frame_items,
-                    number_text, scale_text, standard_scale, symbol, table, sheet_title_block, title_block_box)
+from .sheet import (Box, Item, Paper, Sheet, fit, frame_items, number_text, scale_text, standard_scale,
+                    symbol, table)
+from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
     "title": "Kinetostatic analysis",
     "mechanism": "Loads and joint forces, φ = {angle}°",
-    "mechanism_scales": "μl = {mu} m/mm ({scale}), μF = {mu_f} N/mm",
-    "polygon_ram": "Force polygon of the ram group, φ = {angle}°, μF = {mu_f} N/mm",
-    "polygon_lever": "Force polygon of the lever (link 3), φ = {angle}°, μF = {mu_f} N/mm",
+    "mechanism_scales": "μ_l = {mu} m/mm ({scale}), μ_F = {mu_f} N/mm",
+    "polygon_ram": "Force polygon of the ram group, φ = {angle}°, μ_F = {mu_f} N/mm",
+    "polygon_lever": "Force polygon of the lever (link 3), φ = {angle}°, μ_F = {mu_f} N/mm",
     "torque": "Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min",
     "energy": "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J",
     "M": "M/(N·m)", "E": "E/J", "phi": "φ/(°)",
-    "mu_M": "μM = {mu} (N·m)/mm", "mu_E": "μE = {mu} J/mm", "mu_phi": "μφ = {mu} °/mm",
+    "mu_M": "μ_M = {mu} (N·m)/mm", "mu_E": "μ_E = {mu} J/mm", "mu_phi": "μ_φ = {mu} °/mm",
     "flywheel": "Flywheel", "quantity": "Quantity", "value": "Value",
     "n": "Crank speed n", "M_mean": "Mean driving torque M_m", "M_max": "Largest driving torque",
     "P_mean": "Mean power (before efficiency)", "dW": "Energy fluctuation ΔW_max",
@@ -107,8 +108,14 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
         areas[f"mechanism {k + 1}"] = (cell, tuple(items))
         force_scales.append(mu_f)
 
+    summary = summarize(design, [rpm], masses)
+    rows = flywheel_rows(summary, masses, lab)
+    cells_rows = [(lab["quantity"], lab["value"])] + rows
+    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(cells_rows)
+    # the polygons above the flywheel table and its caption (below it on a small sheet)
+    poly_bottom = max(split_y, table_top + 2 * CAPTION + GAP)
     poly_w = (bx1 - split_x - GAP) / 2.0
-    poly_h = (by1 - split_y - GAP) / 2.0
+    poly_h = (by1 - poly_bottom - GAP) / 2.0
     polygon_scales = []
     for r, (group, build) in enumerate((("ram", force_polygon), ("lever", lever_force_polygon))):
         for k, angle in enumerate(diagrams):
@@ -122,7 +129,6 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     table_w = TITLE_WIDTH
     charts_right = bx1 - table_w - 2 * GAP
     half = (split_y - by0 - GAP) / 2.0
-    summary = summarize(design, [rpm], masses)
     speed = summary.speeds[0]
     torque_box = (bx0 + GAP, by0 + GAP + half, charts_right, split_y - GAP)
     energy_box = (bx0 + GAP, by0 + GAP, charts_right, by0 + half)
@@ -137,9 +143,6 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
                                        lab["E"], "mu_E", lab)
     areas["energy"] = (energy_box, tuple(items))
 
-    rows = flywheel_rows(summary, masses, lab)
-    cells_rows = [(lab["quantity"], lab["value"])] + rows
-    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(cells_rows)
     table_box = (bx1 - table_w, table_top - TABLE_ROW * len(cells_rows), bx1, table_top)
     items = list(table((bx1 - table_w, table_top), (115.0, 65.0), cells_rows, TABLE_ROW, 3.5,
                        aligns="lc"))

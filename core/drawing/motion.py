@@ -29,22 +29,22 @@ from core.positions import positions, special_angles
 from . import mechanism as mech
 from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE, THIN
-from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped,
-                    fit, fitting_height, frame_items, number_text, scale_text, standard_scale, table,
-                    sheet_title_block, title_block_box)
+from .sheet import (Box, Item, Paper, Placement, Sheet, Text, fit, fitting_height, frame_items, marked,
+                    marked_text, number_text, scale_text, standard_scale, table)
+from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
     "title": "Motion analysis",
-    "mechanism": "Kinematic diagram at {count} positions, μl = {mu} m/mm ({scale})",
+    "mechanism": "Kinematic diagram at {count} positions, μ_l = {mu} m/mm ({scale})",
     "curves": "Ram displacement, velocity and acceleration, n = {rpm} r/min",
     "s": "s/mm", "v": "v/(m/s)", "a": "a/(m/s²)", "phi": "φ/(°)",
-    "mu_s": "μs = {mu} m/mm", "mu_v": "μv = {mu} (m/s)/mm", "mu_a": "μa = {mu} (m/s²)/mm",
-    "mu_phi": "μφ = {mu} °/mm",
-    "velocity": "Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm",
-    "acceleration": "Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm",
+    "mu_s": "μ_s = {mu} m/mm", "mu_v": "μ_v = {mu} (m/s)/mm", "mu_a": "μ_a = {mu} (m/s²)/mm",
+    "mu_phi": "μ_φ = {mu} °/mm",
+    "velocity": "Velocity polygon, φ = {angle}°, μ_v = {mu} (m/s)/mm",
+    "acceleration": "Acceleration polygon, φ = {angle}°, μ_a = {mu} (m/s²)/mm",
     "dimensions": "Main dimensions", "quantity": "Quantity", "value": "Value",
-    "L1": "Crank O2A, L1", "L2": "Frame O2O4, L2", "L3": "Lever O4B, L3", "L4": "Rod BC, L4",
-    "h": "Guide above O2, h", "H": "Stroke H", "K": "Time ratio K",
+    "L1": "Crank O_2A, L_1", "L2": "Frame O_2O_4, L_2", "L3": "Lever O_4B, L_3", "L4": "Rod BC, L_4",
+    "h": "Guide above O_2, h", "H": "Stroke H", "K": "Time ratio K",
     "theta": "Extreme-position angle θ", "n": "Crank speed n",
     **TITLE_ENGLISH,
 }
@@ -98,13 +98,14 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                               ((mech_box[0] + mech_box[2]) / 2.0, mech_area[3]), mech_box[2] - mech_box[0]))
     areas["mechanism"] = (mech_area, tuple(mech_items))
     motion = solve(design, np.radians(np.linspace(0.0, 360.0, 721)), [rpm])
-    curves_area = (split_x + GAP, split_y + GAP, bx1 - GAP, by1 - GAP)
+    rows = [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab)
+    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(rows)
+    # the curves above the dimensions' table (on A3 it reaches above the split)
+    curves_area = (split_x + GAP, max(split_y, table_top) + GAP, bx1 - GAP, by1 - GAP)
     areas["curves"] = (curves_area, tuple(_curves(motion, curves_area, angles, where.number[numbered],
                                                   lab, rpm)))
     polygons_area = (bx0 + GAP, by0 + GAP, bx1 - TITLE_WIDTH - 2 * GAP, split_y - GAP)
     areas["polygons"] = (polygons_area, tuple(_polygons(design, rpm, diagrams, polygons_area, lab)))
-    rows = [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab)
-    table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(rows)
     areas["dimensions"] = ((bx1 - TITLE_WIDTH, table_top - TABLE_ROW * len(rows), bx1, table_top),
                            tuple(table((bx1 - TITLE_WIDTH, table_top), (120.0, 60.0), rows,
                                        TABLE_ROW, 3.5, aligns="lc")))
@@ -114,10 +115,11 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
 
 
 def caption(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> Text:
-    """A drawing's caption hanging from ``top_centre``, as large as fits ``room`` (≤ ``largest``)."""
-    h = fitting_height(text, room, largest)
+    """A drawing's caption hanging from ``top_centre``, as large as fits ``room`` (≤ ``largest``),
+    its indices subscripts (the index notation of ``sheet.marked``: M_m, μ_l)."""
+    h = fitting_height(marked(text)[0], room, largest)
     x, y = top_centre
-    return Text(clipped(text, room, h), (x, y - 0.2 * h), h, "ct")     # the accents' room above h
+    return marked_text(text, (x, y - 0.2 * h), h, "ct", room)     # the accents' room above h
 
 
 def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
@@ -175,11 +177,11 @@ def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
         pbox = (x0, top - (k + 1) * panel, x1, top - k * panel - (0 if k == 0 else 0))
         drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks)
         items += drawn.items
-        items.append(Text(lab[mu_key].format(mu=number_text(drawn.y_scale * unit)),
-                          (drawn.x_end, drawn.y_end), 3.5, "rt"))
+        items.append(marked_text(lab[mu_key].format(mu=number_text(drawn.y_scale * unit)),
+                                 (drawn.x_end, drawn.y_end), 3.5, "rt"))
         if k == 0:
-            items.append(Text(lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
-                              (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
+            items.append(marked_text(lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
+                                     (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
     return items
 
 

@@ -28,10 +28,9 @@ from ..geometry import Design
 from ..kinematics import shape
 from . import dimensions as dims
 from .dxf import CENTER, DASHED, OUTLINE, THIN, new_document, save_dxf, text_attribs
-from .sheet import standard_scale
 
 UNITS_PER_LEVER = 40.0       # u = L3 / 40
-ROOM_MM = (380.0, 260.0)     # an A3 sheet's drawing area: the scale a print would use
+ROOM_MM = dims.A3_ROOM_MM    # an A3 sheet's drawing area: the scale a print would use
 LABEL_MM = 5.0               # joint names on paper
 PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin radii, u
 
@@ -76,7 +75,7 @@ def scheme_document(design: Design, angle_deg: float = 0.0) -> Drawing:
     _draw_links(msp, design, p, lay)
     extents = bbox.extents(msp)
     size = extents.size
-    scale = max(standard_scale(size.x * 1.25, ROOM_MM[0]), standard_scale(size.y * 1.25, ROOM_MM[1]))
+    scale = dims.print_scale(size.x, size.y)
     dims.add_dimstyle(doc, scale)
     _draw_labels(msp, design, p, scale)
     _draw_dimensions(msp, design, p, lay, scale, extents.extmin.x)

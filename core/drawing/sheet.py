@@ -10,21 +10,22 @@ Coordinates are millimetres on the paper, origin at its lower-left corner, y up.
 Each item is on one of :mod:`core.drawing.dxf`'s layers, which fixes its line
 type after GB/T 4457.4 (thick, thin, centre, dashed). Paper sizes and the border
 follow GB/T 14689 (landscape, with a binding margin), scales GB/T 14690, text
-heights GB/T 14691's series, the title block the layout of GB/T 10609.1 (lower
-right; its label texts come from the caller, who chooses the language).
+heights GB/T 14691's series; the title block (GB/T 10609.1) is
+:mod:`core.drawing.title_block`'s.
 """
 from __future__ import annotations
 
 import math
+import re
 import unicodedata
 from dataclasses import dataclass, field
-from typing import Mapping, Sequence, Union
+from typing import Sequence, Union
 
 import numpy as np
 
 from core.polygons import nice_scale
 
-from .dxf import OUTLINE, TEXT, THIN, TITLE
+from .dxf import OUTLINE, TEXT, THIN
 
 Pair = tuple[float, float]
 Box = tuple[float, float, float, float]          # x0, y0, x1, y1 in paper mm
@@ -145,6 +146,47 @@ def symbol(*parts: str | tuple[str, str]) -> tuple[str, tuple[tuple[int, int], .
             spans.append((len(text), len(text) + len(index)))
             text += index
     return text, tuple(spans)
+
+
+# The sheets' index notation in captions and translated strings: an underscore before the
+# index, which is a run of Latin or Greek letters or a run of digits (so "O_2O_4" is two
+# indices, and a Chinese word may follow an index without a space).
+INDEX_MARK = re.compile("_([A-Za-z\u0391-\u03a9\u03b1-\u03c9]+|[0-9]+)")
+
+
+def marked(text: str) -> tuple[str, tuple[tuple[int, int], ...]]:
+    """Text and subscript spans from a caption in the index notation: ``M_m`` is M with m
+    below, ``ΔW_max`` ΔW with max, ``O_2O_4`` O2O4 with both digits below. Why: a
+    translated string cannot hold :class:`Text`'s spans, and a literal underscore on a
+    sheet is no way to write an index (GB/T 14691 lowers it one size smaller). Only the
+    program's own words are read so; a user's text (a design name) is taken as it is."""
+    plain, spans, at = "", [], 0
+    for match in INDEX_MARK.finditer(text):
+        plain += text[at:match.start()]
+        spans.append((len(plain), len(plain) + len(match.group(1))))
+        plain += match.group(1)
+        at = match.end()
+    return plain + text[at:], tuple(spans)
+
+
+def marked_text(text: str, position: Pair, height: float, align: str = "lb", room: float | None = None,
+                layer: str = TEXT) -> Text:
+    """A :class:`Text` of a caption in the index notation (see :func:`marked`), clipped with
+    an ellipsis to ``room`` mm when given."""
+    plain, spans = marked(text)
+    if room is not None:
+        plain, spans = clipped_spans(plain, spans, room, height)
+    return Text(plain, position, height, align, layer=layer, subscripts=spans)
+
+
+def clipped_spans(text: str, spans: tuple[tuple[int, int], ...], room: float,
+                  height: float) -> tuple[str, tuple[tuple[int, int], ...]]:
+    """``text`` cut as :func:`clipped` cuts it, its subscript spans cut with it."""
+    cut = clipped(text, room, height)
+    if cut == text:
+        return text, spans
+    kept = len(cut) - 1 if cut.endswith("…") else len(cut)
+    return cut, tuple((a, min(b, kept)) for a, b in spans if a < kept)
 
 
 def text_width(text: str, height: float) -> float:
@@ -294,23 +336,31 @@ def clipped(text: str, room: float, height: float) -> str:
 
 
 def cell_text(text: str, box: Box, largest: float = 5.0, align: str = "c",
-              layer: str = TEXT) -> Text:
+              layer: str = TEXT, notation: bool = False) -> Text:
     """``text`` inside the cell ``box``, as large as fits (≤ ``largest``), centred
-    vertically, aligned left (1 mm in), centre or right."""
+    vertically, aligned left (1 mm in), centre or right; with ``notation``, in the index
+    notation of :func:`marked` (the program's own words only, never a user's)."""
     x0, y0, x1, y1 = box
     room = x1 - x0 - 2.0
-    h = min(fitting_height(text, room, largest), (y1 - y0) / 1.6)
+    plain, spans = marked(text) if notation else (text, ())
+    h = min(fitting_height(plain, room, largest), (y1 - y0) / 1.6)
     h = max((v for v in TEXT_HEIGHTS if v <= h), default=TEXT_HEIGHTS[0])
     x = {"l": x0 + 1.0, "c": (x0 + x1) / 2.0, "r": x1 - 1.0}[align]
-    return Text(clipped(text, room, h), (x, (y0 + y1) / 2.0), h, align + "m", layer=layer)
+    plain, spans = clipped_spans(plain, spans, room, h)
+    text = Text(plain, (x, (y0 + y1) / 2.0), h, align + "m", layer=layer, subscripts=spans)
+    low, high = text.box()[1], text.box()[3]
+    lift = min(max(y0 - low, 0.0), max(y1 - high, 0.0))   # a subscript below: up, if it has room
+    return text if not lift else Text(plain, (x, (y0 + y1) / 2.0 + lift), h, align + "m",
+                                      layer=layer, subscripts=spans)
 
 
-# ---- tables and the title block ----------------------------------------------------------
+# ---- tables ------------------------------------------------------------------------------
 
 def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]],
           row_height: float = 8.0, text_height: float = 3.5, layer: str = TEXT,
           aligns: str | None = None) -> list[Item]:
-    """Rows of texts in ruled cells: outline thick, inner rules thin (GB/T 10609.1)."""
+    """Rows of texts in ruled cells: outline thick, inner rules thin (GB/T 10609.1). The
+    texts are the program's own labels and numbers, in the index notation of :func:`marked`."""
     x0, y_top = top_left
     xs = np.concatenate([[x0], x0 + np.cumsum(widths)])
     height = row_height * len(rows)
@@ -326,70 +376,8 @@ def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]]
             if text:
                 align = aligns[c] if aligns else "c"
                 items.append(cell_text(text, (float(xs[c]), y1 - row_height, float(xs[c + 1]), y1),
-                                       text_height, align, layer))
+                                       text_height, align, layer, notation=True))
     return items
-
-
-TITLE_WIDTH = 180.0
-TITLE_ROW = 8.0
-TITLE_ROWS = 4
-TITLE_LABEL_KEYS = ("design", "scale", "sheet", "drawn", "date", "checked", "approved")
-# The title block's words in English: every sheet's ENGLISH texts start from these.
-TITLE_ENGLISH = {"design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn",
-                 "date": "Date", "checked": "Checked", "approved": "Approved"}
-
-
-@dataclass(frozen=True)
-class TitleBlock:
-    """What the title block says. ``labels`` maps TITLE_LABEL_KEYS to the caller's words."""
-
-    title: str                 # the sheet's name, e.g. "Motion analysis"
-    design: str                # the design's name
-    scale: str                 # e.g. "1:5"
-    sheet: str                 # e.g. "1/2"
-    drawn: str = ""
-    date: str = ""
-    school: str = ""
-    labels: Mapping[str, str] = field(default_factory=dict)
-
-
-def title_block_box(p: Paper) -> Box:
-    x1, y0 = p.border[2], p.border[1]
-    return (x1 - TITLE_WIDTH, y0, x1, y0 + TITLE_ROW * TITLE_ROWS)
-
-
-def title_block(p: Paper, block: TitleBlock) -> list[Item]:
-    """The title block in the border's lower right corner, 180 × 32 mm: labels and values
-    on the left, the sheet's name and the school in two large cells on the right."""
-    x0, y0, x1, y1 = title_block_box(p)
-    lab = lambda key: block.labels.get(key, key)            # noqa: E731
-    cols = (x0, x0 + 22.0, x0 + 62.0, x0 + 84.0, x0 + 114.0, x1)
-    row_y = [y1 - k * TITLE_ROW for k in range(TITLE_ROWS + 1)]
-    items: list[Item] = [rectangle((x0, y0, x1, y1), OUTLINE)]
-    for k in range(1, TITLE_ROWS):
-        items.append(line([(x0, row_y[k]), (cols[4], row_y[k])], THIN))
-    items.append(line([(cols[4], row_y[2]), (x1, row_y[2])], THIN))
-    items.append(line([(cols[1], y0), (cols[1], y1)], THIN))
-    for x in cols[2:4]:                                       # the name's cell spans them
-        items.append(line([(x, y0), (x, row_y[1])], THIN))
-    items.append(line([(cols[4], y0), (cols[4], y1)], OUTLINE))
-    cells = [(0, lab("design"), block.design, None, None),
-             (1, lab("scale"), block.scale, lab("sheet"), block.sheet),
-             (2, lab("drawn"), block.drawn, lab("date"), block.date),
-             (3, lab("checked"), "", lab("approved"), "")]
-    for row, label, value, label2, value2 in cells:
-        top, bottom = row_y[row], row_y[row + 1]
-        items.append(cell_text(label, (cols[0], bottom, cols[1], top), 3.5, layer=TITLE))
-        if label2 is None:
-            items.append(cell_text(value, (cols[1], bottom, cols[4], top), 5.0, layer=TITLE))
-            continue
-        items.append(cell_text(value, (cols[1], bottom, cols[2], top), 3.5, layer=TITLE))
-        items.append(cell_text(label2, (cols[2], bottom, cols[3], top), 3.5, layer=TITLE))
-        items.append(cell_text(value2, (cols[3], bottom, cols[4], top), 3.5, layer=TITLE))
-    items.append(cell_text(block.title, (cols[4], row_y[2], x1, y1), 7.0, layer=TITLE))
-    if block.school:
-        items.append(cell_text(block.school, (cols[4], y0, x1, row_y[2]), 5.0, layer=TITLE))
-    return [it for it in items if not (isinstance(it, Text) and not it.text)]
 
 
 # ---- checks the tests and the writers share ------------------------------------------------
@@ -420,15 +408,3 @@ def overlapping_texts(sheet: Sheet) -> list[tuple[Text, Text]]:
                & (boxes[i + 1:, 1] < b[3]) & (boxes[i + 1:, 3] > b[1]))
         pairs += [(texts[i], texts[i + 1 + j]) for j in np.flatnonzero(hit)]
     return pairs
-
-
-def sheet_title_block(p: Paper, block: TitleBlock | None, labels: Mapping[str, str],
-                      scale: str) -> tuple[Box, tuple[Item, ...]]:
-    """A sheet's title block as its area on the paper and its items: the caller's block
-    (or one named by ``labels["title"]``, sheet 1/1) with the drawing's scale and the
-    title block's words from ``labels``."""
-    block = block or TitleBlock(labels["title"], "", "", "1/1")
-    block = TitleBlock(block.title or labels["title"], block.design, scale, block.sheet,
-                       block.drawn, block.date, block.school,
-                       {k: labels[k] for k in TITLE_LABEL_KEYS})
-    return title_block_box(p), tuple(title_block(p, block))

@@ -217,7 +217,13 @@ class CompareView(QWidget):
 
     def export_image(self, path: str) -> None:
         """Curves and the whole table as one picture: SVG for ``.svg``, else a raster type
-        by suffix (``image_export.image_type`` refuses anything else, naming the path)."""
+        by suffix (``image_export.image_type`` refuses anything else, naming the path).
+        ValueError, and nothing written, while there is nothing to compare: the picture
+        would be an empty plot with an empty table frame (as the Explore tab refuses a map
+        not yet computed)."""
+        if self.comparison is None:
+            raise ValueError(self.tr("There is nothing to export yet: pick 2 to 6 designs to "
+                                     "compare first."))
         table = self.table
         # the headers' geometry is laid out lazily: right after a new comparison it is
         # still the last one's (a table frame drawn below the canvas), so lay it out now
@@ -270,6 +276,8 @@ class CompareView(QWidget):
         except OSError as exc:
             self._fail(self.tr("Could not write %1: %2").replace("%1", path)
                        .replace("%2", describe_os_error(exc)))
+        except ValueError as exc:      # nothing to compare, or a suffix that is no image type
+            self._fail(self.tr("Could not write %1: %2").replace("%1", path).replace("%2", str(exc)))
 
     def _fail(self, message: str) -> None:
         QMessageBox.warning(self, self.tr("Compare designs"), message)

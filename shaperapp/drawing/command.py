@@ -7,7 +7,6 @@ starts and before anything is written: bad input is one line and exit status 2.
 from __future__ import annotations
 
 import argparse
-import datetime
 from dataclasses import replace
 from pathlib import Path
 
@@ -21,8 +20,9 @@ from core.dynamics import MassProperties
 from core.errors import DesignError
 from core.positions import DEFAULT_COUNT, check_count
 
-from shaperapp.widgets.command_line import (check_output_folder, cover_text, design_name,
-                                            diagram_angles, inputs_from_args, start_qt)
+from shaperapp.widgets.command_line import (add_cover_options, check_output_folder, cover_from_args,
+                                            cover_text, design_name, diagram_angles, inputs_from_args,
+                                            start_qt)
 
 from .content import CONTENTS, SHEET_SUFFIXES, SheetChoice
 from .scheme_command import SCHEME, add_scheme_options, write_scheme_file
@@ -41,7 +41,9 @@ DESCRIPTION = ("The drawing sheets of the course design (图纸): paper after GB
                "line type). Chinese sheets need a font with Chinese glyphs (fonts-noto-cjk).")
 EXAMPLES = ("shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --sheet A1 "
             "--content motion -o motion.pdf",
-            "shaper drawing --design my.shaper.json --lang zh --diagrams 60,240 -o 运动分析.dxf",
+            "shaper drawing --design my.shaper.json --lang zh --diagrams 60,240 --student 张三 "
+            "--student-number 2021001 --class 机械2101 --school 机械工程学院 --supervisor 李四 "
+            "-o 运动分析.dxf",
             "shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --content cam --arm 120 "
             "--swing 15 --pressure 40 --rise 60 --dwell 10 --return 60 -o cam.pdf")
 
@@ -67,12 +69,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--diagrams", metavar="A,B",
                         help="crank angles (degrees) of the two polygon positions (default: the "
                              "numbered positions nearest mid working and mid return stroke)")
-    block = parser.add_argument_group("title block (blank when not given)")
+    block = parser.add_argument_group("title block (GB/T 10609.1; the report's cover options; blank "
+                                      "when not given, to fill in by hand)")
     block.add_argument("--title", metavar="TEXT",
                        help="design name (default: the design file's name)")
-    block.add_argument("--drawn-by", metavar="TEXT", help="who drew it")
-    block.add_argument("--school", metavar="TEXT", help="school or department")
-    block.add_argument("--date", metavar="TEXT", help="the date (default: today, YYYY-MM-DD)")
+    add_cover_options(block, "the date (default: today, YYYY-MM-DD)")
+    block.add_argument("--drawn-by", dest="student", metavar="TEXT", help="the same as --student")
 
 
 CAM_WORDS = tuple((option, dest) for option, dest, _ in SHEET + OPTIONAL) + (
@@ -99,10 +101,10 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
     if count > MAX_POSITIONS:
         raise DesignError("positions", count, f"must be 1 to {MAX_POSITIONS} on a drawing sheet")
     diagrams = diagram_angles(args)
-    date = cover_text("--date", args.date) or datetime.date.today().isoformat()
-    return SheetChoice(args.content, paper, count, diagrams,
-                       design_name(args), cover_text("--drawn-by", args.drawn_by),
-                       date, cover_text("--school", args.school))
+    cover, date = cover_from_args(args)
+    return SheetChoice(args.content, paper, count, diagrams, design_name(args),
+                       cover["student"], date, cover["school"], number=cover["number"],
+                       group=cover["group"], supervisor=cover["supervisor"])
 
 
 def run(args: argparse.Namespace) -> int:

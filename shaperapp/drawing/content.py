@@ -5,7 +5,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Sequence
 
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Sheet, TitleBlock, paper
+from core.drawing.sheet import Sheet, paper
+from core.drawing.title_block import TitleBlock
 from core.dynamics import MassProperties
 from core.spec import Spec
 
@@ -36,6 +37,15 @@ class SheetChoice:
     date: str = ""
     school: str = ""
     cam: "Cam | None" = None        # the cam sheet's cam (the Cam tab's, or the options')
+    number: str = ""                # the student's number
+    group: str = ""                 # the class
+    supervisor: str = ""
+
+    def title_block(self, title: str, design_name: str) -> TitleBlock:
+        """The title block's fields of this choice (its scale is the sheet's to fill in)."""
+        return TitleBlock(title, design_name, "", SHEET_NUMBER[self.content], self.drawn, self.date,
+                          self.school, number=self.number, group=self.group,
+                          supervisor=self.supervisor)
 
 
 def build_sheet(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
@@ -54,9 +64,7 @@ def motion(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
     design = spec.design()
     idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
     labels = motion_labels()
-    block = TitleBlock(labels["title"], choice.design_name or inputs_name(spec), "",
-                       SHEET_NUMBER[choice.content],
-                       choice.drawn, choice.date, choice.school)
+    block = choice.title_block(labels["title"], choice.design_name or inputs_name(spec))
     return motion_sheet(design, float(rpms[0]), paper(choice.paper), count=choice.count,
                         diagram_deg=choice.diagram_deg, idle_fraction=idle, labels=labels,
                         block=block).sheet
@@ -75,8 +83,7 @@ def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
                          "cutting force, or a design file with loads")
     design = spec.design()
     labels = forces_labels()
-    block = TitleBlock(labels["title"], choice.design_name, "", SHEET_NUMBER[choice.content],
-                       choice.drawn, choice.date, choice.school)
+    block = choice.title_block(labels["title"], choice.design_name)
     return forces_sheet(design, float(rpms[0]), masses_for_design(design, masses), paper(choice.paper),
                         diagram_deg=choice.diagram_deg, labels=labels, block=block).sheet
 
@@ -90,8 +97,7 @@ def cam(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
     if choice.cam is None:
         raise ContentUnavailable("the cam sheet needs a cam")
     labels = cam_labels()
-    block = TitleBlock(labels["title"], choice.design_name or inputs_name(spec), "",
-                       SHEET_NUMBER[choice.content], choice.drawn, choice.date, choice.school)
+    block = choice.title_block(labels["title"], choice.design_name or inputs_name(spec))
     return cam_sheet(choice.cam, float(rpms[0]), paper(choice.paper), labels=labels, block=block).sheet
 
 

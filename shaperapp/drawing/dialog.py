@@ -22,7 +22,7 @@ from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.command_line import MAX_TEXT, design_file_name, plain_text
+from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.messages import describe_os_error, failure_reason
 
@@ -49,7 +49,6 @@ class CamSource(Protocol):
     def error(self) -> "DesignError | None": ...
 
 PREVIEW_WIDTH = 560            # px of the preview's longer side
-SETTINGS_KEYS = ("drawn", "school")
 
 
 class DrawingSheetDialog(QDialog):
@@ -82,13 +81,14 @@ class DrawingSheetDialog(QDialog):
             box.setDecimals(2)
             box.setSuffix(" °")
             self.angles.append(box)
+        # the report's cover fields, remembered where the report's dialog keeps them
         self.fields = {"design": QLineEdit(design_file_name(model.path) if model.path else ""),
-                       "drawn": QLineEdit(), "school": QLineEdit(),
+                       **{key: QLineEdit() for key in COVER_FIELDS},
                        "date": QLineEdit(datetime.date.today().isoformat())}
         for key, edit in self.fields.items():
             edit.setMaxLength(MAX_TEXT)
-            if settings is not None and key in SETTINGS_KEYS:
-                edit.setText(str(settings.value(f"drawing/{key}", "") or ""))
+            if settings is not None and key in COVER_FIELDS:
+                edit.setText(str(settings.value(COVER_SETTINGS + key, "") or ""))
         form = QFormLayout()
         form.addRow(self.tr("Paper:"), self.paper)
         form.addRow(self.tr("Content:"), self.content)
@@ -96,9 +96,10 @@ class DrawingSheetDialog(QDialog):
         form.addRow(self.tr("Polygons at φ (working stroke):"), self.angles[0])
         form.addRow(self.tr("Polygons at φ (return stroke):"), self.angles[1])
         form.addRow(self.tr("Design name:"), self.fields["design"])
-        form.addRow(self.tr("Drawn by:"), self.fields["drawn"])
-        form.addRow(self.tr("School:"), self.fields["school"])
-        form.addRow(self.tr("Date:"), self.fields["date"])
+        for key, label in zip(COVER_FIELDS + ("date",), (
+                self.tr("Student:"), self.tr("Student number:"), self.tr("Class:"), self.tr("School:"),
+                self.tr("Supervisor:"), self.tr("Date:"))):
+            form.addRow(label, self.fields[key])
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Save
                                    | QDialogButtonBox.StandardButton.Cancel)
         buttons.accepted.connect(self._save_dialog)
@@ -145,8 +146,9 @@ class DrawingSheetDialog(QDialog):
         content = self.content.currentData()
         return SheetChoice(content, self.paper.currentText(), self.count.value(),
                            (self.angles[0].value(), self.angles[1].value()), text["design"],
-                           text["drawn"], text["date"] or datetime.date.today().isoformat(),
-                           text["school"], self._cam.cam if content == "cam" and self._cam else None)
+                           text["student"], text["date"] or datetime.date.today().isoformat(),
+                           text["school"], self._cam.cam if content == "cam" and self._cam else None,
+                           text["number"], text["group"], text["supervisor"])
 
     def sheet(self) -> Sheet:
         masses = masses_for_design(self.model.design, self.model.masses)
@@ -195,8 +197,8 @@ class DrawingSheetDialog(QDialog):
         write_sheet(self.sheet(), path, self.language, self.choice().design_name)
         self.written = path
         if self._settings is not None:
-            for key in SETTINGS_KEYS:
-                self._settings.setValue(f"drawing/{key}", self.fields[key].text().strip())
+            for key in COVER_FIELDS:
+                self._settings.setValue(COVER_SETTINGS + key, self.fields[key].text().strip())
 
     def _save_dialog(self) -> None:
         start = os.path.join(self._start_dir(), f"{self.content.currentData()}.pdf")

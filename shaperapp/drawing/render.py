@@ -10,7 +10,11 @@ estimate of it: the layout's no-overlap guarantee holds on paper too.
 from __future__ import annotations
 
 import errno
+import math
+import re
+from dataclasses import replace
 
+import numpy as np
 from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QPointF, QRectF, QSizeF, Qt
 from PySide6.QtGui import (QBrush, QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
                            QPainterPath, QPdfWriter, QPen, QPolygonF)
@@ -28,7 +32,8 @@ SVG_UNITS_PER_MM = 10.0        # SVG user units per mm (viewBox in mm: width="84
 INK = QColor(0, 0, 0)
 
 
-def _pen(layer: str) -> QPen:
+def _pen(layer: str, svg: bool = False) -> QPen:
+    """The layer's pen in paper mm: its width and its GB/T 4457.4 dashes in mm."""
     spec = LAYERS[layer]
     width = spec.lineweight / 100.0 if spec.lineweight > 0 else THICK_MM / 2.0
     pen = QPen(INK, width)
@@ -36,13 +41,23 @@ def _pen(layer: str) -> QPen:
     pen.setJoinStyle(Qt.PenJoinStyle.MiterJoin)
     if spec.linetype in LINETYPES:
         pattern = [abs(v) if v else 0.3 for v in LINETYPES[spec.linetype][1][1:]]
-        pen.setDashPattern([v / width for v in pattern])
+        unit = svg_dash_unit(pen) if svg else width
+        pen.setDashPattern([v / unit for v in pattern])
     return pen
 
 
-def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en") -> None:
+def svg_dash_unit(pen: QPen) -> float:
+    """What QSvgGenerator multiplies a pen's dash pattern by: the pen's width, except for a
+    width that rounds to 0 (QPen.width(), an int), which it takes as 1, as for a cosmetic
+    pen. Why: a thin line (0.25 mm) got dashes 4 times the PDF's, 48 mm for 12, and the
+    crank circle showed as a few arcs (the PDF engine multiplies by the true width)."""
+    return pen.widthF() if pen.width() != 0 else 1.0
+
+
+def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en", svg: bool = False) -> None:
     """Paint ``sheet`` with ``painter`` whose coordinates are paper mm, y down, origin at
-    the sheet's upper left corner."""
+    the sheet's upper left corner; ``svg`` when the painter is a QSvgGenerator's (its dash
+    patterns are reckoned differently, see :func:`svg_dash_unit`)."""
     height = sheet.paper.height
     font = report_font(language)
     font.setPixelSize(100)
@@ -52,10 +67,10 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en") -> None:
     painter.fillRect(QRectF(0, 0, sheet.paper.width, height), QColor(255, 255, 255))
     for item in sheet.items:
         if isinstance(item, Text):
-            for run in item.runs():        # a subscript is a smaller text of its own
+            for run in _closed_up(item, metrics, cap):    # a subscript is a smaller text of its own
                 _text(painter, run, height, font, metrics, cap)
             continue
-        painter.setPen(_pen(item.layer))
+        painter.setPen(_pen(item.layer, svg))
         if isinstance(item, Circle):
             painter.setBrush(QBrush(INK) if item.filled else Qt.BrushStyle.NoBrush)
             painter.drawEllipse(QPointF(item.center[0], height - item.center[1]), item.radius, item.radius)
@@ -73,12 +88,41 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en") -> None:
                 painter.drawPolyline(poly)
 
 
-def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QFontMetricsF,
-          cap: float) -> None:
+def _drawn_width(item: Text, metrics: QFontMetricsF, cap: float) -> tuple[float, float]:
+    """The width ``item`` is drawn at, paper mm, and the squeeze that keeps it within the
+    sheet's estimate of its width."""
     k = item.height / cap
     advance = metrics.horizontalAdvance(item.text)
     squeeze = min(1.0, item.width / k / advance) if advance > 0 else 1.0
-    width = advance * squeeze
+    return advance * squeeze * k, squeeze
+
+
+def _closed_up(item: Text, metrics: QFontMetricsF, cap: float) -> list[Text]:
+    """The runs of ``item``, each one after the previous run's drawn width instead of its
+    estimated width, and the whole aligned by its drawn width. Why: the font is narrower
+    than the estimate, so a subscript after a long run ("Flywheel to add J_F − J_e") stood
+    apart from its letter."""
+    runs = item.runs()
+    if len(runs) < 2:
+        return runs
+    drawn = [_drawn_width(run, metrics, cap)[0] for run in runs]
+    spare = item.width - sum(drawn)
+    at = {"l": 0.0, "c": spare / 2.0, "r": spare}[item.align[0]]
+    u = np.array([math.cos(math.radians(item.rotation)), math.sin(math.radians(item.rotation))])
+    closed, estimated = [], 0.0
+    for run, width in zip(runs, drawn):
+        x, y = np.asarray(run.position) + u * (at - estimated)
+        closed.append(replace(run, position=(float(x), float(y))))
+        estimated += run.width
+        at += width
+    return closed
+
+
+def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QFontMetricsF,
+          cap: float) -> None:
+    k = item.height / cap
+    width, squeeze = _drawn_width(item, metrics, cap)
+    width /= k
     dx = {"l": 0.0, "c": -width / 2.0, "r": -width}[item.align[0]]
     dy = {"b": 0.0, "m": cap / 2.0, "t": cap}[item.align[1]]
     painter.save()
@@ -112,7 +156,28 @@ def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     paint_sheet(sheet, painter, language)
     painter.end()
     buffer.close()
-    return repair_text_layer(bytes(data.data()))
+    return repair_text_layer(exact_page(bytes(data.data()), sheet.paper.width, sheet.paper.height))
+
+
+_BOXES = re.compile(rb"/(MediaBox|TrimBox) (\[0 0 ([\d.]+) ([\d.]+)\])")
+
+
+def exact_page(pdf: bytes, width_mm: float, height_mm: float) -> bytes:
+    """``pdf`` (one page from QPdfWriter) with its MediaBox and TrimBox the paper's exact
+    size. Why: QPageSize keeps a size in whole points, so A3 came out 1191 × 842 pt
+    (420.16 × 297.04 mm). Qt draws from the top edge down (its y flip is the rounded
+    height), so the exact box keeps that top and starts the bottom the difference higher.
+    Each box is rewritten in place at its old length (padded with spaces, which PDF allows),
+    so the file's byte offsets stay valid; a box that would not fit is left as it was."""
+    w_pt, h_pt = width_mm * 72.0 / 25.4, height_mm * 72.0 / 25.4
+
+    def exact(match: re.Match) -> bytes:
+        old, top = match.group(2), float(match.group(4))
+        new = f"[0 {top - h_pt:.4f} {w_pt:.4f} {top:g}".encode("ascii")
+        if len(new) + 1 > len(old):
+            return match.group(0)
+        return b"/" + match.group(1) + b" " + new + b" " * (len(old) - len(new) - 1) + b"]"
+    return _BOXES.sub(exact, pdf)
 
 
 def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
@@ -129,7 +194,7 @@ def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     device.setTitle(title)
     painter = QPainter(device)
     painter.scale(SVG_UNITS_PER_MM, SVG_UNITS_PER_MM)
-    paint_sheet(sheet, painter, language)
+    paint_sheet(sheet, painter, language, svg=True)
     painter.end()
     buffer.close()
     return bytes(data.data())

@@ -7,7 +7,6 @@ so bad input is one line and exit status 2 like every other subcommand.
 from __future__ import annotations
 
 import argparse
-import datetime
 import errno
 from pathlib import Path
 
@@ -22,9 +21,9 @@ from core.compare import MAX_DESIGNS, Candidate
 from core.library.store import ENV_VAR, LibraryError
 from core.positions import DEFAULT_COUNT, check_count
 
-from shaperapp.widgets.command_line import (MAX_TEXT, check_output_folder, cover_text,  # noqa: F401
-                                            design_name, diagram_angles, inputs_from_args,
-                                            printable_labels, start_qt)
+from shaperapp.widgets.command_line import (MAX_TEXT, add_cover_options, check_output_folder,  # noqa: F401
+                                            cover_from_args, cover_text, design_name, diagram_angles,
+                                            inputs_from_args, printable_labels, start_qt)
 
 HELP = "write the design report (A4 PDF, or HTML)"
 DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
@@ -57,9 +56,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--title", metavar="TEXT",
                         help="design name for the title block (default: the design file's name)")
     cover = parser.add_argument_group("cover block (printed blank when not given, to fill in by hand)")
-    for option, (_, what) in COVER_OPTIONS.items():
-        cover.add_argument(option, metavar="TEXT", help=what)
-    cover.add_argument("--date", metavar="TEXT", help="the date on the cover (default: today, YYYY-MM-DD)")
+    add_cover_options(cover, "the date on the cover (default: today, YYYY-MM-DD)")
     parser.add_argument("--html", action="store_true",
                         help="insist on HTML (the name must end in .html or .htm)")
     parser.add_argument("--compare", nargs="+", default=[], metavar="NAME",
@@ -69,18 +66,6 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="add a comparison section with these design files")
     parser.add_argument("--library", metavar="PATH",
                         help=f"the library of --compare (default: ${ENV_VAR}, else the per-user library)")
-
-
-COVER_OPTIONS = {"--student": ("student", "the student's name"),
-                 "--student-number": ("number", "the student's number"),
-                 "--class": ("group", "the student's class"),
-                 "--school": ("school", "the school or department"),
-                 "--supervisor": ("supervisor", "the supervising teacher")}
-def cover_from_args(args: argparse.Namespace):
-    """The cover fields (a report ``Cover``'s keyword arguments) and the date, checked."""
-    fields = {field: cover_text(option, getattr(args, option[2:].replace("-", "_")))
-              for option, (field, _) in COVER_OPTIONS.items()}
-    return fields, cover_text("--date", args.date) or datetime.date.today().isoformat()
 
 
 def comparison_candidates(args: argparse.Namespace) -> list[Candidate]:

@@ -3,6 +3,7 @@ application, quiet Qt messages, one-line text options and the design's name."""
 from __future__ import annotations
 
 import argparse
+import datetime
 import os
 import sys
 from pathlib import Path
@@ -52,6 +53,32 @@ def printable_labels(candidates: Sequence[Candidate]) -> list[Candidate]:
     (the report failed on a drawing of size 0)."""
     from dataclasses import replace
     return [replace(c, label=plain_text(c.label)) for c in candidates]
+
+
+# The course design's cover fields: option → (field, help). ``shaper report`` prints them on
+# its cover, ``shaper drawing`` in the title block, and the GUI's two dialogs keep them under
+# the settings keys "report/<field>": one place, so both ask for the same things alike.
+COVER_OPTIONS = {"--student": ("student", "the student's name"),
+                 "--student-number": ("number", "the student's number"),
+                 "--class": ("group", "the student's class"),
+                 "--school": ("school", "the school or department"),
+                 "--supervisor": ("supervisor", "the supervising teacher")}
+COVER_FIELDS = tuple(field for field, _ in COVER_OPTIONS.values())
+COVER_SETTINGS = "report/"           # QSettings key prefix of the remembered cover fields
+
+
+def add_cover_options(group, date_help: str) -> None:
+    """The cover options (COVER_OPTIONS and --date) on an argument group."""
+    for option, (_, what) in COVER_OPTIONS.items():
+        group.add_argument(option, metavar="TEXT", help=what)
+    group.add_argument("--date", metavar="TEXT", help=date_help)
+
+
+def cover_from_args(args: argparse.Namespace) -> tuple[dict[str, str], str]:
+    """The cover fields (field → text) and the date (default today, YYYY-MM-DD), checked."""
+    fields = {field: cover_text(option, getattr(args, option[2:].replace("-", "_")))
+              for option, (field, _) in COVER_OPTIONS.items()}
+    return fields, cover_text("--date", args.date) or datetime.date.today().isoformat()
 
 
 def design_file_name(path: str) -> str:

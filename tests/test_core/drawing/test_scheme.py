@@ -16,6 +16,7 @@ from core.drawing import dimensions, dxf, scheme
 from core.errors import DesignError
 from core.geometry import Design, synthesize
 from core.metrics import analyze
+from dxf_checks import measurement
 
 finite = dict(allow_nan=False, allow_infinity=False)
 BLOCK = synthesize(100, 1.4, 300)
@@ -71,7 +72,7 @@ def test_every_dimension_measures_the_design(design, tmp_path):
     want = expected(design)
     assert set(dims) == set(want)
     for name, value in want.items():
-        assert dims[name].get_measurement() == pytest.approx(value, abs=1e-6), name
+        assert measurement(dims[name]) == pytest.approx(value, abs=1e-6), name
         assert dims[name].dxf.layer == dxf.DIMENSIONS
         assert dims[name].dxf.dimstyle == dimensions.DIMSTYLE
     assert not doc.audit().has_errors
@@ -119,7 +120,7 @@ def test_measurements_and_pose_over_designs_and_angles(crank, k, stretch, rod, s
     dims = dimensions_by_name(doc)
     for name, value in expected(design).items():
         tolerance = 1e-9 if name == "θ" else 1e-6
-        assert dims[name].get_measurement() == pytest.approx(value, abs=tolerance), name
+        assert measurement(dims[name]) == pytest.approx(value, abs=tolerance), name
     o2 = np.array([0.0, design.frame])
     tip = next(p for p in points(dims["L3"]) if np.hypot(*p) > 1e-9)
     pins = moving_pins(doc, design)
@@ -149,8 +150,8 @@ def test_layers_linetypes_and_texts():
     assert [e.dxf.layer for e in guide_lines] == [dxf.CENTER]       # the ram's path
     assert len(msp.query(f"LINE[layer=='{dxf.DASHED}']")) == 2       # the lever's limit positions
     style = doc.dimstyles.get(dimensions.DIMSTYLE)
-    assert 3.5 <= style.dxf.dimtxt <= 5.0 and style.dxf.dimdsep == ord(".")
-    scale = style.dxf.dimscale
+    assert style.dxf.dimscale == 1.0 and style.dxf.dimdsep == ord(".")
+    scale = style.dxf.dimtxt / dimensions.DIM_TEXT_MM               # the print's 1:n
     texts = msp.query("TEXT")
     assert sorted(t.dxf.text for t in texts) == ["A", "B", "O2", "O4"]
     assert all(t.dxf.height == pytest.approx(scheme.LABEL_MM * scale) and t.dxf.style == dxf.TEXT_STYLE
@@ -158,10 +159,10 @@ def test_layers_linetypes_and_texts():
 
 
 def test_print_scale_is_a_standard_reduction_that_fits_a3():
-    """DIMSCALE is the 1:n a print of the whole drawing on an A3 sheet would use: of
-    GB/T 14690's series, and the whole drawing fits at it."""
+    """The dimension text is 5 mm times the n of the 1:n a print of the whole drawing on an
+    A3 sheet would use: of GB/T 14690's series, and the whole drawing fits at it."""
     doc = read_back(ROD, 0.0)
-    n = doc.dimstyles.get(dimensions.DIMSTYLE).dxf.dimscale
+    n = doc.dimstyles.get(dimensions.DIMSTYLE).dxf.dimtxt / dimensions.DIM_TEXT_MM
     mantissa = n / 10 ** math.floor(math.log10(n))
     assert min(abs(mantissa - m) for m in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0)) < 1e-9
     size = ezdxf.bbox.extents(doc.modelspace()).size

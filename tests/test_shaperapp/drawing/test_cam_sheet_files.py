@@ -34,7 +34,7 @@ def dxf_scale_and_base_circle(path) -> tuple[float, float, list[str]]:
     doc = ezdxf.readfile(path)
     assert doc.header["$INSUNITS"] == 4 and not doc.audit().has_errors
     texts = [t.dxf.text for t in doc.modelspace().query("TEXT")]
-    caption = next(t for t in texts if "μl" in t)
+    caption = next(t for t in texts if re.search(r"\(([\d.]+):([\d.]+)\)", t))   # "μ", "l", " = … (a:b)"
     a, b = (float(v) for v in re.search(r"\(([\d.]+):([\d.]+)\)", caption).groups())
     circles = doc.modelspace().query('CIRCLE[layer=="THIN"]')
     return b / a, [c.dxf.radius for c in circles], texts        # a:b, so b/a cam mm per mm

@@ -40,7 +40,7 @@ def test_export_writes_the_design_on_screen(model, qtbot, tmp_path):
     doc = ezdxf.readfile(out)
     texts = [t.dxf.text for t in doc.modelspace().query("TEXT")]
     assert f"{model.design.time_ratio:.4f}" in texts
-    scale = float(next(re.search(r"1:([\d.]+)", t).group(1) for t in texts if "μl" in t))
+    scale = float(next(m.group(1) for t in texts if (m := re.search(r"[(（]1:([\d.]+)[)）]", t))))   # "μ", "l", "= … (1:n)"
     circle = doc.modelspace().query('CIRCLE[layer=="CENTER"]')[0]
     assert circle.dxf.radius * scale == pytest.approx(model.design.crank, rel=1e-12)
     assert doc.header["$LIMMAX"][0] == pytest.approx(594.0)

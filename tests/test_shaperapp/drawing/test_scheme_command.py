@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from cli_runner import shaper, shaper_in_process
+from dxf_checks import measurement
 from core.geometry import from_dimensions
 from core.kinematics import shape
 
@@ -28,7 +29,7 @@ def test_writes_the_design_at_the_angle(tmp_path):
     ends = [np.array(dims["L4"].dxf.defpoint2)[:2], np.array(dims["L4"].dxf.defpoint3)[:2]]
     b = shape(design, np.radians([200.0])).lever_tip[:, 0]
     assert any(np.allclose(p, b, atol=1e-9) for p in ends)
-    assert math.isclose(dims["θ"].get_measurement(), math.degrees(design.theta), abs_tol=1e-9)
+    assert math.isclose(measurement(dims["θ"]), math.degrees(design.theta), abs_tol=1e-9)
 
 
 def test_default_angle_is_zero(tmp_path):

@@ -1,0 +1,125 @@
+"""The title block of every sheet, after GB/T 10609.1: 180 × 56 mm in the border's lower
+right corner, in the standard's three zones of ruled cells, with the course design's fields
+(those of the report's cover). Its label texts come from the caller, who chooses the
+language; its values are the user's text, set as typed (no index notation)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Mapping
+
+import numpy as np
+
+from .dxf import OUTLINE, THIN, TITLE
+from .sheet import Box, Item, Paper, Text, cell_text, line, rectangle
+
+TITLE_WIDTH = 180.0
+TITLE_HEIGHT = 56.0
+# GB/T 10609.1's 180 × 56 mm in its zones: the signature area on the left (80 mm), the
+# "other" area in the middle (50 mm), the name area on the right (50 mm: the unit, the
+# drawing's name, its code), every field in a ruled cell
+TITLE_ZONES = (80.0, 50.0, 50.0)
+TITLE_SIGN_COLUMNS = (22.0, 34.0, 24.0)      # role, name, date
+TITLE_OTHER_COLUMNS = (22.0, 28.0)           # label, value
+TITLE_NAME_ROWS = (18.0, 18.0, 20.0)         # the unit (school), the drawing's name, its code (the design)
+TITLE_ROWS = 4
+TITLE_ROW = TITLE_HEIGHT / TITLE_ROWS
+TITLE_LABEL_KEYS = ("design", "scale", "sheet", "drawn", "date", "checked", "approved",
+                    "number", "class", "supervisor")
+# The title block's words in English: every sheet's ENGLISH texts start from these.
+TITLE_ENGLISH = {"design": "Design", "scale": "Scale", "sheet": "Sheet", "drawn": "Drawn",
+                 "date": "Date", "checked": "Checked", "approved": "Approved",
+                 "number": "Number", "class": "Class", "supervisor": "Supervisor"}
+
+
+@dataclass(frozen=True)
+class TitleBlock:
+    """What the title block says: the course design's fields, those of the report's cover
+    (``shaper drawing`` and ``shaper report`` take them as the same options). ``labels``
+    maps TITLE_LABEL_KEYS to the caller's words."""
+
+    title: str                 # the sheet's name, e.g. "Motion analysis"
+    design: str                # the design's name
+    scale: str                 # e.g. "1:5"
+    sheet: str                 # e.g. "1/2"
+    drawn: str = ""            # the student's name (who drew it)
+    date: str = ""
+    school: str = ""
+    labels: Mapping[str, str] = field(default_factory=dict)
+    number: str = ""           # the student's number
+    group: str = ""            # the class
+    supervisor: str = ""
+
+
+def title_block_box(p: Paper) -> Box:
+    x1, y0 = p.border[2], p.border[1]
+    return (x1 - TITLE_WIDTH, y0, x1, y0 + TITLE_HEIGHT)
+
+
+def title_block(p: Paper, block: TitleBlock) -> list[Item]:
+    """The title block in the border's lower right corner, GB/T 10609.1's 180 × 56 mm:
+    left the signature area (drawn by the student with the date, the supervisor, checked,
+    approved: role, name, date), in the middle the student number, the class, the scale
+    and the sheet, right the school, the sheet's name (large) and the design. The outline
+    and the zones' borders thick, the cells thin."""
+    x0, y0, x1, y1 = title_block_box(p)
+    lab = lambda key: block.labels.get(key, key)            # noqa: E731
+    mid, right = x0 + TITLE_ZONES[0], x0 + TITLE_ZONES[0] + TITLE_ZONES[1]
+    rows = [y1 - k * TITLE_ROW for k in range(TITLE_ROWS + 1)]
+    sign = x0 + np.cumsum((0.0,) + TITLE_SIGN_COLUMNS)
+    other = mid + np.cumsum((0.0,) + TITLE_OTHER_COLUMNS)
+    names = y1 - np.cumsum((0.0,) + TITLE_NAME_ROWS)
+    items: list[Item] = [rectangle((x0, y0, x1, y1), OUTLINE)]
+    items += [line([(x0, y), (right, y)], THIN) for y in rows[1:-1]]
+    items += [line([(x, y0), (x, y1)], THIN) for x in (*sign[1:-1], other[1])]
+    items += [line([(right, y), (x1, y)], THIN) for y in names[1:-1]]
+    items += [line([(x, y0), (x, y1)], OUTLINE) for x in (mid, right)]
+
+    def cell(text: str, x_a: float, x_b: float, top: float, bottom: float, largest: float = 3.5) -> None:
+        if text:
+            items.append(cell_text(text, (float(x_a), float(bottom), float(x_b), float(top)), largest,
+                                   layer=TITLE))
+    signatures = [(lab("drawn"), block.drawn, block.date), (lab("supervisor"), block.supervisor, ""),
+                  (lab("checked"), "", ""), (lab("approved"), "", "")]
+    others = [(lab("number"), block.number), (lab("class"), block.group),
+              (lab("scale"), block.scale), (lab("sheet"), block.sheet)]
+    for k, ((role, name, date), (label, value)) in enumerate(zip(signatures, others)):
+        top, bottom = rows[k], rows[k + 1]
+        cell(role, sign[0], sign[1], top, bottom)
+        cell(name, sign[1], sign[2], top, bottom)
+        cell(date, sign[2], sign[3], top, bottom)
+        cell(label, other[0], other[1], top, bottom)
+        cell(value, other[1], other[2], top, bottom)
+    for text, k, largest in ((block.school, 0, 5.0), (block.title, 1, 7.0), (block.design, 2, 5.0)):
+        box = (right, float(names[k + 1]), x1, float(names[k]))
+        items += wrapped_cell(text, box, largest) if text else []
+    return items
+
+
+def wrapped_cell(text: str, box: Box, largest: float) -> list[Text]:
+    """``text`` in the cell ``box`` on one line as large as fits (≤ ``largest``), or, when
+    that would be smaller than 5 mm, on two lines (≤ 5 mm) split at the space nearest its
+    middle, when they come out larger or whole where one line is cut (a long design name
+    or sheet name: the name area's cells are 50 mm wide)."""
+    x0, y0, x1, y1 = box
+    one = cell_text(text, box, largest, layer=TITLE)
+    spaces = [i for i, ch in enumerate(text) if ch == " "]
+    if one.text == text and one.height >= min(largest, 5.0) or not spaces:
+        return [one]
+    cut = min(spaces, key=lambda i: abs(i - len(text) / 2.0))
+    middle = (y0 + y1) / 2.0
+    lines = [(text[:cut], (x0, middle, x1, y1)), (text[cut + 1:], (x0, y0, x1, middle))]
+    height = min(cell_text(part, cell, min(largest, 5.0)).height for part, cell in lines)   # both alike
+    two = [cell_text(part, cell, height, layer=TITLE) for part, cell in lines]
+    whole = all(line.text == part for line, (part, _) in zip(two, lines))
+    return two if whole and (height > one.height or one.text != text) else [one]
+
+
+def sheet_title_block(p: Paper, block: TitleBlock | None, labels: Mapping[str, str],
+                      scale: str) -> tuple[Box, tuple[Item, ...]]:
+    """A sheet's title block as its area on the paper and its items: the caller's block
+    (or one named by ``labels["title"]``, sheet 1/1) with the drawing's scale and the
+    title block's words from ``labels``."""
+    block = block or TitleBlock(labels["title"], "", "", "1/1")
+    block = replace(block, title=block.title or labels["title"], scale=scale,
+                    labels={k: labels.get(k, TITLE_ENGLISH[k]) for k in TITLE_LABEL_KEYS})
+    return title_block_box(p), tuple(title_block(p, block))

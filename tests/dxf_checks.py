@@ -1,0 +1,18 @@
+"""What a DIMENSION measures, reckoned from its definition points."""
+import math
+
+import numpy as np
+
+
+def measurement(dim) -> float:
+    """A linear or aligned dimension's length (ezdxf's measurement); a two-line angular
+    dimension's angle in degrees between its lines' directions away from their common
+    vertex (ezdxf's own get_measurement takes it counter-clockwise from the first line to
+    the second, which is not what CAD and ezdxf's renderer draw: they draw the arc through
+    the dimension's location)."""
+    if dim.dimtype != 2:
+        return float(dim.get_measurement())
+    first = np.array(dim.dxf.defpoint3)[:2] - np.array(dim.dxf.defpoint2)[:2]
+    second = np.array(dim.dxf.defpoint)[:2] - np.array(dim.dxf.defpoint4)[:2]
+    cross = first[0] * second[1] - first[1] * second[0]
+    return abs(math.degrees(math.atan2(cross, float(first @ second))))
