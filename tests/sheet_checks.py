@@ -124,6 +124,8 @@ def inside(box, area, tol=1e-6) -> bool:
 def assert_laid_out(sheet, areas) -> None:
     """``areas``: name → (area box, its items) of a sheet built by core.drawing."""
     assert outside_border(sheet) == [] and overlapping_texts(sheet) == []
+    crossed = [(t.text, t.position, type(it).__name__, it.layer) for t, it in crossed_texts(sheet)]
+    assert crossed == [], crossed
     assert [t.text for t in sheet.items if isinstance(t, Text) and UNICODE_SUBSCRIPTS.search(t.text)] == []
     named = list(areas.items())
     for name, (area, items) in named:

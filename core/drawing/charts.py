@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping, Sequence
+from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
 from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
+from .labels import Room
 from .sheet import Box, Item, Pair, Text, line, number_text, smaller_height, symbol, text_width
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
@@ -97,18 +98,20 @@ def polygon_extent(polygon: Polygon, scale: float) -> Box:
 
 def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.5,
                   names: Mapping[str, str | tuple[str, str] | list] | None = None,
-                  taken: list[Box] | None = None, within: Box | None = None) -> list[Item]:
+                  taken: list[Box] | None = None, within: Box | None = None,
+                  room: Room | None = None) -> list[Item]:
     """The polygon drawn from ``pole`` at μ = ``scale`` (its unit per mm): every vector as an
     arrow from its tail point to its head point, absolute ones thick, the others thin, and
     each point labelled (``names`` maps point keys to names: a part as ``sheet.symbol``
-    takes it, or a list of parts; default the keys) clear of ``taken`` and inside
-    ``within``."""
-    taken = [] if taken is None else taken
+    takes it, or a list of parts; default the keys) clear of the arrows, of ``taken`` and
+    inside ``within``, or in ``room`` (which then holds the arrows and labels for more)."""
+    room = room or Room(within=within, taken=[] if taken is None else taken)
     at = {k: (pole[0] + x / scale, pole[1] + y / scale) for k, (x, y) in polygon.points.items()}
     items: list[Item] = []
     for v in polygon.vectors:
         layer = OUTLINE if v.role in ("absolute", "force") else THIN
         items += arrow(at[v.tail], at[v.head], layer)
+    room.draw(items)
     centre = np.mean(np.array(list(at.values())), axis=0)
 
     def parts_of(key: str) -> list:
@@ -123,10 +126,7 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
         away = away if np.hypot(*away) > 1e-6 else np.array([1.0, 1.0])
         parts = [part for k in group for part in [","] + parts_of(k)][1:]
         text, spans = symbol(*parts)
-        label = place_label(text, p, height, taken, tuple(away), within=within, rings=5,
-                            optional=True, subscripts=spans)           # crowded: left out
-        if label is not None:
-            items.append(label)
+        items += room.place(text, p, height, tuple(away), rings=5, subscripts=spans)   # crowded: left out
     return items
 
 
@@ -156,12 +156,14 @@ class Chart:
 def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_title: str,
           x_ticks: Sequence[tuple[float, str]] = (), height: float = 3.5,
           mean: float | None = None,
-          levels: Sequence[tuple[float, float, float]] = ()) -> Chart:
+          levels: Sequence[tuple[float, float, float]] = (),
+          notes: Callable[[float, float], Sequence[str]] | None = None) -> Chart:
     """Curves over ``x`` in ``box`` with a horizontal x axis through y = 0, a y axis at x[0],
     arrows on both, ticks at ``x_ticks`` (value, label) and a few round y ticks; ``mean`` a
     thin dashed horizontal line (e.g. the mean torque); ``levels`` (x from, x to, y) thin
     dashed segments over part of the span (e.g. an allowance over one phase), inside the
-    y range like the curves. Scales from the round series; the
+    y range like the curves; ``notes`` (x scale, y scale) → lines written under the y arrow's
+    tip at the right (the scales μ), before the titles and numbers keep clear of them. Scales from the round series; the
     x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
     labels, or more where the widest label needs it (a torque of 10⁵ N·m reads
     "-1.000e+05")."""
@@ -185,25 +187,11 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     y_lo, y_hi = zero + bottom / y_scale - 2.0, zero + top / y_scale + 6.0
     items: list[Item] = [*arrow((left, zero), (x_end, zero), THIN),
                          *arrow((left, y_lo), (left, y_hi), THIN)]
-    taken: list = []
     for c in curves:
-        pts = to_paper(x, c.y)
-        items.append(line(pts, c.layer))
-    for value, label in x_ticks:
-        px = left + (value - x[0]) / x_scale
-        items.append(line([(px, zero - TICK), (px, zero + TICK)], THIN))
-        if label:
-            lab = Text(label, (px, zero - TICK - 1.0), small, "ct")
-            if not any(_meets(lab.box(), b) for b in taken):
-                taken.append(lab.box())
-                items.append(lab)
-    for value in y_ticks:
-        py = zero + value / y_scale
-        items.append(line([(left - TICK, py), (left, py)], THIN))
-        lab = Text(number_text(value), (left - TICK - 1.0, py), small, "rm")
-        if abs(value) > 0 and not any(_meets(lab.box(), b) for b in taken):
-            taken.append(lab.box())
-            items.append(lab)
+        items.append(line(to_paper(x, c.y), c.layer))
+    xs = [(left + (value - x[0]) / x_scale, label) for value, label in x_ticks]
+    items += [line([(px, zero - TICK), (px, zero + TICK)], THIN) for px, _ in xs]
+    items += [line([(left - TICK, zero + v / y_scale), (left, zero + v / y_scale)], THIN) for v in y_ticks]
     if mean is not None:
         py = zero + mean / y_scale
         items.append(line([(left, py), (left + span_x / x_scale, py)], DASHED))
@@ -211,9 +199,46 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
         py = zero + value / y_scale
         items.append(line([(left + (start - x[0]) / x_scale, py), (left + (end - x[0]) / x_scale, py)],
                           DASHED))
-    items.append(Text(y_title, (left + 1.5, y_hi), height, "lt"))
-    items.append(Text(x_title, (x_end, zero + 1.5), height, "rb"))
+    room = Room(items, within=box)           # the labels after all the lines, clear of them
+    for k, note in enumerate(notes(x_scale, y_scale) if notes else ()):
+        # at the top under the y arrow's tip, at the right, else farther left, clear of the curves
+        spots = [Text(note, (x_end - f * (x_end - left), y_hi - 6.0 * k), height, "rt")
+                 for f in (0.0, 0.15, 0.3, 0.45, 0.6)]
+        placed = room.first_free(spots)
+        if placed is None:
+            placed = spots[0]
+            room.taken.append(placed.box())
+        items.append(placed)
+    # the titles beside their arrows' tips, else a line higher (or lower) where the curve ends there
+    titles = ([Text(y_title, (left + 1.5, y_hi), height, "lt"), Text(y_title, (left - 1.5, y_hi), height, "rt")],
+              [Text(x_title, (x_end, zero + side * (1.5 + k * 1.5 * height)), height, "rb" if side > 0 else "rt")
+               for k in range(3) for side in (1, -1)])
+    for spots in titles:                     # a title stands, before the ticks' numbers: at worst its first spot
+        placed = room.first_free(spots)
+        if placed is None:
+            placed = spots[0]
+            room.taken.append(placed.box())
+        items.append(placed)
+    for px, label in xs:                     # under the tick, beside it, or over the axis
+        below, above = zero - TICK - 1.0, zero + TICK + 1.0
+        spots = ((px, below, "ct"), (px + 0.5, below, "lt"), (px - 0.5, below, "rt"),
+                 (px, above, "cb"), (px + 0.5, above, "lb"), (px - 0.5, above, "rb"))
+        placed = room.first_free(Text(label, (sx, sy), small, al) for sx, sy, al in spots) if label else None
+        items += [placed] if placed else []
+    for value in y_ticks:
+        if abs(value) > 0:
+            placed = room.first_free([Text(number_text(value), (left - TICK - 1.0, zero + value / y_scale),
+                                           small, "rm")])
+            items += [placed] if placed else []
     return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi)
+
+
+def scale_notes(y_note: str, x_note: str | None = None, y_unit: float = 1.0
+                ) -> Callable[[float, float], list[str]]:
+    """A chart's ``notes``: its y scale (times ``y_unit``) written into ``y_note``'s {mu}, and
+    its x scale into ``x_note``'s, if given."""
+    return lambda mx, my: ([y_note.format(mu=number_text(my * y_unit))]
+                           + ([x_note.format(mu=number_text(mx))] if x_note else []))
 
 
 def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> list[float]:
