@@ -138,8 +138,9 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
         if label is not None:
             return [label]
     h = height if subscripts else smaller_height(height)
-    for label in ring_candidates(text, at, h, preferred, gap, range(rings, rings + LEADER_RINGS),
-                                 None, subscripts):
+    best = None                 # of the free spots farther out, the one whose leader crosses fewest lines
+    for order, label in enumerate(ring_candidates(text, at, h, preferred, gap,
+                                                  range(rings, rings + LEADER_RINGS), None, subscripts)):
         box = label.box()
         if not is_free(box, taken, segments, within):
             continue
@@ -147,9 +148,27 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
         ends = np.asarray(stroke.points).reshape(1, 4)
         if any(meets_strokes(b, ends, 0.0) for b in taken):
             continue
-        taken.append(box)
-        return [label, stroke]
-    return []
+        score = (crossings(ends[0], segments), order)
+        if best is None or score < best[0]:
+            best = (score, label, box, stroke)
+    if best is None:
+        return []
+    taken.append(best[2])
+    return [best[1], best[3]]
+
+
+def crossings(seg: np.ndarray, segments: np.ndarray) -> int:
+    """How many of ``segments`` (n, 4) the segment ``seg`` (4,) properly crosses."""
+    if not len(segments):
+        return 0
+    p, r = seg[:2], seg[2:] - seg[:2]
+    q, s = segments[:, :2], segments[:, 2:] - segments[:, :2]
+    cross = lambda a, b: a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]    # noqa: E731
+    denom = cross(r, s)
+    ok = np.abs(denom) > 1e-12
+    d = np.where(ok, denom, 1.0)
+    t, u = cross(q - p, s) / d, cross(q - p, r) / d
+    return int(np.count_nonzero(ok & (t > 1e-9) & (t < 1.0 - 1e-9) & (u >= 0.0) & (u <= 1.0)))
 
 
 class Room:
