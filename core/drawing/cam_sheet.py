@@ -29,7 +29,7 @@ from .charts import Curve, arrow, chart, scale_notes
 from .dxf import CENTER, OUTLINE, THIN
 from .labels import Room
 from .motion import CAPTION, GAP, TABLE_ROW, caption
-from .sheet import (TITLE_ENGLISH, Box, Circle, Item, Paper, Placement, Sheet, Text, TitleBlock, fit,
+from .sheet import (TITLE_ENGLISH, Box, Circle, Item, Paper, Placement, Sheet, TitleBlock, fit,
                     frame_items, line, number_text, scale_text, standard_scale, table, sheet_title_block,
                     symbol, title_block_box)
 

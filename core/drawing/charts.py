@@ -41,42 +41,6 @@ def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
             line([h, base + half * n, base - half * n], layer, closed=True, filled=True)]
 
 
-def place_label(text: str, at: Pair, height: float, taken: list[Box],
-                preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
-                optional: bool = False, align: str | None = None, rings: int = 3,
-                subscripts: tuple[tuple[int, int], ...] = ()) -> Text | None:
-    """``text`` beside the point ``at``: the first of eight directions (starting with
-    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of
-    ``taken`` and lies ``within``; then appends its box to ``taken``. When no spot is free:
-    None if ``optional``, else the first spot. ``align`` fixes the alignment (default: away
-    from the point)."""
-    start = math.atan2(preferred[1], preferred[0])
-    first = None
-    for k in range(8 * rings):
-        r = gap + (k // 8) * height
-        angle = start + (k % 8) * math.pi / 4.0
-        dx, dy = math.cos(angle), math.sin(angle)
-        side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
-                         + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
-        label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, side, subscripts=subscripts)
-        box = label.box()
-        if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
-                                       and within[1] <= box[1] and box[3] <= within[3]):
-            continue
-        first = first or (label, box)
-        if not any(_meets(box, b) for b in taken):
-            taken.append(box)
-            return label
-    if optional or first is None:
-        return None
-    taken.append(first[1])
-    return first[0]
-
-
-def _meets(a: Box, b: Box) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
 # ---- vector polygons ---------------------------------------------------------------------
 
 def polygon_scale(polygons: Sequence[Polygon], room_mm: float) -> float:

@@ -28,7 +28,7 @@ from core.polygons import FINE_MANTISSAS, force_polygon, lever_force_polygon, ni
 from core.positions import DEFAULT_COUNT, positions, special_angles
 
 from . import mechanism as mech
-from .charts import Curve, arrow, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
+from .charts import Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE
 from .labels import Room
 from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
