@@ -260,12 +260,11 @@ def _curve_chart(box: Box, x: np.ndarray, y: np.ndarray, mean: float | None, tit
                  y_title: str, mu_key: str, lab) -> tuple[list[Item], tuple[float, float, tuple]]:
     x0, y0, x1, y1 = box
     items: list[Item] = [caption(title, ((x0 + x1) / 2.0, y1), x1 - x0, 3.5)]
+    scales = lambda mx, my: [lab[mu_key].format(mu=number_text(my)) + "   "     # noqa: E731
+                             + lab["mu_phi"].format(mu=number_text(mx))]
     drawn = chart((x0, y0, x1, y1 - 2 * CAPTION), x, [Curve(np.asarray(y))], lab["phi"], y_title,
-                  [(float(t), f"{t:g}") for t in np.arange(0.0, 361.0, 60.0)], mean=mean)
+                  [(float(t), f"{t:g}") for t in np.arange(0.0, 361.0, 60.0)], mean=mean, notes=scales)
     items += drawn.items
-    items.append(caption(lab[mu_key].format(mu=number_text(drawn.y_scale)) + "   "
-                         + lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
-                         (drawn.x_end - 75.0, drawn.y_end), 150.0, 3.5))
     return items, (drawn.y_scale, drawn.x_scale, drawn.origin)
 
 
