@@ -28,7 +28,7 @@ from core.polygons import FINE_MANTISSAS, force_polygon, lever_force_polygon, ni
 from core.positions import DEFAULT_COUNT, positions, special_angles
 
 from . import mechanism as mech
-from .charts import Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items
+from .charts import Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE
 from .labels import Room
 from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
@@ -260,8 +260,7 @@ def _curve_chart(box: Box, x: np.ndarray, y: np.ndarray, mean: float | None, tit
                  y_title: str, mu_key: str, lab) -> tuple[list[Item], tuple[float, float, tuple]]:
     x0, y0, x1, y1 = box
     items: list[Item] = [caption(title, ((x0 + x1) / 2.0, y1), x1 - x0, 3.5)]
-    scales = lambda mx, my: [lab[mu_key].format(mu=number_text(my)) + "   "     # noqa: E731
-                             + lab["mu_phi"].format(mu=number_text(mx))]
+    scales = scale_notes(lab[mu_key], lab["mu_phi"])
     drawn = chart((x0, y0, x1, y1 - 2 * CAPTION), x, [Curve(np.asarray(y))], lab["phi"], y_title,
                   [(float(t), f"{t:g}") for t in np.arange(0.0, 361.0, 60.0)], mean=mean, notes=scales)
     items += drawn.items
