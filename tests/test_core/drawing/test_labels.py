@@ -148,6 +148,7 @@ def test_no_label_is_crossed_on_the_motion_sheet_of_any_design(crank, k, stretch
 @pytest.mark.slow
 @settings(max_examples=12, deadline=None)
 @example(crank=100.0, k=1.02, stretch=1.05, rod=None, size="A2")
+@example(crank=205.0, k=1.75, stretch=2.0, rod=None, size="A3")      # μφ under the energy curve
 @given(**designs)
 def test_no_label_is_crossed_on_the_kinetostatic_sheet_of_any_design(crank, k, stretch, rod, size):
     design = _design(crank, k, stretch, rod)
