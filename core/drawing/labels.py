@@ -137,10 +137,21 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
                            taken, segments, within)
         if label is not None:
             return [label]
-    h = height if subscripts else smaller_height(height)
-    best = None                 # of the free spots farther out, the one whose leader crosses fewest lines
-    for order, label in enumerate(ring_candidates(text, at, h, preferred, gap,
-                                                  range(rings, rings + LEADER_RINGS), None, subscripts)):
+    spots = ring_candidates(text, at, height if subscripts else smaller_height(height), preferred, gap,
+                            range(rings, rings + LEADER_RINGS), None, subscripts)
+    best = with_leader(spots, at, taken, segments, within, leader_gap)
+    if best is None:
+        return []
+    taken.append(best[0].box())
+    return list(best)
+
+
+def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,
+                within: Box | None, leader_gap: float) -> tuple[Text, Polyline] | None:
+    """Of the free ``spots``, the one whose leader line from ``at`` crosses the fewest
+    strokes (the first of equals) and no taken box, with that line; None if none is free."""
+    best = None
+    for order, label in enumerate(spots):
         box = label.box()
         if not is_free(box, taken, segments, within):
             continue
@@ -150,11 +161,8 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
             continue
         score = (crossings(ends[0], segments), order)
         if best is None or score < best[0]:
-            best = (score, label, box, stroke)
-    if best is None:
-        return []
-    taken.append(best[2])
-    return [best[1], best[3]]
+            best = (score, label, stroke)
+    return None if best is None else (best[1], best[2])
 
 
 def crossings(seg: np.ndarray, segments: np.ndarray) -> int:

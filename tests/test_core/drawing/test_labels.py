@@ -178,3 +178,13 @@ def test_place_label_keeps_its_contract_and_now_also_avoids_segments():
     assert place_label("B", (100.0, 100.0), 3.5, full, optional=True) is None and len(full) == 1
     forced = place_label("B", (100.0, 100.0), 3.5, full)
     assert forced is not None and full[-1] == forced.box()
+
+
+def test_crossings_counts_the_segments_a_leader_runs_across():
+    from core.drawing.labels import crossings
+    lead = np.array([0.0, 0.0, 10.0, 0.0])
+    walls = np.array([[5.0, -1.0, 5.0, 1.0],      # across: 1
+                      [2.0, 1.0, 2.0, 3.0],       # above, not reached
+                      [0.0, 1.0, 10.0, 1.0],      # parallel
+                      [7.0, -2.0, 9.0, 2.0]])     # across: 2
+    assert crossings(lead, walls) == 2 and crossings(lead, np.zeros((0, 4))) == 0
