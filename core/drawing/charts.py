@@ -186,9 +186,9 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
                           DASHED))
     room = Room(items, within=box)           # the labels after all the lines, clear of them
     for k, note in enumerate(notes(x_scale, y_scale) if notes else ()):
-        # at the top under the y arrow's tip, at the right, else farther left or a line lower
+        # at the top under the y arrow's tip, at the right, else farther left or lines lower
         spots = [Text(note, (x_end - f * (x_end - left), y_hi - 6.0 * (k + row)), height, "rt")
-                 for row in range(3) for f in (0.0, 0.15, 0.3, 0.45, 0.6, 0.75)]
+                 for row in range(12) for f in (0.0, 0.15, 0.3, 0.45, 0.6, 0.75)]
         placed = room.first_free(spots)
         if placed is None:
             placed = spots[0]
