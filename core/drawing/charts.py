@@ -148,10 +148,12 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     thin dashed horizontal line (e.g. the mean torque); ``levels`` (x from, x to, y) thin
     dashed segments over part of the span (e.g. an allowance over one phase), inside the
     y range like the curves; ``notes`` (x scale, y scale) → lines written under the y arrow's
-    tip at the right (the scales μ), before the titles and numbers keep clear of them. Scales from the round series; the
-    x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
-    labels, or more where the widest label needs it (a torque of 10⁵ N·m reads
-    "-1.000e+05")."""
+    tip at the right (the scales μ), clear of the curves. Every text is placed after the lines,
+    clear of them (:mod:`labels`): the notes, the titles, then the tick numbers (a number a
+    curve runs through goes beside its tick or above the axis, else is left out). Scales from
+    the round series; the x axis keeps 14 mm of the box for its title, the y axis
+    ``height``·6 mm for its tick labels, or more where the widest label needs it (a torque
+    of 10⁵ N·m reads "-1.000e+05")."""
     x0, y0, x1, y1 = box
     small = smaller_height(height)                  # the ticks' labels
     ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves]
