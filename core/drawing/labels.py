@@ -6,7 +6,7 @@ placed after the linework it names, against all of it: the first free spot of a
 cascade the draughtsman's own (GB/T 4458.1 leaves the place to him, not the rule):
 beside the point along the preferred direction, then round it (the other side), then
 farther out; then one standard height smaller; then farther still with a thin leader
-line from the point to the label. A spot is free when the label's box, a little
+line from the point to the label (at last anywhere in the drawing). A spot is free when the label's box, a little
 enlarged, meets no stroke and no box already taken, and lies within its drawing.
 
 The strokes are segments (n, 4): x0, y0, x1, y1 in paper mm, a circle as a polygon; a
@@ -26,6 +26,8 @@ from .sheet import Box, Circle, Item, Pair, Polyline, Text, line, smaller_height
 CLEARANCE = 0.4            # paper mm kept between a label's box and a stroke
 CIRCLE_SIDES = 48
 LEADER_RINGS = 10          # rings beyond the last plain one tried with a leader line
+GRID_SPOTS = 2000          # then spots anywhere in the drawing, the nearest first …
+FAR_CHOICES = 12           # … of whose free ones the leader crossing fewest lines is taken
 
 
 def strokes(items: Iterable[Item]) -> np.ndarray:
@@ -97,19 +99,21 @@ def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarra
 def ring_candidates(text: str, at: Pair, height: float, preferred: Pair, gap: float,
                     rings: Sequence[int], align: str | None = None,
                     subscripts: tuple[tuple[int, int], ...] = ()) -> Iterable[Text]:
-    """Spots round ``at``: on each ring (``gap`` + ring·height out) eight directions, the
-    preferred first, then its neighbours alternately (so the label moves round to the other
-    side last); each aligned away from the point unless ``align`` fixes it."""
+    """Spots round ``at`` on rings ``gap`` + ring·height out, in eight directions: first
+    along the preferred direction ring by ring (moved along its leader), then on the other
+    side the same way (flipped), then the six directions between, nearest ring first and
+    the preferred direction's neighbours first; each aligned away from the point unless
+    ``align`` fixes it."""
     start = math.atan2(preferred[1], preferred[0])
-    turns = (0, 1, -1, 2, -2, 3, -3, 4)
-    for ring in rings:
+    order = ([(0, ring) for ring in rings] + [(4, ring) for ring in rings]
+             + [(turn, ring) for ring in rings for turn in (1, -1, 2, -2, 3, -3)])
+    for turn, ring in order:
         r = gap + ring * height
-        for k in turns:
-            angle = start + k * math.pi / 4.0
-            dx, dy = math.cos(angle), math.sin(angle)
-            side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
-                             + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
-            yield Text(text, (at[0] + r * dx, at[1] + r * dy), height, side, subscripts=subscripts)
+        angle = start + turn * math.pi / 4.0
+        dx, dy = math.cos(angle), math.sin(angle)
+        side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
+                         + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
+        yield Text(text, (at[0] + r * dx, at[1] + r * dy), height, side, subscripts=subscripts)
 
 
 def leader(at: Pair, box: Box, gap: float) -> Polyline:
@@ -137,21 +141,40 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
                            taken, segments, within)
         if label is not None:
             return [label]
-    spots = ring_candidates(text, at, height if subscripts else smaller_height(height), preferred, gap,
-                            range(rings, rings + LEADER_RINGS), None, subscripts)
+    h = height if subscripts else smaller_height(height)
+    spots = ring_candidates(text, at, h, preferred, gap, range(rings, rings + LEADER_RINGS), None, subscripts)
     best = with_leader(spots, at, taken, segments, within, leader_gap)
+    if best is None and within is not None:     # anywhere in the drawing, nearest first
+        best = with_leader(grid_candidates(text, at, h, within, subscripts), at, taken, segments, within,
+                           leader_gap, enough=FAR_CHOICES)
     if best is None:
         return []
     taken.append(best[0].box())
     return list(best)
 
 
+def grid_candidates(text: str, at: Pair, height: float, within: Box,
+                    subscripts: tuple[tuple[int, int], ...] = ()) -> list[Text]:
+    """Spots all over ``within`` on a grid two text heights apart, centred on the grid's
+    points, the nearest to ``at`` first (at most GRID_SPOTS of them)."""
+    xs = np.arange(within[0] + height, within[2] - height, 2.0 * height)
+    ys = np.arange(within[1] + height, within[3] - height, 2.0 * height)
+    gx, gy = np.meshgrid(xs, ys)
+    pts = np.column_stack([gx.ravel(), gy.ravel()])
+    near = pts[np.argsort(np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]), kind="stable")[:GRID_SPOTS]]
+    return [Text(text, (float(x), float(y)), height, "cm", subscripts=subscripts) for x, y in near]
+
+
 def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,
-                within: Box | None, leader_gap: float) -> tuple[Text, Polyline] | None:
-    """Of the free ``spots``, the one whose leader line from ``at`` crosses the fewest
-    strokes (the first of equals) and no taken box, with that line; None if none is free."""
-    best = None
+                within: Box | None, leader_gap: float, enough: int | None = None
+                ) -> tuple[Text, Polyline] | None:
+    """Of the free ``spots`` (the first ``enough`` of them, if given), the one whose leader
+    line from ``at`` crosses the fewest strokes (the first of equals) and no taken box, with
+    that line; None if none is free."""
+    best, found = None, 0
     for order, label in enumerate(spots):
+        if enough is not None and found >= enough:
+            break
         box = label.box()
         if not is_free(box, taken, segments, within):
             continue
@@ -159,6 +182,7 @@ def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments:
         ends = np.asarray(stroke.points).reshape(1, 4)
         if any(meets_strokes(b, ends, 0.0) for b in taken):
             continue
+        found += 1
         score = (crossings(ends[0], segments), order)
         if best is None or score < best[0]:
             best = (score, label, stroke)
