@@ -4,10 +4,11 @@ A label on a course-design sheet names a point (a joint, a polygon's vertex, an 
 head); one that a lever or an arrow runs through cannot be read. So every label is
 placed after the linework it names, against all of it: the first free spot of a
 cascade the draughtsman's own (GB/T 4458.1 leaves the place to him, not the rule):
-beside the point along the preferred direction, then round it (the other side), then
-farther out; then one standard height smaller; then farther still with a thin leader
-line from the point to the label (at last anywhere in the drawing). A spot is free when the label's box, a little
-enlarged, meets no stroke and no box already taken, and lies within its drawing.
+beside the point in the preferred direction and farther out along it, then on the other
+side, then round it; then one standard height smaller; then farther still with a thin
+leader line from the point to the label, at last anywhere in the drawing. A spot is free
+when the label's box, a little enlarged, meets no stroke and no box already taken, and
+lies within its drawing.
 
 The strokes are segments (n, 4): x0, y0, x1, y1 in paper mm, a circle as a polygon; a
 filled arrowhead's edges are strokes like any other (a box that holds a whole arrowhead
