@@ -1,11 +1,119 @@
 """Checks every drawing sheet must pass: each drawing keeps to its own area, the areas do
-not overlap, nothing lies outside the border, no two texts overlap, and no text holds a
-Unicode subscript digit, which the CAD fonts of a DXF lack (indices are subscript runs)."""
+not overlap, nothing lies outside the border, no two texts overlap, no line, circle or
+arrowhead runs through a text's glyphs, and no text holds a Unicode subscript digit, which
+the CAD fonts of a DXF lack (indices are subscript runs).
+
+The crossing check is written here on its own, from the items' plain geometry, not with
+core's placement code: the test must not share the code it checks."""
+import math
 import re
 
-from core.drawing.sheet import Text, item_box, outside_border, overlapping_texts
+import numpy as np
+
+from core.drawing.sheet import Circle, Polyline, Text, item_box, outside_border, overlapping_texts
 
 UNICODE_SUBSCRIPTS = re.compile("[\u2080-\u209c]")
+
+
+# A glyph's body inside a run's box: the letters' side bearings and the room above the
+# capitals and at the baseline, in text heights, are ink-free, so a line there does not
+# touch a letter (a leader line may end at the box).
+BODY_INSET = 0.12
+CIRCLE_SEGMENTS = 96
+
+
+def glyph_bodies(text: Text) -> list[np.ndarray]:
+    """Each run's glyph body as its four corners ((4, 2) paper mm): baseline to capital
+    height over the run's width, shrunk by BODY_INSET of its height, rotated as drawn."""
+    bodies = []
+    for run in text.runs():
+        w, h, inset = run.width, run.height, BODY_INSET * run.height
+        if w <= 2 * inset or not run.text.strip():
+            continue
+        x0 = {"l": 0.0, "c": -w / 2.0, "r": -w}[run.align[0]]
+        y0 = {"b": 0.0, "m": -h / 2.0, "t": -h}[run.align[1]]
+        local = np.array([[x0 + inset, y0 + inset], [x0 + w - inset, y0 + inset],
+                          [x0 + w - inset, y0 + h - inset], [x0 + inset, y0 + h - inset]])
+        c, s = math.cos(math.radians(run.rotation)), math.sin(math.radians(run.rotation))
+        bodies.append(local @ np.array([[c, s], [-s, c]]) + np.asarray(run.position))
+    return bodies
+
+
+def item_segments(item) -> np.ndarray:
+    """An item's strokes as segments (n, 4): x0, y0, x1, y1; a circle as a 96-gon."""
+    if isinstance(item, Circle):
+        t = np.linspace(0.0, 2.0 * math.pi, CIRCLE_SEGMENTS + 1)
+        pts = np.column_stack([item.center[0] + item.radius * np.cos(t),
+                               item.center[1] + item.radius * np.sin(t)])
+    elif isinstance(item, Polyline):
+        pts = np.asarray(item.points, dtype=float).reshape(-1, 2)
+        if item.closed or item.filled:
+            pts = np.vstack([pts, pts[:1]])
+    else:
+        return np.zeros((0, 4))
+    return np.column_stack([pts[:-1], pts[1:]])
+
+
+def _segments_meet_box(seg: np.ndarray, box: tuple[float, float, float, float]) -> np.ndarray:
+    """Which segments (n, 4) have a point inside the axis-parallel ``box`` (Liang–Barsky)."""
+    x0, y0, dx, dy = seg[:, 0], seg[:, 1], seg[:, 2] - seg[:, 0], seg[:, 3] - seg[:, 1]
+    lo, hi = np.zeros(len(seg)), np.ones(len(seg))
+    ok = np.ones(len(seg), bool)
+    for p, q in ((-dx, x0 - box[0]), (dx, box[2] - x0), (-dy, y0 - box[1]), (dy, box[3] - y0)):
+        parallel = np.abs(p) < 1e-12
+        ok &= ~(parallel & (q < 0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.where(parallel, 0.0, q / np.where(parallel, 1.0, p))
+        lo = np.where(~parallel & (p < 0), np.maximum(lo, t), lo)
+        hi = np.where(~parallel & (p > 0), np.minimum(hi, t), hi)
+    return ok & (lo <= hi)
+
+
+def _inside_polygon(point: np.ndarray, poly: np.ndarray) -> bool:
+    """Even-odd rule: whether ``point`` lies inside the polygon ``poly`` ((n, 2))."""
+    a, b = poly, np.roll(poly, -1, axis=0)
+    straddles = (a[:, 1] > point[1]) != (b[:, 1] > point[1])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = a[:, 0] + (point[1] - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+    return bool(np.count_nonzero(straddles & (point[0] < x)) % 2)
+
+
+def _meets_body(body: np.ndarray, seg: np.ndarray) -> np.ndarray:
+    """Which segments (n, 4) meet the glyph ``body`` (a rotated rectangle's corners)."""
+    origin, u = body[0], body[1] - body[0]
+    length, height = float(np.hypot(*u)), float(np.hypot(*(body[3] - body[0])))
+    u = u / length
+    v = np.array([-u[1], u[0]])
+    to_local = lambda xy: np.column_stack([(xy - origin) @ u, (xy - origin) @ v])   # noqa: E731
+    local = np.hstack([to_local(seg[:, :2]), to_local(seg[:, 2:])])
+    return _segments_meet_box(local, (0.0, 0.0, length, height))
+
+
+def _crosses(body: np.ndarray, item) -> bool:
+    """Whether ``item``'s strokes, or a filled item's area, meet the glyph ``body``."""
+    seg = item_segments(item)
+    if len(seg) and _meets_body(body, seg).any():
+        return True
+    return (isinstance(item, Polyline) and item.filled                # an arrowhead over it all
+            and _inside_polygon(body.mean(axis=0), np.asarray(item.points, float)))
+
+
+def crossed_texts(sheet) -> list[tuple[Text, object]]:
+    """(text, item) for every text whose glyph body a line, polyline, circle or filled
+    arrowhead of the sheet meets; each text once, with the first such item."""
+    strokes = [it for it in sheet.items if not isinstance(it, Text)]
+    boxes = np.array([item_box(it) for it in strokes]).reshape(-1, 4)
+    found = []
+    for text in (it for it in sheet.items if isinstance(it, Text)):
+        for body in glyph_bodies(text):
+            (x0, y0), (x1, y1) = body.min(axis=0), body.max(axis=0)
+            near = np.flatnonzero((boxes[:, 0] <= x1) & (boxes[:, 2] >= x0)
+                                  & (boxes[:, 1] <= y1) & (boxes[:, 3] >= y0))
+            hit = next((strokes[i] for i in near if _crosses(body, strokes[i])), None)
+            if hit is not None:
+                found.append((text, hit))
+                break
+    return found
 
 
 def inside(box, area, tol=1e-6) -> bool:
@@ -16,6 +124,8 @@ def inside(box, area, tol=1e-6) -> bool:
 def assert_laid_out(sheet, areas) -> None:
     """``areas``: name → (area box, its items) of a sheet built by core.drawing."""
     assert outside_border(sheet) == [] and overlapping_texts(sheet) == []
+    crossed = [(t.text, t.position, type(it).__name__, it.layer) for t, it in crossed_texts(sheet)]
+    assert crossed == [], crossed
     assert [t.text for t in sheet.items if isinstance(t, Text) and UNICODE_SUBSCRIPTS.search(t.text)] == []
     named = list(areas.items())
     for name, (area, items) in named:

@@ -25,8 +25,9 @@ from core.cam import Cam
 from core.cam.follower import pitch, pressure_angle, profile
 from core.cam.table import follower_peaks
 
-from .charts import Curve, arrow, chart, place_label
+from .charts import Curve, arrow, chart, scale_notes
 from .dxf import CENTER, OUTLINE, THIN
+from .labels import Room
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, fit, frame_items, line, marked,
                     marked_text, number_text, scale_text, standard_scale, table, symbol)
@@ -168,35 +169,34 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
     ray_out = outer + 4.0
     names = ("rise_sector", "dwell_sector", "return_sector", "inner_sector")
     spans = np.diff(edges + [360.0])
-    taken: list[Box] = []
     for edge in edges:
         u = np.array([math.cos(math.radians(edge)), math.sin(math.radians(edge))])
         items.append(line([o, o + ray_out * u], THIN))
+    sectors = []
     for start, span, key in zip(edges, spans, names):
         if span <= 0.0:
             continue
-        mid = math.radians(start + span / 2.0)
-        u = np.array([math.cos(mid), math.sin(mid)])
         arc = np.radians(np.linspace(start, start + span, max(int(span), 2)))
         items.append(line(o + (ray_out - 2.0) * np.column_stack([np.cos(arc), np.sin(arc)]), THIN))
-        text, indices = marked(lab[key].format(deg=number_text(round(float(span), 3))))
-        at = o + (ray_out + 1.0) * u
-        placed = place_label(text, (float(at[0]), float(at[1])), 3.5, taken, tuple(u), gap=0.5,
-                             within=box, optional=True, rings=6,   # a short sector's a ring out
-                             subscripts=indices)
-        items += [placed] if placed else []
+        sectors.append((math.radians(start + span / 2.0), lab[key].format(deg=number_text(round(float(span), 3)))))
     # the turning sense: a clockwise arc with its head, inside the base circle
     r_arrow = 0.45 * place.length(r0)
     arc = np.radians(np.linspace(150.0, 60.0, 24))
     pts = o + r_arrow * np.column_stack([np.cos(arc), np.sin(arc)])
     items.append(line(pts[:-3], THIN))
     items += arrow(pts[-4], pts[-1], THIN)
+    room = Room(items, within=box)             # the labels after all the lines, clear of them
+    for mid, caption_text in sectors:          # a short sector's a ring out
+        u = np.array([math.cos(mid), math.sin(mid)])
+        at = o + (ray_out + 1.0) * u
+        text, spans = marked(caption_text)
+        items += room.place(text, (float(at[0]), float(at[1])), 3.5, tuple(u), gap=0.5, rings=6,
+                            subscripts=spans)
     for name, at, away in (("O", o, (-1.0, -1.0)), ("A", pivot, (1.0, 1.0)),
                            (("B", "0"), b0, tuple(b0 - pivot)), ("ω", pts[len(pts) // 2], (1.0, 1.0))):
         text, spans = symbol(name)
-        placed = place_label(text, (float(at[0]), float(at[1])), 3.5, taken, away, gap=PIVOT_MM + 0.5,
-                             within=box, optional=True, subscripts=spans)
-        items += [placed] if placed else []
+        items += room.place(text, (float(at[0]), float(at[1])), 3.5, away, gap=PIVOT_MM + 0.5,
+                            subscripts=spans, leader_gap=PIVOT_MM + 0.3)
     middle = (area[0] + area[2]) / 2.0
     width = area[2] - area[0]
     items.append(caption(lab["profile"].format(mu=number_text(scale / 1000.0), scale=ratio_text(scale)),
@@ -237,13 +237,9 @@ def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],
             pbox = (pbox[0], pbox[1], pbox[2], pbox[3] - 2 * CAPTION)
             levels = ((0.0, prog.rise_deg, inputs.pressure_deg),
                       (edges[2], edges[3], inputs.return_pressure_deg))
-        drawn = chart(pbox, deg, [Curve(y)], lab["delta"], lab[key], ticks, levels=levels)
+        drawn = chart(pbox, deg, [Curve(y)], lab["delta"], lab[key], ticks, levels=levels,
+                      notes=scale_notes(lab["mu_" + key], lab["mu_delta"] if k == 0 else None))
         items += drawn.items
-        items.append(marked_text(lab["mu_" + key].format(mu=number_text(drawn.y_scale)),
-                                 (drawn.x_end, drawn.y_end), 3.5, "rt"))
-        if k == 0:
-            items.append(marked_text(lab["mu_delta"].format(mu=number_text(drawn.x_scale)),
-                                     (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
         charts[key] = (drawn.y_scale, drawn.x_scale, drawn.origin)
     return items
 

@@ -9,14 +9,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping, Sequence
+from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
 from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
-from .sheet import Box, Item, Pair, Text, line, number_text, smaller_height, symbol, text_width
+from .labels import Room, first_free, is_free, ring_candidates
+from .sheet import Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
 TICK = 1.5
@@ -43,37 +44,22 @@ def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
 def place_label(text: str, at: Pair, height: float, taken: list[Box],
                 preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
                 optional: bool = False, align: str | None = None, rings: int = 3,
-                subscripts: tuple[tuple[int, int], ...] = ()) -> Text | None:
-    """``text`` beside the point ``at``: the first of eight directions (starting with
-    ``preferred``), on ``rings`` rings one text height apart, whose box meets none of
-    ``taken`` and lies ``within``; then appends its box to ``taken``. When no spot is free:
-    None if ``optional``, else the first spot. ``align`` fixes the alignment (default: away
-    from the point)."""
-    start = math.atan2(preferred[1], preferred[0])
-    first = None
-    for k in range(8 * rings):
-        r = gap + (k // 8) * height
-        angle = start + (k % 8) * math.pi / 4.0
-        dx, dy = math.cos(angle), math.sin(angle)
-        side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
-                         + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
-        label = Text(text, (at[0] + r * dx, at[1] + r * dy), height, side, subscripts=subscripts)
-        box = label.box()
-        if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
-                                       and within[1] <= box[1] and box[3] <= within[3]):
-            continue
-        first = first or (label, box)
-        if not any(_meets(box, b) for b in taken):
-            taken.append(box)
-            return label
-    if optional or first is None:
-        return None
-    taken.append(first[1])
-    return first[0]
-
-
-def _meets(a: Box, b: Box) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+                subscripts: tuple[tuple[int, int], ...] = (), segments: np.ndarray | None = None
+                ) -> Text | None:
+    """``text`` beside the point ``at`` at one height, without a leader: the first spot of
+    :func:`labels.ring_candidates` clear of ``taken`` (and of ``segments``, when given)
+    inside ``within``; takes its box. When none is free: None if ``optional``, else the
+    first spot inside ``within``. The sheets use :class:`labels.Room`, which also shrinks
+    a label and draws a leader line; this is for a caller with boxes only."""
+    strokes_ = np.zeros((0, 4)) if segments is None else segments
+    spots = list(ring_candidates(text, at, height, preferred, gap, range(rings), align, subscripts))
+    placed = first_free(spots, taken, strokes_, within)
+    if placed is not None or optional:
+        return placed
+    inside = [s for s in spots if is_free(s.box(), [], np.zeros((0, 4)), within)]
+    if inside:
+        taken.append(inside[0].box())
+    return inside[0] if inside else None
 
 
 # ---- vector polygons ---------------------------------------------------------------------
@@ -99,18 +85,20 @@ def polygon_extent(polygon: Polygon, scale: float) -> Box:
 
 def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.5,
                   names: Mapping[str, str | tuple[str, str] | list] | None = None,
-                  taken: list[Box] | None = None, within: Box | None = None) -> list[Item]:
+                  taken: list[Box] | None = None, within: Box | None = None,
+                  room: Room | None = None) -> list[Item]:
     """The polygon drawn from ``pole`` at μ = ``scale`` (its unit per mm): every vector as an
     arrow from its tail point to its head point, absolute ones thick, the others thin, and
     each point labelled (``names`` maps point keys to names: a part as ``sheet.symbol``
-    takes it, or a list of parts; default the keys) clear of ``taken`` and inside
-    ``within``."""
-    taken = [] if taken is None else taken
+    takes it, or a list of parts; default the keys) clear of the arrows, of ``taken`` and
+    inside ``within``, or in ``room`` (which then holds the arrows and labels for more)."""
+    room = room or Room(within=within, taken=[] if taken is None else taken)
     at = {k: (pole[0] + x / scale, pole[1] + y / scale) for k, (x, y) in polygon.points.items()}
     items: list[Item] = []
     for v in polygon.vectors:
         layer = OUTLINE if v.role in ("absolute", "force") else THIN
         items += arrow(at[v.tail], at[v.head], layer)
+    room.draw(items)
     centre = np.mean(np.array(list(at.values())), axis=0)
 
     def parts_of(key: str) -> list:
@@ -125,10 +113,7 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
         away = away if np.hypot(*away) > 1e-6 else np.array([1.0, 1.0])
         parts = [part for k in group for part in [","] + parts_of(k)][1:]
         text, spans = symbol(*parts)
-        label = place_label(text, p, height, taken, tuple(away), within=within, rings=5,
-                            optional=True, subscripts=spans)           # crowded: left out
-        if label is not None:
-            items.append(label)
+        items += room.place(text, p, height, tuple(away), rings=5, subscripts=spans)   # crowded: left out
     return items
 
 
@@ -158,15 +143,19 @@ class Chart:
 def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_title: str,
           x_ticks: Sequence[tuple[float, str]] = (), height: float = 3.5,
           mean: float | None = None,
-          levels: Sequence[tuple[float, float, float]] = ()) -> Chart:
+          levels: Sequence[tuple[float, float, float]] = (),
+          notes: Callable[[float, float], Sequence[str]] | None = None) -> Chart:
     """Curves over ``x`` in ``box`` with a horizontal x axis through y = 0, a y axis at x[0],
     arrows on both, ticks at ``x_ticks`` (value, label) and a few round y ticks; ``mean`` a
     thin dashed horizontal line (e.g. the mean torque); ``levels`` (x from, x to, y) thin
     dashed segments over part of the span (e.g. an allowance over one phase), inside the
-    y range like the curves. Scales from the round series; the
-    x axis keeps 14 mm of the box for its title, the y axis ``height``·6 mm for its tick
-    labels, or more where the widest label needs it (a torque of 10⁵ N·m reads
-    "-1.000e+05")."""
+    y range like the curves; ``notes`` (x scale, y scale) → lines written under the y arrow's
+    tip at the right (the scales μ), clear of the curves. Every text is placed after the lines,
+    clear of them (:mod:`labels`): the notes, the titles, then the tick numbers (a number a
+    curve runs through goes beside its tick or above the axis, else is left out). Scales from
+    the round series; the x axis keeps 14 mm of the box for its title, the y axis
+    ``height``·6 mm for its tick labels, or more where the widest label needs it (a torque
+    of 10⁵ N·m reads "-1.000e+05")."""
     x0, y0, x1, y1 = box
     small = smaller_height(height)                  # the ticks' labels
     ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves]
@@ -187,25 +176,11 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     y_lo, y_hi = zero + bottom / y_scale - 2.0, zero + top / y_scale + 6.0
     items: list[Item] = [*arrow((left, zero), (x_end, zero), THIN),
                          *arrow((left, y_lo), (left, y_hi), THIN)]
-    taken: list = []
     for c in curves:
-        pts = to_paper(x, c.y)
-        items.append(line(pts, c.layer))
-    for value, label in x_ticks:
-        px = left + (value - x[0]) / x_scale
-        items.append(line([(px, zero - TICK), (px, zero + TICK)], THIN))
-        if label:
-            lab = Text(label, (px, zero - TICK - 1.0), small, "ct")
-            if not any(_meets(lab.box(), b) for b in taken):
-                taken.append(lab.box())
-                items.append(lab)
-    for value in y_ticks:
-        py = zero + value / y_scale
-        items.append(line([(left - TICK, py), (left, py)], THIN))
-        lab = Text(number_text(value), (left - TICK - 1.0, py), small, "rm")
-        if abs(value) > 0 and not any(_meets(lab.box(), b) for b in taken):
-            taken.append(lab.box())
-            items.append(lab)
+        items.append(line(to_paper(x, c.y), c.layer))
+    xs = [(left + (value - x[0]) / x_scale, label) for value, label in x_ticks]
+    items += [line([(px, zero - TICK), (px, zero + TICK)], THIN) for px, _ in xs]
+    items += [line([(left - TICK, zero + v / y_scale), (left, zero + v / y_scale)], THIN) for v in y_ticks]
     if mean is not None:
         py = zero + mean / y_scale
         items.append(line([(left, py), (left + span_x / x_scale, py)], DASHED))
@@ -213,9 +188,49 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
         py = zero + value / y_scale
         items.append(line([(left + (start - x[0]) / x_scale, py), (left + (end - x[0]) / x_scale, py)],
                           DASHED))
-    items.append(Text(y_title, (left + 1.5, y_hi), height, "lt"))
-    items.append(Text(x_title, (x_end, zero + 1.5), height, "rb"))
+    room = Room(items, within=box)           # the labels after all the lines, clear of them
+    for k, note in enumerate(notes(x_scale, y_scale) if notes else ()):
+        # at the top under the y arrow's tip, at the right, else farther left or lines lower;
+        # a note is the program's caption in the index notation (sheet.marked: μ_s)
+        plain, spans = marked(note)
+        spots = [Text(plain, (x_end - f * (x_end - left), y_hi - 6.0 * (k + row)), height, "rt",
+                      subscripts=spans)
+                 for row in range(12) for f in (0.0, 0.15, 0.3, 0.45, 0.6, 0.75)]
+        placed = room.first_free(spots)
+        if placed is None:
+            placed = spots[0]
+            room.taken.append(placed.box())
+        items.append(placed)
+    # the titles beside their arrows' tips, else a line higher (or lower) where the curve ends there
+    titles = ([Text(y_title, (left + 1.5, y_hi), height, "lt"), Text(y_title, (left - 1.5, y_hi), height, "rt")],
+              [Text(x_title, (x_end, zero + side * (1.5 + k * 1.5 * height)), height, "rb" if side > 0 else "rt")
+               for k in range(3) for side in (1, -1)])
+    for spots in titles:                     # a title stands, before the ticks' numbers: at worst its first spot
+        placed = room.first_free(spots)
+        if placed is None:
+            placed = spots[0]
+            room.taken.append(placed.box())
+        items.append(placed)
+    for px, label in xs:                     # under the tick, beside it, or over the axis
+        below, above = zero - TICK - 1.0, zero + TICK + 1.0
+        spots = ((px, below, "ct"), (px + 0.5, below, "lt"), (px - 0.5, below, "rt"),
+                 (px, above, "cb"), (px + 0.5, above, "lb"), (px - 0.5, above, "rb"))
+        placed = room.first_free(Text(label, (sx, sy), small, al) for sx, sy, al in spots) if label else None
+        items += [placed] if placed else []
+    for value in y_ticks:
+        if abs(value) > 0:
+            placed = room.first_free([Text(number_text(value), (left - TICK - 1.0, zero + value / y_scale),
+                                           small, "rm")])
+            items += [placed] if placed else []
     return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi)
+
+
+def scale_notes(y_note: str, x_note: str | None = None, y_unit: float = 1.0
+                ) -> Callable[[float, float], list[str]]:
+    """A chart's ``notes``: its y scale (times ``y_unit``) written into ``y_note``'s {mu}, and
+    its x scale into ``x_note``'s, if given."""
+    return lambda mx, my: ([y_note.format(mu=number_text(my * y_unit))]
+                           + ([x_note.format(mu=number_text(mx))] if x_note else []))
 
 
 def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> list[float]:

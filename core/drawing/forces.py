@@ -28,9 +28,10 @@ from core.polygons import FINE_MANTISSAS, force_polygon, lever_force_polygon, ni
 from core.positions import DEFAULT_COUNT, positions, special_angles
 
 from . import mechanism as mech
-from .charts import Curve, arrow, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
+from .charts import Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE
-from .motion import CAPTION, GAP, TABLE_ROW, caption
+from .labels import Room
+from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
 from .sheet import (Box, Item, Paper, Sheet, fit, frame_items, number_text, scale_text, standard_scale,
                     symbol, table)
@@ -211,20 +212,21 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tupl
     for _, where, force in forces:
         need = max(need, math.hypot(*force) / max(_room(points[where], force, box) - 8.0, 1.0))
     mu_f = nice_scale(need, 1.0, FINE_MANTISSAS)
-    taken: list[Box] = []
-    for joint in mech.joint_labels(design, angle, place, 3.5):      # crowded (small sheets): left out
-        placed = place_label(joint.text, joint.position, joint.height, taken, within=box, gap=0.0,
-                             optional=True, align="cm", subscripts=joint.subscripts)
-        items += [placed] if placed else []
+    heads = []
     for name, where, force in forces:
         tail = points[where]
         head = tail + force / mu_f
         arrows[(k, name)] = (tail, head)
         items += arrow(tail, head, OUTLINE)
+        heads.append((name, tail, head))
+    room = Room(items, within=box)             # every label against all the linework
+    for text, spans, p, way in mech.joint_anchors(design, angle, place, 3.5):
+        items += room.place(text, tuple(p), 3.5, tuple(way), gap=JOINT_GAP, subscripts=spans,
+                            leader_gap=mech.PIN_RADIUS + 0.3)
+    for name, tail, head in heads:             # crowded (small sheets): left out
         text, spans = symbol(FORCE_NAMES[name])
-        label = place_label(text, (float(head[0]), float(head[1])), 3.5, taken,
-                            tuple(head - tail), gap=1.0, within=box, optional=True, subscripts=spans)
-        items += [label] if label else []
+        items += room.place(text, (float(head[0]), float(head[1])), 3.5, tuple(head - tail), gap=1.0,
+                            subscripts=spans, leader_gap=0.5)
     return items, mu_f
 
 
@@ -246,18 +248,14 @@ def _polygon(poly, cell: Box, title_text: str) -> tuple[list[Item], float]:
     pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
     names = {str(i): str(i) for i in range(len(poly.points))}
     items: list[Item] = [title]
-    taken = [title.box()]
-    items += polygon_items(poly, pole, mu, 3.5, names, taken,
-                           within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]))
+    room = Room(within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), taken=[title.box()])
+    items += polygon_items(poly, pole, mu, 3.5, names, room=room)
     at = {key: (pole[0] + x / mu, pole[1] + y / mu) for key, (x, y) in poly.points.items()}
     for v in poly.vectors:                      # each arrow named at its middle
         (tx, ty), (hx, hy) = at[v.tail], at[v.head]
         text, spans = symbol(FORCE_NAMES.get(v.key, v.key))
-        label = place_label(text, ((tx + hx) / 2.0, (ty + hy) / 2.0), 3.5,
-                            taken, (-(hy - ty), hx - tx), gap=1.5,
-                            within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), optional=True,
-                            subscripts=spans)
-        items += [label] if label else []
+        items += room.place(text, ((tx + hx) / 2.0, (ty + hy) / 2.0), 3.5, (-(hy - ty), hx - tx),
+                            gap=1.5, subscripts=spans)
     return items, mu
 
 
@@ -265,12 +263,10 @@ def _curve_chart(box: Box, x: np.ndarray, y: np.ndarray, mean: float | None, tit
                  y_title: str, mu_key: str, lab) -> tuple[list[Item], tuple[float, float, tuple]]:
     x0, y0, x1, y1 = box
     items: list[Item] = [caption(title, ((x0 + x1) / 2.0, y1), x1 - x0, 3.5)]
+    scales = scale_notes(lab[mu_key], lab["mu_phi"])
     drawn = chart((x0, y0, x1, y1 - 2 * CAPTION), x, [Curve(np.asarray(y))], lab["phi"], y_title,
-                  [(float(t), f"{t:g}") for t in np.arange(0.0, 361.0, 60.0)], mean=mean)
+                  [(float(t), f"{t:g}") for t in np.arange(0.0, 361.0, 60.0)], mean=mean, notes=scales)
     items += drawn.items
-    items.append(caption(lab[mu_key].format(mu=number_text(drawn.y_scale)) + "   "
-                         + lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
-                         (drawn.x_end - 75.0, drawn.y_end), 150.0, 3.5))
     return items, (drawn.y_scale, drawn.x_scale, drawn.origin)
 
 

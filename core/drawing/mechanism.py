@@ -17,7 +17,7 @@ from core.geometry import Design
 from core.kinematics import shape
 
 from .dxf import CENTER, OUTLINE, THIN
-from .sheet import Box, Circle, Item, Pair, Placement, Text, line, symbol
+from .sheet import Box, Circle, Item, Pair, Placement, line, symbol
 
 PIN_RADIUS = 1.5            # paper mm
 BLOCK = (10.0, 6.0)         # slider block along × across its slide, paper mm
@@ -151,9 +151,12 @@ def tool_path(design: Design, where: Placement, crank_deg: np.ndarray) -> list[I
     return items
 
 
-def joint_labels(design: Design, crank_deg: float, where: Placement, height: float = 5.0) -> list[Text]:
-    """O2, O4, A, B, C (rod variant) beside their joints at one crank angle: each on the
-    side, of eight, whose spot is farthest from the links and the guide line there."""
+def joint_anchors(design: Design, crank_deg: float, where: Placement, height: float = 5.0
+                  ) -> list[tuple[str, tuple[tuple[int, int], ...], np.ndarray, np.ndarray]]:
+    """O2, O4, A, B, C (rod variant) at one crank angle as (text, subscripts, the joint on
+    the paper, the direction to label it in): of eight directions, the one whose spot
+    ``height``-dependent reach away is farthest from the links and the guide line there.
+    The label itself is placed by :mod:`core.drawing.labels` against the whole drawing."""
     j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
     segments = [(j["O2"], j["A"]), (j["O4"], j["B"]),
                 (j["C"] - [RAM[0], 0.0], j["C"] + [RAM[0] + TOOL_AHEAD, 0.0])]
@@ -163,15 +166,14 @@ def joint_labels(design: Design, crank_deg: float, where: Placement, height: flo
     if design.rod is not None:
         names["C"] = "C"
     reach = 3.5 + 1.2 * height
-    labels = []
+    anchors = []
     for key, name in names.items():
         text, spans = symbol(name)
         p = j[key]
-        spots = [p + reach * np.array([math.cos(a), math.sin(a)])
-                 for a in np.radians(np.arange(0.0, 360.0, 45.0))]
-        best = max(spots, key=lambda q: min(_distance(q, s0, s1) for s0, s1 in segments))
-        labels.append(Text(text, (float(best[0]), float(best[1])), height, "cm", subscripts=spans))
-    return labels
+        ways = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(np.arange(0.0, 360.0, 45.0))]
+        best = max(ways, key=lambda u: min(_distance(p + reach * u, s0, s1) for s0, s1 in segments))
+        anchors.append((text, spans, p, best))
+    return anchors
 
 
 def _distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:

@@ -27,10 +27,11 @@ from core.polygons import acceleration_polygon, velocity_polygon
 from core.positions import positions, special_angles
 
 from . import mechanism as mech
-from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
+from .charts import Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE, THIN
-from .sheet import (Box, Item, Paper, Placement, Sheet, Text, fit, fitting_height, frame_items, marked,
-                    marked_text, number_text, scale_text, standard_scale, table)
+from .labels import Room
+from .sheet import (Box, Item, Paper, Placement, Sheet, Text, clipped, fit, fitting_height, frame_items,
+                    marked, marked_text, number_text, scale_text, standard_scale, table)
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
@@ -56,6 +57,7 @@ GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
 TABLE_ROW = 7.0
+JOINT_GAP = mech.PIN_RADIUS + 1.0   # a joint's label (or a position's number) off its pin, mm
 
 
 @dataclass(frozen=True)
@@ -144,20 +146,15 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
         items += mech.links_at(design, float(phi), place, THIN, bodies=False)
     for phi in limits:
         items += mech.links_at(design, float(phi), place, OUTLINE)
-    taken: list[Box] = []
-    for label in mech.joint_labels(design, float(limits[0]), place, 5.0):
-        placed = place_label(label.text, label.position, label.height, taken, subscripts=label.subscripts,
-                             within=box,
-                             gap=0.0, optional=True, align="cm")
-        items += [placed] if placed else []
+    room = Room(items, within=box)
+    for text, spans, p, way in mech.joint_anchors(design, float(limits[0]), place, 5.0):
+        items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,
+                            leader_gap=mech.PIN_RADIUS + 0.3)
     o2 = place([0.0, design.frame])
     pins = place(mech.joints(design, angles)["A"].T)
     for k, p in enumerate(pins, start=1):      # a number with no free spot is left out
-        out = p - o2
-        spot = o2 + out * (1.0 + 5.0 / max(np.hypot(*out), 1e-9))
-        placed = place_label(str(k), (float(spot[0]), float(spot[1])), 3.5, taken, tuple(out),
-                             gap=0.5, within=box, optional=True)
-        items += [placed] if placed else []
+        items += room.place(str(k), (float(p[0]), float(p[1])), 3.5, tuple(p - o2), gap=JOINT_GAP,
+                            leader_gap=mech.PIN_RADIUS + 0.3)
     return scale, place, items
 
 
@@ -175,13 +172,8 @@ def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
               ("a", "mu_a", motion.ram_a[0], 1.0))
     for k, (key, mu_key, y, unit) in enumerate(series):
         pbox = (x0, top - (k + 1) * panel, x1, top - k * panel - (0 if k == 0 else 0))
-        drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks)
-        items += drawn.items
-        items.append(marked_text(lab[mu_key].format(mu=number_text(drawn.y_scale * unit)),
-                                 (drawn.x_end, drawn.y_end), 3.5, "rt"))
-        if k == 0:
-            items.append(marked_text(lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
-                                     (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
+        notes = scale_notes(lab[mu_key], lab["mu_phi"] if k == 0 else None, unit)
+        items += chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks, notes=notes).items
     return items
 
 

@@ -1,0 +1,234 @@
+"""Labels placed clear of the drawing: of every line, circle, arrowhead and other label.
+
+A label on a course-design sheet names a point (a joint, a polygon's vertex, an arrow's
+head); one that a lever or an arrow runs through cannot be read. So every label is
+placed after the linework it names, against all of it: the first free spot of a
+cascade the draughtsman's own (GB/T 4458.1 leaves the place to him, not the rule):
+beside the point in the preferred direction and farther out along it, then on the other
+side, then round it; then one standard height smaller; then farther still with a thin
+leader line from the point to the label, at last anywhere in the drawing. A spot is free
+when the label's box, a little enlarged, meets no stroke and no box already taken, and
+lies within its drawing.
+
+The strokes are segments (n, 4): x0, y0, x1, y1 in paper mm, a circle as a polygon; a
+filled arrowhead's edges are strokes like any other (a box that holds a whole arrowhead
+meets its corners).
+"""
+from __future__ import annotations
+
+import math
+from typing import Iterable, Sequence
+
+import numpy as np
+
+from .dxf import THIN
+from .sheet import Box, Circle, Item, Pair, Polyline, Text, line, smaller_height
+
+CLEARANCE = 0.4            # paper mm kept between a label's box and a stroke
+CIRCLE_SIDES = 48
+LEADER_RINGS = 10          # rings beyond the last plain one tried with a leader line
+GRID_SPOTS = 2000          # then spots anywhere in the drawing, the nearest first …
+FAR_CHOICES = 12           # … of whose free ones the leader crossing fewest lines is taken
+
+
+def strokes(items: Iterable[Item]) -> np.ndarray:
+    """The lines, polylines (closed ones with their closing side) and circles of ``items``
+    as segments (n, 4); texts add none."""
+    parts = [np.zeros((0, 4))]
+    for item in items:
+        if isinstance(item, Circle):
+            t = np.linspace(0.0, 2.0 * math.pi, CIRCLE_SIDES + 1)
+            pts = np.column_stack([item.center[0] + item.radius * np.cos(t),
+                                   item.center[1] + item.radius * np.sin(t)])
+        elif isinstance(item, Polyline):
+            pts = np.asarray(item.points, dtype=float).reshape(-1, 2)
+            if item.closed or item.filled:
+                pts = np.vstack([pts, pts[:1]])
+        else:
+            continue
+        parts.append(np.column_stack([pts[:-1], pts[1:]]))
+    return np.concatenate(parts)
+
+
+def meets_strokes(box: Box, segments: np.ndarray, clearance: float = CLEARANCE) -> bool:
+    """Whether any segment comes within ``clearance`` of the axis-parallel ``box``
+    (vectorized clipping of every segment against the enlarged box)."""
+    if not len(segments):
+        return False
+    x0, y0, x1, y1 = box[0] - clearance, box[1] - clearance, box[2] + clearance, box[3] + clearance
+    s = segments
+    near = ((np.minimum(s[:, 0], s[:, 2]) <= x1) & (np.maximum(s[:, 0], s[:, 2]) >= x0)
+            & (np.minimum(s[:, 1], s[:, 3]) <= y1) & (np.maximum(s[:, 1], s[:, 3]) >= y0))
+    s = s[near]
+    if not len(s):
+        return False
+    px, py, dx, dy = s[:, 0], s[:, 1], s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]
+    lo, hi = np.zeros(len(s)), np.ones(len(s))
+    ok = np.ones(len(s), dtype=bool)
+    for p, q in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+        flat = np.abs(p) < 1e-12
+        ok &= ~(flat & (q < 0.0))
+        t = q / np.where(flat, 1.0, p)
+        lo = np.where(~flat & (p < 0.0), np.maximum(lo, t), lo)
+        hi = np.where(~flat & (p > 0.0), np.minimum(hi, t), hi)
+    return bool((ok & (lo <= hi)).any())
+
+
+def boxes_meet(a: Box, b: Box) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def is_free(box: Box, taken: Sequence[Box], segments: np.ndarray, within: Box | None) -> bool:
+    """A label's box is free: inside ``within``, clear of every taken box and stroke."""
+    if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
+                                   and within[1] <= box[1] and box[3] <= within[3]):
+        return False
+    return not any(boxes_meet(box, b) for b in taken) and not meets_strokes(box, segments)
+
+
+def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarray,
+               within: Box | None = None) -> Text | None:
+    """The first candidate whose box is free (and takes its box), or None."""
+    for label in candidates:
+        box = label.box()
+        if is_free(box, taken, segments, within):
+            taken.append(box)
+            return label
+    return None
+
+
+def ring_candidates(text: str, at: Pair, height: float, preferred: Pair, gap: float,
+                    rings: Sequence[int], align: str | None = None,
+                    subscripts: tuple[tuple[int, int], ...] = ()) -> Iterable[Text]:
+    """Spots round ``at`` on rings ``gap`` + ring·height out, in eight directions: first
+    along the preferred direction ring by ring (moved along its leader), then on the other
+    side the same way (flipped), then the six directions between, nearest ring first and
+    the preferred direction's neighbours first; each aligned away from the point unless
+    ``align`` fixes it."""
+    start = math.atan2(preferred[1], preferred[0])
+    order = ([(0, ring) for ring in rings] + [(4, ring) for ring in rings]
+             + [(turn, ring) for ring in rings for turn in (1, -1, 2, -2, 3, -3)])
+    for turn, ring in order:
+        r = gap + ring * height
+        angle = start + turn * math.pi / 4.0
+        dx, dy = math.cos(angle), math.sin(angle)
+        side = align or (("l" if dx > 0.3 else "r" if dx < -0.3 else "c")
+                         + ("b" if dy > 0.3 else "t" if dy < -0.3 else "m"))
+        yield Text(text, (at[0] + r * dx, at[1] + r * dy), height, side, subscripts=subscripts)
+
+
+def leader(at: Pair, box: Box, gap: float) -> Polyline:
+    """A thin line from ``gap`` off the point ``at`` to the nearest point of the label's
+    ``box`` (CLEARANCE short of it, so it ends at the label, not in it)."""
+    near = np.array([min(max(at[0], box[0]), box[2]), min(max(at[1], box[1]), box[3])])
+    p = np.asarray(at, dtype=float)
+    d = near - p
+    length = float(np.hypot(*d))
+    u = d / length if length > 1e-9 else np.array([1.0, 0.0])
+    return line([p + min(gap, length / 2.0) * u, near - min(CLEARANCE, length / 2.0) * u], THIN)
+
+
+def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.ndarray,
+          preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
+          rings: int = 3, align: str | None = None, subscripts: tuple[tuple[int, int], ...] = (),
+          leader_gap: float = 0.0) -> list[Item]:
+    """The label ``text`` for the point ``at``, clear of ``segments`` and ``taken``: [the
+    label], or [the label, its leader line] when only a spot farther out is free, or []
+    when none is (the drawing is too crowded for it). Takes the label's box; a leader
+    line starts ``leader_gap`` off the point (a pin's radius)."""
+    # a label with an index keeps its height: at the smallest one its index could not be smaller
+    for h in dict.fromkeys((height, height if subscripts else smaller_height(height))):
+        label = first_free(ring_candidates(text, at, h, preferred, gap, range(rings), align, subscripts),
+                           taken, segments, within)
+        if label is not None:
+            return [label]
+    h = height if subscripts else smaller_height(height)
+    spots = ring_candidates(text, at, h, preferred, gap, range(rings, rings + LEADER_RINGS), None, subscripts)
+    best = with_leader(spots, at, taken, segments, within, leader_gap)
+    if best is None and within is not None:     # anywhere in the drawing, nearest first
+        best = with_leader(grid_candidates(text, at, h, within, subscripts), at, taken, segments, within,
+                           leader_gap, enough=FAR_CHOICES)
+    if best is None:
+        return []
+    taken.append(best[0].box())
+    return list(best)
+
+
+def grid_candidates(text: str, at: Pair, height: float, within: Box,
+                    subscripts: tuple[tuple[int, int], ...] = ()) -> list[Text]:
+    """Spots all over ``within`` on a grid two text heights apart, centred on the grid's
+    points, the nearest to ``at`` first (at most GRID_SPOTS of them)."""
+    xs = np.arange(within[0] + height, within[2] - height, 2.0 * height)
+    ys = np.arange(within[1] + height, within[3] - height, 2.0 * height)
+    gx, gy = np.meshgrid(xs, ys)
+    pts = np.column_stack([gx.ravel(), gy.ravel()])
+    near = pts[np.argsort(np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]), kind="stable")[:GRID_SPOTS]]
+    return [Text(text, (float(x), float(y)), height, "cm", subscripts=subscripts) for x, y in near]
+
+
+def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,
+                within: Box | None, leader_gap: float, enough: int | None = None
+                ) -> tuple[Text, Polyline] | None:
+    """Of the free ``spots`` (the first ``enough`` of them, if given), the one whose leader
+    line from ``at`` crosses the fewest strokes (the first of equals) and no taken box, with
+    that line; None if none is free."""
+    best, found = None, 0
+    for order, label in enumerate(spots):
+        if enough is not None and found >= enough:
+            break
+        box = label.box()
+        if not is_free(box, taken, segments, within):
+            continue
+        stroke = leader(at, box, leader_gap)
+        ends = np.asarray(stroke.points).reshape(1, 4)
+        if any(meets_strokes(b, ends, 0.0) for b in taken):
+            continue
+        found += 1
+        score = (crossings(ends[0], segments), order)
+        if best is None or score < best[0]:
+            best = (score, label, stroke)
+    return None if best is None else (best[1], best[2])
+
+
+def crossings(seg: np.ndarray, segments: np.ndarray) -> int:
+    """How many of ``segments`` (n, 4) the segment ``seg`` (4,) properly crosses."""
+    if not len(segments):
+        return 0
+    p, r = seg[:2], seg[2:] - seg[:2]
+    q, s = segments[:, :2], segments[:, 2:] - segments[:, :2]
+    cross = lambda a, b: a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]    # noqa: E731
+    denom = cross(r, s)
+    ok = np.abs(denom) > 1e-12
+    d = np.where(ok, denom, 1.0)
+    t, u = cross(q - p, s) / d, cross(q - p, r) / d
+    return int(np.count_nonzero(ok & (t > 1e-9) & (t < 1.0 - 1e-9) & (u >= 0.0) & (u <= 1.0)))
+
+
+class Room:
+    """The free room of one drawing while its labels are placed: the strokes drawn so far
+    (the leader lines join them) and the boxes taken by labels, captions and the like.
+    Mutable on purpose: each label placed narrows the room for the next."""
+
+    def __init__(self, items: Iterable[Item] = (), within: Box | None = None,
+                 taken: list[Box] | None = None) -> None:
+        self.segments = strokes(items)
+        self.within = within
+        self.taken = [] if taken is None else taken
+
+    def draw(self, items: Iterable[Item]) -> None:
+        """Count ``items`` (strokes) as drawn, and any texts among them as taken."""
+        items = list(items)
+        self.segments = np.concatenate([self.segments, strokes(items)])
+        self.taken += [it.box() for it in items if isinstance(it, Text)]
+
+    def place(self, text: str, at: Pair, height: float, preferred: Pair = (1.0, 1.0),
+              gap: float = 1.5, rings: int = 3, align: str | None = None,
+              subscripts: tuple[tuple[int, int], ...] = (), leader_gap: float = 0.0) -> list[Item]:
+        """:func:`place` in this room; a leader line placed becomes a stroke of it."""
+        placed = place(text, at, height, self.taken, self.segments, preferred, gap, self.within,
+                       rings, align, subscripts, leader_gap)
+        self.segments = np.concatenate([self.segments, strokes(placed[1:])])
+        return placed
+
+    def first_free(self, candidates: Iterable[Text]) -> Text | None:
+        return first_free(candidates, self.taken, self.segments, self.within)

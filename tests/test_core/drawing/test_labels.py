@@ -1,0 +1,198 @@
+"""No label on a sheet is crossed by a line, a circle or an arrowhead (issue 32, item 3).
+
+First the check itself (tests/sheet_checks.crossed_texts) on hand-made sheets whose
+answer is plain geometry, then core.drawing.labels' placement against random strokes,
+checked by that independent check, then the sheets over designs, papers and variants."""
+import math
+
+import numpy as np
+import pytest
+from hypothesis import assume, example, given, settings
+from hypothesis import strategies as st
+
+from core.cam import CamInputs, Program, design_cam
+from core.drawing.cam_sheet import cam_sheet
+from core.drawing.charts import arrow
+from core.drawing.forces import forces_sheet
+from core.drawing.labels import place
+from core.drawing.motion import motion_sheet
+from core.drawing.sheet import Circle, Sheet, Text, line, outside_border, overlapping_texts, paper
+from core.dynamics import MassProperties, masses_for_design
+from core.errors import DesignError
+from core.geometry import synthesize
+from sheet_checks import crossed_texts
+
+A1 = paper("A1")
+DEFAULT = synthesize(100.0, 1.4, 300.0)
+LOADS = dict(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70, cut_force_N=7000, cut_height_mm=80)
+finite = dict(allow_nan=False, allow_infinity=False)
+
+
+def crossed(*items) -> list[str]:
+    return [t.text for t, _ in crossed_texts(Sheet(A1, tuple(items)))]
+
+
+# ---- the check ---------------------------------------------------------------------------
+
+def test_a_line_through_the_letters_crosses_them_one_along_the_box_does_not():
+    """"AB" at (100, 100), 5 mm high, 7.8 mm wide: a line through its middle crosses it;
+    one 0.2 mm under its baseline (in the descender's room, where a leader line ends),
+    one beyond its end and one above its capitals do not."""
+    label = Text("AB", (100.0, 100.0), 5.0, "lb")
+    assert crossed(label, line([(90.0, 102.5), (120.0, 102.5)])) == ["AB"]
+    assert crossed(label, line([(104.0, 90.0), (104.0, 110.0)])) == ["AB"]
+    assert crossed(label, line([(90.0, 99.8), (120.0, 99.8)])) == []
+    assert crossed(label, line([(108.5, 90.0), (108.5, 110.0)])) == []
+    assert crossed(label, line([(90.0, 105.3), (120.0, 105.3)])) == []
+
+
+def test_a_circle_a_closed_outline_and_a_subscript_are_checked_too():
+    label = Text("RO2", (100.0, 100.0), 3.5, "lb", subscripts=((1, 3),))
+    index_x = 100.0 + 3.5 * 0.78 + 1.0            # inside the subscript run, 2.5 mm high
+    assert crossed(label, Circle((index_x, 99.0), 0.3)) == []          # inside, touching nothing
+    assert crossed(label, Circle((index_x + 0.8, 98.9), 0.7)) == ["RO2"]    # into the index's body
+    box = line([(95.0, 101.0), (99.0, 101.0), (99.0, 90.0), (95.0, 90.0)], closed=True)
+    assert crossed(label, box) == []                                   # open: its last side is drawn
+    beside = Text("X", (93.5, 95.0), 3.5, "lb")                       # over the left side, x = 95
+    assert crossed(beside, line(box.points)) == [] and crossed(beside, box) == ["X"]
+
+
+def test_a_rotated_text_is_checked_along_its_baseline():
+    label = Text("ABCD", (100.0, 100.0), 5.0, "lb", rotation=90.0)     # upwards, left of x = 100
+    assert crossed(label, line([(90.0, 110.0), (99.0, 110.0)])) == ["ABCD"]
+    assert crossed(label, line([(101.0, 90.0), (101.0, 130.0)])) == []
+
+
+def test_an_arrowhead_over_a_small_text_covers_it():
+    """A filled head larger than the text: no side meets the glyphs, its area does."""
+    small = Text("4", (100.0, 100.0), 2.5, "cm")
+    head = line([(94.0, 94.0), (106.0, 100.0), (94.0, 106.0)], closed=True, filled=True)
+    assert crossed(small, head) == ["4"]
+    assert crossed(small, line([(94.0, 94.0), (106.0, 100.0), (94.0, 106.0)])) == []  # not filled, open
+
+
+# ---- placement -----------------------------------------------------------------------------
+
+segment = st.tuples(*[st.floats(60.0, 140.0, **finite)] * 4)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(segment, min_size=0, max_size=12), st.floats(0.0, 2 * math.pi), st.sampled_from([2.5, 3.5, 5.0]),
+       st.sampled_from(["N", "R", "a3′", "12"]))
+def test_a_placed_label_is_clear_of_every_stroke_and_its_leader_ends_at_it(segs, way, height, text):
+    strokes = [line([(x0, y0), (x1, y1)]) for x0, y0, x1, y1 in segs]
+    taken = []
+    placed = place(text, (100.0, 100.0), height, taken, np.array(segs).reshape(-1, 4),
+                   (math.cos(way), math.sin(way)), within=(40.0, 40.0, 160.0, 160.0))
+    assert len(placed) in (0, 1, 2)
+    if not placed:
+        return
+    label = placed[0]
+    assert crossed(label, *strokes) == []
+    assert taken == [label.box()]
+    assert label.height in (height, {2.5: 2.5, 3.5: 2.5, 5.0: 3.5}[height])
+    if len(placed) == 2:                       # from the point to the label's box
+        leader = np.asarray(placed[1].points)
+        x0, y0, x1, y1 = label.box()
+        assert np.allclose(leader[0], (100.0, 100.0))
+        assert x0 - 0.5 <= leader[1][0] <= x1 + 0.5 and y0 - 0.5 <= leader[1][1] <= y1 + 0.5
+        assert crossed(label, placed[1]) == []
+
+
+def test_a_label_moves_off_a_line_through_its_first_spot():
+    """A line right through the spot beside the point (up and right): the label goes elsewhere."""
+    wall = line([(100.0, 101.0), (130.0, 101.0)])
+    first = place("B", (100.0, 100.0), 3.5, [], np.zeros((0, 4)), (1.0, 0.0))[0]
+    assert crossed(first, wall) == ["B"]
+    moved = place("B", (100.0, 100.0), 3.5, [], np.asarray(wall.points).reshape(1, 4), (1.0, 0.0))[0]
+    assert crossed(moved, wall) == [] and moved.height == 3.5
+
+
+# ---- the sheets ---------------------------------------------------------------------------
+
+def test_the_default_designs_a1_sheets_have_no_crossed_label():
+    """The issue's case: lever lines through "7" and "O2", N and F_I5 under the ram, G3
+    under an arrowhead, tick marks and curves through their numbers (13, 17 and 5 texts
+    crossed on the motion, kinetostatic and cam sheets before)."""
+    masses = masses_for_design(DEFAULT, MassProperties(**LOADS))
+    cam = design_cam(CamInputs(120.0, Program(15.0, 60.0, 10.0, 60.0, "sine", "sine")), DEFAULT)
+    for sheet in (motion_sheet(DEFAULT, 40.0, A1).sheet, forces_sheet(DEFAULT, 40.0, masses, A1).sheet,
+                  cam_sheet(cam, 40.0, A1).sheet):
+        assert [(t.text, t.position) for t, _ in crossed_texts(sheet)] == []
+
+
+def assert_labels_clear(sheet):
+    """No text crossed, none on another, all inside the border (the labels' part of
+    assert_laid_out: a large K on A2/A3 has the motion sheet's guide line leave its area,
+    a separate matter)."""
+    assert outside_border(sheet) == [] and overlapping_texts(sheet) == []
+    crossed_now = [(t.text, t.position) for t, _ in crossed_texts(sheet)]
+    assert crossed_now == [], crossed_now
+
+
+def _design(crank, k, stretch, rod):
+    theta = math.pi * (k - 1) / (k + 1)
+    try:
+        return synthesize(crank, k, stretch * 2 * crank * (1 + math.sin(theta / 2)), rod_ratio=rod)
+    except DesignError:
+        assume(False)
+
+
+designs = dict(crank=st.floats(20.0, 300.0, **finite), k=st.floats(1.02, 2.95, **finite),
+               stretch=st.floats(1.05, 4.0, **finite),
+               rod=st.one_of(st.none(), st.floats(0.25, 1.0, **finite)),
+               size=st.sampled_from(["A0", "A1", "A2", "A3"]))
+
+
+@pytest.mark.slow
+@settings(max_examples=12, deadline=None)
+@example(crank=100.0, k=1.4, stretch=1.2, rod=None, size="A1", count=12)
+@example(crank=30.0, k=2.95, stretch=4.0, rod=0.3, size="A3", count=24)
+@given(count=st.integers(6, 24), **designs)
+def test_no_label_is_crossed_on_the_motion_sheet_of_any_design(crank, k, stretch, rod, size, count):
+    assert_labels_clear(motion_sheet(_design(crank, k, stretch, rod), 40.0, paper(size), count=count).sheet)
+
+
+@pytest.mark.slow
+@settings(max_examples=12, deadline=None)
+@example(crank=100.0, k=1.02, stretch=1.05, rod=None, size="A2")
+@example(crank=205.0, k=1.75, stretch=2.0, rod=None, size="A3")      # μφ under the energy curve
+@example(crank=35.5, k=2.1732, stretch=3.6722, rod=None, size="A3")  # … and for lines lower
+@given(**designs)
+def test_no_label_is_crossed_on_the_kinetostatic_sheet_of_any_design(crank, k, stretch, rod, size):
+    design = _design(crank, k, stretch, rod)
+    extra = {"rod_mass_kg": 8.0} if design.rod is not None else {}
+    assert_labels_clear(forces_sheet(design, 60.0, masses_for_design(design, MassProperties(**LOADS, **extra)),
+                                     paper(size)).sheet)
+
+
+def test_arrow_items_are_what_the_check_reads_as_an_arrowhead():
+    """The sheets' arrowheads are filled closed outlines: the check's area case is the real one."""
+    head = arrow((0.0, 0.0), (20.0, 0.0))[1]
+    assert head.filled and head.closed
+
+
+def test_place_label_keeps_its_contract_and_now_also_avoids_segments():
+    """charts.place_label (boxes only, for callers outside the sheets' rooms): clear of the
+    taken boxes, of the segments when given, and None for an optional label with no room."""
+    from core.drawing.charts import place_label
+    wall = line([(100.0, 101.0), (130.0, 101.0)])
+    taken = []
+    plain = place_label("B", (100.0, 100.0), 3.5, taken, (1.0, 0.0))
+    assert crossed(plain, wall) == ["B"] and taken == [plain.box()]
+    moved = place_label("B", (100.0, 100.0), 3.5, [], (1.0, 0.0), segments=np.asarray(wall.points).reshape(1, 4))
+    assert crossed(moved, wall) == []
+    full = [(0.0, 0.0, 200.0, 200.0)]
+    assert place_label("B", (100.0, 100.0), 3.5, full, optional=True) is None and len(full) == 1
+    forced = place_label("B", (100.0, 100.0), 3.5, full)
+    assert forced is not None and full[-1] == forced.box()
+
+
+def test_crossings_counts_the_segments_a_leader_runs_across():
+    from core.drawing.labels import crossings
+    lead = np.array([0.0, 0.0, 10.0, 0.0])
+    walls = np.array([[5.0, -1.0, 5.0, 1.0],      # across: 1
+                      [2.0, 1.0, 2.0, 3.0],       # above, not reached
+                      [0.0, 1.0, 10.0, 1.0],      # parallel
+                      [7.0, -2.0, 9.0, 2.0]])     # across: 2
+    assert crossings(lead, walls) == 2 and crossings(lead, np.zeros((0, 4))) == 0
