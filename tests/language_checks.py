@@ -22,13 +22,16 @@ ALLOWED = frozenset({
     "GB", "UTF",                                   # GB/T 4457.4, UTF-8 (names of standards)
     "dx", "dy",                                    # an offset's components (dx, dy)
 })
+# Symbols with an index, as a text layer reads them back: the index, typeset lower, runs
+# into its letter (M_m → "Mm", ΔW_max → "Wmax", J_e → "Je", a^k → "ak").
+NOTATION = frozenset({"Mm", "Wmax", "Je", "Pm", "Tm", "vslide", "ak"})
 _WORD = re.compile(r"(?<![A-Za-z])(?:[A-Za-z][a-z]+|[A-Z]{3,})(?![A-Za-z])")
 _CONTROL_OK = "\n\r\t\f"
 
 
 def english_words(text: str, allowed: frozenset[str] | set[str] = frozenset()) -> list[str]:
-    """The English words in ``text``, in order, without ``ALLOWED`` and ``allowed``."""
-    keep = ALLOWED | set(allowed)
+    """The English words in ``text``, in order, without ``ALLOWED``, ``NOTATION`` and ``allowed``."""
+    keep = ALLOWED | NOTATION | set(allowed)
     return [w for w in _WORD.findall(text) if w not in keep]
 
 

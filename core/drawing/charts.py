@@ -190,12 +190,14 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
                           DASHED))
     room = Room(items, within=box)           # the labels after all the lines, clear of them
     for k, note in enumerate(notes(x_scale, y_scale) if notes else ()):
-        # at the top under the y arrow's tip, at the right, else farther left or lines lower;
-        # a note is the program's caption in the index notation (sheet.marked: μ_s)
+        # at the top under the y arrow's tip, at the right, else farther left or lines lower,
+        # at last above the tip (a chart of a curve that is 0 throughout sits at its box's
+        # foot: nothing lies under its tip); a note is the program's caption in the index
+        # notation (sheet.marked: μ_s)
         plain, spans = marked(note)
         spots = [Text(plain, (x_end - f * (x_end - left), y_hi - 6.0 * (k + row)), height, "rt",
                       subscripts=spans)
-                 for row in range(12) for f in (0.0, 0.15, 0.3, 0.45, 0.6, 0.75)]
+                 for row in (*range(12), -1, -2, -3, -4) for f in (0.0, 0.15, 0.3, 0.45, 0.6, 0.75)]
         placed = room.first_free(spots)
         if placed is None:
             placed = spots[0]

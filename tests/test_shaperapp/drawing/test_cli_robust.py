@@ -43,7 +43,7 @@ UNDECODABLE = "x\udcffy"        # how Python holds the byte 0xFF of a non-UTF-8 
 
 
 @pytest.mark.parametrize("command, option, suffix", [
-    ("drawing", "--title", ".dxf"), ("drawing", "--school", ".dxf"), ("drawing", "--drawn-by", ".pdf"),
+    ("drawing", "--title", ".dxf"), ("drawing", "--school", ".dxf"), ("drawing", "--student", ".pdf"),
     ("drawing", "--title", ".svg"), ("report", "--title", ".html"), ("report", "--school", ".html"),
     ("report", "--student", ".pdf"),
 ])
