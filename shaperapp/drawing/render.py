@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import errno
 import math
-import re
 from dataclasses import replace
 
 import numpy as np
@@ -25,6 +24,7 @@ from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
 from core.drawing.sheet import Circle, Polyline, Sheet, Text
 
 from shaperapp.widgets.fonts import report_font
+from shaperapp.widgets.pdf_page import exact_page
 from shaperapp.widgets.pdf_text import repair_text_layer
 
 PDF_RESOLUTION = 1200          # dots per inch of the PDF's coordinates
@@ -157,27 +157,6 @@ def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     painter.end()
     buffer.close()
     return repair_text_layer(exact_page(bytes(data.data()), sheet.paper.width, sheet.paper.height))
-
-
-_BOXES = re.compile(rb"/(MediaBox|TrimBox) (\[0 0 ([\d.]+) ([\d.]+)\])")
-
-
-def exact_page(pdf: bytes, width_mm: float, height_mm: float) -> bytes:
-    """``pdf`` (one page from QPdfWriter) with its MediaBox and TrimBox the paper's exact
-    size. Why: QPageSize keeps a size in whole points, so A3 came out 1191 × 842 pt
-    (420.16 × 297.04 mm). Qt draws from the top edge down (its y flip is the rounded
-    height), so the exact box keeps that top and starts the bottom the difference higher.
-    Each box is rewritten in place at its old length (padded with spaces, which PDF allows),
-    so the file's byte offsets stay valid; a box that would not fit is left as it was."""
-    w_pt, h_pt = width_mm * 72.0 / 25.4, height_mm * 72.0 / 25.4
-
-    def exact(match: re.Match) -> bytes:
-        old, top = match.group(2), float(match.group(4))
-        new = f"[0 {top - h_pt:.4f} {w_pt:.4f} {top:g}".encode("ascii")
-        if len(new) + 1 > len(old):
-            return match.group(0)
-        return b"/" + match.group(1) + b" " + new + b" " * (len(old) - len(new) - 1) + b"]"
-    return _BOXES.sub(exact, pdf)
 
 
 def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:

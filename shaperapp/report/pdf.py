@@ -16,6 +16,7 @@ from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_
 from .pdf_base import (BOTTOM_MM, GRID, INK, LEFT_MM, PAGE_MM, RESOLUTION, SHRINK, TITLE_MM, TOP_MM,
                        Layout, Piece, translate)
 from .pdf_tables import table_pieces
+from shaperapp.widgets.pdf_page import exact_page
 from shaperapp.widgets.pdf_text import repair_text_layer
 
 
@@ -118,7 +119,7 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
 
 def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure")) -> tuple[bytes, int]:
     """The PDF of ``report`` in memory, its text layer repaired (``pdf_text``), and its
-    page count; the caller writes it (atomically, so a failed save never leaves half a report). ``parts`` leaves out
+    page count, every page exactly A4 (``pdf_page``); the caller writes it (atomically, so a failed save never leaves half a report). ``parts`` leaves out
     the pieces of other parts (and the title block and footers unless "text"): the
     tests print the figures alone to find ink outside their boxes."""
     data = QByteArray()
@@ -126,7 +127,7 @@ def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure")) -> tu
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
     pages = _paint_pdf(report, QPdfWriter(buffer), parts)
     buffer.close()
-    return repair_text_layer(bytes(data.data())), pages
+    return repair_text_layer(exact_page(bytes(data.data()), *PAGE_MM)), pages
 
 
 def page_boxes(report: Report) -> list[list[tuple[str, QRectF]]]:

@@ -100,10 +100,17 @@ def test_html_report_has_the_same_numbers_and_figures(reports, expected):
     assert "μv = " in html or "v = " in html
 
 
-def test_pdf_is_a4(reports):
-    head = reports["en.pdf"].read_bytes()
-    assert head.startswith(b"%PDF")
-    assert re.search(rb"/MediaBox \[0 0 595(\.0+)? 84[12](\.0+)?\]", head)
+def test_pdf_is_exactly_a4_on_every_page(reports):
+    """ISO 216 A4 is 210 × 297 mm; QPdfWriter alone wrote 595 × 842 pt (209.90 × 297.04 mm)."""
+    import pikepdf
+    assert reports["en.pdf"].read_bytes().startswith(b"%PDF")
+    with pikepdf.open(reports["en.pdf"]) as pdf:
+        assert len(pdf.pages) >= 8
+        for page in pdf.pages:
+            for box in (page.MediaBox, page.TrimBox):
+                x0, y0, x1, y1 = (float(v) for v in box)
+                assert (x1 - x0) * 25.4 / 72 == pytest.approx(210.0, abs=1e-3)
+                assert (y1 - y0) * 25.4 / 72 == pytest.approx(297.0, abs=1e-3)
 
 
 @pytest.mark.parametrize("words, option", [
