@@ -4312,6 +4312,46 @@
         <translation>文件不存在</translation>
     </message>
     <message>
+        <source>%1 is empty</source>
+        <translation>%1 为空</translation>
+    </message>
+    <message>
+        <source>%1 is not text</source>
+        <translation>%1 不是文本</translation>
+    </message>
+    <message>
+        <source>%1 is not a whole number</source>
+        <translation>%1 不是整数</translation>
+    </message>
+    <message>
+        <source>%1 is not a number</source>
+        <translation>%1 不是数值</translation>
+    </message>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 不是有限数值</translation>
+    </message>
+    <message>
+        <source>there is no design document</source>
+        <translation>缺少设计文档</translation>
+    </message>
+    <message>
+        <source>the design document is not UTF-8 text</source>
+        <translation>设计文档不是 UTF-8 文本</translation>
+    </message>
+    <message>
+        <source>its design document cannot be opened (%1)</source>
+        <translation>其设计文档无法打开（%1）</translation>
+    </message>
+    <message>
+        <source>crank speeds</source>
+        <translation>曲柄转速</translation>
+    </message>
+    <message>
+        <source>tags</source>
+        <translation>标签</translation>
+    </message>
+    <message>
         <source>permission denied</source>
         <translation>没有权限</translation>
     </message>

@@ -146,7 +146,8 @@ class Library:
                 tags.append(clean[0])
             if reason is not None:
                 raise LibraryError("entry", f"the design {name!r} in the library is damaged ({reason}); "
-                                   "'shaper library check' lists every damaged design", self.path)
+                                   "'shaper library check' lists every damaged design", self.path,
+                                   damage=reason)
             v = dict(zip(("id",) + _ENTRY_COLUMNS + ("text",), values))
             figs = Figures(**{f.name: v[f.name] for f in fields(Figures) if f.name != "speeds"},
                            speeds=tuple(speeds))

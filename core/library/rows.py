@@ -31,20 +31,59 @@ KINDS.update(rod_mm="number?", pressure_angle_max_deg="number?", mean_torque_N_m
              max_torque_N_m="number?", flywheel_inertia_kg_m2="number?")
 
 
-def _problem(key: str, value: Any, nullable: bool) -> str | None:
+# Why a stored row cannot be read: core's English sentence per kind ({key} the column,
+# {table} the child table, {cause} the refusal). A front end keys its own sentences on
+# the kind (shaperapp/widgets/messages.py), so it never parses this text.
+DAMAGE_TEXTS = {
+    "empty": "{key} is empty",
+    "not_text": "{key} is not text",
+    "not_integer": "{key} is not a whole number",
+    "not_number": "{key} is not a number",
+    "not_finite": "{key} is not a finite number",
+    "no_document": "there is no design document",
+    "document_not_utf8": "the design document is not UTF-8 text",
+    "document_refused": "its design document cannot be opened ({cause})",
+}
+
+
+class Damage(str):
+    """Why an entry's row cannot be read: its English sentence (so every caller that
+    prints or formats it keeps working), with the ``kind`` (a key of ``DAMAGE_TEXTS``),
+    the column ``key``, the child ``table`` (speeds, tags; "" for the entry itself) and
+    the refusal ``cause`` kept, for a front end that says it in another language."""
+    kind: str
+    key: str
+    table: str
+    cause: Exception | None
+
+    def __new__(cls, kind: str, key: str = "", table: str = "", cause: Exception | None = None) -> "Damage":
+        text = DAMAGE_TEXTS[kind].format(key=key, cause=cause)
+        self = super().__new__(cls, f"{table}: {text}" if table else text)
+        self.kind, self.key, self.table, self.cause = kind, key, table, cause
+        return self
+
+    def __reduce__(self):                       # pickles (the forked workers) as itself
+        return Damage, (self.kind, self.key, self.table, self.cause)
+
+    def in_table(self, table: str) -> "Damage":
+        """The same damage, found in the child table ``table``."""
+        return Damage(self.kind, self.key, table, self.cause)
+
+
+def _problem(key: str, value: Any, nullable: bool) -> Damage | None:
     """Why ``value`` cannot be column ``key``'s value, or None if it can."""
     kind = KINDS.get(key, "text?").rstrip("?")
     if value is None:
         return None if nullable or KINDS.get(key, "?").endswith("?") else (
-            "there is no design document" if key == "text" else f"{key} is empty")
+            Damage("no_document") if key == "text" else Damage("empty", key))
     if kind == "text":
         return None if isinstance(value, str) else (
-            "the design document is not UTF-8 text" if key == "text" else f"{key} is not text")
+            Damage("document_not_utf8") if key == "text" else Damage("not_text", key))
     if kind == "integer":
-        return None if type(value) is int else f"{key} is not a whole number"
+        return None if type(value) is int else Damage("not_integer", key)
     if type(value) not in (float, int):
-        return f"{key} is not a number"
-    return None if math.isfinite(value) else f"{key} is not a finite number"
+        return Damage("not_number", key)
+    return None if math.isfinite(value) else Damage("not_finite", key)
 
 
 @lru_cache(maxsize=32)
@@ -55,7 +94,7 @@ def _fast_types(keys: tuple[str, ...]) -> tuple[tuple[type, ...], ...]:
 
 
 def clean_row(keys: Sequence[str], row: Sequence[Any],
-              nullable: frozenset[str] = frozenset()) -> tuple[list[Any], str | None]:
+              nullable: frozenset[str] = frozenset()) -> tuple[list[Any], Damage | None]:
     """``row`` with every unusable value replaced by None, and the first reason (None: sound).
 
     Columns in ``nullable`` may be empty here whatever their kind (a speed's
@@ -153,7 +192,7 @@ def damaged_entries(conn: sqlite3.Connection, check_document: Callable[[str, str
                 try:
                     check_document(values[keys.index("name")], values[-1])
                 except Exception as exc:          # noqa: BLE001 — any refusal is the reason
-                    reason = f"its design document cannot be opened ({exc})"
+                    reason = Damage("document_refused", cause=exc)
             if reason is not None:
                 out.append((label, reason))
         return out
@@ -166,5 +205,5 @@ def _bad_children(c: sqlite3.Connection, table: str, keys: Sequence[str]) -> dic
     for row in c.execute(f"SELECT entry_id, {', '.join(keys)} FROM {table}"):
         _, reason = clean_row(keys, row[1:])
         if reason is not None and row[0] not in out:
-            out[row[0]] = f"{table}: {reason}"
+            out[row[0]] = reason.in_table(table)
     return out

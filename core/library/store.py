@@ -37,12 +37,14 @@ class LibraryError(Exception):
     ``newer``, ``foreign``, ``io``, ``busy``, ``name``, ``tag``, ``exists``, ``missing``,
     ``location`` (the path is a folder, or its folder does not exist: the path is wrong,
     not the disk), ``readonly`` (a write to a library opened read-only) or ``entry``
-    (one entry's stored values are unusable; the rest of the library is fine)."""
+    (one entry's stored values are unusable; the rest of the library is fine, and
+    ``damage`` says why, as :class:`core.library.rows.Damage`)."""
 
     def __init__(self, kind: str, message: str, path: str | os.PathLike | None = None,
-                 objects: tuple[str, ...] = ()) -> None:
+                 objects: tuple[str, ...] = (), damage: str | None = None) -> None:
         super().__init__(message)
         self.kind = kind
+        self.damage = damage
         self.path = None if path is None else Path(path)
         self.objects = objects      # a refused file's schema objects that are not ours, described
 

@@ -26,7 +26,7 @@ from core.library.backup import backup_copy
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
+from shaperapp.widgets.messages import describe, describe_damage, describe_file_error, describe_os_error
 
 
 class _Swap(QUndoCommand):
@@ -272,7 +272,8 @@ class LibraryActions(QObject):
                 .replace("%2", ", ".join(error.objects))
         if error.kind == "entry":
             return self.tr("This design is damaged and cannot be opened; the rest of the library "
-                           "can be used. (%1)").replace("%1", str(error))
+                           "can be used. (%1)").replace("%1", str(error) if error.damage is None
+                                                        else describe_damage(error.damage))
         if error.kind == "readonly":
             return self.tr("The library %1 can only be read (the file or its folder cannot be "
                            "written); nothing was changed.").replace("%1", path)

@@ -18,6 +18,7 @@ from core.library import LIST_COLUMNS, Library
 from core.library.query import QueryError
 
 from shaperapp.widgets.figure_labels import figure_label, figure_tip, format_figure
+from shaperapp.widgets.messages import describe_damage
 
 # the columns shown, in order (keys of core's list rows)
 COLUMNS = ("name", "variant", "K", "stroke_mm", "theta_deg", "crank_mm", "frame_mm", "lever_mm",
@@ -148,7 +149,7 @@ class LibraryTableModel(QAbstractTableModel):
         if row[_DAMAGED] is not None:               # a damaged entry: marked, its reason on hover
             if role == Qt.ItemDataRole.ToolTipRole:
                 return self.tr("This design is damaged: %1. 'shaper library check' lists every "
-                               "damaged design.").replace("%1", row[_DAMAGED])
+                               "damaged design.").replace("%1", describe_damage(row[_DAMAGED]))
             if role == Qt.ItemDataRole.ForegroundRole:
                 return QColor("#b00020")
             if role == Qt.ItemDataRole.DisplayRole and key == "name":

@@ -313,3 +313,36 @@ def describe_file_error(error: FileFormatError) -> str:
     # one pass, so a value holding "%2" is never substituted again
     return re.sub(r"%(\d)", lambda m: name if m.group(1) == "1" else
                   (values[int(m.group(1)) - 2] if int(m.group(1)) - 2 < len(values) else ""), template)
+
+
+def describe_damage(damage: str) -> str:
+    """Why a library entry cannot be read (``core.library.rows.Damage``), in the current
+    UI language; a plain text (from an older caller) is kept as it is."""
+    kind = getattr(damage, "kind", None)
+    templates = {    # core.library.rows.DAMAGE_TEXTS, listed literally for pyside6-lupdate
+        "empty": QCoreApplication.translate("messages", "%1 is empty"),
+        "not_text": QCoreApplication.translate("messages", "%1 is not text"),
+        "not_integer": QCoreApplication.translate("messages", "%1 is not a whole number"),
+        "not_number": QCoreApplication.translate("messages", "%1 is not a number"),
+        "not_finite": QCoreApplication.translate("messages", "%1 is not a finite number"),
+        "no_document": QCoreApplication.translate("messages", "there is no design document"),
+        "document_not_utf8": QCoreApplication.translate("messages", "the design document is not UTF-8 text"),
+        "document_refused": QCoreApplication.translate("messages", "its design document cannot be opened (%1)"),
+    }
+    if kind not in templates:
+        return str(damage)
+    cause = damage.cause
+    if kind == "document_refused":
+        value = describe_file_error(cause) if isinstance(cause, FileFormatError) else \
+            failure_reason(cause) if isinstance(cause, Exception) else ""
+    else:
+        value = damage.key
+    text = templates[kind].replace("%1", value, 1)
+    if damage.table:
+        tables = {"speeds": QCoreApplication.translate("messages", "crank speeds"),
+                  "tags": QCoreApplication.translate("messages", "tags")}
+        table = tables.get(damage.table, damage.table)
+        text = re.sub(r"%([12])", lambda m: table if m.group(1) == "1" else text,
+                      QCoreApplication.translate("messages", "%1: %2"))
+    return text
+

@@ -155,3 +155,44 @@ def test_library_with_a_trigger_is_refused_in_the_pane(qtbot, model, tmp_path, m
     assert widget.actions.library is None
     assert len(messages) == 1 and "trigger t on entries" in messages[0] and "unchanged" in messages[0]
     assert hashlib.sha256(path.read_bytes()).hexdigest() == before
+
+
+@pytest.mark.parametrize("case", ["text in a REAL column", "infinite figure", "blob in a speed",
+                                  "blob as notes", "no document"])
+def test_why_a_row_is_damaged_is_said_in_chinese(qtbot, tmp_path, monkeypatch, case):
+    """Issue 32 item 4: the reason on hover and in the refusal was core's English
+    ("K is not a number", "speeds: a_max_m_s2 is not a number") in the Chinese pane. Only
+    the column's key (an identifier of the file format, as in JSON) stays as it is."""
+    from PySide6.QtCore import QSettings, Qt
+    from PySide6.QtWidgets import QMessageBox
+    from shaperapp.library.pane import LibraryPane
+    from shaperapp.library.table import COLUMNS
+    from shaperapp.design.model import DesignModel
+    from shaperapp.widgets import i18n
+    from language_checks import assert_chinese_text
+    monkeypatch.setenv("SHAPER_LIBRARY", str(tmp_path / "default.sqlite"))
+    monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: None)
+    path = tmp_path / "lib.sqlite"
+    make_library(path)
+    sql = "DELETE FROM documents WHERE entry_id = (SELECT id FROM entries WHERE name = 'a')" \
+        if case == "no document" else CASES[case]
+    with sqlite3.connect(path) as conn:
+        conn.execute(sql)
+    assert i18n.set_language("zh_CN")
+    try:
+        pane = LibraryPane(DesignModel(), settings=QSettings(str(tmp_path / "s.ini"),
+                                                             QSettings.Format.IniFormat))
+        qtbot.addWidget(pane)
+        assert pane.open_library(str(path))
+        table = pane.table_model
+        rows = [r for r in range(table.rowCount()) if table.damaged_at(r)]   # the list reads no document
+        tips = [table.data(table.index(r, COLUMNS.index("K")), Qt.ItemDataRole.ToolTipRole) for r in rows]
+        failures = []
+        pane.actions.failed.connect(failures.append)
+        assert not pane.actions.open_in_model("a")
+    finally:
+        i18n.set_language("en")
+    keys = {"K", "a_max_m_s2", "notes", "shaper", "library", "check"}   # the key and the command named
+    assert len(tips) == (case != "no document")
+    for text in (*tips, failures[0]):
+        assert_chinese_text(text, keys, what=case)
