@@ -169,7 +169,8 @@ def check_folder(folder: str, paths: list[str]) -> None:
     if home is where and not where.is_dir():
         raise CourseError("--output", f"cannot write into {folder}: it is not a folder")
     if home is not where and not home.is_dir():
-        raise CourseError("--output", f"cannot make {folder}: {home} is not a folder")
+        why = f"{home} is not a folder" if _status(folder, home) is not None else f"there is no folder {home}"
+        raise CourseError("--output", f"cannot make {folder}: {why}")
     if not os.access(home, os.W_OK | os.X_OK):
         raise CourseError("--output", f"cannot write into {home}: permission denied")
     for path in paths:
