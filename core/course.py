@@ -62,12 +62,14 @@ PARTS: tuple[Part, ...] = (
 class CourseError(ValueError):
     """The course design cannot be written; nothing was. ``option`` is what the message
     names ("--design", "--output"); ``missing`` the design-file keys that are not there,
-    each with the titles of the files that need it (for the GUI's own words)."""
+    each with the titles of the files that need it, and ``cause`` the DesignError of a part
+    that cannot be made (both for the GUI's own words)."""
 
     def __init__(self, option: str, message: str,
-                 missing: tuple[tuple[str, tuple[str, ...]], ...] = ()) -> None:
+                 missing: tuple[tuple[str, tuple[str, ...]], ...] = (),
+                 cause: DesignError | None = None) -> None:
         super().__init__(f"{option}: {message}")
-        self.option, self.reason, self.missing = option, message, missing
+        self.option, self.reason, self.missing, self.cause = option, message, missing, cause
 
 
 @dataclass(frozen=True)
@@ -155,7 +157,7 @@ def plan_course(doc: Mapping[str, Any], keys: Collection[str], name: str, folder
             try:
                 drawn[part.drawn] = part.reader(doc[part.drawn], design, idle)
             except DesignError as exc:
-                raise CourseError("--design", f"{name}: {part.title}: {exc}") from None
+                raise CourseError("--design", f"{name}: {part.title}: {exc}", cause=exc) from None
     files = tuple(CourseFile(part, os.path.join(folder, file)) for part, file in file_names(parts, dxf))
     check_folder(folder, [f.path for f in files])
     return Course(spec, tuple(float(r) for r in doc["rpm"]), masses, files, folder, drawn, dict(doc))

@@ -30,14 +30,15 @@ from shaperapp.widgets.messages import describe_os_error, failure_reason
 from .write import Covering, write_course
 
 
-def tr(text: str) -> str:
-    return QCoreApplication.translate("CourseExport", text)
+translate = QCoreApplication.translate
 
 
 def key_names() -> dict[str, str]:
     """The design file's parts as the refusal names them, in the UI's language."""
-    return {"rpm": tr("the speeds"), "forces": tr("the loads"), "cam": tr("the feed cam"),
-            "gear": tr("the gear pair")}
+    return {"rpm": translate("CourseExport", "the speeds"),
+            "forces": translate("CourseExport", "the loads"),
+            "cam": translate("CourseExport", "the feed cam"),
+            "gear": translate("CourseExport", "the gear pair")}
 
 
 def covering(model: DesignModel, settings: QSettings | None, paper: str = "A1") -> Covering:
@@ -51,19 +52,24 @@ def covering(model: DesignModel, settings: QSettings | None, paper: str = "A1") 
 def plan(model: DesignModel, folder: str):
     """The checked course design of the model (CourseError as ``shaper course`` refuses)."""
     doc = design_document(model.valid_spec, model.rpms, model.step_deg, saved_parts(model))
-    name = os.path.basename(model.path) if model.path else tr("the design")
+    name = os.path.basename(model.path) if model.path else translate("CourseExport", "the design")
     read = parse_design(json.dumps(doc).encode("utf-8"), name)
     return plan_course(read, frozenset(doc), name, folder)
 
 
 def refusal(exc: CourseError) -> str:
+    """Why nothing was written, in the UI's language."""
     if exc.missing:
-        names = key_names()
-        return tr("The design lacks what the course design needs: %1. Nothing was written.").replace(
-            "%1", ", ".join(names.get(key, key) for key, _ in exc.missing))
+        names = ", ".join(key_names().get(key, key) for key, _ in exc.missing)
+        text = translate("CourseExport", "The design lacks what the course design needs: %1. "
+                         "Nothing was written.")
+        return text.replace("%1", names)
     if exc.option == "--output":
-        return tr("Nothing can be written into this folder; choose another. Nothing was written.")
-    return tr("The course design cannot be made: %1. Nothing was written.").replace("%1", exc.reason)
+        return translate("CourseExport", "Nothing can be written into this folder; choose another. "
+                         "Nothing was written.")
+    reason = failure_reason(exc.cause) if exc.cause is not None else exc.reason
+    return translate("CourseExport", "The course design cannot be made: %1. Nothing was written."
+                     ).replace("%1", reason)
 
 
 def export_course(model: DesignModel, folder: str, language: str, parent: QWidget | None = None,
@@ -75,8 +81,9 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
     except CourseError as exc:
         return [], refusal(exc)
     total = len(course.files)
-    progress = QProgressDialog(tr("Writing the course design…"), tr("Cancel"), 0, total, parent)
-    progress.setWindowTitle(tr("Export course design"))
+    progress = QProgressDialog(translate("CourseExport", "Writing the course design…"),
+                               translate("CourseExport", "Cancel"), 0, total, parent)
+    progress.setWindowTitle(translate("CourseExport", "Export course design"))
     progress.setWindowModality(Qt.WindowModality.WindowModal)
     progress.setMinimumDuration(0)
     progress.setValue(0)
@@ -84,40 +91,42 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
     files = write_course(course, language, covering(model, settings))
     try:
         for number, file in enumerate(course.files, start=1):
-            progress.setLabelText(tr("Writing %1 (%2 of %3)…").replace(
+            progress.setLabelText(translate("CourseExport", "Writing %1 (%2 of %3)…").replace(
                 "%1", os.path.basename(file.path)).replace("%2", str(number)).replace("%3", str(total)))
             QApplication.processEvents()
             if progress.wasCanceled():
-                return written, tr("Cancelled: %1 of %2 files written, each complete.").replace(
-                    "%1", str(len(written))).replace("%2", str(total))
+                text = translate("CourseExport", "Cancelled: %1 of %2 files written, each complete.")
+                return written, text.replace("%1", str(len(written))).replace("%2", str(total))
             written.append(next(files).path)
             progress.setValue(number)
         return written, ""
     except MissingFontError:
-        failure = tr("No font with Chinese characters is installed: install one (on "
-                     "Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
+        failure = translate("CourseExport", "No font with Chinese characters is installed: install one "
+                            "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
     except OSError as exc:
-        failure = tr("Could not write %1: %2").replace("%1", exc.filename or folder).replace(
-            "%2", describe_os_error(exc))
+        failure = translate("CourseExport", "Could not write %1: %2").replace(
+            "%1", exc.filename or folder).replace("%2", describe_os_error(exc))
     except Exception as exc:            # never to sys.excepthook: the reason, in a message
-        failure = tr("The course design cannot be made: %1.").replace("%1", failure_reason(exc))
+        failure = translate("CourseExport", "The course design cannot be made: %1.").replace(
+            "%1", failure_reason(exc))
     finally:
         files.close()
         progress.close()
     if written:
-        failure += " " + tr("The %1 files written before it are complete.").replace("%1", str(len(written)))
+        failure += " " + translate("CourseExport", "The %1 files written before it are complete.").replace(
+            "%1", str(len(written)))
     return written, failure
 
 
 def export_course_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
                          settings: QSettings | None = None) -> str:
     """Ask for a folder and write the course design into it; returns the folder or ''."""
-    folder = QFileDialog.getExistingDirectory(parent, tr("Export course design: choose a folder"),
-                                              start_dir)
+    folder = QFileDialog.getExistingDirectory(
+        parent, translate("CourseExport", "Export course design: choose a folder"), start_dir)
     if not folder:
         return ""
-    written, failure = export_course(model, folder, language, parent, settings)
+    _, failure = export_course(model, folder, language, parent, settings)
     if failure:
-        QMessageBox.warning(parent, tr("Export course design"), failure)
+        QMessageBox.warning(parent, translate("CourseExport", "Export course design"), failure)
         return ""
     return folder
