@@ -171,8 +171,12 @@ def test_a_run_killed_part_way_leaves_only_complete_files(after, tmp_path):
 @needs_poppler
 def test_chinese_files_have_no_english_word(tmp_path):
     out = tmp_path / "课程设计"
-    status, _, err = course("--design", design_file(tmp_path, name="设计.shaper.json"), "-o", out,
-                            "--lang", "zh", "--student", "张三", "--school", "机械工程学院")
+    try:
+        status, _, err = course("--design", design_file(tmp_path, name="设计.shaper.json"), "-o", out,
+                                "--lang", "zh", "--student", "张三", "--school", "机械工程学院")
+    finally:
+        from shaperapp.widgets import i18n
+        i18n.set_language("en")         # the in-process run set the process's language
     assert status == 0, err
     for name in NAMES:
         assert_chinese_text(pdf_text(out / name), FORMULAS, what=name)

@@ -25,6 +25,7 @@ def answers(monkeypatch, tmp_path):
 
 def test_file_menu_has_export_course_design_in_both_languages(window, qtbot):
     assert window.act_course in window.menu_file.actions()
+    window.set_language("en")
     assert window.act_course.text() == "Export course desi&gn…"
     window.set_language("zh_CN")
     qtbot.waitUntil(lambda: window.act_course.text() != "Export course desi&gn…")
