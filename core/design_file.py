@@ -55,7 +55,7 @@ def load_design(path: str | os.PathLike) -> dict[str, Any]:
     foreign or invalid; the caller's state is never touched before it returns.
     """
     name = os.fsdecode(path)
-    return parse_design(_read_limited(name), name)
+    return parse_design(read_limited(name), name)
 
 
 def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, Any]:
@@ -97,7 +97,7 @@ def _shorten(text: str, limit: int = 160) -> str:
 
 
 # ---- reading ------------------------------------------------------------------
-def _read_limited(name: str) -> bytes:
+def read_limited(name: str) -> bytes:
     """At most MAX_FILE_BYTES of a regular file; special files are refused before opening."""
     try:
         info = os.stat(name)

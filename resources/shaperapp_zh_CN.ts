@@ -593,6 +593,81 @@
     </message>
 </context>
 <context>
+    <name>CourseExport</name>
+    <message>
+        <source>the speeds</source>
+        <translation>曲柄转速</translation>
+    </message>
+    <message>
+        <source>the loads</source>
+        <translation>载荷</translation>
+    </message>
+    <message>
+        <source>the feed cam</source>
+        <translation>进给凸轮</translation>
+    </message>
+    <message>
+        <source>the gear pair</source>
+        <translation>齿轮副</translation>
+    </message>
+    <message>
+        <source>the design</source>
+        <translation>该设计</translation>
+    </message>
+    <message>
+        <source>The design lacks what the course design needs: %1. Nothing was written.</source>
+        <translation>设计缺少课程设计所需的内容：%1。未写入任何文件。</translation>
+    </message>
+    <message>
+        <source>Nothing can be written into this folder; choose another. Nothing was written.</source>
+        <translation>无法写入此文件夹，请另选一个。未写入任何文件。</translation>
+    </message>
+    <message>
+        <source>The course design cannot be made: %1. Nothing was written.</source>
+        <translation>无法生成课程设计：%1。未写入任何文件。</translation>
+    </message>
+    <message>
+        <source>Writing the course design…</source>
+        <translation>正在写入课程设计…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Export course design</source>
+        <translation>导出课程设计</translation>
+    </message>
+    <message>
+        <source>Writing %1 (%2 of %3)…</source>
+        <translation>正在写入 %1（第 %2 个，共 %3 个）…</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1 of %2 files written, each complete.</source>
+        <translation>已取消：%2 个文件中已写入 %1 个，均完整。</translation>
+    </message>
+    <message>
+        <source>No font with Chinese characters is installed: install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>
+        <translation>未安装含中文字形的字体：请安装一个（Debian/Ubuntu 上为 fonts-noto-cjk），或把语言切换为英文。</translation>
+    </message>
+    <message>
+        <source>Could not write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>The course design cannot be made: %1.</source>
+        <translation>无法生成课程设计：%1。</translation>
+    </message>
+    <message>
+        <source>The %1 files written before it are complete.</source>
+        <translation>此前写入的 %1 个文件均完整。</translation>
+    </message>
+    <message>
+        <source>Export course design: choose a folder</source>
+        <translation>导出课程设计：选择文件夹</translation>
+    </message>
+</context>
+<context>
     <name>DesignForm</name>
     <message>
         <source>Input</source>
@@ -2325,6 +2400,14 @@
     <message>
         <source>The course design's drawing sheet on A0–A3 paper, with a preview</source>
         <translation>课程设计图纸，A0–A3 图幅，带预览</translation>
+    </message>
+    <message>
+        <source>Export course desi&amp;gn…</source>
+        <translation>导出课程设计(&amp;G)…</translation>
+    </message>
+    <message>
+        <source>The report and every drawing sheet into one folder, as shaper course writes them</source>
+        <translation>将设计说明书和全部图纸写入一个文件夹，与 shaper course 命令写出的相同</translation>
     </message>
     <message>
         <source>&amp;Quit</source>

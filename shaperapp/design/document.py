@@ -60,8 +60,7 @@ class Document(QObject):
         design, and the unsaved mark stays (what is typed is not what was saved)."""
         model = self._model
         try:
-            save_design(path, model.valid_spec, model.rpms, model.step_deg,
-                        extra={"forces": masses_to_dict(model.masses), **model.saved_parts()})
+            save_design(path, model.valid_spec, model.rpms, model.step_deg, extra=saved_parts(model))
         except OSError as exc:
             self.failed.emit(self.tr("Could not save %1: %2").replace("%1", path)
                              .replace("%2", describe_os_error(exc)))
@@ -228,3 +227,9 @@ class Document(QObject):
         start = os.path.join(self.last_dir(), name)
         path = file_dialogs.save_file_name(parent, title, start, self.tr("CSV files (*.csv)"))
         return path
+
+
+def saved_parts(model: DesignModel) -> dict:
+    """What a design file holds beside the linkage, the speeds and the step: the loads and
+    every registered part (the cam …), as Save writes them and Export course design… reads."""
+    return {"forces": masses_to_dict(model.masses), **model.saved_parts()}

@@ -163,6 +163,7 @@ class MainWindow(QMainWindow):
         self.act_scheme_dxf = self._action(lambda: d.export_scheme_dxf_dialog(self))
         self.act_report = self._action(self._export_report, "Ctrl+R")
         self.act_sheet = self._action(self._export_sheet)
+        self.act_course = self._action(self._export_course)
         # Only tabs that draw plots can export them as an image, or fit them.
         self.tabs.currentChanged.connect(self._on_tab)
         self.act_quit = self._action(self.close, keys.Quit)
@@ -248,6 +249,8 @@ class MainWindow(QMainWindow):
              self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
             (self.act_sheet, self.tr("Export &drawing sheet (PDF/SVG/DXF)…"),
              self.tr("The course design's drawing sheet on A0–A3 paper, with a preview")),
+            (self.act_course, self.tr("Export course desi&gn…"),
+             self.tr("The report and every drawing sheet into one folder, as shaper course writes them")),
             (self.act_quit, self.tr("&Quit"), ""),
             (self.act_goto, self.tr("&Go to Crank Angle…"), self.tr("Move the mechanism to a crank angle you type")),
             (self.act_fit_plots, self.tr("Fit &plots"), self.tr("Show the whole cycle in the plots of the current tab")),
@@ -384,6 +387,14 @@ class MainWindow(QMainWindow):
                                    self.settings, cam=self.cam_model)
         if path:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
+
+    def _export_course(self) -> None:
+        if not self.document.confirm_valid(self, saving=False):
+            return
+        from shaperapp.course.dialog import export_course_dialog   # load on demand
+        folder = export_course_dialog(self.model, self, self._language, self.document.last_dir(), self.settings)
+        if folder:
+            self.statusBar().showMessage(self.tr("Saved %1").replace("%1", folder), 4000)
 
     def _about(self) -> None:
         QMessageBox.about(self, self.tr("About Shaper Designer"), about_text())

@@ -21,7 +21,8 @@ PAGES = [README, *sorted((ROOT / "docs").glob("*.md"))]
 CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep", "cam")
 # Every subcommand of ``shaper`` (core/cli's CORE_COMMANDS plus the Qt ones, report and drawing).
 SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library", "report",
-               "drawing")
+               "drawing", "course")
+DESIGN_FILE = ROOT / "tests" / "data" / "my.shaper.json"   # the GUI's default design, saved: what course reads
 
 
 def console_examples(text: str) -> list[tuple[str, str]]:
@@ -78,6 +79,7 @@ def test_docs_example_output(page, command, expected, tmp_path):
 @pytest.mark.parametrize("command", TABLE, ids=[c.split()[1] for c in TABLE])
 def test_readme_table_example_runs(command, tmp_path):
     env = {**os.environ, "SHAPER_LIBRARY": str(tmp_path / "library.sqlite")}
+    shutil.copy(DESIGN_FILE, tmp_path / DESIGN_FILE.name)     # a design file as a user has one
     run = subprocess.run(["bash", "-c", command], capture_output=True, text=True, cwd=tmp_path,
                          timeout=120, env=env)
     assert run.returncode == 0 and run.stderr == "", run.stderr

@@ -1,0 +1,73 @@
+"""``shaper course``: the report and every drawing sheet of one design file, into a folder.
+
+Registered through the ``shaper.commands`` entry point like ``report`` and ``drawing``
+(it paints with Qt). Everything that can refuse the job (the file's parts, the cam, the
+folder, the names, the options) is checked before Qt starts and before the first file is
+written: a refusal is one line, exit status 2, and nothing written.
+"""
+from __future__ import annotations
+
+import argparse
+import time
+
+from core.cli.common import UsageError
+from core.cli.output import OutputError
+from core.course import PARTS, CourseError, file_names, plan_course, read_document
+from core.drawing.sheet import PAPERS
+
+from shaperapp.widgets.command_line import (add_cover_options, cover_from_args, design_name,
+                                            start_qt)
+
+HELP = "write the whole course design: the report and every drawing sheet, from one design file"
+_NAMES = ", ".join(name for _, name in file_names(PARTS, dxf=False))
+DESCRIPTION = ("The course design (课程设计) of one design file in one folder, with numbered names: "
+               f"{_NAMES} (and each sheet's .dxf beside its PDF with --dxf). The design file "
+               "must hold what every file needs: the linkage, the speeds (\"rpm\"), the loads "
+               "(\"forces\") and the feed cam (\"cam\"); without one the command names it and "
+               "writes nothing. The folder is made if it is not there (its parent must be); files "
+               "of the same names in it are replaced, each atomically, other files are left "
+               "alone. Prints each file's path once it is complete. The report is A4, the sheets "
+               "on --sheet paper; Chinese needs a font with Chinese glyphs (fonts-noto-cjk).")
+EXAMPLES = ("shaper course --design my.shaper.json -o course",
+            "shaper course --design my.shaper.json --lang zh --sheet A2 --dxf --student 张三 "
+            "--student-number 2021001 --class 机械2101 --school 机械工程学院 --supervisor 李四 "
+            "-o 课程设计")
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--design", required=True, metavar="FILE",
+                        help="the design file (saved by the GUI) with the linkage, speeds, loads and cam")
+    parser.add_argument("-o", "--output", required=True, metavar="DIR",
+                        help="the folder to write into (made if missing; same-named files are replaced)")
+    parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
+                        help="language of every file: en, or zh (= zh_CN) (default en)")
+    parser.add_argument("--sheet", default="A1", metavar="SIZE",
+                        help=f"paper of the drawing sheets, landscape: {', '.join(PAPERS)} (default A1)")
+    parser.add_argument("--dxf", action="store_true", help="write each sheet as DXF too, beside its PDF")
+    block = parser.add_argument_group("cover and title blocks (blank when not given, to fill in by hand)")
+    block.add_argument("--title", metavar="TEXT", help="design name (default: the design file's name)")
+    add_cover_options(block, "the date (default: today, YYYY-MM-DD)")
+
+
+def run(args: argparse.Namespace) -> int:
+    from .write import Covering
+    paper = args.sheet.upper()
+    if paper not in PAPERS:
+        raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
+    cover, date = cover_from_args(args)
+    covering = Covering(paper, design_name(args), date, cover)
+    doc, keys = read_document(args.design)          # FileFormatError: "--design: …"
+    try:
+        course = plan_course(doc, keys, args.design, args.output, dxf=args.dxf)
+    except CourseError as exc:
+        raise (UsageError if exc.option == "--design" else OutputError)(str(exc)) from None
+    start = time.perf_counter()
+    language = start_qt(args.lang)
+    from .write import write_course
+    try:
+        for file in write_course(course, language, covering):
+            print(file.path, flush=True)
+    except OSError as exc:      # a WriteError: names the file and a plain reason
+        raise OutputError(f"--output: {exc}") from None
+    print(f"{len(course.files)} files in {time.perf_counter() - start:.1f} s")
+    return 0

@@ -1,0 +1,132 @@
+"""File › Export course design…: a folder, then the report and every sheet written into it
+with a progress bar, by the same code as ``shaper course``.
+
+The design is the one on screen as Save would write it (``document.saved_parts``), read
+back by the design file's own reader, so the GUI and the command make the same files
+and refuse the same things, before anything is written. The cover fields are the report
+dialog's (``COVER_SETTINGS``). Cancel stops between two files: the files written so far
+stay, each complete, and the message says how many; the file being written when Cancel
+is pressed is finished first (a file is never left half-written).
+"""
+from __future__ import annotations
+
+import datetime
+import json
+import os
+
+from PySide6.QtCore import QCoreApplication, QSettings, Qt
+from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox, QProgressDialog, QWidget
+
+from core.course import CourseError, plan_course
+from core.design_file import parse_design
+from core.io import design_document
+
+from shaperapp.design.document import saved_parts
+from shaperapp.design.model import DesignModel
+from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, design_file_name, plain_text
+from shaperapp.widgets.fonts import MissingFontError
+from shaperapp.widgets.messages import describe_os_error, failure_reason
+
+from .write import Covering, write_course
+
+
+translate = QCoreApplication.translate
+
+
+def key_names() -> dict[str, str]:
+    """The design file's parts as the refusal names them, in the UI's language."""
+    return {"rpm": translate("CourseExport", "the speeds"),
+            "forces": translate("CourseExport", "the loads"),
+            "cam": translate("CourseExport", "the feed cam"),
+            "gear": translate("CourseExport", "the gear pair")}
+
+
+def covering(model: DesignModel, settings: QSettings | None, paper: str = "A1") -> Covering:
+    """The design's name (its file's), today's date and the report dialog's cover fields."""
+    cover = {key: plain_text(str(settings.value(COVER_SETTINGS + key, "") or "")) if settings else ""
+             for key in COVER_FIELDS}
+    name = design_file_name(model.path) if model.path else ""
+    return Covering(paper, name, datetime.date.today().isoformat(), cover)
+
+
+def plan(model: DesignModel, folder: str):
+    """The checked course design of the model (CourseError as ``shaper course`` refuses)."""
+    doc = design_document(model.valid_spec, model.rpms, model.step_deg, saved_parts(model))
+    name = os.path.basename(model.path) if model.path else translate("CourseExport", "the design")
+    read = parse_design(json.dumps(doc).encode("utf-8"), name)
+    return plan_course(read, frozenset(doc), name, folder)
+
+
+def refusal(exc: CourseError) -> str:
+    """Why nothing was written, in the UI's language."""
+    if exc.missing:
+        names = ", ".join(key_names().get(key, key) for key, _ in exc.missing)
+        text = translate("CourseExport", "The design lacks what the course design needs: %1. "
+                         "Nothing was written.")
+        return text.replace("%1", names)
+    if exc.option == "--output":
+        return translate("CourseExport", "Nothing can be written into this folder; choose another. "
+                         "Nothing was written.")
+    reason = failure_reason(exc.cause) if exc.cause is not None else exc.reason
+    return translate("CourseExport", "The course design cannot be made: %1. Nothing was written."
+                     ).replace("%1", reason)
+
+
+def export_course(model: DesignModel, folder: str, language: str, parent: QWidget | None = None,
+                  settings: QSettings | None = None) -> tuple[list[str], str]:
+    """Write the course design into ``folder`` with a progress dialog; returns the paths
+    written and '' or the failure (in the UI's language) that stopped the run."""
+    try:
+        course = plan(model, folder)
+    except CourseError as exc:
+        return [], refusal(exc)
+    total = len(course.files)
+    progress = QProgressDialog(translate("CourseExport", "Writing the course design…"),
+                               translate("CourseExport", "Cancel"), 0, total, parent)
+    progress.setWindowTitle(translate("CourseExport", "Export course design"))
+    progress.setWindowModality(Qt.WindowModality.WindowModal)
+    progress.setMinimumDuration(0)
+    progress.setValue(0)
+    written: list[str] = []
+    files = write_course(course, language, covering(model, settings))
+    try:
+        for number, file in enumerate(course.files, start=1):
+            progress.setLabelText(translate("CourseExport", "Writing %1 (%2 of %3)…").replace(
+                "%1", os.path.basename(file.path)).replace("%2", str(number)).replace("%3", str(total)))
+            QApplication.processEvents()
+            if progress.wasCanceled():
+                text = translate("CourseExport", "Cancelled: %1 of %2 files written, each complete.")
+                return written, text.replace("%1", str(len(written))).replace("%2", str(total))
+            written.append(next(files).path)
+            progress.setValue(number)
+        return written, ""
+    except MissingFontError:
+        failure = translate("CourseExport", "No font with Chinese characters is installed: install one "
+                            "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
+    except OSError as exc:
+        failure = translate("CourseExport", "Could not write %1: %2").replace(
+            "%1", exc.filename or folder).replace("%2", describe_os_error(exc))
+    except Exception as exc:            # never to sys.excepthook: the reason, in a message
+        failure = translate("CourseExport", "The course design cannot be made: %1.").replace(
+            "%1", failure_reason(exc))
+    finally:
+        files.close()
+        progress.close()
+    if written:
+        failure += " " + translate("CourseExport", "The %1 files written before it are complete.").replace(
+            "%1", str(len(written)))
+    return written, failure
+
+
+def export_course_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
+                         settings: QSettings | None = None) -> str:
+    """Ask for a folder and write the course design into it; returns the folder or ''."""
+    folder = QFileDialog.getExistingDirectory(
+        parent, translate("CourseExport", "Export course design: choose a folder"), start_dir)
+    if not folder:
+        return ""
+    _, failure = export_course(model, folder, language, parent, settings)
+    if failure:
+        QMessageBox.warning(parent, translate("CourseExport", "Export course design"), failure)
+        return ""
+    return folder

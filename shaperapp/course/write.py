@@ -1,0 +1,68 @@
+"""Paint and write the files of a checked course design (``core.course``), one by one.
+
+Shared by ``shaper course`` and File › Export course design…, so both write the same
+files. Each file is written atomically (``core.atomic``): at any moment every file in
+the folder is a complete old or a complete new one. A sheet is built once for its PDF
+and its DXF.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Iterator
+
+from core.cam.file import cam_from_dict
+from core.course import REPORT, Course, CourseFile, make_folder
+from core.positions import DEFAULT_COUNT
+
+from shaperapp.drawing.content import SheetChoice, build_sheet
+from shaperapp.drawing.render import write_sheet
+from shaperapp.report.blocks import Cover
+from shaperapp.report.command import write_report
+from shaperapp.report.content import Options, build
+
+
+@dataclass(frozen=True)
+class Covering:
+    """What the user adds to every file: the paper of the sheets, the design's name, the
+    date and the cover fields (student, number, group, school, supervisor)."""
+
+    paper: str = "A1"
+    title: str = ""
+    date: str = ""
+    cover: dict[str, str] = field(default_factory=dict)
+
+
+def write_course(course: Course, language: str, covering: Covering) -> Iterator[CourseFile]:
+    """Write the files in order, yielding each one once it is complete. The folder is made
+    first if it is not there. OSError (a WriteError naming the file) stops the run; the
+    files already yielded stay complete."""
+    make_folder(course.folder)
+    sheets: dict[str, object] = {}
+    for file in course.files:
+        part = file.part
+        if part.content == REPORT:
+            write_report(_report(course, language, covering), file.path)
+        else:
+            if part.stem not in sheets:
+                sheets[part.stem] = _sheet(course, part, covering)
+            write_sheet(sheets[part.stem], file.path, language, covering.title)
+        yield file
+
+
+def _report(course: Course, language: str, covering: Covering):
+    cam = course.document.get("cam")
+    options = Options(DEFAULT_COUNT, None, (), Cover(**covering.cover),
+                      cam_from_dict(cam) if cam is not None else None)
+    return build(course.spec, list(course.rpms), course.masses, covering.title, covering.date,
+                 language, options)
+
+
+def _sheet(course: Course, part, covering: Covering):
+    cover = covering.cover
+    choice = SheetChoice(part.content, covering.paper, DEFAULT_COUNT, None, covering.title,
+                         cover.get("student", ""), covering.date, cover.get("school", ""),
+                         number=cover.get("number", ""), group=cover.get("group", ""),
+                         supervisor=cover.get("supervisor", ""))
+    if part.drawn:
+        choice = replace(choice, **{part.drawn: course.drawn[part.drawn]})
+    return build_sheet(course.spec, course.rpms, course.masses, choice)

@@ -1,0 +1,105 @@
+"""core.course: the course design's list of files, what each needs of the design file,
+and every refusal found before anything is written (issue 35, item 6)."""
+import itertools
+import json
+import os
+
+import pytest
+
+from core.course import (PARTS, REPORT, CourseError, Part, file_names, missing_parts, plan_course,
+                         read_document)
+from core.io import design_document, masses_to_dict
+from core.spec import Spec
+
+OPTIONAL = ("rpm", "forces", "cam")
+CAM = {"arm_mm": 150.0, "swing_deg": 15.0, "rise_deg": 60.0, "dwell_deg": 10.0, "return_deg": 60.0,
+       "pressure_deg": 40.0, "return_pressure_deg": 70.0}
+
+
+def document(drop=()):
+    from core.dynamics import MassProperties
+    doc = design_document(Spec(), [40.0, 60.0], 1.0,
+                          {"forces": masses_to_dict(MassProperties(cut_force_N=7000.0)), "cam": CAM})
+    return {k: v for k, v in doc.items() if k not in drop}
+
+
+def write(path, doc) -> str:
+    path.write_text(json.dumps(doc), encoding="utf-8")
+    return str(path)
+
+
+def test_the_files_are_numbered_in_order_and_only_sheets_have_a_dxf():
+    plain = [name for _, name in file_names(PARTS)]
+    assert plain == ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf"]
+    both = [name for _, name in file_names(PARTS, dxf=True)]
+    assert both == ["00-report.pdf", "01-motion.pdf", "01-motion.dxf", "02-kinetostatic.pdf",
+                    "02-kinetostatic.dxf", "03-cam.pdf", "03-cam.dxf"]
+    assert [p.content for p in PARTS] == [REPORT, "motion", "forces", "cam"]
+
+
+def test_a_new_sheet_joins_by_one_entry_and_is_refused_without_its_key():
+    """The gear sheet as the integrator will add it: numbered after the cam, and a file
+    without "gear" refused naming it and the sheet."""
+    parts = PARTS + (Part("gear", "gear", "the gear sheet", ("gear",)),)
+    assert file_names(parts, dxf=True)[-2:] == [(parts[-1], "04-gear.pdf"), (parts[-1], "04-gear.dxf")]
+    assert missing_parts({"spec", "rpm", "forces", "cam"}, parts) == (("gear", ("the gear sheet",)),)
+
+
+@pytest.mark.parametrize("drop", [c for n in range(1, 4) for c in itertools.combinations(OPTIONAL, n)])
+def test_every_missing_key_is_named_with_every_file_that_needs_it(drop, tmp_path):
+    doc, keys = read_document(write(tmp_path / "d.json", document(drop)))
+    assert set(drop).isdisjoint(keys)
+    found = dict(missing_parts(keys))
+    assert set(found) == set(drop)
+    for key in drop:          # the reference: the parts whose needs name the key
+        assert set(found[key]) == {p.title for p in PARTS if key in p.needs}
+    with pytest.raises(CourseError) as caught:
+        plan_course(doc, keys, "d.json", str(tmp_path / "out"))
+    text = str(caught.value)
+    assert text.startswith("--design: d.json has no ") and "\n" not in text
+    assert all(f'"{key}"' in text for key in drop)
+    assert os.listdir(tmp_path) == ["d.json"]
+
+
+def test_speeds_the_reader_fills_in_are_not_the_files_own(tmp_path):
+    """A file without "rpm" opens at 40 and 60 r/min; the course design refuses it rather
+    than print speeds nobody chose."""
+    doc, keys = read_document(write(tmp_path / "d.json", document(("rpm",))))
+    assert doc["rpm"] == [40.0, 60.0] and "rpm" not in keys
+    assert "rpm" in dict(missing_parts(keys))
+
+
+def test_a_cam_that_cannot_be_made_is_refused_naming_the_sheet(tmp_path):
+    doc = document()
+    doc["cam"] = dict(CAM, roller_mm=500.0)          # far above any roller the profile allows
+    read, keys = read_document(write(tmp_path / "d.json", doc))
+    with pytest.raises(CourseError, match=r"^--design: d.json: the cam sheet: .*roller"):
+        plan_course(read, keys, "d.json", str(tmp_path / "out"))
+
+
+def test_a_folder_that_cannot_be_written_is_refused_before_anything(tmp_path):
+    doc, keys = read_document(write(tmp_path / "d.json", document()))
+    (tmp_path / "file").write_text("x")
+    (tmp_path / "full").mkdir()
+    (tmp_path / "full" / "02-kinetostatic.pdf").mkdir()          # a folder where a file goes
+    cases = {str(tmp_path / "file"): "it is not a folder",
+             str(tmp_path / "none" / "out"): "there is no folder",
+             str(tmp_path / "file" / "out"): "is not a folder",
+             str(tmp_path / ("x" * 300)): "too long",
+             str(tmp_path / "full"): "02-kinetostatic.pdf: it is a folder"}
+    for folder, words in cases.items():
+        with pytest.raises(CourseError) as caught:
+            plan_course(doc, keys, "d.json", folder)
+        assert caught.value.option == "--output" and words in str(caught.value), (folder, caught.value)
+    assert sorted(os.listdir(tmp_path)) == ["d.json", "file", "full"]
+    assert os.listdir(tmp_path / "full") == ["02-kinetostatic.pdf"]
+
+
+def test_a_complete_file_plans_every_file_in_the_folder(tmp_path):
+    doc, keys = read_document(write(tmp_path / "d.json", document()))
+    course = plan_course(doc, keys, "d.json", str(tmp_path / "out"), dxf=True)
+    assert [os.path.basename(f.path) for f in course.files] == [n for _, n in file_names(PARTS, True)]
+    assert {os.path.dirname(f.path) for f in course.files} == {str(tmp_path / "out")}
+    assert course.rpms == (40.0, 60.0) and course.masses.cut_force_N == 7000.0
+    assert course.drawn["cam"].inputs.arm_mm == 150.0
+    assert not (tmp_path / "out").exists()          # planning writes nothing
