@@ -1497,6 +1497,18 @@
         <translation>连杆 L4 (mm)</translation>
     </message>
     <message>
+        <source>The objective, %1, does not depend on %2: it changes by less than %3 of its value over the range.</source>
+        <translation>优化目标 %1 与 %2 无关：在整个范围内其变化小于其值的 %3。</translation>
+    </message>
+    <message>
+        <source>The best design found, %1 %2, is not better than the design before, %3 %2, by more than %4 of its value.</source>
+        <translation>找到的最优设计为 %1 %2，比原设计的 %3 %2 改善不超过其值的 %4。</translation>
+    </message>
+    <message>
+        <source>No better design within these bounds; the design is kept.</source>
+        <translation>在这些范围内没有更好的设计；保留原设计。</translation>
+    </message>
+    <message>
         <source>Figure</source>
         <translation>指标</translation>
     </message>

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
-from core.optimize import OBJECTIVES, Optimum
+from core.optimize import OBJECTIVES, Optimum, tolerance_text
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
 
@@ -56,3 +56,25 @@ def proposal_text(values: dict[str, float], value: float, best: Optimum, ends: d
                              "lie above it; widen the range."))
         text += f"<br><span style='color:#b71c1c'>{warning.replace('%1', names[name])}</span>"
     return text
+
+
+def no_gain_text(best: Optimum) -> str:
+    """Why Optimize loads nothing: the objective does not depend on the free parameters
+    (``best.insensitive``), or the best found does not beat the design before by more
+    than the objective's tolerance (core.optimize.GAIN_TOLERANCE)."""
+    unit = OBJECTIVES[best.objective][1]
+    names = parameter_names()
+    share = tolerance_text()
+    parts = []
+    if best.insensitive:
+        parts.append(translate("ExploreView", "The objective, %1, does not depend on %2: it changes by less "
+                               "than %3 of its value over the range.")
+                     .replace("%1", figure_names()[best.objective])
+                     .replace("%2", ", ".join(names[n] for n in best.insensitive)).replace("%3", share))
+    if set(best.insensitive) != set(best.names):
+        parts.append(translate("ExploreView", "The best design found, %1 %2, is not better than the design "
+                               "before, %3 %2, by more than %4 of its value.")
+                     .replace("%1", f"{best.value:.5g}").replace("%2", unit)
+                     .replace("%3", f"{best.start_value:.5g}").replace("%4", share))
+    head = translate("ExploreView", "No better design within these bounds; the design is kept.")
+    return "<br>".join([head] + parts)
