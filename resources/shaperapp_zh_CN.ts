@@ -508,8 +508,16 @@
         <translation>最多可比较 %1 个设计。</translation>
     </message>
     <message>
-        <source>Design on screen</source>
-        <translation>当前设计</translation>
+        <source>This design is already compared, as “%1”.</source>
+        <translation>此设计已在比较中，名为“%1”。</translation>
+    </message>
+    <message>
+        <source>%1 modified, %2 (snapshot %3)</source>
+        <translation>%1（已修改），%2（快照 %3）</translation>
+    </message>
+    <message>
+        <source>Design on screen, %2 (snapshot %3)</source>
+        <translation>当前设计，%2（快照 %3）</translation>
     </message>
     <message>
         <source>Could not open the design: %1</source>
@@ -570,6 +578,10 @@
     <message>
         <source>Add design on screen</source>
         <translation>添加当前设计</translation>
+    </message>
+    <message>
+        <source>Adds a snapshot of the design on screen, named with its time: later edits do not change it</source>
+        <translation>添加当前设计的快照，以添加时间命名：之后的修改不会改变它</translation>
     </message>
     <message>
         <source>Add file…</source>

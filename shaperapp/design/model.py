@@ -24,6 +24,7 @@ from core.dynamics import Dynamics, DynamicsSummary, MassProperties
 from core.errors import DesignError
 from core.geometry import Design
 from core.kinematics import Motion
+from core.library.names import file_stem
 from core.metrics import CycleMetrics
 from core.spec import NUMBER_FIELDS, Spec
 
@@ -62,6 +63,7 @@ class DesignModel(QObject):
     def __init__(self, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self._path = ""
+        self._library_name = ""      # the library entry last opened (while no file is named)
         self._index = 0
         self._error: DesignError | None = None
         self._forces_error: DesignError | None = None
@@ -282,11 +284,13 @@ class DesignModel(QObject):
 
     # ---- files ---------------------------------------------------------
     def load_state(self, spec: Spec, rpms, step_deg: float, path: str = "",
-                   masses: MassProperties | None = None, parts: dict[str, Any] | None = None) -> None:
+                   masses: MassProperties | None = None, parts: dict[str, Any] | None = None,
+                   library_name: str = "") -> None:
         """Replace everything at once, or nothing: the whole design is computed first.
 
         Raises DesignError (and changes nothing) when the state cannot be computed;
-        otherwise clears the undo history and marks the state saved as ``path``."""
+        otherwise clears the undo history and marks the state saved as ``path``.
+        ``library_name``: the library entry it came from (see :attr:`source_name`)."""
         masses = DEFAULT_MASSES if masses is None else masses
         inputs = Inputs.of(spec, tuple(float(v) for v in rpms), float(step_deg), masses)
         try:
@@ -309,6 +313,7 @@ class DesignModel(QObject):
         self.resultsChanged.emit()
         self.forcesChanged.emit()
         self.angleChanged.emit(0)
+        self._library_name = library_name
         self.loaded.emit()
         self.set_clean(path)
 
@@ -316,6 +321,15 @@ class DesignModel(QObject):
         """The inputs now match the file at ``path`` (saved or opened)."""
         self.set_path(path)
         self.undo_stack.setClean()
+
+    @property
+    def source_name(self) -> str:
+        """What the design on screen is called: its file's name without the suffix, else
+        the library entry it was opened from, else "" (new). Still the name after edits:
+        ask :attr:`dirty` whether the screen still shows what the name holds."""
+        if self._path:
+            return file_stem(self._path)
+        return self._library_name
 
     def set_path(self, path: str) -> None:
         """The file the design belongs to, without marking anything saved."""
