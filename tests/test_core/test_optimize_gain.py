@@ -33,20 +33,18 @@ def test_l1_alone_gives_no_proposal_and_says_why():
     assert doc["improves"] is False
     assert doc["no_gain"].startswith("no better design within these bounds")
     assert "accel does not depend on crank" in doc["no_gain"]
-    text = shaper(*BASE, "--vary", "crank=40:60")
-    assert text.returncode == 0, text.stderr
-    keys = [line.split("  ")[0] for line in text.stdout.splitlines()]
-    assert "optimum" not in keys and "crank" not in keys and "result" in keys
 
 
 def test_a_start_that_is_already_best_gives_no_proposal():
     """|a| grows with K (a quicker return), so from K = 1.3 in 1.3…1.5 nothing is better."""
     assert largest_accel(50.0, 1.3) < largest_accel(50.0, 1.31)
-    run = shaper(*[a if a != "1.4" else "1.3" for a in BASE], "--vary", "K=1.3:1.5", "--json")
+    run = shaper(*[a if a != "1.4" else "1.3" for a in BASE], "--vary", "K=1.3:1.5")
     assert run.returncode == 0, run.stderr
-    doc = json.loads(run.stdout)
-    assert doc["improves"] is False and "does not depend" not in doc["no_gain"]
-    assert "is not lower than the design's own" in doc["no_gain"]
+    rows = dict(line.split(None, 1) for line in run.stdout.splitlines())
+    assert "optimum" not in rows and "K" not in rows       # no proposal, no design rows
+    assert rows["result"].startswith("no better design within these bounds: the best found")
+    assert "does not depend" not in rows["result"]
+    assert "is not lower than the design's own" in rows["result"]
 
 
 def test_a_real_gain_is_still_proposed():
