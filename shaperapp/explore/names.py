@@ -69,7 +69,7 @@ def no_gain_text(best: Optimum) -> str:
     if best.insensitive:
         parts.append(translate("ExploreView", "The objective, %1, does not depend on %2: it changes by less "
                                "than %3 of its value over the range.")
-                     .replace("%1", figure_names()[best.objective])
+                     .replace("%1", figure_titles()[best.objective])
                      .replace("%2", ", ".join(names[n] for n in best.insensitive)).replace("%3", share))
     if set(best.insensitive) != set(best.names):
         parts.append(translate("ExploreView", "The best design found, %1 %2, is not better than the design "
