@@ -69,6 +69,23 @@ def distinguishing_inputs(spec: Spec, others: Sequence[Spec]) -> str:
     return ", ".join(parts)
 
 
+def distinguishing_choices(candidate: Candidate, others: Sequence[Candidate]) -> tuple[str, ...]:
+    """The choices, besides the numbers of :func:`distinguishing_inputs`, that tell
+    ``candidate`` from ``others``, as codes a GUI puts in words: its guide rule ("chord" or
+    "sagitta") and rod side ("trailing" or "leading") where an other design has another,
+    and "loads" where an other design has the same inputs and other loads."""
+    spec = candidate.spec
+    out = []
+    if spec.guide_rule != "height" and any(o.spec.guide_rule != spec.guide_rule for o in others):
+        out.append(spec.guide_rule)
+    if spec.variant == "rod" and any(o.spec.variant == "rod" and o.spec.rod_side != spec.rod_side
+                                     for o in others):
+        out.append(spec.rod_side)
+    if any(o.spec == spec and o.masses != candidate.masses for o in others):
+        out.append("loads")
+    return tuple(out)
+
+
 @dataclass(frozen=True)
 class Row:
     """One figure across the designs."""

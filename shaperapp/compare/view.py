@@ -15,7 +15,7 @@ from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QHBoxLayout, QHeader
                                QVBoxLayout, QWidget)
 
 from core.compare import (MAX_DESIGNS, Candidate, Comparison, compare, difference_text,
-                          distinguishing_inputs, table_csv)
+                          distinguishing_choices, distinguishing_inputs, table_csv)
 from core.errors import DesignError, FileFormatError
 from core.io import atomic_write, load_design
 from core.library.names import file_stem, unique_name
@@ -137,6 +137,11 @@ class CompareView(QWidget):
         if name and not m.dirty:
             return name
         inputs = distinguishing_inputs(m.valid_spec, [c.spec for c in self._candidates])
+        words = {"chord": self.tr("chord"), "sagitta": self.tr("sagitta"),
+                 "trailing": self.tr("trailing rod"), "leading": self.tr("leading rod"),
+                 "loads": self.tr("other loads")}
+        choices = distinguishing_choices(Candidate("", m.valid_spec, m.masses), self._candidates)
+        inputs = ", ".join([inputs] + [words[c] for c in choices])
         when = QTime.currentTime().toString("HH:mm:ss")
         text = (self.tr("%1 modified, %2 (snapshot %3)") if name else
                 self.tr("Design on screen, %2 (snapshot %3)"))

@@ -22,3 +22,17 @@ def test_dimensions_and_rod_inputs():
     assert distinguishing_inputs(rod, [dims]) == "L1 100 mm, L4/L3 0.35"
     assert distinguishing_inputs(replace(dims, guide_rule="height", guide_height=470.0), [dims]) \
         == "L1 100 mm, guide 470 mm"
+
+
+def test_choices_that_numbers_do_not_show():
+    from core.compare import Candidate, distinguishing_choices
+    from core.dynamics import MassProperties
+    rod = Spec(variant="rod", guide_rule="sagitta")
+    leading = replace(rod, rod_side="leading")
+    chord = replace(rod, guide_rule="chord")
+    assert distinguishing_inputs(leading, [rod]) == distinguishing_inputs(rod, [leading])
+    assert distinguishing_choices(Candidate("", leading), [Candidate("", rod)]) == ("leading",)
+    assert distinguishing_choices(Candidate("", chord), [Candidate("", rod)]) == ("chord",)
+    heavy = Candidate("", rod, MassProperties(ram_mass_kg=90.0))
+    assert distinguishing_choices(heavy, [Candidate("", rod, MassProperties())]) == ("loads",)
+    assert distinguishing_choices(Candidate("", rod), [Candidate("", rod)]) == ()

@@ -73,3 +73,13 @@ def test_a_library_entry_keeps_its_name(qtbot, model, tmp_path, monkeypatch):
     qtbot.addWidget(view)
     assert view.add_current()
     assert labels(view) == ["quick return"]
+
+
+def test_designs_that_differ_in_no_number_are_told_apart(view, model):
+    model.set_spec(variant="rod", rod_ratio=0.3)
+    assert view.add_current()
+    model.set_spec(rod_side="leading")
+    assert view.add_current()
+    first, second = labels(view)
+    assert re.fullmatch(r"Design on screen, K 1\.4, leading rod" + SNAPSHOT, second), second
+    assert "(2)" not in second and "leading" not in first
