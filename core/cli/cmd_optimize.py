@@ -80,7 +80,11 @@ def run(args: argparse.Namespace) -> int:
     rows = [("objective", f"{best.objective} ({OBJECTIVES[best.objective][0]})"),
             ("optimum", f"{best.value:.6g} {unit}"), ("design as given", start)]
     if not best.improves:       # no proposal: the design as given stands
-        print_table(rows[:1] + rows[2:] + [("result", doc["no_gain"])])
+        flat = [typed[i] for i, name in enumerate(best.names) if name in best.insensitive]
+        rows = rows[:1] + rows[2:] + [("result", doc["no_gain"])]
+        rows += [(name, f"best at the {end} bound: a better design may lie beyond it; widen the range")
+                 for name, end in doc["on_bound"].items() if name not in flat]
+        print_table(rows)
         return 0
     rows += [(name, f"{best.x[i]:.6g}" + (f"  (at the {doc['on_bound'][name]} bound: the best design "
                                           "may lie beyond it; widen the range)" if name in doc["on_bound"] else ""))

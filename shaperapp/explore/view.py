@@ -298,11 +298,11 @@ class ExploreView(QWidget):
         only when it beats the design on screen by more than the objective's tolerance
         (core.optimize.improves); else say why there is no proposal and load nothing."""
         self.status.setText(self._map_status())       # no longer "Optimizing…"
+        ends = on_bounds(best, job.bounds)
         if not best.improves:                         # nothing better: the design stays
-            self.box.say(lambda: explore_names.no_gain_text(best))
+            self.box.say(lambda: explore_names.no_gain_text(best, ends))
             return
         values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
-        ends = on_bounds(best, job.bounds)
         self.box.say(lambda: explore_names.proposal_text(values, value, best, ends))
         self.model.set_spec(**spec_changes(values))   # one step on the undo stack
         self.box.proposal_loaded()

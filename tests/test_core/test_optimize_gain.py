@@ -41,7 +41,8 @@ def test_a_start_that_is_already_best_gives_no_proposal():
     run = shaper(*[a if a != "1.4" else "1.3" for a in BASE], "--vary", "K=1.3:1.5")
     assert run.returncode == 0, run.stderr
     rows = dict(line.split(None, 1) for line in run.stdout.splitlines())
-    assert "optimum" not in rows and "K" not in rows       # no proposal, no design rows
+    assert "optimum" not in rows and "frame" not in rows   # no proposal, no design rows
+    assert rows["K"].startswith("best at the lower bound: a better design may lie beyond it")
     assert rows["result"].startswith("no better design within these bounds: the best found")
     assert "does not depend" not in rows["result"]
     assert "is not lower than the design's own" in rows["result"]

@@ -57,3 +57,26 @@ def test_no_gain_loads_nothing_and_says_why(qtbot, view, model):
     assert i18n.set_language("zh_CN")
     qtbot.waitUntil(lambda: view.box.optimum.text() != text)
     assert english_words(view.box.optimum.text(), {"br"}) == [], view.box.optimum.text()
+
+
+def test_a_design_already_best_stays_and_the_bound_is_named(qtbot, view, model):
+    """max |a| grows with K (a quicker return): from K = 1.4 in 1.4…1.6 nothing is better,
+    and the best lies on the range's lower end."""
+    view.axis_names[1].setCurrentIndex(view.axis_names[1].findData("crank"))
+    view.axis_names[0].setCurrentIndex(view.axis_names[0].findData("time_ratio"))
+    view.lows[0].setValue(1.4)
+    view.highs[0].setValue(1.6)
+    spec = model.valid_spec
+    assert largest_accel(spec, spec.crank, max(model.rpms)) < largest_accel(
+        replace(spec, time_ratio=1.41), spec.crank, max(model.rpms))
+    view.box.free[0].setChecked(True)
+    view.box.free[1].setChecked(False)
+    view.box.objective.setCurrentIndex(view.box.objective.findData("accel"))
+    view.box.optimize.click()
+    qtbot.waitUntil(lambda: view.runner.job is None and view.box.optimum.text() != "",
+                    timeout=60_000)
+    text = view.box.optimum.text()
+    assert model.valid_spec == spec
+    assert text.startswith("No better design within these bounds") and "does not depend" not in text
+    assert "is not better than the design before" in text
+    assert "Time ratio K is at the lower end of its range" in text
