@@ -63,7 +63,7 @@ class DesignModel(QObject):
     def __init__(self, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self._path = ""
-        self._library_name = ""      # the library entry last opened (while no file is named)
+        self._library_name = ""
         self._index = 0
         self._error: DesignError | None = None
         self._forces_error: DesignError | None = None
@@ -301,7 +301,7 @@ class DesignModel(QObject):
             raise
         except COMPUTE_ERRORS as exc:
             raise compute_error(exc) from None
-        self._inputs = inputs
+        self._inputs, self._library_name = inputs, library_name
         self._valid_spec, self._rpms, self._step, self._masses = spec, inputs.rpms, inputs.step, masses
         self._design, self._motion, self._metrics, self._dynamics, self._dynamics_summary = results
         self._index = 0
@@ -313,7 +313,6 @@ class DesignModel(QObject):
         self.resultsChanged.emit()
         self.forcesChanged.emit()
         self.angleChanged.emit(0)
-        self._library_name = library_name
         self.loaded.emit()
         self.set_clean(path)
 
@@ -324,12 +323,9 @@ class DesignModel(QObject):
 
     @property
     def source_name(self) -> str:
-        """What the design on screen is called: its file's name without the suffix, else
-        the library entry it was opened from, else "" (new). Still the name after edits:
-        ask :attr:`dirty` whether the screen still shows what the name holds."""
-        if self._path:
-            return file_stem(self._path)
-        return self._library_name
+        """The design's file name without the suffix, else the library entry it was opened
+        from, else "". Kept through edits: :attr:`dirty` says if the screen still shows it."""
+        return file_stem(self._path) if self._path else self._library_name
 
     def set_path(self, path: str) -> None:
         """The file the design belongs to, without marking anything saved."""
