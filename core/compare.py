@@ -45,6 +45,47 @@ class Candidate:
     masses: MassProperties | None = None
 
 
+# The inputs that name a design in a label, in order: (Spec field, symbol, unit).
+LABEL_INPUTS = (("time_ratio", "K", ""), ("stroke", "H", " mm"), ("crank", "L1", " mm"),
+                ("frame", "L2", " mm"), ("lever", "L3", " mm"), ("guide_height", "guide", " mm"),
+                ("rod_ratio", "L4/L3", ""), ("rod_length", "L4", " mm"))
+
+
+def distinguishing_inputs(spec: Spec, others: Sequence[Spec]) -> str:
+    """The inputs that tell ``spec`` from ``others`` in a label, e.g. "K 1.4" or
+    "K 1.4, L1 120 mm": the mode's first input (K in synthesis, L1 with direct
+    dimensions) always, then every other input ``spec`` uses whose value differs from an
+    other design's (one that does not use it counts as differing). Numbers as typed (:g)."""
+    active = spec.active_fields()
+    first = "time_ratio" if spec.mode == "synthesis" else "crank"
+    parts = []
+    for field, symbol, unit in LABEL_INPUTS:
+        if field not in active:
+            continue
+        value = getattr(spec, field)
+        if field == first or any(field not in o.active_fields() or getattr(o, field) != value
+                                 for o in others):
+            parts.append(f"{symbol} {value:g}{unit}")
+    return ", ".join(parts)
+
+
+def distinguishing_choices(candidate: Candidate, others: Sequence[Candidate]) -> tuple[str, ...]:
+    """The choices, besides the numbers of :func:`distinguishing_inputs`, that tell
+    ``candidate`` from ``others``, as codes a GUI puts in words: its guide rule ("chord" or
+    "sagitta") and rod side ("trailing" or "leading") where an other design has another,
+    and "loads" where an other design has the same inputs and other loads."""
+    spec = candidate.spec
+    out = []
+    if spec.guide_rule != "height" and any(o.spec.guide_rule != spec.guide_rule for o in others):
+        out.append(spec.guide_rule)
+    if spec.variant == "rod" and any(o.spec.variant == "rod" and o.spec.rod_side != spec.rod_side
+                                     for o in others):
+        out.append(spec.rod_side)
+    if any(o.spec == spec and o.masses != candidate.masses for o in others):
+        out.append("loads")
+    return tuple(out)
+
+
 @dataclass(frozen=True)
 class Row:
     """One figure across the designs."""

@@ -2,8 +2,11 @@
 decides, at any crank angle, whether the tool is cutting.
 
 The cut runs while the advancing ram is between idle·H and (1 − idle)·H of its
-travel from the dead point at φ = 0. Its switch angles are exact roots of the
-closed-form displacement, and the cut is the **closed** interval between them:
+travel from the dead point at φ = 0. With idle 0 its switch angles are the limit
+positions themselves, 0 and π + θ in closed form (a root of x(φ) = H is a double
+root, which a root finder can only place to √ε, 1.4e-8 rad); otherwise they are
+exact roots of the closed-form displacement. The cut is the **closed** interval
+between them:
 the tool cuts at both switch angles (with idle 0, at both dead points), and an
 angle within ``SWITCH_TOLERANCE`` of a switch counts as at it, so round-off in
 a crank angle (240° typed, π + θ computed) cannot decide which side a row shows.
@@ -63,7 +66,14 @@ def cut_window(d: Designs, idle_fraction: float,
     per row, uniform φ over the cycle; by default ``ENERGY_INTERVALS`` steps) and
     polished as a root of the closed-form displacement. A switch at or before φ = 0
     (idle 0, or an idle·H below round-off) is 0; one never reached is π + θ.
+
+    With idle 0 the window is exactly the working stroke [0, π + θ]: the ram's dead
+    points are the lever's limit positions (dCx/dφ = L3·ψ′·(cos ψ ∓ d·sin ψ/r) for the
+    rod, whose second factor vanishes only at the rod's dead centre, which validation
+    refuses), where the crank is square to the lever, at φ = 0 and φ = π + θ.
     """
+    if idle_fraction == 0.0:
+        return np.zeros(np.shape(d.theta)), math.pi + np.asarray(d.theta, dtype=float)
     if sh is None:
         sh = shape(d.column(), np.linspace(0.0, 2.0 * math.pi, WINDOW_INTERVALS + 1))
     idle = idle_fraction * d.stroke

@@ -6,6 +6,12 @@ a dense vectorized sweep of the box, then scipy's differential evolution
 (vectorized, seeded with the sweep's best point), then a bounded Nelder–Mead
 polish. The result is the best design any stage found, so it is never worse
 than the best point of the sweep. Invalid designs count as infinitely bad.
+
+A result is a proposal only when it beats the design as given by more than
+``GAIN_TOLERANCE`` of its objective (:func:`improves`): below that the gain is
+round-off or the sweep's noise, and a changed design would be a change for nothing.
+The dense sweep also tells which varied parameters the objective does not depend on
+(``Optimum.insensitive``), so "no better design" can say why.
 """
 from __future__ import annotations
 
@@ -29,6 +35,11 @@ OBJECTIVES = {
 }
 DENSE_POINTS = {False: 4096, True: 256}   # points of the first dense sweep (metrics / loads)
 PENALTY = 1e30
+GAIN_TOLERANCE = 1e-6
+"""The objective's tolerance, relative: a design is better than another only when its
+objective is lower by more than this share of the other's. It is the share within which
+:func:`tidy_optimum` accepts a rounded design, and far above the objectives' round-off
+(≈ 1e-13 relative: max |a| at L1 = 50 and 50.68 with K and H fixed differ by 5e-14)."""
 
 
 @dataclass(frozen=True)
@@ -42,6 +53,42 @@ class Optimum:
     start_value: float | None          # objective of the design as given; None if it is invalid
     evaluations: int                   # designs evaluated
     evaluation: Evaluation             # the optimal design's figures (one design)
+    insensitive: tuple[str, ...] = ()  # varied names the objective does not depend on here
+
+    @property
+    def improves(self) -> bool:
+        """Is the optimum better than the design as given (see :func:`improves`)?"""
+        return improves(self.value, self.start_value)
+
+
+def improves(value: float, start: float | None) -> bool:
+    """Whether an objective ``value`` beats the design as given (``start``, None when that
+    design is invalid) by more than ``GAIN_TOLERANCE`` of it."""
+    if start is None:
+        return math.isfinite(value)
+    return value < start - GAIN_TOLERANCE * abs(start)
+
+
+def insensitive(dense: np.ndarray, shape: tuple[int, ...], names: tuple[str, ...]) -> tuple[str, ...]:
+    """The varied parameters along which the dense sweep's objective (``dense``, on the
+    "ij" grid of ``shape``) never changes by more than ``GAIN_TOLERANCE`` of its largest
+    valid value, on any grid line with two valid points or more: the objective does not
+    depend on them within the bounds (e.g. max |a| on L1 alone with K and H fixed)."""
+    grid = np.where(np.isfinite(dense), dense, np.nan).reshape(shape)
+    if not np.isfinite(grid).any():
+        return ()
+    scale = GAIN_TOLERANCE * float(np.nanmax(np.abs(grid)))
+    out = []
+    for axis, name in enumerate(names):
+        counts = np.sum(np.isfinite(grid), axis=axis)
+        if shape[axis] < 2 or not np.any(counts >= 2):
+            continue
+        with np.errstate(invalid="ignore"):
+            high = np.fmax.reduce(grid, axis=axis)
+            low = np.fmin.reduce(grid, axis=axis)
+        if np.all(np.where(counts >= 2, high - low, 0.0) <= scale):
+            out.append(name)
+    return tuple(out)
 
 
 def objective_of(evaluation: Evaluation, objective: str) -> np.ndarray:
@@ -103,9 +150,10 @@ def optimize(spec: Spec, bounds: dict[str, tuple[float, float]], objective: str,
     if len(names) and np.any(high > low):
         best_x, best = _refine(values, low, high, best_x, best, seed)
     final = evaluate(spec, {n: np.array([best_x[i]]) for i, n in enumerate(names)}, rpms, masses)
+    flat = insensitive(dense, tuple(a.size for a in axes), names)
     return Optimum(objective=objective, names=names, x=best_x, value=best,
                    start_value=float(start) if math.isfinite(start) else None,
-                   evaluations=count[0], evaluation=final)
+                   evaluations=count[0], evaluation=final, insensitive=flat)
 
 
 def _refine(values, low, high, best_x, best, seed):
@@ -154,7 +202,8 @@ def tidy_optimum(spec: Spec, best: Optimum, bounds: dict[str, tuple[float, float
     millionth of its range, inside the bounds (142.06349206349205 → 142.0635 in 100 mm), or
     where that design is worse by more than 1e-6 of the value (a minimax objective rises
     steeply from its optimum), to a hundred-millionth; else the exact optimum. A rounded
-    design that is invalid is never returned."""
+    design that is invalid is never returned, nor one whose rounding loses an optimum's
+    gain over the design as given (:func:`improves`)."""
     exact = dict(zip(best.names, (float(v) for v in best.x)))
     use = masses if OBJECTIVES[best.objective][2] else None
     for share in (1e-6, 1e-8):
@@ -164,9 +213,35 @@ def tidy_optimum(spec: Spec, best: Optimum, bounds: dict[str, tuple[float, float
             break
         value = float(objective_of(evaluate(spec, {n: np.array([v]) for n, v in tidy.items()},
                                             rpms, use), best.objective)[0])
-        if math.isfinite(value) and value <= best.value + 1e-6 * abs(best.value):
+        keeps_gain = improves(value, best.start_value) or not best.improves
+        if math.isfinite(value) and value <= best.value + GAIN_TOLERANCE * abs(best.value) \
+                and keeps_gain:
             return tidy, value
     return exact, best.value
+
+
+def tolerance_text() -> str:
+    """GAIN_TOLERANCE as a person writes it: "1e-6", not Python's "1e-06"."""
+    mantissa, exponent = f"{GAIN_TOLERANCE:.0e}".split("e")
+    return f"{mantissa}e{int(exponent)}"
+
+
+def no_gain_text(best: Optimum, unit_names: dict[str, str] | None = None) -> str:
+    """Why the optimum is no proposal (English, for the CLI; the GUI has its own
+    translated text): the objective does not depend on the varied parameters, or the
+    best found is not better than the design as given by more than GAIN_TOLERANCE."""
+    names = unit_names or {}
+    unit = OBJECTIVES[best.objective][1]
+    text = "no better design within these bounds: "
+    if best.insensitive:
+        flat = ", ".join(names.get(n, n) for n in best.insensitive)
+        text += (f"{best.objective} does not depend on {flat} (it changes by less than "
+                 f"{tolerance_text()} of its value over the range)")
+        if set(best.insensitive) == set(best.names):
+            return text
+        text += "; "
+    return text + (f"the best found, {best.value:.6g} {unit}, is not lower than the design's own "
+                   f"{best.start_value:.6g} {unit} by more than {tolerance_text()} of it")
 
 
 def on_bounds(best: Optimum, bounds: dict[str, tuple[float, float]],

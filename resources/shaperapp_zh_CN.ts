@@ -508,8 +508,36 @@
         <translation>最多可比较 %1 个设计。</translation>
     </message>
     <message>
-        <source>Design on screen</source>
-        <translation>当前设计</translation>
+        <source>This design is already compared, as “%1”.</source>
+        <translation>此设计已在比较中，名为“%1”。</translation>
+    </message>
+    <message>
+        <source>chord</source>
+        <translation>弦线</translation>
+    </message>
+    <message>
+        <source>sagitta</source>
+        <translation>矢高中点</translation>
+    </message>
+    <message>
+        <source>trailing rod</source>
+        <translation>后置连杆</translation>
+    </message>
+    <message>
+        <source>leading rod</source>
+        <translation>前置连杆</translation>
+    </message>
+    <message>
+        <source>other loads</source>
+        <translation>载荷不同</translation>
+    </message>
+    <message>
+        <source>%1 modified, %2 (snapshot %3)</source>
+        <translation>%1（已修改），%2（快照 %3）</translation>
+    </message>
+    <message>
+        <source>Design on screen, %2 (snapshot %3)</source>
+        <translation>当前设计，%2（快照 %3）</translation>
     </message>
     <message>
         <source>Could not open the design: %1</source>
@@ -570,6 +598,10 @@
     <message>
         <source>Add design on screen</source>
         <translation>添加当前设计</translation>
+    </message>
+    <message>
+        <source>Adds a snapshot of the design on screen, named with its time: later edits do not change it</source>
+        <translation>添加当前设计的快照，以添加时间命名：之后的修改不会改变它</translation>
     </message>
     <message>
         <source>Add file…</source>
@@ -1570,6 +1602,18 @@
     <message>
         <source>Rod L4 (mm)</source>
         <translation>连杆 L4 (mm)</translation>
+    </message>
+    <message>
+        <source>The objective, %1, does not depend on %2: it changes by less than %3 of its value over the range.</source>
+        <translation>优化目标“%1”与 %2 无关：在整个范围内其变化小于其值的 %3。</translation>
+    </message>
+    <message>
+        <source>The best design found, %1 %2, is not better than the design before, %3 %2, by more than %4 of its value.</source>
+        <translation>找到的最优设计为 %1 %2，比原设计的 %3 %2 改善不超过其值的 %4。</translation>
+    </message>
+    <message>
+        <source>No better design within these bounds; the design is kept.</source>
+        <translation>在这些范围内没有更好的设计；保留原设计。</translation>
     </message>
     <message>
         <source>Figure</source>

@@ -6,7 +6,7 @@ from typing import Any
 
 from ..errors import DesignError
 from ..geometry import Design
-from ..optimize import OBJECTIVES, Optimum, on_bounds, optimize
+from ..optimize import OBJECTIVES, Optimum, no_gain_text, on_bounds, optimize
 from ..sweep import PARAMETERS, Evaluation
 from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
@@ -49,6 +49,8 @@ def optimum_document(best: Optimum, typed: list[str],
         "vary": {name: float(best.x[i]) for i, name in enumerate(typed)},
         "evaluations": best.evaluations,
         "on_bound": {typed[i]: ends[name] for i, name in enumerate(best.names) if name in (ends or {})},
+        "improves": best.improves,
+        "no_gain": None if best.improves else no_gain_text(best, dict(zip(best.names, typed))),
     }
     doc["design"] = design_summary(_design(ev))
     doc["figures"] = {name: _number(values[0]) for name, values in figure_columns(ev)}
@@ -77,6 +79,13 @@ def run(args: argparse.Namespace) -> int:
     start = "invalid" if best.start_value is None else f"{best.start_value:.6g} {unit}"
     rows = [("objective", f"{best.objective} ({OBJECTIVES[best.objective][0]})"),
             ("optimum", f"{best.value:.6g} {unit}"), ("design as given", start)]
+    if not best.improves:       # no proposal: the design as given stands
+        flat = [typed[i] for i, name in enumerate(best.names) if name in best.insensitive]
+        rows = rows[:1] + rows[2:] + [("result", doc["no_gain"])]
+        rows += [(name, f"best at the {end} bound: a better design may lie beyond it; widen the range")
+                 for name, end in doc["on_bound"].items() if name not in flat]
+        print_table(rows)
+        return 0
     rows += [(name, f"{best.x[i]:.6g}" + (f"  (at the {doc['on_bound'][name]} bound: the best design "
                                           "may lie beyond it; widen the range)" if name in doc["on_bound"] else ""))
              for i, name in enumerate(typed)]

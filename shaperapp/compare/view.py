@@ -8,14 +8,14 @@ Everything shown is computed by core; this widget only draws and exports.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, QPoint, QRectF, QSize, QSizeF, Qt, Signal
+from PySide6.QtCore import QEvent, QPoint, QRectF, QSize, QSizeF, Qt, QTime, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QFontMetrics, QPainter
 from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QHBoxLayout, QHeaderView, QLabel, QListWidget,
                                QMessageBox, QPushButton, QSplitter, QTableWidget, QTableWidgetItem,
                                QVBoxLayout, QWidget)
 
 from core.compare import (MAX_DESIGNS, Candidate, Comparison, compare, difference_text,
-                          table_csv)
+                          distinguishing_choices, distinguishing_inputs, table_csv)
 from core.errors import DesignError, FileFormatError
 from core.io import atomic_write, load_design
 from core.library.names import file_stem, unique_name
@@ -106,8 +106,15 @@ class CompareView(QWidget):
         self._changed()
 
     def add_candidate(self, candidate: Candidate) -> bool:
+        """Add one design; refused (False, with a message) past MAX_DESIGNS or when the same
+        design (inputs and loads) is already compared: two entries would differ only in name."""
         if len(self._candidates) >= MAX_DESIGNS:
             self._say(self.tr("At most %1 designs can be compared.").replace("%1", str(MAX_DESIGNS)))
+            return False
+        same = [c.label for c in self._candidates
+                if c.spec == candidate.spec and c.masses == candidate.masses]
+        if same:
+            self._say(self.tr("This design is already compared, as “%1”.").replace("%1", same[0]))
             return False
         label = unique_name(candidate.label, [c.label for c in self._candidates])
         self._candidates.append(Candidate(label, candidate.spec, candidate.masses))
@@ -115,8 +122,30 @@ class CompareView(QWidget):
         return True
 
     def add_current(self) -> bool:
+        """Add a snapshot of the design on screen: later edits do not change the entry, so
+        its label says what it is (:meth:`snapshot_label`)."""
         m = self._model
-        return self.add_candidate(Candidate(self.tr("Design on screen"), m.valid_spec, m.masses))
+        return self.add_candidate(Candidate(self.snapshot_label(), m.valid_spec, m.masses))
+
+    def snapshot_label(self) -> str:
+        """The name of the design on screen as an entry: its file or library name while the
+        screen shows it unchanged; else "Design on screen" (or "NAME modified") with the
+        inputs that tell it from the other entries and the time of the snapshot. The old
+        fixed "Design on screen" kept naming a frozen K 1.4 after K became 1.6."""
+        m = self._model
+        name = m.source_name
+        if name and not m.dirty:
+            return name
+        inputs = distinguishing_inputs(m.valid_spec, [c.spec for c in self._candidates])
+        words = {"chord": self.tr("chord"), "sagitta": self.tr("sagitta"),
+                 "trailing": self.tr("trailing rod"), "leading": self.tr("leading rod"),
+                 "loads": self.tr("other loads")}
+        choices = distinguishing_choices(Candidate("", m.valid_spec, m.masses), self._candidates)
+        inputs = ", ".join([inputs] + [words[c] for c in choices])
+        when = QTime.currentTime().toString("HH:mm:ss")
+        text = (self.tr("%1 modified, %2 (snapshot %3)") if name else
+                self.tr("Design on screen, %2 (snapshot %3)"))
+        return text.replace("%2", inputs).replace("%3", when).replace("%1", name)   # a name may hold "%2"
 
     def add_file(self, path: str) -> bool:
         try:
@@ -290,6 +319,9 @@ class CompareView(QWidget):
 
     def _retranslate(self) -> None:
         self.add_current_button.setText(self.tr("Add design on screen"))
+        self.add_current_button.setToolTip(self.tr(
+            "Adds a snapshot of the design on screen, named with its time: later edits do "
+            "not change it"))
         self.add_file_button.setText(self.tr("Add file…"))
         self.remove_button.setText(self.tr("Remove"))
         self.speed_label.setText(self.tr("Speed (r/min):"))

@@ -24,6 +24,7 @@ from core.dynamics import Dynamics, DynamicsSummary, MassProperties
 from core.errors import DesignError
 from core.geometry import Design
 from core.kinematics import Motion
+from core.library.names import file_stem
 from core.metrics import CycleMetrics
 from core.spec import NUMBER_FIELDS, Spec
 
@@ -62,6 +63,7 @@ class DesignModel(QObject):
     def __init__(self, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self._path = ""
+        self._library_name = ""
         self._index = 0
         self._error: DesignError | None = None
         self._forces_error: DesignError | None = None
@@ -282,11 +284,13 @@ class DesignModel(QObject):
 
     # ---- files ---------------------------------------------------------
     def load_state(self, spec: Spec, rpms, step_deg: float, path: str = "",
-                   masses: MassProperties | None = None, parts: dict[str, Any] | None = None) -> None:
+                   masses: MassProperties | None = None, parts: dict[str, Any] | None = None,
+                   library_name: str = "") -> None:
         """Replace everything at once, or nothing: the whole design is computed first.
 
         Raises DesignError (and changes nothing) when the state cannot be computed;
-        otherwise clears the undo history and marks the state saved as ``path``."""
+        otherwise clears the undo history and marks the state saved as ``path``.
+        ``library_name``: the library entry it came from (see :attr:`source_name`)."""
         masses = DEFAULT_MASSES if masses is None else masses
         inputs = Inputs.of(spec, tuple(float(v) for v in rpms), float(step_deg), masses)
         try:
@@ -297,7 +301,7 @@ class DesignModel(QObject):
             raise
         except COMPUTE_ERRORS as exc:
             raise compute_error(exc) from None
-        self._inputs = inputs
+        self._inputs, self._library_name = inputs, library_name
         self._valid_spec, self._rpms, self._step, self._masses = spec, inputs.rpms, inputs.step, masses
         self._design, self._motion, self._metrics, self._dynamics, self._dynamics_summary = results
         self._index = 0
@@ -316,6 +320,12 @@ class DesignModel(QObject):
         """The inputs now match the file at ``path`` (saved or opened)."""
         self.set_path(path)
         self.undo_stack.setClean()
+
+    @property
+    def source_name(self) -> str:
+        """The design's file name without the suffix, else the library entry it was opened
+        from, else "". Kept through edits: :attr:`dirty` says if the screen still shows it."""
+        return file_stem(self._path) if self._path else self._library_name
 
     def set_path(self, path: str) -> None:
         """The file the design belongs to, without marking anything saved."""

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
-from core.optimize import OBJECTIVES, Optimum
+from core.optimize import OBJECTIVES, Optimum, tolerance_text
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
 
@@ -49,6 +49,13 @@ def proposal_text(values: dict[str, float], value: float, best: Optimum, ends: d
     text = (translate("ExploreView", "Proposal: %1 %2 at %3 (the design before: %4), loaded into the "
                       "form; Undo proposal goes back.").replace("%1", f"{value:.5g}")
             .replace("%2", unit).replace("%3", where).replace("%4", start))
+    return text + end_warnings(ends)
+
+
+def end_warnings(ends: dict[str, str]) -> str:
+    """A red line for each parameter whose optimum is an end of its range (``ends``)."""
+    names = parameter_names()
+    text = ""
     for name, end in ends.items():
         warning = (translate("ExploreView", "%1 is at the lower end of its range: the best design may "
                              "lie below it; widen the range.") if end == "lower" else
@@ -56,3 +63,28 @@ def proposal_text(values: dict[str, float], value: float, best: Optimum, ends: d
                              "lie above it; widen the range."))
         text += f"<br><span style='color:#b71c1c'>{warning.replace('%1', names[name])}</span>"
     return text
+
+
+def no_gain_text(best: Optimum, ends: dict[str, str]) -> str:
+    """Why Optimize loads nothing: the objective does not depend on the free parameters
+    (``best.insensitive``), or the best found does not beat the design before by more
+    than the objective's tolerance (core.optimize.GAIN_TOLERANCE); then the red lines of
+    the parameters whose best is an end of its range (``ends``: none the objective
+    ignores), where a better design may lie beyond."""
+    unit = OBJECTIVES[best.objective][1]
+    names = parameter_names()
+    share = tolerance_text()
+    parts = []
+    if best.insensitive:
+        parts.append(translate("ExploreView", "The objective, %1, does not depend on %2: it changes by less "
+                               "than %3 of its value over the range.")
+                     .replace("%1", figure_titles()[best.objective])
+                     .replace("%2", ", ".join(names[n] for n in best.insensitive)).replace("%3", share))
+    if set(best.insensitive) != set(best.names):
+        parts.append(translate("ExploreView", "The best design found, %1 %2, is not better than the design "
+                               "before, %3 %2, by more than %4 of its value.")
+                     .replace("%1", f"{best.value:.5g}").replace("%2", unit)
+                     .replace("%3", f"{best.start_value:.5g}").replace("%4", share))
+    head = translate("ExploreView", "No better design within these bounds; the design is kept.")
+    return "<br>".join([head] + parts) + end_warnings(
+        {n: e for n, e in ends.items() if n not in best.insensitive})

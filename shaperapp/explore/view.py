@@ -294,11 +294,16 @@ class ExploreView(QWidget):
         self._start(job, self.tr("Optimizing…"), busy=True)
 
     def _optimum_done(self, job: OptimizeJob, best) -> None:
-        """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum)."""
-        values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
-        ends = on_bounds(best, job.bounds)
-        self.box.say(lambda: explore_names.proposal_text(values, value, best, ends))
+        """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum),
+        only when it beats the design on screen by more than the objective's tolerance
+        (core.optimize.improves); else say why there is no proposal and load nothing."""
         self.status.setText(self._map_status())       # no longer "Optimizing…"
+        ends = on_bounds(best, job.bounds)
+        if not best.improves:                         # nothing better: the design stays
+            self.box.say(lambda: explore_names.no_gain_text(best, ends))
+            return
+        values, value = tidy_optimum(job.spec, best, job.bounds, job.rpms, job.masses)
+        self.box.say(lambda: explore_names.proposal_text(values, value, best, ends))
         self.model.set_spec(**spec_changes(values))   # one step on the undo stack
         self.box.proposal_loaded()
 

@@ -228,16 +228,16 @@ class LibraryActions(QObject):
             self.failed.emit(self.message(exc))
             return False
         try:
-            self._load_into_model(doc)
+            self._load_into_model(doc, name)
         except DesignError as exc:          # an all-or-nothing load_state refuses and changes nothing
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe(exc)))
             return False
         return True
 
-    def _load_into_model(self, doc: dict) -> None:
+    def _load_into_model(self, doc: dict, name: str) -> None:
         """The one place the library replaces the model's design (see DesignModel.load_state)."""
         self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path="", masses=doc["masses"],
-                               parts={"cam": doc.get("cam")})
+                               parts={"cam": doc.get("cam")}, library_name=name)
 
     def candidates(self, names: Sequence[str]) -> list[Candidate]:
         """Library entries as comparison candidates (invalid ones reported and left out)."""

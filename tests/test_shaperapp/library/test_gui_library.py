@@ -246,7 +246,9 @@ def test_compare_selected_designs(pane, model, qtbot, tmp_path):
     assert design_pen(0).style() != design_pen(1).style()
     view.speed.setValue(60.0)
     assert view.comparison.rpm == 60.0
-    assert view.add_current() and len(view.candidates()) == 3
+    assert not view.add_current()       # the screen shows "rod" itself: refused, not a look-alike
+    model.set_spec(time_ratio=1.55)
+    assert model.valid_spec.time_ratio == 1.55 and view.add_current() and len(view.candidates()) == 3
     csv_path = tmp_path / "cmp.csv"
     view.export_csv(str(csv_path))
     assert csv_path.read_text(encoding="utf-8") == table_csv(compare(view.candidates(), 60.0))
@@ -265,7 +267,8 @@ def test_compare_view_with_too_few_designs_and_files(model, qtbot, tmp_path):
     save_design(path, Spec(time_ratio=1.5), [40.0], 1.0)
     assert view.add_file(str(path)) and view.add_current()
     assert view.comparison is not None and view.comparison.labels[0] == "f"
-    for _ in range(4):
+    for i in range(4):
+        model.set_spec(time_ratio=1.41 + 0.01 * i)    # the same design again is refused
         view.add_current()
     assert len(view.candidates()) == 6 and not view.add_current()
     view.list.setCurrentRow(0)
