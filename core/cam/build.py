@@ -144,7 +144,7 @@ def raised(arm_mm: float, program: Program, allowance: Allowance, roller_mm: flo
 
 def require_buildable(f: Follower, program: Program, roller_mm: float, room: Room,
                       checked: bool) -> None:
-    """DesignError naming the input that decides, and by how much, when the cam cannot be
+    """FitError (a DesignError) naming the input that decides, and by how much, when the cam cannot be
     built: the base radius or centre distance of a checked cam, else the swing (the
     synthesis found no cam that fits within the allowances)."""
     short = shortfalls(f, program, roller_mm, room)
@@ -152,10 +152,10 @@ def require_buildable(f: Follower, program: Program, roller_mm: float, room: Roo
     profile_min = f.base_radius_mm - roller_mm
     profile_max = pitch_max_radius(f, program) - roller_mm
     if short["hub"] > tol:
-        raise DesignError("base" if checked else "hub", f.base_radius_mm if checked else room.hub_mm,
-                          f"leaves the profile's smallest radius r0 − r = {profile_min:.4g} mm, "
-                          f"{short['hub']:.4g} mm short of hub + clearance = "
-                          f"{room.hub_mm + room.clearance_mm:.4g} mm")
+        raise FitError("base" if checked else "hub", f.base_radius_mm if checked else room.hub_mm,
+                       f"the profile's smallest radius r0 − r = {profile_min:.4g} mm is "
+                       f"{short['hub']:.4g} mm short of hub + clearance = "
+                       f"{room.hub_mm + room.clearance_mm:.4g} mm")
     worst = "boss" if short["boss"] >= short["path"] else "path"
     if short[worst] > tol:
         what = (f"the profile's largest radius {profile_max:.4g} mm reaches {short['boss']:.4g} mm "
@@ -164,7 +164,11 @@ def require_buildable(f: Follower, program: Program, roller_mm: float, room: Roo
                 f"the roller's path (largest radius {profile_max + roller_mm:.4g} mm) reaches "
                 f"{short['path']:.4g} mm past a − clearance = {f.distance_mm - room.clearance_mm:.4g} mm")
         if checked:
-            raise DesignError("distance", f.distance_mm, f"too short: {what}")
-        raise DesignError("swing", program.swing_deg,
-                          f"too large for this arm: no cam within the allowances clears the pivot "
-                          f"(the smallest: {what})")
+            raise FitError("distance", f.distance_mm, what)
+        raise FitError("swing", program.swing_deg,
+                       f"no cam within the allowances clears the pivot; the smallest: {what}")
+
+
+class FitError(DesignError):
+    """A cam that does not fit its hub, boss or pivot. It names the input that decides;
+    a form may mark the field just edited instead (any of the cam's inputs can cause it)."""
