@@ -22,7 +22,7 @@ def type_into(qtbot, tab, name, text):
     tab.form.commit()
 
 
-@pytest.mark.parametrize("name, text", [("rise", "300"), ("return", "300"), ("dwell", "250")])
+@pytest.mark.parametrize("name, text", [("rise", "300"), ("return", "300")])
 def test_a_phase_that_overfills_the_turn_marks_the_field_typed(qtbot, tab, name, text):
     # issue 34: typing rise = 300 marked the Outer dwell field
     before = tab.cam_model.cam
@@ -84,3 +84,20 @@ def test_a_bad_hub_marks_the_hub(qtbot, tab, text):
     type_into(qtbot, tab, "hub", text)
     assert tab.form.marked_fields() == ["hub"]
     assert tab.cam_model.cam is before
+
+
+def test_every_fit_message_has_a_translatable_template():
+    """Each way a cam does not fit matches one of the messages' templates, so the Chinese
+    UI never shows core's English sentence."""
+    import re
+
+    from core.cam import CamInputs, Program, design_cam
+    from core.errors import DesignError
+    from shaperapp.widgets.messages import _PATTERNS
+    attempts = [dict(base_mm=20.0, distance_mm=110.0), dict(base_mm=60.0, distance_mm=100.0, boss_mm=40.0),
+                dict(base_mm=80.0, distance_mm=100.0), dict(program=Program(60.0, 100.0, 10.0, 60.0)),
+                dict(boss_mm=500.0)]
+    for attempt in attempts:
+        with pytest.raises(DesignError) as info:
+            design_cam(CamInputs(arm_mm=120.0, **attempt))
+        assert any(re.match(p, info.value.allowed) for p, _ in _PATTERNS), info.value.allowed
