@@ -3035,6 +3035,18 @@
         <translation>超出</translation>
     </message>
     <message>
+        <source>(at least hub + clearance = %1 mm)</source>
+        <translation>（不小于轮毂半径 + 间隙 = %1 mm）</translation>
+    </message>
+    <message>
+        <source>(at most a − boss − clearance = %1 mm)</source>
+        <translation>（不大于 a − 凸台半径 − 间隙 = %1 mm）</translation>
+    </message>
+    <message>
+        <source>base radius raised from %1 mm to clear the hub, the boss and the pivot</source>
+        <translation>基圆半径由 %1 mm 增大，以避开轮毂、凸台和摆动中心</translation>
+    </message>
+    <message>
         <source>Centre distance a</source>
         <translation>中心距 a</translation>
     </message>
@@ -3061,6 +3073,14 @@
     <message>
         <source>Base radius of the profile r0 − r</source>
         <translation>实际廓线基圆半径 r0 − r</translation>
+    </message>
+    <message>
+        <source>Largest radius of the profile R1 − r</source>
+        <translation>实际廓线最大半径 R1 − r</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>说明</translation>
     </message>
     <message>
         <source>Follower's largest ω / α at %1 r/min</source>

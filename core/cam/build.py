@@ -130,7 +130,7 @@ def raised(arm_mm: float, program: Program, allowance: Allowance, roller_mm: flo
     cam, with this roller, clears the hub, the boss and the pivot; None if there is none.
     Both arrangements are tried; the smaller wins."""
     swing = math.radians(program.swing_deg)
-    low = max(least_mm, room.hub_mm + room.clearance_mm + roller_mm)
+    low = max(least_mm, (room.hub_mm + room.clearance_mm + roller_mm) * (1.0 + 1e-12))   # past rounding
     reach = max(room.boss_mm + room.clearance_mm - roller_mm, room.clearance_mm)
     found = []
     for side in (1, -1):

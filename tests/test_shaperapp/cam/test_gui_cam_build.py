@@ -101,3 +101,30 @@ def test_every_fit_message_has_a_translatable_template():
         with pytest.raises(DesignError) as info:
             design_cam(CamInputs(arm_mm=120.0, **attempt))
         assert any(re.match(p, info.value.allowed) for p, _ in _PATTERNS), info.value.allowed
+
+
+def test_the_chinese_report_says_the_raise_and_the_room_in_chinese(qapp):
+    """The report's cam figures (``shaper cam``'s rows) of a raised cam: every row has a
+    label, and no English word is left in a value but the units and symbols."""
+    import re
+
+    from core.cam import CamInputs, Program, design_cam
+    from core.cam.table import cam_summary, follower_peaks
+    from core.cli.cmd_cam import summary_rows
+    from shaperapp.report.cam import _labels, value_text
+    from shaperapp.widgets import i18n
+    cam = design_cam(CamInputs(arm_mm=120.0, program=Program(15.0, 100.0, 10.0, 60.0)))
+    summary = {**cam_summary(cam), **follower_peaks(cam, 60.0)}
+    rows = summary_rows(summary)
+    assert "note" in dict(rows)
+    i18n.set_language("zh_CN")
+    try:
+        labels = _labels(60.0)
+        shown_rows = [(labels[k], value_text(v)) for k, v in rows if k in labels]
+    finally:
+        i18n.set_language("en")
+    keys = [k for k, _ in rows if k not in ("arrangement",)]
+    assert all(k in labels for k in keys), [k for k in keys if k not in labels]
+    words = {w for _, v in shown_rows for w in re.findall(r"[A-Za-z]{2,}", v)}
+    assert words <= {"mm", "rad", "min"}, words
+    assert any("18.888" in v and "基圆半径" in v for _, v in shown_rows)
