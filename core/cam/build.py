@@ -151,12 +151,12 @@ def require_buildable(f: Follower, program: Program, roller_mm: float, room: Roo
     tol = 1e-9 * max(f.distance_mm, f.arm_mm)
     profile_min = f.base_radius_mm - roller_mm
     profile_max = pitch_max_radius(f, program) - roller_mm
-    if short["hub"] > tol:
+    if short["hub"] > tol and (checked or max(short["boss"], short["path"]) <= tol):
         raise FitError("base" if checked else "hub", f.base_radius_mm if checked else room.hub_mm,
                        f"the profile's smallest radius r0 − r = {profile_min:.4g} mm is "
                        f"{short['hub']:.4g} mm short of hub + clearance = "
                        f"{room.hub_mm + room.clearance_mm:.4g} mm")
-    worst = "boss" if short["boss"] >= short["path"] else "path"
+    worst = "boss" if short["boss"] >= short["path"] else "path"     # (a synthesis names the swing first)
     if short[worst] > tol:
         what = (f"the profile's largest radius {profile_max:.4g} mm reaches {short['boss']:.4g} mm "
                 f"past a − boss − clearance = {f.distance_mm - room.boss_mm - room.clearance_mm:.4g} mm"
