@@ -13,6 +13,7 @@ from core.cam.table import cam_summary, follower_peaks
 from core.cli.cmd_cam import summary_rows as cam_rows
 from core.errors import DesignError
 from core.geometry import Design
+from shaperapp.widgets.messages import describe
 
 from . import figures
 from .blocks import Figure, Heading, KeyValues, Paragraph
@@ -75,7 +76,7 @@ def cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle:
         cam = design_cam(inputs, design, idle, phase)
     except DesignError as exc:
         blocks.append(Paragraph(translate("Report", "The feed cam cannot be made for this design: %1")
-                                .replace("%1", f"{exc.parameter}: {exc.allowed}")))
+                                .replace("%1", describe(exc))))      # in the report's language
         return blocks
     summary = cam_summary(cam)
     summary.update(follower_peaks(cam, rpm))

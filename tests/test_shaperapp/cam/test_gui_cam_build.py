@@ -128,3 +128,23 @@ def test_the_chinese_report_says_the_raise_and_the_room_in_chinese(qapp):
     words = {w for _, v in shown_rows for w in re.findall(r"[A-Za-z]{2,}", v)}
     assert words <= {"mm", "rad", "min"}, words
     assert any("18.888" in v and "基圆半径" in v for _, v in shown_rows)
+
+
+def test_a_chinese_report_of_a_cam_that_does_not_fit_says_why_in_chinese(qapp):
+    """A design file's checked cam that dips into the hub: the report's cam section says
+    it cannot be made, naming the field and the shortfall in the report's language."""
+    import re
+
+    from core.cam import CamInputs, Program
+    from core.spec import Spec
+    from shaperapp.report.cam import cam_blocks
+    from shaperapp.widgets import i18n
+    inputs = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0), base_mm=20.0, distance_mm=110.0)
+    i18n.set_language("zh_CN")
+    try:
+        blocks = cam_blocks((inputs, None), Spec().design(), 0.05, 60.0, 10, None)
+    finally:
+        i18n.set_language("en")
+    text = blocks[-1].html
+    assert "基圆半径" in text and "0.7908" in text and "轮毂" in text
+    assert re.findall(r"[A-Za-z]{2,}", text) == ["mm", "mm", "mm"]
