@@ -38,6 +38,9 @@ the assembly's tolerance). The form's default cam (arm 120 mm) clears the hub by
 and the boss by 30.7 mm, and the course data sheet's (cosine/parabolic) by 2.4 and
 44.8 mm, so both are unchanged; the issue's rise-100° cam (profile base radius 6.6 mm)
 is not."""
+MIN_ROLLER_MM = 3.0
+"""The smallest roller the automatic choice of a checked cam shrinks to so that its profile
+clears the hub (a Ø6 mm roller, about the smallest needle roller made)."""
 CIRCLE_SAMPLES = 3600
 """Centres tried on each circle about the roller's lowest point (every 0.1°)."""
 RADIUS_TOLERANCE = 1e-6
@@ -69,6 +72,14 @@ def shortfalls(f: Follower, program: Program, roller_mm: float, room: Room) -> d
     return {"hub": room.hub_mm + c - (f.base_radius_mm - roller_mm),
             "boss": (r1 - roller_mm) - (a - room.boss_mm - c),
             "path": r1 - (a - c)}
+
+
+def roller_for_hub(biggest_mm: float, f: Follower, room: Room) -> float:
+    """The automatic roller of a checked cam: the largest, made smaller (down to
+    MIN_ROLLER_MM) when the profile would otherwise dip into the hub's clearance; a cam
+    that even that one leaves short is then refused by how much with it."""
+    left = f.base_radius_mm - room.hub_mm - room.clearance_mm
+    return min(biggest_mm, max(left, MIN_ROLLER_MM))
 
 
 def _inside(ring: np.ndarray, points: np.ndarray) -> np.ndarray:

@@ -14,7 +14,8 @@ import numpy as np
 from ..errors import DesignError, require_range
 from .follower import Follower, check_follower, curvature_radius, pitch, pressure_angle
 from .laws import Program
-from .build import BOSS_MM, CLEARANCE_MM, HUB_MM, Room, pitch_max_radius, raised, require_buildable, shortfalls
+from .build import (BOSS_MM, CLEARANCE_MM, HUB_MM, Room, pitch_max_radius, raised, require_buildable,
+                    roller_for_hub, shortfalls)
 from .synthesis import SAMPLES, Allowance, largest_roller, synthesize
 from .timing import Timing, timing
 
@@ -162,6 +163,8 @@ def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
     biggest = _largest(inputs, rho)
     roller = biggest if inputs.roller_mm is None else inputs.roller_mm
     _check_roller(roller, biggest, rho)
+    if inputs.roller_mm is None and inputs.base_mm is not None:
+        roller = roller_for_hub(biggest, f, inputs.room)
     least = f.base_radius_mm
     if inputs.base_mm is None and max(shortfalls(f, inputs.program, roller, inputs.room).values()) > 0.0:
         f, roller, (up, back, rho, biggest) = _fitted(inputs, f, roller)

@@ -68,14 +68,14 @@ def test_a_room_no_cam_can_clear_marks_its_field_and_keeps_the_cam(qtbot, tab, n
 
 def test_a_checked_cam_that_dips_into_the_hub_marks_the_base(qtbot, tab):
     before = tab.cam_model.cam
-    type_into(qtbot, tab, "base", "20")
+    type_into(qtbot, tab, "base", "17")
     type_into(qtbot, tab, "distance", "110")
     assert tab.form.marked_fields() == ["base"]
     assert "short of hub + clearance" in tab.form.error_label.text()
     assert tab.cam_model.cam is before
     type_into(qtbot, tab, "hub", "5")           # a smaller hub: the same cam fits
     assert tab.form.marked_fields() == []
-    assert tab.cam_model.cam.base_radius_mm == pytest.approx(20.0)
+    assert tab.cam_model.cam.base_radius_mm == pytest.approx(17.0)
 
 
 @pytest.mark.parametrize("text", ["abc", "-1"])
@@ -94,7 +94,7 @@ def test_every_fit_message_has_a_translatable_template():
     from core.cam import CamInputs, Program, design_cam
     from core.errors import DesignError
     from shaperapp.widgets.messages import _PATTERNS
-    attempts = [dict(base_mm=20.0, distance_mm=110.0), dict(base_mm=60.0, distance_mm=100.0, boss_mm=40.0),
+    attempts = [dict(base_mm=17.0, distance_mm=110.0), dict(base_mm=60.0, distance_mm=100.0, boss_mm=40.0),
                 dict(base_mm=80.0, distance_mm=100.0), dict(program=Program(60.0, 100.0, 10.0, 60.0)),
                 dict(boss_mm=500.0)]
     for attempt in attempts:
@@ -139,12 +139,12 @@ def test_a_chinese_report_of_a_cam_that_does_not_fit_says_why_in_chinese(qapp):
     from core.spec import Spec
     from shaperapp.report.cam import cam_blocks
     from shaperapp.widgets import i18n
-    inputs = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0), base_mm=20.0, distance_mm=110.0)
+    inputs = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0), base_mm=17.0, distance_mm=110.0)
     i18n.set_language("zh_CN")
     try:
         blocks = cam_blocks((inputs, None), Spec().design(), 0.05, 60.0, 10, None)
     finally:
         i18n.set_language("en")
     text = blocks[-1].html
-    assert "基圆半径" in text and "0.7908" in text and "轮毂" in text
+    assert "基圆半径" in text and "1.5 mm" in text and "轮毂" in text
     assert re.findall(r"[A-Za-z]{2,}", text) == ["mm", "mm", "mm"]
