@@ -155,9 +155,9 @@ def raised(arm_mm: float, program: Program, allowance: Allowance, roller_mm: flo
 
 def require_buildable(f: Follower, program: Program, roller_mm: float, room: Room,
                       checked: bool) -> None:
-    """FitError (a DesignError) naming the input that decides, and by how much, when the cam cannot be
-    built: the base radius or centre distance of a checked cam, else the swing (the
-    synthesis found no cam that fits within the allowances)."""
+    """FitError (a DesignError) naming the input that decides, and by how much, when the
+    cam cannot be built: the base radius or centre distance of a checked cam, else the
+    swing (the synthesis found no cam within the allowances that clears the pivot)."""
     short = shortfalls(f, program, roller_mm, room)
     tol = 1e-9 * max(f.distance_mm, f.arm_mm)
     profile_min = f.base_radius_mm - roller_mm
