@@ -143,6 +143,18 @@
         <translation>推程起点曲柄转角 φ</translation>
     </message>
     <message>
+        <source>Hub radius</source>
+        <translation>轮毂半径</translation>
+    </message>
+    <message>
+        <source>Pivot boss radius</source>
+        <translation>摆动中心凸台半径</translation>
+    </message>
+    <message>
+        <source>Least clearance</source>
+        <translation>最小间隙</translation>
+    </message>
+    <message>
         <source>parabolic</source>
         <translation>等加速等减速</translation>
     </message>
@@ -261,6 +273,18 @@
     <message>
         <source>Largest roller</source>
         <translation>最大滚子半径</translation>
+    </message>
+    <message>
+        <source>Profile radius r0 − r … R1 − r</source>
+        <translation>实际廓线半径 r0 − r … R1 − r</translation>
+    </message>
+    <message>
+        <source>Base radius raised</source>
+        <translation>基圆半径已增大</translation>
+    </message>
+    <message>
+        <source>from %1 mm, to clear the hub and the pivot</source>
+        <translation>由 %1 mm 增大，以避开轮毂和摆动中心</translation>
     </message>
     <message>
         <source>Rise at crank φ</source>
@@ -3138,6 +3162,18 @@
         <translation>超出</translation>
     </message>
     <message>
+        <source>(at least hub + clearance = %1 mm)</source>
+        <translation>（不小于轮毂半径 + 间隙 = %1 mm）</translation>
+    </message>
+    <message>
+        <source>(at most a − boss − clearance = %1 mm)</source>
+        <translation>（不大于 a − 凸台半径 − 间隙 = %1 mm）</translation>
+    </message>
+    <message>
+        <source>base radius raised from %1 mm to clear the hub, the boss and the pivot</source>
+        <translation>基圆半径由 %1 mm 增大，以避开轮毂、凸台和摆动中心</translation>
+    </message>
+    <message>
         <source>Centre distance a</source>
         <translation>中心距 a</translation>
     </message>
@@ -3164,6 +3200,14 @@
     <message>
         <source>Base radius of the profile r0 − r</source>
         <translation>实际廓线基圆半径 r0 − r</translation>
+    </message>
+    <message>
+        <source>Largest radius of the profile R1 − r</source>
+        <translation>实际廓线最大半径 R1 − r</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>说明</translation>
     </message>
     <message>
         <source>Follower's largest ω / α at %1 r/min</source>
@@ -4159,6 +4203,18 @@
         <translation>推程起点曲柄转角</translation>
     </message>
     <message>
+        <source>Hub radius</source>
+        <translation>轮毂半径</translation>
+    </message>
+    <message>
+        <source>Pivot boss radius</source>
+        <translation>摆动中心凸台半径</translation>
+    </message>
+    <message>
+        <source>Least clearance</source>
+        <translation>最小间隙</translation>
+    </message>
+    <message>
         <source>Input</source>
         <translation>输入方式</translation>
     </message>
@@ -4305,6 +4361,26 @@
     <message>
         <source>give the base radius and the centre distance together to check a cam</source>
         <translation>校核凸轮须同时给出基圆半径和中心距</translation>
+    </message>
+    <message>
+        <source>the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm</source>
+        <translation>实际廓线最小半径 r0 − r = %1 mm，比轮毂半径 + 间隙 = %3 mm 小 %2 mm</translation>
+    </message>
+    <message>
+        <source>the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
+        <translation>实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
+    </message>
+    <message>
+        <source>the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm</source>
+        <translation>滚子中心轨迹（最大半径 %1 mm）超出 a − 间隙 = %3 mm 达 %2 mm</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
+        <translation>在许用压力角内没有能避开摆动中心的凸轮；最小的凸轮：实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm</source>
+        <translation>在许用压力角内没有能避开摆动中心的凸轮；最小的凸轮：滚子中心轨迹（最大半径 %1 mm）超出 a − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
         <source>is not a design field</source>

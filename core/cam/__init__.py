@@ -3,7 +3,8 @@
 ``laws`` the motion laws and the program; ``follower`` the pitch curve, profile, pressure
 angle and curvature; ``synthesis`` the smallest base radius and the largest roller;
 ``timing`` the feed placed outside the linkage's cut; ``cam`` one cam from its inputs;
-``table`` its rows per cam angle and its figures; ``file`` its inputs in a design file.
+``build`` whether it clears its hub and the follower's pivot; ``table`` its rows per cam
+angle and its figures; ``file`` its inputs in a design file.
 
 Level: its own, just above the analysis level (it times the feed against ``core.cut``);
 it imports the analysis and mechanism levels only. Its DXF is ``core.cam_drawing``.

@@ -14,6 +14,8 @@ import numpy as np
 from ..errors import DesignError, require_range
 from .follower import Follower, check_follower, curvature_radius, pitch, pressure_angle
 from .laws import Program
+from .build import (BOSS_MM, CLEARANCE_MM, HUB_MM, Room, pitch_max_radius, raised, require_buildable,
+                    roller_for_hub, shortfalls)
 from .synthesis import SAMPLES, Allowance, largest_roller, synthesize
 from .timing import Timing, timing
 
@@ -26,7 +28,9 @@ the cam would be many times the arm's size."""
 @dataclass(frozen=True)
 class CamInputs:
     """The data sheet: arm length l (mm), the program, the allowances (degrees), and
-    optionally the roller (mm) and a base radius with its centre distance (mm) to check."""
+    optionally the roller (mm) and a base radius with its centre distance (mm) to check;
+    and what the cam must clear (mm): the camshaft's hub, the follower pivot's boss and the
+    least clearance between them and the profile (see :mod:`build`)."""
 
     arm_mm: float = 150.0
     program: Program = field(default_factory=Program)
@@ -35,6 +39,9 @@ class CamInputs:
     roller_mm: float | None = None
     base_mm: float | None = None
     distance_mm: float | None = None
+    hub_mm: float = HUB_MM
+    boss_mm: float = BOSS_MM
+    clearance_mm: float = CLEARANCE_MM
 
     def __post_init__(self) -> None:
         require_range("arm", self.arm_mm, MIN_ARM_MM, MAX_ARM_MM, "mm", low_open=False)
@@ -49,10 +56,16 @@ class CamInputs:
         if self.base_mm is not None:
             require_range("base", self.base_mm, 0.0, MAX_ARM_MM * 4, "mm")
             require_range("distance", self.distance_mm, 0.0, MAX_ARM_MM * 4, "mm")
+        for name in ("hub", "boss", "clearance"):
+            require_range(name, getattr(self, name + "_mm"), 0.0, MAX_ARM_MM, "mm", low_open=False)
 
     @property
     def allowance(self) -> Allowance:
         return Allowance(self.pressure_deg, self.return_pressure_deg)
+
+    @property
+    def room(self) -> Room:
+        return Room(self.hub_mm, self.boss_mm, self.clearance_mm)
 
 
 @dataclass(frozen=True)
@@ -67,6 +80,9 @@ class Cam:
     max_pressure_rise_deg: float
     max_pressure_return_deg: float
     timing: Timing | None = None
+    base_raised_from_mm: float | None = None
+    """The smallest base radius for the allowances alone, when the synthesis raised it to
+    clear the hub, the boss or the pivot (None: not raised)."""
 
     @property
     def program(self) -> Program:
@@ -75,6 +91,21 @@ class Cam:
     @property
     def base_radius_mm(self) -> float:
         return self.follower.base_radius_mm
+
+    @property
+    def profile_min_radius_mm(self) -> float:
+        """The profile's smallest radius r0 − r (exact, see :mod:`build`)."""
+        return self.follower.base_radius_mm - self.roller_mm
+
+    @property
+    def pitch_max_radius_mm(self) -> float:
+        """The pitch curve's largest radius R1: the roller's centre at ψmax."""
+        return pitch_max_radius(self.follower, self.program)
+
+    @property
+    def profile_max_radius_mm(self) -> float:
+        """The profile's largest radius R1 − r (exact, see :mod:`build`)."""
+        return self.pitch_max_radius_mm - self.roller_mm
 
     @property
     def within_allowance(self) -> bool:
@@ -129,15 +160,65 @@ def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
     else:
         f = checked_follower(inputs)
     up, back, rho = figures(f, inputs.program)
+    biggest = _largest(inputs, rho)
+    roller = biggest if inputs.roller_mm is None else inputs.roller_mm
+    _check_roller(roller, biggest, rho)
+    if inputs.roller_mm is None and inputs.base_mm is not None:
+        roller = roller_for_hub(biggest, f, inputs.room)
+    least = f.base_radius_mm
+    if inputs.base_mm is None and max(shortfalls(f, inputs.program, roller, inputs.room).values()) > 0.0:
+        f, roller, (up, back, rho, biggest) = _fitted(inputs, f, roller)
+    require_buildable(f, inputs.program, roller, inputs.room, checked=inputs.base_mm is not None)
+    raised_from = least if f.base_radius_mm > least else None
+    return Cam(inputs, f, roller, biggest, rho, up, back, when, raised_from)
+
+
+def _largest(inputs: CamInputs, rho: float) -> float:
+    """The largest roller for the pitch curve's smallest convex radius ``rho``."""
     biggest = largest_roller(rho)
     if biggest <= 0.0:
         raise DesignError("swing", inputs.program.swing_deg,
                           f"leaves the pitch curve too sharp for any roller (smallest convex radius "
                           f"{rho:.3g} mm); lengthen the rise or the return")
-    roller = biggest if inputs.roller_mm is None else inputs.roller_mm
+    return biggest
+
+
+def _check_roller(roller: float, biggest: float, rho: float) -> None:
     if roller > biggest * (1.0 + 1e-12):
         raise DesignError("roller", roller,
                           f"too large: must be ≤ {biggest:.4g} mm (r ≤ 0.8·ρmin and ρmin − r ≥ 3 mm); "
                           f"the pitch curve's smallest convex radius ρmin is {rho:.4g} mm, and a "
                           "roller that large undercuts the profile or leaves it pointed")
-    return Cam(inputs, f, roller, biggest, rho, up, back, when)
+
+
+FIT_ROUNDS = 4
+"""Raises tried while the automatic roller of the raised cam comes out smaller."""
+
+
+def _fitted(inputs: CamInputs, f: Follower, roller: float
+            ) -> tuple[Follower, float, tuple[float, float, float, float]]:
+    """The synthesized cam raised to clear the hub, the boss and the pivot with this roller.
+
+    An automatic roller is never made larger than the one the raise assumed (a larger one
+    would eat the hub's clearance again); when the raised cam's largest roller is smaller,
+    the raise is redone with it. When no raise fits, the smallest cam comes back as it was
+    (require_buildable then says why)."""
+    fixed = inputs.roller_mm is not None
+    least, best = f.base_radius_mm, (f, roller, None)
+    for _ in range(FIT_ROUNDS):
+        g = raised(inputs.arm_mm, inputs.program, inputs.allowance, roller, inputs.room, least)
+        if g is None:
+            break
+        up, back, rho = figures(g, inputs.program)
+        biggest = _largest(inputs, rho)
+        if fixed:
+            _check_roller(roller, biggest, rho)
+        fits = biggest >= roller * (1.0 - 1e-12)
+        best = (g, roller if fits or fixed else biggest, (up, back, rho, biggest))
+        if fits or fixed:
+            break
+        roller = biggest
+    if best[2] is None:
+        up, back, rho = figures(f, inputs.program)
+        return f, roller, (up, back, rho, _largest(inputs, rho))
+    return best

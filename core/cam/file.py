@@ -13,7 +13,8 @@ from .laws import Program
 from .timing import check_phase
 
 NUMBER_KEYS = ("arm_mm", "swing_deg", "rise_deg", "dwell_deg", "return_deg", "pressure_deg",
-               "return_pressure_deg")
+               "return_pressure_deg", "hub_mm", "boss_mm", "clearance_mm")
+"""Each may be missing (its default: files before issue 34 have no hub, boss or clearance)."""
 OPTIONAL_KEYS = ("roller_mm", "base_mm", "distance_mm", "phase_deg")
 TEXT_KEYS = ("rise_law", "return_law")
 
@@ -24,7 +25,8 @@ def cam_to_dict(inputs: CamInputs, phase_deg: float | None) -> dict[str, Any]:
             "dwell_deg": p.dwell_deg, "return_deg": p.return_deg, "rise_law": p.rise_law,
             "return_law": p.return_law, "pressure_deg": inputs.pressure_deg,
             "return_pressure_deg": inputs.return_pressure_deg, "roller_mm": inputs.roller_mm,
-            "base_mm": inputs.base_mm, "distance_mm": inputs.distance_mm, "phase_deg": phase_deg}
+            "base_mm": inputs.base_mm, "distance_mm": inputs.distance_mm, "hub_mm": inputs.hub_mm,
+            "boss_mm": inputs.boss_mm, "clearance_mm": inputs.clearance_mm, "phase_deg": phase_deg}
 
 
 def cam_from_dict(data: Any) -> tuple[CamInputs, float | None]:
@@ -56,6 +58,7 @@ def cam_from_dict(data: Any) -> tuple[CamInputs, float | None]:
                        pressure_deg=values.get("pressure_deg", base.pressure_deg),
                        return_pressure_deg=values.get("return_pressure_deg", base.return_pressure_deg),
                        roller_mm=values.get("roller_mm"), base_mm=values.get("base_mm"),
-                       distance_mm=values.get("distance_mm"))
+                       distance_mm=values.get("distance_mm"),
+                       **{key: values[key] for key in ("hub_mm", "boss_mm", "clearance_mm") if key in values})
     phase = values.get("phase_deg")
     return inputs, None if phase is None else check_phase(phase)

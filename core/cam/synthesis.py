@@ -93,10 +93,9 @@ def _inside(h: np.ndarray) -> np.ndarray | None:
     return _chebyshev(h)
 
 
-def _nearest(vertices: np.ndarray, p: np.ndarray) -> np.ndarray:
-    """The point of the convex polygon with these vertices nearest to ``p`` (outside it)."""
-    from scipy.spatial import ConvexHull
-    ring = vertices[ConvexHull(vertices).vertices]
+def _nearest(ring: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """The point of the convex polygon ``ring`` (its vertices in order) nearest to ``p``
+    (outside it)."""
     a, b = ring, np.roll(ring, -1, axis=0)
     ab = b - a
     t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.einsum("ij,ij->i", ab, ab), 0.0, 1.0)
@@ -104,15 +103,24 @@ def _nearest(vertices: np.ndarray, p: np.ndarray) -> np.ndarray:
     return q[np.argmin(np.hypot(*(q - p).T))]
 
 
-def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
-    """The follower arrangement on ``side`` with the smallest base radius, or None."""
-    from scipy.spatial import HalfspaceIntersection
+def admissible(arm_mm: float, program: Program, allowance: Allowance, side: int) -> np.ndarray | None:
+    """The polygon of admissible cam centres on ``side`` in the pivot's frame (its vertices
+    (n, 2) mm, counter-clockwise), or None when the allowances leave none."""
+    from scipy.spatial import ConvexHull, HalfspaceIntersection
     h = _halfspaces(arm_mm, TURN * side, program, allowance)
     centre = _inside(h)
     if centre is None:
         return None
     vertices = HalfspaceIntersection(h, centre).intersections
-    x, y = _nearest(vertices, np.array([arm_mm, 0.0]))
+    return vertices[ConvexHull(vertices).vertices]
+
+
+def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
+    """The follower arrangement on ``side`` with the smallest base radius, or None."""
+    ring = admissible(arm_mm, program, allowance, side)
+    if ring is None:
+        return None
+    x, y = _nearest(ring, np.array([arm_mm, 0.0]))
     if max(abs(x), abs(y)) >= REACH * arm_mm * (1.0 - 1e-9):
         return None
     return Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side)

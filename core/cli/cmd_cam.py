@@ -28,11 +28,13 @@ EXAMPLES = ("shaper cam --arm 120 --swing 15 --pressure 40 --rise 60 --dwell 10 
 # DesignError parameter → the option that sets it.
 CAM_PARAMETERS = {"--arm": "arm", "--swing": "swing", "--pressure": "pressure",
                   "--return-pressure": "return_pressure", "--rise": "rise", "--dwell": "dwell",
-                  "--return": "return", "--roller": "roller", "--base": "base", "--distance": "distance"}
+                  "--return": "return", "--roller": "roller", "--base": "base", "--distance": "distance",
+                  "--hub": "hub", "--boss": "boss", "--clearance": "clearance"}
 CAM_OPTIONS = {"arm": "--arm", "swing": "--swing", "pressure": "--pressure",
                "return_pressure": "--return-pressure", "rise": "--rise", "dwell": "--dwell",
                "return": "--return", "rise_law": "--law", "return_law": "--return-law",
                "roller": "--roller", "base": "--base", "distance": "--distance",
+               "hub": "--hub", "boss": "--boss", "clearance": "--clearance",
                "phase": "--phase", "idle_fraction": "--idle", "rpm": "--rpm", "step": "--step"}
 DESIGN_DESTS = ("crank", "time_ratio", "stroke", "dims", "design", "guide", "rod", "rod_ratio",
                 "rod_side")
@@ -76,6 +78,12 @@ def add_cam_options(parser: argparse.ArgumentParser,
     cam.add_argument("--base", metavar="MM", help="base-circle radius of the pitch curve, mm, to check "
                      "a cam instead of synthesizing one (with --distance)")
     cam.add_argument("--distance", metavar="MM", help="centre distance cam–pivot, mm (with --base)")
+    cam.add_argument("--hub", metavar="MM", help="radius of the camshaft's hub, which the profile must "
+                     "clear, mm (default 12.5)")
+    cam.add_argument("--boss", metavar="MM", help="radius of the boss around the follower's pivot, "
+                     "which the cam must clear, mm (default 12.5)")
+    cam.add_argument("--clearance", metavar="MM", help="least gap between the profile and the hub or "
+                     "the boss, mm (default 3); a synthesized cam is enlarged to keep it")
     return cam
 
 
@@ -88,7 +96,8 @@ def add_phase_option(group) -> None:
 SHEET = (("--arm", "arm", "arm_mm"), ("--swing", "swing", "swing_deg"), ("--pressure", "pressure", "pressure_deg"),
          ("--rise", "rise", "rise_deg"), ("--dwell", "dwell", "dwell_deg"), ("--return", "back", "return_deg"))
 OPTIONAL = (("--return-pressure", "return_pressure", "return_pressure_deg"), ("--roller", "roller", "roller_mm"),
-            ("--base", "base", "base_mm"), ("--distance", "distance", "distance_mm"))
+            ("--base", "base", "base_mm"), ("--distance", "distance", "distance_mm"),
+            ("--hub", "hub", "hub_mm"), ("--boss", "boss", "boss_mm"), ("--clearance", "clearance", "clearance_mm"))
 
 
 def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
@@ -112,7 +121,8 @@ def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
     inputs = CamInputs(arm_mm=values["arm_mm"], program=program, pressure_deg=values["pressure_deg"],
                        return_pressure_deg=values.get("return_pressure_deg", 70.0),
                        roller_mm=values.get("roller_mm"), base_mm=values.get("base_mm"),
-                       distance_mm=values.get("distance_mm"))
+                       distance_mm=values.get("distance_mm"),
+                       **{key: values[key] for key in ("hub_mm", "boss_mm", "clearance_mm") if key in values})
     phase = number("phase", args.phase) if args.phase is not None else saved.get("phase_deg")
     return inputs, phase
 
@@ -230,9 +240,15 @@ def summary_rows(s: dict) -> list[tuple[str, str]]:
              f"{s['allowed_pressure_angle_return_deg']:g} °)"),
             ("min convex radius ρmin (pitch curve)", f"{s['min_curvature_radius_mm']:.3f} mm"),
             ("roller r", f"{s['roller_mm']:.3f} mm (largest {s['largest_roller_mm']:.3f} mm)"),
-            ("profile base radius r0 − r", f"{s['profile_base_radius_mm']:.3f} mm"),
+            ("profile base radius r0 − r", f"{s['profile_base_radius_mm']:.3f} mm (at least hub + "
+             f"clearance = {s['hub_mm'] + s['clearance_mm']:g} mm)"),
+            ("profile's largest radius R1 − r", f"{s['profile_max_radius_mm']:.3f} mm (at most a − boss − "
+             f"clearance = {s['center_distance_mm'] - s['boss_mm'] - s['clearance_mm']:.3f} mm)"),
             (f"follower max ω / α at {s['rpm']:g} r/min",
              f"{s['follower_omega_max_rad_s']:.4g} rad/s / {s['follower_alpha_max_rad_s2']:.4g} rad/s²")]
+    if s["base_raised_from_mm"] is not None:
+        rows.append(("note", f"base radius raised from {s['base_raised_from_mm']:.3f} mm to clear "
+                     "the hub, the boss and the pivot"))
     if not s["within_allowance"]:
         rows.append(("allowance", "EXCEEDED"))
     if "phase_deg" in s:

@@ -15,7 +15,8 @@ from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
 from .model import CHOICES, NUMBERS, OPTIONAL, CamModel
 
 UNITS = {"arm": "mm", "swing": "°", "pressure": "°", "return_pressure": "°", "rise": "°",
-         "dwell": "°", "return": "°", "roller": "mm", "base": "mm", "distance": "mm", "phase": "°"}
+         "dwell": "°", "return": "°", "roller": "mm", "base": "mm", "distance": "mm", "phase": "°",
+         "hub": "mm", "boss": "mm", "clearance": "mm"}
 
 
 class CamForm(QWidget):
@@ -37,7 +38,7 @@ class CamForm(QWidget):
         self._labels = {name: QLabel(self) for name in NUMBERS + OPTIONAL + CHOICES}
         layout = QFormLayout()
         order = ("arm", "swing", "rise", "dwell", "return", "rise_law", "return_law", "pressure",
-                 "return_pressure", "roller", "base", "distance", "phase")
+                 "return_pressure", "roller", "base", "distance", "hub", "boss", "clearance", "phase")
         for name in order:
             widget = self.laws[name] if name in CHOICES else self.fields[name]
             layout.addRow(self._labels[name], widget)
@@ -70,6 +71,8 @@ class CamForm(QWidget):
             "return_pressure": self.tr("[α] return"),
             "roller": self.tr("Roller r"), "base": self.tr("Check base r0"),
             "distance": self.tr("Check distance a"), "phase": self.tr("Rise at crank φ"),
+            "hub": self.tr("Hub radius"), "boss": self.tr("Pivot boss radius"),
+            "clearance": self.tr("Least clearance"),
         }
         for name, label in self._labels.items():
             label.setText(texts[name])

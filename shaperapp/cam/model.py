@@ -16,18 +16,24 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from core.cam import Cam, CamInputs, Program, design_cam
+from core.cam.build import BOSS_MM, CLEARANCE_MM, HUB_MM, FitError
 from core.cam.file import cam_from_dict, cam_to_dict
 from core.errors import DesignError
 from shaperapp.design.model import DesignModel
 from shaperapp.design.results import COMPUTE_ERRORS, compute_error
 from shaperapp.design.undo import InputEdit, push_edit
 
-NUMBERS = ("arm", "swing", "pressure", "return_pressure", "rise", "dwell", "return")
+NUMBERS = ("arm", "swing", "pressure", "return_pressure", "rise", "dwell", "return", "hub", "boss",
+           "clearance")
 OPTIONAL = ("roller", "base", "distance", "phase")      # blank: chosen by the tool
 CHOICES = ("rise_law", "return_law")
 DEFAULTS: dict[str, Any] = {"arm": 120.0, "swing": 15.0, "pressure": 40.0, "return_pressure": 70.0,
                             "rise": 60.0, "dwell": 10.0, "return": 60.0, "rise_law": "sine",
-                            "return_law": "sine", "roller": "", "base": "", "distance": "", "phase": ""}
+                            "return_law": "sine", "roller": "", "base": "", "distance": "", "phase": "",
+                            "hub": HUB_MM, "boss": BOSS_MM, "clearance": CLEARANCE_MM}
+PHASES = ("rise", "dwell", "return")
+"""The fields whose sum must fit in a turn: the one typed last is the one marked."""
+SUM_TEXT = "must fit in 360°"
 
 
 @dataclass(frozen=True)
@@ -67,8 +73,26 @@ def cam_inputs(typed: CamTyped) -> tuple[CamInputs, float | None]:
                        pressure_deg=_number("pressure", v["pressure"]),
                        return_pressure_deg=_number("return_pressure", v["return_pressure"]),
                        roller_mm=_optional("roller", v["roller"]), base_mm=_optional("base", v["base"]),
-                       distance_mm=_optional("distance", v["distance"]))
+                       distance_mm=_optional("distance", v["distance"]), hub_mm=_number("hub", v["hub"]),
+                       boss_mm=_number("boss", v["boss"]), clearance_mm=_number("clearance", v["clearance"]))
     return inputs, _optional("phase", v["phase"])
+
+
+def blamed(error: DesignError, typed: CamTyped, edited: list[str]) -> DesignError:
+    """The error as the form shows it: a condition on several fields (the phases' sum, a cam
+    that does not fit its hub or pivot) keeps core's field if it was typed since the last
+    valid cam, else names the one of them typed last (issue 34: typing rise = 300 marked
+    the outer dwell)."""
+    if isinstance(error, FitError):
+        group = tuple(n for n in DEFAULTS if n != "phase")
+    elif SUM_TEXT in error.allowed:
+        group = PHASES
+    else:
+        return error
+    recent = [n for n in edited if n in group]
+    if not recent or error.parameter in recent:
+        return error
+    return DesignError(recent[-1], typed.dict[recent[-1]], error.allowed)
 
 
 class CamModel(QObject):
@@ -87,6 +111,7 @@ class CamModel(QObject):
         self._stale = True          # else it only marks the cam stale (an edit stays ~30 ms cheaper,
         self._cam: Cam | None = None    # and start-up computes no cam)
         self._valid_typed = self._typed
+        self._edited: list[str] = []    # fields changed since the last valid cam, the latest last
         model.register_part("cam", self.document)
         model.loaded.connect(self._load)
         model.resultsChanged.connect(self._linkage_changed)
@@ -146,14 +171,18 @@ class CamModel(QObject):
     def _load(self) -> None:
         """A file was opened (or New): its cam, or the default one."""
         data = self.design_model.loaded_part("cam")
-        self._apply(CamTyped() if data is None else typed_from(*cam_from_dict(data)))
+        self._edited = []
+        self._apply(CamTyped() if data is None else typed_from(*cam_from_dict(data)), edited=False)
 
     def _compute(self, typed: CamTyped) -> Cam:
         inputs, phase = cam_inputs(typed)
         m = self.design_model
         return design_cam(inputs, m.design, m.masses.idle_fraction, phase)
 
-    def _apply(self, typed: CamTyped) -> None:
+    def _apply(self, typed: CamTyped, edited: bool = True) -> None:
+        if edited:          # an edit, an undo or a redo: what changed is what was typed
+            changed = sorted(k for k, v in typed.dict.items() if self._typed.dict.get(k) != v)
+            self._edited = [n for n in self._edited if n not in changed] + changed
         self._typed = typed
         self.typedChanged.emit()
         self._recompute()
@@ -163,7 +192,7 @@ class CamModel(QObject):
         try:
             cam = self._compute(self._typed)
         except DesignError as exc:
-            self._set_error(exc)
+            self._set_error(blamed(exc, self._typed, self._edited))
             self._keep_some_cam()
             return
         except COMPUTE_ERRORS as exc:
@@ -171,6 +200,7 @@ class CamModel(QObject):
             self._keep_some_cam()
             return
         self._set_error(None)
+        self._edited = []
         self._valid_typed = self._typed
         if cam != self._cam:
             self._cam = cam
@@ -199,4 +229,5 @@ def typed_from(inputs: CamInputs, phase_deg: float | None) -> CamTyped:
                             **{"return": p.return_deg}, rise_law=p.rise_law, return_law=p.return_law,
                             pressure=inputs.pressure_deg, return_pressure=inputs.return_pressure_deg,
                             roller=blank(inputs.roller_mm), base=blank(inputs.base_mm),
-                            distance=blank(inputs.distance_mm), phase=blank(phase_deg))
+                            distance=blank(inputs.distance_mm), phase=blank(phase_deg),
+                            hub=inputs.hub_mm, boss=inputs.boss_mm, clearance=inputs.clearance_mm)

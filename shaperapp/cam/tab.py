@@ -96,7 +96,13 @@ class CamTab(QWidget):
                 (self.tr("Max α return"), f"{cam.max_pressure_return_deg:.3f} °"),
                 (self.tr("ρmin (convex)"), f"{cam.min_curvature_radius_mm:.3f} mm"),
                 (self.tr("Roller r"), f"{cam.roller_mm:.3f} mm"),
-                (self.tr("Largest roller"), f"{cam.largest_roller_mm:.3f} mm")]
+                (self.tr("Largest roller"), f"{cam.largest_roller_mm:.3f} mm"),
+                (self.tr("Profile radius r0 − r … R1 − r"),
+                 f"{cam.profile_min_radius_mm:.3f} … {cam.profile_max_radius_mm:.3f} mm")]
+        if cam.base_raised_from_mm is not None:
+            rows.append((self.tr("Base radius raised"),
+                         self.tr("from %1 mm, to clear the hub and the pivot").replace(
+                             "%1", f"{cam.base_raised_from_mm:.3f}")))
         if cam.timing is not None:
             rows.append((self.tr("Rise at crank φ"), f"{cam.timing.phase_deg:.3f} °"))
         if not cam.within_allowance:

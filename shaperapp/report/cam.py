@@ -13,6 +13,7 @@ from core.cam.table import cam_summary, follower_peaks
 from core.cli.cmd_cam import summary_rows as cam_rows
 from core.errors import DesignError
 from core.geometry import Design
+from shaperapp.widgets.messages import describe
 
 from . import figures
 from .blocks import Figure, Heading, KeyValues, Paragraph
@@ -26,6 +27,12 @@ _VALUE_WORDS = (
     (re.compile(r"\(cut ends at (\S+) °, (\S+) ° clear\)"),
      lambda: translate("Report", "(cut ends at %1 °, %2 ° clear)")),
     (re.compile(r"^EXCEEDED$"), lambda: translate("Report", "exceeded")),
+    (re.compile(r"\(at least hub \+ clearance = (\S+) mm\)"),
+     lambda: translate("Report", "(at least hub + clearance = %1 mm)")),
+    (re.compile(r"\(at most a − boss − clearance = (\S+) mm\)"),
+     lambda: translate("Report", "(at most a − boss − clearance = %1 mm)")),
+    (re.compile(r"^base radius raised from (\S+) mm to clear the hub, the boss and the pivot$"),
+     lambda: translate("Report", "base radius raised from %1 mm to clear the hub, the boss and the pivot")),
 )
 
 
@@ -51,6 +58,8 @@ def _labels(rpm: float) -> dict[str, str]:
         "min convex radius ρmin (pitch curve)": translate("Report", "Smallest convex radius ρmin of the pitch curve"),
         "roller r": translate("Report", "Roller radius r"),
         "profile base radius r0 − r": translate("Report", "Base radius of the profile r0 − r"),
+        "profile's largest radius R1 − r": translate("Report", "Largest radius of the profile R1 − r"),
+        "note": translate("Report", "Note"),
         f"follower max ω / α at {rpm:g} r/min":
             translate("Report", "Follower's largest ω / α at %1 r/min").replace("%1", f"{rpm:g}"),
         "allowance": translate("Report", "Pressure angle allowance"),
@@ -67,7 +76,7 @@ def cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle:
         cam = design_cam(inputs, design, idle, phase)
     except DesignError as exc:
         blocks.append(Paragraph(translate("Report", "The feed cam cannot be made for this design: %1")
-                                .replace("%1", f"{exc.parameter}: {exc.allowed}")))
+                                .replace("%1", describe(exc))))      # in the report's language
         return blocks
     summary = cam_summary(cam)
     summary.update(follower_peaks(cam, rpm))

@@ -59,6 +59,9 @@ def field_name(parameter: str) -> str:
         "base": QCoreApplication.translate("messages", "Base radius r0"),
         "distance": QCoreApplication.translate("messages", "Centre distance a"),
         "phase": QCoreApplication.translate("messages", "Phase of the rise"),
+        "hub": QCoreApplication.translate("messages", "Hub radius"),
+        "boss": QCoreApplication.translate("messages", "Pivot boss radius"),
+        "clearance": QCoreApplication.translate("messages", "Least clearance"),
         "mode": QCoreApplication.translate("messages", "Input"),
         "variant": QCoreApplication.translate("messages", "Ram drive"),
         "guide_rule": QCoreApplication.translate("messages", "Ram guide"),
@@ -128,6 +131,21 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
     (r"give --base and --distance together to check a cam$",
      "give the base radius and the centre distance together to check a cam"),
+    # a cam that does not fit its hub or the follower's pivot (core.cam.build)
+    (r"the profile's smallest radius r0 − r = (\S+) mm is (\S+) mm short of hub \+ clearance = (\S+) mm$",
+     "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
+    (r"the profile's largest radius (\S+) mm reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
+     "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
+    (r"the roller's path \(largest radius (\S+) mm\) reaches (\S+) mm past a − clearance = (\S+) mm$",
+     "the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm"),
+    (r"no cam within the allowances clears the pivot; the smallest: the profile's largest radius (\S+) mm "
+     r"reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
+     "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm "
+     "reaches %2 mm past a − boss − clearance = %3 mm"),
+    (r"no cam within the allowances clears the pivot; the smallest: the roller's path \(largest radius (\S+) mm\) "
+     r"reaches (\S+) mm past a − clearance = (\S+) mm$",
+     "no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) "
+     "reaches %2 mm past a − clearance = %3 mm"),
     # what a design file can hold wrong (core.design_file, Spec.from_dict, core.cam.file)
     (r"is not a design field$", "is not a design field"),
     (r"is not a load input$", "is not a load input"),
@@ -197,6 +215,16 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
         "give the base radius and the centre distance together to check a cam":
             QCoreApplication.translate("messages", "give the base radius and the centre distance together to check a cam"),
+        "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm":
+            QCoreApplication.translate("messages", "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
+        "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
+            QCoreApplication.translate("messages", "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
+        "the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm":
+            QCoreApplication.translate("messages", "the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm"),
+        "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
+            QCoreApplication.translate("messages", "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
+        "no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm":
+            QCoreApplication.translate("messages", "no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm"),
         "is not a design field": QCoreApplication.translate("messages", "is not a design field"),
         "is not a load input": QCoreApplication.translate("messages", "is not a load input"),
         "is not a cam field": QCoreApplication.translate("messages", "is not a cam field"),

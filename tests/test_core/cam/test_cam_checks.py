@@ -124,8 +124,8 @@ def test_synthesized_cam_meets_the_allowance_and_reaches_it(sheet_cam):
     SHEET,
     CamInputs(arm_mm=80.0, program=Program(swing_deg=25.0, rise_deg=100.0, dwell_deg=0.0,
                                            return_deg=80.0, rise_law="poly345", return_law="sine"),
-              pressure_deg=35.0, return_pressure_deg=60.0),
-])
+              pressure_deg=35.0, return_pressure_deg=60.0, hub_mm=0.0, boss_mm=0.0, clearance_mm=0.0),
+])  # (the second, with the default hub and boss, is raised to clear them: see test_cam_build)
 def test_base_radius_two_percent_smaller_breaks_the_allowance(inputs):
     cam = design_cam(inputs)
     prog = inputs.program

@@ -1,0 +1,185 @@
+"""Whether a cam can be built: its profile clears the camshaft's hub and the follower pivot's boss.
+
+A cam whose profile dips into its own hub, or sweeps into the boss around the follower's
+pivot, can be drawn but not made (issue 34). Three conditions, with the profile radii in
+closed form (no sampling):
+
+* the hub: the profile's smallest radius r0 − r ≥ hub + clearance. The pitch curve's
+  radius |OB| is smallest (r0) where the follower rests at ψ = 0, and there the normal is
+  radial (ψ′ = 0 at both ends of every law), so min |B − r·n| = r0 − r exactly (|B − r·n|
+  ≥ |B| − r everywhere);
+* the boss: the profile's largest radius R1 − r ≤ a − boss − clearance, with R1 the pitch
+  curve's largest radius, at ψ = ψmax: R1² = a² + l² − 2·a·l·cos(ψ0 + ψmax) (|OB| grows with
+  β = ψ0 + ψ on 0 < β < 180°). The cam is the pitch region eroded by the roller, so none of
+  it lies beyond R1 − r; the turning cam sweeps that disc, which must miss the boss;
+* the roller's path: R1 ≤ a − clearance, so the roller's centre never swings out past the
+  pivot's circle about the cam centre.
+
+:func:`raised` finds, in synthesis mode, the smallest base radius whose cam meets them
+(the admissible centres of :mod:`synthesis` cut by the three conditions);
+:func:`require_buildable` refuses a cam that does not, naming the input that decides it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import DesignError
+from .follower import Follower
+from .laws import Program
+from .synthesis import Allowance, admissible
+
+HUB_MM, BOSS_MM, CLEARANCE_MM = 12.5, 12.5, 3.0
+"""Defaults: a feed cam's shaft of Ø16 mm keyed in a hub of Ø25 mm; the follower's pivot pin
+of Ø12 mm in a boss of Ø25 mm; 3 mm between the profile and either (a rough casting's and
+the assembly's tolerance). The form's default cam (arm 120 mm) clears the hub by 13.2 mm
+and the boss by 30.7 mm, and the course data sheet's (cosine/parabolic) by 2.4 and
+44.8 mm, so both are unchanged; the issue's rise-100° cam (profile base radius 6.6 mm)
+is not."""
+MIN_ROLLER_MM = 3.0
+"""The smallest roller the automatic choice of a checked cam shrinks to so that its profile
+clears the hub (a Ø6 mm roller, about the smallest needle roller made)."""
+CIRCLE_SAMPLES = 3600
+"""Centres tried on each circle about the roller's lowest point (every 0.1°)."""
+RADIUS_TOLERANCE = 1e-6
+"""The raised base radius is the smallest within this share of itself."""
+GROWTH = 1.25
+"""Successive base radii tried until one fits, before the bisection."""
+
+
+@dataclass(frozen=True)
+class Room:
+    """What the cam must clear (mm): the camshaft's hub radius, the follower pivot's boss
+    radius, and the least clearance between them and the profile."""
+
+    hub_mm: float = HUB_MM
+    boss_mm: float = BOSS_MM
+    clearance_mm: float = CLEARANCE_MM
+
+
+def pitch_max_radius(f: Follower, program: Program) -> float:
+    """R1, the pitch curve's largest radius (mm): the roller's centre at ψ = ψmax."""
+    a, l = f.distance_mm, f.arm_mm
+    beta = math.radians(f.initial_deg + program.swing_deg)
+    return math.sqrt(max(a * a + l * l - 2.0 * a * l * math.cos(beta), 0.0))
+
+
+def shortfalls(f: Follower, program: Program, roller_mm: float, room: Room) -> dict[str, float]:
+    """By how much (mm, > 0: it does not fit) each condition fails: ``hub``, ``boss``, ``path``."""
+    r1, a, c = pitch_max_radius(f, program), f.distance_mm, room.clearance_mm
+    return {"hub": room.hub_mm + c - (f.base_radius_mm - roller_mm),
+            "boss": (r1 - roller_mm) - (a - room.boss_mm - c),
+            "path": r1 - (a - c)}
+
+
+def roller_for_hub(biggest_mm: float, f: Follower, room: Room) -> float:
+    """The automatic roller of a checked cam: the largest, made smaller (down to
+    MIN_ROLLER_MM) when the profile would otherwise dip into the hub's clearance; a cam
+    that even that one leaves short is then refused by how much with it."""
+    left = f.base_radius_mm - room.hub_mm - room.clearance_mm
+    return min(biggest_mm, max(left, MIN_ROLLER_MM))
+
+
+def _inside(ring: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """Which points (n, 2) lie inside the convex counter-clockwise polygon ``ring``: each
+    is tested against the one edge whose wedge (seen from the vertices' mean, inside)
+    holds it, found by bisection on the vertices' angles."""
+    centre = ring.mean(axis=0)
+    angle = np.arctan2(ring[:, 1] - centre[1], ring[:, 0] - centre[0])
+    start = int(np.argmin(angle))
+    ring, angle = np.roll(ring, -start, axis=0), np.roll(angle, -start)
+    k = np.searchsorted(angle, np.arctan2(points[:, 1] - centre[1], points[:, 0] - centre[0]),
+                        side="right") - 1
+    a, b = ring[k % len(ring)], ring[(k + 1) % len(ring)]
+    cross = (b[:, 0] - a[:, 0]) * (points[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (points[:, 0] - a[:, 0])
+    return cross >= 0.0
+
+
+def _on_circle(ring: np.ndarray, arm: float, swing: float, radius: float, reach: float) -> np.ndarray:
+    """The centres (n, 2) at ``radius`` from the roller's lowest point (arm, 0) that lie in
+    the polygon and keep a − R1 ≥ ``reach`` (pivot frame: A at the origin, B1 the roller's
+    centre at ψmax)."""
+    t = np.linspace(0.0, 2.0 * math.pi, CIRCLE_SAMPLES, endpoint=False)
+    points = np.column_stack([arm + radius * np.cos(t), radius * np.sin(t)])
+    b1 = arm * np.array([math.cos(swing), -math.sin(swing)])
+    a = np.hypot(points[:, 0], points[:, 1])
+    points = points[a - np.hypot(points[:, 0] - b1[0], points[:, 1] - b1[1]) >= reach]
+    return points[_inside(ring, points)]
+
+
+def _smallest_fit(ring: np.ndarray, arm: float, swing: float, low: float, reach: float) -> np.ndarray | None:
+    """The centre of the smallest base radius ≥ ``low`` that fits, or None: radii grow by
+    GROWTH until one fits, then a bisection (the fitting radii are an interval, the set of
+    centres being convex)."""
+    top = 2.0 * float(np.max(np.hypot(ring[:, 0] - arm, ring[:, 1])))
+    found = _on_circle(ring, arm, swing, low, reach)
+    if found.size:
+        return found[np.argmin(np.hypot(found[:, 0], found[:, 1]))]
+    lo, hi = low, low * GROWTH
+    while hi <= top:
+        found = _on_circle(ring, arm, swing, hi, reach)
+        if found.size:
+            break
+        lo, hi = hi, hi * GROWTH
+    else:
+        return None
+    while hi - lo > RADIUS_TOLERANCE * hi:
+        mid = 0.5 * (lo + hi)
+        here = _on_circle(ring, arm, swing, mid, reach)
+        if here.size:
+            hi, found = mid, here
+        else:
+            lo = mid
+    return found[np.argmin(np.hypot(found[:, 0], found[:, 1]))]
+
+
+def raised(arm_mm: float, program: Program, allowance: Allowance, roller_mm: float,
+           room: Room, least_mm: float) -> Follower | None:
+    """The follower of smallest base radius (≥ ``least_mm``) within the allowances whose
+    cam, with this roller, clears the hub, the boss and the pivot; None if there is none.
+    Both arrangements are tried; the smaller wins."""
+    swing = math.radians(program.swing_deg)
+    low = max(least_mm, (room.hub_mm + room.clearance_mm + roller_mm) * (1.0 + 1e-12))   # past rounding
+    reach = max(room.boss_mm + room.clearance_mm - roller_mm, room.clearance_mm)
+    found = []
+    for side in (1, -1):
+        ring = admissible(arm_mm, program, allowance, side)
+        centre = None if ring is None else _smallest_fit(ring, arm_mm, swing, low, reach)
+        if centre is not None:
+            x, y = centre
+            found.append(Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side))
+    return min(found, key=lambda f: (round(f.base_radius_mm, 9), -f.side)) if found else None
+
+
+def require_buildable(f: Follower, program: Program, roller_mm: float, room: Room,
+                      checked: bool) -> None:
+    """FitError (a DesignError) naming the input that decides, and by how much, when the
+    cam cannot be built: the base radius or centre distance of a checked cam, else the
+    swing (the synthesis found no cam within the allowances that clears the pivot)."""
+    short = shortfalls(f, program, roller_mm, room)
+    tol = 1e-9 * max(f.distance_mm, f.arm_mm)
+    profile_min = f.base_radius_mm - roller_mm
+    profile_max = pitch_max_radius(f, program) - roller_mm
+    if short["hub"] > tol and (checked or max(short["boss"], short["path"]) <= tol):
+        raise FitError("base" if checked else "hub", f.base_radius_mm if checked else room.hub_mm,
+                       f"the profile's smallest radius r0 − r = {profile_min:.4g} mm is "
+                       f"{short['hub']:.4g} mm short of hub + clearance = "
+                       f"{room.hub_mm + room.clearance_mm:.4g} mm")
+    worst = "boss" if short["boss"] >= short["path"] else "path"     # (a synthesis names the swing first)
+    if short[worst] > tol:
+        what = (f"the profile's largest radius {profile_max:.4g} mm reaches {short['boss']:.4g} mm "
+                f"past a − boss − clearance = {f.distance_mm - room.boss_mm - room.clearance_mm:.4g} mm"
+                if worst == "boss" else
+                f"the roller's path (largest radius {profile_max + roller_mm:.4g} mm) reaches "
+                f"{short['path']:.4g} mm past a − clearance = {f.distance_mm - room.clearance_mm:.4g} mm")
+        if checked:
+            raise FitError("distance", f.distance_mm, what)
+        raise FitError("swing", program.swing_deg,
+                       f"no cam within the allowances clears the pivot; the smallest: {what}")
+
+
+class FitError(DesignError):
+    """A cam that does not fit its hub, boss or pivot. It names the input that decides;
+    a form may mark the field just edited instead (any of the cam's inputs can cause it)."""

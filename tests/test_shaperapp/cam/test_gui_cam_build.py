@@ -1,0 +1,150 @@
+"""The Cam tab and a cam that cannot be built (issue 34, item 5): the hub, boss and
+clearance fields, a cam enlarged to clear them, a refusal marking the field typed and
+keeping the last valid cam, and a wrong phase sum marking the phase typed."""
+from __future__ import annotations
+
+import pytest
+
+from shaperapp.cam.tab import CamTab
+
+from gui_helpers import shown
+
+
+@pytest.fixture
+def tab(qtbot, model):
+    return shown(qtbot, CamTab(model), 1000, 650)
+
+
+def type_into(qtbot, tab, name, text):
+    edit = tab.form.fields[name].edit
+    edit.selectAll()
+    qtbot.keyClicks(edit, text)
+    tab.form.commit()
+
+
+@pytest.mark.parametrize("name, text", [("rise", "300"), ("return", "300")])
+def test_a_phase_that_overfills_the_turn_marks_the_field_typed(qtbot, tab, name, text):
+    # issue 34: typing rise = 300 marked the Outer dwell field
+    before = tab.cam_model.cam
+    type_into(qtbot, tab, name, text)
+    assert tab.form.marked_fields() == [name]
+    assert "must fit in 360°" in tab.form.error_label.text()
+    assert tab.cam_model.cam is before
+
+
+def test_the_form_has_the_room_and_the_cam_clears_it(qtbot, tab):
+    cam = tab.cam_model.cam
+    assert {"hub", "boss", "clearance"} <= set(tab.form.fields)
+    assert tab.form.fields["hub"].edit.text() == "12.5"
+    inputs = cam.inputs
+    assert (inputs.hub_mm, inputs.boss_mm, inputs.clearance_mm) == (12.5, 12.5, 3.0)
+
+
+def test_swing_45_rise_100_is_enlarged_and_says_so(qtbot, tab, model):
+    type_into(qtbot, tab, "swing", "45")
+    type_into(qtbot, tab, "rise", "100")
+    assert tab.form.marked_fields() == []
+    cam = tab.cam_model.cam
+    f = cam.follower
+    # the issue's cam (arm 120, default program but these) reached 3.4 mm from the pivot
+    assert cam.profile_max_radius_mm <= f.distance_mm - 12.5 - 3.0
+    assert cam.pitch_max_radius_mm <= f.distance_mm - 3.0
+    # the smallest cam for the allowances: the issue's, r0 = 55.37 mm, enlarged
+    assert cam.base_raised_from_mm == pytest.approx(55.3736, abs=1e-4)
+    assert cam.base_radius_mm > cam.base_raised_from_mm
+    rows = dict(tab.figure_rows())
+    assert rows["Base radius raised"].startswith("from 55.374 mm")
+
+
+@pytest.mark.parametrize("name, text", [("boss", "500"), ("clearance", "200")])
+def test_a_room_no_cam_can_clear_marks_its_field_and_keeps_the_cam(qtbot, tab, name, text):
+    before = tab.cam_model.cam
+    type_into(qtbot, tab, name, text)
+    assert tab.form.marked_fields() == [name]
+    assert "short of hub" in tab.form.error_label.text() or "clears the pivot" in tab.form.error_label.text()
+    assert tab.cam_model.cam is before
+    assert tab.cam_model.document()[name + "_mm"] == getattr(before.inputs, name + "_mm")
+
+
+def test_a_checked_cam_that_dips_into_the_hub_marks_the_base(qtbot, tab):
+    before = tab.cam_model.cam
+    type_into(qtbot, tab, "base", "17")
+    type_into(qtbot, tab, "distance", "110")
+    assert tab.form.marked_fields() == ["base"]
+    assert "short of hub + clearance" in tab.form.error_label.text()
+    assert tab.cam_model.cam is before
+    type_into(qtbot, tab, "hub", "5")           # a smaller hub: the same cam fits
+    assert tab.form.marked_fields() == []
+    assert tab.cam_model.cam.base_radius_mm == pytest.approx(17.0)
+
+
+@pytest.mark.parametrize("text", ["abc", "-1"])
+def test_a_bad_hub_marks_the_hub(qtbot, tab, text):
+    before = tab.cam_model.cam
+    type_into(qtbot, tab, "hub", text)
+    assert tab.form.marked_fields() == ["hub"]
+    assert tab.cam_model.cam is before
+
+
+def test_every_fit_message_has_a_translatable_template():
+    """Each way a cam does not fit matches one of the messages' templates, so the Chinese
+    UI never shows core's English sentence."""
+    import re
+
+    from core.cam import CamInputs, Program, design_cam
+    from core.errors import DesignError
+    from shaperapp.widgets.messages import _PATTERNS
+    attempts = [dict(base_mm=17.0, distance_mm=110.0), dict(base_mm=60.0, distance_mm=100.0, boss_mm=40.0),
+                dict(base_mm=80.0, distance_mm=100.0), dict(program=Program(60.0, 100.0, 10.0, 60.0)),
+                dict(boss_mm=500.0)]
+    for attempt in attempts:
+        with pytest.raises(DesignError) as info:
+            design_cam(CamInputs(arm_mm=120.0, **attempt))
+        assert any(re.match(p, info.value.allowed) for p, _ in _PATTERNS), info.value.allowed
+
+
+def test_the_chinese_report_says_the_raise_and_the_room_in_chinese(qapp):
+    """The report's cam figures (``shaper cam``'s rows) of a raised cam: every row has a
+    label, and no English word is left in a value but the units and symbols."""
+    import re
+
+    from core.cam import CamInputs, Program, design_cam
+    from core.cam.table import cam_summary, follower_peaks
+    from core.cli.cmd_cam import summary_rows
+    from shaperapp.report.cam import _labels, value_text
+    from shaperapp.widgets import i18n
+    cam = design_cam(CamInputs(arm_mm=120.0, program=Program(15.0, 100.0, 10.0, 60.0)))
+    summary = {**cam_summary(cam), **follower_peaks(cam, 60.0)}
+    rows = summary_rows(summary)
+    assert "note" in dict(rows)
+    i18n.set_language("zh_CN")
+    try:
+        labels = _labels(60.0)
+        shown_rows = [(labels[k], value_text(v)) for k, v in rows if k in labels]
+    finally:
+        i18n.set_language("en")
+    keys = [k for k, _ in rows if k not in ("arrangement",)]
+    assert all(k in labels for k in keys), [k for k in keys if k not in labels]
+    words = {w for _, v in shown_rows for w in re.findall(r"[A-Za-z]{2,}", v)}
+    assert words <= {"mm", "rad", "min"}, words
+    assert any("18.888" in v and "基圆半径" in v for _, v in shown_rows)
+
+
+def test_a_chinese_report_of_a_cam_that_does_not_fit_says_why_in_chinese(qapp):
+    """A design file's checked cam that dips into the hub: the report's cam section says
+    it cannot be made, naming the field and the shortfall in the report's language."""
+    import re
+
+    from core.cam import CamInputs, Program
+    from core.spec import Spec
+    from shaperapp.report.cam import cam_blocks
+    from shaperapp.widgets import i18n
+    inputs = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0), base_mm=17.0, distance_mm=110.0)
+    i18n.set_language("zh_CN")
+    try:
+        blocks = cam_blocks((inputs, None), Spec().design(), 0.05, 60.0, 10, None)
+    finally:
+        i18n.set_language("en")
+    text = blocks[-1].html
+    assert "基圆半径" in text and "1.5 mm" in text and "轮毂" in text
+    assert re.findall(r"[A-Za-z]{2,}", text) == ["mm", "mm", "mm"]
