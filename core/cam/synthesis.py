@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import DesignError
+from .extremes import PHASES, SIGNS, PressurePeaks, phase_motion, pressure_peaks
 from .follower import TURN, Follower
 from .laws import Program, law
 
@@ -26,6 +27,12 @@ SAMPLES = 2001
 """Follower positions per phase at which the allowance is imposed (uniform in the phase)."""
 LP_STRIDE = 20
 """Every this many conditions set the first try of an interior point (see _inside)."""
+CUTS = 8
+"""At most this many nearest points are tried, each with the conditions at the last one's
+worst follower positions added (see smallest); one cut has sufficed in every case tried."""
+MARGIN_DEG = 1e-10
+"""How far below each allowance the synthesis aims (°), so that the polished maximum, with
+its rounding (~1e-13°), never exceeds the allowance."""
 REACH = 50.0
 """The cam centre is sought within this many arm lengths of the pivot."""
 ROLLER_SHARE = 0.8
@@ -61,14 +68,20 @@ def _halfspaces(arm: float, k: int, program: Program, allowance: Allowance) -> n
     rows = []
     for (psi, psi1), allowed in zip(_phase_samples(program), (allowance.rise_deg, allowance.return_deg)):
         t = math.tan(math.radians(allowed))
-        c = arm * psi1 + k * arm
-        cp, sp = np.cos(psi), np.sin(psi)
-        rows.append(np.column_stack([-k * cp - t * sp, k * sp - t * cp, c]))
-        rows.append(np.column_stack([k * cp - t * sp, -k * sp - t * cp, -c]))
+        rows += [_pressure_rows(arm, k, psi, psi1, t, 1.0), _pressure_rows(arm, k, psi, psi1, t, -1.0)]
     box = REACH * arm
     rows.append(np.array([[1.0, 0.0, -box], [-1.0, 0.0, -box], [0.0, 1.0, -box], [0.0, -1.0, -box]]))
     h = np.concatenate(rows)
     return h / np.hypot(h[:, 0], h[:, 1])[:, None]
+
+
+def _pressure_rows(arm: float, k: int, psi: np.ndarray, psi1: np.ndarray, t,
+                   sign) -> np.ndarray:
+    """Rows [gx, gy, −h] of sign·N ≤ t·D at follower angles ψ with speeds ψ′: the cam
+    pushing outward (sign +1) or inward (−1) within the allowed tan α = t."""
+    c = arm * psi1 + k * arm
+    cp, sp = np.cos(psi), np.sin(psi)
+    return np.column_stack([-sign * k * cp - t * sp, sign * k * sp - t * cp, sign * c])
 
 
 def _chebyshev(h: np.ndarray) -> np.ndarray | None:
@@ -93,29 +106,82 @@ def _inside(h: np.ndarray) -> np.ndarray | None:
     return _chebyshev(h)
 
 
-def _nearest(vertices: np.ndarray, p: np.ndarray) -> np.ndarray:
-    """The point of the convex polygon with these vertices nearest to ``p`` (outside it)."""
+def _ring(vertices: np.ndarray) -> np.ndarray:
+    """The convex polygon with these vertices as a ring of corners (m, 2), in order."""
     from scipy.spatial import ConvexHull
-    ring = vertices[ConvexHull(vertices).vertices]
+    return vertices[ConvexHull(vertices).vertices]
+
+
+def _nearest(ring: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """The point of the convex polygon ``ring`` nearest to ``p`` (outside it)."""
     a, b = ring, np.roll(ring, -1, axis=0)
     ab = b - a
-    t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.einsum("ij,ij->i", ab, ab), 0.0, 1.0)
+    with np.errstate(invalid="ignore"):          # a corner repeated by a clip: its edge is a point
+        t = np.nan_to_num(np.clip(np.einsum("ij,ij->i", p - a, ab) / np.einsum("ij,ij->i", ab, ab),
+                                  0.0, 1.0))
     q = a + t[:, None] * ab
     return q[np.argmin(np.hypot(*(q - p).T))]
 
 
+def _clip(ring: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """The convex polygon ``ring`` cut by the half-planes ``rows`` ([gx, gy, −h] of
+    g·(X, Y) ≤ h): each keeps the corners inside it and adds the points where an edge
+    crosses it (Sutherland–Hodgman); an empty ring when nothing is left."""
+    for g in rows:
+        d = ring @ g[:2] + g[2]
+        ahead, d_ahead = np.roll(ring, -1, axis=0), np.roll(d, -1)
+        inside, crosses = d <= 0.0, (d <= 0.0) != (d_ahead <= 0.0)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cut = ring + (d / (d - d_ahead))[:, None] * (ahead - ring)
+        ring = np.stack([ring, cut], axis=1)[np.column_stack([inside, crosses])]
+    return ring
+
+
 def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
-    """The follower arrangement on ``side`` with the smallest base radius, or None."""
+    """The follower arrangement on ``side`` with the smallest base radius, or None.
+
+    The sampled conditions bound a polygon a little larger than the true region (between
+    two samples the allowance can be exceeded by up to 3e-5°), so the nearest point's
+    polished worst pressure angles are checked, and while one exceeds its allowance the
+    polygon is cut by the conditions at those very follower positions and the nearest
+    point found again (a cutting plane: the true region's boundary is the envelope of the
+    conditions). The conditions aim MARGIN_DEG below the allowances, and the search stops
+    once the polished maxima are within the allowances themselves: a cut brings them to
+    within ~1e-14 of the aim, so they end between MARGIN_DEG below each allowance and it."""
     from scipy.spatial import HalfspaceIntersection
-    h = _halfspaces(arm_mm, TURN * side, program, allowance)
+    aim = Allowance(allowance.rise_deg - MARGIN_DEG, allowance.return_deg - MARGIN_DEG)
+    h = _halfspaces(arm_mm, TURN * side, program, aim)
     centre = _inside(h)
     if centre is None:
         return None
-    vertices = HalfspaceIntersection(h, centre).intersections
-    x, y = _nearest(vertices, np.array([arm_mm, 0.0]))
-    if max(abs(x), abs(y)) >= REACH * arm_mm * (1.0 - 1e-9):
-        return None
-    return Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side)
+    ring = _ring(HalfspaceIntersection(h, centre).intersections)
+    for _ in range(CUTS):
+        if len(ring) == 0:
+            return None
+        x, y = _nearest(ring, np.array([arm_mm, 0.0]))
+        if max(abs(x), abs(y)) >= REACH * arm_mm * (1.0 - 1e-9):
+            return None
+        f = Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side)
+        peaks = pressure_peaks(f, program)
+        if np.all(np.max(peaks.tan, axis=1) <= _allowed_tan(allowance)):
+            break
+        ring = _clip(ring, _cuts(arm_mm, TURN * side, program, aim, peaks))
+    return f
+
+
+def _allowed_tan(allowance: Allowance) -> np.ndarray:
+    return np.tan(np.radians([allowance.rise_deg, allowance.return_deg]))
+
+
+def _cuts(arm: float, k: int, program: Program, allowance: Allowance,
+          peaks: PressurePeaks) -> np.ndarray:
+    """The conditions (normalized rows, see _halfspaces) at the follower positions where a
+    candidate's pressure angle is largest, per phase and sense of push."""
+    _, m = phase_motion(program, PHASES[:, None], peaks.u)
+    t = _allowed_tan(allowance)[:, None]
+    rows = _pressure_rows(arm, k, m.psi.ravel(), m.psi1.ravel(), np.broadcast_to(t, peaks.u.shape).ravel(),
+                          np.broadcast_to(SIGNS, peaks.u.shape).ravel())
+    return rows / np.hypot(rows[:, 0], rows[:, 1])[:, None]
 
 
 def synthesize(arm_mm: float, program: Program, allowance: Allowance) -> Follower:
