@@ -4,9 +4,12 @@ With the pivot A at the origin and the arm's lowest position along +x, the cam c
 sits at (X, Y) = a·(cos ψ0, sin ψ0). The pressure-angle condition at each follower
 position, |l·ψ' + k·(l − a·cos β)| ≤ tan[α]·a·sin β, is a pair of half-planes in (X, Y),
 since a·cos β = X·cos ψ − Y·sin ψ and a·sin β = X·sin ψ + Y·cos ψ. The admissible centres
-are therefore one convex polygon (the graphical method's region, exactly), and the
-smallest base radius is its distance from the roller's lowest point (l, 0): the nearest
-point of a convex polygon, found from its vertices, with no iteration.
+are therefore one convex region (the graphical method's, exactly), and the smallest base
+radius is its distance from the roller's lowest point (l, 0). The region is first the
+polygon of SAMPLES positions per phase, whose nearest point is found from its vertices;
+between two samples the allowance can still be exceeded, so that point's worst pressure
+angles are solved (``extremes``) and the polygon cut at those positions until none is
+exceeded (see :func:`smallest`).
 
 The arrangement (the side k of the line of centres, i.e. the turning sense relative to the
 follower) is chosen by synthesizing both and keeping the one with the smaller base radius.
@@ -29,7 +32,8 @@ LP_STRIDE = 20
 """Every this many conditions set the first try of an interior point (see _inside)."""
 CUTS = 8
 """At most this many nearest points are tried, each with the conditions at the last one's
-worst follower positions added (see smallest); one cut has sufficed in every case tried."""
+worst follower positions added (see smallest); three cuts at most were needed for 200
+random cams (both arrangements each)."""
 MARGIN_DEG = 1e-10
 """How far below each allowance the synthesis aims (°), so that the polished maximum, with
 its rounding (~1e-13°), never exceeds the allowance."""
