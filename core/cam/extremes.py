@@ -107,7 +107,10 @@ def _convex_curvature(f: Follower, program: Program, u: np.ndarray, phase: np.nd
     delta, m = phase_motion(program, phase, u, piece)
     p = pitch_of_motion(f, delta, m)
     cross = p.d1[0] * p.d2[1] - p.d1[1] * p.d2[0]
-    return -TURN * cross / np.hypot(p.d1[0], p.d1[1]) ** 3
+    speed = np.hypot(p.d1[0], p.d1[1])
+    # A pitch curve that stops (a cusp) is as sharp as can be: no roller fits there.
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(speed > 0.0, -TURN * cross / speed ** 3, np.inf)
 
 
 def min_convex_radius(f: Follower, program: Program, samples: int = GRID) -> float:
