@@ -37,15 +37,16 @@ def phase_motion(program: Program, phase: np.ndarray, u: np.ndarray,
     """(δ, motion) at the fraction ``u`` ∈ [0, 1] of phase ``phase`` (0 the rise, 1 the
     return; arrays of one shape), by each law's formula on ``piece`` when given (see
     ``laws.law_piece``) or by the piece u lies in."""
-    phase, u = np.broadcast_arrays(np.asarray(phase), np.asarray(u, dtype=float))
+    by_piece = piece is not None
+    phase, u, piece = np.broadcast_arrays(np.asarray(phase), np.asarray(u, dtype=float),
+                                          np.asarray(0 if piece is None else piece))
     up = phase == 0
     rise, dwell, ret = (math.radians(v) for v in (program.rise_deg, program.dwell_deg,
                                                   program.return_deg))
-    if piece is None:
-        s_up, s_back = law(program.rise_law, u), law(program.return_law, u)
-    else:
-        s_up, s_back = law_piece(program.rise_law, u, piece), law_piece(program.return_law, u, piece)
-    s, s1, s2 = (np.where(up, a, b) for a, b in zip(s_up, s_back))
+    s, s1, s2 = laws = np.empty((3,) + u.shape)
+    for here, name in ((up, program.rise_law), (~up, program.return_law)):   # each law where it runs
+        at = u[here]
+        laws[:, here] = law_piece(name, at, piece[here]) if by_piece else law(name, at)
     span = np.where(up, rise, ret)
     sign = np.where(up, 1.0, -1.0)
     swing = math.radians(program.swing_deg)
@@ -91,7 +92,8 @@ def pressure_peaks(f: Follower, program: Program, samples: int = GRID) -> Pressu
     phase, sign, piece = PHASES[:, None, None, None], SIGNS[None, :, None, None], \
         np.array([0, 1])[None, None, :, None]
     u = half + 0.5 * piece
-    values, slopes = _push(f, program, u, phase, sign, piece)
+    values, slopes = _push(f, program, u, phase, 1.0, piece)      # inward: the same, negated
+    values, slopes = (np.concatenate([v, -v], axis=1) for v in (values, slopes))
     tan, where = grid_argmax(lambda t, p, s, q: _push(f, program, t, p, s, q), u, values, slopes,
                              args=(phase, sign, piece))
     best = np.argmax(tan, axis=2)[..., None]
