@@ -33,7 +33,8 @@ LP_STRIDE = 20
 CUTS = 8
 """At most this many nearest points are tried, each with the conditions at the last one's
 worst follower positions added (see smallest); three cuts at most were needed for 200
-random cams (both arrangements each)."""
+random cams (both arrangements each). Were they all used, the last nearest point would be
+kept, over its allowance by what the last cut left."""
 MARGIN_DEG = 1e-10
 """How far below each allowance the synthesis aims (°), so that the polished maximum, with
 its rounding (~1e-13°), never exceeds the allowance."""
