@@ -103,8 +103,8 @@ def checked_follower(inputs: CamInputs) -> Follower:
     check_follower(candidates[0], inputs.program)
 
     def worst(f: Follower) -> float:
-        up, back, _ = figures(f, inputs.program)
-        return max(up / inputs.pressure_deg, back / inputs.return_pressure_deg)
+        peaks = pressure_peaks(f, inputs.program)
+        return max(peaks.rise_deg / inputs.pressure_deg, peaks.return_deg / inputs.return_pressure_deg)
     return min(candidates, key=worst)
 
 

@@ -18,6 +18,7 @@ phases' ends), so the phases and the base circle hold every extreme of the turn.
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 from typing import NamedTuple
 
 import numpy as np
@@ -82,8 +83,10 @@ class PressurePeaks(NamedTuple):
     tan: np.ndarray
 
 
+@lru_cache(maxsize=16)          # the synthesis's last candidate is the cam's: asked for again
 def pressure_peaks(f: Follower, program: Program, samples: int = GRID) -> PressurePeaks:
-    """The largest pressure angles, polished to the zero of their closed-form slope.
+    """The largest pressure angles, polished to the zero of their closed-form slope (cached
+    on the frozen follower and program: the arrays returned are shared, not to be written).
 
     Each phase is taken in its halves, each half by its own formula: the parabolic law's
     acceleration jumps at u = ½, so the slope does too, and a peak there is the halves'
@@ -115,6 +118,7 @@ def _convex_curvature(f: Follower, program: Program, u: np.ndarray, phase: np.nd
         return np.where(speed > 0.0, -TURN * cross / speed ** 3, np.inf)
 
 
+@lru_cache(maxsize=16)          # a checked cam's two arrangements are compared, then one kept
 def min_convex_radius(f: Follower, program: Program, samples: int = GRID) -> float:
     """The pitch curve's smallest convex radius of curvature (mm): 1 / the largest convex
     curvature of the phases' smooth pieces, polished, or the base radius (the inner dwell's
