@@ -4371,16 +4371,8 @@
         <translation>实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
-        <source>the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm</source>
-        <translation>滚子中心轨迹（最大半径 %1 mm）超出 a − 间隙 = %3 mm 达 %2 mm</translation>
-    </message>
-    <message>
         <source>no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
         <translation>在许用压力角内没有能避开摆动中心的凸轮；最小的凸轮：实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
-    </message>
-    <message>
-        <source>no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm</source>
-        <translation>在许用压力角内没有能避开摆动中心的凸轮；最小的凸轮：滚子中心轨迹（最大半径 %1 mm）超出 a − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
         <source>is not a design field</source>

@@ -1,7 +1,8 @@
 """The feed cam: a disc cam with an oscillating roller follower on the crank's shaft.
 
 ``laws`` the motion laws and the program; ``follower`` the pitch curve, profile, pressure
-angle and curvature; ``synthesis`` the smallest base radius and the largest roller;
+angle and curvature; ``extremes`` the largest pressure angles and the smallest convex
+radius, solved; ``synthesis`` the smallest base radius and the largest roller;
 ``timing`` the feed placed outside the linkage's cut; ``cam`` one cam from its inputs;
 ``build`` whether it clears its hub and the follower's pivot; ``table`` its rows per cam
 angle and its figures; ``file`` its inputs in a design file.

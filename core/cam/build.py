@@ -1,7 +1,7 @@
 """Whether a cam can be built: its profile clears the camshaft's hub and the follower pivot's boss.
 
 A cam whose profile dips into its own hub, or sweeps into the boss around the follower's
-pivot, can be drawn but not made (issue 34). Three conditions, with the profile radii in
+pivot, can be drawn but not made (issue 34). Two conditions, with the profile radii in
 closed form (no sampling):
 
 * the hub: the profile's smallest radius r0 − r ≥ hub + clearance. The pitch curve's
@@ -11,12 +11,17 @@ closed form (no sampling):
 * the boss: the profile's largest radius R1 − r ≤ a − boss − clearance, with R1 the pitch
   curve's largest radius, at ψ = ψmax: R1² = a² + l² − 2·a·l·cos(ψ0 + ψmax) (|OB| grows with
   β = ψ0 + ψ on 0 < β < 180°). The cam is the pitch region eroded by the roller, so none of
-  it lies beyond R1 − r; the turning cam sweeps that disc, which must miss the boss;
-* the roller's path: R1 ≤ a − clearance, so the roller's centre never swings out past the
-  pivot's circle about the cam centre.
+  it lies beyond R1 − r; the turning cam sweeps that disc, which must miss the boss.
+
+The roller's centre may swing out farther from the cam centre than the pivot (R1 > a, the
+path "beyond the pivot" of issue 34's swing-45° cam): nothing collides there, since only
+the profile turns with the cam, and the boss condition above keeps the profile clear. It is
+reported (``pitch_max_radius_mm``), not refused; a roller no larger than the boss already
+keeps R1 ≤ a − clearance.
 
 :func:`raised` finds, in synthesis mode, the smallest base radius whose cam meets them
-(the admissible centres of :mod:`synthesis` cut by the three conditions);
+(the admissible centres of :mod:`synthesis` cut by the two conditions, its pressure
+angles polished as the smallest cam's);
 :func:`require_buildable` refuses a cam that does not, naming the input that decides it.
 """
 from __future__ import annotations
@@ -29,7 +34,7 @@ import numpy as np
 from ..errors import DesignError
 from .follower import Follower
 from .laws import Program
-from .synthesis import Allowance, admissible
+from .synthesis import Allowance, within_allowance
 
 HUB_MM, BOSS_MM, CLEARANCE_MM = 12.5, 12.5, 3.0
 """Defaults: a feed cam's shaft of Ø16 mm keyed in a hub of Ø25 mm; the follower's pivot pin
@@ -67,11 +72,10 @@ def pitch_max_radius(f: Follower, program: Program) -> float:
 
 
 def shortfalls(f: Follower, program: Program, roller_mm: float, room: Room) -> dict[str, float]:
-    """By how much (mm, > 0: it does not fit) each condition fails: ``hub``, ``boss``, ``path``."""
+    """By how much (mm, > 0: it does not fit) each condition fails: ``hub``, ``boss``."""
     r1, a, c = pitch_max_radius(f, program), f.distance_mm, room.clearance_mm
     return {"hub": room.hub_mm + c - (f.base_radius_mm - roller_mm),
-            "boss": (r1 - roller_mm) - (a - room.boss_mm - c),
-            "path": r1 - (a - c)}
+            "boss": (r1 - roller_mm) - (a - room.boss_mm - c)}
 
 
 def roller_for_hub(biggest_mm: float, f: Follower, room: Room) -> float:
@@ -142,14 +146,13 @@ def raised(arm_mm: float, program: Program, allowance: Allowance, roller_mm: flo
     Both arrangements are tried; the smaller wins."""
     swing = math.radians(program.swing_deg)
     low = max(least_mm, (room.hub_mm + room.clearance_mm + roller_mm) * (1.0 + 1e-12))   # past rounding
-    reach = max(room.boss_mm + room.clearance_mm - roller_mm, room.clearance_mm)
+    reach = room.boss_mm + room.clearance_mm - roller_mm
     found = []
-    for side in (1, -1):
-        ring = admissible(arm_mm, program, allowance, side)
-        centre = None if ring is None else _smallest_fit(ring, arm_mm, swing, low, reach)
-        if centre is not None:
-            x, y = centre
-            found.append(Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side))
+    for side in (1, -1):        # within_allowance: the fit's pressure angles polished, as the smallest cam's
+        f = within_allowance(arm_mm, program, allowance, side,
+                             lambda ring: _smallest_fit(ring, arm_mm, swing, low, reach))
+        if f is not None:
+            found.append(f)
     return min(found, key=lambda f: (round(f.base_radius_mm, 9), -f.side)) if found else None
 
 
@@ -162,18 +165,14 @@ def require_buildable(f: Follower, program: Program, roller_mm: float, room: Roo
     tol = 1e-9 * max(f.distance_mm, f.arm_mm)
     profile_min = f.base_radius_mm - roller_mm
     profile_max = pitch_max_radius(f, program) - roller_mm
-    if short["hub"] > tol and (checked or max(short["boss"], short["path"]) <= tol):
+    if short["hub"] > tol and (checked or short["boss"] <= tol):
         raise FitError("base" if checked else "hub", f.base_radius_mm if checked else room.hub_mm,
                        f"the profile's smallest radius r0 − r = {profile_min:.4g} mm is "
                        f"{short['hub']:.4g} mm short of hub + clearance = "
                        f"{room.hub_mm + room.clearance_mm:.4g} mm")
-    worst = "boss" if short["boss"] >= short["path"] else "path"     # (a synthesis names the swing first)
-    if short[worst] > tol:
+    if short["boss"] > tol:                       # (a synthesis names the swing first)
         what = (f"the profile's largest radius {profile_max:.4g} mm reaches {short['boss']:.4g} mm "
-                f"past a − boss − clearance = {f.distance_mm - room.boss_mm - room.clearance_mm:.4g} mm"
-                if worst == "boss" else
-                f"the roller's path (largest radius {profile_max + roller_mm:.4g} mm) reaches "
-                f"{short['path']:.4g} mm past a − clearance = {f.distance_mm - room.clearance_mm:.4g} mm")
+                f"past a − boss − clearance = {f.distance_mm - room.boss_mm - room.clearance_mm:.4g} mm")
         if checked:
             raise FitError("distance", f.distance_mm, what)
         raise FitError("swing", program.swing_deg,

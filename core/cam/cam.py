@@ -1,22 +1,22 @@
 """One feed cam from the data sheet: synthesized (or checked), its roller chosen, timed.
 
 :class:`CamInputs` is what the data sheet gives (and what a form or a file holds);
-:func:`design_cam` turns it into a :class:`Cam`, whose figures are taken on a dense grid of
-each phase (the rise and the return, where the pressure angle and the curvature change).
+:func:`design_cam` turns it into a :class:`Cam`, whose figures are the extremes of each phase
+(the rise and the return, where the pressure angle and the curvature change), solved on the
+closed forms (``extremes``), not read off a grid.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
 
-import numpy as np
-
 from ..errors import DesignError, require_range
-from .follower import Follower, check_follower, curvature_radius, pitch, pressure_angle
+from .extremes import min_convex_radius, pressure_peaks
+from .follower import Follower, check_follower
 from .laws import Program
 from .build import (BOSS_MM, CLEARANCE_MM, HUB_MM, Room, pitch_max_radius, raised, require_buildable,
                     roller_for_hub, shortfalls)
-from .synthesis import SAMPLES, Allowance, largest_roller, synthesize
+from .synthesis import Allowance, largest_roller, synthesize
 from .timing import Timing, timing
 
 MIN_ARM_MM, MAX_ARM_MM = 1.0, 5000.0
@@ -113,23 +113,12 @@ class Cam:
                 and self.max_pressure_return_deg <= self.inputs.return_pressure_deg + 1e-6)
 
 
-def phase_angles(program: Program, samples: int = SAMPLES) -> tuple[np.ndarray, np.ndarray]:
-    """Cam angles (rad) covering the rise and the return densely, ends included."""
-    rise, dwell, ret = (math.radians(v) for v in (program.rise_deg, program.dwell_deg, program.return_deg))
-    u = np.linspace(0.0, 1.0, samples)
-    return u * rise, rise + dwell + u * ret
-
-
 def figures(f: Follower, program: Program) -> tuple[float, float, float]:
     """Max pressure angle on the rise and on the return (°) and the pitch curve's smallest
-    convex radius of curvature (mm; the dwells are arcs of radius ≥ the base radius)."""
-    up, back = phase_angles(program)
-    p_up, p_back = pitch(f, program, up), pitch(f, program, back)
-    rho = np.concatenate([curvature_radius(p_up), curvature_radius(p_back)])
-    convex = rho[rho > 0]
-    return (math.degrees(float(pressure_angle(f, p_up).max())),
-            math.degrees(float(pressure_angle(f, p_back).max())),
-            float(min(convex.min() if convex.size else math.inf, f.base_radius_mm)))
+    convex radius of curvature (mm; the dwells are arcs of radius ≥ the base radius), each
+    solved, not sampled (``extremes``)."""
+    peaks = pressure_peaks(f, program)
+    return peaks.rise_deg, peaks.return_deg, min_convex_radius(f, program)
 
 
 def checked_follower(inputs: CamInputs) -> Follower:
@@ -145,8 +134,8 @@ def checked_follower(inputs: CamInputs) -> Follower:
     check_follower(candidates[0], inputs.program)
 
     def worst(f: Follower) -> float:
-        up, back, _ = figures(f, inputs.program)
-        return max(up / inputs.pressure_deg, back / inputs.return_pressure_deg)
+        peaks = pressure_peaks(f, inputs.program)
+        return max(peaks.rise_deg / inputs.pressure_deg, peaks.return_deg / inputs.return_pressure_deg)
     return min(candidates, key=worst)
 
 

@@ -72,7 +72,13 @@ def _turn_back(delta: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
 def pitch(f: Follower, program: Program, delta: np.ndarray) -> Pitch:
     """The roller centre's path on the cam at cam angles ``delta`` (rad)."""
     delta = np.asarray(delta, dtype=float)
-    m = program.motion(delta)
+    return pitch_of_motion(f, delta, program.motion(delta))
+
+
+def pitch_of_motion(f: Follower, delta: np.ndarray, m: Motion) -> Pitch:
+    """The pitch curve at cam angles ``delta`` (rad) for the follower's motion ``m`` there:
+    :func:`pitch` with the motion given, for a one-sided value at a jump of the law's
+    acceleration (see ``laws.law_piece``)."""
     l, a, k = f.arm_mm, f.distance_mm, float(f.k)
     beta = math.radians(f.initial_deg) + m.psi
     cb, sb = np.cos(beta), np.sin(beta)

@@ -26,9 +26,10 @@ MIN_PHASE_DEG = 1.0
 Law = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
 
-def _parabolic(u: np.ndarray):
-    """Constant acceleration then deceleration (等加速等减速): s = 2u² then 1 − 2(1 − u)²."""
-    first = u < 0.5
+def _parabolic(u: np.ndarray, first: np.ndarray | None = None):
+    """Constant acceleration then deceleration (等加速等减速): s = 2u² then 1 − 2(1 − u)².
+    ``first`` picks the half whose formula applies (by default the half u lies in)."""
+    first = u < 0.5 if first is None else first
     s = np.where(first, 2.0 * u * u, 1.0 - 2.0 * (1.0 - u) ** 2)
     s1 = np.where(first, 4.0 * u, 4.0 * (1.0 - u))
     s2 = np.where(first, 4.0, -4.0)
@@ -60,6 +61,35 @@ _LAW_FUNCTIONS: dict[str, Law] = {"parabolic": _parabolic, "cosine": _cosine,
 def law(name: str, u: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """s, ds/du, d²s/du² of the normalized rise ``name`` at ``u`` (clipped to [0, 1])."""
     return _LAW_FUNCTIONS[name](np.clip(np.asarray(u, dtype=float), 0.0, 1.0))
+
+
+PIECES = {"parabolic": (0.0, 0.5, 1.0)}
+"""Where a law's acceleration jumps inside its phase, as the edges of the pieces on which it
+is smooth (u; a law not listed is smooth on [0, 1]): a figure that depends on d²s/du² (the
+curvature) has a one-sided value at each edge, and both count."""
+
+
+def pieces(name: str) -> tuple[float, ...]:
+    """The edges of the smooth pieces of law ``name`` over u ∈ [0, 1]."""
+    return PIECES.get(name, (0.0, 1.0))
+
+
+def law_piece(name: str, u: np.ndarray, piece: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """s, ds/du, d²s/du² of law ``name`` by the formula of its smooth piece ``piece`` (the
+    index into :func:`pieces`), even at that piece's closed ends: at u = ½ the parabolic
+    law's first piece gives its acceleration's left limit, which :func:`law` does not."""
+    u = np.clip(np.asarray(u, dtype=float), 0.0, 1.0)
+    if name == "parabolic":
+        return _parabolic(u, np.asarray(piece) == 0)
+    return _LAW_FUNCTIONS[name](u)
+
+
+PEAKS = {"parabolic": (2.0, 4.0), "cosine": (math.pi / 2.0, math.pi ** 2 / 2.0),
+         "sine": (2.0, 2.0 * math.pi), "poly345": (15.0 / 8.0, 10.0 / math.sqrt(3.0))}
+"""max |ds/du| and max |d²s/du²| of each law, in closed form: the velocity peaks at u = ½
+for all four (4·½, π/2, 1 − cos π, 30·¼·¼); the acceleration at the ends for the
+cosine law (π²/2), at u = ¼ for the sine law (2π·sin(π/2)), on either half for the parabolic
+law, and at u = ½ ∓ √3/6 for the 3-4-5 polynomial (60·u(1 − u)(1 − 2u) there is 10/√3)."""
 
 
 class Motion(NamedTuple):
@@ -122,6 +152,15 @@ class Program:
         psi1 = swing * np.select([up, back], [s1 / rise, -r1 / ret], 0.0)
         psi2 = swing * np.select([up, back], [s2 / rise ** 2, -r2 / ret ** 2], 0.0)
         return Motion(psi, psi1, psi2)
+
+    def peaks(self) -> tuple[float, float]:
+        """max |dψ/dδ| and max |d²ψ/dδ²| over the turn (rad, per rad and per rad²), in closed
+        form from each law's peaks (:data:`PEAKS`) scaled by ψmax/Φ and ψmax/Φ²."""
+        swing = math.radians(self.swing_deg)
+        spans = ((self.rise_law, math.radians(self.rise_deg)),
+                 (self.return_law, math.radians(self.return_deg)))
+        return (max(swing * PEAKS[name][0] / span for name, span in spans),
+                max(swing * PEAKS[name][1] / span ** 2 for name, span in spans))
 
     def phase(self, delta: np.ndarray) -> np.ndarray:
         """0 in the rise, 1 in the outer dwell, 2 in the return, 3 in the inner dwell."""

@@ -4,9 +4,12 @@ With the pivot A at the origin and the arm's lowest position along +x, the cam c
 sits at (X, Y) = a·(cos ψ0, sin ψ0). The pressure-angle condition at each follower
 position, |l·ψ' + k·(l − a·cos β)| ≤ tan[α]·a·sin β, is a pair of half-planes in (X, Y),
 since a·cos β = X·cos ψ − Y·sin ψ and a·sin β = X·sin ψ + Y·cos ψ. The admissible centres
-are therefore one convex polygon (the graphical method's region, exactly), and the
-smallest base radius is its distance from the roller's lowest point (l, 0): the nearest
-point of a convex polygon, found from its vertices, with no iteration.
+are therefore one convex region (the graphical method's, exactly), and the smallest base
+radius is its distance from the roller's lowest point (l, 0). The region is first the
+polygon of SAMPLES positions per phase, whose nearest point is found from its vertices;
+between two samples the allowance can still be exceeded, so that point's worst pressure
+angles are solved (``extremes``) and the polygon cut at those positions until none is
+exceeded (see :func:`smallest`).
 
 The arrangement (the side k of the line of centres, i.e. the turning sense relative to the
 follower) is chosen by synthesizing both and keeping the one with the smaller base radius.
@@ -15,10 +18,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
 from ..errors import DesignError
+from .extremes import PHASES, SIGNS, PressurePeaks, phase_motion, pressure_peaks
 from .follower import TURN, Follower
 from .laws import Program, law
 
@@ -26,6 +31,14 @@ SAMPLES = 2001
 """Follower positions per phase at which the allowance is imposed (uniform in the phase)."""
 LP_STRIDE = 20
 """Every this many conditions set the first try of an interior point (see _inside)."""
+CUTS = 8
+"""At most this many nearest points are tried, each with the conditions at the last one's
+worst follower positions added (see smallest); three cuts at most were needed for 200
+random cams (both arrangements each). Were they all used, the last nearest point would be
+kept, over its allowance by what the last cut left."""
+MARGIN_DEG = 1e-10
+"""How far below each allowance the synthesis aims (°), so that the polished maximum, with
+its rounding (~1e-13°), never exceeds the allowance."""
 REACH = 50.0
 """The cam centre is sought within this many arm lengths of the pivot."""
 ROLLER_SHARE = 0.8
@@ -61,14 +74,20 @@ def _halfspaces(arm: float, k: int, program: Program, allowance: Allowance) -> n
     rows = []
     for (psi, psi1), allowed in zip(_phase_samples(program), (allowance.rise_deg, allowance.return_deg)):
         t = math.tan(math.radians(allowed))
-        c = arm * psi1 + k * arm
-        cp, sp = np.cos(psi), np.sin(psi)
-        rows.append(np.column_stack([-k * cp - t * sp, k * sp - t * cp, c]))
-        rows.append(np.column_stack([k * cp - t * sp, -k * sp - t * cp, -c]))
+        rows += [_pressure_rows(arm, k, psi, psi1, t, 1.0), _pressure_rows(arm, k, psi, psi1, t, -1.0)]
     box = REACH * arm
     rows.append(np.array([[1.0, 0.0, -box], [-1.0, 0.0, -box], [0.0, 1.0, -box], [0.0, -1.0, -box]]))
     h = np.concatenate(rows)
     return h / np.hypot(h[:, 0], h[:, 1])[:, None]
+
+
+def _pressure_rows(arm: float, k: int, psi: np.ndarray, psi1: np.ndarray, t,
+                   sign) -> np.ndarray:
+    """Rows [gx, gy, −h] of sign·N ≤ t·D at follower angles ψ with speeds ψ′: the cam
+    pushing outward (sign +1) or inward (−1) within the allowed tan α = t."""
+    c = arm * psi1 + k * arm
+    cp, sp = np.cos(psi), np.sin(psi)
+    return np.column_stack([-sign * k * cp - t * sp, sign * k * sp - t * cp, sign * c])
 
 
 def _chebyshev(h: np.ndarray) -> np.ndarray | None:
@@ -93,37 +112,110 @@ def _inside(h: np.ndarray) -> np.ndarray | None:
     return _chebyshev(h)
 
 
+def _ring(vertices: np.ndarray) -> np.ndarray:
+    """The convex polygon with these vertices as a ring of corners (m, 2), in order."""
+    from scipy.spatial import ConvexHull
+    return vertices[ConvexHull(vertices).vertices]
+
+
 def _nearest(ring: np.ndarray, p: np.ndarray) -> np.ndarray:
     """The point of the convex polygon ``ring`` (its vertices in order) nearest to ``p``
     (outside it)."""
     a, b = ring, np.roll(ring, -1, axis=0)
     ab = b - a
-    t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.einsum("ij,ij->i", ab, ab), 0.0, 1.0)
+    with np.errstate(invalid="ignore"):          # a corner repeated by a clip: its edge is a point
+        t = np.nan_to_num(np.clip(np.einsum("ij,ij->i", p - a, ab) / np.einsum("ij,ij->i", ab, ab),
+                                  0.0, 1.0))
     q = a + t[:, None] * ab
     return q[np.argmin(np.hypot(*(q - p).T))]
 
 
+def _aim(allowance: Allowance) -> Allowance:
+    """The allowances the sampled conditions impose: MARGIN_DEG below the given ones."""
+    return Allowance(allowance.rise_deg - MARGIN_DEG, allowance.return_deg - MARGIN_DEG)
+
+
 def admissible(arm_mm: float, program: Program, allowance: Allowance, side: int) -> np.ndarray | None:
-    """The polygon of admissible cam centres on ``side`` in the pivot's frame (its vertices
-    (n, 2) mm, counter-clockwise), or None when the allowances leave none."""
-    from scipy.spatial import ConvexHull, HalfspaceIntersection
-    h = _halfspaces(arm_mm, TURN * side, program, allowance)
+    """The polygon of admissible cam centres on ``side`` in the pivot's frame, from the
+    sampled conditions at ``_aim(allowance)`` (its vertices (n, 2) mm, in order), or None
+    when the allowances leave none. It can be a little larger than the true region: see
+    :func:`within_allowance`."""
+    from scipy.spatial import HalfspaceIntersection
+    h = _halfspaces(arm_mm, TURN * side, program, _aim(allowance))
     centre = _inside(h)
     if centre is None:
         return None
-    vertices = HalfspaceIntersection(h, centre).intersections
-    return vertices[ConvexHull(vertices).vertices]
+    return _ring(HalfspaceIntersection(h, centre).intersections)
 
 
-def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
-    """The follower arrangement on ``side`` with the smallest base radius, or None."""
+def _clip(ring: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """The convex polygon ``ring`` cut by the half-planes ``rows`` ([gx, gy, −h] of
+    g·(X, Y) ≤ h): each keeps the corners inside it and adds the points where an edge
+    crosses it (Sutherland–Hodgman); an empty ring when nothing is left."""
+    for g in rows:
+        d = ring @ g[:2] + g[2]
+        ahead, d_ahead = np.roll(ring, -1, axis=0), np.roll(d, -1)
+        inside, crosses = d <= 0.0, (d <= 0.0) != (d_ahead <= 0.0)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cut = ring + (d / (d - d_ahead))[:, None] * (ahead - ring)
+        ring = np.stack([ring, cut], axis=1)[np.column_stack([inside, crosses])]
+    return ring
+
+
+def within_allowance(arm_mm: float, program: Program, allowance: Allowance, side: int,
+                     pick: Callable[[np.ndarray], np.ndarray | None]) -> Follower | None:
+    """The follower whose cam centre ``pick(polygon)`` chooses in the admissible polygon
+    (None: no choice there), its polished pressure angles within the allowances.
+
+    The sampled conditions bound a polygon a little larger than the true region (between
+    two samples the allowance can be exceeded by up to 3e-5°), so the chosen centre's
+    polished worst pressure angles are checked, and while one exceeds its allowance the
+    polygon is cut by the conditions at those very follower positions and the choice made
+    again (a cutting plane: the true region's boundary is the envelope of the conditions).
+    The conditions aim MARGIN_DEG below the allowances, and the search stops once the
+    polished maxima are within the allowances themselves: a cut brings them to within
+    ~1e-14 of the aim, so they end between MARGIN_DEG below each allowance and it. The
+    smallest cam (:func:`smallest`) and the cam raised to clear its hub and pivot
+    (``build.raised``) are both chosen so."""
     ring = admissible(arm_mm, program, allowance, side)
     if ring is None:
         return None
-    x, y = _nearest(ring, np.array([arm_mm, 0.0]))
-    if max(abs(x), abs(y)) >= REACH * arm_mm * (1.0 - 1e-9):
-        return None
-    return Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side)
+    f = None
+    for _ in range(CUTS):
+        centre = pick(ring) if len(ring) else None
+        if centre is None:
+            return None
+        x, y = centre
+        f = Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side)
+        peaks = pressure_peaks(f, program)
+        if np.all(np.max(peaks.tan, axis=1) <= _allowed_tan(allowance)):
+            break
+        ring = _clip(ring, _cuts(arm_mm, TURN * side, program, _aim(allowance), peaks))
+    return f
+
+
+def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
+    """The follower arrangement on ``side`` with the smallest base radius, or None: the
+    admissible centre nearest to the roller's lowest point (arm, 0)."""
+    def nearest(ring: np.ndarray) -> np.ndarray | None:
+        x, y = _nearest(ring, np.array([arm_mm, 0.0]))
+        return None if max(abs(x), abs(y)) >= REACH * arm_mm * (1.0 - 1e-9) else np.array([x, y])
+    return within_allowance(arm_mm, program, allowance, side, nearest)
+
+
+def _allowed_tan(allowance: Allowance) -> np.ndarray:
+    return np.tan(np.radians([allowance.rise_deg, allowance.return_deg]))
+
+
+def _cuts(arm: float, k: int, program: Program, allowance: Allowance,
+          peaks: PressurePeaks) -> np.ndarray:
+    """The conditions (normalized rows, see _halfspaces) at the follower positions where a
+    candidate's pressure angle is largest, per phase and sense of push."""
+    _, m = phase_motion(program, PHASES[:, None], peaks.u)
+    t = _allowed_tan(allowance)[:, None]
+    rows = _pressure_rows(arm, k, m.psi.ravel(), m.psi1.ravel(), np.broadcast_to(t, peaks.u.shape).ravel(),
+                          np.broadcast_to(SIGNS, peaks.u.shape).ravel())
+    return rows / np.hypot(rows[:, 0], rows[:, 1])[:, None]
 
 
 def synthesize(arm_mm: float, program: Program, allowance: Allowance) -> Follower:

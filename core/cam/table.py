@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from .cam import Cam, phase_angles
+from .cam import Cam
 from .follower import pitch, pressure_angle, profile
 
 CAM_COLUMNS = ("cam_angle_deg", "follower_angle_deg", "follower_omega_rad_s",
@@ -67,9 +67,9 @@ def cam_summary(cam: Cam) -> dict[str, Any]:
 
 
 def follower_peaks(cam: Cam, rpm: float) -> dict[str, float]:
-    """The follower's largest angular velocity and acceleration at ``rpm`` (r/min), taken
-    on the dense grid of the rise and the return (the dwells are at rest)."""
+    """The follower's largest angular velocity and acceleration at ``rpm`` (r/min), from the
+    laws' closed-form peaks (``Program.peaks``; the dwells are at rest)."""
     omega = rpm * 2.0 * math.pi / 60.0
-    m = cam.program.motion(np.concatenate(phase_angles(cam.program)))
-    return {"rpm": float(rpm), "follower_omega_max_rad_s": float(np.abs(m.psi1).max() * omega),
-            "follower_alpha_max_rad_s2": float(np.abs(m.psi2).max() * omega ** 2)}
+    speed, acceleration = cam.program.peaks()
+    return {"rpm": float(rpm), "follower_omega_max_rad_s": speed * omega,
+            "follower_alpha_max_rad_s2": acceleration * omega ** 2}

@@ -136,16 +136,10 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
     (r"the profile's largest radius (\S+) mm reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
      "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-    (r"the roller's path \(largest radius (\S+) mm\) reaches (\S+) mm past a − clearance = (\S+) mm$",
-     "the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm"),
     (r"no cam within the allowances clears the pivot; the smallest: the profile's largest radius (\S+) mm "
      r"reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
      "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm "
      "reaches %2 mm past a − boss − clearance = %3 mm"),
-    (r"no cam within the allowances clears the pivot; the smallest: the roller's path \(largest radius (\S+) mm\) "
-     r"reaches (\S+) mm past a − clearance = (\S+) mm$",
-     "no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) "
-     "reaches %2 mm past a − clearance = %3 mm"),
     # what a design file can hold wrong (core.design_file, Spec.from_dict, core.cam.file)
     (r"is not a design field$", "is not a design field"),
     (r"is not a load input$", "is not a load input"),
@@ -219,12 +213,8 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
         "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
             QCoreApplication.translate("messages", "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-        "the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm":
-            QCoreApplication.translate("messages", "the roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm"),
         "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
             QCoreApplication.translate("messages", "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-        "no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm":
-            QCoreApplication.translate("messages", "no cam within the allowances clears the pivot; the smallest: its roller's path (largest radius %1 mm) reaches %2 mm past a − clearance = %3 mm"),
         "is not a design field": QCoreApplication.translate("messages", "is not a design field"),
         "is not a load input": QCoreApplication.translate("messages", "is not a load input"),
         "is not a cam field": QCoreApplication.translate("messages", "is not a cam field"),

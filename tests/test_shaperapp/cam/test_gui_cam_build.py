@@ -48,7 +48,6 @@ def test_swing_45_rise_100_is_enlarged_and_says_so(qtbot, tab, model):
     f = cam.follower
     # the cam (arm 120, default program but these) reached 3.4 mm from the pivot
     assert cam.profile_max_radius_mm <= f.distance_mm - 12.5 - 3.0
-    assert cam.pitch_max_radius_mm <= f.distance_mm - 3.0
     # the smallest cam for the allowances: the issue's, r0 = 55.37 mm, enlarged
     assert cam.base_raised_from_mm == pytest.approx(55.3736, abs=1e-4)
     assert cam.base_radius_mm > cam.base_raised_from_mm
@@ -95,7 +94,8 @@ def test_every_fit_message_has_a_translatable_template():
     from core.errors import DesignError
     from shaperapp.widgets.messages import _PATTERNS
     attempts = [dict(base_mm=17.0, distance_mm=110.0), dict(base_mm=60.0, distance_mm=100.0, boss_mm=40.0),
-                dict(base_mm=80.0, distance_mm=100.0), dict(program=Program(60.0, 100.0, 10.0, 60.0)),
+                dict(base_mm=80.0, distance_mm=100.0, boss_mm=30.0),
+                dict(program=Program(60.0, 100.0, 10.0, 60.0), boss_mm=100.0),
                 dict(boss_mm=500.0)]
     for attempt in attempts:
         with pytest.raises(DesignError) as info:
