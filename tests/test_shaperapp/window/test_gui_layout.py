@@ -107,6 +107,9 @@ def test_every_stacked_plot_has_ticks_and_its_own_title(tmp_path, width, height,
                 assert plot["title"] is not None and plot["title_text"].strip(), (where, plot["key"])
                 tx, ty, tw, th = plot["title"]
                 assert y - 1 <= ty and ty + th <= y + h + 1, (where, plot["key"], plot["title"], plot["box"])
+                # the title never covers a tick label: "(N·m)" ran over the minus of −4000
+                # with 16 speeds, the two-line Chinese titles over every label
+                assert not [t for t in plot["ticks"] if overlap(plot["title"], t)], (where, plot["key"])
             x_ticks = [p["x_ticks"] for p in plots if p["x_ticks"] is not None]
             assert len(x_ticks) == 1 and len(x_ticks[0]) >= 3 and spread(x_ticks[0]), where
             assert spread([p["title"] for p in plots]), where              # titles apart
