@@ -264,7 +264,7 @@ class PlotStack(QWidget):
         for key, plot in self._plots.items():
             if self._shown[key]:
                 plot.move_cursor(xs)
-        self._readout.follow_cursor()
+        self._readout.follow_cursor(index)
 
     def _on_legend_toggle(self, label: str, shown: bool) -> None:
         self._hidden = (self._hidden - {label}) if shown else (self._hidden | {label})
