@@ -28,7 +28,7 @@ class FrozenNameView(QTableView):
         for view in (self, frozen):
             view.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
         self.horizontalHeader().sectionResized.connect(self._on_resized)
-        self.horizontalHeader().sortIndicatorChanged.connect(frozen.horizontalHeader().setSortIndicator)
+        self.horizontalHeader().sortIndicatorChanged.connect(self._mirror_sort)
         frozen.horizontalHeader().sectionClicked.connect(self._sort_by_name)
         frozen.verticalScrollBar().valueChanged.connect(self.verticalScrollBar().setValue)
         self.verticalScrollBar().valueChanged.connect(frozen.verticalScrollBar().setValue)
@@ -60,6 +60,9 @@ class FrozenNameView(QTableView):
         for column in range(model.columnCount() if model is not None else 0):
             self.frozen.setColumnHidden(column, column != 0)
         self._on_resized(0, 0, self.columnWidth(0))
+
+    def _mirror_sort(self, section: int, order: Qt.SortOrder) -> None:
+        self.frozen.horizontalHeader().setSortIndicator(section, order)
 
     def _sort_by_name(self, section: int) -> None:
         header = self.horizontalHeader()
