@@ -19,6 +19,7 @@ from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPen
 from PySide6.QtWidgets import QGraphicsItem, QGraphicsTextItem
 from pyqtgraph.graphicsItems.LegendItem import ItemSample
 
+from shaperapp.widgets.axis_fit import axis_width
 from shaperapp.widgets.style import TEXT
 
 AXIS_WIDTH = 62          # fixed left-axis width so the stacked plots line up
@@ -27,7 +28,6 @@ GRID = QColor("#e3e3e3")
 LABEL_GAP_PX = 14.0      # free space between two tick labels along an axis
 TIGHT_GAP_PX = 3.0       # the least space between two labels, where the axis is too short for more
 MIN_LABELS = 3           # labels an axis keeps, closer together, where it has room for them
-TITLE_NUDGE_PX = 5       # pyqtgraph draws a left axis' title this far left of the axis' box
 NICE_STEPS = (1.0, 2.0, 5.0)                                      # × 10^k
 DEGREE_STEPS = (1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 60.0, 90.0, 180.0, 360.0)
 
@@ -103,23 +103,10 @@ class TickAxis(pg.AxisItem):
 
 
     def needed_width(self) -> float:
-        """The width a left axis needs so that its title never covers a tick label: the
-        title's height (it is turned on its side) and the widest label it draws now, each
-        measured as pyqtgraph places them. With 16 speeds the torque's "−4000" ran under
-        "(N·m)" in the fixed AXIS_WIDTH."""
-        title = self.label.boundingRect().height() - TITLE_NUDGE_PX if self.label.isVisible() else 0.0
-        widest = 0.0
-        if self.style["showValues"]:
-            metrics = QFontMetricsF(self.style["tickFont"] or self.font())
-            levels = self.tickValues(self.range[0], self.range[1], max(self.geometry().height(), 1.0))
-            if levels:
-                spacing, values = levels[0]
-                strings = self.tickStrings(values, self.autoSIPrefixScale * self.scale, spacing)
-                box = QRectF(0, 0, 100, 100)
-                widest = max((metrics.boundingRect(box, Qt.AlignmentFlag.AlignCenter, s).width()
-                              for s in strings), default=0.0)
-        gap = max(0, self.style["tickLength"]) + self.style["tickTextOffset"][0]
-        return title + widest + gap + 1.0
+        """The width this left axis needs so that its title never covers a tick label
+        (``widgets.axis_fit``). With 16 speeds the torque's "−4000" ran under "(N·m)" in
+        the fixed AXIS_WIDTH."""
+        return axis_width(self)
 
     # ---- lean drawing ---------------------------------------------------------
     # pyqtgraph's tickValues and generateDrawSpecs serve every option of an axis; these

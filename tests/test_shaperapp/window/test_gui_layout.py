@@ -124,6 +124,8 @@ def test_explore_map_fills_its_tab(tmp_path, width, height, lang):
     report = probe(tmp_path, width, height, "--lang", lang, "--explore")["explore"]
     assert report["map_height"] >= 0.4 * report["tab_height"], report
     assert report["colorbar_title"].strip()
+    # the Chinese title ran over the colour bar's tick labels (issue 34 item 8)
+    assert not [t for t in report["ticks"]["colorbar"] if overlap(report["colorbar_title_box"], t)]
     x, y, w, h = report["view"]
     for name, ticks in report["ticks"].items():
         assert len(ticks) >= 3, (name, ticks)
