@@ -13,6 +13,7 @@ way to "… +N"; the whole read-out is then in the tooltip.
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 
 from PySide6.QtCore import QCoreApplication, Qt, QTimer
@@ -78,7 +79,6 @@ class Readout(QLabel):
         self._timer.setInterval(READOUT_DELAY_MS)
         self._timer.timeout.connect(self.update_text)
         self._tip = ""
-        self.setMaximumHeight(self._lines_height(READOUT_LINES) + 4)
 
     def retranslate(self) -> None:
         # The stack's context: these texts were the stack's and keep their translations.
@@ -127,7 +127,11 @@ class Readout(QLabel):
         """The full read-out if it fits READOUT_LINES lines, else the compact one with as
         many entries as fit (the full one in the tooltip)."""
         full = readout_html(parts, title, unit, values)
-        room = self._lines_height(READOUT_LINES)
+        # READOUT_LINES lines of this text's own fonts (a Chinese line is taller than a Latin one)
+        head = readout_html(parts, title, unit, [])
+        room = self._text_height("<br>".join([head] * READOUT_LINES)) + 1.0
+        margins = self.contentsMargins()
+        self.setMaximumHeight(math.ceil(room) + margins.top() + margins.bottom())
         if self._text_height(full) <= room or self.contentsRect().width() < 50:
             self.setText(full)
             self.setToolTip(self._tip)
@@ -149,15 +153,9 @@ class Readout(QLabel):
         document.setDefaultFont(self.font())
         document.setDocumentMargin(0)
         document.setHtml(html)
-        document.setTextWidth(self.contentsRect().width())
+        document.setTextWidth(max(self.contentsRect().width(), 1))
         return document.size().height()
 
-    def _lines_height(self, lines: int) -> int:
-        document = QTextDocument()
-        document.setDefaultFont(self.font())
-        document.setDocumentMargin(0)
-        document.setHtml("<br>".join(["X"] * lines))
-        return int(document.size().height()) + 1
 
     def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
         super().resizeEvent(event)
