@@ -27,12 +27,17 @@ class FrozenNameView(QTableView):
         frozen.setStyleSheet("QTableView { border-right: 1px solid palette(mid); }")
         for view in (self, frozen):
             view.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
+        # by the pixel, snapped to the column edges (_snap): by the item, the column scrolled
+        # to lies under the frozen one and the next starts wherever its width ends
+        self.setHorizontalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
         self.horizontalHeader().sectionResized.connect(self._on_resized)
         self.horizontalHeader().sortIndicatorChanged.connect(self._mirror_sort)
         frozen.horizontalHeader().sectionClicked.connect(self._sort_by_name)
         frozen.verticalScrollBar().valueChanged.connect(self.verticalScrollBar().setValue)
         self.verticalScrollBar().valueChanged.connect(frozen.verticalScrollBar().setValue)
         frozen.doubleClicked.connect(self.doubleClicked)
+        self._last_x = 0
+        self.horizontalScrollBar().valueChanged.connect(self._snap)
         self.viewport().stackUnder(frozen)
 
     def setModel(self, model: QAbstractItemModel) -> None:  # noqa: N802 - Qt's name
@@ -60,6 +65,25 @@ class FrozenNameView(QTableView):
         for column in range(model.columnCount() if model is not None else 0):
             self.frozen.setColumnHidden(column, column != 0)
         self._on_resized(0, 0, self.columnWidth(0))
+
+    def _snap(self, value: int) -> None:
+        """Scrolled sideways, the column beside the frozen one starts at its edge: a column
+        half under it showed the last digits of its numbers ("53.0615" for 253.0615)."""
+        header = self.horizontalHeader()
+        bar = self.horizontalScrollBar()
+        edges, x = [], 0
+        for visual in range(header.count()):
+            logical = header.logicalIndex(visual)
+            if not header.isSectionHidden(logical):
+                edges.append(x - self.columnWidth(0) if visual else 0)
+                x += header.sectionSize(logical)
+        fits = [e for e in edges if 0 <= e <= bar.maximum()] + [bar.maximum()]
+        if value not in fits:      # on to the next edge the way it moved: a small step still moves
+            ahead = [e for e in fits if e > value] if value > self._last_x else [e for e in fits if e < value]
+            value = min(ahead, key=lambda e: abs(e - value)) if ahead else value
+        self._last_x = value
+        if bar.value() != value:
+            bar.setValue(value)
 
     def _mirror_sort(self, section: int, order: Qt.SortOrder) -> None:
         self.frozen.horizontalHeader().setSortIndicator(section, order)

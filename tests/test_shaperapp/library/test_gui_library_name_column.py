@@ -61,3 +61,35 @@ def test_clicking_the_frozen_name_header_sorts(qtbot, pane):
     order = view.horizontalHeader().sortIndicatorOrder()
     names = [pane.table_model.name_at(r) for r in range(2)]
     assert names == sorted(names, reverse=order == Qt.SortOrder.DescendingOrder)
+
+
+def test_no_column_is_half_under_the_names(qtbot, pane):
+    """Scrolled by the pixel, the column beside the frozen names showed only its last
+    digits; every position short of the end now starts a column at the names' edge."""
+    view = pane.view
+    bar = view.horizontalScrollBar()
+    edge = view.columnWidth(0)
+    for value in range(0, bar.maximum(), 7):
+        bar.setValue(value)
+        if bar.value() == bar.maximum():
+            break                     # the end shows the last column whole, at the right
+        starts = [view.columnViewportPosition(c) for c in range(1, pane.table_model.columnCount())]
+        cut = [x for x, c in zip(starts, range(1, pane.table_model.columnCount()))
+               if x < edge < x + view.columnWidth(c)]
+        assert cut == [], (value, bar.value(), edge, cut)
+
+
+def test_small_steps_still_scroll_to_the_end(qtbot, pane):
+    bar = pane.view.horizontalScrollBar()
+    seen = [bar.value()]
+    for _ in range(200):
+        bar.setValue(bar.value() + 3)                 # an arrow key's or a wheel's small step
+        seen.append(bar.value())
+        if bar.value() == bar.maximum():
+            break
+    assert bar.value() == bar.maximum() and seen == sorted(seen)
+    for _ in range(200):
+        bar.setValue(bar.value() - 3)
+        if bar.value() == 0:
+            break
+    assert bar.value() == 0
