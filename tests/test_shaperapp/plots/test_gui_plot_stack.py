@@ -403,3 +403,18 @@ def test_sixteen_speeds_keep_the_readout_to_two_lines(qtbot, request, model, vie
     assert f"{SIXTEEN[0]:g}: {fmt(values[0], '.4g')}" in text           # the first speed, compact
     for rpm, value in zip(SIXTEEN, values):
         assert f"{rpm:g} r/min: {fmt(value, '.4g')} {unit}" in tip, rpm   # every speed's value
+
+
+def test_sixteen_speeds_legend_keeps_its_keys_on_a_row_of_their_own(qtbot, plots, model):
+    """The keys' long names ("working stroke") widened every column of one grid: 16 speeds
+    took 6 legend rows in the 560 px pane, and the acceleration plot fell below the window.
+    Now the speeds wrap by their own widths (3 rows) and the keys take one row."""
+    from shaperapp.plots.legend import ROW_HEIGHT
+    model.set_rpms(SIXTEEN)
+    plots.set_x_mode("time")                     # its keys: working stroke, return stroke
+    QApplication.processEvents()
+    legend = plots.stack().legend("main")
+    assert legend.columns() >= 6                                   # 4 before
+    row = max(ROW_HEIGHT, legend._legend.items[0][1].minimumHeight())      # one line of entries
+    assert legend.head.sceneBoundingRect().height() <= 4 * row + 1, (legend.head.sceneBoundingRect(), row)
+    assert len(legend.names()) == 18 and legend.names()[:16] == [f"{r:g} r/min" for r in SIXTEEN]
