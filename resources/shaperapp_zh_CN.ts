@@ -379,7 +379,7 @@
     </message>
     <message>
         <source>crank torque M (N·m)</source>
-        <translation>曲柄平衡力矩 M (N·m)</translation>
+        <translation>曲柄驱动力矩 M (N·m)</translation>
     </message>
     <message>
         <source>power (W)</source>
@@ -463,11 +463,11 @@
     </message>
     <message>
         <source>cut starts (cutting)</source>
-        <translation>切削开始（切削中）</translation>
+        <translation>切削开始（计入切削力）</translation>
     </message>
     <message>
         <source>cut ends (cutting)</source>
-        <translation>切削结束（切削中）</translation>
+        <translation>切削结束（计入切削力）</translation>
     </message>
     <message>
         <source>max cutting speed</source>
@@ -491,7 +491,7 @@
     </message>
     <message>
         <source>Crank torque, cutting force and guide</source>
-        <translation>曲柄力矩、切削力与导路反力</translation>
+        <translation>曲柄驱动力矩、切削力与导路反力</translation>
     </message>
     <message>
         <source>Joint forces at O2 and A</source>
@@ -1589,7 +1589,7 @@
     </message>
     <message>
         <source>peak torque (N·m)</source>
-        <translation>峰值力矩 (N·m)</translation>
+        <translation>最大驱动力矩 (N·m)</translation>
     </message>
     <message>
         <source>J_F (kg·m²)</source>
@@ -1791,7 +1791,7 @@
     </message>
     <message>
         <source>mean torque</source>
-        <translation>平均力矩</translation>
+        <translation>平均驱动力矩</translation>
     </message>
     <message>
         <source>Joint forces at {0}</source>
@@ -2869,11 +2869,11 @@
     </message>
     <message>
         <source>Values under the mouse, or at the cursor while the crank moves; click a plot to move the mechanism to that crank position</source>
-        <translation>鼠标处的数值，曲柄转动时为游标处的数值；单击曲线图可将机构移到该曲柄位置</translation>
+        <translation>鼠标处的数值，曲柄转动时为光标处的数值；单击曲线图可将机构移到该曲柄位置</translation>
     </message>
     <message>
         <source>cursor {0}</source>
-        <translation>游标 {0}</translation>
+        <translation>光标 {0}</translation>
     </message>
 </context>
 <context>
@@ -3119,11 +3119,11 @@
     </message>
     <message>
         <source>7 Crank torque, energy and flywheel</source>
-        <translation>7 曲柄平衡力矩、能量与飞轮</translation>
+        <translation>7 曲柄驱动力矩、能量与飞轮</translation>
     </message>
     <message>
         <source>Crank torque, input power, energy fluctuation ΔE and joint forces over one revolution</source>
-        <translation>一个运动循环内的曲柄平衡力矩、输入功率、能量变化 ΔE 与运动副反力</translation>
+        <translation>一个运动循环内的曲柄驱动力矩、输入功率、能量变化 ΔE 与运动副反力</translation>
     </message>
     <message>
         <source>No loads were given, so the force analysis is left out. Give the masses and the cutting force (or a design file with loads) to include it.</source>
@@ -3423,7 +3423,7 @@
     </message>
     <message>
         <source>The ram's velocity and acceleration, the crank torque and the power follow at every speed.</source>
-        <translation>随后列出各转速下滑枕的速度和加速度、曲柄平衡力矩和功率。</translation>
+        <translation>随后列出各转速下滑枕的速度和加速度、曲柄驱动力矩和功率。</translation>
     </message>
     <message>
         <source>The ram's velocity and acceleration follow at every speed.</source>
@@ -3483,7 +3483,7 @@
     </message>
     <message>
         <source>Mean / max crank torque</source>
-        <translation>平均 / 最大曲柄平衡力矩</translation>
+        <translation>平均 / 最大曲柄驱动力矩</translation>
     </message>
     <message>
         <source>Mean power (motor, before efficiency)</source>
@@ -3539,7 +3539,7 @@
     </message>
     <message>
         <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω3 and α3 are positive clockwise (as ψ and the crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
-        <translation>&lt;b&gt;正方向。&lt;/b&gt;导杆的 ω3、α3 以顺时针为正（与 ψ 及曲柄转向相同），连杆的 ω4、α4 以逆时针为正。滑块沿导杆的滑动速度以离开 O4 为正，其科氏加速度 2·ω3·v_slide 取沿 ψ 增大方向的分量；矢量多边形中的 v_A3A2 与 a^k_A3A2 为其相反数。切削力从切削开始到切削结束均作用（两端包括在内）：这两个位置的行按切削中计算。</translation>
+        <translation>&lt;b&gt;正方向。&lt;/b&gt;导杆的 ω3、α3 以顺时针为正（与 ψ 及曲柄转向相同），连杆的 ω4、α4 以逆时针为正。滑块沿导杆的滑动速度以离开 O4 为正，其科氏加速度 2·ω3·v_slide 取沿 ψ 增大方向的分量；矢量多边形中的 v_A3A2 与 a^k_A3A2 为其相反数。切削力从切削开始到切削结束均作用（两端包括在内）：这两个位置的行计入切削力。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Velocities.&lt;/b&gt; v_A3 = v_A2 + v_A3A2 with v_A2 = ω1·L1 ⟂ O2A, v_A3 = ω3·O4A ⟂ O4A, v_A3A2 ∥ O4A; v_B = ω3·L3; block variant v_C = v_B + v_CB (v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω4·L4 ⟂ BC.</source>

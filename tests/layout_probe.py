@@ -184,6 +184,7 @@ def explore_report(app: QApplication, window) -> dict:
             "colorbar": heat.colorbar.axis}
     return {"map_height": heat.height(), "tab_height": view.height(),
             "colorbar_title": heat.colorbar.axis.label.toPlainText() if heat.colorbar.axis.label.isVisible() else "",
+            "colorbar_title_box": box(heat.colorbar.axis.label.sceneBoundingRect()),
             "view": box(shown), "ticks": {name: tick_labels(axis) for name, axis in axes.items()}}
 
 

@@ -3,7 +3,9 @@
 Three plots against the cam angle δ: the follower's angle ψ; its angular velocity ω and
 acceleration α at each crank speed of the design (the cam turns with the crank); and the
 pressure angle with the allowances of the rise and the return drawn over their phases.
-A cursor follows the animation.
+A cursor follows the animation. The axes are the stacked plots' (``plots.axes.TickAxis``):
+their tick spacing comes from the widest label, so "100200300" no longer runs together in a
+narrow Chinese pane, and each left axis is as wide as its two-line title and labels need.
 """
 from __future__ import annotations
 
@@ -11,18 +13,33 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QRectF
+from PySide6.QtCore import QRectF, Qt, QTimer
 from PySide6.QtGui import QColor, QPainter
-from PySide6.QtWidgets import QGridLayout, QWidget
+from PySide6.QtWidgets import QFrame, QGridLayout, QScrollArea, QVBoxLayout, QWidget
 
 from core.cam.follower import pitch, pressure_angle
+from shaperapp.plots.axes import TickAxis
 from shaperapp.widgets.image_export import render_scene
 from shaperapp.widgets.style import CURSOR, speed_colour
 
 from .model import CamModel
 
 SAMPLES = 721
+# One plot's least size: δ labelled every 90° beside the y labels and the two-line title,
+# and three y labels. Narrower (the Chinese pane at 1280 × 720 gave each 60 px of δ and
+# its labels ran together), the plots stand in one column that scrolls.
+MIN_PLOT_WIDTH = 230
+MIN_PLOT_HEIGHT = 130
 ALLOWANCE = "#c62828"
+
+
+def _plot() -> pg.PlotWidget:
+    """A plot with the app's tick axes: degrees at divisors of a turn along δ."""
+    axes = {side: TickAxis(side) for side in ("left", "bottom")}
+    axes["bottom"].set_degree_steps(True)
+    for axis in axes.values():
+        axis.enableAutoSIPrefix(False)
+    return pg.PlotWidget(axisItems=axes)
 
 
 class CamPlots(QWidget):
@@ -31,14 +48,21 @@ class CamPlots(QWidget):
     def __init__(self, cam_model: CamModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._model = cam_model
-        self.angle_plot = pg.PlotWidget()
-        self.speed_plot = pg.PlotWidget()
-        self.accel_plot = pg.PlotWidget()
-        self.pressure_plot = pg.PlotWidget()
+        self.angle_plot, self.speed_plot, self.accel_plot, self.pressure_plot = (_plot() for _ in range(4))
         self.plots = (self.angle_plot, self.speed_plot, self.accel_plot, self.pressure_plot)
-        layout = QGridLayout(self)
-        layout.setContentsMargins(0, 0, 0, 0)
-        layout.setSpacing(2)
+        self._inner = QWidget()
+        self._grid = QGridLayout(self._inner)
+        self._grid.setContentsMargins(0, 0, 0, 0)
+        self._grid.setSpacing(2)
+        self._columns = 0
+        self._scroll = QScrollArea()
+        self._scroll.setWidget(self._inner)
+        self._scroll.setWidgetResizable(True)
+        self._scroll.setFrameShape(QFrame.Shape.NoFrame)
+        self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        outer = QVBoxLayout(self)
+        outer.setContentsMargins(0, 0, 0, 0)
+        outer.addWidget(self._scroll)
         self.cursors = []
         for i, plot in enumerate(self.plots):
             plot.setMenuEnabled(False)
@@ -48,9 +72,15 @@ class CamPlots(QWidget):
             plot.addItem(cursor)
             self.cursors.append(cursor)
             plot.setLabel("bottom", "δ (°)")
-            layout.addWidget(plot, i // 2, i % 2)
+        self._arrange(2)
         for plot in self.plots[1:]:
             plot.setXLink(self.angle_plot)
+        # pyqtgraph fits y when it next paints: the axes' widths follow the ranges shown
+        self._fit_timer = QTimer(self)
+        self._fit_timer.setSingleShot(True)
+        self._fit_timer.timeout.connect(self.fit_axes)
+        for plot in self.plots:
+            plot.getPlotItem().vb.sigYRangeChanged.connect(self._fit_timer.start)
         self.curves: dict[str, object] = {}
         self._stale = False
         cam_model.camChanged.connect(self.redraw)
@@ -63,7 +93,30 @@ class CamPlots(QWidget):
         labels = ((self.tr("follower ψ"), "°"), (self.tr("follower ω"), "rad/s"),
                   (self.tr("follower α"), "rad/s²"), (self.tr("pressure angle"), "°"))
         for plot, (text, unit) in zip(self.plots, labels):
-            plot.setLabel("left", f"{text} ({unit})")
+            plot.setLabel("left", f"{text}<br>({unit})")
+        self.fit_axes()
+
+    def fit_axes(self) -> None:
+        """One left-axis width (the δ axes line up), as wide as every title and widest
+        tick label need."""
+        axes = [plot.getAxis("left") for plot in self.plots]
+        width = max(math.ceil(axis.needed_width()) for axis in axes)
+        for axis in axes:
+            if axis.fixedWidth != width:
+                axis.setWidth(width)
+
+    def _arrange(self, columns: int) -> None:
+        """The plots in two columns, or in one that scrolls."""
+        if columns != self._columns:
+            self._columns = columns
+            for i, plot in enumerate(self.plots):
+                self._grid.addWidget(plot, i // columns, i % columns)
+            self._inner.setMinimumHeight(MIN_PLOT_HEIGHT * (len(self.plots) // columns))
+
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().resizeEvent(event)
+        self._arrange(2 if event.size().width() >= 2 * MIN_PLOT_WIDTH else 1)
+        self.fit_axes()
 
     def data(self) -> dict[str, np.ndarray]:
         """The plotted series: cam angle (°), ψ (°), ω and α per speed, pressure angle (°)."""
@@ -106,6 +159,11 @@ class CamPlots(QWidget):
         self.pressure_plot.plot([0.0, rise_end], [cam.inputs.pressure_deg] * 2, pen=dash)
         self.pressure_plot.plot(list(back), [cam.inputs.return_pressure_deg] * 2, pen=dash)
         self.pressure_plot.setYRange(0.0, max(90.0, float(d["pressure_deg"].max())), padding=0.02)
+        for plot in self.plots:                         # ranges now, for the axes' widths
+            box = plot.getPlotItem().vb
+            box.updateAutoRange()
+            box.updateMatrix()
+        self.fit_axes()
         self.move_cursor()
 
     def render(self, painter: QPainter, target: QRectF, cursor: bool = False) -> None:
@@ -113,7 +171,7 @@ class CamPlots(QWidget):
         vectors, without the cursor unless ``cursor``."""
         if self._stale:
             self.redraw()
-        sx, sy = target.width() / max(self.width(), 1), target.height() / max(self.height(), 1)
+        sx, sy = target.width() / max(self._inner.width(), 1), target.height() / max(self._inner.height(), 1)
         for line in self.cursors:
             line.setVisible(cursor)
         try:

@@ -108,6 +108,11 @@ def paint_cam(painter: QPainter, rect: QRectF, cam: Cam, delta: float, label: st
     fitted into ``rect``, or at ``scale`` (device units per mm of the design) centred in
     it (the Cam tab, its image export and the report)."""
     f = cam.follower
+    head = QRectF()
+    if label:           # wrapped, never cut (the Chinese line lost its ψ at 1280 × 720), above the cam
+        head = painter.boundingRect(QRectF(rect.left() + 6, rect.top() + 4, max(rect.width() - 12, 1.0), 1e4),
+                                    int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap), label)
+        rect = rect.adjusted(0.0, head.height() + 4.0, 0.0, 0.0)
     pitch_pts, profile_pts = (_turn(c, -delta) for c in (curves or cam_curves(cam)))
     a = f.distance_mm
     roller = _roller_centre(cam, delta)
@@ -154,6 +159,5 @@ def paint_cam(painter: QPainter, rect: QRectF, cam: Cam, delta: float, label: st
     painter.drawText(at(0.0, 0.0) + QPointF(6, 14), "O")
     painter.drawText(at(a, 0.0) + QPointF(6, 14), "A")
     if label:
-        painter.drawText(QRectF(rect.left() + 6, rect.top() + 4, rect.width() - 12, 40),
-                         Qt.AlignmentFlag.AlignLeft, label)
+        painter.drawText(head, int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap), label)
     painter.restore()

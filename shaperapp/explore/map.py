@@ -7,11 +7,15 @@ background through the image (NaN is transparent).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QBrush, QColor, QPen
 from PySide6.QtWidgets import QGraphicsRectItem, QWidget
+
+from shaperapp.widgets.axis_fit import axis_width
 
 INVALID = QColor("#b8b8b8")
 COLORMAP = "viridis"
@@ -69,6 +73,7 @@ class HeatMap(pg.PlotWidget):
         self.image.setRect(rect)
         self.colorbar.setLevels((low, high))
         self.getViewBox().setRange(rect, padding=0.0)
+        self._fit_colorbar()
 
     def set_marker(self, x: float | None, y: float | None) -> None:
         self.marker.setData([] if x is None or y is None else [x], [] if y is None or x is None else [y])
@@ -78,6 +83,18 @@ class HeatMap(pg.PlotWidget):
         self.setLabel("bottom", x_label)
         self.setLabel("left", y_label)
         self.colorbar.axis.setLabel(value_label)
+        self._fit_colorbar()
+
+    def _fit_colorbar(self) -> None:
+        """The colour bar's axis as wide as its title and its labels need: pyqtgraph allows
+        0.8 of the title's height, and the Chinese title ran over the ticks."""
+        axis = self.colorbar.axis
+        axis.setWidth(math.ceil(axis_width(axis)))
+
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().resizeEvent(event)
+        if hasattr(self, "colorbar"):        # pyqtgraph resizes once while it builds the view
+            self._fit_colorbar()             # another height may label other values
 
     def cell_center(self, row: int, column: int) -> QPointF:
         """Data coordinates of a cell's centre."""

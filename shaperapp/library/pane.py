@@ -13,7 +13,7 @@ import os
 from PySide6.QtCore import QEvent, QSettings, Qt, QTimer, Signal
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QFileDialog, QHBoxLayout, QInputDialog,
-                               QLabel, QLineEdit, QMessageBox, QPushButton, QTableView, QToolBar,
+                               QLabel, QLineEdit, QMessageBox, QPushButton, QToolBar,
                                QVBoxLayout, QWidget)
 
 from core.compare import MAX_DESIGNS
@@ -25,6 +25,7 @@ from shaperapp.widgets.messages import describe_file_error
 from .actions import LibraryActions
 from .dialogs import SaveDialog, ask_refused_library
 from .filter import core_filter
+from .frozen_view import FrozenNameView
 from .stale import StaleFiguresBar
 from .table import LibraryTableModel
 
@@ -60,7 +61,7 @@ class LibraryPane(QWidget):
         self.stale_bar = StaleFiguresBar()
         self.stale_bar.refreshed.connect(self._refresh)
         self.stale_bar.failed.connect(self._show_failure)
-        self.view = QTableView()
+        self.view = FrozenNameView()
         self.view.setModel(self.table_model)
         self.view.setSortingEnabled(True)
         self.view.sortByColumn(0, Qt.SortOrder.AscendingOrder)
@@ -70,6 +71,7 @@ class LibraryPane(QWidget):
         self.view.setAlternatingRowColors(True)
         self.view.setWordWrap(False)
         self.view.horizontalHeader().setResizeContentsPrecision(200)   # not all 10 000 rows
+        self.view.set_look()
         # sized again to the rows after every query (names were cut "base K…" after an add)
         self.table_model.modelReset.connect(self.view.resizeColumnsToContents)
         self.view.doubleClicked.connect(lambda _: self.open_selected())

@@ -19,6 +19,7 @@ from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPen
 from PySide6.QtWidgets import QGraphicsItem, QGraphicsTextItem
 from pyqtgraph.graphicsItems.LegendItem import ItemSample
 
+from shaperapp.widgets.axis_fit import axis_width
 from shaperapp.widgets.style import TEXT
 
 AXIS_WIDTH = 62          # fixed left-axis width so the stacked plots line up
@@ -100,6 +101,12 @@ class TickAxis(pg.AxisItem):
                 break
         return [(4.0 * span, 0.0)]      # no room for two labels: at most one
 
+
+    def needed_width(self) -> float:
+        """The width this left axis needs so that its title never covers a tick label
+        (``widgets.axis_fit``). With 16 speeds the torque's "−4000" ran under "(N·m)" in
+        the fixed AXIS_WIDTH."""
+        return axis_width(self)
 
     # ---- lean drawing ---------------------------------------------------------
     # pyqtgraph's tickValues and generateDrawSpecs serve every option of an axis; these

@@ -19,7 +19,7 @@ from PySide6.QtWidgets import QComboBox, QLabel, QVBoxLayout, QWidget
 from core.dynamics import Dynamics
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.style import fmt, speed_colour
+from shaperapp.widgets.style import crank_text, speed_colour
 
 from .curves import Band, Curve
 from .legend import LegendKey
@@ -177,7 +177,7 @@ class ForcePlots(StackView):
         return self.tr("Crank angle φ (°)"), 0.0, 360.0, True
 
     def x_text(self, x: float) -> str:
-        return self.tr("φ = {0}°").format(fmt(x, ".1f"))
+        return self.tr("φ = {0}°").format(crank_text(x))
 
     def cursor_x(self, index: int) -> float:
         return math.degrees(float(self._model.motion.crank_angle[index]))

@@ -16,7 +16,7 @@ from PySide6.QtGui import QAction, QColor, Qt
 from PySide6.QtWidgets import QComboBox, QLabel, QMenu, QToolButton, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.style import RETURN_FILL, WORK_FILL, fmt, speed_colour
+from shaperapp.widgets.style import RETURN_FILL, WORK_FILL, crank_text, fmt, speed_colour
 
 from .curves import Band, Curve
 from .legend import LegendKey
@@ -197,7 +197,7 @@ class PlotsWidget(StackView):
 
     def x_text(self, x: float) -> str:
         if self._mode == ANGLE:
-            return self.tr("φ = {0}°").format(fmt(x, ".1f"))
+            return self.tr("φ = {0}°").format(crank_text(x))
         return self.tr("t = {0} s").format(fmt(x, ".4g"))
 
     def cursor_x(self, index: int) -> float | dict[str, float]:

@@ -59,16 +59,22 @@ class GroupLegend:
         self._legend = _Legend(labelTextColor=TEXT, frame=False, horSpacing=ENTRY_GAP // 2)
         self.head.addItem(self._title, row=0, col=0, colspan=2)
         self.head.addItem(self._unit, row=1, col=0)
+        # The keys (line styles, bands) on rows of their own under the curves': in one grid
+        # the long key names widened every column, and 16 speeds took 6 rows instead of 4.
+        self._keys = _Legend(labelTextColor=TEXT, frame=False, horSpacing=ENTRY_GAP // 2)
         self.head.addItem(self._legend, row=1, col=1)
-        self.head.layout.setAlignment(self._legend, Qt.AlignmentFlag.AlignLeft)
+        self.head.addItem(self._keys, row=2, col=1)
+        for legend in (self._legend, self._keys):
+            self.head.layout.setAlignment(legend, Qt.AlignmentFlag.AlignLeft)
+            legend.sigSampleClicked.connect(self._on_clicked)
         self.head.layout.setAlignment(self._unit, Qt.AlignmentFlag.AlignTop)
         self._names: list[str] = []
-        self._legend.sigSampleClicked.connect(self._on_clicked)
         self._on_toggle = on_toggle
         self._signature: tuple = ()
         self._labels: dict[object, str] = {}        # sample item → label of the curves it keys
         self._width = 0.0
         self._columns = 0
+        self._key_columns = 0
         self.set_title("")
 
     def set_title(self, text: str) -> None:
@@ -102,6 +108,7 @@ class GroupLegend:
             return False
         self._signature = signature
         self._legend.clear()
+        self._keys.clear()
         self._labels.clear()
         self._names = [label for label, *_ in entries] + [key.label for key in keys]
         for label, text, colour, width in entries:
@@ -115,8 +122,9 @@ class GroupLegend:
                                          pen=pg.mkPen(None))
             else:
                 sample = pg.PlotCurveItem(pen=pg.mkPen(key.colour, width=KEY_WIDTH, style=key.style))
-            self._legend.addItem(sample, key.label)
-        self._columns = 0
+            self._keys.addItem(sample, key.label)
+        self._keys.setVisible(bool(keys))
+        self._columns = self._key_columns = 0
         self.fit_width(self._width)
         return True
 
@@ -128,33 +136,24 @@ class GroupLegend:
         return self._columns
 
     def fit_width(self, width: float) -> None:
-        """Wrap the entries into as many columns as ``width`` px (the view's) holds."""
+        """Wrap the entries, then the keys, into as many columns as ``width`` px (the
+        view's) holds."""
         self._width = width
-        items = self._legend.items
-        if not items:
-            self._fit_height()
-            return
-        widths = [SAMPLE_WIDTH + ENTRY_GAP + label.minimumWidth() for _, label in items]
         unit = self._unit.minimumWidth() + ENTRY_GAP if self._unit.isVisible() else 0.0
         room = width - AXIS_WIDTH - 8.0 - unit
-        # the most columns whose widest entries (filled row by row) fit side by side
-        columns = next((c for c in range(len(items), 1, -1)
-                        if sum(max(widths[j::c]) for j in range(c)) <= room), 1)
-        entry = sum(max(widths[j::columns]) for j in range(columns)) / columns
-        if columns != self._columns:
-            self._columns = columns
-            # setColumnCount only re-lays out on a change of count: force it after a rebuild
-            self._legend.columnCount = 0
-            self._legend.setColumnCount(columns)
-        self._legend.setMaximumWidth(columns * entry)     # packed to the left, not spread
+        self._columns = _wrap(self._legend, room, self._columns)
+        self._key_columns = _wrap(self._keys, room, self._key_columns)
         self._fit_height()
 
     def _fit_height(self) -> None:
-        rows = math.ceil(len(self._legend.items) / max(self._columns, 1))
-        row = max([ROW_HEIGHT] + [label.minimumHeight() for _, label in self._legend.items])
-        height = rows * row
-        self._legend.setMinimumHeight(height)
-        self._legend.setMaximumHeight(height)
+        row = max([ROW_HEIGHT] + [label.minimumHeight() for legend in (self._legend, self._keys)
+                                  for _, label in legend.items])
+        height = 0
+        for legend, columns in ((self._legend, self._columns), (self._keys, self._key_columns)):
+            own = math.ceil(len(legend.items) / max(columns, 1)) * row
+            legend.setMinimumHeight(own)
+            legend.setMaximumHeight(own)
+            height += own
         title = ROW_HEIGHT if self._title.isVisible() else 0
         self.head.setMinimumHeight(height + title)
         self.head.setMaximumHeight(height + title)
@@ -165,3 +164,21 @@ class GroupLegend:
             item.setVisible(True)       # a key, not a curve: stays drawn
             return
         self._on_toggle(label, item.isVisible())
+
+
+def _wrap(legend: pg.LegendItem, room: float, columns: int) -> int:
+    """Lay ``legend``'s entries in the most columns whose widest entries (filled row by
+    row) fit side by side in ``room`` px; the columns (``columns`` is the present count)."""
+    items = legend.items
+    if not items:
+        return 0
+    widths = [SAMPLE_WIDTH + ENTRY_GAP + label.minimumWidth() for _, label in items]
+    count = next((c for c in range(len(items), 1, -1)
+                  if sum(max(widths[j::c]) for j in range(c)) <= room), 1)
+    entry = sum(max(widths[j::count]) for j in range(count)) / count
+    if count != columns:
+        # setColumnCount only re-lays out on a change of count: force it after a rebuild
+        legend.columnCount = 0
+        legend.setColumnCount(count)
+    legend.setMaximumWidth(count * entry)     # packed to the left, not spread
+    return count

@@ -33,7 +33,7 @@ from .curves import LEGEND_WIDTH, PlotSlots, finite_range
 from .legend import GroupLegend
 from .readout import Readout
 from .series import Series, StackSource
-from .stack_layout import fit_heights, fitted_y, place_rows, show_x_values
+from .stack_layout import fit_axis_widths, fit_heights, fitted_y, place_rows, show_x_values
 
 WHITE = QColor("#ffffff")
 
@@ -251,6 +251,7 @@ class PlotStack(QWidget):
                 # now, not in the next paint's preparation, which would cost a second paint
                 plot.item.vb.updateMatrix()
             plot.place_band_labels()
+        fit_axis_widths(p.item for key, p in self._plots.items() if self._shown[key])
 
     def _on_angle(self, index: int) -> None:
         """Only cursors and dots move with the animation; nothing while hidden."""
@@ -263,7 +264,7 @@ class PlotStack(QWidget):
         for key, plot in self._plots.items():
             if self._shown[key]:
                 plot.move_cursor(xs)
-        self._readout.follow_cursor()
+        self._readout.follow_cursor(index)
 
     def _on_legend_toggle(self, label: str, shown: bool) -> None:
         self._hidden = (self._hidden - {label}) if shown else (self._hidden | {label})

@@ -14,6 +14,7 @@ from collections.abc import Iterable, Mapping, Sequence
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
 
+from .axes import AXIS_WIDTH
 from .curves import PlotSlots
 from .series import Series
 
@@ -68,6 +69,16 @@ def fit_heights(view: pg.GraphicsLayoutWidget, plots: Iterable[PlotSlots]) -> No
     layout.invalidate()
     need = layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()
     view.setMinimumHeight(math.ceil(need) + 2 * view.frameWidth())
+
+
+def fit_axis_widths(items: Iterable[pg.PlotItem]) -> None:
+    """One left-axis width for all ``items`` (so the stacked plots line up): at least
+    AXIS_WIDTH, and wide enough that no title covers a tick label of its plot."""
+    axes = [item.getAxis("left") for item in items]
+    width = max([AXIS_WIDTH] + [math.ceil(axis.needed_width()) for axis in axes])
+    for axis in axes:
+        if axis.fixedWidth != width:
+            axis.setWidth(width)
 
 
 def fitted_y(lo: float, hi: float, shown: tuple[float, float],

@@ -42,7 +42,6 @@ from shaperapp.widgets.image_export import painting_bytes
 
 Paint = Callable[[QPainter, QRectF, float], None]
 FINE_STEP_DEG = 0.25
-CAM_AXIS_PX = 64        # the cam plots' left axes: room for "-400" and the axis title
 
 
 def _fit(renderer: QSvgRenderer, rect: QRectF) -> QRectF:
@@ -244,8 +243,7 @@ class ReportViews:
         cam_model = CamModel(self.model)
         cam_model.set_fields(**typed_from(inputs, phase).dict)
         plots = self._show(CamPlots(cam_model), 680, 450)
-        for plot in plots.plots:        # one axis width: the δ axes line up, no tick text on a curve
-            plot.getAxis("left").setWidth(CAM_AXIS_PX)
+        plots.fit_axes()                # one axis width: the δ axes line up, no tick text on a curve
         QCoreApplication.processEvents()
         svg = painting_bytes("svg", QSizeF(680, 450), plots.render,
                              QCoreApplication.translate("Report", "Feed cam"), QColor("white"))

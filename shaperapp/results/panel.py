@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from PySide6.QtCore import QEvent
+from PySide6.QtCore import QEvent, QPoint
 from PySide6.QtWidgets import QAbstractScrollArea, QGroupBox, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
@@ -118,6 +118,13 @@ class MetricsPanel(QWidget):
         self._watched = area
         for bar in (area.verticalScrollBar(), area.horizontalScrollBar()):
             bar.valueChanged.connect(lambda _: self._catch_up(unseen=False))
+        area.verticalScrollBar().valueChanged.connect(self._pin_headers)
+
+    def _pin_headers(self) -> None:
+        """Each table's column titles stay in view while the pane scrolls its rows."""
+        port = self._watched.viewport()
+        for table in self.tables():
+            table.pin_header(-table.mapTo(port, QPoint(0, 0)).y())
 
     def paintEvent(self, event) -> None:
         """Any other way into view (the pane resized, a layout change) repaints the pane

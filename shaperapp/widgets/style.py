@@ -37,6 +37,12 @@ def fmt(value: float, spec: str) -> str:
     return text
 
 
+def crank_text(degrees: float) -> str:
+    """A crank angle as every read-out writes it (the animation bar, the plots' cursor):
+    one place, so that two read-outs of one angle cannot round it differently."""
+    return fmt(degrees, ".1f")
+
+
 def configure_plots() -> None:
     """pyqtgraph's global look, the same for the window, the report and the benchmarks
     (which must measure what a user sees): white background, black text, antialiased.

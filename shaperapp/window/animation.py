@@ -17,7 +17,7 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QFrame, QGridLayout, QHBoxL
                                QScrollArea, QSlider, QStyle, QToolButton, QVBoxLayout, QWidget)
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.style import fmt, speed_colour
+from shaperapp.widgets.style import crank_text, fmt, speed_colour
 
 TICK_MS = 16                       # ~60 frames per second
 SPEED_FACTORS = (0.1, 0.25, 0.5, 1.0, 2.0)
@@ -243,7 +243,7 @@ class AnimationBar(QWidget):
         if index >= m.crank_angle.size:
             return
         # fmt: a value at a limit position (±1e-17) reads 0.000, never -0.000
-        self._values["crank"].setText(fmt(math.degrees(float(m.crank_angle[index])), ".1f"))
+        self._values["crank"].setText(crank_text(math.degrees(float(m.crank_angle[index]))))
         self._values["lever"].setText(fmt(math.degrees(float(m.lever_angle[index])), ".2f"))
         self._values["ram_x"].setText(fmt(float(m.ram_x[index]), ".1f"))
         for i, row in enumerate(self._speed_rows[: m.rpm.size]):

@@ -359,3 +359,62 @@ def test_a_small_edit_keeps_a_y_range_that_still_fits_and_a_large_one_refits(plo
     values = model.motion.ram_v
     pad = 0.08 * np.ptp(values)
     assert vb.viewRange()[1] == pytest.approx([values.min() - pad, values.max() + pad])
+
+
+def test_readout_follows_the_crank_moved_under_a_still_mouse(qtbot, plots, model):
+    """Issue 34 item 8: the mouse left over a plot at 216.4°, the crank stepped on with the
+    keys to 217°: the read-out kept "φ = 216.4°" beside the animation bar's 217.0."""
+    hover(qtbot, plots, "ram_v", 216.4)
+    qtbot.waitUntil(lambda: "r/min" in plots.readout_text() and "cursor" not in plots.readout_text())
+    assert "217.0" not in plots.readout_text()
+    model.set_angle_index(217)                     # 1° grid: 217°, as the step key does
+    qtbot.waitUntil(lambda: "217.0°" in plots.readout_text(), timeout=2000)
+    motion = solve(model.design, model.motion.crank_angle, model.rpms)
+    for row in motion.ram_v:
+        assert f"{fmt(row[217], '.4g')} m/s" in plots.readout_text()
+
+
+@pytest.mark.parametrize("view", ["plots", "forces"])
+def test_sixteen_speeds_keep_the_readout_to_two_lines(qtbot, request, model, view):
+    """With 16 speeds the read-out took 5 lines (kinematics in time mode, forces) and pushed
+    the lowest plot below the window; now it keeps two, shows the speeds it has room for
+    and lists every value in its tooltip."""
+    from core.dynamics import solve_dynamics
+    from shaperapp.plots.readout import Readout
+    widget = request.getfixturevalue(view)
+    model.set_rpms(SIXTEEN)
+    if view == "plots":
+        widget.set_x_mode("time")
+    model.set_angle_index(0)
+    qtbot.wait(150)
+    model.set_angle_index(100)
+    readout = widget.findChild(Readout)
+    qtbot.waitUntil(lambda: "cursor" in widget.readout_text(), timeout=2000)
+    qtbot.wait(150)
+    lines = readout.fontMetrics().lineSpacing()
+    assert readout.height() <= 2 * lines + 8, (readout.height(), lines)      # 5 lines before
+    if view == "plots":
+        x = solve(model.design, model.motion.crank_angle, model.rpms).ram_x[100]   # every speed's
+        values, unit = [x] * len(SIXTEEN), "mm"
+    else:
+        dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms, model.masses)
+        values, unit = dyn.crank_torque[:, 100], "N·m"
+    text, tip = widget.readout_text(), readout.toolTip()
+    assert f"{SIXTEEN[0]:g}: {fmt(values[0], '.4g')}" in text           # the first speed, compact
+    for rpm, value in zip(SIXTEEN, values):
+        assert f"{rpm:g} r/min: {fmt(value, '.4g')} {unit}" in tip, rpm   # every speed's value
+
+
+def test_sixteen_speeds_legend_keeps_its_keys_on_a_row_of_their_own(qtbot, plots, model):
+    """The keys' long names ("working stroke") widened every column of one grid: 16 speeds
+    took 6 legend rows in the 560 px pane, and the acceleration plot fell below the window.
+    Now the speeds wrap by their own widths (3 rows) and the keys take one row."""
+    from shaperapp.plots.legend import ROW_HEIGHT
+    model.set_rpms(SIXTEEN)
+    plots.set_x_mode("time")                     # its keys: working stroke, return stroke
+    QApplication.processEvents()
+    legend = plots.stack().legend("main")
+    assert legend.columns() >= 6                                   # 4 before
+    row = max(ROW_HEIGHT, legend._legend.items[0][1].minimumHeight())      # one line of entries
+    assert legend.head.sceneBoundingRect().height() <= 4 * row + 1, (legend.head.sceneBoundingRect(), row)
+    assert len(legend.names()) == 18 and legend.names()[:16] == [f"{r:g} r/min" for r in SIXTEEN]

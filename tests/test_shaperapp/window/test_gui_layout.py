@@ -107,6 +107,9 @@ def test_every_stacked_plot_has_ticks_and_its_own_title(tmp_path, width, height,
                 assert plot["title"] is not None and plot["title_text"].strip(), (where, plot["key"])
                 tx, ty, tw, th = plot["title"]
                 assert y - 1 <= ty and ty + th <= y + h + 1, (where, plot["key"], plot["title"], plot["box"])
+                # the title never covers a tick label: "(N·m)" ran over the minus of −4000
+                # with 16 speeds, the two-line Chinese titles over every label
+                assert not [t for t in plot["ticks"] if overlap(plot["title"], t)], (where, plot["key"])
             x_ticks = [p["x_ticks"] for p in plots if p["x_ticks"] is not None]
             assert len(x_ticks) == 1 and len(x_ticks[0]) >= 3 and spread(x_ticks[0]), where
             assert spread([p["title"] for p in plots]), where              # titles apart
@@ -121,6 +124,8 @@ def test_explore_map_fills_its_tab(tmp_path, width, height, lang):
     report = probe(tmp_path, width, height, "--lang", lang, "--explore")["explore"]
     assert report["map_height"] >= 0.4 * report["tab_height"], report
     assert report["colorbar_title"].strip()
+    # the Chinese title ran over the colour bar's tick labels (issue 34 item 8)
+    assert not [t for t in report["ticks"]["colorbar"] if overlap(report["colorbar_title_box"], t)]
     x, y, w, h = report["view"]
     for name, ticks in report["ticks"].items():
         assert len(ticks) >= 3, (name, ticks)
