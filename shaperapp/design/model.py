@@ -24,7 +24,6 @@ from core.dynamics import Dynamics, DynamicsSummary, MassProperties
 from core.errors import DesignError
 from core.geometry import Design
 from core.kinematics import Motion
-from core.library.names import file_stem
 from core.metrics import CycleMetrics
 from core.spec import NUMBER_FIELDS, Spec
 
@@ -325,6 +324,7 @@ class DesignModel(QObject):
     def source_name(self) -> str:
         """The design's file name without the suffix, else the library entry it was opened
         from, else "". Kept through edits: :attr:`dirty` says if the screen still shows it."""
+        from core.library.names import file_stem   # here: the first screen never imports the library
         return file_stem(self._path) if self._path else self._library_name
 
     def set_path(self, path: str) -> None:
