@@ -53,8 +53,8 @@ def sum_of_centre(p: GearPairInputs, centre: float) -> tuple[float, float]:
     cos_w = reference_centre(p) * math.cos(p.alpha) / centre
     if not cos_w < 1.0:
         least = reference_centre(p) * math.cos(p.alpha)
-        raise DesignError("centre", centre, f"must be > {least:.4f} mm (the base circles "
-                          "would overlap the line of centres)")
+        raise DesignError("centre", centre, f"must be > a cos α = {least:.4f} mm (the "
+                          "working pressure angle would be 0)")
     alpha_w = math.acos(cos_w)
     return (float(inv(alpha_w) - inv(p.alpha)) * (p.z1 + p.z2) / (2.0 * math.tan(p.alpha)),
             alpha_w)
