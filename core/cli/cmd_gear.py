@@ -43,12 +43,17 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out.add_argument("--json", action="store_true", help="print the results as JSON")
     out.add_argument("--csv", metavar="FILE|-", help="write the results as CSV (one row per "
                      "quantity, units in the names)")
+    out.add_argument("--dxf", metavar="FILE", help="write the meshing sheet as DXF, the pair at 1:1 "
+                     "in mm (O1 at the origin, O2 on +x), the sheet scaled round it")
+    out.add_argument("--sheet", metavar="SIZE", help="paper of the --dxf sheet: A0, A1, A2, A3 "
+                     "(default A2)")
 
 
-def add_gear_options(parser: argparse.ArgumentParser) -> argparse._ArgumentGroup:
+def add_gear_options(parser: argparse.ArgumentParser,
+                     title: str = "the gear pair (z1, z2 and the module are required unless "
+                                  "--design has a gear)") -> argparse._ArgumentGroup:
     """The pair's options (shared with ``shaper drawing --content gear``); the group."""
-    gear = parser.add_argument_group("the gear pair (z1, z2 and the module are required unless "
-                                     "--design has a gear)")
+    gear = parser.add_argument_group(title)
     gear.add_argument("--z1", metavar="Z", help="teeth of the pinion (motor side), ≥ 5")
     gear.add_argument("--z2", metavar="Z", help="teeth of the gear (on the crank), ≥ 5")
     gear.add_argument("--module", metavar="MM", help="module m, mm (GB/T 1357 first series, "
@@ -137,14 +142,18 @@ def _cell(value) -> str:
 def run(args: argparse.Namespace) -> int:
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
-    for option, target in (("--csv", args.csv), ("--dxf", getattr(args, "dxf", None))):
+    for option, target in (("--csv", args.csv), ("--dxf", args.dxf)):
         if target is not None:
             check_target(option, target)
+    if args.sheet is not None and args.dxf is None:
+        raise UsageError("--sheet: only with --dxf")
     pair = pair_from_args(args)
+    if args.dxf is not None:
+        _paper(args)
     summary = gear_summary(pair)
     if args.csv is not None:
         write_output("--csv", args.csv, csv_text(summary))
-    if getattr(args, "dxf", None) is not None:
+    if args.dxf is not None:
         _write_dxf(pair, args)
     if args.json:
         print_json(summary)
@@ -153,5 +162,22 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _paper(args: argparse.Namespace):
+    from ..drawing.sheet import PAPERS
+    name = (args.sheet or "A2").upper()
+    if name not in PAPERS:
+        raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
+    return PAPERS[name]
+
+
 def _write_dxf(pair: GearPair, args: argparse.Namespace) -> None:
-    raise OutputError("--dxf: not available yet")
+    """The meshing sheet in English, as ``shaper drawing --content gear`` draws it."""
+    from ..drawing.gear_sheet import gear_sheet          # ezdxf: only when a drawing is asked for
+    from ..drawing.sheet_dxf import save_sheet_dxf
+    from ..drawing.title_block import TitleBlock
+    block = TitleBlock("", f"z {pair.inputs.z1}/{pair.inputs.z2}, m {pair.inputs.module_mm:g}", "", "4/4")
+    drawn = gear_sheet(pair, _paper(args), block=block)
+    try:
+        save_sheet_dxf(drawn.sheet, args.dxf)
+    except OSError as exc:          # a WriteError: names the user's path and a plain reason
+        raise OutputError(f"--dxf: {exc}") from None
