@@ -10,6 +10,7 @@ from .involute import FIRST_SERIES_MM
 
 MIN_TEETH = 5
 MAX_TEETH = 1000
+MIN_MODULE_MM = 0.01
 MAX_MODULE_MM = 100.0
 MAX_SHIFT = 5.0
 
@@ -57,6 +58,10 @@ class GearPairInputs:
                 raise DesignError(name, value, "must be a whole number of teeth")
             if not MIN_TEETH <= value <= MAX_TEETH:
                 raise DesignError(name, value, f"must be ≥ {MIN_TEETH} and ≤ {MAX_TEETH} teeth")
+        if isinstance(self.module_mm, (int, float)) and not isinstance(self.module_mm, bool) \
+                and 0.0 < self.module_mm < MIN_MODULE_MM:      # a subnormal m: lengths of 0/0
+            raise DesignError("module", self.module_mm, f"must be ≥ {MIN_MODULE_MM:g} and ≤ "
+                              f"{MAX_MODULE_MM:g} mm")
         _within("module", self.module_mm, 0.0, MAX_MODULE_MM, "mm", open_low=True)
         _within("pressure_angle", self.pressure_angle_deg, 10.0, 35.0, "°")
         _within("addendum", self.addendum, 0.5, 2.0, "")
