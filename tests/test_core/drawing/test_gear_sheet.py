@@ -75,18 +75,13 @@ def _involute_spread(points: np.ndarray, rb: float, pitch: float) -> float:
     rho = np.hypot(points[:, 0], points[:, 1])
     beta = np.arccos(rb / rho)
     theta = np.arctan2(points[:, 1], points[:, 0])
-    worst = 0.0
     candidates = [(theta + s * (np.tan(beta) - beta)) % pitch for s in (1.0, -1.0)]
-    centres = []
+    misses = []
     for c in candidates:                     # each side's value: the most common one
         hist, edges = np.histogram(c, bins=2000, range=(0.0, pitch))
         near = c[np.abs(c - edges[hist.argmax()]) < 3 * (edges[1] - edges[0])]
-        centres.append(float(np.median(near)))
-    for i in range(len(points)):
-        miss = min(abs((candidates[k][i] - centres[k] + pitch / 2) % pitch - pitch / 2)
-                   for k in (0, 1))
-        worst = max(worst, miss * rho[i])
-    return worst
+        misses.append(np.abs((c - float(np.median(near)) + pitch / 2) % pitch - pitch / 2))
+    return float((np.minimum(*misses) * rho).max())
 
 
 @pytest.mark.parametrize("name", ["shaper", "textbook", "rule"])

@@ -58,14 +58,22 @@ def test_fillet_points_are_a_tip_radius_from_the_trochoid():
     m, a, r = p.module_mm, p.alpha, gear.r
     h_c = (1.25 - gear.shift) * m - rho
     u_c = math.pi * m / 4 - gear.shift * m * math.tan(a) - h_c * math.tan(a) - rho / math.cos(a)
-    phi = np.linspace(-1.0, 1.0, 400001)
-    x, y = u_c - r * phi, np.full_like(phi, r - h_c)
-    c, s = np.cos(-phi), np.sin(-phi)
-    tx, ty = c * x - s * y, s * x + c * y                   # in the gear's frame
     turn = math.pi / 2 - math.pi / gear.teeth                # the tooth's axis to +x
-    cx, cy = math.cos(-turn) * tx - math.sin(-turn) * ty, math.sin(-turn) * tx + math.cos(-turn) * ty
+
+    def centre(phi):
+        """The tip circle's centre carried by the rack rolling through φ, in the tooth's frame."""
+        x, y = u_c - r * phi, r - h_c
+        t = -phi - turn
+        return np.cos(t) * x - np.sin(t) * y, np.sin(t) * x + np.cos(t) * y
+    from scipy.optimize import minimize_scalar
+    grid = np.linspace(-1.0, 1.0, 20001)
+    cx, cy = centre(grid)
     for point in fillet:
-        assert np.hypot(cx - point[0], cy - point[1]).min() == pytest.approx(rho, abs=1e-3 * m)
+        k = int(np.argmin(np.hypot(cx - point[0], cy - point[1])))
+        best = minimize_scalar(lambda f: math.hypot(*(np.array(centre(f)) - point)),
+                               bounds=(grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]),
+                               method="bounded", options={"xatol": 1e-12})
+        assert best.fun == pytest.approx(rho, abs=1e-6 * m)
 
 
 def test_undercut_tooth_is_waisted_and_outline_closes_a_pitch():
@@ -79,7 +87,7 @@ def test_undercut_tooth_is_waisted_and_outline_closes_a_pitch():
     assert ends[1] - ends[0] == pytest.approx(2 * math.pi / 8, rel=1e-12)
 
 
-from hypothesis import assume, given, settings  # noqa: E402
+from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 from core.errors import DesignError  # noqa: E402
@@ -87,7 +95,8 @@ from core.errors import DesignError  # noqa: E402
 
 @given(st.integers(5, 150), st.integers(5, 150), st.floats(-0.5, 1.0), st.floats(-0.5, 1.0),
        st.floats(0.0, 0.4))
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 def test_any_pair_flanks_run_root_to_tip_on_the_involute(z1, z2, x1, x2, clearance):
     try:
         pair = design_pair(GearPairInputs(z1=z1, z2=z2, module_mm=2.0, x1=x1, x2=x2,
