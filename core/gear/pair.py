@@ -101,13 +101,9 @@ def pair_of(p: GearPairInputs, shifts: Shifts) -> GearPair:
     dy = shifts.x1 + shifts.x2 - y
     g1 = make_gear(p, p.z1, shifts.x1, dy, shifts.alpha_w)
     g2 = make_gear(p, p.z2, shifts.x2, dy, shifts.alpha_w)
-    for name, gear in (("x1", g1), ("x2", g2)):
+    for k, gear in ((1, g1), (2, g2)):
         if not gear.sa > 0.0:
-            field = "centre" if shifts.mode != "given" else name
-            value = shifts.centre_mm if field == "centre" else gear.shift
-            raise DesignError(field, value, f"makes the tip of gear {name[1]} pointed "
-                              f"(x{name[1]} = {gear.shift:.4f}): give a smaller "
-                              + ("centre distance" if field == "centre" else "shift"))
+            raise _pointed(k, gear, shifts)
     n1n2 = shifts.centre_mm * math.sin(shifts.alpha_w)
     n1b1 = math.sqrt(g1.ra ** 2 - g1.rb ** 2)
     n1b2 = n1n2 - math.sqrt(g2.ra ** 2 - g2.rb ** 2)
@@ -118,6 +114,22 @@ def pair_of(p: GearPairInputs, shifts: Shifts) -> GearPair:
                     reference_centre_mm=a, y=y, dy=dy, gear1=g1, gear2=g2, pb=pb, n1n2=n1n2,
                     b1b2=n1b1 - n1b2, n1p=g1.rb * math.tan(shifts.alpha_w), n1b1=n1b1, n1b2=n1b2,
                     contact_ratio=eps)
+
+
+def _pointed(k: int, gear: Gear, shifts: Shifts) -> DesignError:
+    """The error of a pointed tip, naming what set the shift: x_k given, the centre distance,
+    or (the rule) the teeth that needed it."""
+    what = f"the tip of gear {k} pointed (x{k} = {gear.shift:.4f})"
+    if shifts.mode == "given" and gear.ra <= gear.rb:     # Δy took its whole flank
+        big = 1 if shifts.x1 >= shifts.x2 else 2
+        return DesignError(f"x{big}", max(shifts.x1, shifts.x2), "x1 + x2 is too large: the "
+                           f"addendum reduction leaves gear {k} no flank above its base circle")
+    if shifts.mode == "given":
+        return DesignError(f"x{k}", gear.shift, f"makes {what}: give a smaller shift")
+    if shifts.mode == "centre":
+        return DesignError("centre", shifts.centre_mm, f"makes {what}: give a smaller centre distance")
+    return DesignError(f"z{k}", gear.teeth, f"too few teeth for the rule's shifts, which make {what}: "
+                       "give more teeth, or the shifts or the centre distance")
 
 
 def working_inv(pair: GearPair) -> float:

@@ -166,7 +166,10 @@ def test_checks_say_what_to_change():
     (dict(z1=12, z2=30, module_mm=2, centre_mm=38), "centre"),
     (dict(z1=12, z2=30, module_mm=2, centre_mm=40.0), "centre"),
     (dict(z1=12, z2=30, module_mm=2, centre_mm=50), "centre"),
-    (dict(z1=12, z2=30, module_mm=2, x1=1.5, x2=0), "x1")])
+    (dict(z1=12, z2=30, module_mm=2, x1=1.5, x2=0), "x1"),
+    (dict(z1=30, z2=12, module_mm=2, x1=0, x2=1.5), "x2"),
+    (dict(z1=12, z2=30, module_mm=2, x1=0, x2=5), "x2"),
+    (dict(z1=5, z2=60, module_mm=2), "z1")])
 def test_bad_inputs_name_the_field(kwargs, parameter):
     with pytest.raises(DesignError) as info:
         design_pair(GearPairInputs(**kwargs))
