@@ -21,6 +21,7 @@ from typing import Mapping
 import numpy as np
 
 from core.gear import GearPair, pair_checks
+from core.gear.involute import half_angle
 from core.gear.profile import tooth_outline
 
 from .charts import arrow
@@ -118,8 +119,7 @@ def teeth_outline(pair: GearPair, k: int) -> np.ndarray:
     the pinion's counter-clockwise flank and the gear's clockwise one pass through P."""
     gear = pair.gear1 if k == 1 else pair.gear2
     one = tooth_outline(pair.inputs, gear)
-    psi_w = gear.s / (2 * gear.r) + math.tan(pair.inputs.alpha) - pair.inputs.alpha \
-        - (math.tan(pair.alpha_w) - pair.alpha_w)                # half the tooth at r′
+    psi_w = float(half_angle(gear.rw, gear.r, gear.s, pair.inputs.alpha, gear.rb))   # at r′
     pitch = 2 * math.pi / gear.teeth
     axis = -psi_w if k == 1 else math.pi - psi_w
     centre = np.array([0.0, 0.0]) if k == 1 else np.array([pair.centre_mm, 0.0])

@@ -71,10 +71,3 @@ def half_angle(radius, r: float, s: float, alpha: float, rb: float):
     radius r_K (the flank is the involute of the base circle rb)."""
     alpha_k = np.arccos(rb / np.asarray(radius, dtype=float))
     return s / (2.0 * r) + inv(alpha) - inv(alpha_k)
-
-
-def involute_point(rb: float, roll):
-    """(x, y) of the involute of the circle rb that starts at (rb, 0), at roll angle t ≥ 0:
-    x = rb (cos t + t sin t), y = rb (sin t − t cos t). Unwound counter-clockwise."""
-    t = np.asarray(roll, dtype=float)
-    return rb * (np.cos(t) + t * np.sin(t)), rb * (np.sin(t) - t * np.cos(t))

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from ..errors import DesignError
 from .inputs import GearPairInputs
-from .involute import inv, least_shift, reference_thickness, thickness_at
+from .involute import least_shift, reference_thickness, thickness_at
 from .shift import Shifts, find_shifts, reference_centre
 
 
@@ -130,8 +130,3 @@ def _pointed(k: int, gear: Gear, shifts: Shifts) -> DesignError:
         return DesignError("centre", shifts.centre_mm, f"makes {what}: give a smaller centre distance")
     return DesignError(f"z{k}", gear.teeth, f"too few teeth for the rule's shifts, which make {what}: "
                        "give more teeth, or the shifts or the centre distance")
-
-
-def working_inv(pair: GearPair) -> float:
-    """inv α′ of the pair (what the tables of inv α were for)."""
-    return float(inv(pair.alpha_w))

@@ -40,8 +40,8 @@ DESCRIPTION = ("The drawing sheets of the course design (图纸): paper after GB
                "scale, the follower's ψ, ω, α and the pressure angle over the cam angle, and its "
                "figures. --content gear: the gear pair (the options of shaper gear, or the --design "
                "file's gear; no linkage needed) in mesh to a standard scale, with the line of "
-               "action, the contact zones and its results, on A2 by default. The file type follows the name: .pdf, .svg or .dxf (mm, layers by "
-               "line type). Chinese sheets need a font with Chinese glyphs (fonts-noto-cjk).")
+               "action, the contact zones and its results, on A2 by default. The file type "
+               "follows the name: .pdf, .svg or .dxf (mm, layers by line type). Chinese sheets need a font with Chinese glyphs (fonts-noto-cjk).")
 EXAMPLES = ("shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --sheet A1 "
             "--content motion -o motion.pdf",
             "shaper drawing --design my.shaper.json --lang zh --diagrams 60,240 --student 张三 "
