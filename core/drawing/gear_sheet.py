@@ -104,11 +104,12 @@ def gear_sheet(pair: GearPair, paper: Paper, *, labels: Mapping[str, str] = ENGL
     return GearSheet(Sheet(paper, tuple(everything), model=place), scale, place, rows, areas)
 
 
-def _scale(bounds: Box, room_w: float, room_h: float) -> float:
-    """The largest standard scale at which ``bounds`` fit (an enlargement up to 5:1)."""
+def _scale(bounds: Box, room_w: float, room_h: float, enlargements=ENLARGEMENTS) -> float:
+    """The largest standard scale at which ``bounds`` fit (an enlargement up to 5:1, or
+    the largest of ``enlargements``)."""
     scale = max(standard_scale(bounds[2] - bounds[0], room_w), standard_scale(bounds[3] - bounds[1], room_h))
     if scale == 1.0:
-        fits = [k for k in ENLARGEMENTS if (bounds[2] - bounds[0]) * k <= room_w
+        fits = [k for k in enlargements if (bounds[2] - bounds[0]) * k <= room_w
                 and (bounds[3] - bounds[1]) * k <= room_h]
         scale = 1.0 / max(fits, default=1.0)
     return scale
@@ -229,13 +230,14 @@ def _line_of_action(pair: GearPair, area: Box, lab: Mapping[str, str]) -> list[I
     fits: the points on it above; below, as dimensions, the contact zones (double within pb
     of either end, single between) and the base pitch stepped from B2 and from B1."""
     x0, y0, x1, y1 = area
-    scale = _scale((0.0, 0.0, pair.b1b2, 1.0), x1 - x0 - 40.0, 1e9)
+    scale = _scale((0.0, 0.0, pair.b1b2, 1.0), x1 - x0 - 40.0, 1e9, (*ENLARGEMENTS, 10.0))
     left = (x0 + x1) / 2.0 - pair.b1b2 / scale / 2.0 - pair.n1b2 / scale
     base_y = y1 - 3.2 * CAPTION - 12.0
     along = {"N1": 0.0, "B2": pair.n1b2, "K1": pair.n1b2 + pair.pb, "P": pair.n1p,
              "K2": pair.n1b1 - pair.pb, "B1": pair.n1b1, "N2": pair.n1n2}
     x = {k: left + v / scale for k, v in along.items()}
-    ends = (max(x["N1"], x0 + 4.0), min(x["N2"], x1 - 4.0))
+    # B2 before N1 (or B1 past N2) is interference: the line is drawn to it all the same
+    ends = (max(min(x["N1"], x["B2"]), x0 + 4.0), min(max(x["N2"], x["B1"]), x1 - 4.0))
     items: list[Item] = [line([(ends[0], base_y), (ends[1], base_y)], THIN),
                          line([(x["B2"], base_y), (x["B1"], base_y)], OUTLINE)]
     stepped = pair.contact_ratio >= 1.0
