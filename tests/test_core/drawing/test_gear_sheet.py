@@ -34,6 +34,17 @@ def test_laid_out_inside_the_border_without_overlap(name, size):
     assert "Gear meshing" in texts and any("α′ = " in t for t in texts)
 
 
+def test_interference_shows_b2_before_n1():
+    """An undercut pinion whose mate's tip reaches below N1 (B2 before N1): the straightened
+    line of action still names B2, at its place before N1."""
+    pair = design_pair(GearPairInputs(z1=8, z2=30, module_mm=2.0, x1=0.0, x2=0.0))
+    assert pair.n1b2 < 0.0
+    drawn = gear_sheet(pair, paper("A2"))
+    assert_laid_out(drawn.sheet, drawn.areas)
+    names = {t.text: t.position[0] for t in drawn.areas["line"][1] if hasattr(t, "text")}
+    assert names["B2"] < names["N1"] < names["P"] < names["B1"] < names.get("N2", math.inf)
+
+
 @pytest.mark.parametrize("name", sorted(PAIRS))
 def test_teeth_touch_in_mesh_and_never_overlap(name):
     """No point of the pinion's drawn teeth lies inside the gear's material (its tooth at
