@@ -110,7 +110,9 @@ def flank(p: GearPairInputs, gear: Gear) -> Flank:
             order = np.argsort(r2)
             inside = (rad >= r2[order[0]]) & (rad <= r2[order[-1]])
             bound = np.where(inside, np.minimum(bound, np.interp(rad, r2[order], a2[order])), bound)
-        keep = ang <= bound + 1e-12
+        # within the blank: past N the undercut branch runs on above the tip circle
+        blank = (rad <= gear.ra * (1.0 + 1e-12)) & (rad >= gear.rf * (1.0 - 1e-12))
+        keep = (ang <= bound + 1e-12) & blank
         radius.append(rad[keep])
         angle.append(ang[keep])
         involute.append(np.full(int(keep.sum()), kinds[i]))

@@ -21,7 +21,7 @@ def _on_involute(points: np.ndarray, rb: float) -> np.ndarray:
     first of them, by the polar equation θ = θ0 + tan β − β, cos β = rb / ρ (independent
     of core.gear: θ0 from the first point)."""
     rho = np.hypot(points[:, 0], points[:, 1])
-    beta = np.arccos(rb / rho)
+    beta = np.arccos(np.minimum(rb / rho, 1.0))            # N itself: ρ = rb to the last bit
     theta = np.arctan2(points[:, 1], points[:, 0])
     theta0 = theta[0] + (np.tan(beta[0]) - beta[0])        # the upper flank unwinds clockwise
     return rho * np.abs(theta - (theta0 - (np.tan(beta) - beta)))
@@ -87,7 +87,7 @@ def test_undercut_tooth_is_waisted_and_outline_closes_a_pitch():
     assert ends[1] - ends[0] == pytest.approx(2 * math.pi / 8, rel=1e-12)
 
 
-from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
+from hypothesis import HealthCheck, assume, example, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 from core.errors import DesignError  # noqa: E402
@@ -97,6 +97,8 @@ from core.errors import DesignError  # noqa: E402
        st.floats(0.0, 0.4))
 @settings(max_examples=60, deadline=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@example(13, 5, 0.21875, 0.0, 0.0)         # undercut by a hair: the flank reaches N, ρ = rb
+@example(11, 5, 0.3, -0.5, 0.16)           # deep undercut: its branch ran on above the tip
 def test_any_pair_flanks_run_root_to_tip_on_the_involute(z1, z2, x1, x2, clearance):
     try:
         pair = design_pair(GearPairInputs(z1=z1, z2=z2, module_mm=2.0, x1=x1, x2=x2,
