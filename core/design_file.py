@@ -82,6 +82,9 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
         if "cam" in doc:            # validated here, kept as written (older files have none)
             from .cam.file import cam_from_dict     # the cam's modules: only for a file with one
             cam_from_dict(doc["cam"])
+        if "gear" in doc:           # the same for the gear pair's inputs (issue 35)
+            from .gear.file import gear_from_dict
+            gear_from_dict(doc["gear"])
     except FileFormatError:
         raise
     except (DesignError, ArithmeticError, ValueError) as exc:   # never a traceback

@@ -1441,6 +1441,162 @@
         <source>Crank speed n</source>
         <translation>曲柄转速 n</translation>
     </message>
+    <message>
+        <source>Gear meshing</source>
+        <translation>齿轮啮合图</translation>
+    </message>
+    <message>
+        <source>The gear pair in mesh, μ_l = {mu} m/mm ({scale})</source>
+        <translation>齿轮啮合图，μ_l = {mu} m/mm（{scale}）</translation>
+    </message>
+    <message>
+        <source>Teeth as the rack cuts them; the pinion 1 drives counter-clockwise</source>
+        <translation>齿廓按齿条刀具范成（渐开线与过渡曲线）；小齿轮 1 逆时针转动为主动轮</translation>
+    </message>
+    <message>
+        <source>Gear pair data and results</source>
+        <translation>齿轮传动参数与计算结果</translation>
+    </message>
+    <message>
+        <source>Pinion 1</source>
+        <translation>小齿轮 1</translation>
+    </message>
+    <message>
+        <source>Gear 2</source>
+        <translation>大齿轮 2</translation>
+    </message>
+    <message>
+        <source>Teeth z</source>
+        <translation>齿数 z</translation>
+    </message>
+    <message>
+        <source>Module m</source>
+        <translation>模数 m</translation>
+    </message>
+    <message>
+        <source>Rack α, h*_a, c*</source>
+        <translation>基本齿廓 α，h*_a，c*</translation>
+    </message>
+    <message>
+        <source>Shift factor x</source>
+        <translation>变位系数 x</translation>
+    </message>
+    <message>
+        <source>Least shift x_min</source>
+        <translation>最小变位系数 x_min</translation>
+    </message>
+    <message>
+        <source>Reference diameter d</source>
+        <translation>分度圆直径 d</translation>
+    </message>
+    <message>
+        <source>Base diameter d_b</source>
+        <translation>基圆直径 d_b</translation>
+    </message>
+    <message>
+        <source>Tip diameter d_a</source>
+        <translation>齿顶圆直径 d_a</translation>
+    </message>
+    <message>
+        <source>Root diameter d_f</source>
+        <translation>齿根圆直径 d_f</translation>
+    </message>
+    <message>
+        <source>Working diameter d′</source>
+        <translation>节圆直径 d′</translation>
+    </message>
+    <message>
+        <source>Thickness s</source>
+        <translation>分度圆齿厚 s</translation>
+    </message>
+    <message>
+        <source>Space e</source>
+        <translation>分度圆齿槽宽 e</translation>
+    </message>
+    <message>
+        <source>Tip thickness s_a</source>
+        <translation>齿顶厚 s_a</translation>
+    </message>
+    <message>
+        <source>Centre distance a′ (a)</source>
+        <translation>中心距 a′（a）</translation>
+    </message>
+    <message>
+        <source>Working pressure angle α′</source>
+        <translation>啮合角 α′</translation>
+    </message>
+    <message>
+        <source>Centre shift y, reduction Δy</source>
+        <translation>中心距变动系数 y，齿顶高降低系数 Δy</translation>
+    </message>
+    <message>
+        <source>Base pitch p_b</source>
+        <translation>基圆齿距 p_b</translation>
+    </message>
+    <message>
+        <source>Lines of action N_1N_2, B_1B_2</source>
+        <translation>理论啮合线 N_1N_2，实际啮合线 B_1B_2</translation>
+    </message>
+    <message>
+        <source>Contact ratio ε</source>
+        <translation>重合度 ε</translation>
+    </message>
+    <message>
+        <source>Shifts</source>
+        <translation>变位方式</translation>
+    </message>
+    <message>
+        <source>given</source>
+        <translation>给定</translation>
+    </message>
+    <message>
+        <source>from a′</source>
+        <translation>按中心距 a′</translation>
+    </message>
+    <message>
+        <source>x_2 = −x_1</source>
+        <translation>x_2 = −x_1</translation>
+    </message>
+    <message>
+        <source>positive pair</source>
+        <translation>正传动</translation>
+    </message>
+    <message>
+        <source>No undercut</source>
+        <translation>不根切</translation>
+    </message>
+    <message>
+        <source>Tip s_a ≥ {k} m</source>
+        <translation>齿顶厚 s_a ≥ {k} m</translation>
+    </message>
+    <message>
+        <source>ε ≥ {k}</source>
+        <translation>ε ≥ {k}</translation>
+    </message>
+    <message>
+        <source>No root interference</source>
+        <translation>齿根无干涉</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>满足</translation>
+    </message>
+    <message>
+        <source>FAILS</source>
+        <translation>不满足</translation>
+    </message>
+    <message>
+        <source>double contact</source>
+        <translation>双齿啮合区</translation>
+    </message>
+    <message>
+        <source>single contact</source>
+        <translation>单齿啮合区</translation>
+    </message>
+    <message>
+        <source>Actual line of action B_2B_1 and the contact zones, μ_l = {mu} m/mm ({scale})</source>
+        <translation>实际啮合线 B_2B_1 与单、双齿啮合区，μ_l = {mu} m/mm（{scale}）</translation>
+    </message>
 </context>
 <context>
     <name>DrawingSheetDialog</name>

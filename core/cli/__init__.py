@@ -34,7 +34,8 @@ from .common import Parser, UsageError, VersionAction, design_error_text, fail  
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output  # noqa: E402
 
 # Order is the order of ``shaper --help``.
-CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library")
+CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "gear",
+                 "library")
 
 
 def _command_modules(command: str | None = None) -> dict[str, ModuleType]:

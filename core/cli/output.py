@@ -25,7 +25,7 @@ class StdoutError(OutputError):
 
 _ASCII = {"θ": "theta", "²": "^2", "·": "*", "−": "-", "°": "deg", "Δ": "Delta", "δ": "delta",
           "≤": "<=", "≥": ">=", "→": "->", "φ": "phi", "ψ": "psi", "λ": "lambda", "…": "...",
-          "×": "x", "μ": "u", "ω": "omega", "α": "alpha"}
+          "×": "x", "μ": "u", "ω": "omega", "α": "alpha", "′": "'", "ε": "epsilon"}
 
 
 def _ascii_fallback(error: UnicodeError) -> tuple[str, int]:

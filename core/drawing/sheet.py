@@ -259,8 +259,12 @@ def paper(name: str) -> Paper:
 
 @dataclass(frozen=True)
 class Sheet:
+    """``model``: for a sheet drawn around one drawing in model coordinates (the gear pair),
+    paper mm ↔ model mm; its DXF is then written in the model's coordinates, the drawing at
+    1:1 and the paper's items scaled with it (print at the sheet's scale to get the sheet)."""
     paper: Paper
     items: tuple[Item, ...] = field(default_factory=tuple)
+    model: "Placement | None" = None
 
 
 def frame_items(p: Paper) -> list[Item]:

@@ -23,29 +23,40 @@ ALIGNMENTS = {
 }
 
 
+def _model(sheet: Sheet):
+    """Paper mm → the DXF's coordinates and its length factor: the paper itself, or the
+    sheet's model (``Sheet.model``: its drawing at 1:1, everything else scaled with it)."""
+    if sheet.model is None:
+        return (lambda x, y: (float(x), float(y))), 1.0
+    k, (ox, oy), (ax, ay) = sheet.model.scale, sheet.model.origin, sheet.model.anchor
+    return (lambda x, y: (float(ax + (x - ox) * k), float(ay + (y - oy) * k))), float(k)
+
+
 def sheet_document(sheet: Sheet) -> Drawing:
-    """The sheet in model space (paper mm, origin at the trimmed edge's lower left)."""
+    """The sheet in model space (paper mm, origin at the trimmed edge's lower left; or, for
+    a sheet with a model, in the model's mm)."""
     doc = new_document()
     msp = doc.modelspace()
-    w, h = sheet.paper.width, sheet.paper.height
+    to, k = _model(sheet)
+    low, high = to(0.0, 0.0), to(sheet.paper.width, sheet.paper.height)
     layout = msp.dxf_layout.dxf          # the limits ezdxf writes to the header: the paper
-    layout.limmin, layout.limmax = (0.0, 0.0), (w, h)
+    layout.limmin, layout.limmax = low, high
     for item in sheet.items:
         attribs = {"layer": item.layer}
         if isinstance(item, Polyline):
-            points = [(float(x), float(y)) for x, y in item.points]
+            points = [to(x, y) for x, y in item.points]
             msp.add_lwpolyline(points, close=item.closed, dxfattribs=attribs)
             if item.filled:
                 hatch = msp.add_hatch(dxfattribs=attribs)
                 hatch.paths.add_polyline_path(points, is_closed=True)
         elif isinstance(item, Circle):
-            msp.add_circle(item.center, item.radius, dxfattribs=attribs)
+            msp.add_circle(to(*item.center), item.radius * k, dxfattribs=attribs)
         elif isinstance(item, Text):
             for run in item.runs():        # a subscript is a smaller text of its own
-                text = msp.add_text(literal_text(run.text), height=run.height, rotation=run.rotation,
-                                    dxfattribs=text_attribs(item.layer))
-                text.set_placement(run.position, align=ALIGNMENTS[run.align])
-    zoom.window(msp, (0.0, 0.0), (w, h))   # CAD opens on the whole sheet
+                text = msp.add_text(literal_text(run.text), height=run.height * k,
+                                    rotation=run.rotation, dxfattribs=text_attribs(item.layer))
+                text.set_placement(to(*run.position), align=ALIGNMENTS[run.align])
+    zoom.window(msp, low, high)            # CAD opens on the whole sheet
     return doc
 
 

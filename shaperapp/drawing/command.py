@@ -12,6 +12,7 @@ from pathlib import Path
 
 from core.cli.cmd_cam import (OPTIONAL, SHEET, add_cam_options, add_phase_option, cam_from_inputs,
                               cam_inputs_from_args)
+from core.cli.cmd_gear import OPTIONS as GEAR_OPTIONS, add_gear_options, pair_from_args
 from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
 from core.cli.output import OutputError
 from core.drawing.motion import MAX_POSITIONS
@@ -24,7 +25,7 @@ from shaperapp.widgets.command_line import (add_cover_options, check_output_fold
                                             cover_text, design_name, diagram_angles, inputs_from_args,
                                             start_qt)
 
-from .content import CONTENTS, SHEET_SUFFIXES, SheetChoice
+from .content import CONTENTS, DEFAULT_PAPER, SHEET_SUFFIXES, SheetChoice
 from .scheme_command import SCHEME, add_scheme_options, write_scheme_file
 
 HELP = "draw the course design's sheets (A0–A3 PDF, SVG or DXF)"
@@ -37,15 +38,18 @@ DESCRIPTION = ("The drawing sheets of the course design (图纸): paper after GB
                "crank torque, the energy curve and the flywheel. --content cam: the feed cam (the "
                "options of shaper cam, or the --design file's cam) drawn by inversion to a standard "
                "scale, the follower's ψ, ω, α and the pressure angle over the cam angle, and its "
-               "figures. The file type follows the name: .pdf, .svg or .dxf (mm, layers by "
-               "line type). Chinese sheets need a font with Chinese glyphs (fonts-noto-cjk).")
+               "figures. --content gear: the gear pair (the options of shaper gear, or the --design "
+               "file's gear; no linkage needed) in mesh to a standard scale, with the line of "
+               "action, the contact zones and its results, on A2 by default. The file type "
+               "follows the name: .pdf, .svg or .dxf (mm, layers by line type). Chinese sheets need a font with Chinese glyphs (fonts-noto-cjk).")
 EXAMPLES = ("shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --sheet A1 "
             "--content motion -o motion.pdf",
             "shaper drawing --design my.shaper.json --lang zh --diagrams 60,240 --student 张三 "
             "--student-number 2021001 --class 机械2101 --school 机械工程学院 --supervisor 李四 "
             "-o 运动分析.dxf",
             "shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --content cam --arm 120 "
-            "--swing 15 --pressure 40 --rise 60 --dwell 10 --return 60 -o cam.pdf")
+            "--swing 15 --pressure 40 --rise 60 --dwell 10 --return 60 -o cam.pdf",
+            "shaper drawing --content gear --z1 13 --z2 40 --module 6 --centre 162 -o gear.pdf")
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -54,14 +58,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
     add_load_options(parser, required=False)
     parser.add_argument("-o", "--output", required=True, metavar="FILE",
                         help="the sheet to write: .pdf, .svg or .dxf")
-    parser.add_argument("--sheet", default="A1", metavar="SIZE",
-                        help=f"paper, landscape: {', '.join(PAPERS)} (default A1)")
+    parser.add_argument("--sheet", metavar="SIZE",
+                        help=f"paper, landscape: {', '.join(PAPERS)} (default A1; A2 for gear)")
     parser.add_argument("--content", default="motion", metavar="WHAT",
                         help=f"what the sheet shows: {', '.join(CONTENTS)} (default motion); or "
                              f"{SCHEME}: the mechanism alone at 1:1 with its dimensions, as DXF")
     add_scheme_options(parser)
     add_phase_option(add_cam_options(parser, "with --content cam: the cam, as shaper cam takes it "
                                              "(required unless --design has a cam)"))
+    add_gear_options(parser, "with --content gear: the gear pair, as shaper gear takes it "
+                             "(required unless --design has a gear)")
     parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
                         help="language of the sheet's texts: en, or zh (= zh_CN) (default en)")
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
@@ -79,6 +85,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 CAM_WORDS = tuple((option, dest) for option, dest, _ in SHEET + OPTIONAL) + (
     ("--law", "law"), ("--return-law", "return_law"), ("--phase", "phase"))
+GEAR_WORDS = tuple((option, dest) for option, dest, _, _ in GEAR_OPTIONS)
 
 
 def sheet_suffix(path: str) -> str:
@@ -92,7 +99,7 @@ def sheet_suffix(path: str) -> str:
 
 def choice_from_args(args: argparse.Namespace) -> SheetChoice:
     """Everything the sheet needs from the words, checked (UsageError, DesignError)."""
-    paper = args.sheet.upper()
+    paper = (args.sheet or DEFAULT_PAPER.get(args.content, "A1")).upper()
     if paper not in PAPERS:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
     if args.content not in CONTENTS:
@@ -108,13 +115,21 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
 
 
 def run(args: argparse.Namespace) -> int:
-    spec, rpms, masses = inputs_from_args(args)
+    if args.content == "gear":          # the pair alone: no linkage, speeds or loads
+        spec, rpms, masses = None, [], None
+    else:
+        spec, rpms, masses = inputs_from_args(args)
     if args.content == SCHEME:
         return write_scheme_file(spec.design(), args)
     choice = choice_from_args(args)
     stray = [option for option, dest in CAM_WORDS if getattr(args, dest) is not None]
     if stray and choice.content != "cam":
         raise UsageError(f"{stray[0]}: a cam option, only with --content cam")
+    stray = [option for option, dest in GEAR_WORDS if getattr(args, dest) is not None]
+    if stray and choice.content != "gear":
+        raise UsageError(f"{stray[0]}: a gear option, only with --content gear")
+    if choice.content == "gear":
+        choice = replace(choice, gear=pair_from_args(args))
     if choice.content == "cam":
         idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
         choice = replace(choice, cam=cam_from_inputs(cam_inputs_from_args(args), spec.design(), idle,

@@ -16,9 +16,11 @@ from .labels import motion_labels
 
 if TYPE_CHECKING:
     from core.cam import Cam
+    from core.gear import GearPair
 
-CONTENTS = ("motion", "forces", "cam")
-SHEET_NUMBER = {"motion": "1/3", "forces": "2/3", "cam": "3/3"}    # the course design's sheets
+CONTENTS = ("motion", "forces", "cam", "gear")
+SHEET_NUMBER = {"motion": "1/4", "forces": "2/4", "cam": "3/4", "gear": "4/4"}   # the course design's sheets
+DEFAULT_PAPER = {"gear": "A2"}      # the meshing drawing's usual paper; the others A1
 SHEET_SUFFIXES = (".pdf", ".svg", ".dxf")
 
 
@@ -40,6 +42,7 @@ class SheetChoice:
     number: str = ""                # the student's number
     group: str = ""                 # the class
     supervisor: str = ""
+    gear: "GearPair | None" = None  # the meshing sheet's pair (shaper gear's options)
 
     def title_block(self, title: str, design_name: str) -> TitleBlock:
         """The title block's fields of this choice (its scale is the sheet's to fill in)."""
@@ -101,9 +104,28 @@ def cam(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
     return cam_sheet(choice.cam, float(rpms[0]), paper(choice.paper), labels=labels, block=block).sheet
 
 
+def gear(spec: Spec | None, rpms: Sequence[float], masses: MassProperties | None,
+         choice: SheetChoice) -> Sheet:
+    """The gear pair's meshing sheet (the linkage is not needed); ContentUnavailable without
+    a pair in the choice."""
+    from core.drawing.gear_sheet import gear_sheet
+    from .gear_labels import gear_labels
+    if choice.gear is None:
+        raise ContentUnavailable("the gear sheet needs a gear pair")
+    labels = gear_labels()
+    block = choice.title_block(labels["title"], choice.design_name or gear_name(choice.gear))
+    return gear_sheet(choice.gear, paper(choice.paper), labels=labels, block=block).sheet
+
+
+def gear_name(pair: "GearPair") -> str:
+    """The pair's inputs as a design name: z1/z2, m."""
+    return f"z {pair.inputs.z1}/{pair.inputs.z2}, m {pair.inputs.module_mm:g}"
+
+
 # content → its builder (spec, speeds, loads or None, choice) → Sheet; the forces sheet joins here
 BUILDERS: dict[str, Callable[[Spec, Sequence[float], MassProperties | None, SheetChoice], Sheet]] = {
     "motion": motion,
     "forces": forces,
     "cam": cam,
+    "gear": gear,
 }

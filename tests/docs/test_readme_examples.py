@@ -18,10 +18,10 @@ from locations import ROOT
 ROOT = ROOT
 README = ROOT / "README.md"
 PAGES = [README, *sorted((ROOT / "docs").glob("*.md"))]
-CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep", "cam")
+CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep", "cam", "gear")
 # Every subcommand of ``shaper`` (core/cli's CORE_COMMANDS plus the Qt ones, report and drawing).
-SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "library", "report",
-               "drawing", "course")
+SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "gear", "library",
+               "report", "drawing", "course")
 DESIGN_FILE = ROOT / "tests" / "data" / "my.shaper.json"   # the GUI's default design, saved: what course reads
 
 

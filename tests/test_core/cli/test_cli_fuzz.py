@@ -218,7 +218,7 @@ def test_the_fuzzer_reaches_success_and_every_subcommand():
 
     # A fixed sequence of examples: whether the generator reaches every outcome must not
     # depend on the run (a random draw once missed a subcommand on CI).
-    @settings(max_examples=120, deadline=None, database=None, derandomize=True,
+    @settings(max_examples=200, deadline=None, database=None, derandomize=True,
               suppress_health_check=[HealthCheck.too_slow])
     @given(argv=command_lines())
     def sample(argv):
@@ -249,6 +249,9 @@ BASES = {
     "cam": ["cam", "--arm", "120", "--swing", "15", "--pressure", "40", "--rise", "60", "--dwell", "10",
             "--return", "60", "--crank", "100", "--K", "1.4", "--stroke", "300", "--step", "10",
             "--json", "--csv", os.path.join(FOLDER, "cam.csv")],
+    "gear": ["gear", "--z1", "13", "--z2", "40", "--module", "6", "--centre", "162", "--json",
+             "--csv", os.path.join(FOLDER, "gear.csv")],
+    "gear shifts": ["gear", "--z1", "12", "--z2", "30", "--module", "2.5", "--x1", "0.3", "--x2", "-0.1"],
 }
 
 

@@ -50,7 +50,7 @@ def test_cli_dxf_carries_shaper_cams_cam_at_its_scale(tmp_path):
     assert any(r * mu == pytest.approx(figures["base_radius_mm"], rel=1e-9) for r in radii), (mu, radii)
     assert f"{figures['center_distance_mm']:.3f} mm" in texts
     assert f"{figures['base_radius_mm']:.3f} mm" in texts
-    assert "3/3" in texts and "Feed cam" in texts
+    assert "3/4" in texts and "Feed cam" in texts
 
 
 def test_cli_takes_the_design_files_cam_and_options_override_it(tmp_path):
@@ -126,7 +126,7 @@ def test_dialog_offers_the_cam_sheet_of_the_cam_tab(model, qtbot, tmp_path):
     dialog.export(str(out))
     mu, radii, texts = dxf_scale_and_base_circle(out)
     assert any(r * mu == pytest.approx(cam.base_radius_mm, rel=1e-9) for r in radii)
-    assert "3/3" in texts and "150.000 mm" in texts
+    assert "3/4" in texts and "150.000 mm" in texts
     assert dialog.message.text() == ""
     source.error = DesignError("swing", 100.0, "must be ≤ 60 °")        # typed wrong in the tab
     dialog.update_preview()
@@ -149,8 +149,9 @@ def test_window_gives_the_dialog_the_cam_tabs_cam(window, qtbot, monkeypatch):
     assert seen["cam"] is window.cam.cam_model.cam and seen["cam"].follower.arm_mm == 140.0
 
 
-def test_the_three_sheets_are_numbered_one_to_three(qapp):
-    """The title blocks say 1/3, 2/3, 3/3: the course design's three sheets, in order."""
+def test_the_four_sheets_are_numbered_one_to_four(qapp):
+    """The title blocks say 1/4 … 4/4: the course design's four sheets, in order (the gear
+    pair's meshing sheet, issue 35, is the fourth)."""
     from core.cam import design_cam
     from core.dynamics import MassProperties
     from core.drawing.sheet import Text
@@ -159,8 +160,11 @@ def test_the_three_sheets_are_numbered_one_to_three(qapp):
     loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                            cut_force_N=7000.0, cut_height_mm=80.0)
     cam = design_cam(CamInputs(), spec.design())
+    from core.gear import GearPairInputs, design_pair
+    gear = design_pair(GearPairInputs(z1=13, z2=40, module_mm=6.0))
     numbers = []
     for content in CONTENTS:
-        sheet = build_sheet(spec, [40.0], loads, SheetChoice(content, "A3", cam=cam))
+        sheet = build_sheet(spec, [40.0], loads, SheetChoice(content, "A3", cam=cam, gear=gear))
         numbers.append([t.text for t in sheet.items if isinstance(t, Text) and re.fullmatch(r"\d/\d", t.text)])
-    assert CONTENTS == ("motion", "forces", "cam") and numbers == [["1/3"], ["2/3"], ["3/3"]]
+    assert CONTENTS == ("motion", "forces", "cam", "gear")
+    assert numbers == [["1/4"], ["2/4"], ["3/4"], ["4/4"]]

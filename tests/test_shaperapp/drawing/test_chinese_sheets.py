@@ -15,13 +15,15 @@ LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70",
          "--cut-force", "7000", "--cut-height", "80"]
 CAM = ["--arm", "120", "--swing", "15", "--pressure", "40", "--rise", "60", "--dwell", "10",
        "--return", "60"]
-EXTRA = {"motion": [], "forces": LOADS, "cam": CAM}
+GEAR = ["--z1", "13", "--z2", "40", "--module", "6", "--centre", "162"]
+EXTRA = {"motion": [], "forces": LOADS, "cam": CAM, "gear": GEAR}
 PEOPLE = ["--drawn-by", "张三", "--school", "机械工程学院"]
 
 
 def sheet(content: str, suffix: str, folder) -> str:
     out = folder / f"{content}.{suffix}"
-    status, _, err = shaper_in_process("drawing", *BLOCK, *EXTRA[content], *PEOPLE, "--content",
+    linkage = [] if content == "gear" else BLOCK
+    status, _, err = shaper_in_process("drawing", *linkage, *EXTRA[content], *PEOPLE, "--content",
                                        content, "--lang", "zh", "-o", out)
     assert status == 0, err
     return out
@@ -34,7 +36,7 @@ def dxf_texts(path) -> list[str]:
 
 
 @pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
-@pytest.mark.parametrize("content", ["motion", "forces", "cam"])
+@pytest.mark.parametrize("content", ["motion", "forces", "cam", "gear"])
 def test_the_pdf_text_layer_holds_the_ideographs_the_sheet_prints(content, tmp_path):
     text = pdf_text(sheet(content, "pdf", tmp_path))
     assert_chinese_text(text, what=content)
@@ -43,7 +45,7 @@ def test_the_pdf_text_layer_holds_the_ideographs_the_sheet_prints(content, tmp_p
     assert Counter(han(text)) == Counter(han(printed))
 
 
-@pytest.mark.parametrize("content", ["motion", "forces", "cam"])
+@pytest.mark.parametrize("content", ["motion", "forces", "cam", "gear"])
 def test_the_dxf_and_svg_texts_have_no_english_word(content, tmp_path):
     import xml.etree.ElementTree as ET
     texts = dxf_texts(sheet(content, "dxf", tmp_path))

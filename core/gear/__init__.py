@@ -1,0 +1,17 @@
+"""The gear pair that drives the crank: an external involute spur pair on the GB/T 1356 rack.
+
+``involute`` the involute function and its inverse (Newton) and the tooth-thickness forms;
+``inputs`` the checked inputs; ``shift`` which shift factors (given, from a′, or the rule);
+``pair`` every length of the pair; ``checks`` undercut, tip, ε and interference, each with
+what to change; ``table`` the results as rows and JSON; ``file`` the design file's "gear";
+``profile`` the teeth as drawn (true involutes and the rack-generated fillet).
+
+Level: its own, beside the cam; it imports ``core.errors`` only.
+"""
+from __future__ import annotations
+
+from .checks import Check, pair_checks
+from .inputs import GearPairInputs
+from .pair import Gear, GearPair, design_pair
+
+__all__ = ["Check", "Gear", "GearPair", "GearPairInputs", "design_pair", "pair_checks"]

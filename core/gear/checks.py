@@ -1,0 +1,66 @@
+"""The checks a teacher makes of a gear pair, each with what to change when it fails.
+
+undercut (x ≥ x_min), tip thickness (sa ≥ limit · m), contact ratio (ε ≥ limit) and involute
+interference at each root: the mating tip must meet the flank no lower than where the rack's
+involute starts (the form point F, N F = r sin α − (h*a − x) m / sin α along the line of action;
+an undercut flank is judged from N itself, and the undercut check fails anyway).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .pair import Gear, GearPair
+
+CHECKS = ("undercut1", "undercut2", "tip1", "tip2", "contact", "interference1", "interference2")
+
+
+@dataclass(frozen=True)
+class Check:
+    """One check: ``name`` (of CHECKS), ``ok``, ``value`` and ``limit`` (the quantity and its
+    bound, in the units of ``what``), ``what`` it measures, ``advice`` what to change (empty
+    when it passes)."""
+    name: str
+    ok: bool
+    value: float
+    limit: float
+    what: str
+    advice: str
+
+
+def _undercut(k: int, gear: Gear) -> Check:
+    ok = not gear.undercut
+    return Check(f"undercut{k}", ok, gear.shift, gear.least_shift, f"x{k} ≥ x{k}min",
+                 "" if ok else f"raise x{k} to ≥ {gear.least_shift:.4f} (or give gear {k} "
+                 "more teeth)")
+
+
+def _tip(k: int, gear: Gear, limit_mm: float) -> Check:
+    ok = gear.sa >= limit_mm
+    return Check(f"tip{k}", ok, gear.sa, limit_mm, f"sa{k}, mm",
+                 "" if ok else f"the tip of gear {k} is too thin: lower x{k} (or the centre "
+                 "distance)")
+
+
+def _interference(k: int, pair: GearPair) -> Check:
+    """Gear k's root against the other's tip: the length from N_k to the contact point of
+    the mating tip must be ≥ max(N_k F_k, 0)."""
+    gear = pair.gear1 if k == 1 else pair.gear2
+    reach = pair.n1b2 if k == 1 else pair.n1n2 - pair.n1b1
+    need = max(gear.form_length, 0.0)
+    ok = reach >= need - 1e-9
+    other = 2 if k == 1 else 1
+    return Check(f"interference{k}", ok, reach, need, f"N{k} to the tip of gear {other}, mm",
+                 "" if ok else f"the tip of gear {other} digs into the root of gear {k}: raise "
+                 f"x{k}, lower x{other} or shorten the addendum")
+
+
+def pair_checks(pair: GearPair) -> tuple[Check, ...]:
+    """Every check of ``pair``, in the order of CHECKS."""
+    p = pair.inputs
+    limit = p.tip_limit * p.module_mm
+    eps_ok = pair.contact_ratio >= p.contact_limit
+    contact = Check("contact", eps_ok, pair.contact_ratio, p.contact_limit, "ε",
+                    "" if eps_ok else "ε is too small: give more teeth, less shift or a smaller "
+                    "centre distance")
+    return (_undercut(1, pair.gear1), _undercut(2, pair.gear2), _tip(1, pair.gear1, limit),
+            _tip(2, pair.gear2, limit), contact, _interference(1, pair), _interference(2, pair))

@@ -1,0 +1,132 @@
+"""One external spur pair, every length from a closed form: the radii, the thicknesses, the
+line of action and the contact ratio, and the checks a teacher makes of them."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import DesignError
+from .inputs import GearPairInputs
+from .involute import least_shift, reference_thickness, thickness_at
+from .shift import Shifts, find_shifts, reference_centre
+
+
+@dataclass(frozen=True)
+class Gear:
+    """One gear of the pair. Lengths in mm, angles in radians.
+
+    ``r`` reference radius m z / 2; ``rb`` base radius r cos α; ``ra`` tip radius
+    r + (h*a + x − Δy) m; ``rf`` root radius r − (h*a + c* − x) m; ``rw`` working pitch radius
+    rb / cos α′; ``s``, ``e`` tooth thickness and space on the reference circle (s + e = π m);
+    ``sa`` tip thickness; ``alpha_a`` the profile angle at the tip; ``least_shift`` x_min;
+    ``form_length`` the length along the line of action from the limit point N to where the
+    rack-generated involute starts (negative: the rack undercuts the tooth).
+    """
+    teeth: int
+    shift: float
+    r: float
+    rb: float
+    ra: float
+    rf: float
+    rw: float
+    s: float
+    e: float
+    sa: float
+    alpha_a: float
+    least_shift: float
+    form_length: float
+
+    @property
+    def undercut(self) -> bool:
+        """x < x_min (to 1e-12): the rack cuts into the involute at the root."""
+        return self.shift < self.least_shift - 1e-12
+
+
+@dataclass(frozen=True)
+class GearPair:
+    """The pair: ``inputs``; ``mode`` how the shifts were found (shift.MODES); ``alpha_w`` α′;
+    ``centre_mm`` a′; ``reference_centre_mm`` a; ``y`` (a′ − a)/m; ``dy`` Δy = x1 + x2 − y;
+    ``gear1``, ``gear2``; ``pb`` base pitch π m cos α; ``n1n2`` the theoretical line of
+    action a′ sin α′; ``b1b2`` the actual one; ``n1p`` N1 to the pitch point P; ``n1b1`` and
+    ``n1b2`` N1 to where contact ends (gear 1's tip) and starts (gear 2's tip), all in mm;
+    ``contact_ratio`` ε."""
+    inputs: GearPairInputs
+    mode: str
+    alpha_w: float
+    centre_mm: float
+    reference_centre_mm: float
+    y: float
+    dy: float
+    gear1: Gear
+    gear2: Gear
+    pb: float
+    n1n2: float
+    b1b2: float
+    n1p: float
+    n1b1: float
+    n1b2: float
+    contact_ratio: float
+
+
+def make_gear(p: GearPairInputs, teeth: int, shift: float, dy: float, alpha_w: float) -> Gear:
+    """One gear's lengths from its teeth and shift and the pair's Δy and α′."""
+    m, alpha = p.module_mm, p.alpha
+    r = m * teeth / 2.0
+    rb = r * math.cos(alpha)
+    ra = r + (p.addendum + shift - dy) * m
+    s = reference_thickness(m, shift, alpha)
+    alpha_a = math.acos(rb / ra) if ra > rb else 0.0
+    sa = float(thickness_at(ra, r, s, alpha, rb)) if ra > rb else -math.inf
+    form = r * math.sin(alpha) - (p.addendum - shift) * m / math.sin(alpha)
+    return Gear(teeth=int(teeth), shift=shift, r=r, rb=rb, ra=ra,
+                rf=r - (p.addendum + p.clearance - shift) * m, rw=rb / math.cos(alpha_w), s=s,
+                e=math.pi * m - s, sa=sa, alpha_a=alpha_a,
+                least_shift=least_shift(teeth, alpha, p.addendum), form_length=form)
+
+
+def design_pair(inputs: GearPairInputs) -> GearPair:
+    """The pair of ``inputs`` (checked here): DesignError names the field when the inputs are
+    out of range, when a′ needs more or less shift than the teeth allow, or when a tip comes
+    to a point; every milder failure is a check of :func:`core.gear.checks.pair_checks`."""
+    p = inputs.check()
+    shifts = find_shifts(p)
+    return pair_of(p, shifts)
+
+
+def pair_of(p: GearPairInputs, shifts: Shifts) -> GearPair:
+    """The results of ``p`` meshed with ``shifts``."""
+    m = p.module_mm
+    a = reference_centre(p)
+    y = (shifts.centre_mm - a) / m
+    dy = shifts.x1 + shifts.x2 - y
+    g1 = make_gear(p, p.z1, shifts.x1, dy, shifts.alpha_w)
+    g2 = make_gear(p, p.z2, shifts.x2, dy, shifts.alpha_w)
+    for k, gear in ((1, g1), (2, g2)):
+        if not gear.sa > 0.0:
+            raise _pointed(k, gear, shifts)
+    n1n2 = shifts.centre_mm * math.sin(shifts.alpha_w)
+    n1b1 = math.sqrt(g1.ra ** 2 - g1.rb ** 2)
+    n1b2 = n1n2 - math.sqrt(g2.ra ** 2 - g2.rb ** 2)
+    pb = math.pi * m * math.cos(p.alpha)
+    eps = (p.z1 * (math.tan(g1.alpha_a) - math.tan(shifts.alpha_w))
+           + p.z2 * (math.tan(g2.alpha_a) - math.tan(shifts.alpha_w))) / (2.0 * math.pi)
+    return GearPair(inputs=p, mode=shifts.mode, alpha_w=shifts.alpha_w, centre_mm=shifts.centre_mm,
+                    reference_centre_mm=a, y=y, dy=dy, gear1=g1, gear2=g2, pb=pb, n1n2=n1n2,
+                    b1b2=n1b1 - n1b2, n1p=g1.rb * math.tan(shifts.alpha_w), n1b1=n1b1, n1b2=n1b2,
+                    contact_ratio=eps)
+
+
+def _pointed(k: int, gear: Gear, shifts: Shifts) -> DesignError:
+    """The error of a pointed tip, naming what set the shift: x_k given, the centre distance,
+    or (the rule) the teeth that needed it."""
+    what = f"the tip of gear {k} pointed (x{k} = {gear.shift:.4f})"
+    if shifts.mode == "given" and gear.ra <= gear.rb:     # Δy took its whole flank
+        big = 1 if shifts.x1 >= shifts.x2 else 2
+        return DesignError(f"x{big}", max(shifts.x1, shifts.x2), "x1 + x2 is too large: the "
+                           f"addendum reduction leaves gear {k} no flank above its base circle")
+    if shifts.mode == "given":
+        return DesignError(f"x{k}", gear.shift, f"makes {what}: give a smaller shift")
+    if shifts.mode == "centre":
+        return DesignError("centre", shifts.centre_mm, f"makes {what}: give a smaller centre distance")
+    return DesignError(f"z{k}", gear.teeth, f"too few teeth for the rule's shifts, which make {what}: "
+                       "give more teeth, or the shifts or the centre distance")

@@ -1,0 +1,70 @@
+"""The pair's results as JSON (the keys other tools read) and as the rows a table prints."""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from .checks import pair_checks
+from .pair import Gear, GearPair
+
+MODE_TEXT = {"given": "x1 and x2 given",
+             "centre": "from the centre distance: the pinion's least uncut shift, the rest to the gear",
+             "balanced": "rule: z1 + z2 ≥ 2 zmin, the pinion's least uncut shift and x2 = −x1",
+             "positive": "rule: z1 + z2 < 2 zmin, the least positive pair at a′ rounded up to 0.5 mm"}
+
+
+def _gear_json(gear: Gear) -> dict[str, Any]:
+    return {"teeth": gear.teeth, "shift_factor": gear.shift, "least_shift_factor": gear.least_shift,
+            "reference_diameter_mm": 2 * gear.r, "base_diameter_mm": 2 * gear.rb,
+            "tip_diameter_mm": 2 * gear.ra, "root_diameter_mm": 2 * gear.rf,
+            "working_diameter_mm": 2 * gear.rw, "reference_thickness_mm": gear.s,
+            "reference_space_mm": gear.e, "tip_thickness_mm": gear.sa, "undercut": gear.undercut}
+
+
+def gear_summary(pair: GearPair) -> dict[str, Any]:
+    """Every result, keyed as issue 35 lists them (``pair``, ``gear1``, ``gear2``) plus the
+    inputs, the checks and how the shifts were chosen."""
+    p = pair.inputs
+    return {
+        "inputs": {"module_mm": p.module_mm, "pressure_angle_deg": p.pressure_angle_deg,
+                   "addendum_factor": p.addendum, "clearance_factor": p.clearance,
+                   "tip_limit_module": p.tip_limit, "contact_ratio_limit": p.contact_limit,
+                   "module_note": p.module_note},
+        "pair": {"centre_mm": pair.centre_mm, "reference_centre_mm": pair.reference_centre_mm,
+                 "working_pressure_angle_deg": math.degrees(pair.alpha_w),
+                 "centre_shift_factor": pair.y, "addendum_reduction_factor": pair.dy,
+                 "contact_ratio": pair.contact_ratio, "base_pitch_mm": pair.pb,
+                 "line_of_action_mm": pair.n1n2, "actual_line_of_action_mm": pair.b1b2,
+                 "ratio": p.z2 / p.z1, "shift_mode": pair.mode},
+        "gear1": _gear_json(pair.gear1),
+        "gear2": _gear_json(pair.gear2),
+        "checks": [{"name": c.name, "ok": c.ok, "value": c.value, "limit": c.limit,
+                    "advice": c.advice} for c in pair_checks(pair)],
+    }
+
+
+def summary_rows(pair: GearPair) -> list[tuple[str, str]]:
+    """(label, value) of the results, as ``shaper gear`` prints them."""
+    g1, g2 = pair.gear1, pair.gear2
+    rows = [("shifts", MODE_TEXT[pair.mode]),
+            ("centre distance a′ (a)", f"{pair.centre_mm:.4f} mm ({pair.reference_centre_mm:.4f} mm)"),
+            ("working pressure angle α′", f"{math.degrees(pair.alpha_w):.6f} °"),
+            ("centre shift y / addendum reduction Δy", f"{pair.y:.6f} / {pair.dy:.6f}"),
+            ("shift factor x1 / x2", f"{g1.shift:.6f} / {g2.shift:.6f}"),
+            ("least shift x1min / x2min", f"{g1.least_shift:.6f} / {g2.least_shift:.6f}")]
+    for label, attr in (("reference diameter d", "r"), ("base diameter db", "rb"),
+                        ("tip diameter da", "ra"), ("root diameter df", "rf"),
+                        ("working diameter d′", "rw")):
+        rows.append((f"{label}1 / {label.split()[-1]}2",
+                     f"{2 * getattr(g1, attr):.4f} / {2 * getattr(g2, attr):.4f} mm"))
+    rows += [("thickness s1 / s2 (reference)", f"{g1.s:.4f} / {g2.s:.4f} mm"),
+             ("space e1 / e2 (reference)", f"{g1.e:.4f} / {g2.e:.4f} mm"),
+             ("tip thickness sa1 / sa2", f"{g1.sa:.4f} / {g2.sa:.4f} mm"),
+             ("line of action N1N2 / B1B2", f"{pair.n1n2:.4f} / {pair.b1b2:.4f} mm"),
+             ("base pitch pb", f"{pair.pb:.4f} mm"),
+             ("contact ratio ε", f"{pair.contact_ratio:.6f}")]
+    if pair.inputs.module_note:
+        rows.append(("note", pair.inputs.module_note))
+    for check in pair_checks(pair):
+        rows.append((f"check {check.name}", "ok" if check.ok else f"FAILS: {check.advice}"))
+    return rows
