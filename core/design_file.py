@@ -36,6 +36,9 @@ MAX_INT_DIGITS = 20
 """Longer integer literals are refused before Python turns them into huge ints."""
 DEFAULT_FILE_RPMS = (40.0, 60.0)
 DEFAULT_FILE_STEP = 1.0
+PART_KEYS = ("cam", "gear")
+"""The parts a design file may hold beside the linkage, speeds and loads, each validated on
+reading and kept as written: a reader that does not edit a part must write it back."""
 
 
 class _Refused(ValueError):

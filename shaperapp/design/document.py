@@ -12,6 +12,7 @@ from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
 from core.dynamics_io import dynamics_csv
+from core.design_file import PART_KEYS
 from core.errors import DesignError, FileFormatError
 from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
 from core.spec import Spec
@@ -45,7 +46,7 @@ class Document(QObject):
         try:
             doc = load_design(path)
             self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
-                                   masses=doc["masses"], parts={"cam": doc.get("cam")})
+                                   masses=doc["masses"], parts={key: doc.get(key) for key in PART_KEYS})
         except FileFormatError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
             return False

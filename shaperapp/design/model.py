@@ -88,7 +88,12 @@ class DesignModel(QObject):
         self._part_savers[name] = save
 
     def saved_parts(self) -> dict[str, Any]:
-        return {name: save() for name, save in self._part_savers.items()}
+        """Every part Save writes: each registered one as its model gives it, and a part the
+        last loaded state held that no model edits (the gear pair, which has no tab yet)
+        as it was read, so opening and saving a file never drops it."""
+        kept = {name: value for name, value in self._parts_in.items()
+                if value is not None and name not in self._part_savers}
+        return {**kept, **{name: save() for name, save in self._part_savers.items()}}
 
     def loaded_part(self, name: str) -> Any:
         """What the state last loaded held under ``name`` (None: nothing, the defaults)."""

@@ -105,3 +105,23 @@ def test_forces_csv_export_equals_cli_output(doc, tmp_path):
                  "--cut-force", m.cut_force_N, "--cut-height", m.cut_height_mm, "--csv", "-")
     assert cli.returncode == 0, cli.stderr
     assert path.read_text() == cli.stdout
+
+
+def test_open_then_save_keeps_the_gear_pair(doc, tmp_path):
+    """The GUI has no Gear tab yet: a design file's "gear" object (issue 35) must still come
+    back from Open then Save as it was written, never be dropped (a lost part is a lost
+    file); New forgets it."""
+    import json
+    model, document = doc
+    gear = {"z1": 13, "z2": 40, "module_mm": 6, "centre_mm": 162}
+    source = tmp_path / "g.shaper.json"
+    assert document.save_to(str(source))
+    data = json.loads(source.read_text(encoding="utf-8"))
+    source.write_text(json.dumps({**data, "gear": gear}), encoding="utf-8")
+    assert document.open_path(str(source))
+    model.set_spec(time_ratio=1.5)                        # an edit, then Save elsewhere
+    target = tmp_path / "h.shaper.json"
+    assert document.save_to(str(target))
+    assert json.loads(target.read_text(encoding="utf-8"))["gear"] == gear
+    model.load_state(model.valid_spec, model.rpms, model.step_deg)   # as File › New does
+    assert "gear" not in model.saved_parts()
