@@ -722,6 +722,10 @@
         <source>Export course design: choose a folder</source>
         <translation>导出课程设计：选择文件夹</translation>
     </message>
+    <message>
+        <source>The gear sheet was left out: the design has no gear pair. Open a design file that holds one ("gear", see shaper gear) to include it.</source>
+        <translation>未导出齿轮啮合图：当前设计没有齿轮副。请打开含齿轮副（"gear"，见 shaper gear）的设计文件后再导出。</translation>
+    </message>
 </context>
 <context>
     <name>DesignForm</name>

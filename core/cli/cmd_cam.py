@@ -29,12 +29,12 @@ EXAMPLES = ("shaper cam --arm 120 --swing 15 --pressure 40 --rise 60 --dwell 10 
 CAM_PARAMETERS = {"--arm": "arm", "--swing": "swing", "--pressure": "pressure",
                   "--return-pressure": "return_pressure", "--rise": "rise", "--dwell": "dwell",
                   "--return": "return", "--roller": "roller", "--base": "base", "--distance": "distance",
-                  "--hub": "hub", "--boss": "boss", "--clearance": "clearance"}
+                  "--hub": "hub", "--boss": "boss", "--least-clearance": "clearance"}
 CAM_OPTIONS = {"arm": "--arm", "swing": "--swing", "pressure": "--pressure",
                "return_pressure": "--return-pressure", "rise": "--rise", "dwell": "--dwell",
                "return": "--return", "rise_law": "--law", "return_law": "--return-law",
                "roller": "--roller", "base": "--base", "distance": "--distance",
-               "hub": "--hub", "boss": "--boss", "clearance": "--clearance",
+               "hub": "--hub", "boss": "--boss", "clearance": "--least-clearance",
                "phase": "--phase", "idle_fraction": "--idle", "rpm": "--rpm", "step": "--step"}
 DESIGN_DESTS = ("crank", "time_ratio", "stroke", "dims", "design", "guide", "rod", "rod_ratio",
                 "rod_side")
@@ -82,8 +82,10 @@ def add_cam_options(parser: argparse.ArgumentParser,
                      "clear, mm (default 12.5)")
     cam.add_argument("--boss", metavar="MM", help="radius of the boss around the follower's pivot, "
                      "which the cam must clear, mm (default 12.5)")
-    cam.add_argument("--clearance", metavar="MM", help="least gap between the profile and the hub or "
-                     "the boss, mm (default 3); a synthesized cam is enlarged to keep it")
+    # not --clearance: shaper drawing takes the gear's options too, and c* is --clearance there
+    cam.add_argument("--least-clearance", dest="least_clearance", metavar="MM",
+                     help="least gap between the profile and the hub or the boss, mm (default 3); "
+                     "a synthesized cam is enlarged to keep it")
     return cam
 
 
@@ -97,7 +99,8 @@ SHEET = (("--arm", "arm", "arm_mm"), ("--swing", "swing", "swing_deg"), ("--pres
          ("--rise", "rise", "rise_deg"), ("--dwell", "dwell", "dwell_deg"), ("--return", "back", "return_deg"))
 OPTIONAL = (("--return-pressure", "return_pressure", "return_pressure_deg"), ("--roller", "roller", "roller_mm"),
             ("--base", "base", "base_mm"), ("--distance", "distance", "distance_mm"),
-            ("--hub", "hub", "hub_mm"), ("--boss", "boss", "boss_mm"), ("--clearance", "clearance", "clearance_mm"))
+            ("--hub", "hub", "hub_mm"), ("--boss", "boss", "boss_mm"),
+            ("--least-clearance", "least_clearance", "clearance_mm"))
 
 
 def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:

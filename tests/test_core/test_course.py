@@ -6,20 +6,22 @@ import os
 
 import pytest
 
-from core.course import (PARTS, REPORT, CourseError, Part, file_names, missing_parts, plan_course,
-                         read_document)
+from core.course import (PARTS, REPORT, CourseError, Part, file_names, left_out_text, missing_parts,
+                         plan_course, read_document)
 from core.io import design_document, masses_to_dict
 from core.spec import Spec
 
 OPTIONAL = ("rpm", "forces", "cam")
 CAM = {"arm_mm": 150.0, "swing_deg": 15.0, "rise_deg": 60.0, "dwell_deg": 10.0, "return_deg": 60.0,
        "pressure_deg": 40.0, "return_pressure_deg": 70.0}
+GEAR = {"z1": 13, "z2": 40, "module_mm": 6.0, "centre_mm": 162.0}
 
 
 def document(drop=()):
     from core.dynamics import MassProperties
     doc = design_document(Spec(), [40.0, 60.0], 1.0,
-                          {"forces": masses_to_dict(MassProperties(cut_force_N=7000.0)), "cam": CAM})
+                          {"forces": masses_to_dict(MassProperties(cut_force_N=7000.0)), "cam": CAM,
+                           "gear": GEAR})
     return {k: v for k, v in doc.items() if k not in drop}
 
 
@@ -30,19 +32,38 @@ def write(path, doc) -> str:
 
 def test_the_files_are_numbered_in_order_and_only_sheets_have_a_dxf():
     plain = [name for _, name in file_names(PARTS)]
-    assert plain == ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf"]
+    assert plain == ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf", "04-gear.pdf"]
     both = [name for _, name in file_names(PARTS, dxf=True)]
     assert both == ["00-report.pdf", "01-motion.pdf", "01-motion.dxf", "02-kinetostatic.pdf",
-                    "02-kinetostatic.dxf", "03-cam.pdf", "03-cam.dxf"]
-    assert [p.content for p in PARTS] == [REPORT, "motion", "forces", "cam"]
+                    "02-kinetostatic.dxf", "03-cam.pdf", "03-cam.dxf", "04-gear.pdf", "04-gear.dxf"]
+    assert [p.content for p in PARTS] == [REPORT, "motion", "forces", "cam", "gear"]
 
 
 def test_a_new_sheet_joins_by_one_entry_and_is_refused_without_its_key():
-    """The gear sheet as the integrator will add it: numbered after the cam, and a file
-    without "gear" refused naming it and the sheet."""
-    parts = PARTS + (Part("gear", "gear", "the gear sheet", ("gear",)),)
-    assert file_names(parts, dxf=True)[-2:] == [(parts[-1], "04-gear.pdf"), (parts[-1], "04-gear.dxf")]
-    assert missing_parts({"spec", "rpm", "forces", "cam"}, parts) == (("gear", ("the gear sheet",)),)
+    """A sheet joins by one entry, numbered after the others; a file without its key is
+    refused naming it and the sheet (unless the part is optional)."""
+    parts = PARTS + (Part("extra", "motion", "the extra sheet", ("extra",)),)
+    assert file_names(parts, dxf=True)[-2:] == [(parts[-1], "05-extra.pdf"), (parts[-1], "05-extra.dxf")]
+    assert missing_parts({"spec", "rpm", "forces", "cam", "gear"}, parts) == (("extra", ("the extra sheet",)),)
+
+
+def test_a_file_without_a_gear_pair_writes_the_rest_and_says_the_gear_sheet_is_left_out(tmp_path):
+    """The gear sheet is optional while the GUI has no Gear tab: left out, and said so."""
+    doc, keys = read_document(write(tmp_path / "d.json", document(("gear",))))
+    course = plan_course(doc, keys, "d.json", str(tmp_path / "out"), dxf=True)
+    assert [p.stem for p in course.left_out] == ["gear"]
+    assert [os.path.basename(f.path) for f in course.files][-2:] == ["03-cam.pdf", "03-cam.dxf"]
+    assert "gear" not in course.drawn
+    assert left_out_text("d.json", course) == [
+        'left out the gear sheet: d.json has no "gear" (the gear pair): the gear sheet needs it']
+
+
+def test_a_gear_pair_that_cannot_be_made_is_refused_naming_the_sheet(tmp_path):
+    doc = document()
+    doc["gear"] = dict(GEAR, centre_mm=100.0)          # below (z1 + z2)·m/2 by far: shifts beyond the teeth
+    read, keys = read_document(write(tmp_path / "d.json", doc))
+    with pytest.raises(CourseError, match=r"^--design: d.json: the gear sheet: "):
+        plan_course(read, keys, "d.json", str(tmp_path / "out"))
 
 
 @pytest.mark.parametrize("drop", [c for n in range(1, 4) for c in itertools.combinations(OPTIONAL, n)])
@@ -102,4 +123,5 @@ def test_a_complete_file_plans_every_file_in_the_folder(tmp_path):
     assert {os.path.dirname(f.path) for f in course.files} == {str(tmp_path / "out")}
     assert course.rpms == (40.0, 60.0) and course.masses.cut_force_N == 7000.0
     assert course.drawn["cam"].inputs.arm_mm == 150.0
+    assert course.drawn["gear"].centre_mm == pytest.approx(162.0) and course.left_out == ()
     assert not (tmp_path / "out").exists()          # planning writes nothing

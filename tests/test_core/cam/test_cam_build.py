@@ -174,7 +174,7 @@ SHEET_ARGS = ("cam", "--arm", "120", "--swing", "15", "--pressure", "40", "--dwe
 @pytest.mark.parametrize("extra, option", [(("--rise", "60", "--base", "17", "--distance", "110"), "--base"),
                                            (("--rise", "60", "--base", "80", "--distance", "100", "--boss", "30"), "--distance"),
                                            (("--rise", "60", "--hub", "-2"), "--hub"),
-                                           (("--rise", "60", "--clearance", "x"), "--clearance"),
+                                           (("--rise", "60", "--least-clearance", "x"), "--least-clearance"),
                                            (("--rise", "100", "--swing", "60", "--boss", "100"), "--swing")])
 def test_cli_refuses_with_one_line_naming_the_option(extra, option):
     status, out, err = shaper_in_process(*SHEET_ARGS, *extra)

@@ -20,19 +20,21 @@ FORMULAS = {"sin", "cos", "tan", "shaper"}
 needs_poppler = pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
 CAM = {"arm_mm": 120.0, "swing_deg": 15.0, "rise_deg": 60.0, "dwell_deg": 10.0, "return_deg": 60.0,
        "pressure_deg": 40.0, "return_pressure_deg": 70.0}
-NAMES = ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf"]
+GEAR = {"z1": 13, "z2": 40, "module_mm": 6.0, "centre_mm": 162.0}
+NAMES = ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf", "04-gear.pdf"]
 WITH_DXF = ["00-report.pdf", "01-motion.dxf", "01-motion.pdf", "02-kinetostatic.dxf",
-            "02-kinetostatic.pdf", "03-cam.dxf", "03-cam.pdf"]
+            "02-kinetostatic.pdf", "03-cam.dxf", "03-cam.pdf", "04-gear.dxf", "04-gear.pdf"]
 # what each file's first page says it is (the report's cover, each sheet's title block)
 TITLES = {"00-report.pdf": "Design report", "01-motion.pdf": "Motion analysis",
-          "02-kinetostatic.pdf": "Kinetostatic analysis", "03-cam.pdf": "Feed cam"}
+          "02-kinetostatic.pdf": "Kinetostatic analysis", "03-cam.pdf": "Feed cam",
+          "04-gear.pdf": "Gear meshing"}
 
 
 def design_file(folder, drop=(), name="design.shaper.json", speeds=(40.0,)):
     from core.dynamics import MassProperties
     loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                            cut_force_N=7000.0, cut_height_mm=80.0)
-    doc = design_document(Spec(), speeds, 1.0, {"forces": masses_to_dict(loads), "cam": CAM})
+    doc = design_document(Spec(), speeds, 1.0, {"forces": masses_to_dict(loads), "cam": CAM, "gear": GEAR})
     path = folder / name
     path.write_text(json.dumps({k: v for k, v in doc.items() if k not in drop}), encoding="utf-8")
     return path
@@ -73,8 +75,8 @@ def test_the_files_are_written_numbered_and_complete(written):
     lines = stdout.splitlines()
     assert [os.path.basename(line) for line in lines[:-1]] == \
         ["00-report.pdf", "01-motion.pdf", "01-motion.dxf", "02-kinetostatic.pdf", "02-kinetostatic.dxf",
-         "03-cam.pdf", "03-cam.dxf"]
-    assert all(os.path.isfile(line) for line in lines[:-1]) and lines[-1].startswith("7 files in ")
+         "03-cam.pdf", "03-cam.dxf", "04-gear.pdf", "04-gear.dxf"]
+    assert all(os.path.isfile(line) for line in lines[:-1]) and lines[-1].startswith("9 files in ")
     for name, title in TITLES.items():
         assert title in " ".join(pdf_text(out / name).split()), name
     info = subprocess.run(["pdfinfo", str(out / "00-report.pdf")], capture_output=True, text=True).stdout

@@ -20,6 +20,8 @@ def answers(monkeypatch, tmp_path):
                         lambda *a, **k: str(out))
     monkeypatch.setattr("shaperapp.course.dialog.QMessageBox.warning",
                         lambda parent, title, text: shown.append(text))
+    monkeypatch.setattr("shaperapp.course.dialog.QMessageBox.information",
+                        lambda parent, title, text: shown.append(("note", text)))
     return out, shown
 
 
@@ -81,7 +83,8 @@ def test_export_writes_the_files_of_shaper_course_with_the_report_cover(window, 
     out, shown = answers
     window.settings.setValue("report/student", "Wang Wu")      # as the report dialog keeps it
     window.act_course.trigger()
-    assert shown == []
+    # the design on screen has no gear pair (no Gear tab yet): the four others, and a note
+    assert len(shown) == 1 and shown[0][0] == "note" and "gear sheet was left out" in shown[0][1]
     assert sorted(os.listdir(out)) == NAMES
     assert "Wang Wu" in pdf_text(out / "01-motion.pdf")
     assert "Wang Wu" in pdf_text(out / "00-report.pdf")
