@@ -27,11 +27,13 @@ from core.polygons import acceleration_polygon, velocity_polygon
 from core.positions import positions, special_angles
 
 from . import mechanism as mech
+from . import mechanism_dims
 from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE, THIN
 from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped,
-                    fit, fitting_height, frame_items, number_text, scale_text, standard_scale, table,
+                    fit, fitting_height, frame_items, item_box, number_text, scale_text, standard_scale, table,
                     sheet_title_block, title_block_box)
+from .sheet_dims import Dimension
 
 ENGLISH = {
     "title": "Motion analysis",
@@ -56,6 +58,7 @@ GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
 TABLE_ROW = 7.0
+LABEL_ROOM = 6.0              # around the mechanism's linework, for the joints' names
 
 
 @dataclass(frozen=True)
@@ -69,6 +72,8 @@ class MotionSheet:
     areas: dict[str, tuple[Box, tuple[Item, ...]]]
     """Each drawing's area on the paper and its items: the areas do not overlap, and
     each drawing stays inside its own."""
+    dimensions: tuple[Dimension, ...] = ()
+    """The mechanism's dimensions (their pictures are among the mechanism's items)."""
 
 
 def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
@@ -92,7 +97,7 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
 
     mech_area = (bx0 + GAP, split_y + GAP, split_x - GAP, by1 - GAP)
     mech_box = mech_area[:3] + (mech_area[3] - 2 * CAPTION,)
-    scale, place, mech_items = _mechanism(design, mech_box, angles, limits)
+    scale, place, mech_items, dims = _mechanism(design, mech_box, angles, limits)
     mech_items.append(caption(lab["mechanism"].format(count=count, mu=number_text(scale / 1000.0),
                                                       scale=scale_text(scale)),
                               ((mech_box[0] + mech_box[2]) / 2.0, mech_area[3]), mech_box[2] - mech_box[0]))
@@ -110,7 +115,7 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                                        TABLE_ROW, 3.5, aligns="lc")))
     areas["title"] = sheet_title_block(paper, block, lab, scale_text(scale))
     items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
-    return MotionSheet(Sheet(paper, tuple(items)), scale, place, diagrams, areas)
+    return MotionSheet(Sheet(paper, tuple(items), tuple(dims)), scale, place, diagrams, areas, tuple(dims))
 
 
 def caption(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> Text:
@@ -129,20 +134,26 @@ def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tupl
 
 
 def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[float]):
-    """The mechanism at ``angles`` (thin) and ``limits`` (thick), fitted to ``box``."""
+    """The mechanism at ``angles`` (thin) and ``limits`` (thick) with its dimensions, at the
+    largest standard scale at which all of it fits ``box``, centred there; its scale,
+    placement, items and dimensions."""
     bounds = mech.bounds(design)
     room_w = box[2] - box[0] - mech.RAM[0] - 2 * mech.TOOL_AHEAD - 10.0
     room_h = box[3] - box[1] - 2 * mech.SUPPORT - 2 * mech.RAM[1] - 2 * mech.TOOL_DROP
     scale = max(standard_scale(bounds[2] - bounds[0], room_w),
                 standard_scale(bounds[3] - bounds[1], room_h))
-    place = fit(bounds, box, scale)
-    items: list[Item] = mech.frame_items(design, place)
-    items += mech.tool_path(design, place, angles)
-    for phi in angles:
-        items += mech.links_at(design, float(phi), place, THIN, bodies=False)
-    for phi in limits:
-        items += mech.links_at(design, float(phi), place, OUTLINE)
-    taken: list[Box] = []
+    while True:                 # the dimensions' room is known once they are placed
+        place = fit(bounds, box, scale)
+        items, dims = _linework(design, place, angles, limits)
+        x0, y0, x1, y1 = _extent(items)
+        if x1 - x0 <= box[2] - box[0] - 2 * LABEL_ROOM and y1 - y0 <= box[3] - box[1] - 2 * LABEL_ROOM:
+            break
+        scale = standard_scale(scale * (1.0 + 1e-9), 1.0)     # the next of the series
+    shift = ((box[0] + box[2] - x0 - x1) / 2.0, (box[1] + box[3] - y0 - y1) / 2.0)
+    place = Placement(scale, (place.origin[0] + shift[0], place.origin[1] + shift[1]), place.anchor)
+    items, dims = _linework(design, place, angles, limits)
+    taken: list[Box] = mechanism_dims.obstacles(dims)
+    items += mechanism_dims.tool_path_numbers(design, place, angles, items, taken, box)
     for label in mech.joint_labels(design, float(limits[0]), place, 5.0):
         placed = place_label(label.text, label.position, label.height, taken, subscripts=label.subscripts,
                              within=box,
@@ -154,9 +165,28 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
         out = p - o2
         spot = o2 + out * (1.0 + 5.0 / max(np.hypot(*out), 1e-9))
         placed = place_label(str(k), (float(spot[0]), float(spot[1])), 3.5, taken, tuple(out),
-                             gap=0.5, within=box, optional=True)
+                             gap=0.5, within=box, optional=True, rings=4)
         items += [placed] if placed else []
-    return scale, place, items
+    return scale, place, items, dims
+
+
+def _linework(design: Design, place: Placement, angles: np.ndarray, limits: Sequence[float]):
+    """The frame, the tool path, the links at ``angles`` (thin) and ``limits`` (thick) and the
+    dimensions' pictures, as items; and the dimensions."""
+    items: list[Item] = mech.frame_items(design, place)
+    items += mech.tool_path(design, place, angles)
+    for phi in angles:
+        items += mech.links_at(design, float(phi), place, THIN, bodies=False)
+    for phi in limits:
+        items += mech.links_at(design, float(phi), place, OUTLINE)
+    dims = mechanism_dims.dimensions(design, place, items, limits)
+    return items + [part for dim in dims for part in (*dim.parts, *dim.kept)], dims
+
+
+def _extent(items: Sequence[Item]) -> Box:
+    boxes = np.array([item_box(it) for it in items])
+    return (float(boxes[:, 0].min()), float(boxes[:, 1].min()), float(boxes[:, 2].max()),
+            float(boxes[:, 3].max()))
 
 
 def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
