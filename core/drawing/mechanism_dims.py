@@ -36,37 +36,108 @@ BELOW_ROOM = THETA_RADIUS[1] + sd.GAP + BOX + 1.0
 NUMBER_MM = 2.5           # the tool path's numbers
 
 
+class _Placed:
+    """The dimensions placed so far and what a next one's text must keep clear of: the
+    linework's and their lines, and their texts."""
+
+    def __init__(self, drawn: Sequence[Item]) -> None:
+        self.drawn = list(drawn)
+        self.dims: list[sd.Dimension] = []
+        self.segs = sd.segments(self.drawn)
+
+    def cost(self, dim: sd.Dimension, extra: float = 0.0) -> float:
+        box = dim.text.box()
+        hits = sum(_meets(box, d.text.box()) for d in self.dims)
+        return 1000.0 * hits + sd.text_crossings(dim.text, self.segs) + extra
+
+    def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
+        """The candidate whose text meets no placed text and crosses the fewest lines
+        (first of equals), kept."""
+        best = min(candidates, key=lambda dim: self.cost(dim, extra(dim)))
+        self.dims.append(best)
+        self.segs = np.vstack([self.segs, sd.segments([*best.parts, *best.kept])])
+        return best
+
+
 def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
                limits: Sequence[float]) -> list[sd.Dimension]:
-    """The seven (six without a rod) dimensions of the mechanism ``drawn`` at ``place``."""
+    """The seven (six without a rod) dimensions of the mechanism ``drawn`` at ``place``: each
+    of a few ways to place it (which side of its line, which end a text that does not fit
+    goes beyond, where along the line) the one whose text crosses the fewest lines."""
     factor = place.scale
     at = [{k: place(v) for k, v in mech.joints(design, float(phi)).items()} for phi in limits]
     boxes = np.array([item_box(it) for it in drawn if not isinstance(it, Text)])
-    left, top = float(boxes[:, 0].min()), float(boxes[:, 3].max())
+    top = float(boxes[:, 3].max())
     o2, o4 = at[0]["O2"], at[0]["O4"]
-    guide = (left, float(place([0.0, design.guide])[1]))
-    dims = [sd.linear(o4, o2, (left - FIRST, o4[1]), 90.0, "L2", factor, beyond_first=True)]
-    h = sd.linear(o2, guide, (left - FIRST, o2[1]), 90.0, "h", factor)
-    if _meets(h.text.box(), dims[0].text.box()):
-        h = sd.linear(o2, guide, (left - FIRST - STEP, o2[1]), 90.0, "h", factor)
-    dims.append(h)
-    right = max(at, key=lambda j: float(j["B"][0]))
-    dims.append(_lever(o4, right["B"], o2, place.length(design.crank),
-                       float(place([0.0, design.guide])[1]) - mech.TOOL_DROP, factor))
-    above = top + FIRST
-    if design.rod is not None:
-        b, c = at[0]["B"], at[0]["C"]
-        q1, q2, _ = reading_order(b, c, 0.0)
-        n = _left_normal(np.asarray(q1), np.asarray(q2))
-        offset = (above - min(q1[1], q2[1])) / n[1] if abs(n[1]) > 1e-6 else above - q1[1]
-        dims.append(sd.aligned(q1, q2, offset, "L4", factor))
-        above += STEP
+    # L1 first, so that the chain goes left of its text too: at the limit position whose
+    # tangent point gives its text the fewest crossings, with the chain's extension lines
+    # from O4 and O2 (running left) and L3's line beside the other limit counted
+    chain_lines = [line([p, (p[0] - 1e4, p[1])]) for p in (o4, o2)]
+    best = None
+    for k, j in enumerate(at):
+        other = at[1 - k]["B"]
+        shift = _left_normal(o4, other) * _side(o4, other, o2, -L3_OFFSET)
+        trial = _Placed([*drawn, *chain_lines, line([o4 + shift, other + shift])])
+        crank = [sd.aligned(p, q, 0.0, "L1", factor, clear=mech.BLOCK[1] / 2.0 + 2.0, outside=True,
+                            below=below)
+                 for p, q in ((o2, j["A"]), (j["A"], o2)) for below in (False, True)]
+        for dim in crank:
+            if _beyond(dim, j["A"]) and (best is None or trial.cost(dim) < best[0]):
+                best = (trial.cost(dim), dim, 1 - k)
+    placed = _Placed(drawn)
+    placed.add(best[1])
+    left = min(float(boxes[:, 0].min()), placed.dims[0].text.box()[0])
+    guide = (float(boxes[:, 0].min()), float(place([0.0, design.guide])[1]))
+    for x in (left - FIRST, left - FIRST - STEP):
+        chain = [sd.linear(o4, o2, (x, o4[1]), 90.0, "L2", factor, beyond_first=True),
+                 sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)]
+        if not _meets(chain[0].text.box(), chain[1].text.box()):
+            break
+    placed.add(chain[0])
+    placed.add(chain[1], sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor))
+    lever = at[best[2]]["B"]                  # L3 beside the limit position L1 is not at
+    offset = _side(o4, lever, o2, -L3_OFFSET)
+    placed.add(*[sd.aligned(o4, lever, offset, "L3", factor, along=t, below=below)
+                 for t in (0.5, 0.35, 0.65, 0.2, 0.8) for below in (False, True)],
+               extra=_away_from(o2, place.length(design.crank),
+                                float(place([0.0, design.guide])[1]) - mech.TOOL_DROP))
+    above = top + FIRST          # H over the rams; L4 (the rod) between them and H
     c0, c1 = sorted((at[0]["C"], at[1]["C"]), key=lambda p: float(p[0]))
-    dims.append(sd.linear(c0, c1, (c0[0], above), 0.0, "H", factor))
-    dims.append(_theta(o4, at[0]["B"], at[1]["B"]))
-    segs = sd.segments([*drawn, *(part for dim in dims for part in (*dim.parts, *dim.kept))])
-    dims.append(_crank(o2, at[0]["A"], factor, segs))
-    return dims
+    level = above + (STEP if design.rod is not None else 0.0)
+    placed.add(sd.linear(c0, c1, (c0[0], level), 0.0, "H", factor),
+               sd.linear(c1, c0, (c0[0], level), 0.0, "H", factor))
+    if design.rod is not None:           # the rod at either limit position
+        rods = []
+        for j in at:
+            q1, q2, _ = reading_order(j["B"], j["C"], 0.0)
+            n = _left_normal(np.asarray(q1), np.asarray(q2))
+            offset = (above - min(q1[1], q2[1])) / n[1] if abs(n[1]) > 1e-6 else above - q1[1]
+            rods += [sd.aligned(p, q, offset if p is q1 else -offset, "L4", factor, below=below)
+                     for p, q in ((q1, q2), (q2, q1)) for below in (False, True)]
+        placed.add(*rods)
+    placed.add(_theta(o4, at[0]["B"], at[1]["B"]))
+    return placed.dims
+
+
+def _beyond(dim: sd.Dimension, end: np.ndarray) -> bool:
+    """Whether the dimension's text lies nearer ``end`` than its other point."""
+    p = np.asarray(dim.text.position)
+    far = [np.hypot(*(p - np.asarray(q))) for q in dim.points]
+    near = min(range(2), key=lambda k: far[k])
+    return bool(np.allclose(dim.points[near], end))
+
+
+def _away_from(o2: np.ndarray, crank: float, path: float):
+    """A cost for L3's text: how much of its box lies where the crank's numbers go (9 mm round
+    the crank circle) or the tool path's (above 8 mm under the path), in mm²/100."""
+    keep = [(o2[0] - crank - 9.0, o2[1] - crank - 9.0, o2[0] + crank + 9.0, o2[1] + crank + 9.0),
+            (-math.inf, path - 8.0, math.inf, math.inf)]
+
+    def cost(dim: sd.Dimension) -> float:
+        x0, y0, x1, y1 = dim.text.box()
+        return sum(max(0.0, min(x1, k[2]) - max(x0, k[0])) * max(0.0, min(y1, k[3]) - max(y0, k[1]))
+                   for k in keep) / 100.0
+    return cost
 
 
 def _meets(a: Box, b: Box) -> bool:
@@ -79,30 +150,11 @@ def _left_normal(p: np.ndarray, q: np.ndarray) -> np.ndarray:
 
 
 def _side(p, q, avoid, offset: float) -> float:
-    """``offset``'s sign for the line p→q (in reading order) so that it lies away from
-    the point ``avoid``."""
-    q1, q2, _ = reading_order(p, q, 0.0)
-    n = _left_normal(np.asarray(q1), np.asarray(q2))
-    toward = float(np.dot(n, np.asarray(avoid) - np.asarray(q1))) > 0.0
+    """``offset``'s sign for an aligned dimension from p to q (left of p→q is positive) so
+    that its line lies away from the point ``avoid``."""
+    n = _left_normal(np.asarray(p, float), np.asarray(q, float))
+    toward = float(np.dot(n, np.asarray(avoid) - np.asarray(p))) > 0.0
     return -abs(offset) if toward else abs(offset)
-
-
-def _lever(o4: np.ndarray, b: np.ndarray, o2: np.ndarray, crank: float, path: float,
-           factor: float) -> sd.Dimension:
-    """L3 beside the lever's right limit position, away from O2, its text where along the lever
-    its box keeps farthest from the crank's numbers (a ring 9 mm round the crank circle) and
-    from the tool path's (8 mm under the path and over it)."""
-    offset = _side(o4, b, o2, -L3_OFFSET)
-    keep = [(o2[0] - crank - 9.0, o2[1] - crank - 9.0, o2[0] + crank + 9.0, o2[1] + crank + 9.0),
-            (-math.inf, path - 8.0, math.inf, math.inf)]
-
-    def clash(dim: sd.Dimension) -> float:
-        x0, y0, x1, y1 = dim.text.box()
-        return sum(max(0.0, min(x1, k[2]) - max(x0, k[0])) * max(0.0, min(y1, k[3]) - max(y0, k[1]))
-                   for k in keep)
-
-    return min((sd.aligned(o4, b, offset, "L3", factor, along=t) for t in (0.5, 0.35, 0.65, 0.2, 0.8)),
-               key=clash)
 
 
 def _theta(o4: np.ndarray, b0: np.ndarray, b1: np.ndarray) -> sd.Dimension:
@@ -116,14 +168,6 @@ def _theta(o4: np.ndarray, b0: np.ndarray, b1: np.ndarray) -> sd.Dimension:
                                     / (np.hypot(*(b0 - o4)) * np.hypot(*(b1 - o4))), -1.0, 1.0)))
     radius = min(max(THETA_RADIUS[0], (2.0 * sd.ARROW_MM + 3.0) / max(sweep, 1e-9)), THETA_RADIUS[1])
     return sd.angular(tuple(o4), tuple(legs[0]), tuple(legs[1]), radius, "θ")
-
-
-def _crank(o2: np.ndarray, a: np.ndarray, factor: float, segs: np.ndarray) -> sd.Dimension:
-    """L1 on the crank O2A, its text beyond A and the block there (outside the lever's swing),
-    above or below the line, whichever crosses fewer of ``segs``."""
-    sides = [sd.aligned(o2, a, 0.0, "L1", factor, clear=mech.BLOCK[1] / 2.0 + 2.0, outside=True,
-                        below=below) for below in (False, True)]
-    return min(sides, key=lambda dim: sd.text_crossings(dim.text, segs))
 
 
 def obstacles(dims: Sequence[sd.Dimension]) -> list[Box]:
@@ -180,21 +224,23 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
     at += max(0.0, within[0] + widths[0] / 2.0 - at[0]) - max(0.0, at[-1] + widths[-1] / 2.0 - within[2])
     segs = sd.segments(drawn)
     rows = [(y - 4.0, "ct", y - 1.5), (y + 2.2, "cb", y + 1.5)]
-    rows += [(y - 4.0 - k * 1.5 * NUMBER_MM, "ct", y - 1.5) for k in range(1, 6)]
+    rows += [(y - 4.0 - k * 1.5 * NUMBER_MM, "ct", y - 1.5) for k in range(1, 9)]
     out: list[Item] = []
     for k, x0, x1 in zip(order, xs[order], at):      # rows are apart: only one row's numbers can meet
         options = []
         for rank, (row, align, tick) in enumerate(rows):
             text = Text(str(k + 1), (float(x1), row), NUMBER_MM, align)
             box = text.box()
-            if not any(_meets(box, t) for t in taken) and within[1] <= box[1] and box[3] <= within[3]:
-                options.append((sd.crossings(box, segs), rank, text, box, tick))
+            end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
+            lead = np.array([[x0, tick, x1, end]])
+            if (not any(_meets(box, t) or sd.crossings(t, lead) for t in taken)
+                    and within[1] <= box[1] and box[3] <= within[3]):
+                options.append((sd.crossings(box, segs), rank, text, box, tick, end))
         if not options:
             continue
-        _, _, text, box, tick = min(options, key=lambda o: (o[0] > 0, o[1], o[0]))
+        _, _, text, box, tick, end = min(options, key=lambda o: (o[0] > 0, o[1], o[0]))
         taken.append(box)
         out.append(text)
         if abs(x1 - x0) > 0.3 or text.position[1] < y - 4.5:
-            end = box[3] if text.align == "ct" else box[1]      # the box's edge toward the path
             out.append(line([(x0, tick), (x1, end)], THIN))
     return out

@@ -100,7 +100,8 @@ def _straight(p1, p2, a, b, name: str, value: float, beyond: int,
     up = np.array([-u[1], u[0]])
     label = f"{name} = {value_text(value)}"
     width = Text(label, (0.0, 0.0), TEXT_MM).width
-    lift = -up * (GAP + 0.75 * TEXT_MM) if below else up * (GAP + 0.6 * TEXT_MM)
+    # a text's box reaches 0.75 h under its middle (descenders) and 0.6 h over it
+    lift = -up * (GAP + 0.6 * TEXT_MM) if below else up * (GAP + 0.75 * TEXT_MM)
     kept: list[Item] = []
     if width + 2.0 * ARROW_MM <= length and not outside:
         room = (ARROW_MM + 1.0 + width / 2.0) / length
