@@ -28,11 +28,11 @@ from core.positions import positions, special_angles
 
 from . import mechanism as mech
 from . import mechanism_dims
-from .charts import Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
+from .charts import TICK, Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE, THIN
 from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped,
                     fit, fitting_height, frame_items, item_box, number_text, scale_text, standard_scale, table,
-                    sheet_title_block, title_block_box)
+                    sheet_title_block, smaller_height, title_block_box)
 from .sheet_dims import Dimension
 
 ENGLISH = {
@@ -41,7 +41,7 @@ ENGLISH = {
     "curves": "Ram displacement, velocity and acceleration, n = {rpm} r/min",
     "s": "s/mm", "v": "v/(m/s)", "a": "a/(m/s²)", "phi": "φ/(°)",
     "mu_s": "μs = {mu} m/mm", "mu_v": "μv = {mu} (m/s)/mm", "mu_a": "μa = {mu} (m/s²)/mm",
-    "mu_phi": "μφ = {mu} °/mm",
+    "mu_phi": "μφ = {mu} °/mm", "position": "Position",
     "velocity": "Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm",
     "acceleration": "Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm",
     "dimensions": "Main dimensions", "quantity": "Quantity", "value": "Value",
@@ -59,6 +59,7 @@ MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing 
 CAPTION = 5.0                 # caption text height
 TABLE_ROW = 7.0
 LABEL_ROOM = 6.0              # around the mechanism's linework, for the joints' names
+ROW_ROOM = 1.5                # under the s chart's degrees, for the positions' numbers
 
 
 @dataclass(frozen=True)
@@ -191,26 +192,77 @@ def _extent(items: Sequence[Item]) -> Box:
 
 def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
             lab: Mapping[str, str], rpm: float) -> list[Item]:
-    """s, v and a over φ in three panels on one φ scale, stacked in ``box``."""
+    """s, v and a over φ in three panels on one φ scale, stacked in ``box``: each φ axis
+    ticked at the numbered positions and labelled in degrees (its title φ/(°)), and under
+    the s axis, where no curve goes (s ≥ 0), the positions' numbers in a row of their own."""
     x0, y0, x1, y1 = box
     items: list[Item] = [caption(lab["curves"].format(rpm=number_text(rpm)), ((x0 + x1) / 2.0, y1),
                                  x1 - x0)]
     top = y1 - 2 * CAPTION
     panel = (top - y0) / 3.0
     phi = np.degrees(motion.crank_angle)
-    ticks = [(float(a), str(int(n))) for a, n in zip(angles, numbers)]
+    ticks = [(float(a), number_text(round(float(a), 1))) for a in angles]
     series = (("s", "mu_s", motion.ram_x, 1e-3), ("v", "mu_v", motion.ram_v[0], 1.0),
               ("a", "mu_a", motion.ram_a[0], 1.0))
     for k, (key, mu_key, y, unit) in enumerate(series):
-        pbox = (x0, top - (k + 1) * panel, x1, top - k * panel - (0 if k == 0 else 0))
-        drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks)
+        pbox = (x0, top - (k + 1) * panel, x1, top - k * panel)
+        below = ROW_ROOM if k == 0 else 0.0
+        drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks, below=below)
+        crossed = _crossed_ticks(drawn, phi, np.asarray(y), ticks)
+        if crossed:             # a degree the curve runs through is left out, its tick kept
+            drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key],
+                          [(a, "" if i in crossed else t) for i, (a, t) in enumerate(ticks)], below=below)
         items += drawn.items
-        items.append(Text(lab[mu_key].format(mu=number_text(drawn.y_scale * unit)),
-                          (drawn.x_end, drawn.y_end), 3.5, "rt"))
+        # the scales at the upper right, left of the φ axis' title where the axis runs that high
+        title = Text(lab["phi"], (drawn.x_end, drawn.origin[1] + 1.5), 3.5, "rb").box()
+        scales = [lab[mu_key].format(mu=number_text(drawn.y_scale * unit))]
+        scales += [lab["mu_phi"].format(mu=number_text(drawn.x_scale))] if k == 0 else []
+        right = drawn.x_end
+        if any(_meets(Text(t, (right, drawn.y_end - 6.0 * i), 3.5, "rt").box(), title)
+               for i, t in enumerate(scales)):
+            right = title[0] - 3.0
+        items += [Text(t, (right, drawn.y_end - 6.0 * i), 3.5, "rt") for i, t in enumerate(scales)]
         if k == 0:
-            items.append(Text(lab["mu_phi"].format(mu=number_text(drawn.x_scale)),
-                              (drawn.x_end, drawn.y_end - 6.0), 3.5, "rt"))
+            items += _position_row(drawn, phi[0], angles, numbers, lab["position"], pbox)
     return items
+
+
+def _crossed_ticks(drawn, phi: np.ndarray, y: np.ndarray, ticks) -> set[int]:
+    """The tick labels of the chart ``drawn`` that its curve (``y`` over ``phi``) or its y axis
+    (down to 2 mm under the lowest value) crosses."""
+    from .sheet_dims import crossings
+    left, zero = drawn.origin
+    pts = np.column_stack([left + (phi - phi[0]) / drawn.x_scale, zero + y / drawn.y_scale])
+    axis = [left, zero + min(float(y.min()), 0.0) / drawn.y_scale - 2.0, left, zero]
+    segs = np.vstack([np.hstack([pts[:-1], pts[1:]]), axis])
+    return {i for i, (a, text) in enumerate(ticks)
+            if crossings(Text(text, (left + (a - phi[0]) / drawn.x_scale, zero - TICK - 1.0),
+                              smaller_height(3.5), "ct").box(), segs)}
+
+
+def _position_row(drawn, phi0: float, angles: np.ndarray, numbers: np.ndarray, title: str,
+                  panel: Box) -> list[Item]:
+    """The positions' numbers in a row under the degrees of the chart ``drawn`` (a number
+    that would meet its neighbour is left out, as the degrees are), titled at its left."""
+    height = smaller_height(3.5)
+    left, zero = drawn.origin
+    row = zero - TICK - 1.0 - 1.35 * height - 0.5          # under the degrees' row
+    items: list[Item] = []
+    taken: list[Box] = []
+    for a, n in zip(angles, numbers):
+        label = Text(str(int(n)), (left + (float(a) - phi0) / drawn.x_scale, row), height, "ct")
+        box = label.box()
+        if box[1] >= panel[1] and not any(_meets(box, b) for b in taken):
+            taken.append(box)
+            items.append(label)
+    name = Text(title, (left - TICK - 1.0, row), height, "rt")
+    if items and name.box()[0] >= panel[0]:
+        items.append(name)
+    return items
+
+
+def _meets(a: Box, b: Box) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,

@@ -34,6 +34,7 @@ def motion_labels() -> dict[str, str]:
         "mu_v": translate("Drawing", "μv = {mu} (m/s)/mm"),
         "mu_a": translate("Drawing", "μa = {mu} (m/s²)/mm"),
         "mu_phi": translate("Drawing", "μφ = {mu} °/mm"),
+        "position": translate("Drawing", "Position"),
         "velocity": translate("Drawing", "Velocity polygon, φ = {angle}°, μv = {mu} (m/s)/mm"),
         "acceleration": translate("Drawing",
                                   "Acceleration polygon, φ = {angle}°, μa = {mu} (m/s²)/mm"),
