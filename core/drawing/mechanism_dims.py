@@ -209,6 +209,21 @@ def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = 0.8) -> np.ndarra
     return centre
 
 
+def _led_through(boxes: Sequence[Box], seg: tuple[float, float, float, float]) -> bool:
+    """Whether the segment x0, y0, x1, y1 runs through any of ``boxes`` (vectorized
+    :func:`sheet_dims.crossings`, one segment against many boxes)."""
+    if not boxes:
+        return False
+    b = np.asarray(boxes, float)
+    x0, y0, x1, y1 = seg
+    near = ((min(x0, x1) < b[:, 2]) & (max(x0, x1) > b[:, 0])
+            & (min(y0, y1) < b[:, 3]) & (max(y0, y1) > b[:, 1]))
+    dx, dy = x1 - x0, y1 - y0
+    sides = np.stack([dx * (b[:, j] - y0) - dy * (b[:, i] - x0) for i, j in ((0, 1), (2, 1), (2, 3), (0, 3))])
+    split = ~((sides > 0).all(axis=0) | (sides < 0).all(axis=0))
+    return bool((near & split).any())
+
+
 def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
                       drawn: Sequence[Item], taken: list[Box], within: Box) -> list[Item]:
     """1 … N at the tool path's ticks, spread along the path so that no two meet, each in the
@@ -228,14 +243,17 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
     out: list[Item] = []
     for k, x0, x1 in zip(order, xs[order], at):      # rows are apart: only one row's numbers can meet
         options = []
-        for rank, (row, align, tick) in enumerate(rows):
-            text = Text(str(k + 1), (float(x1), row), NUMBER_MM, align)
-            box = text.box()
-            end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
-            lead = np.array([[x0, tick, x1, end]])
-            if (not any(_meets(box, t) or sd.crossings(t, lead) for t in taken)
-                    and within[1] <= box[1] and box[3] <= within[3]):
-                options.append((sd.crossings(box, segs), rank, text, box, tick, end))
+        for strict in (True, False):       # a leader through a text only where nothing else is left
+            for rank, (row, align, tick) in enumerate(rows):
+                text = Text(str(k + 1), (float(x1), row), NUMBER_MM, align)
+                box = text.box()
+                end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
+                if (not any(_meets(box, t) for t in taken)
+                        and not (strict and _led_through(taken, (x0, tick, x1, end)))
+                        and within[1] <= box[1] and box[3] <= within[3]):
+                    options.append((sd.crossings(box, segs), rank, text, box, tick, end))
+            if options:
+                break
         if not options:
             continue
         _, _, text, box, tick, end = min(options, key=lambda o: (o[0] > 0, o[1], o[0]))
