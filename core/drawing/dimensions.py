@@ -65,27 +65,28 @@ def reading_order(p1, p2, offset: float, up: bool = False):
 
 
 def aligned(msp, p1, p2, offset: float, name: str, up: bool = False, *,
-            override: dict | None = None, location=None) -> None:
+            override: dict | None = None, location=None, text: str | None = None) -> None:
     """``name = |p1p2|`` measured along p1→p2, its line ``offset`` mm to the left of p1→p2
-    (with ``up``: on the upper side), in :func:`reading_order`."""
+    (with ``up``: on the upper side), in :func:`reading_order`; ``text`` replaces CAD's
+    own "name = <>"."""
     (x1, y1), (x2, y2), offset = reading_order(p1, p2, offset, up)
-    _render(msp.add_aligned_dim(p1=(x1, y1), p2=(x2, y2), distance=float(offset), text=f"{name} = <>",
+    _render(msp.add_aligned_dim(p1=(x1, y1), p2=(x2, y2), distance=float(offset), text=text or f"{name} = <>",
                                 dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER), override, location)
 
 
 def linear(msp, p1, p2, base, angle_deg: float, name: str, *, override: dict | None = None,
-           location=None) -> None:
+           location=None, text: str | None = None) -> None:
     """``name`` = the distance of p1 and p2 along ``angle_deg`` (0 horizontal, 90 vertical),
     its line through ``base``."""
     _render(msp.add_linear_dim(base=tuple(base), p1=tuple(p1), p2=tuple(p2), angle=angle_deg,
-                               text=f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER),
+                               text=text or f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER),
             override, location)
 
 
 def angular(msp, center, p1, p2, base, name: str, *, override: dict | None = None,
-            location=None) -> None:
+            location=None, text: str | None = None) -> None:
     """``name`` = the angle at ``center`` from p1 to p2 (counter-clockwise), its arc
     through ``base``."""
     _render(msp.add_angular_dim_3p(base=tuple(base), center=tuple(center), p1=tuple(p1), p2=tuple(p2),
-                                   text=f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER),
+                                   text=text or f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER),
             override, location)

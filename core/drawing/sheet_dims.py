@@ -7,8 +7,9 @@ times closer than the design's. Each :class:`Dimension` here is both:
   design's true value) as ordinary sheet items, which the sheet's items include, so the
   painter, the layout and the sheet's checks see it like any other line and text;
 - its definition for CAD: :mod:`core.drawing.sheet_dxf` writes a DIMENSION entity in
-  place of the picture, with DIMLFAC = n in an override, so CAD measures the paper
-  length and shows the true one (measurement × n), and the text where the picture has it.
+  place of the picture, with DIMLFAC = n in an override, so CAD's measurement of the
+  paper length times n is the true one, and the picture's text (the true value) where
+  the picture has it (LibreCAD ignores DIMLFAC, so "<>" would show the paper length there).
 
 The picture follows what CAD draws from the same definition with this module's sizes
 (arrow ``dimensions.ARROW_MM`` long, the text ``GAP`` above the line, extension lines

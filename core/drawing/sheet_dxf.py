@@ -59,8 +59,11 @@ def sheet_document(sheet: Sheet) -> Drawing:
 
 
 def _dimension(msp, dim) -> None:
-    """A sheet's dimension as a DIMENSION entity, its text where the sheet has it."""
-    where = {"override": dim.override, "location": dim.text.position}
+    """A sheet's dimension as a DIMENSION entity, its text where the sheet has it. The text is
+    the sheet's, the true value, not CAD's "<>": LibreCAD ignores DIMLFAC (in the style and in
+    an override) and would show the length on the paper; the definition points and DIMLFAC
+    still make CAD's own measurement the true length where CAD honours it."""
+    where = {"override": dim.override, "location": dim.text.position, "text": dim.text.text}
     if dim.kind == "aligned":
         dims.aligned(msp, dim.points[0], dim.points[1], dim.offset, dim.name, **where)
     elif dim.kind == "linear":
