@@ -20,6 +20,7 @@ from core.geometry import Design
 
 from . import mechanism as mech
 from . import sheet_dims as sd
+from .charts import _meets
 from .dimensions import reading_order
 from .dxf import THIN
 from .sheet import Box, Item, Placement, Text, item_box, line
@@ -140,10 +141,6 @@ def _away_from(o2: np.ndarray, crank: float, path: float):
     return cost
 
 
-def _meets(a: Box, b: Box) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
 def _left_normal(p: np.ndarray, q: np.ndarray) -> np.ndarray:
     u = (q - p) / float(np.hypot(*(q - p)))
     return np.array([-u[1], u[0]])
@@ -210,18 +207,8 @@ def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = 0.8) -> np.ndarra
 
 
 def _led_through(boxes: Sequence[Box], seg: tuple[float, float, float, float]) -> bool:
-    """Whether the segment x0, y0, x1, y1 runs through any of ``boxes`` (vectorized
-    :func:`sheet_dims.crossings`, one segment against many boxes)."""
-    if not boxes:
-        return False
-    b = np.asarray(boxes, float)
-    x0, y0, x1, y1 = seg
-    near = ((min(x0, x1) < b[:, 2]) & (max(x0, x1) > b[:, 0])
-            & (min(y0, y1) < b[:, 3]) & (max(y0, y1) > b[:, 1]))
-    dx, dy = x1 - x0, y1 - y0
-    sides = np.stack([dx * (b[:, j] - y0) - dy * (b[:, i] - x0) for i, j in ((0, 1), (2, 1), (2, 3), (0, 3))])
-    split = ~((sides > 0).all(axis=0) | (sides < 0).all(axis=0))
-    return bool((near & split).any())
+    """Whether the segment x0, y0, x1, y1 runs through any of ``boxes``."""
+    return bool(sd.crossing(np.asarray(boxes, float), np.asarray([seg], float)).any())
 
 
 def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,

@@ -28,7 +28,7 @@ from core.positions import positions, special_angles
 
 from . import mechanism as mech
 from . import mechanism_dims
-from .charts import TICK, Curve, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
+from .charts import TICK, Curve, _meets, chart, place_label, polygon_extent, polygon_fit_scale, polygon_items
 from .dxf import OUTLINE, THIN
 from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped,
                     fit, fitting_height, frame_items, item_box, number_text, scale_text, standard_scale, table,
@@ -262,10 +262,6 @@ def _position_row(drawn, phi0: float, angles: np.ndarray, numbers: np.ndarray, t
     if items and name.box()[0] >= panel[0]:
         items.append(name)
     return items
-
-
-def _meets(a: Box, b: Box) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,

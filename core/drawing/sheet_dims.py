@@ -212,16 +212,21 @@ def text_crossings(text: Text, segs: np.ndarray) -> int:
 
 
 def crossings(box: Box, segs: np.ndarray) -> int:
-    """How many of ``segs`` meet the inside of ``box``: their extents overlap and the box's
-    corners are not all on one side of the segment's line."""
-    if segs.size == 0:
-        return 0
-    x0, y0, x1, y1 = box
-    sx0, sx1 = np.minimum(segs[:, 0], segs[:, 2]), np.maximum(segs[:, 0], segs[:, 2])
-    sy0, sy1 = np.minimum(segs[:, 1], segs[:, 3]), np.maximum(segs[:, 1], segs[:, 3])
-    near = (sx0 < x1) & (sx1 > x0) & (sy0 < y1) & (sy1 > y0)
-    dx, dy = segs[:, 2] - segs[:, 0], segs[:, 3] - segs[:, 1]
-    sides = np.stack([dx * (cy - segs[:, 1]) - dy * (cx - segs[:, 0])
-                      for cx, cy in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))])
+    """How many of ``segs`` meet the inside of ``box``."""
+    return int(crossing(np.asarray([box], float), segs).sum())
+
+
+def crossing(boxes: np.ndarray, segs: np.ndarray) -> np.ndarray:
+    """(boxes, segments) → whether each segment meets the inside of each box, (n, m): their
+    extents overlap and the box's corners are not all on one side of the segment's line."""
+    b = np.asarray(boxes, float).reshape(-1, 4)[:, :, None]
+    s = np.asarray(segs, float).reshape(-1, 4)
+    if b.shape[0] == 0 or s.shape[0] == 0:
+        return np.zeros((b.shape[0], s.shape[0]), bool)
+    x1, y1, x2, y2 = s.T
+    near = ((np.minimum(x1, x2) < b[:, 2]) & (np.maximum(x1, x2) > b[:, 0])
+            & (np.minimum(y1, y2) < b[:, 3]) & (np.maximum(y1, y2) > b[:, 1]))
+    sides = np.stack([(x2 - x1) * (b[:, j] - y1) - (y2 - y1) * (b[:, i] - x1)
+                      for i, j in ((0, 1), (2, 1), (2, 3), (0, 3))])
     split = ~((sides > 0).all(axis=0) | (sides < 0).all(axis=0))
-    return int((near & split).sum())
+    return near & split
