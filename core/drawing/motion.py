@@ -169,7 +169,7 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
         out = p - o2
         spot = o2 + out * (1.0 + 5.0 / max(np.hypot(*out), 1e-9))
         placed = place_label(str(k), (float(spot[0]), float(spot[1])), 3.5, taken, tuple(out),
-                             gap=0.5, within=box, optional=True, rings=4)
+                             gap=0.5, within=box, optional=True, rings=6)
         items += [placed] if placed else []
     return scale, place, items, dims
 
