@@ -32,7 +32,7 @@ LEFT_ROOM = FIRST + STEP + sd.GAP + BOX + 1.0   # the chain: two lines and a tex
 ABOVE_ROOM = FIRST + STEP + sd.GAP + BOX + 1.0  # H over L4
 L3_OFFSET = 10.0
 THETA_START = mech.SUPPORT + 3.0                # θ's extension lines start clear of O4's support
-THETA_RADIUS = (16.0, 30.0)
+THETA_RADIUS = (12.0, 30.0)
 BELOW_ROOM = THETA_RADIUS[1] + sd.GAP + BOX + 1.0
 NUMBER_MM = 2.5           # the tool path's numbers
 
@@ -89,13 +89,17 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
     placed.add(best[1])
     left = min(float(boxes[:, 0].min()), placed.dims[0].text.box()[0])
     guide = (float(boxes[:, 0].min()), float(place([0.0, design.guide])[1]))
-    for x in (left - FIRST, left - FIRST - STEP):
-        chain = [sd.linear(o4, o2, (x, o4[1]), 90.0, "L2", factor, beyond_first=True),
-                 sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)]
-        if not _meets(chain[0].text.box(), chain[1].text.box()):
-            break
-    placed.add(chain[0])
-    placed.add(chain[1], sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor))
+    x = left - FIRST
+    l2 = sd.linear(o4, o2, (x, o4[1]), 90.0, "L2", factor, beyond_first=True)
+    placed.add(l2)
+    # h on the chain; where its text does not fit there and would rise above the drawing (it
+    # goes beyond the guide), one line out with the text beyond O2, beside L2's
+    h = sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)
+    if h.kept or _meets(h.text.box(), l2.text.box()):
+        low = sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor, beyond_first=True)
+        if not _meets(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
+            h = low
+    placed.add(h)
     lever = at[best[2]]["B"]                  # L3 beside the limit position L1 is not at
     offset = _side(o4, lever, o2, -L3_OFFSET)
     placed.add(*[sd.aligned(o4, lever, offset, "L3", factor, along=t, below=below)

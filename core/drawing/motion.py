@@ -58,7 +58,7 @@ GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
 TABLE_ROW = 7.0
-LABEL_ROOM = 6.0              # around the mechanism's linework, for the joints' names
+LABEL_ROOM = 3.0              # around the mechanism's linework, for the joints' names
 ROW_ROOM = 1.5                # under the s chart's degrees, for the positions' numbers
 
 
@@ -161,7 +161,7 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     for label in mech.joint_labels(design, float(limits[0]), place, 5.0, dim_lines):
         placed = place_label(label.text, label.position, label.height, taken, subscripts=label.subscripts,
                              within=box,
-                             gap=0.0, optional=True, align="cm")
+                             gap=0.0, optional=True, align="cm", rings=5)
         items += [placed] if placed else []
     o2 = place([0.0, design.frame])
     pins = place(mech.joints(design, angles)["A"].T)
