@@ -10,7 +10,6 @@ the origin, O2 above it, the ram guide at y = guide, the cut toward +x).
 from __future__ import annotations
 
 import math
-from typing import Sequence
 
 import numpy as np
 
@@ -152,15 +151,12 @@ def tool_path(design: Design, where: Placement, crank_deg: np.ndarray) -> list[I
     return items
 
 
-def joint_labels(design: Design, crank_deg: float, where: Placement, height: float = 5.0,
-                 avoid: Sequence[tuple[np.ndarray, np.ndarray]] = ()) -> list[Text]:
+def joint_labels(design: Design, crank_deg: float, where: Placement, height: float = 5.0) -> list[Text]:
     """O2, O4, A, B, C (rod variant) beside their joints at one crank angle: each on the
-    side, of eight, whose spot is farthest from the links and the guide line there, and
-    from the paper segments ``avoid`` (e.g. dimension lines)."""
+    side, of eight, whose spot is farthest from the links and the guide line there."""
     j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
     segments = [(j["O2"], j["A"]), (j["O4"], j["B"]),
-                (j["C"] - [RAM[0], 0.0], j["C"] + [RAM[0] + TOOL_AHEAD, 0.0]),
-                *((np.asarray(p, float), np.asarray(q, float)) for p, q in avoid)]
+                (j["C"] - [RAM[0], 0.0], j["C"] + [RAM[0] + TOOL_AHEAD, 0.0])]
     if design.rod is not None:
         segments.append((j["B"], j["C"]))
     names = {"O2": ("O", "2"), "O4": ("O", "4"), "A": "A", "B": "B"}

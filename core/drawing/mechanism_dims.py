@@ -185,6 +185,38 @@ def obstacles(dims: Sequence[sd.Dimension]) -> list[Box]:
     return boxes
 
 
+def joint_names(design: Design, crank_deg: float, place: Placement, drawn: Sequence[Item],
+                taken: list[Box], within: Box, height: float = 5.0) -> list[Text]:
+    """O2, O4, A, B (and C) beside their joints at ``crank_deg``: of the spot
+    ``mechanism.joint_labels`` picks and 16 directions at three distances round the joint,
+    the first whose box is inside ``within``, meets none of ``taken`` and is crossed by the
+    fewest lines of ``drawn``; each appended to ``taken``. A name with no such spot is left
+    out, as before."""
+    j = {k: place(v) for k, v in mech.joints(design, float(crank_deg)).items()}
+    segs = sd.segments(drawn)
+    reach = 3.5 + 1.2 * height
+    turns = np.radians(np.arange(0.0, 360.0, 22.5))
+    out = []
+    for label, key in zip(mech.joint_labels(design, float(crank_deg), place, height), ("O2", "O4", "A", "B", "C")):
+        p = j[key]
+        spots = [np.asarray(label.position)] + [p + r * np.array([math.cos(a), math.sin(a)])
+                                                for r in (reach, reach + height, reach + 2 * height)
+                                                for a in turns]
+        texts = [Text(label.text, (float(q[0]), float(q[1])), height, "cm", subscripts=label.subscripts)
+                 for q in spots]
+        boxes = np.array([t.box() for t in texts])
+        free = [k for k, b in enumerate(boxes)
+                if within[0] <= b[0] and b[2] <= within[2] and within[1] <= b[1] and b[3] <= within[3]
+                and not any(_meets(tuple(b), t) for t in taken)]
+        if not free:
+            continue
+        hits = sd.crossing(boxes[free], segs).sum(axis=1)
+        best = free[int(np.argmin(hits))]
+        taken.append(tuple(boxes[best]))
+        out.append(texts[best])
+    return out
+
+
 def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = 0.8) -> np.ndarray:
     """Centres as near ``ideal`` (sorted) as they can be with neighbours ``widths`` wide
     ``pad`` apart: overlapping neighbours are pooled into a cluster centred on the mean of

@@ -33,7 +33,7 @@ from .dxf import OUTLINE, THIN
 from .sheet import (TITLE_ENGLISH, TITLE_WIDTH, Box, Item, Paper, Placement, Sheet, Text, TitleBlock, clipped,
                     fit, fitting_height, frame_items, item_box, number_text, scale_text, standard_scale, table,
                     sheet_title_block, smaller_height, title_block_box)
-from .sheet_dims import Dimension, segments
+from .sheet_dims import Dimension
 
 ENGLISH = {
     "title": "Motion analysis",
@@ -155,14 +155,7 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     items, dims = _linework(design, place, angles, limits)
     taken: list[Box] = mechanism_dims.obstacles(dims)
     items += mechanism_dims.tool_path_numbers(design, place, angles, items, taken, box)
-    # the names clear of every line near their joints: the positions' links, the dimensions
-    lines = segments(items)
-    dim_lines = [(seg[:2], seg[2:]) for seg in lines]
-    for label in mech.joint_labels(design, float(limits[0]), place, 5.0, dim_lines):
-        placed = place_label(label.text, label.position, label.height, taken, subscripts=label.subscripts,
-                             within=box,
-                             gap=0.0, optional=True, align="cm", rings=5)
-        items += [placed] if placed else []
+    items += mechanism_dims.joint_names(design, float(limits[0]), place, items, taken, box)
     o2 = place([0.0, design.frame])
     pins = place(mech.joints(design, angles)["A"].T)
     for k, p in enumerate(pins, start=1):      # a number with no free spot is left out
