@@ -61,10 +61,12 @@ class _Placed:
 
 
 def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
-               limits: Sequence[float]) -> list[sd.Dimension]:
+               limits: Sequence[float], compact: bool = False) -> list[sd.Dimension]:
     """The seven (six without a rod) dimensions of the mechanism ``drawn`` at ``place``: each
     of a few ways to place it (which side of its line, which end a text that does not fit
-    goes beyond, where along the line) the one whose text crosses the fewest lines."""
+    goes beyond, where along the line) the one whose text crosses the fewest lines.
+    ``compact``: h's text, where it does not fit its line, beside L2's instead of above
+    the guide (the drawing no taller than its linework and H)."""
     factor = place.scale
     at = [{k: place(v) for k, v in mech.joints(design, float(phi)).items()} for phi in limits]
     boxes = np.array([item_box(it) for it in drawn if not isinstance(it, Text)])
@@ -92,10 +94,10 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
     x = left - FIRST
     l2 = sd.linear(o4, o2, (x, o4[1]), 90.0, "L2", factor, beyond_first=True)
     placed.add(l2)
-    # h on the chain; where its text does not fit there and would rise above the drawing (it
-    # goes beyond the guide), one line out with the text beyond O2, beside L2's
+    # h on the chain; where its text does not fit there it goes beyond the guide, or
+    # (compact) one line out beyond O2, beside L2's
     h = sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)
-    if h.kept or _meets(h.text.box(), l2.text.box()):
+    if (h.kept and compact) or _meets(h.text.box(), l2.text.box()):
         low = sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor, beyond_first=True)
         if not _meets(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
             h = low
