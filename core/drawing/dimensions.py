@@ -63,33 +63,55 @@ _ON_LAYER = {"layer": DIMENSIONS}
 # Each dimension is rendered at once: its block is what CAD shows before it measures again.
 
 
-def aligned(msp, p1, p2, offset: float, name: str, up: bool = False) -> None:
-    """``name = |p1p2|`` measured along p1→p2, its line ``offset`` mm to the left of p1→p2
-    (with ``up``: on the upper side). The points are ordered so that the text reads
-    from below or from the right (GB/T 4458.4), never upside down."""
+def _render(dim, override: dict | None, location) -> None:
+    """Apply a drawing's own ``override`` (e.g. DIMLFAC for a sheet drawn at 1:n) and text
+    ``location`` (where the drawing's layout put the text), then render the block."""
+    if override:
+        dim.dimstyle_attribs.update(override)
+    if location is not None:
+        dim.set_location(tuple(float(v) for v in location[:2]))
+    dim.render()
+
+
+def reading_order(p1, p2, offset: float, up: bool = False):
+    """p1, p2 and the offset as :func:`aligned` draws them: ordered so that the text reads
+    from below or from the right (GB/T 4458.4), never upside down; with ``up`` the
+    offset's side is the upper one."""
     (x1, y1), (x2, y2) = (float(v) for v in p1[:2]), (float(v) for v in p2[:2])
     if up:
         offset = math.copysign(offset, x2 - x1)    # left of a rightward line is up
     if not -60.0 < math.degrees(math.atan2(y2 - y1, x2 - x1)) <= 120.0:
         (x1, y1), (x2, y2), offset = (x2, y2), (x1, y1), -offset
-    msp.add_aligned_dim(p1=(x1, y1), p2=(x2, y2), distance=float(offset), text=f"{name} = <>",
-                        dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()
+    return (x1, y1), (x2, y2), offset
 
 
-def linear(msp, p1, p2, base, angle_deg: float, name: str) -> None:
+def aligned(msp, p1, p2, offset: float, name: str, up: bool = False, *,
+            override: dict | None = None, location=None, text: str | None = None) -> None:
+    """``name = |p1p2|`` measured along p1→p2, its line ``offset`` mm to the left of p1→p2
+    (with ``up``: on the upper side), in :func:`reading_order`; ``text`` replaces CAD's
+    own "name = <>"."""
+    (x1, y1), (x2, y2), offset = reading_order(p1, p2, offset, up)
+    _render(msp.add_aligned_dim(p1=(x1, y1), p2=(x2, y2), distance=float(offset), text=text or f"{name} = <>",
+                                dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER), override, location)
+
+
+def linear(msp, p1, p2, base, angle_deg: float, name: str, *, override: dict | None = None,
+           location=None, text: str | None = None) -> None:
     """``name`` = the distance of p1 and p2 along ``angle_deg`` (0 horizontal, 90 vertical),
     its line through ``base``."""
-    msp.add_linear_dim(base=tuple(base), p1=tuple(p1), p2=tuple(p2), angle=angle_deg,
-                       text=f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()
+    _render(msp.add_linear_dim(base=tuple(base), p1=tuple(p1), p2=tuple(p2), angle=angle_deg,
+                               text=text or f"{name} = <>", dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER),
+            override, location)
 
 
-def angular(msp, center, p1, p2, base, name: str) -> None:
+def angular(msp, center, p1, p2, base, name: str, *, override: dict | None = None,
+            location=None, text: str | None = None) -> None:
     """``name`` = the angle at ``center`` from p1 to p2 (counter-clockwise), its arc
     through ``base``. Written as the angle of two lines from ``center``, the angular
     dimension every reader knows: LibreCAD 2.2 leaves out the three-point one. The lines
     go in the order ezdxf's renderer needs to draw the counter-clockwise angle (p2's
     first: given p1's first, it drew 330° for 30°)."""
     c = tuple(map(float, center))[:2]
-    msp.add_angular_dim_2l(base=tuple(base), line1=(c, tuple(map(float, p2))[:2]),
-                           line2=(c, tuple(map(float, p1))[:2]), text=f"{name} = <>",
-                           dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER).render()
+    _render(msp.add_angular_dim_2l(base=tuple(base), line1=(c, tuple(map(float, p2))[:2]),
+                                   line2=(c, tuple(map(float, p1))[:2]), text=text or f"{name} = <>",
+                                   dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER), override, location)

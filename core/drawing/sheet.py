@@ -259,8 +259,12 @@ def paper(name: str) -> Paper:
 
 @dataclass(frozen=True)
 class Sheet:
+    """``dimensions`` (:class:`core.drawing.sheet_dims.Dimension`) are drawn by their
+    pictures among ``items``; the DXF writes them as DIMENSION entities instead."""
+
     paper: Paper
     items: tuple[Item, ...] = field(default_factory=tuple)
+    dimensions: tuple = ()
 
 
 def frame_items(p: Paper) -> list[Item]:

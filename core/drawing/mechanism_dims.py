@@ -1,0 +1,257 @@
+"""The mechanism's dimensions on the motion sheet, and the numbers on its tool path.
+
+Placed where no position of the mechanism goes, so a text never sits on a link: L2
+(O2O4) and h as a vertical chain left of everything, L3 beside the lever's right limit
+position on the side away from O2, L1 along the crank at the first limit position with
+its text beyond the crank pin (outside the lever's swing, which the crank circle touches
+there), H between the ram's limit positions above the rams (with L4 along the rod under
+it), and θ between the lever's limit positions, at O4 on its vertical opposite angle
+below the pivot (above it the intermediate positions fill the wedge). Every value is
+what CAD measures on the sheet's DXF times the scale: :mod:`core.drawing.sheet_dims`.
+"""
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+import numpy as np
+
+from core.geometry import Design
+
+from . import mechanism as mech
+from . import sheet_dims as sd
+from .charts import _meets
+from .dimensions import reading_order
+from .dxf import THIN
+from .sheet import Box, Item, Placement, Text, item_box, line
+
+FIRST = 7.0               # the first dimension line from the linework, paper mm
+STEP = 7.0                # between parallel dimension lines (DIMDLI)
+BOX = 1.1 * sd.TEXT_MM + 0.25 * sd.TEXT_MM      # a dimension text's box across its line
+LEFT_ROOM = FIRST + STEP + sd.GAP + BOX + 1.0   # the chain: two lines and a text
+ABOVE_ROOM = FIRST + STEP + sd.GAP + BOX + 1.0  # H over L4
+L3_OFFSET = 10.0
+THETA_START = mech.SUPPORT + 3.0                # θ's extension lines start clear of O4's support
+THETA_RADIUS = (12.0, 30.0)
+BELOW_ROOM = THETA_RADIUS[1] + sd.GAP + BOX + 1.0
+NUMBER_MM = 2.5           # the tool path's numbers
+
+
+class _Placed:
+    """The dimensions placed so far and what a next one's text must keep clear of: the
+    linework's and their lines, and their texts."""
+
+    def __init__(self, drawn: Sequence[Item]) -> None:
+        self.drawn = list(drawn)
+        self.dims: list[sd.Dimension] = []
+        self.segs = sd.segments(self.drawn)
+
+    def cost(self, dim: sd.Dimension, extra: float = 0.0) -> float:
+        box = dim.text.box()
+        hits = sum(_meets(box, d.text.box()) for d in self.dims)
+        return 1000.0 * hits + sd.text_crossings(dim.text, self.segs) + extra
+
+    def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
+        """The candidate whose text meets no placed text and crosses the fewest lines
+        (first of equals), kept."""
+        best = min(candidates, key=lambda dim: self.cost(dim, extra(dim)))
+        self.dims.append(best)
+        self.segs = np.vstack([self.segs, sd.segments([*best.parts, *best.kept])])
+        return best
+
+
+def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
+               limits: Sequence[float], compact: bool = False) -> list[sd.Dimension]:
+    """The seven (six without a rod) dimensions of the mechanism ``drawn`` at ``place``: each
+    of a few ways to place it (which side of its line, which end a text that does not fit
+    goes beyond, where along the line) the one whose text crosses the fewest lines.
+    ``compact``: h's text, where it does not fit its line, beside L2's instead of above
+    the guide (the drawing no taller than its linework and H)."""
+    factor = place.scale
+    at = [{k: place(v) for k, v in mech.joints(design, float(phi)).items()} for phi in limits]
+    boxes = np.array([item_box(it) for it in drawn if not isinstance(it, Text)])
+    top = float(boxes[:, 3].max())
+    o2, o4 = at[0]["O2"], at[0]["O4"]
+    # L1 first, so that the chain goes left of its text too: at the limit position whose
+    # tangent point gives its text the fewest crossings, with the chain's extension lines
+    # from O4 and O2 (running left) and L3's line beside the other limit counted
+    chain_lines = [line([p, (p[0] - 1e4, p[1])]) for p in (o4, o2)]
+    best = None
+    for k, j in enumerate(at):
+        other = at[1 - k]["B"]
+        shift = _left_normal(o4, other) * _side(o4, other, o2, -L3_OFFSET)
+        trial = _Placed([*drawn, *chain_lines, line([o4 + shift, other + shift])])
+        crank = [sd.aligned(p, q, 0.0, "L1", factor, clear=mech.BLOCK[1] / 2.0 + 2.0, outside=True,
+                            below=below)
+                 for p, q in ((o2, j["A"]), (j["A"], o2)) for below in (False, True)]
+        for dim in crank:
+            if _beyond(dim, j["A"]) and (best is None or trial.cost(dim) < best[0]):
+                best = (trial.cost(dim), dim, 1 - k)
+    placed = _Placed(drawn)
+    placed.add(best[1])
+    left = min(float(boxes[:, 0].min()), placed.dims[0].text.box()[0])
+    guide = (float(boxes[:, 0].min()), float(place([0.0, design.guide])[1]))
+    x = left - FIRST
+    l2 = sd.linear(o4, o2, (x, o4[1]), 90.0, "L2", factor, beyond_first=True)
+    placed.add(l2)
+    # h on the chain; where its text does not fit there it goes beyond the guide, or
+    # (compact) one line out beyond O2, beside L2's
+    h = sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)
+    if (h.kept and compact) or _meets(h.text.box(), l2.text.box()):
+        low = sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor, beyond_first=True)
+        if not _meets(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
+            h = low
+    placed.add(h)
+    lever = at[best[2]]["B"]                  # L3 beside the limit position L1 is not at
+    offset = _side(o4, lever, o2, -L3_OFFSET)
+    placed.add(*[sd.aligned(o4, lever, offset, "L3", factor, along=t, below=below)
+                 for t in (0.5, 0.35, 0.65, 0.2, 0.8) for below in (False, True)],
+               extra=_away_from(o2, place.length(design.crank),
+                                float(place([0.0, design.guide])[1]) - mech.TOOL_DROP))
+    above = top + FIRST          # H over the rams; L4 (the rod) between them and H
+    c0, c1 = sorted((at[0]["C"], at[1]["C"]), key=lambda p: float(p[0]))
+    level = above + (STEP if design.rod is not None else 0.0)
+    placed.add(sd.linear(c0, c1, (c0[0], level), 0.0, "H", factor),
+               sd.linear(c1, c0, (c0[0], level), 0.0, "H", factor))
+    if design.rod is not None:           # the rod at either limit position
+        rods = []
+        for j in at:
+            q1, q2, _ = reading_order(j["B"], j["C"], 0.0)
+            n = _left_normal(np.asarray(q1), np.asarray(q2))
+            offset = (above - min(q1[1], q2[1])) / n[1] if abs(n[1]) > 1e-6 else above - q1[1]
+            rods += [sd.aligned(p, q, offset if p is q1 else -offset, "L4", factor, below=below)
+                     for p, q in ((q1, q2), (q2, q1)) for below in (False, True)]
+        placed.add(*rods)
+    placed.add(_theta(o4, at[0]["B"], at[1]["B"]))
+    return placed.dims
+
+
+def _beyond(dim: sd.Dimension, end: np.ndarray) -> bool:
+    """Whether the dimension's text lies nearer ``end`` than its other point."""
+    p = np.asarray(dim.text.position)
+    far = [np.hypot(*(p - np.asarray(q))) for q in dim.points]
+    near = min(range(2), key=lambda k: far[k])
+    return bool(np.allclose(dim.points[near], end))
+
+
+def _away_from(o2: np.ndarray, crank: float, path: float):
+    """A cost for L3's text: how much of its box lies where the crank's numbers go (9 mm round
+    the crank circle) or the tool path's (above 8 mm under the path), in mm²/100."""
+    keep = [(o2[0] - crank - 9.0, o2[1] - crank - 9.0, o2[0] + crank + 9.0, o2[1] + crank + 9.0),
+            (-math.inf, path - 8.0, math.inf, math.inf)]
+
+    def cost(dim: sd.Dimension) -> float:
+        x0, y0, x1, y1 = dim.text.box()
+        return sum(max(0.0, min(x1, k[2]) - max(x0, k[0])) * max(0.0, min(y1, k[3]) - max(y0, k[1]))
+                   for k in keep) / 100.0
+    return cost
+
+
+def _left_normal(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    u = (q - p) / float(np.hypot(*(q - p)))
+    return np.array([-u[1], u[0]])
+
+
+def _side(p, q, avoid, offset: float) -> float:
+    """``offset``'s sign for an aligned dimension from p to q (left of p→q is positive) so
+    that its line lies away from the point ``avoid``."""
+    n = _left_normal(np.asarray(p, float), np.asarray(q, float))
+    toward = float(np.dot(n, np.asarray(avoid) - np.asarray(p))) > 0.0
+    return -abs(offset) if toward else abs(offset)
+
+
+def _theta(o4: np.ndarray, b0: np.ndarray, b1: np.ndarray) -> sd.Dimension:
+    """θ on the lever's limit positions extended below O4, its arc as long as two arrows
+    need within THETA_RADIUS."""
+    legs = [o4 - THETA_START * (b - o4) / float(np.hypot(*(b - o4))) for b in (b0, b1)]
+    turn = [math.atan2(p[1] - o4[1], p[0] - o4[0]) for p in legs]
+    if (turn[1] - turn[0]) % (2.0 * math.pi) > math.pi:
+        legs.reverse()
+    sweep = math.acos(float(np.clip(np.dot(b0 - o4, b1 - o4)
+                                    / (np.hypot(*(b0 - o4)) * np.hypot(*(b1 - o4))), -1.0, 1.0)))
+    radius = min(max(THETA_RADIUS[0], (2.0 * sd.ARROW_MM + 3.0) / max(sweep, 1e-9)), THETA_RADIUS[1])
+    return sd.angular(tuple(o4), tuple(legs[0]), tuple(legs[1]), radius, "θ")
+
+
+def obstacles(dims: Sequence[sd.Dimension]) -> list[Box]:
+    """What a label placed by boxes must keep clear of: each dimension's text, and those of its
+    lines whose box is not much more than the line (horizontal, vertical or short ones)."""
+    boxes = [dim.text.box() for dim in dims]
+    for dim in dims:
+        for part in (*dim.parts, *dim.kept):
+            if isinstance(part, Text):
+                continue
+            x0, y0, x1, y1 = item_box(part)
+            if min(x1 - x0, y1 - y0) < 0.5 or max(x1 - x0, y1 - y0) < 15.0:
+                boxes.append((x0, y0, x1, y1))
+    return boxes
+
+
+def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = 0.8) -> np.ndarray:
+    """Centres as near ``ideal`` (sorted) as they can be with neighbours ``widths`` wide
+    ``pad`` apart: overlapping neighbours are pooled into a cluster centred on the mean of
+    their wishes (least squares), until none overlap."""
+    clusters: list[list[int]] = []              # [first, last] indices
+    centre = np.array(ideal, dtype=float)
+    edges = np.concatenate([[0.0], np.cumsum(widths[:-1] / 2.0 + widths[1:] / 2.0 + pad)])
+
+    def place(first: int, last: int) -> None:
+        run = slice(first, last + 1)
+        start = float(np.mean(ideal[run] - (edges[run] - edges[first])))
+        centre[run] = start + edges[run] - edges[first]
+
+    for k in range(len(ideal)):
+        clusters.append([k, k])
+        place(k, k)
+        while len(clusters) > 1:
+            (f0, l0), (f1, l1) = clusters[-2], clusters[-1]
+            if centre[f1] - centre[l0] >= (widths[l0] + widths[f1]) / 2.0 + pad - 1e-9:
+                break
+            clusters[-2:] = [[f0, l1]]
+            place(f0, l1)
+    return centre
+
+
+def _led_through(boxes: Sequence[Box], seg: tuple[float, float, float, float]) -> bool:
+    """Whether the segment x0, y0, x1, y1 runs through any of ``boxes``."""
+    return bool(sd.crossing(np.asarray(boxes, float), np.asarray([seg], float)).any())
+
+
+def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
+                      drawn: Sequence[Item], taken: list[Box], within: Box) -> list[Item]:
+    """1 … N at the tool path's ticks, spread along the path so that no two meet, each in the
+    first row (under the path, over it, then farther under) where it meets none of ``taken``
+    and crosses no line of ``drawn`` (else the first where it meets none), led to its tick
+    by a thin line when it had to move."""
+    c = place(mech.joints(design, np.linspace(0.0, 360.0, 721))["C"].T)
+    y = float(c[0, 1]) - mech.TOOL_DROP
+    xs = place(mech.joints(design, np.asarray(crank_deg, dtype=float))["C"].T)[:, 0] + mech.TOOL_AHEAD
+    order = np.argsort(xs, kind="stable")
+    widths = np.array([Text(str(k + 1), (0.0, 0.0), NUMBER_MM).width for k in order])
+    at = spread(xs[order], widths)
+    at += max(0.0, within[0] + widths[0] / 2.0 - at[0]) - max(0.0, at[-1] + widths[-1] / 2.0 - within[2])
+    segs = sd.segments(drawn)
+    rows = [(y - 4.0, "ct", y - 1.5), (y + 2.2, "cb", y + 1.5)]
+    rows += [(y - 4.0 - k * 1.5 * NUMBER_MM, "ct", y - 1.5) for k in range(1, 9)]
+    out: list[Item] = []
+    for k, x0, x1 in zip(order, xs[order], at):      # rows are apart: only one row's numbers can meet
+        options = []
+        for strict in (True, False):       # a leader through a text only where nothing else is left
+            for rank, (row, align, tick) in enumerate(rows):
+                text = Text(str(k + 1), (float(x1), row), NUMBER_MM, align)
+                box = text.box()
+                end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
+                if (not any(_meets(box, t) for t in taken)
+                        and not (strict and _led_through(taken, (x0, tick, x1, end)))
+                        and within[1] <= box[1] and box[3] <= within[3]):
+                    options.append((sd.crossings(box, segs), rank, text, box, tick, end))
+            if options:
+                break
+        if not options:
+            continue
+        _, _, text, box, tick, end = min(options, key=lambda o: (o[0] > 0, o[1], o[0]))
+        taken.append(box)
+        out.append(text)
+        if abs(x1 - x0) > 0.3 or text.position[1] < y - 4.5:
+            out.append(line([(x0, tick), (x1, end)], THIN))
+    return out
