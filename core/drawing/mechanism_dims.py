@@ -20,7 +20,7 @@ from core.geometry import Design
 
 from . import mechanism as mech
 from . import sheet_dims as sd
-from .charts import _meets
+from .labels import Room, boxes_meet
 from .dimensions import reading_order
 from .dxf import THIN
 from .sheet import Box, Item, Placement, Text, item_box, line
@@ -48,7 +48,7 @@ class _Placed:
 
     def cost(self, dim: sd.Dimension, extra: float = 0.0) -> float:
         box = dim.text.box()
-        hits = sum(_meets(box, d.text.box()) for d in self.dims)
+        hits = sum(boxes_meet(box, d.text.box()) for d in self.dims)
         return 1000.0 * hits + sd.text_crossings(dim.text, self.segs) + extra
 
     def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
@@ -97,9 +97,9 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
     # h on the chain; where its text does not fit there it goes beyond the guide, or
     # (compact) one line out beyond O2, beside L2's
     h = sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)
-    if (h.kept and compact) or _meets(h.text.box(), l2.text.box()):
+    if (h.kept and compact) or boxes_meet(h.text.box(), l2.text.box()):
         low = sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor, beyond_first=True)
-        if not _meets(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
+        if not boxes_meet(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
             h = low
     placed.add(h)
     lever = at[best[2]]["B"]                  # L3 beside the limit position L1 is not at
@@ -241,13 +241,17 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
                 text = Text(str(k + 1), (float(x1), row), NUMBER_MM, align)
                 box = text.box()
                 end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
-                if (not any(_meets(box, t) for t in taken)
+                if (not any(boxes_meet(box, t) for t in taken)
                         and not (strict and _led_through(taken, (x0, tick, x1, end)))
                         and within[1] <= box[1] and box[3] <= within[3]):
                     options.append((sd.crossings(box, segs), rank, text, box, tick, end))
             if options:
                 break
-        if not options:
+        if not options or min(o[0] for o in options) > 0:
+            # every row's spot is crossed by a line (the levers run through a crowded path):
+            # the shared placement, farther out with a leader line if it must (labels.place)
+            room = Room([*drawn, *out], within=within, taken=taken)
+            out += room.place(str(k + 1), (float(x0), y - 1.5), NUMBER_MM, (0.0, -1.0), gap=1.0)
             continue
         _, _, text, box, tick, end = min(options, key=lambda o: (o[0] > 0, o[1], o[0]))
         taken.append(box)

@@ -28,9 +28,9 @@ from core.positions import positions, special_angles
 
 from . import mechanism as mech
 from . import mechanism_dims
-from .charts import TICK, Curve, _meets, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
+from .charts import TICK, Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE, THIN
-from .labels import Room
+from .labels import Room, boxes_meet
 from .sheet import (Box, Item, Paper, Placement, Sheet, Text, clipped, fit, fitting_height, frame_items,
                     item_box, marked, marked_text, number_text, scale_text, smaller_height, standard_scale,
                     table)
@@ -253,7 +253,7 @@ def _position_row(drawn, phi0: float, angles: np.ndarray, numbers: np.ndarray, t
     for a, n in zip(angles, numbers):
         label = Text(str(int(n)), (left + (float(a) - phi0) / drawn.x_scale, row), height, "ct")
         box = label.box()
-        if box[1] >= panel[1] and not any(_meets(box, b) for b in taken):
+        if box[1] >= panel[1] and not any(boxes_meet(box, b) for b in taken):
             taken.append(box)
             items.append(label)
     name = Text(title, (left - TICK - 1.0, row), height, "rt")

@@ -17,6 +17,8 @@ import numpy as np
 import pytest
 from ezdxf.entities import DimStyleOverride
 
+from dxf_checks import measurement
+
 from core.drawing import mechanism as mech
 from core.drawing.dxf import DIMENSIONS, THIN, dxf_text
 from core.drawing.motion import motion_sheet
@@ -92,7 +94,7 @@ def test_every_dimension_shows_the_design_and_cad_measures_it_at_true_length(cas
         name, value = shown(dim.dxf.text)             # the true value as text: LibreCAD ignores DIMLFAC
         assert value == pytest.approx(want[name], abs=0.0051) and dim.dxf.layer == DIMENSIONS
         factor = DimStyleOverride(dim).get("dimlfac", 1.0) if name != "θ" else 1.0
-        assert dim.get_measurement() * factor == pytest.approx(want[name], rel=1e-9), name
+        assert measurement(dim) * factor == pytest.approx(want[name], rel=1e-9), name
     if size == "A3":                    # a 1:n sheet: the factor is the scale, not 1
         assert drawn.scale > 1.0
     # each picture is replaced by its DIMENSION, not written twice
