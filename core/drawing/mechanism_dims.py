@@ -20,7 +20,7 @@ from core.geometry import Design
 
 from . import mechanism as mech
 from . import sheet_dims as sd
-from .labels import Room, boxes_meet
+from .labels import boxes_meet, crossings, meets_strokes, strokes
 from .dimensions import reading_order
 from .dxf import THIN
 from .sheet import Box, Item, Placement, Text, item_box, line
@@ -221,8 +221,11 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
                       drawn: Sequence[Item], taken: list[Box], within: Box) -> list[Item]:
     """1 … N at the tool path's ticks, spread along the path so that no two meet, each in the
     first row (under the path, over it, then farther under) where it meets none of ``taken``
-    and crosses no line of ``drawn`` (else the first where it meets none), led to its tick
-    by a thin line when it had to move."""
+    and no line or circle of ``drawn`` (labels' clearance), led to its tick by a thin line
+    when it had to move; where every row's spot near the tick is crossed (the levers run
+    through a crowded path), the nearest free spot farther along the path, under or over
+    it, with its leader from the tick crossing the fewest lines (else the least crossed
+    spot, as before)."""
     c = place(mech.joints(design, np.linspace(0.0, 360.0, 721))["C"].T)
     y = float(c[0, 1]) - mech.TOOL_DROP
     xs = place(mech.joints(design, np.asarray(crank_deg, dtype=float))["C"].T)[:, 0] + mech.TOOL_AHEAD
@@ -230,32 +233,51 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
     widths = np.array([Text(str(k + 1), (0.0, 0.0), NUMBER_MM).width for k in order])
     at = spread(xs[order], widths)
     at += max(0.0, within[0] + widths[0] / 2.0 - at[0]) - max(0.0, at[-1] + widths[-1] / 2.0 - within[2])
-    segs = sd.segments(drawn)
+    segs = strokes(drawn)
     rows = [(y - 4.0, "ct", y - 1.5), (y + 2.2, "cb", y + 1.5)]
     rows += [(y - 4.0 - k * 1.5 * NUMBER_MM, "ct", y - 1.5) for k in range(1, 9)]
+    far_rows = rows + [(y + 2.2 + k * 1.5 * NUMBER_MM, "cb", y + 1.5) for k in range(1, 9)]
     out: list[Item] = []
-    for k, x0, x1 in zip(order, xs[order], at):      # rows are apart: only one row's numbers can meet
-        options = []
-        for strict in (True, False):       # a leader through a text only where nothing else is left
-            for rank, (row, align, tick) in enumerate(rows):
-                text = Text(str(k + 1), (float(x1), row), NUMBER_MM, align)
-                box = text.box()
-                end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
-                if (not any(boxes_meet(box, t) for t in taken)
-                        and not (strict and _led_through(taken, (x0, tick, x1, end)))
-                        and within[1] <= box[1] and box[3] <= within[3]):
-                    options.append((sd.crossings(box, segs), rank, text, box, tick, end))
-            if options:
-                break
-        if not options or min(o[0] for o in options) > 0:
-            # every row's spot is crossed by a line (the levers run through a crowded path):
-            # the shared placement, farther out with a leader line if it must (labels.place)
-            room = Room([*drawn, *out], within=within, taken=taken)
-            out += room.place(str(k + 1), (float(x0), y - 1.5), NUMBER_MM, (0.0, -1.0), gap=1.0)
+    for k, x0, x1, w in zip(order, xs[order], at, widths):   # rows are apart: one row's numbers can meet
+        options = _spots(str(k + 1), x0, [x1], rows, taken, within, segs, by_rank=True)
+        if not options or options[0][0] > 0:
+            shifts = [x1 + s * (w + 0.8) for n in range(1, 7) for s in (n, -n)]
+            farther = _spots(str(k + 1), x0, shifts, far_rows, taken, within, segs)
+            if farther and farther[0][0] == 0:
+                options = farther
+        if not options:
             continue
-        _, _, text, box, tick, end = min(options, key=lambda o: (o[0] > 0, o[1], o[0]))
+        _, _, text, box, tick, end = options[0]
         taken.append(box)
         out.append(text)
-        if abs(x1 - x0) > 0.3 or text.position[1] < y - 4.5:
-            out.append(line([(x0, tick), (x1, end)], THIN))
+        segs = np.vstack([segs, strokes([text])])
+        if abs(text.position[0] - x0) > 0.3 or text.position[1] < y - 4.5 or text.position[1] > y + 2.5:
+            lead = line([(x0, tick), (text.position[0], end)], THIN)
+            out.append(lead)
+            segs = np.vstack([segs, strokes([lead])])
     return out
+
+
+def _spots(number: str, x0: float, centres: Sequence[float], rows, taken: Sequence[Box],
+           within: Box, segs: np.ndarray, by_rank: bool = False) -> list[tuple]:
+    """The tool path's number at each of ``centres`` in each of ``rows`` (y, alignment, the
+    tick's end its leader starts at) that meets no taken box and lies within the drawing,
+    as (crossed, (leader's crossings, rank), text, box, tick, end), best first: those whose
+    box no line crosses and whose leader runs through no text first, then the leader
+    crossing the fewest lines (in the order given; ``by_rank``: the first row, the
+    leader's crossings not counted)."""
+    options = []
+    for rank, (cx, (row, align, tick)) in enumerate((cx, r) for cx in centres for r in rows):
+        text = Text(number, (float(cx), row), NUMBER_MM, align)
+        box = text.box()
+        end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
+        if (any(boxes_meet(box, t) for t in taken)
+                or not (within[0] <= box[0] and box[2] <= within[2] and within[1] <= box[1]
+                        and box[3] <= within[3])):
+            continue
+        seg = (x0, tick, float(cx), end)
+        through = int(_led_through(taken, seg))
+        crossed = int(meets_strokes(box, segs)) + through     # a leader through a text crosses it
+        led = 0 if by_rank else crossings(np.asarray(seg), segs)
+        options.append((crossed, (led, rank), text, box, tick, end))
+    return sorted(options, key=lambda o: (o[0], o[1]))

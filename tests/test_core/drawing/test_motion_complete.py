@@ -113,16 +113,16 @@ def test_tool_path_numbered_at_the_ram_positions(case, count):
     items = drawn.areas["mechanism"][1]
     phi = np.radians(np.arange(count) * 360.0 / count)
     ticks = drawn.placement(shape(design, phi).ram_joint.T)[:, 0] + mech.TOOL_AHEAD
-    numbers = {t.text: t for t in items if isinstance(t, Text) and t.height == 2.5}
     leaders = [np.asarray(p.points) for p in items if isinstance(p, Polyline) and p.layer == THIN
                and len(p.points) == 2]
     for k in range(1, count + 1):
-        label = numbers[str(k)]
+        # a crank position's number (3.5 mm) may be drawn one standard height smaller, 2.5 mm,
+        # where labels' placement found no room for it at 3.5: one of the 2.5 mm k's is the path's
+        labels = [t for t in items if isinstance(t, Text) and t.height == 2.5 and t.text == str(k)]
         x = ticks[k - 1]
-        if abs(label.position[0] - x) <= 0.3 + 1e-9:
-            continue
-        assert any(abs(seg[0, 0] - x) < 1e-6 and abs(seg[1, 0] - label.position[0]) < 1e-6
-                   for seg in leaders), k
+        assert any(abs(label.position[0] - x) <= 0.3 + 1e-9
+                   or any(abs(seg[0, 0] - x) < 1e-6 and abs(seg[1, 0] - label.position[0]) < 1e-6
+                          for seg in leaders) for label in labels), k
 
 
 @pytest.mark.parametrize("count", [6, 12, 24])
