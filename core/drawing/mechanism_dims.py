@@ -31,6 +31,9 @@ BOX = 1.1 * sd.TEXT_MM + 0.25 * sd.TEXT_MM      # a dimension text's box across 
 LEFT_ROOM = FIRST + STEP + sd.GAP + BOX + 1.0   # the chain: two lines and a text
 ABOVE_ROOM = FIRST + STEP + sd.GAP + BOX + 1.0  # H over L4
 L3_OFFSET = 10.0
+# where along the lever L3's text may stand, the preferred first; then every 2.5 % between,
+# for a text that must find the gap between the chain's extension lines (K near 3)
+L3_ALONG = tuple(dict.fromkeys((0.5, 0.35, 0.65, 0.2, 0.8, *np.round(np.linspace(0.1, 0.9, 33), 3))))
 THETA_START = mech.SUPPORT + 3.0                # θ's extension lines start clear of O4's support
 THETA_RADIUS = (12.0, 30.0)
 BELOW_ROOM = THETA_RADIUS[1] + sd.GAP + BOX + 1.0
@@ -44,19 +47,23 @@ class _Placed:
     def __init__(self, drawn: Sequence[Item]) -> None:
         self.drawn = list(drawn)
         self.dims: list[sd.Dimension] = []
-        self.segs = sd.segments(self.drawn)
+        self.defects = 0.0         # the placed texts' crossings and hits, as costed
+        self.segs = strokes(self.drawn)        # the circles too (the crank's centre circle)
 
     def cost(self, dim: sd.Dimension, extra: float = 0.0) -> float:
         box = dim.text.box()
         hits = sum(boxes_meet(box, d.text.box()) for d in self.dims)
-        return 1000.0 * hits + sd.text_crossings(dim.text, self.segs) + extra
+        own = strokes([*dim.parts, *dim.kept])      # its lines through a text placed before
+        hits += sum(sd.text_crossings(d.text, own) > 0 for d in self.dims)
+        return 1000.0 * hits + 10.0 * sd.text_crossings(dim.text, self.segs) + extra
 
     def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
-        """The candidate whose text meets no placed text and crosses the fewest lines
-        (first of equals), kept."""
+        """The candidate whose text meets no placed text, whose lines cross none, and whose
+        text crosses the fewest lines (then the least ``extra``; first of equals), kept."""
         best = min(candidates, key=lambda dim: self.cost(dim, extra(dim)))
+        self.defects += self.cost(best)
         self.dims.append(best)
-        self.segs = np.vstack([self.segs, sd.segments([*best.parts, *best.kept])])
+        self.segs = np.vstack([self.segs, strokes([*best.parts, *best.kept])])
         return best
 
 
@@ -76,8 +83,9 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
     # tangent point gives its text the fewest crossings, with the chain's extension lines
     # from O4 and O2 (running left) and L3's line beside the other limit counted
     chain_lines = [line([p, (p[0] - 1e4, p[1])]) for p in (o4, o2)]
-    best = None
+    ranked = []
     for k, j in enumerate(at):
+        best = None
         other = at[1 - k]["B"]
         shift = _left_normal(o4, other) * _side(o4, other, o2, -L3_OFFSET)
         trial = _Placed([*drawn, *chain_lines, line([o4 + shift, other + shift])])
@@ -87,6 +95,24 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
         for dim in crank:
             if _beyond(dim, j["A"]) and (best is None or trial.cost(dim) < best[0]):
                 best = (trial.cost(dim), dim, 1 - k)
+        if best is not None:
+            ranked.append(best)
+    # the rest after L1 at the better limit position; at the other where that leaves a text
+    # crossed there and not here (L3's text between the chain's extension lines, K near 3)
+    ranked.sort(key=lambda b: b[0])
+    tries = []
+    for best in ranked:
+        tries.append(_after_l1(design, place, drawn, at, best, boxes, top, compact))
+        if tries[-1].defects == 0:
+            break
+    return min(tries, key=lambda p: p.defects).dims
+
+
+def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best, boxes: np.ndarray,
+              top: float, compact: bool) -> "_Placed":
+    """The dimensions with L1 ``best`` (cost, dimension, the other limit position's index)."""
+    factor = place.scale
+    o2, o4 = at[0]["O2"], at[0]["O4"]
     placed = _Placed(drawn)
     placed.add(best[1])
     left = min(float(boxes[:, 0].min()), placed.dims[0].text.box()[0])
@@ -102,10 +128,15 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
         if not boxes_meet(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
             h = low
     placed.add(h)
+    placed.add(_theta(o4, at[0]["B"], at[1]["B"]))     # fixed: before L3, which keeps off it
     lever = at[best[2]]["B"]                  # L3 beside the limit position L1 is not at
     offset = _side(o4, lever, o2, -L3_OFFSET)
+    # … else beyond either end (where the chain's extension lines from O2 and O4 leave no
+    # gap on the lever for it)
     placed.add(*[sd.aligned(o4, lever, offset, "L3", factor, along=t, below=below)
-                 for t in (0.5, 0.35, 0.65, 0.2, 0.8) for below in (False, True)],
+                 for t in L3_ALONG for below in (False, True)],
+               *[sd.aligned(p, q, side, "L3", factor, outside=True, below=below)
+                 for p, q, side in ((o4, lever, offset), (lever, o4, -offset)) for below in (False, True)],
                extra=_away_from(o2, place.length(design.crank),
                                 float(place([0.0, design.guide])[1]) - mech.TOOL_DROP))
     above = top + FIRST          # H over the rams; L4 (the rod) between them and H
@@ -122,8 +153,7 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
             rods += [sd.aligned(p, q, offset if p is q1 else -offset, "L4", factor, below=below)
                      for p, q in ((q1, q2), (q2, q1)) for below in (False, True)]
         placed.add(*rods)
-    placed.add(_theta(o4, at[0]["B"], at[1]["B"]))
-    return placed.dims
+    return placed
 
 
 def _beyond(dim: sd.Dimension, end: np.ndarray) -> bool:
