@@ -43,7 +43,8 @@ class Dimension:
     the true length per paper mm (DIMLFAC; 1 for an angle); ``value`` what the text shows
     (mm or °); ``parts`` the picture, also among the sheet's items, that the DIMENSION
     replaces in the DXF; ``text`` its text; ``kept`` lines of it that stay lines there (a
-    dimension line extended under a text that did not fit between the arrows)."""
+    dimension line extended under a text that did not fit between the arrows); ``height``
+    its text's height, which the DXF's DIMTXT override carries too."""
 
     kind: str
     name: str
@@ -57,11 +58,12 @@ class Dimension:
     base: Pair = (0.0, 0.0)
     angle: float = 0.0
     center: Pair = (0.0, 0.0)
+    height: float = TEXT_MM     # its text's; labels' next smaller one where every spot is crossed
 
     @property
     def override(self) -> dict[str, float]:
         """The DIMENSION's style override: the scale and the sizes the picture was laid out with."""
-        return {"dimlfac": float(self.factor), "dimtxt": TEXT_MM, "dimasz": ARROW_MM,
+        return {"dimlfac": float(self.factor), "dimtxt": float(self.height), "dimasz": ARROW_MM,
                 "dimgap": GAP, "dimexe": EXTEND, "dimexo": 0.0}
 
 
@@ -79,14 +81,14 @@ def _arrow(tip: np.ndarray, back: np.ndarray) -> Polyline:
 
 
 def _straight(p1, p2, a, b, name: str, value: float, beyond: int,
-              clear: float = 2.0, outside: bool = False, below: bool = False, along: float = 0.5
-              ) -> tuple[list[Item], list[Item], Text]:
+              clear: float = 2.0, outside: bool = False, below: bool = False, along: float = 0.5,
+              height: float = TEXT_MM) -> tuple[list[Item], list[Item], Text]:
     """Extension lines p1→a, p2→b (EXTEND beyond), the line a–b with arrows inside and the
     text above its middle, reading along a→b; a text longer than the line goes beyond the
     end ``beyond`` (0: a, 1: b), ``clear`` mm from it, over an extension of the line, which
     stays a line in the DXF (always with ``outside``). The picture, the lines that stay, and
     the text; ``below`` puts the text under the line instead, ``along`` the fraction of the
-    line from a to the text's middle."""
+    line from a to the text's middle, ``height`` the text's height."""
     p1, p2, a, b = (np.asarray(v, float) for v in (p1, p2, a, b))
     length = max(float(np.hypot(*(b - a))), 1e-12)
     u = (b - a) / length
@@ -100,9 +102,9 @@ def _straight(p1, p2, a, b, name: str, value: float, beyond: int,
     rotation = math.degrees(math.atan2(u[1], u[0]))
     up = np.array([-u[1], u[0]])
     label = f"{name} = {value_text(value)}"
-    width = Text(label, (0.0, 0.0), TEXT_MM).width
+    width = Text(label, (0.0, 0.0), height).width
     # a text's box reaches 0.75 h under its middle (descenders) and 0.6 h over it
-    lift = -up * (GAP + 0.6 * TEXT_MM) if below else up * (GAP + 0.75 * TEXT_MM)
+    lift = -up * (GAP + 0.6 * height) if below else up * (GAP + 0.75 * height)
     kept: list[Item] = []
     if width + 2.0 * ARROW_MM <= length and not outside:
         room = (ARROW_MM + 1.0 + width / 2.0) / length
@@ -112,16 +114,18 @@ def _straight(p1, p2, a, b, name: str, value: float, beyond: int,
         end, away = (b, u) if beyond else (a, -u)
         centre = end + away * (clear + width / 2.0) + lift
         kept.append(line([end, end + away * (2.0 * clear + width)], DIMENSIONS))
-    text = Text(label, (float(centre[0]), float(centre[1])), TEXT_MM, "cm", rotation, DIMENSIONS)
+    text = Text(label, (float(centre[0]), float(centre[1])), height, "cm", rotation, DIMENSIONS)
     return parts + [text], kept, text
 
 
 def aligned(p1: Pair, p2: Pair, offset: float, name: str, factor: float, clear: float = 2.0,
-            outside: bool = False, below: bool = False, along: float = 0.5) -> Dimension:
+            outside: bool = False, below: bool = False, along: float = 0.5,
+            height: float = TEXT_MM) -> Dimension:
     """``name`` = factor·|p1p2| along p1→p2, its line ``offset`` mm left of it (in
     ``dimensions.reading_order``, as the DXF has it); a text that does not fit (or any, with
     ``outside``) goes beyond p2, ``clear`` mm from it; ``below``: the text under the line;
-    ``along``: where along p1→p2 the text's middle is (as far as the arrows leave room)."""
+    ``along``: where along p1→p2 the text's middle is (as far as the arrows leave room);
+    ``height``: the text's."""
     q1, q2, offset = reading_order(p1, p2, offset)
     a1, a2 = np.asarray(q1), np.asarray(q2)
     u = (a2 - a1) / float(np.hypot(*(a2 - a1)))
@@ -129,24 +133,26 @@ def aligned(p1: Pair, p2: Pair, offset: float, name: str, factor: float, clear: 
     value = factor * float(np.hypot(*(a2 - a1)))
     swapped = not np.allclose(q2, np.asarray(p2[:2], float))
     parts, kept, text = _straight(a1, a2, a1 + n, a2 + n, name, value, 0 if swapped else 1, clear,
-                                  outside, below, 1.0 - along if swapped else along)
+                                  outside, below, 1.0 - along if swapped else along, height)
     return Dimension("aligned", name, (q1, q2), factor, value, tuple(parts), text, tuple(kept),
-                     offset=offset)
+                     offset=offset, height=height)
 
 
 def linear(p1: Pair, p2: Pair, base: Pair, angle: float, name: str, factor: float,
-           beyond_first: bool = False) -> Dimension:
+           beyond_first: bool = False, height: float = TEXT_MM) -> Dimension:
     """``name`` = factor × the distance of p1 and p2 along ``angle`` (°), its line through
-    ``base``; a text that does not fit goes beyond p2 (p1 with ``beyond_first``)."""
+    ``base``; a text that does not fit goes beyond p2 (p1 with ``beyond_first``), ``height``
+    high."""
     u = np.array([math.cos(math.radians(angle)), math.sin(math.radians(angle))])
     c = np.asarray(base, float)
     a, b = (c + u * float(np.dot(np.asarray(p, float) - c, u)) for p in (p1, p2))
     value = factor * abs(float(np.dot(np.asarray(p2, float) - np.asarray(p1, float), u)))
     forward = float(np.dot(b - a, u)) >= 0
     first, second, lo, hi = (p1, p2, a, b) if forward else (p2, p1, b, a)
-    parts, kept, text = _straight(first, second, lo, hi, name, value, int(forward != beyond_first))
+    parts, kept, text = _straight(first, second, lo, hi, name, value, int(forward != beyond_first),
+                                  height=height)
     return Dimension("linear", name, (tuple(p1), tuple(p2)), factor, value, tuple(parts), text,
-                     tuple(kept), base=tuple(base), angle=angle)
+                     tuple(kept), base=tuple(base), angle=angle, height=height)
 
 
 def angular(center: Pair, p1: Pair, p2: Pair, radius: float, name: str) -> Dimension:

@@ -58,6 +58,21 @@ def test_linear_shows_the_projected_distance(x1, y1, x2, y2, angle, n):
     assert back.get_measurement() * DimStyleOverride(back).get("dimlfac") == pytest.approx(n * along, rel=1e-9)
 
 
+@pytest.mark.parametrize("height", [3.5, 2.5])
+def test_a_smaller_text_is_drawn_and_written_to_the_dxf_at_its_height(height):
+    """A dimension whose text drops to labels' next smaller height (2.5 mm) says so in its
+    DIMENSION's DIMTXT, so CAD draws the text the size the PDF shows; the text still clears
+    its line by GAP (its box 0.75 h under its middle), and the value is unchanged."""
+    dims = [sd.aligned((50.0, 50.0), (150.0, 50.0), 10.0, "L", 2.0, height=height),
+            sd.linear((50.0, 80.0), (50.0, 180.0), (30.0, 80.0), 90.0, "H", 2.0, height=height)]
+    for dim, back in zip(dims, read_back(dims)):
+        assert dim.text.height == height
+        assert DimStyleOverride(back).get("dimtxt") == pytest.approx(height)
+        assert dim.value == pytest.approx(200.0)
+    aligned_line_y = 60.0
+    assert dims[0].text.position[1] - 0.75 * height == pytest.approx(aligned_line_y + sd.GAP)
+
+
 @settings(max_examples=12, deadline=None)
 @given(st.floats(-170.0, 170.0), st.floats(2.0, 150.0), st.floats(10.0, 40.0))
 def test_angular_shows_the_angle_between_its_legs(start, sweep, radius):
