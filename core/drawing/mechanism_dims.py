@@ -23,7 +23,7 @@ from . import sheet_dims as sd
 from .labels import boxes_meet, crossings, meets_strokes, strokes
 from .dimensions import reading_order
 from .dxf import THIN
-from .sheet import Box, Item, Placement, Text, item_box, line
+from .sheet import Box, Item, Placement, Text, item_box, line, smaller_height
 
 FIRST = 7.0               # the first dimension line from the linework, paper mm
 STEP = 7.0                # between parallel dimension lines (DIMDLI)
@@ -34,6 +34,9 @@ L3_OFFSET = 10.0
 # where along the lever L3's text may stand, the preferred first; then every 2.5 % between,
 # for a text that must find the gap between the chain's extension lines (K near 3)
 L3_ALONG = tuple(dict.fromkeys((0.5, 0.35, 0.65, 0.2, 0.8, *np.round(np.linspace(0.1, 0.9, 33), 3))))
+# a text beyond either end of the lever: its line L3_OFFSET from the lever, or farther out
+# (clear of the lines round the ends) by a step or two
+L3_FARTHER = (1.0, (L3_OFFSET + STEP) / L3_OFFSET, (L3_OFFSET + 2.0 * STEP) / L3_OFFSET)
 THETA_START = mech.SUPPORT + 3.0                # θ's extension lines start clear of O4's support
 THETA_RADIUS = (12.0, 30.0)
 BELOW_ROOM = THETA_RADIUS[1] + sd.GAP + BOX + 1.0
@@ -61,6 +64,21 @@ class _Placed:
         """The candidate whose text meets no placed text, whose lines cross none, and whose
         text crosses the fewest lines (then the least ``extra``; first of equals), kept."""
         best = min(candidates, key=lambda dim: self.cost(dim, extra(dim)))
+        return self._keep(best)
+
+    def add_sized(self, make, extra=lambda dim: 0.0) -> sd.Dimension:
+        """As :meth:`add` with the candidates ``make(height)`` at the dimension text's height,
+        or, where every one of them is crossed or meets a text, at labels' next smaller
+        standard height if one of those is less so (the project's label cascade)."""
+        cost = lambda dim: self.cost(dim, extra(dim))      # noqa: E731
+        best = min(make(sd.TEXT_MM), key=cost)
+        if self.cost(best) > 0:
+            small = min(make(smaller_height(sd.TEXT_MM)), key=cost)
+            if self.cost(small) < self.cost(best):
+                best = small
+        return self._keep(best)
+
+    def _keep(self, best: sd.Dimension) -> sd.Dimension:
         self.defects += self.cost(best)
         self.dims.append(best)
         self.segs = np.vstack([self.segs, strokes([*best.parts, *best.kept])])
@@ -89,12 +107,16 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
         other = at[1 - k]["B"]
         shift = _left_normal(o4, other) * _side(o4, other, o2, -L3_OFFSET)
         trial = _Placed([*drawn, *chain_lines, line([o4 + shift, other + shift])])
-        crank = [sd.aligned(p, q, 0.0, "L1", factor, clear=mech.BLOCK[1] / 2.0 + 2.0, outside=True,
-                            below=below)
-                 for p, q in ((o2, j["A"]), (j["A"], o2)) for below in (False, True)]
-        for dim in crank:
-            if _beyond(dim, j["A"]) and (best is None or trial.cost(dim) < best[0]):
-                best = (trial.cost(dim), dim, 1 - k)
+        # at the dimension texts' height; at labels' next smaller one only where that is crossed
+        for size in (sd.TEXT_MM, smaller_height(sd.TEXT_MM)):
+            if best is not None and best[0] == 0:
+                break
+            crank = [sd.aligned(p, q, 0.0, "L1", factor, clear=mech.BLOCK[1] / 2.0 + 2.0, outside=True,
+                                below=below, height=size)
+                     for p, q in ((o2, j["A"]), (j["A"], o2)) for below in (False, True)]
+            for dim in crank:
+                if _beyond(dim, j["A"]) and (best is None or trial.cost(dim) < best[0]):
+                    best = (trial.cost(dim), dim, 1 - k)
         if best is not None:
             ranked.append(best)
     # the rest after L1 at the better limit position; at the other where that leaves a text
@@ -133,27 +155,34 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
     offset = _side(o4, lever, o2, -L3_OFFSET)
     # … else beyond either end (where the chain's extension lines from O2 and O4 leave no
     # gap on the lever for it)
-    placed.add(*[sd.aligned(o4, lever, offset, "L3", factor, along=t, below=below)
-                 for t in L3_ALONG for below in (False, True)],
-               *[sd.aligned(p, q, side, "L3", factor, outside=True, below=below)
-                 for p, q, side in ((o4, lever, offset), (lever, o4, -offset)) for below in (False, True)],
-               extra=_away_from(o2, place.length(design.crank),
+    placed.add_sized(
+        lambda size: [*[sd.aligned(o4, lever, offset * far, "L3", factor, along=t, below=below, height=size)
+                        for far in L3_FARTHER for t in L3_ALONG for below in (False, True)],
+                      *[sd.aligned(p, q, side * far, "L3", factor, outside=True, below=below, height=size)
+                        for far in L3_FARTHER for p, q, side in ((o4, lever, offset), (lever, o4, -offset))
+                        for below in (False, True)]],
+        extra=_away_from(o2, place.length(design.crank),
                                 float(place([0.0, design.guide])[1]) - mech.TOOL_DROP))
     above = top + FIRST          # H over the rams; L4 (the rod) between them and H
     c0, c1 = sorted((at[0]["C"], at[1]["C"]), key=lambda p: float(p[0]))
     level = above + (STEP if design.rod is not None else 0.0)
-    placed.add(sd.linear(c0, c1, (c0[0], level), 0.0, "H", factor),
-               sd.linear(c1, c0, (c0[0], level), 0.0, "H", factor))
+    placed.add_sized(lambda size: [sd.linear(c0, c1, (c0[0], level), 0.0, "H", factor, height=size),
+                                   sd.linear(c1, c0, (c0[0], level), 0.0, "H", factor, height=size)])
     if design.rod is not None:           # the rod at either limit position
-        rods = []
-        for j in at:
-            q1, q2, _ = reading_order(j["B"], j["C"], 0.0)
-            n = _left_normal(np.asarray(q1), np.asarray(q2))
-            offset = (above - min(q1[1], q2[1])) / n[1] if abs(n[1]) > 1e-6 else above - q1[1]
-            rods += [sd.aligned(p, q, offset if p is q1 else -offset, "L4", factor, below=below)
-                     for p, q in ((q1, q2), (q2, q1)) for below in (False, True)]
-        placed.add(*rods)
+        placed.add_sized(lambda size: _rods(at, above, factor, size))
     return placed
+
+
+def _rods(at, above: float, factor: float, size: float) -> list[sd.Dimension]:
+    """L4's candidates, ``size`` high: along the rod at either limit position, its line at ``above`` (under H)."""
+    rods = []
+    for j in at:
+        q1, q2, _ = reading_order(j["B"], j["C"], 0.0)
+        n = _left_normal(np.asarray(q1), np.asarray(q2))
+        offset = (above - min(q1[1], q2[1])) / n[1] if abs(n[1]) > 1e-6 else above - q1[1]
+        rods += [sd.aligned(p, q, offset if p is q1 else -offset, "L4", factor, below=below, height=size)
+                 for p, q in ((q1, q2), (q2, q1)) for below in (False, True)]
+    return rods
 
 
 def _beyond(dim: sd.Dimension, end: np.ndarray) -> bool:
