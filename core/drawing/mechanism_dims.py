@@ -99,7 +99,7 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
     o2, o4 = at[0]["O2"], at[0]["O4"]
     # L1 first, so that the chain goes left of its text too: at the limit position whose
     # tangent point gives its text the fewest crossings, with the chain's extension lines
-    # from O4 and O2 (running left) and L3's line beside the other limit counted
+    # from O4 and O2 (running left), L3's line beside the other limit and θ's text counted
     chain_lines = [line([p, (p[0] - 1e4, p[1])]) for p in (o4, o2)]
     ranked = []
     for k, j in enumerate(at):
@@ -107,6 +107,7 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
         other = at[1 - k]["B"]
         shift = _left_normal(o4, other) * _side(o4, other, o2, -L3_OFFSET)
         trial = _Placed([*drawn, *chain_lines, line([o4 + shift, other + shift])])
+        trial.dims.append(_theta(o4, at[0]["B"], at[1]["B"]))      # fixed, so L1 keeps off its text
         # at the dimension texts' height; at labels' next smaller one only where that is crossed
         for size in (sd.TEXT_MM, smaller_height(sd.TEXT_MM)):
             if best is not None and best[0] == 0:
