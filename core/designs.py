@@ -155,14 +155,23 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         need = 2.0 * (crank + frame) * half
         too_short = lever < crank + frame
     verdict.check("time_ratio", half < smallest, time_ratio,
-                  lambda i, at=Flat(k_min, shape):
-                      f"must be ≥ {round_text(at[i])} for this crank and "
-                      f"stroke, so that the frame and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
+                  lambda i, at=Flat(k_min, shape): _k_min_text(float(at[i])))
     verdict.check("stroke", too_short, stroke,
                   lambda i, at=Flat(need, shape):
                       f"must be ≥ {at[i]:.1f} mm for this crank and K, "
                       "so that the crank pin stays on the lever")
     return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
+
+
+def _k_min_text(k_min: float) -> str:
+    """What K must be so that the frame and the lever stay ≤ MAX_LENGTH_MM: a bound, or,
+    where none up to MAX_TIME_RATIO exists (a crank or half stroke near MAX_LENGTH_MM,
+    where the bound is infinite), that no K does."""
+    if k_min <= MAX_TIME_RATIO:
+        return (f"must be ≥ {round_text(k_min)} for this crank and stroke, so that the frame "
+                f"and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
+    return (f"no K up to {MAX_TIME_RATIO:g} keeps the frame and the lever ≤ {MAX_LENGTH_MM:g} mm "
+            "for this crank and stroke: shorten them")
 
 
 def dimensions_many(crank, frame, lever, *, guide="chord", rod=None, rod_ratio=None,

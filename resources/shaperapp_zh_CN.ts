@@ -4124,6 +4124,10 @@
         <translation>对此曲柄和行程须不小于 %1，以使机架和导杆长度不超过 %2 mm</translation>
     </message>
     <message>
+        <source>no K up to %1 keeps the frame and the lever at most %2 mm for this crank and stroke: shorten them</source>
+        <translation>K 取不超过 %1 的任何值，机架和导杆都会超过 %2 mm：请缩短曲柄或行程</translation>
+    </message>
+    <message>
         <source>must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2</source>
         <translation>须不大于 %1 mm（0.866·L2），以使行程速比系数 K 不超过 %2</translation>
     </message>

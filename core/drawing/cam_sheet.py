@@ -29,8 +29,8 @@ from .charts import Curve, arrow, chart, scale_notes
 from .dxf import CENTER, OUTLINE, THIN
 from .labels import Room
 from .motion import CAPTION, GAP, TABLE_ROW, caption
-from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, fit, frame_items, line, marked,
-                    marked_text, number_text, scale_text, standard_scale, table, symbol)
+from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, fit, frame_items, line, marked,
+                    number_text, scale_text, standard_scale, table, symbol)
 from .title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {

@@ -16,7 +16,7 @@ import numpy as np
 from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
-from .labels import Room, first_free, is_free, ring_candidates
+from .labels import Room
 from .sheet import Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
@@ -39,27 +39,6 @@ def arrow(tail: Pair, head: Pair, layer: str = OUTLINE) -> list[Item]:
     base = h - size * u
     return [line([t, base], layer),
             line([h, base + half * n, base - half * n], layer, closed=True, filled=True)]
-
-
-def place_label(text: str, at: Pair, height: float, taken: list[Box],
-                preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
-                optional: bool = False, align: str | None = None, rings: int = 3,
-                subscripts: tuple[tuple[int, int], ...] = (), segments: np.ndarray | None = None
-                ) -> Text | None:
-    """``text`` beside the point ``at`` at one height, without a leader: the first spot of
-    :func:`labels.ring_candidates` clear of ``taken`` (and of ``segments``, when given)
-    inside ``within``; takes its box. When none is free: None if ``optional``, else the
-    first spot inside ``within``. The sheets use :class:`labels.Room`, which also shrinks
-    a label and draws a leader line; this is for a caller with boxes only."""
-    strokes_ = np.zeros((0, 4)) if segments is None else segments
-    spots = list(ring_candidates(text, at, height, preferred, gap, range(rings), align, subscripts))
-    placed = first_free(spots, taken, strokes_, within)
-    if placed is not None or optional:
-        return placed
-    inside = [s for s in spots if is_free(s.box(), [], np.zeros((0, 4)), within)]
-    if inside:
-        taken.append(inside[0].box())
-    return inside[0] if inside else None
 
 
 # ---- vector polygons ---------------------------------------------------------------------

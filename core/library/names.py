@@ -10,14 +10,12 @@ import re
 from pathlib import Path
 from typing import Iterable
 
+from core.text import CONTROL
+
 from .store import LibraryError
 
 MAX_NAME = 200
 MAX_TAG = 64
-# what every text option refuses (shaperapp.widgets.command_line.cover_text): the C0 and C1
-# control characters (U+0085, a line break, among them), DEL, and U+2028/U+2029 — so every
-# line break str.splitlines() knows
-_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
 
 
 def storable(text: str) -> bool:
@@ -35,7 +33,7 @@ def check_name(name: object) -> str:
     if not isinstance(name, str) or not name.strip():
         raise LibraryError("name", "a design name must not be empty")
     name = lookup_name(name)
-    if len(name) > MAX_NAME or _CONTROL.search(name):
+    if len(name) > MAX_NAME or CONTROL.search(name):
         raise LibraryError("name", f"a design name must be one line of at most {MAX_NAME} characters, "
                            "without control characters or line breaks")
     return name
@@ -55,7 +53,7 @@ def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
         tag = str(tag).strip()
         if not tag:
             continue
-        if len(tag) > MAX_TAG or "," in tag or _CONTROL.search(tag):
+        if len(tag) > MAX_TAG or "," in tag or CONTROL.search(tag):
             raise LibraryError("tag", f"a tag must be at most {MAX_TAG} characters, without "
                                f"commas, control characters or line breaks (got {tag[:80]!r})")
         out.add(tag)

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Sequence
 
 from core.cli.common import UsageError
+from core.text import UNDECODABLE, UNPRINTABLE
 
 if TYPE_CHECKING:
     from core.compare import Candidate
@@ -17,22 +18,15 @@ if TYPE_CHECKING:
 MAX_TEXT = 200
 
 
-def _unprintable(ch: str) -> bool:
-    """A control character (C0, DEL, C1, the Unicode line and paragraph separators) or a
-    byte the system could not decode (Python keeps it as a lone surrogate, which no UTF-8
-    writer accepts: DXF and HTML failed on it, PDF and SVG wrote a replacement)."""
-    return ch < " " or "\x7f" <= ch < "\xa0" or ch in "\u2028\u2029" or "\ud800" <= ch <= "\udfff"
-
-
 def cover_text(option: str, value: str | None) -> str:
     """A text option as given: one line of at most MAX_TEXT characters of text (UsageError
     naming ``option`` otherwise)."""
     if value is None:
         return ""
-    if any("\ud800" <= ch <= "\udfff" for ch in value):
+    if UNDECODABLE.search(value):
         raise UsageError(f"{option}: must be text; it holds a byte that is not "
                          f"{sys.getfilesystemencoding().upper()}")
-    if any(_unprintable(ch) for ch in value):
+    if UNPRINTABLE.search(value):
         raise UsageError(f"{option}: must be one line of text without control characters")
     if len(value) > MAX_TEXT:
         raise UsageError(f"{option}: at most {MAX_TEXT} characters (got {len(value)})")
@@ -43,7 +37,7 @@ def plain_text(text: str) -> str:
     """A name nobody typed (a file's) as a title can print it: every control character and
     undecodable byte as U+FFFD, at most MAX_TEXT characters (cut with "…"). A file may have
     any name; the sheets, the report and their files take only this."""
-    text = "".join("\ufffd" if _unprintable(ch) else ch for ch in text).strip()
+    text = UNPRINTABLE.sub("\ufffd", text).strip()
     return text if len(text) <= MAX_TEXT else text[:MAX_TEXT - 1] + "…"
 
 

@@ -100,6 +100,8 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
     (r"must be ≥ (\S+) for this crank and stroke, so that the frame and the lever stay ≤ (\S+) mm$",
      "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm"),
+    (r"no K up to (\S+) keeps the frame and the lever ≤ (\S+) mm for this crank and stroke: shorten them$",
+     "no K up to %1 keeps the frame and the lever at most %2 mm for this crank and stroke: shorten them"),
     (r"must be ≤ (\S+) mm \(0\.866·L2\), so that the time ratio K stays ≤ (\S+)$",
      "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2"),
     (r"give 1 to (\S+) crank speeds$", "give 1 to %1 crank speeds"),
@@ -167,6 +169,8 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
         "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm":
             QCoreApplication.translate("messages", "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm"),
+        "no K up to %1 keeps the frame and the lever at most %2 mm for this crank and stroke: shorten them":
+            QCoreApplication.translate("messages", "no K up to %1 keeps the frame and the lever at most %2 mm for this crank and stroke: shorten them"),
         "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2":
             QCoreApplication.translate("messages", "must be at most %1 mm (0.866·L2), so that the time ratio K stays at most %2"),
         "give 1 to %1 crank speeds": QCoreApplication.translate("messages", "give 1 to %1 crank speeds"),

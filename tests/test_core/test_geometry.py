@@ -124,3 +124,17 @@ def test_lengths_have_a_floor():
     with pytest.raises(DesignError) as info:
         synthesize(1e-300, 1.4, 300.0)
     assert info.value.parameter == "crank"
+
+
+@pytest.mark.parametrize("crank, stroke", [(100_000.0, 300.0), (90_000.0, 300.0), (86_700.0, 300.0)])
+def test_no_k_fits_a_crank_or_stroke_near_the_length_limit(crank, stroke):
+    """A crank over sin 60° of the 100 m limit needs θ > 120°, K > 5: the
+    message says no K does, instead of a bound above 5 or an internal error (the bound was
+    infinite at L1 = 100 m: OverflowError), and indeed K = 5 itself fails."""
+    with pytest.raises(DesignError) as info:
+        synthesize(crank, 1.4, stroke)
+    assert info.value.parameter == "time_ratio"
+    assert info.value.allowed.startswith("no K up to 5 keeps the frame and the lever ≤ 100000 mm")
+    with pytest.raises(DesignError):
+        synthesize(crank, 5.0, stroke)
+

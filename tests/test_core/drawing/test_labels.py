@@ -172,22 +172,6 @@ def test_arrow_items_are_what_the_check_reads_as_an_arrowhead():
     assert head.filled and head.closed
 
 
-def test_place_label_keeps_its_contract_and_now_also_avoids_segments():
-    """charts.place_label (boxes only, for callers outside the sheets' rooms): clear of the
-    taken boxes, of the segments when given, and None for an optional label with no room."""
-    from core.drawing.charts import place_label
-    wall = line([(100.0, 101.0), (130.0, 101.0)])
-    taken = []
-    plain = place_label("B", (100.0, 100.0), 3.5, taken, (1.0, 0.0))
-    assert crossed(plain, wall) == ["B"] and taken == [plain.box()]
-    moved = place_label("B", (100.0, 100.0), 3.5, [], (1.0, 0.0), segments=np.asarray(wall.points).reshape(1, 4))
-    assert crossed(moved, wall) == []
-    full = [(0.0, 0.0, 200.0, 200.0)]
-    assert place_label("B", (100.0, 100.0), 3.5, full, optional=True) is None and len(full) == 1
-    forced = place_label("B", (100.0, 100.0), 3.5, full)
-    assert forced is not None and full[-1] == forced.box()
-
-
 def test_crossings_counts_the_segments_a_leader_runs_across():
     from core.drawing.labels import crossings
     lead = np.array([0.0, 0.0, 10.0, 0.0])
