@@ -41,6 +41,9 @@ THETA_START = mech.SUPPORT + 3.0                # θ's extension lines start cle
 THETA_RADIUS = (12.0, 30.0)
 BELOW_ROOM = THETA_RADIUS[1] + sd.GAP + BOX + 1.0
 NUMBER_MM = 2.5           # the tool path's numbers
+NUMBER_PAD = 0.6          # between two numbers side by side (``spread`` keeps 0.8)
+FAR_SHIFTS = 16           # how many widths along the path a crowded number may move, either way
+LEAD_REACH = (6.0, 9.0, 12.0, 16.0, 20.0, 25.0, 30.0)    # a led text's leader, paper mm
 
 
 class _Placed:
@@ -66,17 +69,43 @@ class _Placed:
         best = min(candidates, key=lambda dim: self.cost(dim, extra(dim)))
         return self._keep(best)
 
-    def add_sized(self, make, extra=lambda dim: 0.0) -> sd.Dimension:
+    def add_sized(self, make, extra=lambda dim: 0.0, outward: float = 0.0) -> sd.Dimension:
         """As :meth:`add` with the candidates ``make(height)`` at the dimension text's height,
         or, where every one of them is crossed or meets a text, at labels' next smaller
-        standard height if one of those is less so (the project's label cascade)."""
+        standard height if one of those is less so (the project's label cascade); and
+        where that too is crossed, with ``outward`` (an aligned dimension: the side of its
+        line away from the link, ±1), its text led out to the nearest clear spot (a leader
+        from its line, the text horizontal: the cascade's last step)."""
         cost = lambda dim: self.cost(dim, extra(dim))      # noqa: E731
         best = min(make(sd.TEXT_MM), key=cost)
         if self.cost(best) > 0:
             small = min(make(smaller_height(sd.TEXT_MM)), key=cost)
             if self.cost(small) < self.cost(best):
                 best = small
+        if self.cost(best) > 0 and outward:
+            moved = min(self._led(best, outward), key=self._lead_cost)
+            if self.cost(moved) < self.cost(best):
+                best = moved
         return self._keep(best)
+
+    def _led(self, dim: sd.Dimension, outward: float) -> list[sd.Dimension]:
+        """``dim`` with its text led out to LEAD_REACH mm from its line's middle, in any
+        direction on the ``outward`` side of it, at the text's height and the next smaller."""
+        q1, q2 = (np.asarray(p, float) for p in dim.points)
+        u = (q2 - q1) / float(np.hypot(*(q2 - q1)))
+        out = np.array([-u[1], u[0]]) * math.copysign(1.0, dim.offset) * outward
+        middle = (q1 + q2) / 2.0 + np.array([-u[1], u[0]]) * dim.offset
+        turns = np.radians(np.arange(0.0, 360.0, 15.0))
+        ways = [w for w in np.column_stack([np.cos(turns), np.sin(turns)]) if float(np.dot(w, out)) > 0.2]
+        return [sd.led(dim, tuple(middle + r * w), size) for size in (sd.TEXT_MM, smaller_height(sd.TEXT_MM))
+                for r in LEAD_REACH for w in ways]
+
+    def _lead_cost(self, dim: sd.Dimension) -> float:
+        """A led text's cost: as :meth:`cost`, its leader's crossings of the lines, then its length."""
+        lead = strokes(list(dim.kept))
+        reach = float(np.hypot(*(lead[0, 2:] - lead[0, :2])))
+        smaller = 1.0 if dim.height < sd.TEXT_MM else 0.0
+        return self.cost(dim) + 10.0 * sum(crossings(seg, self.segs) for seg in lead) + 0.01 * reach + 5.0 * smaller
 
     def _keep(self, best: sd.Dimension) -> sd.Dimension:
         self.defects += self.cost(best)
@@ -163,7 +192,8 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
                         for far in L3_FARTHER for p, q, side in ((o4, lever, offset), (lever, o4, -offset))
                         for below in (False, True)]],
         extra=_away_from(o2, place.length(design.crank),
-                                float(place([0.0, design.guide])[1]) - mech.TOOL_DROP))
+                                float(place([0.0, design.guide])[1]) - mech.TOOL_DROP),
+        outward=1.0)
     above = top + FIRST          # H over the rams; L4 (the rod) between them and H
     c0, c1 = sorted((at[0]["C"], at[1]["C"]), key=lambda p: float(p[0]))
     level = above + (STEP if design.rod is not None else 0.0)
@@ -233,10 +263,12 @@ def _theta(o4: np.ndarray, b0: np.ndarray, b1: np.ndarray) -> sd.Dimension:
     return sd.angular(tuple(o4), tuple(legs[0]), tuple(legs[1]), radius, "θ")
 
 
-def obstacles(dims: Sequence[sd.Dimension]) -> list[Box]:
+def obstacles(dims: Sequence[sd.Dimension], tiled: bool = False) -> list[Box]:
     """What a label placed by boxes must keep clear of: each dimension's text, and those of its
-    lines whose box is not much more than the line (horizontal, vertical or short ones)."""
-    boxes = [dim.text.box() for dim in dims]
+    lines whose box is not much more than the line (horizontal, vertical or short ones).
+    ``tiled``: a tilted text as :func:`text_tiles` (what a leader must not run through;
+    a label's box keeps clear of the text's whole box, as the sheet's check has it)."""
+    boxes = [box for dim in dims for box in (text_tiles(dim.text) if tiled else [dim.text.box()])]
     for dim in dims:
         for part in (*dim.parts, *dim.kept):
             if isinstance(part, Text):
@@ -245,6 +277,27 @@ def obstacles(dims: Sequence[sd.Dimension]) -> list[Box]:
             if min(x1 - x0, y1 - y0) < 0.5 or max(x1 - x0, y1 - y0) < 15.0:
                 boxes.append((x0, y0, x1, y1))
     return boxes
+
+
+def text_tiles(text: Text) -> list[Box]:
+    """Upright boxes that cover ``text`` closely: its box if it is horizontal or vertical, else
+    its rotated box cut into pieces about as long as it is high, each piece's upright box
+    (one box round a tilted text would hold a triangle of free paper at each corner)."""
+    turn = math.radians(text.rotation)
+    if abs(math.sin(2.0 * turn)) < 1e-6:
+        return [text.box()]
+    x0, y0, x1, y1 = Text(text.text, text.position, text.height, text.align, 0.0,
+                          subscripts=text.subscripts).box()
+    cuts = np.linspace(x0, x1, max(1, math.ceil((x1 - x0) / (y1 - y0))) + 1)
+    c, s = math.cos(turn), math.sin(turn)
+    o = np.asarray(text.position, float)
+    tiles = []
+    for a, b in zip(cuts[:-1], cuts[1:]):
+        local = np.array([[a, y0], [b, y0], [b, y1], [a, y1]]) - o
+        pts = local @ np.array([[c, s], [-s, c]]) + o
+        tiles.append((float(pts[:, 0].min()), float(pts[:, 1].min()), float(pts[:, 0].max()),
+                      float(pts[:, 1].max())))
+    return tiles
 
 
 def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = 0.8) -> np.ndarray:
@@ -278,14 +331,17 @@ def _led_through(boxes: Sequence[Box], seg: tuple[float, float, float, float]) -
 
 
 def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
-                      drawn: Sequence[Item], taken: list[Box], within: Box) -> list[Item]:
+                      drawn: Sequence[Item], taken: list[Box], within: Box,
+                      tiles: Sequence[Box] | None = None) -> list[Item]:
     """1 … N at the tool path's ticks, spread along the path so that no two meet, each in the
     first row (under the path, over it, then farther under) where it meets none of ``taken``
     and no line or circle of ``drawn`` (labels' clearance), led to its tick by a thin line
     when it had to move; where every row's spot near the tick is crossed (the levers run
     through a crowded path), the nearest free spot farther along the path, under or over
     it, with its leader from the tick crossing the fewest lines (else the least crossed
-    spot, as before)."""
+    spot, as before). ``tiles``: what the leaders must not run through, the taken boxes
+    with a tilted text's as :func:`text_tiles` (default ``taken``)."""
+    led_clear = list(taken if tiles is None else tiles)
     c = place(mech.joints(design, np.linspace(0.0, 360.0, 721))["C"].T)
     y = float(c[0, 1]) - mech.TOOL_DROP
     xs = place(mech.joints(design, np.asarray(crank_deg, dtype=float))["C"].T)[:, 0] + mech.TOOL_AHEAD
@@ -299,16 +355,17 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
     far_rows = rows + [(y + 2.2 + k * 1.5 * NUMBER_MM, "cb", y + 1.5) for k in range(1, 9)]
     out: list[Item] = []
     for k, x0, x1, w in zip(order, xs[order], at, widths):   # rows are apart: one row's numbers can meet
-        options = _spots(str(k + 1), x0, [x1], rows, taken, within, segs, by_rank=True)
+        options = _spots(str(k + 1), x0, [x1], rows, taken, within, segs, led_clear, by_rank=True)
         if not options or options[0][0] > 0:
-            shifts = [x1 + s * (w + 0.8) for n in range(1, 7) for s in (n, -n)]
-            farther = _spots(str(k + 1), x0, shifts, far_rows, taken, within, segs)
+            shifts = [x1 + s * (w + 0.8) for n in range(1, FAR_SHIFTS + 1) for s in (n, -n)]
+            farther = _spots(str(k + 1), x0, shifts, far_rows, taken, within, segs, led_clear)
             if farther and farther[0][0] == 0:
                 options = farther
         if not options:
             continue
         _, _, text, box, tick, end = options[0]
         taken.append(box)
+        led_clear.append(box)
         out.append(text)
         segs = np.vstack([segs, strokes([text])])
         if abs(text.position[0] - x0) > 0.3 or text.position[1] < y - 4.5 or text.position[1] > y + 2.5:
@@ -319,11 +376,11 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
 
 
 def _spots(number: str, x0: float, centres: Sequence[float], rows, taken: Sequence[Box],
-           within: Box, segs: np.ndarray, by_rank: bool = False) -> list[tuple]:
+           within: Box, segs: np.ndarray, led_clear: Sequence[Box], by_rank: bool = False) -> list[tuple]:
     """The tool path's number at each of ``centres`` in each of ``rows`` (y, alignment, the
     tick's end its leader starts at) that meets no taken box and lies within the drawing,
     as (crossed, (leader's crossings, rank), text, box, tick, end), best first: those whose
-    box no line crosses and whose leader runs through no text first, then the leader
+    box no line crosses and whose leader runs through none of ``led_clear`` first, then the leader
     crossing the fewest lines (in the order given; ``by_rank``: the first row, the
     leader's crossings not counted)."""
     options = []
@@ -331,12 +388,13 @@ def _spots(number: str, x0: float, centres: Sequence[float], rows, taken: Sequen
         text = Text(number, (float(cx), row), NUMBER_MM, align)
         box = text.box()
         end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
-        if (any(boxes_meet(box, t) for t in taken)
+        apart = (box[0] - NUMBER_PAD, box[1], box[2] + NUMBER_PAD, box[3])   # "2" "3" is not "23"
+        if (any(boxes_meet(apart, t) for t in taken)
                 or not (within[0] <= box[0] and box[2] <= within[2] and within[1] <= box[1]
                         and box[3] <= within[3])):
             continue
         seg = (x0, tick, float(cx), end)
-        through = int(_led_through(taken, seg))
+        through = int(_led_through(led_clear, seg))
         crossed = int(meets_strokes(box, segs)) + through     # a leader through a text crosses it
         led = 0 if by_rank else crossings(np.asarray(seg), segs)
         options.append((crossed, (led, rank), text, box, tick, end))

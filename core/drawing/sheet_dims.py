@@ -59,12 +59,15 @@ class Dimension:
     angle: float = 0.0
     center: Pair = (0.0, 0.0)
     height: float = TEXT_MM     # its text's; labels' next smaller one where every spot is crossed
+    led: bool = False           # its text moved out along a leader (among ``kept``), horizontal
 
     @property
     def override(self) -> dict[str, float]:
-        """The DIMENSION's style override: the scale and the sizes the picture was laid out with."""
-        return {"dimlfac": float(self.factor), "dimtxt": float(self.height), "dimasz": ARROW_MM,
-                "dimgap": GAP, "dimexe": EXTEND, "dimexo": 0.0}
+        """The DIMENSION's style override: the scale and the sizes the picture was laid out with
+        (a led text horizontal: DIMTOH, as a moved text is drawn outside)."""
+        out = {"dimlfac": float(self.factor), "dimtxt": float(self.height), "dimasz": ARROW_MM,
+               "dimgap": GAP, "dimexe": EXTEND, "dimexo": 0.0}
+        return {**out, "dimtoh": 1} if self.led else out
 
 
 def value_text(value: float) -> str:
@@ -136,6 +139,30 @@ def aligned(p1: Pair, p2: Pair, offset: float, name: str, factor: float, clear: 
                                   outside, below, 1.0 - along if swapped else along, height)
     return Dimension("aligned", name, (q1, q2), factor, value, tuple(parts), text, tuple(kept),
                      offset=offset, height=height)
+
+
+def led(dim: Dimension, corner: Pair, height: float = TEXT_MM) -> Dimension:
+    """The aligned ``dim`` with its text moved out along a leader, the last step of the labels'
+    cascade where no spot on or beyond its line is free (L3 between the chain's extension
+    lines, K near 3): the text horizontal, ``height`` high, the near end of its underline at
+    ``corner``; the leader from the middle of the dimension line to ``corner``, then under
+    the text (as CAD draws a moved text's leader). The line stays whole, arrows inside."""
+    base = aligned(dim.points[0], dim.points[1], dim.offset, dim.name, dim.factor)
+    (q1, q2), offset = base.points, base.offset
+    a1, a2 = np.asarray(q1, float), np.asarray(q2, float)
+    u = (a2 - a1) / float(np.hypot(*(a2 - a1)))
+    middle = (a1 + a2) / 2.0 + np.array([-u[1], u[0]]) * offset
+    label = f"{dim.name} = {value_text(dim.value)}"
+    width = Text(label, (0.0, 0.0), height).width
+    c = np.asarray(corner, float)
+    sense = 1.0 if c[0] >= middle[0] else -1.0        # the text runs away from the line
+    centre = (float(c[0] + sense * width / 2.0), float(c[1] + 0.75 * height))
+    text = Text(label, centre, height, "cm", 0.0, DIMENSIONS)
+    far = (float(c[0] + sense * width), float(c[1]))
+    leader = line([middle, c, far], DIMENSIONS)
+    parts = tuple(p for p in base.parts if not isinstance(p, Text))
+    return Dimension("aligned", dim.name, base.points, dim.factor, base.value, (*parts, text), text,
+                     (leader,), offset=offset, height=height, led=True)
 
 
 def linear(p1: Pair, p2: Pair, base: Pair, angle: float, name: str, factor: float,
