@@ -84,7 +84,7 @@ class _Placed:
                 best = small
         if self.cost(best) > 0 and outward:
             moved = min(self._led(best, outward), key=self._lead_cost)
-            if self.cost(moved) < self.cost(best):
+            if self.cost(moved) + self._own(moved) < self.cost(best):
                 best = moved
         return self._keep(best)
 
@@ -105,7 +105,13 @@ class _Placed:
         lead = strokes(list(dim.kept))
         reach = float(np.hypot(*(lead[0, 2:] - lead[0, :2])))
         smaller = 1.0 if dim.height < sd.TEXT_MM else 0.0
-        return self.cost(dim) + 10.0 * sum(crossings(seg, self.segs) for seg in lead) + 0.01 * reach + 5.0 * smaller
+        return (self.cost(dim) + self._own(dim) + 10.0 * sum(crossings(seg, self.segs) for seg in lead)
+                + 0.01 * reach + 5.0 * smaller)
+
+    @staticmethod
+    def _own(dim: sd.Dimension) -> float:
+        """A led text's crossings of its own lines (moved off the line, it may meet it)."""
+        return 10.0 * sd.text_crossings(dim.text, strokes([p for p in dim.parts if not isinstance(p, Text)]))
 
     def _keep(self, best: sd.Dimension) -> sd.Dimension:
         self.defects += self.cost(best)
@@ -263,12 +269,15 @@ def _theta(o4: np.ndarray, b0: np.ndarray, b1: np.ndarray) -> sd.Dimension:
     return sd.angular(tuple(o4), tuple(legs[0]), tuple(legs[1]), radius, "θ")
 
 
-def obstacles(dims: Sequence[sd.Dimension], tiled: bool = False) -> list[Box]:
+def obstacles(dims: Sequence[sd.Dimension], texts_only: bool = False) -> list[Box]:
     """What a label placed by boxes must keep clear of: each dimension's text, and those of its
     lines whose box is not much more than the line (horizontal, vertical or short ones).
-    ``tiled``: a tilted text as :func:`text_tiles` (what a leader must not run through;
-    a label's box keeps clear of the text's whole box, as the sheet's check has it)."""
-    boxes = [box for dim in dims for box in (text_tiles(dim.text) if tiled else [dim.text.box()])]
+    ``texts_only``: what a leader must not run through, the texts alone, a tilted one as
+    :func:`text_tiles` (a label's box keeps clear of the whole box, as the sheet's check
+    has it; a leader across a dimension's line is a crossing like any other)."""
+    if texts_only:
+        return [box for dim in dims for box in text_tiles(dim.text)]
+    boxes = [dim.text.box() for dim in dims]
     for dim in dims:
         for part in (*dim.parts, *dim.kept):
             if isinstance(part, Text):

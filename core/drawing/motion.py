@@ -164,7 +164,7 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     items, dims = _linework(design, place, angles, limits, compact)
     taken: list[Box] = mechanism_dims.obstacles(dims)
     items += mechanism_dims.tool_path_numbers(design, place, angles, items, taken, box,
-                                              mechanism_dims.obstacles(dims, tiled=True))
+                                              mechanism_dims.obstacles(dims, texts_only=True))
     room = Room(items, within=box, taken=taken)      # the names after all the lines, clear of them
     for text, spans, p, way in mech.joint_anchors(design, float(limits[0]), place, 5.0):
         items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,
