@@ -19,9 +19,9 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from core.drawing import sheet_dims as sd
-from core.drawing.mechanism_dims import spread
+from core.drawing.mechanism_dims import spread, text_tiles
 from core.drawing.dxf import dxf_text
-from core.drawing.sheet import Sheet, paper
+from core.drawing.sheet import Sheet, Text, paper
 from core.drawing.sheet_dxf import sheet_document
 
 coord = st.floats(30.0, 380.0, allow_nan=False)
@@ -145,3 +145,61 @@ def test_spread_separates_keeps_order_and_moves_as_little_in_sum(xs, ws):
     assert float(np.sum(out - ideal)) == pytest.approx(0.0, abs=1e-9)     # each cluster at its mean wish
     if (np.diff(ideal) - (widths[:-1] + widths[1:]) / 2.0 >= 0.8).all():
         assert np.allclose(out, ideal)
+
+
+@settings(max_examples=12, deadline=None)
+@given(coord, coord, coord, coord, st.floats(-20.0, 20.0), factor,
+       st.floats(-30.0, 30.0), st.floats(-30.0, 30.0), st.sampled_from([3.5, 2.5]))
+def test_a_led_text_is_horizontal_on_a_leader_from_the_middle_of_its_line(x1, y1, x2, y2, offset, n,
+                                                                         dx, dy, height):
+    """The cascade's last step (issue 32, item 3: "then a leader line"): the text moved out
+    along a leader. Still the true value; the line whole with both arrows; the text upright
+    on a shoulder line as long as the text, the leader from the dimension line's middle (half
+    way between the arrow tips) to the shoulder's near end; in the DXF the DIMENSION with
+    that text there, horizontal (DIMTOH), CAD's measurement times DIMLFAC the true length."""
+    assume(math.hypot(x2 - x1, y2 - y1) > 20.0 and abs(offset) > 1.0 and math.hypot(dx, dy) > 5.0)
+    plain = sd.aligned((x1, y1), (x2, y2), offset, "L3", n)
+    tips = np.array([p.points[0] for p in plain.parts if getattr(p, "filled", False)])
+    middle = tips.mean(axis=0)
+    corner = (float(middle[0] + dx), float(middle[1] + dy))
+    dim = sd.led(plain, corner, height)
+    assert dim.value == pytest.approx(n * math.hypot(x2 - x1, y2 - y1), rel=1e-9)
+    assert dim.text.text == f"L3 = {sd.value_text(dim.value)}" and dim.text.rotation == 0.0
+    assert dim.text.height == height
+    assert len([p for p in dim.parts if getattr(p, "filled", False)]) == 2
+    (leader,) = dim.kept
+    pts = np.asarray(leader.points)
+    assert pts[0] == pytest.approx(middle, abs=1e-9) and pts[1] == pytest.approx(corner, abs=1e-9)
+    x0, y0, x1_, _ = dim.text.box()
+    assert pts[2][1] == pytest.approx(corner[1]) and pts[2][1] <= y0 + 1e-9      # under the text
+    assert sorted([pts[1][0], pts[2][0]]) == pytest.approx([x0, x1_], abs=1e-6)  # as long as it
+    (back,) = read_back([dim])
+    style = DimStyleOverride(back)
+    assert style.get("dimtoh") == 1
+    assert back.get_measurement() * style.get("dimlfac") == pytest.approx(dim.value, rel=1e-9)
+    texts = [e for e in back.get_geometry_block() if e.dxftype() in ("TEXT", "MTEXT")]
+    assert [t.dxf.get("rotation", 0.0) for t in texts] == [0.0]
+    assert np.asarray(texts[0].dxf.insert)[:2] == pytest.approx(dim.text.position, abs=1e-6)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.floats(-180.0, 180.0), st.sampled_from([2.5, 3.5, 5.0]), st.text("L3= .0123456789", min_size=1, max_size=14))
+def test_tiles_cover_a_tilted_text_and_no_more_than_its_box(rotation, height, label):
+    """A tool path number's leader must not run through a tilted dimension text, yet may pass
+    the free corners of its upright box. The tiles cover every point of the text's rotated
+    box (points sampled on it, rotated here with numpy) and lie within its upright box."""
+    text = Text(label, (200.0, 150.0), height, "cm", rotation)
+    tiles = np.array(text_tiles(text))
+    upright = Text(label, (200.0, 150.0), height, "cm", 0.0).box()
+    u, v = np.meshgrid(np.linspace(upright[0], upright[2], 25), np.linspace(upright[1], upright[3], 7))
+    t = math.radians(rotation)
+    local = np.column_stack([u.ravel() - 200.0, v.ravel() - 150.0])
+    pts = local @ np.array([[math.cos(t), math.sin(t)], [-math.sin(t), math.cos(t)]]) + (200.0, 150.0)
+    inside = ((pts[:, None, 0] >= tiles[None, :, 0] - 1e-9) & (pts[:, None, 0] <= tiles[None, :, 2] + 1e-9)
+              & (pts[:, None, 1] >= tiles[None, :, 1] - 1e-9) & (pts[:, None, 1] <= tiles[None, :, 3] + 1e-9))
+    assert inside.any(axis=1).all()
+    box = text.box()
+    assert (tiles[:, :2] >= np.array(box[:2]) - 1e-9).all() and (tiles[:, 2:] <= np.array(box[2:]) + 1e-9).all()
+    if abs(math.sin(2.0 * t)) > 0.5 and upright[2] - upright[0] > 3.0 * (upright[3] - upright[1]):
+        area = ((tiles[:, 2] - tiles[:, 0]) * (tiles[:, 3] - tiles[:, 1])).sum()
+        assert area < 0.9 * (box[2] - box[0]) * (box[3] - box[1])      # the corners left free
