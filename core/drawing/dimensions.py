@@ -38,13 +38,15 @@ def print_scale(width_mm: float, height_mm: float) -> float:
                standard_scale(height_mm * 1.25, A3_ROOM_MM[1]))
 
 
-def add_dimstyle(doc: Drawing, scale: float = 1.0) -> str:
-    """Add the GB dimension style (mm, 5 mm text, ``.`` as decimal sign, trailing zeros
+def add_dimstyle(doc: Drawing, scale: float = 1.0, text_mm: float = DIM_TEXT_MM) -> str:
+    """Add the GB dimension style (mm, ``text_mm`` text, ``.`` as decimal sign, trailing zeros
     dropped, text above the line and aligned with it) for a print at 1:``scale``: its sizes
-    are the paper's times ``scale`` and DIMSCALE is 1 (see the module's docstring)."""
+    are the paper's times ``scale`` and DIMSCALE is 1 (see the module's docstring). A sheet's
+    dimensions are 3.5 mm: LibreCAD draws every text at the header's DIMTXT (it ignores a
+    DIMENSION's own override), so the header must hold the sheet's height."""
     n = float(scale)
     attribs = {
-        "dimscale": 1.0, "dimlfac": 1.0, "dimtxt": DIM_TEXT_MM * n, "dimasz": ARROW_MM * n,
+        "dimscale": 1.0, "dimlfac": 1.0, "dimtxt": text_mm * n, "dimasz": ARROW_MM * n,
         "dimexe": 2.0 * n, "dimexo": 0.0, "dimgap": 1.0 * n, "dimdli": 7.0 * n,
         "dimtad": 1, "dimtih": 0, "dimtoh": 0, "dimjust": 0,
         "dimdec": DECIMALS, "dimzin": 8, "dimdsep": ord("."), "dimlunit": 2,

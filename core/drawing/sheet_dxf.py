@@ -34,7 +34,9 @@ def sheet_document(sheet: Sheet) -> Drawing:
     layout.limmin, layout.limmax = (0.0, 0.0), (w, h)
     pictures = {id(part) for dim in sheet.dimensions for part in dim.parts}
     if sheet.dimensions:
-        dims.add_dimstyle(doc, 1.0)      # the sheet prints at 1:1; each one's DIMLFAC scales it
+        # the sheet prints at 1:1, each one's DIMLFAC scales it; the header's DIMTXT is the
+        # sheet's dimension text (LibreCAD draws every one at it)
+        dims.add_dimstyle(doc, 1.0, max(dim.height for dim in sheet.dimensions))
     for dim in sheet.dimensions:
         _dimension(msp, dim)
     for item in sheet.items:

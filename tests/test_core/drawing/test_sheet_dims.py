@@ -203,3 +203,15 @@ def test_tiles_cover_a_tilted_text_and_no_more_than_its_box(rotation, height, la
     if abs(math.sin(2.0 * t)) > 0.5 and upright[2] - upright[0] > 3.0 * (upright[3] - upright[1]):
         area = ((tiles[:, 2] - tiles[:, 0]) * (tiles[:, 3] - tiles[:, 1])).sum()
         assert area < 0.9 * (box[2] - box[0]) * (box[3] - box[1])      # the corners left free
+
+
+def test_the_sheet_dxf_header_draws_dimension_texts_at_the_sheets_height():
+    """LibreCAD draws every DIMENSION's text at the header's $DIMTXT, ignoring the entity's
+    own override: the header holds the sheet's 3.5 mm (it held the scheme's 5 mm, and
+    LibreCAD printed the motion sheet's dimension texts larger than its labels)."""
+    dims = [sd.aligned((50.0, 50.0), (150.0, 50.0), 10.0, "L", 2.0),
+            sd.linear((50.0, 80.0), (50.0, 180.0), (30.0, 80.0), 90.0, "H", 2.0)]
+    sheet = Sheet(paper("A3"), tuple(p for d in dims for p in (*d.parts, *d.kept)), tuple(dims))
+    doc = ezdxf.read(io.StringIO(dxf_text(sheet_document(sheet))))
+    assert doc.header["$DIMTXT"] == pytest.approx(sd.TEXT_MM)
+    assert doc.dimstyles.get("GB_MM").dxf.dimtxt == pytest.approx(sd.TEXT_MM)
