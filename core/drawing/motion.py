@@ -27,7 +27,7 @@ from core.polygons import acceleration_polygon, velocity_polygon
 from core.positions import positions, special_angles
 
 from . import mechanism as mech
-from . import mechanism_dims
+from . import mechanism_dims, path_numbers
 from .charts import TICK, Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE, THIN
 from .labels import Room, boxes_meet
@@ -163,8 +163,8 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     place = Placement(scale, (place.origin[0] + shift[0], place.origin[1] + shift[1]), place.anchor)
     items, dims = _linework(design, place, angles, limits, compact)
     taken: list[Box] = mechanism_dims.obstacles(dims)
-    items += mechanism_dims.tool_path_numbers(design, place, angles, items, taken, box,
-                                              mechanism_dims.obstacles(dims, texts_only=True))
+    items += path_numbers.tool_path_numbers(design, place, angles, items, taken, box,
+                                            mechanism_dims.obstacles(dims, texts_only=True))
     room = Room(items, within=box, taken=taken)      # the names after all the lines, clear of them
     for text, spans, p, way in mech.joint_anchors(design, float(limits[0]), place, 5.0):
         items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,

@@ -19,7 +19,8 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from core.drawing import sheet_dims as sd
-from core.drawing.mechanism_dims import spread, text_tiles
+from core.drawing.mechanism_dims import text_tiles
+from core.drawing.path_numbers import spread
 from core.drawing.dxf import dxf_text
 from core.drawing.sheet import Sheet, Text, paper
 from core.drawing.sheet_dxf import sheet_document
