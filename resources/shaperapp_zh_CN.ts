@@ -1142,6 +1142,10 @@
         <translation>a/(m/s²)</translation>
     </message>
     <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
         <source>φ/(°)</source>
         <translation>φ/(°)</translation>
     </message>

@@ -123,7 +123,8 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
           x_ticks: Sequence[tuple[float, str]] = (), height: float = 3.5,
           mean: float | None = None,
           levels: Sequence[tuple[float, float, float]] = (),
-          notes: Callable[[float, float], Sequence[str]] | None = None) -> Chart:
+          notes: Callable[[float, float], Sequence[str]] | None = None,
+          below: float = 0.0) -> Chart:
     """Curves over ``x`` in ``box`` with a horizontal x axis through y = 0, a y axis at x[0],
     arrows on both, ticks at ``x_ticks`` (value, label) and a few round y ticks; ``mean`` a
     thin dashed horizontal line (e.g. the mean torque); ``levels`` (x from, x to, y) thin
@@ -134,20 +135,21 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     curve runs through goes beside its tick or above the axis, else is left out). Scales from
     the round series; the x axis keeps 14 mm of the box for its title, the y axis
     ``height``·6 mm for its tick labels, or more where the widest label needs it (a torque
-    of 10⁵ N·m reads "-1.000e+05")."""
+    of 10⁵ N·m reads "-1.000e+05"); ``below`` mm more under the lowest curve, for a row of
+    the caller's."""
     x0, y0, x1, y1 = box
     small = smaller_height(height)                  # the ticks' labels
     ys = np.concatenate([np.asarray(c.y, float).ravel() for c in curves]
                         + [[0.0], [lv[2] for lv in levels]])
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
-    room = (y1 - y0) - 3.0 * height - 6.0
+    room = (y1 - y0) - 3.0 * height - 6.0 - below
     y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS) if top > bottom else 1.0
     y_ticks = _round_ticks(bottom, top, y_scale)
     widest = max((text_width(number_text(v), small) for v in y_ticks), default=0.0)
     left = x0 + max(6.0 * height, widest + TICK + 1.0 + 0.5)     # 0.5 mm clear of the box
     span_x = float(x[-1] - x[0])
     x_scale = nice_scale(span_x, x1 - left - 14.0, X_MANTISSAS)
-    zero = y0 + 2.0 * height + 2.0 + (-bottom) / y_scale
+    zero = y0 + 2.0 * height + 2.0 + below + (-bottom) / y_scale
     zero += ((y1 - height - 4.0) - (zero + top / y_scale)) / 2.0 if (top - bottom) > 0 else 0.0
     to_paper = lambda xv, yv: np.column_stack([left + (np.asarray(xv) - x[0]) / x_scale,  # noqa: E731
                                                zero + np.asarray(yv) / y_scale])

@@ -27,11 +27,14 @@ from core.polygons import acceleration_polygon, velocity_polygon
 from core.positions import positions, special_angles
 
 from . import mechanism as mech
-from .charts import Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
+from . import mechanism_dims, path_numbers
+from .charts import TICK, Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE, THIN
-from .labels import Room
+from .labels import Room, boxes_meet
 from .sheet import (Box, Item, Paper, Placement, Sheet, Text, clipped, fit, fitting_height, frame_items,
-                    marked, marked_text, number_text, scale_text, standard_scale, table)
+                    item_box, marked, marked_text, number_text, scale_text, smaller_height, standard_scale,
+                    table)
+from .sheet_dims import Dimension
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
@@ -40,7 +43,7 @@ ENGLISH = {
     "curves": "Ram displacement, velocity and acceleration, n = {rpm} r/min",
     "s": "s/mm", "v": "v/(m/s)", "a": "a/(m/s²)", "phi": "φ/(°)",
     "mu_s": "μ_s = {mu} m/mm", "mu_v": "μ_v = {mu} (m/s)/mm", "mu_a": "μ_a = {mu} (m/s²)/mm",
-    "mu_phi": "μ_φ = {mu} °/mm",
+    "mu_phi": "μ_φ = {mu} °/mm", "position": "Position",
     "velocity": "Velocity polygon, φ = {angle}°, μ_v = {mu} (m/s)/mm",
     "acceleration": "Acceleration polygon, φ = {angle}°, μ_a = {mu} (m/s²)/mm",
     "dimensions": "Main dimensions", "quantity": "Quantity", "value": "Value",
@@ -58,6 +61,8 @@ MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing 
 CAPTION = 5.0                 # caption text height
 TABLE_ROW = 7.0
 JOINT_GAP = mech.PIN_RADIUS + 1.0   # a joint's label (or a position's number) off its pin, mm
+LABEL_ROOM = 3.0              # around the mechanism's linework, for the joints' names
+ROW_ROOM = 1.5                # under the s chart's degrees, for the positions' numbers
 
 
 @dataclass(frozen=True)
@@ -71,6 +76,8 @@ class MotionSheet:
     areas: dict[str, tuple[Box, tuple[Item, ...]]]
     """Each drawing's area on the paper and its items: the areas do not overlap, and
     each drawing stays inside its own."""
+    dimensions: tuple[Dimension, ...] = ()
+    """The mechanism's dimensions (their pictures are among the mechanism's items)."""
 
 
 def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
@@ -94,7 +101,7 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
 
     mech_area = (bx0 + GAP, split_y + GAP, split_x - GAP, by1 - GAP)
     mech_box = mech_area[:3] + (mech_area[3] - 2 * CAPTION,)
-    scale, place, mech_items = _mechanism(design, mech_box, angles, limits)
+    scale, place, mech_items, dims = _mechanism(design, mech_box, angles, limits)
     mech_items.append(caption(lab["mechanism"].format(count=count, mu=number_text(scale / 1000.0),
                                                       scale=scale_text(scale)),
                               ((mech_box[0] + mech_box[2]) / 2.0, mech_area[3]), mech_box[2] - mech_box[0]))
@@ -113,7 +120,7 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                                        TABLE_ROW, 3.5, aligns="lc")))
     areas["title"] = sheet_title_block(paper, block, lab, scale_text(scale))
     items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
-    return MotionSheet(Sheet(paper, tuple(items)), scale, place, diagrams, areas)
+    return MotionSheet(Sheet(paper, tuple(items), tuple(dims)), scale, place, diagrams, areas, tuple(dims))
 
 
 def caption(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> Text:
@@ -133,20 +140,32 @@ def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tupl
 
 
 def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[float]):
-    """The mechanism at ``angles`` (thin) and ``limits`` (thick), fitted to ``box``."""
+    """The mechanism at ``angles`` (thin) and ``limits`` (thick) with its dimensions, at the
+    largest standard scale at which all of it fits ``box``, centred there; its scale,
+    placement, items and dimensions."""
     bounds = mech.bounds(design)
     room_w = box[2] - box[0] - mech.RAM[0] - 2 * mech.TOOL_AHEAD - 10.0
     room_h = box[3] - box[1] - 2 * mech.SUPPORT - 2 * mech.RAM[1] - 2 * mech.TOOL_DROP
     scale = max(standard_scale(bounds[2] - bounds[0], room_w),
                 standard_scale(bounds[3] - bounds[1], room_h))
-    place = fit(bounds, box, scale)
-    items: list[Item] = mech.frame_items(design, place)
-    items += mech.tool_path(design, place, angles)
-    for phi in angles:
-        items += mech.links_at(design, float(phi), place, THIN, bodies=False)
-    for phi in limits:
-        items += mech.links_at(design, float(phi), place, OUTLINE)
-    room = Room(items, within=box)
+    fits = False
+    while not fits:             # the dimensions' room is known once they are placed
+        for compact in (False, True):
+            place = fit(bounds, box, scale)
+            items, dims = _linework(design, place, angles, limits, compact)
+            x0, y0, x1, y1 = _extent(items)
+            fits = x1 - x0 <= box[2] - box[0] - 2 * LABEL_ROOM and y1 - y0 <= box[3] - box[1] - 2 * LABEL_ROOM
+            if fits:
+                break
+        else:
+            scale = standard_scale(scale * (1.0 + 1e-9), 1.0)     # the next of the series
+    shift = ((box[0] + box[2] - x0 - x1) / 2.0, (box[1] + box[3] - y0 - y1) / 2.0)
+    place = Placement(scale, (place.origin[0] + shift[0], place.origin[1] + shift[1]), place.anchor)
+    items, dims = _linework(design, place, angles, limits, compact)
+    taken: list[Box] = mechanism_dims.obstacles(dims)
+    items += path_numbers.tool_path_numbers(design, place, angles, items, taken, box,
+                                            mechanism_dims.obstacles(dims, texts_only=True))
+    room = Room(items, within=box, taken=taken)      # the names after all the lines, clear of them
     for text, spans, p, way in mech.joint_anchors(design, float(limits[0]), place, 5.0):
         items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,
                             leader_gap=mech.PIN_RADIUS + 0.3)
@@ -155,25 +174,92 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     for k, p in enumerate(pins, start=1):      # a number with no free spot is left out
         items += room.place(str(k), (float(p[0]), float(p[1])), 3.5, tuple(p - o2), gap=JOINT_GAP,
                             leader_gap=mech.PIN_RADIUS + 0.3)
-    return scale, place, items
+    return scale, place, items, dims
+
+
+def _linework(design: Design, place: Placement, angles: np.ndarray, limits: Sequence[float],
+              compact: bool = False):
+    """The frame, the tool path, the links at ``angles`` (thin) and ``limits`` (thick) and the
+    dimensions' pictures (``mechanism_dims.dimensions``' ``compact``), as items; and the
+    dimensions."""
+    items: list[Item] = mech.frame_items(design, place)
+    items += mech.tool_path(design, place, angles)
+    for phi in angles:
+        items += mech.links_at(design, float(phi), place, THIN, bodies=False)
+    for phi in limits:
+        items += mech.links_at(design, float(phi), place, OUTLINE)
+    dims = mechanism_dims.dimensions(design, place, items, limits, compact)
+    return items + [part for dim in dims for part in (*dim.parts, *dim.kept)], dims
+
+
+def _extent(items: Sequence[Item]) -> Box:
+    boxes = np.array([item_box(it) for it in items])
+    return (float(boxes[:, 0].min()), float(boxes[:, 1].min()), float(boxes[:, 2].max()),
+            float(boxes[:, 3].max()))
 
 
 def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
             lab: Mapping[str, str], rpm: float) -> list[Item]:
-    """s, v and a over φ in three panels on one φ scale, stacked in ``box``."""
+    """s, v and a over φ in three panels on one φ scale, stacked in ``box``: each φ axis
+    ticked at the numbered positions and labelled in degrees (its title φ/(°)), and under
+    the s axis, where no curve goes (s ≥ 0), the positions' numbers in a row of their own."""
     x0, y0, x1, y1 = box
     items: list[Item] = [caption(lab["curves"].format(rpm=number_text(rpm)), ((x0 + x1) / 2.0, y1),
                                  x1 - x0)]
     top = y1 - 2 * CAPTION
     panel = (top - y0) / 3.0
     phi = np.degrees(motion.crank_angle)
-    ticks = [(float(a), str(int(n))) for a, n in zip(angles, numbers)]
+    ticks = [(float(a), number_text(round(float(a), 1))) for a in angles]
     series = (("s", "mu_s", motion.ram_x, 1e-3), ("v", "mu_v", motion.ram_v[0], 1.0),
               ("a", "mu_a", motion.ram_a[0], 1.0))
     for k, (key, mu_key, y, unit) in enumerate(series):
-        pbox = (x0, top - (k + 1) * panel, x1, top - k * panel - (0 if k == 0 else 0))
+        pbox = (x0, top - (k + 1) * panel, x1, top - k * panel)
+        below = ROW_ROOM if k == 0 else 0.0
         notes = scale_notes(lab[mu_key], lab["mu_phi"] if k == 0 else None, unit)
-        items += chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks, notes=notes).items
+        drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key], ticks, notes=notes,
+                      below=below)
+        crossed = _crossed_ticks(drawn, phi, np.asarray(y), ticks)
+        if crossed:             # a degree the curve runs through is left out, its tick kept
+            drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key],
+                          [(a, "" if i in crossed else t) for i, (a, t) in enumerate(ticks)], notes=notes,
+                          below=below)
+        items += drawn.items
+        if k == 0:
+            items += _position_row(drawn, phi[0], angles, numbers, lab["position"], pbox)
+    return items
+
+
+def _crossed_ticks(drawn, phi: np.ndarray, y: np.ndarray, ticks) -> set[int]:
+    """The tick labels of the chart ``drawn`` that its curve (``y`` over ``phi``) or its y axis
+    (down to 2 mm under the lowest value) crosses."""
+    from .sheet_dims import crossings
+    left, zero = drawn.origin
+    pts = np.column_stack([left + (phi - phi[0]) / drawn.x_scale, zero + y / drawn.y_scale])
+    axis = [left, zero + min(float(y.min()), 0.0) / drawn.y_scale - 2.0, left, zero]
+    segs = np.vstack([np.hstack([pts[:-1], pts[1:]]), axis])
+    return {i for i, (a, text) in enumerate(ticks)
+            if crossings(Text(text, (left + (a - phi[0]) / drawn.x_scale, zero - TICK - 1.0),
+                              smaller_height(3.5), "ct").box(), segs)}
+
+
+def _position_row(drawn, phi0: float, angles: np.ndarray, numbers: np.ndarray, title: str,
+                  panel: Box) -> list[Item]:
+    """The positions' numbers in a row under the degrees of the chart ``drawn`` (a number
+    that would meet its neighbour is left out, as the degrees are), titled at its left."""
+    height = smaller_height(3.5)
+    left, zero = drawn.origin
+    row = zero - TICK - 1.0 - 1.35 * height - 0.5          # under the degrees' row
+    items: list[Item] = []
+    taken: list[Box] = []
+    for a, n in zip(angles, numbers):
+        label = Text(str(int(n)), (left + (float(a) - phi0) / drawn.x_scale, row), height, "ct")
+        box = label.box()
+        if box[1] >= panel[1] and not any(boxes_meet(box, b) for b in taken):
+            taken.append(box)
+            items.append(label)
+    name = Text(title, (left - TICK - 1.0, row), height, "rt")
+    if items and name.box()[0] >= panel[0]:
+        items.append(name)
     return items
 
 

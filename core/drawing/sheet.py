@@ -261,10 +261,15 @@ def paper(name: str) -> Paper:
 class Sheet:
     """``model``: for a sheet drawn around one drawing in model coordinates (the gear pair),
     paper mm ↔ model mm; its DXF is then written in the model's coordinates, the drawing at
-    1:1 and the paper's items scaled with it (print at the sheet's scale to get the sheet)."""
+    1:1 and the paper's items scaled with it (print at the sheet's scale to get the sheet).
+    ``dimensions`` (:class:`core.drawing.sheet_dims.Dimension`, on sheets without a model)
+    are drawn by their pictures among ``items``; the DXF writes them as DIMENSION entities
+    instead."""
+
     paper: Paper
     items: tuple[Item, ...] = field(default_factory=tuple)
     model: "Placement | None" = None
+    dimensions: tuple = ()
 
 
 def frame_items(p: Paper) -> list[Item]:

@@ -12,6 +12,7 @@ from ezdxf import zoom
 from ezdxf.document import Drawing
 from ezdxf.enums import TextEntityAlignment
 
+from . import dimensions as dims
 from .dxf import literal_text, new_document, save_dxf, text_attribs
 from .sheet import Circle, Polyline, Sheet, Text
 
@@ -34,14 +35,25 @@ def _model(sheet: Sheet):
 
 def sheet_document(sheet: Sheet) -> Drawing:
     """The sheet in model space (paper mm, origin at the trimmed edge's lower left; or, for
-    a sheet with a model, in the model's mm)."""
+    a sheet with a model, in the model's mm); each of its dimensions a DIMENSION entity in
+    place of its picture (only sheets without a model have dimensions: they are written in
+    paper mm)."""
     doc = new_document()
     msp = doc.modelspace()
     to, k = _model(sheet)
     low, high = to(0.0, 0.0), to(sheet.paper.width, sheet.paper.height)
     layout = msp.dxf_layout.dxf          # the limits ezdxf writes to the header: the paper
     layout.limmin, layout.limmax = low, high
+    pictures = {id(part) for dim in sheet.dimensions for part in dim.parts}
+    if sheet.dimensions:
+        # the sheet prints at 1:1, each one's DIMLFAC scales it; the header's DIMTXT is the
+        # sheet's dimension text (LibreCAD draws every one at it)
+        dims.add_dimstyle(doc, 1.0, max(dim.height for dim in sheet.dimensions))
+    for dim in sheet.dimensions:
+        _dimension(msp, dim)
     for item in sheet.items:
+        if id(item) in pictures:
+            continue
         attribs = {"layer": item.layer}
         if isinstance(item, Polyline):
             points = [to(x, y) for x, y in item.points]
@@ -58,6 +70,20 @@ def sheet_document(sheet: Sheet) -> Drawing:
                 text.set_placement(to(*run.position), align=ALIGNMENTS[run.align])
     zoom.window(msp, low, high)            # CAD opens on the whole sheet
     return doc
+
+
+def _dimension(msp, dim) -> None:
+    """A sheet's dimension as a DIMENSION entity, its text where the sheet has it. The text is
+    the sheet's, the true value, not CAD's "<>": LibreCAD ignores DIMLFAC (in the style and in
+    an override) and would show the length on the paper; the definition points and DIMLFAC
+    still make CAD's own measurement the true length where CAD honours it."""
+    where = {"override": dim.override, "location": dim.text.position, "text": dim.text.text}
+    if dim.kind == "aligned":
+        dims.aligned(msp, dim.points[0], dim.points[1], dim.offset, dim.name, **where)
+    elif dim.kind == "linear":
+        dims.linear(msp, dim.points[0], dim.points[1], dim.base, dim.angle, dim.name, **where)
+    else:
+        dims.angular(msp, dim.center, dim.points[0], dim.points[1], dim.base, dim.name, **where)
 
 
 def save_sheet_dxf(sheet: Sheet, path: str | os.PathLike) -> None:

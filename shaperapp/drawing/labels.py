@@ -36,6 +36,7 @@ def motion_labels() -> dict[str, str]:
         "mu_v": translate("Drawing", "μ_v = {mu} (m/s)/mm"),
         "mu_a": translate("Drawing", "μ_a = {mu} (m/s²)/mm"),
         "mu_phi": translate("Drawing", "μ_φ = {mu} °/mm"),
+        "position": translate("Drawing", "Position"),
         "velocity": translate("Drawing", "Velocity polygon, φ = {angle}°, μ_v = {mu} (m/s)/mm"),
         "acceleration": translate("Drawing",
                                   "Acceleration polygon, φ = {angle}°, μ_a = {mu} (m/s²)/mm"),

@@ -153,6 +153,21 @@ def test_no_label_is_crossed_on_the_motion_sheet_of_any_design(crank, k, stretch
     assert_labels_clear(motion_sheet(_design(crank, k, stretch, rod), 40.0, paper(size), count=count).sheet)
 
 
+# Designs where L3's text has no clear spot on or beyond its line (the L2/h chain's extension
+# lines cross the lever at every spot, K near 3): found by sweeps of random designs
+CROWDED = [(163.3100549160719, 2.854394933909055, 1.4752708575229196, 0.4838735890078641, "A3", 14),
+           (92.27943851928474, 2.9380656255228192, 3.825967684221733, None, "A3", 14),
+           (171.79469707718076, 2.590822135516199, 2.0810086031678265, 0.6107855296173742, "A3", 13),
+           (92.93070710645779, 2.7857323990518026, 1.4238124977007258, 0.33268725667119436, "A3", 16)]
+
+
+@pytest.mark.parametrize("crank, k, stretch, rod, size, count", CROWDED)
+def test_no_label_is_crossed_where_l3_has_no_room_on_its_line(crank, k, stretch, rod, size, count):
+    """L3's text, crossed by the chain's extension lines even at 2.5 mm, led out along a
+    leader; the tool path's numbers led clear of it (their leaders ran through it)."""
+    assert_labels_clear(motion_sheet(_design(crank, k, stretch, rod), 40.0, paper(size), count=count).sheet)
+
+
 @pytest.mark.slow
 @settings(max_examples=12, deadline=None)
 @example(crank=100.0, k=1.02, stretch=1.05, rod=None, size="A2")
