@@ -30,7 +30,7 @@ factor = st.sampled_from([1.0, 1.5, 2.5, 4.0, 10.0, 25.0])
 
 
 def read_back(dims: list[sd.Dimension]):
-    sheet = Sheet(paper("A3"), tuple(p for d in dims for p in (*d.parts, *d.kept)), tuple(dims))
+    sheet = Sheet(paper("A3"), tuple(p for d in dims for p in (*d.parts, *d.kept)), dimensions=tuple(dims))
     doc = ezdxf.read(io.StringIO(dxf_text(sheet_document(sheet))))
     return doc.modelspace().query("DIMENSION")
 
@@ -212,7 +212,7 @@ def test_the_sheet_dxf_header_draws_dimension_texts_at_the_sheets_height():
     LibreCAD printed the motion sheet's dimension texts larger than its labels)."""
     dims = [sd.aligned((50.0, 50.0), (150.0, 50.0), 10.0, "L", 2.0),
             sd.linear((50.0, 80.0), (50.0, 180.0), (30.0, 80.0), 90.0, "H", 2.0)]
-    sheet = Sheet(paper("A3"), tuple(p for d in dims for p in (*d.parts, *d.kept)), tuple(dims))
+    sheet = Sheet(paper("A3"), tuple(p for d in dims for p in (*d.parts, *d.kept)), dimensions=tuple(dims))
     doc = ezdxf.read(io.StringIO(dxf_text(sheet_document(sheet))))
     assert doc.header["$DIMTXT"] == pytest.approx(sd.TEXT_MM)
     assert doc.dimstyles.get("GB_MM").dxf.dimtxt == pytest.approx(sd.TEXT_MM)
