@@ -120,7 +120,8 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                                        TABLE_ROW, 3.5, aligns="lc")))
     areas["title"] = sheet_title_block(paper, block, lab, scale_text(scale))
     items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
-    return MotionSheet(Sheet(paper, tuple(items), dimensions=tuple(dims)), scale, place, diagrams, areas, tuple(dims))
+    return MotionSheet(Sheet(paper, tuple(items), dimensions=tuple(dims)), scale, place, diagrams, areas,
+                       tuple(dims))
 
 
 def caption(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> Text:
