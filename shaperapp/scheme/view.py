@@ -27,6 +27,7 @@ from shaperapp.widgets.view_parts import fill_speed_combo
 from .dimensions import DimensionLayer
 from .draw import WHITE, Box, Pair
 from .forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
+from .labels import LabelLayout
 from .mechanism import Geometry, MechanismLayer
 
 
@@ -111,9 +112,8 @@ class SchemeWidget(QWidget):
         self._mechanism = MechanismLayer(add, self)
         self._dimensions = DimensionLayer(add, self)
         self._forces = ForceLayer(add, self._view, self)
-        self._view.sigTransformChanged.connect(self._dimensions.separate_chain_labels)
-        self._view.sigTransformChanged.connect(self._mechanism.place_joint_labels)   # text is screen-sized
-        self._view.sigTransformChanged.connect(lambda *_: self._mechanism.place_pivot_label())
+        self._labels = LabelLayout(add, self._mechanism, self._dimensions, self._forces, self)
+        self._view.sigTransformChanged.connect(self._zoomed)     # text is screen-sized
         self._retranslate()
         model.resultsChanged.connect(self._on_results)
         model.angleChanged.connect(self._on_angle)
@@ -148,8 +148,20 @@ class SchemeWidget(QWidget):
         self._dimensions_placed()
 
     def _dimensions_placed(self) -> None:
-        """The pivot's label keeps off the dimension lines as they now are."""
-        self._mechanism.place_pivot_label(self._dimensions.lines())
+        """Every label placed again for the dimensions as they now are."""
+        if self._geometry is not None and not self._stale:
+            self._labels.place_still(self._view.viewPixelSize(), self._bounds())
+            self._draw_forces(self._model.angle_index)
+
+    def _bounds(self) -> tuple[float, float, float, float]:
+        """The drawing's extent (the arrows' reach included while shown): labels stay inside."""
+        r = self._fit_rect()
+        return r.left(), r.right(), r.top(), r.bottom()
+
+    def _zoomed(self, *_) -> None:
+        """The texts keep their size on screen: their size in mm changed, so they are placed again."""
+        self._dimensions.separate_chain_labels()
+        self._dimensions_placed()
 
     def dimensions_visible(self) -> bool:
         return self.dimensions_action.isChecked()
@@ -332,12 +344,13 @@ class SchemeWidget(QWidget):
         self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
-        self._mechanism.place_pivot_label(self._dimensions.lines())
+        self._labels.rebuild()
         design = self._model.design
         if design != self._design:
             self._design = design
             if not self._still_fits():
                 self.fit()
+        self._labels.place_still(self._view.viewPixelSize(), self._bounds())
         self._move(self._model.angle_index)
 
     def _on_angle(self, index: int) -> None:
@@ -371,7 +384,8 @@ class SchemeWidget(QWidget):
         if self._stale:            # never on the previous design's geometry: the rebuild draws
             return
         self._forces_stale = False
-        if self._geometry is None or not self.forces_visible():
+        if self._geometry is None:
             return
-        obstacles = self._mechanism.obstacles() + self._dimensions.obstacles()
-        self._forces.draw(index, self._model, self._geometry, self._view.viewPixelSize(), obstacles)
+        if self.forces_visible():
+            self._forces.draw(index, self._model, self._geometry)
+        self._labels.place_frame(index, self._view.viewPixelSize())

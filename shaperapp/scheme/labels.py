@@ -1,0 +1,177 @@
+"""Where the scheme's labels go: no label crossed by a line or covering another (issue 32).
+
+Every label is placed by the search of place.py against every line drawn (the
+links', blocks', ram's and pins' outlines, the frame, the crank circle, the tool
+path, dimension lines and arrow heads, the force arrows) and every label placed
+before it, as large as the text is in mm at this zoom (its size is fixed on
+screen). Labels that do not move (O₄, L1, L3, H; L2 and h keep to their chain)
+are placed once per design, zoom and dimensions shown, clear of everything the
+moving bodies sweep over the whole cycle; a frame places only the moving joints'
+names (O₂, A, B, C) and the force magnitudes, and moves a still label only when a
+force arrow of that frame runs through it. A name that finds no room beside its
+joint goes a ring farther out with a leader line to it.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+from PySide6.QtCore import QObject
+
+from shaperapp.plots.items import CurveItem
+from shaperapp.widgets.style import LINK
+
+from .dimensions import DimensionLayer
+from .draw import Z_LABEL, pen, text_box
+from .forces import ForceLayer
+from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
+from .place import LEADER_RING, Obstacles, around, boxes_at, clear_of_segments, leader
+
+LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
+LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
+FRAME_JOINTS = ("O2", "A", "B", "C")
+
+
+class LabelLayout(QObject):
+    """Places the joint names, the searched dimension labels and the force labels."""
+
+    def __init__(self, add: Callable[[object], None], mechanism: MechanismLayer,
+                 dimensions: DimensionLayer, forces: ForceLayer, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._mechanism, self._dimensions, self._forces = mechanism, dimensions, forces
+        self._leaders = CurveItem(pen(LINK, 0.8), connect="pairs")
+        self._leaders.setZValue(Z_LABEL)
+        add(self._leaders)
+        self._static_lines = self._swept = np.empty((0, 2, 2))
+        self._px = 1.0
+        self._still: dict[str, tuple] = {}     # still label: candidate centres, half size, rings
+        self._home: dict[str, int] = {}        # ... its candidate for the design and zoom
+        self._at: dict[str, int] = {}          # ... and the one it is at now
+        self._chain: list = []                 # the L2 and h labels' boxes, mm
+        self._halves: dict[str, np.ndarray] = {}
+        self._bounds: tuple[float, float, float, float] | None = None
+
+    # ---- per design ----------------------------------------------------
+    def rebuild(self) -> None:
+        """Lines that stay put, and what the moving bodies sweep over the cycle."""
+        mech = self._mechanism
+        self._static_lines = mech.static_lines()
+        self._swept = mech.frame_lines(None)
+
+    def place_still(self, mm_per_px: tuple[float, float], bounds: tuple[float, float, float, float]) -> None:
+        """O₄, L1, L3 and H (per design, zoom and dimensions shown), clear of the frame, the
+        dimension lines, L2 and h, each other, and everything that moves."""
+        mech, dims = self._mechanism, self._dimensions
+        self._px = px = float(max(mm_per_px))
+        if mech.frames is None or not px > 0.0:
+            return
+        u = mech.frames.u
+        texts = dims.texts()
+        self._chain = [text_box(texts[n]) for n in ("L2", "h") if texts[n].isVisible()]
+        lines = np.concatenate([self._static_lines, dims.fixed_lines(), self._swept])
+        self._bounds = bounds
+        obstacles = Obstacles(lines, LINE_CLEAR_PX * px, np.array(self._chain).reshape(-1, 4), bounds)
+        axes, half_widths = mech.link_axes(None)
+        obstacles.add(ends=axes, margin=half_widths)
+        self._halves = {name: self._half(item) for name, item in mech.labels.items()}
+        self._still = {}
+        for name in dims.placed():
+            half = self._half(texts[name])
+            centres = dims.candidates(name, half, 2.0 * half[1])
+            self._still[name] = (centres, half, np.zeros(len(centres), dtype=int))
+        gap = max(JOINT_LABEL_CLEAR * u, PIN_FIXED * u + 3.0 * px)
+        half = self._halves["O4"]
+        centres, ring = around(np.zeros(2), half, mech.pivot_direction, gap, 2.0 * half[1])
+        self._still["O4"] = (centres, half, ring)
+        self._home = {}
+        for name, (centres, half, _) in self._still.items():
+            boxes = boxes_at(centres, half)
+            k = obstacles.best(boxes)
+            self._home[name] = k
+            self._put_still(name, k)
+            obstacles.add(boxes[k])
+            obstacles.add(ends=self._leader_of(name), margin=LINE_CLEAR_PX * px)
+
+    def _put_still(self, name: str, k: int) -> None:
+        centre = self._still[name][0][k]
+        if name == "O4":
+            self._mechanism.labels["O4"].setPos(*centre)
+        else:
+            self._dimensions.move_label(name, centre)
+        self._at[name] = k
+
+    def _leader_of(self, name: str) -> np.ndarray:
+        """The leader of a still label as it is now placed (none at its first ring)."""
+        if name == "L1":
+            return self._dimensions.leader_line()
+        if name != "O4":
+            return np.empty((0, 2, 2))
+        centres, half, ring = self._still[name]
+        k = self._at[name]
+        if ring[k] < LEADER_RING:
+            return np.empty((0, 2, 2))
+        u = self._mechanism.frames.u
+        return leader(np.zeros(2), boxes_at(centres[k], half)[0], PIN_FIXED * u + LEADER_GAP_PX * self._px)
+
+    @staticmethod
+    def _half(item) -> np.ndarray:
+        left, right, bottom, top = text_box(item)
+        return np.array([abs(right - left), abs(top - bottom)]) / 2.0
+
+    # ---- per frame -----------------------------------------------------
+    def place_frame(self, index: int, mm_per_px: tuple[float, float]) -> None:
+        """The moving joints' names and the force labels at crank-angle ``index``."""
+        mech = self._mechanism
+        f = mech.frames
+        if f is None or index >= len(f.tip) or not self._halves:
+            return
+        px, u = self._px, f.u
+        margin = LINE_CLEAR_PX * px
+        arrows = self._forces.lines(index)
+        lines = np.concatenate([self._static_lines, self._dimensions.fixed_lines(),
+                                mech.frame_lines(index), arrows])
+        obstacles = Obstacles(lines, margin, np.array(self._chain).reshape(-1, 4), self._bounds)
+        axes, half_widths = mech.link_axes(index)
+        obstacles.add(ends=axes, margin=half_widths)
+        leaders = self._place_still_for(arrows, obstacles)
+        for name, direction in mech.label_directions(index).items():
+            if name == "O4":
+                continue
+            pin = mech.pins[name]
+            point = np.array([pin.x(), pin.y()])
+            radius = (PIN_FIXED if name == "O2" else PIN_MOVING) * u
+            half = self._halves[name]
+            gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
+            centres, ring = around(point, half, direction, gap, 2.0 * half[1])
+            boxes = boxes_at(centres, half)
+            k = obstacles.best(boxes)
+            mech.labels[name].setPos(*centres[k])
+            obstacles.add(boxes[k])
+            if ring[k] >= LEADER_RING:
+                lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px)
+                leaders.append(lead)
+                obstacles.add(ends=lead, margin=margin)
+        drawn = np.concatenate(leaders).reshape(-1, 2)
+        self._leaders.set_data(drawn[:, 0], drawn[:, 1])
+        self._forces.place_labels(u, mm_per_px, obstacles)
+
+    def _place_still_for(self, arrows: np.ndarray, obstacles: Obstacles) -> list[np.ndarray]:
+        """The still labels as obstacles of this frame: each at its home, unless a force
+        arrow of this frame runs through it there; then, for this frame, at its first
+        candidate clear of everything. Returns their leaders."""
+        margin = LINE_CLEAR_PX * self._px
+        leaders = []
+        for name, (centres, half, _) in self._still.items():
+            boxes = boxes_at(centres, half)
+            home = self._home[name]
+            k = home
+            if len(arrows) and not clear_of_segments(boxes[home], arrows, margin)[0]:
+                k = obstacles.first_clear(boxes)
+                k = home if k < 0 else k
+            if k != self._at[name]:
+                self._put_still(name, k)
+            obstacles.add(boxes[k])
+            lead = self._leader_of(name)
+            obstacles.add(ends=lead, margin=margin)
+            leaders.append(lead)
+        return leaders
