@@ -25,7 +25,7 @@ from shaperapp.widgets.style import fmt
 
 from .draw import DIM, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
 from .mechanism import Geometry, outline
-from .place import along, around, leader
+from .place import RINGS, along, around, leader
 
 L1_LEAD = 4.5            # the L1 label this many u beyond the crank circle, outside the lever
 NAMES = ("L2", "h", "L3", "L1", "H")     # the dimensions in drawing order
@@ -181,7 +181,28 @@ class DimensionLayer(QObject):
                    for k in range(0, 6) for s in (0.0, 1.0, -1.0, 2.0, -2.0)]
             ring, _ = around(p, half, normal, float(np.hypot(*(q - p))), step)   # then all round
             return np.concatenate([np.array(out), ring])
-        return along(p, q, normal, 0.3 * self._u, half)
+        ring, _ = around((p + q) / 2.0, half, normal, 0.3 * self._u, step, RINGS[:4])   # then round its middle
+        return np.concatenate([along(p, q, normal, 0.3 * self._u, half), ring])
+
+    def chain_moves(self, name: str) -> np.ndarray:
+        """Shifts (m × 2, mm) of the L2 or h label, as it sits now, along its part of the
+        chain (its box kept within the part) and then across to the chain's other side."""
+        item = self.texts()[name]
+        left, right, bottom, top = text_box(item)
+        lo, hi = ((0.0, self._chain[0]) if name == "L2" else (self._chain[0], self._chain_top))
+        length = top - bottom
+        if hi - lo < length:
+            return np.zeros((1, 2))
+        line_x = right + 0.3 * self._u                      # the text sits left of the chain
+        out = []
+        for dx in (0.0, line_x + 0.3 * self._u - left):
+            for t in (0.5, 0.3, 0.7, 0.1, 0.9, 0.0, 1.0):
+                out.append((dx, lo + t * (hi - lo - length) - bottom))
+        return np.array(out)
+
+    def shift_label(self, name: str, shift: np.ndarray) -> None:
+        item = self.texts()[name]
+        item.setPos(item.pos().x() + float(shift[0]), item.pos().y() + float(shift[1]))
 
     def move_label(self, name: str, centre: np.ndarray) -> None:
         """Put the label ``name`` centred at ``centre``; L1's leader then ends at its box."""

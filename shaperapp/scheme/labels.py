@@ -24,12 +24,12 @@ from shaperapp.widgets.style import LINK
 from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
-from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
-from .place import LEADER_RING, Obstacles, around, boxes_at, clear_of_segments, leader
+from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
+from .place import LEADER_RING, Obstacles, around, boxes_at, clear_of_segments, leader, meets
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
-FRAME_JOINTS = ("O2", "A", "B", "C")
+SMALL_TEXT = 9.0 / 11.0      # the next standard size down, as a share of the joint names' size
 
 
 class LabelLayout(QObject):
@@ -50,6 +50,7 @@ class LabelLayout(QObject):
         self._chain: list = []                 # the L2 and h labels' boxes, mm
         self._halves: dict[str, np.ndarray] = {}
         self._bounds: tuple[float, float, float, float] | None = None
+        self._small: dict[str, bool] = {}        # joint names drawn one size smaller now
 
     # ---- per design ----------------------------------------------------
     def rebuild(self) -> None:
@@ -67,12 +68,19 @@ class LabelLayout(QObject):
             return
         u = mech.frames.u
         texts = dims.texts()
-        self._chain = [text_box(texts[n]) for n in ("L2", "h") if texts[n].isVisible()]
         lines = np.concatenate([self._static_lines, dims.fixed_lines(), self._swept])
         self._bounds = bounds
-        obstacles = Obstacles(lines, LINE_CLEAR_PX * px, np.array(self._chain).reshape(-1, 4), bounds)
+        obstacles = Obstacles(lines, LINE_CLEAR_PX * px, None, bounds)
         axes, half_widths = mech.link_axes(None)
         obstacles.add(ends=axes, margin=half_widths)
+        self._chain = []
+        for name in ("L2", "h") if texts["L2"].isVisible() else ():
+            box = np.array(text_box(texts[name]))
+            shifts = dims.chain_moves(name)
+            k = obstacles.best(box[None, :] + np.repeat(shifts, 2, axis=1))
+            dims.shift_label(name, shifts[k])
+            self._chain.append(text_box(texts[name]))
+            obstacles.add(self._chain[-1])
         self._halves = {name: self._half(item) for name, item in mech.labels.items()}
         self._still = {}
         for name in dims.placed():
@@ -135,25 +143,57 @@ class LabelLayout(QObject):
         obstacles.add(ends=axes, margin=half_widths)
         leaders = self._place_still_for(arrows, obstacles)
         for name, direction in mech.label_directions(index).items():
-            if name == "O4":
-                continue
-            pin = mech.pins[name]
-            point = np.array([pin.x(), pin.y()])
-            radius = (PIN_FIXED if name == "O2" else PIN_MOVING) * u
-            half = self._halves[name]
-            gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
-            centres, ring = around(point, half, direction, gap, 2.0 * half[1])
-            boxes = boxes_at(centres, half)
-            k = obstacles.best(boxes)
-            mech.labels[name].setPos(*centres[k])
-            obstacles.add(boxes[k])
-            if ring[k] >= LEADER_RING:
-                lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px)
-                leaders.append(lead)
-                obstacles.add(ends=lead, margin=margin)
+            if name != "O4":
+                leaders.append(self._place_joint(name, direction, obstacles))
         drawn = np.concatenate(leaders).reshape(-1, 2)
         self._leaders.set_data(drawn[:, 0], drawn[:, 1])
         self._forces.place_labels(u, mm_per_px, obstacles)
+
+    def _place_joint(self, name: str, direction: np.ndarray, obstacles: Obstacles) -> np.ndarray:
+        """A moving joint's name: beside it (at its size, then one standard size smaller),
+        else farther out with a leader that crosses no label; where nothing is clear, the
+        spot the fewest lines come near. Returns its leader (maybe none)."""
+        mech, px = self._mechanism, self._px
+        u = mech.frames.u
+        pin = mech.pins[name]
+        point = np.array([pin.x(), pin.y()])
+        radius = (PIN_FIXED if name == "O2" else PIN_MOVING) * u
+        gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
+        sets = []
+        for small in (False, True):
+            half = self._halves[name] * (SMALL_TEXT if small else 1.0)
+            centres, ring = around(point, half, direction, gap, 2.0 * half[1])
+            sets.append((boxes_at(centres, half), centres, ring, small))
+        order = [(b, c, r, s, near) for near in (True, False) for b, c, r, s in sets]
+        clear = [obstacles.clear(b) for b, *_ in sets]
+        taken = np.array(obstacles.boxes).reshape(-1, 4)
+        margin = LINE_CLEAR_PX * px
+        for boxes, centres, ring, small, near in order:
+            ok = clear[int(small)] & ((ring < LEADER_RING) == near)
+            for k in np.flatnonzero(ok):
+                lead = (leader(point, boxes[k], radius + LEADER_GAP_PX * px) if ring[k] >= LEADER_RING
+                        else np.empty((0, 2, 2)))
+                if len(lead) and meets(taken, lead, np.full(1, margin)).any():
+                    continue
+                return self._put_joint(name, centres[k], boxes[k], small, lead, obstacles)
+        boxes = np.concatenate([sets[0][0], sets[1][0]])
+        k = obstacles.best(boxes)
+        boxes, centres, ring, small = sets[k // len(sets[0][0])]
+        k %= len(boxes)
+        lead = (leader(point, boxes[k], radius + LEADER_GAP_PX * px) if ring[k] >= LEADER_RING
+                else np.empty((0, 2, 2)))
+        return self._put_joint(name, centres[k], boxes[k], small, lead, obstacles)
+
+    def _put_joint(self, name: str, centre: np.ndarray, box, small: bool, lead: np.ndarray,
+                   obstacles: Obstacles) -> np.ndarray:
+        label = self._mechanism.labels[name]
+        if self._small.get(name, False) != small:
+            label.setFont(JOINT_FONTS[small])
+            self._small[name] = small
+        label.setPos(*centre)
+        obstacles.add(box)
+        obstacles.add(ends=lead, margin=LINE_CLEAR_PX * self._px)
+        return lead
 
     def _place_still_for(self, arrows: np.ndarray, obstacles: Obstacles) -> list[np.ndarray]:
         """The still labels as obstacles of this frame: each at its home, unless a force
@@ -166,8 +206,7 @@ class LabelLayout(QObject):
             home = self._home[name]
             k = home
             if len(arrows) and not clear_of_segments(boxes[home], arrows, margin)[0]:
-                k = obstacles.first_clear(boxes)
-                k = home if k < 0 else k
+                k = obstacles.best(boxes)
             if k != self._at[name]:
                 self._put_still(name, k)
             obstacles.add(boxes[k])

@@ -65,6 +65,18 @@ def outline(item) -> np.ndarray:
     return local_segments([ndarray_from_qpolygonf(p) for p in path.toSubpathPolygons()])
 
 
+def joint_font(points: int) -> QFont:
+    font = QFont()
+    font.setPointSize(points)
+    font.setBold(True)
+    font.setItalic(True)
+    return font
+
+
+JOINT_SIZES = (11, 9)        # pt: the joint names, and one standard size smaller where crowded
+JOINT_FONTS = {False: joint_font(JOINT_SIZES[0]), True: joint_font(JOINT_SIZES[1])}
+
+
 @dataclass(frozen=True)
 class Geometry:
     """Where things are for the other layers, per design, mm."""
@@ -138,10 +150,7 @@ class MechanismLayer(QObject):
         for it in (self._path_done, self.ram, self._crank, self._lever, self._block_a,
                    self._block_b, self._rod, *self.pins.values()):
             add(it)
-        font = QFont()
-        font.setPointSize(11)
-        font.setBold(True)
-        font.setItalic(True)
+        font = JOINT_FONTS[False]
         self.labels: dict[str, pg.TextItem] = {}
         for name, text in (("O2", "O\u2082"), ("O4", "O\u2084"), ("A", "A"), ("B", "B"), ("C", "C")):
             label = pg.TextItem(text, color=LINK, anchor=(0.5, 0.5))

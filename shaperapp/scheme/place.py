@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-RINGS = (0.0, 0.5, 1.0, 1.6, 2.4, 3.4)   # rings beyond the first, in text heights
+RINGS = (0.0, 0.5, 1.0, 1.6, 2.4, 3.4, 4.6, 6.0)   # rings beyond the first, in text heights
 LEADER_RING = 2                          # from this ring on, a leader line leads to the label
 
 

@@ -154,8 +154,9 @@ class SchemeWidget(QWidget):
             self._draw_forces(self._model.angle_index)
 
     def _bounds(self) -> tuple[float, float, float, float]:
-        """The drawing's extent (the arrows' reach included while shown): labels stay inside."""
-        r = self._fit_rect()
+        """The drawing's extent (the arrows' reach included while shown), or the view where it
+        shows more (zoomed out): labels stay inside."""
+        r = self._fit_rect().united(self._view.viewRect())
         return r.left(), r.right(), r.top(), r.bottom()
 
     def _zoomed(self, *_) -> None:
