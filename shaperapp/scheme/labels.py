@@ -25,7 +25,7 @@ from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
-from .place import LEADER_RING, Obstacles, around, boxes_at, clear_of_segments, leader, meets
+from .place import LEADER_RING, RINGS, Obstacles, around, boxes_at, clear_of_segments, leader, meets
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
@@ -159,29 +159,29 @@ class LabelLayout(QObject):
         point = np.array([pin.x(), pin.y()])
         radius = (PIN_FIXED if name == "O2" else PIN_MOVING) * u
         gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
-        sets = []
-        for small in (False, True):
-            half = self._halves[name] * (SMALL_TEXT if small else 1.0)
-            centres, ring = around(point, half, direction, gap, 2.0 * half[1])
-            sets.append((boxes_at(centres, half), centres, ring, small))
-        order = [(b, c, r, s, near) for near in (True, False) for b, c, r, s in sets]
-        clear = [obstacles.clear(b) for b, *_ in sets]
         taken = np.array(obstacles.boxes).reshape(-1, 4)
         margin = LINE_CLEAR_PX * px
-        for boxes, centres, ring, small, near in order:
-            ok = clear[int(small)] & ((ring < LEADER_RING) == near)
-            for k in np.flatnonzero(ok):
-                lead = (leader(point, boxes[k], radius + LEADER_GAP_PX * px) if ring[k] >= LEADER_RING
-                        else np.empty((0, 2, 2)))
-                if len(lead) and meets(taken, lead, np.full(1, margin)).any():
-                    continue
-                return self._put_joint(name, centres[k], boxes[k], small, lead, obstacles)
-        boxes = np.concatenate([sets[0][0], sets[1][0]])
+        sets = []
+        for near in (True, False):           # the near rings first: most frames end there, cheaply
+            rings = RINGS[:LEADER_RING] if near else RINGS[LEADER_RING:]
+            for small in (False, True):
+                half = self._halves[name] * (SMALL_TEXT if small else 1.0)
+                centres, _ = around(point, half, direction, gap, 2.0 * half[1], rings)
+                boxes = boxes_at(centres, half)
+                sets.append((boxes, centres, small, near))
+                for k in np.flatnonzero(obstacles.clear(boxes)):
+                    lead = (np.empty((0, 2, 2)) if near
+                            else leader(point, boxes[k], radius + LEADER_GAP_PX * px))
+                    if len(lead) and meets(taken, lead, np.full(1, margin)).any():
+                        continue
+                    return self._put_joint(name, centres[k], boxes[k], small, lead, obstacles)
+        boxes = np.concatenate([b for b, *_ in sets])
         k = obstacles.best(boxes)
-        boxes, centres, ring, small = sets[k // len(sets[0][0])]
-        k %= len(boxes)
-        lead = (leader(point, boxes[k], radius + LEADER_GAP_PX * px) if ring[k] >= LEADER_RING
-                else np.empty((0, 2, 2)))
+        for boxes, centres, small, near in sets:
+            if k < len(boxes):
+                break
+            k -= len(boxes)
+        lead = np.empty((0, 2, 2)) if near else leader(point, boxes[k], radius + LEADER_GAP_PX * px)
         return self._put_joint(name, centres[k], boxes[k], small, lead, obstacles)
 
     def _put_joint(self, name: str, centre: np.ndarray, box, small: bool, lead: np.ndarray,
