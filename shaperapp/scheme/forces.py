@@ -304,6 +304,24 @@ class ForceLayer(QObject):
                 tag.move(cx, cy, (ax, ay))
                 obstacles.add(boxes[k])
 
+    def pending_key(self) -> tuple:
+        """What the labels waiting to be placed say and where their arrows end: with the
+        arrows' own lines, all a frame's placement depends on besides the drawing."""
+        return tuple((text, fx, fy) for _, _, text, fx, fy, _ in self._pending)
+
+    def label_state(self) -> list[tuple]:
+        """The magnitude labels as placed now, for ``restore_labels``."""
+        return [(tag, tag.isVisible(), tag.text(), tag.x(), tag.y(), tag.anchor()) for tag in self._tags]
+
+    def restore_labels(self, state: list[tuple]) -> None:
+        """Put the magnitude labels back as ``label_state`` saw them (a frame seen before)."""
+        self._pending = []
+        for tag, visible, text, x, y, anchor in state:
+            tag.setVisible(visible)
+            if visible:
+                tag.set_text(text)
+                tag.move(x, y, anchor)
+
     def _show_caption(self) -> None:
         ff = self.frames
         if ff is None:

@@ -25,11 +25,12 @@ from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
-from .place import LEADER_RING, RINGS, Obstacles, around, boxes_at, clear_of_segments, leader, meets
+from .place import LEADER_RING, RINGS, Obstacles, Raster, around, boxes_at, clear_of_segments, leader, meets
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
-SMALL_TEXT = 9.0 / 11.0      # the next standard size down, as a share of the joint names' size
+SMALL_TEXT = 9.0 / 11.0
+RASTER_CELLS = 2.0e6         # the still lines' raster: at most this many cells (coarser when zoomed in far)      # the next standard size down, as a share of the joint names' size
 
 
 class LabelLayout(QObject):
@@ -43,6 +44,8 @@ class LabelLayout(QObject):
         self._leaders.setZValue(Z_LABEL)
         add(self._leaders)
         self._static_lines = self._swept = np.empty((0, 2, 2))
+        self._raster: Raster | None = None     # the lines that stay put, per design and zoom
+        self._done: dict[tuple, tuple] = {}     # each frame's placement, per design and zoom
         self._px = 1.0
         self._still: dict[str, tuple] = {}     # still label: candidate centres, half size, rings
         self._home: dict[str, int] = {}        # ... its candidate for the design and zoom
@@ -59,20 +62,33 @@ class LabelLayout(QObject):
         self._static_lines = mech.static_lines()
         self._swept = mech.frame_lines(None)
 
-    def place_still(self, mm_per_px: tuple[float, float], bounds: tuple[float, float, float, float]) -> None:
+    def place_still(self, mm_per_px: tuple[float, float], bounds: tuple[float, float, float, float],
+                    window: tuple[float, float, float, float]) -> None:
         """O₄, L1, L3 and H (per design, zoom and dimensions shown), clear of the frame, the
-        dimension lines, L2 and h, each other, and everything that moves."""
+        dimension lines, L2 and h, each other, and everything that moves. The lines that
+        stay put are burnt into a raster over ``window`` (the view and a margin) here, once,
+        for the frames to check their candidates against."""
         mech, dims = self._mechanism, self._dimensions
         self._px = px = float(max(mm_per_px))
+        self._done = {}
         if mech.frames is None or not px > 0.0:
+            self._raster = None
             return
         u = mech.frames.u
         texts = dims.texts()
-        lines = np.concatenate([self._static_lines, dims.fixed_lines(), self._swept])
         self._bounds = bounds
-        obstacles = Obstacles(lines, LINE_CLEAR_PX * px, None, bounds)
+        fixed = np.concatenate([self._static_lines, dims.fixed_lines()])
+        # over the view and the whole drawing (a still label may sit off the view when
+        # zoomed in), at a pixel a cell or coarser: at most RASTER_CELLS cells
+        area = ((max(window[1], bounds[1]) - min(window[0], bounds[0]))
+                * (max(window[3], bounds[3]) - min(window[2], bounds[2])))
+        cell = max(px, float(np.sqrt(area / RASTER_CELLS)))
+        region = (min(window[0], bounds[0]), max(window[1], bounds[1]),
+                  min(window[2], bounds[2]), max(window[3], bounds[3]))
+        self._raster = Raster(fixed, region, cell, LINE_CLEAR_PX * px)
+        obstacles = Obstacles(np.empty((0, 2, 2)), 0.0, None, bounds, self._raster.copy_with(self._swept))
         axes, half_widths = mech.link_axes(None)
-        obstacles.add(ends=axes, margin=half_widths)
+        obstacles.add(ends=axes, margin=half_widths + LINE_CLEAR_PX * px)
         self._chain = []
         for name in ("L2", "h") if texts["L2"].isVisible() else ():
             box = np.array(text_box(texts[name]))
@@ -131,16 +147,47 @@ class LabelLayout(QObject):
         """The moving joints' names and the force labels at crank-angle ``index``."""
         mech = self._mechanism
         f = mech.frames
-        if f is None or index >= len(f.tip) or not self._halves:
+        if f is None or index >= len(f.tip) or not self._halves or self._raster is None:
             return
-        px, u = self._px, f.u
-        margin = LINE_CLEAR_PX * px
         arrows = self._forces.lines(index)
-        lines = np.concatenate([self._static_lines, self._dimensions.fixed_lines(),
-                                mech.frame_lines(index), arrows])
-        obstacles = Obstacles(lines, margin, np.array(self._chain).reshape(-1, 4), self._bounds)
-        axes, half_widths = mech.link_axes(index)
-        obstacles.add(ends=axes, margin=half_widths)
+        key = (index, arrows.tobytes(), self._forces.pending_key())
+        done = self._done.get(key)
+        if done is not None:
+            self._restore(done)
+            return
+        self._place_frame(index, arrows, mm_per_px)
+        self._done[key] = self._state()
+
+    def _state(self) -> tuple:
+        """Where this frame's labels went: a frame seen again (the animation runs in cycles)
+        is put back from it, without a search."""
+        joints = {name: (label.x(), label.y(), self._small.get(name, False))
+                  for name, label in self._mechanism.labels.items() if name != "O4"}
+        leaders = (self._leaders.x.copy(), self._leaders.y.copy())
+        return dict(self._at), joints, leaders, self._forces.label_state()
+
+    def _restore(self, done: tuple) -> None:
+        at, joints, leaders, forces = done
+        for name, k in at.items():
+            if k != self._at.get(name):
+                self._put_still(name, k)
+        for name, (x, y, small) in joints.items():
+            label = self._mechanism.labels[name]
+            if self._small.get(name, False) != small:
+                label.setFont(JOINT_FONTS[small])
+                self._small[name] = small
+            label.setPos(x, y)
+        self._leaders.set_data(*leaders)
+        self._forces.restore_labels(forces)
+
+    def _place_frame(self, index: int, arrows: np.ndarray, mm_per_px: tuple[float, float]) -> None:
+        mech = self._mechanism
+        px, u = self._px, mech.frames.u
+        margin = LINE_CLEAR_PX * px
+        ends, margins = mech.frame_obstacles(index)
+        obstacles = Obstacles(np.concatenate([ends, arrows]),
+                              np.concatenate([margins + margin, np.full(len(arrows), margin)]),
+                              np.array(self._chain).reshape(-1, 4), self._bounds, self._raster)
         leaders = self._place_still_for(arrows, obstacles)
         for name, direction in mech.label_directions(index).items():
             if name != "O4":
@@ -161,28 +208,28 @@ class LabelLayout(QObject):
         gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
         taken = np.array(obstacles.boxes).reshape(-1, 4)
         margin = LINE_CLEAR_PX * px
-        sets = []
-        for near in (True, False):           # the near rings first: most frames end there, cheaply
-            rings = RINGS[:LEADER_RING] if near else RINGS[LEADER_RING:]
-            for small in (False, True):
-                half = self._halves[name] * (SMALL_TEXT if small else 1.0)
-                centres, _ = around(point, half, direction, gap, 2.0 * half[1], rings)
-                boxes = boxes_at(centres, half)
-                sets.append((boxes, centres, small, near))
-                for k in np.flatnonzero(obstacles.clear(boxes)):
-                    lead = (np.empty((0, 2, 2)) if near
-                            else leader(point, boxes[k], radius + LEADER_GAP_PX * px))
-                    if len(lead) and meets(taken, lead, np.full(1, margin)).any():
-                        continue
-                    return self._put_joint(name, centres[k], boxes[k], small, lead, obstacles)
-        boxes = np.concatenate([b for b, *_ in sets])
-        k = obstacles.best(boxes)
-        for boxes, centres, small, near in sets:
-            if k < len(boxes):
-                break
-            k -= len(boxes)
-        lead = np.empty((0, 2, 2)) if near else leader(point, boxes[k], radius + LEADER_GAP_PX * px)
-        return self._put_joint(name, centres[k], boxes[k], small, lead, obstacles)
+        # every ring at both sizes, checked at once (one call per joint keeps a frame cheap),
+        # then taken in order: the near rings at full size, then smaller, then farther out
+        centres, boxes, far, small = [], [], [], []
+        for shrink in (False, True):
+            half = self._halves[name] * (SMALL_TEXT if shrink else 1.0)
+            spots, ring = around(point, half, direction, gap, 2.0 * half[1])
+            centres.append(spots)
+            boxes.append(boxes_at(spots, half))
+            far.append(ring >= LEADER_RING)
+            small.append(np.full(len(ring), shrink))
+        centres, boxes = np.concatenate(centres), np.concatenate(boxes)
+        far, small = np.concatenate(far), np.concatenate(small)
+        order = np.lexsort((np.arange(len(far)), small, far))
+        clear = obstacles.clear(boxes[order])
+        for k in order[clear]:
+            lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
+            if len(lead) and meets(taken, lead, np.full(1, margin)).any():
+                continue
+            return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
+        k = order[obstacles.best(boxes[order])]
+        lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
+        return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
 
     def _put_joint(self, name: str, centre: np.ndarray, box, small: bool, lead: np.ndarray,
                    obstacles: Obstacles) -> np.ndarray:

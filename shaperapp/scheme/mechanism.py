@@ -214,6 +214,7 @@ class MechanismLayer(QObject):
         self.pivot_direction = corner / np.hypot(*corner)
         self._o2 = o2
         self._bodies = self._body_poses(rod)
+        self._frame_ends, self._frame_margins = self._frame_parts(design, rod)
         self.pins["O2"].setPos(*o2)
         self._o2 = o2
 
@@ -335,6 +336,32 @@ class MechanismLayer(QObject):
         if rod:
             parts.append((self.pins["C"], zero, f.joints[:, 2]))
         return [(outline(item), angle, pos) for item, angle, pos in parts]
+
+    def _frame_parts(self, design, rod: bool) -> tuple[np.ndarray, np.ndarray]:
+        """What a moving joint's name keeps off at each crank angle, (n, k, 2, 2) segments
+        and each one's margin (k,), mm: the blocks', ram's and tool's outlines (a few
+        straight sides), and each round-ended link and pin as its centre line with its half
+        width (the same outline, as a capsule, in far fewer segments than its curve)."""
+        f, n = self.frames, len(self.frames.tip)
+        zero, ram_pos = np.zeros(n), np.column_stack([f.ram_x, np.full(n, self.ram.y())])
+        point = np.zeros((1, 2, 2))
+        parts = [(outline(self._block_a), f.lever_deg, f.joints[:, 0], 0.0),
+                 (outline(self.ram), zero, ram_pos, 0.0), (outline(self._tool), zero, ram_pos, 0.0),
+                 (np.array([[[0.0, 0.0], [design.crank, 0.0]]]), f.crank_deg,
+                  np.broadcast_to(self._o2, (n, 2)), 0.55 * f.u),
+                 (np.array([[[0.0, 0.0], [design.lever, 0.0]]]), f.lever_deg, np.zeros((n, 2)),
+                  LEVER_HALF_WIDTH * f.u)]
+        parts += [(point, zero, f.joints[:, k], PIN_MOVING * f.u) for k in range(f.joints.shape[1])]
+        parts.append((np.array([[[0.0, 0.0], [design.rod, 0.0]]]), f.rod_deg, f.joints[:, 1], 0.5 * f.u)
+                     if rod else (outline(self._block_b), zero, f.joints[:, 1], 0.0))
+        ends = np.concatenate([posed(local, angle, pos).reshape(n, -1, 2, 2)
+                               for local, angle, pos, _ in parts], axis=1)
+        margins = np.concatenate([np.full(len(local), margin) for local, _, _, margin in parts])
+        return ends, margins
+
+    def frame_obstacles(self, index: int) -> tuple[np.ndarray, np.ndarray]:
+        """The moving bodies at crank-angle ``index``: segments (k × 2 × 2) and margins (k,), mm."""
+        return self._frame_ends[index], self._frame_margins
 
     def static_lines(self) -> np.ndarray:
         """The lines that stay put within a design (frame, guide, limits, circle, tool

@@ -22,29 +22,28 @@ def clear_of_segments(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) 
 
 
 def meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarray:
-    """(m, k) True where segment j comes within ``margins[j]`` of box i: each segment is
-    clipped to each widened box (Liang–Barsky), all at once."""
+    """(m, k) True where segment j meets box i widened by ``margins[j]`` on every side:
+    their bounding boxes overlap and the box's corners are not all on one side of the
+    segment's line (separating axes), all at once. The widened box's square corners keep
+    a little more than the margin there: on the safe side."""
     boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
     if len(ends) == 0 or len(boxes) == 0:
         return np.zeros((len(boxes), len(ends)), dtype=bool)
-    lows = np.stack([np.minimum(boxes[:, 0], boxes[:, 1]), np.minimum(boxes[:, 2], boxes[:, 3])], axis=1)
-    highs = np.stack([np.maximum(boxes[:, 0], boxes[:, 1]), np.maximum(boxes[:, 2], boxes[:, 3])], axis=1)
-    margin = np.broadcast_to(np.asarray(margins, dtype=float), (len(ends),))[None, :, None]
-    lows, highs = lows[:, None, :] - margin, highs[:, None, :] + margin       # (m, k, 2)
-    start, step = ends[None, :, 0, :], ends[None, :, 1, :] - ends[None, :, 0, :]
-    shape = (len(boxes), len(ends))
-    enter, leave = np.zeros(shape), np.ones(shape)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):   # ±inf: no crossing there
-        for axis in (0, 1):
-            s, d = start[..., axis], step[..., axis]
-            flat = np.broadcast_to(d == 0.0, shape)
-            outside = flat & ((s < lows[..., axis]) | (s > highs[..., axis]))
-            t_low = (lows[..., axis] - s) / d
-            t_high = (highs[..., axis] - s) / d
-            enter = np.where(flat, enter, np.maximum(enter, np.minimum(t_low, t_high)))
-            leave = np.where(flat, leave, np.minimum(leave, np.maximum(t_low, t_high)))
-            leave = np.where(outside, -1.0, leave)
-    return enter <= leave
+    margin = np.broadcast_to(np.asarray(margins, dtype=float), (len(ends),))
+    xs, ys = np.sort(boxes[:, :2], axis=1), np.sort(boxes[:, 2:], axis=1)
+    x0, y0, x1, y1 = ends[:, 0, 0], ends[:, 0, 1], ends[:, 1, 0], ends[:, 1, 1]
+    lo_x = xs[:, :1] - margin - x0           # (m, k): the widened box relative to each start
+    hi_x = xs[:, 1:] + margin - x0
+    lo_y = ys[:, :1] - margin - y0
+    hi_y = ys[:, 1:] + margin - y0
+    dx, dy = x1 - x0, y1 - y0
+    hit = ((np.minimum(dx, 0.0) <= hi_x) & (np.maximum(dx, 0.0) >= lo_x)
+           & (np.minimum(dy, 0.0) <= hi_y) & (np.maximum(dy, 0.0) >= lo_y))
+    across_lo, across_hi = dx * lo_y, dx * hi_y          # cross product at the corners
+    along_lo, along_hi = dy * lo_x, dy * hi_x
+    top = np.maximum(across_lo, across_hi) - np.minimum(along_lo, along_hi)
+    bottom = np.minimum(across_lo, across_hi) - np.maximum(along_lo, along_hi)
+    return hit & (top >= 0.0) & (bottom <= 0.0)
 
 
 def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray) -> np.ndarray:
@@ -62,8 +61,10 @@ class Obstacles:
     (and its leader) joins them, so the next one keeps clear of it too."""
 
     def __init__(self, ends: np.ndarray, margins: np.ndarray, boxes: np.ndarray | None = None,
-                 bounds: tuple[float, float, float, float] | None = None) -> None:
-        self.bounds = bounds             # (left, right, bottom, top): a label stays inside
+                 bounds: tuple[float, float, float, float] | None = None,
+                 raster: "Raster | None" = None) -> None:
+        self.bounds = bounds
+        self.raster = raster             # lines that stay put, checked on their grid             # (left, right, bottom, top): a label stays inside
         self.ends = np.asarray(ends, dtype=float).reshape(-1, 2, 2)
         self.margins = np.broadcast_to(np.asarray(margins, dtype=float), (len(self.ends),)).copy()
         # each segment's box widened by its margin, to pass over far segments quickly
@@ -81,6 +82,8 @@ class Obstacles:
         candidates = np.asarray(candidates, dtype=float).reshape(-1, 4)
         near = self._near(candidates)
         out = clear_of_segments(candidates, self.ends[near], self.margins[near])
+        if self.raster is not None:
+            out &= self.raster.hits(candidates) == 0
         return out & clear_of_boxes(candidates, np.array(self.boxes).reshape(-1, 4)) & self.inside(candidates)
 
     def inside(self, candidates: np.ndarray) -> np.ndarray:
@@ -106,6 +109,8 @@ class Obstacles:
         near = self._near(candidates)
         ends, margins = self.ends[near], self.margins[near]
         hits = meets(candidates, ends, margins).sum(axis=1) + 10000.0 * ~self.inside(candidates)
+        if self.raster is not None:
+            hits = hits + np.minimum(self.raster.hits(candidates), 100)
         for box in self.boxes:
             hits += 1000.0 * ~clear_of_boxes(candidates, np.array([box]))
         return int(np.argmin(hits))
@@ -199,3 +204,78 @@ def posed(local: np.ndarray, angle_deg: np.ndarray, pos: np.ndarray) -> np.ndarr
     pos = np.asarray(pos, dtype=float).reshape(-1, 1, 1, 2)
     out = np.stack([c * x - s * y, s * x + c * y], axis=-1) + pos
     return out.reshape(-1, 2, 2)
+
+
+def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.ndarray:
+    """The parts of segments ``ends`` (k × 2 × 2) inside ``bounds`` (left, right, bottom, top)."""
+    if len(ends) == 0:
+        return ends
+    lows, highs = np.array([bounds[0], bounds[2]]), np.array([bounds[1], bounds[3]])
+    start, step = ends[:, 0, :], ends[:, 1, :] - ends[:, 0, :]
+    enter, leave = np.zeros(len(ends)), np.ones(len(ends))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for axis in (0, 1):
+            flat = step[:, axis] == 0.0
+            t_low = (lows[axis] - start[:, axis]) / step[:, axis]
+            t_high = (highs[axis] - start[:, axis]) / step[:, axis]
+            enter = np.where(flat, enter, np.maximum(enter, np.minimum(t_low, t_high)))
+            leave = np.where(flat, leave, np.minimum(leave, np.maximum(t_low, t_high)))
+            leave[flat & ((start[:, axis] < lows[axis]) | (start[:, axis] > highs[axis]))] = -1.0
+    keep = enter <= leave
+    s, d = start[keep], step[keep]
+    return np.stack([s + enter[keep, None] * d, s + leave[keep, None] * d], axis=1)
+
+
+class Raster:
+    """Lines that stay put burnt into a grid of cells (about a pixel each) with its summed
+    table, so that any number of candidate boxes is checked against them in a few array
+    operations whatever the number of lines (the crank circle and the tool path alone
+    are some 700 segments). A box counts the marked cells it covers once widened by the
+    margin and a cell for the sampling; cells outside the grid (off the view) count as free."""
+
+    def __init__(self, ends: np.ndarray, bounds: tuple[float, float, float, float],
+                 cell: float, margin: float) -> None:
+        self.left, self.bottom, self.cell = bounds[0], bounds[2], float(cell)
+        self.margin = margin       # a box reaches into every cell it touches: rounding is on the safe side
+        self.nx = max(int(np.ceil((bounds[1] - bounds[0]) / cell)), 1)
+        self.ny = max(int(np.ceil((bounds[3] - bounds[2]) / cell)), 1)
+        self._grid = np.zeros((self.ny, self.nx), dtype=bool)
+        self._sat = np.zeros((self.ny + 1, self.nx + 1), dtype=np.int32)
+        self.burn(ends)
+
+    def burn(self, ends: np.ndarray) -> None:
+        """Mark the cells the segments pass through (sampled at half a cell)."""
+        ends = clipped(np.asarray(ends, dtype=float).reshape(-1, 2, 2),
+                       (self.left, self.left + self.nx * self.cell,
+                        self.bottom, self.bottom + self.ny * self.cell))
+        if len(ends):
+            d = ends[:, 1] - ends[:, 0]
+            count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
+            first = np.repeat(np.cumsum(count) - count, count)
+            t = (np.arange(count.sum()) - first) / np.repeat(np.maximum(count - 1, 1), count)
+            pts = np.repeat(ends[:, 0], count, axis=0) + t[:, None] * np.repeat(d, count, axis=0)
+            ix = np.clip(((pts[:, 0] - self.left) / self.cell).astype(int), 0, self.nx - 1)
+            iy = np.clip(((pts[:, 1] - self.bottom) / self.cell).astype(int), 0, self.ny - 1)
+            self._grid[iy, ix] = True
+        self._sat[1:, 1:] = self._grid.cumsum(axis=0, dtype=np.int32).cumsum(axis=1, dtype=np.int32)
+
+    def copy_with(self, ends: np.ndarray) -> "Raster":
+        """A raster of these lines and ``ends``."""
+        out = Raster.__new__(Raster)
+        out.__dict__.update(self.__dict__)
+        out._grid = self._grid.copy()
+        out._sat = self._sat.copy()
+        out.burn(ends)
+        return out
+
+    def hits(self, boxes: np.ndarray) -> np.ndarray:
+        """(m,) marked cells within each box (left, right, bottom, top) widened by the margin."""
+        b = np.asarray(boxes, dtype=float).reshape(-1, 4)
+        x = np.clip(np.floor((np.sort(b[:, :2], axis=1) + [-self.margin, self.margin] - self.left)
+                             / self.cell), 0, self.nx).astype(int)
+        y = np.clip(np.floor((np.sort(b[:, 2:], axis=1) + [-self.margin, self.margin] - self.bottom)
+                             / self.cell), 0, self.ny).astype(int)
+        x[:, 1] = np.minimum(x[:, 1] + 1, self.nx)
+        y[:, 1] = np.minimum(y[:, 1] + 1, self.ny)
+        s = self._sat
+        return s[y[:, 1], x[:, 1]] - s[y[:, 0], x[:, 1]] - s[y[:, 1], x[:, 0]] + s[y[:, 0], x[:, 0]]

@@ -150,8 +150,15 @@ class SchemeWidget(QWidget):
     def _dimensions_placed(self) -> None:
         """Every label placed again for the dimensions as they now are."""
         if self._geometry is not None and not self._stale:
-            self._labels.place_still(self._view.viewPixelSize(), self._bounds())
+            self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
             self._draw_forces(self._model.angle_index)
+
+    def _window(self) -> tuple[float, float, float, float]:
+        """The view and a quarter of it around, mm: where a label can be seen, and so where
+        the lines it keeps off are rasterised (a label farther out is off screen)."""
+        r = self._view.viewRect()
+        dx, dy = 0.25 * r.width(), 0.25 * r.height()
+        return r.left() - dx, r.right() + dx, r.top() - dy, r.bottom() + dy
 
     def _bounds(self) -> tuple[float, float, float, float]:
         """The drawing's extent (the arrows' reach included while shown), or the view where it
@@ -351,7 +358,7 @@ class SchemeWidget(QWidget):
             self._design = design
             if not self._still_fits():
                 self.fit()
-        self._labels.place_still(self._view.viewPixelSize(), self._bounds())
+        self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
         self._move(self._model.angle_index)
 
     def _on_angle(self, index: int) -> None:
