@@ -34,6 +34,9 @@ from .mechanism import Geometry, MechanismLayer
 # After an edit the view is kept while it holds the whole drawing and the drawing fills at
 # least this share of it across or up (a fresh fit fills about 93 %).
 FILL_KEPT = 0.8
+# A view the user zoomed or panned is kept after an edit unless the drawing moved or
+# grew or shrank by more than this share of its size (a large edit: then it is fitted).
+LARGE_EDIT = 0.25
 
 
 class SchemeWidget(QWidget):
@@ -45,6 +48,8 @@ class SchemeWidget(QWidget):
         self._design = None
         self._geometry: Geometry | None = None
         self._stale = self._angle_stale = True     # a hidden scheme (closed dock) waits
+        self._fitted: QRectF | None = None         # the view the last fit showed
+        self._opened = False                       # a file was opened: fit at the rebuild
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._catch_up)
@@ -118,6 +123,7 @@ class SchemeWidget(QWidget):
         model.resultsChanged.connect(self._on_results)
         model.angleChanged.connect(self._on_angle)
         model.forcesChanged.connect(self._on_forces)
+        model.loaded.connect(self._on_loaded)
         self._on_results()
 
     # ---- public ------------------------------------------------------
@@ -126,6 +132,41 @@ class SchemeWidget(QWidget):
         if self._geometry is not None:
             self._view.setRange(self._fit_rect(), padding=0.04)
             self._view.updateMatrix()     # now, not while preparing a paint (a second paint)
+            self._fitted = self._view.viewRect()
+
+    def _navigated(self) -> bool:
+        """Has the view changed since the last fit (a zoom, a pan, a resize)?"""
+        view, fitted = self._view.viewRect(), self._fitted
+        if fitted is None:
+            return True
+        tol = 1e-6 * max(fitted.width(), fitted.height())
+        return any(abs(a - b) > tol for a, b in zip(view.getCoords(), fitted.getCoords()))
+
+    def _large_edit(self, before: QRectF, after: QRectF) -> bool:
+        """Did the drawing move, grow or shrink by more than LARGE_EDIT of its size?"""
+        w, h = max(before.width(), 1e-9), max(before.height(), 1e-9)
+        return (abs(after.left() - before.left()) > LARGE_EDIT * w
+                or abs(after.right() - before.right()) > LARGE_EDIT * w
+                or abs(after.top() - before.top()) > LARGE_EDIT * h
+                or abs(after.bottom() - before.bottom()) > LARGE_EDIT * h)
+
+    def _refit_for(self, before: QRectF | None) -> None:
+        """After a new design (``before``: the previous one's drawing): a file just opened
+        is fitted; the view a fit showed is kept while the new drawing still fits it well;
+        a view the user zoomed, panned or resized is kept unless the edit was large or the
+        whole drawing it showed no longer fits in it."""
+        opened, self._opened = self._opened, False
+        view, after = self._view.viewRect(), self._geometry.fit_rect
+        if opened or before is None:
+            self.fit()
+        elif not self._navigated():
+            if not self._still_fits():
+                self.fit()
+        elif self._large_edit(before, after) or (view.contains(before) and not view.contains(after)):
+            self.fit()
+
+    def _on_loaded(self) -> None:
+        self._opened = True
 
     def _fit_rect(self) -> QRectF:
         """The drawing, with the force arrows' reach over the cycle while they are shown."""
@@ -350,14 +391,14 @@ class SchemeWidget(QWidget):
         self._stale = False
         fill_speed_combo(self._force_speed_box, self._model.rpms)   # keeps the speed if still there
         self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
+        before = None if self._geometry is None else self._geometry.fit_rect
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
         self._labels.rebuild()
         design = self._model.design
         if design != self._design:
             self._design = design
-            if not self._still_fits():
-                self.fit()
+            self._refit_for(before)
         self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
         self._move(self._model.angle_index)
 
