@@ -25,7 +25,8 @@ from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
-from .place import LEADER_RING, RINGS, Obstacles, Raster, around, boxes_at, clear_of_segments, leader, meets
+from .place import (LEADER_RING, RINGS, Obstacles, Raster, around, boxes_at, clear_of_segments, leader,
+                    leaders, meets)
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
@@ -97,6 +98,10 @@ class LabelLayout(QObject):
             dims.shift_label(name, shifts[k])
             self._chain.append(text_box(texts[name]))
             obstacles.add(self._chain[-1])
+        for name, small in self._small.items():      # measured at full size: a frame may shrink them
+            if small:
+                mech.labels[name].setFont(JOINT_FONTS[False])
+                self._small[name] = False
         self._halves = {name: self._half(item) for name, item in mech.labels.items()}
         self._still = {}
         for name in dims.placed():
@@ -227,7 +232,11 @@ class LabelLayout(QObject):
             if len(lead) and meets(taken, lead, np.full(1, margin)).any():
                 continue
             return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
-        k = order[obstacles.best(boxes[order])]
+        # nothing clear: the spot the fewest lines come near, but never one whose leader
+        # would cross a label
+        barred = far & meets(taken, leaders(point, boxes, radius + LEADER_GAP_PX * px),
+                             np.full(len(boxes), margin)).any(axis=0)
+        k = order[obstacles.best(boxes[order], barred[order])]
         lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
         return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
 
@@ -242,22 +251,30 @@ class LabelLayout(QObject):
         obstacles.add(ends=lead, margin=LINE_CLEAR_PX * self._px)
         return lead
 
+    def _keep_still(self, name: str, k: int, obstacles: Obstacles) -> np.ndarray:
+        """A still label at its candidate ``k`` for this frame, as an obstacle; returns its leader."""
+        if k != self._at[name]:
+            self._put_still(name, k)
+        centres, half, _ = self._still[name]
+        obstacles.add(boxes_at(centres[k], half)[0])
+        lead = self._leader_of(name)
+        obstacles.add(ends=lead, margin=LINE_CLEAR_PX * self._px)
+        return lead
+
     def _place_still_for(self, arrows: np.ndarray, obstacles: Obstacles) -> list[np.ndarray]:
         """The still labels as obstacles of this frame: each at its home, unless a force
         arrow of this frame runs through it there; then, for this frame, at its first
         candidate clear of everything. Returns their leaders."""
         margin = LINE_CLEAR_PX * self._px
-        leaders = []
+        leaders, crossed = [], []
+        # those that stay home first, so that one that has to move keeps clear of them too
         for name, (centres, half, _) in self._still.items():
-            boxes = boxes_at(centres, half)
             home = self._home[name]
-            k = home
-            if len(arrows) and not clear_of_segments(boxes[home], arrows, margin)[0]:
-                k = obstacles.best(boxes)
-            if k != self._at[name]:
-                self._put_still(name, k)
-            obstacles.add(boxes[k])
-            lead = self._leader_of(name)
-            obstacles.add(ends=lead, margin=margin)
-            leaders.append(lead)
+            if len(arrows) and not clear_of_segments(boxes_at(centres[home], half), arrows, margin)[0]:
+                crossed.append(name)
+                continue
+            leaders.append(self._keep_still(name, home, obstacles))
+        for name in crossed:
+            centres, half, _ = self._still[name]
+            leaders.append(self._keep_still(name, obstacles.best(boxes_at(centres, half)), obstacles))
         return leaders

@@ -99,12 +99,14 @@ class Obstacles:
         ok = np.flatnonzero(self.clear(candidates))
         return int(ok[0]) if len(ok) else -1
 
-    def best(self, candidates: np.ndarray) -> int:
+    def best(self, candidates: np.ndarray, barred: np.ndarray | None = None) -> int:
         """The first clear candidate, or where none is, the one that the fewest lines and
-        boxes come near (the first of those)."""
-        k = self.first_clear(candidates)
-        if k >= 0:
-            return k
+        boxes come near (the first of those); ``barred`` ones (m,) only when all are."""
+        ok = self.clear(candidates)
+        if barred is not None:
+            ok &= ~barred
+        if ok.any():
+            return int(np.flatnonzero(ok)[0])
         candidates = np.asarray(candidates, dtype=float).reshape(-1, 4)
         near = self._near(candidates)
         ends, margins = self.ends[near], self.margins[near]
@@ -113,6 +115,8 @@ class Obstacles:
             hits = hits + np.minimum(self.raster.hits(candidates), 100)
         for box in self.boxes:
             hits += 1000.0 * ~clear_of_boxes(candidates, np.array([box]))
+        if barred is not None:
+            hits = hits + 100000.0 * barred
         return int(np.argmin(hits))
 
     def add(self, box=None, ends: np.ndarray | None = None, margin=0.0) -> None:
@@ -187,6 +191,21 @@ def leader(point: np.ndarray, box, start_gap: float) -> np.ndarray:
     if end <= start_gap:
         return np.empty((0, 2, 2))
     return np.array([[point + e * start_gap, point + e * end]])
+
+
+def leaders(point: np.ndarray, boxes: np.ndarray, start_gap: float) -> np.ndarray:
+    """``leader`` to each of ``boxes`` (m × 4) at once: m × 2 × 2 (a zero-length one where
+    the box is too near for a leader)."""
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    centre = np.column_stack([boxes[:, :2].mean(axis=1), boxes[:, 2:].mean(axis=1)])
+    half = np.column_stack([np.abs(boxes[:, 1] - boxes[:, 0]), np.abs(boxes[:, 3] - boxes[:, 2])]) / 2.0
+    d = centre - point
+    length = np.hypot(d[:, 0], d[:, 1])
+    e = d / np.where(length > 0.0, length, 1.0)[:, None]
+    with np.errstate(divide="ignore"):
+        to_edge = np.min(np.where(np.abs(e) > 0, half / np.abs(e), np.inf), axis=1)
+    end = np.maximum(length - to_edge, start_gap)
+    return np.stack([point + e * start_gap, point + e * end[:, None]], axis=1)
 
 
 def local_segments(polygons: list[np.ndarray]) -> np.ndarray:
