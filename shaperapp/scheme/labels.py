@@ -47,6 +47,7 @@ class LabelLayout(QObject):
         self._static_lines = self._swept = np.empty((0, 2, 2))
         self._raster: Raster | None = None     # the lines that stay put, per design and zoom
         self._done: dict[tuple, tuple] = {}     # each frame's placement, per design and zoom
+        self._mm_per_px = (1.0, 1.0)
         self._px = 1.0
         self._still: dict[str, tuple] = {}     # still label: candidate centres, half size, rings
         self._home: dict[str, int] = {}        # ... its candidate for the design and zoom
@@ -91,9 +92,13 @@ class LabelLayout(QObject):
         axes, half_widths = mech.link_axes(None)
         obstacles.add(ends=axes, margin=half_widths + LINE_CLEAR_PX * px)
         self._chain = []
-        for name in ("L2", "h") if texts["L2"].isVisible() else ():
+        # the one with fewer places first (a part shorter than its text has one: where the
+        # chain's separation put it), so that the other keeps clear of it
+        chain = ("L2", "h") if texts["L2"].isVisible() else ()
+        moves = {name: dims.chain_moves(name) for name in chain}
+        for name in sorted(chain, key=lambda name: len(moves[name])):
             box = np.array(text_box(texts[name]))
-            shifts = dims.chain_moves(name)
+            shifts = moves[name]
             k = obstacles.best(box[None, :] + np.repeat(shifts, 2, axis=1))
             dims.shift_label(name, shifts[k])
             self._chain.append(text_box(texts[name]))
@@ -154,6 +159,7 @@ class LabelLayout(QObject):
         f = mech.frames
         if f is None or index >= len(f.tip) or not self._halves or self._raster is None:
             return
+        self._mm_per_px = mm_per_px
         arrows = self._forces.lines(index)
         key = (index, arrows.tobytes(), self._forces.pending_key())
         done = self._done.get(key)
@@ -162,6 +168,27 @@ class LabelLayout(QObject):
             return
         self._place_frame(index, arrows, mm_per_px)
         self._done[key] = self._state()
+
+    def precompute(self, count: int, current: int) -> bool:
+        """Place up to ``count`` frames not yet placed (from ``current`` on), the force
+        arrows hidden, then put ``current`` back: run while the application is idle after a
+        design or zoom change, so that the animation finds every frame placed. False when
+        every frame is placed (or there is nothing to place)."""
+        f = self._mechanism.frames
+        if f is None or not self._halves or self._raster is None or self._forces.visible():
+            return False
+        n, empty = len(f.tip), np.empty((0, 2, 2))
+        todo = [i for i in (np.arange(n) + current) % n if (int(i), b"", ()) not in self._done][:count]
+        if not todo:
+            return False
+        self.place_frame(current, self._mm_per_px)        # placed (and stored) first: put back last
+        state = self._done.get((current, b"", ()))
+        for i in todo:
+            self._place_frame(int(i), empty, self._mm_per_px)
+            self._done[(int(i), b"", ())] = self._state()
+        if state is not None:
+            self._restore(state)
+        return len(todo) == count
 
     def _state(self) -> tuple:
         """Where this frame's labels went: a frame seen again (the animation runs in cycles)
@@ -196,19 +223,18 @@ class LabelLayout(QObject):
         leaders = self._place_still_for(arrows, obstacles)
         for name, direction in mech.label_directions(index).items():
             if name != "O4":
-                leaders.append(self._place_joint(name, direction, obstacles))
+                leaders.append(self._place_joint(name, direction, obstacles, index))
         drawn = np.concatenate(leaders).reshape(-1, 2)
         self._leaders.set_data(drawn[:, 0], drawn[:, 1])
         self._forces.place_labels(u, mm_per_px, obstacles)
 
-    def _place_joint(self, name: str, direction: np.ndarray, obstacles: Obstacles) -> np.ndarray:
+    def _place_joint(self, name: str, direction: np.ndarray, obstacles: Obstacles, index: int) -> np.ndarray:
         """A moving joint's name: beside it (at its size, then one standard size smaller),
         else farther out with a leader that crosses no label; where nothing is clear, the
         spot the fewest lines come near. Returns its leader (maybe none)."""
         mech, px = self._mechanism, self._px
         u = mech.frames.u
-        pin = mech.pins[name]
-        point = np.array([pin.x(), pin.y()])
+        point = mech.joint_at(name, index)
         radius = (PIN_FIXED if name == "O2" else PIN_MOVING) * u
         gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
         taken = np.array(obstacles.boxes).reshape(-1, 4)

@@ -359,6 +359,10 @@ class MechanismLayer(QObject):
         margins = np.concatenate([np.full(len(local), margin) for local, _, _, margin in parts])
         return ends, margins
 
+    def joint_at(self, name: str, index: int) -> np.ndarray:
+        """Where joint ``name`` is at crank-angle ``index``, mm (O2 stays put)."""
+        return self._o2 if name == "O2" else self.frames.joints[index, MOVING.index(name)]
+
     def frame_obstacles(self, index: int) -> tuple[np.ndarray, np.ndarray]:
         """The moving bodies at crank-angle ``index``: segments (k × 2 × 2) and margins (k,), mm."""
         return self._frame_ends[index], self._frame_margins

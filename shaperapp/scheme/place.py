@@ -156,11 +156,10 @@ def around(point: np.ndarray, half: np.ndarray, preferred: np.ndarray, gap: floa
     centres (m, 2) and each one's ring (m,)."""
     d = directions(preferred)
     reach = np.abs(d) @ np.asarray(half)          # centre to the box's edge along d, at most
-    centres, ring = [], []
-    for k, extra in enumerate(rings):
-        centres.append(point + d * (gap + extra * step + reach)[:, None])
-        ring.append(np.full(len(d), k))
-    return np.concatenate(centres), np.concatenate(ring)
+    extra = np.asarray(rings, dtype=float)[:, None]
+    centres = point + d[None, :, :] * (gap + extra * step + reach[None, :])[:, :, None]
+    ring = np.repeat(np.arange(len(extra)), len(d))
+    return centres.reshape(-1, 2), ring
 
 
 def along(p: np.ndarray, q: np.ndarray, normal: np.ndarray, offset: float, half: np.ndarray,

@@ -37,6 +37,9 @@ FILL_KEPT = 0.8
 # A view the user zoomed or panned is kept after an edit unless the drawing moved or
 # grew or shrank by more than this share of its size (a large edit: then it is fitted).
 LARGE_EDIT = 0.25
+# While idle after a design or zoom change, the frames' labels are placed this many at a
+# time (a few ms each), so that the animation finds them placed.
+PRECOMPUTE_CHUNK = 8
 
 
 class SchemeWidget(QWidget):
@@ -50,9 +53,12 @@ class SchemeWidget(QWidget):
         self._stale = self._angle_stale = True     # a hidden scheme (closed dock) waits
         self._fitted: QRectF | None = None         # the view the last fit showed
         self._opened = False                       # a file was opened: fit at the rebuild
+        self._placed_view: tuple = ()              # the view the labels were last placed for
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._catch_up)
+        self._precompute_timer = QTimer(self, singleShot=True, interval=0)
+        self._precompute_timer.timeout.connect(self._precompute)
         self._plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
         self._plot.setAntialiasing(True)
         # one repaint of the rectangle around a frame's changes, not one per moved item
@@ -191,8 +197,15 @@ class SchemeWidget(QWidget):
     def _dimensions_placed(self) -> None:
         """Every label placed again for the dimensions as they now are."""
         if self._geometry is not None and not self._stale:
+            self._placed_view = self._view_key()
             self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
+            self._precompute_timer.start()
             self._draw_forces(self._model.angle_index)
+
+    def _view_key(self) -> tuple:
+        """The view's range and pixel size: the labels' placement depends on nothing else of it."""
+        r, px = self._view.viewRect(), self._view.viewPixelSize()
+        return (r.left(), r.top(), r.width(), r.height(), *px)
 
     def _window(self) -> tuple[float, float, float, float]:
         """The view and a quarter of it around, mm: where a label can be seen, and so where
@@ -208,7 +221,11 @@ class SchemeWidget(QWidget):
         return r.left(), r.right(), r.top(), r.bottom()
 
     def _zoomed(self, *_) -> None:
-        """The texts keep their size on screen: their size in mm changed, so they are placed again."""
+        """The texts keep their size on screen: their size in mm changed, so they are placed
+        again. pyqtgraph also reports an unchanged transform (a paint after labels moved):
+        that costs nothing, or every frame would search and rasterise again."""
+        if self._view_key() == self._placed_view:
+            return
         self._dimensions.separate_chain_labels()
         self._dimensions_placed()
 
@@ -399,8 +416,17 @@ class SchemeWidget(QWidget):
         if design != self._design:
             self._design = design
             self._refit_for(before)
+        self._placed_view = self._view_key()
         self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
+        self._precompute_timer.start()
         self._move(self._model.angle_index)
+
+    def _precompute(self) -> None:
+        """A few more frames' labels placed while idle (see PRECOMPUTE_CHUNK)."""
+        if self._geometry is None or self._stale or not self.isVisible():
+            return
+        if self._labels.precompute(PRECOMPUTE_CHUNK, self._model.angle_index):
+            self._precompute_timer.start()
 
     def _on_angle(self, index: int) -> None:
         """Only moves items (setPos/setRotation/setPath): no Python-side signal per frame.
