@@ -25,7 +25,7 @@ from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
-from .place import (LEADER_RING, RINGS, Obstacles, Raster, around, boxes_at, clear_of_segments, leader,
+from .place import (LEADER_RING, Obstacles, Raster, around, boxes_at, clear_of_segments, leader,
                     leaders, meets)
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line

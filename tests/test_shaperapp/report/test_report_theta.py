@@ -19,7 +19,8 @@ SIZE = (1600, 700)           # device px: the figure's box, about 17 × 7.5 cm a
 PX_PER_MM = SIZE[0] / 170.0
 
 
-def painted(paint, record: bool) -> tuple[np.ndarray, list]:
+def painted(paint) -> tuple[np.ndarray, list]:
+    """The figure painted on white paper: its darkest channel per pixel, and the texts drawn."""
     image = QImage(*SIZE, QImage.Format.Format_RGB32)
     image.fill(QColor("white"))
     painter = PaintRecorder(image)
@@ -38,11 +39,11 @@ def test_theta_is_written_on_blank_paper(qapp, monkeypatch, spec):
     views = figures.ReportViews(spec, rpms, None, analyze(spec.design(), rpms))
     try:
         paint = views.limit_schemes()
-        _, texts = painted(paint, True)
+        _, texts = painted(paint)
         thetas = [box for text, box in texts if text.startswith("θ")]
         assert len(thetas) == 2
         monkeypatch.setattr(figures, "_mark_theta", lambda *args, **kwargs: None)
-        bare, _ = painted(paint, False)
+        bare, _ = painted(paint)
     finally:
         views.close()
     for box in thetas:
