@@ -239,8 +239,8 @@ class LabelLayout(QObject):
         gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
         taken = np.array(obstacles.boxes).reshape(-1, 4)
         margin = LINE_CLEAR_PX * px
-        # every ring at both sizes, checked at once (one call per joint keeps a frame cheap),
-        # then taken in order: the near rings at full size, then smaller, then farther out
+        # every ring at both sizes, taken in order: the near rings at full size, then
+        # smaller, then farther out (with a leader)
         centres, boxes, far, small = [], [], [], []
         for shrink in (False, True):
             half = self._halves[name] * (SMALL_TEXT if shrink else 1.0)
@@ -252,12 +252,13 @@ class LabelLayout(QObject):
         centres, boxes = np.concatenate(centres), np.concatenate(boxes)
         far, small = np.concatenate(far), np.concatenate(small)
         order = np.lexsort((np.arange(len(far)), small, far))
-        clear = obstacles.clear(boxes[order])
-        for k in order[clear]:
-            lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
-            if len(lead) and meets(taken, lead, np.full(1, margin)).any():
-                continue
-            return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
+        near = order[~far[order]]               # most frames end among these: checked first, cheaply
+        for part in (near, order[far[order]]):
+            for k in part[obstacles.clear(boxes[part])]:
+                lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
+                if len(lead) and meets(taken, lead, np.full(1, margin)).any():
+                    continue
+                return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
         # nothing clear: the spot the fewest lines come near, but never one whose leader
         # would cross a label
         barred = far & meets(taken, leaders(point, boxes, radius + LEADER_GAP_PX * px),
