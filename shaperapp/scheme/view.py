@@ -40,6 +40,7 @@ LARGE_EDIT = 0.25
 # While idle after a design or zoom change, the frames' labels are placed this many at a
 # time (a few ms each), so that the animation finds them placed.
 PRECOMPUTE_CHUNK = 8
+PRECOMPUTE_PAUSE_MS = 50      # between two turns: the rest of the window's deferred work goes first
 
 
 class SchemeWidget(QWidget):
@@ -57,7 +58,7 @@ class SchemeWidget(QWidget):
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._catch_up)
-        self._precompute_timer = QTimer(self, singleShot=True, interval=0)
+        self._precompute_timer = QTimer(self, singleShot=True, interval=PRECOMPUTE_PAUSE_MS)
         self._precompute_timer.timeout.connect(self._precompute)
         self._plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
         self._plot.setAntialiasing(True)
