@@ -15,6 +15,8 @@ from core.metrics import analyze
 from core.spec import Spec
 from paint_recorder import PaintRecorder
 
+pytestmark = pytest.mark.slow      # about 3 s a design: the report's views are built and exported
+
 SIZE = (1600, 700)           # device px: the figure's box, about 17 × 7.5 cm at 240 dpi
 PX_PER_MM = SIZE[0] / 170.0
 
