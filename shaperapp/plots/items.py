@@ -148,6 +148,11 @@ class CurveItem(QGraphicsPathItem):
         self._antialias = bool(pg.getConfigOption("antialias"))
         self.x = self.y = np.empty(0)
 
+    @property
+    def connect(self) -> str:
+        """"finite" (a polyline broken at non-finite points) or "pairs" (a segment per two points)."""
+        return self._connect
+
     def set_data(self, x: np.ndarray, y: np.ndarray) -> None:
         x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
         self.x, self.y = x, y

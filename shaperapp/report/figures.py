@@ -15,8 +15,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Sequence
 
+import numpy as np
 from PySide6.QtCore import QByteArray, QCoreApplication, QEvent, QPointF, QRectF, QSizeF, Qt
-from PySide6.QtGui import QColor, QFont, QFontInfo, QFontMetricsF, QPainter, QPen, QTextDocument
+from PySide6.QtGui import QColor, QFont, QFontInfo, QFontMetricsF, QImage, QPainter, QPen, QTextDocument
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
 
@@ -42,6 +43,7 @@ from shaperapp.widgets.image_export import painting_bytes
 
 Paint = Callable[[QPainter, QRectF, float], None]
 FINE_STEP_DEG = 0.25
+INK_LEVEL = 235         # a pixel of the scheme darker than this in any channel is drawn on
 
 
 def _fit(renderer: QSvgRenderer, rect: QRectF) -> QRectF:
@@ -119,7 +121,7 @@ def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg
             font.setPixelSize(max(round(shot.text_px * k), 1))
             painter.setFont(font)
             _mark_theta(painter, drawn.topLeft(), k, shot, theta_deg,
-                        QFontMetricsF(font, painter.device()).height())
+                        QFontMetricsF(font, painter.device()).height(), renderer)
             painter.restore()
             _note(painter, f"{html.escape(captions[i])}<br>{scale_text(mu)}",
                   QPointF(rect.left() + i * cell_w, drawn.bottom() + 0.2 * line), cell_w)
@@ -153,8 +155,51 @@ def cam_paint(cam: Cam) -> Paint:
     return paint
 
 
+def theta_spots(ends: list[QPointF], o4: QPointF, radius: float, width: float,
+                height: float) -> list[QRectF]:
+    """Where θ's label may go, best first (device units, y down): right of the swing level
+    with the arc's end, then the nearest spots farther right, higher or lower (past the L3
+    dimension line and its label beside the lever's right limit), then the same left of
+    the arc's other end, then above the arc inside the swing."""
+    right, left = max(ends, key=QPointF.x), min(ends, key=QPointF.x)
+    gap = height / 3.0
+    shifts = sorted(((0.5 * i * height, j * height) for i in range(24) for j in (0, 1, -1, 2, -2, 3)),
+                    key=lambda d: math.hypot(*d))          # nearest first
+    out = [QRectF(right.x() + gap + dx, right.y() - height / 2 + dy, width, height) for dx, dy in shifts]
+    out += [QRectF(left.x() - gap - width - dx, left.y() - height / 2 + dy, width, height) for dx, dy in shifts]
+    out += [QRectF(o4.x() - width / 2, o4.y() - radius - (1.5 + i * 0.5) * height, width, height)
+            for i in range(8)]
+    return out
+
+
+def _theta_box(renderer: QSvgRenderer | None, origin: QPointF, k: float, spots: list[QRectF]) -> QRectF:
+    """The first spot where the scheme drew nothing (no line, no text): the scheme is
+    rendered once at its own size and each spot's pixels read back. The first spot when
+    every one is taken (or nothing to check against)."""
+    if renderer is None:
+        return spots[0]
+    box = renderer.viewBoxF()
+    image = QImage(max(int(math.ceil(box.width())), 1), max(int(math.ceil(box.height())), 1),
+                   QImage.Format.Format_RGB32)
+    image.fill(QColor("white"))
+    p = QPainter(image)
+    renderer.render(p, QRectF(0, 0, image.width(), image.height()))
+    p.end()
+    pixels = image.constBits()
+    ink = (np.frombuffer(pixels, dtype=np.uint8).reshape(image.height(), image.bytesPerLine() // 4, 4)
+           [:, :image.width(), :3].min(axis=2) < INK_LEVEL)
+    for spot in spots:
+        x0, x1 = (spot.left() - origin.x()) / k, (spot.right() - origin.x()) / k
+        y0, y1 = (spot.top() - origin.y()) / k, (spot.bottom() - origin.y()) / k
+        if x0 < 0 or y0 < 0 or x1 > image.width() or y1 > image.height():
+            continue                                  # off the scheme's picture
+        if not ink[int(y0):int(math.ceil(y1)), int(x0):int(math.ceil(x1))].any():
+            return spot
+    return spots[0]
+
+
 def _mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, theta_deg: float,
-                line: float) -> None:
+                line: float, renderer: QSvgRenderer | None = None) -> None:
     """Dashed lever limit positions O4–B', O4–B'' and the arc of θ between them at O4."""
     o4 = origin + shot.o4 * k
     tips = [origin + t * k for t in shot.tips]
@@ -168,12 +213,11 @@ def _mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, 
     painter.setPen(QPen(QColor("#37474f"), pen.widthF()))
     arc = QRectF(o4.x() - radius, o4.y() - radius, 2 * radius, 2 * radius)
     painter.drawArc(arc, round(angles[1] * 16), round((angles[0] - angles[1]) * 16))
-    # the label right of the swing, level with the arc's end: clear of the lever and frame
     label = f"θ = {theta_deg:.2f}°"
-    width = QFontMetricsF(painter.font(), painter.device()).horizontalAdvance(label)
-    end = math.radians(angles[1])
-    at = QPointF(o4.x() + radius * math.cos(end) + 0.4 * line, o4.y() - radius * math.sin(end))
-    box = QRectF(at.x(), at.y() - 0.6 * line, width + 0.4 * line, 1.2 * line)
+    width = QFontMetricsF(painter.font(), painter.device()).horizontalAdvance(label) + 0.4 * line
+    ends = [QPointF(o4.x() + radius * math.cos(math.radians(a)), o4.y() - radius * math.sin(math.radians(a)))
+            for a in angles]
+    box = _theta_box(renderer, origin, k, theta_spots(ends, o4, radius, width, 1.2 * line))
     painter.fillRect(box, QColor("white"))
     painter.setPen(QColor("#1b262c"))
     painter.drawText(box, Qt.AlignmentFlag.AlignCenter, label)

@@ -23,8 +23,9 @@ from shaperapp.design.model import DesignModel
 from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import fmt
 
-from .draw import DIM, Box, Pair, Z_DIM, arrow_head, body, overlaps, pen, segments, text_box
-from .mechanism import Geometry
+from .draw import DIM, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
+from .mechanism import Geometry, outline
+from .place import RINGS, along, around, leader
 
 L1_LEAD = 4.5            # the L1 label this many u beyond the crank circle, outside the lever
 NAMES = ("L2", "h", "L3", "L1", "H")     # the dimensions in drawing order
@@ -89,7 +90,10 @@ class DimensionLayer(QObject):
         self._visible = True
         self._chain: tuple[float, tuple] | None = None   # (y of O2, mid text positions of L2, h)
         self._chain_top = 0.0                             # y of the chain's top end (the guide)
-        self._l1_home: tuple = (0.0, 0.0)                 # L1's label at the end of its leader
+        self._spots: dict[str, tuple] = {}               # where L1, L3, H may go (candidates)
+        self._segments: list[Pair] = []
+        self._leader_index = 0
+        self._u = 1.0
 
     def update(self, model: DesignModel, g: Geometry) -> None:
         """Place the dimensions of the model's design; texts are translated here."""
@@ -107,8 +111,8 @@ class DimensionLayer(QObject):
         # L3 beside the lever's rightmost limit position.
         tips = g.limits.lever_tip.T
         tip = tips[int(np.argmax(tips[:, 0]))]
-        along = tip / np.hypot(*tip)
-        dims.append(linear_dim(np.zeros(2), tip, np.array([along[1], -along[0]]), 3.0 * u, u,
+        unit = tip / np.hypot(*tip)
+        dims.append(linear_dim(np.zeros(2), tip, np.array([unit[1], -unit[0]]), 3.0 * u, u,
                                self.tr("L3 = {0}").format(fmt(design.lever, ".1f"))))
         dims.append(crank_dim(o2, design.crank, design.theta, u,
                               self.tr("L1 = {0}").format(fmt(design.crank, ".1f"))))
@@ -116,21 +120,29 @@ class DimensionLayer(QObject):
         dims.append(linear_dim(np.array([g.tip_lo, g.tip_y]), np.array([g.tip_hi, g.tip_y]),
                                np.array([0.0, -1.0]), 2.6 * u, u,
                                self.tr("H = {0}").format(fmt(model.metrics.stroke_mm, ".1f"))))
-        self._lines.set_data(*segments([s for dim in dims for s in dim.segments] + extensions))
+        self._segments = [s for dim in dims for s in dim.segments] + extensions
+        self._leader_index = sum(len(dim.segments) for dim in dims[:NAMES.index("L1")]) + 1
+        self._lines.set_data(*segments(self._segments))
+        self._u = u
+        l1, l3, h_dim = dims[NAMES.index("L1")], dims[NAMES.index("L3")], dims[NAMES.index("H")]
+        normal = np.asarray(l1.arrows[0][1])
+        self._spots = {"L1": ("leader", np.asarray(l1.segments[1][0]), np.asarray(l1.segments[1][1]), normal),
+                       "L3": ("line", *map(np.asarray, l3.segments[0]), np.array([unit[1], -unit[0]])),
+                       "H": ("line", *map(np.asarray, h_dim.segments[0]), np.array([0.0, -1.0]))}
         heads = QPainterPath()
         for tip_pos, direction in (arrow for dim in dims for arrow in dim.arrows):
             heads.addPolygon(arrow_head(np.asarray(tip_pos), np.asarray(direction), u))
         self._heads.setPath(heads)
-        for item, dim in zip(self._texts, dims):
+        for name, item, dim in zip(NAMES, self._texts, dims):
             item.setText(dim.text)
             if item.angle != dim.angle:          # pyqtgraph re-lays the text out on each call
                 item.setAngle(dim.angle)
-            if tuple(item.anchor) != tuple(dim.anchor):
-                item.setAnchor(dim.anchor)
+            anchor = (0.5, 0.5) if name in self._spots else dim.anchor    # placed by centre
+            if tuple(item.anchor) != tuple(anchor):
+                item.setAnchor(anchor)
             item.setPos(*dim.text_pos)
         self._chain = (float(p1[1]), tuple(dim.text_pos for dim in dims[:2]))
         self._chain_top = float(p2[1])
-        self._l1_home = tuple(dims[NAMES.index("L1")].text_pos)
         self.separate_chain_labels()
 
     def separate_chain_labels(self) -> None:
@@ -142,7 +154,7 @@ class DimensionLayer(QObject):
             return
         shared, mids = self._chain
         l2, h = self._texts[:2]
-        for item, pos in zip((l2, h, self.texts()["L1"]), (*mids, self._l1_home)):
+        for item, pos in zip((l2, h), mids):
             item.setPos(*pos)
         # h's text no higher than the chain's top: a short h ("h = 206.0" beside a 3.7 m
         # lever) reached above the drawing and was cut at the view's top edge
@@ -156,29 +168,53 @@ class DimensionLayer(QObject):
             longer = 1 if above <= 0.0 and abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
             x, y = self._texts[longer].pos().x(), self._texts[longer].pos().y()
             self._texts[longer].setPos(x, y + math.copysign(overlap, mids[longer][1] - shared))
-        l1, box = self.texts()["L1"], text_box(h)
-        other = text_box(l1)
-        # a short h beside L1's label (K near 1) hidden under it: L1 moves down (a touch of
-        # their corners, as at K = 1.6, leaves both readable and L1 where it was)
-        if overlaps(box, other) and min(other[3], box[3]) - max(other[2], box[2]) > 0.5 * line:
-            l1.setPos(l1.pos().x(), l1.pos().y() - (other[3] - box[2]) - 0.3 * line)
-        self._clear_of_l1(l2, line)
 
-    def _clear_of_l1(self, l2: pg.TextItem, line: float) -> None:
-        """L1's label (at the end of its leader, left of the crank) may reach over the L2
-        label's upper end, hiding its last digits ("L2 = 282" for 282.0 at K = 1.6): L2's
-        label then moves down its part (not below it), and L1's right if still needed."""
-        l1 = self.texts()["L1"]
-        box, other = text_box(l2), text_box(l1)
-        if not overlaps(box, other):
-            return
-        # down, but not below its part (O4's level); what is left, L1 moves right
-        down = min(box[3] - other[2] + 0.3 * line, max(box[2], 0.0))
-        x, y = l2.pos().x(), l2.pos().y()
-        l2.setPos(x, y - down)
-        box = text_box(l2)
-        if overlaps(box, other):
-            l1.setPos(l1.pos().x() + box[1] - other[0] + 0.3 * line, l1.pos().y())
+    def candidates(self, name: str, half: np.ndarray, step: float) -> np.ndarray:
+        """Centres (m × 2) where the label ``name`` may go, best first, for a text of half
+        size ``half`` (mm at this zoom): L1's out along its leader (the leader follows);
+        L3's and H's along their dimension line, then across it."""
+        kind, p, q, normal = self._spots[name]
+        if kind == "leader":
+            reach = float(np.abs(normal) @ half)
+            side = np.array([-normal[1], normal[0]])
+            out = [q + normal * (k * step + reach) + side * s * step
+                   for k in range(0, 6) for s in (0.0, 1.0, -1.0, 2.0, -2.0)]
+            ring, _ = around(p, half, normal, float(np.hypot(*(q - p))), step)   # then all round
+            return np.concatenate([np.array(out), ring])
+        ring, _ = around((p + q) / 2.0, half, normal, 0.3 * self._u, step, RINGS[:4])   # then round its middle
+        return np.concatenate([along(p, q, normal, 0.3 * self._u, half), ring])
+
+    def chain_moves(self, name: str) -> np.ndarray:
+        """Shifts (m × 2, mm) of the L2 or h label, as it sits now, along its part of the
+        chain (its box kept within the part) and then across to the chain's other side."""
+        item = self.texts()[name]
+        left, right, bottom, top = text_box(item)
+        lo, hi = ((0.0, self._chain[0]) if name == "L2" else (self._chain[0], self._chain_top))
+        length = top - bottom
+        if hi - lo < length:
+            return np.zeros((1, 2))
+        line_x = right + 0.3 * self._u                      # the text sits left of the chain
+        out = []
+        for dx in (0.0, line_x + 0.3 * self._u - left):
+            for t in (0.5, 0.3, 0.7, 0.1, 0.9, 0.0, 1.0):
+                out.append((dx, lo + t * (hi - lo - length) - bottom))
+        return np.array(out)
+
+    def shift_label(self, name: str, shift: np.ndarray) -> None:
+        item = self.texts()[name]
+        item.setPos(item.pos().x() + float(shift[0]), item.pos().y() + float(shift[1]))
+
+    def move_label(self, name: str, centre: np.ndarray) -> None:
+        """Put the label ``name`` centred at ``centre``; L1's leader then ends at its box."""
+        item = self.texts()[name]
+        item.setPos(float(centre[0]), float(centre[1]))
+        if name == "L1":
+            box = text_box(item)
+            _, touch, _, normal = self._spots["L1"]
+            lead = leader(touch, box, 0.0)
+            end = lead[0, 1] if len(lead) else touch
+            self._segments[self._leader_index] = (tuple(touch), tuple(end))
+            self._lines.set_data(*segments(self._segments))
 
     def set_visible(self, visible: bool) -> None:
         self._visible = visible
@@ -199,6 +235,20 @@ class DimensionLayer(QObject):
             return np.empty((0, 2, 2))
         return np.column_stack([self._lines.x, self._lines.y]).reshape(-1, 2, 2)
 
-    def obstacles(self) -> list[Box]:
-        """The labels' boxes while shown: force labels keep off them."""
-        return [text_box(item) for item in self._texts] if self._visible else []
+    def fixed_lines(self) -> np.ndarray:
+        """The dimension lines and arrow heads drawn, without L1's leader (which follows
+        its label), mm, k × 2 × 2; none while hidden."""
+        if not self._visible:
+            return np.empty((0, 2, 2))
+        kept = self._segments[:self._leader_index] + self._segments[self._leader_index + 1:]
+        return np.concatenate([np.array(kept, dtype=float).reshape(-1, 2, 2), outline(self._heads)])
+
+    def leader_line(self) -> np.ndarray:
+        """L1's leader as drawn now (1 × 2 × 2, mm; none while hidden)."""
+        if not self._visible or not self._segments:
+            return np.empty((0, 2, 2))
+        return np.array([self._segments[self._leader_index]], dtype=float)
+
+    def placed(self) -> tuple[str, ...]:
+        """The labels placed by a search (``candidates``), the others sit on their chain."""
+        return tuple(self._spots) if self._visible else ()

@@ -160,3 +160,6 @@ class Tag(QGraphicsRectItem):
 
     def text(self) -> str:
         return self._shown
+
+    def anchor(self) -> tuple[float, float]:
+        return self._anchor

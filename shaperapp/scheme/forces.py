@@ -22,8 +22,9 @@ from PySide6.QtWidgets import QGraphicsItem
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.style import FORCE
 
-from .draw import Box, Pair, Tag, Z_BLOCK, Z_LABEL, body, overlaps, pen
+from .draw import Pair, Tag, Z_BLOCK, Z_LABEL, body, pen
 from .mechanism import PIN_FIXED, PIN_MOVING, Geometry
+from .place import Obstacles
 
 FORCE_NAMES = ("O2", "A", "O4", "B", "C", "guide", "cut")
 FORCE_SHARE = 0.35         # the cycle's largest force is drawn about this many L3 long
@@ -66,7 +67,7 @@ def label_spots(x: float, y: float, ox: float, oy: float, gap: float):
     (ox, oy): straight on first, then the compass directions nearest to it, then the
     same farther out; each as (x, y, anchor x, anchor y) with the box on that side."""
     directions = [(ox, oy)] + sorted(_COMPASS, key=lambda e: -(e[0] * ox + e[1] * oy))
-    for distance in (gap, 3.0 * gap):
+    for distance in (gap, 3.0 * gap, 6.0 * gap, 10.0 * gap):
         for ex, ey in directions:
             m = max(abs(ex), abs(ey))
             yield x + ex * distance, y + ey * distance, 0.5 - 0.5 * ex / m, 0.5 + 0.5 * ey / m
@@ -172,6 +173,7 @@ class ForceLayer(QObject):
         super().__init__(parent)
         self.frames: ForceFrames | None = None
         self._names: list[str] = []
+        self._pending: list = []        # the labels of the arrows last drawn, to be placed
         self._visible = False
         self.speed = 0                  # index of the crank speed drawn
         self._path = body(FORCE, Z_FORCE, pen(FORCE, 2.0))
@@ -206,6 +208,7 @@ class ForceLayer(QObject):
             for tag in self._tags:
                 tag.setVisible(False)
             self._names = []
+            self._pending = []
 
     def _current_frames(self, model: DesignModel, g: Geometry) -> ForceFrames | None:
         """The arrows of this design, geometry and speed, built when one of them changed."""
@@ -231,15 +234,17 @@ class ForceLayer(QObject):
         return QRectF(QPointF(float(xs.min()) - room, float(ys.min()) - room),
                       QPointF(float(xs.max()) + room, float(ys.max()) + room))
 
-    def draw(self, index: int, model: DesignModel, g: Geometry, mm_per_px: tuple[float, float],
-             obstacles: list[Box]) -> None:
-        """Put the prepared arrows of crank-angle ``index`` into the one force path."""
+    def draw(self, index: int, model: DesignModel, g: Geometry) -> None:
+        """Put the prepared arrows of crank-angle ``index`` into the one force path; the
+        labels wait for ``place_labels`` (the joint names are placed clear of the arrows
+        first, the magnitudes then clear of both)."""
+        self._pending = []
         if not self._visible:
             return
         ff = self._current_frames(model, g)
         names: list[str] = []
         path = QPainterPath()
-        labels = []
+        labels = self._pending
         if ff is not None and index < len(ff.shown):
             text = self._formats[ff.unit_N]
             rows = zip(FORCE_NAMES, self._tags, ff.coords[index].tolist(),
@@ -258,38 +263,67 @@ class ForceLayer(QObject):
                 path.closeSubpath()
                 names.append(name)
                 labels.append((magnitude, tag, text.format(magnitude / ff.unit_N), px, py, outward))
-            self._place_labels(labels, g.u, mm_per_px, obstacles)
         else:
             for tag in self._tags:
                 tag.setVisible(False)
         self._names = names
         self._path.setPath(path)
 
-    def _place_labels(self, labels: list, u: float, mm_per_px: tuple[float, float],
-                      obstacles: list[Box]) -> None:
-        """Put each magnitude label at its arrow's free end, or beside it, where it overlaps
-        no obstacle and no label already placed (larger forces first); a label with no
-        free spot is left out."""
+    def lines(self, index: int) -> np.ndarray:
+        """The arrows drawn at crank-angle ``index`` as segments (shaft, head), mm; none
+        while hidden."""
+        ff = self.frames
+        if not self._visible or ff is None or index >= len(ff.shown):
+            return np.empty((0, 2, 2))
+        c = ff.coords[index][ff.shown[index]].reshape(-1, 6, 2)
+        start, end, tip, left, right = (c[:, k] for k in range(5))
+        return np.stack([np.stack(pair, axis=1) for pair in
+                         ((start, end), (tip, left), (left, right), (right, tip))], axis=1).reshape(-1, 2, 2)
+
+    def place_labels(self, u: float, mm_per_px: tuple[float, float], obstacles: Obstacles) -> None:
+        """Put each magnitude label of the arrows drawn at its arrow's free end, or beside
+        it, where it keeps clear of every line and label already placed (larger forces
+        first); a label with no free spot is left out."""
+        labels, self._pending = self._pending, []
         px_w, px_h = mm_per_px
         if not (px_w > 0.0 and px_h > 0.0):
             for _, tag, *_rest in labels:
                 tag.setVisible(False)
             return
         gap = FORCE_LABEL_GAP * u
-        taken = list(obstacles)
         for _, tag, text, fx, fy, (ox, oy) in sorted(labels, key=lambda item: -item[0]):
             w, h = tag.set_text(text)
             w, h = w * px_w, h * px_h
-            for cx, cy, ax, ay in label_spots(fx, fy, ox, oy, gap):
-                left, top = cx - ax * w, cy + ay * h
-                box = (left, left + w, top - h, top)
-                if not any(overlaps(box, t) for t in taken):
-                    tag.move(cx, cy, (ax, ay))
-                    tag.setVisible(True)
-                    taken.append(box)
-                    break
-            else:
-                tag.setVisible(False)
+            spots = list(label_spots(fx, fy, ox, oy, gap))
+            boxes = np.array([(cx - ax * w, cx - ax * w + w, cy + ay * h - h, cy + ay * h)
+                              for cx, cy, ax, ay in spots])
+            k = obstacles.first_clear(boxes)
+            tag.setVisible(k >= 0)
+            if k >= 0:
+                cx, cy, ax, ay = spots[k]
+                tag.move(cx, cy, (ax, ay))
+                obstacles.add(boxes[k])
+
+    def visible(self) -> bool:
+        return self._visible
+
+    def pending_key(self) -> tuple:
+        """What the labels waiting to be placed say and where their arrows end: with the
+        arrows' own lines, all a frame's placement depends on besides the drawing."""
+        return tuple((text, fx, fy) for _, _, text, fx, fy, _ in self._pending)
+
+    def label_state(self) -> list[tuple]:
+        """The magnitude labels as placed now, for ``restore_labels``."""
+        return [(tag, tag.isVisible(), tag.text(), tag.x(), tag.y(), tag.anchor()) for tag in self._tags]
+
+    def restore_labels(self, state: list[tuple]) -> None:
+        """Put the magnitude labels back as ``label_state`` saw them (a frame seen before)."""
+        self._pending = []
+        for tag, visible, text, x, y, anchor in state:
+            tag.setVisible(visible)
+            if visible:
+                tag.set_text(text)
+                tag.move(x, y, anchor)
 
     def _show_caption(self) -> None:
         ff = self.frames

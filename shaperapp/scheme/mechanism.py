@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import pyqtgraph as pg
+from pyqtgraph.functions import ndarray_from_qpolygonf
 from PySide6.QtCore import QObject, QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath
 from PySide6.QtWidgets import QGraphicsEllipseItem
@@ -34,7 +35,8 @@ from shaperapp.widgets.style import FRAME, LINK, TOOL_PATH
 
 from .draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Pair, Z_BLOCK,
                           Z_CRANK, Z_FRAME, Z_GHOST, Z_JOINT, Z_LABEL, Z_LEVER, Z_PATH, Z_RAM,
-                          body, in_corner, meets_segments, pen, rect, segments, stadium, text_box)
+                          body, pen, rect, segments, stadium, text_box)
+from .place import local_segments, posed
 
 UNITS_PER_LEVER = 40.0     # drawing unit u = L3 / 40
 RETURN_LIFT = 0.35         # the return stroke of the tool path is drawn this many u higher
@@ -42,10 +44,37 @@ LIMIT_TOL_DEG = 1e-6       # a grid angle this close to a limit position counts 
 MOVING = ("A", "B", "C")
 JOINT_LABEL_CLEAR = 1.4      # × u from a joint to its label's near edge: past the lever's half width (0.8 u)
 LEVER_HALF_WIDTH = 0.8       # × u
-LINE_CLEAR = 0.3             # × u between a label and a line it keeps off
-GROUND_END = np.array([-1.0, -1.0]) / np.sqrt(2.0)   # from a fixed pivot to its ground line's left end
 LEFT = np.array([-1.0, 0.0])
 PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin marker radii, u
+
+
+def outline(item) -> np.ndarray:
+    """An item's painter path (an ellipse's circle, a curve's data) as segments in its
+    own frame."""
+    if isinstance(item, CurveItem):
+        pts = np.column_stack([item.x, item.y])
+        if item.connect == "pairs":
+            return pts.reshape(-1, 2, 2)
+        ends = np.stack([pts[:-1], pts[1:]], axis=1)
+        return ends[np.isfinite(ends).all(axis=(1, 2))]
+    if isinstance(item, QGraphicsEllipseItem):
+        path = QPainterPath()
+        path.addEllipse(item.rect())
+    else:
+        path = item.path()
+    return local_segments([ndarray_from_qpolygonf(p) for p in path.toSubpathPolygons()])
+
+
+def joint_font(points: int) -> QFont:
+    font = QFont()
+    font.setPointSize(points)
+    font.setBold(True)
+    font.setItalic(True)
+    return font
+
+
+JOINT_SIZES = (11, 9)        # pt: the joint names, and one standard size smaller where crowded
+JOINT_FONTS = {False: joint_font(JOINT_SIZES[0]), True: joint_font(JOINT_SIZES[1])}
 
 
 @dataclass(frozen=True)
@@ -121,11 +150,7 @@ class MechanismLayer(QObject):
         for it in (self._path_done, self.ram, self._crank, self._lever, self._block_a,
                    self._block_b, self._rod, *self.pins.values()):
             add(it)
-        font = QFont()
-        font.setPointSize(11)
-        font.setBold(True)
-        font.setItalic(True)
-        self._keep_off = np.empty((0, 2, 2))      # lines O4's label avoids (place_pivot_label)
+        font = JOINT_FONTS[False]
         self.labels: dict[str, pg.TextItem] = {}
         for name, text in (("O2", "O\u2082"), ("O4", "O\u2084"), ("A", "A"), ("B", "B"), ("C", "C")):
             label = pg.TextItem(text, color=LINK, anchor=(0.5, 0.5))
@@ -185,7 +210,11 @@ class MechanismLayer(QObject):
         self._path_all.set_data(tip[:, 0], tip[:, 1])
         self.pins["O4"].setPos(0.0, 0.0)
         left = limits.lever_tip.T[int(np.argmin(limits.lever_tip[0]))]
-        self._lever_left = left / np.hypot(*left)
+        corner = LEFT + left / np.hypot(*left)       # O4's label: between the lever's left limit and the level
+        self.pivot_direction = corner / np.hypot(*corner)
+        self._o2 = o2
+        self._bodies = self._body_poses(rod)
+        self._frame_ends, self._frame_margins = self._frame_parts(design, rod)
         self.pins["O2"].setPos(*o2)
         self._o2 = o2
 
@@ -291,41 +320,95 @@ class MechanismLayer(QObject):
             pairs.append(((hx, y), (hx + 0.7 * u, y + 0.7 * u)))
         return pairs
 
-    def place_pivot_label(self, keep_off: np.ndarray | None = None) -> None:
-        """O4's label in the corner between the lever at its leftmost limit and the
-        horizontal through O4, unless a line of ``keep_off`` (the dimension lines, kept
-        from the last call; L1's runs there in a design with a large K) does; then under
-        that horizontal, left of the ground symbol, where nothing else is drawn. (At a
-        fixed spot on the right, L3's extension line ran through it.) Per design, zoom
-        and dimensions shown, not per frame: nothing that moves comes there."""
-        if keep_off is not None:
-            self._keep_off = keep_off
+    def _body_poses(self, rod: bool) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+        """Each moving body's outline in its own frame (k × 2 × 2) with its rotation (n,)
+        and position (n × 2) at every crank angle: the lines labels keep off, per frame
+        or over the whole cycle, without asking Qt."""
+        f, n = self.frames, len(self.frames.tip)
+        zero = np.zeros(n)
+        ram_pos = np.column_stack([f.ram_x, np.full(n, self.ram.y())])
+        parts = [(self._crank, f.crank_deg, np.broadcast_to(self._o2, (n, 2))),
+                 (self._lever, f.lever_deg, np.zeros((n, 2))),
+                 (self._block_a, f.lever_deg, f.joints[:, 0]), (self.ram, zero, ram_pos),
+                 (self._tool, zero, ram_pos), (self.pins["A"], zero, f.joints[:, 0]),
+                 (self.pins["B"], zero, f.joints[:, 1])]
+        parts.append((self._rod, f.rod_deg, f.joints[:, 1]) if rod else (self._block_b, zero, f.joints[:, 1]))
+        if rod:
+            parts.append((self.pins["C"], zero, f.joints[:, 2]))
+        return [(outline(item), angle, pos) for item, angle, pos in parts]
+
+    def _frame_parts(self, design, rod: bool) -> tuple[np.ndarray, np.ndarray]:
+        """What a moving joint's name keeps off at each crank angle, (n, k, 2, 2) segments
+        and each one's margin (k,), mm: the blocks', ram's and tool's outlines (a few
+        straight sides), and each round-ended link and pin as its centre line with its half
+        width (the same outline, as a capsule, in far fewer segments than its curve)."""
+        f, n = self.frames, len(self.frames.tip)
+        zero, ram_pos = np.zeros(n), np.column_stack([f.ram_x, np.full(n, self.ram.y())])
+        point = np.zeros((1, 2, 2))
+        parts = [(outline(self._block_a), f.lever_deg, f.joints[:, 0], 0.0),
+                 (outline(self.ram), zero, ram_pos, 0.0), (outline(self._tool), zero, ram_pos, 0.0),
+                 (np.array([[[0.0, 0.0], [design.crank, 0.0]]]), f.crank_deg,
+                  np.broadcast_to(self._o2, (n, 2)), 0.55 * f.u),
+                 (np.array([[[0.0, 0.0], [design.lever, 0.0]]]), f.lever_deg, np.zeros((n, 2)),
+                  LEVER_HALF_WIDTH * f.u)]
+        parts += [(point, zero, f.joints[:, k], PIN_MOVING * f.u) for k in range(f.joints.shape[1])]
+        parts.append((np.array([[[0.0, 0.0], [design.rod, 0.0]]]), f.rod_deg, f.joints[:, 1], 0.5 * f.u)
+                     if rod else (outline(self._block_b), zero, f.joints[:, 1], 0.0))
+        ends = np.concatenate([posed(local, angle, pos).reshape(n, -1, 2, 2)
+                               for local, angle, pos, _ in parts], axis=1)
+        margins = np.concatenate([np.full(len(local), margin) for local, _, _, margin in parts])
+        return ends, margins
+
+    def joint_at(self, name: str, index: int) -> np.ndarray:
+        """Where joint ``name`` is at crank-angle ``index``, mm (O2 stays put)."""
+        return self._o2 if name == "O2" else self.frames.joints[index, MOVING.index(name)]
+
+    def frame_obstacles(self, index: int) -> tuple[np.ndarray, np.ndarray]:
+        """The moving bodies at crank-angle ``index``: segments (k × 2 × 2) and margins (k,), mm."""
+        return self._frame_ends[index], self._frame_margins
+
+    def static_lines(self) -> np.ndarray:
+        """The lines that stay put within a design (frame, guide, limits, circle, tool
+        path, fixed pins), mm, k × 2 × 2."""
+        items = (self._ground, self._guide_line, self._ghost_lines, self._circle, self._path_all,
+                 self.pins["O4"], self.pins["O2"])
+        parts = [posed(outline(item), np.zeros(1), np.array([item.pos().x(), item.pos().y()])) for item in items]
+        return np.concatenate(parts)
+
+    def frame_lines(self, index: int | None = None) -> np.ndarray:
+        """The moving bodies' outlines at crank-angle ``index``, or over the whole cycle
+        (every second angle) when None, and the tool path travelled, mm."""
+        pick = slice(None, None, 2) if index is None else slice(index, index + 1)
+        parts = [posed(local, angle[pick], pos[pick]) for local, angle, pos in self._bodies]
+        if index is not None:
+            parts.append(outline(self._path_done))
+        return np.concatenate(parts)
+
+    def link_axes(self, index: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """The lever's and the crank's centre lines at crank-angle ``index`` (or at every
+        angle when None) and each one's half width, mm: no label lies on a link, even
+        inside its outline."""
         f = self.frames
-        if f is None:
-            return
-        label, clear = self.labels["O4"], LINE_CLEAR * f.u
-        box = text_box(label)
-        half = np.array([abs(box[1] - box[0]), abs(box[3] - box[2])]) / 2.0
-        spot = in_corner(box, self._lever_left, LEFT, JOINT_LABEL_CLEAR * f.u, clear)
-        if meets_segments((spot[0] - half[0], spot[0] + half[0], spot[1] - half[1], spot[1] + half[1]),
-                          self._keep_off, clear):
-            spot = in_corner(box, LEFT, GROUND_END, clear, clear)
-        label.setPos(*spot)
+        pick = slice(None) if index is None else slice(index, index + 1)
+        a, b = f.joints[pick, 0], f.joints[pick, 1]
+        lever = np.stack([np.zeros_like(b), b], axis=1)
+        crank = np.stack([np.broadcast_to(self._o2, a.shape), a], axis=1)
+        margins = np.concatenate([np.full(len(lever), LEVER_HALF_WIDTH * f.u), np.full(len(crank), 0.55 * f.u)])
+        return np.concatenate([lever, crank]), margins
+
+    def label_directions(self, index: int) -> dict[str, np.ndarray]:
+        """Where each joint's label goes first, as a unit direction from its joint: A's
+        across the lever away from O2, O2's away from the lever, B's away from the rod,
+        C's down; O4's into the corner left of the lever's left limit."""
+        f = self.frames
+        out = {"A": f.away[index, 0], "O2": f.away[index, 1], "O4": self.pivot_direction}
+        for k, name in enumerate(MOVING[1:], start=1):
+            if self.labels[name].isVisible():
+                d = f.labels[index, k] - f.joints[index, k]
+                out[name] = d / np.hypot(*d)
+        return out
 
     # ---- per frame ---------------------------------------------------
-    def place_joint_labels(self) -> None:
-        """A's and O2's labels just clear of the lever (and so of the crank) along their
-        direction, however large the text is in mm at this zoom."""
-        f, index = self.frames, self._index
-        if f is None or index >= len(f.tip):
-            return
-        joints = {"A": f.joints[index, 0], "O2": self._o2}
-        for k, name in enumerate(("A", "O2")):
-            label, direction = self.labels[name], f.away[index, k]
-            left, right, bottom, top = text_box(label)
-            reach = 0.5 * (abs(direction[0]) * (right - left) + abs(direction[1]) * (top - bottom))
-            label.setPos(*(joints[name] + direction * (JOINT_LABEL_CLEAR * f.u + reach)))
-
     def show(self, index: int) -> bool:
         """Move everything to crank-angle ``index`` with setPos/setRotation/setPath only;
         False when there is no such index (nothing moved)."""
@@ -335,10 +418,7 @@ class MechanismLayer(QObject):
         joints = f.joints[index]
         for name, (x, y) in zip(MOVING, joints):
             self.pins[name].setPos(x, y)
-        for name, (x, y) in zip(MOVING, f.labels[index]):
-            self.labels[name].setPos(x, y)
         self._index = index
-        self.place_joint_labels()
         self._crank.setRotation(f.crank_deg[index])
         self._lever.setRotation(f.lever_deg[index])
         self._block_a.setPos(joints[0, 0], joints[0, 1])

@@ -27,12 +27,20 @@ from shaperapp.widgets.view_parts import fill_speed_combo
 from .dimensions import DimensionLayer
 from .draw import WHITE, Box, Pair
 from .forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
+from .labels import LabelLayout
 from .mechanism import Geometry, MechanismLayer
 
 
 # After an edit the view is kept while it holds the whole drawing and the drawing fills at
 # least this share of it across or up (a fresh fit fills about 93 %).
 FILL_KEPT = 0.8
+# A view the user zoomed or panned is kept after an edit unless the drawing moved or
+# grew or shrank by more than this share of its size (a large edit: then it is fitted).
+LARGE_EDIT = 0.25
+# While idle after a design or zoom change, the frames' labels are placed this many at a
+# time (a few ms each), so that the animation finds them placed.
+PRECOMPUTE_CHUNK = 8
+PRECOMPUTE_PAUSE_MS = 50      # between two turns: the rest of the window's deferred work goes first
 
 
 class SchemeWidget(QWidget):
@@ -44,9 +52,14 @@ class SchemeWidget(QWidget):
         self._design = None
         self._geometry: Geometry | None = None
         self._stale = self._angle_stale = True     # a hidden scheme (closed dock) waits
+        self._fitted: QRectF | None = None         # the view the last fit showed
+        self._opened = False                       # a file was opened: fit at the rebuild
+        self._placed_view: tuple = ()              # the view the labels were last placed for
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._catch_up)
+        self._precompute_timer = QTimer(self, singleShot=True, interval=PRECOMPUTE_PAUSE_MS)
+        self._precompute_timer.timeout.connect(self._precompute)
         self._plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
         self._plot.setAntialiasing(True)
         # one repaint of the rectangle around a frame's changes, not one per moved item
@@ -111,13 +124,13 @@ class SchemeWidget(QWidget):
         self._mechanism = MechanismLayer(add, self)
         self._dimensions = DimensionLayer(add, self)
         self._forces = ForceLayer(add, self._view, self)
-        self._view.sigTransformChanged.connect(self._dimensions.separate_chain_labels)
-        self._view.sigTransformChanged.connect(self._mechanism.place_joint_labels)   # text is screen-sized
-        self._view.sigTransformChanged.connect(lambda *_: self._mechanism.place_pivot_label())
+        self._labels = LabelLayout(add, self._mechanism, self._dimensions, self._forces, self)
+        self._view.sigTransformChanged.connect(self._zoomed)     # text is screen-sized
         self._retranslate()
         model.resultsChanged.connect(self._on_results)
         model.angleChanged.connect(self._on_angle)
         model.forcesChanged.connect(self._on_forces)
+        model.loaded.connect(self._on_loaded)
         self._on_results()
 
     # ---- public ------------------------------------------------------
@@ -126,6 +139,41 @@ class SchemeWidget(QWidget):
         if self._geometry is not None:
             self._view.setRange(self._fit_rect(), padding=0.04)
             self._view.updateMatrix()     # now, not while preparing a paint (a second paint)
+            self._fitted = self._view.viewRect()
+
+    def _navigated(self) -> bool:
+        """Has the view changed since the last fit (a zoom, a pan, a resize)?"""
+        view, fitted = self._view.viewRect(), self._fitted
+        if fitted is None:
+            return True
+        tol = 1e-6 * max(fitted.width(), fitted.height())
+        return any(abs(a - b) > tol for a, b in zip(view.getCoords(), fitted.getCoords()))
+
+    def _large_edit(self, before: QRectF, after: QRectF) -> bool:
+        """Did the drawing move, grow or shrink by more than LARGE_EDIT of its size?"""
+        w, h = max(before.width(), 1e-9), max(before.height(), 1e-9)
+        return (abs(after.left() - before.left()) > LARGE_EDIT * w
+                or abs(after.right() - before.right()) > LARGE_EDIT * w
+                or abs(after.top() - before.top()) > LARGE_EDIT * h
+                or abs(after.bottom() - before.bottom()) > LARGE_EDIT * h)
+
+    def _refit_for(self, before: QRectF | None) -> None:
+        """After a new design (``before``: the previous one's drawing): a file just opened
+        is fitted; the view a fit showed is kept while the new drawing still fits it well;
+        a view the user zoomed, panned or resized is kept unless the edit was large or the
+        whole drawing it showed no longer fits in it."""
+        opened, self._opened = self._opened, False
+        view, after = self._view.viewRect(), self._geometry.fit_rect
+        if opened or before is None:
+            self.fit()
+        elif not self._navigated():
+            if not self._still_fits():
+                self.fit()
+        elif self._large_edit(before, after) or (view.contains(before) and not view.contains(after)):
+            self.fit()
+
+    def _on_loaded(self) -> None:
+        self._opened = True
 
     def _fit_rect(self) -> QRectF:
         """The drawing, with the force arrows' reach over the cycle while they are shown."""
@@ -148,8 +196,39 @@ class SchemeWidget(QWidget):
         self._dimensions_placed()
 
     def _dimensions_placed(self) -> None:
-        """The pivot's label keeps off the dimension lines as they now are."""
-        self._mechanism.place_pivot_label(self._dimensions.lines())
+        """Every label placed again for the dimensions as they now are."""
+        if self._geometry is not None and not self._stale:
+            self._placed_view = self._view_key()
+            self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
+            self._precompute_timer.start()
+            self._draw_forces(self._model.angle_index)
+
+    def _view_key(self) -> tuple:
+        """The view's range and pixel size: the labels' placement depends on nothing else of it."""
+        r, px = self._view.viewRect(), self._view.viewPixelSize()
+        return (r.left(), r.top(), r.width(), r.height(), *px)
+
+    def _window(self) -> tuple[float, float, float, float]:
+        """The view and a quarter of it around, mm: where a label can be seen, and so where
+        the lines it keeps off are rasterised (a label farther out is off screen)."""
+        r = self._view.viewRect()
+        dx, dy = 0.25 * r.width(), 0.25 * r.height()
+        return r.left() - dx, r.right() + dx, r.top() - dy, r.bottom() + dy
+
+    def _bounds(self) -> tuple[float, float, float, float]:
+        """The drawing's extent (the arrows' reach included while shown), or the view where it
+        shows more (zoomed out): labels stay inside."""
+        r = self._fit_rect().united(self._view.viewRect())
+        return r.left(), r.right(), r.top(), r.bottom()
+
+    def _zoomed(self, *_) -> None:
+        """The texts keep their size on screen: their size in mm changed, so they are placed
+        again. pyqtgraph also reports an unchanged transform (a paint after labels moved):
+        that costs nothing, or every frame would search and rasterise again."""
+        if self._view_key() == self._placed_view:
+            return
+        self._dimensions.separate_chain_labels()
+        self._dimensions_placed()
 
     def dimensions_visible(self) -> bool:
         return self.dimensions_action.isChecked()
@@ -330,15 +409,25 @@ class SchemeWidget(QWidget):
         self._stale = False
         fill_speed_combo(self._force_speed_box, self._model.rpms)   # keeps the speed if still there
         self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
+        before = None if self._geometry is None else self._geometry.fit_rect
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.update(self._model, self._geometry)
-        self._mechanism.place_pivot_label(self._dimensions.lines())
+        self._labels.rebuild()
         design = self._model.design
         if design != self._design:
             self._design = design
-            if not self._still_fits():
-                self.fit()
+            self._refit_for(before)
+        self._placed_view = self._view_key()
+        self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
+        self._precompute_timer.start()
         self._move(self._model.angle_index)
+
+    def _precompute(self) -> None:
+        """A few more frames' labels placed while idle (see PRECOMPUTE_CHUNK)."""
+        if self._geometry is None or self._stale or not self.isVisible():
+            return
+        if self._labels.precompute(PRECOMPUTE_CHUNK, self._model.angle_index):
+            self._precompute_timer.start()
 
     def _on_angle(self, index: int) -> None:
         """Only moves items (setPos/setRotation/setPath): no Python-side signal per frame.
@@ -371,7 +460,8 @@ class SchemeWidget(QWidget):
         if self._stale:            # never on the previous design's geometry: the rebuild draws
             return
         self._forces_stale = False
-        if self._geometry is None or not self.forces_visible():
+        if self._geometry is None:
             return
-        obstacles = self._mechanism.obstacles() + self._dimensions.obstacles()
-        self._forces.draw(index, self._model, self._geometry, self._view.viewPixelSize(), obstacles)
+        if self.forces_visible():
+            self._forces.draw(index, self._model, self._geometry)
+        self._labels.place_frame(index, self._view.viewPixelSize())

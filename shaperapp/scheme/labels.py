@@ -1,0 +1,307 @@
+"""Where the scheme's labels go: no label crossed by a line or covering another (issue 32).
+
+Every label is placed by the search of place.py against every line drawn (the
+links', blocks', ram's and pins' outlines, the frame, the crank circle, the tool
+path, dimension lines and arrow heads, the force arrows) and every label placed
+before it, as large as the text is in mm at this zoom (its size is fixed on
+screen). Labels that do not move (O₄, L1, L3, H; L2 and h keep to their chain)
+are placed once per design, zoom and dimensions shown, clear of everything the
+moving bodies sweep over the whole cycle; a frame places only the moving joints'
+names (O₂, A, B, C) and the force magnitudes, and moves a still label only when a
+force arrow of that frame runs through it. A name that finds no room beside its
+joint goes a ring farther out with a leader line to it.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+from PySide6.QtCore import QObject
+
+from shaperapp.plots.items import CurveItem
+from shaperapp.widgets.style import LINK
+
+from .dimensions import DimensionLayer
+from .draw import Z_LABEL, pen, text_box
+from .forces import ForceLayer
+from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
+from .place import (LEADER_RING, Obstacles, Raster, around, boxes_at, clear_of_segments, leader,
+                    leaders, meets)
+
+LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
+LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
+SMALL_TEXT = 9.0 / 11.0
+RASTER_CELLS = 2.0e6         # the still lines' raster: at most this many cells (coarser when zoomed in far)      # the next standard size down, as a share of the joint names' size
+
+
+class LabelLayout(QObject):
+    """Places the joint names, the searched dimension labels and the force labels."""
+
+    def __init__(self, add: Callable[[object], None], mechanism: MechanismLayer,
+                 dimensions: DimensionLayer, forces: ForceLayer, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._mechanism, self._dimensions, self._forces = mechanism, dimensions, forces
+        self._leaders = CurveItem(pen(LINK, 0.8), connect="pairs")
+        self._leaders.setZValue(Z_LABEL)
+        add(self._leaders)
+        self._static_lines = self._swept = np.empty((0, 2, 2))
+        self._raster: Raster | None = None     # the lines that stay put, per design and zoom
+        self._done: dict[tuple, tuple] = {}     # each frame's placement, per design and zoom
+        self._mm_per_px = (1.0, 1.0)
+        self._px = 1.0
+        self._still: dict[str, tuple] = {}     # still label: candidate centres, half size, rings
+        self._home: dict[str, int] = {}        # ... its candidate for the design and zoom
+        self._at: dict[str, int] = {}          # ... and the one it is at now
+        self._chain: list = []                 # the L2 and h labels' boxes, mm
+        self._halves: dict[str, np.ndarray] = {}
+        self._bounds: tuple[float, float, float, float] | None = None
+        self._small: dict[str, bool] = {}        # joint names drawn one size smaller now
+
+    # ---- per design ----------------------------------------------------
+    def rebuild(self) -> None:
+        """Lines that stay put, and what the moving bodies sweep over the cycle."""
+        mech = self._mechanism
+        self._static_lines = mech.static_lines()
+        self._swept = mech.frame_lines(None)
+
+    def place_still(self, mm_per_px: tuple[float, float], bounds: tuple[float, float, float, float],
+                    window: tuple[float, float, float, float]) -> None:
+        """O₄, L1, L3 and H (per design, zoom and dimensions shown), clear of the frame, the
+        dimension lines, L2 and h, each other, and everything that moves. The lines that
+        stay put are burnt into a raster over ``window`` (the view and a margin) here, once,
+        for the frames to check their candidates against."""
+        mech, dims = self._mechanism, self._dimensions
+        self._px = px = float(max(mm_per_px))
+        self._done = {}
+        if mech.frames is None or not px > 0.0:
+            self._raster = None
+            return
+        u = mech.frames.u
+        texts = dims.texts()
+        self._bounds = bounds
+        fixed = np.concatenate([self._static_lines, dims.fixed_lines()])
+        # over the view and the whole drawing (a still label may sit off the view when
+        # zoomed in), at a pixel a cell or coarser: at most RASTER_CELLS cells
+        area = ((max(window[1], bounds[1]) - min(window[0], bounds[0]))
+                * (max(window[3], bounds[3]) - min(window[2], bounds[2])))
+        cell = max(px, float(np.sqrt(area / RASTER_CELLS)))
+        region = (min(window[0], bounds[0]), max(window[1], bounds[1]),
+                  min(window[2], bounds[2]), max(window[3], bounds[3]))
+        self._raster = Raster(fixed, region, cell, LINE_CLEAR_PX * px)
+        obstacles = Obstacles(np.empty((0, 2, 2)), 0.0, None, bounds, self._raster.copy_with(self._swept))
+        axes, half_widths = mech.link_axes(None)
+        obstacles.add(ends=axes, margin=half_widths + LINE_CLEAR_PX * px)
+        self._chain = []
+        # the one with fewer places first (a part shorter than its text has one: where the
+        # chain's separation put it), so that the other keeps clear of it
+        chain = ("L2", "h") if texts["L2"].isVisible() else ()
+        moves = {name: dims.chain_moves(name) for name in chain}
+        for name in sorted(chain, key=lambda name: len(moves[name])):
+            box = np.array(text_box(texts[name]))
+            shifts = moves[name]
+            k = obstacles.best(box[None, :] + np.repeat(shifts, 2, axis=1))
+            dims.shift_label(name, shifts[k])
+            self._chain.append(text_box(texts[name]))
+            obstacles.add(self._chain[-1])
+        for name, small in self._small.items():      # measured at full size: a frame may shrink them
+            if small:
+                mech.labels[name].setFont(JOINT_FONTS[False])
+                self._small[name] = False
+        self._halves = {name: self._half(item) for name, item in mech.labels.items()}
+        self._still = {}
+        for name in dims.placed():
+            half = self._half(texts[name])
+            centres = dims.candidates(name, half, 2.0 * half[1])
+            self._still[name] = (centres, half, np.zeros(len(centres), dtype=int))
+        gap = max(JOINT_LABEL_CLEAR * u, PIN_FIXED * u + 3.0 * px)
+        half = self._halves["O4"]
+        centres, ring = around(np.zeros(2), half, mech.pivot_direction, gap, 2.0 * half[1])
+        self._still["O4"] = (centres, half, ring)
+        self._home = {}
+        for name, (centres, half, _) in self._still.items():
+            boxes = boxes_at(centres, half)
+            k = obstacles.best(boxes)
+            self._home[name] = k
+            self._put_still(name, k)
+            obstacles.add(boxes[k])
+            obstacles.add(ends=self._leader_of(name), margin=LINE_CLEAR_PX * px)
+
+    def _put_still(self, name: str, k: int) -> None:
+        centre = self._still[name][0][k]
+        if name == "O4":
+            self._mechanism.labels["O4"].setPos(*centre)
+        else:
+            self._dimensions.move_label(name, centre)
+        self._at[name] = k
+
+    def _leader_of(self, name: str) -> np.ndarray:
+        """The leader of a still label as it is now placed (none at its first ring)."""
+        if name == "L1":
+            return self._dimensions.leader_line()
+        if name != "O4":
+            return np.empty((0, 2, 2))
+        centres, half, ring = self._still[name]
+        k = self._at[name]
+        if ring[k] < LEADER_RING:
+            return np.empty((0, 2, 2))
+        u = self._mechanism.frames.u
+        return leader(np.zeros(2), boxes_at(centres[k], half)[0], PIN_FIXED * u + LEADER_GAP_PX * self._px)
+
+    @staticmethod
+    def _half(item) -> np.ndarray:
+        left, right, bottom, top = text_box(item)
+        return np.array([abs(right - left), abs(top - bottom)]) / 2.0
+
+    # ---- per frame -----------------------------------------------------
+    def place_frame(self, index: int, mm_per_px: tuple[float, float]) -> None:
+        """The moving joints' names and the force labels at crank-angle ``index``."""
+        mech = self._mechanism
+        f = mech.frames
+        if f is None or index >= len(f.tip) or not self._halves or self._raster is None:
+            return
+        self._mm_per_px = mm_per_px
+        arrows = self._forces.lines(index)
+        key = (index, arrows.tobytes(), self._forces.pending_key())
+        done = self._done.get(key)
+        if done is not None:
+            self._restore(done)
+            return
+        self._place_frame(index, arrows, mm_per_px)
+        self._done[key] = self._state()
+
+    def precompute(self, count: int, current: int) -> bool:
+        """Place up to ``count`` frames not yet placed (from ``current`` on), the force
+        arrows hidden, then put ``current`` back: run while the application is idle after a
+        design or zoom change, so that the animation finds every frame placed. False when
+        every frame is placed (or there is nothing to place)."""
+        f = self._mechanism.frames
+        if f is None or not self._halves or self._raster is None or self._forces.visible():
+            return False
+        n, empty = len(f.tip), np.empty((0, 2, 2))
+        todo = [i for i in (np.arange(n) + current) % n if (int(i), b"", ()) not in self._done][:count]
+        if not todo:
+            return False
+        self.place_frame(current, self._mm_per_px)        # placed (and stored) first: put back last
+        state = self._done.get((current, b"", ()))
+        for i in todo:
+            self._place_frame(int(i), empty, self._mm_per_px)
+            self._done[(int(i), b"", ())] = self._state()
+        if state is not None:
+            self._restore(state)
+        return len(todo) == count
+
+    def _state(self) -> tuple:
+        """Where this frame's labels went: a frame seen again (the animation runs in cycles)
+        is put back from it, without a search."""
+        joints = {name: (label.x(), label.y(), self._small.get(name, False))
+                  for name, label in self._mechanism.labels.items() if name != "O4"}
+        leaders = (self._leaders.x.copy(), self._leaders.y.copy())
+        return dict(self._at), joints, leaders, self._forces.label_state()
+
+    def _restore(self, done: tuple) -> None:
+        at, joints, leaders, forces = done
+        for name, k in at.items():
+            if k != self._at.get(name):
+                self._put_still(name, k)
+        for name, (x, y, small) in joints.items():
+            label = self._mechanism.labels[name]
+            if self._small.get(name, False) != small:
+                label.setFont(JOINT_FONTS[small])
+                self._small[name] = small
+            label.setPos(x, y)
+        self._leaders.set_data(*leaders)
+        self._forces.restore_labels(forces)
+
+    def _place_frame(self, index: int, arrows: np.ndarray, mm_per_px: tuple[float, float]) -> None:
+        mech = self._mechanism
+        px, u = self._px, mech.frames.u
+        margin = LINE_CLEAR_PX * px
+        ends, margins = mech.frame_obstacles(index)
+        obstacles = Obstacles(np.concatenate([ends, arrows]),
+                              np.concatenate([margins + margin, np.full(len(arrows), margin)]),
+                              np.array(self._chain).reshape(-1, 4), self._bounds, self._raster)
+        leaders = self._place_still_for(arrows, obstacles)
+        for name, direction in mech.label_directions(index).items():
+            if name != "O4":
+                leaders.append(self._place_joint(name, direction, obstacles, index))
+        drawn = np.concatenate(leaders).reshape(-1, 2)
+        self._leaders.set_data(drawn[:, 0], drawn[:, 1])
+        self._forces.place_labels(u, mm_per_px, obstacles)
+
+    def _place_joint(self, name: str, direction: np.ndarray, obstacles: Obstacles, index: int) -> np.ndarray:
+        """A moving joint's name: beside it (at its size, then one standard size smaller),
+        else farther out with a leader that crosses no label; where nothing is clear, the
+        spot the fewest lines come near. Returns its leader (maybe none)."""
+        mech, px = self._mechanism, self._px
+        u = mech.frames.u
+        point = mech.joint_at(name, index)
+        radius = (PIN_FIXED if name == "O2" else PIN_MOVING) * u
+        gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
+        taken = np.array(obstacles.boxes).reshape(-1, 4)
+        margin = LINE_CLEAR_PX * px
+        # every ring at both sizes, taken in order: the near rings at full size, then
+        # smaller, then farther out (with a leader)
+        centres, boxes, far, small = [], [], [], []
+        for shrink in (False, True):
+            half = self._halves[name] * (SMALL_TEXT if shrink else 1.0)
+            spots, ring = around(point, half, direction, gap, 2.0 * half[1])
+            centres.append(spots)
+            boxes.append(boxes_at(spots, half))
+            far.append(ring >= LEADER_RING)
+            small.append(np.full(len(ring), shrink))
+        centres, boxes = np.concatenate(centres), np.concatenate(boxes)
+        far, small = np.concatenate(far), np.concatenate(small)
+        order = np.lexsort((np.arange(len(far)), small, far))
+        near = order[~far[order]]               # most frames end among these: checked first, cheaply
+        for part in (near, order[far[order]]):
+            for k in part[obstacles.clear(boxes[part])]:
+                lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
+                if len(lead) and meets(taken, lead, np.full(1, margin)).any():
+                    continue
+                return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
+        # nothing clear: the spot the fewest lines come near, but never one whose leader
+        # would cross a label
+        barred = far & meets(taken, leaders(point, boxes, radius + LEADER_GAP_PX * px),
+                             np.full(len(boxes), margin)).any(axis=0)
+        k = order[obstacles.best(boxes[order], barred[order])]
+        lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
+        return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
+
+    def _put_joint(self, name: str, centre: np.ndarray, box, small: bool, lead: np.ndarray,
+                   obstacles: Obstacles) -> np.ndarray:
+        label = self._mechanism.labels[name]
+        if self._small.get(name, False) != small:
+            label.setFont(JOINT_FONTS[small])
+            self._small[name] = small
+        label.setPos(*centre)
+        obstacles.add(box)
+        obstacles.add(ends=lead, margin=LINE_CLEAR_PX * self._px)
+        return lead
+
+    def _keep_still(self, name: str, k: int, obstacles: Obstacles) -> np.ndarray:
+        """A still label at its candidate ``k`` for this frame, as an obstacle; returns its leader."""
+        if k != self._at[name]:
+            self._put_still(name, k)
+        centres, half, _ = self._still[name]
+        obstacles.add(boxes_at(centres[k], half)[0])
+        lead = self._leader_of(name)
+        obstacles.add(ends=lead, margin=LINE_CLEAR_PX * self._px)
+        return lead
+
+    def _place_still_for(self, arrows: np.ndarray, obstacles: Obstacles) -> list[np.ndarray]:
+        """The still labels as obstacles of this frame: each at its home, unless a force
+        arrow of this frame runs through it there; then, for this frame, at its first
+        candidate clear of everything. Returns their leaders."""
+        margin = LINE_CLEAR_PX * self._px
+        leaders, crossed = [], []
+        # those that stay home first, so that one that has to move keeps clear of them too
+        for name, (centres, half, _) in self._still.items():
+            home = self._home[name]
+            if len(arrows) and not clear_of_segments(boxes_at(centres[home], half), arrows, margin)[0]:
+                crossed.append(name)
+                continue
+            leaders.append(self._keep_still(name, home, obstacles))
+        for name in crossed:
+            centres, half, _ = self._still[name]
+            leaders.append(self._keep_still(name, obstacles.best(boxes_at(centres, half)), obstacles))
+        return leaders

@@ -1,0 +1,299 @@
+"""Label placement as a search: candidate spots scored against every line and label drawn.
+
+As in cartography's point-feature labelling, a label gets a short list of
+candidate boxes, best first (beside its anchor on the preferred side, then the
+other sides, then farther out with a leader; along its dimension line, then
+flipped across it), and takes the first that no line and no label already
+placed comes near. Everything here is plain numpy in the drawing's mm; boxes
+are (left, right, bottom, top) rows, lines are segments k × 2 × 2, each with its
+own margin (a link's half width, or a few pixels for a thin line).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+RINGS = (0.0, 0.5, 1.0, 1.6, 2.4, 3.4, 4.6, 6.0)   # rings beyond the first, in text heights
+LEADER_RING = 2                          # from this ring on, a leader line leads to the label
+
+
+def clear_of_segments(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarray:
+    """(m,) True where box i keeps more than ``margins[j]`` from every segment j."""
+    return ~meets(boxes, ends, margins).any(axis=1)
+
+
+def meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarray:
+    """(m, k) True where segment j meets box i widened by ``margins[j]`` on every side:
+    their bounding boxes overlap and the box's corners are not all on one side of the
+    segment's line (separating axes), all at once. The widened box's square corners keep
+    a little more than the margin there: on the safe side."""
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    if len(ends) == 0 or len(boxes) == 0:
+        return np.zeros((len(boxes), len(ends)), dtype=bool)
+    margin = np.broadcast_to(np.asarray(margins, dtype=float), (len(ends),))
+    xs, ys = np.sort(boxes[:, :2], axis=1), np.sort(boxes[:, 2:], axis=1)
+    x0, y0, x1, y1 = ends[:, 0, 0], ends[:, 0, 1], ends[:, 1, 0], ends[:, 1, 1]
+    lo_x = xs[:, :1] - margin - x0           # (m, k): the widened box relative to each start
+    hi_x = xs[:, 1:] + margin - x0
+    lo_y = ys[:, :1] - margin - y0
+    hi_y = ys[:, 1:] + margin - y0
+    dx, dy = x1 - x0, y1 - y0
+    hit = ((np.minimum(dx, 0.0) <= hi_x) & (np.maximum(dx, 0.0) >= lo_x)
+           & (np.minimum(dy, 0.0) <= hi_y) & (np.maximum(dy, 0.0) >= lo_y))
+    across_lo, across_hi = dx * lo_y, dx * hi_y          # cross product at the corners
+    along_lo, along_hi = dy * lo_x, dy * hi_x
+    top = np.maximum(across_lo, across_hi) - np.minimum(along_lo, along_hi)
+    bottom = np.minimum(across_lo, across_hi) - np.maximum(along_lo, along_hi)
+    return hit & (top >= 0.0) & (bottom <= 0.0)
+
+
+def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray) -> np.ndarray:
+    """(m,) True where box i overlaps none of ``taken`` (touching edges do not overlap)."""
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    if len(taken) == 0:
+        return np.ones(len(boxes), dtype=bool)
+    b, t = boxes[:, None, :], np.asarray(taken, dtype=float)[None, :, :]
+    hit = (b[..., 0] < t[..., 1]) & (t[..., 0] < b[..., 1]) & (b[..., 2] < t[..., 3]) & (t[..., 2] < b[..., 3])
+    return ~hit.any(axis=1)
+
+
+class Obstacles:
+    """The lines and the labels' boxes one placement pass keeps clear of; a placed label
+    (and its leader) joins them, so the next one keeps clear of it too."""
+
+    def __init__(self, ends: np.ndarray, margins: np.ndarray, boxes: np.ndarray | None = None,
+                 bounds: tuple[float, float, float, float] | None = None,
+                 raster: "Raster | None" = None) -> None:
+        self.bounds = bounds
+        self.raster = raster             # lines that stay put, checked on their grid             # (left, right, bottom, top): a label stays inside
+        self.ends = np.asarray(ends, dtype=float).reshape(-1, 2, 2)
+        self.margins = np.broadcast_to(np.asarray(margins, dtype=float), (len(self.ends),)).copy()
+        # each segment's box widened by its margin, to pass over far segments quickly
+        self._lo = self.ends.min(axis=1) - self.margins[:, None]
+        self._hi = self.ends.max(axis=1) + self.margins[:, None]
+        self.boxes = [] if boxes is None else [tuple(b) for b in np.asarray(boxes).reshape(-1, 4)]
+
+    def _near(self, candidates: np.ndarray) -> np.ndarray:
+        lo = np.array([candidates[:, :2].min(), candidates[:, 2:].min()])
+        hi = np.array([candidates[:, :2].max(), candidates[:, 2:].max()])
+        return np.all((self._lo <= hi) & (self._hi >= lo), axis=1)
+
+    def clear(self, candidates: np.ndarray) -> np.ndarray:
+        """(m,) True where a candidate box keeps clear of every line and box."""
+        candidates = np.asarray(candidates, dtype=float).reshape(-1, 4)
+        near = self._near(candidates)
+        out = clear_of_segments(candidates, self.ends[near], self.margins[near])
+        if self.raster is not None:
+            out &= self.raster.hits(candidates) == 0
+        return out & clear_of_boxes(candidates, np.array(self.boxes).reshape(-1, 4)) & self.inside(candidates)
+
+    def inside(self, candidates: np.ndarray) -> np.ndarray:
+        """(m,) True where a candidate lies within the bounds (the drawing's extent)."""
+        if self.bounds is None:
+            return np.ones(len(candidates), dtype=bool)
+        left, right, bottom, top = self.bounds
+        return ((candidates[:, 0] >= left) & (candidates[:, 1] <= right)
+                & (candidates[:, 2] >= bottom) & (candidates[:, 3] <= top))
+
+    def first_clear(self, candidates: np.ndarray) -> int:
+        """Index of the first clear candidate, -1 if none is."""
+        ok = np.flatnonzero(self.clear(candidates))
+        return int(ok[0]) if len(ok) else -1
+
+    def best(self, candidates: np.ndarray, barred: np.ndarray | None = None) -> int:
+        """The first clear candidate, or where none is, the one that the fewest lines and
+        boxes come near (the first of those); ``barred`` ones (m,) only when all are."""
+        ok = self.clear(candidates)
+        if barred is not None:
+            ok &= ~barred
+        if ok.any():
+            return int(np.flatnonzero(ok)[0])
+        candidates = np.asarray(candidates, dtype=float).reshape(-1, 4)
+        near = self._near(candidates)
+        ends, margins = self.ends[near], self.margins[near]
+        hits = meets(candidates, ends, margins).sum(axis=1) + 10000.0 * ~self.inside(candidates)
+        if self.raster is not None:
+            hits = hits + np.minimum(self.raster.hits(candidates), 100)
+        for box in self.boxes:
+            hits += 1000.0 * ~clear_of_boxes(candidates, np.array([box]))
+        if barred is not None:
+            hits = hits + 100000.0 * barred
+        return int(np.argmin(hits))
+
+    def add(self, box=None, ends: np.ndarray | None = None, margin=0.0) -> None:
+        """A placed label's box, or lines with their margin (one, or one per segment)."""
+        if box is not None:
+            self.boxes.append(tuple(box))
+        if ends is not None and len(ends):
+            ends = np.asarray(ends, dtype=float).reshape(-1, 2, 2)
+            margin = np.broadcast_to(np.asarray(margin, dtype=float), (len(ends),))
+            self.ends = np.concatenate([self.ends, ends])
+            self.margins = np.concatenate([self.margins, margin])
+            self._lo = np.concatenate([self._lo, ends.min(axis=1) - margin[:, None]])
+            self._hi = np.concatenate([self._hi, ends.max(axis=1) + margin[:, None]])
+
+
+def boxes_at(centres: np.ndarray, half: np.ndarray) -> np.ndarray:
+    """Boxes (m, 4) of half size ``half`` (w/2, h/2) centred at ``centres`` (m, 2)."""
+    c = np.asarray(centres, dtype=float).reshape(-1, 2)
+    return np.column_stack([c[:, 0] - half[0], c[:, 0] + half[0], c[:, 1] - half[1], c[:, 1] + half[1]])
+
+
+def directions(preferred: np.ndarray, count: int = 16) -> np.ndarray:
+    """Unit directions (count, 2): ``preferred`` first, then the others of ``count``
+    evenly spaced, nearest to it first (the other side comes last)."""
+    start = np.arctan2(preferred[1], preferred[0])
+    steps = np.arange(count)
+    order = np.argsort(np.minimum(steps, count - steps), kind="stable")
+    angles = start + 2.0 * np.pi * steps[order] / count
+    return np.column_stack([np.cos(angles), np.sin(angles)])
+
+
+def around(point: np.ndarray, half: np.ndarray, preferred: np.ndarray, gap: float,
+           step: float, rings=RINGS) -> tuple[np.ndarray, np.ndarray]:
+    """Candidate centres around ``point`` (a pin, an arrow's end) for a text of half
+    size ``half``: its near edge ``gap`` from the point in each direction, the
+    preferred first, then the same a ring farther out (``step`` each). Returns the
+    centres (m, 2) and each one's ring (m,)."""
+    d = directions(preferred)
+    reach = np.abs(d) @ np.asarray(half)          # centre to the box's edge along d, at most
+    extra = np.asarray(rings, dtype=float)[:, None]
+    centres = point + d[None, :, :] * (gap + extra * step + reach[None, :])[:, :, None]
+    ring = np.repeat(np.arange(len(extra)), len(d))
+    return centres.reshape(-1, 2), ring
+
+
+def along(p: np.ndarray, q: np.ndarray, normal: np.ndarray, offset: float, half: np.ndarray,
+          ts=(0.5, 0.35, 0.65, 0.2, 0.8)) -> np.ndarray:
+    """Candidate centres beside the line p–q at the fractions ``ts`` along it: on the
+    ``normal`` side ``offset`` off it, then the same flipped across the line."""
+    reach = float(np.abs(normal) @ np.asarray(half))
+    out = []
+    for side in (1.0, -1.0):
+        for t in ts:
+            out.append(p + t * (q - p) + side * normal * (offset + reach))
+    return np.array(out)
+
+
+def leader(point: np.ndarray, box, start_gap: float) -> np.ndarray:
+    """A leader (1 × 2 × 2) from ``start_gap`` off ``point`` to the edge of ``box``."""
+    left, right, bottom, top = box
+    centre = np.array([(left + right) / 2.0, (bottom + top) / 2.0])
+    d = centre - point
+    length = float(np.hypot(*d))
+    if length == 0.0:
+        return np.empty((0, 2, 2))
+    e = d / length
+    half = np.array([(right - left) / 2.0, (top - bottom) / 2.0])
+    with np.errstate(divide="ignore"):
+        to_edge = float(np.min(np.where(np.abs(e) > 0, half / np.abs(e), np.inf)))
+    end = length - to_edge
+    if end <= start_gap:
+        return np.empty((0, 2, 2))
+    return np.array([[point + e * start_gap, point + e * end]])
+
+
+def leaders(point: np.ndarray, boxes: np.ndarray, start_gap: float) -> np.ndarray:
+    """``leader`` to each of ``boxes`` (m × 4) at once: m × 2 × 2 (a zero-length one where
+    the box is too near for a leader)."""
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    centre = np.column_stack([boxes[:, :2].mean(axis=1), boxes[:, 2:].mean(axis=1)])
+    half = np.column_stack([np.abs(boxes[:, 1] - boxes[:, 0]), np.abs(boxes[:, 3] - boxes[:, 2])]) / 2.0
+    d = centre - point
+    length = np.hypot(d[:, 0], d[:, 1])
+    e = d / np.where(length > 0.0, length, 1.0)[:, None]
+    with np.errstate(divide="ignore"):
+        to_edge = np.min(np.where(np.abs(e) > 0, half / np.abs(e), np.inf), axis=1)
+    end = np.maximum(length - to_edge, start_gap)
+    return np.stack([point + e * start_gap, point + e * end[:, None]], axis=1)
+
+
+def local_segments(polygons: list[np.ndarray]) -> np.ndarray:
+    """Segments k × 2 × 2 of polylines (each p × 2)."""
+    parts = [np.stack([p[:-1], p[1:]], axis=1) for p in polygons if len(p) >= 2]
+    return np.concatenate(parts) if parts else np.empty((0, 2, 2))
+
+
+def posed(local: np.ndarray, angle_deg: np.ndarray, pos: np.ndarray) -> np.ndarray:
+    """A rigid body's segments (k × 2 × 2, its own frame) rotated by each angle (n,) and
+    moved to each position (n × 2): (n·k) × 2 × 2 in the drawing."""
+    a = np.radians(np.atleast_1d(angle_deg))[:, None, None]
+    c, s = np.cos(a), np.sin(a)
+    x, y = local[None, :, :, 0], local[None, :, :, 1]
+    pos = np.asarray(pos, dtype=float).reshape(-1, 1, 1, 2)
+    out = np.stack([c * x - s * y, s * x + c * y], axis=-1) + pos
+    return out.reshape(-1, 2, 2)
+
+
+def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.ndarray:
+    """The parts of segments ``ends`` (k × 2 × 2) inside ``bounds`` (left, right, bottom, top)."""
+    if len(ends) == 0:
+        return ends
+    lows, highs = np.array([bounds[0], bounds[2]]), np.array([bounds[1], bounds[3]])
+    start, step = ends[:, 0, :], ends[:, 1, :] - ends[:, 0, :]
+    enter, leave = np.zeros(len(ends)), np.ones(len(ends))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for axis in (0, 1):
+            flat = step[:, axis] == 0.0
+            t_low = (lows[axis] - start[:, axis]) / step[:, axis]
+            t_high = (highs[axis] - start[:, axis]) / step[:, axis]
+            enter = np.where(flat, enter, np.maximum(enter, np.minimum(t_low, t_high)))
+            leave = np.where(flat, leave, np.minimum(leave, np.maximum(t_low, t_high)))
+            leave[flat & ((start[:, axis] < lows[axis]) | (start[:, axis] > highs[axis]))] = -1.0
+    keep = enter <= leave
+    s, d = start[keep], step[keep]
+    return np.stack([s + enter[keep, None] * d, s + leave[keep, None] * d], axis=1)
+
+
+class Raster:
+    """Lines that stay put burnt into a grid of cells (about a pixel each) with its summed
+    table, so that any number of candidate boxes is checked against them in a few array
+    operations whatever the number of lines (the crank circle and the tool path alone
+    are some 700 segments). A box counts the marked cells it covers once widened by the
+    margin and a cell for the sampling; cells outside the grid (off the view) count as free."""
+
+    def __init__(self, ends: np.ndarray, bounds: tuple[float, float, float, float],
+                 cell: float, margin: float) -> None:
+        self.left, self.bottom, self.cell = bounds[0], bounds[2], float(cell)
+        self.margin = margin       # a box reaches into every cell it touches: rounding is on the safe side
+        self.nx = max(int(np.ceil((bounds[1] - bounds[0]) / cell)), 1)
+        self.ny = max(int(np.ceil((bounds[3] - bounds[2]) / cell)), 1)
+        self._grid = np.zeros((self.ny, self.nx), dtype=bool)
+        self._sat = np.zeros((self.ny + 1, self.nx + 1), dtype=np.int32)
+        self.burn(ends)
+
+    def burn(self, ends: np.ndarray) -> None:
+        """Mark the cells the segments pass through (sampled at half a cell)."""
+        ends = clipped(np.asarray(ends, dtype=float).reshape(-1, 2, 2),
+                       (self.left, self.left + self.nx * self.cell,
+                        self.bottom, self.bottom + self.ny * self.cell))
+        if len(ends):
+            d = ends[:, 1] - ends[:, 0]
+            count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
+            first = np.repeat(np.cumsum(count) - count, count)
+            t = (np.arange(count.sum()) - first) / np.repeat(np.maximum(count - 1, 1), count)
+            pts = np.repeat(ends[:, 0], count, axis=0) + t[:, None] * np.repeat(d, count, axis=0)
+            ix = np.clip(((pts[:, 0] - self.left) / self.cell).astype(int), 0, self.nx - 1)
+            iy = np.clip(((pts[:, 1] - self.bottom) / self.cell).astype(int), 0, self.ny - 1)
+            self._grid[iy, ix] = True
+        self._sat[1:, 1:] = self._grid.cumsum(axis=0, dtype=np.int32).cumsum(axis=1, dtype=np.int32)
+
+    def copy_with(self, ends: np.ndarray) -> "Raster":
+        """A raster of these lines and ``ends``."""
+        out = Raster.__new__(Raster)
+        out.__dict__.update(self.__dict__)
+        out._grid = self._grid.copy()
+        out._sat = self._sat.copy()
+        out.burn(ends)
+        return out
+
+    def hits(self, boxes: np.ndarray) -> np.ndarray:
+        """(m,) marked cells within each box (left, right, bottom, top) widened by the margin."""
+        b = np.asarray(boxes, dtype=float).reshape(-1, 4)
+        x = np.clip(np.floor((np.sort(b[:, :2], axis=1) + [-self.margin, self.margin] - self.left)
+                             / self.cell), 0, self.nx).astype(int)
+        y = np.clip(np.floor((np.sort(b[:, 2:], axis=1) + [-self.margin, self.margin] - self.bottom)
+                             / self.cell), 0, self.ny).astype(int)
+        x[:, 1] = np.minimum(x[:, 1] + 1, self.nx)
+        y[:, 1] = np.minimum(y[:, 1] + 1, self.ny)
+        s = self._sat
+        return s[y[:, 1], x[:, 1]] - s[y[:, 0], x[:, 1]] - s[y[:, 1], x[:, 0]] + s[y[:, 0], x[:, 0]]

@@ -1,0 +1,160 @@
+"""No label of the scheme is crossed or covered (issue 32 item 3), checked as a user sees it.
+
+Every label shown (the joint names, the dimension texts, the force magnitudes) is
+read back as the viewport shows it, and every line drawn is read back from the
+scene's own items (each item's painter path mapped into the drawing's mm): link,
+block and ram outlines, pins, the frame's lines, the crank circle, the tool path,
+dimension and extension lines, arrow heads and the force arrows. A label is crossed
+when a point of such a line lies inside its box, checked on points spaced a small
+part of the label's size apart (independent of the clipping the placement uses).
+The PNG and SVG exports render this same scene, so they show what is checked here.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PySide6.QtGui import QPainterPath
+from PySide6.QtWidgets import QGraphicsEllipseItem, QGraphicsPathItem
+
+from gui_helpers import shown
+from shaperapp.scheme.view import SchemeWidget
+
+pytestmark = pytest.mark.slow
+
+DESIGNS = {
+    "default": {},
+    "K=1.6": {"time_ratio": 1.6},
+    "L1=50.7": {"crank": 50.7},
+    "K=5,H=2000": {"time_ratio": 5.0, "stroke": 2000.0},
+    "rod": {"variant": "rod", "rod_ratio": 0.3},
+}
+INSET_PX = 2.0       # a box's padding around the glyphs: a line may graze it
+
+
+def polygon_points(polygon) -> np.ndarray:
+    return np.array([(p.x(), p.y()) for p in polygon], dtype=float).reshape(-1, 2)
+
+
+def drawn_polylines(scheme) -> list[tuple[str, np.ndarray]]:
+    """Every path and ellipse item shown in the drawing, as polylines in mm."""
+    group = scheme._view.childGroup
+    out = []
+    stack = list(scheme._view.addedItems)
+    while stack:
+        item = stack.pop()
+        if not item.isVisible():
+            continue
+        stack.extend(item.childItems())
+        if isinstance(item, QGraphicsEllipseItem):
+            path = QPainterPath()
+            path.addEllipse(item.rect())
+        elif isinstance(item, QGraphicsPathItem):
+            path = item.path()
+        else:
+            continue
+        mapped = item.mapToItem(group, path)
+        for polygon in mapped.toSubpathPolygons():
+            pts = polygon_points(polygon)
+            if len(pts) >= 2:
+                out.append((type(item).__name__, pts))
+    return out
+
+
+def shown_labels(scheme) -> dict[str, tuple]:
+    """Every label shown in the pane (zoomed in, some lie outside it), by a name, as the
+    viewport shows it (left, right, bottom, top), mm."""
+    items = {f"joint {k}": v for k, v in scheme._mechanism.labels.items()}
+    items.update({f"dim {k}": v for k, v in scheme._dimensions.texts().items()})
+    items.update({f"force {k}": v for k, v in scheme._forces.tags().items()})
+    view = scheme._view.viewRect()
+    out = {}
+    for name, item in items.items():
+        box = scheme._screen_box(item)
+        if item.isVisible() and box[0] < view.right() and box[1] > view.left() \
+                and box[2] < view.bottom() and box[3] > view.top():
+            out[name] = box
+    return out
+
+
+def points_along(polyline: np.ndarray, spacing: float) -> np.ndarray:
+    """Points along the polyline, no farther apart than ``spacing``."""
+    out = [polyline[-1:]]
+    for p, q in zip(polyline[:-1], polyline[1:]):
+        n = max(2, int(np.ceil(np.hypot(*(q - p)) / spacing)) + 1)
+        t = np.linspace(0.0, 1.0, n)[:-1, None]
+        out.append(p + t * (q - p))
+    return np.concatenate(out)
+
+
+def clashes(scheme) -> list[tuple[str, str]]:
+    """(label, what crosses it) for every label crossed by a line or overlapping another label."""
+    px = max(scheme._view.viewPixelSize())
+    inset = INSET_PX * px
+    boxes = {name: (b[0] + inset, b[1] - inset, b[2] + inset, b[3] - inset)
+             for name, b in shown_labels(scheme).items()}
+    spacing = 2.0 * px                                    # far below any text's height
+    points = [(kind, points_along(line, spacing)) for kind, line in drawn_polylines(scheme)]
+    out = []
+    for name, (left, right, bottom, top) in boxes.items():
+        for kind, pts in points:
+            inside = ((pts[:, 0] > left) & (pts[:, 0] < right)
+                      & (pts[:, 1] > bottom) & (pts[:, 1] < top))
+            if inside.any():
+                out.append((name, kind))
+                break
+    names = list(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            p, q = boxes[a], boxes[b]
+            if p[0] < q[1] and q[0] < p[1] and p[2] < q[3] and q[2] < p[3]:
+                out.append((a, b))
+    return out
+
+
+def sweep(qtbot, scheme, model, zooms) -> list:
+    """Clashes at every fifth crank angle at each zoom (a factor on the fitted view)."""
+    found = []
+    for zoom in zooms:
+        scheme.fit()
+        scheme._view.scaleBy((zoom, zoom))
+        qtbot.wait(20)                                    # repainted, as on screen
+        for index in range(0, model.angle_count, 5):
+            model.set_angle_index(index)
+            scheme._catch_up()
+            found += [(zoom, index, *c) for c in clashes(scheme)]
+    return found
+
+
+CROWDED = pytest.mark.xfail(strict=True, reason=(
+    "residual, the laptop pane (420 x 330 px) with the forces shown only: at 3 of 72 angles "
+    "(95, 100, 295 of 360) no spot around B, within the rings searched, is clear of the force "
+    "arrows, the links and the labels placed before it, so B takes the spot the fewest lines "
+    "cross and a force arrow or a link outline still runs through it"))
+
+
+@pytest.mark.parametrize("design, forces", [
+    pytest.param(d, f, id=f"{d}-{'forces' if f else 'plain'}")
+    for d in DESIGNS for f in (False, True)])
+def test_no_label_crossed_at_any_angle_and_zoom(qtbot, model, design, forces):
+    """Issue 32: "L1 = 100.0" touched A and the L2/h line ran through it; at K = 1.6 L1
+    covered h; at L1 = 50.7 or K = 5, H = 2000 "L1", "A" and "O₄" were one pile; with
+    forces shown the 7.8 kN arrow ran through "O₂"."""
+    if DESIGNS[design]:
+        model.set_spec(**DESIGNS[design])
+        assert model.error is None
+    scheme = shown(qtbot, SchemeWidget(model), 900, 650)
+    scheme.set_forces_visible(forces)
+    found = sweep(qtbot, scheme, model, (1.0, 0.5, 1.5))
+    assert found == [], (len(found), found[:12])
+
+
+@pytest.mark.parametrize("design", [pytest.param("default", marks=CROWDED), "K=1.6", "K=5,H=2000"])
+def test_no_label_crossed_in_the_laptop_pane(qtbot, model, design):
+    """The mechanism pane of a 1366 × 768 screen, forces shown."""
+    if DESIGNS[design]:
+        model.set_spec(**DESIGNS[design])
+        assert model.error is None
+    scheme = shown(qtbot, SchemeWidget(model), 420, 330)
+    scheme.set_forces_visible(True)
+    found = sweep(qtbot, scheme, model, (1.0,))
+    assert found == [], (len(found), found[:12])
