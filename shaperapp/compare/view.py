@@ -29,6 +29,7 @@ from .plots import COLOURS, ComparePlots
 
 WHITE = QColor("white")
 BEST_BRUSH = QBrush(QColor(200, 235, 200))
+COLUMN_MAX_PX = 150     # a design's column: its name cut to this unless a value is wider
 
 
 class CompareView(QWidget):
@@ -236,7 +237,18 @@ class CompareView(QWidget):
                     item.setBackground(BEST_BRUSH)
                     item.setToolTip(self.tr("Best in this row"))
                 self.table.setItem(i, k, item)
+        for k, label in enumerate(result.labels):       # the whole name, however the column cuts it
+            self.table.horizontalHeaderItem(k).setToolTip(label)
         self.table.resizeColumnsToContents()
+        # A snapshot's name ("Design on screen, K 1.4 (snapshot 12:03:15)") made each column
+        # 305 px: on a laptop the scroll bar then took the table's second row. A column is
+        # at most as wide as its widest value or COLUMN_MAX_PX, the name cut at its end
+        # (what tells entries apart comes first in it) and whole in its tooltip.
+        header = self.table.horizontalHeader()
+        for k in range(self.table.columnCount()):
+            values = self.table.sizeHintForColumn(k)
+            self.table.setColumnWidth(k, min(header.sectionSize(k), max(values, COLUMN_MAX_PX)))
+        header.setTextElideMode(Qt.TextElideMode.ElideRight)
 
     # ---- export ----------------------------------------------------------------------------
     def export_csv(self, path: str) -> None:
