@@ -168,7 +168,9 @@ def test_phi_axes_ticks_are_degrees_and_the_positions_are_numbered(count):
     assert len(in_row) >= count // 2
 
 
-@pytest.mark.parametrize("size", ["A0", "A1", "A2", "A3"])
+# A1 and A3: the paper the course uses and the most crowded one (A0 and A2 lie between;
+# test_labels' random designs draw every paper). All four took 110 s of the suite.
+@pytest.mark.parametrize("size", ["A1", "A3"])
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_sheet_checks_hold_with_the_dimensions(case, size):
     for count in (6, 24):
