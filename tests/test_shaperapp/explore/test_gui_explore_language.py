@@ -2,22 +2,10 @@
 once, in the language of the moment, and stayed English in the Chinese window."""
 import re
 
-import pytest
 from PySide6.QtCore import QCoreApplication
 
 from language_checks import english_words
-from shaperapp.explore.view import ExploreView
 from shaperapp.widgets import i18n
-
-from gui_helpers import shown
-
-
-@pytest.fixture
-def view(qtbot, model):
-    widget = shown(qtbot, ExploreView(model), 760, 820)
-    yield widget
-    widget.shutdown()
-    i18n.set_language("en")
 
 
 def test_the_free_parameters_message_is_retranslated(qtbot, view):

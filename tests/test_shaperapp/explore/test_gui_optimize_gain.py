@@ -9,19 +9,8 @@ import numpy as np
 import pytest
 
 from core.kinematics import solve
-from shaperapp.explore.view import ExploreView
 from shaperapp.widgets import i18n
 from language_checks import english_words
-
-from gui_helpers import shown
-
-
-@pytest.fixture
-def view(qtbot, model):
-    widget = shown(qtbot, ExploreView(model), 760, 820)
-    yield widget
-    widget.shutdown()
-    i18n.set_language("en")
 
 
 def largest_accel(spec, crank: float, rpm: float) -> float:
