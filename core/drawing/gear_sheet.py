@@ -169,11 +169,30 @@ def _circle(centre: np.ndarray, radius: float, layer: str, box: Box) -> list[Ite
 
 
 def _mesh(pair: GearPair, area: Box, lab: Mapping[str, str]) -> tuple[float, Placement, list[Item]]:
-    g1, g2, a = pair.gear1, pair.gear2, pair.centre_mm
-    bounds = window(pair)
+    """The pair in mesh in ``area`` with its captions (the scale, how the teeth are cut)."""
     box = (area[0], area[1], area[2], area[3] - 3.2 * CAPTION)
-    scale = _scale(bounds, box[2] - box[0] - 2 * CENTRE_MARK, box[3] - box[1] - 2 * CENTRE_MARK)
-    place = fit(bounds, box, scale)
+    scale = mesh_scale(pair, box[2] - box[0], box[3] - box[1])
+    place, items = mesh_items(pair, box, scale)
+    middle = (area[0] + area[2]) / 2.0
+    items.append(caption(lab["mesh"].format(mu=number_text(scale / 1000.0), scale=ratio_text(scale)),
+                         (middle, area[3]), area[2] - area[0]))
+    items.append(caption(lab["mesh_note"], (middle, area[3] - 1.8 * CAPTION), area[2] - area[0], 3.5))
+    return scale, place, items
+
+
+def mesh_scale(pair: GearPair, width: float, height: float) -> float:
+    """The largest standard scale (model mm per paper mm) at which the pair's window and its
+    centre marks fit ``width`` × ``height`` paper mm."""
+    return _scale(window(pair), width - 2 * CENTRE_MARK, height - 2 * CENTRE_MARK)
+
+
+def mesh_items(pair: GearPair, box: Box, scale: float) -> tuple[Placement, list[Item]]:
+    """The pair in mesh at ``scale``, its window centred in ``box`` (paper mm), without
+    captions: the circles, the teeth, the centre lines, the line of action with N1, N2,
+    B1, B2 and the pb steps, α′ at P, and the point labels (symbols only, in no language).
+    The sheet and the report's gear figure both draw this."""
+    g1, g2, a = pair.gear1, pair.gear2, pair.centre_mm
+    place = fit(window(pair), box, scale)
     o1, o2 = place([0.0, 0.0]), place([a, 0.0])
     inner = (box[0] + 1.0, box[1] + 1.0, box[2] - 1.0, box[3] - 1.0)
     items: list[Item] = []
@@ -218,11 +237,7 @@ def _mesh(pair: GearPair, area: Box, lab: Mapping[str, str]) -> tuple[float, Pla
     plain, spans = marked(f"α′ = {math.degrees(pair.alpha_w):.2f}°")
     items += room.place(plain, (float(mid[0]), float(mid[1])), 3.5, (0.4, 1.0), gap=1.0, rings=6,
                         subscripts=spans)
-    middle = (area[0] + area[2]) / 2.0
-    items.append(caption(lab["mesh"].format(mu=number_text(scale / 1000.0), scale=ratio_text(scale)),
-                         (middle, area[3]), area[2] - area[0]))
-    items.append(caption(lab["mesh_note"], (middle, area[3] - 1.8 * CAPTION), area[2] - area[0], 3.5))
-    return scale, place, items
+    return place, items
 
 
 def _line_of_action(pair: GearPair, area: Box, lab: Mapping[str, str]) -> list[Item]:
