@@ -1673,6 +1673,18 @@
         <translation>指导教师：</translation>
     </message>
     <message>
+        <source>Gear meshing</source>
+        <translation>齿轮啮合图</translation>
+    </message>
+    <message>
+        <source>The design's gear pair is not valid: %1</source>
+        <translation>设计的齿轮副无效：%1</translation>
+    </message>
+    <message>
+        <source>The design has no gear pair: open a design file with one (its "gear" object) to draw the meshing sheet.</source>
+        <translation>该设计没有齿轮副：请打开含齿轮副（其 "gear" 对象）的设计文件，再绘制齿轮啮合图。</translation>
+    </message>
+    <message>
         <source>The sheet cannot be drawn: %1</source>
         <translation>无法绘制图纸：%1</translation>
     </message>
@@ -3800,6 +3812,238 @@
     <message>
         <source>Supervisor</source>
         <translation>指导教师</translation>
+    </message>
+    <message>
+        <source>Meshing without backlash.</source>
+        <translation>无侧隙啮合。</translation>
+    </message>
+    <message>
+        <source>Least shift without undercut.</source>
+        <translation>不根切的最小变位系数。</translation>
+    </message>
+    <message>
+        <source>Each gear.</source>
+        <translation>各齿轮。</translation>
+    </message>
+    <message>
+        <source>Line of action and contact ratio.</source>
+        <translation>啮合线与重合度。</translation>
+    </message>
+    <message>
+        <source>%1 The gear pair</source>
+        <translation>%1 齿轮机构</translation>
+    </message>
+    <message>
+        <source>The gear pair cannot be made: %1</source>
+        <translation>无法设计该齿轮副：%1</translation>
+    </message>
+    <message>
+        <source>The pair in mesh at a′ = %1 mm, to scale %2 (μl = %3 mm/mm), the teeth as the rack cuts them; the pinion 1 drives counter-clockwise. N1N2 the line of action, B1B2 the actual one, P the pitch point</source>
+        <translation>中心距 a′ = %1 mm 处啮合的齿轮副，比例 %2（μl = %3 mm/mm），齿廓为齿条刀具展成所得；小齿轮 1 为主动轮，逆时针转动。N1N2 为理论啮合线，B1B2 为实际啮合线，P 为节点</translation>
+    </message>
+    <message>
+        <source>Teeth z_1 / z_2</source>
+        <translation>齿数 z_1 / z_2</translation>
+    </message>
+    <message>
+        <source>Module m</source>
+        <translation>模数 m</translation>
+    </message>
+    <message>
+        <source>m = %1 mm is not a module of GB/T 1357's first series</source>
+        <translation>m = %1 mm 不是 GB/T 1357 第一系列的模数</translation>
+    </message>
+    <message>
+        <source>Basic rack α, h_a*, c*</source>
+        <translation>基本齿条 α、h_a*、c*</translation>
+    </message>
+    <message>
+        <source>neither shifts nor a centre distance (the rule)</source>
+        <translation>既未给定变位系数也未给定中心距（按规则确定）</translation>
+    </message>
+    <message>
+        <source>Given</source>
+        <translation>给定</translation>
+    </message>
+    <message>
+        <source>Least tip thickness s_a</source>
+        <translation>最小齿顶厚 s_a</translation>
+    </message>
+    <message>
+        <source>Least contact ratio ε</source>
+        <translation>最小重合度 ε</translation>
+    </message>
+    <message>
+        <source>The pinion, with fewer teeth, is the one that undercuts, so it gets its least shift without undercut (not below 0) and the gear the rest; if that left the gear undercut, the pinion would give up what the gear needs.</source>
+        <translation>小齿轮齿数较少，是会发生根切的一方，因此取其不根切的最小变位系数（不小于 0），其余归大齿轮；若大齿轮因此根切，则小齿轮让出大齿轮所需的部分。</translation>
+    </message>
+    <message>
+        <source>The shifts x_1 = %1 and x_2 = %2 are given; α′ and a′ follow from the no-backlash condition. Least shifts without undercut: x_1min = %3, x_2min = %4.</source>
+        <translation>给定变位系数 x_1 = %1、x_2 = %2；α′ 与 a′ 由无侧隙啮合条件求得。不根切的最小变位系数：x_1min = %3，x_2min = %4。</translation>
+    </message>
+    <message>
+        <source>The centre distance a′ = %7 mm is given: the no-backlash condition asks x_1 + x_2 = %8, shared out as x_1 = %1, x_2 = %2 (x_1min = %3, x_2min = %4).</source>
+        <translation>给定中心距 a′ = %7 mm：由无侧隙啮合条件得 x_1 + x_2 = %8，分配为 x_1 = %1、x_2 = %2（x_1min = %3，x_2min = %4）。</translation>
+    </message>
+    <message>
+        <source>Neither shifts nor a centre distance are given, and z_1 + z_2 = %5 ≥ 2 z_min = %6: the pinion gets its least shift without undercut, x_1 = max(x_1min, 0) = %1, and the gear x_2 = −x_1 = %2, so a′ = a = %7 mm (a height-modified pair).</source>
+        <translation>未给定变位系数和中心距，且 z_1 + z_2 = %5 ≥ 2 z_min = %6：小齿轮取不根切的最小变位系数 x_1 = max(x_1min, 0) = %1，大齿轮取 x_2 = −x_1 = %2，故 a′ = a = %7 mm（高度变位齿轮传动）。</translation>
+    </message>
+    <message>
+        <source>Neither shifts nor a centre distance are given, and z_1 + z_2 = %5 &lt; 2 z_min = %6, so x_2 = −x_1 would undercut the gear: the least positive pair (x_1min = %3, x_2min = %4) meshes at %9 mm, rounded up to 0.5 mm a′ = %7 mm, which asks x_1 + x_2 = %8, shared out as x_1 = %1, x_2 = %2.</source>
+        <translation>未给定变位系数和中心距，且 z_1 + z_2 = %5 &lt; 2 z_min = %6，取 x_2 = −x_1 时大齿轮将根切：最小的正变位组合（x_1min = %3，x_2min = %4）在中心距 %9 mm 处啮合，按 0.5 mm 向上圆整得 a′ = %7 mm，由此得 x_1 + x_2 = %8，分配为 x_1 = %1、x_2 = %2。</translation>
+    </message>
+    <message>
+        <source>Centre distance a′ (a)</source>
+        <translation>中心距 a′ (a)</translation>
+    </message>
+    <message>
+        <source>Working pressure angle α′</source>
+        <translation>啮合角 α′</translation>
+    </message>
+    <message>
+        <source>Centre shift factor y / addendum reduction factor Δy</source>
+        <translation>中心距变动系数 y / 齿顶高降低系数 Δy</translation>
+    </message>
+    <message>
+        <source>Line of action N1N2 / actual line of action B1B2</source>
+        <translation>理论啮合线 N1N2 / 实际啮合线 B1B2</translation>
+    </message>
+    <message>
+        <source>Base pitch pb</source>
+        <translation>基圆齿距 pb</translation>
+    </message>
+    <message>
+        <source>Contact ratio ε</source>
+        <translation>重合度 ε</translation>
+    </message>
+    <message>
+        <source>Teeth z</source>
+        <translation>齿数 z</translation>
+    </message>
+    <message>
+        <source>Shift factor x</source>
+        <translation>变位系数 x</translation>
+    </message>
+    <message>
+        <source>Least shift x_min</source>
+        <translation>最小变位系数 x_min</translation>
+    </message>
+    <message>
+        <source>Reference radius r (mm)</source>
+        <translation>分度圆半径 r (mm)</translation>
+    </message>
+    <message>
+        <source>Base radius r_b (mm)</source>
+        <translation>基圆半径 r_b (mm)</translation>
+    </message>
+    <message>
+        <source>Tip radius r_a (mm)</source>
+        <translation>齿顶圆半径 r_a (mm)</translation>
+    </message>
+    <message>
+        <source>Root radius r_f (mm)</source>
+        <translation>齿根圆半径 r_f (mm)</translation>
+    </message>
+    <message>
+        <source>Working pitch radius r′ (mm)</source>
+        <translation>节圆半径 r′ (mm)</translation>
+    </message>
+    <message>
+        <source>Tooth thickness s on the reference circle (mm)</source>
+        <translation>分度圆齿厚 s (mm)</translation>
+    </message>
+    <message>
+        <source>Space e on the reference circle (mm)</source>
+        <translation>分度圆齿槽宽 e (mm)</translation>
+    </message>
+    <message>
+        <source>Tip thickness s_a (mm)</source>
+        <translation>齿顶厚 s_a (mm)</translation>
+    </message>
+    <message>
+        <source>Profile angle at the tip α_a (°)</source>
+        <translation>齿顶圆压力角 α_a (°)</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Pinion 1</source>
+        <translation>小齿轮 1</translation>
+    </message>
+    <message>
+        <source>Gear 2</source>
+        <translation>大齿轮 2</translation>
+    </message>
+    <message>
+        <source>The two gears</source>
+        <translation>两齿轮的参数</translation>
+    </message>
+    <message>
+        <source>No undercut of gear %1: x_%1 ≥ x_%1min</source>
+        <translation>齿轮 %1 不根切：x_%1 ≥ x_%1min</translation>
+    </message>
+    <message>
+        <source>raise x%1 to at least %3 (or give gear %1 more teeth)</source>
+        <translation>将 x%1 增大到至少 %3（或增加齿轮 %1 的齿数）</translation>
+    </message>
+    <message>
+        <source>Tip thickness of gear %1: s_a%1 ≥ %3 m</source>
+        <translation>齿轮 %1 的齿顶厚：s_a%1 ≥ %3 m</translation>
+    </message>
+    <message>
+        <source>the tip of gear %1 is too thin: lower x%1 (or the centre distance)</source>
+        <translation>齿轮 %1 的齿顶过薄：减小 x%1（或减小中心距）</translation>
+    </message>
+    <message>
+        <source>Contact ratio ε ≥ %1</source>
+        <translation>重合度 ε ≥ %1</translation>
+    </message>
+    <message>
+        <source>ε is too small: give more teeth, less shift or a smaller centre distance</source>
+        <translation>ε 过小：增加齿数、减小变位系数或减小中心距</translation>
+    </message>
+    <message>
+        <source>No interference at the root of gear %1 (N_%1 to the tip of gear %2)</source>
+        <translation>齿轮 %1 齿根无干涉（N_%1 至齿轮 %2 齿顶）</translation>
+    </message>
+    <message>
+        <source>the tip of gear %2 digs into the root of gear %1: raise x%1, lower x%2 or shorten the addendum</source>
+        <translation>齿轮 %2 的齿顶与齿轮 %1 的齿根干涉：增大 x%1、减小 x%2 或降低齿顶高</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>合格</translation>
+    </message>
+    <message>
+        <source>fails</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>校验项目</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>The checks</source>
+        <translation>校验</translation>
+    </message>
+    <message>
+        <source>Every check passes.</source>
+        <translation>各项校验均合格。</translation>
+    </message>
+    <message>
+        <source>What to change:</source>
+        <translation>应作的修改：</translation>
     </message>
 </context>
 <context>

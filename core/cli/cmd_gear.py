@@ -20,7 +20,8 @@ DESCRIPTION = ("The external involute spur pair that drives the crank (pinion z1
                "one with what to change.")
 EXAMPLES = ("shaper gear --z1 13 --z2 40 --module 6",
             "shaper gear --z1 12 --z2 12 --module 10 --centre 130 --json",
-            "shaper gear --z1 10 --z2 36 --module 5 --x1 0.45 --x2 0.2 --csv gear.csv")
+            "shaper gear --z1 10 --z2 36 --module 5 --x1 0.45 --x2 0.2 --csv gear.csv",
+            "shaper gear --z1 13 --z2 40 --module 6 --dxf 啮合图.dxf --lang zh")
 
 # option → (its dest, the GearPairInputs field, the key of a design file's gear object)
 OPTIONS = (("--z1", "z1", "z1", "z1"), ("--z2", "z2", "z2", "z2"),
@@ -47,6 +48,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
                      "in mm (O1 at the origin, O2 on +x), the sheet scaled round it")
     out.add_argument("--sheet", metavar="SIZE", help="paper of the --dxf sheet: A0, A1, A2, A3 "
                      "(default A2)")
+    out.add_argument("--lang", choices=("en", "zh", "zh_CN"), help="language of the --dxf sheet's "
+                     "texts: en, or zh (= zh_CN) for Chinese (default en)")
 
 
 def add_gear_options(parser: argparse.ArgumentParser,
@@ -145,16 +148,18 @@ def run(args: argparse.Namespace) -> int:
     for option, target in (("--csv", args.csv), ("--dxf", args.dxf)):
         if target is not None:
             check_target(option, target)
-    if args.sheet is not None and args.dxf is None:
-        raise UsageError("--sheet: only with --dxf")
+    for option, value in (("--sheet", args.sheet), ("--lang", args.lang)):
+        if value is not None and args.dxf is None:
+            raise UsageError(f"{option}: only with --dxf")
     pair = pair_from_args(args)
     if args.dxf is not None:
         _paper(args)
+        labels = sheet_labels(args.lang or "en")
     summary = gear_summary(pair)
     if args.csv is not None:
         write_output("--csv", args.csv, csv_text(summary))
     if args.dxf is not None:
-        _write_dxf(pair, args)
+        _write_dxf(pair, args, labels)
     if args.json:
         print_json(summary)
     elif args.csv != "-":
@@ -170,13 +175,33 @@ def _paper(args: argparse.Namespace):
     return PAPERS[name]
 
 
-def _write_dxf(pair: GearPair, args: argparse.Namespace) -> None:
-    """The meshing sheet in English, as ``shaper drawing --content gear`` draws it."""
-    from ..drawing.gear_sheet import gear_sheet          # ezdxf: only when a drawing is asked for
+def sheet_labels(lang: str) -> dict[str, str] | None:
+    """The meshing sheet's texts in ``lang``: None for English (the sheet's own); else from
+    the ``drawing`` command's module (the translations are Qt's, which core never imports),
+    found through the ``shaper.commands`` entry points as ``core.cli`` finds that command.
+    UsageError naming --lang when it is not installed."""
+    if lang == "en":
+        return None
+    from importlib import import_module, metadata
+    try:
+        entry = next((e for e in metadata.entry_points(group="shaper.commands") if e.name == "drawing"), None)
+        module = import_module(entry.value) if entry is not None else None
+    except ImportError:
+        module = None
+    if module is None or not hasattr(module, "gear_labels_in"):
+        raise UsageError("--lang: a Chinese sheet needs the GUI package (shaperapp, with PySide6) "
+                         "installed; leave out --lang for the English sheet")
+    return module.gear_labels_in(lang)
+
+
+def _write_dxf(pair: GearPair, args: argparse.Namespace, labels: dict[str, str] | None) -> None:
+    """The meshing sheet in ``labels``' language (English without), as ``shaper drawing
+    --content gear`` draws it."""
+    from ..drawing.gear_sheet import ENGLISH, gear_sheet   # ezdxf: only when a drawing is asked for
     from ..drawing.sheet_dxf import save_sheet_dxf
     from ..drawing.title_block import TitleBlock
     block = TitleBlock("", f"z {pair.inputs.z1}/{pair.inputs.z2}, m {pair.inputs.module_mm:g}", "", "4/4")
-    drawn = gear_sheet(pair, _paper(args), block=block)
+    drawn = gear_sheet(pair, _paper(args), labels=labels or ENGLISH, block=block)
     try:
         save_sheet_dxf(drawn.sheet, args.dxf)
     except OSError as exc:          # a WriteError: names the user's path and a plain reason

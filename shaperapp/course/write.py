@@ -11,6 +11,7 @@ from dataclasses import dataclass, field, replace
 from typing import Iterator
 
 from core.cam.file import cam_from_dict
+from core.gear.file import gear_from_dict
 from core.course import REPORT, Course, CourseFile, make_folder
 from core.positions import DEFAULT_COUNT
 
@@ -50,9 +51,10 @@ def write_course(course: Course, language: str, covering: Covering) -> Iterator[
 
 
 def _report(course: Course, language: str, covering: Covering):
-    cam = course.document.get("cam")
+    cam, gear = course.document.get("cam"), course.document.get("gear")
     options = Options(DEFAULT_COUNT, None, (), Cover(**covering.cover),
-                      cam_from_dict(cam) if cam is not None else None)
+                      cam_from_dict(cam) if cam is not None else None,
+                      gear_from_dict(gear) if gear is not None else None)
     return build(course.spec, list(course.rpms), course.masses, covering.title, covering.date,
                  language, options)
 

@@ -147,3 +147,11 @@ def run(args: argparse.Namespace) -> int:
         raise OutputError(f"--output: {exc}") from None
     print(f"wrote {target} ({choice.paper}, {choice.content}, {suffix[1:].upper()})")
     return 0
+
+
+def gear_labels_in(lang: str) -> dict[str, str]:
+    """The meshing sheet's texts in --lang (en, zh, zh_CN), for ``shaper gear --dxf --lang``:
+    core draws the sheet but cannot translate (the catalogue is Qt's), so it asks here."""
+    start_qt(lang, needs_font=False)           # a DXF names its font, it embeds none
+    from .gear_labels import gear_labels
+    return gear_labels()

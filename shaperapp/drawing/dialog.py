@@ -2,7 +2,8 @@
 with a preview of the sheet as it will be written; then PDF, SVG or DXF.
 
 The sheet is built from the model's design on screen, its first speed and its
-loads (the cam sheet from the Cam tab's last valid cam), in the UI's language, by the same code as ``shaper drawing``.
+loads (the cam sheet from the Cam tab's last valid cam, the gear sheet from the design's
+gear pair, ``shaperapp.design.gear_source``), in the UI's language, by the same code as ``shaper drawing``.
 """
 from __future__ import annotations
 
@@ -19,19 +20,21 @@ from PySide6.QtWidgets import (QComboBox, QDialog, QDialogButtonBox, QDoubleSpin
 from core.drawing.motion import MAX_POSITIONS, motion_sheet
 from core.drawing.sheet import PAPERS, Sheet
 from core.dynamics import masses_for_design
+from core.errors import DesignError
+from core.gear import GearPair, design_pair
 from core.positions import DEFAULT_COUNT
 
+from shaperapp.design.gear_source import design_gear
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
-from shaperapp.widgets.messages import describe_os_error, failure_reason
+from shaperapp.widgets.messages import describe, describe_os_error, failure_reason
 
-from .content import SHEET_SUFFIXES, SheetChoice, build_sheet
+from .content import DEFAULT_PAPER, SHEET_SUFFIXES, SheetChoice, build_sheet
 from .render import paint_sheet, write_sheet
 
 if TYPE_CHECKING:
     from core.cam import Cam
-    from core.errors import DesignError
 
 
 class SheetTypeError(ValueError):
@@ -71,6 +74,7 @@ class DrawingSheetDialog(QDialog):
         self.content.addItem(self.tr("Kinetostatic analysis"), "forces")
         if cam is not None:
             self.content.addItem(self.tr("Feed cam"), "cam")
+        self._add_gear_entry()
         self.count = QSpinBox()
         self.count.setRange(1, MAX_POSITIONS)
         self.count.setValue(DEFAULT_COUNT)
@@ -115,6 +119,7 @@ class DrawingSheetDialog(QDialog):
         layout.addLayout(form)
         layout.addWidget(self.preview, 1)
         self._default_angles()
+        self._content = self.content.currentData()
         self.content.currentIndexChanged.connect(self._content_changed)
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
@@ -133,13 +138,35 @@ class DrawingSheetDialog(QDialog):
         for box, value in zip(self.angles, drawn.diagram_deg):
             box.setValue(value)
 
+    def _add_gear_entry(self) -> None:
+        """The meshing sheet, disabled (saying why) when the design has no gear pair."""
+        self.content.addItem(self.tr("Gear meshing"), "gear")
+        try:
+            has_gear = design_gear(self.model) is not None
+        except DesignError as exc:          # a "gear" object that is not valid
+            has_gear, why = False, self.tr("The design's gear pair is not valid: %1").replace(
+                "%1", describe(exc))
+        else:
+            why = self.tr("The design has no gear pair: open a design file with one (its "
+                          "\"gear\" object) to draw the meshing sheet.")
+        index = self.content.count() - 1
+        item = self.content.model().item(index)
+        item.setEnabled(has_gear)
+        if not has_gear:
+            self.content.setItemData(index, why, Qt.ItemDataRole.ToolTipRole)
+
     def _content_changed(self) -> None:
-        """The polygon angles are the linkage sheets' choice, not the cam's; the number of
-        positions only the motion sheet's, which draws the mechanism at each."""
+        """The polygon angles are the linkage sheets' choice, not the cam's or the gear's; the
+        number of positions only the motion sheet's, which draws the mechanism at each. The
+        paper follows the content's usual one (A2 for the gear, as ``shaper drawing``) unless
+        the user chose another."""
         content = self.content.currentData()
         self.count.setEnabled(content == "motion")
         for box in self.angles:
-            box.setEnabled(content != "cam")
+            box.setEnabled(content not in ("cam", "gear"))
+        if self.paper.currentText() == DEFAULT_PAPER.get(self._content, "A1"):
+            self.paper.setCurrentText(DEFAULT_PAPER.get(content, "A1"))
+        self._content = content
 
     def choice(self) -> SheetChoice:
         text = {key: plain_text(edit.text()) for key, edit in self.fields.items()}   # a pasted tab …
@@ -148,7 +175,13 @@ class DrawingSheetDialog(QDialog):
                            (self.angles[0].value(), self.angles[1].value()), text["design"],
                            text["student"], text["date"] or datetime.date.today().isoformat(),
                            text["school"], self._cam.cam if content == "cam" and self._cam else None,
-                           text["number"], text["group"], text["supervisor"])
+                           text["number"], text["group"], text["supervisor"],
+                           self._gear_pair() if content == "gear" else None)
+
+    def _gear_pair(self) -> "GearPair | None":
+        """The design's gear pair (DesignError when it cannot be made: the preview says why)."""
+        inputs = design_gear(self.model)
+        return None if inputs is None else design_pair(inputs)
 
     def sheet(self) -> Sheet:
         masses = masses_for_design(self.model.design, self.model.masses)

@@ -1,140 +1,23 @@
-"""Paint a :class:`core.drawing.sheet.Sheet` with QPainter: PDF, SVG and the preview.
-
-The sheet is in paper mm with y up; the painter here works in mm with y down,
-so every point is flipped once and texts are drawn upright. Line widths and
-dash patterns are those of the sheet's layers (GB/T 4457.4, as the DXF has
-them), so the three files of one sheet look alike. A text comes out at its
-character height (the capitals' height) and never wider than the sheet's
-estimate of it: the layout's no-overlap guarantee holds on paper too.
+"""The drawing sheets as files: PDF, SVG (painted by ``shaperapp.widgets.sheet_paint``,
+which the preview and the report's gear figure share) and DXF (``core.drawing.sheet_dxf``).
 """
 from __future__ import annotations
 
 import errno
-import math
-from dataclasses import replace
 
-import numpy as np
-from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QPointF, QRectF, QSizeF, Qt
-from PySide6.QtGui import (QBrush, QColor, QFont, QFontMetricsF, QPageLayout, QPageSize, QPainter,
-                           QPainterPath, QPdfWriter, QPen, QPolygonF)
+from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QRectF, QSizeF
+from PySide6.QtGui import QPageLayout, QPageSize, QPainter, QPdfWriter
 from PySide6.QtSvg import QSvgGenerator
 
 from core.atomic import atomic_write
-from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
-from core.drawing.sheet import Circle, Polyline, Sheet, Text
+from core.drawing.sheet import Sheet
 
-from shaperapp.widgets.fonts import report_font
 from shaperapp.widgets.pdf_page import exact_page
 from shaperapp.widgets.pdf_text import repair_text_layer
+from shaperapp.widgets.sheet_paint import INK, paint_sheet, svg_dash_unit  # noqa: F401 (the sheets' painter, here as before)
 
 PDF_RESOLUTION = 1200          # dots per inch of the PDF's coordinates
 SVG_UNITS_PER_MM = 10.0        # SVG user units per mm (viewBox in mm: width="841mm")
-INK = QColor(0, 0, 0)
-
-
-def _pen(layer: str, svg: bool = False) -> QPen:
-    """The layer's pen in paper mm: its width and its GB/T 4457.4 dashes in mm."""
-    spec = LAYERS[layer]
-    width = spec.lineweight / 100.0 if spec.lineweight > 0 else THICK_MM / 2.0
-    pen = QPen(INK, width)
-    pen.setCapStyle(Qt.PenCapStyle.FlatCap)
-    pen.setJoinStyle(Qt.PenJoinStyle.MiterJoin)
-    if spec.linetype in LINETYPES:
-        pattern = [abs(v) if v else 0.3 for v in LINETYPES[spec.linetype][1][1:]]
-        unit = svg_dash_unit(pen) if svg else width
-        pen.setDashPattern([v / unit for v in pattern])
-    return pen
-
-
-def svg_dash_unit(pen: QPen) -> float:
-    """What QSvgGenerator multiplies a pen's dash pattern by: the pen's width, except for a
-    width that rounds to 0 (QPen.width(), an int), which it takes as 1, as for a cosmetic
-    pen. Why: a thin line (0.25 mm) got dashes 4 times the PDF's, 48 mm for 12, and the
-    crank circle showed as a few arcs (the PDF engine multiplies by the true width)."""
-    return pen.widthF() if pen.width() != 0 else 1.0
-
-
-def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en", svg: bool = False) -> None:
-    """Paint ``sheet`` with ``painter`` whose coordinates are paper mm, y down, origin at
-    the sheet's upper left corner; ``svg`` when the painter is a QSvgGenerator's (its dash
-    patterns are reckoned differently, see :func:`svg_dash_unit`)."""
-    height = sheet.paper.height
-    font = report_font(language)
-    font.setPixelSize(100)
-    metrics = QFontMetricsF(font)
-    cap = metrics.capHeight() or 70.0
-    painter.setRenderHint(QPainter.RenderHint.Antialiasing, True)
-    painter.fillRect(QRectF(0, 0, sheet.paper.width, height), QColor(255, 255, 255))
-    for item in sheet.items:
-        if isinstance(item, Text):
-            for run in _closed_up(item, metrics, cap):    # a subscript is a smaller text of its own
-                _text(painter, run, height, font, metrics, cap)
-            continue
-        painter.setPen(_pen(item.layer, svg))
-        if isinstance(item, Circle):
-            painter.setBrush(QBrush(INK) if item.filled else Qt.BrushStyle.NoBrush)
-            painter.drawEllipse(QPointF(item.center[0], height - item.center[1]), item.radius, item.radius)
-        elif isinstance(item, Polyline):
-            poly = QPolygonF([QPointF(float(x), height - float(y)) for x, y in item.points])
-            if item.filled:
-                path = QPainterPath()
-                path.addPolygon(poly)
-                path.closeSubpath()
-                painter.fillPath(path, QBrush(INK))
-            if item.closed:
-                painter.setBrush(Qt.BrushStyle.NoBrush)
-                painter.drawPolygon(poly)
-            else:
-                painter.drawPolyline(poly)
-
-
-def _drawn_width(item: Text, metrics: QFontMetricsF, cap: float) -> tuple[float, float]:
-    """The width ``item`` is drawn at, paper mm, and the squeeze that keeps it within the
-    sheet's estimate of its width."""
-    k = item.height / cap
-    advance = metrics.horizontalAdvance(item.text)
-    squeeze = min(1.0, item.width / k / advance) if advance > 0 else 1.0
-    return advance * squeeze * k, squeeze
-
-
-def _closed_up(item: Text, metrics: QFontMetricsF, cap: float) -> list[Text]:
-    """The runs of ``item``, each one after the previous run's drawn width instead of its
-    estimated width, and the whole aligned by its drawn width. Why: the font is narrower
-    than the estimate, so a subscript after a long run ("Flywheel to add J_F − J_e") stood
-    apart from its letter."""
-    runs = item.runs()
-    if len(runs) < 2:
-        return runs
-    drawn = [_drawn_width(run, metrics, cap)[0] for run in runs]
-    spare = item.width - sum(drawn)
-    at = {"l": 0.0, "c": spare / 2.0, "r": spare}[item.align[0]]
-    u = np.array([math.cos(math.radians(item.rotation)), math.sin(math.radians(item.rotation))])
-    closed, estimated = [], 0.0
-    for run, width in zip(runs, drawn):
-        x, y = np.asarray(run.position) + u * (at - estimated)
-        closed.append(replace(run, position=(float(x), float(y))))
-        estimated += run.width
-        at += width
-    return closed
-
-
-def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QFontMetricsF,
-          cap: float) -> None:
-    k = item.height / cap
-    width, squeeze = _drawn_width(item, metrics, cap)
-    width /= k
-    dx = {"l": 0.0, "c": -width / 2.0, "r": -width}[item.align[0]]
-    dy = {"b": 0.0, "m": cap / 2.0, "t": cap}[item.align[1]]
-    painter.save()
-    painter.translate(item.position[0], height - item.position[1])
-    painter.rotate(-item.rotation)
-    painter.scale(k, k)
-    painter.setFont(font)
-    painter.setPen(QPen(INK))
-    painter.translate(dx, dy)
-    painter.scale(squeeze, 1.0)
-    painter.drawText(QPointF(0.0, 0.0), item.text)
-    painter.restore()
 
 
 def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:

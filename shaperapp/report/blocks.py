@@ -90,6 +90,8 @@ class Figure:
     width_mm: float
     height_mm: float
     paint: Paint
+    to_scale: bool = False
+    """True: the caption states the drawing's scale, so the figure never shrinks to fit a page."""
 
 
 @dataclass(frozen=True)

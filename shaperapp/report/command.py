@@ -12,6 +12,7 @@ from pathlib import Path
 
 from core.atomic import atomic_write
 from core.cam.file import cam_from_dict
+from core.gear.file import gear_from_dict
 from core.cli.cmd_library import library_failure
 from core.cli.cmd_library_compare import load_candidates
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
@@ -29,8 +30,9 @@ HELP = "write the design report (A4 PDF, or HTML)"
 DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
                "margins, the scheme at both limit positions, s/v/a curves and cycle metrics, the "
                "positions table, velocity/acceleration/force polygons at two positions, torque, "
-               "energy, flywheel and motor power, the conventions and formulas, and with --compare "
-               "or --compare-file a comparison with other designs. Runs without a display. The "
+               "energy, flywheel and motor power, the conventions and formulas, with --compare "
+               "or --compare-file a comparison with other designs, and from a --design file its "
+               "feed cam and its gear pair (the pair in mesh to scale). Runs without a display. The "
                "Chinese report needs a font with Chinese glyphs (fonts-noto-cjk).")
 EXAMPLES = ("shaper report --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --lever-mass 20 "
             "--lever-inertia 1.1 --ram-mass 70 --cut-force 7000 --cut-height 80 -o report.pdf",
@@ -109,10 +111,11 @@ def _run(args: argparse.Namespace) -> int:
     language = start_qt(args.lang)
     from .content import Options, build
     from .blocks import Cover
-    doc = design_file(args)         # a design file's feed cam goes into the report too
+    doc = design_file(args)         # a design file's feed cam and gear pair go into the report too
     cam = cam_from_dict(doc["cam"]) if doc is not None and doc.get("cam") is not None else None
+    gear = gear_from_dict(doc["gear"]) if doc is not None and doc.get("gear") is not None else None
     report = build(spec, rpms, masses, title, date, language,
-                   Options(count, diagrams, tuple(others), Cover(**cover), cam))
+                   Options(count, diagrams, tuple(others), Cover(**cover), cam, gear))
     try:
         pages = write_report(report, args.output)
     except OSError as exc:      # a WriteError: names the path and a plain reason

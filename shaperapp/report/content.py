@@ -21,6 +21,7 @@ from core.cli.cmd_dynamics import speed_rows as dynamics_speed_rows
 from core.cli.cmd_dynamics import summary_rows
 from core.cli.cmd_synth import dimension_rows
 from core.cam import CamInputs
+from core.gear import GearPairInputs
 from core.compare import Candidate
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design
 from core.flywheel import summarize
@@ -35,6 +36,7 @@ from . import figures
 from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences, typeset
 from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison
+from .gear import gear_blocks
 from .positions import position_tables, positions_note
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
@@ -49,6 +51,7 @@ class Options:
     compare: tuple[Candidate, ...] = ()               # other designs for a comparison section
     cover: Cover = Cover()                            # student, class … for the cover block
     cam: tuple[CamInputs, float | None] | None = None  # the feed cam's inputs and phase, if any
+    gear: GearPairInputs | None = None                 # the gear pair's inputs, if any
 
 
 def default_diagram_angles(table: PositionTable, metrics: CycleMetrics) -> tuple[float, float]:
@@ -121,9 +124,12 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         if options.compare:
             result = report_comparison(spec, masses, name, options.compare, rpms[0])
             report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
-        if options.cam is not None:         # the last section: 9, or 10 after a comparison
-            number = 10 if options.compare else 9
+        number = 10 if options.compare else 9     # the sections after the conventions
+        if options.cam is not None:
             report.blocks.extend(cam_blocks(options.cam, design, idle, rpms[0], number, views))
+            number += 1
+        if options.gear is not None:        # the last section
+            report.blocks.extend(gear_blocks(options.gear, number, language))
     finally:
         views.close()
     return report

@@ -23,6 +23,7 @@ from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
 from shaperapp.design.model import DesignModel
+from shaperapp.design.gear_source import design_gear
 
 from .blocks import Cover
 from .command import MAX_TEXT
@@ -146,6 +147,9 @@ def export_report(model: DesignModel, path: str, language: str, options: Options
     cam = model.saved_parts().get("cam")
     if cam is not None and options.cam is None:
         options = replace(options, cam=cam_from_dict(cam))
+    gear = design_gear(model)
+    if gear is not None and options.gear is None:
+        options = replace(options, gear=gear)
     report = build(model.valid_spec, list(model.rpms), masses, name or design_name(model),
                    date or datetime.date.today().isoformat(), language, options)
     return write_report(report, path)

@@ -67,7 +67,8 @@ def _figure(lay: Layout, block: Figure) -> list[Piece]:
             cap_doc.drawContents(p)
             p.restore()
     # the drawing and its caption: two pieces on one page (keep_with_next)
-    drawing = Piece(h, paint, keep_with_next=True, part="figure", min_height=SHRINK * h)
+    drawing = Piece(h, paint, keep_with_next=True, part="figure",
+                    min_height=0.0 if block.to_scale else SHRINK * h)
     return [drawing, Piece(cap_h + m.height() * 0.8, caption)]
 
 
