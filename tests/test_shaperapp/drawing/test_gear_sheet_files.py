@@ -83,3 +83,35 @@ def test_bad_input_names_the_option(words, option, tmp_path):
     status, out, err = shaper_in_process("drawing", *words, "-o", tmp_path / "g.pdf")
     assert status == 2 and error_names(err) == [option]
     assert not (tmp_path / "g.pdf").exists()
+
+
+def test_shaper_gear_dxf_in_chinese(qapp, tmp_path):
+    """``shaper gear --dxf --lang zh`` (issue 35, item 5): the Chinese sheet's words, no
+    English word, the same drawing as the English DXF; on 55087ce --lang was unknown."""
+    from language_checks import english_words
+    from shaperapp.widgets import i18n
+    zh, en = tmp_path / "zh.dxf", tmp_path / "en.dxf"
+    try:
+        status, _, err = shaper_in_process("gear", *GEAR, "--dxf", zh, "--lang", "zh")
+    finally:
+        i18n.set_language("en")
+    assert status == 0, err
+    assert shaper_in_process("gear", *GEAR, "--dxf", en)[0] == 0
+    texts = [t.dxf.text for t in ezdxf.readfile(zh).modelspace().query("TEXT")]
+    for term in ("齿轮啮合图", "啮合角 α′", "重合度 ε", "小齿轮 1", "大齿轮 2", "单齿啮合区"):
+        assert term in texts, term
+    assert english_words(" ".join(texts)) == []
+
+    def drawn(path):
+        return sorted((e.dxftype(), e.dxf.layer, round(float(e.dxf.radius), 9) if e.dxftype() == "CIRCLE" else 0.0,
+                       len(e) if e.dxftype() == "LWPOLYLINE" else 0) for e in ezdxf.readfile(path).modelspace()
+                      if e.dxftype() in ("CIRCLE", "LWPOLYLINE") and e.dxf.layer != "TITLE")
+    assert drawn(zh) == drawn(en)
+
+
+@pytest.mark.parametrize("words", [["--lang", "zh"], ["--dxf", "x.dxf", "--lang", "fr"]])
+def test_shaper_gear_lang_needs_the_dxf_and_a_language(words, tmp_path):
+    status, _, err = shaper_in_process("gear", *GEAR, *[str(tmp_path / w) if w.endswith(".dxf") else w
+                                                        for w in words])
+    assert status == 2 and error_names(err) == ["--lang"], err
+    assert list(tmp_path.iterdir()) == []
