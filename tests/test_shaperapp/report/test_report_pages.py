@@ -5,7 +5,8 @@ block and the rod variant, with and without loads and a comparison.
 Each report is printed twice through ``pdf_bytes``: its figures alone and its text
 alone (tables, headings, captions, title block, footers), both rasterized by
 pdftoppm at 50 dpi; ``page_boxes`` says where the layout put each piece. On a748eb2
-the stroke bands, the cutting-zone shading and the φ cursor ran over the page.
+the stroke bands, the cutting-zone shading and the φ cursor ran over the page. Every
+report here has the feed cam's and the gear pair's sections too (issues 23 and 35).
 """
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ from PySide6.QtGui import QImage
 
 from core.cam import CamInputs
 from core.compare import Candidate
+from core.gear import GearPairInputs
 from core.dynamics import MassProperties
 from core.spec import Spec
 from shaperapp.report.content import Options, build
@@ -34,6 +36,7 @@ LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70
 SPECS = {"block": Spec(), "rod": Spec(variant="rod", rod_input="ratio", rod_ratio=0.3)}
 OTHERS = (Candidate("rod 1.6", Spec(time_ratio=1.6, variant="rod", rod_input="ratio", rod_ratio=0.3),
                     LOADS), Candidate("no loads", Spec(crank=110.0), None))
+GEAR = GearPairInputs(z1=13, z2=40, module_mm=6.0, centre_mm=162.0)
 CASES = [("en", "block", True, True), ("zh_CN", "rod", True, False), ("en", "rod", False, False),
          ("zh_CN", "block", False, True)]
 
@@ -67,7 +70,8 @@ def printed(request, tmp_path_factory, qapp):
     try:
         report = build(SPECS[variant], [40.0, 60.0], LOADS if loads else None, "Pages",
                        "2026-01-01", language, Options(compare=OTHERS if compare else (),
-                                                       cam=(CamInputs(), None)))   # issue 23's page too
+                                                       cam=(CamInputs(), None),    # issue 23's page too
+                                                       gear=GEAR))                 # and issue 35's
     finally:
         i18n.set_language("en")
     folder = tmp_path_factory.mktemp("pages")
@@ -106,15 +110,31 @@ def test_no_text_lies_on_a_figure(printed):
 
 def test_no_page_is_left_half_empty_for_a_figure(printed):
     """A figure starting a page would not have fitted at the foot of the page before, even
-    shrunk to SHRINK of its height (with its caption)."""
+    shrunk to SHRINK of its height (with its caption); a figure at a stated scale (the gear
+    pair) never shrinks, so it would not have fitted whole."""
+    from shaperapp.report.blocks import Figure
     from shaperapp.report.pdf import BOTTOM_MM, SHRINK
-    _, boxes, _, _ = printed
+    report, boxes, _, _ = printed
+    figures = iter(b for b in report.blocks if isinstance(b, Figure))     # one drawing each, in order
+    drawn = [[next(figures) if kind == "figure" else None for kind, _ in page] for page in boxes]
+    assert next(figures, None) is None
     bottom = PAGE_MM[1] - BOTTOM_MM
-    for before, page in zip(boxes, boxes[1:]):
+    for before, page, blocks in zip(boxes, boxes[1:], drawn[1:]):
         if page[0][0] == "figure":
             free = bottom - before[-1][1].bottom()
             figure, caption = page[0][1], page[1][1]
-            assert free < SHRINK * figure.height() + caption.height(), (free, figure.height())
+            share = 1.0 if blocks[0].to_scale else SHRINK
+            assert free < share * figure.height() + caption.height(), (free, figure.height())
+
+
+def test_the_gear_figure_keeps_its_height(printed):
+    """Drawn at the scale its caption states, the pair in mesh is laid out at its full height."""
+    from shaperapp.report.blocks import Figure
+    report, boxes, _, _ = printed
+    gear = [b for b in report.blocks if isinstance(b, Figure)][-1]
+    assert gear.to_scale
+    last = [box for page in boxes for kind, box in page if kind == "figure"][-1]
+    assert last.height() == pytest.approx(gear.height_mm, abs=0.01)
 
 
 @pytest.mark.parametrize("kind", ["curves", "forces"])
