@@ -33,11 +33,13 @@ printed at SMALLER of that, so its scale on the page is the stated μ."""
 @dataclass(frozen=True)
 class GearFigure:
     """The figure's ``scale`` μ (model mm per mm on the page, a standard scale as the
-    sheet's), its size in mm and its ``paint``."""
+    sheet's), its size in mm, its ``paint`` and the ``sheet`` it paints (laid out at
+    1/SMALLER of the page's size)."""
     scale: float
     width_mm: float
     height_mm: float
     paint: Paint
+    sheet: Sheet
 
 
 def gear_figure(pair: GearPair, language: str) -> GearFigure:
@@ -56,4 +58,4 @@ def gear_figure(pair: GearPair, language: str) -> GearFigure:
         painter.scale(px_per_mm * SMALLER, px_per_mm * SMALLER)
         paint_sheet(sheet, painter, language)
         painter.restore()
-    return GearFigure(scale, WIDTH_MM, height, paint)
+    return GearFigure(scale, WIDTH_MM, height, paint, sheet)

@@ -181,3 +181,21 @@ def test_the_pair_in_mesh_is_at_the_stated_scale(qapp, tmp_path):
     expected = pair.centre_mm / mu * px
     assert math.dist(o1, o2) == pytest.approx(expected, abs=1.5), (mu, o1, o2)
     assert (r1 + r2) / 2 == pytest.approx(pair.gear1.ra / mu * px, abs=1.5)   # the tip circles' size
+
+
+@pytest.mark.parametrize("inputs", [RULE, EQUAL, GearPairInputs(z1=13, z2=40, module_mm=6.0, centre_mm=162.0),
+                                    GearPairInputs(z1=17, z2=60, module_mm=3.0)])
+def test_no_label_of_the_figure_is_crossed(qapp, inputs):
+    """The figure's labels (O1, O2, P, N1, N2, B1, B2, α′) clear of every line and of each
+    other, by the sheets' own check, and every item inside the figure."""
+    from core.drawing.sheet import overlapping_texts
+    from shaperapp.report.gear_figure import gear_figure
+    from sheet_checks import crossed_texts, inside
+    from core.drawing.sheet import item_box
+    figure = gear_figure(design_pair(inputs), "en")
+    sheet = figure.sheet
+    texts = [t.text for t in sheet.items if hasattr(t, "text")]
+    assert {"O1", "P", "N1", "N2", "B1", "B2"} <= set(texts), texts
+    assert overlapping_texts(sheet) == [] and crossed_texts(sheet) == []
+    frame = (0.0, 0.0, sheet.paper.width, sheet.paper.height)
+    assert [item for item in sheet.items if not inside(item_box(item), frame)] == []
