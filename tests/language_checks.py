@@ -25,7 +25,8 @@ ALLOWED = frozenset({
 # Symbols with an index, as a text layer reads them back: the index, typeset lower, runs
 # into its letter (M_m → "Mm", ΔW_max → "Wmax", J_e → "Je", a^k → "ak").
 NOTATION = frozenset({"Mm", "Wmax", "Je", "Pm", "Tm", "vslide", "ak",
-                      "pb", "xmin", "db", "da", "df", "sa"})      # the gear pair's (issue 35)
+                      "pb", "xmin", "db", "da", "df", "sa",       # the gear pair's (issue 35):
+                      "ra", "rb", "rf", "ha", "zmin", "inv"})     # r_a, h*_a, z_min, inv α
 _WORD = re.compile(r"(?<![A-Za-z])(?:[A-Za-z][a-z]+|[A-Z]{3,})(?![A-Za-z])")
 _CONTROL_OK = "\n\r\t\f"
 

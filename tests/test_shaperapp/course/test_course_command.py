@@ -107,6 +107,22 @@ def test_a_long_design_name_is_cut_in_the_title_block_not_refused(written):
 
 @SLOW
 @needs_poppler
+def test_the_report_has_the_gear_section_of_the_file(written):
+    """Issue 35, item 5: the course's report carries the file's gear pair, its figures those
+    of ``shaper gear --design`` of the same file."""
+    source, out, _ = written
+    status, js, err = shaper_in_process("gear", "--design", source, "--json")
+    assert status == 0, err
+    pair = json.loads(js)["pair"]
+    text = " ".join(pdf_text(out / "00-report.pdf").split())
+    assert "10 The gear pair" in text
+    for value in (f"{pair['contact_ratio']:.6f}", f"{pair['working_pressure_angle_deg']:.6f}",
+                  f"{pair['centre_mm']:.4f} mm"):
+        assert value in text, value
+
+
+@SLOW
+@needs_poppler
 def test_the_sheets_are_those_of_shaper_drawing(written, tmp_path):
     """The course's cam sheet reads as ``shaper drawing --content cam`` of the same file."""
     source, out, _ = written

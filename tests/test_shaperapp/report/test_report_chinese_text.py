@@ -1,6 +1,7 @@
 """The Chinese report is Chinese text (issue 32, items 4 and 5): its text layer holds the
 ideographs it prints, its plots are set in the Simplified Chinese font, and it has no
-untranslated English word. A real ``shaper report`` run of a design with loads and a cam."""
+untranslated English word. A real ``shaper report`` run of a design with loads, a cam and a
+gear pair."""
 import re
 import shutil
 import subprocess
@@ -34,7 +35,8 @@ def report(tmp_path_factory):
     loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                            cut_force_N=7000.0, cut_height_mm=80.0)
     save_design(folder / "d.json", Spec(), [40.0, 60.0], 1.0,
-                extra={"cam": cam_to_dict(cam, None), "forces": masses_to_dict(loads)})
+                extra={"cam": cam_to_dict(cam, None), "forces": masses_to_dict(loads),
+                       "gear": {"z1": 10, "z2": 14, "module_mm": 5.0}})
     run = shaper("report", "--design", folder / "d.json", "--lang", "zh", "--title", "牛头刨床",
                  "-o", folder / "zh.pdf")
     assert run.returncode == 0, run.stderr
@@ -58,3 +60,11 @@ def test_every_chinese_font_is_the_simplified_chinese_one(report):
 
 def test_no_english_word(report):
     assert english_words(pdf_text(report), SYMBOLS) == []
+
+
+def test_the_design_files_gear_pair_has_its_section(report):
+    """``shaper report --design`` reads the file's "gear" (issue 35, item 5): its section, the
+    pair in mesh and its caption's scale."""
+    squashed = re.sub(r"\s+", "", pdf_text(report))
+    assert "10齿轮机构" in squashed and "齿轮机构" in squashed
+    assert re.search(r"比例1:[\d.]+（μl=[\d.]+mm/mm）", squashed)

@@ -28,8 +28,8 @@ pytestmark = [pytest.mark.slow,
                                  reason="poppler-utils not installed")]
 RULE = GearPairInputs(z1=10, z2=14, module_mm=5.0)          # the rule's positive pair; ε < 1.2 fails
 EQUAL = GearPairInputs(z1=12, z2=12, module_mm=8.0, x1=0.3, x2=0.3)   # both gears whole in the figure
-# Notation the section writes in Latin letters (inv α, tan α, h*_a, z_min, the radii r_a, r_b, r_f)
-SYMBOLS = {"inv", "tan", "sin", "cos", "ha", "zmin", "ra", "rb", "rf"}   # r_a … read back as "ra"
+# Functions the formulas write in Latin letters (the gear's notation is language_checks.NOTATION's)
+SYMBOLS = {"tan", "sin", "cos"}
 DPI = 150
 
 
