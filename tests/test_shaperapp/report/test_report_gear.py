@@ -174,12 +174,14 @@ def test_the_pair_in_mesh_is_at_the_stated_scale(qapp, tmp_path):
     rows = np.flatnonzero(ink.any(axis=1))
     centre_row = rows[np.argmax(ink[rows].sum(axis=1))]            # the centre line: the longest row
     rows = rows[np.abs(rows - centre_row) > 3]
-    left = np.array([(np.flatnonzero(ink[r])[0], r) for r in rows], float)
-    right = np.array([(np.flatnonzero(ink[r])[-1], r) for r in rows], float)
+    # the outer edge of each tip circle: the left side of the leftmost inked pixel, the right
+    # side of the rightmost (pixel k spans k … k + 1)
+    left = np.array([(np.flatnonzero(ink[r])[0], r + 0.5) for r in rows], float)
+    right = np.array([(np.flatnonzero(ink[r])[-1] + 1.0, r + 0.5) for r in rows], float)
     (o1, r1), (o2, r2) = _fitted_centre(left), _fitted_centre(right)
     assert abs(o1[1] - o2[1]) < 1.0                                  # both on the centre line
     expected = pair.centre_mm / mu * px
-    assert math.dist(o1, o2) == pytest.approx(expected, abs=1.5), (mu, o1, o2)
+    assert math.dist(o1, o2) == pytest.approx(expected, abs=1.0), (mu, o1, o2)   # 0.25 %
     assert (r1 + r2) / 2 == pytest.approx(pair.gear1.ra / mu * px, abs=1.5)   # the tip circles' size
 
 
