@@ -11,8 +11,8 @@ from dataclasses import dataclass, field, replace
 from typing import Iterator
 
 from core.cam.file import cam_from_dict
-from core.gear.file import gear_from_dict
 from core.course import REPORT, Course, CourseFile, make_folder
+from core.gear.file import gear_from_dict
 from core.positions import DEFAULT_COUNT
 
 from shaperapp.drawing.content import SheetChoice, build_sheet

@@ -21,10 +21,10 @@ from core.cli.cmd_dynamics import speed_rows as dynamics_speed_rows
 from core.cli.cmd_dynamics import summary_rows
 from core.cli.cmd_synth import dimension_rows
 from core.cam import CamInputs
-from core.gear import GearPairInputs
 from core.compare import Candidate
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design
 from core.flywheel import summarize
+from core.gear import GearPairInputs
 from core.geometry import Design
 from core.margins import margins
 from core.metrics import CycleMetrics, analyze

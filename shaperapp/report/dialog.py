@@ -22,8 +22,8 @@ from core.cam.file import cam_from_dict
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
-from shaperapp.design.model import DesignModel
 from shaperapp.design.gear_source import design_gear
+from shaperapp.design.model import DesignModel
 
 from .blocks import Cover
 from .command import MAX_TEXT
