@@ -70,13 +70,16 @@ class GearPairView(QWidget):
     def render_pair(self, painter: QPainter, rect: QRectF) -> None:
         """The pair at the current crank angle, fitted into ``rect``, under a line that says
         the angles."""
-        pair = self._model.pair
         crank = self._model.crank_turn()
+        paint_pair(painter, rect, self._model.pair, self.placed_outlines(crank), self.caption(crank))
+
+    def caption(self, crank: float) -> str:
+        """The line over the drawing: how far each gear has turned at crank angle ``crank``."""
+        pair = self._model.pair
         ratio = pair.gear2.teeth / pair.gear1.teeth
-        label = self.tr("crank φ = %1°: gear z2 turned %1° clockwise, pinion z1 %2° counter-clockwise "
-                        "(i = %3)").replace("%1", f"{math.degrees(crank) % 360.0:.1f}").replace(
+        return self.tr("crank φ = %1°: gear z2 turned %1° clockwise, pinion z1 %2° counter-clockwise "
+                       "(i = %3)").replace("%1", f"{math.degrees(crank) % 360.0:.1f}").replace(
             "%2", f"{math.degrees(crank * ratio) % 360.0:.1f}").replace("%3", f"{ratio:.4f}")
-        paint_pair(painter, rect, pair, self.placed_outlines(crank), label)
 
 
 def pair_span(pair: GearPair) -> tuple[np.ndarray, np.ndarray]:
