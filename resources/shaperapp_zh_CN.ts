@@ -2320,6 +2320,10 @@
 <context>
     <name>GearTab</name>
     <message>
+        <source>Close-up of the line of action</source>
+        <translation>放大显示啮合线附近</translation>
+    </message>
+    <message>
         <source>CSV…</source>
         <translation>CSV…</translation>
     </message>

@@ -26,6 +26,10 @@ from .model import GearModel
 FILLS = (QColor("#cfd8dc"), QColor("#ffe0b2"))
 ACTION = QColor("#1565c0")
 MARGIN = 0.05
+# where each point's name goes (px from the point): the line of action runs up to the right
+# from N1 through B2, P, B1 to N2, so names alternate sides of it
+LABEL_OFFSETS = {"N1": QPointF(-24, 12), "B2": QPointF(-24, 4), "P": QPointF(8, 14),
+                 "B1": QPointF(-24, 0), "N2": QPointF(6, -4)}
 
 
 class GearPairView(QWidget):
@@ -36,6 +40,7 @@ class GearPairView(QWidget):
         self._model = gear_model
         self.setMinimumSize(240, 200)
         self._outlines: tuple[np.ndarray, np.ndarray] | None = None
+        self.close_up = False           # the line of action N1N2 filling the view, not both gears
         gear_model.pairChanged.connect(self._reset)
         gear_model.design_model.angleChanged.connect(self._angle_moved)
 
@@ -45,6 +50,10 @@ class GearPairView(QWidget):
 
     def _reset(self) -> None:
         self._outlines = None
+        self.update()
+
+    def set_close_up(self, on: bool) -> None:
+        self.close_up = bool(on)
         self.update()
 
     def outlines(self) -> tuple[np.ndarray, np.ndarray]:
@@ -71,7 +80,8 @@ class GearPairView(QWidget):
         """The pair at the current crank angle, fitted into ``rect``, under a line that says
         the angles."""
         crank = self._model.crank_turn()
-        paint_pair(painter, rect, self._model.pair, self.placed_outlines(crank), self.caption(crank))
+        paint_pair(painter, rect, self._model.pair, self.placed_outlines(crank), self.caption(crank),
+                   self.close_up)
 
     def caption(self, crank: float) -> str:
         """The line over the drawing: how far each gear has turned at crank angle ``crank``."""
@@ -82,23 +92,30 @@ class GearPairView(QWidget):
             "%2", f"{math.degrees(crank * ratio) % 360.0:.1f}").replace("%3", f"{ratio:.4f}")
 
 
-def pair_span(pair: GearPair) -> tuple[np.ndarray, np.ndarray]:
-    """The lower-left and upper-right corners (mm) of what :func:`paint_pair` draws."""
+def pair_span(pair: GearPair, close_up: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """The lower-left and upper-right corners (mm) of what :func:`paint_pair` draws: both
+    gears whole, or (``close_up``) the line of action N1N2 and a module round it."""
+    if close_up:
+        pts = line_points(pair)
+        ends = np.array([pts["N1"], pts["N2"]])
+        m = pair.inputs.module_mm
+        return ends.min(axis=0) - m, ends.max(axis=0) + m
     g1, g2 = pair.gear1, pair.gear2
     half = max(g1.ra, g2.ra)
     return np.array([-g1.ra, -half]), np.array([pair.centre_mm + g2.ra, half])
 
 
 def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
-               outlines: tuple[np.ndarray, np.ndarray], label: str = "") -> None:
+               outlines: tuple[np.ndarray, np.ndarray], label: str = "", close_up: bool = False) -> None:
     """Both gears (``outlines`` placed in the frame), their circles and the line of action,
-    fitted into ``rect`` at one scale for x and y."""
+    fitted into ``rect`` at one scale for x and y (``close_up``: the line of action fitted,
+    the rest clipped)."""
     head = QRectF()
     if label:           # wrapped, never cut, above the drawing
         head = painter.boundingRect(QRectF(rect.left() + 6, rect.top() + 4, max(rect.width() - 12, 1.0), 1e4),
                                     int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap), label)
         rect = rect.adjusted(0.0, head.height() + 4.0, 0.0, 0.0)
-    lo, hi = pair_span(pair)
+    lo, hi = pair_span(pair, close_up)
     span = hi - lo
     scale = min(rect.width() / (span[0] * (1 + 2 * MARGIN)), rect.height() / (span[1] * (1 + 2 * MARGIN)))
     middle = (lo + hi) / 2.0
@@ -107,6 +124,7 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
         return QPointF(rect.center().x() + (x - middle[0]) * scale, rect.center().y() - (y - middle[1]) * scale)
 
     painter.save()
+    painter.setClipRect(rect)
     painter.setRenderHint(QPainter.RenderHint.Antialiasing)
     centres = ((0.0, 0.0), (pair.centre_mm, 0.0))
     for k, (gear, outline) in enumerate(zip((pair.gear1, pair.gear2), outlines)):
@@ -134,10 +152,11 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
     painter.setBrush(QBrush(TEXT))
     for name in ("N1", "N2", "B1", "B2", "P"):
         painter.drawEllipse(at(*pts[name]), 2.5, 2.5)
-        painter.drawText(at(*pts[name]) + QPointF(5, -4 if name in ("N2", "B1") else 13), name)
+        painter.drawText(at(*pts[name]) + LABEL_OFFSETS[name], name)
     for name, xy in zip(("O1", "O2"), centres):
         painter.drawEllipse(at(*xy), 3.0, 3.0)
-        painter.drawText(at(*xy) + QPointF(6, 14), name)
+        painter.drawText(at(*xy) + QPointF(-22, 16), name)
+    painter.setClipping(False)
     if label:
         painter.drawText(head, int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap), label)
     painter.restore()

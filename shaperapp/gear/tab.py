@@ -7,7 +7,7 @@ import datetime
 import os
 
 from PySide6.QtCore import QLocale, Qt
-from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QMessageBox, QPushButton, QScrollArea,
+from PySide6.QtWidgets import (QCheckBox, QGridLayout, QHBoxLayout, QMessageBox, QPushButton, QScrollArea,
                                QSplitter, QVBoxLayout, QWidget)
 
 from core.atomic import atomic_write
@@ -35,12 +35,15 @@ class GearTab(QWidget):
         self.form = GearForm(self.gear_model)
         self.view = GearPairView(self.gear_model)
         self.results = GearResults(self.gear_model)
+        self.close_up = QCheckBox(self)
+        self.close_up.toggled.connect(self.view.set_close_up)
         self.buttons = {name: QPushButton(self) for name in ("csv", "sheet")}
         self.buttons["csv"].clicked.connect(lambda: self._export_dialog("csv"))
         self.buttons["sheet"].clicked.connect(lambda: self._export_dialog("sheet"))
         side = QWidget()
         column = QVBoxLayout(side)
         column.addWidget(self.form)
+        column.addWidget(self.close_up)
         row = QGridLayout()
         for i, button in enumerate(self.buttons.values()):
             row.addWidget(button, 0, i)
@@ -70,6 +73,7 @@ class GearTab(QWidget):
     def retranslate(self) -> None:
         self.form.retranslate()
         self.results.retranslate()
+        self.close_up.setText(self.tr("Close-up of the line of action"))
         self.buttons["csv"].setText(self.tr("CSV…"))
         self.buttons["sheet"].setText(self.tr("Meshing sheet…"))
         self.buttons["sheet"].setToolTip(self.tr("The meshing drawing (sheet 4/4) as PDF, SVG or DXF"))
