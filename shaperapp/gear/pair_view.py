@@ -26,6 +26,7 @@ from .model import GearModel
 FILLS = (QColor("#cfd8dc"), QColor("#ffe0b2"))
 ACTION = QColor("#1565c0")
 MARGIN = 0.05
+NAMED_LINE_PX = 150      # N1N2 at least this long on screen to name its points
 # where each point's name goes (px from the point): the line of action runs up to the right
 # from N1 through B2, P, B1 to N2, so names alternate sides of it
 LABEL_OFFSETS = {"N1": QPointF(-24, 12), "B2": QPointF(-24, 4), "P": QPointF(8, 14),
@@ -139,7 +140,7 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
             painter.setPen(QPen(FRAME, width, style))
             painter.drawEllipse(c, radius * scale, radius * scale)
         painter.setPen(QPen(LINK, 1.5))               # a mark that turns with the gear
-        tooth = outline[int(np.argmax(np.hypot(outline[:, 0] - centres[k][0], outline[:, 1])))]
+        tooth = outline[len(outline) // gear.teeth // 2]     # the middle of the first tooth's tip
         painter.drawLine(c, at(*tooth))
     painter.setPen(QPen(FRAME, 0.8, Qt.PenStyle.DashDotLine))
     painter.drawLine(at(lo[0], 0.0), at(hi[0], 0.0))
@@ -150,9 +151,11 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
     painter.drawLine(at(*pts["B1"]), at(*pts["B2"]))
     painter.setPen(QPen(TEXT))
     painter.setBrush(QBrush(TEXT))
+    room = pair.n1n2 * scale >= NAMED_LINE_PX       # else the five names run together: P alone
     for name in ("N1", "N2", "B1", "B2", "P"):
         painter.drawEllipse(at(*pts[name]), 2.5, 2.5)
-        painter.drawText(at(*pts[name]) + LABEL_OFFSETS[name], name)
+        if room or name == "P":
+            painter.drawText(at(*pts[name]) + LABEL_OFFSETS[name], name)
     for name, xy in zip(("O1", "O2"), centres):
         painter.drawEllipse(at(*xy), 3.0, 3.0)
         painter.drawText(at(*xy) + QPointF(-22, 16), name)

@@ -166,3 +166,17 @@ def test_the_meshing_sheet_exports_as_dxf_with_the_pair_at_one_to_one(tab, tmp_p
     assert round(pair.gear1.rb, 6) in radii and round(pair.gear1.ra, 6) in radii
     with pytest.raises(ValueError):
         tab.export_sheet(str(tmp_path / "g.txt"))
+
+
+def test_the_close_up_fits_the_line_of_action(qtbot, tab):
+    from core.gear.mesh import line_points
+    from shaperapp.gear.pair_view import pair_span
+    pair = tab.gear_model.pair
+    lo, hi = pair_span(pair, close_up=True)
+    full_lo, full_hi = pair_span(pair)
+    for name in ("N1", "N2", "P"):
+        assert np.all(line_points(pair)[name] > lo) and np.all(line_points(pair)[name] < hi)
+    assert np.all(hi - lo < (full_hi - full_lo) / 2)
+    before = tab.view.grab().toImage()
+    tab.close_up.setChecked(True)
+    assert tab.view.close_up and tab.view.grab().toImage() != before
