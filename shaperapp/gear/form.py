@@ -47,6 +47,8 @@ class GearForm(QWidget):
             self.module.addItem(exact_number(m))
         self.module.setMaximumWidth(90)
         self.mode = QComboBox(self)
+        self.mode.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
+        self.mode.setMinimumContentsLength(12)      # the longest choice is shown when the list opens
         for mode in MODES:
             self.mode.addItem("", mode)
         self._labels = {name: QLabel(self) for name in ORDER}

@@ -39,7 +39,7 @@ class GearPairView(QWidget):
     def __init__(self, gear_model: GearModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._model = gear_model
-        self.setMinimumSize(240, 200)
+        self.setMinimumSize(200, 200)
         self._outlines: tuple[np.ndarray, np.ndarray] | None = None
         self.close_up = False           # the line of action N1N2 filling the view, not both gears
         gear_model.pairChanged.connect(self._reset)

@@ -54,7 +54,7 @@ class GearTab(QWidget):
         scroll.setWidget(side)
         scroll.setWidgetResizable(True)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        scroll.setFixedWidth(side.sizeHint().width() + 16)
+        self._side = scroll
         tables = QScrollArea()
         tables.setWidget(self.results)
         tables.setWidgetResizable(True)
@@ -78,6 +78,15 @@ class GearTab(QWidget):
         self.buttons["sheet"].setText(self.tr("Meshing sheet…"))
         self.buttons["sheet"].setToolTip(self.tr("The meshing drawing (sheet 4/4) as PDF, SVG or DXF"))
         self.view.update()
+        self._fit_side()
+
+    def _fit_side(self) -> None:
+        """The inputs' column as wide as the form in the current language: the checks'
+        lines under it wrap (their one-line width made the window wider than 1280 px)."""
+        for layout in (self.form.layout(), *self.form.layout().children()):
+            layout.invalidate()             # the new labels' widths, not the cached ones
+        margins = self._side.widget().layout().contentsMargins()
+        self._side.setFixedWidth(self.form.sizeHint().width() + margins.left() + margins.right() + 16)
 
     # ---- exports -------------------------------------------------------------
     def export_csv(self, path: str) -> None:
