@@ -11,7 +11,7 @@ from PySide6.QtCore import QCoreApplication
 
 from core.errors import DesignError
 from core.gear import Check
-from shaperapp.widgets.messages import allowed_text
+from shaperapp.widgets.messages import allowed_text, field_name
 
 translate = QCoreApplication.translate
 
@@ -81,7 +81,7 @@ def _templates() -> dict[str, str]:
 
 def describe_gear_error(error: DesignError) -> str:
     """'Field: what is allowed' for a refusal of the gear pair, in the UI's language."""
-    name = field_names().get(error.parameter, error.parameter)
+    name = field_names().get(error.parameter) or field_name(error.parameter)
     body = allowed_text(error.allowed, _PATTERNS, _templates())
     return translate("messages", "%1: %2").replace("%1", name).replace("%2", body)
 

@@ -19,6 +19,7 @@ from core.errors import DesignError
 from core.gear import GearPair, GearPairInputs, design_pair
 from core.gear.file import gear_from_dict, gear_to_dict
 from shaperapp.design.model import DesignModel
+from shaperapp.design.results import COMPUTE_ERRORS, compute_error
 from shaperapp.design.undo import InputEdit, push_edit
 
 MODES = ("auto", "shifts", "centre")
@@ -182,8 +183,8 @@ class GearModel(QObject):
         except DesignError as exc:
             self._set_error(exc)
             return
-        except (ValueError, ArithmeticError) as exc:    # a corner of the closed forms
-            self._set_error(DesignError("module", typed.dict["module"], f"cannot be computed ({exc})"))
+        except COMPUTE_ERRORS as exc:       # a corner of the closed forms: said, never a traceback
+            self._set_error(compute_error(exc))
             return
         self._set_error(None)
         self._valid_typed = typed

@@ -180,3 +180,11 @@ def test_the_close_up_fits_the_line_of_action(qtbot, tab):
     before = tab.view.grab().toImage()
     tab.close_up.setChecked(True)
     assert tab.view.close_up and tab.view.grab().toImage() != before
+
+
+def test_a_pair_the_closed_forms_cannot_compute_is_said_not_raised(qtbot, tab, monkeypatch):
+    before = tab.gear_model.pair
+    monkeypatch.setattr("shaperapp.gear.model.design_pair", lambda inputs: 1 / 0)
+    type_into(qtbot, tab, "z1", "14")
+    assert tab.gear_model.pair is before
+    assert tab.form.error_label.text().startswith("⚠ Design: cannot be computed for these inputs")
