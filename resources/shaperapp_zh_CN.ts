@@ -866,11 +866,11 @@
         <translation>连杆</translation>
     </message>
     <message>
-        <source>Through the tip&apos;s extreme positions (chord)</source>
+        <source>Through the tip's extreme positions (chord)</source>
         <translation>通过导杆端部两极限位置（弦线）</translation>
     </message>
     <message>
-        <source>Mid-sagitta of the tip&apos;s arc</source>
+        <source>Mid-sagitta of the tip's arc</source>
         <translation>导杆端部圆弧矢高的中点</translation>
     </message>
     <message>
@@ -1832,7 +1832,7 @@
         <translation>优化</translation>
     </message>
     <message>
-        <source>Optimize over the map&apos;s ranges</source>
+        <source>Optimize over the map's ranges</source>
         <translation>在分布图范围内优化</translation>
     </message>
     <message>
@@ -2029,7 +2029,7 @@
         <translation>小齿轮，在电动机一侧</translation>
     </message>
     <message>
-        <source>The gear, on the crank&apos;s shaft</source>
+        <source>The gear, on the crank's shaft</source>
         <translation>大齿轮，装在曲柄轴上</translation>
     </message>
     <message>
@@ -2120,7 +2120,7 @@
         <translation>使齿轮 %1 齿顶变尖（x = %2）：请减小中心距</translation>
     </message>
     <message>
-        <source>too few teeth for the rule&apos;s shifts, which make the tip of gear %1 pointed (x = %2): give more teeth, or the shifts or the centre distance</source>
+        <source>too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give more teeth, or the shifts or the centre distance</source>
         <translation>齿数过少，按规则取的变位使齿轮 %1 齿顶变尖（x = %2）：请增加齿数，或直接给定变位系数或中心距</translation>
     </message>
     <message>
@@ -2164,11 +2164,11 @@
         <translation>给定 x1 和 x2</translation>
     </message>
     <message>
-        <source>from the centre distance: the pinion&apos;s least uncut shift, the rest to the gear</source>
+        <source>from the centre distance: the pinion's least uncut shift, the rest to the gear</source>
         <translation>由中心距求得：小齿轮取不根切的最小变位，其余归大齿轮</translation>
     </message>
     <message>
-        <source>rule: z1 + z2 ≥ 2 zmin, the pinion&apos;s least uncut shift and x2 = −x1</source>
+        <source>rule: z1 + z2 ≥ 2 zmin, the pinion's least uncut shift and x2 = −x1</source>
         <translation>规则：z1 + z2 ≥ 2 zmin，小齿轮取不根切的最小变位，x2 = −x1</translation>
     </message>
     <message>
@@ -2707,7 +2707,7 @@
         <translation>筛选，例如 K&gt;=1.4, 方案=连杆, 最大 |a|&lt;5</translation>
     </message>
     <message>
-        <source>Figures at each design&apos;s first speed</source>
+        <source>Figures at each design's first speed</source>
         <translation>按各设计的第一个转速</translation>
     </message>
     <message>
@@ -2718,7 +2718,7 @@
 <context>
     <name>LibraryTableModel</name>
     <message>
-        <source>This design is damaged: %1. &apos;shaper library check&apos; lists every damaged design.</source>
+        <source>This design is damaged: %1. 'shaper library check' lists every damaged design.</source>
         <translation>此设计已损坏：%1。“shaper library check”会列出所有损坏的设计。</translation>
     </message>
     <message>
@@ -2745,7 +2745,7 @@
         <translation>质心位置 c</translation>
     </message>
     <message>
-        <source>Distance of the lever&apos;s centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
+        <source>Distance of the lever's centre of mass from O4 along O4B, mm; leave empty for L3/2</source>
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
@@ -2769,7 +2769,7 @@
         <translation>质心偏移 dx</translation>
     </message>
     <message>
-        <source>Horizontal offset of the ram&apos;s centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
+        <source>Horizontal offset of the ram's centre of mass from the ram joint C, mm (+ in the cutting direction)</source>
         <translation>滑枕质心相对铰点 C 的水平偏移，mm（切削方向为正）</translation>
     </message>
     <message>
@@ -2777,7 +2777,7 @@
         <translation>质心偏移 dy</translation>
     </message>
     <message>
-        <source>Vertical offset of the ram&apos;s centre of mass from the ram joint C, mm (+ up)</source>
+        <source>Vertical offset of the ram's centre of mass from the ram joint C, mm (+ up)</source>
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
@@ -2928,7 +2928,7 @@
         <translation>导出运动曲线 CSV(&amp;C)…</translation>
     </message>
     <message>
-        <source>All speeds, at the form&apos;s angle step</source>
+        <source>All speeds, at the form's angle step</source>
         <translation>全部转速，按表单中的角度步长</translation>
     </message>
     <message>
@@ -2976,7 +2976,7 @@
         <translation>导出图纸(&amp;D)（PDF/SVG/DXF）…</translation>
     </message>
     <message>
-        <source>The course design&apos;s drawing sheet on A0–A3 paper, with a preview</source>
+        <source>The course design's drawing sheet on A0–A3 paper, with a preview</source>
         <translation>课程设计图纸，A0–A3 图幅，带预览</translation>
     </message>
     <message>
@@ -3215,7 +3215,7 @@
         <translation>曲柄轴上飞轮转动惯量 J_F，kg·m²</translation>
     </message>
     <message>
-        <source>J_F less mechanism&apos;s own, kg·m²</source>
+        <source>J_F less mechanism's own, kg·m²</source>
         <translation>扣除机构自身等效惯量后的 J_F，kg·m²</translation>
     </message>
     <message>
@@ -3299,7 +3299,7 @@
         <translation>实测 K</translation>
     </message>
     <message>
-        <source>Working / return crank angle, from the ram&apos;s dead points</source>
+        <source>Working / return crank angle, from the ram's dead points</source>
         <translation>工作行程与回程的曲柄转角之比，由滑枕极限位置测得</translation>
     </message>
     <message>
@@ -3307,7 +3307,7 @@
         <translation>实测行程</translation>
     </message>
     <message>
-        <source>Distance between the ram&apos;s dead points</source>
+        <source>Distance between the ram's dead points</source>
         <translation>滑枕两极限位置之间的距离</translation>
     </message>
     <message>
@@ -3413,7 +3413,7 @@
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <source>Plot against the crank angle (0–360°) or against time (each speed&apos;s own cycle)</source>
+        <source>Plot against the crank angle (0–360°) or against time (each speed's own cycle)</source>
         <translation>以曲柄转角 (0–360°) 或时间（各转速自身的周期）为横坐标</translation>
     </message>
     <message>
@@ -3421,7 +3421,7 @@
         <translation>导杆曲线</translation>
     </message>
     <message>
-        <source>Show the slotted lever&apos;s angle, angular velocity or angular acceleration</source>
+        <source>Show the slotted lever's angle, angular velocity or angular acceleration</source>
         <translation>显示导杆的角位移、角速度或角加速度</translation>
     </message>
     <message>
@@ -3516,7 +3516,7 @@
         <translation>极限位置：ω₃ = 0，故 aᵏ = aⁿ = 0。</translation>
     </message>
     <message>
-        <source>Cannot export to &apos;%1&apos;: use .png or .svg</source>
+        <source>Cannot export to '%1': use .png or .svg</source>
         <translation>无法导出为“%1”：请使用 .png 或 .svg</translation>
     </message>
 </context>
@@ -3724,7 +3724,7 @@
         <translation>说明</translation>
     </message>
     <message>
-        <source>Follower&apos;s largest ω / α at %1 r/min</source>
+        <source>Follower's largest ω / α at %1 r/min</source>
         <translation>从动件最大 ω / α（%1 r/min）</translation>
     </message>
     <message>
@@ -3740,7 +3740,7 @@
         <translation>推程起点处的进给凸轮及其从动件和滚子（凸轮顺时针转动）</translation>
     </message>
     <message>
-        <source>The follower&apos;s angle ψ, angular velocity ω and acceleration α (one curve per crank speed, in the colours of the ram&apos;s curves in section 4) and the pressure angle against the cam angle δ; dashed: the allowed pressure angles</source>
+        <source>The follower's angle ψ, angular velocity ω and acceleration α (one curve per crank speed, in the colours of the ram's curves in section 4) and the pressure angle against the cam angle δ; dashed: the allowed pressure angles</source>
         <translation>从动件摆角 ψ、角速度 ω 和角加速度 α（每个曲柄转速一条曲线，颜色同第 4 节滑枕线图）及压力角随凸轮转角 δ 的变化；虚线：许用压力角</translation>
     </message>
     <message>
@@ -3776,11 +3776,11 @@
         <translation>滑枕驱动方式</translation>
     </message>
     <message>
-        <source>through the lever tip&apos;s extreme positions</source>
+        <source>through the lever tip's extreme positions</source>
         <translation>通过导杆端点两极限位置</translation>
     </message>
     <message>
-        <source>midway along the tip arc&apos;s sagitta</source>
+        <source>midway along the tip arc's sagitta</source>
         <translation>位于导杆端点圆弧矢高的中点</translation>
     </message>
     <message>
@@ -3936,11 +3936,11 @@
         <translation>完整的表只列第一个曲柄转速 n₁ = %1 r/min；转速为 n 时，各速度为其 n/n₁ 倍，各加速度为其 (n/n₁)² 倍。</translation>
     </message>
     <message>
-        <source>The ram&apos;s velocity and acceleration, the crank torque and the power follow at every speed.</source>
+        <source>The ram's velocity and acceleration, the crank torque and the power follow at every speed.</source>
         <translation>随后列出各转速下滑枕的速度和加速度、曲柄驱动力矩和功率。</translation>
     </message>
     <message>
-        <source>The ram&apos;s velocity and acceleration follow at every speed.</source>
+        <source>The ram's velocity and acceleration follow at every speed.</source>
         <translation>随后列出各转速下滑枕的速度和加速度。</translation>
     </message>
     <message>
@@ -4024,7 +4024,7 @@
         <translation>各转速下的力矩、功率与飞轮</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide midway along the sagitta of the tip&apos;s arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
+        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide midway along the sagitta of the tip's arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路位于导杆端点圆弧矢高的中点，距 O4 为 L3·(1 + cos(θ/2))/2。</translation>
     </message>
     <message>
@@ -4032,11 +4032,11 @@
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路位于给定高度（距 O4）。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide through the tip&apos;s extreme positions at L3·cos(θ/2) above O4.</source>
+        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide through the tip's extreme positions at L3·cos(θ/2) above O4.</source>
         <translation>&lt;b&gt;给定尺寸。&lt;/b&gt;L1、L2、L3 为给定值；θ = 2·arcsin(L1/L2)，K = (180° + θ)/(180° − θ)，H = 2·L3·sin(θ/2)；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide midway along the sagitta of the tip&apos;s arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
+        <source>&lt;b&gt;Dimensions.&lt;/b&gt; L1, L2 and L3 as given; θ = 2·arcsin(L1/L2), K = (180° + θ)/(180° − θ), H = 2·L3·sin(θ/2); guide midway along the sagitta of the tip's arc, at L3·(1 + cos(θ/2))/2 above O4.</source>
         <translation>&lt;b&gt;给定尺寸。&lt;/b&gt;L1、L2、L3 为给定值；θ = 2·arcsin(L1/L2)，K = (180° + θ)/(180° − θ)，H = 2·L3·sin(θ/2)；导路位于导杆端点圆弧矢高的中点，距 O4 为 L3·(1 + cos(θ/2))/2。</translation>
     </message>
     <message>
@@ -4048,11 +4048,11 @@
         <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，滑枕导路为直线 y = 导路高度；滑枕向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。滑枕 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号：1 曲柄，2 滑块，3 导杆，4 连杆，5 滑枕。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip&apos;s extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
+        <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)（距 O2 为 h = H/(2·tan(θ/2)) − L2）。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Senses.&lt;/b&gt; The lever&apos;s ω3 and α3 are positive clockwise (as ψ and the crank), the rod&apos;s ω4 and α4 counter-clockwise. The block&apos;s sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons&apos; v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
+        <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω3 and α3 are positive clockwise (as ψ and the crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
         <translation>&lt;b&gt;正方向。&lt;/b&gt;导杆的 ω3、α3 以顺时针为正（与 ψ 及曲柄转向相同），连杆的 ω4、α4 以逆时针为正。滑块沿导杆的滑动速度以离开 O4 为正，其科氏加速度 2·ω3·v_slide 取沿 ψ 增大方向的分量；矢量多边形中的 v_A3A2 与 a^k_A3A2 为其相反数。切削力从切削开始到切削结束均作用（两端包括在内）：这两个位置的行计入切削力。</translation>
     </message>
     <message>
@@ -4064,7 +4064,7 @@
         <translation>&lt;b&gt;加速度分析。&lt;/b&gt;a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2，a^n_A3 = ω3²·O4A 指向 O4，a^t_A3 = α3·O4A，哥氏加速度 a^k_A3A2 = 2·ω3·v_A3A2（将 v_A3A2 沿 ω3 转向转 90°）；连杆方案 a_C = a_B + a^n_CB + a^t_CB，a^n_CB = ω4²·L4，a^t_CB = α4·L4。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d&apos;Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
+        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d'Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
         <translation>&lt;b&gt;力分析。&lt;/b&gt;曲柄匀速转动下的动态静力分析（达朗贝尔原理）：加上惯性力 F_I = −m·a_G 和惯性力矩 −J·α 后各构件处于平衡；运动副无摩擦。切削力 P 与切削方向相反，作用于工作行程的 空刀量·H 至 (1 − 空刀量)·H 之间。</translation>
     </message>
     <message>
@@ -4108,7 +4108,7 @@
         <translation>、</translation>
     </message>
     <message>
-        <source>The design of this report, “%1”, beside %2 at %3 r/min, the report&apos;s first speed. Each value is followed by its difference from “%1” in brackets ((=): the same); ★ marks the best value of a row: the lowest max |a|, pressure angle, torques and flywheel J_F. Torques and J_F need loads; a design without them has none (—). The numbers are those of shaper library compare.</source>
+        <source>The design of this report, “%1”, beside %2 at %3 r/min, the report's first speed. Each value is followed by its difference from “%1” in brackets ((=): the same); ★ marks the best value of a row: the lowest max |a|, pressure angle, torques and flywheel J_F. Torques and J_F need loads; a design without them has none (—). The numbers are those of shaper library compare.</source>
         <translation>本说明书的设计“%1”与 %2 在 %3 r/min（本说明书的第一个转速）下的比较。每个数值后的括号内为其与“%1”之差（(=)：相同）；★ 标出每行的最优值：最大 |a|、压力角、驱动力矩和飞轮 J_F 均以小为优。驱动力矩和 J_F 需要载荷；未给载荷的设计没有这些值（—）。数值与 shaper library compare 的输出相同。</translation>
     </message>
     <message>
@@ -4211,7 +4211,7 @@
         <translation>“比较”选项卡中除本设计外有 %1 个设计；说明书最多比较 %2 个。</translation>
     </message>
     <message>
-        <source>This design beside the Compare tab&apos;s designs (%1) at %2 r/min.</source>
+        <source>This design beside the Compare tab's designs (%1) at %2 r/min.</source>
         <translation>本设计与“比较”选项卡中的设计（%1）在 %2 r/min 下比较。</translation>
     </message>
     <message>
@@ -4877,15 +4877,15 @@
         <translation>校核凸轮须同时给出基圆半径和中心距</translation>
     </message>
     <message>
-        <source>the profile&apos;s smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm</source>
+        <source>the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm</source>
         <translation>实际廓线最小半径 r0 − r = %1 mm，比轮毂半径 + 间隙 = %3 mm 小 %2 mm</translation>
     </message>
     <message>
-        <source>the profile&apos;s largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
+        <source>the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
         <translation>实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
-        <source>no cam within the allowances clears the pivot; the smallest: its profile&apos;s largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
+        <source>no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
         <translation>在许用压力角内没有能避开摆动中心的凸轮；最小的凸轮：实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
@@ -4941,7 +4941,7 @@
         <translation>%1 没有版本号；本程序读取第 %2 版</translation>
     </message>
     <message>
-        <source>%1 holds no design (its &apos;spec&apos; entry is missing)</source>
+        <source>%1 holds no design (its 'spec' entry is missing)</source>
         <translation>%1 中没有设计（缺少设计参数）</translation>
     </message>
     <message>
@@ -4989,11 +4989,11 @@
         <translation>%1 不是设计文件（数值 %2 过大）</translation>
     </message>
     <message>
-        <source>%1: &apos;spec&apos; must be an object of design fields</source>
+        <source>%1: 'spec' must be an object of design fields</source>
         <translation>%1：设计参数须为一组设计字段</translation>
     </message>
     <message>
-        <source>%1: &apos;rpm&apos; must be a list of crank speeds in r/min</source>
+        <source>%1: 'rpm' must be a list of crank speeds in r/min</source>
         <translation>%1：曲柄转速须为以 r/min 计的一列数值</translation>
     </message>
     <message>
@@ -5001,7 +5001,7 @@
         <translation>%1：曲柄转速 %2 不是数值</translation>
     </message>
     <message>
-        <source>%1: &apos;step_deg&apos; must be a number of degrees</source>
+        <source>%1: 'step_deg' must be a number of degrees</source>
         <translation>%1：角度步长须为以度计的数值</translation>
     </message>
     <message>
