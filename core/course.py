@@ -56,7 +56,6 @@ class Part:
     needs: tuple[str, ...]    # the design file's keys it needs besides "spec"
     drawn: str = ""           # the design-file object it draws (the sheet choice's field of that name)
     reader: Callable[[Any, Any, float], Any] | None = None   # (object, design, idle) → what is drawn
-    optional: bool = False    # left out (and said so) when the file lacks what it needs, not refused
 
 
 PARTS: tuple[Part, ...] = (
@@ -64,9 +63,7 @@ PARTS: tuple[Part, ...] = (
     Part("motion", "motion", "the motion sheet", ("rpm",)),
     Part("kinetostatic", "forces", "the kinetostatic sheet", ("rpm", "forces")),
     Part("cam", "cam", "the cam sheet", ("rpm", "cam"), drawn="cam", reader=_designed_cam),
-    # Optional while the GUI has no Gear tab: a design on screen has a gear pair only if its
-    # file had one, and every other file is still worth writing without it.
-    Part("gear", "gear", "the gear sheet", ("gear",), drawn="gear", reader=_designed_gear, optional=True),
+    Part("gear", "gear", "the gear sheet", ("gear",), drawn="gear", reader=_designed_gear),
 )
 
 
@@ -100,7 +97,6 @@ class Course:
     folder: str
     drawn: Mapping[str, Any] = field(default_factory=dict)   # Part.drawn → the object
     document: Mapping[str, Any] = field(default_factory=dict)  # the design file as read
-    left_out: tuple[Part, ...] = ()            # optional parts the file lacks the keys of
 
 
 def file_names(parts: tuple[Part, ...] = PARTS, dxf: bool = False) -> list[tuple[Part, str]]:
@@ -152,10 +148,8 @@ def plan_course(doc: Mapping[str, Any], keys: Collection[str], name: str, folder
     """The course design of a read design file (``doc`` as ``parse_design`` returns it,
     ``keys`` the file's own keys, ``name`` how messages call it) to be written into
     ``folder``; CourseError naming --design or --output for anything that would stop it,
-    found before anything is written. An optional part whose keys the file lacks is left
-    out (``Course.left_out``) and keeps its number in the others' names."""
-    left_out = tuple(p for p in parts if p.optional and any(key not in keys for key in p.needs))
-    missing = missing_parts(keys, tuple(p for p in parts if p not in left_out))
+    found before anything is written."""
+    missing = missing_parts(keys, parts)
     if missing:
         raise CourseError("--design", missing_text(name, missing), missing)
     spec = doc["spec"]
@@ -167,22 +161,14 @@ def plan_course(doc: Mapping[str, Any], keys: Collection[str], name: str, folder
     idle = masses.idle_fraction if masses is not None else 0.05
     drawn = {}
     for part in parts:
-        if part.reader is not None and part.drawn not in drawn and part not in left_out:
+        if part.reader is not None and part.drawn not in drawn:
             try:
                 drawn[part.drawn] = part.reader(doc[part.drawn], design, idle)
             except DesignError as exc:
                 raise CourseError("--design", f"{name}: {part.title}: {exc}", cause=exc) from None
-    files = tuple(CourseFile(part, os.path.join(folder, file)) for part, file in file_names(parts, dxf)
-                  if part not in left_out)
+    files = tuple(CourseFile(part, os.path.join(folder, file)) for part, file in file_names(parts, dxf))
     check_folder(folder, [f.path for f in files])
-    return Course(spec, tuple(float(r) for r in doc["rpm"]), masses, files, folder, drawn, dict(doc),
-                  left_out)
-
-
-def left_out_text(name: str, course: Course) -> list[str]:
-    """A line per part left out: 'left out the gear sheet: d.json has no "gear" (the gear pair)'."""
-    return [f"left out {part.title}: {missing_text(name, missing_parts(frozenset(course.document), (part,)))}"
-            for part in course.left_out]
+    return Course(spec, tuple(float(r) for r in doc["rpm"]), masses, files, folder, drawn, dict(doc))
 
 
 def check_folder(folder: str, paths: list[str]) -> None:

@@ -722,10 +722,6 @@
         <source>Export course design: choose a folder</source>
         <translation>导出课程设计：选择文件夹</translation>
     </message>
-    <message>
-        <source>The gear sheet was left out: the design has no gear pair. Open a design file that holds one ("gear", see shaper gear) to include it.</source>
-        <translation>未导出齿轮啮合图：当前设计没有齿轮副。请打开含齿轮副（"gear"，见 shaper gear）的设计文件后再导出。</translation>
-    </message>
 </context>
 <context>
     <name>DesignForm</name>
@@ -2027,6 +2023,356 @@
     </message>
 </context>
 <context>
+    <name>GearForm</name>
+    <message>
+        <source>automatic (the rule)</source>
+        <translation>自动（按规则）</translation>
+    </message>
+    <message>
+        <source>shift factors x1, x2</source>
+        <translation>变位系数 x1、x2</translation>
+    </message>
+    <message>
+        <source>centre distance a′</source>
+        <translation>中心距 a′</translation>
+    </message>
+    <message>
+        <source>The pinion, on the motor side</source>
+        <translation>小齿轮，在电动机一侧</translation>
+    </message>
+    <message>
+        <source>The gear, on the crank's shaft</source>
+        <translation>大齿轮，装在曲柄轴上</translation>
+    </message>
+    <message>
+        <source>The last valid gear pair stays on screen.</source>
+        <translation>屏幕上保留上一个有效的齿轮副。</translation>
+    </message>
+</context>
+<context>
+    <name>GearMessages</name>
+    <message>
+        <source>Teeth z1</source>
+        <translation>齿数 z1</translation>
+    </message>
+    <message>
+        <source>Teeth z2</source>
+        <translation>齿数 z2</translation>
+    </message>
+    <message>
+        <source>Module m</source>
+        <translation>模数 m</translation>
+    </message>
+    <message>
+        <source>Shift factor x1</source>
+        <translation>变位系数 x1</translation>
+    </message>
+    <message>
+        <source>Shift factor x2</source>
+        <translation>变位系数 x2</translation>
+    </message>
+    <message>
+        <source>Centre distance a′</source>
+        <translation>中心距 a′</translation>
+    </message>
+    <message>
+        <source>Pressure angle α</source>
+        <translation>压力角 α</translation>
+    </message>
+    <message>
+        <source>Addendum factor h*a</source>
+        <translation>齿顶高系数 h*a</translation>
+    </message>
+    <message>
+        <source>Clearance factor c*</source>
+        <translation>顶隙系数 c*</translation>
+    </message>
+    <message>
+        <source>Least tip thickness</source>
+        <translation>最小齿顶厚</translation>
+    </message>
+    <message>
+        <source>Least contact ratio</source>
+        <translation>最小重合度</translation>
+    </message>
+    <message>
+        <source>Shifts given as</source>
+        <translation>变位给定方式</translation>
+    </message>
+    <message>
+        <source>must be a whole number of teeth</source>
+        <translation>齿数必须为整数</translation>
+    </message>
+    <message>
+        <source>must be at least %1 and at most %2 teeth</source>
+        <translation>必须不少于 %1 且不多于 %2 个齿</translation>
+    </message>
+    <message>
+        <source>x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts</source>
+        <translation>x1 + x2 过小：两齿轮无法啮合（α′ ≤ 0）；请增大变位系数</translation>
+    </message>
+    <message>
+        <source>must be more than a cos α = %1 mm (the working pressure angle would be 0)</source>
+        <translation>必须大于 a cos α = %1 mm（否则啮合角为 0）</translation>
+    </message>
+    <message>
+        <source>needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm</source>
+        <translation>需要 x1 + x2 = %1，小于两轮均不根切所需的 %2；请取不小于 %3 mm</translation>
+    </message>
+    <message>
+        <source>x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle</source>
+        <translation>x1 + x2 过大：齿顶高降低后齿轮 %1 在基圆以外没有齿廓</translation>
+    </message>
+    <message>
+        <source>makes the tip of gear %1 pointed (x = %2): give a smaller shift</source>
+        <translation>使齿轮 %1 齿顶变尖（x = %2）：请减小变位系数</translation>
+    </message>
+    <message>
+        <source>makes the tip of gear %1 pointed (x = %2): give a smaller centre distance</source>
+        <translation>使齿轮 %1 齿顶变尖（x = %2）：请减小中心距</translation>
+    </message>
+    <message>
+        <source>too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give more teeth, or the shifts or the centre distance</source>
+        <translation>齿数过少，按规则取的变位使齿轮 %1 齿顶变尖（x = %2）：请增加齿数，或直接给定变位系数或中心距</translation>
+    </message>
+    <message>
+        <source>m = %1 mm is not a GB/T 1357 first-series module</source>
+        <translation>m = %1 mm 不是 GB/T 1357 第一系列模数</translation>
+    </message>
+    <message>
+        <source>Gear %1 not undercut: x%1 ≥ x%1min</source>
+        <translation>齿轮 %1 不根切：x%1 ≥ x%1min</translation>
+    </message>
+    <message>
+        <source>Gear %1 tip thick enough: sa%1 ≥ %2 mm</source>
+        <translation>齿轮 %1 齿顶厚足够：sa%1 ≥ %2 mm</translation>
+    </message>
+    <message>
+        <source>Contact ratio: ε ≥ %1</source>
+        <translation>重合度：ε ≥ %1</translation>
+    </message>
+    <message>
+        <source>No interference at the root of gear %1</source>
+        <translation>齿轮 %1 齿根无干涉</translation>
+    </message>
+    <message>
+        <source>raise x%1 to ≥ %2 (or give gear %1 more teeth)</source>
+        <translation>将 x%1 增大到 ≥ %2（或增加齿轮 %1 的齿数）</translation>
+    </message>
+    <message>
+        <source>the tip of gear %1 is too thin: lower x%1 (or the centre distance)</source>
+        <translation>齿轮 %1 齿顶过薄：请减小 x%1（或中心距）</translation>
+    </message>
+    <message>
+        <source>ε is too small: give more teeth, less shift or a smaller centre distance</source>
+        <translation>ε 过小：请增加齿数、减小变位或减小中心距</translation>
+    </message>
+    <message>
+        <source>the tip of gear %2 digs into the root of gear %1: raise x%1, lower x%2 or shorten the addendum</source>
+        <translation>齿轮 %2 的齿顶与齿轮 %1 的齿根干涉：请增大 x%1、减小 x%2 或降低齿顶高</translation>
+    </message>
+    <message>
+        <source>x1 and x2 given</source>
+        <translation>给定 x1 和 x2</translation>
+    </message>
+    <message>
+        <source>from the centre distance: the pinion's least uncut shift, the rest to the gear</source>
+        <translation>由中心距求得：小齿轮取不根切的最小变位，其余归大齿轮</translation>
+    </message>
+    <message>
+        <source>rule: z1 + z2 ≥ 2 zmin, the pinion's least uncut shift and x2 = −x1</source>
+        <translation>规则：z1 + z2 ≥ 2 zmin，小齿轮取不根切的最小变位，x2 = −x1</translation>
+    </message>
+    <message>
+        <source>rule: z1 + z2 &lt; 2 zmin, the least positive pair at a′ rounded up to 0.5 mm</source>
+        <translation>规则：z1 + z2 &lt; 2 zmin，取最小的正传动，a′ 向上圆整到 0.5 mm</translation>
+    </message>
+</context>
+<context>
+    <name>GearModel</name>
+    <message>
+        <source>edit gear pair</source>
+        <translation>编辑齿轮副</translation>
+    </message>
+</context>
+<context>
+    <name>GearPairView</name>
+    <message>
+        <source>crank φ = %1°: gear z2 turned %1° clockwise, pinion z1 %2° counter-clockwise (i = %3)</source>
+        <translation>曲柄 φ = %1°：大齿轮 z2 顺时针转过 %1°，小齿轮 z1 逆时针转过 %2°（i = %3）</translation>
+    </message>
+</context>
+<context>
+    <name>GearResults</name>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <source>Teeth</source>
+        <translation>齿数</translation>
+    </message>
+    <message>
+        <source>Shift factor</source>
+        <translation>变位系数</translation>
+    </message>
+    <message>
+        <source>Least shift factor without undercut</source>
+        <translation>不根切的最小变位系数</translation>
+    </message>
+    <message>
+        <source>Reference diameter</source>
+        <translation>分度圆直径</translation>
+    </message>
+    <message>
+        <source>Base diameter</source>
+        <translation>基圆直径</translation>
+    </message>
+    <message>
+        <source>Tip diameter</source>
+        <translation>齿顶圆直径</translation>
+    </message>
+    <message>
+        <source>Root diameter</source>
+        <translation>齿根圆直径</translation>
+    </message>
+    <message>
+        <source>Working pitch diameter</source>
+        <translation>节圆直径</translation>
+    </message>
+    <message>
+        <source>Tooth thickness on the reference circle</source>
+        <translation>分度圆齿厚</translation>
+    </message>
+    <message>
+        <source>Space width on the reference circle</source>
+        <translation>分度圆齿槽宽</translation>
+    </message>
+    <message>
+        <source>Tip thickness</source>
+        <translation>齿顶厚</translation>
+    </message>
+    <message>
+        <source>Undercut</source>
+        <translation>根切</translation>
+    </message>
+    <message>
+        <source>Undercut by the rack (x &lt; xmin)</source>
+        <translation>被齿条刀具根切（x &lt; xmin）</translation>
+    </message>
+    <message>
+        <source>Centre distance</source>
+        <translation>中心距</translation>
+    </message>
+    <message>
+        <source>Standard centre distance</source>
+        <translation>标准中心距</translation>
+    </message>
+    <message>
+        <source>Working pressure angle</source>
+        <translation>啮合角</translation>
+    </message>
+    <message>
+        <source>Centre distance shift factor</source>
+        <translation>中心距变动系数</translation>
+    </message>
+    <message>
+        <source>Addendum reduction factor</source>
+        <translation>齿顶高降低系数</translation>
+    </message>
+    <message>
+        <source>Ratio</source>
+        <translation>传动比</translation>
+    </message>
+    <message>
+        <source>Base pitch</source>
+        <translation>基圆齿距</translation>
+    </message>
+    <message>
+        <source>Line of action between the limit points</source>
+        <translation>理论啮合线</translation>
+    </message>
+    <message>
+        <source>Actual line of action</source>
+        <translation>实际啮合线</translation>
+    </message>
+    <message>
+        <source>Contact ratio</source>
+        <translation>重合度</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>满足</translation>
+    </message>
+    <message>
+        <source>fails: %1</source>
+        <translation>不满足：%1</translation>
+    </message>
+    <message>
+        <source>Pinion 1</source>
+        <translation>小齿轮 1</translation>
+    </message>
+    <message>
+        <source>Gear 2</source>
+        <translation>大齿轮 2</translation>
+    </message>
+    <message>
+        <source>Pair</source>
+        <translation>齿轮副</translation>
+    </message>
+    <message>
+        <source>Shifts: %1</source>
+        <translation>变位：%1</translation>
+    </message>
+</context>
+<context>
+    <name>GearTab</name>
+    <message>
+        <source>Close-up of the line of action</source>
+        <translation>放大显示啮合线附近</translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation>CSV…</translation>
+    </message>
+    <message>
+        <source>Meshing sheet…</source>
+        <translation>啮合图…</translation>
+    </message>
+    <message>
+        <source>The meshing drawing (sheet 4/4) as PDF, SVG or DXF</source>
+        <translation>齿轮啮合图（第 4/4 张）导出为 PDF、SVG 或 DXF</translation>
+    </message>
+    <message>
+        <source>%1 is not a PDF, SVG or DXF file name</source>
+        <translation>%1 不是 PDF、SVG 或 DXF 文件名</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>CSV 表格 (*.csv)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>SVG image (*.svg)</source>
+        <translation>SVG 图像 (*.svg)</translation>
+    </message>
+    <message>
+        <source>DXF drawing (*.dxf)</source>
+        <translation>DXF 图形 (*.dxf)</translation>
+    </message>
+    <message>
+        <source>Export the gear pair</source>
+        <translation>导出齿轮副</translation>
+    </message>
+</context>
+<context>
     <name>ImageExport</name>
     <message>
         <source>“.{0}” is not an image type this program writes; use .png or .svg</source>
@@ -2712,6 +3058,10 @@
     <message>
         <source>Cam</source>
         <translation>凸轮</translation>
+    </message>
+    <message>
+        <source>Gear</source>
+        <translation>齿轮</translation>
     </message>
     <message>
         <source>&amp;Undo %1</source>

@@ -123,6 +123,7 @@ def _import_engine_first() -> None:
     import core.cam.file  # noqa: F401
     import core.dynamics_io  # noqa: F401
     import core.flywheel  # noqa: F401
+    import core.gear.file  # noqa: F401  (the gear's model, which Save writes)
     import core.io  # noqa: F401  (core, numpy, the design files)
     import core.metrics  # noqa: F401  (the results panel's cycle figures)
     import core.polygons  # noqa: F401

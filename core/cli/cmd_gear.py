@@ -2,12 +2,11 @@
 from __future__ import annotations
 
 import argparse
-import math
 
 from ..errors import DesignError
 from ..gear import GearPair, GearPairInputs, design_pair
 from ..gear.file import gear_from_dict, gear_to_dict
-from ..gear.table import gear_summary, summary_rows
+from ..gear.table import gear_summary, summary_csv, summary_rows
 from .common import UsageError, design_error_text, design_file, number
 from .output import OutputError, check_target, print_json, print_table, write_output
 
@@ -124,24 +123,6 @@ def pair_from_args(args: argparse.Namespace) -> GearPair:
         raise UsageError(design_error_text(exc, option)) from None
 
 
-def csv_text(summary: dict) -> str:
-    """One row per quantity: name (units in it), gear 1 (or the pair's value), gear 2."""
-    lines = ["quantity,pair_or_gear1,gear2"]
-    for key, value in summary["pair"].items():
-        lines.append(f"{key},{_cell(value)},")
-    for key in summary["gear1"]:
-        lines.append(f"{key},{_cell(summary['gear1'][key])},{_cell(summary['gear2'][key])}")
-    return "\n".join(lines) + "\n"
-
-
-def _cell(value) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, float):
-        return repr(value) if math.isfinite(value) else ""
-    return str(value)
-
-
 def run(args: argparse.Namespace) -> int:
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
@@ -157,7 +138,7 @@ def run(args: argparse.Namespace) -> int:
         labels = sheet_labels(args.lang or "en")
     summary = gear_summary(pair)
     if args.csv is not None:
-        write_output("--csv", args.csv, csv_text(summary))
+        write_output("--csv", args.csv, summary_csv(summary))
     if args.dxf is not None:
         _write_dxf(pair, args, labels)
     if args.json:

@@ -21,7 +21,7 @@ from typing import Mapping
 import numpy as np
 
 from core.gear import GearPair, pair_checks
-from core.gear.involute import half_angle
+from core.gear.mesh import line_points, mesh_angles, placed
 from core.gear.profile import tooth_outline
 
 from .charts import arrow
@@ -120,26 +120,11 @@ def teeth_outline(pair: GearPair, k: int) -> np.ndarray:
     the pinion's counter-clockwise flank and the gear's clockwise one pass through P."""
     gear = pair.gear1 if k == 1 else pair.gear2
     one = tooth_outline(pair.inputs, gear)
-    psi_w = float(half_angle(gear.rw, gear.r, gear.s, pair.inputs.alpha, gear.rb))   # at r′
     pitch = 2 * math.pi / gear.teeth
-    axis = -psi_w if k == 1 else math.pi - psi_w
-    centre = np.array([0.0, 0.0]) if k == 1 else np.array([pair.centre_mm, 0.0])
-    parts = []
-    for j in range(-TEETH_EACH_SIDE, TEETH_EACH_SIDE + 1):
-        t = axis + j * pitch
-        c, s = math.cos(t), math.sin(t)
-        parts.append(one @ np.array([[c, s], [-s, c]]) + centre)
-    return np.vstack(parts)
-
-
-def line_points(pair: GearPair) -> dict[str, np.ndarray]:
-    """N1, N2, P, B1, B2 and the pb steps K1 (B2 + pb), K2 (B1 − pb) in the model, mm."""
-    aw = pair.alpha_w
-    n1 = pair.gear1.rb * np.array([math.cos(aw), -math.sin(aw)])
-    u = np.array([math.sin(aw), math.cos(aw)])
-    at = {"N1": 0.0, "N2": pair.n1n2, "P": pair.n1p, "B1": pair.n1b1, "B2": pair.n1b2,
-          "K1": pair.n1b2 + pair.pb, "K2": pair.n1b1 - pair.pb}
-    return {name: n1 + g * u for name, g in at.items()}
+    axis = float(mesh_angles(pair, 0.0)[k - 1])      # a flank through P at r′
+    centre = (0.0, 0.0) if k == 1 else (pair.centre_mm, 0.0)
+    return np.vstack([placed(one, axis + j * pitch, centre)
+                      for j in range(-TEETH_EACH_SIDE, TEETH_EACH_SIDE + 1)])
 
 
 def window(pair: GearPair) -> Box:

@@ -68,3 +68,21 @@ def summary_rows(pair: GearPair) -> list[tuple[str, str]]:
     for check in pair_checks(pair):
         rows.append((f"check {check.name}", "ok" if check.ok else f"FAILS: {check.advice}"))
     return rows
+
+
+def summary_csv(summary: dict) -> str:
+    """One row per quantity: name (units in it), gear 1 (or the pair's value), gear 2."""
+    lines = ["quantity,pair_or_gear1,gear2"]
+    for key, value in summary["pair"].items():
+        lines.append(f"{key},{_cell(value)},")
+    for key in summary["gear1"]:
+        lines.append(f"{key},{_cell(summary['gear1'][key])},{_cell(summary['gear2'][key])}")
+    return "\n".join(lines) + "\n"
+
+
+def _cell(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value) if math.isfinite(value) else ""
+    return str(value)

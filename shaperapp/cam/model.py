@@ -112,7 +112,7 @@ class CamModel(QObject):
         self._cam: Cam | None = None    # and start-up computes no cam)
         self._valid_typed = self._typed
         self._edited: list[str] = []    # fields changed since the last valid cam, the latest last
-        model.register_part("cam", self.document)
+        model.parts.register("cam", self.document)
         model.loaded.connect(self._load)
         model.resultsChanged.connect(self._linkage_changed)
         model.forcesChanged.connect(self._linkage_changed)     # the idle margin is a load
@@ -170,7 +170,7 @@ class CamModel(QObject):
 
     def _load(self) -> None:
         """A file was opened (or New): its cam, or the default one."""
-        data = self.design_model.loaded_part("cam")
+        data = self.design_model.parts.loaded("cam")
         self._edited = []
         self._apply(CamTyped() if data is None else typed_from(*cam_from_dict(data)), edited=False)
 

@@ -12,7 +12,7 @@ import time
 
 from core.cli.common import UsageError
 from core.cli.output import OutputError
-from core.course import PARTS, CourseError, file_names, left_out_text, plan_course, read_document
+from core.course import PARTS, CourseError, file_names, plan_course, read_document
 from core.drawing.sheet import PAPERS
 
 from shaperapp.widgets.command_line import (add_cover_options, cover_from_args, design_name,
@@ -69,7 +69,5 @@ def run(args: argparse.Namespace) -> int:
             print(file.path, flush=True)
     except OSError as exc:      # a WriteError: names the file and a plain reason
         raise OutputError(f"--output: {exc}") from None
-    for line in left_out_text(args.design, course):
-        print(line)
     print(f"{len(course.files)} files in {time.perf_counter() - start:.1f} s")
     return 0

@@ -129,16 +129,4 @@ def export_course_dialog(model: DesignModel, parent: QWidget, language: str, sta
     if failure:
         QMessageBox.warning(parent, translate("CourseExport", "Export course design"), failure)
         return ""
-    note = left_out_note(model)
-    if note:
-        QMessageBox.information(parent, translate("CourseExport", "Export course design"), note)
     return folder
-
-
-def left_out_note(model: DesignModel) -> str:
-    """What the export left out, in the UI's language ('' when nothing): the gear sheet of a
-    design whose file had no gear pair (the GUI has no Gear tab yet)."""
-    if "gear" in saved_parts(model):
-        return ""
-    return translate("CourseExport", "The gear sheet was left out: the design has no gear pair. "
-                     "Open a design file that holds one (\"gear\", see shaper gear) to include it.")

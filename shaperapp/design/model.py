@@ -30,6 +30,7 @@ from core.spec import NUMBER_FIELDS, Spec
 from .inputs import DEFAULT_MASSES, DEFAULT_RPMS, DEFAULT_STEP, Inputs, typed_spec
 from .results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, same_error,
                       solve_forces, typed_error)
+from .parts import FileParts
 from .undo import InputEdit, edit_text, push_edit
 
 if TYPE_CHECKING:       # a type only: core.compare is imported when a comparison is made
@@ -46,7 +47,7 @@ class DesignModel(QObject):
       ``forcesChanged`` — dynamics were recomputed (after any design or load change);
       ``forcesErrorChanged`` — a load input became invalid or valid again, or was reset;
       ``dirtyChanged(bool)``, ``pathChanged(str)`` — file state;
-      ``loaded`` — a whole state was put in (opened, new); parts read ``loaded_part``.
+      ``loaded`` — a whole state was put in (opened, new); parts read ``parts.loaded``.
     """
 
     resultsChanged = Signal()
@@ -77,27 +78,11 @@ class DesignModel(QObject):
         self.undo_stack = QUndoStack(self)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
         self._comparison: tuple[Candidate, ...] = ()
-        # Parts of the design file kept by other models (the cam): what the file last
-        # opened held for each, and how each gives its part to Save.
-        self._parts_in: dict[str, Any] = {}
-        self._part_savers: dict[str, Callable[[], Any]] = {}
-
-    # ---- parts of the file kept by other models ------------------------
-    def register_part(self, name: str, save: Callable[[], Any]) -> None:
-        """``save()`` gives the JSON value Save writes under ``name`` (the cam's inputs)."""
-        self._part_savers[name] = save
+        self.parts = FileParts()        # the file's parts other models keep (cam, gear)
 
     def saved_parts(self) -> dict[str, Any]:
-        """Every part Save writes: each registered one as its model gives it, and a part the
-        last loaded state held that no model edits (the gear pair, which has no tab yet)
-        as it was read, so opening and saving a file never drops it."""
-        kept = {name: value for name, value in self._parts_in.items()
-                if value is not None and name not in self._part_savers}
-        return {**kept, **{name: save() for name, save in self._part_savers.items()}}
-
-    def loaded_part(self, name: str) -> Any:
-        """What the state last loaded held under ``name`` (None: nothing, the defaults)."""
-        return self._parts_in.get(name)
+        """The parts other models keep, as Save writes them (``parts.py``)."""
+        return self.parts.saved()
 
     # ---- read access -------------------------------------------------
     @property
@@ -263,13 +248,6 @@ class DesignModel(QObject):
         if inputs != self._inputs:
             self._push(inputs, None, lambda: QCoreApplication.translate("model", "revert invalid inputs"))
 
-    def retranslate_history(self) -> None:
-        """Every undo/redo entry in the current language (after a language switch)."""
-        for i in range(self.undo_stack.count()):
-            command = self.undo_stack.command(i)
-            if isinstance(command, InputEdit):
-                command.retranslate()
-
     def end_typing(self) -> None:
         """The user left a field: the next keystrokes start a new undo step."""
         self._session += 1
@@ -299,6 +277,7 @@ class DesignModel(QObject):
         inputs = Inputs.of(spec, tuple(float(v) for v in rpms), float(step_deg), masses)
         try:
             spec.check_fields()
+            self.parts.check(parts or {})       # a part its model cannot show: refused too
             results = compute(inputs, masses)
             results[-1].get()                  # all or nothing: the summary too
         except DesignError:
@@ -309,7 +288,7 @@ class DesignModel(QObject):
         self._valid_spec, self._rpms, self._step, self._masses = spec, inputs.rpms, inputs.step, masses
         self._design, self._motion, self._metrics, self._dynamics, self._dynamics_summary = results
         self._index = 0
-        self._parts_in = dict(parts or {})
+        self.parts.set_loaded(parts or {})
         self.undo_stack.clear()
         self._set_error(None)
         self._set_forces_error(None, force=True)

@@ -83,3 +83,11 @@ def push_edit(stack: QUndoStack, edit: InputEdit) -> None:
     top.mergeWith(edit)
     if top.isObsolete():
         stack.undo()
+
+
+def retranslate_history(stack: QUndoStack) -> None:
+    """Every undo/redo entry of ``stack`` in the current language (after a language switch)."""
+    for i in range(stack.count()):
+        command = stack.command(i)
+        if isinstance(command, InputEdit):
+            command.retranslate()

@@ -226,19 +226,27 @@ def _translated_templates() -> dict[str, str]:
     }
 
 
-def describe(error: DesignError) -> str:
-    """'Field: what is allowed' in the current UI language."""
-    templates = _translated_templates()
-    body = error.allowed
-    for pattern, template in _PATTERNS:
-        match = re.match(pattern, error.allowed)
+def describe(error: DesignError, name: str | None = None) -> str:
+    """'Field: what is allowed' in the current UI language (``name``: the field's name
+    when the caller has its own, as the Gear tab has for its fields)."""
+    body = allowed_text(error.allowed)
+    field = field_name(error.parameter) if name is None else name
+    return QCoreApplication.translate("messages", "%1: %2").replace("%1", field).replace("%2", body)
+
+
+def allowed_text(allowed: str, patterns: tuple[tuple[str, str], ...] = (),
+                 templates: dict[str, str] | None = None) -> str:
+    """Core's English ``allowed`` text in the UI's language: the first of ``patterns``
+    (with its ``templates``), then of this module's, that matches; else the text as it is."""
+    table = {**_translated_templates(), **(templates or {})}
+    for pattern, template in patterns + _PATTERNS:
+        match = re.match(pattern, allowed)
         if match:
-            body = templates[template]
+            body = table[template]
             for i, group in enumerate(match.groups(), start=1):
                 body = body.replace(f"%{i}", group or "")
-            body = body.strip()
-            break
-    return QCoreApplication.translate("messages", "%1: %2").replace("%1", field_name(error.parameter)).replace("%2", body)
+            return body.strip()
+    return allowed
 
 
 def failure_reason(error: Exception) -> str:

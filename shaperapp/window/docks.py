@@ -173,6 +173,18 @@ class Docks:
             d["results"].raise_()
             w.resizeDocks([d["mechanism"]], [int(height * MECHANISM_SHARE)], VERTICAL)
 
+    def enlarge_polygons(self) -> None:
+        """Float the vector diagrams over most of the screen, or dock them again."""
+        dock = self.docks["polygons"]
+        if dock.isFloating():
+            dock.setFloating(False)
+            return
+        room = available(self._window)
+        dock.setFloating(True)
+        size = room.size() * 0.7
+        dock.setGeometry(room.x() + (room.width() - size.width()) // 2,
+                         room.y() + (room.height() - size.height()) // 2, size.width(), size.height())
+
     def toggle_actions(self) -> list:
         """View-menu actions that hide and show each pane (Qt keeps them in step)."""
         return [self.docks[name].toggleViewAction() for name in NAMES]

@@ -20,6 +20,8 @@ from shaperapp.cam.model import CamModel
 from shaperapp.design.document import Document
 from shaperapp.design.inputs_pane import InputsPane
 from shaperapp.design.model import DesignModel
+from shaperapp.design.undo import retranslate_history
+from shaperapp.gear.model import GearModel
 from shaperapp.plots.kinematics import PlotsWidget
 from shaperapp.results.panel import MetricsPanel
 from shaperapp.scheme.view import SchemeWidget
@@ -35,6 +37,7 @@ from .animation import AnimationBar
 from .docks import Docks
 from .help import GuideDialog, about_text
 from .menus import Menus
+from .texts import action_texts
 
 APP_NAME = "Shaper Designer"
 
@@ -66,6 +69,9 @@ class MainWindow(QMainWindow):
         self.cam_model = CamModel(model, self)
         self._pages["cam"] = LazyPage(self._build_cam)
         self.tabs.addTab(self._pages["cam"], "")
+        self.gear_model = GearModel(model, self)     # the same for the gear pair
+        self._pages["gear"] = LazyPage(self._build_gear)
+        self.tabs.addTab(self._pages["gear"], "")
         self._idle_build_started = False
         central = QWidget()
         column = QVBoxLayout(central)
@@ -100,6 +106,7 @@ class MainWindow(QMainWindow):
     explore = property(lambda self: self._pages["explore"].view())
     compare = property(lambda self: self._pages["compare"].view())
     cam = property(lambda self: self._pages["cam"].view())
+    gear = property(lambda self: self._pages["gear"].view())
 
     polygon_view = property(lambda self: self._pages["polygons"].view())
     library = property(lambda self: self._pages["library"].view())
@@ -107,7 +114,7 @@ class MainWindow(QMainWindow):
     def _build_polygons(self) -> QWidget:
         from shaperapp.vectors.view import PolygonView
         view = PolygonView(self.model)
-        view.enlargeRequested.connect(self._enlarge_polygons)
+        view.enlargeRequested.connect(lambda: self.docks.enlarge_polygons())
         return view
 
     def _build_library(self) -> QWidget:
@@ -119,6 +126,10 @@ class MainWindow(QMainWindow):
     def _build_cam(self) -> QWidget:
         from shaperapp.cam.tab import CamTab
         return CamTab(self.model, cam_model=self.cam_model)
+
+    def _build_gear(self) -> QWidget:
+        from shaperapp.gear.tab import GearTab
+        return GearTab(self.model, gear_model=self.gear_model)
 
     def _build_tab(self, name: str) -> QWidget:
         if name == "forces":
@@ -233,45 +244,19 @@ class MainWindow(QMainWindow):
         super().changeEvent(event)
 
     def _retranslate(self) -> None:
-        texts = [
-            (self.act_new, self.tr("&New"), self.tr("Start a new design from the defaults")),
-            (self.act_open, self.tr("&Open…"), self.tr("Open a design file")),
-            (self.act_save, self.tr("&Save"), self.tr("Save the design")),
-            (self.act_save_as, self.tr("Save &As…"), self.tr("Save the design under a new name")),
-            (self.act_csv, self.tr("Export curves to &CSV…"), self.tr("All speeds, at the form's angle step")),
-            (self.act_forces_csv, self.tr("Export &forces to CSV…"),
-             self.tr("Crank torque, power and joint forces, all speeds")),
-            (self.act_plots_img, self.tr("Export &plots (PNG/SVG)…"), self.tr("Save the plots of the current tab as an image")),
-            (self.act_scheme_img, self.tr("Export sc&heme (PNG/SVG)…"), self.tr("Save the mechanism drawing as an image")),
-            (self.act_scheme_dxf, self.tr("Export scheme as &DXF…"),
-             self.tr("The mechanism at the current crank angle for CAD: 1:1 in mm, with its dimensions")),
-            (self.act_report, self.tr("Export &report (PDF/HTML)…"),
-             self.tr("The design report: dimensions, positions table, polygons, forces, flywheel")),
-            (self.act_sheet, self.tr("Export &drawing sheet (PDF/SVG/DXF)…"),
-             self.tr("The course design's drawing sheet on A0–A3 paper, with a preview")),
-            (self.act_course, self.tr("Export course desi&gn…"),
-             self.tr("The report and every drawing sheet into one folder, as shaper course writes them")),
-            (self.act_quit, self.tr("&Quit"), ""),
-            (self.act_goto, self.tr("&Go to Crank Angle…"), self.tr("Move the mechanism to a crank angle you type")),
-            (self.act_fit_plots, self.tr("Fit &plots"), self.tr("Show the whole cycle in the plots of the current tab")),
-            (self.act_reset_layout, self.tr("&Reset layout"),
-             self.tr("Put every pane back in its place for this window size")),
-            (self.act_library_save, self.tr("&Save design to library…"), ""),
-            (self.act_compare, self.tr("&Compare designs"), ""),
-            (self.act_about, self.tr("&About"), ""),
-            (self.act_guide, self.tr("User &guide"), self.tr("Conventions, method, glossary and command line")),
-        ]
+        texts = action_texts(self)
         for action, text, tip in texts:
             set_tip(action, text, tip)
         self.act_library.setText(self.tr("Show &library"))
         for i, title in enumerate((self.tr("Kinematics"), self.tr("Forces"), self.tr("Positions"),
-                                   self.tr("Explore"), self.tr("Compare"), self.tr("Cam"))):
+                                   self.tr("Explore"), self.tr("Compare"), self.tr("Cam"), self.tr("Gear"))):
             self.tabs.setTabText(i, title)
-        if self._pages["cam"].is_built():
-            self.cam.retranslate()
+        for name in ("cam", "gear"):
+            if self._pages[name].is_built():
+                self._pages[name].view().retranslate()
         self.docks.retranslate()
         self.menus.retranslate()
-        self.model.retranslate_history()
+        retranslate_history(self.model.undo_stack)
         self._show_undo_text(self.model.undo_stack.undoText())
         self._show_redo_text(self.model.undo_stack.redoText())
         self._update_title()
@@ -310,18 +295,6 @@ class MainWindow(QMainWindow):
 
     def _on_saved(self, path: str) -> None:
         self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
-
-    def _enlarge_polygons(self) -> None:
-        """Float the vector diagrams over most of the screen, or dock them again."""
-        dock = self.docks["polygons"]
-        if dock.isFloating():
-            dock.setFloating(False)
-            return
-        room = window_state.available(self)
-        dock.setFloating(True)
-        size = room.size() * 0.7
-        dock.setGeometry(room.x() + (room.width() - size.width()) // 2,
-                         room.y() + (room.height() - size.height()) // 2, size.width(), size.height())
 
     def _show_comparison(self, candidates: list) -> None:
         self.compare.set_candidates(candidates)

@@ -6,12 +6,12 @@ import os
 
 import pytest
 
-from core.course import (PARTS, REPORT, CourseError, Part, file_names, left_out_text, missing_parts,
+from core.course import (PARTS, REPORT, CourseError, Part, file_names, missing_parts,
                          plan_course, read_document)
 from core.io import design_document, masses_to_dict
 from core.spec import Spec
 
-OPTIONAL = ("rpm", "forces", "cam")
+NEEDED = ("rpm", "forces", "cam", "gear")     # the keys besides "spec" some file needs
 CAM = {"arm_mm": 150.0, "swing_deg": 15.0, "rise_deg": 60.0, "dwell_deg": 10.0, "return_deg": 60.0,
        "pressure_deg": 40.0, "return_pressure_deg": 70.0}
 GEAR = {"z1": 13, "z2": 40, "module_mm": 6.0, "centre_mm": 162.0}
@@ -41,21 +41,21 @@ def test_the_files_are_numbered_in_order_and_only_sheets_have_a_dxf():
 
 def test_a_new_sheet_joins_by_one_entry_and_is_refused_without_its_key():
     """A sheet joins by one entry, numbered after the others; a file without its key is
-    refused naming it and the sheet (unless the part is optional)."""
+    refused naming it and the sheet."""
     parts = PARTS + (Part("extra", "motion", "the extra sheet", ("extra",)),)
     assert file_names(parts, dxf=True)[-2:] == [(parts[-1], "05-extra.pdf"), (parts[-1], "05-extra.dxf")]
     assert missing_parts({"spec", "rpm", "forces", "cam", "gear"}, parts) == (("extra", ("the extra sheet",)),)
 
 
-def test_a_file_without_a_gear_pair_writes_the_rest_and_says_the_gear_sheet_is_left_out(tmp_path):
-    """The gear sheet is optional while the GUI has no Gear tab: left out, and said so."""
+def test_a_file_without_a_gear_pair_is_refused_naming_it(tmp_path):
+    """The gear sheet is required like the others (the GUI always holds a pair): a file
+    without "gear" is refused naming it and the sheet, before anything is written."""
     doc, keys = read_document(write(tmp_path / "d.json", document(("gear",))))
-    course = plan_course(doc, keys, "d.json", str(tmp_path / "out"), dxf=True)
-    assert [p.stem for p in course.left_out] == ["gear"]
-    assert [os.path.basename(f.path) for f in course.files][-2:] == ["03-cam.pdf", "03-cam.dxf"]
-    assert "gear" not in course.drawn
-    assert left_out_text("d.json", course) == [
-        'left out the gear sheet: d.json has no "gear" (the gear pair): the gear sheet needs it']
+    with pytest.raises(CourseError) as caught:
+        plan_course(doc, keys, "d.json", str(tmp_path / "out"), dxf=True)
+    assert str(caught.value) == '--design: d.json has no "gear" (the gear pair): the gear sheet needs it'
+    assert caught.value.missing == (("gear", ("the gear sheet",)),)
+    assert os.listdir(tmp_path) == ["d.json"]
 
 
 def test_a_gear_pair_that_cannot_be_made_is_refused_naming_the_sheet(tmp_path):
@@ -66,7 +66,7 @@ def test_a_gear_pair_that_cannot_be_made_is_refused_naming_the_sheet(tmp_path):
         plan_course(read, keys, "d.json", str(tmp_path / "out"))
 
 
-@pytest.mark.parametrize("drop", [c for n in range(1, 4) for c in itertools.combinations(OPTIONAL, n)])
+@pytest.mark.parametrize("drop", [c for n in range(1, 4) for c in itertools.combinations(NEEDED, n)])
 def test_every_missing_key_is_named_with_every_file_that_needs_it(drop, tmp_path):
     doc, keys = read_document(write(tmp_path / "d.json", document(drop)))
     assert set(drop).isdisjoint(keys)
@@ -123,5 +123,5 @@ def test_a_complete_file_plans_every_file_in_the_folder(tmp_path):
     assert {os.path.dirname(f.path) for f in course.files} == {str(tmp_path / "out")}
     assert course.rpms == (40.0, 60.0) and course.masses.cut_force_N == 7000.0
     assert course.drawn["cam"].inputs.arm_mm == 150.0
-    assert course.drawn["gear"].centre_mm == pytest.approx(162.0) and course.left_out == ()
+    assert course.drawn["gear"].centre_mm == pytest.approx(162.0)
     assert not (tmp_path / "out").exists()          # planning writes nothing

@@ -133,7 +133,7 @@ def test_the_sheets_are_those_of_shaper_drawing(written, tmp_path):
 
 
 @pytest.mark.parametrize("drop, named", [(("forces",), '"forces"'), (("cam",), '"cam"'),
-                                         (("rpm",), '"rpm"')])
+                                         (("rpm",), '"rpm"'), (("gear",), '"gear"')])
 def test_a_file_without_a_part_is_refused_and_nothing_is_written(drop, named, tmp_path):
     source = design_file(tmp_path, drop)
     out = tmp_path / "out"

@@ -7,7 +7,7 @@ import pytest
 
 from language_checks import has_pdftotext, pdf_text
 
-NAMES = ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf"]
+NAMES = ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf", "04-gear.pdf"]
 
 
 @pytest.fixture
@@ -20,8 +20,6 @@ def answers(monkeypatch, tmp_path):
                         lambda *a, **k: str(out))
     monkeypatch.setattr("shaperapp.course.dialog.QMessageBox.warning",
                         lambda parent, title, text: shown.append(text))
-    monkeypatch.setattr("shaperapp.course.dialog.QMessageBox.information",
-                        lambda parent, title, text: shown.append(("note", text)))
     return out, shown
 
 
@@ -32,6 +30,15 @@ def test_file_menu_has_export_course_design_in_both_languages(window, qtbot):
     window.set_language("zh_CN")
     qtbot.waitUntil(lambda: window.act_course.text() != "Export course desi&gn…")
     assert re.search(r"[\u4e00-\u9fff]", window.act_course.text())
+
+
+def test_the_design_on_screen_always_holds_a_gear_pair(window):
+    """The window keeps the Gear tab's model from the start, so the course design never
+    lacks the gear sheet (issue 35: the gear is required like the other parts)."""
+    from shaperapp.course.dialog import plan
+    course = plan(window.model, str(window.settings.fileName()) + ".out")
+    assert [f.part.stem for f in course.files][-1] == "gear"
+    assert course.drawn["gear"] == window.gear_model.pair
 
 
 def test_a_design_without_a_part_is_refused_and_nothing_written(window, answers, monkeypatch):
@@ -62,7 +69,7 @@ def test_cancel_after_the_first_file_keeps_it_complete_and_says_so(window, answe
     window.act_course.trigger()
     assert os.listdir(out) == ["00-report.pdf"]
     assert (out / "00-report.pdf").read_bytes().rstrip().endswith(b"%%EOF")
-    assert shown == ["Cancelled: 1 of 4 files written, each complete."]
+    assert shown == ["Cancelled: 1 of 5 files written, each complete."]
 
 
 def test_a_failed_write_names_the_file_and_the_files_before_it(window, answers, monkeypatch, quick_report):
@@ -83,9 +90,10 @@ def test_export_writes_the_files_of_shaper_course_with_the_report_cover(window, 
     out, shown = answers
     window.settings.setValue("report/student", "Wang Wu")      # as the report dialog keeps it
     window.act_course.trigger()
-    # the design on screen has no gear pair (no Gear tab yet): the four others, and a note
-    assert len(shown) == 1 and shown[0][0] == "note" and "gear sheet was left out" in shown[0][1]
+    # the design on screen always has a gear pair (the Gear tab's, the default one here)
+    assert shown == []
     assert sorted(os.listdir(out)) == NAMES
     assert "Wang Wu" in pdf_text(out / "01-motion.pdf")
     assert "Wang Wu" in pdf_text(out / "00-report.pdf")
     assert "Feed cam" in " ".join(pdf_text(out / "03-cam.pdf").split())
+    assert "Gear meshing" in " ".join(pdf_text(out / "04-gear.pdf").split())

@@ -108,9 +108,9 @@ def test_forces_csv_export_equals_cli_output(doc, tmp_path):
 
 
 def test_open_then_save_keeps_the_gear_pair(doc, tmp_path):
-    """The GUI has no Gear tab yet: a design file's "gear" object (issue 35) must still come
-    back from Open then Save as it was written, never be dropped (a lost part is a lost
-    file); New forgets it."""
+    """A part of the design file that no model registered (here the "gear" object: the bare
+    design model has no gear model, the window has one) comes back from Open then Save as it
+    was written, never dropped (a lost part is a lost file); New forgets it."""
     import json
     model, document = doc
     gear = {"z1": 13, "z2": 40, "module_mm": 6, "centre_mm": 162}

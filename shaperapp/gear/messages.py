@@ -1,0 +1,136 @@
+"""The gear pair's words in the UI's language: its field names, core's refusals and the
+checks' advice, so the Chinese Gear tab shows no English sentence.
+
+Core (``core.gear``) speaks English with numbers in fixed phrases. A refusal is matched
+against the patterns here (then the shared ones of ``shaperapp.widgets.messages``); a check's
+advice is rebuilt from the check's own fields, with the same English words as core's.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication
+
+from core.errors import DesignError
+from core.gear import Check
+from shaperapp.widgets.messages import allowed_text, field_name
+
+translate = QCoreApplication.translate
+
+
+def field_names() -> dict[str, str]:
+    """The gear's fields (the GearPairInputs errors' names) in the UI's language."""
+    return {"z1": translate("GearMessages", "Teeth z1"), "z2": translate("GearMessages", "Teeth z2"),
+            "module": translate("GearMessages", "Module m"),
+            "x1": translate("GearMessages", "Shift factor x1"),
+            "x2": translate("GearMessages", "Shift factor x2"),
+            "centre": translate("GearMessages", "Centre distance a′"),
+            "pressure_angle": translate("GearMessages", "Pressure angle α"),
+            "addendum": translate("GearMessages", "Addendum factor h*a"),
+            "clearance": translate("GearMessages", "Clearance factor c*"),
+            "tip_limit": translate("GearMessages", "Least tip thickness"),
+            "contact_limit": translate("GearMessages", "Least contact ratio"),
+            "mode": translate("GearMessages", "Shifts given as")}
+
+
+# (pattern on core.gear's English text, template with %1, %2 …)
+_PATTERNS: tuple[tuple[str, str], ...] = (
+    (r"must be a whole number of teeth$", "must be a whole number of teeth"),
+    (r"must be ≥ (\S+) and ≤ (\S+) teeth$", "must be at least %1 and at most %2 teeth"),
+    (r"x1 \+ x2 is too negative: the gears would not mesh \(α′ ≤ 0\); raise the shifts$",
+     "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts"),
+    (r"must be > a cos α = (\S+) mm \(the working pressure angle would be 0\)$",
+     "must be more than a cos α = %1 mm (the working pressure angle would be 0)"),
+    (r"needs x1 \+ x2 = (\S+), below the (\S+) that keeps both gears uncut; give ≥ (\S+) mm$",
+     "needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm"),
+    (r"x1 \+ x2 is too large: the addendum reduction leaves gear (\d) no flank above its base circle$",
+     "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle"),
+    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give a smaller shift$",
+     "makes the tip of gear %1 pointed (x = %2): give a smaller shift"),
+    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give a smaller centre distance$",
+     "makes the tip of gear %1 pointed (x = %2): give a smaller centre distance"),
+    (r"too few teeth for the rule's shifts, which make the tip of gear (\d) pointed \(x\d = (\S+)\).*$",
+     "too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give more "
+     "teeth, or the shifts or the centre distance"),
+)
+
+
+def _templates() -> dict[str, str]:
+    # Listed literally so pyside6-lupdate finds every template.
+    return {
+        "must be a whole number of teeth": translate("GearMessages", "must be a whole number of teeth"),
+        "must be at least %1 and at most %2 teeth":
+            translate("GearMessages", "must be at least %1 and at most %2 teeth"),
+        "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts":
+            translate("GearMessages", "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts"),
+        "must be more than a cos α = %1 mm (the working pressure angle would be 0)":
+            translate("GearMessages", "must be more than a cos α = %1 mm (the working pressure angle would be 0)"),
+        "needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm":
+            translate("GearMessages", "needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm"),
+        "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank "
+                      "above its base circle"),
+        "makes the tip of gear %1 pointed (x = %2): give a smaller shift":
+            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give a smaller shift"),
+        "makes the tip of gear %1 pointed (x = %2): give a smaller centre distance":
+            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give a smaller centre distance"),
+        "too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give more "
+        "teeth, or the shifts or the centre distance":
+            translate("GearMessages", "too few teeth for the rule's shifts, which make the tip of gear %1 "
+                      "pointed (x = %2): give more teeth, or the shifts or the centre distance"),
+    }
+
+
+def describe_gear_error(error: DesignError) -> str:
+    """'Field: what is allowed' for a refusal of the gear pair, in the UI's language."""
+    name = field_names().get(error.parameter) or field_name(error.parameter)
+    body = allowed_text(error.allowed, _PATTERNS, _templates())
+    return translate("messages", "%1: %2").replace("%1", name).replace("%2", body)
+
+
+def module_note(module_mm: float) -> str:
+    """core's note on a module outside GB/T 1357's first series, in the UI's language."""
+    return translate("GearMessages", "m = %1 mm is not a GB/T 1357 first-series module").replace(
+        "%1", f"{module_mm:g}")
+
+
+def check_name(check: Check) -> str:
+    """What a check tests, in the UI's language."""
+    k = check.name[-1]
+    if check.name.startswith("undercut"):
+        return translate("GearMessages", "Gear %1 not undercut: x%1 ≥ x%1min").replace("%1", k)
+    if check.name.startswith("tip"):
+        return translate("GearMessages", "Gear %1 tip thick enough: sa%1 ≥ %2 mm").replace(
+            "%1", k).replace("%2", f"{check.limit:.4f}")
+    if check.name == "contact":
+        return translate("GearMessages", "Contact ratio: ε ≥ %1").replace("%1", f"{check.limit:g}")
+    return translate("GearMessages", "No interference at the root of gear %1").replace("%1", k)
+
+
+def check_advice(check: Check) -> str:
+    """What to change when ``check`` fails ('' when it passes): core's advice, the same
+    words in English (``Check.advice``), in the UI's language."""
+    if check.ok:
+        return ""
+    k = check.name[-1]
+    other = "2" if k == "1" else "1"
+    if check.name.startswith("undercut"):
+        return translate("GearMessages", "raise x%1 to ≥ %2 (or give gear %1 more teeth)").replace(
+            "%1", k).replace("%2", f"{check.limit:.4f}")
+    if check.name.startswith("tip"):
+        return translate("GearMessages", "the tip of gear %1 is too thin: lower x%1 (or the centre "
+                         "distance)").replace("%1", k)
+    if check.name == "contact":
+        return translate("GearMessages", "ε is too small: give more teeth, less shift or a smaller "
+                         "centre distance")
+    return translate("GearMessages", "the tip of gear %2 digs into the root of gear %1: raise x%1, "
+                     "lower x%2 or shorten the addendum").replace("%1", k).replace("%2", other)
+
+
+def mode_text(mode: str) -> str:
+    """How the shifts were found (core.gear.shift.MODES), in the UI's language."""
+    return {"given": translate("GearMessages", "x1 and x2 given"),
+            "centre": translate("GearMessages", "from the centre distance: the pinion's least uncut "
+                                "shift, the rest to the gear"),
+            "balanced": translate("GearMessages", "rule: z1 + z2 ≥ 2 zmin, the pinion's least uncut "
+                                  "shift and x2 = −x1"),
+            "positive": translate("GearMessages", "rule: z1 + z2 < 2 zmin, the least positive pair at "
+                                  "a′ rounded up to 0.5 mm")}[mode]

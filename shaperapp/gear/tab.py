@@ -1,0 +1,127 @@
+"""The Gear tab (issue 35, item 4): the pair's inputs, the pair to scale turning with the
+crank, the results with the checks, and the exports (the results as CSV, the meshing sheet
+as PDF, SVG or DXF by the drawing sheets' own code)."""
+from __future__ import annotations
+
+import datetime
+import os
+
+from PySide6.QtCore import QLocale, Qt
+from PySide6.QtWidgets import (QCheckBox, QGridLayout, QHBoxLayout, QMessageBox, QPushButton, QScrollArea,
+                               QSplitter, QVBoxLayout, QWidget)
+
+from core.atomic import atomic_write
+from core.gear.table import gear_summary, summary_csv
+from shaperapp.design.model import DesignModel
+from shaperapp.widgets import file_dialogs
+from shaperapp.widgets.messages import failure_reason
+
+from .form import GearForm
+from .model import GearModel
+from .pair_view import GearPairView
+from .results import GearResults
+
+SHEET_SUFFIXES = (".pdf", ".svg", ".dxf")
+
+
+class GearTab(QWidget):
+    """One widget taking the design model. The window keeps the gear model (which Save
+    writes) from the start and builds this tab only when it is first shown."""
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None,
+                 gear_model: GearModel | None = None) -> None:
+        super().__init__(parent)
+        self.gear_model = gear_model if gear_model is not None else GearModel(model, self)
+        self.form = GearForm(self.gear_model)
+        self.view = GearPairView(self.gear_model)
+        self.results = GearResults(self.gear_model)
+        self.close_up = QCheckBox(self)
+        self.close_up.toggled.connect(self.view.set_close_up)
+        self.buttons = {name: QPushButton(self) for name in ("csv", "sheet")}
+        self.buttons["csv"].clicked.connect(lambda: self._export_dialog("csv"))
+        self.buttons["sheet"].clicked.connect(lambda: self._export_dialog("sheet"))
+        side = QWidget()
+        column = QVBoxLayout(side)
+        column.addWidget(self.form)
+        column.addWidget(self.close_up)
+        row = QGridLayout()
+        for i, button in enumerate(self.buttons.values()):
+            row.addWidget(button, 0, i)
+        column.addLayout(row)
+        column.addWidget(self.results.checks)       # the checks beside the inputs they judge
+        column.addStretch(1)
+        scroll = QScrollArea()
+        scroll.setWidget(side)
+        scroll.setWidgetResizable(True)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self._side = scroll
+        tables = QScrollArea()
+        tables.setWidget(self.results)
+        tables.setWidgetResizable(True)
+        tables.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        split = QSplitter(Qt.Orientation.Vertical)
+        split.addWidget(self.view)
+        split.addWidget(tables)
+        split.setStretchFactor(0, 1)
+        split.setStretchFactor(1, 1)
+        layout = QHBoxLayout(self)
+        layout.setContentsMargins(2, 2, 2, 2)
+        layout.addWidget(scroll)
+        layout.addWidget(split, 1)
+        self.retranslate()
+
+    def retranslate(self) -> None:
+        self.form.retranslate()
+        self.results.retranslate()
+        self.close_up.setText(self.tr("Close-up of the line of action"))
+        self.buttons["csv"].setText(self.tr("CSV…"))
+        self.buttons["sheet"].setText(self.tr("Meshing sheet…"))
+        self.buttons["sheet"].setToolTip(self.tr("The meshing drawing (sheet 4/4) as PDF, SVG or DXF"))
+        self.view.update()
+        self._fit_side()
+
+    def _fit_side(self) -> None:
+        """The inputs' column as wide as the form in the current language: the checks'
+        lines under it wrap (their one-line width made the window wider than 1280 px)."""
+        for layout in (self.form.layout(), *self.form.layout().children()):
+            layout.invalidate()             # the new labels' widths, not the cached ones
+        margins = self._side.widget().layout().contentsMargins()
+        self._side.setFixedWidth(self.form.sizeHint().width() + margins.left() + margins.right() + 16)
+
+    # ---- exports -------------------------------------------------------------
+    def export_csv(self, path: str) -> None:
+        """The results as ``shaper gear --csv`` writes them, atomically."""
+        atomic_write(path, summary_csv(gear_summary(self.gear_model.pair)))
+
+    def export_sheet(self, path: str, paper: str | None = None) -> None:
+        """The meshing sheet of the pair on screen (PDF, SVG or DXF by the suffix), built
+        and written by the drawing sheets' code (``shaper drawing --content gear``), in the
+        UI's language."""
+        from shaperapp.drawing.content import DEFAULT_PAPER, SheetChoice, build_sheet
+        from shaperapp.drawing.render import write_sheet
+        suffix = os.path.splitext(path)[1].lower()
+        if suffix not in SHEET_SUFFIXES:
+            raise ValueError(self.tr("%1 is not a PDF, SVG or DXF file name").replace("%1", os.path.basename(path)))
+        design = self.gear_model.design_model
+        choice = SheetChoice("gear", paper or DEFAULT_PAPER["gear"], design_name=design.source_name,
+                             date=datetime.date.today().isoformat(), gear=self.gear_model.pair)
+        sheet = build_sheet(design.valid_spec, design.rpms, None, choice)
+        language = "zh_CN" if QLocale().language() == QLocale.Language.Chinese else "en"
+        write_sheet(sheet, path, language, design.source_name)
+
+    def _export_dialog(self, kind: str) -> None:
+        self.form.commit()
+        if kind == "csv":
+            filters, start = self.tr("CSV table (*.csv)"), "gear.csv"
+        else:
+            filters = ";;".join((self.tr("PDF document (*.pdf)"), self.tr("SVG image (*.svg)"),
+                                 self.tr("DXF drawing (*.dxf)")))
+            start = "gear.pdf"
+        title = self.tr("Export the gear pair")
+        path = file_dialogs.save_file_name(self, title, os.path.join(os.path.expanduser("~"), start), filters)
+        if not path:
+            return
+        try:
+            (self.export_csv if kind == "csv" else self.export_sheet)(path)
+        except Exception as exc:        # never to sys.excepthook: the reason, in a message
+            QMessageBox.warning(self, title, failure_reason(exc))
