@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import argparse
-import math
 
 from ..cam import LAWS, Cam, CamInputs, Program, design_cam
 from ..cam.file import cam_from_dict, cam_to_dict
