@@ -283,8 +283,8 @@
         <translation>基圆半径已增大</translation>
     </message>
     <message>
-        <source>from %1 mm, to clear the hub and the pivot</source>
-        <translation>由 %1 mm 增大，以避开轮毂和摆动中心</translation>
+        <source>from %1 mm, to clear the hub and the pivot boss</source>
+        <translation>由 %1 mm 增大，以避开轮毂和摆动中心凸台</translation>
     </message>
     <message>
         <source>Rise at crank φ</source>
@@ -3696,8 +3696,8 @@
         <translation>（不大于 a − 凸台半径 − 间隙 = %1 mm）</translation>
     </message>
     <message>
-        <source>base radius raised from %1 mm to clear the hub, the boss and the pivot</source>
-        <translation>基圆半径由 %1 mm 增大，以避开轮毂、凸台和摆动中心</translation>
+        <source>base radius raised from %1 mm to clear the hub and the pivot boss</source>
+        <translation>基圆半径由 %1 mm 增大，以避开轮毂和摆动中心凸台</translation>
     </message>
     <message>
         <source>Centre distance a</source>
@@ -5129,10 +5129,6 @@
         <translation>实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
-        <source>no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
-        <translation>在许用压力角内没有能避开摆动中心的凸轮；最小的凸轮：实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
-    </message>
-    <message>
         <source>is not a design field</source>
         <translation>不是设计参数</translation>
     </message>
@@ -5307,6 +5303,10 @@
     <message>
         <source>permission denied</source>
         <translation>没有权限</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
+        <translation>在许用压力角内没有能避开摆动中心凸台的凸轮；最小的凸轮：实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
         <source>the folder does not exist</source>

@@ -10,7 +10,8 @@ import re
 
 import numpy as np
 
-from core.drawing.sheet import Circle, Polyline, Text, item_box, outside_border, overlapping_texts
+from core.drawing.checks import outside_border, overlapping_texts
+from core.drawing.sheet import Circle, Polyline, Text, item_box
 
 UNICODE_SUBSCRIPTS = re.compile("[\u2080-\u209c]")
 

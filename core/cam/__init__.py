@@ -4,7 +4,7 @@
 angle and curvature; ``extremes`` the largest pressure angles and the smallest convex
 radius, solved; ``synthesis`` the smallest base radius and the largest roller;
 ``timing`` the feed placed outside the linkage's cut; ``cam`` one cam from its inputs;
-``build`` whether it clears its hub and the follower's pivot; ``table`` its rows per cam
+``build`` whether it clears its hub and the follower pivot's boss; ``table`` its rows per cam
 angle and its figures; ``file`` its inputs in a design file.
 
 Level: its own, just above the analysis level (it times the feed against ``core.cut``);

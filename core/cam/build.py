@@ -142,7 +142,7 @@ def _smallest_fit(ring: np.ndarray, arm: float, swing: float, low: float, reach:
 def raised(arm_mm: float, program: Program, allowance: Allowance, roller_mm: float,
            room: Room, least_mm: float) -> Follower | None:
     """The follower of smallest base radius (≥ ``least_mm``) within the allowances whose
-    cam, with this roller, clears the hub, the boss and the pivot; None if there is none.
+    cam, with this roller, clears the hub and the pivot boss; None if there is none.
     Both arrangements are tried; the smaller wins."""
     swing = math.radians(program.swing_deg)
     low = max(least_mm, (room.hub_mm + room.clearance_mm + roller_mm) * (1.0 + 1e-12))   # past rounding
@@ -160,7 +160,7 @@ def require_buildable(f: Follower, program: Program, roller_mm: float, room: Roo
                       checked: bool) -> None:
     """FitError (a DesignError) naming the input that decides, and by how much, when the
     cam cannot be built: the base radius or centre distance of a checked cam, else the
-    swing (the synthesis found no cam within the allowances that clears the pivot)."""
+    swing (the synthesis found no cam within the allowances that clears the pivot boss)."""
     short = shortfalls(f, program, roller_mm, room)
     tol = 1e-9 * max(f.distance_mm, f.arm_mm)
     profile_min = f.base_radius_mm - roller_mm
@@ -176,9 +176,9 @@ def require_buildable(f: Follower, program: Program, roller_mm: float, room: Roo
         if checked:
             raise FitError("distance", f.distance_mm, what)
         raise FitError("swing", program.swing_deg,
-                       f"no cam within the allowances clears the pivot; the smallest: {what}")
+                       f"no cam within the allowances clears the pivot boss; the smallest: {what}")
 
 
 class FitError(DesignError):
-    """A cam that does not fit its hub, boss or pivot. It names the input that decides;
+    """A cam that does not clear its hub or the pivot boss. It names the input that decides;
     a form may mark the field just edited instead (any of the cam's inputs can cause it)."""

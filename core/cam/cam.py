@@ -82,7 +82,7 @@ class Cam:
     timing: Timing | None = None
     base_raised_from_mm: float | None = None
     """The smallest base radius for the allowances alone, when the synthesis raised it to
-    clear the hub, the boss or the pivot (None: not raised)."""
+    clear the hub or the pivot boss (None: not raised)."""
 
     @property
     def program(self) -> Program:
@@ -186,7 +186,7 @@ FIT_ROUNDS = 4
 
 def _fitted(inputs: CamInputs, f: Follower, roller: float
             ) -> tuple[Follower, float, tuple[float, float, float, float]]:
-    """The synthesized cam raised to clear the hub, the boss and the pivot with this roller.
+    """The synthesized cam raised to clear the hub and the pivot boss with this roller.
 
     An automatic roller is never made larger than the one the raise assumed (a larger one
     would eat the hub's clearance again); when the raised cam's largest roller is smaller,

@@ -175,7 +175,7 @@ def within_allowance(arm_mm: float, program: Program, allowance: Allowance, side
     The conditions aim MARGIN_DEG below the allowances, and the search stops once the
     polished maxima are within the allowances themselves: a cut brings them to within
     ~1e-14 of the aim, so they end between MARGIN_DEG below each allowance and it. The
-    smallest cam (:func:`smallest`) and the cam raised to clear its hub and pivot
+    smallest cam (:func:`smallest`) and the cam raised to clear its hub and the pivot boss
     (``build.raised``) are both chosen so."""
     ring = admissible(arm_mm, program, allowance, side)
     if ring is None:

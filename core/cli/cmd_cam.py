@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import argparse
-import math
 
 from ..cam import LAWS, Cam, CamInputs, Program, design_cam
 from ..cam.file import cam_from_dict, cam_to_dict
@@ -251,7 +250,7 @@ def summary_rows(s: dict) -> list[tuple[str, str]]:
              f"{s['follower_omega_max_rad_s']:.4g} rad/s / {s['follower_alpha_max_rad_s2']:.4g} rad/s²")]
     if s["base_raised_from_mm"] is not None:
         rows.append(("note", f"base radius raised from {s['base_raised_from_mm']:.3f} mm to clear "
-                     "the hub, the boss and the pivot"))
+                     "the hub and the pivot boss"))
     if not s["within_allowance"]:
         rows.append(("allowance", "EXCEEDED"))
     if "phase_deg" in s:

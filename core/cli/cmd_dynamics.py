@@ -11,8 +11,9 @@ from ..flywheel import summarize
 from ..geometry import Design
 from ..dynamics_io import dynamics_table, summary_document
 from .cmd_synth import design_summary
-from .common import (UsageError, add_angle_options, add_design_options, add_load_options,
-                     add_speed_options, design_from_args, masses_from_args, request_from_args)
+from .common import (UsageError, add_angle_options, add_design_options, add_load_options, add_speed_options,
+                     design_from_args, request_from_args)
+from .loads import masses_from_args
 from .output import print_json, print_table
 from .streaming import write_table
 

@@ -31,9 +31,9 @@ from .cmd_library_check import check_options, run_check
 from .cmd_library_compare import compare_options, run_compare
 from .cmd_library_list import filter_help, list_options, run_list
 from .cmd_library_refresh import refresh_options, run_refresh
-from .common import (LOAD_OPTIONS, Parser, UsageError, add_design_options, add_load_options,
-                     NOTES, add_speed_options, design_file, fail, library_path, masses_from_args, note_read_only,
-                     number, rpms_from_args, spec_from_args)
+from .common import (Parser, UsageError, add_design_options, add_load_options, NOTES, add_speed_options,
+                     design_file, fail, library_path, note_read_only, number, rpms_from_args, spec_from_args)
+from .loads import masses_or_none
 from .output import OutputError, print_json
 
 HELP = "keep, find, export and compare designs in a library"
@@ -189,9 +189,7 @@ def _run_add(args: argparse.Namespace) -> int:
     doc = design_file(args)
     step = number("step", args.step) if args.step is not None else (doc["step_deg"] if doc else 1.0)
     crank_angles(step)
-    loads_given = any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS) or args.no_gravity
-    masses = masses_from_args(args, design, required=False) \
-        if loads_given or (doc is not None and doc.get("masses") is not None) else None
+    masses = masses_or_none(args, design)
     loaded: dict[str, Any] = dict(doc) if doc is not None else {}
     loaded.update(spec=spec, rpm=rpms, step_deg=float(step), masses=masses)
     with _open(args) as lib:

@@ -13,9 +13,9 @@ from ..errors import DesignError
 from ..numtext import g10_rows
 from ..spec import Spec
 from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
-from .common import (LOAD_OPTIONS, add_design_options, add_load_options, add_speed_options,
-                     design_error_text, design_file, masses_from_args, number, option_name,
-                     rpms_from_args, spec_from_args, spec_option)
+from .common import (add_design_options, add_load_options, add_speed_options, design_error_text,
+                     number, option_name, rpms_from_args, spec_from_args, spec_option)
+from .loads import loads_given, masses_from_args
 from .allocator import keep_freed_memory
 from .output import write_output
 
@@ -83,12 +83,6 @@ def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tupl
     if "rod" in out and "rod-ratio" in out:
         raise DesignError("vary", "rod", "vary either rod or rod-ratio, not both")
     return out
-
-
-def loads_given(args: argparse.Namespace) -> bool:
-    doc = design_file(args)
-    return (any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS)
-            or args.no_gravity or (doc is not None and doc.get("masses") is not None))
 
 
 class _Variant:

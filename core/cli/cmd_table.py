@@ -7,9 +7,9 @@ from ..dynamics import MassProperties
 from ..geometry import Design
 from ..positions import (DEFAULT_COUNT, PositionTable, position_table, positions, positions_csv,
                          table_records, text_groups)
-from .common import (LOAD_OPTIONS, UsageError, add_design_options, add_load_options,
-                     add_speed_options, design_file, design_from_args, masses_from_args, number,
-                     number_list, rpms_from_args)
+from .common import (UsageError, add_design_options, add_load_options, add_speed_options,
+                     design_from_args, number, number_list, rpms_from_args)
+from .loads import masses_or_none
 from .output import print_json, write_output
 
 # Which side of a switch a row at the cut's start or end shows (core.cut's rule).
@@ -37,19 +37,6 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out = parser.add_mutually_exclusive_group()
     out.add_argument("--csv", metavar="FILE|-", help="write the table as CSV to FILE or stdout")
     out.add_argument("--json", action="store_true", help="print one JSON object per position and speed")
-
-
-def loads_given(args: argparse.Namespace) -> bool:
-    """True when a load option was typed or the design file carries loads."""
-    doc = design_file(args)
-    if doc is not None and doc.get("masses") is not None:
-        return True
-    return args.no_gravity or any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS)
-
-
-def masses_or_none(args: argparse.Namespace, design: Design) -> MassProperties | None:
-    """The loads for the force columns, or None when none were given (kinematics only)."""
-    return masses_from_args(args, design, required=False) if loads_given(args) else None
 
 
 def table_from_args(args: argparse.Namespace) -> tuple[Design, PositionTable]:

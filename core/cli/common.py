@@ -13,7 +13,7 @@ import re
 import sys
 from dataclasses import replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -23,9 +23,6 @@ from ..io import load_design
 from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
                           check_angles, check_request, crank_angles)
 from ..spec import Spec
-
-if TYPE_CHECKING:
-    from ..dynamics import MassProperties
 
 DEFAULT_RPMS = ("40", "60")
 
@@ -42,7 +39,8 @@ OPTION_NAMES = {
     "delta": "--delta", "gravity": "--no-gravity",
 }
 
-# (option, dest, metavar, help) of the load inputs; dest is the MassProperties field.
+# (option, dest, metavar, help) of the load inputs; dest is the MassProperties field
+# (read by loads.masses_from_args).
 LOAD_OPTIONS = (
     ("--lever-mass", "lever_mass_kg", "KG", "slotted lever mass, kg"),
     ("--lever-inertia", "lever_inertia_kg_m2", "KGM2", "lever moment of inertia about its centre of mass, kg·m²"),
@@ -59,7 +57,6 @@ LOAD_OPTIONS = (
      "uncut run-in and run-out, each as a fraction of the stroke (default 0.05)"),
     ("--delta", "delta", "D", "coefficient of speed fluctuation δ for the flywheel (default 1/30)"),
 )
-REQUIRED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N")
 
 # argparse reads "-1e5" as an unknown option; accept every float spelling as a value.
 _NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
@@ -342,41 +339,6 @@ def angles_from_args(args: argparse.Namespace) -> np.ndarray:
     if args.angles is not None:
         return check_angles(np.array(number_list("angles", args.angles)))
     return crank_angles(_step_value(args))
-
-
-def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -> MassProperties:
-    """The load options over the design file's loads (if any) over the defaults.
-
-    With ``required``, the four essential loads must come from the options or the file.
-    A rod mass the file keeps from the rod variant is dropped for a block design; one
-    given as an option is refused by the solver instead.
-    """
-    from ..dynamics import MassProperties, masses_for_design   # only commands with loads
-    doc = design_file(args)
-    base = doc.get("masses") if doc is not None else None
-    if base is not None:
-        base = masses_for_design(design, base)
-    changes: dict[str, Any] = {}
-    for option, dest, _, _ in LOAD_OPTIONS:
-        text = getattr(args, dest)
-        if text is None:
-            continue
-        if dest == "ram_cg_mm":
-            parts = text.split(",")
-            if len(parts) != 2:
-                raise DesignError(dest, text, "must be DX,DY in mm")
-            changes[dest] = tuple(number(dest, p) for p in parts)
-        else:
-            changes[dest] = number(dest, text)
-    if args.no_gravity:
-        changes["gravity"] = False
-    if base is None:
-        if required:
-            for dest in REQUIRED_LOADS:
-                if dest not in changes:
-                    raise UsageError(f"{option_name(dest)}: required (or give --design with loads)")
-        base = MassProperties()
-    return replace(base, **changes)
 
 
 def library_path(library: str | None) -> Path:

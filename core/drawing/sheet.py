@@ -3,8 +3,8 @@
 One description, several writers: the GUI paints a :class:`Sheet` into PDF and
 SVG with QPainter, :mod:`core.drawing.sheet_dxf` writes it as DXF. So the three
 files of one sheet cannot disagree, and the tests measure the description
-itself (every item inside the border, no two texts overlapping, a length
-divided by its scale equal to the design's).
+itself (every item inside the border, no two texts overlapping: :mod:`core.drawing.checks`;
+a length divided by its scale equal to the design's).
 
 Coordinates are millimetres on the paper, origin at its lower-left corner, y up.
 Each item is on one of :mod:`core.drawing.dxf`'s layers, which fixes its line
@@ -387,33 +387,3 @@ def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]]
                 items.append(cell_text(text, (float(xs[c]), y1 - row_height, float(xs[c + 1]), y1),
                                        text_height, align, layer, notation=True))
     return items
-
-
-# ---- checks the tests and the writers share ------------------------------------------------
-
-def outside_border(sheet: Sheet) -> list[Item]:
-    """Items not wholly inside the border (the frame's own trimmed edge excepted)."""
-    x0, y0, x1, y1 = sheet.paper.border
-    trim = (0.0, 0.0, sheet.paper.width, sheet.paper.height)
-    tol = 1e-6
-    out = []
-    for item in sheet.items:
-        b = item_box(item)
-        if np.allclose(b, trim):
-            continue
-        if b[0] < x0 - tol or b[1] < y0 - tol or b[2] > x1 + tol or b[3] > y1 + tol:
-            out.append(item)
-    return out
-
-
-def overlapping_texts(sheet: Sheet) -> list[tuple[Text, Text]]:
-    """Pairs of texts whose boxes intersect."""
-    texts = [it for it in sheet.items if isinstance(it, Text)]
-    boxes = np.array([t.box() for t in texts]).reshape(-1, 4)
-    pairs = []
-    for i in range(len(texts)):
-        b = boxes[i]
-        hit = ((boxes[i + 1:, 0] < b[2]) & (boxes[i + 1:, 2] > b[0])
-               & (boxes[i + 1:, 1] < b[3]) & (boxes[i + 1:, 3] > b[1]))
-        pairs += [(texts[i], texts[i + 1 + j]) for j in np.flatnonzero(hit)]
-    return pairs

@@ -10,7 +10,8 @@ same rules as a design file (:func:`core.io.parse_design`).
 An entry and its document are in :mod:`core.library.entry`; opening and its
 checks in :mod:`core.library.open`; schema and transactions in
 :mod:`core.library.store`; rows read with their types checked in
-:mod:`core.library.rows`; the filter syntax in :mod:`core.library.query`.
+:mod:`core.library.rows`; the rows an entry is written as in :mod:`core.library.writes`;
+the filter syntax in :mod:`core.library.query`.
 """
 from __future__ import annotations
 
@@ -21,27 +22,25 @@ from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
 from core.errors import DesignError, FileFormatError
-from core.figures import DESIGN_KEYS, FIGURES_VERSION, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures, figures
+from core.figures import FIGURES_VERSION, Figures, SpeedFigures, figures
 from core.io import atomic_write
 
 from .backup import snapshot_to
-from .entry import Entry, check_document, distinct_speeds, document_text
+from .entry import Entry, check_document, document_text
 from .names import check_name, check_tags, lookup_name, unique_name
 from .open import connect
 from .query import Condition, condition_sql, parse_filter, search_sql, sort_sql
 from .rows import clean_row, damaged_entries, read_lenient, unfit_sql
 from .store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
                             sqlite_error, transaction, utc_now)
+from .writes import ENTRY_COLUMNS, SPEED_COLUMNS, insert_entry, rewrite_figures
 
-_ENTRY_COLUMNS = ("name", "notes", "tags", "created", "modified") + TEXT_FIGURES + DESIGN_KEYS \
-    + ("figures_version",)
-_SPEED_COLUMNS = ("rpm",) + SPEED_KEYS
 # the columns of :meth:`Library.query_rows`; ``damaged`` is None, or why the row's values
 # could not all be read (those are None; see :mod:`core.library.rows`)
-LIST_COLUMNS = _ENTRY_COLUMNS + _SPEED_COLUMNS + ("damaged",)
-_LIST_NULLABLE = frozenset(_SPEED_COLUMNS)      # a design without the speed asked for
-_LIST_KEYS = ("id",) + _ENTRY_COLUMNS + _SPEED_COLUMNS
-_LIST_EXPRESSIONS = [f"e.{c}" for c in _LIST_KEYS[:-len(_SPEED_COLUMNS)]] + [f"s.{c}" for c in _SPEED_COLUMNS]
+LIST_COLUMNS = ENTRY_COLUMNS + SPEED_COLUMNS + ("damaged",)
+_LIST_NULLABLE = frozenset(SPEED_COLUMNS)      # a design without the speed asked for
+_LIST_KEYS = ("id",) + ENTRY_COLUMNS + SPEED_COLUMNS
+_LIST_EXPRESSIONS = [f"e.{c}" for c in _LIST_KEYS[:-len(SPEED_COLUMNS)]] + [f"s.{c}" for c in SPEED_COLUMNS]
 # a flag (SQLite checks every value's type in C), the id, the columns
 
 
@@ -127,18 +126,18 @@ class Library:
         name = lookup_name(name)
 
         def work(c: sqlite3.Connection) -> Entry:
-            row = c.execute(f"SELECT e.id, {', '.join(_ENTRY_COLUMNS)}, d.text FROM entries e "
+            row = c.execute(f"SELECT e.id, {', '.join(ENTRY_COLUMNS)}, d.text FROM entries e "
                             "LEFT JOIN documents d ON d.entry_id = e.id WHERE e.name = ?", (name,)).fetchone()
             if row is None:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
-            values, reason = clean_row(("id",) + _ENTRY_COLUMNS + ("text",), row)
+            values, reason = clean_row(("id",) + ENTRY_COLUMNS + ("text",), row)
             speeds = []
-            for r in c.execute(f"SELECT {', '.join(_SPEED_COLUMNS)} FROM speeds WHERE entry_id = ? "
+            for r in c.execute(f"SELECT {', '.join(SPEED_COLUMNS)} FROM speeds WHERE entry_id = ? "
                                "ORDER BY pos", (row[0],)):
-                clean, why = clean_row(_SPEED_COLUMNS, r)
+                clean, why = clean_row(SPEED_COLUMNS, r)
                 reason = reason or why
-                speeds.append(SpeedFigures(**dict(zip(_SPEED_COLUMNS, clean))))
+                speeds.append(SpeedFigures(**dict(zip(SPEED_COLUMNS, clean))))
             tags = []
             for r in c.execute("SELECT tag FROM tags WHERE entry_id = ? ORDER BY tag", (row[0],)):
                 clean, why = clean_row(("tag",), r)
@@ -148,7 +147,7 @@ class Library:
                 raise LibraryError("entry", f"the design {name!r} in the library is damaged ({reason}); "
                                    "'shaper library check' lists every damaged design", self.path,
                                    damage=reason)
-            v = dict(zip(("id",) + _ENTRY_COLUMNS + ("text",), values))
+            v = dict(zip(("id",) + ENTRY_COLUMNS + ("text",), values))
             figs = Figures(**{f.name: v[f.name] for f in fields(Figures) if f.name != "speeds"},
                            speeds=tuple(speeds))
             return Entry(name=v["name"], notes=v["notes"], tags=tuple(tags), created=v["created"],
@@ -224,7 +223,7 @@ class Library:
                     raise self._exists(entry.name)
                 c.execute("DELETE FROM entries WHERE id = ?", (row[0],))
                 entry = Entry(**{**entry.__dict__, "created": row[1]})
-            self._insert(c, entry)
+            insert_entry(c, entry)
         return entry
 
     def make_entry(self, name: str, loaded: dict[str, Any], notes: str = "",
@@ -254,7 +253,7 @@ class Library:
             for entry in add:
                 if c.execute("SELECT 1 FROM entries WHERE name = ?", (entry.name,)).fetchone():
                     raise self._exists(entry.name)
-                self._insert(c, entry)
+                insert_entry(c, entry)
 
     def restore(self, entry: Entry) -> None:
         """Put back a removed entry exactly as it was (undo of :meth:`remove`)."""
@@ -297,7 +296,7 @@ class Library:
             if c.execute("DELETE FROM entries WHERE name = ?", (entry.name,)).rowcount == 0:
                 raise LibraryError("missing", f"there is no design named {name!r} in the library",
                                    self.path)
-            self._insert(c, changed)
+            insert_entry(c, changed)
 
     def export(self, name: str, path: str | os.PathLike) -> None:
         """Write ``name`` as a design file (atomically); OSError if it cannot be written."""
@@ -361,41 +360,9 @@ class Library:
                     progress(i, len(todo))
             with self._transaction() as c:
                 for entry, figs in batch:
-                    row = c.execute("SELECT e.id FROM entries e JOIN documents d ON d.entry_id = e.id "
-                                    "WHERE e.name = ? AND d.text = ?", (entry.name, entry.text)).fetchone()
-                    if row is None:
-                        skipped.append(entry.name)
-                        continue
-                    values = {"figures_version": FIGURES_VERSION, **figs.design_values()}
-                    keys = [k for k in _ENTRY_COLUMNS if k in values]
-                    c.execute(f"UPDATE entries SET {', '.join(f'{k} = ?' for k in keys)} WHERE id = ?",
-                              [values[k] for k in keys] + [row[0]])
-                    c.execute("DELETE FROM speeds WHERE entry_id = ?", (row[0],))
-                    self._insert_speeds(c, row[0], figs.speeds)
-                    updated.append(entry.name)
+                    (updated if rewrite_figures(c, entry, figs, FIGURES_VERSION) else skipped).append(entry.name)
         return RefreshReport(tuple(updated), tuple(failed), tuple(skipped))
 
     # ---- internals ------------------------------------------------------------------
     def _exists(self, name: str) -> LibraryError:
         return LibraryError("exists", f"a design named {name!r} is already in the library", self.path)
-
-    @staticmethod
-    def _insert(c: sqlite3.Connection, entry: Entry) -> None:
-        values = {"name": entry.name, "notes": entry.notes, "tags": ",".join(entry.tags),
-                  "created": entry.created, "modified": entry.modified,
-                  "figures_version": entry.figures_version, **entry.figures.design_values()}
-        cursor = c.execute(f"INSERT INTO entries ({', '.join(_ENTRY_COLUMNS)}) VALUES "
-                           f"({', '.join('?' * len(_ENTRY_COLUMNS))})",
-                           [values[k] for k in _ENTRY_COLUMNS])
-        entry_id = cursor.lastrowid
-        c.execute("INSERT INTO documents (entry_id, text) VALUES (?, ?)", (entry_id, entry.text))
-        Library._insert_speeds(c, entry_id, entry.figures.speeds)
-        c.executemany("INSERT INTO tags (entry_id, tag) VALUES (?, ?)",
-                      [(entry_id, tag) for tag in entry.tags])
-
-    @staticmethod
-    def _insert_speeds(c: sqlite3.Connection, entry_id: int, speeds: Sequence[SpeedFigures]) -> None:
-        c.executemany(f"INSERT INTO speeds (entry_id, pos, {', '.join(_SPEED_COLUMNS)}) VALUES "
-                      f"(?, ?, {', '.join('?' * len(_SPEED_COLUMNS))})",
-                      [(entry_id, pos, *(getattr(s, k) for k in _SPEED_COLUMNS))
-                       for pos, s in enumerate(distinct_speeds(speeds))])

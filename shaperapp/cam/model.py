@@ -80,7 +80,7 @@ def cam_inputs(typed: CamTyped) -> tuple[CamInputs, float | None]:
 
 def blamed(error: DesignError, typed: CamTyped, edited: list[str]) -> DesignError:
     """The error as the form shows it: a condition on several fields (the phases' sum, a cam
-    that does not fit its hub or pivot) keeps core's field if it was typed since the last
+    that does not clear its hub or the pivot boss) keeps core's field if it was typed since the last
     valid cam, else names the one of them typed last (issue 34: typing rise = 300 marked
     the outer dwell)."""
     if isinstance(error, FitError):

@@ -31,8 +31,8 @@ _VALUE_WORDS = (
      lambda: translate("Report", "(at least hub + clearance = %1 mm)")),
     (re.compile(r"\(at most a − boss − clearance = (\S+) mm\)"),
      lambda: translate("Report", "(at most a − boss − clearance = %1 mm)")),
-    (re.compile(r"^base radius raised from (\S+) mm to clear the hub, the boss and the pivot$"),
-     lambda: translate("Report", "base radius raised from %1 mm to clear the hub, the boss and the pivot")),
+    (re.compile(r"^base radius raised from (\S+) mm to clear the hub and the pivot boss$"),
+     lambda: translate("Report", "base radius raised from %1 mm to clear the hub and the pivot boss")),
 )
 
 

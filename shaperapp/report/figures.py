@@ -44,6 +44,7 @@ from shaperapp.widgets.image_export import painting_bytes
 Paint = Callable[[QPainter, QRectF, float], None]
 FINE_STEP_DEG = 0.25
 INK_LEVEL = 235         # a pixel of the scheme darker than this in any channel is drawn on
+SCHEME_PX = (330, 370)  # the scheme's view as exported for the report (its text at this size)
 
 
 def _fit(renderer: QSvgRenderer, rect: QRectF) -> QRectF:
@@ -256,7 +257,7 @@ class ReportViews:
     def limit_schemes(self) -> Paint:
         """Both limit positions side by side at one round scale μ_l, each with the lever's
         two limit positions (dashed) and the angle θ between them marked at O4."""
-        scheme = self._show(SchemeWidget(self.model), 330, 370)
+        scheme = self._show(SchemeWidget(self.model), *SCHEME_PX)
         design = self.model.design
         half = design.theta / 2.0
         tips = ((-design.lever * math.sin(half), design.lever * math.cos(half)),

@@ -29,6 +29,9 @@ from .place import RINGS, along, around, leader
 
 L1_LEAD = 4.5            # the L1 label this many u beyond the crank circle, outside the lever
 NAMES = ("L2", "h", "L3", "L1", "H")     # the dimensions in drawing order
+CHAIN_GAP_LINES = 0.6
+"""The L2 and h labels keep this many of their line heights apart: end to end on one
+line with less between them (0.07 line at K = 1.6 in the report) they read as one text."""
 
 
 @dataclass(frozen=True)
@@ -162,8 +165,7 @@ class DimensionLayer(QObject):
         if above > 0.0:
             h.setPos(mids[1][0], mids[1][1] - above)
         boxes = [text_box(l2), text_box(h)]                  # (left, right, bottom, top), mm
-        line = boxes[1][1] - boxes[1][0]                     # the vertical text's line height
-        overlap = min(boxes[0][3], boxes[1][3]) - max(boxes[0][2], boxes[1][2]) + 0.3 * line
+        overlap = min(boxes[0][3], boxes[1][3]) - max(boxes[0][2], boxes[1][2]) + self.chain_gap()
         if overlap > 0.0:
             longer = 1 if above <= 0.0 and abs(mids[1][1] - shared) >= abs(mids[0][1] - shared) else 0
             x, y = self._texts[longer].pos().x(), self._texts[longer].pos().y()
@@ -183,6 +185,12 @@ class DimensionLayer(QObject):
             return np.concatenate([np.array(out), ring])
         ring, _ = around((p + q) / 2.0, half, normal, 0.3 * self._u, step, RINGS[:4])   # then round its middle
         return np.concatenate([along(p, q, normal, 0.3 * self._u, half), ring])
+
+    def chain_gap(self) -> float:
+        """The gap (mm at this zoom) the L2 and h labels keep: CHAIN_GAP_LINES of the
+        vertical text's line height (its box's width)."""
+        left, right, _, _ = text_box(self._texts[1])
+        return CHAIN_GAP_LINES * (right - left)
 
     def chain_moves(self, name: str) -> np.ndarray:
         """Shifts (m × 2, mm) of the L2 or h label, as it sits now, along its part of the

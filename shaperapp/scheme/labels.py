@@ -26,7 +26,7 @@ from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
 from .place import (LEADER_RING, Obstacles, Raster, around, boxes_at, clear_of_segments, leader,
-                    leaders, meets)
+                    leaders, meets, end_to_end)
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
@@ -99,7 +99,9 @@ class LabelLayout(QObject):
         for name in sorted(chain, key=lambda name: len(moves[name])):
             box = np.array(text_box(texts[name]))
             shifts = moves[name]
-            k = obstacles.best(box[None, :] + np.repeat(shifts, 2, axis=1))
+            spots = box[None, :] + np.repeat(shifts, 2, axis=1)
+            # the second not end to end with the first (barred spots only when all are)
+            k = obstacles.best(spots, end_to_end(spots, np.array(self._chain), dims.chain_gap()))
             dims.shift_label(name, shifts[k])
             self._chain.append(text_box(texts[name]))
             obstacles.add(self._chain[-1])

@@ -12,6 +12,10 @@ Python-side signal emit leaks a reference.
 Sizes that are not design data (bar widths, pins, the ram's height, the tool,
 the supports) scale with the drawing unit ``u = L3 / 40`` so that any design
 looks alike; they never change a dimension of the mechanism.
+
+The per-frame arrays are computed in frames.py and the static shapes (supports, guide
+way, tool) in shapes.py; this module keeps the Qt items, their motion and what the
+labels read back from them.
 """
 from __future__ import annotations
 
@@ -25,7 +29,6 @@ from PySide6.QtCore import QObject, QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath
 from PySide6.QtWidgets import QGraphicsEllipseItem
 
-from core.arrays import sorted_unique
 from core.kinematics import Shape
 from core.kinematics import shape as core_shape
 
@@ -33,14 +36,14 @@ from shaperapp.design.model import DesignModel
 from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import FRAME, LINK, TOOL_PATH
 
-from .draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Pair, Z_BLOCK,
+from .draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Z_BLOCK,
                           Z_CRANK, Z_FRAME, Z_GHOST, Z_JOINT, Z_LABEL, Z_LEVER, Z_PATH, Z_RAM,
                           body, pen, rect, segments, stadium, text_box)
+from .frames import Frames, build_frames
 from .place import local_segments, posed
+from .shapes import rail, support, tool_shape
 
 UNITS_PER_LEVER = 40.0     # drawing unit u = L3 / 40
-RETURN_LIFT = 0.35         # the return stroke of the tool path is drawn this many u higher
-LIMIT_TOL_DEG = 1e-6       # a grid angle this close to a limit position counts as on it
 MOVING = ("A", "B", "C")
 JOINT_LABEL_CLEAR = 1.4      # × u from a joint to its label's near edge: past the lever's half width (0.8 u)
 LEVER_HALF_WIDTH = 0.8       # × u
@@ -96,28 +99,12 @@ class Geometry:
     fit_rect: QRectF             # the whole drawing, for Fit
 
 
-@dataclass(frozen=True)
-class _Frames:
-    """Everything one animation frame needs, one row per crank-angle index."""
-
-    joints: np.ndarray          # (n, k, 2) moving joints A, B[, C], mm
-    crank_deg: np.ndarray       # (n,) rotation of the crank body about O2
-    lever_deg: np.ndarray       # (n,) rotation of the lever body about O4
-    rod_deg: np.ndarray | None  # (n,) rotation of the rod body about B
-    ram_x: np.ndarray           # (n,) x of the ram's reference point C
-    labels: np.ndarray          # (n, k, 2) where the labels A, B[, C] go
-    away: np.ndarray            # (n, 2, 2) unit directions of A's and O2's labels from their joints
-    u: float                    # the drawing's unit, mm
-    tip: np.ndarray             # (n, 2) tool tip; the return stroke lifted by RETURN_LIFT·u
-    corners: np.ndarray         # indices where the tool path turns (stroke ends), ascending
-
-
 class MechanismLayer(QObject):
     """The moving mechanism and its static frame; ``rebuild`` per design, ``show`` per frame."""
 
     def __init__(self, add: Callable[[object], None], parent: QObject | None = None) -> None:
         super().__init__(parent)
-        self.frames: _Frames | None = None
+        self.frames: Frames | None = None
         self._index = 0
         self._o2 = np.zeros(2)
         self._ground = CurveItem(pen(FRAME, 1.2), connect="pairs")
@@ -192,17 +179,17 @@ class MechanismLayer(QObject):
             ram.setFillRule(Qt.FillRule.OddEvenFill)
         self.ram.setPath(ram)
         self.ram.setPos(0.0, guide)
-        tool, tip_local = self._tool_shape(front, y_lo, u)
+        tool, tip_local = tool_shape(front, y_lo, u)
         self._tool.setPath(tool)
         self._build_bodies(design, sh, u, block_half)
-        self.frames = self._build_frames(design, motion, metrics, u, tip_local)
+        self.frames = build_frames(design, motion, metrics, u, tip_local)
         self.labels["C"].setVisible(rod)
         self.pins["C"].setVisible(rod)
 
         # Static drawing: supports, guide way, crank circle, lever limits, tool path.
         x0, x1 = ram_lo - rear - 3.0 * u, ram_hi + front + 3.0 * u
-        self._ground.set_data(*segments(self._support(np.zeros(2), u) + self._support(o2, u)
-                                       + self._rail(x0, x1, guide + y_hi, u)))
+        self._ground.set_data(*segments(support(np.zeros(2), u) + support(o2, u)
+                                       + rail(x0, x1, guide + y_hi, u)))
         self._guide_line.set_data([x0, x1], [guide, guide])
         self._ghost_lines.set_data(*segments([((0.0, 0.0), tuple(p)) for p in limits.lever_tip.T]))
         self._circle.set_data(a[:, 0], a[:, 1])
@@ -251,74 +238,6 @@ class MechanismLayer(QObject):
         for name, pin in self.pins.items():
             r = (PIN_FIXED if name.startswith("O") else PIN_MOVING) * u
             pin.setRect(QRectF(-r, -r, 2.0 * r, 2.0 * r))
-
-    @staticmethod
-    def _build_frames(design, motion, metrics, u: float, tip_local: tuple[float, float]) -> _Frames:
-        """Per-index transforms and points, all from core's arrays."""
-        sh = motion.shape
-        a, b, c = sh.crank_pin.T, sh.lever_tip.T, sh.ram_joint.T
-        rod = design.rod is not None
-        o2 = np.array([0.0, design.frame])
-        along = b / design.lever
-        normal = np.stack([along[:, 1], -along[:, 0]], axis=1)        # across the lever
-        side = -1.0 if rod and design.rod_side == "leading" else 1.0   # B's label away from the rod
-        across = side * normal
-        # O2 lies on one side of the lever, the crank runs from it to A on the lever: A's
-        # label goes across the lever to the other side, O2's away from the lever (they sat
-        # on the lever at φ = 100° and under it at 120°, when placed along the crank).
-        o2_side = np.sign(np.einsum("ij,ij->i", normal, o2 - a))
-        o2_side[o2_side == 0.0] = 1.0
-        toward_o2 = normal * o2_side[:, None]
-        labels = [a - 1.0 * u * toward_o2, b + 2.0 * u * across]   # A: moved on in show()
-        if rod:
-            labels.append(c + np.array([0.0, -2.4 * u]))
-        tip = np.stack([c[:, 0] + tip_local[0], np.full(len(c), design.guide + tip_local[1])], axis=1)
-        # Return stroke: strictly between the limits (a limit on the grid counts as cutting).
-        phase = (np.degrees(motion.crank_angle) - metrics.work_start_deg) % 360.0
-        returning = (phase > metrics.work_angle_deg + LIMIT_TOL_DEG) & (phase < 360.0 - LIMIT_TOL_DEG)
-        tip[returning, 1] += RETURN_LIFT * u
-        turns = np.flatnonzero(returning[1:] != returning[:-1])
-        return _Frames(
-            joints=np.stack([a, b, c] if rod else [a, b], axis=1),
-            crank_deg=np.degrees(np.arctan2(a[:, 1] - o2[1], a[:, 0] - o2[0])),
-            lever_deg=90.0 - np.degrees(sh.lever),
-            rod_deg=np.degrees(sh.rod) if rod else None, ram_x=c[:, 0],
-            labels=np.stack(labels, axis=1), away=np.stack([-toward_o2, toward_o2], axis=1), u=u, tip=tip,
-            corners=sorted_unique(np.concatenate([turns, turns + 1])))
-
-    @staticmethod
-    def _tool_shape(front: float, y_lo: float, u: float) -> tuple[QPainterPath, tuple[float, float]]:
-        """Tool post and bit hanging under the ram's front end; returns the shape and the tip."""
-        path = QPainterPath()
-        path.addRect(rect(front - 2.6 * u, y_lo, front - 1.0 * u, y_lo - 2.0 * u))
-        tip = (front - 0.7 * u, y_lo - 3.3 * u)
-        bit = QPainterPath()
-        bit.moveTo(front - 2.3 * u, y_lo - 2.0 * u)
-        bit.lineTo(front - 1.0 * u, y_lo - 2.0 * u)
-        bit.lineTo(*tip)
-        bit.lineTo(front - 1.9 * u, y_lo - 2.9 * u)
-        bit.closeSubpath()
-        path.addPath(bit)
-        return path, tip
-
-    @staticmethod
-    def _support(p: np.ndarray, u: float) -> list[Pair]:
-        """A fixed pivot: triangle, ground line and hatching under ``p``."""
-        x, y = float(p[0]), float(p[1])
-        base = y - 2.0 * u
-        pairs = [((x, y), (x - 1.2 * u, base)), ((x, y), (x + 1.2 * u, base)),
-                 ((x - 2.0 * u, base), (x + 2.0 * u, base))]
-        for hx in np.linspace(x - 1.7 * u, x + 2.0 * u, 6):
-            pairs.append(((hx, base), (hx - 0.7 * u, base - 0.7 * u)))
-        return pairs
-
-    @staticmethod
-    def _rail(x0: float, x1: float, y: float, u: float) -> list[Pair]:
-        """The ram's guide way along its top: a line hatched on the frame side."""
-        pairs = [((x0, y), (x1, y))]
-        for hx in np.arange(x0, x1 - 0.6 * u, 1.4 * u):
-            pairs.append(((hx, y), (hx + 0.7 * u, y + 0.7 * u)))
-        return pairs
 
     def _body_poses(self, rod: bool) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
         """Each moving body's outline in its own frame (k × 2 × 2) with its rotation (n,)

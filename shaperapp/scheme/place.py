@@ -56,6 +56,16 @@ def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray) -> np.ndarray:
     return ~hit.any(axis=1)
 
 
+def end_to_end(boxes: np.ndarray, taken: np.ndarray, gap: float) -> np.ndarray:
+    """(m,) True where box i lies in one column with one of ``taken`` (their x ranges
+    overlap) less than ``gap`` above or below it: two vertical labels end to end with
+    less between them read as one text ("L2 = 282.0 h = 113.5"). Side by side (a line
+    between them) they read apart."""
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    grown = boxes + np.array([0.0, 0.0, -gap, gap])
+    return ~clear_of_boxes(grown, np.asarray(taken, dtype=float).reshape(-1, 4))
+
+
 class Obstacles:
     """The lines and the labels' boxes one placement pass keeps clear of; a placed label
     (and its leader) joins them, so the next one keeps clear of it too."""

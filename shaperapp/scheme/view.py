@@ -4,7 +4,8 @@ The widget assembles three layers over one pyqtgraph view with a locked aspect
 ratio — the mechanism (mechanism.py), its dimensions
 (dimensions.py) and the optional force arrows (forces.py) — and
 exports them (image_export.py). Per design it rebuilds the layers and fits
-once; per animation frame it only asks each shown layer to move.
+once; per animation frame it only asks each shown layer to move. Its bar and menu
+are built in controls.py; when a new design is fitted, refit.py decides.
 
 Navigation: wheel zooms, drag pans, double-click fits, right click opens the
 scheme's own menu (Fit, Show dimensions, Show forces). pyqtgraph's English menu
@@ -15,28 +16,23 @@ from __future__ import annotations
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
-from PySide6.QtGui import QAction, QPainter
-from PySide6.QtWidgets import (QCheckBox, QComboBox, QGraphicsView, QHBoxLayout, QMenu, QToolButton,
-                               QVBoxLayout, QWidget)
+from PySide6.QtGui import QPainter
+from PySide6.QtWidgets import QGraphicsView, QMenu, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.axes import NavViewBox, unlink_hidden_axes
 from shaperapp.widgets.image_export import export_scene, render_scene
 from shaperapp.widgets.view_parts import fill_speed_combo
 
+from .controls import SchemeControls
 from .dimensions import DimensionLayer
 from .draw import WHITE, Box, Pair
 from .forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
 from .labels import LabelLayout
 from .mechanism import Geometry, MechanismLayer
+from .refit import needs_fit
 
 
-# After an edit the view is kept while it holds the whole drawing and the drawing fills at
-# least this share of it across or up (a fresh fit fills about 93 %).
-FILL_KEPT = 0.8
-# A view the user zoomed or panned is kept after an edit unless the drawing moved or
-# grew or shrank by more than this share of its size (a large edit: then it is fitted).
-LARGE_EDIT = 0.25
 # While idle after a design or zoom change, the frames' labels are placed this many at a
 # time (a few ms each), so that the animation finds them placed.
 PRECOMPUTE_CHUNK = 8
@@ -75,49 +71,17 @@ class SchemeWidget(QWidget):
         self._view.setAspectLocked(True, ratio=1.0)
         self._view.disableAutoRange()
 
-        self.fit_action = QAction(self)
-        self.fit_action.triggered.connect(self.fit)
-        self.dimensions_action = QAction(self)
-        self.dimensions_action.setCheckable(True)
-        self.dimensions_action.setChecked(True)
-        self.dimensions_action.toggled.connect(self.set_dimensions_visible)
-        self.forces_action = QAction(self)
-        self.forces_action.setCheckable(True)
-        self.forces_action.setChecked(False)
-        self.forces_action.toggled.connect(self._apply_forces_visible)
-        self._menu = QMenu(self)
-        for action in (self.fit_action, self.dimensions_action, self.forces_action):
-            self._menu.addAction(action)
+        controls = self._controls = SchemeControls(self, self.fit, self.set_dimensions_visible,
+                                                   self._apply_forces_visible, self._force_speed_chosen)
+        self.fit_action, self.dimensions_action = controls.fit_action, controls.dimensions_action
+        self.forces_action, self._menu = controls.forces_action, controls.menu
+        self._force_speed_box = controls.speed_box
         self._view.menu_handler = lambda pos: self._menu.popup(pos.toPoint())
         self._view.sigFitRequested.connect(self.fit)
-        self._fit_button = QToolButton()
-        self._fit_button.setDefaultAction(self.fit_action)
-        self._dims_box = QCheckBox()
-        self._dims_box.setChecked(True)
-        self._dims_box.toggled.connect(self.dimensions_action.setChecked)
-        self.dimensions_action.toggled.connect(self._dims_box.setChecked)
-        self._forces_box = QCheckBox()
-        self._forces_box.setObjectName("forcesBox")
-        self._forces_box.setChecked(False)
-        self._forces_box.toggled.connect(self.forces_action.setChecked)
-        self.forces_action.toggled.connect(self._forces_box.setChecked)
-        self._force_speed_box = QComboBox()         # which crank speed's forces are drawn
-        self._force_speed_box.setObjectName("forceSpeedBox")
-        self._force_speed_box.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
-        self._force_speed_box.setEnabled(False)
-        self._force_speed_box.currentIndexChanged.connect(self._force_speed_chosen)
-        self.forces_action.toggled.connect(self._force_speed_box.setEnabled)
-        bar = QHBoxLayout()
-        bar.setContentsMargins(4, 2, 4, 0)
-        bar.addWidget(self._fit_button)
-        bar.addWidget(self._dims_box)
-        bar.addWidget(self._forces_box)
-        bar.addWidget(self._force_speed_box)
-        bar.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(0)
-        layout.addLayout(bar)
+        layout.addLayout(controls.bar)
         layout.addWidget(self._plot, 1)
 
         add = self._plot.addItem
@@ -141,35 +105,12 @@ class SchemeWidget(QWidget):
             self._view.updateMatrix()     # now, not while preparing a paint (a second paint)
             self._fitted = self._view.viewRect()
 
-    def _navigated(self) -> bool:
-        """Has the view changed since the last fit (a zoom, a pan, a resize)?"""
-        view, fitted = self._view.viewRect(), self._fitted
-        if fitted is None:
-            return True
-        tol = 1e-6 * max(fitted.width(), fitted.height())
-        return any(abs(a - b) > tol for a, b in zip(view.getCoords(), fitted.getCoords()))
-
-    def _large_edit(self, before: QRectF, after: QRectF) -> bool:
-        """Did the drawing move, grow or shrink by more than LARGE_EDIT of its size?"""
-        w, h = max(before.width(), 1e-9), max(before.height(), 1e-9)
-        return (abs(after.left() - before.left()) > LARGE_EDIT * w
-                or abs(after.right() - before.right()) > LARGE_EDIT * w
-                or abs(after.top() - before.top()) > LARGE_EDIT * h
-                or abs(after.bottom() - before.bottom()) > LARGE_EDIT * h)
-
     def _refit_for(self, before: QRectF | None) -> None:
-        """After a new design (``before``: the previous one's drawing): a file just opened
-        is fitted; the view a fit showed is kept while the new drawing still fits it well;
-        a view the user zoomed, panned or resized is kept unless the edit was large or the
-        whole drawing it showed no longer fits in it."""
+        """After a new design (``before``: the previous one's drawing): fitted or kept as
+        refit.needs_fit decides."""
         opened, self._opened = self._opened, False
-        view, after = self._view.viewRect(), self._geometry.fit_rect
-        if opened or before is None:
-            self.fit()
-        elif not self._navigated():
-            if not self._still_fits():
-                self.fit()
-        elif self._large_edit(before, after) or (view.contains(before) and not view.contains(after)):
+        if needs_fit(opened, before, self._geometry.fit_rect, self._view.viewRect(), self._fitted,
+                     self._fit_rect()):
             self.fit()
 
     def _on_loaded(self) -> None:
@@ -180,14 +121,6 @@ class SchemeWidget(QWidget):
         rect = self._geometry.fit_rect
         forces = self._forces.extent(self._model, self._geometry) if self.forces_visible() else None
         return rect if forces is None else rect.united(forces)
-
-    def _still_fits(self) -> bool:
-        """The view shown holds the new design's drawing and the drawing fills at least
-        FILL_KEPT of it across or up: a nudged input keeps the view, as in the plots."""
-        view = self._view.viewRect()
-        want = self._fit_rect()
-        return view.contains(want) and (want.width() >= FILL_KEPT * view.width()
-                                        or want.height() >= FILL_KEPT * view.height())
 
     def set_dimensions_visible(self, visible: bool) -> None:
         """Show or hide the dimension lines (L1, L2, L3, h, H)."""
@@ -356,17 +289,7 @@ class SchemeWidget(QWidget):
         super().changeEvent(event)
 
     def _retranslate(self) -> None:
-        self.fit_action.setText(self.tr("Fit"))
-        self.fit_action.setToolTip(self.tr("Zoom to show the whole mechanism"))
-        self.dimensions_action.setText(self.tr("Show dimensions"))
-        self._dims_box.setText(self.tr("Show dimensions"))
-        self._dims_box.setToolTip(self.tr("Show the key dimensions L1, L2, L3, h and the stroke H"))
-        self.forces_action.setText(self.tr("Show forces"))
-        self._forces_box.setText(self.tr("Show forces"))
-        self._forces_box.setToolTip(self.tr(
-            "Show the joint forces at the chosen crank speed as arrows, to one scale"))
-        self._force_speed_box.setToolTip(self.tr("Crank speed of the force arrows"))
-        fill_speed_combo(self._force_speed_box, self._model.rpms)    # "r/min" in the new language
+        self._controls.retranslate(self._model.rpms)
         self._plot.setToolTip(self.tr("Wheel: zoom, drag: pan, double-click: fit, right click: menu"))
         self._forces.retranslate()
         if self._geometry is not None:

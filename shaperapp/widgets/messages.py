@@ -131,14 +131,14 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
     (r"give --base and --distance together to check a cam$",
      "give the base radius and the centre distance together to check a cam"),
-    # a cam that does not fit its hub or the follower's pivot (core.cam.build)
+    # a cam that does not fit its hub or the follower pivot's boss (core.cam.build)
     (r"the profile's smallest radius r0 − r = (\S+) mm is (\S+) mm short of hub \+ clearance = (\S+) mm$",
      "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
     (r"the profile's largest radius (\S+) mm reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
      "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-    (r"no cam within the allowances clears the pivot; the smallest: the profile's largest radius (\S+) mm "
+    (r"no cam within the allowances clears the pivot boss; the smallest: the profile's largest radius (\S+) mm "
      r"reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
-     "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm "
+     "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm "
      "reaches %2 mm past a − boss − clearance = %3 mm"),
     # what a design file can hold wrong (core.design_file, Spec.from_dict, core.cam.file)
     (r"is not a design field$", "is not a design field"),
@@ -213,8 +213,8 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
         "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
             QCoreApplication.translate("messages", "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-        "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
-            QCoreApplication.translate("messages", "no cam within the allowances clears the pivot; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
+        "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
+            QCoreApplication.translate("messages", "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
         "is not a design field": QCoreApplication.translate("messages", "is not a design field"),
         "is not a load input": QCoreApplication.translate("messages", "is not a load input"),
         "is not a cam field": QCoreApplication.translate("messages", "is not a cam field"),

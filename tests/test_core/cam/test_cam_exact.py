@@ -171,7 +171,7 @@ def test_many_random_synthesized_cams_meet_the_allowance_exactly(inputs):
     _random_cam_is_exact(inputs)
 
 
-# Issue 34 item 5's cams, raised to clear the hub and the pivot (arm 120, allowances 40°/70°):
+# Issue 34 item 5's cams, raised to clear the hub and the pivot boss (arm 120, allowances 40°/70°):
 # their true largest pressure angles too stay within the allowances (the raise's centre is
 # chosen in the same sampled polygon, then polished and cut as the smallest cam's).
 RAISED = [Program(45.0, 100.0, 10.0, 60.0), Program(15.0, 100.0, 10.0, 60.0),

@@ -10,7 +10,8 @@ from hypothesis import strategies as st
 from core.cli.cmd_dynamics import speed_rows
 from core.drawing.forces import ENGLISH, forces_sheet, joint_forces
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Polyline, outside_border, overlapping_texts, paper
+from core.drawing.checks import outside_border, overlapping_texts
+from core.drawing.sheet import Polyline, paper
 from core.dynamics import MassProperties, masses_for_design, solve_dynamics
 from core.errors import DesignError
 from core.flywheel import summarize

@@ -16,7 +16,8 @@ from core.drawing.charts import arrow
 from core.drawing.forces import forces_sheet
 from core.drawing.labels import place
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Circle, Sheet, Text, line, outside_border, overlapping_texts, paper
+from core.drawing.checks import outside_border, overlapping_texts
+from core.drawing.sheet import Circle, Sheet, Text, line, paper
 from core.dynamics import MassProperties, masses_for_design
 from core.errors import DesignError
 from core.geometry import synthesize

@@ -12,9 +12,8 @@ from hypothesis import strategies as st
 from core.drawing import mechanism as mech
 from core.drawing.dxf import CENTER, LAYERS, LINETYPES
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import (PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text,
-                                outside_border, overlapping_texts, paper, standard_scale,
-                                text_width)
+from core.drawing.checks import outside_border, overlapping_texts
+from core.drawing.sheet import PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, paper, standard_scale, text_width
 from core.drawing.sheet_dxf import save_sheet_dxf
 from core.geometry import synthesize
 from sheet_checks import assert_laid_out

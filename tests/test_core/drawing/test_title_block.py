@@ -8,7 +8,8 @@ import pytest
 
 from core.drawing.dxf import OUTLINE, THIN, TITLE
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import PAPERS, Polyline, Text, item_box, overlapping_texts, paper
+from core.drawing.checks import overlapping_texts
+from core.drawing.sheet import PAPERS, Polyline, Text, item_box, paper
 from core.drawing.title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block
 from core.geometry import synthesize
 

@@ -1,0 +1,69 @@
+"""The masses and loads a command reads: the load options (``common.LOAD_OPTIONS``) over
+the design file's loads over the defaults.
+
+Split from common.py (which declares the options) so that the reading of loads, and the
+one test of whether any were given, stands in one place for the commands that take them
+(dynamics, table, sweep, library add).
+"""
+from __future__ import annotations
+
+import argparse
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
+
+from ..errors import DesignError
+from ..geometry import Design
+from .common import LOAD_OPTIONS, UsageError, design_file, number, option_name
+
+if TYPE_CHECKING:
+    from ..dynamics import MassProperties
+
+REQUIRED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N")
+
+
+def loads_given(args: argparse.Namespace) -> bool:
+    """True when a load option was typed or the design file carries loads."""
+    doc = design_file(args)
+    if doc is not None and doc.get("masses") is not None:
+        return True
+    return args.no_gravity or any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS)
+
+
+def masses_or_none(args: argparse.Namespace, design: Design) -> MassProperties | None:
+    """The loads, or None when none were given (kinematics only)."""
+    return masses_from_args(args, design, required=False) if loads_given(args) else None
+
+
+def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -> MassProperties:
+    """The load options over the design file's loads (if any) over the defaults.
+
+    With ``required``, the four essential loads must come from the options or the file.
+    A rod mass the file keeps from the rod variant is dropped for a block design; one
+    given as an option is refused by the solver instead.
+    """
+    from ..dynamics import MassProperties, masses_for_design   # only commands with loads
+    doc = design_file(args)
+    base = doc.get("masses") if doc is not None else None
+    if base is not None:
+        base = masses_for_design(design, base)
+    changes: dict[str, Any] = {}
+    for option, dest, _, _ in LOAD_OPTIONS:
+        text = getattr(args, dest)
+        if text is None:
+            continue
+        if dest == "ram_cg_mm":
+            parts = text.split(",")
+            if len(parts) != 2:
+                raise DesignError(dest, text, "must be DX,DY in mm")
+            changes[dest] = tuple(number(dest, p) for p in parts)
+        else:
+            changes[dest] = number(dest, text)
+    if args.no_gravity:
+        changes["gravity"] = False
+    if base is None:
+        if required:
+            for dest in REQUIRED_LOADS:
+                if dest not in changes:
+                    raise UsageError(f"{option_name(dest)}: required (or give --design with loads)")
+        base = MassProperties()
+    return replace(base, **changes)
