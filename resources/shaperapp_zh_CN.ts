@@ -4252,7 +4252,7 @@
         <translation>啮合角 α′</translation>
     </message>
     <message>
-        <source>Centre shift factor y / addendum reduction factor Δy</source>
+        <source>Centre distance shift factor y / addendum reduction factor Δy</source>
         <translation>中心距变动系数 y / 齿顶高降低系数 Δy</translation>
     </message>
     <message>

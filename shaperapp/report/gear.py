@@ -145,7 +145,7 @@ def _pair_rows(pair: GearPair) -> list[tuple[str, str]]:
     labels = {"centre distance a′ (a)": translate("Report", "Centre distance a′ (a)"),
               "working pressure angle α′": translate("Report", "Working pressure angle α′"),
               "centre shift y / addendum reduction Δy":
-                  translate("Report", "Centre shift factor y / addendum reduction factor Δy"),
+                  translate("Report", "Centre distance shift factor y / addendum reduction factor Δy"),
               "line of action N1N2 / B1B2":
                   translate("Report", "Line of action N1N2 / actual line of action B1B2"),
               "base pitch pb": translate("Report", "Base pitch pb"),

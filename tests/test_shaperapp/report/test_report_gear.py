@@ -190,7 +190,7 @@ def test_the_pair_in_mesh_is_at_the_stated_scale(qapp, tmp_path):
 def test_no_label_of_the_figure_is_crossed(qapp, inputs):
     """The figure's labels (O1, O2, P, N1, N2, B1, B2, α′) clear of every line and of each
     other, by the sheets' own check, and every item inside the figure."""
-    from core.drawing.sheet import overlapping_texts
+    from core.drawing.checks import overlapping_texts
     from shaperapp.report.gear_figure import gear_figure
     from sheet_checks import crossed_texts, inside
     from core.drawing.sheet import item_box
