@@ -17,12 +17,12 @@ import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 
+from shaperapp.widgets.legend_wrap import wrap_legend
 from shaperapp.widgets.style import TEXT
 
 from .axes import AXIS_WIDTH
 
 ROW_HEIGHT = 20          # px per legend row (the samples are 20 px high)
-SAMPLE_WIDTH = 20
 ENTRY_GAP = 14           # px between two entries on a row
 KEY_WIDTH = 1.6
 
@@ -141,8 +141,8 @@ class GroupLegend:
         self._width = width
         unit = self._unit.minimumWidth() + ENTRY_GAP if self._unit.isVisible() else 0.0
         room = width - AXIS_WIDTH - 8.0 - unit
-        self._columns = _wrap(self._legend, room, self._columns)
-        self._key_columns = _wrap(self._keys, room, self._key_columns)
+        self._columns = wrap_legend(self._legend, room, self._columns)
+        self._key_columns = wrap_legend(self._keys, room, self._key_columns)
         self._fit_height()
 
     def _fit_height(self) -> None:
@@ -165,20 +165,3 @@ class GroupLegend:
             return
         self._on_toggle(label, item.isVisible())
 
-
-def _wrap(legend: pg.LegendItem, room: float, columns: int) -> int:
-    """Lay ``legend``'s entries in the most columns whose widest entries (filled row by
-    row) fit side by side in ``room`` px; the columns (``columns`` is the present count)."""
-    items = legend.items
-    if not items:
-        return 0
-    widths = [SAMPLE_WIDTH + ENTRY_GAP + label.minimumWidth() for _, label in items]
-    count = next((c for c in range(len(items), 1, -1)
-                  if sum(max(widths[j::c]) for j in range(c)) <= room), 1)
-    entry = sum(max(widths[j::count]) for j in range(count)) / count
-    if count != columns:
-        # setColumnCount only re-lays out on a change of count: force it after a rebuild
-        legend.columnCount = 0
-        legend.setColumnCount(count)
-    legend.setMaximumWidth(count * entry)     # packed to the left, not spread
-    return count
