@@ -315,8 +315,12 @@ class PlotStack(QWidget):
         screen pushed the acceleration plot half out of the window); whether the
         layout changed."""
         groups = shown_groups(self._series, self._shown, self._plots)
-        side = legends_beside(self._view.ci, groups, self._legends, self._view.width(),
-                              self._scroll.viewport().height())
+        # the pane as tall as it is with the read-out at its most lines: a read-out that
+        # wraps when the mouse moves over another plot must not move the legends
+        readout = self._readout
+        port = self._scroll.viewport().height() - max(0, min(readout.maximumHeight(), 4 * readout.height())
+                                                      - readout.height())
+        side = legends_beside(self._view.ci, groups, self._legends, self._view.width(), port)
         changed = side != self._side
         if changed:
             self._side = side
