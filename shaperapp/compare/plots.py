@@ -18,6 +18,7 @@ from core.compare import Comparison
 
 from shaperapp.plots.axes import cache_static, styled_plot_item
 from shaperapp.widgets.image_export import painting_bytes, render_scene
+from shaperapp.widgets.legend_wrap import wrap_legend
 
 # Okabe–Ito colours (distinguishable with colour-blindness) and six line styles
 COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9")
@@ -25,7 +26,8 @@ STYLES = (Qt.PenStyle.SolidLine, Qt.PenStyle.DashLine, Qt.PenStyle.DotLine, Qt.P
           Qt.PenStyle.DashDotDotLine, Qt.PenStyle.CustomDashLine)
 CURVES = ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
 WHITE = QColor("white")
-LEGEND_ROW_PX = 26     # one row of legend entries (three designs a row)
+LEGEND_ROW_PX = 26     # one row of legend entries
+MAX_COLUMNS = 3        # designs a legend row holds at most, however wide the pane
 
 
 def design_pen(index: int) -> pg.QtGui.QPen:
@@ -45,13 +47,15 @@ class ComparePlots(pg.GraphicsLayoutWidget):
     A grid, not a column: on a laptop screen the Compare tab has about 300 px for its
     plots, and four plots stacked got 45 px each, too short for their axis titles (which
     ran into each other) or more than one tick. The legend sits above the plots, so it
-    never covers a curve.
+    never covers a curve, in as many columns (at most three) as the pane's width holds:
+    three long snapshot names on one row ran past the pane and cut the right plots.
     """
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setBackground("w")
-        self._legend = pg.LegendItem(colCount=3)
+        self._legend = pg.LegendItem(colCount=MAX_COLUMNS)
+        self._columns = MAX_COLUMNS
         self._legend.setLabelTextColor("k")
         self.addItem(self._legend, row=0, col=0, colspan=2)
         self.ci.layout.setRowMaximumHeight(0, LEGEND_ROW_PX)
@@ -77,9 +81,6 @@ class ComparePlots(pg.GraphicsLayoutWidget):
         self._legend.clear()
         if result is None:
             return
-        # three designs a row: 4 to 6 take two rows, which must not run into the plots
-        self.ci.layout.setRowMaximumHeight(0, LEGEND_ROW_PX * -(-len(result.labels) // 3))
-        self.ci.layout.setRowMinimumHeight(0, LEGEND_ROW_PX * -(-len(result.labels) // 3))
         for k, label in enumerate(result.labels):
             pen = design_pen(k)
             series = (result.ram_x_mm[k], result.ram_v_m_s[k], result.ram_a_m_s2[k],
@@ -91,8 +92,31 @@ class ComparePlots(pg.GraphicsLayoutWidget):
                         self._legend.addItem(curve, html.escape(label))   # rich text
         for item in self._items.values():
             item.enableAutoRange()
+        self._columns = 0                     # new entries: lay them out again
+        self._fit_legend()
+
+    def legend_columns(self) -> int:
+        """The columns the legend's entries take now."""
+        return self._columns
+
+    def _fit_legend(self) -> None:
+        """The legend in the most columns (at most MAX_COLUMNS) the view's width holds,
+        its row as tall as its rows of entries, which must not run into the plots."""
+        left, _, right, _ = self.ci.getContentsMargins()
+        room = self.viewport().width() - left - right - 4
+        self._columns = wrap_legend(self._legend, room, self._columns, MAX_COLUMNS)
+        rows = max(1, -(-len(self._legend.items) // max(self._columns, 1)))
+        self.ci.layout.setRowMaximumHeight(0, LEGEND_ROW_PX * rows)
+        self.ci.layout.setRowMinimumHeight(0, LEGEND_ROW_PX * rows)
         self._legend.layout.activate()        # laid out now: an export may follow at once
         self.ci.layout.activate()
+
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().resizeEvent(event)
+        # pyqtgraph resizes before __init__ ends, and after close() has cleared the scene
+        legend = getattr(self, "_legend", None)
+        if legend is not None and not self.closed and legend.items:
+            self._fit_legend()
 
     def render_plots(self, painter: QPainter, target: QRectF) -> None:
         """Paint the plots into ``target`` of any painter, as vectors."""
@@ -116,3 +140,5 @@ class ComparePlots(pg.GraphicsLayoutWidget):
             self._items[key].setLabel("left", title)
         for key in CURVES[2:]:                        # the bottom row names the shared x axis
             self._items[key].setLabel("bottom", self.tr("Crank angle (°)"))
+        if self._legend.items:
+            self._fit_legend()

@@ -20,12 +20,12 @@ from core.compare import MAX_DESIGNS
 from core.library.store import LibraryError, resolve_path
 
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.frozen_view import FrozenNameView
 from shaperapp.widgets.messages import describe_file_error
 
 from .actions import LibraryActions
 from .dialogs import SaveDialog, ask_refused_library
 from .filter import core_filter
-from .frozen_view import FrozenNameView
 from .stale import StaleFiguresBar
 from .table import LibraryTableModel
 

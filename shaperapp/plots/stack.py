@@ -33,7 +33,8 @@ from .curves import LEGEND_WIDTH, PlotSlots, finite_range
 from .legend import GroupLegend
 from .readout import Readout
 from .series import Series, StackSource
-from .stack_layout import fit_axis_widths, fit_heights, fitted_y, place_rows, show_x_values
+from .stack_layout import (axis_title, fit_axis_widths, fit_heights, fitted_y, legends_beside,
+                           place_rows, plots_height, show_x_values, shown_groups)
 
 WHITE = QColor("#ffffff")
 
@@ -56,6 +57,9 @@ class PlotStack(QWidget):
         self._view = pg.GraphicsLayoutWidget()
         self._view.setBackground("w")
         self._view.ci.setSpacing(4)
+        # pyqtgraph's 9 px above and below the plots: 12 px the lowest plot's x ticks lacked
+        # at 1280 × 720 in Chinese with 16 speeds
+        self._view.ci.setContentsMargins(9, 3, 9, 3)
         # One repaint of the rectangle around all changes: a frame's changes (cursors and
         # dots) lie in one narrow strip, and Qt's default repaints every curve once per
         # small dirty rectangle instead (measured 5-10× slower per frame and per edit).
@@ -68,6 +72,7 @@ class PlotStack(QWidget):
         self._plots: dict[str, PlotSlots] = {}
         self._shown = {s.key: s.key not in hidden for s in self._series}
         self._legends = {s.group: GroupLegend(self._on_legend_toggle) for s in self._series}
+        self._side = False                               # legends beside their plots
         for key in [s.key for s in self._series if self._shown[s.key]]:
             self._build_plot(key)
         self._plots[self._series[0].key].item.vb.sigXRangeChanged.connect(self._fit_y)
@@ -100,6 +105,7 @@ class PlotStack(QWidget):
         self._scroll.setFrameShape(QFrame.Shape.NoFrame)
         self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self._scroll.setWidget(self._view)
+        self._scroll.viewport().installEventFilter(self)
         layout.addWidget(self._scroll, 1)
         layout.addWidget(self._readout)
 
@@ -152,7 +158,7 @@ class PlotStack(QWidget):
 
     def _label_plot(self, plot: PlotSlots) -> None:
         series = plot.series
-        plot.item.setLabel("left", f"{series.title()}<br>({series.unit})",
+        plot.item.setLabel("left", axis_title(series.title(), series.unit),
                            color=TEXT.name(), **{"font-size": "9pt"})
 
     def _label_x_axis(self, plot: PlotSlots) -> None:
@@ -277,8 +283,7 @@ class PlotStack(QWidget):
     # ---- layout ---------------------------------------------------------
     def _relayout(self) -> None:
         """Legend heads and shown plots, top to bottom; x values only under the lowest."""
-        self._last = place_rows(self._view.ci, self._series, self._shown,
-                                {g: legend.head for g, legend in self._legends.items()}, self._plots)
+        self._place_rows()
         self._fit_heights()
         # An emptied layout shrank the central item to its minimum: back to the view's size.
         self._view.ci.setGeometry(self._view.range)
@@ -286,6 +291,11 @@ class PlotStack(QWidget):
         self._cursor_stale = True
         if self.isVisible():
             self._on_angle(self._model.angle_index)
+
+    def _place_rows(self) -> None:
+        self._last = place_rows(self._view.ci, self._series, self._shown,
+                                {g: legend.head for g, legend in self._legends.items()}, self._plots,
+                                self._side)
 
     def _show_x_axis(self) -> None:
         show_x_values(self._plots, self._last)
@@ -296,8 +306,40 @@ class PlotStack(QWidget):
 
     def _fit_heights(self) -> None:
         fit_heights(self._view, self._plots.values())
+        if self._place_legends():
+            fit_heights(self._view, self._plots.values())
+
+    def _place_legends(self) -> bool:
+        """Legends above their plots, or beside them where above they would push the
+        lowest plot below the pane and beside they would not (16 speeds on a 1280×720
+        screen pushed the acceleration plot half out of the window); whether the
+        layout changed."""
+        groups = shown_groups(self._series, self._shown, self._plots)
+        # the pane as tall as it is with the read-out at its most lines: a read-out that
+        # wraps when the mouse moves over another plot must not move the legends
+        readout = self._readout
+        port = self._scroll.viewport().height() - max(0, min(readout.maximumHeight(), 4 * readout.height())
+                                                      - readout.height())
+        side = legends_beside(self._view.ci, groups, self._legends, self._view.width(), port)
+        changed = side != self._side
+        if changed:
+            self._side = side
+            for legend in self._legends.values():
+                legend.set_side(side)
+            self._place_rows()
+            self._view.ci.setGeometry(self._view.range)
+            self._show_x_axis()
+            if not side:
+                self._fit_legends()
+        if side:
+            for group, plots in groups.items():
+                self._legends[group].fit_side(plots_height(self._view.ci, plots))
+        return changed or side
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        if (watched is self._scroll.viewport() and event.type() == QEvent.Type.Resize
+                and event.oldSize().height() != event.size().height()):
+            self._fit_heights()             # taller or shorter: the legends above or beside
         if watched is self._view and event.type() == QEvent.Type.Resize:
             self._fit_legends()
             if event.oldSize().width() != event.size().width():    # legends re-wrapped

@@ -13,9 +13,11 @@ from collections.abc import Iterable, Mapping, Sequence
 
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
+from PySide6.QtGui import QFont, QFontMetricsF
 
 from .axes import AXIS_WIDTH
 from .curves import PlotSlots
+from .legend import GroupLegend
 from .series import Series
 
 Y_PADDING = 0.08         # share of the data's span added above and below when fitting y
@@ -31,24 +33,79 @@ MIN_PLOT_PX = 104
 TITLE_MARGIN_PX = 8      # free space along the axis beyond a title's ends
 
 
+def axis_title(title: str, unit: str) -> str:
+    """A plot's y title (rich text): the name over the unit, and a name longer than a
+    plot of MIN_PLOT_PX holds broken at its middle space, so that the title does not
+    make its plot taller ("Ram displacement" made the plot 137 px tall, and with the
+    acceleration's 130 px the lowest plot fell below a 1280 × 720 window)."""
+    font = QFont()
+    font.setPointSizeF(9.0)
+    room = MIN_PLOT_PX - 2 * TITLE_MARGIN_PX
+    if QFontMetricsF(font).horizontalAdvance(title) > room and " " in title.strip():
+        spaces = [i for i, ch in enumerate(title) if ch == " "]
+        cut = min(spaces, key=lambda i: abs(i - len(title) / 2))
+        title = title[:cut] + "<br>" + title[cut + 1:]
+    return f"{title}<br>({unit})"
+
+
 def place_rows(layout: pg.GraphicsLayout, series: Sequence[Series], shown: Mapping[str, bool],
-               heads: Mapping[str, pg.GraphicsWidget], plots: Mapping[str, PlotSlots]) -> str | None:
-    """Empty ``layout``, then put each group's legend head over its shown plots, top to
-    bottom; the key of the lowest shown plot (None if none is shown)."""
+               heads: Mapping[str, pg.GraphicsWidget], plots: Mapping[str, PlotSlots],
+               side: bool = False) -> str | None:
+    """Empty ``layout``, then put each group's shown plots top to bottom, its legend head
+    over them (``side``: beside them, on their rows); the key of the lowest shown plot
+    (None if none is shown)."""
     for item in list(layout.items):
         layout.removeItem(item)
-    row, group, last = 0, None, None
+    groups: dict[str, list[str]] = {}
     for s in series:
-        if not shown[s.key]:
-            continue
-        if s.group != group:
-            group = s.group
+        if shown[s.key]:
+            groups.setdefault(s.group, []).append(s.key)
+    row, last = 0, None
+    for group, keys in groups.items():
+        if side:
+            layout.addItem(heads[group], row=row, col=1, rowspan=len(keys))
+            layout.layout.setAlignment(heads[group], Qt.AlignmentFlag.AlignTop)
+        else:
             layout.addItem(heads[group], row=row, col=0)
             row += 1
-        layout.addItem(plots[s.key].item, row=row, col=0)
-        row += 1
-        last = s.key
+        for key in keys:
+            layout.addItem(plots[key].item, row=row, col=0)
+            row += 1
+            last = key
     return last
+
+
+def plots_height(layout: pg.GraphicsLayout, plots: Iterable[PlotSlots]) -> float:
+    """The least height of the shown ``plots`` one under the other, with the layout's
+    spacing and margins: what the stack needs without the legends above the plots."""
+    items = [plot.item for plot in plots]
+    _, top, _, bottom = layout.layout.getContentsMargins()
+    spacing = layout.layout.verticalSpacing()
+    return (top + bottom + spacing * max(len(items) - 1, 0)
+            + sum(item.effectiveSizeHint(Qt.SizeHint.MinimumSize).height() for item in items))
+
+
+def shown_groups(series: Sequence[Series], shown: Mapping[str, bool],
+                 plots: Mapping[str, PlotSlots]) -> dict[str, list[PlotSlots]]:
+    """The shown plots of each group, in the stack's order."""
+    groups: dict[str, list[PlotSlots]] = {}
+    for s in series:
+        if shown[s.key] and s.key in plots:
+            groups.setdefault(s.group, []).append(plots[s.key])
+    return groups
+
+
+def legends_beside(layout: pg.GraphicsLayout, groups: Mapping[str, Sequence[PlotSlots]],
+                   legends: Mapping[str, GroupLegend], width: float, port: float) -> bool:
+    """Whether the legends go beside their plots: above them the stack would be taller
+    than the pane (``port`` px), beside them it is not. Where even the plots alone are
+    taller, the legends stay above (the stack scrolls, and the plots keep their width).
+    Decided from sizes that do not depend on where the legends are, so it never flips
+    back and forth."""
+    need = plots_height(layout, [p for plots in groups.values() for p in plots])
+    spacing = layout.layout.verticalSpacing()
+    above = need + sum(legends[g].top_height(width) + spacing for g in groups)
+    return above > port and need <= port
 
 
 def show_x_values(plots: Mapping[str, PlotSlots], lowest: str | None) -> None:

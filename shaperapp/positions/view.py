@@ -15,13 +15,14 @@ import numpy as np
 from PySide6.QtCore import QAbstractTableModel, QEvent, QModelIndex, QPersistentModelIndex, Qt, QTimer
 from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
-                               QSpinBox, QTableView, QWidget)
+                               QSpinBox, QWidget)
 
 from core.dynamics import masses_for_design
 from core.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
                             positions)
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.column_titles import column_titles, special_titles
+from shaperapp.widgets.frozen_view import FrozenNameView
 from shaperapp.widgets.view_parts import bar_over_body, fill_speed_combo
 
 SPECIAL_FILL = QColor("#eef3f8")
@@ -148,17 +149,20 @@ class PositionsView(QWidget):
         self.count_box.setValue(DEFAULT_COUNT)
         self.copy_button = QPushButton()
         self.table_model = PositionsModel(self)
-        self.view = QTableView()
+        # The row titles (number or special position) are the vertical header and the
+        # crank angle φ, the first column, is frozen beside them: both stay in view while
+        # the values scroll sideways, by whole columns (the No. and Position columns
+        # scrolled away, then φ did, and the table moved by the pixel; issue 34 item 8).
+        self.view = FrozenNameView()
         self.view.setModel(self.table_model)
         self.view.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.view.setAlternatingRowColors(False)
-        # The row titles (number or special position) are the vertical header: they stay
-        # in view while the values scroll sideways (the No. and Position columns scrolled
-        # away, and Position was the widest column, empty in the numbered rows).
         self.view.verticalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
         self.view.setCornerButtonEnabled(False)
         self.view.horizontalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.view.frozen.horizontalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignCenter)
         self.view.setWordWrap(False)
+        self.view.set_look()
         bar_over_body(self, (self.speed_box, self.count_label, self.count_box), self.copy_button,
                       self.view)
         self.copy_shortcut = QShortcut(QKeySequence.StandardKey.Copy, self.view)

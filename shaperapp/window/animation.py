@@ -256,9 +256,12 @@ class AnimationBar(QWidget):
         and a scroll bar."""
         inner = self._speeds_area.widget()
         inner.adjustSize()
-        row = max(self._heads["time"].sizeHint().height(), 1)
-        shown = min(len(self._speed_rows), MAX_ROWS) + 1
-        self._speeds_area.setFixedHeight(shown * row + 2)
+        # each row as tall as its tallest cell: in Chinese the heading is taller than the
+        # rows of numbers, and the heading's height for every row showed a sixth row cut
+        # in half under the fifth
+        heading = max(_height(self._heads[key]) for key in ("time", "v", "a"))
+        rows = [max(_height(cell) for cell in row) for row in self._speed_rows[:MAX_ROWS]]
+        self._speeds_area.setFixedHeight(max(heading + sum(rows), 1))
         bar = self._speeds_area.verticalScrollBar().sizeHint().width()
         self._speeds_area.setMinimumWidth(inner.sizeHint().width() + bar + 4)
 
@@ -316,6 +319,11 @@ class AnimationBar(QWidget):
             row[0].setText(self.tr("{0:g} r/min").format(rpm))
         if self._speed_rows:
             self._on_angle(self._model.angle_index)
+
+
+def _height(widget: QWidget) -> int:
+    """The height a grid gives ``widget``: its size hint within its least and most size."""
+    return widget.sizeHint().expandedTo(widget.minimumSize()).boundedTo(widget.maximumSize()).height()
 
 
 def _fix_size(value: QLabel) -> None:

@@ -128,3 +128,28 @@ def test_language_change_keeps_texts(bar):
     QApplication.sendEvent(bar, QEvent(QEvent.LanguageChange))
     assert bar.play_action.text() and bar.play_action.toolTip()
     assert bar.step_forward_action.toolTip() and bar.step_back_action.toolTip()
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+def test_speed_rows_shown_whole(qtbot, bar, model, lang):
+    """With 16 speeds the read-out shows the heading and four whole rows and scrolls to the
+    rest: in Chinese, sized by the (taller) heading for every row, it showed a fifth row
+    and half of a sixth (issue 34 item 8, the sweep)."""
+    from shaperapp.widgets import i18n
+    from shaperapp.window.animation import MAX_ROWS
+    i18n.set_language(lang)
+    try:
+        model.set_rpms([20.0 + 5.0 * i for i in range(16)])
+        qtbot.wait(10)
+        area = bar._speeds_area
+        height = area.viewport().height()
+        seen = []                     # (whole, top, bottom) of each row the area shows
+        for label, *_ in bar._speed_rows:
+            top = label.mapTo(area.viewport(), label.rect().topLeft()).y()
+            bottom = top + label.height()
+            if bottom > 0 and top < height:
+                seen.append((top >= 0 and bottom <= height, top, bottom))
+        assert len(seen) == MAX_ROWS, (seen, height)
+        assert all(whole for whole, *_ in seen), (seen, height)
+    finally:
+        i18n.set_language("en")

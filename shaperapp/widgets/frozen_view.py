@@ -1,9 +1,12 @@
-"""The library's table with its first column (the design's name) frozen at the left.
+"""A table with its first column (what identifies a row) frozen at the left.
 
-Scrolled sideways to the figures, the list lost the names that say which design a row
-is (issue 34 item 8). Qt's "Frozen Column" example does it with a second view over the
-first column: the same model and selection, scrolled with the table's rows, as wide as
-that column, its header sorting as the table's does.
+Scrolled sideways to the figures, the library's list lost the names that say which
+design a row is, and the Positions tab the crank angle of each row (issue 34 item 8).
+Qt's "Frozen Column" example does it with a second view over the first column: the
+same model and selection, scrolled with the table's rows, as wide as that column and
+its rows as tall as the table's, its header sorting as the table's does. Sideways the
+table moves by whole columns: each position, the last too, starts a column at the
+frozen one's edge.
 """
 from __future__ import annotations
 
@@ -31,6 +34,8 @@ class FrozenNameView(QTableView):
         # to lies under the frozen one and the next starts wherever its width ends
         self.setHorizontalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
         self.horizontalHeader().sectionResized.connect(self._on_resized)
+        # rows of two lines (the Positions tab's special positions) are as tall in both views
+        self.verticalHeader().sectionResized.connect(lambda row, _old, size: frozen.setRowHeight(row, size))
         self.horizontalHeader().sortIndicatorChanged.connect(self._mirror_sort)
         frozen.horizontalHeader().sectionClicked.connect(self._sort_by_name)
         frozen.verticalScrollBar().valueChanged.connect(self.verticalScrollBar().setValue)
@@ -66,18 +71,22 @@ class FrozenNameView(QTableView):
             self.frozen.setColumnHidden(column, column != 0)
         self._on_resized(0, 0, self.columnWidth(0))
 
-    def _snap(self, value: int) -> None:
-        """Scrolled sideways, the column beside the frozen one starts at its edge: a column
-        half under it showed the last digits of its numbers ("53.0615" for 253.0615)."""
+    def _edges(self) -> list[int]:
+        """The scroll positions that start a column at the frozen column's right edge."""
         header = self.horizontalHeader()
-        bar = self.horizontalScrollBar()
         edges, x = [], 0
         for visual in range(header.count()):
             logical = header.logicalIndex(visual)
             if not header.isSectionHidden(logical):
                 edges.append(x - self.columnWidth(0) if visual else 0)
                 x += header.sectionSize(logical)
-        fits = [e for e in edges if 0 <= e <= bar.maximum()] + [bar.maximum()]
+        return edges
+
+    def _snap(self, value: int) -> None:
+        """Scrolled sideways, the column beside the frozen one starts at its edge: a column
+        half under it showed the last digits of its numbers ("53.0615" for 253.0615)."""
+        bar = self.horizontalScrollBar()
+        fits = [e for e in self._edges() if 0 <= e <= bar.maximum()] + [bar.maximum()]
         if value not in fits:      # on to the next edge the way it moved: a small step still moves
             ahead = [e for e in fits if e > value] if value > self._last_x else [e for e in fits if e < value]
             value = min(ahead, key=lambda e: abs(e - value)) if ahead else value
@@ -107,10 +116,18 @@ class FrozenNameView(QTableView):
 
     def updateGeometries(self) -> None:  # noqa: N802 - Qt's name
         super().updateGeometries()
+        bar = self.horizontalScrollBar()
+        if bar.maximum() > 0:
+            # the end on an edge too (blank beyond the last column), not a column cut by
+            # the frozen one
+            bar.setMaximum(min((e for e in self._edges() if e >= bar.maximum()), default=bar.maximum()))
         self._place()
 
     def _place(self) -> None:
         frame = self.frameWidth()
+        # its header as tall as the table's (a taller title elsewhere, e.g. in Chinese,
+        # would put its rows a few pixels off the table's)
+        self.frozen.horizontalHeader().setFixedHeight(self.horizontalHeader().height())
         self.frozen.setGeometry(self.verticalHeader().width() + frame, frame, self.columnWidth(0),
                                 self.viewport().height() + self.horizontalHeader().height())
 
