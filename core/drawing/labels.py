@@ -84,7 +84,8 @@ def _meeting(boxes: np.ndarray, segments: np.ndarray, clearance: float) -> tuple
     x0, y0 = boxes[:, 0] - clearance, boxes[:, 1] - clearance
     x1, y1 = boxes[:, 2] + clearance, boxes[:, 3] + clearance
     s = np.asarray(segments, dtype=float).reshape(-1, 4)
-    s = s[_within(s, (x0.min(), y0.min(), x1.max(), y1.max()))]     # first against all the boxes' extent
+    kept = np.flatnonzero(_within(s, (x0.min(), y0.min(), x1.max(), y1.max())))   # all the boxes' extent first
+    s = s[kept]
     near = ((np.minimum(s[:, 0], s[:, 2]) <= x1[:, None]) & (np.maximum(s[:, 0], s[:, 2]) >= x0[:, None])
             & (np.minimum(s[:, 1], s[:, 3]) <= y1[:, None]) & (np.maximum(s[:, 1], s[:, 3]) >= y0[:, None]))
     b, k = np.nonzero(near)
@@ -101,7 +102,7 @@ def _meeting(boxes: np.ndarray, segments: np.ndarray, clearance: float) -> tuple
         lo = np.where(~flat & (p < 0.0), np.maximum(lo, t), lo)
         hi = np.where(~flat & (p > 0.0), np.minimum(hi, t), hi)
     meet = ok & (lo <= hi)
-    return b[meet], k[meet]
+    return b[meet], kept[k[meet]]
 
 
 def _within(s: np.ndarray, box: Box) -> np.ndarray:
