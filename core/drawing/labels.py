@@ -16,6 +16,7 @@ meets its corners).
 """
 from __future__ import annotations
 
+import itertools
 import math
 from typing import Iterable, Sequence
 
@@ -53,15 +54,44 @@ def strokes(items: Iterable[Item]) -> np.ndarray:
 def meets_strokes(box: Box, segments: np.ndarray, clearance: float = CLEARANCE) -> bool:
     """Whether any segment comes within ``clearance`` of the axis-parallel ``box``
     (vectorized clipping of every segment against the enlarged box)."""
-    if not len(segments):
-        return False
-    x0, y0, x1, y1 = box[0] - clearance, box[1] - clearance, box[2] + clearance, box[3] + clearance
-    s = segments
-    near = ((np.minimum(s[:, 0], s[:, 2]) <= x1) & (np.maximum(s[:, 0], s[:, 2]) >= x0)
-            & (np.minimum(s[:, 1], s[:, 3]) <= y1) & (np.maximum(s[:, 1], s[:, 3]) >= y0))
-    s = s[near]
-    if not len(s):
-        return False
+    return bool(boxes_meet_strokes(np.asarray([box], dtype=float), segments, clearance)[0])
+
+
+def boxes_meet_strokes(boxes: np.ndarray, segments: np.ndarray, clearance: float = CLEARANCE) -> np.ndarray:
+    """:func:`meets_strokes` for each of ``boxes`` (k, 4) at once, (k,) bools. Why: the
+    label search tries thousands of spots against thousands of strokes; one call per
+    spot cost seconds a sheet."""
+    hit = np.zeros(len(np.asarray(boxes).reshape(-1, 4)), dtype=bool)
+    hit[_meeting(boxes, segments, clearance)[0]] = True
+    return hit
+
+
+def strokes_meet_boxes(segments: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """Whether each of ``segments`` (k, 4) meets any of ``boxes`` (no clearance), (k,)
+    bools: :func:`meets_strokes` turned round, for a batch of leader lines."""
+    hit = np.zeros(len(segments), dtype=bool)
+    hit[_meeting(boxes, segments, 0.0)[1]] = True
+    return hit
+
+
+def _meeting(boxes: np.ndarray, segments: np.ndarray, clearance: float) -> tuple[np.ndarray, np.ndarray]:
+    """The (box, segment) index pairs where a segment comes within ``clearance`` of a box:
+    :func:`meets_strokes`' clipping, only of the pairs whose extents meet."""
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    none = (np.zeros(0, dtype=int), np.zeros(0, dtype=int))
+    if not len(segments) or not len(boxes):
+        return none
+    x0, y0 = boxes[:, 0] - clearance, boxes[:, 1] - clearance
+    x1, y1 = boxes[:, 2] + clearance, boxes[:, 3] + clearance
+    s = np.asarray(segments, dtype=float).reshape(-1, 4)
+    kept = np.flatnonzero(_within(s, (x0.min(), y0.min(), x1.max(), y1.max())))   # all the boxes' extent first
+    s = s[kept]
+    near = ((np.minimum(s[:, 0], s[:, 2]) <= x1[:, None]) & (np.maximum(s[:, 0], s[:, 2]) >= x0[:, None])
+            & (np.minimum(s[:, 1], s[:, 3]) <= y1[:, None]) & (np.maximum(s[:, 1], s[:, 3]) >= y0[:, None]))
+    b, k = np.nonzero(near)
+    if not len(b):
+        return none
+    x0, y0, x1, y1, s = x0[b], y0[b], x1[b], y1[b], s[k]
     px, py, dx, dy = s[:, 0], s[:, 1], s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]
     lo, hi = np.zeros(len(s)), np.ones(len(s))
     ok = np.ones(len(s), dtype=bool)
@@ -71,7 +101,14 @@ def meets_strokes(box: Box, segments: np.ndarray, clearance: float = CLEARANCE) 
         t = q / np.where(flat, 1.0, p)
         lo = np.where(~flat & (p < 0.0), np.maximum(lo, t), lo)
         hi = np.where(~flat & (p > 0.0), np.minimum(hi, t), hi)
-    return bool((ok & (lo <= hi)).any())
+    meet = ok & (lo <= hi)
+    return b[meet], kept[k[meet]]
+
+
+def _within(s: np.ndarray, box: Box) -> np.ndarray:
+    """Which segments (n, 4) reach into ``box`` (edges included) by their extents."""
+    return ((np.minimum(s[:, 0], s[:, 2]) <= box[2]) & (np.maximum(s[:, 0], s[:, 2]) >= box[0])
+            & (np.minimum(s[:, 1], s[:, 3]) <= box[3]) & (np.maximum(s[:, 1], s[:, 3]) >= box[1]))
 
 
 def boxes_meet(a: Box, b: Box) -> bool:
@@ -120,12 +157,21 @@ def ring_candidates(text: str, at: Pair, height: float, preferred: Pair, gap: fl
 def leader(at: Pair, box: Box, gap: float) -> Polyline:
     """A thin line from ``gap`` off the point ``at`` to the nearest point of the label's
     ``box`` (CLEARANCE short of it, so it ends at the label, not in it)."""
-    near = np.array([min(max(at[0], box[0]), box[2]), min(max(at[1], box[1]), box[3])])
+    return line(leader_ends(at, np.asarray([box], dtype=float), gap)[0], THIN)
+
+
+def leader_ends(at: Pair, boxes: np.ndarray, gap: float) -> np.ndarray:
+    """:func:`leader`'s two points for each of ``boxes`` (k, 4), as segments (k, 4)."""
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    near = np.column_stack([np.minimum(np.maximum(at[0], boxes[:, 0]), boxes[:, 2]),
+                            np.minimum(np.maximum(at[1], boxes[:, 1]), boxes[:, 3])])
     p = np.asarray(at, dtype=float)
     d = near - p
-    length = float(np.hypot(*d))
-    u = d / length if length > 1e-9 else np.array([1.0, 0.0])
-    return line([p + min(gap, length / 2.0) * u, near - min(CLEARANCE, length / 2.0) * u], THIN)
+    length = np.hypot(d[:, 0], d[:, 1])
+    along = length > 1e-9
+    u = np.where(along[:, None], d / np.where(along, length, 1.0)[:, None], np.array([1.0, 0.0]))
+    half = length / 2.0
+    return np.hstack([p + np.minimum(gap, half)[:, None] * u, near - np.minimum(CLEARANCE, half)[:, None] * u])
 
 
 def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.ndarray,
@@ -171,37 +217,78 @@ def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments:
                 ) -> tuple[Text, Polyline] | None:
     """Of the free ``spots`` (the first ``enough`` of them, if given), the one whose leader
     line from ``at`` crosses the fewest strokes (the first of equals) and no taken box, with
-    that line; None if none is free."""
-    best, found = None, 0
-    for order, label in enumerate(spots):
+    that line; None if none is free. The spots are tested in batches, in their order."""
+    best, found, order = None, 0, 0
+    boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
+    for batch in _batches(spots):
+        boxes = np.array([label.box() for label in batch])
+        free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within))
+        ends = leader_ends(at, boxes[free], leader_gap)
+        clear = ~strokes_meet_boxes(ends, boxes_taken)
+        free, ends = free[clear], ends[clear]
+        if enough is not None:
+            free, ends = free[:enough - found], ends[:enough - found]
+        for k, seg, crossed in zip(free, ends, crossings_each(ends, segments)):
+            score = (int(crossed), order + int(k))
+            if best is None or score < best[0]:
+                best = (score, batch[k], seg)
+        found += len(free)
+        order += len(batch)
         if enough is not None and found >= enough:
             break
-        box = label.box()
-        if not is_free(box, taken, segments, within):
-            continue
-        stroke = leader(at, box, leader_gap)
-        ends = np.asarray(stroke.points).reshape(1, 4)
-        if any(meets_strokes(b, ends, 0.0) for b in taken):
-            continue
-        found += 1
-        score = (crossings(ends[0], segments), order)
-        if best is None or score < best[0]:
-            best = (score, label, stroke)
-    return None if best is None else (best[1], best[2])
+    return None if best is None else (best[1], line(best[2].reshape(2, 2), THIN))
+
+
+def _batches(spots: Iterable[Text]) -> Iterable[list[Text]]:
+    """``spots`` in lists of 8, 16 … 256: the first spot is often free, a grid search
+    tries hundreds."""
+    spots, size = iter(spots), 8
+    while batch := list(itertools.islice(spots, size)):
+        yield batch
+        size = min(2 * size, 256)
+
+
+def free_spots(boxes: Sequence[Box], taken: np.ndarray, segments: np.ndarray, within: Box | None) -> np.ndarray:
+    """:func:`is_free` for each of ``boxes`` at once, ``taken`` as an (m, 4) array."""
+    b = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    free = np.ones(len(b), dtype=bool)
+    if within is not None:
+        free &= (within[0] <= b[:, 0]) & (b[:, 2] <= within[2]) & (within[1] <= b[:, 1]) & (b[:, 3] <= within[3])
+    if len(taken):
+        free &= ~((b[:, None, 0] < taken[:, 2]) & (taken[:, 0] < b[:, None, 2])
+                  & (b[:, None, 1] < taken[:, 3]) & (taken[:, 1] < b[:, None, 3])).any(axis=1)
+    free[free] = ~boxes_meet_strokes(b[free], segments)
+    return free
 
 
 def crossings(seg: np.ndarray, segments: np.ndarray) -> int:
     """How many of ``segments`` (n, 4) the segment ``seg`` (4,) properly crosses."""
-    if not len(segments):
-        return 0
-    p, r = seg[:2], seg[2:] - seg[:2]
-    q, s = segments[:, :2], segments[:, 2:] - segments[:, :2]
+    return int(crossings_each(np.asarray(seg, dtype=float).reshape(1, 4), segments)[0])
+
+
+def crossings_each(segs: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    """:func:`crossings` for each of ``segs`` (k, 4) at once, (k,) counts. Only the pairs
+    whose extents come within 1 mm are solved (two segments that cross share a point, so
+    their extents meet): a leader search asks this of hundreds of spots against every
+    stroke of a sheet."""
+    segs = np.asarray(segs, dtype=float).reshape(-1, 4)
+    if not len(segments) or not len(segs):
+        return np.zeros(len(segs), dtype=int)
+    lo, hi = np.minimum(segs[:, :2], segs[:, 2:]) - 1.0, np.maximum(segs[:, :2], segs[:, 2:]) + 1.0
+    segments = segments[_within(segments, (*lo.min(axis=0), *hi.max(axis=0)))]
+    s_lo, s_hi = np.minimum(segments[:, :2], segments[:, 2:]), np.maximum(segments[:, :2], segments[:, 2:])
+    near = ((s_lo[:, 0] <= hi[:, None, 0]) & (s_hi[:, 0] >= lo[:, None, 0])
+            & (s_lo[:, 1] <= hi[:, None, 1]) & (s_hi[:, 1] >= lo[:, None, 1]))
+    k, n = np.nonzero(near)
+    p, r = segs[k, :2], segs[k, 2:] - segs[k, :2]
+    q, s = segments[n, :2], segments[n, 2:] - segments[n, :2]
     cross = lambda a, b: a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]    # noqa: E731
     denom = cross(r, s)
     ok = np.abs(denom) > 1e-12
     d = np.where(ok, denom, 1.0)
     t, u = cross(q - p, s) / d, cross(q - p, r) / d
-    return int(np.count_nonzero(ok & (t > 1e-9) & (t < 1.0 - 1e-9) & (u >= 0.0) & (u <= 1.0)))
+    hit = ok & (t > 1e-9) & (t < 1.0 - 1e-9) & (u >= 0.0) & (u <= 1.0)
+    return np.bincount(k[hit], minlength=len(segs))
 
 
 class Room:

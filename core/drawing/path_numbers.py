@@ -16,7 +16,7 @@ from core.geometry import Design
 from . import mechanism as mech
 from . import sheet_dims as sd
 from .dxf import THIN
-from .labels import boxes_meet, crossings, meets_strokes, strokes
+from .labels import boxes_meet_strokes, crossings_each, strokes
 from .sheet import Box, Item, Placement, Text, line
 
 NUMBER_MM = 2.5           # the tool path's numbers
@@ -47,11 +47,6 @@ def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = 0.8) -> np.ndarra
             clusters[-2:] = [[f0, l1]]
             place(f0, l1)
     return centre
-
-
-def _led_through(boxes: Sequence[Box], seg: tuple[float, float, float, float]) -> bool:
-    """Whether the segment x0, y0, x1, y1 runs through any of ``boxes``."""
-    return bool(sd.crossing(np.asarray(boxes, float), np.asarray([seg], float)).any())
 
 
 def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
@@ -107,19 +102,28 @@ def _spots(number: str, x0: float, centres: Sequence[float], rows, taken: Sequen
     box no line crosses and whose leader runs through none of ``led_clear`` first, then the leader
     crossing the fewest lines (in the order given; ``by_rank``: the first row, the
     leader's crossings not counted)."""
-    options = []
+    found = []
+    taken_boxes = np.asarray(taken, dtype=float).reshape(-1, 4)
     for rank, (cx, (row, align, tick)) in enumerate((cx, r) for cx in centres for r in rows):
         text = Text(number, (float(cx), row), NUMBER_MM, align)
         box = text.box()
         end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
-        apart = (box[0] - NUMBER_PAD, box[1], box[2] + NUMBER_PAD, box[3])   # "2" "3" is not "23"
-        if (any(boxes_meet(apart, t) for t in taken)
-                or not (within[0] <= box[0] and box[2] <= within[2] and within[1] <= box[1]
-                        and box[3] <= within[3])):
-            continue
-        seg = (x0, tick, float(cx), end)
-        through = int(_led_through(led_clear, seg))
-        crossed = int(meets_strokes(box, segs)) + through     # a leader through a text crosses it
-        led = 0 if by_rank else crossings(np.asarray(seg), segs)
-        options.append((crossed, (led, rank), text, box, tick, end))
+        found.append((rank, text, box, tick, end, (box[0] - NUMBER_PAD, box[1], box[2] + NUMBER_PAD, box[3])))
+    if not found:
+        return []
+    boxes, apart = np.array([f[2] for f in found]), np.array([f[5] for f in found])    # "2" "3" is not "23"
+    keep = ~((apart[:, None, 0] < taken_boxes[:, 2]) & (taken_boxes[:, 0] < apart[:, None, 2])
+             & (apart[:, None, 1] < taken_boxes[:, 3]) & (taken_boxes[:, 1] < apart[:, None, 3])).any(axis=1)
+    keep &= ((within[0] <= boxes[:, 0]) & (boxes[:, 2] <= within[2]) & (within[1] <= boxes[:, 1])
+             & (boxes[:, 3] <= within[3]))
+    found = [f for f, k in zip(found, keep) if k]
+    if not found:
+        return []
+    segs_led = np.array([(x0, tick, float(text.position[0]), end) for _, text, _, tick, end, _ in found])
+    through = sd.crossing(np.asarray(led_clear, float), segs_led).any(axis=0)
+    # a leader through a text crosses it
+    crossed = boxes_meet_strokes(boxes[keep], segs).astype(int) + through.astype(int)
+    led = np.zeros(len(found), dtype=int) if by_rank else crossings_each(segs_led, segs)
+    options = [(int(c), (int(n), rank), text, box, tick, end)
+               for c, n, (rank, text, box, tick, end, _) in zip(crossed, led, found)]
     return sorted(options, key=lambda o: (o[0], o[1]))

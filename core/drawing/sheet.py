@@ -19,6 +19,7 @@ import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Sequence, Union
 
 import numpy as np
@@ -78,7 +79,7 @@ class Text:
     layer: str = TEXT
     subscripts: tuple[tuple[int, int], ...] = ()
 
-    @property
+    @cached_property
     def width(self) -> float:
         return sum(text_width(part, h) for part, h, _ in self._parts())
 
@@ -117,12 +118,25 @@ class Text:
     def box(self) -> Box:
         """Its extent on the paper (estimated width, a descender below, a subscript's
         below that), rotated."""
+        return self._boxes[0]
+
+    def upright_box(self) -> Box:
+        """:meth:`box` as if not rotated: the text's own frame about ``position`` (the box
+        a rotated text's crossings are counted in)."""
+        return self._boxes[1]
+
+    @cached_property
+    def _boxes(self) -> tuple[Box, Box]:
+        """Both boxes, computed once: a text is frozen, and the label and dimension
+        searches ask a placed text for its box thousands of times per sheet."""
         w, h = self.width, self.height
         dx, dy = self._start()
         below = max([0.25 * h] + [drop + 0.25 * size for _, size, drop in self._parts()])
         corners = np.array([[dx, dy - below], [dx + w, dy - below],
                             [dx + w, dy + h * 1.1], [dx, dy + h * 1.1]])
-        return _bounds(_rotate(corners, self.rotation) + np.asarray(self.position))
+        at = np.asarray(self.position)
+        upright = _bounds(corners + at)
+        return (_bounds(_rotate(corners, self.rotation) + at) if self.rotation else upright), upright
 
 
 Item = Union[Polyline, Circle, Text]

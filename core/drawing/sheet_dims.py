@@ -236,12 +236,17 @@ def text_crossings(text: Text, segs: np.ndarray) -> int:
     larger upright box around it."""
     if not text.rotation or segs.size == 0:
         return crossings(text.box(), segs)
+    # only the segments near the rotated box can cross it (1 mm spare, far above rounding):
+    # the dimension search asks this of every line on the sheet for hundreds of candidates
+    x0, y0, x1, y1 = text.box()
+    near = ((np.minimum(segs[:, 0], segs[:, 2]) < x1 + 1.0) & (np.maximum(segs[:, 0], segs[:, 2]) > x0 - 1.0)
+            & (np.minimum(segs[:, 1], segs[:, 3]) < y1 + 1.0) & (np.maximum(segs[:, 1], segs[:, 3]) > y0 - 1.0))
+    segs = segs[near]
     t = math.radians(text.rotation)
     turn = np.array([[math.cos(t), math.sin(t)], [-math.sin(t), math.cos(t)]])     # by −rotation
     o = np.asarray(text.position, float)
     local = np.hstack([(segs[:, :2] - o) @ turn.T + o, (segs[:, 2:] - o) @ turn.T + o])
-    upright = Text(text.text, text.position, text.height, text.align, 0.0, subscripts=text.subscripts)
-    return crossings(upright.box(), local)
+    return crossings(text.upright_box(), local)
 
 
 def crossings(box: Box, segs: np.ndarray) -> int:

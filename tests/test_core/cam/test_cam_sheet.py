@@ -176,6 +176,10 @@ def test_chinese_labels_change_the_texts_only(cam):
 # the return sector's angle had no free spot round its arc, left of a cam near the area's edge
 @example(rise_law="parabolic", return_law="parabolic", swing=18.0, rise=73.0, dwell=24.0, back=120.75,
          arm=55.0, allowed=31.0, size="A2", rpm=10.0)
+# a batch of leader lines tested against the taken boxes, each marked by the wrong index
+# (δs's leader chosen through a line; the batched label search's first version)
+@example(rise_law="parabolic", return_law="parabolic", swing=5.0, rise=75.0, dwell=40.0, back=54.25,
+         arm=153.0, allowed=30.0, size="A3", rpm=10.0)
 @given(rise_law=st.sampled_from(LAWS), return_law=st.sampled_from(LAWS),
        swing=st.floats(5.0, 30.0), rise=st.floats(40.0, 150.0),
        dwell=st.one_of(st.just(0.0), st.floats(1.0, 40.0)), back=st.floats(40.0, 150.0),

@@ -196,3 +196,49 @@ def test_crossings_counts_the_segments_a_leader_runs_across():
                       [0.0, 1.0, 10.0, 1.0],      # parallel
                       [7.0, -2.0, 9.0, 2.0]])     # across: 2
     assert crossings(lead, walls) == 2 and crossings(lead, np.zeros((0, 4))) == 0
+
+
+def _orient(a, b, c) -> float:
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+
+def _proper_cross(p, q, a, b) -> bool:
+    """Segments pq and ab cross at a point inside both (plain orientation tests)."""
+    return _orient(p, q, a) * _orient(p, q, b) < 0 and _orient(a, b, p) * _orient(a, b, q) < 0
+
+
+def _segment_meets_box(seg, box) -> bool:
+    """An end inside the box, or the segment crossing one of its sides."""
+    p, q = seg[:2], seg[2:]
+    x0, y0, x1, y1 = box
+    if any(x0 <= x <= x1 and y0 <= y <= y1 for x, y in (p, q)):
+        return True
+    corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    return any(_proper_cross(p, q, corners[i], corners[(i + 1) % 4]) for i in range(4))
+
+
+def _random_boxes_and_segments(seed: int):
+    """Boxes inside (0, 100)², segments over (−40, 140)²: many lie beyond every box, so a
+    batch's first cut (the boxes' common extent) drops some and keeps others."""
+    rng = np.random.default_rng(seed)
+    corner = rng.uniform(0.0, 90.0, (25, 2))
+    boxes = np.hstack([corner, corner + rng.uniform(2.0, 10.0, (25, 2))])
+    start = rng.uniform(-40.0, 140.0, (300, 2))
+    segs = np.hstack([start, start + rng.uniform(-30.0, 30.0, (300, 2))])
+    return boxes, segs
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_batched_box_and_segment_tests_agree_with_plain_geometry(seed):
+    """The label search's batched tests (each leader line against every taken box, each
+    spot's box against every stroke, each leader's crossings) give what the plain
+    geometry of one pair at a time gives, for segments in and beyond the boxes' extent."""
+    from core.drawing.labels import boxes_meet_strokes, crossings_each, strokes_meet_boxes
+    boxes, segs = _random_boxes_and_segments(seed)
+    meets = np.array([[_segment_meets_box(s, b) for s in segs] for b in boxes])
+    assert meets.any(axis=0).sum() > 20 and (~meets.any(axis=0)).sum() > 20       # both kinds present
+    assert strokes_meet_boxes(segs, boxes).tolist() == meets.any(axis=0).tolist()
+    assert boxes_meet_strokes(boxes, segs, 0.0).tolist() == meets.any(axis=1).tolist()
+    leaders = segs[:40]
+    want = [sum(_proper_cross(a[:2], a[2:], b[:2], b[2:]) for b in segs) for a in leaders]
+    assert crossings_each(leaders, segs).tolist() == want

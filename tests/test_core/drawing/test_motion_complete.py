@@ -9,6 +9,7 @@ drawing's code; positions from their definition, φ_k = (k − 1)·360°/N.
 """
 from __future__ import annotations
 
+import functools
 import io
 import math
 
@@ -45,6 +46,18 @@ def design_of(case: str):
     return synthesize(l1, k, h) if ratio is None else synthesize(l1, k, h, rod_ratio=ratio)
 
 
+def drawn_sheet(case: str, rpm: float, size: str, count: int = 12):
+    """The motion sheet of ``case``, built once per process: several tests read the same
+    sheet (θ, the dimensions, the tool path's numbers and the clear texts all look at the
+    A1 sheet at 40 r/min), and a sheet takes about 0.3 s. The tests only read it."""
+    return _drawn(case, float(rpm), size, int(count))
+
+
+@functools.lru_cache(maxsize=None)
+def _drawn(case: str, rpm: float, size: str, count: int):
+    return motion_sheet(design_of(case), rpm, paper(size), count=count)
+
+
 def expected(case: str) -> dict[str, float]:
     """The dimensions' true values from the synthesis formulas."""
     l1, k, h, ratio = CASES[case]
@@ -66,7 +79,7 @@ def shown(text: str) -> tuple[str, float]:
 
 @pytest.mark.parametrize("case", ["block", "rod", "K near 1", "K near 3"])
 def test_theta_at_o4_with_its_value(case):
-    drawn = motion_sheet(design_of(case), 40.0, paper("A1"))
+    drawn = drawn_sheet(case, 40.0, "A1")
     o4 = np.asarray(drawn.placement([0.0, 0.0]))
     thetas = [t for t in drawn.sheet.items if isinstance(t, Text) and t.text.startswith("θ = ")]
     assert len(thetas) == 1
@@ -81,7 +94,7 @@ def test_every_dimension_shows_the_design_and_cad_measures_it_at_true_length(cas
     DXF: one DIMENSION per dimension, on the dimensions' layer, with that text, whose own
     measurement (from its definition points, in paper mm) times its DIMLFAC is the true
     value."""
-    drawn = motion_sheet(design_of(case), 40.0, paper(size))
+    drawn = drawn_sheet(case, 40.0, size)
     want = expected(case)
     texts = [shown(t.text) for t in drawn.sheet.items if isinstance(t, Text) and t.layer == DIMENSIONS]
     assert sorted(name for name, _ in texts) == sorted(want)
@@ -109,7 +122,7 @@ def test_tool_path_numbered_at_the_ram_positions(case, count):
     the tool path (x of the ram joint C at φ_k, plus the tool's offset), or is led there by
     a thin line from that tick (a number moved by 0.3 mm or less stands at it)."""
     design = design_of(case)
-    drawn = motion_sheet(design, 40.0, paper("A1"), count=count)
+    drawn = drawn_sheet(case, 40.0, "A1", count)
     items = drawn.areas["mechanism"][1]
     phi = np.radians(np.arange(count) * 360.0 / count)
     ticks = drawn.placement(shape(design, phi).ram_joint.T)[:, 0] + mech.TOOL_AHEAD
@@ -129,7 +142,7 @@ def test_tool_path_numbered_at_the_ram_positions(case, count):
 def test_phi_axes_ticks_are_degrees_and_the_positions_are_numbered(count):
     """Under each φ/(°) axis the tick labels are the positions' angles in degrees (none a
     position number), and under the s axis a row numbers the same ticks 1 … N."""
-    drawn = motion_sheet(design_of("block"), 40.0, paper("A1"), count=count)
+    drawn = drawn_sheet("block", 40.0, "A1", count)
     items = drawn.areas["curves"][1]
     assert sum(isinstance(t, Text) and t.text == "φ/(°)" for t in items) == 3
     ticks = [p for p in items if isinstance(p, Polyline) and len(p.points) == 2
@@ -183,7 +196,7 @@ def test_sheet_checks_hold_with_the_dimensions(case, size):
 def test_dimension_texts_are_clear_of_every_line(case, size):
     """A local check (the sheet's own check compares texts with texts): no line of the
     mechanism's area runs through a dimension's text, in the text's own frame."""
-    drawn = motion_sheet(design_of(case), 40.0, paper(size))
+    drawn = drawn_sheet(case, 40.0, size)
     segs = segments(drawn.areas["mechanism"][1])
     crossed = [dim.name for dim in drawn.dimensions if text_crossings(dim.text, segs)]
     assert crossed == []
