@@ -4336,32 +4336,16 @@
         <translation>齿轮 %1 不根切：x_%1 ≥ x_%1min</translation>
     </message>
     <message>
-        <source>raise x%1 to at least %3 (or give gear %1 more teeth)</source>
-        <translation>将 x%1 增大到至少 %3（或增加齿轮 %1 的齿数）</translation>
-    </message>
-    <message>
         <source>Tip thickness of gear %1: s_a%1 ≥ %3 m</source>
         <translation>齿轮 %1 的齿顶厚：s_a%1 ≥ %3 m</translation>
-    </message>
-    <message>
-        <source>the tip of gear %1 is too thin: lower x%1 (or the centre distance)</source>
-        <translation>齿轮 %1 的齿顶过薄：减小 x%1（或减小中心距）</translation>
     </message>
     <message>
         <source>Contact ratio ε ≥ %1</source>
         <translation>重合度 ε ≥ %1</translation>
     </message>
     <message>
-        <source>ε is too small: give more teeth, less shift or a smaller centre distance</source>
-        <translation>ε 过小：增加齿数、减小变位系数或减小中心距</translation>
-    </message>
-    <message>
         <source>No interference at the root of gear %1 (N_%1 to the tip of gear %2)</source>
         <translation>齿轮 %1 齿根无干涉（N_%1 至齿轮 %2 齿顶）</translation>
-    </message>
-    <message>
-        <source>the tip of gear %2 digs into the root of gear %1: raise x%1, lower x%2 or shorten the addendum</source>
-        <translation>齿轮 %2 的齿顶与齿轮 %1 的齿根干涉：增大 x%1、减小 x%2 或降低齿顶高</translation>
     </message>
     <message>
         <source>ok</source>

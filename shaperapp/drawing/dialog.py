@@ -28,7 +28,8 @@ from shaperapp.design.gear_source import design_gear
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
-from shaperapp.widgets.messages import describe, describe_os_error, failure_reason
+from shaperapp.widgets.gear_messages import describe_gear_error
+from shaperapp.widgets.messages import describe_os_error, failure_reason
 
 from .content import DEFAULT_PAPER, SHEET_SUFFIXES, SheetChoice, build_sheet
 from .render import paint_sheet, write_sheet
@@ -145,7 +146,7 @@ class DrawingSheetDialog(QDialog):
             has_gear = design_gear(self.model) is not None
         except DesignError as exc:          # a "gear" object that is not valid
             has_gear, why = False, self.tr("The design's gear pair is not valid: %1").replace(
-                "%1", describe(exc))
+                "%1", describe_gear_error(exc))
         else:
             why = self.tr("The design has no gear pair: open a design file with one (its "
                           "\"gear\" object) to draw the meshing sheet.")

@@ -16,7 +16,7 @@ from shaperapp.design.fields import (DEBOUNCE_MS, ERROR_STYLE, NumberField, exac
                                      parse_number)
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE
 
-from .messages import describe_gear_error, field_names, module_note
+from shaperapp.widgets.gear_messages import describe_gear_error, field_names, module_note
 from .model import MODE_FIELDS, MODES, GearModel
 
 UNITS = {"z1": "", "z2": "", "x1": "", "x2": "", "centre": "mm", "pressure_angle": "°",

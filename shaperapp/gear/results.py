@@ -11,7 +11,7 @@ from core.gear import GearPair, pair_checks
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE
 from shaperapp.widgets.result_table import ResultTable
 
-from .messages import check_advice, check_name, mode_text
+from shaperapp.widgets.gear_messages import check_advice, check_name, mode_text
 from .model import GearModel
 
 

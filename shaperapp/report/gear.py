@@ -20,7 +20,7 @@ from core.gear import Check, GearPair, GearPairInputs, design_pair, pair_checks
 from core.gear.involute import least_teeth
 from core.gear.shift import mesh_of_sum
 from core.gear.table import summary_rows
-from shaperapp.widgets.messages import describe
+from shaperapp.widgets.gear_messages import check_advice, describe_gear_error
 
 from .blocks import Figure, Heading, KeyValues, Paragraph, Table, join_sentences, typeset
 from .gear_figure import gear_figure
@@ -60,7 +60,7 @@ def gear_blocks(inputs: GearPairInputs, number: int, language: str) -> list:
         pair = design_pair(inputs)
     except DesignError as exc:
         blocks.append(Paragraph(translate("Report", "The gear pair cannot be made: %1")
-                                .replace("%1", describe(exc))))
+                                .replace("%1", describe_gear_error(exc))))
         return blocks
     blocks.append(KeyValues(_inputs(pair)))
     blocks.append(Paragraph(shift_reason(pair)))
@@ -175,38 +175,33 @@ def _gear_table(pair: GearPair) -> Table:
                   translate("Report", "Gear 2")], rows, translate("Report", "The two gears"))
 
 
-def _check_texts(check: Check, p: GearPairInputs) -> tuple[str, str, str]:
-    """(what is checked, the unit of its value and limit, what to change when it fails) in
-    the report's language."""
+def _check_texts(check: Check, p: GearPairInputs) -> tuple[str, str]:
+    """(what is checked, the unit of its value and limit) in the report's language; what
+    to change when it fails is the Gear tab's advice (``widgets.gear_messages``)."""
     k = check.name[-1]
     sub = lambda text: text.replace("%1", k).replace("%2", "2" if k == "1" else "1")  # noqa: E731
     if check.name.startswith("undercut"):
-        return (sub(translate("Report", "No undercut of gear %1: x_%1 ≥ x_%1min")), "",
-                sub(translate("Report", "raise x%1 to at least %3 (or give gear %1 more teeth)"))
-                .replace("%3", f"{check.limit:.4f}"))
+        return sub(translate("Report", "No undercut of gear %1: x_%1 ≥ x_%1min")), ""
     if check.name.startswith("tip"):
         return (sub(translate("Report", "Tip thickness of gear %1: s_a%1 ≥ %3 m"))
-                .replace("%3", f"{p.tip_limit:g}"), " mm",
-                sub(translate("Report", "the tip of gear %1 is too thin: lower x%1 (or the centre distance)")))
+                .replace("%3", f"{p.tip_limit:g}"), " mm")
     if check.name == "contact":
-        return (translate("Report", "Contact ratio ε ≥ %1").replace("%1", f"{p.contact_limit:g}"), "",
-                translate("Report", "ε is too small: give more teeth, less shift or a smaller centre distance"))
+        return translate("Report", "Contact ratio ε ≥ %1").replace("%1", f"{p.contact_limit:g}"), ""
     return (sub(translate("Report", "No interference at the root of gear %1 (N_%1 to the tip of gear %2)")),
-            " mm", sub(translate("Report", "the tip of gear %2 digs into the root of gear %1: raise x%1, "
-                                 "lower x%2 or shorten the addendum")))
+            " mm")
 
 
 def _checks(pair: GearPair) -> list:
     """Every check of core in a table, then each failing one with what to change."""
     rows, shaded, advice = [], [], []
     for check in pair_checks(pair):
-        what, unit, change = _check_texts(check, pair.inputs)
+        what, unit = _check_texts(check, pair.inputs)
         rows.append([what, f"{check.value:.4f}{unit}", f"{check.limit:.4f}{unit}",
                      translate("Report", "ok") if check.ok else translate("Report", "fails")])
         shaded.append(not check.ok)
         if not check.ok:
             advice.append(Paragraph(translate("Report", "%1: %2").replace("%1", f"<b>{html.escape(what)}</b>")
-                                    .replace("%2", html.escape(change))))
+                                    .replace("%2", html.escape(check_advice(check)))))
     table = Table([translate("Report", "Check"), translate("Report", "Value"),
                    translate("Report", "Limit"), translate("Report", "Result")], rows,
                   translate("Report", "The checks"), shaded=shaded)

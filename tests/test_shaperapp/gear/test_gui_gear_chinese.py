@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QAbstractButton, QComboBox, QLabel, QLineEdit, QWi
 
 from core.gear import pair_checks
 from core.gear.table import MODE_TEXT
-from shaperapp.gear.messages import check_advice, mode_text
+from shaperapp.widgets.gear_messages import check_advice, mode_text
 from shaperapp.gear.tab import GearTab
 from shaperapp.widgets import i18n
 from shaperapp.widgets.result_table import ResultTable
