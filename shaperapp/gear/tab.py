@@ -24,6 +24,20 @@ from .results import GearResults
 SHEET_SUFFIXES = (".pdf", ".svg", ".dxf")
 
 
+class TablesArea(QScrollArea):
+    """The results' scroll area, never narrower than the tables' least width (row titles
+    and one column, ``ResultTable.minimumSizeHint``), so that the tables scroll their
+    columns whole: a plain area cut their right edge at 1280 × 720, and a pinion of 13
+    teeth read "1"."""
+
+    def minimumSizeHint(self):  # noqa: N802 - Qt's name
+        hint = super().minimumSizeHint()
+        if self.widget() is not None:
+            hint.setWidth(max(hint.width(), self.widget().minimumSizeHint().width()
+                              + self.verticalScrollBar().sizeHint().width() + 2 * self.frameWidth()))
+        return hint
+
+
 class GearTab(QWidget):
     """One widget taking the design model. The window keeps the gear model (which Save
     writes) from the start and builds this tab only when it is first shown."""
@@ -55,10 +69,11 @@ class GearTab(QWidget):
         scroll.setWidgetResizable(True)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self._side = scroll
-        tables = QScrollArea()
+        tables = TablesArea()
         tables.setWidget(self.results)
         tables.setWidgetResizable(True)
         tables.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.gear_model.pairChanged.connect(tables.updateGeometry)   # its least width follows
         split = QSplitter(Qt.Orientation.Vertical)
         split.addWidget(self.view)
         split.addWidget(tables)

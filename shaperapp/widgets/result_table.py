@@ -46,6 +46,7 @@ class ResultTable(QTableWidget):
         self._rows: list[str] = []          # the row titles as given (shown wrapped where needed)
         self._wrap_width = -1               # px the shown titles are wrapped to (-1: not wrapped)
         self._pinned = 0                    # px the column titles are moved down (pin_header)
+        self._least_column = 0              # px the first column's texts need (set by _fit)
         # The owner's hook to bring content it fills lazily up to date before a copy.
         self.before_read: Callable[[], None] = lambda: None
         self.copy_action = QAction(self)
@@ -112,7 +113,7 @@ class ResultTable(QTableWidget):
             for row in range(self.rowCount()):
                 width = max(width, metrics.horizontalAdvance(self.text(row, col)) + CELL_PADDING)
             widths.append(width)
-        room = self.viewport().width()
+        self._least_column = widths[0] if widths else 0   # the first column's own need
         self._wrap_titles(widths)
         room = self.width() - 2 * self.frameWidth() - self.verticalHeader().sizeHint().width()
         spare = room - sum(widths)
@@ -194,7 +195,8 @@ class ResultTable(QTableWidget):
 
     def minimumSizeHint(self):
         hint = super().minimumSizeHint()
-        first = self.horizontalHeader().sectionSize(0) if self.columnCount() else 0
+        # the first column as wide as its texts need, not as the spare width made it
+        first = min(self._least_column, self.horizontalHeader().sectionSize(0)) if self.columnCount() else 0
         hint.setWidth(self.verticalHeader().sizeHint().width() + min(first, 120) + 2 * self.frameWidth())
         return hint
 
