@@ -249,6 +249,11 @@ class CompareView(QWidget):
             values = self.table.sizeHintForColumn(k)
             self.table.setColumnWidth(k, min(header.sectionSize(k), max(values, COLUMN_MAX_PX)))
         header.setTextElideMode(Qt.TextElideMode.ElideRight)
+        # Its least height: the header and one whole row, not Qt's 70 px. At 1280×720 in
+        # Chinese those 70 px left the ram acceleration plot 71 px tall, with a single y
+        # tick label ("0").
+        self.table.setMinimumHeight(header.sizeHint().height() + self.table.rowHeight(0)
+                                    + 2 * self.table.frameWidth())
 
     # ---- export ----------------------------------------------------------------------------
     def export_csv(self, path: str) -> None:
