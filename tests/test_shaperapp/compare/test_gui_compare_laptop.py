@@ -1,7 +1,7 @@
 """Compare's plots keep their y tick labels on a laptop (issue 34, every view readable at
-1280×720): in Chinese with two entries the table below took Qt's 70 px and left the ram
-acceleration plot 71 px tall, with the single y tick label "0". The table now shrinks to
-its header and one whole row, and the plots get the rest.
+1280×720): in Chinese with two entries the row of the speed and the exports took 30 px
+and left the ram acceleration plot 71 px tall, with the single y tick label "0". The
+speed now stands under the list and the exports beside the entry buttons.
 
 The window is the size it takes on those screens (as in test_gui_stack_on_screen)."""
 from __future__ import annotations
@@ -40,7 +40,8 @@ def test_every_plot_keeps_two_y_labels_at_1280x720(qtbot, qapp, tmp_path, lang):
         for key in PLOTS:
             labels = labelled_ticks(view.plots.item(key).getAxis("left"))
             assert len(labels) >= 2, (key, labels, view.plots.item(key).vb.height())
-        # the table still shows its header and one whole row
+        # the table still shows two whole rows, and the list both entries
         table = view.table
-        assert table.rowCount() > 0
-        assert table.viewport().height() >= table.rowHeight(0), table.viewport().height()
+        assert table.rowCount() > 2
+        assert table.viewport().height() >= 2 * table.rowHeight(0), table.viewport().height()
+        assert view.list.viewport().height() >= 2 * view.list.sizeHintForRow(0)
