@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QPoint, QRectF, QSize, QSizeF, Qt, QTime, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QFontMetrics, QPainter
-from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QHBoxLayout, QHeaderView, QLabel, QListWidget,
-                               QMessageBox, QPushButton, QSplitter, QTableWidget, QTableWidgetItem,
-                               QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QGridLayout, QHBoxLayout, QHeaderView,
+                               QLabel, QListWidget, QMessageBox, QPushButton, QSplitter, QTableWidget,
+                               QTableWidgetItem, QVBoxLayout, QWidget)
 
 from core.compare import (MAX_DESIGNS, Candidate, Comparison, compare, difference_text,
                           distinguishing_choices, distinguishing_inputs, table_csv)
@@ -45,6 +45,11 @@ class CompareView(QWidget):
 
         self.list = QListWidget()
         self.list.setMaximumHeight(72)
+        # A name longer than the list is cut at its end, where the snapshot's time is (what
+        # tells entries apart comes first), and whole in its tooltip and in the legend; a
+        # horizontal scroll bar took a row of the list.
+        self.list.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.list.setTextElideMode(Qt.TextElideMode.ElideRight)
         self.add_current_button = QPushButton()
         self.add_current_button.clicked.connect(self.add_current)
         self.add_file_button = QPushButton()
@@ -78,23 +83,30 @@ class CompareView(QWidget):
         self.content.setStretchFactor(0, 4)                   # the plots need the height; the
         self.content.setStretchFactor(1, 1)                   # table scrolls (or drag the bar)
 
+        # The speed under the list and the exports beside the entry buttons, not in a row
+        # of their own: at 1280×720 in Chinese that row's 30 px left the ram acceleration
+        # plot 71 px tall, with a single y tick label ("0").
+        speed = QHBoxLayout()
+        speed.addWidget(self.speed_label)
+        speed.addWidget(self.speed)
+        speed.addStretch(1)
+        entries = QVBoxLayout()
+        entries.addWidget(self.list, 1)
+        entries.addLayout(speed)
+        side = QGridLayout()
+        for row, (entry, export) in enumerate(((self.add_current_button, self.export_csv_button),
+                                               (self.add_file_button, self.export_image_button),
+                                               (self.remove_button, None))):
+            side.addWidget(entry, row, 0)
+            if export is not None:
+                side.addWidget(export, row, 1)
+        side.setRowStretch(3, 1)
         picks = QHBoxLayout()                  # kept narrow: the view shares a tab with the plots
-        picks.addWidget(self.list, 1)
-        side = QVBoxLayout()
-        for w in (self.add_current_button, self.add_file_button, self.remove_button):
-            side.addWidget(w)
-        side.addStretch(1)
+        picks.addLayout(entries, 1)
         picks.addLayout(side)
-        buttons = QHBoxLayout()
-        buttons.addWidget(self.speed_label)
-        buttons.addWidget(self.speed)
-        buttons.addStretch(1)
-        buttons.addWidget(self.export_csv_button)
-        buttons.addWidget(self.export_image_button)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addLayout(picks)
-        layout.addLayout(buttons)
         layout.addWidget(self.hint)
         layout.addWidget(self.content, 1)
         self._retranslate()
@@ -176,6 +188,7 @@ class CompareView(QWidget):
         for i, c in enumerate(self._candidates):
             self.list.addItem(c.label)
             self.list.item(i).setForeground(QColor(COLOURS[i % len(COLOURS)]))
+            self.list.item(i).setToolTip(c.label)
         self._model.set_comparison_candidates(self._candidates)    # for the report
         self.candidatesChanged.emit()
         self.recompute()
