@@ -95,12 +95,38 @@ class TickAxis(pg.AxisItem):
                 # A short plot keeps three labels, closer together, rather than one or two.
                 if count < MIN_LABELS and tight is not None:
                     step = tight
+                elif count < 2 and self._steps is None:
+                    step = self._half_step(step, lo, hi, inset, per_px, close, count)
                 minor = step / (3.0 if self._steps is not None and step % 3 == 0 else 2.0)
                 return [(step, 0.0), (minor, 0.0)]
             if step > 2.0 * span:
                 break
         return [(4.0 * span, 0.0)]      # no room for two labels: at most one
 
+
+    def tickStrings(self, values, scale, spacing):  # noqa: N802 - pyqtgraph's name
+        """pyqtgraph's labels, but with as many decimals as the spacing has: pyqtgraph
+        counts the decimals of the spacing's power of ten, and the half step 2.5 of a short
+        plot (``_half_step``) would have printed 2.5 as "2". Unchanged for 1, 2, 5 × 10^k."""
+        strings = super().tickStrings(values, scale, spacing)
+        step = abs(spacing * scale)
+        if not (step > 0.0 and math.isfinite(step)):
+            return strings
+        places = next((p for p in range(13) if abs(round(step, p) - step) <= 1e-9 * step), 12)
+        if places <= max(0, math.ceil(-math.log10(step))):
+            return strings
+        return [text if abs(v * scale) < 0.001 or abs(v * scale) >= 10000 else f"{v * scale:.{places}f}"
+                for text, v in zip(strings, values)]
+
+    @staticmethod
+    def _half_step(step: float, lo: float, hi: float, inset: float, per_px: float, close: float,
+                   count: int) -> float:
+        """Half of ``step`` (2.5 between 2 and 5) where it gives more labels at the close
+        spacing, else ``step``: a plot too short for three labels on 1, 2, 5 kept one, "0"
+        alone (Compare's acceleration, ±5.6 m/s² over 69 px, at 1280 × 720 with 16 speeds)."""
+        half = step / 2.0
+        more = math.floor((hi - inset) / half) - math.ceil((lo + inset) / half) + 1
+        return half if half / per_px >= close and more > count else step
 
     def needed_width(self) -> float:
         """The width this left axis needs so that its title never covers a tick label

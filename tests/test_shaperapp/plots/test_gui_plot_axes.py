@@ -53,3 +53,59 @@ def test_lean_axis_draws_what_pyqtgraph_draws(qtbot, degrees):
             assert axis.tickValues(*axis.range, 300.0) == pg.AxisItem.tickValues(axis, *axis.range, 300.0)
             checked += len(theirs[1])
     assert checked > 100            # labels were compared, not just empty lists
+
+
+def drawn_labels(axis) -> list[tuple[float, str]]:
+    """(tick value, text) of every label the axis draws now."""
+    picture = QPicture()
+    painter = QPainter(picture)
+    try:
+        _, _, texts = axis.generateDrawSpecs(painter)
+    finally:
+        painter.end()
+    lo, hi = sorted(axis.range)
+    levels = axis.tickValues(lo, hi, axis.size().height())
+    if not levels:
+        return []
+    spacing, values = levels[0]                      # only the major ticks carry text
+    shown_texts = [text for _, _, text in texts]
+    return [(v, t) for v, t in zip(values, axis.tickStrings(values, axis.scale, spacing)) if t in shown_texts]
+
+
+def test_a_short_plot_keeps_more_than_one_label(qtbot):
+    """Compare's acceleration at 1280 × 720 with 16 speeds: ±5.62 m/s² over 69 px showed "0"
+    alone (1, 2, 5 steps: 2 too close for the labels, 5 leaves only 0 inside the ends)."""
+    view = pg.GraphicsLayoutWidget()
+    item = styled_plot_item(0.0)
+    view.addItem(item)
+    shown(qtbot, view, 300, 110)
+    item.setYRange(-5.619216716610326, 5.619025393229169, padding=0.0)
+    QApplication.processEvents()
+    axis = item.getAxis("left")
+    assert 60 <= axis.size().height() <= 80, axis.size().height()       # the case's height
+    labels = drawn_labels(axis)
+    assert len(labels) >= 2, labels
+
+
+def test_every_label_reads_its_tick_value(qtbot):
+    """A label is its tick's value exactly, whatever the step (the half step 2.5 printed
+    as "2" with pyqtgraph's decimals)."""
+    view = pg.GraphicsLayoutWidget()
+    item = styled_plot_item(0.0)
+    view.addItem(item)
+    rng = np.random.default_rng(11)
+    checked = 0
+    for height in (60, 75, 90, 140, 260):
+        shown(qtbot, view, 300, height)
+        for _ in range(25):
+            span = 10.0 ** rng.uniform(-2, 4)
+            low = rng.uniform(-1.0, 0.5) * span
+            item.setYRange(low, low + span, padding=0.0)
+            QApplication.processEvents()
+            for value, text in drawn_labels(item.getAxis("left")):
+                # a tick is a multiple of its step, so its label is exact (pyqtgraph's %g
+                # above 10000 keeps six digits)
+                assert abs(float(text.replace("−", "-")) - value) <= 1e-9 * span + 1e-6 * abs(value), \
+                    (height, low, span, value, text)
+                checked += 1
+    assert checked > 200
