@@ -11,8 +11,9 @@ never imports Qt.
 
 Only the subcommand named on the command line is imported: ``shaper curves``
 never loads the library, the sweep or the entry points (``importlib.metadata``),
-which is a good part of a short command's start-up. ``shaper --help``, an
-unknown word and the entry-point commands load them all, as before.
+which is a good part of a short command's start-up; ``shaper report`` loads its
+own entry point only, not the drawing's (ezdxf) and the course's. ``shaper --help``
+and an unknown word load them all, as before.
 """
 from __future__ import annotations
 
@@ -39,16 +40,22 @@ CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "op
 
 
 def _command_modules(command: str | None = None) -> dict[str, ModuleType]:
-    """The subcommands' modules: only ``command``'s when it is one of CORE_COMMANDS,
-    else every core command and every entry point's."""
+    """The subcommands' modules: only ``command``'s when it is one of CORE_COMMANDS or an
+    entry point's name, else every core command and every entry point's."""
     if command in CORE_COMMANDS:
         return {command: import_module(f"{__name__}.cmd_{command}")}
-    modules = {name: import_module(f"{__name__}.cmd_{name}") for name in CORE_COMMANDS}
     from importlib import metadata
     try:
         entries = metadata.entry_points(group="shaper.commands")
     except Exception:  # a broken installation must not stop the core commands
         entries = ()
+    named = [entry for entry in entries if entry.name == command]
+    if named:           # ``shaper report``: the report's module alone, not the sheets' and the course's
+        try:
+            return {command: import_module(named[0].value)}
+        except ImportError:
+            pass        # as below: the command is then unknown, the others still listed
+    modules = {name: import_module(f"{__name__}.cmd_{name}") for name in CORE_COMMANDS}
     for entry in entries:
         if entry.name not in modules:
             try:

@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from pyqtgraph.functions import arrayToQPolygonF
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QPainter, QPen, QPolygonF
 from PySide6.QtWidgets import QWidget
@@ -121,8 +122,10 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
     scale = min(rect.width() / (span[0] * (1 + 2 * MARGIN)), rect.height() / (span[1] * (1 + 2 * MARGIN)))
     middle = (lo + hi) / 2.0
 
+    cx, cy = rect.center().x(), rect.center().y()
+
     def at(x: float, y: float) -> QPointF:
-        return QPointF(rect.center().x() + (x - middle[0]) * scale, rect.center().y() - (y - middle[1]) * scale)
+        return QPointF(cx + (x - middle[0]) * scale, cy - (y - middle[1]) * scale)
 
     painter.save()
     painter.setClipRect(rect)
@@ -131,7 +134,7 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
     for k, (gear, outline) in enumerate(zip((pair.gear1, pair.gear2), outlines)):
         painter.setPen(QPen(LINK, 1.2))
         painter.setBrush(QBrush(FILLS[k]))
-        painter.drawPolygon(QPolygonF([at(x, y) for x, y in outline]))
+        painter.drawPolygon(screen_polygon(outline, (cx, cy), middle, scale))
         painter.setBrush(Qt.BrushStyle.NoBrush)
         c = at(*centres[k])
         for radius, style, width in ((gear.r, Qt.PenStyle.DashDotLine, 1.0), (gear.rw, Qt.PenStyle.DashLine, 1.0),
@@ -163,3 +166,15 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
     if label:
         painter.drawText(head, int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap), label)
     painter.restore()
+
+
+def screen_polygon(points: np.ndarray, centre: tuple[float, float], middle: np.ndarray,
+                   scale: float) -> QPolygonF:
+    """``points`` (n, 2) mm as a polygon on screen: ``middle`` at ``centre``, ``scale`` px a
+    mm, y up. Filled from the array in one go: a gear's outline has thousands of points and
+    a point-by-point polygon was most of a frame (0.12 s a paint, issue 35's Gear tab)."""
+    if len(points) == 0:
+        return QPolygonF()              # pyqtgraph cannot fill a polygon of no points
+    xs = centre[0] + (points[:, 0] - middle[0]) * scale
+    ys = centre[1] - (points[:, 1] - middle[1]) * scale
+    return arrayToQPolygonF(xs, ys)

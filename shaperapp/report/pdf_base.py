@@ -56,9 +56,27 @@ class Layout:
         self.title.setPointSizeF(17.0)
         self.title.setBold(True)
         self.width = (PAGE_MM[0] - LEFT_MM - RIGHT_MM) * self.mm
+        self._advances: dict[str, dict[str, float]] = {}
 
     def metrics(self, font: QFont) -> QFontMetricsF:
         return QFontMetricsF(font, self.writer)
+
+    def widest(self, font: QFont, texts) -> float:
+        """The largest horizontal advance of ``texts`` in ``font`` (0 for none). Each
+        text is measured once per font and report: a table's columns are measured again
+        for every block of columns and in the smaller type, and a 3600-position table
+        repeats many numbers (1.2 million measurements, 1.3 s of a 16-speed report)."""
+        cache = self._advances.setdefault(font.key(), {})
+        m = None
+        widest = 0.0
+        for text in texts:
+            width = cache.get(text)
+            if width is None:
+                if m is None:
+                    m = self.metrics(font)
+                width = cache[text] = m.horizontalAdvance(text)
+            widest = max(widest, width)
+        return widest
 
     def document(self, html: str, width: float) -> QTextDocument:
         doc = QTextDocument()

@@ -20,8 +20,8 @@ def _cell_widths(lay: Layout, font: QFont, header: list[str], rows: list[list[st
     pad = m.averageCharWidth() * 1.6
     widths = []
     for c in range(len(header)):
-        longest_word = max((m.horizontalAdvance(w) for w in header[c].split()), default=0.0)
-        cells = max((m.horizontalAdvance(r[c]) for r in rows), default=0.0)
+        longest_word = lay.widest(font, header[c].split())
+        cells = lay.widest(font, [r[c] for r in rows])
         widths.append(max(longest_word, cells) + pad)
     spare = width - sum(widths)
     if spare > 0:                      # share the spare width, text columns first
@@ -88,14 +88,18 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
             else:
                 y0 = y
             rules = [y]
+            left_flags = int(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter) | wrap
+            right_flags = int(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter) | wrap
             for r in part:
                 if shaded and shaded[r]:
                     p.fillRect(QRectF(x, y, total_w, heights[r]), SHADE)
                 cx = x
                 for c, (text, cw) in enumerate(zip(rows[r], widths)):
-                    align = Qt.AlignmentFlag.AlignLeft if c < left else Qt.AlignmentFlag.AlignRight
-                    _cell(p, QRectF(cx + inset, y, cw - 2 * inset, heights[r]),
-                          int(align | Qt.AlignmentFlag.AlignVCenter) | wrap, text, font, c < left)
+                    rect = QRectF(cx + inset, y, cw - 2 * inset, heights[r])
+                    if c < left:
+                        _cell(p, rect, left_flags, text, font, True)
+                    else:                  # numbers: plain text (what _cell draws unmarked)
+                        p.drawText(rect, right_flags, text)
                     cx += cw
                 y += heights[r]
                 rules.append(y)

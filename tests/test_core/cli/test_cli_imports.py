@@ -68,3 +68,27 @@ def test_the_installed_command_is_that_entry_point():
     from pathlib import Path
     project = tomllib.loads((Path(__file__).parents[3] / "pyproject.toml").read_text())
     assert project["project"]["scripts"]["shaper"] == "core.__main__:main"
+
+
+REPORT_PROBE = """
+import contextlib, io, sys
+from core.cli import main
+with contextlib.redirect_stdout(io.StringIO()) as out:
+    try:
+        main(["report", "--help"])
+    except SystemExit as exc:
+        print("exit", exc.code, file=sys.stderr)
+print("--positions" in out.getvalue(),
+      sorted(m for m in sys.modules if m.startswith(("ezdxf", "shaperapp.drawing", "shaperapp.course",
+                                                     "core.cli.cmd_sweep", "core.cli.cmd_optimize"))))
+"""
+
+
+def test_an_entry_point_command_loads_its_own_module_only():
+    """``shaper report`` loads the report's entry point, not the drawing's (ezdxf, the
+    sheets) and the course's, nor the core commands it does not use: about 0.3 s of
+    every ``shaper report`` (0.50 → 0.18 s for ``shaper report --help``)."""
+    out = subprocess.run([sys.executable, "-c", REPORT_PROBE], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert "exit 0" in out.stderr
+    assert out.stdout.strip() == "True []"

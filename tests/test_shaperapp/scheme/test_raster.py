@@ -1,0 +1,39 @@
+"""The label search's raster (``place.Raster``): its summed table must count exactly the
+marked cells a box covers, after burning and after ``copy_with`` (which sums afresh and
+leaves the original alone). Brute force over the grid is the reference."""
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import given, settings, strategies as st
+
+from shaperapp.scheme.place import Raster
+
+BOUNDS = (-20.0, 60.0, -10.0, 30.0)
+
+
+def brute_hits(raster: Raster, box: np.ndarray) -> int:
+    left, right = sorted(box[:2])
+    bottom, top = sorted(box[2:])
+    x0 = int(np.clip(np.floor((left - raster.margin - raster.left) / raster.cell), 0, raster.nx))
+    x1 = int(np.clip(np.floor((right + raster.margin - raster.left) / raster.cell), 0, raster.nx))
+    y0 = int(np.clip(np.floor((bottom - raster.margin - raster.bottom) / raster.cell), 0, raster.ny))
+    y1 = int(np.clip(np.floor((top + raster.margin - raster.bottom) / raster.cell), 0, raster.ny))
+    return int(raster._grid[y0:min(y1 + 1, raster.ny), x0:min(x1 + 1, raster.nx)].sum())
+
+
+segments = st.lists(st.tuples(*[st.floats(-30.0, 70.0)] * 4), min_size=0, max_size=6)
+
+
+@settings(max_examples=40, deadline=None)
+@given(segments, segments, st.lists(st.tuples(*[st.floats(-30.0, 70.0)] * 4), min_size=1, max_size=8))
+def test_hits_count_the_marked_cells_in_each_box(first, more, boxes):
+    raster = Raster(np.array(first).reshape(-1, 2, 2), BOUNDS, 0.7, 0.3)
+    grid_before = raster._grid.copy()
+    both = raster.copy_with(np.array(more).reshape(-1, 2, 2))
+    assert np.array_equal(raster._grid, grid_before)            # the original is untouched
+    b = np.array(boxes, dtype=float)
+    for r in (raster, both):
+        assert r._sat[0].sum() == 0 and r._sat[:, 0].sum() == 0
+        assert r._sat[-1, -1] == r._grid.sum()
+        assert list(r.hits(b)) == [brute_hits(r, box) for box in b]
+    assert np.all(both.hits(b) >= raster.hits(b))
