@@ -124,7 +124,7 @@ def test_each_failing_check_says_what_to_change(printed):
     failing = [c.name for c in pair_checks(design_pair(RULE)) if not c.ok]
     assert failing == ["contact"]
     flat = re.sub(r"\s+", " ", section)
-    words = {"en": ("fails", "ε is too small: give more teeth"), "zh_CN": ("不合格", "ε 过小：增加齿数")}
+    words = {"en": ("fails", "ε is too small: give more teeth"), "zh_CN": ("不合格", "ε 过小：请增加齿数")}
     assert flat.count(words[language][0]) == 1 and words[language][1] in flat
 
 
