@@ -17,6 +17,7 @@ from PySide6.QtWidgets import QWidget
 from core.cam import Cam
 from core.cam.follower import pitch, profile
 from shaperapp.widgets.image_export import export_painting
+from shaperapp.widgets.screen_polygon import screen_polygon
 from shaperapp.widgets.style import FRAME, LINK, TEXT
 
 from .model import CamModel
@@ -127,8 +128,8 @@ def paint_cam(painter: QPainter, rect: QRectF, cam: Cam, delta: float, label: st
         return QPointF(rect.center().x() + (x - centre[0]) * scale,
                        rect.center().y() - (y - centre[1]) * scale)
 
-    def polygon(points: np.ndarray) -> QPolygonF:
-        return QPolygonF([at(x, y) for x, y in points.T])
+    def polygon(points: np.ndarray) -> QPolygonF:          # (2, n) mm
+        return screen_polygon(points.T, (rect.center().x(), rect.center().y()), centre, scale)
 
     painter.save()
     painter.setRenderHint(QPainter.RenderHint.Antialiasing)

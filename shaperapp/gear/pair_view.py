@@ -13,13 +13,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from pyqtgraph.functions import arrayToQPolygonF
 from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QBrush, QColor, QPainter, QPen, QPolygonF
+from PySide6.QtGui import QBrush, QColor, QPainter, QPen
 from PySide6.QtWidgets import QWidget
 
 from core.gear import GearPair
 from core.gear.mesh import gear_outline, line_points, mesh_angles, placed
+from shaperapp.widgets.screen_polygon import screen_polygon
 from shaperapp.widgets.style import FRAME, LINK, TEXT
 
 from .model import GearModel
@@ -166,15 +166,3 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
     if label:
         painter.drawText(head, int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap), label)
     painter.restore()
-
-
-def screen_polygon(points: np.ndarray, centre: tuple[float, float], middle: np.ndarray,
-                   scale: float) -> QPolygonF:
-    """``points`` (n, 2) mm as a polygon on screen: ``middle`` at ``centre``, ``scale`` px a
-    mm, y up. Filled from the array in one go: a gear's outline has thousands of points and
-    a point-by-point polygon was most of a frame (0.12 s a paint, issue 35's Gear tab)."""
-    if len(points) == 0:
-        return QPolygonF()              # pyqtgraph cannot fill a polygon of no points
-    xs = centre[0] + (points[:, 0] - middle[0]) * scale
-    ys = centre[1] - (points[:, 1] - middle[1]) * scale
-    return arrayToQPolygonF(xs, ys)

@@ -7,7 +7,7 @@ import numpy as np
 from core.gear import GearPairInputs, design_pair
 from core.gear.mesh import gear_outline
 
-from shaperapp.gear.pair_view import screen_polygon
+from shaperapp.widgets.screen_polygon import screen_polygon
 
 
 def test_the_polygon_is_the_outline_mapped_point_by_point(qapp):
