@@ -22,7 +22,7 @@ import sqlite3
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from core.cli import build_parser
@@ -260,6 +260,16 @@ def check_run(argv: list[str], status: int, stdout: str, stderr: str) -> None:
         else:
             assert stdout.strip().endswith("are damaged"), stdout
         return
+    if status == 1 and action == "refresh":    # a design that cannot be computed: named, figures kept
+        lines = stderr.splitlines()
+        assert lines and all(" cannot be computed any more (" in line
+                             and line.endswith("its figures were left as they were") for line in lines), stderr
+        if "--json" in argv:
+            assert json.loads(stdout)["failed"], stdout
+        else:
+            assert stdout.startswith("recomputed the figures of "), stdout
+        check_finite(stdout)
+        return
     if status == 0:
         skipped = [line for line in stderr.splitlines()
                    if not line.startswith(("shaper: skipped ", "shaper: note: "))]
@@ -272,8 +282,15 @@ def check_run(argv: list[str], status: int, stdout: str, stderr: str) -> None:
         check_error(action, stderr)
 
 
+# `refresh` of the crafted library's damaged rows exits 1 by design (docs/cli.md), which the
+# check refused: CI drew it once in the real-process test below
+REFRESH_DAMAGED = ["library", "refresh", "--all", "--library", os.path.join(FOLDER, "rows.sqlite")]
+
+
 @settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(argv=library_lines())
+@example(argv=REFRESH_DAMAGED)
+@example(argv=REFRESH_DAMAGED + ["--json"])
 def test_fuzzed_library_lines_succeed_finitely_or_fail_in_one_line(argv):
     fresh_library()
     status, stdout, stderr = shaper_in_process(*argv)
