@@ -93,17 +93,21 @@ def box(r: QRectF) -> list[float]:
     return [r.x(), r.y(), r.width(), r.height()]
 
 
-def tick_labels(axis) -> list[list[float]]:
-    """The boxes of the tick labels the axis draws now (its own drawing specification)."""
+def drawn_ticks(axis) -> list[tuple[QRectF, str]]:
+    """(box in the axis's coordinates, text) of every tick label the axis draws now (its
+    own drawing specification)."""
     image = QImage(8, 8, QImage.Format.Format_ARGB32)
     painter = QPainter(image)
     try:
         specs = axis.generateDrawSpecs(painter)
     finally:
         painter.end()
-    if specs is None:
-        return []
-    return [box(axis.mapRectToScene(rect)) for rect, _, text in specs[2] if text.strip()]
+    return [] if specs is None else [(rect, text) for rect, _, text in specs[2] if text.strip()]
+
+
+def tick_labels(axis) -> list[list[float]]:
+    """The scene boxes of the tick labels the axis draws now."""
+    return [box(axis.mapRectToScene(rect)) for rect, _ in drawn_ticks(axis)]
 
 
 def stacks_report(app: QApplication, window) -> dict:

@@ -9,20 +9,14 @@ from __future__ import annotations
 import pytest
 
 from gui_helpers import main_window
+from layout_probe import drawn_ticks
 
 PLOTS = ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
 
 
 def labelled_ticks(axis) -> list[str]:
     """The tick label texts the axis draws at its present size."""
-    from PySide6.QtGui import QImage, QPainter
-    image = QImage(8, 8, QImage.Format.Format_ARGB32)
-    painter = QPainter(image)
-    try:
-        specs = axis.generateDrawSpecs(painter)
-    finally:
-        painter.end()
-    return [text for _, _, text in (specs[2] if specs else []) if text.strip()]
+    return [text for _, text in drawn_ticks(axis)]
 
 
 @pytest.mark.parametrize("lang", ["en", "zh_CN"])

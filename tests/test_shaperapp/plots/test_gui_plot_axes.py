@@ -16,6 +16,7 @@ from PySide6.QtWidgets import QApplication
 from shaperapp.plots.axes import styled_plot_item
 
 from gui_helpers import shown
+from layout_probe import drawn_ticks
 
 
 def specs(axis, method):
@@ -57,18 +58,12 @@ def test_lean_axis_draws_what_pyqtgraph_draws(qtbot, degrees):
 
 def drawn_labels(axis) -> list[tuple[float, str]]:
     """(tick value, text) of every label the axis draws now."""
-    picture = QPicture()
-    painter = QPainter(picture)
-    try:
-        _, _, texts = axis.generateDrawSpecs(painter)
-    finally:
-        painter.end()
     lo, hi = sorted(axis.range)
     levels = axis.tickValues(lo, hi, axis.size().height())
     if not levels:
         return []
     spacing, values = levels[0]                      # only the major ticks carry text
-    shown_texts = [text for _, _, text in texts]
+    shown_texts = [text for _, text in drawn_ticks(axis)]
     return [(v, t) for v, t in zip(values, axis.tickStrings(values, axis.scale, spacing)) if t in shown_texts]
 
 

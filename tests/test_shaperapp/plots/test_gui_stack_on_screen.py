@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import pytest
 from PySide6.QtCore import QPoint, QRect, QRectF
-from PySide6.QtGui import QImage, QPainter
 
 from shaperapp.plots.kinematics import ANGLE, TIME
 
 from gui_helpers import main_window
+from layout_probe import drawn_ticks
 
 SIXTEEN = [20.0 + 5.0 * i for i in range(16)]
 WINDOWS = {"1280x720": (1268, 672), "1366x768": (1354, 720)}
@@ -31,13 +31,7 @@ def window(request, qapp, tmp_path_factory):
 
 def tick_boxes(axis) -> list[QRectF]:
     """The boxes (scene px) of the tick labels the axis draws now."""
-    image = QImage(8, 8, QImage.Format.Format_ARGB32)
-    painter = QPainter(image)
-    try:
-        specs = axis.generateDrawSpecs(painter)
-    finally:
-        painter.end()
-    return [axis.mapRectToScene(rect) for rect, _, text in (specs[2] if specs else []) if text.strip()]
+    return [axis.mapRectToScene(rect) for rect, _ in drawn_ticks(axis)]
 
 
 def on_screen(stack, window, box: QRectF) -> bool:
