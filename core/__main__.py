@@ -26,7 +26,20 @@ def load() -> Callable[[Sequence[str] | None], int]:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    words = sys.argv[1:] if argv is None else list(argv)
+    if list(words) == ["--version"]:
+        return print_version()
     return load()(argv)
+
+
+def print_version() -> int:
+    """``shaper --version`` prints the installed version without loading the command line:
+    the parser of every subcommand would import numpy, ezdxf and (through the report's,
+    the sheets' and the course's entry points) Qt, about a second and a half of start-up,
+    to print one line (issue 43 item 5)."""
+    from .version import version_text
+    print(version_text("shaper"))
+    return 0
 
 
 if __name__ == "__main__":

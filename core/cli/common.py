@@ -23,6 +23,7 @@ from ..io import load_design
 from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
                           check_angles, check_request, crank_angles)
 from ..spec import Spec
+from ..version import version_text
 
 DEFAULT_RPMS = ("40", "60")
 
@@ -89,15 +90,6 @@ class VersionAction(argparse._VersionAction):
                  values: Any, option_string: str | None = None) -> None:
         self.version = version_text(parser.prog)
         super().__call__(parser, namespace, values, option_string)
-
-
-def version_text(prog: str) -> str:
-    from importlib import metadata
-    try:
-        version = metadata.version("shaper-designer")
-    except metadata.PackageNotFoundError:
-        version = "unknown"
-    return f"{prog} {version}"
 
 
 def option_name(parameter: str) -> str:

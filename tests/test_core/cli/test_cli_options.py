@@ -146,3 +146,19 @@ def test_every_lang_option_takes_both_spellings_of_chinese(lang, capsys):
     with pytest.raises(SystemExit) as done:
         main(["--lang", lang, "--help"])          # parsed before any window: a choice error exits 2
     assert done.value.code == 0 and "zh_CN" in capsys.readouterr().out
+
+
+def test_version_imports_nothing_of_the_engine():
+    """``shaper --version`` prints one line without loading numpy, ezdxf, Qt or the
+    subcommands (issue 43 item 5): before, it built every subcommand's parser and loaded
+    all three, about 1.5 s on a quiet machine for one line."""
+    import sys
+    probe = ("import sys, runpy; sys.argv = ['shaper', '--version']\n"
+             "try:\n    runpy.run_module('core', run_name='__main__')\n"
+             "except SystemExit as exc:\n    status = exc.code\n"
+             "heavy = sorted(m for m in sys.modules if m.split('.')[0] in "
+             "('numpy', 'ezdxf', 'PySide6', 'scipy', 'shaperapp') or m.startswith('core.cli'))\n"
+             "print('STATUS', status, 'HEAVY', heavy)\n")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120)
+    assert done.stdout.startswith("shaper ")
+    assert "STATUS 0 HEAVY []" in done.stdout, done.stdout
