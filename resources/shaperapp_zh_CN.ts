@@ -2156,20 +2156,52 @@
         <translation>齿轮 %1 齿根无干涉</translation>
     </message>
     <message>
+        <source>raise %1</source>
+        <translation>增大 %1</translation>
+    </message>
+    <message>
+        <source>lower %1</source>
+        <translation>减小 %1</translation>
+    </message>
+    <message>
+        <source>a larger a′</source>
+        <translation>增大 a′</translation>
+    </message>
+    <message>
+        <source>a smaller a′</source>
+        <translation>减小 a′</translation>
+    </message>
+    <message>
+        <source>x1 + δ and x2 − δ at the same a′</source>
+        <translation>a′ 不变，x1 增大 δ、x2 减小 δ</translation>
+    </message>
+    <message>
+        <source>x1 − δ and x2 + δ at the same a′</source>
+        <translation>a′ 不变，x1 减小 δ、x2 增大 δ</translation>
+    </message>
+    <message>
         <source>raise x%1 to ≥ %2 (or give gear %1 more teeth)</source>
         <translation>将 x%1 增大到 ≥ %2（或增加齿轮 %1 的齿数）</translation>
     </message>
     <message>
-        <source>the tip of gear %1 is too thin: lower x%1 (or the centre distance)</source>
-        <translation>齿轮 %1 齿顶过薄：请减小 x%1（或中心距）</translation>
+        <source>the tip of gear %1 is too thin</source>
+        <translation>齿轮 %1 的齿顶过薄</translation>
     </message>
     <message>
-        <source>ε is too small: give more teeth, less shift or a smaller centre distance</source>
-        <translation>ε 过小：请增加齿数、减小变位或减小中心距</translation>
+        <source>ε is too small</source>
+        <translation>ε 过小</translation>
     </message>
     <message>
-        <source>the tip of gear %2 digs into the root of gear %1: raise x%1, lower x%2 or shorten the addendum</source>
-        <translation>齿轮 %2 的齿顶与齿轮 %1 的齿根干涉：请增大 x%1、减小 x%2 或降低齿顶高</translation>
+        <source>the tip of gear %2 digs into the root of gear %1</source>
+        <translation>齿轮 %2 的齿顶与齿轮 %1 的齿根干涉</translation>
+    </message>
+    <message>
+        <source>%1 or %2</source>
+        <translation>%1，或%2</translation>
+    </message>
+    <message>
+        <source>no small change of the shifts or of a′ helps: try other teeth</source>
+        <translation>微调变位系数或 a′ 均无帮助：请改变齿数</translation>
     </message>
     <message>
         <source>x1 and x2 given</source>

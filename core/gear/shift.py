@@ -79,11 +79,14 @@ def split(p: GearPairInputs, total: float) -> tuple[float, float]:
 
 def auto_shifts(p: GearPairInputs) -> Shifts:
     """Neither shifts nor a′ given: with z1 + z2 ≥ 2 z_min the least uncut x1 (≥ 0) and
-    x2 = −x1 (a′ = a, a height-modified pair); otherwise the least positive pair, its a′
+    x2 = −x1 (a′ = a, a height-modified pair), shared as :func:`split` shares x1 + x2 = 0
+    (so a gear 2 below z_min beside a larger pinion gets its least shift, x1 = −x2);
+    otherwise the least positive pair, its a′
     rounded up to 0.5 mm and the shifts solved back from it and split as :func:`split`."""
-    need1 = max(least_shift(p.z1, p.alpha, p.addendum), 0.0)
     if p.z1 + p.z2 >= 2.0 * least_teeth(p.alpha, p.addendum):
-        return Shifts(need1, -need1, p.alpha, reference_centre(p), "balanced")
+        x1, x2 = split(p, 0.0)      # x1 = −x2: a pinion larger than an undercut gear gives way
+        return Shifts(x1, x2, p.alpha, reference_centre(p), "balanced")
+    need1 = max(least_shift(p.z1, p.alpha, p.addendum), 0.0)
     need2 = max(least_shift(p.z2, p.alpha, p.addendum), 0.0)
     centre = math.ceil(mesh_of_sum(p, need1 + need2)[1] / CENTRE_STEP_MM - 1e-9) * CENTRE_STEP_MM
     total, alpha_w = sum_of_centre(p, centre)
