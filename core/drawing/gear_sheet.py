@@ -23,6 +23,7 @@ import numpy as np
 from core.gear import GearPair, pair_checks
 from core.gear.mesh import line_points, mesh_angles, placed
 from core.gear.profile import tooth_outline
+from core.gear.table import tip_limit_text
 
 from .charts import arrow
 from .dxf import CENTER, DASHED, OUTLINE, THIN
@@ -48,7 +49,7 @@ ENGLISH = {
     "pb": "Base pitch p_b", "lines": "Lines of action N_1N_2, B_1B_2", "eps": "Contact ratio ε",
     "rule": "Shifts", "given": "given", "from_centre": "from a′", "balanced": "x_2 = −x_1",
     "positive": "positive pair",
-    "undercut": "No undercut", "tip": "Tip s_a ≥ {k} m", "contact": "ε ≥ {k}",
+    "undercut": "No undercut", "tip": "Tip s_a ≥ {k}", "contact": "ε ≥ {k}",
     "interference": "No root interference", "ok": "ok", "fails": "FAILS",
     "double": "double contact", "single": "single contact",
     "line": "Actual line of action B_2B_1 and the contact zones, μ_l = {mu} m/mm ({scale})",
@@ -230,8 +231,11 @@ def _line_of_action(pair: GearPair, area: Box, lab: Mapping[str, str]) -> list[I
     fits: the points on it above; below, as dimensions, the contact zones (double within pb
     of either end, single between) and the base pitch stepped from B2 and from B1."""
     x0, y0, x1, y1 = area
-    scale = _scale((0.0, 0.0, pair.b1b2, 1.0), x1 - x0 - 40.0, 1e9, (*ENLARGEMENTS, 10.0))
-    left = (x0 + x1) / 2.0 - pair.b1b2 / scale / 2.0 - pair.n1b2 / scale
+    # the whole of N1N2 and B2B1 (B2 before N1 or B1 past N2 under interference) in the
+    # strip: scaled to B2B1 alone, N2 fell off the strip's end (issue 42)
+    first, last = min(0.0, pair.n1b2), max(pair.n1n2, pair.n1b1)
+    scale = _scale((0.0, 0.0, last - first, 1.0), x1 - x0 - 40.0, 1e9, (*ENLARGEMENTS, 10.0))
+    left = (x0 + x1) / 2.0 - (last + first) / scale / 2.0
     base_y = y1 - 3.2 * CAPTION - 12.0
     along = {"N1": 0.0, "B2": pair.n1b2, "K1": pair.n1b2 + pair.pb, "P": pair.n1p,
              "K2": pair.n1b1 - pair.pb, "B1": pair.n1b1, "N2": pair.n1n2}
@@ -316,7 +320,7 @@ def figure_rows(pair: GearPair, lab: Mapping[str, str]) -> list[tuple[str, str, 
         (lab["pb"], mm(pair.pb), ""), (lab["lines"], f"{pair.n1n2:.3f}, {pair.b1b2:.3f}", ""),
         (lab["eps"], f"{pair.contact_ratio:.4f}", ""),
         (lab["undercut"], verdict("undercut1"), verdict("undercut2")),
-        (lab["tip"].format(k=number_text(p.tip_limit)), verdict("tip1"), verdict("tip2")),
+        (lab["tip"].format(k=tip_limit_text(p)), verdict("tip1"), verdict("tip2")),
         (lab["contact"].format(k=number_text(p.contact_limit)), verdict("contact"), ""),
         (lab["interference"], verdict("interference1"), verdict("interference2")),
     ]

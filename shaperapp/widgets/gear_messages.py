@@ -35,6 +35,8 @@ def field_names() -> dict[str, str]:
 # (pattern on core.gear's English text, template with %1, %2 …)
 _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"must be a whole number of teeth$", "must be a whole number of teeth"),
+    (r"must be ≤ (\S+) at α = (\S+)° and h\*a = (\S+): the rack's tip rounding would not fit its tooth$",
+     "must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding would not fit its tooth"),
     (r"must be ≥ (\S+) and ≤ (\S+) teeth$", "must be at least %1 and at most %2 teeth"),
     (r"x1 \+ x2 is too negative: the gears would not mesh \(α′ ≤ 0\); raise the shifts$",
      "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts"),
@@ -58,6 +60,9 @@ def _templates() -> dict[str, str]:
     # Listed literally so pyside6-lupdate finds every template.
     return {
         "must be a whole number of teeth": translate("GearMessages", "must be a whole number of teeth"),
+        "must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding would not fit its tooth":
+            translate("GearMessages", "must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding "
+                      "would not fit its tooth"),
         "must be at least %1 and at most %2 teeth":
             translate("GearMessages", "must be at least %1 and at most %2 teeth"),
         "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts":
@@ -155,4 +160,4 @@ def mode_text(mode: str) -> str:
             "balanced": translate("GearMessages", "rule: z1 + z2 ≥ 2 zmin, the pinion's least uncut "
                                   "shift and x2 = −x1"),
             "positive": translate("GearMessages", "rule: z1 + z2 < 2 zmin, the least positive pair at "
-                                  "a′ rounded up to 0.5 mm")}[mode]
+                                  "a′ rounded up to a step of about m/10")}[mode]
