@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from .advice import Move, helpful_moves, move_text
 from .pair import Gear, GearPair
+from .shift import bound_text
 
 CHECKS = ("undercut1", "undercut2", "tip1", "tip2", "contact", "interference1", "interference2")
 
@@ -44,7 +45,7 @@ def _undercut(k: int, gear: Gear) -> Check:
     only typed shifts can undercut (a′ and the rule share x1 + x2 out uncut)."""
     ok = not gear.undercut
     return Check(f"undercut{k}", ok, gear.shift, gear.least_shift, f"x{k} ≥ x{k}min",
-                 "" if ok else f"raise x{k} to ≥ {gear.least_shift:.4f} (or give gear {k} "
+                 "" if ok else f"raise x{k} to ≥ {bound_text(gear.least_shift, True)} (or give gear {k} "
                  "more teeth)", () if ok else (Move(f"x{k}", 1, 1.0),))
 
 

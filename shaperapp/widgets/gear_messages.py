@@ -12,6 +12,7 @@ from PySide6.QtCore import QCoreApplication
 from core.errors import DesignError
 from core.gear import Check
 from core.gear.advice import Move
+from core.gear.shift import bound_text
 from shaperapp.widgets.messages import allowed_text, field_name
 
 translate = QCoreApplication.translate
@@ -105,7 +106,7 @@ def check_name(check: Check) -> str:
         return translate("GearMessages", "Gear %1 not undercut: x%1 ≥ x%1min").replace("%1", k)
     if check.name.startswith("tip"):
         return translate("GearMessages", "Gear %1 tip thick enough: sa%1 ≥ %2 mm").replace(
-            "%1", k).replace("%2", f"{check.limit:.4f}")
+            "%1", k).replace("%2", bound_text(check.limit, True))
     if check.name == "contact":
         return translate("GearMessages", "Contact ratio: ε ≥ %1").replace("%1", f"{check.limit:g}")
     return translate("GearMessages", "No interference at the root of gear %1").replace("%1", k)
@@ -134,7 +135,7 @@ def check_advice(check: Check) -> str:
     other = "2" if k == "1" else "1"
     if check.name.startswith("undercut"):
         return translate("GearMessages", "raise x%1 to ≥ %2 (or give gear %1 more teeth)").replace(
-            "%1", k).replace("%2", f"{check.limit:.4f}")
+            "%1", k).replace("%2", bound_text(check.limit, True))
     if check.name.startswith("tip"):
         problem = translate("GearMessages", "the tip of gear %1 is too thin").replace("%1", k)
     elif check.name == "contact":

@@ -109,3 +109,19 @@ def test_the_rules_pair_scales_with_the_module(z1, z2):
         p = pair.inputs
         least = mesh_of_sum(p, sum(max(least_shift(z, p.alpha, p.addendum), 0.0) for z in (z1, z2)))[1]
         assert least <= pair.centre_mm < least + m / 10 + 1e-12
+
+
+@settings(max_examples=100, deadline=None)
+@given(z1=st.integers(9, 16), x1=st.floats(-0.5, 0.2))
+def test_the_undercut_advice_names_a_shift_that_is_uncut(z1, x1):
+    """'raise x1 to ≥ X': X rounded up, so x1 = X is uncut (X = 0.5321 for 0.53214… was not)."""
+    from core.gear import pair_checks
+    try:
+        pair = design_pair(GearPairInputs(z1, 40, 2.0, x1=x1, x2=0.5))
+    except DesignError:
+        assume(False)
+        return
+    check = pair_checks(pair)[0]
+    assume(not check.ok)
+    x = float(re.search(r"raise x1 to ≥ (\S+)", check.advice).group(1))
+    assert not design_pair(GearPairInputs(z1, 40, 2.0, x1=x, x2=0.5)).gear1.undercut
