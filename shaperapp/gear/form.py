@@ -23,7 +23,7 @@ UNITS = {"z1": "", "z2": "", "x1": "", "x2": "", "centre": "mm", "pressure_angle
          "addendum": "", "clearance": "", "tip_limit": "× m", "contact_limit": ""}
 FIELD_WIDTH = 80
 """px of a number field: the shown text is rounded to fit (``shown_number``), the value kept."""
-LABEL_WIDTH = 112
+LABEL_WIDTH = 100
 """px of a field's name at most (longer ones wrap): with FIELD_WIDTH, the form leaves both
 gears' columns room beside it at 1280 × 720 in English."""
 SHIFT_FIELDS = ("x1", "x2", "centre")
@@ -60,7 +60,7 @@ class GearForm(QWidget):
         self.module.setMaximumWidth(FIELD_WIDTH)
         self.mode = QComboBox(self)
         self.mode.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
-        self.mode.setMinimumContentsLength(10)      # the longest choice is shown when the list opens
+        self.mode.setMinimumContentsLength(11)      # the longest choice is shown when the list opens
         for mode in MODES:
             self.mode.addItem("", mode)
         self._labels = {name: QLabel(self) for name in ORDER}
