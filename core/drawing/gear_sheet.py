@@ -231,11 +231,8 @@ def _line_of_action(pair: GearPair, area: Box, lab: Mapping[str, str]) -> list[I
     fits: the points on it above; below, as dimensions, the contact zones (double within pb
     of either end, single between) and the base pitch stepped from B2 and from B1."""
     x0, y0, x1, y1 = area
-    # the whole of N1N2 and B2B1 (B2 before N1 or B1 past N2 under interference) in the
-    # strip: scaled to B2B1 alone, N2 fell off the strip's end (issue 42)
-    first, last = min(0.0, pair.n1b2), max(pair.n1n2, pair.n1b1)
-    scale = _scale((0.0, 0.0, last - first, 1.0), x1 - x0 - 40.0, 1e9, (*ENLARGEMENTS, 10.0))
-    left = (x0 + x1) / 2.0 - (last + first) / scale / 2.0
+    scale = _scale((0.0, 0.0, pair.b1b2, 1.0), x1 - x0 - 40.0, 1e9, (*ENLARGEMENTS, 10.0))
+    left = (x0 + x1) / 2.0 - pair.b1b2 / scale / 2.0 - pair.n1b2 / scale
     base_y = y1 - 3.2 * CAPTION - 12.0
     along = {"N1": 0.0, "B2": pair.n1b2, "K1": pair.n1b2 + pair.pb, "P": pair.n1p,
              "K2": pair.n1b1 - pair.pb, "B1": pair.n1b1, "N2": pair.n1n2}
@@ -244,6 +241,12 @@ def _line_of_action(pair: GearPair, area: Box, lab: Mapping[str, str]) -> list[I
     ends = (max(min(x["N1"], x["B2"]), x0 + 4.0), min(max(x["N2"], x["B1"]), x1 - 4.0))
     items: list[Item] = [line([(ends[0], base_y), (ends[1], base_y)], THIN),
                          line([(x["B2"], base_y), (x["B1"], base_y)], OUTLINE)]
+    # a limit point beyond the strip (the scale is B2B1's) is named at its end, an arrow
+    # pointing on to it: N2 of a long line of action was left unnamed (issue 42)
+    for name, end, out in (("N1", ends[0], -1.0), ("N2", ends[1], 1.0)):
+        if (x[name] - end) * out > 1e-9:
+            x[name] = end
+            items += arrow((end - 6.0 * out, base_y), (end, base_y), THIN)
     stepped = pair.contact_ratio >= 1.0
     names = [n for n in ("N1", "B2", "K1", "P", "K2", "B1", "N2")
              if ends[0] <= x[n] <= ends[1] and (stepped or n not in ("K1", "K2"))]
