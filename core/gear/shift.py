@@ -94,9 +94,12 @@ def split(p: GearPairInputs, total: float) -> tuple[float, float]:
     need2 = least_shift(p.z2, p.alpha, p.addendum)
     if total < need1 + need2 - 1e-12:
         least = mesh_of_sum(p, need1 + need2)[1]
+        digits = 4              # enough to tell them apart ("-1.0414, below the -1.0414")
+        while f"{total:.{digits}f}" == f"{need1 + need2:.{digits}f}" and digits < 12:
+            digits += 1
         raise DesignError("centre", None, "needs x1 + x2 = "
-                          f"{total:.4f}, below the {need1 + need2:.4f} that keeps both gears "
-                          f"uncut; give ≥ {bound_text(least, True)} mm")
+                          f"{total:.{digits}f}, below the {need1 + need2:.{digits}f} that keeps both "
+                          f"gears uncut; give ≥ {bound_text(least, True)} mm")
     x1 = min(max(need1, 0.0), total - need2)
     return x1, total - x1
 

@@ -125,3 +125,10 @@ def test_the_undercut_advice_names_a_shift_that_is_uncut(z1, x1):
     assume(not check.ok)
     x = float(re.search(r"raise x1 to ≥ (\S+)", check.advice).group(1))
     assert not design_pair(GearPairInputs(z1, 40, 2.0, x1=x, x2=0.5)).gear1.undercut
+
+
+def test_the_refusal_tells_the_two_sums_apart():
+    """'needs x1 + x2 = -1.0414, below the -1.0414': the sums get the digits that differ."""
+    text = refusal(z1=12, z2=40, module_mm=2.0, centre_mm=49.1049)
+    given, least = re.search(r"x1 \+ x2 = (\S+), below the (\S+) ", text).groups()
+    assert float(given) < float(least) and given != least
