@@ -1570,8 +1570,8 @@
         <translation>不根切</translation>
     </message>
     <message>
-        <source>Tip s_a ≥ {k} m</source>
-        <translation>齿顶厚 s_a ≥ {k} m</translation>
+        <source>Tip s_a ≥ {k}</source>
+        <translation>齿顶厚 s_a ≥ {k}</translation>
     </message>
     <message>
         <source>ε ≥ {k}</source>
@@ -2104,6 +2104,10 @@
         <translation>齿数必须为整数</translation>
     </message>
     <message>
+        <source>must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding would not fit its tooth</source>
+        <translation>在 α = %2°、h*a = %3 时不得大于 %1：齿条齿顶圆角放不进其齿顶</translation>
+    </message>
+    <message>
         <source>must be at least %1 and at most %2 teeth</source>
         <translation>必须不少于 %1 且不多于 %2 个齿</translation>
     </message>
@@ -2156,20 +2160,52 @@
         <translation>齿轮 %1 齿根无干涉</translation>
     </message>
     <message>
+        <source>raise %1</source>
+        <translation>增大 %1</translation>
+    </message>
+    <message>
+        <source>lower %1</source>
+        <translation>减小 %1</translation>
+    </message>
+    <message>
+        <source>a larger a′</source>
+        <translation>增大 a′</translation>
+    </message>
+    <message>
+        <source>a smaller a′</source>
+        <translation>减小 a′</translation>
+    </message>
+    <message>
+        <source>x1 + δ and x2 − δ at the same a′</source>
+        <translation>a′ 不变，x1 增大 δ、x2 减小 δ</translation>
+    </message>
+    <message>
+        <source>x1 − δ and x2 + δ at the same a′</source>
+        <translation>a′ 不变，x1 减小 δ、x2 增大 δ</translation>
+    </message>
+    <message>
         <source>raise x%1 to ≥ %2 (or give gear %1 more teeth)</source>
         <translation>将 x%1 增大到 ≥ %2（或增加齿轮 %1 的齿数）</translation>
     </message>
     <message>
-        <source>the tip of gear %1 is too thin: lower x%1 (or the centre distance)</source>
-        <translation>齿轮 %1 齿顶过薄：请减小 x%1（或中心距）</translation>
+        <source>the tip of gear %1 is too thin</source>
+        <translation>齿轮 %1 的齿顶过薄</translation>
     </message>
     <message>
-        <source>ε is too small: give more teeth, less shift or a smaller centre distance</source>
-        <translation>ε 过小：请增加齿数、减小变位或减小中心距</translation>
+        <source>ε is too small</source>
+        <translation>ε 过小</translation>
     </message>
     <message>
-        <source>the tip of gear %2 digs into the root of gear %1: raise x%1, lower x%2 or shorten the addendum</source>
-        <translation>齿轮 %2 的齿顶与齿轮 %1 的齿根干涉：请增大 x%1、减小 x%2 或降低齿顶高</translation>
+        <source>the tip of gear %2 digs into the root of gear %1</source>
+        <translation>齿轮 %2 的齿顶与齿轮 %1 的齿根干涉</translation>
+    </message>
+    <message>
+        <source>%1 or %2</source>
+        <translation>%1，或%2</translation>
+    </message>
+    <message>
+        <source>no small change of the shifts or of a′ helps: try other teeth</source>
+        <translation>微调变位系数或 a′ 均无帮助：请改变齿数</translation>
     </message>
     <message>
         <source>x1 and x2 given</source>
@@ -2184,8 +2220,8 @@
         <translation>规则：z1 + z2 ≥ 2 zmin，小齿轮取不根切的最小变位，x2 = −x1</translation>
     </message>
     <message>
-        <source>rule: z1 + z2 &lt; 2 zmin, the least positive pair at a′ rounded up to 0.5 mm</source>
-        <translation>规则：z1 + z2 &lt; 2 zmin，取最小的正传动，a′ 向上圆整到 0.5 mm</translation>
+        <source>rule: z1 + z2 &lt; 2 zmin, the least positive pair at a′ rounded up to a step of about m/10</source>
+        <translation>规则：z1 + z2 &lt; 2 zmin，取最小的正传动，a′ 按约 m/10 的步长向上圆整</translation>
     </message>
 </context>
 <context>
@@ -4240,8 +4276,8 @@
         <translation>未给定变位系数和中心距，且 z_1 + z_2 = %5 ≥ 2 z_min = %6：小齿轮取不根切的最小变位系数 x_1 = max(x_1min, 0) = %1，大齿轮取 x_2 = −x_1 = %2，故 a′ = a = %7 mm（高度变位齿轮传动）。</translation>
     </message>
     <message>
-        <source>Neither shifts nor a centre distance are given, and z_1 + z_2 = %5 &lt; 2 z_min = %6, so x_2 = −x_1 would undercut the gear: the least positive pair (x_1min = %3, x_2min = %4) meshes at %9 mm, rounded up to 0.5 mm a′ = %7 mm, which asks x_1 + x_2 = %8, shared out as x_1 = %1, x_2 = %2.</source>
-        <translation>未给定变位系数和中心距，且 z_1 + z_2 = %5 &lt; 2 z_min = %6，取 x_2 = −x_1 时大齿轮将根切：最小的正变位组合（x_1min = %3，x_2min = %4）在中心距 %9 mm 处啮合，按 0.5 mm 向上圆整得 a′ = %7 mm，由此得 x_1 + x_2 = %8，分配为 x_1 = %1、x_2 = %2。</translation>
+        <source>Neither shifts nor a centre distance are given, and z_1 + z_2 = %5 &lt; 2 z_min = %6, so x_2 = −x_1 would undercut the gear: the least positive pair (x_1min = %3, x_2min = %4) meshes at %9 mm, rounded up to a multiple of %10 mm (about m/10) a′ = %7 mm, which asks x_1 + x_2 = %8, shared out as x_1 = %1, x_2 = %2.</source>
+        <translation>未给定变位系数和中心距，且 z_1 + z_2 = %5 &lt; 2 z_min = %6，取 x_2 = −x_1 时大齿轮将根切：最小的正变位组合（x_1min = %3，x_2min = %4）在中心距 %9 mm 处啮合，按 %10 mm（约 m/10）的倍数向上圆整得 a′ = %7 mm，由此得 x_1 + x_2 = %8，分配为 x_1 = %1、x_2 = %2。</translation>
     </message>
     <message>
         <source>Centre distance a′ (a)</source>
@@ -4336,8 +4372,8 @@
         <translation>齿轮 %1 不根切：x_%1 ≥ x_%1min</translation>
     </message>
     <message>
-        <source>Tip thickness of gear %1: s_a%1 ≥ %3 m</source>
-        <translation>齿轮 %1 的齿顶厚：s_a%1 ≥ %3 m</translation>
+        <source>Tip thickness of gear %1: s_a%1 ≥ %3</source>
+        <translation>齿轮 %1 的齿顶厚：s_a%1 ≥ %3</translation>
     </message>
     <message>
         <source>Contact ratio ε ≥ %1</source>

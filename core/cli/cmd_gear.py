@@ -67,7 +67,7 @@ def add_gear_options(parser: argparse.ArgumentParser,
     gear.add_argument("--pressure-angle", metavar="DEG", help="pressure angle α, ° (default 20)")
     gear.add_argument("--addendum", metavar="H", help="addendum factor h*a (default 1)")
     gear.add_argument("--clearance", metavar="C", help="clearance factor c* (default 0.25)")
-    gear.add_argument("--tip-limit", metavar="K", help="least tip thickness, × m (default 0.25)")
+    gear.add_argument("--tip-limit", metavar="K", help="least tip thickness as a factor K of the module: sa ≥ K·m (default 0.25, i.e. 0.25·m = 1.5 mm at m = 6)")
     gear.add_argument("--contact-limit", metavar="E", help="least contact ratio (default 1.2)")
     if not any(a.dest == "design" for a in parser._actions):
         gear.add_argument("--design", metavar="FILE", help="a design file whose \"gear\" object "

@@ -23,6 +23,7 @@ import numpy as np
 from core.gear import GearPair, pair_checks
 from core.gear.mesh import line_points, mesh_angles, placed
 from core.gear.profile import tooth_outline
+from core.gear.table import tip_limit_text
 
 from .charts import arrow
 from .dxf import CENTER, DASHED, OUTLINE, THIN
@@ -48,7 +49,7 @@ ENGLISH = {
     "pb": "Base pitch p_b", "lines": "Lines of action N_1N_2, B_1B_2", "eps": "Contact ratio ε",
     "rule": "Shifts", "given": "given", "from_centre": "from a′", "balanced": "x_2 = −x_1",
     "positive": "positive pair",
-    "undercut": "No undercut", "tip": "Tip s_a ≥ {k} m", "contact": "ε ≥ {k}",
+    "undercut": "No undercut", "tip": "Tip s_a ≥ {k}", "contact": "ε ≥ {k}",
     "interference": "No root interference", "ok": "ok", "fails": "FAILS",
     "double": "double contact", "single": "single contact",
     "line": "Actual line of action B_2B_1 and the contact zones, μ_l = {mu} m/mm ({scale})",
@@ -240,6 +241,12 @@ def _line_of_action(pair: GearPair, area: Box, lab: Mapping[str, str]) -> list[I
     ends = (max(min(x["N1"], x["B2"]), x0 + 4.0), min(max(x["N2"], x["B1"]), x1 - 4.0))
     items: list[Item] = [line([(ends[0], base_y), (ends[1], base_y)], THIN),
                          line([(x["B2"], base_y), (x["B1"], base_y)], OUTLINE)]
+    # a limit point beyond the strip (the scale is B2B1's) is named at its end, an arrow
+    # pointing on to it: N2 of a long line of action was left unnamed (issue 42)
+    for name, end, out in (("N1", ends[0], -1.0), ("N2", ends[1], 1.0)):
+        if (x[name] - end) * out > 1e-9:
+            x[name] = end
+            items += arrow((end - 6.0 * out, base_y), (end, base_y), THIN)
     stepped = pair.contact_ratio >= 1.0
     names = [n for n in ("N1", "B2", "K1", "P", "K2", "B1", "N2")
              if ends[0] <= x[n] <= ends[1] and (stepped or n not in ("K1", "K2"))]
@@ -316,7 +323,7 @@ def figure_rows(pair: GearPair, lab: Mapping[str, str]) -> list[tuple[str, str, 
         (lab["pb"], mm(pair.pb), ""), (lab["lines"], f"{pair.n1n2:.3f}, {pair.b1b2:.3f}", ""),
         (lab["eps"], f"{pair.contact_ratio:.4f}", ""),
         (lab["undercut"], verdict("undercut1"), verdict("undercut2")),
-        (lab["tip"].format(k=number_text(p.tip_limit)), verdict("tip1"), verdict("tip2")),
+        (lab["tip"].format(k=tip_limit_text(p)), verdict("tip1"), verdict("tip2")),
         (lab["contact"].format(k=number_text(p.contact_limit)), verdict("contact"), ""),
         (lab["interference"], verdict("interference1"), verdict("interference2")),
     ]

@@ -66,6 +66,11 @@ class GearPairInputs:
         _within("pressure_angle", self.pressure_angle_deg, 10.0, 35.0, "°")
         _within("addendum", self.addendum, 0.5, 2.0, "")
         _within("clearance", self.clearance, 0.0, 1.0, "")
+        most = most_clearance(self.alpha, self.addendum)
+        if self.clearance > most:
+            raise DesignError("clearance", self.clearance, f"must be ≤ {math.floor(most * 1e4) / 1e4:.4f} "
+                              f"at α = {self.pressure_angle_deg:g}° and h*a = {self.addendum:g}: the "
+                              "rack's tip rounding would not fit its tooth")
         _within("tip_limit", self.tip_limit, 0.0, 1.0, "× m")
         _within("contact_limit", self.contact_limit, 1.0, 3.0, "")
         if (self.x1 is None) != (self.x2 is None):
@@ -80,6 +85,14 @@ class GearPairInputs:
         if self.centre_mm is not None:
             _within("centre", self.centre_mm, 0.0, 1e6, "mm", open_low=True)
         return self
+
+
+def most_clearance(alpha: float, addendum: float) -> float:
+    """The largest c* whose tip rounding ρ = c* m / (1 − sin α) fits the rack's tooth:
+    (π/4 − h*a tan α) / (tan α + sec α), where the two roundings of the tooth's tip meet on
+    its axis (0.295 at 20°, 0.203 at 25°). A larger one cut a tooth space folded on itself
+    and a root the rack cannot cut (issue 42), so it is refused by name."""
+    return (math.pi / 4.0 - addendum * math.tan(alpha)) / (math.tan(alpha) + 1.0 / math.cos(alpha))
 
 
 def _within(name: str, value: object, low: float, high: float, unit: str,

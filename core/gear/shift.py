@@ -12,8 +12,32 @@ from ..errors import DesignError
 from .inputs import GearPairInputs
 from .involute import inv, inv_inverse, least_shift, least_teeth
 
-CENTRE_STEP_MM = 0.5
-"""The rule's centre distance is rounded up to this (a machinable, checkable number)."""
+CENTRE_STEPS_MM = (1.0, 2.0, 5.0)
+"""The rule's centre distance is rounded up to a multiple of 1, 2 or 5 × 10^k mm, the largest
+not above m/10 (:func:`centre_step`): 0.5 mm at m = 5 or 6, 0.2 mm at m = 2, 0.01 mm at
+m = 0.1. A fixed 0.5 mm made a 1.70 mm pair of m = 0.1 a 2.0 mm one, x2 = 4.27, refused as
+pointed (issue 42): the step adds at most about 0.1 to x1 + x2 whatever the module."""
+
+
+def centre_step(module_mm: float) -> float:
+    """The largest 1, 2 or 5 × 10^k mm not above m/10: the rule's rounding of a′, mm."""
+    decade = 10.0 ** math.floor(math.log10(module_mm / 10.0))
+    return max(k * decade for k in CENTRE_STEPS_MM if k * decade <= module_mm / 10.0 * (1 + 1e-12))
+
+
+def bound_text(value: float, up: bool, strict: bool = False) -> str:
+    """``value`` to 4 decimals rounded towards the allowed side (up for a least value, down
+    for a greatest), one step further when the bound is strict and the rounding is exact:
+    the hinted number is itself accepted (49.1049 for a least 49.104929944 was refused)."""
+    scaled = value * 1e4
+    shown = math.ceil(scaled - 1e-9) if up else math.floor(scaled + 1e-9)
+    if strict and shown / 1e4 == value:
+        shown += 1 if up else -1
+    if up and shown / 1e4 < value:
+        shown += 1
+    if not up and shown / 1e4 > value:
+        shown -= 1
+    return f"{shown / 1e4:.4f}"
 
 MODES = ("given", "centre", "balanced", "positive")
 """How the shifts were found: x1, x2 given; from a′; the rule with x2 = −x1 (z1 + z2 ≥ 2 z_min);
@@ -53,8 +77,8 @@ def sum_of_centre(p: GearPairInputs, centre: float) -> tuple[float, float]:
     cos_w = reference_centre(p) * math.cos(p.alpha) / centre
     if not cos_w < 1.0:
         least = reference_centre(p) * math.cos(p.alpha)
-        raise DesignError("centre", centre, f"must be > a cos α = {least:.4f} mm (the "
-                          "working pressure angle would be 0)")
+        raise DesignError("centre", centre, f"must be > a cos α = {bound_text(least, True, True)} "
+                          "mm (the working pressure angle would be 0)")
     alpha_w = math.acos(cos_w)
     return (float(inv(alpha_w) - inv(p.alpha)) * (p.z1 + p.z2) / (2.0 * math.tan(p.alpha)),
             alpha_w)
@@ -70,22 +94,30 @@ def split(p: GearPairInputs, total: float) -> tuple[float, float]:
     need2 = least_shift(p.z2, p.alpha, p.addendum)
     if total < need1 + need2 - 1e-12:
         least = mesh_of_sum(p, need1 + need2)[1]
+        digits = 4              # enough to tell them apart ("-1.0414, below the -1.0414")
+        while f"{total:.{digits}f}" == f"{need1 + need2:.{digits}f}" and digits < 12:
+            digits += 1
         raise DesignError("centre", None, "needs x1 + x2 = "
-                          f"{total:.4f}, below the {need1 + need2:.4f} that keeps both gears "
-                          f"uncut; give ≥ {least:.4f} mm")
+                          f"{total:.{digits}f}, below the {need1 + need2:.{digits}f} that keeps both "
+                          f"gears uncut; give ≥ {bound_text(least, True)} mm")
     x1 = min(max(need1, 0.0), total - need2)
     return x1, total - x1
 
 
 def auto_shifts(p: GearPairInputs) -> Shifts:
     """Neither shifts nor a′ given: with z1 + z2 ≥ 2 z_min the least uncut x1 (≥ 0) and
-    x2 = −x1 (a′ = a, a height-modified pair); otherwise the least positive pair, its a′
-    rounded up to 0.5 mm and the shifts solved back from it and split as :func:`split`."""
-    need1 = max(least_shift(p.z1, p.alpha, p.addendum), 0.0)
+    x2 = −x1 (a′ = a, a height-modified pair), shared as :func:`split` shares x1 + x2 = 0
+    (so a gear 2 below z_min beside a larger pinion gets its least shift, x1 = −x2);
+    otherwise the least positive pair, its a′
+    rounded up to :func:`centre_step` and the shifts solved back from it and split as
+    :func:`split`."""
     if p.z1 + p.z2 >= 2.0 * least_teeth(p.alpha, p.addendum):
-        return Shifts(need1, -need1, p.alpha, reference_centre(p), "balanced")
+        x1, x2 = split(p, 0.0)      # x1 = −x2: a pinion larger than an undercut gear gives way
+        return Shifts(x1, x2, p.alpha, reference_centre(p), "balanced")
+    need1 = max(least_shift(p.z1, p.alpha, p.addendum), 0.0)
     need2 = max(least_shift(p.z2, p.alpha, p.addendum), 0.0)
-    centre = math.ceil(mesh_of_sum(p, need1 + need2)[1] / CENTRE_STEP_MM - 1e-9) * CENTRE_STEP_MM
+    step = centre_step(p.module_mm)
+    centre = round(math.ceil(mesh_of_sum(p, need1 + need2)[1] / step - 1e-9) * step, 12)
     total, alpha_w = sum_of_centre(p, centre)
     x1, x2 = split(p, total)
     return Shifts(x1, x2, alpha_w, centre, "positive")

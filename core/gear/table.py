@@ -5,12 +5,20 @@ import math
 from typing import Any
 
 from .checks import pair_checks
+from .inputs import GearPairInputs
 from .pair import Gear, GearPair
 
 MODE_TEXT = {"given": "x1 and x2 given",
              "centre": "from the centre distance: the pinion's least uncut shift, the rest to the gear",
              "balanced": "rule: z1 + z2 ≥ 2 zmin, the pinion's least uncut shift and x2 = −x1",
-             "positive": "rule: z1 + z2 < 2 zmin, the least positive pair at a′ rounded up to 0.5 mm"}
+             "positive": "rule: z1 + z2 < 2 zmin, the least positive pair at a′ rounded up to a "
+                         "step of about m/10"}
+
+
+def tip_limit_text(p: GearPairInputs) -> str:
+    """The least tip thickness as the factor of the module and in mm, '0.25·m (= 1.5 mm)':
+    "0.25 m" read as metres (issue 40)."""
+    return f"{p.tip_limit:g}·m (= {p.tip_limit * p.module_mm:.6g} mm)"
 
 
 def _gear_json(gear: Gear) -> dict[str, Any]:
@@ -62,7 +70,8 @@ def summary_rows(pair: GearPair) -> list[tuple[str, str]]:
              ("tip thickness sa1 / sa2", f"{g1.sa:.4f} / {g2.sa:.4f} mm"),
              ("line of action N1N2 / B1B2", f"{pair.n1n2:.4f} / {pair.b1b2:.4f} mm"),
              ("base pitch pb", f"{pair.pb:.4f} mm"),
-             ("contact ratio ε", f"{pair.contact_ratio:.6f}")]
+             ("contact ratio ε", f"{pair.contact_ratio:.6f}"),
+             ("least tip thickness", tip_limit_text(pair.inputs))]
     if pair.inputs.module_note:
         rows.append(("note", pair.inputs.module_note))
     for check in pair_checks(pair):

@@ -44,7 +44,7 @@ def gear_labels() -> dict[str, str]:
         "balanced": translate("Drawing", "x_2 = −x_1"),
         "positive": translate("Drawing", "positive pair"),
         "undercut": translate("Drawing", "No undercut"),
-        "tip": translate("Drawing", "Tip s_a ≥ {k} m"),
+        "tip": translate("Drawing", "Tip s_a ≥ {k}"),
         "contact": translate("Drawing", "ε ≥ {k}"),
         "interference": translate("Drawing", "No root interference"),
         "ok": translate("Drawing", "ok"),

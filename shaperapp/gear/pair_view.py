@@ -159,10 +159,26 @@ def paint_pair(painter: QPainter, rect: QRectF, pair: GearPair,
         painter.drawEllipse(at(*pts[name]), 2.5, 2.5)
         if room or name == "P":
             painter.drawText(at(*pts[name]) + LABEL_OFFSETS[name], name)
-    for name, xy in zip(("O1", "O2"), centres):
+    metrics = painter.fontMetrics()
+    for name, xy, gear in zip(("O1", "O2"), centres, (pair.gear1, pair.gear2)):
         painter.drawEllipse(at(*xy), 3.0, 3.0)
-        painter.drawText(at(*xy) + QPointF(-22, 16), name)
+        box = centre_label_box(at(*xy), gear.rf * scale, gear.ra * scale,
+                               metrics.horizontalAdvance(name), metrics.height())
+        painter.drawText(box, int(Qt.AlignmentFlag.AlignCenter), name)
     painter.setClipping(False)
     if label:
         painter.drawText(head, int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap), label)
     painter.restore()
+
+
+def centre_label_box(centre: QPointF, root_px: float, tip_px: float, width: float,
+                     height: float) -> QRectF:
+    """Where a centre's name goes, clear of its gear's teeth (the ring between the root and
+    the tip circle): below left of the centre inside the root circle when it fits there
+    (with 2 px to spare), else under the gear below its tip circle. At −22, +16 px a small
+    pinion's "O1" sat on its teeth (issue 40)."""
+    inside = QRectF(centre.x() - width - 4.0, centre.y() + 3.0, width, height)
+    corners = (inside.topLeft(), inside.topRight(), inside.bottomLeft(), inside.bottomRight())
+    if max(math.hypot(q.x() - centre.x(), q.y() - centre.y()) for q in corners) <= root_px - 2.0:
+        return inside
+    return QRectF(centre.x() - width / 2.0, centre.y() + tip_px + 2.0, width, height)

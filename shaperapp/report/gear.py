@@ -18,8 +18,8 @@ from core.drawing.cam_sheet import ratio_text
 from core.errors import DesignError
 from core.gear import Check, GearPair, GearPairInputs, design_pair, pair_checks
 from core.gear.involute import least_teeth
-from core.gear.shift import mesh_of_sum
-from core.gear.table import summary_rows
+from core.gear.shift import centre_step, mesh_of_sum
+from core.gear.table import summary_rows, tip_limit_text
 from shaperapp.widgets.gear_messages import check_advice, describe_gear_error
 
 from .blocks import Figure, Heading, KeyValues, Paragraph, Table, join_sentences, typeset
@@ -98,7 +98,7 @@ def _inputs(pair: GearPair) -> list[tuple[str, str]]:
     else:
         given = translate("Report", "neither shifts nor a centre distance (the rule)")
     rows += [(translate("Report", "Given"), given),
-             (translate("Report", "Least tip thickness s_a"), f"{p.tip_limit:g} m"),
+             (translate("Report", "Least tip thickness s_a"), tip_limit_text(p)),
              (translate("Report", "Least contact ratio ε"), f"{p.contact_limit:g}")]
     return rows
 
@@ -130,9 +130,10 @@ def shift_reason(pair: GearPair) -> str:
     else:
         least = mesh_of_sum(p, max(g1.least_shift, 0.0) + max(g2.least_shift, 0.0))[1]
         values["%9"] = f"{least:.4f}"
+        values["%10"] = f"{centre_step(p.module_mm):g}"
         text = translate("Report", "Neither shifts nor a centre distance are given, and z_1 + z_2 = %5 < "
                          "2 z_min = %6, so x_2 = −x_1 would undercut the gear: the least positive pair "
-                         "(x_1min = %3, x_2min = %4) meshes at %9 mm, rounded up to 0.5 mm a′ = %7 mm, "
+                         "(x_1min = %3, x_2min = %4) meshes at %9 mm, rounded up to a multiple of %10 mm (about m/10) a′ = %7 mm, "
                          "which asks x_1 + x_2 = %8, shared out as x_1 = %1, x_2 = %2.")
         text = join_sentences(text, split)
     for key in sorted(values, reverse=True):          # %9 before %1 …
@@ -183,8 +184,8 @@ def _check_texts(check: Check, p: GearPairInputs) -> tuple[str, str]:
     if check.name.startswith("undercut"):
         return sub(translate("Report", "No undercut of gear %1: x_%1 ≥ x_%1min")), ""
     if check.name.startswith("tip"):
-        return (sub(translate("Report", "Tip thickness of gear %1: s_a%1 ≥ %3 m"))
-                .replace("%3", f"{p.tip_limit:g}"), " mm")
+        return (sub(translate("Report", "Tip thickness of gear %1: s_a%1 ≥ %3"))
+                .replace("%3", tip_limit_text(p)), " mm")
     if check.name == "contact":
         return translate("Report", "Contact ratio ε ≥ %1").replace("%1", f"{p.contact_limit:g}"), ""
     return (sub(translate("Report", "No interference at the root of gear %1 (N_%1 to the tip of gear %2)")),

@@ -11,6 +11,8 @@ from PySide6.QtCore import QCoreApplication
 
 from core.errors import DesignError
 from core.gear import Check
+from core.gear.advice import Move
+from core.gear.shift import bound_text
 from shaperapp.widgets.messages import allowed_text, field_name
 
 translate = QCoreApplication.translate
@@ -34,6 +36,8 @@ def field_names() -> dict[str, str]:
 # (pattern on core.gear's English text, template with %1, %2 …)
 _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"must be a whole number of teeth$", "must be a whole number of teeth"),
+    (r"must be ≤ (\S+) at α = (\S+)° and h\*a = (\S+): the rack's tip rounding would not fit its tooth$",
+     "must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding would not fit its tooth"),
     (r"must be ≥ (\S+) and ≤ (\S+) teeth$", "must be at least %1 and at most %2 teeth"),
     (r"x1 \+ x2 is too negative: the gears would not mesh \(α′ ≤ 0\); raise the shifts$",
      "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts"),
@@ -57,6 +61,9 @@ def _templates() -> dict[str, str]:
     # Listed literally so pyside6-lupdate finds every template.
     return {
         "must be a whole number of teeth": translate("GearMessages", "must be a whole number of teeth"),
+        "must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding would not fit its tooth":
+            translate("GearMessages", "must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding "
+                      "would not fit its tooth"),
         "must be at least %1 and at most %2 teeth":
             translate("GearMessages", "must be at least %1 and at most %2 teeth"),
         "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts":
@@ -99,30 +106,51 @@ def check_name(check: Check) -> str:
         return translate("GearMessages", "Gear %1 not undercut: x%1 ≥ x%1min").replace("%1", k)
     if check.name.startswith("tip"):
         return translate("GearMessages", "Gear %1 tip thick enough: sa%1 ≥ %2 mm").replace(
-            "%1", k).replace("%2", f"{check.limit:.4f}")
+            "%1", k).replace("%2", bound_text(check.limit, True))
     if check.name == "contact":
         return translate("GearMessages", "Contact ratio: ε ≥ %1").replace("%1", f"{check.limit:g}")
     return translate("GearMessages", "No interference at the root of gear %1").replace("%1", k)
 
 
+def move_words(move: Move) -> str:
+    """One change of ``core.gear.advice`` (``advice.move_text``) in the UI's language."""
+    if move.name in ("x1", "x2"):
+        text = (translate("GearMessages", "raise %1") if move.sign > 0
+                else translate("GearMessages", "lower %1"))
+        return text.replace("%1", move.name)
+    if move.name == "centre":
+        return (translate("GearMessages", "a larger a′") if move.sign > 0
+                else translate("GearMessages", "a smaller a′"))
+    return (translate("GearMessages", "x1 + δ and x2 − δ at the same a′") if move.sign > 0
+            else translate("GearMessages", "x1 − δ and x2 + δ at the same a′"))
+
+
 def check_advice(check: Check) -> str:
     """What to change when ``check`` fails ('' when it passes): core's advice, the same
-    words in English (``Check.advice``), in the UI's language."""
+    words in English (``Check.advice``), rebuilt from the changes it names (``check.moves``)
+    in the UI's language."""
     if check.ok:
         return ""
     k = check.name[-1]
     other = "2" if k == "1" else "1"
     if check.name.startswith("undercut"):
         return translate("GearMessages", "raise x%1 to ≥ %2 (or give gear %1 more teeth)").replace(
-            "%1", k).replace("%2", f"{check.limit:.4f}")
+            "%1", k).replace("%2", bound_text(check.limit, True))
     if check.name.startswith("tip"):
-        return translate("GearMessages", "the tip of gear %1 is too thin: lower x%1 (or the centre "
-                         "distance)").replace("%1", k)
-    if check.name == "contact":
-        return translate("GearMessages", "ε is too small: give more teeth, less shift or a smaller "
-                         "centre distance")
-    return translate("GearMessages", "the tip of gear %2 digs into the root of gear %1: raise x%1, "
-                     "lower x%2 or shorten the addendum").replace("%1", k).replace("%2", other)
+        problem = translate("GearMessages", "the tip of gear %1 is too thin").replace("%1", k)
+    elif check.name == "contact":
+        problem = translate("GearMessages", "ε is too small")
+    else:
+        problem = translate("GearMessages", "the tip of gear %2 digs into the root of gear %1").replace(
+            "%1", k).replace("%2", other)
+    if check.moves:
+        changes = move_words(check.moves[0])
+        for move in check.moves[1:]:
+            changes = translate("GearMessages", "%1 or %2").replace("%1", changes).replace(
+                "%2", move_words(move))
+    else:
+        changes = translate("GearMessages", "no small change of the shifts or of a′ helps: try other teeth")
+    return translate("messages", "%1: %2").replace("%1", problem).replace("%2", changes)
 
 
 def mode_text(mode: str) -> str:
@@ -133,4 +161,4 @@ def mode_text(mode: str) -> str:
             "balanced": translate("GearMessages", "rule: z1 + z2 ≥ 2 zmin, the pinion's least uncut "
                                   "shift and x2 = −x1"),
             "positive": translate("GearMessages", "rule: z1 + z2 < 2 zmin, the least positive pair at "
-                                  "a′ rounded up to 0.5 mm")}[mode]
+                                  "a′ rounded up to a step of about m/10")}[mode]

@@ -132,3 +132,24 @@ def test_dxf_model_coordinates_and_involute_flanks(name, tmp_path):
     texts = [t.dxf.text for t in msp.query("TEXT")]
     assert ENGLISH["title"] in texts and "4/4" in texts
     assert {t.dxf.layer for t in msp.query("TEXT")} <= {"TEXT", "TITLE"}
+
+
+@pytest.mark.parametrize("name", sorted(PAIRS))
+@pytest.mark.parametrize("size", ["A1", "A3"])
+def test_the_strip_names_both_limit_points(name, size):
+    """Issue 42: the strip was scaled to B2B1 alone and N2 fell off its end. Now N1, B2, P,
+    B1, N2 are all named, N1 left of P and N2 right of it (names close together are moved
+    apart by the label search, so only the far ones' order is fixed)."""
+    pair = design_pair(GearPairInputs(**PAIRS[name]))
+    drawn = gear_sheet(pair, paper(size))
+    names = {t.text: t.position[0] for t in drawn.areas["line"][1] if hasattr(t, "text")}
+    along = {"N1": 0.0, "B2": pair.n1b2, "P": pair.n1p, "B1": pair.n1b1, "N2": pair.n1n2}
+    assert set(along) <= set(names)
+    assert names["N1"] < names["P"] < names["N2"]
+
+
+def test_the_least_tip_thickness_reads_as_a_multiple_of_the_module():
+    """Issue 40: "Tip s_a ≥ 0.25 m" read as metres; now 0.25·m (= 1.5 mm) at m = 6."""
+    drawn = gear_sheet(design_pair(GearPairInputs(**PAIRS["shaper"])), paper("A2"))
+    texts = " ".join(t.text for t in drawn.sheet.items if hasattr(t, "text"))
+    assert "0.25·m (= 1.5 mm)" in texts and "0.25 m" not in texts

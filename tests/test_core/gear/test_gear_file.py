@@ -15,7 +15,7 @@ from core.spec import Spec
 
 
 def test_round_trip():
-    inputs = GearPairInputs(z1=13, z2=40, module_mm=6.0, centre_mm=160.0, clearance=0.3)
+    inputs = GearPairInputs(z1=13, z2=40, module_mm=6.0, centre_mm=160.0, clearance=0.28)
     assert gear_from_dict(json.loads(json.dumps(gear_to_dict(inputs)))) == inputs
 
 

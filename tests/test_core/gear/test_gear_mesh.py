@@ -21,7 +21,7 @@ from core.gear.profile import flank
 PAIRS = [GearPairInputs(13, 40, 6.0, centre_mm=162.0), GearPairInputs(13, 40, 6.0),
          GearPairInputs(10, 36, 5.0, x1=0.45, x2=0.2), GearPairInputs(20, 20, 2.0),
          GearPairInputs(17, 51, 4.0, x1=0.0, x2=0.0), GearPairInputs(8, 60, 3.0),
-         GearPairInputs(12, 25, 10.0, pressure_angle_deg=25.0, addendum=0.8, clearance=0.3)]
+         GearPairInputs(12, 25, 10.0, pressure_angle_deg=25.0, addendum=0.8, clearance=0.25)]
 
 
 def depth_into(pair: GearPair, k: int, axis: float, points: np.ndarray) -> float:

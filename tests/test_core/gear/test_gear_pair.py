@@ -145,8 +145,8 @@ def test_rule_without_shifts(z1, z2, mode):
         _close(pair.gear1.shift, max(x_min1, 0.0))
         assert pair.gear2.shift == -pair.gear1.shift
         _close(pair.centre_mm, 2.0 * (z1 + z2))
-    else:                 # the least positive pair's a′, rounded up to 0.5 mm
-        assert pair.centre_mm % 0.5 == 0 and pair.centre_mm > 2.0 * (z1 + z2)
+    else:                 # the least positive pair's a′, rounded up to m/10 = 0.2 mm
+        assert round(pair.centre_mm / 0.2, 9) % 1 == 0 and pair.centre_mm > 2.0 * (z1 + z2)
         assert pair.gear1.shift >= 0 and pair.gear2.shift >= 0
     _identities(pair)
 

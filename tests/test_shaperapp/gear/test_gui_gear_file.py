@@ -83,3 +83,19 @@ def test_a_bad_gear_object_is_refused_and_nothing_changes(gear_doc, tmp_path, ge
     assert len(failures) == 1 and "d.json" in failures[0]
     assert gear_model.pair is before and gear_model.pair.gear1.teeth == 17
     assert model.spec.time_ratio == 1.6 and model.dirty      # the typed design as it was, not the file's
+
+
+def test_an_opened_pair_shows_its_own_shifts_in_the_greyed_fields(window, tmp_path):
+    """Issue 40: the greyed fields follow the pair the tables show after Open too. A file
+    with a′ = 165 for z 10/40 opened over the tab built on another pair: x1, x2 are that
+    file's pair's, to the 7 digits they show."""
+    window.gear_model.set_fields(z1=10.0, centre=165.0)
+    path = tmp_path / "d.json"
+    assert window.document.save_to(str(path))
+    window.model.load_state(window.model.valid_spec, window.model.rpms, window.model.step_deg)   # New
+    form = window.gear.form
+    assert window.document.open_path(str(path))
+    want = design_pair(GearPairInputs(10, 40, 6.0, centre_mm=165.0))
+    for name, value in (("x1", want.gear1.shift), ("x2", want.gear2.shift)):
+        assert not form.fields[name].isEnabled()
+        assert float(form.fields[name].edit.text()) == pytest.approx(value, rel=1e-6)

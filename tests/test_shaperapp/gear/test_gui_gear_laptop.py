@@ -43,3 +43,26 @@ def test_every_shown_cell_of_the_gear_tables_is_whole(qtbot, window, lang):
                          port.mapTo(window, QPoint(left + table.columnWidth(col) - 1, 0)))
             assert shown.left() <= cell.left() and cell.right() <= shown.right(), (table, col, cell, shown)
             assert left + table.columnWidth(col) <= port.width(), (col, "cut by the table's own edge")
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+def test_both_gears_columns_are_in_view_and_the_shift_fields_readable(qtbot, window, lang):
+    """Issue 40: at 1280 × 720 in English "Gear 2" sat behind the table's own scroll bar,
+    below the fold (only "Pinion 1" in view), and x1 = 0.2396444401… was cut in its field.
+    Now the form leaves both columns room, and the fields show 7 significant digits."""
+    qtbot.waitExposed(window)
+    window.set_language(lang)
+    window.tabs.setCurrentWidget(window._pages["gear"])
+    tab = window._pages["gear"].view()
+    qtbot.waitUntil(lambda: tab.isVisible())
+    tab.gear_model.set_fields(z1=10.0)                  # x1, x2 of a′ = 162: long numbers
+    qtbot.wait(50)
+    table = tab.results.gears
+    for col in range(table.columnCount()):
+        left = table.columnViewportPosition(col)
+        assert 0 <= left and left + table.columnWidth(col) <= table.viewport().width(), (col, left)
+    assert table.horizontalScrollBar().maximum() == 0
+    for name in ("x1", "x2", "centre"):
+        edit = tab.form.fields[name].edit
+        assert edit.fontMetrics().horizontalAdvance(edit.text()) <= edit.contentsRect().width() - 4, \
+            (name, edit.text())

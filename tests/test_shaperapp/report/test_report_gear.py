@@ -115,7 +115,7 @@ def test_the_shift_rule_is_named_with_its_reason(printed):
     flat = re.sub(r"\s+", " ", section)
     z_min2 = 2 * 2.0 / math.sin(math.radians(20.0)) ** 2          # 2 zmin = 4 h*a / sin² α
     assert f"= 24 < 2" in flat and f"{z_min2:.4f}" in flat
-    assert ("rounded up to 0.5 mm" if language == "en" else "向上圆整") in flat
+    assert ("rounded up to a multiple of 0.5 mm" if language == "en" else "按 0.5 mm") in flat
     assert "63.0000" in flat                                         # a′ = 62.6… rounded up
 
 
@@ -124,7 +124,8 @@ def test_each_failing_check_says_what_to_change(printed):
     failing = [c.name for c in pair_checks(design_pair(RULE)) if not c.ok]
     assert failing == ["contact"]
     flat = re.sub(r"\s+", " ", section)
-    words = {"en": ("fails", "ε is too small: give more teeth"), "zh_CN": ("不合格", "ε 过小：请增加齿数")}
+    # the advice names what helps in the rule's mode (core.gear.advice): a smaller a′ first
+    words = {"en": ("fails", "ε is too small: a smaller a′"), "zh_CN": ("不合格", "ε 过小：减小 a′")}
     assert flat.count(words[language][0]) == 1 and words[language][1] in flat
 
 
