@@ -18,6 +18,9 @@ def test_cad_font_without_a_dxf_is_one_line_naming_it(tmp_path):
         done = shaper(*args)
         assert done.returncode == 2
         assert done.stderr.strip().splitlines() == ["shaper: error: --cad-font: only when a .dxf is written"]
+    done = shaper("drawing", "--crank", "100", "--K", "1.4", "--stroke", "300", "--content", "scheme",
+                  "--cad-font", "outline", "-o", str(tmp_path / "s.dxf"))
+    assert done.returncode == 2 and done.stderr.startswith("shaper: error: --cad-font: only with a sheet")
     assert not list(tmp_path.iterdir())
 
 
