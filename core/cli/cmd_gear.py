@@ -8,7 +8,8 @@ from ..gear import GearPair, GearPairInputs, design_pair
 from ..gear.file import gear_from_dict, gear_to_dict
 from ..gear.table import gear_summary, summary_csv, summary_rows
 from .common import UsageError, design_error_text, design_file, number
-from .output import OutputError, check_target, print_json, print_table, write_output
+from .output import (OutputError, add_cad_font_option, cad_font_from_args, check_target, print_json,
+                     print_table, write_output)
 
 HELP = "the gear pair: shifts, centre distance, diameters, contact ratio, checks"
 DESCRIPTION = ("The external involute spur pair that drives the crank (pinion z1 on the motor "
@@ -47,6 +48,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
                      "in mm (O1 at the origin, O2 on +x), the sheet scaled round it")
     out.add_argument("--sheet", metavar="SIZE", help="paper of the --dxf sheet: A0, A1, A2, A3 "
                      "(default A2)")
+    add_cad_font_option(out)
     out.add_argument("--lang", choices=("en", "zh", "zh_CN"), help="language of the --dxf sheet's "
                      "texts: en, or zh (= zh_CN) for Chinese (default en)")
 
@@ -132,6 +134,7 @@ def run(args: argparse.Namespace) -> int:
     for option, value in (("--sheet", args.sheet), ("--lang", args.lang)):
         if value is not None and args.dxf is None:
             raise UsageError(f"{option}: only with --dxf")
+    cad_font = cad_font_from_args(args, args.dxf is not None)
     pair = pair_from_args(args)
     if args.dxf is not None:
         _paper(args)
@@ -140,7 +143,7 @@ def run(args: argparse.Namespace) -> int:
     if args.csv is not None:
         write_output("--csv", args.csv, summary_csv(summary))
     if args.dxf is not None:
-        _write_dxf(pair, args, labels)
+        _write_dxf(pair, args, labels, cad_font)
     if args.json:
         print_json(summary)
     elif args.csv != "-":
@@ -175,7 +178,8 @@ def sheet_labels(lang: str) -> dict[str, str] | None:
     return module.gear_labels_in(lang)
 
 
-def _write_dxf(pair: GearPair, args: argparse.Namespace, labels: dict[str, str] | None) -> None:
+def _write_dxf(pair: GearPair, args: argparse.Namespace, labels: dict[str, str] | None,
+               cad_font: str) -> None:
     """The meshing sheet in ``labels``' language (English without), as ``shaper drawing
     --content gear`` draws it."""
     from ..drawing.gear_sheet import ENGLISH, gear_sheet   # ezdxf: only when a drawing is asked for
@@ -184,6 +188,6 @@ def _write_dxf(pair: GearPair, args: argparse.Namespace, labels: dict[str, str] 
     block = TitleBlock("", f"z {pair.inputs.z1}/{pair.inputs.z2}, m {pair.inputs.module_mm:g}", "", "4/4")
     drawn = gear_sheet(pair, _paper(args), labels=labels or ENGLISH, block=block)
     try:
-        save_sheet_dxf(drawn.sheet, args.dxf)
+        save_sheet_dxf(drawn.sheet, args.dxf, cad_font)
     except OSError as exc:          # a WriteError: names the user's path and a plain reason
         raise OutputError(f"--dxf: {exc}") from None

@@ -11,8 +11,10 @@ import sys
 from pathlib import Path
 from typing import Any, Iterable
 
+from ..drawing import CAD_FONTS
 from ..errors import WriteError, os_reason
 from ..io import atomic_write
+from .common import UsageError
 
 
 class OutputError(Exception):
@@ -121,3 +123,28 @@ class GuardedStdout:
         except (OSError, ValueError) as exc:
             reason = os_reason(exc) if isinstance(exc, OSError) else "it is closed"
             raise StdoutError(f"cannot write to standard output: {reason}") from None
+
+
+def add_cad_font_option(parser) -> None:
+    """``--cad-font``, one option for every command that writes a drawing sheet as DXF."""
+    parser.add_argument("--cad-font", choices=CAD_FONTS,
+                        help="how the DXF writes its texts: gb (default), as text in the GB style "
+                             "(gbenor.shx, gbcbig.shx) for AutoCAD and ZWCAD; outline, as the "
+                             "glyphs' filled outlines (Noto Sans CJK), which LibreCAD draws too, "
+                             "not editable as text")
+
+
+def cad_font_from_args(args, writes_dxf: bool) -> str:
+    """``--cad-font`` checked before any work: UsageError when it is given and no DXF is
+    written, or when "outline" finds no font with Chinese glyphs; "gb" when not given."""
+    if args.cad_font is None:
+        return "gb"
+    if not writes_dxf:
+        raise UsageError("--cad-font: only when a .dxf is written")
+    if args.cad_font == "outline":
+        from ..drawing.outline_text import OutlineFontMissing, outline_font
+        try:
+            outline_font()
+        except OutlineFontMissing as exc:
+            raise UsageError(f"--cad-font: {exc}") from None
+    return args.cad_font

@@ -14,6 +14,7 @@ from ezdxf.enums import TextEntityAlignment
 
 from . import dimensions as dims
 from .dxf import literal_text, new_document, save_dxf, text_attribs
+from .outline_text import add_outline_text
 from .sheet import Circle, Polyline, Sheet, Text
 
 ALIGNMENTS = {
@@ -33,11 +34,13 @@ def _model(sheet: Sheet):
     return (lambda x, y: (float(ax + (x - ox) * k), float(ay + (y - oy) * k))), float(k)
 
 
-def sheet_document(sheet: Sheet) -> Drawing:
+def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
     """The sheet in model space (paper mm, origin at the trimmed edge's lower left; or, for
     a sheet with a model, in the model's mm); each of its dimensions a DIMENSION entity in
     place of its picture (only sheets without a model have dimensions: they are written in
-    paper mm)."""
+    paper mm). ``cad_font`` (``dxf.CAD_FONTS``): "gb" writes each text as TEXT in the GB
+    style, "outline" as its glyphs' filled outlines, a dimension's text included (the
+    DIMENSION keeps its lines and its measurement, its own text blank)."""
     doc = new_document()
     msp = doc.modelspace()
     to, k = _model(sheet)
@@ -49,8 +52,11 @@ def sheet_document(sheet: Sheet) -> Drawing:
         # the sheet prints at 1:1, each one's DIMLFAC scales it; the header's DIMTXT is the
         # sheet's dimension text (LibreCAD draws every one at it)
         dims.add_dimstyle(doc, 1.0, max(dim.height for dim in sheet.dimensions))
+    outline = cad_font == "outline"
     for dim in sheet.dimensions:
-        _dimension(msp, dim)
+        _dimension(msp, dim, blank=outline)
+        if outline:
+            add_outline_text(msp, dim.text, to, k)
     for item in sheet.items:
         if id(item) in pictures:
             continue
@@ -63,6 +69,8 @@ def sheet_document(sheet: Sheet) -> Drawing:
                 hatch.paths.add_polyline_path(points, is_closed=True)
         elif isinstance(item, Circle):
             msp.add_circle(to(*item.center), item.radius * k, dxfattribs=attribs)
+        elif isinstance(item, Text) and outline:
+            add_outline_text(msp, item, to, k)
         elif isinstance(item, Text):
             for run in item.runs():        # a subscript is a smaller text of its own
                 text = msp.add_text(literal_text(run.text), height=run.height * k,
@@ -72,12 +80,15 @@ def sheet_document(sheet: Sheet) -> Drawing:
     return doc
 
 
-def _dimension(msp, dim) -> None:
+def _dimension(msp, dim, blank: bool = False) -> None:
     """A sheet's dimension as a DIMENSION entity, its text where the sheet has it. The text is
     the sheet's, the true value, not CAD's "<>": LibreCAD ignores DIMLFAC (in the style and in
     an override) and would show the length on the paper; the definition points and DIMLFAC
-    still make CAD's own measurement the true length where CAD honours it."""
-    where = {"override": dim.override, "location": dim.text.position, "text": dim.text.text}
+    still make CAD's own measurement the true length where CAD honours it. ``blank``: the
+    text is " ", which DXF reads as no text (the outline of the sheet's text is drawn
+    in its place)."""
+    where = {"override": dim.override, "location": dim.text.position,
+             "text": " " if blank else dim.text.text}
     if dim.kind == "aligned":
         dims.aligned(msp, dim.points[0], dim.points[1], dim.offset, dim.name, **where)
     elif dim.kind == "linear":
@@ -86,6 +97,7 @@ def _dimension(msp, dim) -> None:
         dims.angular(msp, dim.center, dim.points[0], dim.points[1], dim.base, dim.name, **where)
 
 
-def save_sheet_dxf(sheet: Sheet, path: str | os.PathLike) -> None:
-    """Write the sheet as DXF atomically (``dxf.save_dxf``: audited first)."""
-    save_dxf(sheet_document(sheet), path)
+def save_sheet_dxf(sheet: Sheet, path: str | os.PathLike, cad_font: str = "gb") -> None:
+    """Write the sheet as DXF atomically (``dxf.save_dxf``: audited first), its texts in
+    ``cad_font`` (``dxf.CAD_FONTS``)."""
+    save_dxf(sheet_document(sheet, cad_font), path)

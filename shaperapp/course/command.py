@@ -11,7 +11,7 @@ import argparse
 import time
 
 from core.cli.common import UsageError
-from core.cli.output import OutputError
+from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
 from core.course import PARTS, CourseError, file_names, plan_course, read_document
 from core.drawing.sheet import PAPERS
 
@@ -44,6 +44,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--sheet", default="A1", metavar="SIZE",
                         help=f"paper of the drawing sheets, landscape: {', '.join(PAPERS)} (default A1)")
     parser.add_argument("--dxf", action="store_true", help="write each sheet as DXF too, beside its PDF")
+    add_cad_font_option(parser)
     block = parser.add_argument_group("cover and title blocks (blank when not given, to fill in by hand)")
     block.add_argument("--title", metavar="TEXT", help="design name (default: the design file's name)")
     add_cover_options(block, "the date (default: today, YYYY-MM-DD)")
@@ -55,7 +56,7 @@ def run(args: argparse.Namespace) -> int:
     if paper not in PAPERS:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
     cover, date = cover_from_args(args)
-    covering = Covering(paper, design_name(args), date, cover)
+    covering = Covering(paper, design_name(args), date, cover, cad_font_from_args(args, args.dxf))
     doc, keys = read_document(args.design)          # FileFormatError: "--design: …"
     try:
         course = plan_course(doc, keys, args.design, args.output, dxf=args.dxf)

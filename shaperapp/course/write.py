@@ -31,6 +31,7 @@ class Covering:
     title: str = ""
     date: str = ""
     cover: dict[str, str] = field(default_factory=dict)
+    cad_font: str = "gb"              # how the DXFs write their texts (core.drawing.CAD_FONTS)
 
 
 def write_course(course: Course, language: str, covering: Covering) -> Iterator[CourseFile]:
@@ -46,7 +47,7 @@ def write_course(course: Course, language: str, covering: Covering) -> Iterator[
         else:
             if part.stem not in sheets:
                 sheets[part.stem] = _sheet(course, part, covering)
-            write_sheet(sheets[part.stem], file.path, language, covering.title)
+            write_sheet(sheets[part.stem], file.path, language, covering.title, covering.cad_font)
         yield file
 
 

@@ -14,7 +14,7 @@ from core.cli.cmd_cam import (OPTIONAL, SHEET, add_cam_options, add_phase_option
                               cam_inputs_from_args)
 from core.cli.cmd_gear import OPTIONS as GEAR_OPTIONS, add_gear_options, pair_from_args
 from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
-from core.cli.output import OutputError
+from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
 from core.drawing.motion import MAX_POSITIONS
 from core.drawing.sheet import PAPERS
 from core.dynamics import MassProperties
@@ -70,6 +70,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
                              "(required unless --design has a gear)")
     parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
                         help="language of the sheet's texts: en, or zh (= zh_CN) (default en)")
+    add_cad_font_option(parser)
     parser.add_argument("--positions", metavar="N", default=str(DEFAULT_COUNT),
                         help="number of equally spaced crank positions drawn, 1 to 72 (default 12)")
     parser.add_argument("--diagrams", metavar="A,B",
@@ -120,6 +121,8 @@ def run(args: argparse.Namespace) -> int:
     else:
         spec, rpms, masses = inputs_from_args(args)
     if args.content == SCHEME:
+        if args.cad_font is not None:
+            raise UsageError("--cad-font: only with a sheet (the scheme's texts are CAD's own)")
         return write_scheme_file(spec.design(), args)
     choice = choice_from_args(args)
     stray = [option for option, dest in CAM_WORDS if getattr(args, dest) is not None]
@@ -137,12 +140,13 @@ def run(args: argparse.Namespace) -> int:
     suffix = sheet_suffix(args.output)
     target = Path(args.output)
     check_output_folder(args.output)
+    cad_font = cad_font_from_args(args, suffix == ".dxf")
     language = start_qt(args.lang, needs_font=suffix != ".dxf")
     from .content import build_sheet
     from .render import write_sheet
     sheet = build_sheet(spec, rpms, masses, choice)
     try:
-        write_sheet(sheet, str(target), language, choice.design_name)
+        write_sheet(sheet, str(target), language, choice.design_name, cad_font)
     except OSError as exc:      # a WriteError: names the path and a plain reason
         raise OutputError(f"--output: {exc}") from None
     print(f"wrote {target} ({choice.paper}, {choice.content}, {suffix[1:].upper()})")

@@ -62,12 +62,14 @@ def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     return bytes(data.data())
 
 
-def write_sheet(sheet: Sheet, path: str, language: str = "en", title: str = "") -> None:
-    """PDF, SVG or DXF by the name's suffix, atomically; OSError (a WriteError) names the path."""
+def write_sheet(sheet: Sheet, path: str, language: str = "en", title: str = "",
+                cad_font: str = "gb") -> None:
+    """PDF, SVG or DXF by the name's suffix, atomically, a DXF's texts in ``cad_font``
+    (``core.drawing.CAD_FONTS``); OSError (a WriteError) names the path."""
     from core.drawing.sheet_dxf import save_sheet_dxf
     suffix = path.lower().rsplit(".", 1)[-1]
     if suffix == "dxf":
-        save_sheet_dxf(sheet, path)
+        save_sheet_dxf(sheet, path, cad_font)
         return
     data = pdf_bytes(sheet, language, title) if suffix == "pdf" else svg_bytes(sheet, language, title)
     if not data:

@@ -98,14 +98,15 @@ def shown_groups(series: Sequence[Series], shown: Mapping[str, bool],
 def legends_beside(layout: pg.GraphicsLayout, groups: Mapping[str, Sequence[PlotSlots]],
                    legends: Mapping[str, GroupLegend], width: float, port: float) -> bool:
     """Whether the legends go beside their plots: above them the stack would be taller
-    than the pane (``port`` px), beside them it is not. Where even the plots alone are
-    taller, the legends stay above (the stack scrolls, and the plots keep their width).
-    Decided from sizes that do not depend on where the legends are, so it never flips
-    back and forth."""
+    than the pane (``port`` px). Also where even the plots alone are taller (the Forces
+    tab's four plots in Chinese at 1366 × 768, 16 speeds): beside, the stack scrolls the
+    least, and the lowest plot is the nearest to the pane (issue 40 chose that over the
+    plots' full width). Decided from sizes that do not depend on where the legends are,
+    so it never flips back and forth."""
     need = plots_height(layout, [p for plots in groups.values() for p in plots])
     spacing = layout.layout.verticalSpacing()
     above = need + sum(legends[g].top_height(width) + spacing for g in groups)
-    return above > port and need <= port
+    return above > port
 
 
 def show_x_values(plots: Mapping[str, PlotSlots], lowest: str | None) -> None:

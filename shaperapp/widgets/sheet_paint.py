@@ -11,15 +11,12 @@ estimate of it: the layout's no-overlap guarantee holds on paper too.
 """
 from __future__ import annotations
 
-import math
-from dataclasses import replace
-
-import numpy as np
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QFontMetricsF, QPainter, QPainterPath, QPen, QPolygonF
 
 from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
 from core.drawing.sheet import Circle, Polyline, Sheet, Text
+from core.drawing.text_runs import closed_up
 
 from .fonts import report_font
 
@@ -61,7 +58,7 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en", svg: bool
     painter.fillRect(QRectF(0, 0, sheet.paper.width, height), QColor(255, 255, 255))
     for item in sheet.items:
         if isinstance(item, Text):
-            for run in _closed_up(item, metrics, cap):    # a subscript is a smaller text of its own
+            for run in closed_up(item, lambda run: _drawn_width(run, metrics, cap)[0]):    # a subscript is a smaller text of its own
                 _text(painter, run, height, font, metrics, cap)
             continue
         painter.setPen(_pen(item.layer, svg))
@@ -89,27 +86,6 @@ def _drawn_width(item: Text, metrics: QFontMetricsF, cap: float) -> tuple[float,
     advance = metrics.horizontalAdvance(item.text)
     squeeze = min(1.0, item.width / k / advance) if advance > 0 else 1.0
     return advance * squeeze * k, squeeze
-
-
-def _closed_up(item: Text, metrics: QFontMetricsF, cap: float) -> list[Text]:
-    """The runs of ``item``, each one after the previous run's drawn width instead of its
-    estimated width, and the whole aligned by its drawn width. Why: the font is narrower
-    than the estimate, so a subscript after a long run ("Flywheel to add J_F − J_e") stood
-    apart from its letter."""
-    runs = item.runs()
-    if len(runs) < 2:
-        return runs
-    drawn = [_drawn_width(run, metrics, cap)[0] for run in runs]
-    spare = item.width - sum(drawn)
-    at = {"l": 0.0, "c": spare / 2.0, "r": spare}[item.align[0]]
-    u = np.array([math.cos(math.radians(item.rotation)), math.sin(math.radians(item.rotation))])
-    closed, estimated = [], 0.0
-    for run, width in zip(runs, drawn):
-        x, y = np.asarray(run.position) + u * (at - estimated)
-        closed.append(replace(run, position=(float(x), float(y))))
-        estimated += run.width
-        at += width
-    return closed
 
 
 def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QFontMetricsF,

@@ -7,12 +7,17 @@ from __future__ import annotations
 
 from PySide6.QtGui import QColor
 
-# Sixteen colours, one per allowed crank speed: matplotlib's tab10 followed by six darker
-# hues picked so that every pair differs by ΔE(CIELAB) > 26 and none is close to the grey
-# of shared curves, the cursor or the magenta force arrows (checked in test_gui_plot_stack).
-SPEED_COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf",
-                 "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#aa00ff", "#311b92",
-                 "#637939", "#393b79", "#000000", "#00897b")
+# Sixteen colours, one per allowed crank speed, that a reader tells apart as thin lines on
+# white: every pair differs by CIEDE2000 ΔE00 > 20 (tab10 with six darker hues had pairs at
+# 10.6, 85/95 r/min of 30…105, which readers confused), each has L* 30…72 and ΔE00 ≥ 30 from
+# the white page, and ΔE00 ≥ 12 from the grey of shared curves, the cursor and the magenta
+# force arrows. Chosen by farthest-point selection over the sRGB grid of step 34 with those
+# bounds, then one swap pass (min ΔE00 21.0; checked in test_gui_plot_stack). The first
+# speeds, the most used, get the colours farthest apart. The plots, the animation bar and
+# the report's figures (drawn from the plots) all take them from here.
+SPEED_COLOURS = ("#2266aa", "#aaaa00", "#ff2200", "#ff66ff", "#226644", "#882266",
+                 "#884400", "#44aaaa", "#aa8888", "#88aaff", "#6600ff", "#ee8800",
+                 "#00aa44", "#aa0022", "#ff0066", "#666600")
 WORK_FILL = QColor(46, 125, 50, 28)      # light green band behind the working stroke
 RETURN_FILL = QColor(198, 40, 40, 22)    # light red band behind the return stroke
 CURSOR = QColor("#444444")

@@ -71,3 +71,35 @@ def test_every_plot_and_the_x_ticks_on_screen(qtbot, window, lang, speeds):
         head = legend.head.sceneBoundingRect()
         assert on_screen(stack, window, head), (mode, head)
         assert not [item for item in plots if item.sceneBoundingRect().intersects(head)], mode
+
+
+@pytest.mark.parametrize("lang", ["en", "zh_CN"])
+def test_forces_legends_beside_with_sixteen_speeds(qtbot, window, lang):
+    """Issue 40: the Forces tab's four plots with 16 speeds. In Chinese their longer y titles
+    make them taller than the pane with the legends above (they stayed above, and the
+    joint-force plot scrolled off at 1366 × 768). The legends now go beside the plots
+    whenever above they would push a plot out: at 1366 × 768 every plot is on screen; at
+    1280 × 720, where the plots alone are taller than the pane, the stack is the plots
+    alone and the joint-force plot's upper half is on screen without scrolling."""
+    qtbot.waitExposed(window)
+    window.set_language(lang)
+    window.model.set_rpms(SIXTEEN)
+    window.tabs.setCurrentIndex(1)
+    qtbot.wait(50)
+    stack = window.forces.stack()
+    stack.ensure_current()
+    qtbot.wait(20)
+    plots = [stack._plots[s.key].item for s in stack._series if stack.plot_visible(s.key)]
+    assert len(plots) == 4
+    for group in ("speeds", "joints"):
+        head = stack.legend(group).head.sceneBoundingRect()
+        assert not [item for item in plots if item.vb.sceneBoundingRect().intersects(head)], group
+    port = stack._scroll.viewport().height()
+    if window.width() >= WINDOWS["1366x768"][0]:
+        for item in plots:
+            assert on_screen(stack, window, item.vb.sceneBoundingRect()), (lang, item.vb.sceneBoundingRect())
+    else:
+        assert stack._side, lang                    # beside: the stack is the plots alone
+        force = plots[-1].vb.sceneBoundingRect()
+        top = QRectF(force.left(), force.top(), force.width(), force.height() / 2.0)
+        assert on_screen(stack, window, top), (lang, force)    # its upper half unscrolled

@@ -1,0 +1,54 @@
+"""``--cad-font gb|outline`` (issue 40, item 7): the words checked before any work, and what
+each writes. LibreCAD's print of both is tested in test_cad_font_in_librecad."""
+from __future__ import annotations
+
+import ezdxf
+
+from core.cli.output import UsageError, cad_font_from_args
+from core.drawing import outline_text
+
+from tests.cli_runner import shaper
+
+GEAR = ("gear", "--z1", "13", "--z2", "40", "--module", "6")
+
+
+def test_cad_font_without_a_dxf_is_one_line_naming_it(tmp_path):
+    for args in (("drawing", "--crank", "100", "--K", "1.4", "--stroke", "300", "--cad-font", "outline",
+                  "-o", str(tmp_path / "s.pdf")), (*GEAR, "--cad-font", "outline")):
+        done = shaper(*args)
+        assert done.returncode == 2
+        assert done.stderr.strip().splitlines() == ["shaper: error: --cad-font: only when a .dxf is written"]
+    done = shaper("drawing", "--crank", "100", "--K", "1.4", "--stroke", "300", "--content", "scheme",
+                  "--cad-font", "outline", "-o", str(tmp_path / "s.dxf"))
+    assert done.returncode == 2 and done.stderr.startswith("shaper: error: --cad-font: only with a sheet")
+    assert not list(tmp_path.iterdir())
+
+
+def test_outline_writes_no_text_and_gb_writes_gb_text(tmp_path):
+    """The meshing sheet (in the model's mm, scaled round the pair): with outline its texts are
+    HATCH entities on the TEXT layer and no TEXT is left; the default keeps GB-style TEXT."""
+    for font in ("gb", "outline"):
+        done = shaper(*GEAR, "--dxf", str(tmp_path / f"{font}.dxf"), "--cad-font", font)
+        assert done.returncode == 0, done.stderr
+    gb = ezdxf.readfile(tmp_path / "gb.dxf").modelspace()
+    outline = ezdxf.readfile(tmp_path / "outline.dxf").modelspace()
+    assert len(gb.query("TEXT")) > 50 and {t.dxf.style for t in gb.query("TEXT")} == {"GB"}
+    assert len(outline.query("TEXT")) == 0
+    hatches = outline.query("HATCH[layer=='TEXT']")
+    assert len(hatches) > len(gb.query("TEXT")) and all(h.dxf.solid_fill for h in hatches)
+
+
+def test_no_cjk_font_is_one_line_naming_the_option(monkeypatch):
+    """Without a font with Chinese glyphs, --cad-font outline is refused before any work."""
+    monkeypatch.setattr(outline_text, "OUTLINE_FONTS", (("no-such-font.ttf", 0, "None Such"),))
+    outline_text.outline_font.cache_clear()
+    try:
+        args = type("Args", (), {"cad_font": "outline"})()
+        try:
+            cad_font_from_args(args, True)
+        except UsageError as exc:
+            assert str(exc).startswith("--cad-font: the outline font needs a font with Chinese glyphs")
+        else:
+            raise AssertionError("no UsageError")
+    finally:
+        outline_text.outline_font.cache_clear()
