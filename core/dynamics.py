@@ -32,15 +32,14 @@ from .errors import DesignError, require_range
 from .geometry import MAX_LENGTH_MM, Design
 from .guide import end_forces, guide_ends
 from .kinematics import Shape, check_request, check_rpms, rpm_to_omega, shape
+from .rotors import MAX_INERTIA_KG_M2, check_rotors, reduced_inertia
 
 GRAVITY = 9.81               # m/s², acting toward −y
 MM = 1e-3                    # m per mm
 ENERGY_INTERVALS = 3600      # uniform φ intervals per cycle for the energy integral
 MAX_MASS_KG = 1e6
-MAX_INERTIA_KG_M2 = 1e6
+
 MAX_FORCE_N = 1e9
-MAX_ROTORS = 20
-MAX_ROTOR_RATIO = 1e4        # ω_i/ω2: a motor at 1500 r/min over a crank at 0.15 r/min
 WEIGHTS = (("lever_mass_kg", "lever_weight_N"), ("ram_mass_kg", "ram_weight_N"))
 """Each link whose load may be stated as a weight: (mass field, weight field)."""
 MIN_DELTA = 1e-4             # finest speed fluctuation: keeps J_F = ΔW/(ω²·δ) finite at any speed
@@ -117,7 +116,7 @@ class MassProperties:
                                    high_open=True))
         for mass, weight in WEIGHTS:
             put(mass, self._from_weight(mass, weight))
-        put("rotors", _rotors(self.rotors))
+        put("rotors", check_rotors(self.rotors))
         if self.guide_length_mm is not None:
             put("guide_length_mm", require_range("guide_length_mm", self.guide_length_mm, 0.0,
                                                  MAX_LENGTH_MM, "mm"))
@@ -148,7 +147,7 @@ class MassProperties:
     @property
     def rotor_inertia_kg_m2(self) -> float:
         """J_c = Σ J_i·(ω_i/ω2)²: the other rotating parts reduced to the crank, kg·m²."""
-        return float(sum(j * ratio ** 2 for j, ratio in self.rotors))
+        return reduced_inertia(self.rotors)
 
     def guide_length(self, design: Design) -> float:
         """The ram guide's length for ``design``, mm (None = the stroke H)."""
@@ -170,24 +169,6 @@ def masses_for_design(design: Design, masses: MassProperties) -> MassProperties:
     if design.rod is None and masses.rod_mass_kg:
         return replace(masses, rod_mass_kg=0.0)
     return masses
-
-
-def _rotors(value: object) -> tuple[tuple[float, float], ...]:
-    """The rotating parts as a tuple of (J kg·m², ω_i/ω2) pairs of checked floats."""
-    try:
-        pairs = [tuple(p) for p in value]  # type: ignore[union-attr]
-    except TypeError:
-        raise DesignError("rotors", value, "must be a list of (J kg·m², speed ratio) pairs") from None
-    if len(pairs) > MAX_ROTORS:
-        raise DesignError("rotors", len(pairs), f"at most {MAX_ROTORS} rotating parts")
-    out = []
-    for pair in pairs:
-        if len(pair) != 2:
-            raise DesignError("rotors", pair, "each must be a pair (J kg·m², speed ratio)")
-        out.append((require_range("rotor_inertia_kg_m2", pair[0], 0.0, MAX_INERTIA_KG_M2,
-                                  "kg·m²", low_open=False),
-                    require_range("rotor_ratio", pair[1], 0.0, MAX_ROTOR_RATIO)))
-    return tuple(out)
 
 
 def _offset(name: str, value: object) -> tuple[float, float]:

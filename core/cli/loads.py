@@ -87,16 +87,13 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
 def rotor(text: str, doc: dict[str, Any] | None) -> tuple[float, float]:
     """One ``--rotor J:RATIO`` (or ``J:gear``, the pinion shaft of the design file's gear
     pair, z2/z1) as (J kg·m², ω_i/ω2)."""
-    inertia, sep, ratio = text.partition(":")
-    if not sep:
-        raise DesignError("rotors", text, "must be J:RATIO (kg·m² and speed over the crank's) or J:gear")
-    j = number("rotor_inertia_kg_m2", inertia)
-    if ratio.strip().lower() != "gear":
-        return j, number("rotor_ratio", ratio)
+    from ..rotors import rotor_from_text
     gear = doc.get("gear") if doc is not None else None
     if gear is None:
-        raise UsageError(f"--rotor: {text!r} takes the gear pair's ratio, but no --design file "
-                         "with a gear pair was given")
+        if text.partition(":")[2].strip().lower() == "gear":
+            raise UsageError(f"--rotor: {text!r} takes the gear pair's ratio, but no --design file "
+                             "with a gear pair was given")
+        return rotor_from_text(text)
     from ..gear.file import gear_from_dict
     pair = gear_from_dict(gear)
-    return j, pair.z2 / pair.z1
+    return rotor_from_text(text, pair.z2 / pair.z1)
