@@ -4148,6 +4148,22 @@
         <translation>其他转动构件（J，转速）</translation>
     </message>
     <message>
+        <source>parabolic</source>
+        <translation>等加速等减速</translation>
+    </message>
+    <message>
+        <source>cosine</source>
+        <translation>余弦加速度</translation>
+    </message>
+    <message>
+        <source>sine (cycloidal)</source>
+        <translation>正弦加速度（摆线）</translation>
+    </message>
+    <message>
+        <source>3-4-5 polynomial</source>
+        <translation>3-4-5 多项式</translation>
+    </message>
+    <message>
         <source>auto</source>
         <translation>自动</translation>
     </message>

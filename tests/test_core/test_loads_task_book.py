@@ -191,3 +191,21 @@ def test_the_seed_design_tilts_its_ram_while_cutting():
     assert dyn.guide_rear_N[0, 0] + dyn.guide_front_N[0, 0] == pytest.approx(700.0, rel=1e-12)
     with pytest.raises(DesignError):
         task_book(guide_length_mm=0.0)
+
+
+def test_the_kinetostatic_sheet_prints_the_end_forces_and_the_flywheel_needed():
+    from core.drawing.forces import ENGLISH, flywheel_rows, guide_rows
+    design = block_design()
+    m = task_book(rotors=((0.5, 1.0), (0.02, 15.0)))
+    rows = dict(guide_rows(design, 60.0, m, (90.0, 270.0), ENGLISH))
+    d = solve_dynamics(design, np.radians([90.0, 270.0]), [60.0], m)
+    assert rows["Guide ends rear / front, φ = 90°"] == \
+        f"{d.guide_rear_N[0, 0]:.4g} N / {d.guide_front_N[0, 0]:.4g} N"
+    assert rows["Guide reaction N, φ = 270°"] == f"700 N, {d.guide_offset_mm[0, 1]:.4g} mm from C"
+    s = summarize(design, [60.0], m)
+    table = dict(flywheel_rows(s, m, ENGLISH))
+    assert table[ENGLISH["J_c"]] == "5 kg·m²"
+    assert table[ENGLISH["J_needed"]] == f"{s.speeds[0].flywheel_inertia_kg_m2 - 5.0:.4g} kg·m²"
+    none = task_book(rotors=((1e5, 1.0),))
+    assert dict(flywheel_rows(summarize(design, [60.0], none), none, ENGLISH))[ENGLISH["J_needed"]] \
+        == ENGLISH["none_needed"]

@@ -93,3 +93,21 @@ def test_guide_length_is_an_option_and_the_csv_has_the_end_forces():
     assert {"guide_rear_N", "guide_front_N", "guide_tilted"} <= set(header)
     status, out, err = shaper_in_process("dynamics", *SEED, *TASK_BOOK, "--guide-length", "0")
     assert status == 2 and err.startswith("shaper: error: --guide-length:")
+
+
+# ---- issue 40 item 8: what a student got stuck on ----------------------------------------
+
+def test_course_help_names_the_gear_pair_it_requires():
+    status, out, _ = shaper_in_process("course", "--help")
+    assert status == 0
+    text = " ".join(out.split())
+    assert 'the gear pair ("gear"' in text and "cam and gear pair" in text
+
+
+def test_cam_help_says_the_return_allowance_default_and_why():
+    from core.cam import CamInputs
+    status, out, _ = shaper_in_process("cam", "--help")
+    assert status == 0
+    text = " ".join(out.split())
+    default = CamInputs().return_pressure_deg
+    assert f"(default {default:g}: the follower returns unloaded" in text
