@@ -2929,8 +2929,8 @@
         <translation>其他转动构件</translation>
     </message>
     <message>
-        <source>Other rotating parts (crank shaft, gears, motor) for the flywheel, each J:ratio, J in kg·m² and its speed over the crank's, separated by ';' (e.g. 0.5:1; 0.02:15). The flywheel needed is J_F − Σ J·ratio²</source>
-        <translation>飞轮计算中的其他转动构件（曲柄轴、齿轮、电动机），每个写作 J:传动比，J 单位 kg·m²，传动比为其转速与曲柄转速之比，以“;”分隔（如 0.5:1; 0.02:15）。所需飞轮为 J_F − Σ J·传动比²</translation>
+        <source>Other rotating parts (crank shaft, gears, motor) for the flywheel, each J:ratio, J in kg·m² and its speed over the crank's, separated by ';' (e.g. 0.5:1; 0.02:15); J:gear takes z2/z1 of the Gear tab's pair, for the pinion shaft. The flywheel needed is J_F − Σ J·ratio²</source>
+        <translation>飞轮计算中的其他转动构件（曲柄轴、齿轮、电动机），每个写作 J:传动比，J 单位 kg·m²，传动比为其转速与曲柄转速之比，以“;”分隔（如 0.5:1; 0.02:15）；J:gear 取齿轮页齿轮副的 z2/z1，用于小齿轮轴。所需飞轮为 J_F − Σ J·传动比²</translation>
     </message>
     <message>
         <source>Gravity</source>

@@ -208,7 +208,8 @@ class LoadsForm(QWidget):
             "rotors": (self.tr("Rotating parts"),
                        self.tr("Other rotating parts (crank shaft, gears, motor) for the flywheel, "
                                "each J:ratio, J in kg·m² and its speed over the crank's, separated "
-                               "by ';' (e.g. 0.5:1; 0.02:15). The flywheel needed is "
+                               "by ';' (e.g. 0.5:1; 0.02:15); J:gear takes z2/z1 of the Gear tab's "
+                               "pair, for the pinion shaft. The flywheel needed is "
                                "J_F − Σ J·ratio²")),
             "gravity": (self.tr("Gravity"),
                         self.tr("Include the weights of the links (g = 9.81 m/s²)")),
@@ -249,7 +250,7 @@ class LoadsForm(QWidget):
             return None
         if name == "rotors":
             try:
-                return rotors_from_text(text)
+                return rotors_from_text(text, self._gear_ratio())
             except DesignError:
                 return text                     # the model names the part that is wrong
         if name == "delta":
@@ -302,6 +303,16 @@ class LoadsForm(QWidget):
             form = self._forms[link]
             form.setRowVisible(self._fields[mass], not as_weight)
             form.setRowVisible(self._fields[weight], as_weight)
+
+    def _gear_ratio(self) -> float | None:
+        """z2/z1 of the design's gear pair (the Gear tab's, as Save writes it): the speed of
+        the pinion shaft over the crank's, for a rotating part typed as ``J:gear``."""
+        from core.gear.file import gear_from_dict
+        try:
+            pair = gear_from_dict(self._model.saved_parts().get("gear"))
+        except DesignError:
+            return None
+        return pair.z2 / pair.z1
 
     def _on_given(self, link: str) -> None:
         """Switch a link between mass and weight, carrying the value over (m·g or G/g)."""

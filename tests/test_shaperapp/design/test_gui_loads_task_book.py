@@ -79,3 +79,10 @@ def test_guide_length_empty_is_the_stroke(form, model, qtbot):
     assert model.masses.guide_length_mm == 450.0
     assert model.dynamics.guide_front_mm - model.dynamics.guide_rear_mm == pytest.approx(450.0)
     json.dumps(masses_to_dict(model.masses))     # what Save writes is plain JSON
+
+
+def test_a_rotating_part_on_the_pinion_shaft_takes_the_gear_ratio(form, model, qtbot):
+    model.parts.set_loaded({"gear": {"z1": 17, "z2": 68, "module_mm": 4}})
+    with qtbot.waitSignal(model.forcesChanged, timeout=2000):
+        type_into(qtbot, form.field("rotors"), "0.03:gear")
+    assert model.masses.rotors == ((0.03, 68 / 17),)
