@@ -223,9 +223,14 @@ def _step(value: object, name: str, entry: str | None) -> float:
 
 
 def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
-    """The load inputs as stored in a design file (units in the keys)."""
+    """The load inputs as stored in a design file (units in the keys), as typed: a link
+    given by its weight keeps its weight (``lever_weight_N``) and no mass."""
+    from .dynamics import WEIGHTS
     data = {f.name: getattr(masses, f.name) for f in fields(masses)}
     data["ram_cg_mm"] = list(masses.ram_cg_mm)
+    data["rotors"] = [{"J_kg_m2": j, "speed_ratio": r} for j, r in masses.rotors]
+    for mass, weight in WEIGHTS:
+        del data[mass if data[weight] is not None else weight]
     return data
 
 
@@ -244,11 +249,25 @@ def masses_from_dict(data: object) -> MassProperties:
         elif key == "ram_cg_mm":
             if not isinstance(value, list) or len(value) != 2 or not all(map(_is_number, value)):
                 raise DesignError(key, value, "must be a pair [dx, dy] in mm")
-        elif key == "lever_cg_mm" and value is None:
+        elif key == "rotors":
+            _check_rotors(value)
+        elif key in ("lever_cg_mm", "lever_weight_N", "ram_weight_N", "guide_length_mm") \
+                and value is None:
             continue
         elif not _is_number(value):
             raise DesignError(key, value, "must be a number")
     values = dict(data)
     if "ram_cg_mm" in values:
         values["ram_cg_mm"] = tuple(values["ram_cg_mm"])
+    if "rotors" in values:
+        values["rotors"] = tuple((r["J_kg_m2"], r["speed_ratio"]) for r in values["rotors"])
     return MassProperties(**values)
+
+
+def _check_rotors(value: object) -> None:
+    """``"rotors": [{"J_kg_m2": J, "speed_ratio": ω_i/ω2}, …]``: the shape and types only
+    (MassProperties checks the ranges)."""
+    keys = {"J_kg_m2", "speed_ratio"}
+    if not isinstance(value, list) or not all(isinstance(r, dict) and set(r) == keys
+                                              and all(map(_is_number, r.values())) for r in value):
+        raise DesignError("rotors", value, 'must be a list of {"J_kg_m2": J, "speed_ratio": R}')

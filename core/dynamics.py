@@ -30,14 +30,18 @@ import numpy as np
 from .cut import cutting_force
 from .errors import DesignError, require_range
 from .geometry import MAX_LENGTH_MM, Design
+from .guide import end_forces, guide_ends
 from .kinematics import Shape, check_request, check_rpms, rpm_to_omega, shape
+from .rotors import MAX_INERTIA_KG_M2, check_rotors, reduced_inertia
 
 GRAVITY = 9.81               # m/s², acting toward −y
 MM = 1e-3                    # m per mm
 ENERGY_INTERVALS = 3600      # uniform φ intervals per cycle for the energy integral
 MAX_MASS_KG = 1e6
-MAX_INERTIA_KG_M2 = 1e6
+
 MAX_FORCE_N = 1e9
+WEIGHTS = (("lever_mass_kg", "lever_weight_N"), ("ram_mass_kg", "ram_weight_N"))
+"""Each link whose load may be stated as a weight: (mass field, weight field)."""
 MIN_DELTA = 1e-4             # finest speed fluctuation: keeps J_F = ΔW/(ω²·δ) finite at any speed
 
 
@@ -75,6 +79,18 @@ class MassProperties:
     """Whether the links' weights (g = 9.81 m/s² toward −y) are loads."""
     delta: float = 1.0 / 30.0
     """Coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_mean the flywheel must hold, (0, 1)."""
+    lever_weight_N: float | None = None
+    """The lever's weight G4 as the task book states it, N; None = given as a mass. When
+    given, ``lever_mass_kg`` is G4/g (g = :data:`GRAVITY`), so G4 prints back as typed."""
+    ram_weight_N: float | None = None
+    """The ram's weight G6 (ram plus tool), N; None = given as a mass. As ``lever_weight_N``."""
+    rotors: tuple[tuple[float, float], ...] = ()
+    """The other rotating parts (crank shaft, gears, motor rotor), each (J_i kg·m², ω_i/ω2):
+    reduced to the crank, Σ J_i·(ω_i/ω2)², they count toward the flywheel J_F."""
+    guide_length_mm: float | None = None
+    """Length of the ram's guide (the column's ways), mm, centred on the mid-travel of the
+    ram joint C; None = the stroke H. Where the guide's resultant falls outside it, the ram
+    tilts and bears on its two ends (:mod:`core.guide`)."""
 
     def __post_init__(self) -> None:
         def put(name: str, value: object) -> None:
@@ -98,9 +114,44 @@ class MassProperties:
                                            low_open=False, high_open=True))
         put("delta", require_range("delta", self.delta, MIN_DELTA, 1.0, low_open=False,
                                    high_open=True))
+        for mass, weight in WEIGHTS:
+            put(mass, self._from_weight(mass, weight))
+        put("rotors", check_rotors(self.rotors))
+        if self.guide_length_mm is not None:
+            put("guide_length_mm", require_range("guide_length_mm", self.guide_length_mm, 0.0,
+                                                 MAX_LENGTH_MM, "mm"))
         if not isinstance(self.gravity, (bool, np.bool_)):
             raise DesignError("gravity", self.gravity, "must be true or false")
         put("gravity", bool(self.gravity))
+
+    def _from_weight(self, mass: str, weight: str) -> float:
+        """The link's mass: as given, or its weight / g. A mass and a weight of one link
+        given together are refused (the mass that a weight gave is accepted back, so that
+        ``dataclasses.replace`` keeps working)."""
+        value = getattr(self, weight)
+        if value is None:
+            return getattr(self, mass)
+        value = require_range(weight, value, 0.0, MAX_MASS_KG * GRAVITY, "N", low_open=False)
+        object.__setattr__(self, weight, value)
+        derived = value / GRAVITY
+        if getattr(self, mass) not in (0.0, derived):
+            raise DesignError(mass, getattr(self, mass), f"give either {mass} or {weight}, not both")
+        return derived
+
+    def weight(self, mass: str) -> float:
+        """The weight of the link whose mass field is ``mass``, N: as given (G4 = 200 N
+        prints 200), else mass·g."""
+        given = getattr(self, dict(WEIGHTS)[mass])
+        return given if given is not None else getattr(self, mass) * GRAVITY
+
+    @property
+    def rotor_inertia_kg_m2(self) -> float:
+        """J_c = Σ J_i·(ω_i/ω2)²: the other rotating parts reduced to the crank, kg·m²."""
+        return reduced_inertia(self.rotors)
+
+    def guide_length(self, design: Design) -> float:
+        """The ram guide's length for ``design``, mm (None = the stroke H)."""
+        return design.stroke if self.guide_length_mm is None else self.guide_length_mm
 
     def lever_cg(self, design: Design) -> float:
         """The lever's centre-of-mass distance from O4 for ``design``, mm."""
@@ -188,6 +239,18 @@ class Dynamics:
     guide_offset_mm: np.ndarray
     """x of the resultant guide normal force relative to C (= guide_moment/guide_normal),
     (m, n) mm; NaN where the resultant is zero (the guide then carries a pure couple)."""
+    guide_rear_mm: np.ndarray
+    """x of the guide's rear end relative to C, (n,) mm (:func:`core.guide.guide_ends`)."""
+    guide_front_mm: np.ndarray
+    """x of the guide's front end relative to C, (n,) mm."""
+    guide_rear_N: np.ndarray
+    """Normal force of the guide's rear end on the ram, (m, n) N, up +: the ram bears on
+    both ends where ``guide_tilted``; elsewhere the resultant's statically equivalent split."""
+    guide_front_N: np.ndarray
+    """Same at the guide's front end, (m, n) N."""
+    guide_tilted: np.ndarray
+    """Where the resultant's line of action falls outside the guide (or the guide carries
+    a pure couple), so the ram tilts and bears on the guide's two ends, (m, n) bool."""
     cut_force: np.ndarray
     """Cutting force P on the tool, (m, n) N, acting in −x; 0 outside the cut."""
     equivalent_inertia: np.ndarray
@@ -216,8 +279,15 @@ class SpeedSummary:
     """ΔW_max = max − min of ∫(T − T_mean) dφ over the cycle."""
     flywheel_inertia_kg_m2: float
     """J_F = ΔW_max / (ω² δ), on the crank shaft."""
+    flywheel_inertia_needed_kg_m2: float
+    """J_F − J_c, the task book's flywheel: what the flywheel must add to the other rotating
+    parts reduced to the crank (``MassProperties.rotors``); 0 when they hold δ on their own
+    (``flywheel_needed`` False), never negative."""
+    flywheel_needed: bool
+    """False when J_c ≥ J_F: the rotating parts alone keep the speed within δ."""
     flywheel_inertia_net_kg_m2: float
-    """max(J_F − J_e_mean, 0): what a flywheel must add to the mechanism's own inertia."""
+    """max(J_F − J_c − J_e_mean, 0): what a flywheel must add to the rotating parts and the
+    mechanism's own mean inertia."""
 
 
 @dataclass(frozen=True)
@@ -234,6 +304,8 @@ class DynamicsSummary:
     """J_e(φ) on the grid, (N + 1,) kg·m²."""
     equivalent_inertia_mean_kg_m2: float
     """Cycle mean of J_e."""
+    rotor_inertia_kg_m2: float
+    """J_c = Σ J_i·(ω_i/ω2)², the other rotating parts reduced to the crank, kg·m²."""
     speeds: tuple[SpeedSummary, ...]
     """One entry per crank speed, in the order given."""
 
@@ -311,11 +383,14 @@ def _solve(design: Design, sh: Shape, rpm: np.ndarray, omega: np.ndarray,
     drive = np.abs(out["b_x"]) + np.abs(out["b_y"])   # type: ignore[arg-type]
     offset = _offset_of(out["guide_normal"], out["guide_moment"],  # type: ignore[arg-type]
                         drive + masses.ram_mass_kg * masses.g + masses.cut_force_N)
+    rear, front = guide_ends(design, sh.ram_joint[0], masses.guide_length(design))
+    ends = end_forces(out["guide_normal"], out["guide_moment"], offset, rear, front)  # type: ignore[arg-type]
     torque = out.pop("crank_torque")
     return Dynamics(
         design=design, masses=masses, crank_angle=sh.phi, rpm=rpm, omega=omega,
         crank_torque=torque, power=torque * omega[:, None],  # type: ignore[operator]
-        guide_offset_mm=offset, cut_force=np.broadcast_to(p_cut, (omega.size, n_count)).copy(),
+        guide_offset_mm=offset, guide_rear_mm=rear, guide_front_mm=front, guide_rear_N=ends[0],
+        guide_front_N=ends[1], guide_tilted=ends[2], cut_force=np.broadcast_to(p_cut, (omega.size, n_count)).copy(),
         equivalent_inertia=equivalent_inertia(design, sh, masses), **out,  # type: ignore[arg-type]
     )
 

@@ -24,7 +24,8 @@ FORCE_COLUMNS = (
     ("B_x_N", "b_x"), ("B_y_N", "b_y"),
     ("C_x_N", "c_x"), ("C_y_N", "c_y"),
     ("guide_normal_N", "guide_normal"), ("guide_moment_N_m", "guide_moment"),
-    ("guide_offset_mm", "guide_offset_mm"), ("cut_force_N", "cut_force"),
+    ("guide_offset_mm", "guide_offset_mm"), ("guide_rear_N", "guide_rear_N"),
+    ("guide_front_N", "guide_front_N"), ("guide_tilted", "guide_tilted"), ("cut_force_N", "cut_force"),
 )
 
 
@@ -52,9 +53,11 @@ def masses_document(masses: MassProperties, design: Design) -> dict[str, Any]:
     """The inputs as used (lever cg resolved for ``design``), units in the keys."""
     return {
         "lever_mass_kg": masses.lever_mass_kg,
+        "lever_weight_N": masses.weight("lever_mass_kg"),
         "lever_cg_mm": masses.lever_cg(design),
         "lever_inertia_kg_m2": masses.lever_inertia_kg_m2,
         "ram_mass_kg": masses.ram_mass_kg,
+        "ram_weight_N": masses.weight("ram_mass_kg"),
         "ram_cg_mm": list(masses.ram_cg_mm),
         "rod_mass_kg": masses.rod_mass_kg,
         "crank_mass_kg": masses.crank_mass_kg,
@@ -65,6 +68,8 @@ def masses_document(masses: MassProperties, design: Design) -> dict[str, Any]:
         "gravity": masses.gravity,
         "g_m_s2": GRAVITY if masses.gravity else 0.0,
         "delta": masses.delta,
+        "guide_length_mm": masses.guide_length(design),
+        "rotors": [{"J_kg_m2": j, "speed_ratio": r} for j, r in masses.rotors],
     }
 
 
@@ -74,6 +79,7 @@ def summary_document(summary: DynamicsSummary, design: Design) -> dict[str, Any]
         "inputs": masses_document(summary.masses, design),
         "energy_intervals": int(summary.crank_angle.size - 1),
         "equivalent_inertia_mean_kg_m2": summary.equivalent_inertia_mean_kg_m2,
+        "rotor_inertia_kg_m2": summary.rotor_inertia_kg_m2,
         "speeds": [
             {"rpm": s.rpm, "omega_rad_s": s.omega_rad_s,
              "mean_torque_N_m": finite_or_none(s.mean_torque_N_m),
@@ -83,6 +89,8 @@ def summary_document(summary: DynamicsSummary, design: Design) -> dict[str, Any]
              "max_power_W": finite_or_none(s.max_power_W),
              "energy_fluctuation_J": finite_or_none(s.energy_fluctuation_J),
              "flywheel_inertia_kg_m2": finite_or_none(s.flywheel_inertia_kg_m2),
+             "flywheel_inertia_needed_kg_m2": finite_or_none(s.flywheel_inertia_needed_kg_m2),
+             "flywheel_needed": s.flywheel_needed,
              "flywheel_inertia_net_kg_m2": finite_or_none(s.flywheel_inertia_net_kg_m2)}
             for s in summary.speeds
         ],

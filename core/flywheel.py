@@ -25,6 +25,10 @@ def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
               intervals: int = ENERGY_INTERVALS, peaks: bool = True) -> DynamicsSummary:
     """Mean and peak torque, power, ΔW_max and the flywheel per speed.
 
+    The flywheel of the task book: J_F = ΔW_max/(ω_m²·δ) at the crank, less the other
+    rotating parts reduced to it, J_c = Σ J_i·(ω_i/ω2)² (their kinetic energy
+    ½·J_i·ω_i² = ½·J_i·(ω_i/ω2)²·ω2²); when J_c ≥ J_F no flywheel is needed.
+
     :func:`cycle_summary` on this one design, with its curves. ``peaks=False`` leaves
     out the exact torque peaks (max/min torque and peak power are NaN), most of the
     cost, for a caller that shows only the energy, the means and the flywheel.
@@ -34,9 +38,11 @@ def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
     phi, rpm, omega = _check_inputs(design, phi, rpms, masses)
     out = cycle_summary(Designs.of(design), omega, masses, intervals, curves=True, peaks=peaks)
     je_mean = float(out["equivalent_inertia_mean_kg_m2"][0])
+    jc = masses.rotor_inertia_kg_m2
     speeds = []
     for i, w in enumerate(omega):
         jf = float(out["flywheel_inertia_kg_m2"][0, i])
+        needed = jf - jc
         speeds.append(SpeedSummary(
             rpm=float(rpm[i]), omega_rad_s=float(w),
             mean_torque_N_m=float(out["mean_torque_N_m"][0, i]),
@@ -45,11 +51,14 @@ def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
             mean_power_W=float(out["mean_torque_N_m"][0, i] * w),
             max_power_W=float(out["max_torque_N_m"][0, i] * w),
             energy_fluctuation_J=float(out["energy_fluctuation_J"][0, i]),
-            flywheel_inertia_kg_m2=jf, flywheel_inertia_net_kg_m2=max(jf - je_mean, 0.0),
+            flywheel_inertia_kg_m2=jf, flywheel_inertia_needed_kg_m2=max(needed, 0.0),
+            flywheel_needed=bool(needed > 0.0),
+            flywheel_inertia_net_kg_m2=max(needed - je_mean, 0.0),
         ))
     return DynamicsSummary(masses=masses, crank_angle=phi, energy=out["energy"][0],
                            equivalent_inertia=out["equivalent_inertia"][0],
-                           equivalent_inertia_mean_kg_m2=je_mean, speeds=tuple(speeds))
+                           equivalent_inertia_mean_kg_m2=je_mean, rotor_inertia_kg_m2=jc,
+                           speeds=tuple(speeds))
 
 
 def _check_intervals(intervals) -> int:

@@ -44,7 +44,7 @@ COLUMN_GROUPS = (
                "coriolis_m_s2")),
     ("rod", ("rod_deg", "rod_omega_rad_s", "rod_alpha_rad_s2", "pressure_angle_deg")),
     ("torque", ("crank_torque_N_m", "power_W", "cut_force_N", "guide_normal_N",
-                "guide_moment_N_m", "guide_offset_mm")),
+                "guide_moment_N_m", "guide_offset_mm", "guide_rear_N", "guide_front_N")),
     ("joints_crank", ("O2_x_N", "O2_y_N", "pin_A_x_N", "pin_A_y_N", "A_x_N", "A_y_N",
                       "A_normal_N")),
     ("joints_lever", ("O4_x_N", "O4_y_N", "B_x_N", "B_y_N", "C_x_N", "C_y_N")),
@@ -190,13 +190,22 @@ def positions_csv(table: PositionTable) -> str:
     return ",".join(LEAD_COLUMNS) + "," + lines[0] + "\n" + "".join(line + "\n" for line in body)
 
 
-def display_values(data: np.ndarray) -> np.ndarray:
+def display_values(data: np.ndarray, columns: tuple[str, ...] = ()) -> np.ndarray:
     """``data`` with round-off noise set to 0: entries within 1e-9 of their column's
-    largest magnitude (e.g. a velocity of 4e-17 m/s at a limit position)."""
+    largest magnitude (e.g. a velocity of 4e-17 m/s at a limit position).
+
+    With the table's ``columns``, the guide reaction shows where the ram bears: the
+    resultant's offset where it falls on the guide, else (the ram tilts) the two forces
+    at the guide's ends (``core.guide``); the other is blank (NaN)."""
     data = np.array(data, dtype=float)
     with np.errstate(invalid="ignore"):
         scale = np.nanmax(np.abs(data), axis=0, initial=0.0)
         data[np.abs(data) <= 1e-9 * scale] = 0.0
+    if "guide_tilted" in columns:
+        tilted = data[:, columns.index("guide_tilted")] != 0.0
+        for name in ("guide_rear_N", "guide_front_N"):
+            data[~tilted, columns.index(name)] = np.nan
+        data[tilted, columns.index("guide_offset_mm")] = np.nan
     return data
 
 
@@ -216,7 +225,7 @@ class TextGroup:
 def text_groups(table: PositionTable) -> list[TextGroup]:
     """The table as printed by ``shaper table`` and the report: per speed, per column
     group, round-off cleaned (``display_values``) and formatted (``number_text``)."""
-    shown = display_values(table.data)
+    shown = display_values(table.data, table.columns)
     lead = table_rows(table)
     k = table.positions.crank_deg.size
     out = []

@@ -155,6 +155,10 @@
         <translation>最小间隙</translation>
     </message>
     <message>
+        <source>Allowed pressure angle on the return, °. The default %1° is said in the textbooks: the follower returns unloaded, closed by its spring, so the return may take 70°–80° against 30°–45° on the working rise.</source>
+        <translation>回程许用压力角，°。默认 %1° 取自教材：从动件回程不受工作载荷，靠弹簧锁合返回，故回程可取 70°–80°，而工作推程取 30°–45°。</translation>
+    </message>
+    <message>
         <source>parabolic</source>
         <translation>等加速等减速</translation>
     </message>
@@ -448,6 +452,18 @@
     <message>
         <source>N offset (mm)</source>
         <translation>N 作用点偏距 (mm)</translation>
+    </message>
+    <message>
+        <source>guide rear end (N)</source>
+        <translation>导路后端 (N)</translation>
+    </message>
+    <message>
+        <source>guide front end (N)</source>
+        <translation>导路前端 (N)</translation>
+    </message>
+    <message>
+        <source>ram tilted on the guide ends</source>
+        <translation>滑枕倾斜支承于导路两端</translation>
     </message>
     <message>
         <source>cutting force P (N)</source>
@@ -1424,6 +1440,38 @@
     <message>
         <source>Flywheel to add J_F − J_e</source>
         <translation>需加飞轮 J_F − J_e</translation>
+    </message>
+    <message>
+        <source>Rotating parts J_c at the crank</source>
+        <translation>其他转动构件等效到曲柄 J_c</translation>
+    </message>
+    <message>
+        <source>Flywheel needed J_F − J_c</source>
+        <translation>所需飞轮 J_F − J_c</translation>
+    </message>
+    <message>
+        <source>Flywheel to add J_F − J_c − J_e</source>
+        <translation>需加飞轮 J_F − J_c − J_e</translation>
+    </message>
+    <message>
+        <source>none needed (J_c ≥ J_F)</source>
+        <translation>无需飞轮 (J_c ≥ J_F)</translation>
+    </message>
+    <message>
+        <source>Guide reaction N, φ = {angle}°</source>
+        <translation>导路反力 N，φ = {angle}°</translation>
+    </message>
+    <message>
+        <source>{n} N, {x} mm from C</source>
+        <translation>{n} N，距 C {x} mm</translation>
+    </message>
+    <message>
+        <source>Guide ends rear / front, φ = {angle}°</source>
+        <translation>导路后端 / 前端，φ = {angle}°</translation>
+    </message>
+    <message>
+        <source>{rear} N / {front} N</source>
+        <translation>{rear} N / {front} N</translation>
     </message>
     <message>
         <source>Stroke H</source>
@@ -2781,6 +2829,14 @@
         <translation>L3/2 = {0}</translation>
     </message>
     <message>
+        <source>H = {0}</source>
+        <translation>H = {0}</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
         <source>Mass m3</source>
         <translation>质量 m3</translation>
     </message>
@@ -2869,6 +2925,50 @@
         <translation>工作行程两端的空刀距离，占行程 H 的百分比（0 至小于 50）</translation>
     </message>
     <message>
+        <source>Load given as</source>
+        <translation>载荷给定为</translation>
+    </message>
+    <message>
+        <source>The lever's load as a mass in kg, or as the task book states it, a weight G4 in N (mass = G4/9.81)</source>
+        <translation>导杆的载荷：以质量 kg 给出，或如任务书以重量 G4（N）给出（质量 = G4/9.81）</translation>
+    </message>
+    <message>
+        <source>Weight G4</source>
+        <translation>重量 G4</translation>
+    </message>
+    <message>
+        <source>Weight of the slotted lever O4B, N, as the task book states it</source>
+        <translation>导杆 O4B 的重量，N，同任务书</translation>
+    </message>
+    <message>
+        <source>The ram's load as a mass in kg, or as the task book states it, a weight G6 in N (mass = G6/9.81)</source>
+        <translation>滑枕的载荷：以质量 kg 给出，或如任务书以重量 G6（N）给出（质量 = G6/9.81）</translation>
+    </message>
+    <message>
+        <source>Weight G6</source>
+        <translation>重量 G6</translation>
+    </message>
+    <message>
+        <source>Weight of the ram with the tool, N, as the task book states it</source>
+        <translation>滑枕连同刀具的重量，N，同任务书</translation>
+    </message>
+    <message>
+        <source>Guide length</source>
+        <translation>导路长度</translation>
+    </message>
+    <message>
+        <source>Length of the ram's guide (the column's ways), centred on the ram's mid-travel, mm; leave empty for the stroke H. Where the guide's reaction falls outside it, the ram tilts and bears on the guide's two ends</source>
+        <translation>滑枕导路（床身上的导路）的长度，以滑枕行程中点为中心，mm；留空则取行程 H。导路反力的合力落在导路之外时，滑枕倾斜，支承于导路两端</translation>
+    </message>
+    <message>
+        <source>Rotating parts</source>
+        <translation>其他转动构件</translation>
+    </message>
+    <message>
+        <source>Other rotating parts (crank shaft, gears, motor) for the flywheel, each J:ratio, J in kg·m² and its speed over the crank's, separated by ';' (e.g. 0.5:1; 0.02:15); J:gear takes z2/z1 of the Gear tab's pair, for the pinion shaft. The flywheel needed is J_F − Σ J·ratio²</source>
+        <translation>飞轮计算中的其他转动构件（曲柄轴、齿轮、电动机），每个写作 J:传动比，J 单位 kg·m²，传动比为其转速与曲柄转速之比，以“;”分隔（如 0.5:1; 0.02:15）；J:gear 取齿轮页齿轮副的 z2/z1，用于小齿轮轴。所需飞轮为 J_F − Σ J·传动比²</translation>
+    </message>
+    <message>
         <source>Gravity</source>
         <translation>重力</translation>
     </message>
@@ -2903,6 +3003,14 @@
     <message>
         <source>Flywheel</source>
         <translation>飞轮</translation>
+    </message>
+    <message>
+        <source>mass, kg</source>
+        <translation>质量，kg</translation>
+    </message>
+    <message>
+        <source>weight, N</source>
+        <translation>重量，N</translation>
     </message>
     <message>
         <source>include weights</source>
@@ -3684,6 +3792,10 @@
         <translation>7 曲柄驱动力矩、能量与飞轮</translation>
     </message>
     <message>
+        <source>&lt;b&gt;Flywheel.&lt;/b&gt; On the crank shaft, %1; the loads are those of section 1.</source>
+        <translation>&lt;b&gt;飞轮。&lt;/b&gt;装在曲柄轴上，%1；载荷见第 1 节。</translation>
+    </message>
+    <message>
         <source>Crank torque, input power, energy fluctuation ΔE and joint forces over one revolution</source>
         <translation>一个运动循环内的曲柄驱动力矩、输入功率、能量变化 ΔE 与运动副反力</translation>
     </message>
@@ -4008,20 +4120,36 @@
         <translation>位置</translation>
     </message>
     <message>
-        <source>Lever mass, centre of mass, inertia</source>
-        <translation>导杆质量、质心位置、转动惯量</translation>
+        <source>Lever weight G_4</source>
+        <translation>导杆重量 G_4</translation>
     </message>
     <message>
-        <source>Ram mass</source>
-        <translation>滑枕质量</translation>
+        <source>Lever centre of mass l_O4S4 (from O4)</source>
+        <translation>导杆质心 l_O4S4（自 O4）</translation>
     </message>
     <message>
-        <source>Rod mass</source>
-        <translation>连杆质量</translation>
+        <source>Lever inertia J_S4 (about S_4)</source>
+        <translation>导杆转动惯量 J_S4（对 S_4）</translation>
     </message>
     <message>
-        <source>Cutting force, height below the guide</source>
-        <translation>切削力及其距导路的高度</translation>
+        <source>Ram weight G_6 (with the tool)</source>
+        <translation>滑枕重量 G_6（含刀具）</translation>
+    </message>
+    <message>
+        <source>Ram centre of mass x_S6, y_S6 (from C, x along the cut, y up)</source>
+        <translation>滑枕质心 x_S6、y_S6（自 C，x 沿切削方向，y 向上）</translation>
+    </message>
+    <message>
+        <source>Rod mass m5</source>
+        <translation>连杆质量 m5</translation>
+    </message>
+    <message>
+        <source>Block mass, crank mass</source>
+        <translation>滑块质量、曲柄质量</translation>
+    </message>
+    <message>
+        <source>Cutting force P, tool below the guide y_P</source>
+        <translation>切削力 P，刀尖在导路下 y_P</translation>
     </message>
     <message>
         <source>Idle margin at each end of the stroke</source>
@@ -4040,8 +4168,76 @@
         <translation>不计</translation>
     </message>
     <message>
+        <source>Ram guide length</source>
+        <translation>滑枕导路长度</translation>
+    </message>
+    <message>
+        <source> (the stroke H)</source>
+        <translation>（行程 H）</translation>
+    </message>
+    <message>
         <source>Coefficient of speed fluctuation δ</source>
         <translation>速度不均匀系数 δ</translation>
+    </message>
+    <message>
+        <source>Other rotating parts (J, speed)</source>
+        <translation>其他转动构件（J，转速）</translation>
+    </message>
+    <message>
+        <source>parabolic</source>
+        <translation>等加速等减速</translation>
+    </message>
+    <message>
+        <source>cosine</source>
+        <translation>余弦加速度</translation>
+    </message>
+    <message>
+        <source>sine (cycloidal)</source>
+        <translation>正弦加速度（摆线）</translation>
+    </message>
+    <message>
+        <source>3-4-5 polynomial</source>
+        <translation>3-4-5 多项式</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Cam: follower arm l, swing ψmax</source>
+        <translation>凸轮：从动件摆臂长 l，摆角 ψmax</translation>
+    </message>
+    <message>
+        <source>Cam: rise, outer dwell, return</source>
+        <translation>凸轮：推程角、远休止角、回程角</translation>
+    </message>
+    <message>
+        <source>Cam: rise law, return law</source>
+        <translation>凸轮：推程运动规律、回程运动规律</translation>
+    </message>
+    <message>
+        <source>Cam: allowed pressure angle, rise / return</source>
+        <translation>凸轮：许用压力角，推程 / 回程</translation>
+    </message>
+    <message>
+        <source>Cam: roller, base radius, centre distance</source>
+        <translation>凸轮：滚子半径、基圆半径、中心距</translation>
+    </message>
+    <message>
+        <source>Cam: rise at crank angle</source>
+        <translation>凸轮：推程起始曲柄转角</translation>
+    </message>
+    <message>
+        <source>Gears: teeth z_1, z_2, module m</source>
+        <translation>齿轮：齿数 z_1、z_2，模数 m</translation>
+    </message>
+    <message>
+        <source>Gears: shifts x_1, x_2, centre distance a′</source>
+        <translation>齿轮：变位系数 x_1、x_2，中心距 a′</translation>
+    </message>
+    <message>
+        <source>; the flywheel needed is J&lt;sub&gt;F&lt;/sub&gt; − J&lt;sub&gt;c&lt;/sub&gt;, with the other rotating parts reduced to the crank J&lt;sub&gt;c&lt;/sub&gt; = Σ J&lt;sub&gt;i&lt;/sub&gt;·(ω&lt;sub&gt;i&lt;/sub&gt;/ω&lt;sub&gt;2&lt;/sub&gt;)&lt;sup&gt;2&lt;/sup&gt; (none when J&lt;sub&gt;c&lt;/sub&gt; ≥ J&lt;sub&gt;F&lt;/sub&gt;)</source>
+        <translation>；所需飞轮为 J&lt;sub&gt;F&lt;/sub&gt; − J&lt;sub&gt;c&lt;/sub&gt;，其中其他转动构件等效到曲柄 J&lt;sub&gt;c&lt;/sub&gt; = Σ J&lt;sub&gt;i&lt;/sub&gt;·(ω&lt;sub&gt;i&lt;/sub&gt;/ω&lt;sub&gt;2&lt;/sub&gt;)&lt;sup&gt;2&lt;/sup&gt;（J&lt;sub&gt;c&lt;/sub&gt; ≥ J&lt;sub&gt;F&lt;/sub&gt; 时无需飞轮）</translation>
     </message>
     <message>
         <source>Mean / max crank torque</source>
@@ -4062,6 +4258,18 @@
     <message>
         <source>Flywheel J_F − J_e (net)</source>
         <translation>飞轮 J_F − J_e（净值）</translation>
+    </message>
+    <message>
+        <source>Rotating parts at the crank J_c</source>
+        <translation>其他转动构件等效到曲柄 J_c</translation>
+    </message>
+    <message>
+        <source>Flywheel needed J_F − J_c</source>
+        <translation>所需飞轮 J_F − J_c</translation>
+    </message>
+    <message>
+        <source>Flywheel J_F − J_c − J_e (net)</source>
+        <translation>飞轮 J_F − J_c − J_e（净）</translation>
     </message>
     <message>
         <source>Mean reduced inertia J_e</source>
@@ -4098,6 +4306,10 @@
     <message>
         <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
         <translation>&lt;b&gt;尺寸综合。&lt;/b&gt;θ = 180°·(K − 1)/(K + 1)；L2 = L1/sin(θ/2)；L3 = H/(2·sin(θ/2))；导路通过导杆端点两极限位置，距 O4 为 L3·cos(θ/2)（距 O2 为 h = H/(2·tan(θ/2)) − L2）。</translation>
+    </message>
+    <message>
+        <source>none needed (J_c ≥ J_F)</source>
+        <translation>无需飞轮 (J_c ≥ J_F)</translation>
     </message>
     <message>
         <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω3 and α3 are positive clockwise (as ψ and the crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
@@ -4923,6 +5135,30 @@
     <message>
         <source>Gravity</source>
         <translation>重力</translation>
+    </message>
+    <message>
+        <source>Lever weight G4</source>
+        <translation>导杆重量 G4</translation>
+    </message>
+    <message>
+        <source>Ram weight G6</source>
+        <translation>滑枕重量 G6</translation>
+    </message>
+    <message>
+        <source>Ram guide length</source>
+        <translation>滑枕导路长度</translation>
+    </message>
+    <message>
+        <source>Rotating parts</source>
+        <translation>其他转动构件</translation>
+    </message>
+    <message>
+        <source>Rotating part J</source>
+        <translation>转动构件 J</translation>
+    </message>
+    <message>
+        <source>Rotating part speed ratio</source>
+        <translation>转动构件传动比</translation>
     </message>
     <message>
         <source>Design</source>

@@ -25,6 +25,13 @@ MIN_PRESSURE_DEG, MAX_PRESSURE_DEG = 5.0, 85.0
 the cam would be many times the arm's size."""
 
 
+RETURN_PRESSURE_DEG = 70.0
+"""Default allowed pressure angle on the return, °. The follower comes back unloaded,
+closed by its spring (or the groove), so the return can take a much larger pressure angle
+than the working rise: the textbooks allow [α′] = 70°–80° there against 30°–45° on the
+rise of an oscillating follower; 70° is the cautious end."""
+
+
 @dataclass(frozen=True)
 class CamInputs:
     """The data sheet: arm length l (mm), the program, the allowances (degrees), and
@@ -35,7 +42,7 @@ class CamInputs:
     arm_mm: float = 150.0
     program: Program = field(default_factory=Program)
     pressure_deg: float = 40.0
-    return_pressure_deg: float = 70.0
+    return_pressure_deg: float = RETURN_PRESSURE_DEG
     roller_mm: float | None = None
     base_mm: float | None = None
     distance_mm: float | None = None

@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 
 from ..cam import LAWS, Cam, CamInputs, Program, design_cam
+from ..cam.cam import RETURN_PRESSURE_DEG
 from ..cam.file import cam_from_dict, cam_to_dict
 from ..cam.table import cam_summary, cam_table, follower_peaks
 from ..errors import DesignError
@@ -65,7 +66,9 @@ def add_cam_options(parser: argparse.ArgumentParser,
     cam.add_argument("--pressure", metavar="DEG",
                      help="allowed pressure angle [α] on the rise, °")
     cam.add_argument("--return-pressure", metavar="DEG",
-                     help="allowed pressure angle on the return, ° (default 70)")
+                     help=f"allowed pressure angle on the return, ° (default {RETURN_PRESSURE_DEG:g}: the "
+                          "follower returns unloaded, closed by its spring, so textbooks allow 70–80° "
+                          "there against 30–45° on the working rise)")
     cam.add_argument("--rise", metavar="DEG", help="cam angle of the rise, °")
     cam.add_argument("--dwell", metavar="DEG", help="cam angle of the outer dwell, °")
     cam.add_argument("--return", dest="back", metavar="DEG",
@@ -121,7 +124,7 @@ def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
                       return_law=args.return_law or (saved.get("return_law", rise_law) if not args.law
                                                       else args.law))
     inputs = CamInputs(arm_mm=values["arm_mm"], program=program, pressure_deg=values["pressure_deg"],
-                       return_pressure_deg=values.get("return_pressure_deg", 70.0),
+                       return_pressure_deg=values.get("return_pressure_deg", RETURN_PRESSURE_DEG),
                        roller_mm=values.get("roller_mm"), base_mm=values.get("base_mm"),
                        distance_mm=values.get("distance_mm"),
                        **{key: values[key] for key in ("hub_mm", "boss_mm", "clearance_mm") if key in values})

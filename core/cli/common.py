@@ -37,18 +37,26 @@ OPTION_NAMES = {
     "lever_cg_mm": "--lever-cg", "ram_mass_kg": "--ram-mass", "ram_cg_mm": "--ram-cg",
     "rod_mass_kg": "--rod-mass", "block_mass_kg": "--block-mass", "crank_mass_kg": "--crank-mass",
     "cut_force_N": "--cut-force", "cut_height_mm": "--cut-height", "idle_fraction": "--idle",
-    "delta": "--delta", "gravity": "--no-gravity",
+    "delta": "--delta", "gravity": "--no-gravity", "lever_weight_N": "--lever-weight",
+    "ram_weight_N": "--ram-weight", "guide_length_mm": "--guide-length", "rotors": "--rotor",
+    "rotor_inertia_kg_m2": "--rotor", "rotor_ratio": "--rotor",
 }
 
 # (option, dest, metavar, help) of the load inputs; dest is the MassProperties field
 # (read by loads.masses_from_args).
 LOAD_OPTIONS = (
-    ("--lever-mass", "lever_mass_kg", "KG", "slotted lever mass, kg"),
+    ("--lever-mass", "lever_mass_kg", "KG", "slotted lever mass, kg (or --lever-weight)"),
+    ("--lever-weight", "lever_weight_N", "N",
+     "slotted lever weight G4, N, as the task book states it (instead of --lever-mass; mass = G4/9.81)"),
     ("--lever-inertia", "lever_inertia_kg_m2", "KGM2", "lever moment of inertia about its centre of mass, kg·m²"),
-    ("--lever-cg", "lever_cg_mm", "MM", "lever centre of mass from O4 along the lever, mm (default L3/2)"),
-    ("--ram-mass", "ram_mass_kg", "KG", "ram plus tool mass, kg"),
+    ("--lever-cg", "lever_cg_mm", "MM",
+     "lever centre of mass from O4 along the lever (the task book's l_O4S4), mm (default L3/2)"),
+    ("--ram-mass", "ram_mass_kg", "KG", "ram plus tool mass, kg (or --ram-weight)"),
+    ("--ram-weight", "ram_weight_N", "N",
+     "ram plus tool weight G6, N, as the task book states it (instead of --ram-mass; mass = G6/9.81)"),
     ("--ram-cg", "ram_cg_mm", "DX,DY",
-     "ram centre of mass from the ram joint C, mm (default 0,0; write --ram-cg=-5,3 for a leading minus)"),
+     "ram centre of mass S6 from the ram joint C, mm: DX in the cutting direction, DY up (give the "
+     "task book's x_S6, y_S6 in this frame; default 0,0; write --ram-cg=-5,3 for a leading minus)"),
     ("--rod-mass", "rod_mass_kg", "KG", "connecting rod mass, kg (rod variant; default 0)"),
     ("--block-mass", "block_mass_kg", "KG", "sliding block at the crank pin, kg (default 0)"),
     ("--crank-mass", "crank_mass_kg", "KG", "balanced crank mass, kg (default 0)"),
@@ -57,7 +65,14 @@ LOAD_OPTIONS = (
     ("--idle", "idle_fraction", "FRACTION",
      "uncut run-in and run-out, each as a fraction of the stroke (default 0.05)"),
     ("--delta", "delta", "D", "coefficient of speed fluctuation δ for the flywheel (default 1/30)"),
+    ("--guide-length", "guide_length_mm", "MM",
+     "length of the ram's guide (the column's ways), centred on the ram's mid-travel, mm "
+     "(default the stroke H); a guide reaction outside it is carried by its two ends"),
 )
+ROTOR_HELP = ("another rotating part reduced to the crank for the flywheel: its inertia J in kg·m² "
+              "and its speed over the crank's, J:RATIO (e.g. 0.02:15 for a motor rotor at 15 times "
+              "the crank speed), or J:gear for the pinion shaft of the design file's gear pair "
+              "(ratio z2/z1); repeat for each part. J_F needed = ΔW_max/(ω²δ) − Σ J·RATIO²")
 
 # argparse reads "-1e5" as an unknown option; accept every float spelling as a value.
 _NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
@@ -178,6 +193,7 @@ def add_load_options(parser: argparse.ArgumentParser, required: bool) -> None:
     group = parser.add_argument_group("masses and loads" + note)
     for option, dest, metavar, text in LOAD_OPTIONS:
         group.add_argument(option, dest=dest, metavar=metavar, help=text)
+    group.add_argument("--rotor", dest="rotors", action="append", metavar="J:RATIO", help=ROTOR_HELP)
     group.add_argument("--no-gravity", action="store_true", help="leave the links' weights out")
 
 

@@ -19,6 +19,8 @@ if TYPE_CHECKING:
     from ..dynamics import MassProperties
 
 REQUIRED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N")
+# an essential mass → the weight that may stand for it (the task book's G4, G6)
+ALTERNATIVES = {"lever_mass_kg": "lever_weight_N", "ram_mass_kg": "ram_weight_N"}
 
 
 def loads_given(args: argparse.Namespace) -> bool:
@@ -26,7 +28,8 @@ def loads_given(args: argparse.Namespace) -> bool:
     doc = design_file(args)
     if doc is not None and doc.get("masses") is not None:
         return True
-    return args.no_gravity or any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS)
+    return (args.no_gravity or bool(getattr(args, "rotors", None))
+            or any(getattr(args, dest) is not None for _, dest, _, _ in LOAD_OPTIONS))
 
 
 def masses_or_none(args: argparse.Namespace, design: Design) -> MassProperties | None:
@@ -58,12 +61,39 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
             changes[dest] = tuple(number(dest, p) for p in parts)
         else:
             changes[dest] = number(dest, text)
+    for mass, weight in ALTERNATIVES.items():
+        if mass in changes and weight in changes:
+            raise UsageError(f"{option_name(mass)}: give either {option_name(mass)} or "
+                             f"{option_name(weight)}, not both")
+        if weight in changes:           # a weight typed here replaces the file's mass
+            changes[mass] = 0.0
+        elif mass in changes:           # and a mass the file's weight
+            changes[weight] = None
+    if getattr(args, "rotors", None):
+        changes["rotors"] = tuple(rotor(text, doc) for text in args.rotors)
     if args.no_gravity:
         changes["gravity"] = False
     if base is None:
         if required:
             for dest in REQUIRED_LOADS:
                 if dest not in changes:
-                    raise UsageError(f"{option_name(dest)}: required (or give --design with loads)")
+                    other = ALTERNATIVES.get(dest)
+                    also = f" or {option_name(other)}" if other else ""
+                    raise UsageError(f"{option_name(dest)}{also}: required (or give --design with loads)")
         base = MassProperties()
     return replace(base, **changes)
+
+
+def rotor(text: str, doc: dict[str, Any] | None) -> tuple[float, float]:
+    """One ``--rotor J:RATIO`` (or ``J:gear``, the pinion shaft of the design file's gear
+    pair, z2/z1) as (J kg·m², ω_i/ω2)."""
+    from ..rotors import rotor_from_text
+    gear = doc.get("gear") if doc is not None else None
+    if gear is None:
+        if text.partition(":")[2].strip().lower() == "gear":
+            raise UsageError(f"--rotor: {text!r} takes the gear pair's ratio, but no --design file "
+                             "with a gear pair was given")
+        return rotor_from_text(text)
+    from ..gear.file import gear_from_dict
+    pair = gear_from_dict(gear)
+    return rotor_from_text(text, pair.z2 / pair.z1)

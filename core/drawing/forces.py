@@ -52,6 +52,12 @@ ENGLISH = {
     "P_mean": "Mean power (before efficiency)", "dW": "Energy fluctuation ΔW_max",
     "delta": "Coefficient of speed fluctuation δ", "J_F": "Flywheel J_F = ΔW_max/(ω²δ)",
     "J_e": "Mean reduced inertia J_e", "J_net": "Flywheel to add J_F − J_e",
+    "J_c": "Rotating parts J_c at the crank",
+    "J_needed": "Flywheel needed J_F − J_c", "J_net_rotors": "Flywheel to add J_F − J_c − J_e",
+    "none_needed": "none needed (J_c ≥ J_F)",
+    "guide_at": "Guide reaction N, φ = {angle}°",
+    "guide_inside": "{n} N, {x} mm from C",
+    "guide_ends_at": "Guide ends rear / front, φ = {angle}°", "guide_ends": "{rear} N / {front} N",
     **TITLE_ENGLISH,
 }
 # core's force keys as the sheet writes them: the letter, and its index as a subscript
@@ -110,7 +116,7 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
         force_scales.append(mu_f)
 
     summary = summarize(design, [rpm], masses)
-    rows = flywheel_rows(summary, masses, lab)
+    rows = flywheel_rows(summary, masses, lab) + guide_rows(design, rpm, masses, diagrams, lab)
     cells_rows = [(lab["quantity"], lab["value"])] + rows
     table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(cells_rows)
     # the polygons above the flywheel table and its caption (below it on a small sheet)
@@ -271,8 +277,16 @@ def _curve_chart(box: Box, x: np.ndarray, y: np.ndarray, mean: float | None, tit
 
 
 def flywheel_rows(summary, masses: MassProperties, lab: Mapping[str, str]) -> list[tuple[str, str]]:
-    """The flywheel result at the first speed, formatted as ``shaper dynamics`` prints it."""
+    """The flywheel result at the first speed, formatted as ``shaper dynamics`` prints it;
+    with rotating parts (``masses.rotors``) also J_c and the flywheel J_F − J_c they leave."""
     s = summary.speeds[0]
+    if masses.rotors:
+        needed = (f"{s.flywheel_inertia_needed_kg_m2:.4g} kg·m²" if s.flywheel_needed
+                  else lab["none_needed"])
+        rotors = [(lab["J_c"], f"{summary.rotor_inertia_kg_m2:.4g} kg·m²"), (lab["J_needed"], needed),
+                  (lab["J_net_rotors"], f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+    else:
+        rotors = [(lab["J_net"], f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
     return [(lab["n"], f"{number_text(s.rpm)} r/min"),
             (lab["M_mean"], f"{s.mean_torque_N_m:.4g} N·m"),
             (lab["M_max"], f"{s.max_torque_N_m:.4g} N·m"),
@@ -280,8 +294,27 @@ def flywheel_rows(summary, masses: MassProperties, lab: Mapping[str, str]) -> li
             (lab["dW"], f"{s.energy_fluctuation_J:.4g} J"),
             (lab["delta"], f"{masses.delta:.5g}"),
             (lab["J_F"], f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
-            (lab["J_e"], f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
-            (lab["J_net"], f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+            (lab["J_e"], f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²")] + rotors
+
+
+def guide_rows(design: Design, rpm: float, masses: MassProperties, angles_deg,
+               lab: Mapping[str, str]) -> list[tuple[str, str]]:
+    """Where the ram bears on its guide at the drawn positions: the resultant N and its
+    distance from C where that falls on the guide, else the two end forces it tilts onto
+    (core.guide): never a point of action metres off the guide."""
+    d = solve_dynamics(design, np.radians(list(angles_deg)), [rpm], masses)
+    rows = []
+    for k, angle in enumerate(angles_deg):
+        at = number_text(round(angle, 2))
+        if d.guide_tilted[0, k]:
+            rows.append((lab["guide_ends_at"].format(angle=at),
+                         lab["guide_ends"].format(rear=f"{d.guide_rear_N[0, k]:.4g}",
+                                                  front=f"{d.guide_front_N[0, k]:.4g}")))
+        else:
+            rows.append((lab["guide_at"].format(angle=at),
+                         lab["guide_inside"].format(n=f"{d.guide_normal[0, k]:.4g}",
+                                                    x=f"{d.guide_offset_mm[0, k]:.4g}")))
+    return rows
 
 
 def default_diagrams(design: Design, idle_fraction: float) -> tuple[float, float]:

@@ -9,6 +9,7 @@ from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QComboBox, QFormLayout, QLabel, QVBoxLayout, QWidget
 
 from core.cam import LAWS
+from core.cam.cam import RETURN_PRESSURE_DEG
 from shaperapp.design.fields import DEBOUNCE_MS, ERROR_STYLE, NumberField, parse_number
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
 
@@ -76,6 +77,12 @@ class CamForm(QWidget):
         }
         for name, label in self._labels.items():
             label.setText(texts[name])
+        tip = self.tr("Allowed pressure angle on the return, °. The default %1° is said in the "
+                      "textbooks: the follower returns unloaded, closed by its spring, so the return "
+                      "may take 70°–80° against 30°–45° on the working rise.").replace(
+            "%1", f"{RETURN_PRESSURE_DEG:g}")
+        self._labels["return_pressure"].setToolTip(tip)
+        self.fields["return_pressure"].edit.setToolTip(tip)
         names = {"parabolic": self.tr("parabolic"), "cosine": self.tr("cosine"),
                  "sine": self.tr("sine (cycloidal)"), "poly345": self.tr("3-4-5 polynomial")}
         for combo in self.laws.values():

@@ -17,6 +17,7 @@ from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from core.cam import Cam, CamInputs, Program, design_cam
 from core.cam.build import BOSS_MM, CLEARANCE_MM, HUB_MM, FitError
+from core.cam.cam import RETURN_PRESSURE_DEG
 from core.cam.file import cam_from_dict, cam_to_dict
 from core.errors import DesignError
 from shaperapp.design.model import DesignModel
@@ -27,7 +28,7 @@ NUMBERS = ("arm", "swing", "pressure", "return_pressure", "rise", "dwell", "retu
            "clearance")
 OPTIONAL = ("roller", "base", "distance", "phase")      # blank: chosen by the tool
 CHOICES = ("rise_law", "return_law")
-DEFAULTS: dict[str, Any] = {"arm": 120.0, "swing": 15.0, "pressure": 40.0, "return_pressure": 70.0,
+DEFAULTS: dict[str, Any] = {"arm": 120.0, "swing": 15.0, "pressure": 40.0, "return_pressure": RETURN_PRESSURE_DEG,
                             "rise": 60.0, "dwell": 10.0, "return": 60.0, "rise_law": "sine",
                             "return_law": "sine", "roller": "", "base": "", "distance": "", "phase": "",
                             "hub": HUB_MM, "boss": BOSS_MM, "clearance": CLEARANCE_MM}

@@ -20,11 +20,16 @@ from shaperapp.widgets.command_line import (add_cover_options, cover_from_args, 
 
 HELP = "write the whole course design: the report and every drawing sheet, from one design file"
 _NAMES = ", ".join(name for _, name in file_names(PARTS, dxf=False))
+# What each design-file key the parts need is, for the help: in the order the parts need them.
+_KEYS = {"rpm": "the speeds (\"rpm\")", "forces": "the loads (\"forces\")",
+         "cam": "the feed cam (\"cam\")", "gear": "the gear pair (\"gear\": z1, z2, module_mm)"}
+_NEEDED = list(dict.fromkeys(key for part in PARTS for key in part.needs))
+_NEEDS = ", ".join(_KEYS.get(key, f"\"{key}\"") for key in _NEEDED[:-1]) + \
+    f" and {_KEYS.get(_NEEDED[-1], _NEEDED[-1])}"
 DESCRIPTION = ("The course design (课程设计) of one design file in one folder, with numbered names: "
                f"{_NAMES} (and each sheet's .dxf beside its PDF with --dxf). The design file "
-               "must hold what every file needs: the linkage, the speeds (\"rpm\"), the loads "
-               "(\"forces\") and the feed cam (\"cam\"); without one the command names it and "
-               "writes nothing. The folder is made if it is not there (its parent must be); files "
+               f"must hold what every file needs: the linkage, {_NEEDS}; without one the command "
+               "names it and writes nothing. The folder is made if it is not there (its parent must be); files "
                "of the same names in it are replaced, each atomically, other files are left "
                "alone. Prints each file's path once it is complete. The report is A4, the sheets "
                "on --sheet paper; Chinese needs a font with Chinese glyphs (fonts-noto-cjk).")
@@ -36,7 +41,8 @@ EXAMPLES = ("shaper course --design my.shaper.json -o course",
 
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--design", required=True, metavar="FILE",
-                        help="the design file (saved by the GUI) with the linkage, speeds, loads and cam")
+                        help="the design file (saved by the GUI) with the linkage, speeds, loads, cam and "
+                             "gear pair")
     parser.add_argument("-o", "--output", required=True, metavar="DIR",
                         help="the folder to write into (made if missing; same-named files are replaced)")
     parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",

@@ -11,10 +11,12 @@ from __future__ import annotations
 import math
 
 from PySide6.QtCore import QEvent, QTimer
-from PySide6.QtWidgets import (QCheckBox, QFormLayout, QGroupBox, QLabel, QLineEdit,
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QFormLayout, QGroupBox, QLabel, QLineEdit,
                                QVBoxLayout, QWidget)
 
+from core.dynamics import GRAVITY
 from core.errors import DesignError
+from core.rotors import rotors_from_text, rotors_text
 
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
 
@@ -28,13 +30,20 @@ FIELD_UNITS = {
     "ram_mass_kg": "kg", "ram_cg_dx": "mm", "ram_cg_dy": "mm",
     "rod_mass_kg": "kg", "block_mass_kg": "kg",
     "cut_force_N": "N", "cut_height_mm": "mm", "idle_percent": "%",
-    "delta": "–",
+    "delta": "–", "lever_weight_N": "N", "ram_weight_N": "N", "guide_length_mm": "mm",
+    "rotors": "J:ω/ω2",
 }
-GROUPS = (("lever", ("lever_mass_kg", "lever_cg_mm", "lever_inertia_kg_m2")),
-          ("ram", ("ram_mass_kg", "ram_cg_dx", "ram_cg_dy")),
+GROUPS = (("lever", ("lever_given", "lever_mass_kg", "lever_weight_N", "lever_cg_mm",
+                     "lever_inertia_kg_m2")),
+          ("ram", ("ram_given", "ram_mass_kg", "ram_weight_N", "ram_cg_dx", "ram_cg_dy",
+                   "guide_length_mm")),
           ("links", ("rod_mass_kg", "block_mass_kg")),
           ("cutting", ("cut_force_N", "cut_height_mm", "idle_percent")),
-          ("flywheel", ("gravity", "delta")))
+          ("flywheel", ("gravity", "delta", "rotors")))
+# A link whose load is typed as a mass (kg) or, as the task book states it, a weight (N):
+# link → (mass field, weight field); the choice shows one of the two.
+GIVEN = {"lever": ("lever_mass_kg", "lever_weight_N"), "ram": ("ram_mass_kg", "ram_weight_N")}
+EMPTY_IS_NONE = ("lever_cg_mm", "guide_length_mm")     # empty: the default (L3/2, the stroke H)
 DELTA_DIGITS = 4                         # δ = 1/30 shows as 0.03333
 
 
@@ -66,6 +75,11 @@ class LoadsForm(QWidget):
 
         self._fields = {name: NumberField(unit) for name, unit in FIELD_UNITS.items()}
         self._gravity = QCheckBox(self)
+        self._given = {link: QComboBox(self) for link in GIVEN}
+        for combo in self._given.values():
+            combo.addItem("", "mass")
+            combo.addItem("", "weight")
+        self._forms: dict[str, QFormLayout] = {}
         self._labels: dict[str, QLabel] = {}
         self._boxes: dict[str, QGroupBox] = {}
         self._error_label = QLabel(self)
@@ -81,8 +95,9 @@ class LoadsForm(QWidget):
             for name in names:
                 label = QLabel(box)
                 self._labels[name] = label
-                form.addRow(label, self._gravity if name == "gravity" else self._fields[name])
+                form.addRow(label, self._widget(name))
             self._boxes[key] = box
+            self._forms[key] = form
             column.addWidget(box)
         column.addWidget(self._error_label)
         column.addStretch(1)
@@ -91,6 +106,8 @@ class LoadsForm(QWidget):
             number.edited.connect(lambda n=name: self._on_edited(n))
             number.edit.editingFinished.connect(self._commit)
         self._gravity.toggled.connect(lambda on: self._model.set_masses(gravity=on))
+        for link, combo in self._given.items():
+            combo.activated.connect(lambda _i, k=link: self._on_given(k))
         model.forcesChanged.connect(self._on_forces)
         model.forcesErrorChanged.connect(self._show_error)
         self._retranslate()
@@ -104,6 +121,17 @@ class LoadsForm(QWidget):
 
     def gravity_box(self) -> QCheckBox:
         return self._gravity
+
+    def given_box(self, link: str) -> QComboBox:
+        """The mass/weight choice of ``link`` ("lever" or "ram")."""
+        return self._given[link]
+
+    def _widget(self, name: str) -> QWidget:
+        if name == "gravity":
+            return self._gravity
+        if name.endswith("_given"):
+            return self._given[name.removesuffix("_given")]
+        return self._fields[name]
 
     def marked_fields(self) -> list[str]:
         """Names (as for :meth:`field`) of the inputs marked invalid."""
@@ -122,6 +150,9 @@ class LoadsForm(QWidget):
     def _show_placeholder(self) -> None:
         half = format_number(self._model.design.lever / 2.0)
         self._fields["lever_cg_mm"].edit.setPlaceholderText(self.tr("L3/2 = {0}").format(half))
+        stroke = format_number(self._model.design.stroke)
+        self._fields["guide_length_mm"].edit.setPlaceholderText(self.tr("H = {0}").format(stroke))
+        self._fields["rotors"].edit.setPlaceholderText(self.tr("none"))
 
     # ---- text ----------------------------------------------------------
     def changeEvent(self, event: QEvent) -> None:
@@ -159,6 +190,27 @@ class LoadsForm(QWidget):
             "idle_percent": (self.tr("Idle margin"),
                              self.tr("Uncut run-in and run-out at each end of the working "
                                      "stroke, % of the stroke H (0 to under 50)")),
+            "lever_given": (self.tr("Load given as"),
+                            self.tr("The lever's load as a mass in kg, or as the task book states "
+                                    "it, a weight G4 in N (mass = G4/9.81)")),
+            "lever_weight_N": (self.tr("Weight G4"),
+                               self.tr("Weight of the slotted lever O4B, N, as the task book states it")),
+            "ram_given": (self.tr("Load given as"),
+                          self.tr("The ram's load as a mass in kg, or as the task book states it, "
+                                  "a weight G6 in N (mass = G6/9.81)")),
+            "ram_weight_N": (self.tr("Weight G6"),
+                             self.tr("Weight of the ram with the tool, N, as the task book states it")),
+            "guide_length_mm": (self.tr("Guide length"),
+                                self.tr("Length of the ram's guide (the column's ways), centred on "
+                                        "the ram's mid-travel, mm; leave empty for the stroke H. "
+                                        "Where the guide's reaction falls outside it, the ram tilts "
+                                        "and bears on the guide's two ends")),
+            "rotors": (self.tr("Rotating parts"),
+                       self.tr("Other rotating parts (crank shaft, gears, motor) for the flywheel, "
+                               "each J:ratio, J in kg·m² and its speed over the crank's, separated "
+                               "by ';' (e.g. 0.5:1; 0.02:15); J:gear takes z2/z1 of the Gear tab's "
+                               "pair, for the pinion shaft. The flywheel needed is "
+                               "J_F − Σ J·ratio²")),
             "gravity": (self.tr("Gravity"),
                         self.tr("Include the weights of the links (g = 9.81 m/s²)")),
             "delta": (self.tr("Speed fluctuation δ"),
@@ -176,7 +228,11 @@ class LoadsForm(QWidget):
         for name, (text, tip) in self._field_texts().items():
             self._labels[name].setText(text)
             self._labels[name].setToolTip(tip)
-            (self._gravity if name == "gravity" else self._fields[name].edit).setToolTip(tip)
+            widget = self._widget(name)
+            (widget.edit if isinstance(widget, NumberField) else widget).setToolTip(tip)
+        for combo in self._given.values():
+            combo.setItemText(0, self.tr("mass, kg"))
+            combo.setItemText(1, self.tr("weight, N"))
         self._gravity.setText(self.tr("include weights"))
         self._show_placeholder()
         self._show_error()
@@ -190,8 +246,13 @@ class LoadsForm(QWidget):
         """What the field means in model units: float, None (empty centre of mass) or the
         text itself when it is not a number."""
         text = self._fields[name].edit.text()
-        if name == "lever_cg_mm" and not text.strip():
+        if name in EMPTY_IS_NONE and not text.strip():
             return None
+        if name == "rotors":
+            try:
+                return rotors_from_text(text, self._gear_ratio())
+            except DesignError:
+                return text                     # the model names the part that is wrong
         if name == "delta":
             return parse_ratio(text)
         value = parse_number(text)
@@ -205,6 +266,8 @@ class LoadsForm(QWidget):
             return ""
         if isinstance(value, str):
             return value
+        if name == "rotors":
+            return rotors_text(value)  # type: ignore[arg-type]
         if name == "idle_percent":
             return format_number(float(value) * 100.0)
         if name == "delta":
@@ -234,6 +297,40 @@ class LoadsForm(QWidget):
         self._gravity.blockSignals(True)
         self._gravity.setChecked(bool(values["gravity"]))
         self._gravity.blockSignals(False)
+        for link, (mass, weight) in GIVEN.items():
+            as_weight = values[weight] is not None
+            self._given[link].setCurrentIndex(1 if as_weight else 0)
+            form = self._forms[link]
+            form.setRowVisible(self._fields[mass], not as_weight)
+            form.setRowVisible(self._fields[weight], as_weight)
+
+    def _gear_ratio(self) -> float | None:
+        """z2/z1 of the design's gear pair (the Gear tab's, as Save writes it): the speed of
+        the pinion shaft over the crank's, for a rotating part typed as ``J:gear``."""
+        from core.gear.file import gear_from_dict
+        try:
+            pair = gear_from_dict(self._model.saved_parts().get("gear"))
+        except DesignError:
+            return None
+        return pair.z2 / pair.z1
+
+    def _on_given(self, link: str) -> None:
+        """Switch a link between mass and weight, carrying the value over (m·g or G/g)."""
+        self._commit()
+        mass, weight = GIVEN[link]
+        inputs = self._model.mass_inputs
+        if self._given[link].currentData() == "weight":
+            if inputs.get(weight) is not None:
+                return
+            value = inputs.get(mass)
+            carried = float(f"{value * GRAVITY:.12g}") if isinstance(value, float) else value
+            self._model.set_masses(**{weight: carried, mass: 0.0})
+        else:
+            if inputs.get(weight) is None:
+                return
+            value = inputs.get(weight)
+            carried = float(f"{value / GRAVITY:.12g}") if isinstance(value, float) else value
+            self._model.set_masses(**{mass: carried, weight: None})
 
     def _on_edited(self, name: str) -> None:
         self._pending.add(name)
@@ -252,6 +349,11 @@ class LoadsForm(QWidget):
                 changes["idle_fraction"] = self._value(name)
             else:
                 changes[name] = self._value(name)
+        for mass, weight in GIVEN.values():      # the one typed stands, the other is unset
+            if weight in changes:
+                changes[mass] = 0.0
+            elif mass in changes:
+                changes[weight] = None
         self._pending.clear()
         current = self._model.mass_inputs
         changes = {key: value for key, value in changes.items() if current.get(key) != value}
@@ -262,6 +364,8 @@ class LoadsForm(QWidget):
         """Fields to mark for ``error``: the ram offset names its component by value."""
         if error.parameter == "idle_fraction":
             return ["idle_percent"]
+        if error.parameter in ("rotor_inertia_kg_m2", "rotor_ratio"):
+            return ["rotors"]
         if error.parameter == "ram_cg_mm":
             values = self._model_values()
             for name in ("ram_cg_dx", "ram_cg_dy"):

@@ -79,12 +79,14 @@ class SummaryOnDemand:
         """Every value NaN (shown as such), for a summary that cannot be computed."""
         phi = np.linspace(0.0, 2.0 * np.pi, ENERGY_INTERVALS + 1)
         nan = float("nan")
-        speeds = tuple(SpeedSummary(float(r), float(w), *([nan] * 8))
+        speeds = tuple(SpeedSummary(float(r), float(w), *([nan] * 8), flywheel_needed=False,
+                                    flywheel_inertia_net_kg_m2=nan)
                        for r, w in zip(self.rpm, rpm_to_omega(np.asarray(self.rpm, dtype=float))))
         return DynamicsSummary(masses=self.masses, crank_angle=phi,
                                energy=np.full((len(speeds), phi.size), nan),
                                equivalent_inertia=np.full(phi.size, nan),
-                               equivalent_inertia_mean_kg_m2=nan, speeds=speeds)
+                               equivalent_inertia_mean_kg_m2=nan, rotor_inertia_kg_m2=nan,
+                               speeds=speeds)
 
 
 def solve_forces(design: Design, motion: Motion,

@@ -32,4 +32,12 @@ def forces_labels() -> dict[str, str]:
         "J_F": translate("Drawing", "Flywheel J_F = ΔW_max/(ω²δ)"),
         "J_e": translate("Drawing", "Mean reduced inertia J_e"),
         "J_net": translate("Drawing", "Flywheel to add J_F − J_e"),
+        "J_c": translate("Drawing", "Rotating parts J_c at the crank"),
+        "J_needed": translate("Drawing", "Flywheel needed J_F − J_c"),
+        "J_net_rotors": translate("Drawing", "Flywheel to add J_F − J_c − J_e"),
+        "none_needed": translate("Drawing", "none needed (J_c ≥ J_F)"),
+        "guide_at": translate("Drawing", "Guide reaction N, φ = {angle}°"),
+        "guide_inside": translate("Drawing", "{n} N, {x} mm from C"),
+        "guide_ends_at": translate("Drawing", "Guide ends rear / front, φ = {angle}°"),
+        "guide_ends": translate("Drawing", "{rear} N / {front} N"),
     }

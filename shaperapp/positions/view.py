@@ -78,7 +78,7 @@ class PositionsModel(QAbstractTableModel):
         titles, specials = column_titles(), special_titles()
         cols = [i for i, c in enumerate(table.columns) if c not in HIDDEN]
         k = table.positions.crank_deg.size
-        shown = display_values(table.data)[speed * k:(speed + 1) * k]
+        shown = display_values(table.data, table.columns)[speed * k:(speed + 1) * k]
         self._header = [titles.get(table.columns[i], table.columns[i]) for i in cols]
         self._corner = self.tr("Position")
         self._tips = [table.columns[i] for i in cols]

@@ -36,6 +36,7 @@ from . import figures
 from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences, typeset
 from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison
+from .design_data import cam_rows, flywheel_formula, gear_rows, load_rows
 from .gear import gear_blocks
 from .positions import position_tables, positions_note
 
@@ -80,7 +81,9 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
     views = figures.ReportViews(spec, rpms, used, metrics)
     try:
         add(Heading(translate("Report", "1 Design inputs")))
-        add(KeyValues(_inputs(spec, rpms, used)))
+        add(KeyValues(_inputs(spec, rpms, used) + (load_rows(used, design) if used is not None else [])
+                      + (cam_rows(options.cam) if options.cam is not None else [])
+                      + (gear_rows(options.gear) if options.gear is not None else [])))
         add(Heading(translate("Report", "2 Synthesized dimensions and validation margins")))
         add(KeyValues(_dimensions(design)))
         add(_margin_table(design))
@@ -110,7 +113,8 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                            figures.polygon_paint(design, deg, rpms[0], used, kind, language)))
         if summary is not None:
             add(Heading(translate("Report", "7 Crank torque, energy and flywheel")))
-            add(KeyValues(_loads(used, design)))
+            add(Paragraph(translate("Report", "<b>Flywheel.</b> On the crank shaft, %1; the loads "
+                                    "are those of section 1.").replace("%1", flywheel_formula(used))))
             add(_dynamics_table(summary, design))
             add(Figure(translate("Report", "Crank torque, input power, energy fluctuation ΔE and "
                                  "joint forces over one revolution"), 170.0, 170.0, views.forces()))
@@ -228,33 +232,32 @@ def _speed_table(metrics: CycleMetrics) -> Table:
         translate("Report", "Cycle metrics per crank speed"))
 
 
-def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
-    rows = [(translate("Report", "Lever mass, centre of mass, inertia"),
-             f"{masses.lever_mass_kg:g} kg, {masses.lever_cg(design):g} mm, {masses.lever_inertia_kg_m2:g} kg·m²"),
-            (translate("Report", "Ram mass"), f"{masses.ram_mass_kg:g} kg")]
-    if design.rod is not None:
-        rows.append((translate("Report", "Rod mass"), f"{masses.rod_mass_kg:g} kg"))
-    rows += [(translate("Report", "Cutting force, height below the guide"),
-              f"{masses.cut_force_N:g} N, {masses.cut_height_mm:g} mm"),
-             (translate("Report", "Idle margin at each end of the stroke"), f"{masses.idle_fraction:g} H"),
-             (translate("Report", "Gravity"), translate("Report", "on") if masses.gravity else translate("Report", "off")),
-             (translate("Report", "Coefficient of speed fluctuation δ"), f"{masses.delta:.5g}")]
-    return rows
-
-
 def _dynamics_table(summary: DynamicsSummary, design: Design) -> Table:
-    """As ``shaper dynamics`` prints it (J_e, the same at every speed, in each column)."""
+    """As ``shaper dynamics`` prints it (J_e and J_c, the same at every speed, in each column)."""
     shared = dict(summary_rows(design, summary.masses, summary))
-    rows = [dynamics_speed_rows(s) + [("J_e", shared["mean reduced inertia J_e"])]
-            for s in summary.speeds]
-    return _per_speed(rows, [s.rpm for s in summary.speeds], {
+    rotors = summary.rotor_inertia_kg_m2 if summary.masses.rotors else None
+    rows = []
+    for s in summary.speeds:
+        row = dynamics_speed_rows(s, rotors) + [("J_e", shared["mean reduced inertia J_e"])]
+        if rotors is not None:
+            row.append(("J_c", f"{rotors:.5g} kg·m²"))
+            if not s.flywheel_needed:          # the CLI's words, in the report's language
+                row.append(("flywheel needed J_F − J_c", translate("Report", "none needed (J_c ≥ J_F)")))
+        rows.append(row)
+    labels = {
         "mean / max crank torque": translate("Report", "Mean / max crank torque"),
         "mean power": translate("Report", "Mean power (motor, before efficiency)"),
         "energy fluctuation ΔW_max": translate("Report", "Energy fluctuation ΔW_max"),
-        "flywheel J_F": translate("Report", "Flywheel J_F on the crank shaft"),
-        "flywheel J_F − J_e (net)": translate("Report", "Flywheel J_F − J_e (net)"),
-        "J_e": translate("Report", "Mean reduced inertia J_e")},
-        translate("Report", "Torque, power and flywheel per crank speed"))
+        "flywheel J_F": translate("Report", "Flywheel J_F on the crank shaft")}
+    if rotors is None:
+        labels["flywheel J_F − J_e (net)"] = translate("Report", "Flywheel J_F − J_e (net)")
+    else:
+        labels.update({"J_c": translate("Report", "Rotating parts at the crank J_c"),
+                       "flywheel needed J_F − J_c": translate("Report", "Flywheel needed J_F − J_c"),
+                       "flywheel J_F − J_c − J_e (net)": translate("Report", "Flywheel J_F − J_c − J_e (net)")})
+    labels["J_e"] = translate("Report", "Mean reduced inertia J_e")
+    return _per_speed(rows, [s.rpm for s in summary.speeds], labels,
+                      translate("Report", "Torque, power and flywheel per crank speed"))
 
 
 def _method(spec: Spec) -> str:

@@ -50,7 +50,7 @@ def positions_note(table: PositionTable) -> str:
 def position_tables(table: PositionTable) -> list[Table]:
     """The whole table for each of the first ``full_speeds`` speeds, then (for more
     speeds) the ``ACROSS_SPEEDS`` columns at every speed."""
-    shown = display_values(table.data)
+    shown = display_values(table.data, table.columns)
     k = table.positions.crank_deg.size
     lead = _lead(table)
     titles, groups = column_titles(), group_titles()

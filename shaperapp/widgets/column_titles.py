@@ -37,6 +37,9 @@ def column_titles() -> dict[str, str]:
         "guide_normal_N": translate("Columns", "guide N (N)"),
         "guide_moment_N_m": translate("Columns", "guide moment (N·m)"),
         "guide_offset_mm": translate("Columns", "N offset (mm)"),
+        "guide_rear_N": translate("Columns", "guide rear end (N)"),
+        "guide_front_N": translate("Columns", "guide front end (N)"),
+        "guide_tilted": translate("Columns", "ram tilted on the guide ends"),
         "cut_force_N": translate("Columns", "cutting force P (N)"),
     }
 
