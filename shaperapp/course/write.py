@@ -25,12 +25,14 @@ from shaperapp.report.content import Options, build
 @dataclass(frozen=True)
 class Covering:
     """What the user adds to every file: the paper of the sheets, the design's name, the
-    date and the cover fields (student, number, group, school, supervisor)."""
+    date, the cover fields (student, number, group, school, supervisor) and which of the
+    design's speeds the sheets are drawn at (0: the first; the report shows them all)."""
 
     paper: str = "A1"
     title: str = ""
     date: str = ""
     cover: dict[str, str] = field(default_factory=dict)
+    speed: int = 0
 
 
 def write_course(course: Course, language: str, covering: Covering) -> Iterator[CourseFile]:
@@ -64,7 +66,7 @@ def _sheet(course: Course, part, covering: Covering):
     choice = SheetChoice(part.content, covering.paper, DEFAULT_COUNT, None, covering.title,
                          cover.get("student", ""), covering.date, cover.get("school", ""),
                          number=cover.get("number", ""), group=cover.get("group", ""),
-                         supervisor=cover.get("supervisor", ""))
+                         supervisor=cover.get("supervisor", ""), speed=covering.speed)
     if part.drawn:
         choice = replace(choice, **{part.drawn: course.drawn[part.drawn]})
     return build_sheet(course.spec, course.rpms, course.masses, choice)
