@@ -95,7 +95,7 @@ def test_the_dialog_draws_the_chosen_speed(model, qtbot, tmp_path):
 
 
 def test_the_course_draws_its_sheets_at_the_chosen_speed(tmp_path, monkeypatch):
-    monkeypatch.setattr("shaperapp.course.write.write_report", lambda report, path: None)
+    monkeypatch.setattr("shaperapp.course.write.write_report", lambda *args: None)
     monkeypatch.setattr("shaperapp.course.write._report", lambda *args: None)   # sheets only
     path = tmp_path / "d.shaper.json"
     path.write_text(json.dumps(design_document(Spec(), [40.0, 60.0], 1.0, {
