@@ -104,3 +104,27 @@ def test_a_tabs_first_visit(benchmark, qtbot, tmp_path, tab):
     for win in windows:
         win.model.set_clean("")
         win.close()
+
+
+def test_the_reports_longest_slice(benchmark, qtbot, tmp_path):
+    """The report of 16 speeds written as File › Export report writes it: the time between
+    two of its progress steps is how long the window waits to repaint or to hear Cancel
+    (the longest and the total go into extra_info)."""
+    from core.progress import Progress
+    from shaperapp.report.dialog import export_report
+    model = DesignModel()
+    model.set_rpms(SPEEDS)
+    slices = []
+
+    def run():
+        last = [time.perf_counter()]
+
+        def heard(_fraction: float) -> None:
+            now = time.perf_counter()
+            slices.append(now - last[0])
+            last[0] = now
+        export_report(model, str(tmp_path / "r.pdf"), "en", progress=Progress(heard))
+
+    benchmark.pedantic(run, rounds=2, iterations=1)
+    benchmark.extra_info["longest_slice_s"] = max(slices)
+    benchmark.extra_info["steps"] = len(slices) // 2

@@ -66,7 +66,7 @@ def default_diagram_angles(table: PositionTable, metrics: CycleMetrics) -> tuple
 
 # the steps of :func:`build` that every report takes (a section or two, each ≲ 1.5 s with
 # 16 speeds), and those of the sections a report may add
-BUILD_STEPS = 7
+BUILD_STEPS = 9
 CAM_STEPS = 3
 BUILD_SHARE = 0.85     # of a report's progress: building it (views, sections); its pages the rest
 
@@ -99,7 +99,7 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         step()
         add(Heading(translate("Report", "3 The mechanism at its limit positions")))
         add(Figure(translate("Report", "Scheme to scale at the limit positions that start and end "
-                             "the working stroke"), 170.0, 85.0, views.limit_schemes()))
+                             "the working stroke"), 170.0, 85.0, views.limit_schemes(step)))
         step()
         add(Heading(translate("Report", "4 Motion of the ram and cycle metrics")))
         add(KeyValues(_cycle(metrics)))
