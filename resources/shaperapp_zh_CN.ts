@@ -703,10 +703,6 @@
         <translation>正在写入课程设计…</translation>
     </message>
     <message>
-        <source>Cancel</source>
-        <translation>取消</translation>
-    </message>
-    <message>
         <source>Export course design</source>
         <translation>导出课程设计</translation>
     </message>
@@ -737,6 +733,29 @@
     <message>
         <source>Export course design: choose a folder</source>
         <translation>导出课程设计：选择文件夹</translation>
+    </message>
+</context>
+<context>
+    <name>CourseOptionsDialog</name>
+    <message>
+        <source>Export course design</source>
+        <translation>导出课程设计</translation>
+    </message>
+    <message>
+        <source>Each sheet as DXF too, beside its PDF</source>
+        <translation>每张图纸另存 DXF（与 PDF 同目录）</translation>
+    </message>
+    <message>
+        <source>%1 r/min</source>
+        <translation>%1 r/min</translation>
+    </message>
+    <message>
+        <source>Paper of the sheets:</source>
+        <translation>图纸图幅：</translation>
+    </message>
+    <message>
+        <source>Sheets at crank speed:</source>
+        <translation>图纸所用曲柄转速：</translation>
     </message>
 </context>
 <context>
@@ -1669,12 +1688,20 @@
         <translation>进给凸轮</translation>
     </message>
     <message>
+        <source>%1 r/min</source>
+        <translation>%1 r/min</translation>
+    </message>
+    <message>
         <source>Paper:</source>
         <translation>图幅：</translation>
     </message>
     <message>
         <source>Content:</source>
         <translation>内容：</translation>
+    </message>
+    <message>
+        <source>Crank speed:</source>
+        <translation>曲柄转速：</translation>
     </message>
     <message>
         <source>Positions:</source>
@@ -3742,6 +3769,13 @@
     </message>
 </context>
 <context>
+    <name>Progress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+</context>
+<context>
     <name>Report</name>
     <message>
         <source>Design report: quick-return mechanism of a shaper</source>
@@ -4701,6 +4735,10 @@
     <message>
         <source>A report is written as PDF (.pdf) or HTML (.html, .htm); %1 is neither. Nothing was written.</source>
         <translation>设计说明书只能保存为 PDF（.pdf）或 HTML（.html、.htm）；%1 两者都不是。未写入任何文件。</translation>
+    </message>
+    <message>
+        <source>Writing the report…</source>
+        <translation>正在写入说明书…</translation>
     </message>
     <message>
         <source>No font with Chinese characters is installed. Install one (on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.</source>

@@ -12,7 +12,7 @@ from __future__ import annotations
 import time
 
 from PySide6.QtCore import QObject, QTimer
-from PySide6.QtWidgets import QApplication, QDialog, QMessageBox, QWidget
+from PySide6.QtWidgets import QApplication, QDialog, QMessageBox, QProgressDialog, QWidget
 
 POLL_MS = 250
 
@@ -30,7 +30,7 @@ class ModalWatchdog(QObject):
         super().__init__()
         self.limit_s = limit_s
         self.closed: list[str] = []
-        self._since: tuple[QWidget, float] | None = None
+        self._since: tuple[QWidget, float, int] | None = None
         self._timer = QTimer(self, interval=POLL_MS)
         self._timer.timeout.connect(self._check)
 
@@ -45,8 +45,10 @@ class ModalWatchdog(QObject):
         if modal is None:
             self._since = None
             return
-        if self._since is None or self._since[0] is not modal:
-            self._since = (modal, time.monotonic())
+        # a progress dialog whose bar has moved since the last look waits for no answer
+        moved = modal.value() if isinstance(modal, QProgressDialog) else 0
+        if self._since is None or self._since[0] is not modal or self._since[2] != moved:
+            self._since = (modal, time.monotonic(), moved)
             return
         if time.monotonic() - self._since[1] >= self.limit_s:
             self.closed.append(describe(modal))

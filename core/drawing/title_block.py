@@ -22,6 +22,7 @@ TITLE_SIGN_COLUMNS = (22.0, 34.0, 24.0)      # role, name, date
 TITLE_OTHER_COLUMNS = (22.0, 28.0)           # label, value
 TITLE_NAME_ROWS = (18.0, 18.0, 20.0)         # the unit (school), the drawing's name, its code (the design)
 TITLE_ROWS = 4
+SPEED_ROW = 7.0                              # mm of the design's cell under its name: the sheet's speed
 TITLE_ROW = TITLE_HEIGHT / TITLE_ROWS
 TITLE_LABEL_KEYS = ("design", "scale", "sheet", "drawn", "date", "checked", "approved",
                     "number", "class", "supervisor")
@@ -48,6 +49,7 @@ class TitleBlock:
     number: str = ""           # the student's number
     group: str = ""            # the class
     supervisor: str = ""
+    speed: str = ""            # the crank speed the sheet is drawn at, "n_2 = 60 r/min" (index notation; '' for none)
 
 
 def title_block_box(p: Paper) -> Box:
@@ -59,7 +61,8 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
     """The title block in the border's lower right corner, GB/T 10609.1's 180 × 56 mm:
     left the signature area (drawn by the student with the date, the supervisor, checked,
     approved: role, name, date), in the middle the student number, the class, the scale
-    and the sheet, right the school, the sheet's name (large) and the design. The outline
+    and the sheet, right the school, the sheet's name (large) and the design, under it the
+    crank speed the sheet is drawn at (a sheet of one speed of several). The outline
     and the zones' borders thick, the cells thin."""
     x0, y0, x1, y1 = title_block_box(p)
     lab = lambda key: block.labels.get(key, key)            # noqa: E731
@@ -91,6 +94,9 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
         cell(value, other[1], other[2], top, bottom)
     for text, k, largest in ((block.school, 0, 5.0), (block.title, 1, 7.0), (block.design, 2, 5.0)):
         box = (right, float(names[k + 1]), x1, float(names[k]))
+        if k == 2 and block.speed:          # the design over the speed it is drawn at
+            box, speed_box = (right, box[1] + SPEED_ROW, x1, box[3]), (right, box[1], x1, box[1] + SPEED_ROW)
+            items.append(cell_text(block.speed, speed_box, 3.5, layer=TITLE, notation=True))
         items += wrapped_cell(text, box, largest) if text else []
     return items
 

@@ -82,6 +82,8 @@ class CamPlots(QWidget):
         for plot in self.plots:
             plot.getPlotItem().vb.sigYRangeChanged.connect(self._fit_timer.start)
         self.curves: dict[str, object] = {}
+        self._curve_rpms: tuple[float, ...] | None = None       # the speeds the curve items are for
+        self._speed_curves: dict[str, list] = {"omega": [], "alpha": []}
         self._stale = False
         cam_model.camChanged.connect(self.redraw)
         cam_model.design_model.angleChanged.connect(self.move_cursor)
@@ -142,22 +144,17 @@ class CamPlots(QWidget):
         self._stale = False
         d = self.data()
         cam = self._model.cam
-        for plot in self.plots:
-            for item in list(plot.listDataItems()):
-                plot.removeItem(item)
         x = d["cam_deg"]
-        self.curves["psi"] = self.angle_plot.plot(x, d["psi_deg"], pen=pg.mkPen(speed_colour(0), width=2))
-        for i, rpm in enumerate(self._model.design_model.rpms):
-            pen = pg.mkPen(speed_colour(i), width=2)
-            self.speed_plot.plot(x, d["omega"][i], pen=pen, name=f"{rpm:g} r/min")
-            self.accel_plot.plot(x, d["alpha"][i], pen=pen, name=f"{rpm:g} r/min")
-        self.curves["pressure"] = self.pressure_plot.plot(x, d["pressure_deg"], pen=pg.mkPen(speed_colour(0), width=2))
+        self._make_curves(tuple(self._model.design_model.rpms))
+        self.curves["psi"].setData(x, d["psi_deg"])
+        for i, (omega, alpha) in enumerate(zip(self._speed_curves["omega"], self._speed_curves["alpha"])):
+            omega.setData(x, d["omega"][i])
+            alpha.setData(x, d["alpha"][i])
+        self.curves["pressure"].setData(x, d["pressure_deg"])
         prog = cam.program
-        rise_end = prog.rise_deg
         back = (prog.rise_deg + prog.dwell_deg, prog.feed_deg)
-        dash = pg.mkPen(ALLOWANCE, width=1.5, style=pg.QtCore.Qt.PenStyle.DashLine)
-        self.pressure_plot.plot([0.0, rise_end], [cam.inputs.pressure_deg] * 2, pen=dash)
-        self.pressure_plot.plot(list(back), [cam.inputs.return_pressure_deg] * 2, pen=dash)
+        self.curves["rise_allowed"].setData([0.0, prog.rise_deg], [cam.inputs.pressure_deg] * 2)
+        self.curves["return_allowed"].setData(list(back), [cam.inputs.return_pressure_deg] * 2)
         self.pressure_plot.setYRange(0.0, max(90.0, float(d["pressure_deg"].max())), padding=0.02)
         for plot in self.plots:                         # ranges now, for the axes' widths
             box = plot.getPlotItem().vb
@@ -165,6 +162,28 @@ class CamPlots(QWidget):
             box.updateMatrix()
         self.fit_axes()
         self.move_cursor()
+
+    def _make_curves(self, rpms: tuple[float, ...]) -> None:
+        """The curve items, made once per set of speeds (their legend names them) and
+        given new data on every redraw: making 36 items for 16 speeds took most of an
+        edit's time (issue 40)."""
+        if rpms == self._curve_rpms:
+            return
+        self._curve_rpms = rpms
+        for plot in self.plots:
+            for item in list(plot.listDataItems()):
+                plot.removeItem(item)
+        first = pg.mkPen(speed_colour(0), width=2)
+        self.curves["psi"] = self.angle_plot.plot(pen=first)
+        self._speed_curves = {"omega": [], "alpha": []}
+        for i, rpm in enumerate(rpms):
+            pen = pg.mkPen(speed_colour(i), width=2)
+            self._speed_curves["omega"].append(self.speed_plot.plot(pen=pen, name=f"{rpm:g} r/min"))
+            self._speed_curves["alpha"].append(self.accel_plot.plot(pen=pen, name=f"{rpm:g} r/min"))
+        self.curves["pressure"] = self.pressure_plot.plot(pen=first)
+        dash = pg.mkPen(ALLOWANCE, width=1.5, style=pg.QtCore.Qt.PenStyle.DashLine)
+        self.curves["rise_allowed"] = self.pressure_plot.plot(pen=dash)
+        self.curves["return_allowed"] = self.pressure_plot.plot(pen=dash)
 
     def render(self, painter: QPainter, target: QRectF, cursor: bool = False) -> None:
         """Paint the four plots as laid out into ``target`` of any painter (the report):

@@ -15,8 +15,8 @@ from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
 from core.course import PARTS, CourseError, file_names, plan_course, read_document
 from core.drawing.sheet import PAPERS
 
-from shaperapp.widgets.command_line import (add_cover_options, cover_from_args, design_name,
-                                            start_qt)
+from shaperapp.widgets.command_line import (add_cover_options, add_sheet_speed_option,
+                                            cover_from_args, design_name, sheet_speed, start_qt)
 
 HELP = "write the whole course design: the report and every drawing sheet, from one design file"
 _NAMES = ", ".join(name for _, name in file_names(PARTS, dxf=False))
@@ -31,8 +31,8 @@ DESCRIPTION = ("The course design (课程设计) of one design file in one folde
                f"must hold what every file needs: the linkage, {_NEEDS}; without one the command "
                "names it and writes nothing. The folder is made if it is not there (its parent must be); files "
                "of the same names in it are replaced, each atomically, other files are left "
-               "alone. Prints each file's path once it is complete. The report is A4, the sheets "
-               "on --sheet paper; Chinese needs a font with Chinese glyphs (fonts-noto-cjk).")
+               "alone. Prints each file's path once it is complete. The report is A4 with every "
+               "speed, the sheets on --sheet paper at one speed (--rpm-index); Chinese needs a font with Chinese glyphs (fonts-noto-cjk).")
 EXAMPLES = ("shaper course --design my.shaper.json -o course",
             "shaper course --design my.shaper.json --lang zh --sheet A2 --dxf --student 张三 "
             "--student-number 2021001 --class 机械2101 --school 机械工程学院 --supervisor 李四 "
@@ -51,6 +51,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help=f"paper of the drawing sheets, landscape: {', '.join(PAPERS)} (default A1)")
     parser.add_argument("--dxf", action="store_true", help="write each sheet as DXF too, beside its PDF")
     add_cad_font_option(parser)
+    add_sheet_speed_option(parser)
     block = parser.add_argument_group("cover and title blocks (blank when not given, to fill in by hand)")
     block.add_argument("--title", metavar="TEXT", help="design name (default: the design file's name)")
     add_cover_options(block, "the date (default: today, YYYY-MM-DD)")
@@ -62,12 +63,13 @@ def run(args: argparse.Namespace) -> int:
     if paper not in PAPERS:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
     cover, date = cover_from_args(args)
-    covering = Covering(paper, design_name(args), date, cover, cad_font_from_args(args, args.dxf))
     doc, keys = read_document(args.design)          # FileFormatError: "--design: …"
     try:
         course = plan_course(doc, keys, args.design, args.output, dxf=args.dxf)
     except CourseError as exc:
         raise (UsageError if exc.option == "--design" else OutputError)(str(exc)) from None
+    covering = Covering(paper, design_name(args), date, cover, speed=sheet_speed(args, len(course.rpms)),
+                        cad_font=cad_font_from_args(args, args.dxf))
     start = time.perf_counter()
     language = start_qt(args.lang)
     from .write import write_course

@@ -1,31 +1,38 @@
-"""File › Export course design…: a folder, then the report and every sheet written into it
-with a progress bar, by the same code as ``shaper course``.
+"""File › Export course design…: the sheets' paper, DXF and speed (``shaper course``'s
+--sheet, --dxf, --rpm-index), a folder, then the report and every sheet written into it
+under a progress dialog (``widgets.progress_dialog``), by the same code as ``shaper course``.
 
 The design is the one on screen as Save would write it (``document.saved_parts``), read
 back by the design file's own reader, so the GUI and the command make the same files
 and refuse the same things, before anything is written. The cover fields are the report
-dialog's (``COVER_SETTINGS``). Cancel stops between two files: the files written so far
-stay, each complete, and the message says how many; the file being written when Cancel
-is pressed is finished first (a file is never left half-written).
+dialog's (``COVER_SETTINGS``). The bar moves with every section and page of the report
+and every sheet. Cancel stops at the next of those steps: the files written so far stay,
+each complete, and the message says how many; the file being made is not written (each
+file is written atomically, in one go, once it is whole).
 """
 from __future__ import annotations
 
 import datetime
 import json
 import os
+from dataclasses import dataclass
 
-from PySide6.QtCore import QCoreApplication, QSettings, Qt
-from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox, QProgressDialog, QWidget
+from PySide6.QtCore import QCoreApplication, QSettings
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFileDialog,
+                               QFormLayout, QMessageBox, QWidget)
 
 from core.course import CourseError, plan_course
 from core.design_file import parse_design
+from core.drawing.sheet import PAPERS
 from core.io import design_document
+from core.progress import Cancelled
 
 from shaperapp.design.document import saved_parts
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.messages import describe_os_error, failure_reason
+from shaperapp.widgets.progress_dialog import run_with_progress
 
 from .write import Covering, write_course
 
@@ -41,20 +48,64 @@ def key_names() -> dict[str, str]:
             "gear": translate("CourseExport", "the gear pair")}
 
 
-def covering(model: DesignModel, settings: QSettings | None, paper: str = "A1") -> Covering:
-    """The design's name (its file's), today's date and the report dialog's cover fields."""
+@dataclass(frozen=True)
+class CourseOptions:
+    """What ``shaper course`` takes besides the design: --sheet, --dxf and --rpm-index."""
+
+    paper: str = "A1"
+    dxf: bool = False
+    speed: int = 0          # the sheets' speed, an index into the design's speeds
+
+
+class CourseOptionsDialog(QDialog):
+    """The sheets' paper (A0–A3), DXF beside each PDF, and the speed they are drawn at."""
+
+    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle(self.tr("Export course design"))
+        self.paper = QComboBox()
+        self.paper.addItems(list(PAPERS))
+        self.paper.setCurrentText(CourseOptions.paper)
+        self.dxf = QCheckBox(self.tr("Each sheet as DXF too, beside its PDF"))
+        self.speed = QComboBox()
+        for rpm in model.rpms:
+            self.speed.addItem(self.tr("%1 r/min").replace("%1", f"{rpm:g}"))
+        form = QFormLayout(self)
+        form.addRow(self.tr("Paper of the sheets:"), self.paper)
+        form.addRow(self.tr("Sheets at crank speed:"), self.speed)
+        form.addRow(self.dxf)
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
+        buttons.accepted.connect(self.accept)
+        buttons.rejected.connect(self.reject)
+        form.addRow(buttons)
+
+    def options(self) -> CourseOptions:
+        return CourseOptions(self.paper.currentText(), self.dxf.isChecked(), self.speed.currentIndex())
+
+
+def ask_course_options(model: DesignModel, parent: QWidget | None) -> CourseOptions | None:
+    """The options as the user chooses them, or None when the dialog is cancelled."""
+    dialog = CourseOptionsDialog(model, parent)
+    accepted = dialog.exec() == QDialog.DialogCode.Accepted
+    dialog.deleteLater()
+    return dialog.options() if accepted else None
+
+
+def covering(model: DesignModel, settings: QSettings | None, paper: str = "A1", speed: int = 0) -> Covering:
+    """The design's name (its file's), today's date, the report dialog's cover fields, the
+    sheets' paper and speed."""
     cover = {key: plain_text(str(settings.value(COVER_SETTINGS + key, "") or "")) if settings else ""
              for key in COVER_FIELDS}
     name = design_file_name(model.path) if model.path else ""
-    return Covering(paper, name, datetime.date.today().isoformat(), cover)
+    return Covering(paper, name, datetime.date.today().isoformat(), cover, speed=speed)
 
 
-def plan(model: DesignModel, folder: str):
+def plan(model: DesignModel, folder: str, dxf: bool = False):
     """The checked course design of the model (CourseError as ``shaper course`` refuses)."""
     doc = design_document(model.valid_spec, model.rpms, model.step_deg, saved_parts(model))
     name = os.path.basename(model.path) if model.path else translate("CourseExport", "the design")
     read = parse_design(json.dumps(doc).encode("utf-8"), name)
-    return plan_course(read, frozenset(doc), name, folder)
+    return plan_course(read, frozenset(doc), name, folder, dxf=dxf)
 
 
 def refusal(exc: CourseError) -> str:
@@ -73,33 +124,34 @@ def refusal(exc: CourseError) -> str:
 
 
 def export_course(model: DesignModel, folder: str, language: str, parent: QWidget | None = None,
-                  settings: QSettings | None = None) -> tuple[list[str], str]:
+                  settings: QSettings | None = None,
+                  options: CourseOptions = CourseOptions()) -> tuple[list[str], str]:
     """Write the course design into ``folder`` with a progress dialog; returns the paths
     written and '' or the failure (in the UI's language) that stopped the run."""
     try:
-        course = plan(model, folder)
+        course = plan(model, folder, options.dxf)
     except CourseError as exc:
         return [], refusal(exc)
     total = len(course.files)
-    progress = QProgressDialog(translate("CourseExport", "Writing the course design…"),
-                               translate("CourseExport", "Cancel"), 0, total, parent)
-    progress.setWindowTitle(translate("CourseExport", "Export course design"))
-    progress.setWindowModality(Qt.WindowModality.WindowModal)
-    progress.setMinimumDuration(0)
-    progress.setValue(0)
     written: list[str] = []
-    files = write_course(course, language, covering(model, settings))
+
+    def job(progress, say) -> None:
+        files = write_course(course, language, covering(model, settings, options.paper, options.speed),
+                             progress)
+        try:
+            for number, file in enumerate(course.files, start=1):
+                say(translate("CourseExport", "Writing %1 (%2 of %3)…").replace(
+                    "%1", os.path.basename(file.path)).replace("%2", str(number)).replace("%3", str(total)))
+                written.append(next(files).path)
+        finally:
+            files.close()
     try:
-        for number, file in enumerate(course.files, start=1):
-            progress.setLabelText(translate("CourseExport", "Writing %1 (%2 of %3)…").replace(
-                "%1", os.path.basename(file.path)).replace("%2", str(number)).replace("%3", str(total)))
-            QApplication.processEvents()
-            if progress.wasCanceled():
-                text = translate("CourseExport", "Cancelled: %1 of %2 files written, each complete.")
-                return written, text.replace("%1", str(len(written))).replace("%2", str(total))
-            written.append(next(files).path)
-            progress.setValue(number)
+        run_with_progress(job, translate("CourseExport", "Export course design"),
+                          translate("CourseExport", "Writing the course design…"), parent)
         return written, ""
+    except Cancelled:
+        text = translate("CourseExport", "Cancelled: %1 of %2 files written, each complete.")
+        return written, text.replace("%1", str(len(written))).replace("%2", str(total))
     except MissingFontError:
         failure = translate("CourseExport", "No font with Chinese characters is installed: install one "
                             "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
@@ -109,9 +161,6 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
     except Exception as exc:            # never to sys.excepthook: the reason, in a message
         failure = translate("CourseExport", "The course design cannot be made: %1.").replace(
             "%1", failure_reason(exc))
-    finally:
-        files.close()
-        progress.close()
     if written:
         failure += " " + translate("CourseExport", "The %1 files written before it are complete.").replace(
             "%1", str(len(written)))
@@ -120,12 +169,16 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
 
 def export_course_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
                          settings: QSettings | None = None) -> str:
-    """Ask for a folder and write the course design into it; returns the folder or ''."""
+    """Ask for the options and a folder and write the course design into it; returns the
+    folder or ''."""
+    options = ask_course_options(model, parent)
+    if options is None:
+        return ""
     folder = QFileDialog.getExistingDirectory(
         parent, translate("CourseExport", "Export course design: choose a folder"), start_dir)
     if not folder:
         return ""
-    _, failure = export_course(model, folder, language, parent, settings)
+    _, failure = export_course(model, folder, language, parent, settings, options)
     if failure:
         QMessageBox.warning(parent, translate("CourseExport", "Export course design"), failure)
         return ""

@@ -21,9 +21,10 @@ from core.dynamics import MassProperties
 from core.errors import DesignError
 from core.positions import DEFAULT_COUNT, check_count
 
-from shaperapp.widgets.command_line import (add_cover_options, check_output_folder, cover_from_args,
-                                            cover_text, design_name, diagram_angles, inputs_from_args,
-                                            start_qt)
+from shaperapp.widgets.command_line import (add_cover_options, add_sheet_speed_option,
+                                            check_output_folder, cover_from_args, cover_text,
+                                            design_name, diagram_angles, inputs_from_args,
+                                            sheet_speed, start_qt)
 
 from .content import CONTENTS, DEFAULT_PAPER, SHEET_SUFFIXES, SheetChoice
 from .scheme_command import SCHEME, add_scheme_options, write_scheme_file
@@ -32,7 +33,7 @@ HELP = "draw the course design's sheets (A0–A3 PDF, SVG or DXF)"
 DESCRIPTION = ("The drawing sheets of the course design (图纸): paper after GB/T 14689 with the "
                "border and a title block after GB/T 10609.1. --content motion: the mechanism to a "
                "standard scale at the N positions (thin) and both limit positions (thick) with "
-               "the tool's path, the ram's s, v, a over φ at the first speed, the velocity and "
+               "the tool's path, the ram's s, v, a over φ at one speed (--rpm-index, default the first, shown in the title block), the velocity and "
                "acceleration polygons at two positions, each with its scale μ, and the main "
                "dimensions. --content forces: the loads and joint forces, the force polygons, the "
                "crank torque, the energy curve and the flywheel. --content cam: the feed cam (the "
@@ -55,6 +56,7 @@ EXAMPLES = ("shaper drawing --crank 100 --K 1.4 --stroke 300 --rpm 40 --sheet A1
 def configure(parser: argparse.ArgumentParser) -> None:
     add_design_options(parser)
     add_speed_options(parser)
+    add_sheet_speed_option(parser)
     add_load_options(parser, required=False)
     parser.add_argument("-o", "--output", required=True, metavar="FILE",
                         help="the sheet to write: .pdf, .svg or .dxf")
@@ -98,8 +100,9 @@ def sheet_suffix(path: str) -> str:
     return suffix
 
 
-def choice_from_args(args: argparse.Namespace) -> SheetChoice:
-    """Everything the sheet needs from the words, checked (UsageError, DesignError)."""
+def choice_from_args(args: argparse.Namespace, speeds: int = 1) -> SheetChoice:
+    """Everything the sheet needs from the words, checked (UsageError, DesignError);
+    ``speeds`` is how many speeds the design has (--rpm-index picks one)."""
     paper = (args.sheet or DEFAULT_PAPER.get(args.content, "A1")).upper()
     if paper not in PAPERS:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
@@ -109,10 +112,13 @@ def choice_from_args(args: argparse.Namespace) -> SheetChoice:
     if count > MAX_POSITIONS:
         raise DesignError("positions", count, f"must be 1 to {MAX_POSITIONS} on a drawing sheet")
     diagrams = diagram_angles(args)
+    if args.content == "gear" and args.rpm_index is not None:
+        raise UsageError("--rpm-index: the gear sheet is drawn at no speed; leave it out")
+    speed = sheet_speed(args, speeds)
     cover, date = cover_from_args(args)
     return SheetChoice(args.content, paper, count, diagrams, design_name(args),
                        cover["student"], date, cover["school"], number=cover["number"],
-                       group=cover["group"], supervisor=cover["supervisor"])
+                       group=cover["group"], supervisor=cover["supervisor"], speed=speed)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -124,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
         if args.cad_font is not None:
             raise UsageError("--cad-font: only with a sheet (the scheme's texts are CAD's own)")
         return write_scheme_file(spec.design(), args)
-    choice = choice_from_args(args)
+    choice = choice_from_args(args, len(rpms))
     stray = [option for option, dest in CAM_WORDS if getattr(args, dest) is not None]
     if stray and choice.content != "cam":
         raise UsageError(f"{stray[0]}: a cam option, only with --content cam")

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Sequence
 
 from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Sheet, paper
+from core.drawing.sheet import Sheet, number_text, paper
 from core.drawing.title_block import TitleBlock
 from core.dynamics import MassProperties
 from core.spec import Spec
@@ -43,12 +43,24 @@ class SheetChoice:
     group: str = ""                 # the class
     supervisor: str = ""
     gear: "GearPair | None" = None  # the meshing sheet's pair (shaper gear's options)
+    speed: int = 0                  # which of the design's speeds the sheet is drawn at (0: the first)
 
-    def title_block(self, title: str, design_name: str) -> TitleBlock:
-        """The title block's fields of this choice (its scale is the sheet's to fill in)."""
+    def title_block(self, title: str, design_name: str, rpm: float | None = None) -> TitleBlock:
+        """The title block's fields of this choice (its scale is the sheet's to fill in), with
+        the crank speed ``rpm`` the sheet is drawn at (None for a sheet of no speed)."""
         return TitleBlock(title, design_name, "", SHEET_NUMBER[self.content], self.drawn, self.date,
                           self.school, number=self.number, group=self.group,
-                          supervisor=self.supervisor)
+                          supervisor=self.supervisor, speed="" if rpm is None else speed_text(rpm))
+
+
+def speed_text(rpm: float) -> str:
+    """The title block's speed, in the sheets' index notation: "n_2 = 60 r/min"."""
+    return f"n_2 = {number_text(rpm)} r/min"
+
+
+def sheet_rpm(rpms: Sequence[float], choice: SheetChoice) -> float:
+    """The speed the sheet is drawn at: the choice's of the design's speeds."""
+    return float(rpms[choice.speed])
 
 
 def build_sheet(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
@@ -63,19 +75,20 @@ def build_sheet(spec: Spec, rpms: Sequence[float], masses: MassProperties | None
 
 def motion(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
            choice: SheetChoice) -> Sheet:
-    """The motion sheet at the first speed."""
+    """The motion sheet at the choice's speed."""
     design = spec.design()
     idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
     labels = motion_labels()
-    block = choice.title_block(labels["title"], choice.design_name or inputs_name(spec))
-    return motion_sheet(design, float(rpms[0]), paper(choice.paper), count=choice.count,
+    rpm = sheet_rpm(rpms, choice)
+    block = choice.title_block(labels["title"], choice.design_name or inputs_name(spec), rpm)
+    return motion_sheet(design, rpm, paper(choice.paper), count=choice.count,
                         diagram_deg=choice.diagram_deg, idle_fraction=idle, labels=labels,
                         block=block).sheet
 
 
 def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
            choice: SheetChoice) -> Sheet:
-    """The kinetostatic sheet at the first speed; the loads are needed (UsageError naming
+    """The kinetostatic sheet at the choice's speed; the loads are needed (UsageError naming
     the cutting force without them: only the command line can leave them out)."""
     from core.drawing.forces import forces_sheet
     from core.dynamics import masses_for_design
@@ -86,22 +99,24 @@ def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
                          "cutting force, or a design file with loads")
     design = spec.design()
     labels = forces_labels()
-    block = choice.title_block(labels["title"], choice.design_name)
-    return forces_sheet(design, float(rpms[0]), masses_for_design(design, masses), paper(choice.paper),
+    rpm = sheet_rpm(rpms, choice)
+    block = choice.title_block(labels["title"], choice.design_name, rpm)
+    return forces_sheet(design, rpm, masses_for_design(design, masses), paper(choice.paper),
                         diagram_deg=choice.diagram_deg, labels=labels, block=block).sheet
 
 
 def cam(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
         choice: SheetChoice) -> Sheet:
-    """The feed cam's sheet at the first speed (the cam turns with the crank);
+    """The feed cam's sheet at the choice's speed (the cam turns with the crank);
     ContentUnavailable without a cam in the choice."""
     from core.drawing.cam_sheet import cam_sheet
     from .cam_labels import cam_labels
     if choice.cam is None:
         raise ContentUnavailable("the cam sheet needs a cam")
     labels = cam_labels()
-    block = choice.title_block(labels["title"], choice.design_name or inputs_name(spec))
-    return cam_sheet(choice.cam, float(rpms[0]), paper(choice.paper), labels=labels, block=block).sheet
+    rpm = sheet_rpm(rpms, choice)
+    block = choice.title_block(labels["title"], choice.design_name or inputs_name(spec), rpm)
+    return cam_sheet(choice.cam, rpm, paper(choice.paper), labels=labels, block=block).sheet
 
 
 def gear(spec: Spec | None, rpms: Sequence[float], masses: MassProperties | None,

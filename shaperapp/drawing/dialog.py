@@ -1,7 +1,8 @@
 """File › Export drawing sheet…: paper, content, positions, polygon angles and title block,
 with a preview of the sheet as it will be written; then PDF, SVG or DXF.
 
-The sheet is built from the model's design on screen, its first speed and its
+The sheet is built from the model's design on screen, the speed chosen of its speeds
+(the first unless another is chosen; the title block shows it) and its
 loads (the cam sheet from the Cam tab's last valid cam, the gear sheet from the design's
 gear pair, ``shaperapp.design.gear_source``), in the UI's language, by the same code as ``shaper drawing``.
 """
@@ -76,6 +77,9 @@ class DrawingSheetDialog(QDialog):
         if cam is not None:
             self.content.addItem(self.tr("Feed cam"), "cam")
         self._add_gear_entry()
+        self.speed = QComboBox()            # the design's speeds: the sheet is drawn at one
+        for rpm in model.rpms:
+            self.speed.addItem(self.tr("%1 r/min").replace("%1", f"{rpm:g}"))
         self.count = QSpinBox()
         self.count.setRange(1, MAX_POSITIONS)
         self.count.setValue(DEFAULT_COUNT)
@@ -97,6 +101,7 @@ class DrawingSheetDialog(QDialog):
         form = QFormLayout()
         form.addRow(self.tr("Paper:"), self.paper)
         form.addRow(self.tr("Content:"), self.content)
+        form.addRow(self.tr("Crank speed:"), self.speed)
         form.addRow(self.tr("Positions:"), self.count)
         form.addRow(self.tr("Polygons at φ (working stroke):"), self.angles[0])
         form.addRow(self.tr("Polygons at φ (return stroke):"), self.angles[1])
@@ -127,7 +132,7 @@ class DrawingSheetDialog(QDialog):
         self._timer.setInterval(150)
         self._timer.timeout.connect(self.update_preview)
         for signal in (self.paper.currentIndexChanged, self.content.currentIndexChanged,
-                       self.count.valueChanged, self.angles[0].valueChanged,
+                       self.speed.currentIndexChanged, self.count.valueChanged, self.angles[0].valueChanged,
                        self.angles[1].valueChanged, *(e.textChanged for e in self.fields.values())):
             signal.connect(self._timer.start)
         self.update_preview()
@@ -163,6 +168,7 @@ class DrawingSheetDialog(QDialog):
         the user chose another."""
         content = self.content.currentData()
         self.count.setEnabled(content == "motion")
+        self.speed.setEnabled(content != "gear")      # the meshing sheet has no speed
         for box in self.angles:
             box.setEnabled(content not in ("cam", "gear"))
         if self.paper.currentText() == DEFAULT_PAPER.get(self._content, "A1"):
@@ -177,7 +183,8 @@ class DrawingSheetDialog(QDialog):
                            text["student"], text["date"] or datetime.date.today().isoformat(),
                            text["school"], self._cam.cam if content == "cam" and self._cam else None,
                            text["number"], text["group"], text["supervisor"],
-                           self._gear_pair() if content == "gear" else None)
+                           self._gear_pair() if content == "gear" else None,
+                           self.speed.currentIndex() if content != "gear" else 0)
 
     def _gear_pair(self) -> "GearPair | None":
         """The design's gear pair (DesignError when it cannot be made: the preview says why)."""

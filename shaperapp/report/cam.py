@@ -5,6 +5,7 @@ the cam angle as the Cam tab plots them (the cam sheet's curves)."""
 from __future__ import annotations
 
 import re
+from typing import Callable
 
 from PySide6.QtCore import QCoreApplication
 
@@ -67,9 +68,10 @@ def _labels(rpm: float) -> dict[str, str]:
 
 
 def cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle: float,
-               rpm: float, number: int, views: figures.ReportViews) -> list:
+               rpm: float, number: int, views: figures.ReportViews,
+               step: Callable[[], None] = lambda: None) -> list:
     """The feed cam: its figures as ``shaper cam`` prints them, the cam to scale and the
-    follower's curves."""
+    follower's curves; ``step()`` after each of its three parts (the report's progress)."""
     blocks: list = [Heading(translate("Report", "%1 The feed cam").replace("%1", str(number)))]
     inputs, phase = cam_inputs
     try:
@@ -78,6 +80,7 @@ def cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle:
         blocks.append(Paragraph(translate("Report", "The feed cam cannot be made for this design: %1")
                                 .replace("%1", describe(exc))))      # in the report's language
         return blocks
+    step()
     summary = cam_summary(cam)
     summary.update(follower_peaks(cam, rpm))
     labels = _labels(rpm)
@@ -86,9 +89,11 @@ def cam_blocks(cam_inputs: tuple[CamInputs, float | None], design: Design, idle:
     blocks.append(Figure(translate("Report", "The feed cam at the start of the rise, with its "
                                    "follower and roller (the cam turns clockwise)"), 170.0, 100.0,
                          figures.cam_paint(cam)))
+    step()
     blocks.append(Figure(translate("Report", "The follower's angle ψ, angular velocity ω and "
                                    "acceleration α (one curve per crank speed, in the colours of the "
                                    "ram's curves in section 4) and the pressure angle against the cam "
                                    "angle δ; dashed: the allowed pressure angles"),
                          170.0, 113.0, views.cam_curves(inputs, phase)))
+    step()
     return blocks

@@ -21,6 +21,7 @@ from core.cli.output import OutputError
 from core.compare import MAX_DESIGNS, Candidate
 from core.library.store import ENV_VAR, LibraryError
 from core.positions import DEFAULT_COUNT, check_count
+from core.progress import Progress
 
 from shaperapp.widgets.command_line import (MAX_TEXT, add_cover_options, check_output_folder,  # noqa: F401
                                             cover_from_args, cover_text, design_name, diagram_angles,
@@ -142,16 +143,19 @@ def report_kind(path: str, html: bool = False) -> str:
     return kind
 
 
-def write_report(report, path: str) -> int:
+def write_report(report, path: str, progress: Progress = Progress()) -> int:
     """Write ``report`` as the type its name says (:func:`report_kind`), atomically: the
     old file or the whole new one (``core.atomic``). Returns the PDF's page count (0 for
-    HTML). ValueError for a name of another type; OSError (a WriteError) names the path."""
+    HTML). ValueError for a name of another type; OSError (a WriteError) names the path.
+    ``progress`` hears of every page; Cancelled (it said stop) before anything is written."""
     from .html import report_html
     from .pdf import pdf_bytes
     if report_kind(path) == "html":
-        atomic_write(path, report_html(report))
+        text = report_html(report)
+        progress.done(1.0)
+        atomic_write(path, text)
         return 0
-    data, pages = pdf_bytes(report)
+    data, pages = pdf_bytes(report, progress=progress)
     if not data:
         raise OSError(errno.EIO, "the PDF writer produced nothing", path)
     atomic_write(path, data)

@@ -29,6 +29,7 @@ from core.geometry import Design
 from core.margins import margins
 from core.metrics import CycleMetrics, analyze
 from core.positions import PositionTable, position_table, positions
+from core.progress import Progress
 from core.spec import Spec
 from shaperapp.widgets.command_line import inputs_name
 
@@ -64,9 +65,20 @@ def default_diagram_angles(table: PositionTable, metrics: CycleMetrics) -> tuple
     return pick(work_mid), pick(back_mid)
 
 
+# the steps of :func:`build` that every report takes (a section or two, each ≲ 1.5 s with
+# 16 speeds), and those of the sections a report may add
+BUILD_STEPS = 9
+CAM_STEPS = 3
+BUILD_SHARE = 0.85     # of a report's progress: building it (views, sections); its pages the rest
+
+
 def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name: str, date: str,
-          language: str, options: Options = Options()) -> Report:
-    """The whole report; ``masses`` None leaves out the force analysis (with a note)."""
+          language: str, options: Options = Options(), progress: Progress = Progress()) -> Report:
+    """The whole report; ``masses`` None leaves out the force analysis (with a note).
+    ``progress`` hears of every section or two as it is built (Cancelled when it says
+    stop: the views are closed and nothing is returned)."""
+    step = progress.steps(BUILD_STEPS + bool(options.compare) + CAM_STEPS * (options.cam is not None)
+                          + (options.gear is not None))
     design = spec.design()
     metrics = analyze(design, rpms)
     used = masses_for_design(design, masses) if masses is not None else None
@@ -87,20 +99,24 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         add(Heading(translate("Report", "2 Synthesized dimensions and validation margins")))
         add(KeyValues(_dimensions(design)))
         add(_margin_table(design))
+        step()
         add(Heading(translate("Report", "3 The mechanism at its limit positions")))
         add(Figure(translate("Report", "Scheme to scale at the limit positions that start and end "
-                             "the working stroke"), 170.0, 85.0, views.limit_schemes()))
+                             "the working stroke"), 170.0, 85.0, views.limit_schemes(step)))
+        step()
         add(Heading(translate("Report", "4 Motion of the ram and cycle metrics")))
         add(KeyValues(_cycle(metrics)))
         add(Figure(translate("Report", "Ram displacement, velocity and acceleration over one "
                              "crank revolution, one curve per speed"), 170.0, 128.0, views.curves()))
         add(_speed_table(metrics))            # after the figure, which then fits on the page
+        step()
         add(Heading(translate("Report", "5 Kinematic and force analysis at the crank positions")))
         add(Paragraph(join_sentences(translate("Report", "Positions 1 … N are equally spaced from the limit "
                                                "position that starts the working stroke (φ = 0). The shaded "
                                                "rows are the special positions, solved exactly. Forces are on "
                                                "the named body."), positions_note(table)), True))
         report.blocks.extend(position_tables(table))
+        step()
         add(Heading(translate("Report", "6 Velocity, acceleration and force polygons")))
         add(Paragraph(translate("Report", "Drawn to scale from the exact solution at %1 r/min; "
                                 "μ is the scale of each drawing (1 mm on the page).")
@@ -111,6 +127,7 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                     continue
                 add(Figure("", 170.0, 105.0 if kind != "velocity" else 85.0,
                            figures.polygon_paint(design, deg, rpms[0], used, kind, language)))
+        step()
         if summary is not None:
             add(Heading(translate("Report", "7 Crank torque, energy and flywheel")))
             add(Paragraph(translate("Report", "<b>Flywheel.</b> On the crank shaft, %1; the loads "
@@ -123,17 +140,21 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
             add(Paragraph(translate("Report", "No loads were given, so the force analysis is left "
                                     "out. Give the masses and the cutting force (or a design file "
                                     "with loads) to include it.")))
+        step()
         add(Heading(translate("Report", "8 Conventions and formulas")))
         report.blocks.extend(_conventions(spec))
+        step()
         if options.compare:
             result = report_comparison(spec, masses, name, options.compare, rpms[0])
             report.blocks.extend(comparison_blocks(result, views.comparison_curves(result)))
+            step()
         number = 10 if options.compare else 9     # the sections after the conventions
         if options.cam is not None:
-            report.blocks.extend(cam_blocks(options.cam, design, idle, rpms[0], number, views))
+            report.blocks.extend(cam_blocks(options.cam, design, idle, rpms[0], number, views, step))
             number += 1
         if options.gear is not None:        # the last section
             report.blocks.extend(gear_blocks(options.gear, number, language))
+            step()
     finally:
         views.close()
     return report

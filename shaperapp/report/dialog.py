@@ -13,8 +13,7 @@ import html
 import os
 from dataclasses import replace
 
-from PySide6.QtCore import QCoreApplication, QSettings, Qt
-from PySide6.QtGui import QGuiApplication
+from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
                                QFormLayout, QLineEdit, QMessageBox, QSpinBox, QWidget)
 
@@ -22,16 +21,18 @@ from core.cam.file import cam_from_dict
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
+from core.progress import Cancelled, Progress
 from shaperapp.design.gear_source import design_gear
 from shaperapp.design.model import DesignModel
 
 from .blocks import Cover
 from .command import MAX_TEXT
 from .command import report_kind, write_report
-from .content import Options, build, default_diagram_angles, inputs_name
+from .content import BUILD_SHARE, Options, build, default_diagram_angles, inputs_name
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.command_line import plain_text, printable_labels
 from shaperapp.widgets.messages import describe_os_error, failure_reason
+from shaperapp.widgets.progress_dialog import run_with_progress
 
 translate = QCoreApplication.translate
 
@@ -137,10 +138,11 @@ def other_designs(model: DesignModel) -> list[Candidate]:
 
 
 def export_report(model: DesignModel, path: str, language: str, options: Options = Options(),
-                  name: str = "", date: str = "") -> int:
+                  name: str = "", date: str = "", progress: Progress = Progress()) -> int:
     """Build the report of the design on screen and write it (PDF, or HTML for .html/.htm);
     ValueError for a name of another type, before anything is built. The design is
-    called ``name``, else by its file name, else by its inputs."""
+    called ``name``, else by its file name, else by its inputs. ``progress`` hears of every
+    section and page; Cancelled when it says stop, and nothing is written."""
     report_kind(path)
     design = model.design
     masses = masses_for_design(design, model.masses)
@@ -151,8 +153,9 @@ def export_report(model: DesignModel, path: str, language: str, options: Options
     if gear is not None and options.gear is None:
         options = replace(options, gear=gear)
     report = build(model.valid_spec, list(model.rpms), masses, name or design_name(model),
-                   date or datetime.date.today().isoformat(), language, options)
-    return write_report(report, path)
+                   date or datetime.date.today().isoformat(), language, options,
+                   progress.part(0.0, BUILD_SHARE))
+    return write_report(report, path, progress.part(BUILD_SHARE, 1.0))
 
 
 def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
@@ -180,9 +183,13 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
                                       "(.html, .htm); %1 is neither. Nothing was written.")
                             .replace("%1", os.path.basename(path)))
         return ""
-    QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+    title = translate("ReportOptionsDialog", "Export design report")
     try:
-        export_report(model, path, language, dialog.options(), dialog.name(), dialog.date())
+        run_with_progress(lambda progress, _say: export_report(model, path, language, dialog.options(),
+                                                         dialog.name(), dialog.date(), progress),
+                          title, translate("ReportOptionsDialog", "Writing the report…"), parent)
+    except Cancelled:
+        return ""
     except MissingFontError:
         failure = translate("ReportOptionsDialog", "No font with Chinese characters is installed. Install one "
                             "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
@@ -194,8 +201,6 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
                             "written.").replace("%1", failure_reason(exc))
     else:
         failure = ""
-    finally:
-        QGuiApplication.restoreOverrideCursor()
     if failure:
         QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"), failure)
         return ""

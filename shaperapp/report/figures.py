@@ -254,10 +254,13 @@ class ReportViews:
         widget.export_image(str(path))
         return path.read_bytes()
 
-    def limit_schemes(self) -> Paint:
+    def limit_schemes(self, step: Callable[[], None] = lambda: None) -> Paint:
         """Both limit positions side by side at one round scale μ_l, each with the lever's
-        two limit positions (dashed) and the angle θ between them marked at O4."""
+        two limit positions (dashed) and the angle θ between them marked at O4. ``step()``
+        once the view is up and after the first position (each places the scheme's labels,
+        the report's longest pieces of work: the window hears Cancel between them)."""
         scheme = self._show(SchemeWidget(self.model), *SCHEME_PX)
+        step()
         design = self.model.design
         half = design.theta / 2.0
         tips = ((-design.lever * math.sin(half), design.lever * math.cos(half)),
@@ -270,6 +273,8 @@ class ReportViews:
             o4, across = scheme.export_point(0.0, 0.0), scheme.export_point(100.0, 0.0)
             shots.append(SchemeShot(svg, o4, tuple(scheme.export_point(*tip) for tip in tips),
                                     100.0 / (across.x() - o4.x()), QFontInfo(scheme.font()).pixelSize()))
+            if len(shots) == 1:
+                step()
         self.model.set_angle_index(0)
         caption = QCoreApplication.translate("Report", "φ = %1° (limit position)")
         return scheme_paint(shots, [caption.replace("%1", f"{self.metrics.work_start_deg:.2f}"),

@@ -12,6 +12,8 @@ import html
 from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QPointF, QRectF, Qt
 from PySide6.QtGui import QFont, QPageLayout, QPageSize, QPainter, QPdfWriter, QPen
 
+from core.progress import Progress
+
 from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows
 from .pdf_base import (BOTTOM_MM, GRID, INK, LEFT_MM, PAGE_MM, RESOLUTION, SHRINK, TITLE_MM, TOP_MM,
                        Layout, Piece, translate)
@@ -118,15 +120,17 @@ def paginate(pieces: list[Piece], first_top: float, top: float, bottom: float) -
     return pages
 
 
-def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure")) -> tuple[bytes, int]:
+def pdf_bytes(report: Report, parts: tuple[str, ...] = ("text", "figure"),
+              progress: Progress = Progress()) -> tuple[bytes, int]:
     """The PDF of ``report`` in memory, its text layer repaired (``pdf_text``), and its
     page count, every page exactly A4 (``pdf_page``); the caller writes it (atomically, so a failed save never leaves half a report). ``parts`` leaves out
     the pieces of other parts (and the title block and footers unless "text"): the
-    tests print the figures alone to find ink outside their boxes."""
+    tests print the figures alone to find ink outside their boxes. ``progress`` hears of
+    the layout and of every page painted (Cancelled when it says stop)."""
     data = QByteArray()
     buffer = QBuffer(data)
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
-    pages = _paint_pdf(report, QPdfWriter(buffer), parts)
+    pages = _paint_pdf(report, QPdfWriter(buffer), parts, progress)
     buffer.close()
     return repair_text_layer(exact_page(bytes(data.data()), *PAGE_MM)), pages
 
@@ -155,8 +159,13 @@ def _layout(report: Report, writer: QPdfWriter) -> tuple[Layout, list[list[tuple
     return lay, paginate(pieces_of(lay, report), top + TITLE_MM * mm, top, bottom)
 
 
-def _paint_pdf(report: Report, writer: QPdfWriter, parts: tuple[str, ...] = ("text", "figure")) -> int:
+LAYOUT_SHARE = 0.2         # of the PDF's progress: the layout; the pages share the rest
+
+
+def _paint_pdf(report: Report, writer: QPdfWriter, parts: tuple[str, ...] = ("text", "figure"),
+               progress: Progress = Progress()) -> int:
     lay, pages = _layout(report, writer)
+    progress.done(LAYOUT_SHARE)
     mm = lay.mm
     painter = QPainter(writer)
     try:
@@ -171,6 +180,7 @@ def _paint_pdf(report: Report, writer: QPdfWriter, parts: tuple[str, ...] = ("te
                     piece.paint(painter, LEFT_MM * mm, y, lay.width)
             if "text" in parts:
                 _footer(painter, lay, report, n + 1, len(pages))
+            progress.done(LAYOUT_SHARE + (1.0 - LAYOUT_SHARE) * (n + 1) / len(pages))
     finally:
         painter.end()
     return len(pages)

@@ -179,3 +179,28 @@ def start_qt(lang: str, needs_font: bool = True) -> str:
         except MissingFontError as exc:
             raise UsageError(f"--lang {lang}: {exc}") from None
     return language
+
+
+SPEED_OPTION = "--rpm-index"
+
+
+def add_sheet_speed_option(parser: argparse.ArgumentParser) -> None:
+    """--rpm-index N: which of the design's speeds the sheets are drawn at, counted from 1
+    as the speeds are listed (--rpm 40 60: 2 is 60 r/min)."""
+    parser.add_argument(SPEED_OPTION, metavar="N",
+                        help="draw the sheets at the N-th of the design's speeds, counted from 1 in "
+                             "the order of --rpm or the design file's \"rpm\" (default 1, the first); "
+                             "the title block shows it")
+
+
+def sheet_speed(args: argparse.Namespace, count: int) -> int:
+    """--rpm-index as an index into the design's ``count`` speeds (0-based); UsageError
+    naming the option and the number of speeds when it is not one of them."""
+    if args.rpm_index is None:
+        return 0
+    text = str(args.rpm_index).strip()
+    speeds = f"the design has {count} speed{'s' if count != 1 else ''}"
+    if not text.isdigit() or not 1 <= int(text) <= count:
+        raise UsageError(f"{SPEED_OPTION}: must be a whole number 1 to {count}, {speeds} "
+                         f"(got {args.rpm_index!r})")
+    return int(text) - 1

@@ -12,10 +12,13 @@ NAMES = ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf", 
 
 @pytest.fixture
 def answers(monkeypatch, tmp_path):
-    """The folder dialog answers ``tmp_path / "out"``; the warnings are recorded."""
+    """The options dialog answers ``shaper course``'s defaults (A1, no DXF, the first
+    speed), the folder dialog ``tmp_path / "out"``; the warnings are recorded."""
+    from shaperapp.course.dialog import CourseOptions
     out = tmp_path / "out"
     out.mkdir()
     shown = []
+    monkeypatch.setattr("shaperapp.course.dialog.ask_course_options", lambda *a: CourseOptions())
     monkeypatch.setattr("shaperapp.course.dialog.QFileDialog.getExistingDirectory",
                         lambda *a, **k: str(out))
     monkeypatch.setattr("shaperapp.course.dialog.QMessageBox.warning",
@@ -57,14 +60,14 @@ def quick_report(monkeypatch):
     from core.atomic import atomic_write
     monkeypatch.setattr("shaperapp.course.write._report", lambda *args: None)
     monkeypatch.setattr("shaperapp.course.write.write_report",
-                        lambda report, path: atomic_write(path, b"%PDF-1.4\n%%EOF\n"))
+                        lambda report, path, *progress: atomic_write(path, b"%PDF-1.4\n%%EOF\n"))
 
 
 def test_cancel_after_the_first_file_keeps_it_complete_and_says_so(window, answers, monkeypatch,
                                                                     quick_report):
     out, shown = answers
     asked = []
-    monkeypatch.setattr("shaperapp.course.dialog.QProgressDialog.wasCanceled",
+    monkeypatch.setattr("shaperapp.widgets.progress_dialog.QProgressDialog.wasCanceled",
                         lambda self: asked.append(1) or len(asked) > 1)
     window.act_course.trigger()
     assert os.listdir(out) == ["00-report.pdf"]

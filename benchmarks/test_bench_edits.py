@@ -1,0 +1,138 @@
+"""Issue 40, item 5: an edit in each form reaching the screen, and each lazy tab's first
+visit, with 16 speeds in the whole window at 1366 × 768.
+
+Targets (on a quiet machine): an edit within 50 ms, a tab's first visit within 300 ms.
+A Gear edit recomputes the gear alone: the design model's kinematics and dynamics are
+not run again (asserted, not timed). In the ordinary test run (benchmarks disabled) each
+runs once, briefly: the idle waits short, the report of 2 speeds.
+"""
+import time
+
+import pytest
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QApplication
+
+from shaperapp.design.model import DesignModel
+from shaperapp.window.main_window import MainWindow
+
+SPEEDS = [20.0 + 5.0 * i for i in range(16)]
+TABS = {"design": "plots", "loads": "forces", "cam": "cam", "gear": "gear"}
+
+
+def drained(seconds: float = 4.0) -> None:
+    """Events processed for ``seconds``: the views built while idle, the idle label
+    placement done, as a user meets the window a few seconds after start."""
+    end = time.perf_counter() + seconds
+    while time.perf_counter() < end:
+        QApplication.processEvents()
+
+
+def open_window(tmp_path) -> MainWindow:
+    tmp_path.mkdir(exist_ok=True)
+    win = MainWindow(DesignModel(), QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    win.resize(1366, 768)
+    win.show()
+    win.model.set_rpms(SPEEDS)
+    QApplication.processEvents()
+    return win
+
+
+def idle_s(benchmark) -> float:
+    """How long a window is left idle first: long enough for every lazy view when timed."""
+    return 0.5 if benchmark.disabled else 4.0
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, request):
+    win = open_window(tmp_path)
+    # the gear's check waits for every view: one built meanwhile must not count as its work
+    quick = "benchmark" in request.fixturenames and request.getfixturevalue("benchmark").disabled
+    drained(0.5 if quick else 4.0)
+    yield win
+    win.model.set_clean("")
+    win.close()
+
+
+# each form's edit: a new value every round, always valid
+EDITS = {
+    "design": lambda w, i: w.model.set_spec(time_ratio=1.4 + 0.01 * (i % 25)),
+    "loads": lambda w, i: w.model.set_masses(cut_force_N=7000.0 + 10.0 * (i % 50)),
+    "cam": lambda w, i: w.cam_model.set_fields(rise=60.0 + 0.5 * (i % 20)),
+    "gear": lambda w, i: w.gear_model.set_fields(z1=13.0 + (i % 3)),
+}
+
+
+@pytest.mark.parametrize("form", list(EDITS))
+def test_an_edit_reaches_the_screen(benchmark, window, form):
+    """The form's tab in front (the Kinematics plots for the design form): the edit, the
+    model's recompute and every visible view repainted."""
+    window.tabs.setCurrentWidget(getattr(window, TABS[form]))
+    drained(idle_s(benchmark) / 4)
+    rounds = iter(range(1, 10**6))
+
+    def edit():
+        EDITS[form](window, next(rounds))
+        QApplication.processEvents()
+
+    benchmark.pedantic(edit, rounds=20, iterations=1, warmup_rounds=2)
+
+
+def test_a_gear_edit_recomputes_the_gear_alone(window, monkeypatch):
+    """No kinematics, no dynamics, no metrics: the design model's recompute is not run."""
+    window.tabs.setCurrentWidget(window.gear)
+    drained(1.0)
+    runs = []
+    for name in ("_recompute", "_recompute_forces"):
+        original = getattr(DesignModel, name)
+        monkeypatch.setattr(DesignModel, name, lambda self, *a, _o=original, _n=name, **k:
+                            runs.append(_n) or _o(self, *a, **k))
+    pair = window.gear_model.pair
+    window.gear_model.set_fields(z1=14.0)
+    QApplication.processEvents()
+    assert window.gear_model.pair != pair and runs == []
+
+
+@pytest.mark.parametrize("tab", ["explore", "forces", "cam", "gear"])
+def test_a_tabs_first_visit(benchmark, qtbot, tmp_path, tab):
+    """A fresh window, left idle until its views are built, then the tab shown for the
+    first time: what it computes for the design on screen and its first paint."""
+    windows = []
+
+    def setup():
+        win = open_window(tmp_path / str(len(windows)))
+        windows.append(win)
+        drained(idle_s(benchmark))
+        return (win,), {}
+
+    def visit(win):
+        win.tabs.setCurrentWidget(getattr(win, tab))
+        QApplication.processEvents()
+
+    benchmark.pedantic(visit, setup=setup, rounds=3, iterations=1)
+    for win in windows:
+        win.model.set_clean("")
+        win.close()
+
+
+def test_the_reports_longest_slice(benchmark, qtbot, tmp_path):
+    """The report of 16 speeds written as File › Export report writes it: the time between
+    two of its progress steps is how long the window waits to repaint or to hear Cancel
+    (the longest and the total go into extra_info)."""
+    from core.progress import Progress
+    from shaperapp.report.dialog import export_report
+    model = DesignModel()
+    model.set_rpms(SPEEDS if not benchmark.disabled else SPEEDS[:2])
+    slices = []
+
+    def run():
+        last = [time.perf_counter()]
+
+        def heard(_fraction: float) -> None:
+            now = time.perf_counter()
+            slices.append(now - last[0])
+            last[0] = now
+        export_report(model, str(tmp_path / "r.pdf"), "en", progress=Progress(heard))
+
+    benchmark.pedantic(run, rounds=2, iterations=1)
+    benchmark.extra_info["longest_slice_s"] = max(slices)
+    benchmark.extra_info["steps"] = len(slices) // 2
