@@ -42,7 +42,7 @@ ENGLISH = {
     "mechanism": "Loads and joint forces, φ = {angle}°",
     "mechanism_scales": "μ_l = {mu} m/mm ({scale}), μ_F = {mu_f} N/mm",
     "polygon_ram": "Force polygon of the ram group, φ = {angle}°, μ_F = {mu_f} N/mm",
-    "polygon_lever": "Force polygon of the lever (link 3), φ = {angle}°, μ_F = {mu_f} N/mm",
+    "polygon_lever": "Force polygon of the lever (link 4), φ = {angle}°, μ_F = {mu_f} N/mm",
     "torque": "Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min",
     "energy": "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J",
     "M": "M/(N·m)", "E": "E/J", "phi": "φ/(°)",
@@ -56,7 +56,7 @@ ENGLISH = {
 }
 # core's force keys as the sheet writes them: the letter, and its index as a subscript
 FORCE_NAMES = {key: (key.split("_")[0], key.partition("_")[2]) for key in (
-    "P", "G_5", "F_I5", "G_4", "F_I4", "N", "R_B", "R_O2", "R_A", "R_O4", "R_C", "G_3", "F_I3", "R_3B")}
+    "P", "G_6", "F_I6", "G_5", "F_I5", "N", "R_B", "R_O2", "R_A", "R_O4", "R_C", "G_4", "F_I4", "R_4B")}
 ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
 TORQUE_STEP_DEG = 1.0
 # room a mechanism drawing keeps beside the links' extent, paper mm: the guide line runs
@@ -178,7 +178,7 @@ def _mechanism_cells(design: Design, area: Box) -> tuple[float, list[Box]]:
 def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: float
                  ) -> list[tuple[str, str, np.ndarray]]:
     """(name, where, force in N) on the mechanism at one angle: the loads on the ram (P at
-    the tool, G5 and F_I5 at C, the guide's N) and the joint forces, each on the link the
+    the tool, G6 and F_I6 at C, the guide's N) and the joint forces, each on the link the
     README names (R_O2 on the crank, R_A and R_O4 on the lever, R_B by the lever on the next
     link, R_C by the rod on the ram). Zero forces are left out."""
     phi = np.radians([angle_deg])
@@ -187,8 +187,8 @@ def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: 
     a_c = w * w * float(shape(design, phi).ram2[0]) * MM
     at = lambda a: float(a[0, 0])          # noqa: E731
     forces = [("P", "tool", np.array([-at(d.cut_force), 0.0])),
-              ("G_5", "C", np.array([0.0, -masses.ram_mass_kg * masses.g])),
-              ("F_I5", "C", np.array([-masses.ram_mass_kg * a_c, 0.0])),
+              ("G_6", "C", np.array([0.0, -masses.ram_mass_kg * masses.g])),
+              ("F_I6", "C", np.array([-masses.ram_mass_kg * a_c, 0.0])),
               ("N", "C", np.array([0.0, at(d.guide_normal)])),
               ("R_O2", "O2", np.array([at(d.o2_x), at(d.o2_y)])),
               ("R_A", "A", np.array([at(d.a_x), at(d.a_y)])),

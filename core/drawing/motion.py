@@ -52,10 +52,10 @@ ENGLISH = {
     "theta": "Extreme-position angle θ", "n": "Crank speed n",
     **TITLE_ENGLISH,
 }
-# The polygons' points as textbooks name them (a₂′: an index as a subscript, then the prime)
-POINT_NAMES = {"p": "p", "a2": ("a", "2"), "a3": ("a", "3"), "b": "b", "c": "c", "p'": "p′",
-               "a2'": [("a", "2"), "′"], "k'": "k′", "n3'": [("n", "3"), "′"], "a3'": [("a", "3"), "′"],
-               "b'": "b′", "c'": "c′", "n4'": [("n", "4"), "′"]}
+# The polygons' points as textbooks name them (a₃′: an index as a subscript, then the prime)
+POINT_NAMES = {"p": "p", "a3": ("a", "3"), "a4": ("a", "4"), "b": "b", "c": "c", "p'": "p′",
+               "a3'": [("a", "3"), "′"], "k'": "k′", "n4'": [("n", "4"), "′"], "a4'": [("a", "4"), "′"],
+               "b'": "b′", "c'": "c′", "n5'": [("n", "5"), "′"]}
 GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
