@@ -126,7 +126,10 @@ def test_the_report_and_the_sheets_use_the_task_books_numbering(tmp_path, langua
     run = shaper("report", *ROD, "--rpm", "40", *LOADS, "--rod-mass", "5", "--lang", language,
                  "-o", report)
     assert run.returncode == 0, run.stderr
-    found = offending(_pdf_lines(report), f"report {language}")
+    lines = _pdf_lines(report)
+    found = offending(lines, f"report {language}")
+    if language == "zh":
+        assert any("设计名称" in line for line in lines[:20])    # the cover's label
     for content, design in (("forces", DESIGN), ("motion", ROD)):
         sheet = tmp_path / f"{content}.pdf"
         run = shaper("drawing", *design, "--rpm", "40", *LOADS, "--content", content, "--sheet", "A1",
@@ -151,3 +154,14 @@ def test_the_torque_is_written_m_everywhere():
     units = [line for page in DOCS for line in page.read_text(encoding="utf-8").splitlines()]
     units += [text for pair in _catalogue().items() for text in (pair[0][1], pair[1])]
     assert not [u[:120] for u in units if TORQUE_AS_T.search(u)]
+
+
+def test_the_chinese_report_words_of_issue_40():
+    """The cover named the design's name 设计 ("design") and the force paragraph had a
+    stray space in 作用于工作行程的 空刀量·H."""
+    zh = _catalogue()
+    assert zh[("Report", "Design name")] == "设计名称"
+    forces = next(text for (context, source), text in zh.items()
+                  if context == "Report" and source.startswith("<b>Forces.</b>"))
+    assert "作用于工作行程的空刀量·H" in forces
+    assert not re.search(r"[\u4e00-\u9fff] +空刀量", forces)
