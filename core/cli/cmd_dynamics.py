@@ -5,6 +5,7 @@ import argparse
 
 import numpy as np
 
+from ..figure_text import figure_text
 from ..dynamics import DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics
 
 from ..flywheel import summarize
@@ -66,15 +67,16 @@ def summary_rows(design: Design, masses: MassProperties,
     """(label, value) of the loads and speed-independent results, as printed."""
     return [("variant", design.variant),
             ("cutting force", f"{masses.cut_force_N:g} N over {1 - 2 * masses.idle_fraction:.0%} of the stroke"),
-            ("mean reduced inertia J_e", f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
-            ("speed fluctuation δ", f"{masses.delta:.5g}")]
+            ("mean reduced inertia J_e", f"{figure_text('inertia', summary.equivalent_inertia_mean_kg_m2)} kg·m²"),
+            ("speed fluctuation δ", figure_text("coefficient", masses.delta))]
 
 
 def speed_rows(s: SpeedSummary) -> list[tuple[str, str]]:
     """(label, value) of one crank speed's torque, power and flywheel, as printed (and in
     the report)."""
-    return [("mean / max crank torque", f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
-            ("mean power", f"{s.mean_power_W:.4g} W"),
-            ("energy fluctuation ΔW_max", f"{s.energy_fluctuation_J:.4g} J"),
-            ("flywheel J_F", f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
-            ("flywheel J_F − J_e (net)", f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+    f = figure_text
+    return [("mean / max crank torque", f"{f('torque', s.mean_torque_N_m)} N·m / {f('torque', s.max_torque_N_m)} N·m"),
+            ("mean power", f"{f('power', s.mean_power_W)} W"),
+            ("energy fluctuation ΔW_max", f"{f('energy', s.energy_fluctuation_J)} J"),
+            ("flywheel J_F", f"{f('inertia', s.flywheel_inertia_kg_m2)} kg·m²"),
+            ("flywheel J_F − J_e (net)", f"{f('inertia', s.flywheel_inertia_net_kg_m2)} kg·m²")]

@@ -21,6 +21,7 @@ from typing import Mapping
 import numpy as np
 
 from core.dynamics import MM, MassProperties, solve_dynamics
+from core.figure_text import figure_text
 from core.flywheel import summarize
 from core.geometry import Design
 from core.kinematics import rpm_to_omega, shape
@@ -140,7 +141,7 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     areas["torque"] = (torque_box, tuple(items))
     energy_deg = np.degrees(summary.crank_angle)
     items, energy_chart = _curve_chart(energy_box, energy_deg, summary.energy[0], None,
-                                       lab["energy"].format(dw=f"{speed.energy_fluctuation_J:.4g}"),
+                                       lab["energy"].format(dw=figure_text("energy", speed.energy_fluctuation_J)),
                                        lab["E"], "mu_E", lab)
     areas["energy"] = (energy_box, tuple(items))
 
@@ -273,15 +274,16 @@ def _curve_chart(box: Box, x: np.ndarray, y: np.ndarray, mean: float | None, tit
 def flywheel_rows(summary, masses: MassProperties, lab: Mapping[str, str]) -> list[tuple[str, str]]:
     """The flywheel result at the first speed, formatted as ``shaper dynamics`` prints it."""
     s = summary.speeds[0]
+    f = figure_text
     return [(lab["n"], f"{number_text(s.rpm)} r/min"),
-            (lab["M_mean"], f"{s.mean_torque_N_m:.4g} N·m"),
-            (lab["M_max"], f"{s.max_torque_N_m:.4g} N·m"),
-            (lab["P_mean"], f"{s.mean_power_W:.4g} W"),
-            (lab["dW"], f"{s.energy_fluctuation_J:.4g} J"),
-            (lab["delta"], f"{masses.delta:.5g}"),
-            (lab["J_F"], f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
-            (lab["J_e"], f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²"),
-            (lab["J_net"], f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+            (lab["M_mean"], f"{f('torque', s.mean_torque_N_m)} N·m"),
+            (lab["M_max"], f"{f('torque', s.max_torque_N_m)} N·m"),
+            (lab["P_mean"], f"{f('power', s.mean_power_W)} W"),
+            (lab["dW"], f"{f('energy', s.energy_fluctuation_J)} J"),
+            (lab["delta"], f("coefficient", masses.delta)),
+            (lab["J_F"], f"{f('inertia', s.flywheel_inertia_kg_m2)} kg·m²"),
+            (lab["J_e"], f"{f('inertia', summary.equivalent_inertia_mean_kg_m2)} kg·m²"),
+            (lab["J_net"], f"{f('inertia', s.flywheel_inertia_net_kg_m2)} kg·m²")]
 
 
 def default_diagrams(design: Design, idle_fraction: float) -> tuple[float, float]:

@@ -21,6 +21,7 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from core.errors import DesignError
+from core.figure_text import figure_text
 from core.geometry import Design
 from core.kinematics import solve
 from core.polygons import acceleration_polygon, velocity_polygon
@@ -290,13 +291,13 @@ def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
 
 
 def _dimension_rows(design: Design, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:
-    mm = lambda v: f"{v:.3f} mm"                     # noqa: E731
+    mm = lambda v: f"{figure_text('length', v)} mm"    # noqa: E731
     rows = [(lab["L1"], mm(design.crank)), (lab["L2"], mm(design.frame)),
             (lab["L3"], mm(design.lever))]
     if design.rod is not None:
         rows.append((lab["L4"], mm(design.rod)))
     rows += [(lab["h"], mm(design.guide_above_crank)), (lab["H"], mm(design.stroke)),
-             (lab["K"], f"{design.time_ratio:.4f}"),
-             (lab["theta"], f"{math.degrees(design.theta):.3f}°"),
+             (lab["K"], figure_text("ratio", design.time_ratio)),
+             (lab["theta"], f"{figure_text('angle', math.degrees(design.theta))}°"),
              (lab["n"], f"{number_text(rpm)} r/min")]
     return rows

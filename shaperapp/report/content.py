@@ -23,6 +23,7 @@ from core.cli.cmd_synth import dimension_rows
 from core.cam import CamInputs
 from core.compare import Candidate
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design
+from core.figure_text import figure_text
 from core.flywheel import summarize
 from core.gear import GearPairInputs
 from core.geometry import Design
@@ -238,7 +239,7 @@ def _loads(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
               f"{masses.cut_force_N:g} N, {masses.cut_height_mm:g} mm"),
              (translate("Report", "Idle margin at each end of the stroke"), f"{masses.idle_fraction:g} H"),
              (translate("Report", "Gravity"), translate("Report", "on") if masses.gravity else translate("Report", "off")),
-             (translate("Report", "Coefficient of speed fluctuation δ"), f"{masses.delta:.5g}")]
+             (translate("Report", "Coefficient of speed fluctuation δ"), figure_text("coefficient", masses.delta))]
     return rows
 
 
