@@ -334,7 +334,7 @@ def test_formulas_are_typeset(tmp_path, language):
     assert shaper("report", *DESIGN, "--rpm", "40", "--lang", language, "--html", "-o", out).returncode == 0
     page = out.read_text(encoding="utf-8")
     formulas = page[page.index("<h2>8 ") if language == "en" else page.index("<h2>8"):]
-    for marked in ("a<sup>k</sup><sub>A4A3</sub>", "v<sub>A4</sub>", "ω<sub>4</sub>", "J<sub>F</sub>",
+    for marked in ("a<sup>k</sup><sub>A4A3</sub>", "v<sub>A4</sub>", "ω<sub>4</sub>", "S<sub>4</sub>", "J<sub>F</sub>",
                    "ΔW<sub>max</sub>", "O<sub>4</sub>", "L<sub>3</sub>", "(<sup>1</sup>⁄<sub>2π</sub>)"):
         assert marked in formulas, marked
     text = re.sub(r"<[^>]+>", "", formulas)
