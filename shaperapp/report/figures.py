@@ -24,7 +24,6 @@ from PySide6.QtWidgets import QWidget
 from core.cam import Cam, CamInputs
 from core.compare import Comparison
 from core.dynamics import MassProperties
-from core.figure_text import figure_text
 from core.geometry import Design
 from core.metrics import CycleMetrics
 from core.polygons import polygons
@@ -215,7 +214,7 @@ def _mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, 
     painter.setPen(QPen(QColor("#37474f"), pen.widthF()))
     arc = QRectF(o4.x() - radius, o4.y() - radius, 2 * radius, 2 * radius)
     painter.drawArc(arc, round(angles[1] * 16), round((angles[0] - angles[1]) * 16))
-    label = f"θ = {figure_text('angle', theta_deg)}°"
+    label = f"θ = {theta_deg:.2f}°"
     width = QFontMetricsF(painter.font(), painter.device()).horizontalAdvance(label) + 0.4 * line
     ends = [QPointF(o4.x() + radius * math.cos(math.radians(a)), o4.y() - radius * math.sin(math.radians(a)))
             for a in angles]
@@ -273,8 +272,8 @@ class ReportViews:
                                     100.0 / (across.x() - o4.x()), QFontInfo(scheme.font()).pixelSize()))
         self.model.set_angle_index(0)
         caption = QCoreApplication.translate("Report", "φ = %1° (limit position)")
-        return scheme_paint(shots, [caption.replace("%1", figure_text("angle", self.metrics.work_start_deg)),
-                                    caption.replace("%1", figure_text("angle", self.metrics.work_end_deg))],
+        return scheme_paint(shots, [caption.replace("%1", f"{self.metrics.work_start_deg:.2f}"),
+                                    caption.replace("%1", f"{self.metrics.work_end_deg:.2f}")],
                             math.degrees(design.theta))
 
     def curves(self) -> Paint:
