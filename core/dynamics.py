@@ -403,8 +403,8 @@ def _eliminate(design: Design, sh: Shape, masses: MassProperties, w2: np.ndarray
     gravity and ``p_cut`` the cutting force; all broadcast against (n,).
     Units SI; see docs/forces.md for the equations.
     """
-    m3, m4, m5 = masses.lever_mass_kg, masses.rod_mass_kg, masses.ram_mass_kg
-    mb, m2 = masses.block_mass_kg, masses.crank_mass_kg
+    m4, m5, m6 = masses.lever_mass_kg, masses.rod_mass_kg, masses.ram_mass_kg
+    m3, m2 = masses.block_mass_kg, masses.crank_mass_kg
     dx, dy = (v * MM for v in masses.ram_cg_mm)
     y_cut = masses.cut_height_mm * MM
 
@@ -415,38 +415,38 @@ def _eliminate(design: Design, sh: Shape, masses: MassProperties, w2: np.ndarray
     c2x = w2 * (sh.ram2 * MM)
 
     # Ram: the x-equation gives the drive force, y and moment about C the guide reaction.
-    hx = m5 * c2x + p_cut
-    moment = -dy * m5 * c2x + y_cut * p_cut + m5 * g * dx
+    hx = m6 * c2x + p_cut
+    moment = -dy * m6 * c2x + y_cut * p_cut + m6 * g * dx
     if design.rod is None:
         fbx, fby = hx, np.zeros_like(hx)               # tip block on the ram, horizontal at B
         hy = None
-        normal = m5 * g + np.zeros_like(hx)
+        normal = m6 * g + np.zeros_like(hx)
         moment = moment - (design.guide * MM - by) * hx
     else:
-        # Rod BC: moments about its centre give Hy (ram's pin force), forces give B.
+        # Rod BC (link 5): moments about its centre S5 give Hy (ram's pin force), forces give B.
         ex, ey = cx - bx, cy - by
-        g4x, g4y = (b2x + c2x) / 2.0, b2y / 2.0 + g    # a_G4 − g_vec
-        j4 = m4 * (design.rod * MM) ** 2 / 12.0
-        rhs = -j4 * (w2 * sh.rod2) - m4 * _cross(ex, ey, g4x, g4y) / 2.0
+        s5x, s5y = (b2x + c2x) / 2.0, b2y / 2.0 + g    # a_S5 − g_vec
+        j5 = m5 * (design.rod * MM) ** 2 / 12.0
+        rhs = -j5 * (w2 * sh.rod2) - m5 * _cross(ex, ey, s5x, s5y) / 2.0
         hy = (rhs + ey * hx) / ex
-        fbx, fby = m4 * g4x + hx, m4 * g4y + hy        # lever on rod at B
-        normal = m5 * g - hy
+        fbx, fby = m5 * s5x + hx, m5 * s5y + hy        # lever on rod at B
+        normal = m6 * g - hy
 
     # Lever: moments about the fixed pivot O4 give the block's normal force.
     slide = sh.slide * MM
     ux, uy = ax_ / slide, ay_ / slide
     ratio = masses.lever_cg(design) / design.lever
-    g3x, g3y = ratio * bx, ratio * by
-    a3x, a3y = ratio * b2x, ratio * b2y + g            # a_G3 − g_vec
+    s4x, s4y = ratio * bx, ratio * by
+    a4x, a4y = ratio * b2x, ratio * b2y + g            # a_S4 − g_vec
     tipx, tipy = -fbx, -fby                            # on the lever at B
-    normal_a = (_cross(bx, by, tipx, tipy) - m3 * _cross(g3x, g3y, a3x, a3y)
+    normal_a = (_cross(bx, by, tipx, tipy) - m4 * _cross(s4x, s4y, a4x, a4y)
                 + masses.lever_inertia_kg_m2 * (w2 * sh.lever2)) / slide
     fax, fay = normal_a * uy, -normal_a * ux           # block on lever, along n
-    o4x, o4y = m3 * a3x - fax - tipx, m3 * a3y - fay - tipy
+    o4x, o4y = m4 * a4x - fax - tipx, m4 * a4y - fay - tipy
 
     # Block (point mass at A) and crank (balanced, constant speed).
-    pin_x = mb * (w2 * (sh.pin2[0] * MM)) + fax
-    pin_y = mb * (w2 * (sh.pin2[1] * MM) + g) + fay
+    pin_x = m3 * (w2 * (sh.pin2[0] * MM)) + fax
+    pin_y = m3 * (w2 * (sh.pin2[1] * MM) + g) + fay
     torque = -_cross(ax_, ay_ - design.frame * MM, pin_x, pin_y)   # clockwise +
     return {"crank_torque": torque, "o2_x": pin_x, "o2_y": pin_y + m2 * g,
             "pin_x": pin_x, "pin_y": pin_y, "a_x": fax, "a_y": fay, "slot_normal": normal_a,

@@ -353,10 +353,10 @@ class Motion:
     lever_omega: np.ndarray   # dψ/dt, (m, n) rad/s: + clockwise (toward the cut), as the crank
     lever_alpha: np.ndarray   # d²ψ/dt², (m, n) rad/s², + clockwise
     slide_v: np.ndarray       # d(O4A)/dt, (m, n) m/s: + while the block moves away from O4
-                              # (the polygon's v_A3A2 is its negative)
-    coriolis: np.ndarray      # 2·ω3·slide_v, (m, n) m/s²: the block's Coriolis acceleration
+                              # (the polygon's v_A4A3 is its negative)
+    coriolis: np.ndarray      # 2·ω4·slide_v, (m, n) m/s²: the block's Coriolis acceleration
                               # relative to the lever along n = (cos ψ, −sin ψ), the direction
-                              # of increasing ψ (the polygon's a^k_A3A2 is its negative)
+                              # of increasing ψ (the polygon's a^k_A4A3 is its negative)
     rod_angle: np.ndarray | None   # λ, direction of B→C from +x, counter-clockwise, (n,) rad
     rod_omega: np.ndarray | None   # dλ/dt, (m, n) rad/s, + counter-clockwise
     rod_alpha: np.ndarray | None   # d²λ/dt², (m, n) rad/s², + counter-clockwise

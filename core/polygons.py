@@ -2,19 +2,22 @@
 
 The graphical method of the course design draws, at one crank position,
 
-- the velocity polygon: v_A3 = v_A2 + v_A3A2 (A2 the crank pin with the block,
-  A3 the coincident point of the lever), v_B = v_A3·O4B/O4A, v_C = v_B + v_CB;
-- the acceleration polygon: a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2
-  (Coriolis a^k = 2·ω3 × v_A3A2), a_B, and a_C = a_B + a^n_CB + a^t_CB (rod) or
+- the velocity polygon: v_A4 = v_A3 + v_A4A3 (A3 the block on the crank pin, moving
+  with the crank's A2, A4 the coincident point of the lever), v_B = v_A4·O4B/O4A,
+  v_C = v_B + v_CB;
+- the acceleration polygon: a_A4 = a^n_A4 + a^t_A4 = a_A3 + a^k_A4A3 + a^r_A4A3
+  (Coriolis a^k = 2·ω4 × v_A4A3), a_B, and a_C = a_B + a^n_CB + a^t_CB (rod) or
   a_C = a_B + a^r_CB (block in the ram's vertical slot);
-- the force polygon of the ram–rod group: P + G_5 + F_I5 + G_4 + F_I4 + N + R_B = 0.
+- the force polygon of the ram–rod group: P + G_6 + F_I6 + G_5 + F_I5 + N + R_B = 0.
 
 Here every vector is computed *independently* from the closed-form solution
 (kinematics shape derivatives, the dynamics joint forces, masses), and the
 polygon's points are chained from some of them. So a polygon that closes —
 each vector equals head − tail — is a real check, not a tautology.
 
-Links are numbered as in seed 000: 1 crank, 2 block, 3 lever, 4 rod, 5 ram.
+Links are numbered as in the course design's task book (docs/methods.md): 1 frame,
+2 crank, 3 block, 4 lever, 5 rod, 6 ram; S4 and S6 are the lever's and the ram's
+centres of mass.
 Vectors are in the polygon's unit (m/s, m/s², N), x toward the cut, y up.
 Level: beside ``metrics``; imports ``kinematics`` and ``dynamics`` only.
 """
@@ -44,7 +47,7 @@ class Vector:
     """One arrow of a polygon: from point ``tail`` to point ``head``."""
 
     key: str
-    """Symbol, e.g. ``v_A3A2``, ``a^k_A3A2``, ``F_I5``."""
+    """Symbol, e.g. ``v_A4A3``, ``a^k_A4A3``, ``F_I6``."""
     tail: str
     head: str
     value: Pair
@@ -108,18 +111,18 @@ def _pair(vec: np.ndarray, factor: float = 1.0) -> Pair:
 
 
 def velocity_polygon(design: Design, crank_deg: float, rpm: float) -> Polygon:
-    """Pole p; a2 (crank pin), a3 (coincident lever point), b (lever tip), c (ram)."""
+    """Pole p; a3 (crank pin), a4 (coincident lever point), b (lever tip), c (ram)."""
     w = float(rpm_to_omega(rpm))
     sh = shape(design, np.radians([crank_deg]))
     u = sh.crank_pin[:, 0] / sh.slide[0]                  # along the lever, away from O4
     n = np.array([u[1], -u[0]])                           # direction of increasing ψ
     k = w * MM                                            # mm/rad → m/s
-    v_a2 = _pair(sh.pin1[:, 0], k)
-    v_a3 = _pair(n, k * sh.slide[0] * sh.lever1[0])       # ω3 × O4A
+    v_a3 = _pair(sh.pin1[:, 0], k)
+    v_a4 = _pair(n, k * sh.slide[0] * sh.lever1[0])       # ω4 × O4A
     v_rel = _pair(u, -k * sh.slide1[0])                   # lever point relative to the block
     v_b = _pair(sh.tip1[:, 0], k)
     v_c = (float(k * sh.ram1[0]), 0.0)
-    points = {"p": (0.0, 0.0), "a2": v_a2, "a3": v_a3, "b": v_b, "c": v_c}
+    points = {"p": (0.0, 0.0), "a3": v_a3, "a4": v_a4, "b": v_b, "c": v_c}
     if design.rod is None:
         v_cb = (0.0, -v_b[1])                             # block slides in the ram's vertical slot
         cb_role = "relative"
@@ -128,9 +131,9 @@ def velocity_polygon(design: Design, crank_deg: float, rpm: float) -> Polygon:
         v_cb = _pair(np.array([-math.sin(lam), math.cos(lam)]), design.rod * k * sh.rod1[0])
         cb_role = "relative"
     vectors = (
-        Vector("v_A2", "p", "a2", v_a2, "absolute"),
-        Vector("v_A3A2", "a2", "a3", v_rel, "relative"),
         Vector("v_A3", "p", "a3", v_a3, "absolute"),
+        Vector("v_A4A3", "a3", "a4", v_rel, "relative"),
+        Vector("v_A4", "p", "a4", v_a4, "absolute"),
         Vector("v_B", "p", "b", v_b, "absolute"),
         Vector("v_CB", "b", "c", v_cb, cb_role),
         Vector("v_C", "p", "c", v_c, "absolute"),
@@ -139,7 +142,7 @@ def velocity_polygon(design: Design, crank_deg: float, rpm: float) -> Polygon:
 
 
 def acceleration_polygon(design: Design, crank_deg: float, rpm: float) -> Polygon:
-    """Pole p′; a2′, k′ (after Coriolis), a3′, n3′ (normal of A3), b′, [n4′], c′."""
+    """Pole p′; a3′, k′ (after Coriolis), a4′, n4′ (normal of A4), b′, [n5′], c′."""
     w = float(rpm_to_omega(rpm))
     sh = shape(design, np.radians([crank_deg]))
     s, s1, s2 = sh.slide[0], sh.slide1[0], sh.slide2[0]
@@ -147,23 +150,23 @@ def acceleration_polygon(design: Design, crank_deg: float, rpm: float) -> Polygo
     u = sh.crank_pin[:, 0] / s
     n = np.array([u[1], -u[0]])
     k = w * w * MM                                        # mm/rad² → m/s²
-    a_a2 = _pair(sh.pin2[:, 0], k)
-    a_cor = _pair(n, -2.0 * k * s1 * l1)                  # 2·ω3 × v_A3A2
-    a_rel = _pair(u, -k * s2)                             # a^r_A3A2, along the lever
-    a_n3 = _pair(u, -k * s * l1 * l1)                     # toward O4
-    a_t3 = _pair(n, k * s * l2)
+    a_a3 = _pair(sh.pin2[:, 0], k)
+    a_cor = _pair(n, -2.0 * k * s1 * l1)                  # 2·ω4 × v_A4A3
+    a_rel = _pair(u, -k * s2)                             # a^r_A4A3, along the lever
+    a_n4 = _pair(u, -k * s * l1 * l1)                     # toward O4
+    a_t4 = _pair(n, k * s * l2)
     a_b = _pair(sh.tip2[:, 0], k)
     a_c = (float(k * sh.ram2[0]), 0.0)
-    k_pt = (a_a2[0] + a_cor[0], a_a2[1] + a_cor[1])
-    a3_pt = (a_n3[0] + a_t3[0], a_n3[1] + a_t3[1])
-    points = {"p'": (0.0, 0.0), "a2'": a_a2, "k'": k_pt, "n3'": a_n3, "a3'": a3_pt,
+    k_pt = (a_a3[0] + a_cor[0], a_a3[1] + a_cor[1])
+    a4_pt = (a_n4[0] + a_t4[0], a_n4[1] + a_t4[1])
+    points = {"p'": (0.0, 0.0), "a3'": a_a3, "k'": k_pt, "n4'": a_n4, "a4'": a4_pt,
               "b'": a_b, "c'": a_c}
     vectors = [
-        Vector("a_A2", "p'", "a2'", a_a2, "absolute"),
-        Vector("a^k_A3A2", "a2'", "k'", a_cor, "coriolis"),
-        Vector("a^r_A3A2", "k'", "a3'", a_rel, "relative"),
-        Vector("a^n_A3", "p'", "n3'", a_n3, "normal"),
-        Vector("a^t_A3", "n3'", "a3'", a_t3, "tangential"),
+        Vector("a_A3", "p'", "a3'", a_a3, "absolute"),
+        Vector("a^k_A4A3", "a3'", "k'", a_cor, "coriolis"),
+        Vector("a^r_A4A3", "k'", "a4'", a_rel, "relative"),
+        Vector("a^n_A4", "p'", "n4'", a_n4, "normal"),
+        Vector("a^t_A4", "n4'", "a4'", a_t4, "tangential"),
         Vector("a_B", "p'", "b'", a_b, "absolute"),
     ]
     if design.rod is None:
@@ -174,9 +177,9 @@ def acceleration_polygon(design: Design, crank_deg: float, rpm: float) -> Polygo
         across = np.array([-math.sin(lam), math.cos(lam)])
         a_ncb = _pair(along, -k * design.rod * r1 * r1)
         a_tcb = _pair(across, k * design.rod * r2)
-        points["n4'"] = (a_b[0] + a_ncb[0], a_b[1] + a_ncb[1])
-        vectors += [Vector("a^n_CB", "b'", "n4'", a_ncb, "normal"),
-                    Vector("a^t_CB", "n4'", "c'", a_tcb, "tangential")]
+        points["n5'"] = (a_b[0] + a_ncb[0], a_b[1] + a_ncb[1])
+        vectors += [Vector("a^n_CB", "b'", "n5'", a_ncb, "normal"),
+                    Vector("a^t_CB", "n5'", "c'", a_tcb, "tangential")]
     vectors.append(Vector("a_C", "p'", "c'", a_c, "absolute"))
     return Polygon("acceleration", UNITS["acceleration"], float(crank_deg), float(rpm), points,
                    tuple(vectors))
@@ -197,12 +200,12 @@ def force_polygon(design: Design, crank_deg: float, rpm: float,
     g = masses.g
     a_c = np.array([w * w * sh.ram2[0] * MM, 0.0])
     loads = [("P", (-float(dyn.cut_force[0, 0]), 0.0)),
-             ("G_5", (0.0, -masses.ram_mass_kg * g)),
-             ("F_I5", _pair(-masses.ram_mass_kg * a_c))]
+             ("G_6", (0.0, -masses.ram_mass_kg * g)),
+             ("F_I6", _pair(-masses.ram_mass_kg * a_c))]
     if design.rod is not None:
-        a_g4 = (w * w * sh.tip2[:, 0] * MM + a_c) / 2.0
-        loads += [("G_4", (0.0, -masses.rod_mass_kg * g)),
-                  ("F_I4", _pair(-masses.rod_mass_kg * a_g4))]
+        a_s5 = (w * w * sh.tip2[:, 0] * MM + a_c) / 2.0
+        loads += [("G_5", (0.0, -masses.rod_mass_kg * g)),
+                  ("F_I5", _pair(-masses.rod_mass_kg * a_s5))]
     loads += [("N", (0.0, float(dyn.guide_normal[0, 0]))),
               ("R_B", (float(dyn.b_x[0, 0]), float(dyn.b_y[0, 0])))]
     return _chain(loads, crank_deg, rpm)
@@ -210,11 +213,11 @@ def force_polygon(design: Design, crank_deg: float, rpm: float,
 
 def lever_force_polygon(design: Design, crank_deg: float, rpm: float,
                         masses: MassProperties) -> Polygon:
-    """Forces on the lever (link 3), head to tail: its weight G_3 and inertia force
-    F_I3 = −m3·a_G3 (a_G3 from the kinematics, the centre of mass on the lever at
+    """Forces on the lever (link 4), head to tail: its weight G_4 and inertia force
+    F_I4 = −m4·a_S4 (a_S4 from the kinematics, the centre of mass on the lever at
     ``masses.lever_cg``), then from ``core.dynamics`` the block's force R_A at A, the
-    frame's R_O4 and the next link's force at B, R_3B = −R_B. They close: the inertia
-    moment −J3·α3 turns the lever but adds no force. Zero forces are left out."""
+    frame's R_O4 and the next link's force at B, R_4B = −R_B. They close: the inertia
+    moment −J_S4·α4 turns the lever but adds no force. Zero forces are left out."""
     phi = np.radians([crank_deg])
     w = float(rpm_to_omega(rpm))
     sh = shape(design, phi)
@@ -223,11 +226,11 @@ def lever_force_polygon(design: Design, crank_deg: float, rpm: float,
     along, across = np.array([math.sin(psi), math.cos(psi)]), np.array([math.cos(psi), -math.sin(psi)])
     a_g = w * w * masses.lever_cg(design) * MM * (psi2 * across - psi1 ** 2 * along)
     at = lambda a: float(a[0, 0])          # noqa: E731
-    loads = [("G_3", (0.0, -masses.lever_mass_kg * masses.g)),
-             ("F_I3", _pair(-masses.lever_mass_kg * a_g)),
+    loads = [("G_4", (0.0, -masses.lever_mass_kg * masses.g)),
+             ("F_I4", _pair(-masses.lever_mass_kg * a_g)),
              ("R_A", (at(dyn.a_x), at(dyn.a_y))),
              ("R_O4", (at(dyn.o4_x), at(dyn.o4_y))),
-             ("R_3B", (-at(dyn.b_x), -at(dyn.b_y)))]
+             ("R_4B", (-at(dyn.b_x), -at(dyn.b_y)))]
     return _chain(loads, crank_deg, rpm)
 
 

@@ -350,16 +350,16 @@
         <translation>导杆角 ψ (°)</translation>
     </message>
     <message>
-        <source>lever ω3 (rad/s)</source>
-        <translation>导杆 ω3 (rad/s)</translation>
+        <source>lever ω4 (rad/s)</source>
+        <translation>导杆 ω4 (rad/s)</translation>
     </message>
     <message>
-        <source>lever α3 (rad/s²)</source>
-        <translation>导杆 α3 (rad/s²)</translation>
+        <source>lever α4 (rad/s²)</source>
+        <translation>导杆 α4 (rad/s²)</translation>
     </message>
     <message>
-        <source>block v_A2A3 (m/s)</source>
-        <translation>滑块相对速度 v_A2A3 (m/s)</translation>
+        <source>block v_A3A4 (m/s)</source>
+        <translation>滑块相对速度 v_A3A4 (m/s)</translation>
     </message>
     <message>
         <source>Coriolis a^k (m/s²)</source>
@@ -370,12 +370,12 @@
         <translation>连杆角 λ (°)</translation>
     </message>
     <message>
-        <source>rod ω4 (rad/s)</source>
-        <translation>连杆 ω4 (rad/s)</translation>
+        <source>rod ω5 (rad/s)</source>
+        <translation>连杆 ω5 (rad/s)</translation>
     </message>
     <message>
-        <source>rod α4 (rad/s²)</source>
-        <translation>连杆 α4 (rad/s²)</translation>
+        <source>rod α5 (rad/s²)</source>
+        <translation>连杆 α5 (rad/s²)</translation>
     </message>
     <message>
         <source>pressure angle (°)</source>
@@ -1413,8 +1413,8 @@
         <translation>滑枕杆组的力多边形，φ = {angle}°，μ_F = {mu_f} N/mm</translation>
     </message>
     <message>
-        <source>Force polygon of the lever (link 3), φ = {angle}°, μ_F = {mu_f} N/mm</source>
-        <translation>导杆（构件 3）的力多边形，φ = {angle}°，μ_F = {mu_f} N/mm</translation>
+        <source>Force polygon of the lever (link 4), φ = {angle}°, μ_F = {mu_f} N/mm</source>
+        <translation>导杆（构件 4）的力多边形，φ = {angle}°，μ_F = {mu_f} N/mm</translation>
     </message>
     <message>
         <source>μ_M = {mu} (N·m)/mm</source>
@@ -2864,8 +2864,8 @@
         <translation>无</translation>
     </message>
     <message>
-        <source>Mass m3</source>
-        <translation>质量 m3</translation>
+        <source>Mass m4</source>
+        <translation>质量 m4</translation>
     </message>
     <message>
         <source>Mass of the slotted lever O4B, kg</source>
@@ -2880,16 +2880,16 @@
         <translation>导杆质心沿 O4B 距 O4 的距离，mm；留空则取 L3/2</translation>
     </message>
     <message>
-        <source>Inertia J3</source>
-        <translation>转动惯量 J3</translation>
+        <source>Inertia J_S4</source>
+        <translation>转动惯量 J_S4</translation>
     </message>
     <message>
         <source>Moment of inertia of the lever about its centre of mass, kg·m²</source>
         <translation>导杆绕其质心的转动惯量，kg·m²</translation>
     </message>
     <message>
-        <source>Mass m5</source>
-        <translation>质量 m5</translation>
+        <source>Mass m6</source>
+        <translation>质量 m6</translation>
     </message>
     <message>
         <source>Mass of the ram with the tool, kg</source>
@@ -2912,8 +2912,8 @@
         <translation>滑枕质心相对铰点 C 的竖直偏移，mm（向上为正）</translation>
     </message>
     <message>
-        <source>Rod mass m4</source>
-        <translation>连杆质量 m4</translation>
+        <source>Rod mass m5</source>
+        <translation>连杆质量 m5</translation>
     </message>
     <message>
         <source>Mass of the connecting rod BC, a uniform bar, kg (rod variant only)</source>
@@ -3691,12 +3691,12 @@
         <translation>此位置所有矢量均为零。</translation>
     </message>
     <message>
-        <source>Limit position: the lever is at rest (ω₃ = 0).</source>
-        <translation>极限位置：导杆瞬时静止（ω₃ = 0）。</translation>
+        <source>Limit position: the lever is at rest (ω₄ = 0).</source>
+        <translation>极限位置：导杆瞬时静止（ω₄ = 0）。</translation>
     </message>
     <message>
-        <source>Limit position: ω₃ = 0, so aᵏ = aⁿ = 0.</source>
-        <translation>极限位置：ω₃ = 0，故 aᵏ = aⁿ = 0。</translation>
+        <source>Limit position: ω₄ = 0, so aᵏ = aⁿ = 0.</source>
+        <translation>极限位置：ω₄ = 0，故 aᵏ = aⁿ = 0。</translation>
     </message>
     <message>
         <source>Cannot export to '%1': use .png or .svg</source>
@@ -4334,8 +4334,8 @@
         <translation>&lt;b&gt;给定尺寸。&lt;/b&gt;L1、L2、L3 为给定值；θ = 2·arcsin(L1/L2)，K = (180° + θ)/(180° − θ)，H = 2·L3·sin(θ/2)；导路位于给定高度（距 O4）。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Frame and signs.&lt;/b&gt; Lever pivot O4 at the origin, crank centre O2 at (0, L2) above it, ram guide the line y = guide height; the ram cuts toward +x and the crank turns clockwise. Crank angle φ = 0 at the limit position that starts the working stroke, increasing with rotation; 0 … 180° + θ is the working stroke. Ram x, v and a are positive in the cutting direction, x measured from the position at φ = 0. The lever angle ψ is measured from O4→O2, positive toward the cut. Links: 1 crank, 2 block, 3 lever, 4 rod, 5 ram. Forces are those on the named body, torque positive in the direction of rotation.</source>
-        <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，滑枕导路为直线 y = 导路高度；滑枕向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。滑枕 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号：1 曲柄，2 滑块，3 导杆，4 连杆，5 滑枕。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
+        <source>&lt;b&gt;Frame and signs.&lt;/b&gt; Lever pivot O4 at the origin, crank centre O2 at (0, L2) above it, ram guide the line y = guide height; the ram cuts toward +x and the crank turns clockwise. Crank angle φ = 0 at the limit position that starts the working stroke, increasing with rotation; 0 … 180° + θ is the working stroke. Ram x, v and a are positive in the cutting direction, x measured from the position at φ = 0. The lever angle ψ is measured from O4→O2, positive toward the cut. Links as in the task book: 1 frame, 2 crank O2A, 3 block at A, 4 lever O4B, 5 rod BC (in the block variant the block at B), 6 ram; S4 and S6 are the lever's and the ram's centres of mass. Forces are those on the named body, torque positive in the direction of rotation.</source>
+        <translation>&lt;b&gt;坐标与符号。&lt;/b&gt;导杆转轴 O4 为原点，曲柄转轴 O2 位于其正上方 (0, L2)，滑枕导路为直线 y = 导路高度；滑枕向 +x 方向切削，曲柄顺时针转动。曲柄转角 φ 在工作行程起点的极限位置为 0，沿转动方向增大；0 … 180° + θ 为工作行程。滑枕 x、v、a 以切削方向为正，x 从 φ = 0 时的位置量起。导杆角 ψ 从 O4→O2 量起，偏向切削方向为正。构件编号（同任务书）：1 机架，2 曲柄 O2A，3 滑块 A，4 导杆 O4B，5 连杆 BC（滑块方案中为 B 处的滑块），6 滑枕；S4、S6 为导杆和滑枕的质心。力为作用在所注构件上的力，力矩以曲柄转向为正。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Synthesis.&lt;/b&gt; θ = 180°·(K − 1)/(K + 1); L2 = L1/sin(θ/2); L3 = H/(2·sin(θ/2)); guide through the tip's extreme positions at L3·cos(θ/2) above O4 (h = H/(2·tan(θ/2)) − L2 above O2).</source>
@@ -4346,24 +4346,24 @@
         <translation>无需飞轮 (J_c ≥ J_F)</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω3 and α3 are positive clockwise (as ψ and the crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
-        <translation>&lt;b&gt;正方向。&lt;/b&gt;导杆的 ω3、α3 以顺时针为正（与 ψ 及曲柄转向相同），连杆的 ω4、α4 以逆时针为正。滑块沿导杆的滑动速度以离开 O4 为正，其科氏加速度 2·ω3·v_slide 取沿 ψ 增大方向的分量；矢量多边形中的 v_A3A2 与 a^k_A3A2 为其相反数。切削力从切削开始到切削结束均作用（两端包括在内）：这两个位置的行计入切削力。</translation>
+        <source>&lt;b&gt;Senses.&lt;/b&gt; The lever's ω4 and α4 are positive clockwise (as ψ and the crank), the rod's ω5 and α5 counter-clockwise. The block's sliding speed is positive away from O4 and its Coriolis acceleration 2·ω4·v_slide is the component along the direction of increasing ψ; the polygons' v_A4A3 and a^k_A4A3 are their negatives. The cutting force acts from the start to the end of the cut, both included: the rows at those angles show it acting.</source>
+        <translation>&lt;b&gt;正方向。&lt;/b&gt;导杆的 ω4、α4 以顺时针为正（与 ψ 及曲柄转向相同），连杆的 ω5、α5 以逆时针为正。滑块沿导杆的滑动速度以离开 O4 为正，其科氏加速度 2·ω4·v_slide 取沿 ψ 增大方向的分量；矢量多边形中的 v_A4A3 与 a^k_A4A3 为其相反数。切削力从切削开始到切削结束均作用（两端包括在内）：这两个位置的行计入切削力。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Velocities.&lt;/b&gt; v_A3 = v_A2 + v_A3A2 with v_A2 = ω1·L1 ⟂ O2A, v_A3 = ω3·O4A ⟂ O4A, v_A3A2 ∥ O4A; v_B = ω3·L3; block variant v_C = v_B + v_CB (v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω4·L4 ⟂ BC.</source>
-        <translation>&lt;b&gt;速度分析。&lt;/b&gt;v_A3 = v_A2 + v_A3A2，其中 v_A2 = ω1·L1 ⟂ O2A，v_A3 = ω3·O4A ⟂ O4A，v_A3A2 ∥ O4A；v_B = ω3·L3；滑块方案 v_C = v_B + v_CB（v_CB 沿铅垂方向），连杆方案 v_C = v_B + v_CB，v_CB = ω4·L4 ⟂ BC。</translation>
+        <source>&lt;b&gt;Velocities.&lt;/b&gt; v_A4 = v_A3 + v_A4A3 with v_A3 = v_A2 = ω2·L1 ⟂ O2A, v_A4 = ω4·O4A ⟂ O4A, v_A4A3 ∥ O4A; v_B = ω4·L3; block variant v_C = v_B + v_CB (v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω5·L4 ⟂ BC.</source>
+        <translation>&lt;b&gt;速度分析。&lt;/b&gt;v_A4 = v_A3 + v_A4A3，其中 v_A3 = v_A2 = ω2·L1 ⟂ O2A，v_A4 = ω4·O4A ⟂ O4A，v_A4A3 ∥ O4A；v_B = ω4·L3；滑块方案 v_C = v_B + v_CB（v_CB 沿铅垂方向），连杆方案 v_C = v_B + v_CB，v_CB = ω5·L4 ⟂ BC。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Accelerations.&lt;/b&gt; a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, a^n_A3 = ω3²·O4A toward O4, a^t_A3 = α3·O4A, Coriolis a^k_A3A2 = 2·ω3·v_A3A2 (v_A3A2 turned 90° in the sense of ω3); a_C = a_B + a^n_CB + a^t_CB (rod) with a^n_CB = ω4²·L4, a^t_CB = α4·L4.</source>
-        <translation>&lt;b&gt;加速度分析。&lt;/b&gt;a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2，a^n_A3 = ω3²·O4A 指向 O4，a^t_A3 = α3·O4A，哥氏加速度 a^k_A3A2 = 2·ω3·v_A3A2（将 v_A3A2 沿 ω3 转向转 90°）；连杆方案 a_C = a_B + a^n_CB + a^t_CB，a^n_CB = ω4²·L4，a^t_CB = α4·L4。</translation>
+        <source>&lt;b&gt;Accelerations.&lt;/b&gt; a_A4 = a^n_A4 + a^t_A4 = a_A3 + a^k_A4A3 + a^r_A4A3, a^n_A4 = ω4²·O4A toward O4, a^t_A4 = α4·O4A, Coriolis a^k_A4A3 = 2·ω4·v_A4A3 (v_A4A3 turned 90° in the sense of ω4); a_C = a_B + a^n_CB + a^t_CB (rod) with a^n_CB = ω5²·L4, a^t_CB = α5·L4.</source>
+        <translation>&lt;b&gt;加速度分析。&lt;/b&gt;a_A4 = a^n_A4 + a^t_A4 = a_A3 + a^k_A4A3 + a^r_A4A3，a^n_A4 = ω4²·O4A 指向 O4，a^t_A4 = α4·O4A，哥氏加速度 a^k_A4A3 = 2·ω4·v_A4A3（将 v_A4A3 沿 ω4 转向转 90°）；连杆方案 a_C = a_B + a^n_CB + a^t_CB，a^n_CB = ω5²·L4，a^t_CB = α5·L4。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d'Alembert): inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
-        <translation>&lt;b&gt;力分析。&lt;/b&gt;曲柄匀速转动下的动态静力分析（达朗贝尔原理）：加上惯性力 F_I = −m·a_G 和惯性力矩 −J·α 后各构件处于平衡；运动副无摩擦。切削力 P 与切削方向相反，作用于工作行程的 空刀量·H 至 (1 − 空刀量)·H 之间。</translation>
+        <source>&lt;b&gt;Forces.&lt;/b&gt; Kinetostatics at constant crank speed (d'Alembert): inertia forces F_I = −m·a_S and moments −J·α are applied and each link is in equilibrium; joints are frictionless. The cutting force P acts against the cut between idle·H and (1 − idle)·H of the working stroke.</source>
+        <translation>&lt;b&gt;力分析。&lt;/b&gt;曲柄匀速转动下的动态静力分析（达朗贝尔原理）：加上惯性力 F_I = −m·a_S 和惯性力矩 −J·α 后各构件处于平衡；运动副无摩擦。切削力 P 与切削方向相反，作用于工作行程的空刀量·H 至 (1 − 空刀量)·H 之间。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Flywheel.&lt;/b&gt; T_m = (1/2π)∮T dφ; P_m = T_m·ω; ΔW_max = max − min of ∫(T − T_m) dφ; J_F = ΔW_max/(ω²·δ) on the crank shaft (on a shaft turning i times faster: J_F/i²).</source>
-        <translation>&lt;b&gt;飞轮。&lt;/b&gt;T_m = (1/2π)∮T dφ；P_m = T_m·ω；ΔW_max 为 ∫(T − T_m) dφ 的最大值与最小值之差；曲柄轴上 J_F = ΔW_max/(ω²·δ)（装在转速为其 i 倍的轴上时为 J_F/i²）。</translation>
+        <source>&lt;b&gt;Flywheel.&lt;/b&gt; M_m = (1/2π)∮M dφ; P_m = M_m·ω; ΔW_max = max − min of ∫(M − M_m) dφ; J_F = ΔW_max/(ω²·δ) on the crank shaft (on a shaft turning i times faster: J_F/i²).</source>
+        <translation>&lt;b&gt;飞轮。&lt;/b&gt;M_m = (1/2π)∮M dφ；P_m = M_m·ω；ΔW_max 为 ∫(M − M_m) dφ 的最大值与最小值之差；曲柄轴上 J_F = ΔW_max/(ω²·δ)（装在转速为其 i 倍的轴上时为 J_F/i²）。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Method.&lt;/b&gt; All values are computed in closed form from the exact position solution and its derivatives (no numerical differentiation); special positions are exact roots. Every number equals the output of the shaper command line for the same inputs.</source>
@@ -4414,8 +4414,8 @@
         <translation>所比较各设计在曲柄一转中的滑枕位移、速度、加速度和曲柄驱动力矩</translation>
     </message>
     <message>
-        <source>Design</source>
-        <translation>设计</translation>
+        <source>Design name</source>
+        <translation>设计名称</translation>
     </message>
     <message>
         <source>Date</source>

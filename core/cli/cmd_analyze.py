@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from ..figure_text import figure_text
 from ..geometry import Design
 from ..io import finite_or_none
 from ..metrics import CycleMetrics, SpeedMetrics, analyze
@@ -52,23 +53,25 @@ def metrics_summary(design: Design, metrics: CycleMetrics) -> dict[str, Any]:
 
 def cycle_rows(metrics: CycleMetrics) -> list[tuple[str, str]]:
     """(label, value) of the speed-independent figures, as printed (and in the report)."""
-    rows = [("measured K", f"{metrics.time_ratio:.6f}"),
-            ("measured stroke", f"{metrics.stroke_mm:.3f} mm"),
-            ("θ", f"{metrics.theta_deg:.4f} °"),
+    f = figure_text
+    rows = [("measured K", f("ratio", metrics.time_ratio)),
+            ("measured stroke", f"{f('length', metrics.stroke_mm)} mm"),
+            ("θ", f"{f('angle', metrics.theta_deg)} °"),
             ("working / return crank angle",
-             f"{metrics.work_angle_deg:.3f} ° / {metrics.return_angle_deg:.3f} °")]
+             f"{f('angle', metrics.work_angle_deg)} ° / {f('angle', metrics.return_angle_deg)} °")]
     if metrics.pressure_angle_max_deg is not None:
-        rows.append(("max pressure angle", f"{metrics.pressure_angle_max_deg:.3f} °"))
+        rows.append(("max pressure angle", f"{f('angle', metrics.pressure_angle_max_deg)} °"))
     return rows
 
 
 def speed_rows(s: SpeedMetrics) -> list[tuple[str, str]]:
     """(label, value) of one crank speed's figures, as printed (and in the report)."""
-    return [("working / return time", f"{s.work_time_s:.4f} s / {s.return_time_s:.4f} s"),
-            ("max cutting speed", f"{s.v_work_max_m_s:.4f} m/s"),
-            ("mean cutting speed", f"{s.v_work_mean_m_s:.4f} m/s"),
-            ("max return speed", f"{s.v_return_max_m_s:.4f} m/s"),
-            ("max |acceleration|", f"{s.a_max_m_s2:.4f} m/s²")]
+    f = figure_text
+    return [("working / return time", f"{f('time', s.work_time_s)} s / {f('time', s.return_time_s)} s"),
+            ("max cutting speed", f"{f('speed', s.v_work_max_m_s)} m/s"),
+            ("mean cutting speed", f"{f('speed', s.v_work_mean_m_s)} m/s"),
+            ("max return speed", f"{f('speed', s.v_return_max_m_s)} m/s"),
+            ("max |acceleration|", f"{f('acceleration', s.a_max_m_s2)} m/s²")]
 
 
 def run(args: argparse.Namespace) -> int:

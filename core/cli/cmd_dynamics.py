@@ -5,6 +5,7 @@ import argparse
 
 import numpy as np
 
+from ..figure_text import figure_text
 from ..dynamics import DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics
 
 from ..flywheel import summarize
@@ -68,30 +69,31 @@ def summary_rows(design: Design, masses: MassProperties,
             ("lever weight G4", f"{masses.weight('lever_mass_kg'):g} N"),
             ("ram weight G6", f"{masses.weight('ram_mass_kg'):g} N"),
             ("cutting force", f"{masses.cut_force_N:g} N over {1 - 2 * masses.idle_fraction:.0%} of the stroke"),
-            ("mean reduced inertia J_e", f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²")]
+            ("mean reduced inertia J_e", f"{figure_text('inertia', summary.equivalent_inertia_mean_kg_m2)} kg·m²")]
     if masses.rotors:
         parts = " + ".join(f"{j:g}·{r:g}²" for j, r in masses.rotors)
         rows.append(("rotating parts J_c = Σ J·(ω/ω2)²",
-                     f"{parts} = {summary.rotor_inertia_kg_m2:.5g} kg·m²"))
-    return rows + [("speed fluctuation δ", f"{masses.delta:.5g}")]
+                     f"{parts} = {figure_text('inertia', summary.rotor_inertia_kg_m2)} kg·m²"))
+    return rows + [("speed fluctuation δ", figure_text("coefficient", masses.delta))]
 
 
 def speed_rows(s: SpeedSummary, rotors_kg_m2: float | None = None) -> list[tuple[str, str]]:
     """(label, value) of one crank speed's torque, power and flywheel, as printed (and in
     the report). With ``rotors_kg_m2`` (J_c, when rotating parts were given) also the
     flywheel the task book asks for, J_F − J_c, or that none is needed."""
-    rows = [("mean / max crank torque", f"{s.mean_torque_N_m:.4g} N·m / {s.max_torque_N_m:.4g} N·m"),
-            ("mean power", f"{s.mean_power_W:.4g} W"),
-            ("energy fluctuation ΔW_max", f"{s.energy_fluctuation_J:.4g} J"),
-            ("flywheel J_F", f"{s.flywheel_inertia_kg_m2:.4g} kg·m²")]
+    f = figure_text
+    rows = [("mean / max crank torque", f"{f('torque', s.mean_torque_N_m)} N·m / {f('torque', s.max_torque_N_m)} N·m"),
+            ("mean power", f"{f('power', s.mean_power_W)} W"),
+            ("energy fluctuation ΔW_max", f"{f('energy', s.energy_fluctuation_J)} J"),
+            ("flywheel J_F", f"{f('inertia', s.flywheel_inertia_kg_m2)} kg·m²")]
     if rotors_kg_m2 is None:
-        return rows + [("flywheel J_F − J_e (net)", f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+        return rows + [("flywheel J_F − J_e (net)", f"{f('inertia', s.flywheel_inertia_net_kg_m2)} kg·m²")]
     return rows + [("flywheel needed J_F − J_c", needed_text(s, rotors_kg_m2)),
-                   ("flywheel J_F − J_c − J_e (net)", f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+                   ("flywheel J_F − J_c − J_e (net)", f"{f('inertia', s.flywheel_inertia_net_kg_m2)} kg·m²")]
 
 
 def needed_text(s: SpeedSummary, rotors_kg_m2: float) -> str:
     """J_F − J_c, or that no flywheel is needed (never a negative inertia)."""
     if s.flywheel_needed:
-        return f"{s.flywheel_inertia_needed_kg_m2:.4g} kg·m²"
-    return f"none needed (J_c = {rotors_kg_m2:.4g} kg·m² ≥ J_F)"
+        return f"{figure_text('inertia', s.flywheel_inertia_needed_kg_m2)} kg·m²"
+    return f"none needed (J_c = {figure_text('inertia', rotors_kg_m2)} kg·m² ≥ J_F)"

@@ -5,6 +5,7 @@ import argparse
 import math
 from typing import Any, Mapping
 
+from ..figure_text import figure_text
 from ..geometry import Design
 from .common import add_design_options, design_from_args
 from .output import print_json, print_table
@@ -53,12 +54,13 @@ def dimension_rows(design: Design, words: Mapping[str, str] | None = None) -> li
     ``words`` may rename the variant and rod-side words (a translation)."""
     word = (lambda w: w) if words is None else (lambda w: words.get(w, w))  # noqa: E731
     rows = [("variant", word(design.variant)),
-            ("extreme-position angle θ", f"{math.degrees(design.theta):.4f} °"),
-            ("frame O2O4 L2", f"{design.frame:.3f} mm"),
-            ("lever O4B L3", f"{design.lever:.3f} mm"),
-            ("guide above lever pivot", f"{design.guide:.3f} mm"),
-            ("guide above crank centre h", f"{design.guide_above_crank:.3f} mm")]
+            ("extreme-position angle θ", f"{figure_text('angle', math.degrees(design.theta))} °"),
+            ("frame O2O4 L2", f"{figure_text('length', design.frame)} mm"),
+            ("lever O4B L3", f"{figure_text('length', design.lever)} mm"),
+            ("guide above lever pivot", f"{figure_text('length', design.guide)} mm"),
+            ("guide above crank centre h", f"{figure_text('length', design.guide_above_crank)} mm")]
     if design.rod is not None:
-        rows.append(("rod BC L4", f"{design.rod:.3f} mm ({word(design.rod_side)})"))
-    rows += [("time ratio K", f"{design.time_ratio:.6g}"), ("stroke H", f"{design.stroke:.3f} mm")]
+        rows.append(("rod BC L4", f"{figure_text('length', design.rod)} mm ({word(design.rod_side)})"))
+    rows += [("time ratio K", figure_text("ratio", design.time_ratio)),
+             ("stroke H", f"{figure_text('length', design.stroke)} mm")]
     return rows

@@ -21,6 +21,7 @@ from typing import Mapping
 import numpy as np
 
 from core.dynamics import MM, MassProperties, solve_dynamics
+from core.figure_text import figure_text
 from core.flywheel import summarize
 from core.geometry import Design
 from core.kinematics import rpm_to_omega, shape
@@ -42,7 +43,7 @@ ENGLISH = {
     "mechanism": "Loads and joint forces, φ = {angle}°",
     "mechanism_scales": "μ_l = {mu} m/mm ({scale}), μ_F = {mu_f} N/mm",
     "polygon_ram": "Force polygon of the ram group, φ = {angle}°, μ_F = {mu_f} N/mm",
-    "polygon_lever": "Force polygon of the lever (link 3), φ = {angle}°, μ_F = {mu_f} N/mm",
+    "polygon_lever": "Force polygon of the lever (link 4), φ = {angle}°, μ_F = {mu_f} N/mm",
     "torque": "Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min",
     "energy": "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J",
     "M": "M/(N·m)", "E": "E/J", "phi": "φ/(°)",
@@ -62,7 +63,7 @@ ENGLISH = {
 }
 # core's force keys as the sheet writes them: the letter, and its index as a subscript
 FORCE_NAMES = {key: (key.split("_")[0], key.partition("_")[2]) for key in (
-    "P", "G_5", "F_I5", "G_4", "F_I4", "N", "R_B", "R_O2", "R_A", "R_O4", "R_C", "G_3", "F_I3", "R_3B")}
+    "P", "G_6", "F_I6", "G_5", "F_I5", "N", "R_B", "R_O2", "R_A", "R_O4", "R_C", "G_4", "F_I4", "R_4B")}
 ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
 TORQUE_STEP_DEG = 1.0
 # room a mechanism drawing keeps beside the links' extent, paper mm: the guide line runs
@@ -146,7 +147,7 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     areas["torque"] = (torque_box, tuple(items))
     energy_deg = np.degrees(summary.crank_angle)
     items, energy_chart = _curve_chart(energy_box, energy_deg, summary.energy[0], None,
-                                       lab["energy"].format(dw=f"{speed.energy_fluctuation_J:.4g}"),
+                                       lab["energy"].format(dw=figure_text("energy", speed.energy_fluctuation_J)),
                                        lab["E"], "mu_E", lab)
     areas["energy"] = (energy_box, tuple(items))
 
@@ -184,7 +185,7 @@ def _mechanism_cells(design: Design, area: Box) -> tuple[float, list[Box]]:
 def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: float
                  ) -> list[tuple[str, str, np.ndarray]]:
     """(name, where, force in N) on the mechanism at one angle: the loads on the ram (P at
-    the tool, G5 and F_I5 at C, the guide's N) and the joint forces, each on the link the
+    the tool, G6 and F_I6 at C, the guide's N) and the joint forces, each on the link the
     README names (R_O2 on the crank, R_A and R_O4 on the lever, R_B by the lever on the next
     link, R_C by the rod on the ram). Zero forces are left out."""
     phi = np.radians([angle_deg])
@@ -193,8 +194,8 @@ def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: 
     a_c = w * w * float(shape(design, phi).ram2[0]) * MM
     at = lambda a: float(a[0, 0])          # noqa: E731
     forces = [("P", "tool", np.array([-at(d.cut_force), 0.0])),
-              ("G_5", "C", np.array([0.0, -masses.ram_mass_kg * masses.g])),
-              ("F_I5", "C", np.array([-masses.ram_mass_kg * a_c, 0.0])),
+              ("G_6", "C", np.array([0.0, -masses.ram_mass_kg * masses.g])),
+              ("F_I6", "C", np.array([-masses.ram_mass_kg * a_c, 0.0])),
               ("N", "C", np.array([0.0, at(d.guide_normal)])),
               ("R_O2", "O2", np.array([at(d.o2_x), at(d.o2_y)])),
               ("R_A", "A", np.array([at(d.a_x), at(d.a_y)])),
@@ -280,21 +281,22 @@ def flywheel_rows(summary, masses: MassProperties, lab: Mapping[str, str]) -> li
     """The flywheel result at the first speed, formatted as ``shaper dynamics`` prints it;
     with rotating parts (``masses.rotors``) also J_c and the flywheel J_F − J_c they leave."""
     s = summary.speeds[0]
+    f = figure_text
     if masses.rotors:
-        needed = (f"{s.flywheel_inertia_needed_kg_m2:.4g} kg·m²" if s.flywheel_needed
+        needed = (f"{f('inertia', s.flywheel_inertia_needed_kg_m2)} kg·m²" if s.flywheel_needed
                   else lab["none_needed"])
-        rotors = [(lab["J_c"], f"{summary.rotor_inertia_kg_m2:.4g} kg·m²"), (lab["J_needed"], needed),
-                  (lab["J_net_rotors"], f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+        rotors = [(lab["J_c"], f"{f('inertia', summary.rotor_inertia_kg_m2)} kg·m²"), (lab["J_needed"], needed),
+                  (lab["J_net_rotors"], f"{f('inertia', s.flywheel_inertia_net_kg_m2)} kg·m²")]
     else:
-        rotors = [(lab["J_net"], f"{s.flywheel_inertia_net_kg_m2:.4g} kg·m²")]
+        rotors = [(lab["J_net"], f"{f('inertia', s.flywheel_inertia_net_kg_m2)} kg·m²")]
     return [(lab["n"], f"{number_text(s.rpm)} r/min"),
-            (lab["M_mean"], f"{s.mean_torque_N_m:.4g} N·m"),
-            (lab["M_max"], f"{s.max_torque_N_m:.4g} N·m"),
-            (lab["P_mean"], f"{s.mean_power_W:.4g} W"),
-            (lab["dW"], f"{s.energy_fluctuation_J:.4g} J"),
-            (lab["delta"], f"{masses.delta:.5g}"),
-            (lab["J_F"], f"{s.flywheel_inertia_kg_m2:.4g} kg·m²"),
-            (lab["J_e"], f"{summary.equivalent_inertia_mean_kg_m2:.5g} kg·m²")] + rotors
+            (lab["M_mean"], f"{f('torque', s.mean_torque_N_m)} N·m"),
+            (lab["M_max"], f"{f('torque', s.max_torque_N_m)} N·m"),
+            (lab["P_mean"], f"{f('power', s.mean_power_W)} W"),
+            (lab["dW"], f"{f('energy', s.energy_fluctuation_J)} J"),
+            (lab["delta"], f("coefficient", masses.delta)),
+            (lab["J_F"], f"{f('inertia', s.flywheel_inertia_kg_m2)} kg·m²"),
+            (lab["J_e"], f"{f('inertia', summary.equivalent_inertia_mean_kg_m2)} kg·m²")] + rotors
 
 
 def guide_rows(design: Design, rpm: float, masses: MassProperties, angles_deg,

@@ -21,6 +21,7 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from core.errors import DesignError
+from core.figure_text import figure_text
 from core.geometry import Design
 from core.kinematics import solve
 from core.polygons import acceleration_polygon, velocity_polygon
@@ -52,10 +53,10 @@ ENGLISH = {
     "theta": "Extreme-position angle θ", "n": "Crank speed n",
     **TITLE_ENGLISH,
 }
-# The polygons' points as textbooks name them (a₂′: an index as a subscript, then the prime)
-POINT_NAMES = {"p": "p", "a2": ("a", "2"), "a3": ("a", "3"), "b": "b", "c": "c", "p'": "p′",
-               "a2'": [("a", "2"), "′"], "k'": "k′", "n3'": [("n", "3"), "′"], "a3'": [("a", "3"), "′"],
-               "b'": "b′", "c'": "c′", "n4'": [("n", "4"), "′"]}
+# The polygons' points as textbooks name them (a₃′: an index as a subscript, then the prime)
+POINT_NAMES = {"p": "p", "a3": ("a", "3"), "a4": ("a", "4"), "b": "b", "c": "c", "p'": "p′",
+               "a3'": [("a", "3"), "′"], "k'": "k′", "n4'": [("n", "4"), "′"], "a4'": [("a", "4"), "′"],
+               "b'": "b′", "c'": "c′", "n5'": [("n", "5"), "′"]}
 GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
@@ -290,13 +291,13 @@ def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
 
 
 def _dimension_rows(design: Design, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:
-    mm = lambda v: f"{v:.3f} mm"                     # noqa: E731
+    mm = lambda v: f"{figure_text('length', v)} mm"    # noqa: E731
     rows = [(lab["L1"], mm(design.crank)), (lab["L2"], mm(design.frame)),
             (lab["L3"], mm(design.lever))]
     if design.rod is not None:
         rows.append((lab["L4"], mm(design.rod)))
     rows += [(lab["h"], mm(design.guide_above_crank)), (lab["H"], mm(design.stroke)),
-             (lab["K"], f"{design.time_ratio:.4f}"),
-             (lab["theta"], f"{math.degrees(design.theta):.3f}°"),
+             (lab["K"], figure_text("ratio", design.time_ratio)),
+             (lab["theta"], f"{figure_text('angle', math.degrees(design.theta))}°"),
              (lab["n"], f"{number_text(rpm)} r/min")]
     return rows

@@ -67,7 +67,7 @@ class Text:
     the capitals), ``align`` a horizontal (l, c, r) and a vertical (b, m, t) letter, e.g.
     "lb" or "cm"; ``rotation`` in degrees counter-clockwise about ``position``.
     ``subscripts`` are spans (start, end) of ``text`` set as subscripts: one size smaller
-    and lowered, as GB/T 14691 writes indices (F with I5 in F_I5). The text itself stays
+    and lowered, as GB/T 14691 writes indices (F with I6 in F_I6). The text itself stays
     plain letters, which every CAD font has; Unicode's subscript digits are not in them,
     and it has no capital subscripts at all."""
 
@@ -151,7 +151,7 @@ def smaller_height(height: float) -> float:
 def symbol(*parts: str | tuple[str, str]) -> tuple[str, tuple[tuple[int, int], ...]]:
     """Text and subscript spans for a name written in parts: a plain string, or a pair
     (letters, index) whose index is a subscript. ``symbol(("R", "O2"))`` is R with O2
-    below; ``symbol(("a", "2"), ",", ("a", "3"))`` two coincident points."""
+    below; ``symbol(("a", "3"), ",", ("a", "4"))`` two coincident points."""
     text, spans = "", []
     for part in parts:
         base, index = (part, "") if isinstance(part, str) else part

@@ -163,21 +163,21 @@ class LoadsForm(QWidget):
     def _field_texts(self) -> dict[str, tuple[str, str]]:
         """(label, tooltip) of every input."""
         return {
-            "lever_mass_kg": (self.tr("Mass m3"), self.tr("Mass of the slotted lever O4B, kg")),
+            "lever_mass_kg": (self.tr("Mass m4"), self.tr("Mass of the slotted lever O4B, kg")),
             "lever_cg_mm": (self.tr("Centre of mass c"),
                             self.tr("Distance of the lever's centre of mass from O4 along O4B, mm; "
                                     "leave empty for L3/2")),
-            "lever_inertia_kg_m2": (self.tr("Inertia J3"),
+            "lever_inertia_kg_m2": (self.tr("Inertia J_S4"),
                                     self.tr("Moment of inertia of the lever about its centre of "
                                             "mass, kg·m²")),
-            "ram_mass_kg": (self.tr("Mass m5"), self.tr("Mass of the ram with the tool, kg")),
+            "ram_mass_kg": (self.tr("Mass m6"), self.tr("Mass of the ram with the tool, kg")),
             "ram_cg_dx": (self.tr("Centre of mass dx"),
                           self.tr("Horizontal offset of the ram's centre of mass from the ram "
                                   "joint C, mm (+ in the cutting direction)")),
             "ram_cg_dy": (self.tr("Centre of mass dy"),
                           self.tr("Vertical offset of the ram's centre of mass from the ram "
                                   "joint C, mm (+ up)")),
-            "rod_mass_kg": (self.tr("Rod mass m4"),
+            "rod_mass_kg": (self.tr("Rod mass m5"),
                             self.tr("Mass of the connecting rod BC, a uniform bar, kg (rod "
                                     "variant only)")),
             "block_mass_kg": (self.tr("Block mass"),

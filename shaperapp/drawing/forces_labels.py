@@ -16,7 +16,7 @@ def forces_labels() -> dict[str, str]:
         "mechanism": translate("Drawing", "Loads and joint forces, φ = {angle}°"),
         "mechanism_scales": translate("Drawing", "μ_l = {mu} m/mm ({scale}), μ_F = {mu_f} N/mm"),
         "polygon_ram": translate("Drawing", "Force polygon of the ram group, φ = {angle}°, μ_F = {mu_f} N/mm"),
-        "polygon_lever": translate("Drawing", "Force polygon of the lever (link 3), φ = {angle}°, μ_F = {mu_f} N/mm"),
+        "polygon_lever": translate("Drawing", "Force polygon of the lever (link 4), φ = {angle}°, μ_F = {mu_f} N/mm"),
         "torque": translate("Drawing", "Driving torque on the crank M over φ, mean M_m dashed, n = {rpm} r/min"),
         "energy": translate("Drawing", "Energy ∫(M − M_m)dφ over φ, ΔW_max = {dw} J"),
         "M": translate("Drawing", "M/(N·m)"), "E": translate("Drawing", "E/J"), "phi": translate("Drawing", "φ/(°)"),

@@ -123,7 +123,7 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
     label–value cells a row."""
     translate = QCoreApplication.translate
     c = report.cover
-    return [(translate("Report", "Design"), report.name),
+    return [(translate("Report", "Design name"), report.name),
             (translate("Report", "Student"), c.student),
             (translate("Report", "Student number"), c.number),
             (translate("Report", "Class"), c.group), (translate("Report", "School"), c.school),
@@ -131,13 +131,13 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
 
 
 # The formulas' notation in the (translated) source text, typeset by ``typeset``:
-# a^k_A3A2 → a with k above and A3A2 below, a^k → a with k above, v_A3 and ω_max → v, ω with
-# A3, max below, O4/L1/ω3 → O, L, ω with
+# a^k_A4A3 → a with k above and A4A3 below, a^k → a with k above, v_A4 and ω_max → v, ω with
+# A4, max below, O4/L1/S4/ω4 → O, L, S, ω with
 # the digit below, (1/2π) → a slanted fraction.
 _NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
                        r"|(?<![A-Za-z0-9])(?P<base1>[A-Za-z])\^(?P<sup1>[a-z])(?![A-Za-z0-9_])"
                        r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔωαψ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z_])(?P<name>[OLωαψr])(?P<digit>\d)"
+                       r"|(?<![A-Za-z_])(?P<name>[OLSωαψr])(?P<digit>\d)"
                        r"|\((?P<num>\d)/(?P<den>\d?π)\)")
 
 

@@ -23,6 +23,7 @@ from core.cli.cmd_synth import dimension_rows
 from core.cam import CamInputs
 from core.compare import Candidate
 from core.dynamics import DynamicsSummary, MassProperties, masses_for_design
+from core.figure_text import figure_text
 from core.flywheel import summarize
 from core.gear import GearPairInputs
 from core.geometry import Design
@@ -261,7 +262,7 @@ def _dynamics_table(summary: DynamicsSummary, design: Design) -> Table:
     for s in summary.speeds:
         row = dynamics_speed_rows(s, rotors) + [("J_e", shared["mean reduced inertia J_e"])]
         if rotors is not None:
-            row.append(("J_c", f"{rotors:.5g} kg·m²"))
+            row.append(("J_c", f"{figure_text('inertia', rotors)} kg·m²"))
             if not s.flywheel_needed:          # the CLI's words, in the report's language
                 row.append(("flywheel needed J_F − J_c", translate("Report", "none needed (J_c ≥ J_F)")))
         rows.append(row)
@@ -315,29 +316,30 @@ def _conventions(spec: Spec) -> list:
                     "crank turns clockwise. Crank angle φ = 0 at the limit position that starts the working "
                     "stroke, increasing with rotation; 0 … 180° + θ is the working stroke. Ram x, v and a are "
                     "positive in the cutting direction, x measured from the position at φ = 0. The lever "
-                    "angle ψ is measured from O4→O2, positive toward the cut. Links: 1 crank, 2 block, "
-                    "3 lever, 4 rod, 5 ram. Forces are those on the named body, torque positive in the "
+                    "angle ψ is measured from O4→O2, positive toward the cut. Links as in the task book: "
+                    "1 frame, 2 crank O2A, 3 block at A, 4 lever O4B, 5 rod BC (in the block variant the "
+                    "block at B), 6 ram; S4 and S6 are the lever's and the ram's centres of mass. Forces are those on the named body, torque positive in the "
                     "direction of rotation.")),
         p(_method(spec)),
-        p(translate("Report", "<b>Senses.</b> The lever's ω3 and α3 are positive clockwise (as ψ and the "
-                    "crank), the rod's ω4 and α4 counter-clockwise. The block's sliding speed is positive "
-                    "away from O4 and its Coriolis acceleration 2·ω3·v_slide is the component along the "
-                    "direction of increasing ψ; the polygons' v_A3A2 and a^k_A3A2 are their negatives. The "
+        p(translate("Report", "<b>Senses.</b> The lever's ω4 and α4 are positive clockwise (as ψ and the "
+                    "crank), the rod's ω5 and α5 counter-clockwise. The block's sliding speed is positive "
+                    "away from O4 and its Coriolis acceleration 2·ω4·v_slide is the component along the "
+                    "direction of increasing ψ; the polygons' v_A4A3 and a^k_A4A3 are their negatives. The "
                     "cutting force acts from the start to the end of the cut, both included: the rows at "
                     "those angles show it acting.")),
-        p(translate("Report", "<b>Velocities.</b> v_A3 = v_A2 + v_A3A2 with v_A2 = ω1·L1 ⟂ O2A, "
-                    "v_A3 = ω3·O4A ⟂ O4A, v_A3A2 ∥ O4A; v_B = ω3·L3; block variant v_C = v_B + v_CB "
-                    "(v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω4·L4 ⟂ BC.")),
-        p(translate("Report", "<b>Accelerations.</b> a_A3 = a^n_A3 + a^t_A3 = a_A2 + a^k_A3A2 + a^r_A3A2, "
-                    "a^n_A3 = ω3²·O4A toward O4, a^t_A3 = α3·O4A, Coriolis a^k_A3A2 = 2·ω3·v_A3A2 "
-                    "(v_A3A2 turned 90° in the sense of ω3); a_C = a_B + a^n_CB + a^t_CB (rod) with "
-                    "a^n_CB = ω4²·L4, a^t_CB = α4·L4.")),
+        p(translate("Report", "<b>Velocities.</b> v_A4 = v_A3 + v_A4A3 with v_A3 = v_A2 = ω2·L1 ⟂ O2A, "
+                    "v_A4 = ω4·O4A ⟂ O4A, v_A4A3 ∥ O4A; v_B = ω4·L3; block variant v_C = v_B + v_CB "
+                    "(v_CB vertical), rod variant v_C = v_B + v_CB with v_CB = ω5·L4 ⟂ BC.")),
+        p(translate("Report", "<b>Accelerations.</b> a_A4 = a^n_A4 + a^t_A4 = a_A3 + a^k_A4A3 + a^r_A4A3, "
+                    "a^n_A4 = ω4²·O4A toward O4, a^t_A4 = α4·O4A, Coriolis a^k_A4A3 = 2·ω4·v_A4A3 "
+                    "(v_A4A3 turned 90° in the sense of ω4); a_C = a_B + a^n_CB + a^t_CB (rod) with "
+                    "a^n_CB = ω5²·L4, a^t_CB = α5·L4.")),
         p(translate("Report", "<b>Forces.</b> Kinetostatics at constant crank speed (d'Alembert): "
-                    "inertia forces F_I = −m·a_G and moments −J·α are applied and each link is in "
+                    "inertia forces F_I = −m·a_S and moments −J·α are applied and each link is in "
                     "equilibrium; joints are frictionless. The cutting force P acts against the cut between "
                     "idle·H and (1 − idle)·H of the working stroke.")),
-        p(translate("Report", "<b>Flywheel.</b> T_m = (1/2π)∮T dφ; P_m = T_m·ω; "
-                    "ΔW_max = max − min of ∫(T − T_m) dφ; J_F = ΔW_max/(ω²·δ) on the crank shaft "
+        p(translate("Report", "<b>Flywheel.</b> M_m = (1/2π)∮M dφ; P_m = M_m·ω; "
+                    "ΔW_max = max − min of ∫(M − M_m) dφ; J_F = ΔW_max/(ω²·δ) on the crank shaft "
                     "(on a shaft turning i times faster: J_F/i²).")),
         p(translate("Report", "<b>Method.</b> All values are computed in closed form from the exact "
                     "position solution and its derivatives (no numerical differentiation); special "

@@ -7,8 +7,10 @@ from PySide6.QtCore import QCoreApplication
 
 from core.cam import CamInputs
 from core.dynamics import GRAVITY, MassProperties
+from core.figure_text import figure_text
 from core.gear.inputs import GearPairInputs
 from core.geometry import Design
+
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
 
@@ -44,7 +46,7 @@ def load_rows(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
              (translate("Report", "Ram guide length"),
               f"{masses.guide_length(design):g} mm" + ("" if masses.guide_length_mm is not None
                                                        else translate("Report", " (the stroke H)"))),
-             (translate("Report", "Coefficient of speed fluctuation δ"), f"{masses.delta:.5g}")]
+             (translate("Report", "Coefficient of speed fluctuation δ"), figure_text("coefficient", masses.delta))]
     if masses.rotors:
         parts = "; ".join(f"J = {j:g} kg·m² at {r:g}·ω2" for j, r in masses.rotors)
         rows.append((translate("Report", "Other rotating parts (J, speed)"), parts))

@@ -133,7 +133,7 @@ def _table_pieces(lay: Layout, block: Table | KeyValues, font: QFont) -> list[Pi
 
 def _cell(p: QPainter, rect: QRectF, flags, text: str, font: QFont, rich: bool) -> None:
     """A table cell's text; the program's own labels (``rich``) with their notation
-    typeset (``typeset``: J_F, v_A2A3, a^k …), user text always as it is."""
+    typeset (``typeset``: J_F, v_A3A4, a^k …), user text always as it is."""
     marked = typeset(html.escape(text)) if rich else ""
     if not rich or marked == html.escape(text):
         p.drawText(rect, int(flags), text)

@@ -13,12 +13,18 @@ import math
 from PySide6.QtCore import QEvent, QPoint
 from PySide6.QtWidgets import QAbstractScrollArea, QGroupBox, QVBoxLayout, QWidget
 
+from core.figure_text import figure_text
+
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.result_table import ResultTable
-from shaperapp.widgets.style import fmt
 
 DIMENSIONS = ("theta", "frame", "lever", "rod", "guide", "h", "K_nominal", "H_nominal")
 CYCLE = ("K", "stroke", "work_angle", "return_angle", "pressure")
+# the per-speed rows' kinds of figure (core.figure_text: one precision per kind everywhere)
+_SPEED_KINDS = {"cycle_time_s": "time", "work_time_s": "time", "return_time_s": "time",
+                "v_work_max_m_s": "speed", "v_work_mean_m_s": "speed", "v_return_max_m_s": "speed",
+                "a_max_m_s2": "acceleration", "lever_omega_max_rad_s": "angular_speed",
+                "lever_alpha_max_rad_s2": "angular_speed"}
 UNITS = {"theta": "°", "frame": "mm", "lever": "mm", "rod": "mm", "guide": "mm", "h": "mm",
          "K_nominal": "", "H_nominal": "mm", "K": "", "stroke": "mm", "work_angle": "°",
          "return_angle": "°", "pressure": "°"}
@@ -152,15 +158,15 @@ class MetricsPanel(QWidget):
         ]
 
     def _force_rows(self) -> list[tuple[str, str, float, str]]:
-        """(attribute, title, scale, format) of the per-speed load values."""
+        """(attribute, title, scale, kind of ``core.figure_text``) of the per-speed load values."""
         return [
-            ("mean_torque_N_m", self.tr("Mean crank torque, N·m"), 1.0, ".1f"),
-            ("max_torque_N_m", self.tr("Max crank torque, N·m"), 1.0, ".1f"),
-            ("mean_power_W", self.tr("Motor power (before efficiency), kW"), 1e-3, ".3f"),
-            ("max_power_W", self.tr("Peak input power, kW"), 1e-3, ".3f"),
-            ("energy_fluctuation_J", self.tr("Energy fluctuation ΔW_max, J"), 1.0, ".1f"),
-            ("flywheel_inertia_kg_m2", self.tr("Flywheel J_F on crank shaft, kg·m²"), 1.0, ".2f"),
-            ("flywheel_inertia_net_kg_m2", self.tr("J_F less mechanism's own, kg·m²"), 1.0, ".2f"),
+            ("mean_torque_N_m", self.tr("Mean crank torque, N·m"), 1.0, "torque"),
+            ("max_torque_N_m", self.tr("Max crank torque, N·m"), 1.0, "torque"),
+            ("mean_power_W", self.tr("Motor power (before efficiency), kW"), 1e-3, "power"),
+            ("max_power_W", self.tr("Peak input power, kW"), 1e-3, "power"),
+            ("energy_fluctuation_J", self.tr("Energy fluctuation ΔW_max, J"), 1.0, "energy"),
+            ("flywheel_inertia_kg_m2", self.tr("Flywheel J_F on crank shaft, kg·m²"), 1.0, "inertia"),
+            ("flywheel_inertia_net_kg_m2", self.tr("J_F less mechanism's own, kg·m²"), 1.0, "inertia"),
         ]
 
     def _names(self) -> dict[str, tuple[str, str]]:
@@ -196,19 +202,19 @@ class MetricsPanel(QWidget):
     def _show(self) -> None:
         design, metrics = self._model.design, self._model.metrics
         values = {
-            "theta": fmt(math.degrees(design.theta), ".3f"),
-            "frame": fmt(design.frame, ".2f"),
-            "lever": fmt(design.lever, ".2f"),
-            "rod": fmt(design.rod, ".2f") if design.rod is not None else "—",
-            "guide": fmt(design.guide, ".2f"),
-            "h": fmt(design.guide_above_crank, ".2f"),
-            "K_nominal": fmt(design.time_ratio, ".4f"),
-            "H_nominal": fmt(design.stroke, ".2f"),
-            "K": fmt(metrics.time_ratio, ".4f"),
-            "stroke": fmt(metrics.stroke_mm, ".2f"),
-            "work_angle": fmt(metrics.work_angle_deg, ".2f"),
-            "return_angle": fmt(metrics.return_angle_deg, ".2f"),
-            "pressure": (fmt(metrics.pressure_angle_max_deg, ".2f")
+            "theta": figure_text("angle", math.degrees(design.theta)),
+            "frame": figure_text("length", design.frame),
+            "lever": figure_text("length", design.lever),
+            "rod": figure_text("length", design.rod) if design.rod is not None else "—",
+            "guide": figure_text("length", design.guide),
+            "h": figure_text("length", design.guide_above_crank),
+            "K_nominal": figure_text("ratio", design.time_ratio),
+            "H_nominal": figure_text("length", design.stroke),
+            "K": figure_text("ratio", metrics.time_ratio),
+            "stroke": figure_text("length", metrics.stroke_mm),
+            "work_angle": figure_text("angle", metrics.work_angle_deg),
+            "return_angle": figure_text("angle", metrics.return_angle_deg),
+            "pressure": (figure_text("angle", metrics.pressure_angle_max_deg)
                          if metrics.pressure_angle_max_deg is not None else "—"),
         }
         names = self._names()
@@ -218,7 +224,7 @@ class MetricsPanel(QWidget):
                       else names[k][0] for k in keys]
             table.set_content(titles, [self.tr("Value")], [[values[k]] for k in keys],
                               [names[k][1] for k in keys])
-        rows = [(attr, title, 1.0, ".4f") for attr, title in self._row_titles()]
+        rows = [(attr, title, 1.0, _SPEED_KINDS[attr]) for attr, title in self._row_titles()]
         self._fill(self._table, rows, metrics.speeds)
 
     def _show_forces(self) -> None:
@@ -243,7 +249,7 @@ class MetricsPanel(QWidget):
     def _fill(self, table: ResultTable, rows: list[tuple[str, str, float, str]], speeds) -> None:
         """One column per crank speed, one row per value."""
         heads = self._heads(s.rpm for s in speeds)
-        cells = [[fmt(value * scale, spec) if math.isfinite(value) else "—"   # undefined: never "nan"
+        cells = [[figure_text(kind, value * scale)            # undefined: "—", never "nan"
                   for value in (getattr(speed, attr) for speed in speeds)]
-                 for attr, _, scale, spec in rows]
+                 for attr, _, scale, kind in rows]
         table.set_content([title for _, title, _, _ in rows], heads, cells)

@@ -2,7 +2,7 @@
 the arrowheads and, where there is room, from the lines.
 
 A student's drawing names every point and vector; on a small pane the names of
-points that lie close together (P, G₅, F_I5, N at one corner of a force polygon)
+points that lie close together (P, G₆, F_I6, N at one corner of a force polygon)
 ran into one blob and sat under arrowheads. ``place`` tries positions around an
 anchor, nearest first and in the preferred direction first, and takes the first
 whose box is free, first of everything, then of text and arrowheads only.

@@ -53,7 +53,7 @@ def vector_colour(polygon: Polygon, index: int) -> QColor:
 
 
 def _split(key: str) -> tuple[str, str, str]:
-    """'a^k_A3A2' → ('a', 'k', 'A3A2'); 'F_I5' → ('F', '', 'I5')."""
+    """'a^k_A4A3' → ('a', 'k', 'A4A3'); 'F_I6' → ('F', '', 'I6')."""
     base, _, sub = key.partition("_")
     base, _, sup = base.partition("^")
     return base, sup, sub
@@ -113,10 +113,10 @@ def limit_note(polygon: Polygon) -> str:
     if largest <= 0.0:
         return translate("PolygonPainter", "Every vector is zero at this position.")
     at_rest = {v.key: v.magnitude <= 1e-9 * largest for v in polygon.vectors}
-    if polygon.kind == "velocity" and at_rest.get("v_A3"):
-        return translate("PolygonPainter", "Limit position: the lever is at rest (ω₃ = 0).")
-    if polygon.kind == "acceleration" and at_rest.get("a^k_A3A2") and at_rest.get("a^n_A3"):
-        return translate("PolygonPainter", "Limit position: ω₃ = 0, so aᵏ = aⁿ = 0.")
+    if polygon.kind == "velocity" and at_rest.get("v_A4"):
+        return translate("PolygonPainter", "Limit position: the lever is at rest (ω₄ = 0).")
+    if polygon.kind == "acceleration" and at_rest.get("a^k_A4A3") and at_rest.get("a^n_A4"):
+        return translate("PolygonPainter", "Limit position: ω₄ = 0, so aᵏ = aⁿ = 0.")
     return ""
 
 

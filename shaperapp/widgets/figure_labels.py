@@ -6,6 +6,8 @@ import math
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
+from core.figure_text import figure_text
+
 _LABELS = {
     "name": QT_TRANSLATE_NOOP("figures", "Name"),
     "notes": QT_TRANSLATE_NOOP("figures", "Notes"),
@@ -55,7 +57,6 @@ _WORDS = {
     "trailing": QT_TRANSLATE_NOOP("figures", "trailing"),
     "leading": QT_TRANSLATE_NOOP("figures", "leading"),
 }
-_TORQUES = ("flywheel_inertia_kg_m2", "mean_torque_N_m", "max_torque_N_m")
 
 
 def _tr(text: str) -> str:
@@ -84,10 +85,19 @@ def format_figure(key: str, value: object) -> str:
         return variant_label(value) if key in ("variant", "rod_side") else value
     if key == "rpm":
         return f"{value:g}"
-    if key in _TORQUES:
-        return f"{value:.5g}"
-    if key.endswith("_m_s") or key.endswith("_m_s2") or key == "K":
-        return f"{value:.4f}"
-    if key.endswith("_deg"):
-        return f"{value:.3f}"
-    return f"{value:.2f}"
+    return figure_text(figure_kind(key), float(value))
+
+
+def figure_kind(key: str) -> str:
+    """The kind of ``core.figure_text`` a figure key is written as (one precision per kind)."""
+    if key in ("mean_torque_N_m", "max_torque_N_m"):
+        return "torque"
+    if key == "flywheel_inertia_kg_m2":
+        return "inertia"
+    if key == "K":
+        return "ratio"
+    if key.endswith("_m_s2"):
+        return "acceleration"
+    if key.endswith("_m_s"):
+        return "speed"
+    return "angle" if key.endswith("_deg") else "length"

@@ -6,21 +6,64 @@ and Reset layout.
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from PySide6.QtCore import QCoreApplication, QSize
-from PySide6.QtWidgets import QToolBar
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QMenuBar, QToolBar
 
 from .actions import fit_icon, standard_icon
 
-if TYPE_CHECKING:
-    from .main_window import MainWindow
+
+class _Panes(Protocol):
+    def toggle_actions(self) -> list: ...
+
+
+class MenuHost(Protocol):
+    """What the menus need of the window: its menu bar, a place for the toolbar, the
+    panes. toggles and the actions. A protocol, so that this module does not import the
+    window that imports it (issue 43: no import cycle, a TYPE_CHECKING one included)."""
+
+    docks: _Panes
+    lang_actions: dict[str, QAction]
+    act_new: QAction
+    act_open: QAction
+    act_save: QAction
+    act_save_as: QAction
+    act_csv: QAction
+    act_forces_csv: QAction
+    act_plots_img: QAction
+    act_scheme_img: QAction
+    act_scheme_dxf: QAction
+    act_report: QAction
+    act_sheet: QAction
+    act_course: QAction
+    act_quit: QAction
+    act_undo: QAction
+    act_redo: QAction
+    act_reset_layout: QAction
+    act_fit: QAction
+    act_fit_plots: QAction
+    act_dims: QAction
+    act_forces: QAction
+    act_play: QAction
+    act_step: QAction
+    act_back: QAction
+    act_goto: QAction
+    act_library: QAction
+    act_library_save: QAction
+    act_compare: QAction
+    act_guide: QAction
+    act_about: QAction
+
+    def menuBar(self) -> QMenuBar: ...
+    def addToolBar(self, toolbar: QToolBar) -> None: ...
 
 
 class Menus:
     """File, Edit, View, Animation, Library and Help menus, and the main toolbar."""
 
-    def __init__(self, w: "MainWindow") -> None:
+    def __init__(self, w: MenuHost) -> None:
         bar = w.menuBar()
         self.file = bar.addMenu("")
         self.file.addActions([w.act_new, w.act_open])
@@ -56,7 +99,7 @@ class Menus:
         self._fill_toolbar(w)
         w.addToolBar(self.toolbar)
 
-    def _fill_toolbar(self, w: "MainWindow") -> None:
+    def _fill_toolbar(self, w: MenuHost) -> None:
         icons = ((w.act_new, "SP_FileIcon"), (w.act_open, "SP_DialogOpenButton"),
                  (w.act_save, "SP_DialogSaveButton"), (w.act_undo, "SP_ArrowBack"),
                  (w.act_redo, "SP_ArrowForward"), (w.act_report, "SP_FileDialogDetailedView"))

@@ -29,12 +29,12 @@ def test_closes_and_holds_the_joint_forces(name, angle):
     d = solve_dynamics(design, np.radians([angle]), [60.0], m)
     by_key = {v.key: v.value for v in poly.vectors}
     assert by_key["R_O4"] == pytest.approx((d.o4_x[0, 0], d.o4_y[0, 0]))
-    assert by_key["R_3B"] == pytest.approx((-d.b_x[0, 0], -d.b_y[0, 0]))
-    assert by_key["G_3"] == pytest.approx((0.0, -20 * m.g))
+    assert by_key["R_4B"] == pytest.approx((-d.b_x[0, 0], -d.b_y[0, 0]))
+    assert by_key["G_4"] == pytest.approx((0.0, -20 * m.g))
 
 
 def test_inertia_force_against_finite_differences():
-    """F_I3 = −m3·a_G3 with a_G3 the second time derivative of the centre of mass's
+    """F_I4 = −m4·a_S4 with a_S4 the second time derivative of the centre of mass's
     position, here by central differences of the positions (step 1e-4 rad)."""
     design, m = DESIGNS["rod"], masses(DESIGNS["rod"])
     angle, rpm, h = 123.0, 60.0, 1e-4
@@ -44,12 +44,12 @@ def test_inertia_force_against_finite_differences():
     cg = tip * (m.lever_cg(design) / design.lever) * 1e-3        # m
     a = (cg[:, 2] - 2 * cg[:, 1] + cg[:, 0]) / h ** 2 * rpm_to_omega(rpm) ** 2
     poly = lever_force_polygon(design, angle, rpm, m)
-    f_i3 = dict((v.key, v.value) for v in poly.vectors)["F_I3"]
-    assert f_i3 == pytest.approx(tuple(-20.0 * a), rel=1e-5)
+    f_i4 = dict((v.key, v.value) for v in poly.vectors)["F_I4"]
+    assert f_i4 == pytest.approx(tuple(-20.0 * a), rel=1e-5)
 
 
 def test_without_gravity_and_lever_mass_only_the_joint_forces_remain():
     design = DESIGNS["block"]
     m = masses(design, lever_mass_kg=0.0, lever_inertia_kg_m2=0.0)
     keys = [v.key for v in lever_force_polygon(design, 45.0, 40.0, m).vectors]
-    assert keys == ["R_A", "R_O4", "R_3B"]
+    assert keys == ["R_A", "R_O4", "R_4B"]

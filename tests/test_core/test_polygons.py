@@ -49,18 +49,18 @@ def test_vectors_equal_the_kinematics(design, phi):
     v, a = velocity_polygon(design, phi, 60), acceleration_polygon(design, phi, 60)
     w = float(rpm_to_omega(60))
     s = float(m.shape.slide[0]) / 1000
-    assert np.linalg.norm(vec(v, "v_A2")) == pytest.approx(w * design.crank / 1000)
+    assert np.linalg.norm(vec(v, "v_A3")) == pytest.approx(w * design.crank / 1000)
     assert vec(v, "v_C").tolist() == pytest.approx([m.ram_v[0, 0], 0.0])
-    assert np.linalg.norm(vec(v, "v_A3A2")) == pytest.approx(abs(m.slide_v[0, 0]))
-    assert np.linalg.norm(vec(v, "v_A3")) == pytest.approx(abs(m.lever_omega[0, 0]) * s)
-    assert np.linalg.norm(vec(a, "a^k_A3A2")) == pytest.approx(abs(m.coriolis[0, 0]))
-    assert np.linalg.norm(vec(a, "a^n_A3")) == pytest.approx(m.lever_omega[0, 0] ** 2 * s)
-    assert np.linalg.norm(vec(a, "a^t_A3")) == pytest.approx(abs(m.lever_alpha[0, 0]) * s)
-    assert np.linalg.norm(vec(a, "a_A2")) == pytest.approx(w * w * design.crank / 1000)
+    assert np.linalg.norm(vec(v, "v_A4A3")) == pytest.approx(abs(m.slide_v[0, 0]))
+    assert np.linalg.norm(vec(v, "v_A4")) == pytest.approx(abs(m.lever_omega[0, 0]) * s)
+    assert np.linalg.norm(vec(a, "a^k_A4A3")) == pytest.approx(abs(m.coriolis[0, 0]))
+    assert np.linalg.norm(vec(a, "a^n_A4")) == pytest.approx(m.lever_omega[0, 0] ** 2 * s)
+    assert np.linalg.norm(vec(a, "a^t_A4")) == pytest.approx(abs(m.lever_alpha[0, 0]) * s)
+    assert np.linalg.norm(vec(a, "a_A3")) == pytest.approx(w * w * design.crank / 1000)
     assert vec(a, "a_C").tolist() == pytest.approx([m.ram_a[0, 0], 0.0])
-    # b lies on the line p–a3 at O4B/O4A of its length (both polygons)
-    np.testing.assert_allclose(vec(v, "v_B"), vec(v, "v_A3") * design.lever / 1000 / s, atol=1e-14)
-    np.testing.assert_allclose(np.array(a.points["b'"]), np.array(a.points["a3'"]) * design.lever / 1000 / s,
+    # b lies on the line p–a4 at O4B/O4A of its length (both polygons)
+    np.testing.assert_allclose(vec(v, "v_B"), vec(v, "v_A4") * design.lever / 1000 / s, atol=1e-14)
+    np.testing.assert_allclose(np.array(a.points["b'"]), np.array(a.points["a4'"]) * design.lever / 1000 / s,
                                atol=1e-12)
     if design.rod is not None:
         assert np.linalg.norm(vec(v, "v_CB")) == pytest.approx(abs(m.rod_omega[0, 0]) * design.rod / 1000)
@@ -80,16 +80,16 @@ def test_vectors_equal_finite_differences_of_positions(design, phi):
     d1 = np.array([1, -8, 0, 8, -1]) / (12 * h) * w / 1000        # d/dt, mm → m
     d2 = np.array([-1, 16, -30, 16, -1]) / (12 * h * h) * w * w / 1000
     v, a = velocity_polygon(design, phi, rpm), acceleration_polygon(design, phi, rpm)
-    for point, v_key, a_key in ((sh.crank_pin, "v_A2", "a_A2"), (sh.lever_tip, "v_B", "a_B"),
+    for point, v_key, a_key in ((sh.crank_pin, "v_A3", "a_A3"), (sh.lever_tip, "v_B", "a_B"),
                                 (sh.ram_joint, "v_C", "a_C")):
         np.testing.assert_allclose(point @ d1, vec(v, v_key), atol=1e-8)
         np.testing.assert_allclose(point @ d2, vec(a, a_key), atol=1e-6)
     # the lever point at the block's current distance (A3), and the slide of A3 relative to A2
     s0 = sh.slide[2]
     u = sh.crank_pin / sh.slide
-    np.testing.assert_allclose((s0 * u) @ d1, vec(v, "v_A3"), atol=1e-8)
+    np.testing.assert_allclose((s0 * u) @ d1, vec(v, "v_A4"), atol=1e-8)
     rel = (s0 - sh.slide) * u                                      # A3 − A2 seen along the lever
-    np.testing.assert_allclose(rel @ d1, vec(v, "v_A3A2"), atol=1e-8)
+    np.testing.assert_allclose(rel @ d1, vec(v, "v_A4A3"), atol=1e-8)
 
 
 def test_block_variant_relative_motion_is_vertical():
@@ -106,7 +106,7 @@ def test_force_polygon_by_hand_on_the_return_stroke():
     loads = MassProperties(ram_mass_kg=70, gravity=False)
     polygon = force_polygon(design, 250, 40, loads)
     m = solve(design, np.radians([250]), [40])
-    assert [v.key for v in polygon.vectors] == ["F_I5", "R_B"]
+    assert [v.key for v in polygon.vectors] == ["F_I6", "R_B"]
     assert vec(polygon, "R_B").tolist() == pytest.approx([70 * m.ram_a[0, 0], 0.0])
 
 

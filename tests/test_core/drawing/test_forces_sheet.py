@@ -39,13 +39,13 @@ def test_inside_the_border_in_own_areas_without_overlap(design, size):
 
 @pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
 def test_force_names_carry_their_index_as_a_subscript(design):
-    """R_O2, F_I5 … were written with the underscore on the sheet: now the letter and its
+    """R_O2, F_I6 … were written with the underscore on the sheet: now the letter and its
     index one standard size smaller and lowered, as two plain texts in every renderer."""
     from core.drawing.sheet import TEXT_HEIGHTS, Text
     sheet = forces_sheet(design, 60.0, masses(design), paper("A1")).sheet
     texts = [t for t in sheet.items if isinstance(t, Text)]
     named = {(t.text[:s], t.text[s:e]) for t in texts for s, e in t.subscripts}
-    assert {("R", "O2"), ("R", "A"), ("R", "O4"), ("F", "I5"), ("G", "5")} <= named
+    assert {("R", "O2"), ("R", "A"), ("R", "O4"), ("F", "I6"), ("G", "6")} <= named
     assert ("R", "C" if design.rod is not None else "B") in named
     assert not [t.text for t in texts if "_" in t.text and t.text.split("_")[0] in ("R", "F", "G")]
     # the force names (the captions' and tables' indices are subscripts too, see test_sheet)
@@ -67,7 +67,7 @@ def test_default_positions_are_the_motion_sheets():
 @pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
 def test_arrows_times_their_scale_are_the_forces_and_the_ram_is_in_equilibrium(design):
     """Each arrow's length × μF and direction is core's force; the arrows on the ram
-    (block: P, G5, F_I5, N, R_B; rod: P, G5, F_I5, N, R_C) add up to zero on the paper:
+    (block: P, G6, F_I6, N, R_B; rod: P, G6, F_I6, N, R_C) add up to zero on the paper:
     d'Alembert's equilibrium of the ram, which the drawing does not impose."""
     m = masses(design)
     drawn = forces_sheet(design, 40.0, m, paper("A1"), diagram_deg=(80.0, 250.0))
@@ -80,7 +80,7 @@ def test_arrows_times_their_scale_are_the_forces_and_the_ram_is_in_equilibrium(d
             tail, head = drawn.arrows[(k, name)]
             assert (head - tail) * mu == pytest.approx([float(np.ravel(fx)[0]), float(np.ravel(fy)[0])],
                                                        rel=1e-9, abs=1e-6), name
-        on_ram = ["P", "G_5", "F_I5", "N", "R_B" if design.rod is None else "R_C"]
+        on_ram = ["P", "G_6", "F_I6", "N", "R_B" if design.rod is None else "R_C"]
         total = sum(((drawn.arrows[(k, n)][1] - drawn.arrows[(k, n)][0]) * mu
                      for n in on_ram if (k, n) in drawn.arrows), np.zeros(2))
         if design.rod is not None:     # R_C is the rod on the ram; R_B (on the rod) is not on it

@@ -1,6 +1,8 @@
 """The form drives the model, marks the offending field, and mirrors the model."""
 import pytest
 
+from core.figure_text import figure_text   # one precision per kind (issue 40)
+
 from core.geometry import synthesize
 from shaperapp.design.form import DesignForm
 from shaperapp.design.model import DesignModel
@@ -31,7 +33,7 @@ def test_typing_k_updates_dimensions_and_metrics_after_debounce(setup, qtbot):
         type_into(qtbot, edit, "1.6")
     expected = synthesize(100, 1.6, 300)
     assert model.design == expected
-    assert metrics.value_text("frame") == f"{expected.frame:.2f}"
+    assert metrics.value_text("frame") == f"{expected.frame:.3f}"     # lengths to 3 decimals everywhere (issue 40)
     assert metrics.value_text("K") == "1.6000"
     assert form.marked_fields() == []
 
@@ -107,8 +109,8 @@ def test_metrics_show_flywheel_and_power_from_core(setup, qtbot):
     model.set_masses(cut_force_N=5000.0, delta=0.05)
     want = summarize(model.design, model.rpms, model.masses).speeds
     for col, s in enumerate(want):
-        assert metrics.table_text(2, col, forces=True) == f"{s.mean_power_W / 1000:.3f}"
-        assert metrics.table_text(5, col, forces=True) == f"{s.flywheel_inertia_kg_m2:.2f}"
+        assert metrics.table_text(2, col, forces=True) == figure_text("power", s.mean_power_W / 1000)
+        assert metrics.table_text(5, col, forces=True) == figure_text("inertia", s.flywheel_inertia_kg_m2)
     # Power is the cut work per cycle over the cycle time (gravity and inertia do no net work).
     h = model.metrics.stroke_mm / 1000
     assert want[0].mean_power_W == pytest.approx(5000 * h * (1 - 2 * 0.05) / model.metrics.speeds[0].cycle_time_s)

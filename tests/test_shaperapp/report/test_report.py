@@ -334,7 +334,7 @@ def test_formulas_are_typeset(tmp_path, language):
     assert shaper("report", *DESIGN, "--rpm", "40", "--lang", language, "--html", "-o", out).returncode == 0
     page = out.read_text(encoding="utf-8")
     formulas = page[page.index("<h2>8 ") if language == "en" else page.index("<h2>8"):]
-    for marked in ("a<sup>k</sup><sub>A3A2</sub>", "v<sub>A3</sub>", "ω<sub>3</sub>", "J<sub>F</sub>",
+    for marked in ("a<sup>k</sup><sub>A4A3</sub>", "v<sub>A4</sub>", "ω<sub>4</sub>", "S<sub>4</sub>", "J<sub>F</sub>",
                    "ΔW<sub>max</sub>", "O<sub>4</sub>", "L<sub>3</sub>", "(<sup>1</sup>⁄<sub>2π</sub>)"):
         assert marked in formulas, marked
     text = re.sub(r"<[^>]+>", "", formulas)
@@ -356,4 +356,4 @@ def test_formulas_state_the_guide_rule_of_the_design(tmp_path, design, says, not
     formulas = html.split("Conventions and formulas", 1)[1]
     text = re.sub(r"<[^>]+>", "", formulas)
     assert says in text and not_says not in text
-    assert "ω3 and α3 are positive clockwise" in text
+    assert "ω4 and α4 are positive clockwise" in text

@@ -4,13 +4,14 @@ import sys
 
 import numpy as np
 
+from core.figure_text import figure_text   # one precision per kind (issue 40)
 from core.geometry import synthesize
 from core.kinematics import solve
 
 
 def test_opens_on_default_design(window):
     assert window.model.design == synthesize(100, 1.4, 300)
-    assert window.metrics.value_text("h") == "173.44"
+    assert window.metrics.value_text("h") == "173.437"      # seed 003: h = 173.44 mm, to 3 decimals as everywhere (issue 40)
     assert window.metrics.row_title("h").endswith(", mm")
     assert "Untitled" in window.windowTitle()
 
@@ -118,8 +119,8 @@ def test_forces_table_follows_edits_speeds_and_language(qtbot, tmp_path):
         table = metrics.tables()[3]
         assert table.columnCount() == 3
         for col, s in enumerate(summary.speeds):
-            assert metrics.table_text(5, col, forces=True) == f"{s.flywheel_inertia_kg_m2:.2f}"
-            assert metrics.table_text(1, col, forces=True) == f"{s.max_torque_N_m:.1f}"
+            assert metrics.table_text(5, col, forces=True) == figure_text("inertia", s.flywheel_inertia_kg_m2)
+            assert metrics.table_text(1, col, forces=True) == figure_text("torque", s.max_torque_N_m)
         english = table.verticalHeaderItem(0).text()
         window.set_language("zh_CN")
         QApplication.processEvents()
@@ -159,12 +160,12 @@ def test_summary_is_solved_only_when_shown_and_filled_before_it_is_seen(qtbot, t
         assert not table.visibleRegion().isEmpty()
         summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
         for col, s in enumerate(summary.speeds):                   # items as painted, no read-back
-            assert table.item(5, col).text() == f"{s.flywheel_inertia_kg_m2:.2f}"
-            assert table.item(1, col).text() == f"{s.max_torque_N_m:.1f}"
+            assert table.item(5, col).text() == figure_text("inertia", s.flywheel_inertia_kg_m2)
+            assert table.item(1, col).text() == figure_text("torque", s.max_torque_N_m)
         model.set_spec(time_ratio=1.5)                             # in view: filled at once
         QApplication.processEvents()
         summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
-        assert table.item(5, 0).text() == f"{summary.speeds[0].flywheel_inertia_kg_m2:.2f}"
+        assert table.item(5, 0).text() == figure_text("inertia", summary.speeds[0].flywheel_inertia_kg_m2)
         window.tabs.setCurrentIndex(1)                             # the Forces tab needs it too
         QApplication.processEvents()
         assert model._dynamics_summary.solved()
@@ -186,7 +187,7 @@ def test_copying_the_forces_table_below_the_fold_copies_numbers(qtbot, tmp_path)
         QApplication.processEvents()
         text = table.tsv(selected_only=False)
         summary = summarize(model.design, model.rpms, masses_for_design(model.design, model.masses))
-        assert "…" not in text and f"{summary.speeds[0].max_torque_N_m:.1f}" in text
+        assert "…" not in text and figure_text("torque", summary.speeds[0].max_torque_N_m) in text
 
 
 def test_a_summary_that_cannot_be_computed_shows_dashes_and_the_forces_error(qtbot, tmp_path, monkeypatch):
