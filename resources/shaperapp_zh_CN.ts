@@ -316,6 +316,193 @@
     </message>
 </context>
 <context>
+    <name>ClassSheets</name>
+    <message>
+        <source>Course design task sheet</source>
+        <translation>课程设计任务书</translation>
+    </message>
+    <message>
+        <source>Quick-return mechanism of a shaper</source>
+        <translation>牛头刨床导杆机构</translation>
+    </message>
+    <message>
+        <source>Student</source>
+        <translation>学生</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>学号</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>班级</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>The mechanism (sketch to scale, crank at 60°)</source>
+        <translation>机构简图（按比例，曲柄在 60°）</translation>
+    </message>
+    <message>
+        <source>Data set</source>
+        <translation>设计数据</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Symbol</source>
+        <translation>符号</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Crank speed</source>
+        <translation>曲柄转速</translation>
+    </message>
+    <message>
+        <source>Frame O_2O_4</source>
+        <translation>机架 O_2O_4</translation>
+    </message>
+    <message>
+        <source>Crank O_2A</source>
+        <translation>曲柄 O_2A</translation>
+    </message>
+    <message>
+        <source>Lever O_4B</source>
+        <translation>导杆 O_4B</translation>
+    </message>
+    <message>
+        <source>Rod BC</source>
+        <translation>连杆 BC</translation>
+    </message>
+    <message>
+        <source>Time ratio</source>
+        <translation>行程速比系数</translation>
+    </message>
+    <message>
+        <source>Stroke</source>
+        <translation>行程</translation>
+    </message>
+    <message>
+        <source>Lever's centre of mass O_4S_4</source>
+        <translation>导杆质心 O_4S_4</translation>
+    </message>
+    <message>
+        <source>Lever weight</source>
+        <translation>导杆重量</translation>
+    </message>
+    <message>
+        <source>Lever moment of inertia</source>
+        <translation>导杆转动惯量</translation>
+    </message>
+    <message>
+        <source>Ram weight</source>
+        <translation>刨头重量</translation>
+    </message>
+    <message>
+        <source>Cutting force</source>
+        <translation>切削阻力</translation>
+    </message>
+    <message>
+        <source>Height of the cutting force</source>
+        <translation>切削力作用高度</translation>
+    </message>
+    <message>
+        <source>Guide line</source>
+        <translation>导路高度</translation>
+    </message>
+    <message>
+        <source>Follower arm</source>
+        <translation>从动件摆杆长</translation>
+    </message>
+    <message>
+        <source>Follower swing</source>
+        <translation>从动件最大摆角</translation>
+    </message>
+    <message>
+        <source>Allowed pressure angle</source>
+        <translation>许用压力角</translation>
+    </message>
+    <message>
+        <source>Rise</source>
+        <translation>推程运动角</translation>
+    </message>
+    <message>
+        <source>Outer dwell</source>
+        <translation>远休止角</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>回程运动角</translation>
+    </message>
+    <message>
+        <source>Pinion teeth</source>
+        <translation>小齿轮齿数</translation>
+    </message>
+    <message>
+        <source>Gear teeth</source>
+        <translation>大齿轮齿数</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>模数</translation>
+    </message>
+    <message>
+        <source>Deliver</source>
+        <translation>应交成果</translation>
+    </message>
+    <message>
+        <source>Answer key</source>
+        <translation>参考答案</translation>
+    </message>
+    <message>
+        <source>page</source>
+        <translation>页</translation>
+    </message>
+    <message>
+        <source>failed checks</source>
+        <translation>未通过的校核</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>转速</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Design report (00-report.pdf)</source>
+        <translation>设计说明书（00-report.pdf）</translation>
+    </message>
+    <message>
+        <source>Motion analysis sheet (01-motion)</source>
+        <translation>运动分析图（01-motion）</translation>
+    </message>
+    <message>
+        <source>Kinetostatic analysis sheet (02-kinetostatic)</source>
+        <translation>动态静力分析图（02-kinetostatic）</translation>
+    </message>
+    <message>
+        <source>Feed cam sheet (03-cam)</source>
+        <translation>凸轮机构设计图（03-cam）</translation>
+    </message>
+    <message>
+        <source>Gear meshing sheet (04-gear)</source>
+        <translation>齿轮啮合图（04-gear）</translation>
+    </message>
+</context>
+<context>
     <name>Columns</name>
     <message>
         <source>n (r/min)</source>

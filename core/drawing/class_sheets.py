@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Any, Mapping, Sequence
 
 from .mechanism import bounds, frame_items, joint_anchors, links_at
-from .sheet import (Item, Paper, Sheet, Text, fit, frame_items as paper_frame, marked_text,
+from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, marked_text,
                     standard_scale, table)
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
@@ -98,10 +98,10 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y -= 10.0
     person = (f"{_w(labels, 'Student')}: {who.get('student', '')}    {_w(labels, 'Number')}: "
               f"{who.get('number', '')}    {_w(labels, 'Class')}: {who.get('group', '')}")
-    items.append(Text(person, (left + 4.0, y), 3.5, "lm"))
-    items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rm"))
-    y -= 8.0
+    items.append(Text(clipped(person, right - left - 8.0, 3.5), (left + 4.0, y), 3.5, "lm"))
+    y -= 7.0
     items.append(marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5))
+    items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rb"))
     box = (left + 4.0, y - 82.0, right - 4.0, y - 4.0)
     items += _sketch(design, box)
     y = box[1] - 6.0
@@ -109,7 +109,7 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     rows = [[_w(labels, "Quantity"), _w(labels, "Symbol"), _w(labels, "Value"), _w(labels, "Unit")]]
     rows += data_rows(doc, design, labels)
     height = min(6.0, (y - 4.0 - bottom - 12.0 - 6.0 * len(deliver)) / len(rows))
-    items += table((left + 4.0, y - 4.0), (72.0, 30.0, 45.0, 24.0), rows, height, 3.5 if height >= 6 else 2.5,
+    items += table((left + 4.0, y - 4.0), (70.0, 28.0, 45.0, 24.0), rows, height, 3.5 if height >= 6 else 2.5,
                    aligns="lccc")
     y = y - 4.0 - height * len(rows) - 7.0
     items.append(Text(_w(labels, "Deliver"), (left + 4.0, y), 3.5, "lm"))
@@ -132,22 +132,30 @@ def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
     return items
 
 
-def answer_pages(rows: Sequence[Sequence[str]], header: Sequence[str], widths: Sequence[float],
+def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float], Sequence[Sequence[str]]]],
                  title: str, labels: Mapping[str, str], plain: Sequence[int] = ()) -> list[Sheet]:
-    """The answer key as A4-landscape pages: ``header`` (in the index notation) over
-    ``rows`` of texts, as many rows a page as fit, each page titled and numbered."""
+    """The answer key as A4-landscape pages: each of ``tables`` (its header rows in the index
+    notation, widths in mm, rows of texts; all with as many rows) stacked on every page,
+    the same rows of each, as many as fit; each page titled and numbered. ``plain``: the
+    columns of a user's words (a student's name), taken as they are."""
     p = A4_LANDSCAPE
     left, bottom, right, top = p.border
-    row_h = 6.0
-    per_page = int((top - bottom - 20.0) / row_h) - 1
-    chunks = [rows[i:i + per_page] for i in range(0, len(rows), per_page)] or [[]]
+    row_h, gap = 6.0, 6.0
+    room = top - bottom - 16.0 - sum(len(head) * row_h + gap for head, _, _ in tables)
+    per_page = max(1, int(room / (row_h * len(tables))))
+    count = len(tables[0][2])
+    starts = range(0, max(count, 1), per_page)
     pages = []
-    scale = min(1.0, (right - left - 4.0) / sum(widths))
-    fitted = [w * scale for w in widths]
-    for k, chunk in enumerate(chunks, start=1):
+    for k, at in enumerate(starts, start=1):
         items: list[Item] = list(paper_frame(p))
         items.append(Text(title, (left + 2.0, top - 7.0), 5.0, "lm"))
-        items.append(Text(f"{_w(labels, 'page')} {k}/{len(chunks)}", (right - 2.0, top - 7.0), 3.5, "rm"))
-        items += table((left + 2.0, top - 14.0), fitted, [list(header), *chunk], row_h, 2.5, plain=plain)
+        items.append(Text(f"{_w(labels, 'page')} {k}/{len(starts)}", (right - 2.0, top - 7.0), 3.5, "rm"))
+        y = top - 14.0
+        for header, widths, rows in tables:
+            scale = min(1.0, (right - left - 4.0) / sum(widths))
+            chunk = [*map(list, header), *rows[at:at + per_page]]
+            items += table((left + 2.0, y), [w * scale for w in widths], chunk, row_h, 2.5, plain=plain,
+                           header_rows=len(header))
+            y -= row_h * len(chunk) + gap
         pages.append(Sheet(p, tuple(items)))
     return pages
