@@ -19,7 +19,7 @@ import time
 import pytest
 
 
-STUDENTS = 30
+STUDENTS = int(os.environ.get("SHAPER_BENCH_STUDENTS", "30"))   # fewer for a quick look
 UNIT_SHARE = 0.6
 TARGET_MB = 600.0
 BASE = ("--arm", "125", "--swing", "15", "--pressure", "40", "--rise", "75", "--dwell", "10", "--return", "75",
@@ -78,9 +78,10 @@ def run_measured(words: list[str]) -> tuple[float, float, float, str]:
     return time.perf_counter() - start, peaks[0], peaks[1], out
 
 
+@pytest.mark.timeout(3600)         # 30 courses: some 5 minutes on a quiet machine, far more on a busy one
 @pytest.mark.skipif(not hasattr(os, "sched_getaffinity") or len(os.sched_getaffinity(0)) < 2,
                     reason="needs 2 cores")
-def test_a_class_of_30_costs_at_most_0_6_of_30_courses(benchmark, tmp_path):
+def test_a_class_costs_at_most_0_6_of_its_courses(benchmark, tmp_path):
     made = subprocess.run([sys.executable, "-m", "core", "design", *BASE, "-o", str(tmp_path / "base.json")],
                           capture_output=True, text=True)
     assert made.returncode == 0, made.stderr
@@ -97,7 +98,7 @@ def test_a_class_of_30_costs_at_most_0_6_of_30_courses(benchmark, tmp_path):
                               "--jobs", "2"])
         figures.update({"course s": unit[0], "course peak PSS MB": unit[1], "class s": whole[0],
                         "class peak PSS MB": whole[1], "class peak summed RSS MB": whole[2],
-                        "class / (30 courses)": whole[0] / (STUDENTS * unit[0])})
+                        "students": STUDENTS, "class / courses": whole[0] / (STUDENTS * unit[0])})
     benchmark.pedantic(work, rounds=1, iterations=1)
     shown = {k: round(v, 2) for k, v in figures.items()}
     benchmark.extra_info.update(shown)

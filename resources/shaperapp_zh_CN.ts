@@ -316,6 +316,117 @@
     </message>
 </context>
 <context>
+    <name>ClassDialog</name>
+    <message>
+        <source>Class course design</source>
+        <translation>全班课程设计</translation>
+    </message>
+    <message>
+        <source>DXF too</source>
+        <translation>同时输出 DXF</translation>
+    </message>
+    <message>
+        <source>Task table (CSV):</source>
+        <translation>任务表（CSV）：</translation>
+    </message>
+    <message>
+        <source>Base design:</source>
+        <translation>基础设计：</translation>
+    </message>
+    <message>
+        <source>Output folder:</source>
+        <translation>输出文件夹：</translation>
+    </message>
+    <message>
+        <source>Sheets:</source>
+        <translation>图纸：</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行</translation>
+    </message>
+    <message>
+        <source>Student</source>
+        <translation>学生</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>学号</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>检查</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Open folder</source>
+        <translation>打开文件夹</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Task table</source>
+        <translation>任务表</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Base design</source>
+        <translation>基础设计</translation>
+    </message>
+    <message>
+        <source>Designs (*.json);;All files (*)</source>
+        <translation>设计文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Output folder</source>
+        <translation>输出文件夹</translation>
+    </message>
+    <message>
+        <source>The table cannot be used: %1</source>
+        <translation>任务表无法使用：%1</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>%1 students ready, %2 rows with errors (left out).</source>
+        <translation>%1 名学生就绪，%2 行有错误（将跳过）。</translation>
+    </message>
+    <message>
+        <source>Writing the class's files…</source>
+        <translation>正在写入全班的文件…</translation>
+    </message>
+    <message>
+        <source>Cancelling: the students being written are finished…</source>
+        <translation>正在取消：正在写入的学生将先完成…</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1 students written, each complete.</source>
+        <translation>已取消：已写入 %1 名学生，文件均完整。</translation>
+    </message>
+    <message>
+        <source>Done: %1 students written; the task sheets and the answer key are in the folder.</source>
+        <translation>完成：已写入 %1 名学生；任务书和参考答案在文件夹中。</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+</context>
+<context>
     <name>ClassSheets</name>
     <message>
         <source>Course design task sheet</source>
@@ -3185,6 +3296,14 @@
     <message>
         <source>The report and every drawing sheet into one folder, as shaper course writes them</source>
         <translation>将设计说明书和全部图纸写入一个文件夹，与 shaper course 命令写出的相同</translation>
+    </message>
+    <message>
+        <source>C&amp;lass course design…</source>
+        <translation>全班课程设计(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>A whole class from a table of data sets: each student's folder, the task sheets and the answer key, as shaper class writes them</source>
+        <translation>由数据表生成全班的课程设计：每名学生的文件夹、任务书和参考答案，与 shaper class 相同</translation>
     </message>
     <message>
         <source>&amp;Quit</source>

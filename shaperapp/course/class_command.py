@@ -16,9 +16,9 @@ import time
 
 from core.cli.common import UsageError, whole_number
 from core.cli.output import OutputError
-from core.drawing.sheet import PAPERS
-
 from shaperapp.widgets.command_line import COVER_OPTIONS, cover_text
+
+from .command import add_file_options, paper_of
 
 HELP = "the course design of a whole class from a table of data sets: folders, task sheets, answer key"
 DESCRIPTION = (
@@ -48,11 +48,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="the class's folder (made, with its parents, if missing)")
     parser.add_argument("--base", metavar="DESIGN.json",
                         help="a design file whose values every row shares (the cam, the gear, the loads …)")
-    parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
-                        help="language of every file (default en)")
-    parser.add_argument("--sheet", default="A1", metavar="SIZE",
-                        help=f"paper of the drawing sheets: {', '.join(PAPERS)} (default A1)")
-    parser.add_argument("--dxf", action="store_true", help="each sheet as DXF too")
+    add_file_options(parser)
     parser.add_argument("--jobs", metavar="N", help="students at once (default: the number of cores, "
                         f"at most as many as fit in {MEMORY_MB} MB)")
     block = parser.add_argument_group("cover and title blocks (a row's student, number and class win)")
@@ -77,9 +73,7 @@ def run(args: argparse.Namespace) -> int:
     from core.errors import FileFormatError
 
     from .class_run import Job
-    paper = args.sheet.upper()
-    if paper not in PAPERS:
-        raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
+    paper = paper_of(args)
     school, supervisor, group = (cover_text(o, getattr(args, o[2:])) for o in ("--school", "--supervisor", "--class"))
     title = cover_text("--title", args.title)
     date = cover_text("--date", args.date) or datetime.date.today().isoformat()

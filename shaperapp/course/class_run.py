@@ -16,6 +16,7 @@ import hashlib
 import json
 import os
 import time
+from itertools import islice
 from dataclasses import dataclass, field
 from typing import Any, Iterator, Sequence
 
@@ -128,11 +129,31 @@ def run_student(job: Job) -> Result:
 
 
 def run_jobs(jobs: Sequence[Job], workers: int) -> Iterator[Result]:
-    """Every job's Result as it finishes, on ``workers`` processes (1: in this one)."""
+    """Every job's Result as it finishes, on ``workers`` processes (1: in this one). A job
+    is handed to a worker only when one is free, so an interrupt (Ctrl+C; the GUI's Cancel
+    sends SIGINT to this process alone) starts nothing new and waits for the students being
+    written, whose files are then complete, before it goes on."""
     if workers <= 1 or len(jobs) <= 1:
         for job in jobs:
             yield run_student(job)
         return
     import multiprocessing
+    from collections import deque
+    waiting = iter(jobs)
     with multiprocessing.get_context("fork").Pool(workers) as pool:
-        yield from pool.imap_unordered(run_student, jobs)
+        running = deque(pool.apply_async(run_student, (job,)) for job in islice(waiting, workers))
+        try:
+            while running:
+                done = next((r for r in running if r.ready()), None)
+                if done is None:
+                    running[0].wait(0.05)
+                    continue
+                running.remove(done)
+                job = next(waiting, None)
+                if job is not None:
+                    running.append(pool.apply_async(run_student, (job,)))
+                yield done.get()
+        except KeyboardInterrupt:
+            for result in running:
+                result.wait()
+            raise
