@@ -320,6 +320,304 @@
     </message>
 </context>
 <context>
+    <name>ClassDialog</name>
+    <message>
+        <source>Class course design</source>
+        <translation>全班课程设计</translation>
+    </message>
+    <message>
+        <source>DXF too</source>
+        <translation>同时输出 DXF</translation>
+    </message>
+    <message>
+        <source>Task table (CSV):</source>
+        <translation>任务表（CSV）：</translation>
+    </message>
+    <message>
+        <source>Base design:</source>
+        <translation>基础设计：</translation>
+    </message>
+    <message>
+        <source>Output folder:</source>
+        <translation>输出文件夹：</translation>
+    </message>
+    <message>
+        <source>Sheets:</source>
+        <translation>图纸：</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行</translation>
+    </message>
+    <message>
+        <source>Student</source>
+        <translation>学生</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>学号</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>检查</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Open folder</source>
+        <translation>打开文件夹</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Task table</source>
+        <translation>任务表</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Base design</source>
+        <translation>基础设计</translation>
+    </message>
+    <message>
+        <source>Designs (*.json);;All files (*)</source>
+        <translation>设计文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Output folder</source>
+        <translation>输出文件夹</translation>
+    </message>
+    <message>
+        <source>The table cannot be used: %1</source>
+        <translation>任务表无法使用：%1</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>%1 students ready, %2 rows with errors (left out).</source>
+        <translation>%1 名学生就绪，%2 行有错误（将跳过）。</translation>
+    </message>
+    <message>
+        <source>Writing the class's files…</source>
+        <translation>正在写入全班的文件…</translation>
+    </message>
+    <message>
+        <source>Cancelling: the students being written are finished…</source>
+        <translation>正在取消：正在写入的学生将先完成…</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1 students written, each complete.</source>
+        <translation>已取消：已写入 %1 名学生，文件均完整。</translation>
+    </message>
+    <message>
+        <source>Done: %1 students written; the task sheets and the answer key are in the folder.</source>
+        <translation>完成：已写入 %1 名学生；任务书和参考答案在文件夹中。</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>ClassSheets</name>
+    <message>
+        <source>Course design task sheet</source>
+        <translation>课程设计任务书</translation>
+    </message>
+    <message>
+        <source>Quick-return mechanism of a shaper</source>
+        <translation>牛头刨床导杆机构</translation>
+    </message>
+    <message>
+        <source>Student</source>
+        <translation>学生</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>学号</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>班级</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>The mechanism (sketch to scale, crank at 60°)</source>
+        <translation>机构简图（按比例，曲柄在 60°）</translation>
+    </message>
+    <message>
+        <source>Data set</source>
+        <translation>设计数据</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Symbol</source>
+        <translation>符号</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Crank speed</source>
+        <translation>曲柄转速</translation>
+    </message>
+    <message>
+        <source>Frame O_2O_4</source>
+        <translation>机架 O_2O_4</translation>
+    </message>
+    <message>
+        <source>Crank O_2A</source>
+        <translation>曲柄 O_2A</translation>
+    </message>
+    <message>
+        <source>Lever O_4B</source>
+        <translation>导杆 O_4B</translation>
+    </message>
+    <message>
+        <source>Rod BC</source>
+        <translation>连杆 BC</translation>
+    </message>
+    <message>
+        <source>Time ratio</source>
+        <translation>行程速比系数</translation>
+    </message>
+    <message>
+        <source>Stroke</source>
+        <translation>行程</translation>
+    </message>
+    <message>
+        <source>Lever's centre of mass O_4S_4</source>
+        <translation>导杆质心 O_4S_4</translation>
+    </message>
+    <message>
+        <source>Lever weight</source>
+        <translation>导杆重量</translation>
+    </message>
+    <message>
+        <source>Lever moment of inertia</source>
+        <translation>导杆转动惯量</translation>
+    </message>
+    <message>
+        <source>Ram weight</source>
+        <translation>刨头重量</translation>
+    </message>
+    <message>
+        <source>Cutting force</source>
+        <translation>切削阻力</translation>
+    </message>
+    <message>
+        <source>Height of the cutting force</source>
+        <translation>切削力作用高度</translation>
+    </message>
+    <message>
+        <source>Guide line</source>
+        <translation>导路高度</translation>
+    </message>
+    <message>
+        <source>Follower arm</source>
+        <translation>从动件摆杆长</translation>
+    </message>
+    <message>
+        <source>Follower swing</source>
+        <translation>从动件最大摆角</translation>
+    </message>
+    <message>
+        <source>Allowed pressure angle</source>
+        <translation>许用压力角</translation>
+    </message>
+    <message>
+        <source>Rise</source>
+        <translation>推程运动角</translation>
+    </message>
+    <message>
+        <source>Outer dwell</source>
+        <translation>远休止角</translation>
+    </message>
+    <message>
+        <source>Return</source>
+        <translation>回程运动角</translation>
+    </message>
+    <message>
+        <source>Pinion teeth</source>
+        <translation>小齿轮齿数</translation>
+    </message>
+    <message>
+        <source>Gear teeth</source>
+        <translation>大齿轮齿数</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>模数</translation>
+    </message>
+    <message>
+        <source>Deliver</source>
+        <translation>应交成果</translation>
+    </message>
+    <message>
+        <source>Answer key</source>
+        <translation>参考答案</translation>
+    </message>
+    <message>
+        <source>page</source>
+        <translation>页</translation>
+    </message>
+    <message>
+        <source>failed checks</source>
+        <translation>未通过的校核</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>转速</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Design report (00-report.pdf)</source>
+        <translation>设计说明书（00-report.pdf）</translation>
+    </message>
+    <message>
+        <source>Motion analysis sheet (01-motion)</source>
+        <translation>运动分析图（01-motion）</translation>
+    </message>
+    <message>
+        <source>Kinetostatic analysis sheet (02-kinetostatic)</source>
+        <translation>动态静力分析图（02-kinetostatic）</translation>
+    </message>
+    <message>
+        <source>Feed cam sheet (03-cam)</source>
+        <translation>凸轮机构设计图（03-cam）</translation>
+    </message>
+    <message>
+        <source>Gear meshing sheet (04-gear)</source>
+        <translation>齿轮啮合图（04-gear）</translation>
+    </message>
+</context>
+<context>
     <name>Columns</name>
     <message>
         <source>n (r/min)</source>
@@ -3169,6 +3467,14 @@
     <message>
         <source>The report and every drawing sheet into one folder, as shaper course writes them</source>
         <translation>将设计说明书和全部图纸写入一个文件夹，与 shaper course 命令写出的相同</translation>
+    </message>
+    <message>
+        <source>C&amp;lass course design…</source>
+        <translation>全班课程设计(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>A whole class from a table of data sets: each student's folder, the task sheets and the answer key, as shaper class writes them</source>
+        <translation>由数据表生成全班的课程设计：每名学生的文件夹、任务书和参考答案，与 shaper class 相同</translation>
     </message>
     <message>
         <source>&amp;Quit</source>

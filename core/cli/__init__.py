@@ -35,7 +35,7 @@ from .common import Parser, UsageError, VersionAction, design_error_text, fail  
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output  # noqa: E402
 
 # Order is the order of ``shaper --help``.
-CORE_COMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "gear",
+CORE_COMMANDS = ("design", "synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "gear",
                  "library")
 
 

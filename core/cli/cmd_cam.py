@@ -197,9 +197,20 @@ def _idle(args: argparse.Namespace) -> float:
     return value
 
 
-def run(args: argparse.Namespace) -> int:
-    if args.json and args.csv == "-":
-        raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
+def json_document(args: argparse.Namespace) -> dict:
+    """What ``--json`` prints (``shaper class``'s answer key holds it for each student)."""
+    cam, rpm, _ = _cam_at(args)
+    return _summary(cam, rpm)
+
+
+def _summary(cam: Cam, rpm: float) -> dict:
+    summary = cam_summary(cam)
+    summary.update(follower_peaks(cam, rpm))
+    return summary
+
+
+def _cam_at(args: argparse.Namespace):
+    """The cam of the options, its speed and the CSV's cam angles (UsageError naming one)."""
     linked = any(getattr(args, d, None) is not None for d in DESIGN_DESTS)
     if args.phase is not None and not linked:
         raise UsageError("--phase: give a design (--crank/--K/--stroke, --dims or --design) to time the cam")
@@ -212,7 +223,13 @@ def run(args: argparse.Namespace) -> int:
         idle = _idle(args) if linked else 0.05
     except DesignError as exc:
         raise cam_usage_error(exc) from None
-    cam = cam_from_inputs(cam_inputs, design, idle, args)
+    return cam_from_inputs(cam_inputs, design, idle, args), rpm, angles
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.json and args.csv == "-":
+        raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
+    cam, rpm, angles = _cam_at(args)
     if args.csv is not None:          # block by block: 1.8 million rows at the finest step
         from .streaming import write_table
         write_table("--csv", args.csv, "computing the cam", lambda delta, n: cam_table(cam, delta, n),
@@ -223,8 +240,7 @@ def run(args: argparse.Namespace) -> int:
             write_cam_dxf(cam, args.dxf)
         except OSError as exc:          # a WriteError: names the user's path and a plain reason
             raise OutputError(f"--dxf: {exc}") from None
-    summary = cam_summary(cam)
-    summary.update(follower_peaks(cam, rpm))
+    summary = _summary(cam, rpm)
     if args.json:
         print_json(summary)
     elif args.csv != "-":

@@ -36,9 +36,26 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print the per-speed summary as JSON")
 
 
+def json_document(args: argparse.Namespace) -> dict:
+    """What ``--json`` prints without ``--csv`` (``shaper class``'s answer key holds it)."""
+    design = design_from_args(args)
+    masses = masses_from_args(args, design, required=True)
+    _, rpms = request_from_args(args)
+    return summary_json(design, summarize(design, rpms, masses))
+
+
+def summary_json(design: Design, summary: DynamicsSummary) -> dict:
+    doc = design_summary(design)
+    doc.update(summary_document(summary, design))
+    return doc
+
+
 def run(args: argparse.Namespace) -> int:
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
+    if args.json and args.csv is None:
+        print_json(json_document(args))
+        return 0
     design = design_from_args(args)
     masses = masses_from_args(args, design, required=True)
     angles, rpms = request_from_args(args)  # validated even when only the summary is printed
@@ -51,9 +68,7 @@ def run(args: argparse.Namespace) -> int:
             return 0
     summary = summarize(design, rpms, masses)
     if args.json:
-        doc = design_summary(design)
-        doc.update(summary_document(summary, design))
-        print_json(doc)
+        print_json(summary_json(design, summary))
         return 0
     print_table(summary_rows(design, masses, summary))
     for s in summary.speeds:

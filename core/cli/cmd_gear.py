@@ -125,6 +125,11 @@ def pair_from_args(args: argparse.Namespace) -> GearPair:
         raise UsageError(design_error_text(exc, option)) from None
 
 
+def json_document(args: argparse.Namespace) -> dict:
+    """What ``--json`` prints (``shaper class``'s answer key holds it for each student)."""
+    return gear_summary(pair_from_args(args))
+
+
 def run(args: argparse.Namespace) -> int:
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")

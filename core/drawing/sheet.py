@@ -20,7 +20,7 @@ import re
 import unicodedata
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Sequence, Union
+from typing import Collection, Sequence, Union
 
 import numpy as np
 
@@ -381,9 +381,11 @@ def cell_text(text: str, box: Box, largest: float = 5.0, align: str = "c",
 
 def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]],
           row_height: float = 8.0, text_height: float = 3.5, layer: str = TEXT,
-          aligns: str | None = None) -> list[Item]:
+          aligns: str | None = None, plain: Collection[int] = (), header_rows: int = 1) -> list[Item]:
     """Rows of texts in ruled cells: outline thick, inner rules thin (GB/T 10609.1). The
-    texts are the program's own labels and numbers, in the index notation of :func:`marked`."""
+    texts are the program's own labels and numbers, in the index notation of :func:`marked`,
+    but for the columns in ``plain`` (a user's words, a student's name: taken as they are)
+    below the first ``header_rows`` rows."""
     x0, y_top = top_left
     xs = np.concatenate([[x0], x0 + np.cumsum(widths)])
     height = row_height * len(rows)
@@ -398,6 +400,7 @@ def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]]
         for c, text in enumerate(row):
             if text:
                 align = aligns[c] if aligns else "c"
+                notation = r < header_rows or c not in plain
                 items.append(cell_text(text, (float(xs[c]), y1 - row_height, float(xs[c + 1]), y1),
-                                       text_height, align, layer, notation=True))
+                                       text_height, align, layer, notation=notation))
     return items

@@ -45,23 +45,34 @@ def configure(parser: argparse.ArgumentParser) -> None:
                              "gear pair")
     parser.add_argument("-o", "--output", required=True, metavar="DIR",
                         help="the folder to write into (made if missing; same-named files are replaced)")
-    parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
-                        help="language of every file: en, or zh (= zh_CN) (default en)")
-    parser.add_argument("--sheet", default="A1", metavar="SIZE",
-                        help=f"paper of the drawing sheets, landscape: {', '.join(PAPERS)} (default A1)")
-    parser.add_argument("--dxf", action="store_true", help="write each sheet as DXF too, beside its PDF")
-    add_cad_font_option(parser)
+    add_file_options(parser)
     add_sheet_speed_option(parser)
     block = parser.add_argument_group("cover and title blocks (blank when not given, to fill in by hand)")
     block.add_argument("--title", metavar="TEXT", help="design name (default: the design file's name)")
     add_cover_options(block, "the date (default: today, YYYY-MM-DD)")
 
 
-def run(args: argparse.Namespace) -> int:
-    from .write import Covering
+def add_file_options(parser: argparse.ArgumentParser) -> None:
+    """--lang, --sheet, --dxf and --cad-font: how the files are written (shared with ``shaper class``)."""
+    parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), default="en",
+                        help="language of every file: en, or zh (= zh_CN) (default en)")
+    parser.add_argument("--sheet", default="A1", metavar="SIZE",
+                        help=f"paper of the drawing sheets, landscape: {', '.join(PAPERS)} (default A1)")
+    parser.add_argument("--dxf", action="store_true", help="write each sheet as DXF too, beside its PDF")
+    add_cad_font_option(parser)
+
+
+def paper_of(args: argparse.Namespace) -> str:
+    """--sheet's paper, checked (UsageError naming it)."""
     paper = args.sheet.upper()
     if paper not in PAPERS:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
+    return paper
+
+
+def run(args: argparse.Namespace) -> int:
+    from .write import Covering
+    paper = paper_of(args)
     cover, date = cover_from_args(args)
     doc, keys = read_document(args.design)          # FileFormatError: "--design: …"
     try:

@@ -4,6 +4,7 @@ which the preview and the report's gear figure share) and DXF (``core.drawing.sh
 from __future__ import annotations
 
 import errno
+from typing import Sequence
 
 from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QRectF, QSizeF
 from PySide6.QtGui import QPageLayout, QPageSize, QPainter, QPdfWriter
@@ -23,23 +24,33 @@ SVG_UNITS_PER_MM = 10.0        # SVG user units per mm (viewBox in mm: width="84
 def pdf_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:
     """The sheet as a one-page PDF of exactly its paper size, its text layer repaired
     (``pdf_text``: the Chinese in it is searchable)."""
+    return pages_pdf([sheet], language, title)
+
+
+def pages_pdf(sheets: Sequence[Sheet], language: str = "en", title: str = "") -> bytes:
+    """Sheets of one paper as the pages of one PDF (the class's task sheets and answer key),
+    each page exactly the paper's size, the text layer repaired."""
+    paper = sheets[0].paper
     data = QByteArray()
     buffer = QBuffer(data)
     buffer.open(QIODevice.OpenModeFlag.WriteOnly)
     writer = QPdfWriter(buffer)
     writer.setResolution(PDF_RESOLUTION)
-    size = QPageSize(QSizeF(sheet.paper.width, sheet.paper.height), QPageSize.Unit.Millimeter,
-                     sheet.paper.name, QPageSize.SizeMatchPolicy.ExactMatch)
+    size = QPageSize(QSizeF(paper.width, paper.height), QPageSize.Unit.Millimeter,
+                     paper.name, QPageSize.SizeMatchPolicy.ExactMatch)
     writer.setPageLayout(QPageLayout(size, QPageLayout.Orientation.Portrait, QMarginsF(0, 0, 0, 0)))
     writer.setTitle(title)
     writer.setCreator("Shaper Designer")
     painter = QPainter(writer)
     dots = PDF_RESOLUTION / 25.4
     painter.scale(dots, dots)
-    paint_sheet(sheet, painter, language)
+    for number, sheet in enumerate(sheets):
+        if number:
+            writer.newPage()
+        paint_sheet(sheet, painter, language)
     painter.end()
     buffer.close()
-    return repair_text_layer(exact_page(bytes(data.data()), sheet.paper.width, sheet.paper.height))
+    return repair_text_layer(exact_page(bytes(data.data()), paper.width, paper.height))
 
 
 def svg_bytes(sheet: Sheet, language: str = "en", title: str = "") -> bytes:

@@ -254,6 +254,10 @@ def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.n
     return np.stack([s + enter[keep, None] * d, s + leave[keep, None] * d], axis=1)
 
 
+BURN_POINTS = 1 << 20
+"""Samples burnt at once: their arrays are a few tens of MB, whatever the lines."""
+
+
 class Raster:
     """Lines that stay put burnt into a grid of cells (about a pixel each) with its summed
     table, so that any number of candidate boxes is checked against them in a few array
@@ -279,17 +283,28 @@ class Raster:
         if len(ends):
             d = ends[:, 1] - ends[:, 0]
             count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
-            first = np.repeat(np.cumsum(count) - count, count)
-            t = (np.arange(count.sum()) - first) / np.repeat(np.maximum(count - 1, 1), count)
-            pts = np.repeat(ends[:, 0], count, axis=0) + t[:, None] * np.repeat(d, count, axis=0)
-            ix = np.clip(((pts[:, 0] - self.left) / self.cell).astype(int), 0, self.nx - 1)
-            iy = np.clip(((pts[:, 1] - self.bottom) / self.cell).astype(int), 0, self.ny - 1)
-            self._grid[iy, ix] = True
+            # the samples in runs of about BURN_POINTS: the scheme's swept lines are tens of
+            # millions of samples, and sampled at once they took some 250 MB for a moment
+            # (the report's peak; issue 41: a class runs several reports side by side)
+            total = np.cumsum(count)
+            cuts = np.searchsorted(total, np.arange(BURN_POINTS, total[-1], BURN_POINTS))
+            for lo, hi in zip(np.r_[0, cuts], np.r_[cuts, len(count)]):
+                if hi > lo:
+                    self._burn_samples(ends[lo:hi, 0], d[lo:hi], count[lo:hi])
         # the summed table in place, along the rows first (contiguous) and then adding row to
         # row: exact integers as before, a quarter of the time on a large grid
         table = self._sat[1:, 1:]
         np.cumsum(self._grid, axis=1, dtype=np.int32, out=table)
         np.cumsum(table, axis=0, out=table)
+
+    def _burn_samples(self, start: np.ndarray, d: np.ndarray, count: np.ndarray) -> None:
+        """Mark the cells of ``count`` samples along each segment ``start`` + t·``d``."""
+        first = np.repeat(np.cumsum(count) - count, count)
+        t = (np.arange(count.sum()) - first) / np.repeat(np.maximum(count - 1, 1), count)
+        pts = np.repeat(start, count, axis=0) + t[:, None] * np.repeat(d, count, axis=0)
+        ix = np.clip(((pts[:, 0] - self.left) / self.cell).astype(int), 0, self.nx - 1)
+        iy = np.clip(((pts[:, 1] - self.bottom) / self.cell).astype(int), 0, self.ny - 1)
+        self._grid[iy, ix] = True
 
     def copy_with(self, ends: np.ndarray) -> "Raster":
         """A raster of these lines and ``ends``."""

@@ -175,6 +175,7 @@ class MainWindow(QMainWindow):
         self.act_report = self._action(self._export_report, "Ctrl+R")
         self.act_sheet = self._action(self._export_sheet)
         self.act_course = self._action(self._export_course)
+        self.act_class = self._action(self._class_course)
         # Only tabs that draw plots can export them as an image, or fit them.
         self.tabs.currentChanged.connect(self._on_tab)
         self.act_quit = self._action(self.close, keys.Quit)
@@ -368,6 +369,10 @@ class MainWindow(QMainWindow):
         folder = export_course_dialog(self.model, self, self._language, self.document.last_dir(), self.settings)
         if folder:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", folder), 4000)
+
+    def _class_course(self) -> None:
+        from shaperapp.course.class_dialog import class_dialog   # load on demand
+        class_dialog(self, self._language, self.document.last_dir())
 
     def _about(self) -> None:
         QMessageBox.about(self, self.tr("About Shaper Designer"), about_text())

@@ -71,7 +71,7 @@ class Menus:
         self.file.addActions([w.act_save, w.act_save_as])
         self.file.addSeparator()
         self.file.addActions([w.act_csv, w.act_forces_csv, w.act_plots_img, w.act_scheme_img,
-                               w.act_scheme_dxf, w.act_report, w.act_sheet, w.act_course])
+                               w.act_scheme_dxf, w.act_report, w.act_sheet, w.act_course, w.act_class])
         self.file.addSeparator()
         self.file.addAction(w.act_quit)
         self.edit = bar.addMenu("")

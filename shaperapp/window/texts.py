@@ -29,6 +29,9 @@ def action_texts(w) -> list[tuple[QAction, str, str]]:
          translate("MainWindow", "The course design's drawing sheet on A0–A3 paper, with a preview")),
         (w.act_course, translate("MainWindow", "Export course desi&gn…"),
          translate("MainWindow", "The report and every drawing sheet into one folder, as shaper course writes them")),
+        (w.act_class, translate("MainWindow", "C&lass course design…"),
+         translate("MainWindow", "A whole class from a table of data sets: each student's folder, the task sheets and "
+                   "the answer key, as shaper class writes them")),
         (w.act_quit, translate("MainWindow", "&Quit"), ""),
         (w.act_goto, translate("MainWindow", "&Go to Crank Angle…"), translate("MainWindow", "Move the mechanism to a crank angle you type")),
         (w.act_fit_plots, translate("MainWindow", "Fit &plots"), translate("MainWindow", "Show the whole cycle in the plots of the current tab")),

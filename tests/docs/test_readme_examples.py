@@ -21,8 +21,9 @@ PAGES = [README, *sorted((ROOT / "docs").glob("*.md"))]
 CHECKED = ("synth", "analyze", "curves", "table", "dynamics", "sweep", "cam", "gear")
 # Every subcommand of ``shaper`` (core/cli's CORE_COMMANDS plus the Qt ones, report and drawing).
 SUBCOMMANDS = ("synth", "curves", "analyze", "dynamics", "table", "sweep", "optimize", "cam", "gear", "library",
-               "report", "drawing", "course")
-DESIGN_FILE = ROOT / "tests" / "data" / "my.shaper.json"   # the GUI's default design, saved: what course reads
+               "report", "drawing", "course", "design", "class")
+DESIGN_FILE = ROOT / "tests" / "data" / "my.shaper.json"
+TASKS_FILE = ROOT / "tests" / "data" / "tasks.csv"   # the GUI's default design, saved: what course reads
 
 
 def console_examples(text: str) -> list[tuple[str, str]]:
@@ -80,7 +81,8 @@ def test_docs_example_output(page, command, expected, tmp_path):
 def test_readme_table_example_runs(command, tmp_path):
     env = {**os.environ, "SHAPER_LIBRARY": str(tmp_path / "library.sqlite")}
     shutil.copy(DESIGN_FILE, tmp_path / DESIGN_FILE.name)     # a design file as a user has one
+    shutil.copy(TASKS_FILE, tmp_path / TASKS_FILE.name)       # and a class's table of one student
     run = subprocess.run(["bash", "-c", command], capture_output=True, text=True, cwd=tmp_path,
-                         timeout=120, env=env)
+                         timeout=600, env=env)
     assert run.returncode == 0 and run.stderr == "", run.stderr
     assert run.stdout or any(tmp_path.iterdir())

@@ -1,0 +1,301 @@
+"""A class's task table (``shaper class --tasks TASKS.csv``, issue 41): one row per student,
+read as a spreadsheet saves it and turned into each student's design file.
+
+A column is a design option named as the command line names it without its dashes
+(``crank``, ``K``, ``rod-ratio``, ``lever-mass``, ``z1`` …; an option's dest, such as
+``time_ratio``, is taken too), found in ``shaper design``'s own parser: each row is parsed
+by that parser and checked by :func:`core.cli.cmd_design.document_from_args`, the code of
+every subcommand, so an option added there is a column here without a change. Besides
+them: ``student`` and ``student-number`` (required), ``class`` and ``design`` (a design file
+beside the table that the row's options change, instead of ``--base``).
+
+Everything about the table as a whole (its encoding, header, size, two students with one
+number or one folder) is a :class:`TableError` found before anything is written; a bad row
+is a :class:`Student` with its ``error``: one line naming its line and column.
+"""
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import os
+import re
+import stat
+import unicodedata
+from dataclasses import dataclass
+from typing import Any
+
+from ..errors import DesignError, FileFormatError
+from ..text import UNPRINTABLE
+from .common import Parser, UsageError, design_error_text, one_line
+
+MAX_TABLE_BYTES = 5_000_000
+MAX_STUDENTS = 1000
+"""A class of more is refused whole, before any row is read (about an hour per 500 on 2 cores)."""
+MAX_TEXT = 200
+NAME_COLUMNS = {"student": "student", "student-number": "number", "student_number": "number",
+                "class": "group", "design": "design"}
+TRUE_WORDS, FALSE_WORDS = {"1", "true", "yes", "y", "x", "是"}, {"0", "false", "no", "n", "否"}
+# what a file name may not hold on Windows, macOS or Linux (each becomes "_")
+_UNSAFE = re.compile(r'[<>:"/\\|?*\x00-\x1f\x7f]|\.\.+')
+_RESERVED = {"CON", "PRN", "AUX", "NUL", *(f"COM{i}" for i in range(1, 10)), *(f"LPT{i}" for i in range(1, 10))}
+MAX_FOLDER_BYTES = 120
+
+
+class TableError(ValueError):
+    """The table cannot be used at all; nothing is written. The message names the file and,
+    where there is one, the line and column."""
+
+
+@dataclass(frozen=True)
+class Student:
+    line: int                 # the row's first line in the file (the header is line 1)
+    name: str
+    number: str
+    group: str
+    folder: str               # the folder's name under DIR
+    document: dict[str, Any] | None   # the design file's document; None with an error
+    error: str = ""           # "tasks.csv line 7, column K: must be > 1 (got 0.9)"
+
+
+def design_parser() -> argparse.ArgumentParser:
+    """The parser a row is read with: ``shaper design``'s, without its -o."""
+    from .cmd_design import configure
+    parser = Parser(prog="shaper class", add_help=False)
+    configure(parser, output=False)
+    return parser
+
+
+def column_actions(parser: argparse.ArgumentParser) -> dict[str, argparse.Action]:
+    """Column name → the option: each long option without its dashes, and its dest."""
+    names: dict[str, argparse.Action] = {}
+    for action in parser._actions:
+        for flag in action.option_strings:
+            if flag.startswith("--"):
+                names[flag[2:]] = action
+        if action.option_strings:
+            names.setdefault(action.dest, action)
+    return names
+
+
+def decode(raw: bytes, name: str) -> tuple[str, str]:
+    """The table's text and its encoding: UTF-8 (with or without a BOM), else GBK, which a
+    Chinese Excel saves "CSV" in; anything else is refused by name."""
+    try:
+        return raw.decode("utf-8-sig"), "UTF-8"
+    except UnicodeDecodeError:
+        pass
+    try:
+        return raw.decode("gbk"), "GBK"
+    except UnicodeDecodeError:
+        raise TableError(f"{name}: not UTF-8 or GBK text; save it as \"CSV UTF-8\"") from None
+
+
+def read_rows(path: str) -> tuple[list[tuple[int, list[str]]], str]:
+    """(line, cells) of every non-empty row, the header first, and the encoding."""
+    name = os.path.basename(path)
+    try:
+        info = os.stat(path)
+        if not stat.S_ISREG(info.st_mode):
+            raise TableError(f"--tasks: {path} is not a file")
+        if info.st_size > MAX_TABLE_BYTES:
+            raise TableError(f"{name}: larger than {MAX_TABLE_BYTES // 1_000_000} MB; a class "
+                             f"is at most {MAX_STUDENTS} rows")
+        raw = _read(path)
+    except OSError as exc:
+        raise TableError(f"--tasks: cannot read {path}: {exc.strerror or exc}") from None
+    text, encoding = decode(raw, name)
+    first = text.split("\n", 1)[0]
+    delimiter = max((",", ";", "\t"), key=first.count)
+    reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter)
+    rows, line = [], 1
+    try:
+        for cells in reader:
+            if any(c.strip() for c in cells):
+                rows.append((line, [c.strip() for c in cells]))
+                if len(rows) > MAX_STUDENTS + 1:
+                    raise TableError(f"{name}: more than {MAX_STUDENTS} students; split the class "
+                                     "into several tables")
+            line = reader.line_num + 1
+    except csv.Error as exc:
+        raise TableError(f"{name} line {reader.line_num}: {exc}") from None
+    if not rows:
+        raise TableError(f"{name}: empty; the first row names the columns (student, student-number, …)")
+    return rows, encoding
+
+
+def _read(path: str) -> bytes:
+    with open(path, "rb") as handle:
+        return handle.read(MAX_TABLE_BYTES + 1)
+
+
+def read_tasks(path: str, base: str | None, group: str = "") -> tuple[list[Student], str]:
+    """Every row as a Student (a bad one with its error), and the table's encoding.
+    TableError for a table that cannot be used at all."""
+    name = os.path.basename(path)
+    rows, encoding = read_rows(path)
+    (_, header), body = rows[0], rows[1:]
+    parser = design_parser()
+    actions = column_actions(parser)
+    _check_header(name, header, actions)
+    here = os.path.dirname(os.path.abspath(path))
+    students = [_student(name, line, header, cells, parser, actions, base, here, group)
+                for line, cells in body]
+    _check_unique(name, students)
+    return students, encoding
+
+
+def _check_header(name: str, header: list[str], actions: dict[str, argparse.Action]) -> None:
+    from . import close_match
+    seen: set[str] = set()
+    for index, column in enumerate(header, start=1):
+        if not column:
+            raise TableError(f"{name} line 1, column {index}: has no name")
+        if column in seen:
+            raise TableError(f"{name} line 1, column {column}: named twice")
+        seen.add(column)
+        if column not in NAME_COLUMNS and column not in actions:
+            match = close_match(column, list(NAME_COLUMNS) + [k for k in actions if "_" not in k])
+            hint = f"; did you mean {match}?" if match else "; see 'shaper design --help' for the options"
+            raise TableError(f"{name} line 1, column {column}: not a column{hint}")
+    for required in ("student", "student-number"):
+        if required not in seen and not (required == "student-number" and "student_number" in seen):
+            raise TableError(f"{name} line 1: no column {required}")
+
+
+def _student(name: str, line: int, header: list[str], cells: list[str], parser: argparse.ArgumentParser,
+             actions: dict[str, argparse.Action], base: str | None, here: str, group: str) -> Student:
+    where = f"{name} line {line}"
+    values = {NAME_COLUMNS.get(c, c): "" for c in NAME_COLUMNS}
+    if len(cells) > len(header):
+        return Student(line, "", "", "", "", None, f"{where}: {len(cells)} cells, but the header names "
+                       f"{len(header)} columns")
+    row = dict(zip(header, cells))
+    for column, field in NAME_COLUMNS.items():
+        if row.get(column):
+            values[field] = row[column]
+    person = [_text(where, column, row.get(column, "")) for column in ("student", "student-number", "class")]
+    student, number = values["student"], values["number"]
+    folder = folder_name(number, student)
+    blank = Student(line, student, number, values["group"] or group, folder, None)
+    for error in person:
+        if error:
+            return _with_error(blank, error)
+    for column, field in (("student", "student"), ("student-number", "number")):
+        if not values[field]:
+            return _with_error(blank, f"{where}, column {column}: empty; every student needs one")
+    try:
+        argv, given = _argv(where, row, actions, base, here)
+        args = parser.parse_args(argv)
+        from .cmd_design import document_from_args
+        document = document_from_args(args)
+    except _CellError as exc:
+        return _with_error(blank, str(exc))
+    except UsageError as exc:
+        return _with_error(blank, _located(where, str(exc), given))
+    except DesignError as exc:
+        return _with_error(blank, _located(where, design_error_text(exc), given))
+    except FileFormatError as exc:
+        return _with_error(blank, f"{where}, column design: {exc}" if row.get("design")
+                           else f"{where}: --base: {exc}")
+    return Student(line, student, number, blank.group, folder, document)
+
+
+class _CellError(ValueError):
+    pass
+
+
+def _with_error(student: Student, error: str) -> Student:
+    from dataclasses import replace
+    return replace(student, error=one_line(error))
+
+
+def _text(where: str, column: str, value: str) -> str:
+    """'' or why a name cell cannot be printed on a cover."""
+    if UNPRINTABLE.search(value):
+        return f"{where}, column {column}: must be one line of text without control characters"
+    if len(value) > MAX_TEXT:
+        return f"{where}, column {column}: at most {MAX_TEXT} characters (got {len(value)})"
+    return ""
+
+
+def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], base: str | None,
+          here: str) -> tuple[list[str], dict[str, str]]:
+    """The row as ``shaper design``'s words, and each option given → its column."""
+    argv: list[str] = []
+    given: dict[str, str] = {}
+    for column, cell in row.items():
+        if column in NAME_COLUMNS or not cell:
+            continue
+        action = actions[column]
+        flag = max(action.option_strings, key=len)
+        given[flag] = column
+        if action.nargs in ("+", "*"):
+            argv += [flag, *cell.replace(",", " ").split()]
+        elif action.nargs == 0:              # a switch (--no-gravity): yes or no
+            word = cell.lower()
+            if word not in TRUE_WORDS | FALSE_WORDS:
+                raise _CellError(f"{where}, column {column}: must be yes or no (got {cell!r})")
+            argv += [flag] if word in TRUE_WORDS else []
+        else:
+            argv.append(f"{flag}={cell}")
+    design = row.get("design", "")
+    if design:
+        argv += ["--design", beside(where, design, here)]
+    elif base is not None:
+        argv += ["--design", base]
+    return argv, given
+
+
+def beside(where: str, design: str, here: str) -> str:
+    """The path of a ``design`` cell: a file in the table's folder or below it, never
+    outside (../x, an absolute path elsewhere, a link that leads out)."""
+    path = os.path.join(here, design)
+    inside = os.path.realpath(here)
+    real = os.path.realpath(path)
+    if os.path.commonpath([inside, real]) != inside:
+        raise _CellError(f"{where}, column design: {design!r} is outside the table's folder; put the "
+                         "design file beside the table")
+    return path
+
+
+_OPTION = re.compile(r"^(?:argument )?(--[\w-]+)(?:/\S+)?(?: \(([^)]*)\))?: (.*)$", re.S)
+
+
+def _located(where: str, message: str, given: dict[str, str]) -> str:
+    """A command-line message ("--K: must be > 1 (got 0.9)") as the table's: the column that
+    gave the option, else the message as it is after the line."""
+    found = _OPTION.match(message)
+    if found and found.group(1) in given:
+        part = f" ({found.group(2)})" if found.group(2) else ""
+        return f"{where}, column {given[found.group(1)]}{part}: {found.group(3)}"
+    return f"{where}: {message}"
+
+
+def folder_name(number: str, student: str) -> str:
+    """``<number>-<student>`` as a folder name on any system: no separator, no "..", no
+    control or reserved character (each "_"), no reserved device name, no leading dot or
+    trailing dot or space, at most MAX_FOLDER_BYTES bytes; letters of any script kept."""
+    text = unicodedata.normalize("NFC", f"{number}-{student}")
+    text = _UNSAFE.sub("_", text).strip().rstrip(". ")
+    encoded = text.encode("utf-8")[:MAX_FOLDER_BYTES]
+    text = encoded.decode("utf-8", "ignore").rstrip(". ")
+    if not text or text.startswith(".") or text.split(".")[0].upper() in _RESERVED:
+        text = "_" + text
+    return text
+
+
+def _check_unique(name: str, students: list[Student]) -> None:
+    """TableError for two students with one number or one folder (Windows and macOS do not
+    tell upper from lower case), naming both lines."""
+    numbers: dict[str, int] = {}
+    folders: dict[str, int] = {}
+    for s in students:
+        if s.number and s.number in numbers:
+            raise TableError(f"{name} line {s.line}, column student-number: {s.number} is also on line "
+                             f"{numbers[s.number]}; each student needs a number of their own")
+        numbers.setdefault(s.number, s.line)
+        if s.folder and s.folder.casefold() in folders:
+            raise TableError(f"{name} line {s.line}: the folder {s.folder} is also line "
+                             f"{folders[s.folder.casefold()]}'s; give the students different numbers")
+        folders.setdefault(s.folder.casefold(), s.line)

@@ -1,0 +1,229 @@
+"""File › Class course design…: a class's task table in, ``shaper class`` run on it (issue 41,
+item 5).
+
+The dialog reads the table and the base design with the command's own reader
+(``core.cli.tasks.read_tasks``), so the rows it shows, each marked with its error, are the
+ones the command takes and refuses, before anything runs. Run starts ``shaper class`` as
+a process of its own (its workers are processes too; the window stays responsive) and
+advances the progress bar by the lines it prints, one per finished student. Cancel sends
+that process SIGINT: it starts no new student and waits for those being written, so every
+file left is complete. At the end the folder can be opened.
+"""
+from __future__ import annotations
+
+import os
+import signal
+import sys
+
+from PySide6.QtCore import QCoreApplication, QProcess, QUrl, Qt
+from PySide6.QtGui import QBrush, QColor, QDesktopServices
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFileDialog, QFormLayout,
+                               QHBoxLayout, QLabel, QLineEdit, QProgressBar, QPushButton, QTableWidget,
+                               QTableWidgetItem, QVBoxLayout, QWidget)
+
+from core.drawing.sheet import PAPERS
+
+translate = QCoreApplication.translate
+BAD = QColor(255, 220, 220)
+
+
+class ClassDialog(QDialog):
+    """Pick the table, the base design and the folder; see the rows; run, cancel, open."""
+
+    def __init__(self, language: str, start_dir: str = "", parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle(translate("ClassDialog", "Class course design"))
+        self._language, self._start = language, start_dir
+        self._process: QProcess | None = None
+        self._good = 0
+        self._finished = 0
+        self.tasks, self.base, self.folder = QLineEdit(), QLineEdit(), QLineEdit()
+        self.sheet = QComboBox()
+        self.sheet.addItems(list(PAPERS))
+        self.sheet.setCurrentText("A1")
+        self.dxf = QCheckBox(translate("ClassDialog", "DXF too"))
+        form = QFormLayout()
+        form.addRow(translate("ClassDialog", "Task table (CSV):"), self._picker(self.tasks, self._pick_tasks))
+        form.addRow(translate("ClassDialog", "Base design:"), self._picker(self.base, self._pick_base))
+        form.addRow(translate("ClassDialog", "Output folder:"), self._picker(self.folder, self._pick_folder))
+        form.addRow(translate("ClassDialog", "Sheets:"), self._row(self.sheet, self.dxf))
+        self.table = QTableWidget(0, 4)
+        self.table.setHorizontalHeaderLabels([translate("ClassDialog", "Line"), translate("ClassDialog", "Student"),
+                                              translate("ClassDialog", "Number"), translate("ClassDialog", "Check")])
+        self.table.horizontalHeader().setStretchLastSection(True)
+        self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
+        self.summary = QLabel()
+        self.summary.setWordWrap(True)
+        self.progress = QProgressBar()
+        self.progress.setFormat("%v / %m")
+        self.buttons = QDialogButtonBox()
+        self.run_button = self.buttons.addButton(translate("ClassDialog", "Run"), QDialogButtonBox.ButtonRole.AcceptRole)
+        self.cancel_button = self.buttons.addButton(translate("ClassDialog", "Cancel"),
+                                                    QDialogButtonBox.ButtonRole.RejectRole)
+        self.open_button = self.buttons.addButton(translate("ClassDialog", "Open folder"),
+                                                  QDialogButtonBox.ButtonRole.ActionRole)
+        self.open_button.setEnabled(False)
+        self.run_button.setEnabled(False)
+        self.run_button.clicked.connect(self.run)
+        self.cancel_button.clicked.connect(self.cancel)
+        self.open_button.clicked.connect(self.open_folder)
+        layout = QVBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(self.table, 1)
+        layout.addWidget(self.summary)
+        layout.addWidget(self.progress)
+        layout.addWidget(self.buttons)
+        for edit in (self.tasks, self.base):
+            edit.editingFinished.connect(self.check)
+        self.folder.textChanged.connect(self._update_run)
+        self.resize(760, 520)
+
+    @staticmethod
+    def _row(*widgets: QWidget) -> QWidget:
+        box = QWidget()
+        row = QHBoxLayout(box)
+        row.setContentsMargins(0, 0, 0, 0)
+        for widget in widgets:
+            row.addWidget(widget)
+        row.addStretch(1)
+        return box
+
+    def _picker(self, edit: QLineEdit, pick) -> QWidget:
+        button = QPushButton(translate("ClassDialog", "Browse…"))
+        button.clicked.connect(pick)
+        box = self._row(edit, button)
+        box.layout().setStretch(0, 1)
+        return box
+
+    def _pick_tasks(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self, translate("ClassDialog", "Task table"), self._start,
+                                              translate("ClassDialog", "CSV (*.csv);;All files (*)"))
+        if path:
+            self.tasks.setText(path)
+            if not self.folder.text():
+                self.folder.setText(os.path.splitext(path)[0])
+            self.check()
+
+    def _pick_base(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self, translate("ClassDialog", "Base design"), self._start,
+                                              translate("ClassDialog", "Designs (*.json);;All files (*)"))
+        if path:
+            self.base.setText(path)
+            self.check()
+
+    def _pick_folder(self) -> None:
+        path = QFileDialog.getExistingDirectory(self, translate("ClassDialog", "Output folder"), self._start)
+        if path:
+            self.folder.setText(path)
+
+    def check(self) -> None:
+        """Read the table as ``shaper class`` will, and show every row with its error."""
+        from core.cli.tasks import TableError, read_tasks
+        from core.design_file import load_design
+        from core.errors import FileFormatError
+        self.table.setRowCount(0)
+        self._good = 0
+        path, base = self.tasks.text().strip(), self.base.text().strip() or None
+        if not path:
+            self._update_run()
+            return
+        try:
+            if base is not None:
+                load_design(base)
+            students, _ = read_tasks(path, base)
+        except (TableError, FileFormatError) as exc:
+            self.summary.setText(translate("ClassDialog", "The table cannot be used: %1").replace("%1", str(exc)))
+            self._update_run()
+            return
+        self.table.setRowCount(len(students))
+        for row, s in enumerate(students):
+            texts = [str(s.line), s.name, s.number, s.error or translate("ClassDialog", "ready")]
+            for column, text in enumerate(texts):
+                item = QTableWidgetItem(text)
+                if s.error:
+                    item.setBackground(QBrush(BAD))
+                    item.setToolTip(s.error)
+                self.table.setItem(row, column, item)
+        self._good = sum(1 for s in students if not s.error)
+        bad = len(students) - self._good
+        self.summary.setText(translate("ClassDialog", "%1 students ready, %2 rows with errors (left out).")
+                             .replace("%1", str(self._good)).replace("%2", str(bad)))
+        self._update_run()
+
+    def _update_run(self) -> None:
+        running = self._process is not None
+        self.run_button.setEnabled(not running and self._good > 0 and bool(self.folder.text().strip()))
+
+    def arguments(self) -> list[str]:
+        """``shaper class``'s words for the dialog's choices."""
+        words = ["-m", "core", "class", "--tasks", self.tasks.text().strip(), "-o", self.folder.text().strip(),
+                 "--lang", "zh" if self._language.startswith("zh") else "en", "--sheet", self.sheet.currentText()]
+        if self.base.text().strip():
+            words += ["--base", self.base.text().strip()]
+        return words + (["--dxf"] if self.dxf.isChecked() else [])
+
+    def run(self) -> None:
+        self._finished = 0
+        self.progress.setRange(0, self._good)
+        self.progress.setValue(0)
+        self.open_button.setEnabled(False)
+        process = QProcess(self)
+        process.setProgram(sys.executable)
+        process.setArguments(self.arguments())
+        process.readyReadStandardOutput.connect(self._read)
+        process.finished.connect(self._done)
+        self._process = process
+        self._errors = ""
+        process.readyReadStandardError.connect(self._read_errors)
+        process.start()
+        self._update_run()
+        self.summary.setText(translate("ClassDialog", "Writing the class's files…"))
+
+    def _read(self) -> None:
+        text = bytes(self._process.readAllStandardOutput()).decode("utf-8", "replace")
+        self._finished += sum(1 for line in text.splitlines() if line.endswith(" s") and "  " in line)
+        self.progress.setValue(min(self._finished, self._good))
+
+    def _read_errors(self) -> None:
+        self._errors += bytes(self._process.readAllStandardError()).decode("utf-8", "replace")
+
+    def cancel(self) -> None:
+        """Stop a run (every file left complete), else close the dialog."""
+        if self._process is None:
+            self.reject()
+            return
+        self.cancel_button.setEnabled(False)
+        self.summary.setText(translate("ClassDialog", "Cancelling: the students being written are finished…"))
+        os.kill(self._process.processId(), signal.SIGINT)
+
+    def _done(self, status: int, _exit) -> None:
+        cancelled = not self.cancel_button.isEnabled()
+        self._process = None
+        self.cancel_button.setEnabled(True)
+        folder = self.folder.text().strip()
+        if cancelled:
+            text = translate("ClassDialog", "Cancelled: %1 students written, each complete.")
+        elif status in (0, 2) and os.path.isfile(os.path.join(folder, "answer-key.json")):
+            text = translate("ClassDialog", "Done: %1 students written; the task sheets and the answer key are "
+                             "in the folder.")
+        else:
+            last = self._errors.strip().splitlines()[-1:] or [""]
+            text = translate("ClassDialog", "Failed: %1").replace("%1", last[0].removeprefix("shaper: error: "))
+        self.summary.setText(text.replace("%1", str(self._finished)))
+        self.open_button.setEnabled(os.path.isdir(folder))
+        self._update_run()
+
+    def open_folder(self) -> None:
+        QDesktopServices.openUrl(QUrl.fromLocalFile(self.folder.text().strip()))
+
+    def closeEvent(self, event) -> None:         # noqa: N802 (Qt's name)
+        if self._process is not None:
+            self.cancel()
+            self._process.waitForFinished(-1)
+        super().closeEvent(event)
+
+
+def class_dialog(parent: QWidget, language: str, start_dir: str) -> None:
+    dialog = ClassDialog(language, start_dir, parent)
+    dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+    dialog.show()

@@ -1,0 +1,150 @@
+"""The class's files beside the students' folders (issue 41): ``tasks.pdf`` (one task sheet
+a student, A4), ``answer-key.json``, ``answer-key.csv`` and ``answer-key.pdf``.
+
+The sheets are drawn by ``core.drawing.class_sheets`` and painted by the drawing sheets'
+own painter; here they get their words in the UI's language. Each file is written
+atomically.
+"""
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Mapping, Sequence
+
+from PySide6.QtCore import QCoreApplication
+
+from core.atomic import atomic_write
+from core.cli.answers import FIGURES, PER_SPEED, key_csv, key_values
+from core.course import PARTS
+from core.drawing.class_sheets import answer_pages, task_sheet
+
+from shaperapp.drawing.render import pages_pdf
+
+translate = QCoreApplication.translate
+
+
+def task_labels() -> dict[str, str]:
+    """The task sheet's and the answer key's words in the UI's language."""
+    words = {
+        "Course design task sheet": translate("ClassSheets", "Course design task sheet"),
+        "Quick-return mechanism of a shaper": translate("ClassSheets", "Quick-return mechanism of a shaper"),
+        "Student": translate("ClassSheets", "Student"),
+        "Number": translate("ClassSheets", "Number"),
+        "Class": translate("ClassSheets", "Class"),
+        "Date": translate("ClassSheets", "Date"),
+        "The mechanism (sketch to scale, crank at 60°)": translate("ClassSheets", "The mechanism (sketch to scale, crank at 60°)"),
+        "Data set": translate("ClassSheets", "Data set"),
+        "Quantity": translate("ClassSheets", "Quantity"),
+        "Symbol": translate("ClassSheets", "Symbol"),
+        "Value": translate("ClassSheets", "Value"),
+        "Unit": translate("ClassSheets", "Unit"),
+        "Crank speed": translate("ClassSheets", "Crank speed"),
+        "Frame O_2O_4": translate("ClassSheets", "Frame O_2O_4"),
+        "Crank O_2A": translate("ClassSheets", "Crank O_2A"),
+        "Lever O_4B": translate("ClassSheets", "Lever O_4B"),
+        "Rod BC": translate("ClassSheets", "Rod BC"),
+        "Time ratio": translate("ClassSheets", "Time ratio"),
+        "Stroke": translate("ClassSheets", "Stroke"),
+        "Lever's centre of mass O_4S_4": translate("ClassSheets", "Lever's centre of mass O_4S_4"),
+        "Lever weight": translate("ClassSheets", "Lever weight"),
+        "Lever moment of inertia": translate("ClassSheets", "Lever moment of inertia"),
+        "Ram weight": translate("ClassSheets", "Ram weight"),
+        "Cutting force": translate("ClassSheets", "Cutting force"),
+        "Height of the cutting force": translate("ClassSheets", "Height of the cutting force"),
+        "Guide line": translate("ClassSheets", "Guide line"),
+        "Follower arm": translate("ClassSheets", "Follower arm"),
+        "Follower swing": translate("ClassSheets", "Follower swing"),
+        "Allowed pressure angle": translate("ClassSheets", "Allowed pressure angle"),
+        "Rise": translate("ClassSheets", "Rise"),
+        "Outer dwell": translate("ClassSheets", "Outer dwell"),
+        "Return": translate("ClassSheets", "Return"),
+        "Pinion teeth": translate("ClassSheets", "Pinion teeth"),
+        "Gear teeth": translate("ClassSheets", "Gear teeth"),
+        "Module": translate("ClassSheets", "Module"),
+        "Deliver": translate("ClassSheets", "Deliver"),
+        "Answer key": translate("ClassSheets", "Answer key"),
+        "page": translate("ClassSheets", "page"),
+        "failed checks": translate("ClassSheets", "failed checks"),
+        "speed": translate("ClassSheets", "speed"),
+        "none": translate("ClassSheets", "none"),
+    }
+    return words
+
+
+def part_titles() -> list[str]:
+    """The files a student delivers, as the task sheet lists them."""
+    titles = {"report": translate("ClassSheets", "Design report (00-report.pdf)"),
+              "motion": translate("ClassSheets", "Motion analysis sheet (01-motion)"),
+              "kinetostatic": translate("ClassSheets", "Kinetostatic analysis sheet (02-kinetostatic)"),
+              "cam": translate("ClassSheets", "Feed cam sheet (03-cam)"),
+              "gear": translate("ClassSheets", "Gear meshing sheet (04-gear)")}
+    return [titles.get(part.stem, part.title) for part in PARTS]
+
+
+def write_tasks(path: str, students: Sequence[tuple[Mapping[str, Any], Mapping[str, str]]],
+                language: str) -> None:
+    """tasks.pdf: one A4 page per (design document, who) in ``students``."""
+    labels, deliver = task_labels(), part_titles()
+    sheets = [task_sheet(doc, who, deliver, labels) for doc, who in students]
+    atomic_write(path, pages_pdf(sheets, language, labels["Course design task sheet"]))
+
+
+# the answer key's PDF columns: (FIGURES' or PER_SPEED's name, heading in the index notation, unit, mm)
+_LINKAGE = (("theta", "θ", "°", 14), ("L1", "L_1", "mm", 13), ("L2", "L_2", "mm", 13), ("L3", "L_3", "mm", 13),
+            ("L4", "L_4", "mm", 13), ("h", "h", "mm", 13), ("K", "K", "", 14), ("H", "H", "mm", 14),
+            ("n", "n_2", "r/min", 13), ("v_work_max", "v_w,max", "m/s", 16),
+            ("v_return_max", "v_r,max", "m/s", 16), ("a_max", "|a|_max", "m/s²", 16))
+_PARTS = (("n", "n_2", "r/min", 13), ("M_max", "M_max", "N·m", 15), ("M_mean", "M_m", "N·m", 15),
+          ("dW_max", "ΔW_max", "J", 15), ("J_F", "J_F", "kg·m²", 15), ("r0", "r_0", "mm", 14),
+          ("a_cam", "a_cam", "mm", 14), ("r_roller", "r_r", "mm", 14), ("x1", "x_1", "", 18),
+          ("x2", "x_2", "", 18), ("a'", "a′", "mm", 14), ("alpha'", "α′", "°", 14), ("epsilon", "ε", "", 14),
+          ("failed", "", "", 26))
+
+
+def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: Sequence[str],
+                     language: str) -> list[str]:
+    """answer-key.json, .csv and .pdf in ``folder``; returns their paths."""
+    paths = [os.path.join(folder, f"answer-key.{kind}") for kind in ("json", "csv", "pdf")]
+    atomic_write(paths[0], json.dumps(list(entries), indent=1, ensure_ascii=False, allow_nan=False) + "\n")
+    atomic_write(paths[1], "\ufeff" + key_csv(entries, groups))     # a BOM: Excel then reads UTF-8
+    labels = task_labels()
+    who = [("No.", 9), (labels["Student"], 28), (labels["Number"], 24)]
+    rows = [_pdf_row(number, entry, group, i, labels)
+            for number, (entry, group) in enumerate(zip(entries, groups), start=1)
+            for i in range(len(entry["analyze"]["speeds"]))]
+    tables = []
+    for columns in (_LINKAGE, _PARTS):
+        header = [h for h, _ in who] + [heading or labels["failed checks"] for _, heading, _, _ in columns]
+        units = ["" for _ in who] + [unit for _, _, unit, _ in columns]
+        widths = [w for _, w in who] + [w for _, _, _, w in columns]
+        body = [[row[0], row[1], row[2]] + [row[3][name] for name, _, _, _ in columns] for row in rows]
+        tables.append(((header, units), widths, body))
+    title = f"{labels['Answer key']}: {labels['Quick-return mechanism of a shaper']}"
+    pages = answer_pages(tables, title, labels, plain=(1, 2, len(_PARTS) + len(who) - 1))
+    atomic_write(paths[2], pages_pdf(pages, language, title))
+    return paths
+
+
+def _pdf_row(number: int, entry: Mapping[str, Any], group: str, speed: int,
+             labels: Mapping[str, str]) -> tuple[str, str, str, dict[str, str]]:
+    """(No., student, number, name → text) of one speed of one student; the figures that
+    do not depend on the speed on its first speed's row only."""
+    speeds = len(entry["analyze"]["speeds"])
+    values = key_values(entry, group, speeds)
+    figures = dict(zip((name for name, _, _ in FIGURES), values[4:4 + len(FIGURES)]))
+    at = 4 + len(FIGURES) + speed * (1 + len(PER_SPEED))
+    texts = {"n": _n(values[at])}
+    texts.update({name: _n(v) for (name, _, _), v in zip(PER_SPEED, values[at + 1:at + 1 + len(PER_SPEED)])})
+    first = speed == 0
+    texts.update({name: _n(v) if first else "" for name, v in figures.items()})
+    texts["failed"] = (values[-1] or labels["none"]) if first else ""
+    if not first:
+        return "", "", "", texts
+    return str(number), entry["student"], entry["student_number"], texts
+
+
+def _n(value: Any) -> str:
+    """4 significant digits, as the grading needs (the CSV and JSON keep them all)."""
+    if value is None:
+        return "—"
+    return f"{value:.0f}" if abs(value) >= 1e4 else f"{value:.4g}"

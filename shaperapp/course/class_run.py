@@ -1,0 +1,159 @@
+"""One student's course design, written in a worker process (``shaper class``, issue 41).
+
+Each student's folder gets ``design.shaper.json`` and the course design of ``shaper course``
+(``write_course``, the same code), each file atomically, then a stamp naming what they
+were made from. A student whose stamp matches and whose files are all there is complete
+and current and is not made again, so a class killed half-way is finished by a rerun. The
+stamp goes first, before any file is replaced, so a run killed in a student's middle
+leaves no stamp claiming the mix of old and new files.
+
+Students run in forked worker processes (``multiprocessing``'s Pool, made before this
+process starts Qt, so each worker starts its own); ``jobs`` 1 runs them here.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import time
+from itertools import islice
+from dataclasses import dataclass, field
+from typing import Any, Iterator, Sequence
+
+from core.atomic import atomic_write
+from core.course import PARTS, file_names
+from core.version import version_text
+
+DESIGN_FILE = "design.shaper.json"
+STAMP_FILE = ".class-stamp"
+
+
+@dataclass(frozen=True)
+class Job:
+    """What one student's folder is made from (sent to a worker: plain values only)."""
+
+    index: int
+    folder: str               # the student's folder, DIR/<number>-<student>
+    name: str                 # its name, as the answer key lists it
+    design_text: str          # design.shaper.json's text
+    lang: str
+    paper: str
+    dxf: bool
+    title: str
+    date: str
+    cover: dict[str, str] = field(default_factory=dict)   # student, number, group, school, supervisor
+    cad_font: str = "gb"      # how the DXFs write their texts (--cad-font)
+
+
+@dataclass(frozen=True)
+class Result:
+    index: int
+    seconds: float
+    entry: dict[str, Any] | None        # the student's answer-key object; None on failure
+    error: str = ""
+    skipped: bool = False               # complete and current: not written again
+
+
+def stamp_of(job: Job) -> str:
+    """What the folder's files depend on, hashed: the design, the options, the version."""
+    version = version_text("shaper")
+    made = {"design": job.design_text, "lang": job.lang, "paper": job.paper, "dxf": job.dxf,
+            "title": job.title, "date": job.date, "cover": job.cover, "cad_font": job.cad_font,
+            "version": version}
+    return hashlib.sha256(json.dumps(made, sort_keys=True, ensure_ascii=False).encode()).hexdigest()
+
+
+def expected_files(job: Job) -> list[str]:
+    return [DESIGN_FILE] + [name for _, name in file_names(PARTS, job.dxf)]
+
+
+def is_current(job: Job) -> bool:
+    """The folder holds every file, made from exactly this job (its stamp)."""
+    try:
+        with open(os.path.join(job.folder, STAMP_FILE), encoding="utf-8") as handle:
+            if handle.read().strip() != stamp_of(job):
+                return False
+    except (OSError, UnicodeDecodeError):
+        return False
+    return all(os.path.isfile(os.path.join(job.folder, name)) for name in expected_files(job))
+
+
+_LANGUAGE: list[str] = []
+
+
+def _language(lang: str) -> str:
+    """This process's Qt, started once for all its students."""
+    if not _LANGUAGE:
+        from shaperapp.widgets.command_line import start_qt
+        _LANGUAGE.append(start_qt(lang))
+    return _LANGUAGE[0]
+
+
+def write_student(job: Job) -> None:
+    """The folder's files, each atomically, the stamp last (OSError names the file)."""
+    from core.course import plan_course, read_document
+
+    from .write import Covering, write_course
+    language = _language(job.lang)
+    os.makedirs(job.folder, exist_ok=True)
+    stamp = os.path.join(job.folder, STAMP_FILE)
+    if os.path.lexists(stamp):
+        os.remove(stamp)
+    design = os.path.join(job.folder, DESIGN_FILE)
+    atomic_write(design, job.design_text)
+    doc, keys = read_document(design)
+    course = plan_course(doc, keys, DESIGN_FILE, job.folder, dxf=job.dxf)
+    for _ in write_course(course, language, Covering(job.paper, job.title, job.date, dict(job.cover),
+                                                             cad_font=job.cad_font)):
+        pass
+    atomic_write(stamp, stamp_of(job) + "\n")
+
+
+def run_student(job: Job) -> Result:
+    """Write one student's folder unless it is current, and its answer-key object; any
+    failure is the Result's one-line error (never a traceback out of a worker)."""
+    from core.cli.answers import answer_entry
+    start = time.perf_counter()
+    try:
+        skipped = is_current(job)
+        if not skipped:
+            write_student(job)
+        entry = answer_entry(job.cover.get("student", ""), job.cover.get("number", ""), job.name,
+                             os.path.join(job.folder, DESIGN_FILE))
+        return Result(job.index, time.perf_counter() - start, entry, skipped=skipped)
+    except OSError as exc:
+        error = f"{job.name}: {exc}"
+    except Exception as exc:        # a font, a drawing that cannot be made: named, never raised
+        error = f"{job.name}: {type(exc).__name__}: {exc}"
+    return Result(job.index, time.perf_counter() - start, None, error)
+
+
+def run_jobs(jobs: Sequence[Job], workers: int) -> Iterator[Result]:
+    """Every job's Result as it finishes, on ``workers`` processes (1: in this one). A job
+    is handed to a worker only when one is free, so an interrupt (Ctrl+C; the GUI's Cancel
+    sends SIGINT to this process alone) starts nothing new and waits for the students being
+    written, whose files are then complete, before it goes on."""
+    if workers <= 1 or len(jobs) <= 1:
+        for job in jobs:
+            yield run_student(job)
+        return
+    import multiprocessing
+    from collections import deque
+    waiting = iter(jobs)
+    with multiprocessing.get_context("fork").Pool(workers) as pool:
+        running = deque(pool.apply_async(run_student, (job,)) for job in islice(waiting, workers))
+        try:
+            while running:
+                done = next((r for r in running if r.ready()), None)
+                if done is None:
+                    running[0].wait(0.05)
+                    continue
+                running.remove(done)
+                job = next(waiting, None)
+                if job is not None:
+                    running.append(pool.apply_async(run_student, (job,)))
+                yield done.get()
+        except KeyboardInterrupt:
+            for result in running:
+                result.wait()
+            raise

@@ -1,0 +1,79 @@
+"""File › Class course design… (issue 41, item 5): the table's rows shown with their errors
+marked before anything runs, a run of ``shaper class`` with a progress bar, and Cancel,
+which leaves only complete files; the menu entry in both languages."""
+from __future__ import annotations
+
+import re
+import subprocess
+
+import pytest
+
+from cli_runner import shaper_in_process
+
+BASE = ("--arm", "125", "--swing", "15", "--pressure", "40", "--rise", "75", "--dwell", "10", "--return", "75",
+        "--z1", "13", "--z2", "40", "--module", "6", "--rpm", "60", "--lever-mass", "20", "--lever-inertia", "1.1",
+        "--ram-mass", "70", "--cut-force", "7000", "--crank", "100", "--K", "1.4", "--stroke", "300")
+
+
+@pytest.fixture
+def class_files(tmp_path):
+    status, _, err = shaper_in_process("design", *BASE, "-o", tmp_path / "base.json")
+    assert status == 0, err
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text("student,student-number,crank,K\n张三,1,100,1.4\n李四,2,105,1.45\n坏,3,100,0.9\n王五,4,95,1.4\n",
+                     encoding="utf-8")
+    return tasks, tmp_path / "base.json", tmp_path / "out"
+
+
+def test_the_menu_has_the_class_in_both_languages(window, qtbot):
+    assert window.act_class in window.menu_file.actions()
+    window.set_language("en")
+    assert window.act_class.text() == "C&lass course design…"
+    window.set_language("zh_CN")
+    qtbot.waitUntil(lambda: window.act_class.text() != "C&lass course design…")
+    assert re.search(r"[\u4e00-\u9fff]", window.act_class.text())
+
+
+def test_the_rows_are_shown_with_their_errors_before_running(qtbot, class_files):
+    from shaperapp.course.class_dialog import BAD, ClassDialog
+    tasks, base, out = class_files
+    dialog = ClassDialog("en")
+    qtbot.addWidget(dialog)
+    assert not dialog.run_button.isEnabled()
+    dialog.tasks.setText(str(tasks))
+    dialog.base.setText(str(base))
+    dialog.check()
+    assert dialog.table.rowCount() == 4
+    cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(4)]
+    assert [row[:3] for row in cells] == [["2", "张三", "1"], ["3", "李四", "2"], ["4", "坏", "3"], ["5", "王五", "4"]]
+    assert cells[2][3] == "tasks.csv line 4, column K: must be > 1 and ≤ 5 (got 0.9)"
+    assert dialog.table.item(2, 3).background().color() == BAD
+    assert dialog.table.item(0, 3).background().color() != BAD and cells[0][3] == "ready"
+    assert "3 students ready, 1 rows with errors" in dialog.summary.text()
+    assert not dialog.run_button.isEnabled()           # no folder yet
+    dialog.folder.setText(str(out))
+    assert dialog.run_button.isEnabled() and not out.exists()       # nothing written before Run
+
+
+@pytest.mark.slow
+def test_cancel_leaves_only_complete_files(qtbot, class_files):
+    from shaperapp.course.class_dialog import ClassDialog
+    tasks, base, out = class_files
+    dialog = ClassDialog("en")
+    qtbot.addWidget(dialog)
+    dialog.tasks.setText(str(tasks))
+    dialog.base.setText(str(base))
+    dialog.folder.setText(str(out))
+    dialog.sheet.setCurrentText("A3")
+    dialog.check()
+    dialog.run()
+    assert dialog.progress.maximum() == 3
+    qtbot.waitUntil(lambda: any(out.glob("*/*.pdf")), timeout=300_000)
+    dialog.cancel()
+    qtbot.waitUntil(lambda: dialog._process is None, timeout=300_000)
+    assert dialog.summary.text().startswith("Cancelled: ")
+    assert dialog.open_button.isEnabled()
+    assert not list(out.rglob("*.tmp"))
+    for pdf in out.rglob("*.pdf"):          # every file left opens whole
+        assert subprocess.run(["pdfinfo", str(pdf)], capture_output=True).returncode == 0, pdf
+    assert not (out / "answer-key.json").exists()     # the class did not finish
