@@ -41,6 +41,13 @@ def _n(value: float | None) -> str:
     return f"{value:.4g}" if abs(value) < 1e5 else f"{value:.3e}"
 
 
+def _weight(forces: Mapping[str, Any], link: str) -> str:
+    """A link's weight as the design file holds it: the weight as typed (G4 = 200 N, the
+    task book's way), else the mass times g."""
+    weight = forces.get(f"{link}_weight_N")
+    return _n(weight) if weight is not None else _n(forces.get(f"{link}_mass_kg", 0.0) * GRAVITY)
+
+
 def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list[list[str]]:
     """The student's data set: (quantity, symbol in the task book's notation, value, unit)."""
     spec, forces = doc["spec"], doc.get("forces") or {}
@@ -62,9 +69,9 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
         cg = forces.get("lever_cg_mm")
         rows += [[w("Lever's centre of mass O_4S_4"), "l_O_4_S_4",
                   _n(cg) if cg is not None else "0.5 l_O_4_B", "mm"],
-                 [w("Lever weight"), "G_4", _n(forces["lever_mass_kg"] * GRAVITY), "N"],
+                 [w("Lever weight"), "G_4", _weight(forces, "lever"), "N"],
                  [w("Lever moment of inertia"), "J_S_4", _n(forces["lever_inertia_kg_m2"]), "kg·m²"],
-                 [w("Ram weight"), "G_6", _n(forces["ram_mass_kg"] * GRAVITY), "N"],
+                 [w("Ram weight"), "G_6", _weight(forces, "ram"), "N"],
                  [w("Cutting force"), "P", _n(forces["cut_force_N"]), "N"],
                  [w("Height of the cutting force"), "y_P", _n(forces["cut_height_mm"]), "mm"]]
     cam = doc.get("cam")
