@@ -44,6 +44,7 @@ FILE_REASONS = {
     "constant": "{name} is not a design file ({0} is not a number a design may hold)",
     "long_integer": "{name} is not a design file (an integer of {0} digits is too large)",
     "huge_number": "{name} is not a design file ({0} is too large a number)",
+    "duplicate_key": "{name} is not a design file (the key {0} appears twice in one object)",
     "spec_type": "{name}: 'spec' must be an object of design fields",
     "rpm_type": "{name}: 'rpm' must be a list of crank speeds in r/min",
     "rpm_value": "{name}: crank speed {0} is not a number",
