@@ -139,3 +139,31 @@ def test_an_entry_whose_document_cannot_be_opened_looks_damaged(tmp_path):
     status, out, err = shaper_in_process("library", "show", "bad", "--library", lib)
     assert status == 2 and out == "" and err.startswith("shaper: error: NAME:") and err.count("\n") == 1
     assert shaper_in_process("library", "show", "good", "--library", lib)[0] == 0
+
+
+def _pieces(cell: str) -> list[str]:
+    """A cell as a spreadsheet that splits on ; , | or tab reads it (spaces trimmed)."""
+    import re
+    return [p.strip(" ") for p in re.split(r"[;,|\t]", cell)]
+
+
+def test_every_csv_cell_of_user_text_is_guarded_as_a_whole_and_per_name(tmp_path):
+    """Issue 42: two tied designs made the "best" cell 'a;=cmd|' /C calc'!A0' with only the
+    first name guarded; a name holding ';=' was unguarded in the header and the curves."""
+    import csv
+    lib = _library(tmp_path, "a", "=cmd|' /C calc'!A0")       # one design twice: they tie
+    assert shaper_in_process("library", "add", "--crank", 100, "--K", 1.6, "--stroke", 300, "--rpm", 40,
+                             "--name", "b;=cmd|' /C calc'!A0", "--library", lib)[0] == 0
+    names = ("a", "=cmd|' /C calc'!A0", "b;=cmd|' /C calc'!A0")
+    status, _, err = shaper_in_process("library", "compare", *names, "--rpm", 40, "--csv", tmp_path / "t.csv",
+                                       "--curves-csv", tmp_path / "c.csv", "--library", lib)
+    assert status == 0, err
+    table = list(csv.reader((tmp_path / "t.csv").open(encoding="utf-8")))
+    curves = list(csv.reader((tmp_path / "c.csv").open(encoding="utf-8")))
+    best = [row[-1] for row in table[2:] if row[-1]]
+    assert best and all(cell.startswith("a;") for cell in best)     # a and its twin are best
+    text_cells = table[0] + best + [row[0] for row in curves[1:]]
+    assert any("=cmd" in cell for cell in best) and any("=cmd" in row[0] for row in curves[1:])
+    for cell in text_cells:
+        for piece in _pieces(cell):
+            assert not piece.startswith(("=", "+", "-", "@")), (cell, piece)
