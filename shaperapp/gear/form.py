@@ -21,16 +21,6 @@ from .model import MODE_FIELDS, MODES, GearModel
 
 UNITS = {"z1": "", "z2": "", "x1": "", "x2": "", "centre": "mm", "pressure_angle": "°",
          "addendum": "", "clearance": "", "tip_limit": "× m", "contact_limit": ""}
-FIELD_WIDTH = 80
-"""px of a number field: the shown text is rounded to fit (``shown_number``), the value kept."""
-LABEL_WIDTH = 112
-"""px of a field's name at most (longer ones wrap): with FIELD_WIDTH, the form leaves both
-gears' columns room beside it at 1280 × 720 in English."""
-SHIFT_FIELDS = ("x1", "x2", "centre")
-SHOWN_DIGITS = 7
-"""Significant digits a shift field shows of a value it did not get typed (the pair's, carried
-over or derived): 0.4151111 and 162.1049 fit FIELD_WIDTH; the exact value is its tooltip,
-and the model keeps it."""
 ORDER = ("z1", "z2", "module", "mode", "x1", "x2", "centre", "pressure_angle", "addendum",
          "clearance", "tip_limit", "contact_limit")
 
@@ -49,24 +39,19 @@ class GearForm(QWidget):
         self.fields = {name: NumberField(unit) for name, unit in UNITS.items()}
         for field in self.fields.values():
             field.edit.setMinimumWidth(64)
-            field.edit.setMaximumWidth(FIELD_WIDTH)
-            field.unit.setMinimumWidth(0)       # "mm", "°", "× m": the form narrow enough that
-            # both gears' columns fit beside it at 1280 × 720
+            field.edit.setMaximumWidth(90)
         self.module = QComboBox(self)
         self.module.setEditable(True)
         self.module.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
         for m in FIRST_SERIES_MM:
             self.module.addItem(exact_number(m))
-        self.module.setMaximumWidth(FIELD_WIDTH)
+        self.module.setMaximumWidth(90)
         self.mode = QComboBox(self)
         self.mode.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
-        self.mode.setMinimumContentsLength(10)      # the longest choice is shown when the list opens
+        self.mode.setMinimumContentsLength(12)      # the longest choice is shown when the list opens
         for mode in MODES:
             self.mode.addItem("", mode)
         self._labels = {name: QLabel(self) for name in ORDER}
-        for label in self._labels.values():     # a long name on two lines, not a wider form
-            label.setWordWrap(True)
-            label.setMaximumWidth(LABEL_WIDTH)
         layout = QFormLayout()
         for name in ORDER:
             widget = {"module": self.module, "mode": self.mode}.get(name) or self.fields[name]
@@ -90,7 +75,6 @@ class GearForm(QWidget):
         gear_model.typedChanged.connect(self._show_typed)
         gear_model.errorChanged.connect(self._show_error)
         gear_model.pairChanged.connect(self._show_note)
-        gear_model.pairChanged.connect(self._show_typed)     # the greyed fields follow the pair
         self.retranslate()
         self._show_typed()
 
@@ -98,7 +82,6 @@ class GearForm(QWidget):
         names = field_names()
         for name, label in self._labels.items():
             label.setText(names[name])
-            label.setMinimumWidth(min(label.fontMetrics().horizontalAdvance(names[name]) + 2, LABEL_WIDTH))
         texts = {"auto": self.tr("automatic (the rule)"), "shifts": self.tr("shift factors x1, x2"),
                  "centre": self.tr("centre distance a′")}
         for i in range(self.mode.count()):
@@ -130,44 +113,20 @@ class GearForm(QWidget):
         self.commit()
         self._model.set_mode(self.mode.currentData())
 
-    def shown_values(self) -> dict:
-        """What each number field stands for: the typed value, and for the shift fields its
-        mode does not use (greyed) the pair on screen's, the pair the tables show (when the
-        typed pair is refused, the last valid one)."""
-        values = self._model.typed.dict
-        pair = self._model.pair
-        derived = {"x1": pair.gear1.shift, "x2": pair.gear2.shift, "centre": pair.centre_mm}
-        return {name: derived[name] if name in derived and name not in MODE_FIELDS[values["mode"]]
-                else values[name] for name in self.fields}
-
     def _show_typed(self) -> None:
         values = self._model.typed.dict
-        for name, value in self.shown_values().items():
-            if name in self._pending:
-                continue
-            if name in SHIFT_FIELDS and not isinstance(value, str):
-                self._show_rounded(name, value)
-            else:
-                self.fields[name].set_value(value)
+        for name, field in self.fields.items():
+            if name not in self._pending:
+                field.set_value(values[name])
         if "module" not in self._pending:
             value = values["module"]
             if isinstance(value, str) or parse_number(self.module.currentText()) != value:
                 self.module.setEditText(value if isinstance(value, str) else exact_number(value))
         mode = values["mode"]
         self.mode.setCurrentIndex(self.mode.findData(mode))
-        for name in SHIFT_FIELDS:
+        for name in ("x1", "x2", "centre"):
             self.fields[name].setEnabled(name in MODE_FIELDS[mode])
             self.fields[name].edit.setCursorPosition(0)     # a long carried-over value from its start
-
-    def _show_rounded(self, name: str, value: float) -> None:
-        """``value`` in field ``name`` rounded to SHOWN_DIGITS, unless its text already means
-        it (a value as typed stays as typed); the exact value as its tooltip. A field's text
-        is sent to the model only when typed into, so the rounding never replaces the value."""
-        edit = self.fields[name].edit
-        edit.setToolTip(exact_number(value))
-        rounded = f"{value:.{SHOWN_DIGITS}g}"
-        if parse_number(edit.text()) != value and edit.text() != rounded:
-            edit.setText(rounded)
 
     def _show_note(self) -> None:
         """The core's note when the module of the pair on screen is not of the first series."""
@@ -196,4 +155,3 @@ class GearForm(QWidget):
     def marked_fields(self) -> list[str]:
         marked = [name for name, f in self.fields.items() if f.edit.styleSheet()]
         return (["module"] if self.module.styleSheet() else []) + marked
-

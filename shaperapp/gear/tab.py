@@ -25,18 +25,16 @@ SHEET_SUFFIXES = (".pdf", ".svg", ".dxf")
 
 
 class TablesArea(QScrollArea):
-    """The results' scroll area, never narrower than the per-gear table with both gears'
-    columns whole (``ResultTable.whole_width``): a plain area cut their right edge at
-    1280 × 720, and a pinion of 13 teeth read "1"; an area one column wide hid "Gear 2"
-    behind the table's own scroll bar, which sat below the area's fold."""
+    """The results' scroll area, never narrower than the tables' least width (row titles
+    and one column, ``ResultTable.minimumSizeHint``), so that the tables scroll their
+    columns whole: a plain area cut their right edge at 1280 × 720, and a pinion of 13
+    teeth read "1"."""
 
     def minimumSizeHint(self):  # noqa: N802 - Qt's name
         hint = super().minimumSizeHint()
-        results = self.widget()
-        if results is not None:
-            need = max(results.minimumSizeHint().width(), results.gears.whole_width())
-            hint.setWidth(max(hint.width(), need + self.verticalScrollBar().sizeHint().width()
-                              + 2 * self.frameWidth()))
+        if self.widget() is not None:
+            hint.setWidth(max(hint.width(), self.widget().minimumSizeHint().width()
+                              + self.verticalScrollBar().sizeHint().width() + 2 * self.frameWidth()))
         return hint
 
 

@@ -11,7 +11,6 @@ from PySide6.QtCore import QCoreApplication
 
 from core.errors import DesignError
 from core.gear import Check
-from core.gear.advice import Move
 from shaperapp.widgets.messages import allowed_text, field_name
 
 translate = QCoreApplication.translate
@@ -106,23 +105,9 @@ def check_name(check: Check) -> str:
     return translate("GearMessages", "No interference at the root of gear %1").replace("%1", k)
 
 
-def move_words(move: Move) -> str:
-    """One change of ``core.gear.advice`` (``advice.move_text``) in the UI's language."""
-    if move.name in ("x1", "x2"):
-        text = (translate("GearMessages", "raise %1") if move.sign > 0
-                else translate("GearMessages", "lower %1"))
-        return text.replace("%1", move.name)
-    if move.name == "centre":
-        return (translate("GearMessages", "a larger a′") if move.sign > 0
-                else translate("GearMessages", "a smaller a′"))
-    return (translate("GearMessages", "x1 + δ and x2 − δ at the same a′") if move.sign > 0
-            else translate("GearMessages", "x1 − δ and x2 + δ at the same a′"))
-
-
 def check_advice(check: Check) -> str:
     """What to change when ``check`` fails ('' when it passes): core's advice, the same
-    words in English (``Check.advice``), rebuilt from the changes it names (``check.moves``)
-    in the UI's language."""
+    words in English (``Check.advice``), in the UI's language."""
     if check.ok:
         return ""
     k = check.name[-1]
@@ -131,20 +116,13 @@ def check_advice(check: Check) -> str:
         return translate("GearMessages", "raise x%1 to ≥ %2 (or give gear %1 more teeth)").replace(
             "%1", k).replace("%2", f"{check.limit:.4f}")
     if check.name.startswith("tip"):
-        problem = translate("GearMessages", "the tip of gear %1 is too thin").replace("%1", k)
-    elif check.name == "contact":
-        problem = translate("GearMessages", "ε is too small")
-    else:
-        problem = translate("GearMessages", "the tip of gear %2 digs into the root of gear %1").replace(
-            "%1", k).replace("%2", other)
-    if check.moves:
-        changes = move_words(check.moves[0])
-        for move in check.moves[1:]:
-            changes = translate("GearMessages", "%1 or %2").replace("%1", changes).replace(
-                "%2", move_words(move))
-    else:
-        changes = translate("GearMessages", "no small change of the shifts or of a′ helps: try other teeth")
-    return translate("messages", "%1: %2").replace("%1", problem).replace("%2", changes)
+        return translate("GearMessages", "the tip of gear %1 is too thin: lower x%1 (or the centre "
+                         "distance)").replace("%1", k)
+    if check.name == "contact":
+        return translate("GearMessages", "ε is too small: give more teeth, less shift or a smaller "
+                         "centre distance")
+    return translate("GearMessages", "the tip of gear %2 digs into the root of gear %1: raise x%1, "
+                     "lower x%2 or shorten the addendum").replace("%1", k).replace("%2", other)
 
 
 def mode_text(mode: str) -> str:

@@ -47,7 +47,6 @@ class ResultTable(QTableWidget):
         self._wrap_width = -1               # px the shown titles are wrapped to (-1: not wrapped)
         self._pinned = 0                    # px the column titles are moved down (pin_header)
         self._least_column = 0              # px the first column's texts need (set by _fit)
-        self._widths: list[int] = []        # px each column's texts need (set by _fit)
         # The owner's hook to bring content it fills lazily up to date before a copy.
         self.before_read: Callable[[], None] = lambda: None
         self.copy_action = QAction(self)
@@ -115,11 +114,10 @@ class ResultTable(QTableWidget):
                 width = max(width, metrics.horizontalAdvance(self.text(row, col)) + CELL_PADDING)
             widths.append(width)
         self._least_column = widths[0] if widths else 0   # the first column's own need
-        self._widths = widths
         self._wrap_titles(widths)
         room = self.width() - 2 * self.frameWidth() - self.verticalHeader().sizeHint().width()
         spare = room - sum(widths)
-        if widths and spare >= 0:
+        if widths and spare > 0:
             widths = [w + spare // len(widths) for w in widths]
             widths[-1] += spare - (spare // len(widths)) * len(widths)
         elif widths:
@@ -201,10 +199,6 @@ class ResultTable(QTableWidget):
         first = min(self._least_column, self.horizontalHeader().sectionSize(0)) if self.columnCount() else 0
         hint.setWidth(self.verticalHeader().sizeHint().width() + min(first, 120) + 2 * self.frameWidth())
         return hint
-
-    def whole_width(self) -> int:
-        """px the table needs to show every column whole beside its row titles, unscrolled."""
-        return self.verticalHeader().sizeHint().width() + sum(self._widths) + 2 * self.frameWidth()
 
     def hidden_rows(self) -> list[int]:
         """Rows not wholly inside the table's own viewport (none, by construction)."""
