@@ -17,6 +17,7 @@ import os
 from PySide6.QtCore import QCoreApplication, QSettings, Qt
 from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox, QProgressDialog, QWidget
 
+from core.cli.allocator import return_freed_memory
 from core.course import CourseError, plan_course
 from core.design_file import parse_design
 from core.io import design_document
@@ -112,6 +113,7 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
     finally:
         files.close()
         progress.close()
+        return_freed_memory()           # the sheets' and the report's arrays, freed by now
     if written:
         failure += " " + translate("CourseExport", "The %1 files written before it are complete.").replace(
             "%1", str(len(written)))

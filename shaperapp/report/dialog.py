@@ -18,6 +18,7 @@ from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
                                QFormLayout, QLineEdit, QMessageBox, QSpinBox, QWidget)
 
+from core.cli.allocator import return_freed_memory
 from core.cam.file import cam_from_dict
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
@@ -152,7 +153,11 @@ def export_report(model: DesignModel, path: str, language: str, options: Options
         options = replace(options, gear=gear)
     report = build(model.valid_spec, list(model.rpms), masses, name or design_name(model),
                    date or datetime.date.today().isoformat(), language, options)
-    return write_report(report, path)
+    try:
+        return write_report(report, path)
+    finally:
+        del report
+        return_freed_memory()           # the report's figures and pages, freed now (issue 42)
 
 
 def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,

@@ -254,6 +254,9 @@ def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.n
     return np.stack([s + enter[keep, None] * d, s + leave[keep, None] * d], axis=1)
 
 
+BURN_POINTS = 500_000     # samples of segments burnt into a raster at a time (16 B each, and temporaries)
+
+
 class Raster:
     """Lines that stay put burnt into a grid of cells (about a pixel each) with its summed
     table, so that any number of candidate boxes is checked against them in a few array
@@ -279,12 +282,28 @@ class Raster:
         if len(ends):
             d = ends[:, 1] - ends[:, 0]
             count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
-            first = np.repeat(np.cumsum(count) - count, count)
-            t = (np.arange(count.sum()) - first) / np.repeat(np.maximum(count - 1, 1), count)
-            pts = np.repeat(ends[:, 0], count, axis=0) + t[:, None] * np.repeat(d, count, axis=0)
-            ix = np.clip(((pts[:, 0] - self.left) / self.cell).astype(int), 0, self.nx - 1)
-            iy = np.clip(((pts[:, 1] - self.bottom) / self.cell).astype(int), 0, self.ny - 1)
-            self._grid[iy, ix] = True
+            # in batches of about BURN_POINTS samples: a design of 16 speeds at 0.1° sweeps
+            # so many segments that their samples at once took 230 MB (issue 42: the GUI
+            # peaked over 600 MB opening it)
+            batch = np.searchsorted(np.cumsum(count), np.arange(1, count.sum() // BURN_POINTS + 1)
+                                    * BURN_POINTS)
+            for part in np.split(np.arange(len(count)), np.unique(batch[batch < len(count)])):
+                if part.size:
+                    self._burn_samples(ends[part, 0], d[part], count[part])
+        # the summed table in place, along the rows first (contiguous) and then adding row to
+        # row: exact integers as before, a quarter of the time on a large grid
+        table = self._sat[1:, 1:]
+        np.cumsum(self._grid, axis=1, dtype=np.int32, out=table)
+        np.cumsum(table, axis=0, out=table)
+
+    def _burn_samples(self, start: np.ndarray, d: np.ndarray, count: np.ndarray) -> None:
+        """Mark the cells of ``count`` evenly spaced samples along each segment start + t·d."""
+        first = np.repeat(np.cumsum(count) - count, count)
+        t = (np.arange(count.sum()) - first) / np.repeat(np.maximum(count - 1, 1), count)
+        pts = np.repeat(start, count, axis=0) + t[:, None] * np.repeat(d, count, axis=0)
+        ix = np.clip(((pts[:, 0] - self.left) / self.cell).astype(int), 0, self.nx - 1)
+        iy = np.clip(((pts[:, 1] - self.bottom) / self.cell).astype(int), 0, self.ny - 1)
+        self._grid[iy, ix] = True
         # the summed table in place, along the rows first (contiguous) and then adding row to
         # row: exact integers as before, a quarter of the time on a large grid
         table = self._sat[1:, 1:]

@@ -204,15 +204,6 @@ def test_a_changed_constraint_is_refused_and_named_by_check(tmp_path, case):
     assert digest(path) == before
 
 
-def test_a_partial_index_of_ours_is_refused(tmp_path):
-    path = tmp_path / "L.sqlite"
-    make_library(path)
-    alter(path, "DROP INDEX speeds_by_rpm", "CREATE UNIQUE INDEX speeds_by_rpm ON speeds(entry_id, rpm) WHERE pos > 0")
-    with pytest.raises(LibraryError) as caught:
-        Library(path)
-    assert caught.value.objects == ("a changed index speeds_by_rpm on speeds",)
-
-
 def test_layout_comments_and_quotes_of_a_statement_do_not_refuse_it(tmp_path):
     """What the statement says is compared, not how it is written."""
     path = tmp_path / "L.sqlite"
