@@ -214,7 +214,7 @@ def run(args: argparse.Namespace) -> int:
     names = list(varied)
     option = lambda parameter: spec_option(parameter, spec, args)  # noqa: E731
     size = next(iter(values.values())).size
-    with Progress(f"sweeping {size} designs", size, lines=args.progress) as progress:
+    with Progress(f"sweeping {size} designs", size, lines=args.progress, log=True) as progress:
         pieces = _pieces(spec, values, names, rpms, masses, as_json=args.json, option=option,
                          progress=progress.update)
         if args.json:                           # JSON goes to stdout block by block

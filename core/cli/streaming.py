@@ -37,14 +37,15 @@ LOG_EVERY = 5.0          # seconds between progress lines when stderr is not a t
 class Progress:
     """Progress of long work on stderr. On a terminal: ``shaper: LABEL 42%``, rewritten in
     place once a run has taken longer than ``delay`` seconds, erased on the way out (used
-    as a context manager), before any error message is printed. Elsewhere (a log, a pipe):
-    a whole line ``shaper: LABEL 42% after 15 s`` every ``LOG_EVERY`` seconds once the run
-    has taken that long, so a log keeps it (issue 42: a 12-minute sweep said nothing).
+    as a context manager), before any error message is printed. Elsewhere (a log, a pipe),
+    with ``log``: a whole line ``shaper: LABEL 42% after 15 s`` every ``LOG_EVERY`` seconds
+    once the run has taken that long, so a log keeps it (issue 42: a 12-minute sweep said
+    nothing); without it, nothing (``curves``' tables promise a quiet stderr there).
     ``lines`` (``--progress``) asks for those lines from the start, at most one a second,
     and a last one at 100%, on a terminal too."""
 
     def __init__(self, label: str, total: int, delay: float = 1.0,
-                 stream: TextIO | None = None, lines: bool = False) -> None:
+                 stream: TextIO | None = None, lines: bool = False, log: bool = False) -> None:
         self.label, self.total, self.delay = label, max(int(total), 1), delay
         self.stream = sys.stderr if stream is None else stream
         self.start = time.monotonic()
@@ -55,7 +56,7 @@ class Progress:
             self.in_place = bool(self.stream.isatty()) and not lines
         except (AttributeError, ValueError, OSError):
             self.in_place = False
-        self.enabled = True
+        self.enabled = self.in_place or lines or log
         self.printed = -1           # the work done when the last line was printed
 
     def __enter__(self) -> "Progress":

@@ -63,7 +63,7 @@ def test_long_work_reports_progress_in_lines_a_log_keeps(monkeypatch):
     clock = iter([0.0, 1.0, 6.0, 7.0, 12.0, 13.0, 14.0])
     monkeypatch.setattr(streaming.time, "monotonic", lambda: next(clock))
     log = io.StringIO()
-    with streaming.Progress("sweeping", 100, stream=log) as bar:      # starts at 0 s
+    with streaming.Progress("sweeping", 100, stream=log, log=True) as bar:      # starts at 0 s
         for done in (10, 40, 50, 70, 90):                              # at 1, 6, 7, 12, 13 s
             bar.update(done)
     lines = log.getvalue().splitlines()
