@@ -106,3 +106,28 @@ def test_cli_sweep_100489_rod_designs_to_csv(benchmark, tmp_path):
     cmd = ([exe] if exe else [sys.executable, "-m", "core"]) + SWEEP_1E5 + ["--csv", str(tmp_path / "s.csv")]
     benchmark.pedantic(subprocess.run, args=(cmd,), kwargs={"check": True}, rounds=3, iterations=1)
     assert sum(1 for _ in (tmp_path / "s.csv").open()) == 1 + 317 * 317
+
+
+def _row_times(spec, values, rpms, masses):
+    """Seconds per design of the sweep without and with loads (one run each, fresh)."""
+    import time
+    start = time.perf_counter()
+    evaluate(spec, values, rpms)
+    plain = time.perf_counter() - start
+    start = time.perf_counter()
+    evaluate(spec, values, rpms, masses)
+    loaded = time.perf_counter() - start
+    return plain / values[next(iter(values))].size, loaded / values[next(iter(values))].size
+
+
+def test_loaded_row_against_unloaded_row(benchmark):
+    """Issue 42, item 12: a loaded sweep row against an unloaded one (2000 rod designs, one
+    speed). ``-s`` prints the times; the figures are in docs/performance.md."""
+    masses = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                            cut_force_N=7000.0, cut_height_mm=80.0)
+    values = _values(2000, rod=True)
+    plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD, values, [40.0], masses),
+                                       rounds=1, iterations=1)
+    print(f"\nunloaded {plain * 1e6:.0f} µs/row, loaded {loaded * 1e6:.0f} µs/row, "
+          f"ratio {loaded / plain:.0f}")
+    assert loaded / plain < 100          # 215× before the sweep's coarser bracketing grid

@@ -11,6 +11,7 @@ import itertools
 import os
 import re
 import stat
+import sys
 import time
 from typing import Iterable
 
@@ -199,6 +200,35 @@ def _descriptor_alias(path: str | os.PathLike) -> bool:
             return False
         current = os.path.join(os.path.dirname(current), os.readlink(current))
     return False
+
+
+# Linux's inode flags (ioctl FS_IOC_GETFLAGS, <linux/fs.h>): a file that is immutable
+# (chattr +i) or append-only (chattr +a) cannot be replaced by a rename, even by root.
+_FS_IOC_GETFLAGS = 0x80086601
+_UNREPLACEABLE = {0x00000010: "it is immutable (chattr +i)", 0x00000020: "it is append-only (chattr +a)"}
+
+
+def replace_refusal(path: str | os.PathLike) -> str | None:
+    """Why :func:`atomic_write` could not replace the existing file ``path`` (its inode
+    flags say immutable or append-only), or None: found before the first of several
+    files is written, so a run that would fail on the second writes nothing (issue 42:
+    ``course`` wrote 00-report.pdf, then failed on an immutable 01-motion.pdf). None too
+    where the system cannot tell (not Linux, a file system without the flags)."""
+    if not sys.platform.startswith("linux"):
+        return None
+    try:
+        import fcntl
+        import struct
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_NOCTTY", 0))
+    except (OSError, ImportError):
+        return None
+    try:
+        flags = struct.unpack("i", fcntl.ioctl(fd, _FS_IOC_GETFLAGS, b"\0" * 4))[0]
+    except OSError:
+        return None
+    finally:
+        os.close(fd)
+    return next((why for bit, why in _UNREPLACEABLE.items() if flags & bit), None)
 
 
 def temp_pattern(target: str | os.PathLike) -> re.Pattern[str]:

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Collection, Mapping
 
+from .atomic import replace_refusal
 from .design_file import parse_design, read_limited   # its bounded, non-blocking read
 from .errors import DesignError, WriteError, os_reason
 
@@ -187,6 +188,9 @@ def check_folder(folder: str, paths: list[str]) -> None:
         status = _status(folder, Path(path))
         if status is not None and stat.S_ISDIR(status.st_mode):
             raise CourseError("--output", f"cannot write {path}: it is a folder")
+        refusal = replace_refusal(path) if status is not None and stat.S_ISREG(status.st_mode) else None
+        if refusal:
+            raise CourseError("--output", f"cannot replace {path}: {refusal}; nothing was written")
 
 
 def _status(folder: str, path: Path) -> os.stat_result | None:

@@ -167,11 +167,25 @@ def _parse(raw: bytes, name: str, entry: str | None) -> object:
         raise FileFormatError("too_deep", name, MAX_DEPTH, entry=entry)
     try:
         return json.loads(text, parse_constant=_refuse_constant, parse_int=_parse_int,
-                          parse_float=_parse_float)
+                          parse_float=_parse_float, object_pairs_hook=_unique_keys)
     except _Refused as exc:
         raise FileFormatError(exc.reason, name, exc.value, entry=entry) from None
     except (json.JSONDecodeError, ValueError, RecursionError):
         raise FileFormatError("not_json", name, entry=entry) from None
+
+
+def _unique_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """One JSON object as a dict, refused when a key appears twice in it (at any depth):
+    json keeps the last silently, so a file with two "spec" objects (or "z1": 3, "z1": 13)
+    opened as a design its reader never saw (issue 42)."""
+    out = dict(pairs)
+    if len(out) != len(pairs):
+        seen: set[str] = set()
+        for key, _ in pairs:
+            if key in seen:
+                raise _Refused("duplicate_key", json.dumps(key, ensure_ascii=False)[:40])
+            seen.add(key)
+    return out
 
 
 def _refuse_constant(literal: str) -> float:

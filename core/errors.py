@@ -44,6 +44,7 @@ FILE_REASONS = {
     "constant": "{name} is not a design file ({0} is not a number a design may hold)",
     "long_integer": "{name} is not a design file (an integer of {0} digits is too large)",
     "huge_number": "{name} is not a design file ({0} is too large a number)",
+    "duplicate_key": "{name} is not a design file (the key {0} appears twice in one object)",
     "spec_type": "{name}: 'spec' must be an object of design fields",
     "rpm_type": "{name}: 'rpm' must be a list of crank speeds in r/min",
     "rpm_value": "{name}: crank speed {0} is not a number",
@@ -104,10 +105,29 @@ class WriteError(OSError):
         return f"cannot write {self.filename or repr(self.filename)}: {self.strerror}"
 
 
+MAX_VALUE_TEXT = 60      # characters of a value quoted in a message
+
+
+def long_integer_text(value: int) -> str | None:
+    """An integer too long to quote (more than 15 digits: 1e300 in a file became a
+    301-digit int, and the cut message lost its reason) as 1e+300, or as "a 400-digit
+    integer" beyond a float's range; None for a short one, quoted as it is."""
+    digits = len(str(abs(value))) if abs(value) < 10 ** 4000 else None
+    if digits is not None and digits <= 15:
+        return None
+    try:
+        return f"{value:.6g}"
+    except OverflowError:
+        return f"a {digits or 'more than 4000'}-digit integer"
+
+
 def _fmt(value: object) -> str:
     if isinstance(value, float):
         return f"{value:.6g}"
-    return repr(value) if isinstance(value, str) else str(value)
+    if type(value) is int:
+        return long_integer_text(value) or str(value)
+    text = repr(value) if isinstance(value, str) else str(value)
+    return text if len(text) <= MAX_VALUE_TEXT else text[:MAX_VALUE_TEXT - 3] + "..."
 
 
 def require_finite(parameter: str, value: object) -> float:

@@ -8,6 +8,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 from pathlib import Path
 from typing import Any, Iterable, Iterator
 
@@ -62,12 +63,26 @@ FORMULA_LEADS = ("=", "+", "-", "@", "\t", "\r")
 ZERO_ULPS = 64       # a value within this many ulps of its column's largest magnitude is 0
 
 
+# Where a spreadsheet may split one cell into several when it imports (its separator
+# option): a piece after one of these that starts like a formula is one, too (issue 42).
+FIELD_SEPARATORS = re.compile(r"([;,|\t])")
+
+
 def csv_text(text: str) -> str:
     """A cell of text (a design's name, a file name, a note) as every CSV writer here
-    writes it: with a leading ``'`` when it would start a formula (:data:`FORMULA_LEADS`),
-    so a spreadsheet shows it as text, as OWASP advises. Numbers are never passed
-    through this (−2 must stay a number); only text that a user may have typed is."""
-    return "'" + text if text.startswith(FORMULA_LEADS) else text
+    writes it: with a ``'`` before it when it would start a formula (:data:`FORMULA_LEADS`),
+    so a spreadsheet shows it as text, as OWASP advises; and before every piece after a
+    separator a spreadsheet may split on (:data:`FIELD_SEPARATORS`, ``a;=cmd`` is
+    ``a;'=cmd``; spaces before the piece do not hide it), so the cell is guarded as a whole
+    and per name. Numbers are never passed through this (−2 must stay a number); only
+    text that a user may have typed is."""
+    head = "'" if text.startswith(FORMULA_LEADS) else ""
+    pieces = FIELD_SEPARATORS.split(text)
+    for i in range(2 if head else 0, len(pieces), 2):     # the even items are the pieces
+        body = pieces[i].lstrip(" ")
+        if body.startswith(FORMULA_LEADS[:4]):    # = + - @ (a tab or CR is a separator here)
+            pieces[i] = pieces[i][:len(pieces[i]) - len(body)] + "'" + body
+    return head + "".join(pieces)
 
 
 def zero_scale(data: np.ndarray) -> np.ndarray:

@@ -5829,6 +5829,14 @@
         <translation>%1 不是设计文件（数值 %2 过大）</translation>
     </message>
     <message>
+        <source>%1 is not a design file (the key %2 appears twice in one object)</source>
+        <translation>%1 不是设计文件（同一对象中键 %2 出现了两次）</translation>
+    </message>
+    <message>
+        <source>%1 is not one line of text (it holds a control character or a noncharacter)</source>
+        <translation>%1 不是单行文本（含有控制字符或非字符码位）</translation>
+    </message>
+    <message>
         <source>%1: 'spec' must be an object of design fields</source>
         <translation>%1：设计参数须为一组设计字段</translation>
     </message>

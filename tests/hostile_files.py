@@ -21,6 +21,22 @@ VALID = {"format": "shaper-design", "version": 1,
          "rpm": [40.0, 60.0], "step_deg": 1.0}
 
 
+_SPEC_14 = '{"mode": "synthesis", "crank": 100.0, "time_ratio": 1.4, "stroke": 300.0}'
+_SPEC_16 = '{"mode": "synthesis", "crank": 100.0, "time_ratio": 1.6, "stroke": 300.0}'
+_GEAR = '{"z1": 13, "z2": 52, "module_mm": 4}'
+_TAIL = '"rpm": [40, 60], "step_deg": 1'
+# design files each valid but for one key written twice in one object, by that key
+DUPLICATES = {
+    "spec": f'{{"format": "shaper-design", "version": 1, "spec": {_SPEC_14}, "spec": {_SPEC_16}, {_TAIL}}}',
+    "version": f'{{"format": "shaper-design", "version": 1, "version": 1, "spec": {_SPEC_14}, {_TAIL}}}',
+    "time_ratio": ('{"format": "shaper-design", "version": 1, "spec": {"mode": "synthesis", "crank": 100.0, '
+                   f'"time_ratio": 1.4, "time_ratio": 1.6, "stroke": 300.0}}, {_TAIL}}}'),
+    "gear": f'{{"format": "shaper-design", "version": 1, "spec": {_SPEC_14}, {_TAIL}, "gear": {_GEAR}, "gear": {_GEAR}}}',
+    "z1": ('{"format": "shaper-design", "version": 1, "spec": %s, %s, '
+           '"gear": {"z1": 3, "z1": 13, "z2": 52, "module_mm": 4}}' % (_SPEC_14, _TAIL)),
+}
+
+
 def _doc(**changes) -> dict:
     doc = json.loads(json.dumps(VALID))
     for key, value in changes.items():
@@ -203,6 +219,12 @@ CASES: dict[str, Callable[[Path], Path]] = {
     "spec_missing": _json_case(spec=_DROP),
     "spec_list": _json_case(spec=[100, 1.4, 300]),
     "spec_unknown_field": _spec_case(colour="red"),
+    # a key twice in one object: json kept the last silently (issue 42)
+    "duplicate_spec": _text_case(DUPLICATES["spec"]),
+    "duplicate_top_key": _text_case(DUPLICATES["version"]),
+    "duplicate_spec_field": _text_case(DUPLICATES["time_ratio"]),
+    "duplicate_gear": _text_case(DUPLICATES["gear"]),
+    "duplicate_z1": _text_case(DUPLICATES["z1"]),
     "mode_unknown": _spec_case(mode="magic"),
     "k_below_1": _spec_case(time_ratio=0.5),
     "inactive_frame_text": _spec_case(frame="ጼ"),

@@ -53,8 +53,10 @@ def error_names(stderr: str) -> list[str]:
     assert len(lines) == 1, stderr
     assert lines[0].startswith("shaper: error: ") and "Traceback" not in stderr
     message = lines[0][len("shaper: error: "):]
-    if message.startswith(("unrecognized arguments:", "ambiguous option:")) or ": unknown option; " in message:
+    if message.startswith("ambiguous option:") or ": unknown option; " in message \
+            or ": not an argument of 'shaper " in message:
         return []                       # the user's own mistyped word (with a close match)
+    # argparse's "unrecognized arguments: 60" named no option (issue 42): never accepted
     if message.startswith("argument "):
         head = re.match(r"argument (\S+?):", message).group(1)
     else:

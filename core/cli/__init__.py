@@ -32,6 +32,7 @@ limit_blas_threads()        # before numpy, which .common imports
 
 from ..errors import DesignError, FileFormatError  # noqa: E402
 from .common import Parser, UsageError, VersionAction, design_error_text, fail  # noqa: E402
+from .common import _NEGATIVE_NUMBER as _NEGATIVE  # noqa: E402  (argparse's idea of a number)
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output  # noqa: E402
 
 # Order is the order of ``shaper --help``.
@@ -82,15 +83,40 @@ def build_parser(modules: dict[str, ModuleType] | None = None) -> argparse.Argum
     return parser
 
 
-def _options(parser: argparse.ArgumentParser, argv: Sequence[str]) -> tuple[str, list[str]]:
-    """The (sub)command named in ``argv`` ("library add") and its option strings."""
+def _command_parser(parser: argparse.ArgumentParser,
+                    argv: Sequence[str]) -> tuple[str, argparse.ArgumentParser]:
+    """The (sub)command named in ``argv`` ("library add") and its parser."""
     for action in parser._actions:
         if isinstance(action, argparse._SubParsersAction):
             for i, word in enumerate(argv):
                 if word in action.choices:
-                    name, options = _options(action.choices[word], argv[i + 1:])
-                    return f"{word} {name}".strip(), options
-    return "", [s for action in parser._actions for s in action.option_strings]
+                    name, sub = _command_parser(action.choices[word], argv[i + 1:])
+                    return f"{word} {name}".strip(), sub
+    return "", parser
+
+
+def _options(parser: argparse.ArgumentParser, argv: Sequence[str]) -> tuple[str, list[str]]:
+    """The (sub)command named in ``argv`` ("library add") and its option strings."""
+    name, sub = _command_parser(parser, argv)
+    return name, [s for action in sub._actions for s in action.option_strings]
+
+
+def _stray_word(word: str, parser: argparse.ArgumentParser, argv: Sequence[str]) -> str:
+    """argparse's "unrecognized arguments: 60" said as the option it follows, which took
+    what it takes and left ``word`` over ('--rpm: takes one value, so '60' is left over'),
+    or, when no option comes before it, as the word itself."""
+    command, sub = _command_parser(parser, argv)
+    hint = f"see 'shaper {command} --help'".replace("  ", " ")
+    before = list(argv[:len(argv) - 1 - list(reversed(argv)).index(word)]) if word in argv else []
+    option = next((w.split("=", 1)[0] for w in reversed(before)
+                   if w.startswith("-") and not _NEGATIVE.match(w)), None)
+    action = next((a for a in sub._actions if option in a.option_strings), None) if option else None
+    if action is None or option is None:
+        return f"{word!r}: not an argument of 'shaper {command}'; {hint}".replace("  ", " ")
+    count = action.nargs
+    takes = ("no value" if count == 0 else "one value" if count in (None, "?") else
+             f"{count} values" if isinstance(count, int) else "values")
+    return f"{option}: takes {takes}, so {word!r} is left over; {hint}"
 
 
 def close_match(word: str, choices: Sequence[str]) -> str | None:
@@ -108,8 +134,10 @@ def with_suggestion(message: str, parser: argparse.ArgumentParser, argv: Sequenc
     what was probably meant: '--k: unknown option; did you mean --K?'."""
     unknown = re.match(r"unrecognized arguments: (.*)$", message)
     if unknown:
-        word = next((w for w in unknown.group(1).split() if w.startswith("-")), "")
+        word = next((w for w in unknown.group(1).split() if w.startswith("-") and not _NEGATIVE.match(w)), "")
         name = word.split("=", 1)[0]
+        if not name and unknown.group(1).split():
+            return _stray_word(unknown.group(1).split()[0], parser, argv)
         if name:
             command, options = _options(parser, list(argv))
             match = close_match(name, options)

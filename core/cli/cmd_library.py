@@ -26,6 +26,7 @@ from ..compare import value_text
 from ..errors import FileFormatError, os_reason
 from ..figures import DESIGN_FIGURES, SPEED_FIGURES
 from ..kinematics import check_rpms, crank_angles
+from ..text import terminal_text
 from ..library import Entry, Library
 from .cmd_library_check import check_options, run_check
 from .cmd_library_compare import compare_options, run_compare
@@ -155,6 +156,8 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
     name that is missing, ``--library`` for the file); returns the exit status."""
     if exc.kind == "tag":
         return fail(f"--tags: {exc}")
+    if exc.kind == "notes":
+        return fail(f"--notes: {exc}")
     if exc.kind in ("name", "exists"):
         hint = " (or use --rename-duplicates)" if action == "import" else ""
         return fail(f"{_NAME_ARGUMENT.get(action, name_option)}: {exc}{hint}")
@@ -210,6 +213,7 @@ def _entry_document(entry: Entry) -> dict[str, Any]:
 def _run_show(args: argparse.Namespace) -> int:
     with _open(args, create=False) as lib:
         entry = lib.get(args.name)
+    entry.document()          # a document that cannot be opened is refused, as compare and export do
     if args.json:
         print_json(_entry_document(entry))
         return 0
@@ -222,8 +226,8 @@ def _run_show(args: argparse.Namespace) -> int:
         rows.append(("rod side", f.rod_side))
     rows += [(key, value_text(getattr(f, key))) for key, _, _, _ in DESIGN_FIGURES]
     width = max(len(k) for k, _ in rows)
-    for key, value in rows:
-        print(f"{key:<{width}}  {value}")
+    for key, value in rows:       # the file's texts escaped: an ESC in a note drove the terminal
+        print(f"{key:<{width}}  {terminal_text(value, multi_line=key == 'notes')}")
     for s in f.speeds:
         print(f"\n{s.rpm:g} r/min")
         for key, _, _, _ in SPEED_FIGURES:

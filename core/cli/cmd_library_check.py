@@ -11,6 +11,7 @@ from typing import Callable
 
 from ..library import Library
 from ..library.store import LibraryError
+from ..text import terminal_text
 from .output import print_json
 
 
@@ -43,6 +44,6 @@ def _report(found: list[tuple[str, str]], as_json: bool, summary: str) -> int:
         print_json([{"entry": entry, "problem": why} for entry, why in found])
     else:
         for entry, why in found:
-            print(f"{entry}: {why}")
+            print(terminal_text(f"{entry}: {why}"))
         print(summary)
     return 1 if found else 0

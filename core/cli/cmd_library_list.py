@@ -16,6 +16,7 @@ from core.library.query import QueryError, parse_filter, sort_sql
 
 from ..figures import FIGURES_VERSION
 from ..library import Library
+from ..text import terminal_text
 from .common import UsageError, library_path, number, whole_number
 from .output import print_json
 
@@ -71,7 +72,7 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         return 0
     with open_library(args, create=False) as lib:
         rows = lib.query(args.where, search=args.search, sort=args.sort, descending=args.desc,
-                         rpm=rpm, limit=limit)
+                         rpm=rpm, limit=limit, documents=True)
     stale = sum(1 for row in rows if row["figures_version"] is not None
                 and row["figures_version"] < FIGURES_VERSION)
     if stale:
@@ -90,7 +91,7 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         return 0
     cells = [[head for head, _, _ in LIST_COLUMNS]]
     for row in rows:
-        cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else str(row[key])
+        cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else terminal_text(str(row[key]))
                       for _, key, fmt in LIST_COLUMNS])
         if row["damaged"]:
             cells[-1][0] += " (damaged)"

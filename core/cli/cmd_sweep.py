@@ -18,6 +18,7 @@ from .common import (add_design_options, add_load_options, add_speed_options, de
 from .loads import loads_given, masses_from_args
 from .allocator import keep_freed_memory
 from .output import write_output
+from .streaming import Progress
 
 HELP = "figures of many designs over varied parameters"
 DESCRIPTION = ("Vary one or more design parameters over a range and report, for every combination, "
@@ -41,10 +42,14 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out = parser.add_mutually_exclusive_group()
     out.add_argument("--csv", metavar="FILE|-", help="write CSV to FILE or stdout (the default)")
     out.add_argument("--json", action="store_true", help="print JSON, one object per design")
+    parser.add_argument("--progress", action="store_true",
+                        help="print a progress line on stderr at most every second, and one at the end "
+                             "(without it: a line every 5 s when stderr is not a terminal)")
 
 
 BLOCK = 50_000          # designs evaluated and formatted at a time, at most
 BLOCK_CELLS = 400_000   # output cells (designs × columns) formatted at a time, at most
+LOADED_BLOCK = 2_000    # designs per block with loads (about 1 ms each): progress every few seconds
 
 
 def block_size(names: list[str], rpms, masses) -> int:
@@ -52,7 +57,7 @@ def block_size(names: list[str], rpms, masses) -> int:
     text of a block (a Python string per cell while it is formatted) stays a few tens of MB."""
     per_speed = 3 + (3 if masses is not None else 0)
     columns = len(names) + 6 + per_speed * max(len(list(rpms)), 1)
-    return min(BLOCK, max(1_000, BLOCK_CELLS // columns))
+    return min(BLOCK if masses is None else LOADED_BLOCK, max(1_000, BLOCK_CELLS // columns))
 
 
 def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tuple]:
@@ -208,19 +213,24 @@ def run(args: argparse.Namespace) -> int:
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
     names = list(varied)
     option = lambda parameter: spec_option(parameter, spec, args)  # noqa: E731
-    pieces = _pieces(spec, values, names, rpms, masses, as_json=args.json, option=option)
-    if args.json:                           # JSON goes to stdout block by block
-        for piece in pieces:
-            sys.stdout.write(piece)
-    else:                                   # CSV: stdout, or a file written as it streams
-        write_output("--csv", args.csv or "-", pieces)
+    size = next(iter(values.values())).size
+    with Progress(f"sweeping {size} designs", size, lines=args.progress, log=True) as progress:
+        pieces = _pieces(spec, values, names, rpms, masses, as_json=args.json, option=option,
+                         progress=progress.update)
+        if args.json:                           # JSON goes to stdout block by block
+            for piece in pieces:
+                sys.stdout.write(piece)
+        else:                                   # CSV: stdout, or a file written as it streams
+            write_output("--csv", args.csv or "-", pieces)
     return 0
 
 
 def _pieces(spec: Spec, values: dict[str, np.ndarray], names: list[str], rpms, masses,
-            as_json: bool, option: Callable[[str], str] = option_name) -> Iterator[str]:
+            as_json: bool, option: Callable[[str], str] = option_name,
+            progress: Callable[[int], None] | None = None) -> Iterator[str]:
     """The output text, one block of designs at a time (:func:`block_size`): memory is bounded
-    by the block (its figures and its text), not by the number of designs or speeds."""
+    by the block (its figures and its text), not by the number of designs or speeds.
+    ``progress(designs done)`` is called after each block."""
     size = next(iter(values.values())).size
     step = block_size(names, rpms, masses)
     for start in range(0, size, step):
@@ -231,5 +241,7 @@ def _pieces(spec: Spec, values: dict[str, np.ndarray], names: list[str], rpms, m
         else:
             yield (csv_header(names, ev) if start == 0 else "") + csv_rows(names, block, ev, option)
         del ev
+        if progress is not None:
+            progress(min(start + step, size))
     if as_json:
         yield "\n]\n"

@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DesignError
+from ..errors import DesignError, long_integer_text
 from ..geometry import Design
 from ..io import load_design
 from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
@@ -278,6 +278,8 @@ def given_text(value: object) -> str:
     if isinstance(value, float):
         text = repr(value)
         return text[:-2] if text.endswith(".0") else text
+    if type(value) is int:
+        return long_integer_text(value) or str(value)
     return str(value)
 
 

@@ -31,45 +31,73 @@ SHARED_ANGLES = 4_096    # a block shared with a child: its text (~0.3 MB) fits 
 TableBlock = Callable[[np.ndarray, float], "tuple[Sequence[str], np.ndarray]"]
 
 
+LOG_EVERY = 5.0          # seconds between progress lines when stderr is not a terminal
+
+
 class Progress:
-    """``shaper: LABEL 42%`` on stderr, rewritten in place, once a run has taken longer
-    than ``delay`` seconds — and only if stderr is a terminal, so that logs and
-    pipes never see it. Used as a context manager, it erases its line on the
-    way out, before any error message is printed."""
+    """Progress of long work on stderr. On a terminal: ``shaper: LABEL 42%``, rewritten in
+    place once a run has taken longer than ``delay`` seconds, erased on the way out (used
+    as a context manager), before any error message is printed. Elsewhere (a log, a pipe),
+    with ``log``: a whole line ``shaper: LABEL 42% after 15 s`` every ``LOG_EVERY`` seconds
+    once the run has taken that long, so a log keeps it (issue 42: a 12-minute sweep said
+    nothing); without it, nothing (``curves``' tables promise a quiet stderr there).
+    ``lines`` (``--progress``) asks for those lines from the start, at most one a second,
+    and a last one at 100%, on a terminal too."""
 
     def __init__(self, label: str, total: int, delay: float = 1.0,
-                 stream: TextIO | None = None) -> None:
+                 stream: TextIO | None = None, lines: bool = False, log: bool = False) -> None:
         self.label, self.total, self.delay = label, max(int(total), 1), delay
         self.stream = sys.stderr if stream is None else stream
         self.start = time.monotonic()
         self.last = 0.0
         self.shown = False
+        self.forced = lines
         try:
-            self.enabled = bool(self.stream.isatty())
+            self.in_place = bool(self.stream.isatty()) and not lines
         except (AttributeError, ValueError, OSError):
-            self.enabled = False
+            self.in_place = False
+        self.enabled = self.in_place or lines or log
+        self.printed = -1           # the work done when the last line was printed
 
     def __enter__(self) -> "Progress":
         return self
 
     def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
                  trace: TracebackType | None) -> None:
-        self.close()
+        self.close(finished=kind is None)
 
     def update(self, done: int) -> None:
         if not self.enabled:
             return
         now = time.monotonic()
-        if now - self.start < self.delay or now - self.last < 0.1:
+        if self.in_place:
+            if now - self.start < self.delay or now - self.last < 0.1:
+                return
+            self.last = now
+            self._write(f"\rshaper: {self.label} {self._percent(done):3d}%")
+            self.shown = True
+            return
+        wait = 1.0 if self.forced else LOG_EVERY
+        if (not self.forced and now - self.start < LOG_EVERY) or (self.last and now - self.last < wait):
             return
         self.last = now
-        self._write(f"\rshaper: {self.label} {min(100, 100 * done // self.total):3d}%")
-        self.shown = True
+        self._line(done, now)
 
-    def close(self) -> None:
+    def _percent(self, done: int) -> int:
+        return min(100, 100 * done // self.total)
+
+    def _line(self, done: int, now: float) -> None:
+        self.printed = done
+        self._write(f"shaper: {self.label} {self._percent(done)}% after {now - self.start:.0f} s\n")
+
+    def close(self, finished: bool = True) -> None:
         if self.shown:
             self._write("\r" + " " * (len(self.label) + 13) + "\r")
             self.shown = False
+        if finished and self.enabled and not self.in_place and (self.forced or self.last) \
+                and self.printed < self.total:
+            self._line(self.total, time.monotonic())
+        self.enabled = False
 
     def _write(self, text: str) -> None:
         try:

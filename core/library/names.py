@@ -10,7 +10,7 @@ import re
 from pathlib import Path
 from typing import Iterable
 
-from core.text import CONTROL
+from core.text import CONTROL, NOTE_FORBIDDEN
 
 from .store import LibraryError
 
@@ -35,7 +35,7 @@ def check_name(name: object) -> str:
     name = lookup_name(name)
     if len(name) > MAX_NAME or CONTROL.search(name):
         raise LibraryError("name", f"a design name must be one line of at most {MAX_NAME} characters, "
-                           "without control characters or line breaks")
+                           "without control characters, noncharacters or line breaks")
     return name
 
 
@@ -55,9 +55,21 @@ def check_tags(tags: Iterable[str]) -> tuple[str, ...]:
             continue
         if len(tag) > MAX_TAG or "," in tag or CONTROL.search(tag):
             raise LibraryError("tag", f"a tag must be at most {MAX_TAG} characters, without "
-                               f"commas, control characters or line breaks (got {tag[:80]!r})")
+                               f"commas, control characters, noncharacters or line breaks (got {tag[:80]!r})")
         out.add(tag)
     return tuple(sorted(out))
+
+
+def check_notes(notes: object) -> str:
+    """Notes as stored: any text of lines (LF or CR LF) and tabs, but no other control
+    character (an ESC sequence retitles or clears the terminal that shows it), no
+    noncharacter, no lone CR; LibraryError('notes') otherwise (issue 42)."""
+    notes = "" if notes is None else str(notes)
+    bad = NOTE_FORBIDDEN.search(notes)
+    if bad:
+        raise LibraryError("notes", "notes may hold line breaks and tabs but no other control "
+                           f"character or noncharacter (got {bad.group()!r} at character {bad.start() + 1})")
+    return notes
 
 
 def unique_name(base: str, taken: Iterable[str]) -> str:

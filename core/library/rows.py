@@ -17,6 +17,7 @@ from functools import lru_cache
 from typing import Any, Callable, Iterable, Iterator, Sequence, TypeVar
 
 from core.figures import DESIGN_KEYS, SPEED_KEYS
+from core.text import CONTROL
 
 T = TypeVar("T")
 
@@ -43,6 +44,7 @@ DAMAGE_TEXTS = {
     "no_document": "there is no design document",
     "document_not_utf8": "the design document is not UTF-8 text",
     "document_refused": "its design document cannot be opened ({cause})",
+    "not_one_line": "{key} is not one line of text (it holds a control character or a noncharacter)",
 }
 
 
@@ -188,15 +190,48 @@ def damaged_entries(conn: sqlite3.Connection, check_document: Callable[[str, str
             entry_id = row[0]
             label = entry_label(entry_id, row[keys.index("name")])
             reason = reason or bad_speeds.get(entry_id) or bad_tags.get(entry_id)
-            if reason is None:
-                try:
-                    check_document(values[keys.index("name")], values[-1])
-                except Exception as exc:          # noqa: BLE001 — any refusal is the reason
-                    reason = Damage("document_refused", cause=exc)
+            reason = (reason or name_damage(values[keys.index("name")])
+                      or document_damage(values[keys.index("name")], values[-1], check_document))
             if reason is not None:
                 out.append((label, reason))
         return out
     return iter(read_lenient(conn, work))
+
+
+def name_damage(name: str) -> Damage | None:
+    """Why ``name`` (a sound text) is no name an entry may have: a line break, ESC or
+    another control character (printed, it broke ``list``'s table and drove the terminal;
+    ``check_name`` refuses them, another program may have written one), or None."""
+    return Damage("not_one_line", "name") if CONTROL.search(name) else None
+
+
+def document_damage(name: str, text: str, check_document: Callable[[str, str], None]) -> Damage | None:
+    """Why the stored design document ``text`` of ``name`` cannot be opened
+    (``check_document`` refuses it), or None."""
+    try:
+        check_document(name, text)
+    except Exception as exc:          # noqa: BLE001 — any refusal is the reason
+        return Damage("document_refused", cause=exc)
+    return None
+
+
+def listed_damage(conn: sqlite3.Connection, ids: Sequence[Any],
+                     check_document: Callable[[str, str], None], chunk: int = 500) -> dict[Any, Damage]:
+    """Entry id → why the entry cannot be shown or opened, for the entries ``ids`` whose
+    stored values have the right types: a name that is not one line, or a design
+    document that cannot be opened. What ``library list`` marks "(damaged)" beside the type
+    checks SQLite makes (issue 42: a list showed such an entry as healthy)."""
+    out: dict[Any, Damage] = {}
+    for start in range(0, len(ids), chunk):
+        part = list(ids[start:start + chunk])
+        for entry_id, name, text in conn.execute(
+                "SELECT e.id, e.name, d.text FROM entries e LEFT JOIN documents d ON d.entry_id = e.id "
+                f"WHERE e.id IN ({', '.join('?' * len(part))})", part):
+            why = (name_damage(name) or _problem("text", text, False)
+                   or document_damage(name, text, check_document))
+            if why is not None:
+                out[entry_id] = why
+    return out
 
 
 def _bad_children(c: sqlite3.Connection, table: str, keys: Sequence[str]) -> dict[Any, str]:

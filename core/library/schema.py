@@ -5,8 +5,9 @@ a trigger added by another program (``AFTER INSERT ON entries BEGIN DELETE …``
 would silently delete designs on our next write, a view or an index on an
 expression runs code on reads. So a file is used only if its objects are exactly
 those the migrations up to its schema version make — each table with the same
-columns (types, NOT NULL, defaults, keys) and foreign keys, each index on the same
-columns — and nothing else. SQLite's own bookkeeping tables (``sqlite_sequence``,
+columns (types, NOT NULL, defaults, keys), foreign keys and constraints (conflict
+clauses, CHECKs, collations: its statement, compared token by token), each index on the
+same columns — and nothing else. SQLite's own bookkeeping tables (``sqlite_sequence``,
 ``sqlite_stat1``…) are allowed; its automatic indexes (``sqlite_autoindex_*``) must
 be exactly the ones the constraints make.
 
@@ -15,6 +16,7 @@ SQL text, so whitespace or comments can never refuse a file the program wrote.
 """
 from __future__ import annotations
 
+import re
 import sqlite3
 from functools import lru_cache
 from typing import Callable, Sequence
@@ -28,13 +30,39 @@ Objects = dict[tuple[str, str], tuple]
 
 def schema_objects(conn: sqlite3.Connection) -> Objects:
     """Every object of the main database as ``{(type, name): what it means}``."""
-    rows = conn.execute("SELECT type, name, tbl_name FROM main.sqlite_master").fetchall()
+    rows = conn.execute("SELECT type, name, tbl_name, sql FROM main.sqlite_master").fetchall()
     out: Objects = {}
-    for kind, name, table in rows:
+    for kind, name, table, sql in rows:
         if kind == "table" and name in _SQLITE_TABLES:
             continue
-        out[(str(kind), str(name))] = _meaning(conn, str(kind), str(name), str(table))
+        meaning = _meaning(conn, str(kind), str(name), str(table))
+        if kind in ("table", "index"):          # a partial index's WHERE is in its statement only
+            meaning += (sql_tokens(sql if isinstance(sql, str) else None),)
+        out[(str(kind), str(name))] = meaning
     return out
+
+
+# One token of SQL: a comment (dropped), a string or blob literal (kept as written), a quoted
+# identifier ("x", [x], `x`: compared unquoted, in lower case), a word or number (lower case),
+# or one other character.
+_TOKEN = re.compile(r"""--[^\n]*|/\*.*?(?:\*/|\Z)|[xX]?'(?:[^']|'')*'|"(?:[^"]|"")*"|\[[^\]]*\]|`(?:[^`]|``)*`"""
+                    r"""|[A-Za-z0-9_$.]+|\S""", re.DOTALL)
+
+
+def sql_tokens(sql: str | None) -> tuple[str, ...]:
+    """The statement ``sql`` as tokens, without its comments, white space, identifier quotes
+    and letter case: what it says, not how it is laid out. The pragmas SQLite offers do
+    not show a table's conflict clauses (``UNIQUE ON CONFLICT REPLACE``, ``NOT NULL ON
+    CONFLICT IGNORE``), CHECK constraints or collations, which change what a write does
+    (issue 42: a library with them passed this check); its statement does."""
+    out = []
+    for token in _TOKEN.findall(sql or ""):
+        if token.startswith(("--", "/*")):
+            continue
+        if token[0] in "\"[`":
+            token = token[1:-1].replace(token[0] * 2, token[0]) if token[0] != "[" else token[1:-1]
+        out.append(token if token[0] in "'xX" and "'" in token else token.lower())
+    return tuple(out)
 
 
 def _meaning(conn: sqlite3.Connection, kind: str, name: str, table: str) -> tuple:

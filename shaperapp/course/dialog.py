@@ -21,6 +21,7 @@ from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFileDialog,
                                QFormLayout, QMessageBox, QWidget)
 
+from core.cli.allocator import return_freed_memory
 from core.course import CourseError, plan_course
 from core.design_file import parse_design
 from core.drawing.sheet import PAPERS
@@ -161,6 +162,8 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
     except Exception as exc:            # never to sys.excepthook: the reason, in a message
         failure = translate("CourseExport", "The course design cannot be made: %1.").replace(
             "%1", failure_reason(exc))
+    finally:
+        return_freed_memory()           # the sheets' and the report's arrays, freed by now
     if written:
         failure += " " + translate("CourseExport", "The %1 files written before it are complete.").replace(
             "%1", str(len(written)))

@@ -48,6 +48,10 @@ class ForcesPanel(QWidget):
         """Write the force plots to ``path`` (PNG, SVG …); see ForcePlots.export_image."""
         self.plots.export_image(path)
 
+    def svg_bytes(self) -> bytes:
+        """The SVG :meth:`export_image` writes, in memory."""
+        return self.plots.svg_bytes()
+
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the force plots into ``target`` of any QPainter (vector output)."""
         self.plots.render(painter, target)

@@ -25,7 +25,7 @@ from PySide6.QtWidgets import (QFrame, QGraphicsView, QHBoxLayout, QMenu, QScrol
                                QToolButton, QVBoxLayout, QWidget)
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.image_export import export_scene, render_scene
+from shaperapp.widgets.image_export import export_scene, render_scene, scene_svg
 from shaperapp.widgets.style import TEXT
 
 from .axes import cache_static, styled_plot_item
@@ -415,6 +415,12 @@ class PlotStack(QWidget):
         self.ensure_current()
         export_scene(self._view.scene(), self._view.ci.sceneBoundingRect(), path,
                      self._export_title(), WHITE, self._caching_off)
+
+    def svg_bytes(self) -> bytes:
+        """The SVG :meth:`export_image` writes, in memory (for the report)."""
+        self.ensure_current()
+        return scene_svg(self._view.scene(), self._view.ci.sceneBoundingRect(), self._export_title(),
+                         WHITE, self._caching_off)
 
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the plots into ``target`` of any painter (PDF, SVG, printer): vectors."""

@@ -43,6 +43,10 @@ class StackView(QWidget):
         at least 1600 px wide; ValueError for an unknown type, OSError for a bad folder."""
         self._stack.export_image(path)
 
+    def svg_bytes(self) -> bytes:
+        """The SVG :meth:`export_image` writes, in memory."""
+        return self._stack.svg_bytes()
+
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the shown plots into ``target`` of any QPainter (vector output)."""
         self._stack.render(painter, target)

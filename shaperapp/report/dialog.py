@@ -17,6 +17,7 @@ from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
                                QFormLayout, QLineEdit, QMessageBox, QSpinBox, QWidget)
 
+from core.cli.allocator import return_freed_memory
 from core.cam.file import cam_from_dict
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
@@ -155,7 +156,11 @@ def export_report(model: DesignModel, path: str, language: str, options: Options
     report = build(model.valid_spec, list(model.rpms), masses, name or design_name(model),
                    date or datetime.date.today().isoformat(), language, options,
                    progress.part(0.0, BUILD_SHARE))
-    return write_report(report, path, progress.part(BUILD_SHARE, 1.0))
+    try:
+        return write_report(report, path, progress.part(BUILD_SHARE, 1.0))
+    finally:
+        del report
+        return_freed_memory()           # the report's figures and pages, freed now (issue 42)
 
 
 def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,

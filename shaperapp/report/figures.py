@@ -10,9 +10,7 @@ from __future__ import annotations
 
 import html
 import math
-import tempfile
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Callable, Sequence
 
 import numpy as np
@@ -236,7 +234,6 @@ class ReportViews:
         self.model = DesignModel()
         self.model.load_state(spec, rpms, step, masses=masses)
         self.metrics = metrics
-        self._dir = tempfile.TemporaryDirectory(prefix="shaper-report-")
         self._widgets: list[QWidget] = []
 
     def _show(self, widget: QWidget, width: int, height: int) -> QWidget:
@@ -246,13 +243,13 @@ class ReportViews:
         self._widgets.append(widget)
         return widget
 
-    def _svg(self, widget, name: str) -> bytes:
+    def _svg(self, widget) -> bytes:
+        """The SVG the widget's export writes, rendered in memory: no temporary folder that
+        a killed run leaves behind, nor a failed write naming a temporary file (issue 42)."""
         # pending layout first (legend rows, group titles): a command-line run has no event
         # loop, and a view exported unlaid-out put its legend on its tick labels
         QCoreApplication.processEvents()
-        path = Path(self._dir.name) / f"{name}.svg"
-        widget.export_image(str(path))
-        return path.read_bytes()
+        return widget.svg_bytes()
 
     def limit_schemes(self, step: Callable[[], None] = lambda: None) -> Paint:
         """Both limit positions side by side at one round scale μ_l, each with the lever's
@@ -269,7 +266,7 @@ class ReportViews:
         for index in (0, self._end_index):
             self.model.set_angle_index(index)
             scheme.fit()
-            svg = self._svg(scheme, f"scheme{index}")
+            svg = self._svg(scheme)
             o4, across = scheme.export_point(0.0, 0.0), scheme.export_point(100.0, 0.0)
             shots.append(SchemeShot(svg, o4, tuple(scheme.export_point(*tip) for tip in tips),
                                     100.0 / (across.x() - o4.x()), QFontInfo(scheme.font()).pixelSize()))
@@ -282,10 +279,10 @@ class ReportViews:
                             math.degrees(design.theta))
 
     def curves(self) -> Paint:
-        return svg_paint([self._svg(self._show(PlotsWidget(self.model), 900, 680), "curves")])
+        return svg_paint([self._svg(self._show(PlotsWidget(self.model), 900, 680))])
 
     def forces(self) -> Paint:
-        return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1450, 1050), "forces")])
+        return svg_paint([self._svg(self._show(ForcesPanel(self.model), 1450, 1050))])
 
     def cam_curves(self, inputs: CamInputs, phase: float | None) -> Paint:
         """The Cam tab's plots of the follower's ψ, ω, α and the pressure angle against the
@@ -313,7 +310,6 @@ class ReportViews:
         # Delete them now: a command-line run has no event loop to do it later, and Qt
         # objects left for interpreter shutdown can outlive the application and crash it.
         QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
-        self._dir.cleanup()
 
 
 def polygon_paint(design: Design, crank_deg: float, rpm: float, masses: MassProperties | None,

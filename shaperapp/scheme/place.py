@@ -254,8 +254,9 @@ def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.n
     return np.stack([s + enter[keep, None] * d, s + leave[keep, None] * d], axis=1)
 
 
-BURN_POINTS = 1 << 20
-"""Samples burnt at once: their arrays are a few tens of MB, whatever the lines."""
+BURN_POINTS = 500_000
+"""Samples burnt at once (16 B each, and temporaries): their arrays are a few tens of MB,
+whatever the lines."""
 
 
 class Raster:

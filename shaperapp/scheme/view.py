@@ -21,7 +21,7 @@ from PySide6.QtWidgets import QGraphicsView, QMenu, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.axes import NavViewBox, unlink_hidden_axes
-from shaperapp.widgets.image_export import export_scene, render_scene
+from shaperapp.widgets.image_export import export_scene, render_scene, scene_svg
 from shaperapp.widgets.view_parts import fill_speed_combo
 
 from .controls import SchemeControls
@@ -221,6 +221,12 @@ class SchemeWidget(QWidget):
         self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         export_scene(self._plot.scene(), source, path, self.tr("Shaper mechanism"), WHITE)
+
+    def svg_bytes(self) -> bytes:
+        """The SVG :meth:`export_image` writes, in memory (for the report)."""
+        self._catch_up()
+        return scene_svg(self._plot.scene(), self._plot.getPlotItem().sceneBoundingRect(),
+                         self.tr("Shaper mechanism"), WHITE)
 
     def export_point(self, x_mm: float, y_mm: float) -> QPointF:
         """Where the design point (x, y) (mm, the frame of ``core.geometry``) lies in the

@@ -27,7 +27,7 @@ def cover_text(option: str, value: str | None) -> str:
         raise UsageError(f"{option}: must be text; it holds a byte that is not "
                          f"{sys.getfilesystemencoding().upper()}")
     if UNPRINTABLE.search(value):
-        raise UsageError(f"{option}: must be one line of text without control characters")
+        raise UsageError(f"{option}: must be one line of text without control characters or noncharacters")
     if len(value) > MAX_TEXT:
         raise UsageError(f"{option}: at most {MAX_TEXT} characters (got {len(value)})")
     return value.strip()

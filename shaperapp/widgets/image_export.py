@@ -100,10 +100,22 @@ def export_scene(scene: QGraphicsScene, source: QRectF, path: str | os.PathLike,
                  background: QColor, prepare: Callable[[bool], None] | None = None) -> None:
     """Write the ``source`` part of ``scene`` to ``path``: SVG for ``.svg``, else a raster
     image at least EXPORT_WIDTH px wide (see :func:`image_type` for the errors)."""
-    export_painting(path, source.size(),
-                    lambda painter, page: render_scene(scene, source, painter, page, background,
-                                                       prepare),
+    export_painting(path, source.size(), _scene_paint(scene, source, background, prepare),
                     title, background)
+
+
+def scene_svg(scene: QGraphicsScene, source: QRectF, title: str, background: QColor,
+              prepare: Callable[[bool], None] | None = None) -> bytes:
+    """The SVG :func:`export_scene` writes to a ``.svg`` path, in memory: the report
+    replays its figures without a temporary folder (issue 42: a killed run left one
+    behind each time, and a write failure there named the temporary file)."""
+    return painting_bytes("svg", source.size(), _scene_paint(scene, source, background, prepare),
+                          title, background)
+
+
+def _scene_paint(scene: QGraphicsScene, source: QRectF, background: QColor,
+                 prepare: Callable[[bool], None] | None) -> "Paint":
+    return lambda painter, page: render_scene(scene, source, painter, page, background, prepare)
 
 
 Paint = Callable[[QPainter, QRectF], None]

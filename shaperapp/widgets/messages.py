@@ -288,6 +288,7 @@ def _file_templates() -> dict[str, str]:
         "constant": QCoreApplication.translate("messages", "%1 is not a design file (%2 is not a number a design may hold)"),
         "long_integer": QCoreApplication.translate("messages", "%1 is not a design file (an integer of %2 digits is too large)"),
         "huge_number": QCoreApplication.translate("messages", "%1 is not a design file (%2 is too large a number)"),
+        "duplicate_key": QCoreApplication.translate("messages", "%1 is not a design file (the key %2 appears twice in one object)"),
         "spec_type": QCoreApplication.translate("messages", "%1: 'spec' must be an object of design fields"),
         "rpm_type": QCoreApplication.translate("messages", "%1: 'rpm' must be a list of crank speeds in r/min"),
         "rpm_value": QCoreApplication.translate("messages", "%1: crank speed %2 is not a number"),
@@ -360,6 +361,7 @@ def describe_damage(damage: str) -> str:
         "no_document": QCoreApplication.translate("messages", "there is no design document"),
         "document_not_utf8": QCoreApplication.translate("messages", "the design document is not UTF-8 text"),
         "document_refused": QCoreApplication.translate("messages", "its design document cannot be opened (%1)"),
+        "not_one_line": QCoreApplication.translate("messages", "%1 is not one line of text (it holds a control character or a noncharacter)"),
     }
     if kind not in templates:
         return str(damage)

@@ -9,7 +9,7 @@ from core.errors import FileFormatError
 from core.io import load_design, save_design
 from core.spec import Spec
 
-from hostile_files import CASES, VALID, build_case
+from hostile_files import CASES, DUPLICATES, VALID, build_case
 
 
 def test_corpus_is_large_enough():
@@ -98,3 +98,33 @@ def test_cli_design_option_refuses_with_one_line(tmp_path, name):
     assert result.returncode == 2
     assert len(result.stderr.strip().splitlines()) == 1 and "Traceback" not in result.stderr
     assert str(path) in result.stderr
+
+
+@pytest.mark.parametrize("key", sorted(DUPLICATES))
+def test_a_key_written_twice_is_refused_naming_it(tmp_path, key):
+    """Issue 42: json kept the last of two "spec" objects (K 1.6 used, K 1.4 ignored), two
+    "gear" objects, "z1": 3, "z1": 13 silently. Each document is valid once read by plain
+    json (so the repeat is its only defect) and is now refused in one line naming the key."""
+    from core.design_file import parse_design
+    text = DUPLICATES[key]
+    parse_design(json.dumps(json.loads(text)).encode(), "plain")      # valid but for the repeat
+    path = tmp_path / "twice.json"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(FileFormatError) as info:
+        load_design(path)
+    assert info.value.reason == "duplicate_key"
+    assert f'"{key}" appears twice' in str(info.value) and str(path) in str(info.value)
+
+
+@pytest.mark.parametrize("command", [("gear",), ("analyze",), ("course", "-o", "out"),
+                                     ("report", "-o", "r.pdf"), ("drawing", "-o", "d.svg")])
+def test_every_command_refuses_a_key_written_twice(tmp_path, command):
+    """gear, course, report and drawing accepted a design file with two "spec" objects."""
+    from cli_runner import shaper
+    path = tmp_path / "twice.json"
+    path.write_text(DUPLICATES["gear" if command == ("gear",) else "spec"], encoding="utf-8")
+    result = shaper(*command, "--design", path, cwd=tmp_path)
+    assert result.returncode == 2, result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "appears twice" in lines[0] and "Traceback" not in result.stderr
+    assert not any(p.name != "twice.json" for p in tmp_path.iterdir())      # nothing written

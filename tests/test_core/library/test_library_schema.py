@@ -161,3 +161,53 @@ def test_connections_do_not_trust_the_schema(tmp_path):
     make_library(path)
     with Library(path) as lib:
         assert lib._conn.execute("PRAGMA trusted_schema").fetchone()[0] == 0
+
+
+def _rewrite(path, table, old, new):
+    """Change the statement SQLite keeps for ``table`` (as another program could, through
+    writable_schema), checking the change took."""
+    conn = sqlite3.connect(path)
+    sql = conn.execute("SELECT sql FROM sqlite_master WHERE name = ?", (table,)).fetchone()[0]
+    assert old in sql
+    conn.execute("PRAGMA writable_schema = ON")
+    conn.execute("UPDATE sqlite_master SET sql = ? WHERE name = ?", (sql.replace(old, new, 1), table))
+    conn.commit()
+    conn.close()
+
+
+# Issue 42: constraints the pragmas do not show, which change what a write does
+CONSTRAINTS = {
+    "unique replace": ("entries", "name TEXT NOT NULL UNIQUE", "name TEXT NOT NULL UNIQUE ON CONFLICT REPLACE"),
+    "not null ignore": ("tags", "tag TEXT NOT NULL", "tag TEXT NOT NULL ON CONFLICT IGNORE"),
+    "check": ("entries", "K REAL NOT NULL", "K REAL NOT NULL CHECK (K < 1.5)"),
+    "collation": ("entries", "name TEXT NOT NULL UNIQUE", "name TEXT NOT NULL UNIQUE COLLATE NOCASE"),
+    "primary key replace": ("tags", "PRIMARY KEY (entry_id, tag)", "PRIMARY KEY (entry_id, tag) ON CONFLICT REPLACE"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CONSTRAINTS))
+def test_a_changed_constraint_is_refused_and_named_by_check(tmp_path, case):
+    """A library with 'entries.name UNIQUE ON CONFLICT REPLACE' or 'tags.tag NOT NULL ON
+    CONFLICT IGNORE' passed the exact-schema check, and 'check' found nothing."""
+    path = tmp_path / "L.sqlite"
+    make_library(path)
+    table, old, new = CONSTRAINTS[case]
+    _rewrite(path, table, old, new)
+    before = digest(path)
+    with pytest.raises(LibraryError) as caught:
+        Library(path)
+    # a collation changes the constraint's automatic index too, which is named as well
+    assert caught.value.objects[0] == f"a changed table {table}"
+    assert set(caught.value.objects[1:]) <= {f"a changed index sqlite_autoindex_{table}_1 on {table}"}
+    status, out, _ = shaper_in_process("library", "check", "--library", path)
+    assert status == 1 and f"a changed table {table}" in out
+    assert digest(path) == before
+
+
+def test_layout_comments_and_quotes_of_a_statement_do_not_refuse_it(tmp_path):
+    """What the statement says is compared, not how it is written."""
+    path = tmp_path / "L.sqlite"
+    make_library(path)
+    _rewrite(path, "tags", "tag TEXT NOT NULL,", '"tag"   text /* the tag */ not NULL, -- one tag\n')
+    with Library(path) as lib:
+        assert lib.count() == 3

@@ -3,6 +3,7 @@ file complete; refused with one line and nothing written when the file lacks a p
 import json
 import re
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -198,3 +199,71 @@ def test_chinese_files_have_no_english_word(tmp_path):
     assert status == 0, err
     for name in NAMES:
         assert_chinese_text(pdf_text(out / name), FORMULAS, what=name)
+
+
+def _course_process(tmp_path, out, **popen):
+    """``shaper course`` as a real process whose temporary files go to tmp_path/tmp."""
+    temp = tmp_path / "tmp"
+    temp.mkdir(exist_ok=True)
+    env = dict(os.environ, TMPDIR=str(temp))
+    command = [sys.executable, "-m", "core", "course", "--design", str(design_file(tmp_path)),
+               "-o", str(out), "--sheet", "A3"]
+    return subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env=env, **popen), temp
+
+
+@pytest.mark.slow          # a real process killed during the report
+def test_a_run_killed_during_the_report_leaves_no_temporary_folder(tmp_path):
+    """Issue 42: every kill during the report stage left $TMPDIR/shaper-report-XXXXXXXX (its
+    SVG figures, up to 400 KB) that no later run removed. Killed as soon as such a folder
+    appears, or once the report is written (the report is the first file)."""
+    import select
+    import time
+    process, temp = _course_process(tmp_path, tmp_path / "out")
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and process.poll() is None:
+        if any(p.name.startswith("shaper-report-") for p in temp.iterdir()):
+            break
+        if select.select([process.stdout], [], [], 0.02)[0]:
+            break                        # the report is written: its stage is over
+    process.send_signal(signal.SIGKILL)
+    process.wait(timeout=60)
+    assert list(temp.iterdir()) == []
+
+
+@pytest.mark.slow          # the report written under a file size limit
+def test_a_failed_write_names_the_users_file_not_a_temporary_one(tmp_path):
+    """Issue 42: with ulimit -f 300 the run said "--output: [Errno 27] could not write
+    $TMPDIR/shaper-report-…/forces.svg: File too large"; docs/file-formats.md promises the
+    message names your path, never the temporary file."""
+    import resource
+    limit = 300 * 1024
+    process, temp = _course_process(
+        tmp_path, tmp_path / "out",
+        preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit)))
+    _, err = process.communicate(timeout=300)
+    assert process.returncode != 0
+    line = err.strip()
+    assert line.count("\n") == 0 and line.startswith("shaper: error: --output: cannot write ")
+    assert str(tmp_path / "out") in line and "File too large" in line
+    assert "shaper-report" not in line and str(temp) not in line and ".tmp" not in line
+    assert list(temp.iterdir()) == []
+
+
+@pytest.mark.skipif(shutil.which("chattr") is None or os.geteuid() != 0,
+                    reason="chattr +i needs root and e2fsprogs")
+def test_an_immutable_target_is_found_before_the_first_file_is_written(tmp_path):
+    """Issue 42: an immutable 01-motion.pdf in the folder made course write 00-report.pdf and
+    then fail: every target is checked before the first is written."""
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "01-motion.pdf").write_bytes(b"%PDF old")
+    if subprocess.run(["chattr", "+i", str(out / "01-motion.pdf")], capture_output=True).returncode:
+        pytest.skip("this file system has no immutable flag")
+    try:
+        status, _, err = course("--design", design_file(tmp_path), "-o", out)
+        assert status != 0 and err.count("\n") == 1
+        assert err.startswith(f"shaper: error: --output: cannot replace {out / '01-motion.pdf'}: it is immutable")
+        assert sorted(p.name for p in out.iterdir()) == ["01-motion.pdf"]
+    finally:
+        subprocess.run(["chattr", "-i", str(out / "01-motion.pdf")])

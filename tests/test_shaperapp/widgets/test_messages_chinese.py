@@ -43,7 +43,7 @@ def test_every_field_a_file_can_name_is_named_in_chinese(chinese):
 def test_a_refused_file_is_described_in_chinese(chinese, reason):
     values = {"too_large": [1], "version": ["2", 1], "no_version": [1], "unreadable": ["No such file"],
               "too_deep": [16], "constant": ["NaN"], "long_integer": [400], "huge_number": ["1e400"],
-              "rpm_value": ['"40"'], "invalid": ["crank = 0: must be > 0 and ≤ 10000 mm"]}.get(reason, [])
+              "rpm_value": ['"40"'], "duplicate_key": ['"z1"'], "invalid": ["crank = 0: must be > 0 and ≤ 10000 mm"]}.get(reason, [])
     error = FileFormatError(reason, "/tmp/设计.json", *values, errno=2,
                             cause=DesignError("crank", 0.0, "must be > 0 and ≤ 10000 mm"))
     text = messages.describe_file_error(error)
