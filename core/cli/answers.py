@@ -13,9 +13,9 @@ import io
 from importlib import import_module
 from typing import Any, Mapping, Sequence
 
+from ..io import csv_text
+
 COMMANDS = ("synth", "analyze", "dynamics", "cam", "gear")
-# what a spreadsheet would run as a formula when a cell starts with it (OWASP's CSV injection)
-FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
 
 
 def command_json(command: str, design_path: str) -> dict[str, Any]:
@@ -101,19 +101,14 @@ def key_values(entry: Mapping[str, Any], group: str, speeds: int) -> list[Any]:
     return row + [" ".join(failed_checks(entry))]
 
 
-def guarded(text: str) -> str:
-    """A text cell a spreadsheet shows as text: one that starts like a formula (=, +, -, @)
-    gets a leading apostrophe, which Excel and LibreOffice hide and do not run."""
-    return "'" + text if text.startswith(FORMULA_START) else text
-
-
 def key_csv(entries: Sequence[Mapping[str, Any]], groups: Sequence[str]) -> str:
-    """answer-key.csv: one row per student, numbers at full precision, text guarded."""
+    """answer-key.csv: one row per student, numbers at full precision, text guarded as
+    every CSV of the tool guards it (``core.io.csv_text``: as a whole and per name)."""
     speeds = speed_count(entries)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(key_header(speeds))
     for entry, group in zip(entries, groups):
-        writer.writerow(["" if v is None else guarded(v) if isinstance(v, str) else repr(float(v))
+        writer.writerow(["" if v is None else csv_text(v) if isinstance(v, str) else repr(float(v))
                          for v in key_values(entry, group, speeds)])
     return out.getvalue()

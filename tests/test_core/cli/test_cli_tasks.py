@@ -18,7 +18,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from cli_runner import shaper_in_process
-from core.cli.answers import COMMANDS, answer_entry, guarded, key_csv
+from core.cli.answers import COMMANDS, answer_entry, key_csv
+from core.io import csv_text as guarded
 from core.cli.tasks import (MAX_FOLDER_BYTES, MAX_STUDENTS, TableError, column_actions, design_parser,
                             folder_name, read_tasks)
 
@@ -220,6 +221,9 @@ def test_a_name_that_is_a_formula_is_text_in_the_answer_key():
     row = next(csv.reader(io.StringIO(text.split("\n", 1)[1])))
     assert row[:3] == ["'=cmd|' /C calc'!A0", "'+8613800000000", "'=1+1"]
     assert all(not cell.startswith(("=", "+", "@")) for cell in row)
+    # a piece after a separator a spreadsheet splits on is guarded too (issue 42 item 2)
+    row = next(csv.reader(io.StringIO(key_csv([_entry("a;=cmd", "1")], ["b|@x"]).split("\n", 1)[1])))
+    assert row[0] == "a;'=cmd" and row[2] == "b|'@x"
 
 
 def _entry(student, number):
