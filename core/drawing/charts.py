@@ -78,6 +78,7 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
         layer = OUTLINE if v.role in ("absolute", "force") else THIN
         items += arrow(at[v.tail], at[v.head], layer)
     room.draw(items)
+    room.name(at.values())
     centre = np.mean(np.array(list(at.values())), axis=0)
 
     def parts_of(key: str) -> list:

@@ -140,6 +140,9 @@ def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tupl
     return near(mids[0]), near(mids[1])
 
 
+SERIES_APART = 3.5          # mm between a crank number and a tool path number
+
+
 def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[float]):
     """The mechanism at ``angles`` (thin) and ``limits`` (thick) with its dimensions, at the
     largest standard scale at which all of it fits ``box``, centred there; its scale,
@@ -164,17 +167,26 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     place = Placement(scale, (place.origin[0] + shift[0], place.origin[1] + shift[1]), place.anchor)
     items, dims = _linework(design, place, angles, limits, compact)
     taken: list[Box] = mechanism_dims.obstacles(dims)
-    items += path_numbers.tool_path_numbers(design, place, angles, items, taken, box,
-                                            mechanism_dims.obstacles(dims, texts_only=True))
+    numbers = path_numbers.tool_path_numbers(design, place, angles, items, taken, box,
+                                             mechanism_dims.obstacles(dims, texts_only=True))
+    items += numbers
     room = Room(items, within=box, taken=taken)      # the names after all the lines, clear of them
-    for text, spans, p, way in mech.joint_anchors(design, float(limits[0]), place, 5.0):
-        items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,
-                            leader_gap=mech.PIN_RADIUS + 0.3)
     o2 = place([0.0, design.frame])
     pins = place(mech.joints(design, angles)["A"].T)
+    moving = mech.joints(design, np.concatenate([angles, limits]))
+    joints = mech.joint_anchors(design, float(limits[0]), place, 5.0)
+    # a joint's name is read as its own: nearer it than any pin or joint drawn at another position
+    room.name([p for _, _, p, _ in joints] + list(pins) + list(place(moving["B"].T)) + list(place(moving["C"].T)))
+    for text, spans, p, way in joints:
+        items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,
+                            leader_gap=mech.PIN_RADIUS + 0.3)
+    # a crank number keeps a text height off the tool path's numbers: side by side, the two
+    # series read as one row ("4 6 5 7 9")
+    room.taken += [(b[0] - SERIES_APART, b[1] - SERIES_APART, b[2] + SERIES_APART, b[3] + SERIES_APART)
+                   for b in (t.box() for t in numbers if isinstance(t, Text))]
     for k, p in enumerate(pins, start=1):      # a number with no free spot is left out
         items += room.place(str(k), (float(p[0]), float(p[1])), 3.5, tuple(p - o2), gap=JOINT_GAP,
-                            leader_gap=mech.PIN_RADIUS + 0.3)
+                            leader_gap=mech.PIN_RADIUS + 0.3, shrink=False)
     return scale, place, items, dims
 
 
