@@ -89,17 +89,19 @@ class LabelPlacer:
         for k in range(1, DIRECTIONS // 2 + 1):
             angles += [prefer + 2 * math.pi * k / DIRECTIONS, prefer - 2 * math.pi * k / DIRECTIONS]
         self.leader = None
-        # clear of lines beside the point, then clear of lines on a leader, then over lines
+        # clear of lines beside the point, then clear of lines on a leader, then over lines;
+        # last, beside the point though another is as near (rather than on an arrowhead)
         passes = ((True, self.bounds, False), (True, self.bounds, True), (True, self.outer, True),
-                  (False, self.bounds, False), (False, self.outer, False), (False, self.outer, True))
+                  (False, self.bounds, False), (False, self.outer, False), (False, self.outer, True),
+                  (False, self.bounds, None), (False, self.outer, None))
         for strict, bounds, tied in passes:
-            for distance in (LEADER_DISTANCES if tied else DISTANCES):
+            for distance in (LEADER_DISTANCES if tied else DISTANCES):      # tied None: plain
                 for anchor in (anchors[:1] if tied else anchors):
                     for angle in angles:
                         box = box_at(anchor, size, angle, distance * self.line)
                         if not self._free(box, strict, bounds):
                             continue
-                        if not tied and self._reads_as_own(box, anchors):
+                        if tied is None or (not tied and self._reads_as_own(box, anchors)):
                             self.taken.append(box)
                             return box
                         tie = leader(anchor, box)
