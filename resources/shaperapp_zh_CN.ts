@@ -3993,6 +3993,10 @@
         <translation>滑枕—连杆杆组力多边形</translation>
     </message>
     <message>
+        <source>Force polygon of the lever</source>
+        <translation>导杆的力多边形</translation>
+    </message>
+    <message>
         <source>Every vector is zero at this position.</source>
         <translation>此位置所有矢量均为零。</translation>
     </message>

@@ -25,12 +25,14 @@ from core.cam import Cam
 from core.cam.follower import pitch, pressure_angle, profile
 from core.cam.table import follower_peaks
 
-from .charts import Curve, arrow, chart, scale_notes
+from . import sheet_dims as sd
+from .charts import ARROW, Curve, arrow, chart, scale_notes
 from .dxf import CENTER, OUTLINE, THIN
-from .labels import Room
+from .labels import Room, strokes
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, fit, frame_items, line, marked,
                     number_text, scale_text, standard_scale, table, symbol)
+from .sheet_dims import Dimension
 from .title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
@@ -103,7 +105,7 @@ def cam_sheet(cam: Cam, rpm: float, paper: Paper, *, labels: Mapping[str, str] =
     areas["figures"] = (table_area, tuple(items))
 
     profile_area = (bx0 + GAP, table_area[3] + GAP, split_x - GAP, by1 - GAP)
-    scale, place, items = _profile(cam, profile_area, lab)
+    scale, place, items, dims = _profile(cam, profile_area, lab)
     areas["profile"] = (profile_area, tuple(items))
 
     charts: dict[str, tuple[float, float, tuple[float, float]]] = {}
@@ -115,7 +117,7 @@ def cam_sheet(cam: Cam, rpm: float, paper: Paper, *, labels: Mapping[str, str] =
     everything = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
     base = next(it for it in areas["profile"][1] if isinstance(it, Circle) and it.layer == THIN)
     f = cam.follower
-    return CamSheet(Sheet(paper, tuple(everything)), scale, place, base,
+    return CamSheet(Sheet(paper, tuple(everything), dimensions=tuple(dims)), scale, place, base,
                     tuple(place([f.distance_mm, 0.0])), tuple(place([0.0, 0.0])), charts, rows, areas)
 
 
@@ -176,21 +178,24 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
     for start, span, key in zip(edges, spans, names):
         if span <= 0.0:
             continue
-        arc = np.radians(np.linspace(start, start + span, max(int(span), 2)))
-        items.append(line(o + (ray_out - 2.0) * np.column_stack([np.cos(arc), np.sin(arc)]), THIN))
+        items += sector_arc(o, ray_out - 2.0, start, span)
         sectors.append((math.radians(start + span / 2.0), lab[key].format(deg=number_text(round(float(span), 3)))))
+    dims = cam_dimensions(o, pivot, b0, place.length(r0), outer, scale, items, box)
+    for dim in dims:
+        items += [*dim.parts, *dim.kept]
     # the turning sense: a clockwise arc with its head, inside the base circle
     r_arrow = 0.45 * place.length(r0)
     arc = np.radians(np.linspace(150.0, 60.0, 24))
     pts = o + r_arrow * np.column_stack([np.cos(arc), np.sin(arc)])
     items.append(line(pts[:-3], THIN))
     items += arrow(pts[-4], pts[-1], THIN)
-    room = Room(items, within=box)             # the labels after all the lines, clear of them
-    for mid, caption_text in sectors:          # a short sector's a ring out
+    room = Room(items, within=box, taken=[d.text.box() for d in dims])   # the labels after all the lines
+    mids = [o + (ray_out - 2.0) * np.array([math.cos(mid), math.sin(mid)]) for mid, _ in sectors]
+    room.name(mids)                            # each angle read as its own arc's
+    for (mid, caption_text), at in zip(sectors, mids):
         u = np.array([math.cos(mid), math.sin(mid)])
-        at = o + (ray_out + 1.0) * u
         text, spans = marked(caption_text)
-        items += room.place(text, (float(at[0]), float(at[1])), 3.5, tuple(u), gap=0.5, rings=6,
+        items += room.place(text, (float(at[0]), float(at[1])), 3.5, tuple(u), gap=1.0, rings=4,
                             subscripts=spans)
     for name, at, away in (("O", o, (-1.0, -1.0)), ("A", pivot, (1.0, 1.0)),
                            (("B", "0"), b0, tuple(b0 - pivot)), ("ω", pts[len(pts) // 2], (1.0, 1.0))):
@@ -202,7 +207,56 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
     items.append(caption(lab["profile"].format(mu=number_text(scale / 1000.0), scale=ratio_text(scale)),
                          (middle, area[3]), width))
     items.append(caption(lab["profile_note"], (middle, area[3] - 1.8 * CAPTION), width, 3.5))
-    return scale, place, items
+    return scale, place, items, dims
+
+
+def sector_arc(o: np.ndarray, radius: float, start: float, span: float) -> list[Item]:
+    """A phase's arc at ``radius`` round ``o`` from ``start`` over ``span`` (°, counter-
+    clockwise) with an arrowhead at each end on its edge ray: an angle's dimension line, so
+    that the four arcs read as the sectors' angles, not as one more circle of the cam."""
+    arc = np.radians(np.linspace(start, start + span, max(int(span), 2) + 1))
+    pts = o + radius * np.column_stack([np.cos(arc), np.sin(arc)])
+    size = min(ARROW[0], 0.3 * radius * math.radians(span))    # a short sector keeps its heads apart
+    back = size / 0.6 / radius          # arrow() draws a head 0.6 of a short line: this one's all head
+    tip0, tip1 = pts[0], pts[-1]
+    b0 = o + radius * np.array([math.cos(arc[0] + back), math.sin(arc[0] + back)])
+    b1 = o + radius * np.array([math.cos(arc[-1] - back), math.sin(arc[-1] - back)])
+    return [line(pts, THIN)] + arrow(b0, tip0, THIN)[1:] + arrow(b1, tip1, THIN)[1:]
+
+
+def cam_dimensions(o: np.ndarray, pivot: np.ndarray, b0: np.ndarray, r0: float, outer: float,
+                   scale: float, drawn: list[Item], within: Box) -> list[Dimension]:
+    """The cam's three sizes a teacher checks on the drawing, with their true values (the
+    sheet is 1:scale): the centre distance a = OA beyond the cam (under it, else over it),
+    the arm l = AB0 beside the arm and the base radius r0 from O to the base circle, each
+    the first of its spots whose text no line of ``drawn`` (nor of the dimensions before it)
+    crosses and which lies ``within`` (else the least crossed)."""
+    ways = np.radians(np.r_[240.0:360.0:15.0, 225.0:90.0:-15.0, 0.0:90.0:15.0])
+    options = {
+        "a": [sd.aligned(tuple(pivot), tuple(o), off, "a", scale) for off in (outer + 8.0, -(outer + 8.0))],
+        "l": [sd.aligned(tuple(pivot), tuple(b0), off, "l", scale) for off in (-8.0, 8.0, -14.0, 14.0)],
+        "r0": [sd.aligned(tuple(o), tuple(o + r0 * np.array([math.cos(t), math.sin(t)])), 0.0, "r0", scale)
+               for t in ways]}
+    segs = strokes(drawn)
+    taken: list[Box] = []
+    chosen = []
+
+    def cost(dim: Dimension) -> tuple[int, int]:
+        box = dim.text.box()
+        inside = within[0] <= box[0] and box[2] <= within[2] and within[1] <= box[1] and box[3] <= within[3]
+        apart = not any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3] for b in taken)
+        return (0 if inside and apart else 1, sd.text_crossings(dim.text, segs))
+
+    for candidates in options.values():
+        best = min(candidates, key=cost)        # the first of the least crossed
+        if cost(best) != (0, 0):                # its text out beyond the cam on a leader
+            corners = [o + (outer + 6.0) * np.array([math.cos(t), math.sin(t)]) for t in ways]
+            led = [sd.led(best, tuple(c)) for c in corners]
+            best = min([best] + led, key=cost)
+        chosen.append(best)
+        taken.append(best.text.box())
+        segs = np.vstack([segs, strokes([*best.parts, *best.kept])])
+    return chosen
 
 
 def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],

@@ -78,6 +78,7 @@ def polygon_items(polygon: Polygon, pole: Pair, scale: float, height: float = 3.
         layer = OUTLINE if v.role in ("absolute", "force") else THIN
         items += arrow(at[v.tail], at[v.head], layer)
     room.draw(items)
+    room.name(at.values())
     centre = np.mean(np.array(list(at.values())), axis=0)
 
     def parts_of(key: str) -> list:
@@ -222,3 +223,77 @@ def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> 
     first = math.ceil(lo / step - 1e-9)
     last = math.floor(hi / step + 1e-9)
     return [k * step for k in range(first, last + 1)]
+
+
+# ---- a polygon's vector equations and magnitudes, beside it -------------------------------
+
+def vector_text(keys: Sequence[str], joins: Sequence[str], position: Pair, height: float,
+                align: str = "lb") -> Text:
+    """The vectors ``keys`` (core's names: "a^k_A3A2" is a, index A3A2, superscript k after
+    it) written one after another with ``joins`` between them (one fewer), as one text."""
+    text, subs, sups = "", [], []
+    for i, key in enumerate(keys):
+        base, _, index = key.partition("_")
+        base, _, sup = base.partition("^")
+        text += base
+        if index:
+            subs.append((len(text), len(text) + len(index)))
+            text += index
+        if sup:
+            sups.append((len(text), len(text) + len(sup)))
+            text += sup
+        if i < len(joins):
+            text += joins[i]
+    return Text(text, position, height, align, subscripts=tuple(subs), superscripts=tuple(sups))
+
+
+def vector_equations(polygon: Polygon) -> list[tuple[list[str], list[str]]]:
+    """The vector equations the polygon draws, as (left keys, right keys): at each point two
+    chains of vectors from the pole meet (v_A3 = v_A2 + v_A3A2; a^n_A3 + a^t_A3 = a_A2 +
+    a^k_A3A2 + a^r_A3A2), the shorter chain on the left. Read off the polygon itself, so a
+    variant's own vectors (the rod's, the block's) give its own equations."""
+    pole = polygon.vectors[0].tail if polygon.vectors else ""
+    into: dict[str, list] = {}
+    for v in polygon.vectors:
+        into.setdefault(v.head, []).append(v)
+
+    def chain(v) -> list[str]:
+        keys, seen = [v.key], {v.head}
+        while v.tail != pole and v.tail in into and v.tail not in seen:
+            seen.add(v.tail)
+            v = into[v.tail][0]
+            keys.insert(0, v.key)
+        return keys
+
+    out = []
+    for head, vectors in into.items():
+        if len(vectors) >= 2:
+            chains = sorted((chain(v) for v in vectors[:2]), key=len)
+            out.append((chains[0], chains[1]))
+    return out
+
+
+def polygon_notes(polygon: Polygon, corner: Pair, height: float) -> list[Text]:
+    """Beside a polygon, from ``corner`` (its top left) down: its vector equations, then each
+    vector's magnitude (v_A2 = 0.6912 m/s), as the report lists them (4 significant digits)."""
+    x, y = corner
+    rows: list[Text] = []
+    for left, right in vector_equations(polygon):
+        rows.append(vector_text(left + right, [" + "] * (len(left) - 1) + [" = "] + [" + "] * (len(right) - 1),
+                                (0.0, 0.0), height))
+    equations = len(rows)
+    floor = 1e-9 * polygon.largest()
+    for v in polygon.vectors:
+        value = v.magnitude if v.magnitude > floor else 0.0
+        label = vector_text([v.key], [], (0.0, 0.0), height)
+        rows.append(Text(f"{label.text} = {value:.4g} {polygon.unit}", (0.0, 0.0), height, "lb",
+                         subscripts=label.subscripts, superscripts=label.superscripts))
+    items: list[Text] = []
+    top = y
+    for k, row in enumerate(rows):          # stacked by their boxes (a superscript reaches higher)
+        box = row.box()
+        top -= 0.5 * height if k == equations and k else 0.0
+        at = (x, top - (box[3] - row.position[1]))
+        items.append(Text(row.text, at, height, "lb", subscripts=row.subscripts, superscripts=row.superscripts))
+        top = at[1] - (row.position[1] - box[1]) - 0.3
+    return items

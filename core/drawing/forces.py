@@ -29,12 +29,12 @@ from core.polygons import FINE_MANTISSAS, force_polygon, lever_force_polygon, ni
 from core.positions import DEFAULT_COUNT, positions, special_angles
 
 from . import mechanism as mech
-from .charts import Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
+from .charts import ARROW, Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE
 from .labels import Room
 from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (Box, Item, Paper, Sheet, fit, frame_items, number_text, scale_text, standard_scale,
+from .sheet import (Box, Item, Paper, Sheet, Text, fit, frame_items, number_text, scale_text, standard_scale,
                     symbol, table)
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
@@ -65,6 +65,9 @@ ENGLISH = {
 FORCE_NAMES = {key: (key.split("_")[0], key.partition("_")[2]) for key in (
     "P", "G_6", "F_I6", "G_5", "F_I5", "N", "R_B", "R_O2", "R_A", "R_O4", "R_C", "G_4", "F_I4", "R_4B")}
 ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
+N_APART = 6.0               # the guide's N drawn at least this far beside C (G5 acts down through C) …
+RAM_INSIDE = mech.RAM[0] / 2.0 - 2.0   # … and inside the ram body
+MIN_ARROW = 2.0 * ARROW[0]  # a shorter force is drawn this long (its head and shaft show), its value named
 TORQUE_STEP_DEG = 1.0
 # room a mechanism drawing keeps beside the links' extent, paper mm: the guide line runs
 # RAM/2 + 6 behind the ram joint's travel and RAM/2 + TOOL_AHEAD + 6 ahead of it (plus a
@@ -84,7 +87,9 @@ class ForcesSheet:
     force_scales: tuple[float, float]       # μF of the two mechanism drawings, N/mm
     polygon_scales: tuple[float, ...]       # μF of the polygons (ram group, then lever), N/mm
     arrows: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]]
-    """(drawing, force name) → tail and head on the paper, mm."""
+    """(drawing, force name) → tail and head on the paper, mm: the force at μF from its point."""
+    shown: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]]
+    """(drawing, force name) → tail and head of the arrow drawn for it (:func:`shown_arrow`)."""
     torque_chart: tuple[float, float, tuple[float, float]]   # μM, μφ, paper origin
     energy_chart: tuple[float, float, tuple[float, float]]   # μE, μφ, paper origin
     rows: list[tuple[str, str]]             # the flywheel table
@@ -104,9 +109,10 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     scale, cells = _mechanism_cells(design, (bx0 + GAP, split_y + GAP, split_x, by1 - GAP))
     room = [(c[0], c[1], c[2], c[3] - 3 * CAPTION) for c in cells]
     arrows: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]] = {}
+    shown: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]] = {}
     force_scales = []
     for k, (cell, box, angle) in enumerate(zip(cells, room, diagrams)):
-        items, mu_f = _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k)
+        items, mu_f = _loaded_mechanism(design, rpm, masses, angle, box, scale, (arrows, shown), k)
         middle = (cell[0] + cell[2]) / 2.0
         items.append(caption(lab["mechanism"].format(angle=number_text(round(angle, 2))),
                              (middle, cell[3]), cell[2] - cell[0], 3.5))
@@ -161,7 +167,7 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     areas["title"] = sheet_title_block(paper, block, lab, scale_text(scale))
     items = [*frame_items(paper), *(it for _, group in areas.values() for it in group)]
     return ForcesSheet(Sheet(paper, tuple(items)), scale, tuple(diagrams), tuple(force_scales),
-                       tuple(polygon_scales), arrows, torque_chart, energy_chart, rows, areas)
+                       tuple(polygon_scales), arrows, shown, torque_chart, energy_chart, rows, areas)
 
 
 def _mechanism_cells(design: Design, area: Box) -> tuple[float, list[Box]]:
@@ -187,16 +193,17 @@ def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: 
     """(name, where, force in N) on the mechanism at one angle: the loads on the ram (P at
     the tool, G6 and F_I6 at C, the guide's N) and the joint forces, each on the link the
     README names (R_O2 on the crank, R_A and R_O4 on the lever, R_B by the lever on the next
-    link, R_C by the rod on the ram). Zero forces are left out."""
+    link, R_C by the rod on the ram). Zero forces are left out. Where: a joint, "tool", "S"
+    (the ram's centre of mass) or "guide" (where the guide's resultant acts)."""
     phi = np.radians([angle_deg])
     d = solve_dynamics(design, phi, [rpm], masses)
     w = float(rpm_to_omega(rpm))
     a_c = w * w * float(shape(design, phi).ram2[0]) * MM
     at = lambda a: float(a[0, 0])          # noqa: E731
     forces = [("P", "tool", np.array([-at(d.cut_force), 0.0])),
-              ("G_6", "C", np.array([0.0, -masses.ram_mass_kg * masses.g])),
-              ("F_I6", "C", np.array([-masses.ram_mass_kg * a_c, 0.0])),
-              ("N", "C", np.array([0.0, at(d.guide_normal)])),
+              ("G_6", "S", np.array([0.0, -masses.ram_mass_kg * masses.g])),
+              ("F_I6", "S", np.array([-masses.ram_mass_kg * a_c, 0.0])),
+              ("N", "guide", np.array([0.0, at(d.guide_normal)])),
               ("R_O2", "O2", np.array([at(d.o2_x), at(d.o2_y)])),
               ("R_A", "A", np.array([at(d.a_x), at(d.a_y)])),
               ("R_O4", "O4", np.array([at(d.o4_x), at(d.o4_y)])),
@@ -214,27 +221,78 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tupl
     forces = joint_forces(design, rpm, masses, angle)
     points = {name: place(p) for name, p in mech.joints(design, angle).items()}
     points["tool"] = np.array(mech.tool_point(points["C"]))
+    ram = mech.ram_body(points["C"] if design.rod is not None else np.array([points["B"][0], points["C"][1]]))
+    points.update(ram_load_points(design, rpm, masses, angle, points["C"], scale))
+    on_ram = {"C", "S", "guide"}
     # μF: the largest force ARROW_MM long, and every arrow and its name inside the box
     need = max((math.hypot(*f) for _, _, f in forces), default=0.0) / ARROW_MM   # no loads: no arrows
     for _, where, force in forces:
-        need = max(need, math.hypot(*force) / max(_room(points[where], force, box) - 8.0, 1.0))
+        start = shown_arrow(points[where], force, ram if where in on_ram else None)[0]
+        need = max(need, math.hypot(*force) / max(_room(start, force, box) - 8.0, 1.0))
     mu_f = nice_scale(need, 1.0, FINE_MANTISSAS)
     heads = []
     for name, where, force in forces:
         tail = points[where]
-        head = tail + force / mu_f
-        arrows[(k, name)] = (tail, head)
-        items += arrow(tail, head, OUTLINE)
-        heads.append((name, tail, head))
+        arrows[0][(k, name)] = (tail, tail + force / mu_f)
+        shown = shown_arrow(tail, force / mu_f, ram if where in on_ram else None)
+        arrows[1][(k, name)] = shown
+        items += arrow(*shown, OUTLINE)
+        magnitude = math.hypot(*force)
+        heads.append((name, *shown, magnitude if magnitude / mu_f < MIN_ARROW else None))
     room = Room(items, within=box)             # every label against all the linework
-    for text, spans, p, way in mech.joint_anchors(design, angle, place, 3.5):
+    anchors = mech.joint_anchors(design, angle, place, 3.5)
+    room.name([p for _, _, p, _ in anchors] + [head for _, _, head, _ in heads])
+    for text, spans, p, way in anchors:
         items += room.place(text, tuple(p), 3.5, tuple(way), gap=JOINT_GAP, subscripts=spans,
                             leader_gap=mech.PIN_RADIUS + 0.3)
-    for name, tail, head in heads:             # crowded (small sheets): left out
+    for name, tail, head, lengthened in heads:  # crowded (small sheets): left out
         text, spans = symbol(FORCE_NAMES[name])
-        items += room.place(text, (float(head[0]), float(head[1])), 3.5, tuple(head - tail), gap=1.0,
+        placed = room.place(text, (float(head[0]), float(head[1])), 3.5, tuple(head - tail), gap=1.0,
                             subscripts=spans, leader_gap=0.5)
+        items += placed
+        if placed and lengthened is not None:   # not to μF: its value, after its name, says how large
+            items += _value_after(room, placed[0], f"= {lengthened:.3g} N")
     return items, mu_f
+
+
+def _value_after(room: Room, name: Text, value: str) -> list[Item]:
+    """``value`` on the line of the label ``name``, after it, if free there (else left out)."""
+    box = name.box()
+    found = room.first_free([Text(value, (box[2] + 0.8, (box[1] + box[3]) / 2.0), 3.5, "lm")])
+    return [] if found is None else [found]
+
+
+def ram_load_points(design: Design, rpm: float, masses: MassProperties, angle: float, c: np.ndarray,
+                    scale: float) -> dict[str, np.ndarray]:
+    """The paper points where the ram's weight and inertia force act (S, drawn at C: the
+    ram is a symbol, not to scale) and where the guide's resultant N acts: on its side of
+    C, at least N_APART from it (N and G5 are both vertical: on one line they hide each
+    other) and inside the ram body."""
+    d = solve_dynamics(design, np.radians([angle]), [rpm], masses)
+    offset = float(d.guide_offset_mm[0, 0]) / scale
+    side = -1.0 if math.isnan(offset) or offset < 0.0 else 1.0
+    x = c[0] + side * min(max(abs(0.0 if math.isnan(offset) else offset), N_APART), RAM_INSIDE)
+    return {"S": np.asarray(c, dtype=float), "guide": np.array([x, c[1]])}
+
+
+def shown_arrow(tail: np.ndarray, vector: np.ndarray, body: Box | None) -> tuple[np.ndarray, np.ndarray]:
+    """The arrow drawn for a force ``vector`` (paper mm, at μF) acting at ``tail``: slid along
+    its line of action out of ``body`` (the ram, whose outline would hide a load at C), and
+    at least MIN_ARROW long, so that its shaft and head both show (its label then gives its
+    value). A load is a sliding vector on a rigid body: its line of action is kept."""
+    length = math.hypot(*vector)
+    u = vector / length
+    start = np.asarray(tail, dtype=float)
+    if body is not None:
+        start = start + u * _exit(start, u, body)
+    return start, start + u * max(length, MIN_ARROW)
+
+
+def _exit(p: np.ndarray, u: np.ndarray, box: Box) -> float:
+    """How far from ``p`` (inside ``box``) along the unit ``u`` the box's outline lies; 0 outside."""
+    if not (box[0] <= p[0] <= box[2] and box[1] <= p[1] <= box[3]):
+        return 0.0
+    return _room(p, u, box)
 
 
 def _room(tail: np.ndarray, force: np.ndarray, box: Box) -> float:
@@ -256,8 +314,10 @@ def _polygon(poly, cell: Box, title_text: str) -> tuple[list[Item], float]:
     names = {str(i): str(i) for i in range(len(poly.points))}
     items: list[Item] = [title]
     room = Room(within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), taken=[title.box()])
-    items += polygon_items(poly, pole, mu, 3.5, names, room=room)
     at = {key: (pole[0] + x / mu, pole[1] + y / mu) for key, (x, y) in poly.points.items()}
+    room.name(((at[v.tail][0] + at[v.head][0]) / 2.0, (at[v.tail][1] + at[v.head][1]) / 2.0)
+              for v in poly.vectors)        # the forces' names, which follow the vertices'
+    items += polygon_items(poly, pole, mu, 3.5, names, room=room)
     for v in poly.vectors:                      # each arrow named at its middle
         (tx, ty), (hx, hy) = at[v.tail], at[v.head]
         text, spans = symbol(FORCE_NAMES.get(v.key, v.key))

@@ -30,6 +30,7 @@ CIRCLE_SIDES = 48
 LEADER_RINGS = 10          # rings beyond the last plain one tried with a leader line
 GRID_SPOTS = 2000          # then spots anywhere in the drawing, the nearest first …
 FAR_CHOICES = 12           # … of whose free ones the leader crossing fewest lines is taken
+ASSOCIATION = 0.5          # text heights another named point must lie farther from a label than its own
 
 
 def strokes(items: Iterable[Item]) -> np.ndarray:
@@ -177,27 +178,54 @@ def leader_ends(at: Pair, boxes: np.ndarray, gap: float) -> np.ndarray:
 def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.ndarray,
           preferred: Pair = (1.0, 1.0), gap: float = 1.5, within: Box | None = None,
           rings: int = 3, align: str | None = None, subscripts: tuple[tuple[int, int], ...] = (),
-          leader_gap: float = 0.0) -> list[Item]:
+          leader_gap: float = 0.0, anchors: np.ndarray | None = None, shrink: bool = True) -> list[Item]:
     """The label ``text`` for the point ``at``, clear of ``segments`` and ``taken``: [the
-    label], or [the label, its leader line] when only a spot farther out is free, or []
-    when none is (the drawing is too crowded for it). Takes the label's box; a leader
-    line starts ``leader_gap`` off the point (a pin's radius)."""
+    label], or [the label, its leader line] when only a spot farther out is free (or only
+    one there is read as naming ``at`` rather than another of ``anchors``, the points the
+    drawing names), or [] when none is (the drawing is too crowded for it). Takes the
+    label's box; a leader line starts ``leader_gap`` off the point (a pin's radius). Without
+    ``shrink`` the label keeps its height (one series of numbers beside another of a smaller
+    height: shrunk, it would join that one)."""
     # a label with an index keeps its height: at the smallest one its index could not be smaller
-    for h in dict.fromkeys((height, height if subscripts else smaller_height(height))):
-        label = first_free(ring_candidates(text, at, h, preferred, gap, range(rings), align, subscripts),
+    small = height if subscripts or not shrink else smaller_height(height)
+    for h in dict.fromkeys((height, small)):
+        spots = ring_candidates(text, at, h, preferred, gap, range(rings), align, subscripts)
+        label = first_free((s for s in spots if reads_as_own(s.box(), at, anchors, h)),
                            taken, segments, within)
         if label is not None:
             return [label]
-    h = height if subscripts else smaller_height(height)
+    h = small
     spots = ring_candidates(text, at, h, preferred, gap, range(rings, rings + LEADER_RINGS), None, subscripts)
     best = with_leader(spots, at, taken, segments, within, leader_gap)
-    if best is None and within is not None:     # anywhere in the drawing, nearest first
-        best = with_leader(grid_candidates(text, at, h, within, subscripts), at, taken, segments, within,
-                           leader_gap, enough=FAR_CHOICES)
+    if (best is None or best[2]) and within is not None:     # anywhere in the drawing, nearest first
+        far = with_leader(grid_candidates(text, at, h, within, subscripts), at, taken, segments, within,
+                          leader_gap, enough=FAR_CHOICES)
+        best = far if best is None or (far is not None and far[2] < best[2]) else best
     if best is None:
         return []
     taken.append(best[0].box())
-    return list(best)
+    return list(best[:2])
+
+
+def reads_as_own(box: Box, at: Pair, anchors: np.ndarray | None, height: float) -> bool:
+    """Whether a label in ``box`` is read as naming ``at``: each other of ``anchors`` (n, 2)
+    (those within 0.05 mm of ``at`` share its label) lies ASSOCIATION·``height`` farther
+    from the box than ``at``."""
+    if anchors is None or not len(anchors):
+        return True
+    pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
+    others = pts[np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]) > 0.05]
+    if not len(others):
+        return True
+    return bool(box_distance(box, others).min() >= box_distance(box, np.asarray([at], float))[0]
+                + ASSOCIATION * height)
+
+
+def box_distance(box: Box, points: np.ndarray) -> np.ndarray:
+    """The distance of each of ``points`` (n, 2) from the axis-parallel ``box``, mm (0 inside)."""
+    dx = np.maximum(np.maximum(box[0] - points[:, 0], points[:, 0] - box[2]), 0.0)
+    dy = np.maximum(np.maximum(box[1] - points[:, 1], points[:, 1] - box[3]), 0.0)
+    return np.hypot(dx, dy)
 
 
 def grid_candidates(text: str, at: Pair, height: float, within: Box,
@@ -214,10 +242,11 @@ def grid_candidates(text: str, at: Pair, height: float, within: Box,
 
 def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,
                 within: Box | None, leader_gap: float, enough: int | None = None
-                ) -> tuple[Text, Polyline] | None:
+                ) -> tuple[Text, Polyline, int] | None:
     """Of the free ``spots`` (the first ``enough`` of them, if given), the one whose leader
     line from ``at`` crosses the fewest strokes (the first of equals) and no taken box, with
-    that line; None if none is free. The spots are tested in batches, in their order."""
+    that line and how many strokes it crosses; None if none is free. The spots are tested in
+    batches, in their order."""
     best, found, order = None, 0, 0
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
     for batch in _batches(spots):
@@ -236,7 +265,7 @@ def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments:
         order += len(batch)
         if enough is not None and found >= enough:
             break
-    return None if best is None else (best[1], line(best[2].reshape(2, 2), THIN))
+    return None if best is None else (best[1], line(best[2].reshape(2, 2), THIN), best[0][0])
 
 
 def _batches(spots: Iterable[Text]) -> Iterable[list[Text]]:
@@ -301,6 +330,14 @@ class Room:
         self.segments = strokes(items)
         self.within = within
         self.taken = [] if taken is None else taken
+        self.anchors = np.zeros((0, 2))
+
+    def name(self, points: Iterable[Pair]) -> None:
+        """Count ``points`` as named in this drawing: a label is placed beside its own point
+        only where none of them could be read as the one it names (:func:`reads_as_own`).
+        Name every point before the first label, so that early labels keep off later ones."""
+        pts = np.asarray(list(points), dtype=float).reshape(-1, 2)
+        self.anchors = np.vstack([self.anchors, pts])
 
     def draw(self, items: Iterable[Item]) -> None:
         """Count ``items`` (strokes) as drawn, and any texts among them as taken."""
@@ -310,10 +347,11 @@ class Room:
 
     def place(self, text: str, at: Pair, height: float, preferred: Pair = (1.0, 1.0),
               gap: float = 1.5, rings: int = 3, align: str | None = None,
-              subscripts: tuple[tuple[int, int], ...] = (), leader_gap: float = 0.0) -> list[Item]:
+              subscripts: tuple[tuple[int, int], ...] = (), leader_gap: float = 0.0,
+              shrink: bool = True) -> list[Item]:
         """:func:`place` in this room; a leader line placed becomes a stroke of it."""
         placed = place(text, at, height, self.taken, self.segments, preferred, gap, self.within,
-                       rings, align, subscripts, leader_gap)
+                       rings, align, subscripts, leader_gap, self.anchors, shrink)
         self.segments = np.concatenate([self.segments, strokes(placed[1:])])
         return placed
 

@@ -121,12 +121,17 @@ def links_at(design: Design, crank_deg: float, where: Placement, layer: str = OU
     return items
 
 
+def ram_body(c: np.ndarray) -> tuple[float, float, float, float]:
+    """The ram body's box (x0, y0, x1, y1) on the paper for the ram at paper point ``c``."""
+    x, y = float(c[0]), float(c[1])
+    return x - RAM[0] / 2, y - RAM[1] / 2, x + RAM[0] / 2, y + RAM[1] / 2
+
+
 def ram_items(c: np.ndarray, layer: str) -> list[Item]:
     """The ram on the guide at paper point ``c`` and the tool hanging under its front."""
-    x, y = float(c[0]), float(c[1])
-    w, h = RAM
-    body = line([(x - w / 2, y - h / 2), (x + w / 2, y - h / 2), (x + w / 2, y + h / 2),
-                 (x - w / 2, y + h / 2)], layer, closed=True)
+    x0, y0, x1, y1 = ram_body(c)
+    y, h = float(c[1]), RAM[1]
+    body = line([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], layer, closed=True)
     tx, ty = tool_point(c)
     tool = line([(tx - 3.0, y - h / 2), (tx - 3.0, ty + 3.0), (tx, ty), (tx + 1.5, y - h / 2)], layer)
     return [body, tool]

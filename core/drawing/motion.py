@@ -29,10 +29,11 @@ from core.positions import positions, special_angles
 
 from . import mechanism as mech
 from . import mechanism_dims, path_numbers
-from .charts import TICK, Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
+from .charts import (TICK, Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, polygon_notes,
+                     scale_notes)
 from .dxf import OUTLINE, THIN
 from .labels import Room, boxes_meet
-from .sheet import (Box, Item, Paper, Placement, Sheet, Text, clipped, fit, fitting_height, frame_items,
+from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, fitting_height, frame_items,
                     item_box, marked, marked_text, number_text, scale_text, smaller_height, standard_scale,
                     table)
 from .sheet_dims import Dimension
@@ -63,6 +64,7 @@ CAPTION = 5.0                 # caption text height
 TABLE_ROW = 7.0
 JOINT_GAP = mech.PIN_RADIUS + 1.0   # a joint's label (or a position's number) off its pin, mm
 LABEL_ROOM = 3.0              # around the mechanism's linework, for the joints' names
+MARK_RADIUS = 0.8             # a marked point of a curve (the working stroke's end), mm
 ROW_ROOM = 1.5                # under the s chart's degrees, for the positions' numbers
 
 
@@ -108,12 +110,13 @@ def motion_sheet(design: Design, rpm: float, paper: Paper, *, count: int = 12,
                               ((mech_box[0] + mech_box[2]) / 2.0, mech_area[3]), mech_box[2] - mech_box[0]))
     areas["mechanism"] = (mech_area, tuple(mech_items))
     motion = solve(design, np.radians(np.linspace(0.0, 360.0, 721)), [rpm])
+    end = limit_mark(design, rpm, angles, float(limits[1]))
     rows = [(lab["quantity"], lab["value"])] + _dimension_rows(design, rpm, lab)
     table_top = title_block_box(paper)[3] + GAP + TABLE_ROW * len(rows)
     # the curves above the dimensions' table (on A3 it reaches above the split)
     curves_area = (split_x + GAP, max(split_y, table_top) + GAP, bx1 - GAP, by1 - GAP)
     areas["curves"] = (curves_area, tuple(_curves(motion, curves_area, angles, where.number[numbered],
-                                                  lab, rpm)))
+                                                  lab, rpm, end)))
     polygons_area = (bx0 + GAP, by0 + GAP, bx1 - TITLE_WIDTH - 2 * GAP, split_y - GAP)
     areas["polygons"] = (polygons_area, tuple(_polygons(design, rpm, diagrams, polygons_area, lab)))
     areas["dimensions"] = ((bx1 - TITLE_WIDTH, table_top - TABLE_ROW * len(rows), bx1, table_top),
@@ -141,6 +144,9 @@ def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tupl
     return near(mids[0]), near(mids[1])
 
 
+SERIES_APART = 3.5          # mm between a crank number and a tool path number
+
+
 def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[float]):
     """The mechanism at ``angles`` (thin) and ``limits`` (thick) with its dimensions, at the
     largest standard scale at which all of it fits ``box``, centred there; its scale,
@@ -165,17 +171,26 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     place = Placement(scale, (place.origin[0] + shift[0], place.origin[1] + shift[1]), place.anchor)
     items, dims = _linework(design, place, angles, limits, compact)
     taken: list[Box] = mechanism_dims.obstacles(dims)
-    items += path_numbers.tool_path_numbers(design, place, angles, items, taken, box,
-                                            mechanism_dims.obstacles(dims, texts_only=True))
+    numbers = path_numbers.tool_path_numbers(design, place, angles, items, taken, box,
+                                             mechanism_dims.obstacles(dims, texts_only=True))
+    items += numbers
     room = Room(items, within=box, taken=taken)      # the names after all the lines, clear of them
-    for text, spans, p, way in mech.joint_anchors(design, float(limits[0]), place, 5.0):
-        items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,
-                            leader_gap=mech.PIN_RADIUS + 0.3)
     o2 = place([0.0, design.frame])
     pins = place(mech.joints(design, angles)["A"].T)
+    moving = mech.joints(design, np.concatenate([angles, limits]))
+    joints = mech.joint_anchors(design, float(limits[0]), place, 5.0)
+    # a joint's name is read as its own: nearer it than any pin or joint drawn at another position
+    room.name([p for _, _, p, _ in joints] + list(pins) + list(place(moving["B"].T)) + list(place(moving["C"].T)))
+    for text, spans, p, way in joints:
+        items += room.place(text, tuple(p), 5.0, tuple(way), gap=JOINT_GAP, subscripts=spans,
+                            leader_gap=mech.PIN_RADIUS + 0.3)
+    # a crank number keeps a text height off the tool path's numbers: side by side, the two
+    # series read as one row ("4 6 5 7 9")
+    room.taken += [(b[0] - SERIES_APART, b[1] - SERIES_APART, b[2] + SERIES_APART, b[3] + SERIES_APART)
+                   for b in (t.box() for t in numbers if isinstance(t, Text))]
     for k, p in enumerate(pins, start=1):      # a number with no free spot is left out
         items += room.place(str(k), (float(p[0]), float(p[1])), 3.5, tuple(p - o2), gap=JOINT_GAP,
-                            leader_gap=mech.PIN_RADIUS + 0.3)
+                            leader_gap=mech.PIN_RADIUS + 0.3, shrink=False)
     return scale, place, items, dims
 
 
@@ -200,11 +215,23 @@ def _extent(items: Sequence[Item]) -> Box:
             float(boxes[:, 3].max()))
 
 
+def limit_mark(design: Design, rpm: float, angles: np.ndarray, limit_deg: float
+               ) -> tuple[float, str, tuple[float, float, float]]:
+    """The working stroke's end as the curves mark it: its crank angle (°), its name k′ after
+    the last numbered position before it (8′ of 12 positions, as the course design names
+    it) and the ram's s (mm), v (m/s) and a (m/s²) there, from core at that angle."""
+    k = int(np.count_nonzero(np.asarray(angles) <= limit_deg + 1e-9))
+    at = solve(design, np.radians([limit_deg]), [rpm])
+    return limit_deg, f"{k}′", (float(at.ram_x[0]), float(at.ram_v[0, 0]), float(at.ram_a[0, 0]))
+
+
 def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
-            lab: Mapping[str, str], rpm: float) -> list[Item]:
+            lab: Mapping[str, str], rpm: float,
+            mark: tuple[float, str, tuple[float, float, float]] | None = None) -> list[Item]:
     """s, v and a over φ in three panels on one φ scale, stacked in ``box``: each φ axis
     ticked at the numbered positions and labelled in degrees (its title φ/(°)), and under
-    the s axis, where no curve goes (s ≥ 0), the positions' numbers in a row of their own."""
+    the s axis, where no curve goes (s ≥ 0), the positions' numbers in a row of their own;
+    ``mark`` (:func:`limit_mark`): the working stroke's end as a point on each curve, named."""
     x0, y0, x1, y1 = box
     items: list[Item] = [caption(lab["curves"].format(rpm=number_text(rpm)), ((x0 + x1) / 2.0, y1),
                                  x1 - x0)]
@@ -228,7 +255,21 @@ def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
         items += drawn.items
         if k == 0:
             items += _position_row(drawn, phi[0], angles, numbers, lab["position"], pbox)
+        if mark is not None:
+            items += _marked_point(drawn, items, phi[0], mark[0], mark[2][k], mark[1], pbox)
     return items
+
+
+def _marked_point(drawn, items: Sequence[Item], phi0: float, phi: float, value: float, name: str,
+                  panel: Box) -> list[Item]:
+    """A point of a chart's curve (at ``phi``, ``value`` in the chart's unit) as a small
+    circle with its ``name`` placed clear of the chart's lines and texts."""
+    left, zero = drawn.origin
+    at = (left + (phi - phi0) / drawn.x_scale, zero + value / drawn.y_scale)
+    dot = Circle(at, MARK_RADIUS, OUTLINE)
+    room = Room(within=panel)
+    room.draw([*items, dot])
+    return [dot, *room.place(name, at, 3.5, (1.0, 1.0), gap=MARK_RADIUS + 0.8, leader_gap=MARK_RADIUS)]
 
 
 def _crossed_ticks(drawn, phi: np.ndarray, y: np.ndarray, ticks) -> set[int]:
@@ -276,18 +317,40 @@ def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
     for r, (kind, build) in enumerate(rows):
         polys = [build(design, float(a), rpm) for a in diagrams]
         for c, (angle, poly) in enumerate(zip(diagrams, polys)):
-            # each its own scale: a slow position stays legible; labels need a margin
-            mu = polygon_fit_scale(poly, cw - 24.0, ch - 2 * CAPTION - 14.0)
             cell = (x0 + c * cw, y1 - (r + 1) * ch, x0 + (c + 1) * cw, y1 - r * ch)
+            # its equations and magnitudes at the cell's right, as the report lists them
+            notes = _fitting_notes(poly, cell, 2 * CAPTION)
+            side = max((t.box()[2] for t in notes), default=cell[2]) - min((t.box()[0] for t in notes),
+                                                                          default=cell[2])
+            room_w = cw - 24.0 - (side + 4.0 if notes else 0.0)
+            # each its own scale: a slow position stays legible; labels need a margin
+            mu = polygon_fit_scale(poly, room_w, ch - 2 * CAPTION - 14.0)
             title = caption(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
                             ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)
             ex = polygon_extent(poly, mu)
-            cx, cy = (cell[0] + cell[2]) / 2.0, (cell[1] + cell[3] - 2 * CAPTION) / 2.0
+            cx = cell[0] + (cw - (side + 4.0 if notes else 0.0)) / 2.0
+            cy = (cell[1] + cell[3] - 2 * CAPTION) / 2.0
             pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
             items.append(title)
-            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [title.box()],
-                                   within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]))
+            items += notes
+            drawing = (cell[0] + 2.0, cell[1], cell[2] - 2.0 - (side + 2.0 if notes else 0.0), cell[3])
+            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [title.box()], within=drawing)
     return items
+
+
+def _fitting_notes(poly, cell: Box, top_room: float) -> list[Text]:
+    """The polygon's notes (charts.polygon_notes) right-aligned in ``cell`` under its caption,
+    3.5 mm high, else 2.5 mm; none where even those do not fit (or take half the cell's width:
+    a small sheet's acceleration polygon)."""
+    for height in (3.5, 2.5):
+        notes = polygon_notes(poly, (0.0, 0.0), height)
+        if not notes:
+            return []
+        boxes = np.array([t.box() for t in notes])
+        w, h = boxes[:, 2].max() - boxes[:, 0].min(), boxes[:, 3].max() - boxes[:, 1].min()
+        if w <= 0.5 * (cell[2] - cell[0]) and h <= cell[3] - cell[1] - top_room - 2.0:
+            return polygon_notes(poly, (cell[2] - 2.0 - w, cell[3] - top_room - 1.0), height)
+    return []
 
 
 def _dimension_rows(design: Design, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:

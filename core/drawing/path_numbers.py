@@ -127,3 +127,4 @@ def _spots(number: str, x0: float, centres: Sequence[float], rows, taken: Sequen
     options = [(int(c), (int(n), rank), text, box, tick, end)
                for c, n, (rank, text, box, tick, end, _) in zip(crossed, led, found)]
     return sorted(options, key=lambda o: (o[0], o[1]))
+

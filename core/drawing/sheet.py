@@ -33,6 +33,7 @@ Box = tuple[float, float, float, float]          # x0, y0, x1, y1 in paper mm
 
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
 SUBSCRIPT_DROP = 0.25     # a subscript's baseline under its text's, in text heights
+SUPERSCRIPT_RAISE = 0.45  # a superscript's baseline above the text's, × its height
 # Estimated advance per character as a fraction of the text height: CJK characters are
 # square, Latin ones narrower. The renderers squeeze a text that comes out wider than this
 # estimate, so the estimate is what the layout and the overlap checks can rely on.
@@ -69,7 +70,8 @@ class Text:
     ``subscripts`` are spans (start, end) of ``text`` set as subscripts: one size smaller
     and lowered, as GB/T 14691 writes indices (F with I6 in F_I6). The text itself stays
     plain letters, which every CAD font has; Unicode's subscript digits are not in them,
-    and it has no capital subscripts at all."""
+    and it has no capital subscripts at all. ``superscripts`` the same, raised (the k of
+    the Coriolis acceleration a^k_A3A2, written after its index)."""
 
     text: str
     position: Pair
@@ -78,19 +80,23 @@ class Text:
     rotation: float = 0.0
     layer: str = TEXT
     subscripts: tuple[tuple[int, int], ...] = ()
+    superscripts: tuple[tuple[int, int], ...] = ()
 
     @cached_property
     def width(self) -> float:
         return sum(text_width(part, h) for part, h, _ in self._parts())
 
     def _parts(self) -> list[tuple[str, float, float]]:
-        """The text in runs: (text, height, baseline drop), subscripts one size smaller."""
+        """The text in runs: (text, height, baseline drop), sub- and superscripts one size
+        smaller, lowered or raised."""
         small = smaller_height(self.height)
+        spans = sorted([(a, b, SUBSCRIPT_DROP * self.height) for a, b in self.subscripts]
+                       + [(a, b, -SUPERSCRIPT_RAISE * self.height) for a, b in self.superscripts])
         parts, at = [], 0
-        for start, end in sorted(self.subscripts):
+        for start, end, drop in spans:
             if start > at:
                 parts.append((self.text[at:start], self.height, 0.0))
-            parts.append((self.text[start:end], small, SUBSCRIPT_DROP * self.height))
+            parts.append((self.text[start:end], small, drop))
             at = end
         if at < len(self.text) or not parts:
             parts.append((self.text[at:], self.height, 0.0))
@@ -105,7 +111,7 @@ class Text:
     def runs(self) -> list["Text"]:
         """The text as plain texts, one per run, each aligned "lb" at its own baseline: what
         the renderers draw (itself when it has no subscripts)."""
-        if not self.subscripts:
+        if not self.subscripts and not self.superscripts:
             return [self]
         x, y = self._start()
         runs = []
@@ -132,8 +138,9 @@ class Text:
         w, h = self.width, self.height
         dx, dy = self._start()
         below = max([0.25 * h] + [drop + 0.25 * size for _, size, drop in self._parts()])
+        above = max([1.1 * h] + [1.1 * size - drop for _, size, drop in self._parts()])
         corners = np.array([[dx, dy - below], [dx + w, dy - below],
-                            [dx + w, dy + h * 1.1], [dx, dy + h * 1.1]])
+                            [dx + w, dy + above], [dx, dy + above]])
         at = np.asarray(self.position)
         upright = _bounds(corners + at)
         return (_bounds(_rotate(corners, self.rotation) + at) if self.rotation else upright), upright

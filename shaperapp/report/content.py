@@ -123,8 +123,8 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
                                 "μ is the scale of each drawing (1 mm on the page).")
                       .replace("%1", f"{rpms[0]:g}"), True))
         for deg in angles:
-            for kind in ("velocity", "acceleration", "force"):
-                if kind == "force" and used is None:
+            for kind in ("velocity", "acceleration", "force", "lever"):
+                if kind in ("force", "lever") and used is None:
                     continue
                 add(Figure("", 170.0, 105.0 if kind != "velocity" else 85.0,
                            figures.polygon_paint(design, deg, rpms[0], used, kind, language)))

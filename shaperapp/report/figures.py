@@ -24,7 +24,7 @@ from core.compare import Comparison
 from core.dynamics import MassProperties
 from core.geometry import Design
 from core.metrics import CycleMetrics
-from core.polygons import polygons
+from core.polygons import lever_force_polygon, polygons
 from core.spec import Spec
 from shaperapp.cam.model import CamModel, typed_from
 from shaperapp.cam.plots import CamPlots
@@ -34,7 +34,7 @@ from shaperapp.design.model import DesignModel
 from shaperapp.plots.forces_panel import ForcesPanel
 from shaperapp.plots.kinematics import PlotsWidget
 from shaperapp.scheme.view import SchemeWidget
-from shaperapp.vectors.paint import auto_scale, paint_polygon
+from shaperapp.vectors.paint import auto_scale, paint_polygon, titles
 
 from shaperapp.widgets.fonts import report_font
 from shaperapp.widgets.image_export import painting_bytes
@@ -314,12 +314,17 @@ class ReportViews:
 
 def polygon_paint(design: Design, crank_deg: float, rpm: float, masses: MassProperties | None,
                   kind: str, language: str) -> Paint:
-    """One polygon at true scale on the page, with the round μ that fills the figure."""
-    polygon = polygons(design, crank_deg, rpm, masses)[kind]
+    """One polygon at true scale on the page, with the round μ that fills the figure;
+    ``kind`` "lever" is the lever's force polygon (the kinetostatic sheet's too)."""
+    if kind == "lever":
+        polygon = lever_force_polygon(design, crank_deg, rpm, masses)
+    else:
+        polygon = polygons(design, crank_deg, rpm, masses)[kind]
+    heading = titles()["lever"] if kind == "lever" else None
 
     def paint(painter: QPainter, rect: QRectF, px_per_mm: float) -> None:
         font = report_font(language, 8.0)
         metrics = QFontMetricsF(font, painter.device())
         scale = auto_scale(polygon, rect, metrics, px_per_mm)
-        paint_polygon(painter, rect, polygon, scale, px_per_mm=px_per_mm, font=font)
+        paint_polygon(painter, rect, polygon, scale, px_per_mm=px_per_mm, font=font, heading=heading)
     return paint

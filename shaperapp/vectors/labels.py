@@ -5,7 +5,11 @@ A student's drawing names every point and vector; on a small pane the names of
 points that lie close together (P, G₆, F_I6, N at one corner of a force polygon)
 ran into one blob and sat under arrowheads. ``place`` tries positions around an
 anchor, nearest first and in the preferred direction first, and takes the first
-whose box is free, first of everything, then of text and arrowheads only.
+whose box is free, first of everything, then of text and arrowheads only. A box is
+free only where it is read as naming its own anchor: every other named point
+(``named``) lies ASSOCIATION text lines farther from it. Where the points crowd (a
+force of 49 N beside one of 7000 N) the label goes farther out, and ``leader`` gives
+the thin line that ties it to its point.
 """
 from __future__ import annotations
 
@@ -16,6 +20,8 @@ from PySide6.QtCore import QLineF, QPointF, QRectF, QSizeF
 
 DIRECTIONS = 16                        # tried around an anchor
 DISTANCES = (0.25, 0.6, 1.1, 1.8, 2.8)  # × text line, from the anchor to the box's near side
+LEADER_DISTANCES = (1.8, 2.8, 4.0, 5.5, 7.5)   # × text line: spots tied to their point by a leader
+ASSOCIATION = 0.5                     # text lines another named point must lie farther than its own
 
 
 def box_at(anchor: QPointF, size: QSizeF, angle: float, gap: float) -> QRectF:
@@ -48,12 +54,22 @@ class LabelPlacer:
     before and of the given obstacles."""
 
     def __init__(self, bounds: QRectF, line: float, obstacles: Sequence[QRectF] = (),
-                 lines: Sequence[QLineF] = (), outer: QRectF | None = None) -> None:
+                 lines: Sequence[QLineF] = (), outer: QRectF | None = None,
+                 named: Sequence[QPointF] = ()) -> None:
         self.bounds = bounds
         self.outer = outer or bounds      # where a label may go when the drawing area is full
         self.line = line
         self.taken: list[QRectF] = list(obstacles)
         self.lines = list(lines)
+        self.named = list(named)          # every point a label names
+        self.leader: QLineF | None = None   # the last placed label's leader line, if it needs one
+
+    def _reads_as_own(self, box: QRectF, anchors: Sequence[QPointF]) -> bool:
+        """Whether ``box`` is read as naming one of ``anchors`` rather than another named point."""
+        own = min(_distance(box, a) for a in anchors)
+        others = [p for p in self.named
+                  if all(math.hypot(p.x() - a.x(), p.y() - a.y()) > 0.5 for a in anchors)]
+        return all(_distance(box, p) >= own + ASSOCIATION * self.line for p in others)
 
     def _free(self, box: QRectF, strict: bool, bounds: QRectF) -> bool:
         if not bounds.contains(box):
@@ -66,18 +82,58 @@ class LabelPlacer:
 
     def place(self, anchors: Sequence[QPointF], size: QSizeF, prefer: float) -> QRectF:
         """The first free box around one of ``anchors`` (nearest distance first, then
-        directions from ``prefer``, radians); the preferred one if none is free."""
+        directions from ``prefer``, radians) that is read as naming them; else one farther
+        out with a leader line (``self.leader``) from the anchor; the preferred one if none
+        is free."""
         angles = [prefer]
         for k in range(1, DIRECTIONS // 2 + 1):
             angles += [prefer + 2 * math.pi * k / DIRECTIONS, prefer - 2 * math.pi * k / DIRECTIONS]
-        for strict, bounds in ((True, self.bounds), (False, self.bounds), (False, self.outer)):
-            for distance in DISTANCES:
-                for anchor in anchors:
+        self.leader = None
+        # clear of lines beside the point, then clear of lines on a leader, then over lines;
+        # last, beside the point though another is as near (rather than on an arrowhead)
+        passes = ((True, self.bounds, False), (True, self.bounds, True), (True, self.outer, True),
+                  (False, self.bounds, False), (False, self.outer, False), (False, self.outer, True),
+                  (False, self.bounds, None), (False, self.outer, None))
+        for strict, bounds, tied in passes:
+            for distance in (LEADER_DISTANCES if tied else DISTANCES):      # tied None: plain
+                for anchor in (anchors[:1] if tied else anchors):
                     for angle in angles:
                         box = box_at(anchor, size, angle, distance * self.line)
-                        if self._free(box, strict, bounds):
+                        if not self._free(box, strict, bounds):
+                            continue
+                        if tied is None or (not tied and self._reads_as_own(box, anchors)):
                             self.taken.append(box)
+                            return box
+                        tie = leader(anchor, box)
+                        if tied and not any(crosses(other, tie) for other in self.taken) and not (
+                                strict and any(_cross(tie, other) for other in self.lines)):
+                            self.taken.append(box)
+                            self.lines.append(tie)
+                            self.leader = tie
                             return box
         box = box_at(anchors[0], size, prefer, DISTANCES[0] * self.line)
         self.taken.append(box)
         return box
+
+
+def _cross(a: QLineF, b: QLineF) -> bool:
+    """Whether two segments cross."""
+    return a.intersects(b)[0] == QLineF.IntersectionType.BoundedIntersection
+
+
+def _distance(box: QRectF, p: QPointF) -> float:
+    """From the point ``p`` to the box (0 inside)."""
+    dx = max(box.left() - p.x(), 0.0, p.x() - box.right())
+    dy = max(box.top() - p.y(), 0.0, p.y() - box.bottom())
+    return math.hypot(dx, dy)
+
+
+def leader(anchor: QPointF, box: QRectF) -> QLineF:
+    """A line from ``anchor`` to the nearest point of ``box``, a little short of both."""
+    near = QPointF(min(max(anchor.x(), box.left()), box.right()), min(max(anchor.y(), box.top()), box.bottom()))
+    line = QLineF(anchor, near)
+    length = line.length()
+    if length < 1e-9:
+        return line
+    gap = min(2.0, length / 4.0)
+    return QLineF(line.pointAt(gap / length), line.pointAt(1.0 - gap / length))

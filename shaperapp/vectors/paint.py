@@ -31,7 +31,8 @@ _SUB = str.maketrans("0123456789'", "₀₁₂₃₄₅₆₇₈₉′")
 
 def titles() -> dict[str, str]:
     return {"velocity": translate("PolygonPainter", "Velocity polygon"), "acceleration": translate("PolygonPainter", "Acceleration polygon"),
-            "force": translate("PolygonPainter", "Force polygon of the ram–rod group")}
+            "force": translate("PolygonPainter", "Force polygon of the ram–rod group"),
+            "lever": translate("PolygonPainter", "Force polygon of the lever")}
 
 
 def scale_caption(polygon: Polygon, scale: float) -> str:
@@ -120,10 +121,10 @@ def limit_note(polygon: Polygon) -> str:
     return ""
 
 
-def _caption(polygon: Polygon, scale: float, title: bool) -> list[str]:
+def _caption(polygon: Polygon, scale: float, title: bool, heading: str | None = None) -> list[str]:
     place = f"φ = {polygon.crank_deg:.2f}°, {polygon.rpm:g} r/min"
     if title:
-        return [f"{titles()[polygon.kind]}   {place}", scale_caption(polygon, scale)]
+        return [f"{heading or titles()[polygon.kind]}   {place}", scale_caption(polygon, scale)]
     return [f"{place},  {scale_caption(polygon, scale)}"]
 
 
@@ -138,7 +139,7 @@ def _note_rect(rect: QRectF, top: float, note: str, metrics: QFontMetricsF) -> Q
 def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: float,
                   px_per_mm: float | None = None, font: QFont | None = None,
                   legend: bool = True, centre_mm: tuple[float, float] | None = None,
-                  title: bool = True) -> float:
+                  title: bool = True, heading: str | None = None) -> float:
     """Draw ``polygon`` at μ = ``scale`` into ``rect`` (device units).
 
     ``px_per_mm`` maps a drawing millimetre to device units (true scale on paper);
@@ -146,7 +147,8 @@ def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: floa
     ``centre_mm`` is the point of the drawing (in mm at μ = 1, i.e. in the
     polygon's unit) put at the centre of the drawing area; default the centre
     of this polygon. ``title`` off: one caption line without the polygon's name
-    (the screen names it in its selector). Returns the px-per-mm used.
+    (the screen names it in its selector); ``heading`` names it instead of its kind's
+    title (the lever's force polygon). Returns the px-per-mm used.
     """
     font = QFont(font) if font is not None else QFont(painter.font())
     if font.pointSizeF() <= 0:
@@ -157,7 +159,7 @@ def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: floa
     painter.setRenderHint(QPainter.RenderHint.Antialiasing)
     painter.setFont(font)
     painter.setPen(QColor("#263238"))
-    for i, text in enumerate(_caption(polygon, scale, title)):
+    for i, text in enumerate(_caption(polygon, scale, title, heading)):
         painter.drawText(QPointF(rect.left(), rect.top() + i * line + metrics.ascent()), text)
     rows = _legend_rows(polygon)
     area, legend_box, note_box = layout(rect, polygon, metrics, legend, title)
@@ -214,7 +216,10 @@ def paint_polygon(painter: QPainter, rect: QRectF, polygon: Polygon, scale: floa
     fixed = heads + [QRectF(rect.left(), rect.top(), rect.width(), note_box.bottom() - rect.top())]
     if legend_box is not None:
         fixed.append(legend_box)
-    placer = LabelPlacer(area, line, fixed, segments, outer=rect)
+    named = [to_device(p) for p in pts.values()]
+    if polygon.kind == "force":                 # the forces' names, at their middles
+        named += [(to_device(pts[v.tail]) + to_device(pts[v.head])) / 2.0 for v in polygon.vectors]
+    placer = LabelPlacer(area, line, fixed, segments, outer=rect, named=named)
     if polygon.kind == "force":
         _label_vectors(painter, polygon, pts, to_device, placer, font)
     else:
@@ -308,6 +313,7 @@ def _label_points(painter: QPainter, pts, to_device, metrics: QFontMetricsF,
         prefer = math.atan2(-(y - cy), x - cx) if (x, y) != (cx, cy) else -math.pi / 2
         size = QSizeF(metrics.horizontalAdvance(text), metrics.ascent() + metrics.descent())
         box = placer.place([dev], size, prefer)
+        _draw_leader(painter, placer)
         painter.drawText(QPointF(box.left(), box.top() + metrics.ascent()), text)
 
 
@@ -327,7 +333,20 @@ def _label_vectors(painter: QPainter, polygon: Polygon, pts, to_device, placer: 
         width, above, below = symbol_extent(vec.key, QFontMetricsF(font, painter.device()))
         box = placer.place(anchors, QSizeF(width, above + below), normal)
         painter.setPen(vector_colour(polygon, i))
+        _draw_leader(painter, placer)
         draw_symbol(painter, box.left(), box.top() + above, vec.key, font)
+
+
+def _draw_leader(painter: QPainter, placer: LabelPlacer) -> None:
+    """The thin line tying the label just placed to its point, if it needed one (in the
+    painter's current pen colour)."""
+    if placer.leader is not None:
+        pen = QPen(painter.pen())
+        pen.setWidthF(0.6)
+        painter.save()
+        painter.setPen(pen)
+        painter.drawLine(placer.leader)
+        painter.restore()
 
 
 def _legend_rows(polygon: Polygon) -> list[tuple[str, str]]:
