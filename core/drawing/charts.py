@@ -229,7 +229,7 @@ def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> 
 
 def vector_text(keys: Sequence[str], joins: Sequence[str], position: Pair, height: float,
                 align: str = "lb") -> Text:
-    """The vectors ``keys`` (core's names: "a^k_A3A2" is a, index A3A2, superscript k after
+    """The vectors ``keys`` (core's names: "a^k_A4A3" is a, index A4A3, superscript k after
     it) written one after another with ``joins`` between them (one fewer), as one text."""
     text, subs, sups = "", [], []
     for i, key in enumerate(keys):
@@ -249,8 +249,8 @@ def vector_text(keys: Sequence[str], joins: Sequence[str], position: Pair, heigh
 
 def vector_equations(polygon: Polygon) -> list[tuple[list[str], list[str]]]:
     """The vector equations the polygon draws, as (left keys, right keys): at each point two
-    chains of vectors from the pole meet (v_A3 = v_A2 + v_A3A2; a^n_A3 + a^t_A3 = a_A2 +
-    a^k_A3A2 + a^r_A3A2), the shorter chain on the left. Read off the polygon itself, so a
+    chains of vectors from the pole meet (v_A4 = v_A3 + v_A4A3; a^n_A4 + a^t_A4 = a_A3 +
+    a^k_A4A3 + a^r_A4A3), the shorter chain on the left. Read off the polygon itself, so a
     variant's own vectors (the rod's, the block's) give its own equations."""
     pole = polygon.vectors[0].tail if polygon.vectors else ""
     into: dict[str, list] = {}

@@ -65,7 +65,7 @@ ENGLISH = {
 FORCE_NAMES = {key: (key.split("_")[0], key.partition("_")[2]) for key in (
     "P", "G_6", "F_I6", "G_5", "F_I5", "N", "R_B", "R_O2", "R_A", "R_O4", "R_C", "G_4", "F_I4", "R_4B")}
 ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
-N_APART = 6.0               # the guide's N drawn at least this far beside C (G5 acts down through C) …
+N_APART = 6.0               # the guide's N drawn at least this far beside C (G6 acts down through S6) …
 RAM_INSIDE = mech.RAM[0] / 2.0 - 2.0   # … and inside the ram body
 MIN_ARROW = 2.0 * ARROW[0]  # a shorter force is drawn this long (its head and shaft show), its value named
 TORQUE_STEP_DEG = 1.0
@@ -266,7 +266,7 @@ def ram_load_points(design: Design, rpm: float, masses: MassProperties, angle: f
                     scale: float) -> dict[str, np.ndarray]:
     """The paper points where the ram's weight and inertia force act (S, drawn at C: the
     ram is a symbol, not to scale) and where the guide's resultant N acts: on its side of
-    C, at least N_APART from it (N and G5 are both vertical: on one line they hide each
+    C, at least N_APART from it (N and G6 are both vertical: on one line they hide each
     other) and inside the ram body."""
     d = solve_dynamics(design, np.radians([angle]), [rpm], masses)
     offset = float(d.guide_offset_mm[0, 0]) / scale

@@ -71,7 +71,7 @@ class Text:
     and lowered, as GB/T 14691 writes indices (F with I6 in F_I6). The text itself stays
     plain letters, which every CAD font has; Unicode's subscript digits are not in them,
     and it has no capital subscripts at all. ``superscripts`` the same, raised (the k of
-    the Coriolis acceleration a^k_A3A2, written after its index)."""
+    the Coriolis acceleration a^k_A4A3, written after its index)."""
 
     text: str
     position: Pair

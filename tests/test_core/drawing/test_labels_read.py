@@ -100,7 +100,7 @@ def test_scheme_i_polygon_labels_are_each_read_as_their_own(size):
 
 
 def test_scheme_i_loads_on_the_ram_show_their_arrow_outside_the_ram():
-    """φ = 120°: F_I5 (49 N, 0.16 mm at μF = 300 N/mm) and N were drawn inside the ram's
+    """φ = 120°: F_I6 (49 N, 0.16 mm at μF = 300 N/mm) and N were drawn inside the ram's
     outline, unseen; every arrow drawn is at least MIN_ARROW long and starts on or
     outside the ram body, along its force."""
     drawn = scheme_i_sheet()
@@ -111,7 +111,7 @@ def test_scheme_i_loads_on_the_ram_show_their_arrow_outside_the_ram():
         assert u[0] * v[1] - u[1] * v[0] == pytest.approx(0.0, abs=1e-9) and u @ v > 0, name
     for k in range(2):
         x0, y0, x1, y1 = mech.ram_body(drawn.arrows[(k, "R_C")][0])    # the ram about C (rod variant)
-        for name in ("G_5", "F_I5", "N"):
+        for name in ("G_6", "F_I6", "N"):
             tail, head = drawn.shown[(k, name)]
             inside = x0 + 1e-6 < tail[0] < x1 - 1e-6 and y0 + 1e-6 < tail[1] < y1 - 1e-6
             assert not inside, (k, name, tail)

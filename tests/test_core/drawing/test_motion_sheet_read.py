@@ -55,8 +55,8 @@ def test_the_working_strokes_end_8_prime_is_marked_on_each_curve(drawn):
 
 
 def test_each_polygon_has_its_equations_and_magnitudes_beside_it():
-    """A1: v_A3 = v_A2 + v_A3A2 and v_C = v_B + v_CB (the rod's); a^n_A3 + a^t_A3 = a_A2 +
-    a^k_A3A2 + a^r_A3A2 and a_C = a_B + a^n_CB + a^t_CB; and every vector's magnitude as
+    """A1: v_A4 = v_A3 + v_A4A3 and v_C = v_B + v_CB (the rod's); a^n_A4 + a^t_A4 = a_A3 +
+    a^k_A4A3 + a^r_A4A3 and a_C = a_B + a^n_CB + a^t_CB; and every vector's magnitude as
     core's polygon has it, to 4 digits; v_C and a_C are the ram's v and a (core.kinematics).
     (On A3 the acceleration polygon's eleven rows do not fit beside it and are left out.)"""
     drawn = motion_sheet(SCHEME_I, 60.0, paper("A1"))
@@ -71,6 +71,6 @@ def test_each_polygon_has_its_equations_and_magnitudes_beside_it():
         ram = solve(SCHEME_I, np.radians([angle]), [60.0])
         assert f"vC = {abs(float(ram.ram_v[0, 0])):.4g} m/s" in texts
         assert f"aC = {abs(float(ram.ram_a[0, 0])):.4g} m/s²" in texts
-    assert texts.count("vA3 = vA2 + vA3A2") == 2 and texts.count("vC = vB + vCB") == 2
-    assert texts.count("aA3n + aA3t = aA2 + aA3A2k + aA3A2r") == 2
+    assert texts.count("vA4 = vA3 + vA4A3") == 2 and texts.count("vC = vB + vCB") == 2
+    assert texts.count("aA4n + aA4t = aA3 + aA4A3k + aA4A3r") == 2
     assert texts.count("aC = aB + aCBn + aCBt") == 2

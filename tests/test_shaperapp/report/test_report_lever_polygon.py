@@ -1,6 +1,6 @@
 """The report draws the lever's force polygon the kinetostatic sheet draws (issue 40, item 3):
-at each of the two positions, after the ram group's, the lever's (G3, F_I3, R_A, R_O4,
-R_3B of core.polygons.lever_force_polygon) under its own title, in English and Chinese."""
+at each of the two positions, after the ram group's, the lever's (G4, F_I4, R_A, R_O4,
+R_4B of core.polygons.lever_force_polygon) under its own title, in English and Chinese."""
 from __future__ import annotations
 
 import pytest

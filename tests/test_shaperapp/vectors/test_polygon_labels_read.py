@@ -1,8 +1,8 @@
 """The report's force polygons: every force's name is read as its own (issue 40, item 2).
 
-方案 I of the task book at φ = 120°: F_I5 (49 N) and N (470 N) beside P (7000 N) are
+方案 I of the task book at φ = 120°: F_I6 (49 N) and N (470 N) beside P (7000 N) are
 under 8 mm on the report's page at μF = 60 N/mm, and their names stood side by side at
-the one corner, "F_I5 N", each as near the other's arrow as its own. What is painted
+the one corner, "F_I6 N", each as near the other's arrow as its own. What is painted
 is recorded (paint_recorder); a name is read as its force's when the force's middle is
 nearer its letters than every other vertex and middle by half a text line, or a leader
 line runs from the force's line to the name. Written from the recorded geometry, not
