@@ -3,8 +3,8 @@
 Dimensions are placed where no moving part ever goes, so that a label never sits
 on a link at any crank angle: L2 and h as a vertical chain left of everything,
 L3 beside the lever's rightmost limit position, H under the tool path, and L1 as
-the crank radius to the point where the lever's left limit position touches the
-crank circle, its label led out beyond the lever's swing (the lever only ever
+the crank radius to the point where the lever's limit position touches the
+crank circle (on the side the crank is drawn at when the dimensions are placed), its label led out beyond the lever's swing (the lever only ever
 moves inside the wedge between its limit positions, which the crank circle
 touches there).
 """
@@ -66,10 +66,11 @@ def linear_dim(p: np.ndarray, q: np.ndarray, normal: np.ndarray, offset: float,
     return Dimension(lines, arrows, text, mid, text_anchor(normal))
 
 
-def crank_dim(o2: np.ndarray, crank: float, theta: float, u: float, text: str) -> Dimension:
-    """L1 as the radius to the left tangent point of the lever's limit position, with a
-    leader out of the lever's swing to the label."""
-    normal = np.array([-math.cos(theta / 2.0), -math.sin(theta / 2.0)])   # away from the wedge
+def crank_dim(o2: np.ndarray, crank: float, theta: float, u: float, text: str,
+              side: float = -1.0) -> Dimension:
+    """L1 as the radius to the tangent point of the lever's limit position on ``side``
+    (-1 left, +1 right), with a leader out of the lever's swing to the label."""
+    normal = np.array([side * math.cos(theta / 2.0), -math.sin(theta / 2.0)])   # away from the wedge
     touch = o2 + normal * crank
     label = touch + normal * L1_LEAD * u
     return Dimension([(tuple(o2), tuple(touch)), (tuple(touch), tuple(label))],
@@ -97,6 +98,10 @@ class DimensionLayer(QObject):
         self._segments: list[Pair] = []
         self._leader_index = 0
         self._u = 1.0
+        self.crank_side = -1.0
+        """L1 is drawn along the crank at the limit position on this side (-1 left, +1
+        right): the view sets it from the crank as drawn when it places the dimensions, so
+        that at the end limit L1 names the crank drawn, not the other position's lever."""
 
     def update(self, model: DesignModel, g: Geometry) -> None:
         """Place the dimensions of the model's design; texts are translated here."""
@@ -118,7 +123,7 @@ class DimensionLayer(QObject):
         dims.append(linear_dim(np.zeros(2), tip, np.array([unit[1], -unit[0]]), 3.0 * u, u,
                                self.tr("L3 = {0}").format(fmt(design.lever, ".1f"))))
         dims.append(crank_dim(o2, design.crank, design.theta, u,
-                              self.tr("L1 = {0}").format(fmt(design.crank, ".1f"))))
+                              self.tr("L1 = {0}").format(fmt(design.crank, ".1f")), self.crank_side))
         # H between the tool tip's two limit positions, under the tool path.
         dims.append(linear_dim(np.array([g.tip_lo, g.tip_y]), np.array([g.tip_hi, g.tip_y]),
                                np.array([0.0, -1.0]), 2.6 * u, u,

@@ -26,7 +26,7 @@ from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
 from .place import (LEADER_RING, Obstacles, Raster, around, boxes_at, clear_of_segments, leader,
-                    leaders, meets, end_to_end)
+                    leaders, meets, end_to_end, owned)
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
@@ -254,17 +254,20 @@ class LabelLayout(QObject):
         centres, boxes = np.concatenate(centres), np.concatenate(boxes)
         far, small = np.concatenate(far), np.concatenate(small)
         order = np.lexsort((np.arange(len(far)), small, far))
+        names = list(mech.label_directions(index))
+        readable = owned(boxes, np.array([mech.joint_at(n, index) for n in names]),
+                         names.index(name), far)
         near = order[~far[order]]               # most frames end among these: checked first, cheaply
         for part in (near, order[far[order]]):
-            for k in part[obstacles.clear(boxes[part])]:
+            for k in part[obstacles.clear(boxes[part]) & readable[part]]:
                 lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
                 if len(lead) and meets(taken, lead, np.full(1, margin)).any():
                     continue
                 return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
         # nothing clear: the spot the fewest lines come near, but never one whose leader
         # would cross a label
-        barred = far & meets(taken, leaders(point, boxes, radius + LEADER_GAP_PX * px),
-                             np.full(len(boxes), margin)).any(axis=0)
+        barred = ~readable | far & meets(taken, leaders(point, boxes, radius + LEADER_GAP_PX * px),
+                                         np.full(len(boxes), margin)).any(axis=0)
         k = order[obstacles.best(boxes[order], barred[order])]
         lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
         return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)

@@ -279,7 +279,9 @@ class MechanismLayer(QObject):
         return ends, margins
 
     def joint_at(self, name: str, index: int) -> np.ndarray:
-        """Where joint ``name`` is at crank-angle ``index``, mm (O2 stays put)."""
+        """Where joint ``name`` is at crank-angle ``index``, mm (O4 and O2 stay put)."""
+        if name == "O4":
+            return np.zeros(2)
         return self._o2 if name == "O2" else self.frames.joints[index, MOVING.index(name)]
 
     def frame_obstacles(self, index: int) -> tuple[np.ndarray, np.ndarray]:

@@ -14,6 +14,10 @@ import numpy as np
 
 RINGS = (0.0, 0.5, 1.0, 1.6, 2.4, 3.4, 4.6, 6.0)   # rings beyond the first, in text heights
 LEADER_RING = 2                          # from this ring on, a leader line leads to the label
+OWN_SHARE = 0.5
+"""A joint's name without a leader is at most this share of its distance to any other
+joint from its own: at 0.71 (report, 方案 I, end limit) "C" stood between C and B and
+read as B's."""
 
 
 def clear_of_segments(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarray:
@@ -140,6 +144,24 @@ class Obstacles:
             self.margins = np.concatenate([self.margins, margin])
             self._lo = np.concatenate([self._lo, ends.min(axis=1) - margin[:, None]])
             self._hi = np.concatenate([self._hi, ends.max(axis=1) + margin[:, None]])
+
+
+def box_distances(boxes: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """(m, j) distance from each box (m × 4) to each point (j × 2): 0 inside."""
+    b = np.asarray(boxes, dtype=float).reshape(-1, 1, 4)
+    p = np.asarray(points, dtype=float).reshape(1, -1, 2)
+    dx = np.maximum(np.maximum(b[..., 0] - p[..., 0], p[..., 0] - b[..., 1]), 0.0)
+    dy = np.maximum(np.maximum(b[..., 2] - p[..., 1], p[..., 1] - b[..., 3]), 0.0)
+    return np.hypot(dx, dy)
+
+
+def owned(boxes: np.ndarray, points: np.ndarray, own: int, led: np.ndarray) -> np.ndarray:
+    """(m,) True where a joint's name at each box reads as joint ``own``'s of ``points``:
+    its own joint the nearest to it, and with no leader (``led`` False) by far the
+    nearest (OWN_SHARE), since nothing else tells the reader whose name it is."""
+    d = box_distances(boxes, points)
+    others = np.delete(d, own, axis=1).min(axis=1, initial=np.inf)
+    return d[:, own] <= np.where(led, 1.0, OWN_SHARE) * others
 
 
 def boxes_at(centres: np.ndarray, half: np.ndarray) -> np.ndarray:

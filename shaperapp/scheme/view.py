@@ -101,9 +101,22 @@ class SchemeWidget(QWidget):
     def fit(self) -> None:
         """Show the whole mechanism, its travel and its dimensions."""
         if self._geometry is not None:
+            if not self._stale and self._crank_side() != self._dimensions.crank_side:
+                self._dimensions.crank_side = self._crank_side()     # L1 along the crank drawn
+                self._dimensions.update(self._model, self._geometry)
+                self._dimensions_placed()
             self._view.setRange(self._fit_rect(), padding=0.04)
             self._view.updateMatrix()     # now, not while preparing a paint (a second paint)
             self._fitted = self._view.viewRect()
+
+    def _crank_side(self) -> float:
+        """-1 when the crank is drawn pointing left of O2, +1 right: the limit position
+        whose tangent point L1 is drawn to."""
+        frames = self._mechanism.frames
+        if frames is None or not len(frames.tip):
+            return self._dimensions.crank_side
+        pin = self._mechanism.joint_at("A", min(self._model.angle_index, len(frames.tip) - 1))
+        return 1.0 if pin[0] > self._geometry.o2[0] else -1.0
 
     def _refit_for(self, before: QRectF | None) -> None:
         """After a new design (``before``: the previous one's drawing): fitted or kept as
@@ -340,6 +353,7 @@ class SchemeWidget(QWidget):
         self._forces.speed = max(self._force_speed_box.currentIndex(), 0)
         before = None if self._geometry is None else self._geometry.fit_rect
         self._geometry = self._mechanism.rebuild(self._model)
+        self._dimensions.crank_side = self._crank_side()
         self._dimensions.update(self._model, self._geometry)
         self._labels.rebuild()
         design = self._model.design

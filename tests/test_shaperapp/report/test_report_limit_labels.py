@@ -1,0 +1,68 @@
+"""The report's scheme at both limit positions (§3), as the report draws it: each joint's
+name reads as its own joint's, and L1 names the crank drawn in that position (issue 40).
+
+At the end limit of 方案 I (`--dims 110,380,540 --rod-ratio 0.25`) "C" stood above the
+ram between C and B, 0.71 of its distance to B from C, with no leader, and read as B's;
+and L1's dimension ran from O2 to the start limit's crank pin, along the other position's
+lever (dashed), not along the crank drawn.
+
+A name with no leader must lie within half its distance to any other joint from its own
+joint (box to point); one with a leader at least nearest its own. At a limit position the
+crank is perpendicular to the lever (the lever touches the crank circle), so the crank pin
+A is the tangent point that L1's line runs to: L1's leader starts at the drawn A.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PySide6.QtCore import QCoreApplication
+
+import shaperapp.report.figures as figures
+from core.metrics import analyze
+from core.spec import Spec
+from shaperapp.scheme.view import SchemeWidget
+
+SPECS = [Spec(mode="dimensions", crank=110.0, frame=380.0, lever=540.0, variant="rod", rod_ratio=0.25),
+         Spec(crank=100.0, time_ratio=1.4, stroke=300.0)]
+
+
+def box_distance(box, point) -> float:
+    """Distance from a box (left, right, bottom, top) to a point: 0 inside."""
+    left, right = sorted(box[:2])
+    bottom, top = sorted(box[2:])
+    return float(np.hypot(max(left - point[0], 0.0, point[0] - right),
+                          max(bottom - point[1], 0.0, point[1] - top)))
+
+
+def led(scheme, box, joint) -> bool:
+    """A leader runs from near ``joint`` to the edge of ``box``."""
+    drawn = scheme._labels._leaders
+    pairs = np.column_stack([drawn.x, drawn.y]).reshape(-1, 2, 2)
+    return any(box_distance(box, end) < 1e-6 * (1.0 + abs(end).max())
+               and np.hypot(*(start - joint)) < box_distance(box, joint)
+               for start, end in pairs)
+
+
+@pytest.mark.parametrize("spec", SPECS, ids=["scheme-I", "default"])
+def test_limit_positions_name_their_own_joints_and_crank(qapp, spec):
+    rpms = [60.0]
+    views = figures.ReportViews(spec, rpms, None, analyze(spec.design(), rpms))
+    try:
+        scheme = views._show(SchemeWidget(views.model), *figures.SCHEME_PX)
+        for index in (0, views._end_index):
+            views.model.set_angle_index(index)
+            scheme.fit()
+            QCoreApplication.processEvents()
+            joints = {name: np.array(p) for name, p in scheme.drawn_joints().items()}
+            for name, item in scheme._mechanism.labels.items():
+                if not item.isVisible():
+                    continue
+                box = scheme._screen_box(item)
+                own = box_distance(box, joints[name])
+                other, nearest = min((box_distance(box, p), n) for n, p in joints.items() if n != name)
+                share = 1.0 if led(scheme, box, joints[name]) else 0.5
+                assert own <= share * other, (index, name, own, nearest, other)
+            start = scheme._dimensions.leader_line()[0, 0]
+            assert np.hypot(*(start - joints["A"])) < 1e-6 * spec.crank, (index, start, joints["A"])
+    finally:
+        views.close()
