@@ -255,19 +255,23 @@ class LabelLayout(QObject):
         far, small = np.concatenate(far), np.concatenate(small)
         order = np.lexsort((np.arange(len(far)), small, far))
         names = list(mech.label_directions(index))
-        readable = owned(boxes, np.array([mech.joint_at(n, index) for n in names]),
-                         names.index(name), far)
+        joints, own = np.array([mech.joint_at(n, index) for n in names]), names.index(name)
+        readable, nearest = owned(boxes, joints, own, far), owned(boxes, joints, own, np.ones_like(far))
         near = order[~far[order]]               # most frames end among these: checked first, cheaply
-        for part in (near, order[far[order]]):
-            for k in part[obstacles.clear(boxes[part]) & readable[part]]:
-                lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
-                if len(lead) and meets(taken, lead, np.full(1, margin)).any():
-                    continue
-                return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
+        # a spot that reads as this joint's first, then one at least nearer this joint than
+        # any other, then (a short crank drawn large: O2 and A crowd) any clear one, its
+        # leader telling whose it is
+        for wanted in (readable, nearest, np.ones_like(far)):
+            for part in (near, order[far[order]]):
+                for k in part[obstacles.clear(boxes[part]) & wanted[part]]:
+                    lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
+                    if len(lead) and meets(taken, lead, np.full(1, margin)).any():
+                        continue
+                    return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)
         # nothing clear: the spot the fewest lines come near, but never one whose leader
         # would cross a label
-        barred = ~readable | far & meets(taken, leaders(point, boxes, radius + LEADER_GAP_PX * px),
-                                         np.full(len(boxes), margin)).any(axis=0)
+        barred = far & meets(taken, leaders(point, boxes, radius + LEADER_GAP_PX * px),
+                             np.full(len(boxes), margin)).any(axis=0)
         k = order[obstacles.best(boxes[order], barred[order])]
         lead = leader(point, boxes[k], radius + LEADER_GAP_PX * px) if far[k] else np.empty((0, 2, 2))
         return self._put_joint(name, centres[k], boxes[k], bool(small[k]), lead, obstacles)

@@ -7,7 +7,7 @@ and L1's dimension ran from O2 to the start limit's crank pin, along the other p
 lever (dashed), not along the crank drawn.
 
 A name with no leader must lie within half its distance to any other joint from its own
-joint (box to point); one with a leader at least nearest its own. At a limit position the
+joint (box to point); one with a leader is tied to its joint by it. At a limit position the
 crank is perpendicular to the lever (the lever touches the crank circle), so the crank pin
 A is the tangent point that L1's line runs to: L1's leader starts at the drawn A.
 """
@@ -60,8 +60,8 @@ def test_limit_positions_name_their_own_joints_and_crank(qapp, spec):
                 box = scheme._screen_box(item)
                 own = box_distance(box, joints[name])
                 other, nearest = min((box_distance(box, p), n) for n, p in joints.items() if n != name)
-                share = 1.0 if led(scheme, box, joints[name]) else 0.5
-                assert own <= share * other, (index, name, own, nearest, other)
+                if not led(scheme, box, joints[name]):      # a leader says whose it is
+                    assert own <= 0.5 * other, (index, name, own, nearest, other)
             start = scheme._dimensions.leader_line()[0, 0]
             assert np.hypot(*(start - joints["A"])) < 1e-6 * spec.crank, (index, start, joints["A"])
     finally:
