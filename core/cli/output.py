@@ -11,7 +11,6 @@ import sys
 from pathlib import Path
 from typing import Any, Iterable
 
-from ..drawing import CAD_FONTS
 from ..errors import WriteError, os_reason
 from ..io import atomic_write
 from .common import UsageError
@@ -127,6 +126,8 @@ class GuardedStdout:
 
 def add_cad_font_option(parser) -> None:
     """``--cad-font``, one option for every command that writes a drawing sheet as DXF."""
+    from ..drawing import CAD_FONTS     # here, not at the top: output.py serves every command,
+                                        # and `shaper curves` loads no drawing package
     parser.add_argument("--cad-font", choices=CAD_FONTS,
                         help="how the DXF writes its texts: gb (default), as text in the GB style "
                              "(gbenor.shx, gbcbig.shx) for AutoCAD and ZWCAD; outline, as the "

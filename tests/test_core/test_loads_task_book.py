@@ -204,7 +204,7 @@ def test_the_kinetostatic_sheet_prints_the_end_forces_and_the_flywheel_needed():
     assert rows["Guide reaction N, φ = 270°"] == f"700 N, {d.guide_offset_mm[0, 1]:.4g} mm from C"
     s = summarize(design, [60.0], m)
     table = dict(flywheel_rows(s, m, ENGLISH))
-    assert table[ENGLISH["J_c"]] == "5 kg·m²"
+    assert table[ENGLISH["J_c"]] == "5.000 kg·m²"     # 4 significant digits, core/figure_text.py
     assert table[ENGLISH["J_needed"]] == f"{s.speeds[0].flywheel_inertia_kg_m2 - 5.0:.4g} kg·m²"
     none = task_book(rotors=((1e5, 1.0),))
     assert dict(flywheel_rows(summarize(design, [60.0], none), none, ENGLISH))[ENGLISH["J_needed"]] \
