@@ -522,11 +522,11 @@
     </message>
     <message>
         <source>Ram weight</source>
-        <translation>刨头重量</translation>
+        <translation>滑枕重量</translation>
     </message>
     <message>
         <source>Cutting force</source>
-        <translation>切削阻力</translation>
+        <translation>切削力</translation>
     </message>
     <message>
         <source>Height of the cutting force</source>
@@ -538,7 +538,7 @@
     </message>
     <message>
         <source>Follower arm</source>
-        <translation>从动件摆杆长</translation>
+        <translation>从动件摆臂长</translation>
     </message>
     <message>
         <source>Follower swing</source>

@@ -122,6 +122,7 @@ def _import_engine_first() -> None:
     import core.cam  # noqa: F401  (the cam's model, which Save writes)
     import core.cam.file  # noqa: F401
     import core.dynamics_io  # noqa: F401
+    import core.figure_text  # noqa: F401  (the Results panel's one precision per figure)
     import core.flywheel  # noqa: F401
     import core.gear.file  # noqa: F401  (the gear's model, which Save writes)
     import core.io  # noqa: F401  (core, numpy, the design files)
