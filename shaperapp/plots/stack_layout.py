@@ -95,6 +95,11 @@ def shown_groups(series: Sequence[Series], shown: Mapping[str, bool],
     return groups
 
 
+BESIDE_MIN_WIDTH_PX = 420
+"""The narrowest pane whose legends may stand beside its plots (at 260 and 330 px the lowest
+plot was left one x tick label or none: test_tick_labels_never_overlap)."""
+
+
 def legends_beside(layout: pg.GraphicsLayout, groups: Mapping[str, Sequence[PlotSlots]],
                    legends: Mapping[str, GroupLegend], width: float, port: float) -> bool:
     """Whether the legends go beside their plots: above them the stack would be taller
@@ -103,6 +108,8 @@ def legends_beside(layout: pg.GraphicsLayout, groups: Mapping[str, Sequence[Plot
     least, and the lowest plot is the nearest to the pane (issue 40 chose that over the
     plots' full width). Decided from sizes that do not depend on where the legends are,
     so it never flips back and forth."""
+    if width < BESIDE_MIN_WIDTH_PX:     # a narrow pane: beside, the plots would keep too
+        return False                    # little width for two x tick labels
     need = plots_height(layout, [p for plots in groups.values() for p in plots])
     spacing = layout.layout.verticalSpacing()
     above = need + sum(legends[g].top_height(width) + spacing for g in groups)
