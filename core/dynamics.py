@@ -118,8 +118,10 @@ class MassProperties:
             put(mass, self._from_weight(mass, weight))
         put("rotors", check_rotors(self.rotors))
         if self.guide_length_mm is not None:
-            put("guide_length_mm", require_range("guide_length_mm", self.guide_length_mm, 0.0,
-                                                 MAX_LENGTH_MM, "mm"))
+            # at least 1 mm: the end forces are the moment over the length, and a length
+            # of 1e-320 mm made them infinite (the CLI fuzz's edge values)
+            put("guide_length_mm", require_range("guide_length_mm", self.guide_length_mm, 1.0,
+                                                 MAX_LENGTH_MM, "mm", low_open=False))
         if not isinstance(self.gravity, (bool, np.bool_)):
             raise DesignError("gravity", self.gravity, "must be true or false")
         put("gravity", bool(self.gravity))

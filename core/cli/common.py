@@ -67,7 +67,7 @@ LOAD_OPTIONS = (
     ("--delta", "delta", "D", "coefficient of speed fluctuation δ for the flywheel (default 1/30)"),
     ("--guide-length", "guide_length_mm", "MM",
      "length of the ram's guide (the column's ways), centred on the ram's mid-travel, mm "
-     "(default the stroke H); a guide reaction outside it is carried by its two ends"),
+     "(at least 1, default the stroke H); a guide reaction outside it is carried by its two ends"),
 )
 ROTOR_HELP = ("another rotating part reduced to the crank for the flywheel: its inertia J in kg·m² "
               "and its speed over the crank's, J:RATIO (e.g. 0.02:15 for a motor rotor at 15 times "

@@ -46,5 +46,5 @@ def test_section_7_states_the_flywheel_less_the_rotating_parts(report):
                  and b.caption == "Torque, power and flywheel per crank speed")
     rows = {row[0]: row[1] for row in table.rows}
     s = summarize(Spec().design(), [60.0], LOADS).speeds[0]
-    assert rows["Rotating parts at the crank J_c"] == "5 kg·m²"
+    assert rows["Rotating parts at the crank J_c"] == "5.000 kg·m²"     # 4 significant digits
     assert rows["Flywheel needed J_F − J_c"] == f"{s.flywheel_inertia_kg_m2 - 5.0:.4g} kg·m²"
