@@ -78,8 +78,8 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
             for dest in REQUIRED_LOADS:
                 if dest not in changes:
                     other = ALTERNATIVES.get(dest)
-                    also = f" or {option_name(other)}" if other else ""
-                    raise UsageError(f"{option_name(dest)}{also}: required (or give --design with loads)")
+                    also = f" (or {option_name(other)})" if other else ""   # one option names the line
+                    raise UsageError(f"{option_name(dest)}: required{also}, or give --design with loads")
         base = MassProperties()
     return replace(base, **changes)
 
