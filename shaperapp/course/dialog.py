@@ -1,6 +1,7 @@
 """File › Export course design…: the sheets' paper, DXF and speed (``shaper course``'s
 --sheet, --dxf, --rpm-index), a folder, then the report and every sheet written into it
-under a progress dialog (``widgets.progress_dialog``), by the same code as ``shaper course``.
+in a child process under a progress dialog that leaves the window usable
+(``widgets.export_process``), by the same code as ``shaper course``.
 
 The design is the one on screen as Save would write it (``document.saved_parts``), read
 back by the design file's own reader, so the GUI and the command make the same files
@@ -21,21 +22,20 @@ from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFileDialog,
                                QFormLayout, QMessageBox, QWidget)
 
-from core.cli.allocator import return_freed_memory
 from core.course import CourseError, plan_course
 from core.design_file import parse_design
 from core.drawing.sheet import PAPERS
 from core.io import design_document
-from core.progress import Cancelled
 
 from shaperapp.design.document import saved_parts
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.messages import describe_os_error, failure_reason
-from shaperapp.widgets.progress_dialog import run_with_progress
+from shaperapp.widgets.export_child import job_bytes
+from shaperapp.widgets.export_process import ChildExport
 
-from .write import Covering, write_course
+from .write import Covering, write_course_of
 
 
 translate = QCoreApplication.translate
@@ -126,63 +126,66 @@ def refusal(exc: CourseError) -> str:
 
 def export_course(model: DesignModel, folder: str, language: str, parent: QWidget | None = None,
                   settings: QSettings | None = None,
-                  options: CourseOptions = CourseOptions()) -> tuple[list[str], str]:
-    """Write the course design into ``folder`` with a progress dialog; returns the paths
-    written and '' or the failure (in the UI's language) that stopped the run."""
-    try:
-        course = plan(model, folder, options.dxf)
-    except CourseError as exc:
-        return [], refusal(exc)
+                  options: CourseOptions = CourseOptions()) -> ChildExport:
+    """Start writing the course design into ``folder`` in a child process, under a progress
+    dialog that leaves the window usable; returns the running export, whose ``result`` at
+    its end is the paths written and '' or why it stopped (in the UI's language).
+    CourseError (nothing started) when the design cannot make one (:func:`refusal`)."""
+    course = plan(model, folder, options.dxf)
     total = len(course.files)
-    written: list[str] = []
+    job = job_bytes(write_course_of, language, course=course, language=language,
+                    covering=covering(model, settings, options.paper, options.speed))
 
-    def job(progress, say) -> None:
-        files = write_course(course, language, covering(model, settings, options.paper, options.speed),
-                             progress)
-        try:
-            for number, file in enumerate(course.files, start=1):
-                say(translate("CourseExport", "Writing %1 (%2 of %3)…").replace(
-                    "%1", os.path.basename(file.path)).replace("%2", str(number)).replace("%3", str(total)))
-                written.append(next(files).path)
-        finally:
-            files.close()
-    try:
-        run_with_progress(job, translate("CourseExport", "Export course design"),
-                          translate("CourseExport", "Writing the course design…"), parent)
-        return written, ""
-    except Cancelled:
-        text = translate("CourseExport", "Cancelled: %1 of %2 files written, each complete.")
-        return written, text.replace("%1", str(len(written))).replace("%2", str(total))
-    except MissingFontError:
-        failure = translate("CourseExport", "No font with Chinese characters is installed: install one "
-                            "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
-    except OSError as exc:
-        failure = translate("CourseExport", "Could not write %1: %2").replace(
+    def conclude(run: ChildExport) -> tuple[list[str], str]:
+        written = list(run.files)
+        if run.state == "done":
+            return written, ""
+        if run.state == "cancelled":
+            text = translate("CourseExport", "Cancelled: %1 of %2 files written, each complete.")
+            return written, text.replace("%1", str(len(written))).replace("%2", str(total))
+        failure = course_failure(run.error, folder)
+        if written:
+            failure += " " + translate("CourseExport", "The %1 files written before it are complete."
+                                       ).replace("%1", str(len(written)))
+        return written, failure
+    return ChildExport(job, [file.path for file in course.files], folder,
+                       translate("CourseExport", "Export course design"),
+                       translate("CourseExport", "Writing the course design…"), parent, conclude)
+
+
+def course_failure(exc: BaseException | None, folder: str) -> str:
+    """Why the course design stopped, in the UI's language: one line, never a traceback."""
+    if isinstance(exc, MissingFontError):
+        return translate("CourseExport", "No font with Chinese characters is installed: install one "
+                         "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
+    if isinstance(exc, OSError):
+        return translate("CourseExport", "Could not write %1: %2").replace(
             "%1", exc.filename or folder).replace("%2", describe_os_error(exc))
-    except Exception as exc:            # never to sys.excepthook: the reason, in a message
-        failure = translate("CourseExport", "The course design cannot be made: %1.").replace(
-            "%1", failure_reason(exc))
-    finally:
-        return_freed_memory()           # the sheets' and the report's arrays, freed by now
-    if written:
-        failure += " " + translate("CourseExport", "The %1 files written before it are complete.").replace(
-            "%1", str(len(written)))
-    return written, failure
+    return translate("CourseExport", "The course design cannot be made: %1.").replace(
+        "%1", failure_reason(exc) if exc is not None else "?")
 
 
 def export_course_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
-                         settings: QSettings | None = None) -> str:
-    """Ask for the options and a folder and write the course design into it; returns the
-    folder or ''."""
+                         settings: QSettings | None = None) -> ChildExport | None:
+    """Ask for the options and a folder and start writing the course design into it;
+    returns the running export (its ``result``: :func:`export_course`'s) or None when
+    nothing was started. A refusal or a failure is shown in a message."""
     options = ask_course_options(model, parent)
     if options is None:
-        return ""
+        return None
     folder = QFileDialog.getExistingDirectory(
         parent, translate("CourseExport", "Export course design: choose a folder"), start_dir)
     if not folder:
-        return ""
-    _, failure = export_course(model, folder, language, parent, settings, options)
-    if failure:
-        QMessageBox.warning(parent, translate("CourseExport", "Export course design"), failure)
-        return ""
-    return folder
+        return None
+    title = translate("CourseExport", "Export course design")
+    try:
+        run = export_course(model, folder, language, parent, settings, options)
+    except CourseError as exc:
+        QMessageBox.warning(parent, title, refusal(exc))
+        return None
+
+    def tell() -> None:
+        if run.result[1]:
+            QMessageBox.warning(parent, title, run.result[1])
+    run.ended.connect(tell)
+    return run

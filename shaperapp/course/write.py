@@ -8,7 +8,7 @@ and its DXF.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Iterator
+from typing import Callable, Iterator
 
 import numpy as np
 
@@ -74,6 +74,14 @@ def write_course(course: Course, language: str, covering: Covering,
             write_sheet(sheets[part.stem], file.path, language, covering.title, covering.cad_font)
         share.note(1.0)
         yield file
+
+
+def write_course_of(progress: Progress, file_done: Callable[[str], None], course: Course, language: str,
+                    covering: Covering) -> None:
+    """:func:`write_course`, telling ``file_done`` of each file once it is complete: the job
+    of the export's child process (``widgets.export_child``)."""
+    for file in write_course(course, language, covering, progress):
+        file_done(file.path)
 
 
 def _report(course: Course, language: str, covering: Covering, progress: Progress = Progress()):

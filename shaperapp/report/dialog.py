@@ -12,6 +12,7 @@ import datetime
 import html
 import os
 from dataclasses import replace
+from typing import Callable
 
 from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
@@ -22,7 +23,7 @@ from core.cam.file import cam_from_dict
 from core.compare import MAX_DESIGNS, Candidate
 from core.dynamics import masses_for_design
 from core.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
-from core.progress import Cancelled, Progress
+from core.progress import Progress
 from shaperapp.design.gear_source import design_gear
 from shaperapp.design.model import DesignModel
 
@@ -33,7 +34,8 @@ from .content import BUILD_SHARE, Options, build, default_diagram_angles, inputs
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.command_line import plain_text, printable_labels
 from shaperapp.widgets.messages import describe_os_error, failure_reason
-from shaperapp.widgets.progress_dialog import run_with_progress
+from shaperapp.widgets.export_child import job_bytes
+from shaperapp.widgets.export_process import ChildExport
 
 translate = QCoreApplication.translate
 
@@ -145,31 +147,49 @@ def export_report(model: DesignModel, path: str, language: str, options: Options
     called ``name``, else by its file name, else by its inputs. ``progress`` hears of every
     section and page; Cancelled when it says stop, and nothing is written."""
     report_kind(path)
-    design = model.design
-    masses = masses_for_design(design, model.masses)
+    return write_report_of(progress, lambda _path: None, path, language,
+                           **report_inputs(model, options, name, date))
+
+
+def report_inputs(model: DesignModel, options: Options = Options(), name: str = "",
+                  date: str = "") -> dict:
+    """What the report is built from, taken from the model now: the snapshot an export in
+    a child process works on while the design on screen may change."""
+    masses = masses_for_design(model.design, model.masses)
     cam = model.saved_parts().get("cam")
     if cam is not None and options.cam is None:
         options = replace(options, cam=cam_from_dict(cam))
     gear = design_gear(model)
     if gear is not None and options.gear is None:
         options = replace(options, gear=gear)
-    report = build(model.valid_spec, list(model.rpms), masses, name or design_name(model),
-                   date or datetime.date.today().isoformat(), language, options,
-                   progress.part(0.0, BUILD_SHARE))
+    return {"spec": model.valid_spec, "rpms": list(model.rpms), "masses": masses,
+            "title": name or design_name(model), "date": date or datetime.date.today().isoformat(),
+            "options": options}
+
+
+def write_report_of(progress: Progress, file_done: Callable[[str], None], path: str, language: str,
+                    spec, rpms: list[float], masses, title: str, date: str, options: Options) -> int:
+    """Build the report of :func:`report_inputs` and write it to ``path``; the page count.
+    The job of the export's child process (``widgets.export_child``)."""
+    report = build(spec, rpms, masses, title, date, language, options, progress.part(0.0, BUILD_SHARE))
     try:
-        return write_report(report, path, progress.part(BUILD_SHARE, 1.0))
+        pages = write_report(report, path, progress.part(BUILD_SHARE, 1.0))
     finally:
         del report
         return_freed_memory()           # the report's figures and pages, freed now (issue 42)
+    file_done(path)
+    return pages
 
 
 def export_report_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
-                         settings: QSettings | None = None) -> str:
-    """Ask for the options and a file, write the report; returns the path written or ''.
-    The cover fields are kept in ``settings`` once accepted."""
+                         settings: QSettings | None = None) -> ChildExport | None:
+    """Ask for the options and a file, then start writing the report in a child process
+    (the window stays usable); returns the running export, whose ``result`` at its end is
+    the path written or '', or None when nothing was started. A failure is shown in a
+    message. The cover fields are kept in ``settings`` once accepted."""
     dialog = ReportOptionsDialog(model, parent, settings)
     if dialog.exec() != QDialog.DialogCode.Accepted:
-        return ""
+        return None
     dialog.remember()
     start = os.path.join(start_dir, "report.pdf")
     pdf_filter = translate("ReportOptionsDialog", "PDF document (*.pdf)")
@@ -177,7 +197,7 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
         parent, translate("ReportOptionsDialog", "Export design report"), start,
         pdf_filter + ";;" + translate("ReportOptionsDialog", "HTML page (*.html)"))
     if not path:
-        return ""
+        return None
     if not os.path.splitext(os.path.basename(path))[1]:      # typed without a type
         path += ".pdf" if chosen == pdf_filter else ".html"
     try:
@@ -187,26 +207,28 @@ def export_report_dialog(model: DesignModel, parent: QWidget, language: str, sta
                             translate("ReportOptionsDialog", "A report is written as PDF (.pdf) or HTML "
                                       "(.html, .htm); %1 is neither. Nothing was written.")
                             .replace("%1", os.path.basename(path)))
-        return ""
+        return None
     title = translate("ReportOptionsDialog", "Export design report")
-    try:
-        run_with_progress(lambda progress, _say: export_report(model, path, language, dialog.options(),
-                                                         dialog.name(), dialog.date(), progress),
-                          title, translate("ReportOptionsDialog", "Writing the report…"), parent)
-    except Cancelled:
+    job = job_bytes(write_report_of, language, path=path, language=language,
+                    **report_inputs(model, dialog.options(), dialog.name(), dialog.date()))
+
+    def conclude(run: ChildExport) -> str:
+        if run.state == "done":
+            return path
+        if run.state == "failed":
+            QMessageBox.warning(parent, title, report_failure(run.error, path))
         return ""
-    except MissingFontError:
-        failure = translate("ReportOptionsDialog", "No font with Chinese characters is installed. Install one "
-                            "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
-    except OSError as exc:
-        failure = translate("ReportOptionsDialog", "Could not write %1: %2").replace("%1", path) \
+    return ChildExport(job, [path], path, title, translate("ReportOptionsDialog", "Writing the report…"),
+                       parent, conclude)
+
+
+def report_failure(exc: BaseException | None, path: str) -> str:
+    """Why the report was not written, in the UI's language: one line, never a traceback."""
+    if isinstance(exc, MissingFontError):
+        return translate("ReportOptionsDialog", "No font with Chinese characters is installed. Install one "
+                         "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language to English.")
+    if isinstance(exc, OSError):
+        return translate("ReportOptionsDialog", "Could not write %1: %2").replace("%1", path) \
             .replace("%2", describe_os_error(exc))
-    except Exception as exc:        # never to sys.excepthook: the reason, in a message
-        failure = translate("ReportOptionsDialog", "The report cannot be made: %1. Nothing was "
-                            "written.").replace("%1", failure_reason(exc))
-    else:
-        failure = ""
-    if failure:
-        QMessageBox.warning(parent, translate("ReportOptionsDialog", "Export design report"), failure)
-        return ""
-    return path
+    return translate("ReportOptionsDialog", "The report cannot be made: %1. Nothing was "
+                     "written.").replace("%1", failure_reason(exc) if exc is not None else "?")

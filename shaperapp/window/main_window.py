@@ -348,10 +348,21 @@ class MainWindow(QMainWindow):
         if not self.document.confirm_valid(self, saving=False):
             return
         from shaperapp.report.dialog import export_report_dialog   # builds offscreen views: load on demand
-        path = export_report_dialog(self.model, self, self._language,
-                                    self.document.last_dir(), self.settings)
-        if path:
-            self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
+        self._exporting(self.act_report, export_report_dialog(self.model, self, self._language,
+                                                              self.document.last_dir(), self.settings))
+
+    def _exporting(self, action, run) -> None:
+        """While an export's child process writes (the window usable meanwhile), its menu
+        action is off; at its end what was written shows in the status bar."""
+        if run is None:
+            return
+        action.setEnabled(False)
+
+        def ended() -> None:
+            action.setEnabled(True)
+            if run.state == "done":
+                self.statusBar().showMessage(self.tr("Saved %1").replace("%1", run.saved_as), 4000)
+        run.ended.connect(ended)
 
     def _export_sheet(self) -> None:
         if not self.document.confirm_valid(self, saving=False):
@@ -366,9 +377,8 @@ class MainWindow(QMainWindow):
         if not self.document.confirm_valid(self, saving=False):
             return
         from shaperapp.course.dialog import export_course_dialog   # load on demand
-        folder = export_course_dialog(self.model, self, self._language, self.document.last_dir(), self.settings)
-        if folder:
-            self.statusBar().showMessage(self.tr("Saved %1").replace("%1", folder), 4000)
+        self._exporting(self.act_course, export_course_dialog(self.model, self, self._language,
+                                                              self.document.last_dir(), self.settings))
 
     def _class_course(self) -> None:
         from shaperapp.course.class_dialog import class_dialog   # load on demand
