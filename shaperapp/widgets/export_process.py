@@ -51,6 +51,7 @@ class ChildExport(QObject):
         self.result: Any = None
         self.cancelled = False
         self._targets, self._conclude, self._buffer = targets, conclude, b""
+        QGuiApplication.setOverrideCursor(Qt.CursorShape.BusyCursor)
         self.dialog = QProgressDialog(label, translate("Progress", "Cancel"), 0, STEPS, parent)
         self.dialog.setWindowTitle(title)
         self.dialog.setWindowModality(Qt.WindowModality.NonModal)
@@ -60,7 +61,6 @@ class ChildExport(QObject):
         self.dialog.setValue(0)
         self.dialog.canceled.connect(self.cancel)
         self.dialog.show()
-        QGuiApplication.setOverrideCursor(Qt.CursorShape.BusyCursor)
         self.process = QProcess(self)
         env = QProcessEnvironment.systemEnvironment()
         env.insert("QT_QPA_PLATFORM", "offscreen")

@@ -1,25 +1,29 @@
-"""The report and the course design written under a progress dialog (issue 40, item 5):
-the bar moves with every section and page, only forward, to its maximum; the cursor is
-busy meanwhile; Cancel leaves no file (nor a temporary one) behind; the headless writers
-take the same progress (``core.progress``), for ``shaper course`` and ``shaper class``."""
+"""The report written by a child process under a progress dialog (issue 40, item 5): the
+window stays usable meanwhile (a click on a tab switches it), the bar moves with every
+section and page, only forward, to its maximum; the cursor is busy meanwhile; Cancel
+leaves no file (nor a temporary one) and no process behind; a failure in the child is
+one translated line; the headless writers take the same progress (``core.progress``),
+for ``shaper course`` and ``shaper class``."""
 import os
 
 import pytest
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QProcess, Qt
 from PySide6.QtGui import QGuiApplication
-from PySide6.QtWidgets import QDialog, QFileDialog, QMessageBox, QProgressDialog
+from PySide6.QtTest import QTest
+from PySide6.QtWidgets import QDialog, QFileDialog, QMessageBox, QProgressDialog, QPushButton
 
+import export_faults
 from core.progress import Cancelled, Progress
 from shaperapp.report import dialog as report_dialog
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
-from shaperapp.widgets.progress_dialog import STEPS
+from shaperapp.widgets import i18n
+from shaperapp.widgets.export_process import STEPS
 
 
 @pytest.fixture
 def bar(monkeypatch):
-    """Every value the progress dialog is set to, with the override cursor's shape then;
-    ``stop_at`` (a value of the bar) makes Cancel pressed once the bar has passed it."""
-    seen = {"values": [], "cursors": [], "stop_at": None, "maximum": []}
+    """Every value the progress dialog is set to, with the override cursor's shape then."""
+    seen = {"values": [], "cursors": [], "maximum": []}
     set_value = QProgressDialog.setValue
 
     def record(self, value):
@@ -29,8 +33,6 @@ def bar(monkeypatch):
         seen["cursors"].append(None if cursor is None else cursor.shape())
         set_value(self, value)
     monkeypatch.setattr(QProgressDialog, "setValue", record)
-    monkeypatch.setattr(QProgressDialog, "wasCanceled", lambda self: seen["stop_at"] is not None
-                        and bool(seen["values"]) and seen["values"][-1] >= seen["stop_at"])
     return seen
 
 
@@ -46,6 +48,11 @@ def report_answers(monkeypatch, tmp_path):
     return out, warnings
 
 
+def press_cancel(run) -> None:
+    """A click on the progress dialog's Cancel."""
+    run.dialog.findChild(QPushButton).click()
+
+
 def test_the_headless_report_hears_of_every_section_and_page_in_order(model, tmp_path):
     model.set_rpms([40.0, 60.0])
     heard = []
@@ -56,7 +63,9 @@ def test_the_headless_report_hears_of_every_section_and_page_in_order(model, tmp
 
 def test_the_bar_moves_forward_to_its_maximum_under_a_busy_cursor(window, bar, report_answers):
     out, warnings = report_answers
-    assert report_dialog.export_report_dialog(window.model, window, "en", str(out)) == str(out / "report.pdf")
+    run = report_dialog.export_report_dialog(window.model, window, "en", str(out))
+    assert run.dialog.windowModality() == Qt.WindowModality.NonModal
+    assert run.wait() and run.result == str(out / "report.pdf")
     assert warnings == [] and (out / "report.pdf").read_bytes().startswith(b"%PDF")
     values = bar["values"]
     assert values == sorted(values) and values[-1] == STEPS and set(bar["maximum"]) == {STEPS}
@@ -65,15 +74,66 @@ def test_the_bar_moves_forward_to_its_maximum_under_a_busy_cursor(window, bar, r
     assert QGuiApplication.overrideCursor() is None          # given back
 
 
+def test_the_window_takes_clicks_while_the_report_is_written(window, report_answers, qtbot):
+    """A click on another tab switches to it while the child writes, and editing the design
+    then does not change the report: the child works on the design as it was."""
+    out, warnings = report_answers
+    run = report_dialog.export_report_dialog(window.model, window, "en", str(out))
+    qtbot.waitUntil(lambda: run.dialog.value() > 0, timeout=120_000)     # the child is writing
+    bar = window.tabs.tabBar()
+    target = (window.tabs.currentIndex() + 1) % window.tabs.count()
+    QTest.mouseClick(bar, Qt.MouseButton.LeftButton, pos=bar.tabRect(target).center())
+    assert window.tabs.currentIndex() == target and run.state == "running"
+    crank = window.model.valid_spec
+    window.model.set_rpms([11.0])                 # an edit meanwhile: not in the report
+    assert run.wait() and run.result == str(out / "report.pdf") and warnings == []
+    assert window.model.valid_spec == crank
+    from language_checks import has_pdftotext, pdf_text
+    if has_pdftotext():
+        assert "11 r/min" not in pdf_text(out / "report.pdf")
+
+
 @pytest.mark.parametrize("stop_at", [1, 500, 900])        # building, the last section, the pages
-def test_cancel_leaves_nothing_behind(window, bar, report_answers, stop_at):
+def test_cancel_leaves_nothing_behind(window, report_answers, qtbot, stop_at):
     out, warnings = report_answers
     (out / "report.pdf").write_bytes(b"the old report")       # a report written before stays as it was
-    bar["stop_at"] = stop_at
-    assert report_dialog.export_report_dialog(window.model, window, "en", str(out)) == ""
+    run = report_dialog.export_report_dialog(window.model, window, "en", str(out))
+    run.progressed.connect(lambda fraction: fraction * STEPS >= stop_at and press_cancel(run))
+    assert run.wait() and run.state == "cancelled" and run.result == ""
     assert warnings == []                                     # Cancel is no failure to report
     assert os.listdir(out) == ["report.pdf"] and (out / "report.pdf").read_bytes() == b"the old report"
-    assert max(bar["values"]) < STEPS and QGuiApplication.overrideCursor() is None
+    assert run.process.state() == QProcess.ProcessState.NotRunning
+    assert QGuiApplication.overrideCursor() is None
+
+
+def test_a_child_that_will_not_stop_is_killed_and_its_temporary_file_removed(window, report_answers,
+                                                                             monkeypatch):
+    """A child deaf to Cancel (stuck in a long step) is killed; the temporary file it had
+    begun is removed, the old report stays."""
+    out, warnings = report_answers
+    (out / "report.pdf").write_bytes(b"the old report")
+    monkeypatch.setattr(report_dialog, "write_report_of", export_faults.stuck_report)
+    monkeypatch.setenv("PYTHONPATH", os.path.dirname(export_faults.__file__))
+    run = report_dialog.export_report_dialog(window.model, window, "en", str(out))
+    run.progressed.connect(lambda fraction: press_cancel(run))
+    assert run.wait() and run.state == "cancelled" and warnings == []
+    assert os.listdir(out) == ["report.pdf"] and (out / "report.pdf").read_bytes() == b"the old report"
+    assert run.process.state() == QProcess.ProcessState.NotRunning
+
+
+def test_a_child_that_cannot_write_says_why_in_the_ui_language(window, report_answers, qtbot):
+    """The child fails (the name is taken by a folder): one line in Chinese, no traceback."""
+    out, warnings = report_answers
+    (out / "report.pdf").mkdir()
+    i18n.set_language("zh_CN")
+    try:
+        run = report_dialog.export_report_dialog(window.model, window, "zh_CN", str(out))
+        assert run.wait() and run.state == "failed" and run.result == ""
+    finally:
+        i18n.set_language("en")
+    assert len(warnings) == 1 and "\n" not in warnings[0] and "Traceback" not in warnings[0]
+    assert warnings[0].startswith("无法写入") and str(out / "report.pdf") in warnings[0]
+    assert os.listdir(out) == ["report.pdf"] and os.listdir(out / "report.pdf") == []
 
 
 def test_a_cancelled_headless_report_raises_and_writes_nothing(model, tmp_path):
