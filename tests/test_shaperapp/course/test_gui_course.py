@@ -5,7 +5,11 @@ import re
 
 import pytest
 
+import export_faults
+from export_faults import in_child, last_run
 from language_checks import has_pdftotext, pdf_text
+from PySide6.QtWidgets import QPushButton
+from shaperapp.widgets.export_process import ChildExport
 
 NAMES = ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf", "04-gear.pdf"]
 
@@ -53,35 +57,24 @@ def test_a_design_without_a_part_is_refused_and_nothing_written(window, answers,
     assert os.listdir(out) == []
 
 
-@pytest.fixture
-def quick_report(monkeypatch):
-    """The report written as a small stand-in file (atomically, as the real one): the
-    tests of Cancel and of a failed write are about the run, not the report's pages."""
-    from core.atomic import atomic_write
-    monkeypatch.setattr("shaperapp.course.write._report", lambda *args: None)
-    monkeypatch.setattr("shaperapp.course.write.write_report",
-                        lambda report, path, *progress: atomic_write(path, b"%PDF-1.4\n%%EOF\n"))
-
-
-def test_cancel_after_the_first_file_keeps_it_complete_and_says_so(window, answers, monkeypatch,
-                                                                    quick_report):
+def test_cancel_after_the_first_file_keeps_it_complete_and_says_so(window, answers, monkeypatch):
     out, shown = answers
-    asked = []
-    monkeypatch.setattr("shaperapp.widgets.progress_dialog.QProgressDialog.wasCanceled",
-                        lambda self: asked.append(1) or len(asked) > 1)
+    in_child(monkeypatch, "shaperapp.course.dialog.write_course_of",
+             export_faults.quick_course_cancelled_after_the_report)
     window.act_course.trigger()
+    run = window.findChildren(ChildExport)[-1]
+    run.progressed.connect(lambda fraction: fraction > 0.5 and run.dialog.findChild(QPushButton).click())
+    assert last_run(window).state == "cancelled"
     assert os.listdir(out) == ["00-report.pdf"]
     assert (out / "00-report.pdf").read_bytes().rstrip().endswith(b"%%EOF")
     assert shown == ["Cancelled: 1 of 5 files written, each complete."]
 
 
-def test_a_failed_write_names_the_file_and_the_files_before_it(window, answers, monkeypatch, quick_report):
+def test_a_failed_write_names_the_file_and_the_files_before_it(window, answers, monkeypatch):
     out, shown = answers
-
-    def full(sheet, path, *args):
-        raise OSError(28, "No space left on device", path)
-    monkeypatch.setattr("shaperapp.course.write.write_sheet", full)
+    in_child(monkeypatch, "shaperapp.course.dialog.write_course_of", export_faults.quick_course_disk_full)
     window.act_course.trigger()
+    assert last_run(window).state == "failed"
     assert os.listdir(out) == ["00-report.pdf"]
     assert len(shown) == 1 and "01-motion.pdf" in shown[0] and "disk is full" in shown[0]
     assert shown[0].endswith("The 1 files written before it are complete.")
@@ -93,6 +86,7 @@ def test_export_writes_the_files_of_shaper_course_with_the_report_cover(window, 
     out, shown = answers
     window.settings.setValue("report/student", "Wang Wu")      # as the report dialog keeps it
     window.act_course.trigger()
+    assert last_run(window).state == "done"
     # the design on screen always has a gear pair (the Gear tab's, the default one here)
     assert shown == []
     assert sorted(os.listdir(out)) == NAMES

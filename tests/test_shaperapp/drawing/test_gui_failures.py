@@ -2,6 +2,8 @@
 be built: a result, or the reason in the dialog; never an exception for sys.excepthook
 and never the wrong reason ("is none of them" for a .dxf) (issue 33, item 1)."""
 import ezdxf
+import export_faults
+from export_faults import finished, in_child
 import pytest
 from PySide6.QtWidgets import QDialog, QFileDialog, QMessageBox
 
@@ -61,7 +63,7 @@ def test_report_of_a_design_without_loads_is_written(unloaded, qtbot, tmp_path, 
     monkeypatch.setattr(report_dialog.ReportOptionsDialog, "exec", lambda self: QDialog.DialogCode.Accepted)
     target = tmp_path / "zero.html"
     monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(target), ""))
-    assert report_dialog.export_report_dialog(unloaded, None, "en", str(tmp_path)) == str(target)
+    assert finished(report_dialog.export_report_dialog(unloaded, None, "en", str(tmp_path))) == str(target)
     assert warnings == []
     assert "Force polygon" in target.read_text(encoding="utf-8")
 
@@ -71,10 +73,8 @@ def test_a_report_that_cannot_be_built_says_why_and_writes_nothing(model, qtbot,
     monkeypatch.setattr(report_dialog.ReportOptionsDialog, "exec", lambda self: QDialog.DialogCode.Accepted)
     monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(tmp_path / "r.pdf"), ""))
 
-    def broken(*_args, **_kwargs):
-        raise ValueError("the loads do not add up")
-    monkeypatch.setattr(report_dialog, "build", broken)
-    assert report_dialog.export_report_dialog(model, None, "en", str(tmp_path)) == ""
+    in_child(monkeypatch, "shaperapp.report.dialog.write_report_of", export_faults.broken_report)
+    assert finished(report_dialog.export_report_dialog(model, None, "en", str(tmp_path))) == ""
     assert len(warnings) == 1 and "the loads do not add up" in warnings[0]
     assert list(tmp_path.iterdir()) == []
 

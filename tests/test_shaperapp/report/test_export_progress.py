@@ -112,8 +112,7 @@ def test_a_child_that_will_not_stop_is_killed_and_its_temporary_file_removed(win
     begun is removed, the old report stays."""
     out, warnings = report_answers
     (out / "report.pdf").write_bytes(b"the old report")
-    monkeypatch.setattr(report_dialog, "write_report_of", export_faults.stuck_report)
-    monkeypatch.setenv("PYTHONPATH", os.path.dirname(export_faults.__file__))
+    export_faults.in_child(monkeypatch, "shaperapp.report.dialog.write_report_of", export_faults.stuck_report)
     run = report_dialog.export_report_dialog(window.model, window, "en", str(out))
     run.progressed.connect(lambda fraction: press_cancel(run))
     assert run.wait() and run.state == "cancelled" and warnings == []

@@ -6,6 +6,7 @@ import stat
 import subprocess
 
 from core.compare import Candidate
+from export_faults import finished
 from core.spec import Spec
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
 from core.figure_text import figure_text
@@ -95,12 +96,14 @@ def test_dialog_adds_the_chosen_type_and_refuses_another(window, qtbot, tmp_path
     warnings = []
     monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: warnings.append(a[2]))
     answers.append((str(tmp_path / "typed"), "PDF document (*.pdf)"))
-    assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)) == str(tmp_path / "typed.pdf")
+    assert finished(report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path))) \
+        == str(tmp_path / "typed.pdf")
     assert (tmp_path / "typed.pdf").read_bytes().startswith(b"%PDF")
     answers.append((str(tmp_path / "page"), "HTML page (*.html)"))
-    assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)).endswith("page.html")
+    assert finished(report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path))) \
+        .endswith("page.html")
     answers.append((str(tmp_path / "r.txt"), "PDF document (*.pdf)"))
-    assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)) == ""
+    assert report_dialog.export_report_dialog(window.model, window, "en", str(tmp_path)) is None
     assert len(warnings) == 1 and "r.txt" in warnings[0]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["page.html", "typed.pdf"]
 
@@ -122,7 +125,8 @@ def test_cover_fields_are_remembered_between_exports(window, qtbot, tmp_path, mo
         return QDialog.DialogCode.Accepted
     monkeypatch.setattr(ReportOptionsDialog, "exec", fill)
     window.model.set_path(str(tmp_path / "bracket.shaper.json"))
-    assert export_report_dialog(window.model, window, "en", str(tmp_path), window.settings) == str(target)
+    assert finished(export_report_dialog(window.model, window, "en", str(tmp_path), window.settings)) \
+        == str(target)
     page = target.read_text(encoding="utf-8")
     for text in typed.values():
         assert f"<td>{text}</td>" in page
