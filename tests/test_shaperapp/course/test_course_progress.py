@@ -1,6 +1,6 @@
-"""File › Export course design… under a progress dialog (issue 40, item 5): the bar moves
-forward through the report's sections and pages and every sheet to its maximum, Cancel
-in the report leaves nothing, and the files written with the paper, DXF and speed chosen
+"""File › Export course design… in a child process under a progress dialog (issue 40,
+item 5): the bar moves forward through the report's sections and pages and every sheet
+to its maximum, Cancel in the report leaves nothing (no file, no process), and the files written with the paper, DXF and speed chosen
 in the GUI are those of ``shaper course`` with --sheet, --dxf and --rpm-index."""
 import json
 import os
@@ -9,23 +9,25 @@ import subprocess
 import ezdxf
 import numpy as np
 import pytest
-from PySide6.QtWidgets import QFileDialog, QMessageBox, QProgressDialog
+from PySide6.QtCore import QProcess
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QProgressDialog, QPushButton
 
 from cli_runner import shaper_in_process
+from export_faults import last_run
 from core.io import design_document
 from core.progress import Progress
 from language_checks import has_pdftotext, pdf_text
 from shaperapp.course.dialog import CourseOptions, CourseOptionsDialog, plan
 from shaperapp.course.write import Covering, write_course
 from shaperapp.design.document import saved_parts
-from shaperapp.widgets.progress_dialog import STEPS
+from shaperapp.widgets.export_process import ChildExport, STEPS
 
 
 @pytest.fixture
 def gui(monkeypatch, tmp_path, window):
     """The window's design on two speeds saved as d.shaper.json (and named by it); the
     options and folder dialogs answered (``chosen``: the options), warnings recorded,
-    every value of the bar recorded, Cancel pressed once the bar reaches ``stop_at``."""
+    every value of the bar recorded."""
     window.model.set_rpms([40.0, 60.0])
     path = tmp_path / "d.shaper.json"
     m = window.model
@@ -34,7 +36,7 @@ def gui(monkeypatch, tmp_path, window):
     m.set_path(str(path))
     out = tmp_path / "gui"
     out.mkdir()
-    seen = {"values": [], "stop_at": None, "shown": [], "chosen": CourseOptions(), "path": path,
+    seen = {"values": [], "shown": [], "chosen": CourseOptions(), "path": path,
             "out": out}
     monkeypatch.setattr("shaperapp.course.dialog.ask_course_options", lambda *a: seen["chosen"])
     monkeypatch.setattr(QFileDialog, "getExistingDirectory", lambda *a, **k: str(out))
@@ -45,8 +47,6 @@ def gui(monkeypatch, tmp_path, window):
         seen["values"].append(value)
         set_value(self, value)
     monkeypatch.setattr(QProgressDialog, "setValue", record)
-    monkeypatch.setattr(QProgressDialog, "wasCanceled", lambda self: seen["stop_at"] is not None
-                        and bool(seen["values"]) and seen["values"][-1] >= seen["stop_at"])
     return seen
 
 
@@ -72,8 +72,11 @@ def test_the_headless_writer_reports_every_file_in_order(window, tmp_path):
 
 
 def test_cancel_within_the_report_leaves_nothing(window, gui):
-    gui["stop_at"] = 200                        # the report is the first two thirds
     window.act_course.trigger()
+    run = window.findChildren(ChildExport)[-1]          # Cancel pressed once the bar passes 200
+    run.progressed.connect(lambda fraction: fraction >= 0.2 and run.dialog.findChild(QPushButton).click())
+    assert last_run(window).state == "cancelled"        # the report is the first two thirds
+    assert run.process.state() == QProcess.ProcessState.NotRunning
     assert os.listdir(gui["out"]) == []
     assert gui["shown"] == ["Cancelled: 0 of 5 files written, each complete."]
     assert gui["values"] == sorted(gui["values"]) and max(gui["values"]) < STEPS
@@ -107,6 +110,7 @@ def pdf_pixels(path) -> np.ndarray:
 def test_the_files_are_those_of_shaper_course_with_the_same_choices(window, gui, tmp_path):
     gui["chosen"] = CourseOptions("A3", True, 1)
     window.act_course.trigger()
+    assert last_run(window).state == "done"
     assert gui["shown"] == []
     values = gui["values"]
     assert values == sorted(values) and values[-1] == STEPS and len(set(values)) > 20
