@@ -4084,6 +4084,14 @@
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
+    </message>
+    <message>
+        <source>the export&apos;s process stopped unexpectedly (exit status %1)</source>
+        <translation>导出进程意外终止（退出状态 %1）</translation>
+    </message>
 </context>
 <context>
     <name>Report</name>
