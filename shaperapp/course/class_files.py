@@ -14,7 +14,7 @@ from typing import Any, Mapping, Sequence
 from PySide6.QtCore import QCoreApplication
 
 from core.atomic import atomic_write
-from core.cli.answers import FIGURES, PER_SPEED, key_csv, key_values
+from core.cli.answers import FIGURES, PER_SPEED, cell_text, key_csv, key_values
 from core.course import PARTS
 from core.drawing.class_sheets import answer_pages, task_sheet
 
@@ -133,18 +133,13 @@ def _pdf_row(number: int, entry: Mapping[str, Any], group: str, speed: int,
     values = key_values(entry, group, speeds)
     figures = dict(zip((name for name, _, _ in FIGURES), values[4:4 + len(FIGURES)]))
     at = 4 + len(FIGURES) + speed * (1 + len(PER_SPEED))
-    texts = {"n": _n(values[at])}
-    texts.update({name: _n(v) for (name, _, _), v in zip(PER_SPEED, values[at + 1:at + 1 + len(PER_SPEED)])})
+    texts = {"n": cell_text("n", values[at])}
+    texts.update({name: cell_text(name, v)
+                  for (name, _, _), v in zip(PER_SPEED, values[at + 1:at + 1 + len(PER_SPEED)])})
     first = speed == 0
-    texts.update({name: _n(v) if first else "" for name, v in figures.items()})
+    texts.update({name: cell_text(name, v) if first else "" for name, v in figures.items()})
     texts["failed"] = (values[-1] or labels["none"]) if first else ""
     if not first:
         return "", "", "", texts
     return str(number), entry["student"], entry["student_number"], texts
 
-
-def _n(value: Any) -> str:
-    """4 significant digits, as the grading needs (the CSV and JSON keep them all)."""
-    if value is None:
-        return "—"
-    return f"{value:.0f}" if abs(value) >= 1e4 else f"{value:.4g}"
