@@ -26,7 +26,7 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "Lever weight", "Lever moment of inertia", "Ram weight", "Cutting force",
               "Height of the cutting force", "Guide line", "Follower arm", "Follower swing",
               "Allowed pressure angle", "Rise", "Outer dwell", "Return", "Pinion teeth",
-              "Gear teeth", "Module", "Deliver", "Answer key", "page", "failed checks",
+              "Gear teeth", "Module", "Deliver", "Answer key", "page %1/%2", "failed checks",
               "speed", "none")
 
 
@@ -156,7 +156,8 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
     for k, at in enumerate(starts, start=1):
         items: list[Item] = list(paper_frame(p))
         items.append(Text(title, (left + 2.0, top - 7.0), 5.0, "lm"))
-        items.append(Text(f"{_w(labels, 'page')} {k}/{len(starts)}", (right - 2.0, top - 7.0), 3.5, "rm"))
+        page = _w(labels, "page %1/%2").replace("%1", str(k)).replace("%2", str(len(starts)))
+        items.append(Text(page, (right - 2.0, top - 7.0), 3.5, "rm"))
         y = top - 14.0
         for header, widths, rows in tables:
             scale = min(1.0, (right - left - 4.0) / sum(widths))
