@@ -10,14 +10,16 @@ from __future__ import annotations
 
 from typing import Any, Mapping, Sequence
 
-from .mechanism import bounds, frame_items, joint_anchors, links_at
-from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, marked_text,
+from .dxf import THIN
+from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
+from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line, marked_text,
                     standard_scale, table)
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
 A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)
 GRAVITY = 9.81
 SKETCH_DEG = 60.0           # the crank angle the sketch shows: the working stroke under way
+LEADER = 9.0                # a link's number this far from the link, on a thin leader, mm
 
 TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", "Student", "Number",
               "Class", "Date", "The mechanism (sketch to scale, crank at 60°)", "Data set",
@@ -132,9 +134,15 @@ def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
                 standard_scale(b[3] - b[1], box[3] - box[1] - 16.0))
     where = fit(b, box, scale)
     items: list[Item] = frame_items(design, where) + links_at(design, SKETCH_DEG, where)
+    names = []
     for text, spans, point, way in joint_anchors(design, SKETCH_DEG, where, 3.5):
         at = point + way * 6.0
+        names.append(at)
         items.append(Text(text, (float(at[0]), float(at[1])), 3.5, "cm", subscripts=spans))
+    for number, point, way in link_anchors(design, SKETCH_DEG, where, LEADER, names):
+        at = point + way * LEADER
+        items.append(line([point + way * 0.8, point + way * (LEADER - 2.8)], THIN))
+        items.append(Text(number, (float(at[0]), float(at[1])), 3.5, "cm"))
     items.append(Text(f"1:{scale:g}", (box[2], box[1] + 2.0), 3.5, "rb"))
     return items
 

@@ -10,6 +10,7 @@ the origin, O2 above it, the ram guide at y = guide, the cut toward +x).
 from __future__ import annotations
 
 import math
+from typing import Sequence
 
 import numpy as np
 
@@ -178,6 +179,40 @@ def joint_anchors(design: Design, crank_deg: float, where: Placement, height: fl
         ways = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(np.arange(0.0, 360.0, 45.0))]
         best = max(ways, key=lambda u: min(_distance(p + reach * u, s0, s1) for s0, s1 in segments))
         anchors.append((text, spans, p, best))
+    return anchors
+
+
+LINK_NUMBERS = {"crank": "2", "block": "3", "lever": "4", "rod": "5", "ram": "6"}
+
+
+def link_anchors(design: Design, crank_deg: float, where: Placement, reach: float,
+                 avoid: Sequence[np.ndarray] = ()) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """The links' numbers of the task book (crank 2, block 3, lever 4, rod 5, ram 6) at one
+    crank angle as (number, the point on the link its leader starts at, the direction to
+    the number): of eight directions, the one whose spot ``reach`` away is farthest from
+    the links, the ram and the points in ``avoid`` (the joints' names), so that a student
+    can read the sketch in the book's numbering."""
+    j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
+    x0, y0, x1, y1 = ram_body(j["C"])
+    body = [np.array(p) for p in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
+    segments = [(j["O2"], j["A"]), (j["O4"], j["B"])] + [(body[k], body[k - 1]) for k in range(4)]
+    if design.rod is not None:
+        segments.append((j["B"], j["C"]))
+    along = (j["B"] - j["O4"]) / max(float(np.hypot(*(j["B"] - j["O4"]))), 1e-9)
+    spots = {"crank": (j["O2"] + j["A"]) / 2.0, "block": j["A"] + along * (BLOCK[0] / 2.0),
+             "lever": j["O4"] + 0.3 * (j["B"] - j["O4"]), "ram": np.array([x0 + 0.3 * RAM[0], y1])}
+    if design.rod is not None:
+        spots["rod"] = (j["B"] + j["C"]) / 2.0
+    ways = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(np.arange(0.0, 360.0, 45.0))]
+    anchors = []
+    for link, p in spots.items():
+        def room(u: np.ndarray) -> float:
+            at = p + reach * u
+            near = [float(np.hypot(*(at - q))) for q in avoid]
+            return min([_distance(at, s0, s1) for s0, s1 in segments] + near)
+        best = max(ways, key=room)
+        anchors.append((LINK_NUMBERS[link], p, best))
+        avoid = [*avoid, p + reach * best]
     return anchors
 
 
