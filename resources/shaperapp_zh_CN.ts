@@ -680,6 +680,10 @@
         <translation>第 %1/%2 页</translation>
     </message>
     <message>
+        <source>No.</source>
+        <translation>序号</translation>
+    </message>
+    <message>
         <source>failed checks</source>
         <translation>未通过的校核</translation>
     </message>

@@ -29,7 +29,7 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "Height of the cutting force", "Guide line", "Follower arm", "Follower swing",
               "Allowed pressure angle", "Rise", "Outer dwell", "Return", "Pinion teeth",
               "Gear teeth", "Module", "Deliver", "Answer key", "page %1/%2", "failed checks",
-              "speed", "none")
+              "speed", "none", "No.")
 
 
 def _w(labels: Mapping[str, str], word: str) -> str:

@@ -67,6 +67,7 @@ def task_labels() -> dict[str, str]:
         "failed checks": translate("ClassSheets", "failed checks"),
         "speed": translate("ClassSheets", "speed"),
         "none": translate("ClassSheets", "none"),
+        "No.": translate("ClassSheets", "No."),
     }
     return words
 
@@ -110,7 +111,7 @@ def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: 
     atomic_write(paths[0], json.dumps(list(entries), indent=1, ensure_ascii=False, allow_nan=False) + "\n")
     atomic_write(paths[1], "\ufeff" + key_csv(entries, groups))     # a BOM: Excel then reads UTF-8
     labels = task_labels()
-    who = [("No.", 9), (labels["Student"], 24), (labels["Number"], 20)]
+    who = [(labels["No."], 9), (labels["Student"], 24), (labels["Number"], 20)]
     rows = [_pdf_row(number, entry, group, i, labels)
             for number, (entry, group) in enumerate(zip(entries, groups), start=1)
             for i in range(len(entry["analyze"]["speeds"]))]
