@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import Any, Mapping, Sequence
 
+import numpy as np
+
 from .dxf import THIN
 from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
 from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line, marked_text,
@@ -139,9 +141,9 @@ def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
         at = point + way * 6.0
         names.append(at)
         items.append(Text(text, (float(at[0]), float(at[1])), 3.5, "cm", subscripts=spans))
-    for number, point, way in link_anchors(design, SKETCH_DEG, where, LEADER, names):
-        at = point + way * LEADER
-        items.append(line([point + way * 0.8, point + way * (LEADER - 2.8)], THIN))
+    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names):
+        at, way = point + offset, offset / float(np.hypot(*offset))
+        items.append(line([point + way * 0.8, at - way * 2.8], THIN))
         items.append(Text(number, (float(at[0]), float(at[1])), 3.5, "cm"))
     items.append(Text(f"1:{scale:g}", (box[2], box[1] + 2.0), 3.5, "rb"))
     return items

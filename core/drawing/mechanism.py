@@ -182,16 +182,18 @@ def joint_anchors(design: Design, crank_deg: float, where: Placement, height: fl
     return anchors
 
 
+CLEAR = 6.0                 # paper mm from a link number to the nearest line or name that is enough
 LINK_NUMBERS = {"crank": "2", "block": "3", "lever": "4", "rod": "5", "ram": "6"}
 
 
 def link_anchors(design: Design, crank_deg: float, where: Placement, reach: float,
                  avoid: Sequence[np.ndarray] = ()) -> list[tuple[str, np.ndarray, np.ndarray]]:
     """The links' numbers of the task book (crank 2, block 3, lever 4, rod 5, ram 6) at one
-    crank angle as (number, the point on the link its leader starts at, the direction to
-    the number): of eight directions, the one whose spot ``reach`` away is farthest from
-    the links, the ram and the points in ``avoid`` (the joints' names), so that a student
-    can read the sketch in the book's numbering."""
+    crank angle as (number, the point on the link its leader starts at, the offset from it
+    to the number): of eight directions at ``reach`` or 1.6 ``reach``, the spot farthest from
+    the links, the ram and the points in ``avoid`` (the joints' names, the numbers placed
+    before), the shorter leader when both are CLEAR; so that a student reads the sketch in
+    the book's numbering."""
     j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
     x0, y0, x1, y1 = ram_body(j["C"])
     body = [np.array(p) for p in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
@@ -204,15 +206,17 @@ def link_anchors(design: Design, crank_deg: float, where: Placement, reach: floa
     if design.rod is not None:
         spots["rod"] = (j["B"] + j["C"]) / 2.0
     ways = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(np.arange(0.0, 360.0, 45.0))]
+    offsets = [u * r for r in (reach, 1.6 * reach) for u in ways]     # a longer leader where crowded
     anchors = []
     for link, p in spots.items():
-        def room(u: np.ndarray) -> float:
-            at = p + reach * u
-            near = [float(np.hypot(*(at - q))) for q in avoid]
-            return min([_distance(at, s0, s1) for s0, s1 in segments] + near)
-        best = max(ways, key=room)
+        def score(offset: np.ndarray) -> float:
+            at = p + offset
+            room = min([_distance(at, s0, s1) for s0, s1 in segments]
+                       + [float(np.hypot(*(at - q))) for q in avoid])
+            return min(room, CLEAR) - 1e-3 * float(np.hypot(*offset))    # clear enough: the shorter
+        best = max(offsets, key=score)
         anchors.append((LINK_NUMBERS[link], p, best))
-        avoid = [*avoid, p + reach * best]
+        avoid = [*avoid, p + best]
     return anchors
 
 
