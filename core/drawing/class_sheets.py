@@ -12,6 +12,7 @@ from typing import Any, Mapping, Sequence
 
 import numpy as np
 
+from ..figure_text import figure_text
 from .dxf import THIN
 from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
 from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line, marked_text,
@@ -39,17 +40,20 @@ def _w(labels: Mapping[str, str], word: str) -> str:
 
 
 def _n(value: float | None) -> str:
-    """A figure as a task book writes it: 4 significant digits, no trailing zeros."""
+    """A given value as the design file holds it (as typed: 1.46, 0.12345, 700), never
+    rounded; a figure the tool derives is written by ``core.figure_text``."""
     if value is None:
         return "—"
-    return f"{value:.4g}" if abs(value) < 1e5 else f"{value:.3e}"
+    return f"{value:.10g}"
 
 
 def _weight(forces: Mapping[str, Any], link: str) -> str:
     """A link's weight as the design file holds it: the weight as typed (G4 = 200 N, the
     task book's way), else the mass times g."""
     weight = forces.get(f"{link}_weight_N")
-    return _n(weight) if weight is not None else _n(forces.get(f"{link}_mass_kg", 0.0) * GRAVITY)
+    if weight is not None:
+        return _n(weight)
+    return f"{forces.get(f'{link}_mass_kg', 0.0) * GRAVITY:.4g}"     # 20.387 kg: G4 = 200 N, the book's
 
 
 def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list[list[str]]:
@@ -68,7 +72,7 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
     if design.rod is not None:
         rod = f"{_n(spec['rod_ratio'])} l_O_4_B" if spec["rod_input"] == "ratio" else _n(spec["rod_length"])
         rows.append([w("Rod BC"), "l_BC", rod, "mm"])
-    rows.append([w("Guide line"), "h", _n(design.guide_above_crank), "mm"])
+    rows.append([w("Guide line"), "h", figure_text("length", design.guide_above_crank), "mm"])
     if forces:
         cg = forces.get("lever_cg_mm")
         rows += [[w("Lever's centre of mass O_4S_4"), "l_O_4_S_4",

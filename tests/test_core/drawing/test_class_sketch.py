@@ -44,3 +44,16 @@ def test_every_link_is_numbered_as_the_task_book_numbers_it(rod_ratio, numbers):
             assert _segment_distance(spot, a, b) > 2.0, number        # the number is off the links
     sheet = task_sheet(doc, {"student": "x"}, [], {})
     assert numbers <= {item.text for item in sheet.items if isinstance(item, Text)}
+
+
+def test_the_data_set_shows_given_values_as_typed_and_derived_ones_in_figure_text():
+    """A typed K = 1.4599 and L1 = 100.25 are not rounded to 4 digits (1.46, 100.3); the
+    guide height h, which the tool derives, reads as the answer key and the CLI write it."""
+    from core.drawing.class_sheets import data_rows
+    from core.figure_text import figure_text
+    spec = Spec.from_dict({"mode": "synthesis", "crank": 100.25, "time_ratio": 1.4599, "stroke": 312.5})
+    doc = {"spec": spec.to_dict(), "rpm": [60.0, 72.5]}
+    rows = {row[1]: row[2] for row in data_rows(doc, spec.design(), {})}
+    assert rows["K"] == "1.4599" and rows["l_O_2_A"] == "100.25" and rows["H"] == "312.5"
+    assert rows["n_2"] == "60 / 72.5"
+    assert rows["h"] == figure_text("length", spec.design().guide_above_crank)
