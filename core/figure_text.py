@@ -30,6 +30,11 @@ PRECISION: dict[str, tuple[str, int]] = {
     "energy": ("s", 4),          # J
     "inertia": ("s", 4),         # kg·m²
     "coefficient": ("s", 5),     # δ
+    # the gear pair's figures as ``shaper gear`` prints them: a meshing is checked to 0.1 µm
+    # and its shift factors, α′ and ε to six decimals (core.gear.table)
+    "gear_length": ("f", 4),     # mm: a′, the diameters, the thicknesses
+    "gear_angle": ("f", 6),      # °: α′
+    "gear_factor": ("f", 6),     # x1, x2, y, Δy, ε
 }
 
 

@@ -431,6 +431,101 @@
     </message>
 </context>
 <context>
+    <name>ClassMessages</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 line %2: %3</source>
+        <translation>%1 第 %2 行：%3</translation>
+    </message>
+    <message>
+        <source>%1 line %2, column %3: %4</source>
+        <translation>%1 第 %2 行，%3 列：%4</translation>
+    </message>
+    <message>
+        <source>%1 (got %2)</source>
+        <translation>%1（输入的是 %2）</translation>
+    </message>
+    <message>
+        <source>empty; every student needs one</source>
+        <translation>为空；每名学生都须填写</translation>
+    </message>
+    <message>
+        <source>must be one line of text without control characters</source>
+        <translation>须为一行文字，不含控制字符</translation>
+    </message>
+    <message>
+        <source>at most %1 characters</source>
+        <translation>最多 %1 个字符</translation>
+    </message>
+    <message>
+        <source>must be yes or no</source>
+        <translation>须为 yes 或 no</translation>
+    </message>
+    <message>
+        <source>%1 is outside the table's folder; put the design file beside the table</source>
+        <translation>%1 不在任务表所在的文件夹内；请把设计文件放在任务表旁边</translation>
+    </message>
+    <message>
+        <source>%1 cells, but the header names %2 columns</source>
+        <translation>有 %1 个单元格，但表头有 %2 列</translation>
+    </message>
+    <message>
+        <source>%1: required (or use %2 or %3)</source>
+        <translation>%1：必须给出（或用 %2 或 %3）</translation>
+    </message>
+    <message>
+        <source>%1: required</source>
+        <translation>%1：必须给出</translation>
+    </message>
+    <message>
+        <source>%1 is also on line %2; each student needs a number of their own</source>
+        <translation>%1 与第 %2 行重复；每名学生须有自己的学号</translation>
+    </message>
+    <message>
+        <source>the folder %1 is also line %2's; give the students different numbers</source>
+        <translation>文件夹 %1 与第 %2 行的相同；请给学生不同的学号</translation>
+    </message>
+    <message>
+        <source>has no name</source>
+        <translation>没有列名</translation>
+    </message>
+    <message>
+        <source>named twice</source>
+        <translation>列名重复</translation>
+    </message>
+    <message>
+        <source>not a column; did you mean %1?</source>
+        <translation>不是可用的列；是否指 %1？</translation>
+    </message>
+    <message>
+        <source>not a column; see 'shaper design --help' for the options</source>
+        <translation>不是可用的列；可用的列见 'shaper design --help'</translation>
+    </message>
+    <message>
+        <source>no column %1</source>
+        <translation>缺少 %1 列</translation>
+    </message>
+    <message>
+        <source>not UTF-8 or GBK text; save it as "CSV UTF-8"</source>
+        <translation>不是 UTF-8 或 GBK 文本；请另存为“CSV UTF-8”</translation>
+    </message>
+    <message>
+        <source>more than %1 students; split the class into several tables</source>
+        <translation>超过 %1 名学生；请把班级拆成几张表</translation>
+    </message>
+    <message>
+        <source>larger than %1 MB; a class is at most %2 rows</source>
+        <translation>大于 %1 MB；一个班最多 %2 行</translation>
+    </message>
+    <message>
+        <source>empty; the first row names the columns (student, student-number, …)</source>
+        <translation>为空；第一行须为列名（student、student-number 等）</translation>
+    </message>
+</context>
+<context>
     <name>ClassSheets</name>
     <message>
         <source>Course design task sheet</source>
@@ -581,8 +676,12 @@
         <translation>参考答案</translation>
     </message>
     <message>
-        <source>page</source>
-        <translation>页</translation>
+        <source>page %1/%2</source>
+        <translation>第 %1/%2 页</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>序号</translation>
     </message>
     <message>
         <source>failed checks</source>

@@ -17,6 +17,7 @@ follower) is chosen by synthesizing both and keeping the one with the smaller ba
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 from dataclasses import dataclass
 from typing import Callable
 
@@ -218,9 +219,14 @@ def _cuts(arm: float, k: int, program: Program, allowance: Allowance,
     return rows / np.hypot(rows[:, 0], rows[:, 1])[:, None]
 
 
+@lru_cache(maxsize=32)
 def synthesize(arm_mm: float, program: Program, allowance: Allowance) -> Follower:
     """The smallest cam for the allowance over both arrangements (the arm above the line
-    of centres on equal radii); DesignError naming ``pressure`` when there is none."""
+    of centres on equal radii); DesignError naming ``pressure`` when there is none.
+
+    Kept for the last inputs (all frozen values): a class's students usually share the
+    cam's data, and ``shaper class`` designs each row's cam (about 0.7 s a search) in
+    one process before the students are forked; a refusal is not kept."""
     found = [f for f in (smallest(arm_mm, program, allowance, s) for s in (1, -1)) if f is not None]
     if not found:
         raise DesignError("pressure", allowance.rise_deg,

@@ -13,6 +13,7 @@ import io
 from importlib import import_module
 from typing import Any, Mapping, Sequence
 
+from ..figure_text import figure_text
 from ..io import csv_text
 
 COMMANDS = ("synth", "analyze", "dynamics", "cam", "gear")
@@ -67,6 +68,26 @@ PER_SPEED = (("v_work_max", "m/s", ("analyze", "v_work_max_m_s")),
              ("M_mean", "N·m", ("dynamics", "mean_torque_N_m")),
              ("dW_max", "J", ("dynamics", "energy_fluctuation_J")),
              ("J_F", "kg·m²", ("dynamics", "flywheel_inertia_kg_m2")))
+
+
+# each column's kind of figure (``core.figure_text``): the answer key's PDF writes a figure
+# exactly as the report and ``shaper synth/analyze/dynamics/cam/gear`` print it
+KINDS = {"theta": "angle", "L1": "length", "L2": "length", "L3": "length", "L4": "length",
+         "h": "length", "K": "ratio", "H": "length", "r0": "length", "a_cam": "length",
+         "r_roller": "length", "x1": "gear_factor", "x2": "gear_factor", "a'": "gear_length",
+         "alpha'": "gear_angle", "epsilon": "gear_factor", "v_work_max": "speed",
+         "v_return_max": "speed", "a_max": "acceleration", "M_max": "torque", "M_mean": "torque",
+         "dW_max": "energy", "J_F": "inertia"}
+
+
+def cell_text(name: str, value: float | None) -> str:
+    """A figure of column ``name`` as a table writes it: its kind's precision; the speed
+    as given (72, not 72.0000); '—' for a figure the design has not (no rod)."""
+    if value is None:
+        return "—"
+    if name == "n":
+        return f"{value:g}"
+    return figure_text(KINDS[name], value)
 
 
 def _heading(name: str, unit: str) -> str:

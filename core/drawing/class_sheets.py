@@ -10,14 +10,19 @@ from __future__ import annotations
 
 from typing import Any, Mapping, Sequence
 
-from .mechanism import bounds, frame_items, joint_anchors, links_at
-from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, marked_text,
+import numpy as np
+
+from ..figure_text import figure_text
+from .dxf import THIN
+from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
+from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line, marked_text,
                     standard_scale, table)
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
 A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)
 GRAVITY = 9.81
 SKETCH_DEG = 60.0           # the crank angle the sketch shows: the working stroke under way
+LEADER = 9.0                # a link's number this far from the link, on a thin leader, mm
 
 TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", "Student", "Number",
               "Class", "Date", "The mechanism (sketch to scale, crank at 60°)", "Data set",
@@ -26,8 +31,8 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "Lever weight", "Lever moment of inertia", "Ram weight", "Cutting force",
               "Height of the cutting force", "Guide line", "Follower arm", "Follower swing",
               "Allowed pressure angle", "Rise", "Outer dwell", "Return", "Pinion teeth",
-              "Gear teeth", "Module", "Deliver", "Answer key", "page", "failed checks",
-              "speed", "none")
+              "Gear teeth", "Module", "Deliver", "Answer key", "page %1/%2", "failed checks",
+              "speed", "none", "No.")
 
 
 def _w(labels: Mapping[str, str], word: str) -> str:
@@ -35,17 +40,20 @@ def _w(labels: Mapping[str, str], word: str) -> str:
 
 
 def _n(value: float | None) -> str:
-    """A figure as a task book writes it: 4 significant digits, no trailing zeros."""
+    """A given value as the design file holds it (as typed: 1.46, 0.12345, 700), never
+    rounded; a figure the tool derives is written by ``core.figure_text``."""
     if value is None:
         return "—"
-    return f"{value:.4g}" if abs(value) < 1e5 else f"{value:.3e}"
+    return f"{value:.10g}"
 
 
 def _weight(forces: Mapping[str, Any], link: str) -> str:
     """A link's weight as the design file holds it: the weight as typed (G4 = 200 N, the
     task book's way), else the mass times g."""
     weight = forces.get(f"{link}_weight_N")
-    return _n(weight) if weight is not None else _n(forces.get(f"{link}_mass_kg", 0.0) * GRAVITY)
+    if weight is not None:
+        return _n(weight)
+    return f"{forces.get(f'{link}_mass_kg', 0.0) * GRAVITY:.4g}"     # 20.387 kg: G4 = 200 N, the book's
 
 
 def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list[list[str]]:
@@ -64,7 +72,7 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
     if design.rod is not None:
         rod = f"{_n(spec['rod_ratio'])} l_O_4_B" if spec["rod_input"] == "ratio" else _n(spec["rod_length"])
         rows.append([w("Rod BC"), "l_BC", rod, "mm"])
-    rows.append([w("Guide line"), "h", _n(design.guide_above_crank), "mm"])
+    rows.append([w("Guide line"), "h", figure_text("length", design.guide_above_crank), "mm"])
     if forces:
         cg = forces.get("lever_cg_mm")
         rows += [[w("Lever's centre of mass O_4S_4"), "l_O_4_S_4",
@@ -132,9 +140,15 @@ def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
                 standard_scale(b[3] - b[1], box[3] - box[1] - 16.0))
     where = fit(b, box, scale)
     items: list[Item] = frame_items(design, where) + links_at(design, SKETCH_DEG, where)
+    names = []
     for text, spans, point, way in joint_anchors(design, SKETCH_DEG, where, 3.5):
         at = point + way * 6.0
+        names.append(at)
         items.append(Text(text, (float(at[0]), float(at[1])), 3.5, "cm", subscripts=spans))
+    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names):
+        at, way = point + offset, offset / float(np.hypot(*offset))
+        items.append(line([point + way * 0.8, at - way * 2.8], THIN))
+        items.append(Text(number, (float(at[0]), float(at[1])), 3.5, "cm"))
     items.append(Text(f"1:{scale:g}", (box[2], box[1] + 2.0), 3.5, "rb"))
     return items
 
@@ -156,7 +170,8 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
     for k, at in enumerate(starts, start=1):
         items: list[Item] = list(paper_frame(p))
         items.append(Text(title, (left + 2.0, top - 7.0), 5.0, "lm"))
-        items.append(Text(f"{_w(labels, 'page')} {k}/{len(starts)}", (right - 2.0, top - 7.0), 3.5, "rm"))
+        page = _w(labels, "page %1/%2").replace("%1", str(k)).replace("%2", str(len(starts)))
+        items.append(Text(page, (right - 2.0, top - 7.0), 3.5, "rm"))
         y = top - 14.0
         for header, widths, rows in tables:
             scale = min(1.0, (right - left - 4.0) / sum(widths))

@@ -10,6 +10,7 @@ the origin, O2 above it, the ram guide at y = guide, the cut toward +x).
 from __future__ import annotations
 
 import math
+from typing import Sequence
 
 import numpy as np
 
@@ -178,6 +179,44 @@ def joint_anchors(design: Design, crank_deg: float, where: Placement, height: fl
         ways = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(np.arange(0.0, 360.0, 45.0))]
         best = max(ways, key=lambda u: min(_distance(p + reach * u, s0, s1) for s0, s1 in segments))
         anchors.append((text, spans, p, best))
+    return anchors
+
+
+CLEAR = 6.0                 # paper mm from a link number to the nearest line or name that is enough
+LINK_NUMBERS = {"crank": "2", "block": "3", "lever": "4", "rod": "5", "ram": "6"}
+
+
+def link_anchors(design: Design, crank_deg: float, where: Placement, reach: float,
+                 avoid: Sequence[np.ndarray] = ()) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """The links' numbers of the task book (crank 2, block 3, lever 4, rod 5, ram 6) at one
+    crank angle as (number, the point on the link its leader starts at, the offset from it
+    to the number): of eight directions at ``reach`` or 1.6 ``reach``, the spot farthest from
+    the links, the ram and the points in ``avoid`` (the joints' names, the numbers placed
+    before), the shorter leader when both are CLEAR; so that a student reads the sketch in
+    the book's numbering."""
+    j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
+    x0, y0, x1, y1 = ram_body(j["C"])
+    body = [np.array(p) for p in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
+    segments = [(j["O2"], j["A"]), (j["O4"], j["B"])] + [(body[k], body[k - 1]) for k in range(4)]
+    if design.rod is not None:
+        segments.append((j["B"], j["C"]))
+    along = (j["B"] - j["O4"]) / max(float(np.hypot(*(j["B"] - j["O4"]))), 1e-9)
+    spots = {"crank": (j["O2"] + j["A"]) / 2.0, "block": j["A"] + along * (BLOCK[0] / 2.0),
+             "lever": j["O4"] + 0.3 * (j["B"] - j["O4"]), "ram": np.array([x0 + 0.3 * RAM[0], y1])}
+    if design.rod is not None:
+        spots["rod"] = (j["B"] + j["C"]) / 2.0
+    ways = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(np.arange(0.0, 360.0, 45.0))]
+    offsets = [u * r for r in (reach, 1.6 * reach) for u in ways]     # a longer leader where crowded
+    anchors = []
+    for link, p in spots.items():
+        def score(offset: np.ndarray) -> float:
+            at = p + offset
+            room = min([_distance(at, s0, s1) for s0, s1 in segments]
+                       + [float(np.hypot(*(at - q))) for q in avoid])
+            return min(room, CLEAR) - 1e-3 * float(np.hypot(*offset))    # clear enough: the shorter
+        best = max(offsets, key=score)
+        anchors.append((LINK_NUMBERS[link], p, best))
+        avoid = [*avoid, p + best]
     return anchors
 
 

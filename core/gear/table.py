@@ -4,6 +4,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from ..figure_text import figure_text
 from .checks import pair_checks
 from .inputs import GearPairInputs
 from .pair import Gear, GearPair
@@ -53,12 +54,13 @@ def gear_summary(pair: GearPair) -> dict[str, Any]:
 
 def summary_rows(pair: GearPair) -> list[tuple[str, str]]:
     """(label, value) of the results, as ``shaper gear`` prints them."""
-    g1, g2 = pair.gear1, pair.gear2
+    g1, g2, f = pair.gear1, pair.gear2, figure_text
     rows = [("shifts", MODE_TEXT[pair.mode]),
-            ("centre distance a′ (a)", f"{pair.centre_mm:.4f} mm ({pair.reference_centre_mm:.4f} mm)"),
-            ("working pressure angle α′", f"{math.degrees(pair.alpha_w):.6f} °"),
+            ("centre distance a′ (a)", f"{f('gear_length', pair.centre_mm)} mm "
+                                       f"({f('gear_length', pair.reference_centre_mm)} mm)"),
+            ("working pressure angle α′", f"{f('gear_angle', math.degrees(pair.alpha_w))} °"),
             ("centre shift y / addendum reduction Δy", f"{pair.y:.6f} / {pair.dy:.6f}"),
-            ("shift factor x1 / x2", f"{g1.shift:.6f} / {g2.shift:.6f}"),
+            ("shift factor x1 / x2", f"{f('gear_factor', g1.shift)} / {f('gear_factor', g2.shift)}"),
             ("least shift x1min / x2min", f"{g1.least_shift:.6f} / {g2.least_shift:.6f}")]
     for label, attr in (("reference diameter d", "r"), ("base diameter db", "rb"),
                         ("tip diameter da", "ra"), ("root diameter df", "rf"),
@@ -70,7 +72,7 @@ def summary_rows(pair: GearPair) -> list[tuple[str, str]]:
              ("tip thickness sa1 / sa2", f"{g1.sa:.4f} / {g2.sa:.4f} mm"),
              ("line of action N1N2 / B1B2", f"{pair.n1n2:.4f} / {pair.b1b2:.4f} mm"),
              ("base pitch pb", f"{pair.pb:.4f} mm"),
-             ("contact ratio ε", f"{pair.contact_ratio:.6f}"),
+             ("contact ratio ε", f('gear_factor', pair.contact_ratio)),
              ("least tip thickness", tip_limit_text(pair.inputs))]
     if pair.inputs.module_note:
         rows.append(("note", pair.inputs.module_note))

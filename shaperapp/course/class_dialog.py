@@ -121,6 +121,10 @@ class ClassDialog(QDialog):
         from core.cli.tasks import TableError, read_tasks
         from core.design_file import load_design
         from core.errors import FileFormatError
+
+        from shaperapp.widgets.messages import describe_file_error
+
+        from .class_messages import table_message
         self.table.setRowCount(0)
         self._good = 0
         path, base = self.tasks.text().strip(), self.base.text().strip() or None
@@ -132,17 +136,20 @@ class ClassDialog(QDialog):
                 load_design(base)
             students, _ = read_tasks(path, base)
         except (TableError, FileFormatError) as exc:
-            self.summary.setText(translate("ClassDialog", "The table cannot be used: %1").replace("%1", str(exc)))
+            reason = (table_message(str(exc)) if isinstance(exc, TableError)
+                      else describe_file_error(exc))
+            self.summary.setText(translate("ClassDialog", "The table cannot be used: %1").replace("%1", reason))
             self._update_run()
             return
         self.table.setRowCount(len(students))
         for row, s in enumerate(students):
-            texts = [str(s.line), s.name, s.number, s.error or translate("ClassDialog", "ready")]
+            error = table_message(s.error) if s.error else ""
+            texts = [str(s.line), s.name, s.number, error or translate("ClassDialog", "ready")]
             for column, text in enumerate(texts):
                 item = QTableWidgetItem(text)
                 if s.error:
                     item.setBackground(QBrush(BAD))
-                    item.setToolTip(s.error)
+                    item.setToolTip(error)
                 self.table.setItem(row, column, item)
         self._good = sum(1 for s in students if not s.error)
         bad = len(students) - self._good

@@ -14,7 +14,7 @@ from typing import Any, Mapping, Sequence
 from PySide6.QtCore import QCoreApplication
 
 from core.atomic import atomic_write
-from core.cli.answers import FIGURES, PER_SPEED, key_csv, key_values
+from core.cli.answers import FIGURES, PER_SPEED, cell_text, key_csv, key_values
 from core.course import PARTS
 from core.drawing.class_sheets import answer_pages, task_sheet
 
@@ -63,10 +63,11 @@ def task_labels() -> dict[str, str]:
         "Module": translate("ClassSheets", "Module"),
         "Deliver": translate("ClassSheets", "Deliver"),
         "Answer key": translate("ClassSheets", "Answer key"),
-        "page": translate("ClassSheets", "page"),
+        "page %1/%2": translate("ClassSheets", "page %1/%2"),
         "failed checks": translate("ClassSheets", "failed checks"),
         "speed": translate("ClassSheets", "speed"),
         "none": translate("ClassSheets", "none"),
+        "No.": translate("ClassSheets", "No."),
     }
     return words
 
@@ -89,16 +90,18 @@ def write_tasks(path: str, students: Sequence[tuple[Mapping[str, Any], Mapping[s
     atomic_write(path, pages_pdf(sheets, language, labels["Course design task sheet"]))
 
 
-# the answer key's PDF columns: (FIGURES' or PER_SPEED's name, heading in the index notation, unit, mm)
-_LINKAGE = (("theta", "θ", "°", 14), ("L1", "L_1", "mm", 13), ("L2", "L_2", "mm", 13), ("L3", "L_3", "mm", 13),
-            ("L4", "L_4", "mm", 13), ("h", "h", "mm", 13), ("K", "K", "", 14), ("H", "H", "mm", 14),
+# the answer key's PDF columns: (FIGURES' or PER_SPEED's name, heading in the index notation,
+# unit, mm), in three tables, each column wide enough for its widest figure at 2.5 mm
+# (figure_text's decimals: a length "1234.567", a shift factor "-0.123456")
+_LINKAGE = (("theta", "θ", "°", 16), ("L1", "L_1", "mm", 18), ("L2", "L_2", "mm", 18), ("L3", "L_3", "mm", 18),
+            ("L4", "L_4", "mm", 18), ("h", "h", "mm", 18), ("K", "K", "", 14), ("H", "H", "mm", 18),
             ("n", "n_2", "r/min", 13), ("v_work_max", "v_w,max", "m/s", 16),
-            ("v_return_max", "v_r,max", "m/s", 16), ("a_max", "|a|_max", "m/s²", 16))
-_PARTS = (("n", "n_2", "r/min", 13), ("M_max", "M_max", "N·m", 15), ("M_mean", "M_m", "N·m", 15),
-          ("dW_max", "ΔW_max", "J", 15), ("J_F", "J_F", "kg·m²", 15), ("r0", "r_0", "mm", 14),
-          ("a_cam", "a_cam", "mm", 14), ("r_roller", "r_r", "mm", 14), ("x1", "x_1", "", 18),
-          ("x2", "x_2", "", 18), ("a'", "a′", "mm", 14), ("alpha'", "α′", "°", 14), ("epsilon", "ε", "", 14),
-          ("failed", "", "", 26))
+            ("v_return_max", "v_r,max", "m/s", 16), ("a_max", "|a|_max", "m/s²", 17))
+_FORCES = (("n", "n_2", "r/min", 13), ("M_max", "M_max", "N·m", 16), ("M_mean", "M_m", "N·m", 16),
+           ("dW_max", "ΔW_max", "J", 16), ("J_F", "J_F", "kg·m²", 16), ("r0", "r_0", "mm", 18),
+           ("a_cam", "a_cam", "mm", 18), ("r_roller", "r_r", "mm", 18))
+_GEAR = (("x1", "x_1", "", 20), ("x2", "x_2", "", 20), ("a'", "a′", "mm", 19), ("alpha'", "α′", "°", 20),
+         ("epsilon", "ε", "", 19), ("failed", "", "", 60))
 
 
 def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: Sequence[str],
@@ -108,19 +111,19 @@ def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: 
     atomic_write(paths[0], json.dumps(list(entries), indent=1, ensure_ascii=False, allow_nan=False) + "\n")
     atomic_write(paths[1], "\ufeff" + key_csv(entries, groups))     # a BOM: Excel then reads UTF-8
     labels = task_labels()
-    who = [("No.", 9), (labels["Student"], 28), (labels["Number"], 24)]
+    who = [(labels["No."], 9), (labels["Student"], 24), (labels["Number"], 20)]
     rows = [_pdf_row(number, entry, group, i, labels)
             for number, (entry, group) in enumerate(zip(entries, groups), start=1)
             for i in range(len(entry["analyze"]["speeds"]))]
     tables = []
-    for columns in (_LINKAGE, _PARTS):
+    for columns in (_LINKAGE, _FORCES, _GEAR):
         header = [h for h, _ in who] + [heading or labels["failed checks"] for _, heading, _, _ in columns]
         units = ["" for _ in who] + [unit for _, _, unit, _ in columns]
         widths = [w for _, w in who] + [w for _, _, _, w in columns]
         body = [[row[0], row[1], row[2]] + [row[3][name] for name, _, _, _ in columns] for row in rows]
         tables.append(((header, units), widths, body))
     title = f"{labels['Answer key']}: {labels['Quick-return mechanism of a shaper']}"
-    pages = answer_pages(tables, title, labels, plain=(1, 2, len(_PARTS) + len(who) - 1))
+    pages = answer_pages(tables, title, labels, plain=(1, 2, len(_GEAR) + len(who) - 1))
     atomic_write(paths[2], pages_pdf(pages, language, title))
     return paths
 
@@ -133,18 +136,13 @@ def _pdf_row(number: int, entry: Mapping[str, Any], group: str, speed: int,
     values = key_values(entry, group, speeds)
     figures = dict(zip((name for name, _, _ in FIGURES), values[4:4 + len(FIGURES)]))
     at = 4 + len(FIGURES) + speed * (1 + len(PER_SPEED))
-    texts = {"n": _n(values[at])}
-    texts.update({name: _n(v) for (name, _, _), v in zip(PER_SPEED, values[at + 1:at + 1 + len(PER_SPEED)])})
+    texts = {"n": cell_text("n", values[at])}
+    texts.update({name: cell_text(name, v)
+                  for (name, _, _), v in zip(PER_SPEED, values[at + 1:at + 1 + len(PER_SPEED)])})
     first = speed == 0
-    texts.update({name: _n(v) if first else "" for name, v in figures.items()})
+    texts.update({name: cell_text(name, v) if first else "" for name, v in figures.items()})
     texts["failed"] = (values[-1] or labels["none"]) if first else ""
     if not first:
         return "", "", "", texts
     return str(number), entry["student"], entry["student_number"], texts
 
-
-def _n(value: Any) -> str:
-    """4 significant digits, as the grading needs (the CSV and JSON keep them all)."""
-    if value is None:
-        return "—"
-    return f"{value:.0f}" if abs(value) >= 1e4 else f"{value:.4g}"

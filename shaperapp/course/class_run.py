@@ -128,6 +128,19 @@ def run_student(job: Job) -> Result:
     return Result(job.index, time.perf_counter() - start, None, error)
 
 
+def _preload() -> None:
+    """Import, before the fork, the modules every worker needs (the course writer, the
+    report, the sheets, the DXF writer, the five commands of the answer key): imported
+    once here, their pages are shared by the forked workers instead of being read and
+    compiled again in each (about 1 s a worker). Qt's modules are imported, not started:
+    each worker starts its own application."""
+    from importlib import import_module
+    from core.cli.answers import COMMANDS
+    for name in ("shaperapp.course.write", "shaperapp.report.content", "shaperapp.drawing.content",
+                 "core.drawing.sheet_dxf", "ezdxf", *(f"core.cli.cmd_{c}" for c in COMMANDS)):
+        import_module(name)
+
+
 def run_jobs(jobs: Sequence[Job], workers: int) -> Iterator[Result]:
     """Every job's Result as it finishes, on ``workers`` processes (1: in this one). A job
     is handed to a worker only when one is free, so an interrupt (Ctrl+C; the GUI's Cancel
@@ -139,6 +152,7 @@ def run_jobs(jobs: Sequence[Job], workers: int) -> Iterator[Result]:
         return
     import multiprocessing
     from collections import deque
+    _preload()
     waiting = iter(jobs)
     with multiprocessing.get_context("fork").Pool(workers) as pool:
         running = deque(pool.apply_async(run_student, (job,)) for job in islice(waiting, workers))

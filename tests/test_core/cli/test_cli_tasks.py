@@ -20,8 +20,8 @@ from hypothesis import strategies as st
 from cli_runner import shaper_in_process
 from core.cli.answers import COMMANDS, answer_entry, key_csv
 from core.io import csv_text as guarded
-from core.cli.tasks import (MAX_FOLDER_BYTES, MAX_STUDENTS, TableError, column_actions, design_parser,
-                            folder_name, read_tasks)
+from core.cli.tasks import (MAX_FOLDER_BYTES, MAX_STUDENTS, MAX_TABLE_BYTES, TableError, column_actions,
+                            design_parser, folder_name, read_tasks)
 
 BASE = ("--arm", "125", "--swing", "15", "--pressure", "40", "--rise", "75", "--dwell", "10", "--return", "75",
         "--z1", "13", "--z2", "40", "--module", "6", "--rpm", "60", "--lever-mass", "20", "--lever-inertia", "1",
@@ -239,3 +239,51 @@ def _entry(student, number):
             "gear": {"gear1": {"shift_factor": 0.1}, "gear2": {"shift_factor": -0.1},
                      "pair": {"centre_mm": 1.0, "working_pressure_angle_deg": 20.0, "contact_ratio": 1.1},
                      "checks": [{"name": "contact", "ok": False}]}}
+
+
+def test_ten_thousand_rows_take_bounded_memory_and_a_huge_file_is_refused_unread(tmp_path, base):
+    """Issue 41 gap 5: a table of 10 000 rows is refused with the memory of a few copies of
+    its text (not 10 000 parsed rows); a 1 GB file is refused by its size, never read."""
+    import tracemalloc
+    lines = [HEADER] + [f'n{k},{k},"110,380,540",0.3,sagitta,60,20,1.1,70,7000,80' for k in range(10_000)]
+    path = table(tmp_path, lines)
+    size = os.path.getsize(path)
+    tracemalloc.start()
+    try:
+        with pytest.raises(TableError, match=rf"more than {MAX_STUDENTS} students"):
+            read_tasks(path, base)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    # at most the read buffer (MAX_TABLE_BYTES + 1), the text and the first 1001 rows' cells
+    assert peak < 2 * MAX_TABLE_BYTES + 8 * size, (peak, size)
+    huge = tmp_path / "huge.csv"
+    with open(huge, "wb") as handle:          # sparse: 1 GB on paper, nothing on the disk
+        handle.truncate(1_000_000_000)
+    start = time.perf_counter()
+    with pytest.raises(TableError, match=r"huge.csv: larger than 5 MB"):
+        read_tasks(str(huge), base)
+    assert time.perf_counter() - start < 1.0
+
+
+def test_hostile_student_names_give_distinct_folders_that_can_be_made(tmp_path, base):
+    """Slashes, "..", NUL, 150 ideographs (450 bytes), Windows device names (CON, nul.txt),
+    a formula: each good row's folder is one plain name that mkdir makes inside the class's
+    folder, no two alike; the NUL row is refused by its line and column."""
+    names = ["../../x", "a/b\\c", "张" * 150, "CON", "=HYPERLINK(\"http://x\")", "a\x00b"]
+    numbers = ["1", "2", "3", "CON", "nul.txt", "6"]
+    lines = ["student,student-number"] + [f'"{n.replace(chr(34), chr(34) * 2)}",{k}' for n, k in zip(names, numbers)]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    assert students[5].error == "tasks.csv line 7, column student: must be one line of text without control characters"
+    good = [s for s in students if not s.error]
+    assert len(good) == 5 and len({s.folder.casefold() for s in good}) == 5
+    out = tmp_path / "class"
+    out.mkdir()
+    for s in good:
+        assert os.path.basename(s.folder) == s.folder and s.folder not in (".", "..")
+        assert len(s.folder.encode("utf-8")) <= MAX_FOLDER_BYTES
+        assert s.folder.split(".")[0].split("-")[0].upper() not in {"CON", "NUL"} or "-" in s.folder
+        (out / s.folder).mkdir()
+        assert (out / s.folder).resolve().parent == out.resolve()
+    assert good[2].folder == "3-" + "张" * ((MAX_FOLDER_BYTES - 2) // 3)      # whole characters kept
+    assert good[4].folder.startswith("_nul.txt-")                            # a device name with a suffix

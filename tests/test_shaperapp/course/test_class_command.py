@@ -131,6 +131,31 @@ def test_the_answer_key_csv_holds_the_json_figures(classroom):
     assert rows[3]["n2 (r/min)"] == "72.0" and rows[0]["n2 (r/min)"] == ""      # the random row's two speeds
 
 
+def test_the_answer_key_pdf_prints_each_figure_as_the_cli_does(classroom):
+    """Gap 1 of issue 41: the answer key's PDF writes a figure in the one precision of its
+    kind (core.figure_text), the very text ``shaper synth/analyze/dynamics/gear`` print for the
+    student's design file: K = 1.4600, not 1.46."""
+    from core.figure_text import figure_text
+    _, out, _, _, _, _, _ = classroom
+    cells = set(pdf_text(out / "answer-key.pdf").split())
+    for entry in json.loads((out / "answer-key.json").read_text(encoding="utf-8")):
+        design = out / entry["folder"] / "design.shaper.json"
+        printed = {command: shaper(command, "--design", design).stdout
+                   for command in ("synth", "analyze", "dynamics", "gear")}
+        speed, forces = entry["analyze"]["speeds"][0], entry["dynamics"]["speeds"][0]
+        for command, kind, value in (
+                ("synth", "angle", entry["synth"]["theta_deg"]), ("synth", "length", entry["synth"]["lever_mm"]),
+                ("analyze", "ratio", entry["analyze"]["K"]), ("analyze", "speed", speed["v_work_max_m_s"]),
+                ("analyze", "acceleration", speed["a_max_m_s2"]), ("dynamics", "torque", forces["max_torque_N_m"]),
+                ("dynamics", "inertia", forces["flywheel_inertia_kg_m2"]),
+                ("gear", "gear_factor", entry["gear"]["gear1"]["shift_factor"]),
+                ("gear", "gear_factor", entry["gear"]["pair"]["contact_ratio"]),
+                ("gear", "gear_length", entry["gear"]["pair"]["centre_mm"])):
+            text = figure_text(kind, value)
+            assert text in printed[command], (entry["folder"], command, text)
+            assert text in cells, (entry["folder"], kind, text)
+
+
 def test_covers_and_title_blocks_carry_the_row(classroom):
     _, out, _, _, _, _, _ = classroom
     report = pdf_text(out / "S02-方案II" / "00-report.pdf")

@@ -46,7 +46,8 @@ def test_the_rows_are_shown_with_their_errors_before_running(qtbot, class_files)
     assert dialog.table.rowCount() == 4
     cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(4)]
     assert [row[:3] for row in cells] == [["2", "张三", "1"], ["3", "李四", "2"], ["4", "坏", "3"], ["5", "王五", "4"]]
-    assert cells[2][3] == "tasks.csv line 4, column K: must be > 1 and ≤ 5 (got 0.9)"
+    # core's "must be > 1 and ≤ 5" in the words every form of the GUI gives it (widgets.messages)
+    assert cells[2][3] == "tasks.csv line 4, column K: must be greater than 1 and at most 5 (got 0.9)"
     assert dialog.table.item(2, 3).background().color() == BAD
     assert dialog.table.item(0, 3).background().color() != BAD and cells[0][3] == "ready"
     assert "3 students ready, 1 rows with errors" in dialog.summary.text()
@@ -77,3 +78,28 @@ def test_cancel_leaves_only_complete_files(qtbot, class_files):
     for pdf in out.rglob("*.pdf"):          # every file left opens whole
         assert subprocess.run(["pdfinfo", str(pdf)], capture_output=True).returncode == 0, pdf
     assert not (out / "answer-key.json").exists()     # the class did not finish
+
+
+def test_the_rows_errors_are_chinese_in_the_chinese_dialog(window, qtbot, tmp_path):
+    """Gap 2 of issue 41: a bad row's message (core's English) is given in Chinese, as the
+    other refusals of core are; the table's name, the columns and the values typed stay."""
+    from language_checks import assert_chinese_text
+
+    from shaperapp.course.class_dialog import ClassDialog
+    window.set_language("zh_CN")
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text("student,student-number,crank,K,stroke,cut-force,design\n"
+                     "甲,1,100,0.9,300,5,\n乙,2,100,abc,300,5,\n丙,3,,1.4,300,5,\n丁,4,100,1.4,300,-5,\n"
+                     "戊,5,100,1.4,300,5,../x.json\n", encoding="utf-8")
+    dialog = ClassDialog("zh_CN")
+    qtbot.addWidget(dialog)
+    dialog.tasks.setText(str(tasks))
+    dialog.check()
+    errors = [dialog.table.item(r, 3).text() for r in range(5)]
+    assert errors[0].startswith("tasks.csv 第 2 行，K 列：") and errors[0].endswith("0.9）"), errors[0]
+    allowed = {"tasks", "csv", "design", "crank", "dims", "abc", "json", "cut", "force"}
+    for text in errors:
+        assert_chinese_text(text, allowed, text)
+    tasks.write_text("student,student-number,cranky\n甲,1,100\n", encoding="utf-8")
+    dialog.check()
+    assert_chinese_text(dialog.summary.text(), allowed | {"cranky"}, dialog.summary.text())

@@ -1,0 +1,111 @@
+"""The class table's refusals (``core.cli.tasks``) in the UI's language, so the Chinese
+Class dialog marks a bad row with a Chinese sentence (issue 41, gap 2).
+
+Core writes where ("tasks.csv line 7, column K") and what ("must be a number (got abc)")
+in English. Here the place is rebuilt from its parts, and the what is matched against the
+table's own phrases, then against core's shared ones (``shaperapp.widgets.messages``), as
+the other refusals of core are given in Chinese. A phrase not known stays as core wrote it.
+"""
+from __future__ import annotations
+
+import re
+
+from PySide6.QtCore import QCoreApplication
+
+from shaperapp.widgets.messages import allowed_text
+
+translate = QCoreApplication.translate
+
+_WHERE = re.compile(r"^(.+?) line (\d+)(?:, column ([^:]+?))?: (.*)$", re.S)
+_GOT = re.compile(r"^(.*) \(got (.*)\)$", re.S)
+
+# (pattern on core.cli.tasks's English text, template with %1, %2 …)
+_PATTERNS: tuple[tuple[str, str], ...] = (
+    (r"empty; every student needs one$", "empty; every student needs one"),
+    (r"must be one line of text without control characters$",
+     "must be one line of text without control characters"),
+    (r"at most (\d+) characters$", "at most %1 characters"),
+    (r"must be yes or no$", "must be yes or no"),
+    (r"(.+) is outside the table's folder; put the design file beside the table$",
+     "%1 is outside the table's folder; put the design file beside the table"),
+    (r"(\d+) cells, but the header names (\d+) columns$", "%1 cells, but the header names %2 columns"),
+    (r"(--[\w-]+): required \(or use (--[\w-]+) or (--[\w-]+)\)$", "%1: required (or use %2 or %3)"),
+    (r"(--[\w-]+): required$", "%1: required"),
+    (r"(\S+) is also on line (\d+); each student needs a number of their own$",
+     "%1 is also on line %2; each student needs a number of their own"),
+    (r"the folder (.+) is also line (\d+)'s; give the students different numbers$",
+     "the folder %1 is also line %2's; give the students different numbers"),
+    (r"has no name$", "has no name"),
+    (r"named twice$", "named twice"),
+    (r"not a column; did you mean (\S+)\?$", "not a column; did you mean %1?"),
+    (r"not a column; see 'shaper design --help' for the options$",
+     "not a column; see 'shaper design --help' for the options"),
+    (r"no column (\S+)$", "no column %1"),
+    (r"not UTF-8 or GBK text; save it as \"CSV UTF-8\"$", "not UTF-8 or GBK text; save it as \"CSV UTF-8\""),
+    (r"more than (\d+) students; split the class into several tables$",
+     "more than %1 students; split the class into several tables"),
+    (r"larger than (\d+) MB; a class is at most (\d+) rows$", "larger than %1 MB; a class is at most %2 rows"),
+    (r"empty; the first row names the columns \(student, student-number, …\)$",
+     "empty; the first row names the columns (student, student-number, …)"),
+)
+
+
+def _templates() -> dict[str, str]:
+    # Listed literally so pyside6-lupdate finds every template.
+    return {
+        "empty; every student needs one": translate("ClassMessages", "empty; every student needs one"),
+        "must be one line of text without control characters":
+            translate("ClassMessages", "must be one line of text without control characters"),
+        "at most %1 characters": translate("ClassMessages", "at most %1 characters"),
+        "must be yes or no": translate("ClassMessages", "must be yes or no"),
+        "%1 is outside the table's folder; put the design file beside the table":
+            translate("ClassMessages", "%1 is outside the table's folder; put the design file beside the table"),
+        "%1 cells, but the header names %2 columns":
+            translate("ClassMessages", "%1 cells, but the header names %2 columns"),
+        "%1: required (or use %2 or %3)": translate("ClassMessages", "%1: required (or use %2 or %3)"),
+        "%1: required": translate("ClassMessages", "%1: required"),
+        "%1 is also on line %2; each student needs a number of their own":
+            translate("ClassMessages", "%1 is also on line %2; each student needs a number of their own"),
+        "the folder %1 is also line %2's; give the students different numbers":
+            translate("ClassMessages", "the folder %1 is also line %2's; give the students different numbers"),
+        "has no name": translate("ClassMessages", "has no name"),
+        "named twice": translate("ClassMessages", "named twice"),
+        "not a column; did you mean %1?": translate("ClassMessages", "not a column; did you mean %1?"),
+        "not a column; see 'shaper design --help' for the options":
+            translate("ClassMessages", "not a column; see 'shaper design --help' for the options"),
+        "no column %1": translate("ClassMessages", "no column %1"),
+        "not UTF-8 or GBK text; save it as \"CSV UTF-8\"":
+            translate("ClassMessages", "not UTF-8 or GBK text; save it as \"CSV UTF-8\""),
+        "more than %1 students; split the class into several tables":
+            translate("ClassMessages", "more than %1 students; split the class into several tables"),
+        "larger than %1 MB; a class is at most %2 rows":
+            translate("ClassMessages", "larger than %1 MB; a class is at most %2 rows"),
+        "empty; the first row names the columns (student, student-number, …)":
+            translate("ClassMessages", "empty; the first row names the columns (student, student-number, …)"),
+    }
+
+
+def _what(text: str) -> str:
+    """What is wrong, translated; a trailing "(got X)" kept as the value typed."""
+    got = _GOT.match(text)
+    body = allowed_text(got.group(1) if got else text, _PATTERNS, _templates())
+    if got:
+        body = translate("ClassMessages", "%1 (got %2)").replace("%1", body).replace("%2", got.group(2))
+    return body
+
+
+def table_message(text: str) -> str:
+    """A refusal of ``core.cli.tasks`` (a bad row's or the whole table's) in the UI's
+    language: "tasks.csv line 7, column K: must be a number (got abc)"."""
+    where = _WHERE.match(text)
+    if where is None:
+        name, _, rest = text.partition(": ")
+        if not rest:
+            return _what(text)
+        return translate("ClassMessages", "%1: %2").replace("%1", name).replace("%2", _what(rest))
+    name, line, column, rest = where.groups()
+    if column is None:
+        template = translate("ClassMessages", "%1 line %2: %3")
+    else:
+        template = translate("ClassMessages", "%1 line %2, column %3: %4").replace("%3", column).replace("%4", "%3")
+    return template.replace("%1", name).replace("%2", line).replace("%3", _what(rest))

@@ -1,0 +1,59 @@
+"""The task sheet's sketch (issue 41, gap 3): every link carries the task book's number
+(crank 2, block 3, lever 4, rod 5, ram 6) on a leader that starts on that link, the number
+clear of every link, so a student reads the sketch in the book's numbering."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from core.drawing.class_sheets import LEADER, SKETCH_DEG, task_sheet
+from core.drawing.mechanism import joints, link_anchors
+from core.drawing.sheet import Text
+from core.spec import Spec
+
+
+def _doc(rod_ratio):
+    spec = {"mode": "dimensions", "crank": 90.0, "frame": 350.0, "lever": 580.0}
+    doc = Spec.from_dict({**Spec.from_dict(spec).to_dict(), **({"rod_ratio": rod_ratio, "rod_input": "ratio",
+                                                               "variant": "rod"} if rod_ratio else {})})
+    return {"spec": doc.to_dict(), "rpm": [64.0]}, doc.design()
+
+
+def _segment_distance(p, a, b):
+    d = b - a
+    t = min(max(float(np.dot(p - a, d) / np.dot(d, d)), 0.0), 1.0)
+    return float(np.hypot(*(p - a - t * d)))
+
+
+@pytest.mark.parametrize("rod_ratio, numbers", [(0.3, {"2", "3", "4", "5", "6"}), (None, {"2", "3", "4", "6"})])
+def test_every_link_is_numbered_as_the_task_book_numbers_it(rod_ratio, numbers):
+    doc, design = _doc(rod_ratio)
+    where = lambda p: np.asarray(p, dtype=float) / 10.0      # noqa: E731  (1:10)
+    found = link_anchors(design, SKETCH_DEG, where, LEADER)
+    assert {n for n, _, _ in found} == numbers
+    j = {k: where(v) for k, v in joints(design, SKETCH_DEG).items()}
+    links = {"2": [(j["O2"], j["A"])], "4": [(j["O4"], j["B"])], "3": [(j["O4"], j["B"])]}
+    if rod_ratio:
+        links["5"] = [(j["B"], j["C"])]
+    for number, point, offset in found:
+        assert LEADER - 1e-9 <= float(np.hypot(*offset)) <= 1.6 * LEADER + 1e-9
+        if number in links:       # the leader starts on its own link (the block: on the lever it slides on)
+            assert min(_segment_distance(point, a, b) for a, b in links[number]) < 1e-9, number
+        spot = point + offset
+        for a, b in [(j["O2"], j["A"]), (j["O4"], j["B"])]:
+            assert _segment_distance(spot, a, b) > 2.0, number        # the number is off the links
+    sheet = task_sheet(doc, {"student": "x"}, [], {})
+    assert numbers <= {item.text for item in sheet.items if isinstance(item, Text)}
+
+
+def test_the_data_set_shows_given_values_as_typed_and_derived_ones_in_figure_text():
+    """A typed K = 1.4599 and L1 = 100.25 are not rounded to 4 digits (1.46, 100.3); the
+    guide height h, which the tool derives, reads as the answer key and the CLI write it."""
+    from core.drawing.class_sheets import data_rows
+    from core.figure_text import figure_text
+    spec = Spec.from_dict({"mode": "synthesis", "crank": 100.25, "time_ratio": 1.4599, "stroke": 312.5})
+    doc = {"spec": spec.to_dict(), "rpm": [60.0, 72.5]}
+    rows = {row[1]: row[2] for row in data_rows(doc, spec.design(), {})}
+    assert rows["K"] == "1.4599" and rows["l_O_2_A"] == "100.25" and rows["H"] == "312.5"
+    assert rows["n_2"] == "60 / 72.5"
+    assert rows["h"] == figure_text("length", spec.design().guide_above_crank)
