@@ -37,6 +37,15 @@ settings.register_profile("thorough", print_blob=True)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
+def pytest_collection_finish(session) -> None:
+    """What collection made (the modules, their tests, hypothesis's strategies) lives as long
+    as the run: it is frozen out of the garbage collector's walks. The full collection after
+    every Qt test (below) then walks what tests made since, not this too: docs/performance.md,
+    "The test suite's time (29 November)"."""
+    gc.collect()
+    gc.freeze()
+
+
 # A modal dialog open this long in a test is one nobody will answer (see modal_watchdog).
 MODAL_LIMIT_S = 60.0
 
