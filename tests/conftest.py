@@ -18,6 +18,7 @@ for _name in ("XDG_DATA_HOME", "XDG_CONFIG_HOME"):
 from typing import Iterator  # noqa: E402
 
 import pytest  # noqa: E402
+from hypothesis import settings  # noqa: E402
 
 from shaperapp.design.model import DesignModel  # noqa: E402
 from shaperapp.scheme.view import SchemeWidget  # noqa: E402
@@ -27,6 +28,23 @@ from gui_helpers import main_window, shown  # noqa: E402
 from modal_watchdog import ModalWatchdog  # noqa: E402
 
 pytest_plugins = ["hang_guard"]
+
+# Hypothesis profiles (HYPOTHESIS_PROFILE, "ci" unless set): "ci" draws a share of each
+# slow random sweep's examples (tests/sweeps.py), "thorough" all of them. Both print the
+# blob that replays a failing example, since a CI run's examples are not the database's.
+settings.register_profile("ci", print_blob=True)
+settings.register_profile("thorough", print_blob=True)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+def pytest_collection_finish(session) -> None:
+    """What collection made (the modules, their tests, hypothesis's strategies) lives as long
+    as the run: it is frozen out of the garbage collector's walks. The full collection after
+    every Qt test (below) then walks what tests made since, not this too: docs/performance.md,
+    "The test suite's time (29 November)"."""
+    gc.collect()
+    gc.freeze()
+
 
 # A modal dialog open this long in a test is one nobody will answer (see modal_watchdog).
 MODAL_LIMIT_S = 60.0

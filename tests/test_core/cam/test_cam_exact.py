@@ -20,6 +20,7 @@ from core.cam.table import follower_peaks
 from core.errors import DesignError
 
 import cam_oracle as oracle
+from sweeps import examples
 
 EXACT = 1e-9          # relative: "polished as the linkage's are"
 OVER = 1e-9           # °: how far a synthesized cam's true maximum may exceed its allowance
@@ -165,7 +166,7 @@ def test_random_synthesized_cams_meet_the_allowance_exactly(inputs):
 
 
 @pytest.mark.slow
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(60), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(sheets())
 def test_many_random_synthesized_cams_meet_the_allowance_exactly(inputs):
     _random_cam_is_exact(inputs)

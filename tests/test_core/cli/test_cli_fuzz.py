@@ -25,6 +25,7 @@ from core.spec import Spec
 
 from cli_runner import shaper_in_process, shaper_process
 from output_checks import error_names, finite_csv, finite_json
+from sweeps import examples
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -199,14 +200,14 @@ def check_run(argv: list[str], status: int, stdout: str, stderr: str) -> None:
         check_error_line(argv[0], stderr)
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(300), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(argv=command_lines())
 def test_fuzzed_command_lines_succeed_finitely_or_fail_in_one_line(argv):
     status, stdout, stderr = shaper_in_process(*argv)
     check_run(argv, status, stdout, stderr)
 
 
-@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(8), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(argv=command_lines(), ascii_console=st.booleans())
 def test_fuzzed_command_lines_as_real_processes(argv, ascii_console):
     check_run(argv, *shaper_process(*argv, ascii_console=ascii_console, cwd=FOLDER))

@@ -22,6 +22,7 @@ from core.dynamics import MassProperties, masses_for_design
 from core.errors import DesignError
 from core.geometry import synthesize
 from sheet_checks import crossed_texts
+from sweeps import examples
 
 A1 = paper("A1")
 DEFAULT = synthesize(100.0, 1.4, 300.0)
@@ -146,7 +147,7 @@ designs = dict(crank=st.floats(20.0, 300.0, **finite), k=st.floats(1.02, 2.95, *
 
 
 @pytest.mark.slow
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=examples(12), deadline=None)
 @example(crank=100.0, k=1.4, stretch=1.2, rod=None, size="A1", count=12)
 @example(crank=30.0, k=2.95, stretch=4.0, rod=0.3, size="A3", count=24)
 @given(count=st.integers(6, 24), **designs)
@@ -170,7 +171,7 @@ def test_no_label_is_crossed_where_l3_has_no_room_on_its_line(crank, k, stretch,
 
 
 @pytest.mark.slow
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=examples(12), deadline=None)
 @example(crank=100.0, k=1.02, stretch=1.05, rod=None, size="A2")
 @example(crank=205.0, k=1.75, stretch=2.0, rod=None, size="A3")      # μφ under the energy curve
 @example(crank=35.5, k=2.1732, stretch=3.6722, rod=None, size="A3")  # … and for lines lower

@@ -27,6 +27,7 @@ from shaperapp.design.form import DesignForm
 from shaperapp.design.model import DesignModel
 
 from cli_runner import shaper
+from sweeps import examples
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -118,7 +119,7 @@ def shown_values(form: DesignForm) -> dict:
     return values
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture,
+@settings(max_examples=examples(300), deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture,
                                                                   HealthCheck.too_slow])
 @given(st.lists(actions, max_size=10))
 def test_any_edit_sequence_saves_a_file_that_reopens_to_the_screen(rig, sequence):

@@ -100,23 +100,22 @@ def _pixels(box, height_mm: float) -> tuple[slice, slice]:
             slice(int(x0 * PX_PER_MM), int(np.ceil(x1 * PX_PER_MM))))
 
 
-def _sheets():
-    return {
-        "motion block A3": motion_sheet(BLOCK, 40.0, paper("A3")),
-        "motion rod A2": motion_sheet(ROD, 60.0, paper("A2"), count=16),
-        "forces block A3": forces_sheet(BLOCK, 40.0, LOADS, paper("A3")),
-        "forces rod A2": forces_sheet(ROD, 60.0, LOADS, paper("A2")),
-        "cam A2": cam_sheet(design_cam(CamInputs(120.0, Program(15.0, 60.0, 10.0, 60.0)), BLOCK), 40.0,
-                            paper("A2")),
-    }
-
-
-SHEETS = _sheets()
+# Each sheet is built by the test that draws it, not at import: pytest-xdist imports this
+# module in every worker to collect it, and five sheets built there cost each worker about
+# 5 s of CPU whether or not it runs these tests.
+SHEETS = {
+    "motion block A3": lambda: motion_sheet(BLOCK, 40.0, paper("A3")),
+    "motion rod A2": lambda: motion_sheet(ROD, 60.0, paper("A2"), count=16),
+    "forces block A3": lambda: forces_sheet(BLOCK, 40.0, LOADS, paper("A3")),
+    "forces rod A2": lambda: forces_sheet(ROD, 60.0, LOADS, paper("A2")),
+    "cam A2": lambda: cam_sheet(design_cam(CamInputs(120.0, Program(15.0, 60.0, 10.0, 60.0)), BLOCK), 40.0,
+                                paper("A2")),
+}
 
 
 @pytest.mark.parametrize("name", sorted(SHEETS))
 def test_sheet_dxf_drawn_by_cad_is_the_sheet_the_user_saw(name, tmp_path, qapp):
-    built = SHEETS[name]
+    built = SHEETS[name]()
     sheet: Sheet = built.sheet
     width, height = sheet.paper.width, sheet.paper.height
     lines_only = Sheet(sheet.paper, tuple(it for it in sheet.items if not isinstance(it, Text)))
