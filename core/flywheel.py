@@ -111,6 +111,18 @@ def _torque_parts(design, sh: Shape, masses: MassProperties) -> tuple[np.ndarray
     return torque[0], torque[1]
 
 
+def _torque_at(design, sh: Shape, masses: MassProperties, w2, cutting) -> np.ndarray:
+    """Driving torque at the shape's angles for each point's own ω² and cut switch
+    (1 while cutting, else 0), N·m: what the polishes evaluate.
+
+    One elimination with ω² and gravity given per point, not :func:`_torque_parts`'s two
+    (static and per unit ω²) combined afterwards: every load is linear in (ω², g, P), so
+    the value is the same to rounding, at half the work of each polishing step.
+    """
+    torque = _eliminate(design, sh, masses, w2, masses.g, 0.0)["crank_torque"]
+    return torque + cutting * (masses.cut_force_N * MM) * sh.ram1
+
+
 def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, intervals: int,
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
@@ -232,9 +244,7 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
 
     def slope(phi, w2, mean, cutting, *lengths):
         one = d.with_lengths(lengths)
-        at = shape(one, phi)
-        s, i = _torque_parts(one, at, masses)
-        return s + w2 * i + cutting * cut * at.ram1 - mean
+        return _torque_at(one, shape(one, phi), masses, w2, cutting) - mean
 
     for cutting in (1.0, 0.0):
         samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :] \
@@ -310,9 +320,7 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
 
     def torque(phi, w2, sign, cutting, *lengths):
         one = d.with_lengths(lengths)
-        at = shape(one, phi)
-        s, i = _torque_parts(one, at, masses)
-        return sign * (s + w2 * i + cutting * cut * at.ram1)
+        return sign * _torque_at(one, shape(one, phi), masses, w2, cutting)
 
     # Four curves per design and speed, stacked: (max, min) × (cutting, not cutting).
     sign = np.array([1.0, 1.0, -1.0, -1.0])[:, None, None, None]
