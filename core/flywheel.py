@@ -100,9 +100,19 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
 
 
-def _torque_parts(design, sh: Shape, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
-    """Driving torque without the cut as (static part, part per unit ω²), N·m; the cut
-    adds P·dCx/dφ (virtual work) where it acts."""
+def _torque_parts(design, sh: Shape, masses: MassProperties,
+                  omega: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Driving torque without the cut as (part the same at every speed, part per unit ω²),
+    N·m, so that the torque at speed ω is the first plus ω² times the second; the cut adds
+    P·dCx/dφ (virtual work) where it acts.
+
+    Given ``omega`` of one speed: that speed's whole torque and zero, from one elimination
+    instead of the two (static, per unit ω²) that many speeds share (a sixth of a loaded
+    one-speed sweep's time went to the second)."""
+    if omega is not None and np.size(omega) == 1:
+        torque = _torque_at(design, sh, masses, float(np.ravel(omega)[0]) ** 2, 0.0)
+        torque = np.broadcast_to(torque, np.shape(sh.ram1))
+        return torque, np.zeros(torque.shape)
     lead = (2,) + (1,) * np.ndim(sh.ram1)
     w2 = np.array([0.0, 1.0]).reshape(lead)
     g = np.array([masses.g, 0.0]).reshape(lead)
@@ -128,20 +138,19 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
     sh = shape(col, phi)
-    static, inertial = _torque_parts(col, sh, masses)
+    samples = _torque_samples(d, sh, masses, omega)
     on, off = cut_window(d, masses.idle_fraction, sh)
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     mean = np.broadcast_to(mean[:, None], (mean.size, omega.size))
     w2 = (omega ** 2)[None, :, None]
     start = _stored(col, shape(col, np.zeros(1)), masses)
     energy = _energy(col, sh, w2, mean[..., None], masses, start)
-    top, bottom = _energy_extremes(d, sh, static, inertial, energy, start, omega, mean, (on, off),
-                                   masses)
+    top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
     swing = top - bottom
     je = equivalent_inertia(col, sh, masses)
     je = np.broadcast_to(je, sh.ram1.shape)
     if peaks:
-        high, low = _torque_peaks(d, sh, static, inertial, omega, masses, (on, off))
+        high, low = _torque_peaks(d, samples, omega, masses, (on, off))
     else:
         high = low = np.full(mean.shape, np.nan)
     out = {"mean_torque_N_m": np.array(mean), "max_torque_N_m": high, "min_torque_N_m": low,
@@ -206,9 +215,9 @@ def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
             + masses.cut_force_N * MM * travel - mean * turn)
 
 
-def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                     energy: np.ndarray, start: tuple[np.ndarray, np.ndarray], omega: np.ndarray,
-                     mean: np.ndarray, window: tuple[np.ndarray, np.ndarray],
+def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
+                     start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
+                     window: tuple[np.ndarray, np.ndarray],
                      masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest E(φ) per design and speed, exactly, J.
 
@@ -219,8 +228,8 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     each is bracketed at every sign change on the grid (plus, for the rod
     variant, samples crowding toward the sharp angles), every bracket is
     polished (not only the best few: E may have several nearly equal peaks),
-    and a zero counts only inside its own piece. ``start`` is :func:`_stored` at φ = 0,
-    ``window`` the cut's switch angles.
+    and a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
+    ``start`` is :func:`_stored` at φ = 0, ``window`` the cut's switch angles.
     """
     from .extrema import sign_changes
     from .polish import bracket_root
@@ -229,7 +238,7 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
 
     count, speeds = mean.shape
     col = d.column()
-    x, stat, iner, ram1, segments = _torque_samples(d, sh, static, inertial, masses)
+    x, stat, iner, ram1, segments = samples
     w2 = (omega ** 2)[None, :, None]
     cut = masses.cut_force_N * MM
     top = energy.max(axis=-1).reshape(-1)
@@ -267,16 +276,18 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
 
 
-def _torque_samples(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                    masses: MassProperties) -> tuple[np.ndarray, ...]:
-    """The torque's samples that bracket its extrema and those of the energy: (φ, static
-    part, part per unit ω², dCx/dφ, segments), each array (designs, samples).
+def _torque_samples(d: Designs, sh: Shape, masses: MassProperties,
+                    omega: np.ndarray) -> tuple:
+    """The torque's samples that bracket its extrema and those of the energy: (φ, part the
+    same at every speed, part per unit ω², dCx/dφ, segments), each array (designs, samples),
+    the parts as :func:`_torque_parts` gives them for the speeds ``omega``.
 
     The grid's periodic samples (one wrapping segment) and, where any design of the
     chunk needs them, samples crowding toward the rod variant's sharp angles (one
     segment each), where its torque can change faster than the grid resolves.
     """
     col = d.column()
+    static, inertial = _torque_parts(col, sh, masses, omega)
     phi = sh.phi[:-1]
     x = [np.broadcast_to(phi, static[:, :-1].shape)]
     stat, iner = [static[:, :-1]], [inertial[:, :-1]]
@@ -286,7 +297,7 @@ def _torque_samples(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndar
         for j in range(4):
             at = sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS
             crowd = shape(col, at)
-            s_j, i_j = _torque_parts(col, crowd, masses)
+            s_j, i_j = _torque_parts(col, crowd, masses, omega)
             start = sum(a.shape[-1] for a in x)
             x.append(at)
             stat.append(s_j)
@@ -297,12 +308,11 @@ def _torque_samples(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndar
     return x, stat, iner, ram1, segments
 
 
-def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                  omega: np.ndarray, masses: MassProperties,
+def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
                   window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
-    The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + P·dCx/dφ
+    The torque is T0 = static + ω²·inertial (``samples``, :func:`_torque_samples`) without the cut and T1 = T0 + P·dCx/dφ
     while cutting: two smooth curves, switched at the ends of the cut (``window``,
     from :func:`cut_window`). The peak is the larger of T1's maximum over the cut,
     T0's over the rest, and both one-sided values at each switch. Each maximum is
@@ -312,7 +322,7 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
     from .extrema import piece_maximum
 
     period = 2.0 * math.pi
-    x, stat, iner, ram1, segments = _torque_samples(d, sh, static, inertial, masses)
+    x, stat, iner, ram1, segments = samples
     on, off = window
     cut = masses.cut_force_N * MM
     w2 = (omega ** 2)[None, :, None]
