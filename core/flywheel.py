@@ -258,7 +258,12 @@ def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
     for cutting in (1.0, 0.0):
         samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :] \
             - mean[..., None]
-        owner, lo, hi, f_lo, f_hi = sign_changes(x[:, None, :], samples, segments)
+        cells = sign_changes(x[:, None, :], samples, segments)
+        # Only the cells that can hold a zero of this piece: the rest would be polished
+        # only to be dropped below (half of them: each curve is the slope over one piece).
+        owner, lo, hi, f_lo, f_hi = (v[_reaches(cells[1], cells[2], on[cells[0] // speeds],
+                                                off[cells[0] // speeds], bool(cutting))]
+                                     for v in cells)
         if owner.size == 0:
             continue
         args = [flat_w2[owner], flat_mean[owner]]
@@ -267,13 +272,29 @@ def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
         design = owner // speeds
         turn = np.mod(roots, 2.0 * math.pi)
         inside = (turn >= on[design]) & (turn <= off[design])
-        keep = inside if cutting else ~inside
+        keep = np.flatnonzero(inside if cutting else ~inside)
+        owner, design, roots = owner[keep], design[keep], roots[keep]
         one = d.with_lengths([v[owner] for v in lengths])
-        value = _energy(one, shape(one, roots), args[0], args[1], masses,
-                        _stored(one, shape(one, np.zeros_like(roots)), masses))
-        np.fmax.at(top, owner[keep], value[keep])
-        np.fmin.at(bottom, owner[keep], value[keep])
+        value = _energy(one, shape(one, roots), flat_w2[owner], flat_mean[owner], masses,
+                        tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
+        np.fmax.at(top, owner, value)
+        np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
+
+
+def _reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
+             cutting: bool) -> np.ndarray:
+    """Which cells [lo, hi] (rad, hi − lo < 2π, either may lie beyond [0, 2π)) reach into the
+    cut [on, off] (``cutting``) or into the rest of the cycle: those where a zero can lie
+    that :func:`_energy_extremes` keeps, which takes the crank angle modulo 2π. Kept with a
+    margin of 1e-9 rad, so a zero on a switch angle is never lost to rounding."""
+    first = np.mod(lo, 2.0 * math.pi)
+    last = first + (hi - lo)                       # beyond 2π where the cell wraps
+    slack = 1e-9
+    if cutting:
+        return ((first <= off + slack) & (last >= on - slack)) | \
+            (last - 2.0 * math.pi >= on - slack)
+    return ~((first > on + slack) & (last < off - slack))
 
 
 def _torque_samples(d: Designs, sh: Shape, masses: MassProperties,
