@@ -193,10 +193,12 @@ def piece_maximum(fun: Callable[..., np.ndarray], x: np.ndarray, values: np.ndar
 
     The curve ``fun(x, *args)`` is smooth on and beyond its interval (a piece
     of a piecewise-smooth function, evaluated by that piece's formula), so a
-    sampled local maximum inside the interval is a valid three-point bracket
-    even next to an end. The best few are polished by :func:`polish_minimum`;
-    a polished maximum that lands outside the interval is dropped, and the
-    values at both ends count. With ``period`` the interval may wrap around.
+    sampled local maximum is a valid three-point bracket even next to an end.
+    A sampled maximum counts when its bracket reaches into the interval, not
+    only when the sample itself lies inside: a peak just inside an end whose
+    nearest sample lies just outside is otherwise missed (issue 42). The best
+    few are polished by :func:`polish_minimum`; a polished maximum that lands
+    outside the interval is dropped, and the values at both ends count. With ``period`` the interval may wrap around.
     Shapes: ``values`` (…, n); ``x`` (…, n) or broadcastable to it; ``lo``,
     ``hi`` (…,) or broadcastable to it; args against (…, 1). ``x``, ``lo`` and
     ``hi`` are used at their own shapes where they can be: which samples lie
@@ -219,18 +221,25 @@ def piece_maximum(fun: Callable[..., np.ndarray], x: np.ndarray, values: np.ndar
     within = inside(x, lo[..., None], hi[..., None])      # at the intervals' own shape
     best = np.fmax(best, np.max(np.where(within, values, -np.inf), axis=-1))
     x_all = np.broadcast_to(x, values.shape)                # views: never copied
-    within = np.broadcast_to(within, np.broadcast_shapes(within.shape, values.shape))
+    full = np.broadcast_shapes(within.shape, values.shape)
     segments = [(0, n, 0.0)] if segments is None else list(segments)
     brackets: list[list[np.ndarray]] = []
+
+    def neighbours(seg: np.ndarray, wraps: bool) -> tuple[np.ndarray, ...]:
+        """(previous, own, next) of each sample with both neighbours; a wrapping segment's
+        ends neighbour each other."""
+        ext = np.concatenate([seg[..., -1:], seg, seg[..., :1]], axis=-1) if wraps else seg
+        return ext[..., :-2], ext[..., 1:-1], ext[..., 2:]
+
     for start, stop, seg_period in segments:
         seg_x, seg_v = x_all[..., start:stop], values[..., start:stop]
         size = stop - start
-        # Each sample between its neighbours; a wrapping segment's ends neighbour each other.
         wraps = seg_period > 0.0
-        ext = np.concatenate([seg_v[..., -1:], seg_v, seg_v[..., :1]], axis=-1) if wraps else seg_v
-        prev_v, mid_v, next_v = ext[..., :-2], ext[..., 1:-1], ext[..., 2:]
+        prev_v, mid_v, next_v = neighbours(seg_v, wraps)
         first = 0 if wraps else 1                           # segment index of mid_v[..., 0]
-        seg_in = within[..., start + first:start + first + mid_v.shape[-1]]
+        # The bracket reaches into the interval (at the intervals' own shape, then a view).
+        seg_in = np.logical_or.reduce(neighbours(within[..., start:stop], wraps))
+        seg_in = np.broadcast_to(seg_in, full[:-1] + seg_in.shape[-1:])
         peak = (mid_v >= prev_v) & (mid_v >= next_v) & ((mid_v > prev_v) | (mid_v > next_v))
         score = np.where(peak & seg_in, mid_v, -np.inf)
         for _ in range(min(candidates, score.shape[-1])):

@@ -100,9 +100,19 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
 
 
-def _torque_parts(design, sh: Shape, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
-    """Driving torque without the cut as (static part, part per unit ω²), N·m; the cut
-    adds P·dCx/dφ (virtual work) where it acts."""
+def _torque_parts(design, sh: Shape, masses: MassProperties,
+                  omega: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Driving torque without the cut as (part the same at every speed, part per unit ω²),
+    N·m, so that the torque at speed ω is the first plus ω² times the second; the cut adds
+    P·dCx/dφ (virtual work) where it acts.
+
+    Given ``omega`` of one speed: that speed's whole torque and zero, from one elimination
+    instead of the two (static, per unit ω²) that many speeds share (a sixth of a loaded
+    one-speed sweep's time went to the second)."""
+    if omega is not None and np.size(omega) == 1:
+        torque = _torque_at(design, sh, masses, float(np.ravel(omega)[0]) ** 2, 0.0)
+        torque = np.broadcast_to(torque, np.shape(sh.ram1))
+        return torque, np.zeros(torque.shape)
     lead = (2,) + (1,) * np.ndim(sh.ram1)
     w2 = np.array([0.0, 1.0]).reshape(lead)
     g = np.array([masses.g, 0.0]).reshape(lead)
@@ -111,25 +121,36 @@ def _torque_parts(design, sh: Shape, masses: MassProperties) -> tuple[np.ndarray
     return torque[0], torque[1]
 
 
+def _torque_at(design, sh: Shape, masses: MassProperties, w2, cutting) -> np.ndarray:
+    """Driving torque at the shape's angles for each point's own ω² and cut switch
+    (1 while cutting, else 0), N·m: what the polishes evaluate.
+
+    One elimination with ω² and gravity given per point, not :func:`_torque_parts`'s two
+    (static and per unit ω²) combined afterwards: every load is linear in (ω², g, P), so
+    the value is the same to rounding, at half the work of each polishing step.
+    """
+    torque = _eliminate(design, sh, masses, w2, masses.g, 0.0)["crank_torque"]
+    return torque + cutting * (masses.cut_force_N * MM) * sh.ram1
+
+
 def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, intervals: int,
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
     sh = shape(col, phi)
-    static, inertial = _torque_parts(col, sh, masses)
+    samples = _torque_samples(d, sh, masses, omega)
     on, off = cut_window(d, masses.idle_fraction, sh)
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     mean = np.broadcast_to(mean[:, None], (mean.size, omega.size))
     w2 = (omega ** 2)[None, :, None]
     start = _stored(col, shape(col, np.zeros(1)), masses)
     energy = _energy(col, sh, w2, mean[..., None], masses, start)
-    top, bottom = _energy_extremes(d, sh, static, inertial, energy, start, omega, mean, (on, off),
-                                   masses)
+    top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
     swing = top - bottom
     je = equivalent_inertia(col, sh, masses)
     je = np.broadcast_to(je, sh.ram1.shape)
     if peaks:
-        high, low = _torque_peaks(d, sh, static, inertial, omega, masses, (on, off))
+        high, low = _torque_peaks(d, samples, omega, masses, (on, off))
     else:
         high = low = np.full(mean.shape, np.nan)
     out = {"mean_torque_N_m": np.array(mean), "max_torque_N_m": high, "min_torque_N_m": low,
@@ -194,9 +215,9 @@ def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
             + masses.cut_force_N * MM * travel - mean * turn)
 
 
-def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                     energy: np.ndarray, start: tuple[np.ndarray, np.ndarray], omega: np.ndarray,
-                     mean: np.ndarray, window: tuple[np.ndarray, np.ndarray],
+def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
+                     start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
+                     window: tuple[np.ndarray, np.ndarray],
                      masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest E(φ) per design and speed, exactly, J.
 
@@ -207,8 +228,8 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     each is bracketed at every sign change on the grid (plus, for the rod
     variant, samples crowding toward the sharp angles), every bracket is
     polished (not only the best few: E may have several nearly equal peaks),
-    and a zero counts only inside its own piece. ``start`` is :func:`_stored` at φ = 0,
-    ``window`` the cut's switch angles.
+    and a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
+    ``start`` is :func:`_stored` at φ = 0, ``window`` the cut's switch angles.
     """
     from .extrema import sign_changes
     from .polish import bracket_root
@@ -217,7 +238,7 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
 
     count, speeds = mean.shape
     col = d.column()
-    x, stat, iner, ram1, segments = _torque_samples(d, sh, static, inertial, masses)
+    x, stat, iner, ram1, segments = samples
     w2 = (omega ** 2)[None, :, None]
     cut = masses.cut_force_N * MM
     top = energy.max(axis=-1).reshape(-1)
@@ -232,14 +253,17 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
 
     def slope(phi, w2, mean, cutting, *lengths):
         one = d.with_lengths(lengths)
-        at = shape(one, phi)
-        s, i = _torque_parts(one, at, masses)
-        return s + w2 * i + cutting * cut * at.ram1 - mean
+        return _torque_at(one, shape(one, phi), masses, w2, cutting) - mean
 
     for cutting in (1.0, 0.0):
         samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :] \
             - mean[..., None]
-        owner, lo, hi, f_lo, f_hi = sign_changes(x[:, None, :], samples, segments)
+        cells = sign_changes(x[:, None, :], samples, segments)
+        # Only the cells that can hold a zero of this piece: the rest would be polished
+        # only to be dropped below (half of them: each curve is the slope over one piece).
+        owner, lo, hi, f_lo, f_hi = (v[_reaches(cells[1], cells[2], on[cells[0] // speeds],
+                                                off[cells[0] // speeds], bool(cutting))]
+                                     for v in cells)
         if owner.size == 0:
             continue
         args = [flat_w2[owner], flat_mean[owner]]
@@ -248,25 +272,43 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
         design = owner // speeds
         turn = np.mod(roots, 2.0 * math.pi)
         inside = (turn >= on[design]) & (turn <= off[design])
-        keep = inside if cutting else ~inside
+        keep = np.flatnonzero(inside if cutting else ~inside)
+        owner, design, roots = owner[keep], design[keep], roots[keep]
         one = d.with_lengths([v[owner] for v in lengths])
-        value = _energy(one, shape(one, roots), args[0], args[1], masses,
-                        _stored(one, shape(one, np.zeros_like(roots)), masses))
-        np.fmax.at(top, owner[keep], value[keep])
-        np.fmin.at(bottom, owner[keep], value[keep])
+        value = _energy(one, shape(one, roots), flat_w2[owner], flat_mean[owner], masses,
+                        tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
+        np.fmax.at(top, owner, value)
+        np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
 
 
-def _torque_samples(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                    masses: MassProperties) -> tuple[np.ndarray, ...]:
-    """The torque's samples that bracket its extrema and those of the energy: (φ, static
-    part, part per unit ω², dCx/dφ, segments), each array (designs, samples).
+def _reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
+             cutting: bool) -> np.ndarray:
+    """Which cells [lo, hi] (rad, hi − lo < 2π, either may lie beyond [0, 2π)) reach into the
+    cut [on, off] (``cutting``) or into the rest of the cycle: those where a zero can lie
+    that :func:`_energy_extremes` keeps, which takes the crank angle modulo 2π. Kept with a
+    margin of 1e-9 rad, so a zero on a switch angle is never lost to rounding."""
+    first = np.mod(lo, 2.0 * math.pi)
+    last = first + (hi - lo)                       # beyond 2π where the cell wraps
+    slack = 1e-9
+    if cutting:
+        return ((first <= off + slack) & (last >= on - slack)) | \
+            (last - 2.0 * math.pi >= on - slack)
+    return ~((first > on + slack) & (last < off - slack))
+
+
+def _torque_samples(d: Designs, sh: Shape, masses: MassProperties,
+                    omega: np.ndarray) -> tuple:
+    """The torque's samples that bracket its extrema and those of the energy: (φ, part the
+    same at every speed, part per unit ω², dCx/dφ, segments), each array (designs, samples),
+    the parts as :func:`_torque_parts` gives them for the speeds ``omega``.
 
     The grid's periodic samples (one wrapping segment) and, where any design of the
     chunk needs them, samples crowding toward the rod variant's sharp angles (one
     segment each), where its torque can change faster than the grid resolves.
     """
     col = d.column()
+    static, inertial = _torque_parts(col, sh, masses, omega)
     phi = sh.phi[:-1]
     x = [np.broadcast_to(phi, static[:, :-1].shape)]
     stat, iner = [static[:, :-1]], [inertial[:, :-1]]
@@ -276,7 +318,7 @@ def _torque_samples(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndar
         for j in range(4):
             at = sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS
             crowd = shape(col, at)
-            s_j, i_j = _torque_parts(col, crowd, masses)
+            s_j, i_j = _torque_parts(col, crowd, masses, omega)
             start = sum(a.shape[-1] for a in x)
             x.append(at)
             stat.append(s_j)
@@ -287,12 +329,11 @@ def _torque_samples(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndar
     return x, stat, iner, ram1, segments
 
 
-def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarray,
-                  omega: np.ndarray, masses: MassProperties,
+def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
                   window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
-    The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + P·dCx/dφ
+    The torque is T0 = static + ω²·inertial (``samples``, :func:`_torque_samples`) without the cut and T1 = T0 + P·dCx/dφ
     while cutting: two smooth curves, switched at the ends of the cut (``window``,
     from :func:`cut_window`). The peak is the larger of T1's maximum over the cut,
     T0's over the rest, and both one-sided values at each switch. Each maximum is
@@ -302,7 +343,7 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
     from .extrema import piece_maximum
 
     period = 2.0 * math.pi
-    x, stat, iner, ram1, segments = _torque_samples(d, sh, static, inertial, masses)
+    x, stat, iner, ram1, segments = samples
     on, off = window
     cut = masses.cut_force_N * MM
     w2 = (omega ** 2)[None, :, None]
@@ -310,9 +351,7 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
 
     def torque(phi, w2, sign, cutting, *lengths):
         one = d.with_lengths(lengths)
-        at = shape(one, phi)
-        s, i = _torque_parts(one, at, masses)
-        return sign * (s + w2 * i + cutting * cut * at.ram1)
+        return sign * _torque_at(one, shape(one, phi), masses, w2, cutting)
 
     # Four curves per design and speed, stacked: (max, min) × (cutting, not cutting).
     sign = np.array([1.0, 1.0, -1.0, -1.0])[:, None, None, None]

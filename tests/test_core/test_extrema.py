@@ -260,3 +260,24 @@ def test_polish_minimum_finds_smooth_minima_with_known_values():
     np.testing.assert_allclose(at, math.pi + shift, rtol=0, atol=1e-8)
     np.testing.assert_allclose(value, -1.0, rtol=0, atol=1e-15)
     assert len(calls) <= 5                      # the rule before this fix took 17
+
+
+def test_piece_maximum_finds_a_peak_just_inside_its_interval_whose_sample_lies_outside():
+    """Issue 42, item 12: a sweep missed the peak torque of a design with K = 1.01 by 6e-5
+    (−44.19116 N·m for −44.19401): the peak lay 0.006 rad inside the piece after the cut,
+    its nearest sample just before the switch, outside the piece, so no sample inside
+    was a local maximum and only the piece's end counted. Here f = −(x − 0.505)² sampled
+    every 0.1 on [0, 1], the interval [0.503, 1]: the maximum, 0 at 0.505, is by hand."""
+    from core.extrema import piece_maximum
+
+    def f(x):
+        return -(x - 0.505) ** 2
+
+    x = np.linspace(0.0, 1.0, 11)
+    best = piece_maximum(f, x, f(x)[None, :], np.array([0.503]), np.array([1.0]))
+    assert best[0] == pytest.approx(0.0, abs=1e-15)
+    # The same interval reached across a wrapping segment's end: [−0.497, 0.2] mod 1.
+    g = lambda t: -(np.mod(t + 0.5, 1.0) - 0.5 - 0.005) ** 2    # noqa: E731 peak at 0.005
+    best = piece_maximum(g, x[:-1], g(x[:-1])[None, :], np.array([0.003]), np.array([0.2]),
+                         segments=[(0, 10, 1.0)], period=1.0)
+    assert best[0] == pytest.approx(0.0, abs=1e-15)
