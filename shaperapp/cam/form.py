@@ -11,10 +11,9 @@ from PySide6.QtWidgets import QComboBox, QWidget
 
 from core.cam import LAWS
 from core.cam.cam import RETURN_PRESSURE_DEG
-from core.errors import DesignError
 from shaperapp.design.fields import parse_number
 from shaperapp.parts.form import PartForm
-from shaperapp.widgets.messages import describe
+from shaperapp.widgets.messages import describe as describe_error
 
 from .model import CHOICES, NUMBERS, OPTIONAL, CamModel
 
@@ -39,6 +38,8 @@ class CamForm(PartForm):
         self.retranslate()
         self._show_typed()
         self._show_error()
+
+    describe = staticmethod(describe_error)
 
     def make_combos(self) -> dict[str, QComboBox]:
         return {name: QComboBox(self) for name in CHOICES}
@@ -73,9 +74,6 @@ class CamForm(PartForm):
     def read(self, name: str) -> Any:
         text = self.fields[name].edit.text()
         return "" if name in OPTIONAL and not text.strip() else parse_number(text)
-
-    def describe(self, error: DesignError) -> str:
-        return describe(error)
 
     def kept(self) -> str:
         return self.tr("The last valid cam stays on screen.")

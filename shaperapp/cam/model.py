@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject
 
 from core.cam import Cam, CamInputs, Program, design_cam
 from core.cam.build import BOSS_MM, CLEARANCE_MM, HUB_MM, FitError
@@ -86,12 +86,11 @@ class CamModel(PartModel):
     Computed lazily: while the Cam tab is hidden a linkage edit only marks the cam stale
     (an edit stays ~30 ms cheaper, and start-up computes no cam)."""
 
-    camChanged = Signal()
+    camChanged = PartModel.valueChanged     # one signal, the name the part's readers use
     PART = "cam"
 
     def __init__(self, model: DesignModel, parent: QObject | None = None) -> None:
         super().__init__(model, CamTyped(), None, parent=parent)
-        self.valueChanged.connect(self.camChanged)
         self._active = False        # the Cam tab is on screen: a linkage edit recomputes at once
         self._stale = True
         model.resultsChanged.connect(self._linkage_changed)

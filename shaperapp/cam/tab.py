@@ -23,19 +23,18 @@ class CamTab(PartTab):
     window gives one: the window keeps the cam (which Save writes) from the start and
     builds this tab only when it is first shown."""
 
+    MODEL, FORM, VIEW = CamModel, CamForm, CamProfileView
     EXPORTS = ("csv", "image", "dxf")
 
     def __init__(self, model: DesignModel, parent: QWidget | None = None,
                  cam_model: CamModel | None = None) -> None:
-        super().__init__(parent)
-        self.cam_model = cam_model if cam_model is not None else CamModel(model, self)
-        self.form = CamForm(self.cam_model)
-        self.profile = CamProfileView(self.cam_model)
+        super().__init__(model, parent, cam_model)
+        self.cam_model, self.profile = self.part_model, self.view
         self.plots = CamPlots(self.cam_model)
         self.figures = QLabel(self)
         self.figures.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.figures.setWordWrap(True)
-        scroll = self._assemble((self.form, self.figures), (), self.profile, self.plots)
+        scroll = self._assemble((self.form, self.figures), (), self.plots)
         scroll.setMinimumWidth(scroll.widget().sizeHint().width() + 16)
         scroll.setMaximumWidth(scroll.widget().sizeHint().width() + 16)
         self.cam_model.camChanged.connect(self.show_figures)

@@ -12,7 +12,6 @@ from typing import Any
 
 from PySide6.QtWidgets import QComboBox, QLabel, QWidget
 
-from core.errors import DesignError
 from core.gear.involute import FIRST_SERIES_MM
 from shaperapp.design.fields import exact_number, parse_number
 from shaperapp.parts.form import PartForm
@@ -58,6 +57,8 @@ class GearForm(PartForm):
         self.retranslate()
         self._show_typed()
 
+    describe = staticmethod(describe_gear_error)
+
     def make_combos(self) -> dict[str, QComboBox]:
         self.module = QComboBox(self)
         self.module.setEditable(True)
@@ -88,9 +89,6 @@ class GearForm(PartForm):
 
     def read(self, name: str) -> Any:
         return parse_number(self.module.currentText()) if name == "module" else super().read(name)
-
-    def describe(self, error: DesignError) -> str:
-        return describe_gear_error(error)
 
     def kept(self) -> str:
         return self.tr("The last valid gear pair stays on screen.")

@@ -12,9 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QCoreApplication, QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject
 
-from core.errors import DesignError
 from core.gear import GearPair, GearPairInputs, design_pair
 from core.gear.file import gear_from_dict, gear_to_dict
 from shaperapp.design.model import DesignModel
@@ -96,12 +95,11 @@ def check_part(data: Any) -> GearPair:
 class GearModel(PartModel):
     """Signals: ``pairChanged`` (a new valid pair), ``errorChanged``, ``typedChanged``."""
 
-    pairChanged = Signal()
+    pairChanged = PartModel.valueChanged     # one signal, the name the part's readers use
     PART = "gear"
 
     def __init__(self, model: DesignModel, parent: QObject | None = None) -> None:
         super().__init__(model, GearTyped(), DEFAULT_PAIR, check_part, parent)
-        self.valueChanged.connect(self.pairChanged)
         self._load()
 
     @property

@@ -42,14 +42,13 @@ class GearTab(PartTab):
     """One widget taking the design model. The window keeps the gear model (which Save
     writes) from the start and builds this tab only when it is first shown."""
 
+    MODEL, FORM, VIEW = GearModel, GearForm, GearPairView
     EXPORTS = ("csv", "sheet")
 
     def __init__(self, model: DesignModel, parent: QWidget | None = None,
                  gear_model: GearModel | None = None) -> None:
-        super().__init__(parent)
-        self.gear_model = gear_model if gear_model is not None else GearModel(model, self)
-        self.form = GearForm(self.gear_model)
-        self.view = GearPairView(self.gear_model)
+        super().__init__(model, parent, gear_model)
+        self.gear_model = self.part_model
         self.results = GearResults(self.gear_model)
         self.close_up = QCheckBox(self)
         self.close_up.toggled.connect(self.view.set_close_up)
@@ -58,7 +57,7 @@ class GearTab(PartTab):
         tables.setWidgetResizable(True)
         tables.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.gear_model.pairChanged.connect(tables.updateGeometry)   # its least width follows
-        self._side = self._assemble((self.form, self.close_up), (self.results.checks,), self.view, tables)
+        self._side = self._assemble((self.form, self.close_up), (self.results.checks,), tables)
         self.retranslate()
 
     def retranslate(self) -> None:

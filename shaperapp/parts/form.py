@@ -60,7 +60,9 @@ class PartForm(QWidget):
         """What the text of field ``name`` means, as the model takes it."""
         return parse_number(self.fields[name].edit.text())
 
-    def describe(self, error: DesignError) -> str:
+    @staticmethod
+    def describe(error: DesignError) -> str:
+        """The reason in the current language (a subclass names its messages' function)."""
         raise NotImplementedError
 
     def kept(self) -> str:

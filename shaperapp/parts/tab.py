@@ -5,7 +5,8 @@ in a message, never as a traceback.
 
 A part's tab subclasses :class:`PartTab`, names its exports (``EXPORTS``; each ``kind`` is
 done by its ``export_<kind>(path)``) with their file filters (``export_choice``), and builds
-its widgets before calling :meth:`PartTab._assemble`.
+its widgets (after the part model, form and drawing: ``MODEL``, ``FORM``, ``VIEW``) before calling
+:meth:`PartTab._assemble`.
 """
 from __future__ import annotations
 
@@ -15,22 +16,35 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QMessageBox, QPushButton, QScrollArea, QSplitter,
                                QVBoxLayout, QWidget)
 
+from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.messages import failure_reason
 
 from .form import PartForm
+from .model import PartModel
+from .view import PartView
 
 
 class PartTab(QWidget):
     """The layout and the exports of a part's tab; ``form`` is the part's :class:`PartForm`."""
 
     EXPORTS: tuple[str, ...] = ()
-    form: PartForm
+    MODEL: type[PartModel]
+    FORM: type[PartForm]
+    VIEW: type[PartView]
 
-    def _assemble(self, above: tuple[QWidget, ...], below: tuple[QWidget, ...], top: QWidget,
+    def __init__(self, model: DesignModel, parent: QWidget | None, part_model: PartModel | None) -> None:
+        """The part's model is the one given (the window keeps it from the start, for Save,
+        and builds the tab only when it is first shown), else one of the tab's own."""
+        super().__init__(parent)
+        self.part_model = part_model if part_model is not None else self.MODEL(model, self)
+        self.form = self.FORM(self.part_model)
+        self.view = self.VIEW(self.part_model)
+
+    def _assemble(self, above: tuple[QWidget, ...], below: tuple[QWidget, ...],
                   bottom: QWidget) -> QScrollArea:
         """Lay the tab out: on the left ``above``, the export buttons (two a row) and ``below``
-        in a scroll area (returned, for the subclass to size), on the right ``top`` over
+        in a scroll area (returned, for the subclass to size), on the right the drawing over
         ``bottom``."""
         self.buttons = {kind: QPushButton(self) for kind in self.EXPORTS}
         for kind, button in self.buttons.items():
@@ -51,7 +65,7 @@ class PartTab(QWidget):
         scroll.setWidgetResizable(True)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         split = QSplitter(Qt.Orientation.Vertical)
-        split.addWidget(top)
+        split.addWidget(self.view)
         split.addWidget(bottom)
         split.setStretchFactor(0, 1)
         split.setStretchFactor(1, 1)
