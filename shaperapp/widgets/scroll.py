@@ -5,11 +5,13 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QFrame, QScrollArea, QVBoxLayout, QWidget
 
 
-def vertical_scroll(widget: QWidget, owner: QWidget | None = None) -> QScrollArea:
+def vertical_scroll(widget: QWidget | None = None, owner: QWidget | None = None) -> QScrollArea:
     """``widget`` in a frameless scroll area that scrolls up and down only (it follows the
-    area's width); with ``owner``, the area fills ``owner`` without margins."""
+    area's width); with ``owner``, the area fills ``owner`` without margins. Without a
+    widget, the caller sets it (after keeping the area, if the widget's events need it)."""
     area = QScrollArea()
-    area.setWidget(widget)
+    if widget is not None:
+        area.setWidget(widget)
     area.setWidgetResizable(True)
     area.setFrameShape(QFrame.Shape.NoFrame)
     area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
