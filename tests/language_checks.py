@@ -74,3 +74,14 @@ def assert_chinese_text(text: str, allowed: set[str] | frozenset[str] = frozense
     assert radicals(text) == [], (what, "radicals", "".join(sorted(set(radicals(text)))))
     assert control_characters(text) == [], (what, "control characters", control_characters(text)[:10])
     assert english_words(text, allowed) == [], (what, "English", english_words(text, allowed))
+
+
+def check_file_menu_entry(window, qtbot, action, english: str) -> None:
+    """``action`` stands in the window's File menu and reads ``english`` in English and
+    Chinese (some ideograph) after a switch to Chinese."""
+    assert action in window.menu_file.actions()
+    window.set_language("en")
+    assert action.text() == english
+    window.set_language("zh_CN")
+    qtbot.waitUntil(lambda: action.text() != english)
+    assert han(action.text())

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject
 
 from core.cam import Cam, CamInputs, Program, design_cam
 from core.cam.build import BOSS_MM, CLEARANCE_MM, HUB_MM, FitError
@@ -21,8 +21,7 @@ from core.cam.cam import RETURN_PRESSURE_DEG
 from core.cam.file import cam_from_dict, cam_to_dict
 from core.errors import DesignError
 from shaperapp.design.model import DesignModel
-from shaperapp.design.results import COMPUTE_ERRORS, compute_error
-from shaperapp.design.undo import InputEdit, push_edit
+from shaperapp.parts.model import PartModel, Typed, number
 
 NUMBERS = ("arm", "swing", "pressure", "return_pressure", "rise", "dwell", "return", "hub", "boss",
            "clearance")
@@ -38,44 +37,29 @@ SUM_TEXT = "must fit in 360°"
 
 
 @dataclass(frozen=True)
-class CamTyped:
+class CamTyped(Typed):
     """The cam's fields as typed: floats, text that is not a number, '' for a blank
     optional field; one state of the undo history."""
 
     values: tuple[tuple[str, Any], ...] = tuple(sorted(DEFAULTS.items()))
 
-    @property
-    def dict(self) -> dict[str, Any]:
-        return dict(self.values)
-
-    def with_(self, **changes: Any) -> "CamTyped":
-        return CamTyped(tuple(sorted({**self.dict, **changes}.items())))
-
-
-def _number(name: str, value: Any) -> float:
-    if isinstance(value, str):
-        raise DesignError(name, value, "must be a number")
-    if not math.isfinite(value):
-        raise DesignError(name, value, "must be a finite number")
-    return float(value)
-
 
 def _optional(name: str, value: Any) -> float | None:
-    return None if value == "" else _number(name, value)
+    return None if value == "" else number(name, value)
 
 
 def cam_inputs(typed: CamTyped) -> tuple[CamInputs, float | None]:
     """The core inputs and the phase (or None) of the typed fields; DesignError names one."""
     v = typed.dict
-    program = Program(swing_deg=_number("swing", v["swing"]), rise_deg=_number("rise", v["rise"]),
-                      dwell_deg=_number("dwell", v["dwell"]), return_deg=_number("return", v["return"]),
+    program = Program(swing_deg=number("swing", v["swing"]), rise_deg=number("rise", v["rise"]),
+                      dwell_deg=number("dwell", v["dwell"]), return_deg=number("return", v["return"]),
                       rise_law=v["rise_law"], return_law=v["return_law"])
-    inputs = CamInputs(arm_mm=_number("arm", v["arm"]), program=program,
-                       pressure_deg=_number("pressure", v["pressure"]),
-                       return_pressure_deg=_number("return_pressure", v["return_pressure"]),
+    inputs = CamInputs(arm_mm=number("arm", v["arm"]), program=program,
+                       pressure_deg=number("pressure", v["pressure"]),
+                       return_pressure_deg=number("return_pressure", v["return_pressure"]),
                        roller_mm=_optional("roller", v["roller"]), base_mm=_optional("base", v["base"]),
-                       distance_mm=_optional("distance", v["distance"]), hub_mm=_number("hub", v["hub"]),
-                       boss_mm=_number("boss", v["boss"]), clearance_mm=_number("clearance", v["clearance"]))
+                       distance_mm=_optional("distance", v["distance"]), hub_mm=number("hub", v["hub"]),
+                       boss_mm=number("boss", v["boss"]), clearance_mm=number("clearance", v["clearance"]))
     return inputs, _optional("phase", v["phase"])
 
 
@@ -96,25 +80,19 @@ def blamed(error: DesignError, typed: CamTyped, edited: list[str]) -> DesignErro
     return DesignError(recent[-1], typed.dict[recent[-1]], error.allowed)
 
 
-class CamModel(QObject):
-    """Signals: ``camChanged`` (a new valid cam), ``errorChanged``, ``typedChanged``."""
+class CamModel(PartModel):
+    """Signals: ``camChanged`` (a new valid cam), ``errorChanged``, ``typedChanged``.
 
-    camChanged = Signal()
-    errorChanged = Signal()
-    typedChanged = Signal()
+    Computed lazily: while the Cam tab is hidden a linkage edit only marks the cam stale
+    (an edit stays ~30 ms cheaper, and start-up computes no cam)."""
+
+    camChanged = PartModel.valueChanged     # one signal, the name the part's readers use
+    PART = "cam"
 
     def __init__(self, model: DesignModel, parent: QObject | None = None) -> None:
-        super().__init__(parent)
-        self.design_model = model
-        self._typed = CamTyped()
-        self._error: DesignError | None = None
+        super().__init__(model, CamTyped(), None, parent=parent)
         self._active = False        # the Cam tab is on screen: a linkage edit recomputes at once
-        self._stale = True          # else it only marks the cam stale (an edit stays ~30 ms cheaper,
-        self._cam: Cam | None = None    # and start-up computes no cam)
-        self._valid_typed = self._typed
-        self._edited: list[str] = []    # fields changed since the last valid cam, the latest last
-        model.parts.register("cam", self.document)
-        model.loaded.connect(self._load)
+        self._stale = True
         model.resultsChanged.connect(self._linkage_changed)
         model.forcesChanged.connect(self._linkage_changed)     # the idle margin is a load
 
@@ -123,7 +101,7 @@ class CamModel(QObject):
         """The last valid cam (recomputed first if the linkage changed while hidden)."""
         if self._stale:
             self._recompute()
-        return self._cam
+        return self._value
 
     def set_active(self, on: bool) -> None:
         """The Cam tab is shown (recompute now if stale) or hidden."""
@@ -137,28 +115,12 @@ class CamModel(QObject):
         else:
             self._stale = True
 
-    @property
-    def typed(self) -> CamTyped:
-        return self._typed
-
-    @property
-    def error(self) -> DesignError | None:
-        """Why the typed cam is refused, as of the last computation (on screen: current)."""
-        return self._error
-
-    def set_fields(self, **changes: Any) -> None:
-        """Change some typed fields (one undoable step)."""
-        after = self._typed.with_(**changes)
-        if after == self._typed:
-            return
-        names = sorted(changes)
-        push_edit(self.design_model.undo_stack,
-                  InputEdit(self._apply, self._typed, after, ("cam", tuple(names)),
-                            lambda: QCoreApplication.translate("CamModel", "edit cam")))
+    def edit_text(self) -> str:
+        return QCoreApplication.translate("CamModel", "edit cam")
 
     def cam_angle(self, crank_angle: np.ndarray | float) -> np.ndarray:
         """Cam angle (rad) at crank angles (rad): the crank angle less the phase."""
-        t = self._cam.timing
+        t = self._value.timing
         return np.asarray(crank_angle, dtype=float) - (0.0 if t is None else math.radians(t.phase_deg))
 
     def current_cam_angle(self) -> float:
@@ -169,57 +131,27 @@ class CamModel(QObject):
         """The inputs of the cam on screen, as the design file keeps them."""
         return cam_to_dict(*cam_inputs(self._valid_typed))
 
-    def _load(self) -> None:
-        """A file was opened (or New): its cam, or the default one."""
-        data = self.design_model.parts.loaded("cam")
-        self._edited = []
-        self._apply(CamTyped() if data is None else typed_from(*cam_from_dict(data)), edited=False)
+    def typed_of(self, data: Any) -> CamTyped:
+        return CamTyped() if data is None else typed_from(*cam_from_dict(data))
 
-    def _compute(self, typed: CamTyped) -> Cam:
+    def compute(self, typed: CamTyped) -> Cam:
         inputs, phase = cam_inputs(typed)
         m = self.design_model
         return design_cam(inputs, m.design, m.masses.idle_fraction, phase)
 
-    def _apply(self, typed: CamTyped, edited: bool = True) -> None:
-        if edited:          # an edit, an undo or a redo: what changed is what was typed
-            changed = sorted(k for k, v in typed.dict.items() if self._typed.dict.get(k) != v)
-            self._edited = [n for n in self._edited if n not in changed] + changed
-        self._typed = typed
-        self.typedChanged.emit()
-        self._recompute()
+    def blame(self, error: DesignError) -> DesignError:
+        return blamed(error, self._typed, self._edited)
 
     def _recompute(self) -> None:
         self._stale = False
-        try:
-            cam = self._compute(self._typed)
-        except DesignError as exc:
-            self._set_error(blamed(exc, self._typed, self._edited))
-            self._keep_some_cam()
-            return
-        except COMPUTE_ERRORS as exc:
-            self._set_error(compute_error(exc))
-            self._keep_some_cam()
-            return
-        self._set_error(None)
-        self._edited = []
-        self._valid_typed = self._typed
-        if cam != self._cam:
-            self._cam = cam
-            self.camChanged.emit()
+        super()._recompute()
 
-    def _keep_some_cam(self) -> None:
+    def refused(self) -> None:
         """The first computation failed (a design whose cut leaves no room for the default
         feed): show the default cam, untimed, as the last valid one."""
-        if self._cam is None:
+        if self._value is None:
             inputs, _ = cam_inputs(CamTyped())
-            self._cam = design_cam(inputs)
-
-    def _set_error(self, error: DesignError | None) -> None:
-        if str(error) != str(self._error):
-            self._error = error
-            self.errorChanged.emit()
-        self._error = error
-
+            self._value = design_cam(inputs)
 
 
 def typed_from(inputs: CamInputs, phase_deg: float | None) -> CamTyped:

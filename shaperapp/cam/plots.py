@@ -13,13 +13,14 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QRectF, Qt, QTimer
+from PySide6.QtCore import QRectF, QTimer
 from PySide6.QtGui import QColor, QPainter
-from PySide6.QtWidgets import QFrame, QGridLayout, QScrollArea, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QGridLayout, QWidget
 
 from core.cam.follower import pitch, pressure_angle
 from shaperapp.plots.axes import TickAxis
 from shaperapp.widgets.image_export import render_scene
+from shaperapp.widgets.scroll import vertical_scroll
 from shaperapp.widgets.style import CURSOR, speed_colour
 
 from .model import CamModel
@@ -55,14 +56,7 @@ class CamPlots(QWidget):
         self._grid.setContentsMargins(0, 0, 0, 0)
         self._grid.setSpacing(2)
         self._columns = 0
-        self._scroll = QScrollArea()
-        self._scroll.setWidget(self._inner)
-        self._scroll.setWidgetResizable(True)
-        self._scroll.setFrameShape(QFrame.Shape.NoFrame)
-        self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        outer = QVBoxLayout(self)
-        outer.setContentsMargins(0, 0, 0, 0)
-        outer.addWidget(self._scroll)
+        self._scroll = vertical_scroll(self._inner, self)
         self.cursors = []
         for i, plot in enumerate(self.plots):
             plot.setMenuEnabled(False)

@@ -16,6 +16,7 @@ from PySide6.QtWidgets import QWidget
 
 from core.cam import Cam
 from core.cam.follower import pitch, profile
+from shaperapp.parts.view import PartView
 from shaperapp.widgets.image_export import export_painting
 from shaperapp.widgets.screen_polygon import screen_polygon
 from shaperapp.widgets.style import FRAME, LINK, TEXT
@@ -33,36 +34,14 @@ def _turn(points: np.ndarray, angle: float) -> np.ndarray:
     return np.stack([c * points[0] - s * points[1], s * points[0] + c * points[1]])
 
 
-class CamProfileView(QWidget):
+class CamProfileView(PartView):
     """Paints the cam at the model's crank angle; ``render`` paints it anywhere."""
 
     def __init__(self, cam_model: CamModel, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
-        self._model = cam_model
-        self.setMinimumSize(240, 200)
-        self._curves: tuple[np.ndarray, np.ndarray] | None = None
-        cam_model.camChanged.connect(self._reset)
-        cam_model.design_model.angleChanged.connect(self._angle_moved)
+        super().__init__(cam_model, (240, 200), lambda: cam_curves(cam_model.cam), parent)
 
-    def _angle_moved(self, _index: int) -> None:
-        if self.isVisible():
-            self.update()
-
-    def _reset(self) -> None:
-        self._curves = None
-        self.update()
-
-    def curves(self) -> tuple[np.ndarray, np.ndarray]:
-        """The pitch curve and the profile in the cam's frame (2, POINTS) mm."""
-        if self._curves is None:
-            self._curves = cam_curves(self._model.cam)
-        return self._curves
-
-    def paintEvent(self, event) -> None:  # noqa: N802 - Qt's name
-        painter = QPainter(self)
-        painter.fillRect(self.rect(), Qt.GlobalColor.white)
-        self.render_cam(painter, QRectF(self.rect()))
-        painter.end()
+    curves = PartView.shapes
+    """The pitch curve and the profile in the cam's frame (2, POINTS) mm."""
 
     def render_cam(self, painter: QPainter, rect: QRectF) -> None:
         """The cam, follower and roller at the current crank angle, fitted into ``rect``."""
@@ -71,6 +50,8 @@ class CamProfileView(QWidget):
         label = self.tr("cam angle δ = %1°, follower ψ = %2°").replace(
             "%1", f"{math.degrees(delta) % 360.0:.1f}").replace("%2", f"{math.degrees(psi):.2f}")
         paint_cam(painter, rect, self._model.cam, delta, label, self.curves())
+
+    render_part = render_cam
 
     def export_image(self, path: str) -> None:
         """PNG or SVG of the cam at the current angle (atomic, see image_export)."""

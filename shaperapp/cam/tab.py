@@ -2,18 +2,15 @@
 plots, with CSV, image and DXF exports."""
 from __future__ import annotations
 
-import os
-
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QLabel, QMessageBox, QPushButton,
-                               QScrollArea, QSplitter, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import QLabel, QWidget
 
 from core.atomic import atomic_write
 from core.cam.table import cam_table
 from core.io import table_csv
 from core.kinematics import crank_angles
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets import file_dialogs
+from shaperapp.parts.tab import PartTab
 
 from .form import CamForm
 from .model import CamModel
@@ -21,49 +18,25 @@ from .plots import CamPlots
 from .profile_view import CamProfileView
 
 
-class CamTab(QWidget):
+class CamTab(PartTab):
     """One widget taking the design model. The cam's own model lives here, unless the
     window gives one: the window keeps the cam (which Save writes) from the start and
     builds this tab only when it is first shown."""
 
+    MODEL, FORM, VIEW = CamModel, CamForm, CamProfileView
+    EXPORTS = ("csv", "image", "dxf")
+
     def __init__(self, model: DesignModel, parent: QWidget | None = None,
                  cam_model: CamModel | None = None) -> None:
-        super().__init__(parent)
-        self.cam_model = cam_model if cam_model is not None else CamModel(model, self)
-        self.form = CamForm(self.cam_model)
-        self.profile = CamProfileView(self.cam_model)
+        super().__init__(model, parent, cam_model)
+        self.cam_model, self.profile = self.part_model, self.view
         self.plots = CamPlots(self.cam_model)
         self.figures = QLabel(self)
         self.figures.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.figures.setWordWrap(True)
-        self.buttons = {name: QPushButton(self) for name in ("csv", "image", "dxf")}
-        self.buttons["csv"].clicked.connect(lambda: self._export_dialog("csv"))
-        self.buttons["image"].clicked.connect(lambda: self._export_dialog("image"))
-        self.buttons["dxf"].clicked.connect(lambda: self._export_dialog("dxf"))
-        side = QWidget()
-        column = QVBoxLayout(side)
-        column.addWidget(self.form)
-        column.addWidget(self.figures)
-        row = QGridLayout()
-        for i, button in enumerate(self.buttons.values()):
-            row.addWidget(button, i // 2, i % 2)
-        column.addLayout(row)
-        column.addStretch(1)
-        scroll = QScrollArea()
-        scroll.setWidget(side)
-        scroll.setWidgetResizable(True)
-        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        scroll.setMinimumWidth(side.sizeHint().width() + 16)
-        scroll.setMaximumWidth(side.sizeHint().width() + 16)
-        split = QSplitter(Qt.Orientation.Vertical)
-        split.addWidget(self.profile)
-        split.addWidget(self.plots)
-        split.setStretchFactor(0, 1)
-        split.setStretchFactor(1, 1)
-        layout = QHBoxLayout(self)
-        layout.setContentsMargins(2, 2, 2, 2)
-        layout.addWidget(scroll)
-        layout.addWidget(split, 1)
+        scroll = self._assemble((self.form, self.figures), (), self.plots)
+        scroll.setMinimumWidth(scroll.widget().sizeHint().width() + 16)
+        scroll.setMaximumWidth(scroll.widget().sizeHint().width() + 16)
         self.cam_model.camChanged.connect(self.show_figures)
         self.retranslate()
 
@@ -128,17 +101,10 @@ class CamTab(QWidget):
     def export_image(self, path: str) -> None:
         self.profile.export_image(path)
 
-    def _export_dialog(self, kind: str) -> None:
-        self.form.commit()
+    def export_choice(self, kind: str) -> tuple[str, str]:
         filters = {"csv": self.tr("CSV table (*.csv)"), "dxf": self.tr("DXF drawing (*.dxf)"),
                    "image": self.tr("PNG image (*.png);;SVG drawing (*.svg)")}[kind]
-        start = os.path.join(os.path.expanduser("~"), "cam." + ("png" if kind == "image" else kind))
-        path = file_dialogs.save_file_name(self, self.tr("Export the cam"), start, filters)
-        if not path:
-            return
-        try:
-            {"csv": self.export_csv, "dxf": self.export_dxf, "image": self.export_image}[kind](path)
-        except (OSError, ValueError, RuntimeError) as exc:
-            QMessageBox.warning(self, self.tr("Export the cam"), str(exc))
+        return filters, "cam." + ("png" if kind == "image" else kind)
 
-
+    def export_title(self) -> str:
+        return self.tr("Export the cam")

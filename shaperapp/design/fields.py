@@ -1,6 +1,7 @@
-"""What every input form is built from (the design's, the loads', the cam's): a number
-field with its unit, how a value shows as text and how text reads back, the pause
-before typing is sent to a model, and the mark of an invalid field.
+"""What every input form is built from (the design's, the loads', the cam's, the gear's):
+a number field with its unit, how a value shows as text and how text reads back, the
+pause before typing is sent to a model (:class:`PendingEdits`), and the mark of an
+invalid field with the line under the form that says why (:func:`show_error_line`).
 
 Kept apart from the design form so that the three forms share one behaviour: a field
 shows exactly what Save writes, accepts a decimal comma, and hands text that is no
@@ -8,8 +9,12 @@ number to the model as typed, which names the field to mark.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import Qt, Signal
+from typing import Callable
+
+from PySide6.QtCore import QObject, Qt, QTimer, Signal
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QLineEdit, QWidget
+
+from shaperapp.widgets.messages import ERROR_TEXT_STYLE
 
 DEBOUNCE_MS = 200        # typing is sent after this pause: one recompute per pause, not per key
 ERROR_STYLE = "QLineEdit, QComboBox, QListWidget { border: 2px solid #c62828; background: #ffebee; }"
@@ -71,3 +76,59 @@ class NumberField(QWidget):
 
     def set_error(self, on: bool) -> None:
         self.edit.setStyleSheet(ERROR_STYLE if on else "")
+
+
+class PendingEdits(QObject):
+    """The fields typed into since the last commit, sent together after a pause.
+
+    Every form's one path from keystrokes to its model: ``typed(name)`` restarts the
+    DEBOUNCE_MS timer, and its end (or ``commit()``, before a choice, an export or the end
+    of editing) hands the names to ``send`` once, so a pause costs one recompute and the
+    fields not typed into are never re-read (their display rounding never changes a value).
+    A form mirroring its model skips the names still pending (``name in pending``)."""
+
+    def __init__(self, send: Callable[[set[str]], None], parent: QObject) -> None:
+        super().__init__(parent)
+        self._send = send
+        self._names: set[str] = set()
+        self.timer = QTimer(self)
+        self.timer.setSingleShot(True)
+        self.timer.setInterval(DEBOUNCE_MS)
+        self.timer.timeout.connect(self.commit)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._names
+
+    def typed(self, name: str, at_once: bool = False) -> None:
+        """Field ``name`` was typed into: send after the pause (or now, ``at_once``)."""
+        self._names.add(name)
+        self.timer.start()
+        if at_once:
+            self.commit()
+
+    def commit(self) -> None:
+        """Send the pending names now (nothing when none is pending)."""
+        self.timer.stop()
+        if not self._names:
+            return
+        names, self._names = self._names, set()
+        self._send(names)
+
+
+def error_line(parent: QWidget) -> QLabel:
+    """The hidden, wrapping red line under a form that says why its input is refused."""
+    label = QLabel(parent)
+    label.setWordWrap(True)
+    label.setStyleSheet(ERROR_TEXT_STYLE)
+    label.hide()
+    return label
+
+
+def show_error_line(label: QLabel, message: str | None, kept: str) -> None:
+    """Show "⚠ message" and what stays on screen (``kept``), or hide the line (None)."""
+    if message is None:
+        label.setText("")
+        label.hide()
+        return
+    label.setText("⚠ " + message + "\n" + kept)
+    label.show()

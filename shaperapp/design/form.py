@@ -7,15 +7,17 @@ from __future__ import annotations
 
 import math
 
-from PySide6.QtCore import QEvent, QTimer, Qt
+from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import (QButtonGroup, QComboBox, QFormLayout, QGroupBox, QHBoxLayout,
                                QLabel, QLineEdit, QListWidget, QListWidgetItem, QRadioButton, QSizePolicy,
                                QToolButton, QVBoxLayout, QWidget)
 
 from core.kinematics import MAX_RPM
-from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
+from shaperapp.widgets.combos import fill_combo
+from shaperapp.widgets.messages import describe
 
-from .fields import DEBOUNCE_MS, ERROR_STYLE, NumberField, exact_number, parse_number
+from .fields import (ERROR_STYLE, NumberField, PendingEdits, error_line, exact_number, parse_number,
+                     show_error_line)
 from .inputs import MAX_SPEEDS
 from .model import DesignModel
 
@@ -28,11 +30,7 @@ class DesignForm(QWidget):
     def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._model = model
-        self._timer = QTimer(self)
-        self._timer.setSingleShot(True)
-        self._timer.setInterval(DEBOUNCE_MS)
-        self._timer.timeout.connect(self._commit)
-        self._pending: set[str] = set()       # fields typed into since the last commit
+        self.pending = PendingEdits(self._send, self)     # fields typed into, sent after a pause
 
         self._synth_radio = QRadioButton(self)
         self._dims_radio = QRadioButton(self)
@@ -60,15 +58,13 @@ class DesignForm(QWidget):
         self._add_speed.setText("+")
         self._remove_speed = QToolButton(self)
         self._remove_speed.setText("−")
-        self._error_label = QLabel(self)
-        self._error_label.setWordWrap(True)
-        self._error_label.setStyleSheet(ERROR_TEXT_STYLE)
+        self._error_label = error_line(self)
         self._error_label.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Minimum)
         self._labels: dict[str, QLabel] = {}
         self._build_layout()
 
         for name, field in self._fields.items():
-            field.edited.connect(lambda n=name: self._on_edited(n))
+            field.edited.connect(lambda n=name: self.pending.typed(n))
             field.edit.editingFinished.connect(self._on_editing_finished)
         self._mode_group.buttonToggled.connect(self._on_mode_toggled)
         for name in CHOICES:
@@ -180,14 +176,13 @@ class DesignForm(QWidget):
             widget = self._fields.get(key)
             target = widget.edit if widget else self._speeds if key == "rpm" else self._combo(key)
             target.setToolTip(tip)
-        self._fill(self._variant, [("block", self.tr("Block in ram slot")),
-                                   ("rod", self.tr("Connecting rod"))])
-        self._fill(self._guide_rule, [("chord", self.tr("Through the tip's extreme positions (chord)")),
-                                      ("sagitta", self.tr("Mid-sagitta of the tip's arc")),
-                                      ("height", self.tr("Explicit height"))])
-        self._fill(self._rod_input, [("ratio", self.tr("Ratio L4/L3")), ("length", self.tr("Length"))])
-        self._fill(self._rod_side, [("trailing", self.tr("Trailing the tip")),
-                                    ("leading", self.tr("Leading the tip"))])
+        fill_combo(self._variant, {"block": self.tr("Block in ram slot"), "rod": self.tr("Connecting rod")})
+        fill_combo(self._guide_rule, {"chord": self.tr("Through the tip's extreme positions (chord)"),
+                                      "sagitta": self.tr("Mid-sagitta of the tip's arc"),
+                                      "height": self.tr("Explicit height")})
+        fill_combo(self._rod_input, {"ratio": self.tr("Ratio L4/L3"), "length": self.tr("Length")})
+        fill_combo(self._rod_side, {"trailing": self.tr("Trailing the tip"),
+                                    "leading": self.tr("Leading the tip")})
         self._add_speed.setToolTip(self.tr("Add a crank speed (at most %1)").replace("%1", str(MAX_SPEEDS)))
         self._remove_speed.setToolTip(self.tr("Remove the selected crank speed"))
         self._show_error()
@@ -199,17 +194,6 @@ class DesignForm(QWidget):
     def _combo(self, name: str) -> QComboBox:
         return {"variant": self._variant, "guide_rule": self._guide_rule,
                 "rod_input": self._rod_input, "rod_side": self._rod_side}[name]
-
-    @staticmethod
-    def _fill(combo: QComboBox, items: list[tuple[str, str]]) -> None:
-        current = combo.currentData()
-        combo.blockSignals(True)
-        combo.clear()
-        for key, text in items:
-            combo.addItem(text, key)
-        index = combo.findData(current)
-        combo.setCurrentIndex(max(index, 0))
-        combo.blockSignals(False)
 
     # ---- model → form ---------------------------------------------------
     def _show_spec(self) -> None:
@@ -227,7 +211,7 @@ class DesignForm(QWidget):
             w.blockSignals(False)
         self._mode_group.blockSignals(False)
         for name, field in self._fields.items():
-            if name not in self._pending:
+            if name not in self.pending:
                 field.set_value(self._model.step_input if name == "step" else getattr(spec, name))
         self._show_speeds()
         self._show_titles()
@@ -282,15 +266,11 @@ class DesignForm(QWidget):
         for widget in (self._guide_rule, self._speeds, self._rod_side):
             widget.setStyleSheet("")
         error = self._model.error
-        if error is None:
-            self._error_label.setText("")
-            self._error_label.hide()
-            return
-        for widget in self._error_widgets(error.parameter):
-            widget.setStyleSheet(ERROR_STYLE)
-        self._error_label.setText("⚠ " + describe(error) + "\n" +
-                                  self.tr("The last valid design stays on screen."))
-        self._error_label.show()
+        if error is not None:
+            for widget in self._error_widgets(error.parameter):
+                widget.setStyleSheet(ERROR_STYLE)
+        show_error_line(self._error_label, None if error is None else describe(error),
+                        self.tr("The last valid design stays on screen."))
 
     def error_text(self) -> str:
         """The message shown under the form ('' when the input is valid)."""
@@ -310,10 +290,6 @@ class DesignForm(QWidget):
         """The line edit of a numeric field (for shortcuts and tests)."""
         return self._fields[name].edit
 
-    def _on_edited(self, name: str) -> None:
-        self._pending.add(name)
-        self._timer.start()
-
     def _on_editing_finished(self) -> None:
         self._commit()
         self._model.end_typing()
@@ -328,11 +304,12 @@ class DesignForm(QWidget):
         self._model.set_spec(**{name: self._combo(name).currentData()})
 
     def _commit(self) -> None:
-        """Send the fields typed into since the last commit, as typed; the model
-        validates and names the one to mark. Untouched fields are not re-read, so
-        their display rounding never changes the design."""
-        self._timer.stop()
-        pending, self._pending = self._pending, set()
+        """Send the fields typed into since the last commit (the shared path, ``PendingEdits``)."""
+        self.pending.commit()
+
+    def _send(self, pending: set[str]) -> None:
+        """The typed fields, as typed: the model validates and names the one to mark.
+        Untouched fields are not re-read, so their display rounding never changes the design."""
         changes = {name: self._fields[name].value() for name in pending if name != "step"}
         if changes:
             self._model.set_spec(**changes)

@@ -6,9 +6,11 @@ error in the tab behind is not missed.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, Qt
+from PySide6.QtCore import QEvent
 from PySide6.QtGui import QIcon
-from PySide6.QtWidgets import QFrame, QScrollArea, QStyle, QTabWidget, QWidget
+from PySide6.QtWidgets import QScrollArea, QStyle, QTabWidget, QWidget
+
+from shaperapp.widgets.scroll import vertical_scroll
 
 from .form import DesignForm
 from .loads_form import LoadsForm
@@ -17,11 +19,7 @@ from .model import DesignModel
 
 def scrolled(widget: QWidget) -> QScrollArea:
     """``widget`` in a frameless vertical scroll area exactly as wide as its fields need."""
-    area = QScrollArea()
-    area.setWidget(widget)
-    area.setWidgetResizable(True)
-    area.setFrameShape(QFrame.Shape.NoFrame)
-    area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+    area = vertical_scroll(widget)
     area.setMinimumWidth(widget.minimumSizeHint().width() + area.verticalScrollBar().sizeHint().width() + 2)
     return area
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QFormLayout, QGroupBox, QLabel, QLineEdit,
                                QVBoxLayout, QWidget)
 
@@ -18,9 +18,9 @@ from core.dynamics import GRAVITY
 from core.errors import DesignError
 from core.rotors import rotors_from_text, rotors_text
 
-from shaperapp.widgets.messages import ERROR_TEXT_STYLE, describe
+from shaperapp.widgets.messages import describe
 
-from .fields import DEBOUNCE_MS, NumberField, format_number, parse_number
+from .fields import NumberField, PendingEdits, error_line, format_number, parse_number, show_error_line
 from .model import DesignModel
 
 # Input fields in form order: MassProperties names, except the two ram offsets
@@ -67,11 +67,7 @@ class LoadsForm(QWidget):
     def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._model = model
-        self._pending: set[str] = set()       # fields typed into since the last commit
-        self._timer = QTimer(self)
-        self._timer.setSingleShot(True)
-        self._timer.setInterval(DEBOUNCE_MS)
-        self._timer.timeout.connect(self._commit)
+        self.pending = PendingEdits(self._send, self)     # fields typed into, sent after a pause
 
         self._fields = {name: NumberField(unit) for name, unit in FIELD_UNITS.items()}
         self._gravity = QCheckBox(self)
@@ -82,10 +78,7 @@ class LoadsForm(QWidget):
         self._forms: dict[str, QFormLayout] = {}
         self._labels: dict[str, QLabel] = {}
         self._boxes: dict[str, QGroupBox] = {}
-        self._error_label = QLabel(self)
-        self._error_label.setWordWrap(True)
-        self._error_label.setStyleSheet(ERROR_TEXT_STYLE)
-        self._error_label.hide()
+        self._error_label = error_line(self)
         column = QVBoxLayout(self)
         column.setContentsMargins(4, 4, 4, 4)
         for key, names in GROUPS:
@@ -103,7 +96,7 @@ class LoadsForm(QWidget):
         column.addStretch(1)
 
         for name, number in self._fields.items():
-            number.edited.connect(lambda n=name: self._on_edited(n))
+            number.edited.connect(lambda n=name: self.pending.typed(n))
             number.edit.editingFinished.connect(self._commit)
         self._gravity.toggled.connect(lambda on: self._model.set_masses(gravity=on))
         for link, combo in self._given.items():
@@ -288,7 +281,7 @@ class LoadsForm(QWidget):
         """Mirror the model into the fields, leaving alone what is being typed."""
         values = self._model_values()
         for name, number in self._fields.items():
-            if name in self._pending:
+            if name in self.pending:
                 continue
             wanted = values[name]
             text = self._text(name, wanted)
@@ -332,17 +325,14 @@ class LoadsForm(QWidget):
             carried = float(f"{value / GRAVITY:.12g}") if isinstance(value, float) else value
             self._model.set_masses(**{mass: carried, weight: None})
 
-    def _on_edited(self, name: str) -> None:
-        self._pending.add(name)
-        self._timer.start()
-
     def _commit(self) -> None:
-        """Send the typed fields; the model validates and says which one is wrong."""
-        self._timer.stop()
-        if not self._pending:
-            return
+        """Send the fields typed into since the last commit (the shared path, ``PendingEdits``)."""
+        self.pending.commit()
+
+    def _send(self, pending: set[str]) -> None:
+        """The typed fields; the model validates and says which one is wrong."""
         changes: dict[str, object] = {}
-        for name in self._pending:
+        for name in pending:
             if name in ("ram_cg_dx", "ram_cg_dy"):
                 changes["ram_cg_mm"] = (self._value("ram_cg_dx"), self._value("ram_cg_dy"))
             elif name == "idle_percent":
@@ -354,7 +344,6 @@ class LoadsForm(QWidget):
                 changes[mass] = 0.0
             elif mass in changes:
                 changes[weight] = None
-        self._pending.clear()
         current = self._model.mass_inputs
         changes = {key: value for key, value in changes.items() if current.get(key) != value}
         if changes:
@@ -381,12 +370,7 @@ class LoadsForm(QWidget):
             number.set_error(False)
         self._show_inputs()      # an invalid value set from elsewhere shows as typed
         error = self._model.forces_error
-        if error is None:
-            self._error_label.clear()
-            self._error_label.hide()
-            return
-        for name in self._error_fields(error):
+        for name in [] if error is None else self._error_fields(error):
             self._fields[name].set_error(True)
-        self._error_label.setText("⚠ " + describe(error) + "\n" +
-                                  self.tr("The last valid results stay on screen."))
-        self._error_label.show()
+        show_error_line(self._error_label, None if error is None else describe(error),
+                        self.tr("The last valid results stay on screen."))

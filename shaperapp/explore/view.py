@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (QComboBox, QDoubleSpinBox, QGridLayout, QHBoxLayo
 from core.optimize import on_bounds, tidy_optimum
 from core.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.combos import fill_combo
 from shaperapp.widgets.image_export import export_scene
 from shaperapp.widgets.messages import describe
 from shaperapp.widgets.worker import JobRunner
@@ -31,8 +32,6 @@ from .map import HeatMap
 from .optimize_box import OptimizeBox
 
 REFRESH_MS = 300
-
-
 REQUIREMENTS = ("time_ratio", "stroke")      # K and H: given by the user, fixed by default
 
 
@@ -156,19 +155,8 @@ class ExploreView(QWidget):
         without a rod."""
         rod = self.model.valid_spec.variant == "rod"
         names = {k: v for k, v in self.figure_names().items() if rod or not FIGURES[k][2]}
-        self._fill_combo(self.figure, names)
-        self._fill_combo(self.box.objective, {k: v for k, v in names.items() if FIGURES[k][0]})
-
-    @staticmethod
-    def _fill_combo(combo: QComboBox, items: dict[str, str], select: str | None = None) -> None:
-        """Refill without signals, keeping the current choice (or choosing ``select``)."""
-        current = combo.currentData() if select is None else select
-        combo.blockSignals(True)
-        combo.clear()
-        for key, text in items.items():
-            combo.addItem(text, key)
-        combo.setCurrentIndex(max(combo.findData(current), 0))
-        combo.blockSignals(False)
+        fill_combo(self.figure, names)
+        fill_combo(self.box.objective, {k: v for k, v in names.items() if FIGURES[k][0]})
 
     def _fill_axes(self) -> None:
         names = varied_parameters(self.model.valid_spec)
@@ -176,7 +164,7 @@ class ExploreView(QWidget):
                      ["rod", "guide"] if "rod" in names else [names[0], names[1]])
         texts = self.parameter_names()
         for i, (combo, want) in enumerate(zip(self.axis_names, preferred)):
-            self._fill_combo(combo, {name: texts[name] for name in names}, want)
+            fill_combo(combo, {name: texts[name] for name in names}, want)
             self._axis_changed(i)
 
     def _axis_changed(self, i: int) -> None:

@@ -8,15 +8,15 @@ with the core's note under the form when it is not of that series.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QTimer
-from PySide6.QtWidgets import QComboBox, QFormLayout, QLabel, QVBoxLayout, QWidget
+from typing import Any
+
+from PySide6.QtWidgets import QComboBox, QLabel, QWidget
 
 from core.gear.involute import FIRST_SERIES_MM
-from shaperapp.design.fields import (DEBOUNCE_MS, ERROR_STYLE, NumberField, exact_number,
-                                     parse_number)
-from shaperapp.widgets.messages import ERROR_TEXT_STYLE
-
+from shaperapp.design.fields import exact_number, parse_number
+from shaperapp.parts.form import PartForm
 from shaperapp.widgets.gear_messages import describe_gear_error, field_names, module_note
+
 from .model import MODE_FIELDS, MODES, GearModel
 
 UNITS = {"z1": "", "z2": "", "x1": "", "x2": "", "centre": "mm", "pressure_angle": "°",
@@ -35,23 +35,31 @@ ORDER = ("z1", "z2", "module", "mode", "x1", "x2", "centre", "pressure_angle", "
          "clearance", "tip_limit", "contact_limit")
 
 
-class GearForm(QWidget):
+class GearForm(PartForm):
     """Number fields, the module and mode lists, the note and the error line under them."""
 
     def __init__(self, gear_model: GearModel, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
-        self._model = gear_model
-        self._timer = QTimer(self)
-        self._timer.setSingleShot(True)
-        self._timer.setInterval(DEBOUNCE_MS)
-        self._timer.timeout.connect(self.commit)
-        self._pending: set[str] = set()
-        self.fields = {name: NumberField(unit) for name, unit in UNITS.items()}
+        super().__init__(gear_model, UNITS, ORDER, FIELD_WIDTH, parent)
         for field in self.fields.values():
-            field.edit.setMinimumWidth(64)
-            field.edit.setMaximumWidth(FIELD_WIDTH)
             field.unit.setMinimumWidth(0)       # "mm", "°", "× m": the form narrow enough that
             # both gears' columns fit beside it at 1280 × 720
+        for label in self._labels.values():     # a long name on two lines, not a wider form
+            label.setWordWrap(True)
+            label.setMaximumWidth(LABEL_WIDTH)
+        self.module.lineEdit().textEdited.connect(lambda _t: self.pending.typed("module"))
+        self.module.activated.connect(lambda _i: self.pending.typed("module", at_once=True))
+        self.mode.activated.connect(self._choose_mode)
+        self.note = QLabel(self)
+        self.note.setWordWrap(True)
+        self._finish(self.note)
+        gear_model.pairChanged.connect(self._show_note)
+        gear_model.pairChanged.connect(self._show_typed)     # the greyed fields follow the pair
+        self.retranslate()
+        self._show_typed()
+
+    describe = staticmethod(describe_gear_error)
+
+    def make_combos(self) -> dict[str, QComboBox]:
         self.module = QComboBox(self)
         self.module.setEditable(True)
         self.module.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
@@ -63,41 +71,12 @@ class GearForm(QWidget):
         self.mode.setMinimumContentsLength(11)      # the longest choice is shown when the list opens
         for mode in MODES:
             self.mode.addItem("", mode)
-        self._labels = {name: QLabel(self) for name in ORDER}
-        for label in self._labels.values():     # a long name on two lines, not a wider form
-            label.setWordWrap(True)
-            label.setMaximumWidth(LABEL_WIDTH)
-        layout = QFormLayout()
-        for name in ORDER:
-            widget = {"module": self.module, "mode": self.mode}.get(name) or self.fields[name]
-            layout.addRow(self._labels[name], widget)
-        for name, field in self.fields.items():
-            field.edited.connect(lambda n=name: self._typed(n))
-        self.module.lineEdit().textEdited.connect(lambda _t: self._typed("module"))
-        self.module.activated.connect(lambda _i: self._typed("module", at_once=True))
-        self.mode.activated.connect(self._choose_mode)
-        self.note = QLabel(self)
-        self.note.setWordWrap(True)
-        self.error_label = QLabel(self)
-        self.error_label.setWordWrap(True)
-        self.error_label.setStyleSheet(ERROR_TEXT_STYLE)
-        column = QVBoxLayout(self)
-        column.setContentsMargins(0, 0, 0, 0)
-        column.addLayout(layout)
-        column.addWidget(self.note)
-        column.addWidget(self.error_label)
-        column.addStretch(1)
-        gear_model.typedChanged.connect(self._show_typed)
-        gear_model.errorChanged.connect(self._show_error)
-        gear_model.pairChanged.connect(self._show_note)
-        gear_model.pairChanged.connect(self._show_typed)     # the greyed fields follow the pair
-        self.retranslate()
-        self._show_typed()
+        return {"module": self.module, "mode": self.mode}
 
     def retranslate(self) -> None:
         names = field_names()
+        self.set_labels(names)
         for name, label in self._labels.items():
-            label.setText(names[name])
             label.setMinimumWidth(min(label.fontMetrics().horizontalAdvance(names[name]) + 2, LABEL_WIDTH))
         texts = {"auto": self.tr("automatic (the rule)"), "shifts": self.tr("shift factors x1, x2"),
                  "centre": self.tr("centre distance a′")}
@@ -108,23 +87,11 @@ class GearForm(QWidget):
         self._show_note()
         self._show_error()
 
-    def commit(self) -> None:
-        """Send the fields typed into since the last commit (the debounce timer's end)."""
-        self._timer.stop()
-        if not self._pending:
-            return
-        changes = {}
-        for name in sorted(self._pending):
-            text = self.module.currentText() if name == "module" else self.fields[name].edit.text()
-            changes[name] = parse_number(text)
-        self._pending.clear()
-        self._model.set_fields(**changes)
+    def read(self, name: str) -> Any:
+        return parse_number(self.module.currentText()) if name == "module" else super().read(name)
 
-    def _typed(self, name: str, at_once: bool = False) -> None:
-        self._pending.add(name)
-        self._timer.start()
-        if at_once:
-            self.commit()
+    def kept(self) -> str:
+        return self.tr("The last valid gear pair stays on screen.")
 
     def _choose_mode(self, _index: int) -> None:
         self.commit()
@@ -143,13 +110,13 @@ class GearForm(QWidget):
     def _show_typed(self) -> None:
         values = self._model.typed.dict
         for name, value in self.shown_values().items():
-            if name in self._pending:
+            if name in self.pending:
                 continue
             if name in SHIFT_FIELDS and not isinstance(value, str):
                 self._show_rounded(name, value)
             else:
                 self.fields[name].set_value(value)
-        if "module" not in self._pending:
+        if "module" not in self.pending:
             value = values["module"]
             if isinstance(value, str) or parse_number(self.module.currentText()) != value:
                 self.module.setEditText(value if isinstance(value, str) else exact_number(value))
@@ -175,25 +142,3 @@ class GearForm(QWidget):
         text = module_note(inputs.module_mm) if inputs.module_note else ""
         self.note.setText(text)
         self.note.setVisible(bool(text))
-
-    def _show_error(self) -> None:
-        for field in self.fields.values():
-            field.set_error(False)
-        self.module.setStyleSheet("")
-        error = self._model.error
-        if error is None:
-            self.error_label.hide()
-            self.error_label.setText("")
-            return
-        if error.parameter in self.fields:
-            self.fields[error.parameter].set_error(True)
-        elif error.parameter == "module":
-            self.module.setStyleSheet(ERROR_STYLE)
-        self.error_label.setText("⚠ " + describe_gear_error(error) + "\n"
-                                 + self.tr("The last valid gear pair stays on screen."))
-        self.error_label.show()
-
-    def marked_fields(self) -> list[str]:
-        marked = [name for name, f in self.fields.items() if f.edit.styleSheet()]
-        return (["module"] if self.module.styleSheet() else []) + marked
-

@@ -9,18 +9,15 @@ file ("gear"), read all or nothing by ``core.gear.file`` when a file is opened.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QCoreApplication, QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject
 
-from core.errors import DesignError
 from core.gear import GearPair, GearPairInputs, design_pair
 from core.gear.file import gear_from_dict, gear_to_dict
 from shaperapp.design.model import DesignModel
-from shaperapp.design.results import COMPUTE_ERRORS, compute_error
-from shaperapp.design.undo import InputEdit, push_edit
+from shaperapp.parts.model import PartModel, Typed, number
 
 MODES = ("auto", "shifts", "centre")
 """How the shifts are given: by the rule, as x1 and x2, or as the centre distance a′."""
@@ -40,24 +37,15 @@ rounded up to a machinable value, makes a positive pair whose checks all pass.""
 
 
 @dataclass(frozen=True)
-class GearTyped:
+class GearTyped(Typed):
     """The gear's fields as typed: floats, or text that is not a number; ``mode`` one of
     MODES. One state of the undo history."""
 
     values: tuple[tuple[str, Any], ...] = tuple(sorted(DEFAULTS.items()))
 
-    @property
-    def dict(self) -> dict[str, Any]:
-        return dict(self.values)
-
-    def with_(self, **changes: Any) -> "GearTyped":
-        return GearTyped(tuple(sorted({**self.dict, **changes}.items())))
-
 
 def _number(name: str, value: Any) -> float:
-    if isinstance(value, str) or not math.isfinite(value):
-        raise DesignError(name, value, "must be a number")
-    return float(value)
+    return number(name, value, not_finite="must be a number")
 
 
 def _teeth(name: str, value: Any) -> int | float:
@@ -104,96 +92,50 @@ def check_part(data: Any) -> GearPair:
     return design_pair(gear_from_dict(data))
 
 
-class GearModel(QObject):
+class GearModel(PartModel):
     """Signals: ``pairChanged`` (a new valid pair), ``errorChanged``, ``typedChanged``."""
 
-    pairChanged = Signal()
-    errorChanged = Signal()
-    typedChanged = Signal()
+    pairChanged = PartModel.valueChanged     # one signal, the name the part's readers use
+    PART = "gear"
 
     def __init__(self, model: DesignModel, parent: QObject | None = None) -> None:
-        super().__init__(parent)
-        self.design_model = model
-        self._typed = GearTyped()
-        self._valid_typed = self._typed
-        self._pair = DEFAULT_PAIR
-        self._error: DesignError | None = None
-        model.parts.register("gear", self.document, check_part)
-        model.loaded.connect(self._load)
+        super().__init__(model, GearTyped(), DEFAULT_PAIR, check_part, parent)
         self._load()
 
     @property
     def pair(self) -> GearPair:
         """The last valid pair (the one on screen and in Save)."""
-        return self._pair
+        return self._value
 
-    @property
-    def typed(self) -> GearTyped:
-        return self._typed
+    def merge_key(self, names: tuple[str, ...]) -> tuple[str, tuple[str, ...]] | None:
+        """A switch of mode is a step of its own; keystrokes in one field merge."""
+        return None if "mode" in names else (self.PART, names)
 
-    @property
-    def error(self) -> DesignError | None:
-        """Why the typed pair is refused (None: the typed pair is the one on screen)."""
-        return self._error
-
-    def set_fields(self, **changes: Any) -> None:
-        """Change some typed fields (one undoable step; keystrokes in one field merge)."""
-        after = self._typed.with_(**changes)
-        if after == self._typed:
-            return
-        names = tuple(sorted(changes))
-        key = None if "mode" in changes else ("gear", names)
-        push_edit(self.design_model.undo_stack,
-                  InputEdit(self._apply, self._typed, after, key,
-                            lambda: QCoreApplication.translate("GearModel", "edit gear pair")))
+    def edit_text(self) -> str:
+        return QCoreApplication.translate("GearModel", "edit gear pair")
 
     def set_mode(self, mode: str) -> None:
         """Give the shifts another way; the fields of the new mode start from the pair on
         screen, so the switch alone changes no number."""
         if mode == self._typed.dict["mode"]:
             return
-        pair = self._pair
+        pair = self._value
         self.set_fields(mode=mode, x1=pair.gear1.shift, x2=pair.gear2.shift, centre=pair.centre_mm)
 
     def document(self) -> dict[str, Any]:
         """The inputs of the pair on screen, as the design file keeps them."""
-        return gear_to_dict(self._pair.inputs)
+        return gear_to_dict(self._value.inputs)
 
     def crank_turn(self) -> float:
         """The crank angle (rad) of the animation bar: the gear z2 sits on the crank's shaft."""
         m = self.design_model
         return float(m.motion.crank_angle[m.angle_index])
 
-    def _load(self) -> None:
-        """A file was opened (or New): its pair (read all or nothing when the file was
-        opened), or the default one."""
-        data = self.design_model.parts.loaded("gear")
-        if data is None:
-            typed = typed_from(DEFAULT_PAIR.inputs, DEFAULT_PAIR)
-        else:
-            pair = check_part(data)
-            typed = typed_from(pair.inputs, pair)
-        self._apply(typed)
+    def typed_of(self, data: Any) -> GearTyped:
+        """An opened file's pair (read all or nothing when the file was opened), or the
+        default one; the shift fields its mode leaves unused show the pair's."""
+        pair = DEFAULT_PAIR if data is None else check_part(data)
+        return typed_from(pair.inputs, pair)
 
-    def _apply(self, typed: GearTyped) -> None:
-        self._typed = typed
-        self.typedChanged.emit()
-        try:
-            pair = design_pair(gear_inputs(typed))
-        except DesignError as exc:
-            self._set_error(exc)
-            return
-        except COMPUTE_ERRORS as exc:       # a corner of the closed forms: said, never a traceback
-            self._set_error(compute_error(exc))
-            return
-        self._set_error(None)
-        self._valid_typed = typed
-        if pair != self._pair:
-            self._pair = pair
-            self.pairChanged.emit()
-
-    def _set_error(self, error: DesignError | None) -> None:
-        if str(error) != str(self._error):
-            self._error = error
-            self.errorChanged.emit()
-        self._error = error
+    def compute(self, typed: GearTyped) -> GearPair:
+        return design_pair(gear_inputs(typed))

@@ -19,6 +19,7 @@ from PySide6.QtWidgets import QWidget
 
 from core.gear import GearPair
 from core.gear.mesh import gear_outline, line_points, mesh_angles, placed
+from shaperapp.parts.view import PartView
 from shaperapp.widgets.screen_polygon import screen_polygon
 from shaperapp.widgets.style import FRAME, LINK, TEXT
 
@@ -34,36 +35,20 @@ LABEL_OFFSETS = {"N1": QPointF(-24, 12), "B2": QPointF(-24, 4), "P": QPointF(8, 
                  "B1": QPointF(-24, 0), "N2": QPointF(6, -4)}
 
 
-class GearPairView(QWidget):
+class GearPairView(PartView):
     """Paints the pair at the model's crank angle; ``render_pair`` paints it anywhere."""
 
     def __init__(self, gear_model: GearModel, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
-        self._model = gear_model
-        self.setMinimumSize(200, 200)
-        self._outlines: tuple[np.ndarray, np.ndarray] | None = None
+        super().__init__(gear_model, (200, 200), lambda: (gear_outline(gear_model.pair, 1),
+                                                          gear_outline(gear_model.pair, 2)), parent)
         self.close_up = False           # the line of action N1N2 filling the view, not both gears
-        gear_model.pairChanged.connect(self._reset)
-        gear_model.design_model.angleChanged.connect(self._angle_moved)
-
-    def _angle_moved(self, _index: int) -> None:
-        if self.isVisible():
-            self.update()
-
-    def _reset(self) -> None:
-        self._outlines = None
-        self.update()
 
     def set_close_up(self, on: bool) -> None:
         self.close_up = bool(on)
         self.update()
 
-    def outlines(self) -> tuple[np.ndarray, np.ndarray]:
-        """The pinion and the gear whole about their own centres, (n, 2) mm."""
-        if self._outlines is None:
-            pair = self._model.pair
-            self._outlines = (gear_outline(pair, 1), gear_outline(pair, 2))
-        return self._outlines
+    outlines = PartView.shapes
+    """The pinion and the gear whole about their own centres, (n, 2) mm."""
 
     def placed_outlines(self, crank: float) -> tuple[np.ndarray, np.ndarray]:
         """Both outlines where they stand at crank angle ``crank`` (rad), in the frame."""
@@ -72,18 +57,14 @@ class GearPairView(QWidget):
         one, two = self.outlines()
         return placed(one, float(turn1)), placed(two, float(turn2), (pair.centre_mm, 0.0))
 
-    def paintEvent(self, event) -> None:  # noqa: N802 - Qt's name
-        painter = QPainter(self)
-        painter.fillRect(self.rect(), Qt.GlobalColor.white)
-        self.render_pair(painter, QRectF(self.rect()))
-        painter.end()
-
     def render_pair(self, painter: QPainter, rect: QRectF) -> None:
         """The pair at the current crank angle, fitted into ``rect``, under a line that says
         the angles."""
         crank = self._model.crank_turn()
         paint_pair(painter, rect, self._model.pair, self.placed_outlines(crank), self.caption(crank),
                    self.close_up)
+
+    render_part = render_pair
 
     def caption(self, crank: float) -> str:
         """The line over the drawing: how far each gear has turned at crank angle ``crank``."""

@@ -7,14 +7,12 @@ import datetime
 import os
 
 from PySide6.QtCore import QLocale, Qt
-from PySide6.QtWidgets import (QCheckBox, QGridLayout, QHBoxLayout, QMessageBox, QPushButton, QScrollArea,
-                               QSplitter, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import QCheckBox, QScrollArea, QWidget
 
 from core.atomic import atomic_write
 from core.gear.table import gear_summary, summary_csv
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets import file_dialogs
-from shaperapp.widgets.messages import failure_reason
+from shaperapp.parts.tab import PartTab
 
 from .form import GearForm
 from .model import GearModel
@@ -40,51 +38,26 @@ class TablesArea(QScrollArea):
         return hint
 
 
-class GearTab(QWidget):
+class GearTab(PartTab):
     """One widget taking the design model. The window keeps the gear model (which Save
     writes) from the start and builds this tab only when it is first shown."""
 
+    MODEL, FORM, VIEW = GearModel, GearForm, GearPairView
+    EXPORTS = ("csv", "sheet")
+
     def __init__(self, model: DesignModel, parent: QWidget | None = None,
                  gear_model: GearModel | None = None) -> None:
-        super().__init__(parent)
-        self.gear_model = gear_model if gear_model is not None else GearModel(model, self)
-        self.form = GearForm(self.gear_model)
-        self.view = GearPairView(self.gear_model)
+        super().__init__(model, parent, gear_model)
+        self.gear_model = self.part_model
         self.results = GearResults(self.gear_model)
         self.close_up = QCheckBox(self)
         self.close_up.toggled.connect(self.view.set_close_up)
-        self.buttons = {name: QPushButton(self) for name in ("csv", "sheet")}
-        self.buttons["csv"].clicked.connect(lambda: self._export_dialog("csv"))
-        self.buttons["sheet"].clicked.connect(lambda: self._export_dialog("sheet"))
-        side = QWidget()
-        column = QVBoxLayout(side)
-        column.addWidget(self.form)
-        column.addWidget(self.close_up)
-        row = QGridLayout()
-        for i, button in enumerate(self.buttons.values()):
-            row.addWidget(button, 0, i)
-        column.addLayout(row)
-        column.addWidget(self.results.checks)       # the checks beside the inputs they judge
-        column.addStretch(1)
-        scroll = QScrollArea()
-        scroll.setWidget(side)
-        scroll.setWidgetResizable(True)
-        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self._side = scroll
         tables = TablesArea()
         tables.setWidget(self.results)
         tables.setWidgetResizable(True)
         tables.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.gear_model.pairChanged.connect(tables.updateGeometry)   # its least width follows
-        split = QSplitter(Qt.Orientation.Vertical)
-        split.addWidget(self.view)
-        split.addWidget(tables)
-        split.setStretchFactor(0, 1)
-        split.setStretchFactor(1, 1)
-        layout = QHBoxLayout(self)
-        layout.setContentsMargins(2, 2, 2, 2)
-        layout.addWidget(scroll)
-        layout.addWidget(split, 1)
+        self._side = self._assemble((self.form, self.close_up), (self.results.checks,), tables)
         self.retranslate()
 
     def retranslate(self) -> None:
@@ -126,19 +99,11 @@ class GearTab(QWidget):
         language = "zh_CN" if QLocale().language() == QLocale.Language.Chinese else "en"
         write_sheet(sheet, path, language, design.source_name)
 
-    def _export_dialog(self, kind: str) -> None:
-        self.form.commit()
+    def export_choice(self, kind: str) -> tuple[str, str]:
         if kind == "csv":
-            filters, start = self.tr("CSV table (*.csv)"), "gear.csv"
-        else:
-            filters = ";;".join((self.tr("PDF document (*.pdf)"), self.tr("SVG image (*.svg)"),
-                                 self.tr("DXF drawing (*.dxf)")))
-            start = "gear.pdf"
-        title = self.tr("Export the gear pair")
-        path = file_dialogs.save_file_name(self, title, os.path.join(os.path.expanduser("~"), start), filters)
-        if not path:
-            return
-        try:
-            (self.export_csv if kind == "csv" else self.export_sheet)(path)
-        except Exception as exc:        # never to sys.excepthook: the reason, in a message
-            QMessageBox.warning(self, title, failure_reason(exc))
+            return self.tr("CSV table (*.csv)"), "gear.csv"
+        return ";;".join((self.tr("PDF document (*.pdf)"), self.tr("SVG image (*.svg)"),
+                          self.tr("DXF drawing (*.dxf)"))), "gear.pdf"
+
+    def export_title(self) -> str:
+        return self.tr("Export the gear pair")

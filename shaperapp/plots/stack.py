@@ -20,12 +20,11 @@ from collections.abc import Callable, Sequence
 
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, Signal
-from PySide6.QtGui import QAction, QColor, QPainter
-from PySide6.QtWidgets import (QFrame, QGraphicsView, QHBoxLayout, QMenu, QScrollArea,
-                               QToolButton, QVBoxLayout, QWidget)
+from PySide6.QtGui import QAction, QColor
+from PySide6.QtWidgets import QGraphicsScene, QGraphicsView, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.image_export import export_scene, render_scene, scene_svg
+from shaperapp.widgets.scroll import vertical_scroll
 from shaperapp.widgets.style import TEXT
 
 from .axes import cache_static, styled_plot_item
@@ -33,10 +32,9 @@ from .curves import LEGEND_WIDTH, PlotSlots, finite_range
 from .legend import GroupLegend
 from .readout import Readout
 from .series import Series, StackSource
+from .stack_bar import StackBar
 from .stack_layout import (axis_title, fit_axis_widths, fit_heights, fitted_y, legends_beside,
                            place_rows, plots_height, show_x_values, shown_groups)
-
-WHITE = QColor("#ffffff")
 
 class PlotStack(QWidget):
     """Stacked, x-linked cycle plots of one view (see the module docstring)."""
@@ -78,21 +76,8 @@ class PlotStack(QWidget):
         self._plots[self._series[0].key].item.vb.sigXRangeChanged.connect(self._fit_y)
         self._cache_static(True)
 
-        self.fit_action = QAction(self)
-        self.fit_action.triggered.connect(self.fit)
-        self.box_zoom_action = QAction(self)
-        self.box_zoom_action.setCheckable(True)
-        self.box_zoom_action.setChecked(True)
-        self.box_zoom_action.toggled.connect(self._set_box_zoom)
-        self._menu = QMenu(self)
-        self._menu.addAction(self.fit_action)
-        self._menu.addAction(self.box_zoom_action)
-        fit_button = QToolButton()
-        fit_button.setDefaultAction(self.fit_action)
-        self._bar = QHBoxLayout()
-        self._bar.setContentsMargins(4, 2, 4, 2)
-        self._bar.addStretch(1)
-        self._bar.addWidget(fit_button)
+        self._bar = StackBar(self, self.fit, self._set_box_zoom)
+        self.fit_action, self.box_zoom_action, self._menu = self._bar.fit_action, self._bar.box_zoom, self._bar.menu
         self._readout = Readout(model, source, self._series[0].key, lambda key: self._plots[key],
                                 lambda group: self._legends[group].title(),
                                 lambda: not self._stale)
@@ -100,11 +85,8 @@ class PlotStack(QWidget):
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(0)
         layout.addLayout(self._bar)
-        self._scroll = QScrollArea()
-        self._scroll.setWidgetResizable(True)
-        self._scroll.setFrameShape(QFrame.Shape.NoFrame)
-        self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self._scroll.setWidget(self._view)
+        self._scroll = vertical_scroll()
+        self._scroll.setWidget(self._view)          # the view's events, filtered here, read _scroll
         self._scroll.viewport().installEventFilter(self)
         layout.addWidget(self._scroll, 1)
         layout.addWidget(self._readout)
@@ -121,7 +103,7 @@ class PlotStack(QWidget):
     # ---- configuration by the view -------------------------------------
     def add_tool(self, widget: QWidget) -> None:
         """Put a view's control in the bar above the plots (left of the Fit button)."""
-        self._bar.insertWidget(self._bar.count() - 2, widget)
+        self._bar.add_tool(widget)
 
     def add_menu_action(self, action: QAction) -> None:
         self._menu.addAction(action)
@@ -409,27 +391,12 @@ class PlotStack(QWidget):
         """The read-out as plain text (spaces for non-breaking ones, no word joiners)."""
         return self._readout.plain_text()
 
-    def export_image(self, path: str) -> None:
-        """Write the plots to ``path``: SVG for ``.svg``, else a raster image (PNG …) at
-        least 1600 px wide. ValueError for an unknown type, OSError for a bad folder."""
+    def export_view(self) -> tuple[QGraphicsScene, QRectF, str, Callable[[bool], None]]:
+        """What an export draws, brought up to date: the scene, the plots' rectangle in it,
+        the title, and the switch that turns the items' caching off while exporting."""
         self.ensure_current()
-        export_scene(self._view.scene(), self._view.ci.sceneBoundingRect(), path,
-                     self._export_title(), WHITE, self._caching_off)
-
-    def svg_bytes(self) -> bytes:
-        """The SVG :meth:`export_image` writes, in memory (for the report)."""
-        self.ensure_current()
-        return scene_svg(self._view.scene(), self._view.ci.sceneBoundingRect(), self._export_title(),
-                         WHITE, self._caching_off)
-
-    def render(self, painter: QPainter, target: QRectF) -> None:
-        """Paint the plots into ``target`` of any painter (PDF, SVG, printer): vectors."""
-        self.ensure_current()
-        render_scene(self._view.scene(), self._view.ci.sceneBoundingRect(), painter, target,
-                     WHITE, self._caching_off)
-
-    def _caching_off(self, exporting: bool) -> None:
-        self._cache_static(not exporting)
+        return (self._view.scene(), self._view.ci.sceneBoundingRect(), self._export_title(),
+                lambda exporting: self._cache_static(not exporting))
 
     def _cache_static(self, on: bool) -> None:
         cache_static([p.item for p in self._plots.values()] + [g.head for g in self._legends.values()], on)

@@ -13,6 +13,7 @@ from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import QCheckBox, QComboBox, QHBoxLayout, QMenu, QToolButton, QWidget
 
+from shaperapp.widgets.actions import switch_action
 from shaperapp.widgets.view_parts import fill_speed_combo
 
 
@@ -28,14 +29,8 @@ class SchemeControls:
                  forces: Callable[[bool], None], speed: Callable[[int], None]) -> None:
         self.fit_action = QAction(parent)
         self.fit_action.triggered.connect(fit)
-        self.dimensions_action = QAction(parent)
-        self.dimensions_action.setCheckable(True)
-        self.dimensions_action.setChecked(True)
-        self.dimensions_action.toggled.connect(dimensions)
-        self.forces_action = QAction(parent)
-        self.forces_action.setCheckable(True)
-        self.forces_action.setChecked(False)
-        self.forces_action.toggled.connect(forces)
+        self.dimensions_action = switch_action(parent, True, dimensions)
+        self.forces_action = switch_action(parent, False, forces)
         self.menu = QMenu(parent)
         for action in (self.fit_action, self.dimensions_action, self.forces_action):
             self.menu.addAction(action)

@@ -17,16 +17,15 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QPainter
-from PySide6.QtWidgets import QGraphicsView, QMenu, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
-from shaperapp.plots.axes import NavViewBox, unlink_hidden_axes
 from shaperapp.widgets.image_export import export_scene, render_scene, scene_svg
 from shaperapp.widgets.view_parts import fill_speed_combo
 
 from .controls import SchemeControls
 from .dimensions import DimensionLayer
-from .draw import WHITE, Box, Pair
+from .draw import WHITE, Box, Pair, canvas
 from .forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
 from .labels import LabelLayout
 from .mechanism import Geometry, MechanismLayer
@@ -56,20 +55,8 @@ class SchemeWidget(QWidget):
         self._update_timer.timeout.connect(self._catch_up)
         self._precompute_timer = QTimer(self, singleShot=True, interval=PRECOMPUTE_PAUSE_MS)
         self._precompute_timer.timeout.connect(self._precompute)
-        self._plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
-        self._plot.setAntialiasing(True)
-        # one repaint of the rectangle around a frame's changes, not one per moved item
-        self._plot.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.BoundingRectViewportUpdate)
-        self._plot.scene().contextMenu = []           # no pyqtgraph "Export..."
-        item = self._plot.getPlotItem()
-        item.hideAxis("left")
-        item.hideAxis("bottom")
-        unlink_hidden_axes(item)
-        item.hideButtons()
-        item.setMenuEnabled(False)
-        self._view = item.getViewBox()
-        self._view.setAspectLocked(True, ratio=1.0)
-        self._view.disableAutoRange()
+        self._plot = canvas()
+        self._view = self._plot.getPlotItem().getViewBox()
 
         controls = self._controls = SchemeControls(self, self.fit, self.set_dimensions_visible,
                                                    self._apply_forces_visible, self._force_speed_chosen)

@@ -14,7 +14,7 @@ from gui_helpers import shown
 def test_report_has_the_cam_of_the_tab(qtbot, model, tmp_path):
     tab = shown(qtbot, CamTab(model), 900, 600)
     tab.form.fields["arm"].edit.setText("140")
-    tab.form._typed("arm")
+    tab.form.pending.typed("arm")
     tab.form.commit()
     html = tmp_path / "r.html"
     assert export_report(model, str(html), "en") == 0
