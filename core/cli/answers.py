@@ -13,7 +13,7 @@ import io
 from importlib import import_module
 from typing import Any, Mapping, Sequence
 
-from ..io import csv_text
+from core.files.io import csv_text
 
 COMMANDS = ("synth", "analyze", "dynamics", "cam", "gear")
 
@@ -103,7 +103,7 @@ def key_values(entry: Mapping[str, Any], group: str, speeds: int) -> list[Any]:
 
 def key_csv(entries: Sequence[Mapping[str, Any]], groups: Sequence[str]) -> str:
     """answer-key.csv: one row per student, numbers at full precision, text guarded as
-    every CSV of the tool guards it (``core.io.csv_text``: as a whole and per name)."""
+    every CSV of the tool guards it (``core.files.io.csv_text``: as a whole and per name)."""
     speeds = speed_count(entries)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")

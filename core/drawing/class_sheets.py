@@ -93,7 +93,7 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
                labels: Mapping[str, str]) -> Sheet:
     """One student's task sheet: ``doc`` the design file's document, ``who`` the student,
     number, group and date, ``deliver`` the files' titles in order."""
-    from ..spec import Spec
+    from core.linkage.spec import Spec
     design = Spec.from_dict(doc["spec"]).design()
     p = A4
     left, bottom, right, top = p.border

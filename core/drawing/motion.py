@@ -20,12 +20,12 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
-from core.errors import DesignError
-from core.figure_text import figure_text
-from core.geometry import Design
-from core.kinematics import solve
-from core.polygons import acceleration_polygon, velocity_polygon
-from core.positions import positions, special_angles
+from core.base.errors import DesignError
+from core.base.figure_text import figure_text
+from core.linkage.geometry import Design
+from core.linkage.kinematics import solve
+from core.forces.polygons import acceleration_polygon, velocity_polygon
+from core.course_design.positions import positions, special_angles
 
 from . import mechanism as mech
 from . import mechanism_dims, path_numbers

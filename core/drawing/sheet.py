@@ -24,7 +24,7 @@ from typing import Collection, Sequence, Union
 
 import numpy as np
 
-from core.polygons import nice_scale
+from core.forces.polygons import nice_scale
 
 from .dxf import OUTLINE, TEXT, THIN
 

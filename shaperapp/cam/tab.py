@@ -8,10 +8,10 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QLabel, QMessageBox, QPushButton,
                                QScrollArea, QSplitter, QVBoxLayout, QWidget)
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 from core.cam.table import cam_table
-from core.io import table_csv
-from core.kinematics import crank_angles
+from core.files.io import table_csv
+from core.linkage.kinematics import crank_angles
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs
 
@@ -122,7 +122,7 @@ class CamTab(QWidget):
         atomic_write(path, table_csv(*cam_table(self.cam_model.cam, crank_angles(1.0), rpm)))
 
     def export_dxf(self, path: str) -> None:
-        from core.cam_drawing import write_cam_dxf     # ezdxf: only when a drawing is asked for
+        from core.drawing.cam_dxf import write_cam_dxf     # ezdxf: only when a drawing is asked for
         write_cam_dxf(self.cam_model.cam, path)
 
     def export_image(self, path: str) -> None:

@@ -22,11 +22,11 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, 
                                QFormLayout, QMessageBox, QWidget)
 
 from core.cli.allocator import return_freed_memory
-from core.course import CourseError, plan_course
-from core.design_file import parse_design
+from core.course_design.plan import CourseError, plan_course
+from core.files.design_file import parse_design
 from core.drawing.sheet import PAPERS
-from core.io import design_document
-from core.progress import Cancelled
+from core.files.io import design_document
+from core.base.progress import Cancelled
 
 from shaperapp.design.document import saved_parts
 from shaperapp.design.model import DesignModel

@@ -15,7 +15,7 @@ from typing import Any
 
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from core.gear import GearPair, GearPairInputs, design_pair
 from core.gear.file import gear_from_dict, gear_to_dict
 from shaperapp.design.model import DesignModel

@@ -10,7 +10,7 @@ from PySide6.QtCore import QLocale, Qt
 from PySide6.QtWidgets import (QCheckBox, QGridLayout, QHBoxLayout, QMessageBox, QPushButton, QScrollArea,
                                QSplitter, QVBoxLayout, QWidget)
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 from core.gear.table import gear_summary, summary_csv
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs

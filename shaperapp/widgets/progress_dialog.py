@@ -4,7 +4,7 @@ Why not a worker thread: the report and the sheets are painted by Qt, and the re
 figures are the app's own widgets rendered offscreen, which Qt allows on the GUI thread
 only; a Python thread calling into Qt can also deadlock with the GUI thread over the GIL
 (``worker.py``). So the job runs here, and at every step it reports (a section, a page,
-a file: ``core.progress``) the dialog's bar moves and the pending events are processed:
+a file: ``core.base.progress``) the dialog's bar moves and the pending events are processed:
 the window repaints, and Cancel is read there. The dialog is window-modal: the window
 stays drawn and answers, but takes no edits until the export has ended. The cursor is
 the busy one (an arrow with an hourglass) meanwhile.
@@ -17,7 +17,7 @@ from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QApplication, QProgressDialog, QWidget
 
-from core.progress import Progress
+from core.base.progress import Progress
 
 T = TypeVar("T")
 STEPS = 1000            # the bar's maximum: the job's fraction in thousandths
@@ -27,7 +27,7 @@ def run_with_progress(job: Callable[[Progress, Callable[[str], None]], T], title
                       parent: QWidget | None = None) -> T:
     """``job(progress, say)`` with a progress dialog titled ``title`` saying ``label`` (the
     job may say more: ``say(text)``, e.g. the file being written); what it returns, or what
-    it raises (``core.progress.Cancelled`` after Cancel). The bar only moves forward and
+    it raises (``core.base.progress.Cancelled`` after Cancel). The bar only moves forward and
     ends at its maximum when the job has finished."""
     QGuiApplication.setOverrideCursor(Qt.CursorShape.BusyCursor)
     dialog = None

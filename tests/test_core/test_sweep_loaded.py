@@ -1,7 +1,7 @@
 """A loaded sweep's row equals the single design's summary (issue 42, item 12).
 
-The sweep samples each cycle at ``core.sweep.SWEEP_INTERVALS`` crank-angle intervals to
-bracket the torque and energy extrema, a tenth of what :func:`core.flywheel.summarize`
+The sweep samples each cycle at ``core.space.sweep.SWEEP_INTERVALS`` crank-angle intervals to
+bracket the torque and energy extrema, a tenth of what :func:`core.forces.flywheel.summarize`
 (the per-design reference, 3600 intervals) samples; the extrema are polished on the
 closed form either way, so every loaded figure must agree to 1e-9 on random designs
 and random loads, block and rod variants, with and without gravity."""
@@ -10,10 +10,10 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from core.dynamics import ENERGY_INTERVALS, MassProperties
-from core.flywheel import summarize
-from core.spec import Spec
-from core.sweep import SWEEP_INTERVALS, evaluate
+from core.forces.dynamics import ENERGY_INTERVALS, MassProperties
+from core.forces.flywheel import summarize
+from core.linkage.spec import Spec
+from core.space.sweep import SWEEP_INTERVALS, evaluate
 
 KEYS = ("mean_torque_N_m", "max_torque_N_m", "min_torque_N_m", "energy_fluctuation_J",
         "flywheel_inertia_kg_m2")

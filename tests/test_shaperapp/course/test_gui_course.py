@@ -57,7 +57,7 @@ def test_a_design_without_a_part_is_refused_and_nothing_written(window, answers,
 def quick_report(monkeypatch):
     """The report written as a small stand-in file (atomically, as the real one): the
     tests of Cancel and of a failed write are about the run, not the report's pages."""
-    from core.atomic import atomic_write
+    from core.files.atomic import atomic_write
     monkeypatch.setattr("shaperapp.course.write._report", lambda *args: None)
     monkeypatch.setattr("shaperapp.course.write.write_report",
                         lambda report, path, *progress: atomic_write(path, b"%PDF-1.4\n%%EOF\n"))

@@ -1,7 +1,7 @@
 """The report and the course design written under a progress dialog (issue 40, item 5):
 the bar moves with every section and page, only forward, to its maximum; the cursor is
 busy meanwhile; Cancel leaves no file (nor a temporary one) behind; the headless writers
-take the same progress (``core.progress``), for ``shaper course`` and ``shaper class``."""
+take the same progress (``core.base.progress``), for ``shaper course`` and ``shaper class``."""
 import os
 
 import pytest
@@ -9,7 +9,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QDialog, QFileDialog, QMessageBox, QProgressDialog
 
-from core.progress import Cancelled, Progress
+from core.base.progress import Cancelled, Progress
 from shaperapp.report import dialog as report_dialog
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
 from shaperapp.widgets.progress_dialog import STEPS

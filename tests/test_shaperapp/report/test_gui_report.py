@@ -5,10 +5,10 @@ import shutil
 import stat
 import subprocess
 
-from core.compare import Candidate
-from core.spec import Spec
+from core.space.compare import Candidate
+from core.linkage.spec import Spec
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
-from core.figure_text import figure_text
+from core.base.figure_text import figure_text
 
 
 def test_window_has_the_deliverables(window, qtbot):

@@ -5,7 +5,7 @@ what is allowed. For arrays of designs each rule marks the designs it refuses in
 one vectorized pass (:meth:`Verdict.check`), and the message of a refused design
 is built only when asked for (:meth:`Verdict.error`), so a sweep of a hundred
 thousand designs pays for its reasons only where it shows them. This is the
-bookkeeping of rules, apart from the rules themselves (:mod:`core.designs`):
+bookkeeping of rules, apart from the rules themselves (:mod:`core.linkage.designs`):
 it knows nothing about mechanisms.
 """
 from __future__ import annotations
@@ -16,7 +16,7 @@ from typing import Callable
 
 import numpy as np
 
-from .errors import DesignError, range_text
+from core.base.errors import DesignError, range_text
 
 
 @dataclass(frozen=True)

@@ -4,13 +4,13 @@ A level-0 numerical helper (numpy only; it knows nothing about mechanisms). A gr
 two neighbouring samples where the curve's analytic slope turns from rising
 to falling. The best few such cells per curve are polished by finding the
 slope's zero there (a bracketed root, or Newton's method kept inside the cell
-when the slope's own slope is known; both in :mod:`core.polish`, vectorized
+when the slope's own slope is known; both in :mod:`core.linkage.polish`, vectorized
 over all curves), and the
 curve's value at that zero is the extremum. A reported extremum is therefore
 never the largest sample of a grid, and never smaller than it.
 
 For curves without an analytic slope (the crank torque), :func:`piece_maximum`
-polishes with :func:`core.polish.polish_minimum` (Brent's parabolic and golden
+polishes with :func:`core.linkage.polish.polish_minimum` (Brent's parabolic and golden
 steps, vectorized) on the function itself.
 """
 from __future__ import annotations

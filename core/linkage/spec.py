@@ -2,14 +2,14 @@
 
 A :class:`Spec` is what a form edits and what a design file stores; it keeps
 the inactive fields too, so switching mode or variant loses nothing. It turns
-into a :class:`~core.geometry.Design` with :meth:`Spec.design`.
+into a :class:`~core.linkage.geometry.Design` with :meth:`Spec.design`.
 """
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
-from .errors import DesignError, require_range
+from core.base.errors import DesignError, require_range
 from .geometry import MAX_ROD_RATIO, MAX_TIME_RATIO, Design, from_dimensions, require_length, synthesize
 
 MODES = ("synthesis", "dimensions")

@@ -29,8 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .dynamics import MassProperties, solve_dynamics
-from .geometry import Design
-from .kinematics import rpm_to_omega, shape
+from core.linkage.geometry import Design
+from core.linkage.kinematics import rpm_to_omega, shape
 
 MM = 1e-3
 KINDS = ("velocity", "acceleration", "force")
@@ -191,7 +191,7 @@ def force_polygon(design: Design, crank_deg: float, rpm: float,
 
     Known loads first (cutting force P, weights G, inertia forces F_I = −m·a from the
     kinematics), then the guide's normal force N and the lever's force R_B at B from
-    ``core.dynamics``. d'Alembert: the chain returns to its start. Zero forces are left out.
+    ``core.forces.dynamics``. d'Alembert: the chain returns to its start. Zero forces are left out.
     """
     phi = np.radians([crank_deg])
     w = float(rpm_to_omega(rpm))
@@ -215,7 +215,7 @@ def lever_force_polygon(design: Design, crank_deg: float, rpm: float,
                         masses: MassProperties) -> Polygon:
     """Forces on the lever (link 4), head to tail: its weight G_4 and inertia force
     F_I4 = −m4·a_S4 (a_S4 from the kinematics, the centre of mass on the lever at
-    ``masses.lever_cg``), then from ``core.dynamics`` the block's force R_A at A, the
+    ``masses.lever_cg``), then from ``core.forces.dynamics`` the block's force R_A at A, the
     frame's R_O4 and the next link's force at B, R_4B = −R_B. They close: the inertia
     moment −J_S4·α4 turns the lever but adds no force. Zero forces are left out."""
     phi = np.radians([crank_deg])

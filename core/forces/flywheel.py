@@ -1,9 +1,9 @@
 """Cycle values of the kinetostatics: mean and peak crank torque, energy fluctuation
 and the flywheel, for one design or many at once.
 
-A level above :mod:`core.dynamics`, whose per-angle elimination it integrates
+A level above :mod:`core.forces.dynamics`, whose per-angle elimination it integrates
 over a closed uniform grid. The peaks are exact extrema of the closed-form
-torque (:mod:`core.extrema`); the cut's share of the work is taken exactly
+torque (:mod:`core.linkage.extrema`); the cut's share of the work is taken exactly
 from the ram displacement.
 """
 from __future__ import annotations
@@ -12,13 +12,13 @@ import math
 
 import numpy as np
 
-from .cut import cut_window
-from .designs import Designs
+from core.linkage.cut import cut_window
+from core.linkage.designs import Designs
 from .dynamics import (ENERGY_INTERVALS, MM, DynamicsSummary, MassProperties, SpeedSummary,
                        _check_inputs, _eliminate, equivalent_inertia)
-from .errors import DesignError
-from .geometry import Design
-from .kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
+from core.base.errors import DesignError
+from core.linkage.geometry import Design
+from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
 
 
 def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
@@ -82,7 +82,7 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     ``flywheel_inertia_kg_m2``, and ``equivalent_inertia_mean_kg_m2`` (designs,);
     with ``curves`` also ``energy`` (designs, speeds, N + 1) and
     ``equivalent_inertia`` (designs, N + 1). Designs must be valid (see
-    :mod:`core.designs`) and one-dimensional. ``peaks=False`` skips the exact torque
+    :mod:`core.linkage.designs`) and one-dimensional. ``peaks=False`` skips the exact torque
     peaks: ``max_torque_N_m`` and ``min_torque_N_m`` are NaN.
 
     The torque is integrated over a closed uniform grid of ``intervals``
@@ -210,8 +210,8 @@ def _energy_extremes(d: Designs, sh: Shape, static: np.ndarray, inertial: np.nda
     and a zero counts only inside its own piece. ``start`` is :func:`_stored` at φ = 0,
     ``window`` the cut's switch angles.
     """
-    from .extrema import sign_changes
-    from .polish import bracket_root
+    from core.linkage.extrema import sign_changes
+    from core.linkage.polish import bracket_root
 
     on, off = window
 
@@ -297,9 +297,9 @@ def _torque_peaks(d: Designs, sh: Shape, static: np.ndarray, inertial: np.ndarra
     from :func:`cut_window`). The peak is the larger of T1's maximum over the cut,
     T0's over the rest, and both one-sided values at each switch. Each maximum is
     bracketed on the samples of :func:`_torque_samples` and polished on the closed
-    form (:func:`core.extrema.piece_maximum`).
+    form (:func:`core.linkage.extrema.piece_maximum`).
     """
-    from .extrema import piece_maximum
+    from core.linkage.extrema import piece_maximum
 
     period = 2.0 * math.pi
     x, stat, iner, ram1, segments = _torque_samples(d, sh, static, inertial, masses)

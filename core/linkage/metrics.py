@@ -4,7 +4,7 @@ The third level of core. Limit positions are found as the zeros of the ram
 velocity (sign changes on a grid, polished by a bracketed root finder on the
 closed-form velocity), so a measured K or stroke that disagrees with the
 design's nominal values exposes a fault in the kinematics. Every peak is an
-extremum of the closed-form curves (see :mod:`core.extrema`), not the largest
+extremum of the closed-form curves (see :mod:`core.linkage.extrema`), not the largest
 sample of a grid, and the crank angles of the speed peaks are kept (the
 positions table's special rows). One code path serves one design
 (:func:`analyze`) and many (:func:`cycle_peaks`, used by the sweep).
@@ -113,7 +113,7 @@ def cycle_peaks(designs: Designs) -> CyclePeaks:
 
     No Python loop runs per design: designs are processed in chunks of
     ``CHUNK`` (bounding memory), each chunk as arrays. The peaks are extrema of
-    the closed-form curves (see :mod:`core.extrema`), sampled at crank
+    the closed-form curves (see :mod:`core.linkage.extrema`), sampled at crank
     directions β = π + θ/2 − φ shared by all designs, plus, for the rod
     variant, samples crowding geometrically (down to ~1e-5 rad) toward the two
     dead points and the two crossings of the vertical (ψ = 0). The rod rises
@@ -142,7 +142,7 @@ def _specials(d: Designs) -> tuple[np.ndarray, np.ndarray]:
 
 def _ram_curves(beta, quantity, crank, frame, lever, guide, rod, *, side):
     """(value, slope d/dβ, the slope's d/dβ) of dCx/dφ, −dCx/dφ or |d²Cx/dφ²| (``quantity``
-    0, 1, 2) at β, for Newton's method on the slope (:func:`core.polish.newton_maximum`)."""
+    0, 1, 2) at β, for Newton's method on the slope (:func:`core.linkage.polish.newton_maximum`)."""
     d = Designs(crank, frame, lever, guide, None if side is None else rod,
                 "trailing" if side is None else side)
     ram1, ram2, ram3, ram4 = rates4_at(d, np.cos(beta), np.sin(beta))
@@ -236,7 +236,7 @@ SHARE_BELOW = 0.25
 
 
 def shared_rates(col: Designs, cos_beta: np.ndarray, sin_beta: np.ndarray) -> Rates:
-    """:func:`~core.rates.rates_at` of designs ``col`` (shape (n, 1)) at samples shared
+    """:func:`~core.linkage.rates.rates_at` of designs ``col`` (shape (n, 1)) at samples shared
     by all of them, the lever tip's terms computed once per distinct (L1, L2, L3).
 
     A sweep of the rod and the guide, the usual question once K and the stroke are fixed,

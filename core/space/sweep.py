@@ -1,10 +1,10 @@
 """Design-space sweeps: the figures of many designs at once, with the reason each invalid one fails.
 
-Beside ``spec``: it turns a :class:`~core.spec.Spec` plus arrays of varied
-parameters into :class:`~core.designs.Designs` (the vectorized counterpart of
+Beside ``spec``: it turns a :class:`~core.linkage.spec.Spec` plus arrays of varied
+parameters into :class:`~core.linkage.designs.Designs` (the vectorized counterpart of
 ``Spec.design``, refusing each design by the rule a single design would fail)
-and evaluates them with the same code as :func:`core.metrics.analyze` and
-:func:`core.flywheel.summarize`, so a design's row in a sweep equals its
+and evaluates them with the same code as :func:`core.linkage.metrics.analyze` and
+:func:`core.forces.flywheel.summarize`, so a design's row in a sweep equals its
 single-design figures.
 """
 from __future__ import annotations
@@ -14,14 +14,14 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .designs import Designs, dimensions_many, synthesize_many
-from .dynamics import MassProperties
-from .flywheel import cycle_summary
-from .errors import DesignError
-from .metrics import CyclePeaks, cycle_peaks, speed_figures
-from .kinematics import check_rpms, rpm_to_omega
-from .spec import GUIDE_RULES, MODES, ROD_INPUTS, ROD_SIDES, VARIANTS, Spec
-from .verdict import Verdict
+from core.linkage.designs import Designs, dimensions_many, synthesize_many
+from core.forces.dynamics import MassProperties
+from core.forces.flywheel import cycle_summary
+from core.base.errors import DesignError
+from core.linkage.metrics import CyclePeaks, cycle_peaks, speed_figures
+from core.linkage.kinematics import check_rpms, rpm_to_omega
+from core.linkage.spec import GUIDE_RULES, MODES, ROD_INPUTS, ROD_SIDES, VARIANTS, Spec
+from core.linkage.verdict import Verdict
 
 # Sweepable parameters: the name a user types (as the design options) → the core name.
 PARAMETERS = {"crank": "crank", "K": "time_ratio", "stroke": "stroke", "rod": "rod",
@@ -116,7 +116,7 @@ def evaluate(spec: Spec, values: dict[str, np.ndarray], rpms,
     """Validity, reasons and figures of every design in ``values`` (see :func:`spec_designs`).
 
     No Python loop runs per design: valid designs go through
-    :func:`core.metrics.cycle_peaks` (and :func:`core.flywheel.cycle_summary`
+    :func:`core.linkage.metrics.cycle_peaks` (and :func:`core.forces.flywheel.cycle_summary`
     with loads) as arrays, in chunks that bound memory.
     """
     rpm = check_rpms(rpms)

@@ -20,7 +20,7 @@ from .designs import (GUIDE_RULES, MAX_CRANK_RATIO, MAX_LENGTH_MM, MAX_ROD_RATIO
                       MIN_LENGTH_MM, ROD_MARGIN, ROD_SIDES, Designs, check_designs,
                       dimensions_many, drive_margin, synthesize_many)
 from .designs import _guide, _guide_number
-from .errors import DesignError, require_range
+from core.base.errors import DesignError, require_range
 from .verdict import Verdict
 
 GuideRule = Literal["chord", "sagitta"]
@@ -109,7 +109,7 @@ def synthesize(crank: float, time_ratio: float, stroke: float, *,
 
     Give ``rod`` (mm) or ``rod_ratio`` (L4/L3) for the connecting-rod variant;
     give neither for the block variant. The rules are those of
-    :func:`core.designs.synthesize_many` on one design.
+    :func:`core.linkage.designs.synthesize_many` on one design.
     """
     return _one_design(synthesize_many, (("crank", crank), ("time_ratio", time_ratio),
                                          ("stroke", stroke)), guide, rod, rod_ratio, rod_side)
@@ -163,7 +163,7 @@ def _design(designs: Designs) -> Design:
 def validate(design: Design) -> None:
     """Refuse a design that cannot be assembled or would jam somewhere in the cycle.
 
-    The rules are :func:`core.designs.check_designs` on this one design.
+    The rules are :func:`core.linkage.designs.check_designs` on this one design.
     """
     one = {name: _one(name, getattr(design, name)) for name in ("crank", "frame", "lever", "guide")}
     rod = None if design.rod is None else _one("rod", design.rod)
@@ -174,6 +174,6 @@ def validate(design: Design) -> None:
 
 def rod_drive_margin(design: Design) -> float:
     """min over the swing of r·cos ψ − s·d·sin ψ, mm: zero where the rod lies in line
-    with the lever, which then has no arm to drive it (a dead centre). See :func:`core.designs.drive_margin`.
+    with the lever, which then has no arm to drive it (a dead centre). See :func:`core.linkage.designs.drive_margin`.
     """
     return float(drive_margin(Designs.of(design))[0])

@@ -18,9 +18,9 @@ from .atomic import atomic_write
 # Design files are read in design_file; re-exported here, where they have always been.
 from .design_file import (FILE_FORMAT, FILE_VERSION, load_design, masses_from_dict,  # noqa: F401
                           masses_to_dict, parse_design)
-from .kinematics import Motion
+from core.linkage.kinematics import Motion
 from .numtext import g10_rows
-from .spec import Spec
+from core.linkage.spec import Spec
 
 CURVE_COLUMNS = ("rpm", "crank_deg", "time_s", "ram_x_mm", "ram_v_m_s", "ram_a_m_s2",
                  "lever_deg", "lever_omega_rad_s", "lever_alpha_rad_s2")
@@ -121,7 +121,7 @@ def table_chunks(names: Iterable[str] | None, data: np.ndarray,
     action when it carries no force) and becomes an empty cell. Round-off zeros
     are written as 0 (:func:`snap_zeros`, relative to ``scale``: by default
     :func:`zero_scale` of ``data``). Each number is ``"%.10g"`` of it, formatted a
-    block at a time by :func:`core.numtext.g10_rows`.
+    block at a time by :func:`core.files.numtext.g10_rows`.
     """
     data = snap_zeros(data, scale)
     if names is not None:

@@ -1,6 +1,6 @@
 """Reading design files defensively: all or nothing, never blocking, bounded.
 
-A design file is small JSON written by the GUI (``core.io.save_design``).
+A design file is small JSON written by the GUI (``core.files.io.save_design``).
 Anything else — a FIFO, a device, a link to /dev/zero, a huge or deeply
 nested document, bools or strings where numbers belong, NaN, an unknown
 version — is refused with :class:`FileFormatError` and one plain sentence
@@ -19,12 +19,12 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .errors import DesignError, FileFormatError
-from .kinematics import angle_count, check_rpms
-from .spec import Spec
+from core.base.errors import DesignError, FileFormatError
+from core.linkage.kinematics import angle_count, check_rpms
+from core.linkage.spec import Spec
 
 if TYPE_CHECKING:
-    from .dynamics import MassProperties
+    from core.forces.dynamics import MassProperties
 
 FILE_FORMAT = "shaper-design"
 FILE_VERSION = 1
@@ -83,10 +83,10 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
         step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name, entry)
         masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
         if "cam" in doc:            # validated here, kept as written (older files have none)
-            from .cam.file import cam_from_dict     # the cam's modules: only for a file with one
+            from core.cam.file import cam_from_dict     # the cam's modules: only for a file with one
             cam_from_dict(doc["cam"])
         if "gear" in doc:           # the same for the gear pair's inputs (issue 35)
-            from .gear.file import gear_from_dict
+            from core.gear.file import gear_from_dict
             gear_from_dict(doc["gear"])
     except FileFormatError:
         raise
@@ -239,7 +239,7 @@ def _step(value: object, name: str, entry: str | None) -> float:
 def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
     """The load inputs as stored in a design file (units in the keys), as typed: a link
     given by its weight keeps its weight (``lever_weight_N``) and no mass."""
-    from .dynamics import WEIGHTS
+    from core.forces.dynamics import WEIGHTS
     data = {f.name: getattr(masses, f.name) for f in fields(masses)}
     data["ram_cg_mm"] = list(masses.ram_cg_mm)
     data["rotors"] = [{"J_kg_m2": j, "speed_ratio": r} for j, r in masses.rotors]
@@ -250,7 +250,7 @@ def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
 
 def masses_from_dict(data: object) -> MassProperties:
     """Validate stored load inputs; DesignError names the bad field."""
-    from .dynamics import MassProperties     # only for a file with loads
+    from core.forces.dynamics import MassProperties     # only for a file with loads
     if not isinstance(data, dict):
         raise DesignError("forces", type(data).__name__, "must be an object of load inputs")
     known = {f.name for f in fields(MassProperties)}

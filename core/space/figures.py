@@ -11,12 +11,12 @@ import math
 from dataclasses import dataclass
 from typing import Any, Iterable
 
-from .dynamics import MassProperties, masses_for_design
+from core.forces.dynamics import MassProperties, masses_for_design
 
-from .flywheel import summarize
-from .io import finite_or_none
-from .metrics import analyze
-from .spec import Spec
+from core.forces.flywheel import summarize
+from core.files.io import finite_or_none
+from core.linkage.metrics import analyze
+from core.linkage.spec import Spec
 
 # Which computation of the figures this program does. Raise it whenever a figure below
 # comes out differently (a corrected formula, a finer peak search): a library keeps each

@@ -15,7 +15,7 @@ import sys
 import time
 from typing import Iterable
 
-from .errors import WriteError
+from core.base.errors import WriteError
 
 _TEMP_SUFFIX = ".tmp"
 FIFO_WAIT_S = 10.0           # how long a FIFO given as output waits for a reader
@@ -63,7 +63,7 @@ def atomic_write(path: str | os.PathLike, text: str | bytes | Iterable[str] | It
       siblings left by a process that no longer runs (killed mid-save) are
       removed too, so they never accumulate.
 
-    Raises :class:`~core.errors.WriteError` (an OSError) naming ``path``, with a
+    Raises :class:`~core.base.errors.WriteError` (an OSError) naming ``path``, with a
     plain reason such as a full disk.
     """
     pieces = [text] if isinstance(text, (str, bytes)) else text

@@ -10,7 +10,7 @@ several separated by ``;``. Level: beside ``errors``; imports nothing of the mec
 """
 from __future__ import annotations
 
-from .errors import DesignError, require_range
+from core.base.errors import DesignError, require_range
 
 MAX_ROTORS = 20
 MAX_INERTIA_KG_M2 = 1e6

@@ -20,9 +20,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Collection, Mapping
 
-from .atomic import replace_refusal
-from .design_file import parse_design, read_limited   # its bounded, non-blocking read
-from .errors import DesignError, WriteError, os_reason
+from core.files.atomic import replace_refusal
+from core.files.design_file import parse_design, read_limited   # its bounded, non-blocking read
+from core.base.errors import DesignError, WriteError, os_reason
 
 REPORT = "report"          # the content of the report (the other contents are drawing sheets)
 
@@ -34,16 +34,16 @@ KEY_NAMES = {"spec": "the linkage", "rpm": "the speeds", "forces": "the loads",
 def _designed_cam(data: Any, design, idle_fraction: float):
     """The file's cam synthesized and timed against the linkage, as the cam sheet draws it
     (DesignError naming a key of the cam)."""
-    from .cam import design_cam
-    from .cam.file import cam_from_dict
+    from core.cam import design_cam
+    from core.cam.file import cam_from_dict
     inputs, phase = cam_from_dict(data)
     return design_cam(inputs, design, idle_fraction, phase)
 
 
 def _designed_gear(data: Any, design, idle_fraction: float):
     """The file's gear pair designed (DesignError naming a key of the gear)."""
-    from .gear import design_pair
-    from .gear.file import gear_from_dict
+    from core.gear import design_pair
+    from core.gear.file import gear_from_dict
     return design_pair(gear_from_dict(data))
 
 
@@ -91,7 +91,7 @@ class CourseFile:
 class Course:
     """A checked course design: its inputs, what its sheets draw, and the files to write."""
 
-    spec: Any                                  # core.spec.Spec
+    spec: Any                                  # core.linkage.spec.Spec
     rpms: tuple[float, ...]
     masses: Any                                # MassProperties (None only without the loads)
     files: tuple[CourseFile, ...]
@@ -157,7 +157,7 @@ def plan_course(doc: Mapping[str, Any], keys: Collection[str], name: str, folder
     design = spec.design()
     masses = doc.get("masses")
     if masses is not None:
-        from .dynamics import masses_for_design
+        from core.forces.dynamics import masses_for_design
         masses = masses_for_design(design, masses)
     idle = masses.idle_fraction if masses is not None else 0.05
     drawn = {}

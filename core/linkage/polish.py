@@ -1,7 +1,7 @@
 """Searches inside brackets, vectorized over many brackets at once: a root, a maximum
 whose slope and curvature are known, and a minimum without a slope.
 
-Level-0 numerics (numpy only). :mod:`core.extrema` finds the brackets on a grid
+Level-0 numerics (numpy only). :mod:`core.linkage.extrema` finds the brackets on a grid
 and polishes them with these; the cut's switch angles, the metrics' closed-form
 peaks and the flywheel's energy extremes call :func:`bracket_root` directly. They
 stand apart from the grid work because each is a method with its own convergence

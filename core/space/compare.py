@@ -1,11 +1,11 @@
 """Comparing 2 to 6 designs at one crank speed: overlay curves and a figure table.
 
 Every number comes from the same core functions as ``shaper analyze`` and
-``shaper dynamics`` (through :func:`core.figures.figures`), evaluated at the
+``shaper dynamics`` (through :func:`core.space.figures.figures`), evaluated at the
 common speed. The table has one row per figure: each design's value, its
 difference from the first design (the reference) and which design is best.
 
-"Best" per figure (``better`` in :mod:`core.figures`):
+"Best" per figure (``better`` in :mod:`core.space.figures`):
 - lower is better: max |a| (inertia loads), max pressure angle (transmission),
   mean and max crank torque (drive size) and flywheel J_F;
 - no best: K, H, θ, the dimensions and the speeds. They are requirements or
@@ -24,13 +24,13 @@ from typing import Any, Iterator, Sequence
 
 import numpy as np
 
-from .dynamics import MassProperties, masses_for_design, solve_dynamics
-from .errors import DesignError
-from .io import csv_text, snap_zeros, zero_scale
+from core.forces.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.base.errors import DesignError
+from core.files.io import csv_text, snap_zeros, zero_scale
 from .figures import DESIGN_FIGURES, SPEED_FIGURES, TEXT_FIGURES, Figures, figures
-from .kinematics import angle_count, crank_angles, solve
-from .numtext import g10_rows
-from .spec import Spec
+from core.linkage.kinematics import angle_count, crank_angles, solve
+from core.files.numtext import g10_rows
+from core.linkage.spec import Spec
 
 MIN_DESIGNS, MAX_DESIGNS = 2, 6
 CURVE_COLUMNS = ("design", "crank_deg", "ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
@@ -213,7 +213,7 @@ def _number(value: Any) -> str:
 def table_csv(comparison: Comparison) -> str:
     """The figure table as CSV: figure, unit, better, one column per design, the
     differences from the first design, and the best design(s) separated by ``;``. The
-    designs' names are user text (:func:`core.io.csv_text`)."""
+    designs' names are user text (:func:`core.files.io.csv_text`)."""
     labels = comparison.labels
     names = [csv_text(label) for label in labels]
     out = _io.StringIO()
@@ -231,7 +231,7 @@ def table_csv(comparison: Comparison) -> str:
 
 def curves_csv(comparison: Comparison) -> str:
     """The overlay curves in long form, one row per (design, crank angle); round-off
-    zeros as 0 (:func:`core.io.snap_zeros`, over all designs of a column)."""
+    zeros as 0 (:func:`core.files.io.snap_zeros`, over all designs of a column)."""
     return "".join(curves_csv_chunks(comparison))
 
 
@@ -255,7 +255,7 @@ def curves_csv_chunks(comparison: Comparison, rows: int = 20_000) -> Iterator[st
 
 
 def _column_scale(curves: Sequence[np.ndarray]) -> float:
-    """:func:`core.io.zero_scale` of one column over all designs' curves (one at a time)."""
+    """:func:`core.files.io.zero_scale` of one column over all designs' curves (one at a time)."""
     return max((float(zero_scale(np.reshape(c, (-1, 1)))[0]) for c in curves), default=0.0)
 
 

@@ -21,9 +21,9 @@ from typing import Callable
 
 import numpy as np
 
-from .dynamics import MassProperties
-from .errors import DesignError
-from .spec import Spec
+from core.forces.dynamics import MassProperties
+from core.base.errors import DesignError
+from core.linkage.spec import Spec
 from .sweep import Evaluation, evaluate, tidy_values
 
 # objective → (what it minimizes, unit, needs loads)

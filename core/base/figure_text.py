@@ -4,7 +4,7 @@ The CLI's text tables, the report (which prints the CLI's rows), the Results pan
 the library and Compare tables and the drawing sheets all write a figure through
 ``figure_text``, so that one figure reads the same everywhere: θ = 33.653° in every
 place, not 33.6529° in one and 33.653° in another, K = 1.4599, not 1.45991 beside
-1.459905. CSV and JSON keep the full precision (``core.numtext``); the positions
+1.459905. CSV and JSON keep the full precision (``core.files.numtext``); the positions
 table has its own rule (five significant digits of a column's largest value), since a
 column of one quantity shares its decimals.
 

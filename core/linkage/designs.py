@@ -1,6 +1,6 @@
 """Many designs at once: link lengths as arrays, and the rules every design must pass.
 
-The lowest level of core, below :mod:`core.geometry`. ``geometry.synthesize``,
+The lowest level of core, below :mod:`core.linkage.geometry`. ``geometry.synthesize``,
 ``from_dimensions`` and ``validate`` run exactly these vectorized rules on one
 design, so a design in a sweep of a hundred thousand and the same design typed
 into the form are refused by the same rule, naming the same parameter, with the
@@ -15,8 +15,8 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from .arrays import sorted_unique
-from .errors import DesignError, range_text
+from core.base.arrays import sorted_unique
+from core.base.errors import DesignError, range_text
 from .extrema import grid_minimum
 from .verdict import Flat, Verdict, check_range, round_text
 
@@ -41,7 +41,7 @@ class Designs:
 
     Every length is an array; all of them broadcast to one shape (the
     designs' shape). ``rod`` is None for the block variant. The fields and
-    derived properties have the names and meanings of :class:`core.geometry.Design`,
+    derived properties have the names and meanings of :class:`core.linkage.geometry.Design`,
     so kinematics and dynamics take either.
     """
 
@@ -111,7 +111,7 @@ class Designs:
 
     @classmethod
     def of(cls, design) -> "Designs":
-        """One :class:`~core.geometry.Design` (or anything with its fields) as shape (1,)."""
+        """One :class:`~core.linkage.geometry.Design` (or anything with its fields) as shape (1,)."""
         one = lambda v: np.array([float(v)])  # noqa: E731
         return cls(one(design.crank), one(design.frame), one(design.lever), one(design.guide),
                    None if design.rod is None else one(design.rod), design.rod_side)
@@ -329,7 +329,7 @@ def drive_margin(d: Designs) -> np.ndarray:
     swing, so the rod's reach r = sqrt(L4² − d²) is smallest, and the margin
     can dip sharply, only there: the grid over ψ ∈ [−θ/2, θ/2] crowds toward
     those points. The smallest sample is then polished to the zero of the
-    margin's analytic slope (see :mod:`core.extrema`), so a narrow dip between
+    margin's analytic slope (see :mod:`core.linkage.extrema`), so a narrow dip between
     samples is not missed.
     """
     half = (d.theta / 2.0)[..., None]

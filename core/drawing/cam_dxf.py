@@ -17,12 +17,12 @@ import os
 
 import numpy as np
 
-from .cam import Cam
-from .cam.follower import pitch, profile
+from core.cam import Cam
+from core.cam.follower import pitch, profile
 from ezdxf import bbox
 
-from .drawing import dimensions as dims
-from .drawing.dxf import CENTER, OUTLINE, THIN, new_document, save_dxf, text_attribs
+from . import dimensions as dims
+from .dxf import CENTER, OUTLINE, THIN, new_document, save_dxf, text_attribs
 
 POINTS = 1440
 """Points of each closed curve (a quarter degree of cam angle apart)."""

@@ -1,9 +1,9 @@
 """The ram's φ-derivatives alone, up to the fourth: what the cycle's peaks are taken from.
 
-Just above :mod:`core.kinematics` (with the analysis), whose closed form (the lever's,
+Just above :mod:`core.linkage.kinematics` (with the analysis), whose closed form (the lever's,
 the tip's and the ram's terms) it differentiates once and twice more. The sweep samples these rates
 for ten thousands of designs and polishes their peaks by Newton's method
-(:mod:`core.metrics`), so they are split where designs can share them: the
+(:mod:`core.linkage.metrics`), so they are split where designs can share them: the
 lever tip's terms depend on L1, L2 and L3 only (:func:`tip_rates`), the ram's on
 the guide and the rod too (:func:`ram_rates`). :func:`rates_at` is both at once,
 the same arithmetic, so its result does not depend on the split.

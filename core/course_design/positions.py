@@ -20,15 +20,15 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from .designs import Designs
-from .dynamics import MassProperties, solve_dynamics
-from .cut import cut_window
-from .dynamics_io import dynamics_table
-from .errors import DesignError, require_finite
-from .geometry import Design
-from .io import curve_table, finite_or_none, snap_zeros, table_csv
-from .kinematics import solve
-from .metrics import cycle_peaks
+from core.linkage.designs import Designs
+from core.forces.dynamics import MassProperties, solve_dynamics
+from core.linkage.cut import cut_window
+from core.files.dynamics_io import dynamics_table
+from core.base.errors import DesignError, require_finite
+from core.linkage.geometry import Design
+from core.files.io import curve_table, finite_or_none, snap_zeros, table_csv
+from core.linkage.kinematics import solve
+from core.linkage.metrics import cycle_peaks
 
 DEFAULT_COUNT = 12
 MAX_COUNT = 3600
@@ -173,7 +173,7 @@ def table_rows(table: PositionTable) -> list[tuple[int | None, str]]:
 
 def table_records(table: PositionTable) -> list[dict[str, Any]]:
     """One JSON-ready object per row: position, name, then every column (NaN → null),
-    round-off zeros as 0 as in the CSV (:func:`core.io.snap_zeros`)."""
+    round-off zeros as 0 as in the CSV (:func:`core.files.io.snap_zeros`)."""
     out = []
     for (number, name), values in zip(table_rows(table), snap_zeros(table.data)):
         record: dict[str, Any] = {"position": number, "name": name}
@@ -196,7 +196,7 @@ def display_values(data: np.ndarray, columns: tuple[str, ...] = ()) -> np.ndarra
 
     With the table's ``columns``, the guide reaction shows where the ram bears: the
     resultant's offset where it falls on the guide, else (the ram tilts) the two forces
-    at the guide's ends (``core.guide``); the other is blank (NaN)."""
+    at the guide's ends (``core.forces.guide``); the other is blank (NaN)."""
     data = np.array(data, dtype=float)
     with np.errstate(invalid="ignore"):
         scale = np.nanmax(np.abs(data), axis=0, initial=0.0)

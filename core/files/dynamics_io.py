@@ -9,8 +9,8 @@ from typing import Any
 
 import numpy as np
 
-from .dynamics import GRAVITY, Dynamics, DynamicsSummary, MassProperties
-from .geometry import Design
+from core.forces.dynamics import GRAVITY, Dynamics, DynamicsSummary, MassProperties
+from core.linkage.geometry import Design
 from .io import finite_or_none, table_csv
 
 LEAD_COLUMNS = ("rpm", "crank_deg", "crank_torque_N_m", "power_W")

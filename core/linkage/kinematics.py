@@ -21,7 +21,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .designs import Designs
-from .errors import DesignError, require_range
+from core.base.errors import DesignError, require_range
 from .geometry import Design
 
 MIN_RPM = 0.01
@@ -148,7 +148,7 @@ def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
 def shape(design: Design | Designs, phi: np.ndarray) -> Shape:
     """Closed-form positions and φ-derivatives for all ``phi`` at once.
 
-    ``design`` is one :class:`Design` or many :class:`~core.designs.Designs`
+    ``design`` is one :class:`Design` or many :class:`~core.linkage.designs.Designs`
     whose length arrays broadcast against ``phi`` (give designs of shape
     (d, 1) and angles (n,) or (d, n) for (d, n) results).
     """

@@ -2,7 +2,7 @@
 its ends when the resultant's line of action falls outside it.
 
 The guide's normal forces on the ram reduce to a resultant N (up +) and a moment M
-about the ram joint C (:mod:`core.dynamics`). Their line of action is x = M/N from C.
+about the ram joint C (:mod:`core.forces.dynamics`). Their line of action is x = M/N from C.
 A guide has a length, though: the column's ways, of length L_g, fixed in the frame and
 centred on the mid-travel of C. Where M/N lies on the ways, the ram bears there.
 Where it does not (a small N, such as the ram's weight alone, against a large moment
@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .kinematics import ram_origin
+from core.linkage.kinematics import ram_origin
 
 MM = 1e-3
 ROUND_OFF = 1e-9

@@ -1,11 +1,11 @@
 """Kinetostatics of the shaper: joint forces, crank torque and power at each crank angle.
 
 The values over a cycle (peak torque, energy fluctuation, flywheel) are in
-:mod:`core.flywheel`, which integrates what this module solves.
+:mod:`core.forces.flywheel`, which integrates what this module solves.
 
 A level beside ``metrics``: it imports ``geometry`` and ``kinematics`` only.
 The crank turns at constant speed ω, so every acceleration is ω² times a
-closed-form second derivative from :func:`core.kinematics.shape` and every
+closed-form second derivative from :func:`core.linkage.kinematics.shape` and every
 inertia load is ω²·(speed-independent shape) — nothing is differenced.
 
 The joint forces solve the Newton–Euler equations of each link. The chain
@@ -27,11 +27,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .cut import cutting_force
-from .errors import DesignError, require_range
-from .geometry import MAX_LENGTH_MM, Design
+from core.linkage.cut import cutting_force
+from core.base.errors import DesignError, require_range
+from core.linkage.geometry import MAX_LENGTH_MM, Design
 from .guide import end_forces, guide_ends
-from .kinematics import Shape, check_request, check_rpms, rpm_to_omega, shape
+from core.linkage.kinematics import Shape, check_request, check_rpms, rpm_to_omega, shape
 from .rotors import MAX_INERTIA_KG_M2, check_rotors, reduced_inertia
 
 GRAVITY = 9.81               # m/s², acting toward −y
@@ -90,7 +90,7 @@ class MassProperties:
     guide_length_mm: float | None = None
     """Length of the ram's guide (the column's ways), mm, centred on the mid-travel of the
     ram joint C; None = the stroke H. Where the guide's resultant falls outside it, the ram
-    tilts and bears on its two ends (:mod:`core.guide`)."""
+    tilts and bears on its two ends (:mod:`core.forces.guide`)."""
 
     def __post_init__(self) -> None:
         def put(name: str, value: object) -> None:
@@ -242,7 +242,7 @@ class Dynamics:
     """x of the resultant guide normal force relative to C (= guide_moment/guide_normal),
     (m, n) mm; NaN where the resultant is zero (the guide then carries a pure couple)."""
     guide_rear_mm: np.ndarray
-    """x of the guide's rear end relative to C, (n,) mm (:func:`core.guide.guide_ends`)."""
+    """x of the guide's rear end relative to C, (n,) mm (:func:`core.forces.guide.guide_ends`)."""
     guide_front_mm: np.ndarray
     """x of the guide's front end relative to C, (n,) mm."""
     guide_rear_N: np.ndarray
