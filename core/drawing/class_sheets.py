@@ -12,7 +12,8 @@ from typing import Any, Mapping, Sequence
 
 from .mechanism import bounds, frame_items, joint_anchors, links_at
 from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, marked_text,
-                    standard_scale, table)
+                    standard_scale)
+from .cells import table
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
 A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)

@@ -34,8 +34,9 @@ from .dxf import OUTLINE
 from .labels import Room
 from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (Box, Item, Paper, Sheet, Text, fit, frame_items, number_text, scale_text, standard_scale,
-                    symbol, table)
+from .sheet import (Box, Item, Paper, Sheet, Text, fit, frame_items, number_text, scale_text,
+                    standard_scale, symbol)
+from .cells import table
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {

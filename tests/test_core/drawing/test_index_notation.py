@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 
 from core.cam import CamInputs, Program, design_cam
 from core.drawing import cam_sheet, forces, motion
-from core.drawing.sheet import Text, cell_text, marked, paper, table
+from core.drawing.sheet import Text, marked, paper
+from core.drawing.cells import cell_text, table
 from core.forces.dynamics import MassProperties, masses_for_design
 from core.linkage.geometry import synthesize
 
