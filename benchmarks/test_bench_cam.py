@@ -4,7 +4,7 @@ Run with ``pytest benchmarks/test_bench_cam.py --benchmark-enable -n 0``.
 """
 from core.cam import CamInputs, Program, design_cam
 from core.cam import extremes
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 
 def test_cam_synthesis_timed_against_the_linkage(benchmark):

@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from core.kinematics import MIN_STEP_DEG
+from core.linkage.kinematics import MIN_STEP_DEG
 
 TARGET_MB = 600.0
 CAM = ["--arm", "120", "--swing", "15", "--pressure", "40", "--rise", "60", "--dwell", "10",

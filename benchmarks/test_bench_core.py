@@ -9,9 +9,9 @@ import sys
 
 import numpy as np
 
-from core.geometry import synthesize
-from core.kinematics import solve
-from core.metrics import analyze
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import solve
+from core.linkage.metrics import analyze
 
 ANGLES = np.radians(np.linspace(0, 360, 3601))
 RPMS = [30, 40, 60, 80]
@@ -74,24 +74,24 @@ def test_cli_csv_36001_angles_2_speeds_block(benchmark, tmp_path):
 
 
 def _curve_table_36001_2():
-    from core.io import curve_table
+    from core.files.io import curve_table
     motion = solve(synthesize(100, 1.4, 300), np.radians(np.linspace(0, 360, 36001)), [40, 60])
     return curve_table(motion)
 
 
 def test_csv_text_of_curves_72002_rows(benchmark):
     """Issue 24: the text of ``shaper curves``' table (block variant, 72 002 rows × 11
-    columns) as core.io writes it, the vectorized "%.10g" of core.numtext."""
-    from core.io import table_csv
+    columns) as core.files.io writes it, the vectorized "%.10g" of core.files.numtext."""
+    from core.files.io import table_csv
     names, data = _curve_table_36001_2()
     text = benchmark.pedantic(table_csv, args=(names, data), rounds=5, iterations=1)
     assert text.count("\n") == 72003
 
 
 def test_csv_text_of_curves_72002_rows_python_percent(benchmark):
-    """The same numbers with Python's % per block of rows, as core.io wrote them before
+    """The same numbers with Python's % per block of rows, as core.files.io wrote them before
     issue 24: the comparison for the row above."""
-    from core.io import snap_zeros
+    from core.files.io import snap_zeros
     names, data = _curve_table_36001_2()
 
     def python_text():

@@ -7,10 +7,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties
-from core.geometry import synthesize
-from core.polygons import polygons
-from core.positions import position_table, positions
+from core.forces.dynamics import MassProperties
+from core.linkage.geometry import synthesize
+from core.forces.polygons import polygons
+from core.course_design.positions import position_table, positions
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                        cut_force_N=7000.0, cut_height_mm=80.0)

@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties, solve_dynamics
-from core.geometry import synthesize
+from core.forces.dynamics import MassProperties, solve_dynamics
+from core.linkage.geometry import synthesize
 
 ANGLES = np.linspace(0.0, 2.0 * np.pi, 3601)
 RPMS = [20.0, 40.0, 60.0, 80.0]

@@ -118,7 +118,7 @@ def test_the_reports_longest_slice(benchmark, qtbot, tmp_path):
     """The report of 16 speeds written as File › Export report writes it: the time between
     two of its progress steps is how long the window waits to repaint or to hear Cancel
     (the longest and the total go into extra_info)."""
-    from core.progress import Progress
+    from core.base.progress import Progress
     from shaperapp.report.dialog import export_report
     model = DesignModel()
     model.set_rpms(SPEEDS if not benchmark.disabled else SPEEDS[:2])

@@ -11,9 +11,9 @@ from dataclasses import replace
 
 import pytest
 
-from core.dynamics import MassProperties
+from core.forces.dynamics import MassProperties
 from core.library import Library
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 ENTRIES = 10_000
 TARGET_S = 0.100

@@ -96,7 +96,7 @@ PANE = textwrap.dedent("""
 
 def test_pane_with_50_mb_of_notes(benchmark, tmp_path):
     from core.library import Library
-    from core.spec import Spec
+    from core.linkage.spec import Spec
     path = tmp_path / "L.sqlite"
     with Library(path) as lib:
         lib.add("big", {"spec": Spec(), "rpm": [40.0], "step_deg": 1.0, "masses": None}, notes="n" * 50_000_000)

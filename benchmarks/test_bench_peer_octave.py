@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from core.geometry import synthesize
+from core.linkage.geometry import synthesize
 
 pytestmark = pytest.mark.slow
 

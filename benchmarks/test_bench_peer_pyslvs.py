@@ -11,7 +11,7 @@ the numpy we use. Each round runs
 ``peers/pyslvs_positions.py`` in that interpreter, which poses our rod-variant default
 design (the one of ``test_bench_core.py``'s rod rows) in pyslvs and times its solve of
 the 3 601 crank angles' positions in its own process, then times
-``core.kinematics.solve`` (3 601 angles × 4 speeds, every quantity) here, the previous
+``core.linkage.kinematics.solve`` (3 601 angles × 4 speeds, every quantity) here, the previous
 result held as the GUI's model holds it and dropped at once, as
 ``test_bench_core.py`` does. The test asserts that pyslvs's joint positions (crank pin,
 lever tip, ram joint) equal ours to 1e-9 mm; nothing about speed.
@@ -33,8 +33,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from core.geometry import synthesize
-from core.kinematics import shape, solve
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import shape, solve
 
 PEER = Path(__file__).resolve().parent / "peers" / "pyslvs_positions.py"
 ANGLES = np.radians(np.linspace(0, 360, 3601))

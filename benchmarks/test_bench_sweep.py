@@ -10,10 +10,10 @@ import math
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties
-from core.metrics import analyze
-from core.spec import Spec
-from core.sweep import evaluate
+from core.forces.dynamics import MassProperties
+from core.linkage.metrics import analyze
+from core.linkage.spec import Spec
+from core.space.sweep import evaluate
 
 COUNT = 100_000
 LOOP = 300
@@ -87,7 +87,7 @@ def test_sweep_2500_designs_with_loads(benchmark):
 
 def test_summarize_one_design_4_speeds(benchmark):
     """The dynamics summary the GUI recomputes on every edit (exact torque peaks included)."""
-    from core.flywheel import summarize
+    from core.forces.flywheel import summarize
 
     design = SPEC_ROD.design()
     masses = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,

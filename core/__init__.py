@@ -1,8 +1,10 @@
-"""Headless engine of the shaper designer: synthesis, kinematics, metrics, files.
+"""Headless engine of the shaper designer: one package per concern, never Qt.
 
-Levels, each importing only those before it: ``geometry`` (lengths, synthesis)
-→ ``kinematics`` (closed-form motion) → ``metrics`` (measured cycle values) →
-``spec``/``io`` (what the user states, files) → ``cli``. Never imports Qt.
+Floors, each importing only those below it (the layers contract in pyproject.toml):
+``base`` (errors, small helpers) → ``linkage`` (synthesis, kinematics, the measured
+cycle) → ``forces`` (kinetostatics, flywheel) | ``cam`` | ``gear`` → ``files`` (design
+files, CSV/JSON, safe writes) → ``space`` (sweep, optimum, comparison) | ``course_design``
+(positions table, export plan) → ``drawing`` | ``library`` → ``cli``.
 
 The names below are imported when first used (``core.analyze``), not with the
 package: every ``shaper`` command imports ``core`` first, and ``shaper curves``
@@ -12,10 +14,11 @@ from __future__ import annotations
 
 from importlib import import_module
 
-_HOMES = {"DesignError": "errors", "FileFormatError": "errors", "Design": "geometry",
-          "from_dimensions": "geometry", "synthesize": "geometry", "Motion": "kinematics",
-          "crank_angles": "kinematics", "solve": "kinematics", "CycleMetrics": "metrics",
-          "analyze": "metrics", "Spec": "spec"}
+_HOMES = {"DesignError": "base.errors", "FileFormatError": "base.errors",
+          "Design": "linkage.geometry", "from_dimensions": "linkage.geometry",
+          "synthesize": "linkage.geometry", "Motion": "linkage.kinematics",
+          "crank_angles": "linkage.kinematics", "solve": "linkage.kinematics",
+          "CycleMetrics": "linkage.metrics", "analyze": "linkage.metrics", "Spec": "linkage.spec"}
 
 __all__ = ["Design", "DesignError", "FileFormatError", "Motion", "CycleMetrics", "Spec",
            "analyze", "crank_angles", "from_dimensions", "solve", "synthesize"]

@@ -50,7 +50,7 @@ def main(argv: list[str] | None = None) -> int:
     # (Qt's classes, pyqtgraph, the window), and the automatic collections among them
     # cost 35-55 ms before the first paint, a full one alone 15-25 ms.
     gc.disable()
-    from core.blas import limit_blas_threads
+    from core.base.blas import limit_blas_threads
     limit_blas_threads()
     _import_engine_first()
     from PySide6.QtCore import QSettings, QTimer
@@ -121,13 +121,13 @@ def _import_engine_first() -> None:
     hundred-odd modules imported before it skip that."""
     import core.cam  # noqa: F401  (the cam's model, which Save writes)
     import core.cam.file  # noqa: F401
-    import core.dynamics_io  # noqa: F401
-    import core.figure_text  # noqa: F401  (the Results panel's one precision per figure)
-    import core.flywheel  # noqa: F401
+    import core.files.dynamics_io  # noqa: F401
+    import core.base.figure_text  # noqa: F401  (the Results panel's one precision per figure)
+    import core.forces.flywheel  # noqa: F401
     import core.gear.file  # noqa: F401  (the gear's model, which Save writes)
-    import core.io  # noqa: F401  (core, numpy, the design files)
-    import core.metrics  # noqa: F401  (the results panel's cycle figures)
-    import core.polygons  # noqa: F401
+    import core.files.io  # noqa: F401  (core, numpy, the design files)
+    import core.linkage.metrics  # noqa: F401  (the results panel's cycle figures)
+    import core.forces.polygons  # noqa: F401
 
 
 def _when_painted(window, callback) -> None:

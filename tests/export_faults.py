@@ -5,7 +5,7 @@ process never reaches the child; these apply theirs inside it."""
 import os
 import time
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 
 
 def in_child(monkeypatch, where: str, job) -> None:

@@ -8,9 +8,9 @@ spent inside write transactions (where a kill should hurt most).
 import sys
 from dataclasses import replace
 
-from core.dynamics import MassProperties
+from core.forces.dynamics import MassProperties
 from core.library import Library
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 
 def main() -> int:

@@ -86,3 +86,29 @@ def test_no_import_cycle_in_the_whole_tree():
     and shaperapp import each other, directly or round a longer loop, by any import."""
     assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
     assert _cycles(_import_graph()) == []
+
+
+def test_core_root_holds_the_entry_points_and_packages_only():
+    """Issue 43: core's concerns are packages a newcomer finds from the tree, not ~30 modules
+    at its root; each package's docstring opens with what it holds."""
+    import ast
+    root = ROOT / "core"
+    assert sorted(p.name for p in root.glob("*.py")) == ["__init__.py", "__main__.py", "version.py"]
+    for init in sorted(root.glob("*/__init__.py")):
+        doc = ast.get_docstring(ast.parse(init.read_text(encoding="utf-8")))
+        assert doc and doc.splitlines()[0].strip(), f"{init.parent.name}: no docstring"
+
+
+# Over the limit, with the reason they still are: each is named so that it cannot grow unseen.
+LONG_MODULES = {
+    "core/forces/dynamics.py": "being reworked on another branch (issue 43); to be split there",
+    "shaperapp/plots/stack.py": "not split yet (issue 43, item 3)",
+}
+
+
+def test_every_module_about_400_lines_at_most():
+    """Issue 43, item 3: a module holds one purpose, at most about 400 lines (420 here)."""
+    long = {str(p.relative_to(ROOT)): n for package in ("core", "shaperapp")
+            for p in (ROOT / package).rglob("*.py")
+            if (n := len(p.read_text(encoding="utf-8").splitlines())) > 420}
+    assert sorted(long) == sorted(LONG_MODULES), long

@@ -92,7 +92,7 @@ def main(path: str) -> int:
     phi = np.load(request["angles"])
     theta = 2.0 * math.asin(request["crank"] / request["frame"])
     # φ = 0 at the limit position that begins the cut; the crank turns clockwise, so its
-    # direction from +x is β = π + θ/2 − φ (as core.kinematics.shape poses it).
+    # direction from +x is β = π + θ/2 − φ (as core.linkage.kinematics.shape poses it).
     betas = [math.pi + theta / 2.0 - p for p in phi.tolist()]
     degrees = [math.degrees(b) for b in betas]
     vpoints = expression(request, betas[0])

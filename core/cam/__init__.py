@@ -7,8 +7,8 @@ radius, solved; ``synthesis`` the smallest base radius and the largest roller;
 ``build`` whether it clears its hub and the follower pivot's boss; ``table`` its rows per cam
 angle and its figures; ``file`` its inputs in a design file.
 
-Level: its own, just above the analysis level (it times the feed against ``core.cut``);
-it imports the analysis and mechanism levels only. Its DXF is ``core.cam_drawing``.
+Level: its own, just above the analysis level (it times the feed against ``core.linkage.cut``);
+it imports the analysis and mechanism levels only. Its DXF is ``core.drawing.cam_dxf``.
 """
 from __future__ import annotations
 

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .follower import Follower
 from .laws import Program
 from .synthesis import Allowance, within_allowance

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..errors import DesignError, require_range
+from core.base.errors import DesignError, require_range
 from .extremes import min_convex_radius, pressure_peaks
 from .follower import Follower, check_follower
 from .laws import Program

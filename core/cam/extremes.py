@@ -2,11 +2,11 @@
 of the return, and the pitch curve's smallest convex radius of curvature.
 
 A grid of each phase only brackets them; they are polished as the linkage's peaks are
-(``core.extrema``). The pressure angle has a closed-form slope (it needs ψ, ψ′ and ψ″ only),
+(``core.linkage.extrema``). The pressure angle has a closed-form slope (it needs ψ, ψ′ and ψ″ only),
 so its largest value is the zero of that slope, found by a bracketed root search
-(:func:`core.extrema.grid_argmax`); the synthesis imposes the allowance there too
+(:func:`core.linkage.extrema.grid_argmax`); the synthesis imposes the allowance there too
 (``synthesis``). The curvature's slope would need ψ‴ and the pitch curve's third derivative,
-so the curvature is polished without a slope (:func:`core.extrema.piece_maximum`, Brent's
+so the curvature is polished without a slope (:func:`core.linkage.extrema.piece_maximum`, Brent's
 parabolic steps), on each piece where the law's acceleration is smooth, both one-sided values
 at a jump counting (the parabolic law's middle, the phases' ends). The largest curvature,
 not the smallest radius, is sought: it stays finite where the curve turns from convex to
@@ -23,7 +23,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..extrema import grid_argmax, piece_maximum
+from core.linkage.extrema import grid_argmax, piece_maximum
 from .follower import TURN, Follower, pitch_of_motion
 from .laws import Motion, Program, law, law_piece, pieces
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .cam import CamInputs
 from .laws import Program
 from .timing import check_phase

@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .laws import Motion, Program
 
 TURN = -1

@@ -14,7 +14,7 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 
-from ..errors import DesignError, require_range
+from core.base.errors import DesignError, require_range
 
 LAWS = ("parabolic", "cosine", "sine", "poly345")
 MIN_SWING_DEG, MAX_SWING_DEG = 1.0, 60.0

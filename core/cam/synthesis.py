@@ -23,7 +23,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .extremes import PHASES, SIGNS, PressurePeaks, phase_motion, pressure_peaks
 from .follower import TURN, Follower
 from .laws import Program, law

@@ -2,7 +2,7 @@
 
 The cam is keyed to the crank, so the cam angle is δ = φ − φ0 with φ0 the crank angle at
 which the rise begins (the phase). The table may only move while the tool is clear of the
-work, i.e. outside the closed cut window of ``core.cut``. The rise, the outer dwell and the
+work, i.e. outside the closed cut window of ``core.linkage.cut``. The rise, the outer dwell and the
 return together must fit in the rest of the turn; by default they are centred in it, so the
 feed has the same margin before and after the cut.
 """
@@ -11,9 +11,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..cut import cut_window
-from ..designs import Designs
-from ..errors import DesignError, require_range
+from core.linkage.cut import cut_window
+from core.linkage.designs import Designs
+from core.base.errors import DesignError, require_range
 from .laws import Program
 
 
@@ -41,7 +41,7 @@ def check_phase(phase_deg: object) -> float:
 
 
 def timing(program: Program, design, idle_fraction: float, phase_deg: float | None = None) -> Timing:
-    """Place the feed outside the cut of ``design`` (a ``core.geometry.Design``), centred in
+    """Place the feed outside the cut of ``design`` (a ``core.linkage.geometry.Design``), centred in
     the non-cutting span, or check the given ``phase_deg``; DesignError names ``rise`` when
     the feed cannot fit, ``phase`` when the given phase would feed during the cut."""
     on, off = (math.degrees(float(v[0])) for v in cut_window(Designs.of(design), idle_fraction))

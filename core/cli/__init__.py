@@ -26,11 +26,11 @@ from importlib import import_module
 from types import ModuleType
 from typing import Sequence
 
-from ..blas import limit_blas_threads
+from core.base.blas import limit_blas_threads
 
 limit_blas_threads()        # before numpy, which .common imports
 
-from ..errors import DesignError, FileFormatError  # noqa: E402
+from core.base.errors import DesignError, FileFormatError  # noqa: E402
 from .common import Parser, UsageError, VersionAction, design_error_text, fail  # noqa: E402
 from .common import _NEGATIVE_NUMBER as _NEGATIVE  # noqa: E402  (argparse's idea of a number)
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output  # noqa: E402

@@ -13,8 +13,8 @@ import io
 from importlib import import_module
 from typing import Any, Mapping, Sequence
 
-from ..figure_text import figure_text
-from ..io import csv_text
+from core.base.figure_text import figure_text
+from core.files.io import csv_text
 
 COMMANDS = ("synth", "analyze", "dynamics", "cam", "gear")
 
@@ -70,7 +70,7 @@ PER_SPEED = (("v_work_max", "m/s", ("analyze", "v_work_max_m_s")),
              ("J_F", "kg·m²", ("dynamics", "flywheel_inertia_kg_m2")))
 
 
-# each column's kind of figure (``core.figure_text``): the answer key's PDF writes a figure
+# each column's kind of figure (``core.base.figure_text``): the answer key's PDF writes a figure
 # exactly as the report and ``shaper synth/analyze/dynamics/cam/gear`` print it
 KINDS = {"theta": "angle", "L1": "length", "L2": "length", "L3": "length", "L4": "length",
          "h": "length", "K": "ratio", "H": "length", "r0": "length", "a_cam": "length",
@@ -124,7 +124,7 @@ def key_values(entry: Mapping[str, Any], group: str, speeds: int) -> list[Any]:
 
 def key_csv(entries: Sequence[Mapping[str, Any]], groups: Sequence[str]) -> str:
     """answer-key.csv: one row per student, numbers at full precision, text guarded as
-    every CSV of the tool guards it (``core.io.csv_text``: as a whole and per name)."""
+    every CSV of the tool guards it (``core.files.io.csv_text``: as a whole and per name)."""
     speeds = speed_count(entries)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")

@@ -4,10 +4,10 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..figure_text import figure_text
-from ..geometry import Design
-from ..io import finite_or_none
-from ..metrics import CycleMetrics, SpeedMetrics, analyze
+from core.base.figure_text import figure_text
+from core.linkage.geometry import Design
+from core.files.io import finite_or_none
+from core.linkage.metrics import CycleMetrics, SpeedMetrics, analyze
 from .cmd_synth import design_summary
 from .common import add_design_options, add_speed_options, design_from_args, rpms_from_args
 from .output import print_json, print_table

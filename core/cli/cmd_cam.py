@@ -7,8 +7,8 @@ from ..cam import LAWS, Cam, CamInputs, Program, design_cam
 from ..cam.cam import RETURN_PRESSURE_DEG
 from ..cam.file import cam_from_dict, cam_to_dict
 from ..cam.table import cam_summary, cam_table, follower_peaks
-from ..errors import DesignError
-from ..kinematics import MAX_RPM, MIN_RPM, crank_angles
+from core.base.errors import DesignError
+from core.linkage.kinematics import MAX_RPM, MIN_RPM, crank_angles
 from .common import (UsageError, add_design_options, design_error_text, design_file,
                      design_from_args, number)
 from .output import OutputError, print_json, print_table
@@ -235,7 +235,7 @@ def run(args: argparse.Namespace) -> int:
         write_table("--csv", args.csv, "computing the cam", lambda delta, n: cam_table(cam, delta, n),
                     angles, [rpm])
     if args.dxf is not None:
-        from ..cam_drawing import write_cam_dxf     # ezdxf: only when a drawing is asked for
+        from core.drawing.cam_dxf import write_cam_dxf     # ezdxf: only when a drawing is asked for
         try:
             write_cam_dxf(cam, args.dxf)
         except OSError as exc:          # a WriteError: names the user's path and a plain reason

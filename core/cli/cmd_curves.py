@@ -5,8 +5,8 @@ import argparse
 
 import numpy as np
 
-from ..io import curve_table
-from ..kinematics import solve
+from core.files.io import curve_table
+from core.linkage.kinematics import solve
 from .common import (add_angle_options, add_design_options, add_speed_options, design_from_args,
                      request_from_args)
 from .streaming import write_table

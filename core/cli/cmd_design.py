@@ -15,8 +15,8 @@ import json
 from dataclasses import replace
 from typing import Any
 
-from ..errors import DesignError
-from ..spec import Spec
+from core.base.errors import DesignError
+from core.linkage.spec import Spec
 from .common import (UsageError, add_design_options, add_load_options, add_speed_options,
                      design_error_text, design_file, given_text, number, rpms_from_args,
                      spec_from_args, spec_option)
@@ -57,7 +57,7 @@ def configure(parser: argparse.ArgumentParser, output: bool = True) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..io import atomic_write
+    from core.files.io import atomic_write
     from .output import OutputError, check_target
     check_target("--output", args.output)
     text = design_text(document_from_args(args))
@@ -70,7 +70,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def design_text(doc: dict[str, Any]) -> str:
-    """A design document as the GUI's Save writes it (``core.io.save_design``)."""
+    """A design document as the GUI's Save writes it (``core.files.io.save_design``)."""
     return json.dumps(doc, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 
@@ -78,9 +78,9 @@ def document_from_args(args: argparse.Namespace) -> dict[str, Any]:
     """The design file the options describe over ``--design``: every value checked as the
     subcommand that uses it checks it (UsageError or DesignError naming the option), and
     the whole read back by the design file's reader."""
-    from ..design_file import masses_to_dict, parse_design
-    from ..io import design_document
-    from ..kinematics import angle_count, check_rpms
+    from core.files.design_file import masses_to_dict, parse_design
+    from core.files.io import design_document
+    from core.linkage.kinematics import angle_count, check_rpms
     base = design_file(args) or {}
     spec = layered_spec(args)
     design = _design(spec, args)

@@ -5,12 +5,12 @@ import argparse
 
 import numpy as np
 
-from ..figure_text import figure_text
-from ..dynamics import DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics
+from core.base.figure_text import figure_text
+from core.forces.dynamics import DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics
 
-from ..flywheel import summarize
-from ..geometry import Design
-from ..dynamics_io import dynamics_table, summary_document
+from core.forces.flywheel import summarize
+from core.linkage.geometry import Design
+from core.files.dynamics_io import dynamics_table, summary_document
 from .cmd_synth import design_summary
 from .common import (UsageError, add_angle_options, add_design_options, add_load_options, add_speed_options,
                      design_from_args, request_from_args)

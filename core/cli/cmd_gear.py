@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from ..gear import GearPair, GearPairInputs, design_pair
 from ..gear.file import gear_from_dict, gear_to_dict
 from ..gear.table import gear_summary, summary_csv, summary_rows

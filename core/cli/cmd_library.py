@@ -2,7 +2,7 @@
 
 One subcommand with its own sub-subcommands (add, list, show, remove, rename,
 export, import, compare, backup, refresh, check); every one takes ``--library PATH`` (or
-``$SHAPER_LIBRARY``). The work is in ``core.library*`` and ``core.compare``;
+``$SHAPER_LIBRARY``). The work is in ``core.library*`` and ``core.space.compare``;
 this module only parses, calls and prints.
 """
 from __future__ import annotations
@@ -22,11 +22,11 @@ from core.library.query import QueryError
 from core.library.backup import backup_copy
 from core.library.store import ENV_VAR, LibraryError
 
-from ..compare import value_text
-from ..errors import FileFormatError, os_reason
-from ..figures import DESIGN_FIGURES, SPEED_FIGURES
-from ..kinematics import check_rpms, crank_angles
-from ..text import terminal_text
+from core.space.compare import value_text
+from core.base.errors import FileFormatError, os_reason
+from core.space.figures import DESIGN_FIGURES, SPEED_FIGURES
+from core.linkage.kinematics import check_rpms, crank_angles
+from core.base.text import terminal_text
 from ..library import Entry, Library
 from .cmd_library_check import check_options, run_check
 from .cmd_library_compare import compare_options, run_compare

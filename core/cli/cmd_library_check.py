@@ -11,7 +11,7 @@ from typing import Callable
 
 from ..library import Library
 from ..library.store import LibraryError
-from ..text import terminal_text
+from core.base.text import terminal_text
 from .output import print_json
 
 

@@ -1,5 +1,5 @@
 """``shaper library compare``: 2 to 6 designs (library entries and design files) side
-by side at one speed, as a table of figures and overlay curves (``core.compare``).
+by side at one speed, as a table of figures and overlay curves (``core.space.compare``).
 
 ``load_candidates`` is shared with ``shaper report --compare``.
 """
@@ -10,10 +10,10 @@ from typing import Sequence
 
 from core.library.names import file_stem, unique_name
 
-from ..compare import (Candidate, compare, comparison_json, curves_csv_chunks, difference_text, table_csv,
+from core.space.compare import (Candidate, compare, comparison_json, curves_csv_chunks, difference_text, table_csv,
                        value_text)
-from ..errors import DesignError, FileFormatError
-from ..io import load_design
+from core.base.errors import DesignError, FileFormatError
+from core.files.io import load_design
 from ..library import Library
 from .common import UsageError, library_path, note_read_only, number
 from .output import write_output

@@ -14,9 +14,9 @@ from typing import Callable
 from core.library.open import library_exists
 from core.library.query import QueryError, parse_filter, sort_sql
 
-from ..figures import FIGURES_VERSION
+from core.space.figures import FIGURES_VERSION
 from ..library import Library
-from ..text import terminal_text
+from core.base.text import terminal_text
 from .common import UsageError, library_path, number, whole_number
 from .output import print_json
 

@@ -2,7 +2,7 @@
 
 A library keeps each entry's key figures so that it can list and sort without
 recomputing; each entry also keeps which computation made them
-(``core.figures.FIGURES_VERSION``). After an update that computes a figure
+(``core.space.figures.FIGURES_VERSION``). After an update that computes a figure
 differently, ``refresh`` recomputes the older entries from their stored designs
 (``Library.refresh_figures``); ``--all`` or names recompute those entries anyway.
 """

@@ -4,10 +4,10 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..errors import DesignError
-from ..geometry import Design
-from ..optimize import OBJECTIVES, Optimum, no_gain_text, on_bounds, optimize
-from ..sweep import PARAMETERS, Evaluation
+from core.base.errors import DesignError
+from core.linkage.geometry import Design
+from core.space.optimize import OBJECTIVES, Optimum, no_gain_text, on_bounds, optimize
+from core.space.sweep import PARAMETERS, Evaluation
 from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
 from .common import add_design_options, add_load_options, add_speed_options

@@ -9,10 +9,10 @@ from typing import Any, Callable, Iterator
 
 import numpy as np
 
-from ..errors import DesignError
-from ..numtext import g10_rows
-from ..spec import Spec
-from ..sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
+from core.base.errors import DesignError
+from core.files.numtext import g10_rows
+from core.linkage.spec import Spec
+from core.space.sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
 from .common import (add_design_options, add_load_options, add_speed_options, design_error_text,
                      number, option_name, rpms_from_args, spec_from_args, spec_option)
 from .loads import loads_given, masses_from_args
@@ -151,7 +151,7 @@ def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
     """CSV lines (no header) of the designs in ``ev``; empty cells where undefined.
 
     The numbers of a row are formatted together, by the vectorized "%.10g" of
-    ``core.numtext``; only the joins with the text columns are per row."""
+    ``core.files.numtext``; only the joins with the text columns are per row."""
     valid = np.where(ev.valid.reshape(-1), "true", "false")
     why = [_quote(r) if r else r for r in reasons(ev, option)]    # "" for a valid design
     if not valid.size:

@@ -5,8 +5,8 @@ import argparse
 import math
 from typing import Any, Mapping
 
-from ..figure_text import figure_text
-from ..geometry import Design
+from core.base.figure_text import figure_text
+from core.linkage.geometry import Design
 from .common import add_design_options, design_from_args
 from .output import print_json, print_table
 

@@ -3,16 +3,16 @@ from __future__ import annotations
 
 import argparse
 
-from ..dynamics import MassProperties
-from ..geometry import Design
-from ..positions import (DEFAULT_COUNT, PositionTable, position_table, positions, positions_csv,
+from core.forces.dynamics import MassProperties
+from core.linkage.geometry import Design
+from core.course_design.positions import (DEFAULT_COUNT, PositionTable, position_table, positions, positions_csv,
                          table_records, text_groups)
 from .common import (UsageError, add_design_options, add_load_options, add_speed_options,
                      design_from_args, number, number_list, rpms_from_args)
 from .loads import masses_or_none
 from .output import print_json, write_output
 
-# Which side of a switch a row at the cut's start or end shows (core.cut's rule).
+# Which side of a switch a row at the cut's start or end shows (core.linkage.cut's rule).
 CUT_NOTE = ("cut_start and cut_end rows show the cutting side: the cut includes its ends "
             "(with --idle 0, both limit positions)")
 HELP = "kinematics and forces at the 12 (or N) crank positions and the special positions"

@@ -17,12 +17,12 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DesignError, long_integer_text
-from ..geometry import Design
-from ..io import load_design
-from ..kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
+from core.base.errors import DesignError, long_integer_text
+from core.linkage.geometry import Design
+from core.files.io import load_design
+from core.linkage.kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
                           check_angles, check_request, crank_angles)
-from ..spec import Spec
+from core.linkage.spec import Spec
 from ..version import version_text
 
 DEFAULT_RPMS = ("40", "60")
@@ -317,7 +317,7 @@ def spec_option(parameter: str, spec: Spec, args: argparse.Namespace) -> str:
 
 def request_from_args(args: argparse.Namespace) -> tuple[np.ndarray, list[float]]:
     """The crank angles (rad) and speeds of a table, refused with the angle option if it
-    would hold more than ``core.kinematics.MAX_SAMPLES`` samples."""
+    would hold more than ``core.linkage.kinematics.MAX_SAMPLES`` samples."""
     rpms = rpms_from_args(args)
     angles = angles_from_args(args)
     if args.angles is not None:

@@ -1,7 +1,7 @@
 """Pieces of a long output made on every core, written in order by this process.
 
 Why: a large CSV from ``shaper curves`` or ``shaper dynamics`` is computed and
-formatted block by block, and formatting alone (``core.numtext``) is most of a
+formatted block by block, and formatting alone (``core.files.numtext``) is most of a
 run. The blocks are independent, so forked copies of this process make every
 other block while this one makes the rest and writes all of them, in order.
 The text is the same as one process makes (each block's text is a pure function

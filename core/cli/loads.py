@@ -11,12 +11,12 @@ import argparse
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
-from ..errors import DesignError
-from ..geometry import Design
+from core.base.errors import DesignError
+from core.linkage.geometry import Design
 from .common import LOAD_OPTIONS, UsageError, design_file, number, option_name
 
 if TYPE_CHECKING:
-    from ..dynamics import MassProperties
+    from core.forces.dynamics import MassProperties
 
 REQUIRED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N")
 # an essential mass → the weight that may stand for it (the task book's G4, G6)
@@ -44,7 +44,7 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
     A rod mass the file keeps from the rod variant is dropped for a block design; one
     given as an option is refused by the solver instead.
     """
-    from ..dynamics import MassProperties, masses_for_design   # only commands with loads
+    from core.forces.dynamics import MassProperties, masses_for_design   # only commands with loads
     doc = design_file(args)
     base = doc.get("masses") if doc is not None else None
     if base is not None:
@@ -87,7 +87,7 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
 def rotor(text: str, doc: dict[str, Any] | None) -> tuple[float, float]:
     """One ``--rotor J:RATIO`` (or ``J:gear``, the pinion shaft of the design file's gear
     pair, z2/z1) as (J kg·m², ω_i/ω2)."""
-    from ..rotors import rotor_from_text
+    from core.forces.rotors import rotor_from_text
     gear = doc.get("gear") if doc is not None else None
     if gear is None:
         if text.partition(":")[2].strip().lower() == "gear":

@@ -11,8 +11,8 @@ import sys
 from pathlib import Path
 from typing import Any, Iterable
 
-from ..errors import WriteError, os_reason
-from ..io import atomic_write
+from core.base.errors import WriteError, os_reason
+from core.files.io import atomic_write
 from .common import UsageError
 
 
@@ -62,7 +62,7 @@ def print_json(document: Any) -> None:
 
 def write_output(option: str, target: str, text: str | Iterable[str]) -> None:
     """``text`` (a string or pieces of it) to stdout for ``-``, else to the file ``target``
-    (atomically for a regular file, see ``core.atomic.atomic_write``)."""
+    (atomically for a regular file, see ``core.files.atomic.atomic_write``)."""
     if target == "-":
         try:
             for piece in [text] if isinstance(text, str) else text:

@@ -1,6 +1,6 @@
 """Large CSV tables computed and written piece by piece, with progress on a terminal.
 
-A request may hold up to ``core.kinematics.MAX_SAMPLES`` samples (angles ×
+A request may hold up to ``core.linkage.kinematics.MAX_SAMPLES`` samples (angles ×
 speeds). Computed in one piece, that would hold every column of every row,
 and its formatted text, in memory at once; computed per block of
 ``CHUNK_ANGLES`` angles of one speed, memory stays at a few tens of MB
@@ -17,7 +17,7 @@ from typing import Callable, Iterator, Sequence, TextIO
 
 import numpy as np
 
-from ..io import table_chunks, zero_scale
+from core.files.io import table_chunks, zero_scale
 from .allocator import keep_freed_memory
 from .forked import pieces_in_order, worker_count
 from .output import write_output

@@ -25,8 +25,8 @@ import unicodedata
 from dataclasses import dataclass
 from typing import Any
 
-from ..errors import DesignError, FileFormatError
-from ..text import UNPRINTABLE
+from core.base.errors import DesignError, FileFormatError
+from core.base.text import UNPRINTABLE
 from .common import Parser, UsageError, design_error_text, one_line
 
 MAX_TABLE_BYTES = 5_000_000

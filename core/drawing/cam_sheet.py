@@ -31,7 +31,8 @@ from .dxf import CENTER, OUTLINE, THIN
 from .labels import Room, strokes
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, fit, frame_items, line, marked,
-                    number_text, scale_text, standard_scale, table, symbol)
+                    number_text, scale_text, standard_scale, symbol)
+from .cells import table
 from .sheet_dims import Dimension
 from .title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block, title_block_box
 

@@ -2,7 +2,7 @@
 
 The course design draws its curves and polygons to a stated scale μ (units per
 mm of paper) chosen from a round series, so a reader can measure a value with a
-ruler: here every scale comes from :func:`core.polygons.nice_scale` and is
+ruler: here every scale comes from :func:`core.forces.polygons.nice_scale` and is
 returned with the items, so the caller writes it beside the drawing.
 """
 from __future__ import annotations
@@ -13,7 +13,7 @@ from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
-from core.polygons import FINE_MANTISSAS, Polygon, nice_scale
+from core.forces.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
 from .labels import Room

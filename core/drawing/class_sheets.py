@@ -12,11 +12,12 @@ from typing import Any, Mapping, Sequence
 
 import numpy as np
 
-from ..figure_text import figure_text
+from core.base.figure_text import figure_text
 from .dxf import THIN
 from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
-from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line, marked_text,
-                    standard_scale, table)
+from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line,
+                    marked_text, standard_scale)
+from .cells import table
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
 A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)
@@ -41,7 +42,7 @@ def _w(labels: Mapping[str, str], word: str) -> str:
 
 def _n(value: float | None) -> str:
     """A given value as the design file holds it (as typed: 1.46, 0.12345, 700), never
-    rounded; a figure the tool derives is written by ``core.figure_text``."""
+    rounded; a figure the tool derives is written by ``core.base.figure_text``."""
     if value is None:
         return "—"
     return f"{value:.10g}"
@@ -101,7 +102,7 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
                labels: Mapping[str, str]) -> Sheet:
     """One student's task sheet: ``doc`` the design file's document, ``who`` the student,
     number, group and date, ``deliver`` the files' titles in order."""
-    from ..spec import Spec
+    from core.linkage.spec import Spec
     design = Spec.from_dict(doc["spec"]).design()
     p = A4
     left, bottom, right, top = p.border

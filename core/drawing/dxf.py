@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import ezdxf
 from ezdxf.document import Drawing
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 
 DXF_VERSION = "R2010"        # UTF-8 text, lineweights, read by AutoCAD 2010+, LibreCAD, QCAD
 MILLIMETRES = 4              # $INSUNITS

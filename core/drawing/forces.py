@@ -2,10 +2,10 @@
 
 Upper left the mechanism at the two polygon positions (the report's default, or
 ``diagram_deg``) with the loads and the joint forces as arrows to one force scale
-μF each; upper right the force polygons of the ram group (core.polygons.force_polygon)
+μF each; upper right the force polygons of the ram group (core.forces.polygons.force_polygon)
 and of the lever (lever_force_polygon) at the same two positions; lower left the crank's driving torque over the cycle with
 its mean, and the energy curve ∫(M − M_m)dφ; lower right the flywheel result (the
-numbers of ``shaper dynamics`` and the report, from core.flywheel.summarize) and the
+numbers of ``shaper dynamics`` and the report, from core.forces.flywheel.summarize) and the
 title block. Every number comes from core at the first crank speed, the speed of the
 motion sheet's polygons.
 
@@ -20,13 +20,13 @@ from typing import Mapping
 
 import numpy as np
 
-from core.dynamics import MM, MassProperties, solve_dynamics
-from core.figure_text import figure_text
-from core.flywheel import summarize
-from core.geometry import Design
-from core.kinematics import rpm_to_omega, shape
-from core.polygons import FINE_MANTISSAS, force_polygon, lever_force_polygon, nice_scale
-from core.positions import DEFAULT_COUNT, positions, special_angles
+from core.forces.dynamics import MM, MassProperties, solve_dynamics
+from core.base.figure_text import figure_text
+from core.forces.flywheel import summarize
+from core.linkage.geometry import Design
+from core.linkage.kinematics import rpm_to_omega, shape
+from core.forces.polygons import FINE_MANTISSAS, force_polygon, lever_force_polygon, nice_scale
+from core.course_design.positions import DEFAULT_COUNT, positions, special_angles
 
 from . import mechanism as mech
 from .charts import ARROW, Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
@@ -34,8 +34,9 @@ from .dxf import OUTLINE
 from .labels import Room
 from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (Box, Item, Paper, Sheet, Text, fit, frame_items, number_text, scale_text, standard_scale,
-                    symbol, table)
+from .sheet import (Box, Item, Paper, Sheet, Text, fit, frame_items, number_text, scale_text,
+                    standard_scale, symbol)
+from .cells import table
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
 ENGLISH = {
@@ -363,7 +364,7 @@ def guide_rows(design: Design, rpm: float, masses: MassProperties, angles_deg,
                lab: Mapping[str, str]) -> list[tuple[str, str]]:
     """Where the ram bears on its guide at the drawn positions: the resultant N and its
     distance from C where that falls on the guide, else the two end forces it tilts onto
-    (core.guide): never a point of action metres off the guide."""
+    (core.forces.guide): never a point of action metres off the guide."""
     d = solve_dynamics(design, np.radians(list(angles_deg)), [rpm], masses)
     rows = []
     for k, angle in enumerate(angles_deg):

@@ -30,7 +30,8 @@ from .dxf import CENTER, DASHED, OUTLINE, THIN
 from .labels import Room
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, fit, frame_items, line, marked,
-                    marked_text, number_text, standard_scale, table)
+                    marked_text, number_text, standard_scale)
+from .cells import table
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 from .cam_sheet import ENLARGEMENTS, ratio_text
 

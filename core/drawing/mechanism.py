@@ -1,10 +1,10 @@
 """The mechanism's linework for a sheet: links at a crank angle, to scale, as items.
 
-Joints come from :func:`core.kinematics.shape` (exact), so a length on the paper
+Joints come from :func:`core.linkage.kinematics.shape` (exact), so a length on the paper
 divided by the placement's scale is the design's. Symbols that are not design
 data (pivot supports, slider blocks, the ram, the tool) have fixed sizes in
 paper mm, as a hand drawing's would: they look the same at 1:2 and at 1:20 and
-never change a dimension. Model coordinates are :mod:`core.geometry`'s (O4 at
+never change a dimension. Model coordinates are :mod:`core.linkage.geometry`'s (O4 at
 the origin, O2 above it, the ram guide at y = guide, the cut toward +x).
 """
 from __future__ import annotations
@@ -14,8 +14,8 @@ from typing import Sequence
 
 import numpy as np
 
-from core.geometry import Design
-from core.kinematics import shape
+from core.linkage.geometry import Design
+from core.linkage.kinematics import shape
 
 from .dxf import CENTER, OUTLINE, THIN
 from .sheet import Box, Circle, Item, Pair, Placement, line, symbol

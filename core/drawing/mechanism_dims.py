@@ -16,7 +16,7 @@ from typing import Sequence
 
 import numpy as np
 
-from core.geometry import Design
+from core.linkage.geometry import Design
 
 from . import mechanism as mech
 from . import sheet_dims as sd

@@ -20,12 +20,12 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
-from core.errors import DesignError
-from core.figure_text import figure_text
-from core.geometry import Design
-from core.kinematics import solve
-from core.polygons import acceleration_polygon, velocity_polygon
-from core.positions import positions, special_angles
+from core.base.errors import DesignError
+from core.base.figure_text import figure_text
+from core.linkage.geometry import Design
+from core.linkage.kinematics import solve
+from core.forces.polygons import acceleration_polygon, velocity_polygon
+from core.course_design.positions import positions, special_angles
 
 from . import mechanism as mech
 from . import mechanism_dims, path_numbers
@@ -33,9 +33,10 @@ from .charts import (TICK, Curve, chart, polygon_extent, polygon_fit_scale, poly
                      scale_notes)
 from .dxf import OUTLINE, THIN
 from .labels import Room, boxes_meet
-from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, fitting_height, frame_items,
-                    item_box, marked, marked_text, number_text, scale_text, smaller_height, standard_scale,
-                    table)
+from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, frame_items,
+                    item_box, marked, marked_text, number_text, scale_text, smaller_height,
+                    standard_scale)
+from .cells import fitting_height, table
 from .sheet_dims import Dimension
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 

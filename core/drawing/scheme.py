@@ -1,7 +1,7 @@
 """The mechanism for CAD: the scheme at 1:1 in model space, with live dimensions.
 
 A designer carries the mechanism on into part design in a CAD program, so this
-drawing is geometry first: every point is core's (``core.kinematics.shape`` at
+drawing is geometry first: every point is core's (``core.linkage.kinematics.shape`` at
 the chosen crank angle and at the two limit positions), in core's frame (the
 lever pivot O4 at the origin, O2 straight above it, the ram guide horizontal,
 cutting toward +x), in millimetres at 1:1. The link lengths L1, L2, L3, L4, the
@@ -23,9 +23,9 @@ from ezdxf import bbox
 from ezdxf.document import Drawing
 from ezdxf.enums import TextEntityAlignment
 
-from ..errors import DesignError, require_range
-from ..geometry import Design
-from ..kinematics import shape
+from core.base.errors import DesignError, require_range
+from core.linkage.geometry import Design
+from core.linkage.kinematics import shape
 from . import dimensions as dims
 from .dxf import CENTER, DASHED, OUTLINE, THIN, new_document, save_dxf, text_attribs
 

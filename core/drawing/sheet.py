@@ -20,11 +20,11 @@ import re
 import unicodedata
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Collection, Sequence, Union
+from typing import Sequence, Union
 
 import numpy as np
 
-from core.polygons import nice_scale
+from core.forces.polygons import nice_scale
 
 from .dxf import OUTLINE, TEXT, THIN
 
@@ -200,6 +200,15 @@ def marked_text(text: str, position: Pair, height: float, align: str = "lb", roo
     return Text(plain, position, height, align, layer=layer, subscripts=spans)
 
 
+def clipped(text: str, room: float, height: float) -> str:
+    """``text`` cut with an ellipsis to fit ``room`` at ``height``."""
+    if text_width(text, height) <= room:
+        return text
+    while text and text_width(text + "…", height) > room:
+        text = text[:-1]
+    return text + "…" if text else ""
+
+
 def clipped_spans(text: str, spans: tuple[tuple[int, int], ...], room: float,
                   height: float) -> tuple[str, tuple[tuple[int, int], ...]]:
     """``text`` cut as :func:`clipped` cuts it, its subscript spans cut with it."""
@@ -343,71 +352,3 @@ def fit(bounds: Box, box: Box, scale: float) -> Placement:
 
 def shrink(box: Box, by: float) -> Box:
     return (box[0] + by, box[1] + by, box[2] - by, box[3] - by)
-
-
-# ---- text that fits ----------------------------------------------------------------------
-
-def fitting_height(text: str, room: float, largest: float = 5.0) -> float:
-    """The largest standard height ≤ ``largest`` at which ``text`` is ≤ ``room`` mm wide
-    (the smallest, 2.5 mm, if none is)."""
-    for h in sorted((h for h in TEXT_HEIGHTS if h <= largest), reverse=True):
-        if text_width(text, h) <= room:
-            return h
-    return TEXT_HEIGHTS[0]
-
-
-def clipped(text: str, room: float, height: float) -> str:
-    """``text`` cut with an ellipsis to fit ``room`` at ``height``."""
-    if text_width(text, height) <= room:
-        return text
-    while text and text_width(text + "…", height) > room:
-        text = text[:-1]
-    return text + "…" if text else ""
-
-
-def cell_text(text: str, box: Box, largest: float = 5.0, align: str = "c",
-              layer: str = TEXT, notation: bool = False) -> Text:
-    """``text`` inside the cell ``box``, as large as fits (≤ ``largest``), centred
-    vertically, aligned left (1 mm in), centre or right; with ``notation``, in the index
-    notation of :func:`marked` (the program's own words only, never a user's)."""
-    x0, y0, x1, y1 = box
-    room = x1 - x0 - 2.0
-    plain, spans = marked(text) if notation else (text, ())
-    h = min(fitting_height(plain, room, largest), (y1 - y0) / 1.6)
-    h = max((v for v in TEXT_HEIGHTS if v <= h), default=TEXT_HEIGHTS[0])
-    x = {"l": x0 + 1.0, "c": (x0 + x1) / 2.0, "r": x1 - 1.0}[align]
-    plain, spans = clipped_spans(plain, spans, room, h)
-    text = Text(plain, (x, (y0 + y1) / 2.0), h, align + "m", layer=layer, subscripts=spans)
-    low, high = text.box()[1], text.box()[3]
-    lift = min(max(y0 - low, 0.0), max(y1 - high, 0.0))   # a subscript below: up, if it has room
-    return text if not lift else Text(plain, (x, (y0 + y1) / 2.0 + lift), h, align + "m",
-                                      layer=layer, subscripts=spans)
-
-
-# ---- tables ------------------------------------------------------------------------------
-
-def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]],
-          row_height: float = 8.0, text_height: float = 3.5, layer: str = TEXT,
-          aligns: str | None = None, plain: Collection[int] = (), header_rows: int = 1) -> list[Item]:
-    """Rows of texts in ruled cells: outline thick, inner rules thin (GB/T 10609.1). The
-    texts are the program's own labels and numbers, in the index notation of :func:`marked`,
-    but for the columns in ``plain`` (a user's words, a student's name: taken as they are)
-    below the first ``header_rows`` rows."""
-    x0, y_top = top_left
-    xs = np.concatenate([[x0], x0 + np.cumsum(widths)])
-    height = row_height * len(rows)
-    items: list[Item] = [rectangle((x0, y_top - height, float(xs[-1]), y_top), OUTLINE)]
-    for k in range(1, len(rows)):
-        y = y_top - k * row_height
-        items.append(line([(x0, y), (xs[-1], y)], THIN))
-    for x in xs[1:-1]:
-        items.append(line([(x, y_top - height), (x, y_top)], THIN))
-    for r, row in enumerate(rows):
-        y1 = y_top - r * row_height
-        for c, text in enumerate(row):
-            if text:
-                align = aligns[c] if aligns else "c"
-                notation = r < header_rows or c not in plain
-                items.append(cell_text(text, (float(xs[c]), y1 - row_height, float(xs[c + 1]), y1),
-                                       text_height, align, layer, notation=notation))
-    return items

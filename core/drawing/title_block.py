@@ -10,7 +10,8 @@ from typing import Mapping
 import numpy as np
 
 from .dxf import OUTLINE, THIN, TITLE
-from .sheet import Box, Item, Paper, Text, cell_text, line, rectangle
+from .sheet import Box, Item, Paper, Text, line, rectangle
+from .cells import cell_text
 
 TITLE_WIDTH = 180.0
 TITLE_HEIGHT = 56.0

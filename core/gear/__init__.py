@@ -6,7 +6,7 @@
 what to change; ``table`` the results as rows and JSON; ``file`` the design file's "gear";
 ``profile`` the teeth as drawn (true involutes and the rack-generated fillet).
 
-Level: its own, beside the cam; it imports ``core.errors`` only.
+Level: its own, beside the cam; it imports ``core.base.errors`` only.
 """
 from __future__ import annotations
 

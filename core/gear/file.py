@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .inputs import GearPairInputs
 
 REQUIRED_KEYS = ("z1", "z2", "module_mm")

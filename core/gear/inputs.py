@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .involute import FIRST_SERIES_MM
 
 MIN_TEETH = 5

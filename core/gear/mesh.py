@@ -5,7 +5,7 @@ the rack-generated fillets), its flank angle at the working pitch circle from
 ``core.gear.involute.half_angle``. The frame is the meshing sheet's: the pinion's centre O1
 at the origin, the gear's O2 on +x at a′, y up. At crank angle 0 a flank of each gear passes
 through the pitch point P (as on the sheet); the gear z2, on the crank's shaft, then turns
-clockwise with the crank (the crank turns clockwise in the scheme, core.geometry) and the
+clockwise with the crank (the crank turns clockwise in the scheme, core.linkage.geometry) and the
 pinion counter-clockwise i = z2/z1 times as fast: the working pitch circles roll on each
 other (r′1 i = r′2), so the involutes stay conjugate and the teeth mesh at every angle.
 Used by the GUI's Gear tab (which paints these arrays) and the meshing sheet (the line of

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .inputs import GearPairInputs
 from .involute import least_shift, reference_thickness, thickness_at
 from .shift import Shifts, find_shifts, reference_centre

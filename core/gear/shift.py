@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import DesignError
+from core.base.errors import DesignError
 from .inputs import GearPairInputs
 from .involute import inv, inv_inverse, least_shift, least_teeth
 

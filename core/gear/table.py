@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..figure_text import figure_text
+from core.base.figure_text import figure_text
 from .checks import pair_checks
 from .inputs import GearPairInputs
 from .pair import Gear, GearPair

@@ -2,10 +2,10 @@
 
 Each entry keeps a name (unique), notes, tags, created and modified times (UTC,
 ISO 8601), the design document exactly as a design file holds it (loads
-included), and the key figures of :mod:`core.figures` — the design's in the
+included), and the key figures of :mod:`core.space.figures` — the design's in the
 ``entries`` table, each speed's in ``speeds`` — so a list can be filtered and
 sorted without recomputing anything. Documents read back are validated by the
-same rules as a design file (:func:`core.io.parse_design`).
+same rules as a design file (:func:`core.files.io.parse_design`).
 
 An entry and its document are in :mod:`core.library.entry`; opening and its
 checks in :mod:`core.library.open`; schema and transactions in
@@ -21,9 +21,9 @@ from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
-from core.errors import DesignError, FileFormatError
-from core.figures import FIGURES_VERSION, Figures, SpeedFigures, figures
-from core.io import atomic_write
+from core.base.errors import DesignError, FileFormatError
+from core.space.figures import FIGURES_VERSION, Figures, SpeedFigures, figures
+from core.files.io import atomic_write
 
 from .backup import snapshot_to
 from .entry import Entry, check_document, document_text
@@ -156,7 +156,7 @@ class Library:
         return self._read(work)
 
     def load(self, name: str) -> dict[str, Any]:
-        """The validated design of ``name`` (as ``core.io.load_design`` returns it)."""
+        """The validated design of ``name`` (as ``core.files.io.load_design`` returns it)."""
         return self.get(name).document()
 
     def query_rows(self, where: str | Sequence[Condition] = "", search: str = "", sort: str = "name",

@@ -1,7 +1,7 @@
 """Copies of a library file: a consistent copy of a library in use, or byte for byte a
 file that cannot be opened (``shaper library backup``, the pane's "keep a copy").
 
-A copy is written by the project's safe writer (:func:`core.atomic.atomic_write`), so it
+A copy is written by the project's safe writer (:func:`core.files.atomic.atomic_write`), so it
 keeps the rules every other output keeps: a symbolic link is written through (the link
 stays), a pipe or a device is written to and never replaced, a file that is replaced
 keeps its mode, and a failure leaves nothing behind — no half copy, no temporary file,
@@ -19,8 +19,8 @@ import tempfile
 from pathlib import Path
 from typing import Iterator
 
-from core.atomic import atomic_write
-from core.errors import os_reason
+from core.files.atomic import atomic_write
+from core.base.errors import os_reason
 
 from .store import LibraryError, backup_target, check_regular, sqlite_uri
 

@@ -2,7 +2,7 @@
 
 Apart from :mod:`core.library` so that the entry, the text it stores and the check
 of that text are one small module: what is written and what is read back are the
-same rules (:func:`core.io.parse_design`).
+same rules (:func:`core.files.io.parse_design`).
 """
 from __future__ import annotations
 
@@ -10,8 +10,8 @@ import json
 from dataclasses import dataclass
 from typing import Any, Sequence
 
-from core.figures import FIGURES_VERSION, Figures, SpeedFigures
-from core.io import design_document, masses_to_dict, parse_design
+from core.space.figures import FIGURES_VERSION, Figures, SpeedFigures
+from core.files.io import design_document, masses_to_dict, parse_design
 
 _PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
 
@@ -35,7 +35,7 @@ class Entry:
         return self.figures_version >= FIGURES_VERSION
 
     def document(self) -> dict[str, Any]:
-        """The validated design (keys of ``core.io.load_design``); FileFormatError if bad."""
+        """The validated design (keys of ``core.files.io.load_design``); FileFormatError if bad."""
         return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}", self.name)
 
 

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable
 
-from core.errors import FileFormatError
-from core.io import load_design
+from core.base.errors import FileFormatError
+from core.files.io import load_design
 from core.library import Entry, Library
 
 from .names import MAX_NAME, file_stem, safe_file_name, shown_file_name, unique_name

@@ -10,7 +10,7 @@ import re
 from pathlib import Path
 from typing import Iterable
 
-from core.text import CONTROL, NOTE_FORBIDDEN
+from core.base.text import CONTROL, NOTE_FORBIDDEN
 
 from .store import LibraryError
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from core.figures import DESIGN_FIGURES, SPEED_FIGURES
+from core.space.figures import DESIGN_FIGURES, SPEED_FIGURES
 
 OPERATORS = ("<=", ">=", "!=", "=", "<", ">", "~")
 

@@ -16,8 +16,8 @@ import sqlite3
 from functools import lru_cache
 from typing import Any, Callable, Iterable, Iterator, Sequence, TypeVar
 
-from core.figures import DESIGN_KEYS, SPEED_KEYS
-from core.text import CONTROL
+from core.space.figures import DESIGN_KEYS, SPEED_KEYS
+from core.base.text import CONTROL
 
 T = TypeVar("T")
 

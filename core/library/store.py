@@ -21,8 +21,8 @@ from pathlib import Path
 from typing import Callable, Iterator
 from urllib.parse import quote
 
-from core.atomic import fit_name
-from core.errors import os_reason
+from core.files.atomic import fit_name
+from core.base.errors import os_reason
 
 APP_NAME = "shaper-designer"
 FILE_NAME = "library.sqlite"
@@ -126,7 +126,7 @@ def _create_v1(conn: sqlite3.Connection) -> None:
 
 
 def _add_figures_version(conn: sqlite3.Connection) -> None:
-    """Schema 2: which computation of the figures (``core.figures.FIGURES_VERSION``) each
+    """Schema 2: which computation of the figures (``core.space.figures.FIGURES_VERSION``) each
     entry's stored figures come from, so that figures an older program computed can be
     found and recomputed. Schema 1 was written by figures version 1."""
     conn.execute("ALTER TABLE entries ADD COLUMN figures_version INTEGER NOT NULL DEFAULT 1")

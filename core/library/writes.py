@@ -11,7 +11,7 @@ from __future__ import annotations
 import sqlite3
 from typing import Sequence
 
-from core.figures import DESIGN_KEYS, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures
+from core.space.figures import DESIGN_KEYS, SPEED_KEYS, TEXT_FIGURES, Figures, SpeedFigures
 
 from .entry import Entry, distinct_speeds
 

@@ -19,7 +19,7 @@ from core.cam import Cam, CamInputs, Program, design_cam
 from core.cam.build import BOSS_MM, CLEARANCE_MM, HUB_MM, FitError
 from core.cam.cam import RETURN_PRESSURE_DEG
 from core.cam.file import cam_from_dict, cam_to_dict
-from core.errors import DesignError
+from core.base.errors import DesignError
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.model import PartModel, Typed, number
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QWidget
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 from core.cam.table import cam_table
-from core.io import table_csv
-from core.kinematics import crank_angles
+from core.files.io import table_csv
+from core.linkage.kinematics import crank_angles
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab
 
@@ -95,7 +95,7 @@ class CamTab(PartTab):
         atomic_write(path, table_csv(*cam_table(self.cam_model.cam, crank_angles(1.0), rpm)))
 
     def export_dxf(self, path: str) -> None:
-        from core.cam_drawing import write_cam_dxf     # ezdxf: only when a drawing is asked for
+        from core.drawing.cam_dxf import write_cam_dxf     # ezdxf: only when a drawing is asked for
         write_cam_dxf(self.cam_model.cam, path)
 
     def export_image(self, path: str) -> None:

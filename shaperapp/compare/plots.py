@@ -3,7 +3,7 @@
 One component for the Compare tab and the design report, so both draw a
 comparison the same way. Each design keeps one colour and one line style in all
 four plots (Okabe–Ito colours, six dash patterns), so curves stay apart in
-grey-scale prints too. It draws a :class:`core.compare.Comparison` and nothing else.
+grey-scale prints too. It draws a :class:`core.space.compare.Comparison` and nothing else.
 """
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from PySide6.QtCore import QEvent, QRectF, QSizeF, Qt
 from PySide6.QtGui import QColor, QPainter
 from PySide6.QtWidgets import QWidget
 
-from core.compare import Comparison
+from core.space.compare import Comparison
 
 from shaperapp.plots.axes import cache_static, styled_plot_item
 from shaperapp.widgets.image_export import painting_bytes, render_scene

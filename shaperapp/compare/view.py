@@ -2,7 +2,7 @@
 
 The overlay curves (ram x, v, a and crank torque; each design in one colour and
 line style) are the shared ``compare_plots.ComparePlots``, which the report uses too. The table
-shows every figure of ``core.compare``: each value, its difference from the
+shows every figure of ``core.space.compare``: each value, its difference from the
 first design in brackets, and the best value of a row in bold with a ★.
 Everything shown is computed by core; this widget only draws and exports.
 """
@@ -14,10 +14,10 @@ from PySide6.QtWidgets import (QDoubleSpinBox, QFileDialog, QGridLayout, QHBoxLa
                                QLabel, QListWidget, QMessageBox, QPushButton, QSplitter, QTableWidget,
                                QTableWidgetItem, QVBoxLayout, QWidget)
 
-from core.compare import (MAX_DESIGNS, Candidate, Comparison, compare, difference_text,
+from core.space.compare import (MAX_DESIGNS, Candidate, Comparison, compare, difference_text,
                           distinguishing_choices, distinguishing_inputs, table_csv)
-from core.errors import DesignError, FileFormatError
-from core.io import atomic_write, load_design
+from core.base.errors import DesignError, FileFormatError
+from core.files.io import atomic_write, load_design
 from core.library.names import file_stem, unique_name
 
 from shaperapp.design.model import DesignModel

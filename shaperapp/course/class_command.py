@@ -69,8 +69,8 @@ def run(args: argparse.Namespace) -> int:
     import datetime
 
     from core.cli.tasks import TableError, read_tasks
-    from core.design_file import load_design
-    from core.errors import FileFormatError
+    from core.files.design_file import load_design
+    from core.base.errors import FileFormatError
 
     from .class_run import Job
     paper = paper_of(args)

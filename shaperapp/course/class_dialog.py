@@ -119,8 +119,8 @@ class ClassDialog(QDialog):
     def check(self) -> None:
         """Read the table as ``shaper class`` will, and show every row with its error."""
         from core.cli.tasks import TableError, read_tasks
-        from core.design_file import load_design
-        from core.errors import FileFormatError
+        from core.files.design_file import load_design
+        from core.base.errors import FileFormatError
 
         from shaperapp.widgets.messages import describe_file_error
 

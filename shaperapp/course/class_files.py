@@ -13,9 +13,9 @@ from typing import Any, Mapping, Sequence
 
 from PySide6.QtCore import QCoreApplication
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 from core.cli.answers import FIGURES, PER_SPEED, cell_text, key_csv, key_values
-from core.course import PARTS
+from core.course_design.plan import PARTS
 from core.drawing.class_sheets import answer_pages, task_sheet
 
 from shaperapp.drawing.render import pages_pdf

@@ -20,8 +20,8 @@ from itertools import islice
 from dataclasses import dataclass, field
 from typing import Any, Iterator, Sequence
 
-from core.atomic import atomic_write
-from core.course import PARTS, file_names
+from core.files.atomic import atomic_write
+from core.course_design.plan import PARTS, file_names
 from core.version import version_text
 
 DESIGN_FILE = "design.shaper.json"
@@ -91,7 +91,7 @@ def _language(lang: str) -> str:
 
 def write_student(job: Job) -> None:
     """The folder's files, each atomically, the stamp last (OSError names the file)."""
-    from core.course import plan_course, read_document
+    from core.course_design.plan import plan_course, read_document
 
     from .write import Covering, write_course
     language = _language(job.lang)

@@ -22,10 +22,10 @@ from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFileDialog,
                                QFormLayout, QMessageBox, QWidget)
 
-from core.course import CourseError, plan_course
-from core.design_file import parse_design
+from core.course_design.plan import CourseError, plan_course
+from core.files.design_file import parse_design
 from core.drawing.sheet import PAPERS
-from core.io import design_document
+from core.files.io import design_document
 
 from shaperapp.design.document import saved_parts
 from shaperapp.design.model import DesignModel

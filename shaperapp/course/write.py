@@ -1,7 +1,7 @@
-"""Paint and write the files of a checked course design (``core.course``), one by one.
+"""Paint and write the files of a checked course design (``core.course_design.plan``), one by one.
 
 Shared by ``shaper course`` and File › Export course design…, so both write the same
-files. Each file is written atomically (``core.atomic``): at any moment every file in
+files. Each file is written atomically (``core.files.atomic``): at any moment every file in
 the folder is a complete old or a complete new one. A sheet is built once for its PDF
 and its DXF.
 """
@@ -13,10 +13,10 @@ from typing import Callable, Iterator
 import numpy as np
 
 from core.cam.file import cam_from_dict
-from core.course import REPORT, Course, CourseFile, make_folder
+from core.course_design.plan import REPORT, Course, CourseFile, make_folder
 from core.gear.file import gear_from_dict
-from core.positions import DEFAULT_COUNT
-from core.progress import Progress
+from core.course_design.positions import DEFAULT_COUNT
+from core.base.progress import Progress
 
 from shaperapp.drawing.content import SheetChoice, build_sheet
 from shaperapp.drawing.render import write_sheet

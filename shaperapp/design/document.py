@@ -11,11 +11,11 @@ import os
 from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
-from core.dynamics_io import dynamics_csv
-from core.design_file import PART_KEYS
-from core.errors import DesignError, FileFormatError
-from core.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
-from core.spec import Spec
+from core.files.dynamics_io import dynamics_csv
+from core.files.design_file import PART_KEYS
+from core.base.errors import DesignError, FileFormatError
+from core.files.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
+from core.linkage.spec import Spec
 
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error

@@ -12,7 +12,7 @@ from PySide6.QtWidgets import (QButtonGroup, QComboBox, QFormLayout, QGroupBox, 
                                QLabel, QLineEdit, QListWidget, QListWidgetItem, QRadioButton, QSizePolicy,
                                QToolButton, QVBoxLayout, QWidget)
 
-from core.kinematics import MAX_RPM
+from core.linkage.kinematics import MAX_RPM
 from shaperapp.widgets.combos import fill_combo
 from shaperapp.widgets.messages import describe
 

@@ -11,14 +11,14 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, replace
 from typing import Any, Mapping
 
-from core.dynamics import MassProperties
-from core.errors import DesignError
-from core.geometry import Design
-from core.spec import NUMBER_FIELDS, Spec
+from core.forces.dynamics import MassProperties
+from core.base.errors import DesignError
+from core.linkage.geometry import Design
+from core.linkage.spec import NUMBER_FIELDS, Spec
 
 DEFAULT_RPMS = (40.0, 60.0)
 DEFAULT_STEP = 1.0
-MAX_SPEEDS = 16          # as core.kinematics.check_rpms allows
+MAX_SPEEDS = 16          # as core.linkage.kinematics.check_rpms allows
 # The classic course-design loads of a shaper (lever 200 N, J = 1.1 kg·m², ram 700 N,
 # cutting force 7000 N at 80 mm below the guide), so the Forces view shows a case at once.
 DEFAULT_MASSES = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,

@@ -14,9 +14,9 @@ from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QFormLayout, QGroupBox, QLabel, QLineEdit,
                                QVBoxLayout, QWidget)
 
-from core.dynamics import GRAVITY
-from core.errors import DesignError
-from core.rotors import rotors_from_text, rotors_text
+from core.forces.dynamics import GRAVITY
+from core.base.errors import DesignError
+from core.forces.rotors import rotors_from_text, rotors_text
 
 from shaperapp.widgets.messages import describe
 

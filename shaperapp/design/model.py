@@ -20,12 +20,12 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 from PySide6.QtGui import QUndoStack
 
-from core.dynamics import Dynamics, DynamicsSummary, MassProperties
-from core.errors import DesignError
-from core.geometry import Design
-from core.kinematics import Motion
-from core.metrics import CycleMetrics
-from core.spec import NUMBER_FIELDS, Spec
+from core.forces.dynamics import Dynamics, DynamicsSummary, MassProperties
+from core.base.errors import DesignError
+from core.linkage.geometry import Design
+from core.linkage.kinematics import Motion
+from core.linkage.metrics import CycleMetrics
+from core.linkage.spec import NUMBER_FIELDS, Spec
 
 from .inputs import DEFAULT_MASSES, DEFAULT_RPMS, DEFAULT_STEP, Inputs, typed_spec
 from .results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, same_error,
@@ -33,8 +33,8 @@ from .results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, sa
 from .parts import FileParts
 from .undo import InputEdit, edit_text, push_edit
 
-if TYPE_CHECKING:       # a type only: core.compare is imported when a comparison is made
-    from core.compare import Candidate
+if TYPE_CHECKING:       # a type only: core.space.compare is imported when a comparison is made
+    from core.space.compare import Candidate
 
 class DesignModel(QObject):
     """Holds the inputs the user typed, the last valid design and its results.
@@ -120,7 +120,7 @@ class DesignModel(QObject):
 
     @property
     def masses(self) -> MassProperties:
-        """The last valid loads (as entered; see ``core.dynamics.masses_for_design`` for what is solved)."""
+        """The last valid loads (as entered; see ``core.forces.dynamics.masses_for_design`` for what is solved)."""
         return self._masses
 
     @property

@@ -8,20 +8,20 @@ from __future__ import annotations
 
 import numpy as np
 
-from core.dynamics import (ENERGY_INTERVALS, Dynamics, DynamicsSummary, MassProperties, SpeedSummary,
+from core.forces.dynamics import (ENERGY_INTERVALS, Dynamics, DynamicsSummary, MassProperties, SpeedSummary,
                            masses_for_design, solve_dynamics)
-from core.errors import DesignError
-from core.flywheel import summarize
-from core.geometry import Design
-from core.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
-from core.metrics import CycleMetrics, analyze
-from core.spec import Spec
+from core.base.errors import DesignError
+from core.forces.flywheel import summarize
+from core.linkage.geometry import Design
+from core.linkage.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
+from core.linkage.metrics import CycleMetrics, analyze
+from core.linkage.spec import Spec
 
 from .inputs import Inputs
 
 # angles × speeds the whole window recomputes and redraws within about half a second:
 # 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
-# (docs/performance.md). core's own cap (core.kinematics) is far larger, for the CLI.
+# (docs/performance.md). core's own cap (core.linkage.kinematics) is far larger, for the CLI.
 MAX_GUI_SAMPLES = 60_000
 COMPUTE_ERRORS = (ArithmeticError, ValueError, RuntimeError, MemoryError)
 

@@ -20,10 +20,10 @@ from PySide6.QtWidgets import (QComboBox, QDialog, QDialogButtonBox, QDoubleSpin
 
 from core.drawing.motion import MAX_POSITIONS, motion_sheet
 from core.drawing.sheet import PAPERS, Sheet
-from core.dynamics import masses_for_design
-from core.errors import DesignError
+from core.forces.dynamics import masses_for_design
+from core.base.errors import DesignError
 from core.gear import GearPair, design_pair
-from core.positions import DEFAULT_COUNT
+from core.course_design.positions import DEFAULT_COUNT
 
 from shaperapp.design.gear_source import design_gear
 from shaperapp.design.model import DesignModel

@@ -10,7 +10,7 @@ from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QRectF, QS
 from PySide6.QtGui import QPageLayout, QPageSize, QPainter, QPdfWriter
 from PySide6.QtSvg import QSvgGenerator
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 from core.drawing.sheet import Sheet
 
 from shaperapp.widgets.pdf_page import exact_page

@@ -12,7 +12,7 @@ from pathlib import Path
 from core.cli.common import number
 from core.cli.output import OutputError
 from core.drawing.scheme import check_angle, write_scheme
-from core.geometry import Design
+from core.linkage.geometry import Design
 
 from shaperapp.widgets.command_line import check_output_folder
 

@@ -4,7 +4,7 @@ Each job is plain Python that ``worker.JobRunner`` runs on a worker thread (whic
 touches Qt; see there why). It works in chunks, reports progress and checks a cancel flag
 between chunks, so the window stays responsive and Cancel takes effect within one chunk.
 Results reach the view as the runner's signals, on the GUI thread; the view never touches
-a job's data while it runs. Every number comes from ``core.sweep`` / ``core.optimize``.
+a job's data while it runs. Every number comes from ``core.space.sweep`` / ``core.space.optimize``.
 """
 from __future__ import annotations
 
@@ -12,11 +12,11 @@ import threading
 from dataclasses import dataclass
 import numpy as np
 
-from core.dynamics import MassProperties
-from core.errors import DesignError
-from core.optimize import Cancelled, Optimum, objective_of, optimize
-from core.spec import Spec
-from core.sweep import evaluate
+from core.forces.dynamics import MassProperties
+from core.base.errors import DesignError
+from core.space.optimize import Cancelled, Optimum, objective_of, optimize
+from core.linkage.spec import Spec
+from core.space.sweep import evaluate
 from shaperapp.widgets.worker import Report
 
 # Figures a map can show: key → (objective it equals, needs loads, needs the rod variant).
@@ -44,7 +44,7 @@ class MapResult:
 
 
 def figure_values(evaluation, key: str) -> np.ndarray:
-    """One figure of every design: the worst value over the speeds (see ``core.optimize``)."""
+    """One figure of every design: the worst value over the speeds (see ``core.space.optimize``)."""
     objective = FIGURES[key][0]
     if objective is not None:
         values = objective_of(evaluation, objective)
@@ -94,7 +94,7 @@ class MapJob:
 
 
 class OptimizeJob:
-    """Run ``core.optimize.optimize``; Cancel stops it before its next batch (``worker.Job``)."""
+    """Run ``core.space.optimize.optimize``; Cancel stops it before its next batch (``worker.Job``)."""
 
     def __init__(self, spec: Spec, bounds: dict[str, tuple[float, float]], objective: str,
                  rpms, masses: MassProperties | None) -> None:

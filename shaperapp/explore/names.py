@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
-from core.optimize import OBJECTIVES, Optimum, tolerance_text
+from core.space.optimize import OBJECTIVES, Optimum, tolerance_text
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
 
@@ -68,7 +68,7 @@ def end_warnings(ends: dict[str, str]) -> str:
 def no_gain_text(best: Optimum, ends: dict[str, str]) -> str:
     """Why Optimize loads nothing: the objective does not depend on the free parameters
     (``best.insensitive``), or the best found does not beat the design before by more
-    than the objective's tolerance (core.optimize.GAIN_TOLERANCE); then the red lines of
+    than the objective's tolerance (core.space.optimize.GAIN_TOLERANCE); then the red lines of
     the parameters whose best is an end of its range (``ends``: none the objective
     ignores), where a better design may lie beyond."""
     unit = OBJECTIVES[best.objective][1]

@@ -18,8 +18,8 @@ from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (QComboBox, QDoubleSpinBox, QGridLayout, QHBoxLayout, QLabel,
                                QProgressBar, QPushButton, QSpinBox, QVBoxLayout, QWidget)
 
-from core.optimize import on_bounds, tidy_optimum
-from core.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
+from core.space.optimize import on_bounds, tidy_optimum
+from core.space.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.combos import fill_combo
 from shaperapp.widgets.image_export import export_scene
@@ -292,9 +292,9 @@ class ExploreView(QWidget):
         self._start(job, self.tr("Optimizing…"), busy=True)
 
     def _optimum_done(self, job: OptimizeJob, best) -> None:
-        """Load the optimum, rounded as a person would type it (core.optimize.tidy_optimum),
+        """Load the optimum, rounded as a person would type it (core.space.optimize.tidy_optimum),
         only when it beats the design on screen by more than the objective's tolerance
-        (core.optimize.improves); else say why there is no proposal and load nothing."""
+        (core.space.optimize.improves); else say why there is no proposal and load nothing."""
         self._show_count()       # no longer "Optimizing…"
         ends = on_bounds(best, job.bounds)
         if not best.improves:                         # nothing better: the design stays

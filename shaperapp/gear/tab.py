@@ -9,7 +9,7 @@ import os
 from PySide6.QtCore import QLocale, Qt
 from PySide6.QtWidgets import QCheckBox, QScrollArea, QWidget
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 from core.gear.table import gear_summary, summary_csv
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab

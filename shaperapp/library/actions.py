@@ -16,10 +16,10 @@ from typing import Iterable, Sequence
 from PySide6.QtCore import QObject, Signal
 from PySide6.QtGui import QUndoCommand, QUndoStack
 
-from core.compare import Candidate
-from core.errors import DesignError, FileFormatError
-from core.design_file import PART_KEYS
-from core.figures import figures
+from core.space.compare import Candidate
+from core.base.errors import DesignError, FileFormatError
+from core.files.design_file import PART_KEYS
+from core.space.figures import figures
 from core.library import Entry, Library
 from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import check_name, unique_name

@@ -16,7 +16,7 @@ from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QFileDialog, QHBoxL
                                QLabel, QLineEdit, QMessageBox, QPushButton, QToolBar,
                                QVBoxLayout, QWidget)
 
-from core.compare import MAX_DESIGNS
+from core.space.compare import MAX_DESIGNS
 from core.library.store import LibraryError, resolve_path
 
 from shaperapp.design.model import DesignModel

@@ -1,7 +1,7 @@
 """The Library pane's notice of figures an older version computed, with Recompute.
 
 A library keeps each entry's figures and which computation made them
-(``core.figures.FIGURES_VERSION``). After an update that computes a figure
+(``core.space.figures.FIGURES_VERSION``). After an update that computes a figure
 differently, the list would sort and filter by the old numbers; this bar says how
 many entries that concerns and recomputes them from their stored designs
 (``Library.refresh_figures``, the same as ``shaper library refresh``), with a

@@ -12,7 +12,7 @@ from typing import Any
 
 from PySide6.QtWidgets import QComboBox, QFormLayout, QLabel, QVBoxLayout, QWidget
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from shaperapp.design.fields import (ERROR_STYLE, NumberField, PendingEdits, error_line, parse_number,
                                      show_error_line)
 

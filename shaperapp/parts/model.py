@@ -16,7 +16,7 @@ from typing import Any, Hashable
 
 from PySide6.QtCore import QObject, Signal
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from shaperapp.design.model import DesignModel
 from shaperapp.design.results import COMPUTE_ERRORS, compute_error
 from shaperapp.design.undo import InputEdit, push_edit

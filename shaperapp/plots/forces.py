@@ -16,7 +16,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import QComboBox, QLabel, QVBoxLayout, QWidget
 
-from core.dynamics import Dynamics
+from core.forces.dynamics import Dynamics
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.style import crank_text, speed_colour

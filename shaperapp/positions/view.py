@@ -1,6 +1,6 @@
 """The Positions tab: the course-design table at positions 1 … N and the special ones.
 
-Rows come from ``core.positions`` (exact special angles, the curves and
+Rows come from ``core.course_design.positions`` (exact special angles, the curves and
 dynamics columns). Selecting a row moves the animation there. The model's
 animation runs on its crank-angle grid, so the scheme and plots go to the
 grid angle nearest the row (within half a step); the row itself, and the
@@ -17,8 +17,8 @@ from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
                                QSpinBox, QWidget)
 
-from core.dynamics import masses_for_design
-from core.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
+from core.forces.dynamics import masses_for_design
+from core.course_design.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
                             positions)
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.column_titles import column_titles, special_titles

@@ -12,8 +12,8 @@ from PySide6.QtCore import QCoreApplication
 from core.cam import CamInputs, design_cam
 from core.cam.table import cam_summary, follower_peaks
 from core.cli.cmd_cam import summary_rows as cam_rows
-from core.errors import DesignError
-from core.geometry import Design
+from core.base.errors import DesignError
+from core.linkage.geometry import Design
 from shaperapp.widgets.messages import describe
 
 from . import figures

@@ -10,7 +10,7 @@ import argparse
 import errno
 from pathlib import Path
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 from core.cam.file import cam_from_dict
 from core.gear.file import gear_from_dict
 from core.cli.cmd_library import library_failure
@@ -18,10 +18,10 @@ from core.cli.cmd_library_compare import load_candidates
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
                              design_file, number)
 from core.cli.output import OutputError
-from core.compare import MAX_DESIGNS, Candidate
+from core.space.compare import MAX_DESIGNS, Candidate
 from core.library.store import ENV_VAR, LibraryError
-from core.positions import DEFAULT_COUNT, check_count
-from core.progress import Progress
+from core.course_design.positions import DEFAULT_COUNT, check_count
+from core.base.progress import Progress
 
 from shaperapp.widgets.command_line import (MAX_TEXT, add_cover_options, check_output_folder,  # noqa: F401
                                             cover_from_args, cover_text, design_name, diagram_angles,
@@ -145,7 +145,7 @@ def report_kind(path: str, html: bool = False) -> str:
 
 def write_report(report, path: str, progress: Progress = Progress()) -> int:
     """Write ``report`` as the type its name says (:func:`report_kind`), atomically: the
-    old file or the whole new one (``core.atomic``). Returns the PDF's page count (0 for
+    old file or the whole new one (``core.files.atomic``). Returns the PDF's page count (0 for
     HTML). ValueError for a name of another type; OSError (a WriteError) names the path.
     ``progress`` hears of every page; Cancelled (it said stop) before anything is written."""
     from .html import report_html

@@ -1,6 +1,6 @@
 """The report's comparison section: the report's design beside others at its first speed.
 
-The numbers are :mod:`core.compare`'s, written as ``shaper library compare``
+The numbers are :mod:`core.space.compare`'s, written as ``shaper library compare``
 writes them (``value_text`` and ``difference_text``), under the figure names the
 Library pane and the Compare tab use (``figure_labels``); the curves are drawn by
 the Compare tab's own component (``compare_plots``), through the report's views.
@@ -12,10 +12,10 @@ from typing import Sequence
 
 from PySide6.QtCore import QCoreApplication
 
-from core.compare import Candidate, Comparison, compare, difference_text, value_text
-from core.dynamics import MassProperties
+from core.space.compare import Candidate, Comparison, compare, difference_text, value_text
+from core.forces.dynamics import MassProperties
 from core.library.names import unique_name
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.widgets.figure_labels import figure_label, variant_label
 
 from .blocks import Figure, Heading, Paragraph, Table, typeset

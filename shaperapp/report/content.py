@@ -21,17 +21,17 @@ from core.cli.cmd_dynamics import speed_rows as dynamics_speed_rows
 from core.cli.cmd_dynamics import summary_rows
 from core.cli.cmd_synth import dimension_rows
 from core.cam import CamInputs
-from core.compare import Candidate
-from core.dynamics import DynamicsSummary, MassProperties, masses_for_design
-from core.figure_text import figure_text
-from core.flywheel import summarize
+from core.space.compare import Candidate
+from core.forces.dynamics import DynamicsSummary, MassProperties, masses_for_design
+from core.base.figure_text import figure_text
+from core.forces.flywheel import summarize
 from core.gear import GearPairInputs
-from core.geometry import Design
-from core.margins import margins
-from core.metrics import CycleMetrics, analyze
-from core.positions import PositionTable, position_table, positions
-from core.progress import Progress
-from core.spec import Spec
+from core.linkage.geometry import Design
+from core.linkage.margins import margins
+from core.linkage.metrics import CycleMetrics, analyze
+from core.course_design.positions import PositionTable, position_table, positions
+from core.base.progress import Progress
+from core.linkage.spec import Spec
 from shaperapp.widgets.command_line import inputs_name
 
 from . import figures

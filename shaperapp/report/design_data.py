@@ -6,10 +6,10 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication
 
 from core.cam import CamInputs
-from core.dynamics import GRAVITY, MassProperties
-from core.figure_text import figure_text
+from core.forces.dynamics import GRAVITY, MassProperties
+from core.base.figure_text import figure_text
 from core.gear.inputs import GearPairInputs
-from core.geometry import Design
+from core.linkage.geometry import Design
 
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")

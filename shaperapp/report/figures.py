@@ -20,12 +20,12 @@ from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
 
 from core.cam import Cam, CamInputs
-from core.compare import Comparison
-from core.dynamics import MassProperties
-from core.geometry import Design
-from core.metrics import CycleMetrics
-from core.polygons import lever_force_polygon, polygons
-from core.spec import Spec
+from core.space.compare import Comparison
+from core.forces.dynamics import MassProperties
+from core.linkage.geometry import Design
+from core.linkage.metrics import CycleMetrics
+from core.forces.polygons import lever_force_polygon, polygons
+from core.linkage.spec import Spec
 from shaperapp.cam.model import CamModel, typed_from
 from shaperapp.cam.plots import CamPlots
 from shaperapp.cam.profile_view import cam_span, paint_cam

@@ -15,7 +15,7 @@ import math
 from PySide6.QtCore import QCoreApplication
 
 from core.drawing.cam_sheet import ratio_text
-from core.errors import DesignError
+from core.base.errors import DesignError
 from core.gear import Check, GearPair, GearPairInputs, design_pair, pair_checks
 from core.gear.involute import least_teeth
 from core.gear.shift import centre_step, mesh_of_sum

@@ -12,7 +12,7 @@ import html
 from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QMarginsF, QPointF, QRectF, Qt
 from PySide6.QtGui import QFont, QPageLayout, QPageSize, QPainter, QPdfWriter, QPen
 
-from core.progress import Progress
+from core.base.progress import Progress
 
 from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows
 from .pdf_base import (BOTTOM_MM, GRID, INK, LEFT_MM, PAGE_MM, RESOLUTION, SHRINK, TITLE_MM, TOP_MM,

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 from PySide6.QtCore import QCoreApplication
 
-from core.positions import COLUMN_GROUPS, PositionTable, display_values
+from core.course_design.positions import COLUMN_GROUPS, PositionTable, display_values
 from shaperapp.positions.view import column_texts
 from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
 

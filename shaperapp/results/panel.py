@@ -13,14 +13,14 @@ import math
 from PySide6.QtCore import QEvent, QPoint
 from PySide6.QtWidgets import QAbstractScrollArea, QGroupBox, QVBoxLayout, QWidget
 
-from core.figure_text import figure_text
+from core.base.figure_text import figure_text
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.result_table import ResultTable
 
 DIMENSIONS = ("theta", "frame", "lever", "rod", "guide", "h", "K_nominal", "H_nominal")
 CYCLE = ("K", "stroke", "work_angle", "return_angle", "pressure")
-# the per-speed rows' kinds of figure (core.figure_text: one precision per kind everywhere)
+# the per-speed rows' kinds of figure (core.base.figure_text: one precision per kind everywhere)
 _SPEED_KINDS = {"cycle_time_s": "time", "work_time_s": "time", "return_time_s": "time",
                 "v_work_max_m_s": "speed", "v_work_mean_m_s": "speed", "v_return_max_m_s": "speed",
                 "a_max_m_s2": "acceleration", "lever_omega_max_rad_s": "angular_speed",
@@ -158,7 +158,7 @@ class MetricsPanel(QWidget):
         ]
 
     def _force_rows(self) -> list[tuple[str, str, float, str]]:
-        """(attribute, title, scale, kind of ``core.figure_text``) of the per-speed load values."""
+        """(attribute, title, scale, kind of ``core.base.figure_text``) of the per-speed load values."""
         return [
             ("mean_torque_N_m", self.tr("Mean crank torque, N·m"), 1.0, "torque"),
             ("max_torque_N_m", self.tr("Max crank torque, N·m"), 1.0, "torque"),

@@ -11,10 +11,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from core.arrays import sorted_unique
-from core.geometry import Design
-from core.kinematics import Motion
-from core.metrics import CycleMetrics
+from core.base.arrays import sorted_unique
+from core.linkage.geometry import Design
+from core.linkage.kinematics import Motion
+from core.linkage.metrics import CycleMetrics
 
 RETURN_LIFT = 0.35         # the return stroke of the tool path is drawn this many u higher
 LIMIT_TOL_DEG = 1e-6       # a grid angle this close to a limit position counts as on it

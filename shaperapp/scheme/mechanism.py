@@ -1,7 +1,7 @@
 """The scheme's mechanism layer: frame, crank, slotted lever, blocks, rod, ram, tool path.
 
 Every position comes from core (``model.motion.shape``, ``model.metrics`` and
-``core.kinematics.shape`` at the limit angles); this layer only chooses how to
+``core.linkage.kinematics.shape`` at the limit angles); this layer only chooses how to
 draw them. Link bodies, pins and blocks are rigid shapes built once per design
 in their own local frame, so an animation frame only moves them with
 ``setPos`` / ``setRotation`` using arrays prepared per design, and redraws the
@@ -29,8 +29,8 @@ from PySide6.QtCore import QObject, QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath
 from PySide6.QtWidgets import QGraphicsEllipseItem
 
-from core.kinematics import Shape
-from core.kinematics import shape as core_shape
+from core.linkage.kinematics import Shape
+from core.linkage.kinematics import shape as core_shape
 
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.items import CurveItem

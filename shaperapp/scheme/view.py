@@ -229,7 +229,7 @@ class SchemeWidget(QWidget):
                          self.tr("Shaper mechanism"), WHITE)
 
     def export_point(self, x_mm: float, y_mm: float) -> QPointF:
-        """Where the design point (x, y) (mm, the frame of ``core.geometry``) lies in the
+        """Where the design point (x, y) (mm, the frame of ``core.linkage.geometry``) lies in the
         picture ``export_image`` writes now, in its px: for marks drawn over it."""
         self._catch_up()
         item = self._plot.getPlotItem()

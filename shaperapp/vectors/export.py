@@ -10,8 +10,8 @@ from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QRectF, QSize, Qt
 from PySide6.QtGui import QFont, QFontMetricsF, QImage, QPainter
 from PySide6.QtSvg import QSvgGenerator
 
-from core.atomic import atomic_write
-from core.polygons import Polygon, paper
+from core.files.atomic import atomic_write
+from core.forces.polygons import Polygon, paper
 
 from .paint import _bounds, layout, paint_polygon, titles, translate
 

@@ -1,9 +1,9 @@
 """The one painting function for vector polygons: screen, PNG/SVG and the report.
 
-``paint_polygon`` draws a :class:`core.polygons.Polygon` at a scale μ (unit per
+``paint_polygon`` draws a :class:`core.forces.polygons.Polygon` at a scale μ (unit per
 drawing mm): every vector is one ``drawLine`` in drawing millimetres (value/μ,
 y up) under a single painter transform, so what is drawn is exactly what
-``core.polygons.paper`` says — the tests record those lines. Because the
+``core.forces.polygons.paper`` says — the tests record those lines. Because the
 screen view, the image export and the report all call this function, they
 cannot disagree.
 """
@@ -13,7 +13,7 @@ import math
 
 from PySide6.QtCore import QCoreApplication, QLineF, QPointF, QRectF, QSizeF, Qt
 from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen, QPolygonF
-from core.polygons import FINE_MANTISSAS, Polygon, nice_scale, paper
+from core.forces.polygons import FINE_MANTISSAS, Polygon, nice_scale, paper
 
 from .labels import LabelPlacer
 

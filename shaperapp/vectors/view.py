@@ -1,7 +1,7 @@
 """Vector diagrams beside the scheme: velocity, acceleration and force polygons.
 
 Follows the animation: at every crank angle the chosen polygon is computed by
-``core.polygons`` from the exact solution and drawn by the one painting
+``core.forces.polygons`` from the exact solution and drawn by the one painting
 function (``polygon_paint.paint_polygon``) at true scale on screen (the
 screen's millimetres), with a scale μ that is either chosen automatically —
 the round value that fills the view at this position, as a student would
@@ -16,8 +16,8 @@ from PySide6.QtGui import QFontMetricsF, QPainter, QPaintEvent
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QFrame, QLabel, QLineEdit,
                                QMessageBox, QScrollArea, QSizePolicy, QStyle, QToolButton, QWidget)
 
-from core.dynamics import masses_for_design
-from core.polygons import KINDS, Polygon, polygons
+from core.forces.dynamics import masses_for_design
+from core.forces.polygons import KINDS, Polygon, polygons
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.view_parts import bar_over_body, fill_speed_combo
 

@@ -57,7 +57,7 @@ def special_titles() -> dict[str, str]:
 
 
 def group_titles() -> dict[str, str]:
-    """``core.positions.COLUMN_GROUPS`` name → translated heading."""
+    """``core.course_design.positions.COLUMN_GROUPS`` name → translated heading."""
     return {"ram": translate("Columns", "Ram"), "lever": translate("Columns", "Lever and block"), "rod": translate("Columns", "Connecting rod"),
             "torque": translate("Columns", "Crank torque, cutting force and guide"),
             "joints_crank": translate("Columns", "Joint forces at O2 and A"),

@@ -10,10 +10,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Sequence
 
 from core.cli.common import UsageError
-from core.text import UNDECODABLE, UNPRINTABLE
+from core.base.text import UNDECODABLE, UNPRINTABLE
 
 if TYPE_CHECKING:
-    from core.compare import Candidate
+    from core.space.compare import Candidate
 
 MAX_TEXT = 200
 
@@ -42,7 +42,7 @@ def plain_text(text: str) -> str:
 
 
 def printable_labels(candidates: Sequence[Candidate]) -> list[Candidate]:
-    """Comparison candidates (``core.compare.Candidate``) labelled as :func:`plain_text`: a
+    """Comparison candidates (``core.space.compare.Candidate``) labelled as :func:`plain_text`: a
     file's name with a control character made the comparison's SVG figures unreadable
     (the report failed on a drawing of size 0)."""
     from dataclasses import replace
@@ -137,7 +137,7 @@ def inputs_from_args(args: argparse.Namespace):
     """The design's inputs, its speeds and its loads (None when none were given), checked."""
     from core.cli.cmd_table import masses_or_none
     from core.cli.common import rpms_from_args, spec_from_args
-    from core.kinematics import check_rpms
+    from core.linkage.kinematics import check_rpms
     spec = spec_from_args(args)
     design = spec.design()                  # its error first, as every command reports it
     rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
@@ -147,8 +147,8 @@ def inputs_from_args(args: argparse.Namespace):
 def diagram_angles(args: argparse.Namespace) -> tuple[float, float] | None:
     """--diagrams A,B as two crank angles in degrees, or None when not given."""
     from core.cli.common import number_list
-    from core.errors import DesignError
-    from core.positions import check_extra
+    from core.base.errors import DesignError
+    from core.course_design.positions import check_extra
     if args.diagrams is None:
         return None
     values = check_extra(number_list("diagrams", args.diagrams))

@@ -12,7 +12,7 @@ module and name, its keyword arguments (a snapshot of the design taken when the 
 started) and the language. The child answers on stdout in lines (:func:`parse_line`):
 ``progress F`` (fraction done), ``file PATH`` (a file complete), ``error DATA`` (the
 exception that stopped it, pickled). SIGTERM asks it to stop at the next step
-(``core.progress``); the file being made is then not written. Exit status: 0 done,
+(``core.base.progress``); the file being made is then not written. Exit status: 0 done,
 1 failed, 3 cancelled.
 """
 from __future__ import annotations
@@ -66,7 +66,7 @@ def error_line(exc: BaseException) -> str:
 
 
 def main() -> int:
-    from core.progress import Cancelled, Progress
+    from core.base.progress import Cancelled, Progress
     stop = []
     signal.signal(signal.SIGTERM, lambda *_: stop.append(True))
     job = pickle.loads(sys.stdin.buffer.read())

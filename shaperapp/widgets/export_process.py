@@ -6,7 +6,7 @@ that blocks nothing (non-modal) shows how far the child is, and the busy cursor 
 with an hourglass: working, and still answering) is on until it ends. Cancel asks the
 child to stop (SIGTERM: it stops at the next step, the file being made not written) and
 kills it if it has not ended within :data:`KILL_AFTER_MS`; the temporary files a killed
-child leaves are removed here (``core.atomic.remove_stale_temps``), so the target folder
+child leaves are removed here (``core.files.atomic.remove_stale_temps``), so the target folder
 holds only complete files. Why a child and not a thread: see ``export_child``.
 """
 from __future__ import annotations
@@ -19,7 +19,7 @@ from PySide6.QtCore import QCoreApplication, QEventLoop, QObject, QProcess, QPro
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QProgressDialog, QWidget
 
-from core.atomic import remove_stale_temps
+from core.files.atomic import remove_stale_temps
 
 from .export_child import EXIT_CANCELLED, EXIT_DONE, parse_line
 

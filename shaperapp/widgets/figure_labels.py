@@ -1,4 +1,4 @@
-"""Translated names of core's key figures (``core.figures``), shared by the library
+"""Translated names of core's key figures (``core.space.figures``), shared by the library
 pane and the compare view so a figure is called the same everywhere."""
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import math
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
-from core.figure_text import figure_text
+from core.base.figure_text import figure_text
 
 _LABELS = {
     "name": QT_TRANSLATE_NOOP("figures", "Name"),
@@ -89,7 +89,7 @@ def format_figure(key: str, value: object) -> str:
 
 
 def figure_kind(key: str) -> str:
-    """The kind of ``core.figure_text`` a figure key is written as (one precision per kind)."""
+    """The kind of ``core.base.figure_text`` a figure key is written as (one precision per kind)."""
     if key in ("mean_torque_N_m", "max_torque_N_m"):
         return "torque"
     if key == "flywheel_inertia_kg_m2":

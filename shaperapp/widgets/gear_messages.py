@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from core.gear import Check
 from core.gear.advice import Move
 from core.gear.shift import bound_text

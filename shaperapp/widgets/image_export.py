@@ -25,7 +25,7 @@ from PySide6.QtGui import QColor, QImage, QImageWriter, QPainter, QPicture
 from PySide6.QtSvg import QSvgGenerator
 from PySide6.QtWidgets import QGraphicsScene
 
-from core.atomic import atomic_write
+from core.files.atomic import atomic_write
 
 from .messages import describe_os_error
 

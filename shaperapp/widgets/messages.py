@@ -11,8 +11,8 @@ import re
 
 from PySide6.QtCore import QCoreApplication
 
-from core.errors import DesignError, FileFormatError
-from core.errors import os_reason as core_os_reason
+from core.base.errors import DesignError, FileFormatError
+from core.base.errors import os_reason as core_os_reason
 
 # Error text in the one weight every script has: a bold Latin run beside regular CJK
 # glyphs (fonts without a semi-bold CJK face) looked like two kinds of message.
@@ -146,7 +146,7 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      r"reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
      "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm "
      "reaches %2 mm past a − boss − clearance = %3 mm"),
-    # what a design file can hold wrong (core.design_file, Spec.from_dict, core.cam.file)
+    # what a design file can hold wrong (core.files.design_file, Spec.from_dict, core.cam.file)
     (r"is not a design field$", "is not a design field"),
     (r"is not a load input$", "is not a load input"),
     (r"is not a cam field$", "is not a cam field"),
@@ -269,7 +269,7 @@ def failure_reason(error: Exception) -> str:
 
 
 def _file_templates() -> dict[str, str]:
-    # core.errors.FILE_REASONS in the UI's language (%1 the file, %2, %3 … the values);
+    # core.base.errors.FILE_REASONS in the UI's language (%1 the file, %2, %3 … the values);
     # listed literally so pyside6-lupdate finds every template.
     return {
         "too_large": QCoreApplication.translate("messages", "%1 is larger than %2 MB, too large to be a design file"),
@@ -298,7 +298,7 @@ def _file_templates() -> dict[str, str]:
 
 def os_reason(number: int | None, fallback: str, reading: bool = False) -> str:
     """Why a file could not be read or written, by the system's error number, in the UI's
-    language (core.errors.os_reason's reasons); ``fallback`` (the system's own words) for
+    language (core.base.errors.os_reason's reasons); ``fallback`` (the system's own words) for
     another number."""
     reasons = {
         errno.ENOSPC: QCoreApplication.translate("messages", "the disk is full (no space left on the device)"),
@@ -330,7 +330,7 @@ def describe_os_error(error: OSError) -> str:
 def describe_file_error(error: FileFormatError) -> str:
     """Why a design file (or library entry) was refused, in the current UI language.
 
-    Built from the error's reason and values (``core.errors.FILE_REASONS``), never from
+    Built from the error's reason and values (``core.base.errors.FILE_REASONS``), never from
     core's English sentence; an invalid design's DesignError is described as the form
     would (:func:`describe`). An error without a reason keeps its own text."""
     template = _file_templates().get(error.reason)

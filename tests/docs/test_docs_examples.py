@@ -1,5 +1,5 @@
 """Every ```python block of the README and of docs/ runs as written: an example that
-imports a name from the wrong module (``summarize`` from ``core.dynamics``) fails here."""
+imports a name from the wrong module (``summarize`` from ``core.forces.dynamics``) fails here."""
 import re
 from pathlib import Path
 

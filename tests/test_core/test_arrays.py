@@ -1,11 +1,11 @@
-"""core.arrays.sorted_unique against numpy's np.unique, which it replaces to keep
+"""core.base.arrays.sorted_unique against numpy's np.unique, which it replaces to keep
 numpy.ma out of start-up."""
 import numpy as np
 from hypothesis import given
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from core.arrays import sorted_unique
+from core.base.arrays import sorted_unique
 
 
 @given(arrays(np.float64, st.integers(0, 60), elements=st.floats(-1e6, 1e6) | st.sampled_from([0.0, -0.0, 1.0])))

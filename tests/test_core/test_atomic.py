@@ -1,4 +1,4 @@
-"""core.atomic.atomic_write: special targets, permissions, symlinks, durability, failures.
+"""core.files.atomic.atomic_write: special targets, permissions, symlinks, durability, failures.
 
 Every file lives under tmp_path; device-like targets are FIFOs, pipes and
 /proc/self/fd links made here, never a real device.
@@ -11,8 +11,8 @@ import sys
 
 import pytest
 
-from core.atomic import atomic_write, remove_stale_temps, temp_pattern
-from core.errors import WriteError
+from core.files.atomic import atomic_write, remove_stale_temps, temp_pattern
+from core.base.errors import WriteError
 
 from output_checks import read_fifo_in_background
 

@@ -6,11 +6,11 @@ import json
 import numpy as np
 import pytest
 
-from core.compare import Candidate, best_indices, compare, comparison_document, curves_csv, table_csv
-from core.dynamics import MassProperties
-from core.errors import DesignError
-from core.io import masses_to_dict, save_design
-from core.spec import Spec
+from core.space.compare import Candidate, best_indices, compare, comparison_document, curves_csv, table_csv
+from core.forces.dynamics import MassProperties
+from core.base.errors import DesignError
+from core.files.io import masses_to_dict, save_design
+from core.linkage.spec import Spec
 from cli_runner import shaper
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,

@@ -2,8 +2,8 @@
 of them never reads the same for two designs that differ in a number they use."""
 from dataclasses import replace
 
-from core.compare import distinguishing_inputs
-from core.spec import Spec
+from core.space.compare import distinguishing_inputs
+from core.linkage.spec import Spec
 
 
 def test_synthesis_names_k_and_what_differs():
@@ -25,8 +25,8 @@ def test_dimensions_and_rod_inputs():
 
 
 def test_choices_that_numbers_do_not_show():
-    from core.compare import Candidate, distinguishing_choices
-    from core.dynamics import MassProperties
+    from core.space.compare import Candidate, distinguishing_choices
+    from core.forces.dynamics import MassProperties
     rod = Spec(variant="rod", guide_rule="sagitta")
     leading = replace(rod, rod_side="leading")
     chord = replace(rod, guide_rule="chord")

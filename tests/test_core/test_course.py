@@ -1,4 +1,4 @@
-"""core.course: the course design's list of files, what each needs of the design file,
+"""core.course_design.plan: the course design's list of files, what each needs of the design file,
 and every refusal found before anything is written (issue 35, item 6)."""
 import itertools
 import json
@@ -6,10 +6,10 @@ import os
 
 import pytest
 
-from core.course import (PARTS, REPORT, CourseError, Part, file_names, missing_parts,
+from core.course_design.plan import (PARTS, REPORT, CourseError, Part, file_names, missing_parts,
                          plan_course, read_document)
-from core.io import design_document, masses_to_dict
-from core.spec import Spec
+from core.files.io import design_document, masses_to_dict
+from core.linkage.spec import Spec
 
 NEEDED = ("rpm", "forces", "cam", "gear")     # the keys besides "spec" some file needs
 CAM = {"arm_mm": 150.0, "swing_deg": 15.0, "rise_deg": 60.0, "dwell_deg": 10.0, "return_deg": 60.0,
@@ -18,7 +18,7 @@ GEAR = {"z1": 13, "z2": 40, "module_mm": 6.0, "centre_mm": 162.0}
 
 
 def document(drop=()):
-    from core.dynamics import MassProperties
+    from core.forces.dynamics import MassProperties
     doc = design_document(Spec(), [40.0, 60.0], 1.0,
                           {"forces": masses_to_dict(MassProperties(cut_force_N=7000.0)), "cam": CAM,
                            "gear": GEAR})

@@ -10,16 +10,16 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from cli_runner import shaper
-from core.cut import SWITCH_TOLERANCE, cut_window, cutting
-from core.designs import Designs
-from core.dynamics import MassProperties, solve_dynamics
-from core.errors import DesignError
-from core.flywheel import summarize
-from core.geometry import from_dimensions, synthesize
-from core.kinematics import solve
-from core.optimize import optimize
-from core.positions import position_table, positions
-from core.spec import Spec
+from core.linkage.cut import SWITCH_TOLERANCE, cut_window, cutting
+from core.linkage.designs import Designs
+from core.forces.dynamics import MassProperties, solve_dynamics
+from core.base.errors import DesignError
+from core.forces.flywheel import summarize
+from core.linkage.geometry import from_dimensions, synthesize
+from core.linkage.kinematics import solve
+from core.space.optimize import optimize
+from core.course_design.positions import position_table, positions
+from core.linkage.spec import Spec
 
 LOADS = ["--lever-mass", "30", "--lever-inertia", "2", "--ram-mass", "200",
          "--cut-force", "9000"]

@@ -12,12 +12,12 @@ from hypothesis import strategies as st
 from cli_runner import shaper
 from core.cam.laws import Program
 from core.cam.timing import timing
-from core.cut import cut_window
-from core.designs import Designs
-from core.errors import DesignError
-from core.geometry import from_dimensions, synthesize
-from core.kinematics import shape
-from core.positions import positions
+from core.linkage.cut import cut_window
+from core.linkage.designs import Designs
+from core.base.errors import DesignError
+from core.linkage.geometry import from_dimensions, synthesize
+from core.linkage.kinematics import shape
+from core.course_design.positions import positions
 
 EXACT = 1e-12        # rad
 FEED = Program(rise_deg=20.0, dwell_deg=0.0, return_deg=20.0)   # fits beside K up to 5

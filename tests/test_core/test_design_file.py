@@ -5,9 +5,9 @@ import time
 
 import pytest
 
-from core.errors import FileFormatError
-from core.io import load_design, save_design
-from core.spec import Spec
+from core.base.errors import FileFormatError
+from core.files.io import load_design, save_design
+from core.linkage.spec import Spec
 
 from hostile_files import CASES, DUPLICATES, VALID, build_case
 
@@ -105,7 +105,7 @@ def test_a_key_written_twice_is_refused_naming_it(tmp_path, key):
     """Issue 42: json kept the last of two "spec" objects (K 1.6 used, K 1.4 ignored), two
     "gear" objects, "z1": 3, "z1": 13 silently. Each document is valid once read by plain
     json (so the repeat is its only defect) and is now refused in one line naming the key."""
-    from core.design_file import parse_design
+    from core.files.design_file import parse_design
     text = DUPLICATES[key]
     parse_design(json.dumps(json.loads(text)).encode(), "plain")      # valid but for the repeat
     path = tmp_path / "twice.json"

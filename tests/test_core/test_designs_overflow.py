@@ -5,8 +5,8 @@ import warnings
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from core.errors import DesignError
-from core.spec import Spec
+from core.base.errors import DesignError
+from core.linkage.spec import Spec
 
 FINITE = st.floats(min_value=-1.7976931348623157e308, max_value=1.7976931348623157e308,
                    allow_nan=False, allow_infinity=False)

@@ -15,13 +15,13 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from core.dynamics import GRAVITY, MassProperties, solve_dynamics
+from core.forces.dynamics import GRAVITY, MassProperties, solve_dynamics
 
-from core.flywheel import summarize
-from core.errors import DesignError
-from core.geometry import Design, synthesize
-from core.kinematics import MIN_RPM, crank_angles, shape
-from core.metrics import analyze
+from core.forces.flywheel import summarize
+from core.base.errors import DesignError
+from core.linkage.geometry import Design, synthesize
+from core.linkage.kinematics import MIN_RPM, crank_angles, shape
+from core.linkage.metrics import analyze
 
 MM = 1e-3
 RPMS = [25.0, 40.0, 63.0]

@@ -1,8 +1,8 @@
 """ΔW_max, the flywheel and the mean torque against a reference that shares nothing with
-``core.flywheel``: the driving torque is integrated by high-order Gauss–Legendre
+``core.forces.flywheel``: the driving torque is integrated by high-order Gauss–Legendre
 quadrature, split at the cut's switch angles found here by Brent's method on the ram
 displacement, and the energy curve's extremes are searched on a dense grid of that
-torque and polished by Brent's method. ``core.flywheel`` instead takes E(φ) from the
+torque and polished by Brent's method. ``core.forces.flywheel`` instead takes E(φ) from the
 mechanism's stored energy and the cut's travel, with the slopes' zeros bracketed on its
 own grid; the two must agree to 1e-9 of ΔW_max.
 """
@@ -14,11 +14,11 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from core.dynamics import MassProperties, solve_dynamics
-from core.errors import DesignError
-from core.flywheel import summarize
-from core.geometry import Design, from_dimensions, synthesize
-from core.kinematics import solve
+from core.forces.dynamics import MassProperties, solve_dynamics
+from core.base.errors import DesignError
+from core.forces.flywheel import summarize
+from core.linkage.geometry import Design, from_dimensions, synthesize
+from core.linkage.kinematics import solve
 
 NODES, WEIGHTS = np.polynomial.legendre.leggauss(24)
 PANEL = math.radians(0.5)          # widest quadrature panel

@@ -1,6 +1,6 @@
 """Every reported peak is the true extremum of the closed-form curves (issue 7, item 1).
 
-The reference here is written independently of core.extrema and core.metrics:
+The reference here is written independently of core.linkage.extrema and core.linkage.metrics:
 the curves are sampled on a very fine uniform grid of the crank angle, the
 largest sample is refined with scipy's bounded scalar minimizer inside its two
 neighbouring cells, and the better of both is the reference. Designs are drawn
@@ -16,15 +16,15 @@ from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import minimize_scalar
 
-from core.designs import ROD_MARGIN
-from core.dynamics import MassProperties, solve_dynamics
-from core.flywheel import summarize
-from core.errors import DesignError
-from core.geometry import Design, from_dimensions, rod_drive_margin, synthesize
-from core.kinematics import pressure_angle, shape
-from core.extrema import grid_argmax
-from core.polish import polish_minimum
-from core.metrics import analyze, lever_peaks
+from core.linkage.designs import ROD_MARGIN
+from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.flywheel import summarize
+from core.base.errors import DesignError
+from core.linkage.geometry import Design, from_dimensions, rod_drive_margin, synthesize
+from core.linkage.kinematics import pressure_angle, shape
+from core.linkage.extrema import grid_argmax
+from core.linkage.polish import polish_minimum
+from core.linkage.metrics import analyze, lever_peaks
 
 DENSE = 100_001
 finite = dict(allow_nan=False, allow_infinity=False)
@@ -268,7 +268,7 @@ def test_piece_maximum_finds_a_peak_just_inside_its_interval_whose_sample_lies_o
     its nearest sample just before the switch, outside the piece, so no sample inside
     was a local maximum and only the piece's end counted. Here f = −(x − 0.505)² sampled
     every 0.1 on [0, 1], the interval [0.503, 1]: the maximum, 0 at 0.505, is by hand."""
-    from core.extrema import piece_maximum
+    from core.linkage.extrema import piece_maximum
 
     def f(x):
         return -(x - 0.505) ** 2

@@ -3,8 +3,8 @@ import math
 
 import pytest
 
-from core.errors import DesignError
-from core.geometry import Design, from_dimensions, guide_height, synthesize
+from core.base.errors import DesignError
+from core.linkage.geometry import Design, from_dimensions, guide_height, synthesize
 
 
 def test_seed003_example():
@@ -93,7 +93,7 @@ def test_rod_dead_centre_refused():
 
 def test_dimensions_imply_k_at_most_5():
     """seed 003 bounds K ≤ 5 in synthesis; direct dimensions are held to the same K."""
-    from core.geometry import MAX_CRANK_RATIO
+    from core.linkage.geometry import MAX_CRANK_RATIO
     ok = from_dimensions(86.6, 100.0, 400.0, guide=300.0)
     assert ok.time_ratio <= 5.0
     with pytest.raises(DesignError) as info:

@@ -4,11 +4,11 @@ import json
 import numpy as np
 import pytest
 
-from core.errors import FileFormatError
-from core.io import atomic_write, curve_table, curves_csv, load_design, save_design
-from core.geometry import synthesize
-from core.kinematics import crank_angles, solve
-from core.spec import Spec
+from core.base.errors import FileFormatError
+from core.files.io import atomic_write, curve_table, curves_csv, load_design, save_design
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import crank_angles, solve
+from core.linkage.spec import Spec
 
 
 def test_round_trip(tmp_path):
@@ -75,8 +75,8 @@ def test_csv_table_is_long_form():
 
 
 def test_loads_round_trip_and_refusal(tmp_path):
-    from core.dynamics import MassProperties
-    from core.io import masses_to_dict
+    from core.forces.dynamics import MassProperties
+    from core.files.io import masses_to_dict
     masses = MassProperties(lever_mass_kg=22.5, lever_cg_mm=250.0, ram_mass_kg=60, ram_cg_mm=(-30.0, 45.0),
                             cut_force_N=5000, gravity=False, delta=0.05)
     path = tmp_path / "m.json"

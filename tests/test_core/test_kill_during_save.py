@@ -19,9 +19,9 @@ import time
 
 import pytest
 
-from core.atomic import atomic_write, temp_pattern
-from core.io import load_design, save_design
-from core.spec import Spec
+from core.files.atomic import atomic_write, temp_pattern
+from core.files.io import load_design, save_design
+from core.linkage.spec import Spec
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -29,9 +29,9 @@ ITERATIONS = 60
 
 HELPER = r"""
 import os, sys
-from core.atomic import atomic_write
-from core.io import save_design
-from core.spec import Spec
+from core.files.atomic import atomic_write
+from core.files.io import save_design
+from core.linkage.spec import Spec
 
 csv_path, design_path, version_a, version_b = sys.argv[1:5]
 texts = [open(version_a).read(), open(version_b).read()]

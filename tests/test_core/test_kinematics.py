@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from core.geometry import synthesize
-from core.kinematics import crank_angles, rpm_to_omega, shape, solve
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import crank_angles, rpm_to_omega, shape, solve
 
 DESIGNS = {
     "block": synthesize(100, 1.4, 300),
@@ -94,7 +94,7 @@ def test_angle_grid():
 def test_block_peak_speeds_match_hand_calculation():
     # With the crank pin on the line O2O4 the lever turns at ω·L1/(L2 ± L1); the ram
     # (block variant) then moves at L3 times that: the textbook quick-return check.
-    from core.metrics import analyze
+    from core.linkage.metrics import analyze
     d = synthesize(100, 1.4, 300)
     w = 40 * 2 * math.pi / 60
     s = analyze(d, [40]).speeds[0]

@@ -1,11 +1,11 @@
 """The lever's force polygon: its inertia force from the kinematics and the joint forces
-from core.dynamics close, which checks the lever's equilibrium in core.dynamics."""
+from core.forces.dynamics close, which checks the lever's equilibrium in core.forces.dynamics."""
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties, masses_for_design, solve_dynamics
-from core.geometry import synthesize
-from core.polygons import lever_force_polygon
+from core.forces.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.linkage.geometry import synthesize
+from core.forces.polygons import lever_force_polygon
 
 LOADS = dict(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70, cut_force_N=7000,
              cut_height_mm=80, block_mass_kg=3, lever_cg_mm=250)
@@ -38,7 +38,7 @@ def test_inertia_force_against_finite_differences():
     position, here by central differences of the positions (step 1e-4 rad)."""
     design, m = DESIGNS["rod"], masses(DESIGNS["rod"])
     angle, rpm, h = 123.0, 60.0, 1e-4
-    from core.kinematics import rpm_to_omega, shape
+    from core.linkage.kinematics import rpm_to_omega, shape
     phi = np.radians(angle) + np.array([-h, 0.0, h])
     tip = shape(design, phi).lever_tip                          # (2, 3) mm, along the lever
     cg = tip * (m.lever_cg(design) / design.lever) * 1e-3        # m

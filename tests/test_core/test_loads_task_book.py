@@ -16,12 +16,12 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from core.design_file import masses_from_dict, masses_to_dict
-from core.dynamics import GRAVITY, MassProperties, solve_dynamics
-from core.errors import DesignError
-from core.flywheel import summarize
-from core.geometry import synthesize
-from core.kinematics import shape, ram_origin
+from core.files.design_file import masses_from_dict, masses_to_dict
+from core.forces.dynamics import GRAVITY, MassProperties, solve_dynamics
+from core.base.errors import DesignError
+from core.forces.flywheel import summarize
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import shape, ram_origin
 
 MM = 1e-3
 
@@ -204,7 +204,7 @@ def test_the_kinetostatic_sheet_prints_the_end_forces_and_the_flywheel_needed():
     assert rows["Guide reaction N, φ = 270°"] == f"700 N, {d.guide_offset_mm[0, 1]:.4g} mm from C"
     s = summarize(design, [60.0], m)
     table = dict(flywheel_rows(s, m, ENGLISH))
-    assert table[ENGLISH["J_c"]] == "5.000 kg·m²"     # 4 significant digits, core/figure_text.py
+    assert table[ENGLISH["J_c"]] == "5.000 kg·m²"     # 4 significant digits, core/base/figure_text.py
     assert table[ENGLISH["J_needed"]] == f"{s.speeds[0].flywheel_inertia_kg_m2 - 5.0:.4g} kg·m²"
     none = task_book(rotors=((1e5, 1.0),))
     assert dict(flywheel_rows(summarize(design, [60.0], none), none, ENGLISH))[ENGLISH["J_needed"]] \

@@ -1,4 +1,4 @@
-"""The vectorized "%.10g" (core.numtext, issue 24) against Python's own formatting, and the
+"""The vectorized "%.10g" (core.files.numtext, issue 24) against Python's own formatting, and the
 CSV files of ``shaper`` against the files the code before it wrote.
 
 Python's ``"%.10g" % value`` is the reference: it is what every CSV here was written with
@@ -15,10 +15,10 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from core.cli import main
-from core.io import curve_table, snap_zeros, table_csv
-from core.geometry import synthesize
-from core.kinematics import solve
-from core.numtext import g10_rows
+from core.files.io import curve_table, snap_zeros, table_csv
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import solve
+from core.files.numtext import g10_rows
 from output_checks import as_golden_wrote
 
 GOLDEN = json.loads((Path(__file__).parents[1] / "data" / "csv_golden.json").read_text())

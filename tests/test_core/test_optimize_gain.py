@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from cli_runner import shaper
-from core.geometry import synthesize
-from core.kinematics import solve
-from core.optimize import GAIN_TOLERANCE, improves, insensitive
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import solve
+from core.space.optimize import GAIN_TOLERANCE, improves, insensitive
 
 BASE = ["optimize", "--crank", "50", "--K", "1.4", "--stroke", "300", "--objective", "accel",
         "--rpm", "200"]

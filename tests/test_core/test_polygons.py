@@ -6,10 +6,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from core.dynamics import MassProperties, solve_dynamics
-from core.geometry import synthesize
-from core.kinematics import rpm_to_omega, shape, solve
-from core.polygons import (acceleration_polygon, force_polygon, nice_scale, paper, polygons,
+from core.forces.dynamics import MassProperties, solve_dynamics
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import rpm_to_omega, shape, solve
+from core.forces.polygons import (acceleration_polygon, force_polygon, nice_scale, paper, polygons,
                            velocity_polygon)
 from test_properties import designs
 

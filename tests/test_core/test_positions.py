@@ -6,14 +6,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from core.cut import cutting_force
-from core.dynamics import MassProperties, solve_dynamics
-from core.errors import DesignError
-from core.geometry import Design, synthesize
-from core.io import curve_table
-from core.kinematics import shape, solve
-from core.metrics import analyze
-from core.positions import (SPECIAL_NAMES, display_values, number_text, position_table,
+from core.linkage.cut import cutting_force
+from core.forces.dynamics import MassProperties, solve_dynamics
+from core.base.errors import DesignError
+from core.linkage.geometry import Design, synthesize
+from core.files.io import curve_table
+from core.linkage.kinematics import shape, solve
+from core.linkage.metrics import analyze
+from core.course_design.positions import (SPECIAL_NAMES, display_values, number_text, position_table,
                             positions, positions_csv, special_angles, table_records)
 from test_properties import designs
 
@@ -173,8 +173,8 @@ def test_display_cleans_round_off_only():
 @given(designs())
 def test_margins_are_positive_and_vanish_at_the_rule(case):
     """Every accepted design clears every rule; moving a length by its margin reaches the rule."""
-    from core.geometry import Design
-    from core.margins import margins
+    from core.linkage.geometry import Design
+    from core.linkage.margins import margins
     design = case[0]
     found = {m.rule: m for m in margins(design)}
     assert all(m.margin >= 0 for m in found.values())

@@ -6,10 +6,10 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from core.errors import DesignError
-from core.geometry import synthesize
-from core.kinematics import crank_angles, solve
-from core.metrics import analyze
+from core.base.errors import DesignError
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import crank_angles, solve
+from core.linkage.metrics import analyze
 
 finite = dict(allow_nan=False, allow_infinity=False)
 

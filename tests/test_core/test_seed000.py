@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from core.geometry import from_dimensions
-from core.kinematics import solve
+from core.linkage.geometry import from_dimensions
+from core.linkage.kinematics import solve
 
 from seed000 import L1, L3, L4, L6, L61, six_bar
 from locations import DATA

@@ -5,9 +5,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from core.errors import DesignError
-from core.geometry import MAX_TIME_RATIO
-from core.spec import NUMBER_FIELDS, Spec
+from core.base.errors import DesignError
+from core.linkage.geometry import MAX_TIME_RATIO
+from core.linkage.spec import NUMBER_FIELDS, Spec
 
 
 def same_design(a, b, rel=1e-9):

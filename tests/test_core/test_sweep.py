@@ -5,14 +5,14 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties
+from core.forces.dynamics import MassProperties
 
-from core.flywheel import summarize
-from core.errors import DesignError
-from core.metrics import analyze
-from core.optimize import objective_of, optimize
-from core.spec import Spec
-from core.sweep import evaluate, grid, spec_changes, spec_designs
+from core.forces.flywheel import summarize
+from core.base.errors import DesignError
+from core.linkage.metrics import analyze
+from core.space.optimize import objective_of, optimize
+from core.linkage.spec import Spec
+from core.space.sweep import evaluate, grid, spec_changes, spec_designs
 
 RNG_SEED = 11
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
@@ -214,7 +214,7 @@ def test_a_sweep_best_on_the_end_of_the_box_starts_the_search():
 
 
 def test_tidy_values_round_to_the_resolution_inside_bounds_and_stay_valid():
-    from core.sweep import tidy_values
+    from core.space.sweep import tidy_values
 
     spec = Spec()
     assert tidy_values(spec, {"crank": 52.564102564102564, "time_ratio": 1.2999999999},
@@ -238,7 +238,7 @@ def test_tidy_values_round_to_the_resolution_inside_bounds_and_stay_valid():
     ("pressure-angle", {"rod_ratio": (0.3, 1.0), "guide": (480.0, 620.0)}),
 ])
 def test_tidy_optimum_is_short_close_and_no_worse_than_a_millionth(objective, bounds):
-    from core.optimize import tidy_optimum
+    from core.space.optimize import tidy_optimum
 
     spec = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
     best = optimize(spec, bounds, objective, [40.0, 60.0])

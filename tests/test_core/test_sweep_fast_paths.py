@@ -1,9 +1,9 @@
 """The sweep's faster paths give the figures of the slower ones (issue 24).
 
 The grid shares the lever tip's terms between designs with the same L1, L2, L3
-(core.metrics.shared_rates): the rates are rates_at's, bit for bit. The peaks are
+(core.linkage.metrics.shared_rates): the rates are rates_at's, bit for bit. The peaks are
 polished by Newton's method on the slope: the fourth derivative it needs
-(core.rates.rates4_at) is checked against finite differences of the third, the
+(core.linkage.rates.rates4_at) is checked against finite differences of the third, the
 polisher (polish.newton_maximum) against maxima known in closed form, and the peaks
 against those of the bracketed search it replaces.
 """
@@ -14,14 +14,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from core import metrics
-from core.designs import Designs
-from core.extrema import grid_argmax
-from core.polish import newton_maximum
-from core.rates import rates4_at, rates_at
-from core.metrics import _BETA, _BETA_FINE, cycle_peaks, shared_rates
-from core.spec import Spec
-from core.sweep import grid, spec_designs
+from core.linkage import metrics
+from core.linkage.designs import Designs
+from core.linkage.extrema import grid_argmax
+from core.linkage.polish import newton_maximum
+from core.linkage.rates import rates4_at, rates_at
+from core.linkage.metrics import _BETA, _BETA_FINE, cycle_peaks, shared_rates
+from core.linkage.spec import Spec
+from core.space.sweep import grid, spec_designs
 
 finite = dict(allow_nan=False, allow_infinity=False)
 
@@ -203,9 +203,9 @@ def test_sweep_peaks_equal_the_bracketed_search_in_three_or_four_evaluations(mon
 def test_reasons_read_each_rule_flattened_once(monkeypatch):
     """Verdict.error reads a rule's values (and a message's numbers) from arrays flattened
     once per rule, not once per invalid design; the errors are those of the designs alone."""
-    from core import designs as designs_module
-    from core import verdict as verdict_module
-    from core.geometry import synthesize
+    from core.linkage import designs as designs_module
+    from core.linkage import verdict as verdict_module
+    from core.linkage.geometry import synthesize
     k, stroke = np.meshgrid(np.linspace(1.05, 4.95, 40), np.linspace(150.0, 600.0, 30))
     _, verdict = designs_module.synthesize_many(100.0, k, stroke, rod_ratio=0.3)  # 2-D
     bad = np.flatnonzero(~verdict.ok.reshape(-1))

@@ -1,7 +1,7 @@
 """A loaded sweep's row equals the single design's summary (issue 42, item 12).
 
-The sweep samples each cycle at ``core.sweep.SWEEP_INTERVALS`` crank-angle intervals to
-bracket the torque and energy extrema, a fortieth of what :func:`core.flywheel.summarize`
+The sweep samples each cycle at ``core.space.sweep.SWEEP_INTERVALS`` crank-angle intervals to
+bracket the torque and energy extrema, a fortieth of what :func:`core.forces.flywheel.summarize`
 (the per-design reference, 3600 intervals) samples; the extrema are polished on the
 closed form either way, so every loaded figure must agree to 1e-9 on random designs
 and random loads, block and rod variants, with and without gravity, and to the polish's
@@ -14,13 +14,13 @@ from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 from test_extrema import corner_designs
 
-from core.designs import Designs
-from core.dynamics import ENERGY_INTERVALS, MassProperties
-from core.flywheel import cycle_summary, summarize
-from core.geometry import Design
-from core.kinematics import rpm_to_omega
-from core.spec import Spec
-from core.sweep import SWEEP_INTERVALS, evaluate
+from core.linkage.designs import Designs
+from core.forces.dynamics import ENERGY_INTERVALS, MassProperties
+from core.forces.flywheel import cycle_summary, summarize
+from core.linkage.geometry import Design
+from core.linkage.kinematics import rpm_to_omega
+from core.linkage.spec import Spec
+from core.space.sweep import SWEEP_INTERVALS, evaluate
 
 KEYS = ("mean_torque_N_m", "max_torque_N_m", "min_torque_N_m", "energy_fluctuation_J",
         "flywheel_inertia_kg_m2")
@@ -66,7 +66,7 @@ def test_a_loaded_sweep_row_equals_the_single_design_summary(variant, seed):
        st.lists(st.sampled_from([1.0, 5.0, 20.0, 60.0, 150.0, 400.0]), min_size=1, max_size=3,
                 unique=True))
 # K = 1.01 with a 47 m lever: the minimum torque lies 0.006 rad after the cut's end, its
-# nearest sample before it; core.extrema.piece_maximum took only samples inside the piece
+# nearest sample before it; core.linkage.extrema.piece_maximum took only samples inside the piece
 # and the sweep reported the piece's end, 1.6e-5 of the peak too high (found by a dense
 # comparison of random designs; so was the 1.01 crank-to-frame corner below).
 @example(Design(crank=132.25269611865468, frame=16923.303199225724, lever=47031.4996465547,

@@ -19,7 +19,7 @@ from cli_runner import shaper_in_process
 from core.cam import CamInputs, Program, design_cam
 from core.cam.file import cam_from_dict, cam_to_dict
 from core.cam.laws import LAWS
-from core.errors import DesignError
+from core.base.errors import DesignError
 
 import cam_reference as ref
 

@@ -17,7 +17,7 @@ from core.cam.laws import LAWS
 from core.cam.cam import checked_follower, figures
 from core.cam.synthesis import largest_roller, synthesize
 from core.cam.table import follower_peaks
-from core.errors import DesignError
+from core.base.errors import DesignError
 
 import cam_oracle as oracle
 from sweeps import examples

@@ -1,5 +1,5 @@
 """The motion laws (against finite differences and the textbook's peak coefficients) and the
-feed's timing against the linkage's cut (against core.cut's own rule)."""
+feed's timing against the linkage's cut (against core.linkage.cut's own rule)."""
 from __future__ import annotations
 
 import math
@@ -10,9 +10,9 @@ import pytest
 from core.cam import CamInputs, Program, design_cam
 from core.cam.laws import LAWS, law
 from core.cam.timing import timing
-from core.cut import cutting
-from core.errors import DesignError
-from core.spec import Spec
+from core.linkage.cut import cutting
+from core.base.errors import DesignError
+from core.linkage.spec import Spec
 
 # The textbook's coefficients: max ds/du and max |d²s/du²| of each normalized rise.
 PEAKS = {"parabolic": (2.0, 4.0), "cosine": (math.pi / 2, math.pi ** 2 / 2),

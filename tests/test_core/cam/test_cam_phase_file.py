@@ -10,8 +10,8 @@ from core.cam import Program
 from core.cam.cam import CamInputs
 from core.cam.file import cam_from_dict, cam_to_dict
 from core.cam.timing import timing
-from core.errors import DesignError
-from core.spec import Spec
+from core.base.errors import DesignError
+from core.linkage.spec import Spec
 
 DESIGN = ["--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40"]
 

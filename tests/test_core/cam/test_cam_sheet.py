@@ -17,8 +17,8 @@ from core.cli.cmd_cam import summary_rows
 from core.drawing.cam_sheet import ENGLISH, cam_sheet, ratio_text
 from core.drawing.checks import outside_border, overlapping_texts
 from core.drawing.sheet import Circle, Polyline, Text, marked, paper
-from core.errors import DesignError
-from core.geometry import synthesize
+from core.base.errors import DesignError
+from core.linkage.geometry import synthesize
 from sheet_checks import assert_laid_out
 
 import cam_reference as ref

@@ -13,7 +13,7 @@ import pytest
 from core.cam import CamInputs, Program, design_cam
 from core.drawing.cam_sheet import cam_sheet
 from core.drawing.sheet import Polyline, paper
-from core.geometry import from_dimensions, synthesize
+from core.linkage.geometry import from_dimensions, synthesize
 
 SCHEME_I = from_dimensions(110.0, 380.0, 540.0, rod=135.0)
 DATA_SHEET = CamInputs(120.0, Program(15.0, 60.0, 10.0, 60.0, "sine", "sine"))

@@ -7,9 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from core.geometry import synthesize
-from core.kinematics import crank_angles, solve
-from core.metrics import analyze
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import crank_angles, solve
+from core.linkage.metrics import analyze
 
 from cli_runner import shaper
 

@@ -20,9 +20,9 @@ from pathlib import Path
 import pytest
 
 from core.cli import build_parser
-from core.io import save_design
+from core.files.io import save_design
 from core.library import Library
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 from output_checks import error_names
@@ -306,7 +306,7 @@ def test_read_only_file(tmp_path):
 
 def test_fifo_without_a_reader_is_given_up_in_one_line(tmp_path, monkeypatch):
     import time
-    from core import atomic
+    from core.files import atomic
     monkeypatch.setattr(atomic, "FIFO_WAIT_S", 0.5)
     fifo = tmp_path / "pipe"
     os.mkfifo(fifo)
@@ -324,7 +324,7 @@ def test_fifo_without_a_reader_is_given_up_in_one_line(tmp_path, monkeypatch):
 def test_fifo_whose_reader_comes_late_is_written(tmp_path, monkeypatch):
     import threading
     import time
-    from core import atomic
+    from core.files import atomic
     monkeypatch.setattr(atomic, "FIFO_WAIT_S", 20.0)
     fifo = tmp_path / "pipe"
     os.mkfifo(fifo)

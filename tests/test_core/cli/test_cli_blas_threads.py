@@ -1,4 +1,4 @@
-"""The command line asks OpenBLAS for one thread before numpy loads (core.blas, issue 24):
+"""The command line asks OpenBLAS for one thread before numpy loads (core.base.blas, issue 24):
 its spinning worker threads cost every short command about 0.1 s of CPU."""
 from __future__ import annotations
 

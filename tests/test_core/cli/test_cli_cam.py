@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 from cli_runner import shaper_in_process
-from core.cut import cutting
-from core.spec import Spec
+from core.linkage.cut import cutting
+from core.linkage.spec import Spec
 
 SHEET = ["--arm", "120", "--swing", "15", "--pressure", "40", "--rise", "60", "--dwell", "10",
          "--return", "60", "--law", "cosine", "--return-law", "parabolic"]
@@ -157,7 +157,7 @@ def test_bad_input_is_one_line_naming_the_option(words, option, tmp_path):
 def test_a_design_files_cam_is_used_and_options_override_it(tmp_path):
     from core.cam import CamInputs, Program
     from core.cam.file import cam_to_dict
-    from core.io import save_design
+    from core.files.io import save_design
     inputs = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0, "cosine", "parabolic"))
     save_design(tmp_path / "d.json", Spec(), [40.0], 1.0, extra={"cam": cam_to_dict(inputs, None)})
     from_file = run_json("--design", tmp_path / "d.json")

@@ -9,7 +9,7 @@ import math
 import pytest
 
 from cli_runner import shaper_in_process
-from core.design_file import load_design
+from core.files.design_file import load_design
 
 LOADS = ("--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000",
          "--cut-height", "80")

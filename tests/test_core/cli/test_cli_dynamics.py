@@ -12,11 +12,11 @@ import sys
 import numpy as np
 import pytest
 
-from core.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import MassProperties, solve_dynamics
 
-from core.flywheel import summarize
-from core.geometry import synthesize
-from core.kinematics import crank_angles
+from core.forces.flywheel import summarize
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import crank_angles
 
 COMMAND = [shutil.which("shaper")] if shutil.which("shaper") else [sys.executable, "-m", "core"]
 DESIGN = ["--crank", "100", "--K", "1.4", "--stroke", "300"]

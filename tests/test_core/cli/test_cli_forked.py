@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from core.cli import forked, streaming
-from core.io import curve_table
-from core.kinematics import crank_angles, solve
-from core.spec import Spec
+from core.files.io import curve_table
+from core.linkage.kinematics import crank_angles, solve
+from core.linkage.spec import Spec
 from output_checks import as_golden_wrote
 
 GOLDEN = json.loads((Path(__file__).parents[2] / "data" / "csv_golden.json").read_text())

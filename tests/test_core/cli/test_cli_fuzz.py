@@ -20,8 +20,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from core.cli import CORE_COMMANDS, build_parser
-from core.io import save_design
-from core.spec import Spec
+from core.files.io import save_design
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process, shaper_process
 from output_checks import error_names, finite_csv, finite_json

@@ -11,8 +11,8 @@ import math
 import pytest
 from scipy.optimize import brentq
 
-from core.io import design_document
-from core.spec import Spec
+from core.files.io import design_document
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 from output_checks import error_names

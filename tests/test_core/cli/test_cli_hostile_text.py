@@ -10,13 +10,13 @@ from cli_runner import shaper, shaper_in_process
 
 DESIGN = ("--crank", 100, "--K", 1.4, "--stroke", 300, "--rpm", 40)
 # every noncharacter, from Unicode's own definition (chapter 23.7): U+FDD0..U+FDEF and the last
-# two code points of each of the 17 planes, built independently of core.text's table
+# two code points of each of the 17 planes, built independently of core.base.text's table
 EVERY_NONCHARACTER = [chr(c) for c in range(0xFDD0, 0xFDF0)] + \
     [chr(c) for c in range(0x110000) if c & 0xFFFE == 0xFFFE]
 
 
 def test_the_noncharacters_are_the_66_unicode_defines():
-    from core.text import CONTROL, NONCHARACTERS, UNPRINTABLE
+    from core.base.text import CONTROL, NONCHARACTERS, UNPRINTABLE
     assert len(EVERY_NONCHARACTER) == 66
     assert all(CONTROL.search(c) and UNPRINTABLE.search(c) for c in EVERY_NONCHARACTER)
     near = ["\ufdcf", "\ufdf0", "\ufffd", "\U0001fffd", "\U00010000", "中", "é"]
@@ -25,7 +25,7 @@ def test_the_noncharacters_are_the_66_unicode_defines():
 
 
 def test_terminal_text_escapes_what_would_drive_a_terminal():
-    from core.text import terminal_text
+    from core.base.text import terminal_text
     text = "a\x1b]0;pwned\x07\x1b[2J\nb\r\uffff\x9b"
     shown = terminal_text(text)
     assert not any(ord(c) < 32 or 0x7f <= ord(c) <= 0x9f for c in shown)

@@ -10,8 +10,8 @@ import sys
 from core.cli import main
 status = main(["curves", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40", "60",
                "--step", "1", "--csv", sys.argv[1]])
-WATCHED = ("core.metrics", "core.dynamics", "core.cam", "core.library",
-           "core.sweep", "core.optimize", "core.drawing", "core.flywheel", "scipy", "ezdxf",
+WATCHED = ("core.linkage.metrics", "core.forces.dynamics", "core.cam", "core.library",
+           "core.space.sweep", "core.space.optimize", "core.drawing", "core.forces.flywheel", "scipy", "ezdxf",
            "numpy.ma.", "importlib.metadata", "hashlib", "secrets")
 print(status, sorted(m for m in sys.modules if m.startswith(WATCHED)))
 """
@@ -27,10 +27,10 @@ def test_curves_imports_no_metrics_loads_cam_or_library(tmp_path):
 
 def test_a_design_file_with_loads_and_a_cam_still_reads_them(tmp_path):
     """The cam's and the loads' modules come in when a file holds them (the lazy imports
-    in core.design_file must not lose their checks)."""
+    in core.files.design_file must not lose their checks)."""
     from core.cli import main
-    from core.io import save_design
-    from core.spec import Spec
+    from core.files.io import save_design
+    from core.linkage.spec import Spec
     path = tmp_path / "d.json"
     save_design(path, Spec(), [40.0], 1.0, extra={"forces": {"ram_mass_kg": "heavy"}})
     assert main(["curves", "--design", str(path), "--csv", str(tmp_path / "c.csv")]) == 2

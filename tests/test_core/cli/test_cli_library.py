@@ -8,8 +8,8 @@ import sys
 
 import pytest
 
-from core.io import load_design, save_design
-from core.spec import Spec
+from core.files.io import load_design, save_design
+from core.linkage.spec import Spec
 from cli_runner import shaper
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"

@@ -13,16 +13,16 @@ import sys
 import numpy as np
 import pytest
 
-from core.dynamics import MIN_DELTA, MassProperties, solve_dynamics
+from core.forces.dynamics import MIN_DELTA, MassProperties, solve_dynamics
 
-from core.dynamics_io import dynamics_csv
-from core.errors import DesignError
-from core.flywheel import summarize
-from core.geometry import synthesize
-from core.io import curves_csv, save_design, table_csv
-from core.kinematics import (MAX_SAMPLES, MAX_SPEEDS, MIN_RPM, MIN_STEP_DEG, angle_count,
+from core.files.dynamics_io import dynamics_csv
+from core.base.errors import DesignError
+from core.forces.flywheel import summarize
+from core.linkage.geometry import synthesize
+from core.files.io import curves_csv, save_design, table_csv
+from core.linkage.kinematics import (MAX_SAMPLES, MAX_SPEEDS, MIN_RPM, MIN_STEP_DEG, angle_count,
                              check_request, crank_angles, solve)
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper, shaper_in_process
 from output_checks import finite_csv, finite_json, read_fifo_in_background

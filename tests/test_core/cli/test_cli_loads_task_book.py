@@ -6,9 +6,9 @@ import json
 
 import pytest
 
-from core.dynamics import MassProperties
-from core.io import load_design, masses_to_dict, save_design
-from core.spec import Spec
+from core.forces.dynamics import MassProperties
+from core.files.io import load_design, masses_to_dict, save_design
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 

@@ -5,8 +5,8 @@ import subprocess
 
 import pytest
 
-from core.io import save_design
-from core.spec import Spec
+from core.files.io import save_design
+from core.linkage.spec import Spec
 
 from cli_runner import shaper
 

@@ -6,11 +6,11 @@ import math
 
 import pytest
 
-from core.dynamics import MassProperties
+from core.forces.dynamics import MassProperties
 
-from core.flywheel import summarize
-from core.geometry import synthesize
-from core.metrics import analyze
+from core.forces.flywheel import summarize
+from core.linkage.geometry import synthesize
+from core.linkage.metrics import analyze
 
 from cli_runner import shaper
 

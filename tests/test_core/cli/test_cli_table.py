@@ -66,9 +66,9 @@ def test_kinematics_only_without_loads_and_text_output():
 
 
 def test_design_file_with_loads_gives_force_columns(tmp_path):
-    from core.dynamics import MassProperties
-    from core.io import masses_to_dict, save_design
-    from core.spec import Spec
+    from core.forces.dynamics import MassProperties
+    from core.files.io import masses_to_dict, save_design
+    from core.linkage.spec import Spec
     path = tmp_path / "d.shaper.json"
     save_design(path, Spec(), [50.0], 1.0,
                 extra={"forces": masses_to_dict(MassProperties(ram_mass_kg=70, cut_force_N=100))})

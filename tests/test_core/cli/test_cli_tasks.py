@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 
 from cli_runner import shaper_in_process
 from core.cli.answers import COMMANDS, answer_entry, key_csv
-from core.io import csv_text as guarded
+from core.files.io import csv_text as guarded
 from core.cli.tasks import (MAX_FOLDER_BYTES, MAX_STUDENTS, MAX_TABLE_BYTES, TableError, column_actions,
                             design_parser, folder_name, read_tasks)
 

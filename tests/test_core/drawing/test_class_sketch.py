@@ -9,7 +9,7 @@ import pytest
 from core.drawing.class_sheets import LEADER, SKETCH_DEG, task_sheet
 from core.drawing.mechanism import joints, link_anchors
 from core.drawing.sheet import Text
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 
 def _doc(rod_ratio):
@@ -50,7 +50,7 @@ def test_the_data_set_shows_given_values_as_typed_and_derived_ones_in_figure_tex
     """A typed K = 1.4599 and L1 = 100.25 are not rounded to 4 digits (1.46, 100.3); the
     guide height h, which the tool derives, reads as the answer key and the CLI write it."""
     from core.drawing.class_sheets import data_rows
-    from core.figure_text import figure_text
+    from core.base.figure_text import figure_text
     spec = Spec.from_dict({"mode": "synthesis", "crank": 100.25, "time_ratio": 1.4599, "stroke": 312.5})
     doc = {"spec": spec.to_dict(), "rpm": [60.0, 72.5]}
     rows = {row[1]: row[2] for row in data_rows(doc, spec.design(), {})}

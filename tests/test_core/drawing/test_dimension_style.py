@@ -11,9 +11,9 @@ import ezdxf
 import pytest
 
 from core.cam import CamInputs, Program, design_cam
-from core.cam_drawing import cam_document
+from core.drawing.cam_dxf import cam_document
 from core.drawing import dimensions, dxf, scheme
-from core.geometry import synthesize
+from core.linkage.geometry import synthesize
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
 ROD = synthesize(100.0, 1.46, 312.0, rod_ratio=0.3)

@@ -12,11 +12,11 @@ from core.drawing.forces import ENGLISH, forces_sheet, joint_forces
 from core.drawing.motion import motion_sheet
 from core.drawing.checks import outside_border, overlapping_texts
 from core.drawing.sheet import Polyline, paper
-from core.dynamics import MassProperties, masses_for_design, solve_dynamics
-from core.errors import DesignError
-from core.flywheel import summarize
-from core.geometry import synthesize
-from core.kinematics import rpm_to_omega
+from core.forces.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.base.errors import DesignError
+from core.forces.flywheel import summarize
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import rpm_to_omega
 from sheet_checks import assert_laid_out
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
@@ -102,7 +102,7 @@ def _curve(items, n_min=100):
 def test_torque_curve_and_mean_measure_true():
     """The torque curve read off the paper with the stated μM and μφ is core's torque, and
     its dashed mean line is the cycle mean (trapezoid rule over 0.1°, independent of
-    core.flywheel's exact integration)."""
+    core.forces.flywheel's exact integration)."""
     m = masses(BLOCK)
     drawn = forces_sheet(BLOCK, 40.0, m, paper("A1"))
     mu_m, mu_phi, (ox, oy) = drawn.torque_chart

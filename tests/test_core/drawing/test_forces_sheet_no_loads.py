@@ -6,8 +6,8 @@ import pytest
 
 from core.drawing.forces import forces_sheet, joint_forces
 from core.drawing.sheet import paper
-from core.dynamics import MassProperties
-from core.geometry import synthesize
+from core.forces.dynamics import MassProperties
+from core.linkage.geometry import synthesize
 from sheet_checks import assert_laid_out
 
 BLOCK = synthesize(100.0, 1.4, 300.0)

@@ -11,9 +11,10 @@ from hypothesis import strategies as st
 
 from core.cam import CamInputs, Program, design_cam
 from core.drawing import cam_sheet, forces, motion
-from core.drawing.sheet import Text, cell_text, marked, paper, table
-from core.dynamics import MassProperties, masses_for_design
-from core.geometry import synthesize
+from core.drawing.sheet import Text, marked, paper
+from core.drawing.cells import cell_text, table
+from core.forces.dynamics import MassProperties, masses_for_design
+from core.linkage.geometry import synthesize
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,

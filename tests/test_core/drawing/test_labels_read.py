@@ -17,8 +17,8 @@ from core.drawing.forces import forces_sheet
 from core.drawing import mechanism as mech
 from core.drawing.labels import Room
 from core.drawing.sheet import Polyline, Text, paper
-from core.dynamics import MassProperties, masses_for_design
-from core.geometry import from_dimensions
+from core.forces.dynamics import MassProperties, masses_for_design
+from core.linkage.geometry import from_dimensions
 
 # 方案 I (孙桓《机械原理》课程设计, 牛头刨床): masses = G/9.81
 SCHEME_I = from_dimensions(110.0, 380.0, 540.0, rod=135.0)

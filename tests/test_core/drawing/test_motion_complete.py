@@ -26,8 +26,8 @@ from core.drawing.motion import motion_sheet
 from core.drawing.sheet import Polyline, Text, paper
 from core.drawing.sheet_dims import segments, text_crossings
 from core.drawing.sheet_dxf import sheet_document
-from core.geometry import synthesize
-from core.kinematics import shape
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import shape
 from sheet_checks import assert_laid_out
 
 CASES = {   # (L1, K, H, rod ratio or None)

@@ -9,10 +9,10 @@ import pytest
 
 from core.drawing.motion import motion_sheet
 from core.drawing.sheet import Circle, Text, paper
-from core.geometry import from_dimensions
-from core.kinematics import solve
-from core.polygons import acceleration_polygon, velocity_polygon
-from core.positions import special_angles
+from core.linkage.geometry import from_dimensions
+from core.linkage.kinematics import solve
+from core.forces.polygons import acceleration_polygon, velocity_polygon
+from core.course_design.positions import special_angles
 
 SCHEME_I = from_dimensions(110.0, 380.0, 540.0, rod=135.0)
 
@@ -57,7 +57,7 @@ def test_the_working_strokes_end_8_prime_is_marked_on_each_curve(drawn):
 def test_each_polygon_has_its_equations_and_magnitudes_beside_it():
     """A1: v_A4 = v_A3 + v_A4A3 and v_C = v_B + v_CB (the rod's); a^n_A4 + a^t_A4 = a_A3 +
     a^k_A4A3 + a^r_A4A3 and a_C = a_B + a^n_CB + a^t_CB; and every vector's magnitude as
-    core's polygon has it, to 4 digits; v_C and a_C are the ram's v and a (core.kinematics).
+    core's polygon has it, to 4 digits; v_C and a_C are the ram's v and a (core.linkage.kinematics).
     (On A3 the acceleration polygon's eleven rows do not fit beside it and are left out.)"""
     drawn = motion_sheet(SCHEME_I, 60.0, paper("A1"))
     texts = [t.text for t in drawn.areas["polygons"][1] if isinstance(t, Text)]

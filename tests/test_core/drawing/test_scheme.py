@@ -13,9 +13,9 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from core.drawing import dimensions, dxf, scheme
-from core.errors import DesignError
-from core.geometry import Design, synthesize
-from core.metrics import analyze
+from core.base.errors import DesignError
+from core.linkage.geometry import Design, synthesize
+from core.linkage.metrics import analyze
 from dxf_checks import measurement
 
 finite = dict(allow_nan=False, allow_infinity=False)

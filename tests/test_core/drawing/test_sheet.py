@@ -15,7 +15,7 @@ from core.drawing.motion import motion_sheet
 from core.drawing.checks import outside_border, overlapping_texts
 from core.drawing.sheet import PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, paper, standard_scale, text_width
 from core.drawing.sheet_dxf import save_sheet_dxf
-from core.geometry import synthesize
+from core.linkage.geometry import synthesize
 from sheet_checks import assert_laid_out
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
@@ -162,7 +162,7 @@ def test_every_text_height_is_from_the_standard_series(size):
 
 
 def test_more_positions_than_a_sheet_can_show_are_refused():
-    from core.errors import DesignError
+    from core.base.errors import DesignError
     motion_sheet(BLOCK, 40.0, paper("A1"), count=72)
     with pytest.raises(DesignError, match="positions"):
         motion_sheet(BLOCK, 40.0, paper("A1"), count=73)

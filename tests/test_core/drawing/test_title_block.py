@@ -11,7 +11,7 @@ from core.drawing.motion import motion_sheet
 from core.drawing.checks import overlapping_texts
 from core.drawing.sheet import PAPERS, Polyline, Text, item_box, paper
 from core.drawing.title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block
-from core.geometry import synthesize
+from core.linkage.geometry import synthesize
 
 FIELDS = dict(drawn="Zhang San", number="2021001", group="ME 2101", school="SME",
               supervisor="Li Si", date="2026-11-27")

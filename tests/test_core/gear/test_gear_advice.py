@@ -10,7 +10,7 @@ from dataclasses import replace
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from core.gear import GearPairInputs, design_pair, pair_checks
 from core.gear.advice import MOVES, centre_per_shift, helpful_moves, margin_rate, move_step
 from core.gear.checks import CHECKS

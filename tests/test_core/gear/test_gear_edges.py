@@ -10,7 +10,7 @@ import re
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from core.gear import GearPairInputs, design_pair
 from core.gear.involute import least_shift
 from core.gear.profile import flank

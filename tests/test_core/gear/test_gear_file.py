@@ -6,12 +6,12 @@ import json
 
 import pytest
 
-from core.design_file import load_design
-from core.errors import DesignError, FileFormatError
+from core.files.design_file import load_design
+from core.base.errors import DesignError, FileFormatError
 from core.gear import GearPairInputs
 from core.gear.file import gear_from_dict, gear_to_dict
-from core.io import design_document
-from core.spec import Spec
+from core.files.io import design_document
+from core.linkage.spec import Spec
 
 
 def test_round_trip():

@@ -14,7 +14,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from core.gear import GearPairInputs, design_pair, pair_checks
 from core.gear.involute import inv_inverse
 

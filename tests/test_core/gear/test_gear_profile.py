@@ -90,7 +90,7 @@ def test_undercut_tooth_is_waisted_and_outline_closes_a_pitch():
 from hypothesis import HealthCheck, assume, example, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from core.errors import DesignError  # noqa: E402
+from core.base.errors import DesignError  # noqa: E402
 
 
 @given(st.integers(5, 150), st.integers(5, 150), st.floats(-0.5, 1.0), st.floats(-0.5, 1.0),

@@ -5,18 +5,18 @@ import random
 
 import pytest
 
-from core.dynamics import MassProperties
+from core.forces.dynamics import MassProperties
 
-from core.errors import FileFormatError
-from core.flywheel import summarize
-from core.io import load_design, masses_to_dict, save_design
+from core.base.errors import FileFormatError
+from core.forces.flywheel import summarize
+from core.files.io import load_design, masses_to_dict, save_design
 from core.library import Library
 from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import check_tags, file_stem, safe_file_name, unique_name
 from core.library.query import QueryError, parse_filter
 from core.library.store import ENV_VAR, LibraryError, resolve_path
-from core.metrics import analyze
-from core.spec import Spec
+from core.linkage.metrics import analyze
+from core.linkage.spec import Spec
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                        cut_force_N=7000.0, cut_height_mm=80.0)

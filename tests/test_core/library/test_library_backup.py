@@ -15,7 +15,7 @@ import pytest
 from core.library import Library
 from core.library.backup import backup_copy, data_bytes
 from core.library.store import LibraryError
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 

@@ -9,7 +9,7 @@ import sqlite3
 import pytest
 
 from core.library import Library
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 

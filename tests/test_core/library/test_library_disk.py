@@ -17,7 +17,7 @@ from core.library import Library
 from core.library import open as library_open
 from core.library import store as library_store
 from core.library.store import LibraryError, sqlite_error
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 

@@ -14,13 +14,13 @@ import tracemalloc
 import numpy as np
 import pytest
 
-from core import compare as compare_module
-from core.compare import Candidate, compare, curves_csv
-from core.dynamics import MassProperties
-from core.io import snap_zeros
-from core.kinematics import MIN_STEP_DEG, crank_angles, solve
+from core.space import compare as compare_module
+from core.space.compare import Candidate, compare, curves_csv
+from core.forces.dynamics import MassProperties
+from core.files.io import snap_zeros
+from core.linkage.kinematics import MIN_STEP_DEG, crank_angles, solve
 from core.library import Library
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 
@@ -74,7 +74,7 @@ def reference_csv(candidates, rpm, step):
     """The curves CSV from one solve over all angles, written row by row (the old way)."""
     phi = crank_angles(step)
     columns = {"x": [], "v": [], "a": [], "t": []}
-    from core.dynamics import masses_for_design, solve_dynamics
+    from core.forces.dynamics import masses_for_design, solve_dynamics
     for c in candidates:
         design = c.spec.design()
         motion = solve(design, phi, [rpm])

@@ -9,11 +9,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from core.io import save_design
+from core.files.io import save_design
 from core.library import Library
 from core.library.names import check_name, check_tags
 from core.library.store import LibraryError
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.widgets.command_line import cover_text
 
 from cli_runner import shaper_in_process

@@ -15,12 +15,12 @@ from pathlib import Path
 
 import pytest
 
-from core.io import save_design
+from core.files.io import save_design
 from core.library import Library
 from core.library import open as library_open
 from core.library import store as library_store
 from core.library.store import LibraryError
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 from locations import DATA

@@ -9,11 +9,11 @@ import pytest
 import core.library as library_module
 import core.library.entry as library_entry
 from cli_runner import shaper
-from core.dynamics import MassProperties
-from core.figures import FIGURES_VERSION, figures
+from core.forces.dynamics import MassProperties
+from core.space.figures import FIGURES_VERSION, figures
 from core.library import Library
 from core.library.store import schema_version
-from core.spec import Spec
+from core.linkage.spec import Spec
 from locations import DATA
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
@@ -66,7 +66,7 @@ def test_stale_entries_are_found_and_recomputed_and_nothing_else_changes(path):
         assert lib.stale_names() == []
         for name, old in before.items():
             new = lib.get(name)
-            assert new.figures == fresh(SPECS[name])          # computed anew by core.figures
+            assert new.figures == fresh(SPECS[name])          # computed anew by core.space.figures
             assert new.figures_current
             assert (new.name, new.notes, new.tags, new.created, new.modified, new.text) == \
                    (old.name, old.notes, old.tags, old.created, old.modified, old.text)

@@ -14,7 +14,7 @@ from core.library import Library
 from core.library import store as library_store
 from core.library.backup import backup_copy
 from core.library.store import APPLICATION_ID, LibraryError, schema_version
-from core.spec import Spec
+from core.linkage.spec import Spec
 from cli_runner import shaper
 from locations import DATA, ROOT, TESTS
 

@@ -16,7 +16,7 @@ import pytest
 from core.library import Library
 from core.library import store as library_store
 from core.library.store import LibraryError
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 from cli_runner import shaper_in_process
 from locations import DATA
@@ -86,7 +86,7 @@ def test_the_trigger_of_the_issue_deletes_nothing_through_add_or_import(tmp_path
     status, _, err = shaper_in_process("library", "add", *DESIGN, "--name", "d", "--library", path)
     assert status == 2 and "trigger t on entries" in err
     design = tmp_path / "x.shaper.json"
-    from core.io import save_design
+    from core.files.io import save_design
     save_design(design, Spec(), [40.0], 1.0)
     status, _, err = shaper_in_process("library", "import", design, "--library", path)
     assert status == 2 and "trigger t" in err

@@ -13,8 +13,8 @@ import pytest
 from core.cam import CamInputs, Program, design_cam
 from core.cam.follower import pitch, profile
 from core.cam.table import cam_table
-from core.kinematics import crank_angles
-from core.spec import Spec
+from core.linkage.kinematics import crank_angles
+from core.linkage.spec import Spec
 from shaperapp.cam.tab import CamTab
 
 from gui_helpers import shown
@@ -139,7 +139,7 @@ def test_every_cam_message_has_a_translatable_template(model):
     import re
 
     from core.cam.timing import timing
-    from core.errors import DesignError
+    from core.base.errors import DesignError
     from shaperapp.widgets.messages import _PATTERNS
     design = model.design
     attempts = [
@@ -192,7 +192,7 @@ def test_a_damaged_cam_in_a_file_is_refused_and_changes_nothing(qtbot, tab, mode
 
     from PySide6.QtCore import QSettings
 
-    from core.io import save_design
+    from core.files.io import save_design
     from shaperapp.design.document import Document
     document = Document(model, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
     messages = []

@@ -93,7 +93,7 @@ def test_every_fit_message_has_a_translatable_template():
     import re
 
     from core.cam import CamInputs, Program, design_cam
-    from core.errors import DesignError
+    from core.base.errors import DesignError
     from shaperapp.widgets.messages import _PATTERNS
     attempts = [dict(base_mm=17.0, distance_mm=110.0), dict(base_mm=60.0, distance_mm=100.0, boss_mm=40.0),
                 dict(base_mm=80.0, distance_mm=100.0, boss_mm=30.0),
@@ -139,7 +139,7 @@ def test_a_chinese_report_of_a_cam_that_does_not_fit_says_why_in_chinese(qapp):
     import re
 
     from core.cam import CamInputs, Program
-    from core.spec import Spec
+    from core.linkage.spec import Spec
     from shaperapp.report.cam import cam_blocks
     from shaperapp.widgets import i18n
     inputs = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0), base_mm=17.0, distance_mm=110.0)

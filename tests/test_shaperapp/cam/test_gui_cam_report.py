@@ -34,8 +34,8 @@ def test_shaper_report_takes_the_design_files_cam(tmp_path):
     from cli_runner import shaper
     from core.cam import CamInputs, Program
     from core.cam.file import cam_to_dict
-    from core.io import save_design
-    from core.spec import Spec
+    from core.files.io import save_design
+    from core.linkage.spec import Spec
     inputs = CamInputs(arm_mm=160.0, program=Program(20.0, 70.0, 5.0, 80.0, "poly345", "cosine"))
     save_design(tmp_path / "d.json", Spec(), [40.0], 1.0, extra={"cam": cam_to_dict(inputs, None)})
     run = shaper("report", "--design", tmp_path / "d.json", "-o", tmp_path / "r.html")

@@ -135,9 +135,9 @@ def test_the_answer_key_csv_holds_the_json_figures(classroom):
 
 def test_the_answer_key_pdf_prints_each_figure_as_the_cli_does(classroom):
     """Gap 1 of issue 41: the answer key's PDF writes a figure in the one precision of its
-    kind (core.figure_text), the very text ``shaper synth/analyze/dynamics/gear`` print for the
+    kind (core.base.figure_text), the very text ``shaper synth/analyze/dynamics/gear`` print for the
     student's design file: K = 1.4600, not 1.46."""
-    from core.figure_text import figure_text
+    from core.base.figure_text import figure_text
     _, out, _, _, _, _, _ = classroom
     cells = set(pdf_text(out / "answer-key.pdf").split())
     for entry in json.loads((out / "answer-key.json").read_text(encoding="utf-8")):

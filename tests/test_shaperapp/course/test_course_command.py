@@ -12,8 +12,8 @@ import ezdxf
 import pytest
 
 from cli_runner import shaper_in_process
-from core.io import design_document, masses_to_dict
-from core.spec import Spec
+from core.files.io import design_document, masses_to_dict
+from core.linkage.spec import Spec
 from language_checks import assert_chinese_text, has_pdftotext, pdf_text
 
 # the report's formulas and its command line (as test_report_chinese_text allows them)
@@ -32,7 +32,7 @@ TITLES = {"00-report.pdf": "Design report", "01-motion.pdf": "Motion analysis",
 
 
 def design_file(folder, drop=(), name="design.shaper.json", speeds=(40.0,)):
-    from core.dynamics import MassProperties
+    from core.forces.dynamics import MassProperties
     loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                            cut_force_N=7000.0, cut_height_mm=80.0)
     doc = design_document(Spec(), speeds, 1.0, {"forces": masses_to_dict(loads), "cam": CAM, "gear": GEAR})

@@ -14,8 +14,8 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QProgressDialog, QPushBu
 
 from cli_runner import shaper_in_process
 from export_faults import last_run
-from core.io import design_document
-from core.progress import Progress
+from core.files.io import design_document
+from core.base.progress import Progress
 from language_checks import has_pdftotext, pdf_text
 from shaperapp.course.dialog import CourseOptions, CourseOptionsDialog, plan
 from shaperapp.course.write import Covering, write_course

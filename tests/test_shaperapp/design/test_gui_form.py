@@ -1,9 +1,9 @@
 """The form drives the model, marks the offending field, and mirrors the model."""
 import pytest
 
-from core.figure_text import figure_text   # one precision per kind (issue 40)
+from core.base.figure_text import figure_text   # one precision per kind (issue 40)
 
-from core.geometry import synthesize
+from core.linkage.geometry import synthesize
 from shaperapp.design.form import DesignForm
 from shaperapp.design.model import DesignModel
 from shaperapp.results.panel import MetricsPanel
@@ -104,7 +104,7 @@ def test_direct_dimensions_mode(setup, qtbot):
 
 
 def test_metrics_show_flywheel_and_power_from_core(setup, qtbot):
-    from core.flywheel import summarize
+    from core.forces.flywheel import summarize
     model, form, metrics = setup
     model.set_masses(cut_force_N=5000.0, delta=0.05)
     want = summarize(model.design, model.rpms, model.masses).speeds

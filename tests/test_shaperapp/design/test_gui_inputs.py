@@ -6,8 +6,8 @@ from PySide6.QtCore import QPoint, QPointF, QSettings, Qt
 from PySide6.QtGui import QWheelEvent
 from PySide6.QtWidgets import QApplication, QMessageBox, QScrollArea
 
-from core.errors import DesignError
-from core.geometry import synthesize
+from core.base.errors import DesignError
+from core.linkage.geometry import synthesize
 from shaperapp.design.document import Document
 from shaperapp.design.form import DesignForm
 from shaperapp.design.inputs import MAX_SPEEDS
@@ -336,7 +336,7 @@ def test_invalid_edit_then_undo_restores_the_valid_state(model):
 
 
 def test_load_state_refuses_without_changing_anything(model):
-    from core.spec import Spec
+    from core.linkage.spec import Spec
     model.set_spec(stroke=280.0)
     before = (model.spec, model.design, model.undo_stack.count(), model.dirty)
     with pytest.raises(DesignError):

@@ -2,9 +2,9 @@
 import numpy as np
 import pytest
 
-from core.geometry import synthesize
-from core.kinematics import crank_angles, solve
-from core.metrics import analyze
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import crank_angles, solve
+from core.linkage.metrics import analyze
 
 
 def test_default_design_is_seed003(model):

@@ -69,8 +69,8 @@ def test_a_save_into_a_missing_folder_fails_in_chinese(document, tmp_path):
 
 @pytest.mark.parametrize("number", [errno.ENOSPC, errno.EACCES, errno.EROFS, errno.EDQUOT])
 def test_a_failed_save_says_why_in_chinese(document, tmp_path, monkeypatch, number):
-    """The reasons core gives a WriteError (core.errors.os_reason), in the UI's language."""
-    from core.errors import WriteError
+    """The reasons core gives a WriteError (core.base.errors.os_reason), in the UI's language."""
+    from core.base.errors import WriteError
 
     def full(path, *args, **kwargs):
         raise WriteError(path, OSError(number, os.strerror(number)))

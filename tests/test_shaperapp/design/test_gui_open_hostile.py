@@ -5,7 +5,7 @@ import json
 import pytest
 from PySide6.QtCore import QSettings
 
-from core.io import load_design
+from core.files.io import load_design
 from shaperapp.design.document import Document
 from shaperapp.design.model import DesignModel
 from shaperapp.design.results import MAX_GUI_SAMPLES

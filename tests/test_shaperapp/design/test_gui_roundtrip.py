@@ -18,9 +18,9 @@ from hypothesis import strategies as st
 from PySide6.QtCore import QSettings
 
 from core.cli import run as run_cli
-from core.dynamics import MassProperties
-from core.io import load_design
-from core.spec import NUMBER_FIELDS
+from core.forces.dynamics import MassProperties
+from core.files.io import load_design
+from core.linkage.spec import NUMBER_FIELDS
 from shaperapp.design.document import Document
 from shaperapp.design.fields import parse_number
 from shaperapp.design.form import DesignForm

@@ -12,9 +12,9 @@ from cli_runner import shaper, shaper_in_process
 from sheet_checks import assert_pdf_sheet
 from core.cam import CamInputs, Program
 from core.cam.file import cam_to_dict
-from core.errors import DesignError
-from core.io import save_design
-from core.spec import Spec
+from core.base.errors import DesignError
+from core.files.io import save_design
+from core.linkage.spec import Spec
 from shaperapp.drawing.dialog import DrawingSheetDialog
 
 BLOCK = ["--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40"]
@@ -153,7 +153,7 @@ def test_the_four_sheets_are_numbered_one_to_four(qapp):
     """The title blocks say 1/4 … 4/4: the course design's four sheets, in order (the gear
     pair's meshing sheet, issue 35, is the fourth)."""
     from core.cam import design_cam
-    from core.dynamics import MassProperties
+    from core.forces.dynamics import MassProperties
     from core.drawing.sheet import Text
     from shaperapp.drawing.content import CONTENTS, SheetChoice, build_sheet
     spec = Spec()

@@ -31,7 +31,7 @@ LONG = "a" * 252        # + ".pdf": 256 bytes, one more than a file name may hav
     ("drawing", ["--content", "scheme"], ".dxf"), ("report", [], ".pdf"), ("report", [], ".html"),
 ])
 def test_a_name_too_long_is_refused_naming_the_option(command, extra, suffix, tmp_path):
-    """As cam, curves and every other writer say it (core.atomic), before any work."""
+    """As cam, curves and every other writer say it (core.files.atomic), before any work."""
     target = tmp_path / (LONG + suffix)
     status, out, err = shaper_in_process(command, *DESIGN, *extra, "-o", target)
     assert status == 2 and out == ""

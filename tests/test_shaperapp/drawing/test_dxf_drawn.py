@@ -29,9 +29,9 @@ from core.drawing.motion import motion_sheet
 from core.drawing.scheme import scheme_document
 from core.drawing.sheet import Sheet, Text, paper
 from core.drawing.sheet_dxf import save_sheet_dxf
-from core.dynamics import MassProperties
-from core.geometry import synthesize
-from core.kinematics import shape
+from core.forces.dynamics import MassProperties
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import shape
 from core.drawing.forces import forces_sheet
 from core.cam import CamInputs, Program, design_cam
 from core.drawing.cam_sheet import cam_sheet

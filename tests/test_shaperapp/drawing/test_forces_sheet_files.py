@@ -8,8 +8,8 @@ import pytest
 from cli_runner import shaper
 from sheet_checks import assert_pdf_sheet
 from core.cli.cmd_dynamics import speed_rows
-from core.dynamics import masses_for_design
-from core.flywheel import summarize
+from core.forces.dynamics import masses_for_design
+from core.forces.flywheel import summarize
 from shaperapp.drawing.dialog import DrawingSheetDialog
 
 BLOCK = ["--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40"]

@@ -8,7 +8,7 @@ from PySide6.QtCore import Qt
 
 from core.gear import GearPairInputs, design_pair
 from core.gear.file import gear_to_dict
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.drawing.dialog import DrawingSheetDialog
 
 pytestmark = pytest.mark.slow       # each dialog draws its motion sheet preview first (about 3 s)

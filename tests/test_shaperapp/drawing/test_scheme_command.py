@@ -7,8 +7,8 @@ import pytest
 
 from cli_runner import shaper, shaper_in_process
 from dxf_checks import measurement
-from core.geometry import from_dimensions
-from core.kinematics import shape
+from core.linkage.geometry import from_dimensions
+from core.linkage.kinematics import shape
 
 ROD = ["--dims", "100,380,600,250", "--guide", "560", "--rpm", "40"]
 

@@ -12,7 +12,7 @@ import pytest
 from core.drawing.dxf import CENTER, DASHED, LINETYPES, LAYERS
 from core.drawing.motion import motion_sheet
 from core.drawing.sheet import PAPERS, Circle, Sheet, frame_items, line
-from core.geometry import synthesize
+from core.linkage.geometry import synthesize
 from shaperapp.drawing.render import pdf_bytes, svg_bytes
 
 MM_PER_PT = 25.4 / 72.0

@@ -7,10 +7,10 @@ import ezdxf
 import pytest
 
 from cli_runner import shaper_in_process
-from core.dynamics import MassProperties, masses_for_design
-from core.flywheel import summarize
-from core.io import design_document, masses_to_dict
-from core.spec import Spec
+from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.flywheel import summarize
+from core.files.io import design_document, masses_to_dict
+from core.linkage.spec import Spec
 from shaperapp.drawing.dialog import DrawingSheetDialog
 
 BLOCK = ["--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40", "60"]

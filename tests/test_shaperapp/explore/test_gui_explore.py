@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 from PySide6.QtCore import QPoint, QTimer, Qt
 
-from core.optimize import optimize
-from core.sweep import evaluate
+from core.space.optimize import optimize
+from core.space.sweep import evaluate
 from shaperapp.explore.view import ExploreView
 from shaperapp.widgets.messages import describe
 

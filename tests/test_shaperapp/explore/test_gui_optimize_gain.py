@@ -8,7 +8,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from core.kinematics import solve
+from core.linkage.kinematics import solve
 from shaperapp.widgets import i18n
 from language_checks import english_words
 

@@ -7,10 +7,10 @@ from PySide6.QtCore import QSettings, Qt
 from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QMessageBox
 
-from core.compare import compare, table_csv
-from core.io import load_design, save_design
+from core.space.compare import compare, table_csv
+from core.files.io import load_design, save_design
 from core.library import Library
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.compare.plots import design_pen
 from shaperapp.compare.view import CompareView
 from shaperapp.library import pane as library_pane

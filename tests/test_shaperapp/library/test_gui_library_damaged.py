@@ -13,7 +13,7 @@ import textwrap
 import pytest
 
 from core.library import Library
-from core.spec import Spec
+from core.linkage.spec import Spec
 
 CASES = {
     "blob in a REAL column": "UPDATE entries SET theta_deg = X'00ff' WHERE name = 'a'",

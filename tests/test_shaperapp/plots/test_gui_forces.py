@@ -16,9 +16,9 @@ from PySide6.QtGui import QImage
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QApplication
 
-from core.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import MassProperties, solve_dynamics
 
-from core.flywheel import summarize
+from core.forces.flywheel import summarize
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.forces_panel import ForcesPanel
 from shaperapp.widgets.messages import describe

@@ -15,7 +15,7 @@ from PySide6.QtCore import QPoint, QPointF, Qt
 from PySide6.QtGui import QImage, QPainter
 from PySide6.QtWidgets import QApplication
 
-from core.kinematics import solve
+from core.linkage.kinematics import solve
 from shaperapp.plots.forces import ForcePlots
 from shaperapp.plots.kinematics import PlotsWidget
 from shaperapp.widgets.style import SPEED_COLOURS, fmt
@@ -291,7 +291,7 @@ def test_readout_follows_the_cursor_when_the_mouse_is_away(qtbot, forces, model)
     qtbot.wait(150)
     model.set_angle_index(75)
     qtbot.waitUntil(lambda: "75.0" in forces.readout_text(), timeout=2000)
-    from core.dynamics import solve_dynamics
+    from core.forces.dynamics import solve_dynamics
     dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms, model.masses)
     for row in dyn.crank_torque:
         assert f"{fmt(row[75], '.4g')} N·m" in forces.readout_text()
@@ -382,7 +382,7 @@ def test_sixteen_speeds_keep_the_readout_to_two_lines(qtbot, request, model, vie
     """With 16 speeds the read-out took 5 lines (kinematics in time mode, forces) and pushed
     the lowest plot below the window; now it keeps two, shows the speeds it has room for
     and lists every value in its tooltip."""
-    from core.dynamics import solve_dynamics
+    from core.forces.dynamics import solve_dynamics
     from shaperapp.plots.readout import Readout
     widget = request.getfixturevalue(view)
     model.set_rpms(SIXTEEN)

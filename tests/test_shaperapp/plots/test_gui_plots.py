@@ -15,7 +15,7 @@ from PySide6.QtGui import QImage
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QApplication
 
-from core.kinematics import crank_angles, solve
+from core.linkage.kinematics import crank_angles, solve
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.kinematics import LEVER_PLOTS, PLOT_NAMES, SHARED_PLOTS, PlotsWidget
 

@@ -3,8 +3,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 
-from core.dynamics import masses_for_design
-from core.positions import SPECIAL_NAMES, display_values, position_table, positions
+from core.forces.dynamics import masses_for_design
+from core.course_design.positions import SPECIAL_NAMES, display_values, position_table, positions
 from shaperapp.positions.view import PositionsView
 
 from gui_helpers import shown

@@ -2,7 +2,7 @@
 window stays usable meanwhile (a click on a tab switches it), the bar moves with every
 section and page, only forward, to its maximum; the cursor is busy meanwhile; Cancel
 leaves no file (nor a temporary one) and no process behind; a failure in the child is
-one translated line; the headless writers take the same progress (``core.progress``),
+one translated line; the headless writers take the same progress (``core.base.progress``),
 for ``shaper course`` and ``shaper class``."""
 import os
 
@@ -13,7 +13,7 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QDialog, QFileDialog, QMessageBox, QProgressDialog, QPushButton
 
 import export_faults
-from core.progress import Cancelled, Progress
+from core.base.progress import Cancelled, Progress
 from shaperapp.report import dialog as report_dialog
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
 from shaperapp.widgets import i18n

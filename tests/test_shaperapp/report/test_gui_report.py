@@ -5,11 +5,11 @@ import shutil
 import stat
 import subprocess
 
-from core.compare import Candidate
+from core.space.compare import Candidate
 from export_faults import finished
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.report.dialog import ReportOptionsDialog, export_report
-from core.figure_text import figure_text
+from core.base.figure_text import figure_text
 
 
 def test_window_has_the_deliverables(window, qtbot):

@@ -8,7 +8,7 @@ import json
 import pytest
 
 from cli_runner import shaper_in_process
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.report.dialog import export_report
 
 pytestmark = pytest.mark.slow       # a whole report (about 5 s)

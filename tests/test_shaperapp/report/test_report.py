@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from cli_runner import shaper
-from core.positions import display_values
+from core.course_design.positions import display_values
 from report_numbers import cli_values, column_text
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
@@ -154,7 +154,7 @@ def test_bad_output_name_is_one_line_and_writes_nothing(tmp_path, name, extra, r
 
 def test_the_name_chooses_the_type_and_a_save_keeps_the_files_mode(tmp_path):
     """R.HTM is HTML without --html (it was a PDF under an HTML name); an existing report
-    is replaced whole (core.atomic) and keeps its permission bits, with no temp left."""
+    is replaced whole (core.files.atomic) and keeps its permission bits, with no temp left."""
     page = tmp_path / "R.HTM"
     page.write_text("old")
     page.chmod(0o640)

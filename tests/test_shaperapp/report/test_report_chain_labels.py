@@ -17,8 +17,8 @@ from PySide6.QtGui import QColor, QFontInfo, QImage, QPainter
 from PySide6.QtSvg import QSvgRenderer
 
 import shaperapp.report.figures as figures
-from core.metrics import analyze
-from core.spec import Spec
+from core.linkage.metrics import analyze
+from core.linkage.spec import Spec
 from shaperapp.scheme.view import SchemeWidget
 
 SCALE = 2                # rendered at 2 px per exported px

@@ -27,9 +27,9 @@ PLOT_WORDS = ("滑枕位移", "滑枕速度", "滑枕加速度", "工作行程",
 def report(tmp_path_factory):
     from core.cam import CamInputs, Program
     from core.cam.file import cam_to_dict
-    from core.dynamics import MassProperties
-    from core.io import masses_to_dict, save_design
-    from core.spec import Spec
+    from core.forces.dynamics import MassProperties
+    from core.files.io import masses_to_dict, save_design
+    from core.linkage.spec import Spec
     folder = tmp_path_factory.mktemp("zh")
     cam = CamInputs(arm_mm=160.0, program=Program(20.0, 70.0, 5.0, 80.0, "poly345", "cosine"))
     loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,

@@ -6,10 +6,10 @@ from __future__ import annotations
 import pytest
 
 from core.cam import CamInputs
-from core.dynamics import MassProperties
-from core.flywheel import summarize
+from core.forces.dynamics import MassProperties
+from core.forces.flywheel import summarize
 from core.gear import GearPairInputs
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.report.blocks import KeyValues, Paragraph, Table
 from shaperapp.report.content import Options, build
 

@@ -15,7 +15,7 @@ import pytest
 from PySide6.QtGui import QImage
 
 from core.gear import GearPairInputs, design_pair, pair_checks
-from core.spec import Spec
+from core.linkage.spec import Spec
 from shaperapp.report.content import Options, build
 from shaperapp.report.pdf import page_boxes, pdf_bytes
 from shaperapp.widgets import i18n

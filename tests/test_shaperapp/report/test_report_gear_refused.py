@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from core.errors import DesignError
+from core.base.errors import DesignError
 from core.gear import design_pair
 from core.gear.file import gear_from_dict
 from shaperapp.report.blocks import Paragraph

@@ -1,15 +1,15 @@
 """The report draws the lever's force polygon the kinetostatic sheet draws (issue 40, item 3):
 at each of the two positions, after the ram group's, the lever's (G4, F_I4, R_A, R_O4,
-R_4B of core.polygons.lever_force_polygon) under its own title, in English and Chinese."""
+R_4B of core.forces.polygons.lever_force_polygon) under its own title, in English and Chinese."""
 from __future__ import annotations
 
 import pytest
 from PySide6.QtCore import QRectF
 from PySide6.QtGui import QImage
 
-from core.dynamics import MassProperties
-from core.polygons import lever_force_polygon
-from core.spec import Spec
+from core.forces.dynamics import MassProperties
+from core.forces.polygons import lever_force_polygon
+from core.linkage.spec import Spec
 from shaperapp.report.blocks import Figure
 from shaperapp.report.content import Options, build
 from shaperapp.widgets import i18n

@@ -18,8 +18,8 @@ import pytest
 from PySide6.QtCore import QCoreApplication
 
 import shaperapp.report.figures as figures
-from core.metrics import analyze
-from core.spec import Spec
+from core.linkage.metrics import analyze
+from core.linkage.spec import Spec
 from shaperapp.scheme.view import SchemeWidget
 
 SPECS = [Spec(mode="dimensions", crank=110.0, frame=380.0, lever=540.0, variant="rod", rod_ratio=0.25),

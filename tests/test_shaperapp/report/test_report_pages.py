@@ -19,10 +19,10 @@ import pytest
 from PySide6.QtGui import QImage
 
 from core.cam import CamInputs
-from core.compare import Candidate
+from core.space.compare import Candidate
 from core.gear import GearPairInputs
-from core.dynamics import MassProperties
-from core.spec import Spec
+from core.forces.dynamics import MassProperties
+from core.linkage.spec import Spec
 from shaperapp.report.content import Options, build
 from shaperapp.report.pdf import PAGE_MM, page_boxes, pdf_bytes
 from shaperapp.widgets import i18n
@@ -147,7 +147,7 @@ def test_report_figures_are_the_laid_out_views(qapp, tmp_path, kind):
     from PySide6.QtGui import QImage
 
     import figure_checks as fc
-    from core.metrics import analyze
+    from core.linkage.metrics import analyze
     from shaperapp.report.figures import ReportViews
     spec, rpms = SPECS["rod"], [40.0, 60.0]
     views = ReportViews(spec, rpms, LOADS, analyze(spec.design(), rpms))

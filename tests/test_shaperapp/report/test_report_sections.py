@@ -11,8 +11,8 @@ import subprocess
 import pytest
 
 from core.cam import CamInputs
-from core.dynamics import MassProperties
-from core.spec import Spec
+from core.forces.dynamics import MassProperties
+from core.linkage.spec import Spec
 from shaperapp.report.content import Options, build
 from shaperapp.report.pdf import pdf_bytes
 from shaperapp.report.pdf_base import PAGE_MM, RIGHT_MM

@@ -11,8 +11,8 @@ from PySide6.QtCore import QRectF
 from PySide6.QtGui import QColor, QImage
 
 import shaperapp.report.figures as figures
-from core.metrics import analyze
-from core.spec import Spec
+from core.linkage.metrics import analyze
+from core.linkage.spec import Spec
 from paint_recorder import PaintRecorder
 
 pytestmark = pytest.mark.slow      # about 3 s a design: the report's views are built and exported

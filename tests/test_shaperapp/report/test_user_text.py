@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from cli_runner import shaper, shaper_in_process
-from core.io import FORMULA_LEADS, csv_text, snap_zeros, table_csv
+from core.files.io import FORMULA_LEADS, csv_text, snap_zeros, table_csv
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 

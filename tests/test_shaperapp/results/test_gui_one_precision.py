@@ -1,7 +1,7 @@
 """One figure, one precision (issue 40 item 3): θ read 33.6529° in the CLI and the
 report and 33.653° on the Results pane and the sheet; K 1.45991, 1.4599 and 1.459905;
 lengths 345.398 beside 345.40; the torque 300.8 beside 300.8 and 300.80. Each figure is
-now written by ``core.figure_text`` wherever a table shows it: the CLI's rows (which the
+now written by ``core.base.figure_text`` wherever a table shows it: the CLI's rows (which the
 report prints), the Results pane, the library's and Compare's tables, and the motion and
 forces sheets' tables. The reference below is the rule itself, written out: lengths and
 angles to 3 decimals, K, times, speeds and accelerations to 4, loads to 4 significant
@@ -18,10 +18,10 @@ from core.drawing.forces import ENGLISH as FORCE_LABELS
 from core.drawing.forces import flywheel_rows
 from core.drawing.motion import ENGLISH as MOTION_LABELS
 from core.drawing.motion import _dimension_rows
-from core.dynamics import MassProperties
-from core.flywheel import summarize
-from core.geometry import synthesize
-from core.metrics import analyze
+from core.forces.dynamics import MassProperties
+from core.forces.flywheel import summarize
+from core.linkage.geometry import synthesize
+from core.linkage.metrics import analyze
 from shaperapp.results.panel import MetricsPanel
 from shaperapp.widgets.figure_labels import format_figure
 

@@ -1,6 +1,6 @@
 """The scheme's force arrows draw core's joint forces (the chosen crank speed) to one scale.
 
-The expected forces are solved here again with core.dynamics from the model's
+The expected forces are solved here again with core.forces.dynamics from the model's
 design, crank angles, speeds and loads; the arrows are read back from the
 drawn path (``SchemeWidget.drawn_forces``).
 """
@@ -15,7 +15,7 @@ import pytest
 from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import QApplication, QCheckBox
 
-from core.dynamics import solve_dynamics
+from core.forces.dynamics import solve_dynamics
 from shaperapp.design.model import DesignModel
 from shaperapp.scheme.view import SchemeWidget
 

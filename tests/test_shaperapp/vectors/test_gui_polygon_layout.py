@@ -15,9 +15,9 @@ from PySide6.QtCore import QRectF, QSettings
 from PySide6.QtGui import QFontMetricsF, QImage
 from PySide6.QtWidgets import QApplication
 
-from core.dynamics import MassProperties
-from core.geometry import synthesize
-from core.polygons import polygons
+from core.forces.dynamics import MassProperties
+from core.linkage.geometry import synthesize
+from core.forces.polygons import polygons
 from shaperapp.design.model import DesignModel
 from shaperapp.report.figures import report_font
 from shaperapp.vectors.paint import auto_scale, paint_polygon
@@ -125,8 +125,8 @@ def test_png_export_at_a_limit_position_keeps_the_whole_drawing(qapp, tmp_path, 
     from PySide6.QtGui import QImage
 
     import shaperapp.vectors.export as export
-    from core.geometry import synthesize
-    from core.polygons import polygons
+    from core.linkage.geometry import synthesize
+    from core.forces.polygons import polygons
     from shaperapp.vectors.paint import vector_colour
 
     design = synthesize(100.0, 1.4, 300.0, rod_ratio=0.4)

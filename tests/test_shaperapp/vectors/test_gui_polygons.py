@@ -6,9 +6,9 @@ import pytest
 from PySide6.QtCore import QLineF, QRectF
 from PySide6.QtGui import QImage, QPainter
 
-from core.dynamics import MassProperties
-from core.geometry import synthesize
-from core.polygons import nice_scale, paper, polygons
+from core.forces.dynamics import MassProperties
+from core.linkage.geometry import synthesize
+from core.forces.polygons import nice_scale, paper, polygons
 from shaperapp.vectors.export import export_polygon
 from shaperapp.vectors.paint import paint_polygon
 from shaperapp.vectors.view import PolygonView

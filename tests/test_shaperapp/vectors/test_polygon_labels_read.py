@@ -15,9 +15,9 @@ import pytest
 from PySide6.QtCore import QLineF, QPointF, QRectF
 from PySide6.QtGui import QFontMetricsF, QImage
 
-from core.dynamics import MassProperties, masses_for_design
-from core.geometry import from_dimensions
-from core.polygons import force_polygon, lever_force_polygon
+from core.forces.dynamics import MassProperties, masses_for_design
+from core.linkage.geometry import from_dimensions
+from core.forces.polygons import force_polygon, lever_force_polygon
 from shaperapp.report.figures import report_font
 from shaperapp.vectors.paint import auto_scale, paint_polygon
 

@@ -16,9 +16,9 @@ import numpy as np
 import pytest
 from PySide6.QtGui import QImage
 
-from core.compare import Candidate
-from core.dynamics import MassProperties
-from core.spec import Spec
+from core.space.compare import Candidate
+from core.forces.dynamics import MassProperties
+from core.linkage.spec import Spec
 from shaperapp.compare.view import CompareView
 from shaperapp.explore.view import ExploreView
 from shaperapp.plots.forces_panel import ForcesPanel

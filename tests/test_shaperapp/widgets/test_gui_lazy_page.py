@@ -142,9 +142,9 @@ def painted():
     print(sorted(n for n, p in window._pages.items() if p.is_built()))
     app.quit()
 WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.vectors.view",
-           "shaperapp.positions", "shaperapp.library", "shaperapp.plots.forces", "shaperapp.drawing", "core.library", "core.compare",
+           "shaperapp.positions", "shaperapp.library", "shaperapp.plots.forces", "shaperapp.drawing", "core.library", "core.space.compare",
            "shaperapp.cam.tab", "shaperapp.cam.plots", "shaperapp.cam.profile_view", "core.drawing",
-           "core.cam_drawing", "ezdxf", "numpy.ma.", "importlib.metadata")
+           "core.drawing.cam_dxf", "ezdxf", "numpy.ma.", "importlib.metadata")
 _when_painted(window, painted)
 app.exec()
 """
@@ -167,7 +167,7 @@ print(status, os.environ.get("OPENBLAS_NUM_THREADS"))
 
 
 def test_the_app_starts_numpy_with_one_blas_thread(tmp_path):
-    """shaperapp's main asks OpenBLAS for one thread before numpy loads (core.blas):
+    """shaperapp's main asks OpenBLAS for one thread before numpy loads (core.base.blas):
     its idle worker threads spun for about 0.1 s of CPU at every start."""
     lines = _run_probe(APP_PROBE, tmp_path)
     assert lines[0].startswith("first window painted after ")

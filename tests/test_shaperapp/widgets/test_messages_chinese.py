@@ -1,12 +1,12 @@
 """Every message of widgets/messages.py reaches a Chinese user in Chinese (issue 32, item 5):
 the templates for core's DesignError texts, the names of the fields, and the reasons a
-design file is refused (core.errors.FILE_REASONS), each scanned for English words."""
+design file is refused (core.base.errors.FILE_REASONS), each scanned for English words."""
 from dataclasses import fields
 
 import pytest
 
-from core.errors import FILE_REASONS, DesignError, FileFormatError
-from core.spec import Spec
+from core.base.errors import FILE_REASONS, DesignError, FileFormatError
+from core.linkage.spec import Spec
 from language_checks import english_words, words_of
 from shaperapp.widgets import i18n, messages
 
@@ -32,7 +32,7 @@ def test_every_reason_a_file_is_refused_has_a_template():
 def test_every_field_a_file_can_name_is_named_in_chinese(chinese):
     from core.cam.file import cam_to_dict
     from core.cam import CamInputs, Program
-    from core.dynamics import MassProperties
+    from core.forces.dynamics import MassProperties
     names = [f.name for f in fields(Spec)] + [f.name for f in fields(MassProperties)] + ["rpm", "step", "forces", "cam"]
     names += list(cam_to_dict(CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0)), None))
     shown = {name: messages.field_name(name) for name in names}

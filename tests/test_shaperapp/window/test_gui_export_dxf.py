@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from PySide6.QtCore import QSettings
 
-from core.kinematics import shape
+from core.linkage.kinematics import shape
 from shaperapp.design.document import Document
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs

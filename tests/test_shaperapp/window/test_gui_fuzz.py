@@ -18,8 +18,8 @@ import pytest
 from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
-from core.io import load_design
-from core.spec import NUMBER_FIELDS
+from core.files.io import load_design
+from core.linkage.spec import NUMBER_FIELDS
 from shaperapp.design.model import DesignModel
 from shaperapp.design.results import MAX_GUI_SAMPLES
 from shaperapp.widgets import file_dialogs

@@ -3,7 +3,7 @@ import re
 
 import pytest
 
-from core.geometry import synthesize
+from core.linkage.geometry import synthesize
 from shaperapp.window.help import GuideDialog, about_text, guide_html, version
 
 
@@ -22,7 +22,7 @@ def test_worked_example_figures_are_the_engine_s(language):
     design = synthesize(100.0, 1.4, 300.0)
     assert f"{design.frame:.2f}" in html and f"{design.lever:.2f}" in html
     assert f"{design.guide_above_crank:.2f}" in html
-    from core.metrics import analyze
+    from core.linkage.metrics import analyze
     speed = analyze(design, [40.0]).speeds[0]
     assert f"{speed.v_work_max_m_s:.4f}" in html and f"{speed.v_return_max_m_s:.4f}" in html
     assert f"{speed.work_time_s:.3f}" in html and f"{speed.return_time_s:.3f}" in html

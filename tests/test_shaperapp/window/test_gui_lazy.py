@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from PySide6.QtWidgets import QApplication
 
-from core.dynamics import masses_for_design, solve_dynamics
-from core.kinematics import solve
+from core.forces.dynamics import masses_for_design, solve_dynamics
+from core.linkage.kinematics import solve
 
 from gui_helpers import main_window
 

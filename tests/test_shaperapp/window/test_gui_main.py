@@ -4,9 +4,9 @@ import sys
 
 import numpy as np
 
-from core.figure_text import figure_text   # one precision per kind (issue 40)
-from core.geometry import synthesize
-from core.kinematics import solve
+from core.base.figure_text import figure_text   # one precision per kind (issue 40)
+from core.linkage.geometry import synthesize
+from core.linkage.kinematics import solve
 
 
 def test_opens_on_default_design(window):
@@ -101,8 +101,8 @@ def test_forces_table_follows_edits_speeds_and_language(qtbot, tmp_path):
     the new design, and after a language switch its row titles are translated."""
     from PySide6.QtWidgets import QApplication
 
-    from core.dynamics import masses_for_design
-    from core.flywheel import summarize
+    from core.forces.dynamics import masses_for_design
+    from core.forces.flywheel import summarize
     from gui_helpers import main_window
 
     with main_window(tmp_path) as window:
@@ -137,8 +137,8 @@ def test_summary_is_solved_only_when_shown_and_filled_before_it_is_seen(qtbot, t
     keeps its rows and columns; scrolled into view it shows core's numbers at once."""
     from PySide6.QtWidgets import QApplication, QScrollArea
 
-    from core.dynamics import masses_for_design
-    from core.flywheel import summarize
+    from core.forces.dynamics import masses_for_design
+    from core.forces.flywheel import summarize
     from gui_helpers import main_window
 
     with main_window(tmp_path) as window:
@@ -176,8 +176,8 @@ def test_copying_the_forces_table_below_the_fold_copies_numbers(qtbot, tmp_path)
     to date first: the clipboard never gets placeholders."""
     from PySide6.QtWidgets import QApplication
 
-    from core.dynamics import masses_for_design
-    from core.flywheel import summarize
+    from core.forces.dynamics import masses_for_design
+    from core.forces.flywheel import summarize
     from gui_helpers import main_window
 
     with main_window(tmp_path) as window:

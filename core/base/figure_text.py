@@ -1,0 +1,52 @@
+"""How a figure is written in a table: one precision per kind of quantity (issue 40).
+
+The CLI's text tables, the report (which prints the CLI's rows), the Results pane,
+the library and Compare tables and the drawing sheets all write a figure through
+``figure_text``, so that one figure reads the same everywhere: θ = 33.653° in every
+place, not 33.6529° in one and 33.653° in another, K = 1.4599, not 1.45991 beside
+1.459905. CSV and JSON keep the full precision (``core.files.numtext``); the positions
+table has its own rule (five significant digits of a column's largest value), since a
+column of one quantity shares its decimals.
+
+Fixed decimals where a course design quotes a quantity that way (lengths to the
+micrometre, angles to a thousandth of a degree, speeds and accelerations to 0.1 mm/s
+and 0.1 mm/s²); four significant digits for the loads, whose size spans decades.
+"""
+from __future__ import annotations
+
+import math
+
+# kind → ("f", decimals) or ("s", significant digits, written in fixed notation)
+PRECISION: dict[str, tuple[str, int]] = {
+    "length": ("f", 3),          # mm
+    "angle": ("f", 3),           # °
+    "ratio": ("f", 4),           # K, the nominal and the measured one
+    "time": ("f", 4),            # s
+    "speed": ("f", 4),           # m/s
+    "acceleration": ("f", 4),    # m/s²
+    "angular_speed": ("f", 4),   # rad/s, rad/s²
+    "torque": ("s", 4),          # N·m
+    "power": ("s", 4),           # W, kW
+    "energy": ("s", 4),          # J
+    "inertia": ("s", 4),         # kg·m²
+    "coefficient": ("s", 5),     # δ
+    # the gear pair's figures as ``shaper gear`` prints them: a meshing is checked to 0.1 µm
+    # and its shift factors, α′ and ε to six decimals (core.gear.table)
+    "gear_length": ("f", 4),     # mm: a′, the diameters, the thicknesses
+    "gear_angle": ("f", 6),      # °: α′
+    "gear_factor": ("f", 6),     # x1, x2, y, Δy, ε
+}
+
+
+def figure_text(kind: str, value: float) -> str:
+    """``value`` as a table writes a figure of ``kind`` (see ``PRECISION``), without a
+    negative zero; '—' for a value that is not finite (a figure the design has not)."""
+    style, digits = PRECISION[kind]
+    if not math.isfinite(value):
+        return "—"
+    if style == "s":
+        if value == 0.0:
+            return "0"
+        digits = min(max(digits - 1 - math.floor(math.log10(abs(value))), 0), 12)
+    text = f"{value:.{digits}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text

@@ -1,0 +1,355 @@
+"""Many designs at once: link lengths as arrays, and the rules every design must pass.
+
+The lowest level of core, below :mod:`core.linkage.geometry`. ``geometry.synthesize``,
+``from_dimensions`` and ``validate`` run exactly these vectorized rules on one
+design, so a design in a sweep of a hundred thousand and the same design typed
+into the form are refused by the same rule, naming the same parameter, with the
+same message. Rules are checked in a fixed order and a design is refused by the
+first one it fails, as a single design's validation raises at the first.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+import numpy as np
+
+from core.base.arrays import sorted_unique
+from core.base.errors import DesignError, range_text
+from .extrema import grid_minimum
+from .verdict import Flat, Verdict, check_range, round_text
+
+MIN_LENGTH_MM = 0.001
+MAX_LENGTH_MM = 100_000.0
+MAX_TIME_RATIO = 5.0
+# L1/L2 = sin(θ/2) at K = 5 (θ = 120°): the largest crank a frame allows.
+MAX_CRANK_RATIO = math.sin(math.pi * (MAX_TIME_RATIO - 1.0) / (MAX_TIME_RATIO + 1.0) / 2.0)
+# The rod must keep a horizontal reach |Cx − Bx| and a drive margin of this fraction of
+# L4 (a pressure angle below 89.94°), so forces and accelerations stay finite and exact.
+ROD_MARGIN = 1e-3
+ROD_SIDES: tuple[str, ...] = ("trailing", "leading")
+GUIDE_RULES: tuple[str, ...] = ("chord", "sagitta")
+MAX_ROD_RATIO = 10.0
+
+_LENGTH_TEXT = range_text(MIN_LENGTH_MM, MAX_LENGTH_MM, "mm", low_open=False)
+
+
+@dataclass(frozen=True)
+class Designs:
+    """Link lengths of many designs of one variant and rod side, mm.
+
+    Every length is an array; all of them broadcast to one shape (the
+    designs' shape). ``rod`` is None for the block variant. The fields and
+    derived properties have the names and meanings of :class:`core.linkage.geometry.Design`,
+    so kinematics and dynamics take either.
+    """
+
+    crank: np.ndarray
+    frame: np.ndarray
+    lever: np.ndarray
+    guide: np.ndarray
+    rod: np.ndarray | None = None
+    rod_side: str = "trailing"
+
+    @property
+    def variant(self) -> str:
+        return "block" if self.rod is None else "rod"
+
+    @property
+    def theta(self) -> np.ndarray:
+        """Extreme-position angle θ, rad."""
+        return 2.0 * np.arcsin(self.crank / self.frame)
+
+    @property
+    def time_ratio(self) -> np.ndarray:
+        theta = self.theta
+        return (math.pi + theta) / (math.pi - theta)
+
+    @property
+    def stroke(self) -> np.ndarray:
+        """Nominal stroke 2·L3·sin(θ/2) = 2·L3·L1/L2, mm."""
+        return 2.0 * self.lever * (self.crank / self.frame)
+
+    @property
+    def rod_sign(self) -> float:
+        return 1.0 if self.rod_side == "leading" else -1.0
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return np.broadcast_shapes(*(np.shape(v) for v in self._lengths()))
+
+    def _lengths(self) -> list[np.ndarray]:
+        values = [self.crank, self.frame, self.lever, self.guide]
+        return values if self.rod is None else values + [self.rod]
+
+    def lengths(self) -> list[np.ndarray]:
+        """L1, L2, L3, guide height [, L4]: the arrays a vectorized root search carries as
+        its arguments and subsets as brackets close (see :meth:`with_lengths`)."""
+        return self._lengths()
+
+    def with_lengths(self, lengths: Sequence[np.ndarray]) -> "Designs":
+        """Designs of this variant and rod side from lengths in the order of :meth:`lengths`."""
+        crank, frame, lever, guide, *rod = lengths
+        return Designs(crank, frame, lever, guide, rod[0] if rod else None, self.rod_side)
+
+    def _map(self, fun: Callable[[np.ndarray], np.ndarray]) -> "Designs":
+        shape = self.shape
+        return self.with_lengths([fun(np.broadcast_to(v, shape)) for v in self._lengths()])
+
+    def take(self, index) -> "Designs":
+        """The designs at ``index`` (an index array or boolean mask over the designs)."""
+        return self._map(lambda v: v[index])
+
+    def flat(self) -> "Designs":
+        """The same designs as one axis (every length broadcast to the designs' shape)."""
+        return self._map(lambda v: v.reshape(-1))
+
+    def column(self) -> "Designs":
+        """The same designs with a trailing axis, to broadcast against (…, n) crank angles."""
+        return self._map(lambda v: v[..., None])
+
+    @classmethod
+    def of(cls, design) -> "Designs":
+        """One :class:`~core.linkage.geometry.Design` (or anything with its fields) as shape (1,)."""
+        one = lambda v: np.array([float(v)])  # noqa: E731
+        return cls(one(design.crank), one(design.frame), one(design.lever), one(design.guide),
+                   None if design.rod is None else one(design.rod), design.rod_side)
+
+
+def check_length(verdict: Verdict, name: str, value: np.ndarray) -> None:
+    """A link length in [MIN_LENGTH_MM, MAX_LENGTH_MM] mm."""
+    check_range(verdict, name, value, MIN_LENGTH_MM, MAX_LENGTH_MM, "mm", low_open=False)
+
+
+def _floats(*values) -> list[np.ndarray]:
+    arrays = [np.asarray(v, dtype=float) for v in values]
+    shape = np.broadcast_shapes(*(a.shape for a in arrays))
+    return [np.broadcast_to(a, shape) for a in arrays]
+
+
+def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_ratio=None,
+                    rod_side: str = "trailing",
+                    validate: bool = True) -> tuple[Designs, Verdict]:
+    """Seed 003's synthesis for arrays of L1, K, H (and guide height, rod or rod ratio).
+
+    Returns the designs (NaN where a rule failed before their lengths existed)
+    and the verdict. Without ``validate`` only the synthesis rules are checked
+    (``geometry.Design`` checks the rest on construction).
+    """
+    (crank, time_ratio, stroke), extra = _inputs((crank, time_ratio, stroke), guide, rod, rod_ratio)
+    shape = crank.shape
+    verdict = Verdict(np.zeros(shape, dtype=np.int16))
+    check_length(verdict, "crank", crank)
+    check_range(verdict, "time_ratio", time_ratio, 1.0, MAX_TIME_RATIO)
+    check_length(verdict, "stroke", stroke)
+    with np.errstate(all="ignore"):
+        theta = math.pi * (time_ratio - 1.0) / (time_ratio + 1.0)
+        half = np.sin(theta / 2.0)
+        # L2 = L1/sin(θ/2) and L3 = H/(2 sin(θ/2)) grow without bound as K → 1.
+        smallest = np.maximum(crank, stroke / 2.0) / MAX_LENGTH_MM
+        angle = 2.0 * np.arcsin(np.minimum(smallest, 1.0))
+        k_min = (math.pi + angle) / (math.pi - angle)
+        frame = crank / half
+        lever = stroke / (2.0 * half)
+        need = 2.0 * (crank + frame) * half
+        too_short = lever < crank + frame
+    verdict.check("time_ratio", half < smallest, time_ratio,
+                  lambda i, at=Flat(k_min, shape): _k_min_text(float(at[i])))
+    verdict.check("stroke", too_short, stroke,
+                  lambda i, at=Flat(need, shape):
+                      f"must be ≥ {at[i]:.1f} mm for this crank and K, "
+                      "so that the crank pin stays on the lever")
+    return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
+
+
+def _k_min_text(k_min: float) -> str:
+    """What K must be so that the frame and the lever stay ≤ MAX_LENGTH_MM: a bound, or,
+    where none up to MAX_TIME_RATIO exists (a crank or half stroke near MAX_LENGTH_MM,
+    where the bound is infinite), that no K does."""
+    if k_min <= MAX_TIME_RATIO:
+        return (f"must be ≥ {round_text(k_min)} for this crank and stroke, so that the frame "
+                f"and the lever stay ≤ {MAX_LENGTH_MM:g} mm")
+    return (f"no K up to {MAX_TIME_RATIO:g} keeps the frame and the lever ≤ {MAX_LENGTH_MM:g} mm "
+            "for this crank and stroke: shorten them")
+
+
+def dimensions_many(crank, frame, lever, *, guide="chord", rod=None, rod_ratio=None,
+                    rod_side: str = "trailing", validate: bool = True) -> tuple[Designs, Verdict]:
+    """Designs from arrays of measured link lengths; K, H and θ are then implied."""
+    (crank, frame, lever), extra = _inputs((crank, frame, lever), guide, rod, rod_ratio)
+    verdict = Verdict(np.zeros(crank.shape, dtype=np.int16))
+    check_length(verdict, "crank", crank)
+    check_length(verdict, "frame", frame)
+    check_length(verdict, "lever", lever)
+    check_crank_ratio(verdict, crank, frame)
+    with np.errstate(all="ignore"):
+        theta = 2.0 * np.arcsin(np.minimum(crank / frame, 1.0))
+    return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
+
+
+def _inputs(lengths, guide, rod, rod_ratio):
+    """The three leading lengths as float arrays of one shape, and (guide, rod, rod ratio):
+    a guide rule stays a name, every number becomes an array of that shape."""
+    numeric = not (isinstance(guide, str) and guide in GUIDE_RULES)
+    given = [_guide_number(guide) if numeric else None, rod, rod_ratio]
+    arrays = iter(_floats(*lengths, *[v for v in given if v is not None]))
+    first = [next(arrays) for _ in lengths]
+    extra = tuple(next(arrays) if v is not None else None for v in given)
+    return first, (extra[0] if numeric else guide,) + extra[1:]
+
+
+def _assemble(verdict: Verdict, crank, frame, lever, theta, extra, rod_side: str,
+              validate: bool) -> tuple[Designs, Verdict]:
+    """The rod and guide rules, the designs, and (with ``validate``) the design rules."""
+    guide, rod, rod_ratio = extra
+    rod_length = _rod_length(verdict, rod, rod_ratio, lever)
+    designs = Designs(crank, frame, lever, _guide(verdict, guide, lever, theta), rod_length,
+                      rod_side)
+    if validate:
+        check_designs(verdict, designs)
+    return designs, verdict
+
+
+def _guide_number(guide):
+    """An explicit guide height (a number, an array, or a number as text)."""
+    if isinstance(guide, str):
+        try:
+            return float(guide)
+        except ValueError:
+            raise DesignError("guide", guide,
+                              "must be 'chord', 'sagitta' or a height in mm") from None
+    return guide
+
+
+def _guide(verdict: Verdict, guide, lever: np.ndarray, theta: np.ndarray) -> np.ndarray:
+    """Guide height above O4 for a named rule (see ``geometry.guide_height``) or given heights."""
+    if isinstance(guide, str):
+        with np.errstate(all="ignore"):     # a lever near the float limit: inf, refused later
+            chord = lever * np.cos(theta / 2.0)
+            return chord if guide == "chord" else (lever + chord) / 2.0
+    check_length(verdict, "guide", guide)
+    return guide
+
+
+def _rod_length(verdict: Verdict, rod, rod_ratio, lever: np.ndarray) -> np.ndarray | None:
+    if rod is not None and rod_ratio is not None:
+        raise DesignError("rod", float(np.ravel(rod)[0]),
+                          "must be given either as a length or as a ratio L4/L3, not both")
+    if rod_ratio is not None:
+        check_range(verdict, "rod_ratio", rod_ratio, 0.0, MAX_ROD_RATIO)
+        with np.errstate(all="ignore"):
+            return rod_ratio * lever
+    if rod is not None:
+        check_length(verdict, "rod", rod)
+        return rod
+    return None
+
+
+def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) -> None:
+    """K = (π + θ)/(π − θ) with sin(θ/2) = L1/L2 must stay ≤ 5, like a synthesized K."""
+    shape = verdict.failed.shape
+    verdict.check("crank", crank >= frame, crank,
+                  lambda i, at=Flat(frame, shape):
+                      f"must be shorter than the frame O2O4 ({at[i]:.6g} mm)")
+    with np.errstate(all="ignore"):
+        too_long = crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12)
+    verdict.check("crank", too_long, crank,
+                  lambda i, at=Flat(frame, shape):
+                      f"must be ≤ {round_text(MAX_CRANK_RATIO * at[i], down=True)}"
+                      f" mm (0.866·L2), so that the time ratio K stays ≤ {MAX_TIME_RATIO:g}")
+
+
+def check_designs(verdict: Verdict, d: Designs) -> None:
+    """Refuse designs that cannot be assembled or would jam somewhere in the cycle."""
+    shape = verdict.failed.shape
+    for name in ("crank", "frame", "lever", "guide"):
+        check_length(verdict, name, getattr(d, name))
+    check_crank_ratio(verdict, d.crank, d.frame)
+    verdict.check("rod_side", d.rod_side not in ROD_SIDES, d.rod_side,
+                  "must be 'trailing' or 'leading'")
+    with np.errstate(all="ignore"):
+        reach = d.frame + d.crank
+        tip_low = d.lever * np.sqrt(1.0 - np.minimum(d.crank / d.frame, 1.0) ** 2)  # L3·cos(θ/2)
+    verdict.check("lever", d.lever < reach, d.lever,
+                  lambda i, at=Flat(reach, shape):
+                      f"must be ≥ L2 + L1 = {at[i]:.6g} mm, "
+                      "so that the crank pin stays on the lever")
+    verdict.check("guide", d.guide <= reach, d.guide,
+                  lambda i, at=Flat(reach, shape):
+                      f"must be > L2 + L1 = {at[i]:.6g} mm above the lever "
+                      "pivot, so that the ram clears the crank")
+    if d.rod is None:
+        verdict.check("guide", d.guide > d.lever, d.guide,
+                      lambda i, at=Flat(d.lever, shape):
+                          f"must be ≤ the lever length {at[i]:.6g} mm: "
+                          "the block on the lever tip cannot reach a higher guide")
+        return
+    check_length(verdict, "rod", d.rod)
+    # The rod's rise |d| = |guide − By| is largest at a limit position (By lowest) or at
+    # ψ = 0 (By = L3); its horizontal reach sqrt(L4² − d²) must stay ≥ ROD_MARGIN·L4.
+    with np.errstate(all="ignore"):
+        need = np.maximum(d.guide - tip_low, d.lever - d.guide) / math.sqrt(1.0 - ROD_MARGIN ** 2)
+    verdict.check("rod", d.rod <= need, d.rod,
+                  lambda i, at=Flat(need, shape):
+                      f"must be > {at[i]:.6g} mm to reach the guide line "
+                      "over the whole cycle")
+    # r·cos ψ − s·d·sin ψ ≥ r_min·cos(θ/2) − |d|_max·sin(θ/2): where this bound already
+    # clears the margin the exact minimum is not needed (it changes no verdict).
+    with np.errstate(all="ignore"):
+        rise = np.maximum(np.abs(d.guide - d.lever), np.abs(d.guide - tip_low))
+        ratio = d.crank / d.frame
+        bound = np.sqrt(np.maximum(d.rod ** 2 - rise ** 2, 0.0)) * np.sqrt(1.0 - ratio ** 2) \
+            - rise * ratio
+    margin = np.full(shape, np.inf)
+    todo = verdict.ok & ~(bound > 2.0 * ROD_MARGIN * d.rod)
+    if todo.any():
+        margin[todo] = drive_margin(d.take(todo))
+    verdict.check("rod", margin <= ROD_MARGIN * d.rod, d.rod,
+                  "the rod passes a dead-centre position against the lever; "
+                  "lengthen the rod or move the guide line")
+
+
+# Unit offsets of the ψ grid on [−1, 1] (times θ/2): uniform, plus points crowding
+# geometrically toward ψ = 0 and the two ends, where the rod can stand nearly upright and
+# the drive margin can dip sharply (see drive_margin).
+_CROWD = 5.0 ** -np.arange(2, 9)
+_PSI_UNIT = sorted_unique(np.concatenate([np.linspace(-1.0, 1.0, 33), _CROWD, -_CROWD,
+                                          1.0 - _CROWD, _CROWD - 1.0]))
+_CHUNK = 4096
+
+
+def drive_margin(d: Designs) -> np.ndarray:
+    """min over the swing of r·cos ψ − s·d·sin ψ, mm, per design (rod variant).
+
+    r·cos ψ − s·d·sin ψ is the rod's extent measured square to the lever (the
+    cross product of the lever's and the rod's directions, times L4): zero where
+    the rod lies in line with the lever, which then has no arm to drive it (a
+    dead centre). d = guide − L3·cos ψ is largest in size at ψ = 0 or an end of the
+    swing, so the rod's reach r = sqrt(L4² − d²) is smallest, and the margin
+    can dip sharply, only there: the grid over ψ ∈ [−θ/2, θ/2] crowds toward
+    those points. The smallest sample is then polished to the zero of the
+    margin's analytic slope (see :mod:`core.linkage.extrema`), so a narrow dip between
+    samples is not missed.
+    """
+    half = (d.theta / 2.0)[..., None]
+    sign = d.rod_sign
+
+    def drive(psi, rod, guide, lever):
+        cos, sin = np.cos(psi), np.sin(psi)
+        depth = guide - lever * cos
+        reach = np.sqrt(np.maximum(rod ** 2 - depth ** 2, 0.0))
+        depth1 = lever * sin
+        with np.errstate(all="ignore"):
+            reach1 = np.where(reach > 0.0, -depth * depth1 / reach, 0.0)
+        return (reach * cos - sign * depth * sin,
+                reach1 * cos - reach * sin - sign * (depth1 * sin + depth * cos))
+
+    out = np.empty(np.shape(half)[:-1])
+    for i in range(0, out.shape[0], _CHUNK):       # chunks bound the grid's memory
+        part = slice(i, i + _CHUNK)
+        psi = half[part] * _PSI_UNIT
+        args = (d.rod[part, None], d.guide[part, None], d.lever[part, None])
+        values, slopes = drive(psi, *args)
+        out[part] = grid_minimum(drive, psi, values, slopes, args=args)
+    return out
