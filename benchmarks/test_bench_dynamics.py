@@ -7,7 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties
 from core.linkage.geometry import synthesize
 
 ANGLES = np.linspace(0.0, 2.0 * np.pi, 3601)

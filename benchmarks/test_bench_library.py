@@ -11,7 +11,7 @@ from dataclasses import replace
 
 import pytest
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.library import Library
 from core.linkage.spec import Spec
 

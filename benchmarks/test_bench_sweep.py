@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.metrics import analyze
 from core.linkage.spec import Spec
 from core.space.sweep import evaluate

@@ -8,7 +8,7 @@ spent inside write transactions (where a kill should hurt most).
 import sys
 from dataclasses import replace
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.library import Library
 from core.linkage.spec import Spec
 

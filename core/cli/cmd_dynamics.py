@@ -6,7 +6,8 @@ import argparse
 import numpy as np
 
 from core.base.figure_text import figure_text
-from core.forces.dynamics import DynamicsSummary, MassProperties, SpeedSummary, solve_dynamics
+from core.forces.dynamics import DynamicsSummary, SpeedSummary, solve_dynamics
+from core.forces.masses import MassProperties
 
 from core.forces.flywheel import summarize
 from core.linkage.geometry import Design

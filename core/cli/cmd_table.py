@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.geometry import Design
 from core.course_design.positions import (DEFAULT_COUNT, PositionTable, position_table, positions, positions_csv,
                          table_records, text_groups)

@@ -16,7 +16,7 @@ from core.linkage.geometry import Design
 from .common import LOAD_OPTIONS, UsageError, design_file, number, option_name
 
 if TYPE_CHECKING:
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
 
 REQUIRED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N")
 # an essential mass → the weight that may stand for it (the task book's G4, G6)
@@ -44,7 +44,7 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
     A rod mass the file keeps from the rod variant is dropped for a block design; one
     given as an option is refused by the solver instead.
     """
-    from core.forces.dynamics import MassProperties, masses_for_design   # only commands with loads
+    from core.forces.masses import MassProperties, masses_for_design  # only commands with loads
     doc = design_file(args)
     base = doc.get("masses") if doc is not None else None
     if base is not None:

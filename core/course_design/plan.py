@@ -157,7 +157,7 @@ def plan_course(doc: Mapping[str, Any], keys: Collection[str], name: str, folder
     design = spec.design()
     masses = doc.get("masses")
     if masses is not None:
-        from core.forces.dynamics import masses_for_design
+        from core.forces.masses import masses_for_design
         masses = masses_for_design(design, masses)
     idle = masses.idle_fraction if masses is not None else 0.05
     drawn = {}

@@ -21,7 +21,8 @@ from typing import Any, Sequence
 import numpy as np
 
 from core.linkage.designs import Designs
-from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties
 from core.linkage.cut import cut_window
 from core.files.dynamics_io import dynamics_table
 from core.base.errors import DesignError, require_finite

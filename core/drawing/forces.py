@@ -20,7 +20,8 @@ from typing import Mapping
 
 import numpy as np
 
-from core.forces.dynamics import MM, MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MM, MassProperties
 from core.base.figure_text import figure_text
 from core.forces.flywheel import summarize
 from core.linkage.geometry import Design

@@ -24,7 +24,7 @@ from core.linkage.kinematics import angle_count, check_rpms
 from core.linkage.spec import Spec
 
 if TYPE_CHECKING:
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
 
 FILE_FORMAT = "shaper-design"
 FILE_VERSION = 1
@@ -239,7 +239,7 @@ def _step(value: object, name: str, entry: str | None) -> float:
 def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
     """The load inputs as stored in a design file (units in the keys), as typed: a link
     given by its weight keeps its weight (``lever_weight_N``) and no mass."""
-    from core.forces.dynamics import WEIGHTS
+    from core.forces.masses import WEIGHTS
     data = {f.name: getattr(masses, f.name) for f in fields(masses)}
     data["ram_cg_mm"] = list(masses.ram_cg_mm)
     data["rotors"] = [{"J_kg_m2": j, "speed_ratio": r} for j, r in masses.rotors]
@@ -250,7 +250,7 @@ def masses_to_dict(masses: MassProperties) -> dict[str, Any]:
 
 def masses_from_dict(data: object) -> MassProperties:
     """Validate stored load inputs; DesignError names the bad field."""
-    from core.forces.dynamics import MassProperties     # only for a file with loads
+    from core.forces.masses import MassProperties  # only for a file with loads
     if not isinstance(data, dict):
         raise DesignError("forces", type(data).__name__, "must be an object of load inputs")
     known = {f.name for f in fields(MassProperties)}

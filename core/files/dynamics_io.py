@@ -9,7 +9,8 @@ from typing import Any
 
 import numpy as np
 
-from core.forces.dynamics import GRAVITY, Dynamics, DynamicsSummary, MassProperties
+from core.forces.dynamics import Dynamics, DynamicsSummary
+from core.forces.masses import GRAVITY, MassProperties
 from core.linkage.geometry import Design
 from .io import finite_or_none, table_csv
 

@@ -14,8 +14,9 @@ import numpy as np
 
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
-from .dynamics import (ENERGY_INTERVALS, MM, DynamicsSummary, MassProperties, SpeedSummary,
-                       _check_inputs, _eliminate, equivalent_inertia)
+from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs, _eliminate,
+                       equivalent_inertia)
+from .masses import MM, MassProperties
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles

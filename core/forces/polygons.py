@@ -28,7 +28,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .dynamics import MassProperties, solve_dynamics
+from .dynamics import solve_dynamics
+from .masses import MassProperties
 from core.linkage.geometry import Design
 from core.linkage.kinematics import rpm_to_omega, shape
 

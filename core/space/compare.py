@@ -24,7 +24,8 @@ from typing import Any, Iterator, Sequence
 
 import numpy as np
 
-from core.forces.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.files.io import csv_text, snap_zeros, zero_scale
 from .figures import DESIGN_FIGURES, SPEED_FIGURES, TEXT_FIGURES, Figures, figures

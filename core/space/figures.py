@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Iterable
 
-from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.masses import MassProperties, masses_for_design
 
 from core.forces.flywheel import summarize
 from core.files.io import finite_or_none

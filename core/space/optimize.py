@@ -21,7 +21,7 @@ from typing import Callable
 
 import numpy as np
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.linkage.spec import Spec
 from .sweep import Evaluation, evaluate, tidy_values

@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from core.linkage.designs import Designs, dimensions_many, synthesize_many
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.forces.flywheel import cycle_summary
 from core.base.errors import DesignError
 from core.linkage.metrics import CyclePeaks, cycle_peaks, speed_figures

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, replace
 from typing import Any, Mapping
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.spec import NUMBER_FIELDS, Spec

@@ -14,7 +14,7 @@ from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QFormLayout, QGroupBox, QLabel, QLineEdit,
                                QVBoxLayout, QWidget)
 
-from core.forces.dynamics import GRAVITY
+from core.forces.masses import GRAVITY
 from core.base.errors import DesignError
 from core.forces.rotors import rotors_from_text, rotors_text
 

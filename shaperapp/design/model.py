@@ -20,7 +20,8 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 from PySide6.QtGui import QUndoStack
 
-from core.forces.dynamics import Dynamics, DynamicsSummary, MassProperties
+from core.forces.dynamics import Dynamics, DynamicsSummary
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import Motion
@@ -120,7 +121,7 @@ class DesignModel(QObject):
 
     @property
     def masses(self) -> MassProperties:
-        """The last valid loads (as entered; see ``core.forces.dynamics.masses_for_design`` for what is solved)."""
+        """The last valid loads (as entered; see ``core.forces.masses.masses_for_design`` for what is solved)."""
         return self._masses
 
     @property

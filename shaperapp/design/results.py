@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from core.forces.dynamics import (ENERGY_INTERVALS, Dynamics, DynamicsSummary, MassProperties, SpeedSummary,
-                           masses_for_design, solve_dynamics)
+from core.forces.dynamics import ENERGY_INTERVALS, Dynamics, DynamicsSummary, SpeedSummary, solve_dynamics
+from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.forces.flywheel import summarize
 from core.linkage.geometry import Design

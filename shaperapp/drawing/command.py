@@ -17,7 +17,7 @@ from core.cli.common import UsageError, add_design_options, add_load_options, ad
 from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
 from core.drawing.motion import MAX_POSITIONS
 from core.drawing.sheet import PAPERS
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.course_design.positions import DEFAULT_COUNT, check_count
 

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Callable, Sequence
 from core.drawing.motion import motion_sheet
 from core.drawing.sheet import Sheet, number_text, paper
 from core.drawing.title_block import TitleBlock
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.spec import Spec
 
 from shaperapp.widgets.command_line import inputs_name
@@ -91,7 +91,7 @@ def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
     """The kinetostatic sheet at the choice's speed; the loads are needed (UsageError naming
     the cutting force without them: only the command line can leave them out)."""
     from core.drawing.forces import forces_sheet
-    from core.forces.dynamics import masses_for_design
+    from core.forces.masses import masses_for_design
     from core.cli.common import UsageError
     from .forces_labels import forces_labels
     if masses is None:

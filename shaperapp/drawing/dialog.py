@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (QComboBox, QDialog, QDialogButtonBox, QDoubleSpin
 
 from core.drawing.motion import MAX_POSITIONS, motion_sheet
 from core.drawing.sheet import PAPERS, Sheet
-from core.forces.dynamics import masses_for_design
+from core.forces.masses import masses_for_design
 from core.base.errors import DesignError
 from core.gear import GearPair, design_pair
 from core.course_design.positions import DEFAULT_COUNT

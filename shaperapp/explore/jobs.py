@@ -12,7 +12,7 @@ import threading
 from dataclasses import dataclass
 import numpy as np
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.space.optimize import Cancelled, Optimum, objective_of, optimize
 from core.linkage.spec import Spec

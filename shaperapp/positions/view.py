@@ -17,7 +17,7 @@ from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
                                QSpinBox, QWidget)
 
-from core.forces.dynamics import masses_for_design
+from core.forces.masses import masses_for_design
 from core.course_design.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
                             positions)
 from shaperapp.design.model import DesignModel

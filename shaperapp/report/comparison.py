@@ -13,7 +13,7 @@ from typing import Sequence
 from PySide6.QtCore import QCoreApplication
 
 from core.space.compare import Candidate, Comparison, compare, difference_text, value_text
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.library.names import unique_name
 from core.linkage.spec import Spec
 from shaperapp.widgets.figure_labels import figure_label, variant_label

@@ -22,7 +22,8 @@ from core.cli.cmd_dynamics import summary_rows
 from core.cli.cmd_synth import dimension_rows
 from core.cam import CamInputs
 from core.space.compare import Candidate
-from core.forces.dynamics import DynamicsSummary, MassProperties, masses_for_design
+from core.forces.dynamics import DynamicsSummary
+from core.forces.masses import MassProperties, masses_for_design
 from core.base.figure_text import figure_text
 from core.forces.flywheel import summarize
 from core.gear import GearPairInputs

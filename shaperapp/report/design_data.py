@@ -6,7 +6,7 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication
 
 from core.cam import CamInputs
-from core.forces.dynamics import GRAVITY, MassProperties
+from core.forces.masses import GRAVITY, MassProperties
 from core.base.figure_text import figure_text
 from core.gear.inputs import GearPairInputs
 from core.linkage.geometry import Design

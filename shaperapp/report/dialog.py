@@ -21,7 +21,7 @@ from PySide6.QtWidgets import (QCheckBox, QDialog, QDialogButtonBox, QDoubleSpin
 from core.cli.allocator import return_freed_memory
 from core.cam.file import cam_from_dict
 from core.space.compare import MAX_DESIGNS, Candidate
-from core.forces.dynamics import masses_for_design
+from core.forces.masses import masses_for_design
 from core.course_design.positions import DEFAULT_COUNT, MAX_COUNT, position_table, positions
 from core.base.progress import Progress
 from shaperapp.design.gear_source import design_gear

@@ -21,7 +21,7 @@ from PySide6.QtWidgets import QWidget
 
 from core.cam import Cam, CamInputs
 from core.space.compare import Comparison
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.geometry import Design
 from core.linkage.metrics import CycleMetrics
 from core.forces.polygons import lever_force_polygon, polygons

@@ -16,7 +16,7 @@ from PySide6.QtGui import QFontMetricsF, QPainter, QPaintEvent
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QFileDialog, QFrame, QLabel, QLineEdit,
                                QMessageBox, QScrollArea, QSizePolicy, QStyle, QToolButton, QWidget)
 
-from core.forces.dynamics import masses_for_design
+from core.forces.masses import masses_for_design
 from core.forces.polygons import KINDS, Polygon, polygons
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.view_parts import bar_over_body, fill_speed_combo

@@ -72,7 +72,7 @@ def test_each_links_labels_carry_its_number():
 
 def test_the_polygons_name_forces_by_their_links():
     """The block variant has no rod, so no force of link 5: the ram's are G_6 and F_I6."""
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     from core.linkage.geometry import synthesize
     from core.forces.polygons import force_polygon, lever_force_polygon
     masses = MassProperties(lever_mass_kg=20, ram_mass_kg=70, rod_mass_kg=5, cut_force_N=7000)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from core.space.compare import Candidate, best_indices, compare, comparison_document, curves_csv, table_csv
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.files.io import masses_to_dict, save_design
 from core.linkage.spec import Spec

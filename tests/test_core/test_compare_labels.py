@@ -26,7 +26,7 @@ def test_dimensions_and_rod_inputs():
 
 def test_choices_that_numbers_do_not_show():
     from core.space.compare import Candidate, distinguishing_choices
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     rod = Spec(variant="rod", guide_rule="sagitta")
     leading = replace(rod, rod_side="leading")
     chord = replace(rod, guide_rule="chord")

@@ -18,7 +18,7 @@ GEAR = {"z1": 13, "z2": 40, "module_mm": 6.0, "centre_mm": 162.0}
 
 
 def document(drop=()):
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     doc = design_document(Spec(), [40.0, 60.0], 1.0,
                           {"forces": masses_to_dict(MassProperties(cut_force_N=7000.0)), "cam": CAM,
                            "gear": GEAR})

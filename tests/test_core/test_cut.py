@@ -12,7 +12,8 @@ from hypothesis import strategies as st
 from cli_runner import shaper
 from core.linkage.cut import SWITCH_TOLERANCE, cut_window, cutting
 from core.linkage.designs import Designs
-from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.forces.flywheel import summarize
 from core.linkage.geometry import from_dimensions, synthesize

@@ -15,7 +15,8 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from core.forces.dynamics import GRAVITY, MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import GRAVITY, MassProperties
 
 from core.forces.flywheel import summarize
 from core.base.errors import DesignError

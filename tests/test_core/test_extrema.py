@@ -17,7 +17,8 @@ from hypothesis import strategies as st
 from scipy.optimize import minimize_scalar
 
 from core.linkage.designs import ROD_MARGIN
-from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties
 from core.forces.flywheel import summarize
 from core.base.errors import DesignError
 from core.linkage.geometry import Design, from_dimensions, rod_drive_margin, synthesize

@@ -75,7 +75,7 @@ def test_csv_table_is_long_form():
 
 
 def test_loads_round_trip_and_refusal(tmp_path):
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     from core.files.io import masses_to_dict
     masses = MassProperties(lever_mass_kg=22.5, lever_cg_mm=250.0, ram_mass_kg=60, ram_cg_mm=(-30.0, 45.0),
                             cut_force_N=5000, gravity=False, delta=0.05)

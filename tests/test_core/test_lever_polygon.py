@@ -3,7 +3,8 @@ from core.forces.dynamics close, which checks the lever's equilibrium in core.fo
 import numpy as np
 import pytest
 
-from core.forces.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties, masses_for_design
 from core.linkage.geometry import synthesize
 from core.forces.polygons import lever_force_polygon
 

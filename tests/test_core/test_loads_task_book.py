@@ -17,7 +17,8 @@ import numpy as np
 import pytest
 
 from core.files.design_file import masses_from_dict, masses_to_dict
-from core.forces.dynamics import GRAVITY, MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import GRAVITY, MassProperties
 from core.base.errors import DesignError
 from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize

@@ -6,7 +6,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties
 from core.linkage.geometry import synthesize
 from core.linkage.kinematics import rpm_to_omega, shape, solve
 from core.forces.polygons import (acceleration_polygon, force_polygon, nice_scale, paper, polygons,

@@ -7,7 +7,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from core.linkage.cut import cutting_force
-from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.linkage.geometry import Design, synthesize
 from core.files.io import curve_table

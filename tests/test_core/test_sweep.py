@@ -5,7 +5,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 
 from core.forces.flywheel import summarize
 from core.base.errors import DesignError

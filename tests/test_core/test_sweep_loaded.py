@@ -15,7 +15,8 @@ from hypothesis import strategies as st
 from test_extrema import corner_designs
 
 from core.linkage.designs import Designs
-from core.forces.dynamics import ENERGY_INTERVALS, MassProperties
+from core.forces.dynamics import ENERGY_INTERVALS
+from core.forces.masses import MassProperties
 from core.forces.flywheel import cycle_summary, summarize
 from core.linkage.geometry import Design
 from core.linkage.kinematics import rpm_to_omega

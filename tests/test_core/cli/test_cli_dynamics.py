@@ -12,7 +12,8 @@ import sys
 import numpy as np
 import pytest
 
-from core.forces.dynamics import MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties
 
 from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize

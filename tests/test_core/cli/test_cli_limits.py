@@ -13,7 +13,8 @@ import sys
 import numpy as np
 import pytest
 
-from core.forces.dynamics import MIN_DELTA, MassProperties, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MIN_DELTA, MassProperties
 
 from core.files.dynamics_io import dynamics_csv
 from core.base.errors import DesignError

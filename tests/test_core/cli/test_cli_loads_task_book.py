@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.files.io import load_design, masses_to_dict, save_design
 from core.linkage.spec import Spec
 

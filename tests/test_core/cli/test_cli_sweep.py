@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 
 from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize

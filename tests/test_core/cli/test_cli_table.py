@@ -66,7 +66,7 @@ def test_kinematics_only_without_loads_and_text_output():
 
 
 def test_design_file_with_loads_gives_force_columns(tmp_path):
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     from core.files.io import masses_to_dict, save_design
     from core.linkage.spec import Spec
     path = tmp_path / "d.shaper.json"

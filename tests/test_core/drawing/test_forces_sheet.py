@@ -12,7 +12,8 @@ from core.drawing.forces import ENGLISH, forces_sheet, joint_forces
 from core.drawing.motion import motion_sheet
 from core.drawing.checks import outside_border, overlapping_texts
 from core.drawing.sheet import Polyline, paper
-from core.forces.dynamics import MassProperties, masses_for_design, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize

@@ -6,7 +6,7 @@ import pytest
 
 from core.drawing.forces import forces_sheet, joint_forces
 from core.drawing.sheet import paper
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.geometry import synthesize
 from sheet_checks import assert_laid_out
 

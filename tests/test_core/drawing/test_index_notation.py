@@ -13,7 +13,7 @@ from core.cam import CamInputs, Program, design_cam
 from core.drawing import cam_sheet, forces, motion
 from core.drawing.sheet import Text, marked, paper
 from core.drawing.cells import cell_text, table
-from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.masses import MassProperties, masses_for_design
 from core.linkage.geometry import synthesize
 
 BLOCK = synthesize(100.0, 1.4, 300.0)

@@ -18,7 +18,7 @@ from core.drawing.labels import place
 from core.drawing.motion import motion_sheet
 from core.drawing.checks import outside_border, overlapping_texts
 from core.drawing.sheet import Circle, Sheet, Text, line, paper
-from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.linkage.geometry import synthesize
 from sheet_checks import crossed_texts

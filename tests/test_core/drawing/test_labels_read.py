@@ -17,7 +17,7 @@ from core.drawing.forces import forces_sheet
 from core.drawing import mechanism as mech
 from core.drawing.labels import Room
 from core.drawing.sheet import Polyline, Text, paper
-from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.masses import MassProperties, masses_for_design
 from core.linkage.geometry import from_dimensions
 
 # 方案 I (孙桓《机械原理》课程设计, 牛头刨床): masses = G/9.81

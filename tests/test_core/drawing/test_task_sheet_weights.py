@@ -7,7 +7,7 @@ import json
 
 from cli_runner import shaper_in_process
 from core.drawing.class_sheets import TASK_WORDS, data_rows
-from core.forces.dynamics import GRAVITY
+from core.forces.masses import GRAVITY
 from core.linkage.spec import Spec
 
 SCHEME_I = ("--dims", "110,380,540", "--rod-ratio", "0.25", "--rpm", "60", "--lever-inertia", "1.1",

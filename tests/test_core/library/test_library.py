@@ -5,7 +5,7 @@ import random
 
 import pytest
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 
 from core.base.errors import FileFormatError
 from core.forces.flywheel import summarize

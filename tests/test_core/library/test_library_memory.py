@@ -16,7 +16,7 @@ import pytest
 
 from core.space import compare as compare_module
 from core.space.compare import Candidate, compare, curves_csv
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.files.io import snap_zeros
 from core.linkage.kinematics import MIN_STEP_DEG, crank_angles, solve
 from core.library import Library
@@ -74,7 +74,8 @@ def reference_csv(candidates, rpm, step):
     """The curves CSV from one solve over all angles, written row by row (the old way)."""
     phi = crank_angles(step)
     columns = {"x": [], "v": [], "a": [], "t": []}
-    from core.forces.dynamics import masses_for_design, solve_dynamics
+    from core.forces.dynamics import solve_dynamics
+    from core.forces.masses import masses_for_design
     for c in candidates:
         design = c.spec.design()
         motion = solve(design, phi, [rpm])

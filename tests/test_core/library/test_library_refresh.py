@@ -9,7 +9,7 @@ import pytest
 import core.library as library_module
 import core.library.entry as library_entry
 from cli_runner import shaper
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.space.figures import FIGURES_VERSION, figures
 from core.library import Library
 from core.library.store import schema_version

@@ -32,7 +32,7 @@ TITLES = {"00-report.pdf": "Design report", "01-motion.pdf": "Motion analysis",
 
 
 def design_file(folder, drop=(), name="design.shaper.json", speeds=(40.0,)):
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                            cut_force_N=7000.0, cut_height_mm=80.0)
     doc = design_document(Spec(), speeds, 1.0, {"forces": masses_to_dict(loads), "cam": CAM, "gear": GEAR})

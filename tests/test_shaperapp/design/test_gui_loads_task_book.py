@@ -8,7 +8,7 @@ import json
 import pytest
 
 from core.files.design_file import masses_to_dict
-from core.forces.dynamics import GRAVITY
+from core.forces.masses import GRAVITY
 from shaperapp.design.loads_form import LoadsForm
 
 from gui_helpers import shown

@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from PySide6.QtCore import QSettings
 
 from core.cli import run as run_cli
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.files.io import load_design
 from core.linkage.spec import NUMBER_FIELDS
 from shaperapp.design.document import Document

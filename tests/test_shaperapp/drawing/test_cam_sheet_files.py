@@ -153,7 +153,7 @@ def test_the_four_sheets_are_numbered_one_to_four(qapp):
     """The title blocks say 1/4 … 4/4: the course design's four sheets, in order (the gear
     pair's meshing sheet, issue 35, is the fourth)."""
     from core.cam import design_cam
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     from core.drawing.sheet import Text
     from shaperapp.drawing.content import CONTENTS, SheetChoice, build_sheet
     spec = Spec()

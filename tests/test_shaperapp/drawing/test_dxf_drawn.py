@@ -29,7 +29,7 @@ from core.drawing.motion import motion_sheet
 from core.drawing.scheme import scheme_document
 from core.drawing.sheet import Sheet, Text, paper
 from core.drawing.sheet_dxf import save_sheet_dxf
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.geometry import synthesize
 from core.linkage.kinematics import shape
 from core.drawing.forces import forces_sheet

@@ -8,7 +8,7 @@ import pytest
 from cli_runner import shaper
 from sheet_checks import assert_pdf_sheet
 from core.cli.cmd_dynamics import speed_rows
-from core.forces.dynamics import masses_for_design
+from core.forces.masses import masses_for_design
 from core.forces.flywheel import summarize
 from shaperapp.drawing.dialog import DrawingSheetDialog
 

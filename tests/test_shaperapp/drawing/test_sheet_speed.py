@@ -7,7 +7,7 @@ import ezdxf
 import pytest
 
 from cli_runner import shaper_in_process
-from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.masses import MassProperties, masses_for_design
 from core.forces.flywheel import summarize
 from core.files.io import design_document, masses_to_dict
 from core.linkage.spec import Spec

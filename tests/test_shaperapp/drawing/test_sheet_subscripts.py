@@ -10,7 +10,7 @@ from core.drawing.cam_sheet import cam_sheet
 from core.drawing.forces import forces_sheet
 from core.drawing.motion import motion_sheet
 from core.drawing.sheet import PAPERS, Sheet, Text, marked, paper
-from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.masses import MassProperties, masses_for_design
 from core.linkage.geometry import synthesize
 from shaperapp.drawing.cam_labels import cam_labels
 from shaperapp.drawing.forces_labels import forces_labels

@@ -3,7 +3,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 
-from core.forces.dynamics import masses_for_design
+from core.forces.masses import masses_for_design
 from core.course_design.positions import SPECIAL_NAMES, display_values, position_table, positions
 from shaperapp.positions.view import PositionsView
 

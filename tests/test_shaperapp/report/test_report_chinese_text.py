@@ -27,7 +27,7 @@ PLOT_WORDS = ("滑枕位移", "滑枕速度", "滑枕加速度", "工作行程",
 def report(tmp_path_factory):
     from core.cam import CamInputs, Program
     from core.cam.file import cam_to_dict
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     from core.files.io import masses_to_dict, save_design
     from core.linkage.spec import Spec
     folder = tmp_path_factory.mktemp("zh")

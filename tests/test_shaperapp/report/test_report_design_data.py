@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from core.cam import CamInputs
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.forces.flywheel import summarize
 from core.gear import GearPairInputs
 from core.linkage.spec import Spec

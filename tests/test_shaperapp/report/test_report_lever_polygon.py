@@ -7,7 +7,7 @@ import pytest
 from PySide6.QtCore import QRectF
 from PySide6.QtGui import QImage
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.forces.polygons import lever_force_polygon
 from core.linkage.spec import Spec
 from shaperapp.report.blocks import Figure

@@ -21,7 +21,7 @@ from PySide6.QtGui import QImage
 from core.cam import CamInputs
 from core.space.compare import Candidate
 from core.gear import GearPairInputs
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.spec import Spec
 from shaperapp.report.content import Options, build
 from shaperapp.report.pdf import PAGE_MM, page_boxes, pdf_bytes

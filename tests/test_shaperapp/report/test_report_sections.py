@@ -11,7 +11,7 @@ import subprocess
 import pytest
 
 from core.cam import CamInputs
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.spec import Spec
 from shaperapp.report.content import Options, build
 from shaperapp.report.pdf import pdf_bytes

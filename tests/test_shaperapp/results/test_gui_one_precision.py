@@ -18,7 +18,7 @@ from core.drawing.forces import ENGLISH as FORCE_LABELS
 from core.drawing.forces import flywheel_rows
 from core.drawing.motion import ENGLISH as MOTION_LABELS
 from core.drawing.motion import _dimension_rows
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize
 from core.linkage.metrics import analyze

@@ -15,7 +15,7 @@ from PySide6.QtCore import QRectF, QSettings
 from PySide6.QtGui import QFontMetricsF, QImage
 from PySide6.QtWidgets import QApplication
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.geometry import synthesize
 from core.forces.polygons import polygons
 from shaperapp.design.model import DesignModel

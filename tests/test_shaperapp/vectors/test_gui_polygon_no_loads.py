@@ -4,7 +4,7 @@ import pytest
 from PySide6.QtCore import QRectF
 from PySide6.QtGui import QImage, QPainter
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.geometry import synthesize
 from core.forces.polygons import force_polygon, lever_force_polygon
 from shaperapp.vectors.paint import paint_polygon

@@ -6,7 +6,7 @@ import pytest
 from PySide6.QtCore import QLineF, QRectF
 from PySide6.QtGui import QImage, QPainter
 
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.geometry import synthesize
 from core.forces.polygons import nice_scale, paper, polygons
 from shaperapp.vectors.export import export_polygon

@@ -15,7 +15,7 @@ import pytest
 from PySide6.QtCore import QLineF, QPointF, QRectF
 from PySide6.QtGui import QFontMetricsF, QImage
 
-from core.forces.dynamics import MassProperties, masses_for_design
+from core.forces.masses import MassProperties, masses_for_design
 from core.linkage.geometry import from_dimensions
 from core.forces.polygons import force_polygon, lever_force_polygon
 from shaperapp.report.figures import report_font

@@ -17,7 +17,7 @@ import pytest
 from PySide6.QtGui import QImage
 
 from core.space.compare import Candidate
-from core.forces.dynamics import MassProperties
+from core.forces.masses import MassProperties
 from core.linkage.spec import Spec
 from shaperapp.compare.view import CompareView
 from shaperapp.explore.view import ExploreView

@@ -32,7 +32,7 @@ def test_every_reason_a_file_is_refused_has_a_template():
 def test_every_field_a_file_can_name_is_named_in_chinese(chinese):
     from core.cam.file import cam_to_dict
     from core.cam import CamInputs, Program
-    from core.forces.dynamics import MassProperties
+    from core.forces.masses import MassProperties
     names = [f.name for f in fields(Spec)] + [f.name for f in fields(MassProperties)] + ["rpm", "step", "forces", "cam"]
     names += list(cam_to_dict(CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0)), None))
     shown = {name: messages.field_name(name) for name in names}

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 from PySide6.QtWidgets import QApplication
 
-from core.forces.dynamics import masses_for_design, solve_dynamics
+from core.forces.dynamics import solve_dynamics
+from core.forces.masses import masses_for_design
 from core.linkage.kinematics import solve
 
 from gui_helpers import main_window

@@ -101,7 +101,7 @@ def test_forces_table_follows_edits_speeds_and_language(qtbot, tmp_path):
     the new design, and after a language switch its row titles are translated."""
     from PySide6.QtWidgets import QApplication
 
-    from core.forces.dynamics import masses_for_design
+    from core.forces.masses import masses_for_design
     from core.forces.flywheel import summarize
     from gui_helpers import main_window
 
@@ -137,7 +137,7 @@ def test_summary_is_solved_only_when_shown_and_filled_before_it_is_seen(qtbot, t
     keeps its rows and columns; scrolled into view it shows core's numbers at once."""
     from PySide6.QtWidgets import QApplication, QScrollArea
 
-    from core.forces.dynamics import masses_for_design
+    from core.forces.masses import masses_for_design
     from core.forces.flywheel import summarize
     from gui_helpers import main_window
 
@@ -176,7 +176,7 @@ def test_copying_the_forces_table_below_the_fold_copies_numbers(qtbot, tmp_path)
     to date first: the clipboard never gets placeholders."""
     from PySide6.QtWidgets import QApplication
 
-    from core.forces.dynamics import masses_for_design
+    from core.forces.masses import masses_for_design
     from core.forces.flywheel import summarize
     from gui_helpers import main_window
 
