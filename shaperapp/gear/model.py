@@ -16,7 +16,8 @@ from typing import Any
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from core.errors import DesignError
-from core.gear import GearPair, GearPairInputs, design_pair
+from core.gear.inputs import GearPairInputs
+from core.gear.pair import GearPair, design_pair
 from core.gear.file import gear_from_dict, gear_to_dict
 from shaperapp.design.model import DesignModel
 from shaperapp.design.results import COMPUTE_ERRORS, compute_error

@@ -144,7 +144,9 @@ def painted():
 WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.vectors.view",
            "shaperapp.positions", "shaperapp.library", "shaperapp.plots.forces", "shaperapp.drawing", "core.library", "core.compare",
            "shaperapp.cam.tab", "shaperapp.cam.plots", "shaperapp.cam.profile_view", "core.drawing",
-           "core.cam_drawing", "ezdxf", "numpy.ma.", "importlib.metadata")
+           "core.cam_drawing", "ezdxf", "numpy.ma.", "importlib.metadata",
+           "core.cam.cam", "core.cam.build", "core.cam.synthesis", "core.cam.timing", "core.cam.file",
+           "core.gear.checks", "core.gear.advice", "scipy")
 _when_painted(window, painted)
 app.exec()
 """
@@ -152,7 +154,8 @@ app.exec()
 
 def test_the_first_screen_imports_and_builds_only_what_it_shows(tmp_path):
     """At the window's first paint, the tabs behind Kinematics and the hidden library are
-    neither built nor imported (issue 24: they cost a fifth of the start-up)."""
+    neither built nor imported (issue 24: they cost a fifth of the start-up), nor the cam's
+    solver and the gear's checks behind the Cam and Gear tabs (issue 43 item 5)."""
     modules, built = _run_probe(PROBE, tmp_path, str(tmp_path / "s.ini"))[-2:]
     assert modules == "[]"
     assert built == "[]"       # the vector diagrams' dock, shown for a moment while tabbed, too
