@@ -232,3 +232,30 @@ def test_start_up_runs_without_automatic_garbage_collection(tmp_path):
     lines = _run_probe(GC_PROBE, tmp_path)
     assert lines[-2] == "[] False True"
     assert lines[-1] == "True 0"
+
+
+IDLE_PROBE = """
+import sys, time
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QApplication
+app = QApplication(sys.argv[:1])
+from shaperapp.design.model import DesignModel
+from shaperapp.window.main_window import MainWindow
+window = MainWindow(DesignModel(), QSettings(sys.argv[1], QSettings.Format.IniFormat))
+window.show()
+end = time.perf_counter() + 100
+while not window._pages["cam"].is_built() and time.perf_counter() < end:
+    app.processEvents()
+print("scipy.optimize" in sys.modules, "scipy.spatial" in sys.modules)
+app.processEvents()
+print("scipy.optimize" in sys.modules, "scipy.spatial" in sys.modules, window.cam_model._cam is None)
+"""
+
+
+def test_the_cam_tabs_scipy_is_imported_while_idle_once_the_tab_is_built(tmp_path):
+    """The cam's synthesis imports scipy's linprog and half-plane intersection at first use
+    (not at start-up); the window imports them on the turn after building the Cam tab while
+    idle, so that the tab's first visit does not wait for them (issue 40 item 5), without
+    computing a cam."""
+    lines = _run_probe(IDLE_PROBE, tmp_path, str(tmp_path / "s.ini"))
+    assert lines[-2:] == ["False False", "True True True"]
