@@ -17,6 +17,8 @@ from shaperapp.window.main_window import MainWindow
 
 SPEEDS = [20.0 + 5.0 * i for i in range(16)]
 TABS = {"design": "plots", "loads": "forces", "cam": "cam", "gear": "gear"}
+EDIT_BUDGET_S = 0.050       # issue 40 item 5, on a quiet machine: asserted on the median
+VISIT_BUDGET_S = 0.300
 
 
 def drained(seconds: float = 4.0) -> None:
@@ -75,6 +77,8 @@ def test_an_edit_reaches_the_screen(benchmark, window, form):
         QApplication.processEvents()
 
     benchmark.pedantic(edit, rounds=20, iterations=1, warmup_rounds=2)
+    if not benchmark.disabled:
+        assert benchmark.stats.stats.median <= EDIT_BUDGET_S
 
 
 def test_a_gear_edit_recomputes_the_gear_alone(window, monkeypatch):
@@ -102,6 +106,12 @@ def test_a_tabs_first_visit(benchmark, qtbot, tmp_path, tab):
         win = open_window(tmp_path / str(len(windows)))
         windows.append(win)
         drained(idle_s(benchmark))
+        # as the docstring says: until every view is built and the Cam tab's scipy imported
+        # (on a loaded machine the 4 s above are not enough, and the visit then measured those)
+        end = time.perf_counter() + 60.0
+        while not all(page.is_built() for page in win._pages.values()) and time.perf_counter() < end:
+            QApplication.processEvents()
+        drained(0.2)
         return (win,), {}
 
     def visit(win):
@@ -109,6 +119,8 @@ def test_a_tabs_first_visit(benchmark, qtbot, tmp_path, tab):
         QApplication.processEvents()
 
     benchmark.pedantic(visit, setup=setup, rounds=3, iterations=1)
+    if not benchmark.disabled:
+        assert benchmark.stats.stats.median <= VISIT_BUDGET_S
     for win in windows:
         win.model.set_clean("")
         win.close()

@@ -12,9 +12,20 @@ it imports the analysis and mechanism levels only. Its DXF is ``core.drawing.cam
 """
 from __future__ import annotations
 
-from .cam import Cam, CamInputs, design_cam
-from .follower import Follower
-from .laws import LAWS, Program
-from .synthesis import Allowance
+from typing import TYPE_CHECKING
+
+from core.base.lazy import lazy_names
+
+if TYPE_CHECKING:
+    from .cam import Cam, CamInputs, design_cam
+    from .follower import Follower
+    from .laws import LAWS, Program
+    from .synthesis import Allowance
 
 __all__ = ["Allowance", "Cam", "CamInputs", "Follower", "LAWS", "Program", "design_cam"]
+
+# Imported on first use: ``core.cam.defaults`` (the form's defaults, read at the window's
+# start-up) must not bring in the solver, the synthesis and the timing.
+__getattr__ = lazy_names(__name__, {"Allowance": "synthesis", "Cam": "cam", "CamInputs": "cam",
+                                    "Follower": "follower", "LAWS": "laws", "Program": "laws",
+                                    "design_cam": "cam"})

@@ -32,17 +32,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from core.base.errors import DesignError
+from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM  # noqa: F401  (defined here before)
 from .follower import Follower
 from .laws import Program
 from .synthesis import Allowance, within_allowance
 
-HUB_MM, BOSS_MM, CLEARANCE_MM = 12.5, 12.5, 3.0
-"""Defaults: a feed cam's shaft of Ø16 mm keyed in a hub of Ø25 mm; the follower's pivot pin
-of Ø12 mm in a boss of Ø25 mm; 3 mm between the profile and either (a rough casting's and
-the assembly's tolerance). The form's default cam (arm 120 mm) clears the hub by 13.2 mm
-and the boss by 30.7 mm, and the course data sheet's (cosine/parabolic) by 2.4 and
-44.8 mm, so both are unchanged; the issue's rise-100° cam (profile base radius 6.6 mm)
-is not."""
 MIN_ROLLER_MM = 3.0
 """The smallest roller the automatic choice of a checked cam shrinks to so that its profile
 clears the hub (a Ø6 mm roller, about the smallest needle roller made)."""

@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field
 
 from core.base.errors import DesignError, require_range
+from .defaults import RETURN_PRESSURE_DEG  # noqa: F401  (defined here before)
 from .extremes import min_convex_radius, pressure_peaks
 from .follower import Follower, check_follower
 from .laws import Program
@@ -23,13 +24,6 @@ MIN_ARM_MM, MAX_ARM_MM = 1.0, 5000.0
 MIN_PRESSURE_DEG, MAX_PRESSURE_DEG = 5.0, 85.0
 """Allowances, degrees: at a right angle the cam pushes across the arm and jams; below 5°
 the cam would be many times the arm's size."""
-
-
-RETURN_PRESSURE_DEG = 70.0
-"""Default allowed pressure angle on the return, °. The follower comes back unloaded,
-closed by its spring (or the groove), so the return can take a much larger pressure angle
-than the working rise: the textbooks allow [α′] = 70°–80° there against 30°–45° on the
-rise of an oscillating follower; 70° is the cautious end."""
 
 
 @dataclass(frozen=True)

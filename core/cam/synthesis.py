@@ -69,6 +69,15 @@ def _phase_samples(program: Program) -> list[tuple[np.ndarray, np.ndarray, float
     return out
 
 
+def import_solvers() -> None:
+    """Import now what a synthesis takes from scipy (``linprog``, the convex hull and the
+    half-plane intersection). Why: they come in at the first synthesis, not with the
+    window; a window calls this while idle once its Cam tab is built, so that the tab's
+    first visit does not wait for the import, 0.2-0.5 s quiet (issue 40 item 5)."""
+    import scipy.optimize  # noqa: F401
+    import scipy.spatial  # noqa: F401
+
+
 def _halfspaces(arm: float, k: int, program: Program, allowance: Allowance) -> np.ndarray:
     """Rows [gx, gy, −h] of g·(X, Y) ≤ h, the pressure-angle conditions and the search box
     (k the side in the counter-clockwise algebra, see ``follower``)."""

@@ -18,11 +18,13 @@ decimal point, text above the line, so no reader strikes the text through.
 from __future__ import annotations
 
 import math
-
-from ezdxf.document import Drawing
+from typing import TYPE_CHECKING
 
 from .dxf import DIMENSIONS, TEXT_STYLE
 from .sheet import standard_scale
+
+if TYPE_CHECKING:
+    from ezdxf.document import Drawing
 
 DIMSTYLE = "GB_MM"
 DIM_TEXT_MM = 5.0            # text height on paper, GB/T 14691's series

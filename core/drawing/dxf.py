@@ -18,11 +18,12 @@ from __future__ import annotations
 import io
 import os
 from dataclasses import dataclass
-
-import ezdxf
-from ezdxf.document import Drawing
+from typing import TYPE_CHECKING
 
 from core.files.atomic import atomic_write
+
+if TYPE_CHECKING:
+    from ezdxf.document import Drawing
 
 DXF_VERSION = "R2010"        # UTF-8 text, lineweights, read by AutoCAD 2010+, LibreCAD, QCAD
 MILLIMETRES = 4              # $INSUNITS
@@ -76,6 +77,7 @@ TEXT_WIDTH = 0.7                            # GB/T 14691's long-fang-song propor
 
 def new_document() -> Drawing:
     """An empty DXF document in mm with this tool's layers, linetypes and text style."""
+    import ezdxf        # here, not with the module: the sheets' PDF, SVG and --help need none of it
     doc = ezdxf.new(DXF_VERSION, units=MILLIMETRES)
     doc.header["$MEASUREMENT"] = 1          # metric
     doc.header["$LTSCALE"] = 1.0

@@ -10,8 +10,18 @@ Level: its own, beside the cam; it imports ``core.base.errors`` only.
 """
 from __future__ import annotations
 
-from .checks import Check, pair_checks
-from .inputs import GearPairInputs
-from .pair import Gear, GearPair, design_pair
+from typing import TYPE_CHECKING
+
+from core.base.lazy import lazy_names
+
+if TYPE_CHECKING:
+    from .checks import Check, pair_checks
+    from .inputs import GearPairInputs
+    from .pair import Gear, GearPair, design_pair
 
 __all__ = ["Check", "Gear", "GearPair", "GearPairInputs", "design_pair", "pair_checks"]
+
+# Imported on first use: the window's gear model (its pair and its file) must not bring in
+# the checks and their advice at start-up.
+__getattr__ = lazy_names(__name__, {"Check": "checks", "pair_checks": "checks", "GearPairInputs": "inputs",
+                                    "Gear": "pair", "GearPair": "pair", "design_pair": "pair"})

@@ -10,18 +10,20 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject
 
-from core.cam import Cam, CamInputs, Program, design_cam
-from core.cam.build import BOSS_MM, CLEARANCE_MM, HUB_MM, FitError
-from core.cam.cam import RETURN_PRESSURE_DEG
-from core.cam.file import cam_from_dict, cam_to_dict
+# The cam's code (its solver, synthesis and timing) is imported where a cam is first made
+# or read: the model exists from start-up, the cam is computed on the tab's first visit.
 from core.base.errors import DesignError
+from core.cam.defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, RETURN_PRESSURE_DEG
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.model import PartModel, Typed, number
+
+if TYPE_CHECKING:
+    from core.cam import Cam, CamInputs
 
 NUMBERS = ("arm", "swing", "pressure", "return_pressure", "rise", "dwell", "return", "hub", "boss",
            "clearance")
@@ -50,6 +52,7 @@ def _optional(name: str, value: Any) -> float | None:
 
 def cam_inputs(typed: CamTyped) -> tuple[CamInputs, float | None]:
     """The core inputs and the phase (or None) of the typed fields; DesignError names one."""
+    from core.cam import CamInputs, Program
     v = typed.dict
     program = Program(swing_deg=number("swing", v["swing"]), rise_deg=number("rise", v["rise"]),
                       dwell_deg=number("dwell", v["dwell"]), return_deg=number("return", v["return"]),
@@ -68,6 +71,7 @@ def blamed(error: DesignError, typed: CamTyped, edited: list[str]) -> DesignErro
     that does not clear its hub or the pivot boss) keeps core's field if it was typed since the last
     valid cam, else names the one of them typed last (issue 34: typing rise = 300 marked
     the outer dwell)."""
+    from core.cam.build import FitError
     if isinstance(error, FitError):
         group = tuple(n for n in DEFAULTS if n != "phase")
     elif SUM_TEXT in error.allowed:
@@ -129,12 +133,15 @@ class CamModel(PartModel):
 
     def document(self) -> dict[str, Any]:
         """The inputs of the cam on screen, as the design file keeps them."""
+        from core.cam.file import cam_to_dict
         return cam_to_dict(*cam_inputs(self._valid_typed))
 
     def typed_of(self, data: Any) -> CamTyped:
+        from core.cam.file import cam_from_dict
         return CamTyped() if data is None else typed_from(*cam_from_dict(data))
 
     def compute(self, typed: CamTyped) -> Cam:
+        from core.cam import design_cam
         inputs, phase = cam_inputs(typed)
         m = self.design_model
         return design_cam(inputs, m.design, m.masses.idle_fraction, phase)
@@ -150,6 +157,7 @@ class CamModel(PartModel):
         """The first computation failed (a design whose cut leaves no room for the default
         feed): show the default cam, untimed, as the last valid one."""
         if self._value is None:
+            from core.cam import design_cam
             inputs, _ = cam_inputs(CamTyped())
             self._value = design_cam(inputs)
 

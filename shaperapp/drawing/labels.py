@@ -5,9 +5,12 @@ those of the layout's English table), translated through Qt's catalogue.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication
 
-translate = QCoreApplication.translate   # lupdate extracts translate("Drawing", "…")
+def translate(context: str, text: str) -> str:
+    """Qt's translation (lupdate extracts translate("Drawing", "…")), with Qt imported at the
+    first label: ``shaper drawing --help`` needs none of it (issue 43 item 5)."""
+    from PySide6.QtCore import QCoreApplication
+    return QCoreApplication.translate(context, text)
 
 
 def title_labels() -> dict[str, str]:

@@ -11,7 +11,6 @@ from pathlib import Path
 
 from core.cli.common import number
 from core.cli.output import OutputError
-from core.drawing.scheme import check_angle, write_scheme
 from core.linkage.geometry import Design
 
 from shaperapp.widgets.command_line import check_output_folder
@@ -28,6 +27,7 @@ def add_scheme_options(parser: argparse.ArgumentParser) -> None:
 def write_scheme_file(design: Design, args: argparse.Namespace) -> int:
     """The scheme at ``--angle`` to ``--output`` (a .dxf name): DesignError naming --angle,
     OutputError naming --output, and nothing written, for bad words."""
+    from core.drawing.scheme import check_angle, write_scheme   # ezdxf: not for --help
     angle = check_angle(number("angle", args.angle))
     target = Path(args.output)
     if target.suffix.lower() != ".dxf":

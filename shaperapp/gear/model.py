@@ -14,7 +14,8 @@ from typing import Any
 
 from PySide6.QtCore import QCoreApplication, QObject
 
-from core.gear import GearPair, GearPairInputs, design_pair
+from core.gear.inputs import GearPairInputs
+from core.gear.pair import GearPair, design_pair
 from core.gear.file import gear_from_dict, gear_to_dict
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.model import PartModel, Typed, number

@@ -50,6 +50,8 @@ class SchemeWidget(QWidget):
         self._fitted: QRectF | None = None         # the view the last fit showed
         self._opened = False                       # a file was opened: fit at the rebuild
         self._placed_view: tuple = ()              # the view the labels were last placed for
+        self._labels_stale = False                 # placing them waits until shown or read back
+        self._placing_soon = False                 # a rebuild or placement under way places them at its end
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._catch_up)
@@ -131,10 +133,29 @@ class SchemeWidget(QWidget):
     def _dimensions_placed(self) -> None:
         """Every label placed again for the dimensions as they now are."""
         if self._geometry is not None and not self._stale:
-            self._placed_view = self._view_key()
-            self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
-            self._precompute_timer.start()
+            self._place_still()
             self._draw_forces(self._model.angle_index)
+
+    def _place_still(self, hidden_too: bool = False) -> None:
+        """The still labels placed for the view as it is now. While the scheme is not on
+        screen (the window being built, a closed dock) they are only marked, and placed when
+        it is shown or read back (``_catch_up``): each placement is a search of tens of ms,
+        and the window's construction placed them twice for views that its first layout
+        then changed, before the first paint (issue 43 item 5)."""
+        if not (hidden_too or self.isVisible()):
+            self._labels_stale = True
+            return
+        if self._placing_soon:
+            return
+        self._placing_soon = True
+        try:        # reading the view brings its pending matrix up to date, whose signal zooms
+            key = self._view_key()
+        finally:
+            self._placing_soon = False
+        self._labels_stale = False
+        self._placed_view = key
+        self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
+        self._precompute_timer.start()
 
     def _view_key(self) -> tuple:
         """The view's range and pixel size: the labels' placement depends on nothing else of it."""
@@ -318,6 +339,9 @@ class SchemeWidget(QWidget):
             self._move(self._model.angle_index)
         elif self._forces_stale:
             self._draw_forces(self._model.angle_index)
+        if self._labels_stale and not self._stale and self._geometry is not None:
+            self._place_still(hidden_too=True)
+            self._draw_forces(self._model.angle_index)
 
     def _schedule(self) -> None:
         """One rebuild when the model has announced everything an edit changed."""
@@ -346,10 +370,12 @@ class SchemeWidget(QWidget):
         design = self._model.design
         if design != self._design:
             self._design = design
-            self._refit_for(before)
-        self._placed_view = self._view_key()
-        self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
-        self._precompute_timer.start()
+            self._placing_soon = True       # the fit's zoom places nothing: placed once, below
+            try:
+                self._refit_for(before)
+            finally:
+                self._placing_soon = False
+        self._place_still()
         self._move(self._model.angle_index)
 
     def _precompute(self) -> None:

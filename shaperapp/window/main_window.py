@@ -124,8 +124,11 @@ class MainWindow(QMainWindow):
         return pane
 
     def _build_cam(self) -> QWidget:
+        from core.cam.synthesis import import_solvers
         from shaperapp.cam.tab import CamTab
-        return CamTab(self.model, cam_model=self.cam_model)
+        tab = CamTab(self.model, cam_model=self.cam_model)
+        QTimer.singleShot(0, tab, import_solvers)   # built while idle: scipy too, before the visit
+        return tab
 
     def _build_gear(self) -> QWidget:
         from shaperapp.gear.tab import GearTab

@@ -92,3 +92,24 @@ def test_an_entry_point_command_loads_its_own_module_only():
     assert out.returncode == 0, out.stderr
     assert "exit 0" in out.stderr
     assert out.stdout.strip() == "True []"
+
+
+HELP_PROBE = """
+import sys
+from core.__main__ import main
+try:
+    main([sys.argv[1], "--help"])
+except SystemExit as done:
+    status = done.code
+print(status, sorted({m.split(".")[0] for m in sys.modules} & {"PySide6", "ezdxf", "scipy", "pyqtgraph"}))
+"""
+
+
+def test_a_commands_help_imports_no_qt_ezdxf_or_scipy():
+    """``shaper COMMAND --help`` prints its parser's help without Qt, ezdxf or scipy (issue
+    43 item 5: ``shaper drawing --help`` imported both Qt and ezdxf, 1.5-3 s here)."""
+    for command in ("analyze", "cam", "report", "drawing", "course", "class"):
+        out = subprocess.run([sys.executable, "-c", HELP_PROBE, command], capture_output=True, text=True,
+                             timeout=120)
+        assert out.returncode == 0, out.stderr
+        assert out.stdout.splitlines()[-1] == "0 []", command

@@ -207,10 +207,10 @@ def test_a_damaged_cam_in_a_file_is_refused_and_changes_nothing(qtbot, tab, mode
 def test_a_hidden_cam_tab_costs_a_design_edit_nothing(qtbot, model, monkeypatch):
     """While the Cam tab is hidden a linkage edit computes no cam (the edit budget of
     docs/performance.md); showing the tab brings the cam up to date."""
-    import shaperapp.cam.model as cam_model_module
+    import core.cam     # the cam model imports design_cam from it when it first computes a cam
     calls = []
-    real = cam_model_module.design_cam
-    monkeypatch.setattr(cam_model_module, "design_cam", lambda *a, **k: calls.append(1) or real(*a, **k))
+    real = core.cam.design_cam
+    monkeypatch.setattr(core.cam, "design_cam", lambda *a, **k: calls.append(1) or real(*a, **k))
     tab = CamTab(model)
     qtbot.addWidget(tab)
     model.set_spec(time_ratio=1.6)

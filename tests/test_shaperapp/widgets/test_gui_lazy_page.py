@@ -144,7 +144,9 @@ def painted():
 WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.vectors.view",
            "shaperapp.positions", "shaperapp.library", "shaperapp.plots.forces", "shaperapp.drawing", "core.library", "core.space.compare",
            "shaperapp.cam.tab", "shaperapp.cam.plots", "shaperapp.cam.profile_view", "core.drawing",
-           "core.drawing.cam_dxf", "ezdxf", "numpy.ma.", "importlib.metadata")
+           "core.drawing.cam_dxf", "ezdxf", "numpy.ma.", "importlib.metadata",
+           "core.cam.cam", "core.cam.build", "core.cam.synthesis", "core.cam.timing", "core.cam.file",
+           "core.gear.checks", "core.gear.advice", "scipy")
 _when_painted(window, painted)
 app.exec()
 """
@@ -152,7 +154,8 @@ app.exec()
 
 def test_the_first_screen_imports_and_builds_only_what_it_shows(tmp_path):
     """At the window's first paint, the tabs behind Kinematics and the hidden library are
-    neither built nor imported (issue 24: they cost a fifth of the start-up)."""
+    neither built nor imported (issue 24: they cost a fifth of the start-up), nor the cam's
+    solver and the gear's checks behind the Cam and Gear tabs (issue 43 item 5)."""
     modules, built = _run_probe(PROBE, tmp_path, str(tmp_path / "s.ini"))[-2:]
     assert modules == "[]"
     assert built == "[]"       # the vector diagrams' dock, shown for a moment while tabbed, too
@@ -229,3 +232,30 @@ def test_start_up_runs_without_automatic_garbage_collection(tmp_path):
     lines = _run_probe(GC_PROBE, tmp_path)
     assert lines[-2] == "[] False True"
     assert lines[-1] == "True 0"
+
+
+IDLE_PROBE = """
+import sys, time
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QApplication
+app = QApplication(sys.argv[:1])
+from shaperapp.design.model import DesignModel
+from shaperapp.window.main_window import MainWindow
+window = MainWindow(DesignModel(), QSettings(sys.argv[1], QSettings.Format.IniFormat))
+window.show()
+end = time.perf_counter() + 100
+while not window._pages["cam"].is_built() and time.perf_counter() < end:
+    app.processEvents()
+print("scipy.optimize" in sys.modules, "scipy.spatial" in sys.modules)
+app.processEvents()
+print("scipy.optimize" in sys.modules, "scipy.spatial" in sys.modules, window.cam_model._cam is None)
+"""
+
+
+def test_the_cam_tabs_scipy_is_imported_while_idle_once_the_tab_is_built(tmp_path):
+    """The cam's synthesis imports scipy's linprog and half-plane intersection at first use
+    (not at start-up); the window imports them on the turn after building the Cam tab while
+    idle, so that the tab's first visit does not wait for them (issue 40 item 5), without
+    computing a cam."""
+    lines = _run_probe(IDLE_PROBE, tmp_path, str(tmp_path / "s.ini"))
+    assert lines[-2:] == ["False False", "True True True"]

@@ -1,0 +1,36 @@
+"""The scheme's label search runs for the view the user sees, not for every view the
+window passes through while it is built (issue 43 item 5: three searches before the first
+paint, two of them for views the first layout changed)."""
+from PySide6.QtCore import QSettings
+
+from shaperapp.design.model import DesignModel
+from shaperapp.scheme.labels import LabelLayout
+from shaperapp.window.main_window import MainWindow
+
+
+def test_the_window_places_the_labels_once_when_shown(qtbot, tmp_path, monkeypatch):
+    calls = []
+    real = LabelLayout.place_still
+    monkeypatch.setattr(LabelLayout, "place_still", lambda self, *a: calls.append(a) or real(self, *a))
+    win = MainWindow(DesignModel(), QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    qtbot.addWidget(win)
+    assert calls == []                  # built while hidden: nothing placed yet
+    win.show()
+    assert len(calls) == 1              # shown: placed once, for the view as laid out
+    boxes = win.scheme.dimension_label_boxes()
+    assert set(boxes) >= {"L1", "H"} and len(calls) == 1     # read back: no search again
+    win.model.set_clean("")
+
+
+def test_a_scheme_never_shown_places_its_labels_when_read_back(qtbot):
+    """Hidden (a report's offscreen view), the labels are placed when asked for."""
+    from shaperapp.scheme.view import SchemeWidget
+    scheme = SchemeWidget(DesignModel())
+    qtbot.addWidget(scheme)
+    scheme.resize(800, 600)
+    boxes = scheme.dimension_label_boxes()
+    assert set(boxes) >= {"L1", "H"}
+    left, right, bottom, top = scheme.plot_widget().getPlotItem().getViewBox().viewRange()[0] + \
+        scheme.plot_widget().getPlotItem().getViewBox().viewRange()[1]
+    for l, r, b, t in boxes.values():     # placed inside the view, not left at the origin
+        assert left <= l < r <= right and bottom <= b < t <= top
