@@ -31,10 +31,11 @@ from core.positions import DEFAULT_COUNT, positions, special_angles
 from . import mechanism as mech
 from .charts import ARROW, Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE
+from .force_values import newtons, value_after, values_table
 from .labels import Room
 from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (Box, Item, Paper, Sheet, Text, fit, frame_items, marked_text, number_text, scale_text,
+from .sheet import (Box, Item, Paper, Sheet, fit, frame_items, number_text, scale_text,
                     standard_scale, symbol, table)
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
 
@@ -257,43 +258,12 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k, note: s
         placed = room.place(text, (float(head[0]), float(head[1])), 3.5, tuple(head - tail), gap=1.0,
                             subscripts=spans, leader_gap=0.5)
         items += placed
-        value = [] if lengthened is None or not placed else _value_after(room, placed[0], f"= {newtons(lengthened)} N")
+        value = [] if lengthened is None or not placed else value_after(room, placed[0], f"= {newtons(lengthened)} N")
         items += value
         if lengthened is not None and not value:    # not to μF: its value must be read somewhere
             unvalued.append((text, spans, lengthened))
-    items += _values_table(room, note, unvalued, points["C"])
+    items += values_table(room, note, unvalued, points["C"])
     return items, mu_f
-
-
-def _values_table(room: Room, note: str, forces: list[tuple[str, tuple, float]], near: np.ndarray) -> list[Item]:
-    """The values of the lengthened forces that found no room after their names, as a
-    small table (``note`` over one line per force) in the free room nearest ``near``:
-    drawn 7 mm long, such a force's length says nothing of its size."""
-    if not forces:
-        return []
-    h = 3.5
-    lines = [marked_text(note, (0.0, 0.0), h, "lt")]
-    for i, (text, spans, value) in enumerate(forces, start=1):
-        name = Text(text, (0.0, -1.6 * h * i), h, "lt", subscripts=spans)
-        lines += [name, _after(name, f"= {newtons(value)} N")]     # as a value after its name is written
-    return list(room.block(lines, (float(near[0]), float(near[1]))))
-
-
-def newtons(value: float) -> str:
-    """A force's value to three significant digits without an exponent (1870, not 1.87e+03)."""
-    return f"{value:.3g}" if abs(value) >= 1e5 else number_text(float(f"{value:.3g}"))
-
-
-def _value_after(room: Room, name: Text, value: str) -> list[Item]:
-    """``value`` on the line of the label ``name``, after it, if free there (else left out)."""
-    found = room.first_free([_after(name, value)])
-    return [] if found is None else [found]
-
-
-def _after(name: Text, value: str) -> Text:
-    """``value`` on the line of ``name``, just after it."""
-    box = name.box()
-    return Text(value, (box[2] + 0.8, (box[1] + box[3]) / 2.0), name.height, "lm")
 
 
 def ram_load_points(design: Design, rpm: float, masses: MassProperties, angle: float, c: np.ndarray,
