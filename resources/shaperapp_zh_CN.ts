@@ -1882,6 +1882,10 @@
         <translation>{n} N，距 C {x} mm</translation>
     </message>
     <message>
+        <source>Drawn {mm} mm long, not to μ_F:</source>
+        <translation>画成 {mm} mm 长，未按 μ_F：</translation>
+    </message>
+    <message>
         <source>Guide ends rear / front, φ = {angle}°</source>
         <translation>导路后端 / 前端，φ = {angle}°</translation>
     </message>

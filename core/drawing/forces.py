@@ -32,10 +32,11 @@ from core.course_design.positions import DEFAULT_COUNT, positions, special_angle
 from . import mechanism as mech
 from .charts import ARROW, Curve, arrow, chart, polygon_extent, polygon_fit_scale, polygon_items, scale_notes
 from .dxf import OUTLINE
+from .force_values import newtons, value_after, values_table
 from .labels import Room
 from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
 from .motion import nearest_mid_strokes
-from .sheet import (Box, Item, Paper, Sheet, Text, fit, frame_items, number_text, scale_text,
+from .sheet import (Box, Item, Paper, Sheet, fit, frame_items, number_text, scale_text,
                     standard_scale, symbol)
 from .cells import table
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
@@ -60,6 +61,7 @@ ENGLISH = {
     "none_needed": "none needed (J_c ≥ J_F)",
     "guide_at": "Guide reaction N, φ = {angle}°",
     "guide_inside": "{n} N, {x} mm from C",
+    "not_to_scale": "Drawn {mm} mm long, not to μ_F:",
     "guide_ends_at": "Guide ends rear / front, φ = {angle}°", "guide_ends": "{rear} N / {front} N",
     **TITLE_ENGLISH,
 }
@@ -70,6 +72,10 @@ ARROW_MM = 30.0             # the largest force on the mechanism drawn this long
 N_APART = 6.0               # the guide's N drawn at least this far beside C (G6 acts down through S6) …
 RAM_INSIDE = mech.RAM[0] / 2.0 - 2.0   # … and inside the ram body
 MIN_ARROW = 2.0 * ARROW[0]  # a shorter force is drawn this long (its head and shaft show), its value named
+JOINT_RINGS = 2
+"""A joint's name goes at most one text height farther out than its first ring without a
+leader: a third ring (3.5 mm text at 10 mm, 方案 I's O2 on A1) left it near nothing, read
+as whose only by elimination."""
 TORQUE_STEP_DEG = 1.0
 # room a mechanism drawing keeps beside the links' extent, paper mm: the guide line runs
 # RAM/2 + 6 behind the ram joint's travel and RAM/2 + TOOL_AHEAD + 6 ahead of it (plus a
@@ -114,7 +120,8 @@ def forces_sheet(design: Design, rpm: float, masses: MassProperties, paper: Pape
     shown: dict[tuple[int, str], tuple[np.ndarray, np.ndarray]] = {}
     force_scales = []
     for k, (cell, box, angle) in enumerate(zip(cells, room, diagrams)):
-        items, mu_f = _loaded_mechanism(design, rpm, masses, angle, box, scale, (arrows, shown), k)
+        items, mu_f = _loaded_mechanism(design, rpm, masses, angle, box, scale, (arrows, shown), k,
+                                        lab["not_to_scale"].format(mm=number_text(MIN_ARROW)))
         middle = (cell[0] + cell[2]) / 2.0
         items.append(caption(lab["mechanism"].format(angle=number_text(round(angle, 2))),
                              (middle, cell[3]), cell[2] - cell[0], 3.5))
@@ -215,7 +222,7 @@ def joint_forces(design: Design, rpm: float, masses: MassProperties, angle_deg: 
     return [(name, where, f) for name, where, f in forces if math.hypot(*f) > 0.0]
 
 
-def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tuple[list[Item], float]:
+def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k, note: str) -> tuple[list[Item], float]:
     # the guide line reaches past C's travel by these (mechanism.frame_items): off centre
     place = fit(mech.bounds(design), (box[0] + LEFT_OF_TRAVEL, box[1] + BELOW,
                                       box[2] - RIGHT_OF_TRAVEL, box[3] - BELOW), scale)
@@ -244,24 +251,21 @@ def _loaded_mechanism(design, rpm, masses, angle, box, scale, arrows, k) -> tupl
     room = Room(items, within=box)             # every label against all the linework
     anchors = mech.joint_anchors(design, angle, place, 3.5)
     room.name([p for _, _, p, _ in anchors] + [head for _, _, head, _ in heads])
-    for text, spans, p, way in anchors:
-        items += room.place(text, tuple(p), 3.5, tuple(way), gap=JOINT_GAP, subscripts=spans,
-                            leader_gap=mech.PIN_RADIUS + 0.3)
+    for text, spans, p, way in anchors:         # beside its pin (two rings), else on a leader
+        items += room.place(text, tuple(p), 3.5, tuple(way), gap=JOINT_GAP, rings=JOINT_RINGS,
+                            subscripts=spans, leader_gap=mech.PIN_RADIUS + 0.3)
+    unvalued = []                               # lengthened forces whose value found no room after the name
     for name, tail, head, lengthened in heads:  # crowded (small sheets): left out
         text, spans = symbol(FORCE_NAMES[name])
         placed = room.place(text, (float(head[0]), float(head[1])), 3.5, tuple(head - tail), gap=1.0,
                             subscripts=spans, leader_gap=0.5)
         items += placed
-        if placed and lengthened is not None:   # not to μF: its value, after its name, says how large
-            items += _value_after(room, placed[0], f"= {lengthened:.3g} N")
+        value = [] if lengthened is None or not placed else value_after(room, placed[0], f"= {newtons(lengthened)} N")
+        items += value
+        if lengthened is not None and not value:    # not to μF: its value must be read somewhere
+            unvalued.append((text, spans, lengthened))
+    items += values_table(room, note, unvalued, points["C"])
     return items, mu_f
-
-
-def _value_after(room: Room, name: Text, value: str) -> list[Item]:
-    """``value`` on the line of the label ``name``, after it, if free there (else left out)."""
-    box = name.box()
-    found = room.first_free([Text(value, (box[2] + 0.8, (box[1] + box[3]) / 2.0), 3.5, "lm")])
-    return [] if found is None else [found]
 
 
 def ram_load_points(design: Design, rpm: float, masses: MassProperties, angle: float, c: np.ndarray,

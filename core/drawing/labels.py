@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import replace
 from typing import Iterable, Sequence
 
 import numpy as np
@@ -357,3 +358,34 @@ class Room:
 
     def first_free(self, candidates: Iterable[Text]) -> Text | None:
         return first_free(candidates, self.taken, self.segments, self.within)
+
+    def block(self, lines: Sequence[Text], near: Pair) -> list[Text]:
+        """``lines`` (left-aligned, top to bottom, positioned from (0, 0) down) moved as one
+        block to the free spot of the drawing nearest ``near`` (a small table of values
+        beside what it explains), its lines' boxes taken; [] when no spot is free. Why a
+        block: a value that finds no room after its name still has to be read somewhere."""
+        if not lines or self.within is None:
+            return []
+        boxes = np.array([t.box() for t in lines])
+        lo, hi = boxes[:, :2].min(axis=0), boxes[:, 2:].max(axis=0)
+        size = hi - lo
+        x0, y0, x1, y1 = self.within
+        step = max(min(size[1], size[0]) / 2.0, 1.0)
+        xs = np.arange(x0, x1 - size[0] + 1e-9, step)
+        ys = np.arange(y0, y1 - size[1] + 1e-9, step)
+        if not len(xs) or not len(ys):
+            return []
+        gx, gy = (g.ravel() for g in np.meshgrid(xs, ys))
+        centre = np.column_stack([gx, gy]) + size / 2.0
+        order = np.argsort(np.hypot(centre[:, 0] - near[0], centre[:, 1] - near[1]), kind="stable")
+        shift = np.column_stack([gx, gy])[order] - lo          # (m, 2): the block's moves
+        whole = np.column_stack([shift[:, 0] + lo[0], shift[:, 1] + lo[1],
+                                 shift[:, 0] + hi[0], shift[:, 1] + hi[1]])
+        taken = np.asarray(self.taken, dtype=float).reshape(-1, 4)
+        free = np.flatnonzero(free_spots(whole, taken, self.segments, self.within))
+        if not len(free):
+            return []
+        dx, dy = shift[free[0]]
+        moved = [replace(t, position=(t.position[0] + dx, t.position[1] + dy)) for t in lines]
+        self.taken += [t.box() for t in moved]
+        return moved

@@ -38,6 +38,7 @@ def forces_labels() -> dict[str, str]:
         "none_needed": translate("Drawing", "none needed (J_c ≥ J_F)"),
         "guide_at": translate("Drawing", "Guide reaction N, φ = {angle}°"),
         "guide_inside": translate("Drawing", "{n} N, {x} mm from C"),
+        "not_to_scale": translate("Drawing", "Drawn {mm} mm long, not to μ_F:"),
         "guide_ends_at": translate("Drawing", "Guide ends rear / front, φ = {angle}°"),
         "guide_ends": translate("Drawing", "{rear} N / {front} N"),
     }

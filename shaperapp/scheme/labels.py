@@ -25,8 +25,8 @@ from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
-from .place import (LEADER_RING, Obstacles, Raster, around, boxes_at, clear_of_segments, leader,
-                    leaders, meets, end_to_end, owned)
+from .place import (LEADER_RING, Obstacles, Raster, around, boxes_at, clear_of_boxes, clear_of_segments,
+                    leader, leaders, meets, end_to_end, owned)
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
@@ -215,20 +215,73 @@ class LabelLayout(QObject):
         self._forces.restore_labels(forces)
 
     def _place_frame(self, index: int, arrows: np.ndarray, mm_per_px: tuple[float, float]) -> None:
-        mech = self._mechanism
-        px, u = self._px, mech.frames.u
-        margin = LINE_CLEAR_PX * px
-        ends, margins = mech.frame_obstacles(index)
-        obstacles = Obstacles(np.concatenate([ends, arrows]),
-                              np.concatenate([margins + margin, np.full(len(arrows), margin)]),
-                              np.array(self._chain).reshape(-1, 4), self._bounds, self._raster)
+        u = self._mechanism.frames.u
+        obstacles = self._frame_obstacles(index, arrows)
         leaders = self._place_still_for(arrows, obstacles)
-        for name, direction in mech.label_directions(index).items():
-            if name != "O4":
-                leaders.append(self._place_joint(name, direction, obstacles, index))
-        drawn = np.concatenate(leaders).reshape(-1, 2)
+        joints = self._place_joints(index, obstacles)
+        if len(joints.get("A", ())) and self._l1_from_pin(index):
+            # L1's leader starts on the crank circle where the lever touches it: at a limit
+            # position that is the crank pin A, and it runs out across the lever, A's own
+            # first direction (the report's end limit sent A out on a 128 mm leader). Its
+            # label has many places; A's name has a few: the joints first, then L1.
+            retry = self._frame_obstacles(index, arrows)
+            still = self._place_still_for(arrows, retry, later=("L1",))
+            again = self._place_joints(index, retry)
+            lead = self._still_after("L1", retry) if _led(again) < _led(joints) and not len(again["A"]) else None
+            if lead is None:                 # no better: the first placement again
+                obstacles = self._frame_obstacles(index, arrows)
+                leaders = self._place_still_for(arrows, obstacles)
+                joints = self._place_joints(index, obstacles)
+            else:
+                obstacles, leaders, joints = retry, still + [lead], again
+        drawn = np.concatenate(leaders + list(joints.values())).reshape(-1, 2)
         self._leaders.set_data(drawn[:, 0], drawn[:, 1])
         self._forces.place_labels(u, mm_per_px, obstacles)
+
+    def _l1_from_pin(self, index: int) -> bool:
+        """L1 is placed and its leader starts at the crank pin A as drawn at ``index``."""
+        if "L1" not in self._still:
+            return False
+        lead = self._dimensions.leader_line()
+        pin = self._mechanism.joint_at("A", index)
+        return bool(len(lead)) and float(np.hypot(*(lead[0, 0] - pin))) < 0.5 * self._px
+
+    def _frame_obstacles(self, index: int, arrows: np.ndarray) -> Obstacles:
+        """The lines of frame ``index`` (and its force arrows), L2 and h: what every label
+        of the frame keeps clear of before the first is placed."""
+        margin = LINE_CLEAR_PX * self._px
+        ends, margins = self._mechanism.frame_obstacles(index)
+        return Obstacles(np.concatenate([ends, arrows]),
+                         np.concatenate([margins + margin, np.full(len(arrows), margin)]),
+                         np.array(self._chain).reshape(-1, 4), self._bounds, self._raster)
+
+    def _place_joints(self, index: int, obstacles: Obstacles) -> dict[str, np.ndarray]:
+        """The moving joints' names at ``index``; each one's leader (maybe none)."""
+        return {name: self._place_joint(name, direction, obstacles, index)
+                for name, direction in self._mechanism.label_directions(index).items() if name != "O4"}
+
+    def _still_after(self, name: str, obstacles: Obstacles) -> np.ndarray | None:
+        """Still label ``name`` at the candidate clear of everything placed whose leader is
+        the shortest of those crossing no label (a long one would cross the drawing); its
+        leader, or None (and left where it was) if there is none."""
+        centres, half, _ = self._still[name]
+        boxes = boxes_at(centres, half)
+        texts = self._dimensions.texts()
+        chain = [text_box(texts[n]) for n in ("L2", "h") if texts[n].isVisible()]   # as drawn now
+        free = obstacles.clear(boxes) & clear_of_boxes(boxes, np.array(chain).reshape(-1, 4))
+        taken = np.array(obstacles.boxes).reshape(-1, 4)
+        margin = np.full(1, LINE_CLEAR_PX * self._px)
+        was, best = self._at[name], None
+        for k in np.flatnonzero(free):
+            self._put_still(name, int(k))
+            lead = self._leader_of(name)
+            length = _led({name: lead})
+            if (not len(lead) or not meets(taken, lead, margin).any()) and (best is None or length < best[0]):
+                best = (length, int(k))
+        if best is None:
+            self._put_still(name, was)
+            return None
+        return self._keep_still(name, best[1], obstacles)
 
     def _place_joint(self, name: str, direction: np.ndarray, obstacles: Obstacles, index: int) -> np.ndarray:
         """A moving joint's name: beside it (at its size, then one standard size smaller),
@@ -297,14 +350,18 @@ class LabelLayout(QObject):
         obstacles.add(ends=lead, margin=LINE_CLEAR_PX * self._px)
         return lead
 
-    def _place_still_for(self, arrows: np.ndarray, obstacles: Obstacles) -> list[np.ndarray]:
+    def _place_still_for(self, arrows: np.ndarray, obstacles: Obstacles,
+                         later: tuple[str, ...] = ()) -> list[np.ndarray]:
         """The still labels as obstacles of this frame: each at its home, unless a force
         arrow of this frame runs through it there; then, for this frame, at its first
-        candidate clear of everything. Returns their leaders."""
+        candidate clear of everything. Those ``later`` are left out (placed by the caller
+        after the joints' names). Returns their leaders."""
         margin = LINE_CLEAR_PX * self._px
         leaders, crossed = [], []
         # those that stay home first, so that one that has to move keeps clear of them too
         for name, (centres, half, _) in self._still.items():
+            if name in later:
+                continue
             home = self._home[name]
             if len(arrows) and not clear_of_segments(boxes_at(centres[home], half), arrows, margin)[0]:
                 crossed.append(name)
@@ -314,3 +371,8 @@ class LabelLayout(QObject):
             centres, half, _ = self._still[name]
             leaders.append(self._keep_still(name, obstacles.best(boxes_at(centres, half)), obstacles))
         return leaders
+
+
+def _led(leads: dict[str, np.ndarray]) -> float:
+    """The joint names' leaders' total length, mm (0 when every name is beside its joint)."""
+    return float(sum(np.hypot(*(lead[:, 1] - lead[:, 0]).T).sum() for lead in leads.values() if len(lead)))

@@ -117,3 +117,46 @@ def test_scheme_i_loads_on_the_ram_show_their_arrow_outside_the_ram():
             assert not inside, (k, name, tail)
             mid = (tail + head) / 2.0
             assert not (x0 < mid[0] < x1 and y0 < mid[1] < y1), (k, name)
+
+
+@pytest.mark.parametrize("size", ["A0", "A1", "A2", "A3"])
+def test_scheme_i_lengthened_forces_give_their_value(size):
+    """A force under MIN_ARROW at μF is drawn MIN_ARROW long, so its length says nothing of
+    its size: its value must be printed, after its name or in the drawing's table of such
+    values. On A1 at φ = 120° G6, F_I6 and N showed no value (no room after the names).
+    The value expected is the arrow at μF times μF (ForcesSheet.arrows), 3 digits."""
+    drawn = scheme_i_sheet(size)
+    for k in range(2):
+        _, items = drawn.areas[f"mechanism {k + 1}"]
+        texts = [t for t in items if isinstance(t, Text)]
+        for (j, name), (tail, head) in drawn.arrows.items():
+            length = math.hypot(*(head - tail))
+            if j != k or length >= MIN_ARROW:
+                continue
+            value = length * drawn.force_scales[k]
+            letters = name.replace("_", "")
+            # "= 700 N" on the line of its name "G6", just after it (boxes x0, y0, x1, y1)
+            values = [float(t.text[2:-2]) for t in texts if t.text.startswith("= ") and t.text.endswith(" N")
+                      and any(n.text == letters and abs(n.box()[2] + 0.8 - t.box()[0]) < 0.5
+                              and n.box()[1] <= (t.box()[1] + t.box()[3]) / 2.0 <= n.box()[3] for n in texts)]
+            assert any(v == pytest.approx(value, rel=5e-3) for v in values), (size, k, name, value, values)
+
+
+JOINT_OF = {"O2": "R_O2", "A": "R_A", "O4": "R_O4", "B": "R_B", "C": "R_C"}
+
+
+@pytest.mark.parametrize("size", ["A0", "A1", "A2", "A3"])
+def test_scheme_i_joint_names_beside_their_joint_or_led(size):
+    """A joint's name with no leader stands beside its pin: at most one text height off the
+    pin's rim and the 1 mm gap (ring 1 of the search). On A1 at φ = 120° O2 stood 10 mm from
+    O2 (60 px at 150 dpi), nothing tying it to O2 but nearness. The joints are the joint
+    forces' tails (ForcesSheet.arrows)."""
+    drawn = scheme_i_sheet(size)
+    for k in range(2):
+        _, items = drawn.areas[f"mechanism {k + 1}"]
+        leaders = [it for it in items if isinstance(it, Polyline) and it.layer == "THIN" and len(it.points) == 2]
+        for label in (t for t in items if isinstance(t, Text) and t.text in JOINT_OF):
+            joint = drawn.arrows[(k, JOINT_OF[label.text])][0]
+            if tied(label.box(), joint, leaders):
+                continue
+            assert box_distance(label.box(), joint) <= mech.PIN_RADIUS + 1.0 + 3.5 + 1e-6, (size, k, label.text)

@@ -66,3 +66,25 @@ def test_limit_positions_name_their_own_joints_and_crank(qapp, spec):
             assert np.hypot(*(start - joints["A"])) < 1e-6 * spec.crank, (index, start, joints["A"])
     finally:
         views.close()
+
+
+@pytest.mark.parametrize("spec", SPECS, ids=["scheme-I", "default"])
+def test_limit_positions_name_the_crank_pin_beside_it(qapp, spec):
+    """At a limit position L1's leader starts at the crank pin A and runs out across the
+    lever, A's own first direction: at the end limit of the default design "A" went out on
+    a 128 mm leader (8.5 mm on the page), every near spot refused for L1's leader. A's name
+    stands within one text height of A (box to point, on screen), with or without a leader."""
+    rpms = [60.0]
+    views = figures.ReportViews(spec, rpms, None, analyze(spec.design(), rpms))
+    try:
+        scheme = views._show(SchemeWidget(views.model), *figures.SCHEME_PX)
+        for index in (0, views._end_index):
+            views.model.set_angle_index(index)
+            scheme.fit()
+            QCoreApplication.processEvents()
+            a = np.array(scheme.drawn_joints()["A"])
+            box = scheme._screen_box(scheme._mechanism.labels["A"])
+            height = abs(box[3] - box[2])
+            assert box_distance(box, a) <= height, (index, box_distance(box, a), height)
+    finally:
+        views.close()
