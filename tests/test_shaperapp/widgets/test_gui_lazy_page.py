@@ -248,7 +248,7 @@ while not window._pages["cam"].is_built() and time.perf_counter() < end:
     app.processEvents()
 print("scipy.optimize" in sys.modules, "scipy.spatial" in sys.modules)
 app.processEvents()
-print("scipy.optimize" in sys.modules, "scipy.spatial" in sys.modules, window.cam_model._cam is None)
+print("scipy.optimize" in sys.modules, "scipy.spatial" in sys.modules, window.cam_model._value is None)
 """
 
 
