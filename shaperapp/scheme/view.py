@@ -13,7 +13,6 @@ and its export dialog (whose SVG export fails on recent Qt) are not offered.
 """
 from __future__ import annotations
 
-import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QPainter
@@ -25,10 +24,11 @@ from shaperapp.widgets.view_parts import fill_speed_combo
 
 from .controls import SchemeControls
 from .dimensions import DimensionLayer
-from .draw import WHITE, Box, Pair, canvas
+from .draw import WHITE, canvas
 from .forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
 from .labels import LabelLayout
 from .mechanism import Geometry, MechanismLayer
+from .readback import SchemeReadBack
 from .refit import needs_fit
 
 
@@ -38,7 +38,7 @@ PRECOMPUTE_CHUNK = 8
 PRECOMPUTE_PAUSE_MS = 50      # between two turns: the rest of the window's deferred work goes first
 
 
-class SchemeWidget(QWidget):
+class SchemeWidget(SchemeReadBack, QWidget):
     """The shaper mechanism drawn to scale at ``model.angle_index``; zoom, pan, fit, export."""
 
     def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
@@ -207,34 +207,6 @@ class SchemeWidget(QWidget):
             self._forces.speed = index
             self._draw_forces(self._model.angle_index)
 
-    def drawn_forces(self) -> dict[str, Pair]:
-        """The force arrows drawn now as {name: (start, tip)} in mm, read back from the drawn path.
-
-        Names are those of ``FORCE_NAMES`` that are drawn: the arrow runs from start to
-        tip along the force on the body named in core (see docs/forces.md): "O2" frame on
-        crank, "A" block on lever, "O4" frame on lever, "B" rod or tip block on lever,
-        "C" rod on ram, "guide" guide on ram, "cut" workpiece on tool. Every arrow starts
-        at its point of application except "cut", whose tip touches the tool point.
-        Empty while the layer is hidden.
-        """
-        self._catch_up()
-        return self._forces.drawn()
-
-    def force_labels(self) -> dict[str, str]:
-        """The magnitude labels next to the drawn force arrows."""
-        self._catch_up()
-        return self._forces.labels()
-
-    def force_label_boxes(self) -> dict[str, Box]:
-        """Where the magnitude labels are drawn on screen, (left, right, bottom, top) in mm."""
-        self._catch_up()
-        return {name: self._screen_box(tag) for name, tag in self._forces.tags().items()}
-
-    def force_caption(self) -> str:
-        """The force layer's caption (speed and length scale); empty while hidden."""
-        self._catch_up()
-        return self._forces.caption()
-
     def export_image(self, path: str) -> None:
         """Write the sketch as PNG (at least 1600 px wide), another raster type Qt writes,
         or SVG, chosen by the suffix. ValueError for an unknown type, OSError for a missing
@@ -261,46 +233,6 @@ class SchemeWidget(QWidget):
         self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         render_scene(self._plot.scene(), source, painter, target, WHITE)
-
-    def drawn_joints(self) -> dict[str, tuple[float, float]]:
-        """Joint positions as the pin markers show them now, mm (for checks and tests)."""
-        self._catch_up()
-        return self._mechanism.joints()
-
-    def drawn_link_ends(self) -> dict[str, tuple[float, float]]:
-        """Where the far end of each moved link body lands now, mm (for checks and tests)."""
-        self._catch_up()
-        return self._mechanism.link_ends(self._model)
-
-    def ram_extent(self) -> tuple[float, float]:
-        """x of the ram body's rear and front ends as drawn now, mm."""
-        self._catch_up()
-        return self._mechanism.ram_extent()
-
-    def dimension_labels(self) -> list[str]:
-        """The texts of the dimension labels now drawn."""
-        self._catch_up()
-        return self._dimensions.labels()
-
-    def dimension_label_boxes(self) -> dict[str, Box]:
-        """Where the dimension labels are drawn on screen, (left, right, bottom, top) in mm,
-        by name ("L1" …)."""
-        self._catch_up()
-        return {name: self._screen_box(item) for name, item in self._dimensions.texts().items()}
-
-    def _screen_box(self, item) -> Box:
-        """The item's box as the viewport shows it, back in mm: what a user sees, whatever
-        transform tricks the item uses to stay upright and unscaled."""
-        view = self._plot
-        device = item.deviceTransform(view.viewportTransform()).mapRect(item.boundingRect())
-        scene = view.viewportTransform().inverted()[0].mapRect(device)
-        r = self._view.mapSceneToView(scene).boundingRect()
-        return r.left(), r.right(), r.top(), r.bottom()
-
-    def tool_path(self) -> tuple[np.ndarray, np.ndarray]:
-        """Vertices of the travelled part of the tool-tip trace as drawn now, mm."""
-        self._catch_up()
-        return self._mechanism.tool_path()
 
     def plot_widget(self) -> pg.PlotWidget:
         return self._plot
