@@ -12,7 +12,7 @@ import pytest
 from PySide6.QtCore import QProcess
 from PySide6.QtWidgets import QFileDialog, QMessageBox, QProgressDialog, QPushButton
 
-from cli_runner import shaper_in_process
+from cli_runner import shaper_process
 from export_faults import last_run
 from core.files.io import design_document
 from core.base.progress import Progress
@@ -115,8 +115,11 @@ def test_the_files_are_those_of_shaper_course_with_the_same_choices(window, gui,
     values = gui["values"]
     assert values == sorted(values) and values[-1] == STEPS and len(set(values)) > 20
     cli = tmp_path / "cli"
-    status, _, err = shaper_in_process("course", "--design", gui["path"], "--sheet", "A3", "--dxf",
-                                       "--rpm-index", "2", "-o", cli)
+    # a process of its own, as the GUI's child is: run in this test's process after other
+    # tests of the same worker (CI, 29 November), the report's text came out in another order
+    # than the fresh child's (a label placed elsewhere; the cause in that state not found)
+    status, _, err = shaper_process("course", "--design", gui["path"], "--sheet", "A3", "--dxf",
+                                    "--rpm-index", "2", "-o", cli)
     assert status == 0, err
     names = sorted(os.listdir(cli))
     assert sorted(os.listdir(gui["out"])) == names and len(names) == 9
