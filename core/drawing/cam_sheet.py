@@ -28,7 +28,7 @@ from core.cam.table import follower_peaks
 from . import sheet_dims as sd
 from .charts import ARROW, Curve, arrow, chart, scale_notes
 from .dxf import CENTER, OUTLINE, THIN
-from .labels import Room, strokes
+from .labels import Room, boxes_meet, crossings_each, strokes
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, fit, frame_items, line, marked,
                     number_text, scale_text, standard_scale, symbol)
@@ -181,15 +181,16 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
             continue
         items += sector_arc(o, ray_out - 2.0, start, span)
         sectors.append((math.radians(start + span / 2.0), lab[key].format(deg=number_text(round(float(span), 3)))))
-    dims = cam_dimensions(o, pivot, b0, place.length(r0), outer, scale, items, box)
-    for dim in dims:
-        items += [*dim.parts, *dim.kept]
-    # the turning sense: a clockwise arc with its head, inside the base circle
+    # the turning sense: a clockwise arc with its head, inside the base circle (before the
+    # dimensions, which keep their texts off it)
     r_arrow = 0.45 * place.length(r0)
     arc = np.radians(np.linspace(150.0, 60.0, 24))
     pts = o + r_arrow * np.column_stack([np.cos(arc), np.sin(arc)])
     items.append(line(pts[:-3], THIN))
     items += arrow(pts[-4], pts[-1], THIN)
+    dims = cam_dimensions(o, pivot, b0, place.length(r0), outer, scale, items, box)
+    for dim in dims:
+        items += [*dim.parts, *dim.kept]
     room = Room(items, within=box, taken=[d.text.box() for d in dims])   # the labels after all the lines
     mids = [o + (ray_out - 2.0) * np.array([math.cos(mid), math.sin(mid)]) for mid, _ in sectors]
     room.name(mids)                            # each angle read as its own arc's
@@ -230,8 +231,10 @@ def cam_dimensions(o: np.ndarray, pivot: np.ndarray, b0: np.ndarray, r0: float, 
     """The cam's three sizes a teacher checks on the drawing, with their true values (the
     sheet is 1:scale): the centre distance a = OA beyond the cam (under it, else over it),
     the arm l = AB0 beside the arm and the base radius r0 from O to the base circle, each
-    the first of its spots whose text no line of ``drawn`` (nor of the dimensions before it)
-    crosses and which lies ``within`` (else the least crossed)."""
+    the first of its spots whose text no line crosses (of ``drawn``, of the dimensions
+    before it, nor its own: a led text can lie across its own dimension line), whose lines
+    cross no text of the dimensions before it, and which lies ``within`` (else the least
+    crossed); of those, the one whose leader crosses the fewest lines."""
     ways = np.radians(np.r_[240.0:360.0:15.0, 225.0:90.0:-15.0, 0.0:90.0:15.0])
     options = {
         "a": [sd.aligned(tuple(pivot), tuple(o), off, "a", scale) for off in (outer + 8.0, -(outer + 8.0))],
@@ -239,23 +242,25 @@ def cam_dimensions(o: np.ndarray, pivot: np.ndarray, b0: np.ndarray, r0: float, 
         "r0": [sd.aligned(tuple(o), tuple(o + r0 * np.array([math.cos(t), math.sin(t)])), 0.0, "r0", scale)
                for t in ways]}
     segs = strokes(drawn)
-    taken: list[Box] = []
-    chosen = []
+    chosen: list[Dimension] = []
 
-    def cost(dim: Dimension) -> tuple[int, int]:
+    def cost(dim: Dimension) -> tuple[int, int, int]:
         box = dim.text.box()
         inside = within[0] <= box[0] and box[2] <= within[2] and within[1] <= box[1] and box[3] <= within[3]
-        apart = not any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3] for b in taken)
-        return (0 if inside and apart else 1, sd.text_crossings(dim.text, segs))
+        apart = not any(boxes_meet(box, d.text.box()) for d in chosen)
+        own = strokes([*dim.parts, *dim.kept])
+        crossed = (sd.text_crossings(dim.text, np.vstack([segs, own]))
+                   + sum(sd.text_crossings(d.text, own) for d in chosen))
+        return (0 if inside and apart else 1, crossed, int(crossings_each(strokes(dim.kept), segs).sum()))
 
     for candidates in options.values():
         best = min(candidates, key=cost)        # the first of the least crossed
-        if cost(best) != (0, 0):                # its text out beyond the cam on a leader
-            corners = [o + (outer + 6.0) * np.array([math.cos(t), math.sin(t)]) for t in ways]
+        if cost(best)[:2] != (0, 0):            # its text out beyond the cam on a leader, the nearest first
+            corners = sorted((o + (outer + 6.0) * np.array([math.cos(t), math.sin(t)]) for t in ways),
+                             key=lambda c: math.dist(c, best.text.position))
             led = [sd.led(best, tuple(c)) for c in corners]
             best = min([best] + led, key=cost)
         chosen.append(best)
-        taken.append(best.text.box())
         segs = np.vstack([segs, strokes([*best.parts, *best.kept])])
     return chosen
 

@@ -180,6 +180,12 @@ def test_chinese_labels_change_the_texts_only(cam):
 # (δs's leader chosen through a line; the batched label search's first version)
 @example(rise_law="parabolic", return_law="parabolic", swing=5.0, rise=75.0, dwell=40.0, back=54.25,
          arm=153.0, allowed=30.0, size="A3", rpm=10.0)
+# the arm's dimension text led out across its own dimension line (its own lines unchecked)
+@example(rise_law="parabolic", return_law="parabolic", swing=17.0, rise=40.0, dwell=0.0, back=40.0,
+         arm=50.0, allowed=34.0, size="A2", rpm=10.0)
+# the base radius's text under the turning-sense arrow, which was drawn after the dimensions
+@example(rise_law="parabolic", return_law="parabolic", swing=18.0, rise=44.0, dwell=0.0, back=40.0,
+         arm=64.0, allowed=30.0, size="A3", rpm=10.0)
 @given(rise_law=st.sampled_from(LAWS), return_law=st.sampled_from(LAWS),
        swing=st.floats(5.0, 30.0), rise=st.floats(40.0, 150.0),
        dwell=st.one_of(st.just(0.0), st.floats(1.0, 40.0)), back=st.floats(40.0, 150.0),
