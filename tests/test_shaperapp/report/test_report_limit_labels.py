@@ -43,8 +43,9 @@ def led(scheme, box, joint) -> bool:
                for start, end in pairs)
 
 
-@pytest.mark.parametrize("spec", SPECS, ids=["scheme-I", "default"])
-def test_limit_positions_name_their_own_joints_and_crank(qapp, spec):
+def limit_frames(spec):
+    """The report's scheme at each limit position, as ``limit_schemes`` shows it: yields
+    (scheme, frame index)."""
     rpms = [60.0]
     views = figures.ReportViews(spec, rpms, None, analyze(spec.design(), rpms))
     try:
@@ -53,19 +54,25 @@ def test_limit_positions_name_their_own_joints_and_crank(qapp, spec):
             views.model.set_angle_index(index)
             scheme.fit()
             QCoreApplication.processEvents()
-            joints = {name: np.array(p) for name, p in scheme.drawn_joints().items()}
-            for name, item in scheme._mechanism.labels.items():
-                if not item.isVisible():
-                    continue
-                box = scheme._screen_box(item)
-                own = box_distance(box, joints[name])
-                other, nearest = min((box_distance(box, p), n) for n, p in joints.items() if n != name)
-                if not led(scheme, box, joints[name]):      # a leader says whose it is
-                    assert own <= 0.5 * other, (index, name, own, nearest, other)
-            start = scheme._dimensions.leader_line()[0, 0]
-            assert np.hypot(*(start - joints["A"])) < 1e-6 * spec.crank, (index, start, joints["A"])
+            yield scheme, index
     finally:
         views.close()
+
+
+@pytest.mark.parametrize("spec", SPECS, ids=["scheme-I", "default"])
+def test_limit_positions_name_their_own_joints_and_crank(qapp, spec):
+    for scheme, index in limit_frames(spec):
+        joints = {name: np.array(p) for name, p in scheme.drawn_joints().items()}
+        for name, item in scheme._mechanism.labels.items():
+            if not item.isVisible():
+                continue
+            box = scheme._screen_box(item)
+            own = box_distance(box, joints[name])
+            other, nearest = min((box_distance(box, p), n) for n, p in joints.items() if n != name)
+            if not led(scheme, box, joints[name]):      # a leader says whose it is
+                assert own <= 0.5 * other, (index, name, own, nearest, other)
+        start = scheme._dimensions.leader_line()[0, 0]
+        assert np.hypot(*(start - joints["A"])) < 1e-6 * spec.crank, (index, start, joints["A"])
 
 
 @pytest.mark.parametrize("spec", SPECS, ids=["scheme-I", "default"])
@@ -74,17 +81,8 @@ def test_limit_positions_name_the_crank_pin_beside_it(qapp, spec):
     lever, A's own first direction: at the end limit of the default design "A" went out on
     a 128 mm leader (8.5 mm on the page), every near spot refused for L1's leader. A's name
     stands within one text height of A (box to point, on screen), with or without a leader."""
-    rpms = [60.0]
-    views = figures.ReportViews(spec, rpms, None, analyze(spec.design(), rpms))
-    try:
-        scheme = views._show(SchemeWidget(views.model), *figures.SCHEME_PX)
-        for index in (0, views._end_index):
-            views.model.set_angle_index(index)
-            scheme.fit()
-            QCoreApplication.processEvents()
-            a = np.array(scheme.drawn_joints()["A"])
-            box = scheme._screen_box(scheme._mechanism.labels["A"])
-            height = abs(box[3] - box[2])
-            assert box_distance(box, a) <= height, (index, box_distance(box, a), height)
-    finally:
-        views.close()
+    for scheme, index in limit_frames(spec):
+        a = np.array(scheme.drawn_joints()["A"])
+        box = scheme._screen_box(scheme._mechanism.labels["A"])
+        height = abs(box[3] - box[2])
+        assert box_distance(box, a) <= height, (index, box_distance(box, a), height)
