@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from core.base.errors import DesignError
-from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM  # noqa: F401  (defined here before)
+from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM
 from .follower import Follower
 from .laws import Program
 from .synthesis import Allowance, within_allowance

@@ -11,11 +11,11 @@ import math
 from dataclasses import dataclass, field
 
 from core.base.errors import DesignError, require_range
-from .defaults import RETURN_PRESSURE_DEG  # noqa: F401  (defined here before)
+from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, RETURN_PRESSURE_DEG
 from .extremes import min_convex_radius, pressure_peaks
 from .follower import Follower, check_follower
 from .laws import Program
-from .build import (BOSS_MM, CLEARANCE_MM, HUB_MM, Room, pitch_max_radius, raised, require_buildable,
+from .build import (Room, pitch_max_radius, raised, require_buildable,
                     roller_for_hub, shortfalls)
 from .synthesis import Allowance, largest_roller, synthesize
 from .timing import Timing, timing

@@ -10,7 +10,7 @@ from typing import Any
 from PySide6.QtWidgets import QComboBox, QWidget
 
 from core.cam import LAWS
-from core.cam.cam import RETURN_PRESSURE_DEG
+from core.cam.defaults import RETURN_PRESSURE_DEG
 from shaperapp.design.fields import parse_number
 from shaperapp.parts.form import PartForm
 from shaperapp.widgets.messages import describe as describe_error
