@@ -113,6 +113,20 @@ def test_the_cli_output_uses_the_task_books_numbering(args):
     assert not offending(units, args[0])
 
 
+def _write_in_process(*args) -> None:
+    """``shaper *args`` (a Qt command: report, drawing) through main() in this process, the
+    UI's English put back after it. The test reads what is printed, not how a process
+    starts, so the six runs need no interpreters of their own: about 11 s of CPU less
+    (docs/performance.md, "The test suite's time (29 November, afternoon)")."""
+    from cli_runner import shaper_in_process
+    from shaperapp.widgets import i18n
+    try:
+        status, _, err = shaper_in_process(*args)
+    finally:
+        i18n.set_language("en")
+    assert status == 0, err
+
+
 def _pdf_lines(path) -> list[str]:
     return subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True,
                           check=True).stdout.splitlines()
@@ -123,18 +137,16 @@ def _pdf_lines(path) -> list[str]:
 @pytest.mark.parametrize("language", ["en", "zh"])
 def test_the_report_and_the_sheets_use_the_task_books_numbering(tmp_path, language):
     report = tmp_path / "report.pdf"
-    run = shaper("report", *ROD, "--rpm", "40", *LOADS, "--rod-mass", "5", "--lang", language,
-                 "-o", report)
-    assert run.returncode == 0, run.stderr
+    _write_in_process("report", *ROD, "--rpm", "40", *LOADS, "--rod-mass", "5", "--lang", language,
+                      "-o", report)
     lines = _pdf_lines(report)
     found = offending(lines, f"report {language}")
     if language == "zh":
         assert any("设计名称" in line for line in lines[:20])    # the cover's label
     for content, design in (("forces", DESIGN), ("motion", ROD)):
         sheet = tmp_path / f"{content}.pdf"
-        run = shaper("drawing", *design, "--rpm", "40", *LOADS, "--content", content, "--sheet", "A1",
-                     "--lang", language, "-o", sheet)
-        assert run.returncode == 0, run.stderr
+        _write_in_process("drawing", *design, "--rpm", "40", *LOADS, "--content", content, "--sheet", "A1",
+                          "--lang", language, "-o", sheet)
         lines = _pdf_lines(sheet)
         found += offending(lines, f"{content} sheet {language}")
         if content == "forces":     # the block variant: the ram's forces are 6, no link 5 drawn
