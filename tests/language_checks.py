@@ -65,6 +65,14 @@ def pdf_text(path) -> str:
                           check=True).stdout
 
 
+def pdf_words(path) -> list[str]:
+    """The PDF's pages and words with their boxes (pt) as ``pdftotext -bbox`` reads them, in
+    order, without the document's dates: two files of one content give the same list."""
+    boxes = subprocess.run(["pdftotext", "-bbox", str(path), "-"], capture_output=True, text=True,
+                           check=True).stdout
+    return re.findall(r"<page [^>]*>|<word [^>]*>[^<]*</word>", boxes)
+
+
 def has_pdftotext() -> bool:
     return shutil.which("pdftotext") is not None
 

@@ -53,7 +53,10 @@ PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin marker radii, u
 
 def outline(item) -> np.ndarray:
     """An item's painter path (an ellipse's circle, a curve's data) as segments in its
-    own frame."""
+    own frame. Each subpath's points are copied while Qt's polygon still holds them:
+    pyqtgraph's ``ndarray_from_qpolygonf`` only views the polygon's memory, and read
+    after the list of polygons was freed it gave whatever the allocator had written
+    there since, so the labels' raster changed from run to run (issue 40)."""
     if isinstance(item, CurveItem):
         pts = np.column_stack([item.x, item.y])
         if item.connect == "pairs":
@@ -65,7 +68,8 @@ def outline(item) -> np.ndarray:
         path.addEllipse(item.rect())
     else:
         path = item.path()
-    return local_segments([ndarray_from_qpolygonf(p) for p in path.toSubpathPolygons()])
+    polygons = path.toSubpathPolygons()      # alive until every point is copied
+    return local_segments([ndarray_from_qpolygonf(p).copy() for p in polygons])
 
 
 def joint_font(points: int) -> QFont:
