@@ -10,7 +10,7 @@ import pytest
 
 from core.files.io import load_design, save_design
 from core.linkage.spec import Spec
-from cli_runner import shaper
+from cli_runner import shaper, shaper_in_process
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -30,11 +30,15 @@ def one_error_line(run, option):
 
 @pytest.fixture
 def lib(tmp_path):
+    """A library of two designs, added by ``shaper library add`` in this process: the tests
+    run the commands they check as processes; this setup need not start two more each."""
     path = tmp_path / "lib.sqlite"
-    assert lib_cmd(path, "add", "--crank", 100, "--K", 1.4, "--stroke", 300, "--name", "base",
-                   "--notes", "seed 003", "--tags", "seed", "block").returncode == 0
-    assert lib_cmd(path, "add", "--crank", 100, "--K", 1.6, "--stroke", 300, "--rod-ratio", 0.35,
-                   "--name", "rod 1.6", "--rpm", 40, 60, *LOADS).returncode == 0
+    for args in (("--crank", 100, "--K", 1.4, "--stroke", 300, "--name", "base",
+                  "--notes", "seed 003", "--tags", "seed", "block"),
+                 ("--crank", 100, "--K", 1.6, "--stroke", 300, "--rod-ratio", 0.35,
+                  "--name", "rod 1.6", "--rpm", 40, 60, *LOADS)):
+        status, _, err = shaper_in_process("library", "add", *args, "--library", path)
+        assert status == 0, err
     return path
 
 
