@@ -9,7 +9,7 @@ import unicodedata
 import numpy as np
 import pytest
 
-from cli_runner import shaper
+from cli_runner import shaper, shaper_run_in_process
 from core.course_design.positions import display_values
 from report_numbers import cli_values, column_text
 
@@ -28,7 +28,7 @@ def squash(text: str) -> str:
 
 def table_values() -> list[str]:
     """A sample of the positions table as the report must print it."""
-    result = shaper("table", *DESIGN, *SPEEDS, *LOADS, "--json")
+    result = shaper_run_in_process("table", *DESIGN, *SPEEDS, *LOADS, "--json")
     records = json.loads(result.stdout)
     columns = [k for k in records[0] if k not in ("position", "name")]
     data = np.array([[np.nan if r[c] is None else r[c] for c in columns] for r in records])
@@ -55,7 +55,8 @@ def reports(tmp_path_factory):
     folder = tmp_path_factory.mktemp("reports")
     out = {}
     for name, extra in (("en.pdf", []), ("zh.pdf", ["--lang", "zh"]), ("en.html", ["--html"])):
-        result = shaper("report", *DESIGN, *SPEEDS, *LOADS, "-o", folder / name, "--title", "Classic",
+        result = shaper_run_in_process("report", *DESIGN, *SPEEDS, *LOADS, "-o", folder / name,
+                                       "--title", "Classic",
                         *extra)
         assert result.returncode == 0, result.stderr
         assert result.stderr == ""
@@ -158,7 +159,7 @@ def test_the_name_chooses_the_type_and_a_save_keeps_the_files_mode(tmp_path):
     page = tmp_path / "R.HTM"
     page.write_text("old")
     page.chmod(0o640)
-    result = shaper("report", *DESIGN, "-o", page)
+    result = shaper_run_in_process("report", *DESIGN, "-o", page)
     assert result.returncode == 0, result.stderr
     assert "(HTML)" in result.stdout
     text = page.read_text(encoding="utf-8")
@@ -193,18 +194,20 @@ def compared(tmp_path_factory):
     lib = folder / "lib.sqlite"
     for name, words in (("Classic", DESIGN + SPEEDS + LOADS), ("rod 1.6", OTHER + LOADS),
                         ("no loads", ["--crank", "110", "--K", "1.4", "--stroke", "300"])):
-        assert shaper("library", "add", *words, "--name", name, "--library", lib).returncode == 0
+        assert shaper_run_in_process("library", "add", *words, "--name", name, "--library", lib).returncode == 0
     design = folder / "wide.shaper.json"
-    assert shaper("library", "add", "--crank", "90", "--K", "1.5", "--stroke", "320", "--name", "x",
-                  "--library", folder / "other.sqlite").returncode == 0
-    assert shaper("library", "export", "x", "-o", design, "--library", folder / "other.sqlite").returncode == 0
+    assert shaper_run_in_process("library", "add", "--crank", "90", "--K", "1.5", "--stroke", "320", "--name", "x",
+                                 "--library", folder / "other.sqlite").returncode == 0
+    assert shaper_run_in_process("library", "export", "x", "-o", design,
+                                 "--library", folder / "other.sqlite").returncode == 0
     out = {}
     for name, extra in (("en.pdf", []), ("zh.pdf", ["--lang", "zh"]), ("en.html", ["--html"])):
-        result = shaper("report", *DESIGN, *SPEEDS, *LOADS, "--title", "Classic", "--compare", "rod 1.6",
-                        "no loads", "--compare-file", design, "--library", lib, "-o", folder / name, *extra)
+        result = shaper_run_in_process("report", *DESIGN, *SPEEDS, *LOADS, "--title", "Classic", "--compare",
+                                       "rod 1.6", "no loads", "--compare-file", design, "--library", lib,
+                                       "-o", folder / name, *extra)
         assert result.returncode == 0, result.stderr
         out[name] = folder / name
-    table = shaper("library", "compare", "Classic", "rod 1.6", "no loads", "--file", design,
+    table = shaper_run_in_process("library", "compare", "Classic", "rod 1.6", "no loads", "--file", design,
                    "--rpm", SPEEDS[1], "--library", lib)
     assert table.returncode == 0, table.stderr
     return out, table.stdout, lib, design
@@ -266,8 +269,8 @@ def test_comparison_from_a_missing_library_names_it(tmp_path):
 @needs_pdftotext
 def test_cover_block_from_the_command_line(tmp_path):
     out = tmp_path / "r.pdf"
-    result = shaper("report", *DESIGN, "--rpm", "40", "-o", out, "--student", "Li Ming",
-                    "--student-number", "2021-07", "--class", "ME 21", "--school", "SME",
+    result = shaper_run_in_process("report", *DESIGN, "--rpm", "40", "-o", out, "--student", "Li Ming",
+                                   "--student-number", "2021-07", "--class", "ME 21", "--school", "SME",
                     "--supervisor", "Prof. Wang", "--date", "2026-06-30")
     assert result.returncode == 0, result.stderr
     first = squash(pdf_text(out).split("\f")[0])
@@ -331,7 +334,8 @@ def test_scheme_marks_sit_on_the_design(qtbot):
 @pytest.mark.parametrize("language", ["en", "zh"])
 def test_formulas_are_typeset(tmp_path, language):
     out = tmp_path / "r.html"
-    assert shaper("report", *DESIGN, "--rpm", "40", "--lang", language, "--html", "-o", out).returncode == 0
+    assert shaper_run_in_process("report", *DESIGN, "--rpm", "40", "--lang", language, "--html",
+                                 "-o", out).returncode == 0
     page = out.read_text(encoding="utf-8")
     formulas = page[page.index("<h2>8 ") if language == "en" else page.index("<h2>8"):]
     for marked in ("a<sup>k</sup><sub>A4A3</sub>", "v<sub>A4</sub>", "ω<sub>4</sub>", "S<sub>4</sub>", "J<sub>F</sub>",
@@ -350,7 +354,7 @@ def test_formulas_are_typeset(tmp_path, language):
 def test_formulas_state_the_guide_rule_of_the_design(tmp_path, design, says, not_says):
     """The formulas section printed the chord rule for every design, a sagitta one too."""
     out = tmp_path / "r.html"
-    run = shaper("report", *design, "--rpm", "40", "-o", str(out))
+    run = shaper_run_in_process("report", *design, "--rpm", "40", "-o", str(out))
     assert run.returncode == 0, run.stderr
     html = out.read_text(encoding="utf-8")
     formulas = html.split("Conventions and formulas", 1)[1]
