@@ -1,4 +1,6 @@
-"""The design report: real ``shaper report`` runs whose text layer carries the CLI's numbers."""
+"""The design report: ``shaper report`` runs whose text layer carries the CLI's numbers. The
+runs are ``core.cli.main`` in the test's process (``shaper_run_in_process``): the console
+script as a process of its own is the README's example's (tests/docs)."""
 import json
 import re
 import shutil
@@ -9,7 +11,7 @@ import unicodedata
 import numpy as np
 import pytest
 
-from cli_runner import shaper, shaper_run_in_process
+from cli_runner import shaper_run_in_process
 from core.course_design.positions import display_values
 from report_numbers import cli_values, column_text
 
@@ -121,7 +123,7 @@ def test_pdf_is_exactly_a4_on_every_page(reports):
     (DESIGN + ["--lang", "fr"], "--lang"),
 ])
 def test_bad_input_is_one_line(tmp_path, words, option):
-    result = shaper("report", *words, "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *words, "-o", tmp_path / "r.pdf")
     assert result.returncode == 2
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and option in lines[0]
@@ -129,7 +131,7 @@ def test_bad_input_is_one_line(tmp_path, words, option):
 
 
 def test_missing_output_folder(tmp_path):
-    result = shaper("report", *DESIGN, "-o", tmp_path / "nope" / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, "-o", tmp_path / "nope" / "r.pdf")
     assert result.returncode == 2 and "--output" in result.stderr
 
 
@@ -146,7 +148,7 @@ def test_bad_output_name_is_one_line_and_writes_nothing(tmp_path, name, extra, r
     (tmp_path / "sub").mkdir()
     before = sorted(p.name for p in tmp_path.rglob("*"))
     target = str(tmp_path / name) if name else ""
-    result = shaper("report", *DESIGN, *extra, "-o", target)
+    result = shaper_run_in_process("report", *DESIGN, *extra, "-o", target)
     assert result.returncode == 2, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("shaper: error: --output: ") and reason in lines[0]
@@ -208,7 +210,7 @@ def compared(tmp_path_factory):
         assert result.returncode == 0, result.stderr
         out[name] = folder / name
     table = shaper_run_in_process("library", "compare", "Classic", "rod 1.6", "no loads", "--file", design,
-                   "--rpm", SPEEDS[1], "--library", lib)
+                                  "--rpm", SPEEDS[1], "--library", lib)
     assert table.returncode == 0, table.stderr
     return out, table.stdout, lib, design
 
@@ -252,7 +254,7 @@ def test_comparison_in_html_and_its_title(compared):
 ])
 def test_bad_comparison_is_one_line(compared, tmp_path, words, option):
     _, _, lib, _ = compared
-    result = shaper("report", *DESIGN, *words, "--library", lib, "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, *words, "--library", lib, "-o", tmp_path / "r.pdf")
     assert result.returncode == 2, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith(f"shaper: error: {option}")
@@ -260,8 +262,8 @@ def test_bad_comparison_is_one_line(compared, tmp_path, words, option):
 
 
 def test_comparison_from_a_missing_library_names_it(tmp_path):
-    result = shaper("report", *DESIGN, "--compare", "a", "--library", tmp_path / "none.sqlite",
-                    "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, "--compare", "a", "--library", tmp_path / "none.sqlite",
+                                   "-o", tmp_path / "r.pdf")
     assert result.returncode == 2 and result.stderr.startswith("shaper: error: --library")
     assert not (tmp_path / "none.sqlite").exists() and not (tmp_path / "r.pdf").exists()
 
@@ -271,7 +273,7 @@ def test_cover_block_from_the_command_line(tmp_path):
     out = tmp_path / "r.pdf"
     result = shaper_run_in_process("report", *DESIGN, "--rpm", "40", "-o", out, "--student", "Li Ming",
                                    "--student-number", "2021-07", "--class", "ME 21", "--school", "SME",
-                    "--supervisor", "Prof. Wang", "--date", "2026-06-30")
+                                   "--supervisor", "Prof. Wang", "--date", "2026-06-30")
     assert result.returncode == 0, result.stderr
     first = squash(pdf_text(out).split("\f")[0])
     for text in ("Student Li Ming", "Student number 2021-07", "Class ME 21", "School SME",
@@ -284,7 +286,7 @@ def test_cover_block_from_the_command_line(tmp_path):
     (["--student", "a\nb"], "--student"), (["--class", "x" * 201], "--class"),
     (["--title", "a\tb"], "--title")])
 def test_bad_cover_text_is_one_line(tmp_path, words, option):
-    result = shaper("report", *DESIGN, *words, "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, *words, "-o", tmp_path / "r.pdf")
     assert result.returncode == 2
     assert result.stderr.startswith(f"shaper: error: {option}:") and result.stderr.count("\n") == 1
     assert not (tmp_path / "r.pdf").exists()
@@ -306,7 +308,7 @@ def test_schemes_state_their_scale_and_mark_theta(reports, name):
     text = squash(pdf_text(reports[name]))
     scales = re.findall(r"μ\s?l = (\d+(?:\.\d+)?) mm/mm \(1:(\d+(?:\.\d+)?)\)", text)
     assert len(scales) == 2 and scales[0] == scales[1] and scales[0][0] == scales[0][1]
-    theta = shaper("synth", *DESIGN).stdout.split("extreme-position angle θ")[1].split()[0]
+    theta = shaper_run_in_process("synth", *DESIGN).stdout.split("extreme-position angle θ")[1].split()[0]
     assert text.count(f"θ = {float(theta):.2f}°") == 2                 # one mark per scheme
 
 
