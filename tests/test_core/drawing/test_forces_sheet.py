@@ -19,6 +19,7 @@ from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize
 from core.linkage.kinematics import rpm_to_omega
 from sheet_checks import assert_laid_out
+from sweeps import examples
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
 ROD = synthesize(100.0, 1.46, 312.0, rod_ratio=0.3)
@@ -159,7 +160,8 @@ def test_chinese_labels_change_the_texts_only():
 finite = dict(allow_nan=False, allow_infinity=False)
 
 
-@settings(max_examples=25, deadline=None)
+@pytest.mark.slow       # a random sweep: each example lays out a whole kinetostatic sheet
+@settings(max_examples=examples(25), deadline=None)
 # A torque of 10^5 N·m: its tick label "-1.000e+05" stood outside the torque's area
 # (a chart's y labels had a fixed 21 mm; found by this test in a CI run).
 @example(crank=182.0, k=2.5, stretch=3.0, rod=0.5, work=0.0, back=0.0, size="A1", rpm=110.0)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from cli_runner import shaper_in_process
+from cli_runner import shaper_in_process, shaper_run_in_process
 from shaperapp.cam.tab import CamTab
 from shaperapp.report.dialog import export_report
 
@@ -31,14 +31,13 @@ def test_report_has_the_cam_of_the_tab(qtbot, model, tmp_path):
 
 
 def test_shaper_report_takes_the_design_files_cam(tmp_path):
-    from cli_runner import shaper
     from core.cam import CamInputs, Program
     from core.cam.file import cam_to_dict
     from core.files.io import save_design
     from core.linkage.spec import Spec
     inputs = CamInputs(arm_mm=160.0, program=Program(20.0, 70.0, 5.0, 80.0, "poly345", "cosine"))
     save_design(tmp_path / "d.json", Spec(), [40.0], 1.0, extra={"cam": cam_to_dict(inputs, None)})
-    run = shaper("report", "--design", tmp_path / "d.json", "-o", tmp_path / "r.html")
+    run = shaper_run_in_process("report", "--design", tmp_path / "d.json", "-o", tmp_path / "r.html")
     assert run.returncode == 0, run.stderr
     text = (tmp_path / "r.html").read_text(encoding="utf-8")
     status, out, err = shaper_in_process(

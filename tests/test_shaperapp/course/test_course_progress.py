@@ -108,7 +108,11 @@ def pdf_pixels(path) -> np.ndarray:
 @pytest.mark.slow          # the whole course twice, at A3 with DXF
 @pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
 def test_the_files_are_those_of_shaper_course_with_the_same_choices(window, gui, tmp_path):
+    """Also the one whole course the window exports in the suite (it was two, the other with
+    the options' defaults, for the suite's time): the report dialog's cover fields kept in
+    the settings are on the report and the sheets."""
     gui["chosen"] = CourseOptions("A3", True, 1)
+    window.settings.setValue("report/student", "Wang Wu")      # as the report dialog keeps it
     window.act_course.trigger()
     assert last_run(window).state == "done"
     assert gui["shown"] == []
@@ -117,7 +121,7 @@ def test_the_files_are_those_of_shaper_course_with_the_same_choices(window, gui,
     cli = tmp_path / "cli"
     # a process of its own, as the GUI's child is
     status, _, err = shaper_process("course", "--design", gui["path"], "--sheet", "A3", "--dxf",
-                                    "--rpm-index", "2", "-o", cli)
+                                    "--rpm-index", "2", "--student", "Wang Wu", "-o", cli)
     assert status == 0, err
     names = sorted(os.listdir(cli))
     assert sorted(os.listdir(gui["out"])) == names and len(names) == 9
@@ -135,3 +139,7 @@ def test_the_files_are_those_of_shaper_course_with_the_same_choices(window, gui,
             # window's grey axis text, found here and left as it was: its pixels differ
             assert name == "00-report.pdf" or (a == b).all(), name
     assert "60 r/min" in pdf_text(gui["out"] / "01-motion.pdf")
+    assert "Wang Wu" in pdf_text(gui["out"] / "01-motion.pdf")
+    assert "Wang Wu" in pdf_text(gui["out"] / "00-report.pdf")
+    assert "Feed cam" in " ".join(pdf_text(gui["out"] / "03-cam.pdf").split())
+    assert "Gear meshing" in " ".join(pdf_text(gui["out"] / "04-gear.pdf").split())

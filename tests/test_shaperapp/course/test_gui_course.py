@@ -1,16 +1,15 @@
-"""File › Export course design…: the folder dialog (patched), the files of ``shaper course``
-from the design on screen, the refusal, Cancel and a failed write, in messages."""
+"""File › Export course design…: the folder dialog (patched), the refusal, Cancel and a
+failed write, in messages. The files it writes, those of ``shaper course`` with the report's
+cover, are test_course_progress's (one whole course from the window for both)."""
 import os
 
 import pytest
 
 import export_faults
 from export_faults import in_child, last_run
-from language_checks import check_file_menu_entry, has_pdftotext, pdf_text
+from language_checks import check_file_menu_entry
 from PySide6.QtWidgets import QPushButton
 from shaperapp.widgets.export_process import ChildExport
-
-NAMES = ["00-report.pdf", "01-motion.pdf", "02-kinetostatic.pdf", "03-cam.pdf", "04-gear.pdf"]
 
 
 @pytest.fixture
@@ -72,19 +71,3 @@ def test_a_failed_write_names_the_file_and_the_files_before_it(window, answers, 
     assert os.listdir(out) == ["00-report.pdf"]
     assert len(shown) == 1 and "01-motion.pdf" in shown[0] and "disk is full" in shown[0]
     assert shown[0].endswith("The 1 files written before it are complete.")
-
-
-@pytest.mark.slow          # the whole course at A1 from the window
-@pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
-def test_export_writes_the_files_of_shaper_course_with_the_report_cover(window, answers):
-    out, shown = answers
-    window.settings.setValue("report/student", "Wang Wu")      # as the report dialog keeps it
-    window.act_course.trigger()
-    assert last_run(window).state == "done"
-    # the design on screen always has a gear pair (the Gear tab's, the default one here)
-    assert shown == []
-    assert sorted(os.listdir(out)) == NAMES
-    assert "Wang Wu" in pdf_text(out / "01-motion.pdf")
-    assert "Wang Wu" in pdf_text(out / "00-report.pdf")
-    assert "Feed cam" in " ".join(pdf_text(out / "03-cam.pdf").split())
-    assert "Gear meshing" in " ".join(pdf_text(out / "04-gear.pdf").split())

@@ -20,7 +20,7 @@ import pytest
 
 from core.drawing.sheet import text_width
 
-from tests.cli_runner import shaper
+from tests.cli_runner import shaper_run_in_process
 
 pytestmark = [pytest.mark.slow,
               pytest.mark.skipif(shutil.which("librecad") is None or shutil.which("pdftoppm") is None,
@@ -80,7 +80,7 @@ def cell(ink: np.ndarray, x0: float, x1: float, y: float, h: float) -> np.ndarra
 def sheets(tmp_path_factory):
     folder = tmp_path_factory.mktemp("librecad")
     for name, font in (("gb", "gb"), ("outline", "outline")):
-        done = shaper("drawing", *SHEET, "--cad-font", font, "-o", str(folder / f"{name}.dxf"))
+        done = shaper_run_in_process("drawing", *SHEET, "--cad-font", font, "-o", str(folder / f"{name}.dxf"))
         assert done.returncode == 0, done.stderr
     return texts(folder / "gb.dxf"), {name: printed(folder, name) for name in ("gb", "outline")}
 

@@ -8,7 +8,7 @@ from types import SimpleNamespace
 import ezdxf
 import pytest
 
-from cli_runner import shaper, shaper_in_process
+from cli_runner import shaper_in_process, shaper_run_in_process
 from sheet_checks import assert_pdf_sheet
 from core.cam import CamInputs, Program
 from core.cam.file import cam_to_dict
@@ -97,7 +97,8 @@ def test_a_cam_option_without_the_cam_sheet_is_refused(word, tmp_path):
 @pytest.mark.skipif(shutil.which("pdfinfo") is None, reason="poppler-utils not installed")
 def test_cli_pdf_is_the_paper_and_chinese_embeds_a_cjk_font(tmp_path):
     out = tmp_path / "凸轮.pdf"
-    result = shaper("drawing", *BLOCK, *CAM, "--content", "cam", "--sheet", "A2", "--lang", "zh", "-o", out)
+    result = shaper_run_in_process("drawing", *BLOCK, *CAM, "--content", "cam", "--sheet", "A2", "--lang", "zh",
+                                   "-o", out)
     assert result.returncode == 0, result.stderr
     text = assert_pdf_sheet(out, (594.0, 420.0))
     if text:

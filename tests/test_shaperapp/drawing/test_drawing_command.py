@@ -8,9 +8,9 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from cli_runner import shaper, shaper_in_process
+from cli_runner import shaper_in_process, shaper_run_in_process
 
-pytestmark = pytest.mark.slow   # real processes: left out of the quick run
+pytestmark = pytest.mark.slow   # whole sheets: left out of the quick run
 
 BLOCK = ["--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40"]
 ROD = ["--crank", "100", "--K", "1.46", "--stroke", "312", "--rod-ratio", "0.3", "--rpm", "40", "60"]
@@ -30,7 +30,7 @@ def test_pdf_page_is_the_paper_and_the_border_measures_true(size, mm, tmp_path):
     """The page size, and the border found in the page's pixels: its thick lines lie 25 mm
     (binding side) and c mm from the paper's edges, so a length on the page is paper mm."""
     out = tmp_path / "m.pdf"
-    result = shaper("drawing", *BLOCK, "--sheet", size, "-o", out)
+    result = shaper_run_in_process("drawing", *BLOCK, "--sheet", size, "-o", out)
     assert result.returncode == 0, result.stderr
     w, h = pdf_page_mm(out)
     assert abs(w - mm[0]) < 0.5 and abs(h - mm[1]) < 0.5
@@ -53,7 +53,7 @@ def test_chinese_sheet_embeds_a_cjk_font(tmp_path):
     if shutil.which("pdffonts") is None:
         pytest.skip("pdffonts not installed")
     out = tmp_path / "运动.pdf"
-    result = shaper("drawing", *ROD, "--lang", "zh", "--drawn-by", "张三", "-o", out)
+    result = shaper_run_in_process("drawing", *ROD, "--lang", "zh", "--drawn-by", "张三", "-o", out)
     assert result.returncode == 0, result.stderr
     fonts = subprocess.run(["pdffonts", str(out)], capture_output=True, text=True).stdout
     rows = [line for line in fonts.splitlines()[2:] if line.strip()]
@@ -69,7 +69,7 @@ def test_svg_is_in_mm_and_the_lever_measures_true(tmp_path):
     and the lever from O4 at the two limit positions: times the scale the caption states
     they are L1 and L3 long, and O2O4 is L2 (the numbers of shaper synth)."""
     out = tmp_path / "m.svg"
-    result = shaper("drawing", *BLOCK, "--sheet", "A2", "-o", out)
+    result = shaper_run_in_process("drawing", *BLOCK, "--sheet", "A2", "-o", out)
     assert result.returncode == 0, result.stderr
     root = ET.parse(out).getroot()
     assert root.get("width") == "594mm" and root.get("height") == "420mm"
@@ -106,7 +106,7 @@ def test_svg_is_in_mm_and_the_lever_measures_true(tmp_path):
 def test_dxf_written_and_measures_true(tmp_path):
     import ezdxf
     out = tmp_path / "m.dxf"
-    result = shaper("drawing", *ROD, "--lang", "zh", "-o", out)
+    result = shaper_run_in_process("drawing", *ROD, "--lang", "zh", "-o", out)
     assert result.returncode == 0, result.stderr
     doc = ezdxf.readfile(out)
     assert doc.header["$INSUNITS"] == 4
@@ -125,7 +125,8 @@ def test_user_text_stays_text_in_the_dxf_and_the_svg(tmp_path):
     import ezdxf
     title = '%%c50 <b>x</b> & "y" =1+1'
     for suffix in ("dxf", "svg"):
-        result = shaper("drawing", *ROD, "--sheet", "A3", "--title", title, "-o", tmp_path / f"t.{suffix}")
+        result = shaper_run_in_process("drawing", *ROD, "--sheet", "A3", "--title", title,
+                                       "-o", tmp_path / f"t.{suffix}")
         assert result.returncode == 0, result.stderr
     shown = [t.plain_text() for t in ezdxf.readfile(tmp_path / "t.dxf").modelspace().query("TEXT")]
     lines = {f"{a} {b}" for a, b in zip(shown, shown[1:])}       # on two lines in the title block

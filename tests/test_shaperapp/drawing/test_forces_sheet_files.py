@@ -5,7 +5,7 @@ import shutil
 import ezdxf
 import pytest
 
-from cli_runner import shaper
+from cli_runner import shaper, shaper_run_in_process
 from sheet_checks import assert_pdf_sheet
 from core.cli.cmd_dynamics import speed_rows
 from core.forces.masses import masses_for_design
@@ -21,7 +21,7 @@ LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--
 @pytest.mark.skipif(shutil.which("pdfinfo") is None, reason="poppler-utils not installed")
 def test_cli_pdf_is_the_paper_and_chinese_embeds_a_cjk_font(tmp_path):
     out = tmp_path / "动态静力.pdf"
-    result = shaper("drawing", *BLOCK, *LOADS, "--content", "forces", "--lang", "zh", "-o", out)
+    result = shaper_run_in_process("drawing", *BLOCK, *LOADS, "--content", "forces", "--lang", "zh", "-o", out)
     assert result.returncode == 0, result.stderr
     assert result.stdout.strip() == f"wrote {out} (A1, forces, PDF)"
     text = assert_pdf_sheet(out, (841.0, 594.0))

@@ -7,13 +7,13 @@ import math
 import re
 from typing import Sequence
 
-from cli_runner import shaper
+from cli_runner import shaper_run_in_process
 
 
 def cli_values(*command: str) -> list[str]:
     """Every number-bearing value the CLI prints as 'label  value', split at ' / ' (repeats
     kept; the rod side's "(trailing)" left out)."""
-    result = shaper(*command)
+    result = shaper_run_in_process(*command)
     assert result.returncode == 0, result.stderr
     values = []
     for line in result.stdout.splitlines():

@@ -17,7 +17,7 @@ from collections import Counter
 
 import pytest
 
-from cli_runner import shaper
+from cli_runner import shaper_run_in_process
 from report_numbers import cli_values, column_text
 
 pytestmark = [pytest.mark.slow,
@@ -32,7 +32,7 @@ LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70",
 def positions_values() -> list[str]:
     """Per speed, the ram's velocity and acceleration, the crank torque and the power at
     numbered position 4 and at the cut's start, as their columns print them."""
-    result = shaper("table", *DESIGN, "--rpm", *RPMS, *LOADS, "--json")
+    result = shaper_run_in_process("table", *DESIGN, "--rpm", *RPMS, *LOADS, "--json")
     records = json.loads(result.stdout)
     out = []
     for rpm in map(float, RPMS):
@@ -55,7 +55,8 @@ def expected() -> list[str]:
 @pytest.fixture(scope="module", params=["en", "zh"])
 def printed(request, tmp_path_factory):
     path = tmp_path_factory.mktemp("many") / f"{request.param}.pdf"
-    result = shaper("report", *DESIGN, "--rpm", *RPMS, *LOADS, "--lang", request.param, "-o", path)
+    result = shaper_run_in_process("report", *DESIGN, "--rpm", *RPMS, *LOADS, "--lang", request.param,
+                                   "-o", path)
     assert result.returncode == 0, result.stderr
     text = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True,
                           check=True).stdout

@@ -1,4 +1,6 @@
-"""The design report: real ``shaper report`` runs whose text layer carries the CLI's numbers."""
+"""The design report: ``shaper report`` runs whose text layer carries the CLI's numbers. The
+runs are ``core.cli.main`` in the test's process (``shaper_run_in_process``): the console
+script as a process of its own is the README's example's (tests/docs)."""
 import json
 import re
 import shutil
@@ -9,7 +11,7 @@ import unicodedata
 import numpy as np
 import pytest
 
-from cli_runner import shaper
+from cli_runner import shaper_run_in_process
 from core.course_design.positions import display_values
 from report_numbers import cli_values, column_text
 
@@ -28,7 +30,7 @@ def squash(text: str) -> str:
 
 def table_values() -> list[str]:
     """A sample of the positions table as the report must print it."""
-    result = shaper("table", *DESIGN, *SPEEDS, *LOADS, "--json")
+    result = shaper_run_in_process("table", *DESIGN, *SPEEDS, *LOADS, "--json")
     records = json.loads(result.stdout)
     columns = [k for k in records[0] if k not in ("position", "name")]
     data = np.array([[np.nan if r[c] is None else r[c] for c in columns] for r in records])
@@ -55,7 +57,8 @@ def reports(tmp_path_factory):
     folder = tmp_path_factory.mktemp("reports")
     out = {}
     for name, extra in (("en.pdf", []), ("zh.pdf", ["--lang", "zh"]), ("en.html", ["--html"])):
-        result = shaper("report", *DESIGN, *SPEEDS, *LOADS, "-o", folder / name, "--title", "Classic",
+        result = shaper_run_in_process("report", *DESIGN, *SPEEDS, *LOADS, "-o", folder / name,
+                                       "--title", "Classic",
                         *extra)
         assert result.returncode == 0, result.stderr
         assert result.stderr == ""
@@ -120,7 +123,7 @@ def test_pdf_is_exactly_a4_on_every_page(reports):
     (DESIGN + ["--lang", "fr"], "--lang"),
 ])
 def test_bad_input_is_one_line(tmp_path, words, option):
-    result = shaper("report", *words, "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *words, "-o", tmp_path / "r.pdf")
     assert result.returncode == 2
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and option in lines[0]
@@ -128,7 +131,7 @@ def test_bad_input_is_one_line(tmp_path, words, option):
 
 
 def test_missing_output_folder(tmp_path):
-    result = shaper("report", *DESIGN, "-o", tmp_path / "nope" / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, "-o", tmp_path / "nope" / "r.pdf")
     assert result.returncode == 2 and "--output" in result.stderr
 
 
@@ -145,7 +148,7 @@ def test_bad_output_name_is_one_line_and_writes_nothing(tmp_path, name, extra, r
     (tmp_path / "sub").mkdir()
     before = sorted(p.name for p in tmp_path.rglob("*"))
     target = str(tmp_path / name) if name else ""
-    result = shaper("report", *DESIGN, *extra, "-o", target)
+    result = shaper_run_in_process("report", *DESIGN, *extra, "-o", target)
     assert result.returncode == 2, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("shaper: error: --output: ") and reason in lines[0]
@@ -158,7 +161,7 @@ def test_the_name_chooses_the_type_and_a_save_keeps_the_files_mode(tmp_path):
     page = tmp_path / "R.HTM"
     page.write_text("old")
     page.chmod(0o640)
-    result = shaper("report", *DESIGN, "-o", page)
+    result = shaper_run_in_process("report", *DESIGN, "-o", page)
     assert result.returncode == 0, result.stderr
     assert "(HTML)" in result.stdout
     text = page.read_text(encoding="utf-8")
@@ -193,19 +196,21 @@ def compared(tmp_path_factory):
     lib = folder / "lib.sqlite"
     for name, words in (("Classic", DESIGN + SPEEDS + LOADS), ("rod 1.6", OTHER + LOADS),
                         ("no loads", ["--crank", "110", "--K", "1.4", "--stroke", "300"])):
-        assert shaper("library", "add", *words, "--name", name, "--library", lib).returncode == 0
+        assert shaper_run_in_process("library", "add", *words, "--name", name, "--library", lib).returncode == 0
     design = folder / "wide.shaper.json"
-    assert shaper("library", "add", "--crank", "90", "--K", "1.5", "--stroke", "320", "--name", "x",
-                  "--library", folder / "other.sqlite").returncode == 0
-    assert shaper("library", "export", "x", "-o", design, "--library", folder / "other.sqlite").returncode == 0
+    assert shaper_run_in_process("library", "add", "--crank", "90", "--K", "1.5", "--stroke", "320", "--name", "x",
+                                 "--library", folder / "other.sqlite").returncode == 0
+    assert shaper_run_in_process("library", "export", "x", "-o", design,
+                                 "--library", folder / "other.sqlite").returncode == 0
     out = {}
     for name, extra in (("en.pdf", []), ("zh.pdf", ["--lang", "zh"]), ("en.html", ["--html"])):
-        result = shaper("report", *DESIGN, *SPEEDS, *LOADS, "--title", "Classic", "--compare", "rod 1.6",
-                        "no loads", "--compare-file", design, "--library", lib, "-o", folder / name, *extra)
+        result = shaper_run_in_process("report", *DESIGN, *SPEEDS, *LOADS, "--title", "Classic", "--compare",
+                                       "rod 1.6", "no loads", "--compare-file", design, "--library", lib,
+                                       "-o", folder / name, *extra)
         assert result.returncode == 0, result.stderr
         out[name] = folder / name
-    table = shaper("library", "compare", "Classic", "rod 1.6", "no loads", "--file", design,
-                   "--rpm", SPEEDS[1], "--library", lib)
+    table = shaper_run_in_process("library", "compare", "Classic", "rod 1.6", "no loads", "--file", design,
+                                  "--rpm", SPEEDS[1], "--library", lib)
     assert table.returncode == 0, table.stderr
     return out, table.stdout, lib, design
 
@@ -249,7 +254,7 @@ def test_comparison_in_html_and_its_title(compared):
 ])
 def test_bad_comparison_is_one_line(compared, tmp_path, words, option):
     _, _, lib, _ = compared
-    result = shaper("report", *DESIGN, *words, "--library", lib, "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, *words, "--library", lib, "-o", tmp_path / "r.pdf")
     assert result.returncode == 2, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith(f"shaper: error: {option}")
@@ -257,8 +262,8 @@ def test_bad_comparison_is_one_line(compared, tmp_path, words, option):
 
 
 def test_comparison_from_a_missing_library_names_it(tmp_path):
-    result = shaper("report", *DESIGN, "--compare", "a", "--library", tmp_path / "none.sqlite",
-                    "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, "--compare", "a", "--library", tmp_path / "none.sqlite",
+                                   "-o", tmp_path / "r.pdf")
     assert result.returncode == 2 and result.stderr.startswith("shaper: error: --library")
     assert not (tmp_path / "none.sqlite").exists() and not (tmp_path / "r.pdf").exists()
 
@@ -266,9 +271,9 @@ def test_comparison_from_a_missing_library_names_it(tmp_path):
 @needs_pdftotext
 def test_cover_block_from_the_command_line(tmp_path):
     out = tmp_path / "r.pdf"
-    result = shaper("report", *DESIGN, "--rpm", "40", "-o", out, "--student", "Li Ming",
-                    "--student-number", "2021-07", "--class", "ME 21", "--school", "SME",
-                    "--supervisor", "Prof. Wang", "--date", "2026-06-30")
+    result = shaper_run_in_process("report", *DESIGN, "--rpm", "40", "-o", out, "--student", "Li Ming",
+                                   "--student-number", "2021-07", "--class", "ME 21", "--school", "SME",
+                                   "--supervisor", "Prof. Wang", "--date", "2026-06-30")
     assert result.returncode == 0, result.stderr
     first = squash(pdf_text(out).split("\f")[0])
     for text in ("Student Li Ming", "Student number 2021-07", "Class ME 21", "School SME",
@@ -281,7 +286,7 @@ def test_cover_block_from_the_command_line(tmp_path):
     (["--student", "a\nb"], "--student"), (["--class", "x" * 201], "--class"),
     (["--title", "a\tb"], "--title")])
 def test_bad_cover_text_is_one_line(tmp_path, words, option):
-    result = shaper("report", *DESIGN, *words, "-o", tmp_path / "r.pdf")
+    result = shaper_run_in_process("report", *DESIGN, *words, "-o", tmp_path / "r.pdf")
     assert result.returncode == 2
     assert result.stderr.startswith(f"shaper: error: {option}:") and result.stderr.count("\n") == 1
     assert not (tmp_path / "r.pdf").exists()
@@ -303,7 +308,7 @@ def test_schemes_state_their_scale_and_mark_theta(reports, name):
     text = squash(pdf_text(reports[name]))
     scales = re.findall(r"μ\s?l = (\d+(?:\.\d+)?) mm/mm \(1:(\d+(?:\.\d+)?)\)", text)
     assert len(scales) == 2 and scales[0] == scales[1] and scales[0][0] == scales[0][1]
-    theta = shaper("synth", *DESIGN).stdout.split("extreme-position angle θ")[1].split()[0]
+    theta = shaper_run_in_process("synth", *DESIGN).stdout.split("extreme-position angle θ")[1].split()[0]
     assert text.count(f"θ = {float(theta):.2f}°") == 2                 # one mark per scheme
 
 
@@ -331,7 +336,8 @@ def test_scheme_marks_sit_on_the_design(qtbot):
 @pytest.mark.parametrize("language", ["en", "zh"])
 def test_formulas_are_typeset(tmp_path, language):
     out = tmp_path / "r.html"
-    assert shaper("report", *DESIGN, "--rpm", "40", "--lang", language, "--html", "-o", out).returncode == 0
+    assert shaper_run_in_process("report", *DESIGN, "--rpm", "40", "--lang", language, "--html",
+                                 "-o", out).returncode == 0
     page = out.read_text(encoding="utf-8")
     formulas = page[page.index("<h2>8 ") if language == "en" else page.index("<h2>8"):]
     for marked in ("a<sup>k</sup><sub>A4A3</sub>", "v<sub>A4</sub>", "ω<sub>4</sub>", "S<sub>4</sub>", "J<sub>F</sub>",
@@ -350,7 +356,7 @@ def test_formulas_are_typeset(tmp_path, language):
 def test_formulas_state_the_guide_rule_of_the_design(tmp_path, design, says, not_says):
     """The formulas section printed the chord rule for every design, a sagitta one too."""
     out = tmp_path / "r.html"
-    run = shaper("report", *design, "--rpm", "40", "-o", str(out))
+    run = shaper_run_in_process("report", *design, "--rpm", "40", "-o", str(out))
     assert run.returncode == 0, run.stderr
     html = out.read_text(encoding="utf-8")
     formulas = html.split("Conventions and formulas", 1)[1]

@@ -8,7 +8,7 @@ import subprocess
 
 import pytest
 
-from cli_runner import shaper
+from cli_runner import shaper_run_in_process
 from language_checks import (control_characters, english_words, han, has_pdftotext, pdf_text,
                              radicals)
 
@@ -37,8 +37,8 @@ def report(tmp_path_factory):
     save_design(folder / "d.json", Spec(), [40.0, 60.0], 1.0,
                 extra={"cam": cam_to_dict(cam, None), "forces": masses_to_dict(loads),
                        "gear": {"z1": 10, "z2": 14, "module_mm": 5.0}})
-    run = shaper("report", "--design", folder / "d.json", "--lang", "zh", "--title", "牛头刨床",
-                 "-o", folder / "zh.pdf")
+    run = shaper_run_in_process("report", "--design", folder / "d.json", "--lang", "zh", "--title", "牛头刨床",
+                                "-o", folder / "zh.pdf")
     assert run.returncode == 0, run.stderr
     return folder / "zh.pdf"
 

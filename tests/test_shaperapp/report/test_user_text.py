@@ -10,7 +10,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from cli_runner import shaper, shaper_in_process
+from cli_runner import shaper_in_process, shaper_run_in_process
 from core.files.io import FORMULA_LEADS, csv_text, snap_zeros, table_csv
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
@@ -47,15 +47,15 @@ def hostile(tmp_path_factory):
     folder = tmp_path_factory.mktemp("hostile")
     lib = folder / "lib.sqlite"
     for name, k in ((SCRIPT, "1.6"), (FORMULA, "1.5")):
-        added = shaper("library", "add", "--crank", "100", "--K", k, "--stroke", "300",
-                       "--rpm", "40", *LOADS, "--name", name, "--library", lib)
+        added = shaper_run_in_process("library", "add", "--crank", "100", "--K", k, "--stroke", "300",
+                                      "--rpm", "40", *LOADS, "--name", name, "--library", lib)
         assert added.returncode == 0, added.stderr
     design = folder / f"{FILE}.shaper.json"
-    assert shaper("library", "export", SCRIPT, "-o", design, "--library", lib).returncode == 0
+    assert shaper_run_in_process("library", "export", SCRIPT, "-o", design, "--library", lib).returncode == 0
     out = {}
     for target, title in (("r.html", []), ("r.pdf", []), ("t.html", ["--title", BOLD])):
-        done = shaper("report", "--design", design, "--rpm", "40", *LOADS, *title, *COVER,
-                      "--compare", SCRIPT, FORMULA, "--library", lib, "-o", folder / target)
+        done = shaper_run_in_process("report", "--design", design, "--rpm", "40", *LOADS, *title, *COVER,
+                                     "--compare", SCRIPT, FORMULA, "--library", lib, "-o", folder / target)
         assert done.returncode == 0, done.stderr
         out[target] = folder / target
     return out, lib
