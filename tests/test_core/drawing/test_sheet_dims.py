@@ -236,3 +236,12 @@ def test_text_crossings_with_lines_indexed_counts_as_every_segment_tried(segs, x
     else:
         every = int(sd.crossing(np.array([text.box()]), segs).sum())
     assert sd.text_crossings(text, sd.Lines(segs)) == every == sd.text_crossings(text, segs)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.floats(-1e3, 1e3), min_size=2, max_size=2),
+       st.lists(st.floats(-1e3, 1e3), min_size=2, max_size=2), st.sampled_from([0.0, 1e-9, 1e-7, 1e-3]))
+def test_close_points_are_what_numpy_allclose_says(a, b, nudge):
+    b = [b[0], b[1]] if nudge == 0.0 else [a[0] + nudge * a[0], a[1] - nudge]
+    assert sd._close(a, b) == bool(np.allclose(a, b))
+    assert sd._close(a, [math.inf, b[1]]) == bool(np.allclose(a, [math.inf, b[1]]))
