@@ -61,14 +61,13 @@ def differs(old: Path, new: Path) -> str:
         if STAMPS.sub(b"", old.read_bytes()) == STAMPS.sub(b"", new.read_bytes()):
             return ""
         a, b = pdf_text(old).split("<page "), pdf_text(new).split("<page ")
-        if a != b:
-            changed = [i for i, (p, q) in enumerate(zip(a, b)) if p != q and i]
-            return f"text or its positions on pages {changed} ({len(a) - 1} against {len(b) - 1} pages)"
+        texts = [i for i, (p, q) in enumerate(zip(a, b)) if p != q and i]
         a, b = pdf_pages(old), pdf_pages(new)
         if len(a) != len(b):
             return f"{len(a)} against {len(b)} pages"
-        changed = [i + 1 for i, (p, q) in enumerate(zip(a, b)) if p.shape != q.shape or (p != q).any()]
-        return f"pixels of pages {changed}" if changed else ""
+        pixels = [i + 1 for i, (p, q) in enumerate(zip(a, b)) if p.shape != q.shape or (p != q).any()]
+        return (f"text or its positions on pages {texts}, pixels on pages {pixels}"
+                if texts or pixels else "")
     if suffix == ".dxf":
         a, b = dxf_entities(old), dxf_entities(new)
         if a == b:
