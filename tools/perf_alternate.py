@@ -13,6 +13,9 @@ with the work tree's way of measuring).
 
 Example (issue 24): ``python tools/perf_alternate.py b1fd494 10 -- -m core curves
 --crank 100 --K 1.4 --stroke 300 --rpm 40 60 --step 0.01 --csv out.csv``.
+"{run}" in ARGS is replaced by a number of its own for every run (a command that skips
+work already done, such as ``shaper class``, then writes into a fresh folder each time):
+``… -- -m core class --tasks tasks.csv --base base.json -o class-{run} --jobs 2``.
 Only a developer's tool.
 """
 from __future__ import annotations
@@ -59,16 +62,17 @@ def main(argv: list[str]) -> int:
             env["XDG_DATA_HOME"] = env["XDG_CONFIG_HOME"]
             env.pop("PYTHONDONTWRITEBYTECODE", None)
             envs[name] = env
-            subprocess.run([sys.executable, *args], env=env, cwd=scratch, capture_output=True)
+            subprocess.run([sys.executable, *_numbered(args, f"warm-{len(envs)}")], env=env, cwd=scratch,
+                           capture_output=True)
         whole: dict[str, list[float]] = {name: [] for name in trees}
         cpu: dict[str, list[float]] = {name: [] for name in trees}
         painted: dict[str, list[float]] = {name: [] for name in trees}
-        for _ in range(rounds):
-            for name in trees:
+        for turn in range(rounds):
+            for k, name in enumerate(trees):
                 used = resource.getrusage(resource.RUSAGE_CHILDREN)
                 start = time.perf_counter()
-                done = subprocess.run([sys.executable, *args], env=envs[name], cwd=scratch,
-                                      capture_output=True, text=True)
+                done = subprocess.run([sys.executable, *_numbered(args, f"{turn}-{k}")], env=envs[name],
+                                      cwd=scratch, capture_output=True, text=True)
                 whole[name].append(time.perf_counter() - start)
                 after = resource.getrusage(resource.RUSAGE_CHILDREN)
                 cpu[name].append(after.ru_utime + after.ru_stime - used.ru_utime - used.ru_stime)
@@ -86,6 +90,11 @@ def main(argv: list[str]) -> int:
                      f"median {statistics.median(painted[name]):.3f} s")
         print(line + f" ({rounds} runs each, alternating)")
     return 0
+
+
+def _numbered(args: list[str], run: str) -> list[str]:
+    """``args`` with "{run}" replaced by ``run``."""
+    return [a.replace("{run}", run) for a in args]
 
 
 if __name__ == "__main__":

@@ -51,13 +51,14 @@ class _Placed:
         self.dims: list[sd.Dimension] = []
         self.defects = 0.0         # the placed texts' crossings and hits, as costed
         self.segs = strokes(self.drawn)        # the circles too (the crank's centre circle)
+        self.lines = sd.Lines(self.segs)
 
     def cost(self, dim: sd.Dimension, extra: float = 0.0) -> float:
         box = dim.text.box()
         hits = sum(boxes_meet(box, d.text.box()) for d in self.dims)
-        own = strokes([*dim.parts, *dim.kept])      # its lines through a text placed before
+        own = sd.Lines(strokes([*dim.parts, *dim.kept]))      # its lines through a text placed before
         hits += sum(sd.text_crossings(d.text, own) > 0 for d in self.dims)
-        return 1000.0 * hits + 10.0 * sd.text_crossings(dim.text, self.segs) + extra
+        return 1000.0 * hits + 10.0 * sd.text_crossings(dim.text, self.lines) + extra
 
     def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
         """The candidate whose text meets no placed text, whose lines cross none, and whose
@@ -113,6 +114,7 @@ class _Placed:
         self.defects += self.cost(best)
         self.dims.append(best)
         self.segs = np.vstack([self.segs, strokes([*best.parts, *best.kept])])
+        self.lines = sd.Lines(self.segs)
         return best
 
 

@@ -139,6 +139,14 @@ class Text:
         dx, dy = self._start()
         below = max([0.25 * h] + [drop + 0.25 * size for _, size, drop in self._parts()])
         above = max([1.1 * h] + [1.1 * size - drop for _, size, drop in self._parts()])
+        if not self.rotation and not any(map(math.isnan, (dx, dy, w, below, above, *self.position))):
+            # upright: the corners' extent in plain floats, the same sums numpy makes (a
+            # label search asks for the boxes of thousands of candidates; numpy's overhead
+            # on four points was most of it)
+            x, y = self.position
+            xs, ys = (float(dx + x), float((dx + w) + x)), (float((dy - below) + y), float((dy + above) + y))
+            upright = (min(xs), min(ys), max(xs), max(ys))
+            return upright, upright
         corners = np.array([[dx, dy - below], [dx + w, dy - below],
                             [dx + w, dy + above], [dx, dy + above]])
         at = np.asarray(self.position)

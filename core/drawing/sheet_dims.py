@@ -134,11 +134,19 @@ def aligned(p1: Pair, p2: Pair, offset: float, name: str, factor: float, clear: 
     u = (a2 - a1) / float(np.hypot(*(a2 - a1)))
     n = np.array([-u[1], u[0]]) * offset
     value = factor * float(np.hypot(*(a2 - a1)))
-    swapped = not np.allclose(q2, np.asarray(p2[:2], float))
+    swapped = not _close(q2, p2[:2])
     parts, kept, text = _straight(a1, a2, a1 + n, a2 + n, name, value, 0 if swapped else 1, clear,
                                   outside, below, 1.0 - along if swapped else along, height)
     return Dimension("aligned", name, (q1, q2), factor, value, tuple(parts), text, tuple(kept),
                      offset=offset, height=height)
+
+
+def _close(a: Sequence[float], b: Sequence[float]) -> bool:
+    """``np.allclose(a, b)`` of two points in plain floats (its test: |a − b| ≤ 1e-8 + 1e-5·|b|
+    with b finite, or a = b): the dimension search builds hundreds of candidates, and
+    numpy's overhead on two numbers was a fifth of building one."""
+    pairs = [(float(p), float(q)) for p, q in zip(a, b, strict=True)]
+    return all((abs(p - q) <= 1e-8 + 1e-5 * abs(q) and math.isfinite(q)) or p == q for p, q in pairs)
 
 
 def led(dim: Dimension, corner: Pair, height: float = TEXT_MM) -> Dimension:
@@ -231,17 +239,47 @@ def segments(items: Sequence[Item]) -> np.ndarray:
     return np.vstack(out) if out else np.zeros((0, 4))
 
 
-def text_crossings(text: Text, segs: np.ndarray) -> int:
+class Lines:
+    """Segments (m, 4) with each one's extent and their whole extent, computed once: the
+    dimension search counts the crossings of hundreds of candidate texts with the same
+    lines, and most texts are nowhere near most of them."""
+
+    def __init__(self, segs: np.ndarray) -> None:
+        self.segs = np.asarray(segs, float).reshape(-1, 4)
+        self.low = np.minimum(self.segs[:, :2], self.segs[:, 2:])      # each one's min x, min y
+        self.high = np.maximum(self.segs[:, :2], self.segs[:, 2:])
+        whole = (*self.low.min(axis=0), *self.high.max(axis=0)) if len(self.segs) else ()
+        # (a NaN point makes no whole extent: every segment is then tried)
+        self.whole = tuple(map(float, whole)) if np.all(np.isfinite(whole)) else ()
+
+    def near(self, box: Box, spare: float) -> np.ndarray | None:
+        """Which segments' extents overlap ``box`` grown by ``spare`` (strictly, as
+        :func:`crossing` asks); None when the whole extent does not, so none does."""
+        x0, y0, x1, y1 = box
+        w = self.whole
+        if w and not (w[0] < x1 + spare and w[2] > x0 - spare and w[1] < y1 + spare and w[3] > y0 - spare):
+            return None
+        return ((self.low[:, 0] < x1 + spare) & (self.high[:, 0] > x0 - spare)
+                & (self.low[:, 1] < y1 + spare) & (self.high[:, 1] > y0 - spare))
+
+
+def text_crossings(text: Text, segs: np.ndarray | Lines) -> int:
     """How many of ``segs`` cross ``text``, in its own (rotated) frame: its box, not the
-    larger upright box around it."""
-    if not text.rotation or segs.size == 0:
-        return crossings(text.box(), segs)
+    larger upright box around it. ``segs`` as :class:`Lines` where many texts are tried
+    against the same lines."""
+    lines = segs if isinstance(segs, Lines) else Lines(segs)
+    if not len(lines.segs):
+        return 0
+    if not text.rotation:
+        box = text.box()
+        near = lines.near(box, 0.0)        # a segment apart from the box never crosses it
+        return 0 if near is None else crossings(box, lines.segs[near])
     # only the segments near the rotated box can cross it (1 mm spare, far above rounding):
     # the dimension search asks this of every line on the sheet for hundreds of candidates
-    x0, y0, x1, y1 = text.box()
-    near = ((np.minimum(segs[:, 0], segs[:, 2]) < x1 + 1.0) & (np.maximum(segs[:, 0], segs[:, 2]) > x0 - 1.0)
-            & (np.minimum(segs[:, 1], segs[:, 3]) < y1 + 1.0) & (np.maximum(segs[:, 1], segs[:, 3]) > y0 - 1.0))
-    segs = segs[near]
+    near = lines.near(text.box(), 1.0)
+    if near is None:
+        return 0
+    segs = lines.segs[near]
     t = math.radians(text.rotation)
     turn = np.array([[math.cos(t), math.sin(t)], [-math.sin(t), math.cos(t)]])     # by −rotation
     o = np.asarray(text.position, float)

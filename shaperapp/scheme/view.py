@@ -14,7 +14,7 @@ and its export dialog (whose SVG export fails on recent Qt) are not offered.
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
+from PySide6.QtCore import QEvent, QPointF, QRectF, Qt, QTimer
 from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
@@ -311,8 +311,12 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._move(self._model.angle_index)
 
     def _precompute(self) -> None:
-        """A few more frames' labels placed while idle (see PRECOMPUTE_CHUNK)."""
-        if self._geometry is None or self._stale or not self.isVisible():
+        """A few more frames' labels placed while idle (see PRECOMPUTE_CHUNK). Not for a
+        scheme that is never on screen (the report's, drawn offscreen and exported at two
+        positions): it never animates, and the report's later event processing ran these
+        searches for frames nobody sees (a sixth of the report's figures' time)."""
+        if (self._geometry is None or self._stale or not self.isVisible()
+                or self.testAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)):
             return
         if self._labels.precompute(PRECOMPUTE_CHUNK, self._model.angle_index):
             self._precompute_timer.start()

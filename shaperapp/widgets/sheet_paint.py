@@ -11,6 +11,8 @@ estimate of it: the layout's no-overlap guarantee holds on paper too.
 """
 from __future__ import annotations
 
+import numpy as np
+from pyqtgraph.functions import create_qpolygonf, ndarray_from_qpolygonf
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QFontMetricsF, QPainter, QPainterPath, QPen, QPolygonF
 
@@ -66,7 +68,7 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en", svg: bool
             painter.setBrush(QBrush(INK) if item.filled else Qt.BrushStyle.NoBrush)
             painter.drawEllipse(QPointF(item.center[0], height - item.center[1]), item.radius, item.radius)
         elif isinstance(item, Polyline):
-            poly = QPolygonF([QPointF(float(x), height - float(y)) for x, y in item.points])
+            poly = _polygon(item.points, height)
             if item.filled:
                 path = QPainterPath()
                 path.addPolygon(poly)
@@ -77,6 +79,19 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en", svg: bool
                 painter.drawPolygon(poly)
             else:
                 painter.drawPolyline(poly)
+
+
+def _polygon(points, height: float) -> QPolygonF:
+    """``points`` (paper mm, y up) as a polygon in the painter's y-down mm, filled through
+    numpy (pyqtgraph's helpers): a QPointF made per point was most of painting a sheet's
+    curves. The same doubles as ``QPointF(x, height - y)``."""
+    pts = np.asarray(points, dtype=float).reshape(-1, 2)
+    poly = create_qpolygonf(len(pts))
+    if len(pts):
+        out = ndarray_from_qpolygonf(poly)
+        out[:, 0] = pts[:, 0]
+        out[:, 1] = height - pts[:, 1]
+    return poly
 
 
 def _drawn_width(item: Text, metrics: QFontMetricsF, cap: float) -> tuple[float, float]:

@@ -206,3 +206,22 @@ def test_dxf_texts_carry_the_gb_width_factor(tmp_path):
     save_sheet_dxf(motion_sheet(BLOCK, 40.0, paper("A3")).sheet, path)
     widths = {e.dxf.width for e in ezdxf.readfile(path).modelspace().query("TEXT")}
     assert widths == {TEXT_WIDTH} == {0.7}
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(-500.0, 500.0), st.floats(-500.0, 500.0), st.sampled_from([1.8, 2.5, 3.5, 5.0]),
+       st.sampled_from(["lb", "cm", "rt", "lm"]), st.sampled_from([(), ((1, 2),)]))
+def test_an_upright_texts_box_is_its_corners_extent(x, y, height, align, subscripts):
+    """The box of an unrotated text (plain floats) is the extent numpy takes of its four
+    corners, to the last bit: the label searches compare these boxes."""
+    text = Text("L3 = 5", (x, y), height, align, subscripts=subscripts)
+    w = text.width
+    dx = {"l": 0.0, "c": -w / 2.0, "r": -w}[align[0]]
+    dy = {"b": 0.0, "m": -height / 2.0, "t": -height}[align[1]]
+    parts = text._parts()
+    below = max([0.25 * height] + [drop + 0.25 * size for _, size, drop in parts])
+    above = max([1.1 * height] + [1.1 * size - drop for _, size, drop in parts])
+    corners = np.array([[dx, dy - below], [dx + w, dy - below], [dx + w, dy + above], [dx, dy + above]])
+    corners = corners + np.asarray((x, y))
+    want = (corners[:, 0].min(), corners[:, 1].min(), corners[:, 0].max(), corners[:, 1].max())
+    assert text.box() == text.upright_box() == tuple(map(float, want))

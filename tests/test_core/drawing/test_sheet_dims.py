@@ -216,3 +216,32 @@ def test_the_sheet_dxf_header_draws_dimension_texts_at_the_sheets_height():
     doc = ezdxf.read(io.StringIO(dxf_text(sheet_document(sheet))))
     assert doc.header["$DIMTXT"] == pytest.approx(sd.TEXT_MM)
     assert doc.dimstyles.get("GB_MM").dxf.dimtxt == pytest.approx(sd.TEXT_MM)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(*[st.floats(0.0, 60.0)] * 4), min_size=0, max_size=40),
+       st.floats(0.0, 60.0), st.floats(0.0, 60.0), st.sampled_from([0.0, 30.0, 90.0, -47.5]),
+       st.sampled_from(["lb", "cm", "rt"]))
+def test_text_crossings_with_lines_indexed_counts_as_every_segment_tried(segs, x, y, rotation, align):
+    """Lines (the extents computed once, the segments apart from the text skipped) counts
+    what trying every segment counts: the rotated text's crossings in its own frame."""
+    text = Text("L3 = 518.1", (x, y), 3.5, align, rotation)
+    segs = np.array(segs, float).reshape(-1, 4)
+    if rotation:
+        t = math.radians(rotation)
+        turn = np.array([[math.cos(t), math.sin(t)], [-math.sin(t), math.cos(t)]])
+        o = np.array([x, y])
+        local = np.hstack([(segs[:, :2] - o) @ turn.T + o, (segs[:, 2:] - o) @ turn.T + o])
+        every = int(sd.crossing(np.array([text.upright_box()]), local).sum())
+    else:
+        every = int(sd.crossing(np.array([text.box()]), segs).sum())
+    assert sd.text_crossings(text, sd.Lines(segs)) == every == sd.text_crossings(text, segs)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.floats(-1e3, 1e3), min_size=2, max_size=2),
+       st.lists(st.floats(-1e3, 1e3), min_size=2, max_size=2), st.sampled_from([0.0, 1e-9, 1e-7, 1e-3]))
+def test_close_points_are_what_numpy_allclose_says(a, b, nudge):
+    b = [b[0], b[1]] if nudge == 0.0 else [a[0] + nudge * a[0], a[1] - nudge]
+    assert sd._close(a, b) == bool(np.allclose(a, b))
+    assert sd._close(a, [math.inf, b[1]]) == bool(np.allclose(a, [math.inf, b[1]]))

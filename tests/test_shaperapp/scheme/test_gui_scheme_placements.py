@@ -34,3 +34,27 @@ def test_a_scheme_never_shown_places_its_labels_when_read_back(qtbot):
         scheme.plot_widget().getPlotItem().getViewBox().viewRange()[1]
     for l, r, b, t in boxes.values():     # placed inside the view, not left at the origin
         assert left <= l < r <= right and bottom <= b < t <= top
+
+
+def test_an_offscreen_scheme_places_no_frames_while_idle(qtbot, monkeypatch):
+    """The report's scheme (drawn offscreen, exported at its two limit positions) never
+    animates: its idle placement of every frame's labels only cost the class run time."""
+    from shaperapp.scheme import view
+    from shaperapp.scheme.view import SchemeWidget
+    from PySide6.QtCore import Qt
+    frames = []
+    real = LabelLayout.precompute
+    monkeypatch.setattr(LabelLayout, "precompute", lambda self, *a: frames.append(a) or real(self, *a))
+    scheme = SchemeWidget(DesignModel())
+    qtbot.addWidget(scheme)
+    scheme.setAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)
+    scheme.resize(800, 600)
+    scheme.show()
+    assert set(scheme.dimension_label_boxes()) >= {"L1", "H"}
+    qtbot.wait(4 * view.PRECOMPUTE_PAUSE_MS)
+    assert frames == []
+    shown = SchemeWidget(DesignModel())           # the window's scheme does place them while idle
+    qtbot.addWidget(shown)
+    shown.resize(800, 600)
+    shown.show()
+    qtbot.waitUntil(lambda: len(frames) > 0, timeout=20 * view.PRECOMPUTE_PAUSE_MS)
