@@ -19,7 +19,6 @@ from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.image_export import export_scene, render_scene, scene_svg
 from shaperapp.widgets.view_parts import fill_speed_combo
 
 from .controls import SchemeControls
@@ -222,12 +221,14 @@ class SchemeWidget(SchemeReadBack, QWidget):
         """Write the sketch as PNG (at least 1600 px wide), another raster type Qt writes,
         or SVG, chosen by the suffix. ValueError for an unknown type, OSError for a missing
         or unwritable folder; nothing is written then."""
+        from shaperapp.widgets.image_export import export_scene   # QtSvg: not before the first paint
         self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         export_scene(self._plot.scene(), source, path, self.tr("Shaper mechanism"), WHITE)
 
     def svg_bytes(self) -> bytes:
         """The SVG :meth:`export_image` writes, in memory (for the report)."""
+        from shaperapp.widgets.image_export import scene_svg
         self._catch_up()
         return scene_svg(self._plot.scene(), self._plot.getPlotItem().sceneBoundingRect(),
                          self.tr("Shaper mechanism"), WHITE)
@@ -241,6 +242,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
 
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the sketch as shown into ``target`` of any QPainter (vector output)."""
+        from shaperapp.widgets.image_export import render_scene
         self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         render_scene(self._plot.scene(), source, painter, target, WHITE)
