@@ -120,14 +120,12 @@ def _import_engine_first() -> None:
     to see whether it uses PySide's ``__feature__`` switches; numpy's and core's
     hundred-odd modules imported before it skip that."""
     import core.cam.defaults  # noqa: F401  (the cam form's defaults; the cam itself on the tab's first visit)
-    import core.files.dynamics_io  # noqa: F401
     import core.base.figure_text  # noqa: F401  (the Results panel's one precision per figure)
     import core.forces.flywheel  # noqa: F401
     import core.gear.file  # noqa: F401  (the gear's model, which Save writes)
     import core.gear.pair  # noqa: F401  (its default pair)
     import core.files.io  # noqa: F401  (core, numpy, the design files)
     import core.linkage.metrics  # noqa: F401  (the results panel's cycle figures)
-    import core.forces.polygons  # noqa: F401
 
 
 def _when_painted(window, callback) -> None:

@@ -11,7 +11,6 @@ import os
 from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
-from core.files.dynamics_io import dynamics_csv
 from core.files.design_file import PART_KEYS
 from core.base.errors import DesignError, FileFormatError
 from core.files.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
@@ -80,6 +79,7 @@ class Document(QObject):
 
     def export_forces_csv_to(self, path: str) -> bool:
         """Torque, power and joint forces in the format of ``shaper dynamics --csv``."""
+        from core.files.dynamics_io import dynamics_csv     # not imported before the first paint
         return self._write(path, dynamics_csv(self._model.dynamics))
 
     def export_scheme_dxf_to(self, path: str) -> bool:

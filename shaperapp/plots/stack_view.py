@@ -11,8 +11,6 @@ from PySide6.QtCore import QCoreApplication, QEvent, QRectF
 from PySide6.QtGui import QColor, QPainter
 from PySide6.QtWidgets import QWidget
 
-from shaperapp.widgets.image_export import export_scene, render_scene, scene_svg
-
 from .stack import PlotStack
 
 WHITE = QColor("#ffffff")
@@ -45,16 +43,19 @@ class StackView(QWidget):
     def export_image(self, path: str) -> None:
         """Write the shown plots to ``path``: SVG for ``.svg``, else a raster image (PNG …)
         at least 1600 px wide; ValueError for an unknown type, OSError for a bad folder."""
+        from shaperapp.widgets.image_export import export_scene   # QtSvg: not before the first paint
         scene, rect, title, caching_off = self._stack.export_view()
         export_scene(scene, rect, path, title, WHITE, caching_off)
 
     def svg_bytes(self) -> bytes:
         """The SVG :meth:`export_image` writes, in memory."""
+        from shaperapp.widgets.image_export import scene_svg
         scene, rect, title, caching_off = self._stack.export_view()
         return scene_svg(scene, rect, title, WHITE, caching_off)
 
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the shown plots into ``target`` of any QPainter (vector output)."""
+        from shaperapp.widgets.image_export import render_scene
         scene, rect, _title, caching_off = self._stack.export_view()
         render_scene(scene, rect, painter, target, WHITE, caching_off)
 

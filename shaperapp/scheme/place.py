@@ -321,13 +321,24 @@ class Raster:
         np.cumsum(table, axis=0, out=table)
 
     def _burn_samples(self, start: np.ndarray, d: np.ndarray, count: np.ndarray) -> None:
-        """Mark the cells of ``count`` samples along each segment ``start`` + t·``d``."""
-        first = np.repeat(np.cumsum(count) - count, count)
-        t = (np.arange(count.sum()) - first) / np.repeat(np.maximum(count - 1, 1), count)
-        pts = np.repeat(start, count, axis=0) + t[:, None] * np.repeat(d, count, axis=0)
-        ix = np.clip(((pts[:, 0] - self.left) / self.cell).astype(int), 0, self.nx - 1)
-        iy = np.clip(((pts[:, 1] - self.bottom) / self.cell).astype(int), 0, self.ny - 1)
-        self._grid[iy, ix] = True
+        """Mark the cells of ``count`` samples along each segment ``start`` + t·``d``.
+
+        One axis at a time and in place: the same float operations as ``start + t·d`` on
+        (n, 2) arrays (sums and products commute exactly), so the same cells, with fewer
+        and smaller temporaries: the window's first label search burns about 500 000
+        samples, and this took 0.15 s of its start at load 6 (issue 43 item 5)."""
+        t = np.arange(count.sum(), dtype=float)
+        t -= np.repeat(np.cumsum(count) - count, count)
+        t /= np.repeat(np.maximum(count - 1, 1), count)
+        cells = []
+        for axis, origin, n in ((0, self.left, self.nx), (1, self.bottom, self.ny)):
+            v = np.repeat(d[:, axis], count)
+            v *= t
+            v += np.repeat(start[:, axis], count)
+            v -= origin
+            v /= self.cell
+            cells.append(np.clip(v.astype(int), 0, n - 1))
+        self._grid[cells[1], cells[0]] = True
 
     def copy_with(self, ends: np.ndarray) -> "Raster":
         """A raster of these lines and ``ends``."""

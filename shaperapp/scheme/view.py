@@ -19,7 +19,6 @@ from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.image_export import export_scene, render_scene, scene_svg
 from shaperapp.widgets.view_parts import fill_speed_combo
 
 from .controls import SchemeControls
@@ -53,6 +52,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._labels_stale = False                 # placing them waits until shown or read back
         self._placing_soon = False                 # a rebuild or placement under way places them at its end
         self._forces_stale = False
+        self._painted = False                      # the idle precompute waits for the first paint
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._catch_up)
         self._precompute_timer = QTimer(self, singleShot=True, interval=PRECOMPUTE_PAUSE_MS)
@@ -155,7 +155,17 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._labels_stale = False
         self._placed_view = key
         self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
-        self._precompute_timer.start()
+        if self._painted:
+            self._precompute_timer.start()
+
+    def paintEvent(self, event) -> None:
+        """The first paint starts the idle precompute of the frames' labels. Why not at
+        ``show``: a chunk that came due while the window was still being shown ran before
+        its first paint (0.2 s of a 6.4 s start at load 7, issue 43 item 5)."""
+        super().paintEvent(event)
+        if not self._painted:
+            self._painted = True
+            self._precompute_timer.start()
 
     def _view_key(self) -> tuple:
         """The view's range and pixel size: the labels' placement depends on nothing else of it."""
@@ -211,12 +221,14 @@ class SchemeWidget(SchemeReadBack, QWidget):
         """Write the sketch as PNG (at least 1600 px wide), another raster type Qt writes,
         or SVG, chosen by the suffix. ValueError for an unknown type, OSError for a missing
         or unwritable folder; nothing is written then."""
+        from shaperapp.widgets.image_export import export_scene   # QtSvg: not before the first paint
         self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         export_scene(self._plot.scene(), source, path, self.tr("Shaper mechanism"), WHITE)
 
     def svg_bytes(self) -> bytes:
         """The SVG :meth:`export_image` writes, in memory (for the report)."""
+        from shaperapp.widgets.image_export import scene_svg
         self._catch_up()
         return scene_svg(self._plot.scene(), self._plot.getPlotItem().sceneBoundingRect(),
                          self.tr("Shaper mechanism"), WHITE)
@@ -230,6 +242,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
 
     def render(self, painter: QPainter, target: QRectF) -> None:
         """Paint the sketch as shown into ``target`` of any QPainter (vector output)."""
+        from shaperapp.widgets.image_export import render_scene
         self._catch_up()
         source = self._plot.getPlotItem().sceneBoundingRect()
         render_scene(self._plot.scene(), source, painter, target, WHITE)

@@ -146,7 +146,8 @@ WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.vectors.view",
            "shaperapp.cam.tab", "shaperapp.cam.plots", "shaperapp.cam.profile_view", "core.drawing",
            "core.drawing.cam_dxf", "ezdxf", "numpy.ma.", "importlib.metadata",
            "core.cam.cam", "core.cam.build", "core.cam.synthesis", "core.cam.timing", "core.cam.file",
-           "core.gear.checks", "core.gear.advice", "scipy")
+           "core.gear.checks", "core.gear.advice", "scipy", "core.forces.polygons", "core.files.dynamics_io",
+           "shaperapp.widgets.image_export")
 _when_painted(window, painted)
 app.exec()
 """
