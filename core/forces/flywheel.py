@@ -14,9 +14,11 @@ import numpy as np
 
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
-from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs, _eliminate,
+from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs,
                        equivalent_inertia)
+from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
+from .torque_peaks import piece_peaks, reaches
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
@@ -101,45 +103,12 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
 
 
-def _torque_parts(design, sh: Shape, masses: MassProperties,
-                  omega: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Driving torque without the cut as (part the same at every speed, part per unit ω²),
-    N·m, so that the torque at speed ω is the first plus ω² times the second; the cut adds
-    P·dCx/dφ (virtual work) where it acts.
-
-    Given ``omega`` of one speed: that speed's whole torque and zero, from one elimination
-    instead of the two (static, per unit ω²) that many speeds share (a sixth of a loaded
-    one-speed sweep's time went to the second)."""
-    if omega is not None and np.size(omega) == 1:
-        torque = _torque_at(design, sh, masses, float(np.ravel(omega)[0]) ** 2, 0.0)
-        torque = np.broadcast_to(torque, np.shape(sh.ram1))
-        return torque, np.zeros(torque.shape)
-    lead = (2,) + (1,) * np.ndim(sh.ram1)
-    w2 = np.array([0.0, 1.0]).reshape(lead)
-    g = np.array([masses.g, 0.0]).reshape(lead)
-    torque = np.broadcast_to(_eliminate(design, sh, masses, w2, g, 0.0)["crank_torque"],
-                             (2,) + np.shape(sh.ram1))
-    return torque[0], torque[1]
-
-
-def _torque_at(design, sh: Shape, masses: MassProperties, w2, cutting) -> np.ndarray:
-    """Driving torque at the shape's angles for each point's own ω² and cut switch
-    (1 while cutting, else 0), N·m: what the polishes evaluate.
-
-    One elimination with ω² and gravity given per point, not :func:`_torque_parts`'s two
-    (static and per unit ω²) combined afterwards: every load is linear in (ω², g, P), so
-    the value is the same to rounding, at half the work of each polishing step.
-    """
-    torque = _eliminate(design, sh, masses, w2, masses.g, 0.0)["crank_torque"]
-    return torque + cutting * (masses.cut_force_N * MM) * sh.ram1
-
-
 def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, intervals: int,
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
     sh = shape(col, phi)
-    samples = _torque_samples(d, sh, masses, omega)
+    samples = _torque_samples(d, sh, masses)
     on, off = cut_window(d, masses.idle_fraction, sh)
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     mean = np.broadcast_to(mean[:, None], (mean.size, omega.size))
@@ -239,9 +208,9 @@ def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
 
     count, speeds = mean.shape
     col = d.column()
-    x, stat, iner, ram1, segments = samples
+    x, jet, segments = samples
+    stat, iner, cut = jet.static, jet.inertial, jet.cut
     w2 = (omega ** 2)[None, :, None]
-    cut = masses.cut_force_N * MM
     top = energy.max(axis=-1).reshape(-1)
     bottom = energy.min(axis=-1).reshape(-1)
     ends = np.stack([on, off], axis=-1)                           # the kinks, (designs, 2)
@@ -253,16 +222,16 @@ def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
     flat_mean = mean.reshape(-1)
 
     def slope(phi, w2, mean, cutting, *lengths):
-        one = d.with_lengths(lengths)
-        return _torque_at(one, shape(one, phi), masses, w2, cutting) - mean
+        jet = torque_jet(d.with_lengths(lengths), phi, masses)
+        return jet.static + w2 * jet.inertial + cutting * jet.cut - mean
 
     for cutting in (1.0, 0.0):
-        samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :] \
+        samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut[:, None, :] \
             - mean[..., None]
         cells = sign_changes(x[:, None, :], samples, segments)
         # Only the cells that can hold a zero of this piece: the rest would be polished
         # only to be dropped below (half of them: each curve is the slope over one piece).
-        owner, lo, hi, f_lo, f_hi = (v[_reaches(cells[1], cells[2], on[cells[0] // speeds],
+        owner, lo, hi, f_lo, f_hi = (v[reaches(cells[1], cells[2], on[cells[0] // speeds],
                                                 off[cells[0] // speeds], bool(cutting))]
                                      for v in cells)
         if owner.size == 0:
@@ -283,83 +252,38 @@ def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
 
 
-def _reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
-             cutting: bool) -> np.ndarray:
-    """Which cells [lo, hi] (rad, hi − lo < 2π, either may lie beyond [0, 2π)) reach into the
-    cut [on, off] (``cutting``) or into the rest of the cycle: those where a zero can lie
-    that :func:`_energy_extremes` keeps, which takes the crank angle modulo 2π. Kept with a
-    margin of 1e-9 rad, so a zero on a switch angle is never lost to rounding."""
-    first = np.mod(lo, 2.0 * math.pi)
-    last = first + (hi - lo)                       # beyond 2π where the cell wraps
-    slack = 1e-9
-    if cutting:
-        return ((first <= off + slack) & (last >= on - slack)) | \
-            (last - 2.0 * math.pi >= on - slack)
-    return ~((first > on + slack) & (last < off - slack))
-
-
-def _torque_samples(d: Designs, sh: Shape, masses: MassProperties,
-                    omega: np.ndarray) -> tuple:
-    """The torque's samples that bracket its extrema and those of the energy: (φ, part the
-    same at every speed, part per unit ω², dCx/dφ, segments), each array (designs, samples),
-    the parts as :func:`_torque_parts` gives them for the speeds ``omega``.
+def _torque_samples(d: Designs, sh: Shape, masses: MassProperties) -> tuple:
+    """The torque's samples that bracket its extrema and those of the energy: (φ, its
+    :class:`~core.forces.jet.TorqueJet` there, segments), each array (designs, samples).
 
     The grid's periodic samples (one wrapping segment) and, where any design of the
     chunk needs them, samples crowding toward the rod variant's sharp angles (one
-    segment each), where its torque can change faster than the grid resolves.
+    segment each), where its torque can change faster than the grid resolves. Every
+    array is the same at all speeds: a speed's torque and slope are sums of them.
     """
     col = d.column()
-    static, inertial = _torque_parts(col, sh, masses, omega)
     phi = sh.phi[:-1]
-    x = [np.broadcast_to(phi, static[:, :-1].shape)]
-    stat, iner = [static[:, :-1]], [inertial[:, :-1]]
-    ram1 = [np.broadcast_to(sh.ram1, static.shape)[:, :-1]]
+    x = [np.broadcast_to(phi, (d.shape[0], phi.size))]
     segments = [(0, phi.size, 2.0 * math.pi)]
     if needs_crowding(d).any():                       # the whole chunk, if any design
         for j in range(4):
-            at = sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS
-            crowd = shape(col, at)
-            s_j, i_j = _torque_parts(col, crowd, masses, omega)
-            start = sum(a.shape[-1] for a in x)
-            x.append(at)
-            stat.append(s_j)
-            iner.append(i_j)
-            ram1.append(crowd.ram1)
+            x.append(sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS)
+            start = segments[-1][1]
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
-    x, stat, iner, ram1 = (np.concatenate(v, axis=-1) for v in (x, stat, iner, ram1))
-    return x, stat, iner, ram1, segments
+    x = np.concatenate(x, axis=-1)
+    jet = torque_jet(col, x, masses)
+    return x, TorqueJet(*(np.broadcast_to(v, x.shape) for v in jet)), segments
 
 
 def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
                   window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
-    The torque is T0 = static + ω²·inertial (``samples``, :func:`_torque_samples`) without the cut and T1 = T0 + P·dCx/dφ
-    while cutting: two smooth curves, switched at the ends of the cut (``window``,
-    from :func:`cut_window`). The peak is the larger of T1's maximum over the cut,
-    T0's over the rest, and both one-sided values at each switch. Each maximum is
-    bracketed on the samples of :func:`_torque_samples` and polished on the closed
-    form (:func:`core.linkage.extrema.piece_maximum`).
+    The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + cut while
+    cutting (:class:`~core.forces.jet.TorqueJet`): two smooth curves, switched at the ends of
+    the cut (``window``, from :func:`cut_window`). The peak is the larger of T1's maximum over
+    the cut, T0's over the rest, and both one-sided values at each switch: see
+    :func:`core.forces.torque_peaks.piece_peaks`, which brackets each maximum where the
+    slope sampled by :func:`_torque_samples` turns and polishes it by Newton's method.
     """
-    from core.linkage.extrema import piece_maximum
-
-    period = 2.0 * math.pi
-    x, stat, iner, ram1, segments = samples
-    on, off = window
-    cut = masses.cut_force_N * MM
-    w2 = (omega ** 2)[None, :, None]
-    lengths = [v[:, None, None] for v in d.lengths()]
-
-    def torque(phi, w2, sign, cutting, *lengths):
-        one = d.with_lengths(lengths)
-        return sign * _torque_at(one, shape(one, phi), masses, w2, cutting)
-
-    # Four curves per design and speed, stacked: (max, min) × (cutting, not cutting).
-    sign = np.array([1.0, 1.0, -1.0, -1.0])[:, None, None, None]
-    cutting = np.array([1.0, 0.0, 1.0, 0.0])[:, None, None, None]
-    samples = sign * (stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :])
-    lo = np.stack([on, off, on, off])[:, :, None]
-    hi = np.stack([off, on, off, on])[:, :, None]
-    best = piece_maximum(torque, x[:, None, :], samples, lo, hi,
-                         args=[w2, sign, cutting] + lengths, segments=segments, period=period)
-    return np.fmax(best[0], best[1]), -np.fmax(best[2], best[3])
+    return piece_peaks(d, samples, omega, masses, window)
