@@ -18,7 +18,7 @@ from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_i
                        equivalent_inertia)
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import piece_peaks, reaches
+from .torque_peaks import piece_peaks, speed_torque, turning_cells
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
@@ -115,12 +115,14 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     w2 = (omega ** 2)[None, :, None]
     start = _stored(col, shape(col, np.zeros(1)), masses)
     energy = _energy(col, sh, w2, mean[..., None], masses, start)
-    top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
+    torque = speed_torque(samples[1], omega)                      # (designs, speeds, n) each
+    top, bottom = _energy_extremes(d, samples, torque, energy, start, omega, mean, (on, off),
+                                   masses)
     swing = top - bottom
     je = equivalent_inertia(col, sh, masses)
     je = np.broadcast_to(je, sh.ram1.shape)
     if peaks:
-        high, low = _torque_peaks(d, samples, omega, masses, (on, off))
+        high, low = _torque_peaks(d, samples, torque, omega, masses, (on, off))
     else:
         high = low = np.full(mean.shape, np.nan)
     out = {"mean_torque_N_m": np.array(mean), "max_torque_N_m": high, "min_torque_N_m": low,
@@ -185,7 +187,7 @@ def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
             + masses.cut_force_N * MM * travel - mean * turn)
 
 
-def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
+def _energy_extremes(d: Designs, samples: tuple, torque: tuple, energy: np.ndarray,
                      start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
                      window: tuple[np.ndarray, np.ndarray],
                      masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
@@ -199,17 +201,14 @@ def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
     variant, samples crowding toward the sharp angles), every bracket is
     polished (not only the best few: E may have several nearly equal peaks),
     and a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
-    ``start`` is :func:`_stored` at φ = 0, ``window`` the cut's switch angles.
+    ``torque`` their torque with and without the cut at each speed, ``start`` is :func:`_stored` at φ = 0, ``window`` the cut's switch angles.
     """
-    from core.linkage.extrema import sign_changes
-    from core.linkage.polish import bracket_root
+    from core.linkage.polish import newton_zero
 
     on, off = window
-
     count, speeds = mean.shape
     col = d.column()
     x, jet, segments = samples
-    stat, iner, cut = jet.static, jet.inertial, jet.cut
     w2 = (omega ** 2)[None, :, None]
     top = energy.max(axis=-1).reshape(-1)
     bottom = energy.min(axis=-1).reshape(-1)
@@ -217,38 +216,38 @@ def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
     at_ends = _energy(col, shape(col, ends), w2, mean[..., None], masses,
                       start).reshape(count * speeds, 2)
     top, bottom = np.fmax(top, at_ends.max(axis=-1)), np.fmin(bottom, at_ends.min(axis=-1))
-    lengths = [np.broadcast_to(v[:, None], (count, speeds)).reshape(-1) for v in d.lengths()]
-    flat_w2 = np.broadcast_to(w2[..., 0], (count, speeds)).reshape(-1)
-    flat_mean = mean.reshape(-1)
+    slopes = speed_torque(jet, omega, 1)
 
-    def slope(phi, w2, mean, cutting, *lengths):
-        jet = torque_jet(d.with_lengths(lengths), phi, masses)
-        return jet.static + w2 * jet.inertial + cutting * jet.cut - mean
+    def slope(phi, w2, mean, sign, cutting, *lengths):
+        one = torque_jet(d.with_lengths(lengths), phi, masses)
+        g = one.static + w2 * one.inertial + cutting * one.cut - mean
+        return g, sign * g, sign * (one.static1 + w2 * one.inertial1 + cutting * one.cut1)
 
-    for cutting in (1.0, 0.0):
-        samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut[:, None, :] \
-            - mean[..., None]
-        cells = sign_changes(x[:, None, :], samples, segments)
+    for cutting, values, rate, piece in zip((1.0, 0.0), torque, slopes, ((on, off), (off, on))):
+        g = values - mean[..., None]                               # E′ at the samples
         # Only the cells that can hold a zero of this piece: the rest would be polished
         # only to be dropped below (half of them: each curve is the slope over one piece).
-        owner, lo, hi, f_lo, f_hi = (v[reaches(cells[1], cells[2], on[cells[0] // speeds],
-                                                off[cells[0] // speeds], bool(cutting))]
-                                     for v in cells)
-        if owner.size == 0:
-            continue
-        args = [flat_w2[owner], flat_mean[owner]]
-        roots = bracket_root(slope, lo, hi, args + [np.full(owner.size, cutting)]
-                             + [v[owner] for v in lengths], f_lo=f_lo, f_hi=f_hi)
-        design = owner // speeds
-        turn = np.mod(roots, 2.0 * math.pi)
-        inside = (turn >= on[design]) & (turn <= off[design])
-        keep = np.flatnonzero(inside if cutting else ~inside)
-        owner, design, roots = owner[keep], design[keep], roots[keep]
-        one = d.with_lengths([v[owner] for v in lengths])
-        value = _energy(one, shape(one, roots), flat_w2[owner], flat_mean[owner], masses,
-                        tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
-        np.fmax.at(top, owner, value)
-        np.fmin.at(bottom, owner, value)
+        for kind, (design, speed, left, right, lo, hi) in turning_cells(
+                x, g, segments, piece, bool(cutting)):
+            if design.size == 0:
+                continue
+            sign = 1.0 - 2.0 * kind                                # E's maximum, or its minimum
+            g_lo, g_hi = g.reshape(-1)[left], g.reshape(-1)[right]
+            begin = lo + (hi - lo) * (g_lo / (g_lo - g_hi))      # the secant's zero
+            args = [omega[speed] ** 2, mean[design, speed], np.full(design.size, sign),
+                    np.full(design.size, cutting)] + [np.broadcast_to(v, on.shape)[design]
+                                                      for v in d.lengths()]
+            roots = newton_zero(slope, lo, hi, begin, args)[0]
+            turn = np.mod(roots, 2.0 * math.pi)
+            inside = (turn >= on[design]) & (turn <= off[design])
+            keep = np.flatnonzero(inside if cutting else ~inside)
+            design, speed, roots = design[keep], speed[keep], roots[keep]
+            owner = design * speeds + speed
+            one = d.with_lengths([np.broadcast_to(v, on.shape)[design] for v in d.lengths()])
+            value = _energy(one, shape(one, roots), omega[speed] ** 2, mean[design, speed],
+                            masses, tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
+            np.fmax.at(top, owner, value)
+            np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
 
 
@@ -275,7 +274,8 @@ def _torque_samples(d: Designs, sh: Shape, masses: MassProperties) -> tuple:
     return x, TorqueJet(*(np.broadcast_to(v, x.shape) for v in jet)), segments
 
 
-def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
+def _torque_peaks(d: Designs, samples: tuple, torque: tuple, omega: np.ndarray,
+                  masses: MassProperties,
                   window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
@@ -286,4 +286,4 @@ def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPro
     :func:`core.forces.torque_peaks.piece_peaks`, which brackets each maximum where the
     slope sampled by :func:`_torque_samples` turns and polishes it by Newton's method.
     """
-    return piece_peaks(d, samples, omega, masses, window)
+    return piece_peaks(d, samples, torque, omega, masses, window)

@@ -87,8 +87,22 @@ def newton_maximum(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]]
     maximum's to ~1e-24 relative) and the value is fun's there.
     """
     a, b = np.array(lo, dtype=float), np.array(hi, dtype=float)
-    args = [np.broadcast_to(np.asarray(v), a.shape) for v in args]
     x = a + (b - a) * _cubic_top(v_lo, v_hi, s_lo * (b - a), s_hi * (b - a))
+    return newton_zero(fun, a, b, x, args, iterations)
+
+
+def newton_zero(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]],
+                lo: np.ndarray, hi: np.ndarray, start: np.ndarray,
+                args: Sequence[np.ndarray] = (), iterations: int = 60,
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """(x, value) where the slope of each curve falls through zero in [lo, hi] (positive at
+    ``lo``, not at ``hi``), by Newton's method from ``start`` kept inside the bracket;
+    ``fun`` and the result as in :func:`newton_maximum`, which is this from the cubic's top.
+    A zero of any function g with a known slope is such a point of a curve whose slope is
+    g: ``fun`` may return (anything, g, g′)."""
+    a, b = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    args = [np.broadcast_to(np.asarray(v), a.shape) for v in args]
+    x = np.array(start, dtype=float)
     root, value = x.copy(), np.full(a.shape, np.nan)
     live = np.arange(a.size)
     part = list(args)
