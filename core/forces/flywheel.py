@@ -18,7 +18,7 @@ from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_i
                        equivalent_inertia)
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import piece_peaks, speed_torque, turning_cells
+from .torque_peaks import affine_at, on_arc, piece_peaks, turning_cells
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
@@ -111,26 +111,26 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     samples = _torque_samples(d, sh, masses)
     on, off = cut_window(d, masses.idle_fraction, sh)
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
-    mean = np.broadcast_to(mean[:, None], (mean.size, omega.size))
-    w2 = (omega ** 2)[None, :, None]
     start = _stored(col, shape(col, np.zeros(1)), masses)
-    energy = _energy(col, sh, w2, mean[..., None], masses, start)
-    torque = speed_torque(samples[1], omega)                      # (designs, speeds, n) each
-    top, bottom = _energy_extremes(d, samples, torque, energy, start, omega, mean, (on, off),
-                                   masses)
+    # E on the grid as (part the same at every speed, part per unit ω²): E is affine in ω².
+    rest = _energy(col, sh, 0.0, mean[:, None], masses, start)
+    energy = (rest, _energy(col, sh, 1.0, mean[:, None], masses, start) - rest)
+    top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
     swing = top - bottom
     je = equivalent_inertia(col, sh, masses)
     je = np.broadcast_to(je, sh.ram1.shape)
     if peaks:
-        high, low = _torque_peaks(d, samples, torque, omega, masses, (on, off))
+        high, low = _torque_peaks(d, samples, omega, masses, (on, off))
     else:
-        high = low = np.full(mean.shape, np.nan)
-    out = {"mean_torque_N_m": np.array(mean), "max_torque_N_m": high, "min_torque_N_m": low,
+        high = low = np.full(top.shape, np.nan)
+    out = {"mean_torque_N_m": np.repeat(mean[:, None], omega.size, axis=1),
+           "max_torque_N_m": high, "min_torque_N_m": low,
            "energy_fluctuation_J": swing,
            "flywheel_inertia_kg_m2": swing / (omega[None, :] ** 2 * masses.delta),
            "equivalent_inertia_mean_kg_m2": np.mean(je[:, :-1], axis=-1)}  # periodic: drop the end
     if curves:
-        out.update(energy=energy, equivalent_inertia=je)
+        out.update(energy=_energy(col, sh, (omega ** 2)[None, :, None], mean[:, None, None],
+                                  masses, start), equivalent_inertia=je)
     return out
 
 
@@ -187,65 +187,72 @@ def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
             + masses.cut_force_N * MM * travel - mean * turn)
 
 
-def _energy_extremes(d: Designs, samples: tuple, torque: tuple, energy: np.ndarray,
+def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.ndarray],
                      start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
                      window: tuple[np.ndarray, np.ndarray],
                      masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
-    """Largest and smallest E(φ) per design and speed, exactly, J.
+    """Largest and smallest E(φ) per design and speed, exactly, J, each (designs, speeds).
 
-    E is smooth except at the cut's two switch angles, where the torque jumps
-    and E has a kink: those are candidates, with E at every sample and at every
-    zero of its slope T − T_mean inside each smooth piece. The slope of each
-    piece (torque with and without the cut) is smooth over the whole cycle, so
-    each is bracketed at every sign change on the grid (plus, for the rod
-    variant, samples crowding toward the sharp angles), every bracket is
-    polished (not only the best few: E may have several nearly equal peaks),
-    and a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
-    ``torque`` their torque with and without the cut at each speed, ``start`` is :func:`_stored` at φ = 0, ``window`` the cut's switch angles.
+    E is continuous and smooth except at the cut's two switch angles, where the torque
+    jumps and E has a kink, so its extremes lie at a kink or at a zero of its slope
+    T − T_mean inside a smooth piece. The slope of each piece (torque with and without the
+    cut) is smooth over the whole cycle and affine in ω², so its sign changes at every speed
+    are found on the samples at once (:func:`core.forces.torque_peaks.turning_cells`: the
+    grid's, plus the rod variant's samples crowding toward its sharp angles), and each is
+    polished by Newton's method on the closed-form slope (E may have several nearly equal
+    peaks: a zero is skipped only where the meeting point of E's end tangents on a cell
+    wholly inside its piece cannot beat what is known); a zero counts only inside its own
+    piece. ``samples`` are :func:`_torque_samples`'s, ``energy`` E on the grid's samples
+    as (part the same at every speed, part per unit ω²), ``start`` :func:`_stored` at φ = 0,
+    ``mean`` the mean torque (designs,), ``window`` the cut's switch angles.
     """
+    from core.linkage.extrema import tangent_bound
     from core.linkage.polish import newton_zero
 
     on, off = window
-    count, speeds = mean.shape
+    count, speeds = mean.size, omega.size
     col = d.column()
     x, jet, segments = samples
-    w2 = (omega ** 2)[None, :, None]
-    top = energy.max(axis=-1).reshape(-1)
-    bottom = energy.min(axis=-1).reshape(-1)
-    ends = np.stack([on, off], axis=-1)                           # the kinks, (designs, 2)
-    at_ends = _energy(col, shape(col, ends), w2, mean[..., None], masses,
-                      start).reshape(count * speeds, 2)
-    top, bottom = np.fmax(top, at_ends.max(axis=-1)), np.fmin(bottom, at_ends.min(axis=-1))
-    slopes = speed_torque(jet, omega, 1)
+    w2 = omega ** 2
+    at_ends = _energy(col, shape(col, np.stack([on, off], axis=-1)), w2[None, :, None],
+                      mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
+    top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
+    grid = energy[0].shape[-1] - 1                                # the grid's intervals
+    lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
 
     def slope(phi, w2, mean, sign, cutting, *lengths):
         one = torque_jet(d.with_lengths(lengths), phi, masses)
         g = one.static + w2 * one.inertial + cutting * one.cut - mean
         return g, sign * g, sign * (one.static1 + w2 * one.inertial1 + cutting * one.cut1)
 
-    for cutting, values, rate, piece in zip((1.0, 0.0), torque, slopes, ((on, off), (off, on))):
-        g = values - mean[..., None]                               # E′ at the samples
-        # Only the cells that can hold a zero of this piece: the rest would be polished
-        # only to be dropped below (half of them: each curve is the slope over one piece).
+    for cutting, piece in ((1.0, (on, off)), (0.0, (off, on))):
+        parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
         for kind, (design, speed, left, right, lo, hi) in turning_cells(
-                x, g, segments, piece, bool(cutting)):
-            if design.size == 0:
-                continue
+                x, parts, w2, segments, piece, bool(cutting)):
             sign = 1.0 - 2.0 * kind                                # E's maximum, or its minimum
-            g_lo, g_hi = g.reshape(-1)[left], g.reshape(-1)[right]
-            begin = lo + (hi - lo) * (g_lo / (g_lo - g_hi))      # the secant's zero
-            args = [omega[speed] ** 2, mean[design, speed], np.full(design.size, sign),
-                    np.full(design.size, cutting)] + [np.broadcast_to(v, on.shape)[design]
-                                                      for v in d.lengths()]
-            roots = newton_zero(slope, lo, hi, begin, args)[0]
-            turn = np.mod(roots, 2.0 * math.pi)
-            inside = (turn >= on[design]) & (turn <= off[design])
-            keep = np.flatnonzero(inside if cutting else ~inside)
-            design, speed, roots = design[keep], speed[keep], roots[keep]
+            g_lo, g_hi = (affine_at(parts, w2, design, c, speed) for c in (left, right))
             owner = design * speeds + speed
-            one = d.with_lengths([np.broadcast_to(v, on.shape)[design] for v in d.lengths()])
-            value = _energy(one, shape(one, roots), omega[speed] ** 2, mean[design, speed],
-                            masses, tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
+            # A cell of the grid's own samples wholly inside this piece, where E is known at
+            # both ends, is polished only if E's end tangents could beat what is known.
+            first, last = piece[0][design], piece[1][design]
+            grid_cell = (left < grid) & on_arc(lo, first, last) & on_arc(hi, first, last) \
+                & (np.mod(last - first, 2.0 * math.pi) > hi - lo)
+            e_lo, e_hi = (affine_at(energy, w2, design, np.minimum(c, grid), speed)
+                          for c in (left, left + 1))
+            bound = tangent_bound(lo, hi, sign * e_lo, sign * e_hi, sign * g_lo, sign * g_hi)
+            known = top[owner] if kind == 0 else -bottom[owner]
+            keep = ~grid_cell | (bound > known)
+            design, speed, lo, hi, g_lo, g_hi, owner = (
+                v[keep] for v in (design, speed, lo, hi, g_lo, g_hi, owner))
+            begin = lo + (hi - lo) * (g_lo / (g_lo - g_hi))      # the secant's zero
+            roots = newton_zero(slope, lo, hi, begin,
+                                [w2[speed], mean[design], np.full(design.size, sign),
+                                 np.full(design.size, cutting)] + [v[design] for v in lengths])[0]
+            inside = on_arc(roots, first[keep], last[keep])
+            design, speed, roots, owner = (v[inside] for v in (design, speed, roots, owner))
+            one = d.with_lengths([v[design] for v in lengths])
+            value = _energy(one, shape(one, roots), w2[speed], mean[design], masses,
+                            tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
             np.fmax.at(top, owner, value)
             np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
@@ -274,8 +281,7 @@ def _torque_samples(d: Designs, sh: Shape, masses: MassProperties) -> tuple:
     return x, TorqueJet(*(np.broadcast_to(v, x.shape) for v in jet)), segments
 
 
-def _torque_peaks(d: Designs, samples: tuple, torque: tuple, omega: np.ndarray,
-                  masses: MassProperties,
+def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
                   window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
@@ -286,4 +292,4 @@ def _torque_peaks(d: Designs, samples: tuple, torque: tuple, omega: np.ndarray,
     :func:`core.forces.torque_peaks.piece_peaks`, which brackets each maximum where the
     slope sampled by :func:`_torque_samples` turns and polishes it by Newton's method.
     """
-    return piece_peaks(d, samples, torque, omega, masses, window)
+    return piece_peaks(d, samples, omega, masses, window)

@@ -37,53 +37,152 @@ def reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
     return ~((first > on + slack) & (last < off - slack))
 
 
-def _inside(t: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def on_arc(t: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """t (rad, any turn) lies on the arc from a to b."""
     period = 2.0 * math.pi
     return np.mod(t - a, period) <= np.mod(b - a, period)
 
 
-def speed_torque(jet: TorqueJet, omega: np.ndarray, order: int = 0) -> tuple[np.ndarray, np.ndarray]:
-    """The torque's ``order``-th φ-derivative (0 or 1) at each speed from jet arrays
-    (designs, n): (with the cut, without it), each (designs, speeds, n)."""
-    suffix = "" if order == 0 else str(order)
-    static, inertial, cut = (getattr(jet, name + suffix)[:, None, :]
-                             for name in ("static", "inertial", "cut"))
-    rest = static + (omega ** 2)[:, None] * inertial
-    return rest + cut, rest
+def affine_at(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, design: np.ndarray,
+              column: np.ndarray, speed: np.ndarray) -> np.ndarray:
+    """a + ω²·b at the given (design, sample column, speed) triples, for ``parts`` (a, b),
+    arrays (designs, samples) the same at all speeds, and ω² ``w2`` (speeds,)."""
+    return parts[0][design, column] + w2[speed] * parts[1][design, column]
 
 
-def piece_peaks(d: Designs, samples: tuple, torque: tuple[np.ndarray, np.ndarray],
-                omega: np.ndarray, masses: MassProperties,
+def _signed_speeds(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray) -> tuple:
+    """For each (design, sample): the ranges [start, stop) of positions in the speeds sorted
+    by ω² where a + ω²·b is positive, and where it is negative, each (designs, samples).
+
+    a + ω²·b is affine in ω², so each set is the speeds on one side of the zero −a/b: a
+    prefix or a suffix of the sorted speeds, all or none when b = 0. Found by a binary
+    search per sample, so a loaded sweep's per-speed work scales with the cells found,
+    not with designs × speeds × samples (issue 42)."""
+    a, b = parts
+    n = w2.size
+    ws = np.sort(w2)
+    with np.errstate(all="ignore"):
+        zero = np.where(b != 0.0, -a / b, 0.0)
+    above = np.searchsorted(ws, zero, side="right")       # first speed with ω² > zero
+    below = np.searchsorted(ws, zero, side="left")        # speeds with ω² < zero: [0, below)
+    flat = b == 0.0
+    full = np.full(a.shape, n)
+    bad = ~(np.isfinite(a) & np.isfinite(b))              # no sign: in neither set
+    # An empty range is [0, 0): the difference of ranges in turning_cells needs that form.
+    pos = (np.where(flat | bad | (b < 0.0), 0, above),
+           np.where(bad, 0, np.where(flat, np.where(a > 0.0, n, 0), np.where(b > 0.0, full, below))))
+    neg = (np.where(flat | bad | (b > 0.0), 0, above),
+           np.where(bad, 0, np.where(flat, np.where(a < 0.0, n, 0), np.where(b > 0.0, below, full))))
+    return pos, neg
+
+
+# Up to this many speeds the signs are taken on (designs, speeds, samples) arrays directly:
+# fewer passes than the ranges' binary searches and selections per (design, sample).
+DIRECT_SPEEDS = 3
+
+
+def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, segments,
+                  piece: tuple[np.ndarray, np.ndarray],
+                  cutting: bool) -> list[tuple[int, tuple[np.ndarray, ...]]]:
+    """The cells between samples where the curve a + ω²·b (``parts``, (designs, n) at φ ``x``)
+    falls through zero (kind 0: positive, then not) or rises through it (kind 1: negative,
+    then not) at each speed (ω² ``w2``), and that reach into ``piece`` ((start, stop) per
+    design; the cut if ``cutting``): a list of (kind, (design, speed, left sample, right
+    sample, lo, hi)), flat arrays, the samples as columns of ``x``. ``segments`` as in
+    :func:`core.linkage.extrema.grid_argmax`.
+
+    Beyond ``DIRECT_SPEEDS`` nothing of shape (designs, speeds, samples) is formed: per
+    cell, the speeds where the left sample has the sign and the right one has not are one
+    range of the sorted speeds (:func:`_signed_speeds`), expanded only where a cell has any."""
+    start, stop = piece
+    direct = w2.size <= DIRECT_SPEEDS
+    if direct:
+        values = parts[0][:, None, :] + w2[:, None] * parts[1][:, None, :]
+        signs = (values > 0.0, values < 0.0)          # both False for NaN
+    else:
+        order = np.argsort(w2, kind="stable")
+        signs = _signed_speeds(parts, w2)
+    out = []
+    for kind, sign in enumerate(signs):
+        for first, last, period in segments:
+            left = np.arange(first, last if period > 0.0 else last - 1)
+            right = np.where(left + 1 < last, left + 1, first)
+            lo = x[:, left]
+            hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
+            reach = reaches(lo, hi, start[:, None], stop[:, None], cutting)
+            if direct:
+                design, speed, cell = np.nonzero((sign[..., left] > sign[..., right])
+                                                 & reach[:, None, :])
+                out.append((kind, (design, speed, left[cell], right[cell], lo[design, cell],
+                                   hi[design, cell])))
+                continue
+            # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1)
+            a1, b1 = sign[0][:, left], sign[1][:, left]
+            a2, b2 = sign[0][:, right], sign[1][:, right]
+            for begin, end in ((a1, np.minimum(b1, a2)), (np.maximum(a1, b2), b1)):
+                counts = np.where(reach, np.maximum(end - begin, 0), 0)
+                design, cell = np.nonzero(counts)
+                counts, begin = counts[design, cell], begin[design, cell]
+                total = int(counts.sum())
+                if total == 0:
+                    continue
+                owner = np.repeat(np.arange(design.size), counts)
+                rank = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
+                design, cell = design[owner], cell[owner]
+                out.append((kind, (design, order[begin[owner] + rank], left[cell], right[cell],
+                                   lo[design, cell], hi[design, cell])))
+    return out
+
+
+def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
                 window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """(largest, smallest) driving torque per design and speed, N·m, each (designs, speeds).
 
-    ``samples`` are :func:`core.forces.flywheel._torque_samples`' (φ, jet, segments),
-    ``torque`` their :func:`speed_torque` and ``window`` the cut's switch angles (on, off)
-    per design. Candidates: both curves' values at both switch angles, the samples inside
-    each curve's piece, and each polished maximum or minimum that lands inside its piece.
+    ``samples`` are :func:`core.forces.flywheel._torque_samples`' (φ, jet, segments) and
+    ``window`` the cut's switch angles (on, off) per design. Candidates: both curves' values
+    at both switch angles and each polished maximum or minimum that lands inside its piece
+    (a smooth curve's extremum over an arc is at an end or where its slope turns); the
+    samples beside each turning cell that lie inside the piece only raise the bar a cell's
+    tangent bound must clear.
     """
     x, jet, segments = samples
     on, off = window
-    w2 = (omega ** 2)[:, None]
-    slopes = speed_torque(jet, omega, 1)
-    ends = speed_torque(torque_jet(d.column(), np.stack([on, off], axis=-1), masses), omega)
-    top = np.maximum(ends[0].max(axis=-1), ends[1].max(axis=-1))      # (designs, speeds)
-    bottom = np.minimum(ends[0].min(axis=-1), ends[1].min(axis=-1))
-    pieces = ((on, off), (off, on))                                    # with the cut, without
-    for (a, b), values in zip(pieces, torque):
-        outside = np.where(_inside(x, a[:, None], b[:, None]), 0.0, np.inf)[:, None, :]
-        top = np.fmax(top, (values - outside).max(axis=-1))
-        bottom = np.fmin(bottom, (values + outside).min(axis=-1))
-    floor = np.stack([top, -bottom])                                   # what a cell must beat
-    found = [_cells(x, values, slope, segments, pieces[k], cut_k=k, floor=floor)
-             for k, (values, slope) in enumerate(zip(torque, slopes))]
-    kind, cut, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi = (
-        np.concatenate(v) for v in zip(*[c for cells in found for c in cells]))
-    best = floor.copy()
-    if kind.size:
-        sign = np.where(kind == 0, 1.0, -1.0)
-        cutting = np.where(cut == 0, 1.0, 0.0)
+    w2 = omega ** 2
+    ends = torque_jet(d.column(), np.stack([on, off], axis=-1), masses)
+    rest = ends.static[:, None, :] + w2[:, None] * ends.inertial[:, None, :]   # (designs, speeds, 2)
+    cut = rest + ends.cut[:, None, :]
+    best = np.stack([np.maximum(cut.max(axis=-1), rest.max(axis=-1)),
+                     -np.minimum(cut.min(axis=-1), rest.min(axis=-1))])         # (2, designs, speeds)
+    flat = best.reshape(-1)
+    pieces = ((on, off), (off, on))
+    found = []
+    for k, cutting in enumerate((1.0, 0.0)):
+        values = (jet.static + cutting * jet.cut, jet.inertial)
+        slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
+        first, last = pieces[k]
+        for kind, (design, speed, left, right, lo, hi) in turning_cells(x, slopes, w2, segments,
+                                                                          pieces[k], k == 0):
+            sign = 1.0 - 2.0 * kind
+            owner = (kind * on.size + design) * w2.size + speed
+            cell = [k, kind, design, speed, lo, hi]
+            for column in (left, right):
+                value = sign * affine_at(values, w2, design, column, speed)
+                inside = on_arc(x[design, column], first[design], last[design])
+                np.fmax.at(flat, owner[inside], value[inside])
+                cell.append(value)
+            cell += [sign * affine_at(slopes, w2, design, column, speed) for column in (left, right)]
+            found.append(cell)
+    if not found:
+        return best[0], -best[1]
+    k, kind, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi = (
+        np.concatenate([np.broadcast_to(c[i], c[2].shape) for c in found]) for i in range(10))
+    owner = (kind * on.size + design) * w2.size + speed
+    keep = tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi) > flat[owner]
+    k, kind, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi, owner = (
+        v[keep] for v in (k, kind, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi, owner))
+    if owner.size:
+        sign = 1.0 - 2.0 * kind
+        cutting = 1.0 - k
         lengths = [np.broadcast_to(v, on.shape)[design] for v in d.lengths()]
 
         def fun(t, w2, sign, cutting, *lengths):
@@ -92,65 +191,9 @@ def piece_peaks(d: Designs, samples: tuple, torque: tuple[np.ndarray, np.ndarray
             return tuple(sign * (s + w2 * i + cutting * c) for s, i, c in zip(static, inertial, cut))
 
         root, value = newton_maximum(fun, lo, hi, v_lo, v_hi, s_lo, s_hi,
-                                     [w2[speed, 0], sign, cutting] + lengths)
-        start = np.where(cut == 0, on[design], off[design])
-        stop = np.where(cut == 0, off[design], on[design])
-        inside = _inside(root, start, stop)
-        owner = np.ravel_multi_index((kind, design, speed), best.shape)
-        np.fmax.at(best.reshape(-1), owner[inside], value[inside])
+                                     [w2[speed], sign, cutting] + lengths)
+        start = np.where(k == 0, on[design], off[design])
+        stop = np.where(k == 0, off[design], on[design])
+        inside = on_arc(root, start, stop)
+        np.fmax.at(flat, owner[inside], value[inside])
     return best[0], -best[1]
-
-
-def turning_cells(x: np.ndarray, slopes: np.ndarray, segments, piece: tuple[np.ndarray, np.ndarray],
-                  cutting: bool) -> list[tuple[int, tuple[np.ndarray, ...]]]:
-    """The cells between samples where ``slopes`` (designs, speeds, n) at φ ``x`` (designs, n)
-    falls through zero (kind 0: positive, then not) or rises through it (kind 1: negative,
-    then not), that reach into ``piece`` ((start, stop) per design; the cut if ``cutting``):
-    a list of (kind, (design, speed, left sample, right sample, lo, hi)), flat arrays, the
-    samples as flat indices into ``slopes``. ``segments`` as in
-    :func:`core.linkage.extrema.grid_argmax`. Found on booleans, flat: at 16 speeds
-    these passes over (designs, speeds, samples) are most of a loaded sweep's time."""
-    start, stop = piece
-    count, speeds, n = slopes.shape
-    out = []
-    signs = (slopes > 0.0, slopes < 0.0)               # both False for NaN
-    for first, last, period in segments:
-        wraps = period > 0.0
-        m = last - first - (0 if wraps else 1)         # cells in the segment
-        left = np.arange(first, first + m)
-        right = np.where(left + 1 < last, left + 1, first)
-        lo = x[:, left]
-        hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
-        reach = reaches(lo, hi, start[:, None], stop[:, None], cutting)[:, None, :]
-        for kind, strict in enumerate(signs):
-            here = strict[..., first:first + m]
-            after = strict[..., first + 1:last]
-            if wraps:
-                after = np.concatenate([after, strict[..., first:first + 1]], axis=-1)
-            turn = here > after                        # strictly signed, then not
-            turn &= reach
-            flat = np.flatnonzero(turn)
-            cell = flat % m
-            row = flat // m                            # design·speeds + speed
-            design = row // speeds
-            out.append((kind, (design, row % speeds, row * n + left[cell], row * n + right[cell],
-                               lo[design, cell], hi[design, cell])))
-    return out
-
-
-def _cells(x: np.ndarray, values: np.ndarray, slopes: np.ndarray, segments, piece, cut_k: int,
-           floor: np.ndarray) -> list[list[np.ndarray]]:
-    """The cells of one curve (values and slopes (designs, speeds, n)) that hold a maximum
-    (kind 0) or a minimum (kind 1, negated) reaching into ``piece`` (:func:`turning_cells`)
-    and whose tangent bound beats ``floor`` (kind, designs, speeds): flat arrays (kind,
-    cut_k, design, speed, lo, hi, value and slope at both ends)."""
-    out = []
-    for kind, (design, speed, left, right, a, b) in turning_cells(x, slopes, segments, piece,
-                                                                  cut_k == 0):
-        sign = 1.0 - 2.0 * kind
-        v_lo, v_hi = sign * values.reshape(-1)[left], sign * values.reshape(-1)[right]
-        s_lo, s_hi = sign * slopes.reshape(-1)[left], sign * slopes.reshape(-1)[right]
-        keep = tangent_bound(a, b, v_lo, v_hi, s_lo, s_hi) > floor[kind, design, speed]
-        out.append([np.full(keep.sum(), kind), np.full(keep.sum(), cut_k)]
-                   + [v[keep] for v in (design, speed, a, b, v_lo, v_hi, s_lo, s_hi)])
-    return out
