@@ -18,7 +18,7 @@ from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_i
                        equivalent_inertia)
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import affine_at, on_arc, piece_peaks, turning_cells
+from .torque_peaks import DIRECT_SPEEDS, affine_at, on_arc, piece_peaks, turning_cells
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
@@ -97,7 +97,11 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     """
     omega = np.asarray(omega, dtype=float)
     size = designs.shape[0] if designs.shape else 1
-    chunk = max(1, SUMMARY_SAMPLES // ((intervals + 1) * max(omega.size, 1)))
+    # Arrays over designs × speeds × angles are formed only for the curves and for a few
+    # speeds (core.forces.torque_peaks.DIRECT_SPEEDS); otherwise per-speed work scales with
+    # the extrema found, so a chunk of designs need not shrink with the speeds.
+    per_design = max(omega.size, 1) if curves or omega.size <= DIRECT_SPEEDS else 1
+    chunk = max(1, SUMMARY_SAMPLES // ((intervals + 1) * per_design))
     parts = [_summary_chunk(designs.take(slice(i, i + chunk)), omega, masses, intervals, curves, peaks)
              for i in range(0, size, chunk)]
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
@@ -112,13 +116,12 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     on, off = cut_window(d, masses.idle_fraction, sh)
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     start = _stored(col, shape(col, np.zeros(1)), masses)
+    stored = _stored(col, sh, masses)
     # E on the grid as (part the same at every speed, part per unit ω²): E is affine in ω².
-    rest = _energy(col, sh, 0.0, mean[:, None], masses, start)
-    energy = (rest, _energy(col, sh, 1.0, mean[:, None], masses, start) - rest)
+    energy = (_energy(col, sh, 0.0, mean[:, None], masses, start, stored), stored[0] - start[0])
     top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
     swing = top - bottom
-    je = equivalent_inertia(col, sh, masses)
-    je = np.broadcast_to(je, sh.ram1.shape)
+    je = np.broadcast_to(2.0 * stored[0], sh.ram1.shape)           # the kinetic energy is ½·J_e
     if peaks:
         high, low = _torque_peaks(d, samples, omega, masses, (on, off))
     else:
@@ -130,7 +133,7 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
            "equivalent_inertia_mean_kg_m2": np.mean(je[:, :-1], axis=-1)}  # periodic: drop the end
     if curves:
         out.update(energy=_energy(col, sh, (omega ** 2)[None, :, None], mean[:, None, None],
-                                  masses, start), equivalent_inertia=je)
+                                  masses, start, stored), equivalent_inertia=je)
     return out
 
 
@@ -165,16 +168,18 @@ def _stored(d, sh: Shape, masses: MassProperties) -> tuple[np.ndarray, np.ndarra
 
 
 def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
-            start: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+            start: tuple[np.ndarray, np.ndarray],
+            stored: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """E(φ) = work of (driving torque − mean torque) from φ = 0, J, at the shape's angles.
 
     Stored energy gained since φ = 0, plus the cut's work so far (P times the
     distance cut, exact at any angle: torque·ω = P·v while cutting), less the
-    mean torque's work. ``start`` is :func:`_stored` at φ = 0; ``w2`` and
+    mean torque's work. ``start`` is :func:`_stored` at φ = 0 (``stored`` at the shape's
+    angles, when the caller has it); ``w2`` and
     ``mean`` broadcast against the angles' shape with a speed axis before it
     (or elementwise, for flat arrays of points).
     """
-    kinetic, potential = _stored(d, sh, masses)
+    kinetic, potential = _stored(d, sh, masses) if stored is None else stored
     x = sh.ram_joint[0] - ram_origin(d)
     idle = masses.idle_fraction * d.stroke
     turn = np.broadcast_to(np.mod(sh.phi, 2.0 * math.pi), np.shape(x))

@@ -65,16 +65,16 @@ def torque_jet(design, phi: np.ndarray, masses: MassProperties) -> TorqueJet:
     if design.rod is None:
         c3, c4 = b3[0], b4[0]
     else:
-        r3, r4 = reach_jet(ram, b3[1], b4[1])
-        c3, c4 = b3[0] + design.rod_sign * r3, b4[0] + design.rod_sign * r4
+        r34 = reach_jet(ram, b3[1], b4[1])
+        c3, c4 = b3[0] + design.rod_sign * r34[0], b4[0] + design.rod_sign * r34[1]
     c1, c2 = ram.c1, ram.c2
     k1 = j4 * (w1 * w2) + m6 * MM * MM * (c1 * c2)
     k2 = j4 * (w2 * w2 + w1 * w3) + m6 * MM * MM * (c2 * c2 + c1 * c3)
     k3 = j4 * (3.0 * w2 * w3 + w1 * w4) + m6 * MM * MM * (3.0 * c2 * c3 + c1 * c4)
     height = masses.lever_mass_kg * masses.lever_cg(design) / design.lever
     if design.rod is not None and masses.rod_mass_kg > 0.0:
-        k1, k2, k3 = (k + v for k, v in zip((k1, k2, k3), _rod_kinetic(design, masses, ram, tip,
-                                                                       (b3, b4), (c1, c2, c3, c4))))
+        k1, k2, k3 = (k + v for k, v in zip((k1, k2, k3), _rod_kinetic(design, masses, ram, tip, (b3, b4),
+                                                                       r34, (c1, c2, c3, c4))))
         height = height + masses.rod_mass_kg / 2.0
     # Ay = L2 + L1·sin β with β′ = −1: Ay′ = −L1·cos β, Ay″ = −L1·sin β, Ay‴ = L1·cos β.
     scale = masses.g * MM
@@ -86,13 +86,13 @@ def torque_jet(design, phi: np.ndarray, masses: MassProperties) -> TorqueJet:
     return TorqueJet(v1, v2, v3, k1, k2, k3, p * c1, p * c2, p * c3)
 
 
-def _rod_kinetic(design, masses: MassProperties, ram, tip, b34, c14) -> tuple:
+def _rod_kinetic(design, masses: MassProperties, ram, tip, b34, r34, c14) -> tuple:
     """The rod's share of K′, K″, K‴: m5(G5′·G5″ + L4²/12·λ′λ″) and its two derivatives,
     with λ′ = −sign(r·By′ + d·r′)/L4² and the same pattern one and two orders up."""
     (b3, b4), (c1, c2, c3, c4) = b34, c14
     sign, length = design.rod_sign, design.rod
     r, d = ram.reach, ram.depth
-    r3, r4 = reach_jet(ram, b3[1], b4[1])
+    r3, r4 = r34
     by1, by2, by3, by4 = tip.b1[1], tip.b2[1], b3[1], b4[1]
     r1, r2 = ram.reach1, ram.reach2
     k = -sign / (length * length)

@@ -76,6 +76,11 @@ def _signed_speeds(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray) -> tupl
     return pos, neg
 
 
+# A torque peak is done when Newton's next step would raise it by at most this fraction
+# (core.linkage.polish.newton_maximum's ``gain``): far below the 1e-9 the sweep's figures
+# are held to against the single design's summary, which takes the same path.
+PEAK_GAIN = 1e-15
+
 # Up to this many speeds the signs are taken on (designs, speeds, samples) arrays directly:
 # fewer passes than the ranges' binary searches and selections per (design, sample).
 DIRECT_SPEEDS = 3
@@ -103,13 +108,13 @@ def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.nd
         order = np.argsort(w2, kind="stable")
         signs = _signed_speeds(parts, w2)
     out = []
-    for kind, sign in enumerate(signs):
-        for first, last, period in segments:
-            left = np.arange(first, last if period > 0.0 else last - 1)
-            right = np.where(left + 1 < last, left + 1, first)
-            lo = x[:, left]
-            hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
-            reach = reaches(lo, hi, start[:, None], stop[:, None], cutting)
+    for first, last, period in segments:
+        left = np.arange(first, last if period > 0.0 else last - 1)
+        right = np.where(left + 1 < last, left + 1, first)
+        lo = x[:, left]
+        hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
+        reach = reaches(lo, hi, start[:, None], stop[:, None], cutting)
+        for kind, sign in enumerate(signs):
             if direct:
                 design, speed, cell = np.nonzero((sign[..., left] > sign[..., right])
                                                  & reach[:, None, :])
@@ -191,7 +196,7 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
             return tuple(sign * (s + w2 * i + cutting * c) for s, i, c in zip(static, inertial, cut))
 
         root, value = newton_maximum(fun, lo, hi, v_lo, v_hi, s_lo, s_hi,
-                                     [w2[speed], sign, cutting] + lengths)
+                                     [w2[speed], sign, cutting] + lengths, gain=PEAK_GAIN)
         start = np.where(k == 0, on[design], off[design])
         stop = np.where(k == 0, off[design], on[design])
         inside = on_arc(root, start, stop)
