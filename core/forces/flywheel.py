@@ -14,14 +14,13 @@ import numpy as np
 
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
-from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs,
-                       equivalent_inertia)
+from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
 from .torque_peaks import DIRECT_SPEEDS, affine_at, on_arc, piece_peaks, turning_cells
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
-from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
+from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, ram_origin, sharp_angles
 
 
 def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
@@ -111,17 +110,17 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
-    sh = shape(col, phi)
-    samples = _torque_samples(d, sh, masses)
-    on, off = cut_window(d, masses.idle_fraction, sh)
+    grid = torque_jet(col, phi, masses)                           # (designs, intervals + 1)
+    samples = _torque_samples(d, grid, masses)
+    on, off = cut_window(d, masses.idle_fraction, (phi, grid.ram_x))
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
-    start = _stored(col, shape(col, np.zeros(1)), masses)
-    stored = _stored(col, sh, masses)
+    start = (grid.kinetic[:, :1], grid.potential[:, :1])          # φ = 0 is the grid's first
     # E on the grid as (part the same at every speed, part per unit ω²): E is affine in ω².
-    energy = (_energy(col, sh, 0.0, mean[:, None], masses, start, stored), stored[0] - start[0])
+    energy = (_energy(col, phi, grid, 0.0, mean[:, None], masses, start),
+              grid.kinetic - start[0])
     top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
     swing = top - bottom
-    je = np.broadcast_to(2.0 * stored[0], sh.ram1.shape)           # the kinetic energy is ½·J_e
+    je = 2.0 * grid.kinetic                                       # the kinetic energy is ½·J_e
     if peaks:
         high, low = _torque_peaks(d, samples, omega, masses, (on, off))
     else:
@@ -132,8 +131,8 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
            "flywheel_inertia_kg_m2": swing / (omega[None, :] ** 2 * masses.delta),
            "equivalent_inertia_mean_kg_m2": np.mean(je[:, :-1], axis=-1)}  # periodic: drop the end
     if curves:
-        out.update(energy=_energy(col, sh, (omega ** 2)[None, :, None], mean[:, None, None],
-                                  masses, start, stored), equivalent_inertia=je)
+        out.update(energy=_energy(col, phi, grid, (omega ** 2)[None, :, None],
+                                  mean[:, None, None], masses, start), equivalent_inertia=je)
     return out
 
 
@@ -147,42 +146,26 @@ def cut_work(d: Designs, masses: MassProperties) -> np.ndarray:
     return masses.cut_force_N * (1.0 - 2.0 * masses.idle_fraction) * np.asarray(d.stroke) * MM
 
 
-def _stored(d, sh: Shape, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
-    """(kinetic energy per unit ω², potential energy), J, of the moving links at the
-    shape's angles.
+def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassProperties,
+            start: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """E(φ) = work of (driving torque − mean torque) from φ = 0, J, at angles ``phi``.
 
-    The driving torque less the cut is the rate of change of this stored energy
-    (energy balance of a frictionless chain at constant crank speed), so the
-    work done up to any angle is a difference of two closed-form values: the
-    energy curve needs no quadrature and is exact at any angle, not only on a
-    grid. The ram moves level, so its weight stores nothing; the crank is
-    balanced and turns steadily, so its energy is constant.
+    The driving torque less the cut is the rate of change of the energy the links store,
+    ω²·K + V (energy balance of a frictionless chain at constant crank speed; the ram moves
+    level, so its weight stores nothing, and the crank is balanced and turns steadily, so
+    its energy is constant), so the work done up to any angle is a difference of two
+    closed-form values: the energy curve needs no quadrature and is exact at any angle, not
+    only on a grid. E is the stored energy gained since φ = 0, plus the cut's work so far
+    (P times the distance cut, exact at any angle: torque·ω = P·v while cutting), less the
+    mean torque's work. ``stored`` is the :class:`~core.forces.jet.TorqueJet` at ``phi``
+    (its kinetic, potential and ram_x are read), ``start`` its (kinetic, potential) at
+    φ = 0; ``w2`` and ``mean`` broadcast against the angles' shape with a speed axis before
+    it (or elementwise, for flat arrays of points).
     """
-    kinetic = 0.5 * equivalent_inertia(d, sh, masses)
-    tip_y = sh.lever_tip[1] * MM
-    height = (masses.lever_mass_kg * masses.lever_cg(d) / d.lever * tip_y
-              + masses.block_mass_kg * sh.crank_pin[1] * MM)
-    if sh.rod is not None:
-        height = height + masses.rod_mass_kg * tip_y / 2.0        # the rod's other end is level
-    return kinetic, masses.g * height
-
-
-def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
-            start: tuple[np.ndarray, np.ndarray],
-            stored: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
-    """E(φ) = work of (driving torque − mean torque) from φ = 0, J, at the shape's angles.
-
-    Stored energy gained since φ = 0, plus the cut's work so far (P times the
-    distance cut, exact at any angle: torque·ω = P·v while cutting), less the
-    mean torque's work. ``start`` is :func:`_stored` at φ = 0 (``stored`` at the shape's
-    angles, when the caller has it); ``w2`` and
-    ``mean`` broadcast against the angles' shape with a speed axis before it
-    (or elementwise, for flat arrays of points).
-    """
-    kinetic, potential = _stored(d, sh, masses) if stored is None else stored
-    x = sh.ram_joint[0] - ram_origin(d)
+    kinetic, potential = stored.kinetic, stored.potential
+    x = stored.ram_x - ram_origin(d)
     idle = masses.idle_fraction * d.stroke
-    turn = np.broadcast_to(np.mod(sh.phi, 2.0 * math.pi), np.shape(x))
+    turn = np.broadcast_to(np.mod(phi, 2.0 * math.pi), np.shape(x))
     travel = np.where(turn <= math.pi + d.theta, np.clip(x, idle, d.stroke - idle) - idle,
                       d.stroke - 2.0 * idle)
     if np.ndim(w2) > np.ndim(kinetic):                           # a speed axis before the angles
@@ -208,7 +191,7 @@ def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.nd
     peaks: a zero is skipped only where the meeting point of E's end tangents on a cell
     wholly inside its piece cannot beat what is known); a zero counts only inside its own
     piece. ``samples`` are :func:`_torque_samples`'s, ``energy`` E on the grid's samples
-    as (part the same at every speed, part per unit ω²), ``start`` :func:`_stored` at φ = 0,
+    as (part the same at every speed, part per unit ω²), ``start`` the stored energy (kinetic, potential) at φ = 0,
     ``mean`` the mean torque (designs,), ``window`` the cut's switch angles.
     """
     from core.linkage.extrema import tangent_bound
@@ -219,7 +202,8 @@ def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.nd
     col = d.column()
     x, jet, segments = samples
     w2 = omega ** 2
-    at_ends = _energy(col, shape(col, np.stack([on, off], axis=-1)), w2[None, :, None],
+    kinks = np.stack([on, off], axis=-1)
+    at_ends = _energy(col, kinks, torque_jet(col, kinks, masses), w2[None, :, None],
                       mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
     top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
     grid = energy[0].shape[-1] - 1                                # the grid's intervals
@@ -256,34 +240,39 @@ def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.nd
             inside = on_arc(roots, first[keep], last[keep])
             design, speed, roots, owner = (v[inside] for v in (design, speed, roots, owner))
             one = d.with_lengths([v[design] for v in lengths])
-            value = _energy(one, shape(one, roots), w2[speed], mean[design], masses,
-                            tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
+            value = _energy(one, roots, torque_jet(one, roots, masses), w2[speed], mean[design],
+                            masses, tuple(v[design, 0] for v in start))
             np.fmax.at(top, owner, value)
             np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
 
 
-def _torque_samples(d: Designs, sh: Shape, masses: MassProperties) -> tuple:
+def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tuple:
     """The torque's samples that bracket its extrema and those of the energy: (φ, its
     :class:`~core.forces.jet.TorqueJet` there, segments), each array (designs, samples).
 
-    The grid's periodic samples (one wrapping segment) and, where any design of the
-    chunk needs them, samples crowding toward the rod variant's sharp angles (one
-    segment each), where its torque can change faster than the grid resolves. Every
-    array is the same at all speeds: a speed's torque and slope are sums of them.
+    The grid's periodic samples (``grid``, the jet on a closed uniform grid: one wrapping
+    segment without its closing sample) and, where any design of the chunk needs them,
+    samples crowding toward the rod variant's sharp angles (one segment each), where its
+    torque can change faster than the grid resolves. Every array is the same at all
+    speeds: a speed's torque and slope are sums of them.
     """
     col = d.column()
-    phi = sh.phi[:-1]
-    x = [np.broadcast_to(phi, (d.shape[0], phi.size))]
-    segments = [(0, phi.size, 2.0 * math.pi)]
+    n = grid.static.shape[-1] - 1
+    x = [np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1)[:-1], (d.shape[0], n))]
+    jets = [TorqueJet(*(np.broadcast_to(v, (d.shape[0], n + 1))[:, :-1] for v in grid))]
+    segments = [(0, n, 2.0 * math.pi)]
     if needs_crowding(d).any():                       # the whole chunk, if any design
         for j in range(4):
             x.append(sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS)
+            jets.append(TorqueJet(*(np.broadcast_to(v, x[-1].shape)
+                                    for v in torque_jet(col, x[-1], masses))))
             start = segments[-1][1]
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
-    x = np.concatenate(x, axis=-1)
-    jet = torque_jet(col, x, masses)
-    return x, TorqueJet(*(np.broadcast_to(v, x.shape) for v in jet)), segments
+    if len(x) == 1:
+        return x[0], jets[0], segments
+    return (np.concatenate(x, axis=-1),
+            TorqueJet(*(np.concatenate(v, axis=-1) for v in zip(*jets))), segments)
 
 
 def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,

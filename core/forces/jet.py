@@ -41,6 +41,9 @@ class TorqueJet(NamedTuple):
     cut: np.ndarray         # P·dCx/dφ: the cutting force's torque while it acts, N·m
     cut1: np.ndarray
     cut2: np.ndarray
+    kinetic: np.ndarray     # K = ½·J_e: the kinetic energy per unit ω², J·s² (= kg·m²/2)
+    potential: np.ndarray   # V: the weights' potential energy, J
+    ram_x: np.ndarray       # Cx, the ram joint's x, mm (the cut's work is P times its travel)
 
 
 def torque_jet(design, phi: np.ndarray, masses: MassProperties) -> TorqueJet:
@@ -50,7 +53,9 @@ def torque_jet(design, phi: np.ndarray, masses: MassProperties) -> TorqueJet:
     The kinetic energy per unit ω² is K = ½(J4·ψ′² + m3·L1² + m6·Cx′² + m5(|G5′|² + L4²/12·λ′²))
     with J4 = m4·cg² + J_lever, G5 = (B + C)/2 and the rod angle λ, so K′ = J4·ψ′ψ″ + m6·Cx′Cx″
     + m5(G5′·G5″ + L4²/12·λ′λ″) and so on by the product rule; the potential energy is
-    V = g(h·By + m3·Ay), h = m4·cg/L3 + m5/2 (:func:`core.forces.flywheel._stored`).
+    V = g(h·By + m3·Ay), h = m4·cg/L3 + m5/2 (the ram moves level: its weight stores nothing).
+    The jet carries K, V and the ram's x as well, from which the cycle's energy curve is
+    built (:func:`core.forces.flywheel._energy`).
     """
     beta = np.pi + np.asarray(design.theta) / 2.0 - np.asarray(phi, dtype=float)
     cb, sb = np.cos(beta), np.sin(beta)
@@ -72,22 +77,25 @@ def torque_jet(design, phi: np.ndarray, masses: MassProperties) -> TorqueJet:
     k2 = j4 * (w2 * w2 + w1 * w3) + m6 * MM * MM * (c2 * c2 + c1 * c3)
     k3 = j4 * (3.0 * w2 * w3 + w1 * w4) + m6 * MM * MM * (3.0 * c2 * c3 + c1 * c4)
     height = masses.lever_mass_kg * masses.lever_cg(design) / design.lever
+    l1 = design.crank
+    k0 = 0.5 * (j4 * (w1 * w1) + m6 * MM * MM * (c1 * c1) + m3 * (l1 * MM) ** 2)
     if design.rod is not None and masses.rod_mass_kg > 0.0:
-        k1, k2, k3 = (k + v for k, v in zip((k1, k2, k3), _rod_kinetic(design, masses, ram, tip, (b3, b4),
-                                                                       r34, (c1, c2, c3, c4))))
+        k0, k1, k2, k3 = (k + v for k, v in zip((k0, k1, k2, k3), _rod_kinetic(
+            design, masses, ram, tip, (b3, b4), r34, (c1, c2, c3, c4))))
         height = height + masses.rod_mass_kg / 2.0
     # Ay = L2 + L1·sin β with β′ = −1: Ay′ = −L1·cos β, Ay″ = −L1·sin β, Ay‴ = L1·cos β.
     scale = masses.g * MM
-    l1 = design.crank
+    v0 = scale * (height * tip.b[1] + m3 * lv.pin[1])
     v1 = scale * (height * b1[1] - m3 * l1 * cb)
     v2 = scale * (height * b2[1] - m3 * l1 * sb)
     v3 = scale * (height * b3[1] + m3 * l1 * cb)
     p = masses.cut_force_N * MM
-    return TorqueJet(v1, v2, v3, k1, k2, k3, p * c1, p * c2, p * c3)
+    return TorqueJet(v1, v2, v3, k1, k2, k3, p * c1, p * c2, p * c3, k0, v0, ram.joint[0])
 
 
 def _rod_kinetic(design, masses: MassProperties, ram, tip, b34, r34, c14) -> tuple:
-    """The rod's share of K′, K″, K‴: m5(G5′·G5″ + L4²/12·λ′λ″) and its two derivatives,
+    """The rod's share of K, K′, K″, K‴: K = ½m5(|G5′|² + L4²/12·λ′²), K′ = m5(G5′·G5″ +
+    L4²/12·λ′λ″) and its two derivatives,
     with λ′ = −sign(r·By′ + d·r′)/L4² and the same pattern one and two orders up."""
     (b3, b4), (c1, c2, c3, c4) = b34, c14
     sign, length = design.rod_sign, design.rod
@@ -106,6 +114,7 @@ def _rod_kinetic(design, masses: MassProperties, ram, tip, b34, r34, c14) -> tup
     m5 = masses.rod_mass_kg
     mm2 = MM * MM
     dot = lambda i, j: gx[i] * gx[j] + gy[i] * gy[j]  # noqa: E731
-    return (m5 * (mm2 * dot(0, 1) + rot * l1 * l2),
+    return (0.5 * m5 * (mm2 * dot(0, 0) + rot * l1 * l1),
+            m5 * (mm2 * dot(0, 1) + rot * l1 * l2),
             m5 * (mm2 * (dot(1, 1) + dot(0, 2)) + rot * (l2 * l2 + l1 * l3)),
             m5 * (mm2 * (3.0 * dot(1, 2) + dot(0, 3)) + rot * (3.0 * l2 * l3 + l1 * l4)))
