@@ -115,10 +115,7 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     on, off = cut_window(d, masses.idle_fraction, (phi, grid.ram_x))
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     start = (grid.kinetic[:, :1], grid.potential[:, :1])          # φ = 0 is the grid's first
-    # E on the grid as (part the same at every speed, part per unit ω²): E is affine in ω².
-    energy = (_energy(col, phi, grid, 0.0, mean[:, None], masses, start),
-              grid.kinetic - start[0])
-    top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
+    top, bottom = _energy_extremes(d, samples, start, omega, mean, (on, off), masses)
     swing = top - bottom
     je = 2.0 * grid.kinetic                                       # the kinetic energy is ½·J_e
     if peaks:
@@ -175,8 +172,7 @@ def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassPropert
             + masses.cut_force_N * MM * travel - mean * turn)
 
 
-def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.ndarray],
-                     start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
+def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
                      window: tuple[np.ndarray, np.ndarray],
                      masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest E(φ) per design and speed, exactly, J, each (designs, speeds).
@@ -187,14 +183,12 @@ def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.nd
     cut) is smooth over the whole cycle and affine in ω², so its sign changes at every speed
     are found on the samples at once (:func:`core.forces.torque_peaks.turning_cells`: the
     grid's, plus the rod variant's samples crowding toward its sharp angles), and each is
-    polished by Newton's method on the closed-form slope (E may have several nearly equal
-    peaks: a zero is skipped only where the meeting point of E's end tangents on a cell
-    wholly inside its piece cannot beat what is known); a zero counts only inside its own
-    piece. ``samples`` are :func:`_torque_samples`'s, ``energy`` E on the grid's samples
-    as (part the same at every speed, part per unit ω²), ``start`` the stored energy (kinetic, potential) at φ = 0,
+    polished by Newton's method on the closed-form slope (every one: E may have several
+    nearly equal peaks, and skipping cells by their end tangents missed some near a rod's
+    sharp angles); a zero counts only inside its own piece. ``samples`` are
+    :func:`_torque_samples`'s, ``start`` the stored energy (kinetic, potential) at φ = 0,
     ``mean`` the mean torque (designs,), ``window`` the cut's switch angles.
     """
-    from core.linkage.extrema import tangent_bound
     from core.linkage.polish import newton_zero
 
     on, off = window
@@ -206,7 +200,6 @@ def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.nd
     at_ends = _energy(col, kinks, torque_jet(col, kinks, masses), w2[None, :, None],
                       mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
     top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
-    grid = energy[0].shape[-1] - 1                                # the grid's intervals
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
 
     def slope(phi, w2, mean, sign, cutting, *lengths):
@@ -221,23 +214,11 @@ def _energy_extremes(d: Designs, samples: tuple, energy: tuple[np.ndarray, np.nd
             sign = 1.0 - 2.0 * kind                                # E's maximum, or its minimum
             g_lo, g_hi = (affine_at(parts, w2, design, c, speed) for c in (left, right))
             owner = design * speeds + speed
-            # A cell of the grid's own samples wholly inside this piece, where E is known at
-            # both ends, is polished only if E's end tangents could beat what is known.
-            first, last = piece[0][design], piece[1][design]
-            grid_cell = (left < grid) & on_arc(lo, first, last) & on_arc(hi, first, last) \
-                & (np.mod(last - first, 2.0 * math.pi) > hi - lo)
-            e_lo, e_hi = (affine_at(energy, w2, design, np.minimum(c, grid), speed)
-                          for c in (left, left + 1))
-            bound = tangent_bound(lo, hi, sign * e_lo, sign * e_hi, sign * g_lo, sign * g_hi)
-            known = top[owner] if kind == 0 else -bottom[owner]
-            keep = ~grid_cell | (bound > known)
-            design, speed, lo, hi, g_lo, g_hi, owner = (
-                v[keep] for v in (design, speed, lo, hi, g_lo, g_hi, owner))
             begin = lo + (hi - lo) * (g_lo / (g_lo - g_hi))      # the secant's zero
             roots = newton_zero(slope, lo, hi, begin,
                                 [w2[speed], mean[design], np.full(design.size, sign),
                                  np.full(design.size, cutting)] + [v[design] for v in lengths])[0]
-            inside = on_arc(roots, first[keep], last[keep])
+            inside = on_arc(roots, piece[0][design], piece[1][design])
             design, speed, roots, owner = (v[inside] for v in (design, speed, roots, owner))
             one = d.with_lengths([v[design] for v in lengths])
             value = _energy(one, roots, torque_jet(one, roots, masses), w2[speed], mean[design],

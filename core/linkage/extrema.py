@@ -97,7 +97,7 @@ def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarra
             lo, hi = x[left], x[right] + np.where(inner, 0.0, period)
             s_lo, s_hi = slopes[left], slopes[right]
             v_lo, v_hi = values[left], values[right]
-            bound = tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi)
+            bound = _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi)
             owner = np.ravel_multi_index(index, lead) if lead else np.zeros(cell.size, dtype=int)
             while len(picks) <= k:
                 picks.append([])
@@ -128,7 +128,7 @@ def grid_argmax(fun: Curve, x: np.ndarray, values: np.ndarray, slopes: np.ndarra
     return best.reshape(lead), where.reshape(lead)
 
 
-def tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi):
+def _tangent_bound(lo, hi, v_lo, v_hi, s_lo, s_hi):
     """An upper bound of a curve rising at ``lo`` and falling at ``hi``: where its two end
     tangents meet (exact for a concave cell), with the excess over the samples doubled as
     a margin for cells that are not concave."""
