@@ -17,7 +17,7 @@ import numpy as np
 
 from core.linkage.designs import Designs
 from core.linkage.polish import newton_maximum
-from .jet import TorqueJet, torque_jet
+from .jet import torque_jet
 from .masses import MassProperties
 
 def reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
