@@ -131,33 +131,39 @@ LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=
 SPEEDS_16 = [10.0 * k for k in range(1, 17)]
 
 
-@pytest.mark.parametrize("rod", [False, pytest.param(True, marks=pytest.mark.xfail(
-    strict=False, reason="the rod variant's loaded row measured 8.3-10.3 unloaded rows (29 "
-                         "November, load average 9-12): the target is not reliably met"))],
-    ids=["block", "rod"])
+@pytest.mark.parametrize("rod", [False, True], ids=["block", "rod"])
 def test_loaded_row_at_most_10_unloaded_rows(benchmark, rod):
     """Issue 42, item 12: a loaded sweep row costs at most 10 unloaded ones (2000 designs, one
     speed, the best of 5 alternating runs of each; 215× before the sweep's own bracketing
-    grid, 22–28× on 360 intervals, 6–10× now, the rod variant at the limit). ``-s``
-    prints the times; the figures are in docs/performance.md."""
+    grid, 22–28× on 360 intervals, 6–10× with Brent's polish, 3.5–8× with Newton's on the
+    closed-form slope). ``-s`` prints the times; the figures are in docs/performance.md."""
     values = _values(2000, rod=rod)
     plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD if rod else SPEC_BLOCK, values,
                                                          [40.0], LOADS, 5), rounds=1, iterations=1)
     print(f"\n1 speed: unloaded {plain * 1e6:.0f} µs/row, loaded {loaded * 1e6:.0f} µs/row, "
           f"ratio {loaded / plain:.1f}")
-    assert loaded / plain <= 10.0
+    # The target when measured; the suite's smoke run shares the machine with its other
+    # worker, where a margin keeps it from failing on the neighbour's load.
+    assert loaded / plain <= (10.0 if not benchmark.disabled else 13.0)
 
 
 @pytest.mark.parametrize("rod", [False, True], ids=["block", "rod"])
 def test_loaded_row_at_16_speeds(benchmark, rod):
-    """The issue's own case, 16 speeds: each speed has its own torque and energy extrema to
-    polish while an unloaded row scales one set of peaks, so the ratio grows with the speeds.
-    Not yet at 10 (docs/performance.md); this guards what was reached (74× block and 95× rod
-    on 360 intervals, 18–36× now)."""
+    """The issue's own case, 16 speeds, held to the same 10: each speed has its own torque and
+    energy extrema while an unloaded row scales one set of peaks, but the torque's slope is
+    affine in ω², so which cells hold an extremum at each speed comes from one binary search
+    per sample, and only those are polished (74× block and 95× rod on 360 intervals, 18–36×
+    with Brent's polish, 7.7–12.3× now: docs/performance.md)."""
     values = _values(500, rod=rod)
     plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD if rod else SPEC_BLOCK, values,
                                                          SPEEDS_16, LOADS, 2), rounds=1,
                                        iterations=1)
     print(f"\n16 speeds: unloaded {plain * 1e6:.0f} µs/row, loaded {loaded * 1e6:.0f} µs/row, "
           f"ratio {loaded / plain:.1f}")
-    assert loaded / plain <= 40.0
+    # 15, not the 40 this guarded before, in the suite's smoke run too (2 rounds, the machine
+    # shared with its other worker). The issue's 10 is met only on some runs (7.7-12.3
+    # measured, docs/performance.md): a miss when measured is an expected failure.
+    assert loaded / plain <= 15.0
+    if not benchmark.disabled and loaded / plain > 10.0:
+        pytest.xfail(f"16 speeds: a loaded row measured {loaded / plain:.1f} unloaded rows, "
+                     "over the 10 of issue 42 (not reliably met, docs/performance.md)")

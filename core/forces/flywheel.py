@@ -14,12 +14,13 @@ import numpy as np
 
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
-from .dynamics import (ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs, _eliminate,
-                       equivalent_inertia)
+from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
+from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
+from .torque_peaks import DIRECT_SPEEDS, affine_at, on_arc, piece_peaks, turning_cells
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
-from core.linkage.kinematics import CROWD_OFFSETS, Shape, needs_crowding, ram_origin, shape, sharp_angles
+from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, ram_origin, sharp_angles
 
 
 def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
@@ -95,71 +96,43 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     """
     omega = np.asarray(omega, dtype=float)
     size = designs.shape[0] if designs.shape else 1
-    chunk = max(1, SUMMARY_SAMPLES // ((intervals + 1) * max(omega.size, 1)))
+    # Arrays over designs × speeds × angles are formed only for the curves and for a few
+    # speeds (core.forces.torque_peaks.DIRECT_SPEEDS); otherwise the per-speed arrays are
+    # the cells found, some 5 per design and speed for the torque alone, each evaluated
+    # through the jet's temporaries: a chunk shrinks with a quarter of the speeds (at 16
+    # speeds, 10^4 designs peaked at 199 MB without it, 104 MB before).
+    per_design = max(omega.size, 1) if curves or omega.size <= DIRECT_SPEEDS \
+        else -(-omega.size // 4)
+    chunk = max(1, SUMMARY_SAMPLES // ((intervals + 1) * per_design))
     parts = [_summary_chunk(designs.take(slice(i, i + chunk)), omega, masses, intervals, curves, peaks)
              for i in range(0, size, chunk)]
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
-
-
-def _torque_parts(design, sh: Shape, masses: MassProperties,
-                  omega: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Driving torque without the cut as (part the same at every speed, part per unit ω²),
-    N·m, so that the torque at speed ω is the first plus ω² times the second; the cut adds
-    P·dCx/dφ (virtual work) where it acts.
-
-    Given ``omega`` of one speed: that speed's whole torque and zero, from one elimination
-    instead of the two (static, per unit ω²) that many speeds share (a sixth of a loaded
-    one-speed sweep's time went to the second)."""
-    if omega is not None and np.size(omega) == 1:
-        torque = _torque_at(design, sh, masses, float(np.ravel(omega)[0]) ** 2, 0.0)
-        torque = np.broadcast_to(torque, np.shape(sh.ram1))
-        return torque, np.zeros(torque.shape)
-    lead = (2,) + (1,) * np.ndim(sh.ram1)
-    w2 = np.array([0.0, 1.0]).reshape(lead)
-    g = np.array([masses.g, 0.0]).reshape(lead)
-    torque = np.broadcast_to(_eliminate(design, sh, masses, w2, g, 0.0)["crank_torque"],
-                             (2,) + np.shape(sh.ram1))
-    return torque[0], torque[1]
-
-
-def _torque_at(design, sh: Shape, masses: MassProperties, w2, cutting) -> np.ndarray:
-    """Driving torque at the shape's angles for each point's own ω² and cut switch
-    (1 while cutting, else 0), N·m: what the polishes evaluate.
-
-    One elimination with ω² and gravity given per point, not :func:`_torque_parts`'s two
-    (static and per unit ω²) combined afterwards: every load is linear in (ω², g, P), so
-    the value is the same to rounding, at half the work of each polishing step.
-    """
-    torque = _eliminate(design, sh, masses, w2, masses.g, 0.0)["crank_torque"]
-    return torque + cutting * (masses.cut_force_N * MM) * sh.ram1
 
 
 def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, intervals: int,
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
-    sh = shape(col, phi)
-    samples = _torque_samples(d, sh, masses, omega)
-    on, off = cut_window(d, masses.idle_fraction, sh)
+    grid = torque_jet(col, phi, masses)                           # (designs, intervals + 1)
+    samples = _torque_samples(d, grid, masses)
+    on, off = cut_window(d, masses.idle_fraction, (phi, grid.ram_x))
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
-    mean = np.broadcast_to(mean[:, None], (mean.size, omega.size))
-    w2 = (omega ** 2)[None, :, None]
-    start = _stored(col, shape(col, np.zeros(1)), masses)
-    energy = _energy(col, sh, w2, mean[..., None], masses, start)
-    top, bottom = _energy_extremes(d, samples, energy, start, omega, mean, (on, off), masses)
+    start = (grid.kinetic[:, :1], grid.potential[:, :1])          # φ = 0 is the grid's first
+    top, bottom = _energy_extremes(d, samples, start, omega, mean, (on, off), masses)
     swing = top - bottom
-    je = equivalent_inertia(col, sh, masses)
-    je = np.broadcast_to(je, sh.ram1.shape)
+    je = 2.0 * grid.kinetic                                       # the kinetic energy is ½·J_e
     if peaks:
         high, low = _torque_peaks(d, samples, omega, masses, (on, off))
     else:
-        high = low = np.full(mean.shape, np.nan)
-    out = {"mean_torque_N_m": np.array(mean), "max_torque_N_m": high, "min_torque_N_m": low,
+        high = low = np.full(top.shape, np.nan)
+    out = {"mean_torque_N_m": np.repeat(mean[:, None], omega.size, axis=1),
+           "max_torque_N_m": high, "min_torque_N_m": low,
            "energy_fluctuation_J": swing,
            "flywheel_inertia_kg_m2": swing / (omega[None, :] ** 2 * masses.delta),
            "equivalent_inertia_mean_kg_m2": np.mean(je[:, :-1], axis=-1)}  # periodic: drop the end
     if curves:
-        out.update(energy=energy, equivalent_inertia=je)
+        out.update(energy=_energy(col, phi, grid, (omega ** 2)[None, :, None],
+                                  mean[:, None, None], masses, start), equivalent_inertia=je)
     return out
 
 
@@ -173,40 +146,26 @@ def cut_work(d: Designs, masses: MassProperties) -> np.ndarray:
     return masses.cut_force_N * (1.0 - 2.0 * masses.idle_fraction) * np.asarray(d.stroke) * MM
 
 
-def _stored(d, sh: Shape, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
-    """(kinetic energy per unit ω², potential energy), J, of the moving links at the
-    shape's angles.
-
-    The driving torque less the cut is the rate of change of this stored energy
-    (energy balance of a frictionless chain at constant crank speed), so the
-    work done up to any angle is a difference of two closed-form values: the
-    energy curve needs no quadrature and is exact at any angle, not only on a
-    grid. The ram moves level, so its weight stores nothing; the crank is
-    balanced and turns steadily, so its energy is constant.
-    """
-    kinetic = 0.5 * equivalent_inertia(d, sh, masses)
-    tip_y = sh.lever_tip[1] * MM
-    height = (masses.lever_mass_kg * masses.lever_cg(d) / d.lever * tip_y
-              + masses.block_mass_kg * sh.crank_pin[1] * MM)
-    if sh.rod is not None:
-        height = height + masses.rod_mass_kg * tip_y / 2.0        # the rod's other end is level
-    return kinetic, masses.g * height
-
-
-def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
+def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassProperties,
             start: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
-    """E(φ) = work of (driving torque − mean torque) from φ = 0, J, at the shape's angles.
+    """E(φ) = work of (driving torque − mean torque) from φ = 0, J, at angles ``phi``.
 
-    Stored energy gained since φ = 0, plus the cut's work so far (P times the
-    distance cut, exact at any angle: torque·ω = P·v while cutting), less the
-    mean torque's work. ``start`` is :func:`_stored` at φ = 0; ``w2`` and
-    ``mean`` broadcast against the angles' shape with a speed axis before it
-    (or elementwise, for flat arrays of points).
+    The driving torque less the cut is the rate of change of the energy the links store,
+    ω²·K + V (energy balance of a frictionless chain at constant crank speed; the ram moves
+    level, so its weight stores nothing, and the crank is balanced and turns steadily, so
+    its energy is constant), so the work done up to any angle is a difference of two
+    closed-form values: the energy curve needs no quadrature and is exact at any angle, not
+    only on a grid. E is the stored energy gained since φ = 0, plus the cut's work so far
+    (P times the distance cut, exact at any angle: torque·ω = P·v while cutting), less the
+    mean torque's work. ``stored`` is the :class:`~core.forces.jet.TorqueJet` at ``phi``
+    (its kinetic, potential and ram_x are read), ``start`` its (kinetic, potential) at
+    φ = 0; ``w2`` and ``mean`` broadcast against the angles' shape with a speed axis before
+    it (or elementwise, for flat arrays of points).
     """
-    kinetic, potential = _stored(d, sh, masses)
-    x = sh.ram_joint[0] - ram_origin(d)
+    kinetic, potential = stored.kinetic, stored.potential
+    x = stored.ram_x - ram_origin(d)
     idle = masses.idle_fraction * d.stroke
-    turn = np.broadcast_to(np.mod(sh.phi, 2.0 * math.pi), np.shape(x))
+    turn = np.broadcast_to(np.mod(phi, 2.0 * math.pi), np.shape(x))
     travel = np.where(turn <= math.pi + d.theta, np.clip(x, idle, d.stroke - idle) - idle,
                       d.stroke - 2.0 * idle)
     if np.ndim(w2) > np.ndim(kinetic):                           # a speed axis before the angles
@@ -216,150 +175,99 @@ def _energy(d, sh: Shape, w2, mean, masses: MassProperties,
             + masses.cut_force_N * MM * travel - mean * turn)
 
 
-def _energy_extremes(d: Designs, samples: tuple, energy: np.ndarray,
-                     start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
+def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
                      window: tuple[np.ndarray, np.ndarray],
                      masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
-    """Largest and smallest E(φ) per design and speed, exactly, J.
+    """Largest and smallest E(φ) per design and speed, exactly, J, each (designs, speeds).
 
-    E is smooth except at the cut's two switch angles, where the torque jumps
-    and E has a kink: those are candidates, with E at every sample and at every
-    zero of its slope T − T_mean inside each smooth piece. The slope of each
-    piece (torque with and without the cut) is smooth over the whole cycle, so
-    each is bracketed at every sign change on the grid (plus, for the rod
-    variant, samples crowding toward the sharp angles), every bracket is
-    polished (not only the best few: E may have several nearly equal peaks),
-    and a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
-    ``start`` is :func:`_stored` at φ = 0, ``window`` the cut's switch angles.
+    E is continuous and smooth except at the cut's two switch angles, where the torque
+    jumps and E has a kink, so its extremes lie at a kink or at a zero of its slope
+    T − T_mean inside a smooth piece. The slope of each piece (torque with and without the
+    cut) is smooth over the whole cycle and affine in ω², so its sign changes at every speed
+    are found on the samples at once (:func:`core.forces.torque_peaks.turning_cells`: the
+    grid's, plus the rod variant's samples crowding toward its sharp angles), and each is
+    polished by Newton's method on the closed-form slope (every one: E may have several
+    nearly equal peaks, and skipping cells by their end tangents missed some near a rod's
+    sharp angles); a zero counts only inside its own piece. ``samples`` are
+    :func:`_torque_samples`'s, ``start`` the stored energy (kinetic, potential) at φ = 0,
+    ``mean`` the mean torque (designs,), ``window`` the cut's switch angles.
     """
-    from core.linkage.extrema import sign_changes
-    from core.linkage.polish import bracket_root
+    from core.linkage.polish import newton_zero
 
     on, off = window
-
-    count, speeds = mean.shape
+    count, speeds = mean.size, omega.size
     col = d.column()
-    x, stat, iner, ram1, segments = samples
-    w2 = (omega ** 2)[None, :, None]
-    cut = masses.cut_force_N * MM
-    top = energy.max(axis=-1).reshape(-1)
-    bottom = energy.min(axis=-1).reshape(-1)
-    ends = np.stack([on, off], axis=-1)                           # the kinks, (designs, 2)
-    at_ends = _energy(col, shape(col, ends), w2, mean[..., None], masses,
-                      start).reshape(count * speeds, 2)
-    top, bottom = np.fmax(top, at_ends.max(axis=-1)), np.fmin(bottom, at_ends.min(axis=-1))
-    lengths = [np.broadcast_to(v[:, None], (count, speeds)).reshape(-1) for v in d.lengths()]
-    flat_w2 = np.broadcast_to(w2[..., 0], (count, speeds)).reshape(-1)
-    flat_mean = mean.reshape(-1)
+    x, jet, segments = samples
+    w2 = omega ** 2
+    kinks = np.stack([on, off], axis=-1)
+    at_ends = _energy(col, kinks, torque_jet(col, kinks, masses), w2[None, :, None],
+                      mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
+    top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
+    lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
 
-    def slope(phi, w2, mean, cutting, *lengths):
-        one = d.with_lengths(lengths)
-        return _torque_at(one, shape(one, phi), masses, w2, cutting) - mean
+    def slope(phi, w2, mean, sign, cutting, *lengths):
+        one = torque_jet(d.with_lengths(lengths), phi, masses)
+        g = one.static + w2 * one.inertial + cutting * one.cut - mean
+        return g, sign * g, sign * (one.static1 + w2 * one.inertial1 + cutting * one.cut1)
 
-    for cutting in (1.0, 0.0):
-        samples = stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :] \
-            - mean[..., None]
-        cells = sign_changes(x[:, None, :], samples, segments)
-        # Only the cells that can hold a zero of this piece: the rest would be polished
-        # only to be dropped below (half of them: each curve is the slope over one piece).
-        owner, lo, hi, f_lo, f_hi = (v[_reaches(cells[1], cells[2], on[cells[0] // speeds],
-                                                off[cells[0] // speeds], bool(cutting))]
-                                     for v in cells)
-        if owner.size == 0:
-            continue
-        args = [flat_w2[owner], flat_mean[owner]]
-        roots = bracket_root(slope, lo, hi, args + [np.full(owner.size, cutting)]
-                             + [v[owner] for v in lengths], f_lo=f_lo, f_hi=f_hi)
-        design = owner // speeds
-        turn = np.mod(roots, 2.0 * math.pi)
-        inside = (turn >= on[design]) & (turn <= off[design])
-        keep = np.flatnonzero(inside if cutting else ~inside)
-        owner, design, roots = owner[keep], design[keep], roots[keep]
-        one = d.with_lengths([v[owner] for v in lengths])
-        value = _energy(one, shape(one, roots), flat_w2[owner], flat_mean[owner], masses,
-                        tuple(np.broadcast_to(v, (count, 1))[design, 0] for v in start))
-        np.fmax.at(top, owner, value)
-        np.fmin.at(bottom, owner, value)
+    for cutting, piece in ((1.0, (on, off)), (0.0, (off, on))):
+        parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
+        for kind, (design, speed, left, right, lo, hi) in turning_cells(
+                x, parts, w2, segments, piece, bool(cutting)):
+            sign = 1.0 - 2.0 * kind                                # E's maximum, or its minimum
+            g_lo, g_hi = (affine_at(parts, w2, design, c, speed) for c in (left, right))
+            owner = design * speeds + speed
+            begin = lo + (hi - lo) * (g_lo / (g_lo - g_hi))      # the secant's zero
+            roots = newton_zero(slope, lo, hi, begin,
+                                [w2[speed], mean[design], np.full(design.size, sign),
+                                 np.full(design.size, cutting)] + [v[design] for v in lengths])[0]
+            inside = on_arc(roots, piece[0][design], piece[1][design])
+            design, speed, roots, owner = (v[inside] for v in (design, speed, roots, owner))
+            one = d.with_lengths([v[design] for v in lengths])
+            value = _energy(one, roots, torque_jet(one, roots, masses), w2[speed], mean[design],
+                            masses, tuple(v[design, 0] for v in start))
+            np.fmax.at(top, owner, value)
+            np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
 
 
-def _reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
-             cutting: bool) -> np.ndarray:
-    """Which cells [lo, hi] (rad, hi − lo < 2π, either may lie beyond [0, 2π)) reach into the
-    cut [on, off] (``cutting``) or into the rest of the cycle: those where a zero can lie
-    that :func:`_energy_extremes` keeps, which takes the crank angle modulo 2π. Kept with a
-    margin of 1e-9 rad, so a zero on a switch angle is never lost to rounding."""
-    first = np.mod(lo, 2.0 * math.pi)
-    last = first + (hi - lo)                       # beyond 2π where the cell wraps
-    slack = 1e-9
-    if cutting:
-        return ((first <= off + slack) & (last >= on - slack)) | \
-            (last - 2.0 * math.pi >= on - slack)
-    return ~((first > on + slack) & (last < off - slack))
+def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tuple:
+    """The torque's samples that bracket its extrema and those of the energy: (φ, its
+    :class:`~core.forces.jet.TorqueJet` there, segments), each array (designs, samples).
 
-
-def _torque_samples(d: Designs, sh: Shape, masses: MassProperties,
-                    omega: np.ndarray) -> tuple:
-    """The torque's samples that bracket its extrema and those of the energy: (φ, part the
-    same at every speed, part per unit ω², dCx/dφ, segments), each array (designs, samples),
-    the parts as :func:`_torque_parts` gives them for the speeds ``omega``.
-
-    The grid's periodic samples (one wrapping segment) and, where any design of the
-    chunk needs them, samples crowding toward the rod variant's sharp angles (one
-    segment each), where its torque can change faster than the grid resolves.
+    The grid's periodic samples (``grid``, the jet on a closed uniform grid: one wrapping
+    segment without its closing sample) and, where any design of the chunk needs them,
+    samples crowding toward the rod variant's sharp angles (one segment each), where its
+    torque can change faster than the grid resolves. Every array is the same at all
+    speeds: a speed's torque and slope are sums of them.
     """
     col = d.column()
-    static, inertial = _torque_parts(col, sh, masses, omega)
-    phi = sh.phi[:-1]
-    x = [np.broadcast_to(phi, static[:, :-1].shape)]
-    stat, iner = [static[:, :-1]], [inertial[:, :-1]]
-    ram1 = [np.broadcast_to(sh.ram1, static.shape)[:, :-1]]
-    segments = [(0, phi.size, 2.0 * math.pi)]
+    n = grid.static.shape[-1] - 1
+    x = [np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1)[:-1], (d.shape[0], n))]
+    jets = [TorqueJet(*(np.broadcast_to(v, (d.shape[0], n + 1))[:, :-1] for v in grid))]
+    segments = [(0, n, 2.0 * math.pi)]
     if needs_crowding(d).any():                       # the whole chunk, if any design
         for j in range(4):
-            at = sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS
-            crowd = shape(col, at)
-            s_j, i_j = _torque_parts(col, crowd, masses, omega)
-            start = sum(a.shape[-1] for a in x)
-            x.append(at)
-            stat.append(s_j)
-            iner.append(i_j)
-            ram1.append(crowd.ram1)
+            x.append(sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS)
+            jets.append(TorqueJet(*(np.broadcast_to(v, x[-1].shape)
+                                    for v in torque_jet(col, x[-1], masses))))
+            start = segments[-1][1]
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
-    x, stat, iner, ram1 = (np.concatenate(v, axis=-1) for v in (x, stat, iner, ram1))
-    return x, stat, iner, ram1, segments
+    if len(x) == 1:
+        return x[0], jets[0], segments
+    return (np.concatenate(x, axis=-1),
+            TorqueJet(*(np.concatenate(v, axis=-1) for v in zip(*jets))), segments)
 
 
 def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
                   window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
-    The torque is T0 = static + ω²·inertial (``samples``, :func:`_torque_samples`) without the cut and T1 = T0 + P·dCx/dφ
-    while cutting: two smooth curves, switched at the ends of the cut (``window``,
-    from :func:`cut_window`). The peak is the larger of T1's maximum over the cut,
-    T0's over the rest, and both one-sided values at each switch. Each maximum is
-    bracketed on the samples of :func:`_torque_samples` and polished on the closed
-    form (:func:`core.linkage.extrema.piece_maximum`).
+    The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + cut while
+    cutting (:class:`~core.forces.jet.TorqueJet`): two smooth curves, switched at the ends of
+    the cut (``window``, from :func:`cut_window`). The peak is the larger of T1's maximum over
+    the cut, T0's over the rest, and both one-sided values at each switch: see
+    :func:`core.forces.torque_peaks.piece_peaks`, which brackets each maximum where the
+    slope sampled by :func:`_torque_samples` turns and polishes it by Newton's method.
     """
-    from core.linkage.extrema import piece_maximum
-
-    period = 2.0 * math.pi
-    x, stat, iner, ram1, segments = samples
-    on, off = window
-    cut = masses.cut_force_N * MM
-    w2 = (omega ** 2)[None, :, None]
-    lengths = [v[:, None, None] for v in d.lengths()]
-
-    def torque(phi, w2, sign, cutting, *lengths):
-        one = d.with_lengths(lengths)
-        return sign * _torque_at(one, shape(one, phi), masses, w2, cutting)
-
-    # Four curves per design and speed, stacked: (max, min) × (cutting, not cutting).
-    sign = np.array([1.0, 1.0, -1.0, -1.0])[:, None, None, None]
-    cutting = np.array([1.0, 0.0, 1.0, 0.0])[:, None, None, None]
-    samples = sign * (stat[:, None, :] + w2 * iner[:, None, :] + cutting * cut * ram1[:, None, :])
-    lo = np.stack([on, off, on, off])[:, :, None]
-    hi = np.stack([off, on, off, on])[:, :, None]
-    best = piece_maximum(torque, x[:, None, :], samples, lo, hi,
-                         args=[w2, sign, cutting] + lengths, segments=segments, period=period)
-    return np.fmax(best[0], best[1]), -np.fmax(best[2], best[3])
+    return piece_peaks(d, samples, omega, masses, window)

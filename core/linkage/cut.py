@@ -23,7 +23,7 @@ from functools import lru_cache
 import numpy as np
 
 from .designs import Designs
-from .kinematics import Shape, ram_origin, shape
+from .kinematics import Shape, ram_origin, ram_position
 from .polish import bracket_root
 
 # Uniform samples per cycle that bracket the switch angles before they are polished (the
@@ -56,14 +56,15 @@ def cutting_force(design, sh: Shape, masses) -> np.ndarray:
 
 
 def cut_window(d: Designs, idle_fraction: float,
-               sh: Shape | None = None) -> tuple[np.ndarray, np.ndarray]:
+               grid: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Crank angles (rad, in [0, π + θ]) where the cut starts and ends, each of d's shape:
     the ram, advancing on the working stroke φ ∈ [0, π + θ], reaches idle·H and
     (1 − idle)·H (see :func:`cutting_force`). Used by the cycle summary and the
     positions table's special rows.
 
-    Each is bracketed between the samples of ``sh`` (one-dimensional ``d``, one design
-    per row, uniform φ over the cycle; by default ``ENERGY_INTERVALS`` steps) and
+    Each is bracketed between the samples of ``grid``, (φ, the ram joint's x in mm) for
+    one-dimensional ``d``, one design per row, uniform φ over the cycle (by default
+    ``WINDOW_INTERVALS`` steps), and
     polished as a root of the closed-form displacement. A switch at or before φ = 0
     (idle 0, or an idle·H below round-off) is 0; one never reached is π + θ.
 
@@ -74,15 +75,16 @@ def cut_window(d: Designs, idle_fraction: float,
     """
     if idle_fraction == 0.0:
         return np.zeros(np.shape(d.theta)), math.pi + np.asarray(d.theta, dtype=float)
-    if sh is None:
-        sh = shape(d.column(), np.linspace(0.0, 2.0 * math.pi, WINDOW_INTERVALS + 1))
+    if grid is None:
+        phi = np.linspace(0.0, 2.0 * math.pi, WINDOW_INTERVALS + 1)
+        grid = phi, ram_position(d.column(), phi)
+    phi, ram_x = grid
     idle = idle_fraction * d.stroke
     origin = ram_origin(d)
     targets = np.stack([idle, d.stroke - idle]) + origin            # Cx at the two switches
     end = np.broadcast_to(math.pi + d.theta, targets.shape)
-    phi = sh.phi
     working = phi <= end[..., None]
-    reached = (sh.ram_joint[0][None] >= targets[..., None]) & working
+    reached = (ram_x[None] >= targets[..., None]) & working
     first = np.argmax(reached, axis=-1)
     # Not reached on a grid sample: between the last sample of the working stroke and its
     # end, where the ram is at H (a dead point between samples, or a sample on π + θ that
@@ -96,7 +98,7 @@ def cut_window(d: Designs, idle_fraction: float,
     lengths = [np.broadcast_to(v, targets.shape) for v in d.lengths()]
 
     def travel(phi, target, *lengths):
-        return shape(d.with_lengths(lengths), phi).ram_joint[0] - target
+        return ram_position(d.with_lengths(lengths), phi) - target
 
     if inner.any():
         root[inner] = bracket_root(travel, lo[inner], hi[inner],

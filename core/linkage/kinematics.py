@@ -326,10 +326,15 @@ def ram_origin(design: Design | Designs) -> float | np.ndarray:
 
     Only the joint's terms, not a whole :class:`Shape`: a Shape's assembly for one angle
     took a sixth of the kinematics cycle's time."""
-    beta = math.pi + np.asarray(design.theta) / 2.0 - np.zeros(1)
-    lever = _lever_terms(design, np.cos(beta), np.sin(beta))
-    x = _ram_terms(design, _tip_terms(design, lever)).joint[0]
+    x = ram_position(design, np.zeros(1))
     return x if isinstance(design, Designs) else float(x[0])
+
+
+def ram_position(design: Design | Designs, phi: np.ndarray) -> np.ndarray:
+    """Cx, the ram joint's x at crank angles ``phi``, mm: the joint's terms alone."""
+    beta = math.pi + np.asarray(design.theta) / 2.0 - np.asarray(phi, dtype=float)
+    lever = _lever_terms(design, np.cos(beta), np.sin(beta))
+    return _ram_terms(design, _tip_terms(design, lever)).joint[0]
 
 
 @dataclass(frozen=True)

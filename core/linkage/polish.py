@@ -71,7 +71,7 @@ def newton_maximum(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]]
                    lo: np.ndarray, hi: np.ndarray, v_lo: np.ndarray, v_hi: np.ndarray,
                    s_lo: np.ndarray, s_hi: np.ndarray,
                    args: Sequence[np.ndarray] = (), iterations: int = 60,
-                   ) -> tuple[np.ndarray, np.ndarray]:
+                   gain: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """(x, value) of the maximum of each curve in its cell [lo, hi], across which its slope
     turns from rising (``s_lo`` > 0) to falling (``s_hi`` ≤ 0); 1-D arrays.
 
@@ -85,10 +85,29 @@ def newton_maximum(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]]
     a step is within 1e-12·(1 + |x|), as for :func:`bracket_root`; x is then
     the last point evaluated (within that of the zero, so its value is the
     maximum's to ~1e-24 relative) and the value is fun's there.
+
+    With ``gain`` > 0 a curve is also done when the step's predicted rise of the value,
+    slope²/(2·|curvature|) (exact for the quadratic the step solves), is at most ``gain``
+    times the value's size: its value is then the maximum's to about that, one evaluation
+    sooner (the loaded sweep's torque peaks: ``gain`` 1e-15, three evaluations became two).
     """
     a, b = np.array(lo, dtype=float), np.array(hi, dtype=float)
-    args = [np.broadcast_to(np.asarray(v), a.shape) for v in args]
     x = a + (b - a) * _cubic_top(v_lo, v_hi, s_lo * (b - a), s_hi * (b - a))
+    return newton_zero(fun, a, b, x, args, iterations, gain)
+
+
+def newton_zero(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]],
+                lo: np.ndarray, hi: np.ndarray, start: np.ndarray,
+                args: Sequence[np.ndarray] = (), iterations: int = 60, gain: float = 0.0,
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """(x, value) where the slope of each curve falls through zero in [lo, hi] (positive at
+    ``lo``, not at ``hi``), by Newton's method from ``start`` kept inside the bracket;
+    ``fun`` and the result as in :func:`newton_maximum`, which is this from the cubic's top.
+    A zero of any function g with a known slope is such a point of a curve whose slope is
+    g: ``fun`` may return (anything, g, g′)."""
+    a, b = np.array(lo, dtype=float), np.array(hi, dtype=float)
+    args = [np.broadcast_to(np.asarray(v), a.shape) for v in args]
+    x = np.array(start, dtype=float)
     root, value = x.copy(), np.full(a.shape, np.nan)
     live = np.arange(a.size)
     part = list(args)
@@ -105,6 +124,8 @@ def newton_maximum(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]]
         inside = (ahead > a) & (ahead < b)                        # False for NaN
         tol = 1e-12 * (1.0 + np.abs(x))
         done = (np.abs(step) <= tol) | (g == 0.0) | ~(b - a > tol)
+        if gain > 0.0:
+            done |= inside & (np.abs(0.5 * g * step) <= gain * np.abs(v))   # False for NaN
         x = np.where(inside, ahead, 0.5 * (a + b))
         if done.any():
             keep = ~done

@@ -85,34 +85,48 @@ def ram_rates(design: Design | Designs, tip: _Tip, bx3: np.ndarray, d3: np.ndarr
     return Rates(ram.c1, ram.c2, bx3 + design.rod_sign * _rod3(ram, d3))
 
 
-def rates4_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray,
-              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """dCx/dφ … d⁴Cx/dφ⁴: :func:`rates_at`'s three (the same arithmetic) and the fourth, the
-    slope of the third, for Newton's method on the peaks of |d²Cx/dφ²|.
+def lever_jet(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray,
+              ) -> tuple[_Lever, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The lever's terms with ψ‴ and ψ⁗, and the tip's third and fourth derivatives B‴, B⁗
+    ((2, …) mm/rad³, mm/rad⁴): what the ram's and the loads' higher rates are built from.
 
     With L = L1·L2: ψ⁗ = L(L2² − L1²)·cos β·(q² − 12L·q·sin β − 24L²cos²β)/q⁴; the
-    tip B⁗ = L3((ψ⁗ − 6ψ′²ψ″)n − (4ψ′ψ‴ + 3ψ″² − ψ′⁴)u); the rod's reach
-    r⁗ = −(3r″² + 4r′r‴ + 3d″² + 4d′d‴ + d·d⁗)/r.
+    tip B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u) and B⁗ = L3((ψ⁗ − 6ψ′²ψ″)n − (4ψ′ψ‴ + 3ψ″² − ψ′⁴)u).
     """
     lv = _lever_terms(design, cos_beta, sin_beta)
-    ram = _ram_terms(design, _tip_terms(design, lv))
     w3 = _lever3(design, lv.q, cos_beta, sin_beta)
-    bx3, d3 = _tip3(design, lv, w3)
     (ux, uy), w1, w2 = lv.u, lv.lever1, lv.lever2
     l1, l2, l3, q = design.crank, design.frame, design.lever, lv.q
     l12 = l1 * l2
     w4 = (l12 * (l2 * l2 - l1 * l1)) * cos_beta \
         * (q * q - (12.0 * l12) * sin_beta * q - (24.0 * l12 * l12) * cos_beta * cos_beta) / (q * q) ** 2
     sq = w1 * w1
-    normal = w4 - 6.0 * sq * w2                          # B⁗ = L3(normal·n − along·u)
-    along = 4.0 * w1 * w3 + 3.0 * w2 * w2 - sq * sq
-    bx4 = l3 * (normal * uy - along * ux)
-    if design.rod is None:
-        return ram.c1, ram.c2, bx3, bx4
-    d4 = l3 * (normal * ux + along * uy)                  # d⁗ = −B⁗y
-    r3 = _rod3(ram, d3)
-    # with d′ = −By′, d″ = −By″: 3d″² = 3By″², 4d′d‴ = −4By′·d‴
+    normal3, along3 = w3 - sq * w1, 3.0 * w1 * w2         # B‴ = L3(normal·n − along·u)
+    normal4 = w4 - 6.0 * sq * w2                          # B⁗ = L3(normal·n − along·u)
+    along4 = 4.0 * w1 * w3 + 3.0 * w2 * w2 - sq * sq
+    b3 = np.stack([l3 * (normal3 * uy - along3 * ux), -l3 * (normal3 * ux + along3 * uy)])
+    b4 = np.stack([l3 * (normal4 * uy - along4 * ux), -l3 * (normal4 * ux + along4 * uy)])
+    return lv, w3, w4, b3, b4
+
+
+def reach_jet(ram: _Ram, by3: np.ndarray, by4: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The rod's reach r = sqrt(L4² − d²), d = guide − By: (r‴, r⁗), from
+    r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r and r⁗ = −(3r″² + 4r′r‴ + 3d″² + 4d′d‴ + d·d⁗)/r
+    (d′ = −By′ and so on: the sign flips are exact)."""
+    r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.rise1 * ram.rise2 - ram.depth * by3) / ram.reach
     r4 = -(3.0 * ram.reach2 ** 2 + 4.0 * ram.reach1 * r3 + 3.0 * ram.rise2 ** 2
-           - 4.0 * ram.rise1 * d3 + ram.depth * d4) / ram.reach
+           + 4.0 * ram.rise1 * by3 - ram.depth * by4) / ram.reach
+    return r3, r4
+
+
+def rates4_at(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray,
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """dCx/dφ … d⁴Cx/dφ⁴: :func:`rates_at`'s three and the fourth, the slope of the third,
+    for Newton's method on the peaks of |d²Cx/dφ²| (:func:`lever_jet`, :func:`reach_jet`)."""
+    lv, _, _, b3, b4 = lever_jet(design, cos_beta, sin_beta)
+    ram = _ram_terms(design, _tip_terms(design, lv))
+    if design.rod is None:
+        return ram.c1, ram.c2, b3[0], b4[0]
+    r3, r4 = reach_jet(ram, b3[1], b4[1])
     sign = design.rod_sign
-    return ram.c1, ram.c2, bx3 + sign * r3, bx4 + sign * r4
+    return ram.c1, ram.c2, b3[0] + sign * r3, b4[0] + sign * r4

@@ -88,8 +88,8 @@ def test_end_is_where_the_ram_stands_still_for_many_designs_at_once(crank, over,
     frame = over * crank * 1.2
     design = from_dimensions(crank, frame, length * (frame + crank), guide="chord")
     many = Designs.of(design)
-    sh = shape(many.column(), np.linspace(0.0, 2 * math.pi, 3601))
-    on, off = cut_window(many, 0.0, sh)
+    phi = np.linspace(0.0, 2 * math.pi, 3601)
+    on, off = cut_window(many, 0.0, (phi, shape(many.column(), phi).ram_joint[0]))
     assert on[0] == 0.0
     at = shape(design, off)
     a = at.crank_pin[:, 0]
