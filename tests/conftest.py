@@ -27,7 +27,7 @@ from shaperapp.window.main_window import MainWindow  # noqa: E402
 from gui_helpers import main_window, shown  # noqa: E402
 from modal_watchdog import ModalWatchdog  # noqa: E402
 
-pytest_plugins = ["hang_guard"]
+pytest_plugins = ["hang_guard", "qt_exit"]
 
 # Hypothesis profiles (HYPOTHESIS_PROFILE, "ci" unless set): "ci" draws a share of each
 # slow random sweep's examples (tests/sweeps.py), "thorough" all of them. Both print the

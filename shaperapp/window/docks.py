@@ -86,7 +86,7 @@ class Docks:
         dock, w = self.docks["library"], self._window
         if shown and not dock.isFloating() and w.dockWidgetArea(dock) in (BOTTOM, TOP):
             self.pane("library")        # built now if it was not, so that its size counts
-            QTimer.singleShot(0, self._fit_library)
+            QTimer.singleShot(0, w, self._fit_library)    # dropped if the window goes first
 
     def _fit_library(self) -> None:
         """Docked under the plots on a laptop screen the library made the window taller
@@ -105,7 +105,7 @@ class Docks:
             frame = QRect(0, 0, size.width(), size.height())
             frame.moveCenter(screen.center())           # at most 80 % × 70 % of it: inside
             dock.setGeometry(frame)
-            QTimer.singleShot(0, lambda: self._back_on_screen(room))   # once the window's
+            QTimer.singleShot(0, w, lambda: self._back_on_screen(room))   # once the window's
             # layout has dropped the dock's minimum height
         elif dock.height() < LIBRARY_MIN_PX:
             w.resizeDocks([dock], [max(LIBRARY_MIN_PX, int(w.height() * LIBRARY_SHARE))], VERTICAL)

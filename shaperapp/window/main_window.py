@@ -149,7 +149,7 @@ class MainWindow(QMainWindow):
 
     def showEvent(self, event) -> None:
         super().showEvent(event)
-        QTimer.singleShot(0, self.docks.apply_sizes)    # the default sizes, once laid out
+        QTimer.singleShot(0, self, self.docks.apply_sizes)    # the default sizes, once laid out
 
     def paintEvent(self, event) -> None:
         super().paintEvent(event)
