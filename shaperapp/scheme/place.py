@@ -377,7 +377,8 @@ class Raster:
                 flat *= self.nx
             else:
                 flat += cell
-        # one flat index, clipped in place: the same cells, 22 → 17 ms for an edit's 534 000
+        # one flat index, clipped in place: the same cells, a fifth less time (22 → 17 ms for
+        # 21 720 random segments; an edit's swept burn 31–39 → 27–29 ms with its clip and sums)
         self._grid.reshape(-1)[flat] = True
 
     def copy_with(self, ends: np.ndarray) -> "Raster":
