@@ -304,9 +304,6 @@ class ForceLayer(QObject):
                 tag.move(cx, cy, (ax, ay))
                 obstacles.add(boxes[k])
 
-    def visible(self) -> bool:
-        return self._visible
-
     def pending_key(self) -> tuple:
         """What the labels waiting to be placed say and where their arrows end: with the
         arrows' own lines, all a frame's placement depends on besides the drawing."""

@@ -47,7 +47,6 @@ class LabelLayout(QObject):
         self._static_lines = self._swept = np.empty((0, 2, 2))
         self._raster: Raster | None = None     # the lines that stay put, per design and zoom
         self._done: dict[tuple, tuple] = {}     # each frame's placement, per design and zoom
-        self._mm_per_px = (1.0, 1.0)
         self._px = 1.0
         self._still: dict[str, tuple] = {}     # still label: candidate centres, half size, rings
         self._home: dict[str, int] = {}        # ... its candidate for the design and zoom
@@ -161,7 +160,6 @@ class LabelLayout(QObject):
         f = mech.frames
         if f is None or index >= len(f.tip) or not self._halves or self._raster is None:
             return
-        self._mm_per_px = mm_per_px
         arrows = self._forces.lines(index)
         key = (index, arrows.tobytes(), self._forces.pending_key())
         done = self._done.get(key)
@@ -170,27 +168,6 @@ class LabelLayout(QObject):
             return
         self._place_frame(index, arrows, mm_per_px)
         self._done[key] = self._state()
-
-    def precompute(self, count: int, current: int) -> bool:
-        """Place up to ``count`` frames not yet placed (from ``current`` on), the force
-        arrows hidden, then put ``current`` back: run while the application is idle after a
-        design or zoom change, so that the animation finds every frame placed. False when
-        every frame is placed (or there is nothing to place)."""
-        f = self._mechanism.frames
-        if f is None or not self._halves or self._raster is None or self._forces.visible():
-            return False
-        n, empty = len(f.tip), np.empty((0, 2, 2))
-        todo = [i for i in (np.arange(n) + current) % n if (int(i), b"", ()) not in self._done][:count]
-        if not todo:
-            return False
-        self.place_frame(current, self._mm_per_px)        # placed (and stored) first: put back last
-        state = self._done.get((current, b"", ()))
-        for i in todo:
-            self._place_frame(int(i), empty, self._mm_per_px)
-            self._done[(int(i), b"", ())] = self._state()
-        if state is not None:
-            self._restore(state)
-        return len(todo) == count
 
     def _state(self) -> tuple:
         """Where this frame's labels went: a frame seen again (the animation runs in cycles)

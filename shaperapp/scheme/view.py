@@ -7,6 +7,14 @@ exports them (image_export.py). Per design it rebuilds the layers and fits
 once; per animation frame it only asks each shown layer to move. Its bar and menu
 are built in controls.py; when a new design is fitted, refit.py decides.
 
+A frame's labels are placed when the frame is first shown and kept for the design and
+zoom (labels.py), so a cycle played twice searches once. Nothing is placed ahead while
+idle: that placed every frame of the cycle (361, or 3601 at 0.1°) after each edit and
+zoom whether or not the animation ever ran, and its chunks landed inside the window's
+first paint, first visits and edits; one frame's placement takes a few ms, and
+playback runs on wall-clock time, so a slow frame skips angles instead of slowing
+the motion (issue 43 item 4; docs/performance.md).
+
 Navigation: wheel zooms, drag pans, double-click fits, right click opens the
 scheme's own menu (Fit, Show dimensions, Show forces). pyqtgraph's English menu
 and its export dialog (whose SVG export fails on recent Qt) are not offered.
@@ -14,7 +22,7 @@ and its export dialog (whose SVG export fails on recent Qt) are not offered.
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QPointF, QRectF, Qt, QTimer
+from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
@@ -29,12 +37,6 @@ from .labels import LabelLayout
 from .mechanism import Geometry, MechanismLayer
 from .readback import SchemeReadBack
 from .refit import needs_fit
-
-
-# While idle after a design or zoom change, the frames' labels are placed this many at a
-# time (a few ms each), so that the animation finds them placed.
-PRECOMPUTE_CHUNK = 8
-PRECOMPUTE_PAUSE_MS = 50      # between two turns: the rest of the window's deferred work goes first
 
 
 class SchemeWidget(SchemeReadBack, QWidget):
@@ -52,11 +54,8 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._labels_stale = False                 # placing them waits until shown or read back
         self._placing_soon = False                 # a rebuild or placement under way places them at its end
         self._forces_stale = False
-        self._painted = False                      # the idle precompute waits for the first paint
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._catch_up)
-        self._precompute_timer = QTimer(self, singleShot=True, interval=PRECOMPUTE_PAUSE_MS)
-        self._precompute_timer.timeout.connect(self._precompute)
         self._plot = canvas()
         self._view = self._plot.getPlotItem().getViewBox()
 
@@ -155,17 +154,6 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._labels_stale = False
         self._placed_view = key
         self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
-        if self._painted:
-            self._precompute_timer.start()
-
-    def paintEvent(self, event) -> None:
-        """The first paint starts the idle precompute of the frames' labels. Why not at
-        ``show``: a chunk that came due while the window was still being shown ran before
-        its first paint (0.2 s of a 6.4 s start at load 7, issue 43 item 5)."""
-        super().paintEvent(event)
-        if not self._painted:
-            self._painted = True
-            self._precompute_timer.start()
 
     def _view_key(self) -> tuple:
         """The view's range and pixel size: the labels' placement depends on nothing else of it."""
@@ -322,17 +310,6 @@ class SchemeWidget(SchemeReadBack, QWidget):
                 self._placing_soon = False
         self._place_still()
         self._move(self._model.angle_index)
-
-    def _precompute(self) -> None:
-        """A few more frames' labels placed while idle (see PRECOMPUTE_CHUNK). Not for a
-        scheme that is never on screen (the report's, drawn offscreen and exported at two
-        positions): it never animates, and the report's later event processing ran these
-        searches for frames nobody sees (a sixth of the report's figures' time)."""
-        if (self._geometry is None or self._stale or not self.isVisible()
-                or self.testAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)):
-            return
-        if self._labels.precompute(PRECOMPUTE_CHUNK, self._model.angle_index):
-            self._precompute_timer.start()
 
     def _on_angle(self, index: int) -> None:
         """Only moves items (setPos/setRotation/setPath): no Python-side signal per frame.

@@ -100,7 +100,7 @@ def placed_labels(qtbot, designs: list[dict]) -> list[dict[str, tuple[float, flo
         boxes = scheme.dimension_label_boxes()           # the still labels placed, read back
         layout = scheme._labels
         for index in (0, 7, 20):
-            layout.place_frame(index, layout._mm_per_px)
+            layout.place_frame(index, scheme._view.viewPixelSize())
             joints = {name: (label.x(), label.y()) for name, label in scheme._mechanism.labels.items()}
             out.append({**{k: tuple(v) for k, v in boxes.items()}, **joints,
                         "leaders": (tuple(layout._leaders.x), tuple(layout._leaders.y))})
