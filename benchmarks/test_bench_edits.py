@@ -22,8 +22,8 @@ VISIT_BUDGET_S = 0.300
 
 
 def drained(seconds: float = 4.0) -> None:
-    """Events processed for ``seconds``: the views built while idle, the idle label
-    placement done, as a user meets the window a few seconds after start."""
+    """Events processed for ``seconds``: the views built while idle, as a user meets the
+    window a few seconds after start."""
     end = time.perf_counter() + seconds
     while time.perf_counter() < end:
         QApplication.processEvents()
