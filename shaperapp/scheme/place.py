@@ -43,11 +43,15 @@ def meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarra
     dx, dy = x1 - x0, y1 - y0
     hit = ((np.minimum(dx, 0.0) <= hi_x) & (np.maximum(dx, 0.0) >= lo_x)
            & (np.minimum(dy, 0.0) <= hi_y) & (np.maximum(dy, 0.0) >= lo_y))
-    across_lo, across_hi = dx * lo_y, dx * hi_y          # cross product at the corners
-    along_lo, along_hi = dy * lo_x, dy * hi_x
+    # the corners' sides only where the boxes overlap (a fifth of an edit's pairs), with
+    # the same products and differences for those pairs
+    i, j = np.nonzero(hit)
+    across_lo, across_hi = dx[j] * lo_y[i, j], dx[j] * hi_y[i, j]    # cross product at the corners
+    along_lo, along_hi = dy[j] * lo_x[i, j], dy[j] * hi_x[i, j]
     top = np.maximum(across_lo, across_hi) - np.minimum(along_lo, along_hi)
     bottom = np.minimum(across_lo, across_hi) - np.maximum(along_lo, along_hi)
-    return hit & (top >= 0.0) & (bottom <= 0.0)
+    hit[i, j] = (top >= 0.0) & (bottom <= 0.0)
+    return hit
 
 
 def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray) -> np.ndarray:
