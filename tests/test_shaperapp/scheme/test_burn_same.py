@@ -12,17 +12,17 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from PySide6.QtWidgets import QApplication
 
-import shaperapp.scheme.place as place
+import shaperapp.scheme.raster as raster_module
 from gui_helpers import shown
 from shaperapp.design.model import DesignModel
-from shaperapp.scheme.place import Raster
+from shaperapp.scheme.raster import Raster
 from shaperapp.scheme.view import SchemeWidget
 
 BOUNDS = (-20.0, 60.0, -10.0, 30.0)
 
 
 def reference_clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.ndarray:
-    """``place.clipped`` as it was (main 0c2e8a4): on (k, 2) rows."""
+    """``clipped`` as it was (in place.py on main, 0c2e8a4): on (k, 2) rows."""
     if len(ends) == 0:
         return ends
     lows, highs = np.array([bounds[0], bounds[2]]), np.array([bounds[1], bounds[3]])
@@ -87,10 +87,10 @@ def mixed_lines(rng: np.random.Generator, count: int) -> np.ndarray:
 
 
 @pytest.mark.parametrize("seed", range(12))
-@pytest.mark.parametrize("burn_points", [7, 1000, place.BURN_POINTS])
+@pytest.mark.parametrize("burn_points", [7, 1000, raster_module.BURN_POINTS])
 def test_the_grouped_burn_marks_the_cells_the_burn_as_it_was_marked(seed, burn_points, monkeypatch):
     rng = np.random.default_rng(seed)
-    monkeypatch.setattr(place, "BURN_POINTS", burn_points)
+    monkeypatch.setattr(raster_module, "BURN_POINTS", burn_points)
     cell = float(rng.uniform(0.05, 2.0))
     base = Raster(mixed_lines(rng, 5), BOUNDS, cell, 0.3)
     now, before = both_burns(base, mixed_lines(rng, int(rng.integers(1, 400))))
@@ -104,7 +104,7 @@ def test_the_grouped_burn_marks_the_cells_the_burn_as_it_was_marked(seed, burn_p
 def test_the_grouped_burn_agrees_on_any_lines(lines, cell, burn_points):
     base = Raster(np.empty((0, 2, 2)), BOUNDS, cell, 0.0)
     with pytest.MonkeyPatch.context() as m:
-        m.setattr(place, "BURN_POINTS", burn_points)
+        m.setattr(raster_module, "BURN_POINTS", burn_points)
         now, before = both_burns(base, np.array(lines, dtype=float).reshape(-1, 2, 2))
     assert np.array_equal(now._grid, before._grid)
 
@@ -115,12 +115,12 @@ def test_the_segments_are_cut_to_the_same_numbers(seed):
     rng = np.random.default_rng(seed)
     ends = mixed_lines(rng, 500)
     box = (-10.0, 40.0, 0.0, 20.0)
-    now, before = place.clipped(ends, box), reference_clipped(ends, box)
+    now, before = raster_module.clipped(ends, box), reference_clipped(ends, box)
     assert now.shape == before.shape and len(now) < len(ends)
     assert np.array_equal(now, before)
     inside = ends[(ends[..., 0] > -10.0).all(1) & (ends[..., 0] < 40.0).all(1)
                   & (ends[..., 1] > 0.0).all(1) & (ends[..., 1] < 20.0).all(1)]
-    assert len(inside) > 10 and np.array_equal(place.clipped(inside, box), reference_clipped(inside, box))
+    assert len(inside) > 10 and np.array_equal(raster_module.clipped(inside, box), reference_clipped(inside, box))
 
 
 def test_the_schemes_swept_lines_burn_the_same_cells(qtbot):

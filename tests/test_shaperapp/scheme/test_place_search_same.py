@@ -12,7 +12,8 @@ from PySide6.QtWidgets import QApplication
 
 from shaperapp.design.model import DesignModel
 from shaperapp.scheme import labels as labels_module, place as place_module
-from shaperapp.scheme.place import Obstacles, Raster, around, boxes_at, clear_of_boxes, clear_of_segments, meets
+from shaperapp.scheme.place import Obstacles, around, boxes_at, clear_of_boxes, clear_of_segments, meets
+from shaperapp.scheme.raster import Raster
 
 
 def reference_clear(obstacles: Obstacles, candidates: np.ndarray) -> np.ndarray:
