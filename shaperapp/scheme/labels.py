@@ -25,8 +25,9 @@ from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
 from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
-from .place import (LEADER_RING, Obstacles, Raster, around, boxes_at, clear_of_boxes, clear_of_segments,
+from .place import (LEADER_RING, Obstacles, around, boxes_at, clear_of_boxes, clear_of_segments,
                     leader, leaders, meets, end_to_end, owned)
+from .raster import Raster
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
