@@ -5,13 +5,16 @@ Below :mod:`core.forces.flywheel`, which samples the torque's speed-independent 
 and without it, switched at the cut's two ends; each curve's maxima lie in the cells between
 samples where its slope turns from rising to falling, and each such cell is polished by
 Newton's method (:func:`core.linkage.polish.newton_maximum`) on the closed-form slope and
-curvature, two evaluations where Brent's method on the torque alone took eight or more.
-Which cells turn at which speed comes from one binary search per sample (the slope is
-affine in ω²), so the per-speed work scales with the cells found.
+curvature, from the top of the quintic through the cell's ends: mostly one evaluation, where
+Brent's method on the torque alone took eight or more. Which cells turn at which speed comes
+from one binary search per sample (the slope is affine in ω²), so the per-speed work scales
+with the cells found; and a cell is polished only where the chord of its largest value,
+convex in ω², reaches the candidates already known at that speed (:func:`chord_bounds`).
 """
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -84,14 +87,34 @@ PEAK_GAIN = 1e-15
 DIRECT_SPEEDS = 3
 
 
+class Cells(NamedTuple):
+    """Turning cells, one entry per (cell, speed), flat arrays: the design, the speed's index,
+    the samples either side (columns of the samples' φ) and their angles (rad, ``hi`` a turn
+    on where the cell wraps). The speeds at which one cell turns are one run of the speeds
+    sorted by ω², and its entries lie together in that order: ``rank`` is an entry's place in
+    its run and ``count`` the run's length; ``below`` and ``above`` are the indices of the
+    nearest speeds outside the run (where the cell does not turn), -1 where the run reaches
+    the slowest or the fastest speed (and always with ``DIRECT_SPEEDS`` or fewer speeds,
+    where every run is one speed)."""
+
+    design: np.ndarray
+    speed: np.ndarray
+    left: np.ndarray
+    right: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+    rank: np.ndarray
+    count: np.ndarray
+    below: np.ndarray
+    above: np.ndarray
+
+
 def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, segments,
-                  piece: tuple[np.ndarray, np.ndarray],
-                  cutting: bool) -> list[tuple[int, tuple[np.ndarray, ...]]]:
+                  piece: tuple[np.ndarray, np.ndarray], cutting: bool) -> list[tuple[int, Cells]]:
     """The cells between samples where the curve a + ω²·b (``parts``, (designs, n) at φ ``x``)
     falls through zero (kind 0: positive, then not) or rises through it (kind 1: negative,
     then not) at each speed (ω² ``w2``), and that reach into ``piece`` ((start, stop) per
-    design; the cut if ``cutting``): a list of (kind, (design, speed, left sample, right
-    sample, lo, hi)), flat arrays, the samples as columns of ``x``. ``segments`` as in
+    design; the cut if ``cutting``): a list of (kind, :class:`Cells`). ``segments`` as in
     :func:`core.linkage.extrema.grid_argmax`.
 
     Beyond ``DIRECT_SPEEDS`` nothing of shape (designs, speeds, samples) is formed: per
@@ -116,10 +139,12 @@ def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.nd
             if direct:
                 design, speed, cell = np.nonzero((sign[..., left] > sign[..., right])
                                                  & reach[:, None, :])
-                out.append((kind, (design, speed, left[cell], right[cell], lo[design, cell],
-                                   hi[design, cell])))
+                one, none = np.zeros_like(design), np.full(design.size, -1)
+                out.append((kind, Cells(design, speed, left[cell], right[cell], lo[design, cell],
+                                        hi[design, cell], one, one + 1, none, none)))
                 continue
-            # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1)
+            # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1): one of the
+            # two is empty (each signed set is a prefix or a suffix of the sorted speeds).
             a1, b1 = sign[0][:, left], sign[1][:, left]
             a2, b2 = sign[0][:, right], sign[1][:, right]
             for begin, end in ((a1, np.minimum(b1, a2)), (np.maximum(a1, b2), b1)):
@@ -132,8 +157,12 @@ def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.nd
                 owner = np.repeat(np.arange(design.size), counts)
                 rank = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
                 design, cell = design[owner], cell[owner]
-                out.append((kind, (design, order[begin[owner] + rank], left[cell], right[cell],
-                                   lo[design, cell], hi[design, cell])))
+                low, high = begin[owner], begin[owner] + counts[owner]     # the run, sorted
+                below = np.where(low > 0, order[np.maximum(low - 1, 0)], -1)
+                above = np.where(high < w2.size, order[np.minimum(high, w2.size - 1)], -1)
+                out.append((kind, Cells(design, order[low + rank], left[cell], right[cell],
+                                        lo[design, cell], hi[design, cell], rank, counts[owner],
+                                        below, above)))
     return out
 
 
@@ -145,10 +174,14 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     ``window`` the cut's switch angles (on, off) per design. Candidates: both curves' values
     at both switch angles, the samples beside each turning cell that lie inside the piece,
     and each polished maximum or minimum that lands inside its piece (a smooth curve's
-    extremum over an arc is at an end or where its slope turns). Every turning cell is
-    polished: skipping those whose end tangents' meeting point (doubled margin) could not
-    beat the samples missed a rod's minimum torque by 2e-4 of the peak (K near 5, a
-    crank of 6 mm, a short trailing rod), which the hypothesis test at 16 speeds found.
+    extremum over an arc is at an end or where its slope turns).
+
+    A turning cell is polished unless :func:`chord_bounds` shows that it cannot beat the
+    candidates already known at its speed; the bound is exact (convexity in ω²), not a
+    guess from the cell's end tangents, which missed a rod's minimum torque by 2e-4 of the
+    peak (K near 5, a crank of 6 mm, a short trailing rod) in the hypothesis test at 16
+    speeds. A cell whose run of turning speeds reaches the slowest or the fastest speed is
+    polished there first, so that the chord has two ends; the rest follow in a second pass.
     """
     x, jet, segments = samples
     on, off = window
@@ -164,38 +197,91 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     for k, cutting in enumerate((1.0, 0.0)):
         values = (jet.static + cutting * jet.cut, jet.inertial)
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
+        curves = (jet.static2 + cutting * jet.cut2, jet.inertial2)
         first, last = pieces[k]
-        for kind, (design, speed, left, right, lo, hi) in turning_cells(x, slopes, w2, segments,
-                                                                          pieces[k], k == 0):
+        for kind, cells in turning_cells(x, slopes, w2, segments, pieces[k], k == 0):
             sign = 1.0 - 2.0 * kind
+            design, speed = cells.design, cells.speed
             owner = (kind * on.size + design) * w2.size + speed
-            cell = [k, kind, design, speed, lo, hi]
-            for column in (left, right):
+            entry = [k, kind, design, speed, cells.lo, cells.hi]
+            for column in (cells.left, cells.right):
                 value = sign * affine_at(values, w2, design, column, speed)
                 inside = on_arc(x[design, column], first[design], last[design])
                 np.fmax.at(flat, owner[inside], value[inside])
-                cell.append(value)
-            cell += [sign * affine_at(slopes, w2, design, column, speed) for column in (left, right)]
-            found.append(cell)
+                entry.append(value)
+            entry += [sign * affine_at(parts, w2, design, column, speed)
+                      for parts in (slopes, curves) for column in (cells.left, cells.right)]
+            entry += [cells.rank, cells.count, cells.below, cells.above]
+            entry += [_cell_top(values, w2, sign, cells, side) for side in (cells.below, cells.above)]
+            found.append(entry)
     if not found:
         return best[0], -best[1]
-    k, kind, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi = (
-        np.concatenate([np.broadcast_to(c[i], c[2].shape) for c in found]) for i in range(10))
+    (k, kind, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi, c_lo, c_hi, rank, count, below,
+     above, top_below, top_above) = (np.concatenate([np.broadcast_to(c[i], c[2].shape)
+                                                     for c in found]) for i in range(18))
     owner = (kind * on.size + design) * w2.size + speed
-    if owner.size:
-        sign = 1.0 - 2.0 * kind
-        cutting = 1.0 - k
-        lengths = [np.broadcast_to(v, on.shape)[design] for v in d.lengths()]
+    lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
+    polished = np.full(owner.size, np.nan)
 
-        def fun(t, w2, sign, cutting, *lengths):
-            one = torque_jet(d.with_lengths(lengths), t, masses)
-            static, inertial, cut = one[0:3], one[3:6], one[6:9]
-            return tuple(sign * (s + w2 * i + cutting * c) for s, i, c in zip(static, inertial, cut))
+    def fun(t, w2, sign, cutting, *lengths):
+        one = torque_jet(d.with_lengths(lengths), t, masses)
+        static, inertial, cut = one[0:3], one[3:6], one[6:9]
+        return tuple(sign * (s + w2 * i + cutting * c) for s, i, c in zip(static, inertial, cut))
 
-        root, value = newton_maximum(fun, lo, hi, v_lo, v_hi, s_lo, s_hi,
-                                     [w2[speed], sign, cutting] + lengths, gain=PEAK_GAIN)
-        start = np.where(k == 0, on[design], off[design])
-        stop = np.where(k == 0, off[design], on[design])
+    def polish(which: np.ndarray) -> None:
+        """Polish the cells ``which`` (indices into the entries) and count the peaks inside."""
+        if which.size == 0:
+            return
+        i = which
+        root, value = newton_maximum(fun, lo[i], hi[i], v_lo[i], v_hi[i], s_lo[i], s_hi[i],
+                                     [w2[speed[i]], 1.0 - 2.0 * kind[i], 1.0 - k[i]]
+                                     + [v[design[i]] for v in lengths], gain=PEAK_GAIN,
+                                     curvatures=(c_lo[i], c_hi[i]))
+        polished[i] = value
+        start = np.where(k[i] == 0, on[design[i]], off[design[i]])
+        stop = np.where(k[i] == 0, off[design[i]], on[design[i]])
         inside = on_arc(root, start, stop)
-        np.fmax.at(flat, owner[inside], value[inside])
+        np.fmax.at(flat, owner[i][inside], value[inside])
+
+    # First the runs' ends at the slowest and the fastest speed, which no chord covers.
+    index = np.arange(owner.size)
+    slowest, fastest = (rank == 0) & (below < 0), (rank == count - 1) & (above < 0)
+    polish(np.flatnonzero(slowest | fastest))
+    low, high = index - rank, index - rank + count - 1           # each run's first and last
+    bound = chord_bounds(w2, speed, (np.where(below < 0, speed[low], below), top_below, polished[low]),
+                         (np.where(above < 0, speed[high], above), top_above, polished[high]),
+                         (below < 0, above < 0))
+    polish(np.flatnonzero(~(slowest | fastest) & ~(bound <= flat[owner])))   # NaN: polished
     return best[0], -best[1]
+
+
+def _cell_top(values: tuple[np.ndarray, np.ndarray], w2: np.ndarray, sign: float, cells: Cells,
+              side: np.ndarray) -> np.ndarray:
+    """The larger of sign·(a + ω²·b) at a cell's two samples, at the speeds ``side`` (its
+    largest value over the cell where it does not turn there), NaN where ``side`` is -1."""
+    at = np.maximum(side, 0)
+    top = np.maximum(sign * affine_at(values, w2, cells.design, cells.left, at),
+                     sign * affine_at(values, w2, cells.design, cells.right, at))
+    return np.where(side >= 0, top, np.nan)
+
+
+def chord_bounds(w2: np.ndarray, speed: np.ndarray, lower: tuple, upper: tuple,
+                 polished: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """An upper bound on a turning cell's largest value at ``speed`` (indices into ω² ``w2``),
+    from two speeds on either side of it.
+
+    The cell's largest value M(ω²) = max over φ in the cell of sign·(a(φ) + ω²·b(φ)) is the
+    largest of affine functions of ω², so it is convex in ω² and lies below its chord
+    between any two speeds on either side. ``lower`` and ``upper`` are each (speed index,
+    M from the samples, M polished) of the chord's ends, and ``polished`` says per end which
+    of the two to take: the nearest speed where the cell does not turn, where M is the larger
+    of the cell's end samples (the bracketing grid's premise: at most one turn per cell), or
+    the run's own end, polished, where the run reaches the slowest or the fastest speed. A
+    margin of 1e-12 of the ends' values covers the rounding; NaN where an end is NaN.
+    """
+    (s0, top0, peak0), (s1, top1, peak1) = lower, upper
+    m0, m1 = np.where(polished[0], peak0, top0), np.where(polished[1], peak1, top1)
+    w0, w1 = w2[s0], w2[s1]
+    with np.errstate(all="ignore"):
+        t = (w2[speed] - w0) / (w1 - w0)
+        return m0 * (1.0 - t) + m1 * t + 1e-12 * (np.abs(m0) + np.abs(m1))
