@@ -18,7 +18,8 @@ from core.linkage.designs import Designs
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import DIRECT_SPEEDS, PEAK_GAIN, affine_at, on_arc, piece_peaks, turning_cells
+from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, affine_at, gather, on_arc,
+                           piece_peaks, switch_window, turning_cells)
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, sharp_angles
@@ -119,11 +120,12 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     on, off = cut_window(d, masses.idle_fraction, (phi, grid.ram_x))
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     start = (grid.kinetic[:, :1], grid.potential[:, :1], grid.ram_x[:, :1])  # φ = 0: the first
-    top, bottom = _energy_extremes(d, samples, start, omega, mean, (on, off), masses)
+    window = switch_window(d, samples, on, off, masses)
+    top, bottom = _energy_extremes(d, samples, start, omega, mean, window, masses)
     swing = top - bottom
     je = 2.0 * grid.kinetic                                       # the kinetic energy is ½·J_e
     if peaks:
-        high, low = _torque_peaks(d, samples, omega, masses, (on, off))
+        high, low = _torque_peaks(d, samples, omega, masses, window)
     else:
         high = low = np.full(top.shape, np.nan)
     out = {"mean_torque_N_m": np.repeat(mean[:, None], omega.size, axis=1),
@@ -179,8 +181,7 @@ def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassPropert
 
 def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], omega: np.ndarray,
                      mean: np.ndarray,
-                     window: tuple[np.ndarray, np.ndarray],
-                     masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
+                     window: Window, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest E(φ) per design and speed, exactly, J, each (designs, speeds).
 
     E is continuous and smooth except at the cut's two switch angles, where the torque
@@ -196,17 +197,18 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     evaluations and one more for E before: a third of the loaded sweep's time at 16 speeds);
     a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
     ``start`` the stored energy (kinetic, potential) and the ram's x at φ = 0, ``mean`` the
-    mean torque (designs,), ``window`` the cut's switch angles.
+    mean torque (designs,), ``window`` the cut's switch angles with the jet there and the
+    cells of each piece (:func:`core.forces.torque_peaks.switch_window`).
     """
     from core.linkage.polish import newton_maximum
 
-    on, off = window
+    on, off = window.on, window.off
     count, speeds = mean.size, omega.size
     col = d.column()
-    x, jet, segments = samples
+    x, jet, _ = samples
     w2 = omega ** 2
     kinks = np.stack([on, off], axis=-1)
-    at_ends = _energy(col, kinks, torque_jet(col, kinks, masses), w2[None, :, None],
+    at_ends = _energy(col, kinks, window.jet, w2[None, :, None],
                       mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
     top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
@@ -215,8 +217,8 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     def energy(phi, design, speed):
         """E at the samples ``phi`` (design, speed: indices) from the jets there."""
         one = d.with_lengths([v[design] for v in lengths])
-        return _energy(one, x[design, phi], _Stored(*(v[design, phi] for v in
-                                                       (jet.kinetic, jet.potential, jet.ram_x))),
+        return _energy(one, gather(x, design, phi),
+                       _Stored(*(gather(v, design, phi) for v in (jet.kinetic, jet.potential, jet.ram_x))),
                        w2[speed], mean[design], masses, tuple(v[design] for v in start))
 
     def fun(phi, w2, mean, sign, cutting, k0, v0, x0, *lengths):
@@ -228,10 +230,10 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
         return sign * value, sign * g, sign * slope
 
     found = []
-    for cutting, piece in ((1.0, (on, off)), (0.0, (off, on))):
+    for k, (cutting, piece) in enumerate(((1.0, (on, off)), (0.0, (off, on)))):
         parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)               # E″
-        for kind, cells in turning_cells(x, parts, w2, segments, piece, bool(cutting)):
+        for kind, cells in turning_cells(parts, w2, window.cells[k]):
             sign = np.full(cells.design.size, 1.0 - 2.0 * kind)    # E's maximum, or its minimum
             design, speed = cells.design, cells.speed
             found.append([design, speed, cells.lo, cells.hi, sign, np.full(sign.size, cutting),
@@ -284,14 +286,14 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
                                     for v in torque_jet(col, x[-1], masses))))
             start = segments[-1][1]
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
-    if len(x) == 1:
-        return x[0], jets[0], segments
+    if len(x) == 1:                   # contiguous, for the flat gathers (torque_peaks.gather)
+        return np.ascontiguousarray(x[0]), TorqueJet(*map(np.ascontiguousarray, jets[0])), segments
     return (np.concatenate(x, axis=-1),
             TorqueJet(*(np.concatenate(v, axis=-1) for v in zip(*jets))), segments)
 
 
 def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
-                  window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+                  window: Window) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
     The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + cut while

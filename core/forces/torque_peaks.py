@@ -20,7 +20,7 @@ import numpy as np
 
 from core.linkage.designs import Designs
 from core.linkage.polish import newton_maximum
-from .jet import torque_jet
+from .jet import TorqueJet, torque_jet
 from .masses import MassProperties
 
 def reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
@@ -48,7 +48,15 @@ def affine_at(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, design: np.n
               column: np.ndarray, speed: np.ndarray) -> np.ndarray:
     """a + ω²·b at the given (design, sample column, speed) triples, for ``parts`` (a, b),
     arrays (designs, samples) the same at all speeds, and ω² ``w2`` (speeds,)."""
-    return parts[0][design, column] + w2[speed] * parts[1][design, column]
+    index = design * parts[0].shape[-1] + column
+    return parts[0].ravel().take(index) + w2.take(speed) * parts[1].ravel().take(index)
+
+
+def gather(array: np.ndarray, design: np.ndarray, column: np.ndarray) -> np.ndarray:
+    """``array[design, column]`` for a (designs, samples) array, by its flat index: a take
+    from a C-contiguous array costs a third of the 2-D fancy index (numpy 2.4; the loaded
+    sweep gathers some 10^6 values per 500 designs at 16 speeds)."""
+    return array.ravel().take(design * array.shape[-1] + column)
 
 
 def _signed_speeds(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray) -> tuple:
@@ -109,18 +117,56 @@ class Cells(NamedTuple):
     above: np.ndarray
 
 
-def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, segments,
-                  piece: tuple[np.ndarray, np.ndarray], cutting: bool) -> list[tuple[int, Cells]]:
-    """The cells between samples where the curve a + ω²·b (``parts``, (designs, n) at φ ``x``)
-    falls through zero (kind 0: positive, then not) or rises through it (kind 1: negative,
-    then not) at each speed (ω² ``w2``), and that reach into ``piece`` ((start, stop) per
-    design; the cut if ``cutting``): a list of (kind, :class:`Cells`). ``segments`` as in
-    :func:`core.linkage.extrema.grid_argmax`.
+class Window(NamedTuple):
+    """The cut's switch angles (rad, (designs,)) and what the torque's and the energy's
+    searches both take from them: the jet there (each field (designs, 2): at on, at off),
+    and per piece, the cut then the rest, the cells between samples that reach into it
+    (:func:`piece_cells`)."""
+
+    on: np.ndarray
+    off: np.ndarray
+    jet: TorqueJet
+    cells: tuple[list, list]
+
+
+def switch_window(d: Designs, samples: tuple, on: np.ndarray, off: np.ndarray,
+                  masses: MassProperties) -> Window:
+    """The :class:`Window` of the switch angles ``on``, ``off`` over ``samples`` (φ, jet,
+    segments: :func:`core.forces.flywheel._torque_samples`')."""
+    x, _, segments = samples
+    jet = torque_jet(d.column(), np.stack([on, off], axis=-1), masses)
+    return Window(on, off, jet, (piece_cells(x, segments, (on, off), True),
+                                 piece_cells(x, segments, (off, on), False)))
+
+
+def piece_cells(x: np.ndarray, segments, piece: tuple[np.ndarray, np.ndarray],
+                cutting: bool) -> list[tuple[np.ndarray, ...]]:
+    """Per segment of the samples φ ``x`` (designs, n) (``segments`` as in
+    :func:`core.linkage.extrema.grid_argmax`): its cells' left and right sample (columns of
+    ``x``), their angles lo and hi (rad, (designs, cells); ``hi`` a turn on where the cell
+    wraps) and which of them reach into ``piece`` ((start, stop) per design; the cut if
+    ``cutting``: :func:`reaches`)."""
+    start, stop = piece
+    out = []
+    for first, last, period in segments:
+        left = np.arange(first, last if period > 0.0 else last - 1)
+        right = np.where(left + 1 < last, left + 1, first)
+        lo = x[:, left]
+        hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
+        out.append((left, right, lo, hi, reaches(lo, hi, start[:, None], stop[:, None], cutting)))
+    return out
+
+
+def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
+                  cells: list[tuple[np.ndarray, ...]]) -> list[tuple[int, Cells]]:
+    """The cells between samples where the curve a + ω²·b (``parts``, (designs, n) at the
+    samples) falls through zero (kind 0: positive, then not) or rises through it (kind 1:
+    negative, then not) at each speed (ω² ``w2``), among those of ``cells`` that reach into
+    their piece (:func:`piece_cells`): a list of (kind, :class:`Cells`).
 
     Beyond ``DIRECT_SPEEDS`` nothing of shape (designs, speeds, samples) is formed: per
     cell, the speeds where the left sample has the sign and the right one has not are one
     range of the sorted speeds (:func:`_signed_speeds`), expanded only where a cell has any."""
-    start, stop = piece
     direct = w2.size <= DIRECT_SPEEDS
     if direct:
         values = parts[0][:, None, :] + w2[:, None] * parts[1][:, None, :]
@@ -129,19 +175,15 @@ def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.nd
         order = np.argsort(w2, kind="stable")
         signs = _signed_speeds(parts, w2)
     out = []
-    for first, last, period in segments:
-        left = np.arange(first, last if period > 0.0 else last - 1)
-        right = np.where(left + 1 < last, left + 1, first)
-        lo = x[:, left]
-        hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
-        reach = reaches(lo, hi, start[:, None], stop[:, None], cutting)
+    for left, right, lo, hi, reach in cells:
         for kind, sign in enumerate(signs):
             if direct:
                 design, speed, cell = np.nonzero((sign[..., left] > sign[..., right])
                                                  & reach[:, None, :])
                 one, none = np.zeros_like(design), np.full(design.size, -1)
-                out.append((kind, Cells(design, speed, left[cell], right[cell], lo[design, cell],
-                                        hi[design, cell], one, one + 1, none, none)))
+                out.append((kind, Cells(design, speed, left[cell], right[cell],
+                                        gather(lo, design, cell), gather(hi, design, cell),
+                                        one, one + 1, none, none)))
                 continue
             # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1): one of the
             # two is empty (each signed set is a prefix or a suffix of the sorted speeds).
@@ -150,7 +192,7 @@ def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.nd
             for begin, end in ((a1, np.minimum(b1, a2)), (np.maximum(a1, b2), b1)):
                 counts = np.where(reach, np.maximum(end - begin, 0), 0)
                 design, cell = np.nonzero(counts)
-                counts, begin = counts[design, cell], begin[design, cell]
+                counts, begin = gather(counts, design, cell), gather(begin, design, cell)
                 total = int(counts.sum())
                 if total == 0:
                     continue
@@ -161,17 +203,18 @@ def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.nd
                 below = np.where(low > 0, order[np.maximum(low - 1, 0)], -1)
                 above = np.where(high < w2.size, order[np.minimum(high, w2.size - 1)], -1)
                 out.append((kind, Cells(design, order[low + rank], left[cell], right[cell],
-                                        lo[design, cell], hi[design, cell], rank, counts[owner],
+                                        gather(lo, design, cell), gather(hi, design, cell),
+                                        rank, counts[owner],
                                         below, above)))
     return out
 
 
 def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
-                window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+                window: Window) -> tuple[np.ndarray, np.ndarray]:
     """(largest, smallest) driving torque per design and speed, N·m, each (designs, speeds).
 
     ``samples`` are :func:`core.forces.flywheel._torque_samples`' (φ, jet, segments) and
-    ``window`` the cut's switch angles (on, off) per design. Candidates: both curves' values
+    ``window`` the cut's switch angles with the jet there and the cells of each piece. Candidates: both curves' values
     at both switch angles, the samples beside each turning cell that lie inside the piece,
     and each polished maximum or minimum that lands inside its piece (a smooth curve's
     extremum over an arc is at an end or where its slope turns).
@@ -183,10 +226,9 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     speeds. A cell whose run of turning speeds reaches the slowest or the fastest speed is
     polished there first, so that the chord has two ends; the rest follow in a second pass.
     """
-    x, jet, segments = samples
-    on, off = window
+    x, jet, _ = samples
+    on, off, ends = window.on, window.off, window.jet
     w2 = omega ** 2
-    ends = torque_jet(d.column(), np.stack([on, off], axis=-1), masses)
     rest = ends.static[:, None, :] + w2[:, None] * ends.inertial[:, None, :]   # (designs, speeds, 2)
     cut = rest + ends.cut[:, None, :]
     best = np.stack([np.maximum(cut.max(axis=-1), rest.max(axis=-1)),
@@ -199,14 +241,14 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
         curves = (jet.static2 + cutting * jet.cut2, jet.inertial2)
         first, last = pieces[k]
-        for kind, cells in turning_cells(x, slopes, w2, segments, pieces[k], k == 0):
+        for kind, cells in turning_cells(slopes, w2, window.cells[k]):
             sign = 1.0 - 2.0 * kind
             design, speed = cells.design, cells.speed
             owner = (kind * on.size + design) * w2.size + speed
             entry = [k, kind, design, speed, cells.lo, cells.hi]
             for column in (cells.left, cells.right):
                 value = sign * affine_at(values, w2, design, column, speed)
-                inside = on_arc(x[design, column], first[design], last[design])
+                inside = on_arc(gather(x, design, column), first[design], last[design])
                 np.fmax.at(flat, owner[inside], value[inside])
                 entry.append(value)
             entry += [sign * affine_at(parts, w2, design, column, speed)

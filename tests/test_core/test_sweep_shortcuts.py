@@ -44,14 +44,15 @@ def test_a_cells_chord_bound_lies_above_its_largest_value_on_401_angles():
     w2 = omega ** 2
     phi = np.linspace(0.0, 2.0 * math.pi, SWEEP_INTERVALS + 1)
     grid = torque_jet(d.column(), phi, LOADS)
-    x, jet, segments = flywheel._torque_samples(d, grid, LOADS)
+    samples = flywheel._torque_samples(d, grid, LOADS)
     on, off = cut_window(d, LOADS.idle_fraction, (phi, grid.ram_x))
+    window = torque_peaks.switch_window(d, samples, on, off, LOADS)
+    jet = samples[1]
     checked = 0
     for k, cutting in enumerate((1.0, 0.0)):
         values = (jet.static + cutting * jet.cut, jet.inertial)
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
-        piece = ((on, off), (off, on))[k]
-        for kind, cells in torque_peaks.turning_cells(x, slopes, w2, segments, piece, k == 0):
+        for kind, cells in torque_peaks.turning_cells(slopes, w2, window.cells[k]):
             sign = 1.0 - 2.0 * kind
             both = (cells.below >= 0) & (cells.above >= 0)
             cells = torque_peaks.Cells(*(v[both] for v in cells))
