@@ -185,27 +185,28 @@ def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
                                         gather(lo, design, cell), gather(hi, design, cell),
                                         one, one + 1, none, none)))
                 continue
-            # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1): one of the
-            # two is empty (each signed set is a prefix or a suffix of the sorted speeds).
+            # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1), of which one
+            # is empty (each signed set is a prefix or a suffix of the sorted speeds, or [0, 0)).
             a1, b1 = sign[0][:, left], sign[1][:, left]
             a2, b2 = sign[0][:, right], sign[1][:, right]
-            for begin, end in ((a1, np.minimum(b1, a2)), (np.maximum(a1, b2), b1)):
-                counts = np.where(reach, np.maximum(end - begin, 0), 0)
-                design, cell = np.nonzero(counts)
-                counts, begin = gather(counts, design, cell), gather(begin, design, cell)
-                total = int(counts.sum())
-                if total == 0:
-                    continue
-                owner = np.repeat(np.arange(design.size), counts)
-                rank = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
-                design, cell = design[owner], cell[owner]
-                low, high = begin[owner], begin[owner] + counts[owner]     # the run, sorted
-                below = np.where(low > 0, order[np.maximum(low - 1, 0)], -1)
-                above = np.where(high < w2.size, order[np.minimum(high, w2.size - 1)], -1)
-                out.append((kind, Cells(design, order[low + rank], left[cell], right[cell],
-                                        gather(lo, design, cell), gather(hi, design, cell),
-                                        rank, counts[owner],
-                                        below, above)))
+            end = np.minimum(b1, a2)
+            first = end > a1
+            begin, end = np.where(first, a1, np.maximum(a1, b2)), np.where(first, end, b1)
+            counts = np.where(reach, np.maximum(end - begin, 0), 0)
+            design, cell = np.nonzero(counts)
+            counts, begin = gather(counts, design, cell), gather(begin, design, cell)
+            total = int(counts.sum())
+            if total == 0:
+                continue
+            owner = np.repeat(np.arange(design.size), counts)
+            rank = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
+            design, cell = design[owner], cell[owner]
+            low, high = begin[owner], begin[owner] + counts[owner]     # the run, sorted
+            below = np.where(low > 0, order[np.maximum(low - 1, 0)], -1)
+            above = np.where(high < w2.size, order[np.minimum(high, w2.size - 1)], -1)
+            out.append((kind, Cells(design, order[low + rank], left[cell], right[cell],
+                                    gather(lo, design, cell), gather(hi, design, cell),
+                                    rank, counts[owner], below, above)))
     return out
 
 
@@ -241,6 +242,7 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
         curves = (jet.static2 + cutting * jet.cut2, jet.inertial2)
         first, last = pieces[k]
+        inside_piece = on_arc(x, first[:, None], last[:, None])     # per sample
         for kind, cells in turning_cells(slopes, w2, window.cells[k]):
             sign = 1.0 - 2.0 * kind
             design, speed = cells.design, cells.speed
@@ -248,7 +250,7 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
             entry = [k, kind, design, speed, cells.lo, cells.hi]
             for column in (cells.left, cells.right):
                 value = sign * affine_at(values, w2, design, column, speed)
-                inside = on_arc(gather(x, design, column), first[design], last[design])
+                inside = gather(inside_piece, design, column)
                 np.fmax.at(flat, owner[inside], value[inside])
                 entry.append(value)
             entry += [sign * affine_at(parts, w2, design, column, speed)
