@@ -151,8 +151,8 @@ def piece_cells(x: np.ndarray, segments, piece: tuple[np.ndarray, np.ndarray],
     for first, last, period in segments:
         left = np.arange(first, last if period > 0.0 else last - 1)
         right = np.where(left + 1 < last, left + 1, first)
-        lo = x[:, left]
-        hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
+        lo = np.take(x, left, axis=1)              # C order (x[:, left] is Fortran's)
+        hi = np.take(x, right, axis=1) + np.where(left + 1 < last, 0.0, period)
         out.append((left, right, lo, hi, reaches(lo, hi, start[:, None], stop[:, None], cutting)))
     return out
 
@@ -187,8 +187,7 @@ def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
                 continue
             # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1), of which one
             # is empty (each signed set is a prefix or a suffix of the sorted speeds, or [0, 0)).
-            a1, b1 = sign[0][:, left], sign[1][:, left]
-            a2, b2 = sign[0][:, right], sign[1][:, right]
+            a1, b1, a2, b2 = (np.take(v, i, axis=1) for i in (left, right) for v in sign)
             end = np.minimum(b1, a2)
             first = end > a1
             begin, end = np.where(first, a1, np.maximum(a1, b2)), np.where(first, end, b1)
