@@ -89,3 +89,27 @@ def test_the_frames_labels_are_precomputed_after_the_first_paint_not_before(qtbo
     qtbot.waitUntil(lambda: len(chunks) >= 2, timeout=10000)
     assert painted and chunks[0] is True, chunks
     win.model.set_clean("")
+
+
+def test_an_idle_turn_places_frames_for_a_time_not_a_count(qtbot, monkeypatch):
+    """A turn of the idle placement ends once its time is up, after one frame at least: a
+    click or a tab shown meanwhile waits for the turn to end, and eight frames a turn took
+    35-150 ms at load 2 (a Forces tab's first visit measured one)."""
+    from PySide6.QtCore import Qt
+
+    from shaperapp.scheme.view import SchemeWidget
+    scheme = SchemeWidget(DesignModel())
+    qtbot.addWidget(scheme)
+    scheme.setAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)     # no idle turns of its own
+    scheme.resize(800, 600)
+    scheme.show()
+    assert set(scheme.dimension_label_boxes()) >= {"L1", "H"}
+    layout = scheme._labels
+    placed = []
+    real = LabelLayout._place_frame
+    monkeypatch.setattr(LabelLayout, "_place_frame", lambda self, i, *a: placed.append(i) or real(self, i, *a))
+    assert layout.precompute(0.0, 0)          # the frame shown, then one more
+    placed.clear()
+    for _ in range(3):                        # the frame shown is kept: one new frame a turn
+        assert layout.precompute(0.0, 0)
+    assert len(placed) == 3 and len(set(placed)) == 3 and 0 not in placed, placed
