@@ -85,6 +85,29 @@ def test_sixteen_speeds_fit_the_window_at_1366x768(window, tab):
         assert widget.plot_item(name).vb.sceneBoundingRect().height() > 40, name
 
 
+def test_the_force_plots_are_drawn_while_idle_before_the_first_visit(window, qtbot):
+    """Issue 40 item 5: the Forces tab's first drawing of 16 speeds was half its first
+    visit. The window, idle, draws it behind its tab; the visit then redraws nothing, and
+    what it shows equals core."""
+    window.model.set_rpms([20.0 + 5.0 * i for i in range(16)])
+    qtbot.waitUntil(lambda: all(page.is_ready() for page in window._pages.values()), timeout=60_000)
+    forces = window.forces.stack()
+    assert not forces.isVisible() and forces.is_current()
+    refreshed = []
+    real = type(forces).refresh
+    forces.refresh = lambda: refreshed.append(1) or real(forces)
+    window.tabs.setCurrentWidget(window.forces)
+    QApplication.processEvents()
+    assert refreshed == [] and forces.is_current()
+    model = window.model
+    dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms,
+                         masses_for_design(model.design, model.masses))
+    shown = window.forces.curve_data("torque")
+    assert len(shown) == 16
+    for (_, y), want in zip(shown, dyn.crank_torque):
+        np.testing.assert_allclose(y, want, rtol=1e-12, atol=1e-9)
+
+
 def test_the_cam_is_saved_and_opened_with_its_tab_never_built(window, tmp_path):
     """The Cam tab is built when first shown (issue 24), but the cam is the window's from
     the start: Save writes the cam's inputs and Open brings them back with the tab unbuilt,
