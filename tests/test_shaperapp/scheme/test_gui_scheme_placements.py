@@ -113,3 +113,35 @@ def test_an_idle_turn_places_frames_for_a_time_not_a_count(qtbot, monkeypatch):
     for _ in range(3):                        # the frame shown is kept: one new frame a turn
         assert layout.precompute(0.0, 0)
     assert len(placed) == 3 and len(set(placed)) == 3 and 0 not in placed, placed
+
+
+def test_placing_again_over_the_same_lines_and_view_burns_nothing(qtbot, monkeypatch):
+    """A language switch places the still labels again (their texts change size) over the
+    same lines and view: the rasters of those lines are kept, not burnt again (two thirds
+    of that search, issue 40 item 5), and the labels go where fresh rasters put them. New
+    lines (the dimensions hidden) are burnt."""
+    from PySide6.QtCore import Qt
+
+    from shaperapp.scheme.place import Raster
+    from shaperapp.scheme.view import SchemeWidget
+    scheme = SchemeWidget(DesignModel())
+    qtbot.addWidget(scheme)
+    scheme.setAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)
+    scheme.resize(800, 600)
+    scheme.show()
+    first = scheme.dimension_label_boxes()
+    burns = []
+    real = Raster.burn
+    monkeypatch.setattr(Raster, "burn", lambda self, ends: burns.append(len(ends)) or real(self, ends))
+    scheme.set_dimensions_visible(True)             # placed again, nothing else changed
+    assert burns == [] and scheme.dimension_label_boxes() == first
+    scheme.set_dimensions_visible(False)
+    assert burns != []
+    monkeypatch.setattr(Raster, "burn", real)
+    fresh = SchemeWidget(DesignModel())             # its own rasters, burnt afresh
+    qtbot.addWidget(fresh)
+    fresh.setAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)
+    fresh.resize(800, 600)
+    fresh.show()
+    scheme.set_dimensions_visible(True)
+    assert fresh.dimension_label_boxes() == first == scheme.dimension_label_boxes()
