@@ -131,11 +131,10 @@ class LabelLayout(QObject):
             obstacles.add(ends=self._leader_of(name), margin=LINE_CLEAR_PX * px)
 
     def _rasters(self, fixed: np.ndarray, region: tuple, cell: float, margin: float) -> tuple[Raster, Raster]:
-        """The lines that stay put burnt into a raster, and a copy with the swept lines too;
-        kept for the next placement over the same lines and view. Rasters are only read once
-        burnt. Why: a language switch places the labels again (their texts change size) over
-        the same lines, and burning both again was two thirds of that search (about 100 of
-        160 ms at load 4, issue 40 item 5)."""
+        """The lines that stay put burnt into a raster, and a copy with the swept lines too, kept
+        (only read once burnt) for the next placement over the same lines and view: a language
+        switch places the labels again over the same lines, and burning both again was two
+        thirds of that search (about 100 of 160 ms at load 4, issue 40 item 5)."""
         key = (region, cell, margin)
         kept = self._kept_rasters
         if (kept is not None and kept[0] == key and kept[1] is self._swept
