@@ -145,3 +145,22 @@ def test_placing_again_over_the_same_lines_and_view_burns_nothing(qtbot, monkeyp
     fresh.show()
     scheme.set_dimensions_visible(True)
     assert fresh.dimension_label_boxes() == first == scheme.dimension_label_boxes()
+
+
+def test_a_language_switch_places_the_labels_once_for_the_view_laid_out(qtbot, tmp_path, monkeypatch):
+    """The new texts change the window's layout and with it the scheme's view: the labels
+    were placed at once for the old view, then again for the new (issue 40 item 5, a
+    language switch's waits); now once, after the relayout, where the read-back finds them."""
+    from gui_helpers import main_window
+    calls = []
+    real = LabelLayout.place_still
+    with main_window(tmp_path) as win:
+        win.resize(1366, 768)
+        qtbot.waitExposed(win)
+        qtbot.wait(300)
+        monkeypatch.setattr(LabelLayout, "place_still", lambda self, *a: calls.append(a) or real(self, *a))
+        win.set_language("zh_CN")
+        qtbot.wait(500)
+        assert len(calls) == 1, calls
+        placed = win.scheme.dimension_label_boxes()
+        assert len(calls) == 1 and set(placed) >= {"L1", "H"}
