@@ -269,8 +269,10 @@ class SchemeWidget(SchemeReadBack, QWidget):
             self._dimensions.update(self._model, self._geometry)
             # placed once the window has laid out its new texts, which may change the view:
             # placed here at once, the search ran for the old view, then again for the new
+            # (hidden, when shown or read back, as before)
             self._labels_stale = True
-            self._update_timer.start()
+            if self.isVisible():
+                self._update_timer.start()
 
     # ---- model → layers ----------------------------------------------
     def showEvent(self, event) -> None:
