@@ -31,10 +31,11 @@ from .readback import SchemeReadBack
 from .refit import needs_fit
 
 
-# While idle after a design or zoom change, the frames' labels are placed this many at a
-# time (a few ms each), so that the animation finds them placed.
-PRECOMPUTE_CHUNK = 8
-PRECOMPUTE_PAUSE_MS = 50      # between two turns: the rest of the window's deferred work goes first
+# While idle after a design or zoom change, the frames' labels are placed (a few ms each)
+# for this long a turn, so that the animation finds them placed: a click meanwhile waits
+# for at most about one frame more than this.
+PRECOMPUTE_SLICE_S = 0.025
+PRECOMPUTE_PAUSE_MS = 25      # between two turns: the rest of the window's deferred work goes first
 
 
 class SchemeWidget(SchemeReadBack, QWidget):
@@ -266,8 +267,12 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._forces.retranslate()
         if self._geometry is not None:
             self._dimensions.update(self._model, self._geometry)
-            self._dimensions_placed()
-            self._draw_forces(self._model.angle_index)
+            # placed once the window has laid out its new texts, which may change the view:
+            # placed here at once, the search ran for the old view, then again for the new
+            # (hidden, when shown or read back, as before)
+            self._labels_stale = True
+            if self.isVisible():
+                self._update_timer.start()
 
     # ---- model → layers ----------------------------------------------
     def showEvent(self, event) -> None:
@@ -324,14 +329,14 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._move(self._model.angle_index)
 
     def _precompute(self) -> None:
-        """A few more frames' labels placed while idle (see PRECOMPUTE_CHUNK). Not for a
+        """A few more frames' labels placed while idle (see PRECOMPUTE_SLICE_S). Not for a
         scheme that is never on screen (the report's, drawn offscreen and exported at two
         positions): it never animates, and the report's later event processing ran these
         searches for frames nobody sees (a sixth of the report's figures' time)."""
         if (self._geometry is None or self._stale or not self.isVisible()
                 or self.testAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)):
             return
-        if self._labels.precompute(PRECOMPUTE_CHUNK, self._model.angle_index):
+        if self._labels.precompute(PRECOMPUTE_SLICE_S, self._model.angle_index):
             self._precompute_timer.start()
 
     def _on_angle(self, index: int) -> None:
