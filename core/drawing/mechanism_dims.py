@@ -12,7 +12,7 @@ what CAD measures on the sheet's DXF times the scale: :mod:`core.drawing.sheet_d
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from typing import Iterable, Sequence
 
 import numpy as np
 
@@ -53,18 +53,36 @@ class _Placed:
         self.segs = strokes(self.drawn)        # the circles too (the crank's centre circle)
         self.lines = sd.Lines(self.segs)
 
-    def cost(self, dim: sd.Dimension, extra: float = 0.0) -> float:
+    def cost(self, dim: sd.Dimension, extra: float = 0.0, beat: float = math.inf) -> float:
+        """1000 per placed text its text meets or its lines cross, 10 per line its text
+        crosses, plus ``extra``; inf at once where that without its own lines' crossings
+        (the dearer part: their strokes, and each placed text against them) is already
+        ``beat`` or more, so that the whole could not be less."""
         box = dim.text.box()
         hits = sum(boxes_meet(box, d.text.box()) for d in self.dims)
+        crossed = sd.text_crossings(dim.text, self.lines)
+        if 1000.0 * hits + 10.0 * crossed + extra >= beat:
+            return math.inf
         own = sd.Lines(strokes([*dim.parts, *dim.kept]))      # its lines through a text placed before
         hits += sum(sd.text_crossings(d.text, own) > 0 for d in self.dims)
-        return 1000.0 * hits + 10.0 * sd.text_crossings(dim.text, self.lines) + extra
+        return 1000.0 * hits + 10.0 * crossed + extra
+
+    def best(self, candidates: Iterable[sd.Dimension], extra=lambda dim: 0.0) -> sd.Dimension:
+        """``min(candidates, key=cost + extra)``, the first of equals, each cost left
+        unfinished once it cannot be less than the least so far (the same choice: a cost
+        only grows by its own lines' crossings). Most of the motion sheet's dimension search
+        is the hundreds of candidates of L3 and H costed against each placed text."""
+        found, least = None, math.inf
+        for dim in candidates:
+            cost = self.cost(dim, extra(dim), least)
+            if found is None or cost < least:
+                found, least = dim, cost
+        return found
 
     def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
         """The candidate whose text meets no placed text, whose lines cross none, and whose
         text crosses the fewest lines (then the least ``extra``; first of equals), kept."""
-        best = min(candidates, key=lambda dim: self.cost(dim, extra(dim)))
-        return self._keep(best)
+        return self._keep(self.best(candidates, extra))
 
     def add_sized(self, make, extra=lambda dim: 0.0, outward: float = 0.0) -> sd.Dimension:
         """As :meth:`add` with the candidates ``make(height)`` at the dimension text's height,
@@ -73,10 +91,9 @@ class _Placed:
         where that too is crossed, with ``outward`` (an aligned dimension: the side of its
         line away from the link, ±1), its text led out to the nearest clear spot (a leader
         from its line, the text horizontal: the cascade's last step)."""
-        cost = lambda dim: self.cost(dim, extra(dim))      # noqa: E731
-        best = min(make(sd.TEXT_MM), key=cost)
+        best = self.best(make(sd.TEXT_MM), extra)
         if self.cost(best) > 0:
-            small = min(make(smaller_height(sd.TEXT_MM)), key=cost)
+            small = self.best(make(smaller_height(sd.TEXT_MM)), extra)
             if self.cost(small) < self.cost(best):
                 best = small
         if self.cost(best) > 0 and outward:

@@ -8,14 +8,13 @@ from __future__ import annotations
 
 import os
 
-import numpy as np
 from ezdxf import zoom
 from ezdxf.document import Drawing
-from ezdxf.entities.lwpolyline import LWPolylinePoints
 from ezdxf.enums import TextEntityAlignment
 
 from . import dimensions as dims
 from .dxf import literal_text, new_document, save_dxf, text_attribs
+from .dxf_polyline import add_polyline
 from .outline_text import add_outline_text
 from .sheet import Circle, Polyline, Sheet, Text
 
@@ -65,7 +64,7 @@ def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
         attribs = {"layer": item.layer}
         if isinstance(item, Polyline):
             points = [to(x, y) for x, y in item.points]
-            _add_lwpolyline(msp, points, item.closed, attribs)
+            add_polyline(msp, points, item.closed, attribs)
             if item.filled:
                 hatch = msp.add_hatch(dxfattribs=attribs)
                 hatch.paths.add_polyline_path(points, is_closed=True)
@@ -80,18 +79,6 @@ def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
                 text.set_placement(to(*run.position), align=ALIGNMENTS[run.align])
     zoom.window(msp, low, high)            # CAD opens on the whole sheet
     return doc
-
-
-def _add_lwpolyline(msp, points: list[tuple[float, float]], closed: bool, attribs: dict) -> None:
-    """``msp.add_lwpolyline(points, …)`` with the vertices set in one array: ezdxf appends
-    them one by one, copying the array it has so far each time (quadratic: a sheet's
-    curves of hundreds of points were a fifth of its DXF's time). The same vertices
-    (x, y, widths 0, bulge 0), so the same DXF."""
-    line = msp.add_lwpolyline((), close=closed, dxfattribs=attribs)
-    vertices = np.zeros((len(points), LWPolylinePoints.VERTEX_SIZE))
-    if len(points):
-        vertices[:, :2] = points
-    line.lwpoints.extend(vertices)
 
 
 def _dimension(msp, dim, blank: bool = False) -> None:

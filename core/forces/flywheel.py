@@ -9,6 +9,7 @@ from the ram displacement.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -17,10 +18,11 @@ from core.linkage.designs import Designs
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import DIRECT_SPEEDS, affine_at, on_arc, piece_peaks, turning_cells
+from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, affine_at, gather, on_arc,
+                           piece_peaks, switch_window, turning_cells)
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
-from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, ram_origin, sharp_angles
+from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, sharp_angles
 
 
 def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
@@ -117,12 +119,13 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     samples = _torque_samples(d, grid, masses)
     on, off = cut_window(d, masses.idle_fraction, (phi, grid.ram_x))
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
-    start = (grid.kinetic[:, :1], grid.potential[:, :1])          # φ = 0 is the grid's first
-    top, bottom = _energy_extremes(d, samples, start, omega, mean, (on, off), masses)
+    start = (grid.kinetic[:, :1], grid.potential[:, :1], grid.ram_x[:, :1])  # φ = 0: the first
+    window = switch_window(d, samples, on, off, masses)
+    top, bottom = _energy_extremes(d, samples, start, omega, mean, window, masses)
     swing = top - bottom
     je = 2.0 * grid.kinetic                                       # the kinetic energy is ½·J_e
     if peaks:
-        high, low = _torque_peaks(d, samples, omega, masses, (on, off))
+        high, low = _torque_peaks(d, samples, omega, masses, window)
     else:
         high = low = np.full(top.shape, np.nan)
     out = {"mean_torque_N_m": np.repeat(mean[:, None], omega.size, axis=1),
@@ -147,7 +150,7 @@ def cut_work(d: Designs, masses: MassProperties) -> np.ndarray:
 
 
 def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassProperties,
-            start: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+            start: tuple[np.ndarray, np.ndarray, np.ndarray]) -> np.ndarray:
     """E(φ) = work of (driving torque − mean torque) from φ = 0, J, at angles ``phi``.
 
     The driving torque less the cut is the rate of change of the energy the links store,
@@ -158,12 +161,13 @@ def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassPropert
     only on a grid. E is the stored energy gained since φ = 0, plus the cut's work so far
     (P times the distance cut, exact at any angle: torque·ω = P·v while cutting), less the
     mean torque's work. ``stored`` is the :class:`~core.forces.jet.TorqueJet` at ``phi``
-    (its kinetic, potential and ram_x are read), ``start`` its (kinetic, potential) at
-    φ = 0; ``w2`` and ``mean`` broadcast against the angles' shape with a speed axis before
-    it (or elementwise, for flat arrays of points).
+    (its kinetic, potential and ram_x are read), ``start`` its (kinetic, potential, ram_x)
+    at φ = 0 (the ram's x there is the zero of its travel); ``w2`` and ``mean`` broadcast
+    against the angles' shape with a speed axis before it (or elementwise, for flat arrays
+    of points).
     """
     kinetic, potential = stored.kinetic, stored.potential
-    x = stored.ram_x - ram_origin(d)
+    x = stored.ram_x - start[2]
     idle = masses.idle_fraction * d.stroke
     turn = np.broadcast_to(np.mod(phi, 2.0 * math.pi), np.shape(x))
     travel = np.where(turn <= math.pi + d.theta, np.clip(x, idle, d.stroke - idle) - idle,
@@ -175,9 +179,9 @@ def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassPropert
             + masses.cut_force_N * MM * travel - mean * turn)
 
 
-def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, np.ndarray], omega: np.ndarray, mean: np.ndarray,
-                     window: tuple[np.ndarray, np.ndarray],
-                     masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
+def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], omega: np.ndarray,
+                     mean: np.ndarray,
+                     window: Window, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest E(φ) per design and speed, exactly, J, each (designs, speeds).
 
     E is continuous and smooth except at the cut's two switch angles, where the torque
@@ -188,47 +192,76 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, np.nda
     grid's, plus the rod variant's samples crowding toward its sharp angles), and each is
     polished by Newton's method on the closed-form slope (every one: E may have several
     nearly equal peaks, and skipping cells by their end tangents missed some near a rod's
-    sharp angles); a zero counts only inside its own piece. ``samples`` are
-    :func:`_torque_samples`'s, ``start`` the stored energy (kinetic, potential) at φ = 0,
-    ``mean`` the mean torque (designs,), ``window`` the cut's switch angles.
+    sharp angles), from the top of the quintic through E, E′ and E″ at the cell's samples,
+    until the next step would change E by at most ``PEAK_GAIN`` of itself (two to five
+    evaluations and one more for E before: a third of the loaded sweep's time at 16 speeds);
+    a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
+    ``start`` the stored energy (kinetic, potential) and the ram's x at φ = 0, ``mean`` the
+    mean torque (designs,), ``window`` the cut's switch angles with the jet there and the
+    cells of each piece (:func:`core.forces.torque_peaks.switch_window`).
     """
-    from core.linkage.polish import newton_zero
+    from core.linkage.polish import newton_maximum
 
-    on, off = window
+    on, off = window.on, window.off
     count, speeds = mean.size, omega.size
     col = d.column()
-    x, jet, segments = samples
+    x, jet, _ = samples
     w2 = omega ** 2
     kinks = np.stack([on, off], axis=-1)
-    at_ends = _energy(col, kinks, torque_jet(col, kinks, masses), w2[None, :, None],
+    at_ends = _energy(col, kinks, window.jet, w2[None, :, None],
                       mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
     top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
+    start = tuple(v[:, 0] for v in start)
 
-    def slope(phi, w2, mean, sign, cutting, *lengths):
-        one = torque_jet(d.with_lengths(lengths), phi, masses)
-        g = one.static + w2 * one.inertial + cutting * one.cut - mean
-        return g, sign * g, sign * (one.static1 + w2 * one.inertial1 + cutting * one.cut1)
+    def energy(phi, design, speed):
+        """E at the samples ``phi`` (design, speed: indices) from the jets there."""
+        one = d.with_lengths([v[design] for v in lengths])
+        return _energy(one, gather(x, design, phi),
+                       _Stored(*(gather(v, design, phi) for v in (jet.kinetic, jet.potential, jet.ram_x))),
+                       w2[speed], mean[design], masses, tuple(v[design] for v in start))
 
-    for cutting, piece in ((1.0, (on, off)), (0.0, (off, on))):
+    def fun(phi, w2, mean, sign, cutting, k0, v0, x0, *lengths):
+        one = d.with_lengths(lengths)
+        stored = torque_jet(one, phi, masses)
+        g = stored.static + w2 * stored.inertial + cutting * stored.cut - mean
+        slope = stored.static1 + w2 * stored.inertial1 + cutting * stored.cut1
+        value = _energy(one, phi, stored, w2, mean, masses, (k0, v0, x0))
+        return sign * value, sign * g, sign * slope
+
+    found = []
+    for k, (cutting, piece) in enumerate(((1.0, (on, off)), (0.0, (off, on)))):
         parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
-        for kind, (design, speed, left, right, lo, hi) in turning_cells(
-                x, parts, w2, segments, piece, bool(cutting)):
-            sign = 1.0 - 2.0 * kind                                # E's maximum, or its minimum
-            g_lo, g_hi = (affine_at(parts, w2, design, c, speed) for c in (left, right))
-            owner = design * speeds + speed
-            begin = lo + (hi - lo) * (g_lo / (g_lo - g_hi))      # the secant's zero
-            roots = newton_zero(slope, lo, hi, begin,
-                                [w2[speed], mean[design], np.full(design.size, sign),
-                                 np.full(design.size, cutting)] + [v[design] for v in lengths])[0]
-            inside = on_arc(roots, piece[0][design], piece[1][design])
-            design, speed, roots, owner = (v[inside] for v in (design, speed, roots, owner))
-            one = d.with_lengths([v[design] for v in lengths])
-            value = _energy(one, roots, torque_jet(one, roots, masses), w2[speed], mean[design],
-                            masses, tuple(v[design, 0] for v in start))
-            np.fmax.at(top, owner, value)
-            np.fmin.at(bottom, owner, value)
+        slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)               # E″
+        for kind, cells in turning_cells(parts, w2, window.cells[k]):
+            sign = np.full(cells.design.size, 1.0 - 2.0 * kind)    # E's maximum, or its minimum
+            design, speed = cells.design, cells.speed
+            found.append([design, speed, cells.lo, cells.hi, sign, np.full(sign.size, cutting),
+                          piece[0][design], piece[1][design]]
+                         + [sign * energy(c, design, speed) for c in (cells.left, cells.right)]
+                         + [sign * affine_at(p, w2, design, c, speed)
+                            for p in (parts, slopes) for c in (cells.left, cells.right)])
+    if not found:
+        return top.reshape(count, speeds), bottom.reshape(count, speeds)
+    design, speed, lo, hi, sign, cutting, first, last, e_lo, e_hi, g_lo, g_hi, c_lo, c_hi = (
+        np.concatenate(v) for v in zip(*found))
+    roots, value = newton_maximum(
+        fun, lo, hi, e_lo, e_hi, g_lo, g_hi,
+        [w2[speed], mean[design], sign, cutting] + [v[design] for v in start]
+        + [v[design] for v in lengths], gain=PEAK_GAIN, curvatures=(c_lo, c_hi))
+    inside = on_arc(roots, first, last)
+    owner, value = (design * speeds + speed)[inside], (sign * value)[inside]
+    np.fmax.at(top, owner, value)
+    np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
+
+
+class _Stored(NamedTuple):
+    """What :func:`_energy` reads of a :class:`~core.forces.jet.TorqueJet`."""
+
+    kinetic: np.ndarray
+    potential: np.ndarray
+    ram_x: np.ndarray
 
 
 def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tuple:
@@ -253,14 +286,14 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
                                     for v in torque_jet(col, x[-1], masses))))
             start = segments[-1][1]
             segments.append((start, start + CROWD_OFFSETS.size, 0.0))
-    if len(x) == 1:
-        return x[0], jets[0], segments
+    if len(x) == 1:                   # contiguous, for the flat gathers (torque_peaks.gather)
+        return np.ascontiguousarray(x[0]), TorqueJet(*map(np.ascontiguousarray, jets[0])), segments
     return (np.concatenate(x, axis=-1),
             TorqueJet(*(np.concatenate(v, axis=-1) for v in zip(*jets))), segments)
 
 
 def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
-                  window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+                  window: Window) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
     The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + cut while

@@ -5,19 +5,22 @@ Below :mod:`core.forces.flywheel`, which samples the torque's speed-independent 
 and without it, switched at the cut's two ends; each curve's maxima lie in the cells between
 samples where its slope turns from rising to falling, and each such cell is polished by
 Newton's method (:func:`core.linkage.polish.newton_maximum`) on the closed-form slope and
-curvature, two evaluations where Brent's method on the torque alone took eight or more.
-Which cells turn at which speed comes from one binary search per sample (the slope is
-affine in ω²), so the per-speed work scales with the cells found.
+curvature, from the top of the quintic through the cell's ends: mostly one evaluation, where
+Brent's method on the torque alone took eight or more. Which cells turn at which speed comes
+from one binary search per sample (the slope is affine in ω²), so the per-speed work scales
+with the cells found; and a cell is polished only where the chord of its largest value,
+convex in ω², reaches the candidates already known at that speed (:func:`chord_bounds`).
 """
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
 from core.linkage.designs import Designs
 from core.linkage.polish import newton_maximum
-from .jet import torque_jet
+from .jet import TorqueJet, torque_jet
 from .masses import MassProperties
 
 def reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
@@ -45,7 +48,15 @@ def affine_at(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, design: np.n
               column: np.ndarray, speed: np.ndarray) -> np.ndarray:
     """a + ω²·b at the given (design, sample column, speed) triples, for ``parts`` (a, b),
     arrays (designs, samples) the same at all speeds, and ω² ``w2`` (speeds,)."""
-    return parts[0][design, column] + w2[speed] * parts[1][design, column]
+    index = design * parts[0].shape[-1] + column
+    return parts[0].ravel().take(index) + w2.take(speed) * parts[1].ravel().take(index)
+
+
+def gather(array: np.ndarray, design: np.ndarray, column: np.ndarray) -> np.ndarray:
+    """``array[design, column]`` for a (designs, samples) array, by its flat index: a take
+    from a C-contiguous array costs a third of the 2-D fancy index (numpy 2.4; the loaded
+    sweep gathers some 10^6 values per 500 designs at 16 speeds)."""
+    return array.ravel().take(design * array.shape[-1] + column)
 
 
 def _signed_speeds(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray) -> tuple:
@@ -84,20 +95,78 @@ PEAK_GAIN = 1e-15
 DIRECT_SPEEDS = 3
 
 
-def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, segments,
-                  piece: tuple[np.ndarray, np.ndarray],
-                  cutting: bool) -> list[tuple[int, tuple[np.ndarray, ...]]]:
-    """The cells between samples where the curve a + ω²·b (``parts``, (designs, n) at φ ``x``)
-    falls through zero (kind 0: positive, then not) or rises through it (kind 1: negative,
-    then not) at each speed (ω² ``w2``), and that reach into ``piece`` ((start, stop) per
-    design; the cut if ``cutting``): a list of (kind, (design, speed, left sample, right
-    sample, lo, hi)), flat arrays, the samples as columns of ``x``. ``segments`` as in
-    :func:`core.linkage.extrema.grid_argmax`.
+class Cells(NamedTuple):
+    """Turning cells, one entry per (cell, speed), flat arrays: the design, the speed's index,
+    the samples either side (columns of the samples' φ) and their angles (rad, ``hi`` a turn
+    on where the cell wraps). The speeds at which one cell turns are one run of the speeds
+    sorted by ω², and its entries lie together in that order: ``rank`` is an entry's place in
+    its run and ``count`` the run's length; ``below`` and ``above`` are the indices of the
+    nearest speeds outside the run (where the cell does not turn), -1 where the run reaches
+    the slowest or the fastest speed (and always with ``DIRECT_SPEEDS`` or fewer speeds,
+    where every run is one speed)."""
+
+    design: np.ndarray
+    speed: np.ndarray
+    left: np.ndarray
+    right: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+    rank: np.ndarray
+    count: np.ndarray
+    below: np.ndarray
+    above: np.ndarray
+
+
+class Window(NamedTuple):
+    """The cut's switch angles (rad, (designs,)) and what the torque's and the energy's
+    searches both take from them: the jet there (each field (designs, 2): at on, at off),
+    and per piece, the cut then the rest, the cells between samples that reach into it
+    (:func:`piece_cells`)."""
+
+    on: np.ndarray
+    off: np.ndarray
+    jet: TorqueJet
+    cells: tuple[list, list]
+
+
+def switch_window(d: Designs, samples: tuple, on: np.ndarray, off: np.ndarray,
+                  masses: MassProperties) -> Window:
+    """The :class:`Window` of the switch angles ``on``, ``off`` over ``samples`` (φ, jet,
+    segments: :func:`core.forces.flywheel._torque_samples`')."""
+    x, _, segments = samples
+    jet = torque_jet(d.column(), np.stack([on, off], axis=-1), masses)
+    return Window(on, off, jet, (piece_cells(x, segments, (on, off), True),
+                                 piece_cells(x, segments, (off, on), False)))
+
+
+def piece_cells(x: np.ndarray, segments, piece: tuple[np.ndarray, np.ndarray],
+                cutting: bool) -> list[tuple[np.ndarray, ...]]:
+    """Per segment of the samples φ ``x`` (designs, n) (``segments`` as in
+    :func:`core.linkage.extrema.grid_argmax`): its cells' left and right sample (columns of
+    ``x``), their angles lo and hi (rad, (designs, cells); ``hi`` a turn on where the cell
+    wraps) and which of them reach into ``piece`` ((start, stop) per design; the cut if
+    ``cutting``: :func:`reaches`)."""
+    start, stop = piece
+    out = []
+    for first, last, period in segments:
+        left = np.arange(first, last if period > 0.0 else last - 1)
+        right = np.where(left + 1 < last, left + 1, first)
+        lo = np.take(x, left, axis=1)              # C order (x[:, left] is Fortran's)
+        hi = np.take(x, right, axis=1) + np.where(left + 1 < last, 0.0, period)
+        out.append((left, right, lo, hi, reaches(lo, hi, start[:, None], stop[:, None], cutting)))
+    return out
+
+
+def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
+                  cells: list[tuple[np.ndarray, ...]]) -> list[tuple[int, Cells]]:
+    """The cells between samples where the curve a + ω²·b (``parts``, (designs, n) at the
+    samples) falls through zero (kind 0: positive, then not) or rises through it (kind 1:
+    negative, then not) at each speed (ω² ``w2``), among those of ``cells`` that reach into
+    their piece (:func:`piece_cells`): a list of (kind, :class:`Cells`).
 
     Beyond ``DIRECT_SPEEDS`` nothing of shape (designs, speeds, samples) is formed: per
     cell, the speeds where the left sample has the sign and the right one has not are one
     range of the sorted speeds (:func:`_signed_speeds`), expanded only where a cell has any."""
-    start, stop = piece
     direct = w2.size <= DIRECT_SPEEDS
     if direct:
         values = parts[0][:, None, :] + w2[:, None] * parts[1][:, None, :]
@@ -106,54 +175,60 @@ def turning_cells(x: np.ndarray, parts: tuple[np.ndarray, np.ndarray], w2: np.nd
         order = np.argsort(w2, kind="stable")
         signs = _signed_speeds(parts, w2)
     out = []
-    for first, last, period in segments:
-        left = np.arange(first, last if period > 0.0 else last - 1)
-        right = np.where(left + 1 < last, left + 1, first)
-        lo = x[:, left]
-        hi = x[:, right] + np.where(left + 1 < last, 0.0, period)
-        reach = reaches(lo, hi, start[:, None], stop[:, None], cutting)
+    for left, right, lo, hi, reach in cells:
         for kind, sign in enumerate(signs):
             if direct:
                 design, speed, cell = np.nonzero((sign[..., left] > sign[..., right])
                                                  & reach[:, None, :])
-                out.append((kind, (design, speed, left[cell], right[cell], lo[design, cell],
-                                   hi[design, cell])))
+                one, none = np.zeros_like(design), np.full(design.size, -1)
+                out.append((kind, Cells(design, speed, left[cell], right[cell],
+                                        gather(lo, design, cell), gather(hi, design, cell),
+                                        one, one + 1, none, none)))
                 continue
-            # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1)
-            a1, b1 = sign[0][:, left], sign[1][:, left]
-            a2, b2 = sign[0][:, right], sign[1][:, right]
-            for begin, end in ((a1, np.minimum(b1, a2)), (np.maximum(a1, b2), b1)):
-                counts = np.where(reach, np.maximum(end - begin, 0), 0)
-                design, cell = np.nonzero(counts)
-                counts, begin = counts[design, cell], begin[design, cell]
-                total = int(counts.sum())
-                if total == 0:
-                    continue
-                owner = np.repeat(np.arange(design.size), counts)
-                rank = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
-                design, cell = design[owner], cell[owner]
-                out.append((kind, (design, order[begin[owner] + rank], left[cell], right[cell],
-                                   lo[design, cell], hi[design, cell])))
+            # [a1, b1) minus [a2, b2) = [a1, min(b1, a2)) ∪ [max(a1, b2), b1), of which one
+            # is empty (each signed set is a prefix or a suffix of the sorted speeds, or [0, 0)).
+            a1, b1, a2, b2 = (np.take(v, i, axis=1) for i in (left, right) for v in sign)
+            end = np.minimum(b1, a2)
+            first = end > a1
+            begin, end = np.where(first, a1, np.maximum(a1, b2)), np.where(first, end, b1)
+            counts = np.where(reach, np.maximum(end - begin, 0), 0)
+            design, cell = np.nonzero(counts)
+            counts, begin = gather(counts, design, cell), gather(begin, design, cell)
+            total = int(counts.sum())
+            if total == 0:
+                continue
+            owner = np.repeat(np.arange(design.size), counts)
+            rank = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
+            design, cell = design[owner], cell[owner]
+            low, high = begin[owner], begin[owner] + counts[owner]     # the run, sorted
+            below = np.where(low > 0, order[np.maximum(low - 1, 0)], -1)
+            above = np.where(high < w2.size, order[np.minimum(high, w2.size - 1)], -1)
+            out.append((kind, Cells(design, order[low + rank], left[cell], right[cell],
+                                    gather(lo, design, cell), gather(hi, design, cell),
+                                    rank, counts[owner], below, above)))
     return out
 
 
 def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
-                window: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+                window: Window) -> tuple[np.ndarray, np.ndarray]:
     """(largest, smallest) driving torque per design and speed, N·m, each (designs, speeds).
 
     ``samples`` are :func:`core.forces.flywheel._torque_samples`' (φ, jet, segments) and
-    ``window`` the cut's switch angles (on, off) per design. Candidates: both curves' values
+    ``window`` the cut's switch angles with the jet there and the cells of each piece. Candidates: both curves' values
     at both switch angles, the samples beside each turning cell that lie inside the piece,
     and each polished maximum or minimum that lands inside its piece (a smooth curve's
-    extremum over an arc is at an end or where its slope turns). Every turning cell is
-    polished: skipping those whose end tangents' meeting point (doubled margin) could not
-    beat the samples missed a rod's minimum torque by 2e-4 of the peak (K near 5, a
-    crank of 6 mm, a short trailing rod), which the hypothesis test at 16 speeds found.
+    extremum over an arc is at an end or where its slope turns).
+
+    A turning cell is polished unless :func:`chord_bounds` shows that it cannot beat the
+    candidates already known at its speed; the bound is exact (convexity in ω²), not a
+    guess from the cell's end tangents, which missed a rod's minimum torque by 2e-4 of the
+    peak (K near 5, a crank of 6 mm, a short trailing rod) in the hypothesis test at 16
+    speeds. A cell whose run of turning speeds reaches the slowest or the fastest speed is
+    polished there first, so that the chord has two ends; the rest follow in a second pass.
     """
-    x, jet, segments = samples
-    on, off = window
+    x, jet, _ = samples
+    on, off, ends = window.on, window.off, window.jet
     w2 = omega ** 2
-    ends = torque_jet(d.column(), np.stack([on, off], axis=-1), masses)
     rest = ends.static[:, None, :] + w2[:, None] * ends.inertial[:, None, :]   # (designs, speeds, 2)
     cut = rest + ends.cut[:, None, :]
     best = np.stack([np.maximum(cut.max(axis=-1), rest.max(axis=-1)),
@@ -164,38 +239,92 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     for k, cutting in enumerate((1.0, 0.0)):
         values = (jet.static + cutting * jet.cut, jet.inertial)
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
+        curves = (jet.static2 + cutting * jet.cut2, jet.inertial2)
         first, last = pieces[k]
-        for kind, (design, speed, left, right, lo, hi) in turning_cells(x, slopes, w2, segments,
-                                                                          pieces[k], k == 0):
+        inside_piece = on_arc(x, first[:, None], last[:, None])     # per sample
+        for kind, cells in turning_cells(slopes, w2, window.cells[k]):
             sign = 1.0 - 2.0 * kind
+            design, speed = cells.design, cells.speed
             owner = (kind * on.size + design) * w2.size + speed
-            cell = [k, kind, design, speed, lo, hi]
-            for column in (left, right):
+            entry = [k, kind, design, speed, cells.lo, cells.hi]
+            for column in (cells.left, cells.right):
                 value = sign * affine_at(values, w2, design, column, speed)
-                inside = on_arc(x[design, column], first[design], last[design])
+                inside = gather(inside_piece, design, column)
                 np.fmax.at(flat, owner[inside], value[inside])
-                cell.append(value)
-            cell += [sign * affine_at(slopes, w2, design, column, speed) for column in (left, right)]
-            found.append(cell)
+                entry.append(value)
+            entry += [sign * affine_at(parts, w2, design, column, speed)
+                      for parts in (slopes, curves) for column in (cells.left, cells.right)]
+            entry += [cells.rank, cells.count, cells.below, cells.above]
+            entry += [_cell_top(values, w2, sign, cells, side) for side in (cells.below, cells.above)]
+            found.append(entry)
     if not found:
         return best[0], -best[1]
-    k, kind, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi = (
-        np.concatenate([np.broadcast_to(c[i], c[2].shape) for c in found]) for i in range(10))
+    (k, kind, design, speed, lo, hi, v_lo, v_hi, s_lo, s_hi, c_lo, c_hi, rank, count, below,
+     above, top_below, top_above) = (np.concatenate([np.broadcast_to(c[i], c[2].shape)
+                                                     for c in found]) for i in range(18))
     owner = (kind * on.size + design) * w2.size + speed
-    if owner.size:
-        sign = 1.0 - 2.0 * kind
-        cutting = 1.0 - k
-        lengths = [np.broadcast_to(v, on.shape)[design] for v in d.lengths()]
+    lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
+    polished = np.full(owner.size, np.nan)
 
-        def fun(t, w2, sign, cutting, *lengths):
-            one = torque_jet(d.with_lengths(lengths), t, masses)
-            static, inertial, cut = one[0:3], one[3:6], one[6:9]
-            return tuple(sign * (s + w2 * i + cutting * c) for s, i, c in zip(static, inertial, cut))
+    def fun(t, w2, sign, cutting, *lengths):
+        one = torque_jet(d.with_lengths(lengths), t, masses)
+        static, inertial, cut = one[0:3], one[3:6], one[6:9]
+        return tuple(sign * (s + w2 * i + cutting * c) for s, i, c in zip(static, inertial, cut))
 
-        root, value = newton_maximum(fun, lo, hi, v_lo, v_hi, s_lo, s_hi,
-                                     [w2[speed], sign, cutting] + lengths, gain=PEAK_GAIN)
-        start = np.where(k == 0, on[design], off[design])
-        stop = np.where(k == 0, off[design], on[design])
+    def polish(which: np.ndarray) -> None:
+        """Polish the cells ``which`` (indices into the entries) and count the peaks inside."""
+        if which.size == 0:
+            return
+        i = which
+        root, value = newton_maximum(fun, lo[i], hi[i], v_lo[i], v_hi[i], s_lo[i], s_hi[i],
+                                     [w2[speed[i]], 1.0 - 2.0 * kind[i], 1.0 - k[i]]
+                                     + [v[design[i]] for v in lengths], gain=PEAK_GAIN,
+                                     curvatures=(c_lo[i], c_hi[i]))
+        polished[i] = value
+        start = np.where(k[i] == 0, on[design[i]], off[design[i]])
+        stop = np.where(k[i] == 0, off[design[i]], on[design[i]])
         inside = on_arc(root, start, stop)
-        np.fmax.at(flat, owner[inside], value[inside])
+        np.fmax.at(flat, owner[i][inside], value[inside])
+
+    # First the runs' ends at the slowest and the fastest speed, which no chord covers.
+    index = np.arange(owner.size)
+    slowest, fastest = (rank == 0) & (below < 0), (rank == count - 1) & (above < 0)
+    polish(np.flatnonzero(slowest | fastest))
+    low, high = index - rank, index - rank + count - 1           # each run's first and last
+    bound = chord_bounds(w2, speed, (np.where(below < 0, speed[low], below), top_below, polished[low]),
+                         (np.where(above < 0, speed[high], above), top_above, polished[high]),
+                         (below < 0, above < 0))
+    polish(np.flatnonzero(~(slowest | fastest) & ~(bound <= flat[owner])))   # NaN: polished
     return best[0], -best[1]
+
+
+def _cell_top(values: tuple[np.ndarray, np.ndarray], w2: np.ndarray, sign: float, cells: Cells,
+              side: np.ndarray) -> np.ndarray:
+    """The larger of sign·(a + ω²·b) at a cell's two samples, at the speeds ``side`` (its
+    largest value over the cell where it does not turn there), NaN where ``side`` is -1."""
+    at = np.maximum(side, 0)
+    top = np.maximum(sign * affine_at(values, w2, cells.design, cells.left, at),
+                     sign * affine_at(values, w2, cells.design, cells.right, at))
+    return np.where(side >= 0, top, np.nan)
+
+
+def chord_bounds(w2: np.ndarray, speed: np.ndarray, lower: tuple, upper: tuple,
+                 polished: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """An upper bound on a turning cell's largest value at ``speed`` (indices into ω² ``w2``),
+    from two speeds on either side of it.
+
+    The cell's largest value M(ω²) = max over φ in the cell of sign·(a(φ) + ω²·b(φ)) is the
+    largest of affine functions of ω², so it is convex in ω² and lies below its chord
+    between any two speeds on either side. ``lower`` and ``upper`` are each (speed index,
+    M from the samples, M polished) of the chord's ends, and ``polished`` says per end which
+    of the two to take: the nearest speed where the cell does not turn, where M is the larger
+    of the cell's end samples (the bracketing grid's premise: at most one turn per cell), or
+    the run's own end, polished, where the run reaches the slowest or the fastest speed. A
+    margin of 1e-12 of the ends' values covers the rounding; NaN where an end is NaN.
+    """
+    (s0, top0, peak0), (s1, top1, peak1) = lower, upper
+    m0, m1 = np.where(polished[0], peak0, top0), np.where(polished[1], peak1, top1)
+    w0, w1 = w2[s0], w2[s1]
+    with np.errstate(all="ignore"):
+        t = (w2[speed] - w0) / (w1 - w0)
+        return m0 * (1.0 - t) + m1 * t + 1e-12 * (np.abs(m0) + np.abs(m1))

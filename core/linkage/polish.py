@@ -71,7 +71,9 @@ def newton_maximum(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]]
                    lo: np.ndarray, hi: np.ndarray, v_lo: np.ndarray, v_hi: np.ndarray,
                    s_lo: np.ndarray, s_hi: np.ndarray,
                    args: Sequence[np.ndarray] = (), iterations: int = 60,
-                   gain: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+                   gain: float = 0.0,
+                   curvatures: tuple[np.ndarray, np.ndarray] | None = None,
+                   ) -> tuple[np.ndarray, np.ndarray]:
     """(x, value) of the maximum of each curve in its cell [lo, hi], across which its slope
     turns from rising (``s_lo`` > 0) to falling (``s_hi`` ≤ 0); 1-D arrays.
 
@@ -90,10 +92,20 @@ def newton_maximum(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]]
     slope²/(2·|curvature|) (exact for the quadratic the step solves), is at most ``gain``
     times the value's size: its value is then the maximum's to about that, one evaluation
     sooner (the loaded sweep's torque peaks: ``gain`` 1e-15, three evaluations became two).
+
+    With ``curvatures`` (the slope's slope at ``lo`` and ``hi``) the start is the top of the
+    quintic through the ends' values, slopes and curvatures (:func:`_quintic_top`): on the
+    loaded sweep's torque peaks a median 1e-10 to 5e-9 rad from the maximum against 1e-6 to
+    2e-5 for the cubic's, so that with ``gain`` 1e-15 most curves are done after one
+    evaluation (83-100 % of the cells of the 16-speed rod benchmark; two before).
     """
     a, b = np.array(lo, dtype=float), np.array(hi, dtype=float)
-    x = a + (b - a) * _cubic_top(v_lo, v_hi, s_lo * (b - a), s_hi * (b - a))
-    return newton_zero(fun, a, b, x, args, iterations, gain)
+    width = b - a
+    t = _cubic_top(v_lo, v_hi, s_lo * width, s_hi * width)
+    if curvatures is not None:
+        t = _quintic_top(v_lo, v_hi, s_lo * width, s_hi * width,
+                         curvatures[0] * width * width, curvatures[1] * width * width, t)
+    return newton_zero(fun, a, b, a + width * t, args, iterations, gain)
 
 
 def newton_zero(fun: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]],
@@ -148,6 +160,26 @@ def _cubic_top(v0, v1, m0, m1):
     t = np.where((first >= 0.0) & (first <= 1.0), first, second)
     t = np.where((t >= 0.0) & (t <= 1.0), t, secant)
     return np.where((t >= 0.0) & (t <= 1.0), t, 0.5)
+
+
+def _quintic_top(v0, v1, m0, m1, c0, c1, t, steps: int = 3):
+    """Where in [0, 1] the quintic with values v0, v1, slopes m0, m1 and curvatures c0, c1
+    at 0 and 1 (per unit of t) peaks, by Newton's method on its slope from ``t`` (the cubic's
+    top, :func:`_cubic_top`), each step kept in [0, 1]; ``t`` where that gives no finite
+    point. Hermite's quintic is v0 + m0·t + c0/2·t² + p3·t³ + p4·t⁴ + p5·t⁵ with, for the
+    ends' residues A = v1 − v0 − m0 − c0/2, B = m1 − m0 − c0, C = c1 − c0:
+    p3 = 10A − 4B + C/2, p4 = −15A + 7B − C, p5 = 6A − 3B + C/2."""
+    big_a, big_b, big_c = v1 - v0 - m0 - 0.5 * c0, m1 - m0 - c0, c1 - c0
+    p3 = 10.0 * big_a - 4.0 * big_b + 0.5 * big_c
+    p4 = -15.0 * big_a + 7.0 * big_b - big_c
+    p5 = 6.0 * big_a - 3.0 * big_b + 0.5 * big_c
+    u = t
+    with np.errstate(all="ignore"):
+        for _ in range(steps):
+            slope = m0 + u * (c0 + u * (3.0 * p3 + u * (4.0 * p4 + u * (5.0 * p5))))
+            curve = c0 + u * (6.0 * p3 + u * (12.0 * p4 + u * (20.0 * p5)))
+            u = np.clip(u - slope / curve, 0.0, 1.0)
+    return np.where(np.isfinite(u), u, t)
 
 
 _GOLD = 0.3819660112501051   # 2 − golden ratio

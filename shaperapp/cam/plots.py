@@ -129,12 +129,23 @@ class CamPlots(QWidget):
         super().showEvent(event)
         if self._stale:
             self.redraw()
+        else:                   # drawn while hidden (catch_up): the cursor did not follow
+            self.move_cursor()
 
     def redraw(self) -> None:
         """Draw the series; a hidden view only marks itself stale (redrawn when shown)."""
         if not self.isVisible():
             self._stale = True
             return
+        self._draw()
+
+    def catch_up(self) -> None:
+        """Draw now, while hidden, what the first show would (the Cam tab's ``catch_up``):
+        making 36 curve items for 16 speeds and filling them was most of its first visit."""
+        if self._stale:
+            self._draw()
+
+    def _draw(self) -> None:
         self._stale = False
         d = self.data()
         cam = self._model.cam

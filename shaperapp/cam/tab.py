@@ -45,6 +45,14 @@ class CamTab(PartTab):
         self.cam_model.set_active(True)
         self.show_figures()
 
+    def catch_up(self) -> None:
+        """While hidden (``LazyPage.catch_up``: the window calls it while idle), what the
+        first show would do: the cam computed for the linkage on screen, its plots drawn,
+        its outline built; the visit then only paints."""
+        self.cam_model.cam                  # noqa: B018 - computed if the linkage changed
+        self.plots.catch_up()
+        self.profile.shapes()
+
     def hideEvent(self, event) -> None:  # noqa: N802 - Qt's name
         super().hideEvent(event)
         self.cam_model.set_active(False)

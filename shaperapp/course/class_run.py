@@ -92,9 +92,11 @@ def _language(lang: str) -> str:
 def write_student(job: Job) -> None:
     """The folder's files, each atomically, the stamp last (OSError names the file)."""
     from core.course_design.plan import plan_course, read_document
+    from shaperapp.report.figures import keep_plot_views
 
     from .write import Covering, write_course
     language = _language(job.lang)
+    keep_plot_views()            # the students' reports draw their plots with the same widgets
     os.makedirs(job.folder, exist_ok=True)
     stamp = os.path.join(job.folder, STAMP_FILE)
     if os.path.lexists(stamp):
@@ -147,8 +149,13 @@ def run_jobs(jobs: Sequence[Job], workers: int) -> Iterator[Result]:
     sends SIGINT to this process alone) starts nothing new and waits for the students being
     written, whose files are then complete, before it goes on."""
     if workers <= 1 or len(jobs) <= 1:
-        for job in jobs:
-            yield run_student(job)
+        try:
+            for job in jobs:
+                yield run_student(job)
+        finally:
+            if _LANGUAGE:           # this process goes on (and ends) without them
+                from shaperapp.report.figures import release_plot_views
+                release_plot_views()
         return
     import multiprocessing
     from collections import deque

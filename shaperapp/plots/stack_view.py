@@ -32,6 +32,11 @@ class StackView(QWidget):
     def stack(self) -> PlotStack:
         return self._stack
 
+    def catch_up(self) -> None:
+        """Draw now, while hidden, what the first show would draw (``LazyPage.catch_up``:
+        the window calls it while idle): the items made and filled, so the visit only paints."""
+        self._stack.ensure_current()
+
     def readout_text(self) -> str:
         """The mouse read-out (plain text)."""
         return self._stack.readout_text()

@@ -10,7 +10,12 @@ own margin (a link's half width, or a few pixels for a thin line).
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+
+if TYPE_CHECKING:
+    from .raster import Raster
 
 RINGS = (0.0, 0.5, 1.0, 1.6, 2.4, 3.4, 4.6, 6.0)   # rings beyond the first, in text heights
 LEADER_RING = 2                          # from this ring on, a leader line leads to the label
@@ -43,11 +48,15 @@ def meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarra
     dx, dy = x1 - x0, y1 - y0
     hit = ((np.minimum(dx, 0.0) <= hi_x) & (np.maximum(dx, 0.0) >= lo_x)
            & (np.minimum(dy, 0.0) <= hi_y) & (np.maximum(dy, 0.0) >= lo_y))
-    across_lo, across_hi = dx * lo_y, dx * hi_y          # cross product at the corners
-    along_lo, along_hi = dy * lo_x, dy * hi_x
+    # the corners' sides only where the boxes overlap (a fifth of an edit's pairs), with
+    # the same products and differences for those pairs
+    i, j = np.nonzero(hit)
+    across_lo, across_hi = dx[j] * lo_y[i, j], dx[j] * hi_y[i, j]    # cross product at the corners
+    along_lo, along_hi = dy[j] * lo_x[i, j], dy[j] * hi_x[i, j]
     top = np.maximum(across_lo, across_hi) - np.minimum(along_lo, along_hi)
     bottom = np.minimum(across_lo, across_hi) - np.maximum(along_lo, along_hi)
-    return hit & (top >= 0.0) & (bottom <= 0.0)
+    hit[i, j] = (top >= 0.0) & (bottom <= 0.0)
+    return hit
 
 
 def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray) -> np.ndarray:
@@ -287,117 +296,3 @@ def posed(local: np.ndarray, angle_deg: np.ndarray, pos: np.ndarray) -> np.ndarr
     pos = np.asarray(pos, dtype=float).reshape(-1, 1, 1, 2)
     out = np.stack([c * x - s * y, s * x + c * y], axis=-1) + pos
     return out.reshape(-1, 2, 2)
-
-
-def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.ndarray:
-    """The parts of segments ``ends`` (k × 2 × 2) inside ``bounds`` (left, right, bottom, top)."""
-    if len(ends) == 0:
-        return ends
-    lows, highs = np.array([bounds[0], bounds[2]]), np.array([bounds[1], bounds[3]])
-    start, step = ends[:, 0, :], ends[:, 1, :] - ends[:, 0, :]
-    enter, leave = np.zeros(len(ends)), np.ones(len(ends))
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for axis in (0, 1):
-            flat = step[:, axis] == 0.0
-            t_low = (lows[axis] - start[:, axis]) / step[:, axis]
-            t_high = (highs[axis] - start[:, axis]) / step[:, axis]
-            enter = np.where(flat, enter, np.maximum(enter, np.minimum(t_low, t_high)))
-            leave = np.where(flat, leave, np.minimum(leave, np.maximum(t_low, t_high)))
-            leave[flat & ((start[:, axis] < lows[axis]) | (start[:, axis] > highs[axis]))] = -1.0
-    keep = enter <= leave
-    s, d = start[keep], step[keep]
-    return np.stack([s + enter[keep, None] * d, s + leave[keep, None] * d], axis=1)
-
-
-BURN_POINTS = 500_000
-"""Samples burnt at once (16 B each, and temporaries): their arrays are a few tens of MB,
-whatever the lines."""
-
-
-class Raster:
-    """Lines that stay put burnt into a grid of cells (about a pixel each) with its summed
-    table, so that any number of candidate boxes is checked against them in a few array
-    operations whatever the number of lines (the crank circle and the tool path alone
-    are some 700 segments). A box counts the marked cells it covers once widened by the
-    margin and a cell for the sampling; cells outside the grid (off the view) count as free."""
-
-    def __init__(self, ends: np.ndarray, bounds: tuple[float, float, float, float],
-                 cell: float, margin: float) -> None:
-        self.left, self.bottom, self.cell = bounds[0], bounds[2], float(cell)
-        self.margin = margin       # a box reaches into every cell it touches: rounding is on the safe side
-        self.nx = max(int(np.ceil((bounds[1] - bounds[0]) / cell)), 1)
-        self.ny = max(int(np.ceil((bounds[3] - bounds[2]) / cell)), 1)
-        self._grid = np.zeros((self.ny, self.nx), dtype=bool)
-        self._sat = np.zeros((self.ny + 1, self.nx + 1), dtype=np.int32)
-        self.burn(ends)
-
-    def burn(self, ends: np.ndarray) -> None:
-        """Mark the cells the segments pass through (sampled at half a cell)."""
-        ends = clipped(np.asarray(ends, dtype=float).reshape(-1, 2, 2),
-                       (self.left, self.left + self.nx * self.cell,
-                        self.bottom, self.bottom + self.ny * self.cell))
-        if len(ends):
-            d = ends[:, 1] - ends[:, 0]
-            count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
-            # the samples in runs of about BURN_POINTS: the scheme's swept lines are tens of
-            # millions of samples, and sampled at once they took some 250 MB for a moment
-            # (the report's peak; issue 41: a class runs several reports side by side)
-            total = np.cumsum(count)
-            cuts = np.searchsorted(total, np.arange(BURN_POINTS, total[-1], BURN_POINTS))
-            for lo, hi in zip(np.r_[0, cuts], np.r_[cuts, len(count)]):
-                if hi > lo:
-                    self._burn_samples(ends[lo:hi, 0], d[lo:hi], count[lo:hi])
-        # the summed table in place, along the rows first (contiguous) and then adding row to
-        # row: exact integers as before, a quarter of the time on a large grid
-        table = self._sat[1:, 1:]
-        np.cumsum(self._grid, axis=1, dtype=np.int32, out=table)
-        np.cumsum(table, axis=0, out=table)
-
-    def _burn_samples(self, start: np.ndarray, d: np.ndarray, count: np.ndarray) -> None:
-        """Mark the cells of ``count`` samples along each segment ``start`` + t·``d``.
-
-        One axis at a time and in place: the same float operations as ``start + t·d`` on
-        (n, 2) arrays (sums and products commute exactly), so the same cells, with fewer
-        and smaller temporaries: the window's first label search burns about 500 000
-        samples, and this took 0.15 s of its start at load 6 (issue 43 item 5)."""
-        t = np.arange(count.sum(), dtype=float)
-        t -= np.repeat(np.cumsum(count) - count, count)
-        t /= np.repeat(np.maximum(count - 1, 1), count)
-        flat = None                 # each sample's cell in the grid read row by row
-        for axis, origin, n in ((1, self.bottom, self.ny), (0, self.left, self.nx)):
-            v = np.repeat(d[:, axis], count)
-            v *= t
-            v += np.repeat(start[:, axis], count)
-            v -= origin
-            v /= self.cell
-            cell = v.astype(np.intp)
-            np.clip(cell, 0, n - 1, out=cell)
-            if flat is None:
-                flat = cell
-                flat *= self.nx
-            else:
-                flat += cell
-        # one flat index, clipped in place: the same cells, a fifth less time (22 → 17 ms for
-        # 21 720 random segments; an edit's swept burn 31–39 → 27–29 ms with its clip and sums)
-        self._grid.reshape(-1)[flat] = True
-
-    def copy_with(self, ends: np.ndarray) -> "Raster":
-        """A raster of these lines and ``ends``."""
-        out = Raster.__new__(Raster)
-        out.__dict__.update(self.__dict__)
-        out._grid = self._grid.copy()
-        out._sat = np.zeros_like(self._sat)           # burn sums it afresh
-        out.burn(ends)
-        return out
-
-    def hits(self, boxes: np.ndarray) -> np.ndarray:
-        """(m,) marked cells within each box (left, right, bottom, top) widened by the margin."""
-        b = np.asarray(boxes, dtype=float).reshape(-1, 4)
-        x = np.clip(np.floor((np.sort(b[:, :2], axis=1) + [-self.margin, self.margin] - self.left)
-                             / self.cell), 0, self.nx).astype(int)
-        y = np.clip(np.floor((np.sort(b[:, 2:], axis=1) + [-self.margin, self.margin] - self.bottom)
-                             / self.cell), 0, self.ny).astype(int)
-        x[:, 1] = np.minimum(x[:, 1] + 1, self.nx)
-        y[:, 1] = np.minimum(y[:, 1] + 1, self.ny)
-        s = self._sat
-        return s[y[:, 1], x[:, 1]] - s[y[:, 0], x[:, 1]] - s[y[:, 1], x[:, 0]] + s[y[:, 0], x[:, 0]]

@@ -254,8 +254,12 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._forces.retranslate()
         if self._geometry is not None:
             self._dimensions.update(self._model, self._geometry)
-            self._dimensions_placed()
-            self._draw_forces(self._model.angle_index)
+            # placed once the window has laid out its new texts, which may change the view:
+            # placed here at once, the search ran for the old view, then again for the new
+            # (hidden, when shown or read back, as before)
+            self._labels_stale = True
+            if self.isVisible():
+                self._update_timer.start()
 
     # ---- model → layers ----------------------------------------------
     def showEvent(self, event) -> None:

@@ -42,11 +42,28 @@ class LazyPage(QWidget):
         # layout pass (Docks.apply_sizes, which tabs the dock) is queued after the first.
         self._defer = defer
         self._view: QWidget | None = None
+        self._caught_up = False
         self._layout = QVBoxLayout(self)
         self._layout.setContentsMargins(0, 0, 0, 0)
 
     def is_built(self) -> bool:
         return self._view is not None
+
+    def is_ready(self) -> bool:
+        """Built, and its view's first drawing done while hidden (see ``catch_up``)."""
+        return self._view is not None and self._caught_up
+
+    def catch_up(self) -> None:
+        """While the page is hidden, let the view do what its first show would (its
+        ``catch_up()``, if it has one: compute and draw for the model as it is), so that
+        the first visit only paints: the Forces tab's first drawing of 16 speeds was half
+        its first visit (issue 40 item 5). Once; not for a page on screen, whose show did it."""
+        if self._view is None or self._caught_up:
+            return
+        self._caught_up = True
+        catch_up = getattr(self._view, "catch_up", None)
+        if catch_up is not None and not self.isVisible():
+            catch_up()
 
     def built_view(self) -> QWidget | None:
         """The view if it has been built, else None (never builds it)."""
@@ -113,17 +130,19 @@ def build_when_idle(pages: Sequence[LazyPage]) -> None:
     """Build ``pages`` one per turn of the event loop, from the next turn on: called once
     the window is painted, so the views come in while the user looks at the first screen,
     and the window's minimum size is that of every view again, as it was when all were
-    built at start-up."""
-    waiting = [page for page in pages if not page.is_built()]
+    built at start-up. Then, one per turn again, each page catches up while hidden
+    (``LazyPage.catch_up``): every view is built before any draws."""
+    waiting = [page for page in pages if not page.is_ready()]
 
     def next_page() -> None:
-        while waiting:
-            page = waiting.pop(0)
-            # Not for a window already closed: its views would be built for a model that
-            # may be going away (a test's window, closed while the turns were queued).
-            if shiboken6.isValid(page) and page.window().isVisible() and not page.is_built():
-                page.view()
-                break
+        # Not for a window already closed: its views would be built for a model that may
+        # be going away (a test's window, closed while the turns were queued).
+        waiting[:] = [page for page in waiting if shiboken6.isValid(page) and page.window().isVisible()]
+        unbuilt = next((page for page in waiting if not page.is_built()), None)
+        if unbuilt is not None:
+            unbuilt.view()
+        elif waiting:
+            waiting.pop(0).catch_up()
         _queue()
 
     def _queue() -> None:

@@ -131,6 +131,18 @@ def _cell(fun, centre, width, offset):
     return lo, hi, v_lo, v_hi, s_lo, s_hi
 
 
+def skewed_peak(centre: float, size: float, skew: float, calls: list):
+    """f(x) = size·(cos t + skew·sin²t/2), t = x − centre, as (f, f′, f″): top at the
+    centre, f″ = −size(1 − skew) < 0 there; each call's size is appended to ``calls``."""
+    def fun(x):
+        calls.append(np.size(x))
+        t = x - centre
+        return (size * (np.cos(t) + 0.5 * skew * np.sin(t) ** 2),
+                size * (-np.sin(t) + skew * np.sin(t) * np.cos(t)),
+                size * (-np.cos(t) + skew * np.cos(2.0 * t)))
+    return fun
+
+
 @settings(max_examples=60, deadline=None)
 @given(centre=st.floats(-3.0, 3.0, **finite), offset=st.floats(0.01, 0.99, **finite),
        width=st.floats(0.01, 0.3, **finite), size=st.floats(0.1, 1e4, **finite),
@@ -140,13 +152,7 @@ def test_newton_maximum_finds_a_known_maximum(centre, offset, width, size, skew)
     exactly (f′(c) = 0, f″(c) = −size(1 − skew) < 0): found to the tolerance in at most
     five evaluations, from a cell of a 64-sample grid or coarser."""
     calls = []
-
-    def fun(x):
-        calls.append(np.size(x))
-        t = x - centre
-        return (size * (np.cos(t) + 0.5 * skew * np.sin(t) ** 2),
-                size * (-np.sin(t) + skew * np.sin(t) * np.cos(t)),
-                size * (-np.cos(t) + skew * np.cos(2.0 * t)))
+    fun = skewed_peak(centre, size, skew, calls)
     lo, hi, v_lo, v_hi, s_lo, s_hi = _cell(fun, centre, width, offset)
     calls.clear()
     x, value = newton_maximum(fun, np.array([lo]), np.array([hi]), np.array([v_lo]),

@@ -37,16 +37,23 @@ def _loads(rng, rod: bool) -> MassProperties:
                           idle_fraction=rng.uniform(0.0, 0.15), gravity=bool(rng.random() < 0.7))
 
 
-@pytest.mark.parametrize("variant, seed", [("block", 1), ("block", 2), ("rod", 3), ("rod", 4)])
-def test_a_loaded_sweep_row_equals_the_single_design_summary(variant, seed):
-    assert SWEEP_INTERVALS < ENERGY_INTERVALS          # the sweep is the coarser of the two
-    rng = np.random.default_rng(seed)
-    n = 40
+def random_family(rng, variant: str, n: int) -> tuple[Spec, dict[str, np.ndarray]]:
+    """A spec and ``n`` random designs of it (L1 60 … 140 mm, K 1.05 … 3, H 250 … 700 mm,
+    rod ratios 0.25 … 1.2), as :func:`core.space.sweep.evaluate` takes them."""
     spec = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant=variant, rod_ratio=0.4)
     values = {"crank": rng.uniform(60, 140, n), "time_ratio": rng.uniform(1.05, 3.0, n),
               "stroke": rng.uniform(250, 700, n)}
     if variant == "rod":
         values["rod_ratio"] = rng.uniform(0.25, 1.2, n)
+    return spec, values
+
+
+@pytest.mark.parametrize("variant, seed", [("block", 1), ("block", 2), ("rod", 3), ("rod", 4)])
+def test_a_loaded_sweep_row_equals_the_single_design_summary(variant, seed):
+    assert SWEEP_INTERVALS < ENERGY_INTERVALS          # the sweep is the coarser of the two
+    rng = np.random.default_rng(seed)
+    n = 40
+    spec, values = random_family(rng, variant, n)
     rpms = sorted(rng.uniform(10, 300, 3))
     masses = _loads(rng, variant == "rod")
     ev = evaluate(spec, values, rpms, masses)
@@ -131,7 +138,7 @@ def test_sweep_progress_option_prints_lines_to_the_end(tmp_path):
 def test_at_16_speeds_a_sweep_row_is_the_summary_and_no_lower_than_a_dense_solve(design, seed, rpms):
     """The issue's 16 speeds: the sweep finds each speed's cells from the signs of the
     torque's slope, affine in ω², at all speeds at once (core.forces.torque_peaks), and
-    skips cells whose tangent bound cannot win. Its figures equal the summary's (3600
+    skips cells whose chord bound in ω² cannot win. Its figures equal the summary's (3600
     intervals) as above, no torque peak lies below what the solver's own torque
     (core.forces.dynamics: no jet, no polish) gives on 20 001 angles, and no energy swing
     below that of the closed-form energy's samples there: a skipped or missed extremum

@@ -91,3 +91,54 @@ def test_a_frame_met_again_is_put_back_as_first_placed(qtbot):
         model.set_angle_index(index)
         assert drawn() == first[index], index
     assert searched == []
+
+
+def test_placing_again_over_the_same_lines_and_view_burns_nothing(qtbot, monkeypatch):
+    """A language switch places the still labels again (their texts change size) over the
+    same lines and view: the rasters of those lines are kept, not burnt again (two thirds
+    of that search, issue 40 item 5), and the labels go where fresh rasters put them. New
+    lines (the dimensions hidden) are burnt."""
+    from PySide6.QtCore import Qt
+
+    from shaperapp.scheme.place import Raster
+    from shaperapp.scheme.view import SchemeWidget
+    scheme = SchemeWidget(DesignModel())
+    qtbot.addWidget(scheme)
+    scheme.setAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)
+    scheme.resize(800, 600)
+    scheme.show()
+    first = scheme.dimension_label_boxes()
+    burns = []
+    real = Raster.burn
+    monkeypatch.setattr(Raster, "burn", lambda self, ends: burns.append(len(ends)) or real(self, ends))
+    scheme.set_dimensions_visible(True)             # placed again, nothing else changed
+    assert burns == [] and scheme.dimension_label_boxes() == first
+    scheme.set_dimensions_visible(False)
+    assert burns != []
+    monkeypatch.setattr(Raster, "burn", real)
+    fresh = SchemeWidget(DesignModel())             # its own rasters, burnt afresh
+    qtbot.addWidget(fresh)
+    fresh.setAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)
+    fresh.resize(800, 600)
+    fresh.show()
+    scheme.set_dimensions_visible(True)
+    assert fresh.dimension_label_boxes() == first == scheme.dimension_label_boxes()
+
+
+def test_a_language_switch_places_the_labels_once_for_the_view_laid_out(qtbot, tmp_path, monkeypatch):
+    """The new texts change the window's layout and with it the scheme's view: the labels
+    were placed at once for the old view, then again for the new (issue 40 item 5, a
+    language switch's waits); now once, after the relayout, where the read-back finds them."""
+    from gui_helpers import main_window
+    calls = []
+    real = LabelLayout.place_still
+    with main_window(tmp_path) as win:
+        win.resize(1366, 768)
+        qtbot.waitExposed(win)
+        qtbot.wait(300)
+        monkeypatch.setattr(LabelLayout, "place_still", lambda self, *a: calls.append(a) or real(self, *a))
+        win.set_language("zh_CN")
+        qtbot.wait(500)
+        assert len(calls) == 1, calls
+        placed = win.scheme.dimension_label_boxes()
+        assert len(calls) == 1 and set(placed) >= {"L1", "H"}

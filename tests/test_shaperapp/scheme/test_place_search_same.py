@@ -1,7 +1,9 @@
 """The label search checks candidates a few at a time and stops at the first clear one
-(issue 43 item 4): every label must land where checking them all at once put it. The
-reference is the search as it was before (``reference_best``, kept here only), run on
-the same obstacles in the same process."""
+(issue 43 item 4), and ``meets`` takes the corners' cross products only for the pairs
+whose boxes overlap (issue 40 item 5): every label must land where checking them all at
+once put it. The references are the search as it was before (``reference_best``) and
+``meets`` one pair at a time (``pair_meets``), kept here only, run on the same obstacles
+in the same process."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,8 +11,9 @@ import pytest
 from PySide6.QtWidgets import QApplication
 
 from shaperapp.design.model import DesignModel
-from shaperapp.scheme import labels as labels_module
-from shaperapp.scheme.place import Obstacles, Raster, around, boxes_at, clear_of_boxes, clear_of_segments, meets
+from shaperapp.scheme import labels as labels_module, place as place_module
+from shaperapp.scheme.place import Obstacles, around, boxes_at, clear_of_boxes, clear_of_segments, meets
+from shaperapp.scheme.raster import Raster
 
 
 def reference_clear(obstacles: Obstacles, candidates: np.ndarray) -> np.ndarray:
@@ -117,4 +120,60 @@ def test_the_schemes_labels_land_where_they_did(qtbot, monkeypatch):
         (list(np.flatnonzero(reference_clear(self, candidates))) + [-1])[0]))
     before = placed_labels(qtbot, designs)
     assert len(now) == len(before) == 12
+    assert now == before
+
+
+def pair_meets(left: float, right: float, bottom: float, top: float,
+               x0: float, y0: float, x1: float, y1: float, margin: float) -> bool:
+    """One box and one segment, in the arithmetic ``meets`` had on main (0c2e8a4): the
+    widened box against the segment's box relative to its start, then the corners' cross
+    products, in Python floats (the same IEEE doubles, one operation at a time)."""
+    x_lo, x_hi = sorted((left, right))
+    y_lo, y_hi = sorted((bottom, top))
+    lo_x, hi_x = x_lo - margin - x0, x_hi + margin - x0
+    lo_y, hi_y = y_lo - margin - y0, y_hi + margin - y0
+    dx, dy = x1 - x0, y1 - y0
+    if not (min(dx, 0.0) <= hi_x and max(dx, 0.0) >= lo_x and min(dy, 0.0) <= hi_y and max(dy, 0.0) >= lo_y):
+        return False
+    across, along = (dx * lo_y, dx * hi_y), (dy * lo_x, dy * hi_x)
+    return max(across) - min(along) >= 0.0 and min(across) - max(along) <= 0.0
+
+
+def reference_meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarray:
+    """``pair_meets`` of every box and segment: (m, k)."""
+    b = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    e = np.asarray(ends, dtype=float).reshape(-1, 2, 2)
+    margin = np.broadcast_to(np.asarray(margins, dtype=float), (len(e),))
+    if len(b) == 0 or len(e) == 0:
+        return np.zeros((len(b), len(e)), dtype=bool)
+    return np.vectorize(pair_meets, otypes=[bool])(
+        *(b[:, None, i] for i in range(4)), *(e[None, :, p, q] for p in (0, 1) for q in (0, 1)), margin[None, :])
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_meets_finds_what_each_pair_found(seed):
+    """Random boxes and lines around them, some upright, flat, of zero length or along a
+    box's edge: some pairs overlap, not all."""
+    rng = np.random.default_rng(seed)
+    boxes = boxes_at(rng.uniform(-20.0, 20.0, (30, 2)), rng.uniform(0.5, 4.0, 2))
+    ends = rng.uniform(-30.0, 30.0, (60, 2, 2))
+    ends[::7, 1, 0] = ends[::7, 0, 0]
+    ends[::5, 1, 1] = ends[::5, 0, 1]
+    ends[::11, 1] = ends[::11, 0]
+    ends[::13, :, 0] = boxes[0, 1]
+    margins = rng.uniform(0.0, 1.5, 60)
+    margins[::3] = 0.0
+    now = place_module.meets(boxes, ends, margins)
+    assert now.shape == (30, 60) and now.dtype == bool
+    assert np.array_equal(now, reference_meets(boxes, ends, margins))
+    assert 0 < now.sum() < now.size
+
+
+def test_the_schemes_labels_land_where_each_pair_put_them(qtbot, monkeypatch):
+    designs = [dict(time_ratio=1.4), dict(time_ratio=1.9), dict(time_ratio=1.15)]
+    now = placed_labels(qtbot, designs)
+    monkeypatch.setattr(place_module, "meets", reference_meets)
+    monkeypatch.setattr(labels_module, "meets", reference_meets)
+    before = placed_labels(qtbot, designs)
+    assert len(now) == len(before) == 9
     assert now == before

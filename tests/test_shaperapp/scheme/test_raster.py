@@ -1,4 +1,4 @@
-"""The label search's raster (``place.Raster``): its summed table must count exactly the
+"""The label search's raster (``raster.Raster``): its summed table must count exactly the
 marked cells a box covers, after burning and after ``copy_with`` (which sums afresh and
 leaves the original alone). Brute force over the grid is the reference."""
 from __future__ import annotations
@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-from shaperapp.scheme.place import Raster, clipped
+from shaperapp.scheme.raster import Raster, clipped
 
 BOUNDS = (-20.0, 60.0, -10.0, 30.0)
 
@@ -66,15 +66,15 @@ def test_many_long_lines_burn_the_same_cells_in_bounded_memory():
 def test_burning_in_batches_marks_the_cells_burning_at_once_does(lines, batch):
     """Issue 42: the samples of every segment at once took 230 MB for a design of 16 speeds at
     0.1°; they are burnt BURN_POINTS at a time, which must mark exactly the same cells."""
-    import shaperapp.scheme.place as place
+    import shaperapp.scheme.raster as raster_module
     ends = np.array(lines).reshape(-1, 2, 2)
     whole = Raster(ends, BOUNDS, 0.2, 0.3)
-    saved = place.BURN_POINTS
-    place.BURN_POINTS = batch
+    saved = raster_module.BURN_POINTS
+    raster_module.BURN_POINTS = batch
     try:
         parts = Raster(ends, BOUNDS, 0.2, 0.3)
     finally:
-        place.BURN_POINTS = saved
+        raster_module.BURN_POINTS = saved
     assert np.array_equal(parts._grid, whole._grid) and np.array_equal(parts._sat, whole._sat)
 
 

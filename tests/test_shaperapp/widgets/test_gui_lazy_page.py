@@ -105,6 +105,41 @@ def test_idle_build_builds_every_page_one_per_turn(qtbot):
     assert len(made) == 3
 
 
+def test_idle_build_then_lets_each_hidden_view_catch_up_once(qtbot):
+    """After every page is built, one per turn again, each hidden view does what its first
+    show would (``catch_up``), so that the visit only paints; a page on screen does not
+    (its show did), and nothing catches up twice."""
+    events: list = []
+
+    class Drawn(QWidget):
+        def catch_up(self) -> None:
+            events.append(("catch up", self))
+
+    def make() -> QWidget:
+        view = Drawn()
+        events.append(("build", view))
+        return view
+    holder = QWidget()
+    qtbot.addWidget(holder)
+    layout = QVBoxLayout(holder)
+    pages = [LazyPage(make) for _ in range(3)]
+    for page in pages:
+        layout.addWidget(page)
+    pages[0].hide()
+    pages[1].hide()
+    holder.show()                                       # the third page's show builds it
+    assert [e for e, _ in events] == ["build"]
+    build_when_idle(pages)
+    qtbot.waitUntil(lambda: all(p.is_ready() for p in pages), timeout=5_000)
+    kinds = [e for e, _ in events]
+    assert kinds == ["build"] * 3 + ["catch up"] * 2, kinds
+    assert [v for e, v in events if e == "catch up"] == [pages[0].built_view(), pages[1].built_view()]
+    pages[0].catch_up()
+    build_when_idle(pages)
+    qtbot.wait(50)
+    assert len(events) == 5
+
+
 def test_idle_build_leaves_a_closed_window_alone(qtbot):
     """A window closed before its turns come (a test's window, or one the user closed at
     once) gets no views built for it: they would serve a model that may be going away."""

@@ -85,6 +85,58 @@ def test_sixteen_speeds_fit_the_window_at_1366x768(window, tab):
         assert widget.plot_item(name).vb.sceneBoundingRect().height() > 40, name
 
 
+def test_the_force_plots_are_drawn_while_idle_before_the_first_visit(window, qtbot):
+    """Issue 40 item 5: the Forces tab's first drawing of 16 speeds was half its first
+    visit. The window, idle, draws it behind its tab; the visit then redraws nothing, and
+    what it shows equals core."""
+    window.model.set_rpms([20.0 + 5.0 * i for i in range(16)])
+    qtbot.waitUntil(lambda: all(page.is_ready() for page in window._pages.values()), timeout=60_000)
+    forces = window.forces.stack()
+    assert not forces.isVisible() and forces.is_current()
+    refreshed = []
+    real = type(forces).refresh
+    forces.refresh = lambda: refreshed.append(1) or real(forces)
+    window.tabs.setCurrentWidget(window.forces)
+    QApplication.processEvents()
+    assert refreshed == [] and forces.is_current()
+    model = window.model
+    dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms,
+                         masses_for_design(model.design, model.masses))
+    shown = window.forces.curve_data("torque")
+    assert len(shown) == 16
+    for (_, y), want in zip(shown, dyn.crank_torque):
+        np.testing.assert_allclose(y, want, rtol=1e-12, atol=1e-9)
+
+
+def test_the_cam_plots_are_drawn_while_idle_and_the_cursor_follows_at_the_visit(window, qtbot):
+    """The Cam tab, idle behind its tab, computes the cam and draws its plots (36 curve
+    items for 16 speeds were most of its first visit); the visit redraws nothing, shows
+    core's pitch curve, and its cursor is where the crank is now, not where it was when
+    the plots were drawn."""
+    import math
+
+    from core.cam.follower import pitch
+    window.model.set_rpms([20.0 + 5.0 * i for i in range(16)])
+    qtbot.waitUntil(lambda: all(page.is_ready() for page in window._pages.values()), timeout=60_000)
+    plots = window.cam.plots
+    assert not plots.isVisible()
+    window.model.set_angle_index(123)                    # the animation moved meanwhile
+    drawn = []
+    real = type(plots)._draw
+    plots._draw = lambda: drawn.append(1) or real(plots)
+    window.tabs.setCurrentWidget(window.cam)
+    QApplication.processEvents()
+    assert drawn == []
+    cam = window.cam_model.cam
+    x, y = plots.curves["psi"].getData()
+    delta = np.radians(x)
+    np.testing.assert_allclose(y, np.degrees(pitch(cam.follower, cam.program, delta).motion.psi), atol=1e-9)
+    assert len(plots.speed_plot.listDataItems()) == 16
+    phase = cam.timing.phase_deg if cam.timing is not None else 0.0
+    want = (math.degrees(window.model.motion.crank_angle[123]) - phase) % 360.0
+    assert all(c.value() == pytest.approx(want) for c in plots.cursors)
+
+
 def test_the_cam_is_saved_and_opened_with_its_tab_never_built(window, tmp_path):
     """The Cam tab is built when first shown (issue 24), but the cam is the window's from
     the start: Save writes the cam's inputs and Open brings them back with the tab unbuilt,

@@ -1,0 +1,123 @@
+"""The label search's raster: lines that stay put burnt into a grid of cells with its
+summed table, so that any number of candidate boxes is checked against thousands of
+segments (the still lines, and what the moving bodies sweep over the cycle) in a few
+array operations. Split from place.py, whose search reads it through ``Raster.hits``."""
+from __future__ import annotations
+
+import numpy as np
+
+
+def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.ndarray:
+    """The parts of segments ``ends`` (k × 2 × 2) inside ``bounds`` (left, right, bottom, top),
+    one axis at a time: numpy's loops over (k, 2) rows run pair by pair (4 of 6 ms on an
+    edit's 21 720 swept segments, issue 40 item 5)."""
+    if len(ends) == 0:
+        return ends
+    lows, highs = np.array([bounds[0], bounds[2]]), np.array([bounds[1], bounds[3]])
+    start = [ends[:, 0, axis] for axis in (0, 1)]
+    step = [ends[:, 1, axis] - ends[:, 0, axis] for axis in (0, 1)]
+    enter, leave = np.zeros(len(ends)), np.ones(len(ends))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for axis in (0, 1):
+            flat = step[axis] == 0.0
+            t_low = (lows[axis] - start[axis]) / step[axis]
+            t_high = (highs[axis] - start[axis]) / step[axis]
+            enter = np.where(flat, enter, np.maximum(enter, np.minimum(t_low, t_high)))
+            leave = np.where(flat, leave, np.minimum(leave, np.maximum(t_low, t_high)))
+            leave[flat & ((start[axis] < lows[axis]) | (start[axis] > highs[axis]))] = -1.0
+    out = np.empty((len(ends), 2, 2))
+    for end, t in ((0, enter), (1, leave)):    # start + t·step
+        for axis in (0, 1):
+            np.multiply(t, step[axis], out=out[:, end, axis])
+            out[:, end, axis] += start[axis]
+    keep = enter <= leave
+    return out if keep.all() else out[keep]
+
+
+BURN_POINTS = 500_000
+"""Samples burnt at once (16 B each, and temporaries): their arrays are a few tens of MB,
+whatever the lines."""
+
+
+class Raster:
+    """Lines that stay put burnt into a grid of cells (about a pixel each) with its summed
+    table, so that any number of candidate boxes is checked against them in a few array
+    operations whatever the number of lines (the crank circle and the tool path alone
+    are some 700 segments). A box counts the marked cells it covers once widened by the
+    margin and a cell for the sampling; cells outside the grid (off the view) count as free."""
+
+    def __init__(self, ends: np.ndarray, bounds: tuple[float, float, float, float],
+                 cell: float, margin: float) -> None:
+        self.left, self.bottom, self.cell = bounds[0], bounds[2], float(cell)
+        self.margin = margin       # a box reaches into every cell it touches: rounding is on the safe side
+        self.nx = max(int(np.ceil((bounds[1] - bounds[0]) / cell)), 1)
+        self.ny = max(int(np.ceil((bounds[3] - bounds[2]) / cell)), 1)
+        self._grid = np.zeros((self.ny, self.nx), dtype=bool)
+        self._sat = np.zeros((self.ny + 1, self.nx + 1), dtype=np.int32)
+        self.burn(ends)
+
+    def burn(self, ends: np.ndarray) -> None:
+        """Mark the cells the segments pass through (sampled at half a cell)."""
+        ends = clipped(np.asarray(ends, dtype=float).reshape(-1, 2, 2),
+                       (self.left, self.left + self.nx * self.cell,
+                        self.bottom, self.bottom + self.ny * self.cell))
+        if len(ends):
+            d = np.stack([ends[:, 1, axis] - ends[:, 0, axis] for axis in (0, 1)], axis=1)
+            count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
+            self._burn_samples(ends[:, 0], d, count)
+        # the summed table in place, along the rows first (contiguous) and then adding row to
+        # row: exact integers as before, a quarter of the time on a large grid
+        table = self._sat[1:, 1:]
+        np.cumsum(self._grid, axis=1, dtype=np.int32, out=table)
+        np.cumsum(table, axis=0, out=table)
+
+    def _burn_samples(self, start: np.ndarray, d: np.ndarray, count: np.ndarray) -> None:
+        """Mark the cells of ``count`` samples along each segment ``start`` + t·``d``, t = k/(count − 1).
+
+        By groups of one count, (count × segments) arrays broadcast from t: an edit's 21 720
+        swept segments have 19 counts, so no per-sample ``repeat`` (the same float operations
+        in the same order, so the same cells: ``test_burn_same.py``). At most BURN_POINTS
+        samples at once: a report's swept lines sampled at once took 250 MB (issue 41)."""
+        order = np.argsort(count, kind="stable")
+        counts, firsts = np.unique(count[order], return_index=True)
+        grid = self._grid.reshape(-1)
+        for c, lo, hi in zip(counts.tolist(), firsts.tolist(), [*firsts[1:].tolist(), len(order)]):
+            t = (np.arange(c, dtype=float) / max(c - 1, 1))[:, None]
+            rows = max(BURN_POINTS // c, 1)
+            for part in range(lo, hi, rows):
+                pick = order[part:min(part + rows, hi)]
+                flat = None             # each sample's cell in the grid read row by row
+                for axis, origin, n in ((1, self.bottom, self.ny), (0, self.left, self.nx)):
+                    v = t * d[pick, axis]           # (count, segments): long rows
+                    v += start[pick, axis]
+                    v -= origin
+                    v /= self.cell
+                    cell = v.astype(np.intp)
+                    np.clip(cell, 0, n - 1, out=cell)
+                    if flat is None:
+                        flat = cell
+                        flat *= self.nx
+                    else:
+                        flat += cell
+                grid[flat.reshape(-1)] = True
+
+    def copy_with(self, ends: np.ndarray) -> "Raster":
+        """A raster of these lines and ``ends``."""
+        out = Raster.__new__(Raster)
+        out.__dict__.update(self.__dict__)
+        out._grid = self._grid.copy()
+        out._sat = np.zeros_like(self._sat)           # burn sums it afresh
+        out.burn(ends)
+        return out
+
+    def hits(self, boxes: np.ndarray) -> np.ndarray:
+        """(m,) marked cells within each box (left, right, bottom, top) widened by the margin."""
+        b = np.asarray(boxes, dtype=float).reshape(-1, 4)
+        x = np.clip(np.floor((np.sort(b[:, :2], axis=1) + [-self.margin, self.margin] - self.left)
+                             / self.cell), 0, self.nx).astype(int)
+        y = np.clip(np.floor((np.sort(b[:, 2:], axis=1) + [-self.margin, self.margin] - self.bottom)
+                             / self.cell), 0, self.ny).astype(int)
+        x[:, 1] = np.minimum(x[:, 1] + 1, self.nx)
+        y[:, 1] = np.minimum(y[:, 1] + 1, self.ny)
+        s = self._sat
+        return s[y[:, 1], x[:, 1]] - s[y[:, 0], x[:, 1]] - s[y[:, 1], x[:, 0]] + s[y[:, 0], x[:, 0]]
