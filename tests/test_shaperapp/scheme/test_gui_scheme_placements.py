@@ -100,7 +100,7 @@ def test_placing_again_over_the_same_lines_and_view_burns_nothing(qtbot, monkeyp
     lines (the dimensions hidden) are burnt."""
     from PySide6.QtCore import Qt
 
-    from shaperapp.scheme.place import Raster
+    from shaperapp.scheme.raster import Raster
     from shaperapp.scheme.view import SchemeWidget
     scheme = SchemeWidget(DesignModel())
     qtbot.addWidget(scheme)
