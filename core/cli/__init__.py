@@ -108,8 +108,9 @@ def _stray_word(word: str, parser: argparse.ArgumentParser, argv: Sequence[str])
     command, sub = _command_parser(parser, argv)
     hint = f"see 'shaper {command} --help'".replace("  ", " ")
     before = list(argv[:len(argv) - 1 - list(reversed(argv)).index(word)]) if word in argv else []
-    option = next((w.split("=", 1)[0] for w in reversed(before)
-                   if w.startswith("-") and not _NEGATIVE.match(w)), None)
+    # after "--" every word is positional: no option before it took the word
+    option = None if "--" in before else next((w.split("=", 1)[0] for w in reversed(before)
+                                              if w.startswith("-") and not _NEGATIVE.match(w)), None)
     action = next((a for a in sub._actions if option in a.option_strings), None) if option else None
     if action is None or option is None:
         return f"{word!r}: not an argument of 'shaper {command}'; {hint}".replace("  ", " ")
@@ -136,14 +137,13 @@ def with_suggestion(message: str, parser: argparse.ArgumentParser, argv: Sequenc
     if unknown:
         word = next((w for w in unknown.group(1).split() if w.startswith("-") and not _NEGATIVE.match(w)), "")
         name = word.split("=", 1)[0]
-        if not name and unknown.group(1).split():
-            return _stray_word(unknown.group(1).split()[0], parser, argv)
-        if name:
-            command, options = _options(parser, list(argv))
-            match = close_match(name, options)
-            hint = f"did you mean {match}?" if match else f"see 'shaper {command} --help'".replace("  ", " ")
-            return f"{name}: unknown option; {hint}"
-        return message
+        if not name:        # a value left over; blank when it is an empty word ('')
+            words = unknown.group(1).split()
+            return _stray_word(words[0] if words else "", parser, argv)
+        command, options = _options(parser, list(argv))
+        match = close_match(name, options)
+        hint = f"did you mean {match}?" if match else f"see 'shaper {command} --help'".replace("  ", " ")
+        return f"{name}: unknown option; {hint}"
     choice = re.match(r"(argument [^:]+: invalid choice: '([^']*)' \(choose from (.*)\))$", message)
     if choice:
         options = [c.strip().strip("'") for c in choice.group(3).split(",")]

@@ -24,6 +24,7 @@ def _one_line(args):
     (("analyze", *DESIGN, "foo"), "--stroke", "foo"),
     (("analyze", "--crank", "100", "--K=1.4", "7", "--stroke", "300"), "--K", "7"),
     (("gear", "--z1", "13", "--z2", "52", "--module", "4", "5"), "--module", "5"),
+    (("analyze", *DESIGN, ""), "--stroke", ""),        # an empty word is named too
 ])
 def test_a_stray_word_names_the_option_it_follows(args, option, word):
     message = _one_line(args)
@@ -56,3 +57,17 @@ def test_a_huge_whole_number_in_a_file_keeps_the_reason(tmp_path, z1, shown):
         message = _one_line((command, "--design", path))
         assert f"z1 = {shown}: must be" in message and "teeth" in message and len(message) < 200
     assert _one_line(("gear", "--z1", repr(z1), "--z2", "52", "--module", "4")).endswith(f"(got {shown})")
+
+
+@pytest.mark.parametrize("args, word", [
+    # the fuzz's case (CI, 29 November): an empty word left over printed
+    # "unrecognized arguments: " and named nothing
+    (("library", "remove", "--", "--library", ""), ""),
+    # after "--" every word is positional: '--library' there is the entry's name, not the
+    # option, so 'x' was not "left over by --library"
+    (("library", "remove", "--", "--library", "x"), "x"),
+])
+def test_a_word_after_the_positionals_is_named_itself(args, word):
+    message = _one_line(args)
+    assert message.startswith(f"{word!r}: not an argument of 'shaper {args[0]}"), message
+    assert "unrecognized arguments" not in message and "takes" not in message
