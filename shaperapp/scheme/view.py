@@ -22,7 +22,7 @@ and its export dialog (whose SVG export fails on recent Qt) are not offered.
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
+from PySide6.QtCore import QCoreApplication, QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
@@ -259,7 +259,16 @@ class SchemeWidget(SchemeReadBack, QWidget):
             # (hidden, when shown or read back, as before)
             self._labels_stale = True
             if self.isVisible():
-                self._update_timer.start()
+                QTimer.singleShot(0, self, self._place_after_relayout)
+
+    def _place_after_relayout(self) -> None:
+        """The stale labels placed for the view as the new texts lay it out. The relayout
+        comes as posted layout requests, each level's posted while the one above is done,
+        and a paint or a zero timer can come between them (CI's log: placed for the old view,
+        then again): they are sent now, a few levels deep, before the view is read."""
+        for _ in range(6):
+            QCoreApplication.sendPostedEvents(None, QEvent.Type.LayoutRequest)
+        self._catch_up()
 
     # ---- model → layers ----------------------------------------------
     def showEvent(self, event) -> None:
