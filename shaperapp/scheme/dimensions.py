@@ -217,6 +217,12 @@ class DimensionLayer(QObject):
         item = self.texts()[name]
         item.setPos(item.pos().x() + float(shift[0]), item.pos().y() + float(shift[1]))
 
+    def placed_centres(self) -> dict[str, np.ndarray]:
+        """Where the searched labels' centres are now (mm): kept over a rebuild until the
+        search after its paint."""
+        texts = self.texts()
+        return {name: np.array([texts[name].pos().x(), texts[name].pos().y()]) for name in self.placed()}
+
     def move_label(self, name: str, centre: np.ndarray) -> None:
         """Put the label ``name`` centred at ``centre``; L1's leader then ends at its box."""
         item = self.texts()[name]

@@ -8,7 +8,10 @@ once; per animation frame it only asks each shown layer to move. Its bar and men
 are built in controls.py; when a new design is fitted, refit.py decides.
 
 A frame's labels are placed when the frame is first shown and kept for the design and
-zoom (labels.py), so a cycle played twice searches once. Nothing is placed ahead while
+zoom (labels.py), so a cycle played twice searches once. After an edit the new mechanism
+is painted first and its labels are placed in the turn after that paint (the search was
+half of an edit's main-thread time, issue 40 item 5), the previous ones kept meanwhile;
+every read-back and export places them first. Nothing is placed ahead while
 idle: that placed every frame of the cycle (361, or 3601 at 0.1°) after each edit and
 zoom whether or not the animation ever ran, and its chunks landed inside the window's
 first paint, first visits and edits; one frame's placement takes a few ms, and
@@ -38,6 +41,10 @@ from .mechanism import Geometry, MechanismLayer
 from .readback import SchemeReadBack
 from .refit import needs_fit
 
+LABELS_LATE_MS = 100
+"""A rebuilt scheme's labels are placed in the turn after its next paint, or this long
+after the rebuild if no paint comes (a scheme shown but not drawn on screen)."""
+
 
 class SchemeWidget(SchemeReadBack, QWidget):
     """The shaper mechanism drawn to scale at ``model.angle_index``; zoom, pan, fit, export."""
@@ -55,8 +62,11 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._placing_soon = False                 # a rebuild or placement under way places them at its end
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
-        self._update_timer.timeout.connect(self._catch_up)
+        self._update_timer.timeout.connect(self._update)
+        self._labels_timer = QTimer(self, singleShot=True, interval=LABELS_LATE_MS)
+        self._labels_timer.timeout.connect(self._labels_due)
         self._plot = canvas()
+        self._plot.viewport().installEventFilter(self)     # its paints: the labels come after
         self._view = self._plot.getPlotItem().getViewBox()
 
         controls = self._controls = SchemeControls(self, self.fit, self.set_dimensions_visible,
@@ -276,8 +286,22 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._catch_up()
 
     def _catch_up(self) -> None:
-        """Bring the scheme up to the model: after an edit (once for its results, forces
-        and angle signals), when shown after being hidden, and before any read-back."""
+        """Bring the scheme and its labels up to the model: when shown after being hidden,
+        and before any read-back or export."""
+        self._update()
+        if self._labels_stale and not self._stale and self._geometry is not None:
+            self._labels_timer.stop()
+            self._place_still(hidden_too=True)
+            self._draw_forces(self._model.angle_index)
+
+    def labels_settled(self) -> bool:
+        """The labels are placed for the model and view as they are (not waiting for the
+        turn after an edit's paint, nor for the scheme to be shown)."""
+        return not (self._stale or self._labels_stale)
+
+    def _update(self) -> None:
+        """After an edit (once for its results, forces and angle signals): the mechanism,
+        dimensions and arrows; a rebuild's labels wait for the turn after the paint."""
         self._update_timer.stop()
         if self._stale:
             self._rebuild()
@@ -285,9 +309,18 @@ class SchemeWidget(SchemeReadBack, QWidget):
             self._move(self._model.angle_index)
         elif self._forces_stale:
             self._draw_forces(self._model.angle_index)
-        if self._labels_stale and not self._stale and self._geometry is not None:
-            self._place_still(hidden_too=True)
-            self._draw_forces(self._model.angle_index)
+
+    def eventFilter(self, watched, event: QEvent) -> bool:
+        """The plot's paint: labels waiting for it are placed in the next turn."""
+        if event.type() == QEvent.Type.Paint and self._labels_timer.isActive():
+            self._labels_timer.start(0)
+        return super().eventFilter(watched, event)
+
+    def _labels_due(self) -> None:
+        """The turn after a rebuild's paint: its labels placed (a newer edit's rebuild, still
+        to come, waits for its own paint)."""
+        if not self._stale and self.isVisible():
+            self._catch_up()
 
     def _schedule(self) -> None:
         """One rebuild when the model has announced everything an edit changed."""
@@ -311,7 +344,11 @@ class SchemeWidget(SchemeReadBack, QWidget):
         before = None if self._geometry is None else self._geometry.fit_rect
         self._geometry = self._mechanism.rebuild(self._model)
         self._dimensions.crank_side = self._crank_side()
+        later = self.isVisible()              # placed after the paint: meanwhile where they were
+        kept = self._dimensions.placed_centres() if later and self._placed_view else {}
         self._dimensions.update(self._model, self._geometry)
+        for name, centre in kept.items():
+            self._dimensions.move_label(name, centre)
         self._labels.rebuild()
         design = self._model.design
         if design != self._design:
@@ -321,7 +358,11 @@ class SchemeWidget(SchemeReadBack, QWidget):
                 self._refit_for(before)
             finally:
                 self._placing_soon = False
-        self._place_still()
+        if later:
+            self._labels_stale = True
+            self._labels_timer.start(LABELS_LATE_MS)
+        else:
+            self._place_still()
         self._move(self._model.angle_index)
 
     def _on_angle(self, index: int) -> None:
@@ -359,4 +400,5 @@ class SchemeWidget(SchemeReadBack, QWidget):
             return
         if self.forces_visible():
             self._forces.draw(index, self._model, self._geometry)
-        self._labels.place_frame(index, self._view.viewPixelSize())
+        if not self._labels_stale:      # else placed with the still labels, after the paint
+            self._labels.place_frame(index, self._view.viewPixelSize())
