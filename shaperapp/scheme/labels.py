@@ -45,7 +45,7 @@ class LabelLayout(QObject):
         self._leaders = CurveItem(pen(LINK, 0.8), connect="pairs")
         self._leaders.setZValue(Z_LABEL)
         add(self._leaders)
-        self._static_lines = self._swept = np.empty((0, 2, 2))
+        self._static_lines = self._swept = np.empty((0, 2, 2))     # per design, see place_still
         self._raster: Raster | None = None     # the lines that stay put, per design and zoom
         self._kept_rasters: tuple | None = None  # see _rasters
         self._done: dict[tuple, tuple] = {}     # each frame's placement, per design and zoom
@@ -60,10 +60,9 @@ class LabelLayout(QObject):
 
     # ---- per design ----------------------------------------------------
     def rebuild(self) -> None:
-        """Lines that stay put, and what the moving bodies sweep over the cycle."""
-        mech = self._mechanism
-        self._static_lines = mech.static_lines()
-        self._swept = mech.frame_lines(None)
+        """A new design: the lines that stay put and what the moving bodies sweep over the
+        cycle are taken again by the next placement (after the edit's paint, not before it)."""
+        self._swept = None
 
     def place_still(self, mm_per_px: tuple[float, float], bounds: tuple[float, float, float, float],
                     window: tuple[float, float, float, float]) -> None:
@@ -77,6 +76,8 @@ class LabelLayout(QObject):
         if mech.frames is None or not px > 0.0:
             self._raster = None
             return
+        if self._swept is None:
+            self._static_lines, self._swept = mech.static_lines(), mech.frame_lines(None)
         u = mech.frames.u
         texts = dims.texts()
         self._bounds = bounds

@@ -204,10 +204,8 @@ class MechanismLayer(QObject):
         corner = LEFT + left / np.hypot(*left)       # O4's label: between the lever's left limit and the level
         self.pivot_direction = corner / np.hypot(*corner)
         self._o2 = o2
-        self._bodies = self._body_poses(rod)
-        self._frame_ends, self._frame_margins = self._frame_parts(design, rod)
+        self._bodies, self._drawn = None, (design, rod)     # the labels' lines: when first asked
         self.pins["O2"].setPos(*o2)
-        self._o2 = o2
 
         chain = min(x0, float(a[:, 0].min()), float(b[:, 0].min()), -2.0 * u) - 2.5 * u
         bottom = min(-3.5 * u, guide + tip_local[1] - 6.0 * u)
@@ -242,6 +240,15 @@ class MechanismLayer(QObject):
         for name, pin in self.pins.items():
             r = (PIN_FIXED if name.startswith("O") else PIN_MOVING) * u
             pin.setRect(QRectF(-r, -r, 2.0 * r, 2.0 * r))
+
+    def _label_lines(self) -> list:
+        """The moving bodies' lines the labels keep off, worked out when the label search
+        first asks for them (after an edit's paint), not in the rebuild the edit waits for."""
+        if self._bodies is None:
+            design, rod = self._drawn
+            self._bodies = self._body_poses(rod)
+            self._frame_ends, self._frame_margins = self._frame_parts(design, rod)
+        return self._bodies
 
     def _body_poses(self, rod: bool) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
         """Each moving body's outline in its own frame (k × 2 × 2) with its rotation (n,)
@@ -290,6 +297,7 @@ class MechanismLayer(QObject):
 
     def frame_obstacles(self, index: int) -> tuple[np.ndarray, np.ndarray]:
         """The moving bodies at crank-angle ``index``: segments (k × 2 × 2) and margins (k,), mm."""
+        self._label_lines()
         return self._frame_ends[index], self._frame_margins
 
     def static_lines(self) -> np.ndarray:
@@ -304,7 +312,7 @@ class MechanismLayer(QObject):
         """The moving bodies' outlines at crank-angle ``index``, or over the whole cycle
         (every second angle) when None, and the tool path travelled, mm."""
         pick = slice(None, None, 2) if index is None else slice(index, index + 1)
-        parts = [posed(local, angle[pick], pos[pick]) for local, angle, pos in self._bodies]
+        parts = [posed(local, angle[pick], pos[pick]) for local, angle, pos in self._label_lines()]
         if index is not None:
             parts.append(outline(self._path_done))
         return np.concatenate(parts)

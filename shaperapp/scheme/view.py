@@ -190,7 +190,8 @@ class SchemeWidget(SchemeReadBack, QWidget):
         if self._view_key() == self._placed_view:
             return
         self._dimensions.separate_chain_labels()
-        self._dimensions_placed()
+        if not self._labels_timer.isActive():      # else due after the paint, for the view then
+            self._dimensions_placed()
 
     def dimensions_visible(self) -> bool:
         return self.dimensions_action.isChecked()

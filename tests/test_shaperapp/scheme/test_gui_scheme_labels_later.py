@@ -91,3 +91,21 @@ def test_a_read_back_before_the_turn_places_the_labels_first(qtbot, monkeypatch)
     assert scheme.labels_settled() and len(calls) == 1
     qtbot.waitUntil(lambda: not scheme._labels_timer.isActive())
     assert len(calls) == 1                                   # the turn finds nothing to do
+
+
+def test_a_refitted_view_reported_before_the_paint_waits_for_the_turn(qtbot, monkeypatch):
+    """A large edit fits the view anew; pyqtgraph reports the new transform while preparing
+    the paint (under X11), which placed the labels at once, inside that paint: the search
+    still waits for the turn after it, for the view then."""
+    model = DesignModel()
+    scheme = shown_scheme(qtbot, model)
+    calls = []
+    real = LabelLayout.place_still
+    monkeypatch.setattr(LabelLayout, "place_still", lambda self, *a: calls.append(a) or real(self, *a))
+    model.set_spec(stroke=420.0, time_ratio=1.7)
+    scheme._update()                   # the update timer's turn: rebuilt and refitted, not painted
+    assert scheme._view_key() != scheme._placed_view and calls == []
+    scheme._zoomed()
+    assert calls == []
+    qtbot.waitUntil(scheme.labels_settled)
+    assert len(calls) == 1 and scheme._placed_view == scheme._view_key()
