@@ -242,12 +242,10 @@ class MechanismLayer(QObject):
             pin.setRect(QRectF(-r, -r, 2.0 * r, 2.0 * r))
 
     def _label_lines(self) -> list:
-        """The moving bodies' lines the labels keep off, worked out when the label search
-        first asks for them (after an edit's paint), not in the rebuild the edit waits for."""
+        """The bodies' lines the labels keep off: when their search first asks (after the paint)."""
         if self._bodies is None:
-            design, rod = self._drawn
-            self._bodies = self._body_poses(rod)
-            self._frame_ends, self._frame_margins = self._frame_parts(design, rod)
+            self._bodies = self._body_poses(self._drawn[1])
+            self._frame_ends, self._frame_margins = self._frame_parts(*self._drawn)
         return self._bodies
 
     def _body_poses(self, rod: bool) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:

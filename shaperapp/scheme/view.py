@@ -8,10 +8,9 @@ once; per animation frame it only asks each shown layer to move. Its bar and men
 are built in controls.py; when a new design is fitted, refit.py decides.
 
 A frame's labels are placed when the frame is first shown and kept for the design and
-zoom (labels.py), so a cycle played twice searches once. After an edit the new mechanism
-is painted first and its labels are placed in the turn after that paint (the search was
-half of an edit's main-thread time, issue 40 item 5), the previous ones kept meanwhile;
-every read-back and export places them first. Nothing is placed ahead while
+zoom (labels.py), so a cycle played twice searches once. An edit's new mechanism is
+painted first, its labels placed in the turn after that paint (the previous ones kept
+till then; read-backs place them first: issue 40 item 5). Nothing is placed ahead while
 idle: that placed every frame of the cycle (361, or 3601 at 0.1°) after each edit and
 zoom whether or not the animation ever ran, and its chunks landed inside the window's
 first paint, first visits and edits; one frame's placement takes a few ms, and
@@ -41,9 +40,7 @@ from .mechanism import Geometry, MechanismLayer
 from .readback import SchemeReadBack
 from .refit import needs_fit
 
-LABELS_LATE_MS = 100
-"""A rebuilt scheme's labels are placed in the turn after its next paint, or this long
-after the rebuild if no paint comes (a scheme shown but not drawn on screen)."""
+LABELS_LATE_MS = 100     # a rebuild's labels wait this long for its paint (a scheme not drawn on screen)
 
 
 class SchemeWidget(SchemeReadBack, QWidget):
@@ -296,8 +293,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
             self._draw_forces(self._model.angle_index)
 
     def labels_settled(self) -> bool:
-        """The labels are placed for the model and view as they are (not waiting for the
-        turn after an edit's paint, nor for the scheme to be shown)."""
+        """The labels are placed for the model and view (not waiting for a paint or a show)."""
         return not (self._stale or self._labels_stale)
 
     def _update(self) -> None:
@@ -318,8 +314,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
         return super().eventFilter(watched, event)
 
     def _labels_due(self) -> None:
-        """The turn after a rebuild's paint: its labels placed (a newer edit's rebuild, still
-        to come, waits for its own paint)."""
+        """The turn after a rebuild's paint (a newer rebuild still due waits for its own)."""
         if not self._stale and self.isVisible():
             self._catch_up()
 
