@@ -10,7 +10,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
-from PySide6.QtWidgets import QApplication
 
 import shaperapp.scheme.raster as raster_module
 from gui_helpers import shown
@@ -132,7 +131,7 @@ def test_the_schemes_swept_lines_burn_the_same_cells(qtbot):
     counts = []
     for ratio in (1.4, 1.9, 1.15, 1.6):
         model.set_spec(time_ratio=ratio)
-        QApplication.processEvents()
+        scheme.dimension_label_boxes()     # read back: the labels (placed after the paint) caught up
         layout = scheme._labels
         assert layout._raster is not None and len(layout._swept) > 10000
         now, before = both_burns(layout._raster, layout._swept)

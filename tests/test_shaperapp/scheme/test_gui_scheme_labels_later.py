@@ -4,6 +4,7 @@ labels are placed in the turn after that paint, where a placement at once puts t
 every read-back catches up first."""
 from __future__ import annotations
 
+import numpy as np
 import pytest
 from PySide6.QtCore import QEvent, QObject
 
@@ -109,3 +110,26 @@ def test_a_refitted_view_reported_before_the_paint_waits_for_the_turn(qtbot, mon
     assert calls == []
     qtbot.waitUntil(scheme.labels_settled)
     assert len(calls) == 1 and scheme._placed_view == scheme._view_key()
+
+
+@pytest.mark.parametrize("edit", EDITS + [{"time_ratio": 1.9}], ids=["ratio", "crank", "stroke", "ratio-far"])
+def test_an_edited_scheme_fitted_places_its_labels_as_a_fresh_one(qtbot, edit):
+    """Nothing of the previous design stays in the search (its lines are taken again after
+    the edit): edited, then fitted, a scheme's labels are those of a scheme built on the new
+    design and fitted at the same size (to 1e-9 mm: the two fits' views differ in the last
+    bits, from the ranges they started from; another spot is millimetres away)."""
+    model = DesignModel()
+    edited = shown_scheme(qtbot, model)
+    model.set_spec(**edit)
+    qtbot.waitUntil(edited.labels_settled)
+    edited.fit()
+    new = DesignModel()
+    new.set_spec(**edit)
+    fresh = shown_scheme(qtbot, new)
+    fresh.fit()
+    (boxes, joints, *lines), (want_boxes, want_joints, *want_lines) = drawn(edited), drawn(fresh)
+    assert [b[0] for b in boxes] == [b[0] for b in want_boxes] and [j[0] for j in joints] == [j[0] for j in want_joints]
+    got = np.concatenate([np.ravel([b[1] for b in boxes]), np.ravel([j[1:] for j in joints]), *map(np.ravel, lines)])
+    want = np.concatenate([np.ravel([b[1] for b in want_boxes]), np.ravel([j[1:] for j in want_joints]),
+                           *map(np.ravel, want_lines)])
+    assert got.shape == want.shape and np.allclose(got, want, rtol=0.0, atol=1e-9), np.abs(got - want).max()
