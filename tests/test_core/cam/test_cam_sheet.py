@@ -20,6 +20,7 @@ from core.drawing.sheet import Circle, Polyline, Text, marked, paper
 from core.base.errors import DesignError
 from core.linkage.geometry import synthesize
 from sheet_checks import assert_laid_out
+from sweeps import examples
 
 import cam_reference as ref
 
@@ -172,7 +173,8 @@ def test_chinese_labels_change_the_texts_only(cam):
     assert overlapping_texts(zh.sheet) == [] and outside_border(zh.sheet) == []
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@pytest.mark.slow     # a random sweep of sheets (19 s of the suite): CI draws a share (tests/sweeps.py)
+@settings(max_examples=examples(40), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # the return sector's angle had no free spot round its arc, left of a cam near the area's edge
 @example(rise_law="parabolic", return_law="parabolic", swing=18.0, rise=73.0, dwell=24.0, back=120.75,
          arm=55.0, allowed=31.0, size="A2", rpm=10.0)
