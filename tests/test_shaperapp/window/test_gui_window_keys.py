@@ -27,7 +27,7 @@ def window(qtbot, tmp_path, monkeypatch):
 def focus_field(win, qtbot, name="time_ratio"):
     edit = win.form.field(name)
     edit.setFocus()
-    qtbot.waitUntil(edit.hasFocus)
+    qtbot.waitUntil(edit.hasFocus, timeout=10_000)
     return edit
 
 
@@ -112,7 +112,7 @@ def test_space_plays_unless_typing(window, qtbot):
     qtbot.keyClick(edit, Qt.Key.Key_Space)
     assert not window.animation.play_action.isChecked() and " " in edit.text()
     window.tabs.setFocus()
-    qtbot.waitUntil(window.tabs.hasFocus)
+    qtbot.waitUntil(window.tabs.hasFocus, timeout=10_000)
     qtbot.keyClick(window.tabs, Qt.Key.Key_Space)
     assert window.animation.play_action.isChecked()
     qtbot.keyClick(window.tabs, Qt.Key.Key_Space)
