@@ -4,6 +4,7 @@ from __future__ import annotations
 import math
 import time
 
+import numpy as np
 import pytest
 from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import QApplication, QLabel, QSlider, QToolButton
@@ -29,22 +30,26 @@ def texts(bar: AnimationBar) -> list[str]:
 
 def play_for(qtbot, bar: AnimationBar, model, seconds: float) -> tuple[float, float, float]:
     """Plays until the crank has moved for at least ``seconds`` of real time, then pauses.
-    Returns the crank angle played (degrees) and the real time from pressing play to the
-    move before the last and to the last (s). Each move is stamped as it happens: the
-    bar's clock was read between those two stamps, so a loaded machine's late or skipped
-    ticks move both sides of the comparison alike (a fixed 300 ms wait compared with the
-    whole wait failed when the event loop was held up near its end)."""
-    moves: list[float] = []
-    model.angleChanged.connect(lambda _: moves.append(time.perf_counter()))
+    Returns the crank angle played (degrees, summed over the moves, so a wrap at the end
+    of the cycle counts whole) and the real time from pressing play to the move before
+    the last and to the last (s). Each move is stamped as it happens and the bar read its
+    clock between those two stamps, so a loaded machine's late or skipped ticks shift
+    both sides of the comparison alike (a fixed 300 ms wait, compared with the time the
+    whole wait took, did not: a tick held up past its end was not counted)."""
+    grid = np.degrees(model.motion.crank_angle)
+    moves: list[tuple[float, int]] = []
+    model.angleChanged.connect(lambda index: moves.append((time.perf_counter(), index)))
+    first = model.angle_index
     start = time.perf_counter()
     bar.toggle_play()
     started = time.perf_counter()
     assert bar.is_playing()
-    qtbot.waitUntil(lambda: len(moves) >= 2 and moves[-1] - start >= seconds, timeout=10_000)
+    qtbot.waitUntil(lambda: len(moves) >= 2 and moves[-1][0] - start >= seconds, timeout=10_000)
     bar.toggle_play()
     assert not bar.is_playing()
-    played = math.degrees(float(model.motion.crank_angle[model.angle_index]))
-    return played, moves[-2] - started, moves[-1] - start
+    indices = [first] + [index for _, index in moves]
+    played = float(sum((grid[b] - grid[a]) % 360.0 for a, b in zip(indices, indices[1:])))
+    return played, moves[-2][0] - started, moves[-1][0] - start
 
 
 def test_play_advances_in_real_time(qtbot, bar, model):
