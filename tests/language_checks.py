@@ -91,5 +91,5 @@ def check_file_menu_entry(window, qtbot, action, english: str) -> None:
     window.set_language("en")
     assert action.text() == english
     window.set_language("zh_CN")
-    qtbot.waitUntil(lambda: action.text() != english)
+    qtbot.waitUntil(lambda: action.text() != english, timeout=10_000)
     assert han(action.text())

@@ -45,7 +45,7 @@ def test_a_progress_dialog_whose_bar_moves_is_left_open_and_a_stuck_one_closed(q
             while time.monotonic() < end:
                 QApplication.processEvents()
         assert watchdog.closed == [] and not dialog.wasCanceled()
-        qtbot.waitUntil(lambda: watchdog.closed != [], timeout=3000)     # stuck: closed
+        qtbot.waitUntil(lambda: watchdog.closed != [], timeout=10_000)     # stuck: closed
     finally:
         watchdog.stop()
     assert watchdog.closed == ["QProgressDialog '': ''"]

@@ -145,7 +145,10 @@ def _require_regular(info: os.stat_result, name: str) -> None:
         raise FileFormatError("too_large", name, MAX_FILE_BYTES // 1_000_000)
 
 
-_STRING = re.compile(rb'"(?:[^"\\]|\\.)*"', re.DOTALL)
+# A string literal, its escapes included, as Friedl's "unrolled loop": runs of plain bytes are
+# taken whole. The plain alternation (one branch per byte) took 0.3–0.9 s over a 900 kB
+# string field, near the 2 s a hostile file may take to be refused, on a loaded machine.
+_STRING = re.compile(rb'"[^"\\]*(?:\\.[^"\\]*)*"', re.DOTALL)
 
 
 def _nesting_depth(raw: bytes) -> int:

@@ -3,6 +3,8 @@ four plots got 60 px of δ each and their labels ran together ("100200300"), the
 two-word Chinese y titles were cut, and the line over the cam lost its ψ at the right."""
 from __future__ import annotations
 
+import math
+
 import pytest
 from PySide6.QtCore import QRectF
 from PySide6.QtGui import QImage
@@ -36,7 +38,15 @@ def test_plots_keep_three_labels_apart_and_titles_off_them(qtbot, chinese, model
     model.set_rpms([20.0 + 5.0 * i for i in range(16)])
     plots = shown(qtbot, CamPlots(cam_model), width, 260)       # the pane at 1280 × 720: 260 px
     plots.retranslate()
-    qtbot.wait(100)                     # pyqtgraph fits y at its next paint; the axes follow
+    # pyqtgraph fits y at its next paint, and the axes follow on a zero timer: a fixed 100 ms
+    # ended before that chain on a loaded machine. Wait until every plot has y labels and
+    # the axes are as wide as they need, then a while for any further change.
+    def fitted() -> bool:
+        axes = [plot.getAxis("left") for plot in plots.plots]
+        width = max(math.ceil(axis.needed_width()) for axis in axes)
+        return all(len(tick_labels(axis)) >= 3 and axis.fixedWidth == width for axis in axes)
+    qtbot.waitUntil(fitted, timeout=10_000)
+    qtbot.wait(100)
     for plot in plots.plots:
         bottom, left = plot.getAxis("bottom"), plot.getAxis("left")
         x_ticks, y_ticks = tick_labels(bottom), tick_labels(left)

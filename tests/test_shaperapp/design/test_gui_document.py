@@ -50,7 +50,8 @@ def test_corrupt_file_refused_and_nothing_changes(doc, tmp_path, qtbot, content)
     before = (model.spec, model.design, model.rpms, model.dirty, model.path)
     bad = tmp_path / "bad.json"
     bad.write_text(content)
-    with qtbot.waitSignal(document.failed) as blocker, qtbot.assertNotEmitted(model.resultsChanged):
+    with (qtbot.waitSignal(document.failed, timeout=10_000) as blocker,
+          qtbot.assertNotEmitted(model.resultsChanged)):
         assert not document.open_path(str(bad))
     assert "bad.json" in blocker.args[0]
     assert (model.spec, model.design, model.rpms, model.dirty, model.path) == before
@@ -60,11 +61,11 @@ def test_corrupt_file_refused_and_nothing_changes(doc, tmp_path, qtbot, content)
 def test_save_to_unwritable_place_reports(doc, tmp_path, qtbot):
     model, document = doc
     target = str(tmp_path / "missing-dir" / "x.json")
-    with qtbot.waitSignal(document.failed) as blocker:
+    with qtbot.waitSignal(document.failed, timeout=10_000) as blocker:
         assert not document.save_to(target)
     assert model.path == "" and target in blocker.args[0] and ".tmp" not in blocker.args[0]
     csv = str(tmp_path / "missing-dir" / "c.csv")
-    with qtbot.waitSignal(document.failed) as blocker:
+    with qtbot.waitSignal(document.failed, timeout=10_000) as blocker:
         assert not document.export_csv_to(csv)
     assert csv in blocker.args[0] and ".tmp" not in blocker.args[0]
 

@@ -29,7 +29,7 @@ def test_typing_k_updates_dimensions_and_metrics_after_debounce(setup, qtbot):
     model, form, metrics = setup
     edit = form.field("time_ratio")
     edit.clear()
-    with qtbot.waitSignal(model.resultsChanged, timeout=2000):
+    with qtbot.waitSignal(model.resultsChanged, timeout=10_000):
         type_into(qtbot, edit, "1.6")
     expected = synthesize(100, 1.6, 300)
     assert model.design == expected
@@ -44,12 +44,12 @@ def test_invalid_value_marks_field_and_keeps_design(setup, qtbot):
     shown = metrics.value_text("lever")
     edit = form.field("stroke")
     edit.clear()
-    with qtbot.waitSignal(model.errorChanged, timeout=2000):
+    with qtbot.waitSignal(model.errorChanged, timeout=10_000):
         type_into(qtbot, edit, "120")
     assert form.marked_fields() == ["stroke"]
     assert "Stroke H" in form.error_text()
     assert model.design == before and metrics.value_text("lever") == shown
-    with qtbot.waitSignal(model.errorChanged, timeout=2000):
+    with qtbot.waitSignal(model.errorChanged, timeout=10_000):
         type_into(qtbot, edit, "360")
     assert form.marked_fields() == [] and form.error_text() == ""
     assert model.design.stroke == pytest.approx(360)
@@ -59,7 +59,7 @@ def test_text_that_is_not_a_number(setup, qtbot):
     model, form, _ = setup
     edit = form.field("crank")
     edit.clear()
-    with qtbot.waitSignal(model.errorChanged, timeout=2000):
+    with qtbot.waitSignal(model.errorChanged, timeout=10_000):
         type_into(qtbot, edit, "1o0")
     assert model.error.parameter == "crank" and form.marked_fields() == ["crank"]
     assert "number" in form.error_text()
@@ -77,7 +77,7 @@ def test_model_change_shows_in_form(setup, qtbot):
 
 def test_add_and_remove_speed(setup, qtbot):
     model, form, metrics = setup
-    with qtbot.waitSignal(model.resultsChanged):
+    with qtbot.waitSignal(model.resultsChanged, timeout=10_000):
         qtbot.mouseClick(form._add_speed, __import__("PySide6.QtCore").QtCore.Qt.MouseButton.LeftButton)
     assert model.rpms == (40.0, 60.0, 80.0)
     assert metrics.table_text(0, 2) == f"{model.metrics.speeds[2].cycle_time_s:.4f}"

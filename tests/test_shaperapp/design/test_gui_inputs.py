@@ -118,7 +118,7 @@ def test_wheel_over_an_unfocused_choice_scrolls_the_panel_instead(qtbot):
     assert model.spec.variant == "rod" and combo.currentData() == "rod"
     assert scroll.verticalScrollBar().value() > start            # the panel scrolled
     combo.setFocus()
-    qtbot.waitUntil(combo.hasFocus)
+    qtbot.waitUntil(combo.hasFocus, timeout=10_000)
     wheel(combo, 120)                                             # focused: the wheel chooses
     assert model.spec.variant == "block"
 
@@ -141,12 +141,12 @@ def test_a_window_that_gets_the_focus_has_its_choices_guarded(qtbot):
     dialog.show()
     dialog.activateWindow()
     button.setFocus()
-    qtbot.waitUntil(button.hasFocus)
+    qtbot.waitUntil(button.hasFocus, timeout=10_000)
     assert spin.property("shaperWheelGuard") and spin.focusPolicy() == Qt.FocusPolicy.StrongFocus
     wheel(spin, 120)
     assert spin.value() == 5                                      # unfocused: unchanged
     spin.setFocus()
-    qtbot.waitUntil(spin.hasFocus)
+    qtbot.waitUntil(spin.hasFocus, timeout=10_000)
     wheel(spin, 120)
     assert spin.value() == 6
 
@@ -320,10 +320,10 @@ def test_clean_state_is_the_unsaved_mark(setup, tmp_path, qtbot):
     model, form, document = setup
     type_text(form, "crank", "90")
     assert document.save_to(str(tmp_path / "c.json")) and not model.dirty
-    with qtbot.waitSignal(model.dirtyChanged) as blocker:
+    with qtbot.waitSignal(model.dirtyChanged, timeout=10_000) as blocker:
         model.undo_stack.undo()
     assert blocker.args == [True] and model.dirty
-    with qtbot.waitSignal(model.dirtyChanged) as blocker:
+    with qtbot.waitSignal(model.dirtyChanged, timeout=10_000) as blocker:
         model.undo_stack.redo()
     assert blocker.args == [False] and not model.dirty
 

@@ -14,7 +14,7 @@ def test_default_design_is_seed003(model):
 
 
 def test_valid_change_recomputes_once(model, qtbot):
-    with qtbot.waitSignal(model.resultsChanged):
+    with qtbot.waitSignal(model.resultsChanged, timeout=10_000):
         model.set_spec(time_ratio=1.6, stroke=320)
     expected = synthesize(100, 1.6, 320)
     assert model.design == expected
@@ -33,12 +33,12 @@ def test_same_value_emits_nothing(model, qtbot):
 def test_invalid_change_keeps_last_valid(model, qtbot):
     before = model.motion
     with qtbot.assertNotEmitted(model.resultsChanged):
-        with qtbot.waitSignal(model.errorChanged):
+        with qtbot.waitSignal(model.errorChanged, timeout=10_000):
             model.set_spec(time_ratio=0.7)
     assert model.error.parameter == "time_ratio"
     assert model.motion is before and model.design.time_ratio == pytest.approx(1.4)
     assert model.spec.time_ratio == 0.7 and model.valid_spec.time_ratio == 1.4
-    with qtbot.waitSignal(model.errorChanged):
+    with qtbot.waitSignal(model.errorChanged, timeout=10_000):
         model.set_spec(time_ratio=1.5)
     assert model.error is None and model.design.time_ratio == pytest.approx(1.5)
 
@@ -57,7 +57,7 @@ def test_speeds_and_step(model, qtbot):
 
 
 def test_angle_index_wraps_and_snaps(model, qtbot):
-    with qtbot.waitSignal(model.angleChanged) as blocker:
+    with qtbot.waitSignal(model.angleChanged, timeout=10_000) as blocker:
         model.set_angle_deg(90.4)
     assert blocker.args == [90] and model.crank_deg == pytest.approx(90)
     model.set_angle_index(361 + 5)

@@ -13,7 +13,7 @@ def test_file_menu_has_the_drawing_sheet(window, qtbot):
     assert window.act_sheet in window.menu_file.actions()
     assert "drawing sheet" in window.act_sheet.text()
     window.set_language("zh_CN")
-    qtbot.waitUntil(lambda: window.act_sheet.text() != "Export &drawing sheet (PDF/SVG/DXF)…")
+    qtbot.waitUntil(lambda: window.act_sheet.text() != "Export &drawing sheet (PDF/SVG/DXF)…", timeout=10_000)
     assert re.search(r"[\u4e00-\u9fff]", window.act_sheet.text())
 
 

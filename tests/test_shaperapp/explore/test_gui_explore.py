@@ -59,7 +59,7 @@ def test_hover_names_the_reason_of_an_invalid_cell(qtbot, view):
     rows, cols = np.nonzero(~view.result.valid)
     row, col = int(rows[0]), int(cols[0])
     qtbot.mouseMove(view.map.viewport(), pixel(view, row, col))
-    qtbot.waitUntil(lambda: "invalid" in view.hover.text())
+    qtbot.waitUntil(lambda: "invalid" in view.hover.text(), timeout=10_000)
     error = view.result.errors[row * view.result.x.size + col]
     assert describe(error) in view.hover.text()
     assert view.map.toolTip() == view.hover.text()
@@ -70,7 +70,7 @@ def test_clicking_a_cell_loads_that_design(qtbot, view, model):
     compute(qtbot, view)
     row, col = 5, 6
     assert view.result.valid[row, col]
-    with qtbot.waitSignal(model.resultsChanged):
+    with qtbot.waitSignal(model.resultsChanged, timeout=10_000):
         qtbot.mouseClick(view.map.viewport(), Qt.MouseButton.LeftButton, pos=pixel(view, row, col))
     assert model.valid_spec.guide_rule == "height"
     # The cell's values, rounded to at most a hundredth of the cell for the form
@@ -109,7 +109,7 @@ def test_optimize_loads_the_best_design(qtbot, view, model):
 def test_cancel_stops_a_long_map_and_the_window_stays_responsive(qtbot, view):
     view.count.setValue(120)
     view.figure.setCurrentIndex(view.figure.findData("flywheel"))   # with loads: slow
-    qtbot.waitUntil(lambda: view.runner.job is not None, timeout=5_000)
+    qtbot.waitUntil(lambda: view.runner.job is not None, timeout=10_000)
     start = time.perf_counter()
     ticks = []
     timer = QTimer()
@@ -162,7 +162,7 @@ def test_hover_shows_every_figure_of_a_valid_cell(qtbot, view):
     row, col = 4, 4
     assert view.result.valid[row, col]
     qtbot.mouseMove(view.map.viewport(), pixel(view, row, col))
-    qtbot.waitUntil(lambda: view.hover.text() != "")
+    qtbot.waitUntil(lambda: view.hover.text() != "", timeout=10_000)
     text = view.hover.text()
     for key in ("pressure-angle", "accel", "v-work", "v-return"):
         value = view.result.figures[key][row, col]
@@ -248,7 +248,7 @@ def test_closing_the_window_mid_map_ends_the_worker_and_gives_collection_back(qt
     window.show()
     window.explore.count.setValue(150)                  # a map that takes seconds
     window.tabs.setCurrentWidget(window.explore)
-    qtbot.waitUntil(lambda: window.explore.runner.running, timeout=5_000)
+    qtbot.waitUntil(lambda: window.explore.runner.running, timeout=10_000)
     assert COLLECTOR.holding and not gc.isenabled()      # the worker never collects
     window.model.set_clean(window.model.path)           # no unsaved-changes question
     window.close()

@@ -14,12 +14,12 @@ def test_the_free_parameters_message_is_retranslated(qtbot, view):
     english = view.box.optimum.text()
     assert english == "Choose one or two different free parameters."
     assert i18n.set_language("zh_CN")
-    qtbot.waitUntil(lambda: view.box.optimum.text() != english)
+    qtbot.waitUntil(lambda: view.box.optimum.text() != english, timeout=10_000)
     assert view.box.optimum.text() == QCoreApplication.translate(
         "ExploreView", "Choose one or two different free parameters.")
     assert english_words(view.box.optimum.text()) == []
     i18n.set_language("en")
-    qtbot.waitUntil(lambda: view.box.optimum.text() == english)
+    qtbot.waitUntil(lambda: view.box.optimum.text() == english, timeout=10_000)
 
 
 def test_the_proposal_is_retranslated(qtbot, view, model):
@@ -33,7 +33,7 @@ def test_the_proposal_is_retranslated(qtbot, view, model):
     english = view.box.optimum.text()
     assert english.startswith("Proposal")
     assert i18n.set_language("zh_CN")
-    qtbot.waitUntil(lambda: view.box.optimum.text() != english)
+    qtbot.waitUntil(lambda: view.box.optimum.text() != english, timeout=10_000)
     chinese = view.box.optimum.text()
     assert english_words(chinese, {"span", "style", "color", "br"}) == [], chinese
     numbers = re.compile(r"\d+\.\d+")                 # the optimum, the design before, the values

@@ -44,7 +44,7 @@ def test_no_gain_loads_nothing_and_says_why(qtbot, view, model):
     assert "Proposal" not in text and "does not depend on Crank L1" in text
     assert not view.box.undo_proposal.isVisible()
     assert i18n.set_language("zh_CN")
-    qtbot.waitUntil(lambda: view.box.optimum.text() != text)
+    qtbot.waitUntil(lambda: view.box.optimum.text() != text, timeout=10_000)
     assert english_words(view.box.optimum.text(), {"br"}) == [], view.box.optimum.text()
 
 

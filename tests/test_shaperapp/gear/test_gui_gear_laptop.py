@@ -28,7 +28,7 @@ def test_every_shown_cell_of_the_gear_tables_is_whole(qtbot, window, lang):
     window.set_language(lang)
     window.tabs.setCurrentWidget(window._pages["gear"])
     tab = window._pages["gear"].view()
-    qtbot.waitUntil(lambda: tab.isVisible())
+    qtbot.waitUntil(lambda: tab.isVisible(), timeout=10_000)
     qtbot.wait(50)
     area = tab.results.parentWidget().parentWidget()           # the tables' scroll area
     shown = QRect(area.viewport().mapTo(window, QPoint(0, 0)), area.viewport().size())
@@ -54,7 +54,7 @@ def test_both_gears_columns_are_in_view_and_the_shift_fields_readable(qtbot, win
     window.set_language(lang)
     window.tabs.setCurrentWidget(window._pages["gear"])
     tab = window._pages["gear"].view()
-    qtbot.waitUntil(lambda: tab.isVisible())
+    qtbot.waitUntil(lambda: tab.isVisible(), timeout=10_000)
     tab.gear_model.set_fields(z1=10.0)                  # x1, x2 of a′ = 162: long numbers
     qtbot.wait(50)
     table = tab.results.gears

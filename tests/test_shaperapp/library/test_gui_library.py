@@ -345,7 +345,7 @@ def test_stale_bar_in_chinese(pane, model, qtbot):
     pane._refresh()
     try:
         i18n.set_language("zh_CN")
-        qtbot.waitUntil(lambda: pane.stale_bar.button.text() != "Recompute")
+        qtbot.waitUntil(lambda: pane.stale_bar.button.text() != "Recompute", timeout=10_000)
         assert "1" in pane.stale_bar.label.text() and "older" not in pane.stale_bar.label.text()
     finally:
         i18n.set_language("en")

@@ -64,7 +64,7 @@ def test_each_form_edits_through_the_shared_path(qtbot, model, kind):
 
     type_text(qtbot, edit, text)                       # typed, not yet sent: the pause
     assert name in form.pending and valid() == start and model.undo_stack.count() == steps
-    qtbot.waitUntil(lambda: valid() == typed, timeout=5000)
+    qtbot.waitUntil(lambda: valid() == typed, timeout=10_000)
     assert name not in form.pending
     assert model.undo_stack.count() == steps + 1       # the keystrokes are one step
 

@@ -185,7 +185,8 @@ def test_mouse_readout(qtbot, widget, model):
     view = plot.scene().views()[0]
     pos = view.mapFromScene(plot.vb.mapViewToScene(QPointF(100.2, 0.0)))
     qtbot.mouseMove(view.viewport(), pos)
-    qtbot.waitUntil(lambda: "r/min" in widget.readout_text() and "100." in widget.readout_text())
+    qtbot.waitUntil(lambda: "r/min" in widget.readout_text() and "100." in widget.readout_text(),
+                    timeout=10_000)
     _, ram_v = core_curves(model, "ram_v")
     text = widget.readout_text()
     for row in ram_v:

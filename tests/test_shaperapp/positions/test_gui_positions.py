@@ -42,7 +42,7 @@ def test_rows_are_core_table_numbers(view, model):
 
 
 def test_selecting_a_row_moves_the_animation(view, model, qtbot):
-    with qtbot.waitSignal(model.angleChanged):
+    with qtbot.waitSignal(model.angleChanged, timeout=10_000):
         view.view.selectRow(3)                       # position 4, φ = 90°
     assert model.crank_deg == pytest.approx(90.0)
     view.view.selectRow(15)                          # cut end, off the 1° grid
@@ -56,7 +56,7 @@ def test_count_and_design_changes_rebuild(view, model, qtbot):
     assert cell(view, 1, "crank_deg") == "15.00"
     model.set_spec(variant="rod")
     # one rebuild for the edit's two signals (results, then forces), when events run
-    qtbot.waitUntil(lambda: "rod_deg" in view.table_model._tips)
+    qtbot.waitUntil(lambda: "rod_deg" in view.table_model._tips, timeout=10_000)
     assert cell(view, 0, "rod_deg") is not None
 
 
@@ -65,7 +65,7 @@ def test_one_edit_rebuilds_the_table_once(view, model, qtbot, monkeypatch):
     show = view._show
     monkeypatch.setattr(view, "_show", lambda: (calls.append(1), show()))
     model.set_spec(time_ratio=1.5)
-    qtbot.waitUntil(lambda: calls != [])
+    qtbot.waitUntil(lambda: calls != [], timeout=10_000)
     qtbot.wait(50)
     assert calls == [1]
     assert cell(view, 1, "crank_deg") is not None

@@ -19,7 +19,7 @@ def test_window_has_the_deliverables(window, qtbot):
     assert window.docks.pane("polygons") is window.polygon_view
     assert window.act_report in window.menu_file.actions()
     window.set_language("zh_CN")
-    qtbot.waitUntil(lambda: window.tabs.tabText(2) == "位置")
+    qtbot.waitUntil(lambda: window.tabs.tabText(2) == "位置", timeout=10_000)
     assert window.docks["polygons"].windowTitle() == "矢量多边形"
     assert window.act_report.text().startswith("导出设计说明书")
 

@@ -135,6 +135,10 @@ def test_a_language_switch_places_the_labels_once_for_the_view_laid_out(qtbot, t
     with main_window(tmp_path) as win:
         win.resize(1366, 768)
         qtbot.waitExposed(win)
+        # The window settled first: its lazy pages are built one per turn of the event loop
+        # once it is painted, each changing the layout and with it the scheme's view (which
+        # places the labels), and on a loaded machine a fixed 300 ms did not see them all.
+        qtbot.waitUntil(lambda: all(page.is_ready() for page in win._pages.values()), timeout=30_000)
         qtbot.wait(300)
         monkeypatch.setattr(LabelLayout, "place_still", lambda self, *a: calls.append(a) or real(self, *a))
         win.set_language("zh_CN")

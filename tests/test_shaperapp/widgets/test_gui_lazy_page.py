@@ -91,7 +91,7 @@ def test_a_deferred_page_shown_for_a_moment_is_not_built(qtbot):
     layout.addWidget(stays)
     holder.show()
     brief.hide()                                    # before the event loop turns
-    qtbot.waitUntil(lambda: stays.is_built(), timeout=2000)
+    qtbot.waitUntil(lambda: stays.is_built(), timeout=10_000)
     qtbot.wait(50)
     assert made == ["stays"] and not brief.is_built()
 
@@ -101,7 +101,7 @@ def test_idle_build_builds_every_page_one_per_turn(qtbot):
     _, pages = _hidden_pages(qtbot, made)
     build_when_idle(pages)
     assert made == []                                   # nothing before the event loop turns
-    qtbot.waitUntil(lambda: all(p.is_built() for p in pages), timeout=5_000)
+    qtbot.waitUntil(lambda: all(p.is_built() for p in pages), timeout=10_000)
     assert len(made) == 3
 
 
@@ -130,7 +130,7 @@ def test_idle_build_then_lets_each_hidden_view_catch_up_once(qtbot):
     holder.show()                                       # the third page's show builds it
     assert [e for e, _ in events] == ["build"]
     build_when_idle(pages)
-    qtbot.waitUntil(lambda: all(p.is_ready() for p in pages), timeout=5_000)
+    qtbot.waitUntil(lambda: all(p.is_ready() for p in pages), timeout=10_000)
     kinds = [e for e, _ in events]
     assert kinds == ["build"] * 3 + ["catch up"] * 2, kinds
     assert [v for e, v in events if e == "catch up"] == [pages[0].built_view(), pages[1].built_view()]

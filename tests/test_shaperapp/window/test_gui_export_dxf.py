@@ -53,11 +53,11 @@ def test_a_name_without_suffix_gets_dxf(document, tmp_path):
 
 def test_another_suffix_or_an_unwritable_place_is_reported_and_nothing_written(document, tmp_path, qtbot):
     png = tmp_path / "scheme.png"
-    with qtbot.waitSignal(document.failed) as blocker:
+    with qtbot.waitSignal(document.failed, timeout=10_000) as blocker:
         assert not document.export_scheme_dxf_to(str(png))
     assert str(png) in blocker.args[0] and "DXF" in blocker.args[0] and not png.exists()
     missing = tmp_path / "missing-dir" / "s.dxf"
-    with qtbot.waitSignal(document.failed) as blocker:
+    with qtbot.waitSignal(document.failed, timeout=10_000) as blocker:
         assert not document.export_scheme_dxf_to(str(missing))
     assert str(missing) in blocker.args[0] and ".tmp" not in blocker.args[0]
     assert [p.name for p in tmp_path.iterdir() if p.suffix != ".ini"] == []
@@ -65,5 +65,5 @@ def test_another_suffix_or_an_unwritable_place_is_reported_and_nothing_written(d
 
 def test_menu_text_in_chinese(window, qtbot):
     window.set_language("zh_CN")
-    qtbot.waitUntil(lambda: window.tabs.tabText(2) == "位置")
+    qtbot.waitUntil(lambda: window.tabs.tabText(2) == "位置", timeout=10_000)
     assert window.act_scheme_dxf.text().startswith("导出机构简图为 DXF")

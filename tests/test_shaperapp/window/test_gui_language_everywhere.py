@@ -16,6 +16,8 @@ from PySide6.QtCore import QAbstractListModel, QModelIndex, Qt
 from PySide6.QtWidgets import (QAbstractButton, QAbstractItemView, QComboBox, QDockWidget,
                                QGroupBox, QLabel, QLineEdit, QMenu, QTabWidget, QWidget)
 
+from shaperapp.widgets.lazy import LazyPage
+
 from gui_helpers import main_window
 from locations import ROOT
 
@@ -66,9 +68,13 @@ def shown_texts(window: QWidget) -> list[tuple[str, str]]:
 
 
 def visit_every_tab(qtbot, window) -> None:
+    """Each tab shown until its view is built: a lazy page builds on a zero timer after its
+    show, which a loaded machine's 10 ms wait could end before, leaving its texts out."""
     for tabs in window.findChildren(QTabWidget):
         for i in range(tabs.count()):
             tabs.setCurrentIndex(i)
+            page = QTabWidget.widget(tabs, i)           # the LazyPage itself: never builds it
+            qtbot.waitUntil(lambda: not isinstance(page, LazyPage) or page.is_built(), timeout=10_000)
             qtbot.wait(10)
 
 

@@ -271,7 +271,7 @@ def test_toolbar_actions_work(window, qtbot):
     assert model.spec.time_ratio == pytest.approx(1.6)
     window.act_play.trigger()
     assert window.animation.is_playing()
-    qtbot.waitUntil(lambda: model.angle_index > 0, timeout=3000)
+    qtbot.waitUntil(lambda: model.angle_index > 0, timeout=10_000)
     window.act_play.trigger()
     assert not window.animation.is_playing()
     stack = window.plots.stack()

@@ -27,7 +27,7 @@ def window(qtbot, tmp_path, monkeypatch):
 def focus_field(win, qtbot, name="time_ratio"):
     edit = win.form.field(name)
     edit.setFocus()
-    qtbot.waitUntil(edit.hasFocus)
+    qtbot.waitUntil(edit.hasFocus, timeout=10_000)
     return edit
 
 
@@ -112,7 +112,7 @@ def test_space_plays_unless_typing(window, qtbot):
     qtbot.keyClick(edit, Qt.Key.Key_Space)
     assert not window.animation.play_action.isChecked() and " " in edit.text()
     window.tabs.setFocus()
-    qtbot.waitUntil(window.tabs.hasFocus)
+    qtbot.waitUntil(window.tabs.hasFocus, timeout=10_000)
     qtbot.keyClick(window.tabs, Qt.Key.Key_Space)
     assert window.animation.play_action.isChecked()
     qtbot.keyClick(window.tabs, Qt.Key.Key_Space)
@@ -168,11 +168,16 @@ def test_every_file_dialog_is_chinese_with_local_dates(window, tmp_path, qtbot):
         dialog = QApplication.activeModalWidget()
         assert isinstance(dialog, QFileDialog)
         dialog.setViewMode(QFileDialog.ViewMode.Detail)
-        qtbot.wait(300)                                # the file model lists the folder
-        seen["labels"] = [re.sub(r"&\w", "", label.text()) for label in dialog.findChildren(QLabel)]
-        view = next(v for v in dialog.findChildren(QTreeView) if v.isVisible())
         model = dialog.findChild(QFileSystemModel)
         name = str(tmp_path / "a-design-with-a-long-name.shaper.json")
+        # The file model lists the folder in a thread of its own: wait until the file's size
+        # and date have come (a fixed 300 ms could end before, on a loaded machine), then
+        # for the view to lay them out.
+        qtbot.waitUntil(lambda: model.lastModified(model.index(name)).isValid()
+                        and bool(model.index(name).siblingAtColumn(1).data()), timeout=10_000)
+        qtbot.wait(300)
+        seen["labels"] = [re.sub(r"&\w", "", label.text()) for label in dialog.findChildren(QLabel)]
+        view = next(v for v in dialog.findChildren(QTreeView) if v.isVisible())
         source = model.index(name)
         index = view.model().mapFromSource(source) if view.model() is not model else source
         option = QStyleOptionViewItem()
