@@ -278,7 +278,7 @@ class ReportViews:
         two limit positions (dashed) and the angle θ between them marked at O4. ``step()``
         once the view is up and after the first position (each places the scheme's labels,
         the report's longest pieces of work: the window hears Cancel between them)."""
-        scheme = self._plot_view("scheme", SchemeWidget, *SCHEME_PX, lambda view: None)
+        scheme = self._plot_view("scheme", SchemeWidget, *SCHEME_PX, QWidget.show)
         step()
         design = self.model.design
         half = design.theta / 2.0

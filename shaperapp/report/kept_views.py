@@ -37,6 +37,9 @@ class KeptViews:
             delete_widgets(self.views.values())
             self.views.clear()
             self._shape = shape
+        scheme = self.views.get("scheme")
+        if scheme is not None:      # hidden, it only marks its labels (placed once shown again)
+            scheme.hide()
         self.model.load_state(spec, rpms, step, masses=masses)
 
 
