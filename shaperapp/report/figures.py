@@ -226,7 +226,7 @@ def _mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, 
 
 class ReportViews:
     """Offscreen scheme and plot widgets on a private model of the design (the process's
-    kept views and their model after :func:`keep_plot_views`)."""
+    kept views and their model after :func:`kept_views.keep_plot_views`)."""
 
     def __init__(self, spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
                  metrics: CycleMetrics) -> None:

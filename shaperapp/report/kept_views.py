@@ -1,9 +1,10 @@
 """The report's views kept from one report to the next in a ``shaper class`` worker.
 
-A worker writes a report per student; building the scheme and the three plot views
-(pyqtgraph's ``PlotItem``s, the scheme's layers) anew for each was some 13 % of a
-student's time (docs/performance.md). After :func:`keep_plot_views` each report loads its
-design into one kept model, and the views on it redraw themselves for it.
+A worker writes a report per student; building the three plot views (pyqtgraph's
+``PlotItem``s) anew for each was some 9 % of a student's time, and the scheme's widget
+and its first show a fifth of §3's 9 % (docs/performance.md). After
+:func:`keep_plot_views` each report loads its design into one kept model, and the views
+on it redraw themselves for it.
 """
 from __future__ import annotations
 
