@@ -19,7 +19,7 @@ import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Sequence, Union
 
 import numpy as np
@@ -135,10 +135,8 @@ class Text:
     def _boxes(self) -> tuple[Box, Box]:
         """Both boxes, computed once: a text is frozen, and the label and dimension
         searches ask a placed text for its box thousands of times per sheet."""
-        w, h = self.width, self.height
-        dx, dy = self._start()
-        below = max([0.25 * h] + [drop + 0.25 * size for _, size, drop in self._parts()])
-        above = max([1.1 * h] + [1.1 * size - drop for _, size, drop in self._parts()])
+        w, dx, dy, below, above = _extent(self.text, self.height, self.align, self.subscripts,
+                                          self.superscripts)
         if not self.rotation and not any(map(math.isnan, (dx, dy, w, below, above, *self.position))):
             # upright: the corners' extent in plain floats, the same sums numpy makes (a
             # label search asks for the boxes of thousands of candidates; numpy's overhead
@@ -152,6 +150,19 @@ class Text:
         at = np.asarray(self.position)
         upright = _bounds(corners + at)
         return (_bounds(_rotate(corners, self.rotation) + at) if self.rotation else upright), upright
+
+
+@lru_cache(maxsize=4096)
+def _extent(text: str, height: float, align: str, subscripts: tuple, superscripts: tuple
+            ) -> tuple[float, float, float, float, float]:
+    """A text's width, where its baseline starts from its position (dx, dy) and how far it
+    reaches below and above the baseline: the same for every position and rotation, so a
+    label search's candidates (one text at many spots) share them, computed once."""
+    at = Text(text, (0.0, 0.0), height, align, subscripts=subscripts, superscripts=superscripts)
+    dx, dy = at._start()
+    below = max([0.25 * height] + [drop + 0.25 * size for _, size, drop in at._parts()])
+    above = max([1.1 * height] + [1.1 * size - drop for _, size, drop in at._parts()])
+    return at.width, dx, dy, below, above
 
 
 Item = Union[Polyline, Circle, Text]

@@ -92,7 +92,7 @@ def _language(lang: str) -> str:
 def write_student(job: Job) -> None:
     """The folder's files, each atomically, the stamp last (OSError names the file)."""
     from core.course_design.plan import plan_course, read_document
-    from shaperapp.report.figures import keep_plot_views
+    from shaperapp.report.kept_views import keep_plot_views
 
     from .write import Covering, write_course
     language = _language(job.lang)
@@ -154,7 +154,7 @@ def run_jobs(jobs: Sequence[Job], workers: int) -> Iterator[Result]:
                 yield run_student(job)
         finally:
             if _LANGUAGE:           # this process goes on (and ends) without them
-                from shaperapp.report.figures import release_plot_views
+                from shaperapp.report.kept_views import release_plot_views
                 release_plot_views()
         return
     import multiprocessing

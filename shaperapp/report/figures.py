@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import Callable, Sequence
 
 import numpy as np
-from PySide6.QtCore import QByteArray, QCoreApplication, QEvent, QPointF, QRectF, QSizeF, Qt
+from PySide6.QtCore import QByteArray, QCoreApplication, QPointF, QRectF, QSizeF, Qt
 from PySide6.QtGui import QColor, QFont, QFontInfo, QFontMetricsF, QImage, QPainter, QPen, QTextDocument
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
@@ -33,6 +33,7 @@ from shaperapp.compare.plots import ComparePlots
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.forces_panel import ForcesPanel
 from shaperapp.plots.kinematics import PlotsWidget
+from shaperapp.report.kept_views import delete_widgets, kept
 from shaperapp.scheme.view import SchemeWidget
 from shaperapp.vectors.paint import auto_scale, paint_polygon, titles
 
@@ -223,68 +224,22 @@ def _mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, 
     painter.restore()
 
 
-class _KeptPlots:
-    """The plot views of one process's reports, on a model of their own, kept from one
-    report to the next (:func:`keep_plot_views`)."""
-
-    def __init__(self) -> None:
-        self.model = DesignModel()
-        self.views: dict[str, QWidget] = {}
-        self.cam_model: CamModel | None = None
-        self._shape: tuple = ()
-
-    def load(self, spec: Spec, rpms: Sequence[float], step: float, masses: MassProperties | None) -> None:
-        """The model loaded with the design; the views dropped where their plot items
-        would change in number (speeds, loads, the variant's series): the items a kept
-        view adds come after the others in its scene, so its SVG would list them out of
-        the order a new view draws them in."""
-        shape = (len(rpms), masses is None, spec.variant)
-        if shape != self._shape:
-            _delete(self.views.values())
-            self.views.clear()
-            self._shape = shape
-        self.model.load_state(spec, rpms, step, masses=masses)
-
-
-_KEPT: list[_KeptPlots] = []
-
-
-def keep_plot_views() -> None:
-    """From now on this process's reports draw their s/v/a, force and cam plots with the
-    same widgets, each report loading its design into their model: a ``shaper class``
-    worker writes a report per student, and building the three views' pyqtgraph plots
-    anew was some 9 % of a student's time (docs/performance.md). Shown once, a view is
-    fitted as on its first show (whole cycle in x, every curve in y), so it exports what a
-    new one would (tests/test_shaperapp/report/test_kept_plot_views.py). The scheme is
-    still made for each report, on a model of its own: its label search keeps state."""
-    if not _KEPT:
-        _KEPT.append(_KeptPlots())
-
-
-def release_plot_views() -> None:
-    """Delete the kept views (:func:`keep_plot_views`) and keep none from now on: Qt
-    objects left for interpreter shutdown can outlive the application and crash it. (A
-    forked worker ends without the interpreter's shutdown.)"""
-    for kept in _KEPT:
-        _delete(kept.views.values())
-    _KEPT.clear()
-
-
 class ReportViews:
-    """Offscreen scheme and plot widgets on a private model of the design (the plots on
-    the process's kept model after :func:`keep_plot_views`)."""
+    """Offscreen scheme and plot widgets on a private model of the design (the process's
+    kept views and their model after :func:`kept_views.keep_plot_views`)."""
 
     def __init__(self, spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
                  metrics: CycleMetrics) -> None:
         work = metrics.work_angle_deg
         self._end_index = math.ceil(work / FINE_STEP_DEG)
         step = work / self._end_index                      # both limits on the grid
-        self.model = DesignModel()
-        self.model.load_state(spec, rpms, step, masses=masses)
-        self._kept = _KEPT[0] if _KEPT else None
-        if self._kept is not None:
+        self._kept = kept()
+        if self._kept is None:
+            self.model = DesignModel()
+            self.model.load_state(spec, rpms, step, masses=masses)
+        else:                               # the design loaded once, into the kept views' model
             self._kept.load(spec, rpms, step, masses)
-        self._plots_model = self.model if self._kept is None else self._kept.model
+            self.model = self._kept.model
         self.metrics = metrics
         self._widgets: list[QWidget] = []
 
@@ -298,13 +253,14 @@ class ReportViews:
 
     def _plot_view(self, kind: str, make: Callable[[DesignModel], QWidget], width: int, height: int,
                    fit: Callable[[QWidget], None]) -> QWidget:
-        """A plot view of the design: new, or the process's kept one (made and shown the
-        first time; after that fitted by ``fit``, as a new one fits itself when shown)."""
+        """A view of the design: new, or the process's kept one (made and shown the first
+        time; after that fitted by ``fit``, as a new one fits itself when shown; the scheme
+        is fitted for each of its shots)."""
         if self._kept is None:
             return self._show(make(self.model), width, height)
         view = self._kept.views.get(kind)
         if view is None:
-            view = self._kept.views[kind] = self._show(make(self._plots_model), width, height, kept=True)
+            view = self._kept.views[kind] = self._show(make(self.model), width, height, kept=True)
         else:
             fit(view)
         return view
@@ -322,7 +278,7 @@ class ReportViews:
         two limit positions (dashed) and the angle θ between them marked at O4. ``step()``
         once the view is up and after the first position (each places the scheme's labels,
         the report's longest pieces of work: the window hears Cancel between them)."""
-        scheme = self._show(SchemeWidget(self.model), *SCHEME_PX)
+        scheme = self._plot_view("scheme", SchemeWidget, *SCHEME_PX, QWidget.show)
         step()
         design = self.model.design
         half = design.theta / 2.0
@@ -358,7 +314,7 @@ class ReportViews:
         if self._kept is None:
             cam_model = CamModel(self.model)
         else:               # one CamModel on the kept model: each one made listens to it
-            cam_model = self._kept.cam_model = self._kept.cam_model or CamModel(self._plots_model)
+            cam_model = self._kept.cam_model = self._kept.cam_model or CamModel(self.model)
         cam_model.set_fields(**typed_from(inputs, phase).dict)
         plots = self._plot_view("cam", lambda _model: CamPlots(cam_model), 680, 450, lambda view: None)
         plots.fit_axes()                # one axis width: the δ axes line up, no tick text on a curve
@@ -374,18 +330,8 @@ class ReportViews:
         return svg_paint([plots.svg(QCoreApplication.translate("Report", "Design comparison"))])
 
     def close(self) -> None:
-        _delete(self._widgets)
+        delete_widgets(self._widgets)
         self._widgets.clear()
-
-
-def _delete(widgets) -> None:
-    """Close the widgets and delete them now: a command-line run has no event loop to do
-    it later, and Qt objects left for interpreter shutdown can outlive the application
-    and crash it."""
-    for widget in widgets:
-        widget.close()
-        widget.deleteLater()
-    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 def polygon_paint(design: Design, crank_deg: float, rpm: float, masses: MassProperties | None,

@@ -1,12 +1,15 @@
-"""A ``shaper class`` worker keeps its reports' plot views (``figures.keep_plot_views``):
-each report loads its design into the kept widgets' model instead of building the
-pyqtgraph plots anew. The SVG each figure replays must be the one a new widget exports,
-for designs that differ in their dimensions, their variant and their number of speeds."""
+"""A ``shaper class`` worker keeps its reports' views (``kept_views.keep_plot_views``):
+each report loads its design into the kept widgets' model instead of building the scheme
+and the pyqtgraph plots anew. The SVG each figure replays must be the one a new widget
+exports (the scheme's two shots with where O4 and the lever's tips lie in them), for
+designs that differ in their dimensions, their variant and their number of speeds, each
+after others of its kind (a kept scheme has placed another design's labels before)."""
 from __future__ import annotations
 
 import pytest
 
 import shaperapp.report.figures as figures
+import shaperapp.report.kept_views as kept_views
 from core.cam import CamInputs
 from core.forces.masses import MassProperties
 from core.linkage.metrics import analyze
@@ -18,20 +21,26 @@ LOADS = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70
                        cut_height_mm=80)
 # a class's students (the same speeds, other dimensions), then more speeds, a rod, fewer speeds
 CASES = [(Spec(), [40.0, 60.0]), (Spec(time_ratio=1.6, crank=90.0), [30.0, 45.0]),
+         (Spec(crank=110.0, time_ratio=1.46, stroke=320.0), [40.0, 60.0]),
+         (Spec(crank=103.0, time_ratio=1.3, stroke=306.0), [40.0, 60.0]),
          (Spec(crank=95.0), [30.0, 45.0, 60.0]), (Spec(variant="rod", rod_input="ratio", rod_ratio=0.3), [60.0]),
+         (Spec(variant="rod", rod_input="ratio", rod_ratio=0.25, crank=100.0, time_ratio=1.5), [60.0]),
          (Spec(), [40.0, 60.0])]
 
 
 def _figures(monkeypatch, cases=CASES) -> list[list[bytes]]:
-    """Each case's s/v/a, force and cam SVGs, as the report replays them (``svg_paint``)."""
-    made: list[bytes] = []
-    paint = figures.svg_paint
+    """Each case's scheme shots and s/v/a, force and cam SVGs, in the report's order, as
+    the report replays them (``scheme_paint``, ``svg_paint``)."""
+    made: list = []
+    paint, schemes = figures.svg_paint, figures.scheme_paint
     monkeypatch.setattr(figures, "svg_paint", lambda svgs, *a: made.extend(svgs) or paint(svgs, *a))
+    monkeypatch.setattr(figures, "scheme_paint", lambda shots, *a: made.extend(shots) or schemes(shots, *a))
     out = []
     for spec, rpms in cases:
         made.clear()
         views = figures.ReportViews(spec, rpms, LOADS, analyze(spec.design(), rpms))
         try:
+            views.limit_schemes()
             views.curves()
             views.forces()
             views.cam_curves(CamInputs(), None)
@@ -43,22 +52,22 @@ def _figures(monkeypatch, cases=CASES) -> list[list[bytes]]:
 
 def test_kept_views_export_what_new_ones_do(qapp, monkeypatch):
     new = _figures(monkeypatch)
-    monkeypatch.setattr(figures, "_KEPT", [])
-    figures.keep_plot_views()
+    monkeypatch.setattr(kept_views, "_KEPT", [])
+    kept_views.keep_plot_views()
     try:
         kept = _figures(monkeypatch)
-        views = figures._KEPT[0].views
-        assert sorted(views) == ["cam", "curves", "forces"]
+        views = kept_views._KEPT[0].views
+        assert sorted(views) == ["cam", "curves", "forces", "scheme"]
         first = dict(views)
         _figures(monkeypatch, CASES[-1:])
         assert all(views[k] is first[k] for k in first)     # the same speeds: the same views
-        _figures(monkeypatch, CASES[2:3])
+        _figures(monkeypatch, CASES[4:5])
         assert not any(views[k] is first[k] for k in first)     # a speed more: new views
     finally:
-        figures.release_plot_views()
-    assert figures._KEPT == []
-    assert [len(f) for f in new] == [3] * len(CASES)
-    assert len({f[0] for f in new}) == len(CASES) - 1      # the designs differ (the last is the first again)
+        kept_views.release_plot_views()
+    assert kept_views._KEPT == []
+    assert [len(f) for f in new] == [5] * len(CASES)
+    assert len({f[0].svg for f in new}) == len(CASES) - 1      # the designs differ (the last is the first again)
     for case, (a, b) in enumerate(zip(new, kept)):
-        for kind, x, y in zip(("curves", "forces", "cam"), a, b):
+        for kind, x, y in zip(("scheme at the start", "scheme at the end", "curves", "forces", "cam"), a, b):
             assert x == y, (case, kind)
