@@ -24,6 +24,36 @@ from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, sharp_angles
 
+# Crank-to-frame ratio L1/L2 above which a rod variant's torque is crowded too, however far
+# the rod leans: near the lever's vertical crossing the pin passes within L2 − L1 of O4, the
+# lever whips round (ψ′ up to L1/(L2 − L1)·ω) and the rod's inertia turns the torque through
+# extrema a degree or two apart, inside one of the coarse sweep's 4° cells (a random search,
+# 3208 rod designs at L1/L2 0.3 … 0.995: one such miss, 7 % of the peak, at 0.841; the
+# hypothesis corners found 1.3e-3 at 0.854). Below it the 90 cells resolve the torque.
+LEVER_WHIP_RATIO = 0.7
+
+# Offsets (rad) of the crowding samples about each sharp angle for a whipping lever: halving
+# from 0.1 rad (a bit over one 4° cell) down to 1.2e-5 rad, so that extrema 0.5 … 3° from a
+# sharp angle each get a cell of their own (CROWD_OFFSETS, fifths from 0.05 rad, leave a gap
+# from 0.57° to 2.9°; they stay where only the rod comes near upright, at their cost).
+WHIP_OFFSETS = np.concatenate([-(0.1 * 2.0 ** -np.arange(0, 14)), [0.0],
+                               (0.1 * 2.0 ** -np.arange(0, 14))[::-1]])
+
+
+def lever_whips(d: Designs) -> np.ndarray:
+    """Per design: a rod variant whose lever whips round (L1/L2 above LEVER_WHIP_RATIO)."""
+    if d.rod is None:
+        return np.zeros(np.shape(d.crank), dtype=bool)
+    return np.asarray(d.crank / d.frame) > LEVER_WHIP_RATIO
+
+
+def crowd_offsets(d: Designs) -> np.ndarray | None:
+    """The offsets (rad) of the torque's samples crowding toward the sharp angles for a
+    chunk of designs, or None where none of them needs any (one size for the whole chunk)."""
+    if lever_whips(d).any():
+        return WHIP_OFFSETS
+    return CROWD_OFFSETS if needs_crowding(d).any() else None
+
 
 def summarize(design: Design, rpms, masses: MassProperties = MassProperties(),
               intervals: int = ENERGY_INTERVALS, peaks: bool = True) -> DynamicsSummary:
@@ -279,13 +309,14 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
     x = [np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1)[:-1], (d.shape[0], n))]
     jets = [TorqueJet(*(np.broadcast_to(v, (d.shape[0], n + 1))[:, :-1] for v in grid))]
     segments = [(0, n, 2.0 * math.pi)]
-    if needs_crowding(d).any():                       # the whole chunk, if any design
+    offsets = crowd_offsets(d)                        # the whole chunk, if any design
+    if offsets is not None:
         for j in range(4):
-            x.append(sharp_angles(col)[:, 0, j:j + 1] + CROWD_OFFSETS)
+            x.append(sharp_angles(col)[:, 0, j:j + 1] + offsets)
             jets.append(TorqueJet(*(np.broadcast_to(v, x[-1].shape)
                                     for v in torque_jet(col, x[-1], masses))))
             start = segments[-1][1]
-            segments.append((start, start + CROWD_OFFSETS.size, 0.0))
+            segments.append((start, start + offsets.size, 0.0))
     if len(x) == 1:                   # contiguous, for the flat gathers (torque_peaks.gather)
         return np.ascontiguousarray(x[0]), TorqueJet(*map(np.ascontiguousarray, jets[0])), segments
     return (np.concatenate(x, axis=-1),
