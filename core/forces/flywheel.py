@@ -18,7 +18,7 @@ from core.linkage.designs import Designs
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, affine_at, gather, on_arc,
+from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, cell_ends, cell_index, on_arc,
                            piece_peaks, switch_window, turning_cells)
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
@@ -244,13 +244,6 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
     start = tuple(v[:, 0] for v in start)
 
-    def energy(phi, design, speed):
-        """E at the samples ``phi`` (design, speed: indices) from the jets there."""
-        one = d.with_lengths([v[design] for v in lengths])
-        return _energy(one, gather(x, design, phi),
-                       _Stored(*(gather(v, design, phi) for v in (jet.kinetic, jet.potential, jet.ram_x))),
-                       w2[speed], mean[design], masses, tuple(v[design] for v in start))
-
     def fun(phi, w2, mean, sign, cutting, k0, v0, x0, *lengths):
         one = d.with_lengths(lengths)
         stored = torque_jet(one, phi, masses)
@@ -266,11 +259,17 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
         for kind, cells in turning_cells(parts, w2, window.cells[k]):
             sign = np.full(cells.design.size, 1.0 - 2.0 * kind)    # E's maximum, or its minimum
             design, speed = cells.design, cells.speed
+            index = cell_index(x.shape[-1], cells)                # each end's, taken once
+            one = d.with_lengths([v[design] for v in lengths])
+            w, m, at_start = w2[speed], mean[design], tuple(v[design] for v in start)
+            energies = [_energy(one, x.ravel().take(i),
+                                _Stored(*(v.ravel().take(i) for v in (jet.kinetic, jet.potential,
+                                                                     jet.ram_x))),
+                                w, m, masses, at_start) for i in index]
             found.append([design, speed, cells.lo, cells.hi, sign, np.full(sign.size, cutting),
                           piece[0][design], piece[1][design]]
-                         + [sign * energy(c, design, speed) for c in (cells.left, cells.right)]
-                         + [sign * affine_at(p, w2, design, c, speed)
-                            for p in (parts, slopes) for c in (cells.left, cells.right)])
+                         + [sign * e for e in energies]
+                         + [sign * (a + w * b) for p in (parts, slopes) for a, b in cell_ends(p, index)])
     if not found:
         return top.reshape(count, speeds), bottom.reshape(count, speeds)
     design, speed, lo, hi, sign, cutting, first, last, e_lo, e_hi, g_lo, g_hi, c_lo, c_hi = (

@@ -44,14 +44,6 @@ def on_arc(t: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.mod(t - a, period) <= np.mod(b - a, period)
 
 
-def affine_at(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray, design: np.ndarray,
-              column: np.ndarray, speed: np.ndarray) -> np.ndarray:
-    """a + ω²·b at the given (design, sample column, speed) triples, for ``parts`` (a, b),
-    arrays (designs, samples) the same at all speeds, and ω² ``w2`` (speeds,)."""
-    index = design * parts[0].shape[-1] + column
-    return parts[0].ravel().take(index) + w2.take(speed) * parts[1].ravel().take(index)
-
-
 def gather(array: np.ndarray, design: np.ndarray, column: np.ndarray) -> np.ndarray:
     """``array[design, column]`` for a (designs, samples) array, by its flat index: a take
     from a C-contiguous array costs a third of the 2-D fancy index (numpy 2.4; the loaded
