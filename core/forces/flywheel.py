@@ -19,7 +19,7 @@ from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_in
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
 from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, cell_ends, cell_index, on_arc,
-                           piece_peaks, switch_window, turning_cells)
+                           pair_extremes, piece_peaks, switch_window, turning_cells)
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, sharp_angles
@@ -240,7 +240,7 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     kinks = np.stack([on, off], axis=-1)
     at_ends = _energy(col, kinks, window.jet, w2[None, :, None],
                       mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
-    top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
+    top, bottom = (v.reshape(-1) for v in pair_extremes(at_ends))
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
     start = tuple(v[:, 0] for v in start)
 

@@ -44,6 +44,14 @@ def on_arc(t: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.mod(t - a, period) <= np.mod(b - a, period)
 
 
+def pair_extremes(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(larger, smaller) of the two entries along the last axis of ``values`` (a value at each
+    switch angle): the same as ``max``/``min`` over that axis, NaN included, some 30 times
+    faster than numpy's reduction over an axis of length 2 (numpy 2.4)."""
+    first, second = values[..., 0], values[..., 1]
+    return np.maximum(first, second), np.minimum(first, second)
+
+
 def gather(array: np.ndarray, design: np.ndarray, column: np.ndarray) -> np.ndarray:
     """``array[design, column]`` for a (designs, samples) array, by its flat index: a take
     from a C-contiguous array costs a third of the 2-D fancy index (numpy 2.4; the loaded
@@ -263,8 +271,8 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     w2 = omega ** 2
     rest = ends.static[:, None, :] + w2[:, None] * ends.inertial[:, None, :]   # (designs, speeds, 2)
     cut = rest + ends.cut[:, None, :]
-    best = np.stack([np.maximum(cut.max(axis=-1), rest.max(axis=-1)),
-                     -np.minimum(cut.min(axis=-1), rest.min(axis=-1))])         # (2, designs, speeds)
+    (cut_top, cut_bottom), (rest_top, rest_bottom) = pair_extremes(cut), pair_extremes(rest)
+    best = np.stack([np.maximum(cut_top, rest_top), -np.minimum(cut_bottom, rest_bottom)])   # (2, designs, speeds)
     flat = best.reshape(-1)
     pieces = ((on, off), (off, on))
     found = []
@@ -282,7 +290,8 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
             # slopes and curvatures are gathered only for the cells polished.
             index = cell_index(x.shape[-1], cells)
             ends = cell_ends(values, index)
-            entry = [k, kind, design, speed, cells.lo, cells.hi]
+            entry = [np.full(design.size, k), np.full(design.size, kind), design, speed,
+                     cells.lo, cells.hi]
             for i, (a, b) in zip(index, ends):
                 value = sign * (a + w2[speed] * b)
                 inside = inside_piece.take(i)
@@ -294,8 +303,7 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     if not found:
         return best[0], -best[1]
     (k, kind, design, speed, lo, hi, v_lo, v_hi, i_lo, i_hi, rank, count, below,
-     above, top_below, top_above) = (np.concatenate([np.broadcast_to(c[i], c[2].shape)
-                                                     for c in found]) for i in range(16))
+     above, top_below, top_above) = (np.concatenate(v) for v in zip(*found))
     owner = (kind * on.size + design) * w2.size + speed
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
     polished = np.full(owner.size, np.nan)
