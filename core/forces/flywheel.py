@@ -298,26 +298,30 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
     :class:`~core.forces.jet.TorqueJet` there, segments), each array (designs, samples).
 
     The grid's periodic samples (``grid``, the jet on a closed uniform grid: one wrapping
-    segment without its closing sample) and, where any design of the chunk needs them,
-    samples crowding toward the rod variant's sharp angles (one segment each), where its
+    segment; its closing sample lies in no cell) and, where any design of the chunk needs
+    them, samples crowding toward the rod variant's sharp angles (one segment each), where its
     torque can change faster than the grid resolves. Every array is the same at all
-    speeds: a speed's torque and slope are sums of them.
+    speeds: a speed's torque and slope are sums of them, taken by flat index
+    (:func:`core.forces.torque_peaks.gather`), so each is C-contiguous.
     """
     col = d.column()
     n = grid.static.shape[-1] - 1
-    x = [np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1)[:-1], (d.shape[0], n))]
-    jets = [TorqueJet(*(np.broadcast_to(v, (d.shape[0], n + 1))[:, :-1] for v in grid))]
-    segments = [(0, n, 2.0 * math.pi)]
+    shape = (d.shape[0], n + 1)
     offsets = crowd_offsets(d)                        # the whole chunk, if any design
-    if offsets is not None:
-        for j in range(4):
-            x.append(sharp_angles(col)[:, 0, j:j + 1] + offsets)
-            jets.append(TorqueJet(*(np.broadcast_to(v, x[-1].shape)
-                                    for v in torque_jet(col, x[-1], masses))))
-            start = segments[-1][1]
-            segments.append((start, start + offsets.size, 0.0))
-    if len(x) == 1:                   # contiguous, for the flat gathers (torque_peaks.gather)
-        return np.ascontiguousarray(x[0]), TorqueJet(*map(np.ascontiguousarray, jets[0])), segments
+    if offsets is None:               # the closed grid as it is: no field copied
+        x = np.ascontiguousarray(np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1), shape))
+        return (x, TorqueJet(*(np.ascontiguousarray(np.broadcast_to(v, shape)) for v in grid)),
+                [(0, n, 2.0 * math.pi)])
+    x = [np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1)[:-1], (d.shape[0], n))]
+    jets = [TorqueJet(*(np.broadcast_to(v, shape)[:, :-1] for v in grid))]
+    segments = [(0, n, 2.0 * math.pi)]
+    sharp = sharp_angles(col)[:, 0, :]
+    for j in range(4):
+        x.append(sharp[:, j:j + 1] + offsets)
+        jets.append(TorqueJet(*(np.broadcast_to(v, x[-1].shape)
+                                for v in torque_jet(col, x[-1], masses))))
+        start = segments[-1][1]
+        segments.append((start, start + offsets.size, 0.0))
     return (np.concatenate(x, axis=-1),
             TorqueJet(*(np.concatenate(v, axis=-1) for v in zip(*jets))), segments)
 
