@@ -150,10 +150,11 @@ SPEEDS_16 = [10.0 * k for k in range(1, 17)]
 
 @pytest.mark.parametrize("rod", [False, True], ids=["block", "rod"])
 def test_loaded_row_at_most_10_unloaded_rows(benchmark, rod):
-    """Issue 42, item 12: a loaded sweep row costs at most 10 unloaded ones (2000 designs, one
-    speed, the best of 5 alternating runs of each; 215× before the sweep's own bracketing
-    grid, 22–28× on 360 intervals, 6–10× with Brent's polish, 3.5–8× with Newton's on the
-    closed-form slope). ``-s`` prints the times; the figures are in docs/performance.md."""
+    """Issue 42, item 12: a loaded sweep row costs at most 10 unloaded ones (one speed, each
+    at the command's block, 36 363 unloaded and 2000 loaded designs, the best of 5 alternating
+    runs of each; 215× before the sweep's own bracketing grid, 22–28× on 360 intervals, 6–10×
+    with Brent's polish, 3.5–8× with Newton's on the closed-form slope, 4.3–5.0 at the
+    command's blocks). ``-s`` prints the times; the figures are in docs/performance.md."""
     values = _command_rows(rod, [40.0], LOADS)
     plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD if rod else SPEC_BLOCK, values,
                                                          [40.0], LOADS, 5), rounds=1, iterations=1)
@@ -172,7 +173,8 @@ def test_loaded_row_at_16_speeds(benchmark, rod):
     per sample, and a cell's largest torque is convex in ω², so a chord between speeds skips
     the cells that cannot win (74× block and 95× rod on 360 intervals, 18–36× with Brent's
     polish, 7.7–12.9× with Newton's on every cell, 6.1–10.1× on 500 designs, which flattered
-    it: 15–16× at the command's own blocks, docs/performance.md)."""
+    it: 15–16× at the command's own blocks, 10.5–14.3 with its kept memory, 8.8–11.9 after
+    the gathers' and integer cuts, docs/performance.md)."""
     values = _command_rows(rod, SPEEDS_16, LOADS)
     plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD if rod else SPEC_BLOCK, values,
                                                          SPEEDS_16, LOADS, 2), rounds=1,
