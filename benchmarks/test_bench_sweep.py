@@ -173,7 +173,7 @@ def test_loaded_row_at_16_speeds(benchmark, rod):
     per sample, and a cell's largest torque is convex in ω², so a chord between speeds skips
     the cells that cannot win (74× block and 95× rod on 360 intervals, 18–36× with Brent's
     polish, 7.7–12.9× with Newton's on every cell, 6.1–10.1× on 500 designs, which flattered
-    it: 15–16× at the command's own blocks, 10.5–14.3 with its kept memory, 8.8–11.9 after
+    it: 15–16× at the command's own blocks, 9.9–14.3 with its kept memory, 8.8–11.9 after
     the gathers' and integer cuts, docs/performance.md)."""
     values = _command_rows(rod, SPEEDS_16, LOADS)
     plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD if rod else SPEC_BLOCK, values,
