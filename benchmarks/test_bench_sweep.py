@@ -111,19 +111,36 @@ def test_cli_sweep_100489_rod_designs_to_csv(benchmark, tmp_path):
     assert sum(1 for _ in (tmp_path / "s.csv").open()) == 1 + 317 * 317
 
 
+def _command_rows(rod: bool, rpms, masses) -> tuple[dict, dict]:
+    """The designs of one block of ``shaper sweep`` without loads and one with ``masses``, each
+    of the size the command evaluates at a time (:func:`core.cli.cmd_sweep.block_size`: 7142
+    unloaded designs at 16 speeds with two varied names, 36 363 at one, ``LOADED_BLOCK`` with
+    loads). The unloaded row's cost falls with the block (a fixed cost per call) and the loaded
+    one's hardly does, so a ratio taken at one common size (500 designs) flattered the loaded
+    path: 6-10× there was 15-16× at the command's own blocks (docs/performance.md). The
+    command keeps freed memory in the process (:func:`core.cli.allocator.keep_freed_memory`),
+    so this does too: without it each loaded chunk faults its pages in anew."""
+    from core.cli.allocator import keep_freed_memory
+    from core.cli.cmd_sweep import block_size
+    keep_freed_memory()
+    names = ["rod_ratio", "guide"] if rod else ["crank", "time_ratio"]
+    return tuple(_values(block_size(names, rpms, m), rod=rod) for m in (None, masses))
+
+
 def _row_times(spec, values, rpms, masses, rounds=3):
     """CPU seconds per design of the sweep without and with loads, the best of ``rounds``
-    alternating runs of each. CPU time of this process, not wall time: the machine is
+    alternating runs of each, on ``values`` (the unloaded block, the loaded block:
+    :func:`_command_rows`). CPU time of this process, not wall time: the machine is
     shared, and a ratio of CPU times hardly moves with the load around it."""
     import time
-    size = values[next(iter(values))].size
     best = [math.inf, math.inf]
     for _ in range(rounds):
         for i, loads in enumerate((None, masses)):
+            size = values[i][next(iter(values[i]))].size
             start = time.process_time()
-            evaluate(spec, values, rpms, loads)
-            best[i] = min(best[i], time.process_time() - start)
-    return best[0] / size, best[1] / size
+            evaluate(spec, values[i], rpms, loads)
+            best[i] = min(best[i], (time.process_time() - start) / size)
+    return best[0], best[1]
 
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
@@ -133,11 +150,12 @@ SPEEDS_16 = [10.0 * k for k in range(1, 17)]
 
 @pytest.mark.parametrize("rod", [False, True], ids=["block", "rod"])
 def test_loaded_row_at_most_10_unloaded_rows(benchmark, rod):
-    """Issue 42, item 12: a loaded sweep row costs at most 10 unloaded ones (2000 designs, one
-    speed, the best of 5 alternating runs of each; 215× before the sweep's own bracketing
-    grid, 22–28× on 360 intervals, 6–10× with Brent's polish, 3.5–8× with Newton's on the
-    closed-form slope). ``-s`` prints the times; the figures are in docs/performance.md."""
-    values = _values(2000, rod=rod)
+    """Issue 42, item 12: a loaded sweep row costs at most 10 unloaded ones (one speed, each
+    at the command's block, 36 363 unloaded and 2000 loaded designs, the best of 5 alternating
+    runs of each; 215× before the sweep's own bracketing grid, 22–28× on 360 intervals, 6–10×
+    with Brent's polish, 3.5–8× with Newton's on the closed-form slope, 4.3–5.0 at the
+    command's blocks). ``-s`` prints the times; the figures are in docs/performance.md."""
+    values = _command_rows(rod, [40.0], LOADS)
     plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD if rod else SPEC_BLOCK, values,
                                                          [40.0], LOADS, 5), rounds=1, iterations=1)
     print(f"\n1 speed: unloaded {plain * 1e6:.0f} µs/row, loaded {loaded * 1e6:.0f} µs/row, "
@@ -154,17 +172,19 @@ def test_loaded_row_at_16_speeds(benchmark, rod):
     affine in ω², so which cells hold an extremum at each speed comes from one binary search
     per sample, and a cell's largest torque is convex in ω², so a chord between speeds skips
     the cells that cannot win (74× block and 95× rod on 360 intervals, 18–36× with Brent's
-    polish, 7.7–12.9× with Newton's on every cell, 6.1–10.1× now: docs/performance.md)."""
-    values = _values(500, rod=rod)
+    polish, 7.7–12.9× with Newton's on every cell, 6.1–10.1× on 500 designs, which flattered
+    it: 15–16× at the command's own blocks, 9.9–14.3 with its kept memory, 8.8–11.9 after
+    the gathers' and integer cuts, docs/performance.md)."""
+    values = _command_rows(rod, SPEEDS_16, LOADS)
     plain, loaded = benchmark.pedantic(_row_times, args=(SPEC_ROD if rod else SPEC_BLOCK, values,
                                                          SPEEDS_16, LOADS, 2), rounds=1,
                                        iterations=1)
     print(f"\n16 speeds: unloaded {plain * 1e6:.0f} µs/row, loaded {loaded * 1e6:.0f} µs/row, "
           f"ratio {loaded / plain:.1f}")
-    # 15, in the suite's smoke run too (2 rounds, the machine shared with its other worker).
-    # The issue's 10 is met on most runs, not all (rod 6.1-10.1 in 15 measured runs at load
-    # 3-7, docs/performance.md): a miss when measured is an expected failure.
-    assert loaded / plain <= 15.0
+    # The issue's 10 is not met reliably at the command's blocks (docs/performance.md): a miss
+    # when measured is an expected failure, above 15 a regression; the suite's smoke run (2
+    # rounds, the machine shared with its other worker) keeps a margin to 20.
+    assert loaded / plain <= (15.0 if not benchmark.disabled else 20.0)
     if not benchmark.disabled and loaded / plain > 10.0:
         pytest.xfail(f"16 speeds: a loaded row measured {loaded / plain:.1f} unloaded rows, "
                      "over the 10 of issue 42 (not reliably met, docs/performance.md)")

@@ -18,8 +18,8 @@ from core.linkage.designs import Designs
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, affine_at, gather, on_arc,
-                           piece_peaks, switch_window, turning_cells)
+from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, cell_ends, cell_index, on_arc,
+                           pair_extremes, piece_peaks, switch_window, turning_cells)
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import CROWD_OFFSETS, needs_crowding, sharp_angles
@@ -240,16 +240,9 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     kinks = np.stack([on, off], axis=-1)
     at_ends = _energy(col, kinks, window.jet, w2[None, :, None],
                       mean[:, None, None], masses, start)         # the kinks, (designs, speeds, 2)
-    top, bottom = at_ends.max(axis=-1).reshape(-1), at_ends.min(axis=-1).reshape(-1)
+    top, bottom = (v.reshape(-1) for v in pair_extremes(at_ends))
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
     start = tuple(v[:, 0] for v in start)
-
-    def energy(phi, design, speed):
-        """E at the samples ``phi`` (design, speed: indices) from the jets there."""
-        one = d.with_lengths([v[design] for v in lengths])
-        return _energy(one, gather(x, design, phi),
-                       _Stored(*(gather(v, design, phi) for v in (jet.kinetic, jet.potential, jet.ram_x))),
-                       w2[speed], mean[design], masses, tuple(v[design] for v in start))
 
     def fun(phi, w2, mean, sign, cutting, k0, v0, x0, *lengths):
         one = d.with_lengths(lengths)
@@ -266,11 +259,17 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
         for kind, cells in turning_cells(parts, w2, window.cells[k]):
             sign = np.full(cells.design.size, 1.0 - 2.0 * kind)    # E's maximum, or its minimum
             design, speed = cells.design, cells.speed
+            index = cell_index(x.shape[-1], cells)                # each end's, taken once
+            one = d.with_lengths([v[design] for v in lengths])
+            w, m, at_start = w2[speed], mean[design], tuple(v[design] for v in start)
+            energies = [_energy(one, x.ravel().take(i),
+                                _Stored(*(v.ravel().take(i) for v in (jet.kinetic, jet.potential,
+                                                                     jet.ram_x))),
+                                w, m, masses, at_start) for i in index]
             found.append([design, speed, cells.lo, cells.hi, sign, np.full(sign.size, cutting),
                           piece[0][design], piece[1][design]]
-                         + [sign * energy(c, design, speed) for c in (cells.left, cells.right)]
-                         + [sign * affine_at(p, w2, design, c, speed)
-                            for p in (parts, slopes) for c in (cells.left, cells.right)])
+                         + [sign * e for e in energies]
+                         + [sign * (a + w * b) for p in (parts, slopes) for a, b in cell_ends(p, index)])
     if not found:
         return top.reshape(count, speeds), bottom.reshape(count, speeds)
     design, speed, lo, hi, sign, cutting, first, last, e_lo, e_hi, g_lo, g_hi, c_lo, c_hi = (
@@ -299,26 +298,30 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
     :class:`~core.forces.jet.TorqueJet` there, segments), each array (designs, samples).
 
     The grid's periodic samples (``grid``, the jet on a closed uniform grid: one wrapping
-    segment without its closing sample) and, where any design of the chunk needs them,
-    samples crowding toward the rod variant's sharp angles (one segment each), where its
+    segment; its closing sample lies in no cell) and, where any design of the chunk needs
+    them, samples crowding toward the rod variant's sharp angles (one segment each), where its
     torque can change faster than the grid resolves. Every array is the same at all
-    speeds: a speed's torque and slope are sums of them.
+    speeds: a speed's torque and slope are sums of them, taken by flat index
+    (:func:`core.forces.torque_peaks.gather`), so each is C-contiguous.
     """
     col = d.column()
     n = grid.static.shape[-1] - 1
-    x = [np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1)[:-1], (d.shape[0], n))]
-    jets = [TorqueJet(*(np.broadcast_to(v, (d.shape[0], n + 1))[:, :-1] for v in grid))]
-    segments = [(0, n, 2.0 * math.pi)]
+    shape = (d.shape[0], n + 1)
     offsets = crowd_offsets(d)                        # the whole chunk, if any design
-    if offsets is not None:
-        for j in range(4):
-            x.append(sharp_angles(col)[:, 0, j:j + 1] + offsets)
-            jets.append(TorqueJet(*(np.broadcast_to(v, x[-1].shape)
-                                    for v in torque_jet(col, x[-1], masses))))
-            start = segments[-1][1]
-            segments.append((start, start + offsets.size, 0.0))
-    if len(x) == 1:                   # contiguous, for the flat gathers (torque_peaks.gather)
-        return np.ascontiguousarray(x[0]), TorqueJet(*map(np.ascontiguousarray, jets[0])), segments
+    if offsets is None:               # the closed grid as it is: no field copied
+        x = np.ascontiguousarray(np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1), shape))
+        return (x, TorqueJet(*(np.ascontiguousarray(np.broadcast_to(v, shape)) for v in grid)),
+                [(0, n, 2.0 * math.pi)])
+    x = [np.broadcast_to(np.linspace(0.0, 2.0 * math.pi, n + 1)[:-1], (d.shape[0], n))]
+    jets = [TorqueJet(*(np.broadcast_to(v, shape)[:, :-1] for v in grid))]
+    segments = [(0, n, 2.0 * math.pi)]
+    sharp = sharp_angles(col)[:, 0, :]
+    for j in range(4):
+        x.append(sharp[:, j:j + 1] + offsets)
+        jets.append(TorqueJet(*(np.broadcast_to(v, x[-1].shape)
+                                for v in torque_jet(col, x[-1], masses))))
+        start = segments[-1][1]
+        segments.append((start, start + offsets.size, 0.0))
     return (np.concatenate(x, axis=-1),
             TorqueJet(*(np.concatenate(v, axis=-1) for v in zip(*jets))), segments)
 

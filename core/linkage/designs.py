@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Callable, Sequence
 
 import numpy as np
@@ -56,9 +57,10 @@ class Designs:
     def variant(self) -> str:
         return "block" if self.rod is None else "rod"
 
-    @property
+    @cached_property
     def theta(self) -> np.ndarray:
-        """Extreme-position angle θ, rad."""
+        """Extreme-position angle θ, rad. Kept once computed (as is the stroke): the loaded
+        sweep's polish reads both several times per step on a fresh set of designs."""
         return 2.0 * np.arcsin(self.crank / self.frame)
 
     @property
@@ -66,7 +68,7 @@ class Designs:
         theta = self.theta
         return (math.pi + theta) / (math.pi - theta)
 
-    @property
+    @cached_property
     def stroke(self) -> np.ndarray:
         """Nominal stroke 2·L3·sin(θ/2) = 2·L3·L1/L2, mm."""
         return 2.0 * self.lever * (self.crank / self.frame)

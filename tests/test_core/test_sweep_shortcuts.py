@@ -56,8 +56,8 @@ def test_a_cells_chord_bound_lies_above_its_largest_value_on_401_angles():
             sign = 1.0 - 2.0 * kind
             both = (cells.below >= 0) & (cells.above >= 0)
             cells = torque_peaks.Cells(*(v[both] for v in cells))
-            sides = [torque_peaks._cell_top(values, w2, sign, cells, s)
-                     for s in (cells.below, cells.above)]
+            ends = torque_peaks.cell_ends(values, torque_peaks.cell_index(values[0].shape[-1], cells))
+            sides = [torque_peaks.cell_top(ends, w2, sign, s) for s in (cells.below, cells.above)]
             polished = np.zeros(cells.design.size, dtype=bool)
             bound = torque_peaks.chord_bounds(w2, cells.speed, (cells.below, sides[0], sides[0]),
                                               (cells.above, sides[1], sides[1]), (polished, polished))
