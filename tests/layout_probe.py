@@ -249,10 +249,10 @@ def main(argv: list[str]) -> int:
         report["library"] = {"floating": window.library_dock.isFloating(),
                              "frame": rect(window.frameGeometry()), "dock": rect(window.library_dock.frameGeometry()),
                              "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
+    if args.explore:        # before the comparison, which changes the design
+        report["explore"] = explore_report(app, window)
     if args.compare:
         report["compare"] = compare_report(app, window)
-    if args.explore:
-        report["explore"] = explore_report(app, window)
     if args.polygons:
         report["polygons"] = polygons_report(app, window, [float(a) for a in args.polygons.split(",")])
     if args.resize:
