@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import time
 
 from PySide6.QtCore import QPoint, QRect, QRectF, QSettings, QSize, Qt
 from PySide6.QtGui import QImage, QPainter
@@ -174,7 +175,6 @@ def polygons_report(app: QApplication, window, angles: list[float]) -> list[dict
 def explore_report(app: QApplication, window) -> dict:
     """The Explore tab after its first map: the map's height against the tab's, the colour
     bar's title and every tick label's box against the map's view (scene px)."""
-    import time
     view = window.explore
     window.tabs.setCurrentWidget(view)
     deadline = time.monotonic() + 60
@@ -199,6 +199,8 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--speeds", action="append", default=[])
     parser.add_argument("--resize", help="WxH before closing (to save that geometry)")
     parser.add_argument("--library", action="store_true", help="then show the library pane and report it")
+    parser.add_argument("--before-quiet", action="store_true",
+                        help="keep the hidden views unbuilt, as in the window's first second")
     parser.add_argument("--compare", action="store_true", help="then compare two designs and report the plots")
     parser.add_argument("--stacks", action="store_true", help="report the plots of each case")
     parser.add_argument("--variant", help="the ram drive (block, rod)")
@@ -214,6 +216,13 @@ def main(argv: list[str]) -> int:
     window.set_language(args.lang)
     window.show()
     settle(app)
+    if args.before_quiet:
+        window._quiet_build.stop()
+    else:       # the window as the user sees it once it has been left alone for a second
+        window._quiet_build.timeout.emit()
+        deadline = time.monotonic() + 60
+        while not all(page.is_ready() for page in window._pages.values()) and time.monotonic() < deadline:
+            settle(app, 1)
     report = {"screen": rect(window.screen().availableGeometry()), "language": args.lang, "cases": []}
     if args.variant:
         window.model.set_spec(variant=args.variant)
@@ -240,10 +249,10 @@ def main(argv: list[str]) -> int:
         report["library"] = {"floating": window.library_dock.isFloating(),
                              "frame": rect(window.frameGeometry()), "dock": rect(window.library_dock.frameGeometry()),
                              "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
+    if args.explore:        # before the comparison, which changes the design
+        report["explore"] = explore_report(app, window)
     if args.compare:
         report["compare"] = compare_report(app, window)
-    if args.explore:
-        report["explore"] = explore_report(app, window)
     if args.polygons:
         report["polygons"] = polygons_report(app, window, [float(a) for a in args.polygons.split(",")])
     if args.resize:

@@ -28,7 +28,7 @@ from shaperapp.scheme.view import SchemeWidget
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets import i18n
 from shaperapp.widgets.guards import ShortcutGuard, guard_wheel
-from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
+from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_quiet
 from shaperapp.widgets.messages import describe
 
 from . import state as window_state
@@ -81,7 +81,8 @@ class MainWindow(QMainWindow):
         column.addWidget(self.animation)
         self.setCentralWidget(central)
         self.docks = Docks(self, {"inputs": self.inputs, "results": self.metrics, "mechanism": self.scheme,
-                                  "polygons": self._pages["polygons"], "library": self._pages["library"]})
+                                  "polygons": self._pages["polygons"], "library": self._pages["library"]},
+                           lambda: [page.view() for page in self._pages.values()])
         self.library_dock = self.docks["library"]
 
         self._build_actions()
@@ -153,9 +154,10 @@ class MainWindow(QMainWindow):
 
     def paintEvent(self, event) -> None:
         super().paintEvent(event)
-        if not self._idle_build_started:    # the first screen is up: build the rest meanwhile
+        if not self._idle_build_started:    # the first screen is up: build the rest once quiet
             self._idle_build_started = True
-            build_when_idle(list(self._pages.values()))
+            self._quiet_build = build_when_quiet(self, list(self._pages.values()),
+                                                 (self.model.resultsChanged,))
 
     flush_typing = staticmethod(flush_typing)
 

@@ -11,7 +11,8 @@ from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.files.io import masses_to_dict, save_design
 from core.linkage.spec import Spec
-from cli_runner import shaper
+# What the commands write, in this process; test_cli.py runs the real command.
+from cli_runner import shaper_run_in_process as shaper
 
 LOADS = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
                        cut_force_N=7000.0, cut_height_mm=80.0)

@@ -9,7 +9,8 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from cli_runner import shaper
+# What `shaper table` writes, in this process; test_cli_table.py runs the real command.
+from cli_runner import shaper_run_in_process as shaper
 from core.linkage.cut import SWITCH_TOLERANCE, cut_window, cutting
 from core.linkage.designs import Designs
 from core.forces.dynamics import solve_dynamics

@@ -9,7 +9,8 @@ import numpy as np
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from cli_runner import shaper
+# What the commands write, in this process; test_cli.py runs the real command.
+from cli_runner import shaper_run_in_process as shaper
 from core.cam.laws import Program
 from core.cam.timing import timing
 from core.linkage.cut import cut_window

@@ -10,7 +10,8 @@ import math
 import numpy as np
 import pytest
 
-from cli_runner import shaper
+# What `shaper optimize` writes, in this process; test_cli_sweep.py runs the real command.
+from cli_runner import shaper_run_in_process as shaper
 from core.linkage.geometry import synthesize
 from core.linkage.kinematics import solve
 from core.space.optimize import GAIN_TOLERANCE, improves, insensitive

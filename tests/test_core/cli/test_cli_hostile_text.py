@@ -6,7 +6,9 @@ import xml.dom.minidom
 
 import pytest
 
-from cli_runner import shaper, shaper_in_process
+# What the commands write or refuse, in this process (a drawing's or report's process
+# costs ~2.5 s of CPU to start); test_cli.py runs the real command.
+from cli_runner import shaper_in_process, shaper_run_in_process as shaper
 
 DESIGN = ("--crank", 100, "--K", 1.4, "--stroke", 300, "--rpm", 40)
 # every noncharacter, from Unicode's own definition (chapter 23.7): U+FDD0..U+FDEF and the last

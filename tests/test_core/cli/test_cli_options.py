@@ -8,7 +8,9 @@ import pytest
 from core.files.io import save_design
 from core.linkage.spec import Spec
 
-from cli_runner import shaper
+# The real console script where the process is the point (its bare run, --version, an ASCII
+# console); what a command writes or refuses, in this process (no start-up per run).
+from cli_runner import shaper, shaper_run_in_process as in_process
 
 SEED003 = ["--crank", "100", "--K", "1.4", "--stroke", "300"]
 
@@ -22,7 +24,7 @@ def test_bare_shaper_prints_usage_and_version_is_known():
 
 @pytest.mark.parametrize("command", ["synth", "curves", "analyze", "dynamics"])
 def test_every_subcommand_help_has_a_description_and_an_example(command):
-    out = shaper(command, "--help")
+    out = in_process(command, "--help")
     assert out.returncode == 0
     assert "example:" in out.stdout and f"shaper {command}" in out.stdout.split("example:")[1]
     assert "--design" in out.stdout
@@ -32,42 +34,42 @@ def test_design_file_stands_for_the_design_options(tmp_path):
     path = tmp_path / "d.shaper.json"
     spec = Spec(crank=110.0, time_ratio=1.5, stroke=320.0, variant="rod", rod_ratio=0.3)
     save_design(path, spec, [35.0], 2.0)
-    from_file = json.loads(shaper("analyze", "--design", path, "--json").stdout)
-    direct = json.loads(shaper("analyze", "--crank", "110", "--K", "1.5", "--stroke", "320",
-                               "--rod-ratio", "0.3", "--rpm", "35", "--json").stdout)
+    from_file = json.loads(in_process("analyze", "--design", path, "--json").stdout)
+    direct = json.loads(in_process("analyze", "--crank", "110", "--K", "1.5", "--stroke", "320",
+                                   "--rod-ratio", "0.3", "--rpm", "35", "--json").stdout)
     assert from_file == direct
     # The file's step is the curves' default step.
-    rows = shaper("curves", "--design", path).stdout.splitlines()
+    rows = in_process("curves", "--design", path).stdout.splitlines()
     assert len(rows) == 1 + 181
 
 
 def test_design_file_and_design_options_exclude_each_other(tmp_path):
     path = tmp_path / "d.shaper.json"
     save_design(path, Spec(), [40.0], 1.0)
-    out = shaper("analyze", "--design", path, "--crank", "100")
+    out = in_process("analyze", "--design", path, "--crank", "100")
     assert out.returncode == 2 and "--design" in out.stderr and len(out.stderr.splitlines()) == 1
 
 
 def test_bad_design_file_exits_2_with_one_line(tmp_path):
     path = tmp_path / "bad.json"
     path.write_text("{not json")
-    out = shaper("analyze", "--design", path)
+    out = in_process("analyze", "--design", path)
     assert out.returncode == 2 and out.stderr.startswith("shaper: error: --design:")
     assert len(out.stderr.splitlines()) == 1
 
 
 def test_negative_speed_gets_a_range_message():
-    out = shaper("curves", *SEED003, "--rpm", "-1e5")
+    out = in_process("curves", *SEED003, "--rpm", "-1e5")
     assert out.returncode == 2 and "--rpm" in out.stderr and "1000" in out.stderr
 
 
 def test_step_and_angles_exclude_each_other():
-    out = shaper("curves", *SEED003, "--step", "1", "--angles", "0,1")
+    out = in_process("curves", *SEED003, "--step", "1", "--angles", "0,1")
     assert out.returncode == 2 and "--angles" in out.stderr and "--step" in out.stderr
 
 
 def test_k_near_one_names_k_in_synth():
-    out = shaper("synth", "--crank", "100", "--K", "1.000000000001", "--stroke", "300")
+    out = in_process("synth", "--crank", "100", "--K", "1.000000000001", "--stroke", "300")
     assert out.returncode == 2 and "--K" in out.stderr and "--dims" not in out.stderr
 
 

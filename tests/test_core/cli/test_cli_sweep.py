@@ -12,7 +12,10 @@ from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize
 from core.linkage.metrics import analyze
 
-from cli_runner import shaper
+# What the commands write, run in this process (each process costs its start-up); the first
+# sweep and the optimizer's text run as the real command.
+from cli_runner import shaper as real_shaper
+from cli_runner import shaper_run_in_process as shaper
 
 BASE = ["--crank", "100", "--K", "1.46", "--stroke", "312"]
 LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000"]
@@ -23,7 +26,7 @@ def rows(text):
 
 
 def test_sweep_csv_columns_and_values():
-    out = shaper("sweep", *BASE, "--rod-ratio", "0.3", "--vary", "rod-ratio=0.2:1:3",
+    out = real_shaper("sweep", *BASE, "--rod-ratio", "0.3", "--vary", "rod-ratio=0.2:1:3",
                  "--vary", "guide=400:700:3", "--rpm", "40", "60")
     assert out.returncode == 0, out.stderr
     table = rows(out.stdout)
@@ -141,7 +144,7 @@ def test_optimize_refuses_bad_input_in_one_line(args, option):
 def test_optimize_text_output():
     # K, not L1 alone: with K and H fixed max |a| does not depend on L1 (no proposal, see
     # test_optimize_gain.py)
-    out = shaper("optimize", *BASE, "--objective", "accel", "--vary", "K=1.3:1.6", "--rpm", "40")
+    out = real_shaper("optimize", *BASE, "--objective", "accel", "--vary", "K=1.3:1.6", "--rpm", "40")
     assert out.returncode == 0, out.stderr
     assert "optimum" in out.stdout and "m/s²" in out.stdout and "design as given" in out.stdout
     value = float(out.stdout.split("optimum")[1].split()[0])

@@ -8,7 +8,9 @@ import pytest
 
 import core.library as library_module
 import core.library.entry as library_entry
-from cli_runner import shaper
+# What the commands write, run in this process (each process costs its start-up);
+# test_cli_library.py runs the real command.
+from cli_runner import shaper_run_in_process as shaper
 from core.forces.masses import MassProperties
 from core.space.figures import FIGURES_VERSION, figures
 from core.library import Library

@@ -7,7 +7,9 @@ import ezdxf
 from core.cli.output import UsageError, cad_font_from_args
 from core.drawing import outline_text
 
-from tests.cli_runner import shaper
+# In this process (a drawing's process costs ~2.5 s of CPU to start); test_scheme_command.py's
+# test_real_process runs the real command.
+from tests.cli_runner import shaper_run_in_process as shaper
 
 GEAR = ("gear", "--z1", "13", "--z2", "40", "--module", "6")
 
