@@ -69,7 +69,10 @@ class PlotStack(QWidget):
         # pyqtgraph plot takes several milliseconds to make, at every start (issue 24).
         self._plots: dict[str, PlotSlots] = {}
         self._shown = {s.key: s.key not in hidden for s in self._series}
-        self._legends = {s.group: GroupLegend(self._on_legend_toggle) for s in self._series}
+        # one legend per group (a comprehension over the series made one per series and
+        # kept the last: five legends of the kinematics' six were built for nothing)
+        self._legends = {group: GroupLegend(self._on_legend_toggle)
+                         for group in dict.fromkeys(s.group for s in self._series)}
         self._side = False                               # legends beside their plots
         for key in [s.key for s in self._series if self._shown[s.key]]:
             self._build_plot(key)

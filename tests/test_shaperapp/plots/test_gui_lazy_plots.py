@@ -39,3 +39,21 @@ def test_the_first_plot_cannot_start_hidden(qtbot, model):
     from shaperapp.plots.stack import PlotStack
     with pytest.raises(ValueError, match="stays shown"):
         PlotStack(model, None, PlotsWidget(model).stack()._series, lambda: "", hidden=("ram_x",))
+
+
+def test_a_stack_makes_one_legend_per_group(qtbot, model, monkeypatch):
+    """Issue 43 item 5: the kinematics' six series are one group, so one legend is made
+    (five more, each a few pyqtgraph items, were made and dropped before the first paint)."""
+    from shaperapp.plots import stack as stack_module
+    made = []
+    real = stack_module.GroupLegend
+
+    def counted(*args, **kwargs):
+        made.append(real(*args, **kwargs))
+        return made[-1]
+    monkeypatch.setattr(stack_module, "GroupLegend", counted)
+    plots = PlotsWidget(model)
+    qtbot.addWidget(plots)
+    groups = {series.group for series in plots.stack()._series}
+    assert len(made) == len(groups) == 1
+    assert list(plots.stack()._legends.values()) == made
