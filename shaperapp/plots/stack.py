@@ -290,6 +290,8 @@ class PlotStack(QWidget):
             legend.fit_width(self._view.width())
 
     def _fit_heights(self) -> None:
+        if self._stale:     # the refresh due (at the show or a read-back) fits them, once:
+            return          # before the first paint the window's layout fitted them 8 times
         fit_heights(self._view, self._plots.values())
         if self._place_legends():
             fit_heights(self._view, self._plots.values())

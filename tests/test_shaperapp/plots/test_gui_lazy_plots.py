@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from PySide6.QtCore import Qt
 
 from shaperapp.plots.kinematics import LEVER_PLOTS, PlotsWidget
 
@@ -57,3 +58,24 @@ def test_a_stack_makes_one_legend_per_group(qtbot, model, monkeypatch):
     groups = {series.group for series in plots.stack()._series}
     assert len(made) == len(groups) == 1
     assert list(plots.stack()._legends.values()) == made
+
+
+def test_heights_wait_for_the_refresh_that_is_due(qtbot, model, monkeypatch):
+    """Issue 43 item 5: a stack whose refresh is due (built hidden, or hidden since an edit)
+    fits its plots' heights in that refresh, not at each step of its construction and of
+    the window's layout before it (eight fits before the first paint, each re-laying out
+    the legends)."""
+    from shaperapp.plots import stack as stack_module
+    fits = []
+    real = stack_module.fit_heights
+    monkeypatch.setattr(stack_module, "fit_heights", lambda *a: (fits.append(1), real(*a)))
+    plots = PlotsWidget(model)
+    qtbot.addWidget(plots)
+    plots.set_plot_visible("lever_angle", True)          # a relayout while hidden
+    assert fits == []
+    plots.resize(700, 800)
+    plots.show()
+    qtbot.waitExposed(plots)
+    assert fits                                          # fitted once shown
+    view = plots.stack()._view
+    assert view.minimumHeight() >= view.ci.layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()
