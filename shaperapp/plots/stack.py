@@ -24,6 +24,7 @@ from PySide6.QtGui import QAction, QColor
 from PySide6.QtWidgets import QGraphicsScene, QGraphicsView, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.lazy import lay_out_page
 from shaperapp.widgets.scroll import vertical_scroll
 from shaperapp.widgets.style import TEXT
 
@@ -338,6 +339,7 @@ class PlotStack(QWidget):
     def showEvent(self, event) -> None:
         super().showEvent(event)
         if self._stale:
+            lay_out_page(self)
             self.refresh()
         elif self._cursor_stale:
             self._on_angle(self._model.angle_index)
