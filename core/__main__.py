@@ -14,11 +14,17 @@ import sys
 from collections.abc import Callable, Sequence
 
 
-def load() -> Callable[[Sequence[str] | None], int]:
-    """Import the command line (``core.cli.main``) as described above."""
+def load(engine: bool = True) -> Callable[[Sequence[str] | None], int]:
+    """Import the command line (``core.cli.main``) as described above, and with it numpy
+    and the engine's first floors that every command computing something needs (the
+    command line's own modules import them where used, so that ``shaper COMMAND --help``
+    loads none of them: ``engine=False``)."""
     collecting = gc.isenabled()
     gc.disable()
     from .cli import main as run
+    if engine:
+        import core.files.io  # noqa: F401  (numpy, the linkage, the design files)
+        import core.linkage.kinematics  # noqa: F401
     gc.freeze()
     if collecting:
         gc.enable()
@@ -29,7 +35,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     words = sys.argv[1:] if argv is None else list(argv)
     if list(words) == ["--version"]:
         return print_version()
-    return load()(argv)
+    return load(engine=not {"-h", "--help"} & set(words))(argv)
 
 
 def print_version() -> int:

@@ -2,14 +2,18 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from core.base.errors import DesignError
-from ..gear import GearPair, GearPairInputs, design_pair
-from ..gear.file import gear_from_dict, gear_to_dict
-from ..gear.table import gear_summary, summary_csv, summary_rows
 from .common import UsageError, design_error_text, design_file, number
 from .output import (OutputError, add_cad_font_option, cad_font_from_args, check_target, print_json,
                      print_table, write_output)
+
+if TYPE_CHECKING:
+    from ..gear import GearPair
+
+# The pair's modules are imported where a pair is made or read: ``shaper gear --help`` (and
+# ``shaper drawing --help``, which shares the options) prints only the texts below.
 
 HELP = "the gear pair: shifts, centre distance, diameters, contact ratio, checks"
 DESCRIPTION = ("The external involute spur pair that drives the crank (pinion z1 on the motor "
@@ -82,6 +86,7 @@ def _saved(args: argparse.Namespace) -> dict:
     doc = design_file(args)
     if doc is None or not doc.get("gear"):
         return {}
+    from ..gear.file import gear_from_dict, gear_to_dict
     return gear_to_dict(gear_from_dict(doc["gear"]))
 
 
@@ -115,6 +120,7 @@ def _values(args: argparse.Namespace) -> tuple[dict, dict]:
 def pair_from_args(args: argparse.Namespace) -> GearPair:
     """The pair of the options over the ``--design`` file's gear; UsageError naming the option
     (or the file's key) for a bad value."""
+    from ..gear import GearPairInputs, design_pair
     sources: dict = {}
     try:
         values, sources = _values(args)
@@ -127,10 +133,12 @@ def pair_from_args(args: argparse.Namespace) -> GearPair:
 
 def json_document(args: argparse.Namespace) -> dict:
     """What ``--json`` prints (``shaper class``'s answer key holds it for each student)."""
+    from ..gear.table import gear_summary
     return gear_summary(pair_from_args(args))
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..gear.table import gear_summary, summary_csv, summary_rows
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
     for option, target in (("--csv", args.csv), ("--dxf", args.dxf)):

@@ -13,17 +13,21 @@ import re
 import sys
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from core.base.errors import DesignError, long_integer_text
-from core.linkage.geometry import Design
-from core.files.io import load_design
-from core.linkage.kinematics import (MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG,
-                          check_angles, check_request, crank_angles)
-from core.linkage.spec import Spec
 from ..version import version_text
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from core.linkage.geometry import Design
+    from core.linkage.spec import Spec
+
+# numpy and the engine are imported by the functions that use them, not with this module:
+# every command imports it, and ``shaper COMMAND --help`` prints only its parser's texts
+# (``shaper gear --help`` took numpy and the linkage, about 0.2 s, to print them; issue 43
+# item 5).
 
 DEFAULT_RPMS = ("40", "60")
 
@@ -175,12 +179,14 @@ def add_design_options(parser: argparse.ArgumentParser, allow_dims: bool = True,
 
 
 def add_speed_options(parser: argparse.ArgumentParser) -> None:
+    from core.linkage.kinematics import MAX_RPM, MAX_SPEEDS, MIN_RPM
     parser.add_argument("--rpm", nargs="+", metavar="RPM",
                         help=f"1 to {MAX_SPEEDS} crank speeds, {MIN_RPM:g} to {MAX_RPM:g} r/min "
                              "(default 40 60, or the design file's)")
 
 
 def add_angle_options(parser: argparse.ArgumentParser, what: str) -> None:
+    from core.linkage.kinematics import MAX_SAMPLES, MAX_STEP_DEG, MIN_STEP_DEG
     angles = parser.add_mutually_exclusive_group()
     angles.add_argument("--step", metavar="DEG",
                         help=f"crank-angle step of {what}, {MIN_STEP_DEG:g} to {MAX_STEP_DEG:g} degrees "
@@ -204,6 +210,7 @@ def design_file(args: argparse.Namespace) -> dict[str, Any] | None:
         return None
     cached = getattr(args, "_design_doc", None)
     if cached is None:
+        from core.files.io import load_design
         cached = load_design(path)
         args._design_doc = cached
     return cached
@@ -211,6 +218,7 @@ def design_file(args: argparse.Namespace) -> dict[str, Any] | None:
 
 def spec_from_args(args: argparse.Namespace) -> Spec:
     """The inputs as a :class:`Spec`, from the options or from ``--design``."""
+    from core.linkage.spec import Spec
     synth_given = [v is not None for v in (args.crank, args.time_ratio, args.stroke)]
     dims = getattr(args, "dims", None)
     doc = design_file(args)
@@ -318,6 +326,7 @@ def spec_option(parameter: str, spec: Spec, args: argparse.Namespace) -> str:
 def request_from_args(args: argparse.Namespace) -> tuple[np.ndarray, list[float]]:
     """The crank angles (rad) and speeds of a table, refused with the angle option if it
     would hold more than ``core.linkage.kinematics.MAX_SAMPLES`` samples."""
+    from core.linkage.kinematics import check_request
     rpms = rpms_from_args(args)
     angles = angles_from_args(args)
     if args.angles is not None:
@@ -346,6 +355,9 @@ def rpms_from_args(args: argparse.Namespace) -> list[float]:
 
 def angles_from_args(args: argparse.Namespace) -> np.ndarray:
     """Crank angles in rad from ``--angles`` or ``--step`` (or the design file's step)."""
+    import numpy as np
+
+    from core.linkage.kinematics import check_angles, crank_angles
     if args.angles is not None:
         return check_angles(np.array(number_list("angles", args.angles)))
     return crank_angles(_step_value(args))

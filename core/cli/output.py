@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any, Iterable
 
 from core.base.errors import WriteError, os_reason
-from core.files.io import atomic_write
+from core.files.atomic import atomic_write
 from .common import UsageError
 
 

@@ -24,6 +24,7 @@ from PySide6.QtGui import QAction, QColor
 from PySide6.QtWidgets import QGraphicsScene, QGraphicsView, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.lazy import lay_out_page
 from shaperapp.widgets.scroll import vertical_scroll
 from shaperapp.widgets.style import TEXT
 
@@ -69,7 +70,10 @@ class PlotStack(QWidget):
         # pyqtgraph plot takes several milliseconds to make, at every start (issue 24).
         self._plots: dict[str, PlotSlots] = {}
         self._shown = {s.key: s.key not in hidden for s in self._series}
-        self._legends = {s.group: GroupLegend(self._on_legend_toggle) for s in self._series}
+        # one legend per group (a comprehension over the series made one per series and
+        # kept the last: five legends of the kinematics' six were built for nothing)
+        self._legends = {group: GroupLegend(self._on_legend_toggle)
+                         for group in dict.fromkeys(s.group for s in self._series)}
         self._side = False                               # legends beside their plots
         for key in [s.key for s in self._series if self._shown[s.key]]:
             self._build_plot(key)
@@ -287,6 +291,8 @@ class PlotStack(QWidget):
             legend.fit_width(self._view.width())
 
     def _fit_heights(self) -> None:
+        if self._stale:     # the refresh due (at the show or a read-back) fits them, once:
+            return          # before the first paint the window's layout fitted them 8 times
         fit_heights(self._view, self._plots.values())
         if self._place_legends():
             fit_heights(self._view, self._plots.values())
@@ -333,6 +339,7 @@ class PlotStack(QWidget):
     def showEvent(self, event) -> None:
         super().showEvent(event)
         if self._stale:
+            lay_out_page(self)
             self.refresh()
         elif self._cursor_stale:
             self._on_angle(self._model.angle_index)

@@ -21,7 +21,7 @@ from typing import Callable, Sequence
 
 import shiboken6
 
-from PySide6.QtCore import QObject, Qt, QTimer, Signal, SignalInstance
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt, QTimer, Signal, SignalInstance
 from PySide6.QtWidgets import QTabWidget, QVBoxLayout, QWidget
 
 from .guards import guard_wheel
@@ -189,3 +189,17 @@ def build_when_quiet(owner: QObject, pages: Sequence[LazyPage], edits: Sequence[
         signal.connect(restart)
     timer.start()
     return timer
+
+
+def lay_out_page(widget: QWidget) -> None:
+    """Give ``widget`` (in a tab page) its size now, before it draws: Qt shows a tab page
+    before its tab widget has laid it out (the children first), so at the window's first
+    show the Kinematics stack refreshed at a provisional size (its pane 336 px tall instead
+    of 533), put its legend beside the plots and moved it back above them at the next
+    resize. A tab widget lays out its page when asked (a layout request); where the page
+    already has its size nothing changes."""
+    parent = widget.parentWidget()
+    while parent is not None:
+        if isinstance(parent, QTabWidget):
+            QCoreApplication.sendEvent(parent, QEvent(QEvent.Type.LayoutRequest))
+        parent = None if parent.isWindow() else parent.parentWidget()

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from PySide6.QtCore import Qt
 
 from shaperapp.plots.kinematics import LEVER_PLOTS, PlotsWidget
 
@@ -39,3 +40,42 @@ def test_the_first_plot_cannot_start_hidden(qtbot, model):
     from shaperapp.plots.stack import PlotStack
     with pytest.raises(ValueError, match="stays shown"):
         PlotStack(model, None, PlotsWidget(model).stack()._series, lambda: "", hidden=("ram_x",))
+
+
+def test_a_stack_makes_one_legend_per_group(qtbot, model, monkeypatch):
+    """Issue 43 item 5: the kinematics' six series are one group, so one legend is made
+    (five more, each a few pyqtgraph items, were made and dropped before the first paint)."""
+    from shaperapp.plots import stack as stack_module
+    made = []
+    real = stack_module.GroupLegend
+
+    def counted(*args, **kwargs):
+        made.append(real(*args, **kwargs))
+        return made[-1]
+    monkeypatch.setattr(stack_module, "GroupLegend", counted)
+    plots = PlotsWidget(model)
+    qtbot.addWidget(plots)
+    groups = {series.group for series in plots.stack()._series}
+    assert len(made) == len(groups) == 1
+    assert list(plots.stack()._legends.values()) == made
+
+
+def test_heights_wait_for_the_refresh_that_is_due(qtbot, model, monkeypatch):
+    """Issue 43 item 5: a stack whose refresh is due (built hidden, or hidden since an edit)
+    fits its plots' heights in that refresh, not at each step of its construction and of
+    the window's layout before it (eight fits before the first paint, each re-laying out
+    the legends)."""
+    from shaperapp.plots import stack as stack_module
+    fits = []
+    real = stack_module.fit_heights
+    monkeypatch.setattr(stack_module, "fit_heights", lambda *a: (fits.append(1), real(*a)))
+    plots = PlotsWidget(model)
+    qtbot.addWidget(plots)
+    plots.set_plot_visible("lever_angle", True)          # a relayout while hidden
+    assert fits == []
+    plots.resize(700, 800)
+    plots.show()
+    qtbot.waitExposed(plots)
+    assert fits                                          # fitted once shown
+    view = plots.stack()._view
+    assert view.minimumHeight() >= view.ci.layout.effectiveSizeHint(Qt.SizeHint.MinimumSize).height()

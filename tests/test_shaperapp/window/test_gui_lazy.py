@@ -160,3 +160,20 @@ def test_the_cam_is_saved_and_opened_with_its_tab_never_built(window, tmp_path):
     QApplication.processEvents()
     assert window.cam.cam_model is window.cam_model
     assert window.cam.form.fields["arm"].edit.text() == "150"
+
+
+def test_the_first_show_refreshes_the_front_plots_at_their_size(qtbot, tmp_path, monkeypatch):
+    """Issue 43 item 5: the Kinematics page is shown before its tab widget lays it out; its
+    first refresh ran at a provisional size (the pane 336 px tall instead of 533), put the
+    legend beside the plots and back above them at the next resize, before the first paint.
+    Now it is laid out first: the legend is placed once, where it stays."""
+    from shaperapp.plots.legend import GroupLegend
+    sides = []
+    real = GroupLegend.set_side
+    monkeypatch.setattr(GroupLegend, "set_side", lambda self, side: (sides.append(side), real(self, side)))
+    with main_window(tmp_path) as win:
+        qtbot.waitExposed(win)
+        stack = win.plots.stack()
+        assert sides == [] and not stack.legend("main").side()
+        port = stack._scroll.viewport()
+        assert port.height() >= stack._view.minimumHeight()          # the plots fit, legend above
