@@ -52,6 +52,7 @@ class _Placed:
         self.defects = 0.0         # the placed texts' crossings and hits, as costed
         self.segs = strokes(self.drawn)        # the circles too (the crank's centre circle)
         self.lines = sd.Lines(self.segs)
+        self.compact_asked = False    # whether h's text did not fit its line (``compact`` then counts)
 
     def cost(self, dim: sd.Dimension, extra: float = 0.0, beat: float = math.inf) -> float:
         """1000 per placed text its text meets or its lines cross, 10 per line its text
@@ -136,12 +137,15 @@ class _Placed:
 
 
 def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
-               limits: Sequence[float], compact: bool = False) -> list[sd.Dimension]:
+               limits: Sequence[float], compact: bool = False) -> tuple[list[sd.Dimension], bool]:
     """The seven (six without a rod) dimensions of the mechanism ``drawn`` at ``place``: each
     of a few ways to place it (which side of its line, which end a text that does not fit
     goes beyond, where along the line) the one whose text crosses the fewest lines.
     ``compact``: h's text, where it does not fit its line, beside L2's instead of above
-    the guide (the drawing no taller than its linework and H)."""
+    the guide (the drawing no taller than its linework and H). Second, whether ``compact``
+    could have changed them: False where h's text fitted its line in every try, so that
+    the other ``compact`` gives the same dimensions bit for bit (the motion sheet's fit
+    then skips that search, which only repeated this one)."""
     factor = place.scale
     at = [{k: place(v) for k, v in mech.joints(design, float(phi)).items()} for phi in limits]
     boxes = np.array([item_box(it) for it in drawn if not isinstance(it, Text)])
@@ -178,7 +182,7 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
         tries.append(_after_l1(design, place, drawn, at, best, boxes, top, compact))
         if tries[-1].defects == 0:
             break
-    return min(tries, key=lambda p: p.defects).dims
+    return min(tries, key=lambda p: p.defects).dims, any(p.compact_asked for p in tries)
 
 
 def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best, boxes: np.ndarray,
@@ -196,6 +200,7 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
     # h on the chain; where its text does not fit there it goes beyond the guide, or
     # (compact) one line out beyond O2, beside L2's
     h = sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)
+    placed.compact_asked = bool(h.kept)
     if (h.kept and compact) or boxes_meet(h.text.box(), l2.text.box()):
         low = sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor, beyond_first=True)
         if not boxes_meet(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
