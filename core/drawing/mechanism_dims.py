@@ -54,31 +54,34 @@ class _Placed:
         self.lines = sd.Lines(self.segs)
         self.compact_asked = False    # whether h's text did not fit its line (``compact`` then counts)
 
-    def cost(self, dim: sd.Dimension, extra: float = 0.0, beat: float = math.inf) -> float:
+    def cost(self, dim: sd.Dimension | sd.Sketch, extra: float = 0.0, beat: float = math.inf) -> float:
         """1000 per placed text its text meets or its lines cross, 10 per line its text
         crosses, plus ``extra``; inf at once where that without its own lines' crossings
-        (the dearer part: their strokes, and each placed text against them) is already
-        ``beat`` or more, so that the whole could not be less."""
+        (the dearer part: their strokes, and each placed text against them; a sketch's
+        lines are built for it only then) is already ``beat`` or more, so that the whole
+        could not be less."""
         box = dim.text.box()
         hits = sum(boxes_meet(box, d.text.box()) for d in self.dims)
         crossed = sd.text_crossings(dim.text, self.lines)
         if 1000.0 * hits + 10.0 * crossed + extra >= beat:
             return math.inf
-        own = sd.Lines(strokes([*dim.parts, *dim.kept]))      # its lines through a text placed before
+        whole = _built(dim)
+        own = sd.Lines(strokes([*whole.parts, *whole.kept]))      # its lines through a text placed before
         hits += sum(sd.text_crossings(d.text, own) > 0 for d in self.dims)
         return 1000.0 * hits + 10.0 * crossed + extra
 
-    def best(self, candidates: Iterable[sd.Dimension], extra=lambda dim: 0.0) -> sd.Dimension:
+    def best(self, candidates: Iterable[sd.Dimension | sd.Sketch], extra=lambda dim: 0.0) -> sd.Dimension:
         """``min(candidates, key=cost + extra)``, the first of equals, each cost left
         unfinished once it cannot be less than the least so far (the same choice: a cost
-        only grows by its own lines' crossings). Most of the motion sheet's dimension search
-        is the hundreds of candidates of L3 and H costed against each placed text."""
+        only grows by its own lines' crossings), built (a sketch's ``extra`` reads its text
+        alone). Most of the motion sheet's dimension search is the hundreds of candidates
+        of L3 and H costed against each placed text."""
         found, least = None, math.inf
         for dim in candidates:
             cost = self.cost(dim, extra(dim), least)
             if found is None or cost < least:
                 found, least = dim, cost
-        return found
+        return _built(found)
 
     def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
         """The candidate whose text meets no placed text, whose lines cross none, and whose
@@ -212,9 +215,9 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
     # … else beyond either end (where the chain's extension lines from O2 and O4 leave no
     # gap on the lever for it)
     placed.add_sized(
-        lambda size: [*[sd.aligned(o4, lever, offset * far, "L3", factor, along=t, below=below, height=size)
+        lambda size: [*[sd.Sketch(o4, lever, offset * far, "L3", factor, along=t, below=below, height=size)
                         for far in L3_FARTHER for t in L3_ALONG for below in (False, True)],
-                      *[sd.aligned(p, q, side * far, "L3", factor, outside=True, below=below, height=size)
+                      *[sd.Sketch(p, q, side * far, "L3", factor, outside=True, below=below, height=size)
                         for far in L3_FARTHER for p, q, side in ((o4, lever, offset), (lever, o4, -offset))
                         for below in (False, True)]],
         extra=_away_from(o2, place.length(design.crank),
@@ -228,6 +231,10 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
     if design.rod is not None:           # the rod at either limit position
         placed.add_sized(lambda size: _rods(at, above, factor, size))
     return placed
+
+
+def _built(dim: sd.Dimension | sd.Sketch) -> sd.Dimension:
+    return dim if isinstance(dim, sd.Dimension) else dim.dimension()
 
 
 def _rods(at, above: float, factor: float, size: float) -> list[sd.Dimension]:
