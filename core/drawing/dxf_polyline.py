@@ -11,30 +11,32 @@ from __future__ import annotations
 
 import numpy as np
 from ezdxf.entities import factory
-from ezdxf.entities.dxfgfx import DXFGraphic
 from ezdxf.entities.lwpolyline import LWPolyline, LWPolylinePoints, acdb_lwpolyline
-from ezdxf.lldxf.const import SUBCLASS_MARKER
-from ezdxf.lldxf.tagwriter import AbstractTagWriter, TagWriter
+from ezdxf.lldxf.tagwriter import AbstractTagWriter
+
+from .dxf_tags import ENTITY, plain, plan, tags
 
 _CODE = LWPolylinePoints.VERTEX_CODE
 _VERTEX = f"{_CODE:3d}\n%s\n{_CODE + 10:3d}\n%s\n"      # x, then y: TAG_STRING_FORMAT twice
+# LWPolyline.export_entity's attributes before its vertices, and after them
+_BEFORE = plan(acdb_lwpolyline, ("count", "flags", "const_width", "elevation", "thickness"))
+_AFTER = plan(acdb_lwpolyline, ("extrusion",), marker=False)
 
 
 class PackedPolyline(LWPolyline):
-    """An LWPOLYLINE whose vertices are written by one string formatting, where ezdxf's
-    text writer writes them and none has a width or a bulge; ezdxf's own export otherwise
-    (a binary DXF, an audit's tag collector)."""
+    """An LWPOLYLINE whose vertices are written by one string formatting, and its attributes
+    by :func:`.dxf_tags.tags`, where :func:`.dxf_tags.plain` holds and no vertex has a width
+    or a bulge; ezdxf's own export otherwise (a binary DXF, an audit's tag collector)."""
 
     def export_entity(self, tagwriter: AbstractTagWriter) -> None:
         values = self.lwpoints.values
-        if type(tagwriter) is not TagWriter or values[:, 2:].any():
+        if not plain(tagwriter, self) or values[:, 2:].any():
             super().export_entity(tagwriter)
             return
-        DXFGraphic.export_entity(self, tagwriter)          # LWPolyline.export_entity's order
-        tagwriter.write_tag2(SUBCLASS_MARKER, acdb_lwpolyline.name)
-        self.dxf.export_dxf_attribs(tagwriter, ["count", "flags", "const_width", "elevation", "thickness"])
-        tagwriter.write_str("".join(_VERTEX % xy for xy in map(tuple, values[:, :2].tolist())))
-        self.dxf.export_dxf_attribs(tagwriter, "extrusion")
+        version = tagwriter.dxfversion          # LWPolyline.export_entity's order
+        tagwriter.write_str("".join((tags(self, ENTITY, version), tags(self, _BEFORE, version),
+                                     *(_VERTEX % xy for xy in map(tuple, values[:, :2].tolist())),
+                                     tags(self, _AFTER, version))))
 
 
 def add_polyline(msp, points: list[tuple[float, float]], closed: bool, attribs: dict) -> LWPolyline:

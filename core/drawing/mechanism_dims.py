@@ -52,32 +52,36 @@ class _Placed:
         self.defects = 0.0         # the placed texts' crossings and hits, as costed
         self.segs = strokes(self.drawn)        # the circles too (the crank's centre circle)
         self.lines = sd.Lines(self.segs)
+        self.compact_asked = False    # whether h's text did not fit its line (``compact`` then counts)
 
-    def cost(self, dim: sd.Dimension, extra: float = 0.0, beat: float = math.inf) -> float:
+    def cost(self, dim: sd.Dimension | sd.Sketch, extra: float = 0.0, beat: float = math.inf) -> float:
         """1000 per placed text its text meets or its lines cross, 10 per line its text
         crosses, plus ``extra``; inf at once where that without its own lines' crossings
-        (the dearer part: their strokes, and each placed text against them) is already
-        ``beat`` or more, so that the whole could not be less."""
+        (the dearer part: their strokes, and each placed text against them; a sketch's
+        lines are built for it only then) is already ``beat`` or more, so that the whole
+        could not be less."""
         box = dim.text.box()
         hits = sum(boxes_meet(box, d.text.box()) for d in self.dims)
         crossed = sd.text_crossings(dim.text, self.lines)
         if 1000.0 * hits + 10.0 * crossed + extra >= beat:
             return math.inf
-        own = sd.Lines(strokes([*dim.parts, *dim.kept]))      # its lines through a text placed before
+        whole = _built(dim)
+        own = sd.Lines(strokes([*whole.parts, *whole.kept]))      # its lines through a text placed before
         hits += sum(sd.text_crossings(d.text, own) > 0 for d in self.dims)
         return 1000.0 * hits + 10.0 * crossed + extra
 
-    def best(self, candidates: Iterable[sd.Dimension], extra=lambda dim: 0.0) -> sd.Dimension:
+    def best(self, candidates: Iterable[sd.Dimension | sd.Sketch], extra=lambda dim: 0.0) -> sd.Dimension:
         """``min(candidates, key=cost + extra)``, the first of equals, each cost left
         unfinished once it cannot be less than the least so far (the same choice: a cost
-        only grows by its own lines' crossings). Most of the motion sheet's dimension search
-        is the hundreds of candidates of L3 and H costed against each placed text."""
+        only grows by its own lines' crossings), built (a sketch's ``extra`` reads its text
+        alone). Most of the motion sheet's dimension search is the hundreds of candidates
+        of L3 and H costed against each placed text."""
         found, least = None, math.inf
         for dim in candidates:
             cost = self.cost(dim, extra(dim), least)
             if found is None or cost < least:
                 found, least = dim, cost
-        return found
+        return _built(found)
 
     def add(self, *candidates: sd.Dimension, extra=lambda dim: 0.0) -> sd.Dimension:
         """The candidate whose text meets no placed text, whose lines cross none, and whose
@@ -136,12 +140,15 @@ class _Placed:
 
 
 def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
-               limits: Sequence[float], compact: bool = False) -> list[sd.Dimension]:
+               limits: Sequence[float], compact: bool = False) -> tuple[list[sd.Dimension], bool]:
     """The seven (six without a rod) dimensions of the mechanism ``drawn`` at ``place``: each
     of a few ways to place it (which side of its line, which end a text that does not fit
     goes beyond, where along the line) the one whose text crosses the fewest lines.
     ``compact``: h's text, where it does not fit its line, beside L2's instead of above
-    the guide (the drawing no taller than its linework and H)."""
+    the guide (the drawing no taller than its linework and H). Second, whether ``compact``
+    could have changed them: False where h's text fitted its line in every try, so that
+    the other ``compact`` gives the same dimensions bit for bit (the motion sheet's fit
+    then skips that search, which only repeated this one)."""
     factor = place.scale
     at = [{k: place(v) for k, v in mech.joints(design, float(phi)).items()} for phi in limits]
     boxes = np.array([item_box(it) for it in drawn if not isinstance(it, Text)])
@@ -178,7 +185,7 @@ def dimensions(design: Design, place: Placement, drawn: Sequence[Item],
         tries.append(_after_l1(design, place, drawn, at, best, boxes, top, compact))
         if tries[-1].defects == 0:
             break
-    return min(tries, key=lambda p: p.defects).dims
+    return min(tries, key=lambda p: p.defects).dims, any(p.compact_asked for p in tries)
 
 
 def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best, boxes: np.ndarray,
@@ -196,6 +203,7 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
     # h on the chain; where its text does not fit there it goes beyond the guide, or
     # (compact) one line out beyond O2, beside L2's
     h = sd.linear(o2, guide, (x, o2[1]), 90.0, "h", factor)
+    placed.compact_asked = bool(h.kept)
     if (h.kept and compact) or boxes_meet(h.text.box(), l2.text.box()):
         low = sd.linear(o2, guide, (x - STEP, o2[1]), 90.0, "h", factor, beyond_first=True)
         if not boxes_meet(low.text.box(), l2.text.box()) and not (l2.kept and low.kept):
@@ -207,9 +215,9 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
     # … else beyond either end (where the chain's extension lines from O2 and O4 leave no
     # gap on the lever for it)
     placed.add_sized(
-        lambda size: [*[sd.aligned(o4, lever, offset * far, "L3", factor, along=t, below=below, height=size)
+        lambda size: [*[sd.Sketch(o4, lever, offset * far, "L3", factor, along=t, below=below, height=size)
                         for far in L3_FARTHER for t in L3_ALONG for below in (False, True)],
-                      *[sd.aligned(p, q, side * far, "L3", factor, outside=True, below=below, height=size)
+                      *[sd.Sketch(p, q, side * far, "L3", factor, outside=True, below=below, height=size)
                         for far in L3_FARTHER for p, q, side in ((o4, lever, offset), (lever, o4, -offset))
                         for below in (False, True)]],
         extra=_away_from(o2, place.length(design.crank),
@@ -223,6 +231,10 @@ def _after_l1(design: Design, place: Placement, drawn: Sequence[Item], at, best,
     if design.rod is not None:           # the rod at either limit position
         placed.add_sized(lambda size: _rods(at, above, factor, size))
     return placed
+
+
+def _built(dim: sd.Dimension | sd.Sketch) -> sd.Dimension:
+    return dim if isinstance(dim, sd.Dimension) else dim.dimension()
 
 
 def _rods(at, above: float, factor: float, size: float) -> list[sd.Dimension]:

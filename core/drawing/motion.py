@@ -161,16 +161,16 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
     while not fits:             # the dimensions' room is known once they are placed
         for compact in (False, True):
             place = fit(bounds, box, scale)
-            items, dims = _linework(design, place, angles, limits, compact)
+            items, dims, asked = _linework(design, place, angles, limits, compact)
             x0, y0, x1, y1 = _extent(items)
             fits = x1 - x0 <= box[2] - box[0] - 2 * LABEL_ROOM and y1 - y0 <= box[3] - box[1] - 2 * LABEL_ROOM
-            if fits:
+            if fits or not asked:       # compact would change nothing: the same items, no fit
                 break
-        else:
+        if not fits:
             scale = standard_scale(scale * (1.0 + 1e-9), 1.0)     # the next of the series
     shift = ((box[0] + box[2] - x0 - x1) / 2.0, (box[1] + box[3] - y0 - y1) / 2.0)
     place = Placement(scale, (place.origin[0] + shift[0], place.origin[1] + shift[1]), place.anchor)
-    items, dims = _linework(design, place, angles, limits, compact)
+    items, dims, _ = _linework(design, place, angles, limits, compact)
     taken: list[Box] = mechanism_dims.obstacles(dims)
     numbers = path_numbers.tool_path_numbers(design, place, angles, items, taken, box,
                                              mechanism_dims.obstacles(dims, texts_only=True))
@@ -198,16 +198,16 @@ def _mechanism(design: Design, box: Box, angles: np.ndarray, limits: Sequence[fl
 def _linework(design: Design, place: Placement, angles: np.ndarray, limits: Sequence[float],
               compact: bool = False):
     """The frame, the tool path, the links at ``angles`` (thin) and ``limits`` (thick) and the
-    dimensions' pictures (``mechanism_dims.dimensions``' ``compact``), as items; and the
-    dimensions."""
+    dimensions' pictures (``mechanism_dims.dimensions``' ``compact``), as items; the
+    dimensions; and whether ``compact`` counted (``mechanism_dims.dimensions``)."""
     items: list[Item] = mech.frame_items(design, place)
     items += mech.tool_path(design, place, angles)
     for phi in angles:
         items += mech.links_at(design, float(phi), place, THIN, bodies=False)
     for phi in limits:
         items += mech.links_at(design, float(phi), place, OUTLINE)
-    dims = mechanism_dims.dimensions(design, place, items, limits, compact)
-    return items + [part for dim in dims for part in (*dim.parts, *dim.kept)], dims
+    dims, asked = mechanism_dims.dimensions(design, place, items, limits, compact)
+    return items + [part for dim in dims for part in (*dim.parts, *dim.kept)], dims, asked
 
 
 def _extent(items: Sequence[Item]) -> Box:

@@ -87,11 +87,8 @@ def _straight(p1, p2, a, b, name: str, value: float, beyond: int,
               clear: float = 2.0, outside: bool = False, below: bool = False, along: float = 0.5,
               height: float = TEXT_MM) -> tuple[list[Item], list[Item], Text]:
     """Extension lines p1→a, p2→b (EXTEND beyond), the line a–b with arrows inside and the
-    text above its middle, reading along a→b; a text longer than the line goes beyond the
-    end ``beyond`` (0: a, 1: b), ``clear`` mm from it, over an extension of the line, which
-    stays a line in the DXF (always with ``outside``). The picture, the lines that stay, and
-    the text; ``below`` puts the text under the line instead, ``along`` the fraction of the
-    line from a to the text's middle, ``height`` the text's height."""
+    text above its middle, reading along a→b (:func:`_straight_text`). The picture, the
+    lines that stay, and the text."""
     p1, p2, a, b = (np.asarray(v, float) for v in (p1, p2, a, b))
     length = max(float(np.hypot(*(b - a))), 1e-12)
     u = (b - a) / length
@@ -102,6 +99,21 @@ def _straight(p1, p2, a, b, name: str, value: float, beyond: int,
         if size > 1e-9:
             parts.append(line([p, q + EXTEND * out / size], DIMENSIONS))
     parts += [line([a, b], DIMENSIONS), _arrow(a, u), _arrow(b, -u)]
+    text, kept = _straight_text(a, b, name, value, beyond, clear, outside, below, along, height)
+    return parts + [text], kept, text
+
+
+def _straight_text(a, b, name: str, value: float, beyond: int, clear: float, outside: bool,
+                   below: bool, along: float, height: float) -> tuple[Text, list[Item]]:
+    """The text of the line a–b above its middle, reading along a→b, and the lines that stay:
+    a text longer than the line goes beyond the end ``beyond`` (0: a, 1: b), ``clear`` mm
+    from it, over an extension of the line, which stays a line in the DXF (always with
+    ``outside``); ``below`` puts the text under the line instead, ``along`` the fraction of
+    the line from a to the text's middle, ``height`` the text's height. Apart from the
+    picture because a search costs most candidates by their text alone (:class:`Sketch`)."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    length = max(float(np.hypot(*(b - a))), 1e-12)
+    u = (b - a) / length
     rotation = math.degrees(math.atan2(u[1], u[0]))
     up = np.array([-u[1], u[0]])
     label = f"{name} = {value_text(value)}"
@@ -117,8 +129,18 @@ def _straight(p1, p2, a, b, name: str, value: float, beyond: int,
         end, away = (b, u) if beyond else (a, -u)
         centre = end + away * (clear + width / 2.0) + lift
         kept.append(line([end, end + away * (2.0 * clear + width)], DIMENSIONS))
-    text = Text(label, (float(centre[0]), float(centre[1])), height, "cm", rotation, DIMENSIONS)
-    return parts + [text], kept, text
+    return Text(label, (float(centre[0]), float(centre[1])), height, "cm", rotation, DIMENSIONS), kept
+
+
+def _aligned_frame(p1: Pair, p2: Pair, offset: float, factor: float):
+    """An aligned dimension's points in reading order, its offset, its line's ends, its value
+    and whether p1, p2 were swapped."""
+    q1, q2, offset = reading_order(p1, p2, offset)
+    a1, a2 = np.asarray(q1), np.asarray(q2)
+    u = (a2 - a1) / float(np.hypot(*(a2 - a1)))
+    n = np.array([-u[1], u[0]]) * offset
+    value = factor * float(np.hypot(*(a2 - a1)))
+    return q1, q2, offset, a1, a2, n, value, not _close(q2, p2[:2])
 
 
 def aligned(p1: Pair, p2: Pair, offset: float, name: str, factor: float, clear: float = 2.0,
@@ -129,16 +151,36 @@ def aligned(p1: Pair, p2: Pair, offset: float, name: str, factor: float, clear: 
     ``outside``) goes beyond p2, ``clear`` mm from it; ``below``: the text under the line;
     ``along``: where along p1→p2 the text's middle is (as far as the arrows leave room);
     ``height``: the text's."""
-    q1, q2, offset = reading_order(p1, p2, offset)
-    a1, a2 = np.asarray(q1), np.asarray(q2)
-    u = (a2 - a1) / float(np.hypot(*(a2 - a1)))
-    n = np.array([-u[1], u[0]]) * offset
-    value = factor * float(np.hypot(*(a2 - a1)))
-    swapped = not _close(q2, p2[:2])
+    q1, q2, offset, a1, a2, n, value, swapped = _aligned_frame(p1, p2, offset, factor)
     parts, kept, text = _straight(a1, a2, a1 + n, a2 + n, name, value, 0 if swapped else 1, clear,
                                   outside, below, 1.0 - along if swapped else along, height)
     return Dimension("aligned", name, (q1, q2), factor, value, tuple(parts), text, tuple(kept),
                      offset=offset, height=height)
+
+
+class Sketch:
+    """An aligned dimension's candidate as its text alone, the whole :func:`aligned` built
+    when asked: the motion sheet's search costs hundreds of candidates of L3 by their text
+    and drops most before their lines count, and the picture (extension lines, arrows) was
+    three quarters of building one. ``text`` is the built one's, bit for bit (the same
+    code computes both)."""
+
+    __slots__ = ("text", "_args", "_built")
+
+    def __init__(self, p1: Pair, p2: Pair, offset: float, name: str, factor: float, clear: float = 2.0,
+                 outside: bool = False, below: bool = False, along: float = 0.5,
+                 height: float = TEXT_MM) -> None:
+        self._args = (p1, p2, offset, name, factor, clear, outside, below, along, height)
+        self._built: Dimension | None = None
+        _, _, _, a1, a2, n, value, swapped = _aligned_frame(p1, p2, offset, factor)
+        self.text = _straight_text(a1 + n, a2 + n, name, value, 0 if swapped else 1, clear, outside,
+                                   below, 1.0 - along if swapped else along, height)[0]
+
+    def dimension(self) -> Dimension:
+        """The candidate built: ``aligned`` of the same arguments."""
+        if self._built is None:
+            self._built = aligned(*self._args)
+        return self._built
 
 
 def _close(a: Sequence[float], b: Sequence[float]) -> bool:

@@ -15,6 +15,7 @@ from ezdxf.enums import TextEntityAlignment
 from . import dimensions as dims
 from .dxf import literal_text, new_document, save_dxf, text_attribs
 from .dxf_polyline import add_polyline
+from .dxf_text_entity import add_text
 from .outline_text import add_outline_text
 from .sheet import Circle, Polyline, Sheet, Text
 
@@ -74,8 +75,8 @@ def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
             add_outline_text(msp, item, to, k)
         elif isinstance(item, Text):
             for run in item.runs():        # a subscript is a smaller text of its own
-                text = msp.add_text(literal_text(run.text), height=run.height * k,
-                                    rotation=run.rotation, dxfattribs=text_attribs(item.layer))
+                text = add_text(msp, literal_text(run.text), run.height * k, run.rotation,
+                                text_attribs(item.layer))
                 text.set_placement(to(*run.position), align=ALIGNMENTS[run.align])
     zoom.window(msp, low, high)            # CAD opens on the whole sheet
     return doc

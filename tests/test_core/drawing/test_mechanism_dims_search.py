@@ -25,8 +25,9 @@ DESIGNS = {
 
 
 def _plain_best(self, candidates, extra=lambda dim: 0.0):
-    """The search before the cut: every candidate's whole cost, the first least."""
-    return min(candidates, key=lambda dim: self.cost(dim, extra(dim)))
+    """The search before the cut: every candidate's whole cost, the first least (built, where
+    the candidates are sketches)."""
+    return mechanism_dims._built(min(candidates, key=lambda dim: self.cost(dim, extra(dim))))
 
 
 def _sheet_and_own_lines(design, monkeypatch):
@@ -67,3 +68,46 @@ def test_an_unfinished_cost_is_never_below_the_whole():
         for beat in (0.0, whole, whole + 1.0, 1000.0, math.inf):
             cut = placed.cost(dim, 0.0, beat)
             assert cut == whole or (cut == math.inf and whole >= beat)
+
+
+@pytest.mark.parametrize("name", DESIGNS)
+def test_sketched_candidates_give_the_sheet_of_built_ones(name, monkeypatch):
+    """L3's candidates as ``sheet_dims.Sketch`` (their text; the picture built for the few
+    whose text leaves them a chance): the sheet is the one every candidate built with
+    ``aligned`` gives, and far fewer are built."""
+    design = DESIGNS[name]
+    made, built = [], []
+    make, build = sheet_dims.Sketch.__init__, sheet_dims.Sketch.dimension
+
+    def made_counted(self, *args, **kwargs):
+        made.append(1)
+        make(self, *args, **kwargs)
+
+    def built_counted(self):
+        built.append(1)
+        return build(self)
+    monkeypatch.setattr(sheet_dims.Sketch, "__init__", made_counted)
+    monkeypatch.setattr(sheet_dims.Sketch, "dimension", built_counted)
+    sketched = motion_sheet(design, 60.0, paper("A1"))
+    monkeypatch.setattr(sheet_dims, "Sketch", sheet_dims.aligned)      # each candidate whole
+    whole = motion_sheet(design, 60.0, paper("A1"))
+    assert pickle.dumps(sketched.sheet.items) == pickle.dumps(whole.sheet.items)    # bit for bit
+    assert pickle.dumps(sketched.dimensions) == pickle.dumps(whole.dimensions)
+    assert 0 < len(built) < 0.1 * len(made), (len(built), len(made))
+
+
+@pytest.mark.parametrize("outside", (False, True))
+@pytest.mark.parametrize("below", (False, True))
+@pytest.mark.parametrize("along", (0.02, 0.35, 0.5, 0.98))
+@pytest.mark.parametrize("turn", (0.0, 37.0, 90.0, 135.0, 200.0, 271.0))
+def test_a_sketch_is_the_text_of_its_dimension(turn, along, below, outside):
+    """A sketch's text is ``aligned``'s, for texts that fit their line or go beyond either end
+    (lines 8 and 150 mm long, every reading direction)."""
+    for length, offset in ((8.0, 10.0), (150.0, -17.0)):
+        t = math.radians(turn)
+        p, q = (31.7, 12.9), (31.7 + length * math.cos(t), 12.9 + length * math.sin(t))
+        args = (p, q, offset, "L3", 2.5)
+        sketch = sheet_dims.Sketch(*args, outside=outside, below=below, along=along, height=2.5)
+        whole = sheet_dims.aligned(*args, outside=outside, below=below, along=along, height=2.5)
+        assert pickle.dumps(sketch.text) == pickle.dumps(whole.text)
+        assert pickle.dumps(sketch.dimension()) == pickle.dumps(whole)
