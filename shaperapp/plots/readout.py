@@ -114,6 +114,9 @@ class Readout(QLabel):
             parts = [f"<b>{plot.series.name()}</b>", nbsp(self._source.x_text(x))]
             values = plot.values_at(x)
         else:
+            # read at the cursor now: a throttled read-out still pending would only write
+            # the same text again (after an edit, within the user's next keystroke)
+            self._timer.stop()
             plot = self._plot(self._key)
             xs = self._source.cursor_x(self._model.angle_index)
             x = xs if isinstance(xs, float) else next(iter(xs.values()), 0.0)

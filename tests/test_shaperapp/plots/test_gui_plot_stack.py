@@ -297,6 +297,21 @@ def test_readout_follows_the_cursor_when_the_mouse_is_away(qtbot, forces, model)
         assert f"{fmt(row[75], '.4g')} N·m" in forces.readout_text()
 
 
+
+def test_an_edit_reads_out_at_the_cursor_once(qtbot, forces, model):
+    """The edit's refresh reads at the cursor at once; the throttle's refresh it had also
+    started would only write the same text again 100 ms later, inside the next keystroke's
+    edit (issue 40 item 5: a third more read-outs than edits)."""
+    from core.forces.dynamics import solve_dynamics
+    from shaperapp.plots.readout import Readout
+    model.set_angle_index(40)
+    qtbot.waitUntil(lambda: "40.0" in forces.readout_text(), timeout=10_000)
+    model.set_masses(cut_force_N=7100.0)
+    assert not forces.findChild(Readout)._timer.isActive()
+    dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms, model.masses)
+    for row in dyn.crank_torque:
+        assert f"{fmt(row[40], '.4g')} N·m" in forces.readout_text()
+
 def test_readout_never_shows_negative_zero(qtbot, plots, model):
     model.set_angle_index(5)
     qtbot.wait(150)
