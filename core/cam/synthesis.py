@@ -188,15 +188,18 @@ def within_allowance(arm_mm: float, program: Program, allowance: Allowance, side
     smallest cam (:func:`smallest`) and the cam raised to clear its hub and the pivot boss
     (``build.raised``) are both chosen so."""
     ring = admissible(arm_mm, program, allowance, side)
-    if ring is None:
-        return None
+    return None if ring is None else _cut_until_within(arm_mm, program, allowance, side, pick, ring)
+
+
+def _cut_until_within(arm_mm: float, program: Program, allowance: Allowance, side: int,
+                      pick: Callable[[np.ndarray], np.ndarray | None], ring: np.ndarray) -> Follower | None:
+    """:func:`within_allowance` on the admissible polygon ``ring`` already found."""
     f = None
     for _ in range(CUTS):
         centre = pick(ring) if len(ring) else None
         if centre is None:
             return None
-        x, y = centre
-        f = Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side)
+        f = _follower(arm_mm, centre, side)
         peaks = pressure_peaks(f, program)
         if np.all(np.max(peaks.tan, axis=1) <= _allowed_tan(allowance)):
             break
@@ -204,13 +207,24 @@ def within_allowance(arm_mm: float, program: Program, allowance: Allowance, side
     return f
 
 
-def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
-    """The follower arrangement on ``side`` with the smallest base radius, or None: the
-    admissible centre nearest to the roller's lowest point (arm, 0)."""
+def _follower(arm_mm: float, centre: np.ndarray, side: int) -> Follower:
+    x, y = centre
+    return Follower(arm_mm, math.hypot(x, y), math.degrees(math.atan2(y, x)), side)
+
+
+def _nearest_pick(arm_mm: float) -> Callable[[np.ndarray], np.ndarray | None]:
+    """The choice of the smallest cam: the admissible centre nearest to the roller's
+    lowest point (arm, 0), or None beyond the search's reach."""
     def nearest(ring: np.ndarray) -> np.ndarray | None:
         x, y = _nearest(ring, np.array([arm_mm, 0.0]))
         return None if max(abs(x), abs(y)) >= REACH * arm_mm * (1.0 - 1e-9) else np.array([x, y])
-    return within_allowance(arm_mm, program, allowance, side, nearest)
+    return nearest
+
+
+def smallest(arm_mm: float, program: Program, allowance: Allowance, side: int) -> Follower | None:
+    """The follower arrangement on ``side`` with the smallest base radius, or None: the
+    admissible centre nearest to the roller's lowest point (arm, 0)."""
+    return within_allowance(arm_mm, program, allowance, side, _nearest_pick(arm_mm))
 
 
 def _allowed_tan(allowance: Allowance) -> np.ndarray:
@@ -236,7 +250,7 @@ def synthesize(arm_mm: float, program: Program, allowance: Allowance) -> Followe
     Kept for the last inputs (all frozen values): a class's students usually share the
     cam's data, and ``shaper class`` designs each row's cam (about 0.7 s a search) in
     one process before the students are forked; a refusal is not kept."""
-    found = [f for f in (smallest(arm_mm, program, allowance, s) for s in (1, -1)) if f is not None]
+    found = _smallest_of_both(arm_mm, program, allowance)
     if not found:
         raise DesignError("pressure", allowance.rise_deg,
                           f"is too small: no cam within {REACH:g} arm lengths keeps the pressure "
@@ -247,3 +261,34 @@ def synthesize(arm_mm: float, program: Program, allowance: Allowance) -> Followe
 def largest_roller(min_convex_mm: float) -> float:
     """The largest roller with the usual margin: r ≤ 0.8·ρmin and ρmin − r ≥ 3 mm."""
     return min(ROLLER_SHARE * min_convex_mm, min_convex_mm - MIN_PROFILE_RADIUS_MM)
+
+
+SURE_MM = 1e-6
+"""How much farther than the cam found a side's nearest admissible centre must be for
+that side to be left unpolished (mm, besides 1e-9 of the radius): far above the ~1e-12
+by which rounding can bring a cut polygon's corner outside the polygon it was cut from."""
+
+
+def _smallest_of_both(arm_mm: float, program: Program, allowance: Allowance) -> list[Follower]:
+    """:func:`smallest` of each side (those that have one), except a side that cannot win.
+
+    Why: polishing a side's candidate (its pressure peaks, a cut and again) was a fifth of
+    a cam edit. Cuts only shrink a side's polygon, so its final cam is never nearer than
+    its first choice; the side whose first choice is nearer is polished first, and the other
+    only if its first choice is not already farther than the cam found (by SURE_MM, so that
+    the nine-decimal comparison of :func:`synthesize` is the same as with both polished)."""
+    pick, starts = _nearest_pick(arm_mm), []
+    for side in (1, -1):
+        ring = admissible(arm_mm, program, allowance, side)
+        centre = None if ring is None or not len(ring) else pick(ring)
+        if centre is not None:
+            starts.append((_follower(arm_mm, centre, side).base_radius_mm, side, ring))
+    found: list[Follower] = []
+    for bound, side, ring in sorted(starts, key=lambda start: start[0]):
+        best = min((f.base_radius_mm for f in found), default=math.inf)
+        if bound > best + SURE_MM + 1e-9 * best:
+            continue
+        f = _cut_until_within(arm_mm, program, allowance, side, pick, ring)
+        if f is not None:
+            found.append(f)
+    return found
