@@ -19,12 +19,17 @@ def both_polished(arm_mm: float, program: Program, allowance: Allowance):
 
 
 def test_a_side_that_cannot_win_is_not_polished(monkeypatch):
-    polished = []
-    peaks = synthesis.pressure_peaks
+    """Neither its polygon of every condition (only that of a part, for the bound) nor its
+    pressure peaks are computed."""
+    polished, polygons = [], []
+    peaks, polygon = synthesis.pressure_peaks, synthesis._polygon
     monkeypatch.setattr(synthesis, "pressure_peaks", lambda f, p: polished.append(f.side) or peaks(f, p))
+    monkeypatch.setattr(synthesis, "_polygon", lambda h, c: polygons.append(len(h)) or polygon(h, c))
     program, allowance = Program(rise_deg=61.0), Allowance(40.0, 70.0)
     chosen = synthesize.__wrapped__(120.0, program, allowance)
     assert set(polished) == {chosen.side}
+    every = max(polygons)
+    assert polygons.count(every) == 1 and len(polygons) == 3      # both parts, one whole
     assert chosen == both_polished(120.0, program, allowance)
 
 
