@@ -280,12 +280,13 @@ def _smallest_of_both(arm_mm: float, program: Program, allowance: Allowance) -> 
     """:func:`smallest` of each side (those that have one), except a side that cannot win.
 
     Why: the losing side's polygon of all its conditions, its pressure peaks and cuts were
-    a third of a cam edit. A side's cam is never nearer than the nearest point of the
-    polygon of a part of its conditions (``_rows``, whose interior point is found first
-    anyway): that polygon holds the side's polygon, and cuts only shrink that. The side
-    nearer by that bound is synthesized first, as before, and the other only if its bound
-    is not already farther than the cam found (by SURE_MM, so that the nine-decimal
-    comparison of :func:`synthesize` is the same as with both synthesized)."""
+    about a quarter of the synthesis. A side's cam is never nearer than the nearest point
+    of the polygon of a part of its conditions (``_rows``, whose interior point is found
+    first anyway): that polygon holds the side's polygon, and cuts only shrink that. The
+    side nearer by that bound is synthesized first, each side exactly as :func:`smallest`
+    does, and the other only if its bound is not already farther than the cam found (by
+    SURE_MM, so that the nine-decimal comparison of :func:`synthesize` is the same as with
+    both synthesized)."""
     pick, sides = _nearest_pick(arm_mm), []
     for side in (1, -1):
         h = _halfspaces(arm_mm, TURN * side, program, _aim(allowance))
@@ -306,8 +307,11 @@ def _smallest_of_both(arm_mm: float, program: Program, allowance: Allowance) -> 
 def _bound(arm_mm: float, side: int, rows: np.ndarray, centre: np.ndarray | None,
            pick: Callable[[np.ndarray], np.ndarray | None]) -> float:
     """The base radius no cam on ``side`` is below: that of the nearest point of the
-    polygon of the conditions ``rows`` (0 when that polygon gives none)."""
+    polygon of the conditions ``rows`` to the roller's lowest point (arm, 0); 0 when that
+    polygon gives none, or holds that point (then its nearest edge bounds nothing)."""
     from scipy.spatial import QhullError
+    if centre is None or np.all(rows[:, :2] @ np.array([arm_mm, 0.0]) + rows[:, 2] <= 0.0):
+        return 0.0
     try:
         ring = _polygon(rows, centre)
     except QhullError:
