@@ -166,6 +166,7 @@ class CamPlots(QWidget):
             box.updateAutoRange()
             box.updateMatrix()
         self.fit_axes()
+        self._fit_timer.stop()      # the ranges' signals asked for the fit just made
         self.move_cursor()
 
     def _make_curves(self, rpms: tuple[float, ...]) -> None:

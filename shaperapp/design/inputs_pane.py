@@ -35,6 +35,7 @@ class InputsPane(QTabWidget):
         self.addTab(scrolled(self.form), "")
         self.addTab(scrolled(self.loads), "")
         self._warning = self.style().standardIcon(QStyle.StandardPixmap.SP_MessageBoxWarning)
+        self._marked: tuple[bool, bool] | None = None      # the tabs' warnings as last set
         model.errorChanged.connect(self._mark_errors)
         model.forcesErrorChanged.connect(self._mark_errors)
         self._retranslate()
@@ -44,8 +45,15 @@ class InputsPane(QTabWidget):
         self.setCurrentIndex(1)
 
     def _mark_errors(self, *_) -> None:
-        for index, error in ((0, self._model.error), (1, self._model.forces_error)):
-            self.setTabIcon(index, self._warning if error is not None else QIcon())
+        """The warning icons, set only when one comes or goes: every load edit announces
+        its (unchanged) error state, and setting a tab's icon re-lays out the tab bar, the
+        dock and the main window, and repaints the pane (a fifth of a Loads edit)."""
+        marked = (self._model.error is not None, self._model.forces_error is not None)
+        if marked == self._marked:
+            return
+        self._marked = marked
+        for index, error in enumerate(marked):
+            self.setTabIcon(index, self._warning if error else QIcon())
 
     def changeEvent(self, event: QEvent) -> None:
         if event.type() == QEvent.Type.LanguageChange:

@@ -79,6 +79,7 @@ class Readout(QLabel):
         self._timer.setInterval(READOUT_DELAY_MS)
         self._timer.timeout.connect(self.update_text)
         self._tip = ""
+        self._fitted = 0        # how many compact entries fitted last (the first guess next)
 
     def retranslate(self) -> None:
         # The stack's context: these texts were the stack's and keep their translations.
@@ -114,6 +115,9 @@ class Readout(QLabel):
             parts = [f"<b>{plot.series.name()}</b>", nbsp(self._source.x_text(x))]
             values = plot.values_at(x)
         else:
+            # read at the cursor now: a throttled read-out still pending would only write
+            # the same text again (after an edit, within the user's next keystroke)
+            self._timer.stop()
             plot = self._plot(self._key)
             xs = self._source.cursor_x(self._model.angle_index)
             x = xs if isinstance(xs, float) else next(iter(xs.values()), 0.0)
@@ -136,16 +140,29 @@ class Readout(QLabel):
             self.setText(full)
             self.setToolTip(self._tip)
             return
-        lo, hi = 0, len(values)          # the most entries that fit: a bisection
-        while lo < hi:
-            n = (lo + hi + 1) // 2
-            if self._text_height(readout_html(parts, title, unit, values[:n], True, len(values) - n)) <= room:
-                lo = n
-            else:
-                hi = n - 1
+        def fits(n: int) -> bool:
+            return self._text_height(readout_html(parts, title, unit, values[:n], True, len(values) - n)) <= room
+        lo = self._most_that_fit(fits, len(values))
         self.setText(readout_html(parts, title, unit, values[:lo], True, len(values) - lo))
         plain = QTextDocumentFragment.fromHtml(full).toPlainText().replace("\u2060", "")
         self.setToolTip(plain.replace("\u00a0", " ") + "\n\n" + self._tip)
+
+    def _most_that_fit(self, fits: Callable[[int], bool], count: int) -> int:
+        """The most entries (of ``count``) that fit: the number that fitted last if it
+        still does and one more does not (an edit or the cursor changes the values, not
+        their number: two layouts instead of a bisection's four or five), else a bisection."""
+        guess = min(self._fitted, count)
+        if (guess == 0 or fits(guess)) and (guess == count or not fits(guess + 1)):
+            return guess
+        lo, hi = 0, count
+        while lo < hi:
+            n = (lo + hi + 1) // 2
+            if fits(n):
+                lo = n
+            else:
+                hi = n - 1
+        self._fitted = lo
+        return lo
 
     def _text_height(self, html: str) -> float:
         """The height ``html`` takes in the read-out's present width."""

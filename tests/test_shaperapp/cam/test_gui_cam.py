@@ -108,6 +108,16 @@ def test_plots_are_cores_series(tab, model):
     assert np.max(y) == pytest.approx(max(cam.max_pressure_rise_deg, cam.max_pressure_return_deg), abs=0.05)
 
 
+
+def test_an_edit_fits_the_plots_axes_once(tab, model):
+    """The redraw fits the left axes to the new ranges itself; the fit the ranges' signals
+    queued would only do it again in the edit's paint (issue 40 item 5)."""
+    tab.cam_model.set_fields(rise=65.0)
+    plots = tab.plots
+    assert not plots._fit_timer.isActive()
+    width = max(math.ceil(plot.getAxis("left").needed_width()) for plot in plots.plots)
+    assert all(plot.getAxis("left").fixedWidth == width for plot in plots.plots)
+
 def test_exports_write_cores_numbers(tab, model, tmp_path):
     tab.export_csv(str(tmp_path / "cam.csv"))
     rows = list(csv.reader(open(tmp_path / "cam.csv")))

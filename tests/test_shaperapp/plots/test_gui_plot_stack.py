@@ -297,6 +297,37 @@ def test_readout_follows_the_cursor_when_the_mouse_is_away(qtbot, forces, model)
         assert f"{fmt(row[75], '.4g')} N·m" in forces.readout_text()
 
 
+
+def test_an_edit_reads_out_at_the_cursor_once(qtbot, forces, model):
+    """The edit's refresh reads at the cursor at once; the throttle's refresh it had also
+    started would only write the same text again 100 ms later, inside the next keystroke's
+    edit (issue 40 item 5: a third more read-outs than edits)."""
+    from core.forces.dynamics import solve_dynamics
+    from shaperapp.plots.readout import Readout
+    model.set_angle_index(40)
+    qtbot.waitUntil(lambda: "40.0" in forces.readout_text(), timeout=10_000)
+    model.set_masses(cut_force_N=7100.0)
+    assert not forces.findChild(Readout)._timer.isActive()
+    dyn = solve_dynamics(model.design, model.motion.crank_angle, model.rpms, model.masses)
+    for row in dyn.crank_torque:
+        assert f"{fmt(row[40], '.4g')} N·m" in forces.readout_text()
+
+
+def test_a_read_out_of_as_many_entries_as_before_lays_out_less(qtbot, forces, model, monkeypatch):
+    """16 speeds need the compact read-out; the next read-out (an edit, the cursor moving)
+    tries the number that fitted last and one more, not a whole bisection again (issue 40
+    item 5), and says what the bisection said."""
+    from shaperapp.plots.readout import Readout
+    model.set_rpms(SIXTEEN)
+    readout = forces.findChild(Readout)
+    qtbot.waitUntil(lambda: "N·m" in readout.toolTip(), timeout=10_000)     # compact: all in the tip
+    text, laid_out = readout.text(), []
+    original = readout._text_height
+    monkeypatch.setattr(readout, "_text_height", lambda html: laid_out.append(html) or original(html))
+    readout.update_text()
+    assert readout.text() == text
+    assert len(laid_out) <= 4, len(laid_out)
+
 def test_readout_never_shows_negative_zero(qtbot, plots, model):
     model.set_angle_index(5)
     qtbot.wait(150)

@@ -317,6 +317,21 @@ def test_loads_tab_warns_of_an_invalid_load(window):
     assert window.inputs.tabIcon(0).isNull()
 
 
+
+def test_a_load_edit_sets_a_tab_icon_only_when_a_warning_comes_or_goes(window, monkeypatch):
+    """Every load edit announces its error state; setting a tab's icon re-lays out the tab
+    bar, the dock and the window (issue 40 item 5: a fifth of a Loads edit), so a valid
+    edit after a valid one sets none."""
+    calls = []
+    original = window.inputs.setTabIcon
+    monkeypatch.setattr(window.inputs, "setTabIcon", lambda *a: calls.append(a[0]) or original(*a))
+    window.model.set_masses(cut_force_N=7100.0)
+    assert calls == []
+    window.model.set_masses(ram_mass_kg=-1.0)
+    assert calls == [0, 1] and not window.inputs.tabIcon(1).isNull()
+    window.model.set_masses(ram_mass_kg=50.0)
+    assert calls == [0, 1, 0, 1] and window.inputs.tabIcon(1).isNull()
+
 # ---- hidden panes wait (issue 8, item 8) -------------------------------------------------
 def test_a_hidden_results_pane_waits_until_shown(window):
     window.docks["results"].hide()
