@@ -15,7 +15,6 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-import time
 
 from PySide6.QtCore import QPoint, QRect, QRectF, QSettings, QSize, Qt
 from PySide6.QtGui import QImage, QPainter
@@ -175,6 +174,7 @@ def polygons_report(app: QApplication, window, angles: list[float]) -> list[dict
 def explore_report(app: QApplication, window) -> dict:
     """The Explore tab after its first map: the map's height against the tab's, the colour
     bar's title and every tick label's box against the map's view (scene px)."""
+    import time
     view = window.explore
     window.tabs.setCurrentWidget(view)
     deadline = time.monotonic() + 60
@@ -199,8 +199,6 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--speeds", action="append", default=[])
     parser.add_argument("--resize", help="WxH before closing (to save that geometry)")
     parser.add_argument("--library", action="store_true", help="then show the library pane and report it")
-    parser.add_argument("--before-quiet", action="store_true",
-                        help="keep the hidden views unbuilt, as in the window's first second")
     parser.add_argument("--compare", action="store_true", help="then compare two designs and report the plots")
     parser.add_argument("--stacks", action="store_true", help="report the plots of each case")
     parser.add_argument("--variant", help="the ram drive (block, rod)")
@@ -216,13 +214,6 @@ def main(argv: list[str]) -> int:
     window.set_language(args.lang)
     window.show()
     settle(app)
-    if args.before_quiet:
-        window._quiet_build.stop()
-    else:       # the window as the user sees it once it has been left alone for a second
-        window._quiet_build.timeout.emit()
-        deadline = time.monotonic() + 60
-        while not all(page.is_ready() for page in window._pages.values()) and time.monotonic() < deadline:
-            settle(app, 1)
     report = {"screen": rect(window.screen().availableGeometry()), "language": args.lang, "cases": []}
     if args.variant:
         window.model.set_spec(variant=args.variant)

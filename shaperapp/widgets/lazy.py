@@ -5,8 +5,7 @@ plots, tables and the modules behind them) made up about a fifth of the time
 to the first window (issue 24). A ``LazyPage`` stands in the tab or dock and
 builds its view from a factory the first time it is shown, the first time
 code asks for the view (``view()``), or once the window is on screen
-(``build_when_quiet``: once the user has left it alone for a second),
-whichever comes first. The factory may
+(``build_when_idle``), whichever comes first. The factory may
 import the view's module, so that nothing the first screen does not show is
 imported before it.
 
@@ -21,7 +20,7 @@ from typing import Callable, Sequence
 
 import shiboken6
 
-from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt, QTimer, Signal, SignalInstance
+from PySide6.QtCore import QCoreApplication, QEvent, QTimer, Signal
 from PySide6.QtWidgets import QTabWidget, QVBoxLayout, QWidget
 
 from .guards import guard_wheel
@@ -129,9 +128,9 @@ class ViewTabs(QTabWidget):
 
 def build_when_idle(pages: Sequence[LazyPage]) -> None:
     """Build ``pages`` one per turn of the event loop, from the next turn on: called once
-    the window has been left alone (``build_when_quiet``), so the views come in while the
-    user looks at the screen, and the window's minimum size is that of every view again,
-    as it was when all were built at start-up. Then, one per turn again, each page catches up while hidden
+    the window is painted, so the views come in while the user looks at the first screen,
+    and the window's minimum size is that of every view again, as it was when all were
+    built at start-up. Then, one per turn again, each page catches up while hidden
     (``LazyPage.catch_up``): every view is built before any draws."""
     waiting = [page for page in pages if not page.is_ready()]
 
@@ -154,41 +153,6 @@ def build_when_idle(pages: Sequence[LazyPage]) -> None:
             QTimer.singleShot(0, alive[0], next_page)
 
     _queue()
-
-
-# The window builds its hidden views once the user has left it alone this long. Why not at
-# the first paint: building the eight views costs 0.3-0.7 s of CPU, which a window opened
-# and worked in for a moment (a test's, or a user's who edits at once) paid even though it
-# never showed them; a view asked for sooner is built then, as before.
-QUIET_MS = 1000
-
-
-def build_when_quiet(owner: QObject, pages: Sequence[LazyPage], edits: Sequence[SignalInstance],
-                     quiet_ms: int = QUIET_MS) -> QTimer:
-    """``build_when_idle(pages)`` once ``quiet_ms`` pass with none of ``edits`` emitted
-    (each restarts the wait). The timer is returned (owned by ``owner``, so it stops
-    with it); ``timeout.emit()`` on it builds them now."""
-    timer = QTimer(owner)
-    timer.setSingleShot(True)
-    timer.setTimerType(Qt.TimerType.PreciseTimer)    # a second, not Qt's coarse 5 % more
-    timer.setInterval(quiet_ms)
-    started: list[bool] = []
-
-    def build() -> None:
-        timer.stop()
-        if not started:
-            started.append(True)
-            build_when_idle(pages)
-
-    def restart(*_args: object) -> None:
-        if timer.isActive():
-            timer.start()
-
-    timer.timeout.connect(build)
-    for signal in edits:
-        signal.connect(restart)
-    timer.start()
-    return timer
 
 
 def lay_out_page(widget: QWidget) -> None:

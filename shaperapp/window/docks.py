@@ -10,8 +10,6 @@ and the vector diagrams under the mechanism, all shown at once.
 """
 from __future__ import annotations
 
-from typing import Callable
-
 from PySide6.QtCore import QCoreApplication, QRect, QSize, Qt, QTimer
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QStackedWidget, QWidget
 
@@ -51,10 +49,8 @@ def _titles() -> dict[str, str]:
 class Docks:
     """One QDockWidget per pane, named for saveState (``<name>Dock``)."""
 
-    def __init__(self, window: QMainWindow, panes: dict[str, QWidget],
-                 build_views: Callable[[], object] = lambda: None) -> None:
+    def __init__(self, window: QMainWindow, panes: dict[str, QWidget]) -> None:
         self._window = window
-        self._build_views = build_views     # the window's views that its minimum size counts
         self.docks: dict[str, QDockWidget] = {}
         self._sizes: tuple[QSize, bool] | None = None
         for name in NAMES:
@@ -89,8 +85,7 @@ class Docks:
         """The library shown docked above or below the plots is checked once laid out."""
         dock, w = self.docks["library"], self._window
         if shown and not dock.isFloating() and w.dockWidgetArea(dock) in (BOTTOM, TOP):
-            self.pane("library")        # built now if it was not, so that its size counts,
-            self._build_views()         # and so is every view the window may not have built yet
+            self.pane("library")        # built now if it was not, so that its size counts
             QTimer.singleShot(0, w, self._fit_library)    # dropped if the window goes first
 
     def _fit_library(self) -> None:

@@ -28,7 +28,7 @@ from shaperapp.scheme.view import SchemeWidget
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets import i18n
 from shaperapp.widgets.guards import ShortcutGuard, guard_wheel
-from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_quiet
+from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
 from shaperapp.widgets.messages import describe
 
 from . import state as window_state
@@ -81,8 +81,7 @@ class MainWindow(QMainWindow):
         column.addWidget(self.animation)
         self.setCentralWidget(central)
         self.docks = Docks(self, {"inputs": self.inputs, "results": self.metrics, "mechanism": self.scheme,
-                                  "polygons": self._pages["polygons"], "library": self._pages["library"]},
-                           lambda: [page.view() for page in self._pages.values()])
+                                  "polygons": self._pages["polygons"], "library": self._pages["library"]})
         self.library_dock = self.docks["library"]
 
         self._build_actions()
@@ -154,10 +153,9 @@ class MainWindow(QMainWindow):
 
     def paintEvent(self, event) -> None:
         super().paintEvent(event)
-        if not self._idle_build_started:    # the first screen is up: build the rest once quiet
+        if not self._idle_build_started:    # the first screen is up: build the rest meanwhile
             self._idle_build_started = True
-            self._quiet_build = build_when_quiet(self, list(self._pages.values()),
-                                                 (self.model.resultsChanged,))
+            build_when_idle(list(self._pages.values()))
 
     flush_typing = staticmethod(flush_typing)
 

@@ -6,10 +6,9 @@ import os
 import subprocess
 import sys
 
-from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QApplication, QLabel, QSpinBox, QVBoxLayout, QWidget
 
-from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle, build_when_quiet
+from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
 
 
 def _counting_factory(made: list):
@@ -150,44 +149,6 @@ def test_idle_build_leaves_a_closed_window_alone(qtbot):
     holder.close()
     qtbot.wait(200)
     assert made == []
-
-
-class _Edits(QObject):
-    edited = Signal()
-
-
-def test_quiet_build_waits_for_the_quiet_then_builds_every_page(qtbot):
-    """The window's hidden views are built once the user has left it alone (QUIET_MS),
-    not at its first paint: before the wait ends nothing is built, however often the
-    event loop turns; when it ends, every page is built and caught up as by the idle
-    build; it does not start again."""
-    made: list = []
-    holder, pages = _hidden_pages(qtbot, made)
-    edits = _Edits()
-    timer = build_when_quiet(holder, pages, (edits.edited,), quiet_ms=3_600_000)
-    for _ in range(20):
-        QApplication.processEvents()
-    assert made == [] and timer.isActive()
-    timer.timeout.emit()                                # the hour has passed
-    assert not timer.isActive()
-    qtbot.waitUntil(lambda: all(p.is_ready() for p in pages), timeout=10_000)
-    assert len(made) == 3
-    edits.edited.emit()                                 # an edit after it starts nothing
-    timer.timeout.emit()
-    qtbot.wait(50)
-    assert len(made) == 3 and not timer.isActive()
-
-
-def test_an_edit_restarts_the_quiet_wait(qtbot):
-    made: list = []
-    holder, pages = _hidden_pages(qtbot, made)
-    edits = _Edits()
-    timer = build_when_quiet(holder, pages, (edits.edited,), quiet_ms=600_000)
-    qtbot.wait(300)
-    waited = timer.remainingTime()
-    assert 0 < waited < 600_000 - 200
-    edits.edited.emit()
-    assert timer.remainingTime() > waited and timer.isActive() and made == []
 
 
 def _run_probe(code: str, tmp_path, *args: str) -> list[str]:

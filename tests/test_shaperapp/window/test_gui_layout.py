@@ -398,10 +398,8 @@ def test_library_pane_fits_the_screen(tmp_path, width, height, floats):
     """Docked under the plots, the library made a 1366×768 window 810 px tall (its status
     bar and animation bar off the screen) and left its list no row. On a short screen it
     now floats over the window; where there is room it stays docked; either way the
-    window stays on the screen and the list has room for rows. The library is opened
-    before the window has built its hidden views (in its first second): the window's
-    minimum size counts a view only once built, so the decision builds them first."""
-    report = probe(tmp_path, width, height, "--speeds", "40,60", "--library", "--before-quiet")
+    window stays on the screen and the list has room for rows."""
+    report = probe(tmp_path, width, height, "--speeds", "40,60", "--library")
     library = report["library"]
     assert library["floating"] is floats
     assert inside(report["screen"], library["frame"]), library
