@@ -187,12 +187,16 @@ def test_an_interrupted_shared_run_leaves_neither_file_nor_child(tmp_path, sig):
     file and no child computing on: a child's pipe has no reader any more."""
     target = tmp_path / "marker-out.csv"
     child = subprocess.Popen([sys.executable, "-m", "core", "curves", "--crank", "100", "--K", "1.4",
-                              "--stroke", "300", "--rpm", *map(str, range(30, 46)), "--step", "0.01",
+                              "--stroke", "300", "--rpm", *map(str, range(30, 46)), "--step", "0.003",
                               "--csv", str(target)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 60
     while not list(tmp_path.iterdir()) and time.monotonic() < deadline:   # writing has begun
         time.sleep(0.01)
     time.sleep(0.2)
+    # the premise: still at work. 16 speeds at 0.003°, near the 2e6 samples cap, take some
+    # 4 s quiet; at 0.01° (1.3 s) the run finished between its first file and the signal
+    # on CI's loaded workers
+    assert child.poll() is None
     child.send_signal(sig)
     child.wait(timeout=60)
     deadline = time.monotonic() + 10

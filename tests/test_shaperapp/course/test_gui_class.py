@@ -55,6 +55,10 @@ def test_the_rows_are_shown_with_their_errors_before_running(qtbot, class_files)
 def test_cancel_leaves_only_complete_files(qtbot, class_files):
     from shaperapp.course.class_dialog import ClassDialog
     tasks, base, out = class_files
+    # eight students: with three, a loaded CI worker saw the whole class written between
+    # the first PDF and the cancel; eight cannot be, the two being written finish
+    tasks.write_text("student,student-number,crank,K\n"
+                     + "".join(f"S{i},{i},{95 + i},1.4\n" for i in range(1, 9)), encoding="utf-8")
     dialog = ClassDialog("en")
     qtbot.addWidget(dialog)
     dialog.tasks.setText(str(tasks))
@@ -63,7 +67,7 @@ def test_cancel_leaves_only_complete_files(qtbot, class_files):
     dialog.sheet.setCurrentText("A3")
     dialog.check()
     dialog.run()
-    assert dialog.progress.maximum() == 3
+    assert dialog.progress.maximum() == 8
     qtbot.waitUntil(lambda: any(out.glob("*/*.pdf")), timeout=300_000)
     dialog.cancel()
     qtbot.waitUntil(lambda: dialog._process is None, timeout=300_000)
