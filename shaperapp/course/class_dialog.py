@@ -22,6 +22,7 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, 
                                QTableWidgetItem, QVBoxLayout, QWidget)
 
 from core.drawing.sheet import PAPERS
+from shaperapp.widgets.child_signals import children_take_sigint
 
 translate = QCoreApplication.translate
 BAD = QColor(255, 220, 220)
@@ -182,7 +183,8 @@ class ClassDialog(QDialog):
         self._process = process
         self._errors = ""
         process.readyReadStandardError.connect(self._read_errors)
-        process.start()
+        with children_take_sigint():     # Cancel is a SIGINT: the child must take it
+            process.start()
         self._update_run()
         self.summary.setText(translate("ClassDialog", "Writing the class's files…"))
 

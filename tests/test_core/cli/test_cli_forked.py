@@ -20,6 +20,8 @@ from core.linkage.kinematics import crank_angles, solve
 from core.linkage.spec import Spec
 from output_checks import as_golden_wrote
 
+from shaperapp.widgets.child_signals import children_take_sigint
+
 GOLDEN = json.loads((Path(__file__).parents[2] / "data" / "csv_golden.json").read_text())
 PARENT = os.getpid()
 
@@ -186,9 +188,12 @@ def test_an_interrupted_shared_run_leaves_neither_file_nor_child(tmp_path, sig):
     """Stopped mid-table (Ctrl-C, or killed), the command leaves no file, no temporary
     file and no child computing on: a child's pipe has no reader any more."""
     target = tmp_path / "marker-out.csv"
-    child = subprocess.Popen([sys.executable, "-m", "core", "curves", "--crank", "100", "--K", "1.4",
-                              "--stroke", "300", "--rpm", *map(str, range(30, 46)), "--step", "0.003",
-                              "--csv", str(target)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    # started as from a terminal, SIGINT at its default: a suite run as a background job
+    # (CI) ignores it, and an ignored SIGINT is inherited, so Ctrl-C would not be one
+    with children_take_sigint():
+        child = subprocess.Popen([sys.executable, "-m", "core", "curves", "--crank", "100", "--K", "1.4",
+                                  "--stroke", "300", "--rpm", *map(str, range(30, 46)), "--step", "0.003",
+                                  "--csv", str(target)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 60
     while not list(tmp_path.iterdir()) and time.monotonic() < deadline:   # writing has begun
         time.sleep(0.01)
