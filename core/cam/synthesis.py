@@ -290,8 +290,9 @@ def _smallest_of_both(arm_mm: float, program: Program, allowance: Allowance) -> 
     pick, sides = _nearest_pick(arm_mm), []
     for side in (1, -1):
         h = _halfspaces(arm_mm, TURN * side, program, _aim(allowance))
-        first = _chebyshev(h[_rows(h)])
-        sides.append((_bound(arm_mm, side, h[_rows(h)], first, pick), side, h, first))
+        rows = h[_rows(h)]
+        first = _chebyshev(rows)
+        sides.append((_bound(arm_mm, side, rows, first, pick), side, h, first))
     found: list[Follower] = []
     for bound, side, h, first in sorted(sides, key=lambda s: s[0]):
         best = min((f.base_radius_mm for f in found), default=math.inf)

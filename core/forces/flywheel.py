@@ -32,10 +32,11 @@ from core.linkage.kinematics import needs_crowding, sharp_angles
 # hypothesis corners found 1.3e-3 at 0.854). Below it the 90 cells resolve the torque.
 LEVER_WHIP_RATIO = 0.7
 
-# Offsets (rad) of the crowding samples about each sharp angle for a whipping lever: halving
-# from 0.1 rad (a bit over one 4° cell) down to 1.2e-5 rad, so that extrema 0.5 … 3° from a
-# sharp angle each get a cell of their own (CROWD_OFFSETS, fifths from 0.05 rad, leave a gap
-# from 0.57° to 2.9°; they stay where only the rod comes near upright, at their cost).
+# Offsets (rad) of the torque's crowding samples about each sharp angle, for a whipping lever
+# and for a rod near upright alike: halving from 0.1 rad (a bit over one 4° cell) down to
+# 1.2e-5 rad, so that extrema 0.5 … 3° from a sharp angle each get a cell of their own
+# (the kinematics' CROWD_OFFSETS, fifths from 0.05 rad, leave a gap from 0.57° to 2.9°: a
+# whipping lever's torque extrema fell in it, and a 45.7 mm rod's peak under a 1150 mm lever).
 WHIP_OFFSETS = np.concatenate([-(0.1 * 2.0 ** -np.arange(0, 14)), [0.0],
                                (0.1 * 2.0 ** -np.arange(0, 14))[::-1]])
 
@@ -50,8 +51,6 @@ def lever_whips(d: Designs) -> np.ndarray:
 def crowd_offsets(d: Designs) -> np.ndarray | None:
     """The offsets (rad) of the torque's samples crowding toward the sharp angles for a
     chunk of designs, or None where none of them needs any (one size for the whole chunk)."""
-    # WHIP_OFFSETS for a rod near upright too: CROWD_OFFSETS' gaps missed a 45.7 mm rod's
-    # torque peak under a 1150 mm lever by 5e-5 of it (CI's hypothesis, 30 November)
     if lever_whips(d).any() or needs_crowding(d).any():
         return WHIP_OFFSETS
     return None
