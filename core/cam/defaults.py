@@ -1,8 +1,10 @@
-"""The cam form's default hub, boss, clearance and return allowance, without the cam's code.
+"""The cam form's default hub, boss, clearance and return allowance, and the motion laws'
+names, without the cam's code.
 
 Why a module of its own: the window's cam model (its form's defaults) needs these four
-numbers at start-up, and the cam's solver, synthesis and timing (with scipy on first
-use) are imported only when a cam is first computed (issue 43 item 5).
+numbers at start-up, ``shaper cam --help`` prints them and the laws' names, and the cam's
+solver, synthesis and timing (with scipy on first use) are imported only when a cam is
+first computed (issue 43 item 5).
 """
 from __future__ import annotations
 
@@ -19,3 +21,6 @@ RETURN_PRESSURE_DEG = 70.0
 closed by its spring (or the groove), so the return can take a much larger pressure angle
 than the working rise: the textbooks allow [α′] = 70°–80° there against 30°–45° on the
 rise of an oscillating follower; 70° is the cautious end."""
+
+LAWS = ("parabolic", "cosine", "sine", "poly345")
+"""The motion laws of a rise or a return, by the names a design file and ``--law`` use."""

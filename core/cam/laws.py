@@ -15,8 +15,8 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from core.base.errors import DesignError, require_range
+from .defaults import LAWS  # noqa: F401  (imported from here too)
 
-LAWS = ("parabolic", "cosine", "sine", "poly345")
 MIN_SWING_DEG, MAX_SWING_DEG = 1.0, 60.0
 """Follower swing ψmax, degrees: a feed arm swings 10°–30°; these bounds keep the data
 sheet's values with a wide margin and refuse what is surely a slip."""

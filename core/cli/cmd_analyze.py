@@ -2,15 +2,16 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from core.base.figure_text import figure_text
-from core.linkage.geometry import Design
-from core.files.io import finite_or_none
-from core.linkage.metrics import CycleMetrics, SpeedMetrics, analyze
 from .cmd_synth import design_summary
 from .common import add_design_options, add_speed_options, design_from_args, rpms_from_args
 from .output import print_json, print_table
+
+if TYPE_CHECKING:
+    from core.linkage.geometry import Design
+    from core.linkage.metrics import CycleMetrics, SpeedMetrics
 
 HELP = "cycle metrics per crank speed"
 DESCRIPTION = ("Measured K and stroke, working and return angles and times, maximum cutting and "
@@ -27,6 +28,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def metrics_summary(design: Design, metrics: CycleMetrics) -> dict[str, Any]:
+    from core.files.io import finite_or_none
     out = design_summary(design)
     out.update({
         "K": metrics.time_ratio,
@@ -76,6 +78,7 @@ def speed_rows(s: SpeedMetrics) -> list[tuple[str, str]]:
 
 def json_document(args: argparse.Namespace) -> dict[str, Any]:
     """What ``--json`` prints (``shaper class``'s answer key holds it for each student)."""
+    from core.linkage.metrics import analyze
     design = design_from_args(args)
     return metrics_summary(design, analyze(design, rpms_from_args(args)))
 
@@ -84,6 +87,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(json_document(args))
         return 0
+    from core.linkage.metrics import analyze
     design = design_from_args(args)
     metrics = analyze(design, rpms_from_args(args))
     print_table(cycle_rows(metrics))

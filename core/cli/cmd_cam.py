@@ -2,16 +2,17 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
-from ..cam import LAWS, Cam, CamInputs, Program, design_cam
-from ..cam.cam import RETURN_PRESSURE_DEG
-from ..cam.file import cam_from_dict, cam_to_dict
-from ..cam.table import cam_summary, cam_table, follower_peaks
+from ..cam.defaults import LAWS, RETURN_PRESSURE_DEG
 from core.base.errors import DesignError
-from core.linkage.kinematics import MAX_RPM, MIN_RPM, crank_angles
+from core.linkage.limits import MAX_RPM, MIN_RPM
 from .common import (UsageError, add_design_options, design_error_text, design_file,
                      design_from_args, number)
 from .output import OutputError, print_json, print_table
+
+if TYPE_CHECKING:
+    from ..cam import Cam, CamInputs
 
 HELP = "the feed cam: base radius, centre distance, profile"
 DESCRIPTION = ("The table's feed cam, a disc cam with an oscillating roller follower on the crank's "
@@ -107,6 +108,8 @@ OPTIONAL = (("--return-pressure", "return_pressure", "return_pressure_deg"), ("-
 
 def _inputs(args: argparse.Namespace) -> tuple[CamInputs, float | None]:
     """The cam's inputs and phase: the options over the ``--design`` file's cam (if any)."""
+    from ..cam import CamInputs, Program
+    from ..cam.file import cam_from_dict, cam_to_dict
     doc = design_file(args)
     saved = cam_to_dict(*cam_from_dict(doc["cam"])) if doc is not None and doc.get("cam") else {}
     values = {}
@@ -168,6 +171,7 @@ def cam_from_inputs(given: tuple[CamInputs, float | None], design, idle: float,
                     args: argparse.Namespace | None = None) -> Cam:
     """The cam synthesized (or checked) and timed against ``design`` (UsageError naming the
     option, or the design file for a value of its cam, when ``args`` are given)."""
+    from ..cam import design_cam
     try:
         return design_cam(given[0], design, idle, given[1])
     except DesignError as exc:
@@ -204,6 +208,7 @@ def json_document(args: argparse.Namespace) -> dict:
 
 
 def _summary(cam: Cam, rpm: float) -> dict:
+    from ..cam.table import cam_summary, follower_peaks
     summary = cam_summary(cam)
     summary.update(follower_peaks(cam, rpm))
     return summary
@@ -211,6 +216,7 @@ def _summary(cam: Cam, rpm: float) -> dict:
 
 def _cam_at(args: argparse.Namespace):
     """The cam of the options, its speed and the CSV's cam angles (UsageError naming one)."""
+    from core.linkage.kinematics import crank_angles
     linked = any(getattr(args, d, None) is not None for d in DESIGN_DESTS)
     if args.phase is not None and not linked:
         raise UsageError("--phase: give a design (--crank/--K/--stroke, --dims or --design) to time the cam")
@@ -231,6 +237,7 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
     cam, rpm, angles = _cam_at(args)
     if args.csv is not None:          # block by block: 1.8 million rows at the finest step
+        from ..cam.table import cam_table
         from .streaming import write_table
         write_table("--csv", args.csv, "computing the cam", lambda delta, n: cam_table(cam, delta, n),
                     angles, [rpm])

@@ -2,14 +2,14 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
-import numpy as np
-
-from core.files.io import curve_table
-from core.linkage.kinematics import solve
 from .common import (add_angle_options, add_design_options, add_speed_options, design_from_args,
                      request_from_args)
 from .streaming import write_table
+
+if TYPE_CHECKING:
+    import numpy as np
 
 HELP = "ram and lever motion over the cycle, as CSV"
 DESCRIPTION = ("Ram displacement, velocity and acceleration, lever angle, angular velocity and "
@@ -29,6 +29,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from core.files.io import curve_table
+    from core.linkage.kinematics import solve
     design = design_from_args(args)
     angles, rpms = request_from_args(args)
 

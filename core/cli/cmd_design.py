@@ -13,14 +13,16 @@ from __future__ import annotations
 import argparse
 import json
 from dataclasses import replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from core.base.errors import DesignError
-from core.linkage.spec import Spec
 from .common import (UsageError, add_design_options, add_load_options, add_speed_options,
                      design_error_text, design_file, given_text, number, rpms_from_args,
                      spec_from_args, spec_option)
 from .common import _apply_mechanism_options  # the mechanism options laid over a spec
+
+if TYPE_CHECKING:
+    from core.linkage.spec import Spec
 
 HELP = "write a design file from the options (no GUI needed)"
 DESCRIPTION = ("Write a design file (the GUI opens it; every --design option reads it) from the "

@@ -2,22 +2,22 @@
 from __future__ import annotations
 
 import argparse
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from core.base.figure_text import figure_text
-from core.forces.dynamics import DynamicsSummary, SpeedSummary, solve_dynamics
-from core.forces.masses import MassProperties
-
-from core.forces.flywheel import summarize
-from core.linkage.geometry import Design
-from core.files.dynamics_io import dynamics_table, summary_document
 from .cmd_synth import design_summary
 from .common import (UsageError, add_angle_options, add_design_options, add_load_options, add_speed_options,
                      design_from_args, request_from_args)
 from .loads import masses_from_args
 from .output import print_json, print_table
 from .streaming import write_table
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from core.forces.dynamics import DynamicsSummary, SpeedSummary
+    from core.forces.masses import MassProperties
+    from core.linkage.geometry import Design
 
 HELP = "joint forces, crank torque, power and flywheel"
 DESCRIPTION = ("Kinetostatic analysis at constant crank speed: the crank's driving torque, power, "
@@ -39,6 +39,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def json_document(args: argparse.Namespace) -> dict:
     """What ``--json`` prints without ``--csv`` (``shaper class``'s answer key holds it)."""
+    from core.forces.flywheel import summarize
     design = design_from_args(args)
     masses = masses_from_args(args, design, required=True)
     _, rpms = request_from_args(args)
@@ -46,12 +47,16 @@ def json_document(args: argparse.Namespace) -> dict:
 
 
 def summary_json(design: Design, summary: DynamicsSummary) -> dict:
+    from core.files.dynamics_io import summary_document
     doc = design_summary(design)
     doc.update(summary_document(summary, design))
     return doc
 
 
 def run(args: argparse.Namespace) -> int:
+    from core.files.dynamics_io import dynamics_table
+    from core.forces.dynamics import solve_dynamics
+    from core.forces.flywheel import summarize
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
     if args.json and args.csv is None:

@@ -22,10 +22,8 @@ from core.library.query import QueryError
 from core.library.backup import backup_copy
 from core.library.store import ENV_VAR, LibraryError
 
-from core.space.compare import value_text
 from core.base.errors import FileFormatError, os_reason
 from core.space.figures import DESIGN_FIGURES, SPEED_FIGURES
-from core.linkage.kinematics import check_rpms, crank_angles
 from core.base.text import terminal_text
 from ..library import Entry, Library
 from .cmd_library_check import check_options, run_check
@@ -186,6 +184,7 @@ def _open(args: argparse.Namespace, create: bool = True) -> Library:
 
 
 def _run_add(args: argparse.Namespace) -> int:
+    from core.linkage.kinematics import check_rpms, crank_angles
     spec = spec_from_args(args)
     design = spec.design()
     rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
@@ -211,6 +210,7 @@ def _entry_document(entry: Entry) -> dict[str, Any]:
 
 
 def _run_show(args: argparse.Namespace) -> int:
+    from core.space.compare import value_text
     with _open(args, create=False) as lib:
         entry = lib.get(args.name)
     entry.document()          # a document that cannot be opened is refused, as compare and export do

@@ -6,17 +6,16 @@ by side at one speed, as a table of figures and overlay curves (``core.space.com
 from __future__ import annotations
 
 import argparse
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
 from core.library.names import file_stem, unique_name
-
-from core.space.compare import (Candidate, compare, comparison_json, curves_csv_chunks, difference_text, table_csv,
-                       value_text)
 from core.base.errors import DesignError, FileFormatError
-from core.files.io import load_design
 from ..library import Library
 from .common import UsageError, library_path, note_read_only, number
 from .output import write_output
+
+if TYPE_CHECKING:
+    from core.space.compare import Candidate
 
 
 def compare_options(p: argparse.ArgumentParser) -> None:
@@ -39,6 +38,8 @@ def load_candidates(library: str | None, names: Sequence[str], files: Sequence[s
 
     LibraryError for the library or a missing name; UsageError naming ``file_option``
     for a file that cannot be read."""
+    from core.files.io import load_design
+    from core.space.compare import Candidate
     candidates: list[Candidate] = []
     first_rpm = None
     if names:
@@ -60,6 +61,7 @@ def load_candidates(library: str | None, names: Sequence[str], files: Sequence[s
 
 
 def run_compare(args: argparse.Namespace) -> int:
+    from core.space.compare import comparison_json, compare, curves_csv_chunks, table_csv
     candidates, first_rpm = load_candidates(args.library, args.names, args.files)
     if not 2 <= len(candidates) <= 6:
         raise UsageError(f"NAME: compare 2 to 6 designs (got {len(candidates)})")
@@ -82,6 +84,7 @@ def run_compare(args: argparse.Namespace) -> int:
 
 
 def print_comparison(result) -> None:
+    from core.space.compare import difference_text, value_text
     labels = result.labels
     head = ["figure"] + list(labels)
     cells = [head, ["rpm"] + [f"{result.rpm:g}"] * len(labels)]

@@ -2,16 +2,19 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from core.base.errors import DesignError
-from core.linkage.geometry import Design
-from core.space.optimize import OBJECTIVES, Optimum, no_gain_text, on_bounds, optimize
-from core.space.sweep import PARAMETERS, Evaluation
+from core.space.names import OBJECTIVES, PARAMETERS
 from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
 from .common import add_design_options, add_load_options, add_speed_options
 from .output import print_json, print_table
+
+if TYPE_CHECKING:
+    from core.linkage.geometry import Design
+    from core.space.optimize import Optimum
+    from core.space.sweep import Evaluation
 
 HELP = "find the design that minimizes an objective"
 DESCRIPTION = ("Search the varied parameters within their bounds for the design with the smallest "
@@ -40,6 +43,7 @@ def optimum_document(best: Optimum, typed: list[str],
                      ends: dict[str, str] | None = None) -> dict[str, Any]:
     """Objective, the optimal design (keys of ``shaper synth --json``) and its figures;
     ``on_bound``: the varied parameters (as typed) whose optimum is an end of its range."""
+    from core.space.optimize import no_gain_text
     ev = best.evaluation
     doc: dict[str, Any] = {
         "objective": best.objective,
@@ -58,6 +62,7 @@ def optimum_document(best: Optimum, typed: list[str],
 
 
 def _design(ev: Evaluation) -> Design:
+    from core.linkage.geometry import Design
     d = ev.designs
     return Design(crank=float(d.crank[0]), frame=float(d.frame[0]), lever=float(d.lever[0]),
                   guide=float(d.guide[0]), rod=None if d.rod is None else float(d.rod[0]),
@@ -65,6 +70,7 @@ def _design(ev: Evaluation) -> Design:
 
 
 def run(args: argparse.Namespace) -> int:
+    from core.space.optimize import on_bounds, optimize
     spec, varied, rpms, masses = inputs(args, with_count=False)
     bounds = {PARAMETERS[n]: b for n, b in varied.items()}
     best = optimize(spec, bounds, args.objective, rpms, masses)

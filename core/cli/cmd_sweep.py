@@ -5,20 +5,22 @@ import argparse
 import json
 import math
 import sys
-from typing import Any, Callable, Iterator
-
-import numpy as np
+from typing import TYPE_CHECKING, Any, Callable, Iterator
 
 from core.base.errors import DesignError
-from core.files.numtext import g10_rows
-from core.linkage.spec import Spec
-from core.space.sweep import MAX_COUNT, PARAMETERS, Evaluation, check_vary, evaluate, grid
+from core.space.names import PARAMETERS
 from .common import (add_design_options, add_load_options, add_speed_options, design_error_text,
                      number, option_name, rpms_from_args, spec_from_args, spec_option)
 from .loads import loads_given, masses_from_args
 from .allocator import keep_freed_memory
 from .output import write_output
 from .streaming import Progress
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from core.linkage.spec import Spec
+    from core.space.sweep import Evaluation
 
 HELP = "figures of many designs over varied parameters"
 DESCRIPTION = ("Vary one or more design parameters over a range and report, for every combination, "
@@ -64,6 +66,7 @@ def block_size(names: list[str], rpms, masses) -> int:
 
 def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tuple]:
     """``NAME=LO:HI[:COUNT]`` options → {typed name: (low, high[, count])}, in order."""
+    from core.space.sweep import MAX_COUNT, check_vary
     out: dict[str, tuple] = {}
     shape = "NAME=LO:HI:COUNT" if with_count else "NAME=LO:HI"
     for text in texts:
@@ -102,6 +105,7 @@ class _Variant:
 
 def figure_columns(ev: Evaluation) -> list[tuple[str, np.ndarray]]:
     """(column, values) of every figure, per design; NaN where undefined."""
+    import numpy as np
     several = ev.rpm.size > 1
     tag = (lambda rpm: f"@{rpm:g}") if several else (lambda rpm: "")
     with np.errstate(invalid="ignore"):     # an invalid crank ≥ frame has no θ (NaN, blank)
@@ -130,6 +134,7 @@ def reasons(ev: Evaluation, option: Callable[[str], str] = option_name) -> list[
     """One line per design, "" when valid, else the CLI's message for that design alone,
     naming the option as ``option(parameter)`` does: as ``analyze`` of that design alone
     would (``--dims (L3)``, ``--guide``)."""
+    import numpy as np
     out = [""] * ev.valid.size
     names: dict[str, str] = {}          # option(parameter), once per parameter
     for i in np.flatnonzero(~ev.valid.reshape(-1)).tolist():
@@ -152,6 +157,7 @@ def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
 
     The numbers of a row are formatted together, by the vectorized "%.10g" of
     ``core.files.numtext``; only the joins with the text columns are per row."""
+    import numpy as np
     valid = np.where(ev.valid.reshape(-1), "true", "false")
     why = [_quote(r) if r else r for r in reasons(ev, option)]    # "" for a valid design
     if not valid.size:
@@ -168,6 +174,9 @@ def csv_rows(names: list[str], values: dict[str, np.ndarray], ev: Evaluation,
 def _format_rows(columns: list[np.ndarray], size: int) -> list[str] | None:
     """Per row, the columns' values with 10 significant digits joined by commas, an empty
     cell where a value is not finite; None without columns."""
+    import numpy as np
+
+    from core.files.numtext import g10_rows
     if not columns:
         return None
     data = np.column_stack([np.asarray(c, dtype=float).reshape(-1) for c in columns])
@@ -210,6 +219,7 @@ def inputs(args: argparse.Namespace, with_count: bool):
 
 
 def run(args: argparse.Namespace) -> int:
+    from core.space.sweep import grid
     keep_freed_memory()                     # its chunks' arrays are not faulted in anew
     spec, varied, rpms, masses = inputs(args, with_count=True)
     values = grid({PARAMETERS[n]: r for n, r in varied.items()})
@@ -233,6 +243,7 @@ def _pieces(spec: Spec, values: dict[str, np.ndarray], names: list[str], rpms, m
     """The output text, one block of designs at a time (:func:`block_size`): memory is bounded
     by the block (its figures and its text), not by the number of designs or speeds.
     ``progress(designs done)`` is called after each block."""
+    from core.space.sweep import evaluate
     size = next(iter(values.values())).size
     step = block_size(names, rpms, masses)
     for start in range(0, size, step):

@@ -3,12 +3,14 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import Any, Mapping
+from typing import TYPE_CHECKING, Any, Mapping
 
 from core.base.figure_text import figure_text
-from core.linkage.geometry import Design
 from .common import add_design_options, design_from_args
 from .output import print_json, print_table
+
+if TYPE_CHECKING:
+    from core.linkage.geometry import Design
 
 HELP = "synthesize dimensions from L1, K, H"
 DESCRIPTION = ("Synthesize the frame distance L2, the lever length L3 and the ram-guide height "

@@ -2,15 +2,17 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
-from core.forces.masses import MassProperties
-from core.linkage.geometry import Design
-from core.course_design.positions import (DEFAULT_COUNT, PositionTable, position_table, positions, positions_csv,
-                         table_records, text_groups)
+from core.course_design.counts import DEFAULT_COUNT
 from .common import (UsageError, add_design_options, add_load_options, add_speed_options,
                      design_from_args, number, number_list, rpms_from_args)
 from .loads import masses_or_none
 from .output import print_json, write_output
+
+if TYPE_CHECKING:
+    from core.course_design.positions import PositionTable
+    from core.linkage.geometry import Design
 
 # Which side of a switch a row at the cut's start or end shows (core.linkage.cut's rule).
 CUT_NOTE = ("cut_start and cut_end rows show the cutting side: the cut includes its ends "
@@ -40,6 +42,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def table_from_args(args: argparse.Namespace) -> tuple[Design, PositionTable]:
+    from core.course_design.positions import position_table, positions
+    from core.forces.masses import MassProperties
     design = design_from_args(args)
     rpms = rpms_from_args(args)
     masses = masses_or_none(args, design)
@@ -52,6 +56,7 @@ def table_from_args(args: argparse.Namespace) -> tuple[Design, PositionTable]:
 def run(args: argparse.Namespace) -> int:
     if args.json and args.csv is not None:
         raise UsageError("--json: give either --json or --csv")
+    from core.course_design.positions import positions_csv, table_records, text_groups
     _, table = table_from_args(args)
     if args.csv is not None:
         write_output("--csv", args.csv, positions_csv(table))

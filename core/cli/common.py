@@ -179,14 +179,14 @@ def add_design_options(parser: argparse.ArgumentParser, allow_dims: bool = True,
 
 
 def add_speed_options(parser: argparse.ArgumentParser) -> None:
-    from core.linkage.kinematics import MAX_RPM, MAX_SPEEDS, MIN_RPM
+    from core.linkage.limits import MAX_RPM, MAX_SPEEDS, MIN_RPM
     parser.add_argument("--rpm", nargs="+", metavar="RPM",
                         help=f"1 to {MAX_SPEEDS} crank speeds, {MIN_RPM:g} to {MAX_RPM:g} r/min "
                              "(default 40 60, or the design file's)")
 
 
 def add_angle_options(parser: argparse.ArgumentParser, what: str) -> None:
-    from core.linkage.kinematics import MAX_SAMPLES, MAX_STEP_DEG, MIN_STEP_DEG
+    from core.linkage.limits import MAX_SAMPLES, MAX_STEP_DEG, MIN_STEP_DEG
     angles = parser.add_mutually_exclusive_group()
     angles.add_argument("--step", metavar="DEG",
                         help=f"crank-angle step of {what}, {MIN_STEP_DEG:g} to {MAX_STEP_DEG:g} degrees "

@@ -12,11 +12,11 @@ from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from core.base.errors import DesignError
-from core.linkage.geometry import Design
 from .common import LOAD_OPTIONS, UsageError, design_file, number, option_name
 
 if TYPE_CHECKING:
     from core.forces.masses import MassProperties
+    from core.linkage.geometry import Design
 
 REQUIRED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "cut_force_N")
 # an essential mass → the weight that may stand for it (the task book's G4, G6)

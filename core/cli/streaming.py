@@ -13,14 +13,14 @@ from __future__ import annotations
 import sys
 import time
 from types import TracebackType
-from typing import Callable, Iterator, Sequence, TextIO
+from typing import TYPE_CHECKING, Callable, Iterator, Sequence, TextIO
 
-import numpy as np
-
-from core.files.io import table_chunks, zero_scale
 from .allocator import keep_freed_memory
 from .forked import pieces_in_order, worker_count
 from .output import write_output
+
+if TYPE_CHECKING:
+    import numpy as np
 
 CHUNK_ANGLES = 16_384
 SCALE_ANGLES = 4_096     # angles per speed sampled for the columns' magnitudes
@@ -28,7 +28,7 @@ FORK_ROWS = 20_000       # smaller tables are made in this process alone (a fork
 SHARED_ANGLES = 4_096    # a block shared with a child: its text (~0.3 MB) fits in the pipe
 
 # compute(angles in rad, one rpm) -> (column names, rows); one speed, a block of angles
-TableBlock = Callable[[np.ndarray, float], "tuple[Sequence[str], np.ndarray]"]
+TableBlock = Callable[["np.ndarray", float], "tuple[Sequence[str], np.ndarray]"]
 
 
 LOG_EVERY = 5.0          # seconds between progress lines when stderr is not a terminal
@@ -115,6 +115,9 @@ def table_pieces(block: TableBlock, angles: np.ndarray, rpms: Sequence[float],
     Round-off zeros are judged against the whole table's column magnitudes, taken
     first from every speed at (up to) SCALE_ANGLES of the same angles, so that the
     text is that of the unchunked table."""
+    import numpy as np
+
+    from core.files.io import table_chunks, zero_scale
     step = max(1, -(-angles.size // SCALE_ANGLES))
     scale = np.max([zero_scale(block(angles[::step], rpm)[1]) for rpm in rpms], axis=0)
     if workers is None:

@@ -30,9 +30,8 @@ from core.linkage.geometry import Design
 from core.files.io import curve_table, finite_or_none, snap_zeros, table_csv
 from core.linkage.kinematics import solve
 from core.linkage.metrics import cycle_peaks
+from .counts import DEFAULT_COUNT, MAX_COUNT  # noqa: F401  (imported from here too)
 
-DEFAULT_COUNT = 12
-MAX_COUNT = 3600
 MAX_EXTRA = 1000
 SPECIAL_NAMES = ("limit_work_start", "limit_work_end", "cut_start", "cut_end",
                  "v_work_max", "v_return_max")

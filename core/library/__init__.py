@@ -23,7 +23,7 @@ from typing import Any, Callable, Iterable, Sequence
 
 from core.base.errors import DesignError, FileFormatError
 from core.space.figures import FIGURES_VERSION, Figures, SpeedFigures, figures
-from core.files.io import atomic_write
+from core.files.atomic import atomic_write
 
 from .backup import snapshot_to
 from .entry import Entry, check_document, document_text

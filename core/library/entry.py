@@ -11,7 +11,9 @@ from dataclasses import dataclass
 from typing import Any, Sequence
 
 from core.space.figures import FIGURES_VERSION, Figures, SpeedFigures
-from core.files.io import design_document, masses_to_dict, parse_design
+
+# The design file's reader and writer (numpy and the linkage) are imported where a document
+# is read or written: ``shaper library --help`` prints texts only (issue 43 item 5).
 
 _PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
 
@@ -36,11 +38,13 @@ class Entry:
 
     def document(self) -> dict[str, Any]:
         """The validated design (keys of ``core.files.io.load_design``); FileFormatError if bad."""
+        from core.files.io import parse_design
         return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}", self.name)
 
 
 def document_text(loaded: dict[str, Any]) -> str:
     """A loaded design (``load_design``'s dict) as the JSON text of a design file."""
+    from core.files.io import design_document, masses_to_dict
     masses = loaded.get("masses")
     extra: dict[str, Any] = {}
     for key, value in loaded.items():              # keep the file's key order
@@ -61,6 +65,7 @@ def document_text(loaded: dict[str, Any]) -> str:
 
 def check_document(name: str, text: str) -> None:
     """Refuse (FileFormatError) a stored document a design file could not be."""
+    from core.files.io import parse_design
     parse_design(text.encode("utf-8"), f"library entry {name!r}", name)
 
 

@@ -14,7 +14,6 @@ from pathlib import Path
 from typing import Any, Iterable
 
 from core.base.errors import FileFormatError
-from core.files.io import load_design
 from core.library import Entry, Library
 
 from .names import MAX_NAME, file_stem, safe_file_name, shown_file_name, unique_name
@@ -42,6 +41,7 @@ def read_design_files(paths: Iterable[str | os.PathLike]) -> tuple[list[tuple[Pa
                                                                     list[tuple[Path, FileFormatError]]]:
     """Load and validate every file: ([(path, design)], [(path, why refused)]); ``why`` is
     the FileFormatError, whose text is core's sentence and whose reason a GUI translates."""
+    from core.files.io import load_design
     good: list[tuple[Path, dict[str, Any]]] = []
     bad: list[tuple[Path, FileFormatError]] = []
     for path in expand_paths(paths):

@@ -23,17 +23,8 @@ import numpy as np
 from .designs import Designs
 from core.base.errors import DesignError, require_range
 from .geometry import Design
-
-MIN_RPM = 0.01
-"""Slowest crank speed, r/min (one turn in 100 minutes): every time and rate stays finite."""
-MAX_RPM = 1000.0
-MAX_SPEEDS = 16
-MIN_STEP_DEG = 0.0002
-"""Finest crank-angle step, degrees (1 800 001 angles per cycle)."""
-MAX_STEP_DEG = 90.0
-MAX_SAMPLES = 2_000_000
-"""Largest request, crank angles × crank speeds: what one computation may hold in memory."""
-MAX_ANGLES = MAX_SAMPLES
+from .limits import (MAX_ANGLES, MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG,  # noqa: F401
+                     MIN_RPM, MIN_STEP_DEG)
 
 
 def rpm_to_omega(rpm: np.ndarray | float) -> np.ndarray:

@@ -9,14 +9,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Iterable
+from typing import TYPE_CHECKING, Any, Iterable
 
-from core.forces.masses import MassProperties, masses_for_design
+if TYPE_CHECKING:
+    from core.forces.masses import MassProperties
+    from core.linkage.spec import Spec
 
-from core.forces.flywheel import summarize
-from core.files.io import finite_or_none
-from core.linkage.metrics import analyze
-from core.linkage.spec import Spec
+# The computation's modules are imported by ``figures``: the tables of names below are read by
+# the library's filter syntax, which ``shaper library list --help`` prints (issue 43 item 5).
 
 # Which computation of the figures this program does. Raise it whenever a figure below
 # comes out differently (a corrected formula, a finer peak search): a library keeps each
@@ -99,6 +99,10 @@ def figures(spec: Spec, rpms: Iterable[float], masses: MassProperties | None) ->
 
     Raises DesignError for an invalid spec, speeds or loads.
     """
+    from core.files.io import finite_or_none
+    from core.forces.flywheel import summarize
+    from core.forces.masses import masses_for_design
+    from core.linkage.metrics import analyze
     design = spec.design()
     rpms = list(rpms)
     metrics = analyze(design, rpms)

@@ -24,15 +24,9 @@ import numpy as np
 from core.forces.masses import MassProperties
 from core.base.errors import DesignError
 from core.linkage.spec import Spec
+from .names import OBJECTIVES
 from .sweep import Evaluation, evaluate, tidy_values
 
-# objective → (what it minimizes, unit, needs loads)
-OBJECTIVES = {
-    "pressure-angle": ("largest pressure angle between the rod and the guide", "°", False),
-    "accel": ("largest ram acceleration |a| at the highest speed", "m/s²", False),
-    "peak-torque": ("largest crank driving torque over the speeds", "N·m", True),
-    "flywheel": ("flywheel inertia J_F needed at the slowest speed", "kg·m²", True),
-}
 DENSE_POINTS = {False: 4096, True: 256}   # points of the first dense sweep (metrics / loads)
 PENALTY = 1e30
 GAIN_TOLERANCE = 1e-6

@@ -22,10 +22,8 @@ from core.linkage.metrics import CyclePeaks, cycle_peaks, speed_figures
 from core.linkage.kinematics import check_rpms, rpm_to_omega
 from core.linkage.spec import GUIDE_RULES, MODES, ROD_INPUTS, ROD_SIDES, VARIANTS, Spec
 from core.linkage.verdict import Verdict
+from .names import PARAMETERS
 
-# Sweepable parameters: the name a user types (as the design options) → the core name.
-PARAMETERS = {"crank": "crank", "K": "time_ratio", "stroke": "stroke", "rod": "rod",
-              "rod-ratio": "rod_ratio", "guide": "guide", "frame": "frame", "lever": "lever"}
 SYNTHESIS_ONLY = ("time_ratio", "stroke")
 DIMENSIONS_ONLY = ("frame", "lever")
 MAX_DESIGNS = 1_000_000
