@@ -21,7 +21,6 @@ from pathlib import Path
 from typing import Any, Callable, Collection, Mapping
 
 from core.files.atomic import replace_refusal
-from core.files.design_file import parse_design, read_limited   # its bounded, non-blocking read
 from core.base.errors import DesignError, WriteError, os_reason
 
 REPORT = "report"          # the content of the report (the other contents are drawing sheets)
@@ -139,6 +138,7 @@ def read_document(path: str | os.PathLike) -> tuple[dict[str, Any], frozenset[st
     the file itself holds: the reader fills in speeds a file leaves out, a course design
     must not print speeds the student never chose."""
     name = os.fsdecode(path)
+    from core.files.design_file import parse_design, read_limited   # its bounded, non-blocking read
     raw = read_limited(name)
     doc = parse_design(raw, name)
     return doc, frozenset(json.loads(raw.decode("utf-8-sig")))

@@ -27,9 +27,9 @@ import numpy as np
 from core.forces.polygons import nice_scale
 
 from .dxf import OUTLINE, TEXT, THIN
+from .paper import BINDING_MARGIN, PAPERS, Box, Paper, paper  # noqa: F401  (imported from here too)
 
 Pair = tuple[float, float]
-Box = tuple[float, float, float, float]          # x0, y0, x1, y1 in paper mm
 
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
 SUBSCRIPT_DROP = 0.25     # a subscript's baseline under its text's, in text heights
@@ -39,7 +39,6 @@ SUPERSCRIPT_RAISE = 0.45  # a superscript's baseline above the text's, × its he
 # estimate, so the estimate is what the layout and the overlap checks can rely on.
 WIDE_ADVANCE = 1.05
 NARROW_ADVANCE = 0.78
-BINDING_MARGIN = 25.0                           # a of GB/T 14689
 # GB/T 14690: 1:1, 1:2, 1:5, 1:10 … preferred, 1:1.5, 1:2.5, 1:3, 1:4, 1:6 … allowed (as the report)
 SCALE_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0)
 
@@ -277,34 +276,6 @@ def rectangle(box: Box, layer: str = THIN) -> Polyline:
 
 
 # ---- paper -------------------------------------------------------------------------------
-
-@dataclass(frozen=True)
-class Paper:
-    """A GB/T 14689 sheet in landscape with a binding margin on the left."""
-
-    name: str
-    width: float
-    height: float
-    margin: float          # c: top, right and bottom
-
-    @property
-    def border(self) -> Box:
-        """The drawing frame (图框): everything drawn lies inside it."""
-        return (BINDING_MARGIN, self.margin, self.width - self.margin, self.height - self.margin)
-
-
-PAPERS = {name: Paper(name, w, h, c) for name, w, h, c in (
-    ("A0", 1189.0, 841.0, 10.0), ("A1", 841.0, 594.0, 10.0), ("A2", 594.0, 420.0, 10.0),
-    ("A3", 420.0, 297.0, 5.0))}
-
-
-def paper(name: str) -> Paper:
-    """The paper of that name (A0 … A3, any case); KeyError naming the choices."""
-    try:
-        return PAPERS[name.upper()]
-    except KeyError:
-        raise KeyError(f"{name!r} is not one of {', '.join(PAPERS)}") from None
-
 
 @dataclass(frozen=True)
 class Sheet:

@@ -13,7 +13,7 @@ import time
 from core.cli.common import UsageError
 from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
 from core.course_design.plan import PARTS, CourseError, file_names, plan_course, read_document
-from core.drawing.sheet import PAPERS
+from core.drawing.paper import PAPERS
 
 from shaperapp.widgets.command_line import (add_cover_options, add_sheet_speed_option,
                                             cover_from_args, design_name, sheet_speed, start_qt)

@@ -15,11 +15,9 @@ from core.cli.cmd_cam import (OPTIONAL, SHEET, add_cam_options, add_phase_option
 from core.cli.cmd_gear import OPTIONS as GEAR_OPTIONS, add_gear_options, pair_from_args
 from core.cli.common import UsageError, add_design_options, add_load_options, add_speed_options, number
 from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
-from core.drawing.motion import MAX_POSITIONS
-from core.drawing.sheet import PAPERS
-from core.forces.masses import MassProperties
+from core.drawing.paper import PAPERS
 from core.base.errors import DesignError
-from core.course_design.positions import DEFAULT_COUNT, check_count
+from core.course_design.counts import DEFAULT_COUNT
 
 from shaperapp.widgets.command_line import (add_cover_options, add_sheet_speed_option,
                                             check_output_folder, cover_from_args, cover_text,
@@ -103,6 +101,8 @@ def sheet_suffix(path: str) -> str:
 def choice_from_args(args: argparse.Namespace, speeds: int = 1) -> SheetChoice:
     """Everything the sheet needs from the words, checked (UsageError, DesignError);
     ``speeds`` is how many speeds the design has (--rpm-index picks one)."""
+    from core.course_design.positions import check_count
+    from core.drawing.motion import MAX_POSITIONS
     paper = (args.sheet or DEFAULT_PAPER.get(args.content, "A1")).upper()
     if paper not in PAPERS:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
@@ -140,6 +140,7 @@ def run(args: argparse.Namespace) -> int:
     if choice.content == "gear":
         choice = replace(choice, gear=pair_from_args(args))
     if choice.content == "cam":
+        from core.forces.masses import MassProperties
         idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
         choice = replace(choice, cam=cam_from_inputs(cam_inputs_from_args(args), spec.design(), idle,
                                                         args))

@@ -4,11 +4,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable, Sequence
 
-from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Sheet, number_text, paper
-from core.drawing.title_block import TitleBlock
-from core.forces.masses import MassProperties
-from core.linkage.spec import Spec
+from core.drawing.paper import paper
 
 from shaperapp.widgets.command_line import inputs_name
 
@@ -16,7 +12,14 @@ from .labels import motion_labels
 
 if TYPE_CHECKING:
     from core.cam import Cam
+    from core.drawing.sheet import Sheet
+    from core.drawing.title_block import TitleBlock
+    from core.forces.masses import MassProperties
     from core.gear import GearPair
+    from core.linkage.spec import Spec
+
+# The sheets' modules (numpy, the engine) are imported by the builders: ``shaper drawing
+# --help`` prints the contents' names only (issue 43 item 5).
 
 CONTENTS = ("motion", "forces", "cam", "gear")
 SHEET_NUMBER = {"motion": "1/4", "forces": "2/4", "cam": "3/4", "gear": "4/4"}   # the course design's sheets
@@ -48,6 +51,7 @@ class SheetChoice:
     def title_block(self, title: str, design_name: str, rpm: float | None = None) -> TitleBlock:
         """The title block's fields of this choice (its scale is the sheet's to fill in), with
         the crank speed ``rpm`` the sheet is drawn at (None for a sheet of no speed)."""
+        from core.drawing.title_block import TitleBlock
         return TitleBlock(title, design_name, "", SHEET_NUMBER[self.content], self.drawn, self.date,
                           self.school, number=self.number, group=self.group,
                           supervisor=self.supervisor, speed="" if rpm is None else speed_text(rpm))
@@ -55,6 +59,7 @@ class SheetChoice:
 
 def speed_text(rpm: float) -> str:
     """The title block's speed, in the sheets' index notation: "n_2 = 60 r/min"."""
+    from core.drawing.sheet import number_text
     return f"n_2 = {number_text(rpm)} r/min"
 
 
@@ -76,6 +81,8 @@ def build_sheet(spec: Spec, rpms: Sequence[float], masses: MassProperties | None
 def motion(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
            choice: SheetChoice) -> Sheet:
     """The motion sheet at the choice's speed."""
+    from core.drawing.motion import motion_sheet
+    from core.forces.masses import MassProperties
     design = spec.design()
     idle = masses.idle_fraction if masses is not None else MassProperties().idle_fraction
     labels = motion_labels()

@@ -8,12 +8,14 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from core.cli.common import number
 from core.cli.output import OutputError
-from core.linkage.geometry import Design
-
 from shaperapp.widgets.command_line import check_output_folder
+
+if TYPE_CHECKING:
+    from core.linkage.geometry import Design
 
 SCHEME = "scheme"
 

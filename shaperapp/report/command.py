@@ -9,23 +9,24 @@ from __future__ import annotations
 import argparse
 import errno
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from core.files.atomic import atomic_write
-from core.cam.file import cam_from_dict
-from core.gear.file import gear_from_dict
 from core.cli.cmd_library import library_failure
 from core.cli.cmd_library_compare import load_candidates
 from core.cli.common import (UsageError, add_design_options, add_load_options, add_speed_options,
                              design_file, number)
 from core.cli.output import OutputError
-from core.space.compare import MAX_DESIGNS, Candidate
 from core.library.store import ENV_VAR, LibraryError
-from core.course_design.positions import DEFAULT_COUNT, check_count
+from core.course_design.counts import DEFAULT_COUNT
 from core.base.progress import Progress
 
 from shaperapp.widgets.command_line import (MAX_TEXT, add_cover_options, check_output_folder,  # noqa: F401
                                             cover_from_args, cover_text, design_name, diagram_angles,
                                             inputs_from_args, printable_labels, start_qt)
+
+if TYPE_CHECKING:
+    from core.space.compare import Candidate
 
 HELP = "write the design report (A4 PDF, or HTML)"
 DESCRIPTION = ("The course-design report (设计说明书): inputs, synthesized dimensions and validation "
@@ -74,6 +75,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def comparison_candidates(args: argparse.Namespace) -> list[Candidate]:
     """The designs of --compare (library) and --compare-file, checked before Qt starts:
     1 to MAX_DESIGNS − 1 of them, no library name twice. LibraryError for the library."""
+    from core.space.compare import MAX_DESIGNS
     if not args.compare and not args.compare_file:
         return []
     others, _ = load_candidates(args.library, args.compare, args.compare_file, "--compare-file")
@@ -97,6 +99,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
+    from core.course_design.positions import check_count
     spec, rpms, masses = inputs_from_args(args)
     count = check_count(number("positions", args.positions))
     diagrams = diagram_angles(args)
@@ -112,6 +115,8 @@ def _run(args: argparse.Namespace) -> int:
     language = start_qt(args.lang)
     from .content import Options, build
     from .blocks import Cover
+    from core.cam.file import cam_from_dict
+    from core.gear.file import gear_from_dict
     doc = design_file(args)         # a design file's feed cam and gear pair go into the report too
     cam = cam_from_dict(doc["cam"]) if doc is not None and doc.get("cam") is not None else None
     gear = gear_from_dict(doc["gear"]) if doc is not None and doc.get("gear") is not None else None
