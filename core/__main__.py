@@ -35,7 +35,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     words = sys.argv[1:] if argv is None else list(argv)
     if list(words) == ["--version"]:
         return print_version()
-    return load(engine=not {"-h", "--help"} & set(words))(argv)
+    # a help (and ``shaper`` alone, which prints one) loads no engine: see ``load``
+    return load(engine=bool(words) and not {"-h", "--help"} & set(words))(argv)
 
 
 def print_version() -> int:

@@ -165,7 +165,7 @@ def test_streamed_tables_equal_the_whole_table(monkeypatch, variant):
 def test_memory_error_is_one_line(monkeypatch):
     def exhausted(*args, **kwargs):
         raise MemoryError()
-    monkeypatch.setattr("core.cli.cmd_curves.solve", exhausted)
+    monkeypatch.setattr("core.linkage.kinematics.solve", exhausted)   # imported by cmd_curves when it runs
     status, out, err = shaper_in_process("curves", *SEED, "--step", "10")
     assert status == 2 and err.count("\n") == 1 and "not enough memory" in err
 
