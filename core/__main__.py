@@ -41,9 +41,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def print_version() -> int:
     """``shaper --version`` prints the installed version without loading the command line:
-    the parser of every subcommand would import numpy, ezdxf and (through the report's,
-    the sheets' and the course's entry points) Qt, about a second and a half of start-up,
-    to print one line (issue 43 item 5)."""
+    building the parser of every subcommand imports every command's module and the entry
+    points' (``importlib.metadata``), about half a second of start-up at load 6, to print
+    one line (issue 43 item 5; numpy, ezdxf and Qt too before the commands' helps shed them)."""
     from .version import version_text
     print(version_text("shaper"))
     return 0
