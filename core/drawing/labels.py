@@ -219,16 +219,9 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
     return list(best[:2])
 
 
-def reads_as_own(box: Box, at: Pair, anchors: np.ndarray | None, height: float) -> bool:
-    """Whether a label in ``box`` is read as naming ``at``: each other of ``anchors`` (n, 2)
-    (those within 0.05 mm of ``at`` share its label) lies ASSOCIATION·``height`` farther
-    from the box than ``at``."""
-    others = _others(at, anchors)
-    return others is None or bool(_read_as_own(np.asarray([box], dtype=float), at, others, height)[0])
-
-
 def _others(at: Pair, anchors: np.ndarray | None) -> np.ndarray | None:
-    """The ``anchors`` (n, 2) farther than 0.05 mm from ``at``; None when there are none."""
+    """The ``anchors`` (n, 2) farther than 0.05 mm from ``at`` (nearer ones share its
+    label); None when there are none."""
     if anchors is None or not len(anchors):
         return None
     pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
@@ -237,9 +230,10 @@ def _others(at: Pair, anchors: np.ndarray | None) -> np.ndarray | None:
 
 
 def _read_as_own(boxes: np.ndarray, at: Pair, others: np.ndarray, height: float) -> np.ndarray:
-    """:func:`reads_as_own` of each of ``boxes`` (k, 4), ``others`` from :func:`_others`,
-    (k,) bools: a search's candidates at once, not each with its own small arrays (a
-    quarter of the sheets' label search, docs/performance.md)."""
+    """Whether a label in each of ``boxes`` (k, 4) is read as naming ``at``, (k,) bools: each
+    of ``others`` (:func:`_others`) lies ASSOCIATION·``height`` farther from the box than
+    ``at``. A search's candidates at once: one at a time, with the others found again for
+    each, was a quarter of the sheets' label search (docs/performance.md)."""
     return (box_distance(boxes, others).min(axis=-1)
             >= box_distance(boxes, np.asarray([at], float))[..., 0] + ASSOCIATION * height)
 
@@ -359,7 +353,7 @@ class Room:
 
     def name(self, points: Iterable[Pair]) -> None:
         """Count ``points`` as named in this drawing: a label is placed beside its own point
-        only where none of them could be read as the one it names (:func:`reads_as_own`).
+        only where none of them could be read as the one it names (:func:`_read_as_own`).
         Name every point before the first label, so that early labels keep off later ones."""
         pts = np.asarray(list(points), dtype=float).reshape(-1, 2)
         self.anchors = np.vstack([self.anchors, pts])
