@@ -33,13 +33,13 @@ class PackedPolyline(LWPolyline):
         if not plain(tagwriter, self) or values[:, 2:].any():
             super().export_entity(tagwriter)
             return
-        version = tagwriter.dxfversion          # LWPolyline.export_entity's order
+        version = tagwriter.dxfversion          # LWPolyline.export_entity's order; the
+        xy = tuple(values[:, :2].ravel().tolist())   # vertices in one formatting of them all
         tagwriter.write_str("".join((tags(self, ENTITY, version), tags(self, _BEFORE, version),
-                                     *(_VERTEX % xy for xy in map(tuple, values[:, :2].tolist())),
-                                     tags(self, _AFTER, version))))
+                                     (_VERTEX * len(values)) % xy, tags(self, _AFTER, version))))
 
 
-def add_polyline(msp, points: list[tuple[float, float]], closed: bool, attribs: dict) -> LWPolyline:
+def add_polyline(msp, points: list[tuple[float, float]] | np.ndarray, closed: bool, attribs: dict) -> LWPolyline:
     """``msp.add_lwpolyline(points, close=closed, dxfattribs=attribs)`` as a
     :class:`PackedPolyline`, its vertices set in one array (widths 0, bulge 0): the same
     entity, handle and DXF text."""

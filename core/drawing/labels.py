@@ -19,7 +19,8 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import replace
-from typing import Iterable, Sequence
+from functools import partial
+from typing import Callable, Iterable, Sequence
 
 import numpy as np
 
@@ -126,17 +127,21 @@ def is_free(box: Box, taken: Sequence[Box], segments: np.ndarray, within: Box | 
 
 
 def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarray,
-               within: Box | None = None) -> Text | None:
-    """The first candidate whose box is free (:func:`is_free`; and takes its box), or None.
-    The candidates are tested in batches of 1, 2, 4 … (:func:`free_spots`, the same test
-    of each box): one test a candidate scanned the whole sheet's strokes each time, some
-    8 % of a class's student (docs/performance.md)."""
+               within: Box | None = None, keep: Callable[[np.ndarray], np.ndarray] | None = None
+               ) -> Text | None:
+    """The first candidate whose box is free (:func:`is_free`; and takes its box), or None;
+    with ``keep`` (boxes (k, 4) → (k,) bools) the first free one it keeps. The candidates
+    are tested in batches of 1, 2, 4 … (:func:`free_spots`, the same test of each box): one
+    test a candidate scanned the whole sheet's strokes each time, some 8 % of a class's
+    student (docs/performance.md)."""
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
     for batch in _batches(candidates, 1):
-        boxes = [label.box() for label in batch]
-        free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within))
+        spots = [label.box() for label in batch]
+        boxes = np.array(spots, dtype=float).reshape(-1, 4)
+        free = np.arange(len(boxes)) if keep is None else np.flatnonzero(keep(boxes))
+        free = free[free_spots(boxes[free], boxes_taken, segments, within)]
         if len(free):
-            taken.append(boxes[free[0]])
+            taken.append(spots[free[0]])
             return batch[free[0]]
     return None
 
@@ -194,10 +199,11 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
     height: shrunk, it would join that one)."""
     # a label with an index keeps its height: at the smallest one its index could not be smaller
     small = height if subscripts or not shrink else smaller_height(height)
+    others = _others(at, anchors)
     for h in dict.fromkeys((height, small)):
         spots = ring_candidates(text, at, h, preferred, gap, range(rings), align, subscripts)
-        label = first_free((s for s in spots if reads_as_own(s.box(), at, anchors, h)),
-                           taken, segments, within)
+        keep = None if others is None else partial(_read_as_own, at=at, others=others, height=h)
+        label = first_free(spots, taken, segments, within, keep)
         if label is not None:
             return [label]
     h = small
@@ -213,24 +219,31 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
     return list(best[:2])
 
 
-def reads_as_own(box: Box, at: Pair, anchors: np.ndarray | None, height: float) -> bool:
-    """Whether a label in ``box`` is read as naming ``at``: each other of ``anchors`` (n, 2)
-    (those within 0.05 mm of ``at`` share its label) lies ASSOCIATION·``height`` farther
-    from the box than ``at``."""
+def _others(at: Pair, anchors: np.ndarray | None) -> np.ndarray | None:
+    """The ``anchors`` (n, 2) farther than 0.05 mm from ``at`` (nearer ones share its
+    label); None when there are none."""
     if anchors is None or not len(anchors):
-        return True
+        return None
     pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
     others = pts[np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]) > 0.05]
-    if not len(others):
-        return True
-    return bool(box_distance(box, others).min() >= box_distance(box, np.asarray([at], float))[0]
-                + ASSOCIATION * height)
+    return others if len(others) else None
 
 
-def box_distance(box: Box, points: np.ndarray) -> np.ndarray:
-    """The distance of each of ``points`` (n, 2) from the axis-parallel ``box``, mm (0 inside)."""
-    dx = np.maximum(np.maximum(box[0] - points[:, 0], points[:, 0] - box[2]), 0.0)
-    dy = np.maximum(np.maximum(box[1] - points[:, 1], points[:, 1] - box[3]), 0.0)
+def _read_as_own(boxes: np.ndarray, at: Pair, others: np.ndarray, height: float) -> np.ndarray:
+    """Whether a label in each of ``boxes`` (k, 4) is read as naming ``at``, (k,) bools: each
+    of ``others`` (:func:`_others`) lies ASSOCIATION·``height`` farther from the box than
+    ``at``. A search's candidates at once: one at a time, with the others found again for
+    each, was a quarter of the sheets' label search (docs/performance.md)."""
+    return (box_distance(boxes, others).min(axis=-1)
+            >= box_distance(boxes, np.asarray([at], float))[..., 0] + ASSOCIATION * height)
+
+
+def box_distance(box: Box | np.ndarray, points: np.ndarray) -> np.ndarray:
+    """The distance of each of ``points`` (n, 2) from the axis-parallel ``box``, mm (0
+    inside), (n,); for boxes (k, 4), (k, n)."""
+    b = np.asarray(box, dtype=float)[..., None, :]
+    dx = np.maximum(np.maximum(b[..., 0] - points[:, 0], points[:, 0] - b[..., 2]), 0.0)
+    dy = np.maximum(np.maximum(b[..., 1] - points[:, 1], points[:, 1] - b[..., 3]), 0.0)
     return np.hypot(dx, dy)
 
 
@@ -340,7 +353,7 @@ class Room:
 
     def name(self, points: Iterable[Pair]) -> None:
         """Count ``points`` as named in this drawing: a label is placed beside its own point
-        only where none of them could be read as the one it names (:func:`reads_as_own`).
+        only where none of them could be read as the one it names (:func:`_read_as_own`).
         Name every point before the first label, so that early labels keep off later ones."""
         pts = np.asarray(list(points), dtype=float).reshape(-1, 2)
         self.anchors = np.vstack([self.anchors, pts])

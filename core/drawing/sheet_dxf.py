@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 
+import numpy as np
 from ezdxf import zoom
 from ezdxf.document import Drawing
 from ezdxf.enums import TextEntityAlignment
@@ -36,6 +37,17 @@ def _model(sheet: Sheet):
     return (lambda x, y: (float(ax + (x - ox) * k), float(ay + (y - oy) * k))), float(k)
 
 
+def _model_points(sheet: Sheet):
+    """:func:`_model`'s map of points (n, 2) at once, the same arithmetic in the same order
+    (so the same floats): a point at a time was some 1 % of a class's student (a sheet's
+    polylines hold tens of thousands of vertices; docs/performance.md)."""
+    if sheet.model is None:
+        return lambda points: np.asarray(points, dtype=float).reshape(-1, 2)
+    k, origin, anchor = sheet.model.scale, sheet.model.origin, sheet.model.anchor
+    o, a = np.asarray(origin, dtype=float), np.asarray(anchor, dtype=float)
+    return lambda points: a + (np.asarray(points, dtype=float).reshape(-1, 2) - o) * k
+
+
 def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
     """The sheet in model space (paper mm, origin at the trimmed edge's lower left; or, for
     a sheet with a model, in the model's mm); each of its dimensions a DIMENSION entity in
@@ -46,6 +58,7 @@ def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
     doc = new_document()
     msp = doc.modelspace()
     to, k = _model(sheet)
+    to_all = _model_points(sheet)
     low, high = to(0.0, 0.0), to(sheet.paper.width, sheet.paper.height)
     layout = msp.dxf_layout.dxf          # the limits ezdxf writes to the header: the paper
     layout.limmin, layout.limmax = low, high
@@ -64,11 +77,11 @@ def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
             continue
         attribs = {"layer": item.layer}
         if isinstance(item, Polyline):
-            points = [to(x, y) for x, y in item.points]
+            points = to_all(item.points)
             add_polyline(msp, points, item.closed, attribs)
             if item.filled:
                 hatch = msp.add_hatch(dxfattribs=attribs)
-                hatch.paths.add_polyline_path(points, is_closed=True)
+                hatch.paths.add_polyline_path(list(map(tuple, points.tolist())), is_closed=True)
         elif isinstance(item, Circle):
             msp.add_circle(to(*item.center), item.radius * k, dxfattribs=attribs)
         elif isinstance(item, Text) and outline:

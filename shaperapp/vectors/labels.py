@@ -74,11 +74,15 @@ class LabelPlacer:
         self._extents.append((min(line.x1(), line.x2()), min(line.y1(), line.y2()),
                               max(line.x1(), line.x2()), max(line.y1(), line.y2())))
 
-    def _reads_as_own(self, box: QRectF, anchors: Sequence[QPointF]) -> bool:
-        """Whether ``box`` is read as naming one of ``anchors`` rather than another named point."""
+    def _others(self, anchors: Sequence[QPointF]) -> list[QPointF]:
+        """The named points that are not ``anchors`` (farther than 0.5 from each)."""
+        return [p for p in self.named
+                if all(math.hypot(p.x() - a.x(), p.y() - a.y()) > 0.5 for a in anchors)]
+
+    def _reads_as_own(self, box: QRectF, anchors: Sequence[QPointF], others: Sequence[QPointF]) -> bool:
+        """Whether ``box`` is read as naming one of ``anchors`` rather than another named
+        point (``others``: :meth:`_others` of ``anchors``, found once a label, not once a box)."""
         own = min(_distance(box, a) for a in anchors)
-        others = [p for p in self.named
-                  if all(math.hypot(p.x() - a.x(), p.y() - a.y()) > 0.5 for a in anchors)]
         return all(_distance(box, p) >= own + ASSOCIATION * self.line for p in others)
 
     def _free(self, box: QRectF, strict: bool, bounds: QRectF) -> bool:
@@ -109,6 +113,7 @@ class LabelPlacer:
         for k in range(1, DIRECTIONS // 2 + 1):
             angles += [prefer + 2 * math.pi * k / DIRECTIONS, prefer - 2 * math.pi * k / DIRECTIONS]
         self.leader = None
+        others = self._others(anchors)
         # clear of lines beside the point, then clear of lines on a leader, then over lines;
         # last, beside the point though another is as near (rather than on an arrowhead)
         passes = ((True, self.bounds, False), (True, self.bounds, True), (True, self.outer, True),
@@ -121,7 +126,7 @@ class LabelPlacer:
                         box = box_at(anchor, size, angle, distance * self.line)
                         if not self._free(box, strict, bounds):
                             continue
-                        if tied is None or (not tied and self._reads_as_own(box, anchors)):
+                        if tied is None or (not tied and self._reads_as_own(box, anchors, others)):
                             self.taken.append(box)
                             return box
                         tie = leader(anchor, box)

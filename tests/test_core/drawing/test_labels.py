@@ -243,3 +243,31 @@ def test_batched_box_and_segment_tests_agree_with_plain_geometry(seed):
     leaders = segs[:40]
     want = [sum(_proper_cross(a[:2], a[2:], b[:2], b[2:]) for b in segs) for a in leaders]
     assert crossings_each(leaders, segs).tolist() == want
+
+
+@pytest.mark.parametrize("seed", [4, 5, 6])
+def test_the_read_as_own_test_of_a_batch_is_each_boxs_own(seed):
+    """A ring search tests its spots' boxes for being read as naming their point all at once
+    (``first_free``'s ``keep``): each box's answer is the definition's, the nearest other
+    named point ASSOCIATION heights farther than the own one (distances by hand), and the
+    spot found is the first free one of those kept, as filtering the spots one by one gave."""
+    from core.drawing.labels import ASSOCIATION, _others, _read_as_own, first_free, ring_candidates
+    rng = np.random.default_rng(seed)
+    boxes, segs = _random_boxes_and_segments(seed)
+    at, height = (50.0, 50.0), 3.5
+    anchors = np.vstack([[at], [at[0] + 0.01, at[1]], rng.uniform(30.0, 70.0, (8, 2))])
+
+    def by_hand(box):
+        far = [math.hypot(max(box[0] - x, 0.0, x - box[2]), max(box[1] - y, 0.0, y - box[3]))
+               for x, y in anchors if math.hypot(x - at[0], y - at[1]) > 0.05]
+        own = math.hypot(max(box[0] - at[0], 0.0, at[0] - box[2]), max(box[1] - at[1], 0.0, at[1] - box[3]))
+        return min(far) >= own + ASSOCIATION * height
+    spots = list(ring_candidates("A", at, height, (1.0, 1.0), 1.5, range(4)))
+    boxes = np.vstack([boxes, [s.box() for s in spots]])
+    kept = _read_as_own(boxes, at, _others(at, anchors), height)
+    assert kept.tolist() == [by_hand(b) for b in boxes] and 0 < kept.sum() < len(kept)
+    one_by_one, batched = [], []
+    first = first_free((s for s in spots if by_hand(s.box())), one_by_one, segs[:60])
+    keep = lambda b: _read_as_own(b, at, _others(at, anchors), height)    # noqa: E731
+    assert first_free(spots, batched, segs[:60], keep=keep) == first and first is not None
+    assert batched == one_by_one

@@ -56,3 +56,24 @@ def test_a_vertex_with_a_width_or_bulge_is_written_by_ezdxf():
     for line in (packed, plain):
         line[1] = (10.5, 1.25, 0.5, 0.5, 0.3)
     assert _entities(ours) == _entities(theirs)
+
+
+def test_a_model_sheets_points_are_mapped_at_once_to_the_same_floats():
+    """``_model_points`` (a polyline's vertices at once) gives, bit for bit, what ``_model``'s
+    point-by-point map gives, on a sheet with a model (scaled, moved) and on one without; and
+    a filled polyline's hatch gets the same vertices as its outline."""
+    from dataclasses import replace
+
+    from core.drawing.sheet import Placement
+    from core.drawing.sheet_dxf import _model, _model_points
+    rng = np.random.default_rng(11)
+    points = rng.uniform(-50.0, 900.0, (257, 2))
+    for model in (None, Placement(0.2857142857142857, (123.456, -7.89), (410.5, 297.25))):
+        sheet = Sheet(paper("A1"), (), model=model)
+        each = np.array([_model(sheet)[0](x, y) for x, y in points.tolist()])
+        assert np.array_equal(_model_points(sheet)(points.tolist()), each)
+    filled = replace(_lines()[2], filled=True)
+    doc = sheet_document(Sheet(paper("A3"), (filled,)))
+    outline, = doc.modelspace().query("LWPOLYLINE")
+    hatch, = doc.modelspace().query("HATCH")
+    assert [tuple(v[:2]) for v in hatch.paths[0].vertices] == [tuple(p) for p in outline.get_points("xy")]
