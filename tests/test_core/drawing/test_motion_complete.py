@@ -9,7 +9,6 @@ drawing's code; positions from their definition, φ_k = (k − 1)·360°/N.
 """
 from __future__ import annotations
 
-import functools
 import io
 import math
 
@@ -19,11 +18,11 @@ import pytest
 from ezdxf.entities import DimStyleOverride
 
 from dxf_checks import measurement
+from motion_sheets import motion_drawn
 
 from core.drawing import mechanism as mech
 from core.drawing.dxf import DIMENSIONS, THIN, dxf_text
-from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Polyline, Text, paper
+from core.drawing.sheet import Polyline, Text
 from core.drawing.sheet_dims import segments, text_crossings
 from core.drawing.sheet_dxf import sheet_document
 from core.linkage.geometry import synthesize
@@ -47,16 +46,11 @@ def design_of(case: str):
 
 
 def drawn_sheet(case: str, rpm: float, size: str, count: int = 12):
-    """The motion sheet of ``case``, built once per process: several tests read the same
-    sheet (θ, the dimensions, the tool path's numbers and the clear texts all look at the
-    A1 sheet at 40 r/min; the sheet checks and the tool path the 6 and 24 positions at 60),
-    and a sheet takes 0.3–2.7 s. The tests only read it."""
-    return _drawn(case, float(rpm), size, int(count))
-
-
-@functools.lru_cache(maxsize=None)
-def _drawn(case: str, rpm: float, size: str, count: int):
-    return motion_sheet(design_of(case), rpm, paper(size), count=count)
+    """The motion sheet of ``case``, built once per process (tests/motion_sheets.py): several
+    tests read the same sheet (θ, the dimensions, the tool path's numbers and the clear texts
+    all look at the A1 sheet at 40 r/min; the sheet checks and the tool path the 6 and 24
+    positions at 60), and so does test_sheet.py. The tests only read it."""
+    return motion_drawn(design_of(case), rpm, size, count)
 
 
 def expected(case: str) -> dict[str, float]:
