@@ -118,12 +118,16 @@ def test_a_key_written_twice_is_refused_naming_it(tmp_path, key):
 
 @pytest.mark.parametrize("command", [("gear",), ("analyze",), ("course", "-o", "out"),
                                      ("report", "-o", "r.pdf"), ("drawing", "-o", "d.svg")])
-def test_every_command_refuses_a_key_written_twice(tmp_path, command):
-    """gear, course, report and drawing accepted a design file with two "spec" objects."""
-    from cli_runner import shaper
+def test_every_command_refuses_a_key_written_twice(tmp_path, monkeypatch, command):
+    """gear, course, report and drawing accepted a design file with two "spec" objects.
+    The command runs in this process, in ``tmp_path`` (its output names are relative): the
+    test is about what it refuses and writes, not how it starts (a Qt command's process
+    costs ~2.5 s of CPU; test_cli.py runs the console script)."""
+    from cli_runner import shaper_run_in_process
     path = tmp_path / "twice.json"
     path.write_text(DUPLICATES["gear" if command == ("gear",) else "spec"], encoding="utf-8")
-    result = shaper(*command, "--design", path, cwd=tmp_path)
+    monkeypatch.chdir(tmp_path)
+    result = shaper_run_in_process(*command, "--design", path)
     assert result.returncode == 2, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and "appears twice" in lines[0] and "Traceback" not in result.stderr

@@ -98,8 +98,13 @@ class Reference:
                 mid = (lo + hi) / 2
                 s_mid = slope(mid)
                 left = np.sign(s_mid) == np.sign(s_lo)
+                state = lo, hi
                 lo, s_lo = np.where(left, mid, lo), np.where(left, s_mid, s_lo)
                 hi = np.where(left, hi, mid)
+                # A step that changed no bracket (each is down to adjacent doubles) is a fixed
+                # point: the steps left of the 60 would change nothing either.
+                if np.array_equal(lo, state[0]) and np.array_equal(hi, state[1]):
+                    break
             candidates.append(np.mod((lo + hi) / 2, 2 * math.pi))
         stops = np.unique(np.concatenate(candidates))
         energy = self.work(stops) - self.mean * stops

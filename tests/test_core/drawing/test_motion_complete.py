@@ -9,7 +9,6 @@ drawing's code; positions from their definition, φ_k = (k − 1)·360°/N.
 """
 from __future__ import annotations
 
-import functools
 import io
 import math
 
@@ -19,11 +18,11 @@ import pytest
 from ezdxf.entities import DimStyleOverride
 
 from dxf_checks import measurement
+from motion_sheets import motion_drawn
 
 from core.drawing import mechanism as mech
 from core.drawing.dxf import DIMENSIONS, THIN, dxf_text
-from core.drawing.motion import motion_sheet
-from core.drawing.sheet import Polyline, Text, paper
+from core.drawing.sheet import Polyline, Text
 from core.drawing.sheet_dims import segments, text_crossings
 from core.drawing.sheet_dxf import sheet_document
 from core.linkage.geometry import synthesize
@@ -47,15 +46,11 @@ def design_of(case: str):
 
 
 def drawn_sheet(case: str, rpm: float, size: str, count: int = 12):
-    """The motion sheet of ``case``, built once per process: several tests read the same
-    sheet (θ, the dimensions, the tool path's numbers and the clear texts all look at the
-    A1 sheet at 40 r/min), and a sheet takes about 0.3 s. The tests only read it."""
-    return _drawn(case, float(rpm), size, int(count))
-
-
-@functools.lru_cache(maxsize=None)
-def _drawn(case: str, rpm: float, size: str, count: int):
-    return motion_sheet(design_of(case), rpm, paper(size), count=count)
+    """The motion sheet of ``case``, built once per process (tests/motion_sheets.py): several
+    tests read the same sheet (θ, the dimensions, the tool path's numbers and the clear texts
+    all look at the A1 sheet at 40 r/min; the sheet checks and the tool path the 6 and 24
+    positions at 60), and so does test_sheet.py. The tests only read it."""
+    return motion_drawn(design_of(case), rpm, size, count)
 
 
 def expected(case: str) -> dict[str, float]:
@@ -115,6 +110,13 @@ def test_every_dimension_shows_the_design_and_cad_measures_it_at_true_length(cas
     assert not any(" = " in t and t.split(" = ")[0] in want for t in written)
 
 
+# The speed of the A1 sheet each count's tool path is read from: the one another test of this
+# file builds anyway (the dimensions at 40 r/min and 12 positions, the sheet checks at 60 r/min
+# and 6 or 24). The mechanism's area does not depend on the speed: its items and placement were
+# the same at 40 and 60 r/min for all twelve sheets of this test (compared once, by repr).
+TOOL_PATH_RPM = {6: 60.0, 12: 40.0, 24: 60.0}
+
+
 @pytest.mark.parametrize("count", [6, 12, 24])
 @pytest.mark.parametrize("case", ["block", "rod", "K near 3", "long stroke"])
 def test_tool_path_numbered_at_the_ram_positions(case, count):
@@ -122,7 +124,7 @@ def test_tool_path_numbered_at_the_ram_positions(case, count):
     the tool path (x of the ram joint C at φ_k, plus the tool's offset), or is led there by
     a thin line from that tick (a number moved by 0.3 mm or less stands at it)."""
     design = design_of(case)
-    drawn = drawn_sheet(case, 40.0, "A1", count)
+    drawn = drawn_sheet(case, TOOL_PATH_RPM[count], "A1", count)
     items = drawn.areas["mechanism"][1]
     phi = np.radians(np.arange(count) * 360.0 / count)
     ticks = drawn.placement(shape(design, phi).ram_joint.T)[:, 0] + mech.TOOL_AHEAD
@@ -187,7 +189,7 @@ def test_phi_axes_ticks_are_degrees_and_the_positions_are_numbered(count):
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_sheet_checks_hold_with_the_dimensions(case, size):
     for count in (6, 24):
-        drawn = motion_sheet(design_of(case), 60.0, paper(size), count=count)
+        drawn = drawn_sheet(case, 60.0, size, count)        # the tool path test reads the A1 ones
         assert_laid_out(drawn.sheet, drawn.areas)
 
 

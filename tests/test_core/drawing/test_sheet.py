@@ -16,6 +16,7 @@ from core.drawing.checks import outside_border, overlapping_texts
 from core.drawing.sheet import PAPERS, TEXT_HEIGHTS, Circle, Polyline, Text, paper, standard_scale, text_width
 from core.drawing.sheet_dxf import save_sheet_dxf
 from core.linkage.geometry import synthesize
+from motion_sheets import motion_drawn
 from sheet_checks import assert_laid_out
 
 BLOCK = synthesize(100.0, 1.4, 300.0)
@@ -59,7 +60,7 @@ def stated_scale(sheet) -> float:
 @pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
 @pytest.mark.parametrize("size", ["A0", "A1", "A2"])
 def test_motion_sheet_inside_the_border_without_overlapping_texts(design, size):
-    drawn = motion_sheet(design, 40.0, paper(size))
+    drawn = motion_drawn(design, 40.0, size)
     assert outside_border(drawn.sheet) == []
     assert overlapping_texts(drawn.sheet) == []
 
@@ -77,7 +78,7 @@ def test_motion_sheet_other_position_counts(count):
 def test_lengths_on_the_paper_over_the_stated_scale_are_the_design(design):
     """Found on the paper: the crank pin's circle (the only centre-line circle) gives L1 and
     its centre O2; the lowest pin is O4. Divided by the scale the caption states."""
-    sheet = motion_sheet(design, 40.0, paper("A1")).sheet
+    sheet = motion_drawn(design, 40.0, "A1").sheet
     d = stated_scale(sheet)
     assert d in SERIES
     track = [c for c in sheet.items if isinstance(c, Circle) and c.layer == CENTER]
@@ -92,7 +93,7 @@ def test_lengths_on_the_paper_over_the_stated_scale_are_the_design(design):
 def test_limit_positions_are_drawn_thick_and_the_lever_has_its_length():
     """Thick two-point lines from O4: the lever at the two limit positions, each L3 long,
     and θ apart (the lever's swing equals the extreme-position angle)."""
-    drawn = motion_sheet(BLOCK, 40.0, paper("A1"))
+    drawn = motion_drawn(BLOCK, 40.0, "A1")
     o4 = np.asarray(drawn.placement([0.0, 0.0]))
     levers = [np.asarray(p.points) for p in drawn.sheet.items if isinstance(p, Polyline)
               and p.layer == "OUTLINE" and len(p.points) == 2 and np.allclose(p.points[0], o4)]
@@ -105,7 +106,7 @@ def test_limit_positions_are_drawn_thick_and_the_lever_has_its_length():
 
 
 def test_chinese_labels_change_the_texts_not_the_drawing():
-    en = motion_sheet(BLOCK, 40.0, paper("A1")).sheet
+    en = motion_drawn(BLOCK, 40.0, "A1").sheet
     zh = motion_sheet(BLOCK, 40.0, paper("A1"),
                       labels={"title": "运动分析图", "L1": "曲柄 O2A，L1"}).sheet
     lines = lambda s: [p.points.tobytes() for p in s.items if isinstance(p, Polyline)]  # noqa: E731
@@ -116,7 +117,7 @@ def test_chinese_labels_change_the_texts_not_the_drawing():
 
 @pytest.mark.parametrize("design", [BLOCK, ROD], ids=["block", "rod"])
 def test_dxf_reads_back_in_mm_with_layers_inside_the_border(design, tmp_path):
-    drawn = motion_sheet(design, 40.0, paper("A1"))
+    drawn = motion_drawn(design, 40.0, "A1")
     path = tmp_path / "motion.dxf"
     save_sheet_dxf(drawn.sheet, path)
     doc = ezdxf.readfile(path)
@@ -150,13 +151,13 @@ def test_dxf_reads_back_in_mm_with_layers_inside_the_border(design, tmp_path):
 def test_drawings_stay_in_their_own_areas_which_do_not_overlap(design, size):
     """Nothing overlaps: the mechanism, the curves, the polygons, the table and the title
     block each keep to an area of their own."""
-    drawn = motion_sheet(design, 60.0, paper(size), count=24)
+    drawn = motion_drawn(design, 60.0, size, 24)
     assert_laid_out(drawn.sheet, drawn.areas)
 
 
 @pytest.mark.parametrize("size", ["A0", "A1", "A2", "A3"])
 def test_every_text_height_is_from_the_standard_series(size):
-    sheet = motion_sheet(ROD, 40.0, paper(size)).sheet
+    sheet = motion_drawn(ROD, 40.0, size).sheet
     heights = {t.height for t in sheet.items if isinstance(t, Text)}
     assert heights <= set(TEXT_HEIGHTS), heights
 
@@ -203,7 +204,7 @@ def test_dxf_texts_carry_the_gb_width_factor(tmp_path):
     sheet's DXF says 0.7, the GB style's, so it is as narrow as the layout reckons."""
     from core.drawing.dxf import TEXT_WIDTH
     path = tmp_path / "m.dxf"
-    save_sheet_dxf(motion_sheet(BLOCK, 40.0, paper("A3")).sheet, path)
+    save_sheet_dxf(motion_drawn(BLOCK, 40.0, "A3").sheet, path)
     widths = {e.dxf.width for e in ezdxf.readfile(path).modelspace().query("TEXT")}
     assert widths == {TEXT_WIDTH} == {0.7}
 

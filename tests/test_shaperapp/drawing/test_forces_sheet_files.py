@@ -5,7 +5,7 @@ import shutil
 import ezdxf
 import pytest
 
-from cli_runner import shaper, shaper_run_in_process
+from cli_runner import shaper_run_in_process
 from sheet_checks import assert_pdf_sheet
 from core.cli.cmd_dynamics import speed_rows
 from core.forces.masses import masses_for_design
@@ -32,7 +32,7 @@ def test_cli_pdf_is_the_paper_and_chinese_embeds_a_cjk_font(tmp_path):
 @pytest.mark.slow
 def test_cli_without_loads_exits_2_naming_the_cutting_force(tmp_path):
     out = tmp_path / "f.pdf"
-    result = shaper("drawing", *BLOCK, "--content", "forces", "-o", out)
+    result = shaper_run_in_process("drawing", *BLOCK, "--content", "forces", "-o", out)
     lines = result.stderr.strip().splitlines()
     assert result.returncode == 2 and len(lines) == 1 and "--cut-force" in lines[0], result.stderr
     assert list(tmp_path.iterdir()) == []
