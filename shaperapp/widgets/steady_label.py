@@ -2,11 +2,13 @@
 
 Why: ``setText`` on a word-wrapped rich-text QLabel tells its layout that its geometry may
 have changed, and the layout then asks it for its size hints and its heights for a width,
-each a layout of the rich text, and resizes the column in its scroll area and paints the
-label a second time: ~10 ms of each Cam edit (issue 40 item 5) for a table of figures whose
+each a layout of the rich text, and lays out the column in its scroll area again: ~10 ms
+of each Cam edit (issue 40 item 5) for a table of figures whose
 size rarely changes. Here the label sits in a holder with no layout of its own, so its
-request stops at the holder, which passes it on only when what its layout reads (the size
-policy, the least size, the height at the width it has) changed.
+request stops at the holder, which passes it on only when its height at the width it has
+(or its size policy) changed. Its least size is not compared: a rich-text label's is a
+layout of the text at no width, ~7 ms, and it only matters in a column narrower than the
+text's longest word, which a table of figures in its form's column never is.
 """
 from __future__ import annotations
 
@@ -21,7 +23,7 @@ class SteadyLabel(QWidget):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.label = QLabel(self)
-        self._seen: tuple | None = None       # what the layout last read (see _shape)
+        self._seen: tuple | None = None       # the size policy and height the layout last read
 
     def sizeHint(self) -> QSize:  # noqa: N802 - Qt's name
         return self.label.sizeHint()
@@ -52,10 +54,10 @@ class SteadyLabel(QWidget):
     def _shape(self) -> tuple:
         policy = self.label.sizePolicy()
         height = self.label.heightForWidth(self.width()) if policy.hasHeightForWidth() else self.label.sizeHint()
-        return policy, self.label.minimumSizeHint(), height
+        return policy, height
 
     def _pass_on(self) -> None:
-        """Tell the layout only when what it reads changed."""
+        """Tell the layout only when the label's height (or size policy) changed."""
         shape = self._shape()
         if shape != self._seen:
             self._seen = shape
