@@ -32,6 +32,10 @@ SAMPLES = 2001
 """Follower positions per phase at which the allowance is imposed (uniform in the phase)."""
 LP_STRIDE = 20
 """Every this many conditions set the first try of an interior point (see _inside)."""
+GRID_REACHES = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
+GRID_DIRECTIONS = 36
+"""The polar grid about the pivot (reaches in arm lengths, directions over a turn) whose
+point deepest inside a part of the conditions starts that part's polygon (see _deep_point)."""
 CUTS = 8
 """At most this many nearest points are tried, each with the conditions at the last one's
 worst follower positions added (see smallest); three cuts at most were needed for 200
@@ -117,10 +121,59 @@ def _rows(h: np.ndarray) -> np.ndarray:
     return np.r_[np.arange(0, len(h) - 4, LP_STRIDE), np.arange(len(h) - 4, len(h))]
 
 
+def _grid_point(rows: np.ndarray, arm: float) -> np.ndarray | None:
+    """The point of the polar grid about the pivot (GRID_REACHES arm lengths, GRID_DIRECTIONS)
+    whose least margin to every fifth of ``rows`` is largest, if it lies inside them all."""
+    t = np.linspace(0.0, 2.0 * math.pi, GRID_DIRECTIONS, endpoint=False)
+    reach = arm * np.array(GRID_REACHES)[:, None]
+    x, y = (reach * np.cos(t)).ravel(), (reach * np.sin(t)).ravel()
+    few = rows[::5]
+    margin = np.min(-(few[:, :1] * x + few[:, 1:2] * y + few[:, 2:]), axis=0)
+    best = np.array([x[np.argmax(margin)], y[np.argmax(margin)]])
+    return best if np.all(rows[:, :2] @ best + rows[:, 2] < 0.0) else None
+
+
+def _centroid(ring: np.ndarray) -> np.ndarray:
+    """The centroid of the convex polygon ``ring``: at least a third of the polygon's width
+    from each of its edges, whatever its shape."""
+    x, y = ring[:, 0], ring[:, 1]
+    xn, yn = np.roll(x, -1), np.roll(y, -1)
+    cross = x * yn - xn * y
+    return np.array([np.sum((x + xn) * cross), np.sum((y + yn) * cross)]) / (3.0 * np.sum(cross))
+
+
+def _deep_point(rows: np.ndarray, arm: float) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """A point well inside the polygon of the conditions ``rows`` (None: it is empty), and
+    that polygon (None if none was made).
+
+    Why not their Chebyshev centre: its LP was a sixth of a Cam edit (two of them, ~7 ms
+    each, most of it scipy's setting up). The polygon is made about the grid's deepest
+    point, and its centroid, as deep inside as the LP's centre in practice, is the point;
+    the LP only where the grid finds none inside (a tight allowance) or its polygon fails."""
+    start = _grid_point(rows, arm)
+    ring = None if start is None else _part_polygon(rows, start)
+    if ring is not None and len(ring) >= 3:
+        middle = _centroid(ring)
+        if np.all(rows[:, :2] @ middle + rows[:, 2] < 0.0):
+            return middle, ring
+    centre = _chebyshev(rows)           # a tight allowance: no point of the grid inside
+    return (None, None) if centre is None else (centre, _part_polygon(rows, centre))
+
+
+def _part_polygon(rows: np.ndarray, centre: np.ndarray) -> np.ndarray | None:
+    """The polygon of ``rows`` about ``centre``, None where qhull fails on it."""
+    from scipy.spatial import QhullError
+    try:
+        return _polygon(rows, centre)
+    except QhullError:
+        return None
+
+
 def _inside(h: np.ndarray, first: np.ndarray | None) -> np.ndarray | None:
-    """A point well inside the polygon, or None if it is empty: ``first``, the Chebyshev
-    centre of the conditions ``_rows`` (neighbouring conditions differ little, and a full
-    LP of thousands of rows took 0.6 s), kept if it satisfies them all, else that of all."""
+    """A point well inside the polygon, or None if it is empty: ``first``, a point well
+    inside the conditions ``_rows`` (``_deep_point``: neighbouring conditions differ little,
+    and an LP of thousands of rows took 0.6 s), kept if it satisfies them all, else the
+    Chebyshev centre of all."""
     if first is not None and np.all(h[:, :2] @ first + h[:, 2] < 0.0):
         return first
     return _chebyshev(h)
@@ -155,7 +208,7 @@ def admissible(arm_mm: float, program: Program, allowance: Allowance, side: int)
     when the allowances leave none. It can be a little larger than the true region: see
     :func:`within_allowance`."""
     h = _halfspaces(arm_mm, TURN * side, program, _aim(allowance))
-    return _polygon(h, _inside(h, _chebyshev(h[_rows(h)])))
+    return _polygon(h, _inside(h, _deep_point(h[_rows(h)], arm_mm)[0]))
 
 
 def _polygon(h: np.ndarray, centre: np.ndarray | None) -> np.ndarray | None:
@@ -291,8 +344,8 @@ def _smallest_of_both(arm_mm: float, program: Program, allowance: Allowance) -> 
     for side in (1, -1):
         h = _halfspaces(arm_mm, TURN * side, program, _aim(allowance))
         rows = h[_rows(h)]
-        first = _chebyshev(rows)
-        sides.append((_bound(arm_mm, side, rows, first, pick), side, h, first))
+        first, part = _deep_point(rows, arm_mm)
+        sides.append((_bound(arm_mm, side, rows, part, pick), side, h, first))
     found: list[Follower] = []
     for bound, side, h, first in sorted(sides, key=lambda s: s[0]):
         best = min((f.base_radius_mm for f in found), default=math.inf)
@@ -305,17 +358,12 @@ def _smallest_of_both(arm_mm: float, program: Program, allowance: Allowance) -> 
     return found
 
 
-def _bound(arm_mm: float, side: int, rows: np.ndarray, centre: np.ndarray | None,
+def _bound(arm_mm: float, side: int, rows: np.ndarray, ring: np.ndarray | None,
            pick: Callable[[np.ndarray], np.ndarray | None]) -> float:
     """The base radius no cam on ``side`` is below: that of the nearest point of the
-    polygon of the conditions ``rows`` to the roller's lowest point (arm, 0); 0 when that
-    polygon gives none, or holds that point (then its nearest edge bounds nothing)."""
-    from scipy.spatial import QhullError
-    if centre is None or np.all(rows[:, :2] @ np.array([arm_mm, 0.0]) + rows[:, 2] <= 0.0):
+    polygon ``ring`` of the conditions ``rows`` to the roller's lowest point (arm, 0); 0
+    when that polygon gives none, or holds that point (then its nearest edge bounds nothing)."""
+    if ring is None or not len(ring) or np.all(rows[:, :2] @ np.array([arm_mm, 0.0]) + rows[:, 2] <= 0.0):
         return 0.0
-    try:
-        ring = _polygon(rows, centre)
-    except QhullError:
-        return 0.0
-    chosen = None if ring is None or not len(ring) else pick(ring)
+    chosen = pick(ring)
     return 0.0 if chosen is None else _follower(arm_mm, chosen, side).base_radius_mm

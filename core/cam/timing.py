@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
@@ -40,11 +41,20 @@ def check_phase(phase_deg: object) -> float:
     return require_range("phase", phase_deg, -MAX_PHASE_DEG, MAX_PHASE_DEG, "°", low_open=False)
 
 
+@lru_cache(maxsize=8)
+def _clear_window(design, idle_fraction: float) -> tuple[float, float]:
+    """The crank angles (°) where the cut of ``design`` starts and ends. Kept for the last
+    designs (a frozen value): every edit of the Cam tab times the cam against the same
+    linkage, and the window's root search was ~3 ms of the cam's ~40."""
+    on, off = (math.degrees(float(v[0])) for v in cut_window(Designs.of(design), idle_fraction))
+    return on, off
+
+
 def timing(program: Program, design, idle_fraction: float, phase_deg: float | None = None) -> Timing:
     """Place the feed outside the cut of ``design`` (a ``core.linkage.geometry.Design``), centred in
     the non-cutting span, or check the given ``phase_deg``; DesignError names ``rise`` when
     the feed cannot fit, ``phase`` when the given phase would feed during the cut."""
-    on, off = (math.degrees(float(v[0])) for v in cut_window(Designs.of(design), idle_fraction))
+    on, off = _clear_window(design, idle_fraction)
     span = 360.0 - (off - on)
     feed = program.feed_deg
     if feed > span:

@@ -3,7 +3,7 @@ plots, with CSV, image and DXF exports."""
 from __future__ import annotations
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QLabel, QWidget
+from PySide6.QtWidgets import QWidget
 
 from core.files.atomic import atomic_write
 from core.cam.table import cam_table
@@ -11,6 +11,7 @@ from core.files.io import table_csv
 from core.linkage.kinematics import crank_angles
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab
+from shaperapp.widgets.steady_label import SteadyLabel
 
 from .form import CamForm
 from .model import CamModel
@@ -31,10 +32,11 @@ class CamTab(PartTab):
         super().__init__(model, parent, cam_model)
         self.cam_model, self.profile = self.part_model, self.view
         self.plots = CamPlots(self.cam_model)
-        self.figures = QLabel(self)
+        figures = SteadyLabel(self)             # a new cam's figures relay nothing out
+        self.figures = figures.label
         self.figures.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.figures.setWordWrap(True)
-        scroll = self._assemble((self.form, self.figures), (), self.plots)
+        scroll = self._assemble((self.form, figures), (), self.plots)
         scroll.setMinimumWidth(scroll.widget().sizeHint().width() + 16)
         scroll.setMaximumWidth(scroll.widget().sizeHint().width() + 16)
         self.cam_model.camChanged.connect(self.show_figures)

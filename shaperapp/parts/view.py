@@ -21,6 +21,9 @@ class PartView(QWidget):
         super().__init__(parent)
         self._model = part_model
         self.setMinimumSize(*least)
+        # paintEvent fills every pixel: the window, the tabs, the splitter are not painted
+        # under it first (six paints of the parents a cam edit made for nothing)
+        self.setAttribute(Qt.WidgetAttribute.WA_OpaquePaintEvent)
         self._build = build
         self._geometry: Any = None
         part_model.valueChanged.connect(self._reset)
