@@ -11,7 +11,6 @@ import numpy as np
 from core.forces.dynamics import ENERGY_INTERVALS, Dynamics, DynamicsSummary, SpeedSummary, solve_dynamics
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
-from core.forces.flywheel import summarize
 from core.linkage.geometry import Design
 from core.linkage.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
 from core.linkage.metrics import CycleMetrics, analyze
@@ -61,6 +60,9 @@ class SummaryOnDemand:
             return self._full
         if not peaks and self._cycle is not None:
             return self._cycle
+        # Imported here: the first screen shows no summary (the forces table is below
+        # the fold), and the flywheel's solver and peak search cost a start its imports.
+        from core.forces.flywheel import summarize
         try:
             value = summarize(self.design, self.rpm, self.masses, peaks=peaks)
         except (DesignError, *COMPUTE_ERRORS):
