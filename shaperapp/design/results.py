@@ -37,6 +37,14 @@ def compute_motion(inputs: Inputs) -> tuple[Design, Motion, CycleMetrics]:
     return design, solve(design, angles, rpms), analyze(design, rpms)
 
 
+def summarize(design: Design, rpm, masses: MassProperties, peaks: bool = True) -> DynamicsSummary:
+    """``core.forces.flywheel.summarize``, imported when first called: the first screen shows
+    no summary (the forces table is below the Results pane's fold), and the flywheel's
+    solver and peak search cost every start their imports (issue 43 item 5)."""
+    from core.forces.flywheel import summarize as solve_summary
+    return solve_summary(design, rpm, masses, peaks=peaks)
+
+
 class SummaryOnDemand:
     """The cycle summary (mean and peak torque, energy, flywheel) of the forces on
     screen, solved the first time something asks for it, then kept.
@@ -60,9 +68,6 @@ class SummaryOnDemand:
             return self._full
         if not peaks and self._cycle is not None:
             return self._cycle
-        # Imported here: the first screen shows no summary (the forces table is below
-        # the fold), and the flywheel's solver and peak search cost a start its imports.
-        from core.forces.flywheel import summarize
         try:
             value = summarize(self.design, self.rpm, self.masses, peaks=peaks)
         except (DesignError, *COMPUTE_ERRORS):
