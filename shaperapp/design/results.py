@@ -11,7 +11,6 @@ import numpy as np
 from core.forces.dynamics import ENERGY_INTERVALS, Dynamics, DynamicsSummary, SpeedSummary, solve_dynamics
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
-from core.forces.flywheel import summarize
 from core.linkage.geometry import Design
 from core.linkage.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
 from core.linkage.metrics import CycleMetrics, analyze
@@ -36,6 +35,14 @@ def compute_motion(inputs: Inputs) -> tuple[Design, Motion, CycleMetrics]:
     check_request(angle_count(step), len(rpms), "step", step, limit=MAX_GUI_SAMPLES)
     angles = crank_angles(step)
     return design, solve(design, angles, rpms), analyze(design, rpms)
+
+
+def summarize(design: Design, rpm, masses: MassProperties, peaks: bool = True) -> DynamicsSummary:
+    """``core.forces.flywheel.summarize``, imported when first called: the first screen shows
+    no summary (the forces table is below the Results pane's fold), and the flywheel's
+    solver and peak search cost every start their imports (issue 43 item 5)."""
+    from core.forces.flywheel import summarize as solve_summary
+    return solve_summary(design, rpm, masses, peaks=peaks)
 
 
 class SummaryOnDemand:

@@ -226,6 +226,18 @@ class TickAxis(pg.AxisItem):
         return axis_spec, tick_specs, text_specs
 
 
+class HiddenAxis(pg.AxisItem):
+    """A side no plot of the app shows (top and right; all four of the scheme's): pyqtgraph
+    makes an axis for each side anyway, and each laid out its (never shown) label as HTML
+    five or six times while being made and styled, about half its cost: some 7 ms of the
+    window's first paint for its ten such axes (issue 43 item 5). Showing one would need
+    pyqtgraph's label back: none is ever shown. (Given to a plot, pyqtgraph shows it: the
+    plot hides it again.)"""
+
+    def _updateLabel(self) -> None:  # noqa: N802 - pyqtgraph's name
+        self.picture = None
+
+
 class NavViewBox(pg.ViewBox):
     """A view box with the app's mouse navigation (see the module docstring); the
     scheme's keeps the wheel on both axes and drags to pan (``x_wheel``/``box_zoom`` off).
@@ -273,7 +285,10 @@ def styled_plot_item(padding: float) -> pg.PlotItem:
     """A plot styled like every diagram of the app: opaque grid beneath the curves,
     fixed-width left axis, no SI prefixes, non-overlapping ticks, the app's navigation."""
     axes = {side: TickAxis(side) for side in ("left", "bottom")}
+    axes.update({side: HiddenAxis(side) for side in ("top", "right")})
     item = pg.PlotItem(viewBox=NavViewBox(), axisItems=axes)
+    for side in ("top", "right"):       # hidden, as pyqtgraph hides the axes it makes there
+        item.hideAxis(side)
     item.showGrid(x=True, y=True)
     item.setMenuEnabled(False)
     item.hideButtons()

@@ -83,7 +83,7 @@ class PlotSlots:
         self._hidden: set[str] = set()
         self._cursors: list[tuple[CursorLine, int]] = []
         self._regions: list[BandRect] = []
-        self._texts: list[pg.TextItem] = []
+        self._texts: list[pg.TextItem | None] = []     # made when first labelled
         self._bands: list[Band] = []
         self._labelled = False
 
@@ -205,26 +205,35 @@ class PlotSlots:
 
     # ---- bands --------------------------------------------------------------
     def set_bands(self, bands: list[Band], labelled: bool) -> bool:
-        """Shaded spans (and their labels); True when new items were made for them."""
+        """Shaded spans (and their labels); True when new items were made for them. A
+        band's text item is made the first time it shows a label: of a stack's bands only
+        the first plot's are labelled, and the Kinematics tab made nine text items before
+        the window's first paint to show two (issue 43 item 5)."""
         added = len(self._regions) < len(bands)
         while len(self._regions) < len(bands):
             region = BandRect(self.item.vb)
             region.setZValue(Z_BAND)
             self.item.addItem(region, ignoreBounds=True)
             self._regions.append(region)
-            text = pg.TextItem(anchor=(0.5, 0.0))
-            self.item.addItem(text, ignoreBounds=True)
-            self._texts.append(text)
-        for i, (region, text) in enumerate(zip(self._regions, self._texts)):
+            self._texts.append(None)
+        for i, region in enumerate(self._regions):
             shown = i < len(bands)
             region.setVisible(shown)
-            text.setVisible(shown and labelled and bool(bands[i].label))
+            text = self._texts[i]
+            wanted = shown and labelled and bool(bands[i].label)
+            if text is None and wanted:
+                text = self._texts[i] = pg.TextItem(anchor=(0.5, 0.0))
+                self.item.addItem(text, ignoreBounds=True)
+                added = True
+            if text is not None:
+                text.setVisible(wanted)
             if shown:
                 band = bands[i]
                 if region.brush().color() != band.brush:
                     region.setBrush(QBrush(band.brush))
                 region.set_span(band.start, band.end)
-                if text.toPlainText() != band.label or text.color != (band.colour or TEXT):
+                if text is not None and (text.toPlainText() != band.label
+                                         or text.color != (band.colour or TEXT)):
                     text.setText(band.label, color=band.colour or TEXT)
         self._bands, self._labelled = list(bands), labelled
         return added
@@ -239,7 +248,7 @@ class PlotSlots:
             return
         (_, _), (y_low, y_top) = self.item.vb.viewRange()
         for band, text in zip(self._bands, self._texts):
-            if not band.label:
+            if not band.label or text is None:
                 continue
             inside = [c.y[(c.x >= band.start) & (c.x <= band.end)] for c in self.shown_curves()]
             lowest, _ = finite_range(inside) if any(v.size for v in inside) else (y_low, y_top)
@@ -248,4 +257,4 @@ class PlotSlots:
             text.setPos((band.start + band.end) / 2.0, y_low if bottom else y_top)
 
     def band_labels(self) -> list[str]:
-        return [t.textItem.toPlainText() for t in self._texts if t.isVisible()]
+        return [t.textItem.toPlainText() for t in self._texts if t is not None and t.isVisible()]

@@ -13,7 +13,7 @@ from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath, QPen, QPolygonF
 from PySide6.QtWidgets import (QGraphicsItem, QGraphicsPathItem, QGraphicsRectItem, QGraphicsSimpleTextItem,
                                QGraphicsView)
 
-from shaperapp.plots.axes import NavViewBox, unlink_hidden_axes
+from shaperapp.plots.axes import HiddenAxis, NavViewBox, unlink_hidden_axes
 from shaperapp.widgets.style import CURSOR, FRAME, LINK, TOOL_PATH
 
 LINK_FILL = QColor(LINK.red(), LINK.green(), LINK.blue(), 38)
@@ -171,14 +171,15 @@ def canvas() -> pg.PlotWidget:
     """The plot the scheme draws on: to scale (x and y locked 1:1), no axes, no buttons and
     no pyqtgraph menu ("Export..."), navigated by its NavViewBox (drag pans, the wheel zooms
     both axes); the view box does not range itself, the scheme fits it."""
-    plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False))
+    plot = pg.PlotWidget(background="w", viewBox=NavViewBox(x_wheel=False, box_zoom=False),
+                         axisItems={side: HiddenAxis(side) for side in ("left", "bottom", "top", "right")})
     plot.setAntialiasing(True)
     # one repaint of the rectangle around a frame's changes, not one per moved item
     plot.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.BoundingRectViewportUpdate)
     plot.scene().contextMenu = []
     item = plot.getPlotItem()
-    item.hideAxis("left")
-    item.hideAxis("bottom")
+    for side in ("left", "bottom", "top", "right"):
+        item.hideAxis(side)
     unlink_hidden_axes(item)
     item.hideButtons()
     item.setMenuEnabled(False)

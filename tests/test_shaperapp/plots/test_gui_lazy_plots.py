@@ -60,6 +60,36 @@ def test_a_stack_makes_one_legend_per_group(qtbot, model, monkeypatch):
     assert list(plots.stack()._legends.values()) == made
 
 
+def test_a_band_gets_a_text_item_only_where_it_is_labelled(qtbot, model, monkeypatch):
+    """Issue 43 item 5: only the first plot labels its bands, so a band's text item is made
+    when it first shows a label: the Kinematics tab made one per band and plot (nine, of
+    which two were ever shown) before the window's first paint. The bands and their
+    labels are what the source gives."""
+    import pyqtgraph as pg
+    from shaperapp.plots import curves as curves_module
+    made = []
+
+    class Counted(pg.TextItem):
+        def __init__(self, *args, **kwargs):
+            super().__init__(*args, **kwargs)
+            made.append(self)
+    monkeypatch.setattr(curves_module.pg, "TextItem", Counted)
+    plots = shown(qtbot, PlotsWidget(model), 900, 700)
+    stack = plots.stack()
+    bands = stack._source.bands()
+    labelled = [band.label for band in bands if band.label]
+    assert labelled == ["working stroke", "return stroke"]
+    first, *others = stack._plots.values()
+    assert first.band_labels() == labelled
+    assert len(made) == len(labelled)
+    for plot in others:
+        assert plot.band_labels() == []
+        assert len(plot.bands()) == len(bands)            # every band still shaded
+    model.set_spec(time_ratio=1.6)                       # redrawn: the same items reused
+    qtbot.wait(10)
+    assert len(made) == len(labelled) and first.band_labels() == labelled
+
+
 def test_heights_wait_for_the_refresh_that_is_due(qtbot, model, monkeypatch):
     """Issue 43 item 5: a stack whose refresh is due (built hidden, or hidden since an edit)
     fits its plots' heights in that refresh, not at each step of its construction and of

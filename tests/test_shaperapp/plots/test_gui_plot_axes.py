@@ -104,3 +104,24 @@ def test_every_label_reads_its_tick_value(qtbot):
                     (height, low, span, value, text)
                 checked += 1
     assert checked > 200
+
+
+def test_the_sides_no_plot_shows_never_lay_out_their_labels(qtbot, monkeypatch):
+    """Issue 43 item 5: pyqtgraph makes an axis for every side of a plot, and each laid out
+    its label as HTML five or six times while made and styled; the app shows only the
+    plots' left and bottom axes and none of the scheme's, so the others lay out nothing.
+    The axes shown keep pyqtgraph's label."""
+    from shaperapp.scheme.draw import canvas
+    laid_out = []
+    real = pg.AxisItem._updateLabel
+    monkeypatch.setattr(pg.AxisItem, "_updateLabel", lambda axis: (laid_out.append(axis), real(axis)))
+    item = styled_plot_item(0.0)
+    scheme = canvas()
+    qtbot.addWidget(scheme)
+    sides = {side: item.getAxis(side) for side in ("left", "bottom", "top", "right")}
+    assert {side for side, axis in sides.items() if axis.isVisible()} == {"left", "bottom"}
+    assert not any(scheme.getPlotItem().getAxis(side).isVisible() for side in sides)
+    hidden = [sides["top"], sides["right"], *(scheme.getPlotItem().getAxis(side) for side in sides)]
+    assert not [axis for axis in laid_out if any(axis is h for h in hidden)]
+    item.setLabel("left", "Ram velocity", units="m/s")
+    assert "Ram velocity" in sides["left"].label.toHtml()

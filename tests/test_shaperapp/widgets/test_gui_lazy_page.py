@@ -182,7 +182,7 @@ WATCHED = ("shaperapp.explore", "shaperapp.compare", "shaperapp.vectors.view",
            "core.drawing.cam_dxf", "ezdxf", "numpy.ma.", "importlib.metadata",
            "core.cam.cam", "core.cam.build", "core.cam.synthesis", "core.cam.timing", "core.cam.file",
            "core.gear.checks", "core.gear.advice", "scipy", "core.forces.polygons", "core.files.dynamics_io",
-           "shaperapp.widgets.image_export")
+           "shaperapp.widgets.image_export", "core.forces.flywheel", "core.forces.torque_peaks")
 _when_painted(window, painted)
 app.exec()
 """
@@ -191,7 +191,9 @@ app.exec()
 def test_the_first_screen_imports_and_builds_only_what_it_shows(tmp_path):
     """At the window's first paint, the tabs behind Kinematics and the hidden library are
     neither built nor imported (issue 24: they cost a fifth of the start-up), nor the cam's
-    solver and the gear's checks behind the Cam and Gear tabs (issue 43 item 5)."""
+    solver and the gear's checks behind the Cam and Gear tabs, nor the forces' cycle
+    summary (the flywheel and the torque peaks), whose table is below the Results pane's
+    fold (issue 43 item 5)."""
     modules, built = _run_probe(PROBE, tmp_path, str(tmp_path / "s.ini"))[-2:]
     assert modules == "[]"
     assert built == "[]"       # the vector diagrams' dock, shown for a moment while tabbed, too
