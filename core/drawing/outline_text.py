@@ -8,6 +8,8 @@ Chinese sheets at best (kst32b.lff: 驱, 动, 转, ≥ …; unicode.lff far more
 missing character as a dot. It also takes the font from the style's *name*, not its file.
 A text drawn as its glyphs' outlines (HATCH entities, solid fill, layer TEXT) prints the
 same in every CAD program; it is no longer editable as text, which the GB style keeps.
+A DIMENSION rendered with CAD's own measurement ("<>", the scheme's) gets the text of its
+rendered block as outlines in its place (:func:`outline_dimension_texts`).
 
 The font is a CJK TrueType font with Latin and Greek (Noto Sans CJK SC, the PDF's, first),
 at the GB style's width factor 0.7; each run is squeezed further where the font would be
@@ -72,10 +74,15 @@ def drawn_width(run: Text, font) -> float:
     return font.get_text_length(run.text, run.height, squeeze(run, font))
 
 
-def add_outline_text(msp, item: Text, to: Callable[[float, float], tuple[float, float]],
-                     k: float) -> None:
+def _as_drawn(x: float, y: float) -> tuple[float, float]:
+    return float(x), float(y)
+
+
+def add_outline_text(msp, item: Text, to: Callable[[float, float], tuple[float, float]] = _as_drawn,
+                     k: float = 1.0) -> None:
     """``item`` as solid HATCH entities on its layer, each run at ``to`` of its paper
-    position and ``k`` times its paper size (a sheet with a model is drawn in the model's mm)."""
+    position and ``k`` times its paper size (a sheet with a model is drawn in the model's mm;
+    by default the drawing's own coordinates)."""
     font = outline_font()
     for run in closed_up(item, lambda r: drawn_width(r, font)):
         if not run.text.strip():
@@ -92,3 +99,26 @@ def add_outline_text(msp, item: Text, to: Callable[[float, float], tuple[float, 
                               distance=FLATNESS * run.height * k,
                               dxfattribs={"layer": item.layer})
 
+
+
+# MTEXT's attachment point (1 top left … 9 bottom right) as a Text's alignment
+ATTACHMENTS = {1: "lt", 2: "ct", 3: "rt", 4: "lm", 5: "cm", 6: "rm", 7: "lb", 8: "cb", 9: "rb"}
+
+
+def outline_dimension_texts(msp) -> None:
+    """Each rendered DIMENSION's text as outlines where its block shows it. Why: a dimension
+    whose text is CAD's own measurement ("θ = <>") is drawn by the reader in the style's
+    font, so LibreCAD leaves out its θ. The block's MTEXT (the measurement ezdxf put for
+    "<>") becomes HATCH entities on the dimension's layer, and the DIMENSION's own text is
+    blank (" "), as a sheet's is in outline (``sheet_dxf``): CAD keeps its lines and points
+    and draws no text of its own over the outline."""
+    blocks = msp.doc.blocks
+    for dim in msp.query("DIMENSION"):
+        block = blocks.get(dim.dxf.geometry)
+        for mtext in block.query("MTEXT"):
+            insert = mtext.dxf.insert
+            add_outline_text(msp, Text(mtext.plain_text(), (insert.x, insert.y), mtext.dxf.char_height,
+                                       ATTACHMENTS[mtext.dxf.attachment_point], mtext.get_rotation(),
+                                       dim.dxf.layer))
+            block.delete_entity(mtext)
+        dim.dxf.text = " "

@@ -11,6 +11,9 @@ between those points, so CAD measures them itself.
 Sizes that are no design data (pins, blocks, the ram's body, the tool, the
 ground symbols) scale with the unit ``u = L3 / 40``, as on screen; texts and
 arrows scale with the print scale (see :mod:`core.drawing.dimensions`).
+
+Its texts are TEXT in the GB style and CAD's own measurements, or (``cad_font`` "outline",
+for LibreCAD, which leaves out θ) every one as filled outlines (:mod:`core.drawing.outline_text`).
 """
 from __future__ import annotations
 
@@ -28,6 +31,8 @@ from core.linkage.geometry import Design
 from core.linkage.kinematics import shape
 from . import dimensions as dims
 from .dxf import CENTER, DASHED, OUTLINE, THIN, new_document, save_dxf, text_attribs
+from .outline_text import add_outline_text, outline_dimension_texts
+from .sheet import Text
 
 UNITS_PER_LEVER = 40.0       # u = L3 / 40
 ROOM_MM = dims.A3_ROOM_MM    # an A3 sheet's drawing area: the scale a print would use
@@ -64,8 +69,10 @@ def pose(design: Design, angle_deg: float) -> Pose:
                 u=design.lever / UNITS_PER_LEVER)
 
 
-def scheme_document(design: Design, angle_deg: float = 0.0) -> Drawing:
-    """The mechanism at crank angle ``angle_deg`` (0 … 360°) as a DXF document."""
+def scheme_document(design: Design, angle_deg: float = 0.0, cad_font: str = "gb") -> Drawing:
+    """The mechanism at crank angle ``angle_deg`` (0 … 360°) as a DXF document, its texts
+    in ``cad_font`` (``core.drawing.CAD_FONTS``): "gb" as TEXT and live dimension texts,
+    "outline" as their glyphs' outlines (OutlineFontMissing without a CJK font)."""
     angle = check_angle(angle_deg)
     p = pose(design, angle)
     doc = new_document()
@@ -77,19 +84,23 @@ def scheme_document(design: Design, angle_deg: float = 0.0) -> Drawing:
     size = extents.size
     scale = dims.print_scale(size.x, size.y)
     dims.add_dimstyle(doc, scale)
-    _draw_labels(msp, design, p, scale)
+    outline = cad_font == "outline"
+    _draw_labels(msp, design, p, scale, outline)
     _draw_dimensions(msp, design, p, lay, scale, extents.extmin.x)
+    if outline:
+        outline_dimension_texts(msp)
     whole = bbox.extents(msp)
     doc.set_modelspace_vport(height=whole.size.y * 1.1, center=tuple(whole.center)[:2])
     return doc
 
 
-def write_scheme(design: Design, angle_deg: float, path: str | os.PathLike) -> None:
-    """Write the scheme to ``path`` (.dxf) atomically; DesignError naming ``angle`` for a
-    bad angle and ``output`` for another suffix, before anything is written."""
+def write_scheme(design: Design, angle_deg: float, path: str | os.PathLike, cad_font: str = "gb") -> None:
+    """Write the scheme to ``path`` (.dxf) atomically, its texts in ``cad_font``; DesignError
+    naming ``angle`` for a bad angle and ``output`` for another suffix, before anything is
+    written."""
     if os.path.splitext(os.fspath(path))[1].lower() != ".dxf":
         raise DesignError("output", os.fspath(path), "the scheme is written as DXF: name a .dxf file")
-    save_dxf(scheme_document(design, angle_deg), path)
+    save_dxf(scheme_document(design, angle_deg, cad_font), path)
 
 
 @dataclass(frozen=True)
@@ -206,7 +217,7 @@ def _draw_links(msp, design: Design, p: Pose, lay: _Layout) -> None:
                   (x1 - 1.9 * u, y0 - 2.9 * u)])                     # tool bit
 
 
-def _draw_labels(msp, design: Design, p: Pose, scale: float) -> None:
+def _draw_labels(msp, design: Design, p: Pose, scale: float, outline: bool = False) -> None:
     """O2, O4, A, B (and C) beside their pins, clear of the links' lines and of L3's
     dimension (on the side of the lever away from O2): A and B on O2's side, A moved
     along the lever away from the crank; O4 on O2's side too, above the line that carries
@@ -226,8 +237,11 @@ def _draw_labels(msp, design: Design, p: Pose, scale: float) -> None:
     if design.rod is not None:
         places["C"] = p.c + np.array([0.0, -(gap + 1.5 * u)])
     for name, at in places.items():
-        msp.add_text(name, height=height, dxfattribs=text_attribs()) \
-            .set_placement(tuple(map(float, at)), align=TextEntityAlignment.MIDDLE_CENTER)
+        if outline:
+            add_outline_text(msp, Text(name, tuple(map(float, at)), height, "cm"))
+        else:
+            msp.add_text(name, height=height, dxfattribs=text_attribs()) \
+                .set_placement(tuple(map(float, at)), align=TextEntityAlignment.MIDDLE_CENTER)
 
 
 def _away_from_o2(design: Design, p: Pose) -> np.ndarray:

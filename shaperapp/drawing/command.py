@@ -127,8 +127,6 @@ def run(args: argparse.Namespace) -> int:
     else:
         spec, rpms, masses = inputs_from_args(args)
     if args.content == SCHEME:
-        if args.cad_font is not None:
-            raise UsageError("--cad-font: only with a sheet (the scheme's texts are CAD's own)")
         return write_scheme_file(spec.design(), args)
     choice = choice_from_args(args, len(rpms))
     stray = [option for option, dest in CAM_WORDS if getattr(args, dest) is not None]

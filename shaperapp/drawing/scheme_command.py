@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from core.cli.common import number
-from core.cli.output import OutputError
+from core.cli.output import OutputError, cad_font_from_args
 from shaperapp.widgets.command_line import check_output_folder
 
 if TYPE_CHECKING:
@@ -27,8 +27,9 @@ def add_scheme_options(parser: argparse.ArgumentParser) -> None:
 
 
 def write_scheme_file(design: Design, args: argparse.Namespace) -> int:
-    """The scheme at ``--angle`` to ``--output`` (a .dxf name): DesignError naming --angle,
-    OutputError naming --output, and nothing written, for bad words."""
+    """The scheme at ``--angle`` to ``--output`` (a .dxf name), its texts in ``--cad-font``:
+    DesignError naming --angle, OutputError naming --output, UsageError naming --cad-font
+    (no CJK font for outline), and nothing written, for bad words."""
     from core.drawing.scheme import check_angle, write_scheme   # ezdxf: not for --help
     angle = check_angle(number("angle", args.angle))
     target = Path(args.output)
@@ -36,8 +37,9 @@ def write_scheme_file(design: Design, args: argparse.Namespace) -> int:
         raise OutputError(f"--output: the scheme is written as DXF: the file name must end in "
                           f".dxf (got {target.name!r})")
     check_output_folder(args.output)
+    cad_font = cad_font_from_args(args, writes_dxf=True)
     try:
-        write_scheme(design, angle, target)
+        write_scheme(design, angle, target, cad_font)
     except OSError as exc:      # a WriteError: names the path and a plain reason
         raise OutputError(f"--output: {exc}") from None
     print(f"wrote {target} (scheme at φ = {angle:g}°, 1:1 in mm, DXF)")

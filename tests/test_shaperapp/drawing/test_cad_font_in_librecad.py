@@ -158,3 +158,56 @@ def test_a_subscript_sits_by_its_letter_in_librecad(tmp_path):
     assert columns.size and (gaps > 1).sum() == 1, gaps     # two glyphs: μ and l
     mm_per_px = 25.4 / DPI
     assert gaps.max() * mm_per_px < 0.25 * 7.0, gaps.max() * mm_per_px
+
+
+SCHEME = ("drawing", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40",
+          "--content", "scheme")
+
+
+def leftmost_glyph(path) -> tuple[float, float, float, float]:
+    """The box (x0, y0, x1, y1, model mm) of the first glyph of the angular dimension's text
+    (θ of "θ = 30°", the scheme's only angle) in the scheme's outline DXF: the leftmost of
+    the HATCH entities on the DIMENSIONS layer round that DIMENSION's text point."""
+    import ezdxf
+    from ezdxf import bbox
+    msp = ezdxf.readfile(path).modelspace()
+    (dim,) = [d for d in msp.query("DIMENSION") if d.dimtype == 2]     # the angle of two lines
+    mid = dim.dxf.text_midpoint
+    boxes = [bbox.extents([h]) for h in msp.query("HATCH[layer=='DIMENSIONS']")]
+    near = [b for b in boxes if abs(b.center.y - mid.y) < 20.0 and abs(b.center.x - mid.x) < 80.0]
+    first = min(near, key=lambda b: b.extmin.x)
+    return first.extmin.x, first.extmin.y, first.extmax.x, first.extmax.y
+
+
+def test_the_schemes_theta_prints_in_librecad(tmp_path):
+    """``--content scheme --cad-font outline``: LibreCAD prints the θ of the swing's angle
+    dimension where the outline DXF has it (a glyph as tall as the outline's, filling its
+    box); the default GB file, CAD's own "θ = <>", has no glyph there (LibreCAD drew a dot
+    elsewhere for θ). Model mm map to the print's pixels by the drawing's height (the
+    hatching over the guide way to the ground under O4, no text) and its right end."""
+    import ezdxf
+    from ezdxf import bbox
+    for font in ("gb", "outline"):
+        done = shaper_run_in_process(*SCHEME, "--cad-font", font, "-o", str(tmp_path / f"{font}.dxf"))
+        assert done.returncode == 0, done.stderr
+    extents = bbox.extents(ezdxf.readfile(tmp_path / "outline.dxf").modelspace())
+    x0, y0, x1, y1 = leftmost_glyph(tmp_path / "outline.dxf")
+    assert 0.6 * 20.0 < y1 - y0 < 1.2 * 20.0, (y0, y1)          # a glyph of the 5 mm × 4 text
+    found = {}
+    for font in ("gb", "outline"):
+        ink = printed(tmp_path, font)
+        scale = (ink.shape[0] - 1) / extents.size.y             # px per model mm
+        if font == "outline":
+            assert abs((ink.shape[1] - 1) / extents.size.x / scale - 1.0) < 0.01
+        right, top = ink.shape[1] - 1, 0
+
+        def px(x: float, y: float) -> tuple[int, int]:
+            return round(right - (extents.extmax.x - x) * scale), round(top + (extents.extmax.y - y) * scale)
+        (left, up), (end, down) = px(x0 - 1.0, y1 + 1.0), px(x1 + 1.0, y0 - 1.0)
+        box = ink[up:down + 1, left:end + 1]
+        rows = np.flatnonzero(box.any(axis=1))
+        found[font] = ((rows[-1] - rows[0] + 1) / box.shape[0] if rows.size else 0.0, box.mean())
+    span, fill = found["outline"]
+    assert span > 0.8 and fill > 0.15, found
+    span, fill = found["gb"]
+    assert span < 0.5 and fill < 0.05, found

@@ -20,10 +20,37 @@ def test_cad_font_without_a_dxf_is_one_line_naming_it(tmp_path):
         done = shaper(*args)
         assert done.returncode == 2
         assert done.stderr.strip().splitlines() == ["shaper: error: --cad-font: only when a .dxf is written"]
-    done = shaper("drawing", "--crank", "100", "--K", "1.4", "--stroke", "300", "--content", "scheme",
-                  "--cad-font", "outline", "-o", str(tmp_path / "s.dxf"))
-    assert done.returncode == 2 and done.stderr.startswith("shaper: error: --cad-font: only with a sheet")
     assert not list(tmp_path.iterdir())
+
+
+SCHEME = ("drawing", "--crank", "100", "--K", "1.4", "--stroke", "300", "--content", "scheme")
+
+
+def test_the_scheme_in_outline_has_no_text_of_its_own(tmp_path):
+    """--content scheme --cad-font outline: the joints' names and every dimension's text are
+    HATCH entities; each DIMENSION keeps its points, its text blank and its block without
+    one, so CAD draws no text over the outline. The default keeps TEXT and CAD's "<>"."""
+    for font in ("gb", "outline"):
+        done = shaper(*SCHEME, "--cad-font", font, "-o", str(tmp_path / f"{font}.dxf"))
+        assert done.returncode == 0, done.stderr
+    gb, outline = (ezdxf.readfile(tmp_path / f"{font}.dxf") for font in ("gb", "outline"))
+    names = {t.dxf.text for t in gb.modelspace().query("TEXT")}
+    assert names == {"O2", "O4", "A", "B"}
+    assert {d.dxf.text for d in gb.modelspace().query("DIMENSION")} == {
+        f"{name} = <>" for name in ("L1", "L2", "L3", "h", "H", "θ")}
+    msp = outline.modelspace()
+    assert len(msp.query("TEXT")) == len(msp.query("MTEXT")) == 0
+    dimensions = msp.query("DIMENSION")
+    assert len(dimensions) == 6 and {d.dxf.text for d in dimensions} == {" "}
+    assert not [e for d in dimensions for e in outline.blocks[d.dxf.geometry] if e.dxftype() == "MTEXT"]
+    assert len(msp.query("HATCH[layer=='TEXT']")) >= len(names)
+    measured = [e.plain_text() for d in gb.modelspace().query("DIMENSION")
+                for e in gb.blocks[d.dxf.geometry] if e.dxftype() == "MTEXT"]    # "θ = 30°" …
+    assert len(measured) == 6      # a glyph is one hatch or more (its holes inside it)
+    assert len(msp.query("HATCH[layer=='DIMENSIONS']")) >= sum(len(t.replace(" ", "")) for t in measured)
+    for font in ("gb", "outline"):      # the scheme is DXF alone, whatever the font
+        done = shaper(*SCHEME, "--cad-font", font, "-o", str(tmp_path / "s.pdf"))
+        assert done.returncode == 2 and "--output: the scheme is written as DXF" in done.stderr
 
 
 def test_outline_writes_no_text_and_gb_writes_gb_text(tmp_path):
