@@ -89,6 +89,25 @@
     </message>
 </context>
 <context>
+    <name>CadFontChoice</name>
+    <message>
+        <source>GB style (AutoCAD, ZWCAD; editable)</source>
+        <translation>GB 样式（AutoCAD、中望CAD；可编辑）</translation>
+    </message>
+    <message>
+        <source>Outlines (every CAD program, LibreCAD too)</source>
+        <translation>轮廓（所有 CAD 软件，含 LibreCAD）</translation>
+    </message>
+    <message>
+        <source>How a DXF writes its texts. GB style: text in the GB fonts (gbenor.shx, gbcbig.shx), editable in AutoCAD and ZWCAD, which have them; LibreCAD draws its Chinese as dots and leaves out its Greek letters. Outlines: each character as a filled outline, drawn alike by every CAD program, LibreCAD included, but no longer editable as text; they need a font with Chinese characters (fonts-noto-cjk).</source>
+        <translation>DXF 中文字的写法。GB 样式：以国标字体（gbenor.shx、gbcbig.shx）书写的文字，在装有这些字体的 AutoCAD 和中望CAD 中可编辑；LibreCAD 会把其中的汉字画成圆点，并漏掉希腊字母。轮廓：每个字符画成填充的轮廓，所有 CAD 软件（包括 LibreCAD）显示一致，但不能再作为文字编辑；需要一种含中文字形的字体（fonts-noto-cjk）。</translation>
+    </message>
+    <message>
+        <source>No font with Chinese characters is installed for the outlines: install one (on Debian/Ubuntu: fonts-noto-cjk) or choose the GB style.</source>
+        <translation>未安装可用于轮廓的含中文字形的字体：请安装一个（Debian/Ubuntu 上为 fonts-noto-cjk），或选择 GB 样式。</translation>
+    </message>
+</context>
+<context>
     <name>CamForm</name>
     <message>
         <source>Arm l</source>
@@ -1131,6 +1150,10 @@
         <source>Export course design: choose a folder</source>
         <translation>导出课程设计：选择文件夹</translation>
     </message>
+    <message>
+        <source>Nothing was written.</source>
+        <translation>未写入任何文件。</translation>
+    </message>
 </context>
 <context>
     <name>CourseOptionsDialog</name>
@@ -1153,6 +1176,10 @@
     <message>
         <source>Sheets at crank speed:</source>
         <translation>图纸所用曲柄转速：</translation>
+    </message>
+    <message>
+        <source>CAD texts of the DXFs:</source>
+        <translation>DXF 的 CAD 文字：</translation>
     </message>
 </context>
 <context>
@@ -2191,6 +2218,30 @@
     <message>
         <source>The sheet cannot be drawn: %1. Nothing was written.</source>
         <translation>无法绘制图纸：%1。未写入任何文件。</translation>
+    </message>
+    <message>
+        <source>PDF document</source>
+        <translation>PDF 文档</translation>
+    </message>
+    <message>
+        <source>SVG image</source>
+        <translation>SVG 图像</translation>
+    </message>
+    <message>
+        <source>DXF drawing</source>
+        <translation>DXF 图形</translation>
+    </message>
+    <message>
+        <source>File type:</source>
+        <translation>文件类型：</translation>
+    </message>
+    <message>
+        <source>CAD texts:</source>
+        <translation>CAD 文字：</translation>
+    </message>
+    <message>
+        <source>Nothing was written.</source>
+        <translation>未写入任何文件。</translation>
     </message>
 </context>
 <context>

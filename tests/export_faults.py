@@ -59,6 +59,21 @@ def quick_course(progress, file_done, **arguments):
     write_course_of(progress, file_done, **arguments)
 
 
+def quick_course_dxfs(progress, file_done, **arguments):
+    """The stand-in report, each sheet's PDF a stand-in too, its DXF the real one: for tests
+    about the DXFs."""
+    from shaperapp.course import write
+    real = write.write_sheet
+
+    def dxf_only(sheet, path, *args):
+        if path.endswith(".pdf"):
+            atomic_write(path, b"%PDF-1.4\n%%EOF\n")
+        else:
+            real(sheet, path, *args)
+    write.write_sheet = dxf_only
+    quick_course(progress, file_done, **arguments)
+
+
 def quick_course_cancelled_after_the_report(progress, file_done, **arguments):
     """The stand-in report written, then waiting for Cancel before the first sheet (as a
     user who presses it then)."""

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFileDialog,
-                               QFormLayout, QMessageBox, QWidget)
+                               QFormLayout, QLabel, QMessageBox, QWidget)
 
 from core.course_design.plan import CourseError, plan_course
 from core.files.design_file import parse_design
@@ -29,6 +29,7 @@ from core.files.io import design_document
 
 from shaperapp.design.document import saved_parts
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.cad_font import CadFontChoice, outline_font_problem
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.messages import describe_os_error, failure_reason
@@ -51,17 +52,21 @@ def key_names() -> dict[str, str]:
 
 @dataclass(frozen=True)
 class CourseOptions:
-    """What ``shaper course`` takes besides the design: --sheet, --dxf and --rpm-index."""
+    """What ``shaper course`` takes besides the design: --sheet, --dxf, --rpm-index and
+    --cad-font."""
 
     paper: str = "A1"
     dxf: bool = False
     speed: int = 0          # the sheets' speed, an index into the design's speeds
+    cad_font: str = "gb"    # the DXFs' texts (core.drawing.CAD_FONTS)
 
 
 class CourseOptionsDialog(QDialog):
-    """The sheets' paper (A0–A3), DXF beside each PDF, and the speed they are drawn at."""
+    """The sheets' paper (A0–A3), DXF beside each PDF (and its CAD texts), and the speed
+    they are drawn at. OK with outlines chosen and no font for them says so and stays."""
 
-    def __init__(self, model: DesignModel, parent: QWidget | None = None) -> None:
+    def __init__(self, model: DesignModel, parent: QWidget | None = None,
+                 settings: QSettings | None = None) -> None:
         super().__init__(parent)
         self.setWindowTitle(self.tr("Export course design"))
         self.paper = QComboBox()
@@ -75,30 +80,54 @@ class CourseOptionsDialog(QDialog):
         form.addRow(self.tr("Paper of the sheets:"), self.paper)
         form.addRow(self.tr("Sheets at crank speed:"), self.speed)
         form.addRow(self.dxf)
+        self.cad_font = CadFontChoice(settings)
+        self.cad_font.setEnabled(False)
+        form.addRow(self.tr("CAD texts of the DXFs:"), self.cad_font)
+        self.message = QLabel()
+        self.message.setWordWrap(True)
+        form.addRow(self.message)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
         form.addRow(buttons)
+        self.dxf.toggled.connect(self.cad_font.setEnabled)
+        self.dxf.toggled.connect(self._show_problem)
+        self.cad_font.currentIndexChanged.connect(self._show_problem)
+
+    def _show_problem(self) -> None:
+        self.message.setText(self.cad_font.problem())
+
+    def accept(self) -> None:
+        """Remember the CAD texts; not with outlines that cannot be drawn (the message says why)."""
+        self._show_problem()
+        if self.message.text():
+            return
+        if self.dxf.isChecked():
+            self.cad_font.remember()
+        super().accept()
 
     def options(self) -> CourseOptions:
-        return CourseOptions(self.paper.currentText(), self.dxf.isChecked(), self.speed.currentIndex())
+        return CourseOptions(self.paper.currentText(), self.dxf.isChecked(), self.speed.currentIndex(),
+                             self.cad_font.value() if self.dxf.isChecked() else "gb")
 
 
-def ask_course_options(model: DesignModel, parent: QWidget | None) -> CourseOptions | None:
+def ask_course_options(model: DesignModel, parent: QWidget | None,
+                       settings: QSettings | None = None) -> CourseOptions | None:
     """The options as the user chooses them, or None when the dialog is cancelled."""
-    dialog = CourseOptionsDialog(model, parent)
+    dialog = CourseOptionsDialog(model, parent, settings)
     accepted = dialog.exec() == QDialog.DialogCode.Accepted
     dialog.deleteLater()
     return dialog.options() if accepted else None
 
 
-def covering(model: DesignModel, settings: QSettings | None, paper: str = "A1", speed: int = 0) -> Covering:
+def covering(model: DesignModel, settings: QSettings | None, paper: str = "A1", speed: int = 0,
+             cad_font: str = "gb") -> Covering:
     """The design's name (its file's), today's date, the report dialog's cover fields, the
-    sheets' paper and speed."""
+    sheets' paper and speed, the DXFs' texts."""
     cover = {key: plain_text(str(settings.value(COVER_SETTINGS + key, "") or "")) if settings else ""
              for key in COVER_FIELDS}
     name = design_file_name(model.path) if model.path else ""
-    return Covering(paper, name, datetime.date.today().isoformat(), cover, speed=speed)
+    return Covering(paper, name, datetime.date.today().isoformat(), cover, cad_font=cad_font, speed=speed)
 
 
 def plan(model: DesignModel, folder: str, dxf: bool = False):
@@ -116,6 +145,8 @@ def refusal(exc: CourseError) -> str:
         text = translate("CourseExport", "The design lacks what the course design needs: %1. "
                          "Nothing was written.")
         return text.replace("%1", names)
+    if exc.option == "--cad-font":      # outline_font_problem's words, already translated
+        return exc.reason + " " + translate("CourseExport", "Nothing was written.")
     if exc.option == "--output":
         return translate("CourseExport", "Nothing can be written into this folder; choose another. "
                          "Nothing was written.")
@@ -130,11 +161,15 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
     """Start writing the course design into ``folder`` in a child process, under a progress
     dialog that leaves the window usable; returns the running export, whose ``result`` at
     its end is the paths written and '' or why it stopped (in the UI's language).
-    CourseError (nothing started) when the design cannot make one (:func:`refusal`)."""
+    CourseError (nothing started) when the design cannot make one (:func:`refusal`), or
+    when the DXFs' outlines find no font (``--cad-font``)."""
     course = plan(model, folder, options.dxf)
+    problem = outline_font_problem(options.cad_font) if options.dxf else ""
+    if problem:
+        raise CourseError("--cad-font", problem)
     total = len(course.files)
     job = job_bytes(write_course_of, language, course=course, language=language,
-                    covering=covering(model, settings, options.paper, options.speed))
+                    covering=covering(model, settings, options.paper, options.speed, options.cad_font))
 
     def conclude(run: ChildExport) -> tuple[list[str], str]:
         written = list(run.files)
@@ -170,7 +205,7 @@ def export_course_dialog(model: DesignModel, parent: QWidget, language: str, sta
     """Ask for the options and a folder and start writing the course design into it;
     returns the running export (its ``result``: :func:`export_course`'s) or None when
     nothing was started. A refusal or a failure is shown in a message."""
-    options = ask_course_options(model, parent)
+    options = ask_course_options(model, parent, settings)
     if options is None:
         return None
     folder = QFileDialog.getExistingDirectory(

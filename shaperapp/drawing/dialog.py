@@ -5,6 +5,8 @@ The sheet is built from the model's design on screen, the speed chosen of its sp
 (the first unless another is chosen; the title block shows it) and its
 loads (the cam sheet from the Cam tab's last valid cam, the gear sheet from the design's
 gear pair, ``shaperapp.design.gear_source``), in the UI's language, by the same code as ``shaper drawing``.
+The file type is chosen before Save… so that the CAD texts (``--cad-font``) can be offered
+for a DXF alone; a name typed with another type's suffix still writes that type.
 """
 from __future__ import annotations
 
@@ -27,6 +29,7 @@ from core.course_design.positions import DEFAULT_COUNT
 
 from shaperapp.design.gear_source import design_gear
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.cad_font import CadFontChoice, missing_font_text
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.gear_messages import describe_gear_error
@@ -98,6 +101,12 @@ class DrawingSheetDialog(QDialog):
             edit.setMaxLength(MAX_TEXT)
             if settings is not None and key in COVER_FIELDS:
                 edit.setText(str(settings.value(COVER_SETTINGS + key, "") or ""))
+        self.file_type = QComboBox()
+        for label, suffix in ((self.tr("PDF document"), ".pdf"), (self.tr("SVG image"), ".svg"),
+                              (self.tr("DXF drawing"), ".dxf")):
+            self.file_type.addItem(label, suffix)
+        self.cad_font = CadFontChoice(settings)
+        self.cad_font.setEnabled(False)         # a PDF until DXF is chosen
         form = QFormLayout()
         form.addRow(self.tr("Paper:"), self.paper)
         form.addRow(self.tr("Content:"), self.content)
@@ -105,6 +114,8 @@ class DrawingSheetDialog(QDialog):
         form.addRow(self.tr("Positions:"), self.count)
         form.addRow(self.tr("Polygons at φ (working stroke):"), self.angles[0])
         form.addRow(self.tr("Polygons at φ (return stroke):"), self.angles[1])
+        form.addRow(self.tr("File type:"), self.file_type)
+        form.addRow(self.tr("CAD texts:"), self.cad_font)
         form.addRow(self.tr("Design name:"), self.fields["design"])
         for key, label in zip(COVER_FIELDS + ("date",), (
                 self.tr("Student:"), self.tr("Student number:"), self.tr("Class:"), self.tr("School:"),
@@ -124,8 +135,11 @@ class DrawingSheetDialog(QDialog):
         layout = QHBoxLayout(self)
         layout.addLayout(form)
         layout.addWidget(self.preview, 1)
+        self._drawn_note = ""           # what the preview says (why it is empty, the cam's note)
         self._default_angles()
         self._content = self.content.currentData()
+        self.file_type.currentIndexChanged.connect(self._type_changed)
+        self.cad_font.currentIndexChanged.connect(self._show_notes)
         self.content.currentIndexChanged.connect(self._content_changed)
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
@@ -160,6 +174,15 @@ class DrawingSheetDialog(QDialog):
         item.setEnabled(has_gear)
         if not has_gear:
             self.content.setItemData(index, why, Qt.ItemDataRole.ToolTipRole)
+
+    def _type_changed(self) -> None:
+        """The CAD texts are a DXF's alone."""
+        self.cad_font.setEnabled(self.file_type.currentData() == ".dxf")
+        self._show_notes()
+
+    def _show_notes(self) -> None:
+        """Under the choices: the preview's note, then why the chosen outlines cannot be drawn."""
+        self.message.setText(" ".join(t for t in (self._drawn_note, self.cad_font.problem()) if t))
 
     def _content_changed(self) -> None:
         """The polygon angles are the linkage sheets' choice, not the cam's or the gear's; the
@@ -202,7 +225,8 @@ class DrawingSheetDialog(QDialog):
             sheet = self.sheet()
         except Exception as exc:        # never to sys.excepthook: the reason, in the dialog
             self.preview.setPixmap(QPixmap())
-            self.message.setText(self.tr("The sheet cannot be drawn: %1").replace("%1", failure_reason(exc)))
+            self._drawn_note = self.tr("The sheet cannot be drawn: %1").replace("%1", failure_reason(exc))
+            self._show_notes()
             return
         px = PREVIEW_WIDTH / sheet.paper.width * 2.0         # 2× for a sharp preview on HiDPI
         image = QImage(round(sheet.paper.width * px), round(sheet.paper.height * px),
@@ -212,13 +236,14 @@ class DrawingSheetDialog(QDialog):
         painter.scale(px, px)
         try:
             paint_sheet(sheet, painter, self.language)
-            self.message.setText(self._cam_note())
+            self._drawn_note = self._cam_note()
         except MissingFontError:
-            self.message.setText(self.tr("No font with Chinese characters is installed: install one "
-                                         "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
-                                         "to English."))
+            self._drawn_note = self.tr("No font with Chinese characters is installed: install one "
+                                       "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
+                                       "to English.")
         finally:
             painter.end()
+        self._show_notes()
         pixmap = QPixmap.fromImage(image)
         pixmap.setDevicePixelRatio(2.0)
         self.preview.setPixmap(pixmap)
@@ -230,29 +255,42 @@ class DrawingSheetDialog(QDialog):
         return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
 
     def export(self, path: str) -> None:
-        """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix). SheetTypeError (a
-        ValueError) for another suffix, before anything is built; MissingFontError, OSError as
-        the writer raises, and whatever building the sheet raises."""
-        if os.path.splitext(path)[1].lower() not in SHEET_SUFFIXES:
+        """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix; a DXF's texts as the CAD
+        texts choice says). SheetTypeError (a ValueError) for another suffix, before anything
+        is built; MissingFontError, OutlineFontMissing (no CJK font for the outlines: nothing
+        written), OSError as the writer raises, and whatever building the sheet raises."""
+        suffix = os.path.splitext(path)[1].lower()
+        if suffix not in SHEET_SUFFIXES:
             raise SheetTypeError(os.path.basename(path))
-        write_sheet(self.sheet(), path, self.language, self.choice().design_name)
+        write_sheet(self.sheet(), path, self.language, self.choice().design_name, self.cad_font.value())
         self.written = path
+        if suffix == ".dxf":
+            self.cad_font.remember()
         if self._settings is not None:
             for key in COVER_FIELDS:
                 self._settings.setValue(COVER_SETTINGS + key, self.fields[key].text().strip())
 
     def _save_dialog(self) -> None:
-        start = os.path.join(self._start_dir(), f"{self.content.currentData()}.pdf")
+        from core.drawing.outline_text import OutlineFontMissing   # ezdxf: on demand
+        suffix = self.file_type.currentData()
+        start = os.path.join(self._start_dir(), f"{self.content.currentData()}{suffix}")
         filters = {self.tr("PDF document (*.pdf)"): ".pdf", self.tr("SVG image (*.svg)"): ".svg",
                    self.tr("DXF drawing (*.dxf)"): ".dxf"}
-        path, chosen = QFileDialog.getSaveFileName(self, self.windowTitle(), start, ";;".join(filters))
+        chosen = next(name for name, kind in filters.items() if kind == suffix)
+        path, chosen = QFileDialog.getSaveFileName(self, self.windowTitle(), start, ";;".join(filters),
+                                                   chosen)
         if not path:
             return
         if not os.path.splitext(os.path.basename(path))[1]:     # typed without a type
-            path += filters.get(chosen, ".pdf")
+            path += filters.get(chosen, suffix)
+        typed = self.file_type.findData(os.path.splitext(path)[1].lower())
+        if typed >= 0:                  # the type written is the one shown (and its CAD texts)
+            self.file_type.setCurrentIndex(typed)
         QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
         try:
             self.export(path)
+        except OutlineFontMissing:
+            failure = missing_font_text() + " " + self.tr("Nothing was written.")
         except SheetTypeError:
             failure = self.tr("A drawing sheet is written as PDF (.pdf), SVG (.svg) or DXF (.dxf); "
                               "%1 is none of them. Nothing was written.")

@@ -1,0 +1,69 @@
+"""The "CAD texts" choice of the dialogs that write DXF: the GB style or outlines.
+
+The GUI's side of ``--cad-font`` (``core.drawing.CAD_FONTS``): a DXF's texts either as text
+in the GB style, editable in AutoCAD and ZWCAD, or as filled glyph outlines, which every
+CAD program draws alike, LibreCAD 2.2 included (it draws the GB style's Chinese as dots
+and leaves out its Greek letters). The drawing dialog and the course export offer the same
+combo box, remembered under one settings key: a user whose CAD is LibreCAD wants outlines
+in every DXF.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QSettings
+from PySide6.QtWidgets import QComboBox, QWidget
+
+CAD_FONT_SETTING = "export/cadFont"     # QSettings key: "gb" or "outline"
+
+
+def outline_font_problem(cad_font: str) -> str:
+    """'' or one line, in the UI's language, saying why ``cad_font`` cannot be drawn: for
+    "outline", no font with Chinese characters (core's lookup, ``outline_text.outline_font``,
+    refuses); "gb" needs none."""
+    if cad_font != "outline":
+        return ""
+    from core.drawing.outline_text import OutlineFontMissing, outline_font   # ezdxf: on demand
+    try:
+        outline_font()
+    except OutlineFontMissing:
+        return missing_font_text()
+    return ""
+
+
+def missing_font_text() -> str:
+    """Why outlines cannot be drawn, and what to do, in the UI's language."""
+    return QCoreApplication.translate(
+        "CadFontChoice", "No font with Chinese characters is installed for the outlines: "
+        "install one (on Debian/Ubuntu: fonts-noto-cjk) or choose the GB style.")
+
+
+class CadFontChoice(QComboBox):
+    """GB style (the default, as ``--cad-font``'s) or outlines; the dialog disables it
+    while no DXF will be written."""
+
+    def __init__(self, settings: QSettings | None = None, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._settings = settings
+        self.addItem(self.tr("GB style (AutoCAD, ZWCAD; editable)"), "gb")
+        self.addItem(self.tr("Outlines (every CAD program, LibreCAD too)"), "outline")
+        self.setToolTip(self.tr(
+            "How a DXF writes its texts. GB style: text in the GB fonts (gbenor.shx, gbcbig.shx), "
+            "editable in AutoCAD and ZWCAD, which have them; LibreCAD draws its Chinese as dots "
+            "and leaves out its Greek letters. Outlines: each character as a filled outline, drawn "
+            "alike by every CAD program, LibreCAD included, but no longer editable as text; they "
+            "need a font with Chinese characters (fonts-noto-cjk)."))
+        stored = str(settings.value(CAD_FONT_SETTING, "gb") or "gb") if settings is not None else "gb"
+        self.setCurrentIndex(max(self.findData(stored), 0))       # a damaged value: the default
+
+    def value(self) -> str:
+        """"gb" or "outline", as ``write_sheet`` and ``Covering`` take it."""
+        return str(self.currentData())
+
+    def remember(self) -> None:
+        """Keep the choice for the next dialog (when the file is written, as the cover fields)."""
+        if self._settings is not None:
+            self._settings.setValue(CAD_FONT_SETTING, self.value())
+
+    def problem(self) -> str:
+        """:func:`outline_font_problem` of the choice while it is enabled (a PDF or an SVG
+        needs no outline font)."""
+        return outline_font_problem(self.value()) if self.isEnabled() else ""
