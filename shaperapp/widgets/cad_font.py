@@ -9,6 +9,8 @@ in every DXF.
 """
 from __future__ import annotations
 
+import html
+
 from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import QComboBox, QWidget
 
@@ -45,12 +47,13 @@ class CadFontChoice(QComboBox):
         self._settings = settings
         self.addItem(self.tr("GB style (AutoCAD, ZWCAD; editable)"), "gb")
         self.addItem(self.tr("Outlines (every CAD program, LibreCAD too)"), "outline")
-        self.setToolTip(self.tr(
+        # in <p>: rich text, which Qt wraps (a plain tooltip this long ran off the screen)
+        self.setToolTip("<p>" + html.escape(self.tr(
             "How a DXF writes its texts. GB style: text in the GB fonts (gbenor.shx, gbcbig.shx), "
             "editable in AutoCAD and ZWCAD, which have them; LibreCAD draws its Chinese as dots "
             "and leaves out its Greek letters. Outlines: each character as a filled outline, drawn "
             "alike by every CAD program, LibreCAD included, but no longer editable as text; they "
-            "need a font with Chinese characters (fonts-noto-cjk)."))
+            "need a font with Chinese characters (fonts-noto-cjk).")) + "</p>")
         stored = str(settings.value(CAD_FONT_SETTING, "gb") or "gb") if settings is not None else "gb"
         self.setCurrentIndex(max(self.findData(stored), 0))       # a damaged value: the default
 
