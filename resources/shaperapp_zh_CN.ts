@@ -1486,12 +1486,16 @@
         <translation>导出机构简图为 DXF</translation>
     </message>
     <message>
-        <source>DXF drawing (*.dxf)</source>
-        <translation>DXF 图形 (*.dxf)</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>DXF drawing, texts in the GB style for AutoCAD and ZWCAD (*.dxf)</source>
+        <translation>DXF 图形，文字为 GB 样式，供 AutoCAD 和中望CAD 使用 (*.dxf)</translation>
+    </message>
+    <message>
+        <source>DXF drawing, texts as outlines for every CAD program, LibreCAD too (*.dxf)</source>
+        <translation>DXF 图形，文字为轮廓，供所有 CAD 软件（含 LibreCAD）使用 (*.dxf)</translation>
     </message>
 </context>
 <context>

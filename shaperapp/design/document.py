@@ -17,6 +17,7 @@ from core.files.io import atomic_write, curves_csv, load_design, masses_to_dict,
 from core.linkage.spec import Spec
 
 from shaperapp.widgets import file_dialogs
+from shaperapp.widgets.cad_font import CAD_FONT_SETTING, missing_font_text
 from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
 
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
@@ -82,10 +83,11 @@ class Document(QObject):
         from core.files.dynamics_io import dynamics_csv     # not imported before the first paint
         return self._write(path, dynamics_csv(self._model.dynamics))
 
-    def export_scheme_dxf_to(self, path: str) -> bool:
+    def export_scheme_dxf_to(self, path: str, cad_font: str = "gb") -> bool:
         """The mechanism at the current crank angle for CAD, as ``shaper drawing --content
-        scheme`` writes it. A name without a suffix gets ``.dxf``; another suffix is
-        refused (a DXF under a .png name would open nowhere)."""
+        scheme --cad-font`` writes it. A name without a suffix gets ``.dxf``; another suffix
+        is refused (a DXF under a .png name would open nowhere); outlines without a font for
+        them write nothing."""
         suffix = os.path.splitext(path)[1]
         if not suffix:
             path += ".dxf"
@@ -95,11 +97,13 @@ class Document(QObject):
             return False
         # ezdxf takes about a tenth of a second to import: only when a DXF is asked for
         from core.drawing.dxf import DxfAuditError
+        from core.drawing.outline_text import OutlineFontMissing
         from core.drawing.scheme import write_scheme
         try:
-            write_scheme(self._model.design, self._model.crank_deg, path)
-        except (OSError, DxfAuditError) as exc:
-            reason = describe_os_error(exc) if isinstance(exc, OSError) else str(exc)
+            write_scheme(self._model.design, self._model.crank_deg, path, cad_font)
+        except (OSError, DxfAuditError, OutlineFontMissing) as exc:
+            reason = (describe_os_error(exc) if isinstance(exc, OSError) else missing_font_text()
+                      if isinstance(exc, OutlineFontMissing) else str(exc))
             self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path).replace("%2", reason))
             return False
         return True
@@ -220,9 +224,19 @@ class Document(QObject):
         if not self.confirm_valid(parent, saving=False):
             return False
         start = os.path.join(self.last_dir(), "scheme.dxf")
-        path = file_dialogs.save_file_name(parent, self.tr("Export scheme as DXF"), start,
-                                           self.tr("DXF drawing (*.dxf)"))
-        return bool(path) and self.export_scheme_dxf_to(path)
+        # the CAD texts (--cad-font) as two filters of one type, the last DXF's choice first
+        kinds = {self.tr("DXF drawing, texts in the GB style for AutoCAD and ZWCAD (*.dxf)"): "gb",
+                 self.tr("DXF drawing, texts as outlines for every CAD program, LibreCAD too (*.dxf)"):
+                     "outline"}
+        remembered = str(self._settings.value(CAD_FONT_SETTING, "gb") or "gb")
+        path, chosen = file_dialogs.save_file_and_filter(
+            parent, self.tr("Export scheme as DXF"), start, ";;".join(kinds),
+            next((name for name, kind in kinds.items() if kind == remembered), ""))
+        cad_font = kinds.get(chosen, "gb")
+        if not path or not self.export_scheme_dxf_to(path, cad_font):
+            return False
+        self._settings.setValue(CAD_FONT_SETTING, cad_font)
+        return True
 
     def _csv_path(self, parent: QWidget, title: str, name: str) -> str:
         start = os.path.join(self.last_dir(), name)

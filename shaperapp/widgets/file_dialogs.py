@@ -75,7 +75,17 @@ def open_file_name(parent: QWidget | None, title: str, start: str, filters: str)
 
 def save_file_name(parent: QWidget | None, title: str, start: str, filters: str) -> str:
     """A file name to write (overwriting is confirmed by the dialog), or '' when cancelled."""
+    return save_file_and_filter(parent, title, start, filters)[0]
+
+
+def save_file_and_filter(parent: QWidget | None, title: str, start: str, filters: str,
+                         selected: str = "") -> tuple[str, str]:
+    """:func:`save_file_name` and the filter chosen with it, ``selected`` first: where two
+    filters of one type say how it is written (the scheme's DXF texts). ('', '') when cancelled."""
     dialog = _dialog(parent, title, start, filters)
     dialog.setAcceptMode(QFileDialog.AcceptMode.AcceptSave)
     dialog.setFileMode(QFileDialog.FileMode.AnyFile)
-    return _run(dialog)
+    if selected:
+        dialog.selectNameFilter(selected)
+    path = _run(dialog)
+    return path, dialog.selectedNameFilter() if path else ""

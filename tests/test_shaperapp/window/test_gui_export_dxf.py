@@ -10,6 +10,7 @@ from core.linkage.kinematics import shape
 from shaperapp.design.document import Document
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs
+from shaperapp.widgets.cad_font import CAD_FONT_SETTING
 
 
 @pytest.fixture
@@ -33,7 +34,7 @@ def test_menu_writes_the_design_on_screen_at_its_angle(window, tmp_path, monkeyp
     window.model.set_angle_deg(130.0)
     angle = window.model.crank_deg
     target = tmp_path / "scheme.dxf"
-    monkeypatch.setattr(file_dialogs, "save_file_name", lambda *args: str(target))
+    monkeypatch.setattr(file_dialogs, "save_file_and_filter", lambda *args: (str(target), ""))
     window.act_scheme_dxf.trigger()
     design = window.model.design
     assert design.rod is not None and math.isclose(design.time_ratio, 1.5)
@@ -67,3 +68,37 @@ def test_menu_text_in_chinese(window, qtbot):
     window.set_language("zh_CN")
     qtbot.waitUntil(lambda: window.tabs.tabText(2) == "位置", timeout=10_000)
     assert window.act_scheme_dxf.text().startswith("导出机构简图为 DXF")
+
+
+def test_the_cad_texts_are_the_filter_chosen_and_remembered(window, tmp_path, monkeypatch):
+    """Two filters of DXF: the GB style (first, the default) and outlines, as ``shaper drawing
+    --content scheme --cad-font``; the one chosen is offered first the next time."""
+    asked = []
+
+    def answer(parent, title, start, filters, selected=""):
+        asked.append((filters.split(";;"), selected))
+        return str(tmp_path / f"scheme{len(asked)}.dxf"), filters.split(";;")[1]
+    monkeypatch.setattr(file_dialogs, "save_file_and_filter", answer)
+    window.act_scheme_dxf.trigger()
+    (names, selected), = asked
+    assert len(names) == 2 and "GB style" in names[0] and "outlines" in names[1]
+    assert selected == names[0]                             # nothing remembered: GB
+    msp = ezdxf.readfile(tmp_path / "scheme1.dxf").modelspace()
+    assert len(msp.query("TEXT")) == 0 and {d.dxf.text for d in msp.query("DIMENSION")} == {" "}
+    assert len(msp.query("HATCH[layer=='DIMENSIONS']")) > 20
+    assert window.settings.value(CAD_FONT_SETTING) == "outline"
+    window.act_scheme_dxf.trigger()
+    assert asked[1][1] == names[1]
+
+
+def test_outlines_without_a_font_are_reported_and_nothing_written(document, tmp_path, qtbot, monkeypatch):
+    from core.drawing import outline_text
+    monkeypatch.setattr(outline_text, "OUTLINE_FONTS", (("no-such-font.ttf", 0, "None Such"),))
+    outline_text.outline_font.cache_clear()
+    try:
+        with qtbot.waitSignal(document.failed, timeout=10_000) as blocker:
+            assert not document.export_scheme_dxf_to(str(tmp_path / "s.dxf"), "outline")
+    finally:
+        outline_text.outline_font.cache_clear()
+    assert "No font with Chinese characters is installed for the outlines" in blocker.args[0]
+    assert "\n" not in blocker.args[0] and not (tmp_path / "s.dxf").exists()
