@@ -15,6 +15,7 @@ import numpy as np
 
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
+from core.linkage.turns import wrap_turn
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
@@ -200,7 +201,7 @@ def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassPropert
     kinetic, potential = stored.kinetic, stored.potential
     x = stored.ram_x - start[2]
     idle = masses.idle_fraction * d.stroke
-    turn = np.broadcast_to(np.mod(phi, 2.0 * math.pi), np.shape(x))
+    turn = np.broadcast_to(wrap_turn(phi), np.shape(x))
     travel = np.where(turn <= math.pi + d.theta, np.clip(x, idle, d.stroke - idle) - idle,
                       d.stroke - 2.0 * idle)
     if np.ndim(w2) > np.ndim(kinetic):                           # a speed axis before the angles

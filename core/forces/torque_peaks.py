@@ -13,13 +13,13 @@ convex in ω², reaches the candidates already known at that speed (:func:`chord
 """
 from __future__ import annotations
 
-import math
 from typing import NamedTuple
 
 import numpy as np
 
 from core.linkage.designs import Designs
 from core.linkage.polish import newton_maximum
+from core.linkage.turns import TURN, wrap_turn
 from .jet import TorqueJet, torque_jet
 from .masses import MassProperties
 
@@ -29,19 +29,18 @@ def reaches(lo: np.ndarray, hi: np.ndarray, on: np.ndarray, off: np.ndarray,
     cut [on, off] (``cutting``) or into the rest of the cycle: those where an extremum or a
     zero of that piece can lie (the pieces take the crank angle modulo 2π). Kept with a
     margin of 1e-9 rad, so one on a switch angle is never lost to rounding."""
-    first = np.mod(lo, 2.0 * math.pi)
+    first = wrap_turn(lo)
     last = first + (hi - lo)                       # beyond 2π where the cell wraps
     slack = 1e-9
     if cutting:
         return ((first <= off + slack) & (last >= on - slack)) | \
-            (last - 2.0 * math.pi >= on - slack)
+            (last - TURN >= on - slack)
     return ~((first > on + slack) & (last < off - slack))
 
 
 def on_arc(t: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """t (rad, any turn) lies on the arc from a to b."""
-    period = 2.0 * math.pi
-    return np.mod(t - a, period) <= np.mod(b - a, period)
+    return wrap_turn(t - a) <= wrap_turn(b - a)
 
 
 def pair_extremes(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
