@@ -17,10 +17,11 @@ from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
 from core.linkage.turns import wrap_turn
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
+from .cells import (DIRECT_SPEEDS, Window, cell_ends, cell_index, on_arc, pair_extremes,
+                    switch_window, turning_cells)
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, cell_ends, cell_index, on_arc,
-                           pair_extremes, piece_peaks, switch_window, turning_cells)
+from .torque_peaks import PEAK_GAIN, piece_peaks
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import needs_crowding, sharp_angles
@@ -131,7 +132,7 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     omega = np.asarray(omega, dtype=float)
     size = designs.shape[0] if designs.shape else 1
     # Arrays over designs × speeds × angles are formed only for the curves and for a few
-    # speeds (core.forces.torque_peaks.DIRECT_SPEEDS); otherwise the per-speed arrays are
+    # speeds (core.forces.cells.DIRECT_SPEEDS); otherwise the per-speed arrays are
     # the cells found, some 5 per design and speed for the torque alone, each evaluated
     # through the jet's temporaries: a chunk shrinks with a quarter of the speeds (at 16
     # speeds, 10^4 designs peaked at 199 MB without it, 104 MB before).
@@ -220,7 +221,7 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     jumps and E has a kink, so its extremes lie at a kink or at a zero of its slope
     T − T_mean inside a smooth piece. The slope of each piece (torque with and without the
     cut) is smooth over the whole cycle and affine in ω², so its sign changes at every speed
-    are found on the samples at once (:func:`core.forces.torque_peaks.turning_cells`: the
+    are found on the samples at once (:func:`core.forces.cells.turning_cells`: the
     grid's, plus the rod variant's samples crowding toward its sharp angles), and each is
     polished by Newton's method on the closed-form slope (every one: E may have several
     nearly equal peaks, and skipping cells by their end tangents missed some near a rod's
@@ -230,7 +231,7 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
     ``start`` the stored energy (kinetic, potential) and the ram's x at φ = 0, ``mean`` the
     mean torque (designs,), ``window`` the cut's switch angles with the jet there and the
-    cells of each piece (:func:`core.forces.torque_peaks.switch_window`).
+    cells of each piece (:func:`core.forces.cells.switch_window`).
     """
     from core.linkage.polish import newton_maximum
 
@@ -304,7 +305,7 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
     them, samples crowding toward the rod variant's sharp angles (one segment each), where its
     torque can change faster than the grid resolves. Every array is the same at all
     speeds: a speed's torque and slope are sums of them, taken by flat index
-    (:func:`core.forces.torque_peaks.gather`), so each is C-contiguous.
+    (:func:`core.forces.cells.gather`), so each is C-contiguous.
     """
     col = d.column()
     n = grid.static.shape[-1] - 1

@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from test_sweep_fast_paths import rod_family, skewed_peak
 from test_sweep_loaded import KEYS, _loads, random_family
 
+import core.forces.cells as cells_
 import core.forces.flywheel as flywheel
 import core.forces.torque_peaks as torque_peaks
 import core.linkage.polish as polish
@@ -46,17 +47,17 @@ def test_a_cells_chord_bound_lies_above_its_largest_value_on_401_angles():
     grid = torque_jet(d.column(), phi, LOADS)
     samples = flywheel._torque_samples(d, grid, LOADS)
     on, off = cut_window(d, LOADS.idle_fraction, (phi, grid.ram_x))
-    window = torque_peaks.switch_window(d, samples, on, off, LOADS)
+    window = cells_.switch_window(d, samples, on, off, LOADS)
     jet = samples[1]
     checked = 0
     for k, cutting in enumerate((1.0, 0.0)):
         values = (jet.static + cutting * jet.cut, jet.inertial)
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
-        for kind, cells in torque_peaks.turning_cells(slopes, w2, window.cells[k]):
+        for kind, cells in cells_.turning_cells(slopes, w2, window.cells[k]):
             sign = 1.0 - 2.0 * kind
             both = (cells.below >= 0) & (cells.above >= 0)
-            cells = torque_peaks.Cells(*(v[both] for v in cells))
-            ends = torque_peaks.cell_ends(values, torque_peaks.cell_index(values[0].shape[-1], cells))
+            cells = cells_.Cells(*(v[both] for v in cells))
+            ends = cells_.cell_ends(values, cells_.cell_index(values[0].shape[-1], cells))
             sides = [torque_peaks.cell_top(ends, w2, sign, s) for s in (cells.below, cells.above)]
             polished = np.zeros(cells.design.size, dtype=bool)
             bound = torque_peaks.chord_bounds(w2, cells.speed, (cells.below, sides[0], sides[0]),
