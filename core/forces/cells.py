@@ -144,12 +144,13 @@ class Window(NamedTuple):
     """The cut's switch angles (rad, (designs,)) and what the torque's and the energy's
     searches both take from them: the jet there (each field (designs, 2): at on, at off),
     and per piece, the cut then the rest, the cells between samples that reach into it
-    (:func:`piece_cells`)."""
+    (:func:`piece_cells`) and which samples lie in it (flat, one per sample)."""
 
     on: np.ndarray
     off: np.ndarray
     jet: TorqueJet
     cells: tuple[list, list]
+    inside: tuple[np.ndarray, np.ndarray]
 
 
 def switch_window(d: Designs, samples: tuple, on: np.ndarray, off: np.ndarray,
@@ -159,7 +160,9 @@ def switch_window(d: Designs, samples: tuple, on: np.ndarray, off: np.ndarray,
     x, _, segments = samples
     jet = torque_jet(d.column(), np.stack([on, off], axis=-1), masses)
     return Window(on, off, jet, (piece_cells(x, segments, (on, off), True),
-                                 piece_cells(x, segments, (off, on), False)))
+                                 piece_cells(x, segments, (off, on), False)),
+                  (on_arc(x, on[:, None], off[:, None]).ravel(),
+                   on_arc(x, off[:, None], on[:, None]).ravel()))
 
 
 def piece_cells(x: np.ndarray, segments, piece: tuple[np.ndarray, np.ndarray],
@@ -168,15 +171,15 @@ def piece_cells(x: np.ndarray, segments, piece: tuple[np.ndarray, np.ndarray],
     :func:`core.linkage.extrema.grid_argmax`): its cells' left and right sample (columns of
     ``x``), their angles lo and hi (rad, (designs, cells); ``hi`` a turn on where the cell
     wraps) and which of them reach into ``piece`` ((start, stop) per design; the cut if
-    ``cutting``: :func:`reaches`)."""
-    start, stop = piece
+    ``cutting``: :func:`reaches`, which takes the cut's (on, off) either way)."""
+    on, off = piece if cutting else piece[::-1]
     out = []
     for first, last, period in segments:
         left = np.arange(first, last if period > 0.0 else last - 1)
         right = np.where(left + 1 < last, left + 1, first)
         lo = np.take(x, left, axis=1)              # C order (x[:, left] is Fortran's)
         hi = np.take(x, right, axis=1) + np.where(left + 1 < last, 0.0, period)
-        out.append((left, right, lo, hi, reaches(lo, hi, start[:, None], stop[:, None], cutting)))
+        out.append((left, right, lo, hi, reaches(lo, hi, on[:, None], off[:, None], cutting)))
     return out
 
 
@@ -251,3 +254,36 @@ def cell_ends(values: tuple[np.ndarray, np.ndarray],
     """(a, b) of ``values`` (a, b), C-contiguous arrays (designs, samples), at the flat
     ``index`` of each cell's two samples (:func:`cell_index`)."""
     return [(values[0].ravel().take(i), values[1].ravel().take(i)) for i in index]
+
+
+def straddling(cells: Cells, inside: list[np.ndarray], k: int) -> tuple[np.ndarray, ...]:
+    """The turning cells that straddle an end of piece ``k`` (0 the cut, from on to off; 1 the
+    rest, from off to on), one sample inside it and one not (``inside``: per cell, whether its
+    left and its right sample lie in the piece): their positions among ``cells``, the flat
+    index of that switch angle in the :class:`Window`'s (designs, 2) jet, and whether the
+    cell leaves the piece there (its left sample inside) or enters it."""
+    left, right = inside
+    which = np.flatnonzero(left != right)
+    leaving = left.take(which)
+    return which, cells.design.take(which) * 2 + np.where(leaving, 1 - k, k), leaving
+
+
+def at_switch(parts: tuple[np.ndarray, np.ndarray], switch: np.ndarray,
+              w2: np.ndarray) -> np.ndarray:
+    """a + ω²·b of ``parts`` (a, b), each (designs, 2) at the switch angles, at their flat
+    indices ``switch`` (:func:`straddling`) and the squared speeds ``w2``, one per index."""
+    return parts[0].ravel().take(switch) + w2 * parts[1].ravel().take(switch)
+
+
+def turns_beyond(slope: np.ndarray, leaving: np.ndarray, sign: float) -> np.ndarray:
+    """Which straddling cells (:func:`straddling`) turn beyond their piece, given the slope of
+    their curve at the switch angle (:func:`at_switch`): a cell turns where sign·slope stops
+    being positive (``sign`` 1 for a maximum, -1 for a minimum), and, by the grid's premise of
+    at most one turn per cell, it does so beyond the piece's end when the slope there still
+    is, or before the piece's start when the slope there no longer is. Such a cell's
+    extremum does not count (the piece's values at the switch do), so it need not be
+    polished: 20-40 % of the cells of a loaded sweep's first polish, each with a sample beside
+    the cut's start or end, and 20 % of the energy's evaluations, as their polish crossed
+    into the other piece."""
+    g = sign * slope
+    return np.where(leaving, g > 0.0, g <= 0.0)          # NaN: neither, the cell is kept

@@ -17,8 +17,8 @@ from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
 from core.linkage.turns import wrap_turn
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
-from .cells import (DIRECT_SPEEDS, Window, cell_ends, cell_index, on_arc, pair_extremes,
-                    switch_window, turning_cells)
+from .cells import (DIRECT_SPEEDS, Cells, Window, at_switch, cell_ends, cell_index, on_arc,
+                    pair_extremes, straddling, switch_window, turning_cells, turns_beyond)
 from .jet import TorqueJet, torque_jet
 from .masses import MM, MassProperties
 from .torque_peaks import PEAK_GAIN, piece_peaks
@@ -259,10 +259,13 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     for k, (cutting, piece) in enumerate(((1.0, (on, off)), (0.0, (off, on)))):
         parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)               # E″
+        at = (window.jet.static + cutting * window.jet.cut - mean[:, None], window.jet.inertial)
         for kind, cells in turning_cells(parts, w2, window.cells[k]):
+            index = cell_index(x.shape[-1], cells)                # each end's, taken once
+            cells, index = _within_piece(cells, index, window.inside[k], k, at, w2,
+                                         1.0 - 2.0 * kind)
             sign = np.full(cells.design.size, 1.0 - 2.0 * kind)    # E's maximum, or its minimum
             design, speed = cells.design, cells.speed
-            index = cell_index(x.shape[-1], cells)                # each end's, taken once
             one = d.with_lengths([v[design] for v in lengths])
             w, m, at_start = w2[speed], mean[design], tuple(v[design] for v in start)
             energies = [_energy(one, x.ravel().take(i),
@@ -286,6 +289,23 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     np.fmax.at(top, owner, value)
     np.fmin.at(bottom, owner, value)
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
+
+
+def _within_piece(cells: Cells, index: list[np.ndarray], inside: np.ndarray, k: int,
+                  at: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
+                  sign: float) -> tuple[Cells, list[np.ndarray]]:
+    """``cells`` and their samples' flat ``index`` less the cells that straddle an end of
+    piece ``k`` and turn beyond it (:func:`core.forces.cells.turns_beyond`; E′'s (a, b) ``at``
+    the switch angles, ``inside`` per sample whether it lies in the piece): their zero of E′
+    lies in the other piece and would not count (a fifth of the energy's evaluations went to
+    them, three or four each, their E′ and E belonging to different pieces)."""
+    which, switch, leaving = straddling(cells, [inside.take(i) for i in index], k)
+    beyond = turns_beyond(at_switch(at, switch, w2.take(cells.speed.take(which))), leaving, sign)
+    if not beyond.any():
+        return cells, index
+    keep = np.ones(cells.design.size, dtype=bool)
+    keep[which[beyond]] = False
+    return Cells(*(v[keep] for v in cells)), [i[keep] for i in index]
 
 
 class _Stored(NamedTuple):

@@ -18,7 +18,8 @@ import numpy as np
 
 from core.linkage.designs import Designs
 from core.linkage.polish import newton_maximum
-from .cells import Window, cell_ends, cell_index, on_arc, pair_extremes, turning_cells
+from .cells import (Cells, Window, at_switch, cell_ends, cell_index, on_arc, pair_extremes, straddling,
+                    turning_cells, turns_beyond)
 from .jet import torque_jet
 from .masses import MassProperties
 
@@ -44,22 +45,23 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     peak (K near 5, a crank of 6 mm, a short trailing rod) in the hypothesis test at 16
     speeds. A cell whose run of turning speeds reaches the slowest or the fastest speed is
     polished there first, so that the chord has two ends; the rest follow in a second pass.
+    A cell that straddles a switch angle and turns beyond it is not polished at all
+    (:func:`core.forces.cells.turns_beyond`).
     """
     x, jet, _ = samples
-    on, off, ends = window.on, window.off, window.jet
+    on, off, switch = window.on, window.off, window.jet
     w2 = omega ** 2
-    rest = ends.static[:, None, :] + w2[:, None] * ends.inertial[:, None, :]   # (designs, speeds, 2)
-    cut = rest + ends.cut[:, None, :]
+    rest = switch.static[:, None, :] + w2[:, None] * switch.inertial[:, None, :]   # (designs, speeds, 2)
+    cut = rest + switch.cut[:, None, :]
     (cut_top, cut_bottom), (rest_top, rest_bottom) = pair_extremes(cut), pair_extremes(rest)
     best = np.stack([np.maximum(cut_top, rest_top), -np.minimum(cut_bottom, rest_bottom)])   # (2, designs, speeds)
     flat = best.reshape(-1)
-    pieces = ((on, off), (off, on))
     found = []
     for k, cutting in enumerate((1.0, 0.0)):
         values = (jet.static + cutting * jet.cut, jet.inertial)
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
-        first, last = pieces[k]
-        inside_piece = on_arc(x, first[:, None], last[:, None]).ravel()     # per sample
+        at_values = (switch.static + cutting * switch.cut, switch.inertial)
+        at_slopes = (switch.static1 + cutting * switch.cut1, switch.inertial1)
         for kind, cells in turning_cells(slopes, w2, window.cells[k]):
             sign = 1.0 - 2.0 * kind
             design, speed = cells.design, cells.speed
@@ -69,23 +71,27 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
             # slopes and curvatures are gathered only for the cells polished.
             index = cell_index(x.shape[-1], cells)
             ends = cell_ends(values, index)
+            inside = [window.inside[k].take(i) for i in index]
             entry = [np.full(design.size, k), np.full(design.size, kind), design, speed,
                      cells.lo, cells.hi]
-            for i, (a, b) in zip(index, ends):
+            for (a, b), within in zip(ends, inside):
                 value = sign * (a + w2[speed] * b)
-                inside = inside_piece.take(i)
-                np.fmax.at(flat, owner[inside], value[inside])
+                np.fmax.at(flat, owner[within], value[within])
                 entry.append(value)
             entry += index + [cells.rank, cells.count, cells.below, cells.above]
             entry += [cell_top(ends, w2, sign, side) for side in (cells.below, cells.above)]
+            entry.append(_beyond_tops(cells, inside, k, (at_values, at_slopes), w2, sign, entry[6:8]))
             found.append(entry)
     if not found:
         return best[0], -best[1]
     (k, kind, design, speed, lo, hi, v_lo, v_hi, i_lo, i_hi, rank, count, below,
-     above, top_below, top_above) = (np.concatenate(v) for v in zip(*found))
+     above, top_below, top_above, beyond) = (np.concatenate(v) for v in zip(*found))
     owner = (kind * on.size + design) * w2.size + speed
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
-    polished = np.full(owner.size, np.nan)
+    # A cell that turns beyond its piece is never polished: its largest value inside the piece
+    # (at its inside sample or at the switch) is what a chord through its run's end takes.
+    skip = ~np.isnan(beyond)
+    polished = beyond.copy()                                    # NaN until polished
 
     def fun(t, w2, sign, cutting, *lengths):
         one = torque_jet(d.with_lengths(lengths), t, masses)
@@ -115,13 +121,30 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     # First the runs' ends at the slowest and the fastest speed, which no chord covers.
     index = np.arange(owner.size)
     slowest, fastest = (rank == 0) & (below < 0), (rank == count - 1) & (above < 0)
-    polish(np.flatnonzero(slowest | fastest))
+    polish(np.flatnonzero((slowest | fastest) & ~skip))
     low, high = index - rank, index - rank + count - 1           # each run's first and last
     bound = chord_bounds(w2, speed, (np.where(below < 0, speed[low], below), top_below, polished[low]),
                          (np.where(above < 0, speed[high], above), top_above, polished[high]),
                          (below < 0, above < 0))
-    polish(np.flatnonzero(~(slowest | fastest) & ~(bound <= flat[owner])))   # NaN: polished
+    polish(np.flatnonzero(~(slowest | fastest | skip) & ~(bound <= flat[owner])))   # NaN: polished
     return best[0], -best[1]
+
+
+def _beyond_tops(cells: Cells, inside: list[np.ndarray], k: int, at: tuple, w2: np.ndarray,
+                 sign: float, values: list[np.ndarray]) -> np.ndarray:
+    """Per turning cell of piece ``k``: NaN, or where it straddles an end of the piece and
+    turns beyond it (:func:`core.forces.cells.turns_beyond`), its largest value inside the piece:
+    there the curve is monotone, so that is the larger of its inside sample's value (of
+    ``values``, sign·T at the left and right samples) and the switch angle's. ``at`` holds the
+    curve's (a, b) and its slope's at the switch angles (each (designs, 2))."""
+    out = np.full(cells.design.size, np.nan)
+    which, switch, leaving = straddling(cells, inside, k)
+    w = w2.take(cells.speed.take(which))
+    beyond = turns_beyond(at_switch(at[1], switch, w), leaving, sign)
+    which, switch, leaving, w = which[beyond], switch[beyond], leaving[beyond], w[beyond]
+    out[which] = np.maximum(np.where(leaving, values[0].take(which), values[1].take(which)),
+                            sign * at_switch(at[0], switch, w))
+    return out
 
 
 def cell_top(ends: list[tuple[np.ndarray, np.ndarray]], w2: np.ndarray, sign: float,

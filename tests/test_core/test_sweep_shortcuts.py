@@ -101,10 +101,14 @@ def test_from_the_quintics_top_newton_ends_sooner_on_a_known_peak(centre, offset
 
 
 def _reference(monkeypatch):
-    """The path without the shortcuts: no cell skipped, Newton from the cubic's top to a step
-    of 1e-12 rad (what the sweep did before, up to the rounding of its last step)."""
+    """The path without the shortcuts: no cell skipped (neither by its chord nor for turning
+    beyond a switch angle), Newton from the cubic's top to a step of 1e-12 rad (what the
+    sweep did before, up to the rounding of its last step)."""
     monkeypatch.setattr(torque_peaks, "chord_bounds",
                         lambda w2, speed, *rest: np.full(speed.shape, np.inf))
+    for module in (torque_peaks, flywheel):
+        monkeypatch.setattr(module, "turns_beyond",
+                            lambda slope, leaving, sign: np.zeros(leaving.shape, dtype=bool))
     monkeypatch.setattr(polish, "_quintic_top", lambda v0, v1, m0, m1, c0, c1, t, steps=3: t)
     monkeypatch.setattr(torque_peaks, "PEAK_GAIN", 0.0)
     monkeypatch.setattr(flywheel, "PEAK_GAIN", 0.0)
