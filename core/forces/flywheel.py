@@ -9,7 +9,6 @@ from the ram displacement.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numpy as np
 
@@ -225,15 +224,16 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     grid's, plus the rod variant's samples crowding toward its sharp angles), and each is
     polished by Newton's method on the closed-form slope (every one: E may have several
     nearly equal peaks, and skipping cells by their end tangents missed some near a rod's
-    sharp angles), from the top of the quintic through E, E′ and E″ at the cell's samples,
+    sharp angles, unless it turns beyond its piece), from the zero of the quintic through
+    E′, E″ and E‴ at the cell's samples (:func:`core.linkage.polish.newton_crossing`),
     until the next step would change E by at most ``PEAK_GAIN`` of itself (two to five
-    evaluations and one more for E before: a third of the loaded sweep's time at 16 speeds);
-    a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
+    evaluations and one more for E before the quintics, 1.6 from the top of E's own quintic,
+    1.2 from this one); a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
     ``start`` the stored energy (kinetic, potential) and the ram's x at φ = 0, ``mean`` the
     mean torque (designs,), ``window`` the cut's switch angles with the jet there and the
     cells of each piece (:func:`core.forces.cells.switch_window`).
     """
-    from core.linkage.polish import newton_maximum
+    from core.linkage.polish import newton_crossing
 
     on, off = window.on, window.off
     count, speeds = mean.size, omega.size
@@ -259,6 +259,7 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     for k, (cutting, piece) in enumerate(((1.0, (on, off)), (0.0, (off, on)))):
         parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)               # E″
+        curvatures = (jet.static2 + cutting * jet.cut2, jet.inertial2)           # E‴
         at = (window.jet.static + cutting * window.jet.cut - mean[:, None], window.jet.inertial)
         for kind, cells in turning_cells(parts, w2, window.cells[k]):
             index = cell_index(x.shape[-1], cells)                # each end's, taken once
@@ -266,24 +267,19 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
                                          1.0 - 2.0 * kind)
             sign = np.full(cells.design.size, 1.0 - 2.0 * kind)    # E's maximum, or its minimum
             design, speed = cells.design, cells.speed
-            one = d.with_lengths([v[design] for v in lengths])
-            w, m, at_start = w2[speed], mean[design], tuple(v[design] for v in start)
-            energies = [_energy(one, x.ravel().take(i),
-                                _Stored(*(v.ravel().take(i) for v in (jet.kinetic, jet.potential,
-                                                                     jet.ram_x))),
-                                w, m, masses, at_start) for i in index]
+            w = w2[speed]
             found.append([design, speed, cells.lo, cells.hi, sign, np.full(sign.size, cutting),
                           piece[0][design], piece[1][design]]
-                         + [sign * e for e in energies]
-                         + [sign * (a + w * b) for p in (parts, slopes) for a, b in cell_ends(p, index)])
+                         + [sign * (a + w * b) for p in (parts, slopes, curvatures)
+                            for a, b in cell_ends(p, index)])
     if not found:
         return top.reshape(count, speeds), bottom.reshape(count, speeds)
-    design, speed, lo, hi, sign, cutting, first, last, e_lo, e_hi, g_lo, g_hi, c_lo, c_hi = (
+    design, speed, lo, hi, sign, cutting, first, last, g_lo, g_hi, c_lo, c_hi, r_lo, r_hi = (
         np.concatenate(v) for v in zip(*found))
-    roots, value = newton_maximum(
-        fun, lo, hi, e_lo, e_hi, g_lo, g_hi,
+    roots, value = newton_crossing(
+        fun, lo, hi, (g_lo, g_hi), (c_lo, c_hi), (r_lo, r_hi),
         [w2[speed], mean[design], sign, cutting] + [v[design] for v in start]
-        + [v[design] for v in lengths], gain=PEAK_GAIN, curvatures=(c_lo, c_hi))
+        + [v[design] for v in lengths], gain=PEAK_GAIN)
     inside = on_arc(roots, first, last)
     owner, value = (design * speeds + speed)[inside], (sign * value)[inside]
     np.fmax.at(top, owner, value)
@@ -306,14 +302,6 @@ def _within_piece(cells: Cells, index: list[np.ndarray], inside: np.ndarray, k: 
     keep = np.ones(cells.design.size, dtype=bool)
     keep[which[beyond]] = False
     return Cells(*(v[keep] for v in cells)), [i[keep] for i in index]
-
-
-class _Stored(NamedTuple):
-    """What :func:`_energy` reads of a :class:`~core.forces.jet.TorqueJet`."""
-
-    kinetic: np.ndarray
-    potential: np.ndarray
-    ram_x: np.ndarray
 
 
 def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tuple:
