@@ -247,9 +247,9 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
     start = tuple(v[:, 0] for v in start)
 
-    def fun(phi, w2, mean, sign, cutting, k0, v0, x0, *lengths):
-        one = d.with_lengths(lengths)
-        stored = torque_jet(one, phi, masses)
+    def fun(phi, w2, mean, sign, cutting, k0, v0, x0, theta, *lengths):
+        one = d.with_lengths(lengths, theta)
+        stored = torque_jet(one, phi, masses, curvature=False)
         g = stored.static + w2 * stored.inertial + cutting * stored.cut - mean
         slope = stored.static1 + w2 * stored.inertial1 + cutting * stored.cut1
         value = _energy(one, phi, stored, w2, mean, masses, (k0, v0, x0))
@@ -279,7 +279,8 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     roots, value = newton_crossing(
         fun, lo, hi, (g_lo, g_hi), (c_lo, c_hi), (r_lo, r_hi),
         [w2[speed], mean[design], sign, cutting] + [v[design] for v in start]
-        + [v[design] for v in lengths], gain=PEAK_GAIN)
+        + [np.broadcast_to(d.theta, on.shape)[design]] + [v[design] for v in lengths],
+        gain=PEAK_GAIN)
     inside = on_arc(roots, first, last)
     owner, value = (design * speeds + speed)[inside], (sign * value)[inside]
     np.fmax.at(top, owner, value)

@@ -88,13 +88,14 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
      above, top_below, top_above, beyond) = (np.concatenate(v) for v in zip(*found))
     owner = (kind * on.size + design) * w2.size + speed
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
+    theta = np.broadcast_to(d.theta, on.shape)
     # A cell that turns beyond its piece is never polished: its largest value inside the piece
     # (at its inside sample or at the switch) is what a chord through its run's end takes.
     skip = ~np.isnan(beyond)
     polished = beyond.copy()                                    # NaN until polished
 
-    def fun(t, w2, sign, cutting, *lengths):
-        one = torque_jet(d.with_lengths(lengths), t, masses)
+    def fun(t, w2, sign, cutting, theta, *lengths):
+        one = torque_jet(d.with_lengths(lengths, theta), t, masses)
         static, inertial, cut = one[0:3], one[3:6], one[6:9]
         return tuple(sign * (s + w2 * i + cutting * c) for s, i, c in zip(static, inertial, cut))
 
@@ -110,7 +111,8 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
                                               (jet.static2, jet.inertial2, jet.cut2))
                 for at in (i_lo[i], i_hi[i])]
         root, value = newton_maximum(fun, lo[i], hi[i], v_lo[i], v_hi[i], ends[0], ends[1],
-                                     [w, sign, cutting] + [v[design[i]] for v in lengths],
+                                     [w, sign, cutting, theta[design[i]]]
+                                     + [v[design[i]] for v in lengths],
                                      gain=PEAK_GAIN, curvatures=(ends[2], ends[3]))
         polished[i] = value
         start = np.where(k[i] == 0, on[design[i]], off[design[i]])
