@@ -159,28 +159,36 @@ def switch_window(d: Designs, samples: tuple, on: np.ndarray, off: np.ndarray,
     segments: :func:`core.forces.flywheel._torque_samples`')."""
     x, _, segments = samples
     jet = torque_jet(d.column(), np.stack([on, off], axis=-1), masses)
-    return Window(on, off, jet, (piece_cells(x, segments, (on, off), True),
-                                 piece_cells(x, segments, (off, on), False)),
+    cells = segment_cells(x, segments)
+    return Window(on, off, jet, (piece_cells(cells, (on, off), True),
+                                 piece_cells(cells, (off, on), False)),
                   (on_arc(x, on[:, None], off[:, None]).ravel(),
                    on_arc(x, off[:, None], on[:, None]).ravel()))
 
 
-def piece_cells(x: np.ndarray, segments, piece: tuple[np.ndarray, np.ndarray],
-                cutting: bool) -> list[tuple[np.ndarray, ...]]:
+def segment_cells(x: np.ndarray, segments) -> list[tuple[np.ndarray, ...]]:
     """Per segment of the samples φ ``x`` (designs, n) (``segments`` as in
     :func:`core.linkage.extrema.grid_argmax`): its cells' left and right sample (columns of
-    ``x``), their angles lo and hi (rad, (designs, cells); ``hi`` a turn on where the cell
-    wraps) and which of them reach into ``piece`` ((start, stop) per design; the cut if
-    ``cutting``: :func:`reaches`, which takes the cut's (on, off) either way)."""
-    on, off = piece if cutting else piece[::-1]
+    ``x``) and their angles lo and hi (rad, (designs, cells), C-contiguous; ``hi`` a turn
+    on where the cell wraps), the same for both pieces of the cycle."""
     out = []
     for first, last, period in segments:
         left = np.arange(first, last if period > 0.0 else last - 1)
         right = np.where(left + 1 < last, left + 1, first)
-        lo = np.take(x, left, axis=1)              # C order (x[:, left] is Fortran's)
-        hi = np.take(x, right, axis=1) + np.where(left + 1 < last, 0.0, period)
-        out.append((left, right, lo, hi, reaches(lo, hi, on[:, None], off[:, None], cutting)))
+        lo = np.ascontiguousarray(_columns(left)(x))      # C order (x[:, left] is Fortran's)
+        hi = _columns(right)(x) + np.where(left + 1 < last, 0.0, period)
+        out.append((left, right, lo, hi))
     return out
+
+
+def piece_cells(cells: list[tuple[np.ndarray, ...]], piece: tuple[np.ndarray, np.ndarray],
+                cutting: bool) -> list[tuple[np.ndarray, ...]]:
+    """Each segment's ``cells`` (:func:`segment_cells`) with which of them reach into
+    ``piece`` ((start, stop) per design; the cut if ``cutting``: :func:`reaches`, which
+    takes the cut's (on, off) either way)."""
+    on, off = piece if cutting else piece[::-1]
+    return [(left, right, lo, hi, reaches(lo, hi, on[:, None], off[:, None], cutting))
+            for left, right, lo, hi in cells]
 
 
 def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,

@@ -18,7 +18,7 @@ from core.linkage.turns import wrap_turn
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
 from .cells import (DIRECT_SPEEDS, Cells, Window, at_switch, cell_ends, cell_index, on_arc,
                     pair_extremes, straddling, switch_window, turning_cells, turns_beyond)
-from .jet import TorqueJet, torque_jet
+from .jet import TorqueJet, grid_trig, torque_jet
 from .masses import MM, MassProperties
 from .torque_peaks import PEAK_GAIN, piece_peaks
 from core.base.errors import DesignError
@@ -147,7 +147,7 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
-    grid = torque_jet(col, phi, masses)                           # (designs, intervals + 1)
+    grid = torque_jet(col, phi, masses, trig=grid_trig(col, phi))  # (designs, intervals + 1)
     samples = _torque_samples(d, grid, masses)
     on, off = cut_window(d, masses.idle_fraction, (phi, grid.ram_x))
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)

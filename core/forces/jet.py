@@ -46,12 +46,26 @@ class TorqueJet(NamedTuple):
     ram_x: np.ndarray       # Cx, the ram joint's x, mm (the cut's work is P times its travel)
 
 
+def grid_trig(design, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """cos β and sin β, β = π + θ/2 − φ, for designs with a trailing axis (Designs.column())
+    at crank angles ``phi`` (n,) that all of them share (a sweep's grid): the grid's cos φ and
+    sin φ once, each design's cos and sin of π + θ/2 once, joined by the angle-addition
+    formulas. numpy's cos and sin cost 20-35 ns a sample here against a few for the four
+    products; both are within 6e-16 of β's exact cosine (long double, 10^5 samples)."""
+    phi = np.asarray(phi, dtype=float)
+    shift = np.pi + np.asarray(design.theta) / 2.0
+    ca, sa, cp, sp = np.cos(shift), np.sin(shift), np.cos(phi), np.sin(phi)
+    return ca * cp + sa * sp, sa * cp - ca * sp
+
+
 def torque_jet(design, phi: np.ndarray, masses: MassProperties,
-               curvature: bool = True) -> TorqueJet:
+               curvature: bool = True,
+               trig: tuple[np.ndarray, np.ndarray] | None = None) -> TorqueJet:
     """:class:`TorqueJet` of ``design`` (a Design or Designs broadcasting against ``phi``)
     at crank angles ``phi`` (rad). Without ``curvature`` the three ``*2`` fields are None and
     the fourth derivatives they need are not taken (the energy's polish reads T and T′ only:
     a quarter of a point's arithmetic); every other field is the same, bit for bit.
+    ``trig``: cos β and sin β at ``phi`` where the caller has them (:func:`grid_trig`).
 
     The kinetic energy per unit ω² is K = ½(J4·ψ′² + m3·L1² + m6·Cx′² + m5(|G5′|² + L4²/12·λ′²))
     with J4 = m4·cg² + J_lever, G5 = (B + C)/2 and the rod angle λ, so K′ = J4·ψ′ψ″ + m6·Cx′Cx″
@@ -60,8 +74,10 @@ def torque_jet(design, phi: np.ndarray, masses: MassProperties,
     The jet carries K, V and the ram's x as well, from which the cycle's energy curve is
     built (:func:`core.forces.flywheel._energy`).
     """
-    beta = np.pi + np.asarray(design.theta) / 2.0 - np.asarray(phi, dtype=float)
-    cb, sb = np.cos(beta), np.sin(beta)
+    if trig is None:
+        beta = np.pi + np.asarray(design.theta) / 2.0 - np.asarray(phi, dtype=float)
+        trig = np.cos(beta), np.sin(beta)
+    cb, sb = trig
     lv, w3, w4, b3, b4 = lever_jet(design, cb, sb, fourth=curvature)
     tip = _tip_terms(design, lv)
     ram = _ram_terms(design, tip)
