@@ -126,7 +126,8 @@ class Cells(NamedTuple):
     its run and ``count`` the run's length; ``below`` and ``above`` are the indices of the
     nearest speeds outside the run (where the cell does not turn), -1 where the run reaches
     the slowest or the fastest speed (and always with ``DIRECT_SPEEDS`` or fewer speeds,
-    where every run is one speed)."""
+    where every run is one speed); these four are None where :func:`turning_cells` was
+    asked for no runs."""
 
     design: np.ndarray
     speed: np.ndarray
@@ -192,7 +193,7 @@ def piece_cells(cells: list[tuple[np.ndarray, ...]], piece: tuple[np.ndarray, np
 
 
 def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
-                  cells: list[tuple[np.ndarray, ...]]) -> list[tuple[int, Cells]]:
+                  cells: list[tuple[np.ndarray, ...]], runs: bool = True) -> list[tuple[int, Cells]]:
     """The cells between samples where the curve a + ω²·b (``parts``, (designs, n) at the
     samples) falls through zero (kind 0: positive, then not) or rises through it (kind 1:
     negative, then not) at each speed (ω² ``w2``), among those of ``cells`` that reach into
@@ -200,7 +201,9 @@ def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
 
     Beyond ``DIRECT_SPEEDS`` nothing of shape (designs, speeds, samples) is formed: per
     cell, the speeds where the left sample has the sign and the right one has not are one
-    range of the sorted speeds (:func:`_signed_speeds`), expanded only where a cell has any."""
+    range of the sorted speeds (:func:`_signed_speeds`), expanded only where a cell has any.
+    Without ``runs`` the runs' ranks, lengths and neighbours (what a chord bound needs) are
+    left None: the energy's search reads none of them."""
     direct = w2.size <= DIRECT_SPEEDS
     if direct:
         values = parts[0][:, None, :] + w2[:, None] * parts[1][:, None, :]
@@ -236,12 +239,15 @@ def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
             owner = np.repeat(np.arange(design.size), counts)
             rank = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
             design, cell = design[owner], cell[owner]
-            low, high = begin[owner], begin[owner] + counts[owner]     # the run, sorted
-            below = np.where(low > 0, order[np.maximum(low - 1, 0)], -1)
-            above = np.where(high < w2.size, order[np.minimum(high, w2.size - 1)], -1)
+            low = begin[owner]                                          # the run, sorted
+            run = [None] * 4
+            if runs:
+                high = low + counts[owner]
+                run = [rank, counts[owner].astype(np.intp),
+                       np.where(low > 0, order[np.maximum(low - 1, 0)], -1),
+                       np.where(high < w2.size, order[np.minimum(high, w2.size - 1)], -1)]
             out.append((kind, Cells(design, order[low + rank], left[cell], right[cell],
-                                    gather(lo, design, cell), gather(hi, design, cell),
-                                    rank, counts[owner].astype(np.intp), below, above)))
+                                    gather(lo, design, cell), gather(hi, design, cell), *run)))
     return out
 
 

@@ -261,7 +261,7 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)               # E″
         curvatures = (jet.static2 + cutting * jet.cut2, jet.inertial2)           # E‴
         at = (window.jet.static + cutting * window.jet.cut - mean[:, None], window.jet.inertial)
-        for kind, cells in turning_cells(parts, w2, window.cells[k]):
+        for kind, cells in turning_cells(parts, w2, window.cells[k], runs=False):
             index = cell_index(x.shape[-1], cells)                # each end's, taken once
             cells, index = _within_piece(cells, index, window.inside[k], k, at, w2,
                                          1.0 - 2.0 * kind)
@@ -302,7 +302,7 @@ def _within_piece(cells: Cells, index: list[np.ndarray], inside: np.ndarray, k: 
         return cells, index
     keep = np.ones(cells.design.size, dtype=bool)
     keep[which[beyond]] = False
-    return Cells(*(v[keep] for v in cells)), [i[keep] for i in index]
+    return Cells(*(None if v is None else v[keep] for v in cells)), [i[keep] for i in index]
 
 
 def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tuple:
