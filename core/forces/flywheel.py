@@ -106,6 +106,9 @@ def _check_intervals(intervals) -> int:
 
 # Samples per chunk of designs (designs × speeds × angles) that bound cycle_summary's memory.
 SUMMARY_SAMPLES = 400_000
+# The largest remainder of designs (a fraction of a chunk) that joins the last full chunk
+# rather than making a chunk of its own (see cycle_summary).
+TAIL_SHARE = 0.125
 
 
 def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
@@ -138,8 +141,15 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     per_design = max(omega.size, 1) if curves or omega.size <= DIRECT_SPEEDS \
         else -(-omega.size // 4)
     chunk = max(1, SUMMARY_SAMPLES // ((intervals + 1) * per_design))
-    parts = [_summary_chunk(designs.take(slice(i, i + chunk)), omega, masses, intervals, curves, peaks)
-             for i in range(0, size, chunk)]
+    starts = list(range(0, size, chunk))
+    # A chunk costs some 7 ms of numpy calls before its first design counts (issue 42: a
+    # loaded block's tail of 48 designs at 16 speeds took as long as 170 designs in a full
+    # chunk), so a tail of at most TAIL_SHARE of a chunk joins the chunk before it, which
+    # then holds at most that much more than SUMMARY_SAMPLES.
+    if len(starts) > 1 and size - starts[-1] <= chunk * TAIL_SHARE:
+        starts.pop()
+    parts = [_summary_chunk(designs.take(slice(a, b)), omega, masses, intervals, curves, peaks)
+             for a, b in zip(starts, starts[1:] + [size])]
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
 
 
