@@ -9,17 +9,18 @@ from the ram displacement.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numpy as np
 
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
+from core.linkage.turns import wrap_turn
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
-from .jet import TorqueJet, torque_jet
+from .cells import (DIRECT_SPEEDS, Cells, Window, at_switch, cell_ends, cell_index, on_arc,
+                    pair_extremes, straddling, switch_window, turning_cells, turns_beyond)
+from .jet import TorqueJet, grid_trig, torque_jet
 from .masses import MM, MassProperties
-from .torque_peaks import (DIRECT_SPEEDS, PEAK_GAIN, Window, cell_ends, cell_index, on_arc,
-                           pair_extremes, piece_peaks, switch_window, turning_cells)
+from .torque_peaks import PEAK_GAIN, piece_peaks
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import needs_crowding, sharp_angles
@@ -105,6 +106,9 @@ def _check_intervals(intervals) -> int:
 
 # Samples per chunk of designs (designs × speeds × angles) that bound cycle_summary's memory.
 SUMMARY_SAMPLES = 400_000
+# The largest remainder of designs (a fraction of a chunk) that joins the last full chunk
+# rather than making a chunk of its own (see cycle_summary).
+TAIL_SHARE = 0.125
 
 
 def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
@@ -130,15 +134,22 @@ def cycle_summary(designs: Designs, omega: np.ndarray, masses: MassProperties,
     omega = np.asarray(omega, dtype=float)
     size = designs.shape[0] if designs.shape else 1
     # Arrays over designs × speeds × angles are formed only for the curves and for a few
-    # speeds (core.forces.torque_peaks.DIRECT_SPEEDS); otherwise the per-speed arrays are
+    # speeds (core.forces.cells.DIRECT_SPEEDS); otherwise the per-speed arrays are
     # the cells found, some 5 per design and speed for the torque alone, each evaluated
     # through the jet's temporaries: a chunk shrinks with a quarter of the speeds (at 16
     # speeds, 10^4 designs peaked at 199 MB without it, 104 MB before).
     per_design = max(omega.size, 1) if curves or omega.size <= DIRECT_SPEEDS \
         else -(-omega.size // 4)
     chunk = max(1, SUMMARY_SAMPLES // ((intervals + 1) * per_design))
-    parts = [_summary_chunk(designs.take(slice(i, i + chunk)), omega, masses, intervals, curves, peaks)
-             for i in range(0, size, chunk)]
+    starts = list(range(0, size, chunk))
+    # A chunk costs some 7 ms of numpy calls before its first design counts (issue 42: a
+    # loaded block's tail of 48 designs at 16 speeds took as long as 170 designs in a full
+    # chunk), so a tail of at most TAIL_SHARE of a chunk joins the chunk before it, which
+    # then holds at most that much more than SUMMARY_SAMPLES.
+    if len(starts) > 1 and size - starts[-1] <= chunk * TAIL_SHARE:
+        starts.pop()
+    parts = [_summary_chunk(designs.take(slice(a, b)), omega, masses, intervals, curves, peaks)
+             for a, b in zip(starts, starts[1:] + [size])]
     return {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
 
 
@@ -146,7 +157,7 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
                    curves: bool, peaks: bool = True) -> dict[str, np.ndarray]:
     col = d.column()
     phi = np.linspace(0.0, 2.0 * math.pi, intervals + 1)
-    grid = torque_jet(col, phi, masses)                           # (designs, intervals + 1)
+    grid = torque_jet(col, phi, masses, trig=grid_trig(col, phi))  # (designs, intervals + 1)
     samples = _torque_samples(d, grid, masses)
     on, off = cut_window(d, masses.idle_fraction, (phi, grid.ram_x))
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
@@ -200,7 +211,7 @@ def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassPropert
     kinetic, potential = stored.kinetic, stored.potential
     x = stored.ram_x - start[2]
     idle = masses.idle_fraction * d.stroke
-    turn = np.broadcast_to(np.mod(phi, 2.0 * math.pi), np.shape(x))
+    turn = np.broadcast_to(wrap_turn(phi), np.shape(x))
     travel = np.where(turn <= math.pi + d.theta, np.clip(x, idle, d.stroke - idle) - idle,
                       d.stroke - 2.0 * idle)
     if np.ndim(w2) > np.ndim(kinetic):                           # a speed axis before the angles
@@ -219,19 +230,20 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     jumps and E has a kink, so its extremes lie at a kink or at a zero of its slope
     T − T_mean inside a smooth piece. The slope of each piece (torque with and without the
     cut) is smooth over the whole cycle and affine in ω², so its sign changes at every speed
-    are found on the samples at once (:func:`core.forces.torque_peaks.turning_cells`: the
+    are found on the samples at once (:func:`core.forces.cells.turning_cells`: the
     grid's, plus the rod variant's samples crowding toward its sharp angles), and each is
     polished by Newton's method on the closed-form slope (every one: E may have several
     nearly equal peaks, and skipping cells by their end tangents missed some near a rod's
-    sharp angles), from the top of the quintic through E, E′ and E″ at the cell's samples,
+    sharp angles, unless it turns beyond its piece), from the zero of the quintic through
+    E′, E″ and E‴ at the cell's samples (:func:`core.linkage.polish.newton_crossing`),
     until the next step would change E by at most ``PEAK_GAIN`` of itself (two to five
-    evaluations and one more for E before: a third of the loaded sweep's time at 16 speeds);
-    a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
+    evaluations and one more for E before the quintics, 1.6 from the top of E's own quintic,
+    1.2 from this one); a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
     ``start`` the stored energy (kinetic, potential) and the ram's x at φ = 0, ``mean`` the
     mean torque (designs,), ``window`` the cut's switch angles with the jet there and the
-    cells of each piece (:func:`core.forces.torque_peaks.switch_window`).
+    cells of each piece (:func:`core.forces.cells.switch_window`).
     """
-    from core.linkage.polish import newton_maximum
+    from core.linkage.polish import newton_crossing
 
     on, off = window.on, window.off
     count, speeds = mean.size, omega.size
@@ -245,9 +257,9 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     lengths = [np.broadcast_to(v, on.shape) for v in d.lengths()]
     start = tuple(v[:, 0] for v in start)
 
-    def fun(phi, w2, mean, sign, cutting, k0, v0, x0, *lengths):
-        one = d.with_lengths(lengths)
-        stored = torque_jet(one, phi, masses)
+    def fun(phi, w2, mean, sign, cutting, k0, v0, x0, theta, *lengths):
+        one = d.with_lengths(lengths, theta)
+        stored = torque_jet(one, phi, masses, curvature=False)
         g = stored.static + w2 * stored.inertial + cutting * stored.cut - mean
         slope = stored.static1 + w2 * stored.inertial1 + cutting * stored.cut1
         value = _energy(one, phi, stored, w2, mean, masses, (k0, v0, x0))
@@ -257,28 +269,28 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     for k, (cutting, piece) in enumerate(((1.0, (on, off)), (0.0, (off, on)))):
         parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)               # E″
-        for kind, cells in turning_cells(parts, w2, window.cells[k]):
+        curvatures = (jet.static2 + cutting * jet.cut2, jet.inertial2)           # E‴
+        at = (window.jet.static + cutting * window.jet.cut - mean[:, None], window.jet.inertial)
+        for kind, cells in turning_cells(parts, w2, window.cells[k], runs=False):
+            index = cell_index(x.shape[-1], cells)                # each end's, taken once
+            cells, index = _within_piece(cells, index, window.inside[k], k, at, w2,
+                                         1.0 - 2.0 * kind)
             sign = np.full(cells.design.size, 1.0 - 2.0 * kind)    # E's maximum, or its minimum
             design, speed = cells.design, cells.speed
-            index = cell_index(x.shape[-1], cells)                # each end's, taken once
-            one = d.with_lengths([v[design] for v in lengths])
-            w, m, at_start = w2[speed], mean[design], tuple(v[design] for v in start)
-            energies = [_energy(one, x.ravel().take(i),
-                                _Stored(*(v.ravel().take(i) for v in (jet.kinetic, jet.potential,
-                                                                     jet.ram_x))),
-                                w, m, masses, at_start) for i in index]
+            w = w2[speed]
             found.append([design, speed, cells.lo, cells.hi, sign, np.full(sign.size, cutting),
                           piece[0][design], piece[1][design]]
-                         + [sign * e for e in energies]
-                         + [sign * (a + w * b) for p in (parts, slopes) for a, b in cell_ends(p, index)])
+                         + [sign * (a + w * b) for p in (parts, slopes, curvatures)
+                            for a, b in cell_ends(p, index)])
     if not found:
         return top.reshape(count, speeds), bottom.reshape(count, speeds)
-    design, speed, lo, hi, sign, cutting, first, last, e_lo, e_hi, g_lo, g_hi, c_lo, c_hi = (
+    design, speed, lo, hi, sign, cutting, first, last, g_lo, g_hi, c_lo, c_hi, r_lo, r_hi = (
         np.concatenate(v) for v in zip(*found))
-    roots, value = newton_maximum(
-        fun, lo, hi, e_lo, e_hi, g_lo, g_hi,
+    roots, value = newton_crossing(
+        fun, lo, hi, (g_lo, g_hi), (c_lo, c_hi), (r_lo, r_hi),
         [w2[speed], mean[design], sign, cutting] + [v[design] for v in start]
-        + [v[design] for v in lengths], gain=PEAK_GAIN, curvatures=(c_lo, c_hi))
+        + [np.broadcast_to(d.theta, on.shape)[design]] + [v[design] for v in lengths],
+        gain=PEAK_GAIN)
     inside = on_arc(roots, first, last)
     owner, value = (design * speeds + speed)[inside], (sign * value)[inside]
     np.fmax.at(top, owner, value)
@@ -286,12 +298,21 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     return top.reshape(count, speeds), bottom.reshape(count, speeds)
 
 
-class _Stored(NamedTuple):
-    """What :func:`_energy` reads of a :class:`~core.forces.jet.TorqueJet`."""
-
-    kinetic: np.ndarray
-    potential: np.ndarray
-    ram_x: np.ndarray
+def _within_piece(cells: Cells, index: list[np.ndarray], inside: np.ndarray, k: int,
+                  at: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
+                  sign: float) -> tuple[Cells, list[np.ndarray]]:
+    """``cells`` and their samples' flat ``index`` less the cells that straddle an end of
+    piece ``k`` and turn beyond it (:func:`core.forces.cells.turns_beyond`; E′'s (a, b) ``at``
+    the switch angles, ``inside`` per sample whether it lies in the piece): their zero of E′
+    lies in the other piece and would not count (a fifth of the energy's evaluations went to
+    them, three or four each, their E′ and E belonging to different pieces)."""
+    which, switch, leaving = straddling(cells, [inside.take(i) for i in index], k)
+    beyond = turns_beyond(at_switch(at, switch, w2.take(cells.speed.take(which))), leaving, sign)
+    if not beyond.any():
+        return cells, index
+    keep = np.ones(cells.design.size, dtype=bool)
+    keep[which[beyond]] = False
+    return Cells(*(None if v is None else v[keep] for v in cells)), [i[keep] for i in index]
 
 
 def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tuple:
@@ -303,7 +324,7 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
     them, samples crowding toward the rod variant's sharp angles (one segment each), where its
     torque can change faster than the grid resolves. Every array is the same at all
     speeds: a speed's torque and slope are sums of them, taken by flat index
-    (:func:`core.forces.torque_peaks.gather`), so each is C-contiguous.
+    (:func:`core.forces.cells.gather`), so each is C-contiguous.
     """
     col = d.column()
     n = grid.static.shape[-1] - 1

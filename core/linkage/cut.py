@@ -95,10 +95,10 @@ def cut_window(d: Designs, idle_fraction: float,
     lo = np.where(missed, phi[last], phi[np.maximum(first - 1, 0)])
     hi = np.where(missed, end, np.minimum(phi[first], end))
     root = np.where(reached[..., 0], 0.0, end)                      # at or before φ = 0, or never
-    lengths = [np.broadcast_to(v, targets.shape) for v in d.lengths()]
+    lengths = [np.broadcast_to(v, targets.shape) for v in [d.theta] + d.lengths()]
 
-    def travel(phi, target, *lengths):
-        return ram_position(d.with_lengths(lengths), phi) - target
+    def travel(phi, target, theta, *lengths):
+        return ram_position(d.with_lengths(lengths, theta), phi) - target
 
     if inner.any():
         root[inner] = bracket_root(travel, lo[inner], hi[inner],

@@ -90,10 +90,17 @@ class Designs:
         its arguments and subsets as brackets close (see :meth:`with_lengths`)."""
         return self._lengths()
 
-    def with_lengths(self, lengths: Sequence[np.ndarray]) -> "Designs":
-        """Designs of this variant and rod side from lengths in the order of :meth:`lengths`."""
+    def with_lengths(self, lengths: Sequence[np.ndarray],
+                     theta: np.ndarray | None = None) -> "Designs":
+        """Designs of this variant and rod side from lengths in the order of :meth:`lengths`.
+        ``theta``, where given, is their θ (taken with the lengths from designs that had it:
+        the same arcsine of the same numbers), kept as if computed: the loaded sweep's
+        polish builds designs afresh for every Newton step, an arcsine a point each time."""
         crank, frame, lever, guide, *rod = lengths
-        return Designs(crank, frame, lever, guide, rod[0] if rod else None, self.rod_side)
+        out = Designs(crank, frame, lever, guide, rod[0] if rod else None, self.rod_side)
+        if theta is not None:
+            out.__dict__["theta"] = theta          # functools.cached_property's own slot
+        return out
 
     def _map(self, fun: Callable[[np.ndarray], np.ndarray]) -> "Designs":
         shape = self.shape

@@ -86,34 +86,41 @@ def ram_rates(design: Design | Designs, tip: _Tip, bx3: np.ndarray, d3: np.ndarr
 
 
 def lever_jet(design: Design | Designs, cos_beta: np.ndarray, sin_beta: np.ndarray,
-              ) -> tuple[_Lever, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+              fourth: bool = True) -> tuple[_Lever, np.ndarray, np.ndarray | None, np.ndarray,
+                                             np.ndarray | None]:
     """The lever's terms with ψ‴ and ψ⁗, and the tip's third and fourth derivatives B‴, B⁗
     ((2, …) mm/rad³, mm/rad⁴): what the ram's and the loads' higher rates are built from.
 
     With L = L1·L2: ψ⁗ = L(L2² − L1²)·cos β·(q² − 12L·q·sin β − 24L²cos²β)/q⁴; the
     tip B‴ = L3((ψ‴ − ψ′³)n − 3ψ′ψ″u) and B⁗ = L3((ψ⁗ − 6ψ′²ψ″)n − (4ψ′ψ‴ + 3ψ″² − ψ′⁴)u).
+    Without ``fourth``, ψ⁗ and B⁗ are None (not taken).
     """
     lv = _lever_terms(design, cos_beta, sin_beta)
     w3 = _lever3(design, lv.q, cos_beta, sin_beta)
     (ux, uy), w1, w2 = lv.u, lv.lever1, lv.lever2
     l1, l2, l3, q = design.crank, design.frame, design.lever, lv.q
+    sq = w1 * w1
+    normal3, along3 = w3 - sq * w1, 3.0 * w1 * w2         # B‴ = L3(normal·n − along·u)
+    b3 = np.stack([l3 * (normal3 * uy - along3 * ux), -l3 * (normal3 * ux + along3 * uy)])
+    if not fourth:
+        return lv, w3, None, b3, None
     l12 = l1 * l2
     w4 = (l12 * (l2 * l2 - l1 * l1)) * cos_beta \
         * (q * q - (12.0 * l12) * sin_beta * q - (24.0 * l12 * l12) * cos_beta * cos_beta) / (q * q) ** 2
-    sq = w1 * w1
-    normal3, along3 = w3 - sq * w1, 3.0 * w1 * w2         # B‴ = L3(normal·n − along·u)
     normal4 = w4 - 6.0 * sq * w2                          # B⁗ = L3(normal·n − along·u)
     along4 = 4.0 * w1 * w3 + 3.0 * w2 * w2 - sq * sq
-    b3 = np.stack([l3 * (normal3 * uy - along3 * ux), -l3 * (normal3 * ux + along3 * uy)])
     b4 = np.stack([l3 * (normal4 * uy - along4 * ux), -l3 * (normal4 * ux + along4 * uy)])
     return lv, w3, w4, b3, b4
 
 
-def reach_jet(ram: _Ram, by3: np.ndarray, by4: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def reach_jet(ram: _Ram, by3: np.ndarray,
+              by4: np.ndarray | None) -> tuple[np.ndarray, np.ndarray | None]:
     """The rod's reach r = sqrt(L4² − d²), d = guide − By: (r‴, r⁗), from
     r‴ = −(3r′r″ + 3d′d″ + d·d‴)/r and r⁗ = −(3r″² + 4r′r‴ + 3d″² + 4d′d‴ + d·d⁗)/r
-    (d′ = −By′ and so on: the sign flips are exact)."""
+    (d′ = −By′ and so on: the sign flips are exact); r⁗ None where ``by4`` is."""
     r3 = -(3.0 * ram.reach1 * ram.reach2 + 3.0 * ram.rise1 * ram.rise2 - ram.depth * by3) / ram.reach
+    if by4 is None:
+        return r3, None
     r4 = -(3.0 * ram.reach2 ** 2 + 4.0 * ram.reach1 * r3 + 3.0 * ram.rise2 ** 2
            + 4.0 * ram.rise1 * by3 - ram.depth * by4) / ram.reach
     return r3, r4

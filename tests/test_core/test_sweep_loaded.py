@@ -172,3 +172,34 @@ def test_at_16_speeds_a_sweep_row_is_the_summary_and_no_lower_than_a_dense_solve
         assert got["min_torque_N_m"][0, j] <= dense[j].min() + 1e-9 * scale, j
         swing = np.ptp(energy[j])
         assert got["energy_fluctuation_J"][0, j] >= swing - 1e-9 * max(swing, 1e-12), j
+
+
+@pytest.mark.parametrize("extra, chunks", [(0, 1), (1, 1), (137, 1), (138, 2), (600, 2)])
+def test_a_small_tail_of_designs_joins_the_last_chunk(monkeypatch, extra, chunks):
+    """cycle_summary's chunks at 16 speeds on the sweep's grid hold 1098 designs (the memory
+    bound); a remainder of at most an eighth of that (137) joins the last chunk instead of
+    paying a chunk's fixed cost alone, and the figures are those of the chunks one by one."""
+    import core.forces.flywheel as flywheel
+    sizes = []
+    real = flywheel._summary_chunk
+
+    def counted(d, *args, **kw):
+        sizes.append(d.shape[0])
+        return real(d, *args, **kw)
+    monkeypatch.setattr(flywheel, "_summary_chunk", counted)
+    chunk = flywheel.SUMMARY_SAMPLES // ((SWEEP_INTERVALS + 1) * 4)
+    assert chunk == 1098
+    crank = np.linspace(60.0, 140.0, chunk + extra)
+    d = Designs(crank, crank / 0.5, np.full(crank.size, 700.0), np.full(crank.size, 650.0))
+    omega = rpm_to_omega(np.arange(10.0, 170.0, 10.0))
+    loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
+                           cut_force_N=7000.0, cut_height_mm=80.0)
+    got = cycle_summary(d, omega, loads, SWEEP_INTERVALS)
+    assert len(sizes) == chunks and sum(sizes) == crank.size
+    assert max(sizes) <= chunk * (1 + flywheel.TAIL_SHARE)
+    if extra:
+        sizes.clear()
+        monkeypatch.setattr(flywheel, "SUMMARY_SAMPLES", 1)          # one design a chunk
+        alone = cycle_summary(d.take(slice(chunk - 3, chunk + 3)), omega, loads, SWEEP_INTERVALS)
+        for key, value in alone.items():
+            np.testing.assert_array_equal(value, got[key][chunk - 3:chunk + 3])

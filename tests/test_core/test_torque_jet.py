@@ -60,3 +60,41 @@ def test_the_jets_rates_are_the_slopes_of_its_values(ratio, side):
             slope = (getattr(ahead, value) - getattr(behind, value)) / (2.0 * h)
             exact = getattr(jet, name + suffix)
             assert np.max(np.abs(slope - exact)) <= 1e-8 * np.max(np.abs(exact)), (name, order)
+
+
+@settings(max_examples=20, deadline=None)
+@given(corner_designs(), st.integers(0, 2 ** 32 - 1))
+def test_the_jet_without_its_curvature_is_the_same_jet(design, seed):
+    """The energy's polish asks for the jet without its ``*2`` fields (the fourth derivatives
+    not taken); every other field is the full jet's bit for bit (the rod's mass included),
+    and so with θ handed to the designs rather than computed."""
+    rng = np.random.default_rng(seed)
+    masses = _loads(rng, design.rod is not None)
+    col = Designs.of(design).column()
+    phi = _angles(design)
+    full = torque_jet(col, phi, masses)
+    given_theta = col.with_lengths(col.lengths(), np.asarray(col.theta).copy())
+    lean = torque_jet(given_theta, phi, masses, curvature=False)
+    for name, value in zip(full._fields, lean):
+        if name.endswith("2"):
+            assert value is None
+        else:
+            np.testing.assert_array_equal(value, getattr(full, name))
+
+
+def test_the_grids_trig_by_angle_addition_is_numpys_to_rounding():
+    """cos β and sin β on a grid shared by many designs (core.forces.jet.grid_trig, the sweep's
+    and the summary's grid) against numpy's cos and sin of β = π + θ/2 − φ, and against
+    long double: every sample within 1e-15, as near the exact cosine as numpy's own."""
+    from core.forces.jet import grid_trig
+    rng = np.random.default_rng(3)
+    crank = rng.uniform(20.0, 140.0, 500)
+    d = Designs(crank, crank / rng.uniform(0.05, 0.86, 500), np.full(500, 600.0), np.full(500, 500.0))
+    col = d.column()
+    phi = np.linspace(0.0, 2.0 * math.pi, 91)
+    cb, sb = grid_trig(col, phi)
+    beta = math.pi + np.asarray(col.theta) / 2.0 - phi
+    assert np.abs(cb - np.cos(beta)).max() <= 1e-15 and np.abs(sb - np.sin(beta)).max() <= 1e-15
+    exact = np.longdouble(math.pi) + np.asarray(col.theta, dtype=np.longdouble) / 2 - phi.astype(np.longdouble)
+    for got, numpy_, want in ((cb, np.cos(beta), np.cos(exact)), (sb, np.sin(beta), np.sin(exact))):
+        assert np.abs(got - want).max() <= max(np.abs(numpy_ - want).max(), 2 ** -52) * 1.5
