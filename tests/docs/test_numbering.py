@@ -14,7 +14,7 @@ import types
 import xml.etree.ElementTree as ET
 
 import pytest
-from cli_runner import shaper
+from cli_runner import shaper_run_in_process as shaper
 from locations import ROOT
 from numbering_checks import offending, old_symbols
 
@@ -94,6 +94,8 @@ def test_the_polygons_name_forces_by_their_links():
     ("analyze", *ROD, "--rpm", "40", "--json"),
 ], ids=["table", "table-csv", "curves", "dynamics-csv", "dynamics-json", "analyze"])
 def test_the_cli_output_uses_the_task_books_numbering(args):
+    """What the command prints, through ``core.cli.main`` in this process: the text is the
+    same as a process prints (tests/test_core/cli/test_cli.py runs the console script)."""
     run = shaper(*args)
     assert run.returncode == 0, run.stderr
     text = run.stdout

@@ -14,6 +14,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
+from sweeps import examples
+
 from core.forces.dynamics import solve_dynamics
 from core.forces.masses import MassProperties
 from core.base.errors import DesignError
@@ -201,7 +203,10 @@ def cases(draw):
     return design, masses, rpms
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+# A slow sweep (tests/sweeps.py): each example integrates one to two speeds by quadrature and
+# a 20 001-point search (0.1-0.6 s of CPU); CI draws a share, HYPOTHESIS_PROFILE=thorough all 40.
+@pytest.mark.slow
+@settings(max_examples=examples(40), deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(cases())
 def test_energy_fluctuation_against_quadrature(case):
     design, masses, rpms = case

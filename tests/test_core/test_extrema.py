@@ -26,6 +26,7 @@ from core.linkage.kinematics import pressure_angle, shape
 from core.linkage.extrema import grid_argmax
 from core.linkage.polish import polish_minimum
 from core.linkage.metrics import analyze, lever_peaks
+from sweeps import examples
 
 DENSE = 100_001
 finite = dict(allow_nan=False, allow_infinity=False)
@@ -92,7 +93,11 @@ def reference_peaks(design):
             for name, f in curves.items()}
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+# The two true-extremum sweeps are slow sweeps (tests/sweeps.py): each example refines every
+# curve's three best of 100 001 samples; CI draws a share of the examples, the profile
+# thorough all of them; the explicit examples, the failures they once found, always run.
+@pytest.mark.slow
+@settings(max_examples=examples(60), deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(corner_designs())
 # Found by this test: |a| peaks 0.055° beside a grid sample that lies on the sharp angle; the
 # peak's cell ranked below a lower one and its tangent bound (invalid on a convex curve) did
@@ -196,7 +201,8 @@ def torque_reference(design, rpm, masses, sign):
     return best
 
 
-@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@pytest.mark.slow
+@settings(max_examples=examples(15), deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(corner_designs(), st.sampled_from([20.0, 60.0, 150.0]))
 # A rod 0.002·L4 short of upright: the torque spikes to −2.8e7 N·m and both searches lose
 # digits there (they differed by 2.5e-9 of the peak, beyond the 1e-9 this test once allowed).

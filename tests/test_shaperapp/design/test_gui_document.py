@@ -5,7 +5,9 @@ from PySide6.QtCore import QSettings
 from shaperapp.design.document import Document
 from shaperapp.design.model import DesignModel
 
-from cli_runner import shaper
+# What the CLI writes, through core.cli.main in this process (the console script as a process
+# is tests/test_core/cli/test_cli.py's): no second start of Python for a CSV.
+from cli_runner import shaper_run_in_process as shaper
 
 
 @pytest.fixture

@@ -16,6 +16,7 @@ from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import QApplication, QCheckBox
 
 from core.forces.dynamics import solve_dynamics
+from gui_helpers import shown
 from shaperapp.design.model import DesignModel
 from shaperapp.scheme.view import SchemeWidget
 
@@ -36,7 +37,7 @@ def core_dynamics(model: DesignModel):
     return solve_dynamics(model.design, model.motion.crank_angle, model.rpms, masses)
 
 
-def expected_forces(model: DesignModel, dyn, index: int, speed: int = 0) -> dict[str, np.ndarray]:
+def expected_forces(model: DesignModel | None, dyn, index: int, speed: int = 0) -> dict[str, np.ndarray]:
     """Force on the named body at ``index``, speed ``speed`` (default the first), N
     (see docs/forces.md)."""
     i, s = index, speed
@@ -76,6 +77,46 @@ def unit(v: np.ndarray) -> np.ndarray:
 def show(scheme: SchemeWidget) -> None:
     scheme.set_forces_visible(True)
     assert scheme.forces_visible()
+
+
+_CYCLES: dict[str, dict] = {}
+
+
+def drawn_cycle(qtbot, variant: str) -> dict:
+    """The arrows a shown scheme (900 × 650 px, the ``scheme`` fixture's) draws at every
+    crank angle of the default design (``variant`` "block") or its rod variant, made once
+    per variant and process and read by the three tests that walk the whole cycle: each
+    frame's label placement was most of their time (about 20 ms a frame, 361 frames a walk).
+    Plain data only: ``frames`` (index → name → (start, tip), mm), ``caption`` (at the last
+    angle), ``views`` (left, right, top, bottom, mm: after showing the forces, then after
+    ``fit()``), ``refitted`` (every third angle's arrows after ``fit()``), ``dyn`` (core's
+    dynamics), ``angle_count``, ``lever`` (mm), ``rpm``."""
+    if variant not in _CYCLES:
+        model = DesignModel()
+        scheme = shown(qtbot, SchemeWidget(model), 900, 650)     # as the fixtures build them
+        if variant == "rod":
+            use_rod(model)
+        show(scheme)
+        views = []
+        scheme.drawn_forces()                        # the scheme caught up with the model
+        views.append(scheme._view.viewRect())
+        frames = []
+        for index in range(model.angle_count):
+            model.set_angle_index(index)
+            frames.append(arrows(scheme))
+        caption = scheme.force_caption()
+        scheme.fit()
+        scheme.drawn_forces()
+        views.append(scheme._view.viewRect())
+        refitted = {}                # read back through the new view: equal up to round-off
+        for index in range(0, model.angle_count, 3):
+            model.set_angle_index(index)
+            refitted[index] = arrows(scheme)
+        _CYCLES[variant] = dict(
+            frames=frames, refitted=refitted, caption=caption, dyn=core_dynamics(model),
+            views=[(v.left(), v.right(), v.top(), v.bottom()) for v in views],
+            angle_count=model.angle_count, lever=model.design.lever, rpm=model.rpms[0])
+    return _CYCLES[variant]
 
 
 # ---- toggling ---------------------------------------------------------------
@@ -154,27 +195,24 @@ def test_arrows_point_along_core_forces_at_their_points(scheme, model, variant, 
 
 
 @pytest.mark.parametrize("variant", ["block", "rod"])
-def test_one_length_scale_and_its_caption(scheme, model, variant):
-    if variant == "rod":
-        use_rod(model)
-    show(scheme)
-    dyn = core_dynamics(model)
+def test_one_length_scale_and_its_caption(qtbot, variant):
+    cycle = drawn_cycle(qtbot, variant)
+    dyn = cycle["dyn"]
     ratios, longest = [], 0.0
-    for index in range(model.angle_count):
-        model.set_angle_index(index)
-        forces = expected_forces(model, dyn, index)
-        for name, (start, tip) in arrows(scheme).items():
+    for index in range(cycle["angle_count"]):
+        forces = expected_forces(None, dyn, index)
+        for name, (start, tip) in cycle["frames"][index].items():
             length = float(np.hypot(*(tip - start)))
             ratios.append(length / np.hypot(*forces[name]))
             longest = max(longest, length)
     mm_per_N = float(np.median(ratios))
     np.testing.assert_allclose(ratios, mm_per_N, rtol=1e-9)   # lengths ∝ magnitudes, everywhere
-    assert longest == pytest.approx(SHARE * model.design.lever, rel=0.05)
-    largest = max(np.hypot(*f) for i in range(model.angle_count)
-                  for f in expected_forces(model, dyn, i).values())
+    assert longest == pytest.approx(SHARE * cycle["lever"], rel=0.05)
+    largest = max(np.hypot(*f) for i in range(cycle["angle_count"])
+                  for f in expected_forces(None, dyn, i).values())
     assert longest == pytest.approx(largest * mm_per_N, rel=1e-9)
-    caption = scheme.force_caption()
-    assert f"{model.rpms[0]:g} r/min" in caption
+    caption = cycle["caption"]
+    assert f"{cycle['rpm']:g} r/min" in caption
     found = re.search(r"([\d.]+) mm ≙ ([\d.]+) (kN|N)", caption)
     assert found, caption
     ref_N = float(found.group(2)) * (1000.0 if found.group(3) == "kN" else 1.0)
@@ -219,13 +257,12 @@ def test_arrows_move_with_the_angle(scheme, model):
     assert set(moved) >= {"O2", "A", "O4", "B"}
 
 
-def test_cut_arrow_only_in_the_cutting_zone(scheme, model):
-    show(scheme)
-    cut = core_dynamics(model).cut_force[0]
+def test_cut_arrow_only_in_the_cutting_zone(qtbot):
+    cycle = drawn_cycle(qtbot, "block")
+    cut = cycle["dyn"].cut_force[0]
     assert 0 < np.count_nonzero(cut) < cut.size
-    for index in range(model.angle_count):
-        model.set_angle_index(index)
-        assert ("cut" in scheme.drawn_forces()) == (cut[index] > 0.0), index
+    for index in range(cycle["angle_count"]):
+        assert ("cut" in cycle["frames"][index]) == (cut[index] > 0.0), index
 
 
 def test_rod_variant_adds_the_rod_force_on_the_ram(scheme, model):
@@ -396,21 +433,17 @@ def test_arrows_follow_the_chosen_speed(scheme, model):
 
 
 @pytest.mark.parametrize("variant", ["block", "rod"])
-def test_fit_shows_every_arrow_over_the_whole_cycle(scheme, model, variant):
-    """The cutting force ahead of the tool reached past the fitted view (cut at its edge)."""
-    if variant == "rod":
-        use_rod(model)
-    show(scheme)                                     # a fitted view widens to the arrows
-    for fitted_again in (False, True):
-        if fitted_again:
-            scheme.fit()
-        scheme.drawn_forces()                        # the scheme caught up with the model
-        view = scheme._view.viewRect()
-        for index in range(0, model.angle_count, 3):
-            model.set_angle_index(index)
-            for name, (start, tip) in arrows(scheme).items():
+def test_fit_shows_every_arrow_over_the_whole_cycle(qtbot, variant):
+    """The cutting force ahead of the tool reached past the fitted view (cut at its edge).
+    The views: once the forces are shown (a fitted view widens to the arrows) and after
+    ``fit()``, each with the arrows drawn in it."""
+    cycle = drawn_cycle(qtbot, variant)
+    passes = (cycle["frames"], cycle["refitted"])
+    for fitted_again, (left, right, top, bottom), frames in zip((False, True), cycle["views"], passes):
+        for index in range(0, cycle["angle_count"], 3):
+            for name, (start, tip) in frames[index].items():
                 for x, y in (start, tip):
-                    assert view.left() <= x <= view.right() and view.top() <= y <= view.bottom(), \
+                    assert left <= x <= right and top <= y <= bottom, \
                         (fitted_again, index, name, (x, y))
 
 
