@@ -8,6 +8,16 @@ from pathlib import Path
 
 ROOT = Path(__file__).parents[3]
 
+
+def _started(code: str, tmp_path) -> str:
+    """What ``code`` (which starts the app) printed, run in a fresh interpreter, offscreen,
+    with its settings under ``tmp_path``."""
+    env = {**os.environ, "QT_QPA_PLATFORM": "offscreen", "XDG_CONFIG_HOME": str(tmp_path),
+           "XDG_DATA_HOME": str(tmp_path)}
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    assert out.returncode == 0, out.stderr
+    return out.stdout
+
 # Counts the modules whose source PySide6's import hook reads (``_mod_uses_pyside``)
 # from the app's start to its first paint.
 CHECKS_PROBE = """
@@ -35,12 +45,8 @@ def test_pyside_reads_no_module_source_before_the_first_paint(tmp_path):
     """PySide6 read the source of some 300 modules (60-75 ms of CPU at each start) to
     find the ones that might use its ``__feature__`` switches; the app marks every module
     as using none, so it reads none."""
-    env = {**os.environ, "QT_QPA_PLATFORM": "offscreen", "XDG_CONFIG_HOME": str(tmp_path),
-           "XDG_DATA_HOME": str(tmp_path)}
-    out = subprocess.run([sys.executable, "-c", CHECKS_PROBE], capture_output=True, text=True,
-                         env=env, timeout=120)
-    assert out.returncode == 0, out.stderr
-    assert re.search(r"^read 0 \[\]$", out.stdout, re.M), out.stdout
+    out = _started(CHECKS_PROBE, tmp_path)
+    assert re.search(r"^read 0 \[\]$", out, re.M), out
 
 
 def test_no_module_of_the_app_selects_a_pyside_feature():
@@ -52,3 +58,23 @@ def test_no_module_of_the_app_selects_a_pyside_feature():
     selecting = [str(path.relative_to(ROOT)) for path in sources
                  if re.search(r"^\s*(from|import)\s+__feature__", path.read_text(encoding="utf-8"), re.M)]
     assert selecting == []
+
+
+STARTED_PROBE = """
+import sys, shaperapp.app as app
+when_painted = app._when_painted
+def at_paint(window, callback):
+    def report():
+        print("numtext", "core.files.numtext" in sys.modules)
+        callback()
+    when_painted(window, report)
+app._when_painted = at_paint
+app.main(["--lang", "en", "--quit-after-show"])
+"""
+
+
+def test_the_first_screen_builds_no_csv_tables(tmp_path):
+    """The CSV number formatter's tables (``core.files.numtext``, 4-5 ms to build at its
+    import) wait for the first CSV: the first screen writes none."""
+    out = _started(STARTED_PROBE, tmp_path)
+    assert "numtext False" in out.splitlines(), out
