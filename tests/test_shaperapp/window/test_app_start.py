@@ -78,3 +78,31 @@ def test_the_first_screen_builds_no_csv_tables(tmp_path):
     import) wait for the first CSV: the first screen writes none."""
     out = _started(STARTED_PROBE, tmp_path)
     assert "numtext False" in out.splitlines(), out
+
+
+SEARCHES_PROBE = """
+import sys, shaperapp.app as app
+from shaperapp.scheme.labels import LabelLayout
+sizes = []
+place_still = LabelLayout.place_still
+def counted(self, mm_per_px, bounds, window):
+    sizes.append(round(max(mm_per_px), 6))
+    return place_still(self, mm_per_px, bounds, window)
+LabelLayout.place_still = counted
+when_painted = app._when_painted
+def at_paint(window, callback):
+    def report():
+        print("searches", len(sizes), len(set(sizes)))
+        callback()
+    when_painted(window, report)
+app._when_painted = at_paint
+app.main(["--lang", "en", "--quit-after-show"])
+"""
+
+
+def test_a_first_start_searches_the_schemes_labels_once_before_the_first_paint(tmp_path):
+    """With fresh settings the window gives its docks their sizes after the scheme is shown
+    (``Docks.apply_sizes``): the labels searched at the show were searched again for the
+    taller view in the paint, 40-50 ms each (issue 43 item 5). They wait for the paint now."""
+    out = _started(SEARCHES_PROBE, tmp_path)
+    assert "searches 1 1" in out.splitlines(), out
