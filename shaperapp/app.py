@@ -161,7 +161,8 @@ def _skip_pyside_source_checks() -> None:
         return
     for name in list(sys.modules):
         verdicts.setdefault(name, -1)
-    sys.meta_path.insert(0, _NoFeatures(verdicts))
+    if not any(isinstance(finder, _NoFeatures) for finder in sys.meta_path):     # main() run again
+        sys.meta_path.insert(0, _NoFeatures(verdicts))
 
 
 def _when_painted(window, callback) -> None:
