@@ -54,6 +54,7 @@ def main(argv: list[str] | None = None) -> int:
     limit_blas_threads()
     _import_engine_first()
     from PySide6.QtCore import QSettings, QTimer
+    _skip_pyside_source_checks()
     from PySide6.QtWidgets import QApplication
 
     from shaperapp.widgets.style import configure_plots
@@ -126,6 +127,42 @@ def _import_engine_first() -> None:
     import core.gear.pair  # noqa: F401  (its default pair)
     import core.files.io  # noqa: F401  (core, numpy, the design files)
     import core.linkage.metrics  # noqa: F401  (the results panel's cycle figures)
+
+
+class _NoFeatures:
+    """An import finder that finds nothing: it only gives each module about to be
+    imported PySide6's verdict "uses no ``__feature__``" before PySide6 looks for one."""
+
+    def __init__(self, verdicts: dict) -> None:
+        self._verdicts = verdicts
+
+    def find_spec(self, name: str, path=None, target=None) -> None:
+        self._verdicts.setdefault(name, -1)
+
+
+def _skip_pyside_source_checks() -> None:
+    """Spare PySide6 reading the source of every module the app imports after it.
+
+    Why: from its import on, PySide6 hooks every import statement, and for each module
+    it has no verdict on yet it reads the whole source (``inspect.getsource``) to see
+    whether it mentions PySide6, so that its ``from __feature__ import`` switches
+    (snake_case, true_property) know which modules to leave alone. The modules
+    imported before it are read too, the first time a later import names them. At
+    start-up that was 300-odd modules, 60-75 ms of CPU (issue 43 item 5). The app
+    and its libraries select no feature (``test_app_start.py`` checks the app's
+    sources), and while no module selects one, PySide6 treats a module it has no
+    verdict on, or one marked -1 ("ignore this module"), like one marked 0 ("no
+    feature"): so every module is marked -1, those already imported now and the others
+    as they are found. A module that selects a feature still gets its own mark then.
+    The table is PySide6's (``PySide6.support.feature.pyside_feature_dict``, not a
+    documented API): a PySide6 without it is left as it is."""
+    verdicts = getattr(sys.modules.get("PySide6.support.feature"), "pyside_feature_dict", None)
+    if not isinstance(verdicts, dict):
+        return
+    for name in list(sys.modules):
+        verdicts.setdefault(name, -1)
+    if not any(isinstance(finder, _NoFeatures) for finder in sys.meta_path):     # main() run again
+        sys.meta_path.insert(0, _NoFeatures(verdicts))
 
 
 def _when_painted(window, callback) -> None:

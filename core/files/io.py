@@ -19,7 +19,6 @@ from .atomic import atomic_write
 from .design_file import (FILE_FORMAT, FILE_VERSION, load_design, masses_from_dict,  # noqa: F401
                           masses_to_dict, parse_design)
 from core.linkage.kinematics import Motion
-from .numtext import g10_rows
 from core.linkage.spec import Spec
 
 CURVE_COLUMNS = ("rpm", "crank_deg", "time_s", "ram_x_mm", "ram_v_m_s", "ram_a_m_s2",
@@ -123,6 +122,7 @@ def table_chunks(names: Iterable[str] | None, data: np.ndarray,
     :func:`zero_scale` of ``data``). Each number is ``"%.10g"`` of it, formatted a
     block at a time by :func:`core.files.numtext.g10_rows`.
     """
+    from .numtext import g10_rows   # here: its tables (4-5 ms to build) wait for the first CSV
     data = snap_zeros(data, scale)
     if names is not None:
         yield ",".join(names) + "\n"

@@ -57,6 +57,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._placed_view: tuple = ()              # the view the labels were last placed for
         self._labels_stale = False                 # placing them waits until shown or read back
         self._placing_soon = False                 # a rebuild or placement under way places them at its end
+        self._labels_at_paint = False              # shown: placed when the plot next paints
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._update)
@@ -280,8 +281,11 @@ class SchemeWidget(SchemeReadBack, QWidget):
 
     # ---- model → layers ----------------------------------------------
     def showEvent(self, event) -> None:
+        """The labels wait for the plot's paint: at a first start the docks get their sizes
+        after this (``Docks.apply_sizes``), and a search here was redone (40-50 ms)."""
         super().showEvent(event)
-        self._catch_up()
+        self._update()
+        self._labels_at_paint = True
 
     def _catch_up(self) -> None:
         """Bring the scheme and its labels up to the model: when shown after being hidden,
@@ -308,8 +312,12 @@ class SchemeWidget(SchemeReadBack, QWidget):
             self._draw_forces(self._model.angle_index)
 
     def eventFilter(self, watched, event: QEvent) -> bool:
-        """The plot's paint: labels waiting for it are placed in the next turn."""
-        if event.type() == QEvent.Type.Paint and self._labels_timer.isActive():
+        """The plot's paint: the labels of a show are placed before it draws, a rebuild's
+        in the next turn."""
+        if event.type() == QEvent.Type.Paint and self._labels_at_paint:
+            self._labels_at_paint = False
+            self._catch_up()
+        elif event.type() == QEvent.Type.Paint and self._labels_timer.isActive():
             self._labels_timer.start(0)
         return super().eventFilter(watched, event)
 

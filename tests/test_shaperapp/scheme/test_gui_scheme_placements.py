@@ -17,7 +17,9 @@ def test_the_window_places_the_labels_once_when_shown(qtbot, tmp_path, monkeypat
     qtbot.addWidget(win)
     assert calls == []                  # built while hidden: nothing placed yet
     win.show()
-    assert len(calls) == 1              # shown: placed once, for the view as laid out
+    assert calls == []                  # shown: placed at the plot's paint, for the view as then laid out
+    qtbot.waitUntil(win.scheme.labels_settled)
+    assert len(calls) == 1              # once: the docks' sizes, set after the show, called for no second search
     boxes = win.scheme.dimension_label_boxes()
     assert set(boxes) >= {"L1", "H"} and len(calls) == 1     # read back: no search again
     win.model.set_clean("")
@@ -73,6 +75,7 @@ def test_a_frame_met_again_is_put_back_as_first_placed(qtbot):
     scheme.resize(800, 600)
     scheme.show()
     qtbot.waitExposed(scheme)
+    qtbot.waitUntil(scheme.labels_settled)      # placed at its first paint
     labels = scheme._mechanism.labels
 
     def drawn() -> tuple:
