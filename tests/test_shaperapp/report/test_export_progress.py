@@ -61,33 +61,30 @@ def test_the_headless_report_hears_of_every_section_and_page_in_order(model, tmp
     assert len(set(heard)) >= 7 + pages          # the sections and every page
 
 
-def test_the_bar_moves_forward_to_its_maximum_under_a_busy_cursor(window, bar, report_answers):
+def test_the_bar_moves_forward_and_the_window_takes_clicks_while_the_report_is_written(
+        window, bar, report_answers, qtbot):
+    """One report written by the child serves both (each was a test writing its own):
+    the bar moves forward to its maximum under a busy cursor; a click on another tab
+    switches to it while the child writes, and editing the design then does not change
+    the report: the child works on the design as it was."""
     out, warnings = report_answers
     run = report_dialog.export_report_dialog(window.model, window, "en", str(out))
     assert run.dialog.windowModality() == Qt.WindowModality.NonModal
-    assert run.wait() and run.result == str(out / "report.pdf")
-    assert warnings == [] and (out / "report.pdf").read_bytes().startswith(b"%PDF")
+    qtbot.waitUntil(lambda: run.dialog.value() > 0, timeout=120_000)     # the child is writing
+    tabs = window.tabs.tabBar()
+    target = (window.tabs.currentIndex() + 1) % window.tabs.count()
+    QTest.mouseClick(tabs, Qt.MouseButton.LeftButton, pos=tabs.tabRect(target).center())
+    assert window.tabs.currentIndex() == target and run.state == "running"
+    crank = window.model.valid_spec
+    window.model.set_rpms([11.0])                 # an edit meanwhile: not in the report
+    assert run.wait() and run.result == str(out / "report.pdf") and warnings == []
+    assert (out / "report.pdf").read_bytes().startswith(b"%PDF")
+    assert window.model.valid_spec == crank
     values = bar["values"]
     assert values == sorted(values) and values[-1] == STEPS and set(bar["maximum"]) == {STEPS}
     assert len(set(values)) >= 15                 # it moves: sections and pages, not one jump
     assert set(bar["cursors"]) == {Qt.CursorShape.BusyCursor}
     assert QGuiApplication.overrideCursor() is None          # given back
-
-
-def test_the_window_takes_clicks_while_the_report_is_written(window, report_answers, qtbot):
-    """A click on another tab switches to it while the child writes, and editing the design
-    then does not change the report: the child works on the design as it was."""
-    out, warnings = report_answers
-    run = report_dialog.export_report_dialog(window.model, window, "en", str(out))
-    qtbot.waitUntil(lambda: run.dialog.value() > 0, timeout=120_000)     # the child is writing
-    bar = window.tabs.tabBar()
-    target = (window.tabs.currentIndex() + 1) % window.tabs.count()
-    QTest.mouseClick(bar, Qt.MouseButton.LeftButton, pos=bar.tabRect(target).center())
-    assert window.tabs.currentIndex() == target and run.state == "running"
-    crank = window.model.valid_spec
-    window.model.set_rpms([11.0])                 # an edit meanwhile: not in the report
-    assert run.wait() and run.result == str(out / "report.pdf") and warnings == []
-    assert window.model.valid_spec == crank
     from language_checks import has_pdftotext, pdf_text
     if has_pdftotext():
         assert "11 r/min" not in pdf_text(out / "report.pdf")

@@ -28,9 +28,10 @@ CASES = [(Spec(), [40.0, 60.0]), (Spec(time_ratio=1.6, crank=90.0), [30.0, 45.0]
          (Spec(), [40.0, 60.0])]
 
 
-def _figures(monkeypatch, cases=CASES) -> list[list[bytes]]:
+def _figures(monkeypatch, cases=CASES, after_each=lambda: None) -> list[list[bytes]]:
     """Each case's scheme shots and s/v/a, force and cam SVGs, in the report's order, as
-    the report replays them (``scheme_paint``, ``svg_paint``)."""
+    the report replays them (``scheme_paint``, ``svg_paint``); ``after_each`` is called
+    after each case's views are closed."""
     made: list = []
     paint, schemes = figures.svg_paint, figures.scheme_paint
     monkeypatch.setattr(figures, "svg_paint", lambda svgs, *a: made.extend(svgs) or paint(svgs, *a))
@@ -47,6 +48,7 @@ def _figures(monkeypatch, cases=CASES) -> list[list[bytes]]:
         finally:
             views.close()
         out.append(list(made))
+        after_each()
     return out
 
 
@@ -54,16 +56,17 @@ def test_kept_views_export_what_new_ones_do(qapp, monkeypatch):
     new = _figures(monkeypatch)
     monkeypatch.setattr(kept_views, "_KEPT", [])
     kept_views.keep_plot_views()
+    held = []           # the kept views after each case (read in the same run: no case more)
     try:
-        kept = _figures(monkeypatch)
-        views = kept_views._KEPT[0].views
-        assert sorted(views) == ["cam", "curves", "forces", "scheme"]
-        first = dict(views)
-        _figures(monkeypatch, CASES[-1:])
-        assert all(views[k] is first[k] for k in first)     # the same speeds: the same views
-        _figures(monkeypatch, CASES[4:5])
-        assert not any(views[k] is first[k] for k in first)     # a speed more: new views
+        kept = _figures(monkeypatch, after_each=lambda: held.append(dict(kept_views._KEPT[0].views)))
+        for case, views in enumerate(held):
+            assert sorted(views) == ["cam", "curves", "forces", "scheme"], case
+        # cases 2 and 3: other dimensions, the same speeds, loads and variant: the same views
+        assert all(held[3][k] is held[2][k] for k in held[2]), [k for k in held[2] if held[3][k] is not held[2][k]]
+        # case 4 after 3: a speed more: new views
+        assert not any(held[4][k] is held[3][k] for k in held[3]), [k for k in held[3] if held[4][k] is held[3][k]]
     finally:
+        held.clear()
         kept_views.release_plot_views()
     assert kept_views._KEPT == []
     assert [len(f) for f in new] == [5] * len(CASES)
