@@ -77,9 +77,11 @@ def write_sheet(sheet: Sheet, path: str, language: str = "en", title: str = "",
                 cad_font: str = "gb") -> None:
     """PDF, SVG or DXF by the name's suffix, atomically, a DXF's texts in ``cad_font``
     (``core.drawing.CAD_FONTS``); OSError (a WriteError) names the path."""
-    from core.drawing.sheet_dxf import save_sheet_dxf
     suffix = path.lower().rsplit(".", 1)[-1]
     if suffix == "dxf":
+        # imported here, not above: ezdxf's import is ~0.5 s of CPU that a PDF or SVG
+        # never uses (a course without --dxf, a report: issue 43 item 4)
+        from core.drawing.sheet_dxf import save_sheet_dxf
         save_sheet_dxf(sheet, path, cad_font)
         return
     data = pdf_bytes(sheet, language, title) if suffix == "pdf" else svg_bytes(sheet, language, title)
