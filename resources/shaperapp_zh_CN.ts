@@ -91,6 +91,14 @@
 <context>
     <name>CadFontChoice</name>
     <message>
+        <source>DXF drawing, texts in the GB style for AutoCAD and ZWCAD (*.dxf)</source>
+        <translation>DXF 图形，文字为 GB 样式，供 AutoCAD 和中望CAD 使用 (*.dxf)</translation>
+    </message>
+    <message>
+        <source>DXF drawing, texts as outlines for every CAD program, LibreCAD too (*.dxf)</source>
+        <translation>DXF 图形，文字为轮廓，供所有 CAD 软件（含 LibreCAD）使用 (*.dxf)</translation>
+    </message>
+    <message>
         <source>GB style (AutoCAD, ZWCAD; editable)</source>
         <translation>GB 样式（AutoCAD、中望CAD；可编辑）</translation>
     </message>
@@ -1488,14 +1496,6 @@
     <message>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
-    </message>
-    <message>
-        <source>DXF drawing, texts in the GB style for AutoCAD and ZWCAD (*.dxf)</source>
-        <translation>DXF 图形，文字为 GB 样式，供 AutoCAD 和中望CAD 使用 (*.dxf)</translation>
-    </message>
-    <message>
-        <source>DXF drawing, texts as outlines for every CAD program, LibreCAD too (*.dxf)</source>
-        <translation>DXF 图形，文字为轮廓，供所有 CAD 软件（含 LibreCAD）使用 (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -2929,10 +2929,6 @@
     <message>
         <source>SVG image (*.svg)</source>
         <translation>SVG 图像 (*.svg)</translation>
-    </message>
-    <message>
-        <source>DXF drawing (*.dxf)</source>
-        <translation>DXF 图形 (*.dxf)</translation>
     </message>
     <message>
         <source>Export the gear pair</source>

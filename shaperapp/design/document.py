@@ -17,7 +17,7 @@ from core.files.io import atomic_write, curves_csv, load_design, masses_to_dict,
 from core.linkage.spec import Spec
 
 from shaperapp.widgets import file_dialogs
-from shaperapp.widgets.cad_font import CAD_FONT_SETTING, missing_font_text
+from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, missing_font_text, remembered_filter
 from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
 
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
@@ -225,13 +225,10 @@ class Document(QObject):
             return False
         start = os.path.join(self.last_dir(), "scheme.dxf")
         # the CAD texts (--cad-font) as two filters of one type, the last DXF's choice first
-        kinds = {self.tr("DXF drawing, texts in the GB style for AutoCAD and ZWCAD (*.dxf)"): "gb",
-                 self.tr("DXF drawing, texts as outlines for every CAD program, LibreCAD too (*.dxf)"):
-                     "outline"}
-        remembered = str(self._settings.value(CAD_FONT_SETTING, "gb") or "gb")
+        kinds = dxf_filters()
         path, chosen = file_dialogs.save_file_and_filter(
             parent, self.tr("Export scheme as DXF"), start, ";;".join(kinds),
-            next((name for name, kind in kinds.items() if kind == remembered), ""))
+            remembered_filter(self._settings, kinds))
         cad_font = kinds.get(chosen, "gb")
         if not path or not self.export_scheme_dxf_to(path, cad_font):
             return False

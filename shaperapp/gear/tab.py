@@ -6,13 +6,14 @@ from __future__ import annotations
 import datetime
 import os
 
-from PySide6.QtCore import QLocale, Qt
+from PySide6.QtCore import QLocale, QSettings, Qt
 from PySide6.QtWidgets import QCheckBox, QScrollArea, QWidget
 
 from core.files.atomic import atomic_write
 from core.gear.table import gear_summary, summary_csv
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab
+from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, outline_font_problem, remembered_filter
 
 from .form import GearForm
 from .model import GearModel
@@ -48,6 +49,7 @@ class GearTab(PartTab):
     def __init__(self, model: DesignModel, parent: QWidget | None = None,
                  gear_model: GearModel | None = None) -> None:
         super().__init__(model, parent, gear_model)
+        self._dxf_last = False          # the sheet's last export was a DXF: its filter first
         self.gear_model = self.part_model
         self.results = GearResults(self.gear_model)
         self.close_up = QCheckBox(self)
@@ -83,27 +85,45 @@ class GearTab(PartTab):
         """The results as ``shaper gear --csv`` writes them, atomically."""
         atomic_write(path, summary_csv(gear_summary(self.gear_model.pair)))
 
-    def export_sheet(self, path: str, paper: str | None = None) -> None:
+    def export_sheet(self, path: str, paper: str | None = None, cad_font: str = "gb") -> None:
         """The meshing sheet of the pair on screen (PDF, SVG or DXF by the suffix), built
         and written by the drawing sheets' code (``shaper drawing --content gear``), in the
-        UI's language."""
+        UI's language; a DXF's texts in ``cad_font`` (``--cad-font``), outlines refused in
+        one line when no font has Chinese characters."""
         from shaperapp.drawing.content import DEFAULT_PAPER, SheetChoice, build_sheet
         from shaperapp.drawing.render import write_sheet
         suffix = os.path.splitext(path)[1].lower()
         if suffix not in SHEET_SUFFIXES:
             raise ValueError(self.tr("%1 is not a PDF, SVG or DXF file name").replace("%1", os.path.basename(path)))
+        problem = outline_font_problem(cad_font) if suffix == ".dxf" else ""
+        if problem:
+            raise ValueError(problem)
         design = self.gear_model.design_model
         choice = SheetChoice("gear", paper or DEFAULT_PAPER["gear"], design_name=design.source_name,
                              date=datetime.date.today().isoformat(), gear=self.gear_model.pair)
         sheet = build_sheet(design.valid_spec, design.rpms, None, choice)
         language = "zh_CN" if QLocale().language() == QLocale.Language.Chinese else "en"
-        write_sheet(sheet, path, language, design.source_name)
+        write_sheet(sheet, path, language, design.source_name, cad_font)
 
     def export_choice(self, kind: str) -> tuple[str, str]:
         if kind == "csv":
             return self.tr("CSV table (*.csv)"), "gear.csv"
         return ";;".join((self.tr("PDF document (*.pdf)"), self.tr("SVG image (*.svg)"),
-                          self.tr("DXF drawing (*.dxf)"))), "gear.pdf"
+                          *dxf_filters())), "gear.pdf"
+
+    def export_selected(self, kind: str) -> str:
+        """The sheet's DXF filter of the last DXF's CAD texts, as File › Export scheme as DXF…
+        offers it, when the sheet was last written as DXF; else Qt's first (PDF)."""
+        return remembered_filter(QSettings(), dxf_filters()) if kind == "sheet" and self._dxf_last else ""
+
+    def export_chosen(self, kind: str, path: str, chosen: str) -> None:
+        if kind != "sheet":
+            return super().export_chosen(kind, path, chosen)
+        cad_font = dxf_filters().get(chosen, "gb")
+        self.export_sheet(path, cad_font=cad_font)
+        self._dxf_last = os.path.splitext(path)[1].lower() == ".dxf"
+        if self._dxf_last:
+            QSettings().setValue(CAD_FONT_SETTING, cad_font)
 
     def export_title(self) -> str:
         return self.tr("Export the gear pair")

@@ -84,15 +84,25 @@ class PartTab(QWidget):
         """The export dialog's title (and its failure message's), in the current language."""
         raise NotImplementedError
 
+    def export_selected(self, kind: str) -> str:
+        """The filter the dialog of ``kind`` selects first ('': Qt's first)."""
+        return ""
+
+    def export_chosen(self, kind: str, path: str, chosen: str) -> None:
+        """Write ``kind`` to ``path``; ``chosen`` is the dialog's filter, for a part whose
+        filters say how a type is written (the gear sheet's DXF texts). May raise."""
+        getattr(self, "export_" + kind)(path)
+
     # ---- the shared path ---------------------------------------------------
     def _export_dialog(self, kind: str) -> None:
         self.form.commit()
         filters, name = self.export_choice(kind)
         title = self.export_title()
-        path = file_dialogs.save_file_name(self, title, os.path.join(os.path.expanduser("~"), name), filters)
+        path, chosen = file_dialogs.save_file_and_filter(
+            self, title, os.path.join(os.path.expanduser("~"), name), filters, self.export_selected(kind))
         if not path:
             return
         try:
-            getattr(self, "export_" + kind)(path)
+            self.export_chosen(kind, path, chosen)
         except Exception as exc:        # never to sys.excepthook: the reason, in a message
             QMessageBox.warning(self, title, failure_reason(exc))

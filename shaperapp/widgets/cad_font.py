@@ -31,6 +31,25 @@ def outline_font_problem(cad_font: str) -> str:
     return ""
 
 
+def dxf_filters() -> dict[str, str]:
+    """The file dialog's two DXF filters (name → "gb" or "outline"), in the UI's language:
+    the dialogs that write only a DXF or one by its suffix (File › Export scheme as DXF…,
+    the Gear tab's meshing sheet) offer the CAD texts as two filters of one type rather
+    than a combo box of their own."""
+    return {QCoreApplication.translate(
+                "CadFontChoice", "DXF drawing, texts in the GB style for AutoCAD and ZWCAD (*.dxf)"): "gb",
+            QCoreApplication.translate(
+                "CadFontChoice", "DXF drawing, texts as outlines for every CAD program, LibreCAD too (*.dxf)"):
+                "outline"}
+
+
+def remembered_filter(settings: QSettings, filters: dict[str, str]) -> str:
+    """The filter of ``filters`` (:func:`dxf_filters`) that the last DXF was written with
+    (``CAD_FONT_SETTING``), for the dialog to select first; '' when none matches."""
+    remembered = str(settings.value(CAD_FONT_SETTING, "gb") or "gb")
+    return next((name for name, kind in filters.items() if kind == remembered), "")
+
+
 def missing_font_text() -> str:
     """Why outlines cannot be drawn, and what to do, in the UI's language."""
     return QCoreApplication.translate(
