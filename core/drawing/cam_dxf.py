@@ -6,7 +6,9 @@ the CSV; the follower drawn at cam angle 0 (the start of the rise). Layers from
 circle on CENTER (the textbook draws the theoretical profile dash-dot), the line of centres
 on CENTER with the centre distance a dimensioned in the GB dimension style of
 ``core.drawing.dimensions`` (the scheme's: decimal point, text above the line, sizes for
-the scale an A3 print would use), the roller and the arm on THIN.
+the scale an A3 print would use), the roller and the arm on THIN. Its notes (r0, a, the pressure angles) and the dimension's
+text are TEXT in the GB style, or with ``cad_font`` "outline" filled outlines
+(:mod:`core.drawing.outline_text`), as every DXF of ``--cad-font`` writes them.
 
 Level: a drawing, above ``core.drawing`` (its document factory) and ``core.cam``.
 """
@@ -23,6 +25,8 @@ from ezdxf import bbox
 
 from . import dimensions as dims
 from .dxf import CENTER, OUTLINE, THIN, new_document, save_dxf, text_attribs
+from .outline_text import add_outline_text, outline_dimension_texts
+from .sheet import Text
 
 POINTS = 1440
 """Points of each closed curve (a quarter degree of cam angle apart)."""
@@ -30,8 +34,9 @@ NOTE_MM = 3.5
 """The notes' text height on paper (GB/T 14691), times the print scale in model space."""
 
 
-def cam_document(cam: Cam):
-    """The DXF document of ``cam`` (an ezdxf Drawing, not yet audited)."""
+def cam_document(cam: Cam, cad_font: str = "gb"):
+    """The DXF document of ``cam`` (an ezdxf Drawing, not yet audited), its texts in
+    ``cad_font`` (``core.drawing.CAD_FONTS``; OutlineFontMissing without a CJK font)."""
     doc = new_document()
     msp = doc.modelspace()
     delta = np.linspace(0.0, 2.0 * math.pi, POINTS, endpoint=False)
@@ -60,11 +65,17 @@ def cam_document(cam: Cam):
              f"max pressure angle rise / return = {cam.max_pressure_rise_deg:.2f} / "
              f"{cam.max_pressure_return_deg:.2f} deg; the cam turns clockwise"]
     for i, text in enumerate(lines):
-        msp.add_text(text, height=height, dxfattribs=text_attribs()) \
-            .set_placement((-r0 - reach, below - (2 + 1.6 * i) * height))
+        at = (-r0 - reach, below - (2 + 1.6 * i) * height)
+        if cad_font == "outline":
+            add_outline_text(msp, Text(text, at, height, "lb"))
+        else:
+            msp.add_text(text, height=height, dxfattribs=text_attribs()).set_placement(at)
+    if cad_font == "outline":
+        outline_dimension_texts(msp)
     return doc
 
 
-def write_cam_dxf(cam: Cam, path: str | os.PathLike) -> None:
-    """Write the cam's DXF atomically, after the audit of ``core.drawing.dxf``."""
-    save_dxf(cam_document(cam), path)
+def write_cam_dxf(cam: Cam, path: str | os.PathLike, cad_font: str = "gb") -> None:
+    """Write the cam's DXF atomically, after the audit of ``core.drawing.dxf``, its texts in
+    ``cad_font``."""
+    save_dxf(cam_document(cam, cad_font), path)
