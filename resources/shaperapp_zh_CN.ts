@@ -334,10 +334,6 @@
         <translation>CSV 表格 (*.csv)</translation>
     </message>
     <message>
-        <source>DXF drawing (*.dxf)</source>
-        <translation>DXF 图形 (*.dxf)</translation>
-    </message>
-    <message>
         <source>PNG image (*.png);;SVG drawing (*.svg)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg)</translation>
     </message>

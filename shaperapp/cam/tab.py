@@ -2,7 +2,7 @@
 plots, with CSV, image and DXF exports."""
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import QWidget
 
 from core.files.atomic import atomic_write
@@ -11,6 +11,7 @@ from core.files.io import table_csv
 from core.linkage.kinematics import crank_angles
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab
+from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, filter_cad_font, remembered_filter
 from shaperapp.widgets.steady_label import SteadyLabel
 
 from .form import CamForm
@@ -104,17 +105,29 @@ class CamTab(PartTab):
         rpm = self.cam_model.design_model.rpms[0]
         atomic_write(path, table_csv(*cam_table(self.cam_model.cam, crank_angles(1.0), rpm)))
 
-    def export_dxf(self, path: str) -> None:
+    def export_dxf(self, path: str, cad_font: str = "gb") -> None:
+        """The cam as ``shaper cam --dxf --cad-font`` writes it."""
         from core.drawing.cam_dxf import write_cam_dxf     # ezdxf: only when a drawing is asked for
-        write_cam_dxf(self.cam_model.cam, path)
+        write_cam_dxf(self.cam_model.cam, path, cad_font)
 
     def export_image(self, path: str) -> None:
         self.profile.export_image(path)
 
     def export_choice(self, kind: str) -> tuple[str, str]:
-        filters = {"csv": self.tr("CSV table (*.csv)"), "dxf": self.tr("DXF drawing (*.dxf)"),
+        filters = {"csv": self.tr("CSV table (*.csv)"), "dxf": ";;".join(dxf_filters()),
                    "image": self.tr("PNG image (*.png);;SVG drawing (*.svg)")}[kind]
         return filters, "cam." + ("png" if kind == "image" else kind)
+
+    def export_selected(self, kind: str) -> str:
+        """The last DXF's CAD texts first, as File › Export scheme as DXF… offers them."""
+        return remembered_filter(QSettings(), dxf_filters()) if kind == "dxf" else ""
+
+    def export_chosen(self, kind: str, path: str, chosen: str) -> None:
+        if kind != "dxf":
+            return super().export_chosen(kind, path, chosen)
+        cad_font = filter_cad_font(chosen)
+        self.export_dxf(path, cad_font)
+        QSettings().setValue(CAD_FONT_SETTING, cad_font)
 
     def export_title(self) -> str:
         return self.tr("Export the cam")

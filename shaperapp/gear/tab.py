@@ -13,7 +13,7 @@ from core.files.atomic import atomic_write
 from core.gear.table import gear_summary, summary_csv
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab
-from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, outline_font_problem, remembered_filter
+from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, filter_cad_font, remembered_filter
 
 from .form import GearForm
 from .model import GearModel
@@ -88,16 +88,12 @@ class GearTab(PartTab):
     def export_sheet(self, path: str, paper: str | None = None, cad_font: str = "gb") -> None:
         """The meshing sheet of the pair on screen (PDF, SVG or DXF by the suffix), built
         and written by the drawing sheets' code (``shaper drawing --content gear``), in the
-        UI's language; a DXF's texts in ``cad_font`` (``--cad-font``), outlines refused in
-        one line when no font has Chinese characters."""
+        UI's language; a DXF's texts in ``cad_font`` (``--cad-font``)."""
         from shaperapp.drawing.content import DEFAULT_PAPER, SheetChoice, build_sheet
         from shaperapp.drawing.render import write_sheet
         suffix = os.path.splitext(path)[1].lower()
         if suffix not in SHEET_SUFFIXES:
             raise ValueError(self.tr("%1 is not a PDF, SVG or DXF file name").replace("%1", os.path.basename(path)))
-        problem = outline_font_problem(cad_font) if suffix == ".dxf" else ""
-        if problem:
-            raise ValueError(problem)
         design = self.gear_model.design_model
         choice = SheetChoice("gear", paper or DEFAULT_PAPER["gear"], design_name=design.source_name,
                              date=datetime.date.today().isoformat(), gear=self.gear_model.pair)
@@ -119,10 +115,11 @@ class GearTab(PartTab):
     def export_chosen(self, kind: str, path: str, chosen: str) -> None:
         if kind != "sheet":
             return super().export_chosen(kind, path, chosen)
-        cad_font = dxf_filters().get(chosen, "gb")
+        dxf = os.path.splitext(path)[1].lower() == ".dxf"
+        cad_font = filter_cad_font(chosen) if dxf else "gb"
         self.export_sheet(path, cad_font=cad_font)
-        self._dxf_last = os.path.splitext(path)[1].lower() == ".dxf"
-        if self._dxf_last:
+        self._dxf_last = dxf
+        if dxf:
             QSettings().setValue(CAD_FONT_SETTING, cad_font)
 
     def export_title(self) -> str:

@@ -50,6 +50,18 @@ def remembered_filter(settings: QSettings, filters: dict[str, str]) -> str:
     return next((name for name, kind in filters.items() if kind == remembered), "")
 
 
+def filter_cad_font(chosen: str) -> str:
+    """The CAD texts of the file dialog's filter ``chosen`` (one of :func:`dxf_filters`; "gb"
+    for any other), checked before anything is built: ValueError with
+    :func:`missing_font_text`, one line, for outlines without a font for them. For the
+    parts' tabs, whose export dialog shows an exception's text in its message."""
+    cad_font = dxf_filters().get(chosen, "gb")
+    problem = outline_font_problem(cad_font)
+    if problem:
+        raise ValueError(problem)
+    return cad_font
+
+
 def missing_font_text() -> str:
     """Why outlines cannot be drawn, and what to do, in the UI's language."""
     return QCoreApplication.translate(
