@@ -28,8 +28,9 @@ from core.cam.table import follower_peaks
 from . import sheet_dims as sd
 from .charts import ARROW, Curve, arrow, chart, scale_notes
 from .dxf import CENTER, OUTLINE, THIN
-from .labels import Room, boxes_meet, crossings_each, strokes
+from .labels import Room, boxes_meet
 from .motion import CAPTION, GAP, TABLE_ROW, caption
+from .segments import crossings_each, strokes
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, fit, frame_items, line, marked,
                     number_text, scale_text, standard_scale, symbol)
 from .cells import table

@@ -20,8 +20,9 @@ from core.linkage.geometry import Design
 
 from . import mechanism as mech
 from . import sheet_dims as sd
-from .labels import boxes_meet, crossings, strokes
+from .labels import boxes_meet
 from .dimensions import reading_order
+from .segments import crossings, strokes
 from .sheet import Box, Item, Placement, Text, item_box, line, smaller_height
 
 FIRST = 7.0               # the first dimension line from the linework, paper mm

@@ -16,7 +16,7 @@ from core.linkage.geometry import Design
 from . import mechanism as mech
 from . import sheet_dims as sd
 from .dxf import THIN
-from .labels import boxes_meet_strokes, crossings_each, strokes
+from .segments import boxes_meet_strokes, crossings_each, strokes
 from .sheet import Box, Item, Placement, Text, line
 
 NUMBER_MM = 2.5           # the tool path's numbers

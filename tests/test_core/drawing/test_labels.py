@@ -190,7 +190,7 @@ def test_arrow_items_are_what_the_check_reads_as_an_arrowhead():
 
 
 def test_crossings_counts_the_segments_a_leader_runs_across():
-    from core.drawing.labels import crossings
+    from core.drawing.segments import crossings
     lead = np.array([0.0, 0.0, 10.0, 0.0])
     walls = np.array([[5.0, -1.0, 5.0, 1.0],      # across: 1
                       [2.0, 1.0, 2.0, 3.0],       # above, not reached
@@ -234,7 +234,7 @@ def test_batched_box_and_segment_tests_agree_with_plain_geometry(seed):
     """The label search's batched tests (each leader line against every taken box, each
     spot's box against every stroke, each leader's crossings) give what the plain
     geometry of one pair at a time gives, for segments in and beyond the boxes' extent."""
-    from core.drawing.labels import boxes_meet_strokes, crossings_each, strokes_meet_boxes
+    from core.drawing.segments import boxes_meet_strokes, crossings_each, strokes_meet_boxes
     boxes, segs = _random_boxes_and_segments(seed)
     meets = np.array([[_segment_meets_box(s, b) for s in segs] for b in boxes])
     assert meets.any(axis=0).sum() > 20 and (~meets.any(axis=0)).sum() > 20       # both kinds present
