@@ -11,7 +11,7 @@ from core.files.io import table_csv
 from core.linkage.kinematics import crank_angles
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab
-from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, filter_cad_font, remembered_filter
+from shaperapp.widgets.cad_font import dxf_filters, remembered_filter, write_as_filtered
 from shaperapp.widgets.steady_label import SteadyLabel
 
 from .form import CamForm
@@ -125,9 +125,7 @@ class CamTab(PartTab):
     def export_chosen(self, kind: str, path: str, chosen: str) -> None:
         if kind != "dxf":
             return super().export_chosen(kind, path, chosen)
-        cad_font = filter_cad_font(chosen)
-        self.export_dxf(path, cad_font)
-        QSettings().setValue(CAD_FONT_SETTING, cad_font)
+        write_as_filtered(chosen, lambda cad_font: self.export_dxf(path, cad_font))
 
     def export_title(self) -> str:
         return self.tr("Export the cam")

@@ -13,7 +13,7 @@ from core.files.atomic import atomic_write
 from core.gear.table import gear_summary, summary_csv
 from shaperapp.design.model import DesignModel
 from shaperapp.parts.tab import PartTab
-from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, filter_cad_font, remembered_filter
+from shaperapp.widgets.cad_font import dxf_filters, remembered_filter, write_as_filtered
 
 from .form import GearForm
 from .model import GearModel
@@ -116,11 +116,11 @@ class GearTab(PartTab):
         if kind != "sheet":
             return super().export_chosen(kind, path, chosen)
         dxf = os.path.splitext(path)[1].lower() == ".dxf"
-        cad_font = filter_cad_font(chosen) if dxf else "gb"
-        self.export_sheet(path, cad_font=cad_font)
-        self._dxf_last = dxf
         if dxf:
-            QSettings().setValue(CAD_FONT_SETTING, cad_font)
+            write_as_filtered(chosen, lambda cad_font: self.export_sheet(path, cad_font=cad_font))
+        else:
+            self.export_sheet(path)
+        self._dxf_last = dxf
 
     def export_title(self) -> str:
         return self.tr("Export the gear pair")

@@ -10,6 +10,7 @@ in every DXF.
 from __future__ import annotations
 
 import html
+from typing import Callable
 
 from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import QComboBox, QWidget
@@ -43,10 +44,16 @@ def dxf_filters() -> dict[str, str]:
                 "outline"}
 
 
+def stored_cad_font(settings: QSettings) -> str:
+    """The CAD texts the last DXF was written with (``CAD_FONT_SETTING``), "gb" when none
+    was (a damaged value is the caller's to check against its choices)."""
+    return str(settings.value(CAD_FONT_SETTING, "gb") or "gb")
+
+
 def remembered_filter(settings: QSettings, filters: dict[str, str]) -> str:
     """The filter of ``filters`` (:func:`dxf_filters`) that the last DXF was written with
     (``CAD_FONT_SETTING``), for the dialog to select first; '' when none matches."""
-    remembered = str(settings.value(CAD_FONT_SETTING, "gb") or "gb")
+    remembered = stored_cad_font(settings)
     return next((name for name, kind in filters.items() if kind == remembered), "")
 
 
@@ -60,6 +67,15 @@ def filter_cad_font(chosen: str) -> str:
     if problem:
         raise ValueError(problem)
     return cad_font
+
+
+def write_as_filtered(chosen: str, write: Callable[[str], None]) -> None:
+    """``write(cad_font)`` with the CAD texts of the file dialog's filter ``chosen``
+    (:func:`filter_cad_font`, which refuses outlines without a font before anything is
+    written), then remember them for the next DXF, as every DXF export does."""
+    cad_font = filter_cad_font(chosen)
+    write(cad_font)
+    QSettings().setValue(CAD_FONT_SETTING, cad_font)
 
 
 def missing_font_text() -> str:
@@ -85,7 +101,7 @@ class CadFontChoice(QComboBox):
             "and leaves out its Greek letters. Outlines: each character as a filled outline, drawn "
             "alike by every CAD program, LibreCAD included, but no longer editable as text; they "
             "need a font with Chinese characters (fonts-noto-cjk).")) + "</p>")
-        stored = str(settings.value(CAD_FONT_SETTING, "gb") or "gb") if settings is not None else "gb"
+        stored = stored_cad_font(settings) if settings is not None else "gb"
         self.setCurrentIndex(max(self.findData(stored), 0))       # a damaged value: the default
 
     def value(self) -> str:
