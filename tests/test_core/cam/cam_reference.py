@@ -65,7 +65,12 @@ def contact_angle(profile_of, a, l, psi0, k, roller, delta, guess, grid=4001):
         best = minimize_scalar(d, bounds=(u[i] - 2 * step, u[i] + 2 * step), method="bounded",
                                options={"xatol": 1e-13})
         return best.fun - roller
-    window = 1e-3               # widened until the roller goes from cutting in to clear
+    # The distance is unsigned: once the centre has passed through the profile (2r away on
+    # the cutting side) it is positive again. The first window therefore moves the centre at
+    # most one roller radius along its arc, so that a small roller (a synthesized cam's can
+    # come out at hundredths of a millimetre) is bracketed by cutting in and clear; it is
+    # widened from there until the roller goes from cutting in to clear.
+    window = min(1e-3, roller / l)
     while distance(guess - window) > 0 or distance(guess + window) < 0:
         window *= 2
         if window > 0.2:
