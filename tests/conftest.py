@@ -83,6 +83,23 @@ def no_worker_outlives_its_test(request) -> Iterator[None]:
         gc.collect()
 
 
+@pytest.hookimpl(wrapper=True, tryfirst=True)
+def pytest_runtest_teardown(item):
+    """A test's own window (the function-scoped ``window`` fixture) is hidden as soon as
+    the test has ended, before pytest-qt's teardown processes the pending events (its
+    hook runs after this one's first half).
+
+    Why: a shown window builds one of its hidden views per turn of the event loop from
+    its first paint (``build_when_idle``), and stops for a hidden window. The views built
+    in those turns, after the test's last check, were CPU spent for nothing: 4-13 % of
+    the window tests' (docs/performance.md, 30 November). A window a whole module
+    shares is left as it is: the module's next test uses it."""
+    fixtures = item._fixtureinfo.name2fixturedefs.get("window", ())
+    if fixtures and fixtures[-1].scope == "function" and isinstance(item.funcargs.get("window"), MainWindow):
+        item.funcargs["window"].hide()
+    return (yield)
+
+
 @pytest.fixture
 def window(qtbot, tmp_path) -> Iterator[MainWindow]:
     """The assembled window (see :func:`main_window`), settings under ``tmp_path``."""
