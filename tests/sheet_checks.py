@@ -90,31 +90,43 @@ def _meets_body(body: np.ndarray, seg: np.ndarray) -> np.ndarray:
     return _segments_meet_box(local, (0.0, 0.0, length, height))
 
 
-def _crosses(body: np.ndarray, item) -> bool:
-    """Whether ``item``'s strokes, or a filled item's area, meet the glyph ``body``."""
-    seg = item_segments(item)
-    if len(seg) and _meets_body(body, seg).any():
-        return True
-    return (isinstance(item, Polyline) and item.filled                # an arrowhead over it all
-            and _inside_polygon(body.mean(axis=0), np.asarray(item.points, float)))
-
-
 def crossed_texts(sheet) -> list[tuple[Text, object]]:
     """(text, item) for every text whose glyph body a line, polyline, circle or filled
-    arrowhead of the sheet meets; each text once, with the first such item."""
+    arrowhead of the sheet meets; each text once, with the first such item. Each item's
+    segments are made once, and a body is tested against all its near items' segments in
+    one pass (one test per item was most of this check's time on a crowded sheet)."""
     strokes = [it for it in sheet.items if not isinstance(it, Text)]
     boxes = np.array([item_box(it) for it in strokes]).reshape(-1, 4)
+    segs = [item_segments(it) for it in strokes]
+    filled = np.array([isinstance(it, Polyline) and it.filled for it in strokes], dtype=bool)
     found = []
     for text in (it for it in sheet.items if isinstance(it, Text)):
         for body in glyph_bodies(text):
             (x0, y0), (x1, y1) = body.min(axis=0), body.max(axis=0)
             near = np.flatnonzero((boxes[:, 0] <= x1) & (boxes[:, 2] >= x0)
                                   & (boxes[:, 1] <= y1) & (boxes[:, 3] >= y0))
-            hit = next((strokes[i] for i in near if _crosses(body, strokes[i])), None)
+            hit = _first_crossing(body, near, strokes, segs, filled)
             if hit is not None:
                 found.append((text, hit))
                 break
     return found
+
+
+def _first_crossing(body: np.ndarray, near: np.ndarray, strokes: list, segs: list[np.ndarray],
+                    filled: np.ndarray):
+    """The first of ``strokes[near]`` whose segments, or (a filled one) whose area, meet the
+    glyph ``body``; None if none does."""
+    if not len(near):
+        return None
+    counts = np.array([len(segs[i]) for i in near])
+    met = np.zeros(len(near), dtype=bool)
+    if counts.sum():
+        owner = np.repeat(np.arange(len(near)), counts)
+        met[owner[_meets_body(body, np.concatenate([segs[i] for i in near]))]] = True
+    for j in np.flatnonzero(~met & filled[near]):                # an arrowhead over it all
+        met[j] = _inside_polygon(body.mean(axis=0), np.asarray(strokes[near[j]].points, float))
+    first = np.flatnonzero(met)
+    return strokes[near[first[0]]] if len(first) else None
 
 
 def inside(box, area, tol=1e-6) -> bool:

@@ -56,12 +56,11 @@ def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarra
     student (docs/performance.md)."""
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
     for batch in _batches(candidates, 1):
-        spots = [label.box() for label in batch]
-        boxes = np.array(spots, dtype=float).reshape(-1, 4)
+        boxes = spot_boxes(batch)
         free = np.arange(len(boxes)) if keep is None else np.flatnonzero(keep(boxes))
         free = free[free_spots(boxes[free], boxes_taken, segments, within)]
         if len(free):
-            taken.append(spots[free[0]])
+            taken.append(batch[free[0]].box())
             return batch[free[0]]
     return None
 
@@ -168,15 +167,40 @@ def box_distance(box: Box | np.ndarray, points: np.ndarray) -> np.ndarray:
 
 
 def grid_candidates(text: str, at: Pair, height: float, within: Box,
-                    subscripts: tuple[tuple[int, int], ...] = ()) -> list[Text]:
+                    subscripts: tuple[tuple[int, int], ...] = ()) -> Iterable[Text]:
     """Spots all over ``within`` on a grid two text heights apart, centred on the grid's
-    points, the nearest to ``at`` first (at most GRID_SPOTS of them)."""
+    points, the nearest to ``at`` first (at most GRID_SPOTS of them), each made when the search
+    reaches it (most searches stop after a few hundred)."""
     xs = np.arange(within[0] + height, within[2] - height, 2.0 * height)
     ys = np.arange(within[1] + height, within[3] - height, 2.0 * height)
     gx, gy = np.meshgrid(xs, ys)
     pts = np.column_stack([gx.ravel(), gy.ravel()])
     near = pts[np.argsort(np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]), kind="stable")[:GRID_SPOTS]]
-    return [Text(text, (float(x), float(y)), height, "cm", subscripts=subscripts) for x, y in near]
+    return (Text(text, (float(x), float(y)), height, "cm", subscripts=subscripts) for x, y in near)
+
+
+def spot_boxes(spots: Sequence[Text]) -> np.ndarray:
+    """Each of ``spots``' :meth:`Text.box`, (k, 4): a search's candidates are one text at
+    many places, so an upright one's box is the box of the same text at (0, 0) moved to its
+    place (the same floats: a sum rounds monotonically, so the moved corners' min and max
+    are the moved min and max). Each candidate's own box was a tenth of a crowded motion
+    sheet's label search (docs/performance.md)."""
+    at_origin: dict[tuple, Box] = {}
+    rows = []
+    for spot in spots:
+        x, y = spot.position
+        if spot.rotation or not (math.isfinite(x) and math.isfinite(y)):
+            rows.append((0.0, 0.0) + spot.box())
+            continue
+        key = (spot.text, spot.height, spot.align, spot.subscripts, spot.superscripts)
+        if key not in at_origin:
+            at_origin[key] = Text(spot.text, (0.0, 0.0), spot.height, spot.align, subscripts=spot.subscripts,
+                                  superscripts=spot.superscripts).box()
+        rows.append((x, y) + at_origin[key])
+    if not rows:
+        return np.zeros((0, 4))
+    a = np.array(rows, dtype=float)
+    return a[:, 2:] + a[:, [0, 1, 0, 1]]
 
 
 def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,
@@ -189,7 +213,7 @@ def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments:
     best, found, order = None, 0, 0
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
     for batch in _batches(spots):
-        boxes = np.array([label.box() for label in batch])
+        boxes = spot_boxes(batch)
         free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within))
         ends = leader_ends(at, boxes[free], leader_gap)
         clear = ~strokes_meet_boxes(ends, boxes_taken)

@@ -22,7 +22,7 @@ from . import mechanism as mech
 from . import sheet_dims as sd
 from .labels import boxes_meet
 from .dimensions import reading_order
-from .segments import crossings, strokes
+from .segments import crossings_each, strokes
 from .sheet import Box, Item, Placement, Text, item_box, line, smaller_height
 
 FIRST = 7.0               # the first dimension line from the linework, paper mm
@@ -124,7 +124,7 @@ class _Placed:
         lead = strokes(list(dim.kept))
         reach = float(np.hypot(*(lead[0, 2:] - lead[0, :2])))
         smaller = 1.0 if dim.height < sd.TEXT_MM else 0.0
-        return (self.cost(dim) + self._own(dim) + 10.0 * sum(crossings(seg, self.segs) for seg in lead)
+        return (self.cost(dim) + self._own(dim) + 10.0 * int(crossings_each(lead, self.segs).sum())
                 + 0.01 * reach + 5.0 * smaller)
 
     @staticmethod

@@ -74,15 +74,15 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
     far_rows = rows + [(y + 2.2 + k * 1.5 * NUMBER_MM, "cb", y + 1.5) for k in range(1, 9)]
     out: list[Item] = []
     for k, x0, x1, w in zip(order, xs[order], at, widths):   # rows are apart: one row's numbers can meet
-        options = _spots(str(k + 1), x0, [x1], rows, taken, within, segs, led_clear, by_rank=True)
-        if not options or options[0][0] > 0:
+        best = _best_spot(str(k + 1), x0, [x1], rows, taken, within, segs, led_clear, by_rank=True)
+        if best is None or best[0] > 0:
             shifts = [x1 + s * (w + 0.8) for n in range(1, FAR_SHIFTS + 1) for s in (n, -n)]
-            farther = _spots(str(k + 1), x0, shifts, far_rows, taken, within, segs, led_clear)
-            if farther and farther[0][0] == 0:
-                options = farther
-        if not options:
+            farther = _best_spot(str(k + 1), x0, shifts, far_rows, taken, within, segs, led_clear)
+            if farther is not None and farther[0] == 0:
+                best = farther
+        if best is None:
             continue
-        _, _, text, box, tick, end = options[0]
+        _, _, text, box, tick, end = best
         taken.append(box)
         led_clear.append(box)
         out.append(text)
@@ -94,37 +94,43 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
     return out
 
 
-def _spots(number: str, x0: float, centres: Sequence[float], rows, taken: Sequence[Box],
-           within: Box, segs: np.ndarray, led_clear: Sequence[Box], by_rank: bool = False) -> list[tuple]:
-    """The tool path's number at each of ``centres`` in each of ``rows`` (y, alignment, the
-    tick's end its leader starts at) that meets no taken box and lies within the drawing,
-    as (crossed, (leader's crossings, rank), text, box, tick, end), best first: those whose
-    box no line crosses and whose leader runs through none of ``led_clear`` first, then the leader
-    crossing the fewest lines (in the order given; ``by_rank``: the first row, the
-    leader's crossings not counted)."""
-    found = []
+def _best_spot(number: str, x0: float, centres: Sequence[float], rows, taken: Sequence[Box],
+               within: Box, segs: np.ndarray, led_clear: Sequence[Box], by_rank: bool = False) -> tuple | None:
+    """The best spot for the tool path's number among each of ``centres`` in each of ``rows``
+    (y, alignment, the tick's end its leader starts at) that meets no taken box and lies
+    within the drawing, as (crossed, (leader's crossings, rank), text, box, tick, end); None
+    if there is none. Best: its box crossed by no line and its leader through none of
+    ``led_clear``, then the leader crossing the fewest lines, then the first in the order
+    given (``by_rank``: the first, the leader's crossings not counted). The leaders'
+    crossings are counted only for the spots crossed least, the only ones that can be best:
+    the far search tries some 600 spots a number, most of them crossed, and counting every
+    leader's crossings with every line of the sheet was a fifth of a crowded motion sheet
+    (docs/performance.md)."""
+    xs = np.repeat(np.asarray(centres, dtype=float), len(rows))
+    ys = np.tile([row for row, _, _ in rows], len(centres)).astype(float)
+    ticks = np.tile([tick for _, _, tick in rows], len(centres)).astype(float)
+    tops = np.tile([align == "ct" for _, align, _ in rows], len(centres))
+    # every spot's box as Text.box makes it: the box at (0, 0) moved there (a sum rounds
+    # monotonically, so min and max of the moved corners are the moved min and max)
+    at_origin = np.array([Text(number, (0.0, 0.0), NUMBER_MM, align).box() for align in ("cb", "ct")])
+    boxes = at_origin[tops.astype(int)] + np.column_stack([xs, ys, xs, ys])
+    apart = boxes + np.array([-NUMBER_PAD, 0.0, NUMBER_PAD, 0.0])        # "2" "3" is not "23"
     taken_boxes = np.asarray(taken, dtype=float).reshape(-1, 4)
-    for rank, (cx, (row, align, tick)) in enumerate((cx, r) for cx in centres for r in rows):
-        text = Text(number, (float(cx), row), NUMBER_MM, align)
-        box = text.box()
-        end = box[3] if align == "ct" else box[1]      # the box's edge toward the path
-        found.append((rank, text, box, tick, end, (box[0] - NUMBER_PAD, box[1], box[2] + NUMBER_PAD, box[3])))
-    if not found:
-        return []
-    boxes, apart = np.array([f[2] for f in found]), np.array([f[5] for f in found])    # "2" "3" is not "23"
     keep = ~((apart[:, None, 0] < taken_boxes[:, 2]) & (taken_boxes[:, 0] < apart[:, None, 2])
              & (apart[:, None, 1] < taken_boxes[:, 3]) & (taken_boxes[:, 1] < apart[:, None, 3])).any(axis=1)
     keep &= ((within[0] <= boxes[:, 0]) & (boxes[:, 2] <= within[2]) & (within[1] <= boxes[:, 1])
              & (boxes[:, 3] <= within[3]))
-    found = [f for f, k in zip(found, keep) if k]
-    if not found:
-        return []
-    segs_led = np.array([(x0, tick, float(text.position[0]), end) for _, text, _, tick, end, _ in found])
+    rank = np.flatnonzero(keep)
+    if not len(rank):
+        return None
+    ends = np.where(tops[rank], boxes[rank, 3], boxes[rank, 1])      # the box's edge toward the path
+    segs_led = np.column_stack([np.full(len(rank), x0), ticks[rank], xs[rank], ends])
     through = sd.crossing(np.asarray(led_clear, float), segs_led).any(axis=0)
     # a leader through a text crosses it
-    crossed = boxes_meet_strokes(boxes[keep], segs).astype(int) + through.astype(int)
-    led = np.zeros(len(found), dtype=int) if by_rank else crossings_each(segs_led, segs)
-    options = [(int(c), (int(n), rank), text, box, tick, end)
-               for c, n, (rank, text, box, tick, end, _) in zip(crossed, led, found)]
-    return sorted(options, key=lambda o: (o[0], o[1]))
-
+    crossed = boxes_meet_strokes(boxes[rank], segs).astype(int) + through.astype(int)
+    least = np.flatnonzero(crossed == crossed.min())
+    led = np.zeros(len(least), dtype=int) if by_rank else crossings_each(segs_led[least], segs)
+    j = int(np.lexsort((rank[least], led))[0])          # the fewest crossings, then the first
+    k, r = int(least[j]), int(rank[least[j]])
+    text = Text(number, (float(xs[r]), float(ys[r])), NUMBER_MM, "ct" if tops[r] else "cb")
+    return int(crossed[k]), (int(led[j]), r), text, text.box(), float(ticks[r]), float(ends[k])
