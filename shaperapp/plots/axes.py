@@ -62,19 +62,6 @@ class TickAxis(pg.AxisItem):
         super().__init__(orientation, **kwargs)
         self._steps: Sequence[float] | None = None
 
-    def _updateLabel(self) -> None:  # noqa: N802 - pyqtgraph's name
-        """pyqtgraph's, but the label laid out as HTML again only when its text changed:
-        pyqtgraph lays it out whenever it is shown or its range changes (SI prefixes on),
-        the same text each time (the app's axes show none); a report's build laid out 347
-        axis labels, 187 since, one Qt text layout each (docs/performance.md)."""
-        text = self.labelString()
-        if text != getattr(self, "_label_html", None):
-            self.label.setHtml(text)
-            self._label_html = text
-        self._adjustSize()
-        self.picture = None
-        self.update()
-
     def set_degree_steps(self, on: bool) -> None:
         self._steps = DEGREE_STEPS if on else None
         self.picture = None
