@@ -5,7 +5,7 @@ build (issue 43 item 4), 30 November"). On 18a5ced the views painted a dozen tim
 report, in the event processing before each export."""
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, QObject
+from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtWidgets import QApplication, QWidget
 
 from core.cam import CamInputs
@@ -26,7 +26,7 @@ class PaintCounter(QObject):
 
     def eventFilter(self, watched, event) -> bool:  # noqa: N802 - Qt's name
         if (event.type() == QEvent.Type.Paint and isinstance(watched, QWidget)
-                and watched.window().testAttribute(watched.window().WidgetAttribute.WA_DontShowOnScreen)):
+                and watched.window().testAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)):
             self.painted.append(type(watched).__name__)
         return False
 
