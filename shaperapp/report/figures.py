@@ -245,6 +245,10 @@ class ReportViews:
 
     def _show(self, widget: QWidget, width: int, height: int, kept: bool = False) -> QWidget:
         widget.setAttribute(Qt.WidgetAttribute.WA_DontShowOnScreen)
+        # never painted: each export renders the scene (or the widget) into its SVG itself,
+        # and a paint in the event processing before it was thrown away (some 4 % of a
+        # course); the scheme places its labels for the export as it would at a paint
+        widget.setUpdatesEnabled(False)
         widget.resize(width, height)
         widget.show()
         if not kept:                      # closed with the report's views
@@ -269,7 +273,8 @@ class ReportViews:
         """The SVG the widget's export writes, rendered in memory: no temporary folder that
         a killed run leaves behind, nor a failed write naming a temporary file (issue 42)."""
         # pending layout first (legend rows, group titles): a command-line run has no event
-        # loop, and a view exported unlaid-out put its legend on its tick labels
+        # loop, and a view exported unlaid-out put its legend on its tick labels (no paint:
+        # the views' updates are off, see _show)
         QCoreApplication.processEvents()
         return widget.svg_bytes()
 
