@@ -94,9 +94,11 @@ def pytest_runtest_teardown(item):
     in those turns, after the test's last check, were CPU spent for nothing: 4-13 % of
     the window tests' (docs/performance.md, 30 November). A window a whole module
     shares is left as it is: the module's next test uses it."""
-    fixtures = item._fixtureinfo.name2fixturedefs.get("window", ())
-    if fixtures and fixtures[-1].scope == "function" and isinstance(item.funcargs.get("window"), MainWindow):
-        item.funcargs["window"].hide()
+    info = getattr(item, "_fixtureinfo", None)          # test functions only (pytest's own record)
+    fixtures = info.name2fixturedefs.get("window", ()) if info is not None else ()
+    window = getattr(item, "funcargs", {}).get("window")
+    if fixtures and fixtures[-1].scope == "function" and isinstance(window, MainWindow):
+        window.hide()
     return (yield)
 
 
