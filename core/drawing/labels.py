@@ -179,12 +179,18 @@ def grid_candidates(text: str, at: Pair, height: float, within: Box,
     return (Text(text, (float(x), float(y)), height, "cm", subscripts=subscripts) for x, y in near)
 
 
-def spot_boxes(spots: Sequence[Text]) -> np.ndarray:
-    """Each of ``spots``' :meth:`Text.box`, (k, 4): a search's candidates are one text at
-    many places, so an upright one's box is the box of the same text at (0, 0) moved to its
-    place (the same floats: a sum rounds monotonically, so the moved corners' min and max
-    are the moved min and max). Each candidate's own box was a tenth of a crowded motion
+def moved_boxes(at_origin: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Boxes (k, 4) of texts whose box at (0, 0) is ``at_origin`` ((4,) or (k, 4)), moved to
+    (``x``, ``y``): the same floats as :meth:`Text.box` at those places (a sum rounds
+    monotonically, so the moved corners' min and max are the moved min and max). A search
+    tries one text at many places; each candidate's own box was a tenth of a crowded motion
     sheet's label search (docs/performance.md)."""
+    return at_origin + np.column_stack([x, y, x, y])
+
+
+def spot_boxes(spots: Sequence[Text]) -> np.ndarray:
+    """Each of ``spots``' :meth:`Text.box`, (k, 4): an upright one's as :func:`moved_boxes`
+    of the same text's box at (0, 0), a turned one's its own."""
     at_origin: dict[tuple, Box] = {}
     rows = []
     for spot in spots:
@@ -200,7 +206,7 @@ def spot_boxes(spots: Sequence[Text]) -> np.ndarray:
     if not rows:
         return np.zeros((0, 4))
     a = np.array(rows, dtype=float)
-    return a[:, 2:] + a[:, [0, 1, 0, 1]]
+    return moved_boxes(a[:, 2:], a[:, 0], a[:, 1])
 
 
 def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,

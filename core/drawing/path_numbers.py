@@ -16,6 +16,7 @@ from core.linkage.geometry import Design
 from . import mechanism as mech
 from . import sheet_dims as sd
 from .dxf import THIN
+from .labels import moved_boxes
 from .segments import boxes_meet_strokes, crossings_each, strokes
 from .sheet import Box, Item, Placement, Text, line
 
@@ -110,10 +111,8 @@ def _best_spot(number: str, x0: float, centres: Sequence[float], rows, taken: Se
     ys = np.tile([row for row, _, _ in rows], len(centres)).astype(float)
     ticks = np.tile([tick for _, _, tick in rows], len(centres)).astype(float)
     tops = np.tile([align == "ct" for _, align, _ in rows], len(centres))
-    # every spot's box as Text.box makes it: the box at (0, 0) moved there (a sum rounds
-    # monotonically, so min and max of the moved corners are the moved min and max)
     at_origin = np.array([Text(number, (0.0, 0.0), NUMBER_MM, align).box() for align in ("cb", "ct")])
-    boxes = at_origin[tops.astype(int)] + np.column_stack([xs, ys, xs, ys])
+    boxes = moved_boxes(at_origin[tops.astype(int)], xs, ys)       # every spot's Text.box
     apart = boxes + np.array([-NUMBER_PAD, 0.0, NUMBER_PAD, 0.0])        # "2" "3" is not "23"
     taken_boxes = np.asarray(taken, dtype=float).reshape(-1, 4)
     keep = ~((apart[:, None, 0] < taken_boxes[:, 2]) & (taken_boxes[:, 0] < apart[:, None, 2])
