@@ -28,24 +28,31 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
 from core.base.errors import DesignError
 from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM
+from .extremes import sampled_min_convex_radius
 from .follower import Follower
 from .laws import Program
 from .synthesis import Allowance, within_allowance
 
 MIN_ROLLER_MM = 3.0
-"""The smallest roller the automatic choice of a checked cam shrinks to so that its profile
-clears the hub (a Ø6 mm roller, about the smallest needle roller made)."""
+"""The smallest automatic roller (a Ø6 mm roller, about the smallest needle roller made):
+a checked cam's shrinks to it at most so that its profile clears the hub, and a synthesized
+cam whose pitch curve is too sharp for it is raised until it takes one (``cam._fitted``)."""
 CIRCLE_SAMPLES = 3600
 """Centres tried on each circle about the roller's lowest point (every 0.1°)."""
 RADIUS_TOLERANCE = 1e-6
 """The raised base radius is the smallest within this share of itself."""
 GROWTH = 1.25
 """Successive base radii tried until one fits, before the bisection."""
+CURVATURE_SAMPLES = 101
+"""Samples a smooth piece of a phase when centres are screened for the pitch curve's
+smallest convex radius (``extremes.sampled_min_convex_radius``: 0.06 % above the polished
+radius at most, over 120 random cams)."""
 
 
 @dataclass(frozen=True)
@@ -95,29 +102,41 @@ def _inside(ring: np.ndarray, points: np.ndarray) -> np.ndarray:
     return cross >= 0.0
 
 
-def _on_circle(ring: np.ndarray, arm: float, swing: float, radius: float, reach: float) -> np.ndarray:
+Screen = Callable[[np.ndarray, float], np.ndarray]
+"""Which centres (n, 2) of base radius r keep the pitch curve round enough: a mask (n,)."""
+
+
+def _on_circle(ring: np.ndarray, arm: float, swing: float, radius: float, reach: float,
+               round_enough: Screen | None = None) -> np.ndarray:
     """The centres (n, 2) at ``radius`` from the roller's lowest point (arm, 0) that lie in
     the polygon and keep a − R1 ≥ ``reach`` (pivot frame: A at the origin, B1 the roller's
-    centre at ψmax)."""
+    centre at ψmax), and pass ``round_enough`` when given."""
     t = np.linspace(0.0, 2.0 * math.pi, CIRCLE_SAMPLES, endpoint=False)
     points = np.column_stack([arm + radius * np.cos(t), radius * np.sin(t)])
     b1 = arm * np.array([math.cos(swing), -math.sin(swing)])
     a = np.hypot(points[:, 0], points[:, 1])
     points = points[a - np.hypot(points[:, 0] - b1[0], points[:, 1] - b1[1]) >= reach]
-    return points[_inside(ring, points)]
+    points = points[_inside(ring, points)]
+    return points if round_enough is None or not len(points) else points[round_enough(points, radius)]
 
 
-def _smallest_fit(ring: np.ndarray, arm: float, swing: float, low: float, reach: float) -> np.ndarray | None:
+def _smallest_fit(ring: np.ndarray, arm: float, swing: float, low: float, reach: float,
+                  round_enough: Screen | None = None) -> np.ndarray | None:
     """The centre of the smallest base radius ≥ ``low`` that fits, or None: radii grow by
     GROWTH until one fits, then a bisection (the fitting radii are an interval, the set of
-    centres being convex)."""
+    centres being convex; the centres ``round_enough`` keeps are not known to be convex, so
+    the bisection then finds where fitting begins in the first bracket that fits, which
+    tests check against circles 1 % smaller)."""
     top = 2.0 * float(np.max(np.hypot(ring[:, 0] - arm, ring[:, 1])))
-    found = _on_circle(ring, arm, swing, low, reach)
+
+    def on(radius: float) -> np.ndarray:
+        return _on_circle(ring, arm, swing, radius, reach, round_enough)
+    found = on(low)
     if found.size:
         return found[np.argmin(np.hypot(found[:, 0], found[:, 1]))]
     lo, hi = low, low * GROWTH
     while hi <= top:
-        found = _on_circle(ring, arm, swing, hi, reach)
+        found = on(hi)
         if found.size:
             break
         lo, hi = hi, hi * GROWTH
@@ -125,7 +144,7 @@ def _smallest_fit(ring: np.ndarray, arm: float, swing: float, low: float, reach:
         return None
     while hi - lo > RADIUS_TOLERANCE * hi:
         mid = 0.5 * (lo + hi)
-        here = _on_circle(ring, arm, swing, mid, reach)
+        here = on(mid)
         if here.size:
             hi, found = mid, here
         else:
@@ -133,18 +152,31 @@ def _smallest_fit(ring: np.ndarray, arm: float, swing: float, low: float, reach:
     return found[np.argmin(np.hypot(found[:, 0], found[:, 1]))]
 
 
+def _round_enough(arm_mm: float, program: Program, side: int, need_mm: float) -> Screen:
+    """The screen of centres whose pitch curve's smallest convex radius, on the grid, is at
+    least ``need_mm`` (centres in the pivot's frame, as ``synthesis``'s)."""
+    def screen(points: np.ndarray, radius: float) -> np.ndarray:
+        many = Follower(arm_mm, np.hypot(points[:, 0], points[:, 1]),
+                        np.degrees(np.arctan2(points[:, 1], points[:, 0])), side)
+        rho = sampled_min_convex_radius(many, program, np.full(len(points), radius), CURVATURE_SAMPLES)
+        return rho >= need_mm
+    return screen
+
+
 def raised(arm_mm: float, program: Program, allowance: Allowance, roller_mm: float,
-           room: Room, least_mm: float) -> Follower | None:
+           room: Room, least_mm: float, need_mm: float | None = None) -> Follower | None:
     """The follower of smallest base radius (≥ ``least_mm``) within the allowances whose
-    cam, with this roller, clears the hub and the pivot boss; None if there is none.
-    Both arrangements are tried; the smaller wins."""
+    cam, with this roller, clears the hub and the pivot boss, and whose pitch curve's
+    smallest convex radius is at least ``need_mm`` on the grid when given; None if there is
+    none. Both arrangements are tried; the smaller wins."""
     swing = math.radians(program.swing_deg)
     low = max(least_mm, (room.hub_mm + room.clearance_mm + roller_mm) * (1.0 + 1e-12))   # past rounding
     reach = room.boss_mm + room.clearance_mm - roller_mm
     found = []
     for side in (1, -1):        # within_allowance: the fit's pressure angles polished, as the smallest cam's
+        screen = None if need_mm is None else _round_enough(arm_mm, program, side, need_mm)
         f = within_allowance(arm_mm, program, allowance, side,
-                             lambda ring: _smallest_fit(ring, arm_mm, swing, low, reach))
+                             lambda ring: _smallest_fit(ring, arm_mm, swing, low, reach, screen))
         if f is not None:
             found.append(f)
     return min(found, key=lambda f: (round(f.base_radius_mm, 9), -f.side)) if found else None

@@ -8,16 +8,16 @@ closed forms (``extremes``), not read off a grid.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from core.base.errors import DesignError, require_range
 from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, RETURN_PRESSURE_DEG
 from .extremes import min_convex_radius, pressure_peaks
 from .follower import Follower, check_follower
 from .laws import Program
-from .build import (Room, pitch_max_radius, raised, require_buildable,
+from .build import (MIN_ROLLER_MM, FitError, Room, pitch_max_radius, raised, require_buildable,
                     roller_for_hub, shortfalls)
-from .synthesis import Allowance, largest_roller, synthesize
+from .synthesis import Allowance, convex_radius_for, largest_roller, synthesize
 from .timing import Timing, timing
 
 MIN_ARM_MM, MAX_ARM_MM = 1.0, 5000.0
@@ -143,23 +143,34 @@ def checked_follower(inputs: CamInputs) -> Follower:
 def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
                phase_deg: float | None = None) -> Cam:
     """Synthesize (or check) the cam, choose or check its roller, and time it against the
-    linkage ``design`` when one is given."""
+    linkage ``design`` when one is given.
+
+    An automatic roller is never below MIN_ROLLER_MM: a synthesized cam too sharp for one
+    is raised until it takes one (``_fitted``) or refused naming the arm that does
+    (``_require_roller``), a checked cam refused."""
     when = None if design is None else timing(inputs.program, design, idle_fraction, phase_deg)
-    if inputs.base_mm is None:
+    synthesized, typed = inputs.base_mm is None, inputs.roller_mm is not None
+    if synthesized:
         f = synthesize(inputs.arm_mm, inputs.program, inputs.allowance)
     else:
         f = checked_follower(inputs)
+    smallest = f
     up, back, rho = figures(f, inputs.program)
-    biggest = _largest(inputs, rho)
-    roller = biggest if inputs.roller_mm is None else inputs.roller_mm
-    _check_roller(roller, biggest, rho)
-    if inputs.roller_mm is None and inputs.base_mm is not None:
-        roller = roller_for_hub(biggest, f, inputs.room)
-    least = f.base_radius_mm
-    if inputs.base_mm is None and max(shortfalls(f, inputs.program, roller, inputs.room).values()) > 0.0:
+    if typed:
+        try:
+            biggest, roller = _largest(inputs, rho), inputs.roller_mm
+            _check_roller(roller, biggest, rho)
+        except DesignError as exc:
+            raise _blank_hint(exc, inputs, rho) from None
+    else:
+        biggest = largest_roller(rho)
+        roller = max(biggest, MIN_ROLLER_MM) if synthesized else roller_for_hub(biggest, f, inputs.room)
+    if synthesized and (roller > biggest or max(shortfalls(f, inputs.program, roller, inputs.room).values()) > 0.0):
         f, roller, (up, back, rho, biggest) = _fitted(inputs, f, roller)
-    require_buildable(f, inputs.program, roller, inputs.room, checked=inputs.base_mm is not None)
-    raised_from = least if f.base_radius_mm > least else None
+    if not typed:
+        _require_roller(inputs, smallest, roller, biggest, rho)
+    require_buildable(f, inputs.program, roller, inputs.room, checked=not synthesized)
+    raised_from = smallest.base_radius_mm if f.base_radius_mm > smallest.base_radius_mm else None
     return Cam(inputs, f, roller, biggest, rho, up, back, when, raised_from)
 
 
@@ -173,6 +184,22 @@ def _largest(inputs: CamInputs, rho: float) -> float:
     return biggest
 
 
+def _blank_hint(error: DesignError, inputs: CamInputs, rho: float) -> DesignError:
+    """A typed roller's refusal where the smallest cam takes no roller of MIN_ROLLER_MM: the
+    bound it would state is below any roller made, so it says what a blank roller gives
+    instead (the automatic choice raises the base radius for one), if that is a cam."""
+    if inputs.base_mm is not None or largest_roller(rho) >= MIN_ROLLER_MM:
+        return error
+    try:
+        cam = design_cam(replace(inputs, roller_mm=None))
+    except DesignError:
+        return error
+    return DesignError("roller", inputs.roller_mm,
+                       f"the smallest cam for the allowances takes no roller of {MIN_ROLLER_MM:g} mm or "
+                       f"more (ρmin = {rho:.4g} mm); left blank, the roller is {cam.roller_mm:.4g} mm on "
+                       f"a base radius raised to {cam.base_radius_mm:.4g} mm")
+
+
 def _check_roller(roller: float, biggest: float, rho: float) -> None:
     if roller > biggest * (1.0 + 1e-12):
         raise DesignError("roller", roller,
@@ -183,32 +210,94 @@ def _check_roller(roller: float, biggest: float, rho: float) -> None:
 
 FIT_ROUNDS = 4
 """Raises tried while the automatic roller of the raised cam comes out smaller."""
+SCREEN_MARGIN = 1e-3
+"""How much rounder than a roller needs (share of ρmin) the raise screens centres for, past
+the grid's error (at most 6e-4, see ``build.CURVATURE_SAMPLES``); ten times more on each
+try whose polished radius still falls short."""
 
 
 def _fitted(inputs: CamInputs, f: Follower, roller: float
             ) -> tuple[Follower, float, tuple[float, float, float, float]]:
-    """The synthesized cam raised to clear the hub and the pivot boss with this roller.
+    """The synthesized cam raised to clear the hub and the pivot boss with this roller, and
+    to take it (an automatic roller of MIN_ROLLER_MM, which the smallest cam's pitch curve
+    may be too sharp for: centres are then screened for its ρmin).
 
     An automatic roller is never made larger than the one the raise assumed (a larger one
     would eat the hub's clearance again); when the raised cam's largest roller is smaller,
-    the raise is redone with it. When no raise fits, the smallest cam comes back as it was
-    (require_buildable then says why)."""
+    the raise is redone with it, down to MIN_ROLLER_MM. When no raise fits, the smallest cam
+    comes back as it was (``_require_roller`` and require_buildable then say why)."""
     fixed = inputs.roller_mm is not None
-    least, best = f.base_radius_mm, (f, roller, None)
+    least, best, margin = f.base_radius_mm, None, SCREEN_MARGIN
     for _ in range(FIT_ROUNDS):
-        g = raised(inputs.arm_mm, inputs.program, inputs.allowance, roller, inputs.room, least)
+        need = None if fixed or roller > MIN_ROLLER_MM else convex_radius_for(roller) * (1.0 + margin)
+        g = raised(inputs.arm_mm, inputs.program, inputs.allowance, roller, inputs.room, least, need)
         if g is None:
             break
         up, back, rho = figures(g, inputs.program)
-        biggest = _largest(inputs, rho)
+        biggest = _largest(inputs, rho) if fixed else largest_roller(rho)
         if fixed:
             _check_roller(roller, biggest, rho)
         fits = biggest >= roller * (1.0 - 1e-12)
         best = (g, roller if fits or fixed else biggest, (up, back, rho, biggest))
         if fits or fixed:
             break
-        roller = biggest
-    if best[2] is None:
+        if need is not None:
+            margin *= 10.0
+        roller = max(biggest, MIN_ROLLER_MM)
+    if best is None:
         up, back, rho = figures(f, inputs.program)
-        return f, roller, (up, back, rho, _largest(inputs, rho))
+        return f, roller, (up, back, rho, largest_roller(rho) if not fixed else _largest(inputs, rho))
     return best
+
+
+def _require_roller(inputs: CamInputs, smallest: Follower, roller: float, biggest: float,
+                    rho: float) -> None:
+    """FitError when the automatic roller is below MIN_ROLLER_MM or more than the cam takes:
+    for a checked cam naming its base radius, for a synthesized one the arm that makes it
+    work (see :func:`arm_for_roller`)."""
+    if MIN_ROLLER_MM * (1.0 - 1e-12) <= roller <= biggest * (1.0 + 1e-12):
+        return
+    need = convex_radius_for(MIN_ROLLER_MM)
+    sharp = (f"the pitch curve's smallest convex radius ρmin = {rho:.4g} mm takes no roller of "
+             f"{MIN_ROLLER_MM:g} mm or more (that needs ρmin ≥ {need:g} mm)")
+    if inputs.base_mm is not None:
+        raise FitError("base", inputs.base_mm, f"{sharp}; leave out the base radius and the centre "
+                       "distance, and the synthesis raises the cam until it takes one")
+    arm = arm_for_roller(inputs, smallest)
+    if arm is None:             # no arm does: the smallest cam's path runs past the pivot boss
+        require_buildable(smallest, inputs.program, MIN_ROLLER_MM, inputs.room, checked=False)
+        raise FitError("swing", inputs.program.swing_deg,
+                       f"no cam within the allowances takes a roller of {MIN_ROLLER_MM:g} mm or more "
+                       f"and clears the hub and the pivot boss, with any arm up to {MAX_ARM_MM:g} mm")
+    raise FitError("arm", inputs.arm_mm,
+                   f"no cam within the allowances takes a roller of {MIN_ROLLER_MM:g} mm or more "
+                   f"and clears the hub and the pivot boss; from an arm of {arm:.1f} mm the smallest "
+                   "cam does")
+
+
+def arm_for_roller(inputs: CamInputs, smallest: Follower) -> float | None:
+    """The shortest arm (mm, rounded up to 0.1 mm) whose smallest cam takes its largest
+    roller, at least MIN_ROLLER_MM, and with it clears the hub and the pivot boss; None if
+    no arm up to MAX_ARM_MM does.
+
+    Why a closed form and not a search: the pressure-angle conditions do not change with
+    the scale, so the smallest cam of an arm s times as long is this one scaled by s (its
+    base radius, centre distance, R1 and ρmin all s times theirs), while the roller's least
+    size, the hub, the boss and the clearance stay; each condition then holds from some s
+    on, and the least s for all is found by bisection on these few numbers."""
+    rho = min_convex_radius(smallest, inputs.program)
+    r0, a, r1 = smallest.base_radius_mm, smallest.distance_mm, pitch_max_radius(smallest, inputs.program)
+    room = inputs.room
+
+    def fits(s: float) -> bool:
+        r = largest_roller(rho * s)
+        return (r >= MIN_ROLLER_MM and r0 * s - r >= room.hub_mm + room.clearance_mm
+                and r1 * s - r <= a * s - room.boss_mm - room.clearance_mm)
+    lo, hi = 1.0, MAX_ARM_MM / inputs.arm_mm
+    if not fits(hi):
+        return None
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if fits(mid) else (mid, hi)
+    arm = math.ceil(inputs.arm_mm * hi * (1.0 + 1e-9) * 10.0) / 10.0
+    return arm if fits(arm / inputs.arm_mm) and arm <= MAX_ARM_MM else None

@@ -118,19 +118,40 @@ def _convex_curvature(f: Follower, program: Program, u: np.ndarray, phase: np.nd
         return np.where(speed > 0.0, -TURN * cross / speed ** 3, np.inf)
 
 
+def _piece_grid(program: Program, samples: int) -> tuple[np.ndarray, ...]:
+    """Each smooth piece of the rise's and the return's law (rows): its phase, its index,
+    its ends lo and hi (u), and ``samples`` fractions u from lo to hi (rows, samples)."""
+    rows = [(phase, index, lo, hi)
+            for phase, name in enumerate((program.rise_law, program.return_law))
+            for index, (lo, hi) in enumerate(zip(pieces(name)[:-1], pieces(name)[1:]))]
+    phase, piece, lo, hi = (np.array(v) for v in zip(*rows))
+    return phase, piece, lo, hi, lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, samples)
+
+
 @lru_cache(maxsize=16)          # a checked cam's two arrangements are compared, then one kept
 def min_convex_radius(f: Follower, program: Program, samples: int = GRID) -> float:
     """The pitch curve's smallest convex radius of curvature (mm): 1 / the largest convex
     curvature of the phases' smooth pieces, polished, or the base radius (the inner dwell's
     arc; the outer dwell's arc is farther out) if that is smaller."""
-    rows = [(phase, index, lo, hi)
-            for phase, name in enumerate((program.rise_law, program.return_law))
-            for index, (lo, hi) in enumerate(zip(pieces(name)[:-1], pieces(name)[1:]))]
-    phase, piece, lo, hi = (np.array(v) for v in zip(*rows))
-    x = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, samples)
+    phase, piece, lo, hi, x = _piece_grid(program, samples)
 
     def curvature(t, p, q):
         return _convex_curvature(f, program, t, p, q)
     values = curvature(x, phase[:, None], piece[:, None])
     top = piece_maximum(curvature, x, values, lo, hi, args=(phase[:, None], piece[:, None]))
     return 1.0 / max(float(np.max(top)), 1.0 / f.base_radius_mm)
+
+
+def sampled_min_convex_radius(f: Follower, program: Program, base_mm: np.ndarray,
+                              samples: int) -> np.ndarray:
+    """:func:`min_convex_radius` of many cam centres at once, unpolished (mm, shape (n,)):
+    ``f``'s centre distance and angle are arrays (n,) with their base radii ``base_mm``.
+    Why: a search over centres screens thousands of them, which the polish would make
+    seconds; the grid's largest curvature is at most the true one, so this is at least the
+    true radius (by ~1e-4 of it with 101 samples a piece), and a centre it keeps is checked
+    with :func:`min_convex_radius` afterwards."""
+    phase, piece, _, _, x = _piece_grid(program, samples)
+    many = Follower(f.arm_mm, np.asarray(f.distance_mm)[:, None, None],
+                    np.asarray(f.initial_deg)[:, None, None], f.side)
+    values = _convex_curvature(many, program, x, phase[:, None], piece[:, None])
+    return 1.0 / np.maximum(np.max(values, axis=(1, 2)), 1.0 / np.asarray(base_mm))

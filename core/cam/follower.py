@@ -78,9 +78,10 @@ def pitch(f: Follower, program: Program, delta: np.ndarray) -> Pitch:
 def pitch_of_motion(f: Follower, delta: np.ndarray, m: Motion) -> Pitch:
     """The pitch curve at cam angles ``delta`` (rad) for the follower's motion ``m`` there:
     :func:`pitch` with the motion given, for a one-sided value at a jump of the law's
-    acceleration (see ``laws.law_piece``)."""
+    acceleration (see ``laws.law_piece``). The follower's centre distance and angle may be
+    arrays of many cam centres, broadcast against the angles (``build`` screens centres so)."""
     l, a, k = f.arm_mm, f.distance_mm, float(f.k)
-    beta = math.radians(f.initial_deg) + m.psi
+    beta = np.radians(f.initial_deg) + m.psi
     cb, sb = np.cos(beta), np.sin(beta)
     bx, by = a - l * cb, k * l * sb                     # B in the fixed frame
     vx, vy = sb, k * cb                                 # dB/dβ / l: the roller's direction of motion

@@ -323,6 +323,12 @@ def largest_roller(min_convex_mm: float) -> float:
     return min(ROLLER_SHARE * min_convex_mm, min_convex_mm - MIN_PROFILE_RADIUS_MM)
 
 
+def convex_radius_for(roller_mm: float) -> float:
+    """The smallest convex radius ρmin a pitch curve needs to take this roller with the
+    usual margin (:func:`largest_roller`'s inverse): ρmin ≥ r/0.8 and ρmin ≥ r + 3 mm."""
+    return max(roller_mm / ROLLER_SHARE, roller_mm + MIN_PROFILE_RADIUS_MM)
+
+
 SURE_MM = 1e-6
 """How much farther than the cam found a side's nearest admissible centre must be for
 that side to be left out (mm, besides 1e-9 of the radius): far above the ~1e-12 by which
