@@ -314,8 +314,8 @@
         <translation>基圆半径已增大</translation>
     </message>
     <message>
-        <source>from %1 mm, to clear the hub and the pivot boss</source>
-        <translation>由 %1 mm 增大，以避开轮毂和摆动中心凸台</translation>
+        <source>from %1 mm, to take the roller and clear the hub and the pivot boss</source>
+        <translation>由 %1 mm 增大，以装下滚子并避开轮毂和摆动中心凸台</translation>
     </message>
     <message>
         <source>Rise at crank φ</source>
@@ -1125,10 +1125,6 @@
     <message>
         <source>Export course design</source>
         <translation>导出课程设计</translation>
-    </message>
-    <message>
-        <source>Writing %1 (%2 of %3)…</source>
-        <translation>正在写入 %1（第 %2 个，共 %3 个）…</translation>
     </message>
     <message>
         <source>Cancelled: %1 of %2 files written, each complete.</source>
@@ -4239,7 +4235,7 @@
         <translation>正在取消…</translation>
     </message>
     <message>
-        <source>the export&apos;s process stopped unexpectedly (exit status %1)</source>
+        <source>the export's process stopped unexpectedly (exit status %1)</source>
         <translation>导出进程意外终止（退出状态 %1）</translation>
     </message>
 </context>
@@ -4346,8 +4342,8 @@
         <translation>（不大于 a − 凸台半径 − 间隙 = %1 mm）</translation>
     </message>
     <message>
-        <source>base radius raised from %1 mm to clear the hub and the pivot boss</source>
-        <translation>基圆半径由 %1 mm 增大，以避开轮毂和摆动中心凸台</translation>
+        <source>base radius raised from %1 mm to take the roller and clear the hub and the pivot boss</source>
+        <translation>基圆半径由 %1 mm 增大，以装下滚子并避开轮毂和摆动中心凸台</translation>
     </message>
     <message>
         <source>Centre distance a</source>
@@ -5889,6 +5885,22 @@
     <message>
         <source>the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm</source>
         <translation>实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; from an arm of %2 mm the smallest cam does</source>
+        <translation>许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮；摆臂长至 %2 mm 起，最小的凸轮即可</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm</source>
+        <translation>摆臂长不超过 %2 mm 时，许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮</translation>
+    </message>
+    <message>
+        <source>the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one</source>
+        <translation>理论廓线最小外凸曲率半径 ρmin = %1 mm，装不下 %2 mm 及以上的滚子（需 ρmin ≥ %3 mm）；将校核基圆半径和中心距留空，综合会增大凸轮直到能装下</translation>
+    </message>
+    <message>
+        <source>the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the roller is %3 mm on a base radius raised to %4 mm</source>
+        <translation>许用压力角下最小的凸轮装不下 %1 mm 及以上的滚子（ρmin = %2 mm）；滚子留空时为 %3 mm，基圆半径增大到 %4 mm</translation>
     </message>
     <message>
         <source>is not a design field</source>

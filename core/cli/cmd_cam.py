@@ -277,8 +277,8 @@ def summary_rows(s: dict) -> list[tuple[str, str]]:
             (f"follower max ω / α at {s['rpm']:g} r/min",
              f"{s['follower_omega_max_rad_s']:.4g} rad/s / {s['follower_alpha_max_rad_s2']:.4g} rad/s²")]
     if s["base_raised_from_mm"] is not None:
-        rows.append(("note", f"base radius raised from {s['base_raised_from_mm']:.3f} mm to clear "
-                     "the hub and the pivot boss"))
+        rows.append(("note", f"base radius raised from {s['base_raised_from_mm']:.3f} mm to take the "
+                     "roller and clear the hub and the pivot boss"))
     if not s["within_allowance"]:
         rows.append(("allowance", "EXCEEDED"))
     if "phase_deg" in s:

@@ -85,7 +85,7 @@ class CamTab(PartTab):
                  f"{cam.profile_min_radius_mm:.3f} … {cam.profile_max_radius_mm:.3f} mm")]
         if cam.base_raised_from_mm is not None:
             rows.append((self.tr("Base radius raised"),
-                         self.tr("from %1 mm, to clear the hub and the pivot boss").replace(
+                         self.tr("from %1 mm, to take the roller and clear the hub and the pivot boss").replace(
                              "%1", f"{cam.base_raised_from_mm:.3f}")))
         if cam.timing is not None:
             rows.append((self.tr("Rise at crank φ"), f"{cam.timing.phase_deg:.3f} °"))

@@ -32,8 +32,9 @@ _VALUE_WORDS = (
      lambda: translate("Report", "(at least hub + clearance = %1 mm)")),
     (re.compile(r"\(at most a − boss − clearance = (\S+) mm\)"),
      lambda: translate("Report", "(at most a − boss − clearance = %1 mm)")),
-    (re.compile(r"^base radius raised from (\S+) mm to clear the hub and the pivot boss$"),
-     lambda: translate("Report", "base radius raised from %1 mm to clear the hub and the pivot boss")),
+    (re.compile(r"^base radius raised from (\S+) mm to take the roller and clear the hub and the pivot boss$"),
+     lambda: translate("Report", "base radius raised from %1 mm to take the roller and clear the hub and the "
+                                 "pivot boss")),
 )
 
 

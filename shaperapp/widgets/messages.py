@@ -146,6 +146,25 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      r"reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
      "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm "
      "reaches %2 mm past a − boss − clearance = %3 mm"),
+    # an automatic roller of at least 3 mm (core.cam.cam)
+    (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss; "
+     r"from an arm of (\S+) mm the smallest cam does$",
+     "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; "
+     "from an arm of %2 mm the smallest cam does"),
+    (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss, "
+     r"with any arm up to (\S+) mm$",
+     "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, "
+     "with any arm up to %2 mm"),
+    (r"the pitch curve's smallest convex radius ρmin = (\S+) mm takes no roller of (\S+) mm or more "
+     r"\(that needs ρmin ≥ (\S+) mm\); leave out the base radius and the centre distance, and the "
+     r"synthesis raises the cam until it takes one$",
+     "the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs "
+     "ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam "
+     "until it takes one"),
+    (r"the smallest cam for the allowances takes no roller of (\S+) mm or more \(ρmin = (\S+) mm\); left "
+     r"blank, the roller is (\S+) mm on a base radius raised to (\S+) mm$",
+     "the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the "
+     "roller is %3 mm on a base radius raised to %4 mm"),
     # what a design file can hold wrong (core.files.design_file, Spec.from_dict, core.cam.file)
     (r"is not a design field$", "is not a design field"),
     (r"is not a load input$", "is not a load input"),
@@ -221,6 +240,14 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
         "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
             QCoreApplication.translate("messages", "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
+        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; from an arm of %2 mm the smallest cam does":
+            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; from an arm of %2 mm the smallest cam does"),
+        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm":
+            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm"),
+        "the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one":
+            QCoreApplication.translate("messages", "the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one"),
+        "the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the roller is %3 mm on a base radius raised to %4 mm":
+            QCoreApplication.translate("messages", "the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the roller is %3 mm on a base radius raised to %4 mm"),
         "is not a design field": QCoreApplication.translate("messages", "is not a design field"),
         "is not a load input": QCoreApplication.translate("messages", "is not a load input"),
         "is not a cam field": QCoreApplication.translate("messages", "is not a cam field"),

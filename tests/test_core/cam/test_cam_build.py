@@ -225,14 +225,14 @@ def test_any_synthesized_cam_clears_its_room_or_is_refused_by_the_swing(
 
 def test_the_texts_name_the_conditions_the_code_checks():
     """core.cam.build checks two things, the hub and the pivot's boss (the roller's path
-    beyond the pivot is reported, not refused): the note and the refusal say those two,
-    not "the hub, the boss and the pivot"."""
+    beyond the pivot is reported, not refused), and core.cam.cam that the cam takes its
+    roller: the note and the refusal say those, not "the hub, the boss and the pivot"."""
     from core.cam.build import Room, shortfalls
     cam = design_cam(CamInputs(program=Program(15.0, 100.0, 10.0, 60.0), **FORM))
     assert set(shortfalls(cam.follower, cam.program, cam.roller_mm, Room())) == {"hub", "boss"}
     status, out, _ = shaper_in_process(*SHEET_ARGS, "--rise", "100")
     notes = [line for line in out.splitlines() if line.startswith("note")]
     assert status == 0 and len(notes) == 1
-    assert notes[0].endswith("base radius raised from 18.888 mm to clear the hub and the pivot boss")
+    assert notes[0].endswith("base radius raised from 18.888 mm to take the roller and clear the hub and the pivot boss")
     status, _, err = shaper_in_process(*SHEET_ARGS, "--rise", "100", "--swing", "60", "--boss", "100")
     assert status == 2 and "no cam within the allowances clears the pivot boss;" in err

@@ -145,9 +145,9 @@ def test_base_radius_two_percent_smaller_breaks_the_allowance(inputs):
 
 
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-# found by a suite run (30 November): the raised cam's automatic roller is 0.023 mm, and the
+# found by a suite run (30 November): the raised cam's automatic roller was 0.023 mm, and the
 # contact search's first bracket, 1e-3 rad of a 52.5 mm arm, moved the centre through the
-# whole roller and out of the profile's other side
+# whole roller and out of the profile's other side (the cam is now raised for a 3 mm roller)
 @example(rise_law="sine", return_law="parabolic", swing=8.375, rise=44.0, dwell=0.0, back=40.0,
          arm=52.5, allowed=36.0)
 @given(rise_law=st.sampled_from(LAWS), return_law=st.sampled_from(LAWS),
@@ -159,8 +159,8 @@ def test_any_law_angles_and_arm_pass_the_contact_search(rise_law, return_law, sw
                        pressure_deg=allowed, return_pressure_deg=70.0)
     try:
         cam = design_cam(inputs)
-    except Exception as exc:       # a cam too sharp for any roller is refused, by name
-        assert getattr(exc, "parameter", None) == "swing"
+    except Exception as exc:       # a cam too sharp for a 3 mm roller however raised is refused, by name
+        assert getattr(exc, "parameter", None) in ("swing", "arm")
         return
     # every angle at least 0.005° from a phase's edge: the numerical normal's central
     # difference (1e-5 rad) must not straddle the jump in curvature there

@@ -54,7 +54,7 @@ def test_swing_45_rise_100_is_enlarged_and_says_so(qtbot, tab, model):
     rows = dict(tab.figure_rows())
     assert rows["Base radius raised"].startswith("from 55.374 mm")
     # what core.cam.build checks: the hub and the pivot's boss (the pivot itself is no condition)
-    assert rows["Base radius raised"].endswith("to clear the hub and the pivot boss")
+    assert rows["Base radius raised"].endswith("to take the roller and clear the hub and the pivot boss")
 
 
 @pytest.mark.parametrize("name, text", [("boss", "500"), ("clearance", "200")])
@@ -130,7 +130,7 @@ def test_the_chinese_report_says_the_raise_and_the_room_in_chinese(qapp):
     words = {w for _, v in shown_rows for w in re.findall(r"[A-Za-z]{2,}", v)}
     assert words <= {"mm", "rad", "min"}, words
     assert any("18.888" in v and "基圆半径" in v for _, v in shown_rows)
-    assert any(v.endswith("以避开轮毂和摆动中心凸台") for _, v in shown_rows)   # the two conditions checked
+    assert any(v.endswith("以装下滚子并避开轮毂和摆动中心凸台") for _, v in shown_rows)   # the conditions checked
 
 
 def test_a_chinese_report_of_a_cam_that_does_not_fit_says_why_in_chinese(qapp):
