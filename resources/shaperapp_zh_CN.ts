@@ -5887,10 +5887,6 @@
         <translation>实际廓线最大半径 %1 mm，超出 a − 凸台半径 − 间隙 = %3 mm 达 %2 mm</translation>
     </message>
     <message>
-        <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; from an arm of %2 mm the smallest cam does</source>
-        <translation>许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮；摆臂长至 %2 mm 起，最小的凸轮即可</translation>
-    </message>
-    <message>
         <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm</source>
         <translation>摆臂长不超过 %2 mm 时，许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮</translation>
     </message>
@@ -6013,6 +6009,10 @@
     <message>
         <source>%1: 'spec' must be an object of design fields</source>
         <translation>%1：设计参数须为一组设计字段</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; an arm of %2 mm gives one</source>
+        <translation>许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮；摆臂长 %2 mm 时可以</translation>
     </message>
     <message>
         <source>%1: 'rpm' must be a list of crank speeds in r/min</source>

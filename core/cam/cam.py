@@ -146,9 +146,15 @@ def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
     linkage ``design`` when one is given.
 
     An automatic roller is never below MIN_ROLLER_MM: a synthesized cam too sharp for one
-    is raised until it takes one (``_fitted``) or refused naming the arm that does
+    is raised until it takes one (``_fitted``) or refused naming an arm that gives one
     (``_require_roller``), a checked cam refused."""
     when = None if design is None else timing(inputs.program, design, idle_fraction, phase_deg)
+    return replace(_solved(inputs, advise=True), timing=when)
+
+
+def _solved(inputs: CamInputs, advise: bool) -> Cam:
+    """:func:`design_cam` without the timing; ``advise``: a refusal for want of a roller
+    searches for the arm that gives one (a probe of that search does not)."""
     synthesized, typed = inputs.base_mm is None, inputs.roller_mm is not None
     if synthesized:
         f = synthesize(inputs.arm_mm, inputs.program, inputs.allowance)
@@ -168,10 +174,10 @@ def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
     if synthesized and (roller > biggest or max(shortfalls(f, inputs.program, roller, inputs.room).values()) > 0.0):
         f, roller, (up, back, rho, biggest) = _fitted(inputs, f, roller)
     if not typed:
-        _require_roller(inputs, smallest, roller, biggest, rho)
+        _require_roller(inputs, smallest, roller, biggest, rho, advise)
     require_buildable(f, inputs.program, roller, inputs.room, checked=not synthesized)
     raised_from = smallest.base_radius_mm if f.base_radius_mm > smallest.base_radius_mm else None
-    return Cam(inputs, f, roller, biggest, rho, up, back, when, raised_from)
+    return Cam(inputs, f, roller, biggest, rho, up, back, None, raised_from)
 
 
 def _largest(inputs: CamInputs, rho: float) -> float:
@@ -191,7 +197,7 @@ def _blank_hint(error: DesignError, inputs: CamInputs, rho: float) -> DesignErro
     if inputs.base_mm is not None or largest_roller(rho) >= MIN_ROLLER_MM:
         return error
     try:
-        cam = design_cam(replace(inputs, roller_mm=None))
+        cam = _solved(replace(inputs, roller_mm=None), advise=False)
     except DesignError:
         return error
     return DesignError("roller", inputs.roller_mm,
@@ -251,32 +257,61 @@ def _fitted(inputs: CamInputs, f: Follower, roller: float
 
 
 def _require_roller(inputs: CamInputs, smallest: Follower, roller: float, biggest: float,
-                    rho: float) -> None:
+                    rho: float, advise: bool) -> None:
     """FitError when the automatic roller is below MIN_ROLLER_MM or more than the cam takes:
-    for a checked cam naming its base radius, for a synthesized one the arm that makes it
-    work (see :func:`arm_for_roller`)."""
+    for a checked cam naming its base radius, for a synthesized one an arm that gives one
+    (:func:`arm_for_roller`, when ``advise``)."""
     if MIN_ROLLER_MM * (1.0 - 1e-12) <= roller <= biggest * (1.0 + 1e-12):
         return
     need = convex_radius_for(MIN_ROLLER_MM)
-    sharp = (f"the pitch curve's smallest convex radius ρmin = {rho:.4g} mm takes no roller of "
-             f"{MIN_ROLLER_MM:g} mm or more (that needs ρmin ≥ {need:g} mm)")
     if inputs.base_mm is not None:
-        raise FitError("base", inputs.base_mm, f"{sharp}; leave out the base radius and the centre "
-                       "distance, and the synthesis raises the cam until it takes one")
-    arm = arm_for_roller(inputs, smallest)
+        raise FitError("base", inputs.base_mm,
+                       f"the pitch curve's smallest convex radius ρmin = {rho:.4g} mm takes no roller of "
+                       f"{MIN_ROLLER_MM:g} mm or more (that needs ρmin ≥ {need:g} mm); leave out the base "
+                       "radius and the centre distance, and the synthesis raises the cam until it takes one")
+    none = (f"no cam within the allowances takes a roller of {MIN_ROLLER_MM:g} mm or more and clears "
+            "the hub and the pivot boss")
+    arm = arm_for_roller(inputs, smallest) if advise else inputs.arm_mm
     if arm is None:             # no arm does: the smallest cam's path runs past the pivot boss
         require_buildable(smallest, inputs.program, MIN_ROLLER_MM, inputs.room, checked=False)
-        raise FitError("swing", inputs.program.swing_deg,
-                       f"no cam within the allowances takes a roller of {MIN_ROLLER_MM:g} mm or more "
-                       f"and clears the hub and the pivot boss, with any arm up to {MAX_ARM_MM:g} mm")
-    raise FitError("arm", inputs.arm_mm,
-                   f"no cam within the allowances takes a roller of {MIN_ROLLER_MM:g} mm or more "
-                   f"and clears the hub and the pivot boss; from an arm of {arm:.1f} mm the smallest "
-                   "cam does")
+        raise FitError("swing", inputs.program.swing_deg, f"{none}, with any arm up to {MAX_ARM_MM:g} mm")
+    raise FitError("arm", inputs.arm_mm, f"{none}; an arm of {arm:.1f} mm gives one")
+
+
+ARM_STEP_MM = 0.1
+"""The resolution of the arm a refusal names."""
 
 
 def arm_for_roller(inputs: CamInputs, smallest: Follower) -> float | None:
-    """The shortest arm (mm, rounded up to 0.1 mm) whose smallest cam takes its largest
+    """An arm (mm, a multiple of ARM_STEP_MM) whose cam takes an automatic roller of at
+    least MIN_ROLLER_MM, found by bisection between this arm and one whose smallest cam
+    does (:func:`_scaled_arm`); None if none up to MAX_ARM_MM does.
+
+    Why a search of real designs: the scaled smallest cam fits everything from some arm on,
+    but a raised cam of a much shorter arm often does too (a 21.25 mm arm whose smallest cam
+    fits from 80.2 mm gave one from 35 mm). Each probe is a whole design, so the arm named
+    is one that was designed; a shorter one is not known to fail if the designs that work
+    are no interval of arms."""
+    def works(arm: float) -> bool:
+        try:
+            _solved(replace(inputs, arm_mm=arm), advise=False)
+        except DesignError:
+            return False
+        return True
+    top = _scaled_arm(inputs, smallest)
+    if top is None or not works(top):
+        return None
+    lo, hi = inputs.arm_mm, top
+    while hi - lo > ARM_STEP_MM * (1.0 + 1e-9):
+        mid = math.ceil(0.5 * (lo + hi) / ARM_STEP_MM - 1e-9) * ARM_STEP_MM
+        if mid >= hi:
+            break
+        lo, hi = (lo, mid) if works(mid) else (mid, hi)
+    return hi
+
+
+def _scaled_arm(inputs: CamInputs, smallest: Follower) -> float | None:
+    """The shortest arm (mm, rounded up to ARM_STEP_MM) whose smallest cam takes its largest
     roller, at least MIN_ROLLER_MM, and with it clears the hub and the pivot boss; None if
     no arm up to MAX_ARM_MM does.
 
@@ -299,5 +334,5 @@ def arm_for_roller(inputs: CamInputs, smallest: Follower) -> float | None:
     for _ in range(60):
         mid = 0.5 * (lo + hi)
         lo, hi = (lo, mid) if fits(mid) else (mid, hi)
-    arm = math.ceil(inputs.arm_mm * hi * (1.0 + 1e-9) * 10.0) / 10.0
+    arm = math.ceil(inputs.arm_mm * hi * (1.0 + 1e-9) / ARM_STEP_MM) * ARM_STEP_MM
     return arm if fits(arm / inputs.arm_mm) and arm <= MAX_ARM_MM else None

@@ -148,9 +148,9 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "reaches %2 mm past a − boss − clearance = %3 mm"),
     # an automatic roller of at least 3 mm (core.cam.cam)
     (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss; "
-     r"from an arm of (\S+) mm the smallest cam does$",
+     r"an arm of (\S+) mm gives one$",
      "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; "
-     "from an arm of %2 mm the smallest cam does"),
+     "an arm of %2 mm gives one"),
     (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss, "
      r"with any arm up to (\S+) mm$",
      "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, "
@@ -240,8 +240,8 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
         "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
             QCoreApplication.translate("messages", "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; from an arm of %2 mm the smallest cam does":
-            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; from an arm of %2 mm the smallest cam does"),
+        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; an arm of %2 mm gives one":
+            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; an arm of %2 mm gives one"),
         "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm":
             QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm"),
         "the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one":

@@ -135,7 +135,7 @@ def test_any_automatic_roller_can_be_made_or_the_advice_makes_one(rise_law, retu
         assert exc.parameter in ("arm", "swing"), exc
         if exc.parameter == "swing":
             return
-        longer = float(re.search(r"from an arm of (\S+) mm", exc.allowed).group(1))
+        longer = float(re.search(r"an arm of (\S+) mm gives one", exc.allowed).group(1))
         assert longer > arm
         cam = design_cam(CamInputs(**{**inputs.__dict__, "arm_mm": longer}))
     _assert_roller_can_be_made(cam, _oracle_rho(cam))
@@ -148,8 +148,8 @@ def _one_line_error(*args) -> str:
     return err
 
 
-# no cam within 30° of pressure angle on a 21.25 mm arm takes a 3 mm roller and clears the
-# default hub and boss (its smallest cam's pitch curve: ρmin 1.9 mm)
+# no cam within the allowances on a 21.25 mm arm takes a 3 mm roller and clears the default
+# hub and boss
 SHORT_ARM = ("cam", "--swing", "26.94", "--pressure", "35.06", "--rise", "97.56", "--dwell", "36.63",
              "--return", "45.13", "--law", "parabolic", "--return-law", "parabolic")
 
@@ -157,11 +157,14 @@ SHORT_ARM = ("cam", "--swing", "26.94", "--pressure", "35.06", "--rise", "97.56"
 def test_a_cam_no_raise_makes_names_the_arm_that_does_and_that_arm_does():
     err = _one_line_error(*SHORT_ARM, "--arm", "21.25")
     assert "error: --arm: no cam within the allowances takes a roller of 3 mm or more" in err
-    longer = re.search(r"from an arm of (\S+) mm the smallest cam does", err).group(1)
+    longer = re.search(r"an arm of (\S+) mm gives one", err).group(1)
     status, out, _ = shaper_in_process(*SHORT_ARM, "--arm", longer, "--json")
     doc = json.loads(out)
-    assert status == 0 and doc["roller_mm"] >= SMALLEST and doc["base_raised_from_mm"] is None
+    assert status == 0 and doc["roller_mm"] >= SMALLEST
     assert doc["profile_base_radius_mm"] >= doc["hub_mm"] + doc["clearance_mm"] - 1e-9
+    # by how much: 0.1 mm shorter (the step it is named to) gives none
+    err = _one_line_error(*SHORT_ARM, "--arm", f"{float(longer) - 0.1:.1f}")
+    assert f"an arm of {longer} mm gives one" in err
 
 
 def test_a_checked_cam_too_sharp_for_3_mm_is_refused_and_the_synthesis_makes_one():

@@ -1,7 +1,12 @@
 """The Cam tab and a cam that cannot be built (issue 34, item 5): the hub, boss and
 clearance fields, a cam enlarged to clear them, a refusal marking the field typed and
-keeping the last valid cam, and a wrong phase sum marking the phase typed."""
+keeping the last valid cam, and a wrong phase sum marking the phase typed. And the least
+roller (30 November): the data sheet whose synthesized cam kept a 0.023 mm roller, typed
+into the form, shows a cam raised for a 3 mm roller; a program no raise makes marks the
+arm, keeps the last valid cam and names an arm that works when typed."""
 from __future__ import annotations
+
+import re
 
 import pytest
 
@@ -151,3 +156,69 @@ def test_a_chinese_report_of_a_cam_that_does_not_fit_says_why_in_chinese(qapp):
     text = blocks[-1].html
     assert "基圆半径" in text and "1.5 mm" in text and "轮毂" in text
     assert re.findall(r"[A-Za-z]{2,}", text) == ["mm", "mm", "mm"]
+
+
+# the least roller (30 November)
+EXAMPLE = (("arm", "52.5"), ("swing", "8.375"), ("pressure", "36"), ("rise", "44"), ("dwell", "0"),
+           ("return", "40"))
+SHORT_ARM = (("swing", "26.94"), ("pressure", "35.06"), ("rise", "97.56"), ("dwell", "36.63"),
+             ("return", "45.13"))
+
+
+def choose(tab, name, law):
+    combo = tab.form.laws[name]
+    combo.setCurrentIndex(combo.findData(law))
+    combo.activated.emit(combo.currentIndex())
+
+
+def test_the_example_typed_shows_a_3_mm_roller_on_a_raised_cam(qtbot, tab):
+    for name, text in EXAMPLE:
+        type_into(qtbot, tab, name, text)
+    choose(tab, "rise_law", "sine")
+    choose(tab, "return_law", "parabolic")
+    assert tab.form.marked_fields() == [] and tab.form.error_label.text() == ""
+    cam = tab.cam_model.cam
+    assert (cam.inputs.arm_mm, cam.program.return_law) == (52.5, "parabolic")
+    rows = dict(tab.figure_rows())
+    assert float(rows["Roller r"].split()[0]) >= 3.0
+    assert rows["Roller r"] == f"{cam.roller_mm:.3f} mm"
+    assert rows["Base radius raised"].startswith("from 14.403 mm")
+
+
+def test_a_program_no_raise_makes_marks_the_arm_and_the_arm_it_names_works(qtbot, tab):
+    for name, text in SHORT_ARM:
+        type_into(qtbot, tab, name, text)
+    choose(tab, "rise_law", "parabolic")
+    choose(tab, "return_law", "parabolic")
+    before = tab.cam_model.cam
+    type_into(qtbot, tab, "arm", "21.25")
+    assert tab.form.marked_fields() == ["arm"]
+    assert tab.cam_model.cam is before                      # the last valid cam stays
+    said = re.search(r"an arm of (\S+) mm gives one", tab.form.error_label.text())
+    assert said, tab.form.error_label.text()
+    type_into(qtbot, tab, "arm", said.group(1))
+    assert tab.form.marked_fields() == []
+    assert tab.cam_model.cam.roller_mm >= 3.0 and tab.cam_model.cam.inputs.arm_mm == float(said.group(1))
+
+
+def test_every_roller_refusal_has_a_chinese_template(qapp):
+    """The least roller's refusals (a synthesized cam naming the arm, a checked one its base,
+    a typed roller) match a template, so the Chinese UI never shows core's English."""
+    from core.base.errors import DesignError
+    from core.cam import CamInputs, Program, design_cam
+    from shaperapp.widgets import i18n
+    from shaperapp.widgets.messages import describe
+    example = dict(arm_mm=52.5, program=Program(8.375, 44.0, 0.0, 40.0, "sine", "parabolic"), pressure_deg=36.0)
+    attempts = [dict(arm_mm=21.25, program=Program(26.94, 97.56, 36.63, 45.13, "parabolic", "parabolic"),
+                     pressure_deg=35.06),
+                dict(example, base_mm=15.523, distance_mm=45.183), dict(example, roller_mm=3.0)]
+    for attempt, parameter in zip(attempts, ("arm", "base", "roller")):
+        with pytest.raises(DesignError) as info:
+            design_cam(CamInputs(**attempt))
+        assert info.value.parameter == parameter
+        i18n.set_language("zh_CN")
+        try:
+            shown_text = describe(info.value)
+        finally:
+            i18n.set_language("en")
+        assert not set(re.findall(r"[A-Za-z]{2,}", shown_text)) - {"mm", "min"}, shown_text
