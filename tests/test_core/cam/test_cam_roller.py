@@ -201,3 +201,28 @@ def test_a_typed_roller_the_cam_takes_is_kept_however_small():
 def test_cams_whose_largest_roller_fits_keep_it(program, arm):
     cam = design_cam(CamInputs(arm_mm=arm, program=program, pressure_deg=40.0))
     assert cam.base_raised_from_mm is None and cam.roller_mm == cam.largest_roller_mm > SMALLEST
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(rise_law=st.sampled_from(LAWS), return_law=st.sampled_from(LAWS),
+       swing=st.floats(5.0, 30.0), rise=st.floats(40.0, 150.0), dwell=st.floats(0.0, 40.0),
+       back=st.floats(40.0, 150.0), arm=st.floats(20.0, 400.0), allowed=st.floats(30.0, 50.0),
+       scale=st.floats(1.0, 2.0))
+def test_the_raise_screen_keeps_every_centre_the_polished_radius_keeps(rise_law, return_law, swing, rise,
+                                                                       dwell, back, arm, allowed, scale):
+    """The raise screens centres by ρmin on a grid (no polish), asking SCREEN_MARGIN more:
+    a grid's largest curvature is at most the true one, so its ρmin is never below the
+    polished one, and the margin must cover how far above it it can be."""
+    from core.cam.cam import SCREEN_MARGIN
+    from core.cam.build import CURVATURE_SAMPLES
+    from core.cam.extremes import min_convex_radius, sampled_min_convex_radius
+    from core.cam.follower import Follower
+    from core.cam.synthesis import synthesize
+    inputs = CamInputs(arm_mm=arm, program=Program(swing, rise, dwell, back, rise_law, return_law),
+                       pressure_deg=allowed)
+    f = synthesize(arm, inputs.program, inputs.allowance)
+    g = Follower(arm, f.distance_mm * scale, f.initial_deg, f.side)
+    polished = min_convex_radius(g, inputs.program)
+    screened = sampled_min_convex_radius(Follower(arm, np.array([g.distance_mm]), np.array([g.initial_deg]), g.side),
+                                         inputs.program, np.array([g.base_radius_mm]), CURVATURE_SAMPLES)[0]
+    assert polished * (1 - 1e-12) <= screened <= polished * (1 + SCREEN_MARGIN)
