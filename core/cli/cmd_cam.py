@@ -78,7 +78,7 @@ def add_cam_options(parser: argparse.ArgumentParser,
     cam.add_argument("--law", choices=LAWS, help="motion law of the rise (default sine)")
     cam.add_argument("--return-law", choices=LAWS, help="motion law of the return (default: --law)")
     cam.add_argument("--roller", metavar="MM", help="roller radius, mm (default: the largest that "
-                     "keeps the profile smooth)")
+                     "keeps the profile smooth, at least 3 mm: the cam is raised for one)")
     cam.add_argument("--base", metavar="MM", help="base-circle radius of the pitch curve, mm, to check "
                      "a cam instead of synthesizing one (with --distance)")
     cam.add_argument("--distance", metavar="MM", help="centre distance cam–pivot, mm (with --base)")
