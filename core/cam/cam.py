@@ -289,7 +289,7 @@ def arm_for_roller(inputs: CamInputs, smallest: Follower) -> float | None:
 
     Why a search of real designs: the scaled smallest cam fits everything from some arm on,
     but a raised cam of a much shorter arm often does too (a 21.25 mm arm whose smallest cam
-    fits from 80.2 mm gave one from 35 mm). Each probe is a whole design, so the arm named
+    fits from 80.2 mm gave one from 32.3 mm). Each probe is a whole design, so the arm named
     is one that was designed; a shorter one is not known to fail if the designs that work
     are no interval of arms."""
     def works(arm: float) -> bool:

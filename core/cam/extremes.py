@@ -148,8 +148,8 @@ def sampled_min_convex_radius(f: Follower, program: Program, base_mm: np.ndarray
     ``f``'s centre distance and angle are arrays (n,) with their base radii ``base_mm``.
     Why: a search over centres screens thousands of them, which the polish would make
     seconds; the grid's largest curvature is at most the true one, so this is at least the
-    true radius (by ~1e-4 of it with 101 samples a piece), and a centre it keeps is checked
-    with :func:`min_convex_radius` afterwards."""
+    true radius (by at most 6.02e-4 of it over 120 random cams, 101 samples a piece), and a
+    centre it keeps is checked with :func:`min_convex_radius` afterwards."""
     phase, piece, _, _, x = _piece_grid(program, samples)
     many = Follower(f.arm_mm, np.asarray(f.distance_mm)[:, None, None],
                     np.asarray(f.initial_deg)[:, None, None], f.side)
