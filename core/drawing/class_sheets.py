@@ -33,11 +33,27 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "Height of the cutting force", "Guide line", "Follower arm", "Follower swing",
               "Allowed pressure angle", "Rise", "Outer dwell", "Return", "Pinion teeth",
               "Gear teeth", "Module", "Deliver", "Answer key", "page %1/%2", "failed checks",
-              "speed", "none", "No.")
+              "speed", "none", "No.", ", ", "cam pressure angle", "undercut 1", "undercut 2", "tip 1", "tip 2",
+              "contact ratio", "interference 1", "interference 2")
+
+CHECK_WORDS = {"cam_pressure_angle": "cam pressure angle", "undercut1": "undercut 1", "undercut2": "undercut 2",
+               "tip1": "tip 1", "tip2": "tip 2", "contact": "contact ratio", "interference1": "interference 1",
+               "interference2": "interference 2"}
+"""The answer key's words for the checks ``core.cli.answers.failed_checks`` names (the
+cam's allowance, ``core.gear.checks.CHECKS``): a teacher reads these, in the key's
+language; the CSV and JSON keep the names."""
 
 
 def _w(labels: Mapping[str, str], word: str) -> str:
     return labels.get(word, word)
+
+
+def failed_text(names: Sequence[str], labels: Mapping[str, str]) -> str:
+    """The failed checks ``names`` as the answer key writes them: each in words of the
+    language, joined by the language's list separator; 'none' for none."""
+    if not names:
+        return _w(labels, "none")
+    return _w(labels, ", ").join(_w(labels, CHECK_WORDS.get(name, name)) for name in names)
 
 
 def _n(value: float | None) -> str:

@@ -14,9 +14,9 @@ from typing import Any, Mapping, Sequence
 from PySide6.QtCore import QCoreApplication
 
 from core.files.atomic import atomic_write
-from core.cli.answers import FIGURES, PER_SPEED, cell_text, key_csv, key_values
+from core.cli.answers import FIGURES, PER_SPEED, cell_text, failed_checks, key_csv, key_values
 from core.course_design.plan import PARTS
-from core.drawing.class_sheets import answer_pages, task_sheet
+from core.drawing.class_sheets import answer_pages, failed_text, task_sheet
 
 from shaperapp.drawing.render import pages_pdf
 
@@ -68,6 +68,15 @@ def task_labels() -> dict[str, str]:
         "speed": translate("ClassSheets", "speed"),
         "none": translate("ClassSheets", "none"),
         "No.": translate("ClassSheets", "No."),
+        ", ": translate("ClassSheets", ", "),
+        "cam pressure angle": translate("ClassSheets", "cam pressure angle"),
+        "undercut 1": translate("ClassSheets", "undercut 1"),
+        "undercut 2": translate("ClassSheets", "undercut 2"),
+        "tip 1": translate("ClassSheets", "tip 1"),
+        "tip 2": translate("ClassSheets", "tip 2"),
+        "contact ratio": translate("ClassSheets", "contact ratio"),
+        "interference 1": translate("ClassSheets", "interference 1"),
+        "interference 2": translate("ClassSheets", "interference 2"),
     }
     return words
 
@@ -101,7 +110,7 @@ _FORCES = (("n", "n_2", "r/min", 13), ("M_max", "M_max", "N·m", 16), ("M_mean",
            ("dW_max", "ΔW_max", "J", 16), ("J_F", "J_F", "kg·m²", 16), ("r0", "r_0", "mm", 18),
            ("a_cam", "a_cam", "mm", 18), ("r_roller", "r_r", "mm", 18))
 _GEAR = (("x1", "x_1", "", 20), ("x2", "x_2", "", 20), ("a'", "a′", "mm", 19), ("alpha'", "α′", "°", 20),
-         ("epsilon", "ε", "", 19), ("failed", "", "", 60))
+         ("epsilon", "ε", "", 19), ("failed", "", "", 100))
 
 
 def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: Sequence[str],
@@ -141,7 +150,7 @@ def _pdf_row(number: int, entry: Mapping[str, Any], group: str, speed: int,
                   for (name, _, _), v in zip(PER_SPEED, values[at + 1:at + 1 + len(PER_SPEED)])})
     first = speed == 0
     texts.update({name: cell_text(name, v) if first else "" for name, v in figures.items()})
-    texts["failed"] = (values[-1] or labels["none"]) if first else ""
+    texts["failed"] = failed_text(failed_checks(entry), labels) if first else ""
     if not first:
         return "", "", "", texts
     return str(number), entry["student"], entry["student_number"], texts
