@@ -14,7 +14,11 @@ import numpy as np
 
 from core.base.figure_text import figure_text
 from .dxf import THIN
-from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
+from .labels import Room, free_spots, spot_boxes
+from .segments import strokes_meet_boxes
+from .mechanism import PIN_RADIUS, bounds, frame_items, joint_anchors, link_anchors, links_at
+from .forces import JOINT_RINGS
+from .motion import JOINT_GAP
 from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line,
                     marked_text, standard_scale)
 from .cells import table
@@ -157,15 +161,33 @@ def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
                 standard_scale(b[3] - b[1], box[3] - box[1] - 16.0))
     where = fit(b, box, scale)
     items: list[Item] = frame_items(design, where) + links_at(design, SKETCH_DEG, where)
+    room = Room(items, within=box)      # the names as every sheet places them: off every line and circle
+    anchors = joint_anchors(design, SKETCH_DEG, where, 3.5)
+    room.name([p for _, _, p, _ in anchors])
     names = []
-    for text, spans, point, way in joint_anchors(design, SKETCH_DEG, where, 3.5):
-        at = point + way * 6.0
-        names.append(at)
-        items.append(Text(text, (float(at[0]), float(at[1])), 3.5, "cm", subscripts=spans))
-    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names):
-        at, way = point + offset, offset / float(np.hypot(*offset))
-        items.append(line([point + way * 0.8, at - way * 2.8], THIN))
-        items.append(Text(number, (float(at[0]), float(at[1])), 3.5, "cm"))
+    for text, spans, point, way in anchors:
+        placed = room.place(text, tuple(point), 3.5, tuple(way), gap=JOINT_GAP, rings=JOINT_RINGS,
+                            subscripts=spans, leader_gap=PIN_RADIUS + 0.3)
+        items += placed
+        names += [np.mean(np.reshape(placed[0].box(), (2, 2)), axis=0)] if placed else []
+
+    def leader(start: np.ndarray, at: np.ndarray) -> np.ndarray:
+        way = (at - start) / float(np.hypot(*(at - start)))
+        return np.concatenate([start + way * 0.8, at - way * 2.8])
+
+    def free(start: np.ndarray, at: np.ndarray, number: str) -> bool:
+        taken = np.asarray(room.taken, dtype=float).reshape(-1, 4)
+        spot = spot_boxes([Text(number, (float(at[0]), float(at[1])), 3.5, "cm")])
+        return bool(free_spots(spot, taken, room.segments, room.within)[0]
+                    and not strokes_meet_boxes(leader(start, at)[None, :], taken)[0])
+    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names, free):
+        if free(point, point + offset, number):
+            placed = [line(np.reshape(leader(point, point + offset), (2, 2)), THIN),
+                      Text(number, (float(point[0] + offset[0]), float(point[1] + offset[1])), 3.5, "cm")]
+        else:       # no spot at a leader's length is free: the labels' search (beside it, else led)
+            placed = room.place(number, tuple(point), 3.5, tuple(offset), gap=1.0, leader_gap=0.8)
+        room.draw(placed)
+        items += placed
     items.append(Text(f"1:{scale:g}", (box[2], box[1] + 2.0), 3.5, "rb"))
     return items
 
