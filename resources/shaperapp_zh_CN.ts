@@ -4366,8 +4366,8 @@
         <translation>（最大可用 %1 mm）</translation>
     </message>
     <message>
-        <source>(cut ends at %1 °, %2 ° clear)</source>
-        <translation>（切削终止于 %1 °，间隔 %2 °）</translation>
+        <source>(cut ends at %1 °, the next starts %2 ° later)</source>
+        <translation>（切削终止于 %1 °，再转 %2 ° 开始下一次切削）</translation>
     </message>
     <message>
         <source>exceeded</source>
