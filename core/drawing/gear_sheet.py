@@ -306,7 +306,8 @@ def figure_rows(pair: GearPair, lab: Mapping[str, str]) -> list[tuple[str, str, 
     def both(label: str, f) -> tuple[str, str, str]:
         return (lab[label], f(g1), f(g2))
     # each figure as ``shaper gear``, the report and the answer key write it (figure_text's kinds)
-    mm = lambda v: figure_text("gear_length", v)          # noqa: E731
+    length = lambda v: figure_text("gear_length", v)      # noqa: E731
+    mm = lambda v: f"{length(v)} mm"                      # noqa: E731  (the unit after each length)
     factor = lambda v: figure_text("gear_factor", v)      # noqa: E731
     checks = {c.name: c for c in pair_checks(pair)}
     verdict = lambda name: lab["ok"] if checks[name].ok else lab["fails"]     # noqa: E731
@@ -321,10 +322,10 @@ def figure_rows(pair: GearPair, lab: Mapping[str, str]) -> list[tuple[str, str, 
         both("da", lambda g: mm(2 * g.ra)), both("df", lambda g: mm(2 * g.rf)),
         both("dw", lambda g: mm(2 * g.rw)), both("s", lambda g: mm(g.s)), both("e", lambda g: mm(g.e)),
         both("sa", lambda g: mm(g.sa)),
-        (lab["centre"], f"{mm(pair.centre_mm)} ({mm(pair.reference_centre_mm)})", ""),
+        (lab["centre"], f"{length(pair.centre_mm)} ({length(pair.reference_centre_mm)}) mm", ""),
         (lab["angle_w"], f"{figure_text('gear_angle', math.degrees(pair.alpha_w))}°", ""),
         (lab["y"], f"{factor(pair.y)}, {factor(pair.dy)}", ""),
-        (lab["pb"], mm(pair.pb), ""), (lab["lines"], f"{mm(pair.n1n2)}, {mm(pair.b1b2)}", ""),
+        (lab["pb"], mm(pair.pb), ""), (lab["lines"], f"{length(pair.n1n2)}, {length(pair.b1b2)} mm", ""),
         (lab["eps"], factor(pair.contact_ratio), ""),
         (lab["undercut"], verdict("undercut1"), verdict("undercut2")),
         (lab["tip"].format(k=tip_limit_text(p)), verdict("tip1"), verdict("tip2")),

@@ -53,3 +53,21 @@ def test_the_cam_sheets_figures_are_shaper_cams(size):
     linkage = from_dimensions(110.0, 380.0, 540.0, rod=135.0, guide="sagitta")
     cam = design_cam(CamInputs(125.0, Program(15.0, 75.0, 10.0, 75.0, "sine", "sine"), 40.0), linkage)
     assert [n for n in _table_numbers(cam_sheet(cam, 60.0, paper(size))) if n not in printed] == []
+
+
+@pytest.mark.parametrize("size", ["A1", "A3"])
+def test_every_length_on_the_gear_sheet_names_its_unit(size):
+    """The gear sheet's table wrote the diameters, thicknesses, a′, pb and the lines of
+    action as bare numbers ('Reference diameter d  78.000  240.000'), where the module row
+    said 'mm' and the cam and motion sheets write 'mm' after each length. Every row of a
+    length must name mm: after each number, or once after a pair of them."""
+    from core.drawing.gear_sheet import ENGLISH
+    drawn = gear_sheet(design_pair(GearPairInputs(**GEARS["centre"])), paper(size))
+    lengths = [ENGLISH[k] for k in ("d", "db", "da", "df", "dw", "s", "e", "sa", "centre", "pb", "lines")]
+    rows = {row[0]: row[1:] for row in drawn.rows}
+    together = (ENGLISH["lines"], ENGLISH["centre"])      # "54.3812, 27.0559 mm", "162.0000 (159.0000) mm"
+    for label in lengths:
+        cells = " ".join(rows[label])
+        numbers = DECIMAL.findall(cells)
+        assert numbers and len(re.findall(r"\d\)? mm", cells)) >= (1 if label in together else len(numbers)), \
+            (label, cells)
