@@ -19,9 +19,9 @@ from .segments import strokes_meet_boxes
 from .mechanism import PIN_RADIUS, bounds, frame_items, joint_anchors, link_anchors, links_at
 from .forces import JOINT_RINGS
 from .motion import JOINT_GAP
-from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line,
-                    marked_text, standard_scale)
-from .cells import table
+from .sheet import (TEXT_HEIGHTS, Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line,
+                    marked, marked_text, standard_scale, text_width)
+from .cells import fitting_height, table
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
 A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)
@@ -134,7 +134,8 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y -= 10.0
     person = (f"{_w(labels, 'Student')}: {who.get('student', '')}    {_w(labels, 'Number')}: "
               f"{who.get('number', '')}    {_w(labels, 'Class')}: {who.get('group', '')}")
-    items.append(Text(clipped(person, right - left - 8.0, 3.5), (left + 4.0, y), 3.5, "lm"))
+    size = fitting_height(person, right - left - 8.0, 3.5)      # a long name: 2.5 mm before it is cut
+    items.append(Text(clipped(person, right - left - 8.0, size), (left + 4.0, y), size, "lm"))
     y -= 7.0
     items.append(marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5))
     items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rb"))
@@ -213,6 +214,7 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
         items.append(Text(page, (right - 2.0, top - 7.0), 3.5, "rm"))
         y = top - 14.0
         for header, widths, rows in tables:
+            widths = fitted_widths(header, widths, rows, plain, right - left - 4.0)
             scale = min(1.0, (right - left - 4.0) / sum(widths))
             chunk = [*map(list, header), *rows[at:at + per_page]]
             items += table((left + 2.0, y), [w * scale for w in widths], chunk, row_h, 2.5, plain=plain,
@@ -220,3 +222,35 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
             y -= row_h * len(chunk) + gap
         pages.append(Sheet(p, tuple(items)))
     return pages
+
+
+PLAIN_MOST = 60.0
+"""The widest a column of a user's words (a name, a number) grows, mm: a 24-character name at
+2.5 mm. Longer, it is cut with "…" rather than squeeze the figures' columns."""
+
+
+def fitted_widths(header: Sequence[Sequence[str]], widths: Sequence[float], rows: Sequence[Sequence[str]],
+                  plain: Sequence[int], room: float) -> list[float]:
+    """The answer key's column widths: each its given width (``widths``), or wider where its
+    widest text (a 12-digit student number, a name, the failed checks' words) needs it at the
+    key's 2.5 mm with the 1 mm a cell keeps each side, a column of a user's words at most
+    PLAIN_MOST (or its given width). Where they exceed ``room``, the figures' columns give up
+    their spare width first, then the widest columns of a user's words down to their given
+    width. Why: fixed widths cut 10-digit numbers in their 20 mm column to '20210012…', and
+    two students read alike."""
+    need = []
+    for c in range(len(widths)):
+        texts = [marked(h[c])[0] for h in header] + [row[c] for row in rows]
+        need.append(max((text_width(t, TEXT_HEIGHTS[0]) for t in texts if t), default=0.0) + 2.2)
+    out = [max(widths[c], min(n, max(PLAIN_MOST, widths[c])) if c in plain else n) for c, n in enumerate(need)]
+    excess = sum(out) - room
+    spare = [0.0 if c in plain else max(out[c] - need[c], 0.0) for c in range(len(out))]
+    if excess > 0.0 and sum(spare) > 0.0:
+        share = min(1.0, excess / sum(spare))
+        out = [w - share * s for w, s in zip(out, spare)]
+        excess -= share * sum(spare)
+    for c in sorted(plain, key=lambda k: -out[k]):
+        cut = min(max(excess, 0.0), max(out[c] - widths[c], 0.0))
+        out[c] -= cut
+        excess -= cut
+    return out

@@ -101,7 +101,8 @@ def write_tasks(path: str, students: Sequence[tuple[Mapping[str, Any], Mapping[s
 
 # the answer key's PDF columns: (FIGURES' or PER_SPEED's name, heading in the index notation,
 # unit, mm), in three tables, each column wide enough for its widest figure at 2.5 mm
-# (figure_text's decimals: a length "1234.567", a shift factor "-0.123456")
+# (figure_text's decimals: a length "1234.567", a shift factor "-0.123456"); wider where a
+# text needs it (class_sheets.fitted_widths: a student's number, the failed checks' words)
 _LINKAGE = (("theta", "θ", "°", 16), ("L1", "L_1", "mm", 18), ("L2", "L_2", "mm", 18), ("L3", "L_3", "mm", 18),
             ("L4", "L_4", "mm", 18), ("h", "h", "mm", 18), ("K", "K", "", 14), ("H", "H", "mm", 18),
             ("n", "n_2", "r/min", 13), ("v_work_max", "v_w,max", "m/s", 16),
@@ -110,7 +111,7 @@ _FORCES = (("n", "n_2", "r/min", 13), ("M_max", "M_max", "N·m", 16), ("M_mean",
            ("dW_max", "ΔW_max", "J", 16), ("J_F", "J_F", "kg·m²", 16), ("r0", "r_0", "mm", 18),
            ("a_cam", "a_cam", "mm", 18), ("r_roller", "r_r", "mm", 18))
 _GEAR = (("x1", "x_1", "", 20), ("x2", "x_2", "", 20), ("a'", "a′", "mm", 19), ("alpha'", "α′", "°", 20),
-         ("epsilon", "ε", "", 19), ("failed", "", "", 100))
+         ("epsilon", "ε", "", 19), ("failed", "", "", 30))
 
 
 def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: Sequence[str],
@@ -132,7 +133,7 @@ def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: 
         body = [[row[0], row[1], row[2]] + [row[3][name] for name, _, _, _ in columns] for row in rows]
         tables.append(((header, units), widths, body))
     title = f"{labels['Answer key']}: {labels['Quick-return mechanism of a shaper']}"
-    pages = answer_pages(tables, title, labels, plain=(1, 2, len(_GEAR) + len(who) - 1))
+    pages = answer_pages(tables, title, labels, plain=(1, 2))     # the failed checks are words, as wide as they need
     atomic_write(paths[2], pages_pdf(pages, language, title))
     return paths
 

@@ -83,3 +83,16 @@ def test_no_name_or_number_of_the_sketch_is_crossed_or_overlaps(dims, rod_ratio)
     assert [(a.text, b.text) for a, b in overlapping_texts(sheet)] == []
     texts = {item.text for item in sheet.items if isinstance(item, Text)}
     assert {"O2", "O4", "A", "B", "2", "3", "4", "6"} | ({"C", "5"} if rod_ratio else set()) <= texts
+
+
+def test_the_students_line_shows_the_whole_name_and_number():
+    """A long name pushed the student's number off the task sheet's line at 3.5 mm
+    ('Number: 202100…'): the line goes one standard height smaller (2.5 mm) before it is cut."""
+    doc, _ = _doc(0.3)
+    who = {"student": "Alexandra Konstantinopoulou-Smith", "number": "202100123456", "group": "ME2101",
+           "date": "2026-01-01"}
+    sheet = task_sheet(doc, who, [], {})
+    line = next(t for t in sheet.items if isinstance(t, Text) and t.text.startswith("Student: "))
+    assert "…" not in line.text and all(v in line.text for v in (who["student"], who["number"], who["group"]))
+    left, _, right, _ = sheet.paper.border
+    assert left <= line.box()[0] and line.box()[2] <= right

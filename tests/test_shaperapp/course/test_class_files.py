@@ -114,3 +114,22 @@ def test_the_answer_keys_failed_checks_are_words_of_the_language_in_full(tmp_pat
     if language == "zh_CN":
         english = {w for w in re.findall(r"[A-Za-z]{3,}", key) if w not in ALLOWED}
         assert not english, english
+
+
+@pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
+def test_the_answer_key_shows_each_students_number_and_name_whole(made, tmp_path):
+    """Student numbers of 10 to 12 digits (a Chinese university's) were cut to '20210012…'
+    in a 20 mm column, so two students read alike; a long name the same. Each number and
+    each name up to 24 characters must be printed whole, in every table of the key."""
+    from shaperapp.course.class_files import write_answer_key
+    _, entry = made
+    students = [("欧阳诸葛长风", "2021001234"), ("Maximilian Schwarzer", "202100123456"),
+                ("张三", "7")]
+    entries = [{**entry, "student": name, "student_number": number} for name, number in students]
+    write_answer_key(str(tmp_path), entries, ["机械2101"] * 3, "en")
+    key = pdf_text(tmp_path / "answer-key.pdf")
+    assert "…" not in key
+    words = key.split()
+    for name, number in students:
+        assert words.count(number) == 3, (number, words.count(number))      # one row in each table
+        assert " ".join(key.split()).count(name) == 3, name
