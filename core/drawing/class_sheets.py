@@ -225,8 +225,9 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
 
 
 PLAIN_MOST = 60.0
-"""The widest a column of a user's words (a name, a number) grows, mm: a 24-character name at
-2.5 mm. Longer, it is cut with "…" rather than squeeze the figures' columns."""
+"""The widest a column of a user's words (a name, a number) grows, mm, some 30 characters at
+2.5 mm (the first table's room lets a name of 20 through whole beside a 12-digit number).
+Longer, it is cut with "…" rather than squeeze the figures' columns."""
 
 
 def fitted_widths(header: Sequence[Sequence[str]], widths: Sequence[float], rows: Sequence[Sequence[str]],
