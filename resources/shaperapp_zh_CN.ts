@@ -719,6 +719,42 @@
         <translation>无</translation>
     </message>
     <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>cam pressure angle</source>
+        <translation>凸轮压力角</translation>
+    </message>
+    <message>
+        <source>undercut 1</source>
+        <translation>齿轮1根切</translation>
+    </message>
+    <message>
+        <source>undercut 2</source>
+        <translation>齿轮2根切</translation>
+    </message>
+    <message>
+        <source>tip 1</source>
+        <translation>齿轮1齿顶</translation>
+    </message>
+    <message>
+        <source>tip 2</source>
+        <translation>齿轮2齿顶</translation>
+    </message>
+    <message>
+        <source>contact ratio</source>
+        <translation>重合度</translation>
+    </message>
+    <message>
+        <source>interference 1</source>
+        <translation>齿轮1干涉</translation>
+    </message>
+    <message>
+        <source>interference 2</source>
+        <translation>齿轮2干涉</translation>
+    </message>
+    <message>
         <source>Design report (00-report.pdf)</source>
         <translation>设计说明书（00-report.pdf）</translation>
     </message>
@@ -4326,8 +4362,8 @@
         <translation>（最大可用 %1 mm）</translation>
     </message>
     <message>
-        <source>(cut ends at %1 °, %2 ° clear)</source>
-        <translation>（切削终止于 %1 °，间隔 %2 °）</translation>
+        <source>(cut ends at %1 °, the next starts %2 ° later)</source>
+        <translation>（切削终止于 %1 °，再转 %2 ° 开始下一次切削）</translation>
     </message>
     <message>
         <source>exceeded</source>

@@ -283,5 +283,5 @@ def summary_rows(s: dict) -> list[tuple[str, str]]:
         rows.append(("allowance", "EXCEEDED"))
     if "phase_deg" in s:
         rows.append(("rise starts at crank angle", f"{s['phase_deg']:.3f} ° (cut ends at "
-                     f"{s['cut_end_deg']:.3f} °, {s['clear_span_deg']:.3f} ° clear)"))
+                     f"{s['cut_end_deg']:.3f} °, the next starts {s['clear_span_deg']:.3f} ° later)"))
     return rows

@@ -21,6 +21,7 @@ from typing import Mapping
 
 import numpy as np
 
+from core.base.figure_text import figure_text
 from core.cam import Cam
 from core.cam.follower import pitch, pressure_angle, profile
 from core.cam.table import follower_peaks
@@ -308,8 +309,9 @@ def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],
 def figure_rows(cam: Cam, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:
     """The data sheet's inputs, then the synthesized figures, as the table prints them."""
     f, prog, inputs = cam.follower, cam.program, cam.inputs
-    mm = lambda v: f"{v:.3f} mm"                     # noqa: E731
-    deg = lambda v: f"{v:.3f}°"                      # noqa: E731
+    # each figure as ``shaper cam``, the report and the answer key write it (figure_text's kinds)
+    mm = lambda v: f"{figure_text('length', v)} mm"                     # noqa: E731
+    deg = lambda v: f"{figure_text('angle', v)}°"                       # noqa: E731
     peaks = follower_peaks(cam, rpm)
     rows = [(lab["arm"], mm(f.arm_mm)), (lab["swing"], f"{prog.swing_deg:g}°"),
             (lab["rise"], f"{prog.rise_deg:g}°, {lab[prog.rise_law]}"),
@@ -321,7 +323,7 @@ def figure_rows(cam: Cam, rpm: float, lab: Mapping[str, str]) -> list[tuple[str,
             (lab["base"], mm(cam.base_radius_mm)), (lab["distance"], mm(f.distance_mm)),
             (lab["initial"], deg(f.initial_deg)),
             (lab["side"], lab["above"] if f.side > 0 else lab["below"]),
-            (lab["max_pressure"], f"{cam.max_pressure_rise_deg:.2f}° / {cam.max_pressure_return_deg:.2f}°"),
+            (lab["max_pressure"], f"{deg(cam.max_pressure_rise_deg)} / {deg(cam.max_pressure_return_deg)}"),
             (lab["rho"], mm(cam.min_curvature_radius_mm)), (lab["roller"], mm(cam.roller_mm)),
             (lab["profile_base"], mm(cam.base_radius_mm - cam.roller_mm)),
             (lab["peaks"], f"{peaks['follower_omega_max_rad_s']:.4g} rad/s / "

@@ -14,10 +14,14 @@ import numpy as np
 
 from core.base.figure_text import figure_text
 from .dxf import THIN
-from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
-from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line,
-                    marked_text, standard_scale)
-from .cells import table
+from .labels import Room, free_spots, spot_boxes
+from .segments import strokes_meet_boxes
+from .mechanism import PIN_RADIUS, bounds, frame_items, joint_anchors, link_anchors, links_at
+from .forces import JOINT_RINGS
+from .motion import JOINT_GAP
+from .sheet import (TEXT_HEIGHTS, Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line,
+                    marked, marked_text, standard_scale, text_width)
+from .cells import fitting_height, table
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
 A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)
@@ -33,11 +37,27 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "Height of the cutting force", "Guide line", "Follower arm", "Follower swing",
               "Allowed pressure angle", "Rise", "Outer dwell", "Return", "Pinion teeth",
               "Gear teeth", "Module", "Deliver", "Answer key", "page %1/%2", "failed checks",
-              "speed", "none", "No.")
+              "speed", "none", "No.", ", ", "cam pressure angle", "undercut 1", "undercut 2", "tip 1", "tip 2",
+              "contact ratio", "interference 1", "interference 2")
+
+CHECK_WORDS = {"cam_pressure_angle": "cam pressure angle", "undercut1": "undercut 1", "undercut2": "undercut 2",
+               "tip1": "tip 1", "tip2": "tip 2", "contact": "contact ratio", "interference1": "interference 1",
+               "interference2": "interference 2"}
+"""The answer key's words for the checks ``core.cli.answers.failed_checks`` names (the
+cam's allowance, ``core.gear.checks.CHECKS``): a teacher reads these, in the key's
+language; the CSV and JSON keep the names."""
 
 
 def _w(labels: Mapping[str, str], word: str) -> str:
     return labels.get(word, word)
+
+
+def failed_text(names: Sequence[str], labels: Mapping[str, str]) -> str:
+    """The failed checks ``names`` as the answer key writes them: each in words of the
+    language, joined by the language's list separator; 'none' for none."""
+    if not names:
+        return _w(labels, "none")
+    return _w(labels, ", ").join(_w(labels, CHECK_WORDS.get(name, name)) for name in names)
 
 
 def _n(value: float | None) -> str:
@@ -114,7 +134,8 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y -= 10.0
     person = (f"{_w(labels, 'Student')}: {who.get('student', '')}    {_w(labels, 'Number')}: "
               f"{who.get('number', '')}    {_w(labels, 'Class')}: {who.get('group', '')}")
-    items.append(Text(clipped(person, right - left - 8.0, 3.5), (left + 4.0, y), 3.5, "lm"))
+    size = fitting_height(person, right - left - 8.0, 3.5)      # a long name: 2.5 mm before it is cut
+    items.append(Text(clipped(person, right - left - 8.0, size), (left + 4.0, y), size, "lm"))
     y -= 7.0
     items.append(marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5))
     items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rb"))
@@ -141,15 +162,33 @@ def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
                 standard_scale(b[3] - b[1], box[3] - box[1] - 16.0))
     where = fit(b, box, scale)
     items: list[Item] = frame_items(design, where) + links_at(design, SKETCH_DEG, where)
+    room = Room(items, within=box)      # the names as every sheet places them: off every line and circle
+    anchors = joint_anchors(design, SKETCH_DEG, where, 3.5)
+    room.name([p for _, _, p, _ in anchors])
     names = []
-    for text, spans, point, way in joint_anchors(design, SKETCH_DEG, where, 3.5):
-        at = point + way * 6.0
-        names.append(at)
-        items.append(Text(text, (float(at[0]), float(at[1])), 3.5, "cm", subscripts=spans))
-    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names):
-        at, way = point + offset, offset / float(np.hypot(*offset))
-        items.append(line([point + way * 0.8, at - way * 2.8], THIN))
-        items.append(Text(number, (float(at[0]), float(at[1])), 3.5, "cm"))
+    for text, spans, point, way in anchors:
+        placed = room.place(text, tuple(point), 3.5, tuple(way), gap=JOINT_GAP, rings=JOINT_RINGS,
+                            subscripts=spans, leader_gap=PIN_RADIUS + 0.3)
+        items += placed
+        names += [np.mean(np.reshape(placed[0].box(), (2, 2)), axis=0)] if placed else []
+
+    def leader(start: np.ndarray, at: np.ndarray) -> np.ndarray:
+        way = (at - start) / float(np.hypot(*(at - start)))
+        return np.concatenate([start + way * 0.8, at - way * 2.8])
+
+    def free(start: np.ndarray, at: np.ndarray, number: str) -> bool:
+        taken = np.asarray(room.taken, dtype=float).reshape(-1, 4)
+        spot = spot_boxes([Text(number, (float(at[0]), float(at[1])), 3.5, "cm")])
+        return bool(free_spots(spot, taken, room.segments, room.within)[0]
+                    and not strokes_meet_boxes(leader(start, at)[None, :], taken)[0])
+    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names, free):
+        if free(point, point + offset, number):
+            placed = [line(np.reshape(leader(point, point + offset), (2, 2)), THIN),
+                      Text(number, (float(point[0] + offset[0]), float(point[1] + offset[1])), 3.5, "cm")]
+        else:       # no spot at a leader's length is free: the labels' search (beside it, else led)
+            placed = room.place(number, tuple(point), 3.5, tuple(offset), gap=1.0, leader_gap=0.8)
+        room.draw(placed)
+        items += placed
     items.append(Text(f"1:{scale:g}", (box[2], box[1] + 2.0), 3.5, "rb"))
     return items
 
@@ -175,6 +214,7 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
         items.append(Text(page, (right - 2.0, top - 7.0), 3.5, "rm"))
         y = top - 14.0
         for header, widths, rows in tables:
+            widths = fitted_widths(header, widths, rows, plain, right - left - 4.0)
             scale = min(1.0, (right - left - 4.0) / sum(widths))
             chunk = [*map(list, header), *rows[at:at + per_page]]
             items += table((left + 2.0, y), [w * scale for w in widths], chunk, row_h, 2.5, plain=plain,
@@ -182,3 +222,36 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
             y -= row_h * len(chunk) + gap
         pages.append(Sheet(p, tuple(items)))
     return pages
+
+
+PLAIN_MOST = 60.0
+"""The widest a column of a user's words (a name, a number) grows, mm, some 30 characters at
+2.5 mm (the first table's room lets a name of 20 through whole beside a 12-digit number).
+Longer, it is cut with "…" rather than squeeze the figures' columns."""
+
+
+def fitted_widths(header: Sequence[Sequence[str]], widths: Sequence[float], rows: Sequence[Sequence[str]],
+                  plain: Sequence[int], room: float) -> list[float]:
+    """The answer key's column widths: each its given width (``widths``), or wider where its
+    widest text (a 12-digit student number, a name, the failed checks' words) needs it at the
+    key's 2.5 mm with the 1 mm a cell keeps each side, a column of a user's words at most
+    PLAIN_MOST (or its given width). Where they exceed ``room``, the figures' columns give up
+    their spare width first, then the widest columns of a user's words down to their given
+    width. Why: fixed widths cut 10-digit numbers in their 20 mm column to '20210012…', and
+    two students read alike."""
+    need = []
+    for c in range(len(widths)):
+        texts = [marked(h[c])[0] for h in header] + [row[c] for row in rows]
+        need.append(max((text_width(t, TEXT_HEIGHTS[0]) for t in texts if t), default=0.0) + 2.2)
+    out = [max(widths[c], min(n, max(PLAIN_MOST, widths[c])) if c in plain else n) for c, n in enumerate(need)]
+    excess = sum(out) - room
+    spare = [0.0 if c in plain else max(out[c] - need[c], 0.0) for c in range(len(out))]
+    if excess > 0.0 and sum(spare) > 0.0:
+        share = min(1.0, excess / sum(spare))
+        out = [w - share * s for w, s in zip(out, spare)]
+        excess -= share * sum(spare)
+    for c in sorted(plain, key=lambda k: -out[k]):
+        cut = min(max(excess, 0.0), max(out[c] - widths[c], 0.0))
+        out[c] -= cut
+        excess -= cut
+    return out

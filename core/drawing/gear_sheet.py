@@ -20,6 +20,7 @@ from typing import Mapping
 
 import numpy as np
 
+from core.base.figure_text import figure_text
 from core.gear import GearPair, pair_checks
 from core.gear.mesh import line_points, mesh_angles, placed
 from core.gear.profile import tooth_outline
@@ -304,7 +305,10 @@ def figure_rows(pair: GearPair, lab: Mapping[str, str]) -> list[tuple[str, str, 
 
     def both(label: str, f) -> tuple[str, str, str]:
         return (lab[label], f(g1), f(g2))
-    mm = lambda v: f"{v:.3f}"                  # noqa: E731
+    # each figure as ``shaper gear``, the report and the answer key write it (figure_text's kinds)
+    length = lambda v: figure_text("gear_length", v)      # noqa: E731
+    mm = lambda v: f"{length(v)} mm"                      # noqa: E731  (the unit after each length)
+    factor = lambda v: figure_text("gear_factor", v)      # noqa: E731
     checks = {c.name: c for c in pair_checks(pair)}
     verdict = lambda name: lab["ok"] if checks[name].ok else lab["fails"]     # noqa: E731
     return [
@@ -313,16 +317,16 @@ def figure_rows(pair: GearPair, lab: Mapping[str, str]) -> list[tuple[str, str, 
         (lab["rack"], f"{number_text(p.pressure_angle_deg)}°, {number_text(p.addendum)}, "
                       f"{number_text(p.clearance)}", ""),
         (lab["rule"], lab[MODES[pair.mode]], ""),
-        both("shift", lambda g: f"{g.shift:.4f}"), both("least", lambda g: f"{g.least_shift:.4f}"),
+        both("shift", lambda g: factor(g.shift)), both("least", lambda g: factor(g.least_shift)),
         both("d", lambda g: mm(2 * g.r)), both("db", lambda g: mm(2 * g.rb)),
         both("da", lambda g: mm(2 * g.ra)), both("df", lambda g: mm(2 * g.rf)),
         both("dw", lambda g: mm(2 * g.rw)), both("s", lambda g: mm(g.s)), both("e", lambda g: mm(g.e)),
         both("sa", lambda g: mm(g.sa)),
-        (lab["centre"], f"{pair.centre_mm:.3f} ({pair.reference_centre_mm:.3f})", ""),
-        (lab["angle_w"], f"{math.degrees(pair.alpha_w):.4f}°", ""),
-        (lab["y"], f"{pair.y:.4f}, {pair.dy:.4f}", ""),
-        (lab["pb"], mm(pair.pb), ""), (lab["lines"], f"{pair.n1n2:.3f}, {pair.b1b2:.3f}", ""),
-        (lab["eps"], f"{pair.contact_ratio:.4f}", ""),
+        (lab["centre"], f"{length(pair.centre_mm)} ({length(pair.reference_centre_mm)}) mm", ""),
+        (lab["angle_w"], f"{figure_text('gear_angle', math.degrees(pair.alpha_w))}°", ""),
+        (lab["y"], f"{factor(pair.y)}, {factor(pair.dy)}", ""),
+        (lab["pb"], mm(pair.pb), ""), (lab["lines"], f"{length(pair.n1n2)}, {length(pair.b1b2)} mm", ""),
+        (lab["eps"], factor(pair.contact_ratio), ""),
         (lab["undercut"], verdict("undercut1"), verdict("undercut2")),
         (lab["tip"].format(k=tip_limit_text(p)), verdict("tip1"), verdict("tip2")),
         (lab["contact"].format(k=number_text(p.contact_limit)), verdict("contact"), ""),

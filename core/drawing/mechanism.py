@@ -10,7 +10,7 @@ the origin, O2 above it, the ram guide at y = guide, the cut toward +x).
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 
@@ -187,13 +187,17 @@ LINK_NUMBERS = {"crank": "2", "block": "3", "lever": "4", "rod": "5", "ram": "6"
 
 
 def link_anchors(design: Design, crank_deg: float, where: Placement, reach: float,
-                 avoid: Sequence[np.ndarray] = ()) -> list[tuple[str, np.ndarray, np.ndarray]]:
+                 avoid: Sequence[np.ndarray] = (),
+                 free: Callable[[np.ndarray, np.ndarray, str], bool] | None = None
+                 ) -> list[tuple[str, np.ndarray, np.ndarray]]:
     """The links' numbers of the task book (crank 2, block 3, lever 4, rod 5, ram 6) at one
     crank angle as (number, the point on the link its leader starts at, the offset from it
     to the number): of eight directions at ``reach`` or 1.6 ``reach``, the spot farthest from
     the links, the ram and the points in ``avoid`` (the joints' names, the numbers placed
     before), the shorter leader when both are CLEAR; so that a student reads the sketch in
-    the book's numbering."""
+    the book's numbering. With ``free`` (the leader's start, the spot, the number → whether
+    the number there and its leader are clear of the rest of the drawing: the crank's circle,
+    the frame's hatching, the joints' names, a caption), a free spot before any other."""
     j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
     x0, y0, x1, y1 = ram_body(j["C"])
     body = [np.array(p) for p in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
@@ -213,7 +217,8 @@ def link_anchors(design: Design, crank_deg: float, where: Placement, reach: floa
             at = p + offset
             room = min([_distance(at, s0, s1) for s0, s1 in segments]
                        + [float(np.hypot(*(at - q))) for q in avoid])
-            return min(room, CLEAR) - 1e-3 * float(np.hypot(*offset))    # clear enough: the shorter
+            blocked = free is not None and not free(p, at, LINK_NUMBERS[link])
+            return min(room, CLEAR) - 1e-3 * float(np.hypot(*offset)) - (100.0 if blocked else 0.0)
         best = max(offsets, key=score)
         anchors.append((LINK_NUMBERS[link], p, best))
         avoid = [*avoid, p + best]

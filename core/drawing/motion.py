@@ -33,9 +33,9 @@ from .charts import (TICK, Curve, chart, polygon_extent, polygon_fit_scale, poly
                      scale_notes)
 from .dxf import OUTLINE, THIN
 from .labels import Room, boxes_meet
-from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, frame_items,
+from .sheet import (TEXT_HEIGHTS, Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, frame_items,
                     item_box, marked, marked_text, number_text, scale_text, smaller_height,
-                    standard_scale)
+                    standard_scale, text_width)
 from .cells import fitting_height, table
 from .sheet_dims import Dimension
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
@@ -135,6 +135,24 @@ def caption(text: str, top_centre: tuple[float, float], room: float, largest: fl
     h = fitting_height(marked(text)[0], room, largest)
     x, y = top_centre
     return marked_text(text, (x, y - 0.2 * h), h, "ct", room)     # the accents' room above h
+
+
+def caption_lines(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> list[Text]:
+    """:func:`caption`, or, where that would cut it even at the smallest height, two lines
+    broken after the last comma that lets the first fit, so that a polygon's scale (μ and its
+    unit, at the caption's end) is never cut off (the English A3 sheets' captions were)."""
+    plain = marked(text)[0]
+    smallest = TEXT_HEIGHTS[0]
+    if text_width(plain, smallest) <= room:
+        return [caption(text, top_centre, room, largest)]
+    breaks = [i + 1 for i, ch in enumerate(text) if ch in ",，"]
+    fitting = [i for i in breaks if text_width(marked(text[:i])[0], smallest) <= room] or breaks[:1]
+    if not fitting:
+        return [caption(text, top_centre, room, largest)]
+    first, second = text[:fitting[-1]], text[fitting[-1]:].lstrip()
+    h, (x, y) = smallest, top_centre       # the height one line would have had: within its room
+    return [marked_text(first, (x, y - 0.2 * h), h, "ct", room),
+            marked_text(second, (x, y - 1.8 * h), h, "ct", room)]
 
 
 def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
@@ -326,16 +344,16 @@ def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
             room_w = cw - 24.0 - (side + 4.0 if notes else 0.0)
             # each its own scale: a slow position stays legible; labels need a margin
             mu = polygon_fit_scale(poly, room_w, ch - 2 * CAPTION - 14.0)
-            title = caption(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
-                            ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)
+            titles = caption_lines(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
+                                   ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)
             ex = polygon_extent(poly, mu)
             cx = cell[0] + (cw - (side + 4.0 if notes else 0.0)) / 2.0
             cy = (cell[1] + cell[3] - 2 * CAPTION) / 2.0
             pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
-            items.append(title)
+            items += titles
             items += notes
             drawing = (cell[0] + 2.0, cell[1], cell[2] - 2.0 - (side + 2.0 if notes else 0.0), cell[3])
-            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [title.box()], within=drawing)
+            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [t.box() for t in titles], within=drawing)
     return items
 
 

@@ -123,22 +123,27 @@ def _run(args, out, good, jobs, bad: int) -> int:
         entries[result.index] = result.entry
         state = "up to date" if result.skipped else "written"
         print(f"{job.name}  {state}  {result.seconds:.1f} s", flush=True)
-    from shaperapp.widgets.command_line import start_qt
-    language = start_qt(args.lang)
-    from .class_files import write_answer_key, write_tasks
     done = sorted(entries)
-    try:
-        write_tasks(os.path.join(out, "tasks.pdf"),
-                    [(good[i].document, {"student": good[i].name, "number": good[i].number,
-                                         "group": good[i].group, "date": jobs[i].date}) for i in range(len(good))],
-                    language)
-        write_answer_key(out, [entries[i] for i in done], [good[i].group for i in done], language)
-    except OSError as exc:
-        raise OutputError(f"--output: {exc}") from None
-    print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); "
-          f"tasks.pdf and answer-key.pdf, .csv, .json in {out}")
+    if good:        # a table of bad rows only has no task sheet nor answer to write
+        _class_files(args, out, good, jobs, [entries[i] for i in done], [good[i].group for i in done])
+        print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); "
+              f"tasks.pdf and answer-key.pdf, .csv, .json in {out}")
     if bad or failed:
         print(f"shaper: error: {bad + failed} of {bad + len(jobs)} students not written "
               f"({bad} bad rows, {failed} failed)", file=sys.stderr)
         return 2
     return 0
+
+
+def _class_files(args, out, good, jobs, entries, groups) -> None:
+    """tasks.pdf for every good row, the answer key of the students written (``entries``)."""
+    from shaperapp.widgets.command_line import start_qt
+    language = start_qt(args.lang)
+    from .class_files import write_answer_key, write_tasks
+    try:
+        write_tasks(os.path.join(out, "tasks.pdf"),
+                    [(s.document, {"student": s.name, "number": s.number, "group": s.group, "date": job.date})
+                     for s, job in zip(good, jobs)], language)
+        write_answer_key(out, entries, groups, language)
+    except OSError as exc:
+        raise OutputError(f"--output: {exc}") from None

@@ -14,9 +14,9 @@ from typing import Any, Mapping, Sequence
 from PySide6.QtCore import QCoreApplication
 
 from core.files.atomic import atomic_write
-from core.cli.answers import FIGURES, PER_SPEED, cell_text, key_csv, key_values
+from core.cli.answers import FIGURES, PER_SPEED, cell_text, failed_checks, key_csv, key_values
 from core.course_design.plan import PARTS
-from core.drawing.class_sheets import answer_pages, task_sheet
+from core.drawing.class_sheets import answer_pages, failed_text, task_sheet
 
 from shaperapp.drawing.render import pages_pdf
 
@@ -68,6 +68,15 @@ def task_labels() -> dict[str, str]:
         "speed": translate("ClassSheets", "speed"),
         "none": translate("ClassSheets", "none"),
         "No.": translate("ClassSheets", "No."),
+        ", ": translate("ClassSheets", ", "),
+        "cam pressure angle": translate("ClassSheets", "cam pressure angle"),
+        "undercut 1": translate("ClassSheets", "undercut 1"),
+        "undercut 2": translate("ClassSheets", "undercut 2"),
+        "tip 1": translate("ClassSheets", "tip 1"),
+        "tip 2": translate("ClassSheets", "tip 2"),
+        "contact ratio": translate("ClassSheets", "contact ratio"),
+        "interference 1": translate("ClassSheets", "interference 1"),
+        "interference 2": translate("ClassSheets", "interference 2"),
     }
     return words
 
@@ -92,7 +101,8 @@ def write_tasks(path: str, students: Sequence[tuple[Mapping[str, Any], Mapping[s
 
 # the answer key's PDF columns: (FIGURES' or PER_SPEED's name, heading in the index notation,
 # unit, mm), in three tables, each column wide enough for its widest figure at 2.5 mm
-# (figure_text's decimals: a length "1234.567", a shift factor "-0.123456")
+# (figure_text's decimals: a length "1234.567", a shift factor "-0.123456"); wider where a
+# text needs it (class_sheets.fitted_widths: a student's number, the failed checks' words)
 _LINKAGE = (("theta", "θ", "°", 16), ("L1", "L_1", "mm", 18), ("L2", "L_2", "mm", 18), ("L3", "L_3", "mm", 18),
             ("L4", "L_4", "mm", 18), ("h", "h", "mm", 18), ("K", "K", "", 14), ("H", "H", "mm", 18),
             ("n", "n_2", "r/min", 13), ("v_work_max", "v_w,max", "m/s", 16),
@@ -101,7 +111,7 @@ _FORCES = (("n", "n_2", "r/min", 13), ("M_max", "M_max", "N·m", 16), ("M_mean",
            ("dW_max", "ΔW_max", "J", 16), ("J_F", "J_F", "kg·m²", 16), ("r0", "r_0", "mm", 18),
            ("a_cam", "a_cam", "mm", 18), ("r_roller", "r_r", "mm", 18))
 _GEAR = (("x1", "x_1", "", 20), ("x2", "x_2", "", 20), ("a'", "a′", "mm", 19), ("alpha'", "α′", "°", 20),
-         ("epsilon", "ε", "", 19), ("failed", "", "", 60))
+         ("epsilon", "ε", "", 19), ("failed", "", "", 30))
 
 
 def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: Sequence[str],
@@ -123,7 +133,7 @@ def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: 
         body = [[row[0], row[1], row[2]] + [row[3][name] for name, _, _, _ in columns] for row in rows]
         tables.append(((header, units), widths, body))
     title = f"{labels['Answer key']}: {labels['Quick-return mechanism of a shaper']}"
-    pages = answer_pages(tables, title, labels, plain=(1, 2, len(_GEAR) + len(who) - 1))
+    pages = answer_pages(tables, title, labels, plain=(1, 2))     # the failed checks are words, as wide as they need
     atomic_write(paths[2], pages_pdf(pages, language, title))
     return paths
 
@@ -141,7 +151,7 @@ def _pdf_row(number: int, entry: Mapping[str, Any], group: str, speed: int,
                   for (name, _, _), v in zip(PER_SPEED, values[at + 1:at + 1 + len(PER_SPEED)])})
     first = speed == 0
     texts.update({name: cell_text(name, v) if first else "" for name, v in figures.items()})
-    texts["failed"] = (values[-1] or labels["none"]) if first else ""
+    texts["failed"] = failed_text(failed_checks(entry), labels) if first else ""
     if not first:
         return "", "", "", texts
     return str(number), entry["student"], entry["student_number"], texts

@@ -16,6 +16,7 @@ from PySide6.QtCore import QCoreApplication
 
 from core.drawing.cam_sheet import ratio_text
 from core.base.errors import DesignError
+from core.base.figure_text import figure_text
 from core.gear import Check, GearPair, GearPairInputs, design_pair, pair_checks
 from core.gear.involute import least_teeth
 from core.gear.shift import centre_step, mesh_of_sum
@@ -197,7 +198,8 @@ def _checks(pair: GearPair) -> list:
     rows, shaded, advice = [], [], []
     for check in pair_checks(pair):
         what, unit = _check_texts(check, pair.inputs)
-        rows.append([what, f"{check.value:.4f}{unit}", f"{check.limit:.4f}{unit}",
+        kind = "gear_length" if unit else "gear_factor"     # as the pair's rows write a length, x or ε
+        rows.append([what, f"{figure_text(kind, check.value)}{unit}", f"{figure_text(kind, check.limit)}{unit}",
                      translate("Report", "ok") if check.ok else translate("Report", "fails")])
         shaded.append(not check.ok)
         if not check.ok:

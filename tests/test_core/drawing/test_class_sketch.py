@@ -57,3 +57,42 @@ def test_the_data_set_shows_given_values_as_typed_and_derived_ones_in_figure_tex
     assert rows["K"] == "1.4599" and rows["l_O_2_A"] == "100.25" and rows["H"] == "312.5"
     assert rows["n_2"] == "60 / 72.5"
     assert rows["h"] == figure_text("length", spec.design().guide_above_crank)
+
+
+@pytest.mark.parametrize("dims, rod_ratio", [((110.0, 380.0, 540.0), 0.25), ((90.0, 350.0, 580.0), 0.3),
+                                             ((110.0, 430.0, 810.0), 0.36), ((100.0, 386.37, 579.56), None),
+                                             ((100.0, 386.37, 579.56), 0.3)],
+                         ids=["方案 I", "方案 II", "方案 III", "default block", "default rod"])
+def test_no_name_or_number_of_the_sketch_is_crossed_or_overlaps(dims, rod_ratio):
+    """The joints' names stood at a fixed 6 mm off their pins and the link numbers were
+    placed clear of the links alone: on 方案 II and III the ground hatching ran through O2 and
+    O4, on 方案 I and III the crank's circle through '2', on the default design the block's
+    number's leader through 'A', and in English the rod's '5' sat on the caption over the
+    sketch. Every text must be clear of every line, circle and other text (the sheets'
+    check, tests/sheet_checks.py), and every name and number still there."""
+    from core.drawing.checks import overlapping_texts
+    from sheet_checks import crossed_texts
+    crank, frame, lever = dims
+    spec = {"mode": "dimensions", "crank": crank, "frame": frame, "lever": lever, "guide_rule": "sagitta"}
+    if rod_ratio:
+        spec.update(rod_ratio=rod_ratio, rod_input="ratio", variant="rod")
+    doc = Spec.from_dict({**Spec.from_dict(spec).to_dict(), **spec})
+    sheet = task_sheet({"spec": doc.to_dict(), "rpm": [60.0]},
+                       {"student": "x", "number": "1", "group": "g", "date": "2026-01-01"}, ["a"], {})
+    assert [(t.text, type(it).__name__) for t, it in crossed_texts(sheet)] == []
+    assert [(a.text, b.text) for a, b in overlapping_texts(sheet)] == []
+    texts = {item.text for item in sheet.items if isinstance(item, Text)}
+    assert {"O2", "O4", "A", "B", "2", "3", "4", "6"} | ({"C", "5"} if rod_ratio else set()) <= texts
+
+
+def test_the_students_line_shows_the_whole_name_and_number():
+    """A long name pushed the student's number off the task sheet's line at 3.5 mm
+    ('Number: 202100…'): the line goes one standard height smaller (2.5 mm) before it is cut."""
+    doc, _ = _doc(0.3)
+    who = {"student": "Alexandra Konstantinopoulou-Smith", "number": "202100123456", "group": "ME2101",
+           "date": "2026-01-01"}
+    sheet = task_sheet(doc, who, [], {})
+    line = next(t for t in sheet.items if isinstance(t, Text) and t.text.startswith("Student: "))
+    assert "…" not in line.text and all(v in line.text for v in (who["student"], who["number"], who["group"]))
+    left, _, right, _ = sheet.paper.border
+    assert left <= line.box()[0] and line.box()[2] <= right

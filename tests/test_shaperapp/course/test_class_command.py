@@ -200,3 +200,18 @@ def test_two_rows_with_one_number_write_nothing(tmp_path):
     assert done.returncode == 2 and not (tmp_path / "out").exists()
     assert done.stderr == "shaper: error: tasks.csv line 3, column student-number: 1 is also on line 2; " \
                           "each student needs a number of their own\n"
+
+
+def test_a_table_of_bad_rows_only_names_each_and_exits_2(tmp_path):
+    """Every row bad (here a base radius the arm cannot reach): each named, the count, exit 2,
+    no task sheet nor answer key for nobody; it was 'internal error (IndexError …)', exit 1."""
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text("student,student-number,crank,K,stroke,arm,swing,pressure,rise,dwell,return,base,distance\n"
+                     "a,1,100,1.4,300,125,15,40,75,10,75,20,100\n", encoding="utf-8")
+    done = shaper("class", "--tasks", tasks, "-o", tmp_path / "out")
+    assert done.returncode == 2, done.stderr
+    assert done.stderr.splitlines() == [
+        "shaper: error: tasks.csv line 2, column base: must be between |a − l| = 25 mm and a + l = 225 mm "
+        "for the arm to reach the cam (got 20)",
+        "shaper: error: 1 of 1 students not written (1 bad rows, 0 failed)"]
+    assert done.stdout == "" and sorted(p.name for p in (tmp_path / "out").iterdir()) == []

@@ -80,3 +80,56 @@ def test_the_workers_fit_in_600_mb_whatever_jobs():
     assert workers("8", 1) == 1
     with pytest.raises(UsageError, match="--jobs: must be a whole number from 1 to 256"):
         workers("0", 30)
+
+
+@pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_the_answer_keys_failed_checks_are_words_of_the_language_in_full(tmp_path, qapp, language):
+    """A student whose pinion of 13 teeth is cut unshifted (x1 = 0 < (17 − 13)/17: undercut)
+    and whose cam is given smaller than its allowance needs: the answer key named the checks by
+    core's identifiers ('cam_pressure_angle undercut1…'), English in the Chinese key, and cut
+    the third off. Each failed check must read in the key's language, and all of them."""
+    from shaperapp.course.class_files import write_answer_key
+    from shaperapp.widgets import i18n
+    path = tmp_path / "s.shaper.json"
+    status, _, err = shaper_in_process("design", *BASE, "--x1", "0", "--x2", "0", "--base", "30",
+                                       "--distance", "100", "-o", path)
+    assert status == 0, err
+    entry = answer_entry("张三", "2021001", "2021001-张三", str(path))
+    assert entry["cam"]["max_pressure_angle_rise_deg"] > 40.0            # over its allowance
+    failing = [c["name"] for c in entry["gear"]["checks"] if not c["ok"]]
+    assert "undercut1" in failing and len(failing) == 2
+    i18n.set_language(language)
+    try:
+        write_answer_key(str(tmp_path), [entry], ["机械2101"], language)
+    finally:
+        i18n.set_language("en")
+    key = " ".join(pdf_text(tmp_path / "answer-key.pdf").split())
+    assert "…" not in key
+    words = {"en": {"cam_pressure_angle": "cam pressure angle", "undercut1": "undercut 1",
+                    "interference1": "interference 1"},
+             "zh_CN": {"cam_pressure_angle": "凸轮压力角", "undercut1": "齿轮1根切", "interference1": "齿轮1干涉"}}
+    for name in ["cam_pressure_angle", *failing]:
+        assert words[language][name] in key, (name, key[-200:])
+    if language == "zh_CN":
+        english = {w for w in re.findall(r"[A-Za-z]{3,}", key) if w not in ALLOWED}
+        assert not english, english
+
+
+@pytest.mark.skipif(not has_pdftotext(), reason="poppler-utils not installed")
+def test_the_answer_key_shows_each_students_number_and_name_whole(made, tmp_path):
+    """Student numbers of 10 to 12 digits (a Chinese university's) were cut to '20210012…'
+    in a 20 mm column, so two students read alike; a long name the same. Each number and
+    each name up to 24 characters must be printed whole, in every table of the key."""
+    from shaperapp.course.class_files import write_answer_key
+    _, entry = made
+    students = [("欧阳诸葛长风", "2021001234"), ("Maximilian Schwarzer", "202100123456"),
+                ("张三", "7")]
+    entries = [{**entry, "student": name, "student_number": number} for name, number in students]
+    write_answer_key(str(tmp_path), entries, ["机械2101"] * 3, "en")
+    key = pdf_text(tmp_path / "answer-key.pdf")
+    assert "…" not in key
+    words = key.split()
+    for name, number in students:
+        assert words.count(number) == 3, (number, words.count(number))      # one row in each table
+        assert " ".join(key.split()).count(name) == 3, name

@@ -202,3 +202,22 @@ def test_no_label_of_the_figure_is_crossed(qapp, inputs):
     assert overlapping_texts(sheet) == [] and crossed_texts(sheet) == []
     frame = (0.0, 0.0, sheet.paper.width, sheet.paper.height)
     assert [item for item in sheet.items if not inside(item_box(item), frame)] == []
+
+
+def test_the_checks_write_each_figure_as_the_pair_rows_do(printed):
+    """The checks' table wrote every value and limit to 4 decimals, so ε read 1.5275 there and
+    1.527479 two rows above it (and in ``shaper gear`` and the answer key), and an undercut
+    check x1 ≥ x1min could read '0.2396 ≥ 0.2396 fails'. Shift factors and ε now have the 6
+    decimals of their rows, lengths (mm) the 4 of theirs."""
+    language, section = printed
+    checks = {c.name: c for c in pair_checks(design_pair(RULE))}
+    label = {"en": {"undercut1": "No undercut of gear 1", "undercut2": "No undercut of gear 2",
+                    "contact": "Contact ratio ε ≥", "tip1": "Tip thickness of gear 1"},
+             "zh_CN": {"undercut1": "齿轮 1 不根切", "undercut2": "齿轮 2 不根切", "contact": "重合度 ε ≥",
+                       "tip1": "齿轮 1 的齿顶厚"}}[language]
+    lines = section.splitlines()
+    for name, decimals in (("undercut1", 6), ("undercut2", 6), ("contact", 6), ("tip1", 4)):
+        row = next(line for line in lines if line.strip().startswith(label[name]))
+        check = checks[name]
+        expected = [f"{check.value:.{decimals}f}".replace("-", "−"), f"{check.limit:.{decimals}f}".replace("-", "−")]
+        assert all(v in numbers(row) or v.replace("−", "-") in row for v in expected), (name, expected, row)
