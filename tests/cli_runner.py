@@ -14,7 +14,9 @@ def shaper(*args, input_text=None, cwd=None):
 def shaper_in_process(*args):
     """``core.cli.main(args)`` in this process with stdout and stderr captured:
     (exit status, stdout, stderr). Much faster than a subprocess, for fuzzing.
-    argparse's own exits (--help, --version) count as their status."""
+    argparse's own exits (--help, --version) count as their status. A ``--lang zh`` run
+    sets this process's language: it is set back to English, the tests' own, so that a
+    later test in the same process (any order, any xdist worker) does not read Chinese."""
     import contextlib
     import io
 
@@ -26,6 +28,9 @@ def shaper_in_process(*args):
             status = main([str(a) for a in args])
         except SystemExit as exc:
             status = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+        finally:
+            if "shaperapp.widgets.i18n" in sys.modules:
+                sys.modules["shaperapp.widgets.i18n"].set_language("en")
     return status, out.getvalue(), err.getvalue()
 
 
@@ -46,11 +51,6 @@ def shaper_run_in_process(*args) -> subprocess.CompletedProcess:
     """:func:`shaper_in_process` answering as :func:`shaper` does (``returncode``, ``stdout``,
     ``stderr``), for tests of what a command writes rather than of its process: a report or
     a course in this process costs no second start of Python, Qt and scipy (about 2.5 s of
-    CPU). A ``--lang zh`` run sets this process's language: it is set back to English, the
-    tests' own."""
-    try:
-        status, out, err = shaper_in_process(*args)
-    finally:
-        if "shaperapp.widgets.i18n" in sys.modules:
-            sys.modules["shaperapp.widgets.i18n"].set_language("en")
+    CPU). The language is set back as :func:`shaper_in_process` sets it back."""
+    status, out, err = shaper_in_process(*args)
     return subprocess.CompletedProcess([str(a) for a in args], status, out, err)
