@@ -30,9 +30,9 @@ from core.course_design.positions import positions, special_angles
 from . import mechanism as mech
 from . import mechanism_dims, path_numbers
 from .charts import (TICK, Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, polygon_notes,
-                     scale_notes)
+                     scale_notes, spaced_labels)
 from .dxf import OUTLINE, THIN
-from .labels import Room, boxes_meet
+from .labels import Room
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, frame_items,
                     item_box, marked, marked_text, number_text, scale_text, smaller_height,
                     standard_scale)
@@ -251,8 +251,8 @@ def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
         crossed = _crossed_ticks(drawn, phi, np.asarray(y), ticks)
         if crossed:             # a degree the curve runs through is left out, its tick kept
             drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key],
-                          [(a, "" if i in crossed else t) for i, (a, t) in enumerate(ticks)], notes=notes,
-                          below=below)
+                          [(a, "" if i in crossed else t) for i, ((a, _), t) in enumerate(zip(ticks, drawn.x_labels))],
+                          notes=notes, below=below)
         items += drawn.items
         if k == 0:
             items += _position_row(drawn, phi[0], angles, numbers, lab["position"], pbox)
@@ -288,19 +288,18 @@ def _crossed_ticks(drawn, phi: np.ndarray, y: np.ndarray, ticks) -> set[int]:
 
 def _position_row(drawn, phi0: float, angles: np.ndarray, numbers: np.ndarray, title: str,
                   panel: Box) -> list[Item]:
-    """The positions' numbers in a row under the degrees of the chart ``drawn`` (a number
-    that would meet its neighbour is left out, as the degrees are), titled at its left."""
+    """The positions' numbers in a row under the degrees of the chart ``drawn`` (as many as
+    stand a word space apart, the degrees' way: :func:`charts.spaced_labels`), titled at its
+    left."""
     height = smaller_height(3.5)
     left, zero = drawn.origin
     row = zero - TICK - 1.0 - 1.35 * height - 0.5          # under the degrees' row
+    xs = [left + (float(a) - phi0) / drawn.x_scale for a in angles]
     items: list[Item] = []
-    taken: list[Box] = []
-    for a, n in zip(angles, numbers):
-        label = Text(str(int(n)), (left + (float(a) - phi0) / drawn.x_scale, row), height, "ct")
-        box = label.box()
-        if box[1] >= panel[1] and not any(boxes_meet(box, b) for b in taken):
-            taken.append(box)
-            items.append(label)
+    for px, label in zip(xs, spaced_labels([(px, str(int(n))) for px, n in zip(xs, numbers)], height)):
+        text = Text(label, (px, row), height, "ct")
+        if label and text.box()[1] >= panel[1]:
+            items.append(text)
     name = Text(title, (left - TICK - 1.0, row), height, "rt")
     if items and name.box()[0] >= panel[0]:
         items.append(name)
