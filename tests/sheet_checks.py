@@ -209,6 +209,11 @@ def assert_laid_out(sheet, areas) -> None:
     assert crowded == [], crowded
     assert [t.text for t in sheet.items if isinstance(t, Text) and UNICODE_SUBSCRIPTS.search(t.text)] == []
     named = list(areas.items())
+    # a caption cut short loses its scale ("μ_a = 0.06 (m/…"); only a user's text in the title
+    # block may be cut
+    cut = [t.text for name, (_, items) in named if name != "title" for t in items
+           if isinstance(t, Text) and "…" in t.text]
+    assert cut == [], cut
     for name, (area, items) in named:
         strays = [it for it in items if not inside(item_box(it), area)]
         assert strays == [], (name, strays[:3])

@@ -34,7 +34,7 @@ from .charts import ARROW, Curve, arrow, chart, polygon_extent, polygon_fit_scal
 from .dxf import OUTLINE
 from .force_values import newtons, value_after, values_table
 from .labels import Room
-from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption
+from .motion import CAPTION, GAP, JOINT_GAP, TABLE_ROW, caption, caption_lines
 from .motion import nearest_mid_strokes
 from .sheet import (Box, Item, Paper, Sheet, fit, frame_items, number_text, scale_text,
                     standard_scale, symbol)
@@ -312,14 +312,14 @@ def _room(tail: np.ndarray, force: np.ndarray, box: Box) -> float:
 def _polygon(poly, cell: Box, title_text: str) -> tuple[list[Item], float]:
     cw, ch = cell[2] - cell[0], cell[3] - cell[1]
     mu = polygon_fit_scale(poly, cw - 24.0, ch - 3 * CAPTION - 14.0)
-    title = caption(title_text.format(angle=number_text(round(poly.crank_deg, 2)), mu_f=number_text(mu)),
-                    ((cell[0] + cell[2]) / 2.0, cell[3]), cw - 4.0, 3.5)
+    titles = caption_lines(title_text.format(angle=number_text(round(poly.crank_deg, 2)), mu_f=number_text(mu)),
+                           ((cell[0] + cell[2]) / 2.0, cell[3]), cw - 4.0, 3.5)
     ex = polygon_extent(poly, mu)
     cx, cy = (cell[0] + cell[2]) / 2.0, (cell[1] + cell[3] - 3 * CAPTION) / 2.0
     pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
     names = {str(i): str(i) for i in range(len(poly.points))}
-    items: list[Item] = [title]
-    room = Room(within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), taken=[title.box()])
+    items: list[Item] = list(titles)
+    room = Room(within=(cell[0] + 2.0, cell[1], cell[2] - 2.0, cell[3]), taken=[t.box() for t in titles])
     at = {key: (pole[0] + x / mu, pole[1] + y / mu) for key, (x, y) in poly.points.items()}
     room.name(((at[v.tail][0] + at[v.head][0]) / 2.0, (at[v.tail][1] + at[v.head][1]) / 2.0)
               for v in poly.vectors)        # the forces' names, which follow the vertices'

@@ -15,6 +15,7 @@ chooses the language; numbers are formatted here.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Mapping, Sequence
 
@@ -33,9 +34,9 @@ from .charts import (TICK, Curve, chart, polygon_extent, polygon_fit_scale, poly
                      scale_notes, spaced_labels)
 from .dxf import OUTLINE, THIN
 from .labels import Room
-from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, frame_items,
+from .sheet import (TEXT_HEIGHTS, Box, Circle, Item, Paper, Placement, Sheet, Text, fit, frame_items,
                     item_box, marked, marked_text, number_text, scale_text, smaller_height,
-                    standard_scale)
+                    standard_scale, text_width)
 from .cells import fitting_height, table
 from .sheet_dims import Dimension
 from .title_block import TITLE_ENGLISH, TITLE_WIDTH, TitleBlock, sheet_title_block, title_block_box
@@ -62,6 +63,7 @@ POINT_NAMES = {"p": "p", "a3": ("a", "3"), "a4": ("a", "4"), "b": "b", "c": "c",
 GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
+LINE_PITCH = 1.5              # a caption's lines apart, in text heights (GB/T 14691: at least 1.4)
 TABLE_ROW = 7.0
 JOINT_GAP = mech.PIN_RADIUS + 1.0   # a joint's label (or a position's number) off its pin, mm
 LABEL_ROOM = 3.0              # around the mechanism's linework, for the joints' names
@@ -135,6 +137,26 @@ def caption(text: str, top_centre: tuple[float, float], room: float, largest: fl
     h = fitting_height(marked(text)[0], room, largest)
     x, y = top_centre
     return marked_text(text, (x, y - 0.2 * h), h, "ct", room)     # the accents' room above h
+
+
+def caption_lines(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> list[Text]:
+    """:func:`caption`, or where even the smallest height would cut it short (a polygon's
+    caption in an A3 sheet's cell), its clauses (each ending in a comma) on as many lines as
+    they need at that height, one under another: a scale cut to "μ_a = 0.06 (m/…", or left
+    out with the angle, is no scale. A clause still too long for a line is cut."""
+    height = TEXT_HEIGHTS[0]
+    if text_width(marked(text)[0], height) <= room:
+        return [caption(text, top_centre, room, largest)]
+    parts = re.split(r"(?<=[,，])(\s*)", text)        # clause, space, clause …
+    lines = [parts[0]]
+    for space, clause in zip(parts[1::2], parts[2::2]):
+        if text_width(marked(lines[-1] + space + clause)[0], height) <= room:
+            lines[-1] += space + clause
+        else:
+            lines.append(clause)
+    x, y = top_centre
+    return [marked_text(line, (x, y - 0.2 * height - k * LINE_PITCH * height), height, "ct", room)
+            for k, line in enumerate(lines)]
 
 
 def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
@@ -325,16 +347,16 @@ def _polygons(design: Design, rpm: float, diagrams: Sequence[float], box: Box,
             room_w = cw - 24.0 - (side + 4.0 if notes else 0.0)
             # each its own scale: a slow position stays legible; labels need a margin
             mu = polygon_fit_scale(poly, room_w, ch - 2 * CAPTION - 14.0)
-            title = caption(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
-                            ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)
+            titles = caption_lines(lab[kind].format(angle=number_text(round(angle, 2)), mu=number_text(mu)),
+                                   ((cell[0] + cell[2]) / 2.0, cell[3] - 1.0), cw - 6.0, 3.5)
             ex = polygon_extent(poly, mu)
             cx = cell[0] + (cw - (side + 4.0 if notes else 0.0)) / 2.0
             cy = (cell[1] + cell[3] - 2 * CAPTION) / 2.0
             pole = (cx - (ex[0] + ex[2]) / 2.0, cy - (ex[1] + ex[3]) / 2.0)
-            items.append(title)
+            items += titles
             items += notes
             drawing = (cell[0] + 2.0, cell[1], cell[2] - 2.0 - (side + 2.0 if notes else 0.0), cell[3])
-            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [title.box()], within=drawing)
+            items += polygon_items(poly, pole, mu, 3.5, POINT_NAMES, [t.box() for t in titles], within=drawing)
     return items
 
 

@@ -147,3 +147,38 @@ def test_the_position_row_thins_as_the_degrees_do(count):
     step = row[1] - row[0]
     assert row == list(range(1, count + 1, step)) and step <= 2
 
+
+# ---- the polygons' captions on A3 --------------------------------------------------------
+
+def test_an_a3_polygons_caption_keeps_its_scale_on_a_second_line():
+    """On A3 "Acceleration polygon, φ = 135°, μ_a = 0.06 (m/s²)/mm" is wider than its cell
+    even at 2.5 mm: it was cut to "… μa = 0.06 (m/…" (and the forces sheet's to "φ = 1…",
+    angle and scale lost). Broken after a comma, each caption's lines hold its angle and
+    its whole scale, the lines a GB/T 14691 line pitch apart, no two texts crowded."""
+    from core.drawing.forces import forces_sheet
+    from core.forces.masses import MassProperties, masses_for_design
+    design = synthesize(100.0, 2.9, 600.0, rod_ratio=0.5)
+    motion = motion_drawn(design, 40.0, "A3", 24)
+    loads = MassProperties(lever_mass_kg=20, lever_inertia_kg_m2=1.1, ram_mass_kg=70, cut_force_N=7000,
+                           cut_height_mm=80, rod_mass_kg=8.0)
+    forces = forces_sheet(design, 40.0, masses_for_design(design, loads), paper("A3"))
+    cases = ((motion, "polygons", r"(Velocity|Acceleration) polygon, φ = [\d.]+°,\s*μ[va] = [\d.]+ \(m/s²?\)/mm"),
+             *((forces, f"{group} polygon {k}", r"Force polygon of the [a-z ()0-9]+, φ = [\d.]+°,\s*μF = [\d.]+ N/mm")
+               for group in ("ram", "lever") for k in (1, 2)))
+    import re
+    broken = 0
+    for drawn, area, pattern in cases:
+        texts = [t for t in drawn.areas[area][1] if isinstance(t, Text)]
+        assert not [t.text for t in drawn.sheet.items if isinstance(t, Text) and "…" in t.text]
+        heads = [i for i, t in enumerate(texts) if "polygon" in t.text]
+        assert heads, area
+        for i in heads:
+            if re.fullmatch(pattern, texts[i].text):        # on one line where it fits
+                continue
+            line_two = texts[i + 1]
+            assert texts[i].height == line_two.height == 2.5
+            assert texts[i].position[1] - line_two.position[1] == pytest.approx(1.5 * 2.5)
+            assert re.fullmatch(pattern, texts[i].text + " " + line_two.text), (texts[i].text, line_two.text)
+            broken += 1
+        assert crowded_texts(drawn.sheet) == []
+    assert broken >= 6          # the two acceleration polygons and the four force polygons
