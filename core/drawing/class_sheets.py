@@ -15,8 +15,8 @@ import numpy as np
 from core.base.figure_text import figure_text
 from .dxf import THIN
 from .mechanism import bounds, frame_items, joint_anchors, link_anchors, links_at
-from .sheet import (Item, Paper, Sheet, Text, clipped, fit, frame_items as paper_frame, line,
-                    marked_text, standard_scale)
+from .sheet import (Item, Paper, Placement, Sheet, Text, clipped, fit, frame_items as paper_frame, item_box,
+                    line, marked_text, standard_scale, word_gap)
 from .cells import table
 
 A4 = Paper("A4", 210.0, 297.0, 10.0)
@@ -24,6 +24,7 @@ A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)
 GRAVITY = 9.81
 SKETCH_DEG = 60.0           # the crank angle the sketch shows: the working stroke under way
 LEADER = 9.0                # a link's number this far from the link, on a thin leader, mm
+NUMBER_ROOM = 3.0           # a 3.5 mm number's box reaches 2.7 mm from its centre
 
 TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", "Student", "Number",
               "Class", "Date", "The mechanism (sketch to scale, crank at 60°)", "Data set",
@@ -116,12 +117,16 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
               f"{who.get('number', '')}    {_w(labels, 'Class')}: {who.get('group', '')}")
     items.append(Text(clipped(person, right - left - 8.0, 3.5), (left + 4.0, y), 3.5, "lm"))
     y -= 7.0
-    items.append(marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5))
+    caption = marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5)
+    items.append(caption)
     items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rb"))
     box = (left + 4.0, y - 82.0, right - 4.0, y - 4.0)
-    items += _sketch(design, box)
+    data = Text(_w(labels, "Data set"), (left + 4.0, box[1] - 6.0), 3.5, "lm")
+    # the sketch may reach a word space off the caption over it and the title under it
+    items += _sketch(design, box, (box[0], data.box()[3] + word_gap(3.5), box[2],
+                                   caption.box()[1] - word_gap(3.5)))
     y = box[1] - 6.0
-    items.append(Text(_w(labels, "Data set"), (left + 4.0, y), 3.5, "lm"))
+    items.append(data)
     rows = [[_w(labels, "Quantity"), _w(labels, "Symbol"), _w(labels, "Value"), _w(labels, "Unit")]]
     rows += data_rows(doc, design, labels)
     height = min(6.0, (y - 4.0 - bottom - 12.0 - 6.0 * len(deliver)) / len(rows))
@@ -134,23 +139,50 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     return Sheet(p, tuple(items))
 
 
-def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
-    """The linkage to a standard scale in ``box``: frame, links at SKETCH_DEG, joint names."""
+def _sketch(design, box: tuple[float, float, float, float], room: tuple[float, float, float, float]
+            ) -> list[Item]:
+    """The linkage to a standard scale in ``box``: frame, links at SKETCH_DEG, joint names and
+    the links' numbers, all of it inside ``room`` (``box`` and the paper up to the texts
+    round it: a number led up from the ram ran into the caption over the sketch), moved into
+    it; where it does not fit, the numbers kept inside it, then the next smaller scale."""
     b = bounds(design)
     scale = max(standard_scale(b[2] - b[0], box[2] - box[0] - 16.0),
                 standard_scale(b[3] - b[1], box[3] - box[1] - 16.0))
-    where = fit(b, box, scale)
+    while True:
+        for within in (None, room):
+            where = fit(b, box, scale)
+            items = _sketch_items(design, where, within)
+            extent = np.array([item_box(it) for it in items])
+            (x0, y0), (x1, y1) = extent[:, :2].min(axis=0), extent[:, 2:].max(axis=0)
+            fits = x1 - x0 <= room[2] - room[0] and y1 - y0 <= room[3] - room[1]
+            if fits:
+                break
+        if fits or scale >= 1e6:
+            break
+        scale = standard_scale(scale * (1.0 + 1e-9), 1.0)         # the next of the series
+    dx = max(room[0] - x0, 0.0) - max(x1 - room[2], 0.0)
+    dy = max(room[1] - y0, 0.0) - max(y1 - room[3], 0.0)
+    if dx or dy:
+        where = Placement(scale, (where.origin[0] + dx, where.origin[1] + dy), where.anchor)
+        items = _sketch_items(design, where, within)
+    return items + [Text(f"1:{scale:g}", (box[2], box[1] + 2.0), 3.5, "rb")]
+
+
+def _sketch_items(design, where: Placement, box: tuple[float, float, float, float] | None) -> list[Item]:
+    """The sketch's frame, links, joint names and the links' numbers on their leaders; with
+    ``box``, the numbers' centres NUMBER_ROOM inside it where there is a spot."""
     items: list[Item] = frame_items(design, where) + links_at(design, SKETCH_DEG, where)
     names = []
     for text, spans, point, way in joint_anchors(design, SKETCH_DEG, where, 3.5):
         at = point + way * 6.0
         names.append(at)
         items.append(Text(text, (float(at[0]), float(at[1])), 3.5, "cm", subscripts=spans))
-    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names):
+    inner = None if box is None else (box[0] + NUMBER_ROOM, box[1] + NUMBER_ROOM, box[2] - NUMBER_ROOM,
+                                      box[3] - NUMBER_ROOM)
+    for number, point, offset in link_anchors(design, SKETCH_DEG, where, LEADER, names, inner):
         at, way = point + offset, offset / float(np.hypot(*offset))
         items.append(line([point + way * 0.8, at - way * 2.8], THIN))
         items.append(Text(number, (float(at[0]), float(at[1])), 3.5, "cm"))
-    items.append(Text(f"1:{scale:g}", (box[2], box[1] + 2.0), 3.5, "rb"))
     return items
 
 

@@ -187,13 +187,15 @@ LINK_NUMBERS = {"crank": "2", "block": "3", "lever": "4", "rod": "5", "ram": "6"
 
 
 def link_anchors(design: Design, crank_deg: float, where: Placement, reach: float,
-                 avoid: Sequence[np.ndarray] = ()) -> list[tuple[str, np.ndarray, np.ndarray]]:
+                 avoid: Sequence[np.ndarray] = (), within: Box | None = None
+                 ) -> list[tuple[str, np.ndarray, np.ndarray]]:
     """The links' numbers of the task book (crank 2, block 3, lever 4, rod 5, ram 6) at one
     crank angle as (number, the point on the link its leader starts at, the offset from it
     to the number): of eight directions at ``reach`` or 1.6 ``reach``, the spot farthest from
     the links, the ram and the points in ``avoid`` (the joints' names, the numbers placed
     before), the shorter leader when both are CLEAR; so that a student reads the sketch in
-    the book's numbering."""
+    the book's numbering. With ``within``, only spots inside it where there are any (the
+    rod's number led up from the ram ran into the caption over the task sheet's sketch)."""
     j = {k: where(v) for k, v in joints(design, float(crank_deg)).items()}
     x0, y0, x1, y1 = ram_body(j["C"])
     body = [np.array(p) for p in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
@@ -214,7 +216,9 @@ def link_anchors(design: Design, crank_deg: float, where: Placement, reach: floa
             room = min([_distance(at, s0, s1) for s0, s1 in segments]
                        + [float(np.hypot(*(at - q))) for q in avoid])
             return min(room, CLEAR) - 1e-3 * float(np.hypot(*offset))    # clear enough: the shorter
-        best = max(offsets, key=score)
+        inside = [o for o in offsets if within is None or (within[0] <= p[0] + o[0] <= within[2]
+                                                          and within[1] <= p[1] + o[1] <= within[3])]
+        best = max(inside or offsets, key=score)
         anchors.append((LINK_NUMBERS[link], p, best))
         avoid = [*avoid, p + best]
     return anchors
