@@ -8,7 +8,7 @@ at 6, 12, 24 and 36 positions; on A0–A3, in English and Chinese; and checks ea
 ``tests/sheet_checks.crowded_texts`` (no two texts nearer than a word space) and for
 captions cut with an ellipsis. It prints one line per sheet and a count per content.
 With ``PYTHONPATH`` on an export of another commit it sweeps that commit's sheets (the
-checker is this tree's). Only a developer's tool: some 3 minutes of CPU for all 344.
+checker is this tree's). Only a developer's tool: 65 s of CPU for all 344 (77 s wall, load 3).
 """
 from __future__ import annotations
 
