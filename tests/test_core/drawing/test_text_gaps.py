@@ -163,7 +163,8 @@ def test_an_a3_polygons_caption_keeps_its_scale_on_a_second_line():
                            cut_height_mm=80, rod_mass_kg=8.0)
     forces = forces_sheet(design, 40.0, masses_for_design(design, loads), paper("A3"))
     cases = ((motion, "polygons", r"(Velocity|Acceleration) polygon, φ = [\d.]+°,\s*μ[va] = [\d.]+ \(m/s²?\)/mm"),
-             *((forces, f"{group} polygon {k}", r"Force polygon of the [a-z ()0-9]+, φ = [\d.]+°,\s*μF = [\d.]+ N/mm")
+             *((forces, f"{group} polygon {k}",
+                r"Force polygon of the [a-z ()0-9]+, φ = [\d.]+°,\s*μF = [\d.]+ N/mm")
                for group in ("ram", "lever") for k in (1, 2)))
     import re
     broken = 0
