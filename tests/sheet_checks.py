@@ -1,10 +1,11 @@
 """Checks every drawing sheet must pass: each drawing keeps to its own area, the areas do
-not overlap, nothing lies outside the border, no two texts overlap, no line, circle or
-arrowhead runs through a text's glyphs, and no text holds a Unicode subscript digit, which
-the CAD fonts of a DXF lack (indices are subscript runs).
+not overlap, nothing lies outside the border, no two texts overlap or stand closer than a
+word space (GB/T 14691) side by side, no line, circle or arrowhead runs through a text's
+glyphs, and no text holds a Unicode subscript digit, which the CAD fonts of a DXF lack
+(indices are subscript runs).
 
-The crossing check is written here on its own, from the items' plain geometry, not with
-core's placement code: the test must not share the code it checks."""
+The crossing and spacing checks are written here on their own, from the items' plain
+geometry, not with core's placement code: the test must not share the code it checks."""
 import math
 import re
 
@@ -129,6 +130,71 @@ def _first_crossing(body: np.ndarray, near: np.ndarray, strokes: list, segs: lis
     return strokes[near[first[0]]] if len(first) else None
 
 
+# GB/T 14691 (ISO 3098-1, type B lettering): words stand e = 6/10 h apart. Two texts side
+# by side whose glyph bodies stand closer than that read as one word ("105120135"). Lines one
+# above another may stand closer: the standard's smallest baseline spacing, 14/10 h, leaves
+# 0.64 h between two lines' bodies, and 0.35 h under an index (lowered 0.25 h).
+WORD_SPACE = 0.6
+LINE_SPACE = 0.35
+
+
+def crowded_texts(sheet) -> list[tuple[Text, Text, float]]:
+    """(text, text, clear mm) for every two texts whose glyph bodies (:func:`glyph_bodies`)
+    stand closer than the smaller text's height times WORD_SPACE side by side (their
+    bodies share part of a line) or LINE_SPACE otherwise (one over the other), touching or
+    overlapping ones at 0. Measured between the bodies as convex quadrilaterals (a turned
+    dimension text too, its line across its own baseline), each pair once, at its nearest."""
+    texts = [it for it in sheet.items if isinstance(it, Text)]
+    bodies, owner = [], []
+    for i, text in enumerate(texts):
+        for body in glyph_bodies(text):
+            bodies.append(body)
+            owner.append(i)
+    if len(bodies) < 2:
+        return []
+    quads, owner = np.array(bodies), np.array(owner)
+    heights = np.array([t.height for t in texts])[owner]
+    lo, hi = quads.min(axis=1), quads.max(axis=1)
+    reach = WORD_SPACE * heights.max()
+    i, j = np.nonzero(np.triu((lo[:, None, 0] < hi[None, :, 0] + reach) & (lo[None, :, 0] < hi[:, None, 0] + reach)
+                              & (lo[:, None, 1] < hi[None, :, 1] + reach)
+                              & (lo[None, :, 1] < hi[:, None, 1] + reach)
+                              & (owner[:, None] != owner[None, :]), k=1))
+    clear = _quad_distance(quads[i], quads[j])
+    up = quads[i, 3] - quads[i, 0]                  # across the first one's baseline
+    up /= np.hypot(up[:, 0], up[:, 1])[:, None]
+    pi, pj = (quads[i] * up[:, None]).sum(-1), (quads[j] * up[:, None]).sum(-1)
+    one_line = (pi.min(1) < pj.max(1)) & (pj.min(1) < pi.max(1))
+    least = np.where(one_line, WORD_SPACE, LINE_SPACE) * np.minimum(heights[i], heights[j])
+    close = clear < least - 1e-9
+    found: dict[tuple[int, int], float] = {}
+    for a, b, d in zip(owner[i][close], owner[j][close], clear[close]):
+        key = (min(a, b), max(a, b))
+        found[key] = min(found.get(key, math.inf), float(d))
+    return [(texts[a], texts[b], d) for (a, b), d in sorted(found.items())]
+
+
+def _quad_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The distance between convex quadrilaterals ``a`` and ``b`` ((k, 4, 2) each), 0 where
+    they meet: the nearest of each one's corners to the other's edges, unless no edge
+    normal separates them (the separating axis theorem)."""
+    def corner_to_edges(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+        s, e = q, np.roll(q, -1, axis=1)                    # (k, 4, 2) edges of q
+        d = (e - s)[:, None, :, :]                          # (k, 1, 4, 2)
+        w = p[:, :, None, :] - s[:, None, :, :]             # (k, 4, 4, 2)
+        t = np.clip((w * d).sum(-1) / np.maximum((d * d).sum(-1), 1e-300), 0.0, 1.0)
+        return np.hypot(*np.moveaxis(w - t[..., None] * d, -1, 0)).min(axis=(1, 2))
+
+    separated = np.zeros(len(a), dtype=bool)
+    for quad in (a, b):
+        for k in range(2):
+            edge = quad[:, k + 1] - quad[:, k]
+            n = np.column_stack([-edge[:, 1], edge[:, 0]])[:, None, :]
+            pa, pb = (a * n).sum(-1), (b * n).sum(-1)
+            separated |= (pa.max(1) < pb.min(1)) | (pb.max(1) < pa.min(1))
+    return np.where(separated, np.minimum(corner_to_edges(a, b), corner_to_edges(b, a)), 0.0)
+
+
 def inside(box, area, tol=1e-6) -> bool:
     return (box[0] >= area[0] - tol and box[1] >= area[1] - tol
             and box[2] <= area[2] + tol and box[3] <= area[3] + tol)
@@ -139,8 +205,15 @@ def assert_laid_out(sheet, areas) -> None:
     assert outside_border(sheet) == [] and overlapping_texts(sheet) == []
     crossed = [(t.text, t.position, type(it).__name__, it.layer) for t, it in crossed_texts(sheet)]
     assert crossed == [], crossed
+    crowded = [(a.text, b.text, round(clear, 2)) for a, b, clear in crowded_texts(sheet)]
+    assert crowded == [], crowded
     assert [t.text for t in sheet.items if isinstance(t, Text) and UNICODE_SUBSCRIPTS.search(t.text)] == []
     named = list(areas.items())
+    # a caption cut short loses its scale ("μ_a = 0.06 (m/…"); only a user's text in the title
+    # block may be cut
+    cut = [t.text for name, (_, items) in named if name != "title" for t in items
+           if isinstance(t, Text) and "…" in t.text]
+    assert cut == [], cut
     for name, (area, items) in named:
         strays = [it for it in items if not inside(item_box(it), area)]
         assert strays == [], (name, strays[:3])

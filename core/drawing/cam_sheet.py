@@ -281,13 +281,9 @@ def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],
     p = pitch(cam.follower, cam.program, delta)
     w = rpm * 2.0 * math.pi / 60.0
     edges = _sector_edges(cam)
-    # a tick per phase edge, its number left out when nearer than 8 mm to the last one written
-    mm_per_deg = (x1 - x0 - 6.0 * 3.5 - 14.0) / 360.0
-    ticks, last = [], -math.inf
-    for e in dict.fromkeys(edges + [360.0]):
-        near = (e - last) * mm_per_deg < 8.0
-        ticks.append((e, "" if near else f"{e:g}"))
-        last = last if near else e
+    # a tick per phase edge; the chart leaves out a number that would stand too near the last
+    # one written (charts.spaced_labels)
+    ticks = [(e, f"{e:g}") for e in dict.fromkeys(edges + [360.0])]
     series = (("psi", np.degrees(p.motion.psi)), ("omega", p.motion.psi1 * w),
               ("alpha", p.motion.psi2 * w * w), ("angle", np.degrees(pressure_angle(cam.follower, p))))
     prog, inputs = cam.program, cam.inputs

@@ -17,7 +17,8 @@ from core.forces.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
 from .labels import Room
-from .sheet import Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width
+from .sheet import (Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width,
+                    word_gap)
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
 TICK = 1.5
@@ -118,6 +119,7 @@ class Chart:
     origin: Pair              # paper point of (x[0], 0)
     x_end: float              # paper x of the x axis' arrow tip
     y_end: float              # paper y of the y axis' arrow tip
+    x_labels: tuple[str, ...] = ()   # each x tick's label as :func:`spaced_labels` kept it ("" left out)
 
 
 def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_title: str,
@@ -132,8 +134,9 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     dashed segments over part of the span (e.g. an allowance over one phase), inside the
     y range like the curves; ``notes`` (x scale, y scale) → lines written under the y arrow's
     tip at the right (the scales μ), clear of the curves. Every text is placed after the lines,
-    clear of them (:mod:`labels`): the notes, the titles, then the tick numbers (a number a
-    curve runs through goes beside its tick or above the axis, else is left out). Scales from
+    clear of them and a word space off each other (:mod:`labels`): the notes, the titles, then
+    the tick numbers, as many as stand apart (:func:`spaced_labels`; a number a curve runs
+    through goes beside its tick or above the axis, else is left out). Scales from
     the round series; the x axis keeps 14 mm of the box for its title, the y axis
     ``height``·6 mm for its tick labels, or more where the widest label needs it (a torque
     of 10⁵ N·m reads "-1.000e+05"); ``below`` mm more under the lowest curve, for a row of
@@ -161,6 +164,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     for c in curves:
         items.append(line(to_paper(x, c.y), c.layer))
     xs = [(left + (value - x[0]) / x_scale, label) for value, label in x_ticks]
+    kept = spaced_labels(xs, small)
     items += [line([(px, zero - TICK), (px, zero + TICK)], THIN) for px, _ in xs]
     items += [line([(left - TICK, zero + v / y_scale), (left, zero + v / y_scale)], THIN) for v in y_ticks]
     if mean is not None:
@@ -195,18 +199,55 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
             placed = spots[0]
             room.taken.append(placed.box())
         items.append(placed)
-    for px, label in xs:                     # under the tick, beside it, or over the axis
+    ticks_x = [px for px, _ in xs]
+    for k, label in enumerate(kept):         # under the tick, beside it, or over the axis
+        px = ticks_x[k]
         below, above = zero - TICK - 1.0, zero + TICK + 1.0
-        spots = ((px, below, "ct"), (px + 0.5, below, "lt"), (px - 0.5, below, "rt"),
-                 (px, above, "cb"), (px + 0.5, above, "lb"), (px - 0.5, above, "rb"))
-        placed = room.first_free(Text(label, (sx, sy), small, al) for sx, sy, al in spots) if label else None
+        spots = [Text(label, (sx, sy), small, al) for sx, sy, al in
+                 ((px, below, "ct"), (px + 0.5, below, "lt"), (px - 0.5, below, "rt"),
+                  (px, above, "cb"), (px + 0.5, above, "lb"), (px - 0.5, above, "rb"))]
+        # beside its tick, a number stays nearer its own tick than the next: else it is read
+        # as the neighbour's
+        lo = (ticks_x[k - 1] + px) / 2.0 if k else -math.inf
+        hi = (px + ticks_x[k + 1]) / 2.0 if k + 1 < len(ticks_x) else math.inf
+        spots = [t for t in spots if t.align[0] == "c" or lo <= t.box()[0] and t.box()[2] <= hi]
+        placed = room.first_free(spots) if label else None
         items += [placed] if placed else []
     for value in y_ticks:
         if abs(value) > 0:
             placed = room.first_free([Text(number_text(value), (left - TICK - 1.0, zero + value / y_scale),
                                            small, "rm")])
             items += [placed] if placed else []
-    return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi)
+    return Chart(items, x_scale, y_scale, (left, zero), x_end, y_hi, tuple(kept))
+
+
+def spaced_labels(ticks: Sequence[tuple[float, str]], height: float) -> list[str]:
+    """The labels of ``ticks`` (paper x, label) a row under them keeps, "" for one left out:
+    each centred under its tick, ``height`` high, a word space (``sheet.word_gap``) off its
+    neighbours, else "105120135" reads as one number. Where they do not all stand apart,
+    evenly spaced ticks keep every k-th label from the first, the smallest k that leaves the
+    space (every second, every third …: a drafter's way with a crowded scale); uneven ones
+    (a cam's phase edges) each label that stands apart from the last one kept. The ticks
+    themselves all stay: the caller draws them."""
+    labels = [label for _, label in ticks]
+    boxes = [Text(label, (px, 0.0), height, "ct").box() if label else None for px, label in ticks]
+    gap = word_gap(height)
+
+    def apart(first: int, second: int) -> bool:
+        return boxes[second][0] - boxes[first][2] >= gap - 1e-9
+
+    steps = np.diff([px for px, _ in ticks])
+    if len(steps) > 1 and np.allclose(steps, steps[0], rtol=1e-6):
+        for k in range(1, len(ticks) + 1):
+            shown = [i for i in range(0, len(ticks), k) if labels[i]]
+            if all(apart(a, b) for a, b in zip(shown, shown[1:])):
+                return [label if i % k == 0 else "" for i, label in enumerate(labels)]
+    kept, last = [], None
+    for i, label in enumerate(labels):
+        stands = bool(label) and (last is None or apart(last, i))
+        kept.append(label if stands else "")
+        last = i if stands else last
+    return kept
 
 
 def scale_notes(y_note: str, x_note: str | None = None, y_unit: float = 1.0

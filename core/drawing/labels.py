@@ -7,8 +7,8 @@ cascade the draughtsman's own (GB/T 4458.1 leaves the place to him, not the rule
 beside the point in the preferred direction and farther out along it, then on the other
 side, then round it; then one standard height smaller; then farther still with a thin
 leader line from the point to the label, at last anywhere in the drawing. A spot is free
-when the label's box, a little enlarged, meets no stroke and no box already taken, and
-lies within its drawing.
+when the label's box, a little enlarged, meets no stroke, keeps a word space (GB/T 14691:
+``sheet.WORD_GAP``) off the boxes already taken beside it, and lies within its drawing.
 
 The strokes are segments (n, 4): x0, y0, x1, y1 in paper mm, a circle as a polygon; a
 filled arrowhead's edges are strokes like any other (a box that holds a whole arrowhead
@@ -26,7 +26,7 @@ import numpy as np
 
 from .dxf import THIN
 from .segments import CLEARANCE, boxes_meet_strokes, crossings_each, meets_strokes, strokes, strokes_meet_boxes
-from .sheet import Box, Item, Pair, Polyline, Text, line, smaller_height
+from .sheet import Box, Item, Pair, Polyline, Text, line, smaller_height, word_gap
 
 LEADER_RINGS = 10          # rings beyond the last plain one tried with a leader line
 GRID_SPOTS = 2000          # then spots anywhere in the drawing, the nearest first …
@@ -38,12 +38,15 @@ def boxes_meet(a: Box, b: Box) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
-def is_free(box: Box, taken: Sequence[Box], segments: np.ndarray, within: Box | None) -> bool:
-    """A label's box is free: inside ``within``, clear of every taken box and stroke."""
+def is_free(box: Box, taken: Sequence[Box], segments: np.ndarray, within: Box | None,
+            apart: float = 0.0) -> bool:
+    """A label's box is free: inside ``within``, clear of every stroke, and of every taken
+    box by ``apart`` mm side by side."""
     if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
                                    and within[1] <= box[1] and box[3] <= within[3]):
         return False
-    return not any(boxes_meet(box, b) for b in taken) and not meets_strokes(box, segments)
+    wide = (box[0] - apart, box[1], box[2] + apart, box[3])
+    return not any(boxes_meet(wide, b) for b in taken) and not meets_strokes(box, segments)
 
 
 def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarray,
@@ -58,7 +61,7 @@ def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarra
     for batch in _batches(candidates, 1):
         boxes = spot_boxes(batch)
         free = np.arange(len(boxes)) if keep is None else np.flatnonzero(keep(boxes))
-        free = free[free_spots(boxes[free], boxes_taken, segments, within)]
+        free = free[free_spots(boxes[free], boxes_taken, segments, within, spot_gaps(batch)[free])]
         if len(free):
             taken.append(batch[free[0]].box())
             return batch[free[0]]
@@ -220,7 +223,7 @@ def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments:
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
     for batch in _batches(spots):
         boxes = spot_boxes(batch)
-        free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within))
+        free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within, spot_gaps(batch)))
         ends = leader_ends(at, boxes[free], leader_gap)
         clear = ~strokes_meet_boxes(ends, boxes_taken)
         free, ends = free[clear], ends[clear]
@@ -246,14 +249,22 @@ def _batches(spots: Iterable[Text], size: int = 8) -> Iterable[list[Text]]:
         size = min(2 * size, 256)
 
 
-def free_spots(boxes: Sequence[Box], taken: np.ndarray, segments: np.ndarray, within: Box | None) -> np.ndarray:
-    """:func:`is_free` for each of ``boxes`` at once, ``taken`` as an (m, 4) array."""
+def spot_gaps(spots: Sequence[Text]) -> np.ndarray:
+    """The word space (``sheet.word_gap``) each of ``spots`` keeps off a text beside it, (k,)."""
+    return np.array([word_gap(spot.height) for spot in spots], dtype=float)
+
+
+def free_spots(boxes: Sequence[Box], taken: np.ndarray, segments: np.ndarray, within: Box | None,
+               apart: float | np.ndarray = 0.0) -> np.ndarray:
+    """:func:`is_free` for each of ``boxes`` at once, ``taken`` as an (m, 4) array; ``apart``
+    one for all or one per box."""
     b = np.asarray(boxes, dtype=float).reshape(-1, 4)
     free = np.ones(len(b), dtype=bool)
     if within is not None:
         free &= (within[0] <= b[:, 0]) & (b[:, 2] <= within[2]) & (within[1] <= b[:, 1]) & (b[:, 3] <= within[3])
     if len(taken):
-        free &= ~((b[:, None, 0] < taken[:, 2]) & (taken[:, 0] < b[:, None, 2])
+        gap = np.broadcast_to(np.asarray(apart, dtype=float), (len(b),))[:, None]
+        free &= ~((b[:, None, 0] - gap < taken[:, 2]) & (taken[:, 0] < b[:, None, 2] + gap)
                   & (b[:, None, 1] < taken[:, 3]) & (taken[:, 1] < b[:, None, 3])).any(axis=1)
     free[free] = ~boxes_meet_strokes(b[free], segments)
     return free
@@ -320,7 +331,8 @@ class Room:
         whole = np.column_stack([shift[:, 0] + lo[0], shift[:, 1] + lo[1],
                                  shift[:, 0] + hi[0], shift[:, 1] + hi[1]])
         taken = np.asarray(self.taken, dtype=float).reshape(-1, 4)
-        free = np.flatnonzero(free_spots(whole, taken, self.segments, self.within))
+        free = np.flatnonzero(free_spots(whole, taken, self.segments, self.within,
+                                         min(word_gap(t.height) for t in lines)))
         if not len(free):
             return []
         dx, dy = shift[free[0]]

@@ -23,7 +23,7 @@ from . import sheet_dims as sd
 from .labels import boxes_meet
 from .dimensions import reading_order
 from .segments import crossings_each, strokes
-from .sheet import Box, Item, Placement, Text, item_box, line, smaller_height
+from .sheet import Box, Item, Placement, Text, item_box, line, line_box, smaller_height, word_gap
 
 FIRST = 7.0               # the first dimension line from the linework, paper mm
 STEP = 7.0                # between parallel dimension lines (DIMDLI)
@@ -298,14 +298,15 @@ def _theta(o4: np.ndarray, b0: np.ndarray, b1: np.ndarray) -> sd.Dimension:
 
 
 def obstacles(dims: Sequence[sd.Dimension], texts_only: bool = False) -> list[Box]:
-    """What a label placed by boxes must keep clear of: each dimension's text, and those of its
+    """What a label placed by boxes must keep clear of: each dimension's text with a word space
+    at either end of its line (``sheet.line_box``), and those of its
     lines whose box is not much more than the line (horizontal, vertical or short ones).
     ``texts_only``: what a leader must not run through, the texts alone, a tilted one as
     :func:`text_tiles` (a label's box keeps clear of the whole box, as the sheet's check
     has it; a leader across a dimension's line is a crossing like any other)."""
     if texts_only:
         return [box for dim in dims for box in text_tiles(dim.text)]
-    boxes = [dim.text.box() for dim in dims]
+    boxes = [line_box(dim.text, word_gap(dim.text.height)) for dim in dims]      # a word space in its line
     for dim in dims:
         for part in (*dim.parts, *dim.kept):
             if isinstance(part, Text):

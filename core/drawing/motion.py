@@ -15,6 +15,7 @@ chooses the language; numbers are formatted here.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Mapping, Sequence
 
@@ -30,10 +31,10 @@ from core.course_design.positions import positions, special_angles
 from . import mechanism as mech
 from . import mechanism_dims, path_numbers
 from .charts import (TICK, Curve, chart, polygon_extent, polygon_fit_scale, polygon_items, polygon_notes,
-                     scale_notes)
+                     scale_notes, spaced_labels)
 from .dxf import OUTLINE, THIN
-from .labels import Room, boxes_meet
-from .sheet import (TEXT_HEIGHTS, Box, Circle, Item, Paper, Placement, Sheet, Text, clipped, fit, frame_items,
+from .labels import Room
+from .sheet import (TEXT_HEIGHTS, Box, Circle, Item, Paper, Placement, Sheet, Text, fit, frame_items,
                     item_box, marked, marked_text, number_text, scale_text, smaller_height,
                     standard_scale, text_width)
 from .cells import fitting_height, table
@@ -62,6 +63,7 @@ POINT_NAMES = {"p": "p", "a3": ("a", "3"), "a4": ("a", "4"), "b": "b", "c": "c",
 GAP = 6.0                     # mm between the areas of the sheet
 MAX_POSITIONS = 72            # more thin mechanisms than this fill the drawing with ink
 CAPTION = 5.0                 # caption text height
+LINE_PITCH = 1.5              # a caption's lines apart, in text heights (GB/T 14691: at least 1.4)
 TABLE_ROW = 7.0
 JOINT_GAP = mech.PIN_RADIUS + 1.0   # a joint's label (or a position's number) off its pin, mm
 LABEL_ROOM = 3.0              # around the mechanism's linework, for the joints' names
@@ -138,21 +140,23 @@ def caption(text: str, top_centre: tuple[float, float], room: float, largest: fl
 
 
 def caption_lines(text: str, top_centre: tuple[float, float], room: float, largest: float = CAPTION) -> list[Text]:
-    """:func:`caption`, or, where that would cut it even at the smallest height, two lines
-    broken after the last comma that lets the first fit, so that a polygon's scale (μ and its
-    unit, at the caption's end) is never cut off (the English A3 sheets' captions were)."""
-    plain = marked(text)[0]
-    smallest = TEXT_HEIGHTS[0]
-    if text_width(plain, smallest) <= room:
+    """:func:`caption`, or where even the smallest height would cut it short (a polygon's
+    caption in an A3 sheet's cell), its clauses (each ending in a comma) on as many lines as
+    they need at that height, one under another: a scale cut to "μ_a = 0.06 (m/…", or left
+    out with the angle, is no scale. A clause still too long for a line is cut."""
+    height = TEXT_HEIGHTS[0]
+    if text_width(marked(text)[0], height) <= room:
         return [caption(text, top_centre, room, largest)]
-    breaks = [i + 1 for i, ch in enumerate(text) if ch in ",，"]
-    fitting = [i for i in breaks if text_width(marked(text[:i])[0], smallest) <= room] or breaks[:1]
-    if not fitting:
-        return [caption(text, top_centre, room, largest)]
-    first, second = text[:fitting[-1]], text[fitting[-1]:].lstrip()
-    h, (x, y) = smallest, top_centre       # the height one line would have had: within its room
-    return [marked_text(first, (x, y - 0.2 * h), h, "ct", room),
-            marked_text(second, (x, y - 1.8 * h), h, "ct", room)]
+    parts = re.split(r"(?<=[,，])(\s*)", text)        # clause, space, clause …
+    lines = [parts[0]]
+    for space, clause in zip(parts[1::2], parts[2::2]):
+        if text_width(marked(lines[-1] + space + clause)[0], height) <= room:
+            lines[-1] += space + clause
+        else:
+            lines.append(clause)
+    x, y = top_centre
+    return [marked_text(line, (x, y - 0.2 * height - k * LINE_PITCH * height), height, "ct", room)
+            for k, line in enumerate(lines)]
 
 
 def nearest_mid_strokes(angles: np.ndarray, limits: tuple[float, float]) -> tuple[float, float]:
@@ -269,8 +273,8 @@ def _curves(motion, box: Box, angles: np.ndarray, numbers: np.ndarray,
         crossed = _crossed_ticks(drawn, phi, np.asarray(y), ticks)
         if crossed:             # a degree the curve runs through is left out, its tick kept
             drawn = chart(pbox, phi, [Curve(np.asarray(y))], lab["phi"], lab[key],
-                          [(a, "" if i in crossed else t) for i, (a, t) in enumerate(ticks)], notes=notes,
-                          below=below)
+                          [(a, "" if i in crossed else t) for i, ((a, _), t) in enumerate(zip(ticks, drawn.x_labels))],
+                          notes=notes, below=below)
         items += drawn.items
         if k == 0:
             items += _position_row(drawn, phi[0], angles, numbers, lab["position"], pbox)
@@ -306,19 +310,18 @@ def _crossed_ticks(drawn, phi: np.ndarray, y: np.ndarray, ticks) -> set[int]:
 
 def _position_row(drawn, phi0: float, angles: np.ndarray, numbers: np.ndarray, title: str,
                   panel: Box) -> list[Item]:
-    """The positions' numbers in a row under the degrees of the chart ``drawn`` (a number
-    that would meet its neighbour is left out, as the degrees are), titled at its left."""
+    """The positions' numbers in a row under the degrees of the chart ``drawn`` (as many as
+    stand a word space apart, the degrees' way: :func:`charts.spaced_labels`), titled at its
+    left."""
     height = smaller_height(3.5)
     left, zero = drawn.origin
     row = zero - TICK - 1.0 - 1.35 * height - 0.5          # under the degrees' row
+    xs = [left + (float(a) - phi0) / drawn.x_scale for a in angles]
     items: list[Item] = []
-    taken: list[Box] = []
-    for a, n in zip(angles, numbers):
-        label = Text(str(int(n)), (left + (float(a) - phi0) / drawn.x_scale, row), height, "ct")
-        box = label.box()
-        if box[1] >= panel[1] and not any(boxes_meet(box, b) for b in taken):
-            taken.append(box)
-            items.append(label)
+    for px, label in zip(xs, spaced_labels([(px, str(int(n))) for px, n in zip(xs, numbers)], height)):
+        text = Text(label, (px, row), height, "ct")
+        if label and text.box()[1] >= panel[1]:
+            items.append(text)
     name = Text(title, (left - TICK - 1.0, row), height, "rt")
     if items and name.box()[0] >= panel[0]:
         items.append(name)

@@ -18,14 +18,14 @@ from . import sheet_dims as sd
 from .dxf import THIN
 from .labels import moved_boxes
 from .segments import boxes_meet_strokes, crossings_each, strokes
-from .sheet import Box, Item, Placement, Text, line
+from .sheet import Box, Item, Placement, Text, line, word_gap
 
 NUMBER_MM = 2.5           # the tool path's numbers
-NUMBER_PAD = 0.6          # between two numbers side by side (``spread`` keeps 0.8)
+NUMBER_PAD = word_gap(NUMBER_MM)   # between two numbers side by side: "2" "3" is not "23"
 FAR_SHIFTS = 16           # how many widths along the path a crowded number may move, either way
 
 
-def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = 0.8) -> np.ndarray:
+def spread(ideal: np.ndarray, widths: np.ndarray, pad: float = NUMBER_PAD) -> np.ndarray:
     """Centres as near ``ideal`` (sorted) as they can be with neighbours ``widths`` wide
     ``pad`` apart: overlapping neighbours are pooled into a cluster centred on the mean of
     their wishes (least squares), until none overlap."""
@@ -77,7 +77,7 @@ def tool_path_numbers(design: Design, place: Placement, crank_deg: np.ndarray,
     for k, x0, x1, w in zip(order, xs[order], at, widths):   # rows are apart: one row's numbers can meet
         best = _best_spot(str(k + 1), x0, [x1], rows, taken, within, segs, led_clear, by_rank=True)
         if best is None or best[0] > 0:
-            shifts = [x1 + s * (w + 0.8) for n in range(1, FAR_SHIFTS + 1) for s in (n, -n)]
+            shifts = [x1 + s * (w + NUMBER_PAD) for n in range(1, FAR_SHIFTS + 1) for s in (n, -n)]
             farther = _best_spot(str(k + 1), x0, shifts, far_rows, taken, within, segs, led_clear)
             if farther is not None and farther[0] == 0:
                 best = farther

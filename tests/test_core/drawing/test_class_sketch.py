@@ -96,3 +96,29 @@ def test_the_students_line_shows_the_whole_name_and_number():
     assert "…" not in line.text and all(v in line.text for v in (who["student"], who["number"], who["group"]))
     left, _, right, _ = sheet.paper.border
     assert left <= line.box()[0] and line.box()[2] <= right
+
+
+# 方案 I–III of the task book (l_O2A, l_O2O4, l_O4B, l_BC/l_O4B) and a block design
+TASK_BOOK = [(110.0, 380.0, 540.0, 0.25), (90.0, 350.0, 580.0, 0.3), (110.0, 430.0, 810.0, 0.36),
+             (90.0, 350.0, 580.0, None)]
+
+
+@pytest.mark.parametrize("crank, frame, lever, rod_ratio", TASK_BOOK)
+def test_the_sketch_keeps_off_the_caption_over_it(crank, frame, lever, rod_ratio):
+    """The rod's number 5 (the ram's 6 on a block design) was led up from its link into the
+    caption "The mechanism (sketch to scale, …)" over the sketch (方案 II and III and the
+    block design; 方案 I's numbers found room): no two texts of the sheet overlap or stand nearer than a word space
+    (tests/sheet_checks), every text of the sketch lies under the caption."""
+    from core.drawing.checks import overlapping_texts
+    from sheet_checks import crowded_texts
+    spec = {"mode": "dimensions", "crank": crank, "frame": frame, "lever": lever}
+    if rod_ratio:
+        spec = {**Spec.from_dict(spec).to_dict(), "rod_ratio": rod_ratio, "rod_input": "ratio", "variant": "rod"}
+    doc = {"spec": Spec.from_dict(spec).to_dict(), "rpm": [64.0]}
+    sheet = task_sheet(doc, {"student": "x"}, ["Motion"], {})
+    assert overlapping_texts(sheet) == [] and crowded_texts(sheet) == []
+    texts = [t for t in sheet.items if isinstance(t, Text)]
+    caption = next(t for t in texts if t.text.startswith("The mechanism"))
+    numbers = [t for t in texts if t.text in {"2", "3", "4", "5", "6"}]
+    assert len(numbers) == (5 if rod_ratio else 4)
+    assert all(t.box()[3] < caption.box()[1] for t in numbers)

@@ -21,7 +21,7 @@ from core.drawing.sheet import Circle, Sheet, Text, line, paper
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.linkage.geometry import synthesize
-from sheet_checks import crossed_texts
+from sheet_checks import crossed_texts, crowded_texts
 from sweeps import examples
 
 A1 = paper("A1")
@@ -124,12 +124,14 @@ def test_the_default_designs_a1_sheets_have_no_crossed_label():
 
 
 def assert_labels_clear(sheet):
-    """No text crossed, none on another, all inside the border (the labels' part of
+    """No text crossed, none on another or crowding it, all inside the border (the labels' part of
     assert_laid_out: a large K on A2/A3 has the motion sheet's guide line leave its area,
     a separate matter)."""
     assert outside_border(sheet) == [] and overlapping_texts(sheet) == []
     crossed_now = [(t.text, t.position) for t, _ in crossed_texts(sheet)]
     assert crossed_now == [], crossed_now
+    crowded = [(a.text, b.text, round(clear, 2)) for a, b, clear in crowded_texts(sheet)]
+    assert crowded == [], crowded
 
 
 def _design(crank, k, stretch, rod):

@@ -136,9 +136,10 @@ def test_scheme_i_lengthened_forces_give_their_value(size):
                 continue
             value = length * drawn.force_scales[k]
             letters = name.replace("_", "")
-            # "= 700 N" on the line of its name "G6", just after it (boxes x0, y0, x1, y1)
+            # "= 700 N" on the line of its name "G6", a word space after it: GB/T 14691's e = 0.6 h
+            # between the inks, 0.4 h between the boxes (boxes x0, y0, x1, y1)
             values = [float(t.text[2:-2]) for t in texts if t.text.startswith("= ") and t.text.endswith(" N")
-                      and any(n.text == letters and abs(n.box()[2] + 0.8 - t.box()[0]) < 0.5
+                      and any(n.text == letters and abs(n.box()[2] + 0.4 * n.height - t.box()[0]) < 0.3
                               and n.box()[1] <= (t.box()[1] + t.box()[3]) / 2.0 <= n.box()[3] for n in texts)]
             half = 0.5 * 10.0 ** (math.floor(math.log10(value)) - 3)        # of the 4th digit
             assert any(abs(v - value) <= half * (1 + 1e-9) for v in values), (size, k, name, value, values)
