@@ -266,10 +266,25 @@ def remove_stale_temps(target: str | os.PathLike) -> list[str]:
 
 
 def _running(pid: int) -> bool:
+    """Whether process ``pid`` may still finish its save. A zombie may not: it was killed
+    and waits only to be reaped, which can take seconds after a ``kill -9`` (seen here: a
+    class's killed worker stayed a zombie of PID 1 for 1-3 s, the rerun took its temp file
+    for a save in progress and left it beside the student's files)."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return False
     except (PermissionError, OverflowError, ValueError):
         return True    # another user's process, or not a pid we can ask about: leave it
-    return True
+    return not _zombie(pid)
+
+
+def _zombie(pid: int) -> bool:
+    """True when Linux's /proc says ``pid`` has ended and is not yet reaped (state Z or X);
+    False where there is no /proc to ask."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as handle:
+            fields = handle.read().rsplit(b")", 1)[1].split()   # after the name, which may hold ") "
+    except (OSError, IndexError):
+        return False
+    return bool(fields) and fields[0] in (b"Z", b"X")

@@ -20,7 +20,7 @@ from itertools import islice
 from dataclasses import dataclass, field
 from typing import Any, Iterator, Sequence
 
-from core.files.atomic import atomic_write
+from core.files.atomic import atomic_write, remove_stale_temps
 from core.course_design.plan import PARTS, file_names
 from core.version import version_text
 
@@ -118,8 +118,11 @@ def run_student(job: Job) -> Result:
     start = time.perf_counter()
     try:
         skipped = is_current(job)
-        if not skipped:
-            write_student(job)
+        if skipped:                 # a run killed mid-save may have left its temporary files
+            for name in (*expected_files(job), STAMP_FILE):
+                remove_stale_temps(os.path.join(job.folder, name))
+        else:
+            write_student(job)      # each atomic write removes its target's stale ones
         entry = answer_entry(job.cover.get("student", ""), job.cover.get("number", ""), job.name,
                              os.path.join(job.folder, DESIGN_FILE))
         return Result(job.index, time.perf_counter() - start, entry, skipped=skipped)

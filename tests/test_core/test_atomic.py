@@ -266,3 +266,21 @@ def test_bytes_are_written_atomically_too(tmp_path):
     atomic_write(target, b"\x89PNG\r\n\x1a\n" + bytes(range(256)))
     assert target.read_bytes() == b"\x89PNG\r\n\x1a\n" + bytes(range(256))
     assert [p.name for p in tmp_path.iterdir()] == ["plot.png"]
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self"), reason="no /proc to tell a zombie")
+def test_a_killed_process_not_yet_reaped_holds_no_save(tmp_path):
+    """A process killed mid-save stays a zombie until its parent reaps it (PID 1, seconds
+    later, for a killed class's workers): its temp file is litter, not a save in progress.
+    A rerun of the class treated it as live and left it beside the student's files."""
+    path = tmp_path / "d.json"
+    killed = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(30)"])
+    try:
+        killed.kill()
+        os.waitid(os.P_PID, killed.pid, os.WEXITED | os.WNOWAIT)     # dead, and left unreaped
+        stale = tmp_path / f".d.json.{killed.pid}-0123abcd.tmp"
+        stale.write_text("partial")
+        atomic_write(path, "new")
+        assert sorted(p.name for p in tmp_path.iterdir()) == ["d.json"]
+    finally:
+        killed.wait()
