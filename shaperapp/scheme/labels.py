@@ -29,7 +29,7 @@ from shaperapp.widgets.style import LINK
 from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
-from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
+from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer, joint_fonts
 from .place import (LEADER_RING, Obstacles, around, boxes_at, clear_of_boxes, clear_of_segments,
                     leader, leaders, meets, end_to_end, owned)
 from .raster import Raster
@@ -114,7 +114,7 @@ class LabelLayout(QObject):
             obstacles.add(self._chain[-1], turned=True)
         for name, small in self._small.items():      # measured at full size: a frame may shrink them
             if small:
-                mech.labels[name].setFont(JOINT_FONTS[False])
+                mech.labels[name].setFont(joint_fonts()[False])
                 self._small[name] = False
         self._halves = {name: self._half(item) for name, item in mech.labels.items()}
         self._still = {}
@@ -220,7 +220,7 @@ class LabelLayout(QObject):
         for name, (x, y, small) in joints.items():
             label = self._mechanism.labels[name]
             if self._small.get(name, False) != small:
-                label.setFont(JOINT_FONTS[small])
+                label.setFont(joint_fonts()[small])
                 self._small[name] = small
             label.setPos(x, y)
         self._leaders.set_data(*leaders)
@@ -272,7 +272,7 @@ class LabelLayout(QObject):
         of the joint names' text height (the largest label's; their size is fixed on screen)
         between the texts, less the margin each text's box keeps round its glyphs."""
         margin = 2.0 * self._mechanism.labels["O4"].textItem.document().documentMargin()
-        gap = label_gap(QFontInfo(JOINT_FONTS[False]).pixelSize())
+        gap = label_gap(QFontInfo(joint_fonts()[False]).pixelSize())
         return max(gap[0] - margin, 0.0) * self._px, max(gap[1] - margin, 0.0) * self._px
 
     def _place_joints(self, index: int, obstacles: Obstacles) -> dict[str, np.ndarray]:
@@ -354,7 +354,7 @@ class LabelLayout(QObject):
                    obstacles: Obstacles) -> np.ndarray:
         label = self._mechanism.labels[name]
         if self._small.get(name, False) != small:
-            label.setFont(JOINT_FONTS[small])
+            label.setFont(joint_fonts()[small])
             self._small[name] = small
         label.setPos(*centre)
         obstacles.add(box)
