@@ -8,7 +8,8 @@ beside the point in the preferred direction and farther out along it, then on th
 side, then round it; then one standard height smaller; then farther still with a thin
 leader line from the point to the label, at last anywhere in the drawing. A spot is free
 when the label's box, a little enlarged, meets no stroke and no box already taken, and
-lies within its drawing.
+lies within its drawing; each step first asks LABEL_GAP from the texts taken too (a label
+that only clears another can read as one text with it).
 
 The strokes are segments (n, 4): x0, y0, x1, y1 in paper mm, a circle as a polygon; a
 filled arrowhead's edges are strokes like any other (a box that holds a whole arrowhead
