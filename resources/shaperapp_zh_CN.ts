@@ -4674,8 +4674,8 @@
         <translation>滑枕质心 x_S6、y_S6（自 C，x 沿切削方向，y 向上）</translation>
     </message>
     <message>
-        <source>Rod mass m5</source>
-        <translation>连杆质量 m5</translation>
+        <source>Rod mass m_5</source>
+        <translation>连杆质量 m_5</translation>
     </message>
     <message>
         <source>Block mass, crank mass</source>

@@ -8,7 +8,9 @@ beside the point in the preferred direction and farther out along it, then on th
 side, then round it; then one standard height smaller; then farther still with a thin
 leader line from the point to the label, at last anywhere in the drawing. A spot is free
 when the label's box, a little enlarged, meets no stroke, keeps a word space (GB/T 14691:
-``sheet.WORD_GAP``) off the boxes already taken beside it, and lies within its drawing.
+``sheet.WORD_GAP``) off the boxes already taken beside it, and lies within its drawing;
+each step first asks LABEL_GAP from the texts taken (a label that only clears another by a
+word space can still read as one text with it).
 
 The strokes are segments (n, 4): x0, y0, x1, y1 in paper mm, a circle as a polygon; a
 filled arrowhead's edges are strokes like any other (a box that holds a whole arrowhead
@@ -32,6 +34,18 @@ LEADER_RINGS = 10          # rings beyond the last plain one tried with a leader
 GRID_SPOTS = 2000          # then spots anywhere in the drawing, the nearest first …
 FAR_CHOICES = 12           # … of whose free ones the leader crossing fewest lines is taken
 ASSOCIATION = 0.5          # text heights another named point must lie farther from a label than its own
+LABEL_GAP = (1.5, 0.5)
+"""The least room between a label and another text, in the label's text heights: beside it
+on one line (x), and over or under it (y). Not touching is not enough: GB/T 14691 (ISO 3098)
+spaces the words of one text 0.6 h apart and its lines 0.4 h, so two labels closer than that
+read as one text. The report's scheme of 方案 I put the joint name O₂ 1.1 h before the
+dimension "H = 312.6" on its line, and a reader read "O₂ H = 312.6"; at 1.5 h, two and a half
+word spaces, they read apart. Over each other, 0.5 h is more than a line gap of one note."""
+
+
+def label_gap(height: float) -> Pair:
+    """:data:`LABEL_GAP` for a label ``height`` high, mm (x, y)."""
+    return LABEL_GAP[0] * height, LABEL_GAP[1] * height
 
 
 def boxes_meet(a: Box, b: Box) -> bool:
@@ -50,10 +64,11 @@ def is_free(box: Box, taken: Sequence[Box], segments: np.ndarray, within: Box | 
 
 
 def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarray,
-               within: Box | None = None, keep: Callable[[np.ndarray], np.ndarray] | None = None
-               ) -> Text | None:
-    """The first candidate whose box is free (:func:`is_free`; and takes its box), or None;
-    with ``keep`` (boxes (k, 4) → (k,) bools) the first free one it keeps. The candidates
+               within: Box | None = None, keep: Callable[[np.ndarray], np.ndarray] | None = None,
+               gap: Pair = (0.0, 0.0)) -> Text | None:
+    """The first candidate whose box is free (:func:`is_free`, and ``gap`` (x, y) mm off every
+    taken box; and takes its box), or None; with ``keep`` (boxes (k, 4) → (k,) bools) the
+    first free one it keeps. The candidates
     are tested in batches of 1, 2, 4 … (:func:`free_spots`, the same test of each box): one
     test a candidate scanned the whole sheet's strokes each time, some 8 % of a class's
     student (docs/performance.md)."""
@@ -61,7 +76,7 @@ def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarra
     for batch in _batches(candidates, 1):
         boxes = spot_boxes(batch)
         free = np.arange(len(boxes)) if keep is None else np.flatnonzero(keep(boxes))
-        free = free[free_spots(boxes[free], boxes_taken, segments, within, spot_gaps(batch)[free])]
+        free = free[free_spots(boxes[free], boxes_taken, segments, within, spot_gaps(batch, gap)[free])]
         if len(free):
             taken.append(batch[free[0]].box())
             return batch[free[0]]
@@ -118,23 +133,30 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
     drawing names), or [] when none is (the drawing is too crowded for it). Takes the
     label's box; a leader line starts ``leader_gap`` off the point (a pin's radius). Without
     ``shrink`` the label keeps its height (one series of numbers beside another of a smaller
-    height: shrunk, it would join that one)."""
+    height: shrunk, it would join that one). Each step first with :data:`LABEL_GAP` from the
+    other texts, then, where no spot keeps it, touching them: a label lost or led away from
+    its point (the crank's twelve numbers round a small crank circle) is worse than a close
+    one."""
     # a label with an index keeps its height: at the smallest one its index could not be smaller
     small = height if subscripts or not shrink else smaller_height(height)
     others = _others(at, anchors)
-    for h in dict.fromkeys((height, small)):
-        spots = ring_candidates(text, at, h, preferred, gap, range(rings), align, subscripts)
-        keep = None if others is None else partial(_read_as_own, at=at, others=others, height=h)
-        label = first_free(spots, taken, segments, within, keep)
-        if label is not None:
-            return [label]
+    for apart in (True, False):
+        for h in dict.fromkeys((height, small)):
+            spots = ring_candidates(text, at, h, preferred, gap, range(rings), align, subscripts)
+            keep = None if others is None else partial(_read_as_own, at=at, others=others, height=h)
+            label = first_free(spots, taken, segments, within, keep, label_gap(h) if apart else (0.0, 0.0))
+            if label is not None:
+                return [label]
     h = small
-    spots = ring_candidates(text, at, h, preferred, gap, range(rings, rings + LEADER_RINGS), None, subscripts)
-    best = with_leader(spots, at, taken, segments, within, leader_gap)
-    if (best is None or best[2]) and within is not None:     # anywhere in the drawing, nearest first
-        far = with_leader(grid_candidates(text, at, h, within, subscripts), at, taken, segments, within,
-                          leader_gap, enough=FAR_CHOICES)
-        best = far if best is None or (far is not None and far[2] < best[2]) else best
+    for spacing in (label_gap(h), (0.0, 0.0)):
+        spots = ring_candidates(text, at, h, preferred, gap, range(rings, rings + LEADER_RINGS), None, subscripts)
+        best = with_leader(spots, at, taken, segments, within, leader_gap, spacing=spacing)
+        if (best is None or best[2]) and within is not None:     # anywhere in the drawing, nearest first
+            far = with_leader(grid_candidates(text, at, h, within, subscripts), at, taken, segments, within,
+                              leader_gap, enough=FAR_CHOICES, spacing=spacing)
+            best = far if best is None or (far is not None and far[2] < best[2]) else best
+        if best is not None:
+            break
     if best is None:
         return []
     taken.append(best[0].box())
@@ -213,9 +235,10 @@ def spot_boxes(spots: Sequence[Text]) -> np.ndarray:
 
 
 def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,
-                within: Box | None, leader_gap: float, enough: int | None = None
-                ) -> tuple[Text, Polyline, int] | None:
-    """Of the free ``spots`` (the first ``enough`` of them, if given), the one whose leader
+                within: Box | None, leader_gap: float, enough: int | None = None,
+                spacing: Pair = (0.0, 0.0)) -> tuple[Text, Polyline, int] | None:
+    """Of the free ``spots`` (``spacing`` (x, y) mm off every taken box; the first ``enough``
+    of them, if given), the one whose leader
     line from ``at`` crosses the fewest strokes (the first of equals) and no taken box, with
     that line and how many strokes it crosses; None if none is free. The spots are tested in
     batches, in their order."""
@@ -223,7 +246,7 @@ def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments:
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
     for batch in _batches(spots):
         boxes = spot_boxes(batch)
-        free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within, spot_gaps(batch)))
+        free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within, spot_gaps(batch, spacing)))
         ends = leader_ends(at, boxes[free], leader_gap)
         clear = ~strokes_meet_boxes(ends, boxes_taken)
         free, ends = free[clear], ends[clear]
@@ -249,23 +272,25 @@ def _batches(spots: Iterable[Text], size: int = 8) -> Iterable[list[Text]]:
         size = min(2 * size, 256)
 
 
-def spot_gaps(spots: Sequence[Text]) -> np.ndarray:
-    """The word space (``sheet.word_gap``) each of ``spots`` keeps off a text beside it, (k,)."""
-    return np.array([word_gap(spot.height) for spot in spots], dtype=float)
+def spot_gaps(spots: Sequence[Text], gap: Pair = (0.0, 0.0)) -> np.ndarray:
+    """What each of ``spots`` keeps off a taken box, (k, 2) mm (x, y): ``gap``, and beside it
+    at least the word space of its height (``sheet.word_gap``)."""
+    words = np.array([word_gap(spot.height) for spot in spots], dtype=float)
+    return np.column_stack([np.maximum(words, gap[0]), np.full(len(words), float(gap[1]))])
 
 
 def free_spots(boxes: Sequence[Box], taken: np.ndarray, segments: np.ndarray, within: Box | None,
-               apart: float | np.ndarray = 0.0) -> np.ndarray:
-    """:func:`is_free` for each of ``boxes`` at once, ``taken`` as an (m, 4) array; ``apart``
-    one for all or one per box."""
+               gap: Pair | np.ndarray = (0.0, 0.0)) -> np.ndarray:
+    """:func:`is_free` for each of ``boxes`` at once, ``taken`` as an (m, 4) array, each box
+    ``gap`` (x, y) mm off every taken one: one pair for all, or one per box (:func:`spot_gaps`)."""
     b = np.asarray(boxes, dtype=float).reshape(-1, 4)
     free = np.ones(len(b), dtype=bool)
     if within is not None:
         free &= (within[0] <= b[:, 0]) & (b[:, 2] <= within[2]) & (within[1] <= b[:, 1]) & (b[:, 3] <= within[3])
     if len(taken):
-        gap = np.broadcast_to(np.asarray(apart, dtype=float), (len(b),))[:, None]
-        free &= ~((b[:, None, 0] - gap < taken[:, 2]) & (taken[:, 0] < b[:, None, 2] + gap)
-                  & (b[:, None, 1] < taken[:, 3]) & (taken[:, 1] < b[:, None, 3])).any(axis=1)
+        gx, gy = np.broadcast_to(np.asarray(gap, dtype=float), (len(b), 2)).T[:, :, None]
+        free &= ~((b[:, None, 0] - gx < taken[:, 2]) & (taken[:, 0] < b[:, None, 2] + gx)
+                  & (b[:, None, 1] - gy < taken[:, 3]) & (taken[:, 1] < b[:, None, 3] + gy)).any(axis=1)
     free[free] = ~boxes_meet_strokes(b[free], segments)
     return free
 
@@ -332,7 +357,7 @@ class Room:
                                  shift[:, 0] + hi[0], shift[:, 1] + hi[1]])
         taken = np.asarray(self.taken, dtype=float).reshape(-1, 4)
         free = np.flatnonzero(free_spots(whole, taken, self.segments, self.within,
-                                         min(word_gap(t.height) for t in lines)))
+                                         (min(word_gap(t.height) for t in lines), 0.0)))
         if not len(free):
             return []
         dx, dy = shift[free[0]]

@@ -210,8 +210,10 @@ def symbol(*parts: str | tuple[str, str]) -> tuple[str, tuple[tuple[int, int], .
 
 # The sheets' index notation in captions and translated strings: an underscore before the
 # index, which is a run of Latin or Greek letters or a run of digits (so "O_2O_4" is two
-# indices, and a Chinese word may follow an index without a space).
-INDEX_MARK = re.compile("_([A-Za-z\u0391-\u03a9\u03b1-\u03c9]+|[0-9]+)")
+# indices, and a Chinese word may follow an index without a space), or several such runs
+# joined by commas with no space ("v_w,max" is v with "w,max" below, one index).
+_INDEX_RUN = "(?:[A-Za-z\u0391-\u03a9\u03b1-\u03c9]+|[0-9]+)"
+INDEX_MARK = re.compile(f"_({_INDEX_RUN}(?:,{_INDEX_RUN})*)")
 
 
 def marked(text: str) -> tuple[str, tuple[tuple[int, int], ...]]:

@@ -4,13 +4,14 @@ right corner, in the standard's three zones of ruled cells, with the course desi
 language; its values are the user's text, set as typed (no index notation)."""
 from __future__ import annotations
 
+import unicodedata
 from dataclasses import dataclass, field, replace
 from typing import Mapping
 
 import numpy as np
 
 from .dxf import OUTLINE, THIN, TITLE
-from .sheet import Box, Item, Paper, Text, line, rectangle
+from .sheet import TEXT_HEIGHTS, Box, Item, Paper, Text, line, rectangle
 from .cells import cell_text
 
 TITLE_WIDTH = 180.0
@@ -78,10 +79,14 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
     items += [line([(right, y), (x1, y)], THIN) for y in names[1:-1]]
     items += [line([(x, y0), (x, y1)], OUTLINE) for x in (mid, right)]
 
-    def cell(text: str, x_a: float, x_b: float, top: float, bottom: float, largest: float = 3.5) -> None:
+    def cell(text: str, x_a: float, x_b: float, top: float, bottom: float, largest: float = 3.5,
+             users: bool = False) -> None:
+        """A label on one line; a user's text (a name, a number) as large as fits, at
+        2.5 mm on two lines before it is cut: it is who drew the sheet."""
+        box = (float(x_a), float(bottom), float(x_b), float(top))
         if text:
-            items.append(cell_text(text, (float(x_a), float(bottom), float(x_b), float(top)), largest,
-                                   layer=TITLE))
+            items.extend(wrapped_cell(text, box, largest, TEXT_HEIGHTS[0]) if users
+                         else [cell_text(text, box, largest, layer=TITLE)])
     signatures = [(lab("drawn"), block.drawn, block.date), (lab("supervisor"), block.supervisor, ""),
                   (lab("checked"), "", ""), (lab("approved"), "", "")]
     others = [(lab("number"), block.number), (lab("class"), block.group),
@@ -89,10 +94,10 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
     for k, ((role, name, date), (label, value)) in enumerate(zip(signatures, others)):
         top, bottom = rows[k], rows[k + 1]
         cell(role, sign[0], sign[1], top, bottom)
-        cell(name, sign[1], sign[2], top, bottom)
-        cell(date, sign[2], sign[3], top, bottom)
+        cell(name, sign[1], sign[2], top, bottom, users=True)
+        cell(date, sign[2], sign[3], top, bottom, users=True)
         cell(label, other[0], other[1], top, bottom)
-        cell(value, other[1], other[2], top, bottom)
+        cell(value, other[1], other[2], top, bottom, users=k < 2)
     for text, k, largest in ((block.school, 0, 5.0), (block.title, 1, 7.0), (block.design, 2, 5.0)):
         box = (right, float(names[k + 1]), x1, float(names[k]))
         if k == 2 and block.speed:          # the design over the speed it is drawn at
@@ -102,23 +107,60 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
     return items
 
 
-def wrapped_cell(text: str, box: Box, largest: float) -> list[Text]:
+def wrapped_cell(text: str, box: Box, largest: float, least: float = 5.0) -> list[Text]:
     """``text`` in the cell ``box`` on one line as large as fits (≤ ``largest``), or, when
-    that would be smaller than 5 mm, on two lines (≤ 5 mm) split at the space nearest its
-    middle, when they come out larger or whole where one line is cut (a long design name
-    or sheet name: the name area's cells are 50 mm wide)."""
-    x0, y0, x1, y1 = box
+    that would be smaller than ``least`` or cut, on two lines (≤ 5 mm) broken where a line
+    may break (:func:`line_breaks`): whole and as large as they come, the break nearest the
+    middle of those; when no two lines hold it whole, the two that show the most of it,
+    the second cut with "…", where they show more than one line (a long design or sheet
+    name in the name area's 50 mm cells; a student's name in the 34 mm signature cell,
+    the student's identity on the sheet)."""
     one = cell_text(text, box, largest, layer=TITLE)
-    spaces = [i for i, ch in enumerate(text) if ch == " "]
-    if one.text == text and one.height >= min(largest, 5.0) or not spaces:
+    breaks = line_breaks(text)
+    if one.text == text and one.height >= min(largest, least) or not breaks:
         return [one]
-    cut = min(spaces, key=lambda i: abs(i - len(text) / 2.0))
+    middle = len(text) / 2.0
+    best = max((_two_lines(text, i, box, largest) for i in sorted(breaks, key=lambda i: abs(i - middle))),
+               key=lambda two: (two[1], two[0][0].height, two[2]))
+    two, whole, shown = best
+    if whole and (two[0].height > one.height or one.text != text):
+        return two
+    kept = len(one.text) - one.text.endswith("…")
+    return two if one.text != text and shown > kept else [one]
+
+
+def _two_lines(text: str, at: int, box: Box, largest: float) -> tuple[list[Text], bool, int]:
+    """``text`` broken at ``at`` on two lines of ``box``, both as large as the smaller fits
+    (≤ 5 mm); whether both are whole, and how many characters they show (0 when the first is
+    cut: what follows it would be lost from the middle)."""
+    x0, y0, x1, y1 = box
     middle = (y0 + y1) / 2.0
-    lines = [(text[:cut], (x0, middle, x1, y1)), (text[cut + 1:], (x0, y0, x1, middle))]
+    lines = [(text[:at].rstrip(), (x0, middle, x1, y1)), (text[at:].lstrip(), (x0, y0, x1, middle))]
     height = min(cell_text(part, cell, min(largest, 5.0)).height for part, cell in lines)   # both alike
+    # set LINE_PITCH heights apart about the cell's middle, as one text of two lines (each in
+    # the middle of its half, 2.5 mm lines stood 2.8 heights apart in a 14 mm row)
     two = [cell_text(part, cell, height, layer=TITLE) for part, cell in lines]
-    whole = all(line.text == part for line, (part, _) in zip(two, lines))
-    return two if whole and (height > one.height or one.text != text) else [one]
+    two = [replace(line, position=(line.position[0], middle + sign * LINE_PITCH * height / 2.0))
+           for line, sign in zip(two, (1.0, -1.0))]
+    whole = [line.text == part for line, (part, _) in zip(two, lines)]
+    shown = len(two[0].text) + len(two[1].text) - two[1].text.endswith("…") if whole[0] else 0
+    return two, all(whole), shown
+
+
+LINE_PITCH = 1.6         # two lines of a cell, baseline to baseline, in text heights (GB/T 14691: ≥ 1.4)
+NO_BREAK_BEFORE = "，。、；：！？）》」』】”’…"
+NO_BREAK_AFTER = "（《「『【“‘"
+
+
+def line_breaks(text: str) -> list[int]:
+    """Where ``text`` may go on to a second line: after a space, or beside a CJK character
+    (Chinese breaks between any two characters, and a Chinese name or school has no spaces),
+    but not before a closing mark nor after an opening one."""
+    wide = [unicodedata.east_asian_width(ch) in "WF" for ch in text]
+    return [i for i in range(1, len(text))
+            if text[i - 1] == " " and text[i] != " "
+            or (wide[i - 1] or wide[i]) and " " not in text[i - 1:i + 1]
+            and text[i] not in NO_BREAK_BEFORE and text[i - 1] not in NO_BREAK_AFTER]
 
 
 def sheet_title_block(p: Paper, block: TitleBlock | None, labels: Mapping[str, str],

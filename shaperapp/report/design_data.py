@@ -34,7 +34,7 @@ def load_rows(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
             (translate("Report", "Ram centre of mass x_S6, y_S6 (from C, x along the cut, y up)"),
              f"{dx:g} mm, {dy:g} mm")]
     if design.rod is not None:
-        rows.append((translate("Report", "Rod mass m5"), f"{masses.rod_mass_kg:g} kg"))
+        rows.append((translate("Report", "Rod mass m_5"), f"{masses.rod_mass_kg:g} kg"))
     if masses.block_mass_kg or masses.crank_mass_kg:
         rows.append((translate("Report", "Block mass, crank mass"),
                      f"{masses.block_mass_kg:g} kg, {masses.crank_mass_kg:g} kg"))

@@ -192,8 +192,10 @@ def _title_block(p: QPainter, lay: Layout, report: Report, y: float, height: flo
     p.setPen(QPen(INK, 0.35 * lay.mm))
     p.drawRect(QRectF(x, y, w, height))
     title_h = 14.0 * lay.mm
-    p.setFont(lay.title)
-    p.drawText(QRectF(x, y, w, title_h), int(Qt.AlignmentFlag.AlignCenter), report.title)
+    room = w - 2 * CELL_PAD_MM * lay.mm          # the frame's margin, as the cells' texts keep
+    p.setFont(_fitting(lay, lay.title, report.title, room))
+    p.drawText(QRectF(x + CELL_PAD_MM * lay.mm, y, room, title_h),
+               int(Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap), report.title)
     rows = cover_rows(report)
     row_h = (height - title_h) / 4
     label_w = max(lay.metrics(lay.small).horizontalAdvance(label) for label, _ in rows) + 4 * lay.mm
@@ -206,11 +208,23 @@ def _title_block(p: QPainter, lay: Layout, report: Report, y: float, height: flo
         if column:
             p.drawLine(QPointF(cx, cy), QPointF(cx, cy + row_h))
         p.setFont(lay.small)
-        p.drawText(QRectF(cx + 2 * lay.mm, cy, label_w, row_h), int(Qt.AlignmentFlag.AlignVCenter), label)
+        p.drawText(QRectF(cx + CELL_PAD_MM * lay.mm, cy, label_w, row_h), int(Qt.AlignmentFlag.AlignVCenter), label)
         room = cw - label_w - 4 * lay.mm
         font, flags, text = _cover_value(lay, value, room, row_h)
         p.setFont(font)
         p.drawText(QRectF(cx + 2 * lay.mm + label_w, cy, room, row_h), flags, text)
+
+
+CELL_PAD_MM = 2.0       # a cover text's least distance from its cell's lines
+
+
+def _fitting(lay: Layout, font: QFont, text: str, room: float) -> QFont:
+    """``font``, made smaller (to the body size at least) until ``text`` fits ``room`` on one
+    line: the English title ran to 1 mm from the cover's frame at 17 pt."""
+    fitted = QFont(font)
+    while lay.metrics(fitted).horizontalAdvance(text) > room and fitted.pointSizeF() > lay.body.pointSizeF():
+        fitted.setPointSizeF(max(fitted.pointSizeF() - 0.5, lay.body.pointSizeF()))
+    return fitted
 
 
 def _cover_value(lay: Layout, value: str, room: float, row_h: float) -> tuple[QFont, int, str]:

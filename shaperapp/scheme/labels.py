@@ -9,7 +9,9 @@ are placed once per design, zoom and dimensions shown, clear of everything the
 moving bodies sweep over the whole cycle; a frame places only the moving joints'
 names (O₂, A, B, C) and the force magnitudes, and moves a still label only when a
 force arrow of that frame runs through it. A name that finds no room beside its
-joint goes a ring farther out with a leader line to it.
+joint goes a ring farther out with a leader line to it. Labels keep the sheets' gap
+from each other (core.drawing.labels.LABEL_GAP): clear is not enough, "O₂" an em before
+"H = 312.6" on its line read as one label.
 """
 from __future__ import annotations
 
@@ -17,6 +19,9 @@ from collections.abc import Callable
 
 import numpy as np
 from PySide6.QtCore import QObject
+from PySide6.QtGui import QFontInfo
+
+from core.drawing.labels import label_gap
 
 from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import LINK
@@ -24,7 +29,7 @@ from shaperapp.widgets.style import LINK
 from .dimensions import DimensionLayer
 from .draw import Z_LABEL, pen, text_box
 from .forces import ForceLayer
-from .mechanism import JOINT_FONTS, JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
+from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer, joint_fonts
 from .place import (LEADER_RING, Obstacles, around, boxes_at, clear_of_boxes, clear_of_segments,
                     leader, leaders, meets, end_to_end, owned)
 from .raster import Raster
@@ -90,7 +95,7 @@ class LabelLayout(QObject):
         region = (min(window[0], bounds[0]), max(window[1], bounds[1]),
                   min(window[2], bounds[2]), max(window[3], bounds[3]))
         self._raster, swept = self._rasters(fixed, region, cell, LINE_CLEAR_PX * px)
-        obstacles = Obstacles(np.empty((0, 2, 2)), 0.0, None, bounds, swept)
+        obstacles = Obstacles(np.empty((0, 2, 2)), 0.0, None, bounds, swept, self._spacing())
         axes, half_widths = mech.link_axes(None)
         obstacles.add(ends=axes, margin=half_widths + LINE_CLEAR_PX * px)
         self._chain = []
@@ -106,10 +111,10 @@ class LabelLayout(QObject):
             k = obstacles.best(spots, end_to_end(spots, np.array(self._chain), dims.chain_gap()))
             dims.shift_label(name, shifts[k])
             self._chain.append(text_box(texts[name]))
-            obstacles.add(self._chain[-1])
+            obstacles.add(self._chain[-1], turned=True)
         for name, small in self._small.items():      # measured at full size: a frame may shrink them
             if small:
-                mech.labels[name].setFont(JOINT_FONTS[False])
+                mech.labels[name].setFont(joint_fonts()[False])
                 self._small[name] = False
         self._halves = {name: self._half(item) for name, item in mech.labels.items()}
         self._still = {}
@@ -124,11 +129,23 @@ class LabelLayout(QObject):
         self._home = {}
         for name, (centres, half, _) in self._still.items():
             boxes = boxes_at(centres, half)
-            k = obstacles.best(boxes)
+            k = obstacles.best(boxes, self._leader_barred(name, boxes, obstacles))
             self._home[name] = k
             self._put_still(name, k)
             obstacles.add(boxes[k])
             obstacles.add(ends=self._leader_of(name), margin=LINE_CLEAR_PX * px)
+
+    def _leader_barred(self, name: str, boxes: np.ndarray, obstacles: Obstacles) -> np.ndarray | None:
+        """(m,) True where O₄'s name at each of ``boxes`` would be led to by a line through a
+        label placed (moved off by the labels' gap, it ran through L1 = …); None for the
+        others (their leaders are the dimensions')."""
+        if name != "O4":
+            return None
+        ring = self._still[name][2]
+        start = PIN_FIXED * self._mechanism.frames.u + LEADER_GAP_PX * self._px
+        lines = leaders(np.zeros(2), boxes, start)
+        return (ring >= LEADER_RING) & meets(np.array(obstacles.boxes).reshape(-1, 4), lines,
+                                             np.full(len(boxes), LINE_CLEAR_PX * self._px)).any(axis=0)
 
     def _rasters(self, fixed: np.ndarray, region: tuple, cell: float, margin: float) -> tuple[Raster, Raster]:
         """The lines that stay put burnt into a raster, and a copy with the swept lines too, kept
@@ -203,7 +220,7 @@ class LabelLayout(QObject):
         for name, (x, y, small) in joints.items():
             label = self._mechanism.labels[name]
             if self._small.get(name, False) != small:
-                label.setFont(JOINT_FONTS[small])
+                label.setFont(joint_fonts()[small])
                 self._small[name] = small
             label.setPos(x, y)
         self._leaders.set_data(*leaders)
@@ -248,7 +265,15 @@ class LabelLayout(QObject):
         ends, margins = self._mechanism.frame_obstacles(index)
         return Obstacles(np.concatenate([ends, arrows]),
                          np.concatenate([margins + margin, np.full(len(arrows), margin)]),
-                         np.array(self._chain).reshape(-1, 4), self._bounds, self._raster)
+                         np.array(self._chain).reshape(-1, 4), self._bounds, self._raster, self._spacing())
+
+    def _spacing(self) -> tuple[float, float]:
+        """The gap every label's box keeps from the others', mm (x, y): the sheets' label_gap
+        of the joint names' text height (the largest label's; their size is fixed on screen)
+        between the texts, less the margin each text's box keeps round its glyphs."""
+        margin = 2.0 * self._mechanism.labels["O4"].textItem.document().documentMargin()
+        gap = label_gap(QFontInfo(joint_fonts()[False]).pixelSize())
+        return max(gap[0] - margin, 0.0) * self._px, max(gap[1] - margin, 0.0) * self._px
 
     def _place_joints(self, index: int, obstacles: Obstacles) -> dict[str, np.ndarray]:
         """The moving joints' names at ``index``; each one's leader (maybe none)."""
@@ -263,7 +288,8 @@ class LabelLayout(QObject):
         boxes = boxes_at(centres, half)
         texts = self._dimensions.texts()
         chain = [text_box(texts[n]) for n in ("L2", "h") if texts[n].isVisible()]   # as drawn now
-        free = obstacles.clear(boxes) & clear_of_boxes(boxes, np.array(chain).reshape(-1, 4))
+        free = obstacles.clear(boxes) & clear_of_boxes(boxes, np.array(chain).reshape(-1, 4),
+                                                        (obstacles.spacing[1],) * 2)
         taken = np.array(obstacles.boxes).reshape(-1, 4)
         margin = np.full(1, LINE_CLEAR_PX * self._px)
         was, best = self._at[name], None
@@ -328,7 +354,7 @@ class LabelLayout(QObject):
                    obstacles: Obstacles) -> np.ndarray:
         label = self._mechanism.labels[name]
         if self._small.get(name, False) != small:
-            label.setFont(JOINT_FONTS[small])
+            label.setFont(joint_fonts()[small])
             self._small[name] = small
         label.setPos(*centre)
         obstacles.add(box)
@@ -363,8 +389,9 @@ class LabelLayout(QObject):
                 continue
             leaders.append(self._keep_still(name, home, obstacles))
         for name in crossed:
-            centres, half, _ = self._still[name]
-            leaders.append(self._keep_still(name, obstacles.best(boxes_at(centres, half)), obstacles))
+            boxes = boxes_at(*self._still[name][:2])
+            leaders.append(self._keep_still(name, obstacles.best(boxes, self._leader_barred(name, boxes, obstacles)),
+                                            obstacles))
         return leaders
 
 

@@ -19,6 +19,8 @@ labels read back from them.
 """
 from __future__ import annotations
 
+import functools
+
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -81,7 +83,14 @@ def joint_font(points: int) -> QFont:
 
 
 JOINT_SIZES = (11, 9)        # pt: the joint names, and one standard size smaller where crowded
-JOINT_FONTS = {False: joint_font(JOINT_SIZES[0]), True: joint_font(JOINT_SIZES[1])}
+@functools.cache
+def joint_fonts() -> dict[bool, QFont]:
+    """The joint names' fonts, full size (False) and one size smaller (True). Made when
+    first asked for, by a view, once the application runs: a QFont made before it (at
+    import) took the system's first family, C059, a serif, so the names of a course's or a
+    class's report (which import the scheme before starting Qt) were set in another face
+    than those of ``shaper report``."""
+    return {False: joint_font(JOINT_SIZES[0]), True: joint_font(JOINT_SIZES[1])}
 
 
 @dataclass(frozen=True)
@@ -141,7 +150,7 @@ class MechanismLayer(QObject):
         for it in (self._path_done, self.ram, self._crank, self._lever, self._block_a,
                    self._block_b, self._rod, *self.pins.values()):
             add(it)
-        font = JOINT_FONTS[False]
+        font = joint_fonts()[False]
         self.labels: dict[str, pg.TextItem] = {}
         for name, text in (("O2", "O\u2082"), ("O4", "O\u2084"), ("A", "A"), ("B", "B"), ("C", "C")):
             label = pg.TextItem(text, color=LINK, anchor=(0.5, 0.5))

@@ -59,13 +59,16 @@ def meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarra
     return hit
 
 
-def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray) -> np.ndarray:
-    """(m,) True where box i overlaps none of ``taken`` (touching edges do not overlap)."""
+def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray, gap: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+    """(m,) True where box i overlaps none of ``taken`` (touching edges do not overlap), or
+    with ``gap`` (x, y), keeps that far off each (core.drawing.labels.LABEL_GAP)."""
     boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
     if len(taken) == 0:
         return np.ones(len(boxes), dtype=bool)
     b, t = boxes[:, None, :], np.asarray(taken, dtype=float)[None, :, :]
-    hit = (b[..., 0] < t[..., 1]) & (t[..., 0] < b[..., 1]) & (b[..., 2] < t[..., 3]) & (t[..., 2] < b[..., 3])
+    gx, gy = gap
+    hit = ((b[..., 0] - gx < t[..., 1]) & (t[..., 0] < b[..., 1] + gx)
+           & (b[..., 2] - gy < t[..., 3]) & (t[..., 2] < b[..., 3] + gy))
     return ~hit.any(axis=1)
 
 
@@ -81,12 +84,17 @@ def end_to_end(boxes: np.ndarray, taken: np.ndarray, gap: float) -> np.ndarray:
 
 class Obstacles:
     """The lines and the labels' boxes one placement pass keeps clear of; a placed label
-    (and its leader) joins them, so the next one keeps clear of it too."""
+    (and its leader) joins them, so the next one keeps clear of it too, by ``spacing`` (x,
+    y; mm): the labels' gap, core.drawing.labels.label_gap of their text height. The
+    ``boxes`` given at the start are turned texts (the L2 and h chain's, read upwards),
+    which no upright label continues on its line: those keep the gap across lines, ``spacing``'s
+    y, on every side."""
 
     def __init__(self, ends: np.ndarray, margins: np.ndarray, boxes: np.ndarray | None = None,
                  bounds: tuple[float, float, float, float] | None = None,
-                 raster: "Raster | None" = None) -> None:
+                 raster: "Raster | None" = None, spacing: tuple[float, float] = (0.0, 0.0)) -> None:
         self.bounds = bounds
+        self.spacing = spacing
         self.raster = raster             # lines that stay put, checked on their grid             # (left, right, bottom, top): a label stays inside
         self.ends = np.asarray(ends, dtype=float).reshape(-1, 2, 2)
         self.margins = np.broadcast_to(np.asarray(margins, dtype=float), (len(self.ends),)).copy()
@@ -94,6 +102,15 @@ class Obstacles:
         self._lo = self.ends.min(axis=1) - self.margins[:, None]
         self._hi = self.ends.max(axis=1) + self.margins[:, None]
         self.boxes = [] if boxes is None else [tuple(b) for b in np.asarray(boxes).reshape(-1, 4)]
+        self.turned = len(self.boxes) * [True]
+
+    def clear_of_labels(self, candidates: np.ndarray) -> np.ndarray:
+        """(m,) True where a candidate box keeps the labels' gap from every label's box."""
+        boxes = np.array(self.boxes).reshape(-1, 4)
+        turned = np.array(self.turned, dtype=bool)
+        across = (self.spacing[1], self.spacing[1])
+        return (clear_of_boxes(candidates, boxes[~turned], self.spacing)
+                & clear_of_boxes(candidates, boxes[turned], across))
 
     def _near(self, candidates: np.ndarray) -> np.ndarray:
         lo = np.array([candidates[:, :2].min(), candidates[:, 2:].min()])
@@ -113,7 +130,7 @@ class Obstacles:
         out = ~met.any(axis=1)
         if self.raster is not None:
             out &= self.raster.hits(candidates) == 0
-        return out & clear_of_boxes(candidates, np.array(self.boxes).reshape(-1, 4)) & self.inside(candidates), met
+        return out & self.clear_of_labels(candidates) & self.inside(candidates), met
 
     def inside(self, candidates: np.ndarray) -> np.ndarray:
         """(m,) True where a candidate lies within the bounds (the drawing's extent)."""
@@ -148,7 +165,9 @@ class Obstacles:
 
     def best(self, candidates: np.ndarray, barred: np.ndarray | None = None) -> int:
         """The first clear candidate, or where none is, the one that the fewest lines and
-        boxes come near (the first of those); ``barred`` ones (m,) only when all are."""
+        boxes come near (the first of those; a label nearer than the gap counts less than a
+        line: a text crossed cannot be read, one close to another can); ``barred`` ones (m,)
+        only when all are."""
         candidates = np.asarray(candidates, dtype=float).reshape(-1, 4)
         k, met = self._first(candidates, barred)
         if k >= 0:
@@ -157,16 +176,20 @@ class Obstacles:
         hits = np.concatenate(met).sum(axis=1) + 10000.0 * ~self.inside(candidates)
         if self.raster is not None:
             hits = hits + np.minimum(self.raster.hits(candidates), 100)
-        for box in self.boxes:
-            hits += 1000.0 * ~clear_of_boxes(candidates, np.array([box]))
+        for box, turned in zip(self.boxes, self.turned):
+            overlap = ~clear_of_boxes(candidates, np.array([box]))
+            close = ~clear_of_boxes(candidates, np.array([box]), (self.spacing[1],) * 2 if turned else self.spacing)
+            hits += 1000.0 * overlap + CLOSE_COST * (close & ~overlap)
         if barred is not None:
             hits = hits + 100000.0 * barred
         return int(np.argmin(hits))
 
-    def add(self, box=None, ends: np.ndarray | None = None, margin=0.0) -> None:
-        """A placed label's box, or lines with their margin (one, or one per segment)."""
+    def add(self, box=None, ends: np.ndarray | None = None, margin=0.0, turned: bool = False) -> None:
+        """A placed label's box (a ``turned`` text's: read upwards), or lines with their
+        margin (one, or one per segment)."""
         if box is not None:
             self.boxes.append(tuple(box))
+            self.turned.append(turned)
         if ends is not None and len(ends):
             ends = np.asarray(ends, dtype=float).reshape(-1, 2, 2)
             margin = np.broadcast_to(np.asarray(margin, dtype=float), (len(ends),))
@@ -176,6 +199,7 @@ class Obstacles:
             self._hi = np.concatenate([self._hi, ends.max(axis=1) + margin[:, None]])
 
 
+CLOSE_COST = 0.5       # a label within the gap but clear of it, in lines met (Obstacles.best)
 FIRST_CHUNK = 16       # candidates checked at once first (one ring); each chunk after doubles
 
 

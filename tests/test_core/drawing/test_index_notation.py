@@ -38,6 +38,9 @@ def subscripted(text: Text) -> list[tuple[str, str]]:
     ("需加飞轮 J_F − J_e", "需加飞轮 JF − Je", ["F", "e"]),
     ("M_m虚线", "Mm虚线", ["m"]),                  # a Chinese word right after an index
     ("no index here: snake_", "no index here: snake_", []),
+    ("v_w,max", "vw,max", ["w,max"]),              # one index of two parts (the answer key's heading)
+    ("v_r,max, |a|_max", "vr,max, |a|max", ["r,max", "max"]),
+    ("μ_l, μ_s", "μl, μs", ["l", "s"]),            # a comma and a space end it
 ])
 def test_marked_examples(caption, plain, indices):
     text, spans = marked(caption)
@@ -51,11 +54,13 @@ def test_marked_examples(caption, plain, indices):
 def test_marked_is_the_text_without_the_marks_and_spans_are_the_indices(parts):
     """Written as plain parts each followed by "_" and an index, the notation reads back as
     the parts and indices joined, with exactly the indices as spans (when an index is not
-    followed by more of its own kind, which would lengthen it)."""
+    followed by more of its own kind, or by a comma and a letter or digit, which would
+    lengthen it)."""
     def kind(ch: str) -> str:
         return "digit" if ch.isdigit() else "letter" if ch in LATIN_GREEK or ch in "ABCxyz" else "other"
     for (_, index), (after, _) in zip(parts, parts[1:]):
         assume(not after or kind(after[0]) != kind(index[0]))
+        assume(not (after[:1] == "," and after[1:2] and kind(after[1]) != "other"))
     caption = "".join(f"{p}_{i}" for p, i in parts)
     text, spans = marked(caption)
     assert text == "".join(p + i for p, i in parts)

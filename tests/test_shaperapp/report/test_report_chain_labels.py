@@ -12,13 +12,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from PySide6.QtCore import QCoreApplication, QRectF
-from PySide6.QtGui import QColor, QFontInfo, QImage, QPainter
-from PySide6.QtSvg import QSvgRenderer
+from PySide6.QtCore import QCoreApplication
+from PySide6.QtGui import QFontInfo
 
 import shaperapp.report.figures as figures
 from core.linkage.metrics import analyze
 from core.linkage.spec import Spec
+from scheme_shots import darkest
 from shaperapp.scheme.view import SchemeWidget
 
 SCALE = 2                # rendered at 2 px per exported px
@@ -29,15 +29,7 @@ INK = 200
 def rendered(scheme, path) -> np.ndarray:
     """The exported scheme painted on white paper: its darkest channel per pixel."""
     scheme.export_image(str(path))
-    renderer = QSvgRenderer(str(path))
-    box = renderer.viewBoxF()
-    image = QImage(int(box.width() * SCALE), int(box.height() * SCALE), QImage.Format.Format_RGB32)
-    image.fill(QColor("white"))
-    painter = QPainter(image)
-    renderer.render(painter, QRectF(0, 0, image.width(), image.height()))
-    painter.end()
-    bits = np.frombuffer(image.constBits(), dtype=np.uint8).reshape(image.height(), image.bytesPerLine() // 4, 4)
-    return bits[:, :image.width(), :3].min(axis=2)
+    return darkest(str(path), SCALE)
 
 
 def ink_box(scheme, name, whole, path) -> tuple[int, int, int, int]:

@@ -15,12 +15,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from PySide6.QtCore import QCoreApplication
 
-import shaperapp.report.figures as figures
-from core.linkage.metrics import analyze
 from core.linkage.spec import Spec
-from shaperapp.scheme.view import SchemeWidget
+from scheme_shots import limit_frames
 
 SPECS = [Spec(mode="dimensions", crank=110.0, frame=380.0, lever=540.0, variant="rod", rod_ratio=0.25),
          Spec(crank=100.0, time_ratio=1.4, stroke=300.0)]
@@ -41,22 +38,6 @@ def led(scheme, box, joint) -> bool:
     return any(box_distance(box, end) < 1e-6 * (1.0 + abs(end).max())
                and np.hypot(*(start - joint)) < box_distance(box, joint)
                for start, end in pairs)
-
-
-def limit_frames(spec):
-    """The report's scheme at each limit position, as ``limit_schemes`` shows it: yields
-    (scheme, frame index)."""
-    rpms = [60.0]
-    views = figures.ReportViews(spec, rpms, None, analyze(spec.design(), rpms))
-    try:
-        scheme = views._show(SchemeWidget(views.model), *figures.SCHEME_PX)
-        for index in (0, views._end_index):
-            views.model.set_angle_index(index)
-            scheme.fit()
-            QCoreApplication.processEvents()
-            yield scheme, index
-    finally:
-        views.close()
 
 
 @pytest.mark.parametrize("spec", SPECS, ids=["scheme-I", "default"])

@@ -23,8 +23,15 @@ def reference_clear(obstacles: Obstacles, candidates: np.ndarray) -> np.ndarray:
     out = clear_of_segments(candidates, obstacles.ends[near], obstacles.margins[near])
     if obstacles.raster is not None:
         out &= obstacles.raster.hits(candidates) == 0
-    return (out & clear_of_boxes(candidates, np.array(obstacles.boxes).reshape(-1, 4))
-            & obstacles.inside(candidates))
+    for box, gap in zip(obstacles.boxes, gaps(obstacles)):
+        out &= clear_of_boxes(candidates, np.array([box]), gap)
+    return out & obstacles.inside(candidates)
+
+
+def gaps(obstacles: Obstacles) -> list[tuple[float, float]]:
+    """The gap (x, y) each taken box keeps: the labels' spacing, a turned text's its y both ways."""
+    x, y = obstacles.spacing
+    return [(y, y) if turned else (x, y) for turned in obstacles.turned]
 
 
 def reference_best(obstacles: Obstacles, candidates: np.ndarray, barred: np.ndarray | None = None) -> int:
@@ -40,8 +47,10 @@ def reference_best(obstacles: Obstacles, candidates: np.ndarray, barred: np.ndar
             + 10000.0 * ~obstacles.inside(candidates))
     if obstacles.raster is not None:
         hits = hits + np.minimum(obstacles.raster.hits(candidates), 100)
-    for box in obstacles.boxes:
-        hits += 1000.0 * ~clear_of_boxes(candidates, np.array([box]))
+    for box, gap in zip(obstacles.boxes, gaps(obstacles)):
+        overlap = ~clear_of_boxes(candidates, np.array([box]))
+        hits += 1000.0 * overlap + place_module.CLOSE_COST * (~clear_of_boxes(candidates, np.array([box]), gap)
+                                                             & ~overlap)
     if barred is not None:
         hits = hits + 100000.0 * barred
     return int(np.argmin(hits))
@@ -59,7 +68,9 @@ def scene(rng: np.random.Generator, lines: int) -> tuple[Obstacles, np.ndarray]:
     bounds = (-45.0, 45.0, -45.0, 45.0) if rng.random() < 0.5 else None
     taken = rng.uniform(-30.0, 30.0, (rng.integers(0, 4), 2))
     obstacles = Obstacles(ends, rng.uniform(0.2, 2.0, lines), boxes_at(taken, np.array([3.0, 1.5])),
-                          bounds, raster)
+                          bounds, raster, (rng.uniform(0.0, 3.0), rng.uniform(0.0, 1.0)))
+    for box in boxes_at(rng.uniform(-30.0, 30.0, (rng.integers(0, 3), 2)), np.array([4.0, 1.5])):
+        obstacles.add(box)                        # upright labels placed, beside the turned ones
     half = rng.uniform(1.0, 6.0, 2)
     centres, _ = around(rng.uniform(-10.0, 10.0, 2), half, rng.normal(size=2), 1.0, 2.0 * half[1])
     return obstacles, boxes_at(centres, half)

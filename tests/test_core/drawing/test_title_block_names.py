@@ -1,0 +1,80 @@
+"""The title block does not cut a name that could be read whole (the reviewer's class: the
+"Drawn" cell printed "Alexandra Konst…"). A student's name, number and class, the school,
+the supervisor and the date stay on one line as large as fits down to 2.5 mm, else go on
+two lines; only a text that two lines cannot hold is cut, and it ends in "…".
+
+The cells are located here from GB/T 10609.1's layout (180 × 56 mm in the border's lower
+right corner: the signature area 22 + 34 + 24 mm, the middle 22 + 28 mm, the name area
+50 mm with rows of 18, 18 and 20 mm; four rows of 14 mm), not from the title block's code.
+"""
+from __future__ import annotations
+
+import pytest
+
+from core.drawing.sheet import Text, paper
+from core.drawing.title_block import TITLE_ENGLISH, TitleBlock, sheet_title_block
+
+# values whose lines at 2.5 mm are far shorter than their cells on two lines (at most 12
+# Latin or 8 CJK characters a line), but longer than one line holds at 2.5 mm
+FITS = {
+    "en": dict(drawn="Alexandra Konstantinou", supervisor="Maximilian Schwarzer", number="202100123456",
+               group="ME 2101 Excellence", school="School of Mechanical Engineering", date="2026-11-30"),
+    "zh": dict(drawn="欧阳诸葛长风慕容司马上官复姓", supervisor="司马上官欧阳长风教授", number="202100123456",
+               group="机械工程及自动化2101班", school="机械工程与自动化学院卓越工程师学院", date="2026年11月30日"),
+}
+TOO_LONG = "Bartholomew-Alexander Konstantinopoulou-Papadimitriou von Habsburg-Lothringen"
+
+
+def cells(p) -> dict[str, tuple[float, float, float, float]]:
+    """Each user field's cell (x0, y0, x1, y1), mm."""
+    x1, y0 = p.border[2], p.border[1]
+    x0, top = x1 - 180.0, y0 + 56.0
+    row = lambda k: (top - 14.0 * (k + 1), top - 14.0 * k)           # noqa: E731
+    sign, mid = x0 + 22.0, x0 + 80.0 + 22.0
+    return {"drawn": (sign, *row(0))[:1] + (row(0)[0], sign + 34.0, row(0)[1]),
+            "date": (sign + 34.0, row(0)[0], sign + 58.0, row(0)[1]),
+            "supervisor": (sign, row(1)[0], sign + 34.0, row(1)[1]),
+            "number": (mid, row(0)[0], mid + 28.0, row(0)[1]),
+            "group": (mid, row(1)[0], mid + 28.0, row(1)[1]),
+            "school": (x1 - 50.0, top - 18.0, x1, top)}
+
+
+def field_lines(items, cell) -> list[Text]:
+    """The texts whose centre lies in ``cell``, top line first."""
+    texts = [t for t in items if isinstance(t, Text)]
+    inside = [t for t in texts if cell[0] < (t.box()[0] + t.box()[2]) / 2 < cell[2]
+              and cell[1] < (t.box()[1] + t.box()[3]) / 2 < cell[3]]
+    return sorted(inside, key=lambda t: -t.position[1])
+
+
+def drawn(block: TitleBlock, sheet: str = "A3"):
+    p = paper(sheet)
+    _, items = sheet_title_block(p, block, {**TITLE_ENGLISH, "title": "Motion analysis"}, "1:5")
+    return p, items
+
+
+@pytest.mark.parametrize("sheet", ["A3", "A1"])
+@pytest.mark.parametrize("language", FITS)
+def test_a_long_name_is_set_whole_on_two_lines_rather_than_cut(language, sheet):
+    values = FITS[language]
+    p, items = drawn(TitleBlock("Motion analysis", "s01", "1:5", "1/4", **values), sheet)
+    for field, cell in cells(p).items():
+        lines = field_lines(items, cell)
+        assert 1 <= len(lines) <= 2, (field, [t.text for t in lines])
+        for t in lines:
+            box = t.box()
+            assert cell[0] <= box[0] and box[2] <= cell[2] and cell[1] <= box[1] and box[3] <= cell[3], (field, t)
+            assert t.height >= 2.5
+        shown = "".join(t.text for t in lines)
+        assert "…" not in shown and shown.replace(" ", "") == values[field].replace(" ", ""), (field, shown)
+        if len(lines) == 2:                        # both lines of one height
+            assert lines[0].height == lines[1].height
+
+
+@pytest.mark.parametrize("field", ["drawn", "supervisor", "group", "school"])
+def test_what_two_lines_cannot_hold_is_cut_with_an_ellipsis(field):
+    p, items = drawn(TitleBlock("Motion analysis", "s01", "1:5", "1/4", **{field: TOO_LONG}))
+    lines = field_lines(items, cells(p)[field])
+    shown = "".join(t.text for t in lines)
+    assert shown.endswith("…"), shown
+    assert TOO_LONG.replace(" ", "").startswith(shown[:-1].replace(" ", "")), shown
