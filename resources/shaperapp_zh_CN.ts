@@ -5755,6 +5755,10 @@
         <translation>进给凸轮</translation>
     </message>
     <message>
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
+    </message>
+    <message>
         <source>must be greater than %1 and at most %2 %3</source>
         <translation>须大于 %1 且不大于 %2 %3</translation>
     </message>
@@ -5867,8 +5871,68 @@
         <translation>过小：在 %1 倍摆臂长以内没有能使压力角不超过许用值的凸轮</translation>
     </message>
     <message>
-        <source>leaves the pitch curve too sharp for any roller; lengthen the rise or the return</source>
-        <translation>使理论廓线过尖，任何滚子都会使廓线失真；请加大推程或回程运动角</translation>
+        <source>too large for the hub: must be at most %1 mm, so that the profile's smallest radius r0 − r stays at least hub + clearance = %2 mm</source>
+        <translation>对轮毂过大：不得超过 %1 mm，以使实际廓线最小半径 r0 − r 不小于轮毂半径 + 间隙 = %2 mm</translation>
+    </message>
+    <message>
+        <source>must be between %1 and %2 mm on this cam: at least %3 mm for the profile's largest radius R1 − r to stay within a − boss − clearance = %4 mm, at most %5 mm for it to clear the hub and stay round (ρmin = %6 mm)</source>
+        <translation>此凸轮的滚子须在 %1 与 %2 mm 之间：不小于 %3 mm，实际廓线最大半径 R1 − r 才不超出 a − 凸台半径 − 间隙 = %4 mm；不大于 %5 mm，廓线才避开轮毂且不失真（ρmin = %6 mm）</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm and clears the hub and the pivot boss; an arm of %2 mm gives one</source>
+        <translation>许用压力角内没有能装下 %1 mm 滚子并避开轮毂和摆动中心凸台的凸轮；摆臂长 %2 mm 时可以</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm and clears the hub and the pivot boss, with any arm up to %2 mm</source>
+        <translation>摆臂长不超过 %2 mm 时，许用压力角内没有能装下 %1 mm 滚子并避开轮毂和摆动中心凸台的凸轮</translation>
+    </message>
+    <message>
+        <source>the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm)</source>
+        <translation>理论廓线最小外凸曲率半径 ρmin = %1 mm，装不下 %2 mm 及以上的滚子（需 ρmin ≥ %3 mm）</translation>
+    </message>
+    <message>
+        <source>this cam takes no roller: its pitch curve's smallest convex radius ρmin = %1 mm and r0 − hub − clearance = %2 mm leave no room for one</source>
+        <translation>此凸轮装不下任何滚子：理论廓线最小外凸曲率半径 ρmin = %1 mm，r0 − 轮毂半径 − 间隙 = %2 mm，没有滚子的余地</translation>
+    </message>
+    <message>
+        <source>this cam takes no roller: the hub and ρmin = %1 mm allow one of at most %2 mm, the pivot boss needs one of at least %3 mm</source>
+        <translation>此凸轮装不下任何滚子：轮毂和 ρmin = %1 mm 只容许不大于 %2 mm 的滚子，摆动中心凸台却需要不小于 %3 mm 的滚子</translation>
+    </message>
+    <message>
+        <source>the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm)</source>
+        <translation>许用压力角下最小的凸轮装不下 %1 mm 及以上的滚子（ρmin = %2 mm）</translation>
+    </message>
+    <message>
+        <source>no roller up to the smallest cam's largest gives a cam within the allowances that clears the hub and the pivot boss</source>
+        <translation>不超过最小凸轮最大滚子的任何滚子，都得不到许用压力角内避开轮毂和摆动中心凸台的凸轮</translation>
+    </message>
+    <message>
+        <source>leave the base radius and the centre distance blank, and the synthesis gives r0 = %1 mm for this roller</source>
+        <translation>将校核基圆半径和中心距留空，综合对此滚子给出 r0 = %1 mm</translation>
+    </message>
+    <message>
+        <source>leave the base radius and the centre distance blank, and the synthesis gives r0 = %1 mm with a roller of %2 mm</source>
+        <translation>将校核基圆半径和中心距留空，综合给出 r0 = %1 mm、滚子 %2 mm</translation>
+    </message>
+    <message>
+        <source>leave the base radius, the centre distance and the roller blank, and the synthesis gives r0 = %1 mm with a roller of %2 mm</source>
+        <translation>将校核基圆半径、中心距和滚子留空，综合给出 r0 = %1 mm、滚子 %2 mm</translation>
+    </message>
+    <message>
+        <source>leave the base radius and the centre distance blank, and an arm of %1 mm gives one</source>
+        <translation>将校核基圆半径和中心距留空，摆臂长 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>leave the base radius, the centre distance and the roller blank, and an arm of %1 mm gives one</source>
+        <translation>将校核基圆半径、中心距和滚子留空，摆臂长 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>no synthesized cam takes one either, with any arm up to %1 mm</source>
+        <translation>摆臂长不超过 %1 mm 时，综合的凸轮也都装不下</translation>
+    </message>
+    <message>
+        <source>left blank, the roller is %1 mm on a base radius raised to %2 mm</source>
+        <translation>滚子留空时为 %1 mm，基圆半径增大到 %2 mm</translation>
     </message>
     <message>
         <source>must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam</source>
@@ -5889,14 +5953,6 @@
     <message>
         <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm</source>
         <translation>摆臂长不超过 %2 mm 时，许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮</translation>
-    </message>
-    <message>
-        <source>the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one</source>
-        <translation>理论廓线最小外凸曲率半径 ρmin = %1 mm，装不下 %2 mm 及以上的滚子（需 ρmin ≥ %3 mm）；将校核基圆半径和中心距留空，综合会增大凸轮直到能装下</translation>
-    </message>
-    <message>
-        <source>the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the roller is %3 mm on a base radius raised to %4 mm</source>
-        <translation>许用压力角下最小的凸轮装不下 %1 mm 及以上的滚子（ρmin = %2 mm）；滚子留空时为 %3 mm，基圆半径增大到 %4 mm</translation>
     </message>
     <message>
         <source>is not a design field</source>
