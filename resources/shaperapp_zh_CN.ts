@@ -5807,6 +5807,14 @@
         <translation>须高出导杆摆动中心 L2 + L1 = %1 mm 以上，使滑枕不与曲柄干涉</translation>
     </message>
     <message>
+        <source>must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank</source>
+        <translation>对此曲柄长和 K 须大于 %1 mm，按规则确定的滑枕导路才高过曲柄</translation>
+    </message>
+    <message>
+        <source>must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)</source>
+        <translation>须大于 %1 mm，按规则确定的滑枕导路才高过曲柄（导杆摆动中心以上 L2 + L1 = %2 mm）</translation>
+    </message>
+    <message>
         <source>must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide</source>
         <translation>须不大于导杆长度 %1 mm：导杆端部的滑块无法到达更高的导路</translation>
     </message>

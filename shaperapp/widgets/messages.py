@@ -103,6 +103,12 @@ _OWN_PATTERNS: tuple[tuple[str, str], ...] = (
      "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
     (r"must be > L2 \+ L1 = (\S+) mm above the lever pivot, so that the ram clears the crank$",
      "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
+    (r"must be > (\S+) mm for this crank and K, so that the ram guide its rule places clears the crank$",
+     "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank"),
+    (r"must be > (\S+) mm, so that the ram guide its rule places clears the crank \(L2 \+ L1 = (\S+) mm above "
+     r"the lever pivot\)$",
+     "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above "
+     "the lever pivot)"),
     (r"must be ≤ the lever length (\S+) mm: the block on the lever tip cannot reach a higher guide$",
      "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
     (r"must be > (\S+) mm to reach the guide line over the whole cycle$",
@@ -160,6 +166,10 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
         "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank":
             QCoreApplication.translate("messages", "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
+        "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank":
+            QCoreApplication.translate("messages", "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank"),
+        "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)":
+            QCoreApplication.translate("messages", "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)"),
         "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide":
             QCoreApplication.translate("messages", "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
         "must be more than %1 mm to reach the guide line over the whole cycle":
