@@ -172,3 +172,38 @@ def test_a_checked_cams_typed_roller_advice_works(inputs):
 @given(inputs=st.one_of(synthesized(), checked()))
 def test_typed_roller_advice_works_over_many_cams(inputs):
     assert_advice_works(inputs)
+
+
+# ---- the feed's timing against the linkage's cut (core.cam.timing) ----------------------
+FORM = CamInputs(arm_mm=120.0, program=Program(15.0, 60.0, 10.0, 60.0))
+
+
+def _timed(inputs: CamInputs, k: float, idle: float, phase: float | None):
+    from core.linkage.geometry import synthesize as linkage
+    return design_cam(inputs, linkage(100.0, k, 300.0), idle, phase)
+
+
+@settings(max_examples=examples(40), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@example(k=1.4, idle=0.05, phase=90.0)           # cli.md's: 409f94c said 182.6° and 257.4°, both refused
+@given(k=st.floats(1.05, 1.65), idle=st.floats(0.0, 0.2), phase=st.floats(0.0, 359.0))   # L1 100, H 300: from K = 1.671 the chord guide is below the crank
+def test_the_phase_range_typed_at_either_end_is_taken(k, idle, phase):
+    try:
+        _timed(FORM, k, idle, phase)
+        return
+    except DesignError as exc:
+        assert exc.parameter == "phase", exc.allowed
+        ends = re.search(r"the rise must start between (\S+)° and (\S+)° of crank angle", exc.allowed).groups()
+    for end in ends:
+        assert _timed(FORM, k, idle, float(end)).timing.phase_deg == pytest.approx(float(end) % 360.0)
+
+
+@pytest.mark.parametrize("k, rise, back", [(1.4, 100.0, 100.0), (1.6, 100.0, 100.0), (1.2, 120.0, 120.0), (1.3, 130.0, 90.0)])
+def test_a_feed_that_does_not_fit_fits_shortened_to_the_span_stated(k, rise, back):
+    program = Program(15.0, rise, 10.0, back)
+    with pytest.raises(DesignError) as refused:
+        _timed(replace(FORM, program=program), k, 0.05, None)
+    span = float(re.search(r"must fit in the (\S+)° the crank turns outside the cut", refused.value.allowed).group(1))
+    # the rise and the return shortened in proportion, to a sum of exactly the span stated
+    share = (span - program.dwell_deg) / (rise + back)
+    cam = _timed(replace(FORM, program=Program(15.0, rise * share, 10.0, span - 10.0 - rise * share)), k, 0.05, None)
+    assert cam.timing is not None
