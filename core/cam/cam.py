@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field, replace
 
 from core.base.errors import DesignError, require_range
+from core.linkage.verdict import round_text
 from . import advice
 from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, MAX_ARM_MM, MIN_ARM_MM, RETURN_PRESSURE_DEG
 from .extremes import min_convex_radius, pressure_peaks
@@ -128,10 +129,10 @@ def checked_follower(inputs: CamInputs) -> Follower:
     pressure angle (as a share of its allowance) is smaller."""
     a, r0, l = inputs.distance_mm, inputs.base_mm, inputs.arm_mm
     c = (a * a + l * l - r0 * r0) / (2.0 * a * l)
-    if not -1.0 < c < 1.0:
-        raise DesignError("base", r0, f"must be between |a − l| = {abs(a - l):.4g} mm and "
-                          f"a + l = {a + l:.4g} mm for the arm to reach the cam")
-    psi0 = math.degrees(math.acos(c))
+    if not abs(a - l) < r0 < a + l:         # on r0 itself: near an end c rounds to ±1
+        raise DesignError("base", r0, f"must be between |a − l| = {round_text(abs(a - l), 4)} mm and "
+                          f"a + l = {round_text(a + l, 4, down=True)} mm for the arm to reach the cam")
+    psi0 = math.degrees(math.acos(min(max(c, -1.0), 1.0)))
     candidates = [Follower(l, a, psi0, s) for s in (-1, 1)]
     check_follower(candidates[0], inputs.program)
 

@@ -60,7 +60,7 @@ def timing(program: Program, design, idle_fraction: float, phase_deg: float | No
     feed = program.feed_deg
     if feed > span:
         raise DesignError("rise", program.rise_deg,
-                          f"rise + outer dwell + return ({feed:g}°) must fit in the {_inward(span, down=True)}° "
+                          f"rise + outer dwell + return ({feed:g}°) must fit in the {round_text(span, 4, down=True)}° "
                           "the crank turns outside the cut")
     if phase_deg is None:
         return Timing(math.fmod(off + (span - feed) / 2.0, 360.0), off, span)
@@ -68,12 +68,6 @@ def timing(program: Program, design, idle_fraction: float, phase_deg: float | No
     since = (phase_deg - off) % 360.0
     if since + feed > span + 1e-9:
         raise DesignError("phase", phase_deg,
-                          f"feeds during the cut: the rise must start between {_inward(off)}° and "
-                          f"{_inward(math.fmod(off + span - feed, 360.0), down=True)}° of crank angle")
+                          f"feeds during the cut: the rise must start between {round_text(off, 4)}° and "
+                          f"{round_text(math.fmod(off + span - feed, 360.0), 4, down=True)}° of crank angle")
     return Timing(phase_deg % 360.0, off, span)
-
-
-def _inward(degrees: float, down: bool = False) -> str:
-    """An end of an allowed range, ° to 4 significant digits, rounded into the range (up for
-    its start, down for its end), so that typing it as printed passes."""
-    return "0" if degrees == 0.0 else round_text(degrees, 4, down=down)

@@ -207,3 +207,27 @@ def test_a_feed_that_does_not_fit_fits_shortened_to_the_span_stated(k, rise, bac
     share = (span - program.dwell_deg) / (rise + back)
     cam = _timed(replace(FORM, program=Program(15.0, rise * share, 10.0, span - 10.0 - rise * share)), k, 0.05, None)
     assert cam.timing is not None
+
+
+@settings(max_examples=examples(80), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(arm=st.floats(20.0, 400.0), distance=st.floats(20.0, 800.0), base=st.floats(1.0, 1200.0))
+def test_a_base_radius_at_either_end_of_the_stated_reach_is_reached(arm, distance, base):
+    """'must be between |a − l| and a + l' (strictly: at an end the arm lies along the line of
+    centres): just inside each end as printed, the arm reaches (the check of the cam it then
+    makes is another refusal, with its own advice)."""
+    inputs = replace(FORM, arm_mm=arm, base_mm=base, distance_mm=distance)
+    reach = r"must be between \|a − l\| = (\S+) mm and a \+ l = (\S+) mm for the arm to reach the cam"
+    try:
+        design_cam(inputs)
+        return
+    except DesignError as exc:
+        ends = re.search(reach, exc.allowed)
+        if ends is None:
+            return
+    low, high = (float(v) for v in ends.groups())
+    inside = 1e-9 * high                    # past the rounding of the arm's cosine at an end
+    for end in (low + inside, high - inside):
+        try:
+            design_cam(replace(inputs, base_mm=end))
+        except DesignError as exc:
+            assert not re.search(reach, exc.allowed), (end, exc.allowed)
