@@ -508,8 +508,8 @@
         <translation>%1 与第 %2 行重复；每名学生须有自己的学号</translation>
     </message>
     <message>
-        <source>the folder %1 is also line %2's; give the students different numbers</source>
-        <translation>文件夹 %1 与第 %2 行的相同；请给学生不同的学号</translation>
+        <source>the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold</source>
+        <translation>文件夹 %1 与第 %2 行的相同；请给其中一人换一个学号，且不只是大小写或文件夹名不能含的字符不同</translation>
     </message>
     <message>
         <source>has no name</source>
