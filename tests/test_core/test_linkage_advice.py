@@ -156,3 +156,19 @@ def test_a_rod_at_a_dead_centre_lengthened_as_advised_drives_the_lever(spec):
     assert any(passes)
     first = passes.index(True)
     assert all(passes[first:])
+
+
+@pytest.mark.parametrize("limit", [2_000_000, 200_000, 20_000])
+def test_the_step_named_for_too_many_samples_is_taken_for_every_number_of_speeds(limit):
+    """'use a step of at least X° for N speeds' (helped before: a check, no change)."""
+    from core.linkage.kinematics import MAX_SPEEDS, MIN_STEP_DEG, angle_count, check_request
+    refused = 0
+    for speeds in range(1, MAX_SPEEDS + 1):
+        try:
+            check_request(angle_count(MIN_STEP_DEG), speeds, "step", MIN_STEP_DEG, limit)
+            continue                            # the finest step is within the limit
+        except DesignError as exc:
+            step = float(re.search(r"use a step of at least (\S+)° for", exc.allowed).group(1))
+        refused += 1
+        assert check_request(angle_count(step), speeds, "step", step, limit) <= limit
+    assert refused >= MAX_SPEEDS - 1
