@@ -5943,6 +5943,18 @@
         <translation>滚子留空时为 %1 mm，基圆半径增大到 %2 mm</translation>
     </message>
     <message>
+        <source>an allowance of %1° gives one</source>
+        <translation>许用压力角为 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>a return allowance of %1° gives one</source>
+        <translation>回程许用压力角为 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>%1° on the rise and the return give one</source>
+        <translation>推程和回程许用压力角都为 %1° 时可以</translation>
+    </message>
+    <message>
         <source>must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam</source>
         <translation>须在 |a − l| = %1 mm 与 a + l = %2 mm 之间，摆臂才能接触凸轮</translation>
     </message>

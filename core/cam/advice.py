@@ -23,6 +23,8 @@ from .synthesis import largest_roller
 
 ARM_STEP_MM = 0.1
 """The resolution of the arm a refusal names."""
+ALLOWANCE_STEP_DEG = 0.1
+"""The resolution of an allowed pressure angle a refusal names."""
 ROLLER_DIGITS = 4
 """Significant digits of a roller a refusal names (rounded down, and designed so)."""
 ROLLER_HALVINGS = 12
@@ -41,17 +43,37 @@ def works(design: Design, inputs) -> bool:
     return True
 
 
-def shortest_arm(design: Design, inputs, top: float) -> float:
-    """A multiple of ARM_STEP_MM between the arm of ``inputs`` (refused) and ``top`` (which
-    works) whose cam works, found by bisection: the shortest if the arms that work are an
-    interval; a shorter one is not known to fail otherwise."""
-    lo, hi = inputs.arm_mm, top
-    while hi - lo > ARM_STEP_MM * (1.0 + 1e-9):
-        mid = math.ceil(0.5 * (lo + hi) / ARM_STEP_MM - 1e-9) * ARM_STEP_MM
+def least_on_grid(fine: Callable[[float], bool], lo: float, hi: float, step: float) -> float:
+    """A multiple of ``step`` in (lo, hi] that is ``fine``, found by bisection between ``lo``
+    (not fine) and ``hi`` (fine): the least if the fine values are an interval; a smaller
+    one is not known to fail otherwise."""
+    while hi - lo > step * (1.0 + 1e-9):
+        mid = float(f"{math.ceil(0.5 * (lo + hi) / step - 1e-9) * step:.10g}")    # as it prints
         if mid >= hi:
             break
-        lo, hi = (lo, mid) if works(design, replace(inputs, arm_mm=mid)) else (mid, hi)
+        lo, hi = (lo, mid) if fine(mid) else (mid, hi)
     return hi
+
+
+def shortest_arm(design: Design, inputs, top: float) -> float:
+    """A multiple of ARM_STEP_MM between the arm of ``inputs`` (refused) and ``top`` (which
+    works) whose cam works (:func:`least_on_grid`)."""
+    return least_on_grid(lambda arm: works(design, replace(inputs, arm_mm=arm)), inputs.arm_mm, top,
+                         ARM_STEP_MM)
+
+
+def least_allowance(design: Design, inputs, names: tuple[str, ...], most_deg: float) -> float | None:
+    """The least allowed pressure angle, set for each of ``names`` (``pressure_deg``,
+    ``return_pressure_deg``), a multiple of ALLOWANCE_STEP_DEG below ``most_deg``, with which
+    ``inputs`` design; None if the largest does not. Why designs and not the synthesis
+    alone: a larger allowance gives a smaller, sharper cam, which the roller's least size
+    or the room may then refuse."""
+    def fine(deg: float) -> bool:
+        return works(design, replace(inputs, **{name: deg for name in names}))
+    top = float(f"{math.floor(most_deg / ALLOWANCE_STEP_DEG - 1e-9) * ALLOWANCE_STEP_DEG:.10g}")
+    if not fine(top):
+        return None
+    return least_on_grid(fine, max(getattr(inputs, name) for name in names), top, ALLOWANCE_STEP_DEG)
 
 
 def arm_for_roller(design: Design, inputs, smallest: Follower) -> float | None:
@@ -76,7 +98,7 @@ def arm_for_typed_roller(design: Design, inputs) -> float | None:
     top = inputs.arm_mm
     while top < MAX_ARM_MM:
         top = min(2.0 * top, MAX_ARM_MM)
-        top = math.ceil(top / ARM_STEP_MM - 1e-9) * ARM_STEP_MM
+        top = float(f"{math.ceil(top / ARM_STEP_MM - 1e-9) * ARM_STEP_MM:.10g}")
         if top <= MAX_ARM_MM and works(design, replace(inputs, arm_mm=top)):
             return shortest_arm(design, inputs, top)
     return None

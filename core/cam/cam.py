@@ -163,6 +163,25 @@ def _solved(inputs: CamInputs, advise: bool) -> Cam:
         if not advise or inputs.roller_mm is None or inputs.base_mm is not None:
             raise
         raise _typed_advice(inputs) from None
+    except DesignError as exc:
+        if not advise or exc.parameter != "pressure" or inputs.base_mm is not None:
+            raise
+        raise _allowance_advice(inputs, exc) from None
+
+
+def _allowance_advice(inputs: CamInputs, error: DesignError) -> DesignError:
+    """An allowance too small for any cam within reach: the least rise allowance that gives
+    a whole cam, else the least return allowance (the rise's kept), else the least for
+    both, each designed (``advice.least_allowance``); else the refusal as it was."""
+    for names, what in ((("pressure_deg",), "an allowance of {}° gives one"),
+                        (("return_pressure_deg",), "a return allowance of {}° gives one"),
+                        (("pressure_deg", "return_pressure_deg"), "{}° on the rise and the return give one")):
+        least = advice.least_allowance(_probe, inputs, names, MAX_PRESSURE_DEG)
+        if least is not None:
+            name = names[0] if len(names) == 1 else "pressure_deg"
+            return DesignError(name.removesuffix("_deg"), getattr(inputs, name),
+                               f"{error.allowed}; {what.format(f'{least:.1f}')}")
+    return error
 
 
 def _probe(inputs: CamInputs) -> Cam:

@@ -103,6 +103,9 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
      "no synthesized cam takes one either, with any arm up to %1 mm"),
     (r"left blank, the roller is (\S+) mm on a base radius raised to (\S+) mm$",
      "left blank, the roller is %1 mm on a base radius raised to %2 mm"),
+    (r"an allowance of (\S+)° gives one$", "an allowance of %1° gives one"),
+    (r"a return allowance of (\S+)° gives one$", "a return allowance of %1° gives one"),
+    (r"(\S+)° on the rise and the return give one$", "%1° on the rise and the return give one"),
 )
 
 
@@ -165,4 +168,9 @@ def templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "no synthesized cam takes one either, with any arm up to %1 mm"),
         "left blank, the roller is %1 mm on a base radius raised to %2 mm":
             QCoreApplication.translate("messages", "left blank, the roller is %1 mm on a base radius raised to %2 mm"),
+        "an allowance of %1° gives one": QCoreApplication.translate("messages", "an allowance of %1° gives one"),
+        "a return allowance of %1° gives one":
+            QCoreApplication.translate("messages", "a return allowance of %1° gives one"),
+        "%1° on the rise and the return give one":
+            QCoreApplication.translate("messages", "%1° on the rise and the return give one"),
     }

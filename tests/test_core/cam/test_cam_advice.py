@@ -231,3 +231,36 @@ def test_a_base_radius_at_either_end_of_the_stated_reach_is_reached(arm, distanc
             design_cam(replace(inputs, base_mm=end))
         except DesignError as exc:
             assert not re.search(reach, exc.allowed), (end, exc.allowed)
+
+
+# ---- an allowance too small for any cam (core.cam.synthesis, core.cam.advice) -----------
+def _allowance_followed(inputs: CamInputs, error: DesignError) -> CamInputs:
+    text = error.allowed
+    if m := re.search(r"; an allowance of (\S+)° gives one$", text):
+        return replace(inputs, pressure_deg=float(m.group(1)))
+    if m := re.search(r"; a return allowance of (\S+)° gives one$", text):
+        return replace(inputs, return_pressure_deg=float(m.group(1)))
+    m = re.search(r"; (\S+)° on the rise and the return give one$", text)
+    assert m, text                                   # 409f94c: no amount ("is too small")
+    return replace(inputs, pressure_deg=float(m.group(1)), return_pressure_deg=float(m.group(1)))
+
+
+@settings(max_examples=examples(12), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@example(swing=15.0, rise=60.0, back=60.0, rise_allowed=5.0, back_allowed=70.0)    # 7.6°
+@example(swing=30.0, rise=40.0, back=40.0, rise_allowed=40.0, back_allowed=5.0)    # the return's
+@example(swing=30.0, rise=40.0, back=40.0, rise_allowed=10.0, back_allowed=5.0)    # both
+@given(swing=st.floats(5.0, 30.0), rise=st.floats(40.0, 150.0), back=st.floats(40.0, 150.0),
+       rise_allowed=st.floats(5.0, 20.0), back_allowed=st.floats(5.0, 20.0))
+def test_an_allowance_too_small_names_one_that_designs(swing, rise, back, rise_allowed, back_allowed):
+    inputs = CamInputs(arm_mm=120.0, program=Program(swing, rise, 10.0, back), pressure_deg=rise_allowed,
+                       return_pressure_deg=back_allowed)
+    try:
+        design_cam(inputs)
+        return
+    except DesignError as exc:
+        if "is too small: no cam within" not in exc.allowed:
+            return                                   # another refusal, with its own advice (above)
+        error = exc
+    assert error.parameter in ("pressure", "return_pressure")
+    cam = design_cam(_allowance_followed(inputs, error))
+    _assert_buildable(cam)

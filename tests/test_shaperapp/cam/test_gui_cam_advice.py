@@ -59,7 +59,10 @@ SHORT = CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "para
     CamInputs(**{**EXAMPLE.__dict__, "base_mm": 15.523, "distance_mm": 45.183}),   # ρmin < 6 mm; r0 and roller
     CamInputs(**{**EXAMPLE.__dict__, "roller_mm": 3.0}),                            # left blank, the roller is …
     CamInputs(**{**SHORT.__dict__, "roller_mm": 2.0}),                              # an arm of … gives one
-], ids=["hub", "no-roller", "sharp-checked", "blank", "arm"])
+    CamInputs(arm_mm=120.0, pressure_deg=5.0),                                      # an allowance of …
+    CamInputs(arm_mm=120.0, program=Program(30.0, 40.0, 10.0, 40.0), pressure_deg=10.0,
+              return_pressure_deg=5.0),                                             # … on both
+], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances"])
 def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
     with pytest.raises(DesignError) as refused:
         design_cam(inputs)
