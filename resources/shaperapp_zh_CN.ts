@@ -5879,6 +5879,14 @@
         <translation>过小：在 %1 倍摆臂长以内没有能使压力角不超过许用值的凸轮</translation>
     </message>
     <message>
+        <source>gives an arm that crosses the line of centres at the end of its swing; give a base radius below %1 mm</source>
+        <translation>使摆臂在摆程终点越过中心连线；请取小于 %1 mm 的基圆半径</translation>
+    </message>
+    <message>
+        <source>gives an arm that crosses the line of centres; choose another base radius</source>
+        <translation>使摆臂越过中心连线；请另选基圆半径</translation>
+    </message>
+    <message>
         <source>too large for the hub: must be at most %1 mm, so that the profile's smallest radius r0 − r stays at least hub + clearance = %2 mm</source>
         <translation>对轮毂过大：不得超过 %1 mm，以使实际廓线最小半径 r0 − r 不小于轮毂半径 + 间隙 = %2 mm</translation>
     </message>

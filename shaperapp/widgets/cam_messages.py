@@ -23,6 +23,11 @@ PATTERNS: tuple[tuple[str, str], ...] = (
      "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances"),
     (r"must be between \|a − l\| = (\S+) mm and a \+ l = (\S+) mm for the arm to reach the cam$",
      "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
+    (r"gives an arm that crosses the line of centres at the end of its swing; give a base radius below (\S+) "
+     r"mm$",
+     "gives an arm that crosses the line of centres at the end of its swing; give a base radius below %1 mm"),
+    (r"gives an arm that crosses the line of centres; choose another base radius$",
+     "gives an arm that crosses the line of centres; choose another base radius"),
     (r"give --base and --distance together to check a cam$",
      "give the base radius and the centre distance together to check a cam"),
     # a cam that does not fit its hub or the follower pivot's boss (core.cam.build)
@@ -124,6 +129,10 @@ def templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances"),
         "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam":
             QCoreApplication.translate("messages", "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
+        "gives an arm that crosses the line of centres at the end of its swing; give a base radius below %1 mm":
+            QCoreApplication.translate("messages", "gives an arm that crosses the line of centres at the end of its swing; give a base radius below %1 mm"),
+        "gives an arm that crosses the line of centres; choose another base radius":
+            QCoreApplication.translate("messages", "gives an arm that crosses the line of centres; choose another base radius"),
         "give the base radius and the centre distance together to check a cam":
             QCoreApplication.translate("messages", "give the base radius and the centre distance together to check a cam"),
         "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm":

@@ -264,3 +264,26 @@ def test_an_allowance_too_small_names_one_that_designs(swing, rise, back, rise_a
     assert error.parameter in ("pressure", "return_pressure")
     cam = design_cam(_allowance_followed(inputs, error))
     _assert_buildable(cam)
+
+
+@settings(max_examples=examples(40), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@example(arm=120.0, distance=110.0, swing=15.0, share=0.5)       # 409f94c: "choose another base radius"
+@given(arm=st.floats(20.0, 400.0), distance=st.floats(20.0, 800.0), swing=st.floats(5.0, 40.0),
+       share=st.floats(0.01, 0.99))
+def test_a_base_radius_whose_arm_crosses_the_line_of_centres_is_told_the_largest(arm, distance, swing, share):
+    """r0 between where the arm at the end of its swing reaches the line of centres and
+    a + l: refused with the bound, below which (typed as printed) the arm stays on its side."""
+    import math
+    most = math.sqrt(distance ** 2 + arm ** 2 + 2 * distance * arm * math.cos(math.radians(swing)))
+    base = most + share * (distance + arm - most)
+    inputs = replace(FORM, arm_mm=arm, program=Program(swing, 60.0, 10.0, 60.0), base_mm=base,
+                     distance_mm=distance)
+    with pytest.raises(DesignError) as refused:
+        design_cam(inputs)
+    m = re.search(r"crosses the line of centres at the end of its swing; give a base radius below (\S+) mm$",
+                  refused.value.allowed)
+    assert m and refused.value.parameter == "base", refused.value.allowed
+    try:
+        design_cam(replace(inputs, base_mm=float(m.group(1))))
+    except DesignError as exc:                       # another check, with its own advice
+        assert "crosses the line of centres" not in exc.allowed, exc.allowed

@@ -62,7 +62,8 @@ SHORT = CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "para
     CamInputs(arm_mm=120.0, pressure_deg=5.0),                                      # an allowance of …
     CamInputs(arm_mm=120.0, program=Program(30.0, 40.0, 10.0, 40.0), pressure_deg=10.0,
               return_pressure_deg=5.0),                                             # … on both
-], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances"])
+    CamInputs(arm_mm=120.0, base_mm=229.0, distance_mm=110.0),                      # crosses: below …
+], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances", "crosses"])
 def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
     with pytest.raises(DesignError) as refused:
         design_cam(inputs)
