@@ -2635,8 +2635,8 @@
         <translation>必须不少于 %1 且不多于 %2 个齿</translation>
     </message>
     <message>
-        <source>x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts</source>
-        <translation>x1 + x2 过小：两齿轮无法啮合（α′ ≤ 0）；请增大变位系数</translation>
+        <source>x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise x1 + x2 above %1</source>
+        <translation>x1 + x2 过小：两齿轮无法啮合（α′ ≤ 0）；请使 x1 + x2 大于 %1</translation>
     </message>
     <message>
         <source>must be more than a cos α = %1 mm (the working pressure angle would be 0)</source>

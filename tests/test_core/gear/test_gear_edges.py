@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 
 import pytest
 from hypothesis import assume, given, settings, strategies as st
@@ -132,3 +133,25 @@ def test_the_refusal_tells_the_two_sums_apart():
     text = refusal(z1=12, z2=40, module_mm=2.0, centre_mm=49.1049)
     given, least = re.search(r"x1 \+ x2 = (\S+), below the (\S+) ", text).groups()
     assert float(given) < float(least) and given != least
+
+
+@settings(max_examples=40, deadline=None)
+@given(z1=st.integers(5, 150), z2=st.integers(5, 150), alpha=st.floats(15.0, 30.0),
+       x2=st.floats(-5.0, 0.0), x1=st.floats(-5.0, 0.0))
+def test_a_shift_sum_too_negative_to_mesh_is_told_the_sum_that_meshes(z1, z2, alpha, x1, x2):
+    """'raise x1 + x2 above X' (409f94c: 'raise the shifts', by no amount): x1 raised so that
+    the sum is X as printed, the pair meshes (α′ > 0); another refusal may follow, with its
+    own advice."""
+    p = GearPairInputs(z1=z1, z2=z2, module_mm=4.0, pressure_angle_deg=alpha, x1=x1, x2=x2)
+    try:
+        design_pair(p)
+        return
+    except DesignError as exc:
+        m = re.search(r"the gears would not mesh \(α′ ≤ 0\); raise x1 \+ x2 above (\S+)$", exc.allowed)
+        if "would not mesh" not in exc.allowed:
+            return
+        assert m, exc.allowed
+    try:
+        design_pair(replace(p, x1=float(m.group(1)) - x2))
+    except DesignError as exc:
+        assert "would not mesh" not in exc.allowed, exc.allowed
