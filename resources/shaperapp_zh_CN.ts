@@ -5815,6 +5815,10 @@
         <translation>须大于 %1 mm，按规则确定的滑枕导路才高过曲柄（导杆摆动中心以上 L2 + L1 = %2 mm）</translation>
     </message>
     <message>
+        <source>must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)</source>
+        <translation>须不小于导路高度 %1 mm，导杆端部的滑块才能到达导路（曲柄销也才留在导杆上：L2 + L1 = %2 mm）</translation>
+    </message>
+    <message>
         <source>must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide</source>
         <translation>须不大于导杆长度 %1 mm：导杆端部的滑块无法到达更高的导路</translation>
     </message>

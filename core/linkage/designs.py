@@ -299,10 +299,17 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     with np.errstate(all="ignore"):
         reach = d.frame + d.crank
         tip_low = d.lever * np.sqrt(1.0 - np.minimum(d.crank / d.frame, 1.0) ** 2)  # L3·cos(θ/2)
-    verdict.check("lever", d.lever < reach, d.lever,
+    # the block variant's lever must also reach a guide above L2 + L1 (checked next): a lever
+    # of just L2 + L1 would leave that guide no height to take
+    tip = d.rod is None and np.asarray(d.guide > reach) & (d.guide > d.lever)
+    verdict.check("lever", (d.lever < reach) & ~tip, d.lever,
                   lambda i, at=Flat(reach, shape):
                       f"must be ≥ L2 + L1 = {round_text(at[i])} mm, "
                       "so that the crank pin stays on the lever")
+    verdict.check("lever", (d.lever < reach) & tip, d.lever,
+                  lambda i, at=Flat(d.guide, shape), low=Flat(reach, shape):
+                      f"must be ≥ the guide height {round_text(at[i])} mm, so that the block on the lever tip "
+                      f"reaches the guide (and the crank pin stays on the lever: L2 + L1 = {round_text(low[i])} mm)")
     verdict.check("guide", d.guide <= reach, d.guide,
                   lambda i, at=Flat(reach, shape):
                       f"must be > L2 + L1 = {round_text(at[i])} mm above the lever "

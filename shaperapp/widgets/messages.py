@@ -109,6 +109,10 @@ _OWN_PATTERNS: tuple[tuple[str, str], ...] = (
      r"the lever pivot\)$",
      "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above "
      "the lever pivot)"),
+    (r"must be ≥ the guide height (\S+) mm, so that the block on the lever tip reaches the guide \(and the "
+     r"crank pin stays on the lever: L2 \+ L1 = (\S+) mm\)$",
+     "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the "
+     "crank pin stays on the lever: L2 + L1 = %2 mm)"),
     (r"must be ≤ the lever length (\S+) mm: the block on the lever tip cannot reach a higher guide$",
      "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
     (r"must be > (\S+) mm to reach the guide line over the whole cycle$",
@@ -170,6 +174,8 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank"),
         "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)":
             QCoreApplication.translate("messages", "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)"),
+        "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)":
+            QCoreApplication.translate("messages", "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)"),
         "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide":
             QCoreApplication.translate("messages", "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
         "must be more than %1 mm to reach the guide line over the whole cycle":

@@ -24,7 +24,7 @@ from sweeps import examples
 
 FIELD = {"crank": "crank", "time_ratio": "time_ratio", "stroke": "stroke", "frame": "frame",
          "lever": "lever", "guide": "guide_height", "rod": "rod_length"}
-BOUND = re.compile(r"must be (≥|≤|>|<) (?:L2 \+ L1 = |the lever length )?(\S+) ")
+BOUND = re.compile(r"must be (≥|≤|>|<) (?:L2 \+ L1 = |the lever length |the guide height )?(\S+) ")
 
 
 def followed(spec: Spec, error: DesignError) -> Spec | None:
@@ -59,7 +59,8 @@ def assert_bound_passes(spec: Spec) -> None:
 
 @pytest.mark.parametrize("spec, said", [
     (Spec(mode="dimensions", crank=420.5413913933817, frame=907.1724807518907, lever=249.34295831459406,
-          guide_rule="height", guide_height=1500.0), "must be ≥ L2 + L1 = 1327.72 mm"),      # was 1327.71
+          variant="rod", rod_input="length", rod_length=1000.0, guide_rule="height", guide_height=1500.0),
+     "must be ≥ L2 + L1 = 1327.72 mm"),                                                       # was 1327.71
     (Spec(mode="synthesis", crank=228.60837332099058, time_ratio=2.468203959754513, stroke=730.5142045993847,
           guide_rule="height", guide_height=1206.7082742411123), "must be ≥ 739.4 mm"),     # was 739.3
     (Spec(mode="dimensions", crank=581.7339836735187, frame=1157.3664429406597, lever=1881.3756869497438,
@@ -89,6 +90,17 @@ def test_under_a_guide_rule_the_lever_or_stroke_named_places_the_guide_clear_of_
     less = replace(spec, **{field: float(BOUND.match(refused.value.allowed).group(2)) * (1 - 1e-5)})
     with pytest.raises(DesignError, match="so that the ram guide its rule places clears the crank"):
         less.design()
+
+
+def test_a_block_lever_too_short_for_its_guide_is_told_the_guide_height():
+    """The block variant with a guide above L2 + L1 but above the lever too: 409f94c said
+    'must be ≥ L2 + L1 = 400 mm', and a lever of 400 mm then left the guide no height to take
+    (it must be > 400 mm and ≤ the lever)."""
+    spec = Spec(mode="dimensions", crank=100.0, frame=300.0, lever=350.0, guide_rule="height", guide_height=450.0)
+    with pytest.raises(DesignError) as refused:
+        spec.design()
+    assert refused.value.allowed.startswith("must be ≥ the guide height 450 mm")
+    assert followed(spec, refused.value).design().lever == 450.0
 
 
 @st.composite
