@@ -5815,6 +5815,10 @@
         <translation>须大于 %1 mm，按规则确定的滑枕导路才高过曲柄（导杆摆动中心以上 L2 + L1 = %2 mm）</translation>
     </message>
     <message>
+        <source>must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm</source>
+        <translation>对此曲柄长和 K 须不小于 %1 mm，导杆端部的滑块才能到达 %2 mm 高的导路</translation>
+    </message>
+    <message>
         <source>must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)</source>
         <translation>须不小于导路高度 %1 mm，导杆端部的滑块才能到达导路（曲柄销也才留在导杆上：L2 + L1 = %2 mm）</translation>
     </message>

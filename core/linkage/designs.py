@@ -167,8 +167,16 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         if ruled:               # the guide the rule places must clear the crank too: a longer lever
             need = need / guide_share(extra[0], theta)
             too_short = lever <= (crank + frame) / guide_share(extra[0], theta)
+        # the block on the lever's tip must reach a guide set above L2 + L1 (check_designs)
+        block_at_height = not ruled and extra[1] is None and extra[2] is None
+        tip = np.broadcast_to(block_at_height and (extra[0] > crank + frame), shape) & too_short
     verdict.check("time_ratio", half < smallest, time_ratio,
                   lambda i, at=Flat(k_min, shape): _k_min_text(float(at[i])))
+    verdict.check("stroke", tip, stroke,
+                  lambda i, at=Flat(2.0 * half * extra[0] if np.any(tip) else need, shape),
+                  height=Flat(extra[0] if np.any(tip) else need, shape):
+                      f"must be ≥ {math.ceil(at[i] * 10.0) / 10.0:.1f} mm for this crank and K, so that the "
+                      f"block on the lever tip reaches the guide height {round_text(height[i])} mm")
     verdict.check("stroke", too_short, stroke,
                   (lambda i, at=Flat(need, shape): f"must be > {round_text(at[i])} mm for this crank and K, "
                    "so that the ram guide its rule places clears the crank") if ruled else

@@ -109,6 +109,9 @@ _OWN_PATTERNS: tuple[tuple[str, str], ...] = (
      r"the lever pivot\)$",
      "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above "
      "the lever pivot)"),
+    (r"must be ≥ (\S+) mm for this crank and K, so that the block on the lever tip reaches the guide height "
+     r"(\S+) mm$",
+     "must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm"),
     (r"must be ≥ the guide height (\S+) mm, so that the block on the lever tip reaches the guide \(and the "
      r"crank pin stays on the lever: L2 \+ L1 = (\S+) mm\)$",
      "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the "
@@ -174,6 +177,8 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank"),
         "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)":
             QCoreApplication.translate("messages", "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)"),
+        "must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm":
+            QCoreApplication.translate("messages", "must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm"),
         "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)":
             QCoreApplication.translate("messages", "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)"),
         "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide":

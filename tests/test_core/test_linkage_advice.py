@@ -62,7 +62,8 @@ def assert_bound_passes(spec: Spec) -> None:
           variant="rod", rod_input="length", rod_length=1000.0, guide_rule="height", guide_height=1500.0),
      "must be ≥ L2 + L1 = 1327.72 mm"),                                                       # was 1327.71
     (Spec(mode="synthesis", crank=228.60837332099058, time_ratio=2.468203959754513, stroke=730.5142045993847,
-          guide_rule="height", guide_height=1206.7082742411123), "must be ≥ 739.4 mm"),     # was 739.3
+          variant="rod", rod_input="length", rod_length=1000.0, guide_rule="height",
+          guide_height=1206.7082742411123), "must be ≥ 739.4 mm"),                       # was 739.3
     (Spec(mode="dimensions", crank=581.7339836735187, frame=1157.3664429406597, lever=1881.3756869497438,
           guide_rule="height", guide_height=504.51467800226663), "must be > L2 + L1 = 1739.11 mm"),  # was 1739.1
 ])
@@ -101,6 +102,17 @@ def test_a_block_lever_too_short_for_its_guide_is_told_the_guide_height():
         spec.design()
     assert refused.value.allowed.startswith("must be ≥ the guide height 450 mm")
     assert followed(spec, refused.value).design().lever == 450.0
+
+
+def test_a_block_stroke_too_short_for_its_guide_is_told_the_stroke_that_reaches_it():
+    """Synthesis, the block variant, a guide set above L2 + L1: 409f94c said 'must be ≥ 503.6
+    mm … so that the crank pin stays on the lever', whose lever then fell short of the guide."""
+    spec = Spec(crank=200.0, time_ratio=1.4, stroke=300.0, guide_rule="height", guide_height=1200.0)
+    with pytest.raises(DesignError) as refused:
+        spec.design()
+    assert refused.value.allowed.startswith("must be ≥ 621.2 mm for this crank and K, so that the block on the "
+                                            "lever tip reaches the guide height 1200 mm")
+    assert followed(spec, refused.value).design().lever >= 1200.0
 
 
 @st.composite
