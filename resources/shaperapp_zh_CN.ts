@@ -508,8 +508,8 @@
         <translation>%1 与第 %2 行重复；每名学生须有自己的学号</translation>
     </message>
     <message>
-        <source>the folder %1 is also line %2's; give the students different numbers</source>
-        <translation>文件夹 %1 与第 %2 行的相同；请给学生不同的学号</translation>
+        <source>the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold</source>
+        <translation>文件夹 %1 与第 %2 行的相同；请给其中一人换一个学号，且不只是大小写或文件夹名不能含的字符不同</translation>
     </message>
     <message>
         <source>has no name</source>
@@ -2671,8 +2671,8 @@
         <translation>必须不少于 %1 且不多于 %2 个齿</translation>
     </message>
     <message>
-        <source>x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts</source>
-        <translation>x1 + x2 过小：两齿轮无法啮合（α′ ≤ 0）；请增大变位系数</translation>
+        <source>x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise x1 + x2 above %1</source>
+        <translation>x1 + x2 过小：两齿轮无法啮合（α′ ≤ 0）；请使 x1 + x2 大于 %1</translation>
     </message>
     <message>
         <source>must be more than a cos α = %1 mm (the working pressure angle would be 0)</source>
@@ -5791,6 +5791,10 @@
         <translation>进给凸轮</translation>
     </message>
     <message>
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
+    </message>
+    <message>
         <source>must be greater than %1 and at most %2 %3</source>
         <translation>须大于 %1 且不大于 %2 %3</translation>
     </message>
@@ -5837,6 +5841,22 @@
     <message>
         <source>must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank</source>
         <translation>须高出导杆摆动中心 L2 + L1 = %1 mm 以上，使滑枕不与曲柄干涉</translation>
+    </message>
+    <message>
+        <source>must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank</source>
+        <translation>对此曲柄长和 K 须大于 %1 mm，按规则确定的滑枕导路才高过曲柄</translation>
+    </message>
+    <message>
+        <source>must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)</source>
+        <translation>须大于 %1 mm，按规则确定的滑枕导路才高过曲柄（导杆摆动中心以上 L2 + L1 = %2 mm）</translation>
+    </message>
+    <message>
+        <source>must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm</source>
+        <translation>对此曲柄长和 K 须不小于 %1 mm，导杆端部的滑块才能到达 %2 mm 高的导路</translation>
+    </message>
+    <message>
+        <source>must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)</source>
+        <translation>须不小于导路高度 %1 mm，导杆端部的滑块才能到达导路（曲柄销也才留在导杆上：L2 + L1 = %2 mm）</translation>
     </message>
     <message>
         <source>must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide</source>
@@ -5903,8 +5923,88 @@
         <translation>过小：在 %1 倍摆臂长以内没有能使压力角不超过许用值的凸轮</translation>
     </message>
     <message>
-        <source>leaves the pitch curve too sharp for any roller; lengthen the rise or the return</source>
-        <translation>使理论廓线过尖，任何滚子都会使廓线失真；请加大推程或回程运动角</translation>
+        <source>gives an arm that crosses the line of centres at the end of its swing; give a base radius below %1 mm</source>
+        <translation>使摆臂在摆程终点越过中心连线；请取小于 %1 mm 的基圆半径</translation>
+    </message>
+    <message>
+        <source>gives an arm that crosses the line of centres; choose another base radius</source>
+        <translation>使摆臂越过中心连线；请另选基圆半径</translation>
+    </message>
+    <message>
+        <source>too large for the hub: must be at most %1 mm, so that the profile's smallest radius r0 − r stays at least hub + clearance = %2 mm</source>
+        <translation>对轮毂过大：不得超过 %1 mm，以使实际廓线最小半径 r0 − r 不小于轮毂半径 + 间隙 = %2 mm</translation>
+    </message>
+    <message>
+        <source>must be between %1 and %2 mm on this cam: at least %3 mm for the profile's largest radius R1 − r to stay within a − boss − clearance = %4 mm, at most %5 mm for it to clear the hub and stay round (ρmin = %6 mm)</source>
+        <translation>此凸轮的滚子须在 %1 与 %2 mm 之间：不小于 %3 mm，实际廓线最大半径 R1 − r 才不超出 a − 凸台半径 − 间隙 = %4 mm；不大于 %5 mm，廓线才避开轮毂且不失真（ρmin = %6 mm）</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm and clears the hub and the pivot boss; an arm of %2 mm gives one</source>
+        <translation>许用压力角内没有能装下 %1 mm 滚子并避开轮毂和摆动中心凸台的凸轮；摆臂长 %2 mm 时可以</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm and clears the hub and the pivot boss, with any arm up to %2 mm</source>
+        <translation>摆臂长不超过 %2 mm 时，许用压力角内没有能装下 %1 mm 滚子并避开轮毂和摆动中心凸台的凸轮</translation>
+    </message>
+    <message>
+        <source>the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm)</source>
+        <translation>理论廓线最小外凸曲率半径 ρmin = %1 mm，装不下 %2 mm 及以上的滚子（需 ρmin ≥ %3 mm）</translation>
+    </message>
+    <message>
+        <source>this cam takes no roller: its pitch curve's smallest convex radius ρmin = %1 mm and r0 − hub − clearance = %2 mm leave no room for one</source>
+        <translation>此凸轮装不下任何滚子：理论廓线最小外凸曲率半径 ρmin = %1 mm，r0 − 轮毂半径 − 间隙 = %2 mm，没有滚子的余地</translation>
+    </message>
+    <message>
+        <source>this cam takes no roller: the hub and ρmin = %1 mm allow one of at most %2 mm, the pivot boss needs one of at least %3 mm</source>
+        <translation>此凸轮装不下任何滚子：轮毂和 ρmin = %1 mm 只容许不大于 %2 mm 的滚子，摆动中心凸台却需要不小于 %3 mm 的滚子</translation>
+    </message>
+    <message>
+        <source>the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm)</source>
+        <translation>许用压力角下最小的凸轮装不下 %1 mm 及以上的滚子（ρmin = %2 mm）</translation>
+    </message>
+    <message>
+        <source>no roller up to the smallest cam's largest gives a cam within the allowances that clears the hub and the pivot boss</source>
+        <translation>不超过最小凸轮最大滚子的任何滚子，都得不到许用压力角内避开轮毂和摆动中心凸台的凸轮</translation>
+    </message>
+    <message>
+        <source>leave the base radius and the centre distance blank, and the synthesis gives r0 = %1 mm for this roller</source>
+        <translation>将校核基圆半径和中心距留空，综合对此滚子给出 r0 = %1 mm</translation>
+    </message>
+    <message>
+        <source>leave the base radius and the centre distance blank, and the synthesis gives r0 = %1 mm with a roller of %2 mm</source>
+        <translation>将校核基圆半径和中心距留空，综合给出 r0 = %1 mm、滚子 %2 mm</translation>
+    </message>
+    <message>
+        <source>leave the base radius, the centre distance and the roller blank, and the synthesis gives r0 = %1 mm with a roller of %2 mm</source>
+        <translation>将校核基圆半径、中心距和滚子留空，综合给出 r0 = %1 mm、滚子 %2 mm</translation>
+    </message>
+    <message>
+        <source>leave the base radius and the centre distance blank, and an arm of %1 mm gives one</source>
+        <translation>将校核基圆半径和中心距留空，摆臂长 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>leave the base radius, the centre distance and the roller blank, and an arm of %1 mm gives one</source>
+        <translation>将校核基圆半径、中心距和滚子留空，摆臂长 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>no synthesized cam takes one either, with any arm up to %1 mm</source>
+        <translation>摆臂长不超过 %1 mm 时，综合的凸轮也都装不下</translation>
+    </message>
+    <message>
+        <source>left blank, the roller is %1 mm on a base radius raised to %2 mm</source>
+        <translation>滚子留空时为 %1 mm，基圆半径增大到 %2 mm</translation>
+    </message>
+    <message>
+        <source>an allowance of %1° gives one</source>
+        <translation>许用压力角为 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>a return allowance of %1° gives one</source>
+        <translation>回程许用压力角为 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>%1° on the rise and the return give one</source>
+        <translation>推程和回程许用压力角都为 %1° 时可以</translation>
     </message>
     <message>
         <source>must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam</source>
@@ -5925,14 +6025,6 @@
     <message>
         <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm</source>
         <translation>摆臂长不超过 %2 mm 时，许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮</translation>
-    </message>
-    <message>
-        <source>the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one</source>
-        <translation>理论廓线最小外凸曲率半径 ρmin = %1 mm，装不下 %2 mm 及以上的滚子（需 ρmin ≥ %3 mm）；将校核基圆半径和中心距留空，综合会增大凸轮直到能装下</translation>
-    </message>
-    <message>
-        <source>the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the roller is %3 mm on a base radius raised to %4 mm</source>
-        <translation>许用压力角下最小的凸轮装不下 %1 mm 及以上的滚子（ρmin = %2 mm）；滚子留空时为 %3 mm，基圆半径增大到 %4 mm</translation>
     </message>
     <message>
         <source>is not a design field</source>

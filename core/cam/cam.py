@@ -11,16 +11,18 @@ import math
 from dataclasses import dataclass, field, replace
 
 from core.base.errors import DesignError, require_range
-from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, RETURN_PRESSURE_DEG
+from core.linkage.verdict import round_text
+from . import advice
+from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, MAX_ARM_MM, MIN_ARM_MM, RETURN_PRESSURE_DEG
 from .extremes import min_convex_radius, pressure_peaks
 from .follower import Follower, check_follower
 from .laws import Program
 from .build import (MIN_ROLLER_MM, FitError, Room, pitch_max_radius, raised, require_buildable,
                     roller_for_hub, shortfalls)
+from .roller_range import no_roller_text, refusal_text, roller_range, too_large_text
 from .synthesis import Allowance, convex_radius_for, largest_roller, synthesize
 from .timing import Timing, timing
 
-MIN_ARM_MM, MAX_ARM_MM = 1.0, 5000.0
 MIN_PRESSURE_DEG, MAX_PRESSURE_DEG = 5.0, 85.0
 """Allowances, degrees: at a right angle the cam pushes across the arm and jams; below 5°
 the cam would be many times the arm's size."""
@@ -127,10 +129,10 @@ def checked_follower(inputs: CamInputs) -> Follower:
     pressure angle (as a share of its allowance) is smaller."""
     a, r0, l = inputs.distance_mm, inputs.base_mm, inputs.arm_mm
     c = (a * a + l * l - r0 * r0) / (2.0 * a * l)
-    if not -1.0 < c < 1.0:
-        raise DesignError("base", r0, f"must be between |a − l| = {abs(a - l):.4g} mm and "
-                          f"a + l = {a + l:.4g} mm for the arm to reach the cam")
-    psi0 = math.degrees(math.acos(c))
+    if not abs(a - l) < r0 < a + l:         # on r0 itself: near an end c rounds to ±1
+        raise DesignError("base", r0, f"must be between |a − l| = {round_text(abs(a - l), 4)} mm and "
+                          f"a + l = {round_text(a + l, 4, down=True)} mm for the arm to reach the cam")
+    psi0 = math.degrees(math.acos(min(max(c, -1.0), 1.0)))
     candidates = [Follower(l, a, psi0, s) for s in (-1, 1)]
     check_follower(candidates[0], inputs.program)
 
@@ -154,7 +156,40 @@ def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
 
 def _solved(inputs: CamInputs, advise: bool) -> Cam:
     """:func:`design_cam` without the timing; ``advise``: a refusal for want of a roller
-    searches for the arm that gives one (a probe of that search does not)."""
+    searches for what gives one (a probe of that search does not, :func:`_probe`)."""
+    try:
+        return _designed(inputs, advise)
+    except (RollerError, FitError):
+        if not advise or inputs.roller_mm is None or inputs.base_mm is not None:
+            raise
+        raise _typed_advice(inputs) from None
+    except DesignError as exc:
+        if not advise or exc.parameter != "pressure" or inputs.base_mm is not None:
+            raise
+        raise _allowance_advice(inputs, exc) from None
+
+
+def _allowance_advice(inputs: CamInputs, error: DesignError) -> DesignError:
+    """An allowance too small for any cam within reach: the least rise allowance that gives
+    a whole cam, else the least return allowance (the rise's kept), else the least for
+    both, each designed (``advice.least_allowance``); else the refusal as it was."""
+    for names, what in ((("pressure_deg",), "an allowance of {}° gives one"),
+                        (("return_pressure_deg",), "a return allowance of {}° gives one"),
+                        (("pressure_deg", "return_pressure_deg"), "{}° on the rise and the return give one")):
+        least = advice.least_allowance(_probe, inputs, names, MAX_PRESSURE_DEG)
+        if least is not None:
+            name = names[0] if len(names) == 1 else "pressure_deg"
+            return DesignError(name.removesuffix("_deg"), getattr(inputs, name),
+                               f"{error.allowed}; {what.format(f'{least:.1f}')}")
+    return error
+
+
+def _probe(inputs: CamInputs) -> Cam:
+    """A whole design, refused without advice: what ``advice``'s searches try."""
+    return _solved(inputs, advise=False)
+
+
+def _designed(inputs: CamInputs, advise: bool) -> Cam:
     synthesized, typed = inputs.base_mm is None, inputs.roller_mm is not None
     if synthesized:
         f = synthesize(inputs.arm_mm, inputs.program, inputs.allowance)
@@ -162,12 +197,12 @@ def _solved(inputs: CamInputs, advise: bool) -> Cam:
         f = checked_follower(inputs)
     smallest = f
     up, back, rho = figures(f, inputs.program)
-    if typed:
-        try:
-            biggest, roller = _largest(inputs, rho), inputs.roller_mm
-            _check_roller(roller, biggest, rho)
-        except DesignError as exc:
-            raise _blank_hint(exc, inputs, rho) from None
+    if typed and not synthesized:
+        biggest, roller = largest_roller(rho), inputs.roller_mm
+        _require_typed_fits(inputs, f, rho)
+    elif typed:
+        biggest, roller = largest_roller(rho), inputs.roller_mm
+        _check_roller(roller, biggest, rho)
     else:
         biggest = largest_roller(rho)
         roller = max(biggest, MIN_ROLLER_MM) if synthesized else roller_for_hub(biggest, f, inputs.room)
@@ -180,38 +215,87 @@ def _solved(inputs: CamInputs, advise: bool) -> Cam:
     return Cam(inputs, f, roller, biggest, rho, up, back, None, raised_from)
 
 
-def _largest(inputs: CamInputs, rho: float) -> float:
-    """The largest roller for the pitch curve's smallest convex radius ``rho``."""
-    biggest = largest_roller(rho)
-    if biggest <= 0.0:
-        raise DesignError("swing", inputs.program.swing_deg,
-                          f"leaves the pitch curve too sharp for any roller (smallest convex radius "
-                          f"{rho:.3g} mm); lengthen the rise or the return")
-    return biggest
+class RollerError(DesignError):
+    """A synthesized cam refusing its typed roller for its curvature: :func:`_typed_advice`
+    says instead what works (as for a FitError, a raise that found no room for it)."""
 
 
-def _blank_hint(error: DesignError, inputs: CamInputs, rho: float) -> DesignError:
-    """A typed roller's refusal where the smallest cam takes no roller of MIN_ROLLER_MM: the
-    bound it would state is below any roller made, so it says what a blank roller gives
-    instead (the automatic choice raises the base radius for one), if that is a cam."""
-    if inputs.base_mm is not None or largest_roller(rho) >= MIN_ROLLER_MM:
-        return error
+def _typed_advice(inputs: CamInputs) -> DesignError:
+    """What to change when a synthesized cam refuses its typed roller, the first of these
+    that designs: a smaller roller (the largest that works), a blank one (the automatic
+    choice raises the base radius for one), a longer arm; each value designed before it is
+    named (``advice``)."""
+    f = synthesize(inputs.arm_mm, inputs.program, inputs.allowance)
+    rho = min_convex_radius(f, inputs.program)
+    if largest_roller(rho) >= MIN_ROLLER_MM:
+        most = advice.largest_typed_roller(_probe, inputs, largest_roller(rho))
+        if most is not None:
+            taken = _probe(replace(inputs, roller_mm=float(most)))
+            return DesignError("roller", inputs.roller_mm, too_large_text(most, taken.min_curvature_radius_mm))
     try:
-        cam = _solved(replace(inputs, roller_mm=None), advise=False)
+        cam = _probe(replace(inputs, roller_mm=None))
     except DesignError:
-        return error
-    return DesignError("roller", inputs.roller_mm,
-                       f"the smallest cam for the allowances takes no roller of {MIN_ROLLER_MM:g} mm or "
-                       f"more (ρmin = {rho:.4g} mm); left blank, the roller is {cam.roller_mm:.4g} mm on "
-                       f"a base radius raised to {cam.base_radius_mm:.4g} mm")
+        cam = None
+    blank = None if cam is None else \
+        f"left blank, the roller is {cam.roller_mm:.4g} mm on a base radius raised to {cam.base_radius_mm:.4g} mm"
+    if blank is not None and largest_roller(rho) < MIN_ROLLER_MM:
+        return DesignError("roller", inputs.roller_mm,
+                           f"the smallest cam for the allowances takes no roller of {MIN_ROLLER_MM:g} mm or "
+                           f"more (ρmin = {rho:.4g} mm); {blank}")
+    if blank is not None:
+        return DesignError("roller", inputs.roller_mm, "no roller up to the smallest cam's largest gives a cam "
+                           f"within the allowances that clears the hub and the pivot boss; {blank}")
+    none = f"no cam within the allowances takes a roller of {inputs.roller_mm:.4g} mm and clears the hub and the pivot boss"
+    arm = advice.arm_for_typed_roller(_probe, inputs)
+    if arm is None:
+        return FitError("swing", inputs.program.swing_deg, f"{none}, with any arm up to {MAX_ARM_MM:g} mm")
+    return FitError("arm", inputs.arm_mm, f"{none}; an arm of {arm:.1f} mm gives one")
 
 
 def _check_roller(roller: float, biggest: float, rho: float) -> None:
+    """A synthesized cam's typed roller, against its curvature (the raise sees to the hub
+    and the boss); the bound stated rounded down, so that typing it passes."""
     if roller > biggest * (1.0 + 1e-12):
-        raise DesignError("roller", roller,
-                          f"too large: must be ≤ {biggest:.4g} mm (r ≤ 0.8·ρmin and ρmin − r ≥ 3 mm); "
-                          f"the pitch curve's smallest convex radius ρmin is {rho:.4g} mm, and a "
-                          "roller that large undercuts the profile or leaves it pointed")
+        raise RollerError("roller", roller, too_large_text(f"{biggest:.4g}", rho))
+
+
+def _require_typed_fits(inputs: CamInputs, f: Follower, rho: float) -> None:
+    """A checked cam's typed roller against all three of its bounds at once (see
+    :mod:`roller_range`): refused naming the range it takes, or, if it takes none, the base
+    radius with what leaving the cam to the synthesis gives."""
+    span = roller_range(f, inputs.program, rho, inputs.room)
+    if span.takes(inputs.roller_mm):
+        return
+    stated = span.stated()
+    if stated is not None:
+        raise DesignError("roller", inputs.roller_mm, refusal_text(span, stated))
+    raise FitError("base", inputs.base_mm, f"{no_roller_text(span)}; {_left_to_synthesis(inputs)}")
+
+
+def _left_to_synthesis(inputs: CamInputs) -> str:
+    """Advice for a checked cam that takes no roller: what the synthesis gives with its base
+    radius and centre distance left out (with the typed roller, else with none too), each
+    designed before it is named."""
+    tries = [inputs.roller_mm, None] if inputs.roller_mm is not None else [None]
+    for roller in tries:
+        try:
+            cam = _solved(replace(inputs, base_mm=None, distance_mm=None, roller_mm=roller), advise=False)
+        except DesignError:
+            continue
+        if roller is not None:
+            return (f"leave out the base radius and the centre distance, and the synthesis gives "
+                    f"r0 = {cam.base_radius_mm:.4g} mm for this roller")
+        what = "the base radius and the centre distance" if inputs.roller_mm is None else \
+            "the base radius, the centre distance and the roller"
+        return (f"leave out {what}, and the synthesis gives r0 = {cam.base_radius_mm:.4g} mm with a "
+                f"roller of {cam.roller_mm:.4g} mm")
+    blank = replace(inputs, base_mm=None, distance_mm=None, roller_mm=None)
+    arm = advice.arm_for_roller(_probe, blank, synthesize(blank.arm_mm, blank.program, blank.allowance))
+    if arm is None:
+        return f"no synthesized cam takes one either, with any arm up to {MAX_ARM_MM:g} mm"
+    what = "the base radius and the centre distance" if inputs.roller_mm is None else \
+        "the base radius, the centre distance and the roller"
+    return f"leave out {what}, and an arm of {arm:.1f} mm gives one"
 
 
 FIT_ROUNDS = 4
@@ -240,7 +324,7 @@ def _fitted(inputs: CamInputs, f: Follower, roller: float
         if g is None:
             break
         up, back, rho = figures(g, inputs.program)
-        biggest = _largest(inputs, rho) if fixed else largest_roller(rho)
+        biggest = largest_roller(rho)
         if fixed:
             _check_roller(roller, biggest, rho)
         fits = biggest >= roller * (1.0 - 1e-12)
@@ -252,7 +336,7 @@ def _fitted(inputs: CamInputs, f: Follower, roller: float
         roller = max(biggest, MIN_ROLLER_MM)
     if best is None:
         up, back, rho = figures(f, inputs.program)
-        return f, roller, (up, back, rho, largest_roller(rho) if not fixed else _largest(inputs, rho))
+        return f, roller, (up, back, rho, largest_roller(rho))
     return best
 
 
@@ -260,79 +344,19 @@ def _require_roller(inputs: CamInputs, smallest: Follower, roller: float, bigges
                     rho: float, advise: bool) -> None:
     """FitError when the automatic roller is below MIN_ROLLER_MM or more than the cam takes:
     for a checked cam naming its base radius, for a synthesized one an arm that gives one
-    (:func:`arm_for_roller`, when ``advise``)."""
+    (``advice.arm_for_roller``, when ``advise``)."""
     if MIN_ROLLER_MM * (1.0 - 1e-12) <= roller <= biggest * (1.0 + 1e-12):
         return
     need = convex_radius_for(MIN_ROLLER_MM)
     if inputs.base_mm is not None:
         raise FitError("base", inputs.base_mm,
                        f"the pitch curve's smallest convex radius ρmin = {rho:.4g} mm takes no roller of "
-                       f"{MIN_ROLLER_MM:g} mm or more (that needs ρmin ≥ {need:g} mm); leave out the base "
-                       "radius and the centre distance, and the synthesis raises the cam until it takes one")
+                       f"{MIN_ROLLER_MM:g} mm or more (that needs ρmin ≥ {need:g} mm); "
+                       f"{_left_to_synthesis(inputs)}")
     none = (f"no cam within the allowances takes a roller of {MIN_ROLLER_MM:g} mm or more and clears "
             "the hub and the pivot boss")
-    arm = arm_for_roller(inputs, smallest) if advise else inputs.arm_mm
+    arm = advice.arm_for_roller(_probe, inputs, smallest) if advise else inputs.arm_mm
     if arm is None:             # no arm does: the smallest cam's path runs past the pivot boss
         require_buildable(smallest, inputs.program, MIN_ROLLER_MM, inputs.room, checked=False)
         raise FitError("swing", inputs.program.swing_deg, f"{none}, with any arm up to {MAX_ARM_MM:g} mm")
     raise FitError("arm", inputs.arm_mm, f"{none}; an arm of {arm:.1f} mm gives one")
-
-
-ARM_STEP_MM = 0.1
-"""The resolution of the arm a refusal names."""
-
-
-def arm_for_roller(inputs: CamInputs, smallest: Follower) -> float | None:
-    """An arm (mm, a multiple of ARM_STEP_MM) whose cam takes an automatic roller of at
-    least MIN_ROLLER_MM, found by bisection between this arm and one whose smallest cam
-    does (:func:`_scaled_arm`); None if none up to MAX_ARM_MM does.
-
-    Why a search of real designs: the scaled smallest cam fits everything from some arm on,
-    but a raised cam of a much shorter arm often does too (a 21.25 mm arm whose smallest cam
-    fits from 80.2 mm gave one from 32.3 mm). Each probe is a whole design, so the arm named
-    is one that was designed; a shorter one is not known to fail if the designs that work
-    are no interval of arms."""
-    def works(arm: float) -> bool:
-        try:
-            _solved(replace(inputs, arm_mm=arm), advise=False)
-        except DesignError:
-            return False
-        return True
-    top = _scaled_arm(inputs, smallest)
-    if top is None or not works(top):
-        return None
-    lo, hi = inputs.arm_mm, top
-    while hi - lo > ARM_STEP_MM * (1.0 + 1e-9):
-        mid = math.ceil(0.5 * (lo + hi) / ARM_STEP_MM - 1e-9) * ARM_STEP_MM
-        if mid >= hi:
-            break
-        lo, hi = (lo, mid) if works(mid) else (mid, hi)
-    return hi
-
-
-def _scaled_arm(inputs: CamInputs, smallest: Follower) -> float | None:
-    """The shortest arm (mm, rounded up to ARM_STEP_MM) whose smallest cam takes its largest
-    roller, at least MIN_ROLLER_MM, and with it clears the hub and the pivot boss; None if
-    no arm up to MAX_ARM_MM does.
-
-    Why a closed form and not a search: the pressure-angle conditions do not change with
-    the scale, so the smallest cam of an arm s times as long is this one scaled by s (its
-    base radius, centre distance, R1 and ρmin all s times theirs), while the roller's least
-    size, the hub, the boss and the clearance stay; each condition then holds from some s
-    on, and the least s for all is found by bisection on these few numbers."""
-    rho = min_convex_radius(smallest, inputs.program)
-    r0, a, r1 = smallest.base_radius_mm, smallest.distance_mm, pitch_max_radius(smallest, inputs.program)
-    room = inputs.room
-
-    def fits(s: float) -> bool:
-        r = largest_roller(rho * s)
-        return (r >= MIN_ROLLER_MM and r0 * s - r >= room.hub_mm + room.clearance_mm
-                and r1 * s - r <= a * s - room.boss_mm - room.clearance_mm)
-    lo, hi = 1.0, MAX_ARM_MM / inputs.arm_mm
-    if not fits(hi):
-        return None
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (lo, mid) if fits(mid) else (mid, hi)
-    arm = math.ceil(inputs.arm_mm * hi * (1.0 + 1e-9) / ARM_STEP_MM) * ARM_STEP_MM
-    return arm if fits(arm / inputs.arm_mm) and arm <= MAX_ARM_MM else None

@@ -16,6 +16,9 @@ and the boss by 30.7 mm, and the course data sheet's (cosine/parabolic) by 2.4 a
 44.8 mm, so both are unchanged; the issue's rise-100° cam (profile base radius 6.6 mm)
 is not."""
 
+MIN_ARM_MM, MAX_ARM_MM = 1.0, 5000.0
+"""The follower arm's range (mm); the longest arm a refusal's search tries is the most."""
+
 RETURN_PRESSURE_DEG = 70.0
 """Default allowed pressure angle on the return, °. The follower comes back unloaded,
 closed by its spring (or the groove), so the return can take a much larger pressure angle

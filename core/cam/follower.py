@@ -21,6 +21,7 @@ from typing import NamedTuple
 import numpy as np
 
 from core.base.errors import DesignError
+from core.linkage.verdict import round_text
 from .laws import Motion, Program
 
 TURN = -1
@@ -128,6 +129,11 @@ def profile(p: Pitch, roller_mm: float) -> np.ndarray:
 
 def check_follower(f: Follower, program: Program) -> None:
     """The arm must stay on one side of the line of centres over its whole swing."""
-    if not (0.0 < f.initial_deg and f.initial_deg + program.swing_deg < 180.0):
+    if not f.initial_deg + program.swing_deg < 180.0:    # past it at the end of the swing: r0 too large
+        a, l = f.distance_mm, f.arm_mm
+        most = math.sqrt(a * a + l * l + 2.0 * a * l * math.cos(math.radians(program.swing_deg)))
+        raise DesignError("base", f.base_radius_mm, "gives an arm that crosses the line of centres at the end "
+                          f"of its swing; give a base radius below {round_text(most, 4, down=True)} mm")
+    if not 0.0 < f.initial_deg:
         raise DesignError("base", f.base_radius_mm,
                           "gives an arm that crosses the line of centres; choose another base radius")

@@ -16,6 +16,7 @@ follower) is chosen by synthesizing both and keeping the one with the smaller ba
 """
 from __future__ import annotations
 
+import importlib
 import math
 from functools import lru_cache
 from dataclasses import dataclass
@@ -77,9 +78,10 @@ def import_solvers() -> None:
     """Import now what a synthesis takes from scipy (``linprog``, the convex hull and the
     half-plane intersection). Why: they come in at the first synthesis, not with the
     window; a window calls this while idle once its Cam tab is built, so that the tab's
-    first visit does not wait for the import, 0.2-0.5 s quiet (issue 40 item 5)."""
-    import scipy.optimize  # noqa: F401
-    import scipy.spatial  # noqa: F401
+    first visit does not wait for the import, 0.2-0.5 s quiet (issue 40 item 5).
+    By name, as a side effect: an import statement would bind a name nothing uses."""
+    for module in ("scipy.optimize", "scipy.spatial"):
+        importlib.import_module(module)
 
 
 def _halfspaces(arm: float, k: int, program: Program, allowance: Allowance) -> np.ndarray:

@@ -15,6 +15,7 @@ from functools import lru_cache
 from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
 from core.base.errors import DesignError, require_range
+from core.linkage.verdict import round_text
 from .laws import Program
 
 
@@ -59,7 +60,7 @@ def timing(program: Program, design, idle_fraction: float, phase_deg: float | No
     feed = program.feed_deg
     if feed > span:
         raise DesignError("rise", program.rise_deg,
-                          f"rise + outer dwell + return ({feed:g}°) must fit in the {span:.4g}° "
+                          f"rise + outer dwell + return ({feed:g}°) must fit in the {round_text(span, 4, down=True)}° "
                           "the crank turns outside the cut")
     if phase_deg is None:
         return Timing(math.fmod(off + (span - feed) / 2.0, 360.0), off, span)
@@ -67,6 +68,6 @@ def timing(program: Program, design, idle_fraction: float, phase_deg: float | No
     since = (phase_deg - off) % 360.0
     if since + feed > span + 1e-9:
         raise DesignError("phase", phase_deg,
-                          f"feeds during the cut: the rise must start between {off:.4g}° and "
-                          f"{math.fmod(off + span - feed, 360.0):.4g}° of crank angle")
+                          f"feeds during the cut: the rise must start between {round_text(off, 4)}° and "
+                          f"{round_text(math.fmod(off + span - feed, 360.0), 4, down=True)}° of crank angle")
     return Timing(phase_deg % 360.0, off, span)

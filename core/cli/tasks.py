@@ -297,5 +297,6 @@ def _check_unique(name: str, students: list[Student]) -> None:
         numbers.setdefault(s.number, s.line)
         if s.folder and s.folder.casefold() in folders:
             raise TableError(f"{name} line {s.line}: the folder {s.folder} is also line "
-                             f"{folders[s.folder.casefold()]}'s; give the students different numbers")
+                             f"{folders[s.folder.casefold()]}'s; give one of them a number that differs in more than "
+                             "letter case and the characters a folder name cannot hold")
         folders.setdefault(s.folder.casefold(), s.line)

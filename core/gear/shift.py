@@ -66,8 +66,9 @@ def mesh_of_sum(p: GearPairInputs, total: float) -> tuple[float, float]:
         return p.alpha, reference_centre(p)
     value = 2.0 * math.tan(p.alpha) * total / (p.z1 + p.z2) + inv(p.alpha)
     if not value > 0.0:
+        least = -inv(p.alpha) * (p.z1 + p.z2) / (2.0 * math.tan(p.alpha))       # where α′ = 0
         raise DesignError("x1", total, "x1 + x2 is too negative: the gears would not mesh "
-                          "(α′ ≤ 0); raise the shifts")
+                          f"(α′ ≤ 0); raise x1 + x2 above {bound_text(float(least), True, True)}")
     alpha_w = inv_inverse(float(value))
     return alpha_w, reference_centre(p) * math.cos(p.alpha) / math.cos(alpha_w)
 

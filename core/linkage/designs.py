@@ -163,12 +163,26 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         lever = stroke / (2.0 * half)
         need = 2.0 * (crank + frame) * half
         too_short = lever < crank + frame
+        ruled = isinstance(extra[0], str)
+        if ruled:               # the guide the rule places must clear the crank too: a longer lever
+            need = need / guide_share(extra[0], theta)
+            too_short = lever <= (crank + frame) / guide_share(extra[0], theta)
+        # the block on the lever's tip must reach a guide set above L2 + L1 (check_designs)
+        block_at_height = not ruled and extra[1] is None and extra[2] is None
+        tip = np.broadcast_to(block_at_height and (extra[0] > crank + frame), shape) & too_short
     verdict.check("time_ratio", half < smallest, time_ratio,
                   lambda i, at=Flat(k_min, shape): _k_min_text(float(at[i])))
+    verdict.check("stroke", tip, stroke,
+                  lambda i, at=Flat(2.0 * half * extra[0] if np.any(tip) else need, shape),
+                  height=Flat(extra[0] if np.any(tip) else need, shape):
+                      f"must be ≥ {math.ceil(at[i] * 10.0) / 10.0:.1f} mm for this crank and K, so that the "
+                      f"block on the lever tip reaches the guide height {round_text(height[i])} mm")
     verdict.check("stroke", too_short, stroke,
-                  lambda i, at=Flat(need, shape):
-                      f"must be ≥ {at[i]:.1f} mm for this crank and K, "
-                      "so that the crank pin stays on the lever")
+                  (lambda i, at=Flat(need, shape): f"must be > {round_text(at[i])} mm for this crank and K, "
+                   "so that the ram guide its rule places clears the crank") if ruled else
+                  (lambda i, at=Flat(need, shape):
+                      f"must be ≥ {math.ceil(at[i] * 10.0) / 10.0:.1f} mm for this crank and K, "
+                      "so that the crank pin stays on the lever"))
     return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
 
 
@@ -194,6 +208,13 @@ def dimensions_many(crank, frame, lever, *, guide="chord", rod=None, rod_ratio=N
     check_crank_ratio(verdict, crank, frame)
     with np.errstate(all="ignore"):
         theta = 2.0 * np.arcsin(np.minimum(crank / frame, 1.0))
+        if isinstance(extra[0], str):   # the guide is no input: the lever that places it high enough
+            reach = crank + frame
+            need = reach / guide_share(extra[0], theta)
+            verdict.check("lever", lever <= need, lever,
+                          lambda i, at=Flat(need, crank.shape), low=Flat(reach, crank.shape):
+                              f"must be > {round_text(at[i])} mm, so that the ram guide its rule places "
+                              f"clears the crank (L2 + L1 = {round_text(low[i])} mm above the lever pivot)")
     return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
 
 
@@ -220,6 +241,13 @@ def _assemble(verdict: Verdict, crank, frame, lever, theta, extra, rod_side: str
     return designs, verdict
 
 
+def guide_share(rule: str, theta) -> np.ndarray:
+    """The guide height a rule places, as a share of the lever L3 (``_guide``): cos(θ/2) for
+    the chord, (1 + cos(θ/2))/2 for the sagitta."""
+    chord = np.cos(np.asarray(theta) / 2.0)
+    return chord if rule == "chord" else (1.0 + chord) / 2.0
+
+
 def _guide_number(guide):
     """An explicit guide height (a number, an array, or a number as text)."""
     if isinstance(guide, str):
@@ -235,8 +263,7 @@ def _guide(verdict: Verdict, guide, lever: np.ndarray, theta: np.ndarray) -> np.
     """Guide height above O4 for a named rule (see ``geometry.guide_height``) or given heights."""
     if isinstance(guide, str):
         with np.errstate(all="ignore"):     # a lever near the float limit: inf, refused later
-            chord = lever * np.cos(theta / 2.0)
-            return chord if guide == "chord" else (lever + chord) / 2.0
+            return lever * guide_share(guide, theta)
     check_length(verdict, "guide", guide)
     return guide
 
@@ -280,18 +307,25 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     with np.errstate(all="ignore"):
         reach = d.frame + d.crank
         tip_low = d.lever * np.sqrt(1.0 - np.minimum(d.crank / d.frame, 1.0) ** 2)  # L3·cos(θ/2)
-    verdict.check("lever", d.lever < reach, d.lever,
+    # the block variant's lever must also reach a guide above L2 + L1 (checked next): a lever
+    # of just L2 + L1 would leave that guide no height to take
+    tip = d.rod is None and np.asarray(d.guide > reach) & (d.guide > d.lever)
+    verdict.check("lever", (d.lever < reach) & ~tip, d.lever,
                   lambda i, at=Flat(reach, shape):
-                      f"must be ≥ L2 + L1 = {at[i]:.6g} mm, "
+                      f"must be ≥ L2 + L1 = {round_text(at[i])} mm, "
                       "so that the crank pin stays on the lever")
+    verdict.check("lever", (d.lever < reach) & tip, d.lever,
+                  lambda i, at=Flat(d.guide, shape), low=Flat(reach, shape):
+                      f"must be ≥ the guide height {round_text(at[i])} mm, so that the block on the lever tip "
+                      f"reaches the guide (and the crank pin stays on the lever: L2 + L1 = {round_text(low[i])} mm)")
     verdict.check("guide", d.guide <= reach, d.guide,
                   lambda i, at=Flat(reach, shape):
-                      f"must be > L2 + L1 = {at[i]:.6g} mm above the lever "
+                      f"must be > L2 + L1 = {round_text(at[i])} mm above the lever "
                       "pivot, so that the ram clears the crank")
     if d.rod is None:
         verdict.check("guide", d.guide > d.lever, d.guide,
                       lambda i, at=Flat(d.lever, shape):
-                          f"must be ≤ the lever length {at[i]:.6g} mm: "
+                          f"must be ≤ the lever length {round_text(at[i], down=True)} mm: "
                           "the block on the lever tip cannot reach a higher guide")
         return
     check_length(verdict, "rod", d.rod)
@@ -301,7 +335,7 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
         need = np.maximum(d.guide - tip_low, d.lever - d.guide) / math.sqrt(1.0 - ROD_MARGIN ** 2)
     verdict.check("rod", d.rod <= need, d.rod,
                   lambda i, at=Flat(need, shape):
-                      f"must be > {at[i]:.6g} mm to reach the guide line "
+                      f"must be > {round_text(at[i])} mm to reach the guide line "
                       "over the whole cycle")
     # r·cos ψ − s·d·sin ψ ≥ r_min·cos(θ/2) − |d|_max·sin(θ/2): where this bound already
     # clears the margin the exact minimum is not needed (it changes no verdict).

@@ -105,6 +105,8 @@ def check_range(verdict: Verdict, name: str, value: np.ndarray, low: float, high
 def round_text(value: float, digits: int = 6, down: bool = False) -> str:
     """``value`` rounded up (or down) to ``digits`` significant digits, so that a stated
     minimum (or maximum) is itself allowed."""
+    if value == 0.0:
+        return "0"
     scale = 10.0 ** (digits - 1 - math.floor(math.log10(abs(value))))
     rounded = (math.floor if down else math.ceil)(value * scale) / scale
     return f"{rounded:.{digits}g}"

@@ -33,8 +33,10 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"(--[\w-]+): required$", "%1: required"),
     (r"(\S+) is also on line (\d+); each student needs a number of their own$",
      "%1 is also on line %2; each student needs a number of their own"),
-    (r"the folder (.+) is also line (\d+)'s; give the students different numbers$",
-     "the folder %1 is also line %2's; give the students different numbers"),
+    (r"the folder (.+) is also line (\d+)'s; give one of them a number that differs in more than letter case "
+     r"and the characters a folder name cannot hold$",
+     "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and "
+     "the characters a folder name cannot hold"),
     (r"has no name$", "has no name"),
     (r"named twice$", "named twice"),
     (r"not a column; did you mean (\S+)\?$", "not a column; did you mean %1?"),
@@ -66,8 +68,8 @@ def _templates() -> dict[str, str]:
         "%1: required": translate("ClassMessages", "%1: required"),
         "%1 is also on line %2; each student needs a number of their own":
             translate("ClassMessages", "%1 is also on line %2; each student needs a number of their own"),
-        "the folder %1 is also line %2's; give the students different numbers":
-            translate("ClassMessages", "the folder %1 is also line %2's; give the students different numbers"),
+        "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold":
+            translate("ClassMessages", "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold"),
         "has no name": translate("ClassMessages", "has no name"),
         "named twice": translate("ClassMessages", "named twice"),
         "not a column; did you mean %1?": translate("ClassMessages", "not a column; did you mean %1?"),

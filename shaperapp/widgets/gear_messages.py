@@ -39,8 +39,8 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"must be ≤ (\S+) at α = (\S+)° and h\*a = (\S+): the rack's tip rounding would not fit its tooth$",
      "must be at most %1 at α = %2° and h*a = %3: the rack's tip rounding would not fit its tooth"),
     (r"must be ≥ (\S+) and ≤ (\S+) teeth$", "must be at least %1 and at most %2 teeth"),
-    (r"x1 \+ x2 is too negative: the gears would not mesh \(α′ ≤ 0\); raise the shifts$",
-     "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts"),
+    (r"x1 \+ x2 is too negative: the gears would not mesh \(α′ ≤ 0\); raise x1 \+ x2 above (\S+)$",
+     "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise x1 + x2 above %1"),
     (r"must be > a cos α = (\S+) mm \(the working pressure angle would be 0\)$",
      "must be more than a cos α = %1 mm (the working pressure angle would be 0)"),
     (r"needs x1 \+ x2 = (\S+), below the (\S+) that keeps both gears uncut; give ≥ (\S+) mm$",
@@ -66,8 +66,8 @@ def _templates() -> dict[str, str]:
                       "would not fit its tooth"),
         "must be at least %1 and at most %2 teeth":
             translate("GearMessages", "must be at least %1 and at most %2 teeth"),
-        "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts":
-            translate("GearMessages", "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise the shifts"),
+        "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise x1 + x2 above %1":
+            translate("GearMessages", "x1 + x2 is too negative: the gears would not mesh (α′ ≤ 0); raise x1 + x2 above %1"),
         "must be more than a cos α = %1 mm (the working pressure angle would be 0)":
             translate("GearMessages", "must be more than a cos α = %1 mm (the working pressure angle would be 0)"),
         "needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm":

@@ -13,6 +13,7 @@ from PySide6.QtCore import QCoreApplication
 
 from core.base.errors import DesignError, FileFormatError
 from core.base.errors import os_reason as core_os_reason
+from shaperapp.widgets import cam_messages
 
 # Error text in the one weight every script has: a bold Latin run beside regular CJK
 # glyphs (fonts without a semi-bold CJK face) looked like two kinds of message.
@@ -81,8 +82,9 @@ def field_name(parameter: str) -> str:
     return names.get(parameter) or names.get(re.sub(r"_(mm|deg)$", "", parameter), parameter)
 
 
-# (pattern on core's English ``allowed`` text, translatable template with %1, %2 …)
-_PATTERNS: tuple[tuple[str, str], ...] = (
+# (pattern on core's English ``allowed`` text, translatable template with %1, %2 …); the
+# cam's are in cam_messages, and _PATTERNS holds both
+_OWN_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"must be > (\S+) and ≤ (\S+)(?: (.+))?$", "must be greater than %1 and at most %2 %3"),
     (r"must be ≥ (\S+) and ≤ (\S+)(?: (.+))?$", "must be at least %1 and at most %2 %3"),
     (r"must be ≥ (\S+) and < (\S+)(?: (.+))?$", "must be at least %1 and less than %2 %3"),
@@ -101,6 +103,19 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
     (r"must be > L2 \+ L1 = (\S+) mm above the lever pivot, so that the ram clears the crank$",
      "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
+    (r"must be > (\S+) mm for this crank and K, so that the ram guide its rule places clears the crank$",
+     "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank"),
+    (r"must be > (\S+) mm, so that the ram guide its rule places clears the crank \(L2 \+ L1 = (\S+) mm above "
+     r"the lever pivot\)$",
+     "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above "
+     "the lever pivot)"),
+    (r"must be ≥ (\S+) mm for this crank and K, so that the block on the lever tip reaches the guide height "
+     r"(\S+) mm$",
+     "must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm"),
+    (r"must be ≥ the guide height (\S+) mm, so that the block on the lever tip reaches the guide \(and the "
+     r"crank pin stays on the lever: L2 \+ L1 = (\S+) mm\)$",
+     "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the "
+     "crank pin stays on the lever: L2 + L1 = %2 mm)"),
     (r"must be ≤ the lever length (\S+) mm: the block on the lever tip cannot reach a higher guide$",
      "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
     (r"must be > (\S+) mm to reach the guide line over the whole cycle$",
@@ -121,50 +136,6 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
     (r"must be given either as a length or as a ratio L4/L3, not both$",
      "must be given either as a length or as a ratio L4/L3, not both"),
-    (r"rise \+ outer dwell \+ return must fit in 360° \(they add up to (\S+)°\)$",
-     "rise + outer dwell + return must fit in 360° (they add up to %1°)"),
-    (r"rise \+ outer dwell \+ return \((\S+)°\) must fit in the (\S+)° the crank turns outside the cut$",
-     "rise + outer dwell + return (%1°) must fit in the %2° the crank turns outside the cut"),
-    (r"feeds during the cut: the rise must start between (\S+)° and (\S+)° of crank angle$",
-     "feeds during the cut: the rise must start between %1° and %2° of crank angle"),
-    (r"too large: must be ≤ (\S+) mm .*ρmin is (\S+) mm, .*$",
-     "too large: must be at most %1 mm, or it undercuts the profile (smallest convex radius of the pitch curve %2 mm)"),
-    (r"is too small: no cam within (\S+) arm lengths keeps the pressure angle within the allowances$",
-     "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances"),
-    (r"leaves the pitch curve too sharp for any roller .*$",
-     "leaves the pitch curve too sharp for any roller; lengthen the rise or the return"),
-    (r"must be between \|a − l\| = (\S+) mm and a \+ l = (\S+) mm for the arm to reach the cam$",
-     "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
-    (r"give --base and --distance together to check a cam$",
-     "give the base radius and the centre distance together to check a cam"),
-    # a cam that does not fit its hub or the follower pivot's boss (core.cam.build)
-    (r"the profile's smallest radius r0 − r = (\S+) mm is (\S+) mm short of hub \+ clearance = (\S+) mm$",
-     "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
-    (r"the profile's largest radius (\S+) mm reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
-     "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-    (r"no cam within the allowances clears the pivot boss; the smallest: the profile's largest radius (\S+) mm "
-     r"reaches (\S+) mm past a − boss − clearance = (\S+) mm$",
-     "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm "
-     "reaches %2 mm past a − boss − clearance = %3 mm"),
-    # an automatic roller of at least 3 mm (core.cam.cam)
-    (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss; "
-     r"an arm of (\S+) mm gives one$",
-     "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; "
-     "an arm of %2 mm gives one"),
-    (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss, "
-     r"with any arm up to (\S+) mm$",
-     "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, "
-     "with any arm up to %2 mm"),
-    (r"the pitch curve's smallest convex radius ρmin = (\S+) mm takes no roller of (\S+) mm or more "
-     r"\(that needs ρmin ≥ (\S+) mm\); leave out the base radius and the centre distance, and the "
-     r"synthesis raises the cam until it takes one$",
-     "the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs "
-     "ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam "
-     "until it takes one"),
-    (r"the smallest cam for the allowances takes no roller of (\S+) mm or more \(ρmin = (\S+) mm\); left "
-     r"blank, the roller is (\S+) mm on a base radius raised to (\S+) mm$",
-     "the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the "
-     "roller is %3 mm on a base radius raised to %4 mm"),
     # what a design file can hold wrong (core.files.design_file, Spec.from_dict, core.cam.file)
     (r"is not a design field$", "is not a design field"),
     (r"is not a load input$", "is not a load input"),
@@ -176,11 +147,15 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"must be an object of cam inputs$", "must be an object of cam inputs"),
     (r"must be one of (.+)$", "must be one of %1"),
 )
+_PATTERNS = _OWN_PATTERNS + cam_messages.PATTERNS
+_ADVICE_PATTERNS = cam_messages.ADVICE_PATTERNS
 
 
 def _translated_templates() -> dict[str, str]:
     # Listed literally so pyside6-lupdate finds every template.
     return {
+        **cam_messages.templates(),
+        "%1; %2": QCoreApplication.translate("messages", "%1; %2"),
         "must be greater than %1 and at most %2 %3": QCoreApplication.translate("messages", "must be greater than %1 and at most %2 %3"),
         "must be at least %1 and at most %2 %3": QCoreApplication.translate("messages", "must be at least %1 and at most %2 %3"),
         "must be at least %1 and less than %2 %3": QCoreApplication.translate("messages", "must be at least %1 and less than %2 %3"),
@@ -198,6 +173,14 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be at least L2 + L1 = %1 mm, so that the crank pin stays on the lever"),
         "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank":
             QCoreApplication.translate("messages", "must be more than L2 + L1 = %1 mm above the lever pivot, so that the ram clears the crank"),
+        "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank":
+            QCoreApplication.translate("messages", "must be more than %1 mm for this crank and K, so that the ram guide its rule places clears the crank"),
+        "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)":
+            QCoreApplication.translate("messages", "must be more than %1 mm, so that the ram guide its rule places clears the crank (L2 + L1 = %2 mm above the lever pivot)"),
+        "must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm":
+            QCoreApplication.translate("messages", "must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm"),
+        "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)":
+            QCoreApplication.translate("messages", "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)"),
         "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide":
             QCoreApplication.translate("messages", "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
         "must be more than %1 mm to reach the guide line over the whole cycle":
@@ -218,36 +201,6 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
         "must be given either as a length or as a ratio L4/L3, not both":
             QCoreApplication.translate("messages", "must be given either as a length or as a ratio L4/L3, not both"),
-        "rise + outer dwell + return must fit in 360° (they add up to %1°)":
-            QCoreApplication.translate("messages", "rise + outer dwell + return must fit in 360° (they add up to %1°)"),
-        "rise + outer dwell + return (%1°) must fit in the %2° the crank turns outside the cut":
-            QCoreApplication.translate("messages", "rise + outer dwell + return (%1°) must fit in the %2° the crank turns outside the cut"),
-        "feeds during the cut: the rise must start between %1° and %2° of crank angle":
-            QCoreApplication.translate("messages", "feeds during the cut: the rise must start between %1° and %2° of crank angle"),
-        "too large: must be at most %1 mm, or it undercuts the profile (smallest convex radius of the pitch curve %2 mm)":
-            QCoreApplication.translate("messages", "too large: must be at most %1 mm, or it undercuts the profile (smallest convex radius of the pitch curve %2 mm)"),
-        "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances":
-            QCoreApplication.translate("messages", "is too small: no cam within %1 arm lengths keeps the pressure angle within the allowances"),
-        "leaves the pitch curve too sharp for any roller; lengthen the rise or the return":
-            QCoreApplication.translate("messages", "leaves the pitch curve too sharp for any roller; lengthen the rise or the return"),
-        "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam":
-            QCoreApplication.translate("messages", "must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam"),
-        "give the base radius and the centre distance together to check a cam":
-            QCoreApplication.translate("messages", "give the base radius and the centre distance together to check a cam"),
-        "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm":
-            QCoreApplication.translate("messages", "the profile's smallest radius r0 − r = %1 mm is %2 mm short of hub + clearance = %3 mm"),
-        "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
-            QCoreApplication.translate("messages", "the profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-        "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm":
-            QCoreApplication.translate("messages", "no cam within the allowances clears the pivot boss; the smallest: its profile's largest radius %1 mm reaches %2 mm past a − boss − clearance = %3 mm"),
-        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; an arm of %2 mm gives one":
-            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss; an arm of %2 mm gives one"),
-        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm":
-            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss, with any arm up to %2 mm"),
-        "the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one":
-            QCoreApplication.translate("messages", "the pitch curve's smallest convex radius ρmin = %1 mm takes no roller of %2 mm or more (that needs ρmin ≥ %3 mm); leave the base radius and the centre distance blank, and the synthesis raises the cam until it takes one"),
-        "the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the roller is %3 mm on a base radius raised to %4 mm":
-            QCoreApplication.translate("messages", "the smallest cam for the allowances takes no roller of %1 mm or more (ρmin = %2 mm); left blank, the roller is %3 mm on a base radius raised to %4 mm"),
         "is not a design field": QCoreApplication.translate("messages", "is not a design field"),
         "is not a load input": QCoreApplication.translate("messages", "is not a load input"),
         "is not a cam field": QCoreApplication.translate("messages", "is not a cam field"),
@@ -270,16 +223,31 @@ def describe(error: DesignError, name: str | None = None) -> str:
 def allowed_text(allowed: str, patterns: tuple[tuple[str, str], ...] = (),
                  templates: dict[str, str] | None = None) -> str:
     """Core's English ``allowed`` text in the UI's language: the first of ``patterns``
-    (with its ``templates``), then of this module's, that matches; else the text as it is."""
+    (with its ``templates``), then of this module's, that matches; else a statement and its
+    advice after the last "; ", each matched (the advice by _ADVICE_PATTERNS: one advice
+    serves many statements); else the text as it is."""
     table = {**_translated_templates(), **(templates or {})}
-    for pattern, template in patterns + _PATTERNS:
-        match = re.match(pattern, allowed)
+    whole = _matched(allowed, patterns + _PATTERNS, table)
+    if whole is not None:
+        return whole
+    head, sep, tail = allowed.rpartition("; ")
+    if sep:
+        said, advice = _matched(head, patterns + _PATTERNS, table), _matched(tail, _ADVICE_PATTERNS, table)
+        if said is not None and advice is not None:
+            return table["%1; %2"].replace("%1", said, 1).replace("%2", advice, 1)
+    return allowed
+
+
+def _matched(text: str, patterns: tuple[tuple[str, str], ...], table: dict[str, str]) -> str | None:
+    """``text`` by the template of the first of ``patterns`` that matches it, or None."""
+    for pattern, template in patterns:
+        match = re.match(pattern, text)
         if match:
             body = table[template]
             for i, group in enumerate(match.groups(), start=1):
                 body = body.replace(f"%{i}", group or "")
             return body.strip()
-    return allowed
+    return None
 
 
 def failure_reason(error: Exception) -> str:

@@ -84,7 +84,10 @@ def test_sweep_varies_k_beside_the_measured_k(tmp_path):
     assert [r["valid"] for r in table] == ["true", "true", "false"]   # guide below the crank at K = 2
     for r in table[:2]:
         assert float(r["K"]) == pytest.approx(float(r["K_nominal"]), rel=1e-9)
-    assert table[2]["reason"].startswith("--guide: must be > L2 + L1 = 300 mm")
+    # the chord rule places the guide 270 mm high, below L2 + L1 = 300 mm: the stroke that raises it
+    # (300 mm / cos 30° · 2 sin 30°), not the guide, which the rule sets
+    assert table[2]["reason"].startswith("--stroke: must be > 346.411 mm for this crank and K, so that the ram "
+                                         "guide its rule places clears the crank")
 
 
 @pytest.mark.parametrize("args, option", [

@@ -135,6 +135,18 @@ def test_unknown_or_missing_columns_and_two_numbers_refuse_the_table(tmp_path, b
         read_tasks(table(tmp_path, ["student,student-number", "A,7/", "a,7:"]), base)
 
 
+
+@pytest.mark.parametrize("rows, changed", [(["A,7/", "a,7:"], "a,8:"), (["A,7a", "a,7A"], "a,7b")])
+def test_two_folders_made_one_are_told_what_number_makes_them_two(tmp_path, base, rows, changed):
+    """The numbers differ already ('give the students different numbers' was no help): the
+    advice says how they must differ, and a number changed so is taken."""
+    with pytest.raises(TableError, match=r"give one of them a number that differs in more than letter case and "
+                                         r"the characters a folder name cannot hold$"):
+        read_tasks(table(tmp_path, ["student,student-number", *rows]), base)
+    students, _ = read_tasks(table(tmp_path, ["student,student-number", rows[0], changed]), base)
+    assert len({s.folder.casefold() for s in students}) == 2
+
+
 def test_ten_thousand_rows_are_refused_at_once_and_nothing_parsed(tmp_path, base):
     lines = [HEADER] + [f'n{k},{k},"110,380,540",0.3,sagitta,60,20,1.1,70,7000,80' for k in range(10_000)]
     path = table(tmp_path, lines)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 
 import pytest
 from hypothesis import assume, given, settings, strategies as st
@@ -132,3 +133,68 @@ def test_the_refusal_tells_the_two_sums_apart():
     text = refusal(z1=12, z2=40, module_mm=2.0, centre_mm=49.1049)
     given, least = re.search(r"x1 \+ x2 = (\S+), below the (\S+) ", text).groups()
     assert float(given) < float(least) and given != least
+
+
+@settings(max_examples=40, deadline=None)
+@given(z1=st.integers(5, 150), z2=st.integers(5, 150), alpha=st.floats(15.0, 30.0),
+       x2=st.floats(-5.0, 0.0), x1=st.floats(-5.0, 0.0))
+def test_a_shift_sum_too_negative_to_mesh_is_told_the_sum_that_meshes(z1, z2, alpha, x1, x2):
+    """'raise x1 + x2 above X' (409f94c: 'raise the shifts', by no amount): x1 raised so that
+    the sum is X as printed, the pair meshes (α′ > 0); another refusal may follow, with its
+    own advice."""
+    p = GearPairInputs(z1=z1, z2=z2, module_mm=4.0, pressure_angle_deg=alpha, x1=x1, x2=x2)
+    try:
+        design_pair(p)
+        return
+    except DesignError as exc:
+        m = re.search(r"the gears would not mesh \(α′ ≤ 0\); raise x1 \+ x2 above (\S+)$", exc.allowed)
+        if "would not mesh" not in exc.allowed:
+            return
+        assert m, exc.allowed
+    try:
+        design_pair(replace(p, x1=float(m.group(1)) - x2))
+    except DesignError as exc:
+        assert "would not mesh" not in exc.allowed, exc.allowed
+
+
+def _refused(p: GearPairInputs) -> DesignError | None:
+    try:
+        design_pair(p)
+    except DesignError as exc:
+        return exc
+    return None
+
+
+@settings(max_examples=40, deadline=None)
+@given(z1=st.integers(5, 60), z2=st.integers(5, 120), x1=st.floats(0.0, 5.0), x2=st.floats(0.0, 5.0),
+       stretch=st.floats(1.0, 1.3), rule=st.booleans())
+def test_a_pointed_tip_is_mended_by_following_its_advice(z1, z2, x1, x2, stretch, rule):
+    """'give a smaller shift' (x_k lowered 0.01 at a time), 'give a smaller centre distance'
+    (a′ lowered m/100 at a time) and, for the rule's shifts, 'give more teeth' (z_k raised one
+    at a time): the tip of gear k stops being pointed before the value leaves its range.
+    (These name a direction, no amount; helped before.)"""
+    base = GearPairInputs(z1=z1, z2=z2, module_mm=4.0)
+    given_shifts = GearPairInputs(z1=z1, z2=z2, module_mm=4.0, x1=x1, x2=x2)
+    centre = GearPairInputs(z1=z1, z2=z2, module_mm=4.0,
+                            centre_mm=2.0 * (z1 + z2) * stretch)      # m (z1 + z2)/2 · stretch
+    for p in (base if rule else given_shifts, centre):
+        error = _refused(p)
+        if error is None or "pointed" not in error.allowed:
+            continue
+        k = int(re.search(r"the tip of gear (\d) pointed", error.allowed).group(1))
+        pointed = f"the tip of gear {k} pointed"
+        if error.allowed.endswith("give a smaller shift"):
+            field, step, stop = f"x{k}", -0.01, -5.0
+        elif error.allowed.endswith("give a smaller centre distance"):
+            field, step, stop = "centre_mm", -0.04, 2.0 * (z1 + z2) * math.cos(math.radians(20.0))
+        else:
+            assert error.allowed.endswith("give more teeth, or the shifts or the centre distance"), error.allowed
+            field, step, stop = f"z{k}", 1, 1000
+        q = p
+        while True:
+            value = getattr(q, field) + step
+            assert (value - stop) * (1 if step < 0 else -1) > 0, f"{field} left its range still pointed"
+            q = replace(q, **{field: value})
+            again = _refused(q)
+            if again is None or pointed not in again.allowed:
+                break

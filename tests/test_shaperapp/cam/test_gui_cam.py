@@ -144,13 +144,15 @@ def test_cam_edits_undo_with_the_design(qtbot, tab, model):
 
 
 def test_every_cam_message_has_a_translatable_template(model):
-    """Each refusal core makes for a cam matches one of the messages' templates, so the
-    Chinese UI never shows core's English sentence."""
+    """Each refusal core makes for a cam matches the messages' templates (whole, or a
+    statement and its advice clause by clause), so the Chinese UI never shows core's English
+    sentence."""
     import re
 
     from core.cam.timing import timing
     from core.base.errors import DesignError
-    from shaperapp.widgets.messages import _PATTERNS
+    from shaperapp.widgets import i18n
+    from shaperapp.widgets.messages import allowed_text
     design = model.design
     attempts = [
         lambda: Program(rise_deg=200.0, dwell_deg=100.0, return_deg=100.0),
@@ -164,7 +166,12 @@ def test_every_cam_message_has_a_translatable_template(model):
     for attempt in attempts:
         with pytest.raises(DesignError) as info:
             attempt()
-        assert any(re.match(p, info.value.allowed) for p, _ in _PATTERNS), info.value.allowed
+        i18n.set_language("zh_CN")
+        try:
+            shown = allowed_text(info.value.allowed)
+        finally:
+            i18n.set_language("en")
+        assert not re.search(r"[A-Za-z]{4,}", shown), (info.value.allowed, shown)
 
 
 def test_cam_inputs_save_and_reopen(qtbot, tab, model, tmp_path):

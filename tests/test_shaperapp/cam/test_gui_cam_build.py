@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 
 import pytest
+from PySide6.QtCore import Qt
 
 from shaperapp.cam.tab import CamTab
 
@@ -23,7 +24,10 @@ def tab(qtbot, model):
 def type_into(qtbot, tab, name, text):
     edit = tab.form.fields[name].edit
     edit.selectAll()
-    qtbot.keyClicks(edit, text)
+    if text:
+        qtbot.keyClicks(edit, text)
+    else:                                   # erased as a user does: an optional field becomes "auto"
+        qtbot.keyClick(edit, Qt.Key.Key_Delete)
     tab.form.commit()
 
 

@@ -1,0 +1,77 @@
+"""The Cam tab's refusal of a typed roller, followed as the form shows it: a checked cam's
+roller bound typed into the roller field, a checked cam that takes no roller left to the
+synthesis by clearing the two fields; and the same refusals in Chinese, clause by clause
+(a statement and its advice after "；"), with no English left but units and symbols."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from core.base.errors import DesignError
+from core.cam import CamInputs, Program, design_cam
+from shaperapp.widgets import i18n
+from shaperapp.widgets.messages import describe
+
+from test_gui_cam_build import tab, type_into  # noqa: F401  (the tab fixture)
+
+SYMBOLS = {"mm", "r0", "R1", "a", "l", "r", "ρmin"}
+
+
+def test_a_checked_cams_roller_bound_typed_into_the_form_is_taken(qtbot, tab):
+    # the form's default sheet (arm 120 mm, 15°, 60°/10°/60°) checked on r0 = 20, a = 110
+    type_into(qtbot, tab, "base", "20")
+    type_into(qtbot, tab, "distance", "110")
+    type_into(qtbot, tab, "roller", "6")
+    before = tab.cam_model.cam
+    assert tab.form.marked_fields() == ["roller"]
+    shown_text = tab.form.error_label.text()
+    stated = re.search(r"must be at most (\S+) mm, so that the profile's smallest radius", shown_text).group(1)
+    type_into(qtbot, tab, "roller", stated)
+    assert tab.form.marked_fields() == []
+    cam = tab.cam_model.cam
+    assert cam is not before and cam.roller_mm == float(stated) and cam.base_radius_mm == 20.0
+
+
+def test_a_checked_cam_taking_no_roller_is_left_to_the_synthesis_as_the_form_says(qtbot, tab):
+    type_into(qtbot, tab, "roller", "5")
+    type_into(qtbot, tab, "base", "15")
+    type_into(qtbot, tab, "distance", "110")
+    assert tab.form.marked_fields() in (["base"], ["distance"])     # the field just typed
+    shown_text = tab.form.error_label.text()
+    r0 = re.search(r"leave the base radius and the centre distance blank, and the synthesis gives r0 = (\S+) mm "
+                   r"for this roller", shown_text).group(1)
+    type_into(qtbot, tab, "base", "")
+    type_into(qtbot, tab, "distance", "")
+    assert tab.form.marked_fields() == [], tab.form.error_label.text()
+    cam = tab.cam_model.cam
+    assert f"{cam.base_radius_mm:.4g}" == r0 and cam.roller_mm == 5.0
+
+
+EXAMPLE = CamInputs(arm_mm=52.5, program=Program(8.375, 44.0, 0.0, 40.0, "sine", "parabolic"), pressure_deg=36.0)
+SHORT = CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "parabolic", "parabolic"),
+                  pressure_deg=35.06)
+
+
+@pytest.mark.parametrize("inputs", [
+    CamInputs(arm_mm=120.0, base_mm=20.0, distance_mm=110.0, roller_mm=6.0),        # too large for the hub
+    CamInputs(arm_mm=120.0, base_mm=15.0, distance_mm=110.0, roller_mm=5.0),        # none; the synthesis's r0
+    CamInputs(**{**EXAMPLE.__dict__, "base_mm": 15.523, "distance_mm": 45.183}),   # ρmin < 6 mm; r0 and roller
+    CamInputs(**{**EXAMPLE.__dict__, "roller_mm": 3.0}),                            # left blank, the roller is …
+    CamInputs(**{**SHORT.__dict__, "roller_mm": 2.0}),                              # an arm of … gives one
+    CamInputs(arm_mm=120.0, pressure_deg=5.0),                                      # an allowance of …
+    CamInputs(arm_mm=120.0, program=Program(30.0, 40.0, 10.0, 40.0), pressure_deg=10.0,
+              return_pressure_deg=5.0),                                             # … on both
+    CamInputs(arm_mm=120.0, base_mm=229.0, distance_mm=110.0),                      # crosses: below …
+], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances", "crosses"])
+def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
+    with pytest.raises(DesignError) as refused:
+        design_cam(inputs)
+    i18n.set_language("zh_CN")
+    try:
+        text = describe(refused.value)
+    finally:
+        i18n.set_language("en")
+    words = set(re.findall(r"[A-Za-zρ][A-Za-z0-9ρ]*", text))
+    assert words <= SYMBOLS, (words - SYMBOLS, text)
+    assert set(re.findall(r"\d+(?:\.\d+)?", refused.value.allowed)) <= set(re.findall(r"\d+(?:\.\d+)?", text))
