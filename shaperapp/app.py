@@ -122,6 +122,7 @@ def _import_engine_first() -> None:
     hundred-odd modules imported before it skip that."""
     import core.cam.defaults  # noqa: F401  (the cam form's defaults; the cam itself on the tab's first visit)
     import core.base.figure_text  # noqa: F401  (the Results panel's one precision per figure)
+    import core.base.lettering  # noqa: F401  (the scheme's labels' gap)
     import core.forces.dynamics  # noqa: F401  (the forces; their cycle summary when first shown)
     import core.gear.file  # noqa: F401  (the gear's model, which Save writes)
     import core.gear.pair  # noqa: F401  (its default pair)

@@ -17,8 +17,8 @@ from core.forces.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
 from .labels import Room
-from .sheet import (Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width,
-                    word_gap)
+from core.base.lettering import word_gap
+from .sheet import Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
 TICK = 1.5
@@ -223,7 +223,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
 
 def spaced_labels(ticks: Sequence[tuple[float, str]], height: float) -> list[str]:
     """The labels of ``ticks`` (paper x, label) a row under them keeps, "" for one left out:
-    each centred under its tick, ``height`` high, a word space (``sheet.word_gap``) off its
+    each centred under its tick, ``height`` high, a word space (``core.base.lettering.word_gap``) off its
     neighbours, else "105120135" reads as one number. Where they do not all stand apart,
     evenly spaced ticks keep every k-th label from the first, the smallest k that leaves the
     space (every second, every third …: a drafter's way with a crowded scale); uneven ones

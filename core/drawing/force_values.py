@@ -10,7 +10,8 @@ from __future__ import annotations
 import numpy as np
 
 from .labels import Room
-from .sheet import Item, Text, marked_text, number_text, word_gap
+from core.base.lettering import word_gap
+from .sheet import Item, Text, marked_text, number_text
 
 
 def values_table(room: Room, note: str, forces: list[tuple[str, tuple, float]], near: np.ndarray) -> list[Item]:
@@ -41,6 +42,6 @@ def value_after(room: Room, name: Text, value: str) -> list[Item]:
 
 
 def after(name: Text, value: str) -> Text:
-    """``value`` on the line of ``name``, a word space after it (GB/T 14691: ``sheet.WORD_GAP``)."""
+    """``value`` on the line of ``name``, a word space after it (GB/T 14691: ``core.base.lettering.WORD_GAP``)."""
     box = name.box()
     return Text(value, (box[2] + word_gap(name.height), (box[1] + box[3]) / 2.0), name.height, "lm")

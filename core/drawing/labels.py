@@ -8,7 +8,7 @@ beside the point in the preferred direction and farther out along it, then on th
 side, then round it; then one standard height smaller; then farther still with a thin
 leader line from the point to the label, at last anywhere in the drawing. A spot is free
 when the label's box, a little enlarged, meets no stroke, keeps a word space (GB/T 14691:
-``sheet.WORD_GAP``) off the boxes already taken beside it, and lies within its drawing;
+``core.base.lettering.WORD_GAP``) off the boxes already taken beside it, and lies within its drawing;
 each step first asks LABEL_GAP from the texts taken (a label that only clears another by a
 word space can still read as one text with it).
 
@@ -28,26 +28,13 @@ import numpy as np
 
 from .dxf import THIN
 from .segments import CLEARANCE, boxes_meet_strokes, crossings_each, meets_strokes, strokes, strokes_meet_boxes
-from .sheet import Box, Item, Pair, Polyline, Text, line, smaller_height, word_gap
+from core.base.lettering import LABEL_GAP, label_gap, word_gap  # noqa: F401 - LABEL_GAP: the labels' rule, read here
+from .sheet import Box, Item, Pair, Polyline, Text, line, smaller_height
 
 LEADER_RINGS = 10          # rings beyond the last plain one tried with a leader line
 GRID_SPOTS = 2000          # then spots anywhere in the drawing, the nearest first …
 FAR_CHOICES = 12           # … of whose free ones the leader crossing fewest lines is taken
 ASSOCIATION = 0.5          # text heights another named point must lie farther from a label than its own
-LABEL_GAP = (1.5, 0.5)
-"""The least room between a label and another text, in the label's text heights: beside it
-on one line (x), and over or under it (y). Not touching is not enough: GB/T 14691 (ISO 3098)
-spaces the words of one text 0.6 h apart and its lines 0.4 h, so two labels closer than that
-read as one text. The report's scheme of 方案 I put the joint name O₂ 1.1 h before the
-dimension "H = 312.6" on its line, and a reader read "O₂ H = 312.6"; at 1.5 h, two and a half
-word spaces, they read apart. Over each other, 0.5 h is more than a line gap of one note."""
-
-
-def label_gap(height: float) -> Pair:
-    """:data:`LABEL_GAP` for a label ``height`` high, mm (x, y)."""
-    return LABEL_GAP[0] * height, LABEL_GAP[1] * height
-
-
 def boxes_meet(a: Box, b: Box) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
@@ -134,7 +121,7 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
     label's box; a leader line starts ``leader_gap`` off the point (a pin's radius). Without
     ``shrink`` the label keeps its height (one series of numbers beside another of a smaller
     height: shrunk, it would join that one). Each step first with :data:`LABEL_GAP` from the
-    other texts, then, where no spot keeps it, touching them: a label lost or led away from
+    other texts, then, where no spot keeps it, a word space off them: a label lost or led away from
     its point (the crank's twelve numbers round a small crank circle) is worse than a close
     one."""
     # a label with an index keeps its height: at the smallest one its index could not be smaller
@@ -274,7 +261,7 @@ def _batches(spots: Iterable[Text], size: int = 8) -> Iterable[list[Text]]:
 
 def spot_gaps(spots: Sequence[Text], gap: Pair = (0.0, 0.0)) -> np.ndarray:
     """What each of ``spots`` keeps off a taken box, (k, 2) mm (x, y): ``gap``, and beside it
-    at least the word space of its height (``sheet.word_gap``)."""
+    at least the word space of its height (``core.base.lettering.word_gap``)."""
     words = np.array([word_gap(spot.height) for spot in spots], dtype=float)
     return np.column_stack([np.maximum(words, gap[0]), np.full(len(words), float(gap[1]))])
 

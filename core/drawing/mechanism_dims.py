@@ -23,7 +23,8 @@ from . import sheet_dims as sd
 from .labels import boxes_meet
 from .dimensions import reading_order
 from .segments import crossings_each, strokes
-from .sheet import Box, Item, Placement, Text, item_box, line, line_box, smaller_height, word_gap
+from core.base.lettering import word_gap
+from .sheet import Box, Item, Placement, Text, item_box, line, line_box, smaller_height
 
 FIRST = 7.0               # the first dimension line from the linework, paper mm
 STEP = 7.0                # between parallel dimension lines (DIMDLI)

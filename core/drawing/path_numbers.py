@@ -18,7 +18,8 @@ from . import sheet_dims as sd
 from .dxf import THIN
 from .labels import moved_boxes
 from .segments import boxes_meet_strokes, crossings_each, strokes
-from .sheet import Box, Item, Placement, Text, line, word_gap
+from core.base.lettering import word_gap
+from .sheet import Box, Item, Placement, Text, line
 
 NUMBER_MM = 2.5           # the tool path's numbers
 NUMBER_PAD = word_gap(NUMBER_MM)   # between two numbers side by side: "2" "3" is not "23"

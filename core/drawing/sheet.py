@@ -39,11 +39,6 @@ SUPERSCRIPT_RAISE = 0.45  # a superscript's baseline above the text's, × its he
 # estimate, so the estimate is what the layout and the overlap checks can rely on.
 WIDE_ADVANCE = 1.05
 NARROW_ADVANCE = 0.78
-# GB/T 14691 (type B lettering): a word's letters stand a = 2/10 h apart, words e = 6/10 h.
-# A text's box holds its letters' side bearings (some 0.1 h each side), so two texts side by
-# side keep WORD_GAP·h between their boxes, about e between their inks: "105 120", never
-# "105120" (boxes that only touch stand a letter space apart and read as one number).
-WORD_GAP = 0.4
 # GB/T 14690: 1:1, 1:2, 1:5, 1:10 … preferred, 1:1.5, 1:2.5, 1:3, 1:4, 1:6 … allowed (as the report)
 SCALE_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0)
 
@@ -176,12 +171,6 @@ def smaller_height(height: float) -> float:
     """The standard text height one size below ``height`` (the smallest stays): a
     subscript's, a tick label's."""
     return max((h for h in TEXT_HEIGHTS if h < height), default=height)
-
-
-def word_gap(height: float) -> float:
-    """The room, mm, a text ``height`` high keeps between its box and a text beside it
-    (WORD_GAP)."""
-    return WORD_GAP * height
 
 
 def line_box(text: "Text", gap: float) -> Box:

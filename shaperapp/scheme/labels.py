@@ -10,7 +10,7 @@ moving bodies sweep over the whole cycle; a frame places only the moving joints'
 names (O₂, A, B, C) and the force magnitudes, and moves a still label only when a
 force arrow of that frame runs through it. A name that finds no room beside its
 joint goes a ring farther out with a leader line to it. Labels keep the sheets' gap
-from each other (core.drawing.labels.LABEL_GAP): clear is not enough, "O₂" an em before
+from each other (core.base.lettering.LABEL_GAP): clear is not enough, "O₂" an em before
 "H = 312.6" on its line read as one label.
 """
 from __future__ import annotations
@@ -21,7 +21,7 @@ import numpy as np
 from PySide6.QtCore import QObject
 from PySide6.QtGui import QFontInfo
 
-from core.drawing.labels import label_gap
+from core.base.lettering import label_gap
 
 from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import LINK

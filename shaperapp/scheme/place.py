@@ -61,7 +61,7 @@ def meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarra
 
 def clear_of_boxes(boxes: np.ndarray, taken: np.ndarray, gap: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
     """(m,) True where box i overlaps none of ``taken`` (touching edges do not overlap), or
-    with ``gap`` (x, y), keeps that far off each (core.drawing.labels.LABEL_GAP)."""
+    with ``gap`` (x, y), keeps that far off each (core.base.lettering.LABEL_GAP)."""
     boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
     if len(taken) == 0:
         return np.ones(len(boxes), dtype=bool)
@@ -85,7 +85,7 @@ def end_to_end(boxes: np.ndarray, taken: np.ndarray, gap: float) -> np.ndarray:
 class Obstacles:
     """The lines and the labels' boxes one placement pass keeps clear of; a placed label
     (and its leader) joins them, so the next one keeps clear of it too, by ``spacing`` (x,
-    y; mm): the labels' gap, core.drawing.labels.label_gap of their text height. The
+    y; mm): the labels' gap, core.base.lettering.label_gap of their text height. The
     ``boxes`` given at the start are turned texts (the L2 and h chain's, read upwards),
     which no upright label continues on its line: those keep the gap across lines, ``spacing``'s
     y, on every side."""
