@@ -27,9 +27,9 @@ from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import LINK
 
 from .dimensions import DimensionLayer
-from .draw import Z_LABEL, pen, text_box
+from .draw import Z_LABEL, joint_fonts, pen, text_box
 from .forces import ForceLayer
-from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer, joint_fonts
+from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
 from .place import (LEADER_RING, Obstacles, around, boxes_at, clear_of_boxes, clear_of_segments,
                     leader, leaders, meets, end_to_end, owned)
 from .raster import Raster
