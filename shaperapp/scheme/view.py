@@ -25,7 +25,7 @@ and its export dialog (whose SVG export fails on recent Qt) are not offered.
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QEvent, QPointF, QRectF, QTimer
+from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
@@ -64,7 +64,8 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._update)
         self._plot = canvas()
-        # a show's labels are placed as the plot paints, a rebuild's in the turn after
+        # a show's labels are placed as the plot paints, a rebuild's in the turn after, a
+        # language's once the new texts are laid out
         self._paints = PaintTimer(self._plot.viewport(), self._catch_up, self._labels_due, LABELS_LATE_MS, self)
         self._view = self._plot.getPlotItem().getViewBox()
 
@@ -256,16 +257,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
             # (hidden, when shown or read back, as before)
             self._labels_stale = True
             if self.isVisible():
-                QTimer.singleShot(0, self, self._place_after_relayout)
-
-    def _place_after_relayout(self) -> None:
-        """The stale labels placed for the view as the new texts lay it out. The relayout
-        comes as posted layout requests, each level's posted while the one above is done,
-        and a paint or a zero timer can come between them (CI's log: placed for the old view,
-        then again): they are sent now, a few levels deep, before the view is read."""
-        for _ in range(6):
-            QCoreApplication.sendPostedEvents(None, QEvent.Type.LayoutRequest)
-        self._catch_up()
+                self._paints.after_relayout()      # the stale labels, for the view as laid out then
 
     # ---- model → layers ----------------------------------------------
     def showEvent(self, event) -> None:
