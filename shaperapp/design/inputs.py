@@ -8,8 +8,9 @@ defaults, and the model applies the rules without any of them knowing about Qt.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass, replace
-from typing import Any, Mapping
+from typing import Any, Hashable, Mapping
 
 from core.forces.masses import MassProperties
 from core.base.errors import DesignError
@@ -65,3 +66,18 @@ def typed_spec(old: Spec, mode: str, changes: Mapping[str, Any], design: Design,
         except DesignError:
             fixes[name] = getattr(valid, name)
     return spec, (replace(spec, **fixes) if fixes else spec)
+
+
+def spec_edit_key(old: Spec, mode: str, changes: Mapping[str, Any]) -> tuple[Hashable | None, list[str]]:
+    """How an edit of ``old`` (``changes``, and ``mode``) is kept in the undo history: the
+    key its keystrokes merge by (None for a choice, a mode, variant or rule, which never
+    merges) and the names of the fields it changes, for the step's text."""
+    touched = tuple(sorted(name for name in changes if changes[name] != getattr(old, name)))
+    choice = mode != old.mode or any(name not in NUMBER_FIELDS for name in touched)
+    names = ["mode"] if mode != old.mode else list(touched)
+    return (None if choice else ("spec", touched)), names
+
+
+def same_typed(a: Any, b: Any) -> bool:
+    """Two typed values alike: equal, or both NaN (typing "nan" again is no edit)."""
+    return a == b or (isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b))

@@ -26,10 +26,11 @@ from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import Motion
 from core.linkage.metrics import CycleMetrics
-from core.linkage.spec import NUMBER_FIELDS, Spec
+from core.linkage.spec import Spec
 
-from .inputs import DEFAULT_MASSES, DEFAULT_RPMS, DEFAULT_STEP, Inputs, typed_spec
-from .results import (COMPUTE_ERRORS, compute, compute_error, compute_motion, same_error,
+from .inputs import DEFAULT_MASSES, DEFAULT_RPMS, DEFAULT_STEP, Inputs, same_typed, spec_edit_key, typed_spec
+from .errors import ShownError
+from .results import (COMPUTE_ERRORS, as_design_error, compute, compute_error, compute_motion, compute_whole,
                       solve_forces, typed_error)
 from .parts import FileParts
 from .undo import InputEdit, edit_text, push_edit
@@ -66,8 +67,8 @@ class DesignModel(QObject):
         self._path = ""
         self._library_name = ""
         self._index = 0
-        self._error: DesignError | None = None
-        self._forces_error: DesignError | None = None
+        self._error = ShownError(self.errorChanged)
+        self._forces_error = ShownError(self.forcesErrorChanged)
         self._session = 0
         self._valid_spec = Spec()
         self._rpms: tuple[float, ...] = DEFAULT_RPMS
@@ -145,12 +146,12 @@ class DesignModel(QObject):
         try:
             return self._dynamics_summary.get(peaks)
         except (DesignError, *COMPUTE_ERRORS) as exc:
-            self._set_forces_error(exc if isinstance(exc, DesignError) else compute_error(exc), force=True)
+            self._forces_error.set(as_design_error(exc), force=True)
             return self._dynamics_summary.undefined()
 
     @property
     def forces_error(self) -> DesignError | None:
-        return self._forces_error
+        return self._forces_error.value
 
     @property
     def rpms(self) -> tuple[float, ...]:
@@ -173,12 +174,12 @@ class DesignModel(QObject):
 
     @property
     def error(self) -> DesignError | None:
-        return self._error
+        return self._error.value
 
     @property
     def inputs_valid(self) -> bool:
         """True when what the user typed is the design on screen (nothing pending or invalid)."""
-        return self._error is None and self._forces_error is None
+        return self._error.value is None and self._forces_error.value is None
 
     @property
     def angle_index(self) -> int:
@@ -214,11 +215,8 @@ class DesignModel(QObject):
             if requested != old:
                 self.specChanged.emit()       # the form shows the value kept instead
             return
-        touched = tuple(sorted(name for name in changes if changes[name] != getattr(old, name)))
-        choice = mode != old.mode or any(name not in NUMBER_FIELDS for name in touched)
-        names = ["mode"] if mode != old.mode else list(touched)
-        self._push(replace(self._inputs, spec=spec), None if choice else ("spec", touched),
-                   lambda: edit_text(names))
+        key, names = spec_edit_key(old, mode, changes)
+        self._push(replace(self._inputs, spec=spec), key, lambda: edit_text(names))
 
     def set_rpms(self, rpms) -> None:
         """Set the crank speeds (r/min, or text as typed); an invalid list is reported, not applied."""
@@ -229,8 +227,7 @@ class DesignModel(QObject):
 
     def set_step(self, step_deg: Any) -> None:
         """Set the angle step (degrees, or text as typed)."""
-        if step_deg == self._inputs.step or (isinstance(step_deg, float) and isinstance(self._inputs.step, float)
-                                            and math.isnan(step_deg) and math.isnan(self._inputs.step)):
+        if same_typed(step_deg, self._inputs.step):
             return
         self._push(replace(self._inputs, step=step_deg), ("step",), lambda: edit_text(["step"]))
 
@@ -276,23 +273,19 @@ class DesignModel(QObject):
         ``library_name``: the library entry it came from (see :attr:`source_name`)."""
         masses = DEFAULT_MASSES if masses is None else masses
         inputs = Inputs.of(spec, tuple(float(v) for v in rpms), float(step_deg), masses)
-        try:
+
+        def check() -> None:
             spec.check_fields()
             self.parts.check(parts or {})       # a part its model cannot show: refused too
-            results = compute(inputs, masses)
-            results[-1].get()                  # all or nothing: the summary too
-        except DesignError:
-            raise
-        except COMPUTE_ERRORS as exc:
-            raise compute_error(exc) from None
+        results = compute_whole(inputs, masses, check)
         self._inputs, self._library_name = inputs, library_name
         self._valid_spec, self._rpms, self._step, self._masses = spec, inputs.rpms, inputs.step, masses
         self._design, self._motion, self._metrics, self._dynamics, self._dynamics_summary = results
         self._index = 0
         self.parts.set_loaded(parts or {})
         self.undo_stack.clear()
-        self._set_error(None)
-        self._set_forces_error(None, force=True)
+        self._error.set(None)
+        self._forces_error.set(None, force=True)
         self.specChanged.emit()
         self.resultsChanged.emit()
         self.forcesChanged.emit()
@@ -355,10 +348,10 @@ class DesignModel(QObject):
         try:
             design, motion, metrics = compute_motion(inputs)
         except DesignError as exc:
-            self._set_error(typed_error(exc, self._inputs.spec))
+            self._error.set(typed_error(exc, self._inputs.spec))
             return False
         except COMPUTE_ERRORS as exc:
-            self._set_error(compute_error(exc))
+            self._error.set(compute_error(exc))
             return False
         fraction = self._index / max(self.angle_count - 1, 1)
         self._design, self._motion, self._metrics = design, motion, metrics
@@ -366,7 +359,7 @@ class DesignModel(QObject):
         self._rpms = tuple(float(v) for v in inputs.rpms)
         self._step = float(inputs.step)
         self._index = min(int(round(fraction * (motion.crank_angle.size - 1))), motion.crank_angle.size - 1)
-        self._set_error(None)
+        self._error.set(None)
         return True
 
     def _recompute_forces(self, design_changed: bool, announce: bool) -> bool:
@@ -377,25 +370,12 @@ class DesignModel(QObject):
             masses = replace(DEFAULT_MASSES, **self._inputs.load_dict)
             dynamics, summary = solve_forces(self._design, self._motion, masses)
         except (DesignError, *COMPUTE_ERRORS) as exc:
-            error = exc if isinstance(exc, DesignError) else compute_error(exc)
-            self._set_forces_error(error, force=announce)
+            self._forces_error.set(as_design_error(exc), force=announce)
             if not design_changed:
                 return False
             masses = self._masses
             dynamics, summary = solve_forces(self._design, self._motion, masses)
         else:
-            self._set_forces_error(None, force=announce)
+            self._forces_error.set(None, force=announce)
         self._masses, self._dynamics, self._dynamics_summary = masses, dynamics, summary
         return True
-
-    def _set_error(self, error: DesignError | None) -> None:
-        same = same_error(error, self._error)
-        self._error = error
-        if not same:
-            self.errorChanged.emit()
-
-    def _set_forces_error(self, error: DesignError | None, force: bool = False) -> None:
-        same = same_error(error, self._forces_error)
-        self._forces_error = error
-        if not same or force:
-            self.forcesErrorChanged.emit()

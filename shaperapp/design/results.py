@@ -6,6 +6,8 @@ those as "cannot be computed" and keeps the last valid design.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from core.forces.dynamics import ENERGY_INTERVALS, Dynamics, DynamicsSummary, SpeedSummary, solve_dynamics
@@ -109,6 +111,20 @@ def compute(inputs: Inputs, masses: MassProperties):
     return (design, motion, metrics) + solve_forces(design, motion, masses)
 
 
+def compute_whole(inputs: Inputs, masses: MassProperties, check: Callable[[], None]):
+    """``compute``, all or nothing (the cycle summary too), after ``check`` (the fields, the
+    file's parts): a whole state put in at once. Any failure is raised as a DesignError."""
+    try:
+        check()
+        results = compute(inputs, masses)
+        results[-1].get()
+    except DesignError:
+        raise
+    except COMPUTE_ERRORS as exc:
+        raise compute_error(exc) from None
+    return results
+
+
 def typed_error(error: DesignError, spec: Spec) -> DesignError:
     """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm."""
     if (error.parameter == "rod" and spec.variant == "rod" and spec.rod_input == "ratio"
@@ -126,7 +142,6 @@ def compute_error(exc: BaseException) -> DesignError:
     return DesignError("design", type(exc).__name__, "cannot be computed for these inputs")
 
 
-def same_error(a: DesignError | None, b: DesignError | None) -> bool:
-    """Both none, or both saying the same: a keystroke that keeps a field invalid in the
-    same way changes no error, so the model emits nothing."""
-    return (a is None) == (b is None) and str(a) == str(b)
+def as_design_error(exc: BaseException) -> DesignError:
+    """A DesignError as it is, any other failure of a computation as "cannot be computed"."""
+    return exc if isinstance(exc, DesignError) else compute_error(exc)

@@ -9,8 +9,8 @@ per speed where each speed has its own x), a dot on every curve at the cursor,
 legends that wrap, bands with labels, the mouse read-out, navigation and fit,
 and image export.
 
-Plot items are created once and fed with ``setData``, so a design change
-redraws in a few milliseconds and the animation only moves cursors and dots.
+Plot items are created once (stack_items.py) and fed with ``setData``, so a design
+change redraws in a few milliseconds and the animation only moves cursors and dots.
 While the stack is hidden (a tab in the background) it redraws nothing: it
 catches up when shown, or when one of its read-back methods is called.
 """
@@ -20,22 +20,22 @@ from collections.abc import Callable, Sequence
 
 import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QObject, QPointF, QRectF, Qt, Signal
-from PySide6.QtGui import QAction, QColor
-from PySide6.QtWidgets import QGraphicsScene, QGraphicsView, QVBoxLayout, QWidget
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QGraphicsScene, QVBoxLayout, QWidget
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.lazy import lay_out_page
 from shaperapp.widgets.scroll import vertical_scroll
-from shaperapp.widgets.style import TEXT
 
 from .axes import cache_static, styled_plot_item
-from .curves import LEGEND_WIDTH, PlotSlots, finite_range
+from .curves import PlotSlots, finite_range
 from .legend import GroupLegend
 from .readout import Readout
 from .series import Series, StackSource
 from .stack_bar import StackBar
-from .stack_layout import (axis_title, fit_axis_widths, fit_heights, fitted_y, legends_beside,
-                           place_rows, plots_height, show_x_values, shown_groups)
+from .stack_items import label_plot, label_x_axis, legend_entries, plot_at, stack_canvas
+from .stack_layout import (fit_axis_widths, fit_heights, fitted_y, legends_beside, place_rows,
+                           plots_height, show_x_values, shown_groups)
 
 class PlotStack(QWidget):
     """Stacked, x-linked cycle plots of one view (see the module docstring)."""
@@ -53,16 +53,7 @@ class PlotStack(QWidget):
         self._x_range = (0.0, 1.0)
         self._x_axis: tuple[str, bool] | None = None
 
-        self._view = pg.GraphicsLayoutWidget()
-        self._view.setBackground("w")
-        self._view.ci.setSpacing(4)
-        # pyqtgraph's 9 px above and below the plots: 12 px the lowest plot's x ticks lacked
-        # at 1280 × 720 in Chinese with 16 speeds
-        self._view.ci.setContentsMargins(9, 3, 9, 3)
-        # One repaint of the rectangle around all changes: a frame's changes (cursors and
-        # dots) lie in one narrow strip, and Qt's default repaints every curve once per
-        # small dirty rectangle instead (measured 5-10× slower per frame and per edit).
-        self._view.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.BoundingRectViewportUpdate)
+        self._view = stack_canvas()
         self._view.installEventFilter(self)
         if self._series[0].key in hidden:
             raise ValueError(f"the first plot ({self._series[0].key!r}) carries the x axis and stays shown")
@@ -133,24 +124,14 @@ class PlotStack(QWidget):
         plot.item.vb.menu_handler = self._show_menu
         self._plots[key] = plot
         self._plots = {s.key: self._plots[s.key] for s in self._series if s.key in self._plots}
-        self._label_plot(plot)
+        label_plot(plot)
         if self._x_axis is not None:                    # built after the first refresh
-            self._label_x_axis(plot)
+            label_x_axis(plot, self._x_axis)
             cache_static([plot.item], True)
             self._stale = True
             if self.isVisible():
                 self.refresh()
         return plot
-
-    def _label_plot(self, plot: PlotSlots) -> None:
-        series = plot.series
-        plot.item.setLabel("left", axis_title(series.title(), series.unit),
-                           color=TEXT.name(), **{"font-size": "9pt"})
-
-    def _label_x_axis(self, plot: PlotSlots) -> None:
-        title, degrees = self._x_axis
-        plot.item.getAxis("bottom").set_degree_steps(degrees)
-        plot.item.setLabel("bottom", title, color=TEXT.name(), **{"font-size": "9pt"})
 
     def plot_visible(self, key: str) -> bool:
         return self._shown[key]
@@ -167,7 +148,7 @@ class PlotStack(QWidget):
             "double-click: fit; click: set the crank angle; right click: menu"))
         self._readout.retranslate()
         for plot in self._plots.values():
-            self._label_plot(plot)
+            label_plot(plot)
         self._fit_heights()
         self._stale = True
         if self.isVisible():
@@ -192,13 +173,7 @@ class PlotStack(QWidget):
             added |= plot.set_bands(bands, labelled=key == first)
         keys, titles, units = source.legend_keys(), source.group_titles(), source.legend_units()
         for group, legend in self._legends.items():
-            entries: dict[str, tuple[str, str, QColor, float]] = {}
-            for plot in self._plots.values():
-                if plot.series.group == group:
-                    for curve in plot.curves:
-                        if curve.legend and curve.label not in entries:
-                            entries[curve.label] = (curve.label, curve.short or curve.label,
-                                                    curve.colour, max(curve.width, LEGEND_WIDTH))
+            entries = legend_entries(self._plots.values(), group)
             self._hidden &= set(entries) | {c.label for p in self._plots.values() for c in p.curves}
             added |= legend.set_entries(list(entries.values()), keys.get(group, []), self._hidden)
             legend.set_title(titles.get(group, ""))
@@ -207,7 +182,7 @@ class PlotStack(QWidget):
         if (x_title, degrees) != self._x_axis:      # relabelling re-lays out every axis
             self._x_axis = (x_title, degrees)
             for plot in self._plots.values():
-                self._label_x_axis(plot)
+                label_x_axis(plot, self._x_axis)
             self._show_x_axis()
         self._x_range = (lo, hi)
         if added:
@@ -353,21 +328,15 @@ class PlotStack(QWidget):
         self._menu.popup(screen_pos.toPoint())
 
     # ---- mouse and read-out --------------------------------------------
-    def _plot_at(self, scene_pos: QPointF) -> tuple[str, float] | None:
-        for key, plot in self._plots.items():
-            if self._shown[key] and plot.item.vb.sceneBoundingRect().contains(scene_pos):
-                return key, float(plot.item.vb.mapSceneToView(scene_pos).x())
-        return None
-
     def _on_click(self, event) -> None:
         if event.button() != Qt.MouseButton.LeftButton or event.isAccepted() or event.double():
             return
-        hit = self._plot_at(event.scenePos())
+        hit = plot_at(self._plots, self._shown, event.scenePos())
         if hit is not None:
             self.clicked.emit(hit[1])
 
     def _on_mouse_moved(self, args: tuple) -> None:
-        self._readout.hover(self._plot_at(args[0]))
+        self._readout.hover(plot_at(self._plots, self._shown, args[0]))
 
     # ---- read back and export -----------------------------------------
     def ensure_current(self) -> None:

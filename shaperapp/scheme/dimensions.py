@@ -24,7 +24,8 @@ from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import fmt
 
 from .draw import DIM, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
-from .mechanism import Geometry, outline
+from .mechanism import Geometry
+from .outlines import outline
 from .place import RINGS, along, around, leader
 
 L1_LEAD = 4.5            # the L1 label this many u beyond the crank circle, outside the lever

@@ -2,9 +2,12 @@
 
 Sizes here are in mm of the drawing, except the pens (cosmetic: screen pixels)
 and the tags (screen pixels when fixed to the screen). The z values order the
-layers: frame under links, links under pins, labels on top.
+layers: frame under links, links under pins, labels on top. The joint names' fonts are
+here because the mechanism sets them and the labels' search shrinks them.
 """
 from __future__ import annotations
+
+import functools
 
 import numpy as np
 import pyqtgraph as pg
@@ -117,6 +120,25 @@ def text_box(item: pg.TextItem) -> Box:
 
 def overlaps(a: Box, b: Box) -> bool:
     return a[0] < b[1] and b[0] < a[1] and a[2] < b[3] and b[2] < a[3]
+
+
+def joint_font(points: int) -> QFont:
+    font = QFont()
+    font.setPointSize(points)
+    font.setBold(True)
+    font.setItalic(True)
+    return font
+
+
+JOINT_SIZES = (11, 9)        # pt: the joint names, and one standard size smaller where crowded
+@functools.cache
+def joint_fonts() -> dict[bool, QFont]:
+    """The joint names' fonts, full size (False) and one size smaller (True). Made when
+    first asked for, by a view, once the application runs: a QFont made before it (at
+    import) took the system's first family, C059, a serif, so the names of a course's or a
+    class's report (which import the scheme before starting Qt) were set in another face
+    than those of ``shaper report``."""
+    return {False: joint_font(JOINT_SIZES[0]), True: joint_font(JOINT_SIZES[1])}
 
 
 class Tag(QGraphicsRectItem):

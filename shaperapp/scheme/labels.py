@@ -27,17 +27,16 @@ from shaperapp.plots.items import CurveItem
 from shaperapp.widgets.style import LINK
 
 from .dimensions import DimensionLayer
-from .draw import Z_LABEL, pen, text_box
+from .draw import Z_LABEL, joint_fonts, pen, text_box
 from .forces import ForceLayer
-from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer, joint_fonts
+from .mechanism import JOINT_LABEL_CLEAR, PIN_FIXED, PIN_MOVING, MechanismLayer
 from .place import (LEADER_RING, Obstacles, around, boxes_at, clear_of_boxes, clear_of_segments,
-                    leader, leaders, meets, end_to_end, owned)
-from .raster import Raster
+                    end_to_end, leader, leaders, leaders_length, meets, owned, shrinking_candidates)
+from .raster import Raster, raster_region
 
 LINE_CLEAR_PX = 3.0          # a label keeps this many pixels off any line
 LEADER_GAP_PX = 2.0          # a leader starts this far off its pin's rim
-SMALL_TEXT = 9.0 / 11.0
-RASTER_CELLS = 2.0e6         # the still lines' raster: at most this many cells (coarser when zoomed in far)      # the next standard size down, as a share of the joint names' size
+SMALL_TEXT = 9.0 / 11.0      # the next standard size down, as a share of the joint names' size
 
 
 class LabelLayout(QObject):
@@ -87,13 +86,7 @@ class LabelLayout(QObject):
         texts = dims.texts()
         self._bounds = bounds
         fixed = np.concatenate([self._static_lines, dims.fixed_lines()])
-        # over the view and the whole drawing (a still label may sit off the view when
-        # zoomed in), at a pixel a cell or coarser: at most RASTER_CELLS cells
-        area = ((max(window[1], bounds[1]) - min(window[0], bounds[0]))
-                * (max(window[3], bounds[3]) - min(window[2], bounds[2])))
-        cell = max(px, float(np.sqrt(area / RASTER_CELLS)))
-        region = (min(window[0], bounds[0]), max(window[1], bounds[1]),
-                  min(window[2], bounds[2]), max(window[3], bounds[3]))
+        region, cell = raster_region(window, bounds, px)
         self._raster, swept = self._rasters(fixed, region, cell, LINE_CLEAR_PX * px)
         obstacles = Obstacles(np.empty((0, 2, 2)), 0.0, None, bounds, swept, self._spacing())
         axes, half_widths = mech.link_axes(None)
@@ -239,7 +232,8 @@ class LabelLayout(QObject):
             retry = self._frame_obstacles(index, arrows)
             still = self._place_still_for(arrows, retry, later=("L1",))
             again = self._place_joints(index, retry)
-            lead = self._still_after("L1", retry) if _led(again) < _led(joints) and not len(again["A"]) else None
+            fewer = leaders_length(again) < leaders_length(joints) and not len(again["A"])
+            lead = self._still_after("L1", retry) if fewer else None
             if lead is None:                 # no better: the first placement again
                 obstacles = self._frame_obstacles(index, arrows)
                 leaders = self._place_still_for(arrows, obstacles)
@@ -296,7 +290,7 @@ class LabelLayout(QObject):
         for k in np.flatnonzero(free):
             self._put_still(name, int(k))
             lead = self._leader_of(name)
-            length = _led({name: lead})
+            length = leaders_length({name: lead})
             if (not len(lead) or not meets(taken, lead, margin).any()) and (best is None or length < best[0]):
                 best = (length, int(k))
         if best is None:
@@ -315,19 +309,8 @@ class LabelLayout(QObject):
         gap = max(JOINT_LABEL_CLEAR * u, radius + 3.0 * px)
         taken = np.array(obstacles.boxes).reshape(-1, 4)
         margin = LINE_CLEAR_PX * px
-        # every ring at both sizes, taken in order: the near rings at full size, then
-        # smaller, then farther out (with a leader)
-        centres, boxes, far, small = [], [], [], []
-        for shrink in (False, True):
-            half = self._halves[name] * (SMALL_TEXT if shrink else 1.0)
-            spots, ring = around(point, half, direction, gap, 2.0 * half[1])
-            centres.append(spots)
-            boxes.append(boxes_at(spots, half))
-            far.append(ring >= LEADER_RING)
-            small.append(np.full(len(ring), shrink))
-        centres, boxes = np.concatenate(centres), np.concatenate(boxes)
-        far, small = np.concatenate(far), np.concatenate(small)
-        order = np.lexsort((np.arange(len(far)), small, far))
+        centres, boxes, far, small, order = shrinking_candidates(point, self._halves[name], direction,
+                                                                 gap, SMALL_TEXT)
         names = list(mech.label_directions(index))
         joints, own = np.array([mech.joint_at(n, index) for n in names]), names.index(name)
         readable, nearest = owned(boxes, joints, own, far), owned(boxes, joints, own, np.ones_like(far))
@@ -393,8 +376,3 @@ class LabelLayout(QObject):
             leaders.append(self._keep_still(name, obstacles.best(boxes, self._leader_barred(name, boxes, obstacles)),
                                             obstacles))
         return leaders
-
-
-def _led(leads: dict[str, np.ndarray]) -> float:
-    """The joint names' leaders' total length, mm (0 when every name is beside its joint)."""
-    return float(sum(np.hypot(*(lead[:, 1] - lead[:, 0]).T).sum() for lead in leads.values() if len(lead)))

@@ -13,22 +13,19 @@ Sizes that are not design data (bar widths, pins, the ram's height, the tool,
 the supports) scale with the drawing unit ``u = L3 / 40`` so that any design
 looks alike; they never change a dimension of the mechanism.
 
-The per-frame arrays are computed in frames.py and the static shapes (supports, guide
-way, tool) in shapes.py; this module keeps the Qt items, their motion and what the
-labels read back from them.
+The per-frame arrays are computed in frames.py, the static shapes (supports, guide
+way, tool) in shapes.py and the items' outlines as segments in outlines.py; this module
+keeps the Qt items, their motion and what the labels read back from them.
 """
 from __future__ import annotations
-
-import functools
 
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 import pyqtgraph as pg
-from pyqtgraph.functions import ndarray_from_qpolygonf
 from PySide6.QtCore import QObject, QPointF, QRectF, Qt
-from PySide6.QtGui import QBrush, QColor, QFont, QPainterPath
+from PySide6.QtGui import QBrush, QColor, QPainterPath
 from PySide6.QtWidgets import QGraphicsEllipseItem
 
 from core.linkage.kinematics import Shape
@@ -40,9 +37,10 @@ from shaperapp.widgets.style import FRAME, LINK, TOOL_PATH
 
 from .draw import (BLOCK_FILL, LINK_FILL, PATH_LIGHT, RAM_FILL, WHITE, Box, Z_BLOCK,
                           Z_CRANK, Z_FRAME, Z_GHOST, Z_JOINT, Z_LABEL, Z_LEVER, Z_PATH, Z_RAM,
-                          body, pen, rect, segments, stadium, text_box)
+                          body, joint_fonts, pen, rect, segments, stadium, text_box)
 from .frames import Frames, build_frames
-from .place import local_segments, posed
+from .outlines import outline
+from .place import posed
 from .shapes import rail, support, tool_shape
 
 UNITS_PER_LEVER = 40.0     # drawing unit u = L3 / 40
@@ -51,46 +49,6 @@ JOINT_LABEL_CLEAR = 1.4      # × u from a joint to its label's near edge: past 
 LEVER_HALF_WIDTH = 0.8       # × u
 LEFT = np.array([-1.0, 0.0])
 PIN_FIXED, PIN_MOVING = 0.5, 0.38   # pin marker radii, u
-
-
-def outline(item) -> np.ndarray:
-    """An item's painter path (an ellipse's circle, a curve's data) as segments in its
-    own frame. Each subpath's points are copied while Qt's polygon still holds them:
-    pyqtgraph's ``ndarray_from_qpolygonf`` only views the polygon's memory, and read
-    after the list of polygons was freed it gave whatever the allocator had written
-    there since, so the labels' raster changed from run to run (issue 40)."""
-    if isinstance(item, CurveItem):
-        pts = np.column_stack([item.x, item.y])
-        if item.connect == "pairs":
-            return pts.reshape(-1, 2, 2)
-        ends = np.stack([pts[:-1], pts[1:]], axis=1)
-        return ends[np.isfinite(ends).all(axis=(1, 2))]
-    if isinstance(item, QGraphicsEllipseItem):
-        path = QPainterPath()
-        path.addEllipse(item.rect())
-    else:
-        path = item.path()
-    polygons = path.toSubpathPolygons()      # alive until every point is copied
-    return local_segments([ndarray_from_qpolygonf(p).copy() for p in polygons])
-
-
-def joint_font(points: int) -> QFont:
-    font = QFont()
-    font.setPointSize(points)
-    font.setBold(True)
-    font.setItalic(True)
-    return font
-
-
-JOINT_SIZES = (11, 9)        # pt: the joint names, and one standard size smaller where crowded
-@functools.cache
-def joint_fonts() -> dict[bool, QFont]:
-    """The joint names' fonts, full size (False) and one size smaller (True). Made when
-    first asked for, by a view, once the application runs: a QFont made before it (at
-    import) took the system's first family, C059, a serif, so the names of a course's or a
-    class's report (which import the scheme before starting Qt) were set in another face
-    than those of ``shaper report``."""
-    return {False: joint_font(JOINT_SIZES[0]), True: joint_font(JOINT_SIZES[1])}
 
 
 @dataclass(frozen=True)

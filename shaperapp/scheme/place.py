@@ -260,6 +260,26 @@ def around(point: np.ndarray, half: np.ndarray, preferred: np.ndarray, gap: floa
     return centres.reshape(-1, 2), ring
 
 
+def shrinking_candidates(point: np.ndarray, half: np.ndarray, preferred: np.ndarray, gap: float,
+                         small_share: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """A joint name's candidates: every ring of ``around`` at full size (``half``) and one
+    standard size smaller (``small_share`` of it), and the order they are taken in: the
+    near rings at full size, then smaller, then farther out (with a leader). Returns the
+    centres (m, 2), boxes (m, 4), which are led to (m,: from LEADER_RING on), which are
+    small (m,) and the order (m,)."""
+    centres, boxes, far, small = [], [], [], []
+    for shrink in (False, True):
+        size = half * (small_share if shrink else 1.0)
+        spots, ring = around(point, size, preferred, gap, 2.0 * size[1])
+        centres.append(spots)
+        boxes.append(boxes_at(spots, size))
+        far.append(ring >= LEADER_RING)
+        small.append(np.full(len(ring), shrink))
+    centres, boxes = np.concatenate(centres), np.concatenate(boxes)
+    far, small = np.concatenate(far), np.concatenate(small)
+    return centres, boxes, far, small, np.lexsort((np.arange(len(far)), small, far))
+
+
 def along(p: np.ndarray, q: np.ndarray, normal: np.ndarray, offset: float, half: np.ndarray,
           ts=(0.5, 0.35, 0.65, 0.2, 0.8)) -> np.ndarray:
     """Candidate centres beside the line p–q at the fractions ``ts`` along it: on the
@@ -303,6 +323,11 @@ def leaders(point: np.ndarray, boxes: np.ndarray, start_gap: float) -> np.ndarra
         to_edge = np.min(np.where(np.abs(e) > 0, half / np.abs(e), np.inf), axis=1)
     end = np.maximum(length - to_edge, start_gap)
     return np.stack([point + e * start_gap, point + e * end[:, None]], axis=1)
+
+
+def leaders_length(leads: dict[str, np.ndarray]) -> float:
+    """The leaders' total length, mm (0 when every label is beside its point)."""
+    return float(sum(np.hypot(*(lead[:, 1] - lead[:, 0]).T).sum() for lead in leads.values() if len(lead)))
 
 
 def local_segments(polygons: list[np.ndarray]) -> np.ndarray:

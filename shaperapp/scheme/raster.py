@@ -34,6 +34,22 @@ def clipped(ends: np.ndarray, bounds: tuple[float, float, float, float]) -> np.n
     return out if keep.all() else out[keep]
 
 
+RASTER_CELLS = 2.0e6         # the still lines' raster: at most this many cells (coarser when zoomed in far)
+
+
+def raster_region(window: tuple[float, float, float, float], bounds: tuple[float, float, float, float],
+                  px: float) -> tuple[tuple[float, float, float, float], float]:
+    """Where the still lines are burnt, (left, right, bottom, top) mm, and the cell's size:
+    over the view's ``window`` and the drawing's ``bounds`` both (a still label may sit off
+    the view when zoomed in), at a pixel ``px`` a cell or coarser: at most RASTER_CELLS cells."""
+    area = ((max(window[1], bounds[1]) - min(window[0], bounds[0]))
+            * (max(window[3], bounds[3]) - min(window[2], bounds[2])))
+    cell = max(px, float(np.sqrt(area / RASTER_CELLS)))
+    region = (min(window[0], bounds[0]), max(window[1], bounds[1]),
+              min(window[2], bounds[2]), max(window[3], bounds[3]))
+    return region, cell
+
+
 BURN_POINTS = 500_000
 """Samples burnt at once (16 B each, and temporaries): their arrays are a few tens of MB,
 whatever the lines."""

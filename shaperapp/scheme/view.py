@@ -5,7 +5,8 @@ ratio — the mechanism (mechanism.py), its dimensions
 (dimensions.py) and the optional force arrows (forces.py) — and
 exports them (image_export.py). Per design it rebuilds the layers and fits
 once; per animation frame it only asks each shown layer to move. Its bar and menu
-are built in controls.py; when a new design is fitted, refit.py decides.
+are built in controls.py; when a new design is fitted, refit.py decides; the paints the
+labels wait for are watched by paint_timer.py, and label_view.py reads the view for them.
 
 A frame's labels are placed when the frame is first shown and kept for the design and
 zoom (labels.py), so a cycle played twice searches once. An edit's new mechanism is
@@ -24,7 +25,7 @@ and its export dialog (whose SVG export fails on recent Qt) are not offered.
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QEvent, QPointF, QRectF, QTimer
+from PySide6.QtCore import QEvent, QPointF, QRectF, QTimer
 from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QMenu, QVBoxLayout, QWidget
 
@@ -35,8 +36,10 @@ from .controls import SchemeControls
 from .dimensions import DimensionLayer
 from .draw import WHITE, canvas
 from .forces import FORCE_NAMES, ForceLayer  # noqa: F401  (FORCE_NAMES: public names)
+from .label_view import label_bounds, label_window, view_key
 from .labels import LabelLayout
 from .mechanism import Geometry, MechanismLayer
+from .paint_timer import PaintTimer
 from .readback import SchemeReadBack
 from .refit import needs_fit
 
@@ -57,14 +60,13 @@ class SchemeWidget(SchemeReadBack, QWidget):
         self._placed_view: tuple = ()              # the view the labels were last placed for
         self._labels_stale = False                 # placing them waits until shown or read back
         self._placing_soon = False                 # a rebuild or placement under way places them at its end
-        self._labels_at_paint = False              # shown: placed when the plot next paints
         self._forces_stale = False
         self._update_timer = QTimer(self, singleShot=True, interval=0)
         self._update_timer.timeout.connect(self._update)
-        self._labels_timer = QTimer(self, singleShot=True, interval=LABELS_LATE_MS)
-        self._labels_timer.timeout.connect(self._labels_due)
         self._plot = canvas()
-        self._plot.viewport().installEventFilter(self)     # its paints: the labels come after
+        # a show's labels are placed as the plot paints, a rebuild's in the turn after, a
+        # language's once the new texts are laid out
+        self._paints = PaintTimer(self._plot.viewport(), self._catch_up, self._labels_due, LABELS_LATE_MS, self)
         self._view = self._plot.getPlotItem().getViewBox()
 
         controls = self._controls = SchemeControls(self, self.fit, self.set_dimensions_visible,
@@ -161,25 +163,12 @@ class SchemeWidget(SchemeReadBack, QWidget):
             self._placing_soon = False
         self._labels_stale = False
         self._placed_view = key
-        self._labels.place_still(self._view.viewPixelSize(), self._bounds(), self._window())
+        view = self._view.viewRect()
+        self._labels.place_still(self._view.viewPixelSize(), label_bounds(self._fit_rect(), view),
+                                 label_window(view))
 
     def _view_key(self) -> tuple:
-        """The view's range and pixel size: the labels' placement depends on nothing else of it."""
-        r, px = self._view.viewRect(), self._view.viewPixelSize()
-        return (r.left(), r.top(), r.width(), r.height(), *px)
-
-    def _window(self) -> tuple[float, float, float, float]:
-        """The view and a quarter of it around, mm: where a label can be seen, and so where
-        the lines it keeps off are rasterised (a label farther out is off screen)."""
-        r = self._view.viewRect()
-        dx, dy = 0.25 * r.width(), 0.25 * r.height()
-        return r.left() - dx, r.right() + dx, r.top() - dy, r.bottom() + dy
-
-    def _bounds(self) -> tuple[float, float, float, float]:
-        """The drawing's extent (the arrows' reach included while shown), or the view where it
-        shows more (zoomed out): labels stay inside."""
-        r = self._fit_rect().united(self._view.viewRect())
-        return r.left(), r.right(), r.top(), r.bottom()
+        return view_key(self._view.viewRect(), self._view.viewPixelSize())
 
     def _zoomed(self, *_) -> None:
         """The texts keep their size on screen: their size in mm changed, so they are placed
@@ -188,7 +177,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
         if self._view_key() == self._placed_view:
             return
         self._dimensions.separate_chain_labels()
-        if not self._labels_timer.isActive():      # else due after the paint, for the view then
+        if not self._paints.waiting():      # else due after the paint, for the view then
             self._dimensions_placed()
 
     def dimensions_visible(self) -> bool:
@@ -268,16 +257,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
             # (hidden, when shown or read back, as before)
             self._labels_stale = True
             if self.isVisible():
-                QTimer.singleShot(0, self, self._place_after_relayout)
-
-    def _place_after_relayout(self) -> None:
-        """The stale labels placed for the view as the new texts lay it out. The relayout
-        comes as posted layout requests, each level's posted while the one above is done,
-        and a paint or a zero timer can come between them (CI's log: placed for the old view,
-        then again): they are sent now, a few levels deep, before the view is read."""
-        for _ in range(6):
-            QCoreApplication.sendPostedEvents(None, QEvent.Type.LayoutRequest)
-        self._catch_up()
+                self._paints.after_relayout()      # the stale labels, for the view as laid out then
 
     # ---- model → layers ----------------------------------------------
     def showEvent(self, event) -> None:
@@ -285,14 +265,14 @@ class SchemeWidget(SchemeReadBack, QWidget):
         after this (``Docks.apply_sizes``), and a search here was redone (40-50 ms)."""
         super().showEvent(event)
         self._update()
-        self._labels_at_paint = True
+        self._paints.at_next_paint()
 
     def _catch_up(self) -> None:
         """Bring the scheme and its labels up to the model: when shown after being hidden,
         and before any read-back or export."""
         self._update()
         if self._labels_stale and not self._stale and self._geometry is not None:
-            self._labels_timer.stop()
+            self._paints.cancel()
             self._place_still(hidden_too=True)
             self._draw_forces(self._model.angle_index)
 
@@ -310,16 +290,6 @@ class SchemeWidget(SchemeReadBack, QWidget):
             self._move(self._model.angle_index)
         elif self._forces_stale:
             self._draw_forces(self._model.angle_index)
-
-    def eventFilter(self, watched, event: QEvent) -> bool:
-        """The plot's paint: the labels of a show are placed before it draws, a rebuild's
-        in the next turn."""
-        if event.type() == QEvent.Type.Paint and self._labels_at_paint:
-            self._labels_at_paint = False
-            self._catch_up()
-        elif event.type() == QEvent.Type.Paint and self._labels_timer.isActive():
-            self._labels_timer.start(0)
-        return super().eventFilter(watched, event)
 
     def _labels_due(self) -> None:
         """The turn after a rebuild's paint (a newer rebuild still due waits for its own)."""
@@ -364,7 +334,7 @@ class SchemeWidget(SchemeReadBack, QWidget):
                 self._placing_soon = False
         if later:
             self._labels_stale = True
-            self._labels_timer.start(LABELS_LATE_MS)
+            self._paints.after_next_paint()
         else:
             self._place_still()
         self._move(self._model.angle_index)

@@ -4,8 +4,9 @@ It owns no design data (the model does) and no file logic (the document does);
 widgets talk only to the model. Central: the plot tabs (Kinematics, Forces,
 Positions, Explore, Compare) above the animation bar. Docks (``docks.py``):
 inputs, results, mechanism, vector diagrams, library. Menus and toolbar are
-built in ``menus.py``, actions behave as ``actions.py`` makes them, and
-``state.py`` fits the window to the screen and remembers the layout.
+built in ``menus.py``, actions behave as ``actions.py`` makes them, the views
+built when first shown are made by ``pages.py``, and ``state.py`` fits the window
+to the screen and remembers the layout.
 """
 from __future__ import annotations
 
@@ -31,6 +32,7 @@ from shaperapp.widgets.guards import ShortcutGuard, guard_wheel
 from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
 from shaperapp.widgets.messages import describe
 
+from . import pages
 from . import state as window_state
 from .actions import command, flush_typing, set_tip, stack_action, window_shortcut
 from .animation import AnimationBar
@@ -57,20 +59,20 @@ class MainWindow(QMainWindow):
         self.tabs = ViewTabs()
         self.tabs.addTab(self.plots, "")
         # The other tabs are built (and their modules imported) when first shown or asked for.
-        self._pages = {name: LazyPage(lambda name=name: self._build_tab(name))
-                       for name in ("forces", "positions", "explore", "compare")}
+        self._pages = {name: LazyPage(lambda name=name: pages.tab_view(name, model)) for name in pages.TABS}
         for page in self._pages.values():
             self.tabs.addTab(page, "")
         # So are the panes hidden at first (the library) or behind another's tab (the vector diagrams).
-        self._pages["polygons"] = LazyPage(self._build_polygons, defer=True)
-        self._pages["library"] = LazyPage(self._build_library)
+        self._pages["polygons"] = LazyPage(
+            lambda: pages.polygon_view(model, lambda: self.docks.enlarge_polygons()), defer=True)
+        self._pages["library"] = LazyPage(lambda: pages.library_pane(model, settings, self._show_comparison))
         # The cam's model exists from the start (it holds the cam that Save writes and Open
         # reads); its tab is built when first shown.
         self.cam_model = CamModel(model, self)
-        self._pages["cam"] = LazyPage(self._build_cam)
+        self._pages["cam"] = LazyPage(lambda: pages.cam_tab(model, self.cam_model))
         self.tabs.addTab(self._pages["cam"], "")
         self.gear_model = GearModel(model, self)     # the same for the gear pair
-        self._pages["gear"] = LazyPage(self._build_gear)
+        self._pages["gear"] = LazyPage(lambda: pages.gear_tab(model, self.gear_model))
         self.tabs.addTab(self._pages["gear"], "")
         self._idle_build_started = False
         central = QWidget()
@@ -110,42 +112,6 @@ class MainWindow(QMainWindow):
 
     polygon_view = property(lambda self: self._pages["polygons"].view())
     library = property(lambda self: self._pages["library"].view())
-
-    def _build_polygons(self) -> QWidget:
-        from shaperapp.vectors.view import PolygonView
-        view = PolygonView(self.model)
-        view.enlargeRequested.connect(lambda: self.docks.enlarge_polygons())
-        return view
-
-    def _build_library(self) -> QWidget:
-        from shaperapp.library.pane import LibraryPane
-        pane = LibraryPane(self.model, settings=self.settings)
-        pane.compareRequested.connect(self._show_comparison)
-        return pane
-
-    def _build_cam(self) -> QWidget:
-        from core.cam.synthesis import import_solvers
-        from shaperapp.cam.tab import CamTab
-        tab = CamTab(self.model, cam_model=self.cam_model)
-        QTimer.singleShot(0, tab, import_solvers)   # built while idle: scipy too, before the visit
-        return tab
-
-    def _build_gear(self) -> QWidget:
-        from shaperapp.gear.tab import GearTab
-        return GearTab(self.model, gear_model=self.gear_model)
-
-    def _build_tab(self, name: str) -> QWidget:
-        if name == "forces":
-            from shaperapp.plots.forces import ForcePlots
-            return ForcePlots(self.model)
-        if name == "positions":
-            from shaperapp.positions.view import PositionsView
-            return PositionsView(self.model)
-        if name == "explore":
-            from shaperapp.explore.view import ExploreView
-            return ExploreView(self.model)
-        from shaperapp.compare.view import CompareView
-        return CompareView(self.model)
 
     def showEvent(self, event) -> None:
         super().showEvent(event)

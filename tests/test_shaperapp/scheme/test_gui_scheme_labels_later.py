@@ -90,7 +90,7 @@ def test_a_read_back_before_the_turn_places_the_labels_first(qtbot, monkeypatch)
     assert not scheme.labels_settled() and calls == []      # waiting for its turn
     scheme.dimension_label_boxes()
     assert scheme.labels_settled() and len(calls) == 1
-    qtbot.waitUntil(lambda: not scheme._labels_timer.isActive())
+    qtbot.waitUntil(lambda: not scheme._paints.waiting())
     assert len(calls) == 1                                   # the turn finds nothing to do
 
 

@@ -1,6 +1,6 @@
 """The scheme's labels are a function of the design and the view only (issue 40): under
 load two runs of `shaper report` on one design placed §3's H and L3 differently. The label
-search reads the lines drawn from Qt's painter paths (``mechanism.outline``), and it read
+search reads the lines drawn from Qt's painter paths (``outlines.outline``), and it read
 each subpath's points through a view of a polygon already freed: whatever the allocator had
 written there since. Here freed memory is written over on purpose (``freed_memory``) after
 the paths are read and before their points are used."""
@@ -11,7 +11,7 @@ from PySide6.QtCore import QRectF
 from PySide6.QtGui import QColor, QImage, QPainter, QPainterPath
 from PySide6.QtWidgets import QGraphicsPathItem
 
-import shaperapp.scheme.mechanism as mechanism
+import shaperapp.scheme.outlines as outlines
 from core.linkage.metrics import analyze
 from core.linkage.spec import Spec
 from freed_memory import scribbled
@@ -28,8 +28,8 @@ def test_outline_is_the_paths_points_whatever_freed_memory_holds(qapp, monkeypat
     # each point read on its own from Qt: a copy, whatever happens to the polygon later
     polylines = [np.array([(p.x(), p.y()) for p in polygon]) for polygon in path.toSubpathPolygons()]
     expected = np.concatenate([np.stack([p[:-1], p[1:]], axis=1) for p in polylines])
-    monkeypatch.setattr(mechanism, "local_segments", scribbled(mechanism.local_segments))
-    got = mechanism.outline(QGraphicsPathItem(path))
+    monkeypatch.setattr(outlines, "local_segments", scribbled(outlines.local_segments))
+    got = outlines.outline(QGraphicsPathItem(path))
     assert got.shape == expected.shape == (16 + 4 + 2, 2, 2)
     assert np.array_equal(got, expected), np.abs(got - expected).max()
 
@@ -56,7 +56,7 @@ def test_the_reports_limit_schemes_are_alike_whatever_freed_memory_holds(qapp, m
     scheme reads a body's outline: the same pixels (the labels in the same places)."""
     spec = Spec(crank=100.0, time_ratio=1.4, stroke=300.0)
     plain = limit_schemes_image(spec)
-    monkeypatch.setattr(mechanism, "local_segments", scribbled(mechanism.local_segments))
+    monkeypatch.setattr(outlines, "local_segments", scribbled(outlines.local_segments))
     forced = limit_schemes_image(spec)
     assert plain.shape == forced.shape
     assert np.array_equal(plain, forced), f"{np.count_nonzero(plain != forced)} bytes differ"
