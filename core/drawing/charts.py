@@ -148,7 +148,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
     room = (y1 - y0) - 3.0 * height - 6.0 - below
     y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS) if top > bottom else 1.0
-    y_ticks = _round_ticks(bottom, top, y_scale)
+    y_ticks = _round_ticks(bottom, top, y_scale, least_mm=2.0 * small)     # numbers a line apart at least
     widest = max((text_width(number_text(v), small) for v in y_ticks), default=0.0)
     left = x0 + max(6.0 * height, widest + TICK + 1.0 + 0.5)     # 0.5 mm clear of the box
     span_x = float(x[-1] - x[0])
@@ -258,12 +258,31 @@ def scale_notes(y_note: str, x_note: str | None = None, y_unit: float = 1.0
                            + ([x_note.format(mu=number_text(mx))] if x_note else []))
 
 
-def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> list[float]:
-    """Round values between lo and hi about every ``every_mm`` of paper."""
+def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0, least_mm: float = 0.0) -> list[float]:
+    """Round values between lo and hi about every ``every_mm`` of paper (the step of the 1, 2,
+    5 series at or above it); where that leaves no value but 0 in the range, the next finer
+    steps, no less than ``least_mm`` apart, until one is there: a reader reads a value off a
+    numbered tick. A3's torque chart, 21 mm high at μM = 40 (N·m)/mm, was ticked every
+    1000 N·m up to 851 N·m and numbered nothing."""
     step = nice_scale(scale * every_mm, 1.0, (1.0, 2.0, 5.0))
+    ticks = _ticks(lo, hi, step)
+    while not any(ticks) and _finer(step) / scale >= least_mm and lo < hi:
+        step = _finer(step)
+        ticks = _ticks(lo, hi, step)
+    return ticks
+
+
+def _ticks(lo: float, hi: float, step: float) -> list[float]:
+    """The multiples of ``step`` from lo to hi."""
     first = math.ceil(lo / step - 1e-9)
     last = math.floor(hi / step + 1e-9)
     return [k * step for k in range(first, last + 1)]
+
+
+def _finer(step: float) -> float:
+    """The step of the 1, 2, 5 series below ``step`` (one of it)."""
+    power = 10.0 ** math.floor(math.log10(step) + 1e-9)
+    return {1: 0.5, 2: 1.0, 5: 2.0}[round(step / power)] * power
 
 
 # ---- a polygon's vector equations and magnitudes, beside it -------------------------------
