@@ -16,7 +16,7 @@ import numpy as np
 from core.forces.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
-from .labels import Room
+from .labels import Room, label_gap
 from .sheet import (Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width,
                     word_gap)
 
@@ -134,8 +134,8 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     dashed segments over part of the span (e.g. an allowance over one phase), inside the
     y range like the curves; ``notes`` (x scale, y scale) → lines written under the y arrow's
     tip at the right (the scales μ), clear of the curves. Every text is placed after the lines,
-    clear of them and a word space off each other (:mod:`labels`): the notes, the titles, then
-    the tick numbers, as many as stand apart (:func:`spaced_labels`; a number a curve runs
+    clear of them and a word space off each other (:mod:`labels`): the notes, the titles (first
+    LABEL_GAP off the notes), then the tick numbers, as many as stand apart (:func:`spaced_labels`; a number a curve runs
     through goes beside its tick or above the axis, else is left out). Scales from
     the round series; the x axis keeps 14 mm of the box for its title, the y axis
     ``height``·6 mm for its tick labels, or more where the widest label needs it (a torque
@@ -194,7 +194,8 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
               [Text(x_title, (x_end, zero + side * (1.5 + k * 1.5 * height)), height, "rb" if side > 0 else "rt")
                for k in range(3) for side in (1, -1)])
     for spots in titles:                     # a title stands, before the ticks' numbers: at worst its first spot
-        placed = room.first_free(spots)
+        # first LABEL_GAP off the notes: "φ/(°)" 0.1 h under "μv = 0.08 (m/s)/mm" read as its second line
+        placed = room.first_free(spots, label_gap(height)) or room.first_free(spots)
         if placed is None:
             placed = spots[0]
             room.taken.append(placed.box())
