@@ -110,14 +110,14 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
 
 def wrapped_cell(text: str, box: Box, largest: float, least: float = 5.0) -> list[Text]:
     """``text`` in the cell ``box`` on one line as large as fits (≤ ``largest``), or, when
-    that would be smaller than ``least`` or cut, on two lines (≤ 5 mm), or three where the
-    cell holds them, broken where a line may break (:func:`line_breaks`): whole and as large
+    that would be smaller than ``least`` or cut, on two lines (≤ 5 mm), or more where the
+    cell holds them (:func:`most_lines`), broken where a line may break (:func:`line_breaks`): whole and as large
     as they come, in the fewest lines, the breaks nearest the even split of those; when no
     lines hold it whole, the lines that show the most of it, the last cut with "…", where
     they show more than one line (a long design or sheet name in the name area's 50 mm
     cells; a student's name in the 34 mm signature cell, the student's identity on the
     sheet; "Mechanical Engineering 2101" in the 28 mm class cell, three lines at 2.5 mm).
-    Three lines, not a smaller height: GB/T 14691's next height down, 1.8 mm, is for letters
+    More lines, not a smaller height: GB/T 14691's next height down, 1.8 mm, is for letters
     and digits; its Chinese characters are at least 3.5 mm (the title block's 2.5 mm is
     already the least the sheets print)."""
     one = cell_text(text, box, largest, layer=TITLE)
@@ -140,7 +140,8 @@ def wrapped_cell(text: str, box: Box, largest: float, least: float = 5.0) -> lis
 def most_lines(box: Box) -> int:
     """How many lines of the least height (2.5 mm) the cell ``box`` holds, LINE_PITCH apart
     and 1.6 heights for the outer lines' room (one line's share, as :func:`cell_text`
-    gives it): 3 in the title block's 14 mm rows and its name area."""
+    gives it): 3 in the title block's 14 mm rows and the design's 13 mm, 4 in the name
+    area's 18 mm."""
     room = (box[3] - box[1]) / TEXT_HEIGHTS[0]
     return max(int((room - 1.6) / LINE_PITCH + 1e-9) + 1, 1)
 
