@@ -93,10 +93,25 @@ def test_a_class_name_is_printed_whole(group, sheet):
     Chinese characters are at least 3.5 mm). "Mechanical Engineering 2101" was cut to
     "Mechanical / Engineering…" on two lines."""
     p, items = drawn(TitleBlock("Motion analysis", "s01", "1:5", "1/4", group=group), sheet)
-    cell = cells(p)["group"]
-    lines = field_lines(items, cell)
+    assert_whole(field_lines(items, cells(p)["group"]), cells(p)["group"], group)
+
+
+SCHOOLS = ["School of Mechanical Engineering and Automation, Northeastern University",
+           "华中科技大学机械科学与工程学院机械设计制造及其自动化系"]
+
+
+@pytest.mark.parametrize("school", SCHOOLS)
+def test_a_long_school_is_printed_whole_in_the_name_area(school):
+    """The name area's 50 × 18 mm cell holds four lines at 2.5 mm: a university's school
+    is printed whole (the English one was cut on two lines)."""
+    p, items = drawn(TitleBlock("Motion analysis", "s01", "1:5", "1/4", school=school))
+    assert_whole(field_lines(items, cells(p)["school"]), cells(p)["school"], school)
+
+
+def assert_whole(lines, cell, value) -> None:
+    """``lines`` show ``value`` whole, inside ``cell``, one height, a line pitch apart."""
     shown = "".join(t.text for t in lines)
-    assert "…" not in shown and shown.replace(" ", "") == group.replace(" ", ""), shown
+    assert "…" not in shown and shown.replace(" ", "") == value.replace(" ", ""), shown
     for t in lines:
         box = t.box()
         assert cell[0] + 0.5 <= box[0] and box[2] <= cell[2] - 0.5, (t.text, box, cell)
