@@ -91,7 +91,7 @@ def test_a_class_name_is_printed_whole(group, sheet):
     """The class cell (28 × 14 mm) prints a realistic class name whole: on up to three lines
     at 2.5 mm (GB/T 14691's next height down, 1.8 mm, is for letters and digits only; its
     Chinese characters are at least 3.5 mm). "Mechanical Engineering 2101" was cut to
-    "Mechanical / Engineering…" on two lines."""
+    "Mechanical / Engineering …" on two lines."""
     p, items = drawn(TitleBlock("Motion analysis", "s01", "1:5", "1/4", group=group), sheet)
     assert_whole(field_lines(items, cells(p)["group"]), cells(p)["group"], group)
 
