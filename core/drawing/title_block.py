@@ -148,13 +148,20 @@ def most_lines(box: Box) -> int:
 
 def _cut_sets(text: str, breaks: list[int], count: int, box: Box) -> list[tuple[int, ...]]:
     """The ways to break ``text`` into ``count`` lines whose every line but the last fits
-    ``box`` at the least height (else what follows it is lost from the middle), the most
-    even first."""
+    ``box`` at the least height (else what follows it is lost from the middle): those that
+    break after a comma first ("L1 100 mm, K / 1.4, H 300 mm" parted K from its value), the
+    most even first among equals."""
     room = box[2] - box[0] - 2.0
     even = [len(text) * k / count for k in range(1, count)]
     fits = [cuts for cuts in itertools.combinations(breaks, count - 1)
             if all(text_width(part, TEXT_HEIGHTS[0]) <= room for part in _parts(text, cuts)[:-1])]
-    return sorted(fits, key=lambda cuts: sum(abs(c - e) for c, e in zip(cuts, even)))
+    return sorted(fits, key=lambda cuts: (sum(not _after_comma(text, c) for c in cuts),
+                                          sum(abs(c - e) for c, e in zip(cuts, even))))
+
+
+def _after_comma(text: str, at: int) -> bool:
+    """Whether a break at ``at`` follows a comma or a semicolon (a clause's end)."""
+    return text[:at].rstrip()[-1:] in (",", ";", "，", "；", "、")
 
 
 def _parts(text: str, cuts: tuple[int, ...]) -> list[str]:

@@ -121,3 +121,16 @@ def assert_whole(lines, cell, value) -> None:
         assert upper.height == lower.height
         assert upper.position[1] - lower.position[1] >= 1.4 * upper.height - 1e-9
         assert upper.box()[1] >= lower.box()[3]
+
+
+@pytest.mark.parametrize("design", ["L1 100 mm, K 1.4, H 300 mm", "L1 100 mm, K 1.46, H 312 mm, L4/L3 0.3"])
+def test_a_design_named_by_its_inputs_breaks_after_a_comma(design):
+    """The design cell (50 × 13 mm over the speed) breaks a name of inputs after a comma
+    where that sets it as large: "L1 100 mm, K / 1.4, H 300 mm" parted K from its value."""
+    p, items = drawn(TitleBlock("Motion analysis", design, "1:5", "1/4", speed="n_2 = 40 r/min"))
+    x1, y0 = p.border[2], p.border[1]
+    cell = (x1 - 50.0, y0 + 7.0, x1, y0 + 20.0)
+    lines = field_lines(items, cell)
+    assert len(lines) == 2, [t.text for t in lines]
+    assert_whole(lines, cell, design)
+    assert lines[0].text.endswith(","), [t.text for t in lines]
