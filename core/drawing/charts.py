@@ -16,8 +16,8 @@ import numpy as np
 from core.forces.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
+from core.base.lettering import label_gap, word_gap
 from .labels import Room
-from core.base.lettering import word_gap
 from .sheet import Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width
 
 ARROW = (3.5, 1.0)          # arrowhead length and half width, paper mm
@@ -134,8 +134,8 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     dashed segments over part of the span (e.g. an allowance over one phase), inside the
     y range like the curves; ``notes`` (x scale, y scale) → lines written under the y arrow's
     tip at the right (the scales μ), clear of the curves. Every text is placed after the lines,
-    clear of them and a word space off each other (:mod:`labels`): the notes, the titles, then
-    the tick numbers, as many as stand apart (:func:`spaced_labels`; a number a curve runs
+    clear of them and a word space off each other (:mod:`labels`): the notes, the titles (first
+    LABEL_GAP off the notes), then the tick numbers, as many as stand apart (:func:`spaced_labels`; a number a curve runs
     through goes beside its tick or above the axis, else is left out). Scales from
     the round series; the x axis keeps 14 mm of the box for its title, the y axis
     ``height``·6 mm for its tick labels, or more where the widest label needs it (a torque
@@ -148,7 +148,7 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
     top, bottom = max(float(ys.max()), 0.0), min(float(ys.min()), 0.0)
     room = (y1 - y0) - 3.0 * height - 6.0 - below
     y_scale = nice_scale(max(top - bottom, 1e-12), room, FINE_MANTISSAS) if top > bottom else 1.0
-    y_ticks = _round_ticks(bottom, top, y_scale)
+    y_ticks = _round_ticks(bottom, top, y_scale, least_mm=2.0 * small)     # numbers a line apart at least
     widest = max((text_width(number_text(v), small) for v in y_ticks), default=0.0)
     left = x0 + max(6.0 * height, widest + TICK + 1.0 + 0.5)     # 0.5 mm clear of the box
     span_x = float(x[-1] - x[0])
@@ -194,7 +194,8 @@ def chart(box: Box, x: np.ndarray, curves: Sequence[Curve], x_title: str, y_titl
               [Text(x_title, (x_end, zero + side * (1.5 + k * 1.5 * height)), height, "rb" if side > 0 else "rt")
                for k in range(3) for side in (1, -1)])
     for spots in titles:                     # a title stands, before the ticks' numbers: at worst its first spot
-        placed = room.first_free(spots)
+        # first LABEL_GAP off the notes: "φ/(°)" 0.1 h under "μv = 0.08 (m/s)/mm" read as its second line
+        placed = room.first_free(spots, label_gap(height)) or room.first_free(spots)
         if placed is None:
             placed = spots[0]
             room.taken.append(placed.box())
@@ -258,12 +259,31 @@ def scale_notes(y_note: str, x_note: str | None = None, y_unit: float = 1.0
                            + ([x_note.format(mu=number_text(mx))] if x_note else []))
 
 
-def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0) -> list[float]:
-    """Round values between lo and hi about every ``every_mm`` of paper."""
+def _round_ticks(lo: float, hi: float, scale: float, every_mm: float = 20.0, least_mm: float = 0.0) -> list[float]:
+    """Round values between lo and hi about every ``every_mm`` of paper (the step of the 1, 2,
+    5 series at or above it); where that leaves no value but 0 in the range, the next finer
+    steps, no less than ``least_mm`` apart, until one is there: a reader reads a value off a
+    numbered tick. A3's torque chart, 21 mm high at μM = 40 (N·m)/mm, was ticked every
+    1000 N·m up to 851 N·m and numbered nothing."""
     step = nice_scale(scale * every_mm, 1.0, (1.0, 2.0, 5.0))
+    ticks = _ticks(lo, hi, step)
+    while not any(ticks) and _finer(step) / scale >= least_mm and lo < hi:
+        step = _finer(step)
+        ticks = _ticks(lo, hi, step)
+    return ticks
+
+
+def _ticks(lo: float, hi: float, step: float) -> list[float]:
+    """The multiples of ``step`` from lo to hi."""
     first = math.ceil(lo / step - 1e-9)
     last = math.floor(hi / step + 1e-9)
     return [k * step for k in range(first, last + 1)]
+
+
+def _finer(step: float) -> float:
+    """The step of the 1, 2, 5 series below ``step`` (one of it)."""
+    power = 10.0 ** math.floor(math.log10(step) + 1e-9)
+    return {1: 0.5, 2: 1.0, 5: 2.0}[round(step / power)] * power
 
 
 # ---- a polygon's vector equations and magnitudes, beside it -------------------------------

@@ -317,8 +317,9 @@ class Room:
         self.segments = np.concatenate([self.segments, strokes(placed[1:])])
         return placed
 
-    def first_free(self, candidates: Iterable[Text]) -> Text | None:
-        return first_free(candidates, self.taken, self.segments, self.within)
+    def first_free(self, candidates: Iterable[Text], gap: Pair = (0.0, 0.0)) -> Text | None:
+        """:func:`first_free` in this room, ``gap`` (x, y) mm off the boxes taken."""
+        return first_free(candidates, self.taken, self.segments, self.within, gap=gap)
 
     def block(self, lines: Sequence[Text], near: Pair) -> list[Text]:
         """``lines`` (left-aligned, top to bottom, positioned from (0, 0) down) moved as one

@@ -4,6 +4,7 @@ right corner, in the standard's three zones of ruled cells, with the course desi
 language; its values are the user's text, set as typed (no index notation)."""
 from __future__ import annotations
 
+import itertools
 import unicodedata
 from dataclasses import dataclass, field, replace
 from typing import Mapping
@@ -11,7 +12,7 @@ from typing import Mapping
 import numpy as np
 
 from .dxf import OUTLINE, THIN, TITLE
-from .sheet import TEXT_HEIGHTS, Box, Item, Paper, Text, line, rectangle
+from .sheet import TEXT_HEIGHTS, Box, Item, Paper, Text, line, rectangle, text_width
 from .cells import cell_text
 
 TITLE_WIDTH = 180.0
@@ -109,42 +110,89 @@ def title_block(p: Paper, block: TitleBlock) -> list[Item]:
 
 def wrapped_cell(text: str, box: Box, largest: float, least: float = 5.0) -> list[Text]:
     """``text`` in the cell ``box`` on one line as large as fits (≤ ``largest``), or, when
-    that would be smaller than ``least`` or cut, on two lines (≤ 5 mm) broken where a line
-    may break (:func:`line_breaks`): whole and as large as they come, the break nearest the
-    middle of those; when no two lines hold it whole, the two that show the most of it,
-    the second cut with "…", where they show more than one line (a long design or sheet
-    name in the name area's 50 mm cells; a student's name in the 34 mm signature cell,
-    the student's identity on the sheet)."""
+    that would be smaller than ``least`` or cut, on two lines (≤ 5 mm), or more where the
+    cell holds them (:func:`most_lines`), broken where a line may break (:func:`line_breaks`): whole and as large
+    as they come, in the fewest lines, the breaks nearest the even split of those; when no
+    lines hold it whole, the lines that show the most of it, the last cut with "…", where
+    they show more than one line (a long design or sheet name in the name area's 50 mm
+    cells; a student's name in the 34 mm signature cell, the student's identity on the
+    sheet; "Mechanical Engineering 2101" in the 28 mm class cell, three lines at 2.5 mm).
+    More lines, not a smaller height: GB/T 14691's next height down, 1.8 mm, is for letters
+    and digits; its Chinese characters are at least 3.5 mm (the title block's 2.5 mm is
+    already the least the sheets print)."""
     one = cell_text(text, box, largest, layer=TITLE)
     breaks = line_breaks(text)
     if one.text == text and one.height >= min(largest, least) or not breaks:
         return [one]
-    middle = len(text) / 2.0
-    best = max((_two_lines(text, i, box, largest) for i in sorted(breaks, key=lambda i: abs(i - middle))),
-               key=lambda two: (two[1], two[0][0].height, two[2]))
-    two, whole, shown = best
-    if whole and (two[0].height > one.height or one.text != text):
-        return two
-    kept = len(one.text) - one.text.endswith("…")
-    return two if one.text != text and shown > kept else [one]
+    best, kept = [one], len(one.text) - one.text.endswith("…")
+    for count in range(2, most_lines(box) + 1):
+        tries = [_lines(text, cuts, box, largest) for cuts in _cut_sets(text, breaks, count, box)]
+        if not tries:
+            continue
+        lines, whole, shown = max(tries, key=lambda t: (t[1], t[0][0].height, t[2]))
+        if whole:
+            return lines if lines[0].height > one.height or one.text != text else [one]
+        if one.text != text and shown > kept:
+            best, kept = lines, shown
+    return best
 
 
-def _two_lines(text: str, at: int, box: Box, largest: float) -> tuple[list[Text], bool, int]:
-    """``text`` broken at ``at`` on two lines of ``box``, both as large as the smaller fits
-    (≤ 5 mm); whether both are whole, and how many characters they show (0 when the first is
-    cut: what follows it would be lost from the middle)."""
+def most_lines(box: Box) -> int:
+    """How many lines of the least height (2.5 mm) the cell ``box`` holds, LINE_PITCH apart
+    and 1.6 heights for the outer lines' room (one line's share, as :func:`cell_text`
+    gives it): 3 in the title block's 14 mm rows and the design's 13 mm, 4 in the name
+    area's 18 mm."""
+    room = (box[3] - box[1]) / TEXT_HEIGHTS[0]
+    return max(int((room - 1.6) / LINE_PITCH + 1e-9) + 1, 1)
+
+
+def _cut_sets(text: str, breaks: list[int], count: int, box: Box) -> list[tuple[int, ...]]:
+    """The ways to break ``text`` into ``count`` lines whose every line but the last fits
+    ``box`` at the least height (else what follows it is lost from the middle): those that
+    break after a comma first ("L1 100 mm, K / 1.4, H 300 mm" parted K from its value), the
+    most even first among equals."""
+    room = box[2] - box[0] - 2.0
+    even = [len(text) * k / count for k in range(1, count)]
+    fits = [cuts for cuts in itertools.combinations(breaks, count - 1)
+            if all(text_width(part, TEXT_HEIGHTS[0]) <= room for part in _parts(text, cuts)[:-1])]
+    return sorted(fits, key=lambda cuts: (sum(not _after_comma(text, c) for c in cuts),
+                                          sum(abs(c - e) for c, e in zip(cuts, even))))
+
+
+def _after_comma(text: str, at: int) -> bool:
+    """Whether a break at ``at`` follows a comma or a semicolon (a clause's end)."""
+    return text[:at].rstrip()[-1:] in (",", ";", "，", "；", "、")
+
+
+def _parts(text: str, cuts: tuple[int, ...]) -> list[str]:
+    """``text`` cut at ``cuts``, the spaces at each break dropped."""
+    ends = (0, *cuts, len(text))
+    out = []
+    for k, part in enumerate(text[a:b] for a, b in zip(ends, ends[1:])):
+        part = part.lstrip() if k else part
+        out.append(part.rstrip() if k < len(cuts) else part)
+    return out
+
+
+def _lines(text: str, cuts: tuple[int, ...], box: Box, largest: float) -> tuple[list[Text], bool, int]:
+    """``text`` broken at ``cuts`` on lines of ``box``, all as large as the smallest fits (≤
+    5 mm, and as many as the cell holds at that height); whether all are whole, and how many
+    characters they show (0 when one before the last is cut: what follows it would be lost
+    from the middle)."""
     x0, y0, x1, y1 = box
+    parts = _parts(text, cuts)
+    n = len(parts)
+    cap = (y1 - y0) / ((n - 1) * LINE_PITCH + 1.6)
+    height = min(cell_text(part, box, min(largest, 5.0, cap)).height for part in parts)   # all alike
+    # set LINE_PITCH heights apart about the cell's middle, as one text of several lines
+    # (each in the middle of its share, 2.5 mm lines stood 2.8 heights apart in a 14 mm row)
     middle = (y0 + y1) / 2.0
-    lines = [(text[:at].rstrip(), (x0, middle, x1, y1)), (text[at:].lstrip(), (x0, y0, x1, middle))]
-    height = min(cell_text(part, cell, min(largest, 5.0)).height for part, cell in lines)   # both alike
-    # set LINE_PITCH heights apart about the cell's middle, as one text of two lines (each in
-    # the middle of its half, 2.5 mm lines stood 2.8 heights apart in a 14 mm row)
-    two = [cell_text(part, cell, height, layer=TITLE) for part, cell in lines]
-    two = [replace(line, position=(line.position[0], middle + sign * LINE_PITCH * height / 2.0))
-           for line, sign in zip(two, (1.0, -1.0))]
-    whole = [line.text == part for line, (part, _) in zip(two, lines)]
-    shown = len(two[0].text) + len(two[1].text) - two[1].text.endswith("…") if whole[0] else 0
-    return two, all(whole), shown
+    lines = [cell_text(part, box, height, layer=TITLE) for part in parts]
+    lines = [replace(line, position=(line.position[0], middle + ((n - 1) / 2.0 - k) * LINE_PITCH * height))
+             for k, line in enumerate(lines)]
+    whole = [line.text == part for line, part in zip(lines, parts)]
+    shown = sum(len(line.text) for line in lines) - lines[-1].text.endswith("…") if all(whole[:-1]) else 0
+    return lines, all(whole), shown
 
 
 LINE_PITCH = 1.6         # two lines of a cell, baseline to baseline, in text heights (GB/T 14691: ≥ 1.4)

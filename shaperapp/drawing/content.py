@@ -107,7 +107,7 @@ def forces(spec: Spec, rpms: Sequence[float], masses: MassProperties | None,
     design = spec.design()
     labels = forces_labels()
     rpm = sheet_rpm(rpms, choice)
-    block = choice.title_block(labels["title"], choice.design_name, rpm)
+    block = choice.title_block(labels["title"], choice.design_name or inputs_name(spec), rpm)
     return forces_sheet(design, rpm, masses_for_design(design, masses), paper(choice.paper),
                         diagram_deg=choice.diagram_deg, labels=labels, block=block).sheet
 

@@ -10,12 +10,10 @@ from __future__ import annotations
 
 import html
 import math
-from dataclasses import dataclass
 from typing import Callable, Sequence
 
-import numpy as np
 from PySide6.QtCore import QByteArray, QCoreApplication, QPointF, QRectF, QSizeF, Qt
-from PySide6.QtGui import QColor, QFont, QFontInfo, QFontMetricsF, QImage, QPainter, QPen, QTextDocument
+from PySide6.QtGui import QColor, QFont, QFontInfo, QFontMetricsF, QPainter, QTextDocument
 from PySide6.QtSvg import QSvgRenderer
 from PySide6.QtWidgets import QWidget
 
@@ -34,6 +32,7 @@ from shaperapp.design.model import DesignModel
 from shaperapp.plots.forces_panel import ForcesPanel
 from shaperapp.plots.kinematics import PlotsWidget
 from shaperapp.report.kept_views import delete_widgets, kept
+from shaperapp.report.theta_mark import SchemeShot, mark_theta
 from shaperapp.scheme.view import SchemeWidget
 from shaperapp.vectors.paint import auto_scale, paint_polygon, titles
 
@@ -42,7 +41,6 @@ from shaperapp.widgets.image_export import painting_bytes
 
 Paint = Callable[[QPainter, QRectF, float], None]
 FINE_STEP_DEG = 0.25
-INK_LEVEL = 235         # a pixel of the scheme darker than this in any channel is drawn on
 SCHEME_PX = (330, 370)  # the scheme's view as exported for the report (its text at this size)
 
 
@@ -86,19 +84,6 @@ def scale_text(mu: float) -> str:
     return f"μ<sub>l</sub> = {mu:g} mm/mm ({ratio})"
 
 
-@dataclass(frozen=True)
-class SchemeShot:
-    """A scheme exported as SVG, with where O4 and the lever tip's limit positions lie in
-    it (px) and how many design mm one of its px is."""
-
-    svg: bytes
-    o4: QPointF
-    tips: tuple[QPointF, QPointF]
-    mm_per_px: float
-    text_px: float = 12.0
-    """The pixel size of the scheme's own text (its dimensions): θ is written at it."""
-
-
 def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg: float) -> Paint:
     """The schemes side by side, all at one round μ_l that fits them, with θ and the
     lever's limit positions marked, and under each its caption and μ_l."""
@@ -120,8 +105,7 @@ def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg
             font = QFont(painter.font())             # θ on the scale of the dimensions beside it
             font.setPixelSize(max(round(shot.text_px * k), 1))
             painter.setFont(font)
-            _mark_theta(painter, drawn.topLeft(), k, shot, theta_deg,
-                        QFontMetricsF(font, painter.device()).height(), renderer)
+            mark_theta(painter, drawn.topLeft(), k, shot, theta_deg, renderer)
             painter.restore()
             _note(painter, f"{html.escape(captions[i])}<br>{scale_text(mu)}",
                   QPointF(rect.left() + i * cell_w, drawn.bottom() + 0.2 * line), cell_w)
@@ -155,73 +139,11 @@ def cam_paint(cam: Cam) -> Paint:
     return paint
 
 
-def theta_spots(ends: list[QPointF], o4: QPointF, radius: float, width: float,
-                height: float) -> list[QRectF]:
-    """Where θ's label may go, best first (device units, y down): right of the swing level
-    with the arc's end, then the nearest spots farther right, higher or lower (past the L3
-    dimension line and its label beside the lever's right limit), then the same left of
-    the arc's other end, then above the arc inside the swing."""
-    right, left = max(ends, key=QPointF.x), min(ends, key=QPointF.x)
-    gap = height / 3.0
-    shifts = sorted(((0.5 * i * height, j * height) for i in range(24) for j in (0, 1, -1, 2, -2, 3)),
-                    key=lambda d: math.hypot(*d))          # nearest first
-    out = [QRectF(right.x() + gap + dx, right.y() - height / 2 + dy, width, height) for dx, dy in shifts]
-    out += [QRectF(left.x() - gap - width - dx, left.y() - height / 2 + dy, width, height) for dx, dy in shifts]
-    out += [QRectF(o4.x() - width / 2, o4.y() - radius - (1.5 + i * 0.5) * height, width, height)
-            for i in range(8)]
-    return out
-
-
-def _theta_box(renderer: QSvgRenderer | None, origin: QPointF, k: float, spots: list[QRectF]) -> QRectF:
-    """The first spot where the scheme drew nothing (no line, no text): the scheme is
-    rendered once at its own size and each spot's pixels read back. The first spot when
-    every one is taken (or nothing to check against)."""
-    if renderer is None:
-        return spots[0]
-    box = renderer.viewBoxF()
-    image = QImage(max(int(math.ceil(box.width())), 1), max(int(math.ceil(box.height())), 1),
-                   QImage.Format.Format_RGB32)
-    image.fill(QColor("white"))
-    p = QPainter(image)
-    renderer.render(p, QRectF(0, 0, image.width(), image.height()))
-    p.end()
-    pixels = image.constBits()
-    ink = (np.frombuffer(pixels, dtype=np.uint8).reshape(image.height(), image.bytesPerLine() // 4, 4)
-           [:, :image.width(), :3].min(axis=2) < INK_LEVEL)
-    for spot in spots:
-        x0, x1 = (spot.left() - origin.x()) / k, (spot.right() - origin.x()) / k
-        y0, y1 = (spot.top() - origin.y()) / k, (spot.bottom() - origin.y()) / k
-        if x0 < 0 or y0 < 0 or x1 > image.width() or y1 > image.height():
-            continue                                  # off the scheme's picture
-        if not ink[int(y0):int(math.ceil(y1)), int(x0):int(math.ceil(x1))].any():
-            return spot
-    return spots[0]
-
-
-def _mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, theta_deg: float,
-                line: float, renderer: QSvgRenderer | None = None) -> None:
-    """Dashed lever limit positions O4–B', O4–B'' and the arc of θ between them at O4."""
-    o4 = origin + shot.o4 * k
-    tips = [origin + t * k for t in shot.tips]
-    painter.save()
-    pen = QPen(QColor("#37474f"), max(0.6 * line / 10, 1.0), Qt.PenStyle.DashLine)
-    painter.setPen(pen)
-    for tip in tips:
-        painter.drawLine(o4, tip)
-    radius = 0.3 * math.dist((o4.x(), o4.y()), (tips[0].x(), tips[0].y()))
-    angles = [math.degrees(math.atan2(o4.y() - t.y(), t.x() - o4.x())) for t in tips]
-    painter.setPen(QPen(QColor("#37474f"), pen.widthF()))
-    arc = QRectF(o4.x() - radius, o4.y() - radius, 2 * radius, 2 * radius)
-    painter.drawArc(arc, round(angles[1] * 16), round((angles[0] - angles[1]) * 16))
-    label = f"θ = {theta_deg:.2f}°"
-    width = QFontMetricsF(painter.font(), painter.device()).horizontalAdvance(label) + 0.4 * line
-    ends = [QPointF(o4.x() + radius * math.cos(math.radians(a)), o4.y() - radius * math.sin(math.radians(a)))
-            for a in angles]
-    box = _theta_box(renderer, origin, k, theta_spots(ends, o4, radius, width, 1.2 * line))
-    painter.fillRect(box, QColor("white"))
-    painter.setPen(QColor("#1b262c"))
-    painter.drawText(box, Qt.AlignmentFlag.AlignCenter, label)
-    painter.restore()
+def _export_box(scheme: SchemeWidget, box: tuple[float, float, float, float]) -> tuple[float, float, float, float]:
+    """A box of the scheme in mm (left, right, bottom, top) in the px of its export (left,
+    right, top, bottom; y down)."""
+    a, b = scheme.export_point(box[0], box[2]), scheme.export_point(box[1], box[3])
+    return min(a.x(), b.x()), max(a.x(), b.x()), min(a.y(), b.y()), max(a.y(), b.y())
 
 
 class ReportViews:
@@ -295,8 +217,9 @@ class ReportViews:
             scheme.fit()
             svg = self._svg(scheme)
             o4, across = scheme.export_point(0.0, 0.0), scheme.export_point(100.0, 0.0)
+            texts = tuple((_export_box(scheme, box), turned) for box, turned in scheme.text_boxes())
             shots.append(SchemeShot(svg, o4, tuple(scheme.export_point(*tip) for tip in tips),
-                                    100.0 / (across.x() - o4.x()), QFontInfo(scheme.font()).pixelSize()))
+                                    100.0 / (across.x() - o4.x()), QFontInfo(scheme.font()).pixelSize(), texts))
             if len(shots) == 1:
                 step()
         self.model.set_angle_index(0)

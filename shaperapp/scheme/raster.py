@@ -81,6 +81,24 @@ class Raster:
             d = np.stack([ends[:, 1, axis] - ends[:, 0, axis] for axis in (0, 1)], axis=1)
             count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
             self._burn_samples(ends[:, 0], d, count)
+        self._sum()
+
+    @classmethod
+    def of_cells(cls, marked: np.ndarray, margin: float) -> "Raster":
+        """A raster of cells marked already (rows of ``marked`` up from 0), each a unit square
+        from (0, 0): a picture's pixels read back, the report's scheme that θ's label keeps
+        clear of, whose lines are ink and no longer segments."""
+        out = cls.__new__(cls)
+        out.left = out.bottom = 0.0
+        out.cell, out.margin = 1.0, margin
+        out.ny, out.nx = marked.shape
+        out._grid = np.asarray(marked, dtype=bool)
+        out._sat = np.zeros((out.ny + 1, out.nx + 1), dtype=np.int32)
+        out._sum()
+        return out
+
+    def _sum(self) -> None:
+        """The summed table of the grid."""
         # the summed table in place, along the rows first (contiguous) and then adding row to
         # row: exact integers as before, a quarter of the time on a large grid
         table = self._sat[1:, 1:]

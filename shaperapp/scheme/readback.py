@@ -70,11 +70,24 @@ class SchemeReadBack:
         self._catch_up()
         return {name: self._screen_box(item) for name, item in self._dimensions.texts().items()}
 
-    def _screen_box(self, item) -> Box:
-        """The item's box as the viewport shows it, back in mm: what a user sees, whatever
-        transform tricks the item uses to stay upright and unscaled."""
+    def text_boxes(self) -> list[tuple[Box, bool]]:
+        """Every text shown now (the joints' names, the dimensions', the forces' magnitudes):
+        the box of its lines of letters, without the margin its item keeps round them, in mm
+        (left, right, bottom, top), and whether it is turned (read upwards). The report's θ,
+        drawn over the scheme, keeps the labels' gap from them."""
+        self._catch_up()
+        items = [*self._mechanism.labels.values(), *self._dimensions.texts().values(),
+                 *self._forces.tags().values()]
+        return [(self._screen_box(item, _margin(item)), bool(getattr(item, "angle", 0.0)))
+                for item in items if item.isVisible()]
+
+    def _screen_box(self, item, inset: float = 0.0) -> Box:
+        """The item's box (``inset`` px less on every side) as the viewport shows it, back in
+        mm: what a user sees, whatever transform tricks the item uses to stay upright and
+        unscaled."""
         view = self._plot
-        device = item.deviceTransform(view.viewportTransform()).mapRect(item.boundingRect())
+        local = item.boundingRect().adjusted(inset, inset, -inset, -inset)
+        device = item.deviceTransform(view.viewportTransform()).mapRect(local)
         scene = view.viewportTransform().inverted()[0].mapRect(device)
         r = self._view.mapSceneToView(scene).boundingRect()
         return r.left(), r.right(), r.top(), r.bottom()
@@ -83,3 +96,10 @@ class SchemeReadBack:
         """Vertices of the travelled part of the tool-tip trace as drawn now, mm."""
         self._catch_up()
         return self._mechanism.tool_path()
+
+
+def _margin(item) -> float:
+    """The room (px) a text item keeps round its letters: a pyqtgraph text's document margin,
+    a force's tag its padding."""
+    text = getattr(item, "textItem", None)
+    return text.document().documentMargin() if text is not None else float(getattr(item, "PAD", 0.0))

@@ -11,12 +11,13 @@ from core.cli.cmd_dynamics import speed_rows
 from core.drawing.forces import ENGLISH, forces_sheet, joint_forces
 from core.drawing.motion import motion_sheet
 from core.drawing.checks import outside_border, overlapping_texts
-from core.drawing.sheet import Polyline, paper
+from core.drawing.sheet import Polyline, Text, paper
 from core.forces.dynamics import solve_dynamics
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.forces.flywheel import summarize
 from core.linkage.geometry import synthesize
+from core.linkage.spec import Spec
 from core.linkage.kinematics import rpm_to_omega
 from sheet_checks import assert_laid_out
 from sweeps import examples
@@ -177,3 +178,46 @@ def test_any_design_positions_and_paper_are_laid_out(crank, k, stretch, rod, wor
         assume(False)
     drawn = forces_sheet(design, rpm, masses(design), paper(size), diagram_deg=(work, back))
     assert_laid_out(drawn.sheet, drawn.areas)
+
+
+def y_numbers(items):
+    """The chart's y tick numbers: plain numbers set right of a point ("rm", left of the axis)."""
+    out = []
+    for t in items:
+        if isinstance(t, Text) and t.align == "rm":
+            try:
+                out.append((float(t.text), t))
+            except ValueError:
+                pass
+    return out
+
+
+SCHEME_I = Spec(mode="dimensions", crank=110.0, frame=380.0, lever=540.0, variant="rod", rod_ratio=0.25).design()
+
+
+@pytest.mark.parametrize("size", ["A3", "A1"])
+@pytest.mark.parametrize("design", [SCHEME_I, BLOCK, ROD], ids=["scheme-I", "block", "rod"])
+def test_the_torque_and_energy_charts_number_their_y_axes(design, size):
+    """A reader reads a torque or an energy off the chart by its numbered y ticks: at least
+    one beside the axis, each number the value at its height. The scale is first measured
+    on the curve (its highest point on the paper times μ is core's largest value); A3's
+    torque chart, 21 mm high at μM = 40 (N·m)/mm, was ticked every 1000 N·m and had no
+    number but the note μM (the task book's 方案 I with shaper drawing's loads)."""
+    m = masses_for_design(design, MassProperties(**LOADS))
+    drawn = forces_sheet(design, 60.0, m, paper(size))
+    summary = summarize(design, [60.0], m)
+    peaks = {"torque": summary.speeds[0].max_torque_N_m, "energy": float(np.max(summary.energy[0]))}
+    for name, (mu, _, origin) in (("torque", drawn.torque_chart), ("energy", drawn.energy_chart)):
+        _, items = drawn.areas[name]
+        curve = max((it for it in items if isinstance(it, Polyline)), key=lambda p: len(p.points))
+        assert (curve.points[:, 1].max() - origin[1]) * mu == pytest.approx(peaks[name], rel=2e-3), name
+        numbers = y_numbers(items)
+        assert numbers, (name, size)
+        ticks = [it.points for it in items if isinstance(it, Polyline) and len(it.points) == 2
+                 and it.points[1, 0] == pytest.approx(origin[0]) and it.points[0, 1] == it.points[1, 1]
+                 and it.points[0, 0] < origin[0]]
+        for value, text in numbers:
+            assert value != 0.0
+            assert (text.position[1] - origin[1]) * mu == pytest.approx(value, rel=1e-9), (name, text.text)
+            assert text.box()[2] < origin[0]                                  # left of the axis
+            assert any(abs(t[0, 1] - text.position[1]) < 1e-9 for t in ticks), (name, text.text)

@@ -78,3 +78,59 @@ def test_what_two_lines_cannot_hold_is_cut_with_an_ellipsis(field):
     shown = "".join(t.text for t in lines)
     assert shown.endswith("…"), shown
     assert TOO_LONG.replace(" ", "").startswith(shown[:-1].replace(" ", "")), shown
+
+
+# a class as schools name it: the programme and the class's number, in English and Chinese
+CLASSES = ["Mechanical Engineering 2101", "Vehicle Engineering 2102", "Mechanical Eng. Class 2101",
+           "机械设计制造及其自动化2101班", "机械设计制造及其自动化专业2101班", "车辆工程（卓越工程师）2102班"]
+
+
+@pytest.mark.parametrize("sheet", ["A0", "A1", "A2", "A3"])
+@pytest.mark.parametrize("group", CLASSES)
+def test_a_class_name_is_printed_whole(group, sheet):
+    """The class cell (28 × 14 mm) prints a realistic class name whole: on up to three lines
+    at 2.5 mm (GB/T 14691's next height down, 1.8 mm, is for letters and digits only; its
+    Chinese characters are at least 3.5 mm). "Mechanical Engineering 2101" was cut to
+    "Mechanical / Engineering …" on two lines."""
+    p, items = drawn(TitleBlock("Motion analysis", "s01", "1:5", "1/4", group=group), sheet)
+    assert_whole(field_lines(items, cells(p)["group"]), cells(p)["group"], group)
+
+
+SCHOOLS = ["School of Mechanical Engineering and Automation, Northeastern University",
+           "华中科技大学机械科学与工程学院机械设计制造及其自动化系"]
+
+
+@pytest.mark.parametrize("school", SCHOOLS)
+def test_a_long_school_is_printed_whole_in_the_name_area(school):
+    """The name area's 50 × 18 mm cell holds four lines at 2.5 mm: a university's school
+    is printed whole (the English one was cut on two lines)."""
+    p, items = drawn(TitleBlock("Motion analysis", "s01", "1:5", "1/4", school=school))
+    assert_whole(field_lines(items, cells(p)["school"]), cells(p)["school"], school)
+
+
+def assert_whole(lines, cell, value) -> None:
+    """``lines`` show ``value`` whole, inside ``cell``, one height, a line pitch apart."""
+    shown = "".join(t.text for t in lines)
+    assert "…" not in shown and shown.replace(" ", "") == value.replace(" ", ""), shown
+    for t in lines:
+        box = t.box()
+        assert cell[0] + 0.5 <= box[0] and box[2] <= cell[2] - 0.5, (t.text, box, cell)
+        assert cell[1] <= box[1] and box[3] <= cell[3], (t.text, box, cell)
+        assert t.height >= 2.5
+    for upper, lower in zip(lines, lines[1:]):        # one height, a line pitch of at least 1.4 h apart
+        assert upper.height == lower.height
+        assert upper.position[1] - lower.position[1] >= 1.4 * upper.height - 1e-9
+        assert upper.box()[1] >= lower.box()[3]
+
+
+@pytest.mark.parametrize("design", ["L1 100 mm, K 1.4, H 300 mm", "L1 100 mm, K 1.46, H 312 mm, L4/L3 0.3"])
+def test_a_design_named_by_its_inputs_breaks_after_a_comma(design):
+    """The design cell (50 × 13 mm over the speed) breaks a name of inputs after a comma
+    where that sets it as large: "L1 100 mm, K / 1.4, H 300 mm" parted K from its value."""
+    p, items = drawn(TitleBlock("Motion analysis", design, "1:5", "1/4", speed="n_2 = 40 r/min"))
+    x1, y0 = p.border[2], p.border[1]
+    cell = (x1 - 50.0, y0 + 7.0, x1, y0 + 20.0)
+    lines = field_lines(items, cell)
+    assert len(lines) == 2, [t.text for t in lines]
+    assert_whole(lines, cell, design)
+    assert lines[0].text.endswith(","), [t.text for t in lines]

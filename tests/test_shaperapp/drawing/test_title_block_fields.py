@@ -80,3 +80,21 @@ def test_dialog_shows_the_report_dialogs_fields_and_keeps_them_there(model, qtbo
     again = ReportOptionsDialog(model, None, settings)          # the report sees the change
     qtbot.addWidget(again)
     assert again.cover["group"].text() == "ME 22"
+
+
+LOADS = ["--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000",
+         "--cut-height", "80"]
+CAM = ["--arm", "120", "--swing", "15", "--pressure", "40", "--rise", "60", "--dwell", "10", "--return", "60"]
+
+
+@pytest.mark.parametrize("content, extra", [("motion", []), ("forces", LOADS), ("cam", CAM)])
+def test_a_sheet_without_a_title_names_its_design_by_the_inputs(tmp_path, content, extra):
+    """No --title, no design file: the title block's design cell names the design by its
+    inputs on every sheet of the linkage, as the report's cover does (the kinetostatic
+    sheet's cell was empty: 方案 I's forces sheet named no design)."""
+    out = tmp_path / "s.dxf"
+    status, _, err = shaper_in_process("drawing", "--dims", "110,380,540", "--rod-ratio", "0.25", "--rpm", "60",
+                                       "--content", content, *extra, "-o", out)
+    assert status == 0, err
+    texts = title_texts(out)
+    assert "L1 110 mm, L2 380 mm, L3 540 mm, L4/L3 0.25" in {f"{a} {b}" for a, b in zip(texts, texts[1:])}, texts
