@@ -4,7 +4,6 @@ CSV files of ``shaper`` against the files the code before it wrote.
 Python's ``"%.10g" % value`` is the reference: it is what every CSV here was written with
 before, and it is correctly rounded, so it is independent of the numpy arithmetic tested.
 """
-import hashlib
 import json
 from pathlib import Path
 
@@ -19,7 +18,7 @@ from core.files.io import curve_table, snap_zeros, table_csv
 from core.linkage.geometry import synthesize
 from core.linkage.kinematics import solve
 from core.files.numtext import g10_rows
-from output_checks import as_golden_wrote
+from output_checks import golden_digest, golden_sha
 
 GOLDEN = json.loads((Path(__file__).parents[1] / "data" / "csv_golden.json").read_text())
 
@@ -78,4 +77,4 @@ def test_cli_csv_is_byte_identical_to_the_base_commit(case, tmp_path):
     assert main(case["command"].split() + ["--csv", str(target)]) == 0
     raw = target.read_bytes()
     assert raw.count(b"\n") == case["lines"]
-    assert hashlib.sha256(as_golden_wrote(raw, case)).hexdigest() == case["sha256"]
+    assert golden_digest(raw, case) == golden_sha(case)

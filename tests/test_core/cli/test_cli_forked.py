@@ -2,7 +2,6 @@
 process makes, whatever the children do, and no child outlives its table."""
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import signal
@@ -18,7 +17,7 @@ from core.cli import forked, streaming
 from core.files.io import curve_table
 from core.linkage.kinematics import crank_angles, solve
 from core.linkage.spec import Spec
-from output_checks import as_golden_wrote
+from output_checks import golden_digest, golden_sha
 
 from shaperapp.widgets.child_signals import children_take_sigint
 
@@ -168,7 +167,7 @@ def test_the_command_writes_the_golden_file_shared_or_alone(tmp_path, case, work
     status, used = out.stdout.split(maxsplit=1)
     expected = 1 if workers == "1" or len(os.sched_getaffinity(0)) == 1 else 2
     assert status == "0" and json.loads(used) == [min(expected, forked.MAX_WORKERS)]
-    assert hashlib.sha256(as_golden_wrote(target.read_bytes(), case)).hexdigest() == case["sha256"]
+    assert golden_digest(target.read_bytes(), case) == golden_sha(case)
 
 
 def _processes_naming(marker: str) -> list[int]:
