@@ -141,9 +141,12 @@ def cam_paint(cam: Cam) -> Paint:
 
 def _export_box(scheme: SchemeWidget, box: tuple[float, float, float, float]) -> tuple[float, float, float, float]:
     """A box of the scheme in mm (left, right, bottom, top) in the px of its export (left,
-    right, top, bottom; y down)."""
+    right, top, bottom; y down), to 1e-6 px: a class's kept view reads the same box as a
+    new one to the last bits only (56.32596212325399 and …3966), and θ's place, which these
+    boxes decide, must not depend on which view drew the scheme."""
     a, b = scheme.export_point(box[0], box[2]), scheme.export_point(box[1], box[3])
-    return min(a.x(), b.x()), max(a.x(), b.x()), min(a.y(), b.y()), max(a.y(), b.y())
+    return tuple(round(v, 6) for v in (min(a.x(), b.x()), max(a.x(), b.x()), min(a.y(), b.y()),
+                                       max(a.y(), b.y())))
 
 
 class ReportViews:
