@@ -13,10 +13,10 @@ from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
+from core.base.lettering import label_gap, word_gap
 from core.forces.polygons import FINE_MANTISSAS, Polygon, nice_scale
 
 from .dxf import DASHED, OUTLINE, THIN
-from core.base.lettering import label_gap, word_gap
 from .labels import Room
 from .sheet import Box, Item, Pair, Text, line, marked, number_text, smaller_height, symbol, text_width
 

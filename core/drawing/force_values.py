@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .labels import Room
 from core.base.lettering import word_gap
+
+from .labels import Room
 from .sheet import Item, Text, marked_text, number_text
 
 

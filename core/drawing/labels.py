@@ -9,7 +9,7 @@ side, then round it; then one standard height smaller; then farther still with a
 leader line from the point to the label, at last anywhere in the drawing. A spot is free
 when the label's box, a little enlarged, meets no stroke, keeps a word space (GB/T 14691:
 ``core.base.lettering.WORD_GAP``) off the boxes already taken beside it, and lies within its drawing;
-each step first asks LABEL_GAP from the texts taken (a label that only clears another by a
+each step first asks ``core.base.lettering.LABEL_GAP`` from the texts taken (a label that only clears another by a
 word space can still read as one text with it).
 
 The strokes are segments (n, 4): x0, y0, x1, y1 in paper mm, a circle as a polygon; a
@@ -26,37 +26,27 @@ from typing import Callable, Iterable, Sequence
 
 import numpy as np
 
+from core.base.lettering import label_gap, word_gap
 from .dxf import THIN
-from .segments import CLEARANCE, boxes_meet_strokes, crossings_each, meets_strokes, strokes, strokes_meet_boxes
-from core.base.lettering import LABEL_GAP, label_gap, word_gap  # noqa: F401 - LABEL_GAP: the labels' rule, read here
+from .segments import CLEARANCE, boxes_meet_strokes, crossings_each, strokes, strokes_meet_boxes
 from .sheet import Box, Item, Pair, Polyline, Text, line, smaller_height
 
 LEADER_RINGS = 10          # rings beyond the last plain one tried with a leader line
 GRID_SPOTS = 2000          # then spots anywhere in the drawing, the nearest first …
 FAR_CHOICES = 12           # … of whose free ones the leader crossing fewest lines is taken
 ASSOCIATION = 0.5          # text heights another named point must lie farther from a label than its own
+
+
 def boxes_meet(a: Box, b: Box) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
-def is_free(box: Box, taken: Sequence[Box], segments: np.ndarray, within: Box | None,
-            apart: float = 0.0) -> bool:
-    """A label's box is free: inside ``within``, clear of every stroke, and of every taken
-    box by ``apart`` mm side by side."""
-    if within is not None and not (within[0] <= box[0] and box[2] <= within[2]
-                                   and within[1] <= box[1] and box[3] <= within[3]):
-        return False
-    wide = (box[0] - apart, box[1], box[2] + apart, box[3])
-    return not any(boxes_meet(wide, b) for b in taken) and not meets_strokes(box, segments)
 
 
 def first_free(candidates: Iterable[Text], taken: list[Box], segments: np.ndarray,
                within: Box | None = None, keep: Callable[[np.ndarray], np.ndarray] | None = None,
                gap: Pair = (0.0, 0.0)) -> Text | None:
-    """The first candidate whose box is free (:func:`is_free`, and ``gap`` (x, y) mm off every
+    """The first candidate whose box is free (:func:`free_spots`, ``gap`` (x, y) mm off every
     taken box; and takes its box), or None; with ``keep`` (boxes (k, 4) → (k,) bools) the
-    first free one it keeps. The candidates
-    are tested in batches of 1, 2, 4 … (:func:`free_spots`, the same test of each box): one
+    first free one it keeps. The candidates are tested in batches of 1, 2, 4 … (:func:`free_spots`, the same test of each box): one
     test a candidate scanned the whole sheet's strokes each time, some 8 % of a class's
     student (docs/performance.md)."""
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
@@ -120,7 +110,7 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
     drawing names), or [] when none is (the drawing is too crowded for it). Takes the
     label's box; a leader line starts ``leader_gap`` off the point (a pin's radius). Without
     ``shrink`` the label keeps its height (one series of numbers beside another of a smaller
-    height: shrunk, it would join that one). Each step first with :data:`LABEL_GAP` from the
+    height: shrunk, it would join that one). Each step first with ``LABEL_GAP`` from the
     other texts, then, where no spot keeps it, a word space off them: a label lost or led away from
     its point (the crank's twelve numbers round a small crank circle) is worse than a close
     one."""
@@ -268,8 +258,9 @@ def spot_gaps(spots: Sequence[Text], gap: Pair = (0.0, 0.0)) -> np.ndarray:
 
 def free_spots(boxes: Sequence[Box], taken: np.ndarray, segments: np.ndarray, within: Box | None,
                gap: Pair | np.ndarray = (0.0, 0.0)) -> np.ndarray:
-    """:func:`is_free` for each of ``boxes`` at once, ``taken`` as an (m, 4) array, each box
-    ``gap`` (x, y) mm off every taken one: one pair for all, or one per box (:func:`spot_gaps`)."""
+    """Which of ``boxes`` are free for a label: inside ``within``, clear of every stroke, and
+    ``gap`` (x, y) mm off every taken box (``taken`` an (m, 4) array; one pair for all, or
+    one per box, :func:`spot_gaps`)."""
     b = np.asarray(boxes, dtype=float).reshape(-1, 4)
     free = np.ones(len(b), dtype=bool)
     if within is not None:

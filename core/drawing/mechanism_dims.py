@@ -16,6 +16,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
+from core.base.lettering import word_gap
 from core.linkage.geometry import Design
 
 from . import mechanism as mech
@@ -23,7 +24,6 @@ from . import sheet_dims as sd
 from .labels import boxes_meet
 from .dimensions import reading_order
 from .segments import crossings_each, strokes
-from core.base.lettering import word_gap
 from .sheet import Box, Item, Placement, Text, item_box, line, line_box, smaller_height
 
 FIRST = 7.0               # the first dimension line from the linework, paper mm

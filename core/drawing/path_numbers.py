@@ -11,6 +11,7 @@ from typing import Sequence
 
 import numpy as np
 
+from core.base.lettering import word_gap
 from core.linkage.geometry import Design
 
 from . import mechanism as mech
@@ -18,7 +19,6 @@ from . import sheet_dims as sd
 from .dxf import THIN
 from .labels import moved_boxes
 from .segments import boxes_meet_strokes, crossings_each, strokes
-from core.base.lettering import word_gap
 from .sheet import Box, Item, Placement, Text, line
 
 NUMBER_MM = 2.5           # the tool path's numbers

@@ -4,7 +4,7 @@ between them at O4, and its label, placed by the scheme's own label search.
 The scheme is exported as SVG and replayed; θ is drawn over it by the report. Its label
 takes the first candidate spot that :class:`shaperapp.scheme.place.Obstacles` finds clear,
 as the scheme's labels do: clear of the scheme's lines (its picture's ink, read back), of
-the dashed limit positions and the arc drawn here, and :func:`core.drawing.labels.label_gap`
+the dashed limit positions and the arc drawn here, and :func:`core.base.lettering.label_gap`
 (1.5 heights beside, 0.5 over or under) off every text of the scheme (its read-back boxes).
 Clear of ink alone, 方案 I's θ stood a third of a line under "L3 = 540.0" and read as its
 second line. All of it in the shot's own px (its SVG's units), y down.

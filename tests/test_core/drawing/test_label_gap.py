@@ -1,4 +1,4 @@
-"""A label keeps a readable gap from the texts round it (core.drawing.labels.LABEL_GAP),
+"""A label keeps a readable gap from the texts round it (core.base.lettering.LABEL_GAP),
 not only clear of them: a joint name 1.1 text heights before a dimension on its line read
 as one label with it ("O₂ H = 312.6", the report's scheme of 方案 I)."""
 from __future__ import annotations
@@ -6,7 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from core.drawing.labels import LABEL_GAP, place
+from core.base.lettering import LABEL_GAP
+from core.drawing.labels import place
 from core.drawing.sheet import Text
 
 

@@ -3,7 +3,7 @@
 In the report's §3 of the task book's 方案 I (`--dims 110,380,540 --rod-ratio 0.25`, the
 φ = 0 limit) the joint name O₂ stood on the line of the stroke's dimension, about one text
 height before it, and read as one label: "O₂ H = 312.6". The label search now keeps
-core.drawing.labels.LABEL_GAP between texts: 1.5 text heights beside each other on one
+core.base.lettering.LABEL_GAP between texts: 1.5 text heights beside each other on one
 line, 0.5 over each other (and 0.5 from a turned text, the L2 and h chain's, which no
 upright text continues).
 
@@ -20,7 +20,7 @@ import pytest
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QFontInfo
 
-from core.drawing.labels import LABEL_GAP
+from core.base.lettering import LABEL_GAP
 from core.linkage.spec import Spec
 from gui_helpers import shown
 from scheme_shots import darkest, limit_frames
