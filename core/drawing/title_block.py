@@ -4,7 +4,6 @@ right corner, in the standard's three zones of ruled cells, with the course desi
 language; its values are the user's text, set as typed (no index notation)."""
 from __future__ import annotations
 
-import itertools
 import unicodedata
 from dataclasses import dataclass, field, replace
 from typing import Mapping
@@ -153,10 +152,22 @@ def _cut_sets(text: str, breaks: list[int], count: int, box: Box) -> list[tuple[
     most even first among equals."""
     room = box[2] - box[0] - 2.0
     even = [len(text) * k / count for k in range(1, count)]
-    fits = [cuts for cuts in itertools.combinations(breaks, count - 1)
-            if all(text_width(part, TEXT_HEIGHTS[0]) <= room for part in _parts(text, cuts)[:-1])]
-    return sorted(fits, key=lambda cuts: (sum(not _after_comma(text, c) for c in cuts),
-                                          sum(abs(c - e) for c, e in zip(cuts, even))))
+
+    def grown(cuts: tuple[int, ...], start: int):
+        """The fitting cut sets that begin with ``cuts``, in ``itertools.combinations``'
+        order. A line only gets wider as its break moves on, so the first break that makes it
+        too wide ends the search there: a 200-character Chinese name (a break between any two
+        characters) had 1.3 million sets of three breaks to measure, 15 s a sheet."""
+        if len(cuts) == count - 1:
+            yield cuts
+            return
+        for i in range(start, len(breaks)):
+            if text_width(_parts(text, (*cuts, breaks[i]))[-2], TEXT_HEIGHTS[0]) > room:
+                break
+            yield from grown((*cuts, breaks[i]), i + 1)
+
+    return sorted(grown((), 0), key=lambda cuts: (sum(not _after_comma(text, c) for c in cuts),
+                                                  sum(abs(c - e) for c, e in zip(cuts, even))))
 
 
 def _after_comma(text: str, at: int) -> bool:
