@@ -80,8 +80,8 @@ def painted(win: MainWindow, paints: Paints) -> None:
 
 def built(win: MainWindow) -> None:
     """Events processed until every lazy view is built and has caught up while hidden
-    (``LazyPage.is_ready``; the Cam tab's scipy is imported by then too), then one turn
-    more: what the idle waits below are for, reached as a condition, not a time."""
+    (``LazyPage.is_ready``), then one turn more: what the idle waits below are for,
+    reached as a condition, not a time."""
     until(lambda: all(page.is_ready() for page in win._pages.values()), 60.0)
     QApplication.processEvents()
 
