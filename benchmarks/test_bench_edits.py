@@ -8,7 +8,8 @@ labels are placed in the turn after that paint, and the edit until they are sett
 settle, as between a user's keystrokes.
 A Gear edit recomputes the gear alone: the design model's kinematics and dynamics are
 not run again (asserted, not timed). In the ordinary test run (benchmarks disabled) each
-runs once, briefly: the idle waits short, the report of 2 speeds.
+runs once, briefly: instead of the idle waits, events are processed until every view is
+built (a condition, reached in a fraction of a second), and the report is of 2 speeds.
 """
 import time
 
@@ -77,17 +78,28 @@ def painted(win: MainWindow, paints: Paints) -> None:
         quiet = quiet + 1 if paints.count == count else 0
 
 
-def idle_s(benchmark) -> float:
-    """How long a window is left idle first: long enough for every lazy view when timed."""
-    return 0.5 if benchmark.disabled else 4.0
+def built(win: MainWindow) -> None:
+    """Events processed until every lazy view is built and has caught up while hidden
+    (``LazyPage.is_ready``), then one turn more: what the idle waits below are for,
+    reached as a condition, not a time."""
+    until(lambda: all(page.is_ready() for page in win._pages.values()), 60.0)
+    QApplication.processEvents()
+
+
+def idle(win: MainWindow, benchmark, seconds: float) -> None:
+    """The window left idle for ``seconds`` when timed, as between a user's keystrokes; in
+    the ordinary run (benchmarks disabled) only until its views are built."""
+    if benchmark is not None and not benchmark.disabled:
+        drained(seconds)
+    built(win)
 
 
 @pytest.fixture
 def window(qtbot, tmp_path, request):
     win = open_window(tmp_path)
     # the gear's check waits for every view: one built meanwhile must not count as its work
-    quick = "benchmark" in request.fixturenames and request.getfixturevalue("benchmark").disabled
-    drained(0.5 if quick else 4.0)
+    timed = request.getfixturevalue("benchmark") if "benchmark" in request.fixturenames else None
+    idle(win, timed, 4.0)
     yield win
     win.model.set_clean("")
     win.close()
@@ -107,7 +119,7 @@ def test_an_edit_reaches_the_screen(benchmark, window, form):
     """The form's tab in front (the Kinematics plots for the design form): the edit, the
     model's recompute and every visible view repainted."""
     window.tabs.setCurrentWidget(getattr(window, TABS[form]))
-    drained(idle_s(benchmark) / 4)
+    idle(window, benchmark, 1.0)
     rounds = iter(range(1, 10**6))
 
     def edit():
@@ -135,7 +147,7 @@ def test_a_design_edit_settles_its_labels(benchmark, window):
     """The Design edit above until its labels are placed (in the turn after the scheme's
     paint) and painted: what a user sees last. Reported beside the edit, no budget."""
     window.tabs.setCurrentWidget(window.plots)
-    drained(idle_s(benchmark) / 4)
+    idle(window, benchmark, 1.0)
     rounds = iter(range(1, 10**6))
     paints = Paints(window.scheme.plot_widget().viewport())
 
@@ -152,7 +164,7 @@ def test_a_design_edit_settles_its_labels(benchmark, window):
 def test_a_gear_edit_recomputes_the_gear_alone(window, monkeypatch):
     """No kinematics, no dynamics, no metrics: the design model's recompute is not run."""
     window.tabs.setCurrentWidget(window.gear)
-    drained(1.0)
+    built(window)
     runs = []
     for name in ("_recompute", "_recompute_forces"):
         original = getattr(DesignModel, name)
@@ -174,14 +186,12 @@ def test_a_tabs_first_visit(benchmark, qtbot, tmp_path, tab):
     def setup():
         win = open_window(tmp_path / str(len(windows)))
         windows.append(win)
-        drained(idle_s(benchmark))
-        # as the docstring says: until every view is built and has caught up while hidden
-        # (LazyPage.is_ready), and the Cam tab's scipy imported (on a loaded machine the 4 s
-        # above are not enough, and the visit then measured those)
-        end = time.perf_counter() + 60.0
-        while not all(page.is_ready() for page in win._pages.values()) and time.perf_counter() < end:
-            QApplication.processEvents()
-        drained(0.2)
+        # as the docstring says: until every view is built and has caught up while hidden,
+        # and the Cam tab's scipy imported (on a loaded machine 4 s idle are not enough, and
+        # the visit then measured those)
+        idle(win, benchmark, 4.0)
+        if not benchmark.disabled:
+            drained(0.2)
         return (win,), {}
 
     def visit(win):

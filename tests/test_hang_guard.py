@@ -25,11 +25,13 @@ def test_stuck_in_c_with_the_gil_held():
 @pytest.mark.skipif(not hasattr(signal, "alarm"), reason="SIGALRM is POSIX only")
 def test_a_hang_holding_the_gil_is_ended_with_its_stack(tmp_path):
     (tmp_path / "test_stuck.py").write_text(HANGING_TEST)
-    env = dict(os.environ, PYTHONPATH=str(HERE), SHAPER_TEST_HARD_LIMIT_S="6")
+    # the limits as short as keeps their order (pytest-timeout, then faulthandler's dump,
+    # then the hard limit, 2 s later): the run waits for the last, a worker idle meanwhile
+    env = dict(os.environ, PYTHONPATH=str(HERE), SHAPER_TEST_HARD_LIMIT_S="3")
     start = time.monotonic()
     run = subprocess.run(
         [sys.executable, "-m", "pytest", "-p", "hang_guard", "-p", "no:cacheprovider",
-         "-o", "faulthandler_timeout=2", "-o", "timeout=3", "-o", "timeout_method=thread",
+         "-o", "faulthandler_timeout=1", "-o", "timeout=0.5", "-o", "timeout_method=thread",
          "--rootdir", str(tmp_path), str(tmp_path / "test_stuck.py")],
         cwd=tmp_path, env=env, capture_output=True, text=True, timeout=100)
     took = time.monotonic() - start

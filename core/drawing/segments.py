@@ -7,6 +7,7 @@ from typing import Iterable
 
 import numpy as np
 
+from core.base.arrays import nonzero_pairs
 from .sheet import Box, Circle, Item, Polyline
 
 CLEARANCE = 0.4            # paper mm kept between a label's box and a stroke
@@ -69,7 +70,7 @@ def _meeting(boxes: np.ndarray, segments: np.ndarray, clearance: float) -> tuple
     s = s[kept]
     near = ((np.minimum(s[:, 0], s[:, 2]) <= x1[:, None]) & (np.maximum(s[:, 0], s[:, 2]) >= x0[:, None])
             & (np.minimum(s[:, 1], s[:, 3]) <= y1[:, None]) & (np.maximum(s[:, 1], s[:, 3]) >= y0[:, None]))
-    b, k = np.nonzero(near)
+    b, k = nonzero_pairs(near)
     if not len(b):
         return none
     x0, y0, x1, y1, s = x0[b], y0[b], x1[b], y1[b], s[k]
@@ -110,7 +111,7 @@ def crossings_each(segs: np.ndarray, segments: np.ndarray) -> np.ndarray:
     s_lo, s_hi = np.minimum(segments[:, :2], segments[:, 2:]), np.maximum(segments[:, :2], segments[:, 2:])
     near = ((s_lo[:, 0] <= hi[:, None, 0]) & (s_hi[:, 0] >= lo[:, None, 0])
             & (s_lo[:, 1] <= hi[:, None, 1]) & (s_hi[:, 1] >= lo[:, None, 1]))
-    k, n = np.nonzero(near)
+    k, n = nonzero_pairs(near)
     p, r = segs[k, :2], segs[k, 2:] - segs[k, :2]
     q, s = segments[n, :2], segments[n, 2:] - segments[n, :2]
     cross = lambda a, b: a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]    # noqa: E731

@@ -14,6 +14,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from core.base.arrays import nonzero_pairs
+
 if TYPE_CHECKING:
     from .raster import Raster
 
@@ -50,7 +52,7 @@ def meets(boxes: np.ndarray, ends: np.ndarray, margins: np.ndarray) -> np.ndarra
            & (np.minimum(dy, 0.0) <= hi_y) & (np.maximum(dy, 0.0) >= lo_y))
     # the corners' sides only where the boxes overlap (a fifth of an edit's pairs), with
     # the same products and differences for those pairs
-    i, j = np.nonzero(hit)
+    i, j = nonzero_pairs(hit)
     across_lo, across_hi = dx[j] * lo_y[i, j], dx[j] * hi_y[i, j]    # cross product at the corners
     along_lo, along_hi = dy[j] * lo_x[i, j], dy[j] * hi_x[i, j]
     top = np.maximum(across_lo, across_hi) - np.minimum(along_lo, along_hi)
