@@ -22,12 +22,17 @@ MAX_DIFFERENT = 0.002    # share of blocks allowed to differ (measured: at most 
 MARGIN = 120             # px of blank canvas around a replay
 
 
-def pixels(image: QImage) -> np.ndarray:
-    """H × W × 3 array (RGB, 0…255, float) of ``image``."""
+def channels(image: QImage) -> np.ndarray:
+    """H × W × 3 array (RGB, 0…255, uint8) of ``image``."""
     image = image.convertToFormat(QImage.Format.Format_RGB32)
     raw = np.frombuffer(image.constBits(), np.uint8, image.sizeInBytes())
     rows = raw.reshape(image.height(), image.bytesPerLine())[:, :image.width() * 4]
-    return rows.reshape(image.height(), image.width(), 4)[..., 2::-1].astype(float)
+    return rows.reshape(image.height(), image.width(), 4)[..., 2::-1].copy()
+
+
+def pixels(image: QImage) -> np.ndarray:
+    """H × W × 3 array (RGB, 0…255, float) of ``image``."""
+    return channels(image).astype(float)
 
 
 def replay(svg: bytes | str, width: int, height: int, margin: int = 0) -> QImage:
@@ -44,21 +49,29 @@ def replay(svg: bytes | str, width: int, height: int, margin: int = 0) -> QImage
 
 
 def block_means(a: np.ndarray) -> np.ndarray:
+    """Mean colour of each BLOCK × BLOCK block of ``a`` (H × W × 3 uint8, whole blocks only).
+    Summed down each block's rows first, then across: the same means as ``mean`` over both
+    axes of the blocks at once (integer sums, exact in any order; a power of two divides
+    them), five times faster on a 1600 × 1244 px image."""
     h, w = (a.shape[0] // BLOCK) * BLOCK, (a.shape[1] // BLOCK) * BLOCK
-    return a[:h, :w].reshape(h // BLOCK, BLOCK, w // BLOCK, BLOCK, 3).mean(axis=(1, 3))
+    columns = a[:h, :w].reshape(h // BLOCK, BLOCK, w, 3).sum(axis=1, dtype=np.int64)
+    return columns.reshape(h // BLOCK, w // BLOCK, BLOCK, 3).sum(axis=2) / BLOCK ** 2
 
 
 def differing_share(png: QImage, svg: bytes | str) -> float:
     """Share of BLOCK-px blocks whose mean colour differs by more than BLOCK_DIFF
     between the PNG and the SVG replayed at the PNG's size."""
-    a = block_means(pixels(png))
-    b = block_means(pixels(replay(svg, png.width(), png.height())))
+    a = block_means(channels(png))
+    b = block_means(channels(replay(svg, png.width(), png.height())))
     return float((np.abs(a - b).max(axis=2) > BLOCK_DIFF).mean())
 
 
-def margin_ink(svg: bytes | str, width: int, height: int) -> int:
-    """Pixels that are not white in the MARGIN around the SVG replayed at width × height."""
-    a = pixels(replay(svg, width, height, MARGIN))
-    inside = np.zeros(a.shape[:2], bool)
-    inside[MARGIN:MARGIN + height, MARGIN:MARGIN + width] = True
-    return int(((a < 250).any(axis=2) & ~inside).sum())
+def margin_ink(svg: bytes | str, width: int, height: int, edge: int = 0) -> int:
+    """Pixels that are not white in the MARGIN around the SVG replayed at width × height,
+    farther than ``edge`` px from the frame (the three channels compared one by one: an
+    ``any`` over the short last axis took three times as long)."""
+    a = channels(replay(svg, width, height, MARGIN))
+    near = np.zeros(a.shape[:2], bool)
+    near[MARGIN - edge:MARGIN + height + edge, MARGIN - edge:MARGIN + width + edge] = True
+    ink = (a[..., 0] < 250) | (a[..., 1] < 250) | (a[..., 2] < 250)
+    return int((ink & ~near).sum())

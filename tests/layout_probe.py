@@ -9,6 +9,12 @@ For each list of speeds it reports the window's frame and minimum size, and for 
 result table its rows, the rows not inside the table's own viewport, the rows that
 scrolling the results pane cannot bring into view, and whether its last column can be
 scrolled into view.
+
+Several probes on one screen run in one process, separated by ``--next``; each opens a
+fresh window, with the language and locale the process started with, and prints its own
+JSON line. Why: a process costs about 1 s of CPU to start (Python, Qt, the first
+window's imports), a further window about 0.35 s (docs/performance.md, "The window and
+widget tests").
 """
 from __future__ import annotations
 
@@ -16,8 +22,8 @@ import argparse
 import json
 import sys
 
-from PySide6.QtCore import QPoint, QRect, QRectF, QSettings, QSize, Qt
-from PySide6.QtGui import QImage, QPainter
+from PySide6.QtCore import QLocale, QPoint, QRect, QRectF, QSettings, QSize, Qt
+from PySide6.QtGui import QGuiApplication, QImage, QPainter
 from PySide6.QtWidgets import QApplication, QScrollArea
 
 
@@ -192,7 +198,7 @@ def explore_report(app: QApplication, window) -> dict:
             "view": box(shown), "ticks": {name: tick_labels(axis) for name, axis in axes.items()}}
 
 
-def main(argv: list[str]) -> int:
+def parse(argv: list[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser()
     parser.add_argument("--settings", required=True)
     parser.add_argument("--lang", default="en")
@@ -204,16 +210,32 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--variant", help="the ram drive (block, rod)")
     parser.add_argument("--explore", action="store_true", help="report the Explore tab's map")
     parser.add_argument("--polygons", help="crank angles (°, comma separated): report the vector diagrams")
-    args = parser.parse_args(argv)
-    from shaperapp.widgets.style import configure_plots
-    configure_plots()
-    app = QApplication(sys.argv[:1])
+    return parser.parse_args(argv)
+
+
+def fresh_start(app: QApplication, locale: QLocale, name: str) -> None:
+    """The language, locale and display name the process started with, as the next
+    probe's window would find them in a process of its own; and no job of the last
+    window still running."""
+    from shaperapp.widgets import i18n
+    from shaperapp.widgets.worker import COLLECTOR
+    assert COLLECTOR.join(60.0), "a worker thread of the last probe still runs"
+    i18n.set_language("en")
+    QLocale.setDefault(locale)
+    QGuiApplication.setApplicationDisplayName(name)
+    settle(app)
+
+
+def probe(app: QApplication, args: argparse.Namespace, closed: list) -> dict:
+    """One probe: a fresh window with ``args``' settings file, measured, closed and kept
+    in ``closed`` (alive, as a process of one probe keeps its window to the end)."""
     from shaperapp.window.main_window import MainWindow
     from shaperapp.design.model import DesignModel
     window = MainWindow(DesignModel(), QSettings(args.settings, QSettings.Format.IniFormat))
     window.set_language(args.lang)
     window.show()
     settle(app)
+    closed.append(window)
     report = {"screen": rect(window.screen().availableGeometry()), "language": args.lang, "cases": []}
     if args.variant:
         window.model.set_spec(variant=args.variant)
@@ -254,7 +276,26 @@ def main(argv: list[str]) -> int:
     window.model.set_clean("")
     window.close()
     window.settings.sync()
-    print(json.dumps(report))
+    return report
+
+
+def main(argv: list[str]) -> int:
+    jobs = [[]]
+    for arg in argv:
+        if arg == "--next":
+            jobs.append([])
+        else:
+            jobs[-1].append(arg)
+    jobs = [parse(job) for job in jobs]
+    from shaperapp.widgets.style import configure_plots
+    configure_plots()
+    app = QApplication(sys.argv[:1])
+    start = (QLocale(), QGuiApplication.applicationDisplayName())
+    closed: list = []
+    for i, args in enumerate(jobs):
+        if i:
+            fresh_start(app, *start)
+        print(json.dumps(probe(app, args, closed)), flush=True)
     return 0
 
 

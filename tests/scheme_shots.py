@@ -26,7 +26,10 @@ def darkest(svg: bytes | str, scale: float) -> np.ndarray:
     renderer.render(painter, QRectF(0, 0, image.width(), image.height()))
     painter.end()
     bits = np.frombuffer(image.constBits(), dtype=np.uint8).reshape(image.height(), image.bytesPerLine() // 4, 4)
-    return bits[:, :image.width(), :3].min(axis=2)
+    blue, green, red = (bits[:, :image.width(), channel] for channel in range(3))
+    # the same as .min(axis=2) over the three channels, a tenth of its time: numpy reduces
+    # a short strided last axis slowly (60 % of test_label_gaps.py's time went there)
+    return np.minimum(np.minimum(blue, green), red)
 
 
 def limit_frames(spec: Spec, rpms=(60.0,)) -> Iterator[tuple[SchemeWidget, int]]:

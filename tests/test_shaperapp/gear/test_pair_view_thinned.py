@@ -36,7 +36,10 @@ def test_every_dropped_point_lies_within_the_tolerance(inputs, k):
     drawn = thinned(outline, (pair.gear1, pair.gear2)[k - 1].teeth, tolerance)
     assert len(drawn) < len(outline) / 3
     # the kept points are points of the outline, in its order, the first of them kept
-    index = [int(np.flatnonzero((outline == q).all(axis=1))[0]) for q in drawn]
+    first = {}                      # each point of the outline → where it first comes
+    for i, point in enumerate(map(tuple, outline.tolist())):
+        first.setdefault(point, i)
+    index = [first[point] for point in map(tuple, drawn.tolist())]
     assert index[0] == 0 and index == sorted(index)
     ring = index + [len(outline)]
     closed = np.vstack([outline, outline[:1]])

@@ -24,7 +24,7 @@ from shaperapp.vectors.paint import auto_scale, paint_polygon
 from shaperapp.window.main_window import MainWindow
 
 from paint_recorder import PaintRecorder, overlapping
-from layout_checks import probe
+from layout_checks import SharedProbes
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -67,13 +67,28 @@ def test_report_polygons_keep_their_labels_apart(qtbot, kw, lang):
             assert any("Limit position" in t for t in names) == limit, where
 
 
-@pytest.mark.parametrize("lang", ["en", "zh_CN"])
-@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
-def test_vector_pane_on_a_laptop(tmp_path, width, height, lang):
+def pane(lang: str) -> tuple[str, ...]:
+    """The probe of the vector-diagram pane in ``lang`` at every angle of ANGLES."""
+    return ("--lang", lang, "--speeds", "40,60", "--polygons", ",".join(f"{a:g}" for a in ANGLES))
+
+
+LAPTOPS = [(1366, 768), (1280, 720)]
+LANGUAGES = ["en", "zh_CN"]
+PLAN = {screen: [pane(lang) for lang in LANGUAGES] for screen in LAPTOPS}
+
+
+@pytest.fixture(scope="module")
+def shared_probe(tmp_path_factory):
+    """Each probe of PLAN run once, a screen's probes in one process (layout_checks.SharedProbes)."""
+    return SharedProbes(lambda: tmp_path_factory.mktemp("probe"), PLAN)
+
+
+@pytest.mark.parametrize("lang", LANGUAGES)
+@pytest.mark.parametrize("width,height", LAPTOPS)
+def test_vector_pane_on_a_laptop(shared_probe, width, height, lang):
     """The polygon was about 40 px tall beside its legend, labels merged, the
     acceleration legend's last row cut off with no scroll bar."""
-    report = probe(tmp_path, width, height, "--lang", lang, "--speeds", "40,60",
-                   "--polygons", ",".join(f"{a:g}" for a in ANGLES))
+    report = shared_probe(width, height, *pane(lang))
     for shot in report["polygons"]:
         where = (shot["kind"], shot["angle"])
         texts = [(t, QRectF(*b)) for t, b in shot["texts"]]

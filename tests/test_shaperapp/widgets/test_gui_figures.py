@@ -37,15 +37,6 @@ SPEEDS = {2: [40.0, 60.0], 16: [float(20 + 5 * i) for i in range(16)]}
 EDGE = 3
 
 
-def margin_ink(svg: bytes, width: int, height: int) -> int:
-    """Ink in the margin farther than EDGE px from the frame."""
-    a = fc.pixels(fc.replay(svg, width, height, fc.MARGIN))
-    m = fc.MARGIN
-    near = np.zeros(a.shape[:2], bool)
-    near[m - EDGE:m + height + EDGE, m - EDGE:m + width + EDGE] = True
-    return int(((a < 250).any(axis=2) & ~near).sum())
-
-
 def exported(view, tmp_path, name: str) -> tuple[QImage, bytes]:
     view.export_image(str(tmp_path / f"{name}.png"))
     view.export_image(str(tmp_path / f"{name}.svg"))
@@ -55,7 +46,7 @@ def exported(view, tmp_path, name: str) -> tuple[QImage, bytes]:
 def assert_faithful(png: QImage, svg: bytes) -> None:
     assert not png.isNull() and png.width() >= 1600
     assert fc.differing_share(png, svg) <= fc.MAX_DIFFERENT
-    assert margin_ink(svg, png.width(), png.height()) == 0
+    assert fc.margin_ink(svg, png.width(), png.height(), EDGE) == 0
 
 
 @pytest.fixture(params=[(v, n) for v in SPECS for n in SPEEDS], ids=lambda p: f"{p[0]}-{p[1]}")

@@ -6,6 +6,7 @@ import os
 import subprocess
 import sys
 
+import pytest
 from PySide6.QtWidgets import QApplication, QLabel, QSpinBox, QVBoxLayout, QWidget
 
 from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
@@ -199,77 +200,70 @@ def test_the_first_screen_imports_and_builds_only_what_it_shows(tmp_path):
     assert built == "[]"       # the vector diagrams' dock, shown for a moment while tabbed, too
 
 
-APP_PROBE = """
-import sys, shaperapp.app as app
-status = app.main(["--lang", "en", "--quit-after-show"])
-import os, numpy.linalg
-print(status, os.environ.get("OPENBLAS_NUM_THREADS"))
-"""
-
-
-def test_the_app_starts_numpy_with_one_blas_thread(tmp_path):
-    """shaperapp's main asks OpenBLAS for one thread before numpy loads (core.base.blas):
-    its idle worker threads spun for about 0.1 s of CPU at every start."""
-    lines = _run_probe(APP_PROBE, tmp_path)
-    assert lines[0].startswith("first window painted after ")
-    assert lines[-1] == "0 1"
-
-
-ENGINE_PROBE = """
-import sys, shaperapp.app as app
-early = set()
+STARTED_PROBE = """
+import gc, sys, shaperapp.app as app
+collections, started, early = [], [], set()
+gc.callbacks.append(lambda phase, info: phase == "stop" and started
+                    and collections.append(info["generation"]))
 engine_first = app._import_engine_first
 def recorded():
+    started.append(1)
     engine_first()
     early.update(m for m in sys.modules if m.startswith("core"))
 app._import_engine_first = recorded
 when_painted = app._when_painted
-def at_paint(window, callback):
+def painted(window, callback):
     def report():
         late = {m for m in sys.modules if m.startswith("core")}
-        print(sorted(late - early), sorted(early - late))
         callback()
+        print("engine", sorted(late - early), sorted(early - late))
+        print("gc", collections, gc.isenabled(), gc.get_freeze_count() > 10_000)
     when_painted(window, report)
-app._when_painted = at_paint
-app.main(["--lang", "en", "--quit-after-show"])
+app._when_painted = painted
+status = app.main(["--lang", "en", "--quit-after-show"])
+after = (gc.isenabled(), gc.get_freeze_count())
+import os, numpy.linalg
+print("quit", status, os.environ.get("OPENBLAS_NUM_THREADS"), *after)
 """
 
 
-def test_the_engine_the_first_screen_uses_is_imported_before_qt(tmp_path):
+@pytest.fixture(scope="module")
+def started(tmp_path_factory) -> list[str]:
+    """What one start of the app (``main --quit-after-show``) printed, watched three ways
+    at once: the core modules imported before Qt and by the first paint, the collector's
+    runs and state, and numpy's BLAS threads. Each only reads what start-up does, so one
+    process serves the three tests that read them (a start costs some 0.6 s of CPU)."""
+    return _run_probe(STARTED_PROBE, tmp_path_factory.mktemp("started"))
+
+
+def printed(lines: list[str], word: str) -> str:
+    """The line ``word`` begins in ``lines``, without the word."""
+    found = [line.split(" ", 1)[1] for line in lines if line.split(" ", 1)[0] == word]
+    assert len(found) == 1, lines
+    return found[0]
+
+
+def test_the_app_starts_numpy_with_one_blas_thread(started):
+    """shaperapp's main asks OpenBLAS for one thread before numpy loads (core.base.blas):
+    its idle worker threads spun for about 0.1 s of CPU at every start."""
+    assert started[0].startswith("first window painted after ")
+    assert printed(started, "quit").split()[:2] == ["0", "1"]
+
+
+def test_the_engine_the_first_screen_uses_is_imported_before_qt(started):
     """shaperapp imports the core modules of the first screen before Qt (PySide6 reads
     the source of every module imported after it), and no more than those: a module
     the first screen comes to need, or no longer needs, shows here."""
-    lines = [line for line in _run_probe(ENGINE_PROBE, tmp_path) if line.startswith("[")]
-    assert lines == ["[] []"]
+    assert printed(started, "engine") == "[] []"
 
 
-GC_PROBE = """
-import gc, sys, shaperapp.app as app
-collections, started = [], []
-gc.callbacks.append(lambda phase, info: phase == "stop" and started
-                    and collections.append(info["generation"]))
-engine_first = app._import_engine_first
-app._import_engine_first = lambda: started.append(1) or engine_first()
-when_painted = app._when_painted
-def at_paint(window, callback):
-    def report():
-        callback()
-        print(collections, gc.isenabled(), gc.get_freeze_count() > 10_000)
-    when_painted(window, report)
-app._when_painted = at_paint
-app.main(["--lang", "en", "--quit-after-show"])
-print(gc.isenabled(), gc.get_freeze_count())
-"""
-
-
-def test_start_up_runs_without_automatic_garbage_collection(tmp_path):
+def test_start_up_runs_without_automatic_garbage_collection(started):
     """From main's first import to the first paint Python's collector does not run (its
     collections cost 35-55 ms of start-up, issue 24); at the first paint what start-up
     made is frozen, so that the timer's later full collections skip it; on quitting the
     collector is as main found it."""
-    lines = _run_probe(GC_PROBE, tmp_path)
-    assert lines[-2] == "[] False True"
-    assert lines[-1] == "True 0"
+    assert printed(started, "gc") == "[] False True"
+    assert printed(started, "quit").split()[2:] == ["True", "0"]
 
 
 IDLE_PROBE = """

@@ -7,8 +7,6 @@ the minimum size and, for every result table, which rows are clipped or unreacha
 """
 from __future__ import annotations
 
-import copy
-
 import pytest
 from PySide6.QtCore import QByteArray, QSettings, Qt
 from PySide6.QtGui import QGuiApplication
@@ -18,7 +16,7 @@ from shaperapp.design.model import DesignModel
 from shaperapp.widgets import i18n
 from shaperapp.window.main_window import MainWindow
 from shaperapp.window.state import STATE_VERSION
-from layout_checks import overlap, probe
+from layout_checks import SharedProbes, overlap, probe, probes
 
 pytestmark = pytest.mark.slow   # left out of the quick run: pytest -m "not slow"
 
@@ -26,25 +24,29 @@ SIXTEEN = ",".join(str(20 + 5 * i) for i in range(16))
 SPEED_ROWS, FORCE_ROWS = 9, 7
 
 
+def stacks(lang: str, variant: str = "block") -> tuple[str, ...]:
+    """One probe for the plot stacks of ``variant``; for the block variant (the default, so
+    the tables are those of the default window) the tables' fit too."""
+    return ("--lang", lang, "--variant", variant, "--stacks", "--speeds", "40,60", "--speeds", SIXTEEN)
+
+
+def explore_compare(lang: str) -> tuple[str, ...]:
+    return ("--lang", lang, "--explore", "--compare")
+
+
+LIBRARY = ("--speeds", "40,60", "--library")
+LAPTOPS = [(1366, 768), (1280, 720)]
+LANGUAGES = ["en", "zh_CN"]
+# every probe a test of this module reads through shared_probe, by screen
+PLAN = {**{screen: [job for lang in LANGUAGES for job in (stacks(lang), stacks(lang, "rod"), explore_compare(lang))]
+           + [LIBRARY] for screen in LAPTOPS},
+        (1920, 1080): [LIBRARY]}
+
+
 @pytest.fixture(scope="module")
 def shared_probe(tmp_path_factory):
-    """``probe``, run once per screen and arguments in this module and read by every test
-    that asks for the same: each run is a new process with a window (5-15 s). Each test
-    gets its own copy of the report, so no test sees another's changes."""
-    runs: dict = {}
-
-    def run(width: int, height: int, *args: str) -> dict:
-        key = (width, height, args)
-        if key not in runs:
-            runs[key] = probe(tmp_path_factory.mktemp("probe"), width, height, *args)
-        return copy.deepcopy(runs[key])
-    return run
-
-
-def tables_and_stacks(lang: str) -> tuple[str, ...]:
-    """One probe for the tables' fit and the block variant's plot stacks (the default
-    variant, so the tables are those of the default window)."""
-    return ("--lang", lang, "--variant", "block", "--stacks", "--speeds", "40,60", "--speeds", SIXTEEN)
+    """Each probe of PLAN run once, a screen's probes in one process (layout_checks.SharedProbes)."""
+    return SharedProbes(lambda: tmp_path_factory.mktemp("probe"), PLAN)
 
 
 def inside(outer: list[int], inner: list[int]) -> bool:
@@ -53,10 +55,10 @@ def inside(outer: list[int], inner: list[int]) -> bool:
     return ox <= x and oy <= y and x + w <= ox + ow and y + h <= oy + oh
 
 
-@pytest.mark.parametrize("lang", ["en", "zh_CN"])
-@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+@pytest.mark.parametrize("lang", LANGUAGES)
+@pytest.mark.parametrize("width,height", LAPTOPS)
 def test_window_and_every_result_table_fit(shared_probe, width, height, lang):
-    report = shared_probe(width, height, *tables_and_stacks(lang))
+    report = shared_probe(width, height, *stacks(lang))
     assert report["screen"] == [0, 0, width, height]
     for case in report["cases"]:
         assert inside(report["screen"], case["frame"]), case["frame"]
@@ -81,12 +83,12 @@ def test_window_and_every_result_table_fit(shared_probe, width, height, lang):
             assert "Frame O2O4 L2, mm" in dims["titles"]
 
 
-@pytest.mark.parametrize("lang", ["en", "zh_CN"])
-@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+@pytest.mark.parametrize("lang", LANGUAGES)
+@pytest.mark.parametrize("width,height", LAPTOPS)
 def test_compare_plots_readable_on_a_laptop(shared_probe, width, height, lang):
     """Stacked four high, the Compare tab's plots got 45 px each at 1366×768: their axis
     titles ran into each other and the legend covered the curves."""
-    report = shared_probe(width, height, "--lang", lang, "--explore", "--compare")["compare"]
+    report = shared_probe(width, height, *explore_compare(lang))["compare"]
     assert report["legend_rows"] == 2
     assert report["table_rows_shown"] >= min(2, report["table_rows"]), report["table_rows_shown"]   # 1 before
     for key, plot in report["plots"].items():
@@ -108,16 +110,14 @@ def spread(boxes: list[list[float]]) -> bool:
 
 
 @pytest.mark.parametrize("variant", ["block", "rod"])
-@pytest.mark.parametrize("lang", ["en", "zh_CN"])
-@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
-def test_every_stacked_plot_has_ticks_and_its_own_title(shared_probe, tmp_path, width, height, lang, variant):
+@pytest.mark.parametrize("lang", LANGUAGES)
+@pytest.mark.parametrize("width,height", LAPTOPS)
+def test_every_stacked_plot_has_ticks_and_its_own_title(shared_probe, width, height, lang, variant):
     """With 16 speeds the Forces plots got 60 px each: 0-2 tick labels (the joint-force
     plot none) and y titles running into each other ("Input powerEnergy"); with 2 speeds
     still 2 ticks (the Chinese rod variant's joint forces a single "5"). Now every plot
     keeps three labels and a title within its own height, and the stack scrolls."""
-    report = shared_probe(width, height, *tables_and_stacks(lang)) if variant == "block" else \
-        probe(tmp_path, width, height, "--lang", lang, "--variant", variant, "--stacks",
-              "--speeds", "40,60", "--speeds", SIXTEEN)
+    report = shared_probe(width, height, *stacks(lang, variant))
     for case in report["cases"]:
         for name, stack in case["stacks"].items():
             where = (case["speeds"], name)
@@ -140,12 +140,12 @@ def test_every_stacked_plot_has_ticks_and_its_own_title(shared_probe, tmp_path, 
             assert spread([p["box"] for p in plots]), where
 
 
-@pytest.mark.parametrize("lang", ["en", "zh_CN"])
-@pytest.mark.parametrize("width,height", [(1366, 768), (1280, 720)])
+@pytest.mark.parametrize("lang", LANGUAGES)
+@pytest.mark.parametrize("width,height", LAPTOPS)
 def test_explore_map_fills_its_tab(shared_probe, width, height, lang):
     """The map was about 150 px tall over an empty band, its top tick "3.0" cut in half
     and its colour bar untitled (issue 20 item 4)."""
-    report = shared_probe(width, height, "--lang", lang, "--explore", "--compare")["explore"]
+    report = shared_probe(width, height, *explore_compare(lang))["explore"]
     assert report["map_height"] >= 0.4 * report["tab_height"], report
     assert report["colorbar_title"].strip()
     # the Chinese title ran over the colour bar's tick labels (issue 34 item 8)
@@ -158,9 +158,10 @@ def test_explore_map_fills_its_tab(shared_probe, width, height, lang):
 
 
 def test_saved_geometry_only_if_it_fits_the_screen(tmp_path):
-    big = probe(tmp_path, 1920, 1080, "--resize", "1700x1000")
+    settings = str(tmp_path / "s.ini")          # one file: the second window reads what the first saved
+    big, again = probes(tmp_path, 1920, 1080, [("--settings", settings, "--resize", "1700x1000"),
+                                               ("--settings", settings, "--speeds", "40,60")])
     assert big["resized"] == [1700, 1000]
-    again = probe(tmp_path, 1920, 1080, "--speeds", "40,60")
     assert again["cases"][0]["size"] == [1700, 1000]             # restored
     assert again["cases"][0]["results_area"] == "LeftDockWidgetArea"   # the large screen's layout
     laptop = probe(tmp_path, 1366, 768, "--speeds", "40,60")
@@ -394,12 +395,12 @@ def test_result_tables_copy_with_titles(window):
 
 
 @pytest.mark.parametrize("width,height,floats", [(1366, 768, True), (1280, 720, True), (1920, 1080, False)])
-def test_library_pane_fits_the_screen(tmp_path, width, height, floats):
+def test_library_pane_fits_the_screen(shared_probe, width, height, floats):
     """Docked under the plots, the library made a 1366×768 window 810 px tall (its status
     bar and animation bar off the screen) and left its list no row. On a short screen it
     now floats over the window; where there is room it stays docked; either way the
     window stays on the screen and the list has room for rows."""
-    report = probe(tmp_path, width, height, "--speeds", "40,60", "--library")
+    report = shared_probe(width, height, *LIBRARY)
     library = report["library"]
     assert library["floating"] is floats
     assert inside(report["screen"], library["frame"]), library
