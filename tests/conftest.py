@@ -80,7 +80,34 @@ def no_worker_outlives_its_test(request) -> Iterator[None]:
         # once that was inside QObject::disconnect, which holds Qt's connection lock, and the
         # QMenu being destroyed waited for the same lock: the worker hung (seen with py-spy
         # in test_gui_scheme's first test, near the end of the parallel suite).
-        gc.collect()
+        _collect_what_the_test_left()
+
+
+# Qt tests between two collections that walk everything alive (see below).
+FULL_COLLECTION_EVERY = 50
+_qt_tests_ended = 0
+
+
+def _collect_what_the_test_left() -> None:
+    """Collect the cycles a Qt test left, then freeze what survives out of later walks.
+
+    Why frozen: what earlier tests keep alive grows through a worker's run (windows closed
+    with ``deleteLater`` where no event loop runs again, module-scoped views, Qt's
+    wrappers), and a full collection walks all of it: one after each test took 35 ms at
+    the start of ``test_gui_hostile_settings.py`` and 134 ms at its end, and 17-20 s over
+    the 407 tests of ``tests/test_shaperapp/window`` and ``design`` in one process
+    (2.5 s frozen; docs/performance.md, "The collection after each Qt test"). Frozen, a
+    collection walks only what the last test made. A cycle that reaches frozen objects is
+    not collected then: every FULL_COLLECTION_EVERY Qt tests everything is thawed and
+    collected once, here between tests as before, so no garbage outlives that many tests
+    and none is collected at a random point inside a Qt call (above). Automatic
+    collections skip frozen objects too."""
+    global _qt_tests_ended
+    _qt_tests_ended += 1
+    if _qt_tests_ended % FULL_COLLECTION_EVERY == 0:
+        gc.unfreeze()
+    gc.collect()
+    gc.freeze()
 
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)
