@@ -39,9 +39,10 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 def pytest_collection_finish(session) -> None:
     """What collection made (the modules, their tests, hypothesis's strategies) lives as long
-    as the run: it is frozen out of the garbage collector's walks. The full collection after
-    every Qt test (below) then walks what tests made since, not this too: docs/performance.md,
-    "The test suite's time (29 November)"."""
+    as the run: it is frozen out of the garbage collector's walks. The collection after
+    every Qt test (below) then walks what tests made since, not this too (only the one every
+    FULL_COLLECTION_EVERY Qt tests thaws and walks everything, then freezes it again):
+    docs/performance.md, "The test suite's time (29 November)"."""
     gc.collect()
     gc.freeze()
 
