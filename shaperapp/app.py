@@ -67,18 +67,20 @@ def main(argv: list[str] | None = None) -> int:
     app.setApplicationDisplayName("Shaper Designer")
     _install_error_hook(app)
 
-    from shaperapp.widgets import i18n
+    from shaperapp.widgets import dialog_titles, i18n
     from shaperapp.window.main_window import MainWindow
     from shaperapp.design.model import DesignModel
 
     settings = QSettings()
     language = (i18n.language_of(args.lang) if args.lang else None) or settings.value("language") \
         or i18n.system_language()
+    dialog_titles.hold()        # its application-wide filter from the first paint on (see hold)
     model = DesignModel()
     window = MainWindow(model, settings)
     window.set_language(language if language in dict(i18n.LANGUAGES) else "en")
     window.show()
     if args.file:      # after show: a file that cannot be opened is reported over the window
+        dialog_titles.release(app)
         window.document.open_path(args.file)
 
     def finish() -> None:
@@ -94,6 +96,7 @@ def main(argv: list[str] | None = None) -> int:
         # 31-39 ms, a stutter about every two minutes while the animation runs. (The few
         # hundred objects of cyclic garbage start-up leaves stay until the app quits.)
         gc.freeze()
+        dialog_titles.release(app)
         if args.quit_after_show or args.screenshot:
             print(f"first window painted after {(time.perf_counter() - START) * 1000:.0f} ms",
                   flush=True)
@@ -110,6 +113,7 @@ def main(argv: list[str] | None = None) -> int:
         return app.exec()
     finally:
         collector.timer.stop()
+        dialog_titles.release(app)      # (a window closed before its first paint)
         gc.unfreeze()
         gc.enable()
 

@@ -9,7 +9,6 @@ in every DXF.
 """
 from __future__ import annotations
 
-import html
 from typing import Callable
 
 from PySide6.QtCore import QCoreApplication, QSettings
@@ -94,6 +93,7 @@ class CadFontChoice(QComboBox):
         self._settings = settings
         self.addItem(self.tr("GB style (AutoCAD, ZWCAD; editable)"), "gb")
         self.addItem(self.tr("Outlines (every CAD program, LibreCAD too)"), "outline")
+        import html      # here: the window's first screen imports this module, never the dialogs
         # in <p>: rich text, which Qt wraps (a plain tooltip this long ran off the screen)
         self.setToolTip("<p>" + html.escape(self.tr(
             "How a DXF writes its texts. GB style: text in the GB fonts (gbenor.shx, gbcbig.shx), "

@@ -54,12 +54,32 @@ class _TitleFitter(QObject):
 
 
 _fitter: _TitleFitter | None = None
+_held = False
+
+
+def hold() -> None:
+    """Until :func:`release`, :func:`install` installs nothing. For the application's start:
+    the filter sees every event of the application, some 3 000 while the first window is
+    built, laid out and painted (5-10 ms of the first paint, issue 43 item 5), and no
+    dialog is shown before that paint (``app.main`` releases it then, or before it opens
+    a file given on the command line, whose refusal is a dialog)."""
+    global _held
+    _held = True
+
+
+def release(app: QCoreApplication) -> None:
+    """End :func:`hold` and install the filter on ``app``."""
+    global _held
+    _held = False
+    install(app)
 
 
 def install(app: QCoreApplication) -> None:
     """Fit every dialog of ``app`` to its title and localize its file dialogs when shown
-    (once per application)."""
+    (once per application; nothing while held)."""
     global _fitter
+    if _held:
+        return
     if _fitter is None or _fitter.parent() is not app:
         _fitter = _TitleFitter(app)
         app.installEventFilter(_fitter)
