@@ -16,9 +16,8 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from core.base.arrays import sorted_unique
 from core.base.errors import DesignError, range_text
-from .extrema import grid_minimum
+from .drive import ROD_MARGIN, jams, largest_rise, least_rod
 from .verdict import Flat, Verdict, check_range, round_text
 
 MIN_LENGTH_MM = 0.001
@@ -26,9 +25,6 @@ MAX_LENGTH_MM = 100_000.0
 MAX_TIME_RATIO = 5.0
 # L1/L2 = sin(θ/2) at K = 5 (θ = 120°): the largest crank a frame allows.
 MAX_CRANK_RATIO = math.sin(math.pi * (MAX_TIME_RATIO - 1.0) / (MAX_TIME_RATIO + 1.0) / 2.0)
-# The rod must keep a horizontal reach |Cx − Bx| and a drive margin of this fraction of
-# L4 (a pressure angle below 89.94°), so forces and accelerations stay finite and exact.
-ROD_MARGIN = 1e-3
 ROD_SIDES: tuple[str, ...] = ("trailing", "leading")
 GUIDE_RULES: tuple[str, ...] = ("chord", "sagitta")
 MAX_ROD_RATIO = 10.0
@@ -304,9 +300,7 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     check_crank_ratio(verdict, d.crank, d.frame)
     verdict.check("rod_side", d.rod_side not in ROD_SIDES, d.rod_side,
                   "must be 'trailing' or 'leading'")
-    with np.errstate(all="ignore"):
-        reach = d.frame + d.crank
-        tip_low = d.lever * np.sqrt(1.0 - np.minimum(d.crank / d.frame, 1.0) ** 2)  # L3·cos(θ/2)
+    reach = d.frame + d.crank
     # the block variant's lever must also reach a guide above L2 + L1 (checked next): a lever
     # of just L2 + L1 would leave that guide no height to take
     tip = d.rod is None and np.asarray(d.guide > reach) & (d.guide > d.lever)
@@ -332,67 +326,30 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     # The rod's rise |d| = |guide − By| is largest at a limit position (By lowest) or at
     # ψ = 0 (By = L3); its horizontal reach sqrt(L4² − d²) must stay ≥ ROD_MARGIN·L4.
     with np.errstate(all="ignore"):
-        need = np.maximum(d.guide - tip_low, d.lever - d.guide) / math.sqrt(1.0 - ROD_MARGIN ** 2)
+        need = largest_rise(d) / math.sqrt(1.0 - ROD_MARGIN ** 2)
     verdict.check("rod", d.rod <= need, d.rod,
                   lambda i, at=Flat(need, shape):
                       f"must be > {round_text(at[i])} mm to reach the guide line "
                       "over the whole cycle")
-    # r·cos ψ − s·d·sin ψ ≥ r_min·cos(θ/2) − |d|_max·sin(θ/2): where this bound already
-    # clears the margin the exact minimum is not needed (it changes no verdict).
-    with np.errstate(all="ignore"):
-        rise = np.maximum(np.abs(d.guide - d.lever), np.abs(d.guide - tip_low))
-        ratio = d.crank / d.frame
-        bound = np.sqrt(np.maximum(d.rod ** 2 - rise ** 2, 0.0)) * np.sqrt(1.0 - ratio ** 2) \
-            - rise * ratio
-    margin = np.full(shape, np.inf)
-    todo = verdict.ok & ~(bound > 2.0 * ROD_MARGIN * d.rod)
-    if todo.any():
-        margin[todo] = drive_margin(d.take(todo))
-    verdict.check("rod", margin <= ROD_MARGIN * d.rod, d.rod,
-                  "the rod passes a dead-centre position against the lever; "
-                  "lengthen the rod or move the guide line")
+    stuck = jams(d, verdict.ok)
+    # the least rod that clears the dead centre costs a search: made only when a reason is
+    # read, then for every design this rule refuses at once (a sweep reads them all)
+    verdict.check("rod", stuck, d.rod,
+                  lambda i, at=Flat(lambda: _least_rods(d, stuck), shape): _dead_centre_text(at[i]))
 
 
-# Unit offsets of the ψ grid on [−1, 1] (times θ/2): uniform, plus points crowding
-# geometrically toward ψ = 0 and the two ends, where the rod can stand nearly upright and
-# the drive margin can dip sharply (see drive_margin).
-_CROWD = 5.0 ** -np.arange(2, 9)
-_PSI_UNIT = sorted_unique(np.concatenate([np.linspace(-1.0, 1.0, 33), _CROWD, -_CROWD,
-                                          1.0 - _CROWD, _CROWD - 1.0]))
-_CHUNK = 4096
-
-
-def drive_margin(d: Designs) -> np.ndarray:
-    """min over the swing of r·cos ψ − s·d·sin ψ, mm, per design (rod variant).
-
-    r·cos ψ − s·d·sin ψ is the rod's extent measured square to the lever (the
-    cross product of the lever's and the rod's directions, times L4): zero where
-    the rod lies in line with the lever, which then has no arm to drive it (a
-    dead centre). d = guide − L3·cos ψ is largest in size at ψ = 0 or an end of the
-    swing, so the rod's reach r = sqrt(L4² − d²) is smallest, and the margin
-    can dip sharply, only there: the grid over ψ ∈ [−θ/2, θ/2] crowds toward
-    those points. The smallest sample is then polished to the zero of the
-    margin's analytic slope (see :mod:`core.linkage.extrema`), so a narrow dip between
-    samples is not missed.
-    """
-    half = (d.theta / 2.0)[..., None]
-    sign = d.rod_sign
-
-    def drive(psi, rod, guide, lever):
-        cos, sin = np.cos(psi), np.sin(psi)
-        depth = guide - lever * cos
-        reach = np.sqrt(np.maximum(rod ** 2 - depth ** 2, 0.0))
-        depth1 = lever * sin
-        with np.errstate(all="ignore"):
-            reach1 = np.where(reach > 0.0, -depth * depth1 / reach, 0.0)
-        return (reach * cos - sign * depth * sin,
-                reach1 * cos - reach * sin - sign * (depth1 * sin + depth * cos))
-
-    out = np.empty(np.shape(half)[:-1])
-    for i in range(0, out.shape[0], _CHUNK):       # chunks bound the grid's memory
-        part = slice(i, i + _CHUNK)
-        psi = half[part] * _PSI_UNIT
-        args = (d.rod[part, None], d.guide[part, None], d.lever[part, None])
-        values, slopes = drive(psi, *args)
-        out[part] = grid_minimum(drive, psi, values, slopes, args=args)
+def _least_rods(d: Designs, stuck: np.ndarray) -> np.ndarray:
+    """The least rod that clears the dead centre where ``stuck``, NaN elsewhere (the designs' shape)."""
+    out = np.full(stuck.shape, np.nan)
+    out[stuck] = least_rod(d.take(stuck))
     return out
+
+
+def _dead_centre_text(least: float) -> str:
+    """The dead-centre refusal: the least rod that clears it, rounded up (so that it passes as
+    printed), or, where that is longer than MAX_LENGTH_MM, the guide line alone."""
+    if least <= MAX_LENGTH_MM:
+        return ("the rod passes a dead-centre position against the lever; lengthen it to at least "
+                f"{round_text(least)} mm or move the guide line")
+    return ("the rod passes a dead-centre position against the lever at every length up to "
+            f"{MAX_LENGTH_MM:g} mm; move the guide line")

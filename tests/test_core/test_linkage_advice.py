@@ -12,7 +12,6 @@ import math
 import re
 from dataclasses import replace
 
-import numpy as np
 import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
@@ -159,27 +158,46 @@ DEAD_CENTRES = [
 ]
 
 
+LEAST_ROD = re.compile(r"; lengthen it to at least (\S+) mm or move the guide line$")
+
+
 @pytest.mark.parametrize("spec", DEAD_CENTRES)
-def test_a_rod_at_a_dead_centre_lengthened_as_advised_drives_the_lever(spec):
-    """'lengthen the rod or move the guide line' names no amount: lengthened in steps of 1 %,
-    the rod drives the lever before it reaches twice its length, and never jams again on
-    the way up once it drives (so the first rod that passes is the least; the refusal could
-    name it, but a sweep builds every invalid design's reason and the search cost 18 ms a
-    design, left for a vectorized search)."""
-    with pytest.raises(DesignError, match="lengthen the rod or move the guide line"):
+def test_the_rod_named_for_a_dead_centre_is_the_least_that_clears_it(spec):
+    """1de6048 said 'lengthen the rod or move the guide line', no amount. Now the least rod:
+    typed as printed it passes, 0.5 % shorter it is refused, and it is the least rod that
+    passes to its six printed digits, by a bisection of the public rule on the rod alone
+    (the rule passes a rod from one length on: the drive margin grows with L4 faster than
+    ROD_MARGIN·L4, tests/test_core/test_drive.py)."""
+    with pytest.raises(DesignError, match="dead-centre") as refused:
         spec.design()
-    rods = spec.rod_length * 1.01 ** np.arange(1, 71)
-    passes = []
-    for rod in rods:
+    least = float(LEAST_ROD.search(refused.value.allowed).group(1))
+    replace(spec, rod_length=least).design()
+    with pytest.raises(DesignError, match="dead-centre"):
+        replace(spec, rod_length=least * 0.995).design()
+    lo, hi = spec.rod_length, least
+    while hi - lo > 1e-7 * hi:
+        mid = 0.5 * (lo + hi)
         try:
-            replace(spec, rod_length=float(rod)).design()
-            passes.append(True)
+            replace(spec, rod_length=mid).design()
+            hi = mid
         except DesignError as exc:
-            assert "dead-centre" in exc.allowed or "to reach the guide line" in exc.allowed, exc.allowed
-            passes.append(False)
-    assert any(passes)
-    first = passes.index(True)
-    assert all(passes[first:])
+            assert "dead-centre" in exc.allowed, exc.allowed
+            lo = mid
+    assert hi <= least <= hi * (1.0 + 1e-5)
+
+
+def test_a_dead_centre_no_rod_clears_is_told_to_move_the_guide_line():
+    """The least rod is longer than any rod allowed (100 000 mm): the refusal says so and
+    advises the guide line only, and the longest rod is indeed refused; a lower guide passes."""
+    spec = Spec(mode="dimensions", crank=34000.0, frame=40000.0, lever=76000.0, variant="rod",
+                guide_rule="height", guide_height=95000.0, rod_input="length", rod_length=80000.0)
+    said = ("the rod passes a dead-centre position against the lever at every length up to 100000 mm; "
+            "move the guide line")
+    for rod in (80000.0, 100000.0):
+        with pytest.raises(DesignError) as refused:
+            replace(spec, rod_length=rod).design()
+        assert (refused.value.parameter, refused.value.allowed) == ("rod", said)
+    replace(spec, guide_height=80000.0).design()
 
 
 @pytest.mark.parametrize("limit", [2_000_000, 200_000, 20_000])
