@@ -18,7 +18,7 @@ import numpy as np
 
 from core.base.errors import DesignError, range_text
 from .drive import ROD_MARGIN, jams, largest_rise, least_rod
-from .verdict import Flat, Verdict, check_range, round_text
+from .verdict import Flat, Verdict, check_range, open_range_texts, round_text
 
 MIN_LENGTH_MM = 0.001
 MAX_LENGTH_MM = 100_000.0
@@ -163,8 +163,11 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         if ruled:               # the guide the rule places must clear the crank too: a longer lever
             need = need / guide_share(extra[0], theta)
             too_short = lever <= (crank + frame) / guide_share(extra[0], theta)
-        # the block on the lever's tip must reach a guide set above L2 + L1 (check_designs)
+        # the block on the lever's tip must reach a guide set above L2 + L1, which needs a
+        # lever longer than L2 + L1 (check_designs)
         block_at_height = not ruled and extra[1] is None and extra[2] is None
+        if block_at_height:
+            too_short = lever <= crank + frame
         tip = np.broadcast_to(block_at_height and (extra[0] > crank + frame), shape) & too_short
     verdict.check("time_ratio", half < smallest, time_ratio,
                   lambda i, at=Flat(k_min, shape): _k_min_text(float(at[i])))
@@ -176,6 +179,9 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
     verdict.check("stroke", too_short, stroke,
                   (lambda i, at=Flat(need, shape): f"must be > {round_text(at[i])} mm for this crank and K, "
                    "so that the ram guide its rule places clears the crank") if ruled else
+                  (lambda i, at=Flat(need, shape): f"must be > {round_text(at[i])} mm for this crank and K, "
+                   "so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the "
+                   "lever tip") if block_at_height else
                   (lambda i, at=Flat(need, shape):
                       f"must be ≥ {math.ceil(at[i] * 10.0) / 10.0:.1f} mm for this crank and K, "
                       "so that the crank pin stays on the lever"))
@@ -283,7 +289,7 @@ def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) ->
     shape = verdict.failed.shape
     verdict.check("crank", crank >= frame, crank,
                   lambda i, at=Flat(frame, shape):
-                      f"must be shorter than the frame O2O4 ({at[i]:.6g} mm)")
+                      f"must be shorter than the frame O2O4 ({round_text(at[i], down=True)} mm)")
     with np.errstate(all="ignore"):
         too_long = crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12)
     verdict.check("crank", too_long, crank,
@@ -293,7 +299,11 @@ def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) ->
 
 
 def check_designs(verdict: Verdict, d: Designs) -> None:
-    """Refuse designs that cannot be assembled or would jam somewhere in the cycle."""
+    """Refuse designs that cannot be assembled or would jam somewhere in the cycle.
+
+    Each refusal's bound, followed, leads on to a valid design (tests/test_core/
+    test_linkage_advice.py follows them): the block variant's guide must lie in (L2 + L1, L3],
+    so its lever is refused at L2 + L1 itself, which would leave the guide no height."""
     shape = verdict.failed.shape
     for name in ("crank", "frame", "lever", "guide"):
         check_length(verdict, name, getattr(d, name))
@@ -301,27 +311,17 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     verdict.check("rod_side", d.rod_side not in ROD_SIDES, d.rod_side,
                   "must be 'trailing' or 'leading'")
     reach = d.frame + d.crank
-    # the block variant's lever must also reach a guide above L2 + L1 (checked next): a lever
-    # of just L2 + L1 would leave that guide no height to take
-    tip = d.rod is None and np.asarray(d.guide > reach) & (d.guide > d.lever)
-    verdict.check("lever", (d.lever < reach) & ~tip, d.lever,
+    if d.rod is None:
+        _check_block(verdict, d, reach)
+        return
+    verdict.check("lever", d.lever < reach, d.lever,
                   lambda i, at=Flat(reach, shape):
                       f"must be ≥ L2 + L1 = {round_text(at[i])} mm, "
                       "so that the crank pin stays on the lever")
-    verdict.check("lever", (d.lever < reach) & tip, d.lever,
-                  lambda i, at=Flat(d.guide, shape), low=Flat(reach, shape):
-                      f"must be ≥ the guide height {round_text(at[i])} mm, so that the block on the lever tip "
-                      f"reaches the guide (and the crank pin stays on the lever: L2 + L1 = {round_text(low[i])} mm)")
     verdict.check("guide", d.guide <= reach, d.guide,
                   lambda i, at=Flat(reach, shape):
                       f"must be > L2 + L1 = {round_text(at[i])} mm above the lever "
                       "pivot, so that the ram clears the crank")
-    if d.rod is None:
-        verdict.check("guide", d.guide > d.lever, d.guide,
-                      lambda i, at=Flat(d.lever, shape):
-                          f"must be ≤ the lever length {round_text(at[i], down=True)} mm: "
-                          "the block on the lever tip cannot reach a higher guide")
-        return
     check_length(verdict, "rod", d.rod)
     # The rod's rise |d| = |guide − By| is largest at a limit position (By lowest) or at
     # ψ = 0 (By = L3); its horizontal reach sqrt(L4² − d²) must stay ≥ ROD_MARGIN·L4.
@@ -336,6 +336,28 @@ def check_designs(verdict: Verdict, d: Designs) -> None:
     # read, then for every design this rule refuses at once (a sweep reads them all)
     verdict.check("rod", stuck, d.rod,
                   lambda i, at=Flat(lambda: _least_rods(d, stuck), shape): _dead_centre_text(at[i]))
+
+
+def _check_block(verdict: Verdict, d: Designs, reach: np.ndarray) -> None:
+    """The block variant's lever and guide: the guide in (L2 + L1, L3]. A lever that is too
+    short is told to reach the guide where the guide is set above L2 + L1, else to pass
+    L2 + L1 (strictly: the guide needs a height above it); the guide is told both ends."""
+    shape = verdict.failed.shape
+    high = np.asarray(d.guide > reach)
+    short = d.lever <= reach
+    verdict.check("lever", short & ~high, d.lever,
+                  lambda i, at=Flat(reach, shape):
+                      f"must be > L2 + L1 = {round_text(at[i])} mm, so that the crank pin stays on the lever "
+                      "and a ram guide fits between L2 + L1 and the lever tip")
+    verdict.check("lever", short & high, d.lever,
+                  lambda i, at=Flat(d.guide, shape), low=Flat(reach, shape):
+                      f"must be ≥ the guide height {round_text(at[i])} mm, so that the block on the lever tip "
+                      f"reaches the guide (and the crank pin stays on the lever: L2 + L1 = {round_text(low[i])} mm)")
+    verdict.check("guide", ~high | (d.guide > d.lever), d.guide,
+                  lambda i, low=Flat(reach, shape), high=Flat(d.lever, shape):
+                      "must be > L2 + L1 = {} mm and ≤ the lever length {} mm, so that the ram clears the "
+                      "crank and the block on the lever tip reaches the guide".format(
+                          *open_range_texts(float(low[i]), float(high[i]))))
 
 
 def _least_rods(d: Designs, stuck: np.ndarray) -> np.ndarray:

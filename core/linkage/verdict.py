@@ -115,3 +115,15 @@ def round_text(value: float, digits: int = 6, down: bool = False) -> str:
     rounded = (math.floor if down else math.ceil)(value * scale) / scale
     return f"{rounded:.{digits}g}"
 
+
+def open_range_texts(low: float, high: float, digits: int = 6) -> tuple[str, str]:
+    """The ends of the range (``low``, ``high``] as printed: ``low`` rounded up and ``high``
+    down (:func:`round_text`) to the fewest digits, ``digits`` or more, that keep them apart,
+    so that a value typed just past the printed low end is also within the printed high
+    end. A range too narrow for 17 digits (a high end a few floats above the low one) is
+    printed as the floats themselves (``repr``, which reads back exactly)."""
+    for n in range(digits, 18):
+        lo, hi = round_text(low, n), round_text(high, n, down=True)
+        if low <= float(lo) < float(hi) <= high:
+            return lo, hi
+    return repr(low), repr(high)
