@@ -13,12 +13,16 @@ import pytest
 from core.forces.masses import MassProperties
 from core.linkage.metrics import analyze
 from core.linkage.spec import Spec
-from core.space.sweep import evaluate
+from core.space.sweep import evaluate, grid
 
 COUNT = 100_000
 LOOP = 300
 SPEC_BLOCK = Spec(crank=100.0, time_ratio=1.46, stroke=312.0)
 SPEC_ROD = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
+# K = 3.1 with a guide above the lever tip: 28 937 of the 90 000 rods of JAMS jam at a dead centre
+SPEC_JAMS = Spec(mode="dimensions", crank=300.0, frame=400.0, lever=900.0, variant="rod", rod_input="length",
+                 guide_rule="height", guide_height=1000.0, rod_length=500.0)
+JAMS = {"guide": (900.0, 1170.0, 300), "rod": (300.0, 1000.0, 300)}
 
 
 def _values(count, rod):
@@ -41,6 +45,17 @@ def test_sweep_1e5_designs_rod(benchmark):
     values = _values(COUNT, rod=True)
     ev = benchmark.pedantic(evaluate, args=(SPEC_ROD, values, [40.0]), rounds=5, iterations=1)
     assert ev.valid.size == COUNT and ev.valid.sum() > COUNT // 3
+
+
+def test_sweep_reasons_with_many_dead_centres(benchmark):
+    """The reason column of ``shaper sweep`` (each refused design's one line) where a third of
+    the designs jam at a dead centre: each of those reasons names the least rod that clears it,
+    searched for all of them at once when the first is read (docs/performance.md). A fresh
+    evaluation each round (not timed), since the search's result is kept once made."""
+    from core.cli.cmd_sweep import reasons
+    out = benchmark.pedantic(reasons, setup=lambda: ((evaluate(SPEC_JAMS, grid(JAMS), [40.0]),), {}),
+                             rounds=5, iterations=1)
+    assert sum("dead-centre" in r for r in out) == 28_937
 
 
 def _loop(spec, values):

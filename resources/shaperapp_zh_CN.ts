@@ -5859,16 +5859,32 @@
         <translation>须不小于导路高度 %1 mm，导杆端部的滑块才能到达导路（曲柄销也才留在导杆上：L2 + L1 = %2 mm）</translation>
     </message>
     <message>
-        <source>must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide</source>
-        <translation>须不大于导杆长度 %1 mm：导杆端部的滑块无法到达更高的导路</translation>
+        <source>must be more than L2 + L1 = %1 mm, so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the lever tip</source>
+        <translation>须大于 L2 + L1 = %1 mm，以使曲柄销始终在导杆上，并在 L2 + L1 与导杆端部之间留出滑枕导路的高度</translation>
+    </message>
+    <message>
+        <source>must be more than %1 mm for this crank and K, so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the lever tip</source>
+        <translation>对此曲柄和 K 须大于 %1 mm，以使曲柄销始终在导杆上，并在 L2 + L1 与导杆端部之间留出滑枕导路的高度</translation>
+    </message>
+    <message>
+        <source>must be more than L2 + L1 = %1 mm and at most the lever length %2 mm, so that the ram clears the crank and the block on the lever tip reaches the guide</source>
+        <translation>须高于 L2 + L1 = %1 mm 且不高于导杆长度 %2 mm，使滑枕不与曲柄干涉、导杆端部的滑块能到达导路</translation>
+    </message>
+    <message>
+        <source>the rod passes a dead-centre position against the lever; lengthen it to at least %1 mm or move the guide line</source>
+        <translation>连杆与导杆会经过死点位置；请将连杆加长到不小于 %1 mm，或移动导路线</translation>
+    </message>
+    <message>
+        <source>the rod passes a dead-centre position against the lever; raise L4/L3 to at least %1 or move the guide line</source>
+        <translation>连杆与导杆会经过死点位置；请将 L4/L3 增大到不小于 %1，或移动导路线</translation>
+    </message>
+    <message>
+        <source>the rod passes a dead-centre position against the lever at every length up to %1 mm; move the guide line</source>
+        <translation>连杆长度在 %1 mm 以内时，连杆与导杆总会经过死点位置；请移动导路线</translation>
     </message>
     <message>
         <source>must be more than %1 mm to reach the guide line over the whole cycle</source>
         <translation>须大于 %1 mm，才能在整个循环中到达导路线</translation>
-    </message>
-    <message>
-        <source>the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line</source>
-        <translation>连杆与导杆会经过死点位置；请加长连杆或移动导路线</translation>
     </message>
     <message>
         <source>must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm</source>

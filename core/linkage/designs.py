@@ -16,19 +16,15 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from core.base.arrays import sorted_unique
 from core.base.errors import DesignError, range_text
-from .extrema import grid_minimum
-from .verdict import Flat, Verdict, check_range, round_text
+from .drive import ROD_MARGIN, jams, largest_rise, least_rod
+from .verdict import Flat, Verdict, check_range, open_range_texts, round_text
 
 MIN_LENGTH_MM = 0.001
 MAX_LENGTH_MM = 100_000.0
 MAX_TIME_RATIO = 5.0
 # L1/L2 = sin(θ/2) at K = 5 (θ = 120°): the largest crank a frame allows.
 MAX_CRANK_RATIO = math.sin(math.pi * (MAX_TIME_RATIO - 1.0) / (MAX_TIME_RATIO + 1.0) / 2.0)
-# The rod must keep a horizontal reach |Cx − Bx| and a drive margin of this fraction of
-# L4 (a pressure angle below 89.94°), so forces and accelerations stay finite and exact.
-ROD_MARGIN = 1e-3
 ROD_SIDES: tuple[str, ...] = ("trailing", "leading")
 GUIDE_RULES: tuple[str, ...] = ("chord", "sagitta")
 MAX_ROD_RATIO = 10.0
@@ -167,8 +163,11 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         if ruled:               # the guide the rule places must clear the crank too: a longer lever
             need = need / guide_share(extra[0], theta)
             too_short = lever <= (crank + frame) / guide_share(extra[0], theta)
-        # the block on the lever's tip must reach a guide set above L2 + L1 (check_designs)
+        # the block on the lever's tip must reach a guide set above L2 + L1, which needs a
+        # lever longer than L2 + L1 (check_designs)
         block_at_height = not ruled and extra[1] is None and extra[2] is None
+        if block_at_height:
+            too_short = lever <= crank + frame
         tip = np.broadcast_to(block_at_height and (extra[0] > crank + frame), shape) & too_short
     verdict.check("time_ratio", half < smallest, time_ratio,
                   lambda i, at=Flat(k_min, shape): _k_min_text(float(at[i])))
@@ -180,6 +179,9 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
     verdict.check("stroke", too_short, stroke,
                   (lambda i, at=Flat(need, shape): f"must be > {round_text(at[i])} mm for this crank and K, "
                    "so that the ram guide its rule places clears the crank") if ruled else
+                  (lambda i, at=Flat(need, shape): f"must be > {round_text(at[i])} mm for this crank and K, "
+                   "so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the "
+                   "lever tip") if block_at_height else
                   (lambda i, at=Flat(need, shape):
                       f"must be ≥ {math.ceil(at[i] * 10.0) / 10.0:.1f} mm for this crank and K, "
                       "so that the crank pin stays on the lever"))
@@ -287,7 +289,7 @@ def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) ->
     shape = verdict.failed.shape
     verdict.check("crank", crank >= frame, crank,
                   lambda i, at=Flat(frame, shape):
-                      f"must be shorter than the frame O2O4 ({at[i]:.6g} mm)")
+                      f"must be shorter than the frame O2O4 ({round_text(at[i], down=True)} mm)")
     with np.errstate(all="ignore"):
         too_long = crank > MAX_CRANK_RATIO * frame * (1.0 + 1e-12)
     verdict.check("crank", too_long, crank,
@@ -297,102 +299,79 @@ def check_crank_ratio(verdict: Verdict, crank: np.ndarray, frame: np.ndarray) ->
 
 
 def check_designs(verdict: Verdict, d: Designs) -> None:
-    """Refuse designs that cannot be assembled or would jam somewhere in the cycle."""
+    """Refuse designs that cannot be assembled or would jam somewhere in the cycle.
+
+    Each refusal's bound, followed, leads on to a valid design (tests/test_core/
+    test_linkage_advice.py follows them): the block variant's guide must lie in (L2 + L1, L3],
+    so its lever is refused at L2 + L1 itself, which would leave the guide no height."""
     shape = verdict.failed.shape
     for name in ("crank", "frame", "lever", "guide"):
         check_length(verdict, name, getattr(d, name))
     check_crank_ratio(verdict, d.crank, d.frame)
     verdict.check("rod_side", d.rod_side not in ROD_SIDES, d.rod_side,
                   "must be 'trailing' or 'leading'")
-    with np.errstate(all="ignore"):
-        reach = d.frame + d.crank
-        tip_low = d.lever * np.sqrt(1.0 - np.minimum(d.crank / d.frame, 1.0) ** 2)  # L3·cos(θ/2)
-    # the block variant's lever must also reach a guide above L2 + L1 (checked next): a lever
-    # of just L2 + L1 would leave that guide no height to take
-    tip = d.rod is None and np.asarray(d.guide > reach) & (d.guide > d.lever)
-    verdict.check("lever", (d.lever < reach) & ~tip, d.lever,
+    reach = d.frame + d.crank
+    if d.rod is None:
+        _check_block(verdict, d, reach)
+        return
+    verdict.check("lever", d.lever < reach, d.lever,
                   lambda i, at=Flat(reach, shape):
                       f"must be ≥ L2 + L1 = {round_text(at[i])} mm, "
                       "so that the crank pin stays on the lever")
-    verdict.check("lever", (d.lever < reach) & tip, d.lever,
-                  lambda i, at=Flat(d.guide, shape), low=Flat(reach, shape):
-                      f"must be ≥ the guide height {round_text(at[i])} mm, so that the block on the lever tip "
-                      f"reaches the guide (and the crank pin stays on the lever: L2 + L1 = {round_text(low[i])} mm)")
     verdict.check("guide", d.guide <= reach, d.guide,
                   lambda i, at=Flat(reach, shape):
                       f"must be > L2 + L1 = {round_text(at[i])} mm above the lever "
                       "pivot, so that the ram clears the crank")
-    if d.rod is None:
-        verdict.check("guide", d.guide > d.lever, d.guide,
-                      lambda i, at=Flat(d.lever, shape):
-                          f"must be ≤ the lever length {round_text(at[i], down=True)} mm: "
-                          "the block on the lever tip cannot reach a higher guide")
-        return
     check_length(verdict, "rod", d.rod)
     # The rod's rise |d| = |guide − By| is largest at a limit position (By lowest) or at
     # ψ = 0 (By = L3); its horizontal reach sqrt(L4² − d²) must stay ≥ ROD_MARGIN·L4.
     with np.errstate(all="ignore"):
-        need = np.maximum(d.guide - tip_low, d.lever - d.guide) / math.sqrt(1.0 - ROD_MARGIN ** 2)
+        need = largest_rise(d) / math.sqrt(1.0 - ROD_MARGIN ** 2)
     verdict.check("rod", d.rod <= need, d.rod,
                   lambda i, at=Flat(need, shape):
                       f"must be > {round_text(at[i])} mm to reach the guide line "
                       "over the whole cycle")
-    # r·cos ψ − s·d·sin ψ ≥ r_min·cos(θ/2) − |d|_max·sin(θ/2): where this bound already
-    # clears the margin the exact minimum is not needed (it changes no verdict).
-    with np.errstate(all="ignore"):
-        rise = np.maximum(np.abs(d.guide - d.lever), np.abs(d.guide - tip_low))
-        ratio = d.crank / d.frame
-        bound = np.sqrt(np.maximum(d.rod ** 2 - rise ** 2, 0.0)) * np.sqrt(1.0 - ratio ** 2) \
-            - rise * ratio
-    margin = np.full(shape, np.inf)
-    todo = verdict.ok & ~(bound > 2.0 * ROD_MARGIN * d.rod)
-    if todo.any():
-        margin[todo] = drive_margin(d.take(todo))
-    verdict.check("rod", margin <= ROD_MARGIN * d.rod, d.rod,
-                  "the rod passes a dead-centre position against the lever; "
-                  "lengthen the rod or move the guide line")
+    stuck = jams(d, verdict.ok)
+    # the least rod that clears the dead centre costs a search: made only when a reason is
+    # read, then for every design this rule refuses at once (a sweep reads them all)
+    verdict.check("rod", stuck, d.rod,
+                  lambda i, at=Flat(lambda: _least_rods(d, stuck), shape): _dead_centre_text(at[i]))
 
 
-# Unit offsets of the ψ grid on [−1, 1] (times θ/2): uniform, plus points crowding
-# geometrically toward ψ = 0 and the two ends, where the rod can stand nearly upright and
-# the drive margin can dip sharply (see drive_margin).
-_CROWD = 5.0 ** -np.arange(2, 9)
-_PSI_UNIT = sorted_unique(np.concatenate([np.linspace(-1.0, 1.0, 33), _CROWD, -_CROWD,
-                                          1.0 - _CROWD, _CROWD - 1.0]))
-_CHUNK = 4096
+def _check_block(verdict: Verdict, d: Designs, reach: np.ndarray) -> None:
+    """The block variant's lever and guide: the guide in (L2 + L1, L3]. A lever that is too
+    short is told to reach the guide where the guide is set above L2 + L1, else to pass
+    L2 + L1 (strictly: the guide needs a height above it); the guide is told both ends."""
+    shape = verdict.failed.shape
+    high = np.asarray(d.guide > reach)
+    short = d.lever <= reach
+    verdict.check("lever", short & ~high, d.lever,
+                  lambda i, at=Flat(reach, shape):
+                      f"must be > L2 + L1 = {round_text(at[i])} mm, so that the crank pin stays on the lever "
+                      "and a ram guide fits between L2 + L1 and the lever tip")
+    verdict.check("lever", short & high, d.lever,
+                  lambda i, at=Flat(d.guide, shape), low=Flat(reach, shape):
+                      f"must be ≥ the guide height {round_text(at[i])} mm, so that the block on the lever tip "
+                      f"reaches the guide (and the crank pin stays on the lever: L2 + L1 = {round_text(low[i])} mm)")
+    verdict.check("guide", ~high | (d.guide > d.lever), d.guide,
+                  lambda i, low=Flat(reach, shape), high=Flat(d.lever, shape):
+                      "must be > L2 + L1 = {} mm and ≤ the lever length {} mm, so that the ram clears the "
+                      "crank and the block on the lever tip reaches the guide".format(
+                          *open_range_texts(float(low[i]), float(high[i]))))
 
 
-def drive_margin(d: Designs) -> np.ndarray:
-    """min over the swing of r·cos ψ − s·d·sin ψ, mm, per design (rod variant).
-
-    r·cos ψ − s·d·sin ψ is the rod's extent measured square to the lever (the
-    cross product of the lever's and the rod's directions, times L4): zero where
-    the rod lies in line with the lever, which then has no arm to drive it (a
-    dead centre). d = guide − L3·cos ψ is largest in size at ψ = 0 or an end of the
-    swing, so the rod's reach r = sqrt(L4² − d²) is smallest, and the margin
-    can dip sharply, only there: the grid over ψ ∈ [−θ/2, θ/2] crowds toward
-    those points. The smallest sample is then polished to the zero of the
-    margin's analytic slope (see :mod:`core.linkage.extrema`), so a narrow dip between
-    samples is not missed.
-    """
-    half = (d.theta / 2.0)[..., None]
-    sign = d.rod_sign
-
-    def drive(psi, rod, guide, lever):
-        cos, sin = np.cos(psi), np.sin(psi)
-        depth = guide - lever * cos
-        reach = np.sqrt(np.maximum(rod ** 2 - depth ** 2, 0.0))
-        depth1 = lever * sin
-        with np.errstate(all="ignore"):
-            reach1 = np.where(reach > 0.0, -depth * depth1 / reach, 0.0)
-        return (reach * cos - sign * depth * sin,
-                reach1 * cos - reach * sin - sign * (depth1 * sin + depth * cos))
-
-    out = np.empty(np.shape(half)[:-1])
-    for i in range(0, out.shape[0], _CHUNK):       # chunks bound the grid's memory
-        part = slice(i, i + _CHUNK)
-        psi = half[part] * _PSI_UNIT
-        args = (d.rod[part, None], d.guide[part, None], d.lever[part, None])
-        values, slopes = drive(psi, *args)
-        out[part] = grid_minimum(drive, psi, values, slopes, args=args)
+def _least_rods(d: Designs, stuck: np.ndarray) -> np.ndarray:
+    """The least rod that clears the dead centre where ``stuck``, NaN elsewhere (the designs' shape)."""
+    out = np.full(stuck.shape, np.nan)
+    out[stuck] = least_rod(d.take(stuck))
     return out
+
+
+def _dead_centre_text(least: float) -> str:
+    """The dead-centre refusal: the least rod that clears it, rounded up (so that it passes as
+    printed), or, where that is longer than MAX_LENGTH_MM, the guide line alone."""
+    if least <= MAX_LENGTH_MM:
+        return ("the rod passes a dead-centre position against the lever; lengthen it to at least "
+                f"{round_text(least)} mm or move the guide line")
+    return ("the rod passes a dead-centre position against the lever at every length up to "
+            f"{MAX_LENGTH_MM:g} mm; move the guide line")

@@ -17,8 +17,9 @@ from typing import Literal
 import numpy as np
 
 from .designs import (GUIDE_RULES, MAX_CRANK_RATIO, MAX_LENGTH_MM, MAX_ROD_RATIO, MAX_TIME_RATIO,  # noqa: F401
-                      MIN_LENGTH_MM, ROD_MARGIN, ROD_SIDES, Designs, check_designs,
-                      dimensions_many, drive_margin, synthesize_many)
+                      MIN_LENGTH_MM, ROD_SIDES, Designs, check_designs, dimensions_many,
+                      synthesize_many)
+from .drive import ROD_MARGIN, drive_margin  # noqa: F401
 from .designs import _guide, _guide_number
 from core.base.errors import DesignError, require_range
 from .verdict import Verdict
@@ -174,6 +175,6 @@ def validate(design: Design) -> None:
 
 def rod_drive_margin(design: Design) -> float:
     """min over the swing of r·cos ψ − s·d·sin ψ, mm: zero where the rod lies in line
-    with the lever, which then has no arm to drive it (a dead centre). See :func:`core.linkage.designs.drive_margin`.
+    with the lever, which then has no arm to drive it (a dead centre). See :func:`core.linkage.drive.drive_margin`.
     """
     return float(drive_margin(Designs.of(design))[0])

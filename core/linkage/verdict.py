@@ -82,11 +82,15 @@ class Flat:
     --vary rod-ratio=0.2:1.2:300``."""
 
     def __init__(self, values, shape: tuple[int, ...]) -> None:
+        """``values``: an array, or a function of no arguments that makes it, called on the
+        first read (values that cost a search, such as the least rod that clears a dead
+        centre, are made only where a reason is read, and then for every design at once)."""
         self.values, self.shape, self.flat = values, shape, None
 
     def __getitem__(self, index):
         if self.flat is None:
-            self.flat = np.broadcast_to(self.values, self.shape).reshape(-1)
+            values = self.values() if callable(self.values) else self.values
+            self.flat = np.broadcast_to(values, self.shape).reshape(-1)
         return self.flat[index]
 
 
@@ -110,3 +114,16 @@ def round_text(value: float, digits: int = 6, down: bool = False) -> str:
     scale = 10.0 ** (digits - 1 - math.floor(math.log10(abs(value))))
     rounded = (math.floor if down else math.ceil)(value * scale) / scale
     return f"{rounded:.{digits}g}"
+
+
+def open_range_texts(low: float, high: float, digits: int = 6) -> tuple[str, str]:
+    """The ends of the range (``low``, ``high``] as printed: ``low`` rounded up and ``high``
+    down (:func:`round_text`) to the fewest digits, ``digits`` or more, that keep them apart,
+    so that a value typed just past the printed low end is also within the printed high
+    end. A range too narrow for 17 digits (a high end a few floats above the low one) is
+    printed as the floats themselves (``repr``, which reads back exactly)."""
+    for n in range(digits, 18):
+        lo, hi = round_text(low, n), round_text(high, n, down=True)
+        if low <= float(lo) < float(hi) <= high:
+            return lo, hi
+    return repr(low), repr(high)

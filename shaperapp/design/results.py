@@ -6,6 +6,7 @@ those as "cannot be computed" and keeps the last valid design.
 """
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 import numpy as np
@@ -17,6 +18,7 @@ from core.linkage.geometry import Design
 from core.linkage.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
 from core.linkage.metrics import CycleMetrics, analyze
 from core.linkage.spec import Spec
+from core.linkage.verdict import round_text
 
 from .inputs import Inputs
 
@@ -126,14 +128,16 @@ def compute_whole(inputs: Inputs, masses: MassProperties, check: Callable[[], No
 
 
 def typed_error(error: DesignError, spec: Spec) -> DesignError:
-    """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm."""
+    """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm, its
+    bound in mm divided by L3 and rounded up to 4 digits, so that typing it passes (the
+    reach's "must be > X mm", the dead centre's "lengthen it to at least X mm")."""
     if (error.parameter == "rod" and spec.variant == "rod" and spec.rod_input == "ratio"
             and isinstance(error.value, float) and isinstance(spec.rod_ratio, float) and error.value > 0):
         lever = error.value / spec.rod_ratio
-        allowed = error.allowed
-        if allowed.startswith("must be > ") and " mm " in allowed:
-            bound = float(allowed.split()[3]) / lever
-            allowed = f"must be > {bound:.4g}" + allowed.split(" mm", 1)[1]
+        ratio = lambda m: round_text(float(m.group(2)) / lever, 4)  # noqa: E731
+        allowed = re.sub(r"^(must be > )(\S+) mm ", lambda m: f"{m.group(1)}{ratio(m)} ", error.allowed)
+        allowed = re.sub(r"(; )lengthen it to at least (\S+) mm ",
+                         lambda m: f"{m.group(1)}raise L4/L3 to at least {ratio(m)} ", allowed)
         return DesignError("rod_ratio", spec.rod_ratio, allowed)
     return error
 

@@ -116,12 +116,29 @@ _OWN_PATTERNS: tuple[tuple[str, str], ...] = (
      r"crank pin stays on the lever: L2 \+ L1 = (\S+) mm\)$",
      "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the "
      "crank pin stays on the lever: L2 + L1 = %2 mm)"),
-    (r"must be ≤ the lever length (\S+) mm: the block on the lever tip cannot reach a higher guide$",
-     "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
+    (r"must be > L2 \+ L1 = (\S+) mm, so that the crank pin stays on the lever and a ram guide fits between "
+     r"L2 \+ L1 and the lever tip$",
+     "must be more than L2 + L1 = %1 mm, so that the crank pin stays on the lever and a ram guide fits between "
+     "L2 + L1 and the lever tip"),
+    (r"must be > (\S+) mm for this crank and K, so that the crank pin stays on the lever and a ram guide fits "
+     r"between L2 \+ L1 and the lever tip$",
+     "must be more than %1 mm for this crank and K, so that the crank pin stays on the lever and a ram guide fits "
+     "between L2 + L1 and the lever tip"),
+    (r"must be > L2 \+ L1 = (\S+) mm and ≤ the lever length (\S+) mm, so that the ram clears the crank and the "
+     r"block on the lever tip reaches the guide$",
+     "must be more than L2 + L1 = %1 mm and at most the lever length %2 mm, so that the ram clears the crank and "
+     "the block on the lever tip reaches the guide"),
     (r"must be > (\S+) mm to reach the guide line over the whole cycle$",
      "must be more than %1 mm to reach the guide line over the whole cycle"),
-    (r"the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line$",
-     "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
+    (r"the rod passes a dead-centre position against the lever; lengthen it to at least (\S+) mm or move the "
+     r"guide line$",
+     "the rod passes a dead-centre position against the lever; lengthen it to at least %1 mm or move the guide line"),
+    (r"the rod passes a dead-centre position against the lever; raise L4/L3 to at least (\S+) or move the "
+     r"guide line$",
+     "the rod passes a dead-centre position against the lever; raise L4/L3 to at least %1 or move the guide line"),
+    (r"the rod passes a dead-centre position against the lever at every length up to (\S+) mm; move the guide "
+     r"line$",
+     "the rod passes a dead-centre position against the lever at every length up to %1 mm; move the guide line"),
     (r"must be ≥ (\S+) for this crank and stroke, so that the frame and the lever stay ≤ (\S+) mm$",
      "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm"),
     (r"no K up to (\S+) keeps the frame and the lever ≤ (\S+) mm for this crank and stroke: shorten them$",
@@ -181,12 +198,20 @@ def _translated_templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "must be at least %1 mm for this crank and K, so that the block on the lever tip reaches the guide height %2 mm"),
         "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)":
             QCoreApplication.translate("messages", "must be at least the guide height %1 mm, so that the block on the lever tip reaches the guide (and the crank pin stays on the lever: L2 + L1 = %2 mm)"),
-        "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide":
-            QCoreApplication.translate("messages", "must be at most the lever length %1 mm: the block on the lever tip cannot reach a higher guide"),
+        "must be more than L2 + L1 = %1 mm, so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the lever tip":
+            QCoreApplication.translate("messages", "must be more than L2 + L1 = %1 mm, so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the lever tip"),
+        "must be more than %1 mm for this crank and K, so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the lever tip":
+            QCoreApplication.translate("messages", "must be more than %1 mm for this crank and K, so that the crank pin stays on the lever and a ram guide fits between L2 + L1 and the lever tip"),
+        "must be more than L2 + L1 = %1 mm and at most the lever length %2 mm, so that the ram clears the crank and the block on the lever tip reaches the guide":
+            QCoreApplication.translate("messages", "must be more than L2 + L1 = %1 mm and at most the lever length %2 mm, so that the ram clears the crank and the block on the lever tip reaches the guide"),
         "must be more than %1 mm to reach the guide line over the whole cycle":
             QCoreApplication.translate("messages", "must be more than %1 mm to reach the guide line over the whole cycle"),
-        "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line":
-            QCoreApplication.translate("messages", "the rod passes a dead-centre position against the lever; lengthen the rod or move the guide line"),
+        "the rod passes a dead-centre position against the lever; lengthen it to at least %1 mm or move the guide line":
+            QCoreApplication.translate("messages", "the rod passes a dead-centre position against the lever; lengthen it to at least %1 mm or move the guide line"),
+        "the rod passes a dead-centre position against the lever; raise L4/L3 to at least %1 or move the guide line":
+            QCoreApplication.translate("messages", "the rod passes a dead-centre position against the lever; raise L4/L3 to at least %1 or move the guide line"),
+        "the rod passes a dead-centre position against the lever at every length up to %1 mm; move the guide line":
+            QCoreApplication.translate("messages", "the rod passes a dead-centre position against the lever at every length up to %1 mm; move the guide line"),
         "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm":
             QCoreApplication.translate("messages", "must be at least %1 for this crank and stroke, so that the frame and the lever stay at most %2 mm"),
         "no K up to %1 keeps the frame and the lever at most %2 mm for this crank and stroke: shorten them":

@@ -1,6 +1,7 @@
 """Every message of widgets/messages.py reaches a Chinese user in Chinese (issue 32, item 5):
 the templates for core's DesignError texts, the names of the fields, and the reasons a
 design file is refused (core.base.errors.FILE_REASONS), each scanned for English words."""
+import re
 from dataclasses import fields
 
 import pytest
@@ -61,3 +62,35 @@ def test_a_library_entry_is_named_as_one(chinese):
 def test_english_keeps_cores_sentence():
     error = FileFormatError("not_json", "/tmp/a.json")
     assert messages.describe_file_error(error) == str(error) == "/tmp/a.json is not a design file (not valid JSON)"
+
+
+@pytest.mark.parametrize("spec, said", [
+    # L2 + L1 = 400 mm; the least stroke 2·(L1 + L2)·sin(θ/2) = 2·L1·(1 + sin 15°) = 251.764 mm at K = 1.4
+    (Spec(mode="dimensions", crank=100.0, frame=300.0, lever=350.0, guide_rule="height", guide_height=350.0),
+     "须大于 L2 + L1 = 400 mm，以使曲柄销始终在导杆上，并在 L2 + L1 与导杆端部之间留出滑枕导路的高度"),
+    (Spec(mode="dimensions", crank=100.0, frame=300.0, lever=500.0, guide_rule="height", guide_height=600.0),
+     "须高于 L2 + L1 = 400 mm 且不高于导杆长度 500 mm"),
+    (Spec(crank=100.0, time_ratio=1.4, stroke=100.0, guide_rule="height", guide_height=300.0),
+     "对此曲柄和 K 须大于 251.764 mm，以使曲柄销始终在导杆上"),
+    (Spec(variant="rod", rod_input="length", rod_length=20.0, guide_rule="height", guide_height=579.5),
+     "请将连杆加长到不小于 %1 mm，或移动导路线"),
+    (Spec(variant="rod", rod_input="ratio", rod_ratio=0.034, guide_rule="height", guide_height=579.5),
+     "请将 L4/L3 增大到不小于 %1，或移动导路线"),
+    (Spec(mode="dimensions", crank=34000.0, frame=40000.0, lever=76000.0, variant="rod", guide_rule="height",
+          guide_height=95000.0, rod_input="length", rod_length=80000.0),
+     "连杆长度在 100000 mm 以内时，连杆与导杆总会经过死点位置；请移动导路线"),
+])
+def test_the_block_and_dead_centre_refusals_are_chinese_with_their_numbers(chinese, spec, said):
+    """The refusals that name the block's lever or guide range, and the dead centre's least
+    rod (in mm, or as L4/L3 for a rod given so, or none up to 100 000 mm), as the form shows
+    them: in Chinese, every number of core's sentence kept (%1: the least rod, core's)."""
+    from shaperapp.design.results import typed_error
+    with pytest.raises(DesignError) as refused:
+        spec.design()
+    error = typed_error(refused.value, spec)
+    text = messages.describe(error)
+    assert english_words(text) == [], text
+    numbers = re.compile(r"\d+\.\d+|\d{3,}")          # the lengths and ratios, not L2, L1, L4/L3
+    assert set(numbers.findall(error.allowed)) <= set(numbers.findall(text)), text
+    least = re.search(r"at least (\S+?) ", error.allowed)
+    assert said.replace("%1", least.group(1) if least else "%1") in text, text
