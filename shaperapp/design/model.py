@@ -31,7 +31,7 @@ from core.linkage.spec import Spec
 from .inputs import DEFAULT_MASSES, DEFAULT_RPMS, DEFAULT_STEP, Inputs, same_typed, spec_edit_key, typed_spec
 from .errors import ShownError
 from .results import (COMPUTE_ERRORS, as_design_error, compute, compute_error, compute_motion, compute_whole,
-                      solve_forces, typed_error)
+                      solve_forces)
 from .parts import FileParts
 from .undo import InputEdit, edit_text, push_edit
 
@@ -348,7 +348,7 @@ class DesignModel(QObject):
         try:
             design, motion, metrics = compute_motion(inputs)
         except DesignError as exc:
-            self._error.set(typed_error(exc, self._inputs.spec))
+            self._error.set(exc)
             return False
         except COMPUTE_ERRORS as exc:
             self._error.set(compute_error(exc))

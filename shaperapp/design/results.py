@@ -6,7 +6,6 @@ those as "cannot be computed" and keeps the last valid design.
 """
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 
 import numpy as np
@@ -17,8 +16,6 @@ from core.base.errors import DesignError
 from core.linkage.geometry import Design
 from core.linkage.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
 from core.linkage.metrics import CycleMetrics, analyze
-from core.linkage.spec import Spec
-from core.linkage.verdict import round_text
 
 from .inputs import Inputs
 
@@ -125,21 +122,6 @@ def compute_whole(inputs: Inputs, masses: MassProperties, check: Callable[[], No
     except COMPUTE_ERRORS as exc:
         raise compute_error(exc) from None
     return results
-
-
-def typed_error(error: DesignError, spec: Spec) -> DesignError:
-    """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm, its
-    bound in mm divided by L3 and rounded up to 4 digits, so that typing it passes (the
-    reach's "must be > X mm", the dead centre's "lengthen it to at least X mm")."""
-    if (error.parameter == "rod" and spec.variant == "rod" and spec.rod_input == "ratio"
-            and isinstance(error.value, float) and isinstance(spec.rod_ratio, float) and error.value > 0):
-        lever = error.value / spec.rod_ratio
-        ratio = lambda m: round_text(float(m.group(2)) / lever, 4)  # noqa: E731
-        allowed = re.sub(r"^(must be > )(\S+) mm ", lambda m: f"{m.group(1)}{ratio(m)} ", error.allowed)
-        allowed = re.sub(r"(; )lengthen it to at least (\S+) mm ",
-                         lambda m: f"{m.group(1)}raise L4/L3 to at least {ratio(m)} ", allowed)
-        return DesignError("rod_ratio", spec.rod_ratio, allowed)
-    return error
 
 
 def compute_error(exc: BaseException) -> DesignError:

@@ -336,3 +336,25 @@ def test_a_crank_just_below_the_frame_printed_is_shorter_than_the_frame():
     with pytest.raises(DesignError) as again:
         advised(spec, refused.value).design()
     assert again.value.allowed.startswith("must be ≤ 106.916 mm (0.866·L2)")
+
+
+@pytest.mark.parametrize("guide, ratio", [(None, 0.02), ("600", 0.05)])
+def test_a_rod_given_as_a_ratio_is_refused_in_the_ratio_on_the_command_line(guide, ratio):
+    """``--rod-ratio`` too short to reach the guide line: the command line named ``--rod``
+    with a length in mm the user never typed ("--rod: must be > 19.7479 mm … (got
+    11.591109915468822)"). It names ``--rod-ratio`` and its bound as a ratio; typed as
+    printed (a strict bound just past it), each refusal leads on, within three, to a design
+    (at guide 600 the reach's bound then meets the dead centre, which names its own ratio)."""
+    from cli_runner import shaper_in_process
+    base = ["analyze", "--crank", 100, "--K", 1.4, "--stroke", 300] + (["--guide", guide] if guide else [])
+    for _ in range(3):
+        status, _, err = shaper_in_process(*base, "--rod-ratio", ratio)
+        if status == 0:
+            return
+        line = err.strip().splitlines()[-1]
+        m = re.match(r"shaper: error: --rod-ratio: .*(must be >|at least) (\S+) .*\(got (\S+)\)$", line)
+        assert status == 2 and m is not None and float(m.group(3)) == ratio, line
+        bound = float(m.group(2))
+        assert bound > ratio, line
+        ratio = math.nextafter(bound, math.inf) if m.group(1) == "must be >" else bound
+    pytest.fail(f"still refused after three refusals followed: {line}")
