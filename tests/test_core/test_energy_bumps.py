@@ -12,8 +12,9 @@ idle fraction so that the cut begins 1.5·δ after φ*. E then falls (rises) thr
 return stroke, turns at the bump's first zero, and the bump's extremum is lower (higher)
 than the kink where the cut begins, so it is often the cycle's. Both zeros mostly lie
 inside one 4° cell of the sweep (δ from 0.002 to 0.025 rad). In one 0.1° cell of the
-summary's grid (δ below 8.7e-4 rad) a bump moves ΔW_max by less than its 1e-9 (at most
-2.3e-11 in 21 such cases), so the summary is held to the dense reference and to the sweep.
+summary's grid (δ below 8.7e-4 rad) a bump moves ΔW_max by far less than its 1e-9 (21
+such cases on the code before: the sweep at most 2.3e-11 low, the summary not low), so
+the summary is held to the dense reference and to the sweep.
 """
 import math
 from dataclasses import replace
