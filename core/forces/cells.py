@@ -251,6 +251,18 @@ def turning_cells(parts: tuple[np.ndarray, np.ndarray], w2: np.ndarray,
     return out
 
 
+def slope_turns(jet: TorqueJet, w2: np.ndarray, window: Window,
+                runs: bool = True) -> tuple[list[tuple[int, Cells]], ...]:
+    """Per piece of the cycle (the cut, then the rest): :func:`turning_cells` of the torque's
+    slope T′ at the samples' ``jet`` and the squared speeds ``w2``, among the ``window``'s cells
+    of that piece. The torque's peaks lie in them, and so do the energy's hidden pairs of
+    extrema (:mod:`core.forces.bumps`: E″ = T′), so both searches take them from here, found
+    once."""
+    return tuple(turning_cells((jet.static1 + cutting * jet.cut1, jet.inertial1), w2,
+                               window.cells[k], runs=runs)
+                 for k, cutting in enumerate((1.0, 0.0)))
+
+
 def _columns(index: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
     """What takes ``array[:, index]`` from (designs, samples) arrays, worked out once per
     segment: a view where ``index`` is a run of consecutive columns (a segment's left

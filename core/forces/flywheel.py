@@ -16,8 +16,10 @@ from core.linkage.cut import cut_window
 from core.linkage.designs import Designs
 from core.linkage.turns import wrap_turn
 from .dynamics import ENERGY_INTERVALS, DynamicsSummary, SpeedSummary, _check_inputs
+from .bumps import bump_cells, split_bumps
 from .cells import (DIRECT_SPEEDS, Cells, Window, at_switch, cell_ends, cell_index, on_arc,
-                    pair_extremes, straddling, switch_window, turning_cells, turns_beyond)
+                    pair_extremes, slope_turns, straddling, switch_window, turning_cells,
+                    turns_beyond)
 from .jet import TorqueJet, grid_trig, torque_jet
 from .masses import MM, MassProperties
 from .torque_peaks import PEAK_GAIN, piece_peaks
@@ -163,11 +165,12 @@ def _summary_chunk(d: Designs, omega: np.ndarray, masses: MassProperties, interv
     mean = cut_work(d, masses) / (2.0 * math.pi)                 # (designs,)
     start = (grid.kinetic[:, :1], grid.potential[:, :1], grid.ram_x[:, :1])  # φ = 0: the first
     window = switch_window(d, samples, on, off, masses)
-    top, bottom = _energy_extremes(d, samples, start, omega, mean, window, masses)
+    turns = slope_turns(samples[1], omega ** 2, window, runs=peaks)   # the torque's and E″'s
+    top, bottom = _energy_extremes(d, samples, start, omega, mean, (window, turns), masses)
     swing = top - bottom
     je = 2.0 * grid.kinetic                                       # the kinetic energy is ½·J_e
     if peaks:
-        high, low = _torque_peaks(d, samples, omega, masses, window)
+        high, low = _torque_peaks(d, samples, omega, masses, window, turns)
     else:
         high = low = np.full(top.shape, np.nan)
     out = {"mean_torque_N_m": np.repeat(mean[:, None], omega.size, axis=1),
@@ -222,8 +225,8 @@ def _energy(d, phi: np.ndarray, stored: TorqueJet, w2, mean, masses: MassPropert
 
 
 def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], omega: np.ndarray,
-                     mean: np.ndarray,
-                     window: Window, masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
+                     mean: np.ndarray, windows: tuple[Window, tuple[list, list]],
+                     masses: MassProperties) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest E(φ) per design and speed, exactly, J, each (designs, speeds).
 
     E is continuous and smooth except at the cut's two switch angles, where the torque
@@ -240,11 +243,18 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
     evaluations and one more for E before the quintics, 1.6 from the top of E's own quintic,
     1.2 from this one); a zero counts only inside its own piece. ``samples`` are :func:`_torque_samples`'s,
     ``start`` the stored energy (kinetic, potential) and the ram's x at φ = 0, ``mean`` the
-    mean torque (designs,), ``window`` the cut's switch angles with the jet there and the
-    cells of each piece (:func:`core.forces.cells.switch_window`).
+    mean torque (designs,), ``windows`` the cut's switch angles with the jet there and the
+    cells of each piece (:func:`core.forces.cells.switch_window`), with the cells of each
+    piece where T′ = E″ changes sign (:func:`core.forces.cells.slope_turns`).
+
+    Two zeros of E′ in one cell (a small bump of E′ through zero) change no sign at the
+    samples: E′ then turns inside the cell, so E″ changes sign there, and such cells are
+    split at E′'s polished extremum where it lies beyond zero (:mod:`core.forces.bumps`;
+    a rod's swing was 4.3e-4 J, 3e-6 of itself, low without it).
     """
     from core.linkage.polish import newton_crossing
 
+    window, turns = windows
     on, off = window.on, window.off
     count, speeds = mean.size, omega.size
     col = d.column()
@@ -265,7 +275,7 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
         value = _energy(one, phi, stored, w2, mean, masses, (k0, v0, x0))
         return sign * value, sign * g, sign * slope
 
-    found = []
+    found, bumps = [], []
     for k, (cutting, piece) in enumerate(((1.0, (on, off)), (0.0, (off, on)))):
         parts = (jet.static + cutting * jet.cut - mean[:, None], jet.inertial)   # E′ = T − mean
         slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)               # E″
@@ -282,6 +292,9 @@ def _energy_extremes(d: Designs, samples: tuple, start: tuple[np.ndarray, ...], 
                           piece[0][design], piece[1][design]]
                          + [sign * (a + w * b) for p in (parts, slopes, curvatures)
                             for a, b in cell_ends(p, index)])
+        # Two zeros of E′ in one cell show no sign change: E′ turns there (core.forces.bumps).
+        bumps += bump_cells((parts, slopes, curvatures), w2, cutting, piece, turns[k])
+    found += split_bumps(d, masses, w2, mean, bumps)
     if not found:
         return top.reshape(count, speeds), bottom.reshape(count, speeds)
     design, speed, lo, hi, sign, cutting, first, last, g_lo, g_hi, c_lo, c_hi, r_lo, r_hi = (
@@ -349,7 +362,7 @@ def _torque_samples(d: Designs, grid: TorqueJet, masses: MassProperties) -> tupl
 
 
 def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
-                  window: Window) -> tuple[np.ndarray, np.ndarray]:
+                  window: Window, turns: tuple[list, list]) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest driving torque per design and speed, exactly, N·m.
 
     The torque is T0 = static + ω²·inertial without the cut and T1 = T0 + cut while
@@ -359,4 +372,4 @@ def _torque_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPro
     :func:`core.forces.torque_peaks.piece_peaks`, which brackets each maximum where the
     slope sampled by :func:`_torque_samples` turns and polishes it by Newton's method.
     """
-    return piece_peaks(d, samples, omega, masses, window)
+    return piece_peaks(d, samples, omega, masses, window, turns)

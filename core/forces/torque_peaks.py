@@ -19,7 +19,7 @@ import numpy as np
 from core.linkage.designs import Designs
 from core.linkage.polish import newton_maximum
 from .cells import (Cells, Window, at_switch, cell_ends, cell_index, on_arc, pair_extremes, straddling,
-                    turning_cells, turns_beyond)
+                    turns_beyond)
 from .jet import torque_jet
 from .masses import MassProperties
 
@@ -30,11 +30,12 @@ PEAK_GAIN = 1e-15
 
 
 def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassProperties,
-                window: Window) -> tuple[np.ndarray, np.ndarray]:
+                window: Window, turns: tuple[list, list]) -> tuple[np.ndarray, np.ndarray]:
     """(largest, smallest) driving torque per design and speed, N·m, each (designs, speeds).
 
     ``samples`` are :func:`core.forces.flywheel._torque_samples`' (φ, jet, segments) and
-    ``window`` the cut's switch angles with the jet there and the cells of each piece. Candidates: both curves' values
+    ``window`` the cut's switch angles with the jet there and the cells of each piece, ``turns``
+    the cells where the slope turns in each (:func:`core.forces.cells.slope_turns`). Candidates: both curves' values
     at both switch angles, the samples beside each turning cell that lie inside the piece,
     and each polished maximum or minimum that lands inside its piece (a smooth curve's
     extremum over an arc is at an end or where its slope turns).
@@ -59,10 +60,9 @@ def piece_peaks(d: Designs, samples: tuple, omega: np.ndarray, masses: MassPrope
     found = []
     for k, cutting in enumerate((1.0, 0.0)):
         values = (jet.static + cutting * jet.cut, jet.inertial)
-        slopes = (jet.static1 + cutting * jet.cut1, jet.inertial1)
         at_values = (switch.static + cutting * switch.cut, switch.inertial)
         at_slopes = (switch.static1 + cutting * switch.cut1, switch.inertial1)
-        for kind, cells in turning_cells(slopes, w2, window.cells[k]):
+        for kind, cells in turns[k]:
             sign = 1.0 - 2.0 * kind
             design, speed = cells.design, cells.speed
             owner = (kind * on.size + design) * w2.size + speed

@@ -145,6 +145,12 @@ def test_sweep_progress_option_prints_lines_to_the_end(tmp_path):
 # peak between samples, 5e-5 of it low (drawn by CI's hypothesis)
 @example(Design(crank=193.0, frame=624.5611196574595, lever=1149.6953245183024, guide=1104.0061129621326,
                 rod=45.70006902570166, rod_side="leading"), 502, [1.0] * 15 + [15.0])
+# at 80 r/min E′ = T − T_mean is −0.077 and −0.0016 N·m at 32° and 36° and positive between,
+# zeros at 33.56° and 35.94°: the minimum of E between them, the cycle's, changed no sign at
+# the samples and the swing was 4.3e-4 J (3e-6) low (drawn by the suite's hypothesis;
+# core.forces.bumps, tests/test_core/test_energy_bumps.py)
+@example(Design(crank=56.0, frame=170.93158366982976, lever=297.84770356665155, guide=263.45870412568524,
+                rod=133.7823503181653, rod_side="trailing"), 93254, [1.0] * 15 + [80.0])
 def test_at_16_speeds_a_sweep_row_is_the_summary_and_no_lower_than_a_dense_solve(design, seed, rpms):
     """The issue's 16 speeds: the sweep finds each speed's cells from the signs of the
     torque's slope, affine in ω², at all speeds at once (core.forces.torque_peaks), and
