@@ -36,8 +36,9 @@ STEP_MOST = 2.0 * MAX_SHIFT
 that a′ may go down to a cos α): beyond it the shifts leave their range."""
 EDGE_HALVINGS = 50
 """Halvings that find where a refusal begins along a change (to 2⁻⁵⁰ of the bracket)."""
-BISECT_TOLERANCE = 1e-5
-"""The bracket is closed to this share of the change."""
+BISECT_TOLERANCE = 1e-8
+"""The bracket is closed to this share of the change: well inside the last printed decimal
+(PRINT_SHARE), so that the printed value is the first beyond the least change."""
 PRINT_SHARE = 2e-3
 """The rounding of a printed value adds at most this share of the change, so that 1 % less
 of the printed change fails again."""
