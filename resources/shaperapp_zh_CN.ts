@@ -6047,6 +6047,14 @@
         <translation>许用压力角为 %1° 时可以</translation>
     </message>
     <message>
+        <source>a base radius of %1 mm gives one</source>
+        <translation>基圆半径取 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>a centre distance of %1 mm gives one</source>
+        <translation>中心距取 %1 mm 时可以</translation>
+    </message>
+    <message>
         <source>a return allowance of %1° gives one</source>
         <translation>回程许用压力角为 %1° 时可以</translation>
     </message>
