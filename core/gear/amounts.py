@@ -16,14 +16,12 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING, Callable
+from typing import Callable
 
 from core.base.errors import DesignError
 from .inputs import GearPairInputs, MAX_SHIFT, MAX_TEETH
-from .margins import check_margins
+from .margins import GearPair, check_margins
 
-if TYPE_CHECKING:
-    from .pair import GearPair
 
 STEP_START = 1e-3
 """The first step tried, in shift factor (for a′: times m, mm)."""
@@ -48,7 +46,7 @@ small change."""
 BUMPS = 3
 """Further steps of the last decimal tried when the rounded value does not pass."""
 
-Design = Callable[[GearPairInputs], "GearPair"]
+Design = Callable[[GearPairInputs], GearPair]
 """A whole design of a pair's inputs (``pair.design_pair``): raises DesignError when refused."""
 
 

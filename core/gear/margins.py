@@ -8,10 +8,11 @@ an undercut flank is judged from N itself, and the undercut check fails anyway).
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, NamedTuple
+from typing import Any, NamedTuple
 
-if TYPE_CHECKING:
-    from .pair import GearPair
+GearPair = Any
+"""A ``pair.GearPair``, not imported: ``pair`` asks ``amounts`` (which reads margins here) for
+its refusals' values, and no module of core imports one that imports it back, even for types."""
 
 CHECKS = ("undercut1", "undercut2", "tip1", "tip2", "contact", "interference1", "interference2")
 INTERFERENCE_TOLERANCE_MM = 1e-9
