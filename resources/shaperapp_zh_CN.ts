@@ -2683,16 +2683,36 @@
         <translation>需要 x1 + x2 = %1，小于两轮均不根切所需的 %2；请取不小于 %3 mm</translation>
     </message>
     <message>
+        <source>x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle; give %2 ≤ %3, for a tip of gear %1 at least %4 mm thick</source>
+        <translation>x1 + x2 过大：齿顶高降低后齿轮 %1 在基圆以外没有齿廓；请取 %2 ≤ %3，使齿轮 %1 的齿顶厚不小于 %4 mm</translation>
+    </message>
+    <message>
+        <source>makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick</source>
+        <translation>使齿轮 %1 齿顶变尖（x = %2）：请取 %3 ≤ %4，使齿顶厚不小于 %5 mm</translation>
+    </message>
+    <message>
+        <source>makes the tip of gear %1 pointed (x = %2): give a′ ≤ %3 mm, for a tip at least %4 mm thick</source>
+        <translation>使齿轮 %1 齿顶变尖（x = %2）：请取 a′ ≤ %3 mm，使齿顶厚不小于 %4 mm</translation>
+    </message>
+    <message>
+        <source>too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give %3 ≥ %4, for a tip at least %5 mm thick</source>
+        <translation>齿数过少，按规则取的变位使齿轮 %1 齿顶变尖（x = %2）：请取 %3 ≥ %4，使齿顶厚不小于 %5 mm</translation>
+    </message>
+    <message>
         <source>x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle</source>
         <translation>x1 + x2 过大：齿顶高降低后齿轮 %1 在基圆以外没有齿廓</translation>
     </message>
     <message>
-        <source>makes the tip of gear %1 pointed (x = %2): give a smaller shift</source>
-        <translation>使齿轮 %1 齿顶变尖（x = %2）：请减小变位系数</translation>
+        <source>makes the tip of gear %1 pointed (x = %2): no smaller %3 found that gives a tip at least %4 mm thick; give gear %1 more teeth</source>
+        <translation>使齿轮 %1 齿顶变尖（x = %2）：未找到能使齿顶厚不小于 %4 mm 的更小的 %3；请增加齿轮 %1 的齿数</translation>
     </message>
     <message>
-        <source>makes the tip of gear %1 pointed (x = %2): give a smaller centre distance</source>
-        <translation>使齿轮 %1 齿顶变尖（x = %2）：请减小中心距</translation>
+        <source>makes the tip of gear %1 pointed (x = %2): no smaller centre distance found that gives a tip at least %3 mm thick; give gear %1 more teeth</source>
+        <translation>使齿轮 %1 齿顶变尖（x = %2）：未找到能使齿顶厚不小于 %3 mm 的更小的中心距；请增加齿轮 %1 的齿数</translation>
+    </message>
+    <message>
+        <source>no change of one shift or of a′ makes it pass: try other teeth</source>
+        <translation>单独改变一个变位系数或 a′ 均不能使其合格：请改变齿数</translation>
     </message>
     <message>
         <source>too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give more teeth, or the shifts or the centre distance</source>
@@ -2743,6 +2763,38 @@
         <translation>a′ 不变，x1 减小 δ、x2 增大 δ</translation>
     </message>
     <message>
+        <source>raise %1 to ≥ %2</source>
+        <translation>将 %1 增大到 ≥ %2</translation>
+    </message>
+    <message>
+        <source>lower %1 to ≤ %2</source>
+        <translation>将 %1 减小到 ≤ %2</translation>
+    </message>
+    <message>
+        <source>raise a′ to ≥ %2 mm</source>
+        <translation>将 a′ 增大到 ≥ %2 mm</translation>
+    </message>
+    <message>
+        <source>lower a′ to ≤ %2 mm</source>
+        <translation>将 a′ 减小到 ≤ %2 mm</translation>
+    </message>
+    <message>
+        <source>x1 = %2 and x2 = %3 (a′ about the same)</source>
+        <translation>取 x1 = %2、x2 = %3（a′ 基本不变）</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1、%2</translation>
+    </message>
+    <message>
+        <source>%1 (but then %2)</source>
+        <translation>%1（但此时%2）</translation>
+    </message>
+    <message>
+        <source>gear %1 is undercut</source>
+        <translation>齿轮 %1 根切</translation>
+    </message>
+    <message>
         <source>raise x%1 to ≥ %2 (or give gear %1 more teeth)</source>
         <translation>将 x%1 增大到 ≥ %2（或增加齿轮 %1 的齿数）</translation>
     </message>
@@ -2761,10 +2813,6 @@
     <message>
         <source>%1 or %2</source>
         <translation>%1，或%2</translation>
-    </message>
-    <message>
-        <source>no small change of the shifts or of a′ helps: try other teeth</source>
-        <translation>微调变位系数或 a′ 均无帮助：请改变齿数</translation>
     </message>
     <message>
         <source>x1 and x2 given</source>
@@ -6013,6 +6061,14 @@
     <message>
         <source>an allowance of %1° gives one</source>
         <translation>许用压力角为 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>a base radius of %1 mm gives one</source>
+        <translation>基圆半径取 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>a centre distance of %1 mm gives one</source>
+        <translation>中心距取 %1 mm 时可以</translation>
     </message>
     <message>
         <source>a return allowance of %1° gives one</source>

@@ -27,6 +27,10 @@ ALLOWANCE_STEP_DEG = 0.1
 """The resolution of an allowed pressure angle a refusal names."""
 ROLLER_DIGITS = 4
 """Significant digits of a roller a refusal names (rounded down, and designed so)."""
+CHECKED_STEP_MM = 0.01
+"""The resolution of a checked cam's base radius or centre distance a refusal names."""
+CHECKED_GROWTH = 1.25
+"""Successive values tried, each this times the last, until the checked cam designs."""
 ROLLER_HALVINGS = 12
 """Bisection steps for the largest typed roller that works (a share 2⁻¹² ≈ 2.4e-4 of it)."""
 
@@ -151,3 +155,24 @@ def scaled_arm(inputs, smallest: Follower) -> float | None:
         lo, hi = (lo, mid) if fits(mid) else (mid, hi)
     arm = math.ceil(inputs.arm_mm * hi * (1.0 + 1e-9) / ARM_STEP_MM) * ARM_STEP_MM
     return arm if fits(arm / inputs.arm_mm) and arm <= MAX_ARM_MM else None
+
+
+def least_checked(design: Design, inputs, field: str, most: float) -> float | None:
+    """The least ``field`` (``base_mm`` or ``distance_mm``) above the refused one, a multiple
+    of CHECKED_STEP_MM up to ``most``, with which the checked cam of ``inputs`` designs: values
+    growing by CHECKED_GROWTH until one does, then :func:`least_on_grid` between it and the
+    last that did not; None if none up to ``most`` does.
+
+    Why the whole design and not the shortfall added: a larger r0 (or a) at the same a (or
+    r0) turns the arm's start ψ0, so R1, the curvature and the automatic roller all change."""
+    lo = getattr(inputs, field)
+
+    def fine(value: float) -> bool:
+        return works(design, replace(inputs, **{field: value}))
+    hi = lo
+    while hi < most:
+        hi = min(float(f"{math.ceil(hi * CHECKED_GROWTH / CHECKED_STEP_MM - 1e-9) * CHECKED_STEP_MM:.10g}"), most)
+        if fine(hi):
+            return least_on_grid(fine, lo, hi, CHECKED_STEP_MM)
+        lo = hi
+    return None

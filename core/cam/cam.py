@@ -159,7 +159,9 @@ def _solved(inputs: CamInputs, advise: bool) -> Cam:
     searches for what gives one (a probe of that search does not, :func:`_probe`)."""
     try:
         return _designed(inputs, advise)
-    except (RollerError, FitError):
+    except (RollerError, FitError) as exc:
+        if advise and inputs.base_mm is not None and exc.allowed.startswith(ROOM_REFUSALS):
+            raise _checked_advice(inputs, exc) from None
         if not advise or inputs.roller_mm is None or inputs.base_mm is not None:
             raise
         raise _typed_advice(inputs) from None
@@ -182,6 +184,24 @@ def _allowance_advice(inputs: CamInputs, error: DesignError) -> DesignError:
             return DesignError(name.removesuffix("_deg"), getattr(inputs, name),
                                f"{error.allowed}; {what.format(f'{least:.1f}')}")
     return error
+
+
+ROOM_REFUSALS = ("the profile's smallest radius r0 − r = ", "the profile's largest radius ")
+"""How ``build.require_buildable``'s refusals of a checked cam begin: the hub (its base
+radius named) and the pivot boss (its centre distance)."""
+
+
+def _checked_advice(inputs: CamInputs, error: DesignError) -> DesignError:
+    """A checked cam that does not clear its hub (or the pivot boss), with the least base
+    radius (centre distance) at the same centre distance (base radius) that gives a whole
+    cam, designed (``advice.least_checked``); else the refusal as it was."""
+    field, what = (("base_mm", "a base radius") if error.parameter == "base"
+                   else ("distance_mm", "a centre distance"))
+    most = inputs.distance_mm + inputs.arm_mm if field == "base_mm" else 4.0 * MAX_ARM_MM
+    least = advice.least_checked(_probe, inputs, field, most)
+    if least is None:
+        return error
+    return FitError(error.parameter, error.value, f"{error.allowed}; {what} of {least:.2f} mm gives one")
 
 
 def _probe(inputs: CamInputs) -> Cam:

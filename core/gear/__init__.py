@@ -2,8 +2,9 @@
 
 ``involute`` the involute function and its inverse (Newton) and the tooth-thickness forms;
 ``inputs`` the checked inputs; ``shift`` which shift factors (given, from a′, or the rule);
-``pair`` every length of the pair; ``checks`` undercut, tip, ε and interference, each with
-what to change; ``table`` the results as rows and JSON; ``file`` the design file's "gear";
+``pair`` every length of the pair; ``margins`` each check's verdict; ``advice`` and
+``amounts`` what to change and by how much; ``checks`` undercut, tip, ε and interference, each
+with what to change; ``table`` the results as rows and JSON; ``file`` the design file's "gear";
 ``profile`` the teeth as drawn (true involutes and the rack-generated fillet).
 
 Level: its own, beside the cam; it imports ``core.base.errors`` only.

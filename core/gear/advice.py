@@ -42,10 +42,15 @@ class Move:
     """One change that makes a check's margin grow: ``name`` of MOVES' values, ``sign`` +1
     (raise x_k, a larger a′, shift to gear 1) or −1; ``rate`` the margin's derivative along
     it per unit of shift factor (for a′: per unit of x1 + x2, i.e. m sin α / sin α′ mm of
-    a′), > 0, so that the rates of the changes compare."""
+    a′), > 0, so that the rates of the changes compare; ``to`` the values to type, as
+    printed, at which the check passes (``core.gear.amounts``: x1 or x2; a′ in mm; x1 and x2
+    for a transfer), empty when only the direction is known; ``breaks`` the checks (CHECKS'
+    names) that passed and fail at those values."""
     name: str
     sign: int
     rate: float
+    to: tuple[str, ...] = ()
+    breaks: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -132,8 +137,32 @@ def helpful_moves(pair: GearPair, check: str) -> tuple[Move, ...]:
     return tuple(sorted(moves, key=lambda m: -m.rate))
 
 
+BREAK_TEXT = {"undercut1": "gear 1 is undercut", "undercut2": "gear 2 is undercut",
+              "tip1": "the tip of gear 1 is too thin", "tip2": "the tip of gear 2 is too thin",
+              "contact": "ε is too small", "interference1": "the tip of gear 2 digs into the root of gear 1",
+              "interference2": "the tip of gear 1 digs into the root of gear 2"}
+"""A check that fails, as its own advice states the problem (a move's note: 'but then …')."""
+
+
 def move_text(move: Move) -> str:
-    """A move in words: 'raise x1', 'a smaller a′', 'x1 + δ and x2 − δ at the same a′'."""
+    """A move in words: 'raise x1 to ≥ 0.2130', 'lower a′ to ≤ 161.2500 mm', 'x1 = 0.4000 and
+    x2 = 0.1000 (a′ about the same)', with '(but then ε is too small)' when it breaks a check;
+    without ``to`` the direction alone ('raise x1', 'a smaller a′')."""
+    if not move.to:
+        return _direction_text(move)
+    if move.name in ("x1", "x2"):
+        text = f"{'raise' if move.sign > 0 else 'lower'} {move.name} to {'≥' if move.sign > 0 else '≤'} {move.to[0]}"
+    elif move.name == "centre":
+        text = f"{'raise' if move.sign > 0 else 'lower'} a′ to {'≥' if move.sign > 0 else '≤'} {move.to[0]} mm"
+    else:
+        text = f"x1 = {move.to[0]} and x2 = {move.to[1]} (a′ about the same)"
+    if move.breaks:
+        text += f" (but then {', '.join(BREAK_TEXT[b] for b in move.breaks)})"
+    return text
+
+
+def _direction_text(move: Move) -> str:
+    """A move with no amount: 'raise x1', 'a smaller a′', 'x1 + δ and x2 − δ at the same a′'."""
     if move.name in ("x1", "x2"):
         return f"{'raise' if move.sign > 0 else 'lower'} {move.name}"
     if move.name == "centre":

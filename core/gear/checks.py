@@ -1,19 +1,18 @@
-"""The checks a teacher makes of a gear pair, each with what to change when it fails.
-
-undercut (x ≥ x_min), tip thickness (sa ≥ limit · m), contact ratio (ε ≥ limit) and involute
-interference at each root: the mating tip must meet the flank no lower than where the rack's
-involute starts (the form point F, N F = r sin α − (h*a − x) m / sin α along the line of action;
-an undercut flank is judged from N itself, and the undercut check fails anyway).
-"""
+"""The checks a teacher makes of a gear pair (``margins``), each with what to change when it
+fails and by how much: the changes that help (``advice``, from the margin's derivative), each
+with the value to type at which the check passes (``amounts``), those that break no other
+check first."""
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
+from . import amounts
 from .advice import Move, helpful_moves, move_text
-from .pair import Gear, GearPair
+from .margins import CHECKS, Margin, check_margins
+from .pair import GearPair, probe_pair
 from .shift import bound_text
 
-CHECKS = ("undercut1", "undercut2", "tip1", "tip2", "contact", "interference1", "interference2")
+__all__ = ["CHECKS", "Check", "advised_moves", "pair_checks"]
 
 
 @dataclass(frozen=True)
@@ -21,7 +20,7 @@ class Check:
     """One check: ``name`` (of CHECKS), ``ok``, ``value`` and ``limit`` (the quantity and its
     bound, in the units of ``what``), ``what`` it measures, ``advice`` what to change (empty
     when it passes), ``moves`` the changes it names (``core.gear.advice``: each makes
-    value − limit grow), for the front ends to say in their language."""
+    value − limit grow, with the value to type), for the front ends to say in their language."""
     name: str
     ok: bool
     value: float
@@ -31,8 +30,9 @@ class Check:
     moves: tuple[Move, ...] = ()
 
 
-NO_MOVE = "no small change of the shifts or of a′ helps: try other teeth"
-"""The advice when no free change makes the margin grow (its derivative is 0 along each)."""
+NO_MOVE = "no change of one shift or of a′ makes it pass: try other teeth"
+"""The advice when no free change makes the check pass (none makes its margin grow, or each
+runs out of range or into a refusal first)."""
 
 
 def advice_text(problem: str, moves: tuple[Move, ...]) -> str:
@@ -40,44 +40,49 @@ def advice_text(problem: str, moves: tuple[Move, ...]) -> str:
     return f"{problem}: " + (" or ".join(move_text(m) for m in moves) if moves else NO_MOVE)
 
 
-def _undercut(k: int, gear: Gear) -> Check:
+def advised_moves(pair: GearPair, check: str, margins: dict[str, Margin] | None = None) -> tuple[Move, ...]:
+    """The helpful changes of ``check`` (``advice.helpful_moves``) that make it pass, each with
+    the least value to type (``amounts``) and the checks it then breaks; those that break none
+    first, then by rate. A change that runs out of range or into a refusal first is left out."""
+    before = check_margins(pair) if margins is None else margins
+    start = amounts.start_of(pair)
+    found = []
+    for move in helpful_moves(pair, check):
+        step = amounts.least_step(probe_pair, start, check, move.name, move.sign)
+        done = None if step is None else amounts.printed(probe_pair, start, check, move.name, move.sign, step)
+        if done is None:
+            continue
+        values, after = done
+        now = check_margins(after)
+        breaks = tuple(n for n in CHECKS if n != check and before[n].ok and not now[n].ok)
+        found.append(replace(move, to=values, breaks=breaks))
+    return tuple(sorted(found, key=lambda m: (bool(m.breaks), -m.rate)))
+
+
+def _check(pair: GearPair, name: str, margin: Margin, margins: dict[str, Margin], what: str,
+           problem: str) -> Check:
+    moves = () if margin.ok else advised_moves(pair, name, margins)
+    return Check(name, margin.ok, margin.value, margin.limit, what,
+                 "" if margin.ok else advice_text(problem, moves), moves)
+
+
+def _undercut(k: int, margin: Margin) -> Check:
     """x_k − x_kmin grows with x_k alone (its derivative is 1) and with z_k (x_min falls);
     only typed shifts can undercut (a′ and the rule share x1 + x2 out uncut)."""
-    ok = not gear.undercut
-    return Check(f"undercut{k}", ok, gear.shift, gear.least_shift, f"x{k} ≥ x{k}min",
-                 "" if ok else f"raise x{k} to ≥ {bound_text(gear.least_shift, True)} (or give gear {k} "
-                 "more teeth)", () if ok else (Move(f"x{k}", 1, 1.0),))
-
-
-def _tip(k: int, pair: GearPair, limit_mm: float) -> Check:
-    gear = pair.gear1 if k == 1 else pair.gear2
-    ok = gear.sa >= limit_mm
-    moves = () if ok else helpful_moves(pair, f"tip{k}")
-    return Check(f"tip{k}", ok, gear.sa, limit_mm, f"sa{k}, mm",
-                 "" if ok else advice_text(f"the tip of gear {k} is too thin", moves), moves)
-
-
-def _interference(k: int, pair: GearPair) -> Check:
-    """Gear k's root against the other's tip: the length from N_k to the contact point of
-    the mating tip must be ≥ max(N_k F_k, 0)."""
-    gear = pair.gear1 if k == 1 else pair.gear2
-    reach = pair.n1b2 if k == 1 else pair.n1n2 - pair.n1b1
-    need = max(gear.form_length, 0.0)
-    ok = reach >= need - 1e-9
-    other = 2 if k == 1 else 1
-    moves = () if ok else helpful_moves(pair, f"interference{k}")
-    return Check(f"interference{k}", ok, reach, need, f"N{k} to the tip of gear {other}, mm",
-                 "" if ok else advice_text(f"the tip of gear {other} digs into the root of gear {k}",
-                                           moves), moves)
+    ok = margin.ok
+    return Check(f"undercut{k}", ok, margin.value, margin.limit, f"x{k} ≥ x{k}min",
+                 "" if ok else f"raise x{k} to ≥ {bound_text(margin.limit, True)} (or give gear {k} "
+                 "more teeth)", () if ok else (Move(f"x{k}", 1, 1.0, (bound_text(margin.limit, True),)),))
 
 
 def pair_checks(pair: GearPair) -> tuple[Check, ...]:
     """Every check of ``pair``, in the order of CHECKS."""
-    p = pair.inputs
-    limit = p.tip_limit * p.module_mm
-    eps_ok = pair.contact_ratio >= p.contact_limit
-    moves = () if eps_ok else helpful_moves(pair, "contact")
-    contact = Check("contact", eps_ok, pair.contact_ratio, p.contact_limit, "ε",
-                    "" if eps_ok else advice_text("ε is too small", moves), moves)
-    return (_undercut(1, pair.gear1), _undercut(2, pair.gear2), _tip(1, pair, limit),
-            _tip(2, pair, limit), contact, _interference(1, pair), _interference(2, pair))
+    m = check_margins(pair)
+    return (_undercut(1, m["undercut1"]), _undercut(2, m["undercut2"]),
+            _check(pair, "tip1", m["tip1"], m, "sa1, mm", "the tip of gear 1 is too thin"),
+            _check(pair, "tip2", m["tip2"], m, "sa2, mm", "the tip of gear 2 is too thin"),
+            _check(pair, "contact", m["contact"], m, "ε", "ε is too small"),
+            _check(pair, "interference1", m["interference1"], m, "N1 to the tip of gear 2, mm",
+                   "the tip of gear 2 digs into the root of gear 1"),
+            _check(pair, "interference2", m["interference2"], m, "N2 to the tip of gear 1, mm",
+                   "the tip of gear 1 digs into the root of gear 2"))

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 
 from core.base.errors import DesignError
 from .inputs import GearPairInputs
+from . import amounts
 from .involute import least_shift, reference_thickness, thickness_at
-from .shift import Shifts, find_shifts, reference_centre
+from .shift import Shifts, bound_text, find_shifts, reference_centre
 
 
 @dataclass(frozen=True)
@@ -93,8 +94,16 @@ def design_pair(inputs: GearPairInputs) -> GearPair:
     return pair_of(p, shifts)
 
 
-def pair_of(p: GearPairInputs, shifts: Shifts) -> GearPair:
-    """The results of ``p`` meshed with ``shifts``."""
+def probe_pair(inputs: GearPairInputs) -> GearPair:
+    """:func:`design_pair` whose pointed tip is refused without a search for the value that
+    mends it: what that search (``amounts``) designs along a change."""
+    p = inputs.check()
+    return pair_of(p, find_shifts(p), advise=False)
+
+
+def pair_of(p: GearPairInputs, shifts: Shifts, advise: bool = True) -> GearPair:
+    """The results of ``p`` meshed with ``shifts``; a pointed tip refused, with the value
+    that mends it when ``advise``."""
     m = p.module_mm
     a = reference_centre(p)
     y = (shifts.centre_mm - a) / m
@@ -103,7 +112,7 @@ def pair_of(p: GearPairInputs, shifts: Shifts) -> GearPair:
     g2 = make_gear(p, p.z2, shifts.x2, dy, shifts.alpha_w)
     for k, gear in ((1, g1), (2, g2)):
         if not gear.sa > 0.0:
-            raise _pointed(k, gear, shifts)
+            raise _pointed(k, gear, shifts, p) if advise else DesignError(f"x{k}", gear.shift, "pointed")
     n1n2 = shifts.centre_mm * math.sin(shifts.alpha_w)
     n1b1 = math.sqrt(g1.ra ** 2 - g1.rb ** 2)
     n1b2 = n1n2 - math.sqrt(g2.ra ** 2 - g2.rb ** 2)
@@ -116,17 +125,31 @@ def pair_of(p: GearPairInputs, shifts: Shifts) -> GearPair:
                     contact_ratio=eps)
 
 
-def _pointed(k: int, gear: Gear, shifts: Shifts) -> DesignError:
-    """The error of a pointed tip, naming what set the shift: x_k given, the centre distance,
-    or (the rule) the teeth that needed it."""
+def _pointed(k: int, gear: Gear, shifts: Shifts, p: GearPairInputs) -> DesignError:
+    """The error of a pointed tip, naming what set the shift (x_k given, the centre distance,
+    or the teeth that the rule's shifts needed) and the value of it at which the tip is at
+    least the least tip thickness (``amounts``, each value designed before it is named)."""
     what = f"the tip of gear {k} pointed (x{k} = {gear.shift:.4f})"
+    start = amounts.Start(p, shifts.x1, shifts.x2, shifts.centre_mm)
+    tip = f"{p.tip_limit * p.module_mm:.6g}"
+    thick = f"for a tip at least {tip} mm thick"
     if shifts.mode == "given" and gear.ra <= gear.rb:     # Δy took its whole flank
         big = 1 if shifts.x1 >= shifts.x2 else 2
+        bound = amounts.tip_bound(probe_pair, start, k, f"x{big}")
+        amount = "" if bound is None else f"; give x{big} ≤ {bound}, {thick.replace('a tip', f'a tip of gear {k}')}"
         return DesignError(f"x{big}", max(shifts.x1, shifts.x2), "x1 + x2 is too large: the "
-                           f"addendum reduction leaves gear {k} no flank above its base circle")
+                           f"addendum reduction leaves gear {k} no flank above its base circle{amount}")
     if shifts.mode == "given":
-        return DesignError(f"x{k}", gear.shift, f"makes {what}: give a smaller shift")
+        bound = amounts.tip_bound(probe_pair, start, k, f"x{k}")
+        fix = (f"no smaller x{k} found that gives a tip at least {tip} mm thick; give gear {k} more teeth" if bound is None
+               else f"give x{k} ≤ {bound}, {thick}")
+        return DesignError(f"x{k}", gear.shift, f"makes {what}: {fix}")
     if shifts.mode == "centre":
-        return DesignError("centre", shifts.centre_mm, f"makes {what}: give a smaller centre distance")
-    return DesignError(f"z{k}", gear.teeth, f"too few teeth for the rule's shifts, which make {what}: "
-                       "give more teeth, or the shifts or the centre distance")
+        bound = amounts.tip_bound(probe_pair, start, k, "centre")
+        fix = (f"no smaller centre distance found that gives a tip at least {tip} mm thick; give gear {k} more teeth"
+               if bound is None else f"give a′ ≤ {bound} mm, {thick}")
+        return DesignError("centre", shifts.centre_mm, f"makes {what}: {fix}")
+    teeth = amounts.least_teeth(probe_pair, p, k, f"tip{k}")
+    fix = ("give more teeth, or the shifts or the centre distance" if teeth is None
+           else f"give z{k} ≥ {teeth}, {thick}")
+    return DesignError(f"z{k}", gear.teeth, f"too few teeth for the rule's shifts, which make {what}: {fix}")

@@ -109,6 +109,8 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"left blank, the roller is (\S+) mm on a base radius raised to (\S+) mm$",
      "left blank, the roller is %1 mm on a base radius raised to %2 mm"),
     (r"an allowance of (\S+)° gives one$", "an allowance of %1° gives one"),
+    (r"a base radius of (\S+) mm gives one$", "a base radius of %1 mm gives one"),
+    (r"a centre distance of (\S+) mm gives one$", "a centre distance of %1 mm gives one"),
     (r"a return allowance of (\S+)° gives one$", "a return allowance of %1° gives one"),
     (r"(\S+)° on the rise and the return give one$", "%1° on the rise and the return give one"),
 )
@@ -178,6 +180,9 @@ def templates() -> dict[str, str]:
         "left blank, the roller is %1 mm on a base radius raised to %2 mm":
             QCoreApplication.translate("messages", "left blank, the roller is %1 mm on a base radius raised to %2 mm"),
         "an allowance of %1° gives one": QCoreApplication.translate("messages", "an allowance of %1° gives one"),
+        "a base radius of %1 mm gives one": QCoreApplication.translate("messages", "a base radius of %1 mm gives one"),
+        "a centre distance of %1 mm gives one":
+            QCoreApplication.translate("messages", "a centre distance of %1 mm gives one"),
         "a return allowance of %1° gives one":
             QCoreApplication.translate("messages", "a return allowance of %1° gives one"),
         "%1° on the rise and the return give one":

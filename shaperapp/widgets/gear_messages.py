@@ -45,12 +45,29 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "must be more than a cos α = %1 mm (the working pressure angle would be 0)"),
     (r"needs x1 \+ x2 = (\S+), below the (\S+) that keeps both gears uncut; give ≥ (\S+) mm$",
      "needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm"),
+    (r"x1 \+ x2 is too large: the addendum reduction leaves gear (\d) no flank above its base circle; give "
+     r"(x\d) ≤ (\S+), for a tip of gear \d at least (\S+) mm thick$",
+     "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle; give %2 ≤ %3, "
+     "for a tip of gear %1 at least %4 mm thick"),
     (r"x1 \+ x2 is too large: the addendum reduction leaves gear (\d) no flank above its base circle$",
      "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle"),
-    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give a smaller shift$",
-     "makes the tip of gear %1 pointed (x = %2): give a smaller shift"),
-    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give a smaller centre distance$",
-     "makes the tip of gear %1 pointed (x = %2): give a smaller centre distance"),
+    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give (x\d) ≤ (\S+), for a tip at least (\S+) mm thick$",
+     "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick"),
+    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give a′ ≤ (\S+) mm, for a tip at least (\S+) mm "
+     r"thick$",
+     "makes the tip of gear %1 pointed (x = %2): give a′ ≤ %3 mm, for a tip at least %4 mm thick"),
+    (r"too few teeth for the rule's shifts, which make the tip of gear (\d) pointed \(x\d = (\S+)\): give "
+     r"(z\d) ≥ (\d+), for a tip at least (\S+) mm thick$",
+     "too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give %3 ≥ %4, for a "
+     "tip at least %5 mm thick"),
+    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): no smaller (x\d) found that gives a tip at least (\S+) mm thick; "
+     r"give gear \d more teeth$",
+     "makes the tip of gear %1 pointed (x = %2): no smaller %3 found that gives a tip at least %4 mm thick; give gear %1 "
+     "more teeth"),
+    (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): no smaller centre distance found that gives a tip at least (\S+) "
+     r"mm thick; give gear \d more teeth$",
+     "makes the tip of gear %1 pointed (x = %2): no smaller centre distance found that gives a tip at least %3 mm thick; "
+     "give gear %1 more teeth"),
     (r"too few teeth for the rule's shifts, which make the tip of gear (\d) pointed \(x\d = (\S+)\).*$",
      "too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give more "
      "teeth, or the shifts or the centre distance"),
@@ -72,13 +89,31 @@ def _templates() -> dict[str, str]:
             translate("GearMessages", "must be more than a cos α = %1 mm (the working pressure angle would be 0)"),
         "needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm":
             translate("GearMessages", "needs x1 + x2 = %1, below the %2 that keeps both gears uncut; give at least %3 mm"),
+        "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle; give %2 ≤ %3, "
+        "for a tip of gear %1 at least %4 mm thick":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its "
+                      "base circle; give %2 ≤ %3, for a tip of gear %1 at least %4 mm thick"),
+        "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick":
+            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least "
+                      "%5 mm thick"),
+        "makes the tip of gear %1 pointed (x = %2): give a′ ≤ %3 mm, for a tip at least %4 mm thick":
+            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give a′ ≤ %3 mm, for a tip at "
+                      "least %4 mm thick"),
+        "too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give %3 ≥ %4, for a "
+        "tip at least %5 mm thick":
+            translate("GearMessages", "too few teeth for the rule's shifts, which make the tip of gear %1 pointed "
+                      "(x = %2): give %3 ≥ %4, for a tip at least %5 mm thick"),
         "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle":
             translate("GearMessages", "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank "
                       "above its base circle"),
-        "makes the tip of gear %1 pointed (x = %2): give a smaller shift":
-            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give a smaller shift"),
-        "makes the tip of gear %1 pointed (x = %2): give a smaller centre distance":
-            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give a smaller centre distance"),
+        "makes the tip of gear %1 pointed (x = %2): no smaller %3 found that gives a tip at least %4 mm thick; give gear %1 "
+        "more teeth":
+            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): no smaller %3 found that gives a tip at least "
+                      "%4 mm thick; give gear %1 more teeth"),
+        "makes the tip of gear %1 pointed (x = %2): no smaller centre distance found that gives a tip at least %3 mm thick; "
+        "give gear %1 more teeth":
+            translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): no smaller centre distance found that "
+                      "gives a tip at least %3 mm thick; give gear %1 more teeth"),
         "too few teeth for the rule's shifts, which make the tip of gear %1 pointed (x = %2): give more "
         "teeth, or the shifts or the centre distance":
             translate("GearMessages", "too few teeth for the rule's shifts, which make the tip of gear %1 "
@@ -113,7 +148,10 @@ def check_name(check: Check) -> str:
 
 
 def move_words(move: Move) -> str:
-    """One change of ``core.gear.advice`` (``advice.move_text``) in the UI's language."""
+    """One change of ``core.gear.advice`` (``advice.move_text``) in the UI's language: with the
+    value to type and the checks it breaks, or (no value) the direction alone."""
+    if move.to:
+        return _amount_words(move)
     if move.name in ("x1", "x2"):
         text = (translate("GearMessages", "raise %1") if move.sign > 0
                 else translate("GearMessages", "lower %1"))
@@ -125,6 +163,38 @@ def move_words(move: Move) -> str:
             else translate("GearMessages", "x1 − δ and x2 + δ at the same a′"))
 
 
+def _amount_words(move: Move) -> str:
+    if move.name in ("x1", "x2"):
+        text = (translate("GearMessages", "raise %1 to ≥ %2") if move.sign > 0
+                else translate("GearMessages", "lower %1 to ≤ %2")).replace("%1", move.name)
+    elif move.name == "centre":
+        text = (translate("GearMessages", "raise a′ to ≥ %2 mm") if move.sign > 0
+                else translate("GearMessages", "lower a′ to ≤ %2 mm"))
+    else:
+        text = translate("GearMessages", "x1 = %2 and x2 = %3 (a′ about the same)").replace("%3", move.to[1])
+    text = text.replace("%2", move.to[0])
+    if not move.breaks:
+        return text
+    broken = problem_words(move.breaks[0])
+    for name in move.breaks[1:]:
+        broken = translate("GearMessages", "%1, %2").replace("%1", broken).replace("%2", problem_words(name))
+    return translate("GearMessages", "%1 (but then %2)").replace("%1", text).replace("%2", broken)
+
+
+def problem_words(name: str) -> str:
+    """What is wrong when check ``name`` fails (``advice.BREAK_TEXT``), in the UI's language."""
+    k = name[-1]
+    other = "2" if k == "1" else "1"
+    if name.startswith("undercut"):
+        return translate("GearMessages", "gear %1 is undercut").replace("%1", k)
+    if name.startswith("tip"):
+        return translate("GearMessages", "the tip of gear %1 is too thin").replace("%1", k)
+    if name == "contact":
+        return translate("GearMessages", "ε is too small")
+    return translate("GearMessages", "the tip of gear %2 digs into the root of gear %1").replace(
+        "%1", k).replace("%2", other)
+
+
 def check_advice(check: Check) -> str:
     """What to change when ``check`` fails ('' when it passes): core's advice, the same
     words in English (``Check.advice``), rebuilt from the changes it names (``check.moves``)
@@ -132,24 +202,17 @@ def check_advice(check: Check) -> str:
     if check.ok:
         return ""
     k = check.name[-1]
-    other = "2" if k == "1" else "1"
     if check.name.startswith("undercut"):
         return translate("GearMessages", "raise x%1 to ≥ %2 (or give gear %1 more teeth)").replace(
             "%1", k).replace("%2", bound_text(check.limit, True))
-    if check.name.startswith("tip"):
-        problem = translate("GearMessages", "the tip of gear %1 is too thin").replace("%1", k)
-    elif check.name == "contact":
-        problem = translate("GearMessages", "ε is too small")
-    else:
-        problem = translate("GearMessages", "the tip of gear %2 digs into the root of gear %1").replace(
-            "%1", k).replace("%2", other)
+    problem = problem_words(check.name)
     if check.moves:
         changes = move_words(check.moves[0])
         for move in check.moves[1:]:
             changes = translate("GearMessages", "%1 or %2").replace("%1", changes).replace(
                 "%2", move_words(move))
     else:
-        changes = translate("GearMessages", "no small change of the shifts or of a′ helps: try other teeth")
+        changes = translate("GearMessages", "no change of one shift or of a′ makes it pass: try other teeth")
     return translate("messages", "%1: %2").replace("%1", problem).replace("%2", changes)
 
 

@@ -48,6 +48,8 @@ def followed(inputs: CamInputs, error: DesignError) -> list[CamInputs]:
         left = dict(roller_mm=None)
     if m := re.search(r"an arm of (\S+) mm gives one", text):
         left["arm_mm"] = float(m.group(1))
+    if m := re.search(r"a (base radius|centre distance) of (\S+) mm gives one", text):      # test_cam_room_advice
+        left["base_mm" if m.group(1) == "base radius" else "distance_mm"] = float(m.group(2))
     return [replace(inputs, **left)] if left else []
 
 

@@ -12,7 +12,7 @@ import pytest
 from hypothesis import assume, given, settings, strategies as st
 
 from core.base.errors import DesignError
-from core.gear import GearPairInputs, design_pair
+from core.gear import GearPairInputs, design_pair, pair_checks
 from core.gear.involute import least_shift
 from core.gear.profile import flank
 from core.gear.shift import mesh_of_sum
@@ -169,10 +169,12 @@ def _refused(p: GearPairInputs) -> DesignError | None:
 @given(z1=st.integers(5, 60), z2=st.integers(5, 120), x1=st.floats(0.0, 5.0), x2=st.floats(0.0, 5.0),
        stretch=st.floats(1.0, 1.3), rule=st.booleans())
 def test_a_pointed_tip_is_mended_by_following_its_advice(z1, z2, x1, x2, stretch, rule):
-    """'give a smaller shift' (x_k lowered 0.01 at a time), 'give a smaller centre distance'
-    (a′ lowered m/100 at a time) and, for the rule's shifts, 'give more teeth' (z_k raised one
-    at a time): the tip of gear k stops being pointed before the value leaves its range.
-    (These name a direction, no amount; helped before.)"""
+    """A pointed tip's refusal names the value that mends it ('give x1 ≤ V', 'give a′ ≤ V mm',
+    'give z1 ≥ N'): typed, the tip is no longer pointed. Where it says no smaller shift or
+    centre distance helps, stepping that value down (0.01 of x, m/100 of a′) to the end of
+    its range finds the tip pointed all the way ('give gear k more teeth'); the rule's
+    'give more teeth' walks z_k up one at a time. (test_gear_amounts: each value passes the
+    tip check and is the least.)"""
     base = GearPairInputs(z1=z1, z2=z2, module_mm=4.0)
     given_shifts = GearPairInputs(z1=z1, z2=z2, module_mm=4.0, x1=x1, x2=x2)
     centre = GearPairInputs(z1=z1, z2=z2, module_mm=4.0,
@@ -183,18 +185,28 @@ def test_a_pointed_tip_is_mended_by_following_its_advice(z1, z2, x1, x2, stretch
             continue
         k = int(re.search(r"the tip of gear (\d) pointed", error.allowed).group(1))
         pointed = f"the tip of gear {k} pointed"
-        if error.allowed.endswith("give a smaller shift"):
-            field, step, stop = f"x{k}", -0.01, -5.0
-        elif error.allowed.endswith("give a smaller centre distance"):
-            field, step, stop = "centre_mm", -0.04, 2.0 * (z1 + z2) * math.cos(math.radians(20.0))
+        if m := re.search(r"give (x\d|a′|z\d) [≤≥] ([^,\s]+)", error.allowed):
+            field = {"a′": "centre_mm"}.get(m.group(1), m.group(1))
+            value = int(m.group(2)) if field.startswith("z") else float(m.group(2))
+            again = _refused(replace(p, **{field: value}))
+            assert again is None or pointed not in again.allowed, (error.allowed, again.allowed)
+            continue
+        if "no smaller x" in error.allowed:
+            field, step, stop, mended = f"x{k}", -0.01, -5.0, False
+        elif "no smaller centre distance" in error.allowed:
+            field, step, stop, mended = "centre_mm", -0.04, 2.0 * (z1 + z2) * math.cos(math.radians(20.0)), False
         else:
             assert error.allowed.endswith("give more teeth, or the shifts or the centre distance"), error.allowed
-            field, step, stop = f"z{k}", 1, 1000
+            field, step, stop, mended = f"z{k}", 1, 1000, True
         q = p
         while True:
             value = getattr(q, field) + step
+            if not mended and (value - stop) * (1 if step < 0 else -1) <= 0:
+                break                                   # to the end of the range: none was thick enough
             assert (value - stop) * (1 if step < 0 else -1) > 0, f"{field} left its range still pointed"
             q = replace(q, **{field: value})
             again = _refused(q)
-            if again is None or pointed not in again.allowed:
+            if mended and (again is None or pointed not in again.allowed):
                 break
+            if not mended and again is None:
+                assert not {c.name: c for c in pair_checks(design_pair(q))}[f"tip{k}"].ok, (error.allowed, value)

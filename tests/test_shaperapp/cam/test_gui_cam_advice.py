@@ -63,7 +63,10 @@ SHORT = CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "para
     CamInputs(arm_mm=120.0, program=Program(30.0, 40.0, 10.0, 40.0), pressure_deg=10.0,
               return_pressure_deg=5.0),                                             # … on both
     CamInputs(arm_mm=120.0, base_mm=229.0, distance_mm=110.0),                      # crosses: below …
-], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances", "crosses"])
+    CamInputs(arm_mm=120.0, base_mm=15.0, distance_mm=110.0),                       # the hub: a base radius of …
+    CamInputs(arm_mm=78.41, base_mm=34.65, distance_mm=58.83),                      # the boss: a centre distance of …
+], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances", "crosses",
+        "room-hub", "room-boss"])
 def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
     with pytest.raises(DesignError) as refused:
         design_cam(inputs)
@@ -75,3 +78,23 @@ def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
     words = set(re.findall(r"[A-Za-zρ][A-Za-z0-9ρ]*", text))
     assert words <= SYMBOLS, (words - SYMBOLS, text)
     assert set(re.findall(r"\d+(?:\.\d+)?", refused.value.allowed)) <= set(re.findall(r"\d+(?:\.\d+)?", text))
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_a_checked_cam_in_its_hub_is_mended_by_the_base_radius_the_form_shows(qtbot, tab, language):
+    """The form's default sheet checked on r0 = 15, a = 110 dips into the hub; the form names the
+    base radius that gives a cam (1de6048: by how much it falls short, no value), and typed as
+    shown it is taken."""
+    i18n.set_language(language)
+    try:
+        type_into(qtbot, tab, "base", "15")
+        type_into(qtbot, tab, "distance", "110")
+        assert tab.form.marked_fields() in (["base"], ["distance"])
+        shown_text = tab.form.error_label.text()
+        pattern = r"a base radius of (\S+) mm gives one" if language == "en" else r"基圆半径取 (\S+) mm 时可以"
+        r0 = re.search(pattern, shown_text).group(1)
+        type_into(qtbot, tab, "base", r0)
+        assert tab.form.marked_fields() == [], tab.form.error_label.text()
+        assert tab.cam_model.cam.base_radius_mm == float(r0)
+    finally:
+        i18n.set_language("en")

@@ -98,11 +98,13 @@ def test_a_bad_hub_marks_the_hub(qtbot, tab, text):
 
 def test_every_fit_message_has_a_translatable_template():
     """Each way a cam does not fit matches one of the messages' templates, so the Chinese
-    UI never shows core's English sentence."""
+    UI never shows core's English sentence: its statement, and the advice after "; " (a
+    checked cam's base radius or centre distance that gives one) by the advice's own."""
     import re
 
     from core.cam import CamInputs, Program, design_cam
     from core.base.errors import DesignError
+    from shaperapp.widgets.cam_messages import ADVICE_PATTERNS
     from shaperapp.widgets.messages import _PATTERNS
     attempts = [dict(base_mm=17.0, distance_mm=110.0), dict(base_mm=60.0, distance_mm=100.0, boss_mm=40.0),
                 dict(base_mm=80.0, distance_mm=100.0, boss_mm=30.0),
@@ -111,7 +113,9 @@ def test_every_fit_message_has_a_translatable_template():
     for attempt in attempts:
         with pytest.raises(DesignError) as info:
             design_cam(CamInputs(arm_mm=120.0, **attempt))
-        assert any(re.match(p, info.value.allowed) for p, _ in _PATTERNS), info.value.allowed
+        statement, *advice = info.value.allowed.split("; a ")
+        assert any(re.match(p, statement) for p, _ in _PATTERNS), info.value.allowed
+        assert all(any(re.match(p, "a " + a) for p, _ in ADVICE_PATTERNS) for a in advice), info.value.allowed
 
 
 def test_the_chinese_report_says_the_raise_and_the_room_in_chinese(qapp):
@@ -159,7 +163,8 @@ def test_a_chinese_report_of_a_cam_that_does_not_fit_says_why_in_chinese(qapp):
         i18n.set_language("en")
     text = blocks[-1].html
     assert "基圆半径" in text and "1.5 mm" in text and "轮毂" in text
-    assert re.findall(r"[A-Za-z]{2,}", text) == ["mm", "mm", "mm"]
+    assert "基圆半径取 18.50 mm 时可以" in text          # the advice's r0, as core names it
+    assert re.findall(r"[A-Za-z]{2,}", text) == ["mm"] * 4
 
 
 # the least roller (30 November)

@@ -124,8 +124,9 @@ def test_each_failing_check_says_what_to_change(printed):
     failing = [c.name for c in pair_checks(design_pair(RULE)) if not c.ok]
     assert failing == ["contact"]
     flat = re.sub(r"\s+", " ", section)
-    # the advice names what helps in the rule's mode (core.gear.advice): a smaller a′ first
-    words = {"en": ("fails", "ε is too small: a smaller a′"), "zh_CN": ("不合格", "ε 过小：减小 a′")}
+    # the advice names what helps in the rule's mode, with the a′ to type (core.gear.amounts,
+    # whose value test_gear_amounts follows); 1de6048 said "a smaller a′", by no amount
+    words = {"en": ("fails", "ε is too small: lower a′ to ≤ "), "zh_CN": ("不合格", "ε 过小：将 a′ 减小到 ≤ ")}
     assert flat.count(words[language][0]) == 1 and words[language][1] in flat
 
 
