@@ -2,20 +2,42 @@
 centre), and the least rod that keeps clear of it.
 
 Below :mod:`core.linkage.designs`, whose dead-centre rule is :func:`jams` and whose refusal
-names :func:`least_rod`. It reads a :class:`~core.linkage.designs.Designs` (or anything with
-its fields), never builds one, so it does not import that module.
+names :func:`least_rod`. It reads a :class:`~core.linkage.designs.Designs` (the fields
+:class:`Designs` here names), never builds one, so it does not import that module.
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import numpy as np
 
 from core.base.arrays import sorted_unique
 from .extrema import grid_maximum, grid_minimum
 
-if TYPE_CHECKING:
-    from .designs import Designs
+
+class Designs(Protocol):
+    """What this module reads of :class:`core.linkage.designs.Designs` (the rod variant's
+    arrays, mm and rad), stated here so that it imports nothing above it: ``designs``
+    imports this module, and an import back, even for type checking only, is a cycle."""
+
+    crank: np.ndarray
+    frame: np.ndarray
+    lever: np.ndarray
+    guide: np.ndarray
+    rod: np.ndarray
+
+    @property
+    def theta(self) -> np.ndarray: ...
+
+    @property
+    def rod_sign(self) -> float: ...
+
+    def take(self, which: np.ndarray) -> "Designs": ...
+
+    def lengths(self) -> list[np.ndarray]: ...
+
+    def with_lengths(self, lengths: list[np.ndarray], theta: np.ndarray | None = None) -> "Designs": ...
+
 
 # The rod must keep a horizontal reach |Cx − Bx| and a drive margin of this fraction of
 # L4 (a pressure angle below 89.94°), so forces and accelerations stay finite and exact.
