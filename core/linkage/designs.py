@@ -10,6 +10,7 @@ first one it fails, as a single design's validation raises at the first.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Callable, Sequence
@@ -236,6 +237,9 @@ def _assemble(verdict: Verdict, crank, frame, lever, theta, extra, rod_side: str
     """The rod and guide rules, the designs, and (with ``validate``) the design rules."""
     guide, rod, rod_ratio = extra
     rod_length = _rod_length(verdict, rod, rod_ratio, lever)
+    if rod_ratio is not None:       # the rod's rules check L4 in mm: each refusal in L4/L3
+        ratios = Flat(rod_ratio, verdict.failed.shape)
+        verdict.blame = lambda error, index: ratio_error(error, float(ratios[index]))
     designs = Designs(crank, frame, lever, _guide(verdict, guide, lever, theta), rod_length,
                       rod_side)
     if validate:
@@ -375,3 +379,20 @@ def _dead_centre_text(least: float) -> str:
                 f"{round_text(least)} mm or move the guide line")
     return ("the rod passes a dead-centre position against the lever at every length up to "
             f"{MAX_LENGTH_MM:g} mm; move the guide line")
+
+
+def ratio_error(error: DesignError, ratio: float) -> DesignError:
+    """A refusal of the rod L4 (mm) restated for a rod given as ``ratio`` = L4/L3: named
+    ``rod_ratio``, its value the ratio, its bound in mm divided by L3 and rounded up to 4
+    digits, so that typing it passes (the reach's "must be > X mm", the dead centre's
+    "lengthen it to at least X mm"). The GUI's form, the command line (``--rod-ratio``), a
+    design file's ``rod_ratio`` and a sweep's reasons all get it: the command line named
+    ``--rod`` with a length in mm nobody had typed."""
+    if error.parameter != "rod" or not isinstance(error.value, float) or not error.value > 0 or not ratio > 0:
+        return error
+    lever = error.value / ratio
+    scaled = lambda m: round_text(float(m.group(2)) / lever, 4)  # noqa: E731
+    allowed = re.sub(r"^(must be > )(\S+) mm ", lambda m: f"{m.group(1)}{scaled(m)} ", error.allowed)
+    allowed = re.sub(r"(; )lengthen it to at least (\S+) mm ",
+                     lambda m: f"{m.group(1)}raise L4/L3 to at least {scaled(m)} ", allowed)
+    return DesignError("rod_ratio", ratio, allowed)

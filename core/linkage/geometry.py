@@ -18,7 +18,7 @@ import numpy as np
 
 from .designs import (GUIDE_RULES, MAX_CRANK_RATIO, MAX_LENGTH_MM, MAX_ROD_RATIO, MAX_TIME_RATIO,  # noqa: F401
                       MIN_LENGTH_MM, ROD_SIDES, Designs, check_designs, dimensions_many,
-                      synthesize_many)
+                      ratio_error, synthesize_many)
 from .drive import ROD_MARGIN, drive_margin  # noqa: F401
 from .designs import _guide, _guide_number
 from core.base.errors import DesignError, require_range
@@ -132,7 +132,12 @@ def _one_design(many, lengths, guide, rod, rod_ratio, rod_side) -> Design:
                             rod_ratio=_optional("rod_ratio", rod_ratio), rod_side=rod_side,
                             validate=False)
     verdict.raise_first()
-    return _design(designs)
+    try:
+        return _design(designs)         # validated as a Design: the rules of check_designs
+    except DesignError as exc:
+        if rod_ratio is None:
+            raise
+        raise ratio_error(exc, float(rod_ratio)) from None
 
 
 def _one(name: str, value: object) -> np.ndarray:

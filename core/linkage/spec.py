@@ -6,13 +6,11 @@ into a :class:`~core.linkage.geometry.Design` with :meth:`Spec.design`.
 """
 from __future__ import annotations
 
-import re
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
 from core.base.errors import DesignError, require_range
 from .geometry import MAX_ROD_RATIO, MAX_TIME_RATIO, Design, from_dimensions, require_length, synthesize
-from .verdict import round_text
 
 MODES = ("synthesis", "dimensions")
 VARIANTS = ("block", "rod")
@@ -106,13 +104,7 @@ class Spec:
 
     def design(self) -> Design:
         """Synthesize or assemble the design; raises DesignError on bad input, naming the
-        input as it was given (:func:`typed_error`: a rod given as L4/L3 in L4/L3)."""
-        try:
-            return self._design()
-        except DesignError as exc:
-            raise typed_error(exc, self) from None
-
-    def _design(self) -> Design:
+        input as it was given (a rod given as L4/L3 in L4/L3: ``designs.ratio_error``)."""
         self._check_choices()
         guide = self.guide_height if self.guide_rule == "height" else self.guide_rule
         rod = ratio = None
@@ -174,19 +166,3 @@ def _nudged(base: Spec, carried: dict[str, float]):
         for f1 in factors:
             yield replace(base, **{names[0]: carried[names[0]] * f0, names[1]: carried[names[1]] * f1})
 
-
-def typed_error(error: DesignError, spec: Spec) -> DesignError:
-    """Name the input the user typed: a rod given as L4/L3 is blamed in L4/L3, not mm, its
-    bound in mm divided by L3 and rounded up to 4 digits, so that typing it passes (the
-    reach's "must be > X mm", the dead centre's "lengthen it to at least X mm"). The GUI's
-    form, the command line (``--rod-ratio``) and a design file's ``rod_ratio`` all get it:
-    before, the command line named ``--rod`` with a length in mm nobody had typed."""
-    if (error.parameter == "rod" and spec.variant == "rod" and spec.rod_input == "ratio"
-            and isinstance(error.value, float) and isinstance(spec.rod_ratio, float) and error.value > 0):
-        lever = error.value / spec.rod_ratio
-        ratio = lambda m: round_text(float(m.group(2)) / lever, 4)  # noqa: E731
-        allowed = re.sub(r"^(must be > )(\S+) mm ", lambda m: f"{m.group(1)}{ratio(m)} ", error.allowed)
-        allowed = re.sub(r"(; )lengthen it to at least (\S+) mm ",
-                         lambda m: f"{m.group(1)}raise L4/L3 to at least {ratio(m)} ", allowed)
-        return DesignError("rod_ratio", spec.rod_ratio, allowed)
-    return error

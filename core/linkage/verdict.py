@@ -44,6 +44,9 @@ class Verdict:
 
     failed: np.ndarray
     rules: list[_Rule] = field(default_factory=list)
+    blame: Callable[[DesignError, int], DesignError] | None = None
+    """Restates a rule's error (of the design at a flat index) in the input the user gave,
+    where a rule checks a value derived from it: a rod given as L4/L3 (``designs``)."""
 
     @property
     def ok(self) -> np.ndarray:
@@ -64,7 +67,8 @@ class Verdict:
         value = rule.values(self.failed.shape)[index]
         value = value.item() if isinstance(value, np.generic) else value
         allowed = rule.allowed if isinstance(rule.allowed, str) else rule.allowed(index)
-        return DesignError(rule.parameter, value, allowed)
+        error = DesignError(rule.parameter, value, allowed)
+        return error if self.blame is None else self.blame(error, index)
 
     def raise_first(self) -> None:
         """Raise the error of the first invalid design, if any."""
