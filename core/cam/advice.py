@@ -53,8 +53,10 @@ def least_on_grid(fine: Callable[[float], bool], lo: float, hi: float, step: flo
     one is not known to fail otherwise."""
     while hi - lo > step * (1.0 + 1e-9):
         mid = float(f"{math.ceil(0.5 * (lo + hi) / step - 1e-9) * step:.10g}")    # as it prints
-        if mid >= hi:
-            break
+        if mid >= hi:       # the midpoint rounds up to hi: the grid value below hi, if above lo
+            mid = float(f"{(round(hi / step) - 1) * step:.10g}")      # (r0 18.4934 -> 18.50, not 18.51)
+            if mid <= lo:
+                break
         lo, hi = (lo, mid) if fine(mid) else (mid, hi)
     return hi
 

@@ -74,5 +74,6 @@ def test_the_named_value_gives_a_cam_and_is_the_least(arm, base, distance):
 @given(arm=st.floats(60.0, 200.0), distance=st.floats(0.5, 1.5), base=st.floats(0.05, 0.6))
 @example(arm=120.0, distance=110.0 / 120.0, base=15.0 / 110.0)
 @example(arm=61.0, distance=0.859375, base=0.59375)        # a change of 0.068 mm (CI's draw)
+@example(arm=60.0, distance=0.998046875, base=0.3088265398730489)   # r0 18.4934: 18.50 works, 18.51 was named
 def test_over_checked_cams_the_hub_and_boss_advice_works(arm, distance, base):
     assert_followed(CamInputs(arm_mm=arm, base_mm=base * distance * arm, distance_mm=distance * arm), drawn=True)
