@@ -391,6 +391,10 @@ def ratio_error(error: DesignError, ratio: float) -> DesignError:
     if error.parameter != "rod" or not isinstance(error.value, float) or not error.value > 0 or not ratio > 0:
         return error
     lever = error.value / ratio
+    span = re.match(r"^must be ≥ (\S+) and ≤ (\S+) mm$", error.allowed)
+    if span:        # the rod's length range (check_length), as ratios of this lever, inward
+        low, high = (float(v) / lever for v in span.groups())
+        return DesignError("rod_ratio", ratio, f"must be ≥ {round_text(low, 4)} and ≤ {round_text(high, 4, down=True)}")
     scaled = lambda m: round_text(float(m.group(2)) / lever, 4)  # noqa: E731
     allowed = re.sub(r"^(must be > )(\S+) mm ", lambda m: f"{m.group(1)}{scaled(m)} ", error.allowed)
     allowed = re.sub(r"(; )lengthen it to at least (\S+) mm ",

@@ -358,3 +358,20 @@ def test_a_rod_given_as_a_ratio_is_refused_in_the_ratio_on_the_command_line(guid
         assert bound > ratio, line
         ratio = math.nextafter(bound, math.inf) if m.group(1) == "must be >" else bound
     pytest.fail(f"still refused after three refusals followed: {line}")
+
+
+def test_a_rod_ratio_too_long_for_the_rods_length_range_is_told_the_ratio():
+    """L4 = 5 · 30 000 mm passes no length check (≤ 100 000 mm): the refusal of a rod given as
+    L4/L3 read "--rod-ratio: must be ≥ 0.001 and ≤ 100000 mm (got 5)", a length bound on a
+    ratio; it is told the ratios of that range for this lever, rounded inward, and the high
+    end typed as printed passes the length rule."""
+    from cli_runner import shaper_in_process
+    base = ["analyze", "--dims", "100,300,30000", "--guide", 29000]
+    status, _, err = shaper_in_process(*base, "--rod-ratio", 5)
+    line = err.strip().splitlines()[-1]
+    m = re.match(r"shaper: error: --rod-ratio: must be ≥ (\S+) and ≤ (\S+) \(got 5\)$", line)
+    assert status == 2 and m is not None, line
+    high = float(m.group(2))
+    assert high * 30000.0 <= 100_000.0 < (high + 0.001) * 30000.0
+    status, _, err = shaper_in_process(*base, "--rod-ratio", high)
+    assert status == 0 or "must be ≥" not in err, err
