@@ -224,8 +224,8 @@ def _swing_advice(inputs: CamInputs, error: DesignError) -> DesignError:
     arm = advice.longer_arm(_probe, inputs)
     if arm is None:
         return error
-    return FitError("arm", inputs.arm_mm, f"{error.allowed}; no swing down to {MIN_SWING_DEG:g}° gives one, "
-                    f"an arm of {arm:.1f} mm does")
+    return FitError("arm", inputs.arm_mm, f"{error.allowed}; an arm of {arm:.1f} mm gives one "
+                    f"(no swing down to {MIN_SWING_DEG:g}° does)")
 
 
 def _probe(inputs: CamInputs) -> Cam:
