@@ -21,6 +21,7 @@ from core.cam.laws import LAWS
 
 from sweeps import examples
 from test_cam_build import SHEET_ARGS, _assert_buildable
+from test_cam_room_advice import refused
 
 STATEMENTS = ("no cam within the allowances clears the pivot boss;", "the profile's smallest radius r0 − r")
 FORM = dict(arm_mm=120.0, pressure_deg=40.0, return_pressure_deg=70.0)
@@ -39,14 +40,6 @@ def typed(inputs: CamInputs, name: str, value: float) -> CamInputs:
     if name == "swing":
         return replace(inputs, program=replace(inputs.program, swing_deg=value))
     return replace(inputs, arm_mm=value)
-
-
-def refused(inputs: CamInputs) -> bool:
-    try:
-        design_cam(inputs)
-    except DesignError:
-        return True
-    return False
 
 
 def assert_followed(inputs: CamInputs, drawn: bool = False) -> str:
