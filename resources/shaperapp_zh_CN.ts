@@ -6079,6 +6079,14 @@
         <translation>推程和回程许用压力角都为 %1° 时可以</translation>
     </message>
     <message>
+        <source>a swing of %1° gives one</source>
+        <translation>最大摆角取 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>an arm of %1 mm gives one (no swing down to %2° does)</source>
+        <translation>摆臂长 %1 mm 时可以（最大摆角减到 %2° 也不行）</translation>
+    </message>
+    <message>
         <source>must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam</source>
         <translation>须在 |a − l| = %1 mm 与 a + l = %2 mm 之间，摆臂才能接触凸轮</translation>
     </message>

@@ -19,6 +19,7 @@ from .build import MIN_ROLLER_MM, pitch_max_radius
 from .defaults import MAX_ARM_MM
 from .extremes import min_convex_radius
 from .follower import Follower
+from .laws import MIN_SWING_DEG
 from .synthesis import largest_roller
 
 ARM_STEP_MM = 0.1
@@ -31,6 +32,8 @@ CHECKED_STEP_MM = 0.01
 """The resolution of a checked cam's base radius or centre distance a refusal names."""
 CHECKED_GROWTH = 1.25
 """Successive values tried, each this times the last, until the checked cam designs."""
+SWING_STEP_DEG = 0.1
+"""The resolution of the swing a refusal names."""
 ROLLER_HALVINGS = 12
 """Bisection steps for the largest typed roller that works (a share 2⁻¹² ≈ 2.4e-4 of it)."""
 
@@ -96,11 +99,12 @@ def arm_for_roller(design: Design, inputs, smallest: Follower) -> float | None:
     return shortest_arm(design, inputs, top)
 
 
-def arm_for_typed_roller(design: Design, inputs) -> float | None:
-    """An arm whose cam takes the typed roller of ``inputs``: the first of arms doubling
-    from this one that works, then :func:`shortest_arm` below it; None if none up to
-    MAX_ARM_MM does. (The smallest cam scales with the arm, the roller does not: a longer
-    arm's pitch curve is rounder.)"""
+def longer_arm(design: Design, inputs) -> float | None:
+    """An arm whose cam works where that of ``inputs`` is refused (a typed roller too large
+    for it, a pivot boss it cannot clear): the first of arms doubling from this one that
+    works, then :func:`shortest_arm` below it; None if none up to MAX_ARM_MM does. (The
+    smallest cam scales with the arm, the roller, the hub and the boss do not: a longer
+    arm's pitch curve is rounder and its cam reaches farther from the boss.)"""
     top = inputs.arm_mm
     while top < MAX_ARM_MM:
         top = min(2.0 * top, MAX_ARM_MM)
@@ -108,6 +112,23 @@ def arm_for_typed_roller(design: Design, inputs) -> float | None:
         if top <= MAX_ARM_MM and works(design, replace(inputs, arm_mm=top)):
             return shortest_arm(design, inputs, top)
     return None
+
+
+def largest_swing(design: Design, inputs) -> float | None:
+    """The largest swing ψmax below the refused one of ``inputs``, a multiple of
+    SWING_STEP_DEG, with which the cam designs: :func:`least_on_grid` on the negated swing
+    between the refused one and MIN_SWING_DEG; None if MIN_SWING_DEG does not design.
+
+    Why designs and not a closed form: a smaller swing shrinks the smallest cam and its R1
+    together, and the raise that clears the hub and the boss finds other centres; the
+    swings that work were an interval from MIN_SWING_DEG up in every refused cam tried
+    (25 random ones, every 0.5°), which the bisection assumes."""
+    def fine(swing: float) -> bool:
+        return works(design, replace(inputs, program=replace(inputs.program, swing_deg=swing)))
+    if not fine(MIN_SWING_DEG):
+        return None
+    return -least_on_grid(lambda negated: fine(-negated), -inputs.program.swing_deg, -MIN_SWING_DEG,
+                          SWING_STEP_DEG)
 
 
 def largest_typed_roller(design: Design, inputs, bound_mm: float) -> str | None:

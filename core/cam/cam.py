@@ -16,7 +16,7 @@ from . import advice
 from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, MAX_ARM_MM, MIN_ARM_MM, RETURN_PRESSURE_DEG
 from .extremes import min_convex_radius, pressure_peaks
 from .follower import Follower, check_follower
-from .laws import Program
+from .laws import MIN_SWING_DEG, Program
 from .build import (MIN_ROLLER_MM, FitError, Room, pitch_max_radius, raised, require_buildable,
                     roller_for_hub, shortfalls)
 from .roller_range import no_roller_text, refusal_text, roller_range, too_large_text
@@ -162,6 +162,9 @@ def _solved(inputs: CamInputs, advise: bool) -> Cam:
     except (RollerError, FitError) as exc:
         if advise and inputs.base_mm is not None and exc.allowed.startswith(ROOM_REFUSALS):
             raise _checked_advice(inputs, exc) from None
+        if advise and inputs.roller_mm is None and inputs.base_mm is None and \
+                exc.allowed.startswith(SYNTHESIZED_ROOM_REFUSALS):
+            raise _swing_advice(inputs, exc) from None
         if not advise or inputs.roller_mm is None or inputs.base_mm is not None:
             raise
         raise _typed_advice(inputs) from None
@@ -202,6 +205,27 @@ def _checked_advice(inputs: CamInputs, error: DesignError) -> DesignError:
     if least is None:
         return error
     return FitError(error.parameter, error.value, f"{error.allowed}; {what} of {least:.2f} mm gives one")
+
+
+SYNTHESIZED_ROOM_REFUSALS = ("no cam within the allowances clears the pivot boss;", ROOM_REFUSALS[0])
+"""How ``build.require_buildable``'s refusals of a synthesized cam begin: no raise clears the
+pivot boss (the swing named), or the hub while the smallest cam clears the boss (the hub)."""
+
+
+def _swing_advice(inputs: CamInputs, error: DesignError) -> DesignError:
+    """A synthesized cam that no raise clears of the pivot boss (or the hub), with the largest
+    swing that gives a whole cam (``advice.largest_swing``), else, when even the least swing
+    does not, the shortest arm that does (``advice.longer_arm``), each designed; else the
+    refusal as it was. The swing first: the refusal names it, and it is the input that
+    pushes the roller's outer position toward the pivot."""
+    swing = advice.largest_swing(_probe, inputs)
+    if swing is not None:
+        return FitError("swing", inputs.program.swing_deg, f"{error.allowed}; a swing of {swing:.1f}° gives one")
+    arm = advice.longer_arm(_probe, inputs)
+    if arm is None:
+        return error
+    return FitError("arm", inputs.arm_mm, f"{error.allowed}; an arm of {arm:.1f} mm gives one "
+                    f"(no swing down to {MIN_SWING_DEG:g}° does)")
 
 
 def _probe(inputs: CamInputs) -> Cam:
@@ -266,7 +290,7 @@ def _typed_advice(inputs: CamInputs) -> DesignError:
         return DesignError("roller", inputs.roller_mm, "no roller up to the smallest cam's largest gives a cam "
                            f"within the allowances that clears the hub and the pivot boss; {blank}")
     none = f"no cam within the allowances takes a roller of {inputs.roller_mm:.4g} mm and clears the hub and the pivot boss"
-    arm = advice.arm_for_typed_roller(_probe, inputs)
+    arm = advice.longer_arm(_probe, inputs)
     if arm is None:
         return FitError("swing", inputs.program.swing_deg, f"{none}, with any arm up to {MAX_ARM_MM:g} mm")
     return FitError("arm", inputs.arm_mm, f"{none}; an arm of {arm:.1f} mm gives one")

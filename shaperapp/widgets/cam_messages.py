@@ -113,6 +113,9 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"a centre distance of (\S+) mm gives one$", "a centre distance of %1 mm gives one"),
     (r"a return allowance of (\S+)° gives one$", "a return allowance of %1° gives one"),
     (r"(\S+)° on the rise and the return give one$", "%1° on the rise and the return give one"),
+    (r"a swing of (\S+)° gives one$", "a swing of %1° gives one"),
+    (r"an arm of (\S+) mm gives one \(no swing down to (\S+)° does\)$",
+     "an arm of %1 mm gives one (no swing down to %2° does)"),
 )
 
 
@@ -187,4 +190,7 @@ def templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "a return allowance of %1° gives one"),
         "%1° on the rise and the return give one":
             QCoreApplication.translate("messages", "%1° on the rise and the return give one"),
+        "a swing of %1° gives one": QCoreApplication.translate("messages", "a swing of %1° gives one"),
+        "an arm of %1 mm gives one (no swing down to %2° does)":
+            QCoreApplication.translate("messages", "an arm of %1 mm gives one (no swing down to %2° does)"),
     }

@@ -15,7 +15,7 @@ from shaperapp.widgets.messages import describe
 
 from test_gui_cam_build import tab, type_into  # noqa: F401  (the tab fixture)
 
-SYMBOLS = {"mm", "r0", "R1", "a", "l", "r", "ρmin"}
+SYMBOLS = {"mm", "r0", "R1", "a", "l", "r", "ρmin", "ψmax"}     # ψmax: the swing field's name
 
 
 def test_a_checked_cams_roller_bound_typed_into_the_form_is_taken(qtbot, tab):
@@ -65,8 +65,12 @@ SHORT = CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "para
     CamInputs(arm_mm=120.0, base_mm=229.0, distance_mm=110.0),                      # crosses: below …
     CamInputs(arm_mm=120.0, base_mm=15.0, distance_mm=110.0),                       # the hub: a base radius of …
     CamInputs(arm_mm=78.41, base_mm=34.65, distance_mm=58.83),                      # the boss: a centre distance of …
+    CamInputs(arm_mm=120.0, boss_mm=90.0),                                          # the swing: a swing of …
+    CamInputs(arm_mm=120.0, boss_mm=130.0),                                         # … an arm of … (no swing …)
+    CamInputs(arm_mm=65.0, program=Program(13.0, 130.0, 8.0, 60.0, "sine", "cosine"), pressure_deg=27.5,
+              hub_mm=100.0, boss_mm=35.0, clearance_mm=5.0),                        # the hub: a swing of …
 ], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances", "crosses",
-        "room-hub", "room-boss"])
+        "room-hub", "room-boss", "synthesized-boss", "synthesized-boss-arm", "synthesized-hub"])
 def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
     with pytest.raises(DesignError) as refused:
         design_cam(inputs)
@@ -75,7 +79,7 @@ def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
         text = describe(refused.value)
     finally:
         i18n.set_language("en")
-    words = set(re.findall(r"[A-Za-zρ][A-Za-z0-9ρ]*", text))
+    words = set(re.findall(r"[A-Za-zρψ][A-Za-z0-9ρψ]*", text))
     assert words <= SYMBOLS, (words - SYMBOLS, text)
     assert set(re.findall(r"\d+(?:\.\d+)?", refused.value.allowed)) <= set(re.findall(r"\d+(?:\.\d+)?", text))
 
@@ -96,5 +100,24 @@ def test_a_checked_cam_in_its_hub_is_mended_by_the_base_radius_the_form_shows(qt
         type_into(qtbot, tab, "base", r0)
         assert tab.form.marked_fields() == [], tab.form.error_label.text()
         assert tab.cam_model.cam.base_radius_mm == float(r0)
+    finally:
+        i18n.set_language("en")
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_a_synthesized_cam_past_the_pivot_boss_is_mended_by_the_swing_the_form_shows(qtbot, tab, language):
+    """The form's default sheet with a 90 mm pivot boss: no cam within the allowances clears
+    it; the form marks the swing and names the swing that gives a cam (21a3424: by how much
+    the smallest cam reaches past, no value), and typed as shown it is taken."""
+    i18n.set_language(language)
+    try:
+        type_into(qtbot, tab, "boss", "90")
+        assert tab.form.marked_fields() in (["swing"], ["boss"])       # core's field, or the one just typed
+        shown_text = tab.form.error_label.text()
+        pattern = r"a swing of (\S+)° gives one" if language == "en" else r"最大摆角取 (\S+)° 时可以"
+        swing = re.search(pattern, shown_text).group(1)
+        type_into(qtbot, tab, "swing", swing)
+        assert tab.form.marked_fields() == [], tab.form.error_label.text()
+        assert tab.cam_model.cam.program.swing_deg == float(swing) and tab.cam_model.cam.inputs.boss_mm == 90.0
     finally:
         i18n.set_language("en")
