@@ -14,12 +14,16 @@ from core.base.errors import DesignError
 from core.gear import GearPairInputs, design_pair, pair_checks
 from core.gear.advice import MOVES, centre_per_shift, helpful_moves, margin_rate, move_step
 from core.gear.checks import CHECKS
+from core.gear.margins import check_margins
 
 STEP = 1e-6
 
 
 def margins(pair) -> dict[str, float]:
-    return {c.name: c.value - c.limit for c in pair_checks(pair)}
+    """Each check's value − limit, as ``pair_checks`` states them, without its advice: the
+    values to type that advice names cost a search per failing check (``core.gear.amounts``,
+    tested in test_gear_amounts.py), 0.9 -> 28 s for this file's 300 pairs."""
+    return {name: m.value - m.limit for name, m in check_margins(pair).items()}
 
 
 def moved(pair, name: str, h: float):

@@ -11,11 +11,14 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
+import pytest
+
 from hypothesis import HealthCheck, assume, example, given, note, settings, strategies as st
 
 from core.base.errors import DesignError
 from core.gear import GearPairInputs, design_pair, pair_checks
 
+from sweeps import examples
 from test_gear_advice import pairs                    # the pairs whose advice's directions are tested there
 
 NO_MOVE = "no change of one shift or of a′ makes it pass: try other teeth"
@@ -73,7 +76,10 @@ STANDARD = dict(pressure_angle_deg=20.0, addendum=1.0, clearance=0.25)
 TAB = dict(z1=13, z2=40, module_mm=6.0, mode="centre", x1=0.0, x2=0.0, **STANDARD)
 
 
-@settings(max_examples=250, deadline=None)
+# Slow sweeps (tests/sweeps.py): each example designs the pair along every helpful change
+# (3 ms a failing check, 4-11 s for 250); CI draws a share, HYPOTHESIS_PROFILE=thorough all 250.
+@pytest.mark.slow
+@settings(max_examples=examples(250), deadline=None)
 @given(pairs)
 @example(dict(TAB, y=2.0))                                   # the Gear tab's pair at a′ = 171 mm
 @example(dict(TAB, z1=10, y=-3.0))                           # the 10/40 at a′ = 162 mm
@@ -121,7 +127,8 @@ pointed = st.builds(
     y=st.floats(1.0, 8.0))
 
 
-@settings(max_examples=250, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@pytest.mark.slow
+@settings(max_examples=examples(250), deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(pointed)
 @example(dict(z1=13, z2=40, module_mm=6.0, mode="centre", x1=0.0, x2=0.0, y=41.0 / 6.0 - 0.5))  # a′ = 200 mm (report test)
 @example(dict(z1=13, z2=40, module_mm=6.0, mode="given", x1=1.5, x2=0.0, y=0.0))
