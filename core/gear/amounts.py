@@ -184,15 +184,9 @@ def printed(design: Design, start: Start, check: str, name: str, sign: int,
             x2 = round(start.x2 - (x1 - start.x1), digits)
             values, inputs = (x1, x2), replace(start.inputs, x1=x1, x2=x2, centre_mm=None)
         else:
-            origin = {"x1": start.x1, "x2": start.x2, "centre": start.centre_mm}[name]
-            value = rounded(origin + sign * step, digits, sign > 0, bump)
-            values, inputs = (value,), typed(start, name, value - origin)
-            if name == "x1":
-                inputs = replace(inputs, x1=value)
-            elif name == "x2":
-                inputs = replace(inputs, x2=value)
-            else:
-                inputs = replace(inputs, centre_mm=value)
+            field = {"x1": "x1", "x2": "x2", "centre": "centre_mm"}[name]
+            value = rounded(getattr(start, field) + sign * step, digits, sign > 0, bump)
+            values, inputs = (value,), replace(typed(start, name, 0.0), **{field: value})     # as printed
         pair = passing(design, inputs, check)
         if pair is not None:
             return tuple(f"{v + 0.0:.{digits}f}" for v in values), pair     # no "-0.0000"

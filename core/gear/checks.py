@@ -7,7 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from . import amounts
-from .advice import Move, helpful_moves, move_text
+from .advice import BREAK_TEXT, Move, helpful_moves, move_text
 from .margins import CHECKS, Margin, check_margins
 from .pair import GearPair, probe_pair
 from .shift import bound_text
@@ -59,11 +59,13 @@ def advised_moves(pair: GearPair, check: str, margins: dict[str, Margin] | None 
     return tuple(sorted(found, key=lambda m: (bool(m.breaks), -m.rate)))
 
 
-def _check(pair: GearPair, name: str, margin: Margin, margins: dict[str, Margin], what: str,
-           problem: str) -> Check:
+def _check(pair: GearPair, name: str, margins: dict[str, Margin], what: str) -> Check:
+    """Check ``name``, its advice led by the problem as a move's 'but then' note states it
+    (``advice.BREAK_TEXT``: one wording for both)."""
+    margin = margins[name]
     moves = () if margin.ok else advised_moves(pair, name, margins)
     return Check(name, margin.ok, margin.value, margin.limit, what,
-                 "" if margin.ok else advice_text(problem, moves), moves)
+                 "" if margin.ok else advice_text(BREAK_TEXT[name], moves), moves)
 
 
 def _undercut(k: int, margin: Margin) -> Check:
@@ -79,10 +81,7 @@ def pair_checks(pair: GearPair) -> tuple[Check, ...]:
     """Every check of ``pair``, in the order of CHECKS."""
     m = check_margins(pair)
     return (_undercut(1, m["undercut1"]), _undercut(2, m["undercut2"]),
-            _check(pair, "tip1", m["tip1"], m, "sa1, mm", "the tip of gear 1 is too thin"),
-            _check(pair, "tip2", m["tip2"], m, "sa2, mm", "the tip of gear 2 is too thin"),
-            _check(pair, "contact", m["contact"], m, "ε", "ε is too small"),
-            _check(pair, "interference1", m["interference1"], m, "N1 to the tip of gear 2, mm",
-                   "the tip of gear 2 digs into the root of gear 1"),
-            _check(pair, "interference2", m["interference2"], m, "N2 to the tip of gear 1, mm",
-                   "the tip of gear 1 digs into the root of gear 2"))
+            _check(pair, "tip1", m, "sa1, mm"), _check(pair, "tip2", m, "sa2, mm"),
+            _check(pair, "contact", m, "ε"),
+            _check(pair, "interference1", m, "N1 to the tip of gear 2, mm"),
+            _check(pair, "interference2", m, "N2 to the tip of gear 1, mm"))
