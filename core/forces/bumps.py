@@ -104,8 +104,10 @@ def split_bumps(d: Designs, masses: MassProperties, w2: np.ndarray, mean: np.nda
 
     def fun(t, w2, offset, sign, cutting, theta, *lengths):
         one = torque_jet(d.with_lengths(lengths, theta), t, masses)
-        e1, e2, e3 = (s + w2 * i + cutting * c for s, i, c in zip(one[0:3], one[3:6], one[6:9]))
-        return sign * (e1 - offset), sign * e2, sign * e3        # sign·E′, E″, E‴
+        e1 = one.static + w2 * one.inertial + cutting * one.cut - offset         # E′ = T − mean
+        e2 = one.static1 + w2 * one.inertial1 + cutting * one.cut1               # E″
+        e3 = one.static2 + w2 * one.inertial2 + cutting * one.cut2               # E‴
+        return sign * e1, sign * e2, sign * e3
 
     top, value = newton_maximum(fun, lo, hi, g0, g1, m0, m1, args, curvatures=(c0, c1))
     pair = np.flatnonzero(value > 0.0)                            # sign·E′ > 0 there: two zeros
