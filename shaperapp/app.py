@@ -124,12 +124,9 @@ def _import_engine_first() -> None:
     Why: once imported, PySide6 hooks every later import and reads the module's source
     to see whether it uses PySide's ``__feature__`` switches; numpy's and core's
     hundred-odd modules imported before it skip that."""
-    import core.cam.defaults  # noqa: F401  (the cam form's defaults; the cam itself on the tab's first visit)
     import core.base.figure_text  # noqa: F401  (the Results panel's one precision per figure)
     import core.base.lettering  # noqa: F401  (the scheme's labels' gap)
     import core.forces.dynamics  # noqa: F401  (the forces; their cycle summary when first shown)
-    import core.gear.file  # noqa: F401  (the gear's model, which Save writes)
-    import core.gear.pair  # noqa: F401  (its default pair)
     import core.files.io  # noqa: F401  (core, numpy, the design files)
     import core.linkage.metrics  # noqa: F401  (the results panel's cycle figures)
 

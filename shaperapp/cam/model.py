@@ -99,6 +99,8 @@ class CamModel(PartModel):
         self._stale = True
         model.resultsChanged.connect(self._linkage_changed)
         model.forcesChanged.connect(self._linkage_changed)     # the idle margin is a load
+        if model.parts.loaded(self.PART) is not None:     # made after a file with a cam was opened
+            self._load()
 
     @property
     def cam(self) -> Cam:

@@ -17,12 +17,10 @@ from PySide6.QtCore import QEvent, QSettings, QTimer
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
 from PySide6.QtWidgets import QInputDialog, QMainWindow, QMessageBox, QVBoxLayout, QWidget
 
-from shaperapp.cam.model import CamModel
 from shaperapp.design.document import Document
 from shaperapp.design.inputs_pane import InputsPane
 from shaperapp.design.model import DesignModel
 from shaperapp.design.undo import retranslate_history
-from shaperapp.gear.model import GearModel
 from shaperapp.plots.kinematics import PlotsWidget
 from shaperapp.results.panel import MetricsPanel
 from shaperapp.scheme.view import SchemeWidget
@@ -66,12 +64,12 @@ class MainWindow(QMainWindow):
         self._pages["polygons"] = LazyPage(
             lambda: pages.polygon_view(model, lambda: self.docks.enlarge_polygons()), defer=True)
         self._pages["library"] = LazyPage(lambda: pages.library_pane(model, settings, self._show_comparison))
-        # The cam's model exists from the start (it holds the cam that Save writes and Open
-        # reads); its tab is built when first shown.
-        self.cam_model = CamModel(model, self)
+        # The cam's and the gear pair's places in the design file exist from the start (Save
+        # writes them, Open checks them); their models are made when first used, their tabs
+        # when first shown.
+        self._part_models = {"cam": pages.cam_part(model, self), "gear": pages.gear_part(model, self)}
         self._pages["cam"] = LazyPage(lambda: pages.cam_tab(model, self.cam_model))
         self.tabs.addTab(self._pages["cam"], "")
-        self.gear_model = GearModel(model, self)     # the same for the gear pair
         self._pages["gear"] = LazyPage(lambda: pages.gear_tab(model, self.gear_model))
         self.tabs.addTab(self._pages["gear"], "")
         self._idle_build_started = False
@@ -109,6 +107,8 @@ class MainWindow(QMainWindow):
     compare = property(lambda self: self._pages["compare"].view())
     cam = property(lambda self: self._pages["cam"].view())
     gear = property(lambda self: self._pages["gear"].view())
+    cam_model = property(lambda self: self._part_models["cam"].model)
+    gear_model = property(lambda self: self._part_models["gear"].model)
 
     polygon_view = property(lambda self: self._pages["polygons"].view())
     library = property(lambda self: self._pages["library"].view())

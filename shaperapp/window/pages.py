@@ -7,13 +7,17 @@ callbacks its view's signals go to, never the window.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
-from PySide6.QtCore import QSettings, QTimer
+from PySide6.QtCore import QObject, QSettings, QTimer
 from PySide6.QtWidgets import QWidget
 
-from shaperapp.cam.model import CamModel
 from shaperapp.design.model import DesignModel
-from shaperapp.gear.model import GearModel
+from shaperapp.parts.lazy import LazyPart
+
+if TYPE_CHECKING:
+    from shaperapp.cam.model import CamModel
+    from shaperapp.gear.model import GearModel
 
 TABS = ("forces", "positions", "explore", "compare")     # the central tabs built on demand, in order
 
@@ -49,8 +53,32 @@ def library_pane(model: DesignModel, settings: QSettings, compare: Callable[[lis
     return pane
 
 
+def cam_part(model: DesignModel, parent: QObject) -> LazyPart[CamModel]:
+    """The cam's model, made (and its module imported) when first used; Save writes its cam
+    from the start."""
+    def make() -> CamModel:
+        from shaperapp.cam.model import CamModel
+        return CamModel(model, parent)
+    return LazyPart(model, "cam", make)
+
+
+def gear_part(model: DesignModel, parent: QObject) -> LazyPart[GearModel]:
+    """The gear pair's model, made when first used; Save writes its pair and Open checks a
+    file's pair (``check_gear``) from the start."""
+    def make() -> GearModel:
+        from shaperapp.gear.model import GearModel
+        return GearModel(model, parent)
+    return LazyPart(model, "gear", make, check_gear)
+
+
+def check_gear(data: Any) -> Any:
+    """``shaperapp.gear.model.check_part``, its module imported when a file holds a pair."""
+    from shaperapp.gear.model import check_part
+    return check_part(data)
+
+
 def cam_tab(model: DesignModel, cam_model: CamModel) -> QWidget:
-    """The Cam tab, showing ``cam_model`` (made with the window: Save writes its cam)."""
+    """The Cam tab, showing ``cam_model``."""
     from core.cam.synthesis import import_solvers
     from shaperapp.cam.tab import CamTab
     tab = CamTab(model, cam_model=cam_model)

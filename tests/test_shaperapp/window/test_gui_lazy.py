@@ -177,3 +177,46 @@ def test_the_first_show_refreshes_the_front_plots_at_their_size(qtbot, tmp_path,
         assert sides == [] and not stack.legend("main").side()
         port = stack._scroll.viewport()
         assert port.height() >= stack._view.minimumHeight()          # the plots fit, legend above
+
+
+def test_the_gear_and_cam_models_wait_and_save_open_as_if_made_at_start(qtbot, tmp_path, monkeypatch):
+    """The window makes the cam's and the gear pair's models when first asked (issue 43
+    item 5), but their places in the design file are there from the start: Save before
+    either is made writes the default cam and pair as made models write them; Open
+    refuses a file with a bad pair without making the model; models made after a file was
+    opened hold that file's cam and pair, and Save writes them back unchanged."""
+    import json
+
+    from shaperapp.cam.model import CamModel
+    from shaperapp.design.model import DesignModel
+    from shaperapp.gear.model import GearModel
+    from shaperapp.window.main_window import MainWindow
+
+    made_at_start = DesignModel()
+    want = {"cam": CamModel(made_at_start).document(), "gear": GearModel(made_at_start).document()}
+    path, wrong = tmp_path / "parts.json", tmp_path / "wrong.json"
+    with main_window(tmp_path) as win:
+        win._idle_build_started = True                 # no idle build of the tabs meanwhile
+        assert not win._part_models["cam"].made() and not win._part_models["gear"].made()
+        assert win.document.save_to(str(path))
+        document = json.loads(path.read_text(encoding="utf-8"))
+        assert {name: document[name] for name in want} == want      # (Save made them)
+    document["gear"] = {**document["gear"], "centre_mm": 170.0}
+    document["cam"] = {**document["cam"], "arm_mm": 150.0, "rise_law": "poly345"}
+    path.write_text(json.dumps(document), encoding="utf-8")
+    wrong.write_text(json.dumps({**document, "gear": {**document["gear"], "centre_mm": 100.0}}),
+                     encoding="utf-8")                 # no shift fits a′ = 100 mm for z 13/40, m 6
+    monkeypatch.setattr(MainWindow, "_show_failure", lambda self, message: None)    # no dialog
+    with main_window(tmp_path) as win:
+        win._idle_build_started = True
+        failures = []
+        win.document.failed.connect(failures.append)
+        assert not win.document.open_path(str(wrong))
+        assert len(failures) == 1 and not win._part_models["gear"].made()
+        assert win.document.open_path(str(path))
+        assert not win._part_models["cam"].made() and not win._part_models["gear"].made()
+        assert win.gear_model.pair.centre_mm == 170.0
+        assert win.cam_model.cam.follower.arm_mm == 150.0
+        assert win.cam_model.cam.program.rise_law == "poly345"
+        assert {name: win.model.saved_parts()[name] for name in want} == {
+            name: document[name] for name in want}
