@@ -49,7 +49,7 @@ class MainWindow(QMainWindow):
         self.settings = settings
         self.document = Document(model, settings, self)
         self.inputs = InputsPane(model)
-        self.form, self.loads = self.inputs.form, self.inputs.loads
+        self.form = self.inputs.form
         self.metrics = MetricsPanel(model)
         self.scheme = SchemeWidget(model)
         self.animation = AnimationBar(model)
@@ -107,6 +107,7 @@ class MainWindow(QMainWindow):
     compare = property(lambda self: self._pages["compare"].view())
     cam = property(lambda self: self._pages["cam"].view())
     gear = property(lambda self: self._pages["gear"].view())
+    loads = property(lambda self: self.inputs.loads)
     cam_model = property(lambda self: self._part_models["cam"].model)
     gear_model = property(lambda self: self._part_models["gear"].model)
 
@@ -121,7 +122,7 @@ class MainWindow(QMainWindow):
         super().paintEvent(event)
         if not self._idle_build_started:    # the first screen is up: build the rest meanwhile
             self._idle_build_started = True
-            build_when_idle(list(self._pages.values()))
+            build_when_idle([self.inputs.loads_page, *self._pages.values()])
 
     flush_typing = staticmethod(flush_typing)
 

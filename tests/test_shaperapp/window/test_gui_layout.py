@@ -199,7 +199,9 @@ def test_every_pane_is_a_dock_with_a_view_menu_entry(window):
         assert dock.toggleViewAction() in view_actions
     # inputs pane: the design form and the loads form
     assert window.inputs.indexOf(window.form.parentWidget().parentWidget()) == 0
-    assert window.inputs.indexOf(window.loads.parentWidget().parentWidget()) == 1
+    # (the loads form's scroll area in the page that builds it when first shown)
+    assert window.loads.parentWidget().parentWidget().parentWidget() is window.inputs.loads_page
+    assert window.inputs.indexOf(window.inputs.loads_page) == 1
     assert window.act_reset_layout in window.menus.view.actions()
     # the central tabs no longer hold the loads form or the polygons
     assert window.tabs.indexOf(window.forces) == 1 and window.tabs.indexOf(window.polygon_view) == -1

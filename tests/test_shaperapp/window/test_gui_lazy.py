@@ -220,3 +220,28 @@ def test_the_gear_and_cam_models_wait_and_save_open_as_if_made_at_start(qtbot, t
         assert win.cam_model.cam.program.rise_law == "poly345"
         assert {name: win.model.saved_parts()[name] for name in want} == {
             name: document[name] for name in want}
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_the_loads_form_built_later_leaves_the_inputs_dock_as_it_was(qtbot, tmp_path, language):
+    """The Loads form is built when its tab is first shown (issue 43 item 5): the inputs
+    dock keeps its width and the form its fields' width then, in both languages (its
+    scroll area is narrower than the design form's), and it shows the model's loads."""
+    from shaperapp.widgets import i18n
+
+    with main_window(tmp_path) as win:
+        win._idle_build_started = True                 # no idle build meanwhile
+        i18n.set_language(language)
+        win.resize(1366, 768)
+        qtbot.waitExposed(win)
+        QApplication.processEvents()
+        dock, pane = win.docks["inputs"], win.inputs
+        before = (dock.width(), pane.width(), pane.widget(0).width())
+        assert not pane.loads_page.is_built()
+        pane.show_loads()
+        QApplication.processEvents()
+        assert pane.loads_page.is_built()
+        assert (dock.width(), pane.width(), pane.widget(0).width()) == before
+        area = win.loads.parentWidget().parentWidget()
+        assert area.width() >= win.loads.minimumSizeHint().width()      # never clipped
+        assert win.loads.field("cut_force_N").text() == f"{win.model.masses.cut_force_N:g}"
