@@ -229,7 +229,11 @@ class LoadsForm(QWidget):
         self._gravity.setText(self.tr("include weights"))
         self._show_placeholder()
         self._show_error()
-        # One label width in every group box, so the fields line up down the form.
+        # One label width in every group box, so the fields line up down the form: the widest
+        # label's in this language (a label's size hint keeps its minimum width, so that is
+        # cleared first: after a switch to Chinese the English width stayed).
+        for label in self._labels.values():
+            label.setMinimumWidth(0)
         width = max(label.sizeHint().width() for label in self._labels.values())
         for label in self._labels.values():
             label.setMinimumWidth(width)

@@ -245,3 +245,26 @@ def test_the_loads_form_built_later_leaves_the_inputs_dock_as_it_was(qtbot, tmp_
         area = win.loads.parentWidget().parentWidget()
         assert area.width() >= win.loads.minimumSizeHint().width()      # never clipped
         assert win.loads.field("cut_force_N").text() == f"{win.model.masses.cut_force_N:g}"
+
+
+def test_the_loads_forms_labels_take_the_width_of_the_language_shown(qtbot, tmp_path):
+    """The Loads form lines its fields up behind one label width: the widest label's in the
+    language shown. A label's size hint kept the minimum width set for English, so after a
+    switch to Chinese the label column stayed as wide as in English (and the Loads form,
+    built while Chinese is shown, now starts narrow: both must agree)."""
+    from shaperapp.widgets import i18n
+
+    def label_width(win) -> int:
+        return max(label.minimumWidth() for label in win.loads._labels.values())
+
+    with main_window(tmp_path) as win:
+        win._idle_build_started = True
+        i18n.set_language("zh_CN")
+        built_in_chinese = label_width(win)
+    with main_window(tmp_path) as win:
+        win._idle_build_started = True
+        english = label_width(win)
+        i18n.set_language("zh_CN")
+        QApplication.processEvents()                   # the language change is delivered
+        switched = label_width(win)
+    assert switched == built_in_chinese < english
