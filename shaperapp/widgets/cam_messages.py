@@ -86,6 +86,11 @@ PATTERNS: tuple[tuple[str, str], ...] = (
      r"the pivot boss$",
      "no roller up to the smallest cam's largest gives a cam within the allowances that clears the hub and "
      "the pivot boss"),
+    # said while the advice is looked for (core.cam.pending: SEEKING in ADVICE_PATTERNS)
+    (r"no whole cam takes a roller of (\S+) mm with these inputs$",
+     "no whole cam takes a roller of %1 mm with these inputs"),
+    (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss$",
+     "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss"),
 )
 
 ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
@@ -116,6 +121,13 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"a swing of (\S+)° gives one$", "a swing of %1° gives one"),
     (r"an arm of (\S+) mm gives one \(no swing down to (\S+)° does\)$",
      "an arm of %1 mm gives one (no swing down to %2° does)"),
+    (r"looking for a swing, else an arm, that gives one…$", "looking for a swing, else an arm, that gives one…"),
+    (r"looking for a roller, else another value, that gives one…$",
+     "looking for a roller, else another value, that gives one…"),
+    (r"looking for the least allowance that gives one…$", "looking for the least allowance that gives one…"),
+    (r"looking for an arm that gives one…$", "looking for an arm that gives one…"),
+    (r"looking for what leaving the cam to the synthesis gives…$",
+     "looking for what leaving the cam to the synthesis gives…"),
 )
 
 
@@ -193,4 +205,17 @@ def templates() -> dict[str, str]:
         "a swing of %1° gives one": QCoreApplication.translate("messages", "a swing of %1° gives one"),
         "an arm of %1 mm gives one (no swing down to %2° does)":
             QCoreApplication.translate("messages", "an arm of %1 mm gives one (no swing down to %2° does)"),
+        "no whole cam takes a roller of %1 mm with these inputs":
+            QCoreApplication.translate("messages", "no whole cam takes a roller of %1 mm with these inputs"),
+        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss":
+            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss"),
+        "looking for a swing, else an arm, that gives one…":
+            QCoreApplication.translate("messages", "looking for a swing, else an arm, that gives one…"),
+        "looking for a roller, else another value, that gives one…":
+            QCoreApplication.translate("messages", "looking for a roller, else another value, that gives one…"),
+        "looking for the least allowance that gives one…":
+            QCoreApplication.translate("messages", "looking for the least allowance that gives one…"),
+        "looking for an arm that gives one…": QCoreApplication.translate("messages", "looking for an arm that gives one…"),
+        "looking for what leaving the cam to the synthesis gives…":
+            QCoreApplication.translate("messages", "looking for what leaving the cam to the synthesis gives…"),
     }
