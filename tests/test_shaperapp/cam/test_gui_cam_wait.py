@@ -9,6 +9,7 @@ On 9b888d9 the search ran inside the edit on the GUI thread (0.1–0.4 s): every
 fails there (the model has no ``searching``; the probes ran on the main thread)."""
 from __future__ import annotations
 
+import re
 import threading
 
 import pytest
@@ -16,8 +17,8 @@ from PySide6.QtWidgets import QApplication
 
 import core.cam.cam as cam_module
 from core.base.errors import DesignError
-from core.cam import design_cam
-from core.cam.pending import SEEKING
+from core.cam import CamInputs, Program, design_cam
+from core.cam.pending import SEEKING, PendingAdvice
 from shaperapp.cam.model import cam_inputs
 from shaperapp.cam.tab import CamTab
 from shaperapp.widgets import i18n
@@ -25,6 +26,7 @@ from shaperapp.widgets.messages import describe
 from shaperapp.widgets.worker import COLLECTOR
 
 from gui_helpers import main_window, shown
+from test_gui_cam_advice import SYMBOLS
 from test_gui_cam_build import type_into
 
 # (fields typed first, the field typed last and its text): each refused after a search
@@ -35,6 +37,21 @@ SEARCHED = {
     "allowance": ({}, ("pressure", "5")),                   # an allowance of 7.6°
     "automatic-roller": ({"swing": "26.94", "rise": "97.56", "dwell": "36.63", "return": "45.13",
                           "pressure": "35.06"}, ("arm", "15")),      # an arm of 32.3 mm
+}
+
+
+SHEET = Program(15.0, 60.0, 10.0, 60.0)
+EXAMPLE = Program(8.375, 44.0, 0.0, 40.0, "sine", "parabolic")
+PENDING = {     # each statement said while its advice is looked for, and each SEEKING
+    "typed-roller": CamInputs(arm_mm=120.0, program=SHEET, roller_mm=5.0, boss_mm=90.0),
+    "allowance": CamInputs(arm_mm=120.0, program=SHEET, pressure_deg=5.0),
+    "boss": CamInputs(arm_mm=120.0, program=SHEET, boss_mm=500.0),
+    "hub": CamInputs(arm_mm=65.0, program=Program(13.0, 130.0, 8.0, 60.0, "sine", "cosine"), pressure_deg=27.5,
+                     hub_mm=100.0, boss_mm=35.0, clearance_mm=5.0),
+    "automatic-roller": CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "parabolic",
+                                                               "parabolic"), pressure_deg=35.06),
+    "checked-no-roller": CamInputs(arm_mm=120.0, base_mm=15.0, distance_mm=110.0, roller_mm=5.0),
+    "checked-sharp": CamInputs(arm_mm=52.5, program=EXAMPLE, pressure_deg=36.0, base_mm=15.523, distance_mm=45.183),
 }
 
 
@@ -179,3 +196,26 @@ def test_closing_the_tab_while_a_search_runs(qtbot, model):
     QApplication.processEvents()
     assert COLLECTOR.join(10.0)
     QApplication.processEvents()
+
+
+@pytest.mark.parametrize("inputs", PENDING.values(), ids=PENDING.keys())
+def test_every_refusal_said_while_its_advice_is_looked_for_reads_in_chinese(qapp, inputs):
+    with pytest.raises(PendingAdvice) as pending:
+        design_cam(inputs, advice_later=True)
+    i18n.set_language("zh_CN")
+    try:
+        text = describe(pending.value)
+    finally:
+        i18n.set_language("en")
+    words = set(re.findall(r"[A-Za-zρψ][A-Za-z0-9ρψ]*", text))
+    assert words <= SYMBOLS, (words - SYMBOLS, text)
+    assert set(re.findall(r"\d+(?:\.\d+)?", pending.value.allowed)) <= set(re.findall(r"\d+(?:\.\d+)?", text))
+
+
+def test_the_cases_above_say_every_search():
+    said = set()
+    for inputs in PENDING.values():
+        with pytest.raises(PendingAdvice) as pending:
+            design_cam(inputs, advice_later=True)
+        said.add(pending.value.allowed.rpartition("; ")[2])
+    assert said == set(SEEKING.values())
