@@ -6095,6 +6095,18 @@
         <translation>许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮</translation>
     </message>
     <message>
+        <source>leave the roller blank, and a swing of %1° gives one</source>
+        <translation>将滚子留空，最大摆角取 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>leave the roller blank, and an arm of %1 mm gives one</source>
+        <translation>将滚子留空，摆臂长 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, the allowances or the program</source>
+        <translation>减小最大摆角也不行，将滚子留空后改最大摆角或摆臂长也不行：请修改轮毂半径、摆动中心凸台半径、最小间隙、许用压力角或运动规律与各段转角</translation>
+    </message>
+    <message>
         <source>looking for a swing, else an arm, that gives one…</source>
         <translation>正在寻找可行的最大摆角，若没有则寻找摆臂长……</translation>
     </message>

@@ -12,7 +12,7 @@ from dataclasses import replace
 
 from core.base.errors import DesignError
 from .advice import (Design, arm_for_roller, largest_swing, largest_typed_roller, least_allowance,
-                     least_checked, longer_arm)
+                     least_checked, longer_arm, swing_below)
 from .build import MIN_ROLLER_MM, FitError
 from .defaults import MAX_ARM_MM
 from .extremes import min_convex_radius
@@ -92,9 +92,29 @@ def typed_advice(probe: Design, inputs) -> DesignError:
                            f"within the allowances that clears the hub and the pivot boss; {blank}")
     none = f"no cam within the allowances takes a roller of {inputs.roller_mm:.4g} mm and clears the hub and the pivot boss"
     arm = longer_arm(probe, inputs)
-    if arm is None:
-        return FitError("swing", inputs.program.swing_deg, f"{none}, with any arm up to {MAX_ARM_MM:g} mm")
-    return FitError("arm", inputs.arm_mm, f"{none}; an arm of {arm:.1f} mm gives one")
+    if arm is not None:
+        return FitError("arm", inputs.arm_mm, f"{none}; an arm of {arm:.1f} mm gives one")
+    return FitError("swing", inputs.program.swing_deg,
+                    f"{none}, with any arm up to {MAX_ARM_MM:g} mm; {_swing_for_roller(probe, inputs)}")
+
+
+def _swing_for_roller(probe: Design, inputs) -> str:
+    """When no arm takes the typed roller: a smaller swing that does (``advice.swing_below``),
+    else, with the roller left blank, the largest swing that gives a cam, else the shortest
+    longer arm (as the blank roller's own refusal names them), each designed; else which
+    fields are left to change."""
+    swing = swing_below(probe, inputs)
+    if swing is not None:
+        return f"a swing of {swing:.1f}° gives one"
+    blank = replace(inputs, roller_mm=None)
+    swing = largest_swing(probe, blank)
+    if swing is not None:
+        return f"leave the roller blank, and a swing of {swing:.1f}° gives one"
+    arm = longer_arm(probe, blank)
+    if arm is not None:
+        return f"leave the roller blank, and an arm of {arm:.1f} mm gives one"
+    return ("no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, "
+            "the pivot boss, the clearance, the allowances or the program")
 
 
 def synthesis_advice(probe: Design, inputs) -> str:

@@ -121,6 +121,14 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"a swing of (\S+)° gives one$", "a swing of %1° gives one"),
     (r"an arm of (\S+) mm gives one \(no swing down to (\S+)° does\)$",
      "an arm of %1 mm gives one (no swing down to %2° does)"),
+    (r"leave the roller blank, and a swing of (\S+)° gives one$",
+     "leave the roller blank, and a swing of %1° gives one"),
+    (r"leave the roller blank, and an arm of (\S+) mm gives one$",
+     "leave the roller blank, and an arm of %1 mm gives one"),
+    (r"no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the "
+     r"pivot boss, the clearance, the allowances or the program$",
+     "no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the "
+     "pivot boss, the clearance, the allowances or the program"),
     (r"looking for a swing, else an arm, that gives one…$", "looking for a swing, else an arm, that gives one…"),
     (r"looking for a roller, else another value, that gives one…$",
      "looking for a roller, else another value, that gives one…"),
@@ -209,6 +217,12 @@ def templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "no whole cam takes a roller of %1 mm with these inputs"),
         "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss":
             QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss"),
+        "leave the roller blank, and a swing of %1° gives one":
+            QCoreApplication.translate("messages", "leave the roller blank, and a swing of %1° gives one"),
+        "leave the roller blank, and an arm of %1 mm gives one":
+            QCoreApplication.translate("messages", "leave the roller blank, and an arm of %1 mm gives one"),
+        "no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, the allowances or the program":
+            QCoreApplication.translate("messages", "no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, the allowances or the program"),
         "looking for a swing, else an arm, that gives one…":
             QCoreApplication.translate("messages", "looking for a swing, else an arm, that gives one…"),
         "looking for a roller, else another value, that gives one…":
