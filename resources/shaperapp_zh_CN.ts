@@ -6095,6 +6095,14 @@
         <translation>许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮</translation>
     </message>
     <message>
+        <source>a swing of %1° gives one (no allowance up to %2° does)</source>
+        <translation>最大摆角取 %1° 时可以（许用压力角加到 %2° 也不行）</translation>
+    </message>
+    <message>
+        <source>no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance</source>
+        <translation>许用压力角加到 %1° 也不行，减小最大摆角也不行：请修改摆臂长、运动规律与各段转角、轮毂半径、摆动中心凸台半径或最小间隙</translation>
+    </message>
+    <message>
         <source>leave the roller blank, and a swing of %1° gives one</source>
         <translation>将滚子留空，最大摆角取 %1° 时可以</translation>
     </message>

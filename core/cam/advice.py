@@ -79,10 +79,15 @@ def least_allowance(design: Design, inputs, names: tuple[str, ...], most_deg: fl
     or the room may then refuse."""
     def fine(deg: float) -> bool:
         return works(design, replace(inputs, **{name: deg for name in names}))
-    top = float(f"{math.floor(most_deg / ALLOWANCE_STEP_DEG - 1e-9) * ALLOWANCE_STEP_DEG:.10g}")
+    top = top_allowance(most_deg)
     if not fine(top):
         return None
     return least_on_grid(fine, max(getattr(inputs, name) for name in names), top, ALLOWANCE_STEP_DEG)
+
+
+def top_allowance(most_deg: float) -> float:
+    """The largest allowance a refusal may name: the multiple of ALLOWANCE_STEP_DEG below ``most_deg``."""
+    return float(f"{math.floor(most_deg / ALLOWANCE_STEP_DEG - 1e-9) * ALLOWANCE_STEP_DEG:.10g}")
 
 
 def arm_for_roller(design: Design, inputs, smallest: Follower) -> float | None:

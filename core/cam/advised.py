@@ -12,7 +12,7 @@ from dataclasses import replace
 
 from core.base.errors import DesignError
 from .advice import (Design, arm_for_roller, largest_swing, largest_typed_roller, least_allowance,
-                     least_checked, longer_arm, swing_below)
+                     least_checked, longer_arm, swing_below, top_allowance)
 from .build import MIN_ROLLER_MM, FitError
 from .defaults import MAX_ARM_MM
 from .extremes import min_convex_radius
@@ -24,7 +24,10 @@ from .synthesis import largest_roller, synthesize
 def allowance_advice(probe: Design, inputs, error: DesignError, most_deg: float) -> DesignError:
     """An allowance too small for any cam within reach: the least rise allowance that gives
     a whole cam, else the least return allowance (the rise's kept), else the least for
-    both, each designed (``advice.least_allowance``) below ``most_deg``; else the refusal as it was."""
+    both, each designed (``advice.least_allowance``) below ``most_deg``; else, when even the
+    largest allowance is refused (by the hub or the pivot boss: 36 of 791 random sheets), a
+    smaller swing that gives one at these allowances (``advice.swing_below``); else the
+    fields left to change."""
     for names, what in ((("pressure_deg",), "an allowance of {}° gives one"),
                         (("return_pressure_deg",), "a return allowance of {}° gives one"),
                         (("pressure_deg", "return_pressure_deg"), "{}° on the rise and the return give one")):
@@ -33,7 +36,14 @@ def allowance_advice(probe: Design, inputs, error: DesignError, most_deg: float)
             name = names[0] if len(names) == 1 else "pressure_deg"
             return DesignError(name.removesuffix("_deg"), getattr(inputs, name),
                                f"{error.allowed}; {what.format(f'{least:.1f}')}")
-    return error
+    top = f"{top_allowance(most_deg):g}"
+    swing = swing_below(probe, inputs)
+    if swing is not None:
+        return DesignError(error.parameter, error.value,       # its statement is the allowance's
+                           f"{error.allowed}; a swing of {swing:.1f}° gives one (no allowance up to {top}° does)")
+    return DesignError(error.parameter, error.value,
+                       f"{error.allowed}; no allowance up to {top}° gives one, nor a smaller swing: change the "
+                       "arm, the program, the hub, the pivot boss or the clearance")
 
 
 def checked_advice(probe: Design, inputs, error: DesignError) -> DesignError:

@@ -121,6 +121,12 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"a swing of (\S+)° gives one$", "a swing of %1° gives one"),
     (r"an arm of (\S+) mm gives one \(no swing down to (\S+)° does\)$",
      "an arm of %1 mm gives one (no swing down to %2° does)"),
+    (r"a swing of (\S+)° gives one \(no allowance up to (\S+)° does\)$",
+     "a swing of %1° gives one (no allowance up to %2° does)"),
+    (r"no allowance up to (\S+)° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot "
+     r"boss or the clearance$",
+     "no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss "
+     "or the clearance"),
     (r"leave the roller blank, and a swing of (\S+)° gives one$",
      "leave the roller blank, and a swing of %1° gives one"),
     (r"leave the roller blank, and an arm of (\S+) mm gives one$",
@@ -217,6 +223,10 @@ def templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "no whole cam takes a roller of %1 mm with these inputs"),
         "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss":
             QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss"),
+        "a swing of %1° gives one (no allowance up to %2° does)":
+            QCoreApplication.translate("messages", "a swing of %1° gives one (no allowance up to %2° does)"),
+        "no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance":
+            QCoreApplication.translate("messages", "no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance"),
         "leave the roller blank, and a swing of %1° gives one":
             QCoreApplication.translate("messages", "leave the roller blank, and a swing of %1° gives one"),
         "leave the roller blank, and an arm of %1 mm gives one":

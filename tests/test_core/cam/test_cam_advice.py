@@ -30,7 +30,8 @@ from test_cam_roller import EXAMPLE_ARGS, SHORT_ARM, _one_line_error
 NO_ADVICE = (r"with any arm up to \S+ mm$",                      # no arm up to 5000 mm gives one
              r"^must be between \|a − l\| = ",                     # the arm's reach: a range, not advice
              r"nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, "
-             r"the allowances or the program$")                     # the fields left to change
+             r"the allowances or the program$",                     # the fields left to change
+             r"nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance$")
 
 
 def followed(inputs: CamInputs, error: DesignError) -> list[CamInputs]:
@@ -50,7 +51,8 @@ def followed(inputs: CamInputs, error: DesignError) -> list[CamInputs]:
         left = dict(roller_mm=None)
     if m := re.search(r"an arm of (\S+) mm gives one", text):
         left["arm_mm"] = float(m.group(1))
-    if m := re.search(r"; (?:leave the roller blank, and )?a swing of (\S+)° gives one$", text):
+    if m := re.search(r"; (?:leave the roller blank, and )?a swing of (\S+)° gives one"
+                      r"(?: \(no allowance up to \S+° does\))?$", text):
         left["program"] = replace(inputs.program, swing_deg=float(m.group(1)))
     if m := re.search(r"a (base radius|centre distance) of (\S+) mm gives one", text):      # test_cam_room_advice
         left["base_mm" if m.group(1) == "base radius" else "distance_mm"] = float(m.group(2))

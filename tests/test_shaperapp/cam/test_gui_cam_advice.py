@@ -75,9 +75,14 @@ SHORT = CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "para
               pressure_deg=33.11, roller_mm=15.28),                                 # … the roller blank, a swing
     CamInputs(arm_mm=30.92, program=Program(52.0, 143.36, 26.57, 86.89, "sine", "poly345"), pressure_deg=32.11,
               roller_mm=11.49, hub_mm=5.56, boss_mm=34.09),                         # … the roller blank, an arm
+    CamInputs(arm_mm=128.76, program=Program(56.21, 167.2, 6.52, 104.0, "parabolic", "sine"), pressure_deg=20.83,
+              hub_mm=1.76, boss_mm=150.52, clearance_mm=1.94),                      # no allowance: a swing
+    CamInputs(arm_mm=219.34, program=Program(59.9, 162.01, 14.36, 41.43, "sine", "poly345"), pressure_deg=19.37,
+              hub_mm=55.49, boss_mm=273.79, clearance_mm=7.9),                      # … the fields left
 ], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances", "crosses",
         "room-hub", "room-boss", "synthesized-boss", "synthesized-boss-arm", "synthesized-hub",
-        "typed-no-arm-swing", "typed-no-arm-blank-swing", "typed-no-arm-blank-arm"])
+        "typed-no-arm-swing", "typed-no-arm-blank-swing", "typed-no-arm-blank-arm",
+        "allowance-no-allowance-swing", "allowance-fields-left"])
 def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
     with pytest.raises(DesignError) as refused:
         design_cam(inputs)
