@@ -9,6 +9,7 @@ On 9b888d9 the search ran inside the edit on the GUI thread (0.1–0.4 s): every
 fails there (the model has no ``searching``; the probes ran on the main thread)."""
 from __future__ import annotations
 
+import gc
 import threading
 
 import pytest
@@ -185,15 +186,17 @@ def test_closing_the_window_while_a_search_runs(qtbot, tmp_path):
 
 
 def test_closing_the_tab_while_a_search_runs(qtbot, model):
+    was_enabled = gc.isenabled()
     widget = CamTab(model)
     widget.show()
     qtbot.waitExposed(widget)
     widget.cam_model.set_fields(boss=500.0)
-    assert widget.cam_model.searching()
+    assert widget.cam_model.searching() and COLLECTOR.holding and not gc.isenabled()
     widget.close()
     widget.deleteLater()                # the runner goes with it; its thread ends by itself
     QApplication.processEvents()
-    assert COLLECTOR.join(10.0)
+    assert COLLECTOR.join(10.0)         # what the suite's fixture waits for after every Qt test
+    assert gc.isenabled() == was_enabled and not COLLECTOR.holding      # given back as found
     QApplication.processEvents()
 
 
