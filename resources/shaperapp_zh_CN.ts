@@ -6123,8 +6123,8 @@
         <translation>正在寻找可行的滚子半径，若没有则寻找其他可改的值……</translation>
     </message>
     <message>
-        <source>looking for the least allowance that gives one…</source>
-        <translation>正在寻找可行的最小许用压力角……</translation>
+        <source>looking for the least allowance, else a swing, that gives one…</source>
+        <translation>正在寻找可行的最小许用压力角，若没有则寻找最大摆角……</translation>
     </message>
     <message>
         <source>looking for an arm that gives one…</source>

@@ -24,7 +24,7 @@ from core.base.progress import Cancelled
 SEEKING = {
     "swing": "looking for a swing, else an arm, that gives one…",
     "roller": "looking for a roller, else another value, that gives one…",
-    "allowance": "looking for the least allowance that gives one…",
+    "allowance": "looking for the least allowance, else a swing, that gives one…",
     "arm": "looking for an arm that gives one…",
     "synthesis": "looking for what leaving the cam to the synthesis gives…",
 }

@@ -138,7 +138,8 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"looking for a swing, else an arm, that gives one…$", "looking for a swing, else an arm, that gives one…"),
     (r"looking for a roller, else another value, that gives one…$",
      "looking for a roller, else another value, that gives one…"),
-    (r"looking for the least allowance that gives one…$", "looking for the least allowance that gives one…"),
+    (r"looking for the least allowance, else a swing, that gives one…$",
+     "looking for the least allowance, else a swing, that gives one…"),
     (r"looking for an arm that gives one…$", "looking for an arm that gives one…"),
     (r"looking for what leaving the cam to the synthesis gives…$",
      "looking for what leaving the cam to the synthesis gives…"),
@@ -237,8 +238,8 @@ def templates() -> dict[str, str]:
             QCoreApplication.translate("messages", "looking for a swing, else an arm, that gives one…"),
         "looking for a roller, else another value, that gives one…":
             QCoreApplication.translate("messages", "looking for a roller, else another value, that gives one…"),
-        "looking for the least allowance that gives one…":
-            QCoreApplication.translate("messages", "looking for the least allowance that gives one…"),
+        "looking for the least allowance, else a swing, that gives one…":
+            QCoreApplication.translate("messages", "looking for the least allowance, else a swing, that gives one…"),
         "looking for an arm that gives one…": QCoreApplication.translate("messages", "looking for an arm that gives one…"),
         "looking for what leaving the cam to the synthesis gives…":
             QCoreApplication.translate("messages", "looking for what leaving the cam to the synthesis gives…"),
