@@ -19,6 +19,7 @@ import pytest
 from PySide6.QtWidgets import QApplication
 
 from core.cam import extremes, synthesis
+from core.cam.synthesis import import_solvers
 from shaperapp.cam.model import DEFAULTS
 from shaperapp.cam.tab import CamTab
 from shaperapp.design.model import DesignModel
@@ -53,6 +54,7 @@ def searched(tab: CamTab, limit_s: float = 30.0) -> None:
 @pytest.fixture
 def tab(qtbot):
     widget = CamTab(DesignModel())
+    import_solvers()        # as the window does while idle once the tab is built (window/pages.py)
     qtbot.addWidget(widget)
     widget.resize(1000, 650)
     widget.show()
