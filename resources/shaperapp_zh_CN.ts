@@ -6087,6 +6087,54 @@
         <translation>摆臂长 %1 mm 时可以（最大摆角减到 %2° 也不行）</translation>
     </message>
     <message>
+        <source>no whole cam takes a roller of %1 mm with these inputs</source>
+        <translation>按现有输入，没有能装下 %1 mm 滚子的完整凸轮</translation>
+    </message>
+    <message>
+        <source>no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss</source>
+        <translation>许用压力角内没有能装下 %1 mm 及以上滚子并避开轮毂和摆动中心凸台的凸轮</translation>
+    </message>
+    <message>
+        <source>a swing of %1° gives one (no allowance up to %2° does)</source>
+        <translation>最大摆角取 %1° 时可以（许用压力角加到 %2° 也不行）</translation>
+    </message>
+    <message>
+        <source>no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance</source>
+        <translation>许用压力角加到 %1° 也不行，减小最大摆角也不行：请修改摆臂长、运动规律与各段转角、轮毂半径、摆动中心凸台半径或最小间隙</translation>
+    </message>
+    <message>
+        <source>leave the roller blank, and a swing of %1° gives one</source>
+        <translation>将滚子留空，最大摆角取 %1° 时可以</translation>
+    </message>
+    <message>
+        <source>leave the roller blank, and an arm of %1 mm gives one</source>
+        <translation>将滚子留空，摆臂长 %1 mm 时可以</translation>
+    </message>
+    <message>
+        <source>no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, the allowances or the program</source>
+        <translation>减小最大摆角也不行，将滚子留空后改最大摆角或摆臂长也不行：请修改轮毂半径、摆动中心凸台半径、最小间隙、许用压力角或运动规律与各段转角</translation>
+    </message>
+    <message>
+        <source>looking for a swing, else an arm, that gives one…</source>
+        <translation>正在寻找可行的最大摆角，若没有则寻找摆臂长……</translation>
+    </message>
+    <message>
+        <source>looking for a roller, else another value, that gives one…</source>
+        <translation>正在寻找可行的滚子半径，若没有则寻找其他可改的值……</translation>
+    </message>
+    <message>
+        <source>looking for the least allowance, else a swing, that gives one…</source>
+        <translation>正在寻找可行的最小许用压力角，若没有则寻找最大摆角……</translation>
+    </message>
+    <message>
+        <source>looking for an arm that gives one…</source>
+        <translation>正在寻找可行的摆臂长……</translation>
+    </message>
+    <message>
+        <source>looking for what leaving the cam to the synthesis gives…</source>
+        <translation>正在计算将校核值留空后综合给出的结果……</translation>
+    </message>
+    <message>
         <source>must be between |a − l| = %1 mm and a + l = %2 mm for the arm to reach the cam</source>
         <translation>须在 |a − l| = %1 mm 与 a + l = %2 mm 之间，摆臂才能接触凸轮</translation>
     </message>

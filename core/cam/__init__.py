@@ -4,8 +4,9 @@
 angle and curvature; ``extremes`` the largest pressure angles and the smallest convex
 radius, solved; ``synthesis`` the smallest base radius and the largest roller;
 ``timing`` the feed placed outside the linkage's cut; ``cam`` one cam from its inputs;
-``build`` whether it clears its hub and the follower pivot's boss; ``table`` its rows per cam
-angle and its figures; ``file`` its inputs in a design file.
+``build`` whether it clears its hub and the follower pivot's boss; ``advice`` the values a
+refusal names and ``advised`` its sentences; ``pending`` a refusal whose advice is searched
+later; ``table`` its rows per cam angle and its figures; ``file`` its inputs in a design file.
 
 Level: its own, just above the analysis level (it times the feed against ``core.linkage.cut``);
 it imports the analysis and mechanism levels only. Its DXF is ``core.drawing.cam_dxf``.

@@ -79,10 +79,15 @@ def least_allowance(design: Design, inputs, names: tuple[str, ...], most_deg: fl
     or the room may then refuse."""
     def fine(deg: float) -> bool:
         return works(design, replace(inputs, **{name: deg for name in names}))
-    top = float(f"{math.floor(most_deg / ALLOWANCE_STEP_DEG - 1e-9) * ALLOWANCE_STEP_DEG:.10g}")
+    top = top_allowance(most_deg)
     if not fine(top):
         return None
     return least_on_grid(fine, max(getattr(inputs, name) for name in names), top, ALLOWANCE_STEP_DEG)
+
+
+def top_allowance(most_deg: float) -> float:
+    """The largest allowance a refusal may name: the multiple of ALLOWANCE_STEP_DEG below ``most_deg``."""
+    return float(f"{math.floor(most_deg / ALLOWANCE_STEP_DEG - 1e-9) * ALLOWANCE_STEP_DEG:.10g}")
 
 
 def arm_for_roller(design: Design, inputs, smallest: Follower) -> float | None:
@@ -129,6 +134,31 @@ def largest_swing(design: Design, inputs) -> float | None:
         return None
     return -least_on_grid(lambda negated: fine(-negated), -inputs.program.swing_deg, -MIN_SWING_DEG,
                           SWING_STEP_DEG)
+
+
+SWING_SCAN_DEG = 1.0
+"""The steps of :func:`swing_below`'s scan down from the refused swing."""
+
+
+def swing_below(design: Design, inputs) -> float | None:
+    """A swing below the refused one of ``inputs``, a multiple of SWING_STEP_DEG, with which
+    the cam designs: the first of the swings SWING_SCAN_DEG apart down from the refused one
+    that does, then the largest to SWING_STEP_DEG between it and the last that did not
+    (:func:`least_on_grid` on the negated swing); None if none down to MIN_SWING_DEG does.
+
+    Why a scan and not :func:`largest_swing`'s bisection from MIN_SWING_DEG: with a typed
+    roller the swings that work need not reach down to it (a smaller swing gives a smaller,
+    sharper cam, which the roller undercuts): for a cam of arm 97.3 mm refused for its
+    12.75 mm roller at 58.4° with any arm, they were 32°–46°."""
+    def fine(swing: float) -> bool:
+        return works(design, replace(inputs, program=replace(inputs.program, swing_deg=swing)))
+    failed = inputs.program.swing_deg
+    swing = float(f"{math.ceil(failed / SWING_SCAN_DEG - 1.0 - 1e-9) * SWING_SCAN_DEG:.10g}")
+    while swing >= MIN_SWING_DEG:
+        if fine(swing):
+            return -least_on_grid(lambda negated: fine(-negated), -failed, -swing, SWING_STEP_DEG)
+        failed, swing = swing, float(f"{swing - SWING_SCAN_DEG:.10g}")
+    return None
 
 
 def largest_typed_roller(design: Design, inputs, bound_mm: float) -> str | None:

@@ -12,11 +12,12 @@ from dataclasses import dataclass, field, replace
 
 from core.base.errors import DesignError, require_range
 from core.linkage.verdict import round_text
-from . import advice
+from . import advice, advised
 from .defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, MAX_ARM_MM, MIN_ARM_MM, RETURN_PRESSURE_DEG
 from .extremes import min_convex_radius, pressure_peaks
 from .follower import Follower, check_follower
-from .laws import MIN_SWING_DEG, Program
+from .laws import Program
+from .pending import PendingAdvice, check_stop
 from .build import (MIN_ROLLER_MM, FitError, Room, pitch_max_radius, raised, require_buildable,
                     roller_for_hub, shortfalls)
 from .roller_range import no_roller_text, refusal_text, roller_range, too_large_text
@@ -143,50 +144,65 @@ def checked_follower(inputs: CamInputs) -> Follower:
 
 
 def design_cam(inputs: CamInputs, design=None, idle_fraction: float = 0.05,
-               phase_deg: float | None = None) -> Cam:
+               phase_deg: float | None = None, advice_later: bool = False) -> Cam:
     """Synthesize (or check) the cam, choose or check its roller, and time it against the
     linkage ``design`` when one is given.
 
     An automatic roller is never below MIN_ROLLER_MM: a synthesized cam too sharp for one
     is raised until it takes one (``_fitted``) or refused naming an arm that gives one
-    (``_require_roller``), a checked cam refused."""
+    (``_require_roller``), a checked cam refused. ``advice_later``: a refusal whose advice
+    is a search of many designs raises :class:`~core.cam.pending.PendingAdvice` at once,
+    whose ``seek()`` gives the refusal raised without it (the GUI, which must not wait)."""
     when = None if design is None else timing(inputs.program, design, idle_fraction, phase_deg)
-    return replace(_solved(inputs, advise=True), timing=when)
+    return replace(_solved(inputs, LATER if advice_later else NOW), timing=when)
 
 
-def _solved(inputs: CamInputs, advise: bool) -> Cam:
-    """:func:`design_cam` without the timing; ``advise``: a refusal for want of a roller
-    searches for what gives one (a probe of that search does not, :func:`_probe`)."""
+NOW, LATER, NEVER = "now", "later", "never"
+"""How a refusal's advice is found: searched before it is raised; left to
+``PendingAdvice.seek`` (a search of many designs only: a checked cam's hub or boss, a few
+tens of ms, is searched at once); or not at all, for a probe of a search, whose refusal
+no one reads (:func:`_probe`)."""
+
+
+def _solved(inputs: CamInputs, advise: str) -> Cam:
+    """:func:`design_cam` without the timing; ``advise`` NOW, LATER or NEVER."""
     try:
         return _designed(inputs, advise)
+    except PendingAdvice:
+        raise
     except (RollerError, FitError) as exc:
-        if advise and inputs.base_mm is not None and exc.allowed.startswith(ROOM_REFUSALS):
-            raise _checked_advice(inputs, exc) from None
-        if advise and inputs.roller_mm is None and inputs.base_mm is None and \
+        if advise != NEVER and inputs.base_mm is not None and exc.allowed.startswith(ROOM_REFUSALS):
+            raise advised.checked_advice(_probe, inputs, exc) from None
+        if advise != NEVER and inputs.roller_mm is None and inputs.base_mm is None and \
                 exc.allowed.startswith(SYNTHESIZED_ROOM_REFUSALS):
-            raise _swing_advice(inputs, exc) from None
-        if not advise or inputs.roller_mm is None or inputs.base_mm is not None:
+            raise (_pending(inputs, exc, exc.allowed, "swing") if advise == LATER
+                   else advised.swing_advice(_probe, inputs, exc)) from None
+        if advise == NEVER or inputs.roller_mm is None or inputs.base_mm is not None:
             raise
-        raise _typed_advice(inputs) from None
+        raise (_pending(inputs, exc, ROLLER_STATEMENT.format(inputs.roller_mm), "roller") if advise == LATER
+               else advised.typed_advice(_probe, inputs)) from None
     except DesignError as exc:
-        if not advise or exc.parameter != "pressure" or inputs.base_mm is not None:
+        if advise == NEVER or exc.parameter != "pressure" or inputs.base_mm is not None:
             raise
-        raise _allowance_advice(inputs, exc) from None
+        raise (_pending(inputs, exc, exc.allowed, "allowance") if advise == LATER
+               else advised.allowance_advice(_probe, inputs, exc, MAX_PRESSURE_DEG)) from None
 
 
-def _allowance_advice(inputs: CamInputs, error: DesignError) -> DesignError:
-    """An allowance too small for any cam within reach: the least rise allowance that gives
-    a whole cam, else the least return allowance (the rise's kept), else the least for
-    both, each designed (``advice.least_allowance``); else the refusal as it was."""
-    for names, what in ((("pressure_deg",), "an allowance of {}° gives one"),
-                        (("return_pressure_deg",), "a return allowance of {}° gives one"),
-                        (("pressure_deg", "return_pressure_deg"), "{}° on the rise and the return give one")):
-        least = advice.least_allowance(_probe, inputs, names, MAX_PRESSURE_DEG)
-        if least is not None:
-            name = names[0] if len(names) == 1 else "pressure_deg"
-            return DesignError(name.removesuffix("_deg"), getattr(inputs, name),
-                               f"{error.allowed}; {what.format(f'{least:.1f}')}")
-    return error
+ROLLER_STATEMENT = "no whole cam takes a roller of {:.4g} mm with these inputs"
+"""A typed roller's refusal while its advice is searched (the curvature's bound the first
+refusal states need not hold: see ``advice``)."""
+
+
+def _pending(inputs: CamInputs, refusal: DesignError, statement: str, seeking: str) -> PendingAdvice:
+    """``refusal`` said as ``statement``, its advice left to a search (``pending.SEEKING``)
+    that designs ``inputs`` as :func:`design_cam` does."""
+    def find() -> DesignError:
+        try:
+            _solved(inputs, NOW)
+        except DesignError as exc:
+            return exc
+        raise AssertionError(f"{inputs} refused, then designed")     # the same code, the same inputs
+    return PendingAdvice(refusal, statement, seeking, find)
 
 
 ROOM_REFUSALS = ("the profile's smallest radius r0 − r = ", "the profile's largest radius ")
@@ -194,46 +210,19 @@ ROOM_REFUSALS = ("the profile's smallest radius r0 − r = ", "the profile's lar
 radius named) and the pivot boss (its centre distance)."""
 
 
-def _checked_advice(inputs: CamInputs, error: DesignError) -> DesignError:
-    """A checked cam that does not clear its hub (or the pivot boss), with the least base
-    radius (centre distance) at the same centre distance (base radius) that gives a whole
-    cam, designed (``advice.least_checked``); else the refusal as it was."""
-    field, what = (("base_mm", "a base radius") if error.parameter == "base"
-                   else ("distance_mm", "a centre distance"))
-    most = inputs.distance_mm + inputs.arm_mm if field == "base_mm" else 4.0 * MAX_ARM_MM
-    least = advice.least_checked(_probe, inputs, field, most)
-    if least is None:
-        return error
-    return FitError(error.parameter, error.value, f"{error.allowed}; {what} of {least:.2f} mm gives one")
-
-
 SYNTHESIZED_ROOM_REFUSALS = ("no cam within the allowances clears the pivot boss;", ROOM_REFUSALS[0])
 """How ``build.require_buildable``'s refusals of a synthesized cam begin: no raise clears the
 pivot boss (the swing named), or the hub while the smallest cam clears the boss (the hub)."""
 
 
-def _swing_advice(inputs: CamInputs, error: DesignError) -> DesignError:
-    """A synthesized cam that no raise clears of the pivot boss (or the hub), with the largest
-    swing that gives a whole cam (``advice.largest_swing``), else, when even the least swing
-    does not, the shortest arm that does (``advice.longer_arm``), each designed; else the
-    refusal as it was. The swing first: the refusal names it, and it is the input that
-    pushes the roller's outer position toward the pivot."""
-    swing = advice.largest_swing(_probe, inputs)
-    if swing is not None:
-        return FitError("swing", inputs.program.swing_deg, f"{error.allowed}; a swing of {swing:.1f}° gives one")
-    arm = advice.longer_arm(_probe, inputs)
-    if arm is None:
-        return error
-    return FitError("arm", inputs.arm_mm, f"{error.allowed}; an arm of {arm:.1f} mm gives one "
-                    f"(no swing down to {MIN_SWING_DEG:g}° does)")
-
-
 def _probe(inputs: CamInputs) -> Cam:
-    """A whole design, refused without advice: what ``advice``'s searches try."""
-    return _solved(inputs, advise=False)
+    """A whole design, refused without advice: what ``advice``'s searches try (each asks
+    first whether its search is to stop, ``pending.check_stop``)."""
+    check_stop()
+    return _solved(inputs, NEVER)
 
 
-def _designed(inputs: CamInputs, advise: bool) -> Cam:
+def _designed(inputs: CamInputs, advise: str) -> Cam:
     synthesized, typed = inputs.base_mm is None, inputs.roller_mm is not None
     if synthesized:
         f = synthesize(inputs.arm_mm, inputs.program, inputs.allowance)
@@ -243,7 +232,7 @@ def _designed(inputs: CamInputs, advise: bool) -> Cam:
     up, back, rho = figures(f, inputs.program)
     if typed and not synthesized:
         biggest, roller = largest_roller(rho), inputs.roller_mm
-        _require_typed_fits(inputs, f, rho)
+        _require_typed_fits(inputs, f, rho, advise)
     elif typed:
         biggest, roller = largest_roller(rho), inputs.roller_mm
         _check_roller(roller, biggest, rho)
@@ -264,38 +253,6 @@ class RollerError(DesignError):
     says instead what works (as for a FitError, a raise that found no room for it)."""
 
 
-def _typed_advice(inputs: CamInputs) -> DesignError:
-    """What to change when a synthesized cam refuses its typed roller, the first of these
-    that designs: a smaller roller (the largest that works), a blank one (the automatic
-    choice raises the base radius for one), a longer arm; each value designed before it is
-    named (``advice``)."""
-    f = synthesize(inputs.arm_mm, inputs.program, inputs.allowance)
-    rho = min_convex_radius(f, inputs.program)
-    if largest_roller(rho) >= MIN_ROLLER_MM:
-        most = advice.largest_typed_roller(_probe, inputs, largest_roller(rho))
-        if most is not None:
-            taken = _probe(replace(inputs, roller_mm=float(most)))
-            return DesignError("roller", inputs.roller_mm, too_large_text(most, taken.min_curvature_radius_mm))
-    try:
-        cam = _probe(replace(inputs, roller_mm=None))
-    except DesignError:
-        cam = None
-    blank = None if cam is None else \
-        f"left blank, the roller is {cam.roller_mm:.4g} mm on a base radius raised to {cam.base_radius_mm:.4g} mm"
-    if blank is not None and largest_roller(rho) < MIN_ROLLER_MM:
-        return DesignError("roller", inputs.roller_mm,
-                           f"the smallest cam for the allowances takes no roller of {MIN_ROLLER_MM:g} mm or "
-                           f"more (ρmin = {rho:.4g} mm); {blank}")
-    if blank is not None:
-        return DesignError("roller", inputs.roller_mm, "no roller up to the smallest cam's largest gives a cam "
-                           f"within the allowances that clears the hub and the pivot boss; {blank}")
-    none = f"no cam within the allowances takes a roller of {inputs.roller_mm:.4g} mm and clears the hub and the pivot boss"
-    arm = advice.longer_arm(_probe, inputs)
-    if arm is None:
-        return FitError("swing", inputs.program.swing_deg, f"{none}, with any arm up to {MAX_ARM_MM:g} mm")
-    return FitError("arm", inputs.arm_mm, f"{none}; an arm of {arm:.1f} mm gives one")
-
-
 def _check_roller(roller: float, biggest: float, rho: float) -> None:
     """A synthesized cam's typed roller, against its curvature (the raise sees to the hub
     and the boss); the bound stated rounded down, so that typing it passes."""
@@ -303,7 +260,7 @@ def _check_roller(roller: float, biggest: float, rho: float) -> None:
         raise RollerError("roller", roller, too_large_text(f"{biggest:.4g}", rho))
 
 
-def _require_typed_fits(inputs: CamInputs, f: Follower, rho: float) -> None:
+def _require_typed_fits(inputs: CamInputs, f: Follower, rho: float, advise: str) -> None:
     """A checked cam's typed roller against all three of its bounds at once (see
     :mod:`roller_range`): refused naming the range it takes, or, if it takes none, the base
     radius with what leaving the cam to the synthesis gives."""
@@ -313,33 +270,18 @@ def _require_typed_fits(inputs: CamInputs, f: Follower, rho: float) -> None:
     stated = span.stated()
     if stated is not None:
         raise DesignError("roller", inputs.roller_mm, refusal_text(span, stated))
-    raise FitError("base", inputs.base_mm, f"{no_roller_text(span)}; {_left_to_synthesis(inputs)}")
+    raise _left_to_synthesis(inputs, no_roller_text(span), advise)
 
 
-def _left_to_synthesis(inputs: CamInputs) -> str:
-    """Advice for a checked cam that takes no roller: what the synthesis gives with its base
-    radius and centre distance left out (with the typed roller, else with none too), each
-    designed before it is named."""
-    tries = [inputs.roller_mm, None] if inputs.roller_mm is not None else [None]
-    for roller in tries:
-        try:
-            cam = _solved(replace(inputs, base_mm=None, distance_mm=None, roller_mm=roller), advise=False)
-        except DesignError:
-            continue
-        if roller is not None:
-            return (f"leave out the base radius and the centre distance, and the synthesis gives "
-                    f"r0 = {cam.base_radius_mm:.4g} mm for this roller")
-        what = "the base radius and the centre distance" if inputs.roller_mm is None else \
-            "the base radius, the centre distance and the roller"
-        return (f"leave out {what}, and the synthesis gives r0 = {cam.base_radius_mm:.4g} mm with a "
-                f"roller of {cam.roller_mm:.4g} mm")
-    blank = replace(inputs, base_mm=None, distance_mm=None, roller_mm=None)
-    arm = advice.arm_for_roller(_probe, blank, synthesize(blank.arm_mm, blank.program, blank.allowance))
-    if arm is None:
-        return f"no synthesized cam takes one either, with any arm up to {MAX_ARM_MM:g} mm"
-    what = "the base radius and the centre distance" if inputs.roller_mm is None else \
-        "the base radius, the centre distance and the roller"
-    return f"leave out {what}, and an arm of {arm:.1f} mm gives one"
+def _left_to_synthesis(inputs: CamInputs, statement: str, advise: str) -> DesignError:
+    """A checked cam that takes no roller, refused naming its base radius: ``statement``,
+    then (NOW) :func:`_synthesis_advice`; LATER, pending; NEVER, the statement alone."""
+    refusal = FitError("base", inputs.base_mm, statement)
+    if advise == NEVER:
+        return refusal
+    if advise == LATER:
+        return _pending(inputs, refusal, statement, "synthesis")
+    return FitError("base", inputs.base_mm, f"{statement}; {advised.synthesis_advice(_probe, inputs)}")
 
 
 FIT_ROUNDS = 4
@@ -385,21 +327,22 @@ def _fitted(inputs: CamInputs, f: Follower, roller: float
 
 
 def _require_roller(inputs: CamInputs, smallest: Follower, roller: float, biggest: float,
-                    rho: float, advise: bool) -> None:
+                    rho: float, advise: str) -> None:
     """FitError when the automatic roller is below MIN_ROLLER_MM or more than the cam takes:
     for a checked cam naming its base radius, for a synthesized one an arm that gives one
-    (``advice.arm_for_roller``, when ``advise``)."""
+    (``advice.arm_for_roller``, when ``advise`` is NOW; LATER, pending)."""
     if MIN_ROLLER_MM * (1.0 - 1e-12) <= roller <= biggest * (1.0 + 1e-12):
         return
     need = convex_radius_for(MIN_ROLLER_MM)
     if inputs.base_mm is not None:
-        raise FitError("base", inputs.base_mm,
-                       f"the pitch curve's smallest convex radius ρmin = {rho:.4g} mm takes no roller of "
-                       f"{MIN_ROLLER_MM:g} mm or more (that needs ρmin ≥ {need:g} mm); "
-                       f"{_left_to_synthesis(inputs)}")
+        raise _left_to_synthesis(inputs, f"the pitch curve's smallest convex radius ρmin = {rho:.4g} mm takes "
+                                 f"no roller of {MIN_ROLLER_MM:g} mm or more (that needs ρmin ≥ {need:g} mm)",
+                                 advise)
     none = (f"no cam within the allowances takes a roller of {MIN_ROLLER_MM:g} mm or more and clears "
             "the hub and the pivot boss")
-    arm = advice.arm_for_roller(_probe, inputs, smallest) if advise else inputs.arm_mm
+    if advise == LATER:
+        raise _pending(inputs, FitError("arm", inputs.arm_mm, none), none, "arm")
+    arm = advice.arm_for_roller(_probe, inputs, smallest) if advise == NOW else inputs.arm_mm
     if arm is None:             # no arm does: the smallest cam's path runs past the pivot boss
         require_buildable(smallest, inputs.program, MIN_ROLLER_MM, inputs.room, checked=False)
         raise FitError("swing", inputs.program.swing_deg, f"{none}, with any arm up to {MAX_ARM_MM:g} mm")

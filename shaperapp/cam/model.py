@@ -5,10 +5,17 @@ screen (its cut window times the feed; its speeds give the follower's ω and α)
 value that cannot make a cam names its field (``error``) and the last valid cam stays;
 a change of the linkage recomputes the cam. Every edit is an undoable step on the design
 model's undo stack, so Ctrl+Z undoes cam and design edits in the order they were made.
+
+A refusal whose advice is a search of many designs (0.1–0.4 s) is shown at once with its
+statement and what is looked for (``core.cam.pending``); the search runs on a worker
+thread (``widgets.worker``, :class:`AdviceJob`) and its advice replaces the text if the
+fields are still the ones refused: any later computation (an edit, an undo, a linkage
+change) stops it and drops what it finds.
 """
 from __future__ import annotations
 
 import math
+import threading
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -18,12 +25,16 @@ from PySide6.QtCore import QCoreApplication, QObject
 # The cam's code (its solver, synthesis and timing) is imported where a cam is first made
 # or read: the model exists from start-up, the cam is computed on the tab's first visit.
 from core.base.errors import DesignError
+from core.base.progress import Cancelled
 from core.cam.defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, RETURN_PRESSURE_DEG
 from shaperapp.design.model import DesignModel
+from shaperapp.design.results import COMPUTE_ERRORS, compute_error
 from shaperapp.parts.model import PartModel, Typed, number
+from shaperapp.widgets.worker import JobRunner, Report
 
 if TYPE_CHECKING:
     from core.cam import Cam, CamInputs
+    from core.cam.pending import PendingAdvice
 
 NUMBERS = ("arm", "swing", "pressure", "return_pressure", "rise", "dwell", "return", "hub", "boss",
            "clearance")
@@ -72,7 +83,9 @@ def blamed(error: DesignError, typed: CamTyped, edited: list[str]) -> DesignErro
     valid cam, else names the one of them typed last (issue 34: typing rise = 300 marked
     the outer dwell)."""
     from core.cam.build import FitError
-    if isinstance(error, FitError):
+    from core.cam.pending import PendingAdvice
+    said = error.refusal if isinstance(error, PendingAdvice) else error    # blamed as its advice will be
+    if isinstance(said, FitError):
         group = tuple(n for n in DEFAULTS if n != "phase")
     elif SUM_TEXT in error.allowed:
         group = PHASES
@@ -82,6 +95,27 @@ def blamed(error: DesignError, typed: CamTyped, edited: list[str]) -> DesignErro
     if not recent or error.parameter in recent:
         return error
     return DesignError(recent[-1], typed.dict[recent[-1]], error.allowed)
+
+
+class AdviceJob:
+    """A pending refusal's search (``worker.Job``): plain core on the worker thread, asked
+    before each design it tries whether to stop. Reports the refusal with its advice, as
+    the model's computation would have had it (a corner of the closed forms as
+    ``compute_error`` says it)."""
+
+    def __init__(self, pending: PendingAdvice) -> None:
+        self.pending = pending
+        self.stop = threading.Event()
+
+    def run(self, report: Report) -> None:
+        try:
+            error = self.pending.seek(self.stop.is_set)
+        except Cancelled:
+            report("cancelled")
+            return
+        except COMPUTE_ERRORS as exc:
+            error = compute_error(exc)
+        report("finished", error)
 
 
 class CamModel(PartModel):
@@ -97,6 +131,9 @@ class CamModel(PartModel):
         super().__init__(model, CamTyped(), None, parent=parent)
         self._active = False        # the Cam tab is on screen: a linkage edit recomputes at once
         self._stale = True
+        self._pending: PendingAdvice | None = None      # the last computation's, if its advice is searched
+        self.search = JobRunner(self)
+        self.search.finished.connect(self._advised)
         model.resultsChanged.connect(self._linkage_changed)
         model.forcesChanged.connect(self._linkage_changed)     # the idle margin is a load
         if model.parts.loaded(self.PART) is not None:     # made after a file with a cam was opened
@@ -115,11 +152,22 @@ class CamModel(PartModel):
         if on and self._stale:
             self._recompute()
 
+    def searching(self) -> bool:
+        """Whether a search for a refusal's advice still runs (the current one, or one
+        stopped that has not yet returned)."""
+        return self.search.running
+
+    def shutdown(self) -> None:
+        """Stop the search and wait for it (the window is closing)."""
+        self.search.cancel()
+        self.search.wait()
+
     def _linkage_changed(self) -> None:
         if self._active:
             self._recompute()
         else:
             self._stale = True
+            self.search.cancel()        # its refusal is of the linkage before: recomputed when shown
 
     def edit_text(self) -> str:
         return QCoreApplication.translate("CamModel", "edit cam")
@@ -144,16 +192,31 @@ class CamModel(PartModel):
 
     def compute(self, typed: CamTyped) -> Cam:
         from core.cam import design_cam
+        from core.cam.pending import PendingAdvice
         inputs, phase = cam_inputs(typed)
         m = self.design_model
-        return design_cam(inputs, m.design, m.masses.idle_fraction, phase)
+        try:
+            return design_cam(inputs, m.design, m.masses.idle_fraction, phase, advice_later=True)
+        except PendingAdvice as pending:
+            self._pending = pending
+            raise
 
     def blame(self, error: DesignError) -> DesignError:
         return blamed(error, self._typed, self._edited)
 
     def _recompute(self) -> None:
         self._stale = False
+        self.search.cancel()                # what it would find is for fields no longer computed
+        self._pending = None
         super()._recompute()
+        if self._pending is not None:
+            self.search.start(AdviceJob(self._pending))
+
+    def _advised(self, job: AdviceJob, error: DesignError) -> None:
+        """The advice of the refusal on screen, found (a job replaced or stopped meanwhile is
+        no longer ``search.job``: what it found is dropped)."""
+        if job is self.search.job and job.pending is self._pending and not self._stale:
+            self._set_error(self.blame(error))
 
     def refused(self) -> None:
         """The first computation failed (a design whose cut leaves no room for the default

@@ -86,6 +86,11 @@ PATTERNS: tuple[tuple[str, str], ...] = (
      r"the pivot boss$",
      "no roller up to the smallest cam's largest gives a cam within the allowances that clears the hub and "
      "the pivot boss"),
+    # said while the advice is looked for (core.cam.pending: SEEKING in ADVICE_PATTERNS)
+    (r"no whole cam takes a roller of (\S+) mm with these inputs$",
+     "no whole cam takes a roller of %1 mm with these inputs"),
+    (r"no cam within the allowances takes a roller of (\S+) mm or more and clears the hub and the pivot boss$",
+     "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss"),
 )
 
 ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
@@ -116,6 +121,28 @@ ADVICE_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"a swing of (\S+)° gives one$", "a swing of %1° gives one"),
     (r"an arm of (\S+) mm gives one \(no swing down to (\S+)° does\)$",
      "an arm of %1 mm gives one (no swing down to %2° does)"),
+    (r"a swing of (\S+)° gives one \(no allowance up to (\S+)° does\)$",
+     "a swing of %1° gives one (no allowance up to %2° does)"),
+    (r"no allowance up to (\S+)° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot "
+     r"boss or the clearance$",
+     "no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss "
+     "or the clearance"),
+    (r"leave the roller blank, and a swing of (\S+)° gives one$",
+     "leave the roller blank, and a swing of %1° gives one"),
+    (r"leave the roller blank, and an arm of (\S+) mm gives one$",
+     "leave the roller blank, and an arm of %1 mm gives one"),
+    (r"no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the "
+     r"pivot boss, the clearance, the allowances or the program$",
+     "no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the "
+     "pivot boss, the clearance, the allowances or the program"),
+    (r"looking for a swing, else an arm, that gives one…$", "looking for a swing, else an arm, that gives one…"),
+    (r"looking for a roller, else another value, that gives one…$",
+     "looking for a roller, else another value, that gives one…"),
+    (r"looking for the least allowance, else a swing, that gives one…$",
+     "looking for the least allowance, else a swing, that gives one…"),
+    (r"looking for an arm that gives one…$", "looking for an arm that gives one…"),
+    (r"looking for what leaving the cam to the synthesis gives…$",
+     "looking for what leaving the cam to the synthesis gives…"),
 )
 
 
@@ -193,4 +220,27 @@ def templates() -> dict[str, str]:
         "a swing of %1° gives one": QCoreApplication.translate("messages", "a swing of %1° gives one"),
         "an arm of %1 mm gives one (no swing down to %2° does)":
             QCoreApplication.translate("messages", "an arm of %1 mm gives one (no swing down to %2° does)"),
+        "no whole cam takes a roller of %1 mm with these inputs":
+            QCoreApplication.translate("messages", "no whole cam takes a roller of %1 mm with these inputs"),
+        "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss":
+            QCoreApplication.translate("messages", "no cam within the allowances takes a roller of %1 mm or more and clears the hub and the pivot boss"),
+        "a swing of %1° gives one (no allowance up to %2° does)":
+            QCoreApplication.translate("messages", "a swing of %1° gives one (no allowance up to %2° does)"),
+        "no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance":
+            QCoreApplication.translate("messages", "no allowance up to %1° gives one, nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance"),
+        "leave the roller blank, and a swing of %1° gives one":
+            QCoreApplication.translate("messages", "leave the roller blank, and a swing of %1° gives one"),
+        "leave the roller blank, and an arm of %1 mm gives one":
+            QCoreApplication.translate("messages", "leave the roller blank, and an arm of %1 mm gives one"),
+        "no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, the allowances or the program":
+            QCoreApplication.translate("messages", "no smaller swing gives one either, nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, the allowances or the program"),
+        "looking for a swing, else an arm, that gives one…":
+            QCoreApplication.translate("messages", "looking for a swing, else an arm, that gives one…"),
+        "looking for a roller, else another value, that gives one…":
+            QCoreApplication.translate("messages", "looking for a roller, else another value, that gives one…"),
+        "looking for the least allowance, else a swing, that gives one…":
+            QCoreApplication.translate("messages", "looking for the least allowance, else a swing, that gives one…"),
+        "looking for an arm that gives one…": QCoreApplication.translate("messages", "looking for an arm that gives one…"),
+        "looking for what leaving the cam to the synthesis gives…":
+            QCoreApplication.translate("messages", "looking for what leaving the cam to the synthesis gives…"),
     }

@@ -374,4 +374,5 @@ class MainWindow(QMainWindow):
         explore = self._pages["explore"].built_view()
         if explore is not None:
             explore.shutdown()
+        self.cam_model.shutdown()
         event.accept()

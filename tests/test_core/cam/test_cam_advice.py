@@ -28,7 +28,10 @@ from test_cam_build import _assert_buildable
 from test_cam_roller import EXAMPLE_ARGS, SHORT_ARM, _one_line_error
 
 NO_ADVICE = (r"with any arm up to \S+ mm$",                      # no arm up to 5000 mm gives one
-             r"^must be between \|a − l\| = ")                     # the arm's reach: a range, not advice
+             r"^must be between \|a − l\| = ",                     # the arm's reach: a range, not advice
+             r"nor, with the roller left blank, a swing or an arm: change the hub, the pivot boss, the clearance, "
+             r"the allowances or the program$",                     # the fields left to change
+             r"nor a smaller swing: change the arm, the program, the hub, the pivot boss or the clearance$")
 
 
 def followed(inputs: CamInputs, error: DesignError) -> list[CamInputs]:
@@ -44,10 +47,13 @@ def followed(inputs: CamInputs, error: DesignError) -> list[CamInputs]:
         left = dict(base_mm=None, distance_mm=None, roller_mm=None)
     elif "leave out the base radius and the centre distance" in text:
         left = dict(base_mm=None, distance_mm=None)
-    elif "left blank, the roller is" in text:
+    elif "left blank, the roller is" in text or "leave the roller blank, and " in text:
         left = dict(roller_mm=None)
     if m := re.search(r"an arm of (\S+) mm gives one", text):
         left["arm_mm"] = float(m.group(1))
+    if m := re.search(r"; (?:leave the roller blank, and )?a swing of (\S+)° gives one"
+                      r"(?: \(no allowance up to \S+° does\))?$", text):
+        left["program"] = replace(inputs.program, swing_deg=float(m.group(1)))
     if m := re.search(r"a (base radius|centre distance) of (\S+) mm gives one", text):      # test_cam_room_advice
         left["base_mm" if m.group(1) == "base radius" else "distance_mm"] = float(m.group(2))
     return [replace(inputs, **left)] if left else []

@@ -69,19 +69,37 @@ SHORT = CamInputs(arm_mm=15.0, program=Program(26.94, 97.56, 36.63, 45.13, "para
     CamInputs(arm_mm=120.0, boss_mm=130.0),                                         # … an arm of … (no swing …)
     CamInputs(arm_mm=65.0, program=Program(13.0, 130.0, 8.0, 60.0, "sine", "cosine"), pressure_deg=27.5,
               hub_mm=100.0, boss_mm=35.0, clearance_mm=5.0),                        # the hub: a swing of …
+    CamInputs(arm_mm=97.26, program=Program(58.35, 57.11, 23.17, 38.46, "cosine", "cosine"), pressure_deg=38.85,
+              roller_mm=12.75),                                                     # no arm: a swing of …
+    CamInputs(arm_mm=29.73, program=Program(45.68, 72.76, 0.33, 124.18, "poly345", "parabolic"),
+              pressure_deg=33.11, roller_mm=15.28),                                 # … the roller blank, a swing
+    CamInputs(arm_mm=30.92, program=Program(52.0, 143.36, 26.57, 86.89, "sine", "poly345"), pressure_deg=32.11,
+              roller_mm=11.49, hub_mm=5.56, boss_mm=34.09),                         # … the roller blank, an arm
+    CamInputs(arm_mm=128.76, program=Program(56.21, 167.2, 6.52, 104.0, "parabolic", "sine"), pressure_deg=20.83,
+              hub_mm=1.76, boss_mm=150.52, clearance_mm=1.94),                      # no allowance: a swing
+    CamInputs(arm_mm=219.34, program=Program(59.9, 162.01, 14.36, 41.43, "sine", "poly345"), pressure_deg=19.37,
+              hub_mm=55.49, boss_mm=273.79, clearance_mm=7.9),                      # … the fields left
 ], ids=["hub", "no-roller", "sharp-checked", "blank", "arm", "allowance", "both-allowances", "crosses",
-        "room-hub", "room-boss", "synthesized-boss", "synthesized-boss-arm", "synthesized-hub"])
+        "room-hub", "room-boss", "synthesized-boss", "synthesized-boss-arm", "synthesized-hub",
+        "typed-no-arm-swing", "typed-no-arm-blank-swing", "typed-no-arm-blank-arm",
+        "allowance-no-allowance-swing", "allowance-fields-left"])
 def test_every_roller_refusal_reads_in_chinese(qapp, inputs):
     with pytest.raises(DesignError) as refused:
         design_cam(inputs)
+    assert_reads_in_chinese(refused.value)
+
+
+def assert_reads_in_chinese(error: DesignError) -> None:
+    """The form's text of ``error`` in Chinese has no English left but units and symbols,
+    and every number of core's text."""
     i18n.set_language("zh_CN")
     try:
-        text = describe(refused.value)
+        text = describe(error)
     finally:
         i18n.set_language("en")
     words = set(re.findall(r"[A-Za-zρψ][A-Za-z0-9ρψ]*", text))
     assert words <= SYMBOLS, (words - SYMBOLS, text)
-    assert set(re.findall(r"\d+(?:\.\d+)?", refused.value.allowed)) <= set(re.findall(r"\d+(?:\.\d+)?", text))
+    assert set(re.findall(r"\d+(?:\.\d+)?", error.allowed)) <= set(re.findall(r"\d+(?:\.\d+)?", text))
 
 
 @pytest.mark.parametrize("language", ["en", "zh_CN"])

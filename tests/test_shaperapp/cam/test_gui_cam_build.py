@@ -21,7 +21,9 @@ def tab(qtbot, model):
     return shown(qtbot, CamTab(model), 1000, 650)
 
 
-def type_into(qtbot, tab, name, text):
+def type_into(qtbot, tab, name, text, advised=True):
+    """``text`` typed into field ``name`` and committed; ``advised``: then the refusal's
+    advice, when a worker searches for it, as a user reads it a moment later."""
     edit = tab.form.fields[name].edit
     edit.selectAll()
     if text:
@@ -29,6 +31,8 @@ def type_into(qtbot, tab, name, text):
     else:                                   # erased as a user does: an optional field becomes "auto"
         qtbot.keyClick(edit, Qt.Key.Key_Delete)
     tab.form.commit()
+    if advised:
+        qtbot.waitUntil(lambda: not tab.cam_model.searching(), timeout=30_000)
 
 
 @pytest.mark.parametrize("name, text", [("rise", "300"), ("return", "300")])
