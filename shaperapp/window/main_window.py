@@ -374,5 +374,6 @@ class MainWindow(QMainWindow):
         explore = self._pages["explore"].built_view()
         if explore is not None:
             explore.shutdown()
-        self.cam_model.shutdown()
+        if self._part_models["cam"].made():         # (not made now only to be shut)
+            self.cam_model.shutdown()
         event.accept()

@@ -268,3 +268,11 @@ def test_the_loads_forms_labels_take_the_width_of_the_language_shown(qtbot, tmp_
         QApplication.processEvents()                   # the language change is delivered
         switched = label_width(win)
     assert switched == built_in_chinese < english
+
+
+def test_closing_the_window_makes_no_cam_model(qtbot, tmp_path):
+    """The window's close stops the cam's advice search, if the cam's model was ever made:
+    a window closed without it does not make it (and import the cam) only to stop it."""
+    with main_window(tmp_path) as win:
+        win._idle_build_started = True
+    assert not win._part_models["cam"].made()
