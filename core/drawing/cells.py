@@ -16,6 +16,9 @@ from .sheet import TEXT_HEIGHTS, Box, Item, Pair, Text, clipped_spans, line, mar
 
 # ---- text that fits ----------------------------------------------------------------------
 
+CELL_PAD = 1.0          # a cell's text keeps this clear of the rules either side, mm
+LEAST_CELL_PAD = 0.5    # … or this, where it would otherwise be cut with "…"
+
 def fitting_height(text: str, room: float, largest: float = 5.0) -> float:
     """The largest standard height ≤ ``largest`` at which ``text`` is ≤ ``room`` mm wide
     (the smallest, 2.5 mm, if none is)."""
@@ -28,14 +31,19 @@ def fitting_height(text: str, room: float, largest: float = 5.0) -> float:
 def cell_text(text: str, box: Box, largest: float = 5.0, align: str = "c",
               layer: str = TEXT, notation: bool = False) -> Text:
     """``text`` inside the cell ``box``, as large as fits (≤ ``largest``), centred
-    vertically, aligned left (1 mm in), centre or right; with ``notation``, in the index
-    notation of :func:`marked` (the program's own words only, never a user's)."""
+    vertically, aligned left (1 mm in), centre or right, 1 mm clear of the rules (0.5 mm
+    where that keeps it whole: "202100123456" at 2.5 mm is 26.2 mm wide, its cell 28 mm);
+    with ``notation``, in the index notation of :func:`marked` (the program's own words
+    only, never a user's)."""
     x0, y0, x1, y1 = box
-    room = x1 - x0 - 2.0
+    pad = CELL_PAD
     plain, spans = marked(text) if notation else (text, ())
-    h = min(fitting_height(plain, room, largest), (y1 - y0) / 1.6)
+    h = min(fitting_height(plain, x1 - x0 - 2.0 * pad, largest), (y1 - y0) / 1.6)
     h = max((v for v in TEXT_HEIGHTS if v <= h), default=TEXT_HEIGHTS[0])
-    x = {"l": x0 + 1.0, "c": (x0 + x1) / 2.0, "r": x1 - 1.0}[align]
+    if text_width(plain, h) > x1 - x0 - 2.0 * pad:
+        pad = LEAST_CELL_PAD        # closer to the rules rather than cut (a 12-digit student number)
+    room = x1 - x0 - 2.0 * pad
+    x = {"l": x0 + pad, "c": (x0 + x1) / 2.0, "r": x1 - pad}[align]
     plain, spans = clipped_spans(plain, spans, room, h)
     text = Text(plain, (x, (y0 + y1) / 2.0), h, align + "m", layer=layer, subscripts=spans)
     low, high = text.box()[1], text.box()[3]
