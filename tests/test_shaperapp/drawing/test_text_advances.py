@@ -122,3 +122,21 @@ def test_the_gear_sheets_values_are_drawn_unsqueezed(fonts, monkeypatch):
         assert _drawn_width(texts[value], metrics, cap)[1] == pytest.approx(1.0), value
     # the table's values in one height, as the cells have room for (6 mm was one size smaller)
     assert texts["6 mm"].height == texts["78.0000 mm"].height == texts["13"].height
+
+
+def test_the_chinese_sheets_letters_beside_chinese_are_unsqueezed(fonts, monkeypatch):
+    """The Chinese characters are condensed to the square the sheet reckons them, the
+    letters after them not ("模数 m" was one squeeze for the whole text, its m condensed)."""
+    font = report_font("zh_CN")
+    font.setPixelSize(100)
+    metrics = QFontMetricsF(font)
+    cap = metrics.capHeight()
+    built = []
+    monkeypatch.setattr(render, "write_sheet", lambda sheet, *args, **kwargs: built.append(sheet))
+    status, _, err = shaper_in_process("drawing", "--content", "gear", "--sheet", "A3", "--lang", "zh",
+                                       *GEAR, "-o", "unwritten.pdf")
+    assert status == 0, err
+    texts = {item.text: item for item in built[0].items if isinstance(item, Text)}
+    for value in ("模数 m", "变位系数 x", "齿数 z"):
+        width, squeeze = _drawn_width(texts[value], metrics, cap)
+        assert squeeze == pytest.approx(1.0) and width <= texts[value].width + 1e-9, value
