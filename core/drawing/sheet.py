@@ -15,6 +15,7 @@ heights GB/T 14691's series; the title block (GB/T 10609.1) is
 """
 from __future__ import annotations
 
+import bisect
 import itertools
 import math
 import re
@@ -239,18 +240,19 @@ def marked_text(text: str, position: Pair, height: float, align: str = "lb", roo
 def clipped(text: str, room: float, height: float) -> str:
     """``text`` cut with an ellipsis to fit ``room`` at ``height``: its longest start whose
     width with "…" (:func:`text_width`'s sum, from the running sum of the advances, taken
-    once) fits. Measuring each shorter start again was quadratic in the text: the title block
-    tries thousands of line breaks of a 200-character name, 15 s a sheet."""
+    once, searched by bisection) fits. Measuring each shorter start again was quadratic in
+    the text: the title block tries thousands of line breaks of a 200-character name, 15 s
+    a sheet."""
     if text_width(text, height) <= room:
         return text
-    kerns = map(_KERN.__getitem__, map(str.__add__, "\0" + text, text))     # before each character
-    advances = map(float.__add__, map(_ADVANCE.__getitem__, text), kerns)
-    starts = list(itertools.accumulate(advances, initial=0.0))
-    ellipsis = _ADVANCE["…"]
-    for k in range(len(text), 0, -1):
-        if height * (starts[k] + _KERN[text[k - 1] + "…"] + ellipsis) <= room:
-            return text[:k] + "…"
-    return ""
+    advances = map(_ADVANCE.__getitem__, text)
+    if _KERNED.search(text):
+        kerns = map(KERNS.get, map(str.__add__, "\0" + text, text), itertools.repeat(0.0))  # before each
+        advances = map(float.__add__, advances, kerns)
+    starts = list(itertools.accumulate(advances, initial=0.0))     # nondecreasing
+    ellipsis = _ADVANCE["…"] + _BEFORE_ELLIPSIS
+    k = min(bisect.bisect_right(starts, room, key=lambda start: height * (start + ellipsis)) - 1, len(text))
+    return text[:k] + "…" if k > 0 else ""
 
 
 def clipped_spans(text: str, spans: tuple[tuple[int, int], ...], room: float,
@@ -273,15 +275,11 @@ class _Advances(dict):
         return self[ch]
 
 
-class _Kerns(dict):
-    """:data:`KERNS`, 0 for a pair not in it."""
-
-    def __missing__(self, pair: str) -> float:
-        return 0.0
-
-
 _ADVANCE = _Advances(ADVANCES)
-_KERN = _Kerns(KERNS)
+_BEFORE_ELLIPSIS = max((kern for pair, kern in KERNS.items() if pair[1] == "…"), default=0.0)   # none in DejaVu
+# a first character of a kerned pair, then a second: where a text may hold one (a search in C,
+# so the pairs of most texts, which have none, are not looked up one by one)
+_KERNED = re.compile("[%s][%s]" % tuple(re.escape("".join(sorted({pair[k] for pair in KERNS}))) for k in (0, 1)))
 
 
 def char_advance(ch: str) -> float:
@@ -293,8 +291,10 @@ def text_width(text: str, height: float) -> float:
     """Estimated width of ``text`` at ``height`` mm: the sum of its characters' advances
     (:func:`char_advance`) and of the few pairs the font kerns wider ("O-": KERNS), never
     narrower than a renderer draws it."""
-    pairs = map(str.__add__, text, text[1:])
-    return height * (sum(map(_ADVANCE.__getitem__, text)) + sum(map(_KERN.__getitem__, pairs)))
+    advance = sum(map(_ADVANCE.__getitem__, text))
+    if _KERNED.search(text):
+        advance += sum(map(KERNS.get, map(str.__add__, text, text[1:]), itertools.repeat(0.0)))
+    return height * advance
 
 
 def _rotate(points: np.ndarray, degrees: float) -> np.ndarray:
