@@ -9,8 +9,10 @@ draws the sheets' texts: the PDF's and SVG's (``fonts.report_font``, English and
 through Qt's QFontMetricsF at the painter's 100 px) and the DXF's outlines
 (``outline_text.outline_font`` at the GB style's width factor; see :func:`outline_advances`
 for the few it leaves out), and keeps the largest, so no renderer squeezes. (The DXF's GB
-TEXT entities are drawn in the CAD program's own font, which this cannot measure.) Run it again when a font changes; ``tests/test_shaperapp/drawing/
-test_text_advances.py`` compares the stored table with this machine's fonts.
+TEXT entities are drawn in the CAD program's own font, which this cannot measure.) The pairs
+the font kerns wider ("O-") are stored beside them. Run it again when a font changes;
+``tests/test_shaperapp/drawing/test_text_advances.py`` compares the stored table with this
+machine's fonts.
 CJK characters are not in the table: they are set square (``sheet.WIDE_ADVANCE``).
 """
 from __future__ import annotations

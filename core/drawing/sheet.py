@@ -276,10 +276,12 @@ class _Advances(dict):
 
 
 _ADVANCE = _Advances(ADVANCES)
-_BEFORE_ELLIPSIS = max((kern for pair, kern in KERNS.items() if pair[1] == "…"), default=0.0)   # none in DejaVu
+# the widest kern before an ellipsis (DejaVu Sans has none)
+_BEFORE_ELLIPSIS = max((kern for pair, kern in KERNS.items() if pair[1] == "…"), default=0.0)
 # a first character of a kerned pair, then a second: where a text may hold one (a search in C,
 # so the pairs of most texts, which have none, are not looked up one by one)
-_KERNED = re.compile("[%s][%s]" % tuple(re.escape("".join(sorted({pair[k] for pair in KERNS}))) for k in (0, 1)))
+_KERNED = re.compile("[%s][%s]" % tuple(re.escape("".join(sorted({pair[k] for pair in KERNS})))
+                                         for k in (0, 1)))
 
 
 def char_advance(ch: str) -> float:

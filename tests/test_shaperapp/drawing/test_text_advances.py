@@ -62,7 +62,8 @@ def test_the_stored_table_is_this_machines_fonts(fonts, outline, tool):
     assert QFontInfo(report_font("en")).family() == PREFERRED_LATIN[0]
     advances, kerns = tool.measured()
     assert set(advances) == set(ADVANCES) and set(kerns) == set(KERNS)
-    off = {ch: (ADVANCES[ch], value) for ch, value in advances.items() if abs(ADVANCES[ch] - value) > 0.002}
+    off = {ch: (ADVANCES[ch], value) for ch, value in advances.items()
+           if abs(ADVANCES[ch] - value) > 0.002}
     off.update({pair: (KERNS[pair], value) for pair, value in kerns.items() if abs(KERNS[pair] - value) > 0.002})
     assert not off, f"run tools/text_advances.py again: {off}"
 
@@ -120,8 +121,12 @@ def test_the_gear_sheets_values_are_drawn_unsqueezed(fonts, monkeypatch):
     texts = {item.text: item for item in built[0].items if isinstance(item, Text)}
     for value in ("6 mm", "78.0000 mm", "Module m", "Shift factor x"):
         assert _drawn_width(texts[value], metrics, cap)[1] == pytest.approx(1.0), value
-    # the table's values in one height, as the cells have room for (6 mm was one size smaller)
-    assert texts["6 mm"].height == texts["78.0000 mm"].height == texts["13"].height
+    # the table's values in one height: a value of the pair fills both gears' columns
+    # ("162.0000 (159.0000) mm" was a size smaller in the pinion's column beside an empty one)
+    values = ("6 mm", "78.0000 mm", "13", "162.0000 (159.0000) mm", "0.500000, 0.033475", "62.6124, 25.2166 mm")
+    assert {texts[value].height for value in values} == {3.5}
+    pinion, gear = texts["13"], texts["40"]
+    assert texts["6 mm"].position[0] == pytest.approx((pinion.position[0] + gear.position[0]) / 2.0)
 
 
 def test_the_chinese_sheets_letters_beside_chinese_are_unsqueezed(fonts, monkeypatch):
