@@ -17,7 +17,7 @@ from core.drawing.forces import forces_sheet
 from core.drawing.labels import place
 from core.drawing.motion import motion_sheet
 from core.drawing.checks import outside_border, overlapping_texts
-from core.drawing.sheet import Circle, Sheet, Text, line, paper
+from core.drawing.sheet import Circle, Sheet, Text, char_advance, line, paper
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.linkage.geometry import synthesize
@@ -50,7 +50,7 @@ def test_a_line_through_the_letters_crosses_them_one_along_the_box_does_not():
 
 def test_a_circle_a_closed_outline_and_a_subscript_are_checked_too():
     label = Text("RO2", (100.0, 100.0), 3.5, "lb", subscripts=((1, 3),))
-    index_x = 100.0 + 3.5 * 0.78 + 1.0            # inside the subscript run, 2.5 mm high
+    index_x = 100.0 + 3.5 * char_advance("R") + 1.0    # inside the subscript run, 2.5 mm high
     assert crossed(label, Circle((index_x, 99.0), 0.3)) == []          # inside, touching nothing
     assert crossed(label, Circle((index_x + 0.8, 98.9), 0.7)) == ["RO2"]    # into the index's body
     box = line([(95.0, 101.0), (99.0, 101.0), (99.0, 90.0), (95.0, 90.0)], closed=True)
