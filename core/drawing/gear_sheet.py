@@ -91,7 +91,7 @@ def gear_sheet(pair: GearPair, paper: Paper, *, labels: Mapping[str, str] = ENGL
     row = min(row, (top - title[3] - GAP) / len(cells))
     table_area = (bx1 - table_w, title[3] + GAP, bx1, top + 2 * CAPTION)
     items = table((bx1 - table_w, top), (0.46 * table_w, 0.27 * table_w, 0.27 * table_w), cells,
-                  row, 3.5, aligns="lcc")
+                  row, 3.5, aligns="lcc", spans=True)
     items.append(caption(lab["figures"], ((table_area[0] + bx1) / 2.0, table_area[3]), table_w, CAPTION))
     areas["figures"] = (table_area, tuple(items))
     line_area = (bx1 - table_w, table_area[3] + GAP, bx1, by1 - GAP)

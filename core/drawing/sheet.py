@@ -15,6 +15,7 @@ heights GB/T 14691's series; the title block (GB/T 10609.1) is
 """
 from __future__ import annotations
 
+import bisect
 import itertools
 import math
 import re
@@ -27,6 +28,7 @@ import numpy as np
 
 from core.forces.polygons import nice_scale
 
+from .advances import ADVANCES, KERNS
 from .dxf import OUTLINE, TEXT, THIN
 from .paper import BINDING_MARGIN, PAPERS, Box, Paper, paper  # noqa: F401  (imported from here too)
 
@@ -35,11 +37,15 @@ Pair = tuple[float, float]
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
 SUBSCRIPT_DROP = 0.25     # a subscript's baseline under its text's, in text heights
 SUPERSCRIPT_RAISE = 0.45  # a superscript's baseline above the text's, × its height
-# Estimated advance per character as a fraction of the text height: CJK characters are
-# square, Latin ones narrower. The renderers squeeze a text that comes out wider than this
-# estimate, so the estimate is what the layout and the overlap checks can rely on.
+# Estimated advance per character as a fraction of the text height. CJK characters are set
+# square (WIDE_ADVANCE: the renderers condense their fonts' wider CJK glyphs to it, as GB
+# drawings write Chinese narrower than the Latin font would); every other character at its
+# own advance in the renderers' fonts (``advances.ADVANCES``, the largest of them), and one
+# not measured there at the widest measured advance, so no renderer squeezes it. A renderer
+# squeezes a text that comes out wider than the estimate, so the estimate is what the
+# layout and the overlap checks can rely on.
 WIDE_ADVANCE = 1.05
-NARROW_ADVANCE = 0.78
+UNKNOWN_ADVANCE = max(ADVANCES.values())
 # GB/T 14690: 1:1, 1:2, 1:5, 1:10 … preferred, 1:1.5, 1:2.5, 1:3, 1:4, 1:6 … allowed (as the report)
 SCALE_MANTISSAS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0)
 
@@ -233,18 +239,20 @@ def marked_text(text: str, position: Pair, height: float, align: str = "lb", roo
 
 def clipped(text: str, room: float, height: float) -> str:
     """``text`` cut with an ellipsis to fit ``room`` at ``height``: its longest start whose
-    width with "…" (:func:`text_width`'s sum, from counts of wide characters kept as it goes)
-    fits. Measuring each shorter start again was quadratic in the text: the title block
-    tries thousands of line breaks of a 200-character name, 15 s a sheet."""
+    width with "…" (:func:`text_width`'s sum, from the running sum of the advances, taken
+    once, searched by bisection) fits. Measuring each shorter start again was quadratic in
+    the text: the title block tries thousands of line breaks of a 200-character name, 15 s
+    a sheet."""
     if text_width(text, height) <= room:
         return text
-    wide = list(itertools.accumulate((unicodedata.east_asian_width(ch) in "WF" for ch in text), initial=0))
-    ellipsis = int(unicodedata.east_asian_width("…") in "WF")
-    for k in range(len(text), 0, -1):
-        w = wide[k] + ellipsis
-        if height * (WIDE_ADVANCE * w + NARROW_ADVANCE * (k + 1 - w)) <= room:
-            return text[:k] + "…"
-    return ""
+    advances = map(_ADVANCE.__getitem__, text)
+    if _KERNED.search(text):
+        kerns = map(KERNS.get, map(str.__add__, "\0" + text, text), itertools.repeat(0.0))  # before each
+        advances = map(float.__add__, advances, kerns)
+    starts = list(itertools.accumulate(advances, initial=0.0))     # nondecreasing
+    ellipsis = _ADVANCE["…"] + _BEFORE_ELLIPSIS
+    k = min(bisect.bisect_right(starts, room, key=lambda start: height * (start + ellipsis)) - 1, len(text))
+    return text[:k] + "…" if k > 0 else ""
 
 
 def clipped_spans(text: str, spans: tuple[tuple[int, int], ...], room: float,
@@ -257,10 +265,38 @@ def clipped_spans(text: str, spans: tuple[tuple[int, int], ...], room: float,
     return cut, tuple((a, min(b, kept)) for a, b in spans if a < kept)
 
 
+class _Advances(dict):
+    """:data:`ADVANCES`, and a character not in it at its fallback (CJK square, any other
+    at the widest measured advance), kept once looked up: a label search measures the same
+    few characters millions of times."""
+
+    def __missing__(self, ch: str) -> float:
+        self[ch] = WIDE_ADVANCE if unicodedata.east_asian_width(ch) in "WF" else UNKNOWN_ADVANCE
+        return self[ch]
+
+
+_ADVANCE = _Advances(ADVANCES)
+# the widest kern before an ellipsis (DejaVu Sans has none)
+_BEFORE_ELLIPSIS = max((kern for pair, kern in KERNS.items() if pair[1] == "…"), default=0.0)
+# a first character of a kerned pair, then a second: where a text may hold one (a search in C,
+# so the pairs of most texts, which have none, are not looked up one by one)
+_KERNED = re.compile("[%s][%s]" % tuple(re.escape("".join(sorted({pair[k] for pair in KERNS})))
+                                         for k in (0, 1)))
+
+
+def char_advance(ch: str) -> float:
+    """``ch``'s estimated advance in text heights (see :data:`WIDE_ADVANCE`)."""
+    return _ADVANCE[ch]
+
+
 def text_width(text: str, height: float) -> float:
-    """Estimated width of ``text`` at ``height`` mm."""
-    wide = sum(1 for ch in text if unicodedata.east_asian_width(ch) in "WF")
-    return height * (WIDE_ADVANCE * wide + NARROW_ADVANCE * (len(text) - wide))
+    """Estimated width of ``text`` at ``height`` mm: the sum of its characters' advances
+    (:func:`char_advance`) and of the few pairs the font kerns wider ("O-": KERNS), never
+    narrower than a renderer draws it."""
+    advance = sum(map(_ADVANCE.__getitem__, text))
+    if _KERNED.search(text):
+        advance += sum(map(KERNS.get, map(str.__add__, text, text[1:]), itertools.repeat(0.0)))
+    return height * advance
 
 
 def _rotate(points: np.ndarray, degrees: float) -> np.ndarray:

@@ -7,9 +7,13 @@ so every point is flipped once and texts are drawn upright. Line widths and
 dash patterns are those of the sheet's layers (GB/T 4457.4, as the DXF has
 them), so the three files of one sheet look alike. A text comes out at its
 character height (the capitals' height) and never wider than the sheet's
-estimate of it: the layout's no-overlap guarantee holds on paper too.
+estimate of it: the layout's no-overlap guarantee holds on paper too. The
+estimate is each character's own advance in this font (``core.drawing.advances``),
+so only CJK characters are condensed, to the square the sheet reckons them.
 """
 from __future__ import annotations
+
+import itertools
 
 import numpy as np
 from pyqtgraph.functions import create_qpolygonf, ndarray_from_qpolygonf
@@ -17,7 +21,7 @@ from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QFontMetricsF, QPainter, QPainterPath, QPen, QPolygonF
 
 from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
-from core.drawing.sheet import Circle, Polyline, Sheet, Text
+from core.drawing.sheet import WIDE_ADVANCE, Circle, Polyline, Sheet, Text, char_advance, text_width
 from core.drawing.text_runs import closed_up
 
 from .fonts import report_font
@@ -94,20 +98,36 @@ def _polygon(points, height: float) -> QPolygonF:
     return poly
 
 
-def _drawn_width(item: Text, metrics: QFontMetricsF, cap: float) -> tuple[float, float]:
-    """The width ``item`` is drawn at, paper mm, and the squeeze that keeps it within the
-    sheet's estimate of its width."""
+def _segments(item: Text, metrics: QFontMetricsF, cap: float) -> list[tuple[str, float, float]]:
+    """``item``'s text in runs of CJK and of other characters, each with its advance in the
+    font's pixels and the squeeze that keeps it within the sheet's estimate of it. Why
+    apart: the estimate sets a CJK character square (``WIDE_ADVANCE``), narrower than the
+    CJK font draws it, and every other character at its own advance; one squeeze for the
+    whole text condensed the letters of "模数 m" with the Chinese."""
     k = item.height / cap
-    advance = metrics.horizontalAdvance(item.text)
-    squeeze = min(1.0, item.width / k / advance) if advance > 0 else 1.0
-    return advance * squeeze * k, squeeze
+    segments = []
+    for _, chars in itertools.groupby(item.text, lambda ch: char_advance(ch) == WIDE_ADVANCE):
+        part = "".join(chars)
+        advance = metrics.horizontalAdvance(part)
+        squeeze = min(1.0, text_width(part, item.height) / k / advance) if advance > 0 else 1.0
+        segments.append((part, advance, squeeze))
+    return segments
+
+
+def _drawn_width(item: Text, metrics: QFontMetricsF, cap: float) -> tuple[float, float]:
+    """The width ``item`` is drawn at, paper mm, and the least squeeze of its characters
+    other than CJK (1 where the estimate holds them: :func:`_segments`)."""
+    segments = _segments(item, metrics, cap)
+    width = sum(advance * squeeze for _, advance, squeeze in segments) * item.height / cap
+    narrow = [squeeze for part, _, squeeze in segments if char_advance(part[0]) != WIDE_ADVANCE]
+    return width, min(narrow, default=1.0)
 
 
 def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QFontMetricsF,
           cap: float) -> None:
     k = item.height / cap
-    width, squeeze = _drawn_width(item, metrics, cap)
-    width /= k
+    segments = _segments(item, metrics, cap)
+    width = sum(advance * squeeze for _, advance, squeeze in segments)
     dx = {"l": 0.0, "c": -width / 2.0, "r": -width}[item.align[0]]
     dy = {"b": 0.0, "m": cap / 2.0, "t": cap}[item.align[1]]
     painter.save()
@@ -117,6 +137,10 @@ def _text(painter: QPainter, item: Text, height: float, font: QFont, metrics: QF
     painter.setFont(font)
     painter.setPen(QPen(INK))
     painter.translate(dx, dy)
-    painter.scale(squeeze, 1.0)
-    painter.drawText(QPointF(0.0, 0.0), item.text)
+    for part, advance, squeeze in segments:
+        painter.save()
+        painter.scale(squeeze, 1.0)
+        painter.drawText(QPointF(0.0, 0.0), part)
+        painter.restore()
+        painter.translate(advance * squeeze, 0.0)
     painter.restore()

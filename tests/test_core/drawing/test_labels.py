@@ -17,7 +17,7 @@ from core.drawing.forces import forces_sheet
 from core.drawing.labels import place
 from core.drawing.motion import motion_sheet
 from core.drawing.checks import outside_border, overlapping_texts
-from core.drawing.sheet import Circle, Sheet, Text, line, paper
+from core.drawing.sheet import Circle, Sheet, Text, char_advance, line, paper
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.linkage.geometry import synthesize
@@ -37,20 +37,20 @@ def crossed(*items) -> list[str]:
 # ---- the check ---------------------------------------------------------------------------
 
 def test_a_line_through_the_letters_crosses_them_one_along_the_box_does_not():
-    """"AB" at (100, 100), 5 mm high, 7.8 mm wide: a line through its middle crosses it;
+    """"AB" at (100, 100), 5 mm high, 9.39 mm wide: a line through its middle crosses it;
     one 0.2 mm under its baseline (in the descender's room, where a leader line ends),
     one beyond its end and one above its capitals do not."""
     label = Text("AB", (100.0, 100.0), 5.0, "lb")
     assert crossed(label, line([(90.0, 102.5), (120.0, 102.5)])) == ["AB"]
     assert crossed(label, line([(104.0, 90.0), (104.0, 110.0)])) == ["AB"]
     assert crossed(label, line([(90.0, 99.8), (120.0, 99.8)])) == []
-    assert crossed(label, line([(108.5, 90.0), (108.5, 110.0)])) == []
+    assert crossed(label, line([(110.1, 90.0), (110.1, 110.0)])) == []
     assert crossed(label, line([(90.0, 105.3), (120.0, 105.3)])) == []
 
 
 def test_a_circle_a_closed_outline_and_a_subscript_are_checked_too():
     label = Text("RO2", (100.0, 100.0), 3.5, "lb", subscripts=((1, 3),))
-    index_x = 100.0 + 3.5 * 0.78 + 1.0            # inside the subscript run, 2.5 mm high
+    index_x = 100.0 + 3.5 * char_advance("R") + 1.0    # inside the subscript run, 2.5 mm high
     assert crossed(label, Circle((index_x, 99.0), 0.3)) == []          # inside, touching nothing
     assert crossed(label, Circle((index_x + 0.8, 98.9), 0.7)) == ["RO2"]    # into the index's body
     box = line([(95.0, 101.0), (99.0, 101.0), (99.0, 90.0), (95.0, 90.0)], closed=True)

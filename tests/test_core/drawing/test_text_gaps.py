@@ -26,16 +26,16 @@ def crowded(*items) -> list[tuple[str, str]]:
 # ---- the check ---------------------------------------------------------------------------
 
 def test_two_numbers_side_by_side_need_a_word_space_between_their_bodies():
-    """"105" 2.5 mm high is 5.85 mm wide (0.78 h a digit); its body is its box less 0.3 mm
+    """"105" 2.5 mm high is 6.54 mm wide (0.872 h a digit); its body is its box less 0.3 mm
     each side. Boxes touching leave 0.6 mm between the bodies, a letter space ("105120");
     0.85 mm between the boxes leaves 1.45 mm, under e = 1.5 mm; 0.95 mm leaves 1.55 mm."""
     first = Text("105", (100.0, 100.0), 2.5, "lb")
-    assert crowded(first, Text("120", (105.85, 100.0), 2.5, "lb")) == [("105", "120")]
-    assert crowded(first, Text("120", (105.85 + 0.85, 100.0), 2.5, "lb")) == [("105", "120")]
-    assert crowded(first, Text("120", (105.85 + 0.95, 100.0), 2.5, "lb")) == []
+    assert crowded(first, Text("120", (106.54, 100.0), 2.5, "lb")) == [("105", "120")]
+    assert crowded(first, Text("120", (106.54 + 0.85, 100.0), 2.5, "lb")) == [("105", "120")]
+    assert crowded(first, Text("120", (106.54 + 0.95, 100.0), 2.5, "lb")) == []
     assert crowded(first, Text("120", (103.0, 100.0), 2.5, "lb")) == [("105", "120")]    # overlapping
     # the smaller text's word space counts: 1.5 mm beside a 5 mm one, not 3 mm
-    assert crowded(first, Text("X", (105.85 + 0.95, 100.0), 5.0, "lb")) == []
+    assert crowded(first, Text("X", (106.54 + 0.95, 100.0), 5.0, "lb")) == []
 
 
 def test_lines_one_over_another_may_stand_at_the_standards_line_spacing():
@@ -51,7 +51,7 @@ def test_a_turned_text_counts_its_own_line():
     """Two texts turned 90° run along y: end to end along their baseline they are side by
     side (a word space, 1.5 mm between bodies), across it one over the other."""
     first = Text("105", (100.0, 100.0), 2.5, "lb", rotation=90.0)
-    along = Text("120", (100.0, 105.85 + 0.85), 2.5, "lb", rotation=90.0)     # 1.45 mm: too near
+    along = Text("120", (100.0, 106.54 + 0.85), 2.5, "lb", rotation=90.0)     # 1.45 mm: too near
     assert crowded(first, along) == [("105", "120")]
     across = Text("120", (100.0 - 2.5 * 1.4, 100.0), 2.5, "lb", rotation=90.0)   # at 1.4 h
     assert crowded(first, across) == []
