@@ -8,7 +8,7 @@ import math
 from dataclasses import replace
 
 import pytest
-from hypothesis import assume, given, settings, strategies as st
+from hypothesis import assume, example, given, settings, strategies as st
 
 from core.base.errors import DesignError
 from core.gear import GearPairInputs, design_pair, pair_checks
@@ -61,6 +61,11 @@ def make(d: dict):
 
 @settings(max_examples=300, deadline=None)
 @given(pairs)
+# gear 1's tip 2e-6 mm from pointed: raising x1 (the direction that helps undercut1, tip2 and
+# interference2, all passing) by 1e-4 refuses the pair, which the test took for a failure
+# (drawn by a thorough run, seed 1203, 30 November)
+@example(dict(z1=21, z2=21, module_mm=0.5, pressure_angle_deg=24.0, addendum=1.0956573829885858,
+              clearance=0.125, mode="given", x1=1.095703125, x2=-0.21890652099804514, y=0.0))
 def test_the_derivative_is_the_finite_difference_and_the_advice_helps(d):
     try:
         pair = make(d)
@@ -84,8 +89,23 @@ def test_the_derivative_is_the_finite_difference_and_the_advice_helps(d):
                 (check, name)
     for check in CHECKS:
         for move in helpful_moves(pair, check):
-            after = margins(moved(pair, move.name, move.sign * 1e-4))[check]
-            assert after > base[check], (check, move)
+            after = _after_a_small_step(pair, move)
+            if after is not None:
+                assert after[check] > base[check], (check, move)
+
+
+def _after_a_small_step(pair, move) -> dict[str, float] | None:
+    """The margins after a small step of ``move`` (1e-4, or less where that is refused),
+    None where every step down to 1e-8 is refused: the pair stands at the edge of a refusal (a
+    tip a hair from pointed), where no step of that change can be typed. The derivative's
+    direction still holds there; the advice leaves such a change out (core.gear.checks.
+    advised_moves, whose amounts test_gear_amounts.py follows)."""
+    for step in (1e-4, 1e-6, 1e-8):
+        try:
+            return margins(moved(pair, move.name, move.sign * step))
+        except DesignError:
+            continue
+    return None
 
 
 def test_the_issues_pair_is_advised_what_helps():
