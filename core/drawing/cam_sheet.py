@@ -65,6 +65,7 @@ ENGLISH = {
 }
 POINTS = 1440                 # a quarter degree of cam angle apart, as the cam's DXF
 CURVE_STEP_DEG = 0.5
+NAMED_CLEAR = 2.0              # paper mm a dimension's text keeps off a point named after it
 SECTOR_ROOM = (22.0, 10.0)    # paper mm beside and above/below the cam for the sectors' angles
 ENLARGEMENTS = (2.0, 2.5, 4.0, 5.0)     # GB/T 14690's enlargements up to 5:1 (10:1 is for details)
 SMALL_ROW = 6.0               # table rows on A2 and A3, mm (3.5 mm text still fits)
@@ -190,11 +191,11 @@ def _profile(cam: Cam, area: Box, lab: Mapping[str, str]) -> tuple[float, Placem
     pts = o + r_arrow * np.column_stack([np.cos(arc), np.sin(arc)])
     items.append(line(pts[:-3], THIN))
     items += arrow(pts[-4], pts[-1], THIN)
-    dims = cam_dimensions(o, pivot, b0, place.length(r0), outer, scale, items, box)
+    mids = [o + (ray_out - 2.0) * np.array([math.cos(mid), math.sin(mid)]) for mid, _ in sectors]
+    dims = cam_dimensions(o, pivot, b0, place.length(r0), outer, scale, items, box, np.array(mids))
     for dim in dims:
         items += [*dim.parts, *dim.kept]
     room = Room(items, within=box, taken=[d.text.box() for d in dims])   # the labels after all the lines
-    mids = [o + (ray_out - 2.0) * np.array([math.cos(mid), math.sin(mid)]) for mid, _ in sectors]
     room.name(mids)                            # each angle read as its own arc's
     for (mid, caption_text), at in zip(sectors, mids):
         u = np.array([math.cos(mid), math.sin(mid)])
@@ -229,14 +230,18 @@ def sector_arc(o: np.ndarray, radius: float, start: float, span: float) -> list[
 
 
 def cam_dimensions(o: np.ndarray, pivot: np.ndarray, b0: np.ndarray, r0: float, outer: float,
-                   scale: float, drawn: list[Item], within: Box) -> list[Dimension]:
+                   scale: float, drawn: list[Item], within: Box,
+                   named: np.ndarray = np.empty((0, 2))) -> list[Dimension]:
     """The cam's three sizes a teacher checks on the drawing, with their true values (the
     sheet is 1:scale): the centre distance a = OA beyond the cam (under it, else over it),
     the arm l = AB0 beside the arm and the base radius r0 from O to the base circle, each
     the first of its spots whose text no line crosses (of ``drawn``, of the dimensions
     before it, nor its own: a led text can lie across its own dimension line), whose lines
     cross no text of the dimensions before it, and which lies ``within`` (else the least
-    crossed); of those, the one whose leader crosses the fewest lines."""
+    crossed); of those, the one whose leader crosses the fewest lines. A text over one of
+    the points ``named`` later (the sectors' arcs, whose angles are placed after the
+    dimensions) counts as crossed: the arm's text, narrower once set at its font's widths, sat
+    on the rise sector's arc and left its angle no spot (a random cam on A3)."""
     ways = np.radians(np.r_[240.0:360.0:15.0, 225.0:90.0:-15.0, 0.0:90.0:15.0])
     options = {
         "a": [sd.aligned(tuple(pivot), tuple(o), off, "a", scale) for off in (outer + 8.0, -(outer + 8.0))],
@@ -252,7 +257,9 @@ def cam_dimensions(o: np.ndarray, pivot: np.ndarray, b0: np.ndarray, r0: float, 
         apart = not any(boxes_meet(box, d.text.box()) for d in chosen)
         own = strokes([*dim.parts, *dim.kept])
         crossed = (sd.text_crossings(dim.text, np.vstack([segs, own]))
-                   + sum(sd.text_crossings(d.text, own) for d in chosen))
+                   + sum(sd.text_crossings(d.text, own) for d in chosen)
+                   + int(np.sum((named[:, 0] >= box[0] - NAMED_CLEAR) & (named[:, 0] <= box[2] + NAMED_CLEAR)
+                                & (named[:, 1] >= box[1] - NAMED_CLEAR) & (named[:, 1] <= box[3] + NAMED_CLEAR))))
         return (0 if inside and apart else 1, crossed, int(crossings_each(strokes(dim.kept), segs).sum()))
 
     for candidates in options.values():
