@@ -29,7 +29,7 @@ from core.cam.table import follower_peaks
 from . import sheet_dims as sd
 from .charts import ARROW, Curve, arrow, chart, scale_notes
 from .dxf import CENTER, OUTLINE, THIN
-from .labels import Room, boxes_meet
+from .labels import Room, box_distance, boxes_meet
 from .motion import CAPTION, GAP, TABLE_ROW, caption
 from .segments import crossings_each, strokes
 from .sheet import (Box, Circle, Item, Paper, Placement, Sheet, fit, frame_items, line, marked,
@@ -258,8 +258,7 @@ def cam_dimensions(o: np.ndarray, pivot: np.ndarray, b0: np.ndarray, r0: float, 
         own = strokes([*dim.parts, *dim.kept])
         crossed = (sd.text_crossings(dim.text, np.vstack([segs, own]))
                    + sum(sd.text_crossings(d.text, own) for d in chosen)
-                   + int(np.sum((named[:, 0] >= box[0] - NAMED_CLEAR) & (named[:, 0] <= box[2] + NAMED_CLEAR)
-                                & (named[:, 1] >= box[1] - NAMED_CLEAR) & (named[:, 1] <= box[3] + NAMED_CLEAR))))
+                   + int(np.sum(box_distance(box, named) <= NAMED_CLEAR)))
         return (0 if inside and apart else 1, crossed, int(crossings_each(strokes(dim.kept), segs).sum()))
 
     for candidates in options.values():

@@ -271,7 +271,7 @@ class _Advances(dict):
     few characters millions of times."""
 
     def __missing__(self, ch: str) -> float:
-        self[ch] = WIDE_ADVANCE if unicodedata.east_asian_width(ch) in "WF" else UNKNOWN_ADVANCE
+        self[ch] = WIDE_ADVANCE if is_square(ch) else UNKNOWN_ADVANCE
         return self[ch]
 
 
@@ -282,6 +282,11 @@ _BEFORE_ELLIPSIS = max((kern for pair, kern in KERNS.items() if pair[1] == "…"
 # so the pairs of most texts, which have none, are not looked up one by one)
 _KERNED = re.compile("[%s][%s]" % tuple(re.escape("".join(sorted({pair[k] for pair in KERNS})))
                                          for k in (0, 1)))
+
+
+def is_square(ch: str) -> bool:
+    """Set square (:data:`WIDE_ADVANCE`, renderers condense it): CJK the table lacks."""
+    return ch not in ADVANCES and unicodedata.east_asian_width(ch) in "WF"
 
 
 def char_advance(ch: str) -> float:

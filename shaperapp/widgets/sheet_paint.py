@@ -21,7 +21,7 @@ from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QFontMetricsF, QPainter, QPainterPath, QPen, QPolygonF
 
 from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
-from core.drawing.sheet import WIDE_ADVANCE, Circle, Polyline, Sheet, Text, char_advance, text_width
+from core.drawing.sheet import Circle, Polyline, Sheet, Text, is_square, text_width
 from core.drawing.text_runs import closed_up
 
 from .fonts import report_font
@@ -106,7 +106,7 @@ def _segments(item: Text, metrics: QFontMetricsF, cap: float) -> list[tuple[str,
     whole text condensed the letters of "模数 m" with the Chinese."""
     k = item.height / cap
     segments = []
-    for _, chars in itertools.groupby(item.text, lambda ch: char_advance(ch) == WIDE_ADVANCE):
+    for _, chars in itertools.groupby(item.text, is_square):
         part = "".join(chars)
         advance = metrics.horizontalAdvance(part)
         squeeze = min(1.0, text_width(part, item.height) / k / advance) if advance > 0 else 1.0
@@ -119,7 +119,7 @@ def _drawn_width(item: Text, metrics: QFontMetricsF, cap: float) -> tuple[float,
     other than CJK (1 where the estimate holds them: :func:`_segments`)."""
     segments = _segments(item, metrics, cap)
     width = sum(advance * squeeze for _, advance, squeeze in segments) * item.height / cap
-    narrow = [squeeze for part, _, squeeze in segments if char_advance(part[0]) != WIDE_ADVANCE]
+    narrow = [squeeze for part, _, squeeze in segments if not is_square(part[0])]
     return width, min(narrow, default=1.0)
 
 
