@@ -759,64 +759,12 @@
         <translation>速度不均匀系数</translation>
     </message>
     <message>
-        <source>Idle margin at each end of the stroke</source>
-        <translation>行程两端的空刀量</translation>
-    </message>
-    <message>
-        <source>Rod mass</source>
-        <translation>连杆质量</translation>
-    </message>
-    <message>
-        <source>Block mass</source>
-        <translation>滑块质量</translation>
-    </message>
-    <message>
-        <source>Crank mass</source>
-        <translation>曲柄质量</translation>
-    </message>
-    <message>
-        <source>Gravity</source>
-        <translation>重力</translation>
-    </message>
-    <message>
         <source>not counted</source>
         <translation>不计</translation>
     </message>
     <message>
         <source>Other rotating parts</source>
         <translation>其他转动构件</translation>
-    </message>
-    <message>
-        <source>Rise law</source>
-        <translation>推程运动规律</translation>
-    </message>
-    <message>
-        <source>Return law</source>
-        <translation>回程运动规律</translation>
-    </message>
-    <message>
-        <source>parabolic</source>
-        <translation>等加速等减速</translation>
-    </message>
-    <message>
-        <source>cosine</source>
-        <translation>余弦加速度</translation>
-    </message>
-    <message>
-        <source>sine (cycloidal)</source>
-        <translation>正弦加速度（摆线）</translation>
-    </message>
-    <message>
-        <source>3-4-5 polynomial</source>
-        <translation>3-4-5 多项式</translation>
-    </message>
-    <message>
-        <source>Allowed pressure angle, return</source>
-        <translation>回程许用压力角</translation>
-    </message>
-    <message>
-        <source>Roller radius</source>
-        <translation>滚子半径</translation>
     </message>
     <message>
         <source>Base radius</source>
@@ -827,28 +775,8 @@
         <translation>凸轮中心距</translation>
     </message>
     <message>
-        <source>Hub radius</source>
-        <translation>轮毂半径</translation>
-    </message>
-    <message>
-        <source>Pivot boss radius</source>
-        <translation>摆动中心凸台半径</translation>
-    </message>
-    <message>
-        <source>Least clearance</source>
-        <translation>最小间隙</translation>
-    </message>
-    <message>
         <source>Shift factors</source>
         <translation>变位系数</translation>
-    </message>
-    <message>
-        <source>Centre distance</source>
-        <translation>中心距</translation>
-    </message>
-    <message>
-        <source>Pressure angle</source>
-        <translation>压力角</translation>
     </message>
     <message>
         <source>Addendum</source>
@@ -857,14 +785,6 @@
     <message>
         <source>Clearance</source>
         <translation>顶隙系数</translation>
-    </message>
-    <message>
-        <source>Least tip thickness</source>
-        <translation>最小齿顶厚</translation>
-    </message>
-    <message>
-        <source>Least contact ratio</source>
-        <translation>最小重合度</translation>
     </message>
     <message>
         <source>Design report (00-report.pdf)</source>
