@@ -755,6 +755,38 @@
         <translation>齿轮2干涉</translation>
     </message>
     <message>
+        <source>Coefficient of speed fluctuation</source>
+        <translation>速度不均匀系数</translation>
+    </message>
+    <message>
+        <source>not counted</source>
+        <translation>不计</translation>
+    </message>
+    <message>
+        <source>Other rotating parts</source>
+        <translation>其他转动构件</translation>
+    </message>
+    <message>
+        <source>Base radius</source>
+        <translation>基圆半径</translation>
+    </message>
+    <message>
+        <source>Centre distance of the cam</source>
+        <translation>凸轮中心距</translation>
+    </message>
+    <message>
+        <source>Shift factors</source>
+        <translation>变位系数</translation>
+    </message>
+    <message>
+        <source>Addendum</source>
+        <translation>齿顶高系数</translation>
+    </message>
+    <message>
+        <source>Clearance</source>
+        <translation>顶隙系数</translation>
+    </message>
+    <message>
         <source>Design report (00-report.pdf)</source>
         <translation>设计说明书（00-report.pdf）</translation>
     </message>

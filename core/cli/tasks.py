@@ -242,8 +242,10 @@ def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], 
     design = row.get("design", "")
     if design:
         argv += ["--design", beside(where, design, here)]
+        given["--design"] = "design"
     elif base is not None:
         argv += ["--design", base]
+        given["--design"] = ""              # the base's: named as the teacher gave it, --base
     return argv, given
 
 
@@ -264,11 +266,14 @@ _OPTION = re.compile(r"^(?:argument )?(--[\w-]+)(?:/\S+)?(?: \(([^)]*)\))?: (.*)
 
 def _located(where: str, message: str, given: dict[str, str]) -> str:
     """A command-line message ("--K: must be > 1 (got 0.9)") as the table's: the column that
-    gave the option, else the message as it is after the line."""
+    gave the option (a value of the row's design file, "--design (cam.rise_deg)", as its
+    column design; of the base file, as --base), else the message as it is after the line."""
     found = _OPTION.match(message)
     if found and found.group(1) in given:
         part = f" ({found.group(2)})" if found.group(2) else ""
-        return f"{where}, column {given[found.group(1)]}{part}: {found.group(3)}"
+        column = given[found.group(1)]
+        return (f"{where}, column {column}{part}: {found.group(3)}" if column
+                else f"{where}: --base{part}: {found.group(3)}")
     return f"{where}: {message}"
 
 

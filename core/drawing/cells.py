@@ -84,7 +84,7 @@ def table(top_left: Pair, widths: Sequence[float], rows: Sequence[Sequence[str]]
             if text:
                 align = aligns[c] if aligns else "c"
                 notation = r < header_rows or c not in plain
-                right = xs[-1] if ends[r] == c else xs[c + 1]
+                right = xs[-1] if 0 < ends[r] == c else xs[c + 1]     # 0: the row spans nothing
                 items.append(cell_text(text, (float(xs[c]), y1 - row_height, float(right), y1),
                                        text_height, align, layer, notation=notation))
     return items

@@ -13,6 +13,7 @@ from typing import Any, Mapping, Sequence
 import numpy as np
 
 from core.base.figure_text import figure_text
+from core.cam.defaults import BOSS_MM, CLEARANCE_MM, HUB_MM, RETURN_PRESSURE_DEG
 from .dxf import THIN
 from .labels import Room, free_spots, spot_boxes
 from .segments import strokes_meet_boxes
@@ -28,6 +29,8 @@ A4_LANDSCAPE = Paper("A4", 297.0, 210.0, 10.0)
 GRAVITY = 9.81
 SKETCH_DEG = 60.0           # the crank angle the sketch shows: the working stroke under way
 LEADER = 9.0                # a link's number this far from the link, on a thin leader, mm
+SKETCH_MM, LEAST_SKETCH_MM = 78.0, 40.0    # the sketch's height, and the least it gives up to the data
+LEAST_ROW_MM = 4.6          # a data row holds its 2.5 mm text and an index below it clear of the rules
 
 TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", "Student", "Number",
               "Class", "Date", "The mechanism (sketch to scale, crank at 60°)", "Data set",
@@ -38,7 +41,13 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "Allowed pressure angle", "Rise", "Outer dwell", "Return", "Pinion teeth",
               "Gear teeth", "Module", "Deliver", "Answer key", "page %1/%2", "failed checks",
               "speed", "none", "No.", ", ", "cam pressure angle", "undercut 1", "undercut 2", "tip 1", "tip 2",
-              "contact ratio", "interference 1", "interference 2")
+              "contact ratio", "interference 1", "interference 2", "Coefficient of speed fluctuation",
+              "Idle margin at each end of the stroke", "Rod mass", "Block mass", "Crank mass", "Gravity",
+              "not counted", "Other rotating parts", "Rise law", "Return law", "parabolic", "cosine",
+              "sine (cycloidal)", "3-4-5 polynomial", "Allowed pressure angle, return", "Roller radius",
+              "Base radius", "Centre distance of the cam", "Hub radius", "Pivot boss radius", "Least clearance",
+              "Shift factors", "Centre distance", "Pressure angle", "Addendum", "Clearance", "Least tip thickness",
+              "Least contact ratio")
 
 CHECK_WORDS = {"cam_pressure_angle": "cam pressure angle", "undercut1": "undercut 1", "undercut2": "undercut 2",
                "tip1": "tip 1", "tip2": "tip 2", "contact": "contact ratio", "interference1": "interference 1",
@@ -103,6 +112,7 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
                  [w("Ram weight"), "G_6", _weight(forces, "ram"), "N"],
                  [w("Cutting force"), "P", _n(forces["cut_force_N"]), "N"],
                  [w("Height of the cutting force"), "y_P", _n(forces["cut_height_mm"]), "mm"]]
+        rows += _flywheel_rows(forces, w)
     cam = doc.get("cam")
     if cam:
         rows += [[w("Follower arm"), "l_O_9_D", _n(cam["arm_mm"]), "mm"],
@@ -110,11 +120,65 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
                  [w("Allowed pressure angle"), "[α]", _n(cam["pressure_deg"]), "°"],
                  [w("Rise"), "Φ", _n(cam["rise_deg"]), "°"],
                  [w("Outer dwell"), "Φ_s", _n(cam["dwell_deg"]), "°"],
-                 [w("Return"), "Φ′", _n(cam["return_deg"]), "°"]]
+                 [w("Return"), "Φ′", _n(cam["return_deg"]), "°"],
+                 [w("Rise law"), "", w(LAW_WORDS.get(cam["rise_law"], cam["rise_law"])), ""],
+                 [w("Return law"), "", w(LAW_WORDS.get(cam["return_law"], cam["return_law"])), ""]]
+        rows += _given_rows(cam, _CAM_GIVEN, w)
     gear = doc.get("gear")
     if gear:
         rows += [[w("Pinion teeth"), "z_1", _n(gear["z1"]), ""], [w("Gear teeth"), "z_2", _n(gear["z2"]), ""],
                  [w("Module"), "m", _n(gear["module_mm"]), "mm"]]
+        if gear.get("x1") is not None and gear.get("x2") is not None:
+            rows.append([w("Shift factors"), "x_1, x_2", f"{_n(gear['x1'])}, {_n(gear['x2'])}", ""])
+        rows += _given_rows(gear, _GEAR_GIVEN, w)
+    return rows
+
+
+# inputs a task sheet lists only where the design file sets them (a default or blank is the
+# task book's, stated by the program): (key, word, symbol, unit, the value that needs no row)
+_FORCES_GIVEN = (("rod_mass_kg", "Rod mass", "m_5", "kg", 0.0), ("block_mass_kg", "Block mass", "m_3", "kg", 0.0),
+                 ("crank_mass_kg", "Crank mass", "m_2", "kg", 0.0))
+_CAM_GIVEN = (("return_pressure_deg", "Allowed pressure angle, return", "[α]′", "°", RETURN_PRESSURE_DEG),
+              ("roller_mm", "Roller radius", "r_r", "mm", None), ("base_mm", "Base radius", "r_0", "mm", None),
+              ("distance_mm", "Centre distance of the cam", "a", "mm", None),
+              ("hub_mm", "Hub radius", "", "mm", HUB_MM), ("boss_mm", "Pivot boss radius", "", "mm", BOSS_MM),
+              ("clearance_mm", "Least clearance", "", "mm", CLEARANCE_MM))
+_GEAR_GIVEN = (("centre_mm", "Centre distance", "a′", "mm", None),
+               ("pressure_angle_deg", "Pressure angle", "α", "°", 20.0), ("addendum", "Addendum", "h_a*", "", 1.0),
+               ("clearance", "Clearance", "c*", "", 0.25), ("tip_limit", "Least tip thickness", "s_a/m", "", 0.25),
+               ("contact_limit", "Least contact ratio", "ε", "", 1.2))
+
+LAW_WORDS = {"parabolic": "parabolic", "cosine": "cosine", "sine": "sine (cycloidal)", "poly345": "3-4-5 polynomial"}
+"""The cam's laws as the task sheet names them (``core.cam.defaults.LAWS``)."""
+
+
+def _given_rows(part: Mapping[str, Any], given, w) -> list[list[str]]:
+    """A row for each input of ``given`` the file sets to other than what needs no row."""
+    rows = []
+    for key, word, symbol, unit, usual in given:
+        value = part.get(key)
+        if value is not None and value != usual:
+            rows.append([w(word), symbol, _n(value), unit])
+    return rows
+
+
+def _flywheel_rows(forces: Mapping[str, Any], w) -> list[list[str]]:
+    """What else the answer key's torque and flywheel figures depend on: δ, the idle margin
+    (the task book states both: a task sheet without them leaves J_F and M_m unknowable, and
+    a teacher's ``delta`` or ``idle`` column went unseen), and the rest where it is set: the
+    other links' masses, gravity off, the other rotating parts (J_F − J_c)."""
+    delta = forces.get("delta", 1.0 / 30.0)
+    inverse, typed = 1.0 / delta, _n(delta)      # 1/30, the default, was typed as a fraction
+    whole = len(typed) > 8 and abs(inverse - round(inverse)) < 1e-9 * inverse
+    rows = [[w("Coefficient of speed fluctuation"), "[δ]", f"1/{round(inverse)}" if whole else typed, ""],
+            [w("Idle margin at each end of the stroke"), "", f"{_n(forces.get('idle_fraction', 0.05))} H", ""]]
+    rows += _given_rows(forces, _FORCES_GIVEN, w)
+    if forces.get("gravity") is False:
+        rows.append([w("Gravity"), "g", w("not counted"), ""])
+    rotors = forces.get("rotors") or []
+    if rotors:
+        rows.append([w("Other rotating parts"), "J, ω/ω_2",
+                     "; ".join(f"{_n(r['J_kg_m2'])}, {_n(r['speed_ratio'])}" for r in rotors), "kg·m², —"])
     return rows
 
 
@@ -139,12 +203,14 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y -= 7.0
     items.append(marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5))
     items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rb"))
-    box = (left + 4.0, y - 82.0, right - 4.0, y - 4.0)
+    rows = [[_w(labels, "Quantity"), _w(labels, "Symbol"), _w(labels, "Value"), _w(labels, "Unit")]]
+    rows += data_rows(doc, design, labels)
+    below = bottom + 12.0 + 6.0 * len(deliver) + 10.0         # the list to deliver, the table's title
+    sketch = min(SKETCH_MM, max(LEAST_SKETCH_MM, y - 4.0 - below - LEAST_ROW_MM * len(rows)))
+    box = (left + 4.0, y - 4.0 - sketch, right - 4.0, y - 4.0)
     items += _sketch(design, box)
     y = box[1] - 6.0
     items.append(Text(_w(labels, "Data set"), (left + 4.0, y), 3.5, "lm"))
-    rows = [[_w(labels, "Quantity"), _w(labels, "Symbol"), _w(labels, "Value"), _w(labels, "Unit")]]
-    rows += data_rows(doc, design, labels)
     height = min(6.0, (y - 4.0 - bottom - 12.0 - 6.0 * len(deliver)) / len(rows))
     items += table((left + 4.0, y - 4.0), (70.0, 28.0, 45.0, 24.0), rows, height, 3.5 if height >= 6 else 2.5,
                    aligns="lccc")

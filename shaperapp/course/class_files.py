@@ -16,9 +16,10 @@ from PySide6.QtCore import QCoreApplication
 from core.files.atomic import atomic_write
 from core.cli.answers import FIGURES, PER_SPEED, cell_text, failed_checks, key_csv, key_values
 from core.course_design.plan import PARTS
-from core.drawing.class_sheets import answer_pages, failed_text, task_sheet
+from core.drawing.class_sheets import LAW_WORDS, answer_pages, failed_text, task_sheet
 
 from shaperapp.drawing.render import pages_pdf
+from shaperapp.report.design_data import law_name
 
 translate = QCoreApplication.translate
 
@@ -77,7 +78,32 @@ def task_labels() -> dict[str, str]:
         "contact ratio": translate("ClassSheets", "contact ratio"),
         "interference 1": translate("ClassSheets", "interference 1"),
         "interference 2": translate("ClassSheets", "interference 2"),
+        "Coefficient of speed fluctuation": translate("ClassSheets", "Coefficient of speed fluctuation"),
+        "Idle margin at each end of the stroke": translate("Report", "Idle margin at each end of the stroke"),
+        "Rod mass": translate("messages", "Rod mass"),
+        "Block mass": translate("messages", "Block mass"),
+        "Crank mass": translate("messages", "Crank mass"),
+        "Gravity": translate("messages", "Gravity"),
+        "not counted": translate("ClassSheets", "not counted"),
+        "Other rotating parts": translate("ClassSheets", "Other rotating parts"),
+        "Rise law": translate("messages", "Rise law"),
+        "Return law": translate("messages", "Return law"),
+        "Allowed pressure angle, return": translate("messages", "Allowed pressure angle, return"),
+        "Roller radius": translate("messages", "Roller radius"),
+        "Base radius": translate("ClassSheets", "Base radius"),
+        "Centre distance of the cam": translate("ClassSheets", "Centre distance of the cam"),
+        "Hub radius": translate("messages", "Hub radius"),
+        "Pivot boss radius": translate("messages", "Pivot boss radius"),
+        "Least clearance": translate("messages", "Least clearance"),
+        "Shift factors": translate("ClassSheets", "Shift factors"),
+        "Centre distance": translate("GearResults", "Centre distance"),
+        "Pressure angle": translate("CamTab", "Pressure angle"),
+        "Addendum": translate("ClassSheets", "Addendum"),
+        "Clearance": translate("ClassSheets", "Clearance"),
+        "Least tip thickness": translate("GearMessages", "Least tip thickness"),
+        "Least contact ratio": translate("GearMessages", "Least contact ratio"),
     }
+    words.update({word: law_name(law) for law, word in LAW_WORDS.items()})     # the report's words
     return words
 
 

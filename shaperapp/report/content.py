@@ -218,8 +218,9 @@ def _margin_table(design: Design) -> Table:
              "guide_below_tip": translate("Report", "guide ≤ L3 (block reaches the guide)"),
              "rod_reach": translate("Report", "rod reaches the guide over the whole cycle"),
              "rod_dead_centre": translate("Report", "rod never in line with the lever (no dead centre)")}
-    rows = [[names[m.rule], f"{m.value:.4f} {m.unit}".strip(), f"{m.limit:.4f} {m.unit}".strip(),
-             f"{m.margin:.4f} {m.unit}".strip()] for m in margins(design)]
+    kind = {"mm": "length", "": "ratio"}          # one precision per kind, as the dimensions above
+    rows = [[names[m.rule]] + [f"{figure_text(kind[m.unit], v)} {m.unit}".strip() for v in (m.value, m.limit, m.margin)]
+            for m in margins(design)]
     return Table([translate("Report", "Rule"), translate("Report", "Value"),
                   translate("Report", "Limit"), translate("Report", "Margin")], rows,
                  translate("Report", "Validation margins"))

@@ -53,8 +53,8 @@ def load_rows(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
     return rows
 
 
-def _law(name: str) -> str:
-    """A motion law's name in the report's language (the Cam tab's words)."""
+def law_name(name: str) -> str:
+    """A motion law's name in the report's language (the Cam tab's words; the task sheet's too)."""
     return {"parabolic": translate("Report", "parabolic"), "cosine": translate("Report", "cosine"),
             "sine": translate("Report", "sine (cycloidal)"),
             "poly345": translate("Report", "3-4-5 polynomial")}.get(name, name)
@@ -69,7 +69,7 @@ def cam_rows(cam: tuple[CamInputs, float | None]) -> list[tuple[str, str]]:
     return [(translate("Report", "Cam: follower arm l, swing ψmax"), f"{inputs.arm_mm:g} mm, {p.swing_deg:g}°"),
             (translate("Report", "Cam: rise, outer dwell, return"),
              f"{p.rise_deg:g}°, {p.dwell_deg:g}°, {p.return_deg:g}°"),
-            (translate("Report", "Cam: rise law, return law"), f"{_law(p.rise_law)}, {_law(p.return_law)}"),
+            (translate("Report", "Cam: rise law, return law"), f"{law_name(p.rise_law)}, {law_name(p.return_law)}"),
             (translate("Report", "Cam: allowed pressure angle, rise / return"),
              f"{inputs.pressure_deg:g}° / {inputs.return_pressure_deg:g}°"),
             (translate("Report", "Cam: roller, base radius, centre distance"),

@@ -106,6 +106,18 @@ def test_a_bad_row_is_named_by_its_line_and_column(tmp_path, base):
     assert [s.error for s in students[:3]] == ["", "", ""]
 
 
+def test_a_value_of_the_base_file_at_fault_is_named_as_the_bases(tmp_path, base):
+    """A row whose K leaves the base's cam (rise + dwell + return = 160°) too little of the
+    turn outside the cut: the value at fault is the base file's, which the teacher gave as
+    --base; the line named it as '--design (cam.rise_deg)', an option nobody typed. The
+    row's own design file is named as its column."""
+    (tmp_path / "own.json").write_bytes(open(base, "rb").read())
+    lines = ["student,student-number,crank,K,stroke,design", "a,1,100,2.9,600,", "b,2,100,2.9,600,own.json"]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    assert students[0].error.startswith("tasks.csv line 2: --base (cam.rise_deg): rise + outer dwell + return")
+    assert students[1].error.startswith("tasks.csv line 3, column design (cam.rise_deg): rise + outer dwell")
+
+
 def test_a_design_column_names_a_file_beside_the_table_only(tmp_path, base):
     inside = tmp_path / "class"
     inside.mkdir()

@@ -67,6 +67,14 @@ def test_a_figure_reads_the_same_in_every_table(qtbot, model):
     assert shown(load_rows(summary.speeds[0]), "mean / max crank torque")[1] == expect["torque"]
     assert shown(load_rows(summary.speeds[0]), "flywheel J_F") == [expect["J_F"]]
 
+    # the report's validation margins, beside its dimensions: L3 read 518.0975 mm there and
+    # 518.098 mm in the table above it, K 1.4600 in both
+    from shaperapp.report.content import _margin_table
+    margins = {row[0]: row[1:] for row in _margin_table(design).rows}
+    lever = next(cells for rule, cells in margins.items() if rule.startswith("lever L3"))
+    assert numbers(lever[0]) == [fixed(design.lever, 3)]
+    assert numbers(margins["time ratio K ≤ 5"][0]) == [expect["K"]]
+
     # the sheets
     sheet = _dimension_rows(design, 40.0, MOTION_LABELS)
     assert shown(sheet, MOTION_LABELS["theta"]) == [expect["theta"]]
