@@ -79,8 +79,9 @@ class CamForm(PartForm):
         return self.tr("The last valid cam stays on screen.")
 
     def _choose(self, name: str) -> None:
+        law = self.laws[name].currentData()      # before the commit shows the model's
         self.commit()
-        self._model.set_fields(**{name: self.laws[name].currentData()})
+        self._model.set_fields(**{name: law})
 
     def _show_typed(self) -> None:
         super()._show_typed()

@@ -296,12 +296,16 @@ class DesignForm(QWidget):
 
     def _on_mode_toggled(self, _button=None, checked: bool = True) -> None:
         if checked:
+            mode = "synthesis" if self._synth_radio.isChecked() else "dimensions"
             self._commit()
-            self._model.set_spec(mode="synthesis" if self._synth_radio.isChecked() else "dimensions")
+            self._model.set_spec(mode=mode)
 
     def _on_choice(self, name: str) -> None:
+        """A choice sends the fields typed before it first. It is read before that commit:
+        the form then shows the model, which still holds the old choice."""
+        value = self._combo(name).currentData()
         self._commit()
-        self._model.set_spec(**{name: self._combo(name).currentData()})
+        self._model.set_spec(**{name: value})
 
     def _commit(self) -> None:
         """Send the fields typed into since the last commit (the shared path, ``PendingEdits``)."""

@@ -313,10 +313,11 @@ class LoadsForm(QWidget):
 
     def _on_given(self, link: str) -> None:
         """Switch a link between mass and weight, carrying the value over (m·g or G/g)."""
+        as_weight = self._given[link].currentData() == "weight"    # before the commit shows the model
         self._commit()
         mass, weight = GIVEN[link]
         inputs = self._model.mass_inputs
-        if self._given[link].currentData() == "weight":
+        if as_weight:
             if inputs.get(weight) is not None:
                 return
             value = inputs.get(mass)

@@ -94,8 +94,9 @@ class GearForm(PartForm):
         return self.tr("The last valid gear pair stays on screen.")
 
     def _choose_mode(self, _index: int) -> None:
+        mode = self.mode.currentData()          # before the commit shows the model's
         self.commit()
-        self._model.set_mode(self.mode.currentData())
+        self._model.set_mode(mode)
 
     def shown_values(self) -> dict:
         """What each number field stands for: the typed value, and for the shift fields its
