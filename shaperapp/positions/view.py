@@ -23,6 +23,7 @@ from core.course_design.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTabl
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.column_titles import column_titles, special_titles
 from shaperapp.widgets.frozen_view import FrozenNameView
+from shaperapp.widgets.notation import on_screen
 from shaperapp.widgets.view_parts import bar_over_body, fill_speed_combo
 
 SPECIAL_FILL = QColor("#eef3f8")
@@ -79,7 +80,8 @@ class PositionsModel(QAbstractTableModel):
         cols = [i for i, c in enumerate(table.columns) if c not in HIDDEN]
         k = table.positions.crank_deg.size
         shown = display_values(table.data, table.columns)[speed * k:(speed + 1) * k]
-        self._header = [titles.get(table.columns[i], table.columns[i]) for i in cols]
+        # plain text in a header: the notation in characters (v_A3A4 → vA3A4, a^k → aᵏ)
+        self._header = [on_screen(titles.get(table.columns[i], table.columns[i])) for i in cols]
         self._corner = self.tr("Position")
         self._tips = [table.columns[i] for i in cols]
         texts = [column_texts(shown[:, i]) for i in cols]

@@ -1,7 +1,6 @@
 """The building blocks of a report: what ``content`` builds and ``pdf``/``html`` lay out."""
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field, replace
 from typing import Callable, ClassVar, Sequence
 
@@ -130,28 +129,3 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
             (translate("Report", "Supervisor"), c.supervisor), (translate("Report", "Date"), report.date)]
 
 
-# The formulas' notation in the (translated) source text, typeset by ``typeset``:
-# a^k_A4A3 → a with k above and A4A3 below, a^k → a with k above, v_A4 and ω_max → v, ω with
-# A4, max below, O4/L1/S4/ω4 → O, L, S, ω with
-# the digit below, (1/2π) → a slanted fraction.
-_NOTATION = re.compile(r"(?<![A-Za-z0-9])(?P<base>[A-Za-zΔ]{1,2})\^(?P<sup>[a-z])_(?P<sub>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z0-9])(?P<base1>[A-Za-z])\^(?P<sup1>[a-z])(?![A-Za-z0-9_])"
-                       r"|(?<![A-Za-z0-9])(?P<base2>[A-Za-zΔωαψ]{1,2})_(?P<sub2>[A-Za-z0-9]+)"
-                       r"|(?<![A-Za-z_])(?P<name>[OLSωαψr])(?P<digit>\d)"
-                       r"|\((?P<num>\d)/(?P<den>\d?π)\)")
-
-
-def typeset(text: str) -> str:
-    """Rich text of a formula paragraph: sub- and superscripts and fractions in HTML
-    (QTextDocument prints them in the PDF), from the plain notation of the source."""
-    def one(m: re.Match) -> str:
-        if m["base"]:
-            return f"{m['base']}<sup>{m['sup']}</sup><sub>{m['sub']}</sub>"
-        if m["base1"]:
-            return f"{m['base1']}<sup>{m['sup1']}</sup>"
-        if m["base2"]:
-            return f"{m['base2']}<sub>{m['sub2']}</sub>"
-        if m["name"]:
-            return f"{m['name']}<sub>{m['digit']}</sub>"
-        return f"(<sup>{m['num']}</sup>⁄<sub>{m['den']}</sub>)"
-    return _NOTATION.sub(one, text)

@@ -17,8 +17,9 @@ from core.forces.masses import MassProperties
 from core.library.names import unique_name
 from core.linkage.spec import Spec
 from shaperapp.widgets.figure_labels import figure_label, variant_label
+from shaperapp.widgets.notation import typeset
 
-from .blocks import Figure, Heading, Paragraph, Table, typeset
+from .blocks import Figure, Heading, Paragraph, Table
 
 translate = QCoreApplication.translate
 

@@ -34,9 +34,10 @@ from core.course_design.positions import PositionTable, position_table, position
 from core.base.progress import Progress
 from core.linkage.spec import Spec
 from shaperapp.widgets.command_line import inputs_name
+from shaperapp.widgets.notation import typeset
 
 from . import figures
-from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences, typeset
+from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences
 from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison
 from .design_data import cam_rows, flywheel_formula, gear_rows, load_rows

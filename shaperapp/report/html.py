@@ -12,9 +12,11 @@ from PySide6.QtCore import QBuffer, QByteArray, QIODevice, QRectF, QSize
 from PySide6.QtGui import QFont, QPainter
 from PySide6.QtSvg import QSvgGenerator
 
-from .blocks import (Figure, Heading, KeyValues, Paragraph, Report, Table, column_blocks, cover_rows,
-                     split_table, typeset)
 from shaperapp.widgets.fonts import report_font
+from shaperapp.widgets.notation import typeset
+
+from .blocks import (Figure, Heading, KeyValues, Paragraph, Report, Table, column_blocks, cover_rows,
+                     split_table)
 
 SVG_DPI = 96.0
 STYLE = """

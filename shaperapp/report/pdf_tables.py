@@ -10,7 +10,9 @@ from typing import Callable
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QFont, QFontMetricsF, QPainter, QPen, QTextDocument
 
-from .blocks import KeyValues, Table, column_blocks, split_table, typeset
+from shaperapp.widgets.notation import typeset
+
+from .blocks import KeyValues, Table, column_blocks, split_table
 from .pdf_base import GRID, HEAD_FILL, INK, KEEP_WHOLE_ROWS, SHADE, Layout, Piece
 
 

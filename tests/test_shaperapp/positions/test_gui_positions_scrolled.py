@@ -5,7 +5,7 @@ columns, as in the Results pane and the library."""
 from __future__ import annotations
 
 import pytest
-from PySide6.QtCore import QPoint, QRect
+from PySide6.QtCore import QPoint, QRect, Qt
 from PySide6.QtWidgets import QAbstractItemView
 
 from shaperapp.positions.view import PositionsView
@@ -70,3 +70,19 @@ def test_frozen_rows_line_up_with_the_table(view):
         assert frozen.rowHeight(row) == table.rowHeight(row), row
     port = QRect(QPoint(0, 0), table.size())
     assert port.contains(frozen.geometry())
+
+
+def test_headers_write_the_notation_in_characters(view):
+    """A header is plain text: the course notation of its title (v_A3A4, a^k, typeset in
+    the report) is written as characters there (vA3A4, aᵏ), never with its marks, and the
+    header's font draws every character of it."""
+    from PySide6.QtGui import QFontMetrics
+    model = view.table_model
+    titles = [model.headerData(c, Qt.Orientation.Horizontal) for c in range(model.columnCount())]
+    columns = [model.headerData(c, Qt.Orientation.Horizontal, Qt.ItemDataRole.ToolTipRole)
+               for c in range(model.columnCount())]
+    assert not [t for t in titles if "^" in t or "_" in t], titles
+    slide, coriolis = titles[columns.index("slide_v_m_s")], titles[columns.index("coriolis_m_s2")]
+    assert "vA3A4 (m/s)" in slide and "aᵏ (m/s²)" in coriolis
+    metrics = QFontMetrics(view.view.horizontalHeader().font())
+    assert all(metrics.inFontUcs4(ord(ch)) for ch in "vA3A4aᵏ")

@@ -6,7 +6,7 @@ import pytest
 
 from core.forces.masses import MassProperties
 from core.linkage.spec import Spec
-from shaperapp.report.blocks import typeset
+from shaperapp.widgets.notation import typeset
 from shaperapp.report.design_data import load_rows
 from shaperapp.widgets import i18n
 
