@@ -12,6 +12,7 @@ process starts Qt, so each worker starts its own); ``jobs`` 1 runs them here.
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -22,7 +23,7 @@ from typing import Any, Iterator, Sequence
 
 from core.files.atomic import atomic_write, remove_stale_temps
 from core.course_design.plan import PARTS, file_names
-from core.version import version_text
+from core.version import source_fingerprint, version_text
 
 DESIGN_FILE = "design.shaper.json"
 STAMP_FILE = ".class-stamp"
@@ -54,12 +55,19 @@ class Result:
     skipped: bool = False               # complete and current: not written again
 
 
+@functools.cache
+def made_by() -> str:
+    """The program that makes the files: its version and its code's fingerprint (once a
+    process; a forked worker inherits it). The version alone stays the same from one fix
+    to the next, and a rerun then kept the students' files the fix would have changed."""
+    return f"{version_text('shaper')} {source_fingerprint('core', 'shaperapp', 'shaperapp.resources')}"
+
+
 def stamp_of(job: Job) -> str:
-    """What the folder's files depend on, hashed: the design, the options, the version."""
-    version = version_text("shaper")
+    """What the folder's files depend on, hashed: the design, the options, the program."""
     made = {"design": job.design_text, "lang": job.lang, "paper": job.paper, "dxf": job.dxf,
             "title": job.title, "date": job.date, "cover": job.cover, "cad_font": job.cad_font,
-            "version": version}
+            "version": made_by()}
     return hashlib.sha256(json.dumps(made, sort_keys=True, ensure_ascii=False).encode()).hexdigest()
 
 
@@ -144,6 +152,7 @@ def _preload() -> None:
     for name in ("shaperapp.course.write", "shaperapp.report.content", "shaperapp.drawing.content",
                  "core.drawing.sheet_dxf", "ezdxf", *(f"core.cli.cmd_{c}" for c in COMMANDS)):
         import_module(name)
+    made_by()          # the code's fingerprint, once for every worker
 
 
 def run_jobs(jobs: Sequence[Job], workers: int) -> Iterator[Result]:

@@ -27,3 +27,35 @@ def test_a_complete_student_is_not_rewritten_and_its_stale_temps_go(tmp_path):
     assert result.skipped and result.error == "" and result.entry is not None
     assert sorted(os.listdir(folder)) == sorted([*expected_files(job), STAMP_FILE])
     assert (folder / "01-motion.pdf").read_text() == "made before"            # not written again
+
+
+def test_a_student_made_by_other_code_is_made_again(tmp_path, monkeypatch):
+    """The stamp names the code that made the files, not only the version, which stays
+    the same from one fix to the next: files a changed program would make otherwise
+    are not "up to date"."""
+    import shaperapp.course.class_run as class_run
+    from core.version import source_fingerprint
+    folder = tmp_path / "S01-x"
+    folder.mkdir()
+    job = Job(0, str(folder), "S01-x", DESIGN.read_text(encoding="utf-8"), "en", "A3", False, "t", "d",
+              {"student": "x", "number": "S01"})
+    for name in expected_files(job):
+        (folder / name).write_text("made before")
+    (folder / STAMP_FILE).write_text(stamp_of(job) + "\n")
+    assert class_run.is_current(job)
+    made = class_run.made_by()
+    monkeypatch.setattr(class_run, "made_by", lambda: made + " fixed")
+    assert not class_run.is_current(job)
+    # the fingerprint follows a package's every file and nothing but its bytecode
+    package = tmp_path / "made" / "tool"
+    package.mkdir(parents=True)
+    (package / "__init__.py").write_text("X = 1\n")
+    monkeypatch.syspath_prepend(str(tmp_path / "made"))
+    first = source_fingerprint("tool")
+    (package / "__pycache__").mkdir()
+    (package / "__pycache__" / "x.pyc").write_bytes(b"compiled")
+    assert source_fingerprint("tool") == first
+    (package / "words.qm").write_bytes(b"translation")
+    second = source_fingerprint("tool")
+    (package / "__init__.py").write_text("X = 2\n")
+    assert len({first, second, source_fingerprint("tool")}) == 3
