@@ -53,6 +53,7 @@ class HeatMap(pg.PlotWidget):
         self.colorbar = pg.ColorBarItem(values=(0.0, 1.0), colorMap=cmap, interactive=False,
                                         width=14)
         self.colorbar.setImageItem(self.image, insert_in=item)
+        self.colorbar.axis.setStyle(showValues=False)     # no figure computed: no values on its scale
         self.marker = pg.ScatterPlotItem(size=14, symbol="+", pen=pg.mkPen("#d62728", width=3),
                                          brush=None)
         self.addItem(self.marker)
@@ -72,8 +73,15 @@ class HeatMap(pg.PlotWidget):
         self.image.setImage(np.asarray(values, dtype=float).T, autoLevels=False)
         self.image.setRect(rect)
         self.colorbar.setLevels((low, high))
+        self.colorbar.axis.setStyle(showValues=True)
         self.getViewBox().setRange(rect, padding=0.0)
         self._fit_colorbar()
+
+    def show_extent(self, x: tuple[float, float], y: tuple[float, float]) -> None:
+        """Before the first map: the axes span the ranges chosen, not pyqtgraph's 0 to 1,
+        which read as parameter values no map had (an L1 (mm) axis from 0.2 to 0.8)."""
+        if self.x.size == 0 and x[1] > x[0] and y[1] > y[0]:
+            self.getViewBox().setRange(QRectF(x[0], y[0], x[1] - x[0], y[1] - y[0]), padding=0.0)
 
     def set_marker(self, x: float | None, y: float | None) -> None:
         self.marker.setData([] if x is None or y is None else [x], [] if y is None or x is None else [y])

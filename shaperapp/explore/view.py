@@ -79,6 +79,8 @@ class ExploreView(QWidget):
         self.figure.currentIndexChanged.connect(self._figure_changed)
         for i, combo in enumerate(self.axis_names):
             combo.currentIndexChanged.connect(lambda _=0, i=i: self._axis_changed(i))
+        for spin in (*self.lows, *self.highs):      # the empty map spans the ranges typed
+            spin.valueChanged.connect(lambda _=0: self.map.show_extent(*self._ends()))
         self.map.cellHovered.connect(self._hovered)
         self.map.cellClicked.connect(self._clicked)
         model.resultsChanged.connect(self._model_changed)
@@ -176,6 +178,10 @@ class ExploreView(QWidget):
         self.highs[i].setValue(high)
         self._show_labels()
 
+    def _ends(self) -> list[tuple[float, float]]:
+        """Each axis's range as typed, low to high."""
+        return [tuple(sorted((self.lows[i].value(), self.highs[i].value()))) for i in (0, 1)]
+
     def _show_labels(self) -> None:
         names = self.parameter_names()
         x, y = (c.currentData() for c in self.axis_names)
@@ -185,7 +191,7 @@ class ExploreView(QWidget):
     # ---- the map ------------------------------------------------------------
     def axes(self) -> tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]]:
         n = self.count.value()
-        ends = [sorted((self.lows[i].value(), self.highs[i].value())) for i in (0, 1)]
+        ends = self._ends()
         return tuple((self.axis_names[i].currentData(),  # type: ignore[return-value]
                       np.linspace(ends[i][0], ends[i][1], n)) for i in (0, 1))
 

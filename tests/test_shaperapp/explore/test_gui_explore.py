@@ -314,3 +314,24 @@ def test_optimize_keeps_k_and_h_and_proposes_one_undoable_step(qtbot, model, tmp
         assert model.valid_spec.time_ratio == before.time_ratio
     finally:
         view.shutdown()
+
+
+def test_before_its_first_map_the_map_spans_the_ranges_typed(qtbot, model):
+    """Until a map is computed its axes span the ranges chosen (not pyqtgraph's 0 to 1,
+    which read as an L1 of 0.2 mm), following the typed ends, and the colour bar's scale
+    shows no values."""
+    view = ExploreView(model)
+    qtbot.addWidget(view)
+    try:
+        ends = view._ends()
+        assert all(low < high for low, high in ends) and ends[0] != (0.0, 1.0)
+        shown_range = view.map.getViewBox().viewRange()
+        assert np.allclose(shown_range, ends)
+        view.lows[0].setValue(ends[0][0] + 1.0)
+        assert np.isclose(view.map.getViewBox().viewRange()[0][0], ends[0][0] + 1.0)
+        assert view.map.colorbar.axis.style["showValues"] is False
+        shown(qtbot, view, 760, 820)
+        qtbot.waitUntil(lambda: view.result is not None and view.runner.job is None, timeout=20_000)
+        assert view.map.colorbar.axis.style["showValues"] is True
+    finally:
+        view.shutdown()
