@@ -68,6 +68,7 @@ class ComparePlots(pg.GraphicsLayoutWidget):
             if k:
                 item.setXLink(self._items[CURVES[0]])
         self._retranslate()
+        self._show_empty(True)
 
     def item(self, key: str) -> pg.PlotItem:
         """The plot of ``key`` (one of ``CURVES``)."""
@@ -79,6 +80,7 @@ class ComparePlots(pg.GraphicsLayoutWidget):
             for curve in list(item.listDataItems()):
                 item.removeItem(curve)
         self._legend.clear()
+        self._show_empty(result is None)
         if result is None:
             return
         for k, label in enumerate(result.labels):
@@ -94,6 +96,14 @@ class ComparePlots(pg.GraphicsLayoutWidget):
             item.enableAutoRange()
         self._columns = 0                     # new entries: lay them out again
         self._fit_legend()
+
+    def _show_empty(self, empty: bool) -> None:
+        """With no design to show, the plots span the cycle (0 to 360°) and their value
+        axes show no numbers: pyqtgraph's 0 to 1 read as values no design had."""
+        for item in self._items.values():
+            item.getAxis("left").setStyle(showValues=not empty)
+        if empty:
+            self._items[CURVES[0]].setXRange(0.0, 360.0, padding=0.0)
 
     def legend_columns(self) -> int:
         """The columns the legend's entries take now."""

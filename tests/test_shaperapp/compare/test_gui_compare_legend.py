@@ -48,3 +48,23 @@ def test_short_names_share_a_row_in_a_wide_pane(qtbot, model, tmp_path):
     view.resize(520, 640)
     qtbot.wait(20)
     assert view.plots.legend_columns() == 1
+
+
+def test_empty_plots_span_the_cycle_and_show_no_values(qtbot, model):
+    """With no design to compare, the plots span the crank's cycle, 0 to 360°, and their
+    value axes show no numbers (pyqtgraph's 0 to 1 read as an x of 0.2 mm); the first
+    comparison brings the values and its own ranges."""
+    view = shown(qtbot, CompareView(model), 575, 640)
+    plots = view.plots
+    keys = ("ram_x_mm", "ram_v_m_s", "ram_a_m_s2", "crank_torque_N_m")
+    for key in keys:
+        low, high = plots.item(key).vb.viewRange()[0]
+        assert low <= 0.0 and high >= 360.0 and high - low < 400.0, (key, low, high)
+        assert plots.item(key).getAxis("left").style["showValues"] is False
+    assert view.add_current()
+    model.set_spec(time_ratio=1.6)
+    assert view.add_current()
+    qtbot.wait(20)
+    for key in keys[:3]:
+        assert plots.item(key).getAxis("left").style["showValues"] is True
+    assert plots.item("ram_x_mm").vb.viewRange()[1][1] > 250.0       # the stroke, 300 mm
