@@ -101,15 +101,14 @@ def _wedges(ring: np.ndarray) -> Wedges:
     return centre, np.roll(ring, -start, axis=0), np.roll(angle, -start)
 
 
-def _inside(wedges: Wedges, points: np.ndarray) -> np.ndarray:
-    """Which points (n, 2) lie inside the convex counter-clockwise polygon of ``wedges``:
+def _inside(wedges: Wedges, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Which points (x, y) lie inside the convex counter-clockwise polygon of ``wedges``:
     each is tested against the one edge whose wedge (seen from the vertices' mean, inside)
     holds it, found by bisection on the vertices' angles."""
     centre, ring, angle = wedges
-    k = np.searchsorted(angle, np.arctan2(points[:, 1] - centre[1], points[:, 0] - centre[0]),
-                        side="right") - 1
+    k = np.searchsorted(angle, np.arctan2(y - centre[1], x - centre[0]), side="right") - 1
     a, b = ring[k % len(ring)], ring[(k + 1) % len(ring)]
-    cross = (b[:, 0] - a[:, 0]) * (points[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (points[:, 0] - a[:, 0])
+    cross = (b[:, 0] - a[:, 0]) * (y - a[:, 1]) - (b[:, 1] - a[:, 1]) * (x - a[:, 0])
     return cross >= 0.0
 
 
@@ -128,11 +127,12 @@ def _on_circle(wedges: Wedges, arm: float, swing: float, radius: float, reach: f
     """The centres (n, 2) at ``radius`` from the roller's lowest point (arm, 0) that lie in
     the polygon and keep a − R1 ≥ ``reach`` (pivot frame: A at the origin, B1 the roller's
     centre at ψmax), and pass ``round_enough`` when given."""
-    points = np.column_stack([arm + radius * _CIRCLE_COS, radius * _CIRCLE_SIN])
+    x, y = arm + radius * _CIRCLE_COS, radius * _CIRCLE_SIN        # whole columns, not a (n, 2) array's
     b1 = arm * np.array([math.cos(swing), -math.sin(swing)])
-    a = np.hypot(points[:, 0], points[:, 1])
-    points = points[a - np.hypot(points[:, 0] - b1[0], points[:, 1] - b1[1]) >= reach]
-    points = points[_inside(wedges, points)]
+    keep = np.hypot(x, y) - np.hypot(x - b1[0], y - b1[1]) >= reach
+    x, y = x[keep], y[keep]
+    keep = _inside(wedges, x, y)
+    points = np.column_stack([x[keep], y[keep]])
     return points if round_enough is None or not len(points) else points[round_enough(points, radius)]
 
 
