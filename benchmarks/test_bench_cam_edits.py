@@ -73,7 +73,8 @@ def test_a_refused_edit_of_the_cam_tab(benchmark, tab, case):
         tab.cam_model.set_fields(**DEFAULTS)
         tab.cam_model.set_fields(**before)
         searched(tab)
-        for cached in (synthesis.synthesize, extremes.pressure_peaks, extremes.min_convex_radius):
+        for cached in (synthesis.synthesize, synthesis.admissible, synthesis._conditions, extremes.pressure_peaks,
+                       extremes.min_convex_radius):
             cached.cache_clear()
 
     def typed():

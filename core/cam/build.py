@@ -87,36 +87,52 @@ def roller_for_hub(biggest_mm: float, f: Follower, room: Room) -> float:
     return min(biggest_mm, max(left, MIN_ROLLER_MM))
 
 
-def _inside(ring: np.ndarray, points: np.ndarray) -> np.ndarray:
-    """Which points (n, 2) lie inside the convex counter-clockwise polygon ``ring``: each
-    is tested against the one edge whose wedge (seen from the vertices' mean, inside)
-    holds it, found by bisection on the vertices' angles."""
+Wedges = tuple[np.ndarray, np.ndarray, np.ndarray]
+"""A convex polygon ready for :func:`_inside`: its vertices' mean, its vertices (n, 2) and
+their angles (n,) about the mean, both from the vertex of least angle on."""
+
+
+def _wedges(ring: np.ndarray) -> Wedges:
+    """``ring`` (a convex counter-clockwise polygon) ready for :func:`_inside`: made once
+    for all the circles of one search (``_smallest_fit``), not once a circle."""
     centre = ring.mean(axis=0)
     angle = np.arctan2(ring[:, 1] - centre[1], ring[:, 0] - centre[0])
     start = int(np.argmin(angle))
-    ring, angle = np.roll(ring, -start, axis=0), np.roll(angle, -start)
-    k = np.searchsorted(angle, np.arctan2(points[:, 1] - centre[1], points[:, 0] - centre[0]),
-                        side="right") - 1
+    return centre, np.roll(ring, -start, axis=0), np.roll(angle, -start)
+
+
+def _inside(wedges: Wedges, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Which points (x, y) lie inside the convex counter-clockwise polygon of ``wedges``:
+    each is tested against the one edge whose wedge (seen from the vertices' mean, inside)
+    holds it, found by bisection on the vertices' angles."""
+    centre, ring, angle = wedges
+    k = np.searchsorted(angle, np.arctan2(y - centre[1], x - centre[0]), side="right") - 1
     a, b = ring[k % len(ring)], ring[(k + 1) % len(ring)]
-    cross = (b[:, 0] - a[:, 0]) * (points[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (points[:, 0] - a[:, 0])
+    cross = (b[:, 0] - a[:, 0]) * (y - a[:, 1]) - (b[:, 1] - a[:, 1]) * (x - a[:, 0])
     return cross >= 0.0
 
+
+_CIRCLE = np.linspace(0.0, 2.0 * math.pi, CIRCLE_SAMPLES, endpoint=False)
+_CIRCLE_COS, _CIRCLE_SIN = np.cos(_CIRCLE), np.sin(_CIRCLE)
+"""The directions of the centres tried on each circle (:func:`_on_circle`), made once, not
+once a circle: an advice's search tries thousands of circles (docs/performance.md, "The
+suite's margin")."""
 
 Screen = Callable[[np.ndarray, float], np.ndarray]
 """Which centres (n, 2) of base radius r keep the pitch curve round enough: a mask (n,)."""
 
 
-def _on_circle(ring: np.ndarray, arm: float, swing: float, radius: float, reach: float,
+def _on_circle(wedges: Wedges, arm: float, swing: float, radius: float, reach: float,
                round_enough: Screen | None = None) -> np.ndarray:
     """The centres (n, 2) at ``radius`` from the roller's lowest point (arm, 0) that lie in
     the polygon and keep a − R1 ≥ ``reach`` (pivot frame: A at the origin, B1 the roller's
     centre at ψmax), and pass ``round_enough`` when given."""
-    t = np.linspace(0.0, 2.0 * math.pi, CIRCLE_SAMPLES, endpoint=False)
-    points = np.column_stack([arm + radius * np.cos(t), radius * np.sin(t)])
+    x, y = arm + radius * _CIRCLE_COS, radius * _CIRCLE_SIN        # whole columns, not a (n, 2) array's
     b1 = arm * np.array([math.cos(swing), -math.sin(swing)])
-    a = np.hypot(points[:, 0], points[:, 1])
-    points = points[a - np.hypot(points[:, 0] - b1[0], points[:, 1] - b1[1]) >= reach]
-    points = points[_inside(ring, points)]
+    keep = np.hypot(x, y) - np.hypot(x - b1[0], y - b1[1]) >= reach
+    x, y = x[keep], y[keep]
+    keep = _inside(wedges, x, y)
+    points = np.column_stack([x[keep], y[keep]])
     return points if round_enough is None or not len(points) else points[round_enough(points, radius)]
 
 
@@ -128,9 +144,10 @@ def _smallest_fit(ring: np.ndarray, arm: float, swing: float, low: float, reach:
     the bisection then finds where fitting begins in the first bracket that fits, which
     tests check against circles 1 % smaller)."""
     top = 2.0 * float(np.max(np.hypot(ring[:, 0] - arm, ring[:, 1])))
+    wedges = _wedges(ring)
 
     def on(radius: float) -> np.ndarray:
-        return _on_circle(ring, arm, swing, radius, reach, round_enough)
+        return _on_circle(wedges, arm, swing, radius, reach, round_enough)
     found = on(low)
     if found.size:
         return found[np.argmin(np.hypot(found[:, 0], found[:, 1]))]

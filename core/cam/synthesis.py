@@ -204,13 +204,37 @@ def _aim(allowance: Allowance) -> Allowance:
     return Allowance(allowance.rise_deg - MARGIN_DEG, allowance.return_deg - MARGIN_DEG)
 
 
+@lru_cache(maxsize=16)
+def _conditions(arm_mm: float, side: int, program: Program, aim: Allowance
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray | None]:
+    """The sampled conditions of ``side`` at the allowances ``aim`` (:func:`_halfspaces`),
+    those of the first try (:func:`_rows`), and that try's interior point and polygon
+    (:func:`_deep_point`), read-only.
+
+    Kept for the last inputs (frozen values; some 0.2 MB each): the synthesis asks for
+    both sides, and the raise (``build.raised``) then for the same design's again, up to
+    ``cam.FIT_ROUNDS`` times, in each of a search's probes."""
+    h = _halfspaces(arm_mm, TURN * side, program, aim)
+    rows = h[_rows(h)]
+    first, part = _deep_point(rows, arm_mm)
+    return tuple(_read_only(a) for a in (h, rows, first, part))
+
+
+def _read_only(a: np.ndarray | None) -> np.ndarray | None:
+    """``a`` made read-only: a kept array shared between callers must not be changed."""
+    if a is not None:
+        a.flags.writeable = False
+    return a
+
+
+@lru_cache(maxsize=16)
 def admissible(arm_mm: float, program: Program, allowance: Allowance, side: int) -> np.ndarray | None:
     """The polygon of admissible cam centres on ``side`` in the pivot's frame, from the
-    sampled conditions at ``_aim(allowance)`` (its vertices (n, 2) mm, in order), or None
-    when the allowances leave none. It can be a little larger than the true region: see
-    :func:`within_allowance`."""
-    h = _halfspaces(arm_mm, TURN * side, program, _aim(allowance))
-    return _polygon(h, _inside(h, _deep_point(h[_rows(h)], arm_mm)[0]))
+    sampled conditions at ``_aim(allowance)`` (its vertices (n, 2) mm, in order, read-only),
+    or None when the allowances leave none. It can be a little larger than the true region:
+    see :func:`within_allowance`. Kept as :func:`_conditions` is, for the raise."""
+    h, _, first, _ = _conditions(arm_mm, side, program, _aim(allowance))
+    return _read_only(_polygon(h, _inside(h, first)))
 
 
 def _polygon(h: np.ndarray, centre: np.ndarray | None) -> np.ndarray | None:
@@ -350,16 +374,14 @@ def _smallest_of_both(arm_mm: float, program: Program, allowance: Allowance) -> 
     both synthesized)."""
     pick, sides = _nearest_pick(arm_mm), []
     for side in (1, -1):
-        h = _halfspaces(arm_mm, TURN * side, program, _aim(allowance))
-        rows = h[_rows(h)]
-        first, part = _deep_point(rows, arm_mm)
-        sides.append((_bound(arm_mm, side, rows, part, pick), side, h, first))
+        _, rows, _, part = _conditions(arm_mm, side, program, _aim(allowance))
+        sides.append((_bound(arm_mm, side, rows, part, pick), side))
     found: list[Follower] = []
-    for bound, side, h, first in sorted(sides, key=lambda s: s[0]):
+    for bound, side in sorted(sides, key=lambda s: s[0]):
         best = min((f.base_radius_mm for f in found), default=math.inf)
         if bound > best + SURE_MM + 1e-9 * best:
             continue
-        ring = _polygon(h, _inside(h, first))
+        ring = admissible(arm_mm, program, allowance, side)
         f = None if ring is None else _cut_until_within(arm_mm, program, allowance, side, pick, ring)
         if f is not None:
             found.append(f)
