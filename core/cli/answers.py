@@ -67,7 +67,10 @@ PER_SPEED = (("v_work_max", "m/s", ("analyze", "v_work_max_m_s")),
              ("M_max", "N·m", ("dynamics", "max_torque_N_m")),
              ("M_mean", "N·m", ("dynamics", "mean_torque_N_m")),
              ("dW_max", "J", ("dynamics", "energy_fluctuation_J")),
-             ("J_F", "kg·m²", ("dynamics", "flywheel_inertia_kg_m2")))
+             ("J_F", "kg·m²", ("dynamics", "flywheel_inertia_kg_m2")),
+             # the flywheel to add beside the other rotating parts (equal to J_F without them):
+             # a student who counted a motor's rotor answers this one
+             ("J_F_needed", "kg·m²", ("dynamics", "flywheel_inertia_needed_kg_m2")))
 
 
 # each column's kind of figure (``core.base.figure_text``): the answer key's PDF writes a figure
@@ -77,7 +80,7 @@ KINDS = {"theta": "angle", "L1": "length", "L2": "length", "L3": "length", "L4":
          "r_roller": "length", "x1": "gear_factor", "x2": "gear_factor", "a'": "gear_length",
          "alpha'": "gear_angle", "epsilon": "gear_factor", "v_work_max": "speed",
          "v_return_max": "speed", "a_max": "acceleration", "M_max": "torque", "M_mean": "torque",
-         "dW_max": "energy", "J_F": "inertia"}
+         "dW_max": "energy", "J_F": "inertia", "J_F_needed": "inertia"}
 
 
 def cell_text(name: str, value: float | None) -> str:

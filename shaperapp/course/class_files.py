@@ -134,7 +134,8 @@ _LINKAGE = (("theta", "θ", "°", 16), ("L1", "L_1", "mm", 18), ("L2", "L_2", "m
             ("n", "n_2", "r/min", 13), ("v_work_max", "v_w,max", "m/s", 16),
             ("v_return_max", "v_r,max", "m/s", 16), ("a_max", "|a|_max", "m/s²", 17))
 _FORCES = (("n", "n_2", "r/min", 13), ("M_max", "M_max", "N·m", 16), ("M_mean", "M_m", "N·m", 16),
-           ("dW_max", "ΔW_max", "J", 16), ("J_F", "J_F", "kg·m²", 16), ("r0", "r_0", "mm", 18),
+           ("dW_max", "ΔW_max", "J", 16), ("J_F", "J_F", "kg·m²", 16), ("J_F_needed", "J_F − J_c", "kg·m²", 18),
+           ("r0", "r_0", "mm", 18),
            ("a_cam", "a_cam", "mm", 18), ("r_roller", "r_r", "mm", 18))
 _GEAR = (("x1", "x_1", "", 20), ("x2", "x_2", "", 20), ("a'", "a′", "mm", 19), ("alpha'", "α′", "°", 20),
          ("epsilon", "ε", "", 19), ("failed", "", "", 30))

@@ -255,7 +255,7 @@ def _entry(student, number):
     """A made-up answer entry with every figure the CSV reads."""
     speed = {"rpm": 60.0, "v_work_max_m_s": 1.0, "v_return_max_m_s": 2.0, "a_max_m_s2": 3.0}
     forces = {"rpm": 60.0, "max_torque_N_m": 4.0, "mean_torque_N_m": 5.0, "energy_fluctuation_J": 6.0,
-              "flywheel_inertia_kg_m2": 7.0}
+              "flywheel_inertia_kg_m2": 7.0, "flywheel_inertia_needed_kg_m2": 6.5}
     synth = {"theta_deg": 30.0, "crank_mm": 1.0, "frame_mm": 2.0, "lever_mm": 3.0, "rod_mm": None, "h_mm": 4.0}
     return {"student": student, "student_number": number, "folder": "f", "synth": synth,
             "analyze": {"K": 1.4, "stroke_mm": 300.0, "speeds": [speed]}, "dynamics": {"speeds": [forces]},
@@ -311,3 +311,26 @@ def test_hostile_student_names_give_distinct_folders_that_can_be_made(tmp_path, 
         assert (out / s.folder).resolve().parent == out.resolve()
     assert good[2].folder == "3-" + "张" * ((MAX_FOLDER_BYTES - 2) // 3)      # whole characters kept
     assert good[4].folder.startswith("_nul.txt-")                            # a device name with a suffix
+
+
+def test_the_answer_key_gives_the_flywheel_to_add_beside_the_rotating_parts(tmp_path):
+    """A student whose design has other rotating parts (a motor's rotor, J = 0.5 kg·m² at the
+    crank's speed) answers the flywheel to add, J_F − J_c: the key has both columns, J_F and
+    J_F_needed, and the second is J_F less J_c = J·ratio² (0.5), from the data typed."""
+    from core.cli.answers import key_values, PER_SPEED, FIGURES
+    design = tmp_path / "d.json"
+    status, _, err = shaper_in_process("design", "--crank", "100", "--K", "1.4", "--stroke", "300",
+                                       "--ram-mass", "60", "--lever-mass", "20", "--lever-inertia", "1.1",
+                                       "--cut-force", "7000", "--rotor", "0.5:1", "--rpm", "60", "-o", design)
+    assert status == 0, err
+    status, out, err = shaper_in_process("dynamics", "--json", "--design", design)
+    assert status == 0, err
+    entry = _entry("x", "1")
+    entry["dynamics"] = json.loads(out)
+    row = key_values(entry, "", 1)
+    names = [name for name, _, _ in PER_SPEED]
+    at = 4 + len(FIGURES) + 1
+    j_f, needed = row[at + names.index("J_F")], row[at + names.index("J_F_needed")]
+    assert j_f > 1.0 and needed == pytest.approx(j_f - 0.5, rel=1e-12)
+    header = key_csv([entry], [""]).splitlines()[0].split(",")
+    assert "J_F_1 (kg·m²)" in header and "J_F_needed_1 (kg·m²)" in header

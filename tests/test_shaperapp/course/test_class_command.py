@@ -128,6 +128,7 @@ def test_the_answer_key_csv_holds_the_json_figures(classroom):
     for row, entry in zip(rows, entries):
         assert float(row["theta (deg)"]) == entry["synth"]["theta_deg"]
         assert float(row["J_F_1 (kg·m²)"]) == entry["dynamics"]["speeds"][0]["flywheel_inertia_kg_m2"]
+        assert float(row["J_F_needed_1 (kg·m²)"]) == entry["dynamics"]["speeds"][0]["flywheel_inertia_needed_kg_m2"]
         assert float(row["epsilon"]) == entry["gear"]["pair"]["contact_ratio"]
         assert row["class"] == ("机械2101" if row["student_number"].startswith("S") else "")
     assert rows[3]["n2 (r/min)"] == "72.0" and rows[0]["n2 (r/min)"] == ""      # the random row's two speeds
