@@ -85,9 +85,12 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
         if "cam" in doc:            # validated here, kept as written (older files have none)
             from core.cam.file import cam_from_dict     # the cam's modules: only for a file with one
             cam_from_dict(doc["cam"])
-        if "gear" in doc:           # the same for the gear pair's inputs (issue 35)
+        if "gear" in doc:           # the same for the gear pair's inputs (issue 35), and the
+            # pair made from them, as the GUI's File › Open makes it: a centre distance no
+            # shift fits was read here and kept in a library whose pane could not open it
             from core.gear.file import gear_from_dict
-            gear_from_dict(doc["gear"])
+            from core.gear.pair import design_pair
+            design_pair(gear_from_dict(doc["gear"]))
     except FileFormatError:
         raise
     except (DesignError, ArithmeticError, ValueError) as exc:   # never a traceback
