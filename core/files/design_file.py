@@ -39,6 +39,9 @@ DEFAULT_FILE_STEP = 1.0
 PART_KEYS = ("cam", "gear")
 """The parts a design file may hold beside the linkage, speeds and loads, each validated on
 reading and kept as written: a reader that does not edit a part must write it back."""
+OWN_KEYS = ("format", "version", "spec", "rpm", "step_deg", "forces", "masses")
+"""The keys of a loaded design that are not parts: the file's own, and ``masses`` (the loads
+:func:`load_design` adds, read from ``forces``)."""
 
 
 class _Refused(ValueError):
@@ -98,6 +101,14 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
     result = dict(doc)
     result.update(spec=spec, rpm=rpm, step_deg=step, masses=masses)
     return result
+
+
+def file_parts(doc: dict[str, Any]) -> dict[str, Any]:
+    """The parts of a loaded design beside the linkage, speeds and loads: the cam and the
+    gear (None when absent: their defaults) and any key a later version added to a version-1
+    file, as the cam and the gear were added. A reader that opens and saves the file passes
+    them all on, or Save drops what it does not know (``shaper design`` keeps them too)."""
+    return {**dict.fromkeys(PART_KEYS), **{k: v for k, v in doc.items() if k not in OWN_KEYS}}
 
 
 def _shorten(text: str, limit: int = 160) -> str:

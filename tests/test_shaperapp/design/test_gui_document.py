@@ -128,3 +128,23 @@ def test_open_then_save_keeps_the_gear_pair(doc, tmp_path):
     assert json.loads(target.read_text(encoding="utf-8"))["gear"] == gear
     model.load_state(model.valid_spec, model.rpms, model.step_deg)   # as File › New does
     assert "gear" not in model.saved_parts()
+
+
+def test_open_then_save_keeps_a_later_versions_part(doc, tmp_path):
+    """A top-level key this program does not know (a part a later version adds to a
+    version-1 file, as the cam and the gear were added) comes back from Open then Save as
+    written, as ``shaper design --design`` keeps it: Open passed on only "cam" and "gear",
+    and Save dropped the rest (hunt s13-hunt2)."""
+    import json
+    model, document = doc
+    belt = {"pulley_mm": [80, 200], "note": "later"}
+    source = tmp_path / "b.shaper.json"
+    assert document.save_to(str(source))
+    data = json.loads(source.read_text(encoding="utf-8"))
+    source.write_text(json.dumps({**data, "belt": belt}), encoding="utf-8")
+    assert document.open_path(str(source))
+    model.set_spec(time_ratio=1.5)
+    target = tmp_path / "c.shaper.json"
+    assert document.save_to(str(target))
+    saved = json.loads(target.read_text(encoding="utf-8"))
+    assert saved["belt"] == belt and saved["spec"]["time_ratio"] == 1.5
