@@ -4111,6 +4111,13 @@
     </message>
 </context>
 <context>
+    <name>PartTab</name>
+    <message>
+        <source>%1 Export it instead?</source>
+        <translation>%1仍要导出它吗？</translation>
+    </message>
+</context>
+<context>
     <name>PlotStack</name>
     <message>
         <source>Fit all</source>
