@@ -2260,6 +2260,10 @@
         <translation>凸轮选项卡中有错误；图纸显示最后一个有效的凸轮。</translation>
     </message>
     <message>
+        <source>The Gear tab has an error; the sheet shows its last valid gear pair.</source>
+        <translation>齿轮选项卡中有错误；图纸显示上一个有效的齿轮副。</translation>
+    </message>
+    <message>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>

@@ -56,6 +56,14 @@ class CamSource(Protocol):
     @property
     def error(self) -> "DesignError | None": ...
 
+
+class PartErrorSource(Protocol):
+    """The Gear tab's model, for the gear sheet: the error of what is typed now, if any (the
+    sheet draws the design's last valid pair, ``shaperapp.design.gear_source``)."""
+
+    @property
+    def error(self) -> "DesignError | None": ...
+
 PREVIEW_WIDTH = 560            # px of the preview's longer side
 
 
@@ -64,10 +72,11 @@ class DrawingSheetDialog(QDialog):
 
     def __init__(self, model: DesignModel, language: str = "en", parent: QWidget | None = None,
                  settings: QSettings | None = None, start_dir: str = "",
-                 cam: CamSource | None = None) -> None:
+                 cam: CamSource | None = None, gear: PartErrorSource | None = None) -> None:
         super().__init__(parent)
         self._start = start_dir
         self._cam = cam                 # the Cam tab's model, for the cam sheet
+        self._gear = gear               # the Gear tab's model, for the gear sheet's note
         self.setWindowTitle(self.tr("Export drawing sheet"))
         self.model, self.language, self._settings = model, language, settings
         self.written = ""
@@ -236,7 +245,7 @@ class DrawingSheetDialog(QDialog):
         painter.scale(px, px)
         try:
             paint_sheet(sheet, painter, self.language)
-            self._drawn_note = self._cam_note()
+            self._drawn_note = self._part_note()
         except MissingFontError:
             self._drawn_note = self.tr("No font with Chinese characters is installed: install one "
                                        "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
@@ -248,11 +257,15 @@ class DrawingSheetDialog(QDialog):
         pixmap.setDevicePixelRatio(2.0)
         self.preview.setPixmap(pixmap)
 
-    def _cam_note(self) -> str:
-        """On the cam sheet while the Cam tab shows an error: which cam is drawn."""
-        if self.content.currentData() != "cam" or self._cam is None or self._cam.error is None:
-            return ""
-        return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
+    def _part_note(self) -> str:
+        """On the cam or gear sheet while that tab shows an error: which part is drawn (the
+        gear sheet said nothing, a pair whose numbers the Gear tab's fields no longer showed)."""
+        content = self.content.currentData()
+        if content == "cam" and self._cam is not None and self._cam.error is not None:
+            return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
+        if content == "gear" and self._gear is not None and self._gear.error is not None:
+            return self.tr("The Gear tab has an error; the sheet shows its last valid gear pair.")
+        return ""
 
     def export(self, path: str) -> None:
         """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix; a DXF's texts as the CAD
@@ -321,9 +334,9 @@ class DrawingSheetDialog(QDialog):
 
 def export_sheet_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
                         settings: QSettings | None = None,
-                        cam: CamSource | None = None) -> str:
+                        cam: CamSource | None = None, gear: PartErrorSource | None = None) -> str:
     """Show the dialog (``cam``: the Cam tab's model, for the cam sheet); returns the path
     written or ''."""
-    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir, cam)
+    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir, cam, gear)
     dialog.exec()
     return dialog.written

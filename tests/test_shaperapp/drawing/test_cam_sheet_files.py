@@ -141,7 +141,7 @@ def test_window_gives_the_dialog_the_cam_tabs_cam(window, qtbot, monkeypatch):
     import shaperapp.drawing.dialog as dialog_module
     seen = {}
 
-    def fake(model, parent, language, start_dir, settings=None, cam=None):
+    def fake(model, parent, language, start_dir, settings=None, cam=None, gear=None):
         seen["cam"] = cam.cam
         return ""
     monkeypatch.setattr(dialog_module, "export_sheet_dialog", fake)
