@@ -2339,6 +2339,10 @@
         <translation>飞轮转动惯量 J_F，最低转速 (kg·m²)</translation>
     </message>
     <message>
+        <source>%1 — speeds %2 r/min</source>
+        <translation>%1——转速 %2 r/min</translation>
+    </message>
+    <message>
         <source>pressure angle (°)</source>
         <translation>压力角 (°)</translation>
     </message>
