@@ -122,7 +122,12 @@ class PartModel(QObject):
     def _load(self) -> None:
         """A file was opened (or New): its part, or the default one."""
         self._edited = []
-        self._apply(self.typed_of(self.design_model.parts.loaded(self.PART)), edited=False)
+        typed = self.typed_of(self.design_model.parts.loaded(self.PART))
+        self._apply(typed, edited=False)
+        # What was opened is what Save writes back, made or not: a cam the file's linkage
+        # refuses (it feeds during the cut) is the user's to mend, and Save wrote the last
+        # cam made instead, the default or the previous file's (hunt s13-hunt2).
+        self._valid_typed = typed
 
     def _apply(self, typed: Typed, edited: bool = True) -> None:
         if edited:          # an edit, an undo or a redo: what changed is what was typed
