@@ -4121,6 +4121,10 @@
 <context>
     <name>PartTab</name>
     <message>
+        <source>Nothing was exported: the drawing shows the part of the design opened before, since this design's cannot be made.</source>
+        <translation>未导出任何内容：此设计的该部件无法求出，图中显示的是此前打开的设计的部件。</translation>
+    </message>
+    <message>
         <source>%1 Export it instead?</source>
         <translation>%1仍要导出它吗？</translation>
     </message>

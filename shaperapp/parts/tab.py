@@ -117,6 +117,12 @@ class PartTab(QWidget):
         error = self.part_model.error
         if error is None:
             return True
+        if not self.part_model.own_value:       # the drawing is an earlier design's part
+            why = QCoreApplication.translate(
+                "PartTab", "Nothing was exported: the drawing shows the part of the design opened "
+                "before, since this design's cannot be made.")
+            QMessageBox.warning(self, self.export_title(), self.form.describe(error) + "\n\n" + why)
+            return False
         answer = QMessageBox.question(
             self, self.export_title(),
             self.form.describe(error) + "\n\n"

@@ -42,3 +42,32 @@ def test_a_cam_the_linkage_refuses_is_saved_as_opened(qtbot, model, tmp_path, ma
     assert document.save_to(str(target))
     saved = json.loads(target.read_text(encoding="utf-8"))["cam"]
     assert {k: saved[k] for k in FEEDS_IN_THE_CUT} == FEEDS_IN_THE_CUT
+
+
+def test_a_cam_export_after_opening_a_refused_cam_writes_nothing(qtbot, model, tmp_path, monkeypatch):
+    """After a file whose cam its linkage refuses, the tab still draws the cam of the file
+    opened before; the CSV button offered to export it ("the last valid cam stays on
+    screen") as if it were this design's. Now it says nothing was exported (hunt s13-hunt2)."""
+    from PySide6.QtWidgets import QMessageBox
+    from shaperapp.cam.tab import CamTab
+    from shaperapp.widgets import file_dialogs
+    document = Document(model, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    cam = CamModel(model)
+    tab = CamTab(model, cam_model=cam)
+    qtbot.addWidget(tab)
+    path = tmp_path / "cam.csv"
+    monkeypatch.setattr(file_dialogs, "save_file_and_filter", lambda *a, **k: (str(path), ""))
+    said: list[str] = []
+    monkeypatch.setattr(QMessageBox, "question", lambda *a, **k: said.append(a[2]) or QMessageBox.StandardButton.Yes)
+    monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: said.append(a[2]))
+    assert document.open_path(_file(tmp_path, "good.json", GOOD))
+    tab._export_dialog("csv")
+    assert path.exists() and said == []
+    path.unlink()
+    assert document.open_path(_file(tmp_path, "bad.json", FEEDS_IN_THE_CUT))
+    tab._export_dialog("csv")
+    assert not path.exists() and len(said) == 1 and "Nothing was exported" in said[0]
+    cam.set_fields(phase="")             # mended in the tab: this design's cam, exported
+    assert cam.error is None
+    tab._export_dialog("csv")
+    assert path.exists()
