@@ -48,7 +48,8 @@ class SheetTypeError(ValueError):
 
 class CamSource(Protocol):
     """Where the cam sheet's cam comes from: the Cam tab's model (its last valid cam, and
-    the error of what is typed now, if any)."""
+    the error of what is typed now, if any; ``own_value`` False, where it has it, when that
+    cam is an earlier design's, this one's not made)."""
 
     @property
     def cam(self) -> "Cam": ...
@@ -213,10 +214,17 @@ class DrawingSheetDialog(QDialog):
         return SheetChoice(content, self.paper.currentText(), self.count.value(),
                            (self.angles[0].value(), self.angles[1].value()), text["design"],
                            text["student"], text["date"] or datetime.date.today().isoformat(),
-                           text["school"], self._cam.cam if content == "cam" and self._cam else None,
+                           text["school"], self._cam_of_design() if content == "cam" and self._cam else None,
                            text["number"], text["group"], text["supervisor"],
                            self._gear_pair() if content == "gear" else None,
                            self.speed.currentIndex() if content != "gear" else 0)
+
+    def _cam_of_design(self) -> "Cam":
+        """The Cam tab's cam; its error when this design's cam cannot be made: the tab then
+        still holds the cam of the design opened before, which is no sheet of this one."""
+        if not getattr(self._cam, "own_value", True):
+            raise self._cam.error
+        return self._cam.cam
 
     def _gear_pair(self) -> "GearPair | None":
         """The design's gear pair (DesignError when it cannot be made: the preview says why)."""
