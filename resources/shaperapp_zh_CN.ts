@@ -2260,6 +2260,10 @@
         <translation>凸轮选项卡中有错误；图纸显示最后一个有效的凸轮。</translation>
     </message>
     <message>
+        <source>The Gear tab has an error; the sheet shows its last valid gear pair.</source>
+        <translation>齿轮选项卡中有错误；图纸显示上一个有效的齿轮副。</translation>
+    </message>
+    <message>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档 (*.pdf)</translation>
     </message>
@@ -2333,6 +2337,10 @@
     <message>
         <source>Flywheel J_F, slowest speed (kg·m²)</source>
         <translation>飞轮转动惯量 J_F，最低转速 (kg·m²)</translation>
+    </message>
+    <message>
+        <source>%1 — speeds %2 r/min</source>
+        <translation>%1——转速 %2 r/min</translation>
     </message>
     <message>
         <source>pressure angle (°)</source>
@@ -4108,6 +4116,17 @@
     <message>
         <source>%1 r/min</source>
         <translation>%1 r/min</translation>
+    </message>
+</context>
+<context>
+    <name>PartTab</name>
+    <message>
+        <source>Nothing was exported: the drawing shows the part of the design opened before, since this design's cannot be made.</source>
+        <translation>未导出任何内容：此设计的该部件无法求出，图中显示的是此前打开的设计的部件。</translation>
+    </message>
+    <message>
+        <source>%1 Export it instead?</source>
+        <translation>%1仍要导出它吗？</translation>
     </message>
 </context>
 <context>

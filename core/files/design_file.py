@@ -39,6 +39,9 @@ DEFAULT_FILE_STEP = 1.0
 PART_KEYS = ("cam", "gear")
 """The parts a design file may hold beside the linkage, speeds and loads, each validated on
 reading and kept as written: a reader that does not edit a part must write it back."""
+OWN_KEYS = ("format", "version", "spec", "rpm", "step_deg", "forces", "masses")
+"""The keys of a loaded design that are not parts: the file's own, and ``masses`` (the loads
+:func:`load_design` adds, read from ``forces``)."""
 
 
 class _Refused(ValueError):
@@ -85,9 +88,12 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
         if "cam" in doc:            # validated here, kept as written (older files have none)
             from core.cam.file import cam_from_dict     # the cam's modules: only for a file with one
             cam_from_dict(doc["cam"])
-        if "gear" in doc:           # the same for the gear pair's inputs (issue 35)
+        if "gear" in doc:           # the same for the gear pair's inputs (issue 35), and the
+            # pair made from them, as the GUI's File › Open makes it: a centre distance no
+            # shift fits was read here and kept in a library whose pane could not open it
             from core.gear.file import gear_from_dict
-            gear_from_dict(doc["gear"])
+            from core.gear.pair import design_pair
+            design_pair(gear_from_dict(doc["gear"]))
     except FileFormatError:
         raise
     except (DesignError, ArithmeticError, ValueError) as exc:   # never a traceback
@@ -95,6 +101,14 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
     result = dict(doc)
     result.update(spec=spec, rpm=rpm, step_deg=step, masses=masses)
     return result
+
+
+def file_parts(doc: dict[str, Any]) -> dict[str, Any]:
+    """The parts of a loaded design beside the linkage, speeds and loads: the cam and the
+    gear (None when absent: their defaults) and any key a later version added to a version-1
+    file, as the cam and the gear were added. A reader that opens and saves the file passes
+    them all on, or Save drops what it does not know (``shaper design`` keeps them too)."""
+    return {**dict.fromkeys(PART_KEYS), **{k: v for k, v in doc.items() if k not in OWN_KEYS}}
 
 
 def _shorten(text: str, limit: int = 160) -> str:

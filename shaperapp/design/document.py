@@ -11,7 +11,7 @@ import os
 from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
-from core.files.design_file import PART_KEYS
+from core.files.design_file import file_parts
 from core.base.errors import DesignError, FileFormatError
 from core.files.io import atomic_write, curves_csv, load_design, masses_to_dict, save_design
 from core.linkage.spec import Spec
@@ -46,7 +46,7 @@ class Document(QObject):
         try:
             doc = load_design(path)
             self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path=os.path.abspath(path),
-                                   masses=doc["masses"], parts={key: doc.get(key) for key in PART_KEYS})
+                                   masses=doc["masses"], parts=file_parts(doc))
         except FileFormatError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
             return False

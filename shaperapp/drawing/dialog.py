@@ -48,10 +48,19 @@ class SheetTypeError(ValueError):
 
 class CamSource(Protocol):
     """Where the cam sheet's cam comes from: the Cam tab's model (its last valid cam, and
-    the error of what is typed now, if any)."""
+    the error of what is typed now, if any; ``own_value`` False, where it has it, when that
+    cam is an earlier design's, this one's not made)."""
 
     @property
     def cam(self) -> "Cam": ...
+
+    @property
+    def error(self) -> "DesignError | None": ...
+
+
+class PartErrorSource(Protocol):
+    """The Gear tab's model, for the gear sheet: the error of what is typed now, if any (the
+    sheet draws the design's last valid pair, ``shaperapp.design.gear_source``)."""
 
     @property
     def error(self) -> "DesignError | None": ...
@@ -64,10 +73,11 @@ class DrawingSheetDialog(QDialog):
 
     def __init__(self, model: DesignModel, language: str = "en", parent: QWidget | None = None,
                  settings: QSettings | None = None, start_dir: str = "",
-                 cam: CamSource | None = None) -> None:
+                 cam: CamSource | None = None, gear: PartErrorSource | None = None) -> None:
         super().__init__(parent)
         self._start = start_dir
         self._cam = cam                 # the Cam tab's model, for the cam sheet
+        self._gear = gear               # the Gear tab's model, for the gear sheet's note
         self.setWindowTitle(self.tr("Export drawing sheet"))
         self.model, self.language, self._settings = model, language, settings
         self.written = ""
@@ -204,10 +214,17 @@ class DrawingSheetDialog(QDialog):
         return SheetChoice(content, self.paper.currentText(), self.count.value(),
                            (self.angles[0].value(), self.angles[1].value()), text["design"],
                            text["student"], text["date"] or datetime.date.today().isoformat(),
-                           text["school"], self._cam.cam if content == "cam" and self._cam else None,
+                           text["school"], self._cam_of_design() if content == "cam" and self._cam else None,
                            text["number"], text["group"], text["supervisor"],
                            self._gear_pair() if content == "gear" else None,
                            self.speed.currentIndex() if content != "gear" else 0)
+
+    def _cam_of_design(self) -> "Cam":
+        """The Cam tab's cam; its error when this design's cam cannot be made: the tab then
+        still holds the cam of the design opened before, which is no sheet of this one."""
+        if not getattr(self._cam, "own_value", True):
+            raise self._cam.error
+        return self._cam.cam
 
     def _gear_pair(self) -> "GearPair | None":
         """The design's gear pair (DesignError when it cannot be made: the preview says why)."""
@@ -236,7 +253,7 @@ class DrawingSheetDialog(QDialog):
         painter.scale(px, px)
         try:
             paint_sheet(sheet, painter, self.language)
-            self._drawn_note = self._cam_note()
+            self._drawn_note = self._part_note()
         except MissingFontError:
             self._drawn_note = self.tr("No font with Chinese characters is installed: install one "
                                        "(on Debian/Ubuntu: fonts-noto-cjk) or switch the language "
@@ -248,11 +265,15 @@ class DrawingSheetDialog(QDialog):
         pixmap.setDevicePixelRatio(2.0)
         self.preview.setPixmap(pixmap)
 
-    def _cam_note(self) -> str:
-        """On the cam sheet while the Cam tab shows an error: which cam is drawn."""
-        if self.content.currentData() != "cam" or self._cam is None or self._cam.error is None:
-            return ""
-        return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
+    def _part_note(self) -> str:
+        """On the cam or gear sheet while that tab shows an error: which part is drawn (the
+        gear sheet said nothing, a pair whose numbers the Gear tab's fields no longer showed)."""
+        content = self.content.currentData()
+        if content == "cam" and self._cam is not None and self._cam.error is not None:
+            return self.tr("The Cam tab has an error; the sheet shows its last valid cam.")
+        if content == "gear" and self._gear is not None and self._gear.error is not None:
+            return self.tr("The Gear tab has an error; the sheet shows its last valid gear pair.")
+        return ""
 
     def export(self, path: str) -> None:
         """Write the sheet to ``path`` (PDF, SVG or DXF by its suffix; a DXF's texts as the CAD
@@ -321,9 +342,9 @@ class DrawingSheetDialog(QDialog):
 
 def export_sheet_dialog(model: DesignModel, parent: QWidget, language: str, start_dir: str,
                         settings: QSettings | None = None,
-                        cam: CamSource | None = None) -> str:
+                        cam: CamSource | None = None, gear: PartErrorSource | None = None) -> str:
     """Show the dialog (``cam``: the Cam tab's model, for the cam sheet); returns the path
     written or ''."""
-    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir, cam)
+    dialog = DrawingSheetDialog(model, language, parent, settings, start_dir, cam, gear)
     dialog.exec()
     return dialog.written

@@ -18,6 +18,13 @@ def figure_names() -> dict[str, str]:
             "flywheel": translate("ExploreView", "Flywheel J_F, slowest speed (kg·m²)")}
 
 
+def map_caption(key: str, rpms) -> str:
+    """The line over an exported map: the figure's whole name (which speed it takes: the
+    colour bar has the short title) and the speeds the map was computed at."""
+    return (translate("ExploreView", "%1 — speeds %2 r/min").replace("%1", figure_names()[key])
+            .replace("%2", ", ".join(f"{float(r):g}" for r in rpms)))
+
+
 def figure_titles() -> dict[str, str]:
     """Short titles of the figures, for the colour bar beside the map."""
     return {"pressure-angle": translate("ExploreView", "pressure angle (°)"),

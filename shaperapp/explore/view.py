@@ -22,7 +22,7 @@ from core.space.optimize import on_bounds, tidy_optimum
 from core.space.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.combos import fill_combo
-from shaperapp.widgets.image_export import export_scene
+from shaperapp.widgets.image_export import export_scene_captioned
 from shaperapp.widgets.messages import describe
 from shaperapp.widgets.worker import JobRunner
 
@@ -394,7 +394,9 @@ class ExploreView(QWidget):
                                      "the Explore tab first."))
         # the whole view, as on screen: the top tick label reaches above the plot item
         source = self.map.mapToScene(self.map.viewport().rect()).boundingRect()
-        export_scene(self.map.scene(), source, path, self.tr("Design-space map"), QColor("white"))
+        caption = explore_names.map_caption(self.figure.currentData(), self._basis[1])
+        export_scene_captioned(self.map.scene(), source, path, caption, self.tr("Design-space map"),
+                               QColor("white"))
 
     def shutdown(self) -> None:
         """Stop any work and wait for it (the window is closing)."""

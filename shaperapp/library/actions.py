@@ -18,7 +18,7 @@ from PySide6.QtGui import QUndoCommand, QUndoStack
 
 from core.space.compare import Candidate
 from core.base.errors import DesignError, FileFormatError
-from core.files.design_file import PART_KEYS
+from core.files.design_file import file_parts
 from core.space.figures import figures
 from core.library import Entry, Library
 from core.library.files import export_entries, import_entries, read_design_files
@@ -238,7 +238,7 @@ class LibraryActions(QObject):
     def _load_into_model(self, doc: dict, name: str) -> None:
         """The one place the library replaces the model's design (see DesignModel.load_state)."""
         self._model.load_state(doc["spec"], doc["rpm"], doc["step_deg"], path="", masses=doc["masses"],
-                               parts={key: doc.get(key) for key in PART_KEYS}, library_name=name)
+                               parts=file_parts(doc), library_name=name)
 
     def candidates(self, names: Sequence[str]) -> list[Candidate]:
         """Library entries as comparison candidates (invalid ones reported and left out)."""

@@ -68,6 +68,7 @@ class PartModel(QObject):
         self._valid_typed = typed
         self._value = value
         self._error: DesignError | None = None
+        self._own = True        # the value was made from this design's typed fields
         self._edited: list[str] = []
         model.parts.register(self.PART, self.document, check)
         model.loaded.connect(self._load)
@@ -80,6 +81,13 @@ class PartModel(QObject):
     def error(self) -> DesignError | None:
         """Why the typed fields are refused, as of the last computation (None: valid)."""
         return self._error
+
+    @property
+    def own_value(self) -> bool:
+        """Whether the part on screen was made from this design's fields: False after a file
+        (or library entry) whose part could not be made, until one is: the drawing then
+        still shows the part of the design opened before, no "last valid" one of this."""
+        return self._own
 
     def set_fields(self, **changes: Any) -> None:
         """Change some typed fields (one undoable step; keystrokes in one field merge)."""
@@ -122,7 +130,13 @@ class PartModel(QObject):
     def _load(self) -> None:
         """A file was opened (or New): its part, or the default one."""
         self._edited = []
-        self._apply(self.typed_of(self.design_model.parts.loaded(self.PART)), edited=False)
+        typed = self.typed_of(self.design_model.parts.loaded(self.PART))
+        self._own = False
+        self._apply(typed, edited=False)
+        # What was opened is what Save writes back, made or not: a cam the file's linkage
+        # refuses (it feeds during the cut) is the user's to mend, and Save wrote the last
+        # cam made instead, the default or the previous file's (hunt s13-hunt2).
+        self._valid_typed = typed
 
     def _apply(self, typed: Typed, edited: bool = True) -> None:
         if edited:          # an edit, an undo or a redo: what changed is what was typed
@@ -144,6 +158,7 @@ class PartModel(QObject):
             self.refused()
             return
         self._set_error(None)
+        self._own = True
         self._edited = []
         self._valid_typed = self._typed
         if value != self._value:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import os
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QMessageBox, QPushButton, QScrollArea, QSplitter,
                                QVBoxLayout, QWidget)
 
@@ -96,6 +96,8 @@ class PartTab(QWidget):
     # ---- the shared path ---------------------------------------------------
     def _export_dialog(self, kind: str) -> None:
         self.form.commit()
+        if not self._confirm_last_valid():
+            return
         filters, name = self.export_choice(kind)
         title = self.export_title()
         path, chosen = file_dialogs.save_file_and_filter(
@@ -106,3 +108,26 @@ class PartTab(QWidget):
             self.export_chosen(kind, path, chosen)
         except Exception as exc:        # never to sys.excepthook: the reason, in a message
             QMessageBox.warning(self, title, failure_reason(exc))
+
+    def _confirm_last_valid(self) -> bool:
+        """True when every typed field is valid, or the user agreed to export the last valid
+        part: while a field is refused, an export writes the part on screen, which the fields
+        no longer show (z1 typed as 4, a sheet of z1 = 13), so it asks first, as File › Export
+        asks for the design's inputs (``Document.confirm_valid``)."""
+        error = self.part_model.error
+        if error is None:
+            return True
+        if not self.part_model.own_value:       # the drawing is an earlier design's part
+            why = QCoreApplication.translate(
+                "PartTab", "Nothing was exported: the drawing shows the part of the design opened "
+                "before, since this design's cannot be made.")
+            QMessageBox.warning(self, self.export_title(), self.form.describe(error) + "\n\n" + why)
+            return False
+        answer = QMessageBox.question(
+            self, self.export_title(),
+            self.form.describe(error) + "\n\n"
+            # an explicit context: self.tr here would look the text up under the subclass's
+            + QCoreApplication.translate("PartTab", "%1 Export it instead?").replace("%1", self.form.kept()),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.Cancel,
+            QMessageBox.StandardButton.Cancel)
+        return answer == QMessageBox.StandardButton.Yes

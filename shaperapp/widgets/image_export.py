@@ -20,7 +20,7 @@ import os
 from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QRectF, QSizeF
+from PySide6.QtCore import QBuffer, QByteArray, QCoreApplication, QIODevice, QRectF, QSizeF, Qt
 from PySide6.QtGui import QColor, QImage, QImageWriter, QPainter, QPicture
 from PySide6.QtSvg import QSvgGenerator
 from PySide6.QtWidgets import QGraphicsScene
@@ -102,6 +102,25 @@ def export_scene(scene: QGraphicsScene, source: QRectF, path: str | os.PathLike,
     image at least EXPORT_WIDTH px wide (see :func:`image_type` for the errors)."""
     export_painting(path, source.size(), _scene_paint(scene, source, background, prepare),
                     title, background)
+
+
+CAPTION_PX = 28
+"""Height of the caption line over a captioned export, logical px."""
+
+
+def export_scene_captioned(scene: QGraphicsScene, source: QRectF, path: str | os.PathLike,
+                           caption: str, title: str, background: QColor) -> None:
+    """:func:`export_scene` with ``caption`` on one line over the picture (cut with "…" to
+    its width): what the exported view alone does not say, such as at which speeds the
+    Explore tab's map was computed (its colour bar has the figure's short title only)."""
+    def paint(painter: QPainter, page: QRectF) -> None:
+        line = QRectF(8.0, 0.0, page.width() - 16.0, CAPTION_PX)
+        painter.setPen(QColor("black"))
+        painter.drawText(line, Qt.AlignmentFlag.AlignVCenter, painter.fontMetrics().elidedText(
+            caption, Qt.TextElideMode.ElideRight, int(line.width())))
+        render_scene(scene, source, painter, QRectF(0.0, CAPTION_PX, source.width(), source.height()),
+                     background)
+    export_painting(path, QSizeF(source.width(), source.height() + CAPTION_PX), paint, title, background)
 
 
 def scene_svg(scene: QGraphicsScene, source: QRectF, title: str, background: QColor,

@@ -339,7 +339,8 @@ class MainWindow(QMainWindow):
             return
         from shaperapp.drawing.dialog import export_sheet_dialog   # load on demand
         path = export_sheet_dialog(self.model, self, self._language, self.document.last_dir(),
-                                   self.settings, cam=self.cam_model)
+                                   self.settings, cam=self.cam_model,
+                                   gear=self.gear_model)
         if path:
             self.statusBar().showMessage(self.tr("Saved %1").replace("%1", path), 4000)
 

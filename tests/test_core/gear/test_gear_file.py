@@ -50,3 +50,16 @@ def test_a_design_file_keeps_a_good_gear_and_refuses_a_bad_one(tmp_path):
     with pytest.raises(FileFormatError) as info:
         load_design(_file(tmp_path, {"z1": 13, "z2": 40, "module_mm": 6.0, "pinion": 1}))
     assert "pinion" in str(info.value)
+
+
+@pytest.mark.parametrize("gear, key", [
+    ({"centre_mm": 1e-300}, "centre"),          # below a cos α = 159 cos 20° = 149.41 mm
+    ({"centre_mm": 200.0}, "centre"),           # a tip of gear 1 pointed
+    ({"x1": -3.0, "x2": -3.0}, "x1")])          # α′ ≤ 0: the gears do not mesh
+def test_a_pair_that_cannot_be_made_refuses_the_file(tmp_path, gear, key):
+    """Each key in range alone, but no pair: the GUI's File › Open refused such a file
+    (``shaperapp.gear.model.check_part``) while every ``--design`` and ``shaper library add``
+    read it, so the library kept a design its pane could not open (hunt s13-hunt2)."""
+    with pytest.raises(FileFormatError) as info:
+        load_design(_file(tmp_path, {"z1": 13, "z2": 40, "module_mm": 6.0, **gear}))
+    assert info.value.cause.parameter == key

@@ -141,7 +141,7 @@ def test_window_gives_the_dialog_the_cam_tabs_cam(window, qtbot, monkeypatch):
     import shaperapp.drawing.dialog as dialog_module
     seen = {}
 
-    def fake(model, parent, language, start_dir, settings=None, cam=None):
+    def fake(model, parent, language, start_dir, settings=None, cam=None, gear=None):
         seen["cam"] = cam.cam
         return ""
     monkeypatch.setattr(dialog_module, "export_sheet_dialog", fake)
@@ -169,3 +169,23 @@ def test_the_four_sheets_are_numbered_one_to_four(qapp):
         numbers.append([t.text for t in sheet.items if isinstance(t, Text) and re.fullmatch(r"\d/\d", t.text)])
     assert CONTENTS == ("motion", "forces", "cam", "gear")
     assert numbers == [["1/4"], ["2/4"], ["3/4"], ["4/4"]]
+
+
+def test_the_cam_sheet_of_a_design_whose_cam_cannot_be_made_is_not_drawn(model, qtbot, tmp_path):
+    """After opening a design whose cam its linkage refuses, the Cam tab still holds the cam
+    of the design opened before (``own_value`` False); the dialog drew and wrote that cam
+    as this design's cam sheet, under "shows its last valid cam". Now the preview says why
+    there is none and Save writes nothing (hunt s13-hunt2)."""
+    from core.cam import design_cam
+    earlier = design_cam(CamInputs(arm_mm=150.0, program=Program(20.0, 70.0, 10.0, 70.0)), model.design)
+    source = SimpleNamespace(cam=earlier, own_value=False,
+                             error=DesignError("phase", 90.0, "feeds during the cut"))
+    dialog = DrawingSheetDialog(model, "en", cam=source)
+    qtbot.addWidget(dialog)
+    dialog.content.setCurrentIndex(dialog.content.findData("cam"))
+    dialog.update_preview()
+    assert "cannot be drawn" in dialog.message.text() and "feeds during the cut" in dialog.message.text()
+    out = tmp_path / "cam.pdf"
+    with pytest.raises(DesignError):
+        dialog.export(str(out))
+    assert not out.exists()

@@ -55,3 +55,24 @@ def test_with_a_gear_the_sheet_is_the_pair_on_a2(model, qtbot, tmp_path):
         assert c.dxf.center.x == pytest.approx(pair.centre_mm, abs=1e-9)
     dialog.content.setCurrentIndex(dialog.content.findData("motion"))
     assert dialog.paper.currentText() == "A1"          # back to the motion sheet's paper
+
+
+def test_the_gear_sheet_says_when_the_gear_tab_has_an_error(model, qtbot):
+    """As the cam sheet says it: while the Gear tab refuses what is typed (z1 = 4), the sheet
+    draws the design's last valid pair, and the dialog says so; before, it said nothing
+    (hunt s13-hunt2)."""
+    from types import SimpleNamespace
+    from core.base.errors import DesignError
+    model.load_state(Spec(), [40.0], 1.0, parts={"gear": gear_to_dict(GEAR)})
+    source = SimpleNamespace(error=None)
+    dialog = DrawingSheetDialog(model, "en", gear=source)
+    qtbot.addWidget(dialog)
+    dialog.content.setCurrentIndex(gear_index(dialog))
+    dialog.update_preview()
+    assert dialog.message.text() == ""
+    source.error = DesignError("z1", 4, "must be at least 5")
+    dialog.update_preview()
+    assert "last valid gear pair" in dialog.message.text()
+    dialog.content.setCurrentIndex(dialog.content.findData("motion"))
+    dialog.update_preview()
+    assert dialog.message.text() == ""

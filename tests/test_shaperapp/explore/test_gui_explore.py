@@ -335,3 +335,19 @@ def test_before_its_first_map_the_map_spans_the_ranges_typed(qtbot, model):
         assert view.map.colorbar.axis.style["showValues"] is True
     finally:
         view.shutdown()
+
+
+def test_an_exported_map_says_which_figure_and_speeds_it_shows(qtbot, view, model, tmp_path):
+    """The colour bar has the figure's short title ("max |a| (m/s²)"); the exported picture
+    had nothing else, so a map of the fastest of 40 and 60 r/min showed 10.6 m/s² at the
+    design's marker with no word of 60 r/min, where the Results pane shows 4.7 m/s² at 40
+    r/min first. The
+    picture now carries the figure's whole name and the speeds over the map (hunt s13-hunt2)."""
+    model.set_rpms([40, 60])
+    view.count.setValue(5)
+    compute(qtbot, view)
+    svg = tmp_path / "map.svg"
+    view.export_image(str(svg))
+    texts = " ".join(t for t in ElementTree.parse(svg).getroot().itertext())
+    assert view.figure_names()[view.figure.currentData()] in texts   # "…, fastest speed (m/s²)"
+    assert "40, 60 r/min" in texts

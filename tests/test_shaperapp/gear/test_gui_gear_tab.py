@@ -257,3 +257,29 @@ def test_a_carried_over_shift_is_rounded_on_screen_and_exact_in_the_model(qtbot,
     edit = tab.form.fields["x1"].edit
     assert edit.text() == f"{exact:.7g}" and float(edit.toolTip()) == exact
     assert edit.fontMetrics().horizontalAdvance(edit.text()) <= edit.contentsRect().width() - 4
+
+
+def test_an_export_while_a_field_is_refused_asks_first(qtbot, tab, tmp_path, monkeypatch):
+    """With z1 typed as 4 (refused, the last valid pair on screen) the CSV button wrote the
+    last valid pair without a word, a sheet whose z1 the fields no longer show; now it asks
+    first, as File › Export does for the design's inputs, and Cancel writes nothing
+    (hunt s13-hunt2)."""
+    from PySide6.QtWidgets import QMessageBox
+    from shaperapp.widgets import file_dialogs
+    path = tmp_path / "g.csv"
+    monkeypatch.setattr(file_dialogs, "save_file_and_filter", lambda *a, **k: (str(path), ""))
+    asked: list[str] = []
+
+    def answer(button):
+        return lambda *a, **k: asked.append(a[2]) or button
+    monkeypatch.setattr(QMessageBox, "question", answer(QMessageBox.StandardButton.Cancel))
+    tab._export_dialog("csv")                 # every field valid: no question
+    assert asked == [] and path.exists()
+    path.unlink()
+    type_into(qtbot, tab, "z1", "4")
+    tab._export_dialog("csv")
+    assert not path.exists() and len(asked) == 1
+    assert asked[0].startswith("Teeth z1: must be at least 5") and "last valid gear pair" in asked[0]
+    monkeypatch.setattr(QMessageBox, "question", answer(QMessageBox.StandardButton.Yes))
+    tab._export_dialog("csv")
+    assert path.read_text() == summary_csv(gear_summary(tab.gear_model.pair))
