@@ -58,12 +58,19 @@ def test_a_file_without_a_gear_pair_is_refused_naming_it(tmp_path):
     assert os.listdir(tmp_path) == ["d.json"]
 
 
-def test_a_gear_pair_that_cannot_be_made_is_refused_naming_the_sheet(tmp_path):
+def test_a_gear_pair_that_cannot_be_made_is_refused_in_one_line_naming_the_centre(tmp_path):
+    """Refused as the file is read (core's reader makes the pair, as the GUI's Open does),
+    before any sheet is planned: the course command says why in one line and writes nothing."""
+    from cli_runner import shaper_in_process
+    from core.base.errors import FileFormatError
     doc = document()
     doc["gear"] = dict(GEAR, centre_mm=100.0)          # below (z1 + z2)·m/2 by far: shifts beyond the teeth
-    read, keys = read_document(write(tmp_path / "d.json", doc))
-    with pytest.raises(CourseError, match=r"^--design: d.json: the gear sheet: "):
-        plan_course(read, keys, "d.json", str(tmp_path / "out"))
+    path = write(tmp_path / "d.json", doc)
+    with pytest.raises(FileFormatError, match=r"centre = 100: must be > a cos α"):
+        read_document(path)
+    status, _, err = shaper_in_process("course", "--design", path, "-o", tmp_path / "out")
+    assert status == 2 and err.count("\n") == 1 and "--design" in err and "centre = 100" in err, err
+    assert os.listdir(tmp_path) == ["d.json"]
 
 
 @pytest.mark.parametrize("drop", [c for n in range(1, 4) for c in itertools.combinations(NEEDED, n)])
