@@ -17,6 +17,7 @@ from core.files.io import atomic_write, curves_csv, load_design, masses_to_dict,
 from core.linkage.spec import Spec
 
 from shaperapp.widgets import file_dialogs
+from shaperapp.widgets.ask import use_last_valid
 from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, missing_font_text, remembered_filter
 from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
 
@@ -182,12 +183,7 @@ class Document(QObject):
         error = model.error or model.forces_error
         question = (self.tr("Save the last valid design instead? The invalid input is then reset to it.")
                     if saving else self.tr("Export the results of the last valid design instead?"))
-        answer = QMessageBox.question(
-            parent, self.tr("Invalid input"),
-            describe(error) + "\n\n" + question,
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.Cancel,
-            QMessageBox.StandardButton.Cancel)
-        if answer != QMessageBox.StandardButton.Yes:
+        if not use_last_valid(parent, self.tr("Invalid input"), describe(error), question):
             return False
         if saving:
             model.revert_invalid()

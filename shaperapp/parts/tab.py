@@ -18,6 +18,7 @@ from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QMessageBox, QPushButto
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs
+from shaperapp.widgets.ask import use_last_valid
 from shaperapp.widgets.messages import failure_reason
 
 from .form import PartForm
@@ -123,11 +124,6 @@ class PartTab(QWidget):
                 "before, since this design's cannot be made.")
             QMessageBox.warning(self, self.export_title(), self.form.describe(error) + "\n\n" + why)
             return False
-        answer = QMessageBox.question(
-            self, self.export_title(),
-            self.form.describe(error) + "\n\n"
-            # an explicit context: self.tr here would look the text up under the subclass's
-            + QCoreApplication.translate("PartTab", "%1 Export it instead?").replace("%1", self.form.kept()),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.Cancel,
-            QMessageBox.StandardButton.Cancel)
-        return answer == QMessageBox.StandardButton.Yes
+        # an explicit context: self.tr here would look the text up under the subclass's
+        question = QCoreApplication.translate("PartTab", "%1 Export it instead?").replace("%1", self.form.kept())
+        return use_last_valid(self, self.export_title(), self.form.describe(error), question)
