@@ -5982,6 +5982,10 @@
         <translation>连杆长度在 %1 mm 以内时，连杆与导杆总会经过死点位置；请移动导路线</translation>
     </message>
     <message>
+        <source>gives %1 samples (angles × speeds) with %2 speeds, more than a design file holds (%3); use a step of at least %4°</source>
+        <translation>%2 个转速时产生 %1 个采样点（角度数 × 转速数），超过设计文件的上限 %3；角度步长至少取 %4°</translation>
+    </message>
+    <message>
         <source>must be more than %1 mm to reach the guide line over the whole cycle</source>
         <translation>须大于 %1 mm，才能在整个循环中到达导路线</translation>
     </message>
@@ -6008,10 +6012,6 @@
     <message>
         <source>gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds</source>
         <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；请增大角度步长或减少转速个数</translation>
-    </message>
-    <message>
-        <source>gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds</source>
-        <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；%4 个转速时角度步长至少取 %3°</translation>
     </message>
     <message>
         <source>must be given either as a length or as a ratio L4/L3, not both</source>

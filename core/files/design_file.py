@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from core.base.errors import DesignError, FileFormatError
-from core.linkage.kinematics import angle_count, check_rpms
+from core.linkage.kinematics import angle_count, check_file_samples, check_rpms
 from core.linkage.spec import Spec
 
 if TYPE_CHECKING:
@@ -84,6 +84,7 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
         spec = _spec(doc["spec"], name, entry)
         rpm = _rpms(doc.get("rpm", list(DEFAULT_FILE_RPMS)), name, entry)
         step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name, entry)
+        check_file_samples(step, len(rpm))     # the file's own limit, the GUI's too
         masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
         if "cam" in doc:            # validated here, kept as written (older files have none)
             from core.cam.file import cam_from_dict     # the cam's modules: only for a file with one

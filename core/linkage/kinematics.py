@@ -23,8 +23,8 @@ import numpy as np
 from .designs import Designs
 from core.base.errors import DesignError, require_range
 from .geometry import Design
-from .limits import (MAX_ANGLES, MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG,  # noqa: F401
-                     MIN_RPM, MIN_STEP_DEG)
+from .limits import (MAX_ANGLES, MAX_FILE_SAMPLES, MAX_RPM, MAX_SAMPLES, MAX_SPEEDS,  # noqa: F401
+                     MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG)
 
 
 def rpm_to_omega(rpm: np.ndarray | float) -> np.ndarray:
@@ -133,6 +133,22 @@ def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
             advice = f"use a step of at least {smallest_step(n_speeds, limit):g}° for {speeds}"
         raise DesignError(parameter, samples if value is None else value,
                           f"gives {samples} samples (angles × speeds), more than {limit}; {advice}")
+    return samples
+
+
+def check_file_samples(step: float, n_speeds: int) -> int:
+    """Refuse a design whose crank-angle ``step`` (°) with ``n_speeds`` speeds holds more
+    samples than a design file may (:data:`MAX_FILE_SAMPLES`); return the count.
+
+    The one check of that limit: the design file's reader, ``shaper design`` and the GUI's
+    step field all call it, so a file one of them accepts the others accept too. The
+    message names the limit as the file's and the coarsest step that fits."""
+    samples = angle_count(step) * int(n_speeds)
+    if samples > MAX_FILE_SAMPLES:
+        speeds = "1 speed" if int(n_speeds) == 1 else f"{int(n_speeds)} speeds"
+        raise DesignError("step", step, f"gives {samples} samples (angles × speeds) with {speeds}, more "
+                          f"than a design file holds ({MAX_FILE_SAMPLES}); use a step of at least "
+                          f"{smallest_step(n_speeds, MAX_FILE_SAMPLES):g}°")
     return samples
 
 

@@ -16,3 +16,10 @@ MAX_STEP_DEG = 90.0
 MAX_SAMPLES = 2_000_000
 """Largest request, crank angles × crank speeds: what one computation may hold in memory."""
 MAX_ANGLES = MAX_SAMPLES
+MAX_FILE_SAMPLES = 60_000
+"""Largest design a design file holds, its crank angles × crank speeds: what the GUI
+recomputes and redraws on every edit within about half a second (set when 60 000 samples
+took 0.34–0.68 s on the shared 2-core machine under a load of 3.5; docs/performance.md). It is
+the file's own limit, checked by its reader and by ``shaper design``, so every file the
+CLI writes or the library keeps opens in the GUI; commands that write no design file
+(``shaper curves --step``) go up to :data:`MAX_SAMPLES`."""

@@ -149,8 +149,9 @@ _OWN_PATTERNS: tuple[tuple[str, str], ...] = (
     (r"gives more than (\S+) angles; use a larger step$", "gives more than %1 angles; use a larger step"),
     (r"gives (\S+) samples \(angles × speeds\), more than (\S+); use a larger step or fewer speeds$",
      "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds"),
-    (r"gives (\S+) samples \(angles × speeds\), more than (\S+); use a step of at least (\S+)° for (\S+) speeds?$",
-     "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
+    (r"gives (\S+) samples \(angles × speeds\) with (\S+) speeds?, more than a design file holds \((\S+)\); "
+     r"use a step of at least (\S+)°$",
+     "gives %1 samples (angles × speeds) with %2 speeds, more than a design file holds (%3); use a step of at least %4°"),
     (r"must be given either as a length or as a ratio L4/L3, not both$",
      "must be given either as a length or as a ratio L4/L3, not both"),
     # what a design file can hold wrong (core.files.design_file, Spec.from_dict, core.cam.file)
@@ -222,8 +223,8 @@ def _translated_templates() -> dict[str, str]:
         "gives more than %1 angles; use a larger step": QCoreApplication.translate("messages", "gives more than %1 angles; use a larger step"),
         "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds":
             QCoreApplication.translate("messages", "gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds"),
-        "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds":
-            QCoreApplication.translate("messages", "gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds"),
+        "gives %1 samples (angles × speeds) with %2 speeds, more than a design file holds (%3); use a step of at least %4°":
+            QCoreApplication.translate("messages", "gives %1 samples (angles × speeds) with %2 speeds, more than a design file holds (%3); use a step of at least %4°"),
         "must be given either as a length or as a ratio L4/L3, not both":
             QCoreApplication.translate("messages", "must be given either as a length or as a ratio L4/L3, not both"),
         "is not a design field": QCoreApplication.translate("messages", "is not a design field"),
