@@ -216,6 +216,10 @@
         <source>edit cam</source>
         <translation>编辑凸轮</translation>
     </message>
+    <message>
+        <source>This design's cam cannot be made: no cam is shown.</source>
+        <translation>此设计的凸轮无法求出：不显示凸轮。</translation>
+    </message>
 </context>
 <context>
     <name>CamPlots</name>
@@ -2877,6 +2881,10 @@
         <source>edit gear pair</source>
         <translation>编辑齿轮副</translation>
     </message>
+    <message>
+        <source>This design's gear pair cannot be made: no pair is shown.</source>
+        <translation>此设计的齿轮副无法求出：不显示齿轮副。</translation>
+    </message>
 </context>
 <context>
     <name>GearPairView</name>
@@ -4121,8 +4129,8 @@
 <context>
     <name>PartTab</name>
     <message>
-        <source>Nothing was exported: the drawing shows the part of the design opened before, since this design's cannot be made.</source>
-        <translation>未导出任何内容：此设计的该部件无法求出，图中显示的是此前打开的设计的部件。</translation>
+        <source>Nothing was exported.</source>
+        <translation>未导出任何内容。</translation>
     </message>
     <message>
         <source>%1 Export it instead?</source>

@@ -41,6 +41,7 @@ class CamTab(PartTab):
         scroll.setMinimumWidth(scroll.widget().sizeHint().width() + 16)
         scroll.setMaximumWidth(scroll.widget().sizeHint().width() + 16)
         self.cam_model.camChanged.connect(self.show_figures)
+        self.cam_model.errorChanged.connect(self.show_figures)     # own_value may have changed
         self.retranslate()
 
     def showEvent(self, event) -> None:  # noqa: N802 - Qt's name
@@ -96,6 +97,9 @@ class CamTab(PartTab):
     def show_figures(self) -> None:
         if not self.isVisible():
             return              # shown when the tab is (showEvent)
+        if not self.cam_model.own_value:    # an earlier design's figures: none (the form says why)
+            self.figures.setText("")
+            return
         cells = "".join(f"<tr><td>{k}</td><td align='right'>&nbsp;{v}</td></tr>" for k, v in self.figure_rows())
         self.figures.setText(f"<table>{cells}</table>")
 
