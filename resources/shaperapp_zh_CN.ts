@@ -4347,6 +4347,14 @@
         <source>Position</source>
         <translation>位置</translation>
     </message>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
 </context>
 <context>
     <name>PositionsView</name>

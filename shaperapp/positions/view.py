@@ -17,6 +17,7 @@ from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
                                QSpinBox, QWidget)
 
+from core.files.dynamics_io import FLAG_COLUMNS
 from core.forces.masses import masses_for_design
 from core.course_design.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
                             positions)
@@ -84,12 +85,18 @@ class PositionsModel(QAbstractTableModel):
         self._header = [on_screen(titles.get(table.columns[i], table.columns[i])) for i in cols]
         self._corner = self.tr("Position")
         self._tips = [table.columns[i] for i in cols]
-        texts = [column_texts(shown[:, i]) for i in cols]
+        texts = [self.flag_texts(shown[:, i]) if table.columns[i] in FLAG_COLUMNS else column_texts(shown[:, i])
+                 for i in cols]
         self._rows = [row_title(int(number), name, specials)
                       for number, name in zip(table.positions.number, table.positions.name)]
         self._cells = [list(row) for row in zip(*texts)] if texts else [[] for _ in self._rows]
         self._special = [bool(name) for name in table.positions.name]
         self.endResetModel()
+
+    def flag_texts(self, values: np.ndarray) -> list[str]:
+        """A yes/no column (``FLAG_COLUMNS``, 1 or 0) as the app shows a yes/no; NaN is ''."""
+        yes, no = self.tr("yes"), self.tr("no")
+        return [("" if not math.isfinite(v) else yes if v else no) for v in values]
 
     def rowCount(self, parent=QModelIndex()) -> int:
         return 0 if parent.isValid() else len(self._cells)
