@@ -814,6 +814,14 @@
 <context>
     <name>Columns</name>
     <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
         <source>n (r/min)</source>
         <translation>n (r/min)</translation>
     </message>
@@ -2896,14 +2904,6 @@
 <context>
     <name>GearResults</name>
     <message>
-        <source>yes</source>
-        <translation>是</translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation>否</translation>
-    </message>
-    <message>
         <source>Teeth</source>
         <translation>齿数</translation>
     </message>
@@ -4346,14 +4346,6 @@
     <message>
         <source>Position</source>
         <translation>位置</translation>
-    </message>
-    <message>
-        <source>yes</source>
-        <translation>是</translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation>否</translation>
     </message>
 </context>
 <context>
