@@ -18,6 +18,7 @@ from .form import CamForm
 from .model import CamModel
 from .plots import CamPlots
 from .profile_view import CamProfileView
+from .words import cam_words
 
 
 class CamTab(PartTab):
@@ -110,9 +111,10 @@ class CamTab(PartTab):
         atomic_write(path, table_csv(*cam_table(self.cam_model.cam, crank_angles(1.0), rpm)))
 
     def export_dxf(self, path: str, cad_font: str = "gb") -> None:
-        """The cam as ``shaper cam --dxf --cad-font`` writes it."""
+        """The cam as ``shaper cam --dxf --cad-font --lang`` writes it, its notes in the app's
+        language (the cam sheet's words)."""
         from core.drawing.cam_dxf import write_cam_dxf     # ezdxf: only when a drawing is asked for
-        write_cam_dxf(self.cam_model.cam, path, cad_font)
+        write_cam_dxf(self.cam_model.cam, path, cad_font, cam_words())
 
     def export_image(self, path: str) -> None:
         self.profile.export_image(path)
