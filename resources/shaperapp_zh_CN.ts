@@ -1510,6 +1510,10 @@
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
+        <source>%1 does not give %2; these were taken.</source>
+        <translation>%1 未给出 %2；已按这些值取用。</translation>
+    </message>
+    <message>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>

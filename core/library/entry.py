@@ -10,12 +10,13 @@ import json
 from dataclasses import dataclass
 from typing import Any, Sequence
 
+from core.files.design_file import OWN_KEYS
 from core.space.figures import FIGURES_VERSION, Figures, SpeedFigures
 
 # The design file's reader and writer (numpy and the linkage) are imported where a document
 # is read or written: ``shaper library --help`` prints texts only (issue 43 item 5).
 
-_PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
+_PARSED_KEYS = set(OWN_KEYS)
 
 
 @dataclass(frozen=True)

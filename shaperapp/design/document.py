@@ -29,9 +29,11 @@ MAX_PATH_CHARS = 4096      # longer is not a path any system opens (PATH_MAX)
 
 
 class Document(QObject):
-    """Connects the model to files. ``failed(str)`` carries a plain message."""
+    """Connects the model to files. ``failed(str)`` carries a plain message; ``noted(str)`` what
+    an opened file lacked and the values taken for it (``core.files.design_file.defaulted_keys``)."""
 
     failed = Signal(str)
+    noted = Signal(str)
     recentChanged = Signal()
     saved = Signal(str)
 
@@ -55,6 +57,10 @@ class Document(QObject):
             self.failed.emit(self.tr("Could not open %1: %2").replace("%1", path).replace("%2", describe(exc)))
             return False
         self._add_recent(path)
+        if doc["defaulted"]:        # never a design changed without a word
+            taken = ", ".join(f"{key} = {value}" for key, value in doc["defaulted"])
+            self.noted.emit(self.tr("%1 does not give %2; these were taken.")
+                            .replace("%1", os.path.basename(path)).replace("%2", taken))
         return True
 
     def save_to(self, path: str) -> bool:

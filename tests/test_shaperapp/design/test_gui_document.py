@@ -177,3 +177,21 @@ def test_a_shaper_design_file_opens_in_the_gui_and_one_over_the_limit_is_refused
         assert not document.open_path(str(over))
     assert "115216" in blocker.args[0] and "60000" in blocker.args[0] and "0.0961" in blocker.args[0]
     assert (model.spec, model.rpms, model.step_deg, model.path) == before
+
+
+def test_open_says_the_defaults_a_file_lacking_keys_takes(doc, tmp_path, qtbot):
+    """A file without "stroke" opened with H = 300 mm without a word: Open now says what was
+    taken (core's defaulted_keys), once; a complete file says nothing."""
+    model, document = doc
+    path = tmp_path / "nostroke.shaper.json"
+    path.write_text(json.dumps({"format": "shaper-design", "version": 1, "rpm": [40.0], "step_deg": 1.0,
+                                "spec": {"mode": "synthesis", "crank": 100, "time_ratio": 1.5, "variant": "block",
+                                         "guide_rule": "chord"}}), encoding="utf-8")
+    with qtbot.waitSignal(document.noted, timeout=10_000) as blocker:
+        assert document.open_path(str(path))
+    assert blocker.args == ["nostroke.shaper.json does not give spec.stroke = 300 mm; these were taken."]
+    assert model.design.stroke == pytest.approx(300.0)
+    full = tmp_path / "full.shaper.json"
+    assert document.save_to(str(full))
+    with qtbot.assertNotEmitted(document.noted):
+        assert document.open_path(str(full))
