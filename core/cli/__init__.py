@@ -31,7 +31,8 @@ from core.base.blas import limit_blas_threads
 limit_blas_threads()        # before numpy, which .common imports
 
 from core.base.errors import DesignError, FileFormatError  # noqa: E402
-from .common import Parser, UsageError, VersionAction, design_error_text, fail, flush_notes  # noqa: E402
+from .common import Parser, UsageError, VersionAction, design_error_text, fail  # noqa: E402
+from .notes import flush_notes  # noqa: E402
 from .common import _NEGATIVE_NUMBER as _NEGATIVE  # noqa: E402  (argparse's idea of a number)
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output  # noqa: E402
 

@@ -214,27 +214,9 @@ def design_file(args: argparse.Namespace) -> dict[str, Any] | None:
         cached = load_design(path)
         args._design_doc = cached
         if not getattr(args, "defaults_said", False):       # else said by the caller (shaper class's --base)
+            from .notes import say_defaulted
             say_defaulted("--design", path, cached)     # once, as the file is read
     return cached
-
-
-_NOTES: list[str] = []
-
-
-def say_defaulted(option: str, path: object, doc: dict[str, Any]) -> None:
-    """One note on stderr per key the design file lacks whose default the design is computed
-    with (``core.files.design_file.defaulted_keys``): a design is never changed without a word.
-    Said when the command has run (:func:`flush_notes`): a refusal stays one line."""
-    _NOTES.extend(f"{option}: {path} gives no {key}; {value} taken" for key, value in doc["defaulted"])
-
-
-def flush_notes(ran: bool) -> None:
-    """Print the notes of the command that ran (``ran``: it returned, whatever its status;
-    not when a refusal or an error stopped it), then forget them."""
-    if ran:
-        for text in _NOTES:
-            print(f"shaper: note: {text}", file=sys.stderr)
-    _NOTES.clear()
 
 
 def spec_from_args(args: argparse.Namespace) -> Spec:

@@ -14,7 +14,8 @@ import os
 import sys
 import time
 
-from core.cli.common import UsageError, say_defaulted, whole_number
+from core.cli.common import UsageError, whole_number
+from core.cli.notes import say_defaulted
 from core.cli.output import OutputError, cad_font_from_args
 from shaperapp.widgets.command_line import COVER_OPTIONS, cover_text
 

@@ -10,7 +10,8 @@ from __future__ import annotations
 import argparse
 import time
 
-from core.cli.common import UsageError, say_defaulted
+from core.cli.common import UsageError
+from core.cli.notes import say_defaulted
 from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
 from core.course_design.plan import PARTS, CourseError, file_names, plan_course, read_document
 from core.drawing.paper import PAPERS
