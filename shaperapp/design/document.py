@@ -19,7 +19,8 @@ from core.linkage.spec import Spec
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.ask import use_last_valid
 from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, missing_font_text, remembered_filter
-from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
+from shaperapp.widgets.file_messages import describe_file_error, describe_os_error
+from shaperapp.widgets.messages import describe
 
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
 from .model import DesignModel

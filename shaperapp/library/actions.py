@@ -27,7 +27,8 @@ from core.library.backup import backup_copy
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.messages import describe, describe_damage, describe_file_error, describe_os_error
+from shaperapp.widgets.file_messages import describe_damage, describe_file_error, describe_os_error
+from shaperapp.widgets.messages import describe
 
 
 class _Swap(QUndoCommand):

@@ -21,7 +21,7 @@ from core.library.store import LibraryError, resolve_path
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.frozen_view import FrozenNameView
-from shaperapp.widgets.messages import describe_file_error
+from shaperapp.widgets.file_messages import describe_file_error
 
 from .actions import LibraryActions
 from .dialogs import SaveDialog, ask_refused_library

@@ -19,7 +19,7 @@ from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QMessageBox, QPushButto
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.ask import use_last_valid
-from shaperapp.widgets.messages import failure_reason
+from shaperapp.widgets.file_messages import failure_reason
 
 from .form import PartForm
 from .model import PartModel
