@@ -1510,10 +1510,6 @@
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <source>%1 does not give %2; these were taken.</source>
-        <translation>%1 未给出 %2；已按这些值取用。</translation>
-    </message>
-    <message>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -6256,6 +6252,10 @@
     <message>
         <source>%1 is larger than %2 MB, too large to be a design file</source>
         <translation>%1 大于 %2 MB，不可能是设计文件</translation>
+    </message>
+    <message>
+        <source>%1 does not give %2; these were taken.</source>
+        <translation>%1 未给出 %2；已按这些值取用。</translation>
     </message>
     <message>
         <source>%1 is not a shaper design file</source>

@@ -19,7 +19,7 @@ from core.linkage.spec import Spec
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.ask import use_last_valid
 from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, missing_font_text, remembered_filter
-from shaperapp.widgets.file_messages import describe_file_error, describe_os_error
+from shaperapp.widgets.file_messages import defaulted_text, describe_file_error, describe_os_error
 from shaperapp.widgets.messages import describe
 
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
@@ -59,9 +59,7 @@ class Document(QObject):
             return False
         self._add_recent(path)
         if doc["defaulted"]:        # never a design changed without a word
-            taken = ", ".join(f"{key} = {value}" for key, value in doc["defaulted"])
-            self.noted.emit(self.tr("%1 does not give %2; these were taken.")
-                            .replace("%1", os.path.basename(path)).replace("%2", taken))
+            self.noted.emit(defaulted_text(os.path.basename(path), doc["defaulted"]))
         return True
 
     def save_to(self, path: str) -> bool:

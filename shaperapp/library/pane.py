@@ -119,6 +119,7 @@ class LibraryPane(QWidget):
         self.actions.changed.connect(self._refresh)
         self.actions.libraryChanged.connect(self._library_changed)
         self.actions.failed.connect(self._show_failure)
+        self.actions.noted.connect(self.message_label.setText)
         self.actions.refused.connect(self._refused)
         self._timer = QTimer(self)
         self._timer.setInterval(POLL_MS)

@@ -17,6 +17,14 @@ from core.base.errors import os_reason as core_os_reason
 from .messages import describe
 
 
+def defaulted_text(name: str, defaulted: tuple[tuple[str, str], ...]) -> str:
+    """What an opened design lacked and the values taken for it (``core.files.design_file.
+    defaulted_keys``), said once where it was opened: a design never changes without a word."""
+    taken = ", ".join(f"{key} = {value}" for key, value in defaulted)
+    return QCoreApplication.translate("messages", "%1 does not give %2; these were taken.").replace(
+        "%1", name, 1).replace("%2", taken, 1)
+
+
 def failure_reason(error: Exception) -> str:
     """What a dialog shows for a failure it did not foresee: a DesignError in the UI's
     language (:func:`describe`), else the exception's own text, else its type, never a
