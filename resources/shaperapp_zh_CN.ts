@@ -216,6 +216,10 @@
         <source>edit cam</source>
         <translation>编辑凸轮</translation>
     </message>
+    <message>
+        <source>This design's cam cannot be made: no cam is shown.</source>
+        <translation>此设计的凸轮无法求出：不显示凸轮。</translation>
+    </message>
 </context>
 <context>
     <name>CamPlots</name>
@@ -809,6 +813,14 @@
 </context>
 <context>
     <name>Columns</name>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
     <message>
         <source>n (r/min)</source>
         <translation>n (r/min)</translation>
@@ -2877,6 +2889,10 @@
         <source>edit gear pair</source>
         <translation>编辑齿轮副</translation>
     </message>
+    <message>
+        <source>This design's gear pair cannot be made: no pair is shown.</source>
+        <translation>此设计的齿轮副无法求出：不显示齿轮副。</translation>
+    </message>
 </context>
 <context>
     <name>GearPairView</name>
@@ -2887,14 +2903,6 @@
 </context>
 <context>
     <name>GearResults</name>
-    <message>
-        <source>yes</source>
-        <translation>是</translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation>否</translation>
-    </message>
     <message>
         <source>Teeth</source>
         <translation>齿数</translation>
@@ -4121,8 +4129,8 @@
 <context>
     <name>PartTab</name>
     <message>
-        <source>Nothing was exported: the drawing shows the part of the design opened before, since this design's cannot be made.</source>
-        <translation>未导出任何内容：此设计的该部件无法求出，图中显示的是此前打开的设计的部件。</translation>
+        <source>Nothing was exported.</source>
+        <translation>未导出任何内容。</translation>
     </message>
     <message>
         <source>%1 Export it instead?</source>
@@ -5982,6 +5990,10 @@
         <translation>连杆长度在 %1 mm 以内时，连杆与导杆总会经过死点位置；请移动导路线</translation>
     </message>
     <message>
+        <source>gives %1 samples (angles × speeds) with %2 speeds, more than a design file holds (%3); use a step of at least %4°</source>
+        <translation>%2 个转速时产生 %1 个采样点（角度数 × 转速数），超过设计文件的上限 %3；角度步长至少取 %4°</translation>
+    </message>
+    <message>
         <source>must be more than %1 mm to reach the guide line over the whole cycle</source>
         <translation>须大于 %1 mm，才能在整个循环中到达导路线</translation>
     </message>
@@ -6008,10 +6020,6 @@
     <message>
         <source>gives %1 samples (angles × speeds), more than %2; use a larger step or fewer speeds</source>
         <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；请增大角度步长或减少转速个数</translation>
-    </message>
-    <message>
-        <source>gives %1 samples (angles × speeds), more than %2; use a step of at least %3° for %4 speeds</source>
-        <translation>产生 %1 个采样点（角度数 × 转速数），超过上限 %2；%4 个转速时角度步长至少取 %3°</translation>
     </message>
     <message>
         <source>must be given either as a length or as a ratio L4/L3, not both</source>
@@ -6244,6 +6252,10 @@
     <message>
         <source>%1 is larger than %2 MB, too large to be a design file</source>
         <translation>%1 大于 %2 MB，不可能是设计文件</translation>
+    </message>
+    <message>
+        <source>%1 does not give %2; these were taken.</source>
+        <translation>%1 未给出 %2；已按这些值取用。</translation>
     </message>
     <message>
         <source>%1 is not a shaper design file</source>

@@ -1,4 +1,4 @@
-"""What a DIMENSION measures, reckoned from its definition points."""
+"""What a DIMENSION measures, reckoned from its definition points; a DXF's notes as read."""
 import math
 
 import numpy as np
@@ -16,3 +16,17 @@ def measurement(dim) -> float:
     second = np.array(dim.dxf.defpoint)[:2] - np.array(dim.dxf.defpoint4)[:2]
     cross = first[0] * second[1] - first[1] * second[0]
     return abs(math.degrees(math.atan2(cross, float(first @ second))))
+
+
+def notes_of(path) -> str:
+    """The notes of a DXF (its TEXT layer's TEXT entities), one a line: the runs (a subscript
+    is a TEXT of its own) joined in the order written, a line starting at the notes' left edge."""
+    import ezdxf
+    texts = list(ezdxf.readfile(path).modelspace().query("TEXT[layer=='TEXT']"))
+    left = min(t.dxf.insert.x for t in texts)
+    lines: list[str] = []
+    for t in texts:
+        if abs(t.dxf.insert.x - left) < 1e-6:
+            lines.append("")
+        lines[-1] += t.dxf.text
+    return "\n".join(lines)

@@ -8,6 +8,10 @@ place, not 33.6529° in one and 33.653° in another, K = 1.4599, not 1.45991 bes
 table has its own rule (five significant digits of a column's largest value), since a
 column of one quantity shares its decimals.
 
+A dimension's text on a drawing (the scheme's L1, L2, L3, h, H and θ in the window and the
+report, the sheets' dimensions, the DXF's DIMENSION texts) is another kind, written as CAD
+writes a measurement: :func:`dimension_text`.
+
 Fixed decimals where a course design quotes a quantity that way (lengths to the
 micrometre, angles to a thousandth of a degree, speeds and accelerations to 0.1 mm/s
 and 0.1 mm/s²); four significant digits for the loads, whose size spans decades.
@@ -50,3 +54,17 @@ def figure_text(kind: str, value: float) -> str:
         digits = min(max(digits - 1 - math.floor(math.log10(abs(value))), 0), 12)
     text = f"{value:.{digits}f}"
     return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+
+
+DIMENSION_DECIMALS = 2
+"""Places of a dimension's text on a drawing: CAD's DIMDEC in the GB style of
+``core.drawing.dimensions``, trailing zeros dropped as it drops them (L1 = 100, h = 148.44)."""
+
+
+def dimension_text(value: float) -> str:
+    """``value`` (mm or °) as a drawing's dimension writes it: ``DIMENSION_DECIMALS`` places,
+    trailing zeros dropped, no negative zero. One rule for the scheme on screen, in the report
+    and on the sheets: the scheme's h read 148.4 beside the sheet's 148.44."""
+    text = f"{value:.{DIMENSION_DECIMALS}f}"
+    text = text.rstrip("0").rstrip(".") if "." in text else text
+    return "0" if text == "-0" else text

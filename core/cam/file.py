@@ -29,6 +29,11 @@ def cam_to_dict(inputs: CamInputs, phase_deg: float | None) -> dict[str, Any]:
             "boss_mm": inputs.boss_mm, "clearance_mm": inputs.clearance_mm, "phase_deg": phase_deg}
 
 
+def default_values() -> dict[str, Any]:
+    """What a file's ``"cam"`` object takes for each key it lacks."""
+    return cam_to_dict(CamInputs(), None)
+
+
 def cam_from_dict(data: Any) -> tuple[CamInputs, float | None]:
     """The inputs and phase of a file's ``"cam"`` object; DesignError names a bad key."""
     if not isinstance(data, dict):

@@ -32,6 +32,7 @@ limit_blas_threads()        # before numpy, which .common imports
 
 from core.base.errors import DesignError, FileFormatError  # noqa: E402
 from .common import Parser, UsageError, VersionAction, design_error_text, fail  # noqa: E402
+from .notes import flush_notes  # noqa: E402
 from .common import _NEGATIVE_NUMBER as _NEGATIVE  # noqa: E402  (argparse's idea of a number)
 from .output import GuardedStdout, OutputError, StdoutError, install_safe_output  # noqa: E402
 
@@ -176,9 +177,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     install_safe_output()
     stdout = sys.stdout
     sys.stdout = GuardedStdout(stdout)  # type: ignore[assignment]
+    flush_notes(False)          # none left from an earlier run in this process
     try:
         status = run(argv)
         sys.stdout.flush()
+        flush_notes(True)
         return status
     except UsageError as exc:
         return fail(str(exc))
@@ -202,6 +205,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except Exception as exc:  # never a traceback; the one line says what broke
         return fail(f"internal error ({type(exc).__name__}: {exc}); please report it", status=1)
     finally:
+        flush_notes(False)      # a refusal's: not said (it is one line)
         if isinstance(sys.stdout, GuardedStdout):
             sys.stdout = stdout
 

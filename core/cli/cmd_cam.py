@@ -9,7 +9,8 @@ from core.base.errors import DesignError
 from core.linkage.limits import MAX_RPM, MIN_RPM
 from .common import (UsageError, add_design_options, design_error_text, design_file,
                      design_from_args, number)
-from .output import OutputError, add_cad_font_option, cad_font_from_args, print_json, print_table
+from .output import (OutputError, add_cad_font_option, add_lang_option, cad_font_from_args, print_json,
+                     print_table, sheet_labels)
 
 if TYPE_CHECKING:
     from ..cam import Cam, CamInputs
@@ -56,6 +57,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out.add_argument("--csv", metavar="FILE|-", help="write one row per cam angle as CSV")
     out.add_argument("--dxf", metavar="FILE", help="write the profile at 1:1 in mm as DXF")
     add_cad_font_option(out)
+    add_lang_option(out, "the --dxf notes")
 
 
 def add_cam_options(parser: argparse.ArgumentParser,
@@ -237,6 +239,9 @@ def run(args: argparse.Namespace) -> int:
     if args.json and args.csv == "-":
         raise UsageError("--json: cannot share stdout with --csv -; write the CSV to a file")
     cad_font = cad_font_from_args(args, args.dxf is not None)
+    if args.lang is not None and args.dxf is None:
+        raise UsageError("--lang: only with --dxf")
+    labels = sheet_labels(args.lang or "en", "cam") if args.dxf is not None else None
     cam, rpm, angles = _cam_at(args)
     if args.csv is not None:          # block by block: 1.8 million rows at the finest step
         from ..cam.table import cam_table
@@ -246,7 +251,7 @@ def run(args: argparse.Namespace) -> int:
     if args.dxf is not None:
         from core.drawing.cam_dxf import write_cam_dxf     # ezdxf: only when a drawing is asked for
         try:
-            write_cam_dxf(cam, args.dxf, cad_font)
+            write_cam_dxf(cam, args.dxf, cad_font, labels)
         except OSError as exc:          # a WriteError: names the user's path and a plain reason
             raise OutputError(f"--dxf: {exc}") from None
     summary = _summary(cam, rpm)

@@ -38,8 +38,6 @@ EXAMPLES = ("shaper design --dims 110,380,540 --rod-ratio 0.25 --guide sagitta -
             "shaper design --design base.shaper.json --crank 110 --K 1.5 --stroke 320 -o s01.shaper.json")
 
 LINKAGE = ("crank", "time_ratio", "stroke", "dims")
-# the design file's own keys, which this command writes; any other key of --design is kept
-_WRITTEN = ("format", "version", "spec", "rpm", "step_deg", "forces", "masses", "cam", "gear")
 
 
 def configure(parser: argparse.ArgumentParser, output: bool = True) -> None:
@@ -48,8 +46,10 @@ def configure(parser: argparse.ArgumentParser, output: bool = True) -> None:
     from .cmd_gear import add_gear_options
     add_design_options(parser)
     add_speed_options(parser)
+    from core.linkage.limits import MAX_FILE_SAMPLES
     parser.add_argument("--step", metavar="DEG", help="crank-angle step the GUI shows, ° (default 1, "
-                        "or the design file's)")
+                        f"or the design file's); at most {MAX_FILE_SAMPLES} angles × speeds, a design "
+                        "file's limit")
     add_load_options(parser, required=False)
     add_phase_option(add_cam_options(parser, "the feed cam (optional)"))
     add_gear_options(parser, "the gear pair (optional; z1, z2 and the module together)")
@@ -80,16 +80,17 @@ def document_from_args(args: argparse.Namespace) -> dict[str, Any]:
     """The design file the options describe over ``--design``: every value checked as the
     subcommand that uses it checks it (UsageError or DesignError naming the option), and
     the whole read back by the design file's reader."""
-    from core.files.design_file import masses_to_dict, parse_design
+    from core.files.design_file import OWN_KEYS, PART_KEYS, masses_to_dict, parse_design
     from core.files.io import design_document
-    from core.linkage.kinematics import angle_count, check_rpms
+    from core.linkage.kinematics import check_file_samples, check_rpms
     base = design_file(args) or {}
     spec = layered_spec(args)
     design = _design(spec, args)
     rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
     step = number("step", args.step) if args.step is not None else float(base.get("step_deg", 1.0))
-    angle_count(step)
-    extra: dict[str, Any] = {k: v for k, v in base.items() if k not in _WRITTEN}
+    check_file_samples(step, len(rpms))     # before the loads and parts: --step names the fault
+    # the design file's own keys are written here; any other key of --design is kept
+    extra: dict[str, Any] = {k: v for k, v in base.items() if k not in OWN_KEYS + PART_KEYS}
     from .loads import loads_given, masses_from_args
     idle = 0.05
     if loads_given(args):

@@ -6,8 +6,8 @@ from typing import TYPE_CHECKING
 
 from core.base.errors import DesignError
 from .common import UsageError, design_error_text, design_file, number
-from .output import (OutputError, add_cad_font_option, cad_font_from_args, check_target, print_json,
-                     print_table, write_output)
+from .output import (OutputError, add_cad_font_option, add_lang_option, cad_font_from_args, check_target,
+                     print_json, print_table, sheet_labels, write_output)
 
 if TYPE_CHECKING:
     from ..gear import GearPair
@@ -53,8 +53,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     out.add_argument("--sheet", metavar="SIZE", help="paper of the --dxf sheet: A0, A1, A2, A3 "
                      "(default A2)")
     add_cad_font_option(out)
-    out.add_argument("--lang", choices=("en", "zh", "zh_CN"), help="language of the --dxf sheet's "
-                     "texts: en, or zh (= zh_CN) for Chinese (default en)")
+    add_lang_option(out, "the --dxf sheet's texts")
 
 
 def add_gear_options(parser: argparse.ArgumentParser,
@@ -151,7 +150,7 @@ def run(args: argparse.Namespace) -> int:
     pair = pair_from_args(args)
     if args.dxf is not None:
         _paper(args)
-        labels = sheet_labels(args.lang or "en")
+        labels = sheet_labels(args.lang or "en", "gear")
     summary = gear_summary(pair)
     if args.csv is not None:
         write_output("--csv", args.csv, summary_csv(summary))
@@ -170,25 +169,6 @@ def _paper(args: argparse.Namespace):
     if name not in PAPERS:
         raise UsageError(f"--sheet: {args.sheet!r} is not one of {', '.join(PAPERS)}")
     return PAPERS[name]
-
-
-def sheet_labels(lang: str) -> dict[str, str] | None:
-    """The meshing sheet's texts in ``lang``: None for English (the sheet's own); else from
-    the ``drawing`` command's module (the translations are Qt's, which core never imports),
-    found through the ``shaper.commands`` entry points as ``core.cli`` finds that command.
-    UsageError naming --lang when it is not installed."""
-    if lang == "en":
-        return None
-    from importlib import import_module, metadata
-    try:
-        entry = next((e for e in metadata.entry_points(group="shaper.commands") if e.name == "drawing"), None)
-        module = import_module(entry.value) if entry is not None else None
-    except ImportError:
-        module = None
-    if module is None or not hasattr(module, "gear_labels_in"):
-        raise UsageError("--lang: a Chinese sheet needs the GUI package (shaperapp, with PySide6) "
-                         "installed; leave out --lang for the English sheet")
-    return module.gear_labels_in(lang)
 
 
 def _write_dxf(pair: GearPair, args: argparse.Namespace, labels: dict[str, str] | None,

@@ -184,13 +184,13 @@ def _open(args: argparse.Namespace, create: bool = True) -> Library:
 
 
 def _run_add(args: argparse.Namespace) -> int:
-    from core.linkage.kinematics import check_rpms, crank_angles
+    from core.linkage.kinematics import check_file_samples, check_rpms
     spec = spec_from_args(args)
     design = spec.design()
     rpms = [float(r) for r in check_rpms(rpms_from_args(args))]
     doc = design_file(args)
     step = number("step", args.step) if args.step is not None else (doc["step_deg"] if doc else 1.0)
-    crank_angles(step)
+    check_file_samples(step, len(rpms))      # what the library keeps is a design file
     masses = masses_or_none(args, design)
     loaded: dict[str, Any] = dict(doc) if doc is not None else {}
     loaded.update(spec=spec, rpm=rpms, step_deg=float(step), masses=masses)

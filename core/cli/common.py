@@ -213,6 +213,9 @@ def design_file(args: argparse.Namespace) -> dict[str, Any] | None:
         from core.files.io import load_design
         cached = load_design(path)
         args._design_doc = cached
+        if not getattr(args, "defaults_said", False):       # else said by the caller (shaper class's --base)
+            from .notes import say_defaulted
+            say_defaulted("--design", path, cached)     # once, as the file is read
     return cached
 
 

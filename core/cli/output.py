@@ -149,3 +149,29 @@ def cad_font_from_args(args, writes_dxf: bool) -> str:
         except OutlineFontMissing as exc:
             raise UsageError(f"--cad-font: {exc}") from None
     return args.cad_font
+
+
+def add_lang_option(parser, texts: str) -> None:
+    """``--lang``: the language of a DXF's ``texts`` (the gear's sheet, the cam's notes)."""
+    parser.add_argument("--lang", choices=("en", "zh", "zh_CN"), help=f"language of {texts}: en, or "
+                        "zh (= zh_CN) for Chinese (default en)")
+
+
+def sheet_labels(lang: str, part: str) -> dict[str, str] | None:
+    """The words of ``part``'s drawing ("gear", "cam": ``core.drawing.<part>_sheet.ENGLISH``'s
+    keys) in ``lang``: None for English (core's own); else from the ``drawing`` command's
+    module (the translations are Qt's, which core never imports), found through the
+    ``shaper.commands`` entry points as ``core.cli`` finds that command. UsageError naming
+    --lang when it is not installed."""
+    if lang == "en":
+        return None
+    from importlib import import_module, metadata
+    try:
+        entry = next((e for e in metadata.entry_points(group="shaper.commands") if e.name == "drawing"), None)
+        module = import_module(entry.value) if entry is not None else None
+    except ImportError:
+        module = None
+    if module is None or not hasattr(module, "sheet_labels_in"):
+        raise UsageError("--lang: Chinese texts need the GUI package (shaperapp, with PySide6) "
+                         "installed; leave out --lang for English")
+    return module.sheet_labels_in(lang, part)

@@ -187,6 +187,7 @@ def _student(name: str, line: int, header: list[str], cells: list[str], parser: 
     try:
         argv, given = _argv(where, row, actions, base, here)
         args = parser.parse_args(argv)
+        args.defaults_said = not row.get("design")      # the base's: said once, not per student
         from .cmd_design import document_from_args
         document = document_from_args(args)
     except _CellError as exc:

@@ -308,30 +308,37 @@ def _curves(cam: Cam, rpm: float, box: Box, lab: Mapping[str, str],
     return items
 
 
-def figure_rows(cam: Cam, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:
-    """The data sheet's inputs, then the synthesized figures, as the table prints them."""
+def figure_values(cam: Cam, lab: Mapping[str, str]) -> dict[str, str]:
+    """The cam's figures that do not depend on the speed, as texts by their word's key in
+    ``lab``: each as ``shaper cam``, the report and the answer key write it (figure_text's
+    kinds). The sheet's table prints them, the cam's DXF notes some of them."""
     f, prog, inputs = cam.follower, cam.program, cam.inputs
-    # each figure as ``shaper cam``, the report and the answer key write it (figure_text's kinds)
     mm = lambda v: f"{figure_text('length', v)} mm"                     # noqa: E731
     deg = lambda v: f"{figure_text('angle', v)}°"                       # noqa: E731
+    return {"arm": mm(f.arm_mm), "swing": f"{prog.swing_deg:g}°",
+            "rise": f"{prog.rise_deg:g}°, {lab[prog.rise_law]}", "dwell": f"{prog.dwell_deg:g}°",
+            "return": f"{prog.return_deg:g}°, {lab[prog.return_law]}",
+            "inner": f"{prog.inner_dwell_deg:g}°",
+            "allowed": f"{inputs.pressure_deg:g}° / {inputs.return_pressure_deg:g}°",
+            "base": mm(cam.base_radius_mm), "distance": mm(f.distance_mm), "initial": deg(f.initial_deg),
+            "side": lab["above"] if f.side > 0 else lab["below"],
+            "max_pressure": f"{deg(cam.max_pressure_rise_deg)} / {deg(cam.max_pressure_return_deg)}",
+            "rho": mm(cam.min_curvature_radius_mm), "roller": mm(cam.roller_mm),
+            "profile_base": mm(cam.base_radius_mm - cam.roller_mm)}
+
+
+def figure_rows(cam: Cam, rpm: float, lab: Mapping[str, str]) -> list[tuple[str, str]]:
+    """The data sheet's inputs, then the synthesized figures, as the table prints them."""
+    values = figure_values(cam, lab)
     peaks = follower_peaks(cam, rpm)
-    rows = [(lab["arm"], mm(f.arm_mm)), (lab["swing"], f"{prog.swing_deg:g}°"),
-            (lab["rise"], f"{prog.rise_deg:g}°, {lab[prog.rise_law]}"),
-            (lab["dwell"], f"{prog.dwell_deg:g}°"),
-            (lab["return"], f"{prog.return_deg:g}°, {lab[prog.return_law]}"),
-            (lab["inner"], f"{prog.inner_dwell_deg:g}°"),
-            (lab["allowed"], f"{inputs.pressure_deg:g}° / {inputs.return_pressure_deg:g}°"),
-            (lab["n"], f"{number_text(rpm)} r/min"),
-            (lab["base"], mm(cam.base_radius_mm)), (lab["distance"], mm(f.distance_mm)),
-            (lab["initial"], deg(f.initial_deg)),
-            (lab["side"], lab["above"] if f.side > 0 else lab["below"]),
-            (lab["max_pressure"], f"{deg(cam.max_pressure_rise_deg)} / {deg(cam.max_pressure_return_deg)}"),
-            (lab["rho"], mm(cam.min_curvature_radius_mm)), (lab["roller"], mm(cam.roller_mm)),
-            (lab["profile_base"], mm(cam.base_radius_mm - cam.roller_mm)),
-            (lab["peaks"], f"{peaks['follower_omega_max_rad_s']:.4g} rad/s / "
-                              f"{peaks['follower_alpha_max_rad_s2']:.4g} rad/s²")]
+    rows = [(lab[k], values[k]) for k in ("arm", "swing", "rise", "dwell", "return", "inner", "allowed")]
+    rows.append((lab["n"], f"{number_text(rpm)} r/min"))
+    rows += [(lab[k], values[k]) for k in ("base", "distance", "initial", "side", "max_pressure", "rho",
+                                          "roller", "profile_base")]
+    rows.append((lab["peaks"], f"{peaks['follower_omega_max_rad_s']:.4g} rad/s / "
+                               f"{peaks['follower_alpha_max_rad_s2']:.4g} rad/s²"))
     if not cam.within_allowance:            # a checked cam (--base, --distance) may exceed it
         rows.append((lab["allowance"], lab["exceeded"]))
     if cam.timing is not None:
-        rows.append((lab["phase"], deg(cam.timing.phase_deg)))
+        rows.append((lab["phase"], f"{figure_text('angle', cam.timing.phase_deg)}°"))
     return rows

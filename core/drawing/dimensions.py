@@ -20,6 +20,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from core.base.figure_text import DIMENSION_DECIMALS
+
 from .dxf import DIMENSIONS, TEXT_STYLE
 from .sheet import standard_scale
 
@@ -29,7 +31,7 @@ if TYPE_CHECKING:
 DIMSTYLE = "GB_MM"
 DIM_TEXT_MM = 5.0            # text height on paper, GB/T 14691's series
 ARROW_MM = 3.5               # arrow length on paper (≥ 6d for d = 0.5 mm)
-DECIMALS = 2
+DECIMALS = DIMENSION_DECIMALS      # the dimension texts' places, one rule with the screen's
 A3_ROOM_MM = (380.0, 260.0)  # an A3 sheet's drawing area: the scale a print would use
 
 

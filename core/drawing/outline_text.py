@@ -74,11 +74,12 @@ def drawn_width(run: Text, font) -> float:
     return font.get_text_length(run.text, run.height, squeeze(run, font))
 
 
-def _as_drawn(x: float, y: float) -> tuple[float, float]:
+def as_drawn(x: float, y: float) -> tuple[float, float]:
+    """A point in the drawing's own coordinates (a text placed where it is drawn)."""
     return float(x), float(y)
 
 
-def add_outline_text(msp, item: Text, to: Callable[[float, float], tuple[float, float]] = _as_drawn,
+def add_outline_text(msp, item: Text, to: Callable[[float, float], tuple[float, float]] = as_drawn,
                      k: float = 1.0) -> None:
     """``item`` as solid HATCH entities on its layer, each run at ``to`` of its paper
     position and ``k`` times its paper size (a sheet with a model is drawn in the model's mm;

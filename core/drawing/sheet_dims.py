@@ -24,7 +24,9 @@ from typing import Sequence
 
 import numpy as np
 
-from .dimensions import ARROW_MM, DECIMALS, reading_order
+from core.base.figure_text import dimension_text
+
+from .dimensions import ARROW_MM, reading_order
 from .dxf import DIMENSIONS
 from .sheet import Box, Item, Pair, Polyline, Text, line
 
@@ -70,10 +72,8 @@ class Dimension:
         return {**out, "dimtoh": 1} if self.led else out
 
 
-def value_text(value: float) -> str:
-    """A measurement as CAD writes it in this style: DECIMALS places, trailing zeros dropped."""
-    text = f"{value:.{DECIMALS}f}"
-    return text.rstrip("0").rstrip(".") if "." in text else text
+value_text = dimension_text
+"""A measurement as CAD writes it in this style (``core.base.figure_text.dimension_text``)."""
 
 
 def _arrow(tip: np.ndarray, back: np.ndarray) -> Polyline:

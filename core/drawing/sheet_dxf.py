@@ -7,6 +7,7 @@ by layer, and prints the sheet at 1:1 on the paper it names.
 from __future__ import annotations
 
 import os
+from typing import Callable
 
 import numpy as np
 from ezdxf import zoom
@@ -17,7 +18,7 @@ from . import dimensions as dims
 from .dxf import literal_text, new_document, save_dxf, text_attribs
 from .dxf_polyline import add_polyline
 from .dxf_text_entity import add_text
-from .outline_text import add_outline_text
+from .outline_text import add_outline_text, as_drawn
 from .sheet import Circle, Polyline, Sheet, Text
 
 ALIGNMENTS = {
@@ -84,15 +85,23 @@ def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
                 hatch.paths.add_polyline_path(list(map(tuple, points.tolist())), is_closed=True)
         elif isinstance(item, Circle):
             msp.add_circle(to(*item.center), item.radius * k, dxfattribs=attribs)
-        elif isinstance(item, Text) and outline:
-            add_outline_text(msp, item, to, k)
         elif isinstance(item, Text):
-            for run in item.runs():        # a subscript is a smaller text of its own
-                text = add_text(msp, literal_text(run.text), run.height * k, run.rotation,
-                                text_attribs(item.layer))
-                text.set_placement(to(*run.position), align=ALIGNMENTS[run.align])
+            add_sheet_text(msp, item, cad_font, to, k)
     zoom.window(msp, low, high)            # CAD opens on the whole sheet
     return doc
+
+
+def add_sheet_text(msp, item: Text, cad_font: str = "gb",
+                   to: Callable[[float, float], tuple[float, float]] = as_drawn, k: float = 1.0) -> None:
+    """A sheet's text (subscripts as ``r_0``) in ``cad_font``: "gb", each run a TEXT in the GB
+    style, a subscript a smaller text of its own; "outline", the glyphs as filled outlines.
+    ``to`` and ``k`` map paper mm to the drawing's (by default its own coordinates)."""
+    if cad_font == "outline":
+        add_outline_text(msp, item, to, k)
+        return
+    for run in item.runs():
+        text = add_text(msp, literal_text(run.text), run.height * k, run.rotation, text_attribs(item.layer))
+        text.set_placement(to(*run.position), align=ALIGNMENTS[run.align])
 
 
 def _dimension(msp, dim, blank: bool = False) -> None:

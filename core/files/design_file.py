@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from core.base.errors import DesignError, FileFormatError
-from core.linkage.kinematics import angle_count, check_rpms
+from core.linkage.kinematics import angle_count, check_file_samples, check_rpms
 from core.linkage.spec import Spec
 
 if TYPE_CHECKING:
@@ -39,9 +39,17 @@ DEFAULT_FILE_STEP = 1.0
 PART_KEYS = ("cam", "gear")
 """The parts a design file may hold beside the linkage, speeds and loads, each validated on
 reading and kept as written: a reader that does not edit a part must write it back."""
-OWN_KEYS = ("format", "version", "spec", "rpm", "step_deg", "forces", "masses")
-"""The keys of a loaded design that are not parts: the file's own, and ``masses`` (the loads
-:func:`load_design` adds, read from ``forces``)."""
+OWN_KEYS = ("format", "version", "spec", "rpm", "step_deg", "forces", "masses", "defaulted")
+"""The keys of a loaded design that are not parts: the file's own, and what :func:`load_design`
+adds: ``masses`` (the loads, read from ``forces``) and ``defaulted`` (:func:`defaulted_keys`)."""
+NOTED_LOADS = ("lever_mass_kg", "lever_inertia_kg_m2", "ram_mass_kg", "ram_cg_mm", "rod_mass_kg",
+               "crank_mass_kg", "block_mass_kg", "cut_force_N", "cut_height_mm", "idle_fraction",
+               "gravity", "delta")
+"""The loads whose default a reader must say when a file's ``forces`` lacks them: a number the
+design is computed with (a missing ram mass would weigh nothing). The others mean "not given"
+when absent as when null: ``lever_cg_mm`` (L3/2), ``guide_length_mm`` (the stroke), the
+weights given instead of the masses, ``rotors`` (none)."""
+SPEC_LENGTHS = ("crank", "stroke", "frame", "lever", "guide_height", "rod_length")
 
 
 class _Refused(ValueError):
@@ -84,6 +92,7 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
         spec = _spec(doc["spec"], name, entry)
         rpm = _rpms(doc.get("rpm", list(DEFAULT_FILE_RPMS)), name, entry)
         step = _step(doc.get("step_deg", DEFAULT_FILE_STEP), name, entry)
+        check_file_samples(step, len(rpm))     # the file's own limit, the GUI's too
         masses = masses_from_dict(doc["forces"]) if "forces" in doc else None
         if "cam" in doc:            # validated here, kept as written (older files have none)
             from core.cam.file import cam_from_dict     # the cam's modules: only for a file with one
@@ -100,7 +109,65 @@ def parse_design(raw: bytes, name: str, entry: str | None = None) -> dict[str, A
         raise FileFormatError("invalid", name, _shorten(str(exc)), entry=entry, cause=exc) from None
     result = dict(doc)
     result.update(spec=spec, rpm=rpm, step_deg=step, masses=masses)
+    result["defaulted"] = defaulted_keys(doc, spec, rpm, step, masses)
     return result
+
+
+def defaulted_keys(doc: dict[str, Any], spec: Spec, rpm: list[float], step: float,
+                   masses: MassProperties | None) -> tuple[tuple[str, str], ...]:
+    """(key, the value taken) of every key ``doc`` lacks that the design is computed with,
+    so that a reader can say it (``shaper … --design`` one note a key on stderr, File › Open
+    in the status bar): a user's design is never changed without a word. Silent, as
+    documented: a part the file has not (``forces``, ``cam``, ``gear``), a spec field the
+    design does not use (``frame`` in synthesis mode), and a key whose absence means what its
+    null does ("not given", "chosen by the tool": ``NOTED_LOADS``' others, the cam's roller,
+    base, distance and phase, the gear's optional keys)."""
+    out: list[tuple[str, str]] = []
+    given = doc["spec"]
+    used = {"mode", "variant", "guide_rule", *spec.active_fields()}
+    if spec.variant == "rod":
+        used |= {"rod_input", "rod_side"}
+    for f in fields(Spec):
+        if f.name in used and f.name not in given:
+            value = getattr(spec, f.name)
+            unit = " mm" if f.name in SPEC_LENGTHS else ""
+            out.append((f"spec.{f.name}", value if isinstance(value, str) else _number(value) + unit))
+    if "rpm" not in doc:
+        out.append(("rpm", ", ".join(map(_number, rpm)) + " r/min"))
+    if "step_deg" not in doc:
+        out.append(("step_deg", f"{_number(step)}°"))
+    if masses is not None:
+        loads = doc["forces"]
+        for name in NOTED_LOADS:
+            alternative = {"lever_mass_kg": "lever_weight_N", "ram_mass_kg": "ram_weight_N"}.get(name)
+            unused = name == "rod_mass_kg" and spec.variant != "rod"
+            if name not in loads and not unused and (alternative is None or loads.get(alternative) is None):
+                out.append((f"forces.{name}", _load_text(name, getattr(masses, name))))
+    if isinstance(doc.get("cam"), dict):
+        from core.cam.file import NUMBER_KEYS, TEXT_KEYS, default_values
+        defaults = default_values()
+        out += [(f"cam.{k}", _load_text(k, defaults[k])) for k in NUMBER_KEYS + TEXT_KEYS if k not in doc["cam"]]
+    return tuple(out)
+
+
+def _load_text(key: str, value: object) -> str:
+    """A default as a note says it, its unit from the key (``_mm``, ``_deg``, ``_kg`` …)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return value
+    units = (("_kg_m2", " kg·m²"), ("_kg", " kg"), ("_N", " N"), ("_mm", " mm"), ("_deg", "°"))
+    unit = next((u for suffix, u in units if key.endswith(suffix)), "")
+    if isinstance(value, tuple):
+        return "[" + ", ".join(map(_number, value)) + "]" + unit
+    return _number(value) + unit
+
+
+def _number(value: float) -> str:
+    """The shortest text that reads back as ``value`` (300, 0.05; 1/30 in full): a note's
+    value, typed into the file, is the one taken."""
+    short = f"{value:g}"
+    return short if float(short) == value else repr(float(value))
 
 
 def file_parts(doc: dict[str, Any]) -> dict[str, Any]:

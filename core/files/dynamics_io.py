@@ -29,6 +29,10 @@ FORCE_COLUMNS = (
     ("guide_front_N", "guide_front_N"), ("guide_tilted", "guide_tilted"), ("cut_force_N", "cut_force"),
 )
 
+FLAG_COLUMNS = ("guide_tilted",)
+"""Columns that are a yes/no, 1 or 0 in the tables and the CSV (a spreadsheet sums them:
+the positions where the ram tilts); a reader shows them as yes and no (the Positions tab)."""
+
 
 def dynamics_table(dyn: Dynamics) -> tuple[tuple[str, ...], np.ndarray]:
     """Long-form table, one row per (rpm, angle): column names and a 2-D array."""

@@ -15,8 +15,6 @@ from core.space.figures import FIGURES_VERSION, Figures, SpeedFigures
 # The design file's reader and writer (numpy and the linkage) are imported where a document
 # is read or written: ``shaper library --help`` prints texts only (issue 43 item 5).
 
-_PARSED_KEYS = {"format", "version", "spec", "rpm", "step_deg", "forces", "masses"}
-
 
 @dataclass(frozen=True)
 class Entry:
@@ -44,13 +42,14 @@ class Entry:
 
 def document_text(loaded: dict[str, Any]) -> str:
     """A loaded design (``load_design``'s dict) as the JSON text of a design file."""
+    from core.files.design_file import OWN_KEYS     # numpy: not for a --help that imports this module
     from core.files.io import design_document, masses_to_dict
     masses = loaded.get("masses")
     extra: dict[str, Any] = {}
     for key, value in loaded.items():              # keep the file's key order
         if key == "forces" and masses is not None:
             extra["forces"] = masses_to_dict(masses)
-        elif key not in _PARSED_KEYS:
+        elif key not in OWN_KEYS:
             extra[key] = value
     if masses is not None and "forces" not in extra:
         extra["forces"] = masses_to_dict(masses)

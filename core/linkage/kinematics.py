@@ -23,8 +23,11 @@ import numpy as np
 from .designs import Designs
 from core.base.errors import DesignError, require_range
 from .geometry import Design
-from .limits import (MAX_ANGLES, MAX_RPM, MAX_SAMPLES, MAX_SPEEDS, MAX_STEP_DEG,  # noqa: F401
-                     MIN_RPM, MIN_STEP_DEG)
+# the bounds and the checks of a request, in a module without numpy; re-exported here,
+# where every caller has always found them
+from .limits import (MAX_ANGLES, MAX_FILE_SAMPLES, MAX_RPM, MAX_SAMPLES, MAX_SPEEDS,  # noqa: F401
+                     MAX_STEP_DEG, MIN_RPM, MIN_STEP_DEG, angle_steps, angle_count, check_file_samples,
+                     check_request, smallest_step)
 
 
 def rpm_to_omega(rpm: np.ndarray | float) -> np.ndarray:
@@ -63,24 +66,11 @@ class Shape:
 
 def crank_angles(step_deg: float = 1.0) -> np.ndarray:
     """0, step, …, up to and including 360°, in rad (the cycle closes)."""
-    step, steps, closing = _steps(step_deg)
+    step, steps, closing = angle_steps(step_deg)
     degrees = np.arange(steps + 1) * step
     if closing:
         degrees = np.append(degrees, 360.0)
     return np.radians(degrees)
-
-
-def angle_count(step_deg: float) -> int:
-    """How many angles :func:`crank_angles` gives for ``step_deg`` (validated), without making them."""
-    _, steps, closing = _steps(step_deg)
-    return steps + 1 + int(closing)
-
-
-def _steps(step_deg: float) -> tuple[float, int, bool]:
-    """The validated step, the whole steps in 360° and whether 360° must be appended."""
-    step = require_range("step", step_deg, MIN_STEP_DEG, MAX_STEP_DEG, "°", low_open=False)
-    steps = int(math.floor(360.0 / step + 1e-9))
-    return step, steps, steps * step < 360.0 - 1e-9
 
 
 def check_angles(angles_deg: np.ndarray) -> np.ndarray:
@@ -103,37 +93,6 @@ def check_rpms(rpms) -> np.ndarray:
         raise DesignError("rpm", values.size, f"give 1 to {MAX_SPEEDS} crank speeds")
     return np.array([require_range("rpm", v, MIN_RPM, MAX_RPM, "r/min", low_open=False)
                      for v in values])
-
-
-def smallest_step(n_speeds: int, limit: int = MAX_SAMPLES) -> float:
-    """The finest angle step, °, rounded up to 3 significant digits, whose angles times
-    ``n_speeds`` stay within ``limit`` samples."""
-    most_angles = limit // max(int(n_speeds), 1)
-    # crank_angles gives floor(360/s) + 1 angles, plus 360° when s does not divide it.
-    step = 360.0 / max(most_angles - 2, 1)
-    scale = 10.0 ** (2 - math.floor(math.log10(step)))
-    return max(math.ceil(step * scale) / scale, MIN_STEP_DEG)
-
-
-def check_request(n_angles: int, n_speeds: int, parameter: str = "step",
-                  value: object = None, limit: int = MAX_SAMPLES) -> int:
-    """Refuse a request of more than ``limit`` samples (angles × speeds); return the count.
-
-    Every front end calls this before computing, so that no request can
-    exhaust memory: the CLI with the option the user typed as ``parameter``
-    (and its ``value``, e.g. the step), the GUI with its own, smaller
-    ``limit`` if it must stay responsive. For the step the message names the
-    finest step allowed with this many speeds.
-    """
-    samples = int(n_angles) * int(n_speeds)
-    if samples > limit:
-        advice = "use a larger step or fewer speeds"
-        if parameter == "step":
-            speeds = "1 speed" if int(n_speeds) == 1 else f"{int(n_speeds)} speeds"
-            advice = f"use a step of at least {smallest_step(n_speeds, limit):g}° for {speeds}"
-        raise DesignError(parameter, samples if value is None else value,
-                          f"gives {samples} samples (angles × speeds), more than {limit}; {advice}")
-    return samples
 
 
 def shape(design: Design | Designs, phi: np.ndarray) -> Shape:

@@ -172,6 +172,9 @@ class CamModel(PartModel):
     def edit_text(self) -> str:
         return QCoreApplication.translate("CamModel", "edit cam")
 
+    def unmade_text(self) -> str:
+        return QCoreApplication.translate("CamModel", "This design's cam cannot be made: no cam is shown.")
+
     def cam_angle(self, crank_angle: np.ndarray | float) -> np.ndarray:
         """Cam angle (rad) at crank angles (rad): the crank angle less the phase."""
         t = self._value.timing

@@ -81,6 +81,7 @@ class CamPlots(QWidget):
         self._items: list[tuple[pg.PlotWidget, pg.PlotCurveItem]] = []
         self._stale = False
         cam_model.camChanged.connect(self.redraw)
+        cam_model.errorChanged.connect(self.redraw)     # own_value may have changed
         cam_model.design_model.angleChanged.connect(self.move_cursor)
         cam_model.design_model.resultsChanged.connect(self.redraw)
         self.retranslate()
@@ -148,6 +149,12 @@ class CamPlots(QWidget):
 
     def _draw(self) -> None:
         self._stale = False
+        own = self._model.own_value
+        self._inner.setVisible(own)         # an earlier design's cam: none of its curves or axes
+        if not own:
+            for _plot, item in self._items:
+                item.setData([], [])
+            return
         d = self.data()
         cam = self._model.cam
         x = d["cam_deg"]

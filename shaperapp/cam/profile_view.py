@@ -18,6 +18,7 @@ from core.cam import Cam
 from core.cam.follower import pitch, profile
 from shaperapp.parts.view import PartView
 from shaperapp.widgets.image_export import export_painting
+from shaperapp.widgets.messages import describe
 from shaperapp.widgets.screen_polygon import screen_polygon
 from shaperapp.widgets.style import FRAME, LINK, TEXT
 
@@ -38,7 +39,7 @@ class CamProfileView(PartView):
     """Paints the cam at the model's crank angle; ``render`` paints it anywhere."""
 
     def __init__(self, cam_model: CamModel, parent: QWidget | None = None) -> None:
-        super().__init__(cam_model, (240, 200), lambda: cam_curves(cam_model.cam), parent)
+        super().__init__(cam_model, (240, 200), lambda: cam_curves(cam_model.cam), describe, parent)
 
     curves = PartView.shapes
     """The pitch curve and the profile in the cam's frame (2, POINTS) mm."""

@@ -18,6 +18,7 @@ from .form import CamForm
 from .model import CamModel
 from .plots import CamPlots
 from .profile_view import CamProfileView
+from .words import cam_words
 
 
 class CamTab(PartTab):
@@ -41,6 +42,7 @@ class CamTab(PartTab):
         scroll.setMinimumWidth(scroll.widget().sizeHint().width() + 16)
         scroll.setMaximumWidth(scroll.widget().sizeHint().width() + 16)
         self.cam_model.camChanged.connect(self.show_figures)
+        self.cam_model.errorChanged.connect(self.show_figures)     # own_value may have changed
         self.retranslate()
 
     def showEvent(self, event) -> None:  # noqa: N802 - Qt's name
@@ -96,6 +98,9 @@ class CamTab(PartTab):
     def show_figures(self) -> None:
         if not self.isVisible():
             return              # shown when the tab is (showEvent)
+        if not self.cam_model.own_value:    # an earlier design's figures: none (the form says why)
+            self.figures.setText("")
+            return
         cells = "".join(f"<tr><td>{k}</td><td align='right'>&nbsp;{v}</td></tr>" for k, v in self.figure_rows())
         self.figures.setText(f"<table>{cells}</table>")
 
@@ -106,9 +111,10 @@ class CamTab(PartTab):
         atomic_write(path, table_csv(*cam_table(self.cam_model.cam, crank_angles(1.0), rpm)))
 
     def export_dxf(self, path: str, cad_font: str = "gb") -> None:
-        """The cam as ``shaper cam --dxf --cad-font`` writes it."""
+        """The cam as ``shaper cam --dxf --cad-font --lang`` writes it, its notes in the app's
+        language (the cam sheet's words)."""
         from core.drawing.cam_dxf import write_cam_dxf     # ezdxf: only when a drawing is asked for
-        write_cam_dxf(self.cam_model.cam, path, cad_font)
+        write_cam_dxf(self.cam_model.cam, path, cad_font, cam_words())
 
     def export_image(self, path: str) -> None:
         self.profile.export_image(path)

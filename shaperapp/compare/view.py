@@ -23,7 +23,8 @@ from core.library.names import file_stem, unique_name
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.figure_labels import figure_label, figure_tip, format_figure
 from shaperapp.widgets.image_export import export_painting
-from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
+from shaperapp.widgets.file_messages import describe_file_error, describe_os_error
+from shaperapp.widgets.messages import describe
 
 from .plots import COLOURS, ComparePlots
 

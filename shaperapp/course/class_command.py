@@ -15,6 +15,7 @@ import sys
 import time
 
 from core.cli.common import UsageError, whole_number
+from core.cli.notes import say_defaulted
 from core.cli.output import OutputError, cad_font_from_args
 from shaperapp.widgets.command_line import COVER_OPTIONS, cover_text
 
@@ -82,7 +83,7 @@ def run(args: argparse.Namespace) -> int:
         whole_number("--jobs", args.jobs, 1, 256)
     if args.base is not None:
         try:
-            load_design(args.base)
+            say_defaulted("--base", args.base, load_design(args.base))
         except FileFormatError as exc:
             raise UsageError(f"--base: {exc}") from None
     try:

@@ -123,7 +123,7 @@ class ClassDialog(QDialog):
         from core.files.design_file import load_design
         from core.base.errors import FileFormatError
 
-        from shaperapp.widgets.messages import describe_file_error
+        from shaperapp.widgets.file_messages import describe_file_error
 
         from .class_messages import table_message
         self.table.setRowCount(0)

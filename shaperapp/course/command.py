@@ -11,6 +11,7 @@ import argparse
 import time
 
 from core.cli.common import UsageError
+from core.cli.notes import say_defaulted
 from core.cli.output import OutputError, add_cad_font_option, cad_font_from_args
 from core.course_design.plan import PARTS, CourseError, file_names, plan_course, read_document
 from core.drawing.paper import PAPERS
@@ -75,6 +76,7 @@ def run(args: argparse.Namespace) -> int:
     paper = paper_of(args)
     cover, date = cover_from_args(args)
     doc, keys = read_document(args.design)          # FileFormatError: "--design: …"
+    say_defaulted("--design", args.design, doc)
     try:
         course = plan_course(doc, keys, args.design, args.output, dxf=args.dxf)
     except CourseError as exc:

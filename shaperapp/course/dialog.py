@@ -32,7 +32,7 @@ from shaperapp.design.model import DesignModel
 from shaperapp.widgets.cad_font import CadFontChoice, outline_font_problem
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
-from shaperapp.widgets.messages import describe_os_error, failure_reason
+from shaperapp.widgets.file_messages import describe_os_error, failure_reason
 from shaperapp.widgets.export_child import job_bytes
 from shaperapp.widgets.export_process import ChildExport
 

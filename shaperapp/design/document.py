@@ -19,7 +19,8 @@ from core.linkage.spec import Spec
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.ask import use_last_valid
 from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, missing_font_text, remembered_filter
-from shaperapp.widgets.messages import describe, describe_file_error, describe_os_error
+from shaperapp.widgets.file_messages import defaulted_text, describe_file_error, describe_os_error
+from shaperapp.widgets.messages import describe
 
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
 from .model import DesignModel
@@ -29,9 +30,11 @@ MAX_PATH_CHARS = 4096      # longer is not a path any system opens (PATH_MAX)
 
 
 class Document(QObject):
-    """Connects the model to files. ``failed(str)`` carries a plain message."""
+    """Connects the model to files. ``failed(str)`` carries a plain message; ``noted(str)`` what
+    an opened file lacked and the values taken for it (``core.files.design_file.defaulted_keys``)."""
 
     failed = Signal(str)
+    noted = Signal(str)
     recentChanged = Signal()
     saved = Signal(str)
 
@@ -55,6 +58,8 @@ class Document(QObject):
             self.failed.emit(self.tr("Could not open %1: %2").replace("%1", path).replace("%2", describe(exc)))
             return False
         self._add_recent(path)
+        if doc["defaulted"]:        # never a design changed without a word
+            self.noted.emit(defaulted_text(os.path.basename(path), doc["defaulted"]))
         return True
 
     def save_to(self, path: str) -> bool:

@@ -14,15 +14,11 @@ from core.forces.dynamics import ENERGY_INTERVALS, Dynamics, DynamicsSummary, Sp
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
 from core.linkage.geometry import Design
-from core.linkage.kinematics import Motion, angle_count, check_request, check_rpms, crank_angles, rpm_to_omega, solve
+from core.linkage.kinematics import Motion, check_file_samples, check_rpms, crank_angles, rpm_to_omega, solve
 from core.linkage.metrics import CycleMetrics, analyze
 
 from .inputs import Inputs
 
-# angles × speeds the whole window recomputes and redraws within about half a second:
-# 60 000 samples took 0.34–0.68 s on the shared 2-core machine under a load of 3.5
-# (docs/performance.md). core's own cap (core.linkage.kinematics) is far larger, for the CLI.
-MAX_GUI_SAMPLES = 60_000
 COMPUTE_ERRORS = (ArithmeticError, ValueError, RuntimeError, MemoryError)
 
 
@@ -33,7 +29,7 @@ def compute_motion(inputs: Inputs) -> tuple[Design, Motion, CycleMetrics]:
     if not isinstance(inputs.step, (int, float)) or isinstance(inputs.step, bool):
         raise DesignError("step", inputs.step, "must be a number")
     step = float(inputs.step)
-    check_request(angle_count(step), len(rpms), "step", step, limit=MAX_GUI_SAMPLES)
+    check_file_samples(step, len(rpms))     # a design file's limit: what is shown can be saved
     angles = crank_angles(step)
     return design, solve(design, angles, rpms), analyze(design, rpms)
 

@@ -158,9 +158,13 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def gear_labels_in(lang: str) -> dict[str, str]:
-    """The meshing sheet's texts in --lang (en, zh, zh_CN), for ``shaper gear --dxf --lang``:
-    core draws the sheet but cannot translate (the catalogue is Qt's), so it asks here."""
+def sheet_labels_in(lang: str, part: str) -> dict[str, str]:
+    """The words of ``part``'s drawing ("gear": the meshing sheet, "cam": the cam's DXF notes)
+    in --lang (en, zh, zh_CN), for ``shaper gear --dxf --lang`` and ``shaper cam --dxf --lang``:
+    core draws them but cannot translate (the catalogue is Qt's), so it asks here."""
     start_qt(lang, needs_font=False)           # a DXF names its font, it embeds none
+    if part == "cam":
+        from shaperapp.cam.words import cam_words
+        return cam_words()
     from .gear_labels import gear_labels
     return gear_labels()

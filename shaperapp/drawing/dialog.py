@@ -33,7 +33,7 @@ from shaperapp.widgets.cad_font import CadFontChoice, missing_font_text
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.gear_messages import describe_gear_error
-from shaperapp.widgets.messages import describe_os_error, failure_reason
+from shaperapp.widgets.file_messages import describe_os_error, failure_reason
 
 from .content import DEFAULT_PAPER, SHEET_SUFFIXES, SheetChoice, build_sheet
 from .render import paint_sheet, write_sheet

@@ -19,7 +19,7 @@ from PySide6.QtWidgets import (QComboBox, QDoubleSpinBox, QGridLayout, QHBoxLayo
                                QProgressBar, QPushButton, QSpinBox, QVBoxLayout, QWidget)
 
 from core.space.optimize import on_bounds, tidy_optimum
-from core.space.sweep import default_range, design_value, spec_changes, tidy_values, varied_parameters
+from core.space.sweep import default_range, design_value, spec_changes, varied_parameters
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.combos import fill_combo
 from shaperapp.widgets.image_export import export_scene_captioned
@@ -27,6 +27,7 @@ from shaperapp.widgets.messages import describe
 from shaperapp.widgets.worker import JobRunner
 
 from . import names as explore_names
+from .cells import cell_text, clicked_changes
 from .jobs import FIGURES, MapJob, MapResult, OptimizeJob
 from .map import HeatMap
 from .optimize_box import OptimizeBox
@@ -255,33 +256,14 @@ class ExploreView(QWidget):
                             design_value(design, self.result.y_name))
 
     def _hovered(self, row: int, column: int) -> None:
-        result = self.result
-        if result is None or row < 0:
-            self.hover.clear()
-            self.map.setToolTip("")
-            return
-        names = self.parameter_names()
-        where = f"{names[result.x_name]} = {result.x[column]:.5g}, {names[result.y_name]} = {result.y[row]:.5g}"
-        error = result.errors[row * result.x.size + column]
-        if error is not None:
-            text = self.tr("%1 — invalid: %2").replace("%1", where).replace("%2", describe(error))
-        else:                                # every figure of the cell, to weigh one against another
-            labels = self.figure_names()
-            shown = [f"{labels[key]}: {values[row, column]:.5g}" for key, values in
-                     result.figures.items() if math.isfinite(values[row, column])]
-            text = where + "\n" + ";  ".join(shown)
+        text = "" if self.result is None or row < 0 else cell_text(self.result, row, column)
         self.hover.setText(text)
         self.map.setToolTip(text)
 
     def _clicked(self, row: int, column: int) -> None:
-        """Load the clicked design through the model (an ordinary, undoable edit), its values
-        rounded to a hundredth of the cell (52.56, not 52.564102564102564)."""
-        r = self.result
-        if r is not None:
-            cell = {r.x_name: (r.x, column), r.y_name: (r.y, row)}
-            values = {n: float(axis[i]) for n, (axis, i) in cell.items()}
-            resolution = {n: float(np.ptp(axis)) / max(axis.size - 1, 1) / 100 for n, (axis, _) in cell.items()}
-            self.model.set_spec(**spec_changes(tidy_values(self.model.valid_spec, values, resolution)))
+        """Load the clicked design through the model (an ordinary, undoable edit)."""
+        if self.result is not None:
+            self.model.set_spec(**clicked_changes(self.result, row, column, self.model.valid_spec))
 
     # ---- optimize -----------------------------------------------------------
     def start_optimize(self) -> None:

@@ -115,6 +115,9 @@ class GearModel(PartModel):
     def edit_text(self) -> str:
         return QCoreApplication.translate("GearModel", "edit gear pair")
 
+    def unmade_text(self) -> str:
+        return QCoreApplication.translate("GearModel", "This design's gear pair cannot be made: no pair is shown.")
+
     def set_mode(self, mode: str) -> None:
         """Give the shifts another way; the fields of the new mode start from the pair on
         screen, so the switch alone changes no number."""

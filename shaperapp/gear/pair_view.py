@@ -20,6 +20,7 @@ from PySide6.QtWidgets import QWidget
 from core.gear import GearPair
 from core.gear.mesh import gear_outline, line_points, mesh_angles, placed
 from shaperapp.parts.view import PartView
+from shaperapp.widgets.gear_messages import describe_gear_error
 from shaperapp.widgets.screen_polygon import screen_polygon
 from shaperapp.widgets.style import FRAME, LINK, TEXT
 
@@ -41,7 +42,8 @@ class GearPairView(PartView):
 
     def __init__(self, gear_model: GearModel, parent: QWidget | None = None) -> None:
         super().__init__(gear_model, (200, 200), lambda: (gear_outline(gear_model.pair, 1),
-                                                          gear_outline(gear_model.pair, 2)), parent)
+                                                          gear_outline(gear_model.pair, 2)),
+                         describe_gear_error, parent)
         self.close_up = False           # the line of action N1N2 filling the view, not both gears
 
     def set_close_up(self, on: bool) -> None:

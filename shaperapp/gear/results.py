@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
 from core.gear import GearPair, pair_checks
 from shaperapp.widgets.messages import ERROR_TEXT_STYLE
+from shaperapp.widgets.column_titles import yes_no
 from shaperapp.widgets.result_table import ResultTable
 
 from shaperapp.widgets.gear_messages import check_advice, check_name, mode_text
@@ -43,7 +44,6 @@ class GearResults(QWidget):
         """(title: symbol and unit, pinion, gear, the quantity's name) of every per-gear
         result; the short titles keep both gears' columns in view beside the drawing."""
         g = (pair.gear1, pair.gear2)
-        yes, no = self.tr("yes"), self.tr("no")
 
         def both(title: str, name: str, value) -> tuple[str, str, str, str]:
             return (title, value(g[0]), value(g[1]), name)
@@ -59,7 +59,7 @@ class GearResults(QWidget):
                 both("e, mm", self.tr("Space width on the reference circle"), lambda x: f"{x.e:.4f}"),
                 both("sa, mm", self.tr("Tip thickness"), lambda x: f"{x.sa:.4f}"),
                 both(self.tr("Undercut"), self.tr("Undercut by the rack (x < xmin)"),
-                     lambda x: yes if x.undercut else no)]
+                     lambda x: yes_no(x.undercut))]
 
     def pair_rows(self, pair: GearPair) -> list[tuple[str, str, str]]:
         """(title: symbol and unit, value, the quantity's name) of every result of the pair."""

@@ -13,7 +13,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Iterable, Sequence
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject, Signal
 from PySide6.QtGui import QUndoCommand, QUndoStack
 
 from core.space.compare import Candidate
@@ -27,7 +27,8 @@ from core.library.backup import backup_copy
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.messages import describe, describe_damage, describe_file_error, describe_os_error
+from shaperapp.widgets.file_messages import defaulted_text, describe_damage, describe_file_error, describe_os_error
+from shaperapp.widgets.messages import describe
 
 
 class _Swap(QUndoCommand):
@@ -63,6 +64,8 @@ class LibraryActions(QObject):
     changed = Signal()
     libraryChanged = Signal()
     failed = Signal(str)
+    noted = Signal(str)
+    """What an opened entry lacked and the values taken for it (``defaulted_text``)."""
     refused = Signal(object)
 
     def __init__(self, model: DesignModel, parent: QObject | None = None) -> None:
@@ -233,6 +236,9 @@ class LibraryActions(QObject):
         except DesignError as exc:          # an all-or-nothing load_state refuses and changes nothing
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe(exc)))
             return False
+        if doc["defaulted"]:        # an entry stored from a file that lacked them (as File › Open says)
+            entry = QCoreApplication.translate("messages", "library entry “%1”").replace("%1", name)
+            self.noted.emit(defaulted_text(entry, doc["defaulted"]))
         return True
 
     def _load_into_model(self, doc: dict, name: str) -> None:

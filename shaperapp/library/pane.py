@@ -21,7 +21,7 @@ from core.library.store import LibraryError, resolve_path
 
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.frozen_view import FrozenNameView
-from shaperapp.widgets.messages import describe_file_error
+from shaperapp.widgets.file_messages import describe_file_error
 
 from .actions import LibraryActions
 from .dialogs import SaveDialog, ask_refused_library
@@ -119,6 +119,7 @@ class LibraryPane(QWidget):
         self.actions.changed.connect(self._refresh)
         self.actions.libraryChanged.connect(self._library_changed)
         self.actions.failed.connect(self._show_failure)
+        self.actions.noted.connect(self.message_label.setText)
         self.actions.refused.connect(self._refused)
         self._timer = QTimer(self)
         self._timer.setInterval(POLL_MS)

@@ -18,7 +18,7 @@ from core.library import LIST_COLUMNS, Library
 from core.library.query import QueryError
 
 from shaperapp.widgets.figure_labels import figure_label, figure_tip, format_figure
-from shaperapp.widgets.messages import describe_damage
+from shaperapp.widgets.file_messages import describe_damage
 
 # the columns shown, in order (keys of core's list rows)
 COLUMNS = ("name", "variant", "K", "stroke_mm", "theta_deg", "crank_mm", "frame_mm", "lever_mm",

@@ -99,7 +99,8 @@ class PartForm(QWidget):
                 self.fields[error.parameter].set_error(True)
             elif error.parameter in self.combos:
                 self.combos[error.parameter].setStyleSheet(ERROR_STYLE)
-        show_error_line(self.error_label, None if error is None else self.describe(error), self.kept())
+        kept = self.kept() if self._model.own_value else self._model.unmade_text()
+        show_error_line(self.error_label, None if error is None else self.describe(error), kept)
 
     def marked_fields(self) -> list[str]:
         """Names of the inputs marked invalid: a marked choice first, then the fields."""

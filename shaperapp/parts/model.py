@@ -48,7 +48,8 @@ def number(name: str, value: Any, not_finite: str = "must be a finite number") -
 
 
 class PartModel(QObject):
-    """Signals: ``valueChanged`` (a new valid part), ``errorChanged``, ``typedChanged``.
+    """Signals: ``valueChanged`` (a new valid part), ``errorChanged`` (the refusal, or
+    whether the part on screen is this design's: ``own_value``), ``typedChanged``.
 
     Holds the typed fields, the last valid part and why the typed fields are refused; the
     fields typed since the last valid part (``_edited``, the latest last) let a subclass
@@ -107,6 +108,11 @@ class PartModel(QObject):
         """The history's name of an edit, in the current language."""
         raise NotImplementedError
 
+    def unmade_text(self) -> str:
+        """What the tab says instead of the part while this design's cannot be made
+        (``own_value`` False), in the current language: the form, the drawing."""
+        raise NotImplementedError
+
     def compute(self, typed: Any) -> Any:
         """The part of ``typed``; DesignError (or one of COMPUTE_ERRORS) when it has none."""
         raise NotImplementedError
@@ -131,8 +137,10 @@ class PartModel(QObject):
         """A file was opened (or New): its part, or the default one."""
         self._edited = []
         typed = self.typed_of(self.design_model.parts.loaded(self.PART))
-        self._own = False
+        was_own, self._own = self._own, False
         self._apply(typed, edited=False)
+        if was_own and not self._own:       # same refusal's text, but no longer this design's part
+            self.errorChanged.emit()
         # What was opened is what Save writes back, made or not: a cam the file's linkage
         # refuses (it feeds during the cut) is the user's to mend, and Save wrote the last
         # cam made instead, the default or the previous file's (hunt s13-hunt2).
@@ -157,8 +165,8 @@ class PartModel(QObject):
             self._set_error(compute_error(exc))
             self.refused()
             return
+        self._own = True            # before the signal: its readers ask whether the part is this design's
         self._set_error(None)
-        self._own = True
         self._edited = []
         self._valid_typed = self._typed
         if value != self._value:

@@ -19,7 +19,7 @@ from PySide6.QtWidgets import (QGridLayout, QHBoxLayout, QMessageBox, QPushButto
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets.ask import use_last_valid
-from shaperapp.widgets.messages import failure_reason
+from shaperapp.widgets.file_messages import failure_reason
 
 from .form import PartForm
 from .model import PartModel
@@ -118,11 +118,10 @@ class PartTab(QWidget):
         error = self.part_model.error
         if error is None:
             return True
-        if not self.part_model.own_value:       # the drawing is an earlier design's part
-            why = QCoreApplication.translate(
-                "PartTab", "Nothing was exported: the drawing shows the part of the design opened "
-                "before, since this design's cannot be made.")
-            QMessageBox.warning(self, self.export_title(), self.form.describe(error) + "\n\n" + why)
+        if not self.part_model.own_value:       # the part held is an earlier design's
+            why = QCoreApplication.translate("PartTab", "Nothing was exported.")
+            QMessageBox.warning(self, self.export_title(), self.form.describe(error) + "\n\n"
+                                + self.part_model.unmade_text() + " " + why)
             return False
         # an explicit context: self.tr here would look the text up under the subclass's
         question = QCoreApplication.translate("PartTab", "%1 Export it instead?").replace("%1", self.form.kept())

@@ -17,11 +17,12 @@ from PySide6.QtGui import QColor, QGuiApplication, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton,
                                QSpinBox, QWidget)
 
+from core.files.dynamics_io import FLAG_COLUMNS
 from core.forces.masses import masses_for_design
 from core.course_design.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
                             positions)
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets.column_titles import column_titles, special_titles
+from shaperapp.widgets.column_titles import column_titles, special_titles, yes_no
 from shaperapp.widgets.frozen_view import FrozenNameView
 from shaperapp.widgets.notation import on_screen
 from shaperapp.widgets.view_parts import bar_over_body, fill_speed_combo
@@ -48,6 +49,11 @@ def column_texts(values: np.ndarray, digits: int = DIGITS) -> list[str]:
         text = f"{value:.{decimals}f}"
         out.append(text[1:] if text.startswith("-") and float(text) == 0.0 else text)   # no "-0.000"
     return out
+
+
+def flag_texts(values: np.ndarray) -> list[str]:
+    """A yes/no column (``FLAG_COLUMNS``, 1 or 0) as the app shows a yes/no; NaN is ''."""
+    return ["" if not math.isfinite(v) else yes_no(bool(v)) for v in values]
 
 
 def row_title(number: int, name: str, specials: dict[str, str]) -> str:
@@ -84,7 +90,8 @@ class PositionsModel(QAbstractTableModel):
         self._header = [on_screen(titles.get(table.columns[i], table.columns[i])) for i in cols]
         self._corner = self.tr("Position")
         self._tips = [table.columns[i] for i in cols]
-        texts = [column_texts(shown[:, i]) for i in cols]
+        texts = [flag_texts(shown[:, i]) if table.columns[i] in FLAG_COLUMNS else column_texts(shown[:, i])
+                 for i in cols]
         self._rows = [row_title(int(number), name, specials)
                       for number, name in zip(table.positions.number, table.positions.name)]
         self._cells = [list(row) for row in zip(*texts)] if texts else [[] for _ in self._rows]

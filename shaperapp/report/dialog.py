@@ -33,7 +33,7 @@ from .command import report_kind, write_report
 from .content import BUILD_SHARE, Options, build, default_diagram_angles, inputs_name
 from shaperapp.widgets.fonts import MissingFontError
 from shaperapp.widgets.command_line import plain_text, printable_labels
-from shaperapp.widgets.messages import describe_os_error, failure_reason
+from shaperapp.widgets.file_messages import describe_os_error, failure_reason
 from shaperapp.widgets.export_child import job_bytes
 from shaperapp.widgets.export_process import ChildExport
 

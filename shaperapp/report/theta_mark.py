@@ -19,6 +19,7 @@ from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontInfo, QFontMetricsF, QImage, QPainter, QPen
 from PySide6.QtSvg import QSvgRenderer
 
+from core.base.figure_text import dimension_text
 from core.base.lettering import label_gap
 from shaperapp.scheme.place import Obstacles
 from shaperapp.scheme.raster import Raster
@@ -102,7 +103,7 @@ def mark_theta(painter: QPainter, origin: QPointF, k: float, shot: SchemeShot, t
     radius = 0.3 * math.dist((o4.x(), o4.y()), (shot.tips[0].x(), shot.tips[0].y()))
     angles = [math.degrees(math.atan2(o4.y() - t.y(), t.x() - o4.x())) for t in shot.tips]
     metrics = QFontMetricsF(painter.font(), painter.device())
-    label = f"θ = {theta_deg:.2f}°"
+    label = f"θ = {dimension_text(theta_deg)}°"      # as the sheets' θ
     painter.save()
     pen = QPen(QColor("#37474f"), max(0.6 * metrics.height() / 10, 1.0), Qt.PenStyle.DashLine)
     painter.setPen(pen)

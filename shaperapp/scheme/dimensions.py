@@ -19,9 +19,9 @@ import pyqtgraph as pg
 from PySide6.QtCore import QObject
 from PySide6.QtGui import QColor, QPainterPath, QPen, Qt
 
+from core.base.figure_text import dimension_text
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.items import CurveItem
-from shaperapp.widgets.style import fmt
 
 from .draw import DIM, Pair, Z_DIM, arrow_head, body, pen, segments, text_box
 from .mechanism import Geometry
@@ -110,9 +110,9 @@ class DimensionLayer(QObject):
         left = np.array([-1.0, 0.0])
         # A vertical chain at the far left: L2 = O4O2, then h from O2 up to the guide line.
         p0, p1, p2 = np.array([chain, 0.0]), np.array([chain, o2[1]]), np.array([chain, g.guide])
-        dims = [linear_dim(p0, p1, left, 0.0, u, self.tr("L2 = {0}").format(fmt(design.frame, ".1f")), True),
+        dims = [linear_dim(p0, p1, left, 0.0, u, self.tr("L2 = {0}").format(dimension_text(design.frame)), True),
                 linear_dim(p1, p2, left, 0.0, u,
-                           self.tr("h = {0}").format(fmt(design.guide_above_crank, ".1f")), True)]
+                           self.tr("h = {0}").format(dimension_text(design.guide_above_crank)), True)]
         reach = chain - 0.6 * u
         extensions: list[Pair] = [((-2.6 * u, 0.0), (reach, 0.0)),
                                   ((o2[0] - design.crank - 0.6 * u, o2[1]), (reach, o2[1])),
@@ -122,13 +122,13 @@ class DimensionLayer(QObject):
         tip = tips[int(np.argmax(tips[:, 0]))]
         unit = tip / np.hypot(*tip)
         dims.append(linear_dim(np.zeros(2), tip, np.array([unit[1], -unit[0]]), 3.0 * u, u,
-                               self.tr("L3 = {0}").format(fmt(design.lever, ".1f"))))
+                               self.tr("L3 = {0}").format(dimension_text(design.lever))))
         dims.append(crank_dim(o2, design.crank, design.theta, u,
-                              self.tr("L1 = {0}").format(fmt(design.crank, ".1f")), self.crank_side))
+                              self.tr("L1 = {0}").format(dimension_text(design.crank)), self.crank_side))
         # H between the tool tip's two limit positions, under the tool path.
         dims.append(linear_dim(np.array([g.tip_lo, g.tip_y]), np.array([g.tip_hi, g.tip_y]),
                                np.array([0.0, -1.0]), 2.6 * u, u,
-                               self.tr("H = {0}").format(fmt(model.metrics.stroke_mm, ".1f"))))
+                               self.tr("H = {0}").format(dimension_text(model.metrics.stroke_mm))))
         self._segments = [s for dim in dims for s in dim.segments] + extensions
         self._leader_index = sum(len(dim.segments) for dim in dims[:NAMES.index("L1")]) + 1
         self._lines.set_data(*segments(self._segments))

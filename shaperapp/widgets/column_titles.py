@@ -7,6 +7,11 @@ from PySide6.QtCore import QCoreApplication
 translate = QCoreApplication.translate   # lupdate extracts translate("Context", "text")
 
 
+def yes_no(flag: bool) -> str:
+    """A yes/no value in a table (the ram tilted, a gear undercut), in the UI's language."""
+    return translate("Columns", "yes") if flag else translate("Columns", "no")
+
+
 def column_titles() -> dict[str, str]:
     """CSV column name → short title with symbol and unit (course notation)."""
     return {

@@ -27,7 +27,7 @@ from PySide6.QtWidgets import QGraphicsScene
 
 from core.files.atomic import atomic_write
 
-from .messages import describe_os_error
+from .file_messages import describe_os_error
 
 EXPORT_WIDTH = 1600      # minimum width of an exported raster image, px
 

@@ -93,6 +93,7 @@ class MainWindow(QMainWindow):
         self.document.failed.connect(self._show_failure)
         self.document.recentChanged.connect(self._fill_recent)
         self.document.saved.connect(self._on_saved)
+        self.document.noted.connect(self.statusBar().showMessage)     # until the next edit's status
         model.pathChanged.connect(self._update_title)
         model.dirtyChanged.connect(self._update_title)
         model.errorChanged.connect(self._show_status)

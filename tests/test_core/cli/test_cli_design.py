@@ -5,11 +5,13 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import pytest
 
 from cli_runner import shaper_in_process
 from core.files.design_file import load_design
+from core.linkage.kinematics import angle_count
 
 LOADS = ("--lever-mass", "20", "--lever-inertia", "1.1", "--ram-mass", "70", "--cut-force", "7000",
          "--cut-height", "80")
@@ -95,3 +97,59 @@ def test_the_classic_data_sets_give_the_hand_formulas(tmp_path):
         assert got["theta_deg"] == pytest.approx(math.degrees(theta), rel=1e-12)
         assert got["stroke_mm"] == pytest.approx(2 * lever * math.sin(theta / 2), rel=1e-12)
         assert got["K"] == pytest.approx((math.pi + theta) / (math.pi - theta), rel=1e-12)
+
+
+SEED = ("--crank", "100", "--K", "1.4", "--stroke", "300")
+SIXTEEN = tuple(str(10 * (i + 1)) for i in range(16))      # 10 … 160 r/min
+
+
+def test_a_step_over_the_design_files_limit_is_refused_and_its_advice_is_taken(tmp_path):
+    """16 speeds at 0.05° are 16 × (360/0.05 + 1) = 115 216 samples, more than a design file
+    holds (60 000, what the GUI recomputes on an edit): refused in one line naming --step,
+    the limit and the coarsest step that fits; that step, typed, is accepted, and a step
+    finer by one unit of its last digit is not (so it is the coarsest that fits)."""
+    status, out, err = design(tmp_path, *SEED, "--rpm", *SIXTEEN, "--step", "0.05")
+    assert status == 2 and err.count("\n") == 1 and not out.exists(), err
+    assert err.startswith("shaper: error: --step: gives 115216 samples (angles × speeds) with 16 speeds")
+    assert "more than a design file holds (60000)" in err and "(got 0.05)" in err
+    advice = re.search(r"use a step of at least (\S+)°", err).group(1)
+    status, out, err = design(tmp_path, *SEED, "--rpm", *SIXTEEN, "--step", advice)
+    assert status == 0, err
+    doc = load_design(out)
+    assert doc["step_deg"] == float(advice) and 16 * angle_count(float(advice)) <= 60_000
+    digits = len(advice.split(".")[1])
+    finer = f"{float(advice) - 10.0 ** -digits:.{digits}f}"
+    status, _, err = design(tmp_path, *SEED, "--rpm", *SIXTEEN, "--step", finer, name="finer.json")
+    assert status == 2 and "--step:" in err
+
+
+def over_the_limit(tmp_path):
+    """A design file over the limit, as ``shaper design`` wrote it before the limit."""
+    path = tmp_path / "fine.shaper.json"
+    path.write_text(json.dumps({"format": "shaper-design", "version": 1,
+                                "spec": {"crank": 100, "time_ratio": 1.4, "stroke": 300},
+                                "rpm": [float(r) for r in SIXTEEN], "step_deg": 0.05}), encoding="utf-8")
+    return path
+
+
+def test_a_file_over_the_limit_is_refused_by_every_reader_and_the_library(tmp_path):
+    path = over_the_limit(tmp_path)
+    library = tmp_path / "lib.sqlite"
+    for words in (("analyze", "--design", path), ("design", "--design", path, "-o", tmp_path / "o.json"),
+                  ("library", "add", "--library", library, "--design", path, "--name", "fine")):
+        status, out, err = shaper_in_process(*words)
+        assert status == 2 and err.count("\n") == 1 and out == "", (words, err)
+        assert err.startswith("shaper: error: --design: ") and "more than a design file holds (60000)" in err
+    status, out, err = shaper_in_process("library", "add", "--library", library, *SEED, "--rpm", *SIXTEEN,
+                                         "--step", "0.05", "--name", "fine")
+    assert status == 2 and err.startswith("shaper: error: --step: ") and err.count("\n") == 1, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fine.shaper.json"]     # nothing written
+
+
+def test_a_command_that_writes_no_design_file_keeps_its_own_limit(tmp_path):
+    """``shaper curves`` computes up to core's 2 000 000 samples: 115 216 rows are written."""
+    csv = tmp_path / "curves.csv"
+    status, out, err = shaper_in_process("curves", *SEED, "--rpm", *SIXTEEN, "--step", "0.05", "--csv", csv)
+    assert status == 0, err
+    with open(csv, encoding="utf-8") as rows:
+        assert sum(1 for _ in rows) == 1 + 115_216

@@ -133,6 +133,24 @@ def test_exports_write_cores_numbers(tab, model, tmp_path):
     assert "<svg" in (tmp_path / "cam.svg").read_text()
 
 
+def test_the_dxf_notes_are_in_the_apps_language(tab, tmp_path):
+    """The Cam tab's DXF wrote its notes in English in the Chinese app too: they are the
+    Chinese cam sheet's words now, with the cam's figures."""
+    from dxf_checks import notes_of
+    from shaperapp.widgets.i18n import set_language
+    cam = tab.cam_model.cam
+    set_language("zh_CN")
+    try:
+        tab.export_dxf(str(tmp_path / "zh.dxf"))
+    finally:
+        set_language("en")
+    tab.export_dxf(str(tmp_path / "en.dxf"))
+    zh, en = notes_of(tmp_path / "zh.dxf").splitlines(), notes_of(tmp_path / "en.dxf").splitlines()
+    assert zh[0] == f"理论廓线基圆半径 r0 = {cam.base_radius_mm:.3f} mm" and zh[-1].endswith("凸轮顺时针转动")
+    assert en[0] == f"Base radius r0 (pitch curve) = {cam.base_radius_mm:.3f} mm"
+    assert en[-1].endswith("the cam turns clockwise") and len(zh) == len(en) == 7
+
+
 def test_cam_edits_undo_with_the_design(qtbot, tab, model):
     type_into(qtbot, tab, "arm", "150")
     assert tab.cam_model.cam.follower.arm_mm == 150.0

@@ -71,3 +71,51 @@ def test_a_cam_export_after_opening_a_refused_cam_writes_nothing(qtbot, model, t
     assert cam.error is None
     tab._export_dialog("csv")
     assert path.exists()
+
+
+def _cam_pixels(view) -> int:
+    """How many pixels of the view are the cam's fill (the profile drawn)."""
+    from PySide6.QtGui import QColor
+    from shaperapp.cam.profile_view import CAM_FILL
+    image = view.grab().toImage()
+    fill = QColor(CAM_FILL).rgb()
+    return sum(image.pixel(x, y) == fill for x in range(0, image.width(), 3) for y in range(0, image.height(), 3))
+
+
+def test_the_cam_tab_shows_no_cam_of_another_design(qtbot, model, tmp_path):
+    """After a file whose cam its linkage refuses, the Cam tab drew the cam of the file opened
+    before, with its figures and plots, under "The last valid cam stays on screen" (hunt
+    s13-hunt2). Now the drawing and the form say why there is no cam, and no figure, curve or
+    axis of the other design is shown; mending the field, or opening a good file, shows it."""
+    from shaperapp.cam.tab import CamTab
+    document = Document(model, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    cam = CamModel(model)
+    tab = CamTab(model, cam_model=cam)
+    qtbot.addWidget(tab)
+    tab.resize(1100, 700)
+    tab.show()
+    qtbot.waitExposed(tab)
+    good, bad = _file(tmp_path, "good.json", GOOD), _file(tmp_path, "bad.json", FEEDS_IN_THE_CUT)
+
+    def shown() -> tuple[int, str, bool, str]:
+        return (_cam_pixels(tab.profile), tab.figures.text(), tab.plots._inner.isVisible(),
+                tab.form.error_label.text())
+
+    assert document.open_path(good)
+    pixels, figures, plots, said = shown()
+    assert pixels > 100 and "Base radius" in figures and plots and said == ""
+    assert document.open_path(bad)
+    pixels, figures, plots, said = shown()
+    assert pixels == 0 and figures == "" and not plots
+    assert "feeds during the cut" in said and "cannot be made" in said and "last valid" not in said
+    assert document.open_path(good)             # the same cam as before: no new value, shown again
+    assert shown()[0] > 100 and shown()[2]
+    cam.set_fields(phase=90.0)                  # refused while this design's cam stays on screen
+    pixels, figures, plots, said = shown()
+    assert pixels > 100 and "Base radius" in figures and "last valid cam stays" in said
+    assert document.open_path(bad)              # the same refusal's text, now no cam of this design
+    pixels, figures, plots, said = shown()
+    assert pixels == 0 and figures == "" and not plots and "last valid" not in said
+    cam.set_fields(phase="")                    # mended: this design's cam
+    pixels, figures, plots, said = shown()
+    assert pixels > 100 and "Base radius" in figures and plots and said == ""

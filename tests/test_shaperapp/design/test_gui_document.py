@@ -1,4 +1,6 @@
 """File actions without dialogs: round trip, refusal of corrupt files, CSV like the CLI."""
+import json
+
 import pytest
 from PySide6.QtCore import QSettings
 
@@ -150,19 +152,46 @@ def test_open_then_save_keeps_a_later_versions_part(doc, tmp_path):
     assert saved["belt"] == belt and saved["spec"]["time_ratio"] == 1.5
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "open defect (hunt s13-hunt2): shaper design checks --step against core's bounds "
-    "(0.0002 … 90°, 2 000 000 samples; docs/file-formats.md: step_deg 0.0002 … 90) and writes "
-    "the file, but the GUI refuses any file whose step × speeds exceeds "
-    "shaperapp.design.results.MAX_GUI_SAMPLES = 60 000 ('Angle step: gives 115216 samples'), so "
-    "'checked as the GUI reads it' (shaper design --help) does not hold; shaper library add "
-    "takes such a file and the pane cannot open it. Needs a decision: the GUI's limit in core's "
-    "reader of step_deg, or the GUI opening such a file at a coarser shown step"))
-def test_a_step_shaper_design_writes_opens_in_the_gui(doc, tmp_path):
+def test_a_shaper_design_file_opens_in_the_gui_and_one_over_the_limit_is_refused(doc, tmp_path, qtbot):
+    """One limit, core's (MAX_FILE_SAMPLES): the step ``shaper design`` advises for 16 speeds
+    writes a file the GUI opens; a file over it (as ``shaper design`` wrote it before the
+    limit: 16 × 7 201 = 115 216 samples) is refused on Open with core's reason, nothing changed."""
+    import re
     model, document = doc
+    speeds = [str(10 * (i + 1)) for i in range(16)]
     path = tmp_path / "fine.shaper.json"
-    speeds = [str(10 * (i + 1)) for i in range(16)]         # 16 × 7201 angles = 115 216 samples
-    written = shaper("design", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", *speeds,
+    refused = shaper("design", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", *speeds,
                      "--step", "0.05", "-o", str(path))
+    assert refused.returncode == 2 and not path.exists()
+    advice = re.search(r"use a step of at least (\S+)°", refused.stderr).group(1)
+    written = shaper("design", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", *speeds,
+                     "--step", advice, "-o", str(path))
     assert written.returncode == 0, written.stderr
     assert document.open_path(str(path))
+    assert model.step_deg == float(advice) and len(model.rpms) == 16 and model.error is None
+    data = json.loads(path.read_text(encoding="utf-8"))
+    over = tmp_path / "over.shaper.json"
+    over.write_text(json.dumps({**data, "step_deg": 0.05}), encoding="utf-8")
+    before = (model.spec, model.rpms, model.step_deg, model.path)
+    with qtbot.waitSignal(document.failed, timeout=10_000) as blocker:
+        assert not document.open_path(str(over))
+    assert "115216" in blocker.args[0] and "60000" in blocker.args[0] and "0.0961" in blocker.args[0]
+    assert (model.spec, model.rpms, model.step_deg, model.path) == before
+
+
+def test_open_says_the_defaults_a_file_lacking_keys_takes(doc, tmp_path, qtbot):
+    """A file without "stroke" opened with H = 300 mm without a word: Open now says what was
+    taken (core's defaulted_keys), once; a complete file says nothing."""
+    model, document = doc
+    path = tmp_path / "nostroke.shaper.json"
+    path.write_text(json.dumps({"format": "shaper-design", "version": 1, "rpm": [40.0], "step_deg": 1.0,
+                                "spec": {"mode": "synthesis", "crank": 100, "time_ratio": 1.5, "variant": "block",
+                                         "guide_rule": "chord"}}), encoding="utf-8")
+    with qtbot.waitSignal(document.noted, timeout=10_000) as blocker:
+        assert document.open_path(str(path))
+    assert blocker.args == ["nostroke.shaper.json does not give spec.stroke = 300 mm; these were taken."]
+    assert model.design.stroke == pytest.approx(300.0)
+    full = tmp_path / "full.shaper.json"
+    assert document.save_to(str(full))
+    with qtbot.assertNotEmitted(document.noted):
+        assert document.open_path(str(full))

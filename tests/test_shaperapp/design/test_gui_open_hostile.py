@@ -5,10 +5,11 @@ import json
 import pytest
 from PySide6.QtCore import QSettings
 
+from core.base.errors import FileFormatError
 from core.files.io import load_design
+from core.linkage.limits import MAX_FILE_SAMPLES
 from shaperapp.design.document import Document
 from shaperapp.design.model import DesignModel
-from shaperapp.design.results import MAX_GUI_SAMPLES
 from shaperapp.window.main_window import MainWindow
 
 from gui_helpers import main_window
@@ -71,14 +72,16 @@ def test_hostile_file_is_refused_and_nothing_changes(window, tmp_path, qtbot, na
 
 
 def test_file_that_cannot_be_computed_in_the_window_is_refused(window, tmp_path, qtbot):
-    """Valid for core, but 16 speeds at 0.0002° exceed what the window computes in
-    half a second: refused before anything changes (issue 7: a 47 s freeze at 9.3 GB)."""
+    """16 speeds at 0.0002° exceed what a design file holds, what the window computes in
+    half a second: refused by core's reader, before anything changes (issue 7: a 47 s
+    freeze at 9.3 GB)."""
     edited(window)
     doc = dict(VALID, rpm=[float(10 + i) for i in range(16)], step_deg=0.0002)
     path = tmp_path / "fine.shaper.json"
     path.write_text(json.dumps(doc))
-    load_design(path)                                   # core accepts it
-    assert 16 * 360 / 0.0002 > MAX_GUI_SAMPLES
+    assert 16 * 360 / 0.0002 > MAX_FILE_SAMPLES
+    with pytest.raises(FileFormatError, match="more than a design file holds"):
+        load_design(path)
     refused(window, path, tmp_path, qtbot)
 
 

@@ -142,6 +142,26 @@ def test_open_from_library_is_all_or_nothing(pane, model, no_dialogs):
     assert no_dialogs and "Could not open the design" in no_dialogs[-1]
 
 
+def test_opening_an_entry_says_the_defaults_it_lacked(pane, model, no_dialogs):
+    """An entry stored from a file saved before the cam had a hub, a boss and a clearance
+    (tests/data/my.shaper.json) opens with them at their defaults, said in the pane as File ›
+    Open says them in the status bar; an entry with every key says nothing."""
+    from pathlib import Path
+    from core.files.io import load_design
+    old = load_design(Path(__file__).resolve().parents[2] / "data" / "my.shaper.json")
+    pane.actions.library.add("old", old)
+    save(pane, model, "new", time_ratio=1.5)
+    pane.message_label.setText("")
+    pane.select_names(["new"])
+    pane.open_selected()
+    assert pane.message_label.text() == ""
+    pane.select_names(["old"])
+    pane.open_selected()
+    assert pane.message_label.text() == ("library entry “old” does not give cam.hub_mm = 12.5 mm, "
+                                         "cam.boss_mm = 12.5 mm, cam.clearance_mm = 3 mm; these were taken.")
+    assert no_dialogs == []
+
+
 def test_rename_duplicate_delete_with_undo(pane, model):
     save(pane, model, "a")
     save(pane, model, "b", time_ratio=1.5)

@@ -105,3 +105,25 @@ def test_rows_keep_their_identity_and_numbers_read_one_way(qtbot, model):
     assert cell(view, 0, "crank_deg") == "0.00" and cell(view, 1, "crank_deg") == "30.00"
     # about a quarter of the 560 px went to the identifying columns, not half
     assert header.width() <= 0.35 * table.width()
+
+
+@pytest.mark.parametrize("language, yes, no", [("en", "yes", "no"), ("zh_CN", "是", "否")])
+def test_the_tilt_flag_reads_yes_or_no(qtbot, model, language, yes, no):
+    """``guide_tilted`` is a yes/no (1 or 0 in the CSV): the tab showed 1.0000 and 0.0000.
+    Each row says yes exactly where core's dynamics has the ram tilt, and there the guide's
+    offset is blank (the two end forces shown instead)."""
+    from core.forces.dynamics import solve_dynamics
+    from shaperapp.widgets.i18n import set_language
+    set_language(language)
+    try:
+        model.set_masses(guide_length_mm=300.0)
+        view = shown(qtbot, PositionsView(model), 900, 600)
+        design = model.design
+        masses = masses_for_design(design, model.masses)
+        angles = positions(design, 12, (), masses.idle_fraction).crank_angle
+        tilted = solve_dynamics(design, angles, model.rpms[:1], masses).guide_tilted[0]
+        texts = [cell(view, row, "guide_tilted") for row in range(view.table_model.rowCount())]
+        assert texts == [yes if t else no for t in tilted] and yes in texts and no in texts
+        assert all((cell(view, row, "guide_offset_mm") == "") == bool(t) for row, t in enumerate(tilted))
+    finally:
+        set_language("en")

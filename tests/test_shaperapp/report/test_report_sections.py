@@ -113,7 +113,7 @@ def test_a_long_design_name_is_printed_whole_on_the_cover(unloaded):
 
 
 def test_scheme_text_is_on_one_scale(unloaded):
-    """θ's label and the scheme's dimensions (L3 = 579.6 …) are set at one size, as
+    """θ's label and the scheme's dimensions (L3 = 579.56 …) are set at one size, as
     ``pdftotext -bbox`` measures their boxes: on 79f5cea the dimensions were 4.1 pt
     high beside 8.7 pt for θ."""
     path = unloaded
@@ -122,8 +122,8 @@ def test_scheme_text_is_on_one_scale(unloaded):
     words = re.findall(r'<word xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)</word>',
                        boxes)
     size = lambda w: min(float(w[2]) - float(w[0]), float(w[3]) - float(w[1]))  # noqa: E731 (text may turn)
-    theta = [size(w) for w in words if w[4] == "30.00°"]
-    dimensions = [size(w) for w in words if w[4] in ("579.6", "386.4", "173.4", "300.0")]
+    theta = [size(w) for w in words if w[4] == "30°"]         # a drawing's dimension text: 2 places,
+    dimensions = [size(w) for w in words if w[4] in ("579.56", "386.37", "173.44")]   # trailing 0s dropped
     assert len(theta) == 2 and len(dimensions) >= 6
     assert max(theta + dimensions) <= 1.15 * min(theta + dimensions), (theta, dimensions)
 

@@ -71,7 +71,7 @@ def test_new_design_redraws(scheme, model):
     assert model.error is None and model.design.frame != old_frame
     assert_drawn_at(scheme, model, model.angle_index)
     assert scheme.drawn_joints()["B"] != old_b
-    assert any(f"{model.design.frame:.1f}" in text for text in scheme.dimension_labels())
+    assert f"L2 = {model.design.frame:.2f}".rstrip("0").rstrip(".") in scheme.dimension_labels()
 
 
 def test_items_are_created_once(scheme, model):
@@ -152,11 +152,11 @@ def test_tool_path_follows_the_ram(scheme, model):
 
 
 def test_dimensions_show_core_values_and_toggle(scheme, model):
-    labels = " ".join(scheme.dimension_labels())
     design = model.design
-    for value in (design.crank, design.frame, design.lever, design.guide_above_crank,
-                  model.metrics.stroke_mm):
-        assert f"{value:.1f}" in labels
+    values = (design.frame, design.guide_above_crank, design.lever, design.crank, model.metrics.stroke_mm)
+    # the drawings' rule for a dimension's text (CAD's: 2 places, trailing zeros dropped)
+    assert scheme.dimension_labels() == [f"{name} = {value:.2f}".rstrip("0").rstrip(".")
+                                         for name, value in zip(("L2", "h", "L3", "L1", "H"), values)]
     box = scheme.findChild(QCheckBox)
     assert box.isChecked() and scheme.dimensions_visible()
     box.setChecked(False)
@@ -201,3 +201,18 @@ def test_a_nudged_input_keeps_the_view_while_the_drawing_fits(scheme, model):
     model.set_spec(crank=200.0, stroke=600.0)
     QApplication.processEvents()
     assert view.viewRect() != before and view.viewRect().contains(trace_bounds(model))
+
+
+
+@pytest.mark.parametrize("spec", [dict(time_ratio=1.46, stroke=312.0),
+                                  dict(mode="dimensions", crank=110.0, frame=380.0, lever=540.0)])
+def test_the_schemes_dimensions_read_as_the_motion_sheets(scheme, model, spec):
+    """One precision per kind: the scheme's labels (the window's, the report's) read h = 170.3
+    and L3 = 538.8 where the motion sheet drew 170.35 and 538.82; both are a drawing's
+    dimension texts (core.base.figure_text.dimension_text)."""
+    from core.drawing.motion import motion_sheet
+    from core.drawing.sheet import PAPERS
+    model.set_spec(**spec)
+    sheet = motion_sheet(model.design, 40.0, PAPERS["A3"]).sheet
+    drawn = {d.text.text for d in sheet.dimensions}
+    assert set(scheme.dimension_labels()) <= drawn

@@ -9,7 +9,7 @@ import pytest
 from core.base.errors import FILE_REASONS, DesignError, FileFormatError
 from core.linkage.spec import Spec
 from language_checks import english_words, words_of
-from shaperapp.widgets import i18n, messages
+from shaperapp.widgets import file_messages, i18n, messages
 
 
 @pytest.fixture
@@ -20,14 +20,14 @@ def chinese(qapp):
 
 
 def test_every_template_is_chinese(chinese):
-    templates = {**messages._translated_templates(), **messages._file_templates()}
+    templates = {**messages._translated_templates(), **file_messages._file_templates()}
     untranslated = {source: text for source, text in templates.items()
                     if english_words(text) or text == source}
     assert untranslated == {}
 
 
 def test_every_reason_a_file_is_refused_has_a_template():
-    assert set(messages._file_templates()) == set(FILE_REASONS)
+    assert set(file_messages._file_templates()) == set(FILE_REASONS)
 
 
 def test_every_field_a_file_can_name_is_named_in_chinese(chinese):
@@ -47,7 +47,7 @@ def test_a_refused_file_is_described_in_chinese(chinese, reason):
               "rpm_value": ['"40"'], "duplicate_key": ['"z1"'], "invalid": ["crank = 0: must be > 0 and ≤ 10000 mm"]}.get(reason, [])
     error = FileFormatError(reason, "/tmp/设计.json", *values, errno=2,
                             cause=DesignError("crank", 0.0, "must be > 0 and ≤ 10000 mm"))
-    text = messages.describe_file_error(error)
+    text = file_messages.describe_file_error(error)
     assert "/tmp/设计.json" in text
     assert english_words(text, words_of("/tmp/设计.json")) == [], text
     assert str(error) == FILE_REASONS[reason].format(*[str(v) for v in values], name="/tmp/设计.json")
@@ -55,13 +55,13 @@ def test_a_refused_file_is_described_in_chinese(chinese, reason):
 
 def test_a_library_entry_is_named_as_one(chinese):
     error = FileFormatError("not_json", "library entry 'gear'", entry="gear")
-    assert messages.describe_file_error(error).startswith("设计库条目“gear”")
-    assert english_words(messages.describe_file_error(error), {"gear"}) == []
+    assert file_messages.describe_file_error(error).startswith("设计库条目“gear”")
+    assert english_words(file_messages.describe_file_error(error), {"gear"}) == []
 
 
 def test_english_keeps_cores_sentence():
     error = FileFormatError("not_json", "/tmp/a.json")
-    assert messages.describe_file_error(error) == str(error) == "/tmp/a.json is not a design file (not valid JSON)"
+    assert file_messages.describe_file_error(error) == str(error) == "/tmp/a.json is not a design file (not valid JSON)"
 
 
 @pytest.mark.parametrize("spec, said", [

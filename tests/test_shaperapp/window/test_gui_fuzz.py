@@ -21,7 +21,7 @@ from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 from core.files.io import load_design
 from core.linkage.spec import NUMBER_FIELDS
 from shaperapp.design.model import DesignModel
-from shaperapp.design.results import MAX_GUI_SAMPLES
+from core.linkage.limits import MAX_FILE_SAMPLES
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets import i18n
 from shaperapp.window.main_window import MainWindow
@@ -204,7 +204,7 @@ class Fuzzer:
         model.valid_spec.check_fields()
         for name in set(NUMBER_FIELDS) - model.spec.active_fields():
             model.spec.check_field(name)
-        assert model.angle_count * len(model.rpms) <= MAX_GUI_SAMPLES
+        assert model.angle_count * len(model.rpms) <= MAX_FILE_SAMPLES
 
 
 @pytest.fixture
