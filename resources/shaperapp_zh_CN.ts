@@ -3990,6 +3990,14 @@
         <translation>实测运动循环</translation>
     </message>
     <message>
+        <source>Flywheel needed J_F − J_c, kg·m²</source>
+        <translation>所需飞轮 J_F − J_c，kg·m²</translation>
+    </message>
+    <message>
+        <source>J_F − J_c − J_e (net), kg·m²</source>
+        <translation>飞轮 J_F − J_c − J_e（净），kg·m²</translation>
+    </message>
+    <message>
         <source>Extreme-position angle θ</source>
         <translation>极位夹角 θ</translation>
     </message>
