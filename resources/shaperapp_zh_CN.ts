@@ -2471,6 +2471,10 @@
         <translation>请选择两个不同的参数。</translation>
     </message>
     <message>
+        <source>Give each axis a range with two different ends.</source>
+        <translation>请为每个轴给出两个不同的端值。</translation>
+    </message>
+    <message>
         <source>Computing %1 designs…</source>
         <translation>正在计算 %1 个设计…</translation>
     </message>
