@@ -2483,6 +2483,10 @@
         <translation>请选择两个不同的参数。</translation>
     </message>
     <message>
+        <source>Give each axis a range with two different ends.</source>
+        <translation>请为每个轴给出两个不同的端值。</translation>
+    </message>
+    <message>
         <source>Computing %1 designs…</source>
         <translation>正在计算 %1 个设计…</translation>
     </message>
@@ -3996,6 +4000,14 @@
     <message>
         <source>Measured cycle</source>
         <translation>实测运动循环</translation>
+    </message>
+    <message>
+        <source>Flywheel needed J_F − J_c, kg·m²</source>
+        <translation>所需飞轮 J_F − J_c，kg·m²</translation>
+    </message>
+    <message>
+        <source>J_F − J_c − J_e (net), kg·m²</source>
+        <translation>飞轮 J_F − J_c − J_e（净），kg·m²</translation>
     </message>
     <message>
         <source>Extreme-position angle θ</source>

@@ -5,10 +5,10 @@ import argparse
 from typing import TYPE_CHECKING, Any
 
 from core.base.errors import DesignError
-from core.space.names import OBJECTIVES, PARAMETERS
+from core.space.names import OBJECTIVES, PARAMETERS, UNITLESS
 from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
-from .common import add_design_options, add_load_options, add_speed_options
+from .common import add_design_options, add_load_options, add_speed_options, given_text
 from .output import print_json, print_table
 
 if TYPE_CHECKING:
@@ -70,7 +70,7 @@ def _design(ev: Evaluation) -> Design:
 
 
 def run(args: argparse.Namespace) -> int:
-    from core.space.optimize import on_bounds, optimize
+    from core.space.optimize import on_bounds, optimize, tidy_optimum
     spec, varied, rpms, masses = inputs(args, with_count=False)
     bounds = {PARAMETERS[n]: b for n, b in varied.items()}
     best = optimize(spec, bounds, args.objective, rpms, masses)
@@ -92,8 +92,14 @@ def run(args: argparse.Namespace) -> int:
                  for name, end in doc["on_bound"].items() if name not in flat]
         print_table(rows)
         return 0
-    rows += [(name, f"{best.x[i]:.6g}" + (f"  (at the {doc['on_bound'][name]} bound: the best design "
-                                          "may lie beyond it; widen the range)" if name in doc["on_bound"] else ""))
+    # each value as a person would type it, and as the Explore tab loads it: rounded where
+    # that stays valid and as good (tidy_optimum), else in full. A rounding of its own
+    # ("%.6g") put an optimum on the edge of validity outside it: K 1.00199 for 1.0019921,
+    # which shaper analyze then refused ("must be ≥ 1.002").
+    values, _ = tidy_optimum(spec, best, bounds, rpms, masses)
+    rows += [(name, given_text(values[best.names[i]]) + ("" if name in UNITLESS else " mm")
+              + (f"  (at the {doc['on_bound'][name]} bound: the best design may lie beyond it; "
+                 "widen the range)" if name in doc["on_bound"] else ""))
              for i, name in enumerate(typed)]
     design = doc["design"]
     rows += [("frame O2O4 L2", f"{design['frame_mm']:.3f} mm"),

@@ -9,11 +9,12 @@ from __future__ import annotations
 # Sweepable parameters: the name a user types (as the design options) → the core name.
 PARAMETERS = {"crank": "crank", "K": "time_ratio", "stroke": "stroke", "rod": "rod",
               "rod-ratio": "rod_ratio", "guide": "guide", "frame": "frame", "lever": "lever"}
+UNITLESS = ("K", "rod-ratio")       # the others are lengths in mm
 
 # objective → (what it minimizes, unit, needs loads)
 OBJECTIVES = {
     "pressure-angle": ("largest pressure angle between the rod and the guide", "°", False),
     "accel": ("largest ram acceleration |a| at the highest speed", "m/s²", False),
     "peak-torque": ("largest crank driving torque over the speeds", "N·m", True),
-    "flywheel": ("flywheel inertia J_F needed at the slowest speed", "kg·m²", True),
+    "flywheel": ("flywheel inertia J_F at the slowest speed", "kg·m²", True),
 }

@@ -9,6 +9,7 @@ single-design figures.
 """
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, replace
 
@@ -184,31 +185,44 @@ def tidy_values(spec: Spec, values: dict[str, float], resolution: dict[str, floa
                 bounds: dict[str, tuple[float, float]] | None = None) -> dict[str, float]:
     """``values`` as a person would read and type them: each rounded to a whole multiple of
     the power of ten at or below its ``resolution`` (52.564102564102564 at 0.01 → 52.56),
-    rounded inward where it would leave its ``bounds``. The exact ``values`` where the
-    rounded design would not be valid but the exact one is (a value on the edge of
-    validity); a design invalid either way gets the rounded values too."""
-    tidy = {}
+    rounded inward where it would leave its ``bounds``. Where the nearest multiples make a
+    design that is not valid but the exact one is (a value on the edge of validity), the
+    multiples on the valid side: K = 1.0019920563889833 beside the lever's 100 000 mm is
+    1.001993, not the refused 1.001992 nor all its 17 digits. The exact ``values`` where no
+    such rounding is valid; a design invalid either way gets the nearest multiples."""
+    near: dict[str, float] = {}
+    far: dict[str, float] = {}       # each value's multiple on its other side
     for name, value in values.items():
         value, step = float(value), resolution.get(name, 0.0)
         if not (math.isfinite(value) and math.isfinite(step) and step > 0.0):
-            tidy[name] = value
+            near[name] = far[name] = value
             continue
         step = 10.0 ** math.floor(math.log10(step))
-        rounded = round(value / step) * step
         low, high = (bounds or {}).get(name, (-math.inf, math.inf))
+        rounded = round(value / step) * step
         if rounded > high:
             rounded = math.floor(value / step) * step
         elif rounded < low:
             rounded = math.ceil(value / step) * step
-        tidy[name] = float(f"{rounded:.12g}") if low <= rounded <= high else value
+        other = rounded - step if rounded > value else rounded + step
+        near[name], far[name] = ((float(f"{v:.12g}") if low <= v <= high else value)
+                                 for v in (rounded, other))
     exact = {name: float(value) for name, value in values.items()}
-    for candidate in (tidy, exact):
-        try:
-            replace(spec, **spec_changes(candidate)).design()
+    names = list(values)
+    for flips in sorted(itertools.product((False, True), repeat=len(names)), key=sum):
+        candidate = {n: far[n] if flip else near[n] for n, flip in zip(names, flips)}
+        if _valid(spec, candidate):
             return candidate
-        except DesignError:
-            continue
-    return tidy
+    return exact if _valid(spec, exact) else near
+
+
+def _valid(spec: Spec, values: dict[str, float]) -> bool:
+    """Whether ``spec`` with ``values`` of its core parameters is a valid design."""
+    try:
+        replace(spec, **spec_changes(values)).design()
+        return True
+    except DesignError:
+        return False
 
 
 def design_value(design, name: str) -> float | None:

@@ -62,7 +62,13 @@ class CompareView(QWidget):
         self.speed.setDecimals(1)
         self.speed.setValue(model.rpms[0])
         self.speed.setKeyboardTracking(False)
-        self.speed.valueChanged.connect(lambda _: self.recompute())
+        self.speed.valueChanged.connect(self._speed_changed)
+        # The speed is the design on screen's first until the user chooses one: set once when
+        # the tab was built (at idle, before a file was opened), it compared two designs at
+        # 60 r/min at the default design's 40 while the screen and both files said 60.
+        self._speed_chosen = False
+        self._following = False
+        model.resultsChanged.connect(self._follow_speed)
         self.speed_label = QLabel()
         self.export_csv_button = QPushButton()
         self.export_csv_button.clicked.connect(lambda: self._export_dialog("csv"))
@@ -112,6 +118,17 @@ class CompareView(QWidget):
         layout.addWidget(self.content, 1)
         self._retranslate()
         self.recompute()
+
+    def _speed_changed(self) -> None:
+        self._speed_chosen = self._speed_chosen or not self._following
+        self.recompute()
+
+    def _follow_speed(self) -> None:
+        """The design on screen's first speed, until the user has chosen one."""
+        if not self._speed_chosen and self.speed.value() != self._model.rpms[0]:
+            self._following = True
+            self.speed.setValue(self._model.rpms[0])
+            self._following = False
 
     # ---- candidates ---------------------------------------------------------------------
     def set_candidates(self, candidates: list[Candidate]) -> None:

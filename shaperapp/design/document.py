@@ -22,6 +22,7 @@ from shaperapp.widgets.cad_font import CAD_FONT_SETTING, dxf_filters, missing_fo
 from shaperapp.widgets.file_messages import defaulted_text, describe_file_error, describe_os_error
 from shaperapp.widgets.messages import describe
 
+from .errors import as_typed
 from .inputs import DEFAULT_RPMS, DEFAULT_STEP
 from .model import DesignModel
 
@@ -185,7 +186,7 @@ class Document(QObject):
         model = self._model
         if model.inputs_valid:
             return True
-        error = model.error or model.forces_error
+        error = model.error or as_typed(model.forces_error)
         question = (self.tr("Save the last valid design instead? The invalid input is then reset to it.")
                     if saving else self.tr("Export the results of the last valid design instead?"))
         if not use_last_valid(parent, self.tr("Invalid input"), describe(error), question):

@@ -6,9 +6,13 @@ way redraws nothing.
 """
 from __future__ import annotations
 
+import re
+
 from PySide6.QtCore import SignalInstance
 
 from core.base.errors import DesignError
+
+_RANGE = re.compile(r"must be (≥|>) (\S+) and (<|≤) (\S+)")
 
 
 def same_error(a: DesignError | None, b: DesignError | None) -> bool:
@@ -30,3 +34,15 @@ class ShownError:
         self.value = error
         if not same or force:
             self._changed.emit()
+
+
+def as_typed(error: DesignError | None) -> DesignError | None:
+    """``error`` in the units of the field it came from. The Loads form takes the idle margin
+    in % and core checks the fraction: "less than 0.5" beside a field in % sent a user who
+    typed 60 to type 0.49, an idle margin of 0.49 %. Restated: "less than 50 %"."""
+    match = None if error is None or error.parameter != "idle_fraction" else _RANGE.fullmatch(error.allowed)
+    if match is None:
+        return error
+    low, high = (100.0 * float(match.group(i)) for i in (2, 4))
+    value = 100.0 * error.value if isinstance(error.value, float) else error.value
+    return DesignError(error.parameter, value, f"must be {match.group(1)} {low:g} and {match.group(3)} {high:g} %")

@@ -20,6 +20,7 @@ from core.forces.rotors import rotors_from_text, rotors_text
 
 from shaperapp.widgets.messages import describe
 
+from .errors import as_typed
 from .fields import NumberField, PendingEdits, error_line, format_number, parse_number, show_error_line
 from .model import DesignModel
 
@@ -377,5 +378,5 @@ class LoadsForm(QWidget):
         error = self._model.forces_error
         for name in [] if error is None else self._error_fields(error):
             self._fields[name].set_error(True)
-        show_error_line(self._error_label, None if error is None else describe(error),
+        show_error_line(self._error_label, None if error is None else describe(as_typed(error)),
                         self.tr("The last valid results stay on screen."))

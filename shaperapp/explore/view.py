@@ -202,6 +202,11 @@ class ExploreView(QWidget):
         if x_name == y_name:
             self.status.setText(self.tr("Choose two different parameters."))
             return
+        if any(high <= low for low, high in self._ends()):
+            # a range of one value drew no cell (a map of zero height under the old axes),
+            # and its status counted 40 × 40 designs
+            self.status.setText(self.tr("Give each axis a range with two different ends."))
+            return
         masses = self.model.masses if FIGURES[self.figure.currentData()][1] else None
         job = MapJob(self.model.valid_spec, x_name, x, y_name, y, self.model.rpms, masses)
         self._start(job, self.tr("Computing %1 designs…").replace("%1", str(x.size * y.size)))

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from PySide6.QtCore import QEvent, QPoint
+from PySide6.QtCore import QCoreApplication, QEvent, QPoint
 from PySide6.QtWidgets import QAbstractScrollArea, QGroupBox, QVBoxLayout, QWidget
 
 from core.base.figure_text import figure_text
@@ -166,8 +166,13 @@ class MetricsPanel(QWidget):
             ("max_power_W", self.tr("Peak input power, kW"), 1e-3, "power"),
             ("energy_fluctuation_J", self.tr("Energy fluctuation ΔW_max, J"), 1.0, "energy"),
             ("flywheel_inertia_kg_m2", self.tr("Flywheel J_F on crank shaft, kg·m²"), 1.0, "inertia"),
-            ("flywheel_inertia_net_kg_m2", self.tr("J_F less mechanism's own, kg·m²"), 1.0, "inertia"),
-        ]
+        ] + ([("flywheel_inertia_net_kg_m2", self.tr("J_F less mechanism's own, kg·m²"), 1.0, "inertia")]
+             if not self._model.masses.rotors else
+             # with the other rotating parts (Loads › Rotating parts) the net value subtracts
+             # J_c too: shown as "J_F less mechanism's own" it read 1831 beside J_F 1838 and
+             # J_e 0.93 (J_c 5.5); the rows are shaper dynamics's, the flywheel needed first
+             [("flywheel_inertia_needed_kg_m2", self.tr("Flywheel needed J_F − J_c, kg·m²"), 1.0, "inertia"),
+              ("flywheel_inertia_net_kg_m2", self.tr("J_F − J_c − J_e (net), kg·m²"), 1.0, "inertia")])
 
     def _names(self) -> dict[str, tuple[str, str]]:
         """(title, tooltip) of every dimension and cycle row."""
@@ -249,7 +254,9 @@ class MetricsPanel(QWidget):
     def _fill(self, table: ResultTable, rows: list[tuple[str, str, float, str]], speeds) -> None:
         """One column per crank speed, one row per value."""
         heads = self._heads(s.rpm for s in speeds)
-        cells = [[figure_text(kind, value * scale)            # undefined: "—", never "nan"
-                  for value in (getattr(speed, attr) for speed in speeds)]
+        none = QCoreApplication.translate("Report", "none needed (J_c ≥ J_F)")     # the report's words
+        cells = [[none if attr == "flywheel_inertia_needed_kg_m2" and getattr(speed, attr) == 0.0 else
+                  figure_text(kind, getattr(speed, attr) * scale)     # undefined: "—", never "nan"
+                  for speed in speeds]
                  for attr, _, scale, kind in rows]
         table.set_content([title for _, title, _, _ in rows], heads, cells)

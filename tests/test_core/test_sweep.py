@@ -222,12 +222,15 @@ def test_tidy_values_round_to_the_resolution_inside_bounds_and_stay_valid():
     # rounded inward at a bound (94.6907 would lie past 94.690666…)
     high = 94.69066664934076
     assert tidy_values(spec, {"crank": high}, {"crank": 1e-4}, {"crank": (80.0, high)}) == {"crank": 94.6906}
-    # a rounding that would make the design invalid keeps the exact values: the guide must
-    # lie above L2 + L1 (445.398… mm here), and 445.45 to the nearest millimetre is 445
+    # a rounding that would make the design invalid takes the multiple on the valid side: the
+    # guide must lie above L2 + L1 (445.398… mm here), and 445.45 to the nearest millimetre is
+    # 445 (it kept all the exact digits, which the optimizer's table then cut to 6 and so
+    # printed a K that shaper analyze refused); exact where neither multiple is valid
     rod = Spec(crank=100.0, time_ratio=1.46, stroke=312.0, variant="rod", rod_ratio=0.3)
     limit = rod.design().frame + rod.design().crank
     assert 445.0 < limit < 445.45
-    assert tidy_values(rod, {"guide": 445.45}, {"guide": 1.0}) == {"guide": 445.45}
+    assert tidy_values(rod, {"guide": 445.45}, {"guide": 1.0}) == {"guide": 446.0}
+    assert tidy_values(rod, {"guide": 445.45}, {"guide": 1.0}, {"guide": (445.4, 445.9)}) == {"guide": 445.45}
     assert tidy_values(rod, {"guide": 445.7}, {"guide": 1.0}) == {"guide": 446.0}
     # a design invalid either way (an invalid cell clicked) still gets short values
     assert tidy_values(rod, {"guide": 300.123456}, {"guide": 0.01}) == {"guide": 300.12}

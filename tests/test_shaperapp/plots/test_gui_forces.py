@@ -20,6 +20,7 @@ from core.forces.dynamics import solve_dynamics
 from core.forces.masses import MassProperties
 
 from core.forces.flywheel import summarize
+from shaperapp.design.errors import as_typed
 from shaperapp.design.model import DesignModel
 from shaperapp.plots.forces_panel import ForcesPanel
 from shaperapp.widgets.messages import describe
@@ -124,7 +125,8 @@ def test_invalid_value_marks_field_and_keeps_curves(panel, model, qtbot, name, t
         type_into(qtbot, panel.loads.field(name), text)
     assert model.forces_error is not None and model.forces_error.parameter == parameter
     assert panel.loads.marked_fields() == [name]
-    assert describe(model.forces_error) in panel.loads.error_text()
+    # in the field's unit: the idle margin in % (test_gui_loads_advice.py)
+    assert describe(as_typed(model.forces_error)) in panel.loads.error_text()
     assert model.masses == masses
     for n, curves in before.items():
         for (x0, y0), (x1, y1) in zip(curves, panel.plots.curve_data(n)):
