@@ -57,6 +57,8 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
     check_length(verdict, "crank", crank)
     check_range(verdict, "time_ratio", time_ratio, 1.0, MAX_TIME_RATIO)
     check_length(verdict, "stroke", stroke)
+    if not isinstance(extra[0], str):   # a guide height given: in range before the block's reach reads it
+        check_length(verdict, "guide", extra[0])    # (an infinite one made that rule's text overflow)
     with np.errstate(all="ignore"):
         theta = math.pi * (time_ratio - 1.0) / (time_ratio + 1.0)
         half = np.sin(theta / 2.0)
@@ -94,7 +96,7 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
                   (lambda i, at=Flat(need, shape):
                       f"must be ≥ {math.ceil(at[i] * 10.0) / 10.0:.1f} mm for this crank and K, "
                       "so that the crank pin stays on the lever"))
-    return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate)
+    return _assemble(verdict, crank, frame, lever, theta, extra, rod_side, validate, guide_checked=True)
 
 
 def _k_min_text(k_min: float) -> str:
@@ -141,15 +143,17 @@ def _inputs(lengths, guide, rod, rod_ratio):
 
 
 def _assemble(verdict: Verdict, crank, frame, lever, theta, extra, rod_side: str,
-              validate: bool) -> tuple[Designs, Verdict]:
-    """The rod and guide rules, the designs, and (with ``validate``) the design rules."""
+              validate: bool, guide_checked: bool = False) -> tuple[Designs, Verdict]:
+    """The rod and guide rules (a given guide height's range unless ``guide_checked``), the
+    designs, and (with ``validate``) the design rules."""
     guide, rod, rod_ratio = extra
     rod_length = _rod_length(verdict, rod, rod_ratio, lever)
     if rod_ratio is not None:       # the rod's rules check L4 in mm: each refusal in L4/L3
         ratios = Flat(rod_ratio, verdict.failed.shape)
         verdict.blame = lambda error, index: ratio_error(error, float(ratios[index]))
-    designs = Designs(crank, frame, lever, _guide(verdict, guide, lever, theta), rod_length,
-                      rod_side)
+    if not (guide_checked or isinstance(guide, str)):
+        check_length(verdict, "guide", guide)
+    designs = Designs(crank, frame, lever, _guide(guide, lever, theta), rod_length, rod_side)
     if validate:
         check_designs(verdict, designs)
     return designs, verdict
@@ -173,12 +177,11 @@ def _guide_number(guide):
     return guide
 
 
-def _guide(verdict: Verdict, guide, lever: np.ndarray, theta: np.ndarray) -> np.ndarray:
+def _guide(guide, lever: np.ndarray, theta: np.ndarray) -> np.ndarray:
     """Guide height above O4 for a named rule (see ``geometry.guide_height``) or given heights."""
     if isinstance(guide, str):
         with np.errstate(all="ignore"):     # a lever near the float limit: inf, refused later
             return lever * guide_share(guide, theta)
-    check_length(verdict, "guide", guide)
     return guide
 
 

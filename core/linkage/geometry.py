@@ -20,7 +20,7 @@ from .designs import (GUIDE_RULES, MAX_CRANK_RATIO, MAX_LENGTH_MM, MAX_ROD_RATIO
                       MIN_LENGTH_MM, ROD_SIDES, Designs, check_designs, dimensions_many,
                       ratio_error, synthesize_many)
 from .drive import ROD_MARGIN, drive_margin  # noqa: F401
-from .designs import _guide, _guide_number
+from .designs import _guide, _guide_number, check_length
 from core.base.errors import DesignError, require_range
 from .verdict import Verdict
 
@@ -91,10 +91,12 @@ def guide_height(rule: GuideRule | float, lever: float, theta: float) -> float:
     ``sagitta``: midway along the arc's sagitta, L3·(1 + cos(θ/2))/2, which
     halves the rod's worst inclination.
     """
-    verdict = Verdict(np.zeros(1, dtype=np.int16))
     value = _guide_argument(rule)
-    height = _guide(verdict, value, np.array([float(lever)]), np.array([float(theta)]))
-    verdict.raise_first()
+    if not isinstance(value, str):
+        verdict = Verdict(np.zeros(1, dtype=np.int16))
+        check_length(verdict, "guide", np.asarray(value, dtype=float).reshape(1))
+        verdict.raise_first()
+    height = _guide(value, np.array([float(lever)]), np.array([float(theta)]))
     return float(height[0])
 
 
