@@ -80,11 +80,11 @@ def synthesize_many(crank, time_ratio, stroke, *, guide="chord", rod=None, rod_r
         if block_at_height:
             too_short = lever <= crank + frame
         tip = np.broadcast_to(block_at_height and (extra[0] > crank + frame), shape) & too_short
+        reach = 2.0 * half * extra[0] if np.any(tip) else need     # the stroke the block's reach needs
     verdict.check("time_ratio", half < smallest, time_ratio,
                   lambda i, at=Flat(k_min, shape): _k_min_text(float(at[i])))
     verdict.check("stroke", tip, stroke,
-                  lambda i, at=Flat(2.0 * half * extra[0] if np.any(tip) else need, shape),
-                  height=Flat(extra[0] if np.any(tip) else need, shape):
+                  lambda i, at=Flat(reach, shape), height=Flat(extra[0] if np.any(tip) else need, shape):
                       f"must be ≥ {math.ceil(at[i] * 10.0) / 10.0:.1f} mm for this crank and K, so that the "
                       f"block on the lever tip reaches the guide height {round_text(height[i])} mm")
     verdict.check("stroke", too_short, stroke,
