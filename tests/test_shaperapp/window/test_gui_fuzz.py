@@ -4,9 +4,13 @@ Random text goes into every field (design, speeds, step, loads), every choice is
 switched, speeds are added and removed, the animation is played and stepped, maps and
 optimizations are started, cancelled and clicked on the Explore tab (its worker runs on), the
 language switched, edits undone and redone, images and CSV exported to tmp_path,
-good and hostile files opened, the design saved. Dialogs answer at random. No
-exception may reach ``sys.excepthook``; after every action what Save would write is
-valid and the window never holds more samples than it redraws in half a second.
+good and hostile files opened, the design saved; the Cam and Gear tabs typed into, their
+choices switched and their exports clicked. Dialogs answer at random. No exception may
+reach ``sys.excepthook``; after every action what Save would write is valid, the window
+never holds more samples than it redraws in half a second, a part's error is what its
+typed fields give, the pair a valid Gear tab shows is its typed fields' and the Gear tab
+on screen shows that pair in its tables and greyed fields (the Gear tab's fields follow
+the pair its tables show, issue 40 item 1).
 """
 import json
 import os
@@ -18,14 +22,20 @@ import pytest
 from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
+from core.cam import design_cam
 from core.files.io import load_design
 from core.linkage.spec import NUMBER_FIELDS
 from shaperapp.design.model import DesignModel
+from shaperapp.cam.model import cam_inputs
+from shaperapp.cam.tab import CamTab
+from shaperapp.gear.model import check_part
+from shaperapp.gear.tab import GearTab
 from core.linkage.limits import MAX_FILE_SAMPLES
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets import i18n
 from shaperapp.window.main_window import MainWindow
 
+from gear_checks import assert_fields_follow, assert_table_is
 from hostile_files import VALID, build_case
 from sweeps import examples
 
@@ -167,6 +177,45 @@ class Fuzzer:
         else:
             self.w.tabs.setCurrentWidget(view)
 
+    def part(self) -> None:
+        """The Cam or the Gear tab: a field typed (the typed value scaled, or garbage), a
+        choice switched (the gear's module typed), or one of its exports clicked."""
+        w, rng = self.w, self.rng
+        tab, part = (w.cam, w.cam_model) if rng.random() < 0.5 else (w.gear, w.gear_model)
+        if rng.random() < 0.6:                  # mostly typed on screen, where its checks look
+            w.tabs.setCurrentWidget(tab)
+        form, pick = tab.form, rng.random()
+        if pick < 0.7:
+            name = rng.choice(list(form.fields))
+            edit = form.fields[name].edit
+            if not edit.isEnabled():            # a gear shift its mode derives
+                return
+            typed = part.typed.dict[name]
+            if rng.random() < 0.7:                  # near what is typed: mostly a part it can make
+                text = (str(rng.randint(8, 60)) if name in ("z1", "z2") else
+                        f"{(typed if isinstance(typed, (int, float)) and typed else 10.0) * rng.uniform(0.8, 1.25):.4g}")
+            else:
+                text = random_text(rng, typed if isinstance(typed, (int, float)) and typed else 10.0)
+            edit.setFocus()
+            edit.setText(text)
+            edit.textEdited.emit(text)
+            edit.editingFinished.emit()
+            if rng.random() < 0.7:              # the typing pause ends (else a later action's turn)
+                form.commit()
+        elif pick < 0.9:
+            combo = rng.choice(list(form.combos.values()))
+            if combo.isEditable() and rng.random() < 0.5:
+                text = random_text(rng, 6.0)
+                combo.setEditText(text)
+                combo.lineEdit().textEdited.emit(text)
+                form.commit()
+            else:
+                index = rng.randrange(combo.count())
+                combo.setCurrentIndex(index)
+                combo.activated.emit(index)
+        else:
+            tab.buttons[rng.choice(list(tab.buttons))].click()
+
     def undo_redo(self) -> None:
         (self.w.act_undo if self.rng.random() < 0.6 else self.w.act_redo).trigger()
 
@@ -184,7 +233,7 @@ class Fuzzer:
     def run(self, count: int) -> float:
         table = [(self.type_design, 30), (self.type_load, 12), (self.choice, 14), (self.speeds, 8),
                  (self.animation, 14), (self.view, 4), (self.undo_redo, 10), (self.language, 1),
-                 (self.export, 3), (self.files_action, 4), (self.explore, 3)]
+                 (self.export, 3), (self.files_action, 4), (self.explore, 3), (self.part, 25)]
         actions, weights = zip(*table)
         slowest = 0.0
         for _ in range(count):
@@ -205,6 +254,37 @@ class Fuzzer:
         for name in set(NUMBER_FIELDS) - model.spec.active_fields():
             model.spec.check_field(name)
         assert model.angle_count * len(model.rpms) <= MAX_FILE_SAMPLES
+        for name in ("cam", "gear"):
+            if self.w._part_models[name].made():
+                self.check_part(name)
+
+    def check_part(self, name: str) -> None:
+        """A part's error is its typed fields' (with the linkage on screen); a gear pair made
+        from this design's fields is the last valid typed fields' pair, and the Gear tab on
+        screen shows it. (A hidden Cam tab's cam waits for the tab after a linkage edit: its
+        error is compared while the tab is on screen.)"""
+        part = self.w._part_models[name].model
+        if name == "cam" and not isinstance(self.w.tabs.currentWidget(), CamTab):
+            return
+        try:
+            if name == "cam":       # core's cam, as CamModel.compute asks it (which keeps the refusal's advice)
+                inputs, phase = cam_inputs(part.typed)
+                model = self.w.model
+                design_cam(inputs, model.design, model.masses.idle_fraction, phase, advice_later=True)
+            else:
+                part.compute(part.typed)
+            refused = None
+        except Exception as exc:                # noqa: BLE001 - whatever the model catches
+            refused = exc
+        assert (refused is None) == (part.error is None), (name, refused, part.error)
+        if name != "gear" or not part.own_value:
+            return
+        if part.error is None:
+            assert part.pair == part.compute(part.typed)
+        tab = self.w.tabs.currentWidget()
+        if isinstance(tab, GearTab) and not any(n in tab.form.pending for n in (*tab.form.fields, "module")):
+            assert_table_is(tab, part.pair)
+            assert_fields_follow(tab, part.pair)
 
 
 @pytest.fixture
@@ -222,6 +302,11 @@ def patched_dialogs(monkeypatch, tmp_path):
     monkeypatch.setattr(QMessageBox, "question", ask)
     monkeypatch.setattr(QMessageBox, "about", lambda *a, **k: None)
     monkeypatch.setattr(file_dialogs, "save_file_name", lambda *a, **k: state["fuzzer"].save_name())
+    def save_with_filter(parent, title, start, filters, selected=""):
+        path = state["fuzzer"].save_name()
+        return path, rng.choice(filters.split(";;")) if path else ""
+
+    monkeypatch.setattr(file_dialogs, "save_file_and_filter", save_with_filter)
     monkeypatch.setattr(file_dialogs, "open_file_name", lambda *a, **k: rng.choice(state["fuzzer"].files + [""]))
     monkeypatch.setattr(QInputDialog, "getDouble", lambda *a, **k: (rng.uniform(-10, 370), rng.random() < 0.8))
     return state
@@ -247,12 +332,15 @@ def test_random_user_actions_raise_nothing(qtbot, tmp_path, monkeypatch, patched
         i18n.set_language("en")
     elapsed = time.perf_counter() - start
     assert caught == [], caught[:3]
-    assert sum(fuzzer.counts.values()) == ACTIONS and len(fuzzer.counts) == 11
+    assert sum(fuzzer.counts.values()) == ACTIONS and len(fuzzer.counts) == 12
     print(f"\nGUI fuzz: {ACTIONS} actions in {elapsed:.1f} s, slowest {slowest:.2f} s; {fuzzer.counts}; "
           f"seconds {({k: round(v, 1) for k, v in fuzzer.seconds.items()})}")
     # What is on screen still saves and reopens.
     window.model.revert_invalid()
     path = tmp_path / "final.shaper.json"
     assert window.document.save_to(str(path))
-    assert load_design(path)["spec"] == window.model.valid_spec
+    saved = load_design(path)
+    assert saved["spec"] == window.model.valid_spec
+    if window._part_models["gear"].made() and window.gear_model.own_value:
+        assert check_part(saved["gear"]) == window.gear_model.pair
     window.model.set_clean(window.model.path)
