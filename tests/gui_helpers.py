@@ -13,7 +13,7 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QWidget
 
 from shaperapp.design.model import DesignModel
-from shaperapp.widgets import i18n
+from shaperapp.widgets import dialog_titles, i18n
 from shaperapp.window.main_window import MainWindow
 
 W = TypeVar("W", bound=QWidget)
@@ -44,6 +44,7 @@ def main_window(folder: Path) -> Iterator[MainWindow]:
         win.close()
         win.deleteLater()
         i18n.set_language("en")
+        dialog_titles.uninstall()       # the application as the test found it (see uninstall)
 
 
 def curve_items(plot_item) -> list:

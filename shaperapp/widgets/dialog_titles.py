@@ -76,10 +76,26 @@ def release(app: QCoreApplication) -> None:
 
 def install(app: QCoreApplication) -> None:
     """Fit every dialog of ``app`` to its title and localize its file dialogs when shown
-    (once per application; nothing while held)."""
+    (once per application; nothing while held). The window installs it
+    (``MainWindow.set_language``): a process that only translates, a headless writer,
+    shows no dialog and would pay the filter on every event."""
     global _fitter
     if _held:
         return
     if _fitter is None or _fitter.parent() is not app:
         _fitter = _TitleFitter(app)
         app.installEventFilter(_fitter)
+
+
+def uninstall() -> None:
+    """Take the filter off its application again: for the tests, whose windows come and go
+    in one application (``tests/gui_helpers.main_window``), so that a test's events are
+    filtered only when its own window installed the filter, whatever ran before it. The
+    application itself keeps it to its end."""
+    global _fitter
+    if _fitter is not None:
+        app = _fitter.parent()
+        if app is not None:
+            app.removeEventFilter(_fitter)
+        _fitter.deleteLater()
+        _fitter = None

@@ -14,7 +14,6 @@ from importlib import resources
 
 from PySide6.QtCore import QCoreApplication, QLibraryInfo, QLocale, QTranslator
 from PySide6.QtGui import QGuiApplication
-from PySide6.QtWidgets import QApplication
 
 LANGUAGES = (("en", "English"), ("zh_CN", "简体中文"))
 # What a command line accepts for --lang, everywhere (shaperapp, shaper report): one
@@ -80,7 +79,4 @@ def set_language(language: str) -> bool:
         QGuiApplication.setApplicationDisplayName(QCoreApplication.translate("app", "Shaper Designer"))
     # Dates and numbers that Qt formats itself (the file dialog's dates) in the UI's language.
     QLocale.setDefault(QLocale(language if language != "en" else "en_US"))
-    if isinstance(app, QApplication):
-        from . import dialog_titles
-        dialog_titles.install(app)
     return loaded

@@ -15,7 +15,7 @@ import os
 import shiboken6
 from PySide6.QtCore import QEvent, QSettings, QTimer
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
-from PySide6.QtWidgets import QInputDialog, QMainWindow, QMessageBox, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QApplication, QInputDialog, QMainWindow, QMessageBox, QVBoxLayout, QWidget
 
 from shaperapp.design.document import Document
 from shaperapp.design.inputs_pane import InputsPane
@@ -24,7 +24,7 @@ from shaperapp.design.undo import retranslate_history
 from shaperapp.plots.kinematics import PlotsWidget
 from shaperapp.results.panel import MetricsPanel
 from shaperapp.scheme.view import SchemeWidget
-from shaperapp.widgets import file_dialogs
+from shaperapp.widgets import dialog_titles, file_dialogs
 from shaperapp.widgets import i18n
 from shaperapp.widgets.guards import ShortcutGuard, guard_wheel
 from shaperapp.widgets.lazy import LazyPage, ViewTabs, build_when_idle
@@ -203,6 +203,13 @@ class MainWindow(QMainWindow):
     # ---- translation ---------------------------------------------------------
     def set_language(self, code: str) -> None:
         i18n.set_language(code)
+        # The window's dialogs are fitted to their titles (and its file dialogs put in its
+        # language) by a filter of every event of the application: installed here, by the
+        # window that shows dialogs, not by ``i18n`` for every process that translates. A
+        # headless writer (``shaper report``/``course``/``class``, an export's child) shows
+        # none, and the filter cost it about a tenth of its CPU (docs/performance.md,
+        # "The suite's margin, 1 December"). Held until the first paint (``app.main``).
+        dialog_titles.install(QApplication.instance())
         self._language = code
         if self._guide is not None:
             self._guide.set_language(code)
