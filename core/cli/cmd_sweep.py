@@ -85,7 +85,7 @@ def parse_vary(texts: list[str], spec: Spec, with_count: bool) -> dict[str, tupl
                 count = int(parts[2])
             except ValueError:
                 raise DesignError("vary", text, "COUNT must be a whole number") from None
-            if not 1 <= count <= MAX_COUNT or (count == 1 and high != low):
+            if not 1 <= count <= MAX_COUNT or (count == 1) != (high == low):    # LO = HI: one row, not copies
                 raise DesignError("vary", text, f"COUNT must be 2 to {MAX_COUNT} (1 when LO = HI)")
             out[name] = (low, high, count)
         else:

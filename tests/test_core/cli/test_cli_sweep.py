@@ -95,6 +95,7 @@ def test_sweep_varies_k_beside_the_measured_k(tmp_path):
     (["--vary", "crank=1:2"], "--vary"),
     (["--vary", "crank=2:1:3"], "--vary"),
     (["--vary", "crank=1:2:0"], "--vary"),
+    (["--vary", "crank=100:100:5"], "--vary"),            # five copies of one design (GUI: one-value range refused)
     (["--vary", "crank=1:x:3"], "--vary"),
     (["--vary", "frame=300:400:3"], "--vary"),            # synthesis mode has no frame
     (["--vary", "crank=1:2:3", "--vary", "crank=1:2:3"], "--vary"),
