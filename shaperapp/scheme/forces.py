@@ -361,3 +361,8 @@ class ForceLayer(QObject):
 
     def caption(self) -> str:
         return self._caption.text() if self._caption.isVisible() else ""
+
+    def caption_item(self):
+        """The caption's item while it is shown (None otherwise): the view reads its box for
+        the labels to keep off (it stands over the drawing in the view's corner)."""
+        return self._caption if self._caption.isVisible() and self._caption.text() else None

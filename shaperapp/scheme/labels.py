@@ -59,6 +59,7 @@ class LabelLayout(QObject):
         self._at: dict[str, int] = {}          # ... and the one it is at now
         self._chain: list = []                 # the L2 and h labels' boxes, mm
         self._halves: dict[str, np.ndarray] = {}
+        self._reserved: tuple = ()              # boxes over the drawing a frame's labels keep off
         self._bounds: tuple[float, float, float, float] | None = None
         self._small: dict[str, bool] = {}        # joint names drawn one size smaller now
 
@@ -182,18 +183,21 @@ class LabelLayout(QObject):
         return np.array([abs(right - left), abs(top - bottom)]) / 2.0
 
     # ---- per frame -----------------------------------------------------
-    def place_frame(self, index: int, mm_per_px: tuple[float, float]) -> None:
-        """The moving joints' names and the force labels at crank-angle ``index``."""
+    def place_frame(self, index: int, mm_per_px: tuple[float, float], reserved: tuple = ()) -> None:
+        """The moving joints' names and the force labels at crank-angle ``index``, clear of
+        the ``reserved`` boxes (left, right, bottom, top; mm) too: what stands over the
+        drawing, the force caption in the view's corner."""
         mech = self._mechanism
         f = mech.frames
         if f is None or index >= len(f.tip) or not self._halves or self._raster is None:
             return
         arrows = self._forces.lines(index)
-        key = (index, arrows.tobytes(), self._forces.pending_key())
+        key = (index, arrows.tobytes(), self._forces.pending_key(), reserved)
         done = self._done.get(key)
         if done is not None:
             self._restore(done)
             return
+        self._reserved = reserved
         self._place_frame(index, arrows, mm_per_px)
         self._done[key] = self._state()
 
@@ -257,9 +261,12 @@ class LabelLayout(QObject):
         of the frame keeps clear of before the first is placed."""
         margin = LINE_CLEAR_PX * self._px
         ends, margins = self._mechanism.frame_obstacles(index)
-        return Obstacles(np.concatenate([ends, arrows]),
-                         np.concatenate([margins + margin, np.full(len(arrows), margin)]),
-                         np.array(self._chain).reshape(-1, 4), self._bounds, self._raster, self._spacing())
+        obstacles = Obstacles(np.concatenate([ends, arrows]),
+                              np.concatenate([margins + margin, np.full(len(arrows), margin)]),
+                              np.array(self._chain).reshape(-1, 4), self._bounds, self._raster, self._spacing())
+        for box in self._reserved:      # the force caption: a label under it was hidden (113 of
+            obstacles.cover(box)        # 144 frames' B or O₂ in the laptop pane, rod, forces shown)
+        return obstacles
 
     def _spacing(self) -> tuple[float, float]:
         """The gap every label's box keeps from the others', mm (x, y): the sheets' label_gap

@@ -105,6 +105,7 @@ class Obstacles:
         self._hi = self.ends.max(axis=1) + self.margins[:, None]
         self.boxes = [] if boxes is None else [tuple(b) for b in np.asarray(boxes).reshape(-1, 4)]
         self.turned = len(self.boxes) * [True]
+        self.covers: list[tuple] = []    # what stands over the drawing (the force caption): see cover
 
     def clear_of_labels(self, candidates: np.ndarray) -> np.ndarray:
         """(m,) True where a candidate box keeps the labels' gap from every label's box."""
@@ -132,6 +133,7 @@ class Obstacles:
         out = ~met.any(axis=1)
         if self.raster is not None:
             out &= self.raster.hits(candidates) == 0
+        out &= clear_of_boxes(candidates, np.array(self.covers).reshape(-1, 4))
         return out & self.clear_of_labels(candidates) & self.inside(candidates), met
 
     def inside(self, candidates: np.ndarray) -> np.ndarray:
@@ -182,9 +184,17 @@ class Obstacles:
             overlap = ~clear_of_boxes(candidates, np.array([box]))
             close = ~clear_of_boxes(candidates, np.array([box]), (self.spacing[1],) * 2 if turned else self.spacing)
             hits += 1000.0 * overlap + CLOSE_COST * (close & ~overlap)
+        if self.covers:
+            hits = hits + COVER_COST * ~clear_of_boxes(candidates, np.array(self.covers))
         if barred is not None:
             hits = hits + 100000.0 * barred
         return int(np.argmin(hits))
+
+    def cover(self, box) -> None:
+        """A box standing over the drawing (the force caption in the view's corner): a label
+        keeps clear of it, and where no spot is clear, one partly under it is preferred to
+        one a line crosses (COVER_COST)."""
+        self.covers.append(tuple(box))
 
     def add(self, box=None, ends: np.ndarray | None = None, margin=0.0, turned: bool = False) -> None:
         """A placed label's box (a ``turned`` text's: read upwards), or lines with their
@@ -202,6 +212,7 @@ class Obstacles:
 
 
 CLOSE_COST = 0.5       # a label within the gap but clear of it, in lines met (Obstacles.best)
+COVER_COST = 0.75      # a label partly under the force caption, in lines met: still read beside it
 FIRST_CHUNK = 16       # candidates checked at once first (one ring); each chunk after doubles
 
 

@@ -375,4 +375,6 @@ class SchemeWidget(SchemeReadBack, QWidget):
         if self.forces_visible():
             self._forces.draw(index, self._model, self._geometry)
         if not self._labels_stale:      # else placed with the still labels, after the paint
-            self._labels.place_frame(index, self._view.viewPixelSize())
+            caption = self._forces.caption_item()
+            reserved = () if caption is None else (self._screen_box(caption),)
+            self._labels.place_frame(index, self._view.viewPixelSize(), reserved)
