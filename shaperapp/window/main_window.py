@@ -208,7 +208,7 @@ class MainWindow(QMainWindow):
         # window that shows dialogs, not by ``i18n`` for every process that translates. A
         # headless writer (``shaper report``/``course``/``class``, an export's child) shows
         # none, and the filter cost it about a tenth of its CPU (docs/performance.md,
-        # "The suite's margin, 1 December"). Held until the first paint (``app.main``).
+        # "The suite's margin, 30 November (night)"). Held until the first paint (``app.main``).
         dialog_titles.install(QApplication.instance())
         self._language = code
         if self._guide is not None:

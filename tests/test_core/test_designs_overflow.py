@@ -35,7 +35,7 @@ GUIDES = st.one_of(st.floats(allow_nan=True, allow_infinity=True),
 @example(crank=469.46, time_ratio=2.094843, stroke=244.0, guide=1e306)
 @example(crank=469.46, time_ratio=2.094843, stroke=244.0, guide=1.7976931348623157e308)
 def test_a_given_guide_height_out_of_range_is_refused_as_the_guide(crank, time_ratio, stroke, guide):
-    """GUI fuzz (1 December): a guide height typed as 1e999 (inf) and then a switch to
+    """GUI fuzz (30 November): a guide height typed as 1e999 (inf) and then a switch to
     synthesis raised OverflowError in the stroke rule's text (the block's reach, 2 sin(θ/2)
     times the guide, rounded up with math.ceil), a traceback on screen; at 1e306 the refusal
     asked for a stroke of a 308-digit number of mm. A guide height outside its range is now

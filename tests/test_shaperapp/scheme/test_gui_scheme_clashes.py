@@ -210,7 +210,7 @@ def caption_sweep(qtbot, model, design: str, size: tuple[int, int]) -> list[tupl
 
 @pytest.mark.parametrize("design", ["default", "rod"])
 def test_no_label_under_the_force_caption(qtbot, model, design):
-    """Seen in the README's Forces screenshot (1 December): with forces shown, O₂ stood half
+    """Seen in the README's Forces screenshot (30 November): with forces shown, O₂ stood half
     under "Forces at 40 r/min, scale: …" at φ = 0 in the 1366 × 768 window. The frame's
     labels keep off the caption's box: before, in this pane, the guide force's magnitude
     sat under it at 19 of 72 angles (block)."""

@@ -2,7 +2,7 @@
 only the window, which shows dialogs, installs it: a headless writer translating its
 report or sheets (``start_qt``, an export's child) paid it on every event, about a tenth
 of its CPU, for dialogs it never shows (docs/performance.md, "The suite's margin,
-1 December")."""
+30 November (night)")."""
 from __future__ import annotations
 
 from PySide6.QtWidgets import QApplication, QInputDialog
