@@ -133,7 +133,8 @@ class Obstacles:
         out = ~met.any(axis=1)
         if self.raster is not None:
             out &= self.raster.hits(candidates) == 0
-        out &= clear_of_boxes(candidates, np.array(self.covers).reshape(-1, 4))
+        if self.covers:
+            out &= clear_of_boxes(candidates, np.array(self.covers))
         return out & self.clear_of_labels(candidates) & self.inside(candidates), met
 
     def inside(self, candidates: np.ndarray) -> np.ndarray:
