@@ -59,7 +59,6 @@ class LabelLayout(QObject):
         self._at: dict[str, int] = {}          # ... and the one it is at now
         self._chain: list = []                 # the L2 and h labels' boxes, mm
         self._halves: dict[str, np.ndarray] = {}
-        self._reserved: tuple = ()              # boxes over the drawing a frame's labels keep off
         self._bounds: tuple[float, float, float, float] | None = None
         self._small: dict[str, bool] = {}        # joint names drawn one size smaller now
 
@@ -197,8 +196,7 @@ class LabelLayout(QObject):
         if done is not None:
             self._restore(done)
             return
-        self._reserved = reserved
-        self._place_frame(index, arrows, mm_per_px)
+        self._place_frame(index, arrows, mm_per_px, reserved)
         self._done[key] = self._state()
 
     def _state(self) -> tuple:
@@ -223,9 +221,10 @@ class LabelLayout(QObject):
         self._leaders.set_data(*leaders)
         self._forces.restore_labels(forces)
 
-    def _place_frame(self, index: int, arrows: np.ndarray, mm_per_px: tuple[float, float]) -> None:
+    def _place_frame(self, index: int, arrows: np.ndarray, mm_per_px: tuple[float, float],
+                     reserved: tuple) -> None:
         u = self._mechanism.frames.u
-        obstacles = self._frame_obstacles(index, arrows)
+        obstacles = self._frame_obstacles(index, arrows, reserved)
         leaders = self._place_still_for(arrows, obstacles)
         joints = self._place_joints(index, obstacles)
         if len(joints.get("A", ())) and self._l1_from_pin(index):
@@ -233,13 +232,13 @@ class LabelLayout(QObject):
             # position that is the crank pin A, and it runs out across the lever, A's own
             # first direction (the report's end limit sent A out on a 128 mm leader). Its
             # label has many places; A's name has a few: the joints first, then L1.
-            retry = self._frame_obstacles(index, arrows)
+            retry = self._frame_obstacles(index, arrows, reserved)
             still = self._place_still_for(arrows, retry, later=("L1",))
             again = self._place_joints(index, retry)
             fewer = leaders_length(again) < leaders_length(joints) and not len(again["A"])
             lead = self._still_after("L1", retry) if fewer else None
             if lead is None:                 # no better: the first placement again
-                obstacles = self._frame_obstacles(index, arrows)
+                obstacles = self._frame_obstacles(index, arrows, reserved)
                 leaders = self._place_still_for(arrows, obstacles)
                 joints = self._place_joints(index, obstacles)
             else:
@@ -256,15 +255,15 @@ class LabelLayout(QObject):
         pin = self._mechanism.joint_at("A", index)
         return bool(len(lead)) and float(np.hypot(*(lead[0, 0] - pin))) < 0.5 * self._px
 
-    def _frame_obstacles(self, index: int, arrows: np.ndarray) -> Obstacles:
-        """The lines of frame ``index`` (and its force arrows), L2 and h: what every label
-        of the frame keeps clear of before the first is placed."""
+    def _frame_obstacles(self, index: int, arrows: np.ndarray, reserved: tuple) -> Obstacles:
+        """The lines of frame ``index`` (and its force arrows), L2 and h, and the ``reserved``
+        boxes: what every label of the frame keeps clear of before the first is placed."""
         margin = LINE_CLEAR_PX * self._px
         ends, margins = self._mechanism.frame_obstacles(index)
         obstacles = Obstacles(np.concatenate([ends, arrows]),
                               np.concatenate([margins + margin, np.full(len(arrows), margin)]),
                               np.array(self._chain).reshape(-1, 4), self._bounds, self._raster, self._spacing())
-        for box in self._reserved:      # the force caption: a label under it was hidden (113 of
+        for box in reserved:            # the force caption: a label under it was hidden (113 of
             obstacles.cover(box)        # 144 frames' B or O₂ in the laptop pane, rod, forces shown)
         return obstacles
 
