@@ -18,7 +18,6 @@ from typing import TYPE_CHECKING, Any, Callable, Hashable
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
-from PySide6.QtGui import QUndoStack
 
 from core.forces.dynamics import Dynamics, DynamicsSummary
 from core.forces.masses import MassProperties
@@ -33,7 +32,7 @@ from .errors import ShownError
 from .results import (COMPUTE_ERRORS, as_design_error, compute, compute_error, compute_motion, compute_whole,
                       solve_forces)
 from .parts import FileParts
-from .undo import InputEdit, edit_text, push_edit
+from .undo import InputEdit, edit_text, owned_undo_stack, push_edit
 
 if TYPE_CHECKING:       # a type only: core.space.compare is imported when a comparison is made
     from core.space.compare import Candidate
@@ -77,7 +76,7 @@ class DesignModel(QObject):
         self._inputs = Inputs.of(self._valid_spec, self._rpms, self._step, self._masses)
         (self._design, self._motion, self._metrics,
          self._dynamics, self._dynamics_summary) = compute(self._inputs, self._masses)
-        self.undo_stack = QUndoStack(self)
+        self.undo_stack = owned_undo_stack(self)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
         self._comparison: tuple[Candidate, ...] = ()
         self.parts = FileParts()        # the file's parts other models keep (cam, gear)

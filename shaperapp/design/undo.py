@@ -8,9 +8,12 @@ typing session); they merge into one step through ``id``/``mergeWith``, done by
 """
 from __future__ import annotations
 
-from typing import Callable, Hashable
+import inspect
+import weakref
+from typing import Callable, Hashable, TypeVar
 
-from PySide6.QtCore import QCoreApplication
+import shiboken6
+from PySide6.QtCore import QCoreApplication, QObject
 from PySide6.QtGui import QUndoCommand, QUndoStack
 
 from shaperapp.widgets.messages import field_name
@@ -18,6 +21,19 @@ from shaperapp.widgets.messages import field_name
 from .inputs import Inputs
 
 MERGE_ID = 1
+F = TypeVar("F", bound=Callable)
+
+
+def held_weakly(function: F) -> Callable[[], F | None]:
+    """``function`` for a command to keep: a bound method through a weak reference (None
+    once its object is gone), any other callable as it is.
+
+    Why: a command must not keep its stack's owner alive (a model's method does), or the
+    owner could never be collected while the stack holds the command (see
+    :func:`owned_undo_stack`)."""
+    if inspect.ismethod(function):
+        return weakref.WeakMethod(function)
+    return lambda: function
 
 
 def edit_text(names: list[str]) -> str:
@@ -35,13 +51,14 @@ class InputEdit(QUndoCommand):
     ``key`` is None for an edit that never merges (a choice, a speed added), else
     a hashable naming the fields and the typing session; consecutive edits with
     equal keys merge. An edit merged back to where it started becomes obsolete.
-    ``describe`` gives the history text in the current language."""
+    ``describe`` gives the history text in the current language. Both callables are
+    held weakly (:func:`held_weakly`): once their object is gone the edit does nothing."""
 
     def __init__(self, apply: Callable[[Inputs], None], before: Inputs, after: Inputs,
                  key: Hashable | None, describe: Callable[[], str]) -> None:
         super().__init__(describe())
-        self._describe = describe     # the text in the current language, again after a switch
-        self._apply = apply
+        self._describe = held_weakly(describe)  # the text in the current language, again after a switch
+        self._apply = held_weakly(apply)
         self.before = before
         self.after = after
         self.key = key
@@ -57,13 +74,44 @@ class InputEdit(QUndoCommand):
         return True
 
     def retranslate(self) -> None:
-        self.setText(self._describe())
+        describe = self._describe()
+        if describe is not None:
+            self.setText(describe())
 
     def redo(self) -> None:
-        self._apply(self.after)
+        self._go_to(self.after)
 
     def undo(self) -> None:
-        self._apply(self.before)
+        self._go_to(self.before)
+
+    def _go_to(self, inputs: Inputs) -> None:
+        apply = self._apply()
+        if apply is not None:
+            apply(inputs)
+
+
+def owned_undo_stack(owner: QObject) -> QUndoStack:
+    """A QUndoStack that ``owner`` owns, whose commands Qt deletes before the owner goes.
+
+    Why: a Python command pushed on a stack is the stack's child in PySide's bookkeeping,
+    and a command usually refers back to the owner (an :class:`InputEdit` holds the model's
+    bound method), so a discarded owner is cyclic garbage. Python's collector clears the
+    objects of a cycle in no set order; clearing a command first gives its C++ object back
+    to Python (shiboken's ``tp_clear``), which deletes it while the stack still lists it,
+    and the owner's destruction then deletes it again: a segmentation fault (PySide 6.11;
+    seen in the tests' collections, and ``tests/test_shaperapp/design/test_undo_collected.py``
+    makes it happen on purpose). A finalizer holds the stack, so neither it nor its commands
+    are garbage, and has Qt delete the commands when the owner dies, before the collector
+    clears anything (weakref callbacks run first) or while the owner is freed."""
+    stack = QUndoStack(owner)
+    weakref.finalize(owner, _delete_commands, stack)
+    return stack
+
+
+def _delete_commands(stack: QUndoStack) -> None:
+    if shiboken6.isValid(stack):          # not when Qt deleted the owner (and the stack) first
+        stack.blockSignals(True)          # the owner's slots are being torn down
+        stack.clear()
 
 
 def push_edit(stack: QUndoStack, edit: InputEdit) -> None:

@@ -9,12 +9,13 @@ translated message and change nothing.
 from __future__ import annotations
 
 import os
+import weakref
 from dataclasses import replace
 from pathlib import Path
 from typing import Iterable, Sequence
 
 from PySide6.QtCore import QCoreApplication, QObject, Signal
-from PySide6.QtGui import QUndoCommand, QUndoStack
+from PySide6.QtGui import QUndoCommand
 
 from core.space.compare import Candidate
 from core.base.errors import DesignError, FileFormatError
@@ -27,6 +28,7 @@ from core.library.backup import backup_copy
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
+from shaperapp.design.undo import owned_undo_stack
 from shaperapp.widgets.file_messages import defaulted_text, describe_damage, describe_file_error, describe_os_error
 from shaperapp.widgets.messages import describe
 
@@ -37,7 +39,9 @@ class _Swap(QUndoCommand):
     def __init__(self, actions: "LibraryActions", text: str, before: Sequence[Entry],
                  after: Sequence[Entry]) -> None:
         super().__init__(text)
-        self._actions, self._before, self._after = actions, list(before), list(after)
+        # Weakly: a command must not keep its stack's owner alive (design.undo.owned_undo_stack).
+        self._actions = weakref.ref(actions)
+        self._before, self._after = list(before), list(after)
         self._done = True        # pushed after the first swap succeeded
 
     def redo(self) -> None:
@@ -50,8 +54,11 @@ class _Swap(QUndoCommand):
         self._apply(self._after, self._before)
 
     def _apply(self, old: Sequence[Entry], new: Sequence[Entry]) -> None:
+        actions = self._actions()
+        if actions is None:
+            return
         try:
-            self._actions._swap(old, new)
+            actions._swap(old, new)
         except _Reported:           # the library changed meanwhile: drop this step
             self.setObsolete(True)
 
@@ -72,7 +79,7 @@ class LibraryActions(QObject):
         super().__init__(parent)
         self._model = model
         self.library: Library | None = None
-        self.undo_stack = QUndoStack(self)
+        self.undo_stack = owned_undo_stack(self)
 
     # ---- the library file --------------------------------------------------------
     def open_library(self, path: str | os.PathLike | None = None) -> bool:
