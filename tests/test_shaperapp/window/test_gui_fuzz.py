@@ -5,12 +5,15 @@ switched, speeds are added and removed, the animation is played and stepped, map
 optimizations are started, cancelled and clicked on the Explore tab (its worker runs on), the
 language switched, edits undone and redone, images and CSV exported to tmp_path,
 good and hostile files opened, the design saved; the Cam and Gear tabs typed into, their
-choices switched and their exports clicked. Dialogs answer at random. No exception may
+choices switched and their exports clicked; the library pane's actions run on a library in
+tmp_path (save, open, compare, rename, duplicate, delete, undo, redo, import, export).
+Dialogs answer at random. No exception may
 reach ``sys.excepthook``; after every action what Save would write is valid, the window
 never holds more samples than it redraws in half a second, a part's error is what its
 typed fields give, the pair a valid Gear tab shows is its typed fields' and the Gear tab
 on screen shows that pair in its tables and greyed fields (the Gear tab's fields follow
-the pair its tables show, issue 40 item 1).
+the pair its tables show, issue 40 item 1), and the library pane lists the library's
+designs; at the end the library has no damaged entry.
 """
 import json
 import os
@@ -20,16 +23,18 @@ import time
 
 import pytest
 from PySide6.QtCore import QSettings, Qt
-from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
+from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QInputDialog, QMessageBox
 
 from core.cam import design_cam
 from core.files.io import load_design
+from core.library import Library
 from core.linkage.spec import NUMBER_FIELDS
 from shaperapp.design.model import DesignModel
 from shaperapp.cam.model import cam_inputs
 from shaperapp.cam.tab import CamTab
 from shaperapp.gear.model import check_part
 from shaperapp.gear.tab import GearTab
+from shaperapp.library.dialogs import SaveDialog
 from core.linkage.limits import MAX_FILE_SAMPLES
 from shaperapp.widgets import file_dialogs
 from shaperapp.widgets import i18n
@@ -216,6 +221,18 @@ class Fuzzer:
         else:
             tab.buttons[rng.choice(list(tab.buttons))].click()
 
+    def library(self) -> None:
+        """The library pane: some rows selected, then one of its actions (those enabled)."""
+        pane, rng = self.w.library, self.rng
+        names = pane.actions.library.names() if pane.actions.library is not None else []
+        if names and rng.random() < 0.7:
+            pane.select_names(rng.sample(names, rng.randint(1, min(3, len(names)))))
+        action = rng.choice((pane.act_save, pane.act_save, pane.act_open, pane.act_compare, pane.act_rename,
+                             pane.act_duplicate, pane.act_delete, pane.act_undo, pane.act_redo,
+                             pane.act_import, pane.act_export, pane.act_export_all))
+        if action.isEnabled():
+            action.trigger()
+
     def undo_redo(self) -> None:
         (self.w.act_undo if self.rng.random() < 0.6 else self.w.act_redo).trigger()
 
@@ -233,7 +250,8 @@ class Fuzzer:
     def run(self, count: int) -> float:
         table = [(self.type_design, 30), (self.type_load, 12), (self.choice, 14), (self.speeds, 8),
                  (self.animation, 14), (self.view, 4), (self.undo_redo, 10), (self.language, 1),
-                 (self.export, 3), (self.files_action, 4), (self.explore, 3), (self.part, 25)]
+                 (self.export, 3), (self.files_action, 4), (self.explore, 3), (self.part, 25),
+                 (self.library, 10)]
         actions, weights = zip(*table)
         slowest = 0.0
         for _ in range(count):
@@ -257,6 +275,10 @@ class Fuzzer:
         for name in ("cam", "gear"):
             if self.w._part_models[name].made():
                 self.check_part(name)
+        pane = self.w.library
+        if pane.actions.library is not None:
+            table = pane.table_model
+            assert sorted(table.name_at(r) for r in range(table.rowCount())) == sorted(pane.actions.library.names())
 
     def check_part(self, name: str) -> None:
         """A part's error is its typed fields' (with the linkage on screen); a gear pair made
@@ -309,6 +331,23 @@ def patched_dialogs(monkeypatch, tmp_path):
     monkeypatch.setattr(file_dialogs, "save_file_and_filter", save_with_filter)
     monkeypatch.setattr(file_dialogs, "open_file_name", lambda *a, **k: rng.choice(state["fuzzer"].files + [""]))
     monkeypatch.setattr(QInputDialog, "getDouble", lambda *a, **k: (rng.uniform(-10, 370), rng.random() < 0.8))
+    # the library pane's: a name (some refused: empty, a slash, 200 characters), files, folders
+    names = ("a", "b", "seed 003", "长名字" * 3, " x ", "a/b", "", "d" * 200)
+    folders = (str(tmp_path), "", str(tmp_path / "missing"))
+
+    def save_dialog_exec(dialog):
+        dialog.name_edit.setText(rng.choice(names))
+        dialog.notes_edit.setPlainText(rng.choice(("", "note", "x" * 5000)))
+        dialog.tags_edit.setText(rng.choice(("", "final, rod", ",,,", "a,a")))
+        return rng.choice((QDialog.DialogCode.Accepted, QDialog.DialogCode.Accepted, QDialog.DialogCode.Rejected))
+
+    monkeypatch.setattr(SaveDialog, "exec", save_dialog_exec)
+    monkeypatch.setattr(QInputDialog, "getText", lambda *a, **k: (rng.choice(names), rng.random() < 0.8))
+    monkeypatch.setattr(QFileDialog, "getOpenFileNames",
+                        lambda *a, **k: (rng.sample(state["fuzzer"].files, rng.randint(0, 3)), ""))
+    monkeypatch.setattr(QFileDialog, "getExistingDirectory", lambda *a, **k: rng.choice(folders))
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (state["fuzzer"].save_name(), ""))
+    monkeypatch.setenv("SHAPER_LIBRARY", str(tmp_path / "library.sqlite"))
     return state
 
 
@@ -323,6 +362,7 @@ def test_random_user_actions_raise_nothing(qtbot, tmp_path, monkeypatch, patched
     qtbot.waitExposed(window)
     fuzzer = Fuzzer(window, random.Random(SEED), tmp_path)
     patched_dialogs["fuzzer"] = fuzzer
+    window.library.open_library(None)            # $SHAPER_LIBRARY: tmp_path's
     start = time.perf_counter()
     try:
         slowest = fuzzer.run(ACTIONS)
@@ -332,13 +372,15 @@ def test_random_user_actions_raise_nothing(qtbot, tmp_path, monkeypatch, patched
         i18n.set_language("en")
     elapsed = time.perf_counter() - start
     assert caught == [], caught[:3]
-    assert sum(fuzzer.counts.values()) == ACTIONS and len(fuzzer.counts) == 12
+    assert sum(fuzzer.counts.values()) == ACTIONS and len(fuzzer.counts) == 13
     print(f"\nGUI fuzz: {ACTIONS} actions in {elapsed:.1f} s, slowest {slowest:.2f} s; {fuzzer.counts}; "
           f"seconds {({k: round(v, 1) for k, v in fuzzer.seconds.items()})}")
     # What is on screen still saves and reopens.
     window.model.revert_invalid()
     path = tmp_path / "final.shaper.json"
     assert window.document.save_to(str(path))
+    with Library(tmp_path / "library.sqlite") as library:
+        assert library.damaged() == []
     saved = load_design(path)
     assert saved["spec"] == window.model.valid_spec
     if window._part_models["gear"].made() and window.gear_model.own_value:
