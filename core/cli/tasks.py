@@ -233,6 +233,8 @@ def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], 
         given[flag] = column
         if action.nargs in ("+", "*"):
             argv += [flag, *cell.replace(",", " ").split()]
+        elif isinstance(action, argparse._AppendAction):    # --rotor, given once a part
+            argv += [f"{flag}={part}" for part in cell.split()]
         elif action.nargs == 0:              # a switch (--no-gravity): yes or no
             word = cell.lower()
             if word not in TRUE_WORDS | FALSE_WORDS:

@@ -334,3 +334,17 @@ def test_the_answer_key_gives_the_flywheel_to_add_beside_the_rotating_parts(tmp_
     assert j_f > 1.0 and needed == pytest.approx(j_f - 0.5, rel=1e-12)
     header = key_csv([entry], [""]).splitlines()[0].split(",")
     assert "J_F_1 (kg·m²)" in header and "J_F_needed_1 (kg·m²)" in header
+
+
+def test_a_rotor_cell_gives_every_rotating_part_it_names(tmp_path, base):
+    """The task book's other rotating parts are several (the crank shaft, the pinion's shaft,
+    the motor's rotor), and the command line repeats --rotor for them; a table's cell holds
+    them separated by spaces. The cell was one option, refused as 'must be a number (got
+    1 0.02:gear)'. J:gear takes the base's gear pair's ratio, z2/z1 = 40/13."""
+    lines = ["student,student-number,rotor", "a,1,0.5:1 0.02:gear", "b,2,0.5:1", "c,3,0.5:1 x"]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    assert [s.error for s in students[:2]] == ["", ""]
+    rotors = [[(r["J_kg_m2"], r["speed_ratio"]) for r in s.document["forces"]["rotors"]] for s in students[:2]]
+    assert rotors[0] == [(0.5, 1.0), (0.02, pytest.approx(40 / 13, rel=1e-15))]
+    assert rotors[1] == [(0.5, 1.0)]
+    assert students[2].error.startswith("tasks.csv line 4, column rotor: must be J:RATIO") and "(got x)" in students[2].error
