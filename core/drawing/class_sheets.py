@@ -196,10 +196,8 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y -= 9.0
     items.append(Text(_w(labels, "Quick-return mechanism of a shaper"), ((left + right) / 2, y), 5.0, "cm"))
     y -= 10.0
-    person = (f"{_w(labels, 'Student')}: {who.get('student', '')}    {_w(labels, 'Number')}: "
-              f"{who.get('number', '')}    {_w(labels, 'Class')}: {who.get('group', '')}")
-    size = fitting_height(person, right - left - 8.0, 3.5)      # a long name: 2.5 mm before it is cut
-    items.append(Text(clipped(person, right - left - 8.0, size), (left + 4.0, y), size, "lm"))
+    person, size = _person(who, labels, right - left - 8.0)
+    items.append(Text(person, (left + 4.0, y), size, "lm"))
     y -= 7.0
     items.append(marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5))
     items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rb"))
@@ -219,6 +217,20 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     for k, title in enumerate(deliver, start=1):
         items.append(Text(f"{k}. {title}", (left + 10.0, y - 5.5 * k), 3.5, "lm"))
     return Sheet(p, tuple(items))
+
+
+def _person(who: Mapping[str, str], labels: Mapping[str, str], room: float) -> tuple[str, float]:
+    """The student's line and its height: 3.5 mm, else 2.5 mm, else the name cut with "…"
+    so that the number and the class still print whole (a name of 17 CJK characters cut
+    them off the line's end, 'Number: 20230…', so the sheet no longer said whose it was);
+    a class too long for what is left is cut last."""
+    name, number, group = who.get("student", ""), who.get("number", ""), who.get("group", "")
+    head = f"{_w(labels, 'Student')}: "
+    tail = f"    {_w(labels, 'Number')}: {number}    {_w(labels, 'Class')}: {group}"
+    size = fitting_height(head + name + tail, room, 3.5)
+    least = text_width("MMMMMMMM…", size)          # a name keeps at least its first few letters
+    name = clipped(name, max(room - text_width(head + tail, size), least), size)
+    return clipped(head + name + tail, room, size), size
 
 
 def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:

@@ -98,6 +98,23 @@ def test_the_students_line_shows_the_whole_name_and_number():
     assert left <= line.box()[0] and line.box()[2] <= right
 
 
+@pytest.mark.parametrize("name", ["名" * 17, "名" * 200, "Alexandra Konstantinopoulou-Smith of Mechanical Eng"])
+def test_a_name_too_long_for_the_line_is_cut_and_the_number_and_class_stay(name):
+    """A name too long for the student's line even at 2.5 mm was cut with the line's end,
+    the number and the class with it ('名名…名…' and no number: 17 CJK characters did it),
+    so the sheet no longer said whose it was; now the name is cut and the rest prints whole,
+    within the border."""
+    doc, _ = _doc(0.3)
+    who = {"student": name, "number": "2023010101", "group": "Mechanical Engineering 2301", "date": "2026-01-01"}
+    sheet = task_sheet(doc, who, [], {})
+    line = next(t for t in sheet.items if isinstance(t, Text) and t.text.startswith("Student: "))
+    assert line.text.endswith("Number: 2023010101    Class: Mechanical Engineering 2301")
+    shown = line.text[len("Student: "):line.text.index("    Number: ")]
+    assert shown == name or (shown.endswith("…") and name.startswith(shown[:-1]) and len(shown) > 8)
+    left, _, right, _ = sheet.paper.border
+    assert left <= line.box()[0] and line.box()[2] <= right
+
+
 # 方案 I–III of the task book (l_O2A, l_O2O4, l_O4B, l_BC/l_O4B) and a block design
 TASK_BOOK = [(110.0, 380.0, 540.0, 0.25), (90.0, 350.0, 580.0, 0.3), (110.0, 430.0, 810.0, 0.36),
              (90.0, 350.0, 580.0, None)]
