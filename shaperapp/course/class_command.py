@@ -106,11 +106,12 @@ def run(args: argparse.Namespace) -> int:
                 title or s.folder, date, {"student": s.name, "number": s.number, "group": s.group,
                                           "school": school, "supervisor": supervisor}, cad_font)
             for i, s in enumerate(good)]
-    return _run(args, out, good, jobs, len(bad))
+    return _run(args, out, good, jobs, bad)
 
 
-def _run(args, out, good, jobs, bad: int) -> int:
-    from .class_run import run_jobs
+def _run(args, out, good, jobs, bad_rows) -> int:
+    from .class_run import earlier_folders, run_jobs
+    bad = len(bad_rows)
     start = time.perf_counter()
     count = workers(args.jobs, len(jobs))
     entries: dict[int, dict] = {}
@@ -129,6 +130,12 @@ def _run(args, out, good, jobs, bad: int) -> int:
         _class_files(args, out, good, jobs, [entries[i] for i in done], [good[i].group for i in done])
         print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); "
               f"tasks.pdf and answer-key.pdf, .csv, .json in {out}")
+    lines = {s.folder: s.line for s in bad_rows}
+    tasks = os.path.basename(args.tasks)
+    for folder in earlier_folders(out, {s.folder for s in good}):
+        why = f"its row, line {lines[folder]}, is bad" if folder in lines else f"{tasks} has no row for it"
+        print(f"shaper: note: {os.path.join(out, folder)} holds an earlier run's files, not made from this "
+              f"table ({why}) and not in its answer key; left as it was", file=sys.stderr)
     if bad or failed:
         print(f"shaper: error: {bad + failed} of {bad + len(jobs)} students not written "
               f"({bad} bad rows, {failed} failed)", file=sys.stderr)

@@ -86,6 +86,20 @@ def is_current(job: Job) -> bool:
     return all(os.path.isfile(os.path.join(job.folder, name)) for name in expected_files(job))
 
 
+def earlier_folders(out: str, made: set[str]) -> list[str]:
+    """The folders in ``out`` that an earlier run made (they hold a stamp) and this one did
+    not (``made``: the folders of this table's good rows): a student whose row is now bad
+    or gone. They are left as they were, complete but from other data and in no answer key
+    of this run, so the run names them; the teacher found a bad row's folder from the run
+    before, whole and stamped, beside the new ones and nothing said which was which."""
+    try:
+        entries = list(os.scandir(out))
+    except OSError:
+        return []
+    return sorted(e.name for e in entries if e.name not in made and e.is_dir(follow_symlinks=False)
+                  and os.path.isfile(os.path.join(e.path, STAMP_FILE)))
+
+
 _LANGUAGE: list[str] = []
 
 

@@ -1,0 +1,44 @@
+"""A rerun of ``shaper class`` into a folder of an earlier run: a student whose row is now
+bad, or gone from the table, keeps the earlier run's folder, whole and stamped, beside the
+new ones; the run names each such folder (its files are not this table's and not in this
+answer key) and leaves it, and a folder the teacher made is not named."""
+from __future__ import annotations
+
+from cli_runner import shaper_in_process
+from shaperapp.course.class_run import STAMP_FILE, earlier_folders
+
+
+def _earlier(folder, name):
+    (folder / name).mkdir(parents=True)
+    (folder / name / STAMP_FILE).write_text("an earlier run's\n")
+    (folder / name / "00-report.pdf").write_text("an earlier run's report")
+
+
+def test_an_earlier_runs_folder_of_a_bad_or_gone_row_is_named_and_left(tmp_path):
+    out = tmp_path / "class"
+    _earlier(out, "2-bad")
+    _earlier(out, "3-gone")
+    (out / "notes").mkdir()                          # the teacher's: no stamp
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text("student,student-number,crank,K,stroke\nbad,2,100,0.9,300\n", encoding="utf-8")
+    status, out_text, err = shaper_in_process("class", "--tasks", tasks, "-o", out)
+    assert status == 2 and out_text == ""
+    lines = err.splitlines()
+    assert lines[0] == "shaper: error: tasks.csv line 2, column K: must be > 1 and ≤ 5 (got 0.9)"
+    assert lines[1] == (f"shaper: note: {out / '2-bad'} holds an earlier run's files, not made from this table "
+                        "(its row, line 2, is bad) and not in its answer key; left as it was")
+    assert lines[2] == (f"shaper: note: {out / '3-gone'} holds an earlier run's files, not made from this table "
+                        "(tasks.csv has no row for it) and not in its answer key; left as it was")
+    assert lines[3].startswith("shaper: error: 1 of 1 students not written") and len(lines) == 4
+    assert (out / "2-bad" / "00-report.pdf").read_text() == "an earlier run's report"
+    assert sorted(p.name for p in out.iterdir()) == ["2-bad", "3-gone", "notes"]
+
+
+def test_only_stamped_folders_other_than_this_runs_are_earlier(tmp_path):
+    _earlier(tmp_path, "1-made")
+    _earlier(tmp_path, "2-old")
+    (tmp_path / "3-mine").mkdir()
+    (tmp_path / "4-file").write_text("")
+    (tmp_path / "5-link").symlink_to(tmp_path / "2-old")
+    assert earlier_folders(str(tmp_path), {"1-made"}) == ["2-old"]
+    assert earlier_folders(str(tmp_path / "missing"), set()) == []
