@@ -551,6 +551,14 @@
         <source>empty; the first row names the columns (student, student-number, …)</source>
         <translation>为空；第一行须为列名（student、student-number 等）</translation>
     </message>
+    <message>
+        <source>%1 from --base</source>
+        <translation>%1，取自 --base 文件</translation>
+    </message>
+    <message>
+        <source>%1 from the design file</source>
+        <translation>%1，取自设计文件</translation>
+    </message>
 </context>
 <context>
     <name>ClassSheets</name>

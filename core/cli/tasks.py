@@ -277,6 +277,13 @@ def _located(where: str, message: str, given: dict[str, str]) -> str:
         column = given[found.group(1)]
         return (f"{where}, column {column}{part}: {found.group(3)}" if column
                 else f"{where}: --base{part}: {found.group(3)}")
+    if found and "--design" in given and not found.group(2):
+        # a value the row left to its design file ("--stroke: must be > 300.007 mm …" for
+        # the base's stroke under the row's crank and K): named as the column that sets it,
+        # the value as the file's (the Class dialog translates "(got …)" and keeps its value)
+        source = "the design file" if given["--design"] else "--base"
+        what = re.sub(r"\(got ([^()]*)\)$", rf"(got \1 from {source})", found.group(3))
+        return f"{where}, column {found.group(1)[2:]}: {what}"
     return f"{where}: {message}"
 
 

@@ -92,8 +92,21 @@ def _what(text: str) -> str:
     got = _GOT.match(text)
     body = allowed_text(got.group(1) if got else text, _PATTERNS, _templates())
     if got:
-        body = translate("ClassMessages", "%1 (got %2)").replace("%1", body).replace("%2", got.group(2))
+        body = translate("ClassMessages", "%1 (got %2)").replace("%1", body).replace("%2", _value(got.group(2)))
     return body
+
+
+_FROM = re.compile(r"^(.*) from (--base|the design file)$", re.S)
+
+
+def _value(text: str) -> str:
+    """A value typed, or one the row left to its design file ("300 from --base")."""
+    found = _FROM.match(text)
+    if found is None:
+        return text
+    template = (translate("ClassMessages", "%1 from --base") if found.group(2) == "--base"
+                else translate("ClassMessages", "%1 from the design file"))
+    return template.replace("%1", found.group(1))
 
 
 def table_message(text: str) -> str:

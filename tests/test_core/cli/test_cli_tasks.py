@@ -348,3 +348,19 @@ def test_a_rotor_cell_gives_every_rotating_part_it_names(tmp_path, base):
     assert rotors[0] == [(0.5, 1.0), (0.02, pytest.approx(40 / 13, rel=1e-15))]
     assert rotors[1] == [(0.5, 1.0)]
     assert students[2].error.startswith("tasks.csv line 4, column rotor: must be J:RATIO") and "(got x)" in students[2].error
+
+
+def test_a_value_left_to_the_base_is_named_as_the_column_that_sets_it(tmp_path, base):
+    """A row's crank and K under the base's stroke of 300 mm, too short for them: the line
+    named '--stroke', an option the teacher never typed and no column of the table; it
+    names the column stroke and whose value it was (the Class dialog's translation reads
+    the line's column and its "(got …)"). Its advice, typed into that column as
+    printed, passes."""
+    import re
+    lines = ["student,student-number,crank,K", "a,1,119,1.48"]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    error = students[0].error
+    assert error.startswith("tasks.csv line 2, column stroke: must be > ") and error.endswith("(got 300 from --base)")
+    bound = re.search(r"must be > ([\d.]+) mm", error).group(1)
+    fixed, _ = read_tasks(table(tmp_path, ["student,student-number,crank,K,stroke", f"a,1,119,1.48,{bound}"]), base)
+    assert fixed[0].error == "" and fixed[0].document["spec"]["stroke"] == float(bound)
