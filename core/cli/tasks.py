@@ -199,7 +199,33 @@ def _student(name: str, line: int, header: list[str], cells: list[str], parser: 
     except FileFormatError as exc:
         return _with_error(blank, f"{where}, column design: {exc}" if row.get("design")
                            else f"{where}: --base: {exc}")
+    lacking = _lacking(document, "the design file" if row.get("design") else "--base")
+    if lacking:
+        return _with_error(blank, f"{where}: {lacking}")
     return Student(line, student, number, blank.group, folder, document)
+
+
+# What a course design needs of the design file (core.course_design.plan.PARTS's keys), as
+# the table's columns that give it.
+_PART_COLUMNS = {"rpm": "the speeds (column rpm)",
+                 "forces": "the loads (columns lever-weight, lever-inertia, ram-weight, cut-force …)",
+                 "cam": "the feed cam (columns arm, swing, pressure, rise, dwell, return)",
+                 "gear": "the gear pair (columns z1, z2, module)"}
+
+
+def _lacking(document: dict[str, Any], source: str) -> str:
+    """'' or why the row's design cannot make the course design: the parts its files need
+    that neither the row nor its design file gives. Without this the row passed, its
+    student failed when the report was written ('CourseError: --design: design.shaper.json
+    has no "forces" …', a file the teacher never named) and left a folder holding only
+    its design file, and the task sheets were printed for students who got nothing."""
+    from core.course_design.plan import missing_parts
+    missing = [key for key, _ in missing_parts(document.keys())]
+    if not missing:
+        return ""
+    parts = [_PART_COLUMNS.get(key, key) for key in missing]
+    listed = parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
+    return f"lacks {listed}, which the course design needs; give them as columns or in {source}"
 
 
 class _CellError(ValueError):

@@ -364,3 +364,25 @@ def test_a_value_left_to_the_base_is_named_as_the_column_that_sets_it(tmp_path, 
     bound = re.search(r"must be > ([\d.]+) mm", error).group(1)
     fixed, _ = read_tasks(table(tmp_path, ["student,student-number,crank,K,stroke", f"a,1,119,1.48,{bound}"]), base)
     assert fixed[0].error == "" and fixed[0].document["spec"]["stroke"] == float(bound)
+
+
+def test_a_row_without_the_parts_of_a_course_design_is_bad_and_its_advice_helps(tmp_path):
+    """A table without --base whose rows give the linkage only: each row passed, each
+    student then failed ('1-a: CourseError: --design: design.shaper.json has no "forces"
+    …', a file the teacher never named), left a folder holding only its design file, and
+    the task sheets were printed for them. The row is bad, named by its line with the
+    columns to add; the row with those columns passes."""
+    lines = ["student,student-number,crank,K,stroke", "a,1,100,1.4,300"]
+    students, _ = read_tasks(table(tmp_path, lines), None)
+    assert students[0].error == (
+        "tasks.csv line 2: lacks the loads (columns lever-weight, lever-inertia, ram-weight, cut-force …), the feed "
+        "cam (columns arm, swing, pressure, rise, dwell, return) and the gear pair (columns z1, z2, module), which "
+        "the course design needs; give them as columns or in --base")
+    columns = "lever-weight,lever-inertia,ram-weight,cut-force,arm,swing,pressure,rise,dwell,return,z1,z2,module"
+    fixed = [f"{lines[0]},{columns}", f"{lines[1]},200,1.1,700,7000,125,15,40,75,10,75,13,40,6"]
+    students, _ = read_tasks(table(tmp_path, fixed), None)
+    assert students[0].error == "" and {"forces", "cam", "gear"} <= set(students[0].document)
+    only_gear = [f"{lines[0]},{columns}", f"{lines[1]},200,1.1,700,7000,125,15,40,75,10,75,,,"]
+    students, _ = read_tasks(table(tmp_path, only_gear), None)
+    assert students[0].error.endswith("lacks the gear pair (columns z1, z2, module), which the course design "
+                                      "needs; give them as columns or in --base")
