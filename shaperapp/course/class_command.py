@@ -95,6 +95,12 @@ def run(args: argparse.Namespace) -> int:
         os.makedirs(out, exist_ok=True)
     except OSError as exc:
         raise OutputError(f"--output: cannot make {out}: {exc.strerror or exc}") from None
+    from .class_run import ClassBusy, lock_class
+    try:
+        held = lock_class(out) if any(not s.error for s in students) else None
+    except ClassBusy:
+        raise OutputError(f"--output: another 'shaper class' is writing into {out}; let it finish, "
+                          "then run this one") from None
     if encoding != "UTF-8":
         print(f"shaper: note: {os.path.basename(args.tasks)} read as {encoding}", file=sys.stderr)
     bad = [s for s in students if s.error]
@@ -106,7 +112,11 @@ def run(args: argparse.Namespace) -> int:
                 title or s.folder, date, {"student": s.name, "number": s.number, "group": s.group,
                                           "school": school, "supervisor": supervisor}, cad_font)
             for i, s in enumerate(good)]
-    return _run(args, out, good, jobs, bad)
+    try:
+        return _run(args, out, good, jobs, bad)
+    finally:
+        if held is not None:
+            os.close(held)
 
 
 def _run(args, out, good, jobs, bad_rows) -> int:

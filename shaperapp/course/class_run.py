@@ -86,6 +86,36 @@ def is_current(job: Job) -> bool:
     return all(os.path.isfile(os.path.join(job.folder, name)) for name in expected_files(job))
 
 
+class ClassBusy(RuntimeError):
+    """Another ``shaper class`` is writing into the same folder."""
+
+
+def lock_class(out: str) -> int | None:
+    """Hold the folder ``out`` for this run: an exclusive ``flock`` on the folder itself
+    (no file left in it), which the system drops when the process ends, a kill included;
+    ClassBusy if another run holds it. Returns the descriptor to close at the end. Two
+    runs into one folder at once wrote each other's students (a rerun with a changed
+    table and the first run, still going): the first run's answer key listed the second
+    run's crank for a student its own table gave another. None where there is no
+    ``flock`` (Windows) or the folder cannot be opened (its writes then fail by name)."""
+    try:
+        import fcntl
+    except ImportError:
+        return None
+    try:
+        handle = os.open(out, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    except OSError:
+        return None
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        os.close(handle)
+        raise ClassBusy(out) from None
+    except OSError:                 # a file system without locks: not held
+        pass
+    return handle
+
+
 def earlier_folders(out: str, made: set[str]) -> list[str]:
     """The folders in ``out`` that an earlier run made (they hold a stamp) and this one did
     not (``made``: the folders of this table's good rows): a student whose row is now bad

@@ -4,6 +4,8 @@ new ones; the run names each such folder (its files are not this table's and not
 answer key) and leaves it, and a folder the teacher made is not named."""
 from __future__ import annotations
 
+import os
+
 from cli_runner import shaper_in_process
 from shaperapp.course.class_run import STAMP_FILE, earlier_folders
 
@@ -42,3 +44,27 @@ def test_only_stamped_folders_other_than_this_runs_are_earlier(tmp_path):
     (tmp_path / "5-link").symlink_to(tmp_path / "2-old")
     assert earlier_folders(str(tmp_path), {"1-made"}) == ["2-old"]
     assert earlier_folders(str(tmp_path / "missing"), set()) == []
+
+
+def test_a_second_run_into_a_folder_being_written_is_refused_before_it_writes(tmp_path):
+    """Two runs into one folder at once (a rerun with a changed table started while the
+    first still ran) wrote each other's students: the first run's answer key gave the
+    second run's crank for a student its own table gave another. The folder is held by
+    the run writing it (a lock the system drops when that process ends, a kill too); a
+    second run is one line, exit 2, and writes nothing."""
+    import fcntl
+    out = tmp_path / "class"
+    out.mkdir()
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text("student,student-number,crank,K,stroke,lever-weight,lever-inertia,ram-weight,cut-force,arm,"
+                     "swing,pressure,rise,dwell,return,z1,z2,module\n"
+                     "a,1,100,1.4,300,200,1.1,700,7000,125,15,40,75,10,75,13,40,6\n", encoding="utf-8")
+    first = os.open(out, os.O_RDONLY)                  # the run writing the folder holds it
+    try:
+        fcntl.flock(first, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        status, text, err = shaper_in_process("class", "--tasks", tasks, "-o", out)
+    finally:
+        os.close(first)
+    assert status == 2 and text == ""
+    assert err == f"shaper: error: --output: another 'shaper class' is writing into {out}; let it finish, then run this one\n"
+    assert list(out.iterdir()) == []
