@@ -40,6 +40,9 @@ TRUE_WORDS, FALSE_WORDS = {"1", "true", "yes", "y", "x", "是"}, {"0", "false", 
 _UNSAFE = re.compile(r'[<>:"/\\|?*\x00-\x1f\x7f]|\.\.+')
 _RESERVED = {"CON", "PRN", "AUX", "NUL", *(f"COM{i}" for i in range(1, 10)), *(f"LPT{i}" for i in range(1, 10))}
 MAX_FOLDER_BYTES = 120
+# A student number as Excel writes a long number it holds as a number ("2.02301E+11"): the
+# digits are gone, and every printout, the folder and the answer key would carry it so.
+_SHORTENED = re.compile(r"[0-9](?:\.[0-9]+)?E\+[0-9]+", re.I)
 
 
 class TableError(ValueError):
@@ -184,6 +187,9 @@ def _student(name: str, line: int, header: list[str], cells: list[str], parser: 
     for column, field in (("student", "student"), ("student-number", "number")):
         if not values[field]:
             return _with_error(blank, f"{where}, column {column}: empty; every student needs one")
+    if _SHORTENED.fullmatch(number):
+        return _with_error(blank, f"{where}, column student-number: {number} is a number a spreadsheet wrote "
+                           "short, its digits lost; format the column as text and save the table again")
     try:
         argv, given = _argv(where, row, actions, base, here)
         args = parser.parse_args(argv)
@@ -332,6 +338,8 @@ def _check_unique(name: str, students: list[Student]) -> None:
     numbers: dict[str, int] = {}
     folders: dict[str, int] = {}
     for s in students:
+        if _SHORTENED.fullmatch(s.number):     # its own row's error says why (two are alike)
+            continue
         if s.number and s.number in numbers:
             raise TableError(f"{name} line {s.line}, column student-number: {s.number} is also on line "
                              f"{numbers[s.number]}; each student needs a number of their own")

@@ -386,3 +386,17 @@ def test_a_row_without_the_parts_of_a_course_design_is_bad_and_its_advice_helps(
     students, _ = read_tasks(table(tmp_path, only_gear), None)
     assert students[0].error.endswith("lacks the gear pair (columns z1, z2, module), which the course design "
                                       "needs; give them as columns or in --base")
+
+
+def test_a_student_number_a_spreadsheet_shortened_is_refused_by_name(tmp_path, base):
+    """Excel keeps a 12-digit student number typed into a number column as 2.02301E+11 and
+    saves it so in its CSV: the digits are gone. It passed as the number, so the folder,
+    the cover, every title block and the answer key said 2.02301E+11 (and two such
+    students were told they share one number). The row is bad, saying why and what to do;
+    a number that merely holds an E stays a number."""
+    lines = ["student,student-number", "a,2.02301E+11", "b,2.02301e+11", "c,20230101E1", "d,S1E+2", "e,2.02301E+11"]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    assert students[0].error == ("tasks.csv line 2, column student-number: 2.02301E+11 is a number a spreadsheet "
+                                 "wrote short, its digits lost; format the column as text and save the table again")
+    assert students[1].error.startswith("tasks.csv line 3, column student-number: 2.02301e+11 is a number")
+    assert [s.error for s in students[2:4]] == ["", ""] and students[4].error.startswith("tasks.csv line 6, column")
