@@ -516,6 +516,10 @@
         <translation>文件夹 %1 与第 %2 行的相同；请给其中一人换一个学号，且不只是大小写或文件夹名不能含的字符不同</translation>
     </message>
     <message>
+        <source>%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again</source>
+        <translation>%1 是电子表格缩写了的数字，已丢失数位；请把该列设为文本格式后重新保存表格</translation>
+    </message>
+    <message>
         <source>has no name</source>
         <translation>没有列名</translation>
     </message>

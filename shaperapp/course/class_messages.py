@@ -37,6 +37,9 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      r"and the characters a folder name cannot hold$",
      "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and "
      "the characters a folder name cannot hold"),
+    (r"(\S+) is a number a spreadsheet wrote short, its digits lost; format the column as text and save the "
+     r"table again$",
+     "%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again"),
     (r"has no name$", "has no name"),
     (r"named twice$", "named twice"),
     (r"not a column; did you mean (\S+)\?$", "not a column; did you mean %1?"),
@@ -70,6 +73,8 @@ def _templates() -> dict[str, str]:
             translate("ClassMessages", "%1 is also on line %2; each student needs a number of their own"),
         "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold":
             translate("ClassMessages", "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold"),
+        "%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again":
+            translate("ClassMessages", "%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again"),
         "has no name": translate("ClassMessages", "has no name"),
         "named twice": translate("ClassMessages", "named twice"),
         "not a column; did you mean %1?": translate("ClassMessages", "not a column; did you mean %1?"),

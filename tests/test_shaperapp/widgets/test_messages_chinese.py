@@ -108,3 +108,13 @@ def test_a_class_rows_value_from_the_base_is_said_in_chinese(chinese):
     assert mine.endswith("（输入的是 0.9）")
     theirs = table_message("tasks.csv line 3, column K: must be > 1 and ≤ 5 (got 0.9 from the design file)")
     assert theirs.endswith("（输入的是 0.9，取自设计文件）")
+
+
+def test_a_class_rows_shortened_number_is_said_in_chinese(chinese):
+    """The refusal of a student number a spreadsheet wrote short reaches the Chinese Class
+    dialog in Chinese, the number kept as it was read."""
+    from shaperapp.course.class_messages import table_message
+    text = table_message("tasks.csv line 2, column student-number: 2.02301E+11 is a number a spreadsheet wrote "
+                         "short, its digits lost; format the column as text and save the table again")
+    assert text == ("tasks.csv 第 2 行，student-number 列：2.02301E+11 是电子表格缩写了的数字，已丢失数位；"
+                    "请把该列设为文本格式后重新保存表格")
