@@ -276,7 +276,11 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
     """The answer key as A4-landscape pages: each of ``tables`` (its header rows in the index
     notation, widths in mm, rows of texts; all with as many rows) stacked on every page,
     the same rows of each, as many as fit; each page titled and numbered. ``plain``: the
-    columns of a user's words (a student's name), taken as they are."""
+    columns of a user's words (a student's name), taken as they are. A row whose first
+    cell is empty continues the row above (a student's next speed); where one starts a
+    page it repeats that row's first cell and ``plain`` cells, so that the page says whose
+    figures they are (a student of 16 speeds ran over three pages, the last two with
+    figures under no name)."""
     p = A4_LANDSCAPE
     left, bottom, right, top = p.border
     row_h, gap = 6.0, 6.0
@@ -294,12 +298,23 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
         for header, widths, rows in tables:
             widths = fitted_widths(header, widths, rows, plain, right - left - 4.0)
             scale = min(1.0, (right - left - 4.0) / sum(widths))
-            chunk = [*map(list, header), *rows[at:at + per_page]]
+            chunk = [*map(list, header), *_carried(rows, at, (0, *plain)), *rows[at + 1:at + per_page]]
             items += table((left + 2.0, y), [w * scale for w in widths], chunk, row_h, 2.5, plain=plain,
                            header_rows=len(header))
             y -= row_h * len(chunk) + gap
         pages.append(Sheet(p, tuple(items)))
     return pages
+
+
+def _carried(rows: Sequence[Sequence[str]], at: int, who: Sequence[int]) -> list[list[str]]:
+    """Row ``at`` (none past the end), with the ``who`` cells of the row it continues."""
+    if at >= len(rows):
+        return []
+    row = list(rows[at])
+    owner = next((r for r in reversed(rows[:at]) if r[0]), None) if not row[0] else None
+    for column in who if owner is not None else ():
+        row[column] = owner[column]
+    return [row]
 
 
 PLAIN_MOST = 60.0
