@@ -90,7 +90,7 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
     """The student's data set: (quantity, symbol in the task book's notation, value, unit)."""
     spec, forces = doc["spec"], doc.get("forces") or {}
     w = lambda word: _w(labels, word)      # noqa: E731
-    rows = [[w("Crank speed"), "n_2", " / ".join(_n(r) for r in doc["rpm"]), "r/min"]]
+    rows = _listed([w("Crank speed"), "n_2", "", "r/min"], [_n(r) for r in doc["rpm"]], " / ")
     if spec["mode"] == "dimensions":
         rows += [[w("Frame O_2O_4"), "l_O_2_O_4", _n(spec["frame"]), "mm"],
                  [w("Crank O_2A"), "l_O_2_A", _n(spec["crank"]), "mm"],
@@ -177,9 +177,30 @@ def _flywheel_rows(forces: Mapping[str, Any], w) -> list[list[str]]:
         rows.append([w("Gravity"), "g", w("not counted"), ""])
     rotors = forces.get("rotors") or []
     if rotors:
-        rows.append([w("Other rotating parts"), "J, ω/ω_2",
-                     "; ".join(f"{_n(r['J_kg_m2'])}, {_n(r['speed_ratio'])}" for r in rotors), "kg·m², —"])
+        rows += _listed([w("Other rotating parts"), "J, ω/ω_2", "", "kg·m², —"],
+                        [f"{_n(r['J_kg_m2'])}, {_n(r['speed_ratio'])}" for r in rotors], "; ")
     return rows
+
+
+COLUMNS_MM = (70.0, 28.0, 45.0, 24.0)
+"""The data set's columns: quantity, symbol, value, unit."""
+
+
+def _listed(row: list[str], values: Sequence[str], separator: str) -> list[list[str]]:
+    """``row`` with ``values`` in its value cell, as many rows as they need to print whole
+    at the table's smallest text (2.5 mm), the later ones with the value alone: the speeds
+    of a student given many were cut ('20 / 25 / 30 / 35 / 40 / …' of 16), so the task
+    sheet no longer said which speeds to compute."""
+    room = COLUMNS_MM[2] - 3.0
+    lines: list[str] = []
+    for value in values:
+        joined = f"{lines[-1]}{separator}{value}" if lines else value
+        if lines and text_width(joined, 2.5) <= room:
+            lines[-1] = joined
+        else:
+            lines.append(value)
+    first = [*row[:2], lines[0] if lines else "", *row[3:]]
+    return [first] + [["", "", line, ""] for line in lines[1:]]
 
 
 def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence[str],
@@ -210,7 +231,7 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y = box[1] - 6.0
     items.append(Text(_w(labels, "Data set"), (left + 4.0, y), 3.5, "lm"))
     height = min(6.0, (y - 4.0 - bottom - 12.0 - 6.0 * len(deliver)) / len(rows))
-    items += table((left + 4.0, y - 4.0), (70.0, 28.0, 45.0, 24.0), rows, height, 3.5 if height >= 6 else 2.5,
+    items += table((left + 4.0, y - 4.0), COLUMNS_MM, rows, height, 3.5 if height >= 6 else 2.5,
                    aligns="lccc")
     y = y - 4.0 - height * len(rows) - 7.0
     items.append(Text(_w(labels, "Deliver"), (left + 4.0, y), 3.5, "lm"))
