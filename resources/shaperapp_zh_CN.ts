@@ -727,6 +727,14 @@
         <translation>未通过的校核</translation>
     </message>
     <message>
+        <source>Rod side: C ahead of B while cutting</source>
+        <translation>连杆位置（切削时 C 在 B 之前）</translation>
+    </message>
+    <message>
+        <source>leading</source>
+        <translation>前置</translation>
+    </message>
+    <message>
         <source>speed</source>
         <translation>转速</translation>
     </message>

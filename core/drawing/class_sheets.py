@@ -47,7 +47,7 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "sine (cycloidal)", "3-4-5 polynomial", "Allowed pressure angle, return", "Roller radius",
               "Base radius", "Centre distance of the cam", "Hub radius", "Pivot boss radius", "Least clearance",
               "Shift factors", "Centre distance", "Pressure angle", "Addendum", "Clearance", "Least tip thickness",
-              "Least contact ratio")
+              "Least contact ratio", "Rod side: C ahead of B while cutting", "leading")
 
 CHECK_WORDS = {"cam_pressure_angle": "cam pressure angle", "undercut1": "undercut 1", "undercut2": "undercut 2",
                "tip1": "tip 1", "tip2": "tip 2", "contact": "contact ratio", "interference1": "interference 1",
@@ -102,6 +102,8 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
     if design.rod is not None:
         rod = f"{_n(spec['rod_ratio'])} l_O_4_B" if spec["rod_input"] == "ratio" else _n(spec["rod_length"])
         rows.append([w("Rod BC"), "l_BC", rod, "mm"])
+        if spec.get("rod_side") == "leading":      # the answer key's motion follows it; trailing is the book's
+            rows.append([w("Rod side: C ahead of B while cutting"), "", w("leading"), ""])
     rows.append([w("Guide line"), "h", figure_text("length", design.guide_above_crank), "mm"])
     if forces:
         cg = forces.get("lever_cg_mm")

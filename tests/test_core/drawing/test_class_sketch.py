@@ -139,6 +139,18 @@ def test_every_speed_and_rotating_part_prints_whole():
         (t.box()[0] + t.box()[2]) / 2 - centre) < 1e-6)
 
 
+@pytest.mark.parametrize("side", ["trailing", "leading"])
+def test_a_leading_rod_is_said_on_the_task_sheet(side):
+    """The rod's side sets the motion the answer key gives (v, a, M, J_F), and the data set
+    did not say it: a leading rod's student read the book's trailing layout's data. The
+    sheet says a leading rod; the book's trailing one goes without saying."""
+    doc, _ = _doc(0.3)
+    doc = {**doc, "spec": {**doc["spec"], "rod_side": side}}
+    texts = [t.text for t in task_sheet(doc, {"student": "x"}, [], {}).items if isinstance(t, Text)]
+    assert ("Rod side: C ahead of B while cutting" in texts) == (side == "leading")
+    assert ("leading" in texts) == (side == "leading")
+
+
 # 方案 I–III of the task book (l_O2A, l_O2O4, l_O4B, l_BC/l_O4B) and a block design
 TASK_BOOK = [(110.0, 380.0, 540.0, 0.25), (90.0, 350.0, 580.0, 0.3), (110.0, 430.0, 810.0, 0.36),
              (90.0, 350.0, 580.0, None)]
