@@ -93,8 +93,11 @@ def run(args: argparse.Namespace) -> int:
     out = args.output
     try:
         os.makedirs(out, exist_ok=True)
-    except OSError as exc:
-        raise OutputError(f"--output: cannot make {out}: {exc.strerror or exc}") from None
+    except FileExistsError:     # a file of that name ('File exists' said nothing of a folder)
+        raise OutputError(f"--output: cannot write into {out}: it is not a folder") from None
+    except OSError as exc:      # in the plain words of every other output ('File name too long')
+        from core.base.errors import os_reason
+        raise OutputError(f"--output: cannot make {out}: {os_reason(exc)}") from None
     from .class_run import ClassBusy, lock_class
     try:
         held = lock_class(out) if any(not s.error for s in students) else None

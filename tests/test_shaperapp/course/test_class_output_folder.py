@@ -1,7 +1,8 @@
-"""A rerun of ``shaper class`` into a folder of an earlier run: a student whose row is now
-bad, or gone from the table, keeps the earlier run's folder, whole and stamped, beside the
-new ones; the run names each such folder (its files are not this table's and not in this
-answer key) and leaves it, and a folder the teacher made is not named."""
+"""``shaper class``'s output folder: a rerun into a folder of an earlier run names the
+folders it does not make (a student whose row is now bad or gone keeps the earlier run's
+folder, whole and stamped, beside the new ones) and leaves them; a second run into a
+folder being written is refused; an output that cannot be a folder is said in the plain
+words of every other output."""
 from __future__ import annotations
 
 import os
@@ -68,3 +69,21 @@ def test_a_second_run_into_a_folder_being_written_is_refused_before_it_writes(tm
     assert status == 2 and text == ""
     assert err == f"shaper: error: --output: another 'shaper class' is writing into {out}; let it finish, then run this one\n"
     assert list(out.iterdir()) == []
+
+
+def test_an_output_that_cannot_be_a_folder_is_said_in_plain_words(tmp_path):
+    """-o naming a file read 'cannot make F: File exists', and a name too long 'File name
+    too long': the system's words, not those of every other output ('it is not a folder',
+    'the name is too long', as shaper course says them)."""
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text("student,student-number,crank,K,stroke,lever-weight,lever-inertia,ram-weight,cut-force,arm,"
+                     "swing,pressure,rise,dwell,return,z1,z2,module\n"
+                     "a,1,100,1.4,300,200,1.1,700,7000,125,15,40,75,10,75,13,40,6\n", encoding="utf-8")
+    a_file = tmp_path / "afile"
+    a_file.write_text("mine")
+    status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", a_file)
+    assert status == 2 and err == f"shaper: error: --output: cannot write into {a_file}: it is not a folder\n"
+    long = tmp_path / ("d" * 300)
+    status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", long)
+    assert status == 2 and err == f"shaper: error: --output: cannot make {long}: the name is too long\n"
+    assert a_file.read_text() == "mine"
