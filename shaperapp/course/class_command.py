@@ -138,6 +138,9 @@ def _run(args, out, good, jobs, bad_rows) -> int:
         entries[result.index] = result.entry
         state = "up to date" if result.skipped else "written"
         print(f"{job.name}  {state}  {result.seconds:.1f} s", flush=True)
+        if result.removed:
+            print(f"shaper: note: {job.folder}: removed {', '.join(result.removed)} of an earlier run, drawn from "
+                  "its data; this run writes no DXF (--dxf)", file=sys.stderr, flush=True)
     done = sorted(entries)
     if good:        # a table of bad rows only has no task sheet nor answer to write
         _class_files(args, out, good, jobs, [entries[i] for i in done], [good[i].group for i in done])
