@@ -66,8 +66,13 @@ def test_a_run_without_dxf_removes_an_earlier_runs_dxfs_and_says_so(tmp_path, mo
     run's DXFs, drawn for the earlier crank, beside the new PDFs, and was stamped current.
     The DXFs of the course's names go, and the result names them (the command's note); a
     file of another name stays. (The course's writing is left out here: only the folder.)"""
+    import shaperapp.course.class_run as class_run
     import shaperapp.course.write as write
+    import shaperapp.report.kept_views as kept_views
     monkeypatch.setattr(write, "write_course", lambda *a, **k: iter(()))
+    # nor Qt: a report's plot views kept in English here served a later test's Chinese report
+    monkeypatch.setattr(class_run, "_language", lambda lang: lang)
+    monkeypatch.setattr(kept_views, "keep_plot_views", lambda: None)
     folder = tmp_path / "S01-x"
     folder.mkdir()
     job = Job(0, str(folder), "S01-x", DESIGN.read_text(encoding="utf-8"), "en", "A3", False, "t", "d",
