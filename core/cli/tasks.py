@@ -31,7 +31,8 @@ from .common import Parser, UsageError, design_error_text, one_line
 
 MAX_TABLE_BYTES = 5_000_000
 MAX_STUDENTS = 1000
-"""A class of more is refused whole, before any row is read (about an hour per 500 on 2 cores)."""
+"""A class of more is refused whole, before any row is read (500 take about 9 minutes on 2
+cores: 40 students of 方案 I's data, A3, in 41 s with 2 workers at a load of 3, 1 December)."""
 MAX_TEXT = 200
 NAME_COLUMNS = {"student": "student", "student-number": "number", "student_number": "number",
                 "class": "group", "design": "design"}
