@@ -36,6 +36,9 @@ cores: 40 students of 方案 I's data, A3, in 41 s with 2 workers at a load of 3
 MAX_TEXT = 200
 NAME_COLUMNS = {"student": "student", "student-number": "number", "student_number": "number",
                 "class": "group", "design": "design"}
+# A Chinese teacher's headings of the name columns, answered with the column's name (the
+# table's columns are the command line's words; 学号 was "not a column", with no hint).
+CHINESE_NAMES = {"学生": "student", "姓名": "student", "学号": "student-number", "班级": "class"}
 TRUE_WORDS, FALSE_WORDS = {"1", "true", "yes", "y", "x", "是"}, {"0", "false", "no", "n", "否"}
 # what a file name may not hold on Windows, macOS or Linux (each becomes "_")
 _UNSAFE = re.compile(r'[<>:"/\\|?*\x00-\x1f\x7f]|\.\.+')
@@ -159,7 +162,8 @@ def _check_header(name: str, header: list[str], actions: dict[str, argparse.Acti
             raise TableError(f"{name} line 1, column {column}: named twice")
         seen.add(column)
         if column not in NAME_COLUMNS and column not in actions:
-            match = close_match(column, list(NAME_COLUMNS) + [k for k in actions if "_" not in k])
+            match = CHINESE_NAMES.get(column) or close_match(column, list(NAME_COLUMNS)
+                                                               + [k for k in actions if "_" not in k])
             hint = f"; did you mean {match}?" if match else "; see 'shaper design --help' for the options"
             raise TableError(f"{name} line 1, column {column}: not a column{hint}")
     for required in ("student", "student-number"):

@@ -400,3 +400,19 @@ def test_a_student_number_a_spreadsheet_shortened_is_refused_by_name(tmp_path, b
                                  "wrote short, its digits lost; format the column as text and save the table again")
     assert students[1].error.startswith("tasks.csv line 3, column student-number: 2.02301e+11 is a number")
     assert [s.error for s in students[2:4]] == ["", ""] and students[4].error.startswith("tasks.csv line 6, column")
+
+
+@pytest.mark.parametrize("heading, column", [("学生", "student"), ("姓名", "student"), ("学号", "student-number"),
+                                             ("班级", "class")])
+def test_a_chinese_heading_of_a_name_column_is_told_its_name(tmp_path, base, heading, column):
+    """A Chinese teacher heads the columns 学生, 学号, 班级: refused with no hint ('see shaper
+    design --help', which lists no such column); the refusal names the column to write,
+    and the table with it passes."""
+    headings = {"student": "student", "student-number": "student-number", "class": "class"}
+    headings[column] = heading
+    lines = [",".join(headings.values()) + ",crank", "张三,2021001,机械2101,100"]
+    with pytest.raises(TableError) as refused:
+        read_tasks(table(tmp_path, lines), base)
+    assert str(refused.value) == f"tasks.csv line 1, column {heading}: not a column; did you mean {column}?"
+    fixed = [lines[0].replace(heading, column), lines[1]]
+    assert read_tasks(table(tmp_path, fixed), base)[0][0].error == ""
