@@ -516,6 +516,10 @@
         <translation>文件夹 %1 与第 %2 行的相同；请给其中一人换一个学号，且不只是大小写或文件夹名不能含的字符不同</translation>
     </message>
     <message>
+        <source>%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again</source>
+        <translation>%1 是电子表格缩写了的数字，已丢失数位；请把该列设为文本格式后重新保存表格</translation>
+    </message>
+    <message>
         <source>has no name</source>
         <translation>没有列名</translation>
     </message>
@@ -550,6 +554,14 @@
     <message>
         <source>empty; the first row names the columns (student, student-number, …)</source>
         <translation>为空；第一行须为列名（student、student-number 等）</translation>
+    </message>
+    <message>
+        <source>%1 from --base</source>
+        <translation>%1，取自 --base 文件</translation>
+    </message>
+    <message>
+        <source>%1 from the design file</source>
+        <translation>%1，取自设计文件</translation>
     </message>
 </context>
 <context>
@@ -713,6 +725,14 @@
     <message>
         <source>failed checks</source>
         <translation>未通过的校核</translation>
+    </message>
+    <message>
+        <source>Rod side: C ahead of B while cutting</source>
+        <translation>连杆位置（切削时 C 在 B 之前）</translation>
+    </message>
+    <message>
+        <source>leading</source>
+        <translation>前置</translation>
     </message>
     <message>
         <source>speed</source>

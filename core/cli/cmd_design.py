@@ -91,7 +91,7 @@ def document_from_args(args: argparse.Namespace) -> dict[str, Any]:
     check_file_samples(step, len(rpms))     # before the loads and parts: --step names the fault
     # the design file's own keys are written here; any other key of --design is kept
     extra: dict[str, Any] = {k: v for k, v in base.items() if k not in OWN_KEYS + PART_KEYS}
-    from .loads import loads_given, masses_from_args
+    from .loads import gear_dests, loads_given, masses_from_args
     idle = 0.05
     if loads_given(args):
         masses = masses_from_args(args, design, required=False)
@@ -99,7 +99,7 @@ def document_from_args(args: argparse.Namespace) -> dict[str, Any]:
         idle = masses.idle_fraction
     if _given(args, _cam_dests()) or base.get("cam"):
         extra["cam"] = _cam(args, design, idle)
-    if _given(args, _gear_dests()) or base.get("gear"):
+    if _given(args, gear_dests()) or base.get("gear"):
         from ..gear.file import gear_to_dict
         from .cmd_gear import pair_from_args
         extra["gear"] = gear_to_dict(pair_from_args(args).inputs)
@@ -150,11 +150,6 @@ def _design(spec: Spec, args: argparse.Namespace):
 def _cam_dests() -> tuple[str, ...]:
     from .cmd_cam import OPTIONAL, SHEET
     return tuple(dest for _, dest, _ in SHEET + OPTIONAL) + ("law", "return_law", "phase")
-
-
-def _gear_dests() -> tuple[str, ...]:
-    from .cmd_gear import OPTIONS
-    return tuple(row[1] for row in OPTIONS)
 
 
 def _given(args: argparse.Namespace, dests: tuple[str, ...]) -> bool:

@@ -9,22 +9,26 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Callable
+from typing import Any, Callable
 
 from core.library.open import library_exists
 from core.library.query import QueryError, parse_filter, sort_sql
 
 from core.space.figures import FIGURES_VERSION
 from ..library import Library
+from core.base.figure_text import PRECISION, figure_text
 from core.base.text import terminal_text
 from .common import UsageError, library_path, number, whole_number
 from .output import print_json
 
-LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "{:.4f}"),
-                ("H mm", "stroke_mm", "{:.2f}"), ("θ °", "theta_deg", "{:.3f}"),
-                ("r/min", "rpm", "{:g}"), ("v_work_max m/s", "v_work_max_m_s", "{:.4f}"),
-                ("v_return_max m/s", "v_return_max_m_s", "{:.4f}"), ("a_max m/s²", "a_max_m_s2", "{:.4f}"),
-                ("J_F kg·m²", "flywheel_inertia_kg_m2", "{:.5g}"), ("modified", "modified", ""))
+LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "ratio"),
+                ("H mm", "stroke_mm", "length"), ("θ °", "theta_deg", "angle"),
+                ("r/min", "rpm", "{:g}"), ("v_work_max m/s", "v_work_max_m_s", "speed"),
+                ("v_return_max m/s", "v_return_max_m_s", "speed"), ("a_max m/s²", "a_max_m_s2", "acceleration"),
+                ("J_F kg·m²", "flywheel_inertia_kg_m2", "inertia"), ("modified", "modified", ""))
+"""Each column's head, key and how its figure is written: a kind of core.base.figure_text
+(the one precision every table writes it in: H 312.632 mm and J_F 837.7 kg·m², as the
+answer key and the report print them, not 312.63 and 837.74), else a format."""
 
 
 def filter_help() -> str:
@@ -91,8 +95,7 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         return 0
     cells = [[head for head, _, _ in LIST_COLUMNS]]
     for row in rows:
-        cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else terminal_text(str(row[key]))
-                      for _, key, fmt in LIST_COLUMNS])
+        cells.append([_cell(row[key], fmt) for _, key, fmt in LIST_COLUMNS])
         if row["damaged"]:
             cells[-1][0] += " (damaged)"
     widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
@@ -100,3 +103,11 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         print("  ".join(c.ljust(w) if i in (0, 1, len(r) - 1) else c.rjust(w)
                         for i, (c, w) in enumerate(zip(r, widths))).rstrip())
     return 0
+
+
+def _cell(value: Any, how: str) -> str:
+    if value is None:
+        return "—"
+    if how in PRECISION:
+        return figure_text(how, float(value))
+    return how.format(value) if how else terminal_text(str(value))

@@ -75,8 +75,8 @@ LOAD_OPTIONS = (
 )
 ROTOR_HELP = ("another rotating part reduced to the crank for the flywheel: its inertia J in kg·m² "
               "and its speed over the crank's, J:RATIO (e.g. 0.02:15 for a motor rotor at 15 times "
-              "the crank speed), or J:gear for the pinion shaft of the design file's gear pair "
-              "(ratio z2/z1); repeat for each part. J_F needed = ΔW_max/(ω²δ) − Σ J·RATIO²")
+              "the crank speed), or J:gear for the pinion shaft of the gear pair (ratio z2/z1: the "
+              "design file's, or the one --z1, --z2 … give where the command takes them); repeat for each part. J_F needed = ΔW_max/(ω²δ) − Σ J·RATIO²")
 
 # argparse reads "-1e5" as an unknown option; accept every float spelling as a value.
 _NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)

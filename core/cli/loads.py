@@ -70,7 +70,7 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
         elif mass in changes:           # and a mass the file's weight
             changes[weight] = None
     if getattr(args, "rotors", None):
-        changes["rotors"] = tuple(rotor(text, doc) for text in args.rotors)
+        changes["rotors"] = tuple(rotor(text, doc, args) for text in args.rotors)
     if args.no_gravity:
         changes["gravity"] = False
     if base is None:
@@ -84,16 +84,30 @@ def masses_from_args(args: argparse.Namespace, design: Design, required: bool) -
     return replace(base, **changes)
 
 
-def rotor(text: str, doc: dict[str, Any] | None) -> tuple[float, float]:
-    """One ``--rotor J:RATIO`` (or ``J:gear``, the pinion shaft of the design file's gear
-    pair, z2/z1) as (J kg·m², ω_i/ω2)."""
+def rotor(text: str, doc: dict[str, Any] | None, args: argparse.Namespace | None = None
+          ) -> tuple[float, float]:
+    """One ``--rotor J:RATIO`` (or ``J:gear``, the pinion shaft of the gear pair, z2/z1) as
+    (J kg·m², ω_i/ω2). The gear pair is the one the command designs where it takes gear
+    options (``shaper design``'s --z1, --z2 … over the file's pair, as it writes it), else the
+    design file's: J:gear took the file's pair, 40/13, under a file's --z1 15 --z2 41, and
+    was refused without a file though --z1 and --z2 were given."""
     from core.forces.rotors import rotor_from_text
-    gear = doc.get("gear") if doc is not None else None
-    if gear is None:
-        if text.partition(":")[2].strip().lower() == "gear":
-            raise UsageError(f"--rotor: {text!r} takes the gear pair's ratio, but no --design file "
-                             "with a gear pair was given")
+    if text.partition(":")[2].strip().lower() != "gear":
         return rotor_from_text(text)
-    from ..gear.file import gear_from_dict
-    pair = gear_from_dict(gear)
+    if args is not None and any(getattr(args, dest, None) is not None for dest in gear_dests()):
+        from .cmd_gear import pair_from_args
+        pair = pair_from_args(args).inputs
+    elif doc is not None and doc.get("gear") is not None:
+        from ..gear.file import gear_from_dict
+        pair = gear_from_dict(doc["gear"])
+    else:
+        options = "--z1, --z2 and --module, or " if args is not None and hasattr(args, "z1") else ""
+        raise UsageError(f"--rotor: {text!r} takes the gear pair's ratio, but no gear pair was given "
+                         f"({options}a --design file with one)")
     return rotor_from_text(text, pair.z2 / pair.z1)
+
+
+def gear_dests() -> tuple[str, ...]:
+    """The gear options' names in the parsed arguments (z1, z2, module_mm …)."""
+    from .cmd_gear import OPTIONS
+    return tuple(row[1] for row in OPTIONS)

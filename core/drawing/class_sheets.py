@@ -47,7 +47,7 @@ TASK_WORDS = ("Course design task sheet", "Quick-return mechanism of a shaper", 
               "sine (cycloidal)", "3-4-5 polynomial", "Allowed pressure angle, return", "Roller radius",
               "Base radius", "Centre distance of the cam", "Hub radius", "Pivot boss radius", "Least clearance",
               "Shift factors", "Centre distance", "Pressure angle", "Addendum", "Clearance", "Least tip thickness",
-              "Least contact ratio")
+              "Least contact ratio", "Rod side: C ahead of B while cutting", "leading")
 
 CHECK_WORDS = {"cam_pressure_angle": "cam pressure angle", "undercut1": "undercut 1", "undercut2": "undercut 2",
                "tip1": "tip 1", "tip2": "tip 2", "contact": "contact ratio", "interference1": "interference 1",
@@ -90,7 +90,7 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
     """The student's data set: (quantity, symbol in the task book's notation, value, unit)."""
     spec, forces = doc["spec"], doc.get("forces") or {}
     w = lambda word: _w(labels, word)      # noqa: E731
-    rows = [[w("Crank speed"), "n_2", " / ".join(_n(r) for r in doc["rpm"]), "r/min"]]
+    rows = _listed([w("Crank speed"), "n_2", "", "r/min"], [_n(r) for r in doc["rpm"]], " / ")
     if spec["mode"] == "dimensions":
         rows += [[w("Frame O_2O_4"), "l_O_2_O_4", _n(spec["frame"]), "mm"],
                  [w("Crank O_2A"), "l_O_2_A", _n(spec["crank"]), "mm"],
@@ -102,6 +102,8 @@ def data_rows(doc: Mapping[str, Any], design, labels: Mapping[str, str]) -> list
     if design.rod is not None:
         rod = f"{_n(spec['rod_ratio'])} l_O_4_B" if spec["rod_input"] == "ratio" else _n(spec["rod_length"])
         rows.append([w("Rod BC"), "l_BC", rod, "mm"])
+        if spec.get("rod_side") == "leading":      # the answer key's motion follows it; trailing is the book's
+            rows.append([w("Rod side: C ahead of B while cutting"), "", w("leading"), ""])
     rows.append([w("Guide line"), "h", figure_text("length", design.guide_above_crank), "mm"])
     if forces:
         cg = forces.get("lever_cg_mm")
@@ -177,9 +179,30 @@ def _flywheel_rows(forces: Mapping[str, Any], w) -> list[list[str]]:
         rows.append([w("Gravity"), "g", w("not counted"), ""])
     rotors = forces.get("rotors") or []
     if rotors:
-        rows.append([w("Other rotating parts"), "J, ω/ω_2",
-                     "; ".join(f"{_n(r['J_kg_m2'])}, {_n(r['speed_ratio'])}" for r in rotors), "kg·m², —"])
+        rows += _listed([w("Other rotating parts"), "J, ω/ω_2", "", "kg·m², —"],
+                        [f"{_n(r['J_kg_m2'])}, {_n(r['speed_ratio'])}" for r in rotors], "; ")
     return rows
+
+
+COLUMNS_MM = (70.0, 28.0, 45.0, 24.0)
+"""The data set's columns: quantity, symbol, value, unit."""
+
+
+def _listed(row: list[str], values: Sequence[str], separator: str) -> list[list[str]]:
+    """``row`` with ``values`` in its value cell, as many rows as they need to print whole
+    at the table's smallest text (2.5 mm), the later ones with the value alone: the speeds
+    of a student given many were cut ('20 / 25 / 30 / 35 / 40 / …' of 16), so the task
+    sheet no longer said which speeds to compute."""
+    room = COLUMNS_MM[2] - 3.0
+    lines: list[str] = []
+    for value in values:
+        joined = f"{lines[-1]}{separator}{value}" if lines else value
+        if lines and text_width(joined, 2.5) <= room:
+            lines[-1] = joined
+        else:
+            lines.append(value)
+    first = [*row[:2], lines[0] if lines else "", *row[3:]]
+    return [first] + [["", "", line, ""] for line in lines[1:]]
 
 
 def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence[str],
@@ -196,10 +219,8 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y -= 9.0
     items.append(Text(_w(labels, "Quick-return mechanism of a shaper"), ((left + right) / 2, y), 5.0, "cm"))
     y -= 10.0
-    person = (f"{_w(labels, 'Student')}: {who.get('student', '')}    {_w(labels, 'Number')}: "
-              f"{who.get('number', '')}    {_w(labels, 'Class')}: {who.get('group', '')}")
-    size = fitting_height(person, right - left - 8.0, 3.5)      # a long name: 2.5 mm before it is cut
-    items.append(Text(clipped(person, right - left - 8.0, size), (left + 4.0, y), size, "lm"))
+    person, size = _person(who, labels, right - left - 8.0)
+    items.append(Text(person, (left + 4.0, y), size, "lm"))
     y -= 7.0
     items.append(marked_text(_w(labels, "The mechanism (sketch to scale, crank at 60°)"), (left + 4.0, y), 3.5))
     items.append(Text(f"{_w(labels, 'Date')}: {who.get('date', '')}", (right - 4.0, y), 3.5, "rb"))
@@ -212,13 +233,27 @@ def task_sheet(doc: Mapping[str, Any], who: Mapping[str, str], deliver: Sequence
     y = box[1] - 6.0
     items.append(Text(_w(labels, "Data set"), (left + 4.0, y), 3.5, "lm"))
     height = min(6.0, (y - 4.0 - bottom - 12.0 - 6.0 * len(deliver)) / len(rows))
-    items += table((left + 4.0, y - 4.0), (70.0, 28.0, 45.0, 24.0), rows, height, 3.5 if height >= 6 else 2.5,
+    items += table((left + 4.0, y - 4.0), COLUMNS_MM, rows, height, 3.5 if height >= 6 else 2.5,
                    aligns="lccc")
     y = y - 4.0 - height * len(rows) - 7.0
     items.append(Text(_w(labels, "Deliver"), (left + 4.0, y), 3.5, "lm"))
     for k, title in enumerate(deliver, start=1):
         items.append(Text(f"{k}. {title}", (left + 10.0, y - 5.5 * k), 3.5, "lm"))
     return Sheet(p, tuple(items))
+
+
+def _person(who: Mapping[str, str], labels: Mapping[str, str], room: float) -> tuple[str, float]:
+    """The student's line and its height: 3.5 mm, else 2.5 mm, else the name cut with "…"
+    so that the number and the class still print whole (a name of 17 CJK characters cut
+    them off the line's end, 'Number: 20230…', so the sheet no longer said whose it was);
+    a class too long for what is left is cut last."""
+    name, number, group = who.get("student", ""), who.get("number", ""), who.get("group", "")
+    head = f"{_w(labels, 'Student')}: "
+    tail = f"    {_w(labels, 'Number')}: {number}    {_w(labels, 'Class')}: {group}"
+    size = fitting_height(head + name + tail, room, 3.5)
+    least = text_width("MMMMMMMM…", size)          # a name keeps at least its first few letters
+    name = clipped(name, max(room - text_width(head + tail, size), least), size)
+    return clipped(head + name + tail, room, size), size
 
 
 def _sketch(design, box: tuple[float, float, float, float]) -> list[Item]:
@@ -264,7 +299,11 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
     """The answer key as A4-landscape pages: each of ``tables`` (its header rows in the index
     notation, widths in mm, rows of texts; all with as many rows) stacked on every page,
     the same rows of each, as many as fit; each page titled and numbered. ``plain``: the
-    columns of a user's words (a student's name), taken as they are."""
+    columns of a user's words (a student's name), taken as they are. A row whose first
+    cell is empty continues the row above (a student's next speed); where one starts a
+    page it repeats that row's first cell and ``plain`` cells, so that the page says whose
+    figures they are (a student of 16 speeds ran over three pages, the last two with
+    figures under no name)."""
     p = A4_LANDSCAPE
     left, bottom, right, top = p.border
     row_h, gap = 6.0, 6.0
@@ -282,12 +321,23 @@ def answer_pages(tables: Sequence[tuple[Sequence[Sequence[str]], Sequence[float]
         for header, widths, rows in tables:
             widths = fitted_widths(header, widths, rows, plain, right - left - 4.0)
             scale = min(1.0, (right - left - 4.0) / sum(widths))
-            chunk = [*map(list, header), *rows[at:at + per_page]]
+            chunk = [*map(list, header), *_carried(rows, at, (0, *plain)), *rows[at + 1:at + per_page]]
             items += table((left + 2.0, y), [w * scale for w in widths], chunk, row_h, 2.5, plain=plain,
                            header_rows=len(header))
             y -= row_h * len(chunk) + gap
         pages.append(Sheet(p, tuple(items)))
     return pages
+
+
+def _carried(rows: Sequence[Sequence[str]], at: int, who: Sequence[int]) -> list[list[str]]:
+    """Row ``at`` (none past the end), with the ``who`` cells of the row it continues."""
+    if at >= len(rows):
+        return []
+    row = list(rows[at])
+    owner = next((r for r in reversed(rows[:at]) if r[0]), None) if not row[0] else None
+    for column in who if owner is not None else ():
+        row[column] = owner[column]
+    return [row]
 
 
 PLAIN_MOST = 60.0

@@ -93,8 +93,17 @@ def run(args: argparse.Namespace) -> int:
     out = args.output
     try:
         os.makedirs(out, exist_ok=True)
-    except OSError as exc:
-        raise OutputError(f"--output: cannot make {out}: {exc.strerror or exc}") from None
+    except FileExistsError:     # a file of that name ('File exists' said nothing of a folder)
+        raise OutputError(f"--output: cannot write into {out}: it is not a folder") from None
+    except OSError as exc:      # in the plain words of every other output ('File name too long')
+        from core.base.errors import os_reason
+        raise OutputError(f"--output: cannot make {out}: {os_reason(exc)}") from None
+    from .class_run import ClassBusy, lock_class
+    try:
+        held = lock_class(out) if any(not s.error for s in students) else None
+    except ClassBusy:
+        raise OutputError(f"--output: another 'shaper class' is writing into {out}; let it finish, "
+                          "then run this one") from None
     if encoding != "UTF-8":
         print(f"shaper: note: {os.path.basename(args.tasks)} read as {encoding}", file=sys.stderr)
     bad = [s for s in students if s.error]
@@ -106,11 +115,16 @@ def run(args: argparse.Namespace) -> int:
                 title or s.folder, date, {"student": s.name, "number": s.number, "group": s.group,
                                           "school": school, "supervisor": supervisor}, cad_font)
             for i, s in enumerate(good)]
-    return _run(args, out, good, jobs, len(bad))
+    try:
+        return _run(args, out, good, jobs, bad)
+    finally:
+        if held is not None:
+            os.close(held)
 
 
-def _run(args, out, good, jobs, bad: int) -> int:
-    from .class_run import run_jobs
+def _run(args, out, good, jobs, bad_rows) -> int:
+    from .class_run import earlier_folders, run_jobs
+    bad = len(bad_rows)
     start = time.perf_counter()
     count = workers(args.jobs, len(jobs))
     entries: dict[int, dict] = {}
@@ -124,11 +138,20 @@ def _run(args, out, good, jobs, bad: int) -> int:
         entries[result.index] = result.entry
         state = "up to date" if result.skipped else "written"
         print(f"{job.name}  {state}  {result.seconds:.1f} s", flush=True)
+        if result.removed:
+            print(f"shaper: note: {job.folder}: removed {', '.join(result.removed)} of an earlier run, drawn from "
+                  "its data; this run writes no DXF (--dxf)", file=sys.stderr, flush=True)
     done = sorted(entries)
     if good:        # a table of bad rows only has no task sheet nor answer to write
         _class_files(args, out, good, jobs, [entries[i] for i in done], [good[i].group for i in done])
         print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); "
               f"tasks.pdf and answer-key.pdf, .csv, .json in {out}")
+    lines = {s.folder: s.line for s in bad_rows}
+    tasks = os.path.basename(args.tasks)
+    for folder in earlier_folders(out, {s.folder for s in good}):
+        why = f"its row, line {lines[folder]}, is bad" if folder in lines else f"{tasks} has no row for it"
+        print(f"shaper: note: {os.path.join(out, folder)} holds an earlier run's files, not made from this "
+              f"table ({why}) and not in its answer key; left as it was", file=sys.stderr)
     if bad or failed:
         print(f"shaper: error: {bad + failed} of {bad + len(jobs)} students not written "
               f"({bad} bad rows, {failed} failed)", file=sys.stderr)

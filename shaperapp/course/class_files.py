@@ -44,6 +44,8 @@ def task_labels() -> dict[str, str]:
         "Crank O_2A": translate("ClassSheets", "Crank O_2A"),
         "Lever O_4B": translate("ClassSheets", "Lever O_4B"),
         "Rod BC": translate("ClassSheets", "Rod BC"),
+        "Rod side: C ahead of B while cutting": translate("ClassSheets", "Rod side: C ahead of B while cutting"),
+        "leading": translate("ClassSheets", "leading"),
         "Time ratio": translate("ClassSheets", "Time ratio"),
         "Stroke": translate("ClassSheets", "Stroke"),
         "Lever's centre of mass O_4S_4": translate("ClassSheets", "Lever's centre of mass O_4S_4"),

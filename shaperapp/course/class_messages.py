@@ -37,6 +37,9 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      r"and the characters a folder name cannot hold$",
      "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and "
      "the characters a folder name cannot hold"),
+    (r"(\S+) is a number a spreadsheet wrote short, its digits lost; format the column as text and save the "
+     r"table again$",
+     "%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again"),
     (r"has no name$", "has no name"),
     (r"named twice$", "named twice"),
     (r"not a column; did you mean (\S+)\?$", "not a column; did you mean %1?"),
@@ -70,6 +73,8 @@ def _templates() -> dict[str, str]:
             translate("ClassMessages", "%1 is also on line %2; each student needs a number of their own"),
         "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold":
             translate("ClassMessages", "the folder %1 is also line %2's; give one of them a number that differs in more than letter case and the characters a folder name cannot hold"),
+        "%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again":
+            translate("ClassMessages", "%1 is a number a spreadsheet wrote short, its digits lost; format the column as text and save the table again"),
         "has no name": translate("ClassMessages", "has no name"),
         "named twice": translate("ClassMessages", "named twice"),
         "not a column; did you mean %1?": translate("ClassMessages", "not a column; did you mean %1?"),
@@ -92,8 +97,21 @@ def _what(text: str) -> str:
     got = _GOT.match(text)
     body = allowed_text(got.group(1) if got else text, _PATTERNS, _templates())
     if got:
-        body = translate("ClassMessages", "%1 (got %2)").replace("%1", body).replace("%2", got.group(2))
+        body = translate("ClassMessages", "%1 (got %2)").replace("%1", body).replace("%2", _value(got.group(2)))
     return body
+
+
+_FROM = re.compile(r"^(.*) from (--base|the design file)$", re.S)
+
+
+def _value(text: str) -> str:
+    """A value typed, or one the row left to its design file ("300 from --base")."""
+    found = _FROM.match(text)
+    if found is None:
+        return text
+    template = (translate("ClassMessages", "%1 from --base") if found.group(2) == "--base"
+                else translate("ClassMessages", "%1 from the design file"))
+    return template.replace("%1", found.group(1))
 
 
 def table_message(text: str) -> str:

@@ -53,6 +53,7 @@ class Result:
     entry: dict[str, Any] | None        # the student's answer-key object; None on failure
     error: str = ""
     skipped: bool = False               # complete and current: not written again
+    removed: tuple[str, ...] = ()       # an earlier run's DXFs this run does not make
 
 
 @functools.cache
@@ -86,6 +87,50 @@ def is_current(job: Job) -> bool:
     return all(os.path.isfile(os.path.join(job.folder, name)) for name in expected_files(job))
 
 
+class ClassBusy(RuntimeError):
+    """Another ``shaper class`` is writing into the same folder."""
+
+
+def lock_class(out: str) -> int | None:
+    """Hold the folder ``out`` for this run: an exclusive ``flock`` on the folder itself
+    (no file left in it), which the system drops when the process ends, a kill included;
+    ClassBusy if another run holds it. Returns the descriptor to close at the end. Two
+    runs into one folder at once wrote each other's students (a rerun with a changed
+    table and the first run, still going): the first run's answer key listed the second
+    run's crank for a student its own table gave another. None where there is no
+    ``flock`` (Windows) or the folder cannot be opened (its writes then fail by name)."""
+    try:
+        import fcntl
+    except ImportError:
+        return None
+    try:
+        handle = os.open(out, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    except OSError:
+        return None
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        os.close(handle)
+        raise ClassBusy(out) from None
+    except OSError:                 # a file system without locks: not held
+        pass
+    return handle
+
+
+def earlier_folders(out: str, made: set[str]) -> list[str]:
+    """The folders in ``out`` that an earlier run made (they hold a stamp) and this one did
+    not (``made``: the folders of this table's good rows): a student whose row is now bad
+    or gone. They are left as they were, complete but from other data and in no answer key
+    of this run, so the run names them; the teacher found a bad row's folder from the run
+    before, whole and stamped, beside the new ones and nothing said which was which."""
+    try:
+        entries = list(os.scandir(out))
+    except OSError:
+        return []
+    return sorted(e.name for e in entries if e.name not in made and e.is_dir(follow_symlinks=False)
+                  and os.path.isfile(os.path.join(e.path, STAMP_FILE)))
+
+
 _LANGUAGE: list[str] = []
 
 
@@ -97,8 +142,11 @@ def _language(lang: str) -> str:
     return _LANGUAGE[0]
 
 
-def write_student(job: Job) -> None:
-    """The folder's files, each atomically, the stamp last (OSError names the file)."""
+def write_student(job: Job) -> tuple[str, ...]:
+    """The folder's files, each atomically, the stamp last (OSError names the file); the
+    names of the earlier run's DXFs it removed (a run without --dxf after one with it left
+    them beside the new PDFs, drawn for the row's earlier data, and stamped the folder as
+    current)."""
     from core.course_design.plan import plan_course, read_document
     from shaperapp.report.kept_views import keep_plot_views
 
@@ -109,6 +157,13 @@ def write_student(job: Job) -> None:
     stamp = os.path.join(job.folder, STAMP_FILE)
     if os.path.lexists(stamp):
         os.remove(stamp)
+    wanted = set(expected_files(job))
+    removed = []
+    for _, name in file_names(PARTS, dxf=True):
+        path = os.path.join(job.folder, name)
+        if name not in wanted and os.path.isfile(path):
+            os.remove(path)
+            removed.append(name)
     design = os.path.join(job.folder, DESIGN_FILE)
     atomic_write(design, job.design_text)
     doc, keys = read_document(design)
@@ -117,6 +172,7 @@ def write_student(job: Job) -> None:
                                                              cad_font=job.cad_font)):
         pass
     atomic_write(stamp, stamp_of(job) + "\n")
+    return tuple(removed)
 
 
 def run_student(job: Job) -> Result:
@@ -126,14 +182,15 @@ def run_student(job: Job) -> Result:
     start = time.perf_counter()
     try:
         skipped = is_current(job)
+        removed: tuple[str, ...] = ()
         if skipped:                 # a run killed mid-save may have left its temporary files
             for name in (*expected_files(job), STAMP_FILE):
                 remove_stale_temps(os.path.join(job.folder, name))
         else:
-            write_student(job)      # each atomic write removes its target's stale ones
+            removed = write_student(job)      # each atomic write removes its target's stale ones
         entry = answer_entry(job.cover.get("student", ""), job.cover.get("number", ""), job.name,
                              os.path.join(job.folder, DESIGN_FILE))
-        return Result(job.index, time.perf_counter() - start, entry, skipped=skipped)
+        return Result(job.index, time.perf_counter() - start, entry, skipped=skipped, removed=removed)
     except OSError as exc:
         error = f"{job.name}: {exc}"
     except Exception as exc:        # a font, a drawing that cannot be made: named, never raised

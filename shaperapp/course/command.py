@@ -8,6 +8,8 @@ written: a refusal is one line, exit status 2, and nothing written.
 from __future__ import annotations
 
 import argparse
+import os
+import sys
 import time
 
 from core.cli.common import UsageError
@@ -83,6 +85,10 @@ def run(args: argparse.Namespace) -> int:
         raise (UsageError if exc.option == "--design" else OutputError)(str(exc)) from None
     covering = Covering(paper, design_name(args), date, cover, speed=sheet_speed(args, len(course.rpms)),
                         cad_font=cad_font_from_args(args, args.dxf))
+    there = [os.path.basename(f.path) for f in course.files if os.path.lexists(f.path)]
+    if there:       # replaced whole, as documented: said, since the teacher's own may be among them
+        print(f"shaper: note: {args.output} holds {len(there)} of these files already, replaced now: "
+              f"{', '.join(there)}", file=sys.stderr, flush=True)
     start = time.perf_counter()
     language = start_qt(args.lang)
     from .write import write_course

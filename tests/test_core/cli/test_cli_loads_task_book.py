@@ -75,6 +75,31 @@ def test_rotor_gear_takes_the_design_files_gear_ratio(tmp_path):
     assert status == 2 and err.startswith("shaper: error: --rotor:")
 
 
+def test_rotor_gear_takes_the_gear_pair_the_design_is_given(tmp_path):
+    """shaper design (and so a class's row) with gear options: J:gear is the pinion shaft of
+    the pair it writes. Under a file's pair of 17/68 teeth, --z1 15 --z2 41 stored the
+    file's ratio, 4, beside the 41/15 pair the file then held (a task sheet printed
+    '0.02, 3.076923077' for a row of 15/41 teeth over a base of 13/40); without a file,
+    --z1 13 --z2 40 --module 6 was refused as no gear pair."""
+    path = tmp_path / "d.shaper.json"
+    save_design(path, Spec(), [60.0], 1.0,
+                {"forces": masses_to_dict(MassProperties(lever_weight_N=200.0)),
+                 "gear": {"z1": 17, "z2": 68, "module_mm": 4}})
+    over = tmp_path / "over.shaper.json"
+    status, _, err = shaper_in_process("design", "--design", path, "--z1", "15", "--z2", "41",
+                                       "--rotor", "0.03:gear", "-o", over)
+    assert status == 0, err
+    doc = json.loads(over.read_text(encoding="utf-8"))
+    assert (doc["gear"]["z1"], doc["gear"]["z2"]) == (15, 41)
+    assert doc["forces"]["rotors"] == [{"J_kg_m2": 0.03, "speed_ratio": pytest.approx(41 / 15, rel=1e-15)}]
+    alone = tmp_path / "alone.shaper.json"
+    status, _, err = shaper_in_process("design", *SEED, "--z1", "13", "--z2", "40", "--module", "6",
+                                       "--rotor", "0.03:gear", "-o", alone)
+    assert status == 0, err
+    rotors = json.loads(alone.read_text(encoding="utf-8"))["forces"]["rotors"]
+    assert rotors == [{"J_kg_m2": 0.03, "speed_ratio": pytest.approx(40 / 13, rel=1e-15)}]
+
+
 def test_a_weight_typed_over_a_files_mass_replaces_it(tmp_path):
     path = tmp_path / "d.shaper.json"
     save_design(path, Spec(), [60.0], 1.0, {"forces": masses_to_dict(MassProperties(

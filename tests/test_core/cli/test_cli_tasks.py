@@ -334,3 +334,85 @@ def test_the_answer_key_gives_the_flywheel_to_add_beside_the_rotating_parts(tmp_
     assert j_f > 1.0 and needed == pytest.approx(j_f - 0.5, rel=1e-12)
     header = key_csv([entry], [""]).splitlines()[0].split(",")
     assert "J_F_1 (kg·m²)" in header and "J_F_needed_1 (kg·m²)" in header
+
+
+def test_a_rotor_cell_gives_every_rotating_part_it_names(tmp_path, base):
+    """The task book's other rotating parts are several (the crank shaft, the pinion's shaft,
+    the motor's rotor), and the command line repeats --rotor for them; a table's cell holds
+    them separated by spaces. The cell was one option, refused as 'must be a number (got
+    1 0.02:gear)'. J:gear takes the base's gear pair's ratio, z2/z1 = 40/13."""
+    lines = ["student,student-number,rotor", "a,1,0.5:1 0.02:gear", "b,2,0.5:1", "c,3,0.5:1 x"]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    assert [s.error for s in students[:2]] == ["", ""]
+    rotors = [[(r["J_kg_m2"], r["speed_ratio"]) for r in s.document["forces"]["rotors"]] for s in students[:2]]
+    assert rotors[0] == [(0.5, 1.0), (0.02, pytest.approx(40 / 13, rel=1e-15))]
+    assert rotors[1] == [(0.5, 1.0)]
+    assert students[2].error.startswith("tasks.csv line 4, column rotor: must be J:RATIO") and "(got x)" in students[2].error
+
+
+def test_a_value_left_to_the_base_is_named_as_the_column_that_sets_it(tmp_path, base):
+    """A row's crank and K under the base's stroke of 300 mm, too short for them: the line
+    named '--stroke', an option the teacher never typed and no column of the table; it
+    names the column stroke and whose value it was (the Class dialog's translation reads
+    the line's column and its "(got …)"). Its advice, typed into that column as
+    printed, passes."""
+    import re
+    lines = ["student,student-number,crank,K", "a,1,119,1.48"]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    error = students[0].error
+    assert error.startswith("tasks.csv line 2, column stroke: must be > ") and error.endswith("(got 300 from --base)")
+    bound = re.search(r"must be > ([\d.]+) mm", error).group(1)
+    fixed, _ = read_tasks(table(tmp_path, ["student,student-number,crank,K,stroke", f"a,1,119,1.48,{bound}"]), base)
+    assert fixed[0].error == "" and fixed[0].document["spec"]["stroke"] == float(bound)
+
+
+def test_a_row_without_the_parts_of_a_course_design_is_bad_and_its_advice_helps(tmp_path):
+    """A table without --base whose rows give the linkage only: each row passed, each
+    student then failed ('1-a: CourseError: --design: design.shaper.json has no "forces"
+    …', a file the teacher never named), left a folder holding only its design file, and
+    the task sheets were printed for them. The row is bad, named by its line with the
+    columns to add; the row with those columns passes."""
+    lines = ["student,student-number,crank,K,stroke", "a,1,100,1.4,300"]
+    students, _ = read_tasks(table(tmp_path, lines), None)
+    assert students[0].error == (
+        "tasks.csv line 2: lacks the loads (columns lever-weight, lever-inertia, ram-weight, cut-force …), the feed "
+        "cam (columns arm, swing, pressure, rise, dwell, return) and the gear pair (columns z1, z2, module), which "
+        "the course design needs; give them as columns or in --base")
+    columns = "lever-weight,lever-inertia,ram-weight,cut-force,arm,swing,pressure,rise,dwell,return,z1,z2,module"
+    fixed = [f"{lines[0]},{columns}", f"{lines[1]},200,1.1,700,7000,125,15,40,75,10,75,13,40,6"]
+    students, _ = read_tasks(table(tmp_path, fixed), None)
+    assert students[0].error == "" and {"forces", "cam", "gear"} <= set(students[0].document)
+    only_gear = [f"{lines[0]},{columns}", f"{lines[1]},200,1.1,700,7000,125,15,40,75,10,75,,,"]
+    students, _ = read_tasks(table(tmp_path, only_gear), None)
+    assert students[0].error.endswith("lacks the gear pair (columns z1, z2, module), which the course design "
+                                      "needs; give them as columns or in --base")
+
+
+def test_a_student_number_a_spreadsheet_shortened_is_refused_by_name(tmp_path, base):
+    """Excel keeps a 12-digit student number typed into a number column as 2.02301E+11 and
+    saves it so in its CSV: the digits are gone. It passed as the number, so the folder,
+    the cover, every title block and the answer key said 2.02301E+11 (and two such
+    students were told they share one number). The row is bad, saying why and what to do;
+    a number that merely holds an E stays a number."""
+    lines = ["student,student-number", "a,2.02301E+11", "b,2.02301e+11", "c,20230101E1", "d,S1E+2", "e,2.02301E+11"]
+    students, _ = read_tasks(table(tmp_path, lines), base)
+    assert students[0].error == ("tasks.csv line 2, column student-number: 2.02301E+11 is a number a spreadsheet "
+                                 "wrote short, its digits lost; format the column as text and save the table again")
+    assert students[1].error.startswith("tasks.csv line 3, column student-number: 2.02301e+11 is a number")
+    assert [s.error for s in students[2:4]] == ["", ""] and students[4].error.startswith("tasks.csv line 6, column")
+
+
+@pytest.mark.parametrize("heading, column", [("学生", "student"), ("姓名", "student"), ("学号", "student-number"),
+                                             ("班级", "class")])
+def test_a_chinese_heading_of_a_name_column_is_told_its_name(tmp_path, base, heading, column):
+    """A Chinese teacher heads the columns 学生, 学号, 班级: refused with no hint ('see shaper
+    design --help', which lists no such column); the refusal names the column to write,
+    and the table with it passes."""
+    headings = {"student": "student", "student-number": "student-number", "class": "class"}
+    headings[column] = heading
+    lines = [",".join(headings.values()) + ",crank", "张三,2021001,机械2101,100"]
+    with pytest.raises(TableError) as refused:
+        read_tasks(table(tmp_path, lines), base)
+    assert str(refused.value) == f"tasks.csv line 1, column {heading}: not a column; did you mean {column}?"
+    fixed = [lines[0].replace(heading, column), lines[1]]
+    assert read_tasks(table(tmp_path, fixed), base)[0][0].error == ""

@@ -98,6 +98,59 @@ def test_the_students_line_shows_the_whole_name_and_number():
     assert left <= line.box()[0] and line.box()[2] <= right
 
 
+@pytest.mark.parametrize("name", ["名" * 17, "名" * 200, "Alexandra Konstantinopoulou-Smith of Mechanical Eng"])
+def test_a_name_too_long_for_the_line_is_cut_and_the_number_and_class_stay(name):
+    """A name too long for the student's line even at 2.5 mm was cut with the line's end,
+    the number and the class with it ('名名…名…' and no number: 17 CJK characters did it),
+    so the sheet no longer said whose it was; now the name is cut and the rest prints whole,
+    within the border."""
+    doc, _ = _doc(0.3)
+    who = {"student": name, "number": "2023010101", "group": "Mechanical Engineering 2301", "date": "2026-01-01"}
+    sheet = task_sheet(doc, who, [], {})
+    line = next(t for t in sheet.items if isinstance(t, Text) and t.text.startswith("Student: "))
+    assert line.text.endswith("Number: 2023010101    Class: Mechanical Engineering 2301")
+    shown = line.text[len("Student: "):line.text.index("    Number: ")]
+    assert shown == name or (shown.endswith("…") and name.startswith(shown[:-1]) and len(shown) > 8)
+    left, _, right, _ = sheet.paper.border
+    assert left <= line.box()[0] and line.box()[2] <= right
+
+
+def test_every_speed_and_rotating_part_prints_whole():
+    """A student given 16 speeds read '20 / 25 / 30 / 35 / 40 / …' on the task sheet, the
+    other eleven speeds to compute cut away (and so many rotating parts): the list takes
+    as many rows of the data set as it needs, each within its cell, none cut."""
+    value_mm = 45.0                      # the data set's value column
+    doc, _ = _doc(0.3)
+    speeds = [20.0 + 5.0 * k for k in range(15)] + [999.99]
+    from core.files.design_file import masses_to_dict
+    from core.forces.masses import MassProperties
+    forces = masses_to_dict(MassProperties(rotors=tuple((0.5 + k, 1.0 + k) for k in range(20))))
+    doc = {**doc, "rpm": speeds, "forces": forces}
+    sheet = task_sheet(doc, {"student": "x"}, ["Motion"], {})
+    texts = [t for t in sheet.items if isinstance(t, Text)]
+    assert not [t.text for t in texts if "…" in t.text]
+    listed = " / ".join(t.text for t in texts if " / " in t.text or t.text in ("95", "999.99"))
+    assert [float(v) for v in listed.split(" / ")] == speeds
+    parts = "; ".join(t.text for t in texts if t.text.count(",") and t.text[0].isdigit())
+    assert parts == "; ".join(f"{0.5 + k:g}, {1 + k:g}" for k in range(20))
+    value = next(t for t in texts if t.text.startswith("20 / 25"))
+    centre = (value.box()[0] + value.box()[2]) / 2
+    assert all(t.box()[2] - t.box()[0] <= value_mm - 2.0 for t in texts if abs(
+        (t.box()[0] + t.box()[2]) / 2 - centre) < 1e-6)
+
+
+@pytest.mark.parametrize("side", ["trailing", "leading"])
+def test_a_leading_rod_is_said_on_the_task_sheet(side):
+    """The rod's side sets the motion the answer key gives (v, a, M, J_F), and the data set
+    did not say it: a leading rod's student read the book's trailing layout's data. The
+    sheet says a leading rod; the book's trailing one goes without saying."""
+    doc, _ = _doc(0.3)
+    doc = {**doc, "spec": {**doc["spec"], "rod_side": side}}
+    texts = [t.text for t in task_sheet(doc, {"student": "x"}, [], {}).items if isinstance(t, Text)]
+    assert ("Rod side: C ahead of B while cutting" in texts) == (side == "leading")
+    assert ("leading" in texts) == (side == "leading")
+
+
 # 方案 I–III of the task book (l_O2A, l_O2O4, l_O4B, l_BC/l_O4B) and a block design
 TASK_BOOK = [(110.0, 380.0, 540.0, 0.25), (90.0, 350.0, 580.0, 0.3), (110.0, 430.0, 810.0, 0.36),
              (90.0, 350.0, 580.0, None)]

@@ -60,3 +60,22 @@ def test_a_left_aligned_first_column_fits_its_text_to_its_own_width():
     items = table((0.0, 50.0), (30.0, 40.0), [("Energy fluctuation ΔW_max", "1102 J")], 8.0, 5.0, aligns="lc")
     label = next(t for t in items if isinstance(t, Text) and t.text != "1102 J")
     assert label.box()[2] <= 30.0
+
+
+def test_a_student_whose_speeds_run_onto_the_next_page_is_named_on_it():
+    """A student's speeds after the first are rows with no number nor name; a student of 16
+    speeds ran onto the next pages of the answer key, which showed figures under no name.
+    The first row of a page that continues a student repeats the number and the name."""
+    header = (("No.", "Student", "Number", "n"), ("", "", "", "r/min"))
+    rows = [["1", "Zhang", "2021001", "60"]] + [["2", "Li", "2021002", "20"]] + \
+        [["", "", "", str(10 + k)] for k in range(80)] + [["3", "Wang", "2021003", "60"]]
+    pages = answer_pages([(header, [9.0, 24.0, 20.0, 12.0], rows)], "Answer key", {"page %1/%2": "page %1/%2"},
+                         plain=(1, 2))
+    assert len(pages) >= 3
+    for page in pages:
+        texts = [t for t in page.items if isinstance(t, Text)]
+        speeds = [t for t in texts if t.text.isdigit() and len(t.text) == 2]
+        top = max(speeds, key=lambda t: t.box()[1])               # the page's first row of figures
+        row = {t.text for t in texts if abs(sum(t.box()[1::2]) - sum(top.box()[1::2])) < 1e-6}
+        assert any(who <= row for who in ({"1", "Zhang", "2021001"}, {"2", "Li", "2021002"},
+                                          {"3", "Wang", "2021003"})), row

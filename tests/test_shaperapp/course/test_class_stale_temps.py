@@ -59,3 +59,28 @@ def test_a_student_made_by_other_code_is_made_again(tmp_path, monkeypatch):
     second = source_fingerprint("tool")
     (package / "__init__.py").write_text("X = 2\n")
     assert len({first, second, source_fingerprint("tool")}) == 3
+
+
+def test_a_run_without_dxf_removes_an_earlier_runs_dxfs_and_says_so(tmp_path, monkeypatch):
+    """A run with --dxf, then one without it and a changed row: the folder kept the first
+    run's DXFs, drawn for the earlier crank, beside the new PDFs, and was stamped current.
+    The DXFs of the course's names go, and the result names them (the command's note); a
+    file of another name stays. (The course's writing is left out here: only the folder.)"""
+    import shaperapp.course.class_run as class_run
+    import shaperapp.course.write as write
+    import shaperapp.report.kept_views as kept_views
+    monkeypatch.setattr(write, "write_course", lambda *a, **k: iter(()))
+    # nor Qt: a report's plot views kept in English here served a later test's Chinese report
+    monkeypatch.setattr(class_run, "_language", lambda lang: lang)
+    monkeypatch.setattr(kept_views, "keep_plot_views", lambda: None)
+    folder = tmp_path / "S01-x"
+    folder.mkdir()
+    job = Job(0, str(folder), "S01-x", DESIGN.read_text(encoding="utf-8"), "en", "A3", False, "t", "d",
+              {"student": "x", "number": "S01"})
+    earlier = ["01-motion.dxf", "03-cam.dxf", "01-motion.pdf"]
+    for name in [*earlier, "my-notes.dxf"]:
+        (folder / name).write_text("an earlier run's")
+    result = run_student(job)
+    assert result.error == "" and not result.skipped
+    assert sorted(os.listdir(folder)) == sorted(["01-motion.pdf", "my-notes.dxf", "design.shaper.json", STAMP_FILE])
+    assert result.removed == ("01-motion.dxf", "03-cam.dxf")

@@ -65,13 +65,13 @@ def written(tmp_path_factory):
     source = design_file(folder, name=LONG)
     status, stdout, err = course("--design", source, "-o", out, "--dxf")
     assert status == 0, err
-    return source, out, stdout
+    return source, out, stdout, err
 
 
 @SLOW
 @needs_poppler
 def test_the_files_are_written_numbered_and_complete(written):
-    _, out, stdout = written
+    _, out, stdout, _ = written
     assert sorted(os.listdir(out)) == sorted(WITH_DXF + ["notes.txt"])
     lines = stdout.splitlines()
     assert [os.path.basename(line) for line in lines[:-1]] == \
@@ -90,9 +90,13 @@ def test_the_files_are_written_numbered_and_complete(written):
 
 @SLOW
 def test_files_of_the_same_names_are_replaced_and_others_left_alone(written):
-    _, out, _ = written
+    """A file of one of the course's names is replaced, and said so (a teacher's own
+    01-motion.pdf went without a word); the others are left alone and not named."""
+    _, out, _, err = written
     assert (out / "01-motion.pdf").read_bytes().startswith(b"%PDF")
     assert (out / "notes.txt").read_text() == "mine"
+    notes = [line for line in err.splitlines() if "replaced" in line]
+    assert notes == [f"shaper: note: {out} holds 1 of these files already, replaced now: 01-motion.pdf"]
 
 
 @SLOW
@@ -100,7 +104,7 @@ def test_files_of_the_same_names_are_replaced_and_others_left_alone(written):
 def test_a_long_design_name_is_cut_in_the_title_block_not_refused(written):
     """The 228-letter name (without its types) is printed cut with "…" (to the 200
     characters a title takes, and to the title block's field); the files keep their names."""
-    _, out, _ = written
+    _, out, _, _ = written
     for name in ("00-report.pdf", "03-cam.pdf"):
         text = "".join(pdf_text(out / name).split())
         assert re.search("d{10,}…", text) and "d" * 201 not in text, name
@@ -111,7 +115,7 @@ def test_a_long_design_name_is_cut_in_the_title_block_not_refused(written):
 def test_the_report_has_the_gear_section_of_the_file(written):
     """Issue 35, item 5: the course's report carries the file's gear pair, its figures those
     of ``shaper gear --design`` of the same file."""
-    source, out, _ = written
+    source, out, _, _ = written
     status, js, err = shaper_in_process("gear", "--design", source, "--json")
     assert status == 0, err
     pair = json.loads(js)["pair"]
@@ -126,7 +130,7 @@ def test_the_report_has_the_gear_section_of_the_file(written):
 @needs_poppler
 def test_the_sheets_are_those_of_shaper_drawing(written, tmp_path):
     """The course's cam sheet reads as ``shaper drawing --content cam`` of the same file."""
-    source, out, _ = written
+    source, out, _, _ = written
     status, _, err = shaper_in_process("drawing", "--design", source, "--content", "cam", "--sheet", "A3",
                                        "--date", "2026-01-01", "-o", tmp_path / "cam.pdf")
     assert status == 0, err

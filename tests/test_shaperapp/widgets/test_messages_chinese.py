@@ -93,3 +93,28 @@ def test_the_block_and_dead_centre_refusals_are_chinese_with_their_numbers(chine
     assert set(numbers.findall(error.allowed)) <= set(numbers.findall(text)), text
     least = re.search(r"at least (\S+?) ", error.allowed)
     assert said.replace("%1", least.group(1) if least else "%1") in text, text
+
+
+def test_a_class_rows_value_from_the_base_is_said_in_chinese(chinese):
+    """The Class dialog's Chinese line for a value a row left to its design file: the table's
+    refusal names the column and "(got 300 from --base)"; the dialog gives both in Chinese
+    (the value kept, its source said), as it gives the row's own values."""
+    from shaperapp.course.class_messages import table_message
+    text = table_message("tasks.csv line 28, column stroke: must be > 300.007 mm for this crank and K, so that "
+                         "the ram guide its rule places clears the crank (got 300 from --base)")
+    assert text.startswith("tasks.csv 第 28 行，stroke 列：") and text.endswith("（输入的是 300，取自 --base 文件）")
+    assert "from" not in text and "got" not in text
+    mine = table_message("tasks.csv line 3, column K: must be > 1 and ≤ 5 (got 0.9)")
+    assert mine.endswith("（输入的是 0.9）")
+    theirs = table_message("tasks.csv line 3, column K: must be > 1 and ≤ 5 (got 0.9 from the design file)")
+    assert theirs.endswith("（输入的是 0.9，取自设计文件）")
+
+
+def test_a_class_rows_shortened_number_is_said_in_chinese(chinese):
+    """The refusal of a student number a spreadsheet wrote short reaches the Chinese Class
+    dialog in Chinese, the number kept as it was read."""
+    from shaperapp.course.class_messages import table_message
+    text = table_message("tasks.csv line 2, column student-number: 2.02301E+11 is a number a spreadsheet wrote "
+                         "short, its digits lost; format the column as text and save the table again")
+    assert text == ("tasks.csv 第 2 行，student-number 列：2.02301E+11 是电子表格缩写了的数字，已丢失数位；"
+                    "请把该列设为文本格式后重新保存表格")
