@@ -456,6 +456,14 @@
         <source>Failed: %1</source>
         <translation>失败：%1</translation>
     </message>
+    <message>
+        <source>Notes (%1):</source>
+        <translation>说明（%1 条）：</translation>
+    </message>
+    <message>
+        <source>%1 of %2 students not written (%3 bad rows, %4 failed).</source>
+        <translation>%2 名学生中有 %1 名未写入（%3 行有错，%4 名失败）。</translation>
+    </message>
 </context>
 <context>
     <name>ClassMessages</name>
@@ -554,6 +562,38 @@
     <message>
         <source>empty; the first row names the columns (student, student-number, …)</source>
         <translation>为空；第一行须为列名（student、student-number 等）</translation>
+    </message>
+    <message>
+        <source>the speeds (column rpm)</source>
+        <translation>转速（rpm 列）</translation>
+    </message>
+    <message>
+        <source>the loads (columns lever-weight, lever-inertia, ram-weight, cut-force …)</source>
+        <translation>载荷（lever-weight、lever-inertia、ram-weight、cut-force 等列）</translation>
+    </message>
+    <message>
+        <source>the feed cam (columns arm, swing, pressure, rise, dwell, return)</source>
+        <translation>进给凸轮（arm、swing、pressure、rise、dwell、return 列）</translation>
+    </message>
+    <message>
+        <source>the gear pair (columns z1, z2, module)</source>
+        <translation>齿轮副（z1、z2、module 列）</translation>
+    </message>
+    <message>
+        <source>%1 and %2</source>
+        <translation>%1和%2</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>lacks %1, which the course design needs; give them as columns or in --base</source>
+        <translation>缺少课程设计所需的%1；请以列给出，或写在 --base 文件中</translation>
+    </message>
+    <message>
+        <source>lacks %1, which the course design needs; give them as columns or in the design file</source>
+        <translation>缺少课程设计所需的%1；请以列给出，或写在设计文件中</translation>
     </message>
     <message>
         <source>%1 from --base</source>

@@ -217,8 +217,8 @@ def _student(name: str, line: int, header: list[str], cells: list[str], parser: 
 
 
 # What a course design needs of the design file (core.course_design.plan.PARTS's keys), as
-# the table's columns that give it.
-_PART_COLUMNS = {"rpm": "the speeds (column rpm)",
+# the table's columns that give it (the Class dialog translates a row's "lacks …" by them).
+PART_COLUMNS = {"rpm": "the speeds (column rpm)",
                  "forces": "the loads (columns lever-weight, lever-inertia, ram-weight, cut-force …)",
                  "cam": "the feed cam (columns arm, swing, pressure, rise, dwell, return)",
                  "gear": "the gear pair (columns z1, z2, module)"}
@@ -234,7 +234,7 @@ def _lacking(document: dict[str, Any], source: str) -> str:
     missing = [key for key, _ in missing_parts(document.keys())]
     if not missing:
         return ""
-    parts = [_PART_COLUMNS.get(key, key) for key in missing]
+    parts = [PART_COLUMNS.get(key, key) for key in missing]
     listed = parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
     return f"lacks {listed}, which the course design needs; give them as columns or in {source}"
 

@@ -12,6 +12,7 @@ file left is complete. At the end the folder can be opened.
 from __future__ import annotations
 
 import os
+import re
 import signal
 import sys
 
@@ -182,6 +183,7 @@ class ClassDialog(QDialog):
         process.finished.connect(self._done)
         self._process = process
         self._errors = ""
+        self._key_before = _stamp(os.path.join(self.folder.text().strip(), "answer-key.json"))
         process.readyReadStandardError.connect(self._read_errors)
         with children_take_sigint():     # Cancel is a SIGINT: the child must take it
             process.start()
@@ -210,15 +212,26 @@ class ClassDialog(QDialog):
         self._process = None
         self.cancel_button.setEnabled(True)
         folder = self.folder.text().strip()
+        key = _stamp(os.path.join(folder, "answer-key.json"))
+        errors = [line.removeprefix("shaper: error: ") for line in self._errors.splitlines()
+                  if line.startswith("shaper: error: ")]
         if cancelled:
             text = translate("ClassDialog", "Cancelled: %1 students written, each complete.")
-        elif status in (0, 2) and os.path.isfile(os.path.join(folder, "answer-key.json")):
+        elif status in (0, 2) and key is not None and key != self._key_before:   # this run's answer key
             text = translate("ClassDialog", "Done: %1 students written; the task sheets and the answer key are "
                              "in the folder.")
-        else:
-            last = self._errors.strip().splitlines()[-1:] or [""]
-            text = translate("ClassDialog", "Failed: %1").replace("%1", last[0].removeprefix("shaper: error: "))
-        self.summary.setText(text.replace("%1", str(self._finished)))
+            if status == 2:
+                text += " " + _not_written(errors[-1] if errors else "")
+        else:           # an answer key an earlier run left is not this run's success
+            last = errors[-1] if errors else (self._errors.strip().splitlines()[-1:] or [""])[0]
+            text = translate("ClassDialog", "Failed: %1").replace("%1", last)
+        text = text.replace("%1", str(self._finished))
+        notes = [line.removeprefix("shaper: note: ") for line in self._errors.splitlines()
+                 if line.startswith("shaper: note: ")]
+        if notes:       # what the run left or replaced (an earlier run's folders, DXFs, files)
+            text += "\n" + translate("ClassDialog", "Notes (%1):").replace("%1", str(len(notes))) + "\n" + \
+                "\n".join(notes[:NOTES_SHOWN]) + ("\n…" if len(notes) > NOTES_SHOWN else "")
+        self.summary.setText(text)
         self.open_button.setEnabled(os.path.isdir(folder))
         self._update_run()
 
@@ -230,6 +243,30 @@ class ClassDialog(QDialog):
             self.cancel()
             self._process.waitForFinished(-1)
         super().closeEvent(event)
+
+
+NOTES_SHOWN = 5
+_NOT_WRITTEN = re.compile(r"^(\d+) of (\d+) students not written \((\d+) bad rows, (\d+) failed\)$")
+
+
+def _stamp(path: str) -> int | None:
+    """The file's modification time in ns, None when there is none: tells this run's file
+    from an earlier run's (every file is replaced whole, so a new one has a new time)."""
+    try:
+        return os.stat(path).st_mtime_ns
+    except OSError:
+        return None
+
+
+def _not_written(error: str) -> str:
+    """``shaper class``'s closing count of students not written, in the UI's language."""
+    found = _NOT_WRITTEN.match(error)
+    if found is None:
+        return error
+    text = translate("ClassDialog", "%1 of %2 students not written (%3 bad rows, %4 failed).")
+    for i, value in enumerate(found.groups(), start=1):
+        text = text.replace(f"%{i}", value)
+    return text
 
 
 def class_dialog(parent: QWidget, language: str, start_dir: str) -> None:

@@ -12,6 +12,8 @@ import re
 
 from PySide6.QtCore import QCoreApplication
 
+from core.cli.tasks import PART_COLUMNS
+
 from shaperapp.widgets.messages import allowed_text
 
 translate = QCoreApplication.translate
@@ -92,8 +94,46 @@ def _templates() -> dict[str, str]:
     }
 
 
+_LACKS = re.compile(r"^lacks (.+), which the course design needs; give them as columns or in "
+                    r"(--base|the design file)$", re.S)
+
+
+def _part_names() -> dict[str, str]:
+    # Listed literally so pyside6-lupdate finds them; keys as core.cli.tasks.PART_COLUMNS's.
+    return {"rpm": translate("ClassMessages", "the speeds (column rpm)"),
+            "forces": translate("ClassMessages", "the loads (columns lever-weight, lever-inertia, ram-weight, "
+                                                 "cut-force …)"),
+            "cam": translate("ClassMessages", "the feed cam (columns arm, swing, pressure, rise, dwell, return)"),
+            "gear": translate("ClassMessages", "the gear pair (columns z1, z2, module)")}
+
+
+def _lacking(text: str) -> str | None:
+    """A row's "lacks the loads (…) and the gear pair (…), which the course design needs …"
+    with each part named in the UI's language, or None for another text."""
+    found = _LACKS.match(text)
+    if found is None:
+        return None
+    listed, source = found.groups()
+    names = _part_names()
+    parts = [names[key] for key, english in PART_COLUMNS.items() if english in listed]
+    if not parts:
+        return None
+    joined = parts[-1]
+    if len(parts) > 1:
+        joined = translate("ClassMessages", "%1 and %2").replace("%1", translate("ClassMessages", ", ").join(
+            parts[:-1])).replace("%2", parts[-1])
+    template = (translate("ClassMessages", "lacks %1, which the course design needs; give them as columns or in "
+                                           "--base") if source == "--base" else
+                translate("ClassMessages", "lacks %1, which the course design needs; give them as columns or in "
+                                           "the design file"))
+    return template.replace("%1", joined)
+
+
 def _what(text: str) -> str:
     """What is wrong, translated; a trailing "(got X)" kept as the value typed."""
+    lacking = _lacking(text)
+    if lacking is not None:
+        return lacking
     got = _GOT.match(text)
     body = allowed_text(got.group(1) if got else text, _PATTERNS, _templates())
     if got:

@@ -114,3 +114,61 @@ def test_the_rows_errors_are_chinese_in_the_chinese_dialog(window, qtbot, tmp_pa
     tasks.write_text("student,student-number,cranky\n甲,1,100\n", encoding="utf-8")
     dialog.check()
     assert_chinese_text(dialog.summary.text(), allowed | {"cranky"}, dialog.summary.text())
+
+
+def _finished(dialog, folder, status: int, stderr: str, key_before: int | None) -> str:
+    """The dialog's summary once a run that printed ``stderr`` ended with ``status``."""
+    dialog.folder.setText(str(folder))
+    dialog._process, dialog._errors, dialog._key_before, dialog._finished = object(), stderr, key_before, 3
+    dialog._done(status, None)
+    return dialog.summary.text()
+
+
+def test_an_earlier_runs_answer_key_is_not_this_runs_success(qtbot, tmp_path):
+    """A run refused at once (another run writes into the folder) left the earlier run's
+    answer key there: the dialog said "Done: 0 students written" on exit status 2."""
+    from shaperapp.course.class_dialog import ClassDialog, _stamp
+    dialog = ClassDialog("en")
+    qtbot.addWidget(dialog)
+    key = tmp_path / "answer-key.json"
+    key.write_text("{}", encoding="utf-8")
+    refusal = "shaper: error: --output: another 'shaper class' is writing into out; let it finish, then run this one\n"
+    text = _finished(dialog, tmp_path, 2, refusal, _stamp(str(key)))
+    assert text == "Failed: --output: another 'shaper class' is writing into out; let it finish, then run this one"
+
+
+def test_a_run_with_bad_rows_says_how_many_were_not_written_and_its_notes(qtbot, tmp_path):
+    from shaperapp.course.class_dialog import ClassDialog
+    dialog = ClassDialog("en")
+    qtbot.addWidget(dialog)
+    (tmp_path / "answer-key.json").write_text("{}", encoding="utf-8")       # this run's (none before)
+    notes = "".join(f"shaper: note: out/{i}-x holds an earlier run's files; left as it was\n" for i in range(7))
+    text = _finished(dialog, tmp_path, 2, notes + "shaper: error: 2 of 5 students not written (1 bad rows, 1 failed)\n",
+                     None)
+    lines = text.splitlines()
+    assert lines[0] == ("Done: 3 students written; the task sheets and the answer key are in the folder. "
+                        "2 of 5 students not written (1 bad rows, 1 failed).")
+    assert lines[1] == "Notes (7):"
+    assert lines[2:] == [f"out/{i}-x holds an earlier run's files; left as it was" for i in range(5)] + ["…"]
+
+
+def test_the_finish_and_a_rows_missing_parts_are_chinese_in_the_chinese_dialog(window, qtbot, tmp_path):
+    """The count of students not written, and a row lacking the parts a course design needs
+    (core.cli.tasks: "lacks the loads (…) and the gear pair (…) …"), in Chinese."""
+    from language_checks import assert_chinese_text
+
+    from shaperapp.course.class_dialog import ClassDialog
+    window.set_language("zh_CN")
+    dialog = ClassDialog("zh_CN")
+    qtbot.addWidget(dialog)
+    (tmp_path / "answer-key.json").write_text("{}", encoding="utf-8")
+    text = _finished(dialog, tmp_path, 2, "shaper: error: 1 of 4 students not written (1 bad rows, 0 failed)\n", None)
+    assert_chinese_text(text, set(), text)
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text("student,student-number,crank,K,stroke\n甲,1,100,1.4,300\n", encoding="utf-8")
+    dialog.tasks.setText(str(tasks))
+    dialog.check()
+    error = dialog.table.item(0, 3).text()
+    assert "lever-weight" in error and "z1" in error, error         # the columns to add, as core names them
+    assert_chinese_text(error, {"tasks", "csv", "rpm", "lever", "weight", "inertia", "ram", "cut", "force", "arm",
+                                "swing", "pressure", "rise", "dwell", "return", "z1", "z2", "module", "base"}, error)
