@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING
 
 from core.base.figure_text import DIMENSION_DECIMALS
 
-from .dxf import DIMENSIONS, TEXT_STYLE
+from .dxf import DIMENSIONS, UNICODE_STYLE
 from .sheet import standard_scale
 
 if TYPE_CHECKING:
@@ -54,7 +54,7 @@ def add_dimstyle(doc: Drawing, scale: float = 1.0, text_mm: float = DIM_TEXT_MM)
         "dimexe": 2.0 * n, "dimexo": 0.0, "dimgap": 1.0 * n, "dimdli": 7.0 * n,
         "dimtad": 1, "dimtih": 0, "dimtoh": 0, "dimjust": 0,
         "dimdec": DECIMALS, "dimzin": 8, "dimdsep": ord("."), "dimlunit": 2,
-        "dimaunit": 0, "dimadec": DECIMALS, "dimazin": 2, "dimtxsty": TEXT_STYLE,
+        "dimaunit": 0, "dimadec": DECIMALS, "dimazin": 2, "dimtxsty": UNICODE_STYLE,
     }
     doc.dimstyles.new(DIMSTYLE, dxfattribs=dict(attribs))
     # The drawing's current dimension variables too: LibreCAD draws every dimension from

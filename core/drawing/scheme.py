@@ -240,7 +240,7 @@ def _draw_labels(msp, design: Design, p: Pose, scale: float, outline: bool = Fal
         if outline:
             add_outline_text(msp, Text(name, tuple(map(float, at)), height, "cm"))
         else:
-            msp.add_text(name, height=height, dxfattribs=text_attribs()) \
+            msp.add_text(name, height=height, dxfattribs=text_attribs(text=name)) \
                 .set_placement(tuple(map(float, at)), align=TextEntityAlignment.MIDDLE_CENTER)
 
 
