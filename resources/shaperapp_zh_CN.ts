@@ -6338,6 +6338,10 @@
         <translation>%1 不是单行文本（含有控制字符或非字符码位）</translation>
     </message>
     <message>
+        <source>too fine: %1 samples, limit %2; &apos;shaper library export&apos; with --step %3 writes it at a step a design file holds</source>
+        <translation>过细：%1 个采样点，上限 %2；用 &apos;shaper library export&apos; 加 --step %3 可按设计文件能容纳的步长导出</translation>
+    </message>
+    <message>
         <source>%1: 'spec' must be an object of design fields</source>
         <translation>%1：设计参数须为一组设计字段</translation>
     </message>

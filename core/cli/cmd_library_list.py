@@ -14,6 +14,7 @@ from typing import Callable
 from core.library.open import library_exists
 from core.library.query import QueryError, parse_filter, sort_sql
 
+from core.linkage.limits import MAX_FILE_SAMPLES
 from core.space.figures import FIGURES_VERSION
 from ..library import Library
 from core.base.text import terminal_text
@@ -79,10 +80,16 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         print(f"shaper: note: {stale} of the {len(rows)} designs listed "
               f"{'has' if stale == 1 else 'have'} figures an older version computed; "
               "'shaper library refresh' recomputes them", file=sys.stderr)
-    damaged = sum(1 for row in rows if row["damaged"])
+    fine = sum(1 for row in rows if _too_fine(row))
+    damaged = sum(1 for row in rows if row["damaged"]) - fine
     if damaged:
         print(f"shaper: note: {damaged} of the {len(rows)} designs listed {'is' if damaged == 1 else 'are'} "
               "damaged (what cannot be read shows as —); 'shaper library check' says why", file=sys.stderr)
+    if fine:
+        print(f"shaper: note: {fine} of the {len(rows)} designs listed {'is' if fine == 1 else 'are'} "
+              f"too fine for a design file (stored before its limit of {MAX_FILE_SAMPLES} samples, "
+              "angles × speeds); 'shaper library check' gives each one's samples and the step "
+              "'shaper library export NAME --step DEG -o FILE' needs", file=sys.stderr)
     if args.json:
         print_json(rows)
         return 0
@@ -94,9 +101,15 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else terminal_text(str(row[key]))
                       for _, key, fmt in LIST_COLUMNS])
         if row["damaged"]:
-            cells[-1][0] += " (damaged)"
+            cells[-1][0] += " (too fine)" if _too_fine(row) else " (damaged)"
     widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
     for r in cells:
         print("  ".join(c.ljust(w) if i in (0, 1, len(r) - 1) else c.rjust(w)
                         for i, (c, w) in enumerate(zip(r, widths))).rstrip())
     return 0
+
+
+def _too_fine(row) -> bool:
+    """Whether the listed entry is whole but finer than a design file holds (its damage's
+    kind ``too_fine``: stored before the limit), not damaged."""
+    return getattr(row["damaged"], "kind", None) == "too_fine"

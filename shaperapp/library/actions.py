@@ -24,6 +24,8 @@ from core.library import Entry, Library
 from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import check_name, unique_name
 from core.library.backup import backup_copy
+from core.library.entry import too_fine
+from core.library.rows import Damage
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
@@ -223,7 +225,9 @@ class LibraryActions(QObject):
             doc = self.library.load(name)
             figures(doc["spec"], doc["rpm"], doc["masses"])
         except FileFormatError as exc:
-            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
+            fine = too_fine(exc)        # stored before the design file's sample limit: say so
+            why = describe_file_error(exc) if fine is None else describe_damage(Damage("too_fine", cause=fine))
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", why))
             return False
         except DesignError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe(exc)))
