@@ -213,7 +213,7 @@ def _entry_document(entry: Entry) -> dict[str, Any]:
 
 
 def _run_show(args: argparse.Namespace) -> int:
-    from core.space.compare import value_text
+    from core.base.figure_text import value_text
     with _open(args, create=False) as lib:
         entry = lib.get(args.name)
     try:
@@ -233,14 +233,14 @@ def _run_show(args: argparse.Namespace) -> int:
         rows.append(("figures", "computed by an older version; 'shaper library refresh' recomputes them"))
     if f.rod_side:
         rows.append(("rod side", f.rod_side))
-    rows += [(key, value_text(getattr(f, key))) for key, _, _, _ in DESIGN_FIGURES]
+    rows += [(key, value_text(getattr(f, key), key)) for key, _, _, _ in DESIGN_FIGURES]
     width = max(len(k) for k, _ in rows)
     for key, value in rows:       # the file's texts escaped: an ESC in a note drove the terminal
         print(f"{key:<{width}}  {terminal_text(value, multi_line=key == 'notes')}")
     for s in f.speeds:
         print(f"\n{s.rpm:g} r/min")
         for key, _, _, _ in SPEED_FIGURES:
-            print(f"  {key:<24}  {value_text(getattr(s, key))}")
+            print(f"  {key:<24}  {value_text(getattr(s, key), key)}")
     return 0
 
 

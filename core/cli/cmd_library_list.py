@@ -15,17 +15,20 @@ from core.library.open import library_exists
 from core.library.query import QueryError, parse_filter, sort_sql
 
 from core.linkage.limits import MAX_FILE_SAMPLES
+from core.base.figure_text import value_text
 from core.space.figures import FIGURES_VERSION
 from ..library import Library
 from core.base.text import terminal_text
 from .common import UsageError, library_path, number, whole_number
 from .output import print_json
 
-LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "{:.4f}"),
-                ("H mm", "stroke_mm", "{:.2f}"), ("θ °", "theta_deg", "{:.3f}"),
-                ("r/min", "rpm", "{:g}"), ("v_work_max m/s", "v_work_max_m_s", "{:.4f}"),
-                ("v_return_max m/s", "v_return_max_m_s", "{:.4f}"), ("a_max m/s²", "a_max_m_s2", "{:.4f}"),
-                ("J_F kg·m²", "flywheel_inertia_kg_m2", "{:.5g}"), ("modified", "modified", ""))
+# (heading, key, a figure?): a figure at its kind's precision (core.base.figure_text.value_text),
+# as the GUI's table writes it
+LIST_COLUMNS = (("name", "name", False), ("variant", "variant", False), ("K", "K", True),
+                ("H mm", "stroke_mm", True), ("θ °", "theta_deg", True),
+                ("r/min", "rpm", True), ("v_work_max m/s", "v_work_max_m_s", True),
+                ("v_return_max m/s", "v_return_max_m_s", True), ("a_max m/s²", "a_max_m_s2", True),
+                ("J_F kg·m²", "flywheel_inertia_kg_m2", True), ("modified", "modified", False))
 
 
 def filter_help() -> str:
@@ -98,8 +101,8 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         return 0
     cells = [[head for head, _, _ in LIST_COLUMNS]]
     for row in rows:
-        cells.append(["—" if row[key] is None else fmt.format(row[key]) if fmt else terminal_text(str(row[key]))
-                      for _, key, fmt in LIST_COLUMNS])
+        cells.append(["—" if row[key] is None else value_text(row[key], key) if figure
+                      else terminal_text(str(row[key])) for _, key, figure in LIST_COLUMNS])
         if row["damaged"]:
             cells[-1][0] += " (too fine)" if _too_fine(row) else " (damaged)"
     widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
