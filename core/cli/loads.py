@@ -91,8 +91,13 @@ def rotor(text: str, doc: dict[str, Any] | None) -> tuple[float, float]:
     gear = doc.get("gear") if doc is not None else None
     if gear is None:
         if text.partition(":")[2].strip().lower() == "gear":
-            raise UsageError(f"--rotor: {text!r} takes the gear pair's ratio, but no --design file "
-                             "with a gear pair was given")
+            which = "no --design file was given" if doc is None else "the --design file has no gear pair"
+            raise UsageError(f"--rotor: {text!r} takes the ratio z2/z1 of the design file's gear pair, "
+                             f"and {which}: give the ratio itself as J:RATIO (for z1 = 13, z2 = 40: "
+                             f"{text.partition(':')[0].strip()}:{40 / 13:.6g}), or a --design file with "
+                             "a \"gear\" object (gear.z1, gear.z2, gear.module_mm), which the GUI's "
+                             "File › Save writes with the Gear tab's pair and 'shaper design --design "
+                             "FILE --z1 Z1 --z2 Z2 --module M -o FILE' adds")
         return rotor_from_text(text)
     from ..gear.file import gear_from_dict
     pair = gear_from_dict(gear)
