@@ -91,25 +91,29 @@ GREEK_LINE = "μ φ Δ δ ω θ"
 
 
 @pytest.fixture(scope="module")
-def homes(tmp_path_factory):
-    """$HOME for LibreCAD: ``bare`` without fonts of a user's (Debian's LibreCAD as it is),
-    ``wqy`` with the stand-in wqy-unicode.lff of the sheet's characters and the Greek line's."""
-    bare, wqy = tmp_path_factory.mktemp("bare-home"), tmp_path_factory.mktemp("wqy-home")
-    folder = tmp_path_factory.mktemp("characters")
-    done = shaper_run_in_process("drawing", *SHEET, "-o", str(folder / "gb.dxf"))
-    assert done.returncode == 0, done.stderr
-    install_font(wqy, "".join(t[0] for t in texts(folder / "gb.dxf")) + GREEK_LINE + "θ°")
-    return {"bare": bare, "wqy": wqy}
-
-
-@pytest.fixture(scope="module")
-def sheets(tmp_path_factory, homes):
-    """The sheet's texts, and its prints: the outline DXF, and the GB DXF with and without
-    wqy-unicode.lff."""
+def sheet_files(tmp_path_factory):
+    """The A3 Chinese motion sheet as GB and outline DXF, in one folder."""
     folder = tmp_path_factory.mktemp("librecad")
     for name, font in (("gb", "gb"), ("outline", "outline")):
         done = shaper_run_in_process("drawing", *SHEET, "--cad-font", font, "-o", str(folder / f"{name}.dxf"))
         assert done.returncode == 0, done.stderr
+    return folder
+
+
+@pytest.fixture(scope="module")
+def homes(tmp_path_factory, sheet_files):
+    """$HOME for LibreCAD: ``bare`` without fonts of a user's (Debian's LibreCAD as it is),
+    ``wqy`` with the stand-in wqy-unicode.lff of the sheet's characters and the Greek line's."""
+    bare, wqy = tmp_path_factory.mktemp("bare-home"), tmp_path_factory.mktemp("wqy-home")
+    install_font(wqy, "".join(t[0] for t in texts(sheet_files / "gb.dxf")) + GREEK_LINE + "θ°")
+    return {"bare": bare, "wqy": wqy}
+
+
+@pytest.fixture(scope="module")
+def sheets(sheet_files, homes):
+    """The sheet's texts, and its prints: the outline DXF, and the GB DXF with and without
+    wqy-unicode.lff."""
+    folder = sheet_files
     ink = {"outline": printed(folder, "outline", homes["bare"]),
            "gb": printed(folder, "gb", homes["bare"]),
            "gb-wqy": printed(folder, "gb", homes["wqy"], "gb-wqy")}
