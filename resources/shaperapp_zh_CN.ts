@@ -3144,8 +3144,8 @@
         <translation>未打开设计库。</translation>
     </message>
     <message>
-        <source>These designs are damaged and were not exported:</source>
-        <translation>以下设计已损坏，未导出：</translation>
+        <source>These designs were not exported:</source>
+        <translation>以下设计未导出：</translation>
     </message>
     <message>
         <source>Could not write %1: %2</source>

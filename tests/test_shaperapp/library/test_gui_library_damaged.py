@@ -226,4 +226,8 @@ def test_an_entry_stored_before_the_sample_limit_says_it_is_too_fine(qtbot, tmp_
     pane.actions.failed.connect(failures.append)
     assert not pane.actions.open_in_model("a")
     assert "too fine: 72001 samples, limit 60000" in failures[0] and "--step 0.00601" in failures[0], failures
+    assert not pane.actions.export("a", str(tmp_path / "a.shaper.json"))         # Export says the same
+    assert "too fine: 72001 samples" in failures[1] and not (tmp_path / "a.shaper.json").exists(), failures
+    assert pane.actions.export_all(str(tmp_path / "all"))                          # the others go out
+    assert "not exported" in failures[2] and "a: too fine" in failures[2] and "damaged" not in failures[2]
     assert pane.actions.open_in_model("b")
