@@ -107,8 +107,8 @@
         <translation>轮廓（所有 CAD 软件，含 LibreCAD）</translation>
     </message>
     <message>
-        <source>How a DXF writes its texts. GB style: text in the GB fonts (gbenor.shx, gbcbig.shx), editable in AutoCAD and ZWCAD, which have them; LibreCAD draws its Chinese as dots and leaves out its Greek letters. Outlines: each character as a filled outline, drawn alike by every CAD program, LibreCAD included, but no longer editable as text; they need a font with Chinese characters (fonts-noto-cjk).</source>
-        <translation>DXF 中文字的写法。GB 样式：以国标字体（gbenor.shx、gbcbig.shx）书写的文字，在装有这些字体的 AutoCAD 和中望CAD 中可编辑；LibreCAD 会把其中的汉字画成圆点，并漏掉希腊字母。轮廓：每个字符画成填充的轮廓，所有 CAD 软件（包括 LibreCAD）显示一致，但不能再作为文字编辑；需要一种含中文字形的字体（fonts-noto-cjk）。</translation>
+        <source>How a DXF writes its texts. GB style: text in the GB fonts (gbenor.shx, gbcbig.shx), editable in AutoCAD and ZWCAD, which have them; LibreCAD draws its Chinese and Greek in its font wqy-unicode, which its Windows and macOS builds have and Debian's and Ubuntu's lack (there, Chinese as dots, no Greek letters). Outlines: each character as a filled outline, drawn alike by every CAD program, LibreCAD included, but no longer editable as text; they need a font with Chinese characters (fonts-noto-cjk).</source>
+        <translation>DXF 中文字的写法。GB 样式：以国标字体（gbenor.shx、gbcbig.shx）书写的文字，在装有这些字体的 AutoCAD 和中望CAD 中可编辑；LibreCAD 用其 wqy-unicode 字体画其中的汉字和希腊字母，其 Windows 和 macOS 版带有该字体，Debian 和 Ubuntu 版没有（在那里汉字画成圆点，希腊字母漏掉）。轮廓：每个字符画成填充的轮廓，所有 CAD 软件（包括 LibreCAD）显示一致，但不能再作为文字编辑；需要一种含中文字形的字体（fonts-noto-cjk）。</translation>
     </message>
     <message>
         <source>No font with Chinese characters is installed for the outlines: install one (on Debian/Ubuntu: fonts-noto-cjk) or choose the GB style.</source>
@@ -3204,8 +3204,8 @@
         <translation>未打开设计库。</translation>
     </message>
     <message>
-        <source>These designs are damaged and were not exported:</source>
-        <translation>以下设计已损坏，未导出：</translation>
+        <source>These designs were not exported:</source>
+        <translation>以下设计未导出：</translation>
     </message>
     <message>
         <source>Could not write %1: %2</source>
@@ -6396,6 +6396,10 @@
     <message>
         <source>%1 is not one line of text (it holds a control character or a noncharacter)</source>
         <translation>%1 不是单行文本（含有控制字符或非字符码位）</translation>
+    </message>
+    <message>
+        <source>too fine: %1 samples, limit %2; &apos;shaper library export&apos; with --step %3 writes it at a step a design file holds</source>
+        <translation>过细：%1 个采样点，上限 %2；用 &apos;shaper library export&apos; 加 --step %3 可按设计文件能容纳的步长导出</translation>
     </message>
     <message>
         <source>%1: 'spec' must be an object of design fields</source>

@@ -260,6 +260,8 @@ def probe(app: QApplication, args: argparse.Namespace, closed: list) -> dict:
         settle(app)
         view = window.library.view
         report["library"] = {"floating": window.library_dock.isFloating(),
+                             "area": window.dockWidgetArea(window.library_dock).name,
+                             "tabbed_with": [d.objectName() for d in window.tabifiedDockWidgets(window.library_dock)],
                              "frame": rect(window.frameGeometry()), "dock": rect(window.library_dock.frameGeometry()),
                              "rows_room": view.viewport().height() // max(view.verticalHeader().defaultSectionSize(), 1)}
     if args.explore:        # before the comparison, which changes the design

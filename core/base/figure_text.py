@@ -56,6 +56,52 @@ def figure_text(kind: str, value: float) -> str:
     return text[1:] if text.startswith("-") and float(text) == 0.0 else text
 
 
+# A figure's key names its unit (``core.space.figures``, the CSV and JSON keys): suffix →
+# (kind of PRECISION, unit as a table writes it). K has no unit.
+KEY_SUFFIXES = (("_kg_m2", "inertia", "kg·m²"), ("_N_m", "torque", "N·m"), ("_m_s2", "acceleration", "m/s²"),
+                ("_m_s", "speed", "m/s"), ("_deg", "angle", "°"), ("_mm", "length", "mm"))
+
+
+def _key_parts(key: str) -> tuple[str, str, str]:
+    """(name without its unit suffix and speed tag, kind, unit) of a figure key such as
+    ``a_max_m_s2`` or a sweep's ``a_max_m_s2@40``."""
+    base = key.split("@", 1)[0]
+    for suffix, kind, unit in KEY_SUFFIXES:
+        if base.endswith(suffix):
+            return base[:-len(suffix)], kind, unit
+    return base, "ratio" if base == "K" else "length", ""
+
+
+def figure_kind(key: str) -> str:
+    """The kind (``PRECISION``) a figure of ``key`` is written as: one precision per kind in
+    every table, the GUI's and the CLI's (``shaper library compare``, ``shaper optimize``)."""
+    return _key_parts(key)[1]
+
+
+def figure_name(key: str) -> str:
+    """A figure key without its unit, which its text then carries (``a_max`` for
+    ``a_max_m_s2``; ``a_max at 40 r/min`` for a sweep's ``a_max_m_s2@40``)."""
+    name, speed = _key_parts(key)[0], key.partition("@")[2]
+    return f"{name} at {speed} r/min" if speed else name
+
+
+def key_figure_text(key: str, value: float) -> str:
+    """A figure of ``key`` with its unit: ``0.4295 m/s``, ``1.4000`` for K."""
+    _, kind, unit = _key_parts(key)
+    text = figure_text(kind, value)
+    return f"{text} {unit}" if unit and text != "—" else text
+
+
+def value_text(value: float | str | None, key: str) -> str:
+    """A figure of ``key`` as ``shaper library compare``, ``list`` and ``show`` print it (and
+    the report's comparison): at the precision of its kind, as the GUI's tables write it (it
+    was 6 significant digits, 0.479993 m/s beside the Compare tab's 0.4800), a speed in
+    r/min as typed, a text figure as it is, ``—`` where a design has none."""
+    if value is None or isinstance(value, str):
+        return "—" if value is None else value
+    return f"{value:g}" if key == "rpm" else figure_text(figure_kind(key), value)
+
+
 DIMENSION_DECIMALS = 2
 """Places of a dimension's text on a drawing: CAD's DIMDEC in the GB style of
 ``core.drawing.dimensions``, trailing zeros dropped as it drops them (L1 = 100, h = 148.44)."""

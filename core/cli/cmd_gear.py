@@ -178,7 +178,8 @@ def _write_dxf(pair: GearPair, args: argparse.Namespace, labels: dict[str, str] 
     from ..drawing.gear_sheet import ENGLISH, gear_sheet   # ezdxf: only when a drawing is asked for
     from ..drawing.sheet_dxf import save_sheet_dxf
     from ..drawing.title_block import TitleBlock
-    block = TitleBlock("", f"z {pair.inputs.z1}/{pair.inputs.z2}, m {pair.inputs.module_mm:g}", "", "4/4")
+    # the pair on its own, a set of one sheet (the course design's is its fourth, "4/4")
+    block = TitleBlock("", f"z {pair.inputs.z1}/{pair.inputs.z2}, m {pair.inputs.module_mm:g}", "", "1/1")
     drawn = gear_sheet(pair, _paper(args), labels=labels or ENGLISH, block=block)
     try:
         save_sheet_dxf(drawn.sheet, args.dxf, cad_font)

@@ -26,6 +26,7 @@ from core.base.errors import FileFormatError, os_reason
 from core.space.figures import DESIGN_FIGURES, SPEED_FIGURES
 from core.base.text import terminal_text
 from ..library import Entry, Library
+from ..library.entry import too_fine
 from .cmd_library_check import check_options, run_check
 from .cmd_library_compare import compare_options, run_compare
 from .cmd_library_list import filter_help, list_options, run_list
@@ -88,6 +89,8 @@ def _export_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("-o", "--output", metavar="FILE", required=True,
                    help="the design file to write (with --all: a folder)")
     p.add_argument("--all", action="store_true", help="export every entry into the folder -o")
+    p.add_argument("--step", metavar="DEG", help="the crank-angle step the file gets, in ° (one NAME "
+                   "only): an entry stored before the design file's sample limit, at a step it holds")
 
 
 def _import_options(p: argparse.ArgumentParser) -> None:
@@ -210,10 +213,16 @@ def _entry_document(entry: Entry) -> dict[str, Any]:
 
 
 def _run_show(args: argparse.Namespace) -> int:
-    from core.space.compare import value_text
+    from core.base.figure_text import value_text
     with _open(args, create=False) as lib:
         entry = lib.get(args.name)
-    entry.document()          # a document that cannot be opened is refused, as compare and export do
+    try:
+        entry.document()      # a document that cannot be opened is refused, as compare and export do
+    except FileFormatError as exc:
+        fine = too_fine(exc)
+        if fine is None:
+            raise
+        return fail(f"NAME: {_too_fine_text(args, entry.name, fine, '')}")
     if args.json:
         print_json(_entry_document(entry))
         return 0
@@ -224,14 +233,14 @@ def _run_show(args: argparse.Namespace) -> int:
         rows.append(("figures", "computed by an older version; 'shaper library refresh' recomputes them"))
     if f.rod_side:
         rows.append(("rod side", f.rod_side))
-    rows += [(key, value_text(getattr(f, key))) for key, _, _, _ in DESIGN_FIGURES]
+    rows += [(key, value_text(getattr(f, key), key)) for key, _, _, _ in DESIGN_FIGURES]
     width = max(len(k) for k, _ in rows)
     for key, value in rows:       # the file's texts escaped: an ESC in a note drove the terminal
         print(f"{key:<{width}}  {terminal_text(value, multi_line=key == 'notes')}")
     for s in f.speeds:
         print(f"\n{s.rpm:g} r/min")
         for key, _, _, _ in SPEED_FIGURES:
-            print(f"  {key:<24}  {value_text(getattr(s, key))}")
+            print(f"  {key:<24}  {value_text(getattr(s, key), key)}")
     return 0
 
 
@@ -254,18 +263,39 @@ def _run_export(args: argparse.Namespace) -> int:
         raise UsageError("NAME: give one entry name, or --all with a folder")
     if not args.output.strip():
         raise UsageError("-o: the path is empty")
+    if args.step is not None and args.all:
+        raise UsageError("--step: give it with one entry NAME, not with --all")
+    step = number("step", args.step) if args.step is not None else None
     with _open(args, create=False) as lib:
         try:
             if args.all:
                 done = export_entries(lib, args.output)
                 for name, why in done.skipped:
-                    print(f"shaper: skipped {name!r}: {why}", file=sys.stderr)
+                    fine = too_fine(why)
+                    print(f"shaper: skipped {name!r}: "
+                          f"{why if fine is None else _too_fine_text(args, name, fine, '')}", file=sys.stderr)
                 print(f"exported {len(done.paths)} designs to {args.output}")
             else:
-                lib.export(args.name, args.output)
+                lib.export(args.name, args.output, step)
         except OSError as exc:
             raise OutputError(f"-o: cannot write {args.output}: {exc.strerror or exc}") from None
+        except FileFormatError as exc:
+            fine = too_fine(exc)
+            if fine is None:
+                raise
+            return fail(f"{'NAME' if step is None else '--step'}: {_too_fine_text(args, args.name, fine, args.output)}")
     return 0
+
+
+def _too_fine_text(args: argparse.Namespace, name: str, fine, output: str) -> str:
+    """What an entry stored before the design file's sample limit is, and the command that
+    exports it: the same library and file with the coarsest step that fits (a test runs it)."""
+    import shlex
+    library = f" --library {shlex.quote(args.library)}" if args.library is not None else ""
+    return (f"{name!r} is too fine for a design file ({fine.samples} samples, angles × speeds, at a "
+            f"step of {fine.value:g}°; the limit is {fine.limit}); export it at a coarser step: "
+            f"shaper library export {shlex.quote(name)}{library} --step {fine.coarsest:g} "
+            f"-o {shlex.quote(output or 'FILE')}")
 
 
 def _run_import(args: argparse.Namespace) -> int:

@@ -34,8 +34,13 @@ def run_check(args: argparse.Namespace, open_library: Callable[[], Library]) -> 
     with lib:
         found = lib.damaged()
         total = lib.count()
-    entries = sum(1 for entry, _ in found if entry != "file")
-    return _report(found, args.json, f"{entries} of {total} designs in {lib.path} are damaged" if found
+    fine = sum(1 for _, why in found if getattr(why, "kind", None) == "too_fine")
+    entries = sum(1 for entry, _ in found if entry != "file") - fine
+    summary = [f"{entries} of {total} designs in {lib.path} are damaged"] if entries or len(found) > fine else []
+    if fine:        # whole, but stored before the design file's sample limit
+        summary.append(f"{fine} of {total} designs in {lib.path} {'is' if fine == 1 else 'are'} too fine "
+                       "for a design file")
+    return _report(found, args.json, "; ".join(summary) if found
                    else f"no damage found in {lib.path} ({total} designs)")
 
 

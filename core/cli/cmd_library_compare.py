@@ -91,7 +91,7 @@ def print_comparison(result) -> None:
     for row in result.rows:
         line = [row.key]
         for i, value in enumerate(row.values):
-            line.append(value_text(value) + difference_text(row, i) + (" *" if i in row.best else ""))
+            line.append(value_text(value, row.key) + difference_text(row, i) + (" *" if i in row.best else ""))
         cells.append(line)
     widths = [max(len(r[i]) for r in cells) for i in range(len(head))]
     for r in cells:

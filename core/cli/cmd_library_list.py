@@ -9,26 +9,26 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any, Callable
+from typing import Callable
 
 from core.library.open import library_exists
 from core.library.query import QueryError, parse_filter, sort_sql
 
+from core.linkage.limits import MAX_FILE_SAMPLES
+from core.base.figure_text import value_text
 from core.space.figures import FIGURES_VERSION
 from ..library import Library
-from core.base.figure_text import PRECISION, figure_text
 from core.base.text import terminal_text
 from .common import UsageError, library_path, number, whole_number
 from .output import print_json
 
-LIST_COLUMNS = (("name", "name", ""), ("variant", "variant", ""), ("K", "K", "ratio"),
-                ("H mm", "stroke_mm", "length"), ("θ °", "theta_deg", "angle"),
-                ("r/min", "rpm", "{:g}"), ("v_work_max m/s", "v_work_max_m_s", "speed"),
-                ("v_return_max m/s", "v_return_max_m_s", "speed"), ("a_max m/s²", "a_max_m_s2", "acceleration"),
-                ("J_F kg·m²", "flywheel_inertia_kg_m2", "inertia"), ("modified", "modified", ""))
-"""Each column's head, key and how its figure is written: a kind of core.base.figure_text
-(the one precision every table writes it in: H 312.632 mm and J_F 837.7 kg·m², as the
-answer key and the report print them, not 312.63 and 837.74), else a format."""
+# (heading, key, a figure?): a figure at its kind's precision (core.base.figure_text.value_text),
+# as the GUI's table writes it
+LIST_COLUMNS = (("name", "name", False), ("variant", "variant", False), ("K", "K", True),
+                ("H mm", "stroke_mm", True), ("θ °", "theta_deg", True),
+                ("r/min", "rpm", True), ("v_work_max m/s", "v_work_max_m_s", True),
+                ("v_return_max m/s", "v_return_max_m_s", True), ("a_max m/s²", "a_max_m_s2", True),
+                ("J_F kg·m²", "flywheel_inertia_kg_m2", True), ("modified", "modified", False))
 
 
 def filter_help() -> str:
@@ -83,10 +83,16 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         print(f"shaper: note: {stale} of the {len(rows)} designs listed "
               f"{'has' if stale == 1 else 'have'} figures an older version computed; "
               "'shaper library refresh' recomputes them", file=sys.stderr)
-    damaged = sum(1 for row in rows if row["damaged"])
+    fine = sum(1 for row in rows if _too_fine(row))
+    damaged = sum(1 for row in rows if row["damaged"]) - fine
     if damaged:
         print(f"shaper: note: {damaged} of the {len(rows)} designs listed {'is' if damaged == 1 else 'are'} "
               "damaged (what cannot be read shows as —); 'shaper library check' says why", file=sys.stderr)
+    if fine:
+        print(f"shaper: note: {fine} of the {len(rows)} designs listed {'is' if fine == 1 else 'are'} "
+              f"too fine for a design file (stored before its limit of {MAX_FILE_SAMPLES} samples, "
+              "angles × speeds); 'shaper library check' gives each one's samples and the step "
+              "'shaper library export NAME --step DEG -o FILE' needs", file=sys.stderr)
     if args.json:
         print_json(rows)
         return 0
@@ -95,9 +101,10 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
         return 0
     cells = [[head for head, _, _ in LIST_COLUMNS]]
     for row in rows:
-        cells.append([_cell(row[key], fmt) for _, key, fmt in LIST_COLUMNS])
+        cells.append(["—" if row[key] is None else value_text(row[key], key) if figure
+                      else terminal_text(str(row[key])) for _, key, figure in LIST_COLUMNS])
         if row["damaged"]:
-            cells[-1][0] += " (damaged)"
+            cells[-1][0] += " (too fine)" if _too_fine(row) else " (damaged)"
     widths = [max(len(r[i]) for r in cells) for i in range(len(LIST_COLUMNS))]
     for r in cells:
         print("  ".join(c.ljust(w) if i in (0, 1, len(r) - 1) else c.rjust(w)
@@ -105,9 +112,7 @@ def run_list(args: argparse.Namespace, open_library: Callable[..., Library]) -> 
     return 0
 
 
-def _cell(value: Any, how: str) -> str:
-    if value is None:
-        return "—"
-    if how in PRECISION:
-        return figure_text(how, float(value))
-    return how.format(value) if how else terminal_text(str(value))
+def _too_fine(row) -> bool:
+    """Whether the listed entry is whole but finer than a design file holds (its damage's
+    kind ``too_fine``: stored before the limit), not damaged."""
+    return getattr(row["damaged"], "kind", None) == "too_fine"

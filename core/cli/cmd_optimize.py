@@ -5,6 +5,7 @@ import argparse
 from typing import TYPE_CHECKING, Any
 
 from core.base.errors import DesignError
+from core.base.figure_text import figure_name, key_figure_text
 from core.space.names import OBJECTIVES, PARAMETERS, UNITLESS
 from .cmd_sweep import _number, figure_columns, inputs
 from .cmd_synth import design_summary
@@ -81,10 +82,10 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(doc)
         return 0
-    unit = doc["objective_unit"]
-    start = "invalid" if best.start_value is None else f"{best.start_value:.6g} {unit}"
+    objective = OBJECTIVE_KEYS[best.objective]         # its figure: one precision per kind
+    start = "invalid" if best.start_value is None else key_figure_text(objective, best.start_value)
     rows = [("objective", f"{best.objective} ({OBJECTIVES[best.objective][0]})"),
-            ("optimum", f"{best.value:.6g} {unit}"), ("design as given", start)]
+            ("optimum", key_figure_text(objective, best.value)), ("design as given", start)]
     if not best.improves:       # no proposal: the design as given stands
         flat = [typed[i] for i, name in enumerate(best.names) if name in best.insensitive]
         rows = rows[:1] + rows[2:] + [("result", doc["no_gain"])]
@@ -97,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
     # ("%.6g") put an optimum on the edge of validity outside it: K 1.00199 for 1.0019921,
     # which shaper analyze then refused ("must be ≥ 1.002").
     values, _ = tidy_optimum(spec, best, bounds, rpms, masses)
-    rows += [(name, given_text(values[best.names[i]]) + ("" if name in UNITLESS else " mm")
+    rows += [(f"{name} (input)", given_text(values[best.names[i]]) + ("" if name in UNITLESS else " mm")
               + (f"  (at the {doc['on_bound'][name]} bound: the best design may lie beyond it; "
                  "widen the range)" if name in doc["on_bound"] else ""))
              for i, name in enumerate(typed)]
@@ -107,6 +108,20 @@ def run(args: argparse.Namespace) -> int:
              ("guide above lever pivot", f"{design['guide_mm']:.3f} mm")]
     if design["rod_mm"] is not None:
         rows.append(("rod BC L4", f"{design['rod_mm']:.3f} mm ({design['rod_side']})"))
-    rows += [(name, "" if value is None else f"{value:.6g}") for name, value in doc["figures"].items()]
+    rows += [figure_row(key, value) for key, value in doc["figures"].items()]
     print_table(rows)
     return 0
+
+
+# the figure each objective minimises (figure_columns' key: its kind and unit)
+OBJECTIVE_KEYS = {"pressure-angle": "pressure_angle_max_deg", "accel": "a_max_m_s2",
+                  "peak-torque": "max_torque_N_m", "flywheel": "flywheel_inertia_kg_m2"}
+# figure_columns' keys named as ``shaper analyze`` names them, where an input has the same name
+MEASURED = {"K": "measured K", "stroke_mm": "measured stroke", "theta_deg": "θ"}
+
+
+def figure_row(key: str, value: float | None) -> tuple[str, str]:
+    """(label, text) of one figure of the optimum as the table prints it: at its kind's
+    precision with its unit (``core.base.figure_text``, as ``analyze`` and the GUI write
+    it), K and the stroke marked measured, apart from the inputs above them ("K (input)")."""
+    return MEASURED.get(key) or figure_name(key), "" if value is None else key_figure_text(key, value)

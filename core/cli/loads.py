@@ -100,10 +100,14 @@ def rotor(text: str, doc: dict[str, Any] | None, args: argparse.Namespace | None
     elif doc is not None and doc.get("gear") is not None:
         from ..gear.file import gear_from_dict
         pair = gear_from_dict(doc["gear"])
-    else:
-        options = "--z1, --z2 and --module, or " if args is not None and hasattr(args, "z1") else ""
-        raise UsageError(f"--rotor: {text!r} takes the gear pair's ratio, but no gear pair was given "
-                         f"({options}a --design file with one)")
+    else:       # what to give, each of which works as said (test_cli_loads_task_book.py)
+        options = "--z1, --z2 and --module, " if args is not None and hasattr(args, "z1") else ""
+        which = "no --design file was given" if doc is None else "the --design file has no gear pair"
+        raise UsageError(f"--rotor: {text!r} takes the ratio z2/z1 of the gear pair, and {which}: give "
+                         f"the ratio itself as J:RATIO (for z1 = 13, z2 = 40: {text.partition(':')[0].strip()}:"
+                         f"{40 / 13:.6g}), {options}or a --design file with a \"gear\" object (gear.z1, gear.z2, "
+                         "gear.module_mm), which the GUI's File › Save writes with the Gear tab's pair and "
+                         "'shaper design --design FILE --z1 Z1 --z2 Z2 --module M -o FILE' adds")
     return rotor_from_text(text, pair.z2 / pair.z1)
 
 

@@ -129,8 +129,9 @@ def add_cad_font_option(parser) -> None:
     from ..drawing import CAD_FONTS     # here, not at the top: output.py serves every command,
                                         # and `shaper curves` loads no drawing package
     parser.add_argument("--cad-font", choices=CAD_FONTS,
-                        help="how the DXF writes its texts: gb (default), as text in the GB style "
-                             "(gbenor.shx, gbcbig.shx) for AutoCAD and ZWCAD; outline, as the "
+                        help="how the DXF writes its texts: gb (default), as text in the GB fonts "
+                             "(gbenor.shx, gbcbig.shx) for AutoCAD and ZWCAD (LibreCAD: its "
+                             "wqy-unicode font, where it has it); outline, as the "
                              "glyphs' filled outlines (Noto Sans CJK), which LibreCAD draws too, "
                              "not editable as text")
 

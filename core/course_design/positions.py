@@ -24,7 +24,7 @@ from core.linkage.designs import Designs
 from core.forces.dynamics import solve_dynamics
 from core.forces.masses import MassProperties
 from core.linkage.cut import cut_window
-from core.files.dynamics_io import dynamics_table
+from core.files.dynamics_io import FLAG_COLUMNS, dynamics_table
 from core.base.errors import DesignError, require_finite
 from core.linkage.geometry import Design
 from core.files.io import curve_table, finite_or_none, snap_zeros, table_csv
@@ -173,13 +173,20 @@ def table_rows(table: PositionTable) -> list[tuple[int | None, str]]:
 
 def table_records(table: PositionTable) -> list[dict[str, Any]]:
     """One JSON-ready object per row: position, name, then every column (NaN → null),
-    round-off zeros as 0 as in the CSV (:func:`core.files.io.snap_zeros`)."""
+    round-off zeros as 0 as in the CSV (:func:`core.files.io.snap_zeros`); a yes/no column
+    (``FLAG_COLUMNS``, 1/0 in the CSV, whose header says so) as true/false: it was 0.0/1.0."""
     out = []
     for (number, name), values in zip(table_rows(table), snap_zeros(table.data)):
         record: dict[str, Any] = {"position": number, "name": name}
-        record.update({c: finite_or_none(float(v)) for c, v in zip(table.columns, values)})
+        record.update({c: _flag(v) if c in FLAG_COLUMNS else finite_or_none(float(v))
+                       for c, v in zip(table.columns, values)})
         out.append(record)
     return out
+
+
+def _flag(value: float) -> bool | None:
+    """A yes/no column's value in JSON: true, false, or null where it is undefined."""
+    return None if not math.isfinite(value) else bool(value)
 
 
 def positions_csv(table: PositionTable) -> str:

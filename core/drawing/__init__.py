@@ -6,7 +6,7 @@ sheet are painted by the GUI package from the same sheet description.
 """
 
 # How a DXF writes its texts (``--cad-font``; here, free of ezdxf, for the CLI's options):
-# "gb", TEXT entities in the GB style (editable; AutoCAD and ZWCAD draw them with
-# gbenor.shx/gbcbig.shx), or "outline", the filled outlines of a CJK TrueType font
+# "gb", TEXT entities in the GB styles (editable; AutoCAD and ZWCAD draw them with
+# gbenor.shx/gbcbig.shx, LibreCAD in its wqy-unicode font: ``core.drawing.dxf``), or "outline", the filled outlines of a CJK TrueType font
 # (``core.drawing.outline_text``), which every CAD program draws alike, LibreCAD too.
 CAD_FONTS = ("gb", "outline")

@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING
 
 from core.base.figure_text import DIMENSION_DECIMALS
 
-from .dxf import DIMENSIONS, TEXT_STYLE
+from .dxf import DIMENSIONS, UNICODE_STYLE
 from .sheet import standard_scale
 
 if TYPE_CHECKING:
@@ -54,7 +54,7 @@ def add_dimstyle(doc: Drawing, scale: float = 1.0, text_mm: float = DIM_TEXT_MM)
         "dimexe": 2.0 * n, "dimexo": 0.0, "dimgap": 1.0 * n, "dimdli": 7.0 * n,
         "dimtad": 1, "dimtih": 0, "dimtoh": 0, "dimjust": 0,
         "dimdec": DECIMALS, "dimzin": 8, "dimdsep": ord("."), "dimlunit": 2,
-        "dimaunit": 0, "dimadec": DECIMALS, "dimazin": 2, "dimtxsty": TEXT_STYLE,
+        "dimaunit": 0, "dimadec": DECIMALS, "dimazin": 2, "dimtxsty": UNICODE_STYLE,
     }
     doc.dimstyles.new(DIMSTYLE, dxfattribs=dict(attribs))
     # The drawing's current dimension variables too: LibreCAD draws every dimension from
@@ -69,14 +69,16 @@ _ON_LAYER = {"layer": DIMENSIONS}
 # Each dimension is rendered at once: its block is what CAD shows before it measures again.
 
 
-def _render(dim, override: dict | None, location) -> None:
+def _render(dim, override: dict | None, location):
     """Apply a drawing's own ``override`` (e.g. DIMLFAC for a sheet drawn at 1:n) and text
-    ``location`` (where the drawing's layout put the text), then render the block."""
+    ``location`` (where the drawing's layout put the text), then render the block; the
+    DIMENSION entity."""
     if override:
         dim.dimstyle_attribs.update(override)
     if location is not None:
         dim.set_location(tuple(float(v) for v in location[:2]))
     dim.render()
+    return dim.dimension
 
 
 def reading_order(p1, p2, offset: float, up: bool = False):
@@ -92,12 +94,12 @@ def reading_order(p1, p2, offset: float, up: bool = False):
 
 
 def aligned(msp, p1, p2, offset: float, name: str, up: bool = False, *,
-            override: dict | None = None, location=None, text: str | None = None) -> None:
+            override: dict | None = None, location=None, text: str | None = None):
     """``name = |p1p2|`` measured along p1→p2, its line ``offset`` mm to the left of p1→p2
     (with ``up``: on the upper side), in :func:`reading_order`; ``text`` replaces CAD's
-    own "name = <>"."""
+    own "name = <>". The DIMENSION entity."""
     (x1, y1), (x2, y2), offset = reading_order(p1, p2, offset, up)
-    _render(msp.add_aligned_dim(p1=(x1, y1), p2=(x2, y2), distance=float(offset), text=text or f"{name} = <>",
+    return _render(msp.add_aligned_dim(p1=(x1, y1), p2=(x2, y2), distance=float(offset), text=text or f"{name} = <>",
                                 dimstyle=DIMSTYLE, dxfattribs=_ON_LAYER), override, location)
 
 

@@ -71,6 +71,17 @@ TEXT_STYLE = "GB"
 # its own font; the text stays text.
 TEXT_FONT = "gbenor.shx"
 TEXT_BIGFONT = "gbcbig.shx"
+UNICODE_STYLE = "wqy-unicode"
+# The style of every text with a character beyond Latin-1 (Chinese, Greek, −, ′): the same
+# fonts as GB for AutoCAD, ZWCAD and GstarCAD, which draw a text in its style's font files.
+# LibreCAD 2.2 ignores those and draws a text in the LibreCAD font named like its *style*
+# (lowercased; a name it lacks falls back to its standard font, which has no Chinese or Greek:
+# the GB style's Chinese printed as dots, its Greek not at all). wqy-unicode.lff is the
+# font with simplified Chinese and Greek that LibreCAD's own builds for Windows and macOS
+# ship (Fedora and openSUSE make it from WenQuanYi Micro Hei with LibreCAD's ttf2lff);
+# Debian's librecad-data 2.2.0 lacks it, and none of its 46 fonts has 61 of the sheets'
+# 212 characters beyond ASCII (驱, 动, 转, 轮 …). Texts within Latin-1 stay in GB, which
+# LibreCAD's standard font draws.
 TEXT_HEIGHTS_MM = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)   # GB/T 14691's series
 TEXT_WIDTH = 0.7                            # GB/T 14691's long-fang-song proportion
 
@@ -87,19 +98,27 @@ def new_document() -> Drawing:
     for name, layer in LAYERS.items():
         doc.layers.add(name, color=layer.color, linetype=layer.linetype,
                        lineweight=layer.lineweight)
-    style = doc.styles.add(TEXT_STYLE, font=TEXT_FONT)
-    style.dxf.bigfont = TEXT_BIGFONT
-    style.dxf.width = TEXT_WIDTH            # what CAD gives text a user adds
+    for name in (TEXT_STYLE, UNICODE_STYLE):
+        style = doc.styles.add(name, font=TEXT_FONT)
+        style.dxf.bigfont = TEXT_BIGFONT
+        style.dxf.width = TEXT_WIDTH        # what CAD gives text a user adds
     doc.header["$TEXTSTYLE"] = TEXT_STYLE
     return doc
 
 
-def text_attribs(layer: str = TEXT) -> dict[str, object]:
-    """A TEXT entity's attributes: the layer, the GB style, and the style's width factor on
-    the entity itself. Why: CAD draws a TEXT at its own width factor (group 41, default 1),
-    not its style's, so without it every text came out wider than the sheet's layout
-    reckons, and a subscript ran into its letter."""
-    return {"layer": layer, "style": TEXT_STYLE, "width": TEXT_WIDTH}
+def text_style(text: str) -> str:
+    """The text style of a TEXT showing ``text``: GB within Latin-1, else
+    :data:`UNICODE_STYLE` (the same fonts in AutoCAD; in LibreCAD, its font with Chinese
+    and Greek, which the GB style's stand-in lacks)."""
+    return TEXT_STYLE if all(ord(ch) <= 0xFF for ch in text) else UNICODE_STYLE
+
+
+def text_attribs(layer: str = TEXT, text: str = "") -> dict[str, object]:
+    """A TEXT entity's attributes: the layer, the style for ``text`` (:func:`text_style`),
+    and the style's width factor on the entity itself. Why: CAD draws a TEXT at its own
+    width factor (group 41, default 1), not its style's, so without it every text came out
+    wider than the sheet's layout reckons, and a subscript ran into its letter."""
+    return {"layer": layer, "style": text_style(text), "width": TEXT_WIDTH}
 
 
 def literal_text(text: str) -> str:

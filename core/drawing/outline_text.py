@@ -5,7 +5,9 @@ Chinese CAD installations (gbenor.shx with the big font gbcbig.shx). AutoCAD and
 them; LibreCAD 2.2 has neither and no font with the simplified Chinese of the sheets: its
 own fonts (``/usr/share/librecad/fonts/*.lff``) lack 64 of the 267 characters of the four
 Chinese sheets at best (kst32b.lff: 驱, 动, 转, ≥ …; unicode.lff far more), and it draws a
-missing character as a dot. It also takes the font from the style's *name*, not its file.
+missing character as a dot. It also takes the font from the style's *name*, not its file
+(so the GB DXF names its Chinese texts' style after LibreCAD's wqy-unicode.lff, which
+Debian's LibreCAD lacks: ``core.drawing.dxf.UNICODE_STYLE``).
 A text drawn as its glyphs' outlines (HATCH entities, solid fill, layer TEXT) prints the
 same in every CAD program; it is no longer editable as text, which the GB style keeps.
 A DIMENSION rendered with CAD's own measurement ("<>", the scheme's) gets the text of its

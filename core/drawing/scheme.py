@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from ezdxf import bbox
@@ -27,12 +27,14 @@ from ezdxf.document import Drawing
 from ezdxf.enums import TextEntityAlignment
 
 from core.base.errors import DesignError, require_range
+from core.base.figure_text import dimension_text
 from core.linkage.geometry import Design
 from core.linkage.kinematics import shape
 from . import dimensions as dims
 from .dxf import CENTER, DASHED, OUTLINE, THIN, new_document, save_dxf, text_attribs
-from .outline_text import add_outline_text, outline_dimension_texts
-from .sheet import Text
+from .labels import boxes_meet
+from .outline_text import ATTACHMENTS, add_outline_text, outline_dimension_texts
+from .sheet import Text, text_width
 
 UNITS_PER_LEVER = 40.0       # u = L3 / 40
 ROOM_MM = dims.A3_ROOM_MM    # an A3 sheet's drawing area: the scale a print would use
@@ -85,8 +87,8 @@ def scheme_document(design: Design, angle_deg: float = 0.0, cad_font: str = "gb"
     scale = dims.print_scale(size.x, size.y)
     dims.add_dimstyle(doc, scale)
     outline = cad_font == "outline"
-    _draw_labels(msp, design, p, scale, outline)
-    _draw_dimensions(msp, design, p, lay, scale, extents.extmin.x)
+    labels = _draw_labels(msp, design, p, scale, outline)
+    _draw_dimensions(msp, design, p, lay, scale, extents.extmin.x, labels)
     if outline:
         outline_dimension_texts(msp)
     whole = bbox.extents(msp)
@@ -217,7 +219,7 @@ def _draw_links(msp, design: Design, p: Pose, lay: _Layout) -> None:
                   (x1 - 1.9 * u, y0 - 2.9 * u)])                     # tool bit
 
 
-def _draw_labels(msp, design: Design, p: Pose, scale: float, outline: bool = False) -> None:
+def _draw_labels(msp, design: Design, p: Pose, scale: float, outline: bool = False) -> list[Text]:
     """O2, O4, A, B (and C) beside their pins, clear of the links' lines and of L3's
     dimension (on the side of the lever away from O2): A and B on O2's side, A moved
     along the lever away from the crank; O4 on O2's side too, above the line that carries
@@ -236,12 +238,14 @@ def _draw_labels(msp, design: Design, p: Pose, scale: float, outline: bool = Fal
               "B": p.b + toward_o2 * (gap + 1.5 * u)}
     if design.rod is not None:
         places["C"] = p.c + np.array([0.0, -(gap + 1.5 * u)])
-    for name, at in places.items():
+    labels = [Text(name, tuple(map(float, at)), height, "cm") for name, at in places.items()]
+    for label in labels:
         if outline:
-            add_outline_text(msp, Text(name, tuple(map(float, at)), height, "cm"))
+            add_outline_text(msp, label)
         else:
-            msp.add_text(name, height=height, dxfattribs=text_attribs()) \
-                .set_placement(tuple(map(float, at)), align=TextEntityAlignment.MIDDLE_CENTER)
+            msp.add_text(label.text, height=height, dxfattribs=text_attribs(text=label.text)) \
+                .set_placement(label.position, align=TextEntityAlignment.MIDDLE_CENTER)
+    return labels
 
 
 def _away_from_o2(design: Design, p: Pose) -> np.ndarray:
@@ -251,18 +255,16 @@ def _away_from_o2(design: Design, p: Pose) -> np.ndarray:
 
 
 def _draw_dimensions(msp, design: Design, p: Pose, lay: _Layout, scale: float,
-                     left: float) -> None:
+                     left: float, labels: list[Text]) -> None:
     """L2 and h as a vertical chain left of everything, L1 as the crank circle's radius
-    where no line meets it, L3 beside the lever on the side away from O2, L4 along the rod,
-    H under the tool path and θ between the lever's limit positions."""
+    where no line meets it, L3 beside the lever on the side away from O2, its text clear
+    of the others' and of the ``labels`` (:func:`_clear_l3_text`), L4 along the rod, H
+    under the tool path and θ between the lever's limit positions."""
     gap = 10.0 * scale                                            # 10 mm on paper
     chain = left - gap
     dims.linear(msp, (0.0, 0.0), p.o2, (chain, 0.0), 90.0, "L2")
     dims.linear(msp, p.o2, (lay.rail[0], design.guide), (chain, 0.0), 90.0, "h")
     dims.aligned(msp, p.o2, p.o2 + design.crank * _l1_direction(design, p), 0.0, "L1")
-    left_of_lever = np.array([-p.b[1], p.b[0]]) / design.lever
-    side = float(np.dot(left_of_lever, _away_from_o2(design, p)))        # ±1
-    dims.aligned(msp, (0.0, 0.0), p.b, side * gap, "L3")
     if design.rod is not None:
         # above the ram and its guide way: below the rod the lever runs down from B
         rise = design.guide + lay.high + 0.7 * p.u + gap - float(p.b[1])
@@ -273,6 +275,47 @@ def _draw_dimensions(msp, design: Design, p: Pose, lay: _Layout, scale: float,
     right, left_tip = sorted(p.lever_limits, key=lambda t: -t[0])
     radius = 0.6 * (design.frame - design.crank)
     dims.angular(msp, (0.0, 0.0), right, left_tip, (0.0, radius), "θ")
+    left_of_lever = np.array([-p.b[1], p.b[0]]) / design.lever
+    side = float(np.dot(left_of_lever, _away_from_o2(design, p)))        # ±1
+    taken = [t.box() for t in labels + [_dimension_text(msp, d) for d in msp.query("DIMENSION")]]
+    l3 = dims.aligned(msp, (0.0, 0.0), p.b, side * gap, "L3")
+    along = p.b / design.lever
+    shift = _clear_l3_text(design, along, _dimension_text(msp, l3), taken)
+    if shift:               # again, its text moved along its line clear of the others
+        mid = l3.dxf.text_midpoint
+        msp.doc.blocks.delete_block(l3.dxf.geometry, safe=False)
+        msp.delete_entity(l3)
+        dims.aligned(msp, (0.0, 0.0), p.b, side * gap, "L3",
+                     location=(mid.x + shift * along[0], mid.y + shift * along[1]))
+
+
+def _dimension_text(msp, dim) -> Text:
+    """A rendered DIMENSION's text as its block shows it (ezdxf's MTEXT), for its box."""
+    mtext = next(iter(msp.doc.blocks.get(dim.dxf.geometry).query("MTEXT")))
+    insert = mtext.dxf.insert
+    return Text(mtext.plain_text(), (insert.x, insert.y), mtext.dxf.char_height,
+                ATTACHMENTS[mtext.dxf.attachment_point], mtext.get_rotation())
+
+
+def _clear_l3_text(design: Design, along: np.ndarray, text: Text, taken: list) -> float:
+    """How far (mm, along ``along``: toward B +, toward O4 −) L3's ``text`` moves along its
+    dimension line so that its box meets none of the ``taken`` boxes (the joints' names and
+    the other dimensions' texts): the smallest move in steps of a twentieth of L3, toward B
+    first at equal length, the text kept on its line; 0 where it is clear, or where no
+    step is. Why: with L2 near L3/2 (K 1.4, H 400) the middle of L3's line lies by O2, and
+    at φ = 100° "L3 = 772.74" stood over "L1 = 100" (the screen's label search keeps them
+    apart; the DXF places its texts by rule)."""
+    if not any(boxes_meet(text.box(), box) for box in taken):
+        return 0.0
+    half = 0.5 * text_width(text.text, text.height)
+    step = design.lever / 20.0
+    for shift in (sign * k * step for k in range(1, 10) for sign in (1.0, -1.0)):
+        if abs(shift) + half > 0.5 * design.lever:
+            continue
+        moved = replace(text, position=tuple(map(float, np.add(text.position, shift * along))))
+        if not any(boxes_meet(moved.box(), box) for box in taken):
+            return shift
+    return 0.0
 
 
 def _o2_label_direction(design: Design, p: Pose) -> np.ndarray:

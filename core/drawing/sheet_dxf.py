@@ -93,14 +93,16 @@ def sheet_document(sheet: Sheet, cad_font: str = "gb") -> Drawing:
 
 def add_sheet_text(msp, item: Text, cad_font: str = "gb",
                    to: Callable[[float, float], tuple[float, float]] = as_drawn, k: float = 1.0) -> None:
-    """A sheet's text (subscripts as ``r_0``) in ``cad_font``: "gb", each run a TEXT in the GB
-    style, a subscript a smaller text of its own; "outline", the glyphs as filled outlines.
-    ``to`` and ``k`` map paper mm to the drawing's (by default its own coordinates)."""
+    """A sheet's text (subscripts as ``r_0``) in ``cad_font``: "gb", each run a TEXT in its GB
+    style (``dxf.text_style``), a subscript a smaller text of its own; "outline", the glyphs
+    as filled outlines. ``to`` and ``k`` map paper mm to the drawing's (by default its own
+    coordinates)."""
     if cad_font == "outline":
         add_outline_text(msp, item, to, k)
         return
+    attribs = text_attribs(item.layer, item.text)     # one style for all of the text's runs
     for run in item.runs():
-        text = add_text(msp, literal_text(run.text), run.height * k, run.rotation, text_attribs(item.layer))
+        text = add_text(msp, literal_text(run.text), run.height * k, run.rotation, attribs)
         text.set_placement(to(*run.position), align=ALIGNMENTS[run.align])
 
 

@@ -26,7 +26,7 @@ from core.space.figures import FIGURES_VERSION, Figures, SpeedFigures, figures
 from core.files.atomic import atomic_write
 
 from .backup import snapshot_to
-from .entry import Entry, check_document, document_text
+from .entry import Entry, check_document, document_text, with_step
 from .names import check_name, check_notes, check_tags, lookup_name, unique_name
 from .open import connect
 from .query import Condition, condition_sql, parse_filter, search_sql, sort_sql
@@ -307,11 +307,15 @@ class Library:
                                    self.path)
             insert_entry(c, changed)
 
-    def export(self, name: str, path: str | os.PathLike) -> None:
-        """Write ``name`` as a design file (atomically); OSError if it cannot be written."""
+    def export(self, name: str, path: str | os.PathLike, step_deg: float | None = None) -> None:
+        """Write ``name`` as a design file (atomically), at the crank-angle step ``step_deg``
+        (°) when given (:func:`entry.with_step`: an entry stored before the file's sample
+        limit); OSError if it cannot be written. The entry in the library stays as it is."""
         entry = self.get(name)
-        entry.document()                  # never export what could not be opened again
-        atomic_write(path, entry.text + "\n")
+        text = entry.text if step_deg is None else with_step(entry.name, entry.text, step_deg)
+        if step_deg is None:
+            entry.document()              # never export what could not be opened again
+        atomic_write(path, text + "\n")
 
     def backup(self, target: str | os.PathLike | None = None) -> Path:
         """A consistent copy of the whole library (SQLite's online backup), written by the

@@ -68,6 +68,36 @@ def check_document(name: str, text: str) -> None:
     parse_design(text.encode("utf-8"), f"library entry {name!r}", name)
 
 
+def too_fine(exc: BaseException):
+    """The ``TooManySamples`` behind ``exc`` (a document refused only because its step gives
+    more samples than a design file holds: an entry stored before that limit), or None."""
+    from core.linkage.limits import TooManySamples
+    cause = getattr(exc, "cause", None)
+    return cause if isinstance(cause, TooManySamples) else None
+
+
+def with_step(name: str, text: str, step_deg: float) -> str:
+    """The stored document ``text`` at the crank-angle step ``step_deg`` (°), every other key
+    as it is; FileFormatError if the result is no design file (the step too fine still, or
+    the document refused for another reason). Why: ``shaper library export --step`` gets
+    an entry stored before the sample limit out at a step a design file may hold; the
+    library itself is not changed."""
+    try:
+        check_document(name, text)
+    except Exception as exc:            # noqa: BLE001 — only a too fine step is set right here
+        if too_fine(exc) is None:
+            raise
+    doc = json.loads(text)
+    doc["step_deg"] = step_deg
+    new = json.dumps(doc, indent=2, ensure_ascii=False)
+    try:
+        new.encode("utf-8")
+    except UnicodeEncodeError:          # a lone surrogate, kept as a JSON escape (document_text)
+        new = json.dumps(doc, indent=2, ensure_ascii=True)
+    check_document(name, new)
+    return new
+
+
 def distinct_speeds(speeds: Sequence[SpeedFigures]) -> list[SpeedFigures]:
     """The speeds without repeats (a document may list one speed twice), first one kept."""
     out: list[SpeedFigures] = []

@@ -19,6 +19,8 @@ from typing import Any, Callable, Iterable, Iterator, Sequence, TypeVar
 from core.space.figures import DESIGN_KEYS, SPEED_KEYS
 from core.base.text import CONTROL
 
+from .entry import too_fine
+
 T = TypeVar("T")
 
 # what each column must hold: "text", "number" or "integer"; "?" after it: may be NULL
@@ -44,6 +46,8 @@ DAMAGE_TEXTS = {
     "no_document": "there is no design document",
     "document_not_utf8": "the design document is not UTF-8 text",
     "document_refused": "its design document cannot be opened ({cause})",
+    "too_fine": "too fine: {cause.samples} samples, limit {cause.limit}; 'shaper library export' "
+                "with --step {cause.coarsest:g} writes it at a step a design file holds",
     "not_one_line": "{key} is not one line of text (it holds a control character or a noncharacter)",
 }
 
@@ -211,7 +215,8 @@ def document_damage(name: str, text: str, check_document: Callable[[str, str], N
     try:
         check_document(name, text)
     except Exception as exc:          # noqa: BLE001 — any refusal is the reason
-        return Damage("document_refused", cause=exc)
+        fine = too_fine(exc)          # whole, but stored before the sample limit
+        return Damage("document_refused", cause=exc) if fine is None else Damage("too_fine", cause=fine)
     return None
 
 

@@ -83,8 +83,21 @@ def check_file_samples(step: float, n_speeds: int) -> int:
     message names the limit as the file's and the coarsest step that fits."""
     samples = angle_count(step) * int(n_speeds)
     if samples > MAX_FILE_SAMPLES:
-        speeds = "1 speed" if int(n_speeds) == 1 else f"{int(n_speeds)} speeds"
-        raise DesignError("step", step, f"gives {samples} samples (angles × speeds) with {speeds}, more "
-                          f"than a design file holds ({MAX_FILE_SAMPLES}); use a step of at least "
-                          f"{smallest_step(n_speeds, MAX_FILE_SAMPLES):g}°")
+        raise TooManySamples(step, samples, int(n_speeds))
     return samples
+
+
+class TooManySamples(DesignError):
+    """:func:`check_file_samples`' refusal, with what a front end says of it and offers:
+    ``samples`` (angles × speeds), ``limit`` (:data:`MAX_FILE_SAMPLES`) and ``coarsest``,
+    the finest step that fits with these speeds (° rounded up to 3 digits). Why a class: a
+    library entry stored before the limit is whole but too fine, not damaged, and
+    ``shaper library export --step`` writes it at a step that fits."""
+
+    def __init__(self, step: float, samples: int, n_speeds: int) -> None:
+        self.samples, self.limit = samples, MAX_FILE_SAMPLES
+        self.coarsest = smallest_step(n_speeds, MAX_FILE_SAMPLES)
+        speeds = "1 speed" if n_speeds == 1 else f"{n_speeds} speeds"
+        super().__init__("step", step, f"gives {samples} samples (angles × speeds) with {speeds}, more "
+                         f"than a design file holds ({MAX_FILE_SAMPLES}); use a step of at least "
+                         f"{self.coarsest:g}°")

@@ -24,6 +24,7 @@ from typing import Any, Iterator, Sequence
 
 import numpy as np
 
+from core.base.figure_text import figure_kind, figure_text, value_text  # noqa: F401 (compare's text)
 from core.forces.dynamics import solve_dynamics
 from core.forces.masses import MassProperties, masses_for_design
 from core.base.errors import DesignError
@@ -186,20 +187,15 @@ def best_indices(values: Sequence[float | None], better: str | None) -> tuple[in
 
 
 # ---- text ----------------------------------------------------------------------
-def value_text(value: Any) -> str:
-    """A figure as ``shaper library compare`` prints it (and the report): 6 significant
-    digits, a text figure as it is, ``—`` where a design has none."""
-    return "—" if value is None else value if isinstance(value, str) else f"{value:.6g}"
-
-
 def difference_text(row: Row, index: int) -> str:
     """What follows design ``index``'s value: its difference from the first design in
-    brackets, `` (=)`` within round-off, ``''`` for the first design or no difference."""
+    brackets at the row's precision (``+62.763``), `` (=)`` within round-off, ``''`` for
+    the first design or no difference."""
     diff = row.differences[index]
     if index == 0 or diff is None or isinstance(row.values[index], str):
         return ""
     tiny = abs(diff) <= 1e-9 * max(1.0, abs(row.values[0]))
-    return " (=)" if tiny else f" ({diff:+.4g})"
+    return " (=)" if tiny else f" ({'+' if diff > 0 else ''}{figure_text(figure_kind(row.key), diff)})"
 
 
 # ---- export --------------------------------------------------------------------

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
 
 CONTENTS = ("motion", "forces", "cam", "gear")
 SHEET_NUMBER = {"motion": "1/4", "forces": "2/4", "cam": "3/4", "gear": "4/4"}   # the course design's sheets
+ALONE = "1/1"       # a sheet printed on its own, outside the course design's set (the Gear tab's, shaper gear's)
 DEFAULT_PAPER = {"gear": "A2"}      # the meshing drawing's usual paper; the others A1
 SHEET_SUFFIXES = (".pdf", ".svg", ".dxf")
 
@@ -47,12 +48,13 @@ class SheetChoice:
     supervisor: str = ""
     gear: "GearPair | None" = None  # the meshing sheet's pair (shaper gear's options)
     speed: int = 0                  # which of the design's speeds the sheet is drawn at (0: the first)
+    sheet_number: str = ""          # "n/m" of the title block; "": the course design's (SHEET_NUMBER)
 
     def title_block(self, title: str, design_name: str, rpm: float | None = None) -> TitleBlock:
         """The title block's fields of this choice (its scale is the sheet's to fill in), with
         the crank speed ``rpm`` the sheet is drawn at (None for a sheet of no speed)."""
         from core.drawing.title_block import TitleBlock
-        return TitleBlock(title, design_name, "", SHEET_NUMBER[self.content], self.drawn, self.date,
+        return TitleBlock(title, design_name, "", self.sheet_number or SHEET_NUMBER[self.content], self.drawn, self.date,
                           self.school, number=self.number, group=self.group,
                           supervisor=self.supervisor, speed="" if rpm is None else speed_text(rpm))
 

@@ -89,14 +89,17 @@ class GearTab(PartTab):
         """The meshing sheet of the pair on screen (PDF, SVG or DXF by the suffix), built
         and written by the drawing sheets' code (``shaper drawing --content gear``), in the
         UI's language; a DXF's texts in ``cad_font`` (``--cad-font``)."""
-        from shaperapp.drawing.content import DEFAULT_PAPER, SheetChoice, build_sheet
+        from shaperapp.drawing.content import ALONE, DEFAULT_PAPER, SheetChoice, build_sheet
         from shaperapp.drawing.render import write_sheet
         suffix = os.path.splitext(path)[1].lower()
         if suffix not in SHEET_SUFFIXES:
             raise ValueError(self.tr("%1 is not a PDF, SVG or DXF file name").replace("%1", os.path.basename(path)))
         design = self.gear_model.design_model
+        # the pair on its own, not the course design's fourth sheet: a set of one ("4/4" claimed
+        # three sheets that were not printed)
         choice = SheetChoice("gear", paper or DEFAULT_PAPER["gear"], design_name=design.source_name,
-                             date=datetime.date.today().isoformat(), gear=self.gear_model.pair)
+                             date=datetime.date.today().isoformat(), gear=self.gear_model.pair,
+                             sheet_number=ALONE)
         sheet = build_sheet(design.valid_spec, design.rpms, None, choice)
         language = "zh_CN" if QLocale().language() == QLocale.Language.Chinese else "en"
         write_sheet(sheet, path, language, design.source_name, cad_font)

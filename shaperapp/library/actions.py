@@ -25,6 +25,8 @@ from core.library import Entry, Library
 from core.library.files import export_entries, import_entries, read_design_files
 from core.library.names import check_name, unique_name
 from core.library.backup import backup_copy
+from core.library.entry import too_fine
+from core.library.rows import Damage
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
@@ -208,8 +210,8 @@ class LibraryActions(QObject):
         skipped: list[tuple[str, LibraryError | FileFormatError]] = []
         done = self._export(lambda lib: skipped.extend(export_entries(lib, folder).skipped), folder)
         if done and skipped:
-            self.failed.emit(self.tr("These designs are damaged and were not exported:") + "\n" + "\n".join(
-                f"{name}: {describe_file_error(why) if isinstance(why, FileFormatError) else self.message(why)}"
+            self.failed.emit(self.tr("These designs were not exported:") + "\n" + "\n".join(
+                f"{name}: {refusal_text(why) if isinstance(why, FileFormatError) else self.message(why)}"
                 for name, why in skipped[:20]))
         return done
 
@@ -217,7 +219,7 @@ class LibraryActions(QObject):
         try:
             return self._run(work)
         except (OSError, FileFormatError) as exc:
-            detail = describe_os_error(exc) if isinstance(exc, OSError) else describe_file_error(exc)
+            detail = describe_os_error(exc) if isinstance(exc, OSError) else refusal_text(exc)
             self.failed.emit(self.tr("Could not write %1: %2").replace("%1", path).replace("%2", detail))
             return False
 
@@ -230,7 +232,7 @@ class LibraryActions(QObject):
             doc = self.library.load(name)
             figures(doc["spec"], doc["rpm"], doc["masses"])
         except FileFormatError as exc:
-            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe_file_error(exc)))
+            self.failed.emit(self.tr("Could not open the design: %1").replace("%1", refusal_text(exc)))
             return False
         except DesignError as exc:
             self.failed.emit(self.tr("Could not open the design: %1").replace("%1", describe(exc)))
@@ -295,6 +297,15 @@ class LibraryActions(QObject):
         if text is None:
             return self.tr("Could not use the library: %1").replace("%1", str(error))
         return text.replace("%1", path)
+
+
+def refusal_text(exc: FileFormatError) -> str:
+    """Why an entry's design cannot be opened or exported, in the UI's language: an entry
+    stored before the design file's sample limit says it is too fine and the step that
+    exports it (``shaper library export --step``), not the design file's "use a step of at
+    least …", which no field of the pane takes."""
+    fine = too_fine(exc)
+    return describe_file_error(exc) if fine is None else describe_damage(Damage("too_fine", cause=fine))
 
 
 class _Reported(Exception):

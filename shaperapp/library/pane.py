@@ -13,7 +13,7 @@ import os
 from PySide6.QtCore import QEvent, QSettings, Qt, QTimer, Signal
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QFileDialog, QHBoxLayout, QInputDialog,
-                               QLabel, QLineEdit, QMessageBox, QPushButton, QToolBar,
+                               QLabel, QLineEdit, QMessageBox, QPushButton, QSizePolicy, QToolBar,
                                QVBoxLayout, QWidget)
 
 from core.space.compare import MAX_DESIGNS
@@ -47,6 +47,10 @@ class LibraryPane(QWidget):
 
         self.path_label = QLabel()
         self.path_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        # the path is cut where the pane is narrower (its tooltip holds it whole): at its full
+        # width it made the pane at least as wide as the library's path (482 px for a path
+        # in /tmp), too wide to dock beside the Results at 1366 × 768
+        self.path_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         self.change_button = QPushButton()
         self.change_button.clicked.connect(self.choose_library_dialog)
         self.search_edit = QLineEdit()

@@ -39,7 +39,7 @@ def comparison_table(result: Comparison) -> Table:
     for row in result.rows:
         cells = []
         for k, value in enumerate(row.values):
-            text = variant_label(value) if isinstance(value, str) else value_text(value)
+            text = variant_label(value) if isinstance(value, str) else value_text(value, row.key)
             cells.append(("★ " if k in row.best else "") + text + difference_text(row, k))
         rows.append([figure_label(row.key)] + cells)
     return Table([translate("Report", "Figure")] + list(result.labels), rows,

@@ -97,8 +97,10 @@ class CadFontChoice(QComboBox):
         # in <p>: rich text, which Qt wraps (a plain tooltip this long ran off the screen)
         self.setToolTip("<p>" + html.escape(self.tr(
             "How a DXF writes its texts. GB style: text in the GB fonts (gbenor.shx, gbcbig.shx), "
-            "editable in AutoCAD and ZWCAD, which have them; LibreCAD draws its Chinese as dots "
-            "and leaves out its Greek letters. Outlines: each character as a filled outline, drawn "
+            "editable in AutoCAD and ZWCAD, which have them; LibreCAD draws its Chinese and Greek "
+            "in its font wqy-unicode, which its Windows and macOS builds have and Debian's and "
+            "Ubuntu's lack (there, Chinese as dots, no Greek letters). Outlines: each character "
+            "as a filled outline, drawn "
             "alike by every CAD program, LibreCAD included, but no longer editable as text; they "
             "need a font with Chinese characters (fonts-noto-cjk).")) + "</p>")
         stored = stored_cad_font(settings) if settings is not None else "gb"

@@ -6,7 +6,7 @@ import math
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
-from core.base.figure_text import figure_text
+from core.base.figure_text import figure_kind, figure_text
 
 _LABELS = {
     "name": QT_TRANSLATE_NOOP("figures", "Name"),
@@ -86,18 +86,3 @@ def format_figure(key: str, value: object) -> str:
     if key == "rpm":
         return f"{value:g}"
     return figure_text(figure_kind(key), float(value))
-
-
-def figure_kind(key: str) -> str:
-    """The kind of ``core.base.figure_text`` a figure key is written as (one precision per kind)."""
-    if key in ("mean_torque_N_m", "max_torque_N_m"):
-        return "torque"
-    if key == "flywheel_inertia_kg_m2":
-        return "inertia"
-    if key == "K":
-        return "ratio"
-    if key.endswith("_m_s2"):
-        return "acceleration"
-    if key.endswith("_m_s"):
-        return "speed"
-    return "angle" if key.endswith("_deg") else "length"

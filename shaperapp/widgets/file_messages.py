@@ -132,10 +132,14 @@ def describe_damage(damage: str) -> str:
         "document_not_utf8": QCoreApplication.translate("messages", "the design document is not UTF-8 text"),
         "document_refused": QCoreApplication.translate("messages", "its design document cannot be opened (%1)"),
         "not_one_line": QCoreApplication.translate("messages", "%1 is not one line of text (it holds a control character or a noncharacter)"),
+        "too_fine": QCoreApplication.translate("messages", "too fine: %1 samples, limit %2; 'shaper library export' with --step %3 writes it at a step a design file holds"),
     }
     if kind not in templates:
         return str(damage)
     cause = damage.cause
+    if kind == "too_fine":          # whole, stored before the design file's sample limit
+        return re.sub(r"%([123])", lambda m: (str(cause.samples), str(cause.limit), f"{cause.coarsest:g}")[
+            int(m.group(1)) - 1], templates[kind])
     if kind == "document_refused":
         value = describe_file_error(cause) if isinstance(cause, FileFormatError) else \
             failure_reason(cause) if isinstance(cause, Exception) else ""

@@ -21,11 +21,12 @@ from .state import FRAME_ALLOWANCE, available
 
 WIDE = 1600                 # px: from this window width on, every pane has its own place
 # The library docked under the plots gets what the plots can spare: opened shorter than
-# LIBRARY_MIN_PX it is given LIBRARY_SHARE of the window, and where docking it would make
-# the window taller than the screen it floats (``Docks._fit_library``).
+# LIBRARY_MIN_PX it is given LIBRARY_SHARE of the window, and where docking it there would
+# make the window taller than the screen it is a tab beside the Results (``Docks._fit_library``).
 LIBRARY_MIN_PX = 280
 LIBRARY_SHARE = 0.45
 LIBRARY_FLOAT = QSize(1000, 560)    # the floating library on a screen too short to dock it
+LIBRARY_TAB_SHARE = 0.6     # of the window's height, the library tabbed beside the Results: 5 rows at 1280×720
 # On a laptop the mechanism takes this share of the height above the tabbed results and
 # vector diagrams (0.54 left the polygons a 147 px canvas at 1366×768).
 MECHANISM_SHARE = 0.47
@@ -90,15 +91,24 @@ class Docks:
 
     def _fit_library(self) -> None:
         """Docked under the plots on a laptop screen the library made the window taller
-        than the screen (1366×768: 810 px): it floats over the window instead, and the
-        window comes back onto the screen. Docked but too short to list a row, it is
-        made taller."""
+        than the screen (1366×768: 810 px): it docks as a tab beside the Results instead
+        (floats over the window only when neither the Results nor the vector diagrams are
+        docked at a side), and the window comes back onto the screen. Docked but too short
+        to list a row, it is made taller."""
         dock, w = self.docks["library"], self._window
         if not dock.isVisible() or dock.isFloating():
             return
         screen = available(w)
         room = screen.height() - FRAME_ALLOWANCE.height()
-        if w.minimumSizeHint().height() > room:
+        beside = next((d for d in (self.docks["results"], self.docks["polygons"])
+                       if d.isVisible() and not d.isFloating() and w.dockWidgetArea(d) in (LEFT, RIGHT)), None)
+        if w.minimumSizeHint().height() > room and beside is not None:
+            # no room under the plots: a tab beside the Results (tabbed with the vector
+            # diagrams on a laptop), where the panes dock; it floated over the window
+            w.tabifyDockWidget(beside, dock)
+            dock.raise_()
+            QTimer.singleShot(0, w, lambda: self._tab_height(room))     # once laid out as a tab
+        elif w.minimumSizeHint().height() > room:
             dock.setFloating(True)
             size = QSize(min(LIBRARY_FLOAT.width(), int(screen.width() * 0.8)),
                          min(LIBRARY_FLOAT.height(), int(screen.height() * 0.7)))
@@ -108,7 +118,15 @@ class Docks:
             QTimer.singleShot(0, w, lambda: self._back_on_screen(room))   # once the window's
             # layout has dropped the dock's minimum height
         elif dock.height() < LIBRARY_MIN_PX:
-            w.resizeDocks([dock], [max(LIBRARY_MIN_PX, int(w.height() * LIBRARY_SHARE))], VERTICAL)
+            w.resizeDocks([dock], [int(w.height() * LIBRARY_TAB_SHARE)], VERTICAL)
+
+    def _tab_height(self, room: int) -> None:
+        """The library's tab group given LIBRARY_TAB_SHARE of the window, the window on the screen."""
+        w, h = self._window, self._window.height()
+        # both sizes: given the library's alone, Qt took a third of the change from it
+        w.resizeDocks([self.docks["mechanism"], self.docks["library"]],
+                      [int(h * (1.0 - LIBRARY_TAB_SHARE)), int(h * LIBRARY_TAB_SHARE)], VERTICAL)
+        self._back_on_screen(room)
 
     def _back_on_screen(self, room: int) -> None:
         w, screen = self._window, available(self._window)

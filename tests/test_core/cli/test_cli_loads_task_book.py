@@ -136,3 +136,25 @@ def test_cam_help_says_the_return_allowance_default_and_why():
     text = " ".join(out.split())
     default = CamInputs().return_pressure_deg
     assert f"(default {default:g}: the follower returns unloaded" in text
+
+
+def test_the_j_gear_refusal_says_where_the_gear_pair_goes_and_that_works(tmp_path):
+    """``--rotor J:gear`` without a gear pair said only that none was given. It now says what
+    to give: the ratio itself, or a design file with a "gear" object, which ``shaper design
+    --design FILE --z1 --z2 --module`` adds; done as it says, the same command runs."""
+    plain = tmp_path / "plain.shaper.json"
+    status, _, err = shaper_in_process("design", *SEED, *TASK_BOOK, "-o", str(plain))
+    assert status == 0, err
+    for given in (("--design", str(plain)), SEED + TASK_BOOK):
+        status, _, err = shaper_in_process("dynamics", *given, "--rotor", "0.03:gear")
+        lines = err.strip().splitlines()
+        assert status == 2 and len(lines) == 1 and lines[0].startswith("shaper: error: --rotor:"), err
+        assert "J:RATIO" in err and "gear.z1, gear.z2, gear.module_mm" in err, err
+        assert "shaper design --design FILE --z1 Z1 --z2 Z2 --module M -o FILE" in err, err
+    geared = tmp_path / "geared.shaper.json"
+    status, _, err = shaper_in_process("design", "--design", str(plain), "--z1", "17", "--z2", "68",
+                                       "--module", "4", "-o", str(geared))
+    assert status == 0, err
+    status, out, err = shaper_in_process("dynamics", "--design", str(geared), "--rotor", "0.03:gear", "--json")
+    assert status == 0, err
+    assert json.loads(out)["inputs"]["rotors"] == [{"J_kg_m2": 0.03, "speed_ratio": 4.0}]

@@ -6,6 +6,8 @@ import re
 
 import pytest
 
+from core.base.figure_text import figure_text
+
 from cli_runner import shaper_run_in_process as shaper
 
 ROD = ["--crank", "110", "--K", "1.46", "--stroke", "312.6", "--rod-ratio", "0.25", "--guide", "sagitta",
@@ -26,13 +28,16 @@ def test_an_optimum_on_the_edge_of_validity_is_printed_inside_it():
     be ≥ 1.002 …"). Typed as printed, it is a design, and as good as the optimum."""
     run = shaper("optimize", *ROD, "--objective", "accel", "--vary", "K=1:5")
     assert run.returncode == 0, run.stderr
-    k = row(run.stdout, "K")
+    k = row(run.stdout, "K (input)")
     assert re.fullmatch(r"[0-9.]+", k), k
-    optimum = float(row(run.stdout, "optimum").split()[0])
+    optimum = row(run.stdout, "optimum")
     typed = [w if w != "1.46" else k for w in ROD]
     check = shaper("analyze", *typed, "--json")
     assert check.returncode == 0, check.stderr
-    assert json.loads(check.stdout)["speeds"][0]["a_max_m_s2"] == pytest.approx(optimum, rel=1e-5)
+    # the optimum at analyze's precision of an acceleration (one precision per kind)
+    a_max = json.loads(check.stdout)["speeds"][0]["a_max_m_s2"]
+    assert optimum == f"{figure_text('acceleration', a_max)} m/s²", (optimum, a_max)
+    assert row(run.stdout, "a_max") == optimum                # the figure rows say the same
 
 
 def test_the_flywheel_objective_is_j_f_not_the_flywheel_needed():
@@ -52,4 +57,4 @@ def test_the_flywheel_objective_is_j_f_not_the_flywheel_needed():
     text = shaper(*args).stdout
     objective = row(text, "objective")
     assert "J_F" in objective and "needed" not in objective
-    assert re.match(r"[0-9.]+ mm\b", row(text, "rod"))          # a varied length with its unit
+    assert re.match(r"[0-9.]+ mm\b", row(text, "rod (input)"))  # a varied length with its unit

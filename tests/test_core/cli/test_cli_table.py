@@ -92,3 +92,17 @@ def test_csv_to_file(tmp_path):
     target = tmp_path / "t.csv"
     assert shaper("table", *DESIGN, "--rpm", "40", "--csv", target).returncode == 0
     assert target.read_text().startswith("position,name,rpm,crank_deg,time_s,")
+
+
+def test_json_writes_the_tilt_flag_as_true_or_false_where_the_csv_has_1_or_0():
+    """A JSON flag is true/false: ``guide_tilted`` was 0.0/1.0. The CSV keeps 1/0 (its
+    header's documented form), row for row the same."""
+    from cli_runner import shaper_in_process
+    args = ("table", *DESIGN, "--rpm", "40", *LOADS)
+    status, out, err = shaper_in_process(*args, "--json")
+    assert status == 0, err
+    flags = [r["guide_tilted"] for r in json.loads(out)]
+    assert all(type(f) is bool for f in flags) and True in flags and False in flags, flags
+    status, out, err = shaper_in_process(*args, "--csv", "-")
+    assert status == 0, err
+    assert [r["guide_tilted"] for r in rows(out)] == ["1" if f else "0" for f in flags]

@@ -50,3 +50,31 @@ def test_faulty_document_is_refused_before_anything_is_written(tmp_path):
     with pytest.raises(dxf.DxfAuditError):
         dxf.save_dxf(doc, path)
     assert path.read_text() == "old"
+
+
+def test_texts_beyond_latin_1_name_the_font_librecad_has_for_them(tmp_path):
+    """Every text of a Chinese sheet with a character beyond Latin-1 (Chinese, Greek, −) is in
+    the style wqy-unicode, the rest in GB, all runs of one text alike; both styles name the GB
+    fonts (what AutoCAD, ZWCAD and GstarCAD draw with), and so does the dimensions' text
+    style. LibreCAD draws a text in its font named like the style: GB gave its standard
+    font, without Chinese or Greek (test_cad_font_in_librecad.py prints both)."""
+    from tests.cli_runner import shaper_run_in_process
+    done = shaper_run_in_process("drawing", "--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40",
+                                 "--lang", "zh", "--sheet", "A3", "-o", str(tmp_path / "m.dxf"))
+    assert done.returncode == 0, done.stderr
+    doc = ezdxf.readfile(tmp_path / "m.dxf")
+    for name in (dxf.TEXT_STYLE, dxf.UNICODE_STYLE):
+        style = doc.styles.get(name)
+        assert (style.dxf.font, style.dxf.bigfont, style.dxf.width) == ("gbenor.shx", "gbcbig.shx", 0.7)
+    from core.drawing.dimensions import DIMSTYLE
+    assert doc.dimstyles.get(DIMSTYLE).dxf.dimtxsty == dxf.UNICODE_STYLE
+    styles = {}
+    for text in doc.modelspace().query("TEXT"):
+        styles.setdefault(text.dxf.style, set()).add(text.dxf.text)
+    wide = [t for t in styles[dxf.TEXT_STYLE] if any(ord(ch) > 0xFF for ch in t)]
+    assert not wide, wide
+    assert any("曲柄" in t for t in styles[dxf.UNICODE_STYLE])
+    assert any("μ" in t for t in styles[dxf.UNICODE_STYLE])
+    latin = {t for t in styles[dxf.UNICODE_STYLE] if all(ord(ch) <= 0xFF for ch in t)}
+    assert latin, "a subscript run of a Chinese text keeps its text's style"
+    assert len(styles[dxf.TEXT_STYLE]) > 20                    # the figures and the axes' ticks

@@ -132,8 +132,10 @@ def test_dxf_model_coordinates_and_involute_flanks(name, tmp_path):
         assert _involute_spread(flank_pts, rb, 2 * math.pi / z) < 1e-9 * gear.ra
         assert rho.max() == pytest.approx(gear.ra, rel=1e-9) and rho.min() == pytest.approx(gear.rf, rel=1e-9)
     texts = [t.dxf.text for t in msp.query("TEXT")]
-    # the sheet's name, on one line or broken at its space (as in the PDF)
-    assert (ENGLISH["title"] in texts or set(ENGLISH["title"].split()) <= set(texts)) and "4/4" in texts
+    # the sheet's name, on one line or broken at its space (as in the PDF); shaper gear's sheet
+    # is the pair alone, a set of one ("4/4" is the course design's, shaper drawing --content gear)
+    assert (ENGLISH["title"] in texts or set(ENGLISH["title"].split()) <= set(texts))
+    assert "1/1" in texts and "4/4" not in texts
     assert {t.dxf.layer for t in msp.query("TEXT")} <= {"TEXT", "TITLE"}
 
 

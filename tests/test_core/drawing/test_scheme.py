@@ -202,3 +202,61 @@ def test_only_dxf_is_written(name, tmp_path):
         scheme.write_scheme(BLOCK, 0.0, path)
     assert err.value.parameter == "output"
     assert not path.exists()
+
+
+def _text_rectangles(doc) -> list[tuple[str, np.ndarray]]:
+    """Each text of the scheme as the rectangle it covers (corners, model mm): the joints'
+    names (TEXT, centred) and every DIMENSION's text as its block shows it (MTEXT at its
+    attachment point and rotation), each as wide as ``--cad-font outline`` draws it."""
+    from core.drawing.outline_text import ATTACHMENTS, OutlineFontMissing, drawn_width, outline_font
+    from core.drawing.sheet import Text
+    try:
+        font = outline_font()
+    except OutlineFontMissing:
+        pytest.skip("no CJK font for the outlines (fonts-noto-cjk)")
+
+    def corners(text, x, y, h, align, rotation):
+        w = drawn_width(Text(text, (x, y), h, align, rotation), font)
+        dx = {"l": 0.0, "c": -w / 2, "r": -w}[align[0]]
+        dy = {"b": 0.0, "m": -h / 2, "t": -h}[align[1]]
+        c, s = math.cos(math.radians(rotation)), math.sin(math.radians(rotation))
+        return np.array([(x + c * px - s * py, y + s * px + c * py)
+                         for px, py in ((dx, dy), (dx + w, dy), (dx + w, dy + h), (dx, dy + h))])
+    msp, out = doc.modelspace(), []
+    for dim in msp.query("DIMENSION"):
+        for m in doc.blocks.get(dim.dxf.geometry).query("MTEXT"):
+            out.append((m.plain_text(), corners(m.plain_text(), m.dxf.insert.x, m.dxf.insert.y, m.dxf.char_height,
+                                                ATTACHMENTS[m.dxf.attachment_point], m.get_rotation())))
+    for t in msp.query("TEXT"):
+        p = t.get_placement()[1]
+        out.append((t.dxf.text, corners(t.dxf.text, p.x, p.y, t.dxf.height, "cm", t.dxf.rotation)))
+    return out
+
+
+def _meet(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether two convex quadrilaterals overlap (no separating axis among their edges' normals)."""
+    for poly in (a, b):
+        for i in range(4):
+            edge = poly[(i + 1) % 4] - poly[i]
+            normal = np.array([-edge[1], edge[0]])
+            pa, pb = a @ normal, b @ normal
+            if pa.max() <= pb.min() or pb.max() <= pa.min():
+                return False
+    return True
+
+
+@pytest.mark.parametrize("angle", [110.0, 280.0])
+def test_l3s_text_keeps_off_the_other_texts(angle):
+    """K 1.4, H 400 (L2 near L3/2: the middle of L3's line lies by O2): at φ = 110° and 280°
+    "L3 = 772.74" stood over "L1 = 100" (and at 105° and 285° over O2), as a LibreCAD print
+    of the outline DXF showed at 100°. Its text now moves along its line; no two texts of
+    the scheme overlap, and L3's text stays on its line between O4 and B."""
+    design = synthesize(crank=100.0, time_ratio=1.4, stroke=400.0)
+    doc = scheme.scheme_document(design, angle)
+    rects = _text_rectangles(doc)
+    hits = [(a, b) for i, (a, ra) in enumerate(rects) for b, rb in rects[i + 1:] if _meet(ra, rb)]
+    assert not hits, hits
+    l3 = next(r for t, r in rects if t.startswith("L3"))
+    b = scheme.pose(design, angle).b
+    along = float(np.dot(l3.mean(axis=0), b / design.lever))
+    assert 0.0 < along < design.lever

@@ -1,12 +1,17 @@
 """A Chinese sheet's DXF as LibreCAD 2.2 prints it (issue 40, item 7).
 
-LibreCAD has neither the GB style's gbenor.shx/gbcbig.shx nor a font with the sheets'
-simplified Chinese: with ``--cad-font gb`` (the default, for AutoCAD and ZWCAD) it drew every
-Chinese character as a small dot and left every Greek letter out. With ``--cad-font outline``
-the texts are their glyphs' filled outlines. The test prints an A3 motion sheet in Chinese
-through ``librecad dxf2pdf`` and looks at the ink where the sheet put its texts (known from
-the same sheet's GB DXF, whose TEXT entities carry each text's place, height and alignment):
-a character is as tall as the text and fills its cell as a glyph does, not as a dot.
+LibreCAD has neither the GB style's gbenor.shx/gbcbig.shx nor reads a style's font files: it
+draws a text in its font named like the text's *style*. In the style GB (its standard font)
+it drew every Chinese character as a small dot and left every Greek letter out. The
+``--cad-font gb`` DXF now writes every text beyond Latin-1 in the style ``wqy-unicode`` (the
+same fonts for AutoCAD), the font with Chinese and Greek that LibreCAD's own Windows and macOS
+builds ship; Debian's LibreCAD lacks it, so the tests print with a stand-in made from Noto
+Sans CJK SC in ``$HOME/.librecad/fonts`` (``tests/librecad_font.py``), and with an empty
+``$HOME``, where the dots remain. With ``--cad-font outline`` the texts are their glyphs'
+filled outlines. The test prints an A3 motion sheet in Chinese through ``librecad dxf2pdf``
+and looks at the ink where the sheet put its texts (known from the same sheet's GB DXF, whose
+TEXT entities carry each text's place, height and alignment): a character is as tall as the
+text and fills its cell as a glyph does, not as a dot.
 """
 from __future__ import annotations
 
@@ -21,11 +26,13 @@ import pytest
 from core.drawing.sheet import text_width
 
 from tests.cli_runner import shaper_run_in_process
+from tests.librecad_font import have_noto_cjk, install_font
 
 pytestmark = [pytest.mark.slow,
               pytest.mark.skipif(shutil.which("librecad") is None or shutil.which("pdftoppm") is None,
                                  reason="librecad or poppler-utils not installed "
-                                        "(apt-get install librecad poppler-utils)")]
+                                        "(apt-get install librecad poppler-utils)"),
+              pytest.mark.skipif(not have_noto_cjk(), reason="no Noto Sans CJK (fonts-noto-cjk)")]
 SHEET = ("--crank", "100", "--K", "1.4", "--stroke", "300", "--rpm", "40", "--lang", "zh",
          "--sheet", "A3", "--positions", "6")
 PAPER = (420.0, 297.0)           # A3 landscape, mm
@@ -37,16 +44,20 @@ def _wide(ch: str) -> bool:
     return unicodedata.east_asian_width(ch) in "WF"
 
 
-def printed(tmp_path, name: str) -> np.ndarray:
-    """``name``.dxf printed by LibreCAD and rasterized: dark pixels, rows from the top, cut
+def printed(tmp_path, name: str, home, label: str | None = None) -> np.ndarray:
+    """``name``.dxf printed by LibreCAD with ``home`` as $HOME (a user's fonts are in its
+    .librecad/fonts), as ``label``.pdf, and rasterized: dark pixels, rows from the top, cut
     to the sheet's trimmed edge (its outermost lines), so that paper mm map to pixels."""
-    env = {**os.environ, "QT_QPA_PLATFORM": "offscreen"}
-    subprocess.run(["librecad", "dxf2pdf", "-a", f"{name}.dxf"], cwd=tmp_path, env=env, check=True,
+    label = label or name
+    if label != name:
+        shutil.copyfile(tmp_path / f"{name}.dxf", tmp_path / f"{label}.dxf")
+    env = {**os.environ, "QT_QPA_PLATFORM": "offscreen", "HOME": str(home)}
+    subprocess.run(["librecad", "dxf2pdf", "-a", f"{label}.dxf"], cwd=tmp_path, env=env, check=True,
                    capture_output=True, timeout=120)
-    subprocess.run(["pdftoppm", "-r", str(DPI), "-gray", "-png", "-singlefile", f"{name}.pdf", name],
+    subprocess.run(["pdftoppm", "-r", str(DPI), "-gray", "-png", "-singlefile", f"{label}.pdf", label],
                    cwd=tmp_path, check=True, timeout=120)
     from PIL import Image
-    ink = np.asarray(Image.open(tmp_path / f"{name}.png").convert("L")) < 160
+    ink = np.asarray(Image.open(tmp_path / f"{label}.png").convert("L")) < 160
     rows, cols = np.flatnonzero(ink.any(axis=1)), np.flatnonzero(ink.any(axis=0))
     return ink[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1]
 
@@ -76,13 +87,37 @@ def cell(ink: np.ndarray, x0: float, x1: float, y: float, h: float) -> np.ndarra
     return ink[top:bottom, int(x0 * sx):int(np.ceil(x1 * sx)) + 1]
 
 
+GREEK_LINE = "μ φ Δ δ ω θ"
+
+
 @pytest.fixture(scope="module")
-def sheets(tmp_path_factory):
+def sheet_files(tmp_path_factory):
+    """The A3 Chinese motion sheet as GB and outline DXF, in one folder."""
     folder = tmp_path_factory.mktemp("librecad")
     for name, font in (("gb", "gb"), ("outline", "outline")):
         done = shaper_run_in_process("drawing", *SHEET, "--cad-font", font, "-o", str(folder / f"{name}.dxf"))
         assert done.returncode == 0, done.stderr
-    return texts(folder / "gb.dxf"), {name: printed(folder, name) for name in ("gb", "outline")}
+    return folder
+
+
+@pytest.fixture(scope="module")
+def homes(tmp_path_factory, sheet_files):
+    """$HOME for LibreCAD: ``bare`` without fonts of a user's (Debian's LibreCAD as it is),
+    ``wqy`` with the stand-in wqy-unicode.lff of the sheet's characters and the Greek line's."""
+    bare, wqy = tmp_path_factory.mktemp("bare-home"), tmp_path_factory.mktemp("wqy-home")
+    install_font(wqy, "".join(t[0] for t in texts(sheet_files / "gb.dxf")) + GREEK_LINE + "θ°")
+    return {"bare": bare, "wqy": wqy}
+
+
+@pytest.fixture(scope="module")
+def sheets(sheet_files, homes):
+    """The sheet's texts, and its prints: the outline DXF, and the GB DXF with and without
+    wqy-unicode.lff."""
+    folder = sheet_files
+    ink = {"outline": printed(folder, "outline", homes["bare"]),
+           "gb": printed(folder, "gb", homes["bare"]),
+           "gb-wqy": printed(folder, "gb", homes["wqy"], "gb-wqy")}
+    return texts(folder / "gb.dxf"), ink
 
 
 def chinese_coverage(ink: np.ndarray, found) -> tuple[int, list[str]]:
@@ -103,24 +138,25 @@ def chinese_coverage(ink: np.ndarray, found) -> tuple[int, list[str]]:
     return checked, dotted
 
 
-def test_chinese_texts_print_as_glyphs_in_librecad(sheets):
+@pytest.mark.parametrize("print_", ["outline", "gb-wqy"])
+def test_chinese_texts_print_as_glyphs_in_librecad(sheets, print_):
+    """The outline DXF anywhere; the GB DXF where LibreCAD has wqy-unicode.lff (its style
+    GB printed every one of these texts as dots)."""
     found, ink = sheets
-    checked, dotted = chinese_coverage(ink["outline"], found)
+    checked, dotted = chinese_coverage(ink[print_], found)
     assert checked >= 8, checked            # the table's and the title block's words
     assert not dotted, dotted
 
 
-def test_the_gb_style_prints_dots_in_librecad(sheets):
-    """The measure tells dots from glyphs: the GB DXF (LibreCAD's stand-in font) fails it."""
+def test_without_wqy_unicode_the_gb_dxf_prints_dots_in_librecad(sheets):
+    """The measure tells dots from glyphs: the GB DXF in a LibreCAD without wqy-unicode.lff
+    (Debian's; it falls back to its standard font) fails it."""
     found, ink = sheets
     checked, dotted = chinese_coverage(ink["gb"], found)
     assert checked >= 8 and len(dotted) >= 0.9 * checked, (checked, dotted)
 
 
-GREEK_LINE = "μ φ Δ δ ω θ"
-
-
-def little_sheet(tmp_path, cad_font: str) -> np.ndarray:
+def little_sheet(tmp_path, cad_font: str, home) -> np.ndarray:
     """An A3 sheet of two texts at known places, printed by LibreCAD: the Greek letters of
     the sheets (7 mm, left at x = 40, baseline y = 200) and μ with the index l (μ_l, 7 mm,
     at x = 40, y = 150), the way the sheets write a scale's name."""
@@ -131,27 +167,28 @@ def little_sheet(tmp_path, cad_font: str) -> np.ndarray:
     items = frame_items(paper) + [Text(GREEK_LINE, (40.0, 200.0), 7.0),
                                   Text(text, (40.0, 150.0), 7.0, subscripts=spans)]
     save_sheet_dxf(Sheet(paper, tuple(items)), tmp_path / f"{cad_font}.dxf", cad_font)
-    return printed(tmp_path, cad_font)
+    return printed(tmp_path, cad_font, home)
 
 
 @pytest.mark.parametrize("cad_font", ["outline", "gb"])
-def test_greek_letters_print_in_librecad(tmp_path, cad_font):
-    """Each Greek letter of the sheets has ink where it stands; LibreCAD left every one out
-    of the GB DXF, which the test shows too (its line printed no ink at all)."""
-    ink = little_sheet(tmp_path, cad_font)
+def test_greek_letters_print_in_librecad(tmp_path, homes, cad_font):
+    """Each Greek letter of the sheets has ink where it stands, in the GB DXF where LibreCAD
+    has wqy-unicode.lff too: it left every one out of the GB DXF when they were in the style
+    GB (its line printed no ink at all)."""
+    ink = little_sheet(tmp_path, cad_font, homes["wqy"])
     line = cell(ink, 30.0, 150.0, 198.0, 11.0)
     columns = np.flatnonzero(line.any(axis=0))
     letters = np.split(columns, np.flatnonzero(np.diff(columns) > 3) + 1) if columns.size else []
     mm_per_px = 25.4 / DPI
     heights = [np.ptp(np.flatnonzero(line[:, g].any(axis=1))) * mm_per_px for g in letters]
     glyphs = [h for h in heights if h > 0.6 * 7.0]        # a dot is a fraction of the height
-    assert len(glyphs) == (len(GREEK_LINE.split()) if cad_font == "outline" else 0), heights
+    assert len(glyphs) == len(GREEK_LINE.split()), heights
 
 
-def test_a_subscript_sits_by_its_letter_in_librecad(tmp_path):
+def test_a_subscript_sits_by_its_letter_in_librecad(tmp_path, homes):
     """μ_l: the index begins within a quarter of the text's height after μ's ink ends (the
     runs are closed up by the outline font's own widths, as in the PDF)."""
-    ink = little_sheet(tmp_path, "outline")
+    ink = little_sheet(tmp_path, "outline", homes["bare"])
     word = cell(ink, 30.0, 80.0, 146.0, 12.0)
     columns = np.flatnonzero(word.any(axis=0))
     gaps = np.diff(columns)
@@ -179,12 +216,15 @@ def leftmost_glyph(path) -> tuple[float, float, float, float]:
     return first.extmin.x, first.extmin.y, first.extmax.x, first.extmax.y
 
 
-def test_the_schemes_theta_prints_in_librecad(tmp_path):
+def test_the_schemes_theta_prints_in_librecad(tmp_path, homes):
     """``--content scheme --cad-font outline``: LibreCAD prints the θ of the swing's angle
     dimension where the outline DXF has it (a glyph as tall as the outline's, filling its
-    box); the default GB file, CAD's own "θ = <>", has no glyph there (LibreCAD drew a dot
-    elsewhere for θ). Model mm map to the print's pixels by the drawing's height (the
-    hatching over the guide way to the ground under O4, no text) and its right end."""
+    box); the default GB file, CAD's own "θ = <>", has no glyph there in a LibreCAD without
+    wqy-unicode.lff (LibreCAD drew a dot elsewhere for θ; with the font it draws θ, centred
+    by its own widths, left of the outline's: seen in the print, and the dimension style's
+    text style is wqy-unicode, test_dxf.py). Model mm map to the print's pixels by the
+    drawing's height (the hatching over the guide way to the ground under O4, no text) and
+    its right end."""
     import ezdxf
     from ezdxf import bbox
     for font in ("gb", "outline"):
@@ -195,7 +235,7 @@ def test_the_schemes_theta_prints_in_librecad(tmp_path):
     assert 0.6 * 20.0 < y1 - y0 < 1.2 * 20.0, (y0, y1)          # a glyph of the 5 mm × 4 text
     found = {}
     for font in ("gb", "outline"):
-        ink = printed(tmp_path, font)
+        ink = printed(tmp_path, font, homes["bare"])
         scale = (ink.shape[0] - 1) / extents.size.y             # px per model mm
         if font == "outline":
             assert abs((ink.shape[1] - 1) / extents.size.x / scale - 1.0) < 0.01

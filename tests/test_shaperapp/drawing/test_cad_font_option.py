@@ -55,13 +55,14 @@ def test_the_scheme_in_outline_has_no_text_of_its_own(tmp_path):
 
 def test_outline_writes_no_text_and_gb_writes_gb_text(tmp_path):
     """The meshing sheet (in the model's mm, scaled round the pair): with outline its texts are
-    HATCH entities on the TEXT layer and no TEXT is left; the default keeps GB-style TEXT."""
+    HATCH entities on the TEXT layer and no TEXT is left; the default keeps TEXT in the GB
+    fonts' two styles (GB, and wqy-unicode, LibreCAD's font name, for the Greek letters)."""
     for font in ("gb", "outline"):
         done = shaper(*GEAR, "--dxf", str(tmp_path / f"{font}.dxf"), "--cad-font", font)
         assert done.returncode == 0, done.stderr
     gb = ezdxf.readfile(tmp_path / "gb.dxf").modelspace()
     outline = ezdxf.readfile(tmp_path / "outline.dxf").modelspace()
-    assert len(gb.query("TEXT")) > 50 and {t.dxf.style for t in gb.query("TEXT")} == {"GB"}
+    assert len(gb.query("TEXT")) > 50 and {t.dxf.style for t in gb.query("TEXT")} == {"GB", "wqy-unicode"}
     assert len(outline.query("TEXT")) == 0
     hatches = outline.query("HATCH[layer=='TEXT']")
     assert len(hatches) > len(gb.query("TEXT")) and all(h.dxf.solid_fill for h in hatches)

@@ -53,7 +53,9 @@ def test_the_cad_texts_are_a_dxfs_alone_and_gb_by_default(dialog, monkeypatch, t
     assert dialog.file_type.currentData() == ".dxf" and dialog.cad_font.isEnabled()
     found = kinds(tmp_path / "motion.dxf")
     assert found["TEXT"] > 50 and found["outlines"] == 0
-    assert {t.dxf.style for t in ezdxf.readfile(tmp_path / "motion.dxf").modelspace().query("TEXT")} == {"GB"}
+    # the GB fonts' two styles: GB, and wqy-unicode for the Greek and Chinese (LibreCAD's font)
+    assert {t.dxf.style for t in ezdxf.readfile(tmp_path / "motion.dxf").modelspace().query("TEXT")} == \
+        {"GB", "wqy-unicode"}
 
 
 def test_outlines_chosen_are_written_and_remembered(dialog, model, qtbot, settings, monkeypatch,

@@ -146,6 +146,9 @@ def test_the_meshing_sheet_exports_as_dxf_with_the_pair_at_one_to_one(tab, tmp_p
     pair = tab.gear_model.pair
     radii = {round(c.dxf.radius, 6) for c in doc.modelspace().query("CIRCLE")}
     assert round(pair.gear1.rb, 6) in radii and round(pair.gear1.ra, 6) in radii
+    # the pair on its own: sheet 1 of 1 (it said 4/4, the course design's fourth of four sheets)
+    texts = {t.dxf.text for t in doc.modelspace().query("TEXT[layer=='TITLE']")}
+    assert "1/1" in texts and "4/4" not in texts, texts
     with pytest.raises(ValueError):
         tab.export_sheet(str(tmp_path / "g.txt"))
 

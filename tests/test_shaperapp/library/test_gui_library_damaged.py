@@ -196,3 +196,38 @@ def test_why_a_row_is_damaged_is_said_in_chinese(qtbot, tmp_path, monkeypatch, c
     assert len(tips) == (case != "no document")
     for text in (*tips, failures[0]):
         assert_chinese_text(text, keys, what=case)
+
+
+def test_an_entry_stored_before_the_sample_limit_says_it_is_too_fine(qtbot, tmp_path, monkeypatch):
+    """An entry whose step gives more samples than a design file holds (stored before the
+    limit): Open says it is too fine, its samples, and the command's step that exports it
+    (``shaper library export --step``, tests/test_core/cli/test_cli_library_too_fine.py),
+    not the design file's "use a step of at least …", which no field of the pane takes."""
+    import json
+
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QMessageBox
+    from shaperapp.library.pane import LibraryPane
+    from shaperapp.design.model import DesignModel
+    monkeypatch.setenv("SHAPER_LIBRARY", str(tmp_path / "default.sqlite"))
+    monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: None)
+    path = tmp_path / "lib.sqlite"
+    make_library(path)
+    with sqlite3.connect(path) as conn:
+        entry_id, text = conn.execute("SELECT d.entry_id, d.text FROM documents d JOIN entries e "
+                                      "ON e.id = d.entry_id WHERE e.name = 'a'").fetchone()
+        doc = json.loads(text)
+        doc["step_deg"] = 0.005                     # 72 001 angles at one speed
+        conn.execute("UPDATE documents SET text = ? WHERE entry_id = ?", (json.dumps(doc), entry_id))
+    pane = LibraryPane(DesignModel(), settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    qtbot.addWidget(pane)
+    assert pane.open_library(str(path))
+    failures = []
+    pane.actions.failed.connect(failures.append)
+    assert not pane.actions.open_in_model("a")
+    assert "too fine: 72001 samples, limit 60000" in failures[0] and "--step 0.00601" in failures[0], failures
+    assert not pane.actions.export("a", str(tmp_path / "a.shaper.json"))         # Export says the same
+    assert "too fine: 72001 samples" in failures[1] and not (tmp_path / "a.shaper.json").exists(), failures
+    assert pane.actions.export_all(str(tmp_path / "all"))                          # the others go out
+    assert "not exported" in failures[2] and "a: too fine" in failures[2] and "damaged" not in failures[2]
+    assert pane.actions.open_in_model("b")

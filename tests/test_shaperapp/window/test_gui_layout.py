@@ -396,15 +396,22 @@ def test_result_tables_copy_with_titles(window):
     assert len(lines) == 1 + SPEED_ROWS and lines[0] == "\t40 r/min\t60 r/min"
 
 
-@pytest.mark.parametrize("width,height,floats", [(1366, 768, True), (1280, 720, True), (1920, 1080, False)])
-def test_library_pane_fits_the_screen(shared_probe, width, height, floats):
+@pytest.mark.parametrize("width,height,beside", [(1366, 768, True), (1280, 720, True), (1920, 1080, False)])
+def test_library_pane_fits_the_screen(shared_probe, width, height, beside):
     """Docked under the plots, the library made a 1366×768 window 810 px tall (its status
-    bar and animation bar off the screen) and left its list no row. On a short screen it
-    now floats over the window; where there is room it stays docked; either way the
-    window stays on the screen and the list has room for rows."""
+    bar and animation bar off the screen) and left its list no row; then it floated over
+    the window there, where a user expects a pane to dock. On a short screen it is now a
+    tab beside the Results and the vector diagrams; where there is room it stays docked
+    under the plots; either way it is docked, the window stays on the screen and the list
+    has room for rows."""
     report = shared_probe(width, height, *LIBRARY)
     library = report["library"]
-    assert library["floating"] is floats
+    assert library["floating"] is False, library
+    if beside:
+        assert library["area"] == "RightDockWidgetArea", library
+        assert sorted(library["tabbed_with"]) == ["polygonsDock", "resultsDock"], library
+    else:
+        assert library["area"] == "BottomDockWidgetArea" and not library["tabbed_with"], library
     assert inside(report["screen"], library["frame"]), library
     assert inside(report["screen"], library["dock"]), library
     assert library["rows_room"] >= 5, library
