@@ -50,9 +50,12 @@ def raster_region(window: tuple[float, float, float, float], bounds: tuple[float
     return region, cell
 
 
-BURN_POINTS = 500_000
-"""Samples burnt at once (16 B each, and temporaries): their arrays are a few tens of MB,
-whatever the lines."""
+BURN_POINTS = 65_536
+"""Samples (or a run's cells) burnt at once: their arrays are half a MB each, whatever the
+lines. Why not more: each array is fresh memory, and at 500 000 the burns of the first
+label search of a start (the window's first paint) faulted in 3 039 pages (12 MB), the
+kernel's time; later chunks reuse the first one's memory (with _burn_runs, the search's
+faults 4 400 → 2 451, its CPU 20.5 → 17.0 ms: docs/performance.md, issue 43 item 5)."""
 
 
 class Raster:
@@ -73,15 +76,60 @@ class Raster:
         self.burn(ends)
 
     def burn(self, ends: np.ndarray) -> None:
-        """Mark the cells the segments pass through (sampled at half a cell)."""
+        """Mark the cells the segments pass through (sampled at half a cell; a level or
+        upright segment's cells, the same, as one run: _burn_runs)."""
         ends = clipped(np.asarray(ends, dtype=float).reshape(-1, 2, 2),
                        (self.left, self.left + self.nx * self.cell,
                         self.bottom, self.bottom + self.ny * self.cell))
         if len(ends):
             d = np.stack([ends[:, 1, axis] - ends[:, 0, axis] for axis in (0, 1)], axis=1)
+            upright = d[:, 0] == 0.0
+            level = (d[:, 1] == 0.0) & ~upright
+            slanted = ~(upright | level)
+            self._burn_runs(ends[level, 0], d[level, 0], across=1)
+            self._burn_runs(ends[upright, 0], d[upright, 1], across=0)
+            d = d[slanted]
             count = np.ceil(np.hypot(d[:, 0], d[:, 1]) / (0.5 * self.cell)).astype(int) + 1
-            self._burn_samples(ends[:, 0], d, count)
+            self._burn_samples(ends[slanted, 0], d, count)
         self._sum()
+
+    def _cell(self, value: np.ndarray, axis: int) -> np.ndarray:
+        """The cell index along ``axis`` (0: x, 1: y) of sample coordinates ``value`` (mm),
+        by _burn_samples' own operations: ``(value − origin) / cell``, truncated, clipped."""
+        origin, n = (self.left, self.nx) if axis == 0 else (self.bottom, self.ny)
+        return np.clip(((value - origin) / self.cell).astype(np.intp), 0, n - 1)
+
+    def _burn_runs(self, start: np.ndarray, step: np.ndarray, across: int) -> None:
+        """Mark the cells that _burn_samples marks for segments along one axis (``across``,
+        the other axis, constant: ``step`` along it, mm), without their samples.
+
+        Why: the ram's, the tool's and block B's sides move level, and their swept sides
+        were a third of the first label search's 491 000 samples (issue 43 item 5). Along
+        such a segment the samples' cells are exactly one run: every sample's cross
+        coordinate is ``0·step + start``, the start itself, so one row (or column); along
+        it, each operation of t·d + start − origin, ÷ cell, truncation and clipping keeps
+        the samples' order (rounding is monotonic), and consecutive samples lie at most half
+        a cell apart (the count), so no cell between the first sample's (t = 0: the start)
+        and the last's (t = 1: d + start) is skipped. So the run from one to the other is
+        the samples' cells, to the bit (``test_burn_same.py``)."""
+        along = 1 - across
+        first = self._cell(start[:, along], along)
+        last = self._cell(step + start[:, along], along)
+        low, length = np.minimum(first, last), np.abs(last - first) + 1
+        line = self._cell(start[:, across], across)
+        if along == 0:          # the grid read row by row: a run along x is one row's cells
+            base, stride = line * self.nx + low, 1
+        else:
+            base, stride = low * self.nx + line, self.nx
+        grid = self._grid.reshape(-1)
+        ends = np.cumsum(length)
+        lo = 0                  # at most about BURN_POINTS cells at once, as the samples
+        while lo < len(length):
+            hi = max(int(np.searchsorted(ends, ends[lo] - length[lo] + BURN_POINTS, "right")), lo + 1)
+            count = length[lo:hi]
+            offset = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count)
+            grid[np.repeat(base[lo:hi], count) + offset * stride] = True
+            lo = hi
 
     @classmethod
     def of_cells(cls, marked: np.ndarray, margin: float) -> "Raster":

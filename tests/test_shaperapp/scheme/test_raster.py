@@ -110,3 +110,34 @@ def test_the_burn_marks_the_cells_of_each_sample_as_defined(lines, cell):
     raster = Raster(np.empty((0, 2, 2)), BOUNDS, cell, 0.0)
     burnt = raster.copy_with(ends)
     assert np.array_equal(burnt._grid, naive_cells(raster, ends))
+
+
+# level and upright segments: one coordinate drawn from a few values, some on a cell's
+# edge (multiples of the cell from the grid's corner), some off the grid, some of zero length
+edges = st.sampled_from([-25.0, -20.0, -19.3, -10.0, 0.0, 0.1, 7.0, 29.9, 30.0, 41.3, 60.0, 65.0])
+level_or_upright = st.tuples(st.booleans(), st.one_of(edges, st.floats(-30.0, 70.0)),
+                             st.one_of(edges, st.floats(-30.0, 70.0)), st.one_of(edges, st.floats(-30.0, 70.0)))
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(level_or_upright, min_size=1, max_size=12), st.lists(st.tuples(*[st.floats(-30.0, 70.0)] * 4), max_size=4),
+       st.sampled_from([0.05, 0.1, 0.7, 1.0, 2.5]))
+def test_level_and_upright_segments_mark_their_samples_cells_without_samples(lines, slanted, cell):
+    """Issue 43 item 5: a level or upright segment (the ram's, the tool's and block B's
+    sides over the cycle, a third of the first search's samples) is burnt as one run of
+    cells, to the bit the cells of its samples (``naive_cells``); only the other
+    segments are sampled."""
+    ends = [((a, b), (a, c)) if upright else ((b, a), (c, a)) for upright, a, b, c in lines]
+    ends = np.array(ends + [((x0, y0), (x1, y1)) for x0, y0, x1, y1 in slanted], dtype=float).reshape(-1, 2, 2)
+    raster = Raster(np.empty((0, 2, 2)), BOUNDS, cell, 0.0)
+    sampled = []
+    burn_samples = raster._burn_samples
+
+    def spy(start, d, count):
+        sampled.append(d.copy())
+        burn_samples(start, d, count)
+
+    raster._burn_samples = spy
+    raster.burn(ends)
+    assert np.array_equal(raster._grid, naive_cells(raster, ends))
+    assert all(np.all((d[:, 0] != 0.0) & (d[:, 1] != 0.0)) for d in sampled)
