@@ -134,7 +134,8 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
         if summary is not None:
             add(Heading(translate("Report", "7 Crank torque, energy and flywheel")))
             add(Paragraph(translate("Report", "<b>Flywheel.</b> On the crank shaft, %1; the loads "
-                                    "are those of section 1.").replace("%1", flywheel_formula(used))))
+                                    "are those of section 1.").replace("%1", flywheel_formula(used)),
+                          True))            # it introduces the table: not alone at a page's foot
             add(_dynamics_table(summary, design))
             add(Figure(translate("Report", "Crank torque, input power, energy fluctuation ΔE and "
                                  "joint forces over one revolution"), 170.0, 170.0, views.forces()))
