@@ -4897,6 +4897,14 @@
         <translation>其他转动构件（J，转速）</translation>
     </message>
     <message>
+        <source>J = %1 kg·m² at %2·ω2</source>
+        <translation>J = %1 kg·m²，转速 %2·ω2</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>；</translation>
+    </message>
+    <message>
         <source>parabolic</source>
         <translation>等加速等减速</translation>
     </message>
