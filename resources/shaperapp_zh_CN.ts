@@ -4533,16 +4533,16 @@
         <translation>理论廓线基圆半径 r0</translation>
     </message>
     <message>
-        <source>(allowed %1 ° / %2 °)</source>
-        <translation>（许用值 %1 ° / %2 °）</translation>
+        <source>(allowed %1° / %2°)</source>
+        <translation>（许用值 %1° / %2°）</translation>
     </message>
     <message>
         <source>(largest %1 mm)</source>
         <translation>（最大可用 %1 mm）</translation>
     </message>
     <message>
-        <source>(cut ends at %1 °, the next starts %2 ° later)</source>
-        <translation>（切削终止于 %1 °，再转 %2 ° 开始下一次切削）</translation>
+        <source>(cut ends at %1°, the next starts %2° later)</source>
+        <translation>（切削终止于 %1°，再转 %2° 开始下一次切削）</translation>
     </message>
     <message>
         <source>exceeded</source>

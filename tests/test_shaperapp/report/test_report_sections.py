@@ -71,6 +71,14 @@ def test_chinese_cam_section_has_no_english(printed):
     assert re.findall(r"\b(allowed|largest|cut ends|clear|at)\b", section) == []
 
 
+def test_degrees_are_written_one_way(printed):
+    """An angle is written 30.000°, as the sheets and the report's inputs write it (GB 3102.1,
+    ISO 80000-1: no space before °): the report printed the CLI's '30.000 °' and, in the cam
+    section, the allowed pressure angles '(allowed 40 ° / 70 °)' under section 1's '40° / 70°'."""
+    _, _, text = printed
+    assert re.findall(r"\d °", text) == []
+
+
 def test_column_headers_are_typeset_and_units_whole(printed):
     _, _, text = printed
     assert "a^k" not in text
