@@ -4350,8 +4350,8 @@
         <translation>加速度多边形</translation>
     </message>
     <message>
-        <source>Force polygon of the ram–rod group</source>
-        <translation>滑枕—连杆杆组力多边形</translation>
+        <source>Force polygon of the ram group</source>
+        <translation>滑枕杆组的力多边形</translation>
     </message>
     <message>
         <source>Force polygon of the lever</source>
@@ -4895,6 +4895,14 @@
     <message>
         <source>Other rotating parts (J, speed)</source>
         <translation>其他转动构件（J，转速）</translation>
+    </message>
+    <message>
+        <source>%1, φ = %2°</source>
+        <translation>%1，φ = %2°</translation>
+    </message>
+    <message>
+        <source>Figure %1. </source>
+        <translation>图 %1  </translation>
     </message>
     <message>
         <source>J = %1 kg·m² at %2·ω2</source>

@@ -268,16 +268,23 @@ class ReportViews:
 def polygon_paint(design: Design, crank_deg: float, rpm: float, masses: MassProperties | None,
                   kind: str, language: str) -> Paint:
     """One polygon at true scale on the page, with the round μ that fills the figure;
-    ``kind`` "lever" is the lever's force polygon (the kinetostatic sheet's too)."""
+    ``kind`` "lever" is the lever's force polygon (the kinetostatic sheet's too). Its name
+    is the figure's caption (``polygon_caption``), numbered with the others."""
     if kind == "lever":
         polygon = lever_force_polygon(design, crank_deg, rpm, masses)
     else:
         polygon = polygons(design, crank_deg, rpm, masses)[kind]
-    heading = titles()["lever"] if kind == "lever" else None
 
     def paint(painter: QPainter, rect: QRectF, px_per_mm: float) -> None:
         font = report_font(language, 8.0)
         metrics = QFontMetricsF(font, painter.device())
-        scale = auto_scale(polygon, rect, metrics, px_per_mm)
-        paint_polygon(painter, rect, polygon, scale, px_per_mm=px_per_mm, font=font, heading=heading)
+        scale = auto_scale(polygon, rect, metrics, px_per_mm, title=False)
+        paint_polygon(painter, rect, polygon, scale, px_per_mm=px_per_mm, font=font, title=False)
     return paint
+
+
+def polygon_caption(kind: str, crank_deg: float) -> str:
+    """A polygon's caption: its name (the kind's title, the lever's for "lever") and the
+    crank angle; the drawing keeps the angle, the speed and μ above it."""
+    return (QCoreApplication.translate("Report", "%1, φ = %2°").replace("%1", titles()[kind])
+            .replace("%2", f"{crank_deg:.2f}"))

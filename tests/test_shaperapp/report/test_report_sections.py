@@ -79,6 +79,18 @@ def test_degrees_are_written_one_way(printed):
     assert re.findall(r"\d °", text) == []
 
 
+def test_every_figure_has_a_numbered_caption_in_order(printed):
+    """A course report cites its figures by number: each figure's caption starts "Figure n."
+    ("图 n"), n = 1, 2, … in the order the figures are printed, and the polygons, which had
+    no caption (their name was inside the drawing), have one too."""
+    language, report, text = printed
+    from shaperapp.report.blocks import Figure
+    figures = [b for b in report.blocks if isinstance(b, Figure)]
+    pattern = r"^\s*Figure (\d+)\. \S" if language == "en" else r"^\s*图 (\d+)\s+\S"
+    printed_numbers = [int(n) for n in re.findall(pattern, text, re.M)]
+    assert len(figures) >= 10 and printed_numbers == list(range(1, len(figures) + 1))
+
+
 def test_column_headers_are_typeset_and_units_whole(printed):
     _, _, text = printed
     assert "a^k" not in text
