@@ -4897,6 +4897,10 @@
         <translation>其他转动构件（J，转速）</translation>
     </message>
     <message>
+        <source>Contents</source>
+        <translation>目录</translation>
+    </message>
+    <message>
         <source>%1, φ = %2°</source>
         <translation>%1，φ = %2°</translation>
     </message>

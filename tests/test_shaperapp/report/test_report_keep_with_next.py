@@ -53,7 +53,9 @@ def printed(qapp, tmp_path_factory):
     path.write_bytes(pdf_bytes(report)[0])
     text = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True,
                           check=True).stdout
-    return report, [flat(page) for page in text.split("\f")]
+    raw = text.split("\f")
+    body = ["\n".join(line for line in page.splitlines() if ". . ." not in line) for page in raw]
+    return report, [flat(page) for page in body], raw       # the pages without the contents' lines
 
 
 def opened_sections(report) -> list[tuple[str, str]]:
@@ -79,9 +81,24 @@ def page_of(pages: list[str], text: str) -> int:
 
 
 def test_a_heading_is_on_the_page_of_what_it_introduces(printed):
-    report, pages = printed
+    report, pages, _ = printed
     sections = opened_sections(report)
     assert any(heading.startswith("7 ") for heading, _ in sections)      # the case that failed
     apart = [(heading, page_of(pages, heading), first, page_of(pages, first))
              for heading, first in sections if page_of(pages, heading) != page_of(pages, first)]
     assert apart == []
+
+
+def test_the_contents_give_each_sections_page(printed):
+    """The contents under the cover list every section in order with the page its heading
+    is printed on (a course report has contents; this one had none)."""
+    report, _, raw = printed
+    headings = [b.text for b in report.blocks if isinstance(b, Heading)]
+    listed = re.findall(r"^\s*(\d+ \S.*?)\s*(?:\. )+\.?\s*(\d+)\s*$", raw[0], re.M)
+    assert [text for text, _ in listed] == headings
+    printed_on = {}
+    for n, page in enumerate(raw, 1):
+        for line in page.splitlines():
+            if line.strip() in headings and ". ." not in line:
+                printed_on.setdefault(line.strip(), n)
+    assert {text: int(page) for text, page in listed} == printed_on

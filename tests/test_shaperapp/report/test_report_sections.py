@@ -43,7 +43,7 @@ def printed(request, qapp, tmp_path_factory):
 
 def cam_section(text: str) -> str:
     """The text from the cam section's heading (the last section) to the end."""
-    heading = re.search(r"\n\s*9 (The feed cam|进给凸轮)", text)
+    heading = re.search(r"\n\s*9 (The feed cam|进给凸轮) *\n", text)     # the heading, not its line in the contents
     assert heading is not None
     return text[heading.start():]
 
