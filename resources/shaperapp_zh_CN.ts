@@ -5169,8 +5169,8 @@
         <translation>无法设计该齿轮副：%1</translation>
     </message>
     <message>
-        <source>The pair in mesh at a′ = %1 mm, to scale %2 (μl = %3 mm/mm), the teeth as the rack cuts them; the pinion 1 drives counter-clockwise. N1N2 the line of action, B1B2 the actual one, P the pitch point</source>
-        <translation>中心距 a′ = %1 mm 处啮合的齿轮副，比例 %2（μl = %3 mm/mm），齿廓为齿条刀具展成所得；小齿轮 1 为主动轮，逆时针转动。N1N2 为理论啮合线，B1B2 为实际啮合线，P 为节点</translation>
+        <source>The pair in mesh at a′ = %1 mm, to scale %2 (μl = %3 m/mm), the teeth as the rack cuts them; the pinion 1 drives counter-clockwise. N1N2 the line of action, B1B2 the actual one, P the pitch point</source>
+        <translation>中心距 a′ = %1 mm 处啮合的齿轮副，比例 %2（μl = %3 m/mm），齿廓为齿条刀具展成所得；小齿轮 1 为主动轮，逆时针转动。N1N2 为理论啮合线，B1B2 为实际啮合线，P 为节点</translation>
     </message>
     <message>
         <source>Teeth z_1 / z_2</source>

@@ -24,6 +24,7 @@ from core.linkage.geometry import Design
 from core.linkage.metrics import CycleMetrics
 from core.forces.polygons import lever_force_polygon, polygons
 from core.linkage.spec import Spec
+from core.drawing.scales import number_text
 from shaperapp.cam.model import CamModel, typed_from
 from shaperapp.cam.plots import CamPlots
 from shaperapp.cam.profile_view import cam_span, paint_cam
@@ -79,9 +80,11 @@ def round_scale(value: float) -> float:
 
 
 def scale_text(mu: float) -> str:
-    """μ_l as a drawing states it: design mm per mm on the page, and as a ratio."""
+    """μ_l as the sheets state it (``core.drawing``): design metres per mm on the page, and
+    as a ratio; ``mu`` is design mm per mm. The report wrote 15 mm/mm beside the sheets'
+    0.015 m/mm for one design."""
     ratio = f"1:{mu:g}" if mu >= 1 else f"{1 / mu:g}:1"
-    return f"μ<sub>l</sub> = {mu:g} mm/mm ({ratio})"
+    return f"μ<sub>l</sub> = {number_text(mu / 1000.0)} m/mm ({ratio})"
 
 
 def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg: float) -> Paint:

@@ -69,4 +69,4 @@ def test_the_design_files_gear_pair_has_its_section(report):
     pair in mesh and its caption's scale."""
     squashed = re.sub(r"\s+", "", pdf_text(report))
     assert "10齿轮机构" in squashed and "齿轮机构" in squashed
-    assert re.search(r"比例1:[\d.]+（μl=[\d.]+mm/mm）", squashed)
+    assert re.search(r"比例1:[\d.]+（μl=[\d.]+m/mm）", squashed)

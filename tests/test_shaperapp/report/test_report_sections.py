@@ -50,7 +50,7 @@ def cam_section(text: str) -> str:
 
 def test_cam_section_states_its_scale(printed):
     _, _, text = printed
-    assert re.search(r"μ\s*l = [\d.]+ mm/mm \((1:[\d.]+|[\d.]+:1)\)", cam_section(text))
+    assert re.search(r"μ\s*l = [\d.]+ m/mm \((1:[\d.]+|[\d.]+:1)\)", cam_section(text))
 
 
 def test_cam_section_has_the_follower_curves(printed):
