@@ -4350,8 +4350,8 @@
         <translation>加速度多边形</translation>
     </message>
     <message>
-        <source>Force polygon of the ram–rod group</source>
-        <translation>滑枕—连杆杆组力多边形</translation>
+        <source>Force polygon of the ram group</source>
+        <translation>滑枕杆组的力多边形</translation>
     </message>
     <message>
         <source>Force polygon of the lever</source>
@@ -4533,16 +4533,16 @@
         <translation>理论廓线基圆半径 r0</translation>
     </message>
     <message>
-        <source>(allowed %1 ° / %2 °)</source>
-        <translation>（许用值 %1 ° / %2 °）</translation>
+        <source>(allowed %1° / %2°)</source>
+        <translation>（许用值 %1° / %2°）</translation>
     </message>
     <message>
         <source>(largest %1 mm)</source>
         <translation>（最大可用 %1 mm）</translation>
     </message>
     <message>
-        <source>(cut ends at %1 °, the next starts %2 ° later)</source>
-        <translation>（切削终止于 %1 °，再转 %2 ° 开始下一次切削）</translation>
+        <source>(cut ends at %1°, the next starts %2° later)</source>
+        <translation>（切削终止于 %1°，再转 %2° 开始下一次切削）</translation>
     </message>
     <message>
         <source>exceeded</source>
@@ -4897,6 +4897,26 @@
         <translation>其他转动构件（J，转速）</translation>
     </message>
     <message>
+        <source>Contents</source>
+        <translation>目录</translation>
+    </message>
+    <message>
+        <source>%1, φ = %2°</source>
+        <translation>%1，φ = %2°</translation>
+    </message>
+    <message>
+        <source>Figure %1. </source>
+        <translation>图 %1  </translation>
+    </message>
+    <message>
+        <source>J = %1 kg·m² at %2·ω2</source>
+        <translation>J = %1 kg·m²，转速 %2·ω2</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>；</translation>
+    </message>
+    <message>
         <source>parabolic</source>
         <translation>等加速等减速</translation>
     </message>
@@ -5149,8 +5169,8 @@
         <translation>无法设计该齿轮副：%1</translation>
     </message>
     <message>
-        <source>The pair in mesh at a′ = %1 mm, to scale %2 (μl = %3 mm/mm), the teeth as the rack cuts them; the pinion 1 drives counter-clockwise. N1N2 the line of action, B1B2 the actual one, P the pitch point</source>
-        <translation>中心距 a′ = %1 mm 处啮合的齿轮副，比例 %2（μl = %3 mm/mm），齿廓为齿条刀具展成所得；小齿轮 1 为主动轮，逆时针转动。N1N2 为理论啮合线，B1B2 为实际啮合线，P 为节点</translation>
+        <source>The pair in mesh at a′ = %1 mm, to scale %2 (μl = %3 m/mm), the teeth as the rack cuts them; the pinion 1 drives counter-clockwise. N1N2 the line of action, B1B2 the actual one, P the pitch point</source>
+        <translation>中心距 a′ = %1 mm 处啮合的齿轮副，比例 %2（μl = %3 m/mm），齿廓为齿条刀具展成所得；小齿轮 1 为主动轮，逆时针转动。N1N2 为理论啮合线，B1B2 为实际啮合线，P 为节点</translation>
     </message>
     <message>
         <source>Teeth z_1 / z_2</source>

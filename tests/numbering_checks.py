@@ -32,7 +32,7 @@ NEVER = [
     _index("G", "3"), _index("F_?I", "3"),                 # the block carries no drawn force
     r"A3A2|A2A3|R_?3B",                                    # block 2 on lever 3: now A4A3, R_4B
     r"(?<![A-Za-z0-9_α])[an]2[′']|(?<![A-Za-z0-9_])n3[′']",    # polygon points a2′, n3′: now a3′, n4′
-    r"lever \(link 3\)|导杆（构件 ?3）|\b1 crank,|1 曲柄|\b5 ram\b|5 滑枕",
+    r"lever \(link 3\)|导杆（构件 ?3）|\b1 crank,|1 曲柄|(?<!Figure )\b5 ram\b|(?<!图 )5 滑枕",
 ]
 _NEVER = re.compile("|".join(f"(?:{p})" for p in NEVER))
 _RAM = re.compile(r"\bram\b|滑枕|刨头", re.I)

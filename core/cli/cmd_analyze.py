@@ -58,11 +58,11 @@ def cycle_rows(metrics: CycleMetrics) -> list[tuple[str, str]]:
     f = figure_text
     rows = [("measured K", f("ratio", metrics.time_ratio)),
             ("measured stroke", f"{f('length', metrics.stroke_mm)} mm"),
-            ("θ", f"{f('angle', metrics.theta_deg)} °"),
+            ("θ", f"{f('angle', metrics.theta_deg)}°"),
             ("working / return crank angle",
-             f"{f('angle', metrics.work_angle_deg)} ° / {f('angle', metrics.return_angle_deg)} °")]
+             f"{f('angle', metrics.work_angle_deg)}° / {f('angle', metrics.return_angle_deg)}°")]
     if metrics.pressure_angle_max_deg is not None:
-        rows.append(("max pressure angle", f"{f('angle', metrics.pressure_angle_max_deg)} °"))
+        rows.append(("max pressure angle", f"{f('angle', metrics.pressure_angle_max_deg)}°"))
     return rows
 
 

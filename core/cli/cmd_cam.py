@@ -267,12 +267,12 @@ def summary_rows(s: dict) -> list[tuple[str, str]]:
     rows = [("base radius r0 (pitch curve)", f"{s['base_radius_mm']:.3f} mm"),
             ("centre distance a", f"{s['center_distance_mm']:.3f} mm"),
             ("arm l", f"{s['arm_mm']:.3f} mm"),
-            ("initial arm angle ψ0", f"{s['initial_angle_deg']:.3f} °"),
+            ("initial arm angle ψ0", f"{s['initial_angle_deg']:.3f}°"),
             ("arrangement", f"roller {s['arm_side']} the line of centres, cam turning clockwise"),
             ("max pressure angle rise / return",
-             f"{s['max_pressure_angle_rise_deg']:.3f} ° / {s['max_pressure_angle_return_deg']:.3f} ° "
-             f"(allowed {s['allowed_pressure_angle_rise_deg']:g} ° / "
-             f"{s['allowed_pressure_angle_return_deg']:g} °)"),
+             f"{s['max_pressure_angle_rise_deg']:.3f}° / {s['max_pressure_angle_return_deg']:.3f}° "
+             f"(allowed {s['allowed_pressure_angle_rise_deg']:g}° / "
+             f"{s['allowed_pressure_angle_return_deg']:g}°)"),
             ("min convex radius ρmin (pitch curve)", f"{s['min_curvature_radius_mm']:.3f} mm"),
             ("roller r", f"{s['roller_mm']:.3f} mm (largest {s['largest_roller_mm']:.3f} mm)"),
             ("profile base radius r0 − r", f"{s['profile_base_radius_mm']:.3f} mm (at least hub + "
@@ -287,6 +287,6 @@ def summary_rows(s: dict) -> list[tuple[str, str]]:
     if not s["within_allowance"]:
         rows.append(("allowance", "EXCEEDED"))
     if "phase_deg" in s:
-        rows.append(("rise starts at crank angle", f"{s['phase_deg']:.3f} ° (cut ends at "
-                     f"{s['cut_end_deg']:.3f} °, the next starts {s['clear_span_deg']:.3f} ° later)"))
+        rows.append(("rise starts at crank angle", f"{s['phase_deg']:.3f}° (cut ends at "
+                     f"{s['cut_end_deg']:.3f}°, the next starts {s['clear_span_deg']:.3f}° later)"))
     return rows

@@ -59,7 +59,7 @@ def dimension_rows(design: Design, words: Mapping[str, str] | None = None) -> li
     ``words`` may rename the variant and rod-side words (a translation)."""
     word = (lambda w: w) if words is None else (lambda w: words.get(w, w))  # noqa: E731
     rows = [("variant", word(design.variant)),
-            ("extreme-position angle θ", f"{figure_text('angle', math.degrees(design.theta))} °"),
+            ("extreme-position angle θ", f"{figure_text('angle', math.degrees(design.theta))}°"),
             ("frame O2O4 L2", f"{figure_text('length', design.frame)} mm"),
             ("lever O4B L3", f"{figure_text('length', design.lever)} mm"),
             ("guide above lever pivot", f"{figure_text('length', design.guide)} mm"),

@@ -20,7 +20,7 @@ from typing import Mapping
 
 import numpy as np
 
-from core.base.figure_text import figure_text
+from core.base.figure_text import dimension_text, figure_text
 from core.gear import GearPair, pair_checks
 from core.gear.mesh import line_points, mesh_angles, placed
 from core.gear.profile import tooth_outline
@@ -222,7 +222,7 @@ def mesh_items(pair: GearPair, box: Box, scale: float) -> tuple[Placement, list[
         items += room.place(plain, (float(at[0]), float(at[1])), 3.5, tuple(away), gap=1.0, rings=6,
                             subscripts=spans, leader_gap=0.5)
     mid = ring[len(ring) // 2]
-    plain, spans = marked(f"α′ = {math.degrees(pair.alpha_w):.2f}°")
+    plain, spans = marked(f"α′ = {dimension_text(math.degrees(pair.alpha_w))}°")
     items += room.place(plain, (float(mid[0]), float(mid[1])), 3.5, (0.4, 1.0), gap=1.0, rings=6,
                         subscripts=spans)
     return place, items
@@ -269,7 +269,7 @@ def _line_of_action(pair: GearPair, area: Box, lab: Mapping[str, str]) -> list[I
         for a, b, key, *part in spans:
             items += arrow(((a + b) / 2.0, y), (a, y), THIN) + arrow(((a + b) / 2.0, y), (b, y), THIN)
             mid = sum(part[0]) / 2.0 if part else (a + b) / 2.0
-            texts.append((f"p_b = {pair.pb:.3f}" if key == "pb" else lab[key], mid, y, b - a))
+            texts.append((f"p_b = {dimension_text(pair.pb)}" if key == "pb" else lab[key], mid, y, b - a))
     room = Room(items, within=area)
     for text, mid, y, span in texts:
         plain, subs = marked(text)

@@ -58,7 +58,7 @@ def summary_rows(pair: GearPair) -> list[tuple[str, str]]:
     rows = [("shifts", MODE_TEXT[pair.mode]),
             ("centre distance a′ (a)", f"{f('gear_length', pair.centre_mm)} mm "
                                        f"({f('gear_length', pair.reference_centre_mm)} mm)"),
-            ("working pressure angle α′", f"{f('gear_angle', math.degrees(pair.alpha_w))} °"),
+            ("working pressure angle α′", f"{f('gear_angle', math.degrees(pair.alpha_w))}°"),
             ("centre shift y / addendum reduction Δy", f"{pair.y:.6f} / {pair.dy:.6f}"),
             ("shift factor x1 / x2", f"{f('gear_factor', g1.shift)} / {f('gear_factor', g2.shift)}"),
             ("least shift x1min / x2min", f"{g1.least_shift:.6f} / {g2.least_shift:.6f}")]

@@ -76,10 +76,10 @@ class CamTab(PartTab):
         f = cam.follower
         rows = [(self.tr("Base radius r0"), f"{cam.base_radius_mm:.3f} mm"),
                 (self.tr("Centre distance a"), f"{f.distance_mm:.3f} mm"),
-                (self.tr("Arm angle ψ0"), f"{f.initial_deg:.3f} °"),
+                (self.tr("Arm angle ψ0"), f"{f.initial_deg:.3f}°"),
                 (self.tr("Roller side"), self.tr("above") if f.side > 0 else self.tr("below")),
-                (self.tr("Max α rise"), f"{cam.max_pressure_rise_deg:.3f} °"),
-                (self.tr("Max α return"), f"{cam.max_pressure_return_deg:.3f} °"),
+                (self.tr("Max α rise"), f"{cam.max_pressure_rise_deg:.3f}°"),
+                (self.tr("Max α return"), f"{cam.max_pressure_return_deg:.3f}°"),
                 (self.tr("ρmin (convex)"), f"{cam.min_curvature_radius_mm:.3f} mm"),
                 (self.tr("Roller r"), f"{cam.roller_mm:.3f} mm"),
                 (self.tr("Largest roller"), f"{cam.largest_roller_mm:.3f} mm"),
@@ -90,7 +90,7 @@ class CamTab(PartTab):
                          self.tr("from %1 mm, to take the roller and clear the hub and the pivot boss").replace(
                              "%1", f"{cam.base_raised_from_mm:.3f}")))
         if cam.timing is not None:
-            rows.append((self.tr("Rise at crank φ"), f"{cam.timing.phase_deg:.3f} °"))
+            rows.append((self.tr("Rise at crank φ"), f"{cam.timing.phase_deg:.3f}°"))
         if not cam.within_allowance:
             rows.append((self.tr("Pressure angle"), self.tr("exceeds the allowance")))
         return rows

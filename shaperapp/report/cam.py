@@ -23,10 +23,10 @@ translate = QCoreApplication.translate   # lupdate extracts translate("Report", 
 
 # The English words inside ``shaper cam``'s value texts, as patterns of their numbers.
 _VALUE_WORDS = (
-    (re.compile(r"\(allowed (\S+) ° / (\S+) °\)"), lambda: translate("Report", "(allowed %1 ° / %2 °)")),
+    (re.compile(r"\(allowed (\S+)° / (\S+)°\)"), lambda: translate("Report", "(allowed %1° / %2°)")),
     (re.compile(r"\(largest (\S+) mm\)"), lambda: translate("Report", "(largest %1 mm)")),
-    (re.compile(r"\(cut ends at (\S+) °, the next starts (\S+) ° later\)"),
-     lambda: translate("Report", "(cut ends at %1 °, the next starts %2 ° later)")),
+    (re.compile(r"\(cut ends at (\S+)°, the next starts (\S+)° later\)"),
+     lambda: translate("Report", "(cut ends at %1°, the next starts %2° later)")),
     (re.compile(r"^EXCEEDED$"), lambda: translate("Report", "exceeded")),
     (re.compile(r"\(at least hub \+ clearance = (\S+) mm\)"),
      lambda: translate("Report", "(at least hub + clearance = %1 mm)")),

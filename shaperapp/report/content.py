@@ -37,7 +37,8 @@ from shaperapp.widgets.command_line import inputs_name
 from shaperapp.widgets.notation import typeset
 
 from . import figures
-from .blocks import Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences
+from .blocks import (Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences,
+                     numbered_figures)
 from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison
 from .design_data import cam_rows, flywheel_formula, gear_rows, load_rows
@@ -128,13 +129,14 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
             for kind in ("velocity", "acceleration", "force", "lever"):
                 if kind in ("force", "lever") and used is None:
                     continue
-                add(Figure("", 170.0, 105.0 if kind != "velocity" else 85.0,
+                add(Figure(figures.polygon_caption(kind, deg), 170.0, 105.0 if kind != "velocity" else 85.0,
                            figures.polygon_paint(design, deg, rpms[0], used, kind, language)))
         step()
         if summary is not None:
             add(Heading(translate("Report", "7 Crank torque, energy and flywheel")))
             add(Paragraph(translate("Report", "<b>Flywheel.</b> On the crank shaft, %1; the loads "
-                                    "are those of section 1.").replace("%1", flywheel_formula(used))))
+                                    "are those of section 1.").replace("%1", flywheel_formula(used)),
+                          True))            # it introduces the table: not alone at a page's foot
             add(_dynamics_table(summary, design))
             add(Figure(translate("Report", "Crank torque, input power, energy fluctuation ΔE and "
                                  "joint forces over one revolution"), 170.0, 170.0, views.forces()))
@@ -160,6 +162,7 @@ def build(spec: Spec, rpms: Sequence[float], masses: MassProperties | None, name
             step()
     finally:
         views.close()
+    report.blocks = numbered_figures(report.blocks)
     return report
 
 

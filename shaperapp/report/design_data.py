@@ -48,7 +48,9 @@ def load_rows(masses: MassProperties, design: Design) -> list[tuple[str, str]]:
                                                        else translate("Report", " (the stroke H)"))),
              (translate("Report", "Coefficient of speed fluctuation δ"), figure_text("coefficient", masses.delta))]
     if masses.rotors:
-        parts = "; ".join(f"J = {j:g} kg·m² at {r:g}·ω2" for j, r in masses.rotors)
+        part = translate("Report", "J = %1 kg·m² at %2·ω2")
+        parts = translate("Report", "; ").join(part.replace("%1", f"{j:g}").replace("%2", f"{r:g}")
+                                               for j, r in masses.rotors)
         rows.append((translate("Report", "Other rotating parts (J, speed)"), parts))
     return rows
 

@@ -24,6 +24,7 @@ from core.linkage.geometry import Design
 from core.linkage.metrics import CycleMetrics
 from core.forces.polygons import lever_force_polygon, polygons
 from core.linkage.spec import Spec
+from core.drawing.scales import number_text
 from shaperapp.cam.model import CamModel, typed_from
 from shaperapp.cam.plots import CamPlots
 from shaperapp.cam.profile_view import cam_span, paint_cam
@@ -79,9 +80,11 @@ def round_scale(value: float) -> float:
 
 
 def scale_text(mu: float) -> str:
-    """μ_l as a drawing states it: design mm per mm on the page, and as a ratio."""
+    """μ_l as the sheets state it (``core.drawing``): design metres per mm on the page, and
+    as a ratio; ``mu`` is design mm per mm. The report wrote 15 mm/mm beside the sheets'
+    0.015 m/mm for one design."""
     ratio = f"1:{mu:g}" if mu >= 1 else f"{1 / mu:g}:1"
-    return f"μ<sub>l</sub> = {mu:g} mm/mm ({ratio})"
+    return f"μ<sub>l</sub> = {number_text(mu / 1000.0)} m/mm ({ratio})"
 
 
 def scheme_paint(shots: Sequence[SchemeShot], captions: Sequence[str], theta_deg: float) -> Paint:
@@ -268,16 +271,23 @@ class ReportViews:
 def polygon_paint(design: Design, crank_deg: float, rpm: float, masses: MassProperties | None,
                   kind: str, language: str) -> Paint:
     """One polygon at true scale on the page, with the round μ that fills the figure;
-    ``kind`` "lever" is the lever's force polygon (the kinetostatic sheet's too)."""
+    ``kind`` "lever" is the lever's force polygon (the kinetostatic sheet's too). Its name
+    is the figure's caption (``polygon_caption``), numbered with the others."""
     if kind == "lever":
         polygon = lever_force_polygon(design, crank_deg, rpm, masses)
     else:
         polygon = polygons(design, crank_deg, rpm, masses)[kind]
-    heading = titles()["lever"] if kind == "lever" else None
 
     def paint(painter: QPainter, rect: QRectF, px_per_mm: float) -> None:
         font = report_font(language, 8.0)
         metrics = QFontMetricsF(font, painter.device())
-        scale = auto_scale(polygon, rect, metrics, px_per_mm)
-        paint_polygon(painter, rect, polygon, scale, px_per_mm=px_per_mm, font=font, heading=heading)
+        scale = auto_scale(polygon, rect, metrics, px_per_mm, title=False)
+        paint_polygon(painter, rect, polygon, scale, px_per_mm=px_per_mm, font=font, title=False)
     return paint
+
+
+def polygon_caption(kind: str, crank_deg: float) -> str:
+    """A polygon's caption: its name (the kind's title, the lever's for "lever") and the
+    crank angle; the drawing keeps the angle, the speed and μ above it."""
+    return (QCoreApplication.translate("Report", "%1, φ = %2°").replace("%1", titles()[kind])
+            .replace("%2", f"{crank_deg:.2f}"))

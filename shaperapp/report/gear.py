@@ -15,6 +15,7 @@ import math
 from PySide6.QtCore import QCoreApplication
 
 from core.drawing.cam_sheet import ratio_text
+from core.drawing.scales import number_text
 from core.base.errors import DesignError
 from core.base.figure_text import figure_text
 from core.gear import Check, GearPair, GearPairInputs, design_pair, pair_checks
@@ -73,12 +74,12 @@ def gear_blocks(inputs: GearPairInputs, number: int, language: str) -> list:
                for key, text in FORMULAS]
     blocks += _checks(pair)
     figure = gear_figure(pair, language)
-    blocks.append(Figure(translate("Report", "The pair in mesh at a′ = %1 mm, to scale %2 (μl = %3 mm/mm), "
+    blocks.append(Figure(translate("Report", "The pair in mesh at a′ = %1 mm, to scale %2 (μl = %3 m/mm), "
                                    "the teeth as the rack cuts them; the pinion 1 drives "
                                    "counter-clockwise. N1N2 the line of action, B1B2 the actual one, "
                                    "P the pitch point")
                          .replace("%1", f"{pair.centre_mm:.4f}").replace("%2", ratio_text(figure.scale))
-                         .replace("%3", f"{figure.scale:g}"),
+                         .replace("%3", number_text(figure.scale / 1000.0)),     # as the sheets write μl
                          figure.width_mm, figure.height_mm, figure.paint, to_scale=True))
     return blocks
 

@@ -33,7 +33,41 @@ def _heading(lay: Layout, block: Heading) -> list[Piece]:
         p.drawText(QPointF(x, y + m.height() * 1.3), block.text)
         p.setPen(QPen(GRID, 0.3 * lay.mm))
         p.drawLine(QPointF(x, y + m.height() * 1.6), QPointF(x + w, y + m.height() * 1.6))
-    return [Piece(height, paint, keep_with_next=True)]
+    return [Piece(height, paint, keep_with_next=True, heading=block.text)]
+
+
+def _contents(lay: Layout, headings: list[str], pages: dict[str, int]) -> list[Piece]:
+    """The contents under the cover: each section's heading and its page, with dot leaders.
+    The pages are those ``pages`` holds when the piece is painted (filled in after the
+    layout: the contents' height does not depend on them, so one layout serves)."""
+    m = lay.metrics(lay.body)
+    line = m.height() * 1.25
+    title = translate("Report", "Contents")
+
+    def paint_title(p: QPainter, x: float, y: float, w: float) -> None:
+        p.setFont(lay.h1)
+        p.setPen(INK)
+        p.drawText(QPointF(x, y + lay.metrics(lay.h1).height() * 1.1), title)
+
+    def entry(text: str) -> Piece:
+        def paint(p: QPainter, x: float, y: float, w: float) -> None:
+            page = str(pages.get(text, ""))
+            p.setFont(lay.body)
+            p.setPen(INK)
+            base = y + m.ascent()
+            p.drawText(QPointF(x, base), text)
+            p.drawText(QPointF(x + w - m.horizontalAdvance(page), base), page)
+            start = x + m.horizontalAdvance(text) + m.horizontalAdvance(" ")
+            end = x + w - m.horizontalAdvance(page) - m.horizontalAdvance(" ")
+            dot = m.horizontalAdvance(". ")
+            count = int(max(end - start, 0.0) // dot)
+            p.drawText(QPointF(end - count * dot, base), ". " * count)
+        return Piece(line, paint, keep_with_next=True)
+    out = [Piece(lay.metrics(lay.h1).height() * 1.6, paint_title, keep_with_next=True)]
+    out += [entry(text) for text in headings]
+    out[-1].keep_with_next = False
+    out[-1].height += m.height()
+    return out
 
 
 def _paragraph(lay: Layout, block: Paragraph) -> list[Piece]:
@@ -156,7 +190,13 @@ def _layout(report: Report, writer: QPdfWriter) -> tuple[Layout, list[list[tuple
     lay = Layout(writer, report.language)
     mm = lay.mm
     top, bottom = TOP_MM * mm, (PAGE_MM[1] - BOTTOM_MM) * mm
-    return lay, paginate(pieces_of(lay, report), top + TITLE_MM * mm, top, bottom)
+    body = pieces_of(lay, report)
+    numbers: dict[str, int] = {}
+    contents = _contents(lay, [p.heading for p in body if p.heading], numbers)
+    pages = paginate(contents + body, top + TITLE_MM * mm, top, bottom)
+    for n, page in enumerate(pages, 1):
+        numbers.update({piece.heading: n for piece, _ in page if piece.heading and piece.heading not in numbers})
+    return lay, pages
 
 
 LAYOUT_SHARE = 0.2         # of the PDF's progress: the layout; the pages share the rest

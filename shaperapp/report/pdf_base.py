@@ -36,6 +36,8 @@ class Piece:
     """"figure" for a figure's drawing, "text" for everything else (``page_boxes``)."""
     min_height: float = 0.0
     """A figure may shrink to this height to stay on a page (``paginate``)."""
+    heading: str = ""
+    """A section heading's text: the contents list it with the page it lands on."""
 
 
 class Layout:

@@ -31,7 +31,7 @@ _SUB = str.maketrans("0123456789'", "₀₁₂₃₄₅₆₇₈₉′")
 
 def titles() -> dict[str, str]:
     return {"velocity": translate("PolygonPainter", "Velocity polygon"), "acceleration": translate("PolygonPainter", "Acceleration polygon"),
-            "force": translate("PolygonPainter", "Force polygon of the ram–rod group"),
+            "force": translate("PolygonPainter", "Force polygon of the ram group"),
             "lever": translate("PolygonPainter", "Force polygon of the lever")}
 
 

@@ -25,7 +25,7 @@ def test_the_list_writes_each_figure_as_the_other_commands_do(tmp_path):
     status, dynamics, _ = shaper_in_process("dynamics", *DESIGN)
 
     def printed(text, label):
-        return re.search(rf"^{re.escape(label)}\s+(\S+)", text, re.M).group(1)
+        return re.search(rf"^{re.escape(label)}\s+([^\s°]+)", text, re.M).group(1)
     assert cells["H mm"] == "300.000" == printed(synth, "stroke H")
     assert cells["θ °"] == printed(synth, "extreme-position angle θ") == "30.000"
     assert cells["K"] == printed(synth, "time ratio K") == "1.4000"

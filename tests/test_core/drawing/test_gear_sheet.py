@@ -158,3 +158,12 @@ def test_the_least_tip_thickness_reads_as_a_multiple_of_the_module():
     drawn = gear_sheet(design_pair(GearPairInputs(**PAIRS["shaper"])), paper("A2"))
     texts = " ".join(t.text for t in drawn.sheet.items if hasattr(t, "text"))
     assert "0.25·m (= 1.5 mm)" in texts and "0.25 m" not in texts
+
+
+def test_the_base_pitch_is_marked_as_the_other_dimensions():
+    """The strip's base pitch is a dimension on a drawing, so it has the drawings' 2 places
+    (docs/methods.md), as α′ = 22.74° beside it: it read p_b = 17.713. p_b = π·m·cos α =
+    π·6·cos 20° = 17.7128 mm."""
+    drawn = gear_sheet(design_pair(GearPairInputs(**PAIRS["shaper"])), paper("A3"))
+    marks = [t.text for t in drawn.areas["line"][1] if hasattr(t, "text") and t.text.startswith("pb =")]
+    assert marks and set(marks) == {f"pb = {math.pi * 6 * math.cos(math.radians(20)):.2f}"}

@@ -25,7 +25,7 @@ def test_report_has_the_cam_of_the_tab(qtbot, model, tmp_path):
     doc = json.loads(out)
     assert "9 The feed cam" in text
     assert f"{doc['base_radius_mm']:.3f} mm" in text and f"{doc['center_distance_mm']:.3f} mm" in text
-    assert f"{doc['phase_deg']:.3f} °" in text
+    assert f"{doc['phase_deg']:.3f}°" in text
     section = text[text.index("9 The feed cam"):]
     assert "<svg" in section
 

@@ -58,7 +58,7 @@ def test_the_dxf_and_svg_texts_have_no_english_word(content, tmp_path):
 
 def test_the_scan_finds_english_and_keeps_symbols_and_units():
     """The scanner itself, on the phrases issue 32 found and on the notation that must pass."""
-    found = english_words("凸轮 (allowed 40 ° / 70 °) (largest 7.647 mm) is not a design file (not valid JSON)")
+    found = english_words("凸轮 (allowed 40° / 70°) (largest 7.647 mm) is not a design file (not valid JSON)")
     assert found == ["allowed", "largest", "is", "not", "design", "file", "not", "valid"]
     assert english_words("L1 = 100 mm, K = 1.4, H, O4, vB3, aB3B2, J_F, ψmax, 40 r/min, N·m, kg·m², "
                          "PDF/SVG/DXF/CSV, rad/s², GB/T 14689") == []

@@ -41,7 +41,7 @@ def test_export_writes_pdf_and_html_of_the_design_on_screen(window, tmp_path):
     assert stat.S_IMODE(os.stat(pdf).st_mode) != 0o600          # a normal file, not mkstemp's mode
     if shutil.which("pdftotext"):
         text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True).stdout
-        theta = f"{figure_text('angle', window.model.metrics.theta_deg)} °"   # one precision (issue 40)
+        theta = f"{figure_text('angle', window.model.metrics.theta_deg)}°"   # one precision (issue 40)
         assert theta in text and "Untitled" not in text
         assert "L1 100 mm, K 1.6, H 300 mm" in text          # named by its inputs
     html = tmp_path / "r.html"

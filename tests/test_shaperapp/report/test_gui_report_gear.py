@@ -24,8 +24,8 @@ def test_report_has_the_gear_of_the_design(model, tmp_path):
                                          "--centre", "162", "--json")
     assert status == 0, err
     pair = json.loads(out)["pair"]
-    section = text[text.index("9 The gear pair"):]
-    for value in (f"{pair['contact_ratio']:.6f}", f"{pair['working_pressure_angle_deg']:.6f} °",
+    section = text[text.rindex("9 The gear pair"):]
+    for value in (f"{pair['contact_ratio']:.6f}", f"{pair['working_pressure_angle_deg']:.6f}°",
                   f"{pair['centre_mm']:.4f} mm"):
         assert value in section, value
     assert "<svg" in section and "to scale 1:" in section

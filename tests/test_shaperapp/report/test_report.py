@@ -306,9 +306,10 @@ def test_drawing_scales_are_the_standard_series():
 @pytest.mark.parametrize("name", ["en.pdf", "zh.pdf"])
 def test_schemes_state_their_scale_and_mark_theta(reports, name):
     text = squash(pdf_text(reports[name]))
-    scales = re.findall(r"μ\s?l = (\d+(?:\.\d+)?) mm/mm \(1:(\d+(?:\.\d+)?)\)", text)
-    assert len(scales) == 2 and scales[0] == scales[1] and scales[0][0] == scales[0][1]
-    theta = shaper_run_in_process("synth", *DESIGN).stdout.split("extreme-position angle θ")[1].split()[0]
+    scales = re.findall(r"μ\s?l = (\d+(?:\.\d+)?) m/mm \(1:(\d+(?:\.\d+)?)\)", text)   # as the sheets
+    assert len(scales) == 2 and scales[0] == scales[1]
+    assert float(scales[0][0]) * 1000 == pytest.approx(float(scales[0][1]))       # μl in m/mm, 1:d
+    theta = shaper_run_in_process("synth", *DESIGN).stdout.split("extreme-position angle θ")[1].split()[0].rstrip("°")
     # one mark per scheme, written as a drawing's dimension (2 places, trailing zeros dropped)
     assert text.count(f"θ = {float(theta):.2f}".rstrip("0").rstrip(".") + "°") == 2
 

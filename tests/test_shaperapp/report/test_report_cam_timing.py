@@ -30,10 +30,10 @@ def test_the_turn_to_the_next_cut_is_named_so(qapp):
     phase, end, span = (float(v) for v in re.findall(r"\d+\.\d+", value))
     assert end == pytest.approx(rows["cut_end"], abs=5e-4)
     assert span == pytest.approx(360.0 + rows["cut_start"] - rows["cut_end"], abs=1e-3)
-    assert value == f"{phase:.3f} ° (cut ends at {end:.3f} °, the next starts {span:.3f} ° later)"
+    assert value == f"{phase:.3f}° (cut ends at {end:.3f}°, the next starts {span:.3f}° later)"
     i18n.set_language("zh_CN")
     try:
         chinese = value_text(value)
     finally:
         i18n.set_language("en")
-    assert chinese == f"{phase:.3f} ° （切削终止于 {end:.3f} °，再转 {span:.3f} ° 开始下一次切削）"
+    assert chinese == f"{phase:.3f}° （切削终止于 {end:.3f}°，再转 {span:.3f}° 开始下一次切削）"

@@ -16,8 +16,9 @@ pytestmark = [pytest.mark.slow,      # a real process: left out of the quick run
               pytest.mark.skipif(not has_pdftotext() or shutil.which("pdffonts") is None,
                                  reason="poppler-utils not installed")]
 # Notation the report writes in Latin letters: functions, subscripted symbols (J_e, P_m,
-# T_m, ΔW_max, v_slide, the Coriolis acceleration a^k) and the command line's name.
-SYMBOLS = {"sin", "cos", "tan", "Je", "Pm", "Tm", "Wmax", "vslide", "ak", "shaper"}
+# T_m, ΔW_max, v_slide, the Coriolis acceleration a^k, the rotating parts' J_c and J_i) and
+# the command line's name.
+SYMBOLS = {"sin", "cos", "tan", "Je", "Pm", "Tm", "Wmax", "vslide", "ak", "Jc", "Ji", "shaper"}
 # Words of the plots' axes and bands (resources/glossary.tsv: 工作行程), which the plots
 # drawn in Noto Sans CJK JP lost from the text layer or wrote with radicals (⼯作⾏程).
 PLOT_WORDS = ("滑枕位移", "滑枕速度", "滑枕加速度", "工作行程", "回程", "曲柄转角")
@@ -33,7 +34,8 @@ def report(tmp_path_factory):
     folder = tmp_path_factory.mktemp("zh")
     cam = CamInputs(arm_mm=160.0, program=Program(20.0, 70.0, 5.0, 80.0, "poly345", "cosine"))
     loads = MassProperties(lever_mass_kg=20.0, lever_inertia_kg_m2=1.1, ram_mass_kg=70.0,
-                           cut_force_N=7000.0, cut_height_mm=80.0)
+                           cut_force_N=7000.0, cut_height_mm=80.0,
+                           rotors=((0.5, 1.0), (0.02, 4.0)))     # the inputs' row "at 1·ω2" was English
     save_design(folder / "d.json", Spec(), [40.0, 60.0], 1.0,
                 extra={"cam": cam_to_dict(cam, None), "forces": masses_to_dict(loads),
                        "gear": {"z1": 10, "z2": 14, "module_mm": 5.0}})
@@ -67,4 +69,4 @@ def test_the_design_files_gear_pair_has_its_section(report):
     pair in mesh and its caption's scale."""
     squashed = re.sub(r"\s+", "", pdf_text(report))
     assert "10齿轮机构" in squashed and "齿轮机构" in squashed
-    assert re.search(r"比例1:[\d.]+（μl=[\d.]+mm/mm）", squashed)
+    assert re.search(r"比例1:[\d.]+（μl=[\d.]+m/mm）", squashed)

@@ -43,14 +43,14 @@ def printed(request, qapp, tmp_path_factory):
 
 def cam_section(text: str) -> str:
     """The text from the cam section's heading (the last section) to the end."""
-    heading = re.search(r"\n\s*9 (The feed cam|进给凸轮)", text)
+    heading = re.search(r"\n\s*9 (The feed cam|进给凸轮) *\n", text)     # the heading, not its line in the contents
     assert heading is not None
     return text[heading.start():]
 
 
 def test_cam_section_states_its_scale(printed):
     _, _, text = printed
-    assert re.search(r"μ\s*l = [\d.]+ mm/mm \((1:[\d.]+|[\d.]+:1)\)", cam_section(text))
+    assert re.search(r"μ\s*l = [\d.]+ m/mm \((1:[\d.]+|[\d.]+:1)\)", cam_section(text))
 
 
 def test_cam_section_has_the_follower_curves(printed):
@@ -69,6 +69,26 @@ def test_chinese_cam_section_has_no_english(printed):
         pytest.skip("the Chinese report")
     section = cam_section(text)
     assert re.findall(r"\b(allowed|largest|cut ends|clear|at)\b", section) == []
+
+
+def test_degrees_are_written_one_way(printed):
+    """An angle is written 30.000°, as the sheets and the report's inputs write it (GB 3102.1,
+    ISO 80000-1: no space before °): the report printed the CLI's '30.000 °' and, in the cam
+    section, the allowed pressure angles '(allowed 40 ° / 70 °)' under section 1's '40° / 70°'."""
+    _, _, text = printed
+    assert re.findall(r"\d °", text) == []
+
+
+def test_every_figure_has_a_numbered_caption_in_order(printed):
+    """A course report cites its figures by number: each figure's caption starts "Figure n."
+    ("图 n"), n = 1, 2, … in the order the figures are printed, and the polygons, which had
+    no caption (their name was inside the drawing), have one too."""
+    language, report, text = printed
+    from shaperapp.report.blocks import Figure
+    figures = [b for b in report.blocks if isinstance(b, Figure)]
+    pattern = r"^\s*Figure (\d+)\. \S" if language == "en" else r"^\s*图 (\d+)\s+\S"
+    printed_numbers = [int(n) for n in re.findall(pattern, text, re.M)]
+    assert len(figures) >= 10 and printed_numbers == list(range(1, len(figures) + 1))
 
 
 def test_column_headers_are_typeset_and_units_whole(printed):
