@@ -603,6 +603,22 @@
         <source>%1 from the design file</source>
         <translation>%1，取自设计文件</translation>
     </message>
+    <message>
+        <source>%1: removed %2 of an earlier run, drawn from its data; this run writes no DXF</source>
+        <translation>%1：已删除上次运行按其数据绘制的 %2；本次运行不输出 DXF</translation>
+    </message>
+    <message>
+        <source>%1 holds an earlier run's files, not made from this table (its row, line %2, is bad) and not in its answer key; left as it was</source>
+        <translation>%1 中是上次运行的文件，不是由本任务表生成的（其所在的第 %2 行有错误），也不在本次的参考答案中；已保持原样</translation>
+    </message>
+    <message>
+        <source>%1 holds an earlier run's files, not made from this table (%2 has no row for it) and not in its answer key; left as it was</source>
+        <translation>%1 中是上次运行的文件，不是由本任务表生成的（%2 中没有它的行），也不在本次的参考答案中；已保持原样</translation>
+    </message>
+    <message>
+        <source>%1 read as %2</source>
+        <translation>%1 已按 %2 编码读取</translation>
+    </message>
 </context>
 <context>
     <name>ClassSheets</name>

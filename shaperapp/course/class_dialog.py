@@ -226,8 +226,9 @@ class ClassDialog(QDialog):
             last = errors[-1] if errors else (self._errors.strip().splitlines()[-1:] or [""])[0]
             text = translate("ClassDialog", "Failed: %1").replace("%1", last)
         text = text.replace("%1", str(self._finished))
-        notes = [line.removeprefix("shaper: note: ") for line in self._errors.splitlines()
-                 if line.startswith("shaper: note: ")]
+        from .class_messages import notes_text
+        notes = notes_text([line.removeprefix("shaper: note: ") for line in self._errors.splitlines()
+                            if line.startswith("shaper: note: ")])
         if notes:       # what the run left or replaced (an earlier run's folders, DXFs, files)
             text += "\n" + translate("ClassDialog", "Notes (%1):").replace("%1", str(len(notes))) + "\n" + \
                 "\n".join(notes[:NOTES_SHOWN]) + ("\n…" if len(notes) > NOTES_SHOWN else "")
