@@ -53,6 +53,7 @@ class ClassDialog(QDialog):
         self.table.setHorizontalHeaderLabels([translate("ClassDialog", "Line"), translate("ClassDialog", "Student"),
                                               translate("ClassDialog", "Number"), translate("ClassDialog", "Check")])
         self.table.horizontalHeader().setStretchLastSection(True)
+        self.table.verticalHeader().hide()      # its 1, 2, … beside the Line column's 2, 3, … read as one number
         self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         self.summary = QLabel()
         self.summary.setWordWrap(True)

@@ -42,6 +42,10 @@ def test_the_rows_are_shown_with_their_errors_before_running(qtbot, class_files)
     assert dialog.table.rowCount() == 4
     cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(4)]
     assert [row[:3] for row in cells] == [["2", "张三", "1"], ["3", "李四", "2"], ["4", "坏", "3"], ["5", "王五", "4"]]
+    # the Line column is the row's first number: Qt's own row numbers (1, 2, …) stood before it (1 | 2)
+    dialog.show()
+    qtbot.waitExposed(dialog)
+    assert dialog.table.viewport().geometry().left() == dialog.table.frameWidth()
     # core's "must be > 1 and ≤ 5" in the words every form of the GUI gives it (widgets.messages)
     assert cells[2][3] == "tasks.csv line 4, column K: must be greater than 1 and at most 5 (got 0.9)"
     assert dialog.table.item(2, 3).background().color() == BAD
