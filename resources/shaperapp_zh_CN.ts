@@ -619,6 +619,14 @@
         <source>%1 read as %2</source>
         <translation>%1 已按 %2 编码读取</translation>
     </message>
+    <message>
+        <source>another 'shaper class' is writing into %1; let it finish, then run this one</source>
+        <translation>另一个“全班课程设计”正在向 %1 写入；请等它结束后再运行本次</translation>
+    </message>
+    <message>
+        <source>cannot make %1: %2</source>
+        <translation>无法创建 %1：%2</translation>
+    </message>
 </context>
 <context>
     <name>ClassSheets</name>

@@ -225,7 +225,8 @@ class ClassDialog(QDialog):
                 text += " " + _not_written(errors[-1] if errors else "")
         else:           # an answer key an earlier run left is not this run's success
             last = errors[-1] if errors else (self._errors.strip().splitlines()[-1:] or [""])[0]
-            text = translate("ClassDialog", "Failed: %1").replace("%1", last)
+            from .class_messages import table_message      # the command's English, in the UI's language
+            text = translate("ClassDialog", "Failed: %1").replace("%1", table_message(last))
         text = text.replace("%1", str(self._finished))
         from .class_messages import notes_text
         notes = notes_text([line.removeprefix("shaper: note: ") for line in self._errors.splitlines()

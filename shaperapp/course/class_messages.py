@@ -55,6 +55,10 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"larger than (\d+) MB; a class is at most (\d+) rows$", "larger than %1 MB; a class is at most %2 rows"),
     (r"empty; the first row names the columns \(student, student-number, …\)$",
      "empty; the first row names the columns (student, student-number, …)"),
+    # the run's own refusals of --output (shaperapp.course.class_command)
+    (r"another 'shaper class' is writing into (.+); let it finish, then run this one$",
+     "another 'shaper class' is writing into %1; let it finish, then run this one"),
+    (r"cannot make (.+?): (.+)$", "cannot make %1: %2"),
 )
 
 
@@ -92,6 +96,9 @@ def _templates() -> dict[str, str]:
             translate("ClassMessages", "larger than %1 MB; a class is at most %2 rows"),
         "empty; the first row names the columns (student, student-number, …)":
             translate("ClassMessages", "empty; the first row names the columns (student, student-number, …)"),
+        "another 'shaper class' is writing into %1; let it finish, then run this one":
+            translate("ClassMessages", "another 'shaper class' is writing into %1; let it finish, then run this one"),
+        "cannot make %1: %2": translate("ClassMessages", "cannot make %1: %2"),
     }
 
 

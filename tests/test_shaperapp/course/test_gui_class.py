@@ -184,6 +184,13 @@ def test_the_finish_and_a_rows_missing_parts_are_chinese_in_the_chinese_dialog(w
                      + "shaper: error: 1 of 4 students not written (1 bad rows, 0 failed)\n", None)
     assert_chinese_text(text, {"tasks", "csv", "GBK", "base", "json", "cam", "hub", "mm", "clearance", "out", "motion",
                                "dxf", "gear"}, text)
+    # a run refused at once (another run writes into the folder): its reason, in Chinese too
+    refusal = "shaper: error: --output: another 'shaper class' is writing into out; let it finish, then run this one\n"
+    text = _finished(dialog, tmp_path / "none", 2, refusal, None)
+    assert text.startswith("失败：--output：") and "out" in text, text
+    assert_chinese_text(text, {"output", "shaper", "class", "out"}, text)
+    text = _finished(dialog, tmp_path, 2, "".join("shaper: note: " + note + "\n" for note in NOTES)
+                     + "shaper: error: 1 of 4 students not written (1 bad rows, 0 failed)\n", None)
     lines = text.splitlines()
     assert lines[2] == "base.json 未给出 cam.hub_mm = 12.5 mm, cam.clearance_mm = 3 mm；已按这些值取用。", lines[2]
     assert "01-motion.dxf, 04-gear.dxf" in lines[4] and "out/2-x" in lines[5] and "第 4 行" in lines[5], lines
