@@ -159,7 +159,9 @@ class DrawingSheetDialog(QDialog):
         for signal in (self.paper.currentIndexChanged, self.content.currentIndexChanged,
                        self.speed.currentIndexChanged, self.count.valueChanged, self.angles[0].valueChanged,
                        self.angles[1].valueChanged, *(e.textChanged for e in self.fields.values())):
-            signal.connect(self._timer.start)
+            # not connect(self._timer.start): the signal's value (the paper's index 0 for A0,
+            # the 24 positions) became the interval, and typing re-drew the sheet per key
+            signal.connect(lambda *_: self._timer.start())
         self.update_preview()
 
     def _default_angles(self) -> None:
