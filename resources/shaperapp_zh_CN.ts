@@ -3803,16 +3803,16 @@
         <translation>将机构简图保存为图像</translation>
     </message>
     <message>
-        <source>Export scheme as &amp;DXF…</source>
-        <translation>导出机构简图为 DXF(&amp;D)…</translation>
+        <source>Export scheme as D&amp;XF…</source>
+        <translation>导出机构简图为 DXF(&amp;X)…</translation>
     </message>
     <message>
         <source>The mechanism at the current crank angle for CAD: 1:1 in mm, with its dimensions</source>
         <translation>当前曲柄转角下的机构，供 CAD 使用：1:1，单位 mm，带尺寸标注</translation>
     </message>
     <message>
-        <source>Export &amp;report (PDF/HTML)…</source>
-        <translation>导出设计说明书(&amp;R)（PDF/HTML）…</translation>
+        <source>Export r&amp;eport (PDF/HTML)…</source>
+        <translation>导出设计说明书(&amp;E)（PDF/HTML）…</translation>
     </message>
     <message>
         <source>The design report: dimensions, positions table, polygons, forces, flywheel</source>
@@ -3855,8 +3855,8 @@
         <translation>将机构移动到输入的曲柄转角</translation>
     </message>
     <message>
-        <source>Fit &amp;plots</source>
-        <translation>曲线全部显示(&amp;P)</translation>
+        <source>Fi&amp;t plots</source>
+        <translation>曲线全部显示(&amp;T)</translation>
     </message>
     <message>
         <source>Show the whole cycle in the plots of the current tab</source>
