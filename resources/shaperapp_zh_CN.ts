@@ -603,6 +603,30 @@
         <source>%1 from the design file</source>
         <translation>%1，取自设计文件</translation>
     </message>
+    <message>
+        <source>%1: removed %2 of an earlier run, drawn from its data; this run writes no DXF</source>
+        <translation>%1：已删除上次运行按其数据绘制的 %2；本次运行不输出 DXF</translation>
+    </message>
+    <message>
+        <source>%1 holds an earlier run's files, not made from this table (its row, line %2, is bad) and not in its answer key; left as it was</source>
+        <translation>%1 中是上次运行的文件，不是由本任务表生成的（其所在的第 %2 行有错误），也不在本次的参考答案中；已保持原样</translation>
+    </message>
+    <message>
+        <source>%1 holds an earlier run's files, not made from this table (%2 has no row for it) and not in its answer key; left as it was</source>
+        <translation>%1 中是上次运行的文件，不是由本任务表生成的（%2 中没有它的行），也不在本次的参考答案中；已保持原样</translation>
+    </message>
+    <message>
+        <source>%1 read as %2</source>
+        <translation>%1 已按 %2 编码读取</translation>
+    </message>
+    <message>
+        <source>another 'shaper class' is writing into %1; let it finish, then run this one</source>
+        <translation>另一个“全班课程设计”正在向 %1 写入；请等它结束后再运行本次</translation>
+    </message>
+    <message>
+        <source>cannot make %1: %2</source>
+        <translation>无法创建 %1：%2</translation>
+    </message>
 </context>
 <context>
     <name>ClassSheets</name>
@@ -3779,16 +3803,16 @@
         <translation>将机构简图保存为图像</translation>
     </message>
     <message>
-        <source>Export scheme as &amp;DXF…</source>
-        <translation>导出机构简图为 DXF(&amp;D)…</translation>
+        <source>Export scheme as D&amp;XF…</source>
+        <translation>导出机构简图为 DXF(&amp;X)…</translation>
     </message>
     <message>
         <source>The mechanism at the current crank angle for CAD: 1:1 in mm, with its dimensions</source>
         <translation>当前曲柄转角下的机构，供 CAD 使用：1:1，单位 mm，带尺寸标注</translation>
     </message>
     <message>
-        <source>Export &amp;report (PDF/HTML)…</source>
-        <translation>导出设计说明书(&amp;R)（PDF/HTML）…</translation>
+        <source>Export r&amp;eport (PDF/HTML)…</source>
+        <translation>导出设计说明书(&amp;E)（PDF/HTML）…</translation>
     </message>
     <message>
         <source>The design report: dimensions, positions table, polygons, forces, flywheel</source>
@@ -3831,8 +3855,8 @@
         <translation>将机构移动到输入的曲柄转角</translation>
     </message>
     <message>
-        <source>Fit &amp;plots</source>
-        <translation>曲线全部显示(&amp;P)</translation>
+        <source>Fi&amp;t plots</source>
+        <translation>曲线全部显示(&amp;T)</translation>
     </message>
     <message>
         <source>Show the whole cycle in the plots of the current tab</source>

@@ -12,6 +12,7 @@ Only a developer's tool: the app reads the compiled .qm.
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -44,7 +45,12 @@ def _write(tree: ET.ElementTree) -> None:
 
 
 def release() -> None:
-    subprocess.run(["pyside6-lrelease", str(TS), "-qm", str(QM)], check=True, capture_output=True)
+    """Compile beside the .qm, then put the new file in its place: a running app maps its
+    .qm into memory (QTranslator), and rewriting that file in place left it showing English
+    and then killed it with SIGBUS, as an app started from this checkout was."""
+    fresh = QM.with_name(QM.name + ".new")
+    subprocess.run(["pyside6-lrelease", str(TS), "-qm", str(fresh)], check=True, capture_output=True)
+    os.replace(fresh, QM)
 
 
 def update() -> None:

@@ -53,6 +53,7 @@ class ClassDialog(QDialog):
         self.table.setHorizontalHeaderLabels([translate("ClassDialog", "Line"), translate("ClassDialog", "Student"),
                                               translate("ClassDialog", "Number"), translate("ClassDialog", "Check")])
         self.table.horizontalHeader().setStretchLastSection(True)
+        self.table.verticalHeader().hide()      # its 1, 2, … beside the Line column's 2, 3, … read as one number
         self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         self.summary = QLabel()
         self.summary.setWordWrap(True)
@@ -224,10 +225,12 @@ class ClassDialog(QDialog):
                 text += " " + _not_written(errors[-1] if errors else "")
         else:           # an answer key an earlier run left is not this run's success
             last = errors[-1] if errors else (self._errors.strip().splitlines()[-1:] or [""])[0]
-            text = translate("ClassDialog", "Failed: %1").replace("%1", last)
+            from .class_messages import table_message      # the command's English, in the UI's language
+            text = translate("ClassDialog", "Failed: %1").replace("%1", table_message(last))
         text = text.replace("%1", str(self._finished))
-        notes = [line.removeprefix("shaper: note: ") for line in self._errors.splitlines()
-                 if line.startswith("shaper: note: ")]
+        from .class_messages import notes_text
+        notes = notes_text([line.removeprefix("shaper: note: ") for line in self._errors.splitlines()
+                            if line.startswith("shaper: note: ")])
         if notes:       # what the run left or replaced (an earlier run's folders, DXFs, files)
             text += "\n" + translate("ClassDialog", "Notes (%1):").replace("%1", str(len(notes))) + "\n" + \
                 "\n".join(notes[:NOTES_SHOWN]) + ("\n…" if len(notes) > NOTES_SHOWN else "")

@@ -8,6 +8,7 @@ the other refusals of core are given in Chinese. A phrase not known stays as cor
 """
 from __future__ import annotations
 
+import os
 import re
 
 from PySide6.QtCore import QCoreApplication
@@ -54,6 +55,10 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"larger than (\d+) MB; a class is at most (\d+) rows$", "larger than %1 MB; a class is at most %2 rows"),
     (r"empty; the first row names the columns \(student, student-number, …\)$",
      "empty; the first row names the columns (student, student-number, …)"),
+    # the run's own refusals of --output (shaperapp.course.class_command)
+    (r"another 'shaper class' is writing into (.+); let it finish, then run this one$",
+     "another 'shaper class' is writing into %1; let it finish, then run this one"),
+    (r"cannot make (.+?): (.+)$", "cannot make %1: %2"),
 )
 
 
@@ -91,6 +96,9 @@ def _templates() -> dict[str, str]:
             translate("ClassMessages", "larger than %1 MB; a class is at most %2 rows"),
         "empty; the first row names the columns (student, student-number, …)":
             translate("ClassMessages", "empty; the first row names the columns (student, student-number, …)"),
+        "another 'shaper class' is writing into %1; let it finish, then run this one":
+            translate("ClassMessages", "another 'shaper class' is writing into %1; let it finish, then run this one"),
+        "cannot make %1: %2": translate("ClassMessages", "cannot make %1: %2"),
     }
 
 
@@ -169,3 +177,51 @@ def table_message(text: str) -> str:
     else:
         template = translate("ClassMessages", "%1 line %2, column %3: %4").replace("%3", column).replace("%4", "%3")
     return template.replace("%1", name).replace("%2", line).replace("%3", _what(rest))
+
+
+# the notes ``shaper class`` prints once it has run (shaperapp.course.class_command, core.cli.notes)
+_DEFAULTED = re.compile(r"^--[\w-]+: (.+) gives no (\S+); (.+) taken$", re.S)
+_NOTES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"^(.+): removed (.+) of an earlier run, drawn from its data; this run writes no DXF \(--dxf\)$",
+                re.S), "removed"),
+    (re.compile(r"^(.+) holds an earlier run's files, not made from this table \(its row, line (\d+), is bad\) "
+                r"and not in its answer key; left as it was$", re.S), "bad row"),
+    (re.compile(r"^(.+) holds an earlier run's files, not made from this table \((.+) has no row for it\) "
+                r"and not in its answer key; left as it was$", re.S), "no row"),
+    (re.compile(r"^(.+) read as (\S+)$", re.S), "read as"),
+)
+
+
+def _note_templates() -> dict[str, str]:
+    return {
+        "removed": translate("ClassMessages", "%1: removed %2 of an earlier run, drawn from its data; this run "
+                                              "writes no DXF"),
+        "bad row": translate("ClassMessages", "%1 holds an earlier run's files, not made from this table (its row, "
+                                              "line %2, is bad) and not in its answer key; left as it was"),
+        "no row": translate("ClassMessages", "%1 holds an earlier run's files, not made from this table (%2 has no "
+                                             "row for it) and not in its answer key; left as it was"),
+        "read as": translate("ClassMessages", "%1 read as %2"),
+    }
+
+
+def notes_text(notes: list[str]) -> list[str]:
+    """The notes of a ``shaper class`` run in the UI's language (the Chinese dialog showed
+    them in core's English). The keys a design file lacked, with the values taken, are one
+    line per file as File › Open says them (``defaulted_text``), not one per key; a note
+    not known stays as the command wrote it."""
+    from shaperapp.widgets.file_messages import defaulted_text
+    lacking: dict[str, list[tuple[str, str]]] = {}
+    said: list[str] = []
+    templates = _note_templates()
+    for note in notes:
+        found = _DEFAULTED.match(note)
+        if found is not None:
+            lacking.setdefault(found.group(1), []).append((found.group(2), found.group(3)))
+            continue
+        for pattern, kind in _NOTES:
+            known = pattern.match(note)
+            if known is not None:
+                note = re.sub(r"%(\d)", lambda m: known.group(int(m.group(1))), templates[kind])
+                break
+        said.append(note)
+    return [defaulted_text(os.path.basename(path), tuple(keys)) for path, keys in lacking.items()] + said

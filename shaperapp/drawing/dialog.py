@@ -15,7 +15,7 @@ import os
 from typing import TYPE_CHECKING, Protocol
 
 from PySide6.QtCore import QSettings, QSize, Qt, QTimer
-from PySide6.QtGui import QGuiApplication, QImage, QPainter, QPixmap
+from PySide6.QtGui import QImage, QPainter, QPixmap
 from PySide6.QtWidgets import (QComboBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
                                QFormLayout, QHBoxLayout, QLabel, QLineEdit, QMessageBox, QSpinBox,
                                QWidget)
@@ -29,6 +29,7 @@ from core.course_design.positions import DEFAULT_COUNT
 
 from shaperapp.design.gear_source import design_gear
 from shaperapp.design.model import DesignModel
+from shaperapp.widgets.busy import busy_cursor
 from shaperapp.widgets.cad_font import CadFontChoice, missing_font_text
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, MAX_TEXT, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
@@ -158,7 +159,9 @@ class DrawingSheetDialog(QDialog):
         for signal in (self.paper.currentIndexChanged, self.content.currentIndexChanged,
                        self.speed.currentIndexChanged, self.count.valueChanged, self.angles[0].valueChanged,
                        self.angles[1].valueChanged, *(e.textChanged for e in self.fields.values())):
-            signal.connect(self._timer.start)
+            # not connect(self._timer.start): the signal's value (the paper's index 0 for A0,
+            # the 24 positions) became the interval, and typing re-drew the sheet per key
+            signal.connect(lambda *_: self._timer.start())
         self.update_preview()
 
     def _default_angles(self) -> None:
@@ -307,9 +310,9 @@ class DrawingSheetDialog(QDialog):
         typed = self.file_type.findData(os.path.splitext(path)[1].lower())
         if typed >= 0:                  # the type written is the one shown (and its CAD texts)
             self.file_type.setCurrentIndex(typed)
-        QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
         try:
-            self.export(path)
+            with busy_cursor():
+                self.export(path)
         except OutlineFontMissing:
             failure = missing_font_text() + " " + self.tr("Nothing was written.")
         except SheetTypeError:
@@ -327,8 +330,6 @@ class DrawingSheetDialog(QDialog):
                 "%1", failure_reason(exc))
         else:
             failure = ""
-        finally:
-            QGuiApplication.restoreOverrideCursor()
         if failure:
             QMessageBox.warning(self, self.windowTitle(), failure)
             return

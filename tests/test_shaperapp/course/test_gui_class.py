@@ -42,6 +42,10 @@ def test_the_rows_are_shown_with_their_errors_before_running(qtbot, class_files)
     assert dialog.table.rowCount() == 4
     cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(4)]
     assert [row[:3] for row in cells] == [["2", "张三", "1"], ["3", "李四", "2"], ["4", "坏", "3"], ["5", "王五", "4"]]
+    # the Line column is the row's first number: Qt's own row numbers (1, 2, …) stood before it (1 | 2)
+    dialog.show()
+    qtbot.waitExposed(dialog)
+    assert dialog.table.viewport().geometry().left() == dialog.table.frameWidth()
     # core's "must be > 1 and ≤ 5" in the words every form of the GUI gives it (widgets.messages)
     assert cells[2][3] == "tasks.csv line 4, column K: must be greater than 1 and at most 5 (got 0.9)"
     assert dialog.table.item(2, 3).background().color() == BAD
@@ -116,6 +120,17 @@ def test_the_rows_errors_are_chinese_in_the_chinese_dialog(window, qtbot, tmp_pa
     assert_chinese_text(dialog.summary.text(), allowed | {"cranky"}, dialog.summary.text())
 
 
+# the four kinds of note shaper class prints, and a key its --base file lacked twice
+NOTES = ("tasks.csv read as GBK", "--base: /x/base.json gives no cam.hub_mm; 12.5 mm taken",
+         "out/1-x: removed 01-motion.dxf, 04-gear.dxf of an earlier run, drawn from its data; this run writes no "
+         "DXF (--dxf)",
+         "--base: /x/base.json gives no cam.clearance_mm; 3 mm taken",
+         "out/2-x holds an earlier run's files, not made from this table (its row, line 4, is bad) and not in its "
+         "answer key; left as it was",
+         "out/3-x holds an earlier run's files, not made from this table (tasks.csv has no row for it) and not in "
+         "its answer key; left as it was")
+
+
 def _finished(dialog, folder, status: int, stderr: str, key_before: int | None) -> str:
     """The dialog's summary once a run that printed ``stderr`` ended with ``status``."""
     dialog.folder.setText(str(folder))
@@ -164,6 +179,21 @@ def test_the_finish_and_a_rows_missing_parts_are_chinese_in_the_chinese_dialog(w
     (tmp_path / "answer-key.json").write_text("{}", encoding="utf-8")
     text = _finished(dialog, tmp_path, 2, "shaper: error: 1 of 4 students not written (1 bad rows, 0 failed)\n", None)
     assert_chinese_text(text, set(), text)
+    # the run's notes, as shaper class prints them (they were shown in English)
+    text = _finished(dialog, tmp_path, 2, "".join("shaper: note: " + note + "\n" for note in NOTES)
+                     + "shaper: error: 1 of 4 students not written (1 bad rows, 0 failed)\n", None)
+    assert_chinese_text(text, {"tasks", "csv", "GBK", "base", "json", "cam", "hub", "mm", "clearance", "out", "motion",
+                               "dxf", "gear"}, text)
+    # a run refused at once (another run writes into the folder): its reason, in Chinese too
+    refusal = "shaper: error: --output: another 'shaper class' is writing into out; let it finish, then run this one\n"
+    text = _finished(dialog, tmp_path / "none", 2, refusal, None)
+    assert text.startswith("失败：--output：") and "out" in text, text
+    assert_chinese_text(text, {"output", "shaper", "class", "out"}, text)
+    text = _finished(dialog, tmp_path, 2, "".join("shaper: note: " + note + "\n" for note in NOTES)
+                     + "shaper: error: 1 of 4 students not written (1 bad rows, 0 failed)\n", None)
+    lines = text.splitlines()
+    assert lines[2] == "base.json 未给出 cam.hub_mm = 12.5 mm, cam.clearance_mm = 3 mm；已按这些值取用。", lines[2]
+    assert "01-motion.dxf, 04-gear.dxf" in lines[4] and "out/2-x" in lines[5] and "第 4 行" in lines[5], lines
     tasks = tmp_path / "tasks.csv"
     tasks.write_text("student,student-number,crank,K,stroke\n甲,1,100,1.4,300\n", encoding="utf-8")
     dialog.tasks.setText(str(tasks))

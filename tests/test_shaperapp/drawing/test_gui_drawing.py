@@ -59,3 +59,27 @@ def test_export_refuses_another_type_and_writes_nothing(model, qtbot, tmp_path):
     with pytest.raises(ValueError):
         dialog.export(str(tmp_path / "sheet.png"))
     assert list(tmp_path.iterdir()) == []
+
+
+def test_typing_in_a_field_redraws_the_preview_once_after_a_pause(model, qtbot, monkeypatch):
+    """The choices restarted the preview's 150 ms timer with their own value as its interval
+    (A0, the paper's index 0: 0 ms), so after choosing A0 each key typed into the title
+    block re-drew the whole sheet (0.2 s a key on this machine): typing lagged."""
+    from shaperapp.drawing import dialog as dialog_module
+    painted = []
+    real = dialog_module.paint_sheet
+    monkeypatch.setattr(dialog_module, "paint_sheet", lambda *a, **k: (painted.append(1), real(*a, **k))[1])
+    dialog = DrawingSheetDialog(model, "en")
+    qtbot.addWidget(dialog)
+    dialog.paper.setCurrentText("A0")
+    dialog.count.setValue(24)
+    dialog._timer.stop()                # those two choices' preview is not the test's
+    painted.clear()
+    field = dialog.fields["student"]
+    for key in "Zhang":                 # a quick typist: 30 ms a key
+        qtbot.keyClick(field, key)
+        qtbot.wait(30)
+    assert painted == []
+    qtbot.waitUntil(lambda: painted == [1], timeout=2000)
+    qtbot.wait(200)
+    assert painted == [1] and dialog._timer.interval() == 150

@@ -391,3 +391,36 @@ def test_a_huge_note_is_not_held_by_the_list(pane, model):
     index = pane.table_model.index(names(pane).index("short"), COLUMNS.index("notes"))
     assert pane.table_model.data(index) == "line one"
     assert pane.table_model.data(index, Qt.ItemDataRole.ToolTipRole) == "line one\nline two"
+
+
+def _cursor():
+    from PySide6.QtGui import QGuiApplication
+    cursor = QGuiApplication.overrideCursor()
+    return None if cursor is None else cursor.shape()
+
+
+def test_import_and_export_all_show_the_busy_cursor(pane, tmp_path, monkeypatch):
+    """Import read every file and computed its figures with the window frozen and the arrow
+    shown (1.5 s for a folder of 300 designs, 0.19 s to export them): the wait cursor now,
+    the arrow again over a message said in the middle (a folder that is a file),
+    and the cursor as it was afterwards."""
+    from PySide6.QtWidgets import QFileDialog
+    seen = []
+    actions = pane.actions
+    for step in ("import_paths", "export_all"):
+        real = getattr(actions, step)
+        monkeypatch.setattr(actions, step, lambda *a, real=real, step=step: (
+            seen.append((step, _cursor())), real(*a))[1])
+    monkeypatch.setattr(QMessageBox, "warning", lambda *a, **k: seen.append(("message", _cursor())))
+    folder = tmp_path / "designs"
+    folder.mkdir()
+    save_design(folder / "one.shaper.json", Spec(time_ratio=1.5), [40.0], 1.0)
+    pane.import_paths([str(folder)])
+    assert names(pane) == ["one"]
+    (tmp_path / "a file").write_text("")
+    for target in (tmp_path / "out", tmp_path / "a file"):        # the second cannot be written
+        monkeypatch.setattr(QFileDialog, "getExistingDirectory", lambda *a, target=target: str(target))
+        pane.export_all_dialog()
+    wait, arrow = Qt.CursorShape.WaitCursor, Qt.CursorShape.ArrowCursor
+    assert seen == [("import_paths", wait), ("export_all", wait), ("export_all", wait), ("message", arrow)]
+    assert (tmp_path / "out" / "one.shaper.json").exists() and _cursor() is None

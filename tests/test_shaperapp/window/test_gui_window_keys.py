@@ -136,6 +136,25 @@ def test_language_switch_leaks_no_translator(window):
         window.set_language("en")
         window.set_language("zh_CN")
     assert len(app.findChildren(QTranslator)) == count <= 2
+    assert repeated_mnemonics(window) == []
+    window.set_language("en")
+    assert repeated_mnemonics(window) == []
+
+
+def repeated_mnemonics(window) -> list[tuple[str, list[str]]]:
+    """The menus (and the menu bar) where two items share an Alt letter: the key then only
+    moves between them (File held &D twice, "scheme as DXF" and "drawing sheet", and &R,
+    &P in View, in both languages)."""
+    from PySide6.QtWidgets import QMenu
+    found = []
+    for menu in [window.menuBar(), *window.menuBar().findChildren(QMenu)]:
+        letters: dict[str, list[str]] = {}
+        for action in menu.actions():
+            letter = re.search(r"&([^&])", action.text())
+            if letter and action.isVisible() and not action.isSeparator():
+                letters.setdefault(letter.group(1).lower(), []).append(action.text())
+        found += [(menu.title(), texts) for texts in letters.values() if len(texts) > 1]
+    return found
 
 
 def test_qt_dialogs_are_chinese_too(window):
