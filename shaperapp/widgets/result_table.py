@@ -17,7 +17,7 @@ from typing import Callable, Sequence
 from PySide6.QtCore import QEvent, Qt
 from PySide6.QtGui import QAction, QFontMetrics, QGuiApplication, QKeyEvent, QKeySequence
 from PySide6.QtWidgets import (QAbstractButton, QAbstractItemView, QAbstractScrollArea, QHeaderView,
-                               QSizePolicy, QTableWidget, QTableWidgetItem, QWidget)
+                               QSizePolicy, QStyle, QTableWidget, QTableWidgetItem, QWidget)
 
 CELL_PADDING = 16            # px beside a cell's text (margins of the item delegate and grid)
 TITLES_SHARE = 0.3           # row titles are wrapped when their column keeps at least this share
@@ -133,7 +133,13 @@ class ResultTable(QTableWidget):
     def _wrap_titles(self, widths: list[int]) -> None:
         """Long row titles on two lines where that lets every column be seen (with two
         speeds the forces table's 60 r/min column was cut off behind its long titles);
-        not where the columns scroll anyway (many speeds)."""
+        not where the columns scroll anyway (many speeds).
+
+        Once wrapped they stay wrapped down to a scroll bar's width less: in a pane that
+        scrolls, the taller wrapped table brought the pane's scroll bar, 14 px narrower
+        unwrapped it, the shorter table took the bar away, and so on, every turn of the
+        event loop (61 450 fits before a segmentation fault under load in
+        test_gui_open_hostile.py, 1 December)."""
         metrics = QFontMetrics(self.verticalHeader().font())
         total = self.width() - 2 * self.frameWidth()
         shown = [self.verticalHeaderItem(r).text() for r in range(self.rowCount()) if self.verticalHeaderItem(r)]
@@ -141,7 +147,10 @@ class ResultTable(QTableWidget):
         padding = max(self.verticalHeader().sizeHint().width() - widest, 0)   # the style's margins
         longest = max((metrics.horizontalAdvance(t) for t in self._rows), default=0) + padding
         free = total - sum(widths)
-        width = free - padding if longest > free >= TITLES_SHARE * total else -1
+        least = TITLES_SHARE * total
+        if self._wrap_width >= 0:       # wrapped: kept while a scroll bar's width narrower
+            least -= self.style().pixelMetric(QStyle.PixelMetric.PM_ScrollBarExtent)
+        width = free - padding if longest > free >= least else -1
         if width == self._wrap_width:
             return
         self._wrap_width = width
