@@ -128,7 +128,9 @@ def test_forces_table_follows_edits_speeds_and_language(qtbot, tmp_path):
         assert chinese != english and "N·m" in chinese
         window.set_language("en")
         QApplication.processEvents()
-        assert table.verticalHeaderItem(0).text() == english
+        # The same English words; the line they break on may differ: a title wrapped once
+        # stays wrapped a scroll bar's width narrower (result_table._wrap_titles says why)
+        assert table.verticalHeaderItem(0).text().replace("\n", " ") == english.replace("\n", " ")
 
 
 def test_summary_is_solved_only_when_shown_and_filled_before_it_is_seen(qtbot, tmp_path):
