@@ -135,11 +135,12 @@ class ResultTable(QTableWidget):
         speeds the forces table's 60 r/min column was cut off behind its long titles);
         not where the columns scroll anyway (many speeds).
 
-        Once wrapped they stay wrapped down to a scroll bar's width less: in a pane that
-        scrolls, the taller wrapped table brought the pane's scroll bar, 14 px narrower
-        unwrapped it, the shorter table took the bar away, and so on, every turn of the
-        event loop (61 450 fits before a segmentation fault under load in
-        test_gui_open_hostile.py, 1 December)."""
+        Once wrapped they stay wrapped down to a scroll bar's width less: in the Results
+        pane the tables' width followed their wrapping by 14 px (325 px wrapped, 311 px
+        not; not the pane's own scroll bar: with it always shown the loop stayed), so
+        the titles wrapped, unwrapped and wrapped again every turn of the event loop
+        (61 450 fits, then a segmentation fault, in test_gui_open_hostile.py under load,
+        1 December). Which layout shows within that band depends on what came before."""
         metrics = QFontMetrics(self.verticalHeader().font())
         total = self.width() - 2 * self.frameWidth()
         shown = [self.verticalHeaderItem(r).text() for r in range(self.rowCount()) if self.verticalHeaderItem(r)]
