@@ -9,7 +9,6 @@ translated message and change nothing.
 from __future__ import annotations
 
 import os
-import weakref
 from dataclasses import replace
 from pathlib import Path
 from typing import Iterable, Sequence
@@ -30,7 +29,7 @@ from core.library.rows import Damage
 from core.library.store import LibraryError, utc_now
 
 from shaperapp.design.model import DesignModel
-from shaperapp.design.undo import owned_undo_stack
+from shaperapp.design.undo import held_weakly, owned_undo_stack
 from shaperapp.widgets.file_messages import defaulted_text, describe_damage, describe_file_error, describe_os_error
 from shaperapp.widgets.messages import describe
 
@@ -41,8 +40,7 @@ class _Swap(QUndoCommand):
     def __init__(self, actions: "LibraryActions", text: str, before: Sequence[Entry],
                  after: Sequence[Entry]) -> None:
         super().__init__(text)
-        # Weakly: a command must not keep its stack's owner alive (design.undo.owned_undo_stack).
-        self._actions = weakref.ref(actions)
+        self._swap = held_weakly(actions._swap)     # not keeping the stack's owner alive
         self._before, self._after = list(before), list(after)
         self._done = True        # pushed after the first swap succeeded
 
@@ -56,11 +54,11 @@ class _Swap(QUndoCommand):
         self._apply(self._after, self._before)
 
     def _apply(self, old: Sequence[Entry], new: Sequence[Entry]) -> None:
-        actions = self._actions()
-        if actions is None:
+        swap = self._swap()
+        if swap is None:
             return
         try:
-            actions._swap(old, new)
+            swap(old, new)
         except _Reported:           # the library changed meanwhile: drop this step
             self.setObsolete(True)
 
