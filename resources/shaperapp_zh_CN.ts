@@ -460,10 +460,6 @@
         <source>Notes (%1):</source>
         <translation>说明（%1 条）：</translation>
     </message>
-    <message>
-        <source>%1 of %2 students not written (%3 bad rows, %4 failed).</source>
-        <translation>%2 名学生中有 %1 名未写入（%3 行有错，%4 名失败）。</translation>
-    </message>
 </context>
 <context>
     <name>ClassMessages</name>
@@ -626,6 +622,10 @@
     <message>
         <source>cannot make %1: %2</source>
         <translation>无法创建 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 students not written (%3 bad rows, %4 failed).</source>
+        <translation>%2 名学生中有 %1 名未写入（%3 行有错，%4 名失败）。</translation>
     </message>
 </context>
 <context>

@@ -12,7 +12,6 @@ file left is complete. At the end the folder can be opened.
 from __future__ import annotations
 
 import os
-import re
 import signal
 import sys
 
@@ -212,6 +211,7 @@ class ClassDialog(QDialog):
         cancelled = not self.cancel_button.isEnabled()
         self._process = None
         self.cancel_button.setEnabled(True)
+        from .class_messages import table_message      # the command's English, in the UI's language
         folder = self.folder.text().strip()
         key = _stamp(os.path.join(folder, "answer-key.json"))
         errors = [line.removeprefix("shaper: error: ") for line in self._errors.splitlines()
@@ -221,11 +221,10 @@ class ClassDialog(QDialog):
         elif status in (0, 2) and key is not None and key != self._key_before:   # this run's answer key
             text = translate("ClassDialog", "Done: %1 students written; the task sheets and the answer key are "
                              "in the folder.")
-            if status == 2:
-                text += " " + _not_written(errors[-1] if errors else "")
+            if status == 2:     # the count of students not written
+                text += " " + table_message(errors[-1] if errors else "")
         else:           # an answer key an earlier run left is not this run's success
             last = errors[-1] if errors else (self._errors.strip().splitlines()[-1:] or [""])[0]
-            from .class_messages import table_message      # the command's English, in the UI's language
             text = translate("ClassDialog", "Failed: %1").replace("%1", table_message(last))
         text = text.replace("%1", str(self._finished))
         from .class_messages import notes_text
@@ -249,7 +248,6 @@ class ClassDialog(QDialog):
 
 
 NOTES_SHOWN = 5
-_NOT_WRITTEN = re.compile(r"^(\d+) of (\d+) students not written \((\d+) bad rows, (\d+) failed\)$")
 
 
 def _stamp(path: str) -> int | None:
@@ -259,17 +257,6 @@ def _stamp(path: str) -> int | None:
         return os.stat(path).st_mtime_ns
     except OSError:
         return None
-
-
-def _not_written(error: str) -> str:
-    """``shaper class``'s closing count of students not written, in the UI's language."""
-    found = _NOT_WRITTEN.match(error)
-    if found is None:
-        return error
-    text = translate("ClassDialog", "%1 of %2 students not written (%3 bad rows, %4 failed).")
-    for i, value in enumerate(found.groups(), start=1):
-        text = text.replace(f"%{i}", value)
-    return text
 
 
 def class_dialog(parent: QWidget, language: str, start_dir: str) -> None:

@@ -53,6 +53,8 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     (r"more than (\d+) students; split the class into several tables$",
      "more than %1 students; split the class into several tables"),
     (r"larger than (\d+) MB; a class is at most (\d+) rows$", "larger than %1 MB; a class is at most %2 rows"),
+    (r"(\d+) of (\d+) students not written \((\d+) bad rows, (\d+) failed\)$",
+     "%1 of %2 students not written (%3 bad rows, %4 failed)."),
     (r"empty; the first row names the columns \(student, student-number, …\)$",
      "empty; the first row names the columns (student, student-number, …)"),
     # the run's own refusals of --output (shaperapp.course.class_command)
@@ -99,6 +101,8 @@ def _templates() -> dict[str, str]:
         "another 'shaper class' is writing into %1; let it finish, then run this one":
             translate("ClassMessages", "another 'shaper class' is writing into %1; let it finish, then run this one"),
         "cannot make %1: %2": translate("ClassMessages", "cannot make %1: %2"),
+        "%1 of %2 students not written (%3 bad rows, %4 failed).":
+            translate("ClassMessages", "%1 of %2 students not written (%3 bad rows, %4 failed)."),
     }
 
 
