@@ -17,6 +17,8 @@ from PySide6.QtCore import QEvent, QSettings, QTimer
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence
 from PySide6.QtWidgets import QApplication, QInputDialog, QMainWindow, QMessageBox, QVBoxLayout, QWidget
 
+from core.base.figure_text import figure_text
+
 from shaperapp.design.document import Document
 from shaperapp.design.inputs_pane import InputsPane
 from shaperapp.design.model import DesignModel
@@ -265,8 +267,8 @@ class MainWindow(QMainWindow):
         else:
             m = self.model.metrics
             self.statusBar().showMessage(
-                self.tr("K = %1, H = %2 mm, θ = %3°").replace("%1", f"{m.time_ratio:.4f}")
-                .replace("%2", f"{m.stroke_mm:.2f}").replace("%3", f"{m.theta_deg:.3f}"))
+                self.tr("K = %1, H = %2 mm, θ = %3°").replace("%1", figure_text("ratio", m.time_ratio))
+                .replace("%2", figure_text("length", m.stroke_mm)).replace("%3", figure_text("angle", m.theta_deg)))
 
     # ---- slots -------------------------------------------------------------
     def _show_failure(self, message: str) -> None:

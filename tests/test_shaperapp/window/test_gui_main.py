@@ -16,6 +16,15 @@ def test_opens_on_default_design(window):
     assert "Untitled" in window.windowTitle()
 
 
+def test_the_status_bar_writes_k_h_and_theta_as_every_table_does(window):
+    """The status bar wrote H to 2 decimals (300.00 mm) under a Results pane writing
+    300.000: it now writes K, H and θ through the one rule of every table."""
+    metrics = window.model.metrics
+    assert window.statusBar().currentMessage() == (
+        f"K = {metrics.time_ratio:.4f}, H = {metrics.stroke_mm:.3f} mm, θ = {metrics.theta_deg:.3f}°")
+    assert window.metrics.value_text("stroke") in window.statusBar().currentMessage()
+
+
 def test_typing_k_updates_everything(window, qtbot):
     edit = window.form.field("time_ratio")
     edit.selectAll()
