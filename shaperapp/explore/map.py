@@ -35,6 +35,9 @@ class HeatMap(pg.PlotWidget):
         item = self.getPlotItem()
         item.showGrid(False, False)
         item.setMenuEnabled(False)
+        # no auto-range button ("A"): the grid sets the range, and the button's auto-range
+        # framed the items instead and kept framing them after the next map
+        item.hideButtons()
         # Room above the plot for half a tick label: the top tick ("3.0") was cut in half.
         item.layout.setContentsMargins(2, TOP_MARGIN_PX, 2, 2)
         self.getViewBox().setMouseEnabled(x=False, y=False)

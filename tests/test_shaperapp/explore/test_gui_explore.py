@@ -52,6 +52,17 @@ def test_map_shows_core_figures_with_invalid_cells(qtbot, view, model):
     assert np.all(np.isnan(shown[~result.valid]))     # invalid: transparent over the grey
 
 
+def test_the_map_offers_no_auto_range_button_under_the_mouse(qtbot, view):
+    """pyqtgraph shows an "A" button in a plot's corner while the mouse is over it; on the
+    map (whose range the grid sets) it framed the items instead, as no other plot of the
+    window offers it."""
+    compute(qtbot, view)
+    item = view.map.getPlotItem()
+    item.mouseHovering = True           # what pyqtgraph's hover event sets
+    item.updateButtons()
+    assert not item.autoBtn.isVisible()
+
+
 def test_hover_names_the_reason_of_an_invalid_cell(qtbot, view):
     view.count.setValue(10)
     view.lows[1].setValue(300.0)
