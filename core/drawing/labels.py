@@ -125,12 +125,15 @@ def place(text: str, at: Pair, height: float, taken: list[Box], segments: np.nda
             if label is not None:
                 return [label]
     h = small
-    for spacing in (label_gap(h), (0.0, 0.0)):
+    # a label on a leader stands off every other named point: beside one it reads as its
+    # name, leader or not (方案 III's A3 kinetostatic sheet: R_O2 led out beside R_C's head)
+    aloof = None if others is None else (lambda boxes: box_distance(boxes, others).min(axis=-1) >= h)
+    for keep, spacing in itertools.product(dict.fromkeys((aloof, None)), (label_gap(h), (0.0, 0.0))):
         spots = ring_candidates(text, at, h, preferred, gap, range(rings, rings + LEADER_RINGS), None, subscripts)
-        best = with_leader(spots, at, taken, segments, within, leader_gap, spacing=spacing)
+        best = with_leader(spots, at, taken, segments, within, leader_gap, spacing=spacing, keep=keep)
         if (best is None or best[2]) and within is not None:     # anywhere in the drawing, nearest first
             far = with_leader(grid_candidates(text, at, h, within, subscripts), at, taken, segments, within,
-                              leader_gap, enough=FAR_CHOICES, spacing=spacing)
+                              leader_gap, enough=FAR_CHOICES, spacing=spacing, keep=keep)
             best = far if best is None or (far is not None and far[2] < best[2]) else best
         if best is not None:
             break
@@ -213,17 +216,21 @@ def spot_boxes(spots: Sequence[Text]) -> np.ndarray:
 
 def with_leader(spots: Iterable[Text], at: Pair, taken: Sequence[Box], segments: np.ndarray,
                 within: Box | None, leader_gap: float, enough: int | None = None,
-                spacing: Pair = (0.0, 0.0)) -> tuple[Text, Polyline, int] | None:
+                spacing: Pair = (0.0, 0.0), keep: Callable[[np.ndarray], np.ndarray] | None = None
+                ) -> tuple[Text, Polyline, int] | None:
     """Of the free ``spots`` (``spacing`` (x, y) mm off every taken box; the first ``enough``
     of them, if given), the one whose leader
     line from ``at`` crosses the fewest strokes (the first of equals) and no taken box, with
     that line and how many strokes it crosses; None if none is free. The spots are tested in
-    batches, in their order."""
+    batches, in their order; with ``keep`` (boxes (k, 4) → (k,) bools) only the spots it
+    keeps."""
     best, found, order = None, 0, 0
     boxes_taken = np.asarray(taken, dtype=float).reshape(-1, 4)
     for batch in _batches(spots):
         boxes = spot_boxes(batch)
         free = np.flatnonzero(free_spots(boxes, boxes_taken, segments, within, spot_gaps(batch, spacing)))
+        if keep is not None and len(free):
+            free = free[keep(boxes[free])]
         ends = leader_ends(at, boxes[free], leader_gap)
         clear = ~strokes_meet_boxes(ends, boxes_taken)
         free, ends = free[clear], ends[clear]

@@ -190,9 +190,11 @@ def link_anchors(design: Design, crank_deg: float, where: Placement, reach: floa
                  avoid: Sequence[np.ndarray] = (),
                  free: Callable[[np.ndarray, np.ndarray, str], bool] | None = None
                  ) -> list[tuple[str, np.ndarray, np.ndarray]]:
-    """The links' numbers of the task book (crank 2, block 3, lever 4, rod 5, ram 6) at one
+    """The links' numbers of the task book (crank 2, block 3, lever 4, rod 5 or, in the block
+    variant, the block at B in the ram's slot 5, ram 6; seed 003's 4, one lower) at one
     crank angle as (number, the point on the link its leader starts at, the offset from it
-    to the number): of eight directions at ``reach`` or 1.6 ``reach``, the spot farthest from
+    to the number): of eight directions at ``reach`` or 1.6 ``reach`` (2.2 for the block at B,
+    which the ram's body boxes in), the spot farthest from
     the links, the ram and the points in ``avoid`` (the joints' names, the numbers placed
     before), the shorter leader when both are CLEAR; so that a student reads the sketch in
     the book's numbering. With ``free`` (the leader's start, the spot, the number → whether
@@ -205,8 +207,11 @@ def link_anchors(design: Design, crank_deg: float, where: Placement, reach: floa
     if design.rod is not None:
         segments.append((j["B"], j["C"]))
     along = (j["B"] - j["O4"]) / max(float(np.hypot(*(j["B"] - j["O4"]))), 1e-9)
-    spots = {"crank": (j["O2"] + j["A"]) / 2.0, "block": j["A"] + along * (BLOCK[0] / 2.0),
-             "lever": j["O4"] + 0.3 * (j["B"] - j["O4"]), "ram": np.array([x0 + 0.3 * RAM[0], y1])}
+    spots = {"crank": (j["O2"] + j["A"]) / 2.0}
+    if design.rod is None:      # link 5, the block at B, boxed in by the ram: before the others
+        spots["rod"] = j["B"] + [0.0, BLOCK[0] / 4.0]
+    spots.update({"block": j["A"] + along * (BLOCK[0] / 2.0), "lever": j["O4"] + 0.3 * (j["B"] - j["O4"]),
+                  "ram": np.array([x0 + 0.3 * RAM[0], y1])})
     if design.rod is not None:
         spots["rod"] = (j["B"] + j["C"]) / 2.0
     ways = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(np.arange(0.0, 360.0, 45.0))]
@@ -219,7 +224,9 @@ def link_anchors(design: Design, crank_deg: float, where: Placement, reach: floa
                        + [float(np.hypot(*(at - q))) for q in avoid])
             blocked = free is not None and not free(p, at, LINK_NUMBERS[link])
             return min(room, CLEAR) - 1e-3 * float(np.hypot(*offset)) - (100.0 if blocked else 0.0)
-        best = max(offsets, key=score)
+        # the block at B sits inside the ram: its number may need a leader out of the ram's body
+        farther = [u * 2.2 * reach for u in ways] if link == "rod" and design.rod is None else []
+        best = max(offsets + farther, key=score)
         anchors.append((LINK_NUMBERS[link], p, best))
         avoid = [*avoid, p + best]
     return anchors

@@ -264,7 +264,7 @@ def _draw_dimensions(msp, design: Design, p: Pose, lay: _Layout, scale: float,
     chain = left - gap
     dims.linear(msp, (0.0, 0.0), p.o2, (chain, 0.0), 90.0, "L2")
     dims.linear(msp, p.o2, (lay.rail[0], design.guide), (chain, 0.0), 90.0, "h")
-    dims.aligned(msp, p.o2, p.o2 + design.crank * _l1_direction(design, p), 0.0, "L1")
+    _dimension_l1(msp, design, p, labels)
     if design.rod is not None:
         # above the ram and its guide way: below the rod the lever runs down from B
         rise = design.guide + lay.high + 0.7 * p.u + gap - float(p.b[1])
@@ -329,11 +329,65 @@ def _o2_label_direction(design: Design, p: Pose) -> np.ndarray:
     return away / size
 
 
-def _l1_direction(design: Design, p: Pose) -> np.ndarray:
-    """Where L1 is dimensioned as the crank circle's radius: the direction from O2 (in 5°
-    steps) farthest from those where a line leaves O2 or meets the circle: the crank, the
-    lever's two crossings, the limit positions' tangent points, the frame's centre line,
-    the sides of O2's ground symbol, and O2's name."""
+def _dimension_l1(msp, design: Design, p: Pose, labels: list[Text]):
+    """L1 as the crank circle's radius, its text clear of the joints' names: of the
+    directions :func:`_l1_directions` ranks, the first where the text, between the arrows
+    (where ezdxf puts it) or else just outside the circle on the line's way out, meets no
+    name; the best outside spot where none does. Outside only where the text reads outward
+    (the line's direction within (−60°, 120°], :func:`dimensions.reading_order`): LibreCAD
+    moves a text longer than its line past the line's end in the text's reading direction,
+    from where the DXF puts it; reading inward that was back over O2 ("L1 = 100" over O2 at
+    K 1.2, H 500). The place is written as the dimension's own (a user-defined location),
+    which LibreCAD takes. Why a search: the direction alone saw no text, and "L1 = 100" lay
+    over O2 and A at 45 of 72 crank angles of that design."""
+    taken = [t.box() for t in labels]
+    ways = _l1_directions(design, p)
+    first = None
+    for way in ways:
+        dim = dims.aligned(msp, p.o2, p.o2 + design.crank * way, 0.0, "L1")
+        text = _dimension_text(msp, dim)
+        msp.doc.blocks.delete_block(dim.dxf.geometry, safe=False)
+        msp.delete_entity(dim)
+        spots = [text.position]
+        if -60.0 < math.degrees(math.atan2(way[1], way[0])) <= 120.0:
+            out = 0.5 * design.crank + msp.doc.header["$DIMGAP"] + 0.5 * text_width(text.text, text.height)
+            spots.append(tuple(map(float, np.add(text.position, out * way))))
+            first = first or (way, spots[1])
+        for spot in spots:
+            if not any(_quad_meets_box(_text_corners(replace(text, position=spot)), box) for box in taken):
+                return dims.aligned(msp, p.o2, p.o2 + design.crank * way, 0.0, "L1", location=spot)
+    way, spot = first or (ways[0], None)
+    return dims.aligned(msp, p.o2, p.o2 + design.crank * way, 0.0, "L1", location=spot)
+
+
+def _text_corners(text: Text) -> np.ndarray:
+    """The four corners (4, 2) of ``text``'s upright box turned by its rotation about its
+    position: the rotated rectangle itself, not its bounds."""
+    x0, y0, x1, y1 = text.upright_box()
+    at = np.asarray(text.position, dtype=float)
+    c, s = math.cos(math.radians(text.rotation)), math.sin(math.radians(text.rotation))
+    local = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)]) - at
+    return at + local @ np.array([[c, s], [-s, c]])
+
+
+def _quad_meets_box(quad: np.ndarray, box) -> bool:
+    """Whether the convex quadrilateral ``quad`` (4, 2) and the upright ``box`` overlap: no
+    separating axis among the box's and the quadrilateral's edge normals."""
+    corners = np.array([(box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])])
+    edges = np.diff(np.vstack([quad, quad[:1]]), axis=0)
+    for normal in [np.array([1.0, 0.0]), np.array([0.0, 1.0]), *(np.array([-e[1], e[0]]) for e in edges[:2])]:
+        a, b = quad @ normal, corners @ normal
+        if a.max() <= b.min() or b.max() <= a.min():
+            return False
+    return True
+
+
+def _l1_directions(design: Design, p: Pose) -> list[np.ndarray]:
+    """Where L1 may be dimensioned as the crank circle's radius: the directions from O2 (in
+    5° steps), the farthest first from those where a line leaves O2 or meets the circle: the
+    crank, the lever's two crossings, the limit positions' tangent points, the frame's
+    centre line, the sides of O2's ground symbol, and O2's name; those within 15° of one
+    left out (the best one kept)."""
     along = p.b / design.lever
     mid = float(np.dot(along, p.o2))
     root = math.sqrt(max(mid * mid - design.frame ** 2 + design.crank ** 2, 0.0))
@@ -343,6 +397,7 @@ def _l1_direction(design: Design, p: Pose) -> np.ndarray:
     taken = np.array([math.atan2(q[1] - p.o2[1], q[0] - p.o2[0]) for q in points]
                      + [down, down - 0.6, down + 0.6, math.pi / 2.0])
     candidates = np.radians(np.arange(0.0, 360.0, 5.0))
-    gaps = np.abs((candidates[:, None] - taken[None, :] + math.pi) % (2 * math.pi) - math.pi)
-    best = candidates[int(np.argmax(gaps.min(axis=1)))]
-    return np.array([math.cos(best), math.sin(best)])
+    gaps = np.abs((candidates[:, None] - taken[None, :] + math.pi) % (2 * math.pi) - math.pi).min(axis=1)
+    order = np.argsort(-gaps, kind="stable")
+    keep = [k for k in order if gaps[k] >= math.radians(15.0)] or [int(order[0])]
+    return [np.array([math.cos(candidates[k]), math.sin(candidates[k])]) for k in keep]

@@ -142,3 +142,11 @@ def cover_rows(report: Report) -> list[tuple[str, str]]:
             (translate("Report", "Supervisor"), c.supervisor), (translate("Report", "Date"), report.date)]
 
 
+
+
+def contents(report: Report) -> tuple[str, list[str]]:
+    """The contents list's title and its entries, the sections' headings in order: one list
+    for the PDF's contents page (with the page each lands on) and the HTML's (with a link
+    to each), so that the two cannot list different sections."""
+    return (QCoreApplication.translate("Report", "Contents"),
+            [block.text for block in report.blocks if isinstance(block, Heading)])

@@ -15,8 +15,8 @@ from PySide6.QtSvg import QSvgGenerator
 from shaperapp.widgets.fonts import report_font
 from shaperapp.widgets.notation import typeset
 
-from .blocks import (Figure, Heading, KeyValues, Paragraph, Report, Table, column_blocks, cover_rows,
-                     split_table)
+from .blocks import (Figure, Heading, KeyValues, Paragraph, Report, Table, column_blocks, contents,
+                     cover_rows, split_table)
 
 SVG_DPI = 96.0
 STYLE = """
@@ -40,6 +40,8 @@ table.kv td { padding: 0.5mm 4mm 0.5mm 0; }
 .caption { font-weight: bold; margin: 2mm 0 0; }
 figure { margin: 4mm 0; page-break-inside: avoid; }
 figcaption { font-style: italic; font-size: 8.5pt; }
+nav.contents ol { list-style: none; padding-left: 0; }
+nav.contents li { margin: 1mm 0; }
 """
 
 
@@ -112,9 +114,14 @@ def report_html(report: Report) -> str:
                                                  for k in range(1, len(rows), 2)]
     body = [f'<div class="title"><h1>{html.escape(report.title)}</h1><table>'
             + "".join(f"<tr>{row}</tr>" for row in cells) + "</table></div>"]
+    title, headings = contents(report)
+    body.append(f'<nav class="contents"><h2>{html.escape(title)}</h2><ol>'
+                + "".join(f'<li><a href="#section-{k}">{html.escape(text)}</a></li>'
+                          for k, text in enumerate(headings, 1)) + "</ol></nav>")
+    sections = iter(range(1, len(headings) + 1))
     for block in report.blocks:
         if isinstance(block, Heading):
-            body.append(f"<h2>{html.escape(block.text)}</h2>")
+            body.append(f'<h2 id="section-{next(sections)}">{html.escape(block.text)}</h2>')
         elif isinstance(block, Paragraph):
             body.append(f"<p>{block.html}</p>")
         elif isinstance(block, KeyValues):

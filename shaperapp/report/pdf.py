@@ -14,7 +14,7 @@ from PySide6.QtGui import QFont, QPageLayout, QPageSize, QPainter, QPdfWriter, Q
 
 from core.base.progress import Progress
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, cover_rows
+from .blocks import Figure, Heading, KeyValues, Paragraph, Report, Table, contents, cover_rows
 from .pdf_base import (BOTTOM_MM, GRID, INK, LEFT_MM, PAGE_MM, RESOLUTION, SHRINK, TITLE_MM, TOP_MM,
                        Layout, Piece, translate)
 from .pdf_tables import table_pieces
@@ -36,13 +36,14 @@ def _heading(lay: Layout, block: Heading) -> list[Piece]:
     return [Piece(height, paint, keep_with_next=True, heading=block.text)]
 
 
-def _contents(lay: Layout, headings: list[str], pages: dict[str, int]) -> list[Piece]:
-    """The contents under the cover: each section's heading and its page, with dot leaders.
-    The pages are those ``pages`` holds when the piece is painted (filled in after the
-    layout: the contents' height does not depend on them, so one layout serves)."""
+def _contents(lay: Layout, report: Report, pages: dict[str, int]) -> list[Piece]:
+    """The contents under the cover (:func:`blocks.contents`): each section's heading and its
+    page, with dot leaders. The pages are those ``pages`` holds when the piece is painted
+    (filled in after the layout: the contents' height does not depend on them, so one
+    layout serves)."""
     m = lay.metrics(lay.body)
     line = m.height() * 1.25
-    title = translate("Report", "Contents")
+    title, headings = contents(report)
 
     def paint_title(p: QPainter, x: float, y: float, w: float) -> None:
         p.setFont(lay.h1)
@@ -192,8 +193,7 @@ def _layout(report: Report, writer: QPdfWriter) -> tuple[Layout, list[list[tuple
     top, bottom = TOP_MM * mm, (PAGE_MM[1] - BOTTOM_MM) * mm
     body = pieces_of(lay, report)
     numbers: dict[str, int] = {}
-    contents = _contents(lay, [p.heading for p in body if p.heading], numbers)
-    pages = paginate(contents + body, top + TITLE_MM * mm, top, bottom)
+    pages = paginate(_contents(lay, report, numbers) + body, top + TITLE_MM * mm, top, bottom)
     for n, page in enumerate(pages, 1):
         numbers.update({piece.heading: n for piece, _ in page if piece.heading and piece.heading not in numbers})
     return lay, pages

@@ -17,6 +17,7 @@ from PySide6.QtWidgets import (QGraphicsItem, QGraphicsPathItem, QGraphicsRectIt
                                QGraphicsView)
 
 from shaperapp.plots.axes import HiddenAxis, NavViewBox, unlink_hidden_axes
+from shaperapp.widgets.fonts import drawing_lettering
 from shaperapp.widgets.style import CURSOR, FRAME, LINK, TOOL_PATH
 
 LINK_FILL = QColor(LINK.red(), LINK.green(), LINK.blue(), 38)
@@ -123,10 +124,10 @@ def overlaps(a: Box, b: Box) -> bool:
 
 
 def joint_font(points: int) -> QFont:
-    font = QFont()
+    """The joint names' font at ``points``: lettered as the drawing sheets are, in bold."""
+    font = drawing_lettering(QFont())
     font.setPointSize(points)
     font.setBold(True)
-    font.setItalic(True)
     return font
 
 

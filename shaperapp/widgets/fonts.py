@@ -61,6 +61,19 @@ def latin_family() -> str | None:
     return next((name for name in PREFERRED_LATIN if name in available), None)
 
 
+def drawing_lettering(font: QFont) -> QFont:
+    """``font`` lettered as the drawings letter points and symbols: upright. GB/T 14691
+    lets a drawing letter upright or sloped (75°), one way throughout; the sheets are
+    upright. One definition for the sheets' texts and the scheme's joint names, which the
+    screen and the report's figures show, so that O₂, A, B stand alike on a sheet and in
+    the report (the report's were italic). The weight is each one's own: the scheme keeps
+    its names bold on screen (in regular weight B went under the force caption in the
+    laptop pane at 6 of 72 angles against 4, test_gui_scheme_clashes.py)."""
+    font = QFont(font)
+    font.setItalic(False)
+    return font
+
+
 def report_font(language: str, point_size: float = 9.5) -> QFont:
     """The body font of a report in ``language`` ('en' or 'zh_CN'): a Latin family for
     letters and digits, then (Chinese) a CJK family for the Chinese characters."""

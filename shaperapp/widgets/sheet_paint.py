@@ -24,7 +24,7 @@ from core.drawing.dxf import LAYERS, LINETYPES, THICK_MM
 from core.drawing.sheet import Circle, Polyline, Sheet, Text, is_square, text_width
 from core.drawing.text_runs import closed_up
 
-from .fonts import report_font
+from .fonts import drawing_lettering, report_font
 
 INK = QColor(0, 0, 0)
 
@@ -56,7 +56,7 @@ def paint_sheet(sheet: Sheet, painter: QPainter, language: str = "en", svg: bool
     the sheet's upper left corner; ``svg`` when the painter is a QSvgGenerator's (its dash
     patterns are reckoned differently, see :func:`svg_dash_unit`)."""
     height = sheet.paper.height
-    font = report_font(language)
+    font = drawing_lettering(report_font(language))
     font.setPixelSize(100)
     metrics = QFontMetricsF(font)
     cap = metrics.capHeight() or 70.0

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from core.drawing.class_sheets import LEADER, SKETCH_DEG, task_sheet
-from core.drawing.mechanism import joints, link_anchors
+from core.drawing.mechanism import BLOCK, joints, link_anchors
 from core.drawing.sheet import Text
 from core.linkage.spec import Spec
 
@@ -25,7 +25,7 @@ def _segment_distance(p, a, b):
     return float(np.hypot(*(p - a - t * d)))
 
 
-@pytest.mark.parametrize("rod_ratio, numbers", [(0.3, {"2", "3", "4", "5", "6"}), (None, {"2", "3", "4", "6"})])
+@pytest.mark.parametrize("rod_ratio, numbers", [(0.3, {"2", "3", "4", "5", "6"}), (None, {"2", "3", "4", "5", "6"})])
 def test_every_link_is_numbered_as_the_task_book_numbers_it(rod_ratio, numbers):
     doc, design = _doc(rod_ratio)
     where = lambda p: np.asarray(p, dtype=float) / 10.0      # noqa: E731  (1:10)
@@ -39,6 +39,8 @@ def test_every_link_is_numbered_as_the_task_book_numbers_it(rod_ratio, numbers):
         assert LEADER - 1e-9 <= float(np.hypot(*offset)) <= 1.6 * LEADER + 1e-9
         if number in links:       # the leader starts on its own link (the block: on the lever it slides on)
             assert min(_segment_distance(point, a, b) for a, b in links[number]) < 1e-9, number
+        elif number == "5":       # the block at B in the ram's vertical slot (task book 5): inside it
+            assert np.all(np.abs(point - j["B"]) <= np.array(BLOCK[::-1]) / 2.0), point - j["B"]
         spot = point + offset
         for a, b in [(j["O2"], j["A"]), (j["O4"], j["B"])]:
             assert _segment_distance(spot, a, b) > 2.0, number        # the number is off the links
@@ -82,7 +84,7 @@ def test_no_name_or_number_of_the_sketch_is_crossed_or_overlaps(dims, rod_ratio)
     assert [(t.text, type(it).__name__) for t, it in crossed_texts(sheet)] == []
     assert [(a.text, b.text) for a, b in overlapping_texts(sheet)] == []
     texts = {item.text for item in sheet.items if isinstance(item, Text)}
-    assert {"O2", "O4", "A", "B", "2", "3", "4", "6"} | ({"C", "5"} if rod_ratio else set()) <= texts
+    assert {"O2", "O4", "A", "B", "2", "3", "4", "5", "6"} | ({"C"} if rod_ratio else set()) <= texts
 
 
 def test_the_students_line_shows_the_whole_name_and_number():
@@ -173,5 +175,5 @@ def test_the_sketch_keeps_off_the_caption_over_it(crank, frame, lever, rod_ratio
     texts = [t for t in sheet.items if isinstance(t, Text)]
     caption = next(t for t in texts if t.text.startswith("The mechanism"))
     numbers = [t for t in texts if t.text in {"2", "3", "4", "5", "6"}]
-    assert len(numbers) == (5 if rod_ratio else 4)
+    assert len(numbers) == 5           # the block variant's block at B is 5, as the rod is
     assert all(t.box()[3] < caption.box()[1] for t in numbers)

@@ -221,3 +221,58 @@ def test_the_torque_and_energy_charts_number_their_y_axes(design, size):
             assert (text.position[1] - origin[1]) * mu == pytest.approx(value, rel=1e-9), (name, text.text)
             assert text.box()[2] < origin[0]                                  # left of the axis
             assert any(abs(t[0, 1] - text.position[1]) < 1e-9 for t in ticks), (name, text.text)
+
+
+# 方案 I–III of the task book (L1, L2, L3, L4/L3, n r/min, G4 N, J_S4 kg·m², G6 N, P N, y_P mm)
+TASK_BOOK = {"I": (110, 380, 540, 0.25, 60, 200, 1.1, 700, 7000, 80),
+             "II": (90, 350, 580, 0.3, 64, 220, 1.2, 800, 9000, 80),
+             "III": (110, 430, 810, 0.36, 72, 220, 1.2, 620, 8000, 100)}
+
+
+def _head_labels(drawn, k: int):
+    """(force, its arrow's head, its label, whether a leader ties them) on mechanism ``k``
+    (1, 2) of a kinetostatic sheet: the label is the text of the force's name, its leader
+    a two-point thin line from 0.5 mm off the head to the label's box."""
+    from core.drawing.forces import FORCE_NAMES
+    from core.drawing.labels import box_distance
+    from core.drawing.sheet import symbol
+    _, items = drawn.areas[f"mechanism {k}"]
+    texts = {t.text: t for t in items if isinstance(t, Text)}
+    lines = [np.asarray(it.points, float) for it in items
+             if isinstance(it, Polyline) and len(it.points) == 2 and not it.filled]
+    out = []
+    for (kk, name), (_, head) in drawn.shown.items():
+        label = texts.get(symbol(FORCE_NAMES[name])[0]) if kk == k - 1 else None
+        if label is None:
+            continue
+        box = np.array(label.box())
+        led = any(np.hypot(*(a - head)) < 0.6 and box_distance(box, c[None])[0] < 0.5
+                  for p in lines for a, c in ((p[0], p[1]), (p[1], p[0])))
+        out.append((name, np.asarray(head, float), label, led))
+    return out
+
+
+@pytest.mark.parametrize("name, size", [("I", "A3"), ("II", "A3"), ("III", "A3"), ("II", "A2")])
+def test_a_force_led_out_stands_off_the_other_arrowheads(name, size):
+    """方案 III on A3 at φ = 270°: R_O2 went out on a leader to a spot 3.2 mm beside R_C's
+    arrowhead, whose own name stood farther off, so the pair read the wrong way round; on
+    A2 方案 II's G6 stood 0.6 mm from R_A's head. A force's name on a leader keeps at least
+    its own height from every other force's arrowhead (the labels' search, leader spots
+    first kept off every named point), at both positions the sheet draws; and every name
+    is on the sheet, clear of every line and text (assert_laid_out)."""
+    from core.drawing.labels import box_distance
+    from core.linkage.geometry import from_dimensions
+    l1, l2, l3, rod, n, g4, j4, g6, p, yp = TASK_BOOK[name]
+    design = from_dimensions(l1, l2, l3, rod_ratio=rod)
+    loads = MassProperties(lever_mass_kg=g4 / 9.81, lever_inertia_kg_m2=j4, ram_mass_kg=g6 / 9.81,
+                           cut_force_N=p, cut_height_mm=yp, rod_mass_kg=8.0)
+    drawn = forces_sheet(design, float(n), masses_for_design(design, loads), paper(size))
+    assert_laid_out(drawn.sheet, drawn.areas)
+    for k in (1, 2):
+        found = _head_labels(drawn, k)
+        assert len(found) == sum(1 for kk, _ in drawn.shown if kk == k - 1)      # every force named
+        for force, head, label, led in found:
+            if led:
+                others = np.array([h for f, h, _, _ in found if f != force and not np.allclose(h, head)])
+                clear = box_distance(np.array(label.box()), others).min()
+                assert clear >= label.height - 1e-9, (k, force, round(float(clear), 2))

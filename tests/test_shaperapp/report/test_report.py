@@ -7,6 +7,7 @@ import shutil
 import stat
 import subprocess
 import unicodedata
+from html.parser import HTMLParser
 
 import numpy as np
 import pytest
@@ -101,6 +102,55 @@ def test_html_report_has_the_same_numbers_and_figures(reports, expected):
     assert missing == []
     assert html.count("<svg") >= 8              # two schemes… curves, 6 polygons, forces
     assert "μv = " in html or "v = " in html
+
+
+class _Links(HTMLParser):
+    """The HTML's contents (each link's text and target) and its section headings (id → text)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.links: list[tuple[str, str]] = []
+        self.ids: dict[str, str] = {}
+        self._open: tuple[str, str] | None = None       # (kind, key) of the element being read
+        self._text = ""
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "a" and attrs.get("href", "").startswith("#"):
+            self._open, self._text = ("link", attrs["href"][1:]), ""
+        elif tag == "h2" and "id" in attrs:
+            self._open, self._text = ("id", attrs["id"]), ""
+
+    def handle_data(self, data):
+        self._text += data
+
+    def handle_endtag(self, tag):
+        if self._open and tag in ("a", "h2"):
+            kind, key = self._open
+            if kind == "link":
+                self.links.append((self._text, key))
+            else:
+                self.ids[key] = self._text
+            self._open = None
+
+
+@needs_pdftotext
+def test_html_report_has_the_pdfs_contents_with_links(reports):
+    """The PDF has a contents page after its cover; the HTML had none. Its contents list the
+    same sections in the same order as the PDF's, each a link to its heading."""
+    lines = pdf_text(reports["en.pdf"]).splitlines()
+    start = next(k for k, line in enumerate(lines) if line.strip() == "Contents")
+    entries = []
+    for line in lines[start + 1:]:
+        found = re.match(r"\s*(\S.*?)\s*(?:\. )+\.?\s*(\d+)$", line)
+        if found is None:
+            break
+        entries.append(unicodedata.normalize("NFKC", found.group(1)))      # pdftotext's "ﬂ"
+    assert len(entries) >= 8 and entries[0].startswith("1 ")
+    page = _Links()
+    page.feed(reports["en.html"].read_text(encoding="utf-8"))
+    assert [text for text, _ in page.links] == entries
+    assert [page.ids.get(target) for _, target in page.links] == entries
 
 
 def test_pdf_is_exactly_a4_on_every_page(reports):
@@ -341,7 +391,7 @@ def test_formulas_are_typeset(tmp_path, language):
     assert shaper_run_in_process("report", *DESIGN, "--rpm", "40", "--lang", language, "--html",
                                  "-o", out).returncode == 0
     page = out.read_text(encoding="utf-8")
-    formulas = page[page.index("<h2>8 ") if language == "en" else page.index("<h2>8"):]
+    formulas = page[re.search(r"<h2[^>]*>8" + (" " if language == "en" else ""), page).start():]   # the section
     for marked in ("a<sup>k</sup><sub>A4A3</sub>", "v<sub>A4</sub>", "ω<sub>4</sub>", "S<sub>4</sub>", "J<sub>F</sub>",
                    "ΔW<sub>max</sub>", "O<sub>4</sub>", "L<sub>3</sub>", "(<sup>1</sup>⁄<sub>2π</sub>)"):
         assert marked in formulas, marked
