@@ -62,11 +62,10 @@ def speed_titles(qapp):
     return list(table._rows), heads, cells
 
 
-def test_the_wrap_is_a_function_of_the_width_and_the_header_is_as_measured(qtbot, speed_titles):
-    """At every width across the wrap's edge a second fit keeps the first one's titles
-    (before: wrapped to 135 px, then 132, then 135 … at 306 px), and the row header is as
-    wide as the rule measures the titles shown (bold, as the header measures them), so
-    the rule's padding is the header's own."""
+@pytest.fixture
+def table(qtbot, speed_titles):
+    """A table of the speeds table's titles and cells, shown in a holder that leaves its
+    size to the test."""
     holder = QWidget()
     qtbot.addWidget(holder)
     holder.resize(800, 600)
@@ -74,6 +73,14 @@ def test_the_wrap_is_a_function_of_the_width_and_the_header_is_as_measured(qtbot
     table.set_content(*speed_titles)
     holder.show()
     qtbot.waitExposed(holder)
+    return table
+
+
+def test_the_wrap_is_a_function_of_the_width_and_the_header_is_as_measured(table):
+    """At every width across the wrap's edge a second fit keeps the first one's titles
+    (before: wrapped to 135 px, then 132, then 135 … at 306 px), and the row header is as
+    wide as the rule measures the titles shown (bold, as the header measures them), so
+    the rule's padding is the header's own."""
     header = table.verticalHeader()
     metrics, padding = title_metrics(header), title_padding(header)
     wraps = set()
@@ -88,16 +95,9 @@ def test_the_wrap_is_a_function_of_the_width_and_the_header_is_as_measured(qtbot
     assert -1 in wraps and len(wraps) > 10          # the widths crossed the edge
 
 
-def test_the_least_width_does_not_move_with_the_wrap(qtbot, speed_titles):
+def test_the_least_width_does_not_move_with_the_wrap(table):
     """The table's least width is the same with its titles wrapped or not (it followed the
     header, 24 px wider unwrapped, and the pane, whose least width is its tables', with it)."""
-    holder = QWidget()
-    qtbot.addWidget(holder)
-    holder.resize(800, 600)
-    table = ResultTable(holder)
-    table.set_content(*speed_titles)
-    holder.show()
-    qtbot.waitExposed(holder)
     least = {}
     for width in range(260, 400, 5):
         table.resize(width, table.height())
@@ -106,40 +106,9 @@ def test_the_least_width_does_not_move_with_the_wrap(qtbot, speed_titles):
     assert len(least[True] | least[False]) == 1
 
 
-def test_the_pane_settles_at_every_width_across_the_edge(qtbot, model, monkeypatch):
-    """The Results pane narrowed a pixel at a time across the speeds table's wrap edge:
-    once the events of a resize are handled, no table fits again (before: two fits every
-    turn of the event loop at 324 and 326 px)."""
-    panel = MetricsPanel(model)
-    area = scrolled(panel)
-    area.setMinimumWidth(0)
-    qtbot.addWidget(area)
-    area.resize(400, 500)
-    area.show()
-    qtbot.waitExposed(area)
-    fits = []
-    fit = ResultTable._fit
-    monkeypatch.setattr(ResultTable, "_fit", lambda table: (fits.append(table), fit(table)))
-    wrapped = set()
-    for width in range(346, 330, -1):
-        area.resize(width, 500)
-        for _ in range(5):
-            QApplication.processEvents()
-        fits.clear()
-        for _ in range(5):
-            QApplication.processEvents()
-        assert not fits, width
-        wrapped.add(panel.tables()[2]._wrap_width)
-    assert len(wrapped) > 1
-
-
-def test_the_pane_settles_where_the_columns_start_to_scroll(qtbot, model, monkeypatch):
-    """Three speeds: where the titles stop wrapping (the columns scroll instead), wrapped
-    tables are taller and bring the pane's scroll bar, 14 px narrower they unwrap and are
-    shorter, the bar goes: without the hysteresis 1 764 of 6 120 sizes around that edge
-    fitted every turn (342 × 834 px among them). Here no table fits again once a resize
-    is handled."""
-    model.set_rpms(["40", "60", "80"])
+def settled_pane(qtbot, model, monkeypatch, sizes):
+    """The Results pane resized to each of ``sizes`` (width, height) in turn: yields the pane
+    once a resize's events are handled, after asserting that handling more fits no table."""
     panel = MetricsPanel(model)
     area = scrolled(panel)
     area.setMinimumWidth(0)
@@ -150,12 +119,32 @@ def test_the_pane_settles_where_the_columns_start_to_scroll(qtbot, model, monkey
     fits = []
     fit = ResultTable._fit
     monkeypatch.setattr(ResultTable, "_fit", lambda table: (fits.append(table), fit(table)))
-    for width in range(346, 340, -1):
-        for height in (834, 837):
-            area.resize(width, height)
-            for _ in range(4):
-                QApplication.processEvents()
-            fits.clear()
-            for _ in range(4):
-                QApplication.processEvents()
-            assert not fits, (width, height)
+    for size in sizes:
+        area.resize(*size)
+        for _ in range(4):
+            QApplication.processEvents()
+        fits.clear()
+        for _ in range(4):
+            QApplication.processEvents()
+        assert not fits, size
+        yield panel
+
+
+def test_the_pane_settles_at_every_width_across_the_edge(qtbot, model, monkeypatch):
+    """The Results pane narrowed a pixel at a time across the speeds table's wrap edge:
+    once the events of a resize are handled, no table fits again (before: two fits every
+    turn of the event loop at 324 and 326 px)."""
+    sizes = [(width, 500) for width in range(346, 330, -1)]
+    wrapped = {panel.tables()[2]._wrap_width for panel in settled_pane(qtbot, model, monkeypatch, sizes)}
+    assert len(wrapped) > 1
+
+
+def test_the_pane_settles_where_the_columns_start_to_scroll(qtbot, model, monkeypatch):
+    """Three speeds: where the titles stop wrapping (the columns scroll instead), wrapped
+    tables are taller and bring the pane's scroll bar, 14 px narrower they unwrap and are
+    shorter, the bar goes: without the hysteresis 1 764 of 6 120 sizes around that edge
+    fitted every turn (342 × 834 px among them), and this test crashed. Here no table fits
+    again once a resize is handled."""
+    model.set_rpms(["40", "60", "80"])
+    sizes = [(width, height) for width in range(346, 340, -1) for height in (834, 837)]
+    assert len(list(settled_pane(qtbot, model, monkeypatch, sizes))) == len(sizes)
