@@ -73,7 +73,7 @@ def table(qtbot, speed_titles):
     table.set_content(*speed_titles)
     holder.show()
     qtbot.waitExposed(holder)
-    return table
+    yield table                         # the holder, which owns the table, kept till the end
 
 
 def test_the_wrap_is_a_function_of_the_width_and_the_header_is_as_measured(table):
