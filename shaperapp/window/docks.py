@@ -129,11 +129,15 @@ class Docks:
         self._back_on_screen(room)
 
     def _back_on_screen(self, room: int) -> None:
+        """The window made at most ``room`` tall again, and raised by as much as its frame
+        still reaches below the screen, no more (it went to the screen's top: 24 px up on
+        a laptop, for a frame 1 px too low)."""
         w, screen = self._window, available(self._window)
         if w.height() > room and not w.isMaximized() and not w.isFullScreen():
             w.resize(w.width(), max(room, w.minimumSizeHint().height()))
-            if w.frameGeometry().bottom() > screen.bottom():
-                w.move(w.x(), screen.top())
+            below = w.frameGeometry().bottom() - screen.bottom()
+            if below > 0:
+                w.move(w.x(), max(screen.top(), w.y() - below))
 
     def __getitem__(self, name: str) -> QDockWidget:
         return self.docks[name]
