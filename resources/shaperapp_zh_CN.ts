@@ -3454,6 +3454,22 @@
         <translation>导入文件夹…</translation>
     </message>
     <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Add design files, or every design file of a folder, to the library</source>
+        <translation>将设计文件或一个文件夹中的全部设计文件加入设计库</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>Write the selected design, or every design, as design files</source>
+        <translation>将选中的设计或全部设计写成设计文件</translation>
+    </message>
+    <message>
         <source>Add every design file of a folder</source>
         <translation>加入文件夹中的全部设计文件</translation>
     </message>
