@@ -433,6 +433,26 @@
         <translation>就绪</translation>
     </message>
     <message>
+        <source>written</source>
+        <translation>已写入</translation>
+    </message>
+    <message>
+        <source>up to date, not written again</source>
+        <translation>已是最新，未重写</translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+    <message>
+        <source>not written (cancelled)</source>
+        <translation>未写入（已取消）</translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation>未写入</translation>
+    </message>
+    <message>
         <source>%1 students ready, %2 rows with errors (left out).</source>
         <translation>%1 名学生就绪，%2 行有错误（将跳过）。</translation>
     </message>

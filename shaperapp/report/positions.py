@@ -20,8 +20,9 @@ from PySide6.QtCore import QCoreApplication
 
 from core.course_design.positions import COLUMN_GROUPS, PositionTable, column_texts, display_values
 from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
+from shaperapp.widgets.i18n import join_sentences
 
-from .blocks import Table, join_sentences
+from .blocks import Table
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
 FULL_SPEEDS = 3
