@@ -27,7 +27,7 @@ from .actions import LibraryActions
 from .dialogs import SaveDialog, ask_refused_library
 from .filter import core_filter
 from .stale import StaleFiguresBar
-from .toolbar import bar_action, menu_button, text_bar
+from .toolbar import bar_action, bar_rows, menu_button, text_bar
 from .table import LibraryTableModel
 
 POLL_MS = 1500           # how often another program's changes are looked for
@@ -111,8 +111,7 @@ class LibraryPane(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addLayout(top)
-        layout.addWidget(self.toolbar)
-        layout.addWidget(self.edit_bar)
+        layout.addLayout(bar_rows(self.toolbar, self.edit_bar))
         layout.addLayout(query)
         layout.addWidget(self.message_label)
         layout.addWidget(self.stale_bar)

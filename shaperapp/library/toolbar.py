@@ -13,7 +13,7 @@ from typing import Callable, Sequence
 
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
-from PySide6.QtWidgets import QMenu, QToolBar, QToolButton, QWidget
+from PySide6.QtWidgets import QMenu, QToolBar, QToolButton, QVBoxLayout, QWidget
 
 
 def text_bar(parent: QWidget | None = None) -> QToolBar:
@@ -21,6 +21,19 @@ def text_bar(parent: QWidget | None = None) -> QToolBar:
     bar = QToolBar(parent)
     bar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
     return bar
+
+
+def bar_rows(*bars: QToolBar) -> QVBoxLayout:
+    """The rows one under the other with no space between them and no margins round their
+    buttons: the second row takes from the list below it as little as a row of buttons
+    needs (at 1280 × 720 the list keeps its five rows)."""
+    rows = QVBoxLayout()
+    rows.setSpacing(0)
+    for bar in bars:
+        bar.setContentsMargins(0, 0, 0, 0)
+        bar.layout().setContentsMargins(0, 0, 0, 0)
+        rows.addWidget(bar)
+    return rows
 
 
 def bar_action(bar: QToolBar, slot: Callable[[], object]) -> QAction:
