@@ -239,9 +239,8 @@ def text_groups(table: PositionTable) -> list[TextGroup]:
     out = []
     for s, rpm in enumerate(table.rpm):
         rows_of_speed = slice(s * k, (s + 1) * k)
-        texts = {name: (flag_numbers(shown[rows_of_speed, c]) if name in FLAG_COLUMNS
-                        else column_texts(shown[rows_of_speed, c]))
-                 for c, name in enumerate(table.columns)}
+        texts = {name: column_texts(shown[rows_of_speed, c]) for c, name in enumerate(table.columns)
+                 if name == "crank_deg" or any(name in names for _, names in COLUMN_GROUPS)}
         for group, names in COLUMN_GROUPS:
             columns = ("crank_deg",) + tuple(n for n in names if n in table.columns)
             if len(columns) == 1:
@@ -278,7 +277,3 @@ def column_texts(values: np.ndarray, digits: int = COLUMN_DIGITS) -> list[str]:
         out.append(text[1:] if text.startswith("-") and float(text) == 0.0 else text)   # no "-0.000"
     return out
 
-
-def flag_numbers(values: np.ndarray) -> list[str]:
-    """A yes/no column (``FLAG_COLUMNS``) as the CLI and the CSV write it, 1 or 0; NaN is ''."""
-    return ["" if not math.isfinite(v) else str(int(bool(v))) for v in values]
