@@ -433,6 +433,26 @@
         <translation>就绪</translation>
     </message>
     <message>
+        <source>written</source>
+        <translation>已写入</translation>
+    </message>
+    <message>
+        <source>up to date, not written again</source>
+        <translation>已是最新，未重写</translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+    <message>
+        <source>not written (cancelled)</source>
+        <translation>未写入（已取消）</translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation>未写入</translation>
+    </message>
+    <message>
         <source>%1 students ready, %2 rows with errors (left out).</source>
         <translation>%1 名学生就绪，%2 行有错误（将跳过）。</translation>
     </message>
@@ -3452,6 +3472,22 @@
     <message>
         <source>Import folder…</source>
         <translation>导入文件夹…</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Add design files, or every design file of a folder, to the library</source>
+        <translation>将设计文件或一个文件夹中的全部设计文件加入设计库</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>Write the selected design, or every design, as design files</source>
+        <translation>将选中的设计或全部设计写成设计文件</translation>
     </message>
     <message>
         <source>Add every design file of a folder</source>

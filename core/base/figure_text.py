@@ -5,8 +5,9 @@ the library and Compare tables and the drawing sheets all write a figure through
 ``figure_text``, so that one figure reads the same everywhere: θ = 33.653° in every
 place, not 33.6529° in one and 33.653° in another, K = 1.4599, not 1.45991 beside
 1.459905. CSV and JSON keep the full precision (``core.files.numtext``); the positions
-table has its own rule (five significant digits of a column's largest value), since a
-column of one quantity shares its decimals.
+table has its own rule (five significant digits of a column's largest value,
+``core.course_design.positions.column_texts``: ``shaper table``, the Positions tab and the
+report), since a column of one quantity shares its decimals.
 
 A dimension's text on a drawing (the scheme's L1, L2, L3, h, H and θ in the window and the
 report, the sheets' dimensions, the DXF's DIMENSION texts) is another kind, written as CAD

@@ -218,7 +218,7 @@ def display_values(data: np.ndarray, columns: tuple[str, ...] = ()) -> np.ndarra
 
 @dataclass(frozen=True)
 class TextGroup:
-    """One printed table: a speed and a column group, numbers as ``number_text``."""
+    """One printed table: a speed and a column group, numbers as ``column_texts``."""
 
     rpm: float
     group: str
@@ -230,30 +230,50 @@ class TextGroup:
 
 
 def text_groups(table: PositionTable) -> list[TextGroup]:
-    """The table as printed by ``shaper table`` and the report: per speed, per column
-    group, round-off cleaned (``display_values``) and formatted (``number_text``)."""
+    """The table as printed by ``shaper table``: per speed, per column group, round-off
+    cleaned (``display_values``) and each column of one speed written by ``column_texts``,
+    as the Positions tab and the report write it, so the three print one text per figure."""
     shown = display_values(table.data, table.columns)
     lead = table_rows(table)
     k = table.positions.crank_deg.size
     out = []
     for s, rpm in enumerate(table.rpm):
+        rows_of_speed = slice(s * k, (s + 1) * k)
+        texts = {name: column_texts(shown[rows_of_speed, c]) for c, name in enumerate(table.columns)
+                 if name == "crank_deg" or any(name in names for _, names in COLUMN_GROUPS)}
         for group, names in COLUMN_GROUPS:
             columns = ("crank_deg",) + tuple(n for n in names if n in table.columns)
             if len(columns) == 1:
                 continue
-            index = [table.columns.index(c) for c in columns]
-            rows = tuple((lead[i][0], lead[i][1], tuple(number_text(shown[i, c]) for c in index))
-                         for i in range(s * k, (s + 1) * k))
+            rows = tuple((lead[s * k + i][0], lead[s * k + i][1], tuple(texts[c][i] for c in columns))
+                         for i in range(k))
             out.append(TextGroup(float(rpm), group, columns, rows))
     return out
 
 
-def number_text(value: float, digits: int = 5) -> str:
-    """A table number: ``digits`` significant digits in fixed notation, '' for NaN."""
-    if not math.isfinite(value):
-        return ""
-    if value == 0.0:
-        return "0"
-    decimals = min(max(digits - 1 - math.floor(math.log10(abs(value))), 0), 6)
-    text = f"{value:.{decimals}f}"
-    return "0" if float(text) == 0.0 else text
+COLUMN_DIGITS = 5
+"""Significant digits of a positions column's largest value; the column's other values
+share its decimals."""
+MAX_DECIMALS = 6
+
+
+def column_texts(values: np.ndarray, digits: int = COLUMN_DIGITS) -> list[str]:
+    """One column's numbers with one number of decimals: ``digits`` significant digits
+    of its largest value, so 0 reads "0.000" beside "30.000" (not "0") and the decimal
+    points line up. The precision of a column is that of its quantity's scale: a ram
+    position of 17.788 mm in a 300 mm stroke reads 17.79, as 282.21 beside it. One rule
+    for ``shaper table``, the Positions tab and the report (the CLI wrote 5 significant
+    digits of each value, 17.788 beside the window's 17.79). NaN is ''."""
+    finite = np.abs(values[np.isfinite(values)])
+    largest = float(finite.max()) if finite.size else 0.0
+    decimals = (min(max(digits - 1 - math.floor(math.log10(largest)), 0), MAX_DECIMALS)
+                if largest > 0.0 else digits - 2)
+    out = []
+    for value in values:
+        if not math.isfinite(value):
+            out.append("")
+            continue
+        text = f"{value:.{decimals}f}"
+        out.append(text[1:] if text.startswith("-") and float(text) == 0.0 else text)   # no "-0.000"
+    return out
+

@@ -123,7 +123,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run(args, out, good, jobs, bad_rows) -> int:
-    from .class_run import earlier_folders, run_jobs
+    from .class_run import earlier_folders, run_jobs, student_line
     bad = len(bad_rows)
     start = time.perf_counter()
     count = workers(args.jobs, len(jobs))
@@ -136,8 +136,7 @@ def _run(args, out, good, jobs, bad_rows) -> int:
             print(f"shaper: error: {result.error}", file=sys.stderr, flush=True)
             continue
         entries[result.index] = result.entry
-        state = "up to date" if result.skipped else "written"
-        print(f"{job.name}  {state}  {result.seconds:.1f} s", flush=True)
+        print(student_line(job.name, result.skipped, result.seconds), flush=True)
         if result.removed:
             print(f"shaper: note: {job.folder}: removed {', '.join(result.removed)} of an earlier run, drawn from "
                   "its data; this run writes no DXF (--dxf)", file=sys.stderr, flush=True)

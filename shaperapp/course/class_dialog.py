@@ -23,6 +23,7 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, 
 
 from core.drawing.sheet import PAPERS
 from shaperapp.widgets.child_signals import children_take_sigint
+from shaperapp.widgets.i18n import join_sentences
 
 translate = QCoreApplication.translate
 BAD = QColor(255, 220, 220)
@@ -38,6 +39,10 @@ class ClassDialog(QDialog):
         self._process: QProcess | None = None
         self._good = 0
         self._finished = 0
+        self._failed = 0
+        self._rows: dict[str, int] = {}          # a ready student's folder name → its row
+        self._told: set[str] = set()             # the students the run said something of
+        self._tails = {"out": "", "err": ""}     # a line the process has not finished printing
         self.tasks, self.base, self.folder = QLineEdit(), QLineEdit(), QLineEdit()
         self.sheet = QComboBox()
         self.sheet.addItems(list(PAPERS))
@@ -129,6 +134,7 @@ class ClassDialog(QDialog):
         from .class_messages import table_message
         self.table.setRowCount(0)
         self._good = 0
+        self._rows = {}
         path, base = self.tasks.text().strip(), self.base.text().strip() or None
         if not path:
             self._update_run()
@@ -153,7 +159,8 @@ class ClassDialog(QDialog):
                     item.setBackground(QBrush(BAD))
                     item.setToolTip(error)
                 self.table.setItem(row, column, item)
-        self._good = sum(1 for s in students if not s.error)
+        self._rows = {s.folder: row for row, s in enumerate(students) if not s.error}
+        self._good = len(self._rows)
         bad = len(students) - self._good
         self.summary.setText(translate("ClassDialog", "%1 students ready, %2 rows with errors (left out).")
                              .replace("%1", str(self._good)).replace("%2", str(bad)))
@@ -172,7 +179,11 @@ class ClassDialog(QDialog):
         return words + (["--dxf"] if self.dxf.isChecked() else [])
 
     def run(self) -> None:
-        self._finished = 0
+        self._finished = self._failed = 0
+        self._told = set()
+        self._tails = {"out": "", "err": ""}
+        for row in self._rows.values():
+            self._mark(row, translate("ClassDialog", "ready"))
         self.progress.setRange(0, self._good)
         self.progress.setValue(0)
         self.open_button.setEnabled(False)
@@ -191,12 +202,47 @@ class ClassDialog(QDialog):
         self.summary.setText(translate("ClassDialog", "Writing the class's files…"))
 
     def _read(self) -> None:
-        text = bytes(self._process.readAllStandardOutput()).decode("utf-8", "replace")
-        self._finished += sum(1 for line in text.splitlines() if line.endswith(" s") and "  " in line)
-        self.progress.setValue(min(self._finished, self._good))
+        self._take("out", bytes(self._process.readAllStandardOutput()).decode("utf-8", "replace"))
 
     def _read_errors(self) -> None:
-        self._errors += bytes(self._process.readAllStandardError()).decode("utf-8", "replace")
+        text = bytes(self._process.readAllStandardError()).decode("utf-8", "replace")
+        self._errors += text
+        self._take("err", text)
+
+    def _take(self, stream: str, text: str) -> None:
+        """The whole lines of what the process printed: each student written, current or
+        failed is said on its row, as ``shaper class`` says it, and advances the bar."""
+        from .class_run import student_outcome
+        lines = (self._tails[stream] + text).split("\n")
+        self._tails[stream] = lines.pop()
+        for line in (line.rstrip("\r") for line in lines):
+            if stream == "out":
+                outcome = student_outcome(line, list(self._rows))
+                if outcome is not None and outcome[0] not in self._told:
+                    self._told.add(outcome[0])
+                    self._finished += 1
+                    self._mark(self._rows[outcome[0]], translate("ClassDialog", "written") if outcome[1] == "written"
+                               else translate("ClassDialog", "up to date, not written again"))
+                continue
+            for name, row in self._rows.items():
+                head = f"shaper: error: {name}: "
+                if line.startswith(head) and name not in self._told:
+                    self._told.add(name)
+                    self._failed += 1
+                    self._mark(row, translate("ClassDialog", "failed: %1").replace("%1", line[len(head):]), bad=True)
+        self.progress.setValue(min(self._finished + self._failed, self._good))
+
+    def _mark(self, row: int, text: str, bad: bool = False) -> None:
+        """Row ``row``'s Check cell says ``text`` (red for a failure, as a bad row is)."""
+        item = self.table.item(row, 3)
+        if item is None:
+            return
+        item.setText(text)
+        item.setToolTip(text if bad else "")
+        for column in range(self.table.columnCount()):
+            cell = self.table.item(row, column)
+            if cell is not None:
+                cell.setBackground(QBrush(BAD) if bad else QBrush())
 
     def cancel(self) -> None:
         """Stop a run (every file left complete), else close the dialog."""
@@ -216,13 +262,19 @@ class ClassDialog(QDialog):
         key = _stamp(os.path.join(folder, "answer-key.json"))
         errors = [line.removeprefix("shaper: error: ") for line in self._errors.splitlines()
                   if line.startswith("shaper: error: ")]
+        for tail in ("out", "err"):             # a last line printed without its newline
+            if self._tails[tail]:
+                self._take(tail, "\n")
+        for name in set(self._rows) - self._told:       # never reached: cancelled, or the run failed
+            self._mark(self._rows[name], translate("ClassDialog", "not written (cancelled)") if cancelled
+                       else translate("ClassDialog", "not written"))
         if cancelled:
             text = translate("ClassDialog", "Cancelled: %1 students written, each complete.")
         elif status in (0, 2) and key is not None and key != self._key_before:   # this run's answer key
             text = translate("ClassDialog", "Done: %1 students written; the task sheets and the answer key are "
                              "in the folder.")
-            if status == 2:     # the count of students not written
-                text += " " + table_message(errors[-1] if errors else "")
+            if status == 2:     # the count of students not written, a sentence of its own
+                text = join_sentences(text, table_message(errors[-1] if errors else ""))
         else:           # an answer key an earlier run left is not this run's success
             last = errors[-1] if errors else (self._errors.strip().splitlines()[-1:] or [""])[0]
             text = translate("ClassDialog", "Failed: %1").replace("%1", table_message(last))

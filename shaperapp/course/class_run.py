@@ -27,6 +27,28 @@ from core.version import source_fingerprint, version_text
 
 DESIGN_FILE = "design.shaper.json"
 STAMP_FILE = ".class-stamp"
+STATES = ("written", "up to date")      # what ``shaper class`` says of a student it did not fail
+
+
+def student_line(name: str, skipped: bool, seconds: float) -> str:
+    """The line ``shaper class`` prints on stdout for a student written (or current, so
+    not written again): the Class dialog reads each row's outcome from it."""
+    return f"{name}  {STATES[skipped]}  {seconds:.1f} s"
+
+
+def student_outcome(line: str, names: Sequence[str]) -> tuple[str, str] | None:
+    """(name, state) of a line ``student_line`` wrote for one of ``names``, else None."""
+    for name in names:
+        for state in STATES:
+            head = f"{name}  {state}  "
+            if line.startswith(head) and line.endswith(" s") and line[len(head):-2].replace(".", "", 1).isdigit():
+                return name, state
+    return None
+
+
+def failure_line(name: str, reason: str) -> str:
+    """A failed student's error as ``Result.error`` holds it (printed after "shaper: error: ")."""
+    return f"{name}: {reason}"
 
 
 @dataclass(frozen=True)
@@ -192,9 +214,9 @@ def run_student(job: Job) -> Result:
                              os.path.join(job.folder, DESIGN_FILE))
         return Result(job.index, time.perf_counter() - start, entry, skipped=skipped, removed=removed)
     except OSError as exc:
-        error = f"{job.name}: {exc}"
+        error = failure_line(job.name, str(exc))
     except Exception as exc:        # a font, a drawing that cannot be made: named, never raised
-        error = f"{job.name}: {type(exc).__name__}: {exc}"
+        error = failure_line(job.name, f"{type(exc).__name__}: {exc}")
     return Result(job.index, time.perf_counter() - start, None, error)
 
 

@@ -32,6 +32,7 @@ from shaperapp.design.model import DesignModel
 from shaperapp.widgets.cad_font import CadFontChoice, outline_font_problem
 from shaperapp.widgets.command_line import COVER_FIELDS, COVER_SETTINGS, design_file_name, plain_text
 from shaperapp.widgets.fonts import MissingFontError
+from shaperapp.widgets.i18n import join_sentences
 from shaperapp.widgets.file_messages import describe_os_error, failure_reason
 from shaperapp.widgets.export_child import job_bytes
 from shaperapp.widgets.export_process import ChildExport
@@ -146,7 +147,7 @@ def refusal(exc: CourseError) -> str:
                          "Nothing was written.")
         return text.replace("%1", names)
     if exc.option == "--cad-font":      # outline_font_problem's words, already translated
-        return exc.reason + " " + translate("CourseExport", "Nothing was written.")
+        return join_sentences(exc.reason, translate("CourseExport", "Nothing was written."))
     if exc.option == "--output":
         return translate("CourseExport", "Nothing can be written into this folder; choose another. "
                          "Nothing was written.")
@@ -180,8 +181,8 @@ def export_course(model: DesignModel, folder: str, language: str, parent: QWidge
             return written, text.replace("%1", str(len(written))).replace("%2", str(total))
         failure = course_failure(run.error, folder)
         if written:
-            failure += " " + translate("CourseExport", "The %1 files written before it are complete."
-                                       ).replace("%1", str(len(written)))
+            failure = join_sentences(failure, translate("CourseExport", "The %1 files written before it are "
+                                                        "complete.").replace("%1", str(len(written))))
         return written, failure
     return ChildExport(job, [file.path for file in course.files], folder,
                        translate("CourseExport", "Export course design"),

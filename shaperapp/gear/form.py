@@ -12,6 +12,7 @@ from typing import Any
 
 from PySide6.QtWidgets import QComboBox, QLabel, QWidget
 
+from core.base.figure_text import figure_text
 from core.gear.involute import FIRST_SERIES_MM
 from shaperapp.design.fields import exact_number, parse_number
 from shaperapp.parts.form import PartForm
@@ -27,9 +28,14 @@ LABEL_WIDTH = 100
 """px of a field's name at most (longer ones wrap): with FIELD_WIDTH, the form leaves both
 gears' columns room beside it at 1280 × 720 in English."""
 SHIFT_FIELDS = ("x1", "x2", "centre")
+SHOWN_KINDS = {"x1": "gear_factor", "x2": "gear_factor", "centre": "gear_length"}
+"""How a greyed shift field (the pair's value, derived by the mode) writes it: as the Gear
+tab's table and ``shaper gear`` write that figure (``core.base.figure_text``), 0.239644 and
+162.1049 (it showed 7 significant digits, 0.2396444 beside the table's 0.239644)."""
 SHOWN_DIGITS = 7
-"""Significant digits a shift field shows of a value it did not get typed (the pair's, carried
-over or derived): 0.4151111 and 162.1049 fit FIELD_WIDTH; the exact value is its tooltip,
+"""Significant digits a shift field of the mode shows of a value it did not get typed (carried
+over from the pair when the mode changed): 0.4151111 fits FIELD_WIDTH, and a value from a
+file reads as it was typed (0.3, not 0.300000). The exact value is the tooltip either way,
 and the model keeps it."""
 ORDER = ("z1", "z2", "module", "mode", "x1", "x2", "centre", "pressure_angle", "addendum",
          "clearance", "tip_limit", "contact_limit")
@@ -114,7 +120,7 @@ class GearForm(PartForm):
             if name in self.pending:
                 continue
             if name in SHIFT_FIELDS and not isinstance(value, str):
-                self._show_rounded(name, value)
+                self._show_rounded(name, value, greyed=name not in MODE_FIELDS[values["mode"]])
             else:
                 self.fields[name].set_value(value)
         if "module" not in self.pending:
@@ -127,12 +133,18 @@ class GearForm(PartForm):
             self.fields[name].setEnabled(name in MODE_FIELDS[mode])
             self.fields[name].edit.setCursorPosition(0)     # a long carried-over value from its start
 
-    def _show_rounded(self, name: str, value: float) -> None:
-        """``value`` in field ``name`` rounded to SHOWN_DIGITS, unless its text already means
-        it (a value as typed stays as typed); the exact value as its tooltip. A field's text
-        is sent to the model only when typed into, so the rounding never replaces the value."""
+    def _show_rounded(self, name: str, value: float, greyed: bool) -> None:
+        """``value`` in shift field ``name``: greyed, as its figure is written (SHOWN_KINDS);
+        else rounded to SHOWN_DIGITS unless its text already means it (a value as typed stays
+        as typed). The exact value is the tooltip. A field's text is sent to the model only
+        when typed into, so the rounding never replaces the value."""
         edit = self.fields[name].edit
         edit.setToolTip(exact_number(value))
+        if greyed:
+            rounded = figure_text(SHOWN_KINDS[name], value)
+            if edit.text() != rounded:
+                edit.setText(rounded)
+            return
         rounded = f"{value:.{SHOWN_DIGITS}g}"
         if parse_number(edit.text()) != value and edit.text() != rounded:
             edit.setText(rounded)

@@ -11,10 +11,9 @@ from __future__ import annotations
 import os
 
 from PySide6.QtCore import QEvent, QSettings, Qt, QTimer, Signal
-from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QFileDialog, QHBoxLayout, QInputDialog,
-                               QLabel, QLineEdit, QMessageBox, QPushButton, QSizePolicy, QToolBar,
-                               QVBoxLayout, QWidget)
+                               QLabel, QLineEdit, QMessageBox, QPushButton, QSizePolicy, QVBoxLayout,
+                               QWidget)
 
 from core.space.compare import MAX_DESIGNS
 from core.library.store import LibraryError, resolve_path
@@ -28,6 +27,7 @@ from .actions import LibraryActions
 from .dialogs import SaveDialog, ask_refused_library
 from .filter import core_filter
 from .stale import StaleFiguresBar
+from .toolbar import bar_action, bar_rows, menu_button, text_bar
 from .table import LibraryTableModel
 
 POLL_MS = 1500           # how often another program's changes are looked for
@@ -82,24 +82,24 @@ class LibraryPane(QWidget):
         self.view.doubleClicked.connect(lambda _: self.open_selected())
         self.view.selectionModel().selectionChanged.connect(self._update_enabled)
 
-        self.toolbar = QToolBar()
-        self.toolbar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
-        self.act_save = self._action(self.save_dialog)
-        self.act_open = self._action(self.open_selected)
-        self.act_compare = self._action(self.compare_selected)
+        # Two rows (toolbar.py): the designs in and out of the library, then its own edits.
+        self.toolbar, self.edit_bar = text_bar(), text_bar()
+        self.act_save = bar_action(self.toolbar, self.save_dialog)
+        self.act_open = bar_action(self.toolbar, self.open_selected)
+        self.act_compare = bar_action(self.toolbar, self.compare_selected)
         self.toolbar.addSeparator()
-        self.act_rename = self._action(self.rename_dialog)
-        self.act_duplicate = self._action(self.duplicate_selected)
-        self.act_delete = self._action(self.delete_selected)
+        self.import_button, (self.act_import, self.act_import_folder) = menu_button(
+            self.toolbar, (self.import_dialog, self.import_folder_dialog))
+        self.export_button, (self.act_export, self.act_export_all) = menu_button(
+            self.toolbar, (self.export_dialog, self.export_all_dialog))
+        self.act_rename = bar_action(self.edit_bar, self.rename_dialog)
+        self.act_duplicate = bar_action(self.edit_bar, self.duplicate_selected)
+        self.act_delete = bar_action(self.edit_bar, self.delete_selected)
+        self.edit_bar.addSeparator()
         stack = self.actions.undo_stack
-        self.act_undo = self._action(stack.undo)
-        self.act_redo = self._action(stack.redo)
+        self.act_undo = bar_action(self.edit_bar, stack.undo)
+        self.act_redo = bar_action(self.edit_bar, stack.redo)
         stack.indexChanged.connect(self._update_undo)
-        self.toolbar.addSeparator()
-        self.act_import = self._action(self.import_dialog)
-        self.act_import_folder = self._action(self.import_folder_dialog)
-        self.act_export = self._action(self.export_dialog)
-        self.act_export_all = self._action(self.export_all_dialog)
 
         top = QHBoxLayout()
         top.addWidget(self.path_label, 1)
@@ -111,7 +111,7 @@ class LibraryPane(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addLayout(top)
-        layout.addWidget(self.toolbar)
+        layout.addLayout(bar_rows(self.toolbar, self.edit_bar))
         layout.addLayout(query)
         layout.addWidget(self.message_label)
         layout.addWidget(self.stale_bar)
@@ -131,11 +131,6 @@ class LibraryPane(QWidget):
         self._timer.timeout.connect(self._poll)
         self._retranslate()
         self._update_enabled()
-
-    def _action(self, slot) -> QAction:
-        action = self.toolbar.addAction("")
-        action.triggered.connect(lambda _=False: slot())
-        return action
 
     # ---- opening the library (lazily, when first shown) ----------------------------------
     def showEvent(self, event) -> None:
@@ -222,6 +217,8 @@ class LibraryPane(QWidget):
         for action in (self.act_save, self.act_import, self.act_import_folder):
             action.setEnabled(writable)
         self.act_export_all.setEnabled(has_library)
+        self.import_button.setEnabled(writable)
+        self.export_button.setEnabled(has_library)
         for action in (self.act_open, self.act_export):
             action.setEnabled(count == 1)
         for action in (self.act_rename, self.act_duplicate):
@@ -386,6 +383,10 @@ class LibraryPane(QWidget):
         for action, text, tip in texts:
             action.setText(text)
             action.setToolTip(tip or text)
+        self.import_button.setText(self.tr("Import"))
+        self.import_button.setToolTip(self.tr("Add design files, or every design file of a folder, to the library"))
+        self.export_button.setText(self.tr("Export"))
+        self.export_button.setToolTip(self.tr("Write the selected design, or every design, as design files"))
         self.change_button.setText(self.tr("Other library…"))
         self.search_edit.setPlaceholderText(self.tr("Search name, notes, tags"))
         self.filter_edit.setPlaceholderText(self.tr("Filter, e.g. K>=1.4, variant=rod, a_max<5"))

@@ -19,8 +19,8 @@ from PySide6.QtWidgets import (QAbstractItemView, QComboBox, QLabel, QPushButton
 
 from core.files.dynamics_io import FLAG_COLUMNS
 from core.forces.masses import masses_for_design
-from core.course_design.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, display_values, position_table,
-                            positions)
+from core.course_design.positions import (DEFAULT_COUNT, MAX_COUNT, PositionTable, column_texts, display_values,
+                                         position_table, positions)
 from shaperapp.design.model import DesignModel
 from shaperapp.widgets.column_titles import column_titles, special_titles, yes_no
 from shaperapp.widgets.frozen_view import FrozenNameView
@@ -29,28 +29,6 @@ from shaperapp.widgets.view_parts import bar_over_body, fill_speed_combo
 
 SPECIAL_FILL = QColor("#eef3f8")
 HIDDEN = ("rpm",)        # one speed at a time: shown in the speed box
-DIGITS = 5               # significant digits of a column's largest value
-MAX_DECIMALS = 6
-
-
-def column_texts(values: np.ndarray, digits: int = DIGITS) -> list[str]:
-    """One column's numbers with one number of decimals: ``digits`` significant digits
-    for its largest value, so 0 reads "0.000" beside "30.000" (not "0"), and the
-    decimal points line up. NaN is ''."""
-    finite = np.abs(values[np.isfinite(values)])
-    largest = float(finite.max()) if finite.size else 0.0
-    decimals = (min(max(digits - 1 - math.floor(math.log10(largest)), 0), MAX_DECIMALS)
-                if largest > 0.0 else digits - 2)
-    out = []
-    for value in values:
-        if not math.isfinite(value):
-            out.append("")
-            continue
-        text = f"{value:.{decimals}f}"
-        out.append(text[1:] if text.startswith("-") and float(text) == 0.0 else text)   # no "-0.000"
-    return out
-
-
 def flag_texts(values: np.ndarray) -> list[str]:
     """A yes/no column (``FLAG_COLUMNS``, 1 or 0) as the app shows a yes/no; NaN is ''."""
     return ["" if not math.isfinite(v) else yes_no(bool(v)) for v in values]

@@ -39,15 +39,6 @@ class Table:
                                       # (``column_blocks``); 0: the ``left_columns``
 
 
-def join_sentences(*texts: str) -> str:
-    """Translated sentences as one paragraph: a space after an English full stop, none
-    after a Chinese one (。), empty texts left out."""
-    out = ""
-    for text in filter(None, texts):
-        out += ("" if not out or out.endswith("。") else " ") + text
-    return out
-
-
 def column_blocks(widths: Sequence[float], lead: int, available: float) -> list[list[int]]:
     """The columns of a table too wide for the page, as blocks that fit: each block the
     ``lead`` (identifying) columns, then an even share of the others in order. Why: a

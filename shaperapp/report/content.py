@@ -34,10 +34,11 @@ from core.course_design.positions import PositionTable, position_table, position
 from core.base.progress import Progress
 from core.linkage.spec import Spec
 from shaperapp.widgets.command_line import inputs_name
+from shaperapp.widgets.i18n import join_sentences
 from shaperapp.widgets.notation import typeset
 
 from . import figures
-from .blocks import (Cover, Figure, Heading, KeyValues, Paragraph, Report, Table, join_sentences,
+from .blocks import (Cover, Figure, Heading, KeyValues, Paragraph, Report, Table,
                      numbered_figures)
 from .cam import cam_blocks
 from .comparison import comparison_blocks, report_comparison

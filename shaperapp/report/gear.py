@@ -23,9 +23,10 @@ from core.gear.involute import least_teeth
 from core.gear.shift import centre_step, mesh_of_sum
 from core.gear.table import summary_rows, tip_limit_text
 from shaperapp.widgets.gear_messages import check_advice, describe_gear_error
+from shaperapp.widgets.i18n import join_sentences
 from shaperapp.widgets.notation import typeset
 
-from .blocks import Figure, Heading, KeyValues, Paragraph, Table, join_sentences
+from .blocks import Figure, Heading, KeyValues, Paragraph, Table
 from .gear_figure import gear_figure
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")

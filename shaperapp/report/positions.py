@@ -10,19 +10,19 @@ columns at another speed are those of the first scaled by n/n₁ (velocities) an
 (n/n₁)² (accelerations), and 16 full tables were 30 of the report's 38 pages (and at
 3600 positions most of its memory); every number stays in ``shaper table``.
 
-Numbers have one number of decimals per column, as the Positions tab shows them
-(``column_texts``: φ reads 0.000, 30.000 … 330.00 is not mixed with 0 and 30.000).
+Numbers have one number of decimals per column, as the Positions tab and ``shaper table``
+show them (``core.course_design.positions.column_texts``: φ reads 0.000, 30.000 … 330.00 is not mixed with 0 and 30.000).
 """
 from __future__ import annotations
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication
 
-from core.course_design.positions import COLUMN_GROUPS, PositionTable, display_values
-from shaperapp.positions.view import column_texts
+from core.course_design.positions import COLUMN_GROUPS, PositionTable, column_texts, display_values
 from shaperapp.widgets.column_titles import column_titles, group_titles, special_titles
+from shaperapp.widgets.i18n import join_sentences
 
-from .blocks import Table, join_sentences
+from .blocks import Table
 
 translate = QCoreApplication.translate   # lupdate extracts translate("Report", "…")
 FULL_SPEEDS = 3

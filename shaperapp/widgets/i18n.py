@@ -21,6 +21,16 @@ LANGUAGES = (("en", "English"), ("zh_CN", "简体中文"))
 LANGUAGE_CHOICES = ("en", "zh", "zh_CN")
 
 
+def join_sentences(*texts: str) -> str:
+    """Translated sentences as one paragraph: a space after an English full stop, none
+    after a Chinese one (。: Chinese sentences follow each other without a space), empty
+    texts left out. The report's paragraphs and the dialogs' messages of several sentences."""
+    out = ""
+    for text in filter(None, texts):
+        out += ("" if not out or out.endswith("。") else " ") + text
+    return out
+
+
 def language_of(choice: str) -> str:
     """A --lang choice as a UI language: "zh" and "zh_CN" are both simplified Chinese."""
     return "zh_CN" if choice in ("zh", "zh_CN") else "en"

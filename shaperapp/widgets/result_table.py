@@ -14,10 +14,11 @@ from __future__ import annotations
 
 from typing import Callable, Sequence
 
-from PySide6.QtCore import QEvent, Qt
-from PySide6.QtGui import QAction, QFontMetrics, QGuiApplication, QKeyEvent, QKeySequence
+from PySide6.QtCore import QEvent, QSize, Qt
+from PySide6.QtGui import QAction, QFont, QFontMetrics, QGuiApplication, QKeyEvent, QKeySequence
 from PySide6.QtWidgets import (QAbstractButton, QAbstractItemView, QAbstractScrollArea, QHeaderView,
-                               QSizePolicy, QStyle, QTableWidget, QTableWidgetItem, QWidget)
+                               QSizePolicy, QStyle, QStyleOptionHeader, QTableWidget, QTableWidgetItem,
+                               QWidget)
 
 CELL_PADDING = 16            # px beside a cell's text (margins of the item delegate and grid)
 TITLES_SHARE = 0.3           # row titles are wrapped when their column keeps at least this share
@@ -135,18 +136,23 @@ class ResultTable(QTableWidget):
         speeds the forces table's 60 r/min column was cut off behind its long titles);
         not where the columns scroll anyway (many speeds).
 
-        Once wrapped they stay wrapped down to a scroll bar's width less: in the Results
-        pane the tables' width followed their wrapping by 14 px (325 px wrapped, 311 px
-        not; not the pane's own scroll bar: with it always shown the loop stayed), so
-        the titles wrapped, unwrapped and wrapped again every turn of the event loop
-        (61 450 fits, then a segmentation fault, in test_gui_open_hostile.py under load,
-        1 December). Which layout shows within that band depends on what came before."""
-        metrics = QFontMetrics(self.verticalHeader().font())
+        The choice is a function of the table's width, its columns and its titles alone,
+        measured as the row header measures them (``title_width``): it read the padding
+        as the header's width less the widest title shown, but the header measures in
+        bold, so that "padding" grew with the widest line shown (22 px beside "Max return
+        speed, m/s", 19 beside "Max |acceleration|,"), and the titles wrapped to 135 px
+        let that line stand whole, 132 px broke it, and so on every turn of the event loop
+        (the speeds table at a pane of 324 px; 22 of the widths 200–420 px looped).
+
+        Once wrapped they stay wrapped down to a scroll bar's width less: wrapped titles
+        make the tables taller, which can bring the Results pane's own scroll bar and
+        take that width from the tables (b7f7626). Which layout shows within that band
+        depends on what came before."""
+        header = self.verticalHeader()
+        metrics = title_metrics(header)
+        padding = title_padding(header)
         total = self.width() - 2 * self.frameWidth()
-        shown = [self.verticalHeaderItem(r).text() for r in range(self.rowCount()) if self.verticalHeaderItem(r)]
-        widest = max((metrics.horizontalAdvance(line) for t in shown for line in t.split("\n")), default=0)
-        padding = max(self.verticalHeader().sizeHint().width() - widest, 0)   # the style's margins
-        longest = max((metrics.horizontalAdvance(t) for t in self._rows), default=0) + padding
+        longest = max((title_width(metrics, t) for t in self._rows), default=0) + padding
         free = total - sum(widths)
         least = TITLES_SHARE * total
         if self._wrap_width >= 0:       # wrapped: kept while a scroll bar's width narrower
@@ -161,7 +167,16 @@ class ResultTable(QTableWidget):
             item = self.verticalHeaderItem(row)
             if item is not None and item.text() != shown:
                 item.setText(shown)
-            self.verticalHeader().resizeSection(row, line + (metrics.height() if "\n" in shown else 0))
+            header.resizeSection(row, line + (QFontMetrics(header.font()).height() if "\n" in shown else 0))
+
+    def _least_titles(self) -> int:
+        """px the row titles need at their narrowest, each on two lines: a width that does
+        not move with their wrapping (the header's own width did, by 24 px in the speeds
+        table, and with it the table's least width and so the pane's)."""
+        header = self.verticalHeader()
+        metrics = title_metrics(header)
+        return (max((title_width(metrics, _two_lines(t, metrics, 0)) for t in self._rows), default=0)
+                + title_padding(header))
 
     def _fit_height(self, scrolls: bool) -> None:
         height = (self.horizontalHeader().sizeHint().height() + self.verticalHeader().length()
@@ -207,9 +222,10 @@ class ResultTable(QTableWidget):
 
     def minimumSizeHint(self):
         hint = super().minimumSizeHint()
-        # the first column as wide as its texts need, not as the spare width made it
+        # the first column as wide as its texts need, not as the spare width made it; the
+        # titles at their narrowest, whether or not they are wrapped now (_least_titles)
         first = min(self._least_column, self.horizontalHeader().sectionSize(0)) if self.columnCount() else 0
-        hint.setWidth(self.verticalHeader().sizeHint().width() + min(first, 120) + 2 * self.frameWidth())
+        hint.setWidth(self._least_titles() + min(first, 120) + 2 * self.frameWidth())
         return hint
 
     def whole_width(self) -> int:
@@ -266,12 +282,34 @@ def whole_columns(widths: list[int], room: int) -> list[int]:
     return [max(widest, room // count)] * len(widths)
 
 
+def title_metrics(header: QHeaderView) -> QFontMetrics:
+    """The metrics a header sizes its sections by: its font in bold (Qt's
+    ``QHeaderView::sectionSizeFromContents`` measures every title as if highlighted)."""
+    font = QFont(header.font())
+    font.setBold(True)
+    return QFontMetrics(font)
+
+
+def title_width(metrics: QFontMetrics, title: str) -> int:
+    """px of a title's widest line as the header measures it (``title_metrics``)."""
+    return metrics.size(0, title).width()
+
+
+def title_padding(header: QHeaderView) -> int:
+    """px a header's section adds beside its text: the style's margins, the same for every
+    title (a section's width less its text's, for a one-letter title)."""
+    option = QStyleOptionHeader()
+    option.fontMetrics = title_metrics(header)
+    option.text = "x"
+    section = header.style().sizeFromContents(QStyle.ContentsType.CT_HeaderSection, option, QSize(), header)
+    return section.width() - title_width(option.fontMetrics, option.text)
+
+
 def _two_lines(title: str, metrics: QFontMetrics, width: int) -> str:
     """``title`` broken at the space that keeps its longer line shortest, if it is wider
     than ``width`` px."""
-    if metrics.horizontalAdvance(title) <= width or " " not in title:
+    if title_width(metrics, title) <= width or " " not in title:
         return title
     spaces = [i for i, ch in enumerate(title) if ch == " "]
-    cut = min(spaces, key=lambda i: max(metrics.horizontalAdvance(title[:i]),
-                                        metrics.horizontalAdvance(title[i + 1:])))
+    cut = min(spaces, key=lambda i: max(title_width(metrics, title[:i]), title_width(metrics, title[i + 1:])))
     return title[:cut] + "\n" + title[cut + 1:]

@@ -12,6 +12,9 @@ from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout, QWidget
 
 GUIDE_LANGUAGES = ("en", "zh_CN")
+WRAPPED = "pre { white-space: pre-wrap; }"
+"""The guide's style beside its HTML's: preformatted lines wrap to the window (a browser's
+``pre`` does not, and a reader then scrolls sideways for one line)."""
 
 
 def version() -> str:
@@ -46,6 +49,9 @@ class GuideDialog(QDialog):
         super().__init__(parent)
         self.browser = QTextBrowser(self)
         self.browser.setOpenExternalLinks(False)
+        # The command examples wrap at the window's edge like the text (their longest line,
+        # the cam's, made the guide 881 px wide in its 722 px view: a sideways scroll bar)
+        self.browser.document().setDefaultStyleSheet(WRAPPED)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
         buttons.rejected.connect(self.close)
         layout = QVBoxLayout(self)

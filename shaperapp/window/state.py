@@ -8,7 +8,7 @@ ignored and the default arrangement used instead.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QByteArray, QRect, QSettings, QSize
+from PySide6.QtCore import QByteArray, QPoint, QRect, QSettings, QSize
 from PySide6.QtWidgets import QMainWindow
 
 STATE_VERSION = 2           # 1: the splitter layout before the panes became docks
@@ -30,6 +30,17 @@ def opening_size(window: QMainWindow) -> QSize:
     return PREFERRED.boundedTo(room).expandedTo(window.minimumSizeHint().boundedTo(room))
 
 
+def opening_corner(screen: QRect, size: QSize) -> QPoint:
+    """Where the frame of a window of ``size`` opens: the window with FRAME_ALLOWANCE round it
+    centred on ``screen`` (the frame is not known before the window is shown). Centring the
+    window alone put a 1366 × 768 laptop's frame 24 px down and its bottom 1 px below the
+    screen (openbox: a 745 px frame at y = 24), and opening the library, which made the window
+    1 px taller for a moment, then moved it to the screen's top (``Docks._back_on_screen``)."""
+    frame = QRect(QPoint(0, 0), size + FRAME_ALLOWANCE)
+    frame.moveCenter(screen.center())
+    return QPoint(max(frame.left(), screen.left()), max(frame.top(), screen.top()))
+
+
 def fits(window: QMainWindow) -> bool:
     return available(window).contains(window.frameGeometry())
 
@@ -45,9 +56,7 @@ def restore(window: QMainWindow, settings: QSettings, arrange) -> bool:
     if not fitted:
         size = opening_size(window)
         window.resize(size)
-        frame = QRect(window.frameGeometry().topLeft(), size)
-        frame.moveCenter(available(window).center())
-        window.move(frame.topLeft())
+        window.move(opening_corner(available(window), size))
     arrange(window.size())
     state = settings.value("windowState")
     # The panes' layout belongs to the window it was saved with: one saved on a large

@@ -14,7 +14,7 @@ from core.linkage.geometry import Design, synthesize
 from core.files.io import curve_table
 from core.linkage.kinematics import shape, solve
 from core.linkage.metrics import analyze
-from core.course_design.positions import (SPECIAL_NAMES, display_values, number_text, position_table,
+from core.course_design.positions import (SPECIAL_NAMES, column_texts, display_values, position_table,
                             positions, positions_csv, special_angles, table_records)
 from test_properties import designs
 
@@ -166,8 +166,11 @@ def test_display_cleans_round_off_only():
     data = np.array([[1e-17, 5.0, np.nan], [2.0, -3e-8, 1.0]])
     shown = display_values(data)
     assert shown[0, 0] == 0.0 and shown[1, 1] == -3e-8 and np.isnan(shown[0, 2])
-    assert [number_text(v) for v in (0.49913332, 834.29, 12345.6, -0.0000031, float("nan"))] == \
-        ["0.49913", "834.29", "12346", "-0.000003", ""]
+    # one number of decimals per column: 5 significant digits of its largest value
+    assert column_texts(np.array([0.49913332, 834.29, -0.0000031, float("nan")])) == \
+        ["0.50", "834.29", "0.00", ""]
+    assert column_texts(np.array([0.49913332, -0.84773, 0.0])) == ["0.49913", "-0.84773", "0.00000"]
+    assert column_texts(np.array([12345.6, 1.0])) == ["12346", "1"]
 
 
 @settings(max_examples=60, deadline=None)

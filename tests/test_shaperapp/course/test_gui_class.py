@@ -202,3 +202,77 @@ def test_the_finish_and_a_rows_missing_parts_are_chinese_in_the_chinese_dialog(w
     assert "lever-weight" in error and "z1" in error, error         # the columns to add, as core names them
     assert_chinese_text(error, {"tasks", "csv", "rpm", "lever", "weight", "inertia", "ram", "cut", "force", "arm",
                                 "swing", "pressure", "rise", "dwell", "return", "z1", "z2", "module", "base"}, error)
+
+
+class PrintedProcess:
+    """Stands for the ``shaper class`` process: what it printed, read in the pieces given
+    (a line may end in the next piece)."""
+
+    def __init__(self, out: list[str], err: list[str]) -> None:
+        self.out, self.err = [p.encode() for p in out], [p.encode() for p in err]
+
+    def readAllStandardOutput(self) -> bytes:       # noqa: N802 (Qt's name)
+        return self.out.pop(0) if self.out else b""
+
+    def readAllStandardError(self) -> bytes:        # noqa: N802 (Qt's name)
+        return self.err.pop(0) if self.err else b""
+
+
+def checks(dialog) -> list[str]:
+    return [dialog.table.item(r, 3).text() for r in range(dialog.table.rowCount())]
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_after_a_run_each_row_says_what_happened_to_its_student(window, qtbot, class_files, language):
+    """The rows said "ready" after the run had written or failed them. Now each says what
+    the command said of its student: written, up to date (not written again), failed with
+    the command's reason (red), or, for one the run never reached, not written; a bad row
+    keeps its error. The lines are the command's own (``student_line``, ``failure_line``)."""
+    from shaperapp.course.class_dialog import BAD, ClassDialog
+    from shaperapp.course.class_run import failure_line, student_line
+    window.set_language(language)
+    tasks, base, out = class_files
+    tasks.write_text("student,student-number,crank,K\n张三,1,100,1.4\n李四,2,105,1.45\n坏,3,100,0.9\n王五,4,95,1.4\n"
+                     "赵六,5,98,1.4\n", encoding="utf-8")
+    dialog = ClassDialog(language)
+    qtbot.addWidget(dialog)
+    dialog.tasks.setText(str(tasks))
+    dialog.base.setText(str(base))
+    dialog.check()
+    bad_row = checks(dialog)[2]
+    from core.cli.tasks import read_tasks
+    folders = [s.folder for s in read_tasks(str(tasks), str(base))[0] if not s.error]   # 张三, 李四, 王五, 赵六
+    printed = student_line(folders[0], False, 4.2) + "\n" + student_line(folders[2], True, 0.1) + "\n"
+    failure = "shaper: error: " + failure_line(folders[1], "OSError: [Errno 28] No space left on device") + "\n"
+    dialog._process = PrintedProcess([printed[:9], printed[9:]], [failure[:20], failure[20:]])
+    dialog._errors = ""
+    for _ in range(2):
+        dialog._read()
+        dialog._read_errors()
+    assert dialog.progress.value() == 3
+    dialog._done(2, None)                        # the run ended without reaching 赵六
+    words = {"en": ("written", "up to date, not written again", "failed: ", "not written"),
+             "zh_CN": ("已写入", "已是最新，未重写", "失败：", "未写入")}[language]
+    assert checks(dialog) == [words[0], words[2] + "OSError: [Errno 28] No space left on device", bad_row, words[1],
+                              words[3]]
+    assert dialog.table.item(1, 3).background().color() == BAD
+    assert dialog.table.item(0, 3).background().color() != BAD
+    window.set_language("en")
+
+
+def test_chinese_sentences_of_the_finish_follow_each_other_without_a_space(window, qtbot, tmp_path):
+    """"完成：…在文件夹中。 5 名学生中有 2 名未写入…": Chinese sentences follow each other
+    without a space (the English ones with one)."""
+    from shaperapp.course.class_dialog import ClassDialog
+    (tmp_path / "answer-key.json").write_text("{}", encoding="utf-8")
+    count = "shaper: error: 2 of 5 students not written (1 bad rows, 1 failed)\n"
+    for language in ("zh_CN", "en"):
+        window.set_language(language)
+        dialog = ClassDialog(language)
+        qtbot.addWidget(dialog)
+        first = _finished(dialog, tmp_path, 2, count, None).splitlines()[0]
+        if language == "zh_CN":
+            assert first.startswith("完成：已写入 3 名学生；") and "。" in first and "。 " not in first, first
+        else:
+            assert "folder. 2 of 5 students" in first, first
+    window.set_language("en")

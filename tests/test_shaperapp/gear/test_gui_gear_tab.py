@@ -12,7 +12,9 @@ import pytest
 from core.gear import GearPairInputs, design_pair, pair_checks
 from core.gear.mesh import gear_outline
 from core.gear.table import MODE_TEXT, gear_summary, summary_csv
+from shaperapp.gear.model import MODE_FIELDS
 from shaperapp.gear.tab import GearTab
+from cli_runner import shaper_in_process
 
 from gear_checks import assert_fields_follow, assert_table_is
 from gui_helpers import shown
@@ -225,6 +227,34 @@ def test_a_carried_over_shift_is_rounded_on_screen_and_exact_in_the_model(qtbot,
     edit = tab.form.fields["x1"].edit
     assert edit.text() == f"{exact:.7g}" and float(edit.toolTip()) == exact
     assert edit.fontMetrics().horizontalAdvance(edit.text()) <= edit.contentsRect().width() - 4
+
+
+def cli_pair_texts(*options) -> tuple[str, str, str]:
+    """x1, x2 and a′ as ``shaper gear OPTIONS`` prints them (run in this process)."""
+    status, out, _ = shaper_in_process("gear", *options)
+    assert status == 0
+    rows = {line[:40].strip(): line[40:].strip() for line in out.splitlines()}
+    x1, x2 = rows["shift factor x1 / x2"].split(" / ")
+    return x1, x2, rows["centre distance a′ (a)"].split(" mm")[0]
+
+
+@pytest.mark.parametrize("mode, typed, options", [
+    ("centre", (("z1", "13"),), ("--centre", "162")),
+    ("auto", (("z1", "9"),), ()),
+    ("shifts", (("z1", "11"), ("x1", "0.3"), ("x2", "-0.1")), ("--x1", "0.3", "--x2", "-0.1"))])
+def test_the_greyed_fields_read_as_shaper_gear_prints_them(qtbot, tab, mode, typed, options):
+    """A greyed x1, x2 or a′ is the figure ``shaper gear`` prints for the same pair, digit for
+    digit (x1 showed 7 significant digits beside the table's and the CLI's 6 decimals)."""
+    tab.form.mode.setCurrentIndex(tab.form.mode.findData(mode))
+    tab.form.mode.activated.emit(tab.form.mode.currentIndex())
+    for name, text in typed:
+        type_into(qtbot, tab, name, text)
+    z1 = dict(typed)["z1"]
+    want = dict(zip(("x1", "x2", "centre"), cli_pair_texts("--z1", z1, "--z2", "40", "--module", "6", *options)))
+    greyed = [name for name in want if not tab.form.fields[name].isEnabled()]
+    assert greyed == [name for name in want if name not in MODE_FIELDS[mode]]
+    for name in greyed:
+        assert tab.form.fields[name].edit.text() == want[name], name
 
 
 def test_an_export_while_a_field_is_refused_asks_first(qtbot, tab, tmp_path, monkeypatch):

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 from PySide6.QtCore import QSettings, Qt
 from PySide6.QtGui import QImage
-from PySide6.QtWidgets import QMessageBox
+from PySide6.QtWidgets import QApplication, QMessageBox
 
 from core.space.compare import compare, table_csv
 from core.files.io import load_design, save_design
@@ -424,3 +424,34 @@ def test_import_and_export_all_show_the_busy_cursor(pane, tmp_path, monkeypatch)
     wait, arrow = Qt.CursorShape.WaitCursor, Qt.CursorShape.ArrowCursor
     assert seen == [("import_paths", wait), ("export_all", wait), ("export_all", wait), ("message", arrow)]
     assert (tmp_path / "out" / "one.shaper.json").exists() and _cursor() is None
+
+
+def reachable(pane, action) -> bool:
+    """``action`` is a button in view on one of the pane's toolbars, or in the menu of one
+    (not behind a toolbar's », whose buttons are hidden)."""
+    from PySide6.QtWidgets import QToolBar, QToolButton
+    for bar in pane.findChildren(QToolBar):
+        for button in bar.findChildren(QToolButton):
+            if (not button.isVisible() or not bar.rect().contains(button.geometry())
+                    or button.objectName() == "qt_toolbar_ext_button"):       # », the hidden ones' menu
+                continue
+            if button.defaultAction() is action or (button.menu() and action in button.menu().actions()):
+                return True
+    return False
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_every_button_is_in_view_at_a_laptops_width(pane, language):
+    """The pane as a tab beside the Results at 1366 × 768 (414 px wide under openbox):
+    Import, Import folder, Export and Export all were behind the toolbar's » there."""
+    from shaperapp.widgets import i18n
+    i18n.set_language(language)
+    try:
+        pane.resize(400, 500)
+        QApplication.processEvents()
+        actions = [pane.act_save, pane.act_open, pane.act_compare, pane.act_rename, pane.act_duplicate,
+                   pane.act_delete, pane.act_undo, pane.act_redo, pane.act_import, pane.act_import_folder,
+                   pane.act_export, pane.act_export_all]
+        assert [a.text() for a in actions if not reachable(pane, a)] == []
+    finally:
+        i18n.set_language("en")

@@ -1,11 +1,19 @@
-"""The Positions tab: rows equal core's table, a row moves the animation, Copy pastes as cells."""
+"""The Positions tab: rows equal core's table and print as ``shaper table`` prints them, a row
+moves the animation, Copy pastes as cells."""
+import re
+
 import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 
 from core.forces.masses import masses_for_design
 from core.course_design.positions import SPECIAL_NAMES, display_values, position_table, positions
+from core.files.dynamics_io import FLAG_COLUMNS
+from core.files.io import save_design
+from shaperapp.design.document import saved_parts
 from shaperapp.positions.view import PositionsView
+
+from cli_runner import shaper_in_process
 
 from gui_helpers import shown
 
@@ -127,3 +135,43 @@ def test_the_tilt_flag_reads_yes_or_no(qtbot, model, language, yes, no):
         assert all((cell(view, row, "guide_offset_mm") == "") == bool(t) for row, t in enumerate(tilted))
     finally:
         set_language("en")
+
+
+def cli_columns(out: str) -> dict[tuple[float, str], list[str]]:
+    """``shaper table``'s text as {(rpm, column): its texts, row by row}, cut at the
+    columns' right-justified edges (a blank cell stays '')."""
+    columns: dict[tuple[float, str], list[str]] = {}
+    for block in out.strip().split("\n\n"):
+        lines = [line for line in block.splitlines() if not line.startswith("cut_start and")]
+        rpm = float(lines[0].split(" r/min")[0])
+        header = lines[1]
+        ends = [m.end() for m in re.finditer(r"\S+", header)]
+        names = header.split()
+        # crank_deg, never blank, follows the left-justified names; the rest by their edges
+        columns[(rpm, names[2])] = [line[:ends[2]].split()[-1] for line in lines[2:]]
+        for c, name in enumerate(names[3:], start=3):
+            columns[(rpm, name)] = [line[ends[c - 1]:ends[c]].strip() for line in lines[2:]]
+    return columns
+
+
+def test_the_tab_prints_what_shaper_table_prints(view, model, tmp_path):
+    """Every cell of the Positions tab, at each speed, reads as ``shaper table`` prints that
+    figure for the same design and loads (17.79 mm on screen beside the CLI's 17.788 before)."""
+    path = tmp_path / "d.shaper.json"
+    save_design(path, model.valid_spec, model.rpms, model.step_deg, extra=saved_parts(model))
+    status, out, _ = shaper_in_process("table", "--design", path)
+    assert status == 0
+    printed = cli_columns(out)
+    names = [view.table_model.headerData(c, Qt.Orientation.Horizontal, Qt.ItemDataRole.ToolTipRole)
+             for c in range(view.table_model.columnCount())]
+    assert "crank_torque_N_m" in names and "O4_y_N" in names
+    compared = 0
+    for speed, rpm in enumerate(model.rpms):
+        view.speed_box.setCurrentIndex(speed)
+        for c, name in enumerate(names):
+            if name in FLAG_COLUMNS:
+                continue                                    # yes / no on screen, 1 / 0 printed
+            shown = [view.table_model.index(r, c).data() for r in range(view.table_model.rowCount())]
+            assert shown == printed[(float(rpm), name)], (rpm, name)
+            compared += 1
+    assert compared >= 2 * 20

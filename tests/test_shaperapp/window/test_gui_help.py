@@ -90,3 +90,19 @@ def test_guide_covers_every_subcommand_with_a_command_that_parses(language):
     parser = build_parser()
     for line in lines:
         parser.parse_args(shlex.split(line)[1:])        # each example is a valid command
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_the_guide_wraps_to_its_window(qtbot, language):
+    """No sideways scrolling, at the guide's own size and narrower: the command examples
+    (``pre``) made the guide 881 px wide in its 722 px view, with a horizontal scroll bar."""
+    dialog = GuideDialog(language)
+    qtbot.addWidget(dialog)
+    dialog.show()
+    qtbot.waitExposed(dialog)
+    for width in (dialog.width(), 500):
+        dialog.resize(width, dialog.height())
+        qtbot.waitUntil(lambda: dialog.browser.viewport().width() < width)
+        browser = dialog.browser
+        assert browser.document().size().width() <= browser.viewport().width(), width
+        qtbot.waitUntil(lambda: browser.horizontalScrollBar().maximum() == 0, timeout=2000)   # laid out
