@@ -2827,6 +2827,18 @@
         <translation>x1 + x2 过大：齿顶高降低后齿轮 %1 在基圆以外没有齿廓；请取 %2 ≤ %3，使齿轮 %1 的齿顶厚不小于 %4 mm</translation>
     </message>
     <message>
+        <source>x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give %2 ≤ %3</source>
+        <translation>x1 + x2 过大：齿顶高降低系数 Δy = %1，两轮齿顶削减过多，轮齿不能接触；请取 %2 ≤ %3</translation>
+    </message>
+    <message>
+        <source>x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give a′ ≤ %2 mm</source>
+        <translation>x1 + x2 过大：齿顶高降低系数 Δy = %1，两轮齿顶削减过多，轮齿不能接触；请取 a′ ≤ %2 mm</translation>
+    </message>
+    <message>
+        <source>x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch</source>
+        <translation>x1 + x2 过大：齿顶高降低系数 Δy = %1，两轮齿顶削减过多，轮齿不能接触</translation>
+    </message>
+    <message>
         <source>makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick</source>
         <translation>使齿轮 %1 齿顶变尖（x = %2）：请取 %3 ≤ %4，使齿顶厚不小于 %5 mm</translation>
     </message>

@@ -51,6 +51,14 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "for a tip of gear %1 at least %4 mm thick"),
     (r"x1 \+ x2 is too large: the addendum reduction leaves gear (\d) no flank above its base circle$",
      "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle"),
+    (r"x1 \+ x2 is too large: the addendum reduction Δy = (\S+) cuts both tips so far that the teeth never touch; "
+     r"give (x\d) ≤ (\S+)$",
+     "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give %2 ≤ %3"),
+    (r"x1 \+ x2 is too large: the addendum reduction Δy = (\S+) cuts both tips so far that the teeth never touch; "
+     r"give a′ ≤ (\S+) mm$",
+     "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give a′ ≤ %2 mm"),
+    (r"x1 \+ x2 is too large: the addendum reduction Δy = (\S+) cuts both tips so far that the teeth never touch$",
+     "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch"),
     (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give (x\d) ≤ (\S+), for a tip at least (\S+) mm thick$",
      "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick"),
     (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give a′ ≤ (\S+) mm, for a tip at least (\S+) mm "
@@ -93,6 +101,15 @@ def _templates() -> dict[str, str]:
         "for a tip of gear %1 at least %4 mm thick":
             translate("GearMessages", "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its "
                       "base circle; give %2 ≤ %3, for a tip of gear %1 at least %4 mm thick"),
+        "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give %2 ≤ %3":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the "
+                      "teeth never touch; give %2 ≤ %3"),
+        "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give a′ ≤ %2 mm":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the "
+                      "teeth never touch; give a′ ≤ %2 mm"),
+        "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the "
+                      "teeth never touch"),
         "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick":
             translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least "
                       "%5 mm thick"),

@@ -73,6 +73,9 @@ def test_the_chinese_tab_shows_no_english(qtbot, model, chinese):
         assert english_in(tab) == [], (name, value)
     gm.set_fields(mode="shifts", x1=3.0, x2=3.0, z1=13.0)
     assert english_in(tab) == []
+    gm.set_fields(x1=5.0, x2=5.0)                           # teeth that never touch (hunt, 1 December)
+    assert tab.form.error_label.isVisible()
+    assert english_in(tab) == []
     gm.set_fields(mode="auto", module=6.0, z1=5.0, z2=6.0)
     assert english_in(tab) == []
 
