@@ -560,6 +560,10 @@
         <translation>为空；第一行须为列名（student、student-number 等）</translation>
     </message>
     <message>
+        <source>no students; each row under the header is one student</source>
+        <translation>没有学生；列名行之下每一行为一名学生</translation>
+    </message>
+    <message>
         <source>the speeds (column rpm)</source>
         <translation>转速（rpm 列）</translation>
     </message>

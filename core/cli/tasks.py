@@ -145,6 +145,8 @@ def read_tasks(path: str, base: str | None, group: str = "") -> tuple[list[Stude
     parser = design_parser()
     actions = column_actions(parser)
     _check_header(name, header, actions)
+    if not body:                # a header alone ran with no word, exit 0, and made DIR empty
+        raise TableError(f"{name}: no students; each row under the header is one student")
     here = os.path.dirname(os.path.abspath(path))
     students = [_student(name, line, header, cells, parser, actions, base, here, group)
                 for line, cells in body]

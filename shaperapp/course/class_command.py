@@ -91,8 +91,10 @@ def run(args: argparse.Namespace) -> int:
     except TableError as exc:
         raise UsageError(str(exc)) from None
     out = args.output
+    writes = any(not s.error for s in students)
     try:
-        os.makedirs(out, exist_ok=True)
+        if writes:              # a table of bad rows only writes nothing, not even an empty DIR
+            os.makedirs(out, exist_ok=True)
     except FileExistsError:     # a file of that name ('File exists' said nothing of a folder)
         raise OutputError(f"--output: cannot write into {out}: it is not a folder") from None
     except OSError as exc:      # in the plain words of every other output ('File name too long')
@@ -100,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
         raise OutputError(f"--output: cannot make {out}: {os_reason(exc)}") from None
     from .class_run import ClassBusy, lock_class
     try:
-        held = lock_class(out) if any(not s.error for s in students) else None
+        held = lock_class(out) if writes else None
     except ClassBusy:
         raise OutputError(f"--output: another 'shaper class' is writing into {out}; let it finish, "
                           "then run this one") from None

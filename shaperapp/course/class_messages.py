@@ -57,6 +57,8 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "%1 of %2 students not written (%3 bad rows, %4 failed)."),
     (r"empty; the first row names the columns \(student, student-number, …\)$",
      "empty; the first row names the columns (student, student-number, …)"),
+    (r"no students; each row under the header is one student$",
+     "no students; each row under the header is one student"),
     # the run's own refusals of --output (shaperapp.course.class_command)
     (r"another 'shaper class' is writing into (.+); let it finish, then run this one$",
      "another 'shaper class' is writing into %1; let it finish, then run this one"),
@@ -98,6 +100,8 @@ def _templates() -> dict[str, str]:
             translate("ClassMessages", "larger than %1 MB; a class is at most %2 rows"),
         "empty; the first row names the columns (student, student-number, …)":
             translate("ClassMessages", "empty; the first row names the columns (student, student-number, …)"),
+        "no students; each row under the header is one student":
+            translate("ClassMessages", "no students; each row under the header is one student"),
         "another 'shaper class' is writing into %1; let it finish, then run this one":
             translate("ClassMessages", "another 'shaper class' is writing into %1; let it finish, then run this one"),
         "cannot make %1: %2": translate("ClassMessages", "cannot make %1: %2"),

@@ -87,3 +87,27 @@ def test_an_output_that_cannot_be_a_folder_is_said_in_plain_words(tmp_path):
     status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", long)
     assert status == 2 and err == f"shaper: error: --output: cannot make {long}: the name is too long\n"
     assert a_file.read_text() == "mine"
+
+
+def test_a_table_of_no_students_or_bad_rows_only_makes_no_folder(tmp_path, qapp):
+    """A header alone is refused by name, exit 2 (it ran with no word, exit 0, and made DIR
+    empty); a table of bad rows only names them and makes no DIR either (hunt, 1 December).
+    Each in the dialog's language too: the refusal has its Chinese words."""
+    from shaperapp.course.class_messages import table_message
+    from shaperapp.widgets import i18n
+    header = tmp_path / "header.csv"
+    header.write_text("student,student-number,crank,K\n\n", encoding="utf-8")
+    status, out_text, err = shaper_in_process("class", "--tasks", header, "-o", tmp_path / "none")
+    assert (status, out_text) == (2, "")
+    assert err == "shaper: error: header.csv: no students; each row under the header is one student\n"
+    bad = tmp_path / "bad.csv"
+    bad.write_text("student,student-number,crank,K\nx,1,100,0.9\n", encoding="utf-8")
+    status, _, err = shaper_in_process("class", "--tasks", bad, "-o", tmp_path / "none")
+    assert status == 2 and "1 of 1 students not written" in err
+    assert not (tmp_path / "none").exists()
+    i18n.set_language("zh_CN")
+    try:
+        assert table_message("header.csv: no students; each row under the header is one student") == \
+            "header.csv：没有学生；列名行之下每一行为一名学生"
+    finally:
+        i18n.set_language("en")
