@@ -100,6 +100,13 @@ def run(args: argparse.Namespace) -> int:
     except OSError as exc:      # in the plain words of every other output ('File name too long')
         from core.base.errors import os_reason
         raise OutputError(f"--output: cannot make {out}: {os_reason(exc)}") from None
+    if writes:                  # a folder it cannot write into: one line before any student
+        from core.course_design.plan import CourseError, check_folder
+        from .class_files import KEY_FILES, TASKS_FILE
+        try:
+            check_folder(out, [os.path.join(out, name) for name in (TASKS_FILE, *KEY_FILES)])
+        except CourseError as exc:
+            raise OutputError(str(exc)) from None
     from .class_run import ClassBusy, lock_class
     try:
         held = lock_class(out) if writes else None
@@ -165,9 +172,9 @@ def _class_files(args, out, good, jobs, entries, groups) -> None:
     """tasks.pdf for every good row, the answer key of the students written (``entries``)."""
     from shaperapp.widgets.command_line import start_qt
     language = start_qt(args.lang)
-    from .class_files import write_answer_key, write_tasks
+    from .class_files import TASKS_FILE, write_answer_key, write_tasks
     try:
-        write_tasks(os.path.join(out, "tasks.pdf"),
+        write_tasks(os.path.join(out, TASKS_FILE),
                     [(s.document, {"student": s.name, "number": s.number, "group": s.group, "date": job.date})
                      for s, job in zip(good, jobs)], language)
         write_answer_key(out, entries, groups, language)

@@ -6,6 +6,10 @@ words of every other output."""
 from __future__ import annotations
 
 import os
+import shutil
+import subprocess
+
+import pytest
 
 from cli_runner import shaper_in_process
 from shaperapp.course.class_run import STAMP_FILE, earlier_folders
@@ -111,3 +115,40 @@ def test_a_table_of_no_students_or_bad_rows_only_makes_no_folder(tmp_path, qapp)
             "header.csv：没有学生；列名行之下每一行为一名学生"
     finally:
         i18n.set_language("en")
+
+
+ROW = ("student,student-number,crank,K,stroke,lever-weight,lever-inertia,ram-weight,cut-force,arm,"
+       "swing,pressure,rise,dwell,return,z1,z2,module\n"
+       "a,1,100,1.4,300,200,1.1,700,7000,125,15,40,75,10,75,13,40,6\n")
+
+
+@pytest.mark.skipif(shutil.which("chattr") is None or os.geteuid() != 0, reason="chattr +i needs root and e2fsprogs")
+def test_a_folder_the_run_cannot_write_into_is_one_line_before_any_student(tmp_path):
+    """An immutable DIR, or DIR/tasks.pdf a folder: one line naming --output before any
+    student (hunt, 1 December: each student failed as '[Errno 1] Operation not permitted:
+    …', then tasks.pdf failed too; with tasks.pdf a folder every student was written and
+    then the run failed). A student's folder that cannot be written is said in plain words."""
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text(ROW, encoding="utf-8")
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    (locked / "1-a").mkdir()
+    (locked / "1-a" / ".class-stamp").write_text("an earlier run's\n")
+    subprocess.run(["chattr", "+i", str(locked)], check=True)
+    try:
+        status, text, err = shaper_in_process("class", "--tasks", tasks, "-o", locked)
+    finally:
+        subprocess.run(["chattr", "-i", str(locked)], check=True)
+    assert (status, text) == (2, "") and err == f"shaper: error: --output: cannot write into {locked}: permission denied\n"
+    busy = tmp_path / "busy"
+    (busy / "tasks.pdf").mkdir(parents=True)
+    status, text, err = shaper_in_process("class", "--tasks", tasks, "-o", busy)
+    assert (status, text) == (2, "") and err == f"shaper: error: --output: cannot write {busy / 'tasks.pdf'}: it is a folder\n"
+    assert [p.name for p in busy.iterdir()] == ["tasks.pdf"]
+    subprocess.run(["chattr", "+i", str(locked / "1-a")], check=True)
+    try:
+        status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", locked, "--jobs", "1")
+    finally:
+        subprocess.run(["chattr", "-i", str(locked / "1-a")], check=True)
+    assert status == 2 and err.splitlines()[0] == (
+        f"shaper: error: 1-a: cannot write {locked / '1-a' / '.class-stamp'}: permission denied")
