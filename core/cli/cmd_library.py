@@ -170,7 +170,8 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
                                           else "--library (default)")
     hint = ""
     if exc.refused_file:
-        hint = f"; keep a copy with: shaper library backup --library '{exc.path}'"
+        import shlex                # a path holding ' broke the command printed in quotes
+        hint = f"; keep a copy with: shaper library backup --library {shlex.quote(str(exc.path))}"
     return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
 
 
