@@ -117,6 +117,10 @@ def export_entries(library: Library, folder: str | os.PathLike,
                                                   if n.endswith(DESIGN_SUFFIX)})
         used.add(stem + DESIGN_SUFFIX)
         texts.append((stem + DESIGN_SUFFIX, entry.text + "\n"))
+    if names is None:           # an entry no name finds was left out without a word
+        skipped += [(label, LibraryError("entry", f"damaged ({why}); 'shaper library check' lists every damaged "
+                                         "design", library.path, damage=why))
+                    for label, why in library.unreadable_names()]
     exists = folder.is_dir()
     parent = folder if exists else (folder.parent if str(folder.parent) else Path("."))
     parent.mkdir(parents=True, exist_ok=True)

@@ -13,17 +13,7 @@ from cli_runner import shaper_in_process
 from core.cli.tasks import TableError, read_tasks
 from locations import DATA
 
-BASE = ("--arm", "125", "--swing", "15", "--pressure", "40", "--rise", "75", "--dwell", "10", "--return", "75",
-        "--z1", "13", "--z2", "40", "--module", "6", "--rpm", "60", "--lever-mass", "20", "--lever-inertia", "1",
-        "--ram-mass", "70", "--cut-force", "7000")
-
-
-@pytest.fixture(scope="module")
-def base(tmp_path_factory):
-    path = tmp_path_factory.mktemp("base") / "base.shaper.json"
-    status, _, err = shaper_in_process("design", "--crank", "100", "--K", "1.4", "--stroke", "300", *BASE, "-o", path)
-    assert status == 0, err
-    return str(path)
+from test_cli_tasks import base  # noqa: F401  (the module-scoped base design file, a fixture)
 
 
 def refused(path, base) -> str:
