@@ -7,6 +7,8 @@ advice is rebuilt from the check's own fields, with the same English words as co
 """
 from __future__ import annotations
 
+import re
+
 from PySide6.QtCore import QCoreApplication
 
 from core.base.errors import DesignError
@@ -143,6 +145,15 @@ def describe_gear_error(error: DesignError) -> str:
     name = field_names().get(error.parameter) or field_name(error.parameter)
     body = allowed_text(error.allowed, _PATTERNS, _templates())
     return translate("messages", "%1: %2").replace("%1", name).replace("%2", body)
+
+
+def gear_refusal(error: DesignError) -> str | None:
+    """:func:`describe_gear_error` when ``error`` is one of core.gear's own refusals (its
+    text one of this module's patterns), else None: a design file's gear pair refused on
+    Open was shown in English in the Chinese window."""
+    if not any(re.match(pattern, error.allowed) for pattern, _ in _PATTERNS):
+        return None
+    return describe_gear_error(error)
 
 
 def module_note(module_mm: float) -> str:
