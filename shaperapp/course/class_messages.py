@@ -150,8 +150,10 @@ def _what(text: str) -> str:
     lacking = _lacking(text)
     if lacking is not None:
         return lacking
+    from shaperapp.widgets.gear_messages import gear_text
     got = _GOT.match(text)
-    body = allowed_text(got.group(1) if got else text, _PATTERNS, _templates())
+    said = got.group(1) if got else text
+    body = gear_text(said) or allowed_text(said, _PATTERNS, _templates())
     if got:
         body = translate("ClassMessages", "%1 (got %2)").replace("%1", body).replace("%2", _value(got.group(2)))
     return body

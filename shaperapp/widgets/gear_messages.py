@@ -151,9 +151,16 @@ def gear_refusal(error: DesignError) -> str | None:
     """:func:`describe_gear_error` when ``error`` is one of core.gear's own refusals (its
     text one of this module's patterns), else None: a design file's gear pair refused on
     Open was shown in English in the Chinese window."""
-    if not any(re.match(pattern, error.allowed) for pattern, _ in _PATTERNS):
+    return None if gear_text(error.allowed) is None else describe_gear_error(error)
+
+
+def gear_text(allowed: str) -> str | None:
+    """One of core.gear's refusals (``DesignError.allowed``) in the UI's language, or None
+    when ``allowed`` is none of them: the Class dialog's row errors said a gear pair's
+    refusal in English."""
+    if not any(re.match(pattern, allowed) for pattern, _ in _PATTERNS):
         return None
-    return describe_gear_error(error)
+    return allowed_text(allowed, _PATTERNS, _templates())
 
 
 def module_note(module_mm: float) -> str:

@@ -118,3 +118,21 @@ def test_a_class_rows_shortened_number_is_said_in_chinese(chinese):
                          "short, its digits lost; format the column as text and save the table again")
     assert text == ("tasks.csv 第 2 行，student-number 列：2.02301E+11 是电子表格缩写了的数字，已丢失数位；"
                     "请把该列设为文本格式后重新保存表格")
+
+
+def test_a_class_rows_gear_refusal_is_said_in_chinese(chinese, tmp_path):
+    """A row whose gear pair core refuses (teeth that never touch, a pointed tip) reached the
+    Chinese Class dialog in English (hunt, 1 December): the table's real refusal, read as
+    `shaper class` reads it, now in the Gear tab's words."""
+    from core.cli.tasks import read_tasks
+    from shaperapp.course.class_messages import table_message
+    table = tmp_path / "tasks.csv"
+    table.write_text("student,student-number,crank,K,stroke,z1,z2,module,x1,x2\n"
+                     "A,1,100,1.4,300,13,40,6,5,5\nB,2,100,1.4,300,13,40,6,5,-1\n",
+                     encoding="utf-8")
+    errors = [s.error for s in read_tasks(str(table), None)[0]]
+    assert "teeth never touch" in errors[0] and "pointed" in errors[1], errors
+    for error in errors:
+        text = table_message(error)
+        assert text.startswith("tasks.csv 第 ") and "请取 x1 ≤ " in text and text.endswith("（输入的是 5）"), text
+        assert not re.search(r"[a-z]{4,}", text.replace("tasks.csv", "")), text
