@@ -624,6 +624,22 @@
         <translation>另一个“全班课程设计”正在向 %1 写入；请等它结束后再运行本次</translation>
     </message>
     <message>
+        <source>cannot write into %1: %2</source>
+        <translation>无法写入文件夹 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>it is not a folder</source>
+        <translation>它不是文件夹</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1: a file of that name is in the way; move it, then run the class again</source>
+        <translation>无法创建文件夹 %1：已有同名文件挡住；请将其移走后重新运行本班</translation>
+    </message>
+    <message>
         <source>cannot make %1: %2</source>
         <translation>无法创建 %1：%2</translation>
     </message>

@@ -62,6 +62,8 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
     # the run's own refusals of --output (shaperapp.course.class_command)
     (r"another 'shaper class' is writing into (.+); let it finish, then run this one$",
      "another 'shaper class' is writing into %1; let it finish, then run this one"),
+    (r"cannot make the folder (.+): a file of that name is in the way; move it, then run the class again$",
+     "cannot make the folder %1: a file of that name is in the way; move it, then run the class again"),
     (r"cannot make (.+?): (.+)$", "cannot make %1: %2"),
 )
 
@@ -105,6 +107,9 @@ def _templates() -> dict[str, str]:
         "another 'shaper class' is writing into %1; let it finish, then run this one":
             translate("ClassMessages", "another 'shaper class' is writing into %1; let it finish, then run this one"),
         "cannot make %1: %2": translate("ClassMessages", "cannot make %1: %2"),
+        "cannot make the folder %1: a file of that name is in the way; move it, then run the class again":
+            translate("ClassMessages", "cannot make the folder %1: a file of that name is in the way; move it, "
+                      "then run the class again"),
         "%1 of %2 students not written (%3 bad rows, %4 failed).":
             translate("ClassMessages", "%1 of %2 students not written (%3 bad rows, %4 failed)."),
     }
@@ -145,9 +150,39 @@ def _lacking(text: str) -> str | None:
     return template.replace("%1", joined)
 
 
+_OUTPUT = re.compile(r"^cannot (write into|write|make) (.+?): ([^:]+)$", re.S)
+
+
+def _output(text: str) -> str | None:
+    """An output the run cannot write ("cannot write into 机械2101: permission denied", the
+    class's check of --output, and a student's "cannot write F: the disk is full"), its
+    reason in the UI's language too; None for another text."""
+    import errno
+
+    from core.base.errors import os_reason as core_reason
+    from shaperapp.widgets.file_messages import os_reason
+    found = _OUTPUT.match(text)
+    if found is None:
+        return None
+    how, path, reason = found.groups()
+    numbers = {core_reason(OSError(n, "")): n for n in (errno.EACCES, errno.ENOSPC, errno.EDQUOT, errno.EROFS,
+                                                         errno.ENOENT, errno.ENOTDIR, errno.EISDIR,
+                                                         errno.ENAMETOOLONG, errno.ELOOP)}
+    if reason in numbers:
+        words = os_reason(numbers[reason], reason)
+    elif reason == "it is not a folder":
+        words = translate("ClassMessages", "it is not a folder")
+    else:
+        return None
+    template = {"write into": translate("ClassMessages", "cannot write into %1: %2"),
+                "write": translate("ClassMessages", "cannot write %1: %2"),
+                "make": translate("ClassMessages", "cannot make %1: %2")}[how]
+    return template.replace("%1", path).replace("%2", words)
+
+
 def _what(text: str) -> str:
     """What is wrong, translated; a trailing "(got X)" kept as the value typed."""
-    lacking = _lacking(text)
+    lacking = _lacking(text) or _output(text)
     if lacking is not None:
         return lacking
     from shaperapp.widgets.gear_messages import gear_text

@@ -191,6 +191,9 @@ def run_student(job: Job) -> Result:
         entry = answer_entry(job.cover.get("student", ""), job.cover.get("number", ""), job.name,
                              os.path.join(job.folder, DESIGN_FILE))
         return Result(job.index, time.perf_counter() - start, entry, skipped=skipped, removed=removed)
+    except FileExistsError:         # makedirs: "cannot write …: File exists" said nothing of a folder
+        error = (f"{job.name}: cannot make the folder {job.folder}: a file of that name is in the way; "
+                 "move it, then run the class again")
     except OSError as exc:          # a WriteError names its file; a bare one ('[Errno 1] …') in plain words
         from core.base.errors import WriteError
         error = f"{job.name}: {exc if isinstance(exc, WriteError) else WriteError(exc.filename or job.folder, exc)}"

@@ -152,3 +152,18 @@ def test_a_folder_the_run_cannot_write_into_is_one_line_before_any_student(tmp_p
         subprocess.run(["chattr", "-i", str(locked / "1-a")], check=True)
     assert status == 2 and err.splitlines()[0] == (
         f"shaper: error: 1-a: cannot write {locked / '1-a' / '.class-stamp'}: permission denied")
+
+
+def test_a_file_where_a_students_folder_goes_is_named_and_kept(tmp_path):
+    """A file of a student's folder name: 'cannot write F: File exists', the system's words
+    (hunt, 1 December); now what is in the way and what to do, the file kept."""
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text(ROW, encoding="utf-8")
+    out = tmp_path / "class"
+    out.mkdir()
+    (out / "1-a").write_text("mine")
+    status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", out, "--jobs", "1")
+    assert status == 2 and err.splitlines()[0] == (
+        f"shaper: error: 1-a: cannot make the folder {out / '1-a'}: a file of that name is in the way; move it, "
+        "then run the class again")
+    assert (out / "1-a").read_text() == "mine"

@@ -136,3 +136,22 @@ def test_a_class_rows_gear_refusal_is_said_in_chinese(chinese, tmp_path):
         text = table_message(error)
         assert text.startswith("tasks.csv 第 ") and "请取 x1 ≤ " in text and text.endswith("（输入的是 5）"), text
         assert not re.search(r"[a-z]{4,}", text.replace("tasks.csv", "")), text
+
+
+def test_a_class_output_it_cannot_write_is_said_in_chinese(chinese):
+    """The run's refusals of --output and a student's failed write reached the Chinese Class
+    dialog in English, reason and all (`--output：cannot write into 机械2101: permission
+    denied`; hunt, 1 December): each now in Chinese, its path kept."""
+    from shaperapp.course.class_messages import table_message
+    said = {
+        "--output: cannot write into 机械2101: permission denied": "--output：无法写入文件夹 机械2101：没有权限",
+        "--output: cannot write 机械2101/tasks.pdf: it is a folder": "--output：无法写入 机械2101/tasks.pdf：它是文件夹",
+        "--output: cannot write into a.txt: it is not a folder": "--output：无法写入文件夹 a.txt：它不是文件夹",
+        "--output: cannot make 机械2101: permission denied": "--output：无法创建 机械2101：没有权限",
+        "1-a: cannot write k/1-a/00-report.pdf: the disk is full (no space left on the device)":
+            "1-a：无法写入 k/1-a/00-report.pdf：磁盘已满（设备上没有剩余空间）",
+        "1-a: cannot make the folder k/1-a: a file of that name is in the way; move it, then run the class again":
+            "1-a：无法创建文件夹 k/1-a：已有同名文件挡住；请将其移走后重新运行本班",
+    }
+    for english, chinese_text in said.items():
+        assert table_message(english) == chinese_text
