@@ -153,8 +153,9 @@ def _run(args, out, good, jobs, bad_rows) -> int:
     done = sorted(entries)
     if good:        # a table of bad rows only has no task sheet nor answer to write
         _class_files(args, out, good, jobs, [entries[i] for i in done], [good[i].group for i in done])
-        print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); "
-              f"tasks.pdf and answer-key.pdf, .csv, .json in {out}")
+        files = (f"tasks.pdf and answer-key.pdf, .csv, .json in {out}" if done else
+                 f"tasks.pdf in {out}; no answer key, as no student was written (an earlier one is left as it was)")
+        print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); {files}")
     lines = {s.folder: s.line for s in bad_rows}
     tasks = os.path.basename(args.tasks)
     for folder in earlier_folders(out, {s.folder for s in good}):
@@ -169,7 +170,9 @@ def _run(args, out, good, jobs, bad_rows) -> int:
 
 
 def _class_files(args, out, good, jobs, entries, groups) -> None:
-    """tasks.pdf for every good row, the answer key of the students written (``entries``)."""
+    """tasks.pdf for every good row, the answer key of the students written (``entries``),
+    none when no student was: a run whose every student failed (a full disk) replaced the
+    earlier run's answer key with one of nobody, and the Class dialog said "Done"."""
     from shaperapp.widgets.command_line import start_qt
     language = start_qt(args.lang)
     from .class_files import TASKS_FILE, write_answer_key, write_tasks
@@ -177,6 +180,7 @@ def _class_files(args, out, good, jobs, entries, groups) -> None:
         write_tasks(os.path.join(out, TASKS_FILE),
                     [(s.document, {"student": s.name, "number": s.number, "group": s.group, "date": job.date})
                      for s, job in zip(good, jobs)], language)
-        write_answer_key(out, entries, groups, language)
+        if entries:
+            write_answer_key(out, entries, groups, language)
     except OSError as exc:
         raise OutputError(f"--output: {exc}") from None

@@ -156,13 +156,19 @@ def test_a_folder_the_run_cannot_write_into_is_one_line_before_any_student(tmp_p
 
 def test_a_file_where_a_students_folder_goes_is_named_and_kept(tmp_path):
     """A file of a student's folder name: 'cannot write F: File exists', the system's words
-    (hunt, 1 December); now what is in the way and what to do, the file kept."""
+    (hunt, 1 December); now what is in the way and what to do, the file kept. With no
+    student written, the earlier run's answer key stays (it was replaced by one of nobody)."""
     tasks = tmp_path / "tasks.csv"
     tasks.write_text(ROW, encoding="utf-8")
     out = tmp_path / "class"
     out.mkdir()
     (out / "1-a").write_text("mine")
-    status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", out, "--jobs", "1")
+    (out / "answer-key.json").write_text("[an earlier run's key]\n")
+    status, text, err = shaper_in_process("class", "--tasks", tasks, "-o", out, "--jobs", "1")
+    assert text.endswith(f"; tasks.pdf in {out}; no answer key, as no student was written (an earlier one is "
+                         "left as it was)\n"), text
+    assert (out / "answer-key.json").read_text() == "[an earlier run's key]\n"     # not a key of nobody
+    assert not (out / "answer-key.pdf").exists()
     assert status == 2 and err.splitlines()[0] == (
         f"shaper: error: 1-a: cannot make the folder {out / '1-a'}: a file of that name is in the way; move it, "
         "then run the class again")
