@@ -371,7 +371,7 @@ class Library:
             for i, name in enumerate(todo[start:start + REFRESH_BATCH], start + 1):
                 try:
                     entry = self.get(name)
-                    doc = entry.document()
+                    doc = entry.document(any_step=True)     # the figures never take the stored step
                     batch.append((entry, figures(doc["spec"], doc["rpm"], doc.get("masses"))))
                 except LibraryError as exc:
                     if exc.kind == "entry":               # a damaged entry: reported, left alone

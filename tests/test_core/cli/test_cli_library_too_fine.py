@@ -124,3 +124,13 @@ def test_a_too_fine_entry_is_compared_its_step_left_aside(lib):
     coarse = {f["figure"]: f["values"]["coarse"] for f in json.loads(out)["figures"]}
     assert fine == coarse and fine["a_max_m_s2"] is not None
     assert stored(lib)[:len(before)] == before                     # nothing stored changed
+
+
+def test_a_too_fine_entrys_figures_are_recomputed(lib):
+    """`library refresh` said of an entry too fine for a design file that it 'cannot be
+    computed any more' and kept its figures (hunt, 1 December): its figures never take the
+    stored step, so they are recomputed; its document stays as stored."""
+    before = {name: text for name, _, text in stored(lib)}
+    status, out, err = shaper_in_process("library", "refresh", "old fine", "--library", lib)
+    assert (status, err) == (0, "") and out == f"recomputed the figures of 1 of 1 designs in {lib}\n"
+    assert {name: text for name, _, text in stored(lib)} == before
