@@ -113,8 +113,9 @@ def export_entries(library: Library, folder: str | os.PathLike,
                 raise
             skipped.append((name, exc))
             continue
-        stem = unique_name(safe_file_name(name), {n[:-len(DESIGN_SUFFIX)] for n in used
-                                                  if n.endswith(DESIGN_SUFFIX)})
+        stem = unique_name(safe_file_name(name), {n[:-len(DESIGN_SUFFIX)] for n in used      # 'K1.4' and
+                                                  if n.casefold().endswith(DESIGN_SUFFIX)},   # 'k1.4': one
+                           fold_case=True)                                                    # file on Windows
         used.add(stem + DESIGN_SUFFIX)
         texts.append((stem + DESIGN_SUFFIX, entry.text + "\n"))
     if names is None:           # an entry no name finds was left out without a word
