@@ -564,6 +564,10 @@
         <translation>没有学生；列名行之下每一行为一名学生</translation>
     </message>
     <message>
+        <source>a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs to the text twice</source>
+        <translation>有一个引号开始的单元格直到表格结束都没有闭合；请补上闭合的引号，或把属于文字本身的引号写成两个</translation>
+    </message>
+    <message>
         <source>the speeds (column rpm)</source>
         <translation>转速（rpm 列）</translation>
     </message>

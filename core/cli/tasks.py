@@ -114,6 +114,10 @@ def read_rows(path: str) -> tuple[list[tuple[int, list[str]]], str]:
     text, encoding = decode(raw, name)
     first = text.split("\n", 1)[0]
     delimiter = max((",", ";", "\t"), key=first.count)
+    opened = _unclosed_quote(text, delimiter)
+    if opened is not None:      # it read the rest of the table as one cell: "column student-number: empty"
+        raise TableError(f"{name} line {opened}: a quote opens a cell that no quote closes before the table "
+                         "ends; close it, or write a quote that belongs to the text twice")
     reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter)
     rows, line = [], 1
     try:
@@ -129,6 +133,19 @@ def read_rows(path: str) -> tuple[list[tuple[int, list[str]]], str]:
     if not rows:
         raise TableError(f"{name}: empty; the first row names the columns (student, student-number, …)")
     return rows, encoding
+
+
+def _unclosed_quote(text: str, delimiter: str) -> int | None:
+    """The line of the row where a quoted cell opens that no quote closes (the reader then
+    takes the rest of the table as that cell), or None."""
+    reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter, strict=True)
+    start = 1
+    try:
+        for _ in reader:
+            start = reader.line_num + 1
+    except csv.Error as exc:
+        return start if "unexpected end of data" in str(exc) else None
+    return None
 
 
 def _read(path: str) -> bytes:

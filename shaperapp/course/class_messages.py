@@ -59,6 +59,10 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "empty; the first row names the columns (student, student-number, …)"),
     (r"no students; each row under the header is one student$",
      "no students; each row under the header is one student"),
+    (r"a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs "
+     r"to the text twice$",
+     "a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs to "
+     "the text twice"),
     # the run's own refusals of --output (shaperapp.course.class_command)
     (r"another 'shaper class' is writing into (.+); let it finish, then run this one$",
      "another 'shaper class' is writing into %1; let it finish, then run this one"),
@@ -104,6 +108,10 @@ def _templates() -> dict[str, str]:
             translate("ClassMessages", "empty; the first row names the columns (student, student-number, …)"),
         "no students; each row under the header is one student":
             translate("ClassMessages", "no students; each row under the header is one student"),
+        "a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs to "
+        "the text twice":
+            translate("ClassMessages", "a quote opens a cell that no quote closes before the table ends; close it, "
+                      "or write a quote that belongs to the text twice"),
         "another 'shaper class' is writing into %1; let it finish, then run this one":
             translate("ClassMessages", "another 'shaper class' is writing into %1; let it finish, then run this one"),
         "cannot make %1: %2": translate("ClassMessages", "cannot make %1: %2"),

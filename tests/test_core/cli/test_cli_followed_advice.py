@@ -100,3 +100,18 @@ def test_keep_a_copy_with_the_printed_command_even_for_a_path_with_a_quote(tmp_p
     assert status == 0, err
     copy = tmp_path / text.split(" to ", 1)[1].strip()
     assert copy.read_bytes() == damaged.read_bytes()
+
+
+def test_close_the_quote(tmp_path, base):
+    """A quote that opens a cell and is never closed took the rest of the table as that cell:
+    the row was refused as 'column student-number: empty', the rows after it were lost
+    (hunt, 1 December). The table is refused naming the line the quote opens on; closed,
+    or doubled as the text's own quote, it is read whole."""
+    table = tmp_path / "t.csv"
+    table.write_text('student,student-number\nA,1\n"B,2\nC,3\n', encoding="utf-8")
+    assert refused(table, base) == ("t.csv line 3: a quote opens a cell that no quote closes before the table "
+                                    "ends; close it, or write a quote that belongs to the text twice")
+    table.write_text('student,student-number\nA,1\n"B",2\nC,3\n', encoding="utf-8")
+    assert [s.name for s in accepted(table, base)] == ["A", "B", "C"]
+    table.write_text('student,student-number\nA,1\n"""B",2\nC,3\n', encoding="utf-8")
+    assert [s.name for s in accepted(table, base)] == ["A", '"B', "C"]

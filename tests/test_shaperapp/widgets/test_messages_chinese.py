@@ -155,3 +155,10 @@ def test_a_class_output_it_cannot_write_is_said_in_chinese(chinese):
     }
     for english, chinese_text in said.items():
         assert table_message(english) == chinese_text
+
+
+def test_a_class_tables_unclosed_quote_is_said_in_chinese(chinese):
+    from shaperapp.course.class_messages import table_message
+    assert table_message("t.csv line 3: a quote opens a cell that no quote closes before the table ends; close it, "
+                         "or write a quote that belongs to the text twice") == (
+        "t.csv 第 3 行：有一个引号开始的单元格直到表格结束都没有闭合；请补上闭合的引号，或把属于文字本身的引号写成两个")
