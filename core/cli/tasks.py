@@ -215,11 +215,13 @@ def _student(name: str, line: int, header: list[str], cells: list[str], parser: 
         return _with_error(blank, f"{where}, column student-number: {number} is a number a spreadsheet wrote "
                            "short, its digits lost; format the column as text and save the table again")
     try:
-        argv, given = _argv(where, row, actions, base, here)
+        argv, given, off = _argv(where, row, actions, base, here)
         args = parser.parse_args(argv)
         args.defaults_said = not row.get("design")      # the base's: said once, not per student
         from .cmd_design import document_from_args
         document = document_from_args(args)
+        if "--no-gravity" in off and document.get("forces") is not None:
+            document["forces"]["gravity"] = True        # "no" kept a base's gravity off: its forces without it
     except _CellError as exc:
         return _with_error(blank, str(exc))
     except UsageError as exc:
@@ -277,10 +279,12 @@ def _text(where: str, column: str, value: str) -> str:
 
 
 def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], base: str | None,
-          here: str) -> tuple[list[str], dict[str, str]]:
-    """The row as ``shaper design``'s words, and each option given → its column."""
+          here: str) -> tuple[list[str], dict[str, str], list[str]]:
+    """The row as ``shaper design``'s words, each option given → its column, and the switches
+    the row turns off ("no" in a switch's column), which no word of ``shaper design`` says."""
     argv: list[str] = []
     given: dict[str, str] = {}
+    off: list[str] = []
     for column, cell in row.items():
         if column in NAME_COLUMNS or not cell:
             continue
@@ -296,6 +300,7 @@ def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], 
             if word not in TRUE_WORDS | FALSE_WORDS:
                 raise _CellError(f"{where}, column {column}: must be yes or no (got {cell!r})")
             argv += [flag] if word in TRUE_WORDS else []
+            off += [] if word in TRUE_WORDS else [flag]
         else:
             argv.append(f"{flag}={cell}")
     design = row.get("design", "")
@@ -305,7 +310,7 @@ def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], 
     elif base is not None:
         argv += ["--design", base]
         given["--design"] = ""              # the base's: named as the teacher gave it, --base
-    return argv, given
+    return argv, given, off
 
 
 def beside(where: str, design: str, here: str) -> str:
