@@ -580,6 +580,14 @@
         <translation>为空；第一行须为列名（student、student-number 等）</translation>
     </message>
     <message>
+        <source>no students; each row under the header is one student</source>
+        <translation>没有学生；列名行之下每一行为一名学生</translation>
+    </message>
+    <message>
+        <source>a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs to the text twice</source>
+        <translation>有一个引号开始的单元格直到表格结束都没有闭合；请补上闭合的引号，或把属于文字本身的引号写成两个</translation>
+    </message>
+    <message>
         <source>the speeds (column rpm)</source>
         <translation>转速（rpm 列）</translation>
     </message>
@@ -638,6 +646,22 @@
     <message>
         <source>another 'shaper class' is writing into %1; let it finish, then run this one</source>
         <translation>另一个“全班课程设计”正在向 %1 写入；请等它结束后再运行本次</translation>
+    </message>
+    <message>
+        <source>cannot write into %1: %2</source>
+        <translation>无法写入文件夹 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>it is not a folder</source>
+        <translation>它不是文件夹</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1: a file of that name is in the way; move it, then run the class again</source>
+        <translation>无法创建文件夹 %1：已有同名文件挡住；请将其移走后重新运行本班</translation>
     </message>
     <message>
         <source>cannot make %1: %2</source>
@@ -2845,6 +2869,18 @@
     <message>
         <source>x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle; give %2 ≤ %3, for a tip of gear %1 at least %4 mm thick</source>
         <translation>x1 + x2 过大：齿顶高降低后齿轮 %1 在基圆以外没有齿廓；请取 %2 ≤ %3，使齿轮 %1 的齿顶厚不小于 %4 mm</translation>
+    </message>
+    <message>
+        <source>x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give %2 ≤ %3</source>
+        <translation>x1 + x2 过大：齿顶高降低系数 Δy = %1，两轮齿顶削减过多，轮齿不能接触；请取 %2 ≤ %3</translation>
+    </message>
+    <message>
+        <source>x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give a′ ≤ %2 mm</source>
+        <translation>x1 + x2 过大：齿顶高降低系数 Δy = %1，两轮齿顶削减过多，轮齿不能接触；请取 a′ ≤ %2 mm</translation>
+    </message>
+    <message>
+        <source>x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch</source>
+        <translation>x1 + x2 过大：齿顶高降低系数 Δy = %1，两轮齿顶削减过多，轮齿不能接触</translation>
     </message>
     <message>
         <source>makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick</source>

@@ -22,7 +22,7 @@ from core.library.query import QueryError
 from core.library.backup import backup_copy
 from core.library.store import ENV_VAR, LibraryError
 
-from core.base.errors import FileFormatError, os_reason
+from core.base.errors import DesignError, FileFormatError, os_reason
 from core.space.figures import DESIGN_FIGURES, SPEED_FIGURES
 from core.base.text import terminal_text
 from ..library import Entry, Library
@@ -170,7 +170,8 @@ def library_failure(exc: LibraryError, library: str | None, action: str,
                                           else "--library (default)")
     hint = ""
     if exc.refused_file:
-        hint = f"; keep a copy with: shaper library backup --library '{exc.path}'"
+        import shlex                # a path holding ' broke the command printed in quotes
+        hint = f"; keep a copy with: shaper library backup --library {shlex.quote(str(exc.path))}"
     return fail(f"{source}: {exc}{hint}", status=1 if exc.kind in ("io", "busy") else 2)
 
 
@@ -281,6 +282,9 @@ def _run_export(args: argparse.Namespace) -> int:
             raise OutputError(f"-o: cannot write {args.output}: {exc.strerror or exc}") from None
         except FileFormatError as exc:
             fine = too_fine(exc)
+            cause = getattr(exc, "cause", None)
+            if fine is None and step is not None and isinstance(cause, DesignError) and cause.parameter == "step":
+                return fail(f"--step: {cause.allowed} (got {args.step})")     # it named NAME, not the step typed
             if fine is None:
                 raise
             return fail(f"{'NAME' if step is None else '--step'}: {_too_fine_text(args, args.name, fine, args.output)}")

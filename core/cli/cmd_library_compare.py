@@ -46,7 +46,7 @@ def load_candidates(library: str | None, names: Sequence[str], files: Sequence[s
         with Library(library_path(library), create=False) as lib:
             note_read_only(lib)
             for name in names:
-                doc = lib.load(name)
+                doc = lib.get(name).document(any_step=True)      # a too fine entry compares too
                 first_rpm = first_rpm or doc["rpm"][0]
                 candidates.append(Candidate(name, doc["spec"], doc["masses"]))
     for path in files:

@@ -91,7 +91,7 @@ def rotor(text: str, doc: dict[str, Any] | None, args: argparse.Namespace | None
     options (``shaper design``'s --z1, --z2 … over the file's pair, as it writes it), else the
     design file's: J:gear took the file's pair, 40/13, under a file's --z1 15 --z2 41, and
     was refused without a file though --z1 and --z2 were given."""
-    from core.forces.rotors import rotor_from_text
+    from core.forces.rotors import check_rotors, rotor_from_text
     if text.partition(":")[2].strip().lower() != "gear":
         return rotor_from_text(text)
     if args is not None and any(getattr(args, dest, None) is not None for dest in gear_dests()):
@@ -101,6 +101,7 @@ def rotor(text: str, doc: dict[str, Any] | None, args: argparse.Namespace | None
         from ..gear.file import gear_from_dict
         pair = gear_from_dict(doc["gear"])
     else:       # what to give, each of which works as said (test_cli_loads_task_book.py)
+        check_rotors([rotor_from_text(text, 40 / 13)])  # a bad J first: 'nan:gear' was told to type 'nan:3.07692'
         options = "--z1, --z2 and --module, " if args is not None and hasattr(args, "z1") else ""
         which = "no --design file was given" if doc is None else "the --design file has no gear pair"
         raise UsageError(f"--rotor: {text!r} takes the ratio z2/z1 of the gear pair, and {which}: give "

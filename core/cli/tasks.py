@@ -114,6 +114,10 @@ def read_rows(path: str) -> tuple[list[tuple[int, list[str]]], str]:
     text, encoding = decode(raw, name)
     first = text.split("\n", 1)[0]
     delimiter = max((",", ";", "\t"), key=first.count)
+    opened = _unclosed_quote(text, delimiter)
+    if opened is not None:      # it read the rest of the table as one cell: "column student-number: empty"
+        raise TableError(f"{name} line {opened}: a quote opens a cell that no quote closes before the table "
+                         "ends; close it, or write a quote that belongs to the text twice")
     reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter)
     rows, line = [], 1
     try:
@@ -131,6 +135,19 @@ def read_rows(path: str) -> tuple[list[tuple[int, list[str]]], str]:
     return rows, encoding
 
 
+def _unclosed_quote(text: str, delimiter: str) -> int | None:
+    """The line of the row where a quoted cell opens that no quote closes (the reader then
+    takes the rest of the table as that cell), or None."""
+    reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter, strict=True)
+    start = 1
+    try:
+        for _ in reader:
+            start = reader.line_num + 1
+    except csv.Error as exc:
+        return start if "unexpected end of data" in str(exc) else None
+    return None
+
+
 def _read(path: str) -> bytes:
     with open(path, "rb") as handle:
         return handle.read(MAX_TABLE_BYTES + 1)
@@ -145,6 +162,8 @@ def read_tasks(path: str, base: str | None, group: str = "") -> tuple[list[Stude
     parser = design_parser()
     actions = column_actions(parser)
     _check_header(name, header, actions)
+    if not body:                # a header alone ran with no word, exit 0, and made DIR empty
+        raise TableError(f"{name}: no students; each row under the header is one student")
     here = os.path.dirname(os.path.abspath(path))
     students = [_student(name, line, header, cells, parser, actions, base, here, group)
                 for line, cells in body]
@@ -196,11 +215,13 @@ def _student(name: str, line: int, header: list[str], cells: list[str], parser: 
         return _with_error(blank, f"{where}, column student-number: {number} is a number a spreadsheet wrote "
                            "short, its digits lost; format the column as text and save the table again")
     try:
-        argv, given = _argv(where, row, actions, base, here)
+        argv, given, off = _argv(where, row, actions, base, here)
         args = parser.parse_args(argv)
         args.defaults_said = not row.get("design")      # the base's: said once, not per student
         from .cmd_design import document_from_args
         document = document_from_args(args)
+        if "--no-gravity" in off and document.get("forces") is not None:
+            document["forces"]["gravity"] = True        # "no" kept a base's gravity off: its forces without it
     except _CellError as exc:
         return _with_error(blank, str(exc))
     except UsageError as exc:
@@ -258,10 +279,12 @@ def _text(where: str, column: str, value: str) -> str:
 
 
 def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], base: str | None,
-          here: str) -> tuple[list[str], dict[str, str]]:
-    """The row as ``shaper design``'s words, and each option given → its column."""
+          here: str) -> tuple[list[str], dict[str, str], list[str]]:
+    """The row as ``shaper design``'s words, each option given → its column, and the switches
+    the row turns off ("no" in a switch's column), which no word of ``shaper design`` says."""
     argv: list[str] = []
     given: dict[str, str] = {}
+    off: list[str] = []
     for column, cell in row.items():
         if column in NAME_COLUMNS or not cell:
             continue
@@ -277,6 +300,7 @@ def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], 
             if word not in TRUE_WORDS | FALSE_WORDS:
                 raise _CellError(f"{where}, column {column}: must be yes or no (got {cell!r})")
             argv += [flag] if word in TRUE_WORDS else []
+            off += [] if word in TRUE_WORDS else [flag]
         else:
             argv.append(f"{flag}={cell}")
     design = row.get("design", "")
@@ -286,7 +310,7 @@ def _argv(where: str, row: dict[str, str], actions: dict[str, argparse.Action], 
     elif base is not None:
         argv += ["--design", base]
         given["--design"] = ""              # the base's: named as the teacher gave it, --base
-    return argv, given
+    return argv, given, off
 
 
 def beside(where: str, design: str, here: str) -> str:

@@ -13,7 +13,7 @@ import re
 import stat
 import sys
 import time
-from typing import Iterable
+from typing import Callable, Iterable
 
 from core.base.errors import WriteError
 
@@ -243,26 +243,38 @@ def remove_stale_temps(target: str | os.PathLike) -> list[str]:
     (a save in progress) and files of other users are never touched."""
     if os.name != "posix":
         return []
-    directory = os.path.dirname(os.fspath(target)) or "."
-    pattern = temp_pattern(target)
-    prefix = "." + fit_name(os.path.basename(os.fspath(target)), _TEMP_ROOM) + "."
+    return remove_left(os.path.dirname(os.fspath(target)) or ".", temp_pattern(target), stat.S_ISREG, os.unlink)
+
+
+def remove_left(directory: str | os.PathLike, pattern: re.Pattern[str], kind: Callable[[int], bool],
+                remove: Callable[[str], None]) -> list[str]:
+    """Remove (``remove``) each entry of ``directory`` whose name ``pattern`` matches, its
+    group 1 the pid of the process that made it, when that process no longer runs
+    (:func:`left_by_ended`), the entry is this user's and of ``kind`` (``stat.S_ISREG``,
+    ``stat.S_ISDIR``: never a symbolic link); return their paths. The one rule for what a
+    killed writer left: a save's temporary file, an export's staging folder."""
     removed = []
     try:
-        entries = [e for e in os.scandir(directory) if e.name.startswith(prefix)]
+        entries = [e for e in os.scandir(directory) if pattern.match(e.name)]
     except OSError:
         return []
     for entry in entries:
-        match = pattern.match(entry.name)
-        if not match or int(match.group(1)) == os.getpid() or _running(int(match.group(1))):
+        if not left_by_ended(int(pattern.match(entry.name).group(1))):
             continue
         try:
             info = entry.stat(follow_symlinks=False)
-            if stat.S_ISREG(info.st_mode) and info.st_uid == os.geteuid():
-                os.unlink(entry.path)
+            if kind(info.st_mode) and info.st_uid == os.geteuid():
+                remove(entry.path)
                 removed.append(entry.path)
         except OSError:
             continue
     return removed
+
+
+def left_by_ended(pid: int) -> bool:
+    """Whether a temporary file or folder named with ``pid`` was left by a process that no
+    longer runs: not this one, not one that may still finish its write."""
+    return pid != os.getpid() and not _running(pid)
 
 
 def _running(pid: int) -> bool:

@@ -3,7 +3,7 @@ line of action and the contact ratio, and the checks a teacher makes of them."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from core.base.errors import DesignError
 from .inputs import GearPairInputs
@@ -103,19 +103,38 @@ def probe_pair(inputs: GearPairInputs) -> GearPair:
 
 def pair_of(p: GearPairInputs, shifts: Shifts, advise: bool = True) -> GearPair:
     """The results of ``p`` meshed with ``shifts``; a pointed tip refused, with the value
-    that mends it when ``advise``."""
+    that mends it when ``advise``, and so is a pair whose teeth never touch (:func:`meshes`)."""
+    pair = _geometry(p, shifts)
+    for k, gear in ((1, pair.gear1), (2, pair.gear2)):
+        if not gear.sa > 0.0:
+            raise _pointed(k, gear, shifts, p) if advise else DesignError(f"x{k}", gear.shift, "pointed")
+    if not meshes(pair):
+        raise _apart(pair, shifts, advise)
+    return pair
+
+
+def meshes(pair: GearPair) -> bool:
+    """Whether the teeth touch: the actual line of action B1B2 has a length and each tooth
+    has a height (tip circle outside its root circle). Why: the addendum reduction Δy of a
+    large x1 + x2 cuts both tips down; past about Δy = 2 h*a they no longer reach each
+    other (ε and B1B2 came out negative, printed as results) and past 2 h*a + c* a tip
+    circle lies inside its own root circle (the sheet's tooth outline then failed with an
+    internal error, exit 1)."""
+    return pair.b1b2 > 0.0 and all(g.ra > g.rf for g in (pair.gear1, pair.gear2))
+
+
+def _geometry(p: GearPairInputs, shifts: Shifts) -> GearPair:
+    """Every length of ``p`` meshed with ``shifts``, nothing refused (a tip inside its base
+    circle has no line of action beyond N: its B is taken at N)."""
     m = p.module_mm
     a = reference_centre(p)
     y = (shifts.centre_mm - a) / m
     dy = shifts.x1 + shifts.x2 - y
     g1 = make_gear(p, p.z1, shifts.x1, dy, shifts.alpha_w)
     g2 = make_gear(p, p.z2, shifts.x2, dy, shifts.alpha_w)
-    for k, gear in ((1, g1), (2, g2)):
-        if not gear.sa > 0.0:
-            raise _pointed(k, gear, shifts, p) if advise else DesignError(f"x{k}", gear.shift, "pointed")
     n1n2 = shifts.centre_mm * math.sin(shifts.alpha_w)
-    n1b1 = math.sqrt(g1.ra ** 2 - g1.rb ** 2)
-    n1b2 = n1n2 - math.sqrt(g2.ra ** 2 - g2.rb ** 2)
+    n1b1 = math.sqrt(max(g1.ra ** 2 - g1.rb ** 2, 0.0))
+    n1b2 = n1n2 - math.sqrt(max(g2.ra ** 2 - g2.rb ** 2, 0.0))
     pb = math.pi * m * math.cos(p.alpha)
     eps = (p.z1 * (math.tan(g1.alpha_a) - math.tan(shifts.alpha_w))
            + p.z2 * (math.tan(g2.alpha_a) - math.tan(shifts.alpha_w))) / (2.0 * math.pi)
@@ -123,6 +142,53 @@ def pair_of(p: GearPairInputs, shifts: Shifts, advise: bool = True) -> GearPair:
                     reference_centre_mm=a, y=y, dy=dy, gear1=g1, gear2=g2, pb=pb, n1n2=n1n2,
                     b1b2=n1b1 - n1b2, n1p=g1.rb * math.tan(shifts.alpha_w), n1b1=n1b1, n1b2=n1b2,
                     contact_ratio=eps)
+
+
+def _apart(pair: GearPair, shifts: Shifts, advise: bool) -> DesignError:
+    """The error of a pair whose teeth never touch, naming what made x1 + x2 that large (the
+    larger shift given, a′, or the teeth of the rule's pair) and, when ``advise``, the value of
+    the shift or a′ at which they touch."""
+    what = (f"x1 + x2 is too large: the addendum reduction Δy = {pair.dy:.4f} cuts both tips so far "
+            "that the teeth never touch")
+    big = 1 if shifts.x1 >= shifts.x2 else 2
+    if shifts.mode == "centre":
+        bound = _touch_bound(pair.inputs, shifts, "centre") if advise else None
+        return DesignError("centre", shifts.centre_mm, what + ("" if bound is None else f"; give a′ ≤ {bound} mm"))
+    if shifts.mode == "given":
+        bound = _touch_bound(pair.inputs, shifts, f"x{big}") if advise else None
+        return DesignError(f"x{big}", max(shifts.x1, shifts.x2),
+                           what + ("" if bound is None else f"; give x{big} ≤ {bound}"))
+    return DesignError(f"z{big}", pair.gear1.teeth if big == 1 else pair.gear2.teeth, what)
+
+
+def _touch_bound(p: GearPairInputs, shifts: Shifts, name: str) -> str | None:
+    """The value of ``name`` (a shift given, or a′), lowered and printed to 4 decimals, at
+    which the teeth touch (:func:`meshes`); None if none within the inputs' ranges. Δy grows
+    with x1 + x2, so the touching values are one range below the start: doubled steps find
+    a value inside it, bisection its edge."""
+    start = amounts.Start(p, shifts.x1, shifts.x2, shifts.centre_mm)
+    field = {"x1": "x1", "x2": "x2", "centre": "centre_mm"}[name]
+
+    def touch(inputs: GearPairInputs) -> bool:
+        try:
+            q = inputs.check()
+            return meshes(_geometry(q, find_shifts(q)))
+        except DesignError:
+            return False
+    unit = amounts.unit(start, name)
+    lo, hi = 0.0, amounts.STEP_START * unit
+    while not touch(amounts.typed(start, name, -hi)):
+        if hi > amounts.STEP_MOST * unit:
+            return None
+        lo, hi = hi, 2.0 * hi
+    for _ in range(amounts.EDGE_HALVINGS):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if touch(amounts.typed(start, name, -mid)) else (mid, hi)
+    for bump in range(amounts.BUMPS + 1):
+        value = amounts.rounded(getattr(start, field) - hi, amounts.LEAST_DECIMALS, False, bump)
+        if touch(replace(amounts.typed(start, name, 0.0), **{field: value})):
+            return f"{value + 0.0:.{amounts.LEAST_DECIMALS}f}"
+    return None
 
 
 def _pointed(k: int, gear: Gear, shifts: Shifts, p: GearPairInputs) -> DesignError:

@@ -30,7 +30,7 @@ from .entry import Entry, check_document, document_text, with_step
 from .names import check_name, check_notes, check_tags, lookup_name, unique_name
 from .open import connect
 from .query import Condition, condition_sql, parse_filter, search_sql, sort_sql
-from .rows import clean_row, damaged_entries, listed_damage, read_lenient, unfit_sql
+from .rows import Damage, clean_row, damaged_entries, entry_label, listed_damage, read_lenient, unfit_sql
 from .store import (LibraryError, backup_target, default_path, integrity_problems, resolve_path,
                             sqlite_error, transaction, utc_now)
 from .writes import ENTRY_COLUMNS, SPEED_COLUMNS, insert_entry, rewrite_figures
@@ -111,6 +111,19 @@ class Library:
     def names(self) -> list[str]:
         return self._read(lambda c: [r[0] for r in c.execute("SELECT name FROM entries ORDER BY name")
                                      if isinstance(r[0], str)])
+
+    def unreadable_names(self) -> list[tuple[str, Damage]]:
+        """(label, why) for each entry whose name cannot be read (not text, or not UTF-8):
+        no name finds it, so :meth:`names` leaves it out, and an export of every entry must
+        say it left it out (``rows.entry_label``: "entry #3 (its name is unreadable)")."""
+        def work(c: sqlite3.Connection) -> list[tuple[str, Damage]]:
+            out = []
+            for entry_id, name in c.execute("SELECT id, name FROM entries ORDER BY id"):
+                why = clean_row(("name",), (name,))[1]
+                if why is not None:
+                    out.append((entry_label(entry_id, name), why))
+            return out
+        return self._read(lambda c: read_lenient(c, work))
 
     def count(self) -> int:
         return self._read(lambda c: c.execute("SELECT count(*) FROM entries").fetchone()[0])
@@ -358,7 +371,7 @@ class Library:
             for i, name in enumerate(todo[start:start + REFRESH_BATCH], start + 1):
                 try:
                     entry = self.get(name)
-                    doc = entry.document()
+                    doc = entry.document(any_step=True)     # the figures never take the stored step
                     batch.append((entry, figures(doc["spec"], doc["rpm"], doc.get("masses"))))
                 except LibraryError as exc:
                     if exc.kind == "entry":               # a damaged entry: reported, left alone

@@ -34,10 +34,21 @@ class Entry:
         """False when an older program computed the figures (see ``refresh_figures``)."""
         return self.figures_version >= FIGURES_VERSION
 
-    def document(self) -> dict[str, Any]:
-        """The validated design (keys of ``core.files.io.load_design``); FileFormatError if bad."""
+    def document(self, any_step: bool = False) -> dict[str, Any]:
+        """The validated design (keys of ``core.files.io.load_design``); FileFormatError if bad.
+        With ``any_step``, an entry too fine for a design file (stored before its sample
+        limit) is read at the coarsest step a file holds: for a comparison, which takes the
+        linkage, the speeds and the loads and its own --step, never the stored one (`library
+        compare` refused such an entry, telling to use a step its --step could not give)."""
         from core.files.io import parse_design
-        return parse_design(self.text.encode("utf-8"), f"library entry {self.name!r}", self.name)
+        label = f"library entry {self.name!r}"
+        try:
+            return parse_design(self.text.encode("utf-8"), label, self.name)
+        except Exception as exc:            # noqa: BLE001 — only a too fine step is set right here
+            fine = too_fine(exc)
+            if not any_step or fine is None:
+                raise
+        return parse_design(with_step(self.name, self.text, fine.coarsest).encode("utf-8"), label, self.name)
 
 
 def document_text(loaded: dict[str, Any]) -> str:

@@ -7,13 +7,16 @@ from __future__ import annotations
 
 import errno
 import os
+import re
 import shutil
 import secrets
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable
 
 from core.base.errors import FileFormatError
+from core.files.atomic import remove_left
 from core.library import Entry, Library
 
 from .names import MAX_NAME, file_stem, safe_file_name, shown_file_name, unique_name
@@ -110,14 +113,20 @@ def export_entries(library: Library, folder: str | os.PathLike,
                 raise
             skipped.append((name, exc))
             continue
-        stem = unique_name(safe_file_name(name), {n[:-len(DESIGN_SUFFIX)] for n in used
-                                                  if n.endswith(DESIGN_SUFFIX)})
+        stem = unique_name(safe_file_name(name), {n[:-len(DESIGN_SUFFIX)] for n in used      # 'K1.4' and
+                                                  if n.casefold().endswith(DESIGN_SUFFIX)},   # 'k1.4': one
+                           fold_case=True)                                                    # file on Windows
         used.add(stem + DESIGN_SUFFIX)
         texts.append((stem + DESIGN_SUFFIX, entry.text + "\n"))
+    if names is None:           # an entry no name finds was left out without a word
+        skipped += [(label, LibraryError("entry", f"damaged ({why}); 'shaper library check' lists every damaged "
+                                         "design", library.path, damage=why))
+                    for label, why in library.unreadable_names()]
     exists = folder.is_dir()
     parent = folder if exists else (folder.parent if str(folder.parent) else Path("."))
     parent.mkdir(parents=True, exist_ok=True)
-    staging = parent / f".shaper-export-{os.getpid()}-{secrets.token_hex(4)}"
+    remove_stale_staging(parent)
+    staging = parent / f"{STAGING_PREFIX}{os.getpid()}-{secrets.token_hex(4)}"
     staging.mkdir()                             # the umask's mode, which a new folder keeps
     moved: list[Path] = []
     try:
@@ -144,3 +153,16 @@ def export_entries(library: Library, folder: str | os.PathLike,
         raise
     shutil.rmtree(staging, ignore_errors=True)
     return Exported(tuple(moved), tuple(skipped))
+
+
+STAGING_PREFIX = ".shaper-export-"
+_STAGING = re.compile(rf"{re.escape(STAGING_PREFIX)}(\d+)-[0-9a-f]{{8}}\Z")
+
+
+def remove_stale_staging(parent: Path) -> list[str]:
+    """Remove the staging folders in ``parent`` of exports killed mid-way (SIGKILL, power
+    loss: their pid no longer runs), and return them. Each killed ``export --all`` left one,
+    a hidden folder holding a whole export, that no later run removed. A staging folder of a
+    live export, another user's, or a symbolic link is left alone, by the rule of a save's
+    stale temporary files (``core.files.atomic.remove_left``)."""
+    return remove_left(parent, _STAGING, stat.S_ISDIR, shutil.rmtree)

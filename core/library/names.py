@@ -72,13 +72,15 @@ def check_notes(notes: object) -> str:
     return notes
 
 
-def unique_name(base: str, taken: Iterable[str]) -> str:
-    """``base``, or ``base (2)``, ``base (3)``… whichever is not in ``taken``."""
-    taken = set(taken)
-    if base not in taken:
+def unique_name(base: str, taken: Iterable[str], fold_case: bool = False) -> str:
+    """``base``, or ``base (2)``, ``base (3)``… whichever is not in ``taken``; with
+    ``fold_case`` letter case does not tell two apart (a file name on Windows and macOS)."""
+    key = str.casefold if fold_case else str
+    taken = {key(t) for t in taken}
+    if key(base) not in taken:
         return base
     n = 2
-    while f"{base} ({n})" in taken:
+    while key(f"{base} ({n})") in taken:
         n += 1
     return f"{base} ({n})"
 

@@ -91,16 +91,25 @@ def run(args: argparse.Namespace) -> int:
     except TableError as exc:
         raise UsageError(str(exc)) from None
     out = args.output
+    writes = any(not s.error for s in students)
     try:
-        os.makedirs(out, exist_ok=True)
+        if writes:              # a table of bad rows only writes nothing, not even an empty DIR
+            os.makedirs(out, exist_ok=True)
     except FileExistsError:     # a file of that name ('File exists' said nothing of a folder)
         raise OutputError(f"--output: cannot write into {out}: it is not a folder") from None
     except OSError as exc:      # in the plain words of every other output ('File name too long')
         from core.base.errors import os_reason
         raise OutputError(f"--output: cannot make {out}: {os_reason(exc)}") from None
+    if writes:                  # a folder it cannot write into: one line before any student
+        from core.course_design.plan import CourseError, check_folder
+        from .class_files import KEY_FILES, TASKS_FILE
+        try:
+            check_folder(out, [os.path.join(out, name) for name in (TASKS_FILE, *KEY_FILES)])
+        except CourseError as exc:
+            raise OutputError(str(exc)) from None
     from .class_run import ClassBusy, lock_class
     try:
-        held = lock_class(out) if any(not s.error for s in students) else None
+        held = lock_class(out) if writes else None
     except ClassBusy:
         raise OutputError(f"--output: another 'shaper class' is writing into {out}; let it finish, "
                           "then run this one") from None
@@ -143,8 +152,9 @@ def _run(args, out, good, jobs, bad_rows) -> int:
     done = sorted(entries)
     if good:        # a table of bad rows only has no task sheet nor answer to write
         _class_files(args, out, good, jobs, [entries[i] for i in done], [good[i].group for i in done])
-        print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); "
-              f"tasks.pdf and answer-key.pdf, .csv, .json in {out}")
+        files = (f"tasks.pdf and answer-key.pdf, .csv, .json in {out}" if done else
+                 f"tasks.pdf in {out}; no answer key, as no student was written (an earlier one is left as it was)")
+        print(f"{len(done)} students in {time.perf_counter() - start:.1f} s ({count} at once); {files}")
     lines = {s.folder: s.line for s in bad_rows}
     tasks = os.path.basename(args.tasks)
     for folder in earlier_folders(out, {s.folder for s in good}):
@@ -159,14 +169,17 @@ def _run(args, out, good, jobs, bad_rows) -> int:
 
 
 def _class_files(args, out, good, jobs, entries, groups) -> None:
-    """tasks.pdf for every good row, the answer key of the students written (``entries``)."""
+    """tasks.pdf for every good row, the answer key of the students written (``entries``),
+    none when no student was: a run whose every student failed (a full disk) replaced the
+    earlier run's answer key with one of nobody, and the Class dialog said "Done"."""
     from shaperapp.widgets.command_line import start_qt
     language = start_qt(args.lang)
-    from .class_files import write_answer_key, write_tasks
+    from .class_files import TASKS_FILE, write_answer_key, write_tasks
     try:
-        write_tasks(os.path.join(out, "tasks.pdf"),
+        write_tasks(os.path.join(out, TASKS_FILE),
                     [(s.document, {"student": s.name, "number": s.number, "group": s.group, "date": job.date})
                      for s, job in zip(good, jobs)], language)
-        write_answer_key(out, entries, groups, language)
+        if entries:
+            write_answer_key(out, entries, groups, language)
     except OSError as exc:
         raise OutputError(f"--output: {exc}") from None

@@ -23,6 +23,10 @@ from shaperapp.report.design_data import law_name
 
 translate = QCoreApplication.translate
 
+TASKS_FILE = "tasks.pdf"
+KEY_FILES = tuple(f"answer-key.{kind}" for kind in ("json", "csv", "pdf"))
+"""The class's own files in DIR: the task sheets and the answer key."""
+
 
 def task_labels() -> dict[str, str]:
     """The task sheet's and the answer key's words in the UI's language."""
@@ -146,7 +150,7 @@ _GEAR = (("x1", "x_1", "", 20), ("x2", "x_2", "", 20), ("a'", "a′", "mm", 19),
 def write_answer_key(folder: str, entries: Sequence[Mapping[str, Any]], groups: Sequence[str],
                      language: str) -> list[str]:
     """answer-key.json, .csv and .pdf in ``folder``; returns their paths."""
-    paths = [os.path.join(folder, f"answer-key.{kind}") for kind in ("json", "csv", "pdf")]
+    paths = [os.path.join(folder, name) for name in KEY_FILES]
     atomic_write(paths[0], json.dumps(list(entries), indent=1, ensure_ascii=False, allow_nan=False) + "\n")
     atomic_write(paths[1], "\ufeff" + key_csv(entries, groups))     # a BOM: Excel then reads UTF-8
     labels = task_labels()

@@ -57,9 +57,17 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "%1 of %2 students not written (%3 bad rows, %4 failed)."),
     (r"empty; the first row names the columns \(student, student-number, …\)$",
      "empty; the first row names the columns (student, student-number, …)"),
+    (r"no students; each row under the header is one student$",
+     "no students; each row under the header is one student"),
+    (r"a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs "
+     r"to the text twice$",
+     "a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs to "
+     "the text twice"),
     # the run's own refusals of --output (shaperapp.course.class_command)
     (r"another 'shaper class' is writing into (.+); let it finish, then run this one$",
      "another 'shaper class' is writing into %1; let it finish, then run this one"),
+    (r"cannot make the folder (.+): a file of that name is in the way; move it, then run the class again$",
+     "cannot make the folder %1: a file of that name is in the way; move it, then run the class again"),
     (r"cannot make (.+?): (.+)$", "cannot make %1: %2"),
 )
 
@@ -98,9 +106,18 @@ def _templates() -> dict[str, str]:
             translate("ClassMessages", "larger than %1 MB; a class is at most %2 rows"),
         "empty; the first row names the columns (student, student-number, …)":
             translate("ClassMessages", "empty; the first row names the columns (student, student-number, …)"),
+        "no students; each row under the header is one student":
+            translate("ClassMessages", "no students; each row under the header is one student"),
+        "a quote opens a cell that no quote closes before the table ends; close it, or write a quote that belongs to "
+        "the text twice":
+            translate("ClassMessages", "a quote opens a cell that no quote closes before the table ends; close it, "
+                      "or write a quote that belongs to the text twice"),
         "another 'shaper class' is writing into %1; let it finish, then run this one":
             translate("ClassMessages", "another 'shaper class' is writing into %1; let it finish, then run this one"),
         "cannot make %1: %2": translate("ClassMessages", "cannot make %1: %2"),
+        "cannot make the folder %1: a file of that name is in the way; move it, then run the class again":
+            translate("ClassMessages", "cannot make the folder %1: a file of that name is in the way; move it, "
+                      "then run the class again"),
         "%1 of %2 students not written (%3 bad rows, %4 failed).":
             translate("ClassMessages", "%1 of %2 students not written (%3 bad rows, %4 failed)."),
     }
@@ -141,13 +158,45 @@ def _lacking(text: str) -> str | None:
     return template.replace("%1", joined)
 
 
+_OUTPUT = re.compile(r"^cannot (write into|write|make) (.+?): ([^:]+)$", re.S)
+
+
+def _output(text: str) -> str | None:
+    """An output the run cannot write ("cannot write into 机械2101: permission denied", the
+    class's check of --output, and a student's "cannot write F: the disk is full"), its
+    reason in the UI's language too; None for another text."""
+    import errno
+
+    from core.base.errors import os_reason as core_reason
+    from shaperapp.widgets.file_messages import os_reason
+    found = _OUTPUT.match(text)
+    if found is None:
+        return None
+    how, path, reason = found.groups()
+    numbers = {core_reason(OSError(n, "")): n for n in (errno.EACCES, errno.ENOSPC, errno.EDQUOT, errno.EROFS,
+                                                         errno.ENOENT, errno.ENOTDIR, errno.EISDIR,
+                                                         errno.ENAMETOOLONG, errno.ELOOP)}
+    if reason in numbers:
+        words = os_reason(numbers[reason], reason)
+    elif reason == "it is not a folder":
+        words = translate("ClassMessages", "it is not a folder")
+    else:
+        return None
+    template = {"write into": translate("ClassMessages", "cannot write into %1: %2"),
+                "write": translate("ClassMessages", "cannot write %1: %2"),
+                "make": translate("ClassMessages", "cannot make %1: %2")}[how]
+    return template.replace("%1", path).replace("%2", words)
+
+
 def _what(text: str) -> str:
     """What is wrong, translated; a trailing "(got X)" kept as the value typed."""
-    lacking = _lacking(text)
+    lacking = _lacking(text) or _output(text)
     if lacking is not None:
         return lacking
+    from shaperapp.widgets.gear_messages import gear_text
     got = _GOT.match(text)
-    body = allowed_text(got.group(1) if got else text, _PATTERNS, _templates())
+    said = got.group(1) if got else text
+    body = gear_text(said) or allowed_text(said, _PATTERNS, _templates())
     if got:
         body = translate("ClassMessages", "%1 (got %2)").replace("%1", body).replace("%2", _value(got.group(2)))
     return body

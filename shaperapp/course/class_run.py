@@ -213,8 +213,13 @@ def run_student(job: Job) -> Result:
         entry = answer_entry(job.cover.get("student", ""), job.cover.get("number", ""), job.name,
                              os.path.join(job.folder, DESIGN_FILE))
         return Result(job.index, time.perf_counter() - start, entry, skipped=skipped, removed=removed)
-    except OSError as exc:
-        error = failure_line(job.name, str(exc))
+    except FileExistsError:         # makedirs: "cannot write …: File exists" said nothing of a folder
+        error = failure_line(job.name, f"cannot make the folder {job.folder}: a file of that name is in the way; "
+                                       "move it, then run the class again")
+    except OSError as exc:          # a WriteError names its file; a bare one ('[Errno 1] …') in plain words
+        from core.base.errors import WriteError
+        error = failure_line(job.name, str(exc if isinstance(exc, WriteError)
+                                           else WriteError(exc.filename or job.folder, exc)))
     except Exception as exc:        # a font, a drawing that cannot be made: named, never raised
         error = failure_line(job.name, f"{type(exc).__name__}: {exc}")
     return Result(job.index, time.perf_counter() - start, None, error)

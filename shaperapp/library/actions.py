@@ -258,8 +258,8 @@ class LibraryActions(QObject):
         out = []
         for name in names:
             try:
-                doc = self.library.load(name)  # type: ignore[union-attr]
-            except (FileFormatError, LibraryError) as exc:
+                doc = self.library.get(name).document(any_step=True)  # type: ignore[union-attr]
+            except (FileFormatError, LibraryError) as exc:      # a too fine entry compares (any_step)
                 self.failed.emit(describe_file_error(exc) if isinstance(exc, FileFormatError) else self.message(exc))
                 continue
             out.append(Candidate(name, doc["spec"], doc["masses"]))

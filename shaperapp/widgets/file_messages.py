@@ -110,7 +110,8 @@ def describe_file_error(error: FileFormatError) -> str:
         QCoreApplication.translate("messages", "library entry “%1”").replace("%1", error.entry)
     values = list(error.values)
     if error.reason == "invalid" and isinstance(error.cause, DesignError):
-        values = [describe(error.cause)]
+        from .gear_messages import gear_refusal          # the gear pair's own words, where it is the pair
+        values = [gear_refusal(error.cause) or describe(error.cause)]
     elif error.reason == "unreadable":
         values = [os_reason(error.errno, values[0] if values else "", reading=True)]
     # one pass, so a value holding "%2" is never substituted again

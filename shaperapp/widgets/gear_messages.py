@@ -7,6 +7,8 @@ advice is rebuilt from the check's own fields, with the same English words as co
 """
 from __future__ import annotations
 
+import re
+
 from PySide6.QtCore import QCoreApplication
 
 from core.base.errors import DesignError
@@ -51,6 +53,14 @@ _PATTERNS: tuple[tuple[str, str], ...] = (
      "for a tip of gear %1 at least %4 mm thick"),
     (r"x1 \+ x2 is too large: the addendum reduction leaves gear (\d) no flank above its base circle$",
      "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its base circle"),
+    (r"x1 \+ x2 is too large: the addendum reduction Δy = (\S+) cuts both tips so far that the teeth never touch; "
+     r"give (x\d) ≤ (\S+)$",
+     "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give %2 ≤ %3"),
+    (r"x1 \+ x2 is too large: the addendum reduction Δy = (\S+) cuts both tips so far that the teeth never touch; "
+     r"give a′ ≤ (\S+) mm$",
+     "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give a′ ≤ %2 mm"),
+    (r"x1 \+ x2 is too large: the addendum reduction Δy = (\S+) cuts both tips so far that the teeth never touch$",
+     "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch"),
     (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give (x\d) ≤ (\S+), for a tip at least (\S+) mm thick$",
      "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick"),
     (r"makes the tip of gear (\d) pointed \(x\d = (\S+)\): give a′ ≤ (\S+) mm, for a tip at least (\S+) mm "
@@ -93,6 +103,15 @@ def _templates() -> dict[str, str]:
         "for a tip of gear %1 at least %4 mm thick":
             translate("GearMessages", "x1 + x2 is too large: the addendum reduction leaves gear %1 no flank above its "
                       "base circle; give %2 ≤ %3, for a tip of gear %1 at least %4 mm thick"),
+        "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give %2 ≤ %3":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the "
+                      "teeth never touch; give %2 ≤ %3"),
+        "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch; give a′ ≤ %2 mm":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the "
+                      "teeth never touch; give a′ ≤ %2 mm"),
+        "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the teeth never touch":
+            translate("GearMessages", "x1 + x2 is too large: the addendum reduction Δy = %1 cuts both tips so far that the "
+                      "teeth never touch"),
         "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least %5 mm thick":
             translate("GearMessages", "makes the tip of gear %1 pointed (x = %2): give %3 ≤ %4, for a tip at least "
                       "%5 mm thick"),
@@ -126,6 +145,22 @@ def describe_gear_error(error: DesignError) -> str:
     name = field_names().get(error.parameter) or field_name(error.parameter)
     body = allowed_text(error.allowed, _PATTERNS, _templates())
     return translate("messages", "%1: %2").replace("%1", name).replace("%2", body)
+
+
+def gear_refusal(error: DesignError) -> str | None:
+    """:func:`describe_gear_error` when ``error`` is one of core.gear's own refusals (its
+    text one of this module's patterns), else None: a design file's gear pair refused on
+    Open was shown in English in the Chinese window."""
+    return None if gear_text(error.allowed) is None else describe_gear_error(error)
+
+
+def gear_text(allowed: str) -> str | None:
+    """One of core.gear's refusals (``DesignError.allowed``) in the UI's language, or None
+    when ``allowed`` is none of them: the Class dialog's row errors said a gear pair's
+    refusal in English."""
+    if not any(re.match(pattern, allowed) for pattern, _ in _PATTERNS):
+        return None
+    return allowed_text(allowed, _PATTERNS, _templates())
 
 
 def module_note(module_mm: float) -> str:

@@ -169,3 +169,29 @@ def test_every_csv_cell_of_user_text_is_guarded_as_a_whole_and_per_name(tmp_path
     for cell in text_cells:
         for piece in _pieces(cell):
             assert not piece.startswith(("=", "+", "-", "@")), (cell, piece)
+
+
+# Unicode's explicit bidirectional embeddings, overrides and isolates (UAX #9, table 2), listed
+# independently of core.base.text: LRE RLE PDF LRO RLO, LRI RLI FSI PDI.
+BIDI_CONTROLS = ["\u202a", "\u202b", "\u202c", "\u202d", "\u202e", "\u2066", "\u2067", "\u2068", "\u2069"]
+
+
+@pytest.mark.parametrize("char", BIDI_CONTROLS, ids=[f"U+{ord(c):04X}" for c in BIDI_CONTROLS])
+def test_a_bidi_override_is_refused_where_a_control_character_is(tmp_path, char):
+    """A student 'a<RLO>fdp.exe' got the folder 1-a<RLO>fdp.exe, which a file manager shows as
+    '1-aexe.pdf', and the same reversed text on the task sheet and in the terminal (hunt,
+    1 December): every text option, a class row's name and a library name refuse the nine
+    bidi controls as they refuse a control character; the implicit marks LRM/RLM and
+    Arabic or Hebrew letters stay accepted."""
+    from core.base.text import CONTROL, NOTE_FORBIDDEN, UNPRINTABLE
+    from core.cli.tasks import read_tasks
+    assert CONTROL.search(char) and UNPRINTABLE.search(char) and NOTE_FORBIDDEN.search(char)
+    assert not any(CONTROL.search(c) or UNPRINTABLE.search(c) for c in "\u200e\u200fعبرית\u200b\u2065\u206a")
+    table = tmp_path / "t.csv"
+    table.write_text(f"student,student-number\na{char}fdp.exe,1\nمحمد\u200f,2\n", encoding="utf-8")
+    students = read_tasks(str(table), None)[0]
+    assert students[0].error == "t.csv line 2, column student: must be one line of text without control characters"
+    assert "control" not in students[1].error
+    status, _, err = shaper_in_process("library", "add", *DESIGN, "--name", f"x{char}y",
+                                       "--library", tmp_path / "lib.sqlite")
+    assert status == 2 and err.startswith("shaper: error: --name:") and err.count("\n") == 1

@@ -95,3 +95,42 @@ def test_a_step_still_too_fine_names_step_and_writes_nothing(lib, tmp_path):
     status, _, err = shaper_in_process("library", "export", "--all", "--step", "1", "--library", str(lib),
                                        "-o", str(tmp_path / "all"))
     assert status == 2 and err.startswith("shaper: error: --step:"), err
+
+
+@pytest.mark.parametrize("step", ["0", "-1", "1e9"])
+def test_a_step_out_of_range_names_step(lib, tmp_path, step):
+    """`export NAME --step 0` said `NAME: library entry …: invalid design (step = 0: …)`,
+    naming the entry, not the option typed (hunt, 1 December)."""
+    before = stored(lib)
+    status, _, err = shaper_in_process("library", "export", "old fine", "--step", step,
+                                       "-o", tmp_path / "x.json", "--library", lib)
+    assert status == 2 and err == f"shaper: error: --step: must be ≥ 0.0002 and ≤ 90 ° (got {step})\n"
+    assert not (tmp_path / "x.json").exists() and stored(lib) == before
+
+
+def test_a_too_fine_entry_is_compared_its_step_left_aside(lib):
+    """`library compare` refused an entry too fine for a design file with "use a step of at
+    least 0.0121°", which its own --step could not give (hunt, 1 December): a comparison
+    takes the linkage, the speeds and the loads, never the stored step, so it compares. Its
+    figures are those of the same design stored at a coarse step."""
+    before = stored(lib)
+    status, out, err = shaper_in_process("library", "compare", "old fine", "ok", "--json", "--library", lib)
+    assert status == 0, err
+    fine = {f["figure"]: f["values"]["old fine"] for f in json.loads(out)["figures"]}
+    status, _, err = shaper_in_process("library", "add", "--crank", "100", "--K", "1.4", "--stroke", "300",
+                                       "--rpm", "40", "60", "--step", "0.5", "--name", "coarse", "--library", lib)
+    assert status == 0, err
+    status, out, err = shaper_in_process("library", "compare", "coarse", "ok", "--json", "--library", lib)
+    coarse = {f["figure"]: f["values"]["coarse"] for f in json.loads(out)["figures"]}
+    assert fine == coarse and fine["a_max_m_s2"] is not None
+    assert stored(lib)[:len(before)] == before                     # nothing stored changed
+
+
+def test_a_too_fine_entrys_figures_are_recomputed(lib):
+    """`library refresh` said of an entry too fine for a design file that it 'cannot be
+    computed any more' and kept its figures (hunt, 1 December): its figures never take the
+    stored step, so they are recomputed; its document stays as stored."""
+    before = {name: text for name, _, text in stored(lib)}
+    status, out, err = shaper_in_process("library", "refresh", "old fine", "--library", lib)
+    assert (status, err) == (0, "") and out == f"recomputed the figures of 1 of 1 designs in {lib}\n"
+    assert {name: text for name, _, text in stored(lib)} == before

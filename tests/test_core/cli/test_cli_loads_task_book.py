@@ -158,3 +158,12 @@ def test_the_j_gear_refusal_says_where_the_gear_pair_goes_and_that_works(tmp_pat
     status, out, err = shaper_in_process("dynamics", "--design", str(geared), "--rotor", "0.03:gear", "--json")
     assert status == 0, err
     assert json.loads(out)["inputs"]["rotors"] == [{"J_kg_m2": 0.03, "speed_ratio": 4.0}]
+
+
+@pytest.mark.parametrize("rotor, said", [("nan:gear", "must be a finite number (got nan)"),
+                                         ("2e6:gear", "must be ≥ 0 and ≤ 1e+06 kg·m² (got 2000000)")])
+def test_a_bad_inertia_before_gear_is_named_not_copied_into_the_advice(rotor, said):
+    """'nan:gear' without a gear pair was told to type 'nan:3.07692', which is refused again
+    (hunt, 1 December): the J is checked first, as for J:RATIO."""
+    status, _, err = shaper_in_process("dynamics", *SEED, *TASK_BOOK, "--rotor", rotor)
+    assert status == 2 and err == f"shaper: error: --rotor: {said}\n"

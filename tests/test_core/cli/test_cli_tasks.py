@@ -416,3 +416,17 @@ def test_a_chinese_heading_of_a_name_column_is_told_its_name(tmp_path, base, hea
     assert str(refused.value) == f"tasks.csv line 1, column {heading}: not a column; did you mean {column}?"
     fixed = [lines[0].replace(heading, column), lines[1]]
     assert read_tasks(table(tmp_path, fixed), base)[0][0].error == ""
+
+
+def test_no_in_the_no_gravity_column_turns_gravity_on_over_a_base_without_it(tmp_path, base):
+    """`no-gravity` = no kept a --base without gravity as it was, so the student's forces,
+    flywheel and answer key left the links' weights out though the row said no (hunt,
+    1 December): 'no' now means gravity on, 'yes' off, an empty cell the base's."""
+    weightless = tmp_path / "weightless.shaper.json"
+    status, _, err = shaper_in_process("design", "--design", base, "--no-gravity", "-o", weightless)
+    assert status == 0, err
+    rows = table(tmp_path, ["student,student-number,no-gravity", "A,1,no", "B,2,yes", "C,3,", "D,4,否"])
+    for source, expected in ((str(weightless), [True, False, False, True]), (base, [True, False, True, True])):
+        students, _ = read_tasks(rows, source)
+        assert [s.error for s in students] == [""] * 4
+        assert [s.document["forces"]["gravity"] for s in students] == expected, source

@@ -313,3 +313,19 @@ def test_export_all_is_all_or_nothing(lib, tmp_path, monkeypatch, existing):
     if existing:
         assert sorted(p.name for p in out.iterdir()) == ["mine.txt"]
     assert len(export_entries(lib, out).paths) == len(SPECS)      # and it works once the disk does
+
+
+def test_exported_file_names_differ_in_more_than_letter_case(tmp_path, lib):
+    """Entries 'K1.4' and 'k1.4' were exported as K1.4.shaper.json and k1.4.shaper.json:
+    one file on Windows and macOS, whose file systems do not tell letter case apart, the
+    second replacing the first or failing the export (hunt, 1 December). An existing
+    'BASE.SHAPER.JSON' in the folder is taken too."""
+    for name in ("K1.4", "k1.4", "K1.4 (2)", "base"):
+        lib.add(name, loaded(Spec()))
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "BASE.SHAPER.JSON").write_text("the teacher's")
+    files = [p.name for p in export_entries(lib, out).paths]
+    assert len({f.casefold() for f in files} | {"base.shaper.json"}) == len(files) + 1, files
+    assert (out / "BASE.SHAPER.JSON").read_text() == "the teacher's"
+    assert unique_name("a", ["A"], fold_case=True) == "a (2)" and unique_name("a", ["A"]) == "a"

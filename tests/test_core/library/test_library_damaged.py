@@ -93,3 +93,20 @@ def test_sound_library_checks_clean(tmp_path):
     make_library(tmp_path / "lib.sqlite")
     status, out, err = shaper_in_process("library", "check", "--library", tmp_path / "lib.sqlite")
     assert status == 0 and out.startswith("no damage found") and err == ""
+
+
+@pytest.mark.parametrize("sql", ["UPDATE entries SET name = CAST(X'61ff' AS TEXT) WHERE name = 'a'",
+                                 "UPDATE entries SET name = X'61' WHERE name = 'a'"], ids=["not UTF-8", "a blob"])
+def test_an_export_of_every_entry_names_one_whose_name_is_unreadable(tmp_path, sql):
+    """`export --all` said nothing of an entry whose name cannot be read (`names()` leaves
+    it out: no name finds it), though `check` and `list` report it (hunt, 1 December)."""
+    path = tmp_path / "lib.sqlite"
+    make_library(path)
+    with sqlite3.connect(path) as conn:
+        conn.execute(sql)
+    status, out, err = shaper_in_process("library", "export", "--all", "-o", tmp_path / "out", "--library", path)
+    no_internal_error(status, err)
+    assert status == 0 and out == f"exported 1 designs to {tmp_path / 'out'}\n"
+    assert err == ("shaper: skipped 'entry #1 (its name is unreadable)': damaged (name is not text); "
+                   "'shaper library check' lists every damaged design\n")
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["b.shaper.json"]

@@ -6,6 +6,10 @@ words of every other output."""
 from __future__ import annotations
 
 import os
+import shutil
+import subprocess
+
+import pytest
 
 from cli_runner import shaper_in_process
 from shaperapp.course.class_run import STAMP_FILE, earlier_folders
@@ -87,3 +91,85 @@ def test_an_output_that_cannot_be_a_folder_is_said_in_plain_words(tmp_path):
     status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", long)
     assert status == 2 and err == f"shaper: error: --output: cannot make {long}: the name is too long\n"
     assert a_file.read_text() == "mine"
+
+
+def test_a_table_of_no_students_or_bad_rows_only_makes_no_folder(tmp_path, qapp):
+    """A header alone is refused by name, exit 2 (it ran with no word, exit 0, and made DIR
+    empty); a table of bad rows only names them and makes no DIR either (hunt, 1 December).
+    Each in the dialog's language too: the refusal has its Chinese words."""
+    from shaperapp.course.class_messages import table_message
+    from shaperapp.widgets import i18n
+    header = tmp_path / "header.csv"
+    header.write_text("student,student-number,crank,K\n\n", encoding="utf-8")
+    status, out_text, err = shaper_in_process("class", "--tasks", header, "-o", tmp_path / "none")
+    assert (status, out_text) == (2, "")
+    assert err == "shaper: error: header.csv: no students; each row under the header is one student\n"
+    bad = tmp_path / "bad.csv"
+    bad.write_text("student,student-number,crank,K\nx,1,100,0.9\n", encoding="utf-8")
+    status, _, err = shaper_in_process("class", "--tasks", bad, "-o", tmp_path / "none")
+    assert status == 2 and "1 of 1 students not written" in err
+    assert not (tmp_path / "none").exists()
+    i18n.set_language("zh_CN")
+    try:
+        assert table_message("header.csv: no students; each row under the header is one student") == \
+            "header.csv：没有学生；列名行之下每一行为一名学生"
+    finally:
+        i18n.set_language("en")
+
+
+ROW = ("student,student-number,crank,K,stroke,lever-weight,lever-inertia,ram-weight,cut-force,arm,"
+       "swing,pressure,rise,dwell,return,z1,z2,module\n"
+       "a,1,100,1.4,300,200,1.1,700,7000,125,15,40,75,10,75,13,40,6\n")
+
+
+@pytest.mark.skipif(shutil.which("chattr") is None or os.geteuid() != 0, reason="chattr +i needs root and e2fsprogs")
+def test_a_folder_the_run_cannot_write_into_is_one_line_before_any_student(tmp_path):
+    """An immutable DIR, or DIR/tasks.pdf a folder: one line naming --output before any
+    student (hunt, 1 December: each student failed as '[Errno 1] Operation not permitted:
+    …', then tasks.pdf failed too; with tasks.pdf a folder every student was written and
+    then the run failed). A student's folder that cannot be written is said in plain words."""
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text(ROW, encoding="utf-8")
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    (locked / "1-a").mkdir()
+    (locked / "1-a" / ".class-stamp").write_text("an earlier run's\n")
+    subprocess.run(["chattr", "+i", str(locked)], check=True)
+    try:
+        status, text, err = shaper_in_process("class", "--tasks", tasks, "-o", locked)
+    finally:
+        subprocess.run(["chattr", "-i", str(locked)], check=True)
+    assert (status, text) == (2, "") and err == f"shaper: error: --output: cannot write into {locked}: permission denied\n"
+    busy = tmp_path / "busy"
+    (busy / "tasks.pdf").mkdir(parents=True)
+    status, text, err = shaper_in_process("class", "--tasks", tasks, "-o", busy)
+    assert (status, text) == (2, "") and err == f"shaper: error: --output: cannot write {busy / 'tasks.pdf'}: it is a folder\n"
+    assert [p.name for p in busy.iterdir()] == ["tasks.pdf"]
+    subprocess.run(["chattr", "+i", str(locked / "1-a")], check=True)
+    try:
+        status, _, err = shaper_in_process("class", "--tasks", tasks, "-o", locked, "--jobs", "1")
+    finally:
+        subprocess.run(["chattr", "-i", str(locked / "1-a")], check=True)
+    assert status == 2 and err.splitlines()[0] == (
+        f"shaper: error: 1-a: cannot write {locked / '1-a' / '.class-stamp'}: permission denied")
+
+
+def test_a_file_where_a_students_folder_goes_is_named_and_kept(tmp_path):
+    """A file of a student's folder name: 'cannot write F: File exists', the system's words
+    (hunt, 1 December); now what is in the way and what to do, the file kept. With no
+    student written, the earlier run's answer key stays (it was replaced by one of nobody)."""
+    tasks = tmp_path / "tasks.csv"
+    tasks.write_text(ROW, encoding="utf-8")
+    out = tmp_path / "class"
+    out.mkdir()
+    (out / "1-a").write_text("mine")
+    (out / "answer-key.json").write_text("[an earlier run's key]\n")
+    status, text, err = shaper_in_process("class", "--tasks", tasks, "-o", out, "--jobs", "1")
+    assert text.endswith(f"; tasks.pdf in {out}; no answer key, as no student was written (an earlier one is "
+                         "left as it was)\n"), text
+    assert (out / "answer-key.json").read_text() == "[an earlier run's key]\n"     # not a key of nobody
+    assert not (out / "answer-key.pdf").exists()
+    assert status == 2 and err.splitlines()[0] == (
+        f"shaper: error: 1-a: cannot make the folder {out / '1-a'}: a file of that name is in the way; move it, "
+        "then run the class again")
+    assert (out / "1-a").read_text() == "mine"

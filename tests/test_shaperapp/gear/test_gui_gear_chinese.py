@@ -16,6 +16,7 @@ from shaperapp.widgets import i18n
 from shaperapp.widgets.result_table import ResultTable
 
 from gui_helpers import shown
+from cli_runner import shaper_in_process
 from language_checks import english_words
 
 SYMBOLS = {"zmin"}          # z_min of the rack, as the Drawing's x_min
@@ -73,6 +74,9 @@ def test_the_chinese_tab_shows_no_english(qtbot, model, chinese):
         assert english_in(tab) == [], (name, value)
     gm.set_fields(mode="shifts", x1=3.0, x2=3.0, z1=13.0)
     assert english_in(tab) == []
+    gm.set_fields(x1=5.0, x2=5.0)                           # teeth that never touch (hunt, 1 December)
+    assert tab.form.error_label.isVisible()
+    assert english_in(tab) == []
     gm.set_fields(mode="auto", module=6.0, z1=5.0, z2=6.0)
     assert english_in(tab) == []
 
@@ -87,3 +91,29 @@ def test_in_english_the_advice_and_the_rule_are_cores_words(model, qtbot):
             assert check_advice(check) == check.advice
     for mode, text in MODE_TEXT.items():
         assert mode_text(mode) == text
+
+
+@pytest.mark.parametrize("shifts", [(5.0, 5.0), (5.0, -1.0)], ids=["teeth never touch", "pointed tip"])
+def test_a_design_files_refused_gear_pair_is_said_in_chinese(tmp_path, qapp, shifts):
+    """File › Open of a file whose gear pair core refuses: the reason was core's English
+    sentence inside the Chinese message (hunt, 1 December); now the Gear tab's words."""
+    import json
+    from core.base.errors import FileFormatError
+    from core.files.design_file import load_design
+    from core.gear.file import gear_to_dict
+    from core.gear import GearPairInputs
+    from shaperapp.widgets.file_messages import describe_file_error
+    path = tmp_path / "g.shaper.json"
+    status, _, err = shaper_in_process("design", "--crank", "100", "--K", "1.4", "--stroke", "300", "-o", path)
+    assert status == 0, err
+    doc = json.loads(path.read_text(encoding="utf-8"))
+    doc["gear"] = gear_to_dict(GearPairInputs(z1=13, z2=40, module_mm=6.0, x1=shifts[0], x2=shifts[1]))
+    path.write_text(json.dumps(doc), encoding="utf-8")
+    with pytest.raises(FileFormatError) as info:
+        load_design(path)
+    i18n.set_language("zh_CN")              # after shaper_in_process, which sets English back
+    try:
+        text = describe_file_error(info.value)
+    finally:
+        i18n.set_language("en")
+    assert "x1 ≤ " in text and english_words(text.replace(str(path), ""), SYMBOLS) == [], text

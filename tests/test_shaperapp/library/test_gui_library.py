@@ -455,3 +455,22 @@ def test_every_button_is_in_view_at_a_laptops_width(pane, language):
         assert [a.text() for a in actions if not reachable(pane, a)] == []
     finally:
         i18n.set_language("en")
+
+
+def test_an_entry_too_fine_for_a_design_file_is_compared(pane, model, no_dialogs):
+    """An entry stored before the design file's sample limit was refused by Compare (the
+    stored step does not enter a comparison; hunt, 1 December): it is a candidate now,
+    and Open still refuses it (it would load that step)."""
+    import json
+    import sqlite3
+    save(pane, model, "fine")
+    save(pane, model, "coarse", time_ratio=1.6)
+    with sqlite3.connect(pane.actions.library.path) as c:
+        entry_id, text = c.execute("SELECT d.entry_id, d.text FROM documents d JOIN entries e ON e.id = d.entry_id "
+                                   "WHERE e.name = 'fine'").fetchone()
+        doc = dict(json.loads(text), step_deg=0.0002)                   # 1.8 million angles × the speeds
+        c.execute("UPDATE documents SET text = ? WHERE entry_id = ?", (json.dumps(doc), entry_id))
+    c.close()
+    assert [c.label for c in pane.actions.candidates(["fine", "coarse"])] == ["fine", "coarse"]
+    assert no_dialogs == []
+    assert not pane.actions.open_in_model("fine")

@@ -118,3 +118,47 @@ def test_a_class_rows_shortened_number_is_said_in_chinese(chinese):
                          "short, its digits lost; format the column as text and save the table again")
     assert text == ("tasks.csv 第 2 行，student-number 列：2.02301E+11 是电子表格缩写了的数字，已丢失数位；"
                     "请把该列设为文本格式后重新保存表格")
+
+
+def test_a_class_rows_gear_refusal_is_said_in_chinese(chinese, tmp_path):
+    """A row whose gear pair core refuses (teeth that never touch, a pointed tip) reached the
+    Chinese Class dialog in English (hunt, 1 December): the table's real refusal, read as
+    `shaper class` reads it, now in the Gear tab's words."""
+    from core.cli.tasks import read_tasks
+    from shaperapp.course.class_messages import table_message
+    table = tmp_path / "tasks.csv"
+    table.write_text("student,student-number,crank,K,stroke,z1,z2,module,x1,x2\n"
+                     "A,1,100,1.4,300,13,40,6,5,5\nB,2,100,1.4,300,13,40,6,5,-1\n",
+                     encoding="utf-8")
+    errors = [s.error for s in read_tasks(str(table), None)[0]]
+    assert "teeth never touch" in errors[0] and "pointed" in errors[1], errors
+    for error in errors:
+        text = table_message(error)
+        assert text.startswith("tasks.csv 第 ") and "请取 x1 ≤ " in text and text.endswith("（输入的是 5）"), text
+        assert not re.search(r"[a-z]{4,}", text.replace("tasks.csv", "")), text
+
+
+def test_a_class_output_it_cannot_write_is_said_in_chinese(chinese):
+    """The run's refusals of --output and a student's failed write reached the Chinese Class
+    dialog in English, reason and all (`--output：cannot write into 机械2101: permission
+    denied`; hunt, 1 December): each now in Chinese, its path kept."""
+    from shaperapp.course.class_messages import table_message
+    said = {
+        "--output: cannot write into 机械2101: permission denied": "--output：无法写入文件夹 机械2101：没有权限",
+        "--output: cannot write 机械2101/tasks.pdf: it is a folder": "--output：无法写入 机械2101/tasks.pdf：它是文件夹",
+        "--output: cannot write into a.txt: it is not a folder": "--output：无法写入文件夹 a.txt：它不是文件夹",
+        "--output: cannot make 机械2101: permission denied": "--output：无法创建 机械2101：没有权限",
+        "1-a: cannot write k/1-a/00-report.pdf: the disk is full (no space left on the device)":
+            "1-a：无法写入 k/1-a/00-report.pdf：磁盘已满（设备上没有剩余空间）",
+        "1-a: cannot make the folder k/1-a: a file of that name is in the way; move it, then run the class again":
+            "1-a：无法创建文件夹 k/1-a：已有同名文件挡住；请将其移走后重新运行本班",
+    }
+    for english, chinese_text in said.items():
+        assert table_message(english) == chinese_text
+
+
+def test_a_class_tables_unclosed_quote_is_said_in_chinese(chinese):
+    from shaperapp.course.class_messages import table_message
+    assert table_message("t.csv line 3: a quote opens a cell that no quote closes before the table ends; close it, "
+                         "or write a quote that belongs to the text twice") == (
+        "t.csv 第 3 行：有一个引号开始的单元格直到表格结束都没有闭合；请补上闭合的引号，或把属于文字本身的引号写成两个")
