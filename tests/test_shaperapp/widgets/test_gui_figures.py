@@ -123,6 +123,12 @@ def test_explore_map_svg_agrees_with_png_and_no_map_is_refused(qtbot, model, tmp
         assert list(tmp_path.iterdir()) == []
         view.compute.click()
         qtbot.waitUntil(lambda: view.runner.job is None and view.result is not None, timeout=30_000)
+        # Exported as a user exports it: after the map's layout has settled. Exported in
+        # the event turn the map arrived in, the SVG had its colour-bar title past the
+        # view's edge in 4 of 6 whole-suite runs on 1 December (never with this module
+        # alone; the bar stood some 16 px right of its place, as if its layout were
+        # pending; the cause is not proven).
+        qtbot.wait(200)
         assert_faithful(*exported(view, tmp_path, "map"))
     finally:
         view.shutdown()
